@@ -1,0 +1,59 @@
+"""Brief sections every machine shares: report metadata and analysis settings.
+
+Field names carry their course unit as a suffix (``_mm``, ``_deg``, ``_rpm``, ``_kg``,
+``_N``, ``_kgm2``); the description of every field repeats its unit and meaning.
+The models are strict: unknown keys, wrong types and out-of-range values are errors.
+"""
+from __future__ import annotations
+
+import datetime as _dt
+from typing import Literal
+
+from pydantic import BaseModel, ConfigDict, Field, field_validator
+
+
+class StrictModel(BaseModel):
+    """Base for brief sections: unknown keys forbidden, no silent type coercion."""
+
+    model_config = ConfigDict(extra="forbid", strict=True, frozen=True)
+
+
+class ReportMeta(StrictModel):
+    """Report metadata shown on the title page (封面)."""
+
+    title: str = Field(description="Report title (设计题目)", min_length=1)
+    subtitle: str = Field("", description="Optional subtitle")
+    student: str = Field(description="Student name (学生姓名)", min_length=1)
+    student_id: str = Field("", description="Student number (学号); quote it in YAML")
+    class_name: str = Field("", alias="class", description="Class (班级)")
+    teacher: str = Field("", description="Teacher (指导教师)")
+    date: str = Field("", description="Date shown on the title page, e.g. 2026-11-22")
+    language: Literal["zh", "en"] = Field("zh", description="Report language: zh (中文) or en")
+
+    model_config = ConfigDict(extra="forbid", strict=True, frozen=True, populate_by_name=True)
+
+    @field_validator("date", mode="before")
+    @classmethod
+    def _date_to_text(cls, value):
+        # YAML reads 2026-11-22 as a date; the report shows it as written.
+        if isinstance(value, (_dt.date, _dt.datetime)):
+            return value.isoformat()
+        return value
+
+    @field_validator("student_id", mode="before")
+    @classmethod
+    def _number_to_text(cls, value):
+        # An unquoted student number is read by YAML as an int; keep its digits.
+        if isinstance(value, int) and not isinstance(value, bool):
+            return str(value)
+        return value
+
+
+class AnalysisSettings(StrictModel):
+    """Numerical settings of the analysis."""
+
+    grid_points: int = Field(3600, ge=36, le=100_000,
+                             description="Crank positions per revolution on the fine grid (count)")
+    position_step_deg: float = Field(30.0, gt=0, le=90,
+                                     description="Spacing of the textbook positions [°]")
+    gravity: float = Field(9.81, gt=0, le=20, description="Gravitational acceleration g [m/s²]")

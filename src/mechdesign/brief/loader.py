@@ -1,0 +1,134 @@
+"""Load a YAML design brief safely and validate it completely before any computation.
+
+Every problem becomes one :class:`BriefProblem` line naming the field path, the value
+found and what is allowed; all problems are collected and raised together as a
+:class:`BriefError`.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+from pathlib import Path
+import re
+from typing import Any
+
+import yaml
+from pydantic import BaseModel, ValidationError
+
+from .shaper import ShaperBrief
+
+#: Machine name → brief model. Later machines register here.
+BRIEF_MODELS: dict[str, type[BaseModel]] = {"shaper": ShaperBrief}
+
+
+@dataclass(frozen=True)
+class BriefProblem:
+    path: str
+    value: str
+    allowed: str
+
+    def __str__(self) -> str:
+        return f"{self.path}: {self.value} — {self.allowed}"
+
+
+class BriefError(ValueError):
+    """One or more problems in a brief; ``str()`` lists them, one per line."""
+
+    def __init__(self, source: str, problems: list[BriefProblem]):
+        self.source, self.problems = source, problems
+        head = f"{source}: {len(problems)} problem{'s' if len(problems) != 1 else ''} in the brief"
+        super().__init__("\n".join([head] + [f"  {p}" for p in problems]))
+
+
+class _UniqueKeyLoader(yaml.SafeLoader):
+    """Safe loader that rejects a key given twice in one mapping (YAML keeps the last)."""
+
+
+def _construct_mapping(loader: _UniqueKeyLoader, node: yaml.MappingNode, deep: bool = False):
+    seen: dict[Any, int] = {}
+    for key_node, _ in node.value:
+        key = loader.construct_object(key_node, deep=deep)
+        if key in seen:
+            raise yaml.constructor.ConstructorError(
+                None, None, f"key '{key}' appears twice (lines {seen[key]} and "
+                f"{key_node.start_mark.line + 1})", key_node.start_mark)
+        seen[key] = key_node.start_mark.line + 1
+    return loader.construct_mapping(node, deep=deep)
+
+
+_UniqueKeyLoader.add_constructor(yaml.resolver.BaseResolver.DEFAULT_MAPPING_TAG, _construct_mapping)
+# YAML 1.1 (PyYAML) reads 7.0e4 or 1e5 as strings; read them as numbers, as YAML 1.2 does.
+_UniqueKeyLoader.add_implicit_resolver(
+    "tag:yaml.org,2002:float",
+    re.compile(r"^[-+]?(?:[0-9][0-9_]*)(?:\.[0-9_]*)?[eE][-+]?[0-9]+$"),
+    list("-+0123456789"))
+
+
+def _show(value: Any) -> str:
+    text = repr(value) if isinstance(value, str) else str(value)
+    return text if len(text) <= 60 else text[:57] + "..."
+
+
+def _field_info(model: type[BaseModel], loc: tuple) -> tuple[type[BaseModel] | None, Any]:
+    """Walk ``loc`` through nested models; return (parent model, field info or None)."""
+    current: Any = model
+    parent, info = None, None
+    for part in loc:
+        if not (isinstance(current, type) and issubclass(current, BaseModel)):
+            return parent, info
+        fields = current.model_fields
+        by_alias = {(f.alias or k): f for k, f in fields.items()}
+        info = by_alias.get(part) or fields.get(part)
+        parent = current
+        current = info.annotation if info is not None else None
+    return parent, info
+
+
+def _problem(model: type[BaseModel], err: dict) -> BriefProblem:
+    loc = tuple(err["loc"])
+    path = ".".join(str(p) for p in loc) or "(top level)"
+    kind = err["type"]
+    parent, info = _field_info(model, loc)
+    unit = f" ({info.description})" if info is not None and info.description else ""
+    if kind == "extra_forbidden":
+        allowed = ", ".join((f.alias or k) for k, f in parent.model_fields.items()) if parent else ""
+        return BriefProblem(path, _show(err.get("input")), f"unknown field; allowed here: {allowed}")
+    if kind == "missing":
+        return BriefProblem(path, "missing", f"required{unit}")
+    msg = err["msg"].removeprefix("Value error, ")
+    return BriefProblem(path, _show(err.get("input")), f"{msg}{unit}")
+
+
+def parse_brief(data: Any, source: str = "brief") -> BaseModel:
+    """Validate already-loaded YAML data; raise BriefError listing every problem."""
+    if not isinstance(data, dict):
+        raise BriefError(source, [BriefProblem("(top level)", _show(type(data).__name__),
+                                               "a brief is a YAML mapping of sections")])
+    machine = data.get("machine")
+    model = BRIEF_MODELS.get(machine) if isinstance(machine, str) else None
+    if model is None:
+        raise BriefError(source, [BriefProblem(
+            "machine", _show(machine) if "machine" in data else "missing",
+            f"one of: {', '.join(sorted(BRIEF_MODELS))}")])
+    try:
+        return model.model_validate(data)
+    except ValidationError as exc:
+        raise BriefError(source, [_problem(model, e) for e in exc.errors()]) from None
+
+
+def load_brief(path: str | Path) -> BaseModel:
+    """Read and validate a brief file; raise BriefError (never a bare traceback)."""
+    path = Path(path)
+    try:
+        text = path.read_text(encoding="utf-8")
+    except OSError as exc:
+        raise BriefError(str(path), [BriefProblem("(file)", str(path), f"cannot be read: {exc.strerror}")]) from None
+    except UnicodeDecodeError:
+        raise BriefError(str(path), [BriefProblem("(file)", str(path), "must be UTF-8 text")]) from None
+    try:
+        data = yaml.load(text, Loader=_UniqueKeyLoader)  # noqa: S506 - a SafeLoader subclass
+    except yaml.YAMLError as exc:
+        mark = getattr(exc, "problem_mark", None) or getattr(exc, "context_mark", None)
+        where = f"line {mark.line + 1}, column {mark.column + 1}" if mark else "(file)"
+        problem = getattr(exc, "problem", None) or str(exc)
+        raise BriefError(str(path), [BriefProblem(where, "invalid YAML", problem)]) from None
+    return parse_brief(data, str(path))

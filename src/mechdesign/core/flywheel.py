@@ -1,0 +1,72 @@
+"""Flywheel design (飞轮设计) from the resistance torque over one steady-state cycle.
+
+The driving torque is constant; over a cycle it does the same work as the
+resistance, so it equals the mean resistance torque. The kinetic-energy change
+ΔE(φ) = ∫(M_d − M_r)dφ; the largest swing ΔW_max = max ΔE − min ΔE (最大盈亏功).
+Textbook (孙桓 §7): J_F = ΔW_max / (ω_m²·[δ]) = 900·ΔW_max / (π²·n²·[δ]) with n in rpm
+on the shaft carrying the flywheel; the mechanism's own inertia is neglected (course
+convention, on the safe side).
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+
+@dataclass(frozen=True)
+class EnergyCycle:
+    """Energy bookkeeping over one revolution of the reference shaft."""
+
+    angle: np.ndarray            # shaft angle from the cycle start [rad]
+    resistance_torque: np.ndarray  # M_r on the flywheel shaft [N·m]
+    driving_torque: float        # constant M_d on the flywheel shaft [N·m]
+    energy: np.ndarray           # ΔE(φ) = ∫(M_d − M_r)dφ [J]
+    max_energy_swing: float      # ΔW_max [J]
+    angle_at_min: float          # [rad]
+    angle_at_max: float          # [rad]
+
+
+def energy_cycle(angle: np.ndarray, resistance_torque: np.ndarray) -> EnergyCycle:
+    """Energy over one cycle sampled at ``angle`` (uniform, covering [0, period), [rad])."""
+    angle = np.asarray(angle, float)
+    mr = np.asarray(resistance_torque, float)
+    step = angle[1] - angle[0]
+    period = step * len(angle)
+    # Trapezoidal rule on the closed (periodic) cycle.
+    closed = np.append(mr, mr[0])
+    work_r = np.concatenate(([0.0], np.cumsum((closed[1:] + closed[:-1]) / 2.0 * step)))
+    md = work_r[-1] / period
+    energy = md * angle - work_r[:-1]
+    i_min, i_max = int(np.argmin(energy)), int(np.argmax(energy))
+    return EnergyCycle(angle, mr, float(md), energy, float(energy[i_max] - energy[i_min]),
+                       float(angle[i_min]), float(angle[i_max]))
+
+
+def flywheel_inertia(max_energy_swing: float, speed_rpm: float, fluctuation: float) -> float:
+    """J_F [kg·m²] = 900·ΔW_max/(π²·n²·[δ]), n [rpm] of the flywheel shaft."""
+    return 900.0 * max_energy_swing / (np.pi**2 * speed_rpm**2 * fluctuation)
+
+
+@dataclass(frozen=True)
+class RimFlywheel:
+    """Cast rim flywheel: mean diameter D, rim width b and height H (H = ratio·b) [m]."""
+
+    diameter: float
+    width: float
+    height: float
+    rim_mass: float          # [kg]
+    rim_speed: float         # peripheral speed at D [m/s]
+
+
+def rim_dimensions(inertia: float, diameter: float, height_to_width: float,
+                   specific_weight: float, speed_rpm: float, gravity: float = 9.81) -> RimFlywheel:
+    """Rim of a wheel whose inertia is all in a thin rim at mean diameter D.
+
+    m = 4·J_F/D²; m·g = γ·π·D·H·b with H = k·b → b = √(4·g·J_F / (π·D³·k·γ)).
+    γ is the material's specific weight [N/m³] (cast iron ≈ 7×10⁴ N/m³).
+    """
+    mass = 4.0 * inertia / diameter**2
+    width = np.sqrt(mass * gravity / (specific_weight * np.pi * diameter * height_to_width))
+    return RimFlywheel(diameter, float(width), float(height_to_width * width), float(mass),
+                       float(np.pi * diameter * speed_rpm / 60.0))

@@ -1,0 +1,148 @@
+"""Locate the Chinese (CJK) fonts used by the PDF report and the figures.
+
+The preferred source is the ``pylopdf_fonts_zh_cn`` package, which ships
+Noto Serif SC / Noto Sans SC (Regular weight only).  Without it, common system
+font directories are searched for Noto CJK, Source Han, SimSun/SimHei or
+Microsoft YaHei files.
+"""
+
+from __future__ import annotations
+
+import os
+from functools import lru_cache
+from pathlib import Path
+
+# (file-name prefix in lower case, typst/matplotlib family name, role)
+_FALLBACK_FONTS = [
+    ("notoserifsc", "Noto Serif SC", "serif"),
+    ("notosanssc", "Noto Sans SC", "sans"),
+    ("notoserifcjk", "Noto Serif CJK SC", "serif"),
+    ("notosanscjk", "Noto Sans CJK SC", "sans"),
+    ("sourcehanserif", "Source Han Serif SC", "serif"),
+    ("sourcehansans", "Source Han Sans SC", "sans"),
+    ("simsun", "SimSun", "serif"),
+    ("simhei", "SimHei", "sans"),
+    ("msyh", "Microsoft YaHei", "sans"),
+]
+_FONT_SUFFIXES = {".otf", ".ttf", ".ttc", ".otc"}
+
+
+def _system_font_dirs() -> list[Path]:
+    """Return the usual system/user font directories that exist on this machine."""
+    home = Path.home()
+    candidates = [
+        Path("/usr/share/fonts"),
+        Path("/usr/local/share/fonts"),
+        home / ".fonts",
+        home / ".local/share/fonts",
+        Path("/Library/Fonts"),
+        Path("/System/Library/Fonts"),
+        home / "Library/Fonts",
+        Path(os.environ.get("WINDIR", r"C:\Windows")) / "Fonts",
+    ]
+    return [d for d in candidates if d.is_dir()]
+
+
+@lru_cache(maxsize=1)
+def _scan_system_fonts() -> tuple[tuple[Path, str, str], ...]:
+    """Find CJK font files in system directories.
+
+    Returns tuples ``(file, family, role)`` ordered by preference
+    (the order of ``_FALLBACK_FONTS``).
+    """
+    found: list[tuple[int, Path, str, str]] = []
+    for root in _system_font_dirs():
+        for path in root.rglob("*"):
+            if path.suffix.lower() not in _FONT_SUFFIXES:
+                continue
+            name = path.name.lower().replace("-", "").replace("_", "")
+            for rank, (prefix, family, role) in enumerate(_FALLBACK_FONTS):
+                if name.startswith(prefix):
+                    found.append((rank, path, family, role))
+                    break
+    found.sort(key=lambda item: (item[0], str(item[1])))
+    return tuple((path, family, role) for _, path, family, role in found)
+
+
+def _package_fonts() -> dict[str, Path] | None:
+    """Return ``{"serif": file, "sans": file}`` from pylopdf_fonts_zh_cn, or None."""
+    try:
+        import pylopdf_fonts_zh_cn as pkg
+    except ImportError:
+        return None
+    serif, sans = Path(pkg.serif_path()), Path(pkg.sans_path())
+    if serif.is_file() and sans.is_file():
+        return {"serif": serif, "sans": sans}
+    return None
+
+
+def font_dirs() -> list[Path]:
+    """Directories holding the CJK fonts, to pass to typst's ``font_paths``.
+
+    Returns the pylopdf_fonts_zh_cn package directory when available, else the
+    (deduplicated) directories of CJK font files found on the system; may be empty.
+    """
+    pkg = _package_fonts()
+    if pkg:
+        return [pkg["serif"].parent]
+    dirs: list[Path] = []
+    for path, _, _ in _scan_system_fonts():
+        if path.parent not in dirs:
+            dirs.append(path.parent)
+    return dirs
+
+
+def _font_files() -> dict[str, Path]:
+    """Return the preferred CJK font file per role ("serif"/"sans"); may be partial."""
+    pkg = _package_fonts()
+    if pkg:
+        return pkg
+    files: dict[str, Path] = {}
+    for path, _, role in _scan_system_fonts():
+        files.setdefault(role, path)
+    return files
+
+
+def cjk_families() -> dict[str, str]:
+    """Family names of the CJK fonts: ``{"serif": ..., "sans": ...}``.
+
+    ``Noto Serif SC`` / ``Noto Sans SC`` when the font package is installed,
+    otherwise the best system fallback (a missing role borrows the other one;
+    with nothing found the Noto names are returned and typst will fall back).
+    """
+    if _package_fonts():
+        return {"serif": "Noto Serif SC", "sans": "Noto Sans SC"}
+    families: dict[str, str] = {}
+    for _, family, role in _scan_system_fonts():
+        families.setdefault(role, family)
+    serif = families.get("serif") or families.get("sans") or "Noto Serif SC"
+    sans = families.get("sans") or families.get("serif") or "Noto Sans SC"
+    return {"serif": serif, "sans": sans}
+
+
+_registered: set[Path] = set()
+
+
+def configure_matplotlib() -> None:
+    """Make matplotlib render Chinese text (idempotent, safe to call repeatedly).
+
+    Registers the CJK sans font file with matplotlib's font manager (once) and
+    sets rcParams: sans-serif family with the CJK font first and DejaVu Sans as
+    fallback, ASCII minus signs, and DejaVu Sans mathtext.
+    """
+    import matplotlib
+    from matplotlib import font_manager
+
+    files = _font_files()
+    font_file = files.get("sans") or files.get("serif")
+    family = "DejaVu Sans"
+    if font_file is not None:
+        if font_file not in _registered:
+            font_manager.fontManager.addfont(str(font_file))
+            _registered.add(font_file)
+        family = font_manager.FontProperties(fname=str(font_file)).get_name()
+
+    matplotlib.rcParams["font.family"] = "sans-serif"
+    matplotlib.rcParams["font.sans-serif"] = [family, "DejaVu Sans"]
+    matplotlib.rcParams["axes.unicode_minus"] = False
+    matplotlib.rcParams["mathtext.fontset"] = "dejavusans"

@@ -1,0 +1,172 @@
+"""Markdown -> typst (pandoc) -> PDF (typst) rendering of the report.
+
+Metadata keys understood by ``templates/report.typ`` (all optional):
+``title``, ``subtitle``, ``student``, ``student_id``, ``class``, ``teacher``,
+``date``, ``lang`` ("zh" or "en", default "zh"), ``mainfont``/``sansfont``
+(family name or list; default: the CJK families from :mod:`fonts`),
+``toc-depth`` and a nested ``labels`` mapping with ``student``, ``student_id``,
+``class``, ``teacher``, ``date``, ``contents`` (defaults depend on ``lang``).
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import re
+import tempfile
+import warnings
+from pathlib import Path
+
+from .fonts import cjk_families, font_dirs
+
+MARKDOWN_FORMAT = (
+    "markdown+pipe_tables+tex_math_dollars+implicit_figures"
+    "+yaml_metadata_block+east_asian_line_breaks"
+)
+
+DEFAULT_LABELS = {
+    "zh": {
+        "student": "姓名",
+        "student_id": "学号",
+        "class": "班级",
+        "teacher": "指导教师",
+        "date": "日期",
+        "contents": "目录",
+    },
+    "en": {
+        "student": "Name",
+        "student_id": "Student No.",
+        "class": "Class",
+        "teacher": "Supervisor",
+        "date": "Date",
+        "contents": "Contents",
+    },
+}
+
+
+# Pandoc turns a bare ``@label`` into a citation; typst needs a reference.
+_PROSE_CITE = re.compile(r'#cite\(<([^>]+)>, form: "prose"\)')
+# Markdown needs a space before "@label"; between CJK characters it must go.
+_CJK = "\u3000-\u303f\u3400-\u9fff\uff00-\uffef"
+_SPACE_BEFORE_REF = re.compile(rf"(?<=[{_CJK}]) (?=#ref\(<[^>]+>\))")
+_SPACE_AFTER_REF = re.compile(rf"(#ref\(<[^>]+>\)) (?=[{_CJK}])")
+
+
+class PdfRenderError(RuntimeError):
+    """Pandoc or typst failed while rendering the report."""
+
+
+def _full_metadata(metadata: dict) -> dict:
+    """Return ``metadata`` completed with defaults for lang, fonts and labels."""
+    meta = dict(metadata)
+    lang = str(meta.get("lang") or "zh")
+    # pandoc has no "zh" translations (it warns) but knows "zh-Hans"; typst gets lang "zh".
+    meta["lang"] = "zh-Hans" if lang.lower() in ("zh", "zh-cn") else lang
+    families = cjk_families()
+    meta.setdefault("mainfont", [families["serif"]])
+    meta.setdefault("sansfont", [families["sans"]])
+    base = DEFAULT_LABELS["zh" if lang.lower().startswith("zh") else "en"]
+    meta["labels"] = {**base, **(meta.get("labels") or {})}
+    return meta
+
+
+def markdown_to_typst(md_text: str, template: Path, metadata: dict, resource_dir: Path) -> str:
+    """Convert Markdown to a standalone typst document with pandoc.
+
+    Inputs: the Markdown text, the pandoc typst template, the metadata mapping
+    (see the module docstring; completed with defaults) and the directory that
+    relative resources (images) are resolved against.  Metadata from a YAML
+    block inside ``md_text`` takes precedence over ``metadata``.  A bare
+    ``@label`` naming a figure/table/heading label of the document (or any
+    ``@key`` when there is no bibliography) becomes a typst reference
+    (e.g. "图 1") instead of a citation.
+    Output: the typst source.  Raises PdfRenderError if pandoc fails.
+    """
+    import pypandoc
+
+    meta = _full_metadata(metadata)
+    with tempfile.TemporaryDirectory(prefix="mechdesign-pandoc-") as tmp:
+        meta_file = Path(tmp) / "metadata.json"
+        # JSON is valid YAML, which is what --metadata-file expects.
+        meta_file.write_text(json.dumps(meta, ensure_ascii=False, default=str), encoding="utf-8")
+        try:
+            source = pypandoc.convert_text(
+                md_text,
+                "typst",
+                format=MARKDOWN_FORMAT,
+                extra_args=[
+                    "--standalone",
+                    f"--template={Path(template).resolve()}",
+                    f"--metadata-file={meta_file}",
+                    f"--resource-path={Path(resource_dir).resolve()}",
+                    "--wrap=none",
+                    # wide pipe tables keep natural (auto) column widths; typst
+                    # shrinks them to the text width only when needed
+                    "--columns=10000",
+                ],
+            )
+        except (RuntimeError, OSError) as exc:
+            raise PdfRenderError(f"pandoc failed to convert Markdown to typst: {exc}") from exc
+
+    defined = set(re.findall(r"^<([^>\s]+)>$", source, flags=re.MULTILINE))
+    has_bibliography = bool(meta.get("bibliography"))
+
+    def to_ref(match: re.Match) -> str:
+        key = match.group(1)
+        return f"#ref(<{key}>)" if key in defined or not has_bibliography else match.group(0)
+
+    source = _PROSE_CITE.sub(to_ref, source)
+    source = _SPACE_BEFORE_REF.sub("", source)
+    return _SPACE_AFTER_REF.sub(r"\1", source)
+
+
+def _typst_message(exc: Exception) -> str:
+    """Readable text of a typst.TypstError (message, diagnostic and hints)."""
+    parts = [getattr(exc, "diagnostic", "") or getattr(exc, "message", "") or str(exc)]
+    parts += [f"hint: {hint}" for hint in getattr(exc, "hints", None) or []]
+    return "\n".join(part.rstrip() for part in parts if part)
+
+
+def render_pdf(md_path: Path, pdf_path: Path, metadata: dict, template: Path) -> None:
+    """Render a Markdown file to PDF via pandoc and typst.
+
+    Inputs: the Markdown file (images referenced relative to its directory), the
+    output PDF path, the metadata mapping (see module docstring) and the pandoc
+    typst template.  The typst source is written under a temporary name into the
+    Markdown's directory (the typst root) and deleted afterwards; the PDF is
+    written atomically.  Typst warnings are re-emitted as Python warnings.
+    Raises PdfRenderError if pandoc or typst fails.
+    """
+    import typst
+
+    md_path = Path(md_path).resolve()
+    pdf_path = Path(pdf_path).resolve()
+    root = md_path.parent
+    source = markdown_to_typst(md_path.read_text(encoding="utf-8"), template, metadata, root)
+
+    fd, typ_name = tempfile.mkstemp(prefix=f".{md_path.stem}-", suffix=".typ", dir=root)
+    try:
+        with os.fdopen(fd, "w", encoding="utf-8") as handle:
+            handle.write(source)
+        try:
+            pdf_bytes, typst_warnings = typst.compile_with_warnings(
+                typ_name,
+                root=str(root),
+                font_paths=[str(d) for d in font_dirs()],
+            )
+        except typst.TypstError as exc:
+            raise PdfRenderError(f"typst failed to compile {md_path.name}:\n{_typst_message(exc)}") from exc
+    finally:
+        Path(typ_name).unlink(missing_ok=True)
+
+    for warning in typst_warnings:
+        warnings.warn(f"typst: {_typst_message(warning)}", stacklevel=2)
+
+    pdf_path.parent.mkdir(parents=True, exist_ok=True)
+    tmp_pdf = pdf_path.with_name(f".{pdf_path.name}.{os.getpid()}.tmp")
+    try:
+        tmp_pdf.write_bytes(pdf_bytes)
+        os.replace(tmp_pdf, pdf_path)
+    except BaseException:
+        tmp_pdf.unlink(missing_ok=True)
+        raise
