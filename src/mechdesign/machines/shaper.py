@@ -15,6 +15,7 @@ from ..core import flywheel as fw
 from ..core.kinetostatics import Body, PointLoad, power_residual, solve_forces
 from ..core.mechanism import RPR, RRP, Crank, LinkPoint, Mechanism
 from ..core.synthesis import GuideBarDesign, guide_bar_quick_return
+from ..pipeline import Stage
 from .positions import Positions, textbook_positions
 
 FRAME = "7"
@@ -267,3 +268,73 @@ def verify(syn: Synthesis, k: Kinematics, mech: Mechanism, motion, f: Forces,
                         float(k_sim), float(np.max(np.abs(power)) / scale), float(2 * np.pi / n))
 
 
+
+
+def _kinematics_stage(r: dict):
+    k, mech, motion = kinematics(r["synthesis"], r["params"])
+    r["mechanism"], r["motion"] = mech, motion
+    return k
+
+
+STAGES = [
+    Stage("synthesis", "导杆机构设计 / linkage synthesis",
+          lambda r: synthesize(r["params"])),
+    Stage("kinematics", "机构运动分析 / kinematics", _kinematics_stage),
+    Stage("forces", "动态静力分析 / kinetostatics",
+          lambda r: kinetostatics(r["kinematics"], r["mechanism"], r["motion"], r["params"])),
+    Stage("flywheel", "飞轮设计 / flywheel",
+          lambda r: flywheel(r["kinematics"], r["forces"], r["params"])),
+    Stage("verification", "校核 / verification",
+          lambda r: verify(r["synthesis"], r["kinematics"], r["mechanism"], r["motion"],
+                           r["forces"], r["params"])),
+]
+
+
+def results_document(r: dict) -> dict:
+    """Everything computed, in SI units, for ``results.json`` (see docs/results.md)."""
+    syn, k, f, fl, v = (r[key] for key in ("synthesis", "kinematics", "forces", "flywheel",
+                                            "verification"))
+    n = k.grid_size
+    per_position = []
+    for i, label in enumerate(k.positions.labels):
+        j = n + i
+        per_position.append({
+            "label": label,
+            "phase": k.phase[j], "crank_angle": k.crank_angle[j] % (2 * np.pi),
+            "ram_s": k.ram_s[j], "ram_v": k.ram_v[j], "ram_a": k.ram_a[j],
+            "omega4": k.omega4[j], "alpha4": k.alpha4[j],
+            "slide_v": k.slide_v[j], "coriolis": k.coriolis[j],
+            "cutting_force": f.cutting_force[j],
+            "inertia_force4": f.inertia_force4[j], "inertia_couple4": f.inertia_couple4[j],
+            "inertia_force6": f.inertia_force6[j],
+            "reactions": {name: force[j] for name, force in f.reactions.items()},
+            "prismatic_couples": {name: c[j] for name, c in f.couples.items()},
+            "balancing_torque": f.balancing_torque[j],
+        })
+    d = syn.design
+    return {
+        "schema": "mechdesign.results/1",
+        "machine": "shaper",
+        "units": "SI: m, s, rad, kg, N, N·m, J, W; complex vectors as [x, y]",
+        "synthesis": {
+            "extreme_angle": syn.extreme_angle, "swing_angle": d.swing_angle,
+            "crank": d.crank, "frame": d.frame, "guide_bar": d.guide_bar, "rod": d.rod,
+            "guide_height": d.guide_height, "bar_com": d.bar_com,
+            "guide_height_above_O2": syn.guide_height_above_O2,
+        },
+        "positions": per_position,
+        "grid": {
+            "phase": k.phase[:n], "ram_s": k.ram_s[:n], "ram_v": k.ram_v[:n],
+            "ram_a": k.ram_a[:n], "omega4": k.omega4[:n], "alpha4": k.alpha4[:n],
+            "balancing_torque": f.balancing_torque[:n], "energy": fl.energy,
+        },
+        "working_stroke_crank_angle": k.working_span,
+        "flywheel": {
+            "shaft": fl.shaft, "ratio_to_crank": fl.ratio_to_crank,
+            "shaft_speed_rpm": fl.shaft_speed_rpm, "driving_torque": fl.driving_torque,
+            "max_energy_swing": fl.max_energy_swing, "inertia": fl.inertia,
+            "phase_at_min": fl.phase_at_min, "phase_at_max": fl.phase_at_max,
+            "mean_power": fl.mean_power, "rim": fl.rim,
+        },
+        "verification": v,
+    }

@@ -1,0 +1,130 @@
+"""Command line: ``mechdesign run BRIEF``.
+
+Exit codes: 0 success; 1 the report could not be rendered (toolchain or file-system
+problem); 2 the brief or the command line is invalid (including a mechanism that
+cannot be assembled with the brief's data).
+"""
+from __future__ import annotations
+
+import importlib
+import sys
+import time
+import traceback
+from enum import Enum
+from pathlib import Path
+from typing import Optional
+
+import typer
+
+from . import __version__
+
+app = typer.Typer(add_completion=False, no_args_is_help=True,
+                  help="Mechanism course design (机械原理课程设计): from a YAML design brief "
+                       "to a bilingual report (Markdown + PDF).")
+
+EXIT_OK, EXIT_FAILED, EXIT_INVALID = 0, 1, 2
+
+
+class Lang(str, Enum):
+    zh = "zh"
+    en = "en"
+
+
+def _version(value: bool):
+    if value:
+        typer.echo(f"mechdesign {__version__}")
+        raise typer.Exit()
+
+
+@app.callback()
+def main(version: Optional[bool] = typer.Option(None, "--version", callback=_version,
+                                                is_eager=True, help="Show the version and exit.")):
+    """Mechanism course design reports from YAML briefs."""
+
+
+def _err(msg: str) -> None:
+    typer.echo(msg, err=True)
+
+
+def _parse_formats(text: str) -> tuple[str, ...]:
+    from .render.report import FORMATS
+
+    formats = tuple(dict.fromkeys(x.strip().lower() for x in text.split(",") if x.strip()))
+    bad = [x for x in formats if x not in FORMATS]
+    if bad or not formats:
+        raise typer.BadParameter(f"{text!r}: allowed formats are {', '.join(FORMATS)} "
+                                 "(comma-separated, e.g. md,pdf)", param_hint="--format")
+    return formats
+
+
+@app.command()
+def run(
+    brief: Path = typer.Argument(..., exists=True, dir_okay=False, readable=True,
+                                 help="Design brief (YAML), e.g. designs/shaper.yaml."),
+    out: Optional[Path] = typer.Option(None, "--out", "-o", file_okay=False,
+                                       help="Output folder [default: out/<brief name>]."),
+    lang: Optional[Lang] = typer.Option(None, "--lang", help="Report language "
+                                        "[default: the brief's report.language, zh]."),
+    formats: str = typer.Option("md,pdf", "--format", "-f",
+                                help="Comma-separated output formats: md, pdf."),
+    templates: Optional[Path] = typer.Option(None, "--templates", exists=True, file_okay=False,
+                                             help="Folder of report templates to use instead "
+                                                  "of the shipped ones."),
+    debug: bool = typer.Option(False, "--debug", help="Show Python tracebacks on errors."),
+):
+    """Run every stage for BRIEF and write report.md, report.pdf, results.json and figures."""
+    from .brief.loader import BriefError, load_brief
+    from .core.mechanism import AssemblyError
+    from .machines import get_machine
+    from .pipeline import run_stages
+    from .render.report import write_report
+
+    fmt = _parse_formats(formats)
+    try:
+        b = load_brief(brief)
+    except BriefError as exc:
+        _err(str(exc))
+        raise typer.Exit(EXIT_INVALID)
+    language = (lang.value if lang else b.report.language)
+    out_dir = out if out is not None else Path("out") / brief.stem
+    machine = get_machine(b.machine)
+
+    def stage_progress(i: int, total: int, title: str) -> None:
+        _err(f"[{i}/{total}] {title}")
+
+    start = time.perf_counter()
+    try:
+        results, _ = run_stages(machine.stages, {"params": machine.to_params(b), "brief": b},
+                                stage_progress)
+    except AssemblyError as exc:
+        if debug:
+            traceback.print_exc()
+        _err(f"{brief}: the mechanism cannot be assembled with the brief's data:\n  {exc}")
+        raise typer.Exit(EXIT_INVALID)
+    computed = time.perf_counter() - start
+    report = importlib.import_module(machine.report_module)
+
+    def render_progress(what: str) -> None:
+        _err(f"      rendering {what}")
+
+    try:
+        written = write_report(
+            out_dir, machine=machine.name, lang=language, formats=fmt,
+            make_figures=lambda d: report.make_figures(results, d, language),
+            make_context=lambda figs: report.context(results, b, figs, language),
+            document=machine.document(results), meta=b.report, templates=templates,
+            progress=render_progress)
+    except Exception as exc:  # noqa: BLE001 - any rendering failure gets a clean message
+        if debug:
+            traceback.print_exc()
+        _err(f"error: the report could not be rendered: {exc}\n"
+             "(nothing was written; run with --debug for the traceback)")
+        raise typer.Exit(EXIT_FAILED)
+    total = time.perf_counter() - start
+    _err(f"done in {total:.1f} s (computation {computed:.2f} s)")
+    for path in written:
+        typer.echo(str(path))
+
+
+if __name__ == "__main__":  # pragma: no cover
+    sys.exit(app())

@@ -1,0 +1,167 @@
+"""Figures of the shaper report (matplotlib, Agg). Computation never imports this.
+
+Every plot runs inside :func:`figure` which creates the axes, saves a PNG and closes
+the figure; plot functions take prepared arrays in course units and return nothing.
+"""
+from __future__ import annotations
+
+from contextlib import contextmanager
+from pathlib import Path
+
+import numpy as np
+
+from .fonts import configure_matplotlib
+
+LABELS = {
+    "zh": {
+        "phase": "曲柄转角 φ (°)", "s": "位移 s (mm)", "v": "速度 v (m/s)",
+        "a": "加速度 a (m/s²)", "w4": r"角速度 $\omega_4$ (rad/s)", "a4": r"角加速度 $\alpha_4$ (rad/s²)",
+        "mb": r"平衡力矩 $M_b$ (N·m)", "md": "等效驱动力矩（折算到曲柄）",
+        "cut": "切削区", "energy": "动能增量 ΔE (J)", "dwmax": r"$\Delta W_{max}$",
+        "x": "x (mm)", "y": "y (mm)", "reaction": "运动副反力 (N)", "guide": "刨头导路",
+        "working": "工作行程", "return": "回程",
+    },
+    "en": {
+        "phase": "crank angle φ (°)", "s": "displacement s (mm)", "v": "velocity v (m/s)",
+        "a": "acceleration a (m/s²)", "w4": r"$\omega_4$ (rad/s)", "a4": r"$\alpha_4$ (rad/s²)",
+        "mb": r"balancing torque $M_b$ (N·m)", "md": "constant driving torque (on the crank)",
+        "cut": "cutting", "energy": "energy change ΔE (J)", "dwmax": r"$\Delta W_{max}$",
+        "x": "x (mm)", "y": "y (mm)", "reaction": "joint reaction (N)", "guide": "ram guide",
+        "working": "working stroke", "return": "return stroke",
+    },
+}
+
+
+@contextmanager
+def figure(path: Path, nrows: int = 1, size: tuple[float, float] = (7.0, 3.2), sharex=True):
+    """Create a figure with ``nrows`` axes, yield the axes, save to ``path`` and close."""
+    configure_matplotlib()
+    import matplotlib
+
+    matplotlib.use("Agg", force=False)
+    import matplotlib.pyplot as plt
+
+    fig, axes = plt.subplots(nrows, 1, figsize=size, sharex=sharex, squeeze=False)
+    try:
+        yield [ax for ax in axes[:, 0]]
+        fig.tight_layout()
+        fig.savefig(path, dpi=150)
+    finally:
+        plt.close(fig)
+
+
+def _phase_axis(ax, lab, working_span_deg: float, positions=None):
+    ax.set_xlim(0, 360)
+    ax.set_xticks(np.arange(0, 361, 30))
+    ax.axvspan(0, working_span_deg, color="0.93", zorder=0)
+    ax.grid(True, lw=0.4, color="0.8")
+    if positions is not None:
+        labels, ph, values = positions
+        ax.plot(ph, values, "o", ms=3, color="C3", zorder=3)
+
+
+def curves_vs_phase(path: Path, lang: str, phase_deg, series, ylabels, working_span_deg,
+                    position_marks=None, size=(7.0, 6.0)):
+    """Stacked curves sharing the crank-angle axis; ``series`` is a list of arrays."""
+    lab = LABELS[lang]
+    with figure(path, len(series), size) as axes:
+        for i, (ax, y, yl) in enumerate(zip(axes, series, ylabels)):
+            marks = None
+            if position_marks is not None:
+                marks = (position_marks[0], position_marks[1], position_marks[2][i])
+            _phase_axis(ax, lab, working_span_deg, marks)
+            ax.plot(phase_deg, y, lw=1.4, color="C0")
+            ax.axhline(0, color="0.4", lw=0.6)
+            ax.set_ylabel(yl)
+        axes[0].text(working_span_deg / 2, 1.02, lab["working"], transform=axes[0].get_xaxis_transform(),
+                     ha="center", va="bottom", fontsize=8)
+        axes[0].text((working_span_deg + 360) / 2, 1.02, lab["return"],
+                     transform=axes[0].get_xaxis_transform(), ha="center", va="bottom", fontsize=8)
+        if position_marks is not None:
+            top = axes[0].secondary_xaxis("top")
+            top.set_xticks(position_marks[1])
+            top.set_xticklabels(position_marks[0], fontsize=6)
+            top.tick_params(length=2, pad=8)
+        axes[-1].set_xlabel(lab["phase"])
+
+
+def balancing_torque(path: Path, lang: str, phase_deg, mb, mean_mb, cutting, working_span_deg,
+                     position_marks):
+    lab = LABELS[lang]
+    with figure(path, 1, (7.0, 3.4)) as (ax,):
+        _phase_axis(ax, lab, working_span_deg, position_marks)
+        on = cutting > 0
+        ax.fill_between(phase_deg, 0, 1, where=on, transform=ax.get_xaxis_transform(),
+                        color="C1", alpha=0.12, lw=0, label=lab["cut"])
+        ax.plot(phase_deg, mb, lw=1.4, color="C0", label=r"$M_b$")
+        ax.axhline(mean_mb, color="C2", lw=1.0, ls="--", label=f"{lab['md']} = {mean_mb:.1f} N·m")
+        ax.axhline(0, color="0.4", lw=0.6)
+        ax.set_xlabel(lab["phase"])
+        ax.set_ylabel(lab["mb"])
+        ax.legend(fontsize=7, loc="lower left")
+
+
+def energy(path: Path, lang: str, phase_deg, energy_j, at_min_deg, at_max_deg, swing,
+           working_span_deg):
+    lab = LABELS[lang]
+    with figure(path, 1, (7.0, 3.4)) as (ax,):
+        _phase_axis(ax, lab, working_span_deg)
+        ax.plot(phase_deg, energy_j, lw=1.4, color="C0")
+        lo, hi = float(np.min(energy_j)), float(np.max(energy_j))
+        ax.axhline(lo, color="C3", lw=0.6, ls=":")
+        ax.axhline(hi, color="C3", lw=0.6, ls=":")
+        ax.plot([at_min_deg, at_max_deg], [lo, hi], "o", color="C3", ms=4)
+        x = 0.5 * (at_min_deg + at_max_deg)
+        ax.annotate("", xy=(x, hi), xytext=(x, lo), arrowprops=dict(arrowstyle="<->", color="C3"))
+        ax.text(x + 4, 0.5 * (lo + hi), f"{lab['dwmax']} = {swing:.1f} J", color="C3", fontsize=8)
+        ax.axhline(0, color="0.4", lw=0.6)
+        ax.set_xlabel(lab["phase"])
+        ax.set_ylabel(lab["energy"])
+
+
+def reactions(path: Path, lang: str, phase_deg, named, working_span_deg):
+    lab = LABELS[lang]
+    with figure(path, 1, (7.0, 3.6)) as (ax,):
+        _phase_axis(ax, lab, working_span_deg)
+        for name, values in named.items():
+            ax.plot(phase_deg, values, lw=1.1, label=name)
+        ax.set_xlabel(lab["phase"])
+        ax.set_ylabel(lab["reaction"])
+        ax.legend(fontsize=7, ncol=4, loc="upper right")
+
+
+def mechanism(path: Path, lang: str, pts: dict, labels, guide_y_mm: float, crank_mm: float):
+    """Skeleton of the mechanism at the textbook positions (all in mm).
+
+    ``pts`` maps point names to arrays over the positions (complex, mm); position 0 is
+    drawn bold, the others thin with their labels at the crank pin A.
+    """
+    lab = LABELS[lang]
+    with figure(path, 1, (6.2, 7.2), sharex=False) as (ax,):
+        o2, o3 = pts["O2"][0], pts["O3"][0]
+        t = np.linspace(0, 2 * np.pi, 200)
+        ax.plot((o2 + crank_mm * np.exp(1j * t)).real, (o2 + crank_mm * np.exp(1j * t)).imag,
+                color="0.6", lw=0.6, ls="--")
+        xs = np.concatenate([pts["F"].real, pts["B"].real])
+        ax.plot([xs.min() - 120, xs.max() + 120], [guide_y_mm] * 2, color="0.5", lw=0.8, ls="-.")
+        ax.text(xs.max() + 120, guide_y_mm + 12, lab["guide"], fontsize=7, ha="right")
+        for i, name in enumerate(labels):
+            bold = i == 0
+            c, lw = ("C0", 1.8) if bold else ("0.55", 0.6)
+            a, b, f = pts["A"][i], pts["B"][i], pts["F"][i]
+            ax.plot([o2.real, a.real], [o2.imag, a.imag], color="C3" if bold else c, lw=lw)
+            ax.plot([o3.real, b.real], [o3.imag, b.imag], color=c, lw=lw)
+            ax.plot([b.real, f.real], [b.imag, f.imag], color=c, lw=lw)
+            ax.plot([f.real], [f.imag], "s", color=c, ms=5 if bold else 3)
+            u = (a - o2) / abs(a - o2)
+            ax.text((a + 18 * u).real, (a + 18 * u).imag, name, fontsize=6.5, ha="center", va="center")
+        for name, p in (("O2", o2), ("O3", o3)):
+            ax.plot([p.real], [p.imag], "^", color="k", ms=6)
+            ax.text(p.real + 15, p.imag - 25, name, fontsize=8)
+        for name in ("B", "F"):
+            p = pts[name][0]
+            ax.text(p.real + 10, p.imag + 15, name, fontsize=8, color="C0")
+        ax.set_aspect("equal")
+        ax.set_xlabel(lab["x"])
+        ax.set_ylabel(lab["y"])
+        ax.grid(True, lw=0.3, color="0.85")

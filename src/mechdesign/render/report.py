@@ -1,0 +1,91 @@
+"""Write a report: figures, Markdown from the Jinja2 template, results.json, PDF.
+
+Everything is written into a staging folder next to the output; only when all of it
+succeeded are the files moved into place, so a failed run leaves no half-written
+report (and an earlier report stays as it was).
+"""
+from __future__ import annotations
+
+import os
+import shutil
+import tempfile
+from importlib import resources
+from pathlib import Path
+from typing import Callable
+
+import jinja2
+
+from ..results import dumps
+
+FORMATS = ("md", "pdf")
+
+
+def template_dir(override: Path | None = None) -> Path:
+    """The report templates: ``override`` or the ``templates/`` shipped with mechdesign."""
+    if override is not None:
+        return Path(override)
+    return Path(str(resources.files("mechdesign.templates")))
+
+
+def render_markdown(template_name: str, ctx: dict, templates: Path) -> str:
+    # Pandoc's attribute syntax "{#fig:x}" would open a Jinja comment: comments are {## ##}.
+    env = jinja2.Environment(loader=jinja2.FileSystemLoader(str(templates)),
+                             undefined=jinja2.StrictUndefined, autoescape=False,
+                             keep_trailing_newline=True,
+                             comment_start_string="{##", comment_end_string="##}")
+    return env.get_template(template_name).render(**ctx)
+
+
+def pdf_metadata(meta, lang: str) -> dict:
+    """Title-page metadata for templates/report.typ from the brief's report section."""
+    return {"title": meta.title, "subtitle": meta.subtitle, "student": meta.student,
+            "student_id": meta.student_id, "class": meta.class_name, "teacher": meta.teacher,
+            "date": meta.date, "lang": lang}
+
+
+def write_report(out_dir: Path, *, machine: str, lang: str, formats: tuple[str, ...],
+                 make_figures: Callable[[Path], dict], make_context: Callable[[dict], dict],
+                 document: dict, meta, templates: Path | None = None,
+                 progress: Callable[[str], None] | None = None) -> list[Path]:
+    """Render into a staging folder, then move the finished files into ``out_dir``."""
+    say = progress or (lambda _msg: None)
+    tdir = template_dir(templates)
+    out_dir = Path(out_dir)
+    out_dir.mkdir(parents=True, exist_ok=True)
+    staging = Path(tempfile.mkdtemp(prefix=".mechdesign-staging-", dir=out_dir))
+    try:
+        fig_dir = staging / "figures"
+        fig_dir.mkdir()
+        say("figures")
+        figures = make_figures(fig_dir)
+        ctx = make_context(figures)
+        say("Markdown")
+        md = render_markdown(f"{machine}.{lang}.md.j2", ctx, tdir)
+        (staging / "report.md").write_text(md, encoding="utf-8")
+        (staging / "results.json").write_text(dumps(document), encoding="utf-8")
+        if "pdf" in formats:
+            say("PDF (pandoc → typst)")
+            from .pdf import render_pdf
+
+            render_pdf(staging / "report.md", staging / "report.pdf",
+                       pdf_metadata(meta, lang), tdir / "report.typ")
+        if "md" not in formats:
+            (staging / "report.md").unlink()
+        return _publish(staging, out_dir)
+    finally:
+        shutil.rmtree(staging, ignore_errors=True)
+
+
+def _publish(staging: Path, out_dir: Path) -> list[Path]:
+    """Move the staged files into ``out_dir`` (each move atomic; figures as a folder)."""
+    written = []
+    old_figs = out_dir / "figures"
+    if old_figs.exists():
+        trash = Path(tempfile.mkdtemp(prefix=".mechdesign-old-", dir=out_dir))
+        os.replace(old_figs, trash / "figures")
+        shutil.rmtree(trash, ignore_errors=True)
+    for item in sorted(staging.iterdir()):
+        target = out_dir / item.name
+        os.replace(item, target)
+        written.append(target)
+    return written

@@ -1,0 +1,220 @@
+"""Prepare the shaper report: figures and the template context (strings only).
+
+All formatting and unit conversion for display happens here, so the templates
+contain no logic: they place prepared strings, tables (lists of rows) and LaTeX
+formulas with the numbers already substituted. Report units are the course's
+(mm, °, rpm, N, N·m, J, kg·m²).
+"""
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+
+from . import figures as fig
+
+DEG = 180.0 / np.pi
+
+
+def f(x: float, digits: int = 2) -> str:
+    """Fixed-point number with a true minus sign avoided (ASCII '-') and no '-0.00'."""
+    text = f"{x:.{digits}f}"
+    return text[1:] if text.startswith("-") and float(text) == 0.0 else text
+
+
+def e(x: float) -> str:
+    """Small residuals in scientific notation for the verification table."""
+    return f"{x:.1e}"
+
+
+def make_figures(r: dict, fig_dir: Path, lang: str) -> dict[str, str]:
+    """Draw every figure into ``fig_dir``; return name → relative path for the template."""
+    k, frc, fl, syn = r["kinematics"], r["forces"], r["flywheel"], r["synthesis"]
+    n = k.grid_size
+    ph = k.phase[:n] * DEG
+    span = k.working_span * DEG
+    pos_ph = k.phase[n:] * DEG
+    labels = list(k.positions.labels)
+    marks = (labels, pos_ph)
+    paths = {}
+
+    def out(name):
+        paths[name] = f"{fig_dir.name}/{name}.png"
+        return fig_dir / f"{name}.png"
+
+    lab = fig.LABELS[lang]
+    fig.curves_vs_phase(out("ram_motion"), lang, ph,
+                        [k.ram_s[:n] * 1e3, k.ram_v[:n], k.ram_a[:n]],
+                        [lab["s"], lab["v"], lab["a"]], span,
+                        (labels, pos_ph, [k.ram_s[n:] * 1e3, k.ram_v[n:], k.ram_a[n:]]))
+    fig.curves_vs_phase(out("guide_bar"), lang, ph, [k.omega4[:n], k.alpha4[:n]],
+                        [lab["w4"], lab["a4"]], span,
+                        (labels, pos_ph, [k.omega4[n:], k.alpha4[n:]]), size=(7.0, 4.4))
+    fig.balancing_torque(out("balancing_torque"), lang, ph, frc.balancing_torque[:n],
+                         fl.driving_torque * fl.ratio_to_crank, frc.cutting_force[:n], span,
+                         (labels, pos_ph, frc.balancing_torque[n:]))
+    fig.energy(out("energy"), lang, ph, fl.energy, fl.phase_at_min * DEG,
+               fl.phase_at_max * DEG, fl.max_energy_swing, span)
+    fig.reactions(out("reactions"), lang, ph,
+                  {name: np.abs(frc.reactions[key][:n]) for name, key in _REACTIONS}, span)
+    regular = [i for i, s in enumerate(k.positions.special) if not s]
+    pts = {name: k.points[name][n:][regular] * 1e3 for name in ("O2", "O3", "A", "B", "F")}
+    fig.mechanism(out("mechanism"), lang, pts, [labels[i] for i in regular],
+                  syn.design.guide_height * 1e3, syn.design.crank * 1e3)
+    return paths
+
+
+# Reaction symbols shown in the report (force of the first link on the second).
+_REACTIONS = [("F_R72", "R72"), ("F_R23", "R23"), ("F_R43", "R43"), ("F_R74", "R74"),
+              ("F_R45", "R45"), ("F_R56", "R56"), ("F_R76", "R76")]
+
+
+def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
+    """Strings, rows and formulas for the templates."""
+    p, syn, k, frc, fl, v = (r[key] for key in ("params", "synthesis", "kinematics", "forces",
+                                               "flywheel", "verification"))
+    d = syn.design
+    n = k.grid_size
+    mm = 1e3
+    K, H = p.time_ratio_K, p.stroke * mm
+    theta = syn.extreme_angle * DEG
+    half = theta / 2
+    lk, ms, ld = brief.linkage, brief.masses, brief.loads
+
+    data_rows = [
+        ["H", "刨头行程 / ram stroke", f(lk.stroke_H_mm, 0), "mm"],
+        ["K", "行程速比系数 / time ratio", f(K, 2), "—"],
+        ["L_O2O3", "机架长 / frame", f(lk.frame_O2O3_mm, 0), "mm"],
+        ["L_BF/L_O3B", "连杆与导杆之比 / rod ratio", f(lk.rod_ratio_BF_O3B, 2), "—"],
+        ["L_O3S4/L_O3B", "导杆质心位置 / bar CoM ratio", f(lk.com_ratio_O3S4_O3B, 2), "—"],
+        ["x_S6", "刨头质心至 F / ram CoM from F", f(lk.ram_com_x_S6_mm, 0), "mm"],
+        ["n2", "曲柄转速 / crank speed", f(lk.crank_speed_n2_rpm, 0), "rpm"],
+        ["m4", "导杆质量 / guide-bar mass", f(ms.guide_bar_m4_kg, 1), "kg"],
+        ["J_S4", "导杆转动惯量 / guide-bar inertia", f(ms.guide_bar_J_S4_kgm2, 2), "kg·m²"],
+        ["m6", "刨头质量 / ram mass", f(ms.ram_m6_kg, 1), "kg"],
+        ["G2", "齿轮2重量 / gear 2 weight", f(ms.gear2_weight_G2_N, 0), "N"],
+        ["F_c", "切削阻力 / cutting force", f(ld.cutting_force_Fc_N, 0), "N"],
+        ["y_P", "切削力作用线距 O2 / cutting line above O2", f(ld.cutting_height_yP_mm, 0), "mm"],
+        ["z1, z2", "齿轮齿数 / gear teeth", f"{p.z1}, {p.z2}", "—"],
+        ["[δ]", "许用速度不均匀系数 / speed fluctuation", f"1/{f(1 / p.fluctuation, 1)}", "—"],
+    ]
+    sin_half = np.sin(np.radians(half))
+    eq = {
+        "theta": (rf"\theta = 180° \times \frac{{K-1}}{{K+1}} = 180° \times "
+                  rf"\frac{{{f(K, 2)}-1}}{{{f(K, 2)}+1}} = {f(theta, 2)}°"),
+        "bar": (rf"L_{{O_3B}} = \frac{{H}}{{2\sin(\psi/2)}} = \frac{{{f(H, 0)}}}"
+                rf"{{2\sin {f(half, 3)}°}} = {f(d.guide_bar * mm, 2)}\ \text{{mm}}"),
+        "crank": (rf"L_{{O_2A}} = L_{{O_2O_3}} \sin(\psi/2) = {f(d.frame * mm, 0)} \times "
+                  rf"{f(sin_half, 5)} = {f(d.crank * mm, 2)}\ \text{{mm}}"),
+        "rod": (rf"L_{{BF}} = {f(p.rod_ratio, 2)}\, L_{{O_3B}} = {f(p.rod_ratio, 2)} \times "
+                rf"{f(d.guide_bar * mm, 2)} = {f(d.rod * mm, 2)}\ \text{{mm}}"),
+        "guide": (rf"L_{{O_3M}} = L_{{O_3B}}\,\frac{{1+\cos(\psi/2)}}{{2}} = "
+                  rf"{f(d.guide_bar * mm, 2)} \times \frac{{1+{f(np.cos(np.radians(half)), 5)}}}{{2}}"
+                  rf" = {f(d.guide_height * mm, 2)}\ \text{{mm}}"),
+        "com": (rf"L_{{O_3S_4}} = {f(p.com_ratio, 2)}\, L_{{O_3B}} = {f(d.bar_com * mm, 2)}\ \text{{mm}}"),
+    }
+    syn_rows = [
+        ["θ = ψ", "极位夹角 = 导杆摆角 / extreme angle = swing", f(theta, 3), "°"],
+        ["L_O2A", "曲柄 / crank", f(d.crank * mm, 2), "mm"],
+        ["L_O3B", "导杆 / guide bar", f(d.guide_bar * mm, 2), "mm"],
+        ["L_BF", "连杆 / rod", f(d.rod * mm, 2), "mm"],
+        ["L_O3M", "导路至 O3 / guide line above O3", f(d.guide_height * mm, 2), "mm"],
+        ["L_O2M", "导路至 O2 / guide line above O2", f(syn.guide_height_above_O2 * mm, 2), "mm"],
+        ["L_O3S4", "导杆质心 / bar CoM", f(d.bar_com * mm, 2), "mm"],
+    ]
+    labels = k.positions.labels
+    kin_rows, load_rows, reaction_rows = [], [], []
+    for i, label in enumerate(labels):
+        j = n + i
+        kin_rows.append([label, f(k.phase[j] * DEG, 2), f((k.crank_angle[j] * DEG) % 360, 2),
+                         f(k.ram_s[j] * mm, 2), f(k.ram_v[j], 3), f(k.ram_a[j], 3),
+                         f(k.omega4[j], 3), f(k.alpha4[j], 3), f(k.slide_v[j], 3),
+                         f(k.coriolis[j], 3)])
+        load_rows.append([label, f(frc.cutting_force[j], 0), f(frc.inertia_force4[j], 1),
+                          f(frc.inertia_couple4[j], 2), f(frc.inertia_force6[j], 1),
+                          f(frc.balancing_torque[j], 2)])
+        reaction_rows.append([label] + [f(abs(frc.reactions[key][j]), 1) for _, key in _REACTIONS])
+    # Worked example at one position with the analytic formulas of the guide-bar group.
+    ex = labels.index("4") if "4" in labels else 1
+    j = n + ex
+    phi2 = k.crank_angle[j]
+    phi4 = r["motion"].links["4"].angle[j]
+    w2 = p.crank_omega
+    S = np.sqrt(d.frame**2 + d.crank**2 + 2 * d.frame * d.crank * np.sin(phi2))
+    w4_formula = d.crank * w2 * np.cos(phi2 - phi4) / S
+    vr_formula = -d.crank * w2 * np.sin(phi2 - phi4)
+    worked = {
+        "label": labels[ex],
+        "S": (rf"S = L_{{O_3A}} = \sqrt{{L_1^2 + L_2^2 + 2L_1L_2\sin\varphi_2}} = "
+              rf"\sqrt{{{f(d.frame, 4)}^2 + {f(d.crank, 4)}^2 + 2 \times {f(d.frame, 4)} \times "
+              rf"{f(d.crank, 4)} \sin {f(phi2 * DEG % 360, 2)}°}} = {f(S, 4)}\ \text{{m}}"),
+        "w4": (rf"\omega_4 = \frac{{L_2\,\omega_2\cos(\varphi_2-\varphi_4)}}{{S}} = "
+               rf"\frac{{{f(d.crank, 4)} \times ({f(w2, 4)}) \cos({f(phi2 * DEG % 360, 2)}° - "
+               rf"{f(phi4 * DEG, 2)}°)}}{{{f(S, 4)}}} = {f(w4_formula, 4)}\ \text{{rad/s}}"),
+        "vr": (rf"v_{{A_4A_3}} = -L_2\,\omega_2\sin(\varphi_2-\varphi_4) = {f(vr_formula, 4)}\ "
+               rf"\text{{m/s}}, \quad a^k_{{A_4A_3}} = 2\,\omega_4\, v_{{A_4A_3}} = "
+               rf"{f(2 * w4_formula * vr_formula, 4)}\ \text{{m/s}}^2"),
+        "vf": (rf"v_F = {f(k.ram_v[j], 4)}\ \text{{m/s}}, \quad a_F = {f(k.ram_a[j], 4)}\ "
+               rf"\text{{m/s}}^2"),
+    }
+    i_ratio = fl.ratio_to_crank
+    fly_eq = {
+        "mr": (rf"M_r = \frac{{M_b}}{{i}}, \quad i = \frac{{z_2}}{{z_1}} = \frac{{{p.z2}}}{{{p.z1}}}"
+               rf" = {f(i_ratio, 4)}") if fl.shaft == "pinion" else r"M_r = M_b",
+        "md": (rf"M_d = \frac{{1}}{{2\pi}}\int_0^{{2\pi}} M_r\,d\varphi = {f(fl.driving_torque, 3)}"
+               rf"\ \text{{N·m}}"),
+        "jf": (rf"J_F = \frac{{900\,\Delta W_{{max}}}}{{\pi^2 n^2 [\delta]}} = \frac{{900 \times "
+               rf"{f(fl.max_energy_swing, 2)}}}{{\pi^2 \times {f(fl.shaft_speed_rpm, 2)}^2 \times "
+               rf"{f(p.fluctuation, 4)}}} = {f(fl.inertia, 3)}\ \text{{kg·m}}^2"),
+        "mass": (rf"m = \frac{{4 J_F}}{{D^2}} = \frac{{4 \times {f(fl.inertia, 3)}}}"
+                 rf"{{{f(fl.rim.diameter, 3)}^2}} = {f(fl.rim.rim_mass, 2)}\ \text{{kg}}"),
+        "width": (rf"b = \sqrt{{\frac{{4 g J_F}}{{\pi D^3 (H/b) \gamma}}}} = \sqrt{{\frac{{4 \times "
+                  rf"{f(p.gravity, 2)} \times {f(fl.inertia, 3)}}}{{\pi \times "
+                  rf"{f(fl.rim.diameter, 3)}^3 \times {f(p.rim_height_to_width, 2)} \times "
+                  rf"{f(p.specific_weight, 0)}}}}} = {f(fl.rim.width * mm, 1)}\ \text{{mm}}"),
+    }
+    sense_zh = "顺时针" if p.crank_omega < 0 else "逆时针"
+    sense_en = "clockwise" if p.crank_omega < 0 else "counter-clockwise"
+    return {
+        "meta": brief.report,
+        "fig": figures,
+        "data_rows": data_rows,
+        "syn_rows": syn_rows,
+        "eq": eq,
+        "kin_rows": kin_rows,
+        "load_rows": load_rows,
+        "reaction_rows": reaction_rows,
+        "reaction_names": [name for name, _ in _REACTIONS],
+        "worked": worked,
+        "fly_eq": fly_eq,
+        "sense_zh": sense_zh, "sense_en": sense_en,
+        "n2": f(p.crank_speed_rpm, 0), "omega2": f(abs(p.crank_omega), 4),
+        "theta": f(theta, 2), "K": f(K, 2), "H": f(H, 0),
+        "working_span": f(k.working_span * DEG, 2),
+        "return_span": f(360 - k.working_span * DEG, 2),
+        "idle_mm": f(p.idle_travel_ratio * H, 1), "idle_ratio": f(p.idle_travel_ratio, 2),
+        "cut_from": f(p.idle_travel_ratio * H, 1), "cut_to": f((1 - p.idle_travel_ratio) * H, 1),
+        "grid_points": str(n),
+        "max_v": f(np.max(np.abs(k.ram_v[:n])), 3),
+        "max_a": f(np.max(np.abs(k.ram_a[:n])), 3),
+        "mb_max": f(np.max(frc.balancing_torque[:n]), 2),
+        "mb_min": f(np.min(frc.balancing_torque[:n]), 2),
+        "mb_mean": f(fl.driving_torque * i_ratio, 2),
+        "power": f(fl.mean_power, 1),
+        "fly": {
+            "shaft_zh": "小齿轮 z1 所在的 O1 轴" if fl.shaft == "pinion" else "曲柄轴 O2",
+            "shaft_en": "the pinion shaft O1 (z1)" if fl.shaft == "pinion" else "the crank shaft O2",
+            "n": f(fl.shaft_speed_rpm, 2), "md": f(fl.driving_torque, 3),
+            "dw": f(fl.max_energy_swing, 2), "jf": f(fl.inertia, 3),
+            "at_min": f(fl.phase_at_min * DEG, 1), "at_max": f(fl.phase_at_max * DEG, 1),
+            "D": f(fl.rim.diameter * mm, 0), "b": f(fl.rim.width * mm, 1),
+            "Hr": f(fl.rim.height * mm, 1), "m": f(fl.rim.rim_mass, 2),
+            "speed": f(fl.rim.rim_speed, 2), "delta": f"1/{f(1 / p.fluctuation, 1)}",
+        },
+        "ver": {
+            "closure": e(v.closure_residual), "vel": e(v.velocity_fd_error),
+            "acc": e(v.acceleration_fd_error), "stroke": e(v.stroke_error * mm),
+            "k_sim": f(v.time_ratio_simulated, 6), "power": e(v.power_balance_residual),
+            "step": f(v.fd_step * DEG, 3),
+        },
+    }
