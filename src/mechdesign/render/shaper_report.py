@@ -56,7 +56,7 @@ def make_figures(r: dict, fig_dir: Path, lang: str) -> dict[str, str]:
     fig.energy(out("energy"), lang, ph, fl.energy, fl.phase_at_min * DEG,
                fl.phase_at_max * DEG, fl.max_energy_swing, span)
     fig.reactions(out("reactions"), lang, ph,
-                  {name: np.abs(frc.reactions[key][:n]) for name, key in _REACTIONS}, span)
+                  {f"$F_{{{name}}}$": np.abs(frc.reactions[key][:n]) for name, key in _REACTIONS}, span)
     regular = [i for i, s in enumerate(k.positions.special) if not s]
     pts = {name: k.points[name][n:][regular] * 1e3 for name in ("O2", "O3", "A", "B", "F")}
     fig.mechanism(out("mechanism"), lang, pts, [labels[i] for i in regular],
@@ -65,8 +65,8 @@ def make_figures(r: dict, fig_dir: Path, lang: str) -> dict[str, str]:
 
 
 # Reaction symbols shown in the report (force of the first link on the second).
-_REACTIONS = [("F_R72", "R72"), ("F_R23", "R23"), ("F_R43", "R43"), ("F_R74", "R74"),
-              ("F_R45", "R45"), ("F_R56", "R56"), ("F_R76", "R76")]
+_REACTIONS = [("R72", "R72"), ("R23", "R23"), ("R43", "R43"), ("R74", "R74"),
+              ("R45", "R45"), ("R56", "R56"), ("R76", "R76")]
 
 
 def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
@@ -82,21 +82,21 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
     lk, ms, ld = brief.linkage, brief.masses, brief.loads
 
     data_rows = [
-        ["H", "刨头行程 / ram stroke", f(lk.stroke_H_mm, 0), "mm"],
-        ["K", "行程速比系数 / time ratio", f(K, 2), "—"],
-        ["L_O2O3", "机架长 / frame", f(lk.frame_O2O3_mm, 0), "mm"],
-        ["L_BF/L_O3B", "连杆与导杆之比 / rod ratio", f(lk.rod_ratio_BF_O3B, 2), "—"],
-        ["L_O3S4/L_O3B", "导杆质心位置 / bar CoM ratio", f(lk.com_ratio_O3S4_O3B, 2), "—"],
-        ["x_S6", "刨头质心至 F / ram CoM from F", f(lk.ram_com_x_S6_mm, 0), "mm"],
-        ["n2", "曲柄转速 / crank speed", f(lk.crank_speed_n2_rpm, 0), "rpm"],
-        ["m4", "导杆质量 / guide-bar mass", f(ms.guide_bar_m4_kg, 1), "kg"],
-        ["J_S4", "导杆转动惯量 / guide-bar inertia", f(ms.guide_bar_J_S4_kgm2, 2), "kg·m²"],
-        ["m6", "刨头质量 / ram mass", f(ms.ram_m6_kg, 1), "kg"],
-        ["G2", "齿轮2重量 / gear 2 weight", f(ms.gear2_weight_G2_N, 0), "N"],
-        ["F_c", "切削阻力 / cutting force", f(ld.cutting_force_Fc_N, 0), "N"],
-        ["y_P", "切削力作用线距 O2 / cutting line above O2", f(ld.cutting_height_yP_mm, 0), "mm"],
-        ["z1, z2", "齿轮齿数 / gear teeth", f"{p.z1}, {p.z2}", "—"],
-        ["[δ]", "许用速度不均匀系数 / speed fluctuation", f"1/{f(1 / p.fluctuation, 1)}", "—"],
+        ["$H$", "刨头行程 / ram stroke", f(lk.stroke_H_mm, 0), "mm"],
+        ["$K$", "行程速比系数 / time ratio", f(K, 2), "—"],
+        ["$L_{O_2O_3}$", "机架长 / frame", f(lk.frame_O2O3_mm, 0), "mm"],
+        ["$L_{BF}/L_{O_3B}$", "连杆与导杆之比 / rod ratio", f(lk.rod_ratio_BF_O3B, 2), "—"],
+        ["$L_{O_3S_4}/L_{O_3B}$", "导杆质心位置 / bar CoM ratio", f(lk.com_ratio_O3S4_O3B, 2), "—"],
+        ["$x_{S_6}$", "刨头质心至 F / ram CoM from F", f(lk.ram_com_x_S6_mm, 0), "mm"],
+        ["$n_2$", "曲柄转速 / crank speed", f(lk.crank_speed_n2_rpm, 0), "rpm"],
+        ["$m_4$", "导杆质量 / guide-bar mass", f(ms.guide_bar_m4_kg, 1), "kg"],
+        ["$J_{S_4}$", "导杆转动惯量 / guide-bar inertia", f(ms.guide_bar_J_S4_kgm2, 2), "kg·m²"],
+        ["$m_6$", "刨头质量 / ram mass", f(ms.ram_m6_kg, 1), "kg"],
+        ["$G_2$", "齿轮2重量 / gear 2 weight", f(ms.gear2_weight_G2_N, 0), "N"],
+        ["$F_c$", "切削阻力 / cutting force", f(ld.cutting_force_Fc_N, 0), "N"],
+        ["$y_P$", "切削力作用线距 O2 / cutting line above O2", f(ld.cutting_height_yP_mm, 0), "mm"],
+        ["$z_1, z_2$", "齿轮齿数 / gear teeth", f"{p.z1}, {p.z2}", "—"],
+        ["$[\\delta]$", "许用速度不均匀系数 / speed fluctuation", f"1/{f(1 / p.fluctuation, 1)}", "—"],
     ]
     sin_half = np.sin(np.radians(half))
     eq = {
@@ -114,15 +114,16 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
         "com": (rf"L_{{O_3S_4}} = {f(p.com_ratio, 2)}\, L_{{O_3B}} = {f(d.bar_com * mm, 2)}\ \text{{mm}}"),
     }
     syn_rows = [
-        ["θ = ψ", "极位夹角 = 导杆摆角 / extreme angle = swing", f(theta, 3), "°"],
-        ["L_O2A", "曲柄 / crank", f(d.crank * mm, 2), "mm"],
-        ["L_O3B", "导杆 / guide bar", f(d.guide_bar * mm, 2), "mm"],
-        ["L_BF", "连杆 / rod", f(d.rod * mm, 2), "mm"],
-        ["L_O3M", "导路至 O3 / guide line above O3", f(d.guide_height * mm, 2), "mm"],
-        ["L_O2M", "导路至 O2 / guide line above O2", f(syn.guide_height_above_O2 * mm, 2), "mm"],
-        ["L_O3S4", "导杆质心 / bar CoM", f(d.bar_com * mm, 2), "mm"],
+        ["$\\theta = \\psi$", "极位夹角 = 导杆摆角 / extreme angle = swing", f(theta, 3), "°"],
+        ["$L_{O_2A}$", "曲柄 / crank", f(d.crank * mm, 2), "mm"],
+        ["$L_{O_3B}$", "导杆 / guide bar", f(d.guide_bar * mm, 2), "mm"],
+        ["$L_{BF}$", "连杆 / rod", f(d.rod * mm, 2), "mm"],
+        ["$L_{O_3M}$", "导路至 O3 / guide line above O3", f(d.guide_height * mm, 2), "mm"],
+        ["$L_{O_2M}$", "导路至 O2 / guide line above O2", f(syn.guide_height_above_O2 * mm, 2), "mm"],
+        ["$L_{O_3S_4}$", "导杆质心 / bar CoM", f(d.bar_com * mm, 2), "mm"],
     ]
-    labels = k.positions.labels
+    # Course typography: primes, not apostrophes (8′).
+    labels = [lab.replace("'", "′") for lab in k.positions.labels]
     kin_rows, load_rows, reaction_rows = [], [], []
     for i, label in enumerate(labels):
         j = n + i
@@ -135,7 +136,7 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
                           f(frc.balancing_torque[j], 2)])
         reaction_rows.append([label] + [f(abs(frc.reactions[key][j]), 1) for _, key in _REACTIONS])
     # Worked example at one position with the analytic formulas of the guide-bar group.
-    ex = labels.index("4") if "4" in labels else 1
+    ex = labels.index("4") if "4" in labels else 1  # the course's usual worked position
     j = n + ex
     phi2 = k.crank_angle[j]
     phi4 = r["motion"].links["4"].angle[j]
@@ -145,8 +146,7 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
     vr_formula = -d.crank * w2 * np.sin(phi2 - phi4)
     worked = {
         "label": labels[ex],
-        "S": (rf"S = L_{{O_3A}} = \sqrt{{L_1^2 + L_2^2 + 2L_1L_2\sin\varphi_2}} = "
-              rf"\sqrt{{{f(d.frame, 4)}^2 + {f(d.crank, 4)}^2 + 2 \times {f(d.frame, 4)} \times "
+        "S": (rf"S = \sqrt{{{f(d.frame, 4)}^2 + {f(d.crank, 4)}^2 + 2 \times {f(d.frame, 4)} \times "
               rf"{f(d.crank, 4)} \sin {f(phi2 * DEG % 360, 2)}°}} = {f(S, 4)}\ \text{{m}}"),
         "w4": (rf"\omega_4 = \frac{{L_2\,\omega_2\cos(\varphi_2-\varphi_4)}}{{S}} = "
                rf"\frac{{{f(d.crank, 4)} \times ({f(w2, 4)}) \cos({f(phi2 * DEG % 360, 2)}° - "
@@ -184,7 +184,7 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
         "kin_rows": kin_rows,
         "load_rows": load_rows,
         "reaction_rows": reaction_rows,
-        "reaction_names": [name for name, _ in _REACTIONS],
+        "reaction_names": [f"$F_{{{name}}}$" for name, _ in _REACTIONS],
         "worked": worked,
         "fly_eq": fly_eq,
         "sense_zh": sense_zh, "sense_en": sense_en,
