@@ -140,6 +140,10 @@ PHI = np.arange(N_GRID) * 2 * np.pi / N_GRID
 STEP = 2 * np.pi / N_GRID
 
 
+def circular_distance(a, b):
+    return abs(np.angle(np.exp(1j * (a - b))))
+
+
 def test_energy_cycle_of_a_sine_torque_swings_by_2A():
     """M_r = M0 + A sinφ: M_d = M0, ΔE = A(cosφ − 1), max at 0, min at π, ΔW_max = 2A."""
     M0, A = 150.0, 40.0
@@ -148,8 +152,8 @@ def test_energy_cycle_of_a_sine_torque_swings_by_2A():
     assert c.driving_torque == pytest.approx(M0, rel=1e-12)  # periodic trapezoid is exact here
     assert c.max_energy_swing == pytest.approx(2 * A, rel=1e-6)
     np.testing.assert_allclose(c.energy, A * (np.cos(PHI) - 1), atol=1e-6 * A)
-    assert c.angle_at_max == pytest.approx(0.0, abs=STEP)
-    assert c.angle_at_min == pytest.approx(np.pi, abs=STEP)
+    assert circular_distance(c.angle_at_max, 0.0) <= 1.5 * STEP  # a grid step + round-off
+    assert circular_distance(c.angle_at_min, np.pi) <= 1.5 * STEP
 
 
 def test_energy_cycle_of_a_rectangular_torque():
@@ -162,8 +166,10 @@ def test_energy_cycle_of_a_rectangular_torque():
     # Each jump is smeared over one trapezoid step: ±M1·h/2 of work per jump, two jumps.
     assert c.driving_torque == pytest.approx(md, abs=M1 * STEP / (2 * np.pi))
     assert c.max_energy_swing == pytest.approx((M1 - md) * alpha, abs=M1 * STEP)
-    assert c.angle_at_max == pytest.approx(0.0, abs=STEP)
-    assert c.angle_at_min == pytest.approx(alpha, abs=STEP)
+    # ΔE is periodic: its maximum at φ = 0 ≡ 2π may be picked at either end of the grid;
+    # within one grid step (1.5 steps allows for the round-off in 2π − h).
+    assert circular_distance(c.angle_at_max, 0.0) <= 1.5 * STEP
+    assert circular_distance(c.angle_at_min, alpha) <= 1.5 * STEP
 
 
 def test_energy_cycle_of_a_triangular_torque():
