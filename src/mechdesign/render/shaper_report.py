@@ -96,7 +96,7 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
         ["$F_c$", "切削阻力 / cutting force", f(ld.cutting_force_Fc_N, 0), "N"],
         ["$y_P$", "切削力作用线距 O2 / cutting line above O2", f(ld.cutting_height_yP_mm, 0), "mm"],
         ["$z_1, z_2$", "齿轮齿数 / gear teeth", f"{p.z1}, {p.z2}", "—"],
-        ["$[\\delta]$", "许用速度不均匀系数 / speed fluctuation", f"1/{f(1 / p.fluctuation, 1)}", "—"],
+        ["$[\\delta]$", "许用速度不均匀系数 / speed fluctuation", f"1/{1 / p.fluctuation:.4g}", "—"],
     ]
     sin_half = np.sin(np.radians(half))
     eq = {
@@ -209,7 +209,7 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
             "at_min": f(fl.phase_at_min * DEG, 1), "at_max": f(fl.phase_at_max * DEG, 1),
             "D": f(fl.rim.diameter * mm, 0), "b": f(fl.rim.width * mm, 1),
             "Hr": f(fl.rim.height * mm, 1), "m": f(fl.rim.rim_mass, 2),
-            "speed": f(fl.rim.rim_speed, 2), "delta": f"1/{f(1 / p.fluctuation, 1)}",
+            "speed": f(fl.rim.rim_speed, 2), "delta": f"1/{1 / p.fluctuation:.4g}",
         },
         "ver": {
             "closure": e(v.closure_residual), "vel": e(v.velocity_fd_error),
