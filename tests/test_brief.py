@@ -217,3 +217,14 @@ def test_brief_error_is_a_value_error_not_a_validation_traceback(base):
         parse_brief(broken)
     assert type(info.value) is BriefError
     assert info.value.problems[0].path == "linkage.stroke_H_mm"
+
+
+@pytest.mark.parametrize("section, field, text", [("linkage", "ram_com_x_S6_mm", ".nan"),
+                                                  ("loads", "cutting_height_yP_mm", ".inf")])
+def test_non_finite_numbers_are_problems(tmp_path, section, field, text):
+    body = DESIGN.read_text(encoding="utf-8")
+    old = next(line for line in body.splitlines() if line.strip().startswith(field + ":"))
+    body = body.replace(old, f"  {field}: {text}")
+    with pytest.raises(BriefError) as info:
+        load_brief(write(tmp_path, body))
+    assert [pr.path for pr in info.value.problems] == [f"{section}.{field}"]

@@ -22,7 +22,7 @@ from mechdesign.brief.loader import load_brief
 from mechdesign.brief.shaper import to_si
 from mechdesign.core.kinematics import cross
 from mechdesign.core.kinetostatics import Body, PointLoad, power_residual, solve_forces
-from mechdesign.core.mechanism import RRP, RRR, Crank, LinkPoint, Mechanism
+from mechdesign.core.mechanism import RPR, RRP, RRR, Crank, LinkPoint, Mechanism
 from mechdesign.machines import shaper as sh
 
 from pathlib import Path
@@ -184,6 +184,42 @@ def test_four_bar_newton_euler_of_every_link():
         # Reactions of order 100 N, lever arms < 1 m: round-off 1e-9 relative is ample.
         assert np.max(np.abs(dF)) <= 1e-9 * scale, f"ΣF on link {link}"
         assert np.max(np.abs(dM)) <= 1e-9 * scale, f"ΣM on link {link}"
+
+
+def offset_guide_bar_six_bar():
+    """Crank + RPR with an offset slider path + RRP on an inclined guide, every link massive:
+    exercises prismatic normals on a turning bar and on a slanted frame guide."""
+    mech = Mechanism("1", {"O": 0.4j, "Q": 0j})
+    mech.add(Crank("crank", "2", "O", "A", 0.12, 6.0))
+    mech.add(RPR("guide bar", "3", "4", "A", "Q", +1, offset=0.03))
+    mech.add(LinkPoint("B", "4", "Q", 0.7))
+    mech.add(LinkPoint("S4", "4", "Q", 0.3, 0.05))
+    mech.add(RRP("ram", "5", "6", "B", "C", 0.25, 0.6j, np.radians(20.0), -1, "1"))
+    mech.add(LinkPoint("S5", "5", "B", 0.1))
+    mech.add(LinkPoint("S6", "6", "C", 0.08, 1.0))
+    mo = mech.solve(PHI)
+    bodies = [Body("3", 0.8, "A", 0.002), Body("4", 9.0, "S4", 0.5),
+              Body("5", 2.0, "S5", 0.01), Body("6", 30.0, "S6", 0.0)]
+    n = len(PHI)
+    loads = [PointLoad("6", "S6", np.full(n, -800.0 + 100.0j)),
+             PointLoad("5", "S5", 50.0 * np.exp(2j * PHI))]
+    return mech, mo, bodies, loads
+
+
+def test_offset_guide_bar_six_bar_power_and_newton_euler():
+    mech, mo, bodies, loads = offset_guide_bar_six_bar()
+    fa = solve_forces(mech, mo, bodies, loads, gravity=G)
+    res = power_residual(mech, mo, bodies, loads, fa.driving_torque, gravity=G)
+    assert np.max(np.abs(res)) <= 1e-9 * np.max(np.abs(fa.driving_torque * 6.0))  # round-off
+    scale = max(np.max(np.abs(r.force)) for r in fa.reactions.values())
+    for link, (dF, dM) in newton_euler_residuals(mech, mo, fa, bodies, loads, G).items():
+        assert np.max(np.abs(dF)) <= 1e-9 * scale, f"ΣF on link {link}"
+        assert np.max(np.abs(dM)) <= 1e-9 * scale, f"ΣM on link {link}"
+    # Frictionless prismatic pairs: the force is normal to the bar and to the 20° guide.
+    u4 = np.exp(1j * mo.links["4"].angle)
+    np.testing.assert_allclose((np.conj(u4) * fa.reactions["R43"].force).real, 0.0, atol=1e-9 * scale)
+    e = np.exp(1j * np.radians(20.0))
+    np.testing.assert_allclose((np.conj(e) * fa.reactions["R16"].force).real, 0.0, atol=1e-9 * scale)
 
 
 # ---------------------------------------------------------------------- the shaper six-bar

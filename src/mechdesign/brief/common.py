@@ -15,7 +15,7 @@ from pydantic import BaseModel, ConfigDict, Field, field_validator
 class StrictModel(BaseModel):
     """Base for brief sections: unknown keys forbidden, no silent type coercion."""
 
-    model_config = ConfigDict(extra="forbid", strict=True, frozen=True)
+    model_config = ConfigDict(extra="forbid", strict=True, frozen=True, allow_inf_nan=False)
 
 
 class ReportMeta(StrictModel):
@@ -30,7 +30,8 @@ class ReportMeta(StrictModel):
     date: str = Field("", description="Date shown on the title page, e.g. 2026-11-22")
     language: Literal["zh", "en"] = Field("zh", description="Report language: zh (中文) or en")
 
-    model_config = ConfigDict(extra="forbid", strict=True, frozen=True, populate_by_name=True)
+    model_config = ConfigDict(extra="forbid", strict=True, frozen=True, populate_by_name=True,
+                              allow_inf_nan=False)
 
     @field_validator("date", mode="before")
     @classmethod

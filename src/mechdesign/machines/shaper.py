@@ -171,11 +171,12 @@ def kinetostatics(k: Kinematics, mech: Mechanism, motion, p: ShaperParams) -> Fo
     sense = np.sign(p.crank_omega)
     mb = sense * fa.driving_torque
     residual = power_residual(mech, motion, bodies, loads, fa.driving_torque, p.gravity)
+    zero = np.zeros_like(mb)  # a massless link has no entry in the inertia loads
     return Forces(
         cutting_force=fc,
-        inertia_force4=np.abs(fa.inertia_force["4"]),
-        inertia_couple4=fa.inertia_couple.get("4", np.zeros_like(mb)),
-        inertia_force6=fa.inertia_force["6"].real,
+        inertia_force4=np.abs(fa.inertia_force.get("4", zero)),
+        inertia_couple4=fa.inertia_couple.get("4", zero),
+        inertia_force6=fa.inertia_force.get("6", zero).real,
         reactions={n: r.force for n, r in fa.reactions.items()},
         couples={n: r.couple for n, r in fa.reactions.items() if r.couple is not None},
         balancing_torque=mb, power_residual=residual)
