@@ -62,9 +62,9 @@ def run(
     brief: Path = typer.Argument(..., exists=True, dir_okay=False, readable=True,
                                  help="Design brief (YAML), e.g. designs/shaper.yaml."),
     out: Optional[Path] = typer.Option(None, "--out", "-o", file_okay=False,
-                                       help="Output folder [default: out/<brief name>]."),
+                                       help="Output folder (default: out/BRIEF-NAME/)."),
     lang: Optional[Lang] = typer.Option(None, "--lang", help="Report language "
-                                        "[default: the brief's report.language, zh]."),
+                                        "(default: the brief's report.language, zh)."),
     formats: str = typer.Option("md,pdf", "--format", "-f",
                                 help="Comma-separated output formats: md, pdf."),
     templates: Optional[Path] = typer.Option(None, "--templates", exists=True, file_okay=False,

@@ -38,9 +38,16 @@ def render_markdown(template_name: str, ctx: dict, templates: Path) -> str:
 
 def pdf_metadata(meta, lang: str) -> dict:
     """Title-page metadata for templates/report.typ from the brief's report section."""
-    return {"title": meta.title, "subtitle": meta.subtitle, "student": meta.student,
+    data = {"title": meta.title, "subtitle": meta.subtitle, "student": meta.student,
             "student_id": meta.student_id, "class": meta.class_name, "teacher": meta.teacher,
             "date": meta.date, "lang": lang}
+    if lang == "en":
+        # Latin text in a Latin face (typst ships Libertinus Serif); CJK names and titles
+        # fall back to the Chinese serif, whose punctuation is full-width.
+        from .fonts import cjk_families
+
+        data["mainfont"] = ["Libertinus Serif", cjk_families()["serif"]]
+    return data
 
 
 def write_report(out_dir: Path, *, machine: str, lang: str, formats: tuple[str, ...],
