@@ -19,6 +19,8 @@ def to_plain(value: Any) -> Any:
     if isinstance(value, dict):
         return {str(k): to_plain(v) for k, v in value.items()}
     if isinstance(value, np.ndarray):
+        if np.isrealobj(value) and value.dtype.kind in "fiu" and np.isfinite(value).all():
+            return value.tolist()  # fast path for the long grid arrays
         return [to_plain(v) for v in value.tolist()]
     if isinstance(value, (list, tuple)):
         return [to_plain(v) for v in value]
