@@ -14,22 +14,31 @@ Progress = Callable[[int, int, str], None]
 
 @dataclass(frozen=True)
 class Stage:
-    """``key`` names the result, ``title`` is shown while it runs, ``run`` computes it."""
+    """``key`` names the result, ``title`` is shown while it runs, ``run`` computes it.
 
-    key: str
+    A stage that yields several results names them all: ``key`` is then a tuple and
+    ``run`` returns a tuple of the same length.
+    """
+
+    key: str | tuple[str, ...]
     title: str
     run: Callable[[dict[str, Any]], Any]
 
 
 def run_stages(stages: list[Stage], inputs: dict[str, Any],
                progress: Progress | None = None) -> tuple[dict[str, Any], dict[str, float]]:
-    """Run ``stages`` on ``inputs``; return all results and the seconds each stage took."""
+    """Run ``stages`` on ``inputs``; return all results and the seconds each stage took
+    (by stage title)."""
     results = dict(inputs)
     timings: dict[str, float] = {}
     for i, stage in enumerate(stages, 1):
         if progress is not None:
             progress(i, len(stages), stage.title)
         start = time.perf_counter()
-        results[stage.key] = stage.run(results)
-        timings[stage.key] = time.perf_counter() - start
+        value = stage.run(results)
+        if isinstance(stage.key, tuple):
+            results.update(zip(stage.key, value, strict=True))
+        else:
+            results[stage.key] = value
+        timings[stage.title] = time.perf_counter() - start
     return results, timings

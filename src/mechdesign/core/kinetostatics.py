@@ -56,10 +56,6 @@ class JointReaction:
     force: np.ndarray
     couple: np.ndarray | None = None
 
-    @property
-    def magnitude(self) -> np.ndarray:
-        return np.abs(self.force)
-
 
 @dataclass(frozen=True)
 class ForceAnalysis:

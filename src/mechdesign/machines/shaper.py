@@ -136,8 +136,9 @@ def kinematics(syn: Synthesis, p: ShaperParams) -> tuple[Kinematics, Mechanism, 
     phase = np.concatenate([grid, pos.phase])
     crank_angle = start + sense * phase
     motion = mech.solve(crank_angle)
-    x0 = motion.points["F"].pos.real[len(grid)]  # position 1
-    x_end = mech.solve(np.array([end])).points["F"].pos.real[0]
+    x_pos = motion.points["F"].pos.real[len(grid):]
+    x0 = x_pos[0]  # position 1
+    x_end = x_pos[int(np.argmin(np.abs(pos.phase - working_span)))]  # the other extreme
     direction = float(np.sign(x_end - x0))
     F = motion.points["F"]
     slide = motion.slides["3"]
@@ -271,16 +272,11 @@ def verify(syn: Synthesis, k: Kinematics, mech: Mechanism, motion, f: Forces,
 
 
 
-def _kinematics_stage(r: dict):
-    k, mech, motion = kinematics(r["synthesis"], r["params"])
-    r["mechanism"], r["motion"] = mech, motion
-    return k
-
-
 STAGES = [
     Stage("synthesis", "导杆机构设计 / linkage synthesis",
           lambda r: synthesize(r["params"])),
-    Stage("kinematics", "机构运动分析 / kinematics", _kinematics_stage),
+    Stage(("kinematics", "mechanism", "motion"), "机构运动分析 / kinematics",
+          lambda r: kinematics(r["synthesis"], r["params"])),
     Stage("forces", "动态静力分析 / kinetostatics",
           lambda r: kinetostatics(r["kinematics"], r["mechanism"], r["motion"], r["params"])),
     Stage("flywheel", "飞轮设计 / flywheel",

@@ -50,13 +50,15 @@ def figure(path: Path, nrows: int = 1, size: tuple[float, float] = (7.0, 3.2), s
         plt.close(fig)
 
 
-def _phase_axis(ax, lab, working_span_deg: float, positions=None):
+def _phase_axis(ax, working_span_deg: float, positions=None):
+    """Crank-angle axis 0–360° with the working stroke shaded; ``positions`` =
+    (labels, phases [°], values) marks the textbook positions."""
     ax.set_xlim(0, 360)
     ax.set_xticks(np.arange(0, 361, 30))
     ax.axvspan(0, working_span_deg, color="0.93", zorder=0)
     ax.grid(True, lw=0.4, color="0.8")
     if positions is not None:
-        labels, ph, values = positions
+        _, ph, values = positions
         ax.plot(ph, values, "o", ms=3, color="C3", zorder=3)
 
 
@@ -69,7 +71,7 @@ def curves_vs_phase(path: Path, lang: str, phase_deg, series, ylabels, working_s
             marks = None
             if position_marks is not None:
                 marks = (position_marks[0], position_marks[1], position_marks[2][i])
-            _phase_axis(ax, lab, working_span_deg, marks)
+            _phase_axis(ax, working_span_deg, marks)
             ax.plot(phase_deg, y, lw=1.4, color="C0")
             ax.axhline(0, color="0.4", lw=0.6)
             ax.set_ylabel(yl)
@@ -89,7 +91,7 @@ def balancing_torque(path: Path, lang: str, phase_deg, mb, mean_mb, cutting, wor
                      position_marks):
     lab = LABELS[lang]
     with figure(path, 1, (7.0, 3.4)) as (ax,):
-        _phase_axis(ax, lab, working_span_deg, position_marks)
+        _phase_axis(ax, working_span_deg, position_marks)
         on = cutting > 0
         ax.fill_between(phase_deg, 0, 1, where=on, transform=ax.get_xaxis_transform(),
                         color="C1", alpha=0.12, lw=0, label=lab["cut"])
@@ -105,7 +107,7 @@ def energy(path: Path, lang: str, phase_deg, energy_j, at_min_deg, at_max_deg, s
            working_span_deg):
     lab = LABELS[lang]
     with figure(path, 1, (7.0, 3.4)) as (ax,):
-        _phase_axis(ax, lab, working_span_deg)
+        _phase_axis(ax, working_span_deg)
         ax.plot(phase_deg, energy_j, lw=1.4, color="C0")
         lo, hi = float(np.min(energy_j)), float(np.max(energy_j))
         ax.axhline(lo, color="C3", lw=0.6, ls=":")
@@ -122,7 +124,7 @@ def energy(path: Path, lang: str, phase_deg, energy_j, at_min_deg, at_max_deg, s
 def reactions(path: Path, lang: str, phase_deg, named, working_span_deg):
     lab = LABELS[lang]
     with figure(path, 1, (7.0, 3.6)) as (ax,):
-        _phase_axis(ax, lab, working_span_deg)
+        _phase_axis(ax, working_span_deg)
         for name, values in named.items():
             ax.plot(phase_deg, values, lw=1.1, label=name)
         ax.set_xlabel(lab["phase"])

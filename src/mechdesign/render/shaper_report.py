@@ -17,7 +17,7 @@ DEG = 180.0 / np.pi
 
 
 def f(x: float, digits: int = 2) -> str:
-    """Fixed-point number with a true minus sign avoided (ASCII '-') and no '-0.00'."""
+    """Fixed-point number with ``digits`` decimals; a rounded zero never shows as '-0.00'."""
     text = f"{x:.{digits}f}"
     return text[1:] if text.startswith("-") and float(text) == 0.0 else text
 
