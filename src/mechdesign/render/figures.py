@@ -75,10 +75,11 @@ def curves_vs_phase(path: Path, lang: str, phase_deg, series, ylabels, working_s
             ax.plot(phase_deg, y, lw=1.4, color="C0")
             ax.axhline(0, color="0.4", lw=0.6)
             ax.set_ylabel(yl)
-        axes[0].text(working_span_deg / 2, 1.02, lab["working"], transform=axes[0].get_xaxis_transform(),
-                     ha="center", va="bottom", fontsize=8)
-        axes[0].text((working_span_deg + 360) / 2, 1.02, lab["return"],
-                     transform=axes[0].get_xaxis_transform(), ha="center", va="bottom", fontsize=8)
+        # Stroke names inside the first panel, clear of the position labels on top.
+        for x, name in ((working_span_deg / 2, lab["working"]),
+                        ((working_span_deg + 360) / 2, lab["return"])):
+            axes[0].text(x, 0.09, name, transform=axes[0].get_xaxis_transform(),
+                         ha="center", va="bottom", fontsize=8, color="0.35")
         if position_marks is not None:
             top = axes[0].secondary_xaxis("top")
             top.set_xticks(position_marks[1])
