@@ -74,8 +74,9 @@ def run(
 ):
     """Run every stage for BRIEF and write report.md, report.pdf, results.json and figures."""
     from .brief.loader import BriefError, load_brief
+    from .core.cam import CamDesignError
     from .core.mechanism import AssemblyError
-    from .machines import get_machine
+    from .machines import get_machine, stages_for
     from .pipeline import run_stages
     from .render.report import write_report
 
@@ -94,13 +95,22 @@ def run(
 
     start = time.perf_counter()
     try:
-        results, _ = run_stages(machine.stages, {"params": machine.to_params(b), "brief": b},
+        params = machine.to_params(b)
+        results, _ = run_stages(stages_for(machine, params), {"params": params, "brief": b},
                                 stage_progress)
     except AssemblyError as exc:
         if debug:
             traceback.print_exc()
         _err(f"{brief}: the mechanism cannot be assembled with the brief's data:\n  {exc}")
         raise typer.Exit(EXIT_INVALID)
+    except CamDesignError as exc:
+        if debug:
+            traceback.print_exc()
+        _err(f"{brief}: the cam cannot be designed with the brief's data:\n  {exc}")
+        raise typer.Exit(EXIT_INVALID)
+    for value in results.values():
+        for finding in getattr(value, "warnings", None) or ():
+            _err(f"warning: {finding.text(language)}")
     computed = time.perf_counter() - start
     report = importlib.import_module(machine.report_module)
 
@@ -113,7 +123,9 @@ def run(
             make_figures=lambda d: report.make_figures(results, d, language),
             make_context=lambda figs: report.context(results, b, figs, language),
             document=machine.document(results), meta=b.report, templates=templates,
-            progress=render_progress)
+            progress=render_progress,
+            write_data=(None if not hasattr(report, "write_data")
+                        else lambda d: report.write_data(results, d)))
     except Exception as exc:  # noqa: BLE001 - any rendering failure gets a clean message
         if debug:
             traceback.print_exc()

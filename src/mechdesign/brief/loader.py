@@ -14,10 +14,12 @@ from typing import Any
 import yaml
 from pydantic import BaseModel, ValidationError
 
+from .cam import CamBrief, EccentricCamBrief
 from .shaper import ShaperBrief
 
 #: Machine name → brief model. Later machines register here.
-BRIEF_MODELS: dict[str, type[BaseModel]] = {"shaper": ShaperBrief}
+BRIEF_MODELS: dict[str, type[BaseModel]] = {
+    "shaper": ShaperBrief, "cam": CamBrief, "eccentric_cam": EccentricCamBrief}
 
 
 @dataclass(frozen=True)

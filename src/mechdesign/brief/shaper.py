@@ -6,11 +6,12 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 from fractions import Fraction
-from typing import Literal
+from typing import Literal, Optional
 
 import numpy as np
-from pydantic import Field, field_validator
+from pydantic import Field, field_validator, model_validator
 
+from .cam import CamParams, CamSection, cam_to_si
 from .common import AnalysisSettings, ReportMeta, StrictModel
 
 
@@ -91,7 +92,21 @@ class ShaperBrief(StrictModel):
     loads: ShaperLoads
     gear_pair: GearPair
     flywheel: ShaperFlywheel
+    cam: Optional[CamSection] = Field(None, description=(
+        "Cam on the crank shaft (设计凸轮轮廓曲线); it turns with the crank, at the crank speed"))
     analysis: AnalysisSettings = AnalysisSettings()
+
+    @model_validator(mode="after")
+    def _cam_on_crank_shaft(self):
+        if self.cam is None:
+            return self
+        if self.cam.rotation != self.linkage.crank_rotation:
+            raise ValueError(f"cam.rotation is {self.cam.rotation!r} but the cam is on the crank shaft "
+                             f"and turns with it: linkage.crank_rotation is {self.linkage.crank_rotation!r}")
+        if self.cam.speed_rpm is not None and self.cam.speed_rpm != self.linkage.crank_speed_n2_rpm:
+            raise ValueError("cam.speed_rpm: the cam turns at the crank speed "
+                             f"{self.linkage.crank_speed_n2_rpm:g} rpm; leave speed_rpm out")
+        return self
 
 
 @dataclass(frozen=True)
@@ -123,6 +138,7 @@ class ShaperParams:
     grid_points: int
     position_step: float       # [rad]
     gravity: float             # [m/s²]
+    cam: CamParams | None = None
 
 
 def to_si(b: ShaperBrief) -> ShaperParams:
@@ -155,4 +171,5 @@ def to_si(b: ShaperBrief) -> ShaperParams:
         grid_points=b.analysis.grid_points,
         position_step=np.radians(b.analysis.position_step_deg),
         gravity=b.analysis.gravity,
+        cam=None if b.cam is None else cam_to_si(b.cam, b.linkage.crank_speed_n2_rpm),
     )

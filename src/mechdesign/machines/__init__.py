@@ -16,7 +16,7 @@ from ..pipeline import Stage
 class Machine:
     name: str
     to_params: Callable
-    stages: list[Stage]
+    stages: list[Stage] | Callable[[object], list[Stage]]   # or a function of the parameters
     document: Callable[[dict], dict]
     report_module: str
 
@@ -25,11 +25,33 @@ def _shaper() -> Machine:
     from ..brief.shaper import to_si
     from . import shaper
 
-    return Machine("shaper", to_si, shaper.STAGES, shaper.results_document,
+    return Machine("shaper", to_si, shaper.stages, shaper.results_document,
                    "mechdesign.render.shaper_report")
 
 
-MACHINES: dict[str, Callable[[], Machine]] = {"shaper": _shaper}
+def _cam() -> Machine:
+    from ..brief.cam import cam_brief_to_si
+    from . import cam
+
+    return Machine("cam", cam_brief_to_si, cam.CAM_STAGES, cam.cam_results_document,
+                   "mechdesign.render.cam_report")
+
+
+def _eccentric_cam() -> Machine:
+    from ..brief.cam import eccentric_to_si
+    from . import cam
+
+    return Machine("eccentric_cam", eccentric_to_si, cam.DISC_STAGES, cam.disc_results_document,
+                   "mechdesign.render.disc_report")
+
+
+MACHINES: dict[str, Callable[[], Machine]] = {
+    "shaper": _shaper, "cam": _cam, "eccentric_cam": _eccentric_cam}
+
+
+def stages_for(machine: Machine, params) -> list[Stage]:
+    """The machine's stages for these parameters (some depend on optional brief sections)."""
+    return machine.stages(params) if callable(machine.stages) else machine.stages
 
 
 def get_machine(name: str) -> Machine:

@@ -16,6 +16,7 @@ from ..core.kinetostatics import Body, PointLoad, power_residual, solve_forces
 from ..core.mechanism import RPR, RRP, Crank, LinkPoint, Mechanism
 from ..core.synthesis import GuideBarDesign, guide_bar_quick_return
 from ..pipeline import Stage
+from .cam import cam_document
 from .positions import Positions, textbook_positions
 
 FRAME = "7"
@@ -287,6 +288,15 @@ STAGES = [
 ]
 
 
+def stages(params: ShaperParams) -> list[Stage]:
+    """The shaper's stages; the cam stage only when the brief has a cam section."""
+    if params.cam is None:
+        return STAGES
+    from .cam import cam_stage
+
+    return STAGES + [cam_stage(source=lambda r: r["params"].cam)]
+
+
 def results_document(r: dict) -> dict:
     """Everything computed, in SI units, for ``results.json`` (see docs/results.md)."""
     syn, k, f, fl, v = (r[key] for key in ("synthesis", "kinematics", "forces", "flywheel",
@@ -334,4 +344,5 @@ def results_document(r: dict) -> dict:
             "mean_power": fl.mean_power, "rim": fl.rim,
         },
         "verification": v,
+        "cam": None if r.get("cam") is None else cam_document(r["cam"]),
     }

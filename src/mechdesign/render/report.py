@@ -53,8 +53,11 @@ def pdf_metadata(meta, lang: str) -> dict:
 def write_report(out_dir: Path, *, machine: str, lang: str, formats: tuple[str, ...],
                  make_figures: Callable[[Path], dict], make_context: Callable[[dict], dict],
                  document: dict, meta, templates: Path | None = None,
-                 progress: Callable[[str], None] | None = None) -> list[Path]:
-    """Render into a staging folder, then move the finished files into ``out_dir``."""
+                 progress: Callable[[str], None] | None = None,
+                 write_data: Callable[[Path], list] | None = None) -> list[Path]:
+    """Render into a staging folder, then move the finished files into ``out_dir``.
+
+    ``write_data`` may add machine-specific data files (e.g. CSV coordinates) to the folder."""
     say = progress or (lambda _msg: None)
     tdir = template_dir(templates)
     out_dir = Path(out_dir)
@@ -70,6 +73,9 @@ def write_report(out_dir: Path, *, machine: str, lang: str, formats: tuple[str, 
         md = render_markdown(f"{machine}.{lang}.md.j2", ctx, tdir)
         (staging / "report.md").write_text(md, encoding="utf-8")
         (staging / "results.json").write_text(dumps(document), encoding="utf-8")
+        if write_data is not None:
+            say("data files (CSV)")
+            write_data(staging)
         if "pdf" in formats:
             say("PDF (pandoc → typst)")
             from .pdf import render_pdf

@@ -1,0 +1,299 @@
+"""Cam briefs: the cam section (凸轮机构) any machine brief may carry, the stand-alone cam
+design brief (``machine: cam``) and the analysis of a given eccentric disc
+(``machine: eccentric_cam``).
+
+Course units in the brief (mm, °, rpm); :func:`cam_to_si` converts once to the core's
+objects in SI units (m, rad, rad/s).
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Literal, Optional, Union
+
+import numpy as np
+from pydantic import Field, model_validator
+
+from .common import ReportMeta, StrictModel
+
+LawName = Literal["constant_velocity", "parabolic", "harmonic", "cycloidal", "poly345",
+                  "poly4567", "modified_trapezoid", "modified_sine"]
+
+
+class CamSegment(StrictModel):
+    """One segment of the follower programme (推程 / 休止 / 回程)."""
+
+    motion: Literal["rise", "dwell", "return"] = Field(
+        description="rise (推程), dwell (休止) or return (回程)")
+    angle_deg: float = Field(gt=0, le=360, description="Cam angle of the segment [°]")
+    law: Optional[LawName] = Field(None, description="Motion law of a rise or return (not for a dwell)")
+    lift_mm: Optional[float] = Field(None, gt=0, le=2000, description=(
+        "Travel of a translating follower in this segment [mm]; default: the whole stroke for a "
+        "rise, back to the start for a return"))
+    lift_deg: Optional[float] = Field(None, gt=0, le=120, description=(
+        "Swing of an oscillating follower in this segment [°]; default as lift_mm"))
+
+    @model_validator(mode="after")
+    def _law_only_for_motion(self):
+        if self.motion == "dwell" and self.law is not None:
+            raise ValueError("a dwell has no motion law; remove `law`")
+        if self.motion == "dwell" and (self.lift_mm is not None or self.lift_deg is not None):
+            raise ValueError("a dwell has no lift; remove `lift_mm`/`lift_deg`")
+        if self.motion != "dwell" and self.law is None:
+            raise ValueError(f"a {self.motion} needs `law`: one of {', '.join(LawName.__args__)}")
+        return self
+
+
+class CamFollower(StrictModel):
+    """Follower (从动件): translating (直动) or oscillating (摆动); knife-edge, roller or flat-faced."""
+
+    motion: Literal["translating", "oscillating"] = Field(description="translating (直动) or oscillating (摆动)")
+    contact: Literal["knife", "roller", "flat"] = Field(
+        description="knife (尖顶), roller (滚子) or flat (平底)")
+    roller_radius_mm: float = Field(0.0, ge=0, le=1000, description="Roller radius r_r [mm] (roller only)")
+    stroke_h_mm: Optional[float] = Field(None, gt=0, le=2000,
+                                         description="Stroke h of a translating follower [mm]")
+    offset_mm: Union[float, Literal["auto"]] = Field(0.0, description=(
+        "Offset e of a translating follower's axis from the cam centre [mm], ≥ 0; 'auto' chooses "
+        "the offset that allows the smallest base circle"))
+    offset_side: Literal["right", "left"] = Field("right", description=(
+        "Side of the cam centre the axis is on, seen with the follower above the cam moving up"))
+    max_swing_deg: Optional[float] = Field(None, gt=0, le=120,
+                                           description="Maximum swing φmax of an oscillating follower [°]")
+    arm_length_mm: Optional[float] = Field(None, gt=0, le=10000,
+                                           description="Oscillating follower: pivot to roller centre L [mm]")
+    pivot_distance_mm: Optional[float] = Field(None, gt=0, le=10000,
+                                               description="Oscillating follower: cam centre to pivot a [mm]")
+    rise_sense: Literal["same", "opposite"] = Field("same", description=(
+        "Oscillating follower: during the rise it turns the same way as the cam, or the opposite way"))
+
+    @model_validator(mode="after")
+    def _complete(self):
+        if self.contact == "roller" and not self.roller_radius_mm > 0:
+            raise ValueError("a roller follower needs roller_radius_mm > 0")
+        if self.contact != "roller" and self.roller_radius_mm:
+            raise ValueError(f"a {self.contact} follower has no roller; remove roller_radius_mm")
+        if self.offset_mm != "auto" and self.offset_mm < 0:
+            raise ValueError("offset_mm must be ≥ 0 (give the side in offset_side)")
+        if self.motion == "translating":
+            if self.stroke_h_mm is None:
+                raise ValueError("a translating follower needs stroke_h_mm")
+            extra = [k for k in ("max_swing_deg", "arm_length_mm", "pivot_distance_mm")
+                     if getattr(self, k) is not None]
+            if extra:
+                raise ValueError(f"{', '.join(extra)} belong to an oscillating follower")
+        else:
+            missing = [k for k in ("max_swing_deg", "pivot_distance_mm") if getattr(self, k) is None]
+            if self.contact != "flat" and self.arm_length_mm is None:
+                missing.append("arm_length_mm")
+            if missing:
+                raise ValueError(f"an oscillating follower needs {', '.join(missing)}")
+            if self.stroke_h_mm is not None or self.offset_mm not in (0.0, 0):
+                raise ValueError("stroke_h_mm and offset_mm belong to a translating follower")
+        return self
+
+
+class CamLimits(StrictModel):
+    """Allowed values (许用值) checked on the designed cam."""
+
+    pressure_angle_rise_deg: Optional[float] = Field(None, gt=0, lt=90, description=(
+        "Allowed pressure angle on rises [α] [°]; default 30 (translating) or 45 (oscillating)"))
+    pressure_angle_return_deg: float = Field(70.0, gt=0, lt=90,
+                                             description="Allowed pressure angle on returns [α'] [°]")
+    min_actual_curvature_mm: float = Field(3.0, ge=0, le=1000, description=(
+        "Smallest radius of curvature accepted on the convex actual profile ρa,min [mm]"))
+
+
+class CamSection(StrictModel):
+    """Cam mechanism (凸轮机构): follower, programme, base circle, limits."""
+
+    rotation: Literal["cw", "ccw"] = Field("ccw", description=(
+        "Cam sense of rotation: ccw (逆时针) or cw (顺时针); in a machine it turns with its shaft"))
+    speed_rpm: Optional[float] = Field(None, gt=0, le=100000, description=(
+        "Cam speed [rpm]; gives time derivatives (mm/s …); default: the crank speed in a machine "
+        "brief, none (derivatives per radian) in a stand-alone cam brief"))
+    base_radius_mm: Union[float, Literal["auto"]] = Field(description=(
+        "Base radius r0 of the pitch curve (roller/knife) or of the profile (flat face) [mm]; "
+        "'auto' designs the smallest one that keeps the pressure angle within the limits"))
+    follower: CamFollower
+    programme: list[CamSegment] = Field(min_length=2, max_length=32, description=(
+        "Segments in order from δ = 0, covering 360° together; the follower starts at its lowest position"))
+    limits: CamLimits = CamLimits()
+    table_step_deg: float = Field(10.0, ge=0.5, le=90, description="Step of the profile coordinate table [°]")
+
+    @model_validator(mode="after")
+    def _programme_closes(self):
+        if self.base_radius_mm != "auto" and not self.base_radius_mm > 0:
+            raise ValueError("base_radius_mm must be > 0 or 'auto'")
+        total = sum(s.angle_deg for s in self.programme)
+        if abs(total - 360.0) > 1e-6:
+            raise ValueError(f"programme angles add up to {total:g}°; they must cover 360°")
+        oscillating = self.follower.motion == "oscillating"
+        unit, wrong = ("lift_deg", "lift_mm") if oscillating else ("lift_mm", "lift_deg")
+        stroke = self.follower.max_swing_deg if oscillating else self.follower.stroke_h_mm
+        level = 0.0
+        for i, seg in enumerate(self.programme, 1):
+            if getattr(seg, wrong) is not None:
+                raise ValueError(f"programme[{i}]: a {self.follower.motion} follower's lift is "
+                                 f"given as {unit}, not {wrong}")
+            lift = getattr(seg, unit)
+            if seg.motion == "rise":
+                level += stroke if lift is None else lift
+            elif seg.motion == "return":
+                level -= level if lift is None else lift
+            if level > stroke * (1 + 1e-9) or level < -1e-9 * stroke:
+                raise ValueError(f"programme[{i}]: the follower would reach {level:g}, outside "
+                                 f"0 … {stroke:g} (its stroke)")
+        if abs(level) > 1e-9 * stroke:
+            raise ValueError(f"the programme ends at {level:g} instead of 0: returns must undo the rises")
+        if not any(s.motion == "rise" for s in self.programme):
+            raise ValueError("the programme needs at least one rise")
+        return self
+
+
+class CamBrief(StrictModel):
+    """Stand-alone cam design brief (凸轮机构设计): synthesis of a disc cam for a given
+    follower programme."""
+
+    machine: Literal["cam"] = Field(description="Machine type")
+    report: ReportMeta
+    cam: CamSection
+
+
+class DiscFollower(StrictModel):
+    """A translating follower on the eccentric disc."""
+
+    label: str = Field(min_length=1, max_length=60, description="Name shown in the report, e.g. (a)")
+    contact: Literal["knife", "roller", "flat"] = Field(description="knife (尖顶), roller (滚子) or flat (平底)")
+    offset_mm: float = Field(0.0, ge=0, le=10000, description="Offset e of the follower axis [mm]")
+    offset_side: Literal["right", "left"] = Field("right", description="Side of the axis, seen with the follower on top")
+    roller_radius_mm: float = Field(0.0, ge=0, le=1000, description="Roller radius r_r [mm] (roller only)")
+
+    @model_validator(mode="after")
+    def _roller(self):
+        if self.contact == "roller" and not self.roller_radius_mm > 0:
+            raise ValueError("a roller follower needs roller_radius_mm > 0")
+        if self.contact != "roller" and self.roller_radius_mm:
+            raise ValueError(f"a {self.contact} follower has no roller; remove roller_radius_mm")
+        return self
+
+
+class EccentricDisc(StrictModel):
+    """The given cam: a circular disc mounted off-centre (偏心圆盘)."""
+
+    radius_R_mm: float = Field(gt=0, le=10000, description="Disc radius R [mm]")
+    eccentricity_mm: float = Field(gt=0, le=10000, description="Distance from the cam axis to the disc centre [mm]")
+    rotation: Literal["cw", "ccw"] = Field("ccw", description="Sense of rotation")
+
+    @model_validator(mode="after")
+    def _inside(self):
+        if self.eccentricity_mm >= self.radius_R_mm:
+            raise ValueError("eccentricity_mm must be smaller than radius_R_mm (the axis lies inside the disc)")
+        return self
+
+
+class EccentricCamBrief(StrictModel):
+    """Analysis of a given eccentric circular disc cam (凸轮机构分析) with one or more
+    translating followers: displacement and pressure angle at every cam angle."""
+
+    machine: Literal["eccentric_cam"] = Field(description="Machine type")
+    report: ReportMeta
+    disc: EccentricDisc
+    followers: list[DiscFollower] = Field(min_length=1, max_length=6)
+    query_angles_deg: list[float] = Field(default_factory=list, max_length=24, description=(
+        "Cam angles [°] at which displacement and pressure angle are tabulated (e.g. exercise 7-2)"))
+    table_step_deg: float = Field(10.0, ge=0.5, le=90, description="Step of the displacement table [°]")
+
+
+# --------------------------------------------------------------------------- to SI
+
+
+@dataclass(frozen=True)
+class CamParams:
+    """A cam section converted to SI and to the core's objects."""
+
+    programme: object            # core.cam.Programme
+    follower: object             # core.cam.TranslatingFollower | OscillatingFollower
+    rotation: int                # +1 ccw, −1 cw
+    omega: float | None          # cam speed [rad/s] or None
+    speed_rpm: float | None
+    base_radius: float | None    # [m]; None = design the smallest
+    auto_offset: bool
+    alpha_rise: float            # [rad]
+    alpha_return: float          # [rad]
+    min_actual_curvature: float  # [m]
+    table_step: float            # [rad]
+    oscillating: bool
+
+
+def side_sign(side: str) -> int:
+    return 1 if side == "right" else -1
+
+
+def cam_to_si(c: CamSection, speed_rpm: float | None = None) -> CamParams:
+    """Convert a cam section; ``speed_rpm`` is the shaft speed a machine supplies."""
+    from ..core.cam import OscillatingFollower, Programme, Segment, TranslatingFollower
+
+    mm = 1e-3
+    fo = c.follower
+    osc = fo.motion == "oscillating"
+    rpm = c.speed_rpm if c.speed_rpm is not None else speed_rpm
+    segments = []
+    for seg in c.programme:
+        lift = seg.lift_deg if osc else seg.lift_mm
+        lift = None if lift is None else (np.radians(lift) if osc else lift * mm)
+        segments.append(Segment(seg.motion, np.radians(seg.angle_deg), seg.law, lift))
+    stroke = np.radians(fo.max_swing_deg) if osc else fo.stroke_h_mm * mm
+    # Angles in degrees summing to 360 become radians summing to 2π within rounding.
+    scale = 2 * np.pi / sum(s.span for s in segments)
+    segments = [Segment(s.kind, s.span * scale, s.law, s.lift) for s in segments]
+    programme = Programme(segments, stroke)
+    rr = fo.roller_radius_mm * mm
+    auto_offset = fo.offset_mm == "auto"
+    if osc:
+        follower = OscillatingFollower(fo.contact, fo.pivot_distance_mm * mm,
+                                       (fo.arm_length_mm or 0.0) * mm, rr, fo.rise_sense)
+    else:
+        e = 0.0 if auto_offset else side_sign(fo.offset_side) * fo.offset_mm * mm
+        follower = TranslatingFollower(fo.contact, e, rr)
+    rise = c.limits.pressure_angle_rise_deg
+    if rise is None:
+        rise = 45.0 if osc else 30.0
+    return CamParams(
+        programme=programme, follower=follower, rotation=1 if c.rotation == "ccw" else -1,
+        omega=None if rpm is None else rpm * 2 * np.pi / 60, speed_rpm=rpm,
+        base_radius=None if c.base_radius_mm == "auto" else c.base_radius_mm * mm,
+        auto_offset=auto_offset, alpha_rise=np.radians(rise),
+        alpha_return=np.radians(c.limits.pressure_angle_return_deg),
+        min_actual_curvature=c.limits.min_actual_curvature_mm * mm,
+        table_step=np.radians(c.table_step_deg), oscillating=osc)
+
+
+@dataclass(frozen=True)
+class StandaloneCamParams:
+    cam: CamParams
+
+
+def cam_brief_to_si(b: CamBrief) -> StandaloneCamParams:
+    return StandaloneCamParams(cam_to_si(b.cam))
+
+
+@dataclass(frozen=True)
+class DiscParams:
+    radius: float                # [m]
+    eccentricity: float          # [m]
+    rotation: int
+    followers: tuple             # ((label, core.cam.TranslatingFollower), …)
+    query_angles: np.ndarray     # [rad]
+    table_step: float            # [rad]
+
+
+def eccentric_to_si(b: EccentricCamBrief) -> DiscParams:
+    from ..core.cam import TranslatingFollower
+
+    mm = 1e-3
+    fols = tuple((f.label, TranslatingFollower(f.contact, side_sign(f.offset_side) * f.offset_mm * mm,
+                                               f.roller_radius_mm * mm)) for f in b.followers)
+    return DiscParams(b.disc.radius_R_mm * mm, b.disc.eccentricity_mm * mm,
+                      1 if b.disc.rotation == "ccw" else -1, fols,
+                      np.radians(np.array(b.query_angles_deg, dtype=float)),
+                      np.radians(b.table_step_deg))

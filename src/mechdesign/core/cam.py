@@ -1,0 +1,508 @@
+"""Disc cams (盘形凸轮): follower programme, followers, profile synthesis, base-circle design,
+and the analysis of a given eccentric circular disc.
+
+Method (孙桓《机械原理》, chapter on cam mechanisms): the profile is found by inversion
+(反转法). Everything is written in complex numbers and differentiated exactly with
+respect to the cam angle δ, so no derivative in this module is numerical:
+
+* the cam turns with sense σ = +1 (counter-clockwise) or −1 (clockwise); δ ≥ 0 is the
+  angle it has turned; a point ``P`` fixed in the frame is ``P·e^(−iσδ)`` on the cam;
+* the pitch curve (理论廓线) is the path of the roller centre (or knife edge) in the cam
+  frame; the actual profile (实际廓线) of a roller follower is its exact envelope, the
+  curve at distance r_r along the pitch curve's normal (not a radial offset);
+* a flat-faced follower's profile is the envelope of its face: with the face's distance
+  h from the cam centre and the angle ψ of its normal, the contact point is
+  e^(iψ)(h + i·dh/dψ) and the radius of curvature is ρ = h + d²h/dψ²;
+* the pressure angle (压力角) is the angle between the common normal at the contact and the
+  velocity of the follower point there;
+* the radius of curvature is ρ = |p'|³ / (p' × p''), positive where the profile is convex.
+
+SI units throughout: metres, radians. Translating followers move along +y; their offset
+is the signed x of their axis (+ to the right of the cam centre). The offset that lowers
+the rise pressure angle (正偏置) is on the right for a counter-clockwise cam and on the
+left for a clockwise one: ``favourable_offset_sign(rotation)``.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from .motion_laws import LAWS
+
+TWO_PI = 2.0 * np.pi
+RISE, DWELL, RETURN = "rise", "dwell", "return"
+NO_IMPACT, SOFT_IMPACT, RIGID_IMPACT = "none", "soft", "rigid"
+_SEVERITY = {NO_IMPACT: 0, SOFT_IMPACT: 1, RIGID_IMPACT: 2}
+
+
+class CamDesignError(ValueError):
+    """A cam that cannot be built with the given data; the message says what to change."""
+
+
+# --------------------------------------------------------------------------- programme
+
+
+@dataclass(frozen=True)
+class Segment:
+    """One part of the follower programme.
+
+    ``span`` [rad]; ``law`` a key of :data:`LAWS` (not for a dwell); ``lift`` the
+    follower's travel in this segment [m or rad], always positive: ``None`` means the whole
+    stroke for a rise and back to the start for a return.
+    """
+
+    kind: str
+    span: float
+    law: str | None = None
+    lift: float | None = None
+
+
+@dataclass(frozen=True)
+class FollowerMotion:
+    """Follower displacement and its derivatives with respect to the cam angle."""
+
+    delta: np.ndarray     # cam angle [rad], in [0, 2π)
+    s: np.ndarray         # displacement from the lowest position [m] or [rad]
+    ds: np.ndarray        # ds/dδ
+    d2s: np.ndarray       # d²s/dδ²
+    d3s: np.ndarray       # d³s/dδ³
+    segment: np.ndarray   # index of the programme segment
+
+
+@dataclass(frozen=True)
+class Boundary:
+    """The joint between two segments at cam angle ``delta``, with what jumps there."""
+
+    delta: float
+    velocity_jump: float       # jump of ds/dδ
+    acceleration_jump: float   # jump of d²s/dδ²
+    impact: str                # none | soft | rigid
+
+
+class Programme:
+    """A follower programme: rise / dwell / return segments covering one revolution.
+
+    The follower starts at its lowest position (s = 0) at δ = 0.
+    """
+
+    def __init__(self, segments: list[Segment], stroke: float | None = None):
+        if not segments:
+            raise CamDesignError("the programme has no segments")
+        for i, seg in enumerate(segments):
+            if seg.kind not in (RISE, DWELL, RETURN):
+                raise CamDesignError(f"segment {i + 1}: kind {seg.kind!r} is not rise, dwell or return")
+            if not seg.span > 0:
+                raise CamDesignError(f"segment {i + 1}: its angle must be positive")
+            if seg.kind != DWELL and seg.law not in LAWS:
+                raise CamDesignError(f"segment {i + 1}: motion law {seg.law!r} is not one of "
+                                     f"{', '.join(LAWS)}")
+        total = sum(seg.span for seg in segments)
+        if abs(total - TWO_PI) > 1e-9:
+            raise CamDesignError(f"the segment angles add up to {np.degrees(total):.4g}°, not 360°")
+        rises = [seg.lift for seg in segments if seg.kind == RISE]
+        if stroke is None:
+            stroke = max((x for x in rises if x is not None), default=None)
+        if stroke is None or not stroke > 0:
+            raise CamDesignError("the programme needs a stroke (a rise with a lift)")
+        self.segments = tuple(segments)
+        self.stroke = float(stroke)
+        self.spans = np.array([seg.span for seg in segments])
+        self.starts = np.concatenate([[0.0], np.cumsum(self.spans)[:-1]])
+        levels, lifts, level = [], [], 0.0
+        for i, seg in enumerate(segments):
+            levels.append(level)
+            if seg.kind == RISE:
+                lift = self.stroke if seg.lift is None else seg.lift
+            elif seg.kind == RETURN:
+                lift = -(level if seg.lift is None else seg.lift)
+            else:
+                lift = 0.0
+            level += lift
+            if level > self.stroke * (1 + 1e-9) or level < -self.stroke * 1e-9:
+                raise CamDesignError(f"segment {i + 1}: the follower would reach "
+                                     f"{level:.6g}, outside 0 … stroke {self.stroke:.6g}")
+            lifts.append(lift)
+        if abs(level) > self.stroke * 1e-9:
+            raise CamDesignError(f"the programme ends at {level:.6g} instead of returning to "
+                                 "the start (0): the returns must undo the rises")
+        self.levels = np.array(levels)
+        self.lifts = np.array(lifts)
+
+    def evaluate(self, delta) -> FollowerMotion:
+        """Displacement and exact derivatives at cam angles ``delta`` [rad] (vectorised)."""
+        d = np.mod(np.asarray(delta, dtype=float), TWO_PI)
+        idx = np.clip(np.searchsorted(self.starts, d, side="right") - 1, 0, len(self.segments) - 1)
+        s = np.empty_like(d)
+        ds, d2s, d3s = np.zeros_like(d), np.zeros_like(d), np.zeros_like(d)
+        for i, seg in enumerate(self.segments):
+            m = idx == i
+            if not np.any(m):
+                continue
+            if seg.kind == DWELL:
+                s[m] = self.levels[i]
+                continue
+            span, lift = self.spans[i], self.lifts[i]
+            u = np.clip((d[m] - self.starts[i]) / span, 0.0, 1.0)
+            S, S1, S2, S3 = LAWS[seg.law](u)
+            s[m] = self.levels[i] + lift * S
+            ds[m] = lift * S1 / span
+            d2s[m] = lift * S2 / span**2
+            d3s[m] = lift * S3 / span**3
+        return FollowerMotion(d, s, ds, d2s, d3s, idx)
+
+    def _end_state(self, i: int, end: float) -> tuple[float, float]:
+        seg = self.segments[i]
+        if seg.kind == DWELL:
+            return 0.0, 0.0
+        _, S1, S2, _ = LAWS[seg.law](np.array([end]))
+        return (self.lifts[i] * S1[0] / self.spans[i], self.lifts[i] * S2[0] / self.spans[i] ** 2)
+
+    def boundaries(self) -> list[Boundary]:
+        """What happens at the start of every segment (cyclically, so the first one is δ = 0)."""
+        n = len(self.segments)
+        v_scale = self.stroke / np.min(self.spans)
+        out = []
+        for i in range(n):
+            v0, a0 = self._end_state((i - 1) % n, 1.0)
+            v1, a1 = self._end_state(i, 0.0)
+            dv, da = v1 - v0, a1 - a0
+            if abs(dv) > 1e-9 * v_scale:
+                impact = RIGID_IMPACT
+            elif abs(da) > 1e-9 * v_scale / np.min(self.spans):
+                impact = SOFT_IMPACT
+            else:
+                impact = NO_IMPACT
+            out.append(Boundary(float(self.starts[i]), dv, da, impact))
+        return out
+
+    def impacts(self) -> list[str]:
+        """Per segment: 'rigid' (velocity jump, 刚性冲击), 'soft' (acceleration jump, 柔性冲击)
+        or 'none', from its two ends and its interior. Dwells report 'none': a jump at the
+        joint of a dwell and a motion belongs to the motion."""
+        b = self.boundaries()
+        n = len(self.segments)
+        out = []
+        for i, seg in enumerate(self.segments):
+            if seg.kind == DWELL:
+                out.append(NO_IMPACT)
+                continue
+            found = [b[i].impact, b[(i + 1) % n].impact]
+            if LAWS[seg.law].internal_acceleration_jump:
+                found.append(SOFT_IMPACT)
+            out.append(max(found, key=_SEVERITY.get))
+        return out
+
+
+# --------------------------------------------------------------------------- followers
+
+
+@dataclass(frozen=True)
+class TranslatingFollower:
+    """直动从动件: ``kind`` knife | roller | flat; ``offset`` the signed x of its axis [m]
+    (+ right of the cam centre); ``roller_radius`` [m] (roller only). A flat face is
+    perpendicular to the axis."""
+
+    kind: str
+    offset: float = 0.0
+    roller_radius: float = 0.0
+
+
+@dataclass(frozen=True)
+class OscillatingFollower:
+    """摆动从动件: ``kind`` roller | flat; pivot A at ``pivot_distance`` a from the cam centre
+    [m]; ``arm_length`` L to the roller centre [m] (roller only); a flat face passes through
+    the pivot. ``rise_sense`` 'same' if during the rise the follower turns the same way as the
+    cam, 'opposite' otherwise. The programme's displacement is the arm angle φ [rad]."""
+
+    kind: str
+    pivot_distance: float
+    arm_length: float = 0.0
+    roller_radius: float = 0.0
+    rise_sense: str = "same"
+
+
+def favourable_offset_sign(rotation: int) -> int:
+    """Sign of the offset x that lowers the rise pressure angle: + (right) for a
+    counter-clockwise cam, − (left) for a clockwise one."""
+    return 1 if rotation > 0 else -1
+
+
+def _roller(follower) -> float:
+    return follower.roller_radius if follower.kind == "roller" else 0.0
+
+
+def _arm_side(follower: OscillatingFollower, sigma: int) -> int:
+    # The arm angle is β = π − k(φ0 + φ); during the rise it turns with sense −k.
+    return -sigma if follower.rise_sense == "same" else sigma
+
+
+def initial_arm_angle(follower: OscillatingFollower, base_radius: float) -> float:
+    """φ0: the arm's angle from the line of centres when the roller centre (or the face)
+    touches the base circle, e.g. φ0 = arccos((a² + L² − r0²)/(2aL)) for a roller."""
+    a, L, r0 = follower.pivot_distance, follower.arm_length, base_radius
+    if follower.kind == "flat":
+        if not 0 < r0 < a:
+            raise CamDesignError(f"a flat-faced oscillating follower needs base radius r0 < pivot "
+                                 f"distance a; r0 = {r0 * 1e3:.4g} mm, a = {a * 1e3:.4g} mm")
+        return float(np.arcsin(r0 / a))
+    c = (a * a + L * L - r0 * r0) / (2 * a * L)
+    if not -1.0 < c < 1.0:
+        raise CamDesignError(
+            f"the roller centre cannot reach the base circle: r0 = {r0 * 1e3:.4g} mm must lie "
+            f"between |a − L| = {abs(a - L) * 1e3:.4g} mm and a + L = {(a + L) * 1e3:.4g} mm")
+    return float(np.arccos(c))
+
+
+# --------------------------------------------------------------------------- synthesis
+
+
+@dataclass(frozen=True)
+class CamProfile:
+    """A synthesised cam over the cam angles ``delta`` (cam-frame coordinates, cam centre
+    at the origin; at δ = 0 the frame and cam coincide)."""
+
+    delta: np.ndarray
+    motion: FollowerMotion
+    rotation: int
+    base_radius: float           # r0 of the pitch curve (knife/roller) or of the profile (flat)
+    roller_radius: float
+    pitch: np.ndarray            # theoretical profile (complex) [m]; = actual for flat/knife
+    actual: np.ndarray           # actual profile (complex) [m]
+    normal: np.ndarray           # outward unit normal of the profile (complex, cam frame)
+    pressure_angle: np.ndarray   # [rad], 0 … π/2
+    rho_pitch: np.ndarray        # radius of curvature of the pitch curve [m], + convex
+    rho_actual: np.ndarray       # radius of curvature of the actual profile [m], + convex
+    follower_point: np.ndarray   # roller centre / knife edge / face foot in the frame (complex)
+    contact: np.ndarray          # contact point in the frame (complex)
+    initial_angle: float = 0.0   # φ0 [rad] (oscillating) or s0 = √(r0² − e²) [m] (translating)
+    extras: dict = field(default_factory=dict)
+
+
+def design_cam(programme: Programme, follower, base_radius: float, rotation: int = 1,
+               points: int = 3600, delta=None) -> CamProfile:
+    """Synthesise the cam for ``follower`` on a grid of ``points`` cam angles (or at the
+    given ``delta`` [rad])."""
+    sigma = 1 if rotation > 0 else -1
+    if delta is None:
+        delta = np.arange(points) * (TWO_PI / points)
+    m = programme.evaluate(delta)
+    d = m.delta
+    rot = np.exp(-1j * sigma * d)
+    if not base_radius > 0:
+        raise CamDesignError("the base radius must be positive")
+    if follower.kind == "flat":
+        return _flat(programme, follower, base_radius, sigma, m, rot)
+    rr = _roller(follower)
+    if isinstance(follower, TranslatingFollower):
+        e = follower.offset
+        if abs(e) >= base_radius:
+            raise CamDesignError(f"the offset |e| = {abs(e) * 1e3:.4g} mm must be smaller than the "
+                                 f"base radius r0 = {base_radius * 1e3:.4g} mm")
+        s0 = float(np.sqrt(base_radius**2 - e * e))
+        B = e + 1j * (s0 + m.s)
+        B1 = 1j * m.ds
+        B2 = 1j * m.d2s
+        direction = np.full_like(B, 1j)          # follower point moves along +y
+        initial = s0
+        A = None
+    else:
+        a, L = follower.pivot_distance, follower.arm_length
+        phi0 = initial_arm_angle(follower, base_radius)
+        k = _arm_side(follower, sigma)
+        beta = np.pi - k * (phi0 + m.s)
+        b1, b2 = -k * m.ds, -k * m.d2s
+        arm = L * np.exp(1j * beta)
+        B = a + arm
+        B1 = 1j * b1 * arm
+        B2 = (1j * b2 - b1 * b1) * arm
+        direction = 1j * np.exp(1j * beta)       # roller centre moves ⟂ to the arm
+        initial = phi0
+        A = a
+    p = rot * B
+    p1 = rot * (B1 - 1j * sigma * B)
+    p2 = rot * (B2 - 2j * sigma * B1 - B)
+    speed = np.abs(p1)
+    t = p1 / speed
+    n_out = 1j * sigma * t
+    rho = -sigma * speed**3 / np.imag(np.conj(p1) * p2)
+    actual = p - rr * n_out
+    n_frame = n_out / rot
+    cosang = np.abs(np.real(np.conj(n_frame) * direction))
+    sinang = np.abs(np.imag(np.conj(n_frame) * direction))
+    alpha = np.arctan2(sinang, cosang)
+    extras = {} if A is None else {"pivot": A}
+    return CamProfile(d, m, sigma, base_radius, rr, p, actual, n_out, alpha, rho, rho - rr,
+                      B, B - rr * n_frame, initial, extras)
+
+
+def _flat(programme, follower, r0, sigma, m, rot) -> CamProfile:
+    """Flat-faced followers: envelope of the face lines via the support function."""
+    if isinstance(follower, TranslatingFollower):
+        h, h1, h2 = r0 + m.s, m.ds, m.d2s
+        psi = np.pi / 2 - sigma * m.delta
+        psi1 = np.full_like(h, -float(sigma))
+        psi2 = np.zeros_like(h)
+        initial = r0
+        extras = {}
+    else:
+        a = follower.pivot_distance
+        g0 = initial_arm_angle(follower, r0)
+        k = _arm_side(follower, sigma)
+        g = g0 + m.s
+        h = a * np.sin(g)
+        h1 = a * np.cos(g) * m.ds
+        h2 = a * (np.cos(g) * m.d2s - np.sin(g) * m.ds**2)
+        psi = np.pi - k * g - k * np.pi / 2 - sigma * m.delta
+        psi1 = -k * m.ds - sigma
+        psi2 = -k * m.d2s
+        initial = g0
+        extras = {"pivot": a}
+    if np.any(np.abs(psi1) < 1e-12):
+        raise CamDesignError("the follower face turns as fast as the cam: no envelope exists")
+    hp = h1 / psi1
+    hpp = (h2 * psi1 - h1 * psi2) / psi1**3
+    n_out = np.exp(1j * psi)
+    contact_cam = n_out * (h + 1j * hp)
+    rho = h + hpp
+    contact = contact_cam / rot
+    foot = n_out * h / rot
+    zero = np.zeros_like(h)
+    return CamProfile(m.delta, m, sigma, r0, 0.0, contact_cam, contact_cam, n_out, zero, rho, rho,
+                      foot, contact, initial, extras)
+
+
+# --------------------------------------------------------------------------- base circle
+
+
+def min_base_radius_translating(programme: Programme, follower: TranslatingFollower,
+                                alpha_rise: float, alpha_return: float, offset: float | None = None,
+                                rotation: int = 1, points: int = 7200,
+                                min_curvature: float = 0.0) -> tuple[float, float]:
+    """Smallest base radius r0 [m] (and the offset e [m] used) of a translating follower.
+
+    Knife edge / roller: the pressure angle obeys tan α = |σ·ds/dδ − e| / (s0 + s) with
+    s0 = √(r0² − e²) (the pole of cam and follower lies at x = σ·ds/dδ), so α ≤ [α] everywhere
+    on the rises ([α] = ``alpha_rise``) and returns (``alpha_return``) is
+    s0 ≥ max(|σ·ds/dδ − e| / tan[α] − s). With ``offset=None`` the offset minimising r0 is
+    searched. Flat face: the profile must stay convex, r0 + s + d²s/dδ² ≥ ``min_curvature``.
+    """
+    from scipy.optimize import minimize_scalar
+
+    sigma = 1 if rotation > 0 else -1
+    m = programme.evaluate(np.arange(points) * (TWO_PI / points))
+    if follower.kind == "flat":
+        return float(max(np.max(min_curvature - m.s - m.d2s), 1e-9)), follower.offset
+    # Sample every rise and return on its own closed interval [0, 1], ends included: the
+    # largest pressure angle is often at an end (e.g. where a uniform return stops).
+    s_parts, x_parts, tan_parts = [], [], []
+    for i, seg in enumerate(programme.segments):
+        if seg.kind == DWELL:
+            continue
+        u = np.linspace(0.0, 1.0, max(points * seg.span / TWO_PI, 64).__int__() + 1)
+        S, S1, _, _ = LAWS[seg.law](u)
+        s_parts.append(programme.levels[i] + programme.lifts[i] * S)
+        x_parts.append(sigma * programme.lifts[i] * S1 / programme.spans[i])
+        lim = alpha_rise if seg.kind == RISE else alpha_return
+        tan_parts.append(np.full_like(u, np.tan(lim)))
+    s, x_pole, tan_lim = (np.concatenate(v) for v in (s_parts, x_parts, tan_parts))
+
+    def r0_for(e: float) -> float:
+        s0 = max(float(np.max(np.abs(x_pole - e) / tan_lim - s)), 0.0)
+        return float(np.hypot(s0, e))
+
+    if offset is not None:
+        return r0_for(offset), float(offset)
+    span = float(np.max(np.abs(x_pole))) + 1e-12
+    res = minimize_scalar(r0_for, bounds=(-span, span), method="bounded",
+                          options={"xatol": span * 1e-10})
+    return r0_for(res.x), float(res.x)
+
+
+def min_base_radius_oscillating(programme: Programme, follower: OscillatingFollower,
+                                alpha_rise: float, alpha_return: float, rotation: int = 1,
+                                points: int = 3600) -> float:
+    """Smallest base radius [m] of an oscillating roller follower with the given pivot
+    distance and arm length that keeps the pressure angle within the limits (scan, then
+    bisection on the first feasible interval)."""
+    from scipy.optimize import brentq
+
+    a, L = follower.pivot_distance, follower.arm_length
+    lo, hi = abs(a - L), a + L
+    kinds = np.array([seg.kind for seg in programme.segments])
+
+    def excess(r0: float) -> float:
+        prof = design_cam(programme, follower, r0, rotation, points)
+        k = kinds[prof.motion.segment]
+        lim = np.where(k == RISE, alpha_rise, alpha_return)
+        mov = k != DWELL
+        return float(np.max(prof.pressure_angle[mov] - lim[mov]))
+
+    grid = lo + (hi - lo) * np.linspace(0.01, 0.99, 99)
+    values = np.array([excess(r) for r in grid])
+    ok = np.nonzero(values <= 0)[0]
+    if len(ok) == 0:
+        raise CamDesignError("no base radius keeps the pressure angle within the limits with "
+                             "this pivot distance and arm length")
+    j = ok[0]
+    if j == 0:
+        return float(grid[0])
+    return float(brentq(excess, grid[j - 1], grid[j], xtol=1e-10))
+
+
+# --------------------------------------------------------------------------- analysis
+
+
+@dataclass(frozen=True)
+class DiscMotion:
+    """Follower on an eccentric circular disc at cam angles ``delta``."""
+
+    delta: np.ndarray
+    y: np.ndarray               # height of the follower point (knife edge, roller centre, face) [m]
+    dy: np.ndarray              # dy/dδ [m/rad]
+    s: np.ndarray               # displacement from the lowest position [m]
+    pressure_angle: np.ndarray  # [rad]
+    centre: np.ndarray          # disc centre in the frame (complex) [m]
+    y_min: float
+    y_max: float
+
+    @property
+    def stroke(self) -> float:
+        return self.y_max - self.y_min
+
+
+def eccentric_disc(delta, radius: float, eccentricity: float, follower: TranslatingFollower,
+                   rotation: int = 1) -> DiscMotion:
+    """An eccentric circular disc (偏心圆盘凸轮) of ``radius`` R whose centre C is
+    ``eccentricity`` ε from the axis, driving a translating follower; at δ = 0 the disc centre
+    is straight below the axis. Closed forms: y = C_y + √((R + r_r)² − (x_f − C_x)²) for a
+    knife edge (r_r = 0) or roller, y = C_y + R for a flat face; the pressure angle of a knife
+    edge or roller is sin α = |x_f − C_x| / (R + r_r), of a flat face 0. The lowest and highest
+    positions are where the common normal passes through the axis:
+    y = √((R + r_r ∓ ε)² − x_f²)."""
+    sigma = 1 if rotation > 0 else -1
+    d = np.asarray(delta, dtype=float)
+    C = eccentricity * np.exp(1j * (-np.pi / 2 + sigma * d))
+    C1 = 1j * sigma * C
+    x = follower.offset
+    if follower.kind == "flat":
+        y = C.imag + radius
+        dy = C1.imag
+        alpha = np.zeros_like(d)
+        y_min, y_max = radius - eccentricity, radius + eccentricity
+    else:
+        Rp = radius + _roller(follower)
+        if abs(x) + eccentricity >= Rp:
+            raise CamDesignError(
+                f"the follower leaves the disc: offset |e| + eccentricity = "
+                f"{(abs(x) + eccentricity) * 1e3:.4g} mm must stay below R + r_r = {Rp * 1e3:.4g} mm")
+        dx = x - C.real
+        root = np.sqrt(Rp * Rp - dx * dx)
+        y = C.imag + root
+        dy = C1.imag + dx * C1.real / root
+        alpha = np.arcsin(np.abs(dx) / Rp)
+        if Rp - eccentricity <= abs(x):
+            raise CamDesignError("the offset is too large for the disc's lowest position")
+        y_min = float(np.sqrt((Rp - eccentricity) ** 2 - x * x))
+        y_max = float(np.sqrt((Rp + eccentricity) ** 2 - x * x))
+    return DiscMotion(d, y, dy, y - y_min, alpha, C, float(y_min), float(y_max))

@@ -1,0 +1,169 @@
+"""Figures of the cam sections: s–v–a–j diagrams, the profile, pressure angle and
+curvature, and the eccentric-disc displacement curves. Arrays arrive in course units."""
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+
+from .figures import figure
+
+LABELS = {
+    "zh": {"delta": "凸轮转角 δ (°)", "alpha": "压力角 α (°)", "rho": "曲率半径 ρ (mm)",
+           "limit_rise": "推程许用值", "limit_return": "回程许用值",
+           "base": "基圆", "pitch": "理论廓线", "actual": "实际廓线", "roller": "滚子",
+           "rho_pitch": "理论廓线 ρ", "rho_actual": "实际廓线 ρa", "rr": "滚子半径",
+           "x": "x (mm)", "y": "y (mm)", "rise": "推程", "return": "回程", "dwell": "休止",
+           "s_disc": "推杆位移 s (mm)", "follower": "从动件", "pivot": "摆杆转轴 A",
+           "cw": "顺时针", "ccw": "逆时针", "convex_only": "（仅外凸部分；内凹部分不画）"},
+    "en": {"delta": "cam angle δ (°)", "alpha": "pressure angle α (°)", "rho": "radius of curvature ρ (mm)",
+           "limit_rise": "allowed (rise)", "limit_return": "allowed (return)",
+           "base": "base circle", "pitch": "pitch curve", "actual": "actual profile", "roller": "roller",
+           "rho_pitch": "pitch curve ρ", "rho_actual": "actual profile ρa", "rr": "roller radius",
+           "x": "x (mm)", "y": "y (mm)", "rise": "rise", "return": "return", "dwell": "dwell",
+           "s_disc": "follower displacement s (mm)", "follower": "follower", "pivot": "pivot A",
+           "cw": "clockwise", "ccw": "counter-clockwise", "convex_only": " (convex parts only)"},
+}
+
+
+def _delta_axis(ax, segments, lab):
+    """0–360° axis; rises and returns shaded, segment names on top of the first panel."""
+    ax.set_xlim(0, 360)
+    ax.set_xticks(np.arange(0, 361, 30))
+    ax.grid(True, lw=0.4, color="0.82")
+    for start, end, kind in segments:
+        if kind == "rise":
+            ax.axvspan(start, end, color="C0", alpha=0.06, lw=0)
+        elif kind == "return":
+            ax.axvspan(start, end, color="C1", alpha=0.06, lw=0)
+        ax.axvline(start, color="0.6", lw=0.5, ls=":")
+
+
+def svaj(path: Path, lang: str, delta_deg, series, ylabels, segments):
+    """Stacked displacement, velocity, acceleration and jerk against the cam angle."""
+    lab = LABELS[lang]
+    with figure(path, len(series), (7.0, 7.4)) as axes:
+        for ax, y, yl in zip(axes, series, ylabels):
+            _delta_axis(ax, segments, lab)
+            # Jumps (rigid/soft impact) must show as vertical steps, not sloped lines.
+            ax.plot(delta_deg, y, lw=1.3, color="C0")
+            ax.axhline(0, color="0.4", lw=0.6)
+            ax.set_ylabel(yl)
+        for start, end, kind in segments:
+            axes[0].text((start + end) / 2, 1.02, lab[kind], transform=axes[0].get_xaxis_transform(),
+                         ha="center", va="bottom", fontsize=8, color="0.3")
+        axes[-1].set_xlabel(lab["delta"])
+
+
+def pressure_and_curvature(path: Path, lang: str, delta_deg, alpha_deg, limits, segments,
+                           rho_pitch=None, rho_actual=None, roller=0.0, clip=None):
+    """Pressure angle with the allowed values per segment; below it the radii of curvature
+    of the convex parts (concave and nearly straight parts are left out)."""
+    lab = LABELS[lang]
+    two = rho_pitch is not None
+    with figure(path, 2 if two else 1, (7.0, 5.6 if two else 3.2)) as axes:
+        ax = axes[0]
+        _delta_axis(ax, segments, lab)
+        ax.plot(delta_deg, alpha_deg, lw=1.3, color="C0", label="α")
+        shown = set()
+        for (start, end, kind), limit in zip(segments, limits):
+            if limit is None:
+                continue
+            name = lab["limit_rise"] if kind == "rise" else lab["limit_return"]
+            ax.plot([start, end], [limit, limit], color="C3", lw=1.1, ls="--",
+                    label=None if name in shown else f"{name}")
+            ax.text(end - 2, limit + 1, f"[α] = {limit:.0f}°", fontsize=7, color="C3", ha="right")
+            shown.add(name)
+        j = int(np.argmax(alpha_deg))
+        ax.plot([delta_deg[j]], [alpha_deg[j]], "o", color="C3", ms=4)
+        ax.annotate(f"αmax = {alpha_deg[j]:.2f}°", (delta_deg[j], alpha_deg[j]),
+                    xytext=(6, -12), textcoords="offset points", fontsize=7.5)
+        top = max(float(np.max(alpha_deg)), max((x for x in limits if x is not None), default=0))
+        ax.set_ylim(0, top * 1.18 + 1)
+        ax.set_ylabel(lab["alpha"])
+        ax.legend(fontsize=7, loc="upper right")
+        if two:
+            ax = axes[1]
+            _delta_axis(ax, segments, lab)
+            cap = clip if clip is not None else np.inf
+            for rho, name, color in ((rho_pitch, lab["rho_pitch"], "C0"),
+                                     (rho_actual, lab["rho_actual"], "C2")):
+                y = np.where((rho > 0) & (rho < cap), rho, np.nan)
+                ax.plot(delta_deg, y, lw=1.2, color=color, label=name)
+            if roller > 0:
+                ax.axhline(roller, color="C3", lw=1.0, ls="--", label=f"{lab['rr']} {roller:g} mm")
+            ax.axhline(0, color="0.4", lw=0.6)
+            ax.set_ylabel(lab["rho"] + lab["convex_only"], fontsize=8)
+            ax.legend(fontsize=7, loc="upper right")
+        axes[-1].set_xlabel(lab["delta"])
+
+
+def profile(path: Path, lang: str, pitch, actual, base_radius, roller, marks, rotation,
+            follower=None, pivot=None, flat=False):
+    """The cam drawn in its own frame (mm): base circle, pitch curve, actual profile, the
+    roller at the marked cam angles, the rays of the inversion method and the follower at δ = 0.
+
+    ``marks`` is a list of (label, index into the arrays)."""
+    lab = LABELS[lang]
+    with figure(path, 1, (6.4, 6.4), sharex=False) as (ax,):
+        t = np.linspace(0, 2 * np.pi, 361)
+        circ = np.exp(1j * t)
+        ax.plot((base_radius * circ).real, (base_radius * circ).imag, color="0.45", lw=0.8, ls="--",
+                label=f"{lab['base']} r0 = {base_radius:.1f} mm")
+        closed = lambda z: np.append(z, z[:1])  # noqa: E731
+        if not flat and roller > 0:
+            ax.plot(closed(pitch).real, closed(pitch).imag, color="C0", lw=0.9, ls="-.",
+                    label=lab["pitch"])
+        ax.plot(closed(actual).real, closed(actual).imag, color="k", lw=1.8, label=lab["actual"])
+        for text, i in marks:
+            p = pitch[i]
+            ax.plot([0, p.real], [0, p.imag], color="0.75", lw=0.4)
+            if roller > 0:
+                ring = p + roller * circ
+                ax.plot(ring.real, ring.imag, color="C3", lw=0.7)
+            ax.plot([p.real], [p.imag], ".", color="C3", ms=3)
+            u = p / abs(p) if abs(p) > 0 else 1
+            q = p + u * (roller + 0.06 * base_radius + 3)
+            ax.text(q.real, q.imag, text, fontsize=6.5, ha="center", va="center", color="0.25")
+        ax.plot([0], [0], "+", color="k", ms=10)
+        if pivot is not None:
+            ax.plot([pivot.real], [pivot.imag], "^", color="k", ms=6)
+            ax.text(pivot.real + 3, pivot.imag - 8, lab["pivot"], fontsize=7)
+            if follower is not None:
+                ax.plot([pivot.real, follower.real], [pivot.imag, follower.imag], color="C0", lw=2.0)
+        elif follower is not None and not flat:
+            ax.plot([follower.real] * 2, [follower.imag, follower.imag + 0.6 * base_radius],
+                    color="C0", lw=2.0)
+        # rotation arrow
+        r = 0.28 * base_radius
+        a = np.linspace(0.35, 1.45, 30) * np.pi
+        arc = r * np.exp(1j * (a if rotation > 0 else a[::-1]))
+        ax.plot(arc.real, arc.imag, color="C2", lw=1.0)
+        ax.annotate("", xy=(arc[-1].real, arc[-1].imag), xytext=(arc[-3].real, arc[-3].imag),
+                    arrowprops=dict(arrowstyle="->", color="C2", lw=1.0))
+        ax.text(0, -0.42 * base_radius, "ω " + (lab["ccw"] if rotation > 0 else lab["cw"]),
+                fontsize=7, color="C2", ha="center")
+        ax.set_aspect("equal")
+        ax.set_xlabel(lab["x"])
+        ax.set_ylabel(lab["y"])
+        ax.grid(True, lw=0.3, color="0.88")
+        ax.legend(fontsize=7, loc="lower right", framealpha=0.9)
+
+
+def disc_curves(path: Path, lang: str, delta_deg, named):
+    """Eccentric disc: displacement and pressure angle of every follower on one chart each.
+    ``named`` = list of (label, s [mm], α [°])."""
+    lab = LABELS[lang]
+    with figure(path, 2, (7.0, 5.6)) as (ax1, ax2):
+        styles = ["-", "--", "-.", ":"]
+        for i, (name, s, alpha) in enumerate(named):
+            ax1.plot(delta_deg, s, lw=1.4, ls=styles[i % 4], label=name)
+            ax2.plot(delta_deg, alpha, lw=1.4, ls=styles[i % 4], label=name)
+        for ax in (ax1, ax2):
+            ax.set_xlim(0, 360)
+            ax.set_xticks(np.arange(0, 361, 30))
+            ax.grid(True, lw=0.4, color="0.82")
+            ax.legend(fontsize=7, loc="upper right")
+        ax1.set_ylabel(lab["s_disc"])
+        ax2.set_ylabel(lab["alpha"])
+        ax2.set_xlabel(lab["delta"])

@@ -1,0 +1,395 @@
+"""Prepare the cam section of any report (figures, strings, rows, formulas, CSV) and the
+stand-alone cam report (``machine: cam``). Course units: mm, °, rpm, mm/s, rad/s."""
+from __future__ import annotations
+
+import csv
+from pathlib import Path
+
+import numpy as np
+
+from ..core import cam as core
+from ..core.motion_laws import LAWS
+from . import cam_figures as cf
+
+DEG = 180.0 / np.pi
+MM = 1e3
+
+
+def f(x: float, digits: int = 2) -> str:
+    text = f"{x:.{digits}f}"
+    return text[1:] if text.startswith("-") and float(text) == 0.0 else text
+
+
+_KIND = {"zh": {"rise": "推程", "return": "回程", "far": "远休止", "near": "近休止", "dwell": "休止"},
+         "en": {"rise": "rise", "return": "return", "far": "far dwell", "near": "near dwell",
+                "dwell": "dwell"}}
+_IMPACT = {"zh": {"none": "无冲击", "soft": "柔性冲击", "rigid": "刚性冲击"},
+           "en": {"none": "none", "soft": "soft impact", "rigid": "rigid impact"}}
+_CONTACT = {"zh": {"knife": "尖顶", "roller": "滚子", "flat": "平底"},
+            "en": {"knife": "knife-edge", "roller": "roller", "flat": "flat-faced"}}
+
+
+def _segment_name(c, i, lang):
+    seg = c.params.programme.segments[i]
+    if seg.kind != core.DWELL:
+        return _KIND[lang][seg.kind]
+    level = c.params.programme.levels[i]
+    if level <= 1e-12:
+        return _KIND[lang]["near"]
+    if abs(level - c.params.programme.stroke) <= 1e-12 * c.params.programme.stroke:
+        return _KIND[lang]["far"]
+    return _KIND[lang]["dwell"]
+
+
+class _Units:
+    """Display scaling of displacement and its derivatives (time or per-radian)."""
+
+    def __init__(self, c, lang):
+        p = c.params
+        self.osc = p.oscillating
+        self.omega = p.omega
+        w = p.omega or 1.0
+        if self.osc:
+            self.s_scale, self.s_unit, self.s_sym = DEG, "°", "φ"
+            if p.omega:
+                self.scales = [w, w * w, w ** 3]
+                self.units = ["rad/s", "rad/s²", "rad/s³"]
+                self.syms = ["ω", "ε", "j"]
+            else:
+                self.scales = [1.0, 1.0, 1.0]
+                self.units = ["—", "1/rad", "1/rad²"]
+                self.syms = ["dφ/dδ", "d²φ/dδ²", "d³φ/dδ³"]
+        else:
+            self.s_scale, self.s_unit, self.s_sym = MM, "mm", "s"
+            if p.omega:
+                self.scales = [MM * w, MM * w * w, MM * w ** 3]
+                self.units = ["mm/s", "mm/s²", "mm/s³"]
+                self.syms = ["v", "a", "j"]
+            else:
+                self.scales = [MM, MM, MM]
+                self.units = ["mm/rad", "mm/rad²", "mm/rad³"]
+                self.syms = ["ds/dδ", "d²s/dδ²", "d³s/dδ³"]
+
+    def derivs(self, m):
+        return [m.ds * self.scales[0], m.d2s * self.scales[1], m.d3s * self.scales[2]]
+
+
+def _ylabels(u: _Units, lang: str):
+    names = {"zh": ["位移", "速度", "加速度", "跃度"], "en": ["displacement", "velocity",
+                                                           "acceleration", "jerk"]}[lang]
+    if u.osc:
+        names = {"zh": ["角位移", "角速度", "角加速度", "角跃度"],
+                 "en": ["swing", "angular velocity", "angular acceleration", "angular jerk"]}[lang]
+    syms = [u.s_sym] + u.syms
+    units = [u.s_unit] + u.units
+    return [f"{n} {s} ({un})" for n, s, un in zip(names, syms, units)]
+
+
+def _segments_deg(c):
+    prog = c.params.programme
+    return [(float(prog.starts[i] * DEG), float((prog.starts[i] + prog.spans[i]) * DEG), seg.kind)
+            for i, seg in enumerate(prog.segments)]
+
+
+def make_cam_figures(c, fig_dir: Path, lang: str, prefix: str = "cam") -> dict[str, str]:
+    """Draw the cam figures; return name → path relative to the report folder."""
+    paths = {}
+
+    def out(name):
+        paths[name] = f"{fig_dir.name}/{prefix}_{name}.png"
+        return fig_dir / f"{prefix}_{name}.png"
+
+    g = c.grid
+    u = _Units(c, lang)
+    # Close the curves at 360° and insert NaN-free steps: evaluate both sides of each joint.
+    prog = c.params.programme
+    d = np.concatenate([g.delta, [2 * np.pi]])
+    m = prog.evaluate(d[:-1])
+    seriesd = [np.append(m.s * u.s_scale, m.s[0] * u.s_scale)] + \
+        [np.append(x, x[0]) for x in u.derivs(m)]
+    # Jumps at the joints: repeat each joint with the left-hand limits so steps are vertical.
+    joints = prog.starts
+    left = np.array([prog.starts[i] + prog.spans[i] for i in range(len(prog.segments))])
+    d_plot, ys = _with_left_limits(d, seriesd, prog, u, left)
+    cf.svaj(out("svaj"), lang, d_plot * DEG, ys, _ylabels(u, lang), _segments_deg(c))
+    segs = _segments_deg(c)
+    limits = [None if s.limit is None else s.limit * DEG for s in c.segments]
+    clip = 6 * c.base_radius * MM
+    cf.pressure_and_curvature(out("alpha"), lang, g.delta * DEG, g.pressure_angle * DEG, limits,
+                              segs, g.rho_pitch * MM, g.rho_actual * MM, g.roller_radius * MM, clip)
+    n = len(g.delta)
+    step = max(1, int(round(np.radians(30) / (2 * np.pi / n))))
+    marks = [(f"{int(round(g.delta[i] * DEG))}°", i) for i in range(0, n, step)]
+    pivot = None
+    if "pivot" in g.extras:
+        pivot = complex(g.extras["pivot"]) * MM
+    cf.profile(out("profile"), lang, g.pitch * MM, g.actual * MM, c.base_radius * MM,
+               g.roller_radius * MM, marks, g.rotation, g.follower_point[0] * MM, pivot,
+               flat=c.params.follower.kind == "flat")
+    del joints
+    return paths
+
+
+def _with_left_limits(d, series, prog, u, ends):
+    """Insert, at every segment end, the values just before the joint (u = 1 of the
+    segment) so that velocity or acceleration jumps plot as vertical steps."""
+    extra_d, extra = [], [[] for _ in series]
+    for i, seg in enumerate(prog.segments):
+        end = ends[i]
+        if seg.kind == core.DWELL:
+            vals = [prog.levels[i] * u.s_scale, 0.0, 0.0, 0.0]
+        else:
+            S, S1, S2, S3 = (x[0] for x in LAWS[seg.law](np.array([1.0])))
+            lift, span = prog.lifts[i], prog.spans[i]
+            vals = [(prog.levels[i] + lift * S) * u.s_scale, lift * S1 / span * u.scales[0],
+                    lift * S2 / span**2 * u.scales[1], lift * S3 / span**3 * u.scales[2]]
+        extra_d.append(end - 1e-9)
+        for k, v in enumerate(vals):
+            extra[k].append(v)
+    dd = np.concatenate([d, extra_d])
+    order = np.argsort(dd, kind="stable")
+    return dd[order], [np.concatenate([y, e])[order] for y, e in zip(series, extra)]
+
+
+def _law_eqs(c, i, u: _Units, lang):
+    """LaTeX lines of one rise/return with the numbers substituted."""
+    prog = c.params.programme
+    seg = prog.segments[i]
+    law = LAWS[seg.law]
+    start, span = prog.starts[i] * DEG, prog.spans[i] * DEG
+    lift = prog.lifts[i] * u.s_scale
+    level = prog.levels[i] * u.s_scale
+    S, S1, S2 = law.latex
+    sym = "\\varphi" if u.osc else "s"
+    unit = "°" if u.osc else "\\text{mm}"
+    head = (rf"u = \frac{{\delta - {f(start, 1)}°}}{{\Phi}},\quad \Phi = {f(span, 1)}°"
+            rf" = {f(np.radians(span), 4)}\ \text{{rad}}")
+    if seg.kind == core.RISE and level > 1e-9:
+        s_eq = rf"{sym} = {f(level, 2)} + {f(abs(lift), 2)}\,S(u)"
+    elif seg.kind == core.RISE:
+        s_eq = rf"{sym} = {f(abs(lift), 2)}\,S(u)"
+    else:
+        s_eq = rf"{sym} = {f(level, 2)} - {f(abs(lift), 2)}\,S(u)"
+    s_eq += rf"\quad ({unit.strip()})"
+    # Derivatives in SI: rad for an oscillating follower, mm for a translating one.
+    amp = f(abs(prog.lifts[i]), 5) if u.osc else f(abs(prog.lifts[i]) * MM, 2)
+    sign = "" if seg.kind == core.RISE else "-"
+    phi_rad = prog.spans[i]
+    if u.omega:
+        w = f(u.omega, 4)
+        v_eq = (rf"{u.syms[0]} = {sign}\frac{{{amp}\,\omega}}{{\Phi}} S'(u) = {sign}"
+                rf"\frac{{{amp} \times {w}}}{{{f(phi_rad, 4)}}} S'(u)")
+        a_eq = (rf"{u.syms[1]} = {sign}\frac{{{amp}\,\omega^2}}{{\Phi^2}} S''(u) = {sign}"
+                rf"\frac{{{amp} \times {w}^2}}{{{f(phi_rad, 4)}^2}} S''(u)")
+    else:
+        v_eq = (rf"\frac{{d{sym}}}{{d\delta}} = {sign}\frac{{{amp}}}{{\Phi}} S'(u)")
+        a_eq = (rf"\frac{{d^2{sym}}}{{d\delta^2}} = {sign}\frac{{{amp}}}{{\Phi^2}} S''(u)")
+    name = law.name_zh if lang == "zh" else law.name_en
+    sep = "：" if lang == "zh" else ": "
+    return {"title": f"{_KIND[lang][seg.kind]} {f(start, 0)}°–{f(start + span, 0)}°{sep}{name}",
+            "head": head, "S": rf"S(u) = {S}", "S1": rf"S'(u) = {S1}", "S2": rf"S''(u) = {S2}",
+            "s": s_eq, "v": v_eq, "a": a_eq,
+            "peaks": (f"C_v = {f(law.cv, 4)}, C_a = " + (f(law.ca, 4) if np.isfinite(law.ca) else "∞")
+                      + ", C_j = " + (f(law.cj, 3) if np.isfinite(law.cj) else "∞"))}
+
+
+def cam_context(c, lang: str, figs: dict[str, str], csv_name: str) -> dict:
+    """Strings, rows and formulas of the cam section."""
+    p = c.params
+    fol = p.follower
+    prog = p.programme
+    u = _Units(c, lang)
+    zh = lang == "zh"
+    translating = isinstance(fol, core.TranslatingFollower)
+    motion = ("直动" if translating else "摆动") if zh else ("translating" if translating else "oscillating")
+    contact = _CONTACT[lang][fol.kind]
+    follower_name = f"{motion}{contact}从动件" if zh else f"{motion} {contact} follower"
+    rot = ("逆时针" if p.rotation > 0 else "顺时针") if zh else ("counter-clockwise" if p.rotation > 0 else "clockwise")
+    data = []
+
+    def row(sym, zh_name, en_name, value, unit):
+        data.append([sym, zh_name if zh else en_name, value, unit])
+
+    row("—", "从动件", "follower", follower_name, "—")
+    row("—", "凸轮转向", "cam rotation", rot, "—")
+    if p.speed_rpm:
+        row("$n$", "凸轮转速", "cam speed", f(p.speed_rpm, 2), "rpm")
+    if translating:
+        row("$h$", "行程", "stroke", f(prog.stroke * MM, 2), "mm")
+    else:
+        row("$\\varphi_{max}$", "最大摆角", "maximum swing", f(prog.stroke * DEG, 2), "°")
+        row("$a$", "中心距 $L_{OA}$", "centre distance $L_{OA}$", f(fol.pivot_distance * MM, 2), "mm")
+        if fol.kind != "flat":
+            row("$L$", "摆杆长度", "arm length", f(fol.arm_length * MM, 2), "mm")
+    row("$r_0$", "基圆半径" + ("（按许用压力角设计）" if c.base_radius_designed else ""),
+        "base radius" + (" (designed for the allowed pressure angle)" if c.base_radius_designed else ""),
+        f(c.base_radius * MM, 2), "mm")
+    if fol.kind == "roller":
+        row("$r_r$", "滚子半径", "roller radius", f(fol.roller_radius * MM, 2), "mm")
+    if translating and fol.kind != "flat":
+        fav = np.sign(c.offset) == core.favourable_offset_sign(p.rotation)
+        side = ("右侧" if c.offset > 0 else "左侧") if zh else ("right" if c.offset > 0 else "left")
+        kind_zh = "正偏置" if fav else "负偏置"
+        kind_en = "favourable" if fav else "unfavourable"
+        value = f(abs(c.offset) * MM, 2)
+        if abs(c.offset) > 0:
+            value += f"（{side}，{kind_zh}）" if zh else f" ({side}, {kind_en})"
+        row("$e$", "偏距", "offset", value, "mm")
+    limit_rise = f(p.alpha_rise * DEG, 0)
+    row("$[\\alpha]$", "推程许用压力角", "allowed pressure angle, rise", limit_rise, "°")
+    row("$[\\alpha']$", "回程许用压力角", "allowed pressure angle, return", f(p.alpha_return * DEG, 0), "°")
+
+    impacts = c.segments
+    prog_rows = []
+    for i, (seg, chk) in enumerate(zip(prog.segments, impacts)):
+        law = "—" if seg.law is None else (LAWS[seg.law].name_zh if zh else LAWS[seg.law].name_en)
+        lift = "—" if seg.kind == core.DWELL else f(abs(prog.lifts[i]) * u.s_scale, 2)
+        prog_rows.append([str(i + 1), _segment_name(c, i, lang),
+                          f"{f(prog.starts[i] * DEG, 1)} – {f((prog.starts[i] + prog.spans[i]) * DEG, 1)}",
+                          f(prog.spans[i] * DEG, 1), law, lift,
+                          "—" if seg.kind == core.DWELL else _IMPACT[lang][chk.impact]])
+    joints = [f"{f(b.delta * DEG, 1)}°（{_IMPACT[lang][b.impact]}）" if zh else
+              f"{f(b.delta * DEG, 1)}° ({_IMPACT[lang][b.impact]})"
+              for b in c.boundaries if b.impact != "none"]
+    laws = [_law_eqs(c, i, u, lang) for i, seg in enumerate(prog.segments) if seg.kind != core.DWELL]
+
+    # Geometry formulas (pitch curve by inversion, envelope, pressure angle).
+    sig = "+" if p.rotation > 0 else "-"
+    if translating:
+        s0 = c.grid.initial_angle
+        geo = {
+            "s0": (rf"s_0 = \sqrt{{r_0^2 - e^2}} = \sqrt{{{f(c.base_radius * MM, 2)}^2 - "
+                   rf"{f(abs(c.offset) * MM, 2)}^2}} = {f(s0 * MM, 3)}\ \text{{mm}}"),
+            "pitch": (rf"\mathbf{{B}}(\delta) = e^{{{'-' if p.rotation > 0 else ''}i\delta}}"
+                      rf"\left[e + i\,(s_0 + s)\right],\quad e = {f(c.offset * MM, 2)}\ \text{{mm}}"),
+            "alpha": (rf"\tan\alpha = \frac{{\left|{'' if p.rotation > 0 else '-'}\,ds/d\delta - e\right|}}"
+                      rf"{{s_0 + s}}") if fol.kind != "flat" else r"\alpha = 0",
+        }
+        if fol.kind == "flat":
+            geo["pitch"] = (rf"\mathbf{{B}}(\delta) = e^{{{'-' if p.rotation > 0 else ''}i\delta}}"
+                            rf"\left[{'' if p.rotation > 0 else '-'}\frac{{ds}}{{d\delta}} + i\,(r_0 + s)\right]")
+            geo["s0"] = r"\rho = r_0 + s + \frac{d^2 s}{d\delta^2} > 0"
+    else:
+        phi0 = c.grid.initial_angle
+        a, L, r0 = fol.pivot_distance * MM, fol.arm_length * MM, c.base_radius * MM
+        geo = {
+            "s0": (rf"\varphi_0 = \arccos\frac{{a^2 + L^2 - r_0^2}}{{2aL}} = \arccos\frac{{{f(a, 1)}^2 + "
+                   rf"{f(L, 1)}^2 - {f(r0, 1)}^2}}{{2 \times {f(a, 1)} \times {f(L, 1)}}} = "
+                   rf"{f(phi0 * DEG, 3)}°") if fol.kind != "flat" else
+                  (rf"\varphi_0 = \arcsin\frac{{r_0}}{{a}} = {f(phi0 * DEG, 3)}°"),
+            "pitch": (rf"x = a\cos\delta - L\cos(\delta - \varphi - \varphi_0),\quad "
+                      rf"y = a\sin\delta - L\sin(\delta - \varphi - \varphi_0)")
+            if (p.rotation < 0 and fol.rise_sense == "same") else
+            (rf"\mathbf{{B}}(\delta) = e^{{{'-' if p.rotation > 0 else ''}i\delta}}\left[a + L\,"
+             rf"e^{{i(\pi - k(\varphi_0 + \varphi))}}\right],\quad k = {'+1' if (-p.rotation if fol.rise_sense == 'same' else p.rotation) > 0 else '-1'}"),
+            "alpha": r"\alpha = \angle(\mathbf{n},\ \mathbf{v}_B),\quad \mathbf{v}_B \perp AB",
+        }
+    geo["envelope"] = (r"\mathbf{B}_a = \mathbf{B} - r_r\,\mathbf{n},\quad \mathbf{n} = "
+                       r"\frac{\pm i\,\mathbf{B}'}{|\mathbf{B}'|}")
+    geo["rho"] = (r"\rho = \frac{|\mathbf{B}'|^3}{\mathbf{B}' \times \mathbf{B}''},\quad "
+                  r"\rho_a = \rho - r_r")
+    del sig
+
+    # Checks
+    checks = []
+    for i, chk in enumerate(c.segments):
+        if chk.limit is None:
+            continue
+        ok = "PASS" if chk.ok else "FAIL"
+        name = f"{_segment_name(c, i, lang)} {i + 1}"
+        checks.append([("最大压力角 " if zh else "max pressure angle, ") + name,
+                       f"{f(chk.max_pressure_angle * DEG, 2)}° (δ = {f(chk.at * DEG, 1)}°)",
+                       f"≤ {f(chk.limit * DEG, 0)}°", ok])
+    if fol.kind == "roller":
+        ok = "PASS" if c.rho_actual_min_convex >= p.min_actual_curvature else "FAIL"
+        checks.append([("理论廓线外凸部分最小曲率半径 ρmin" if zh else "smallest convex ρ of the pitch curve"),
+                       f"{f(c.rho_pitch_min_convex * MM, 2)} mm",
+                       f"> r_r = {f(fol.roller_radius * MM, 2)} mm", "PASS" if c.rho_pitch_min_convex > fol.roller_radius else "FAIL"])
+        checks.append([("实际廓线最小曲率半径 ρa = ρmin − r_r" if zh else "actual profile ρa = ρmin − r_r"),
+                       f"{f(c.rho_actual_min_convex * MM, 2)} mm",
+                       f"≥ {f(p.min_actual_curvature * MM, 1)} mm", ok])
+    if fol.kind == "flat":
+        rho_min = float(np.min(c.grid.rho_actual))
+        checks.append([("廓线最小曲率半径（须处处外凸）" if zh else "smallest radius of curvature (must stay convex)"),
+                       f"{f(rho_min * MM, 2)} mm", "> 0", "PASS" if rho_min > 0 else "FAIL"])
+    design_rows = []
+    if c.min_base_radius is not None:
+        design_rows.append([("满足许用压力角的最小基圆半径" if zh else "smallest base radius for the allowed pressure angles")
+                            + (f"（e = {f(c.offset * MM, 2)} mm）" if translating and fol.kind != "flat" else ""),
+                            f"{f(c.min_base_radius * MM, 2)} mm"])
+    if c.best_offset is not None:
+        r0b, eb = c.best_offset
+        side = ("右" if eb > 0 else "左") if zh else ("right" if eb > 0 else "left")
+        design_rows.append([("最佳偏距及其最小基圆半径" if zh else "best offset and its smallest base radius"),
+                            f"e = {f(abs(eb) * MM, 2)} mm ({side}), r0 = {f(r0b * MM, 2)} mm"])
+    if c.face_extent is not None:
+        lo, hi = c.face_extent
+        if translating:
+            width = 2 * max(abs(lo), abs(hi)) * MM
+            design_rows.append([("平底接触点距导路最远（平底宽度至少 2×该值 + 5~7 mm）" if zh else
+                                 "farthest contact from the axis (face width ≥ 2× this + 5–7 mm)"),
+                                f"{f(max(abs(lo), abs(hi)) * MM, 2)} mm → {f(width + 7, 1)} mm"])
+        else:
+            design_rows.append([("平底上接触点离转轴 A 的范围" if zh else "contact along the face from the pivot"),
+                                f"{f(lo * MM, 2)} – {f(hi * MM, 2)} mm"])
+
+    t = c.table
+    tu = u.derivs(t.motion)
+    table_rows = []
+    for i in range(len(t.delta)):
+        table_rows.append([f(t.delta[i] * DEG, 1), f(t.motion.s[i] * u.s_scale, 3 if not u.osc else 3),
+                           f(tu[0][i], 3), f(t.pitch[i].real * MM, 3), f(t.pitch[i].imag * MM, 3),
+                           f(t.actual[i].real * MM, 3), f(t.actual[i].imag * MM, 3),
+                           f(t.pressure_angle[i] * DEG, 2)])
+    alpha_max = float(np.max(c.grid.pressure_angle))
+    return {
+        "follower": follower_name, "rotation": rot, "data_rows": data, "prog_rows": prog_rows,
+        "joints": "、".join(joints) if zh else ", ".join(joints),
+        "laws": laws, "geo": geo, "checks": checks, "design_rows": design_rows,
+        "table_rows": table_rows, "table_step": f(p.table_step * DEG, 1),
+        "table_head": [f"δ/°", f"{u.s_sym}/{u.s_unit}", f"{u.syms[0]}/({u.units[0]})",
+                       "x/mm", "y/mm", "x_a/mm", "y_a/mm", "α/°"],
+        "fig": figs, "csv": csv_name, "roller": fol.kind == "roller", "flat": fol.kind == "flat",
+        "warnings": [w.text(lang) for w in c.warnings],
+        "alpha_max": f(alpha_max * DEG, 2),
+        "rr": f(c.grid.roller_radius * MM, 2), "r0": f(c.base_radius * MM, 2),
+        "time_derivs": bool(p.omega),
+        "omega": f(p.omega, 4) if p.omega else "",
+    }
+
+
+def write_cam_csv(c, folder: Path, name: str = "cam_profile") -> list[Path]:
+    """Profile coordinates for CNC/CAD: at the report table's step and on the fine grid."""
+    paths = []
+    for prof, suffix in ((c.table, ""), (c.grid, "_fine")):
+        path = folder / f"{name}{suffix}.csv"
+        osc = c.params.oscillating
+        with path.open("w", newline="", encoding="utf-8") as fh:
+            w = csv.writer(fh)
+            w.writerow(["delta_deg", "phi_deg" if osc else "s_mm", "pitch_x_mm", "pitch_y_mm",
+                        "actual_x_mm", "actual_y_mm", "pressure_angle_deg", "rho_pitch_mm",
+                        "rho_actual_mm"])
+            s = prof.motion.s * (DEG if osc else MM)
+            for i in range(len(prof.delta)):
+                w.writerow([f"{prof.delta[i] * DEG:.4f}", f"{s[i]:.6f}",
+                            f"{prof.pitch[i].real * MM:.6f}", f"{prof.pitch[i].imag * MM:.6f}",
+                            f"{prof.actual[i].real * MM:.6f}", f"{prof.actual[i].imag * MM:.6f}",
+                            f"{prof.pressure_angle[i] * DEG:.6f}",
+                            f"{prof.rho_pitch[i] * MM:.6f}", f"{prof.rho_actual[i] * MM:.6f}"])
+        paths.append(path)
+    return paths
+
+
+# --------------------------------------------------------------------------- machine: cam
+
+
+def make_figures(r: dict, fig_dir: Path, lang: str) -> dict[str, str]:
+    return make_cam_figures(r["cam"], fig_dir, lang)
+
+
+def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
+    return {"meta": brief.report, "cam": cam_context(r["cam"], lang, figures, "cam_profile.csv")}
+
+
+def write_data(r: dict, folder: Path) -> list[Path]:
+    return write_cam_csv(r["cam"], folder)
