@@ -31,7 +31,7 @@ def _delta_axis(ax, segments, lab):
     ax.set_xlim(0, 360)
     ax.set_xticks(np.arange(0, 361, 30))
     ax.grid(True, lw=0.4, color="0.82")
-    for start, end, kind in segments:
+    for start, end, kind, _ in segments:
         if kind == "rise":
             ax.axvspan(start, end, color="C0", alpha=0.06, lw=0)
         elif kind == "return":
@@ -39,18 +39,36 @@ def _delta_axis(ax, segments, lab):
         ax.axvline(start, color="0.6", lw=0.5, ls=":")
 
 
-def svaj(path: Path, lang: str, delta_deg, series, ylabels, segments):
-    """Stacked displacement, velocity, acceleration and jerk against the cam angle."""
+def svaj(path: Path, lang: str, delta_deg, series, ylabels, segments, impulses=()):
+    """Stacked displacement, velocity, acceleration and jerk against the cam angle.
+    ``impulses`` = (δ [°], panel, sign): an infinite value there, drawn as an arrow "∞"."""
     lab = LABELS[lang]
     with figure(path, len(series), (7.0, 7.4)) as axes:
         for ax, y, yl in zip(axes, series, ylabels):
-            _delta_axis(ax, segments, lab)
+            _delta_axis(ax, segments, None)
             # Jumps (rigid/soft impact) must show as vertical steps, not sloped lines.
             ax.plot(delta_deg, y, lw=1.3, color="C0")
             ax.axhline(0, color="0.4", lw=0.6)
-            ax.set_ylabel(yl)
-        for start, end, kind in segments:
-            axes[0].text((start + end) / 2, 1.02, lab[kind], transform=axes[0].get_xaxis_transform(),
+            ax.set_ylabel(yl, fontsize=8)
+            if np.allclose(y, 0.0):
+                ax.set_ylim(-1, 1)
+                ax.set_yticks([0])
+        for x, panel, sign in impulses:
+            ax = axes[panel]
+            lo, hi = ax.get_ylim()
+            if hi - lo < 1e-9 or (abs(lo) < 1e-12 and abs(hi) < 1e-12):
+                lo, hi = -1.0, 1.0
+                ax.set_ylim(lo, hi)
+            tip = 0.92 * (hi if sign >= 0 else -lo) * (1 if sign >= 0 else -1)
+            if sign == 0:
+                ax.annotate("", xy=(x, 0.9 * hi), xytext=(x, 0), arrowprops=dict(arrowstyle="->", color="C3", lw=1.0))
+                ax.annotate("", xy=(x, 0.9 * lo), xytext=(x, 0), arrowprops=dict(arrowstyle="->", color="C3", lw=1.0))
+                ax.text(x + 3, 0.7 * hi, "±∞", color="C3", fontsize=7)
+            else:
+                ax.annotate("", xy=(x, tip), xytext=(x, 0), arrowprops=dict(arrowstyle="->", color="C3", lw=1.0))
+                ax.text(x + 3, 0.75 * tip, "∞" if sign > 0 else "−∞", color="C3", fontsize=7)
+        for start, end, kind, name in segments:
+            axes[0].text((start + end) / 2, 1.02, name, transform=axes[0].get_xaxis_transform(),
                          ha="center", va="bottom", fontsize=8, color="0.3")
         axes[-1].set_xlabel(lab["delta"])
 
@@ -66,7 +84,7 @@ def pressure_and_curvature(path: Path, lang: str, delta_deg, alpha_deg, limits, 
         _delta_axis(ax, segments, lab)
         ax.plot(delta_deg, alpha_deg, lw=1.3, color="C0", label="α")
         shown = set()
-        for (start, end, kind), limit in zip(segments, limits):
+        for (start, end, kind, _), limit in zip(segments, limits):
             if limit is None:
                 continue
             name = lab["limit_rise"] if kind == "rise" else lab["limit_return"]

@@ -54,7 +54,8 @@ class _Units:
             if p.omega:
                 self.scales = [w, w * w, w ** 3]
                 self.units = ["rad/s", "rad/s²", "rad/s³"]
-                self.syms = ["ω", "ε", "j"]
+                self.syms = ["dφ/dt", "d²φ/dt²", "d³φ/dt³"]
+                self.tex = [r"\dot{\varphi}", r"\ddot{\varphi}", r"\dddot{\varphi}"]
             else:
                 self.scales = [1.0, 1.0, 1.0]
                 self.units = ["—", "1/rad", "1/rad²"]
@@ -65,6 +66,7 @@ class _Units:
                 self.scales = [MM * w, MM * w * w, MM * w ** 3]
                 self.units = ["mm/s", "mm/s²", "mm/s³"]
                 self.syms = ["v", "a", "j"]
+                self.tex = ["v", "a", "j"]
             else:
                 self.scales = [MM, MM, MM]
                 self.units = ["mm/rad", "mm/rad²", "mm/rad³"]
@@ -85,10 +87,32 @@ def _ylabels(u: _Units, lang: str):
     return [f"{n} {s} ({un})" for n, s, un in zip(names, syms, units)]
 
 
-def _segments_deg(c):
+def _segments_deg(c, lang="en"):
     prog = c.params.programme
-    return [(float(prog.starts[i] * DEG), float((prog.starts[i] + prog.spans[i]) * DEG), seg.kind)
-            for i, seg in enumerate(prog.segments)]
+    return [(float(prog.starts[i] * DEG), float((prog.starts[i] + prog.spans[i]) * DEG), seg.kind,
+             _segment_name(c, i, lang)) for i, seg in enumerate(prog.segments)]
+
+
+def _impulses(c):
+    """Where a derivative is infinite: (δ [°], panel, sign). A velocity jump makes the
+    acceleration (panel 2) and jerk (panel 3) infinite; an acceleration jump the jerk."""
+    prog = c.params.programme
+    out = []
+    for b in c.boundaries:
+        if b.impact == "rigid":
+            out += [(b.delta * DEG, 2, np.sign(b.velocity_jump)), (b.delta * DEG, 3, 0.0)]
+        elif b.impact == "soft":
+            out.append((b.delta * DEG, 3, np.sign(b.acceleration_jump)))
+    for i, seg in enumerate(prog.segments):
+        if seg.kind == core.DWELL or not LAWS[seg.law].internal_acceleration_jump:
+            continue
+        for bp in LAWS[seg.law].breakpoints:
+            lo = LAWS[seg.law](np.array([bp - 1e-9]))[2][0]
+            hi = LAWS[seg.law](np.array([bp + 1e-9]))[2][0]
+            if abs(hi - lo) > 1e-6:
+                out.append(((prog.starts[i] + bp * prog.spans[i]) * DEG, 3,
+                            np.sign((hi - lo) * prog.lifts[i])))
+    return out
 
 
 def make_cam_figures(c, fig_dir: Path, lang: str, prefix: str = "cam") -> dict[str, str]:
@@ -111,8 +135,9 @@ def make_cam_figures(c, fig_dir: Path, lang: str, prefix: str = "cam") -> dict[s
     joints = prog.starts
     left = np.array([prog.starts[i] + prog.spans[i] for i in range(len(prog.segments))])
     d_plot, ys = _with_left_limits(d, seriesd, prog, u, left)
-    cf.svaj(out("svaj"), lang, d_plot * DEG, ys, _ylabels(u, lang), _segments_deg(c))
-    segs = _segments_deg(c)
+    del joints
+    segs = _segments_deg(c, lang)
+    cf.svaj(out("svaj"), lang, d_plot * DEG, ys, _ylabels(u, lang), segs, _impulses(c))
     limits = [None if s.limit is None else s.limit * DEG for s in c.segments]
     clip = 6 * c.base_radius * MM
     cf.pressure_and_curvature(out("alpha"), lang, g.delta * DEG, g.pressure_angle * DEG, limits,
@@ -126,7 +151,6 @@ def make_cam_figures(c, fig_dir: Path, lang: str, prefix: str = "cam") -> dict[s
     cf.profile(out("profile"), lang, g.pitch * MM, g.actual * MM, c.base_radius * MM,
                g.roller_radius * MM, marks, g.rotation, g.follower_point[0] * MM, pivot,
                flat=c.params.follower.kind == "flat")
-    del joints
     return paths
 
 
@@ -177,9 +201,9 @@ def _law_eqs(c, i, u: _Units, lang):
     phi_rad = prog.spans[i]
     if u.omega:
         w = f(u.omega, 4)
-        v_eq = (rf"{u.syms[0]} = {sign}\frac{{{amp}\,\omega}}{{\Phi}} S'(u) = {sign}"
+        v_eq = (rf"{u.tex[0]} = {sign}\frac{{{amp}\,\omega}}{{\Phi}} S'(u) = {sign}"
                 rf"\frac{{{amp} \times {w}}}{{{f(phi_rad, 4)}}} S'(u)")
-        a_eq = (rf"{u.syms[1]} = {sign}\frac{{{amp}\,\omega^2}}{{\Phi^2}} S''(u) = {sign}"
+        a_eq = (rf"{u.tex[1]} = {sign}\frac{{{amp}\,\omega^2}}{{\Phi^2}} S''(u) = {sign}"
                 rf"\frac{{{amp} \times {w}^2}}{{{f(phi_rad, 4)}^2}} S''(u)")
     else:
         v_eq = (rf"\frac{{d{sym}}}{{d\delta}} = {sign}\frac{{{amp}}}{{\Phi}} S'(u)")

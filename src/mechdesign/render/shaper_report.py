@@ -61,7 +61,20 @@ def make_figures(r: dict, fig_dir: Path, lang: str) -> dict[str, str]:
     pts = {name: k.points[name][n:][regular] * 1e3 for name in ("O2", "O3", "A", "B", "F")}
     fig.mechanism(out("mechanism"), lang, pts, [labels[i] for i in regular],
                   syn.design.guide_height * 1e3, syn.design.crank * 1e3)
+    if r.get("cam") is not None:
+        from .cam_report import make_cam_figures
+
+        paths.update(make_cam_figures(r["cam"], fig_dir, lang))
     return paths
+
+
+def write_data(r: dict, folder: Path) -> list[Path]:
+    """Cam profile coordinates as CSV when the brief has a cam."""
+    if r.get("cam") is None:
+        return []
+    from .cam_report import write_cam_csv
+
+    return write_cam_csv(r["cam"], folder)
 
 
 # Reaction symbols shown in the report (force of the first link on the second).
@@ -175,8 +188,14 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
     }
     sense_zh = "顺时针" if p.crank_omega < 0 else "逆时针"
     sense_en = "clockwise" if p.crank_omega < 0 else "counter-clockwise"
+    cam = None
+    if r.get("cam") is not None:
+        from .cam_report import cam_context
+
+        cam = cam_context(r["cam"], lang, figures, "cam_profile.csv")
     return {
         "meta": brief.report,
+        "cam": cam,
         "fig": figures,
         "data_rows": data_rows,
         "syn_rows": syn_rows,
