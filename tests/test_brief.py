@@ -70,7 +70,20 @@ def test_shipped_brief_loads_and_converts_to_si():
 
 def test_counter_clockwise_crank_is_positive(base, tmp_path):
     base["linkage"]["crank_rotation"] = "ccw"
+    base["cam"]["rotation"] = "ccw"          # the cam is on the crank shaft
     assert to_si(load_brief(write(tmp_path, base))).crank_omega == pytest.approx(80 * 2 * np.pi / 60)
+
+
+def test_cam_must_turn_with_the_crank(base, tmp_path):
+    base["linkage"]["crank_rotation"] = "ccw"
+    with pytest.raises(BriefError) as err:
+        load_brief(write(tmp_path, base))
+    assert "cam.rotation" in str(err.value) and "crank_rotation" in str(err.value)
+
+
+def test_shaper_without_cam_section_has_no_cam(base, tmp_path):
+    del base["cam"]
+    assert to_si(load_brief(write(tmp_path, base))).cam is None
 
 
 def test_defaults_apply_when_optional_sections_are_left_out(base, tmp_path):

@@ -585,7 +585,9 @@ def test_oscillating_geometry_and_pole_method_all_senses(rotation, sense):
     phi, dphi = parabolic_phi(d)
     np.testing.assert_allclose(np.abs(B - A0), L0, rtol=1e-14)
     np.testing.assert_allclose(np.abs(B[phi == 0]), R00, rtol=1e-14)
-    turn = np.angle((B - A0) / (B[0] - A0))
+    B_base = B[-1]                                   # last sample: in the 210° dwell, φ = 0
+    assert phi[-1] == 0.0
+    turn = np.angle((B - A0) / (B_base - A0))
     expected = rotation * phi if sense == "same" else -rotation * phi
     np.testing.assert_allclose(turn, expected, rtol=0, atol=1e-13)
     np.testing.assert_allclose(c.pressure_angle, pole_pressure_angle(B, A0, dphi, rotation, sense),
@@ -601,8 +603,11 @@ def test_seed_c_program_derivative_is_wrong_but_laws_parabolic_is_right():
     h = 1e-6
     q, dq_seed = seed_rise(F)
     fd = (seed_rise(F + h)[0] - seed_rise(F - h)[0]) / (2 * h)
+    # wrong by the factor q/φmax ∈ (0.5, 1): half the true speed just after the mid-point of
+    # the rise, correct only where q reaches φmax at the end of the rise
     rel_err_seed = np.abs(dq_seed - fd) / np.abs(fd)
-    assert np.min(rel_err_seed) > 0.5               # q/φmax ≤ 0.5… wrong by a factor q/φmax
+    assert np.max(rel_err_seed) > 0.45
+    assert np.max(np.abs(dq_seed - fd)) > 0.1 * np.max(np.abs(fd))
     np.testing.assert_allclose(dq_seed / fd, q / PHI_MAX, rtol=1e-6)
     _, S1, _, _ = LAWS["parabolic"](F / F0)
     np.testing.assert_allclose(PHI_MAX * S1 / F0, fd, rtol=1e-8)
@@ -612,16 +617,18 @@ def test_seed_c_program_derivative_is_wrong_but_laws_parabolic_is_right():
 # ---------------------------------------------------------------------- 7. base circle design
 
 
-def max_alpha_translating(r0, e, sigma, return_law, points):
-    """Max pressure angle on the rise and on the return of 7-3 by tan α = |σ·ds − e|/(s0 + s)
-    (pole at x = σ·ds/dδ), on the module's grid of ``points`` angles."""
-    d = np.arange(points) * (2 * PI / points)
-    s, ds, _ = motion_73(d, return_law)
+def max_alpha_translating(r0, e, sigma, return_law, n=20001):
+    """Max pressure angle on the closed rise and on the closed return of 7-3 by
+    tan α = |σ·ds − e| / (s0 + s) (pole at x = σ·ds/dδ), on n angles per segment including
+    both ends (the uniform return is worst at its very end, s → 0)."""
     s0 = math.sqrt(r0 * r0 - e * e)
-    alpha = np.arctan(np.abs(sigma * ds - e) / (s0 + s))
-    rise = d < RISE73
-    ret = (d >= RET73_START) & (d < RET73_END)
-    return alpha[rise].max(), alpha[ret].max()
+    out = []
+    for start, span in ((0.0, RISE73), (RET73_START, RET73)):
+        d = start + np.linspace(0.0, 1.0, n) * span
+        d[-1] = start + span * (1 - 1e-15)              # stay inside the segment at u = 1
+        s, ds, _ = motion_73(d, return_law)
+        out.append(np.max(np.arctan(np.abs(sigma * ds - e) / (s0 + s))))
+    return tuple(out)
 
 
 @pytest.mark.parametrize("limits,binding", [((30, 70), "rise"), ((45, 20), "return")])
@@ -635,20 +642,20 @@ def test_min_base_radius_translating_given_offset_is_tight(limits, binding, rota
     r0, e_used = min_base_radius_translating(programme_73(), follower, lim_rise, lim_ret,
                                              offset=e, rotation=rotation)
     assert e_used == e
-    a_rise, a_ret = max_alpha_translating(r0, e, rotation, "constant_velocity", 7200)
+    a_rise, a_ret = max_alpha_translating(r0, e, rotation, "constant_velocity")
     if binding == "rise":
         assert a_rise == pytest.approx(lim_rise, abs=1e-6)
         assert a_ret <= lim_ret + 1e-9
     else:
         assert a_ret == pytest.approx(lim_ret, abs=1e-6)
         assert a_rise <= lim_rise + 1e-9
-    a_rise, a_ret = max_alpha_translating(0.99 * r0, e, rotation, "constant_velocity", 7200)
+    a_rise, a_ret = max_alpha_translating(0.99 * r0, e, rotation, "constant_velocity")
     assert a_rise > lim_rise or a_ret > lim_ret
-    # and the designed cam, analysed by the module itself, agrees
-    c = design_cam(programme_73(), follower, r0, rotation, points=7200)
-    on_lim = c.pressure_angle[(c.delta < RISE73) if binding == "rise"
-                              else (c.delta >= RET73_START) & (c.delta < RET73_END)]
-    assert on_lim.max() == pytest.approx(lim_rise if binding == "rise" else lim_ret, abs=1e-6)
+    # and the designed cam, analysed by the module itself on the closed binding segment, agrees
+    start, span = (0.0, RISE73) if binding == "rise" else (RET73_START, RET73)
+    d = start + np.linspace(0.0, 1.0 - 1e-15, 20001) * span
+    c = design_cam(programme_73(), follower, r0, rotation, delta=d)
+    assert c.pressure_angle.max() == pytest.approx(lim_rise if binding == "rise" else lim_ret, abs=1e-6)
 
 
 @pytest.mark.parametrize("rotation", [1, -1])
@@ -665,7 +672,7 @@ def test_min_base_radius_translating_auto_offset(rotation):
     assert np.sign(e) == favourable_offset_sign(rotation) == rotation
     assert r0 <= r0_centred
     assert r0 < 0.9 * r0_centred              # the offset really helps here
-    a_rise, a_ret = max_alpha_translating(r0, e, rotation, "constant_velocity", 7200)
+    a_rise, a_ret = max_alpha_translating(r0, e, rotation, "constant_velocity")
     assert a_rise == pytest.approx(lim[0], abs=1e-6) or a_ret == pytest.approx(lim[1], abs=1e-6)
     for de in (-1e-4, 1e-4):
         r_near, _ = min_base_radius_translating(prog, follower, *lim, offset=e + de, rotation=rotation)
@@ -686,7 +693,7 @@ def test_min_base_radius_flat_follower_keeps_the_profile_convex():
     assert c.rho_actual.min() == pytest.approx(rho_min, abs=1e-9)
 
 
-@pytest.mark.parametrize("limits", [(30, 70), (45, 35)])
+@pytest.mark.parametrize("limits", [(30, 70), (60, 40)])
 def test_min_base_radius_oscillating_is_tight(limits):
     """Shaper cam (cw, a = 136, L = 120): at the returned r0 the max pole-method pressure angle
     on the rise or on the return equals its limit; at 0.99·r0 a limit is exceeded."""
@@ -712,13 +719,42 @@ def test_min_base_radius_oscillating_is_tight(limits):
     assert a_rise > lim_rise or a_ret > lim_ret
 
 
+def uniform_return_programme() -> Programme:
+    """Oscillating: cycloidal rise 90° to 20°, dwell 30°, uniform return 100°, dwell 140°."""
+    return Programme([Segment("rise", D(90), "cycloidal", D(20)), Segment("dwell", D(30)),
+                      Segment("return", D(100), "constant_velocity"), Segment("dwell", D(140))])
+
+
+@pytest.mark.xfail(strict=True, reason=(
+    "min_base_radius_oscillating checks the pressure angle only on design_cam's half-open grid "
+    "(np.arange(points)·2π/points, each segment [start, end)), so it misses the closed end of a "
+    "segment; after a uniform return α is largest at u → 1 and the returned r0 exceeds [α'] "
+    "there by ≈ 4e-4 rad (0.024°). min_base_radius_translating samples closed intervals."))
+def test_min_base_radius_oscillating_respects_the_limit_at_the_end_of_a_uniform_return():
+    """Uniform return limited to 23° (rise 75°, not binding): at the returned r0 the pole-method
+    pressure angle over the closed return u ∈ [0, 1) must not exceed 23° (+1e-6 rad). The
+    largest α is at the very end of the return, where the follower is lowest but still moving
+    at −φ_ret/Φ'."""
+    prog = uniform_return_programme()
+    follower = OscillatingFollower("roller", A0, L0, RR0, "same")
+    lim_rise, lim_ret = D(75), D(23)
+    r0 = min_base_radius_oscillating(prog, follower, lim_rise, lim_ret, rotation=-1)
+    u = np.linspace(0.0, 1.0 - 1e-15, 20001)
+    phi, dphi = D(20) * (1 - u), np.full_like(u, -D(20) / D(100))    # uniform return by hand
+    phi0 = math.acos((A0**2 + L0**2 - r0 * r0) / (2 * A0 * L0))
+    B = A0 - L0 * np.exp(-1j * (phi + phi0))
+    alpha = pole_pressure_angle(B, A0, dphi, -1, "same")
+    assert alpha.argmax() == len(u) - 1                 # worst at the end of the return
+    assert alpha.max() <= lim_ret + 1e-6
+
+
 # ---------------------------------------------------------------------- 8. eccentric disc, exercise 7-1
 
 
 R71, EPS71 = 40 * MM, 20 * MM
 
 #: Textbook list of 7-1(a): distance from the cam centre to the knife edge [mm] at
-#: δ = 18°, 36°, …, 180° from the lowest position.
+#: δ = 18°, 36°, …, 180° from the lowest position (as printed; 29.0071 is a misprint of 29.0077).
 TEXTBOOK_71A = [20.4985, 22.0532, 24.8257, 29.0071, 34.6410, 41.3684, 48.3371, 54.4139,
                 58.5408, 60.0000]
 
@@ -744,8 +780,15 @@ def test_71a_centred_knife_edge_textbook_list(rotation):
     tip's height y is that distance."""
     d = np.radians(18.0 * np.arange(1, 20))
     m = eccentric_disc(d, R71, EPS71, TranslatingFollower("knife"), rotation)
-    expected = TEXTBOOK_71A + TEXTBOOK_71A[-2::-1]            # symmetric back to 342°
-    np.testing.assert_allclose(m.y / MM, expected, rtol=0, atol=6e-5)
+    expected = np.array(TEXTBOOK_71A + TEXTBOOK_71A[-2::-1])  # symmetric back to 342°
+    # The printed 29.0071 at 72° (and 288°) is a misprint: by hand,
+    # y = −20 cos 72° + √(40² − (20 sin 72°)²) = −6.18034 + 35.18802 = 29.00768 → 29.0077.
+    by_hand_72 = -20 * math.cos(D(72)) + math.sqrt(40**2 - (20 * math.sin(D(72))) ** 2)
+    assert round(by_hand_72, 4) == 29.0077
+    misprint = np.isin(np.arange(19), [3, 15])
+    np.testing.assert_allclose(m.y[~misprint] / MM, expected[~misprint], rtol=0, atol=6e-5)
+    np.testing.assert_allclose(m.y[misprint] / MM, by_hand_72, rtol=1e-13)
+    assert np.all(np.abs(m.y[misprint] / MM - 29.0071) < 1e-3)  # only the last digit is off
     y_ref, _ = disc_closed_form(d, R71, EPS71, 0.0, 0.0, rotation)
     np.testing.assert_allclose(m.y, y_ref, rtol=1e-14)
     assert eccentric_disc(0.0, R71, EPS71, TranslatingFollower("knife")).y == pytest.approx(20 * MM)

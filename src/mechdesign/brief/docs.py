@@ -21,10 +21,31 @@ def _allowed(info) -> str:
                 parts.append(f"{sym} {value:g}")
         if getattr(meta, "min_length", None):
             parts.append("non-empty")
-    args = getattr(info.annotation, "__args__", None)
-    if args and all(isinstance(a, str) for a in args):
-        parts.append(" \\| ".join(args))
+    literals = []
+    if float in (getattr(info.annotation, "__args__", None) or ()):
+        literals.append("a number")
+    for arg in getattr(info.annotation, "__args__", None) or ():
+        if isinstance(arg, str):
+            literals.append(arg)
+        elif getattr(arg, "__args__", None) and all(isinstance(a, str) for a in arg.__args__):
+            literals.extend(arg.__args__)      # Optional[Literal[...]] / Union[float, Literal]
+    if literals:
+        parts.append(" \\| ".join(literals))
     return ", ".join(parts)
+
+
+def _section(ann):
+    """(model, is_list, optional) if ``ann`` is a brief section, a list of them or an
+    optional section; else None."""
+    if isinstance(ann, type) and issubclass(ann, BaseModel):
+        return ann, False, False
+    args = [a for a in getattr(ann, "__args__", ()) if a is not type(None)]
+    origin = getattr(ann, "__origin__", None)
+    if origin is list and args and isinstance(args[0], type) and issubclass(args[0], BaseModel):
+        return args[0], True, False
+    if len(args) == 1 and isinstance(args[0], type) and issubclass(args[0], BaseModel):
+        return args[0], False, True
+    return None
 
 
 def _rows(model: type[BaseModel], prefix: str):
@@ -32,9 +53,12 @@ def _rows(model: type[BaseModel], prefix: str):
         key = info.alias or name
         path = f"{prefix}{key}"
         ann = info.annotation
-        if isinstance(ann, type) and issubclass(ann, BaseModel):
-            yield f"| **{path}** | section | | {ann.__doc__.strip().splitlines()[0]} |"
-            yield from _rows(ann, path + ".")
+        section = _section(ann)
+        if section is not None:
+            sub, many, optional = section
+            what = "list of" if many else ("optional section" if optional else "section")
+            yield f"| **{path}** | {what} | | {sub.__doc__.strip().splitlines()[0]} |"
+            yield from _rows(sub, path + ("[].") if many else path + ".")
         else:
             default = "required" if info.is_required() else f"`{info.default}`"
             desc = (info.description or "").replace("|", "\\|")

@@ -156,9 +156,15 @@ def _checks(p, fol, r0, segs, rho_p, rho_a, grid, min_r0) -> list[Finding]:
         which_en = worst.kind
         fix_zh = f"把基圆半径增大到至少 {_mm(min_r0)}" if min_r0 else "增大基圆半径"
         fix_en = f"increase the base radius to at least {_mm(min_r0)}" if min_r0 else "increase the base radius"
-        if isinstance(fol, core.TranslatingFollower) and fol.kind != "flat":
-            fix_zh += "，或改用正偏置"
-            fix_en += ", or offset the follower to the favourable side"
+        best = core.min_base_radius_translating(p.programme, fol, p.alpha_rise, p.alpha_return,
+                                                None, p.rotation) \
+            if isinstance(fol, core.TranslatingFollower) and fol.kind != "flat" else None
+        if best is not None and best[0] < r0:
+            side_zh = "右" if best[1] > 0 else "左"
+            side_en = "right" if best[1] > 0 else "left"
+            fix_zh += f"，或把偏距改为 e = {_mm(abs(best[1]))}（{side_zh}侧，此时最小基圆半径 {_mm(best[0])}）"
+            fix_en += (f", or change the offset to e = {_mm(abs(best[1]))} on the {side_en} "
+                       f"(then the smallest base radius is {_mm(best[0])})")
         out.append(Finding(
             "pressure_angle",
             f"压力角超限：{which_zh}最大压力角 {np.degrees(worst.max_pressure_angle):.2f}° "
