@@ -470,6 +470,65 @@ def test_flat_follower_on_harmonic_programme_gives_the_eccentric_circle(rotation
     np.testing.assert_allclose(disc.y, R - eps * np.cos(d), rtol=0, atol=1e-15)
 
 
+@pytest.mark.parametrize("rotation", [1, -1])
+def test_translating_flat_face_contact_by_the_pole_method(rotation):
+    """Flat face ⟂ to the axis at height r0 + s: the common normal is vertical and passes through
+    the pole x = σ·ds/dδ, so the contact is at (σ·ds/dδ, r0 + s) in the frame (the textbook
+    'contact offset = ds/dδ'); α = 0; ρ = r0 + s + d²s/dδ² equals the three-point radius of the
+    profile; the normal is ⟂ to the profile's central-difference tangent."""
+    prog, r0, h = programme_73("cycloidal"), 40 * MM, 2e-4
+    d = half_step_grid(1440)
+    c = design_cam(prog, TranslatingFollower("flat"), r0, rotation, delta=d)
+    cm = design_cam(prog, TranslatingFollower("flat"), r0, rotation, delta=d - h)
+    cp = design_cam(prog, TranslatingFollower("flat"), r0, rotation, delta=d + h)
+    s, ds, d2s = motion_73(d, "cycloidal")
+    np.testing.assert_allclose(c.contact, rotation * ds + 1j * (r0 + s), rtol=0, atol=1e-15)
+    np.testing.assert_allclose(c.actual, c.contact * np.exp(-1j * rotation * d), rtol=0, atol=1e-15)
+    np.testing.assert_array_equal(c.pressure_angle, 0.0)
+    np.testing.assert_allclose(c.rho_actual, r0 + s + d2s, rtol=1e-13)
+    orient = np.sign(signed_area(c.actual))
+    k_ref = 1 / discrete_rho(cm.actual, c.actual, cp.actual, orient)
+    np.testing.assert_allclose(1 / c.rho_actual, k_ref, rtol=1e-5)
+    tangent = cp.actual - cm.actual
+    assert np.max(np.abs(np.real(np.conj(c.normal) * tangent)) / np.abs(tangent)) < 1e-7
+
+
+@pytest.mark.parametrize("rotation", [1, -1])
+@pytest.mark.parametrize("sense", ["same", "opposite"])
+def test_oscillating_flat_face_contact_by_the_pole_method(rotation, sense):
+    """Flat face through the pivot A (a = 150 mm), r0 = 80 mm: at φ = 0 the face is r0 from O;
+    it turns by ±σφ about A; the contact lies on the face and is the foot of the perpendicular
+    from the pole P (x_P = ω2·a/(ω2 − ω1) on OA), because the common normal ⟂ face passes
+    through P; the profile normal is ⟂ to its tangent; ρ matches three-point circles."""
+    prog = Programme([Segment("rise", D(120), "cycloidal", D(15)), Segment("dwell", D(30)),
+                      Segment("return", D(120), "cycloidal"), Segment("dwell", D(90))])
+    a, r0, h = 150 * MM, 80 * MM, 2e-4
+    follower = OscillatingFollower("flat", a, rise_sense=sense)
+    d = half_step_grid(1440)
+    c = design_cam(prog, follower, r0, rotation, delta=d)
+    cm = design_cam(prog, follower, r0, rotation, delta=d - h)
+    cp = design_cam(prog, follower, r0, rotation, delta=d + h)
+    m = prog.evaluate(d)
+    face = (c.follower_point - a) / np.abs(c.follower_point - a)     # unit vector along the face
+    # contact and foot on one line through A
+    assert np.max(np.abs(np.imag(np.conj(face) * (c.contact - a)))) < 1e-15
+    # base position (last sample, φ = 0): distance from O to the face line = r0
+    assert abs(np.imag(np.conj(face[-1]) * (0 - a))) == pytest.approx(r0, rel=1e-14)
+    turn = np.angle(face / face[-1])
+    np.testing.assert_allclose(turn, (rotation if sense == "same" else -rotation) * m.s,
+                               rtol=0, atol=1e-13)
+    w1 = rotation
+    w2 = (rotation if sense == "same" else -rotation) * m.ds
+    P = w2 * a / (w2 - w1)
+    np.testing.assert_allclose(np.real(np.conj(face) * (c.contact - P)), 0.0, atol=1e-15)
+    np.testing.assert_array_equal(c.pressure_angle, 0.0)
+    tangent = cp.actual - cm.actual
+    assert np.max(np.abs(np.real(np.conj(c.normal) * tangent)) / np.abs(tangent)) < 1e-7
+    orient = np.sign(signed_area(c.actual))
+    k_ref = 1 / discrete_rho(cm.actual, c.actual, cp.actual, orient)
+    np.testing.assert_allclose(1 / c.rho_actual, k_ref, rtol=1e-5, atol=1e-6 * np.max(np.abs(k_ref)))
+
+
 # ---------------------------------------------------------------------- 6. shaper cam (seed 000)
 
 
@@ -725,11 +784,6 @@ def uniform_return_programme() -> Programme:
                       Segment("return", D(100), "constant_velocity"), Segment("dwell", D(140))])
 
 
-@pytest.mark.xfail(strict=True, reason=(
-    "min_base_radius_oscillating checks the pressure angle only on design_cam's half-open grid "
-    "(np.arange(points)·2π/points, each segment [start, end)), so it misses the closed end of a "
-    "segment; after a uniform return α is largest at u → 1 and the returned r0 exceeds [α'] "
-    "there by ≈ 4e-4 rad (0.024°). min_base_radius_translating samples closed intervals."))
 def test_min_base_radius_oscillating_respects_the_limit_at_the_end_of_a_uniform_return():
     """Uniform return limited to 23° (rise 75°, not binding): at the returned r0 the pole-method
     pressure angle over the closed return u ∈ [0, 1) must not exceed 23° (+1e-6 rad). The

@@ -431,8 +431,13 @@ def min_base_radius_oscillating(programme: Programme, follower: OscillatingFollo
     lo, hi = abs(a - L), a + L
     kinds = np.array([seg.kind for seg in programme.segments])
 
+    # The grid plus the closed end of every segment (the pressure angle after a uniform
+    # return is largest at its very end).
+    ends = programme.starts + programme.spans * (1 - 1e-12)
+    delta = np.concatenate([np.arange(points) * (TWO_PI / points), ends])
+
     def excess(r0: float) -> float:
-        prof = design_cam(programme, follower, r0, rotation, points)
+        prof = design_cam(programme, follower, r0, rotation, delta=delta)
         k = kinds[prof.motion.segment]
         lim = np.where(k == RISE, alpha_rise, alpha_return)
         mov = k != DWELL
