@@ -435,7 +435,7 @@ def test_radius_of_curvature_against_three_point_circles(case, rotation):
         assert np.min(c0.rho_pitch) < 0 < np.max(c0.rho_pitch)      # both signs exercised
 
 
-# ---------------------------------------------------------------------- 5. eccentric disc as a flat-follower cam
+# ---------------------------------------------------------------------- 5. eccentric disc, flat follower
 
 
 @pytest.mark.parametrize("rotation", [1, -1])
@@ -856,8 +856,8 @@ def test_71b_offset_knife_edge_stroke():
     pole (x = σ·dy/dδ) is the cam centre: the common normal — the line from the disc centre C
     to the tip — passes through the axis, so the tip is R ∓ ε from it:
     stroke = √((R + ε)² − e²) − √((R − ε)² − e²) = √3375 − √175 = 44.866 mm.
-    The seed's ADAMS value 40.7007 + 2.4972 = 43.1979 mm is not the stroke (it misses both
-    extremes by reading the curve at other angles)."""
+    The seed's ADAMS value 40.7007 + 2.4972 = 43.1979 mm is 1.67 mm short, so whatever its
+    simulation measured, it was not the distance between these two extreme positions."""
     e = 15 * MM
     stroke = math.sqrt(60**2 - 15**2) - math.sqrt(20**2 - 15**2)
     assert stroke == pytest.approx(44.866, abs=5e-4)
@@ -865,7 +865,8 @@ def test_71b_offset_knife_edge_stroke():
     m = eccentric_disc(np.arange(36000) * (2 * PI / 36000), R71, EPS71, TranslatingFollower("knife", e))
     assert m.stroke / MM == pytest.approx(stroke, rel=1e-13)
     assert (m.y.max() - m.y.min()) / MM == pytest.approx(stroke, abs=1e-6)
-    assert m.y_min == pytest.approx(m.y.min(), abs=1e-9) and m.y_max == pytest.approx(m.y.max(), abs=1e-9)
+    assert m.y_min == pytest.approx(m.y.min(), abs=1e-9)
+    assert m.y_max == pytest.approx(m.y.max(), abs=1e-9)
     np.testing.assert_allclose(m.s, m.y - m.y_min, rtol=0, atol=1e-16)
 
 

@@ -19,7 +19,7 @@ import yaml
 from pydantic import ValidationError
 
 from mechdesign.brief.cam import CamBrief, CamSection, EccentricCamBrief, cam_to_si, eccentric_to_si
-from mechdesign.brief.loader import BRIEF_MODELS, BriefError, parse_brief
+from mechdesign.brief.loader import BRIEF_MODELS, BriefError, load_brief, parse_brief
 from mechdesign.core.cam import OscillatingFollower, Programme, TranslatingFollower
 
 MM = 1e-3
@@ -391,29 +391,40 @@ def test_eccentric_roller_without_radius_and_unknown_key():
 # ---------------------------------------------------------------------- through parse_brief
 
 
-@pytest.fixture()
-def with_cam_models(monkeypatch):
-    """Make parse_brief know the cam machines (a no-op once the project registers them)."""
-    monkeypatch.setitem(BRIEF_MODELS, "cam", BRIEF_MODELS.get("cam", CamBrief))
-    monkeypatch.setitem(BRIEF_MODELS, "eccentric_cam", BRIEF_MODELS.get("eccentric_cam", EccentricCamBrief))
-
-
-@pytest.mark.skipif("cam" not in BRIEF_MODELS or "eccentric_cam" not in BRIEF_MODELS,
-                    reason="machines 'cam'/'eccentric_cam' not registered in BRIEF_MODELS yet")
 def test_cam_machines_are_registered():
     assert BRIEF_MODELS["cam"] is CamBrief
     assert BRIEF_MODELS["eccentric_cam"] is EccentricCamBrief
-    assert isinstance(parse_brief(brief_73()), CamBrief)
 
 
-def test_parse_brief_accepts_the_73_brief(with_cam_models):
+def test_load_brief_reads_the_73_yaml(tmp_path):
+    """A YAML file with `offset_mm: auto` and `base_radius_mm: auto` loads through load_brief."""
+    data = brief_73()
+    data["cam"]["follower"]["offset_mm"] = "auto"
+    data["cam"]["base_radius_mm"] = "auto"
+    path = tmp_path / "cam.yaml"
+    path.write_text(yaml.safe_dump(data, allow_unicode=True), encoding="utf-8")
+    p = cam_to_si(load_brief(path).cam)
+    assert p.auto_offset is True and p.base_radius is None
+    assert p.programme.stroke == pytest.approx(0.030, rel=1e-15)
+
+
+def test_parse_brief_unknown_machine_lists_the_cam_machines():
+    data = brief_73()
+    data["machine"] = "cams"
+    with pytest.raises(BriefError) as info:
+        parse_brief(data)
+    (pr,) = info.value.problems
+    assert pr.path == "machine" and "cam" in pr.allowed and "eccentric_cam" in pr.allowed
+
+
+def test_parse_brief_accepts_the_73_brief():
     b = parse_brief(brief_73())
     assert isinstance(b, CamBrief)
     assert cam_to_si(b.cam).follower.offset == pytest.approx(0.012, rel=1e-15)
     assert isinstance(parse_brief(brief_71()), EccentricCamBrief)
 
 
-def test_parse_brief_reports_every_cam_problem_with_its_path(with_cam_models):
+def test_parse_brief_reports_every_cam_problem_with_its_path():
     """Problems in different sub-models are reported together, each with its dotted path;
     the follower's cross-field check is reported at 'cam.follower', a dwell's at
     'cam.programme.1', an unknown key at its own path."""
@@ -436,14 +447,10 @@ def test_parse_brief_reports_every_cam_problem_with_its_path(with_cam_models):
 # list[DiscFollower] (followers.N…) and Optional[CamSection] (the shaper brief's cam). Below
 # those it reports the *parent's* fields as "allowed here" and the parent field's description
 # as the unit of the offending field.
-LOADER_UNWRAP_BUG = (
-    "loader._field_info does not unwrap list[...] / Optional[...] annotations (nor skip list "
-    "indices), so below cam.programme.N, followers.N or the shaper's Optional cam section the "
-    "problem lists the parent model's fields and shows the parent field's description")
+# Problems below list items and optional sections name the item's own fields and units.
 
 
-@pytest.mark.xfail(strict=True, reason=LOADER_UNWRAP_BUG)
-def test_unknown_key_in_a_programme_segment_lists_the_segment_fields(with_cam_models):
+def test_unknown_key_in_a_programme_segment_lists_the_segment_fields():
     data = brief_73()
     data["cam"]["programme"][2]["speed"] = 3
     with pytest.raises(BriefError) as info:
@@ -455,8 +462,7 @@ def test_unknown_key_in_a_programme_segment_lists_the_segment_fields(with_cam_mo
     assert "base_radius_mm" not in pr.allowed
 
 
-@pytest.mark.xfail(strict=True, reason=LOADER_UNWRAP_BUG)
-def test_range_error_in_a_programme_segment_shows_its_own_unit(with_cam_models):
+def test_range_error_in_a_programme_segment_shows_its_own_unit():
     data = brief_73()
     data["cam"]["programme"][0]["angle_deg"] = -5.0
     with pytest.raises(BriefError) as info:
@@ -466,7 +472,6 @@ def test_range_error_in_a_programme_segment_shows_its_own_unit(with_cam_models):
     assert "Cam angle of the segment [°]" in pr.allowed
 
 
-@pytest.mark.xfail(strict=True, reason=LOADER_UNWRAP_BUG)
 def test_shaper_cam_section_unknown_key_lists_the_follower_fields():
     """Through the registered shaper machine: an unknown key in cam.follower must list the
     follower's fields, not the shaper brief's top-level sections."""
@@ -479,7 +484,7 @@ def test_shaper_cam_section_unknown_key_lists_the_follower_fields():
     assert "roller_radius_mm" in pr.allowed and "linkage" not in pr.allowed
 
 
-def test_parse_brief_section_level_problem_is_reported_at_cam(with_cam_models):
+def test_parse_brief_section_level_problem_is_reported_at_cam():
     """The programme-closure check is a CamSection model check: reported at path 'cam'."""
     data = brief_73()
     data["cam"]["programme"][2]["lift_mm"] = 20.0
@@ -489,7 +494,7 @@ def test_parse_brief_section_level_problem_is_reported_at_cam(with_cam_models):
     assert pr.path == "cam" and "returns must undo the rises" in pr.allowed
 
 
-def test_parse_brief_eccentric_problem(with_cam_models):
+def test_parse_brief_eccentric_problem():
     data = brief_71()
     data["disc"]["eccentricity_mm"] = 45.0
     with pytest.raises(BriefError) as info:

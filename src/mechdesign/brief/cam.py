@@ -133,7 +133,7 @@ class CamSection(StrictModel):
         level = 0.0
         for i, seg in enumerate(self.programme, 1):
             if getattr(seg, wrong) is not None:
-                raise ValueError(f"programme[{i}]: a {self.follower.motion} follower's lift is "
+                raise ValueError(f"programme.{i - 1}: a {self.follower.motion} follower's lift is "
                                  f"given as {unit}, not {wrong}")
             lift = getattr(seg, unit)
             if seg.motion == "rise":
@@ -141,7 +141,7 @@ class CamSection(StrictModel):
             elif seg.motion == "return":
                 level -= level if lift is None else lift
             if level > stroke * (1 + 1e-9) or level < -1e-9 * stroke:
-                raise ValueError(f"programme[{i}]: the follower would reach {level:g}, outside "
+                raise ValueError(f"programme.{i - 1}: the follower would reach {level:g}, outside "
                                  f"0 … {stroke:g} (its stroke)")
         if abs(level) > 1e-9 * stroke:
             raise ValueError(f"the programme ends at {level:g} instead of 0: returns must undo the rises")

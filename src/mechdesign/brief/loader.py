@@ -9,7 +9,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from pathlib import Path
 import re
-from typing import Any
+from typing import Any, get_args
 
 import yaml
 from pydantic import BaseModel, ValidationError
@@ -70,18 +70,33 @@ def _show(value: Any) -> str:
     return text if len(text) <= 60 else text[:57] + "..."
 
 
+def _model_of(annotation: Any) -> Any:
+    """The brief section inside ``annotation``: itself, or the model in Optional[...],
+    Union[...] or list[...]."""
+    if isinstance(annotation, type) and issubclass(annotation, BaseModel):
+        return annotation
+    for arg in get_args(annotation):
+        found = _model_of(arg)
+        if found is not None:
+            return found
+    return None
+
+
 def _field_info(model: type[BaseModel], loc: tuple) -> tuple[type[BaseModel] | None, Any]:
-    """Walk ``loc`` through nested models; return (parent model, field info or None)."""
+    """Walk ``loc`` through nested models (list indices skipped); return (parent model,
+    field info or None)."""
     current: Any = model
     parent, info = None, None
     for part in loc:
-        if not (isinstance(current, type) and issubclass(current, BaseModel)):
-            return parent, info
+        if isinstance(part, int):
+            continue
+        if current is None:
+            return parent, None
         fields = current.model_fields
         by_alias = {(f.alias or k): f for k, f in fields.items()}
         info = by_alias.get(part) or fields.get(part)
         parent = current
-        current = info.annotation if info is not None else None
+        current = _model_of(info.annotation) if info is not None else None
     return parent, info
 
 
