@@ -265,7 +265,7 @@ def test_lift_deg_given_to_a_translating_follower():
     data["cam"]["programme"][0]["lift_deg"] = 10.0
     err = only_error(CamBrief, data)
     assert err["loc"] == ("cam",)
-    assert "programme[1]" in err["msg"] and "lift_mm, not lift_deg" in err["msg"]
+    assert "programme.0" in err["msg"] and "lift_mm, not lift_deg" in err["msg"]
 
 
 def test_lift_mm_given_to_an_oscillating_follower():
@@ -283,14 +283,14 @@ def test_returns_not_closing():
     assert err["loc"] == ("cam",) and "returns must undo the rises" in err["msg"]
     data["cam"]["programme"][2]["lift_mm"] = 40.0            # below the start
     err = only_error(CamBrief, data)
-    assert err["loc"] == ("cam",) and "programme[3]" in err["msg"] and "outside 0" in err["msg"]
+    assert err["loc"] == ("cam",) and "programme.2" in err["msg"] and "outside 0" in err["msg"]
 
 
 def test_rise_beyond_the_stroke():
     data = brief_73()
     data["cam"]["programme"][0]["lift_mm"] = 35.0
     err = only_error(CamBrief, data)
-    assert err["loc"] == ("cam",) and "programme[1]" in err["msg"]
+    assert err["loc"] == ("cam",) and "programme.0" in err["msg"]
 
 
 def test_negative_offset():
