@@ -159,7 +159,7 @@ def profile(path: Path, lang: str, pitch, actual, base_radius, roller, marks, ro
         ax.plot(arc.real, arc.imag, color="C2", lw=1.0)
         ax.annotate("", xy=(arc[-1].real, arc[-1].imag), xytext=(arc[-3].real, arc[-3].imag),
                     arrowprops=dict(arrowstyle="->", color="C2", lw=1.0))
-        ax.text(0, -0.42 * base_radius, "ω " + (lab["ccw"] if rotation > 0 else lab["cw"]),
+        ax.text(0, -0.55 * base_radius, "ω " + (lab["ccw"] if rotation > 0 else lab["cw"]),
                 fontsize=7, color="C2", ha="center")
         ax.set_aspect("equal")
         ax.set_xlabel(lab["x"])
