@@ -43,6 +43,13 @@ class CamSegment(StrictModel):
         return self
 
 
+def _check_roller(contact: str, roller_radius_mm: float) -> None:
+    if contact == "roller" and not roller_radius_mm > 0:
+        raise ValueError("a roller follower needs roller_radius_mm > 0")
+    if contact != "roller" and roller_radius_mm:
+        raise ValueError(f"a {contact} follower has no roller; remove roller_radius_mm")
+
+
 class CamFollower(StrictModel):
     """Follower (从动件): translating (直动) or oscillating (摆动); knife-edge, roller or flat-faced."""
 
@@ -68,10 +75,7 @@ class CamFollower(StrictModel):
 
     @model_validator(mode="after")
     def _complete(self):
-        if self.contact == "roller" and not self.roller_radius_mm > 0:
-            raise ValueError("a roller follower needs roller_radius_mm > 0")
-        if self.contact != "roller" and self.roller_radius_mm:
-            raise ValueError(f"a {self.contact} follower has no roller; remove roller_radius_mm")
+        _check_roller(self.contact, self.roller_radius_mm)
         if self.offset_mm != "auto" and self.offset_mm < 0:
             raise ValueError("offset_mm must be ≥ 0 (give the side in offset_side)")
         if self.motion == "translating":
@@ -170,10 +174,7 @@ class DiscFollower(StrictModel):
 
     @model_validator(mode="after")
     def _roller(self):
-        if self.contact == "roller" and not self.roller_radius_mm > 0:
-            raise ValueError("a roller follower needs roller_radius_mm > 0")
-        if self.contact != "roller" and self.roller_radius_mm:
-            raise ValueError(f"a {self.contact} follower has no roller; remove roller_radius_mm")
+        _check_roller(self.contact, self.roller_radius_mm)
         return self
 
 

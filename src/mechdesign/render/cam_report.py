@@ -338,7 +338,10 @@ def cam_context(c, lang: str, figs: dict[str, str], csv_name: str) -> dict:
                        f"{f(rho_min * MM, 2)} mm", "> 0", "PASS" if rho_min > 0 else "FAIL"])
     design_rows = []
     if c.min_base_radius is not None:
-        design_rows.append([("满足许用压力角的最小基圆半径" if zh else "smallest base radius for the allowed pressure angles")
+        what = (("廓线处处外凸（ρ ≥ ρa,min）的最小基圆半径" if zh else
+                 "smallest base radius for a convex profile (ρ ≥ ρa,min)") if fol.kind == "flat" else
+                ("满足许用压力角的最小基圆半径" if zh else "smallest base radius for the allowed pressure angles"))
+        design_rows.append([what
                             + (f"（e = {f(c.offset * MM, 2)} mm）" if translating and fol.kind != "flat" else ""),
                             f"{f(c.min_base_radius * MM, 2)} mm"])
     if c.best_offset is not None:
