@@ -151,12 +151,16 @@ class Programme:
             d3s[m] = lift * S3 / span**3
         return FollowerMotion(d, s, ds, d2s, d3s, idx)
 
-    def _end_state(self, i: int, end: float) -> tuple[float, float]:
+    def end_values(self, i: int, u: float) -> tuple[float, float, float, float]:
+        """s, ds/dδ, d²s/dδ², d³s/dδ³ of segment ``i`` at its own u ∈ [0, 1] (u = 1 is the
+        left-hand limit at the segment's end, which ``evaluate`` gives to the next segment)."""
         seg = self.segments[i]
         if seg.kind == DWELL:
-            return 0.0, 0.0
-        _, S1, S2, _ = LAWS[seg.law](np.array([end]))
-        return (self.lifts[i] * S1[0] / self.spans[i], self.lifts[i] * S2[0] / self.spans[i] ** 2)
+            return float(self.levels[i]), 0.0, 0.0, 0.0
+        S, S1, S2, S3 = (float(x) for x in LAWS[seg.law](np.array(u)))
+        lift, span = self.lifts[i], self.spans[i]
+        return (float(self.levels[i] + lift * S), lift * S1 / span, lift * S2 / span**2,
+                lift * S3 / span**3)
 
     def boundaries(self) -> list[Boundary]:
         """What happens at the start of every segment (cyclically, so the first one is δ = 0)."""
@@ -164,8 +168,8 @@ class Programme:
         v_scale = self.stroke / np.min(self.spans)
         out = []
         for i in range(n):
-            v0, a0 = self._end_state((i - 1) % n, 1.0)
-            v1, a1 = self._end_state(i, 0.0)
+            _, v0, a0, _ = self.end_values((i - 1) % n, 1.0)
+            _, v1, a1, _ = self.end_values(i, 0.0)
             dv, da = v1 - v0, a1 - a0
             if abs(dv) > 1e-9 * v_scale:
                 impact = RIGID_IMPACT
@@ -176,20 +180,34 @@ class Programme:
             out.append(Boundary(float(self.starts[i]), dv, da, impact))
         return out
 
+    def internal_jumps(self) -> list[tuple[int, Boundary]]:
+        """Acceleration jumps inside a segment (e.g. the parabolic law at its middle):
+        (segment index, the jump as a Boundary at its cam angle)."""
+        out = []
+        for i, seg in enumerate(self.segments):
+            if seg.kind == DWELL or not LAWS[seg.law].internal_acceleration_jump:
+                continue
+            for bp in LAWS[seg.law].breakpoints:
+                lo = self.end_values(i, bp - 1e-9)[2]
+                hi = self.end_values(i, bp + 1e-9)[2]
+                if abs(hi - lo) > 1e-6 * abs(self.lifts[i]) / self.spans[i] ** 2:
+                    out.append((i, Boundary(float(self.starts[i] + bp * self.spans[i]), 0.0,
+                                            hi - lo, SOFT_IMPACT)))
+        return out
+
     def impacts(self) -> list[str]:
         """Per segment: 'rigid' (velocity jump, 刚性冲击), 'soft' (acceleration jump, 柔性冲击)
         or 'none', from its two ends and its interior. Dwells report 'none': a jump at the
         joint of a dwell and a motion belongs to the motion."""
         b = self.boundaries()
+        inside = self.internal_jumps()
         n = len(self.segments)
         out = []
         for i, seg in enumerate(self.segments):
             if seg.kind == DWELL:
                 out.append(NO_IMPACT)
                 continue
-            found = [b[i].impact, b[(i + 1) % n].impact]
-            if LAWS[seg.law].internal_acceleration_jump:
-                found.append(SOFT_IMPACT)
+            found = [b[i].impact, b[(i + 1) % n].impact] + [j.impact for k, j in inside if k == i]
             out.append(max(found, key=_SEVERITY.get))
         return out
 
@@ -232,7 +250,7 @@ def _roller(follower) -> float:
     return follower.roller_radius if follower.kind == "roller" else 0.0
 
 
-def _arm_side(follower: OscillatingFollower, sigma: int) -> int:
+def arm_side(follower: OscillatingFollower, sigma: int) -> int:
     # The arm angle is β = π − k(φ0 + φ); during the rise it turns with sense −k.
     return -sigma if follower.rise_sense == "same" else sigma
 
@@ -286,11 +304,11 @@ def design_cam(programme: Programme, follower, base_radius: float, rotation: int
     sigma = 1 if rotation > 0 else -1
     if delta is None:
         delta = np.arange(points) * (TWO_PI / points)
+    if not base_radius > 0:
+        raise CamDesignError("the base radius must be positive")
     m = programme.evaluate(delta)
     d = m.delta
     rot = np.exp(-1j * sigma * d)
-    if not base_radius > 0:
-        raise CamDesignError("the base radius must be positive")
     if follower.kind == "flat":
         return _flat(programme, follower, base_radius, sigma, m, rot)
     rr = _roller(follower)
@@ -309,7 +327,7 @@ def design_cam(programme: Programme, follower, base_radius: float, rotation: int
     else:
         a, L = follower.pivot_distance, follower.arm_length
         phi0 = initial_arm_angle(follower, base_radius)
-        k = _arm_side(follower, sigma)
+        k = arm_side(follower, sigma)
         beta = np.pi - k * (phi0 + m.s)
         b1, b2 = -k * m.ds, -k * m.d2s
         arm = L * np.exp(1j * beta)
@@ -348,7 +366,7 @@ def _flat(programme, follower, r0, sigma, m, rot) -> CamProfile:
     else:
         a = follower.pivot_distance
         g0 = initial_arm_angle(follower, r0)
-        k = _arm_side(follower, sigma)
+        k = arm_side(follower, sigma)
         g = g0 + m.s
         h = a * np.sin(g)
         h1 = a * np.cos(g) * m.ds
@@ -506,8 +524,6 @@ def eccentric_disc(delta, radius: float, eccentricity: float, follower: Translat
         y = C.imag + root
         dy = C1.imag + dx * C1.real / root
         alpha = np.arcsin(np.abs(dx) / Rp)
-        if Rp - eccentricity <= abs(x):
-            raise CamDesignError("the offset is too large for the disc's lowest position")
         y_min = float(np.sqrt((Rp - eccentricity) ** 2 - x * x))
         y_max = float(np.sqrt((Rp + eccentricity) ** 2 - x * x))
     return DiscMotion(d, y, dy, y - y_min, alpha, C, float(y_min), float(y_max))

@@ -9,7 +9,7 @@ for a flat face, convexity. Problems that leave the cam computable but unusable 
 """
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
@@ -63,10 +63,6 @@ class CamResult:
     warnings: list[Finding]
 
 
-def _follower_with_offset(f, e):
-    return core.TranslatingFollower(f.kind, e, f.roller_radius)
-
-
 def design(p) -> CamResult:
     """Run the cam stage for the SI cam parameters ``p`` (brief.cam.CamParams)."""
     prog, fol = p.programme, p.follower
@@ -77,11 +73,9 @@ def design(p) -> CamResult:
         if fol.kind != "flat":
             best = core.min_base_radius_translating(prog, fol, p.alpha_rise, p.alpha_return,
                                                     None, p.rotation)
-        offset = best[1] if (p.auto_offset and best) else fol.offset
-        if p.auto_offset and best:
-            # keep the offset a whole tenth of a millimetre
-            offset = float(np.round(offset, 4))
-        fol = _follower_with_offset(fol, offset)
+        # an automatic offset is kept to a whole tenth of a millimetre
+        offset = float(np.round(best[1], 4)) if (p.auto_offset and best) else fol.offset
+        fol = replace(fol, offset=offset)
         min_r0 = core.min_base_radius_translating(
             prog, fol, p.alpha_rise, p.alpha_return, offset, p.rotation,
             min_curvature=p.min_actual_curvature)[0]
@@ -130,7 +124,7 @@ def design(p) -> CamResult:
     if fol.kind == "flat":
         along = _face_positions(grid, fol)
         face = (float(np.min(along)), float(np.max(along)))
-    warnings = _checks(p, fol, r0, segs, rho_p, rho_a, grid, min_r0)
+    warnings = _checks(p, fol, r0, segs, rho_p, rho_a, grid, min_r0, best)
     return CamResult(p, r0, offset, designed, min_r0, best, grid, table, segs,
                      prog.boundaries(), rho_p, rho_a, face, warnings)
 
@@ -147,7 +141,9 @@ def _mm(x: float) -> str:
     return f"{x * 1e3:.2f} mm"
 
 
-def _checks(p, fol, r0, segs, rho_p, rho_a, grid, min_r0) -> list[Finding]:
+def _checks(p, fol, r0, segs, rho_p, rho_a, grid, min_r0, best) -> list[Finding]:
+    """``min_r0``: smallest base radius for the limits (convexity for a flat face) with this
+    follower; ``best``: (r0, e) with the best offset (translating knife/roller), or None."""
     out = []
     bad = [s for s in segs if not s.ok]
     if bad:
@@ -156,9 +152,6 @@ def _checks(p, fol, r0, segs, rho_p, rho_a, grid, min_r0) -> list[Finding]:
         which_en = worst.kind
         fix_zh = f"把基圆半径增大到至少 {_mm(min_r0)}" if min_r0 else "增大基圆半径"
         fix_en = f"increase the base radius to at least {_mm(min_r0)}" if min_r0 else "increase the base radius"
-        best = core.min_base_radius_translating(p.programme, fol, p.alpha_rise, p.alpha_return,
-                                                None, p.rotation) \
-            if isinstance(fol, core.TranslatingFollower) and fol.kind != "flat" else None
         if best is not None and best[0] < r0:
             side_zh = "右" if best[1] > 0 else "左"
             side_en = "right" if best[1] > 0 else "left"
@@ -196,12 +189,8 @@ def _checks(p, fol, r0, segs, rho_p, rho_a, grid, min_r0) -> list[Finding]:
     if fol.kind == "flat":
         rho_min = float(np.min(grid.rho_actual))
         if rho_min <= 0:
-            need = core.min_base_radius_translating(p.programme, fol, p.alpha_rise, p.alpha_return,
-                                                    rotation=p.rotation,
-                                                    min_curvature=p.min_actual_curvature)[0] \
-                if isinstance(fol, core.TranslatingFollower) else None
-            fix_zh = f"基圆半径至少取 {_mm(need)}" if need else "增大基圆半径"
-            fix_en = f"use a base radius of at least {_mm(need)}" if need else "increase the base radius"
+            fix_zh = f"基圆半径至少取 {_mm(min_r0)}" if min_r0 else "增大基圆半径"
+            fix_en = f"use a base radius of at least {_mm(min_r0)}" if min_r0 else "increase the base radius"
             out.append(Finding(
                 "concave_flat",
                 f"平底从动件要求凸轮廓线处处外凸，但最小曲率半径为 {_mm(rho_min)}（廓线内凹，运动失真）；{fix_zh}。",
@@ -210,8 +199,9 @@ def _checks(p, fol, r0, segs, rho_p, rho_a, grid, min_r0) -> list[Finding]:
     return out
 
 
-def cam_stage(key: str = "cam", source=lambda r: r["params"].cam) -> Stage:
-    return Stage(key, "凸轮机构设计 / cam design", lambda r: design(source(r)))
+def cam_stage() -> Stage:
+    """The cam stage of any machine whose parameters carry ``.cam`` (brief.cam.CamParams)."""
+    return Stage("cam", "凸轮机构设计 / cam design", lambda r: design(r["params"].cam))
 
 
 # --------------------------------------------------------------------------- eccentric disc
@@ -240,7 +230,7 @@ def analyse_disc(p) -> DiscResult:
     return DiscResult(p, grid, motions, tdelta, tables, queries, [])
 
 
-CAM_STAGES = [cam_stage(source=lambda r: r["params"].cam)]
+CAM_STAGES = [cam_stage()]
 DISC_STAGES = [Stage("disc", "偏心圆盘凸轮分析 / eccentric disc analysis",
                      lambda r: analyse_disc(r["params"]))]
 

@@ -294,7 +294,7 @@ def stages(params: ShaperParams) -> list[Stage]:
         return STAGES
     from .cam import cam_stage
 
-    return STAGES + [cam_stage(source=lambda r: r["params"].cam)]
+    return STAGES + [cam_stage()]
 
 
 def results_document(r: dict) -> dict:

@@ -10,14 +10,10 @@ import numpy as np
 from ..core import cam as core
 from ..core.motion_laws import LAWS
 from . import cam_figures as cf
+from .fmt import f
 
 DEG = 180.0 / np.pi
 MM = 1e3
-
-
-def f(x: float, digits: int = 2) -> str:
-    text = f"{x:.{digits}f}"
-    return text[1:] if text.startswith("-") and float(text) == 0.0 else text
 
 
 _KIND = {"zh": {"rise": "推程", "return": "回程", "far": "远休止", "near": "近休止", "dwell": "休止"},
@@ -25,7 +21,7 @@ _KIND = {"zh": {"rise": "推程", "return": "回程", "far": "远休止", "near"
                 "dwell": "dwell"}}
 _IMPACT = {"zh": {"none": "无冲击", "soft": "柔性冲击", "rigid": "刚性冲击"},
            "en": {"none": "none", "soft": "soft impact", "rigid": "rigid impact"}}
-_CONTACT = {"zh": {"knife": "尖顶", "roller": "滚子", "flat": "平底"},
+CONTACT = {"zh": {"knife": "尖顶", "roller": "滚子", "flat": "平底"},
             "en": {"knife": "knife-edge", "roller": "roller", "flat": "flat-faced"}}
 
 
@@ -44,7 +40,7 @@ def _segment_name(c, i, lang):
 class _Units:
     """Display scaling of displacement and its derivatives (time or per-radian)."""
 
-    def __init__(self, c, lang):
+    def __init__(self, c):
         p = c.params
         self.osc = p.oscillating
         self.omega = p.omega
@@ -96,22 +92,12 @@ def _segments_deg(c, lang="en"):
 def _impulses(c):
     """Where a derivative is infinite: (δ [°], panel, sign). A velocity jump makes the
     acceleration (panel 2) and jerk (panel 3) infinite; an acceleration jump the jerk."""
-    prog = c.params.programme
     out = []
-    for b in c.boundaries:
+    for b in c.boundaries + [j for _, j in c.params.programme.internal_jumps()]:
         if b.impact == "rigid":
             out += [(b.delta * DEG, 2, np.sign(b.velocity_jump)), (b.delta * DEG, 3, 0.0)]
         elif b.impact == "soft":
             out.append((b.delta * DEG, 3, np.sign(b.acceleration_jump)))
-    for i, seg in enumerate(prog.segments):
-        if seg.kind == core.DWELL or not LAWS[seg.law].internal_acceleration_jump:
-            continue
-        for bp in LAWS[seg.law].breakpoints:
-            lo = LAWS[seg.law](np.array([bp - 1e-9]))[2][0]
-            hi = LAWS[seg.law](np.array([bp + 1e-9]))[2][0]
-            if abs(hi - lo) > 1e-6:
-                out.append(((prog.starts[i] + bp * prog.spans[i]) * DEG, 3,
-                            np.sign((hi - lo) * prog.lifts[i])))
     return out
 
 
@@ -124,18 +110,19 @@ def make_cam_figures(c, fig_dir: Path, lang: str, prefix: str = "cam") -> dict[s
         return fig_dir / f"{prefix}_{name}.png"
 
     g = c.grid
-    u = _Units(c, lang)
-    # Close the curves at 360° and insert NaN-free steps: evaluate both sides of each joint.
+    u = _Units(c)
     prog = c.params.programme
-    d = np.concatenate([g.delta, [2 * np.pi]])
-    m = prog.evaluate(d[:-1])
-    seriesd = [np.append(m.s * u.s_scale, m.s[0] * u.s_scale)] + \
-        [np.append(x, x[0]) for x in u.derivs(m)]
-    # Jumps at the joints: repeat each joint with the left-hand limits so steps are vertical.
-    joints = prog.starts
-    left = np.array([prog.starts[i] + prog.spans[i] for i in range(len(prog.segments))])
-    d_plot, ys = _with_left_limits(d, seriesd, prog, u, left)
-    del joints
+    # Close the curves at 360°, and add each segment's left-hand limit at its end so that
+    # velocity and acceleration jumps plot as vertical steps.
+    ends = [(prog.starts[i] + prog.spans[i] - 1e-9, prog.end_values(i, 1.0))
+            for i in range(len(prog.segments))]
+    delta = np.concatenate([g.delta, [2 * np.pi], [d for d, _ in ends]])
+    first = [g.motion.s[0], g.motion.ds[0], g.motion.d2s[0], g.motion.d3s[0]]
+    ys = [np.concatenate([col, [first[k]], [v[k] for _, v in ends]])
+          for k, col in enumerate((g.motion.s, g.motion.ds, g.motion.d2s, g.motion.d3s))]
+    scales = [u.s_scale] + u.scales
+    order = np.argsort(delta, kind="stable")
+    d_plot, ys = delta[order], [y[order] * sc for y, sc in zip(ys, scales)]
     segs = _segments_deg(c, lang)
     cf.svaj(out("svaj"), lang, d_plot * DEG, ys, _ylabels(u, lang), segs, _impulses(c))
     limits = [None if s.limit is None else s.limit * DEG for s in c.segments]
@@ -152,27 +139,6 @@ def make_cam_figures(c, fig_dir: Path, lang: str, prefix: str = "cam") -> dict[s
                g.roller_radius * MM, marks, g.rotation, g.follower_point[0] * MM, pivot,
                flat=c.params.follower.kind == "flat")
     return paths
-
-
-def _with_left_limits(d, series, prog, u, ends):
-    """Insert, at every segment end, the values just before the joint (u = 1 of the
-    segment) so that velocity or acceleration jumps plot as vertical steps."""
-    extra_d, extra = [], [[] for _ in series]
-    for i, seg in enumerate(prog.segments):
-        end = ends[i]
-        if seg.kind == core.DWELL:
-            vals = [prog.levels[i] * u.s_scale, 0.0, 0.0, 0.0]
-        else:
-            S, S1, S2, S3 = (x[0] for x in LAWS[seg.law](np.array([1.0])))
-            lift, span = prog.lifts[i], prog.spans[i]
-            vals = [(prog.levels[i] + lift * S) * u.s_scale, lift * S1 / span * u.scales[0],
-                    lift * S2 / span**2 * u.scales[1], lift * S3 / span**3 * u.scales[2]]
-        extra_d.append(end - 1e-9)
-        for k, v in enumerate(vals):
-            extra[k].append(v)
-    dd = np.concatenate([d, extra_d])
-    order = np.argsort(dd, kind="stable")
-    return dd[order], [np.concatenate([y, e])[order] for y, e in zip(series, extra)]
 
 
 def _law_eqs(c, i, u: _Units, lang):
@@ -222,11 +188,11 @@ def cam_context(c, lang: str, figs: dict[str, str], csv_name: str) -> dict:
     p = c.params
     fol = p.follower
     prog = p.programme
-    u = _Units(c, lang)
+    u = _Units(c)
     zh = lang == "zh"
     translating = isinstance(fol, core.TranslatingFollower)
     motion = ("直动" if translating else "摆动") if zh else ("translating" if translating else "oscillating")
-    contact = _CONTACT[lang][fol.kind]
+    contact = CONTACT[lang][fol.kind]
     follower_name = f"{motion}{contact}从动件" if zh else f"{motion} {contact} follower"
     rot = ("逆时针" if p.rotation > 0 else "顺时针") if zh else ("counter-clockwise" if p.rotation > 0 else "clockwise")
     data = []
@@ -263,9 +229,8 @@ def cam_context(c, lang: str, figs: dict[str, str], csv_name: str) -> dict:
     row("$[\\alpha]$", "推程许用压力角", "allowed pressure angle, rise", limit_rise, "°")
     row("$[\\alpha']$", "回程许用压力角", "allowed pressure angle, return", f(p.alpha_return * DEG, 0), "°")
 
-    impacts = c.segments
     prog_rows = []
-    for i, (seg, chk) in enumerate(zip(prog.segments, impacts)):
+    for i, (seg, chk) in enumerate(zip(prog.segments, c.segments)):
         law = "—" if seg.law is None else (LAWS[seg.law].name_zh if zh else LAWS[seg.law].name_en)
         lift = "—" if seg.kind == core.DWELL else f(abs(prog.lifts[i]) * u.s_scale, 2)
         prog_rows.append([str(i + 1), _segment_name(c, i, lang),
@@ -278,7 +243,6 @@ def cam_context(c, lang: str, figs: dict[str, str], csv_name: str) -> dict:
     laws = [_law_eqs(c, i, u, lang) for i, seg in enumerate(prog.segments) if seg.kind != core.DWELL]
 
     # Geometry formulas (pitch curve by inversion, envelope, pressure angle).
-    sig = "+" if p.rotation > 0 else "-"
     if translating:
         s0 = c.grid.initial_angle
         geo = {
@@ -305,14 +269,13 @@ def cam_context(c, lang: str, figs: dict[str, str], csv_name: str) -> dict:
                       rf"y = a\sin\delta - L\sin(\delta - \varphi - \varphi_0)")
             if (p.rotation < 0 and fol.rise_sense == "same") else
             (rf"\mathbf{{B}}(\delta) = e^{{{'-' if p.rotation > 0 else ''}i\delta}}\left[a + L\,"
-             rf"e^{{i(\pi - k(\varphi_0 + \varphi))}}\right],\quad k = {'+1' if (-p.rotation if fol.rise_sense == 'same' else p.rotation) > 0 else '-1'}"),
+             rf"e^{{i(\pi - k(\varphi_0 + \varphi))}}\right],\quad k = {core.arm_side(fol, p.rotation):+d}"),
             "alpha": r"\alpha = \angle(\mathbf{n},\ \mathbf{v}_B),\quad \mathbf{v}_B \perp AB",
         }
     geo["envelope"] = (r"\mathbf{B}_a = \mathbf{B} - r_r\,\mathbf{n},\quad \mathbf{n} = "
                        r"\frac{\pm i\,\mathbf{B}'}{|\mathbf{B}'|}")
     geo["rho"] = (r"\rho = \frac{|\mathbf{B}'|^3}{\mathbf{B}' \times \mathbf{B}''},\quad "
                   r"\rho_a = \rho - r_r")
-    del sig
 
     # Checks
     checks = []
@@ -364,7 +327,7 @@ def cam_context(c, lang: str, figs: dict[str, str], csv_name: str) -> dict:
     tu = u.derivs(t.motion)
     table_rows = []
     for i in range(len(t.delta)):
-        table_rows.append([f(t.delta[i] * DEG, 1), f(t.motion.s[i] * u.s_scale, 3 if not u.osc else 3),
+        table_rows.append([f(t.delta[i] * DEG, 1), f(t.motion.s[i] * u.s_scale, 3),
                            f(tu[0][i], 3), f(t.pitch[i].real * MM, 3), f(t.pitch[i].imag * MM, 3),
                            f(t.actual[i].real * MM, 3), f(t.actual[i].imag * MM, 3),
                            f(t.pressure_angle[i] * DEG, 2)])

@@ -8,14 +8,11 @@ from pathlib import Path
 import numpy as np
 
 from . import cam_figures as cf
-from .cam_report import f
+from .cam_report import CONTACT
+from .fmt import f
 
 DEG = 180.0 / np.pi
 MM = 1e3
-
-_CONTACT = {"zh": {"knife": "尖顶", "roller": "滚子", "flat": "平底"},
-            "en": {"knife": "knife-edge", "roller": "roller", "flat": "flat-faced"}}
-
 
 def make_figures(r: dict, fig_dir: Path, lang: str) -> dict[str, str]:
     d = r["disc"]
@@ -27,7 +24,7 @@ def make_figures(r: dict, fig_dir: Path, lang: str) -> dict[str, str]:
 
 def _describe(fol, lang):
     zh = lang == "zh"
-    contact = _CONTACT[lang][fol.kind]
+    contact = CONTACT[lang][fol.kind]
     if fol.offset == 0:
         where = "对心" if zh else "centred"
     else:

@@ -12,19 +12,9 @@ from pathlib import Path
 import numpy as np
 
 from . import figures as fig
+from .fmt import e, f
 
 DEG = 180.0 / np.pi
-
-
-def f(x: float, digits: int = 2) -> str:
-    """Fixed-point number with ``digits`` decimals; a rounded zero never shows as '-0.00'."""
-    text = f"{x:.{digits}f}"
-    return text[1:] if text.startswith("-") and float(text) == 0.0 else text
-
-
-def e(x: float) -> str:
-    """Small residuals in scientific notation for the verification table."""
-    return f"{x:.1e}"
 
 
 def make_figures(r: dict, fig_dir: Path, lang: str) -> dict[str, str]:
