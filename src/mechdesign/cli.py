@@ -75,6 +75,7 @@ def run(
     """Run every stage for BRIEF and write report.md, report.pdf, results.json and figures."""
     from .brief.loader import BriefError, load_brief
     from .core.cam import CamDesignError
+    from .core.drive import DriveDesignError
     from .core.mechanism import AssemblyError
     from .machines import get_machine, stages_for
     from .pipeline import run_stages
@@ -98,15 +99,13 @@ def run(
         params = machine.to_params(b)
         results, _ = run_stages(stages_for(machine, params), {"params": params, "brief": b},
                                 stage_progress)
-    except AssemblyError as exc:
+    except (AssemblyError, CamDesignError, DriveDesignError) as exc:
         if debug:
             traceback.print_exc()
-        _err(f"{brief}: the mechanism cannot be assembled with the brief's data:\n  {exc}")
-        raise typer.Exit(EXIT_INVALID)
-    except CamDesignError as exc:
-        if debug:
-            traceback.print_exc()
-        _err(f"{brief}: the cam cannot be designed with the brief's data:\n  {exc}")
+        what = {AssemblyError: "the mechanism cannot be assembled",
+                CamDesignError: "the cam cannot be designed",
+                DriveDesignError: "the drive cannot be designed"}[type(exc)]
+        _err(f"{brief}: {what} with the brief's data:\n  {exc}")
         raise typer.Exit(EXIT_INVALID)
     for value in results.values():
         for finding in getattr(value, "warnings", None) or ():

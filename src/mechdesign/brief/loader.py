@@ -15,11 +15,13 @@ import yaml
 from pydantic import BaseModel, ValidationError
 
 from .cam import CamBrief, EccentricCamBrief
+from .drive import DriveBrief
 from .shaper import ShaperBrief
 
 #: Machine name → brief model. Later machines register here.
 BRIEF_MODELS: dict[str, type[BaseModel]] = {
-    "shaper": ShaperBrief, "cam": CamBrief, "eccentric_cam": EccentricCamBrief}
+    "shaper": ShaperBrief, "cam": CamBrief, "eccentric_cam": EccentricCamBrief,
+    "drive": DriveBrief}
 
 
 @dataclass(frozen=True)

@@ -13,6 +13,7 @@ from pydantic import Field, field_validator, model_validator
 
 from .cam import CamParams, CamSection, cam_to_si
 from .common import AnalysisSettings, ReportMeta, StrictModel
+from .drive import DriveParams, DriveSection, DriveStage, drive_to_si
 
 
 class ShaperLinkage(StrictModel):
@@ -56,6 +57,24 @@ class GearPair(StrictModel):
 
     z1: int = Field(gt=0, le=1000, description="Pinion teeth z1 (on shaft O1)")
     z2: int = Field(gt=0, le=1000, description="Gear teeth z2 (on the crank shaft O2)")
+    module_mm: Optional[float] = Field(None, gt=0, le=100, description=(
+        "Module m [mm]; with it the report gains the gear section (齿轮设计及啮合图)"))
+    pressure_angle_deg: float = Field(20.0, ge=14.5, le=25, description="Pressure angle α [°]")
+    addendum_coeff: float = Field(1.0, gt=0, le=1.5, description="Addendum coefficient ha*")
+    clearance_coeff: float = Field(0.25, ge=0, le=0.5, description="Clearance coefficient c*")
+    x1: float = Field(0.0, ge=-1, le=1.5, description="Pinion profile-shift coefficient x1")
+    x2: float = Field(0.0, ge=-1, le=1.5, description="Gear profile-shift coefficient x2")
+    open: bool = Field(True, description=(
+        "Open gears (开式, designed by bending with a wear allowance) or closed (闭式); for the drive's checks"))
+    pinion_material: Optional[str] = Field(None, description="Pinion material key for the drive's checks")
+    gear_material: Optional[str] = Field(None, description="Gear material key for the drive's checks")
+    face_width_factor: Optional[float] = Field(None, gt=0, le=2, description="Face width factor φd = b/d1")
+
+    @model_validator(mode="after")
+    def _reduction(self):
+        if self.z2 < self.z1:
+            raise ValueError("z2 must be at least z1: gear 2 on the crank turns slower than the pinion")
+        return self
 
 
 def _fraction(value):
@@ -94,7 +113,15 @@ class ShaperBrief(StrictModel):
     flywheel: ShaperFlywheel
     cam: Optional[CamSection] = Field(None, description=(
         "Cam on the crank shaft (设计凸轮轮廓曲线); it turns with the crank, at the crank speed"))
+    drive: Optional[DriveSection] = Field(None, description=(
+        "Drive from the motor to the pinion shaft O1 (传动装置); the gear pair z1/z2 is its last stage"))
     analysis: AnalysisSettings = AnalysisSettings()
+
+    @model_validator(mode="after")
+    def _drive_needs_module(self):
+        if self.drive is not None and self.gear_pair.module_mm is None:
+            raise ValueError("gear_pair.module_mm is needed with a drive section: the gear pair is its last stage")
+        return self
 
     @model_validator(mode="after")
     def _cam_on_crank_shaft(self):
@@ -139,6 +166,40 @@ class ShaperParams:
     position_step: float       # [rad]
     gravity: float             # [m/s²]
     cam: CamParams | None = None
+    gear: "GearParams | None" = None
+    drive: DriveParams | None = None
+
+
+@dataclass(frozen=True)
+class GearParams:
+    """The gear pair in SI (m, rad)."""
+
+    m: float
+    z1: int
+    z2: int
+    alpha: float
+    ha_star: float
+    c_star: float
+    x1: float
+    x2: float
+
+
+def _gear_to_si(g: GearPair) -> GearParams | None:
+    if g.module_mm is None:
+        return None
+    return GearParams(g.module_mm * 1e-3, g.z1, g.z2, np.radians(g.pressure_angle_deg),
+                      g.addendum_coeff, g.clearance_coeff, g.x1, g.x2)
+
+
+def _drive_to_si(b: ShaperBrief) -> DriveParams | None:
+    """The drive section with the gear pair z1/z2 appended as its last stage."""
+    if b.drive is None:
+        return None
+    g = b.gear_pair
+    last = DriveStage(type="spur", z1=g.z1, z2=g.z2, module_mm=g.module_mm, open=g.open,
+                      x1=g.x1, x2=g.x2, pinion_material=g.pinion_material,
+                      gear_material=g.gear_material, face_width_factor=g.face_width_factor)
+    return drive_to_si(b.drive.model_copy(update={"stages": list(b.drive.stages) + [last]}))
 
 
 def to_si(b: ShaperBrief) -> ShaperParams:
@@ -172,4 +233,6 @@ def to_si(b: ShaperBrief) -> ShaperParams:
         position_step=np.radians(b.analysis.position_step_deg),
         gravity=b.analysis.gravity,
         cam=None if b.cam is None else cam_to_si(b.cam, b.linkage.crank_speed_n2_rpm),
+        gear=_gear_to_si(b.gear_pair),
+        drive=_drive_to_si(b),
     )

@@ -45,8 +45,16 @@ def _eccentric_cam() -> Machine:
                    "mechdesign.render.disc_report")
 
 
+def _drive() -> Machine:
+    from ..brief.drive import drive_brief_to_si
+    from . import drive
+
+    return Machine("drive", drive_brief_to_si, drive.DRIVE_STAGES, drive.drive_results_document,
+                   "mechdesign.render.drive_report")
+
+
 MACHINES: dict[str, Callable[[], Machine]] = {
-    "shaper": _shaper, "cam": _cam, "eccentric_cam": _eccentric_cam}
+    "shaper": _shaper, "cam": _cam, "eccentric_cam": _eccentric_cam, "drive": _drive}
 
 
 def stages_for(machine: Machine, params) -> list[Stage]:

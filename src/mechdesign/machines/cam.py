@@ -15,20 +15,9 @@ import numpy as np
 
 from ..core import cam as core
 from ..pipeline import Stage
+from .findings import Finding
 
 GRID_POINTS = 3600
-
-
-@dataclass(frozen=True)
-class Finding:
-    """A design problem found by a check: ``code`` names it, the messages say what to change."""
-
-    code: str
-    zh: str
-    en: str
-
-    def text(self, lang: str) -> str:
-        return self.zh if lang == "zh" else self.en
 
 
 @dataclass(frozen=True)

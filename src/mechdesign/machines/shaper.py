@@ -17,6 +17,8 @@ from ..core.mechanism import RPR, RRP, Crank, LinkPoint, Mechanism
 from ..core.synthesis import GuideBarDesign, guide_bar_quick_return
 from ..pipeline import Stage
 from .cam import cam_document
+from .drive import drive_document
+from .gear import gear_document
 from .positions import Positions, textbook_positions
 
 FRAME = "7"
@@ -288,13 +290,35 @@ STAGES = [
 ]
 
 
-def stages(params: ShaperParams) -> list[Stage]:
-    """The shaper's stages; the cam stage only when the brief has a cam section."""
-    if params.cam is None:
-        return STAGES
-    from .cam import cam_stage
+def _drive(r: dict):
+    """The drive delivers the crank's mean power at the crank speed. The flywheel evens out
+    the torque upstream of its shaft only: the stages after it carry the peak of M_b."""
+    from .drive import design_drive
 
-    return STAGES + [cam_stage()]
+    p, f, fl = r["params"], r["forces"], r["flywheel"]
+    n = r["kinematics"].grid_size
+    mb = f.balancing_torque[:n]
+    peak = float(np.max(np.abs(mb)) / np.mean(mb))
+    shafts = len(p.drive.stages)          # the crank shaft's index
+    flywheel_shaft = shafts - 1 if p.flywheel_shaft == "pinion" else shafts
+    return design_drive(p.drive, fl.mean_power, p.crank_speed_rpm, "mechanism",
+                        peak, flywheel_shaft if flywheel_shaft < shafts else None)
+
+
+def stages(params: ShaperParams) -> list[Stage]:
+    """The shaper's stages; gear, drive and cam stages when the brief has those sections."""
+    out = list(STAGES)
+    if params.gear is not None:
+        from .gear import gear_stage
+
+        out.append(gear_stage())
+    if params.drive is not None:
+        out.append(Stage("drive", "传动装置设计 / drive", _drive))
+    if params.cam is not None:
+        from .cam import cam_stage
+
+        out.append(cam_stage())
+    return out
 
 
 def results_document(r: dict) -> dict:
@@ -345,4 +369,6 @@ def results_document(r: dict) -> dict:
         },
         "verification": v,
         "cam": None if r.get("cam") is None else cam_document(r["cam"]),
+        "gear": None if r.get("gear") is None else gear_document(r["gear"]),
+        "drive": None if r.get("drive") is None else drive_document(r["drive"]),
     }

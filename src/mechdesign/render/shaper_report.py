@@ -55,6 +55,10 @@ def make_figures(r: dict, fig_dir: Path, lang: str) -> dict[str, str]:
         from .cam_report import make_cam_figures
 
         paths.update(make_cam_figures(r["cam"], fig_dir, lang))
+    if r.get("gear") is not None:
+        from .gear_report import make_gear_figures
+
+        paths.update(make_gear_figures(r["gear"], fig_dir, lang))
     return paths
 
 
@@ -183,7 +187,19 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
         from .cam_report import cam_context
 
         cam = cam_context(r["cam"], lang, figures, "cam_profile.csv")
+    gear = drive = None
+    if r.get("gear") is not None:
+        from .gear_report import gear_context
+
+        gear = gear_context(r["gear"], lang, figures)
+    if r.get("drive") is not None:
+        from .drive_report import drive_context
+
+        pw = (rf"P_w = \bar M_b\,\omega_2 = {f(fl.driving_torque * i_ratio, 3)} \times "
+              rf"{f(abs(p.crank_omega), 4)} = {f(fl.mean_power, 2)}\ \text{{W}}")
+        drive = drive_context(r["drive"], lang, figures, pw)
     return {
+        "gear": gear, "drive": drive,
         "meta": brief.report,
         "cam": cam,
         "fig": figures,

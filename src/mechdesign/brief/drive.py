@@ -1,0 +1,259 @@
+"""Drive briefs (传动装置): the ``drive:`` section any machine brief may carry, and the
+stand-alone drive brief (``machine: drive``) whose load is given instead of computed.
+
+Course units in the brief (kW, rpm, mm, N, N·m, h); :func:`drive_to_si` converts once.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Literal, Optional, Union
+
+from pydantic import Field, model_validator
+
+from .common import ReportMeta, StrictModel
+
+StageType = Literal["coupling", "belt", "chain", "spur", "helical", "worm"]
+
+_FIELDS_BY_TYPE = {
+    "coupling": set(),
+    "belt": {"ratio", "d1_mm", "d2_mm", "slip"},
+    "chain": {"ratio", "z1", "z2"},
+    "spur": {"ratio", "z1", "z2", "module_mm", "open", "face_width_factor", "pinion_material",
+             "gear_material", "x1", "x2", "span_mm"},
+    "helical": {"ratio", "z1", "z2", "module_mm", "helix_angle_deg", "face_width_factor",
+                "pinion_material", "gear_material", "span_mm"},
+    "worm": {"ratio", "z1", "z2", "module_mm", "q", "x2", "worm_material", "wheel_material",
+             "span_mm"},
+}
+_OPTIONAL = ("ratio", "d1_mm", "d2_mm", "slip", "z1", "z2", "module_mm", "open", "face_width_factor",
+             "pinion_material", "gear_material", "x1", "x2", "helix_angle_deg", "q",
+             "worm_material", "wheel_material", "span_mm")
+
+
+class DriveStage(StrictModel):
+    """One element of the drive, listed from the motor to the machine (电动机 → 工作机).
+    A ratio is fixed by ``ratio``, by both tooth numbers or by both pulley diameters;
+    otherwise the program allocates it."""
+
+    type: StageType = Field(description=(
+        "coupling (联轴器), belt (V带), chain (链), spur (直齿圆柱齿轮), helical (斜齿), worm (蜗杆)"))
+    ratio: Optional[float] = Field(None, ge=1, le=100, description="Stage ratio i = n_in/n_out (fixes it)")
+    z1: Optional[int] = Field(None, ge=1, le=200, description=(
+        "Teeth of the driving gear / sprocket, or worm starts (蜗杆头数) [count]"))
+    z2: Optional[int] = Field(None, ge=8, le=1000, description="Teeth of the driven gear / wheel [count]")
+    module_mm: Union[float, Literal["auto"], None] = Field(None, description=(
+        "Module m [mm] (normal module for helical; axial for worm); 'auto' (default) sizes it "
+        "by the strength design formula and takes the next standard module"))
+    open: Optional[bool] = Field(None, description=(
+        "Spur pair only: open gears (开式), designed by bending with a wear allowance"))
+    face_width_factor: Optional[float] = Field(None, gt=0, le=2, description=(
+        "Face width factor φd = b/d1 (default 1.0 closed, 0.5 open)"))
+    pinion_material: Optional[str] = Field(None, description="Pinion material key (default 40Cr_QT)")
+    gear_material: Optional[str] = Field(None, description="Gear material key (default 45_QT)")
+    x1: Optional[float] = Field(None, ge=-1, le=1.5, description="Pinion profile-shift coefficient x1")
+    x2: Optional[float] = Field(None, ge=-1, le=1.5, description=(
+        "Gear (or worm-wheel) profile-shift coefficient x2"))
+    helix_angle_deg: Optional[float] = Field(None, ge=8, le=25, description="Helix angle β [°] (default 14)")
+    q: Optional[float] = Field(None, ge=6, le=20, description="Worm diameter factor q = d1/m (default 10)")
+    worm_material: Optional[str] = Field(None, description="Worm material key (default 45_QT, surface hardened)")
+    wheel_material: Optional[str] = Field(None, description="Worm-wheel rim material key (default ZCuSn10P1)")
+    d1_mm: Optional[float] = Field(None, gt=20, le=2000, description="Small pulley datum diameter d1 [mm] (default 100)")
+    d2_mm: Optional[float] = Field(None, gt=20, le=5000, description="Large pulley datum diameter d2 [mm]")
+    slip: Optional[float] = Field(None, ge=0, le=0.05, description="Belt elastic slip ε (default 0.015)")
+    span_mm: Optional[float] = Field(None, gt=20, le=3000, description=(
+        "Bearing span of the stage's output shaft [mm] (default: face width + 2 × 60 mm)"))
+    efficiency: Optional[float] = Field(None, gt=0.3, le=1, description=(
+        "Efficiency of the stage, overriding the textbook default (worm: computed)"))
+
+    @model_validator(mode="after")
+    def _fields_fit_type(self):
+        allowed = _FIELDS_BY_TYPE[self.type]
+        extra = [n for n in _OPTIONAL if getattr(self, n) is not None and n not in allowed]
+        if extra:
+            raise ValueError(f"a {self.type} stage has no {', '.join(extra)}; "
+                             f"allowed: {', '.join(sorted(allowed)) or 'type, efficiency'}")
+        if self.type == "belt" and (self.d1_mm and self.d2_mm) and self.d2_mm < self.d1_mm:
+            raise ValueError("d2_mm must be at least d1_mm (a reduction drive)")
+        if self.z1 is not None and self.z2 is not None and self.z2 < self.z1:
+            raise ValueError("z2 must be at least z1 (a reduction stage)")
+        fixes = [self.ratio is not None, self.z1 is not None and self.z2 is not None,
+                 self.d1_mm is not None and self.d2_mm is not None]
+        if sum(fixes) > 1:
+            raise ValueError("the ratio is fixed twice: give `ratio` or both z1/z2 (d1/d2), not both")
+        return self
+
+
+class MotorSpec(StrictModel):
+    """Motor (电动机): Y-series three-phase asynchronous motor from the shipped catalogue."""
+
+    synchronous_rpm: Union[Literal[750, 1000, 1500, 3000], Literal["auto"]] = Field(
+        "auto", description="Synchronous speed [rpm]: 750, 1000, 1500, 3000 or auto")
+    speed_tolerance_pct: float = Field(5.0, gt=0, le=20, description=(
+        "Allowed error of the machine's speed [%] (转速误差)"))
+
+
+class ServiceConditions(StrictModel):
+    """Service conditions (工作条件)."""
+
+    life_years: float = Field(10, gt=0, le=50, description="Service life [years]")
+    days_per_year: float = Field(300, gt=0, le=366, description="Working days per year [d]")
+    hours_per_day: float = Field(16, gt=0, le=24, description="Working hours per day [h] (two shifts: 16)")
+    application_factor_KA: float = Field(1.25, ge=1, le=3, description=(
+        "Application factor K_A (使用系数): 1.0 uniform, 1.25 moderate shocks, 1.75 heavy"))
+
+
+class DriveEfficiencies(StrictModel):
+    """Efficiencies not tied to one stage."""
+
+    bearing_pair: float = Field(0.99, gt=0.9, le=1, description="One pair of rolling bearings η_b")
+    machine: float = Field(1.0, gt=0.3, le=1, description=(
+        "The machine's own mechanism η_w (1 when its crank torque is computed without friction)"))
+
+
+class DriveSection(StrictModel):
+    """The drive from the motor to the machine (传动装置)."""
+
+    stages: list[DriveStage] = Field(min_length=1, max_length=8, description=(
+        "Transmission elements from the motor to the machine"))
+    motor: MotorSpec = MotorSpec()
+    service: ServiceConditions = ServiceConditions()
+    efficiencies: DriveEfficiencies = DriveEfficiencies()
+
+
+class StrokeLoad(StrictModel):
+    """A reciprocating output with constant resistance on each stroke."""
+
+    stroke_mm: float = Field(gt=0, le=5000, description="Stroke H [mm]")
+    working_force_N: float = Field(ge=0, le=1e7, description="Resistance on the working stroke [N]")
+    return_force_N: float = Field(0.0, ge=0, le=1e7, description="Resistance on the return stroke [N]")
+
+
+class DriveLoad(StrictModel):
+    """What the machine's input shaft needs, when no mechanism computes it: one of
+    power_kW, torque_Nm or stroke (mean power = (F_w + F_r) H n / 60)."""
+
+    output_speed_rpm: float = Field(gt=0, le=10000, description="Speed of the machine's input (crank) shaft [rpm]")
+    power_kW: Optional[float] = Field(None, gt=0, le=1000, description="Mean power at the machine's input [kW]")
+    torque_Nm: Optional[float] = Field(None, gt=0, le=1e7, description="Mean torque at the machine's input [N·m]")
+    stroke: Optional[StrokeLoad] = Field(None, description="Reciprocating output, one stroke pair per revolution")
+
+    @model_validator(mode="after")
+    def _one_load(self):
+        given = [n for n in ("power_kW", "torque_Nm", "stroke") if getattr(self, n) is not None]
+        if len(given) != 1:
+            raise ValueError("give exactly one of power_kW, torque_Nm, stroke"
+                             + (f" (found {', '.join(given)})" if given else ""))
+        return self
+
+
+class DriveBrief(StrictModel):
+    """Design brief of a drive alone (``machine: drive``)."""
+
+    machine: Literal["drive"] = Field(description="Machine type")
+    report: ReportMeta
+    load: DriveLoad
+    drive: DriveSection
+
+
+# --------------------------------------------------------------------------------------
+# SI parameters
+
+@dataclass(frozen=True)
+class StageParams:
+    type: str
+    ratio: float | None
+    z1: int | None
+    z2: int | None
+    module: float | None        # [m]; None = auto
+    open: bool
+    face_width_factor: float | None
+    pinion_material: str | None
+    gear_material: str | None
+    x1: float
+    x2: float
+    helix_angle: float          # [rad]
+    q: float
+    worm_material: str | None
+    wheel_material: str | None
+    d1: float | None            # [m]
+    d2: float | None            # [m]
+    slip: float
+    span: float | None          # [m]
+    efficiency: float | None
+    index: int                  # position in the brief's list (for messages)
+
+
+@dataclass(frozen=True)
+class DriveParams:
+    stages: tuple[StageParams, ...]
+    synchronous_rpm: float | None
+    speed_tolerance: float      # fraction
+    service_hours: float        # [h]
+    KA: float
+    bearing_eff: float
+    machine_eff: float
+
+
+def _stage_to_si(s: DriveStage, index: int) -> StageParams:
+    import numpy as np
+
+    mm = 1e-3
+    return StageParams(
+        type=s.type, ratio=s.ratio, z1=s.z1, z2=s.z2,
+        module=None if s.module_mm in (None, "auto") else s.module_mm * mm,
+        open=bool(s.open), face_width_factor=s.face_width_factor,
+        pinion_material=s.pinion_material, gear_material=s.gear_material,
+        x1=s.x1 or 0.0, x2=s.x2 or 0.0,
+        helix_angle=np.radians(s.helix_angle_deg if s.helix_angle_deg is not None else 14.0)
+        if s.type == "helical" else 0.0,
+        q=s.q if s.q is not None else 10.0,
+        worm_material=s.worm_material, wheel_material=s.wheel_material,
+        d1=None if s.d1_mm is None else s.d1_mm * mm, d2=None if s.d2_mm is None else s.d2_mm * mm,
+        slip=s.slip if s.slip is not None else 0.015,
+        span=None if s.span_mm is None else s.span_mm * mm,
+        efficiency=s.efficiency, index=index)
+
+
+def drive_to_si(d: DriveSection) -> DriveParams:
+    sv = d.service
+    sync = None if d.motor.synchronous_rpm == "auto" else float(d.motor.synchronous_rpm)
+    return DriveParams(
+        stages=tuple(_stage_to_si(s, i) for i, s in enumerate(d.stages)),
+        synchronous_rpm=sync, speed_tolerance=d.motor.speed_tolerance_pct / 100.0,
+        service_hours=sv.life_years * sv.days_per_year * sv.hours_per_day, KA=sv.application_factor_KA,
+        bearing_eff=d.efficiencies.bearing_pair, machine_eff=d.efficiencies.machine)
+
+
+@dataclass(frozen=True)
+class DriveLoadParams:
+    output_speed_rpm: float
+    power: float                # mean power at the machine's input [W]
+    how: str                    # "power" | "torque" | "stroke"
+    stroke: float | None = None  # [m]
+    working_force: float = 0.0  # [N]
+    return_force: float = 0.0   # [N]
+
+
+@dataclass(frozen=True)
+class DriveBriefParams:
+    load: DriveLoadParams
+    drive: DriveParams
+
+
+def load_to_si(ld: DriveLoad) -> DriveLoadParams:
+    import numpy as np
+
+    n = ld.output_speed_rpm
+    if ld.power_kW is not None:
+        return DriveLoadParams(n, ld.power_kW * 1e3, "power")
+    if ld.torque_Nm is not None:
+        return DriveLoadParams(n, ld.torque_Nm * n * np.pi / 30.0, "torque")
+    st = ld.stroke
+    H = st.stroke_mm * 1e-3
+    # Work per revolution: F_w H on the working stroke plus F_r H on the return.
+    return DriveLoadParams(n, (st.working_force_N + st.return_force_N) * H * n / 60.0, "stroke",
+                           H, st.working_force_N, st.return_force_N)
+
+
+def drive_brief_to_si(b: DriveBrief) -> DriveBriefParams:
+    return DriveBriefParams(load_to_si(b.load), drive_to_si(b.drive))

@@ -1,0 +1,233 @@
+"""The drive stage (传动装置设计), shared by every machine brief with a ``drive:`` section,
+and the stand-alone ``drive`` machine.
+
+Order of the design, as 《机械设计课程设计》 does it: the power the machine needs (from the
+computed crank torque where a mechanism exists), the efficiency chain, the motor, the
+total ratio and its allocation, whole teeth and standard pulleys, the table of speed,
+power and torque on every shaft, then each stage's geometry and strength, the shafts,
+bearings and keys, and the check of the machine's speed against the tolerance.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, replace
+
+import numpy as np
+
+from ..core import drive as core
+from ..core import gears
+from ..data import load_csv, load_yaml
+from ..pipeline import Stage
+from .findings import Finding
+
+
+@dataclass(frozen=True)
+class StageResult:
+    index: int
+    type: str                   # coupling | belt | chain | spur | helical | worm
+    kind: str                   # key into transmissions.yaml (open_spur for open gears)
+    name_zh: str
+    name_en: str
+    ratio_allocated: float      # what the allocation asked for (or the fixed ratio)
+    ratio: float                # the realised ratio (whole teeth, standard pulleys)
+    fixed: bool                 # fixed by the brief
+    efficiency: float
+    z1: int | None = None
+    z2: int | None = None
+    d1: float | None = None     # pulley datum diameters [m]
+    d2: float | None = None
+    slip: float = 0.0
+    geometry: object = None     # gears.SpurPair | HelicalPair | WormPair (set by the strength part)
+    design: object = None       # strength design and checks of the stage (see strength part)
+
+
+@dataclass(frozen=True)
+class DriveResult:
+    output_speed_required: float  # n_w [rpm]
+    machine_power: float        # P_w at the machine's input shaft [W]
+    power_source: str           # "mechanism" | "power" | "torque" | "stroke"
+    efficiency: float           # η of the whole chain
+    power_required: float       # P_d = P_w / η [W]
+    choice: core.MotorChoice
+    stages: tuple[StageResult, ...]
+    shafts: tuple[core.ShaftState, ...]
+    output_speed: float         # realised machine speed [rpm]
+    speed_error: float          # (n − n_w)/n_w
+    speed_tolerance: float
+    service_hours: float
+    KA: float
+    bearing_eff: float
+    machine_eff: float
+    peak_factor: float          # design torque / mean torque downstream of the flywheel
+    peak_from_shaft: int | None  # first shaft carrying the peak torque (None: none)
+    warnings: tuple[Finding, ...]
+    extras: dict                # shafts, bearings and keys (strength part)
+
+    @property
+    def motor(self) -> core.Motor:
+        return self.choice.motor
+
+
+def motor_catalogue() -> list[core.Motor]:
+    return [core.Motor(r["designation"], float(r["power_kW"]) * 1e3, float(r["synchronous_rpm"]),
+                       float(r["full_load_rpm"]), float(r["frame_height_mm"]) * 1e-3,
+                       float(r["Tst_Tn"]), float(r["Tmax_Tn"])) for r in load_csv("motors.csv")]
+
+
+def _kind(s) -> str:
+    return "open_spur" if s.type == "spur" and s.open else s.type
+
+
+# Worm efficiency before the geometry is known, by starts (textbook table 11-7 midpoints).
+_WORM_EFF_BY_STARTS = {1: 0.72, 2: 0.80, 4: 0.87, 6: 0.90}
+
+
+def _fixed_ratio(s) -> float | None:
+    if s.type == "coupling":
+        return 1.0
+    if s.ratio is not None:
+        return s.ratio
+    if s.z1 is not None and s.z2 is not None:
+        return s.z2 / s.z1
+    if s.d1 is not None and s.d2 is not None:
+        return core.belt_ratio(s.d1, s.d2, s.slip)
+    return None
+
+
+def _elements(stages, worm_eff: dict[int, float]) -> list[core.Element]:
+    table = load_yaml("transmissions.yaml")
+    out = []
+    for s in stages:
+        row = table[_kind(s)]
+        eff = s.efficiency if s.efficiency is not None else worm_eff.get(s.index, row["efficiency"])
+        out.append(core.Element(_kind(s), eff, tuple(row["ratio_recommended"]), row["ratio_max"],
+                                _fixed_ratio(s)))
+    return out
+
+
+def _realise(s, target: float) -> dict:
+    """Whole teeth / a standard pulley for a free stage aiming at ``target``."""
+    if s.type == "belt":
+        d1 = s.d1 if s.d1 is not None else 0.100
+        d2 = s.d2 if s.d2 is not None else core.standard_pulley(target * d1 * (1 - s.slip) * 1e3) * 1e-3
+        return {"d1": d1, "d2": d2, "slip": s.slip, "ratio": core.belt_ratio(d1, d2, s.slip)}
+    if s.type == "coupling":
+        return {"ratio": 1.0}
+    if s.type == "worm":
+        z1 = s.z1 if s.z1 is not None else core.worm_starts(target)
+    elif s.type == "chain":
+        z1 = s.z1 if s.z1 is not None else max(17, int(round(29 - 2 * target)) | 1)   # odd, z1 = 29 − 2i
+    else:
+        z1 = s.z1 if s.z1 is not None else (20 if s.open else 24)
+    z2 = s.z2 if s.z2 is not None else max(int(round(target * z1)), z1)
+    return {"z1": z1, "z2": z2, "ratio": z2 / z1}
+
+
+def design_ratios(stages, elements, total: float) -> list[dict]:
+    """Allocate ``total`` and realise the stages in order; each free stage aims at what is
+    left after the stages already realised, so rounding errors do not add up."""
+    alloc = core.allocate_ratios(total, elements)
+    done, out = 1.0, []
+    for k, (s, el) in enumerate(zip(stages, elements)):
+        ahead = float(np.prod(alloc[k + 1:]))
+        target = el.ratio if el.ratio is not None else total / done / ahead
+        real = _realise(s, target)
+        real["allocated"] = alloc[k]
+        done *= real["ratio"]
+        out.append(real)
+    return out
+
+
+def _names(kind: str) -> tuple[str, str]:
+    row = load_yaml("transmissions.yaml")[kind]
+    return row["name_zh"], row["name_en"]
+
+
+def design_drive(dp, machine_power: float, output_rpm: float, source: str,
+                 peak_factor: float = 1.0, peak_from_shaft: int | None = None) -> DriveResult:
+    """The whole drive for a machine needing ``machine_power`` [W] at ``output_rpm``."""
+    catalogue = motor_catalogue()
+    stages = dp.stages
+    worm_eff = {s.index: _WORM_EFF_BY_STARTS.get(s.z1 or 2, 0.8) for s in stages
+                if s.type == "worm" and s.efficiency is None}
+    for _ in range(4):    # the worm's efficiency follows from its geometry: iterate
+        elements = _elements(stages, worm_eff)
+        eta = core.chain_efficiency([el.efficiency for el in elements], dp.bearing_eff, dp.machine_eff)
+        p_d = machine_power / eta
+        choice = core.choose_motor(catalogue, p_d, output_rpm, elements, dp.synchronous_rpm)
+        real = design_ratios(stages, elements, choice.total_ratio)
+        ratios = [r["ratio"] for r in real]
+        shafts = core.shaft_table(choice.motor.full_load_rpm, p_d, ratios,
+                                  [el.efficiency for el in elements], dp.bearing_eff)
+        results = []
+        for s, el, r in zip(stages, elements, real):
+            zh, en = _names(el.kind)
+            results.append(StageResult(
+                s.index, s.type, el.kind, zh, en, r["allocated"], r["ratio"], el.ratio is not None,
+                el.efficiency, r.get("z1"), r.get("z2"), r.get("d1"), r.get("d2"), r.get("slip", 0.0)))
+        results, new_eff = _strength(dp, results, shafts, peak_factor, peak_from_shaft)
+        changed = {k: v for k, v in new_eff.items() if abs(v - worm_eff.get(k, v)) > 1e-4}
+        if not changed:
+            break
+        worm_eff.update(changed)
+    n_out = shafts[-1].speed_rpm
+    error = (n_out - output_rpm) / output_rpm
+    warnings = []
+    if abs(error) > dp.speed_tolerance:
+        warnings.append(Finding(
+            "speed_error",
+            f"工作机转速误差 {error * 100:+.2f}% 超出允许的 ±{dp.speed_tolerance * 100:g}%：调整齿数或带轮直径。",
+            f"the machine's speed error {error * 100:+.2f}% exceeds ±{dp.speed_tolerance * 100:g}%: "
+            "change the teeth or pulley diameters."))
+    for st, el in zip(results, elements):
+        lo, hi = el.recommended
+        if st.type != "coupling" and not lo <= st.ratio <= el.ratio_max:
+            warnings.append(Finding(
+                "stage_ratio",
+                f"第 {st.index + 1} 级{st.name_zh}传动比 {st.ratio:.3f} 超出其最大值 {el.ratio_max:g}。",
+                f"stage {st.index + 1} ({st.name_en}) ratio {st.ratio:.3f} exceeds its maximum "
+                f"{el.ratio_max:g}."))
+    return DriveResult(output_rpm, machine_power, source, eta, p_d, choice, tuple(results),
+                       tuple(shafts), n_out, error, dp.speed_tolerance, dp.service_hours, dp.KA,
+                       dp.bearing_eff, dp.machine_eff, peak_factor, peak_from_shaft,
+                       tuple(warnings) + _strength_warnings(results), {})
+
+
+def _strength(dp, results, shafts, peak_factor, peak_from_shaft):
+    """Geometry and strength of each stage (filled in by the strength part)."""
+    return results, {}
+
+
+def _strength_warnings(results) -> tuple[Finding, ...]:
+    return ()
+
+
+# ------------------------------------------------------------------------------------
+# The stand-alone drive machine
+
+def drive_stage_standalone() -> Stage:
+    def run(r):
+        p = r["params"]
+        return design_drive(p.drive, p.load.power, p.load.output_speed_rpm, p.load.how)
+    return Stage("drive", "传动装置设计 / drive", run)
+
+
+DRIVE_STAGES = [drive_stage_standalone()]
+
+
+def drive_document(d: DriveResult) -> dict:
+    return {
+        "output_speed_required_rpm": d.output_speed_required, "machine_power": d.machine_power,
+        "power_source": d.power_source, "efficiency": d.efficiency, "power_required": d.power_required,
+        "motor": d.motor, "total_ratio": d.choice.total_ratio, "motor_choice": d.choice.reason,
+        "motor_candidates": d.choice.candidates, "stages": d.stages, "shafts": d.shafts,
+        "output_speed_rpm": d.output_speed, "speed_error": d.speed_error,
+        "speed_tolerance": d.speed_tolerance, "service_hours": d.service_hours,
+        "peak_factor": d.peak_factor, "extras": d.extras,
+        "warnings": [w.en for w in d.warnings],
+    }
+
+
+def drive_results_document(r: dict) -> dict:
+    return {"schema": "mechdesign.results/1", "machine": "drive",
+            "units": "SI: m, s, rad, N, N·m, W, Pa; speeds in rpm where named _rpm",
+            "drive": drive_document(r["drive"])}

@@ -1,0 +1,63 @@
+"""The gear stage (齿轮设计及啮合图): geometry of an external spur pair and its checks.
+
+Findings (computable but poor designs): ``undercut`` (z below z_min without enough
+shift), ``pointed`` (tip thickness below 0.25 m), ``contact_ratio`` (ε below 1.2),
+``clearance`` (the tips reach the other gear's root).
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from ..core import gears
+from ..pipeline import Stage
+from .findings import Finding
+
+MIN_CONTACT_RATIO = 1.2      # textbook: [ε] ≥ 1.1–1.4 for general machinery
+MIN_TIP_THICKNESS = 0.25     # × m: s_a ≥ (0.25–0.4) m
+
+
+@dataclass(frozen=True)
+class GearResult:
+    pair: gears.SpurPair
+    warnings: tuple[Finding, ...]
+
+
+def gear_findings(g: gears.SpurPair) -> tuple[Finding, ...]:
+    out = []
+    for name, gd, x_min in (("1", g.g1, g.x_min1), ("2", g.g2, g.x_min2)):
+        if gd.x < x_min - 1e-9:
+            out.append(Finding(
+                "undercut",
+                f"齿轮 {name}（z = {gd.z}）根切：z < z_min = {g.z_min:.1f} 且 x = {gd.x:g} < x_min = "
+                f"{x_min:.3f}；应正变位 x ≥ {x_min:.3f} 或增加齿数。",
+                f"gear {name} (z = {gd.z}) is undercut: z < z_min = {g.z_min:.1f} and x = {gd.x:g} < "
+                f"x_min = {x_min:.3f}; use a positive shift x ≥ {x_min:.3f} or more teeth."))
+        if gd.sa < MIN_TIP_THICKNESS * g.m:
+            out.append(Finding(
+                "pointed",
+                f"齿轮 {name} 齿顶厚 s_a = {gd.sa * 1e3:.2f} mm < 0.25m（齿顶变尖）；减小变位系数。",
+                f"gear {name} tip thickness s_a = {gd.sa * 1e3:.2f} mm < 0.25 m (pointed tooth); "
+                "reduce its shift."))
+    if g.contact_ratio < MIN_CONTACT_RATIO:
+        out.append(Finding(
+            "contact_ratio",
+            f"重合度 ε = {g.contact_ratio:.3f} < {MIN_CONTACT_RATIO}：增加齿数或减小啮合角。",
+            f"contact ratio ε = {g.contact_ratio:.3f} < {MIN_CONTACT_RATIO}: use more teeth or a "
+            "smaller working pressure angle."))
+    if g.clearance < -1e-12:
+        out.append(Finding("clearance", "顶隙为负：齿顶与齿根干涉。",
+                           "negative clearance: the tips touch the other gear's root."))
+    return tuple(out)
+
+
+def design_gear(gp) -> GearResult:
+    pair = gears.spur_pair(gp.m, gp.z1, gp.z2, gp.alpha, gp.ha_star, gp.c_star, gp.x1, gp.x2)
+    return GearResult(pair, gear_findings(pair))
+
+
+def gear_stage() -> Stage:
+    return Stage("gear", "齿轮设计 / gear pair", lambda r: design_gear(r["params"].gear))
+
+
+def gear_document(g: GearResult) -> dict:
+    return {"pair": g.pair, "warnings": [w.en for w in g.warnings]}

@@ -1,0 +1,88 @@
+"""Gear section of a report (齿轮设计及啮合图): the dimension table, the formulas with
+numbers, the undercut and contact-ratio checks and the meshing drawing."""
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+
+from .fmt import f
+
+DEG = 180.0 / np.pi
+MM = 1e3
+
+
+def make_gear_figures(g, fig_dir: Path, lang: str) -> dict[str, str]:
+    from .gear_figures import meshing_drawing
+
+    meshing_drawing(fig_dir / "gear_mesh.png", lang, g.pair)
+    return {"gear_mesh": f"{fig_dir.name}/gear_mesh.png"}
+
+
+def gear_context(g, lang: str, figures: dict[str, str]) -> dict:
+    p = g.pair
+    g1, g2 = p.g1, p.g2
+    zh = lang == "zh"
+    shifted = bool(g1.x or g2.x)
+
+    def both(a, b, digits=3):
+        return [f(a, digits), f(b, digits)]
+
+    def name(cn, en):
+        return cn if zh else en
+
+    rows = [
+        [name("齿数", "teeth"), "$z$", "—", str(g1.z), str(g2.z), "—"],
+        [name("模数", "module"), "$m$", "—", *both(p.m * MM, p.m * MM, 2), "mm"],
+        [name("压力角", "pressure angle"), "$\\alpha$", "—", *both(p.alpha * DEG, p.alpha * DEG, 1), "°"],
+        [name("变位系数", "profile shift"), "$x$", "—", *both(g1.x, g2.x, 3), "—"],
+        [name("分度圆直径", "pitch diameter"), "$d$", "$mz$", *both(g1.d * MM, g2.d * MM), "mm"],
+        [name("齿顶高", "addendum"), "$h_a$", "$(h_a^*+x-\\Delta y)m$", *both(g1.ha * MM, g2.ha * MM), "mm"],
+        [name("齿根高", "dedendum"), "$h_f$", "$(h_a^*+c^*-x)m$", *both(g1.hf * MM, g2.hf * MM), "mm"],
+        [name("齿全高", "tooth depth"), "$h$", "$h_a+h_f$", *both((g1.ha + g1.hf) * MM, (g2.ha + g2.hf) * MM), "mm"],
+        [name("齿顶圆直径", "tip diameter"), "$d_a$", "$d+2h_a$", *both(g1.da * MM, g2.da * MM), "mm"],
+        [name("齿根圆直径", "root diameter"), "$d_f$", "$d-2h_f$", *both(g1.df * MM, g2.df * MM), "mm"],
+        [name("基圆直径", "base diameter"), "$d_b$", "$d\\cos\\alpha$", *both(g1.db * MM, g2.db * MM), "mm"],
+        [name("齿距", "circular pitch"), "$p$", "$\\pi m$", *both(p.p * MM, p.p * MM), "mm"],
+        [name("基圆齿距", "base pitch"), "$p_b$", "$p\\cos\\alpha$", *both(p.pb * MM, p.pb * MM), "mm"],
+        [name("分度圆齿厚", "tooth thickness"), "$s$", "$m(\\pi/2+2x\\tan\\alpha)$", *both(g1.s * MM, g2.s * MM), "mm"],
+        [name("分度圆齿槽宽", "space width"), "$e$", "$p-s$", *both(g1.e * MM, g2.e * MM), "mm"],
+        [name("齿顶圆压力角", "tip pressure angle"), "$\\alpha_a$", "$\\arccos(d_b/d_a)$",
+         *both(g1.alpha_a * DEG, g2.alpha_a * DEG), "°"],
+        [name("齿顶厚", "tip thickness"), "$s_a$", "$s\\frac{r_a}{r}-2r_a(\\mathrm{inv}\\,\\alpha_a-\\mathrm{inv}\\,\\alpha)$",
+         *both(g1.sa * MM, g2.sa * MM), "mm"],
+    ]
+    pair_rows = [
+        [name("标准中心距", "standard centre distance"), "$a$", "$m(z_1+z_2)/2$", f(p.a * MM, 3), "mm"],
+        [name("啮合角", "working pressure angle"), "$\\alpha'$", "$\\mathrm{inv}\\,\\alpha' = \\frac{2(x_1+x_2)\\tan\\alpha}{z_1+z_2}+\\mathrm{inv}\\,\\alpha$",
+         f(p.alpha_work * DEG, 4), "°"],
+        [name("实际中心距", "working centre distance"), "$a'$", "$a\\cos\\alpha/\\cos\\alpha'$", f(p.a_work * MM, 3), "mm"],
+        [name("顶隙", "clearance"), "$c$", "$a'-r_{a1}-r_{f2}$", f(p.clearance * MM, 3), "mm"],
+        [name("传动比", "ratio"), "$i_{12}$", "$z_2/z_1$", f(p.ratio, 4), "—"],
+        [name("实际啮合线长", "length of action"), "$\\overline{B_1B_2}$",
+         "$\\varepsilon\\, p_b$", f(p.action_length * MM, 3), "mm"],
+        [name("重合度", "contact ratio"), "$\\varepsilon_\\alpha$", name("见下式", "see below"), f(p.contact_ratio, 4), "—"],
+    ]
+    tw = np.tan(p.alpha_work)
+    ra1, ra2, rb1, rb2 = g1.da / 2, g2.da / 2, g1.db / 2, g2.db / 2
+    b1b2 = np.sqrt(ra1**2 - rb1**2) + np.sqrt(ra2**2 - rb2**2) - p.a_work * np.sin(p.alpha_work)
+    eq = {
+        "eps": (rf"\varepsilon_\alpha = \frac{{z_1(\tan\alpha_{{a1}}-\tan\alpha')+z_2(\tan\alpha_{{a2}}-\tan\alpha')}}{{2\pi}}"
+                rf" = \frac{{{g1.z}\times({f(np.tan(g1.alpha_a), 5)}-{f(tw, 5)})+{g2.z}\times"
+                rf"({f(np.tan(g2.alpha_a), 5)}-{f(tw, 5)})}}{{2\pi}} = {f(p.contact_ratio, 4)}"),
+        "b1b2": (rf"\overline{{B_1B_2}} = \sqrt{{r_{{a1}}^2-r_{{b1}}^2}}+\sqrt{{r_{{a2}}^2-r_{{b2}}^2}}-a'\sin\alpha'"
+                 rf" = {f(b1b2 * MM, 3)}\ \text{{mm}}, \quad \frac{{\overline{{B_1B_2}}}}{{p_b}} = "
+                 rf"\frac{{{f(b1b2 * MM, 3)}}}{{{f(p.pb * MM, 3)}}} = {f(b1b2 / p.pb, 4)}"),
+        "zmin": (rf"z_{{min}} = \frac{{2h_a^*}}{{\sin^2\alpha}} = \frac{{2\times{f(p.ha_star, 2)}}}"
+                 rf"{{\sin^2 {f(p.alpha * DEG, 1)}°}} = {f(p.z_min, 2)}, \quad x_{{min}} = "
+                 rf"h_a^*\frac{{z_{{min}}-z}}{{z_{{min}}}}: \ x_{{min,1}} = {f(p.x_min1, 3)},\ "
+                 rf"x_{{min,2}} = {f(p.x_min2, 3)}"),
+    }
+    undercut = [w for w in g.warnings if w.code == "undercut"]
+    return {
+        "rows": rows, "pair_rows": pair_rows, "eq": eq, "shifted": shifted,
+        "z1": str(g1.z), "z2": str(g2.z), "m": f(p.m * MM, 2), "eps": f(p.contact_ratio, 3),
+        "zmin": f(p.z_min, 1), "undercut": bool(undercut),
+        "warnings": [w.text(lang) for w in g.warnings],
+        "fig": figures,
+    }
