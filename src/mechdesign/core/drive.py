@@ -98,13 +98,20 @@ def ratio_bounds(elements: list[Element], recommended: bool = True) -> tuple[flo
 
 
 def choose_motor(catalogue: list[Motor], power_required: float, output_rpm: float,
-                 elements: list[Element], synchronous_rpm: float | None = None) -> MotorChoice:
+                 elements: list[Element], synchronous_rpm: float | None = None,
+                 tolerance: float = 0.0) -> MotorChoice:
     """The smallest motor with P_ed ≥ P_d at the first synchronous speed (1500, 1000, 3000,
     750 rpm, or the brief's) whose total ratio n_m/n_w the chain can give within its
-    recommended ranges; else within its maximum ranges."""
+    recommended ranges; else within its maximum ranges. The ranges are widened by the
+    speed ``tolerance`` (a fraction), so a chain of fixed ratios accepts a motor whose
+    speed it meets within the tolerance; a given speed with only fixed ratios is taken
+    as it is (the speed check then reports the error)."""
     speeds = (synchronous_rpm,) if synchronous_rpm else SYNCHRONOUS_PREFERENCE
     rec_lo, rec_hi = ratio_bounds(elements, True)
     max_lo, max_hi = ratio_bounds(elements, False)
+    widen = 1.0 + tolerance
+    rec_lo, max_lo, rec_hi, max_hi = rec_lo / widen, max_lo / widen, rec_hi * widen, max_hi * widen
+    all_fixed = all(el.ratio is not None for el in elements)
     candidates = []
     for sync in speeds:
         fitting = [m for m in catalogue if m.synchronous_rpm == sync and m.power >= power_required]
@@ -114,7 +121,7 @@ def choose_motor(catalogue: list[Motor], power_required: float, output_rpm: floa
                                          bool(motor and max_lo <= i <= max_hi)))
     for reason, ok in (("recommended", lambda c: c.recommended), ("maximum", lambda c: c.possible)):
         for c in candidates:
-            if ok(c):
+            if ok(c) or (synchronous_rpm and all_fixed and c.motor):
                 return MotorChoice(c.motor, c.total_ratio, tuple(candidates),
                                    "given" if synchronous_rpm else reason)
     largest = max((m.power for m in catalogue), default=0.0)

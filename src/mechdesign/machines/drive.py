@@ -153,7 +153,8 @@ def design_drive(dp, machine_power: float, output_rpm: float, source: str,
         elements = _elements(stages, worm_eff)
         eta = core.chain_efficiency([el.efficiency for el in elements], dp.bearing_eff, dp.machine_eff)
         p_d = machine_power / eta
-        choice = core.choose_motor(catalogue, p_d, output_rpm, elements, dp.synchronous_rpm)
+        choice = core.choose_motor(catalogue, p_d, output_rpm, elements, dp.synchronous_rpm,
+                                    dp.speed_tolerance)
         real = design_ratios(stages, elements, choice.total_ratio)
         ratios = [r["ratio"] for r in real]
         shafts = core.shaft_table(choice.motor.full_load_rpm, p_d, ratios,
@@ -169,6 +170,7 @@ def design_drive(dp, machine_power: float, output_rpm: float, source: str,
         if not changed:
             break
         worm_eff.update(changed)
+    shaft_designs = _shafts(dp, results, shafts, peak_factor, peak_from_shaft)
     n_out = shafts[-1].speed_rpm
     error = (n_out - output_rpm) / output_rpm
     warnings = []
@@ -189,16 +191,48 @@ def design_drive(dp, machine_power: float, output_rpm: float, source: str,
     return DriveResult(output_rpm, machine_power, source, eta, p_d, choice, tuple(results),
                        tuple(shafts), n_out, error, dp.speed_tolerance, dp.service_hours, dp.KA,
                        dp.bearing_eff, dp.machine_eff, peak_factor, peak_from_shaft,
-                       tuple(warnings) + _strength_warnings(results), {})
+                       tuple(warnings) + _strength_warnings(results, shaft_designs),
+                       {"shafts": shaft_designs})
 
 
 def _strength(dp, results, shafts, peak_factor, peak_from_shaft):
-    """Geometry and strength of each stage (filled in by the strength part)."""
-    return results, {}
+    """Geometry and strength of each stage (see :mod:`.drive_strength`)."""
+    from . import drive_strength as ds
+
+    designs, worm_eff = ds.stage_designs(dp, results, shafts, peak_factor, peak_from_shaft)
+    results = [replace(r, geometry=d.geometry, design=d) for r, d in zip(results, designs)]
+    return results, worm_eff
 
 
-def _strength_warnings(results) -> tuple[Finding, ...]:
-    return ()
+def _shafts(dp, results, shafts, peak_factor, peak_from_shaft):
+    from . import drive_strength as ds
+
+    names = [(r.name_zh, r.name_en) for r in results]
+    return ds.shaft_designs(dp, [r.design for r in results], shafts, peak_factor, peak_from_shaft, names)
+
+
+def _strength_warnings(results, shaft_designs) -> tuple[Finding, ...]:
+    out = []
+    for r in results:
+        for c in r.design.checks if r.design else ():
+            if not c.passed:
+                out.append(_failed(c, f"第 {r.index + 1} 级{r.name_zh}", f"stage {r.index + 1} ({r.name_en})"))
+    for s in shaft_designs:
+        for c in s.checks:
+            if not c.passed:
+                out.append(_failed(c, f"{s.index} 轴", f"shaft {s.index}"))
+    return tuple(out)
+
+
+def _failed(c, where_zh: str, where_en: str) -> Finding:
+    from ..core.strength import COURSE_SCALE
+
+    v, a = c.value * COURSE_SCALE[c.unit], c.allowable * COURSE_SCALE[c.unit]
+    rel = ">" if c.sense == "le" else "<"
+    return Finding("strength",
+                   f"{where_zh}：{c.name_zh}不合格（{v:.4g} {rel} {a:.4g} {c.unit}）：加大尺寸或改用更好的材料。",
+                   f"{where_en}: {c.name_en} fails ({v:.4g} {rel} {a:.4g} {c.unit}): "
+                   "enlarge it or use a better material.")
 
 
 # ------------------------------------------------------------------------------------

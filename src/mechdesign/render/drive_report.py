@@ -90,9 +90,127 @@ def drive_context(d, lang: str, figures: dict[str, str], machine_power_eq: str |
     }
 
 
+def _mat_name(key: str, zh: bool) -> str:
+    from ..data import catalogues as cat
+
+    for get in (cat.gear_material, cat.worm_wheel_material):
+        try:
+            m = get(key)
+            return m.name_zh if zh else m.name_en
+        except KeyError:
+            continue
+    return key
+
+
+def _rows(rows: list[list[str]], zh: bool) -> list[list[str]]:
+    """Keep the check name in the report's language only."""
+    return [[r[0] if zh else r[1], *r[2:]] for r in rows]
+
+
 def stage_designs(d, lang: str) -> list[dict]:
-    """Per stage: title, text, dimension rows, formulas and check rows (strength part)."""
-    return []
+    """Per stage and per shaft: title, text, dimension rows, formulas and check rows."""
+    from .strength_tex import check_formula, check_rows
+
+    zh = lang == "zh"
+    out = []
+    for r in d.stages:
+        g = r.design
+        if g is None or g.kind not in ("gear", "worm", "belt"):
+            continue
+        title = (f"第 {r.index + 1} 级：{r.name_zh}" if zh else f"Stage {r.index + 1}: {r.name_en}")
+        text, rows = [], []
+        if g.kind == "belt":
+            text.append("带轮基准直径取标准系列值；V 带型号与根数的选择不在本程序范围内，作用在轴上的压力按有效拉力的 1.5 倍估计。"
+                        if zh else "Pulley datum diameters from the standard series; choosing the V-belt section "
+                        "and number is outside this program; the load on the shafts is estimated as 1.5 × the effective pull.")
+            rows = [["$d_1$", f(r.d1 * MM, 0), "mm"], ["$d_2$", f(r.d2 * MM, 0), "mm"],
+                    ["$\\varepsilon$", f(r.slip, 3), "—"], ["$v$", f(g.extra["v"], 2), "m/s"],
+                    ["$F_Q$", f(g.forces["Q"], 1), "N"]]
+            out.append({"title": title, "text": text, "rows": rows, "formulas": [], "checks": []})
+            continue
+        m_text = (f"{f(g.module * MM, 2)} mm" + ("" if g.module_given else
+                  (f"（设计公式得 {f(g.module_min * MM, 3)} mm，取标准值）" if zh else
+                   f" (the design formula gives {f(g.module_min * MM, 3)} mm; next standard value)")))
+        a = g.allowables
+        if g.kind == "gear":
+            e = g.extra
+            mats = " / ".join(_mat_name(k, zh) for k in g.materials)
+            text.append((f"材料（小齿轮 / 大齿轮）：{mats}。载荷系数 $K = K_A K_V K_\\alpha K_\\beta = {f(g.K, 3)}$，"
+                         f"设计转矩 $T_1 = {f(g.T1, 3)}$ N·m，齿宽系数 $\\phi_d = {f(e['phi_d'], 2)}$，模数 m = {m_text}。")
+                        if zh else
+                        (f"Materials (pinion / gear): {mats}. Load factor $K = K_A K_V K_\\alpha K_\\beta = {f(g.K, 3)}$, "
+                         f"design torque $T_1 = {f(g.T1, 3)}$ N·m, face width factor $\\phi_d = {f(e['phi_d'], 2)}$, "
+                         f"module m = {m_text}."))
+            if e["open"]:
+                text.append("开式齿轮以磨损为主要失效形式：按齿根弯曲疲劳强度设计，模数加大 15% 计入磨损，不校核接触强度。"
+                            if zh else "Open gears fail by wear: designed by root bending with the module raised 15 % "
+                            "for wear; no contact check.")
+            text.append((f"应力循环次数 $N_1 = {f(a['N1'] / 1e6, 1)}\\times10^6$，寿命系数 $K_{{HN}} = {f(a['KHN1'], 3)}/{f(a['KHN2'], 3)}$，"
+                         f"$K_{{FN}} = {f(a['KFN1'], 3)}/{f(a['KFN2'], 3)}$；许用应力 $[\\sigma_H] = {f(a['sigma_H'] / 1e6, 1)}$ MPa，"
+                         f"$[\\sigma_F] = {f(a['sigma_F1'] / 1e6, 1)}/{f(a['sigma_F2'] / 1e6, 1)}$ MPa（$S_H = 1$，$S_F = 1.4$）。")
+                        if zh else
+                        (f"Stress cycles $N_1 = {f(a['N1'] / 1e6, 1)}\\times10^6$, life factors $K_{{HN}} = {f(a['KHN1'], 3)}/{f(a['KHN2'], 3)}$, "
+                         f"$K_{{FN}} = {f(a['KFN1'], 3)}/{f(a['KFN2'], 3)}$; allowable $[\\sigma_H] = {f(a['sigma_H'] / 1e6, 1)}$ MPa, "
+                         f"$[\\sigma_F] = {f(a['sigma_F1'] / 1e6, 1)}/{f(a['sigma_F2'] / 1e6, 1)}$ MPa ($S_H = 1$, $S_F = 1.4$)."))
+            geo = g.geometry
+            d1 = g.forces["d1"]
+            rows = [["$z_1 / z_2$", f"{r.z1} / {r.z2}", "—"], ["$m$", f(g.module * MM, 2), "mm"],
+                    ["$d_1 / d_2$", f"{f(d1 * MM, 2)} / {f(g.forces['d2'] * MM, 2)}", "mm"],
+                    ["$a$", f((geo.a_work if hasattr(geo, 'a_work') else geo.a) * MM, 2), "mm"],
+                    ["$b$", f(g.face_width * MM, 0), "mm"], ["$v$", f(e["v"], 3), "m/s"],
+                    ["$\\varepsilon_\\alpha$", f(e["eps_alpha"], 3), "—"],
+                    ["$Y_{Fa}, Y_{Sa}$", f"{f(e['YFa1'], 3)}, {f(e['YSa1'], 3)} / {f(e['YFa2'], 3)}, {f(e['YSa2'], 3)}", "—"],
+                    ["$F_t / F_r / F_a$", f"{f(g.forces['Ft'], 1)} / {f(g.forces['Fr'], 1)} / {f(g.forces['Fa'], 1)}", "N"]]
+        else:
+            e = g.extra
+            geo = g.geometry
+            text.append((f"蜗杆 45 钢表面淬火（>45 HRC），蜗轮 {_mat_name(g.materials[1], zh)}。$K = K_A \\times 1.1 = {f(g.K, 3)}$，"
+                         f"蜗轮转矩 $T_2 = {f(g.T2, 3)}$ N·m，模数 m = {m_text}，q = {f(geo.q, 0)}。"
+                         f"许用应力 $[\\sigma_H] = {f(a['sigma_H'] / 1e6, 1)}$ MPa，$[\\sigma_F] = {f(a['sigma_F'] / 1e6, 1)}$ MPa"
+                         f"（$N = {f(a['N'] / 1e6, 2)}\\times10^6$）。")
+                        if zh else
+                        (f"Worm of surface-hardened 45 steel (>45 HRC), wheel {_mat_name(g.materials[1], zh)}. "
+                         f"$K = K_A \\times 1.1 = {f(g.K, 3)}$, wheel torque $T_2 = {f(g.T2, 3)}$ N·m, module m = {m_text}, "
+                         f"q = {f(geo.q, 0)}. Allowable $[\\sigma_H] = {f(a['sigma_H'] / 1e6, 1)}$ MPa, "
+                         f"$[\\sigma_F] = {f(a['sigma_F'] / 1e6, 1)}$ MPa ($N = {f(a['N'] / 1e6, 2)}\\times10^6$)."))
+            text.append((f"滑动速度 $v_s = {f(e['vs'], 3)}$ m/s，当量摩擦角 $\\varphi_v = {f(np.degrees(e['phi_v']), 3)}°$，"
+                         f"效率 $\\eta = 0.95\\tan\\gamma/\\tan(\\gamma+\\varphi_v) = {f(e['eta'], 4)}$（用于效率链）。")
+                        if zh else
+                        (f"Sliding speed $v_s = {f(e['vs'], 3)}$ m/s, equivalent friction angle $\\varphi_v = "
+                         f"{f(np.degrees(e['phi_v']), 3)}°$, efficiency $\\eta = 0.95\\tan\\gamma/\\tan(\\gamma+\\varphi_v) = "
+                         f"{f(e['eta'], 4)}$ (used in the efficiency chain)."))
+            rows = [["$z_1 / z_2$", f"{r.z1} / {r.z2}", "—"], ["$m$", f(g.module * MM, 2), "mm"],
+                    ["$q$", f(geo.q, 1), "—"], ["$d_1 / d_2$", f"{f(geo.d1 * MM, 2)} / {f(geo.d2 * MM, 2)}", "mm"],
+                    ["$\\gamma$", f(np.degrees(geo.lead_angle), 3), "°"], ["$a$", f(e["a"] * MM, 2), "mm"],
+                    ["$Z_\\rho$", f(e["Zrho"], 3), "—"], ["$z_{v2}, Y_{Fa2}$", f"{f(e['zv2'], 2)}, {f(e['YFa2'], 3)}", "—"],
+                    ["$A$", f(e["area"], 3), "m²"]]
+        out.append({"title": title, "text": text, "rows": rows,
+                    "formulas": [check_formula(c) for c in g.checks], "checks": _rows(check_rows(g.checks, lang), zh)})
+    for sh in d.extras.get("shafts", ()):
+        title = (f"{_shaft_name(sh.index, len(d.shafts) - 1, zh)}的设计与校核" if zh else
+                 f"Design and checks of {_shaft_name(sh.index, len(d.shafts) - 1, zh)}")
+        res = sh.result
+        where = "、".join(n[0] for n in sh.names) if zh else ", ".join(n[1] for n in sh.names)
+        text = [(f"45 钢调质；轴上零件：{where}。最小直径 $d_{{min}} = {f(sh.d_min * MM, 2)}$ mm，取轴承处 {f(sh.d_journal * MM, 0)} mm，"
+                 f"装配段 {f(sh.d_seat * MM, 0)} mm；支承跨距 {f(sh.span * MM, 0)} mm。设计转矩 T = {f(sh.torque, 3)} N·m。"
+                 f"支反力：$R_{{AH}} = {f(res.RAh, 1)}$ N，$R_{{AV}} = {f(res.RAv, 1)}$ N，$R_{{BH}} = {f(res.RBh, 1)}$ N，"
+                 f"$R_{{BV}} = {f(res.RBv, 1)}$ N；危险截面 x = {f(res.critical.x * MM, 0)} mm，M = {f(res.critical.M, 2)} N·m。")
+                if zh else
+                (f"45 steel, quenched and tempered; on the shaft: {where}. Minimum diameter $d_{{min}} = {f(sh.d_min * MM, 2)}$ mm; "
+                 f"journals {f(sh.d_journal * MM, 0)} mm, seats {f(sh.d_seat * MM, 0)} mm; bearing span {f(sh.span * MM, 0)} mm. "
+                 f"Design torque T = {f(sh.torque, 3)} N·m. Reactions: $R_{{AH}} = {f(res.RAh, 1)}$ N, $R_{{AV}} = {f(res.RAv, 1)}$ N, "
+                 f"$R_{{BH}} = {f(res.RBh, 1)}$ N, $R_{{BV}} = {f(res.RBv, 1)}$ N; critical section x = "
+                 f"{f(res.critical.x * MM, 0)} mm, M = {f(res.critical.M, 2)} N·m.")]
+        if sh.bearing is not None:
+            b = sh.bearing
+            text.append((f"轴承 {b.designation}（d = {f(b.d * MM, 0)} mm，$C_r$ = {f(b.Cr / 1e3, 1)} kN），当量动载荷 "
+                         f"$P_A = {f(sh.bearing_loads[0], 1)}$ N，$P_B = {f(sh.bearing_loads[1], 1)}$ N（$f_p$ = 1.2）。")
+                        if zh else
+                        (f"Bearings {b.designation} (d = {f(b.d * MM, 0)} mm, $C_r$ = {f(b.Cr / 1e3, 1)} kN), equivalent loads "
+                         f"$P_A = {f(sh.bearing_loads[0], 1)}$ N, $P_B = {f(sh.bearing_loads[1], 1)}$ N ($f_p$ = 1.2)."))
+        out.append({"title": title, "text": text, "rows": [],
+                    "formulas": [check_formula(c) for c in sh.checks], "checks": _rows(check_rows(sh.checks, lang), zh)})
+    return out
 
 
 # --------------------------------------------------------------------------- machine: drive

@@ -1,0 +1,147 @@
+"""The drive's power, motor choice, ratio allocation and shaft table against hand
+calculations (《机械设计课程设计》 chapter 2) and the furnace-pusher seed (003).
+
+Hand references:
+- furnace pusher: H = 220 mm, 20 strokes/min, 500 N working / 100 N return:
+  P_w = (500 + 100) × 0.22 × 20 / 60 = 44.0 W (the seed uses 500 N on both strokes: 73.3 W);
+  the smallest Y motor (0.55 kW) is Y801-4 at 1390 rpm, total ratio 1390/20 = 69.5 as the seed.
+- shaper drive: belt (2–4) before the fixed pair 60/18: total ratios 6.67–13.3 are possible;
+  1500 rpm motors need 1390/80 = 17.4 (no), 1000 rpm motors 910/80 = 11.4 (yes).
+"""
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from mechdesign.brief.drive import DriveBrief, drive_brief_to_si
+from mechdesign.brief.loader import BriefError, parse_brief
+from mechdesign.core import drive as core
+from mechdesign.machines.drive import design_drive, motor_catalogue
+
+
+def _brief(stages, load=None, motor=None):
+    data = {"machine": "drive", "report": {"title": "t", "student": "s"},
+            "load": load or {"output_speed_rpm": 20, "stroke": {
+                "stroke_mm": 220, "working_force_N": 500, "return_force_N": 100}},
+            "drive": {"stages": stages, "motor": motor or {"speed_tolerance_pct": 4}}}
+    return drive_brief_to_si(DriveBrief.model_validate(data))
+
+
+def _run(p):
+    return design_drive(p.drive, p.load.power, p.load.output_speed_rpm, p.load.how)
+
+
+def test_stroke_load_power_is_work_per_cycle():
+    p = _brief([{"type": "worm"}])
+    assert p.load.power == pytest.approx((500 + 100) * 0.220 * 20 / 60)   # 44.0 W
+
+
+def test_furnace_pusher_motor_and_total_ratio_match_the_seed():
+    p = _brief([{"type": "coupling"}, {"type": "worm"}, {"type": "spur", "open": True}])
+    d = _run(p)
+    assert d.motor.designation == "Y801-4" and d.motor.full_load_rpm == 1390
+    assert d.choice.total_ratio == pytest.approx(69.5)
+    # η = 0.99 (coupling) × η_worm × 0.95 (open gears) × 0.99³ (bearings of shafts I–III)
+    worm = d.stages[1].efficiency
+    assert d.efficiency == pytest.approx(0.99 * worm * 0.95 * 0.99**3, rel=1e-12)
+    assert d.power_required == pytest.approx(44.0 / d.efficiency, rel=1e-12)
+    # Speeds: the realised teeth give the machine's speed; the error is within 4 %.
+    z = [(s.z1, s.z2) for s in d.stages[1:]]
+    assert d.output_speed == pytest.approx(1390 / (z[0][1] / z[0][0]) / (z[1][1] / z[1][0]))
+    assert abs(d.speed_error) < 0.04 and not [w for w in d.warnings if w.code == "speed_error"]
+
+
+def test_shaper_like_drive_prefers_the_speed_whose_ratio_fits():
+    elements = [core.Element("belt", 0.96, (2, 4), 7), core.Element("open_spur", 0.95, (3, 7), 15, 60 / 18)]
+    choice = core.choose_motor(motor_catalogue(), 690.0, 80.0, elements)
+    assert choice.motor.designation == "Y90S-6"          # 0.75 kW, 910 rpm
+    first = choice.candidates[0]
+    assert first.synchronous_rpm == 1500 and not first.recommended
+    assert first.total_ratio == pytest.approx(1390 / 80)
+    # 0.8 kW needs the next size at 1000 rpm.
+    assert core.choose_motor(motor_catalogue(), 800.0, 80.0, elements).motor.designation == "Y90L-6"
+
+
+def test_motor_choice_errors_name_the_problem():
+    belt = [core.Element("belt", 0.96, (2, 4), 7)]
+    with pytest.raises(core.DriveDesignError, match="no motor"):
+        core.choose_motor(motor_catalogue(), 1e6, 100.0, belt)
+    with pytest.raises(core.DriveDesignError, match="total ratios"):
+        core.choose_motor(motor_catalogue(), 500.0, 1.0, belt)
+
+
+def test_allocation_keeps_the_product_and_the_two_stage_rule():
+    els = [core.Element("belt", 0.96, (2, 4), 7), core.Element("helical", 0.97, (3, 5), 8),
+           core.Element("helical", 0.97, (3, 5), 8)]
+    r = core.allocate_ratios(60.0, els)
+    assert np.prod(r) == pytest.approx(60.0)
+    assert r[1] == pytest.approx(np.sqrt(1.4 * r[1] * r[2]))     # i_fast = √(1.4 i_reducer)
+    assert r[0] < r[2] < r[1]                                   # belt below the gears
+    # Fixed stages are kept; the free ones share the rest.
+    els[1] = core.Element("helical", 0.97, (3, 5), 8, 4.0)
+    r = core.allocate_ratios(60.0, els)
+    assert r[1] == 4.0 and np.prod(r) == pytest.approx(60.0)
+
+
+def test_shaft_table_conserves_power_through_the_efficiencies():
+    """T = 9550 P/n in course units, and T_{k+1} = T_k i η (η_b after the first shaft)."""
+    s = core.shaft_table(1440.0, 4000.0, [2.5, 4.0, 3.0], [0.96, 0.97, 0.97], 0.99)
+    assert s[0].torque == pytest.approx(9550 * 4.0 / 1440, rel=1e-3)
+    assert s[1].torque == pytest.approx(s[0].torque * 2.5 * 0.96, rel=1e-12)
+    assert s[2].torque == pytest.approx(s[1].torque * 4.0 * 0.97 * 0.99, rel=1e-12)
+    assert s[3].speed_rpm == pytest.approx(1440 / 30)
+    assert s[3].power == pytest.approx(4000 * 0.96 * 0.97**2 * 0.99**2)
+
+
+def test_gear_train_sign_and_belt_slip():
+    # Two external meshes: output turns the same way; 18/90 then 18/126 (seed 002) = 35.
+    assert core.train_ratio([(18, 90, True), (18, 126, True)]) == pytest.approx(35.0)
+    assert core.train_ratio([(18, 60, True)]) == pytest.approx(-60 / 18)
+    assert core.train_ratio([(20, 60, False)]) == pytest.approx(3.0)     # internal mesh
+    assert core.belt_ratio(0.1, 0.2, 0.0) == pytest.approx(2.0)           # seed 002's Ø100/Ø200
+    assert core.belt_ratio(0.1, 0.2, 0.02) == pytest.approx(2 / 0.98)
+    assert core.standard_pulley(330) == 335 and core.standard_pulley(101) == 100
+
+
+def test_lock_beam_transmission_reaches_ten_rpm():
+    """Seed 002: belt Ø100/Ø200, gears 18/90 and 18/126 from 700 rpm give exactly 10 rpm
+    without slip; a 710 rpm Y motor with 1.5 % slip gives 10.3 rpm."""
+    p = _brief([{"type": "belt", "d1_mm": 100, "d2_mm": 200, "slip": 0.0},
+                {"type": "spur", "z1": 18, "z2": 90}, {"type": "spur", "z1": 18, "z2": 126}],
+               load={"output_speed_rpm": 10, "power_kW": 0.5}, motor={"synchronous_rpm": 750})
+    d = _run(p)
+    assert [s.ratio for s in d.stages] == pytest.approx([2.0, 5.0, 7.0])
+    assert d.output_speed == pytest.approx(d.motor.full_load_rpm / 70)
+    assert d.motor.full_load_rpm == 710 and d.speed_error == pytest.approx(0.0143, abs=1e-4)
+
+
+def test_speed_error_beyond_the_tolerance_is_a_finding():
+    p = _brief([{"type": "spur", "z1": 20, "z2": 100}],
+               load={"output_speed_rpm": 250, "power_kW": 1.0}, motor={"speed_tolerance_pct": 2,
+                                                                       "synchronous_rpm": 1500})
+    d = _run(p)                     # 1400 / 5 = 280 rpm: +12 %
+    assert d.speed_error == pytest.approx(0.12, abs=1e-3)
+    assert [w.code for w in d.warnings if w.code == "speed_error"] == ["speed_error"]
+
+
+@pytest.mark.parametrize("stage, path, text", [
+    ({"type": "spur", "d1_mm": 100}, "drive.stages.0", "has no d1_mm"),
+    ({"type": "spur", "ratio": 3, "z1": 20, "z2": 60}, "drive.stages.0", "fixed twice"),
+    ({"type": "gearbox"}, "drive.stages.0.type", "coupling"),
+    ({"type": "spur", "z1": 40, "z2": 20}, "drive.stages.0", "z2 must be at least z1"),
+])
+def test_bad_drive_stages_name_the_field(stage, path, text):
+    data = {"machine": "drive", "report": {"title": "t", "student": "s"},
+            "load": {"output_speed_rpm": 20, "power_kW": 1.0}, "drive": {"stages": [stage]}}
+    with pytest.raises(BriefError) as exc:
+        parse_brief(data)
+    problem = exc.value.problems[0]
+    assert problem.path == path and text in str(problem)
+
+
+def test_drive_load_needs_exactly_one_kind():
+    data = {"machine": "drive", "report": {"title": "t", "student": "s"},
+            "load": {"output_speed_rpm": 20, "power_kW": 1.0, "torque_Nm": 5.0},
+            "drive": {"stages": [{"type": "worm"}]}}
+    with pytest.raises(BriefError, match="exactly one of"):
+        parse_brief(data)
