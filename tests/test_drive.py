@@ -145,3 +145,53 @@ def test_drive_load_needs_exactly_one_kind():
             "drive": {"stages": [{"type": "worm"}]}}
     with pytest.raises(BriefError, match="exactly one of"):
         parse_brief(data)
+
+
+def test_furnace_drive_strength_checks_by_hand():
+    """The worm stage's checks use the textbook formulas: σH = ZE Zρ √(K T2/a³) with the
+    realised a, and the oil temperature t = 20 + P1(1 − η)/(k_d A). Every gear and shaft
+    check of the furnace drive passes (44 W is a light load for the smallest Y motor)."""
+    p = _brief([{"type": "coupling"}, {"type": "worm", "z1": 2, "q": 10},
+                {"type": "spur", "open": True, "z1": 20}])
+    d = _run(p)
+    worm = d.stages[1].design
+    a, K, T2 = worm.extra["a"], worm.K, worm.T2
+    contact = next(c for c in worm.checks if c.key == "worm_contact")
+    from mechdesign.data.catalogues import worm_wheel_material
+    ZE = worm_wheel_material("ZCuSn10P1_sand").ZE
+    assert contact.value == pytest.approx(ZE * worm.extra["Zrho"] * np.sqrt(K * T2 / a**3), rel=1e-9)
+    thermal = next(c for c in worm.checks if c.key == "worm_thermal")
+    P1 = d.shafts[1].power
+    assert thermal.value == pytest.approx(20 + P1 * (1 - worm.extra["eta"]) / (15.0 * worm.extra["area"]))
+    # The worm's efficiency in the chain is the one its geometry gives.
+    assert d.stages[1].efficiency == pytest.approx(worm.extra["eta"], abs=1e-4)
+    assert worm.T2 == pytest.approx(d.shafts[2].torque)
+    assert all(c.passed for st in d.stages if st.design for c in st.design.checks)
+    assert all(c.passed for sh in d.extras["shafts"] for c in sh.checks)
+    # Open gears: no contact check, the module is designed by bending with wear, ≥ 2 mm.
+    spur = d.stages[2].design
+    assert [c.key for c in spur.checks] == ["gear_bending", "gear_bending"]
+    assert spur.module >= 0.002
+
+
+def test_overloaded_closed_pair_fails_and_is_reported():
+    """A 10 kW pair with a given 2 mm module fails in contact: the finding names it."""
+    p = _brief([{"type": "spur", "z1": 24, "z2": 96, "module_mm": 2}],
+               load={"output_speed_rpm": 360, "power_kW": 10.0})
+    d = _run(p)
+    failed = [c for c in d.stages[0].design.checks if not c.passed]
+    assert failed and any(w.code == "strength" for w in d.warnings)
+    # The designed module (auto) passes every check of the same pair.
+    p = _brief([{"type": "spur", "z1": 24, "z2": 96}], load={"output_speed_rpm": 360, "power_kW": 10.0})
+    d = _run(p)
+    assert all(c.passed for c in d.stages[0].design.checks)
+    assert d.stages[0].design.module >= d.stages[0].design.module_min
+
+
+def test_shaft_reactions_balance_the_gear_forces():
+    p = _brief([{"type": "coupling"}, {"type": "worm", "z1": 2, "q": 10},
+                {"type": "spur", "open": True, "z1": 20}])
+    for sh in _run(p).extras["shafts"]:
+        r = sh.result
+        assert r.RAh + r.RBh + sum(ld.Fh for ld in sh.loads) == pytest.approx(0, abs=1e-9)
+        assert r.RAv + r.RBv + sum(ld.Fv for ld in sh.loads) == pytest.approx(0, abs=1e-9)

@@ -8,7 +8,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Literal, Optional, Union
 
-from pydantic import Field, model_validator
+from pydantic import Field, field_validator, model_validator
 
 from .common import ReportMeta, StrictModel
 
@@ -22,12 +22,25 @@ _FIELDS_BY_TYPE = {
              "gear_material", "x1", "x2", "span_mm"},
     "helical": {"ratio", "z1", "z2", "module_mm", "helix_angle_deg", "face_width_factor",
                 "pinion_material", "gear_material", "span_mm"},
-    "worm": {"ratio", "z1", "z2", "module_mm", "q", "x2", "worm_material", "wheel_material",
-             "span_mm"},
+    "worm": {"ratio", "z1", "z2", "module_mm", "q", "x2", "wheel_material", "span_mm"},
 }
 _OPTIONAL = ("ratio", "d1_mm", "d2_mm", "slip", "z1", "z2", "module_mm", "open", "face_width_factor",
              "pinion_material", "gear_material", "x1", "x2", "helix_angle_deg", "q",
-             "worm_material", "wheel_material", "span_mm")
+             "wheel_material", "span_mm")
+
+
+def check_material(value: str | None, which: str) -> str | None:
+    """A material key must be in the shipped catalogue (mechdesign/data/materials.yaml)."""
+    from ..data import catalogues as cat
+
+    if value is None:
+        return value
+    keys = {"gear": cat.gear_material_keys, "wheel": cat.worm_wheel_material_keys}[which]()
+    try:
+        {"gear": cat.gear_material, "wheel": cat.worm_wheel_material}[which](value)
+    except KeyError:
+        raise ValueError(f"unknown material; allowed: {', '.join(keys)}") from None
+    return value
 
 
 class DriveStage(StrictModel):
@@ -55,7 +68,6 @@ class DriveStage(StrictModel):
         "Gear (or worm-wheel) profile-shift coefficient x2"))
     helix_angle_deg: Optional[float] = Field(None, ge=8, le=25, description="Helix angle β [°] (default 14)")
     q: Optional[float] = Field(None, ge=6, le=20, description="Worm diameter factor q = d1/m (default 10)")
-    worm_material: Optional[str] = Field(None, description="Worm material key (default 45_QT, surface hardened)")
     wheel_material: Optional[str] = Field(None, description="Worm-wheel rim material key (default ZCuSn10P1)")
     d1_mm: Optional[float] = Field(None, gt=20, le=2000, description="Small pulley datum diameter d1 [mm] (default 100)")
     d2_mm: Optional[float] = Field(None, gt=20, le=5000, description="Large pulley datum diameter d2 [mm]")
@@ -64,6 +76,16 @@ class DriveStage(StrictModel):
         "Bearing span of the stage's output shaft [mm] (default: face width + 2 × 60 mm)"))
     efficiency: Optional[float] = Field(None, gt=0.3, le=1, description=(
         "Efficiency of the stage, overriding the textbook default (worm: computed)"))
+
+    @field_validator("pinion_material", "gear_material")
+    @classmethod
+    def _gear_material(cls, v):
+        return check_material(v, "gear")
+
+    @field_validator("wheel_material")
+    @classmethod
+    def _wheel_material(cls, v):
+        return check_material(v, "wheel")
 
     @model_validator(mode="after")
     def _fields_fit_type(self):
@@ -173,7 +195,6 @@ class StageParams:
     x2: float
     helix_angle: float          # [rad]
     q: float
-    worm_material: str | None
     wheel_material: str | None
     d1: float | None            # [m]
     d2: float | None            # [m]
@@ -207,7 +228,7 @@ def _stage_to_si(s: DriveStage, index: int) -> StageParams:
         helix_angle=np.radians(s.helix_angle_deg if s.helix_angle_deg is not None else 14.0)
         if s.type == "helical" else 0.0,
         q=s.q if s.q is not None else 10.0,
-        worm_material=s.worm_material, wheel_material=s.wheel_material,
+        wheel_material=s.wheel_material,
         d1=None if s.d1_mm is None else s.d1_mm * mm, d2=None if s.d2_mm is None else s.d2_mm * mm,
         slip=s.slip if s.slip is not None else 0.015,
         span=None if s.span_mm is None else s.span_mm * mm,

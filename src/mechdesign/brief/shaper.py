@@ -13,7 +13,7 @@ from pydantic import Field, field_validator, model_validator
 
 from .cam import CamParams, CamSection, cam_to_si
 from .common import AnalysisSettings, ReportMeta, StrictModel
-from .drive import DriveParams, DriveSection, DriveStage, drive_to_si
+from .drive import DriveParams, DriveSection, DriveStage, check_material, drive_to_si
 
 
 class ShaperLinkage(StrictModel):
@@ -69,6 +69,11 @@ class GearPair(StrictModel):
     pinion_material: Optional[str] = Field(None, description="Pinion material key for the drive's checks")
     gear_material: Optional[str] = Field(None, description="Gear material key for the drive's checks")
     face_width_factor: Optional[float] = Field(None, gt=0, le=2, description="Face width factor φd = b/d1")
+
+    @field_validator("pinion_material", "gear_material")
+    @classmethod
+    def _material(cls, v):
+        return check_material(v, "gear")
 
     @model_validator(mode="after")
     def _reduction(self):

@@ -97,6 +97,160 @@ def spur_pair(m: float, z1: int, z2: int, alpha: float = np.radians(20.0), ha_st
                     ha_star * (z_min - z1) / z_min, ha_star * (z_min - z2) / z_min)
 
 
+
+# --- Tooth outlines and the meshing layout (the course's 啮合图) ---------------------------
+#
+# A gear's own frame: centre at the origin, tooth 0 centred on the +x axis, the teeth
+# numbered counter-clockwise. The outline is the one the pair's basic rack generates: straight
+# flanks at α, tip line hf + x m below the reference line, tip corners rounded with the
+# standard radius ρf = c* m / (1 − sin α) (0.38 m for c* = 0.25), tangent to the tip line and
+# to the flank at the depth ha* m, so that "no undercut" is exactly x ≥ x_min.
+#   * Involute flank: half angular thickness at radius ρ (from s_ρ = s ρ/r − 2ρ(inv α_ρ − inv α))
+#         ψ(ρ) = s/(2r) − (inv α_ρ − inv α),   cos α_ρ = rb/ρ.
+#   * Root fillet: the envelope of the rounded tip. Rolling the rack's pitch line on the pitch
+#     circle, the rack point (u, h) (u along the rack, h above the rolling line) is at
+#         X = e^{i(π/z − φ)} (r + h + i k),   k = u + r φ,
+#     and the rounding's centre C touches the gear where the normal from the rolling point
+#     meets it: X = C + ρf (C − P)/|C − P|, for k from 0 (bottom: the root circle) to h_C cot α
+#     (the rounding's end at the flank, then on the line of action: the form circle, where
+#     the fillet meets the involute tangentially). If that end lies beyond N (x < x_min) the
+#     fillet cuts the involute instead: the outline is the generated, undercut one.
+
+
+def _rack_fillet(gear: GearDims, m, alpha, c_star, k):
+    """Points (complex, own frame, the tooth's counter-clockwise side) that the rack's tip
+    rounding generates at the rack positions ``k``; also the rounding centre's height h_C."""
+    r, rho_f = gear.d / 2, c_star * m / (1 - np.sin(alpha))
+    h_c = rho_f - gear.hf
+    u_c = rho_f * np.cos(alpha) - (np.pi * m / 4 - gear.hf * np.tan(alpha) + (c_star - gear.x) * m * np.tan(alpha))
+    rel = h_c + 1j * np.asarray(k, dtype=float)           # C − P in the rolling frame
+    side = -np.sign(h_c) if h_c != 0 else -1.0             # the rounding's active side
+    points = np.exp(1j * (np.pi / gear.z - (rel.imag - u_c) / r)) * (r + rel * (1 + side * rho_f / np.abs(rel)))
+    return points, h_c
+
+
+def _involute_half_angle(gear: GearDims, alpha, rho):
+    return gear.s / gear.d - (inv(np.arccos(np.minimum(gear.db / 2 / np.asarray(rho, dtype=float), 1.0))) - inv(alpha))
+
+
+def _fillet_end(gear: GearDims, m, alpha, c_star) -> float:
+    """Rack position k where the fillet hands over to the involute."""
+    h_c = _rack_fillet(gear, m, alpha, c_star, 0.0)[1]
+    k_end = h_c / np.tan(alpha)                            # the rounding's end on the line of action
+    if gear.d / 2 * np.sin(alpha) >= (gear.hf - c_star * m) / np.sin(alpha):
+        return k_end                                       # that point lies before N: no undercut
+    at = lambda k: _rack_fillet(gear, m, alpha, c_star, k)[0]  # noqa: E731
+    k_b = brentq(lambda k: abs(at(k)) - gear.db / 2, k_end, 0.0)
+    gap = lambda k: _involute_half_angle(gear, alpha, abs(at(k))) - np.angle(at(k))  # noqa: E731
+    return brentq(gap, k_end, k_b) if gap(k_b) > 0 else k_b
+
+
+def form_radius(gear: GearDims, m, alpha, c_star=0.25) -> float:
+    """Radius where the flank stops being the involute: the form circle (the fillet meets
+    the involute tangentially there), or for an undercut gear the radius where the fillet
+    cuts the involute."""
+    return float(abs(_rack_fillet(gear, m, alpha, c_star, _fillet_end(gear, m, alpha, c_star))[0]))
+
+
+def tooth_half_angle(gear: GearDims, m, alpha, c_star, rho):
+    """Half the angular thickness ψ(ρ) [rad] of the generated tooth at radius ρ: the tooth
+    occupies |θ| ≤ ψ(ρ). The involute's closed form above :func:`form_radius`, the fillet
+    (interpolated between 400 generated points) below it."""
+    fillet = _rack_fillet(gear, m, alpha, c_star, np.linspace(0.0, _fillet_end(gear, m, alpha, c_star), 400))[0]
+    rho = np.asarray(rho, dtype=float)
+    return np.where(rho >= abs(fillet[-1]), _involute_half_angle(gear, alpha, rho),
+                    np.interp(rho, np.abs(fillet), np.angle(fillet)))
+
+
+def tooth_outline(gear: GearDims, m, alpha, c_star=0.25, points: int = 40) -> np.ndarray:
+    """One generated tooth (complex, the gear's own frame, tooth centred on the +x axis),
+    counter-clockwise from the middle of the space below it (angle −π/z on the root circle)
+    to the middle of the space above it (+π/z): root arc, fillet, involute flank, tip arc,
+    flank, fillet, root arc. ``points`` samples per fillet and per involute flank."""
+    rb, ra = gear.db / 2, gear.da / 2
+    fillet = _rack_fillet(gear, m, alpha, c_star, np.linspace(0.0, _fillet_end(gear, m, alpha, c_star), points))[0]
+    # the involute sampled evenly in its roll angle tan α_ρ, from the fillet's end to the tip
+    roll = np.linspace(np.sqrt(max((abs(fillet[-1]) / rb) ** 2 - 1, 0.0)), np.sqrt((ra / rb) ** 2 - 1), points)[1:]
+    rho = rb * np.sqrt(1 + roll**2)
+    psi = np.maximum(_involute_half_angle(gear, alpha, rho), 0.0)     # a pointed tooth stays closed
+    flank = np.concatenate([fillet, rho * np.exp(1j * psi)])           # the counter-clockwise side
+    tip = ra * np.exp(1j * np.linspace(-psi[-1], psi[-1], max(points // 4, 3))[1:-1])
+    root = gear.df / 2 * np.exp(1j * np.linspace(np.angle(fillet[0]), np.pi / gear.z, max(points // 4, 2)))
+    return np.concatenate([np.conj(root[:0:-1]), np.conj(flank), tip, flank[::-1], root[1:]])
+
+
+def gear_outline(gear: GearDims, m, alpha, c_star=0.25, rotation: float = 0.0, centre: complex = 0j,
+                 points: int = 40) -> np.ndarray:
+    """Closed outline (complex, counter-clockwise, first point repeated at the end) of all z
+    teeth: tooth k centred at angle rotation + 2πk/z about ``centre``."""
+    tooth = tooth_outline(gear, m, alpha, c_star, points)[:-1]
+    turns = np.exp(1j * (rotation + 2 * np.pi * np.arange(gear.z) / gear.z))
+    ring = (turns[:, None] * tooth[None, :]).ravel()
+    return centre + np.append(ring, ring[:1])
+
+
+@dataclass(frozen=True)
+class MeshLayout:
+    """Everything the meshing drawing needs, in the pair's length unit (complex points).
+
+    Frame: O1 at the origin, O2 = i a' (the line of centres vertical, gear 2 above), the
+    pitch point P = i r1'. Gear 1 drives counter-clockwise (gear 2 turns clockwise): the
+    line of action runs from N1 (on base circle 1, right of the line of centres) up to N2
+    (on base circle 2, left of it), inclined at α' to the common tangent at P;
+    ``direction`` is its unit vector N1 → N2, the way the contact point travels. Contact
+    starts at B2 (tip circle 2 on N1N2) and ends at B1 (tip circle 1).
+
+    ``rotation1``/``rotation2`` turn the gears' own frames (:func:`gear_outline`) so that the
+    counter-clockwise flank of a tooth of each touches at P (``phase`` = 0), tangent to each
+    other with their common normal N1N2."""
+    pair: SpurPair
+    o1: complex
+    o2: complex
+    p: complex
+    n1: complex
+    n2: complex
+    b1: complex
+    b2: complex
+    direction: complex
+    r1w: float            # working pitch radii r' = rb / cos α'
+    r2w: float
+    rotation1: float
+    rotation2: float
+    action_length: float  # |B1B2|
+    pb: float
+    contact_ratio: float  # |B1B2| / pb
+
+    @property
+    def interference(self) -> bool:
+        """True when B2 falls before N1 or B1 beyond N2: a tip would then work below the
+        other gear's base circle (the contact ratio formula no longer holds there)."""
+        along = ((np.array([self.b2, self.b1, self.n2]) - self.n1) * np.conj(self.direction)).real
+        return bool(along[0] < 0 or along[1] > along[2])
+
+    def outlines(self, points: int = 40) -> tuple[np.ndarray, np.ndarray]:
+        """Both gears' closed outlines placed in the layout."""
+        g = self.pair
+        return (gear_outline(g.g1, g.m, g.alpha, g.c_star, self.rotation1, self.o1, points),
+                gear_outline(g.g2, g.m, g.alpha, g.c_star, self.rotation2, self.o2, points))
+
+
+def mesh_layout(pair: SpurPair, phase: float = 0.0) -> MeshLayout:
+    """The meshing layout of ``pair``; ``phase`` [rad] turns gear 1 further counter-clockwise
+    (gear 2 follows clockwise by phase z1/z2), moving the contact along N1N2 by rb1·phase."""
+    g1, g2, aw = pair.g1, pair.g2, pair.alpha_work
+    r1w, r2w = g1.db / 2 / np.cos(aw), g2.db / 2 / np.cos(aw)
+    o1, o2, p = 0j, 1j * pair.a_work, 1j * r1w
+    u = complex(np.exp(1j * (np.pi - aw)))              # N1 → N2
+    n1, n2 = p - r1w * np.sin(aw) * u, p + r2w * np.sin(aw) * u
+    b1 = n1 + np.sqrt((g1.da / 2) ** 2 - (g1.db / 2) ** 2) * u
+    b2 = n2 - np.sqrt((g2.da / 2) ** 2 - (g2.db / 2) ** 2) * u
+    rot1 = np.pi / 2 - float(tooth_half_angle(g1, pair.m, pair.alpha, pair.c_star, r1w)) + phase
+    rot2 = -np.pi / 2 - float(tooth_half_angle(g2, pair.m, pair.alpha, pair.c_star, r2w)) - phase * g1.z / g2.z
+    length = abs(b1 - b2)
+    return MeshLayout(pair, o1, o2, p, complex(n1), complex(n2), complex(b1), complex(b2), u,
+                      float(r1w), float(r2w), rot1, rot2, length, pair.pb, length / pair.pb)
+
+
 @dataclass(frozen=True)
 class HelicalPair:
     mn: float

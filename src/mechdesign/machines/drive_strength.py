@@ -307,7 +307,9 @@ def shaft_designs(dp, designs, shafts, peak_factor, peak_from_shaft, names) -> t
             except ValueError:
                 continue
             allow = ci_lo if ld[3] == "cast_iron" else sp_lo
-            c = st.key_check(T, d_seat, key.h, st.key_working_length(L, key.b, "A"), allow)
+            # On the flywheel's shaft the incoming element sees the mean torque only.
+            t_key = sh.torque if (j == peak_from_shaft and d is designs[j - 1]) else T
+            c = st.key_check(t_key, d_seat, key.h, st.key_working_length(L, key.b, "A"), allow)
             checks.append(replace(c, name_zh=f"平键 {key.label}×{L * 1e3:g}（{nm[0]}）",
                                   name_en=f"Key {key.label}×{L * 1e3:g} ({nm[1]})"))
         out.append(ShaftDesign(j, sh.speed_rpm, sh.power, T, d_min, d_j, d_seat, span, tuple(loads),

@@ -15,7 +15,11 @@ MM = 1e3
 def make_gear_figures(g, fig_dir: Path, lang: str) -> dict[str, str]:
     from .gear_figures import meshing_drawing
 
-    meshing_drawing(fig_dir / "gear_mesh.png", lang, g.pair)
+    from ..core.gears import spur_pair
+
+    p = g.pair   # the drawing works in millimetres
+    mm = spur_pair(p.m * MM, p.g1.z, p.g2.z, p.alpha, p.ha_star, p.c_star, p.g1.x, p.g2.x)
+    meshing_drawing(fig_dir / "gear_mesh.png", lang, mm)
     return {"gear_mesh": f"{fig_dir.name}/gear_mesh.png"}
 
 

@@ -1,0 +1,181 @@
+"""Report material for the strength checks of :mod:`mechdesign.core.strength`.
+
+``check_formula(check)`` gives the textbook formula with the numbers substituted in course
+units (N·mm, mm, MPa, kW, h, °C) as plain LaTeX that pandoc turns into Typst math (``\\frac``,
+``\\sqrt``, ``\\times``, ``\\le``, ``\\text{}`` only). ``check_rows(checks, lang)`` gives the
+summary-table rows ``[item_zh, item_en, value, allowable, unit, verdict]``.
+"""
+from __future__ import annotations
+
+import math
+from typing import Iterable
+
+from ..core.strength import COURSE_SCALE, Check
+from .fmt import f
+
+#: Decimals of the value and allowable columns per course unit.
+DIGITS = {"MPa": 1, "h": 0, "°C": 1, "mm": 2}
+
+N_MM = 1e3      # N·m → N·mm
+MM = 1e3        # m → mm
+SQRT_MPA = 1e-3  # √Pa → √MPa
+
+
+def num(x: float, sig: int = 4) -> str:
+    """A number for a formula: ``sig`` significant digits, trailing zeros dropped, powers of
+    ten as ``\\times10^{k}`` outside 10⁻³…10⁵; negative numbers in parentheses."""
+    if x == 0 or not math.isfinite(x):
+        return "0" if x == 0 else str(x)
+    if x < 0:
+        return f"({'-' + num(-x, sig)})"
+    k = math.floor(math.log10(x))
+    if k >= 5 or k < -3:
+        mant = x / 10 ** k
+        if round(mant, sig - 1) >= 10:
+            mant, k = mant / 10, k + 1
+        return f"{_trim(f(mant, sig - 1))}\\times10^{{{k}}}"
+    return _trim(f(x, max(0, sig - 1 - k)))
+
+
+def _trim(text: str) -> str:
+    return text.rstrip("0").rstrip(".") if "." in text else text
+
+
+def _value(check: Check) -> str:
+    return f(check.course_value, DIGITS.get(check.unit, 2))
+
+
+def _allowable(check: Check) -> str:
+    return f(check.course_allowable, DIGITS.get(check.unit, 2))
+
+
+def _unit(unit: str) -> str:
+    return rf"\text{{{unit}}}"
+
+
+def _relation(check: Check) -> str:
+    """≤ / ≥ when the check passes, > / < when it fails."""
+    if check.sense == "le":
+        return r"\le" if check.passed else ">"
+    return r"\ge" if check.passed else "<"
+
+
+def _tail(check: Check, allow_symbol: str) -> str:
+    u = _unit(check.unit)
+    rel = _relation(check)
+    return f" = {_value(check)}\\ {u} {rel} {allow_symbol} = {_allowable(check)}\\ {u}"
+
+
+def _prod(*factors: float) -> str:
+    return r" \times ".join(num(v) for v in factors)
+
+
+def _gear_contact(c: Check) -> str:
+    i = c.inputs
+    zb = i.get("Zbeta", 1.0) != 1.0
+    sym = r"\sqrt{\frac{2 K T_1}{b d_1^2} \times \frac{u+1}{u}} Z_H Z_E Z_\varepsilon" + (r" Z_\beta" if zb else "")
+    factors = [i["ZH"], i["ZE"] * SQRT_MPA, i["Zeps"]] + ([i["Zbeta"]] if zb else [])
+    numbers = (rf"\sqrt{{\frac{{2 \times {_prod(i['K'], i['T1'] * N_MM)}}}{{{num(i['b'] * MM)} \times "
+               rf"{num(i['d1'] * MM)}^2}} \times \frac{{{num(i['u'])}+1}}{{{num(i['u'])}}}}} \times {_prod(*factors)}")
+    return rf"\sigma_H = {sym} = {numbers}" + _tail(c, r"[\sigma_H]")
+
+
+def _gear_bending(c: Check) -> str:
+    i = c.inputs
+    yb = i.get("Ybeta", 1.0) != 1.0
+    sym = r"\frac{2 K T_1 Y_{Fa} Y_{Sa} Y_\varepsilon" + (r" Y_\beta" if yb else "") + "}{b d_1 m}"
+    top = [i["K"], i["T1"] * N_MM, i["YFa"], i["YSa"], i["Yeps"]] + ([i["Ybeta"]] if yb else [])
+    numbers = rf"\frac{{2 \times {_prod(*top)}}}{{{_prod(i['b'] * MM, i['d1'] * MM, i['m'] * MM)}}}"
+    return rf"\sigma_F = {sym} = {numbers}" + _tail(c, r"[\sigma_F]")
+
+
+def _worm_contact(c: Check) -> str:
+    i = c.inputs
+    numbers = (rf"{_prod(i['ZE'] * SQRT_MPA, i['Zrho'])} \times "
+               rf"\sqrt{{\frac{{{_prod(i['K'], i['T2'] * N_MM)}}}{{{num(i['a'] * MM)}^3}}}}")
+    return rf"\sigma_H = Z_E Z_\rho \sqrt{{\frac{{K T_2}}{{a^3}}}} = {numbers}" + _tail(c, r"[\sigma_H]")
+
+
+def _worm_bending(c: Check) -> str:
+    i = c.inputs
+    numbers = (rf"\frac{{1.53 \times {_prod(i['K'], i['T2'] * N_MM)}}}{{{_prod(i['d1'] * MM, i['d2'] * MM, i['m'] * MM)}}}"
+               rf" \times {_prod(i['YFa2'], i['Ybeta'])}")
+    return rf"\sigma_F = \frac{{1.53 K T_2}}{{d_1 d_2 m}} Y_{{Fa2}} Y_\beta = {numbers}" + _tail(c, r"[\sigma_F]")
+
+
+def _worm_thermal(c: Check) -> str:
+    i = c.inputs
+    numbers = (rf"{num(i['t0'])} + \frac{{1000 \times {num(i['P1'] / 1e3)} \times (1-{num(i['eta'])})}}"
+               rf"{{{_prod(i['kd'], i['A'])}}}")
+    return rf"t = t_0 + \frac{{1000 P_1 (1-\eta)}}{{\alpha_d A}} = {numbers}" + _tail(c, "[t]")
+
+
+def _shaft_bending(c: Check) -> str:
+    i = c.inputs
+    numbers = (rf"\frac{{\sqrt{{{num(i['M'] * N_MM)}^2 + ({num(i['alpha'])} \times {num(i['T'] * N_MM)})^2}}}}"
+               rf"{{0.1 \times {num(i['d'] * MM)}^3}}")
+    return rf"\sigma_{{ca}} = \frac{{\sqrt{{M^2 + (\alpha T)^2}}}}{{0.1 d^3}} = {numbers}" + _tail(c, r"[\sigma_{-1b}]")
+
+
+def _shaft_min_diameter(c: Check) -> str:
+    i = c.inputs
+    k = i.get("keyway_increase", 0.0)
+    sym = r"A_0 \sqrt[3]{\frac{P}{n}}" + (r" (1 + k)" if k else "")
+    numbers = rf"{num(i['A0'])} \times \sqrt[3]{{\frac{{{num(i['P'] / 1e3)}}}{{{num(i['n_rpm'])}}}}}"
+    numbers += rf" \times (1 + {num(k)})" if k else ""
+    rel = _relation(c)
+    u = _unit(c.unit)
+    return (rf"d_{{\text{{min}}}} = {sym} = {numbers} = {_allowable(c)}\ {u}, \quad d = {_value(c)}\ {u} {rel} d_{{\text{{min}}}}")
+
+
+def _bearing_life(c: Check) -> str:
+    i = c.inputs
+    eps = r"\frac{10}{3}" if abs(i["epsilon"] - 10 / 3) < 1e-9 else num(i["epsilon"])
+    ft = i.get("ft", 1.0)
+    ratio = rf"\frac{{{_prod(ft, i['C'])}}}{{{num(i['P'])}}}"
+    numbers = rf"\frac{{10^6}}{{60 \times {num(i['n_rpm'])}}} \times ({ratio})^{{{eps}}}"
+    return (rf"L_{{10h}} = \frac{{10^6}}{{60 n}} (\frac{{f_t C}}{{P}})^{{\varepsilon}} = {numbers}"
+            + _tail(c, r"L_h'"))
+
+
+def _key_crushing(c: Check) -> str:
+    i = c.inputs
+    numbers = (rf"\frac{{2 \times {num(i['T'] * N_MM)}}}{{{_prod(0.5 * i['h'] * MM, i['l'] * MM, i['d'] * MM)}}}")
+    return rf"\sigma_p = \frac{{2 T}}{{k l d}} = {numbers}" + _tail(c, r"[\sigma_p]")
+
+
+_FORMULAS = {
+    "gear_contact": _gear_contact,
+    "gear_bending": _gear_bending,
+    "worm_contact": _worm_contact,
+    "worm_bending": _worm_bending,
+    "worm_thermal": _worm_thermal,
+    "shaft_bending": _shaft_bending,
+    "shaft_min_diameter": _shaft_min_diameter,
+    "bearing_life": _bearing_life,
+    "key_crushing": _key_crushing,
+}
+
+
+def check_formula(check: Check) -> str:
+    """The check's textbook formula with its numbers (course units) and the verdict relation.
+    Checks of an unknown key fall back to ``symbol = value ≤ allowable``."""
+    render = _FORMULAS.get(check.key)
+    if render is None:
+        return check.symbol + _tail(check, f"[{check.symbol}]")
+    return render(check)
+
+
+def verdict(check: Check, lang: str = "zh") -> str:
+    if lang == "zh":
+        return "合格" if check.passed else "不合格"
+    return "PASS" if check.passed else "FAIL"
+
+
+def check_rows(checks: Iterable[Check], lang: str = "zh") -> list[list[str]]:
+    """Summary rows ``[item_zh, item_en, value, allowable, unit, verdict]`` (course units;
+    the allowable is a minimum for lives and diameters, a maximum otherwise)."""
+    return [[c.name_zh, c.name_en, _value(c), _allowable(c), c.unit, verdict(c, lang)] for c in checks]
+
+
+__all__ = ["check_formula", "check_rows", "verdict", "num", "COURSE_SCALE"]
