@@ -195,3 +195,18 @@ def test_shaft_reactions_balance_the_gear_forces():
         r = sh.result
         assert r.RAh + r.RBh + sum(ld.Fh for ld in sh.loads) == pytest.approx(0, abs=1e-9)
         assert r.RAv + r.RBv + sum(ld.Fv for ld in sh.loads) == pytest.approx(0, abs=1e-9)
+
+
+def test_two_stage_helical_reducer_is_designed_and_checked():
+    """A belt + two-stage helical reducer (the die-cutter's layout): ratios split by the
+    √(1.4 i) rule before rounding, helical geometry m_t = m_n/cos β, all checks run."""
+    p = _brief([{"type": "belt"}, {"type": "helical", "z1": 24}, {"type": "helical", "z1": 24}],
+               load={"output_speed_rpm": 50, "power_kW": 2.0})
+    d = _run(p)
+    fast, slow = d.stages[1], d.stages[2]
+    assert fast.ratio_allocated == pytest.approx(np.sqrt(1.4 * fast.ratio_allocated * slow.ratio_allocated))
+    g = fast.design.geometry
+    assert g.mt == pytest.approx(g.mn / np.cos(np.radians(14.0)))
+    assert [c.key for c in fast.design.checks] == ["gear_contact", "gear_bending", "gear_bending"]
+    assert all(c.passed for c in fast.design.checks + slow.design.checks)
+    assert fast.design.forces["Fa"] == pytest.approx(fast.design.forces["Ft"] * np.tan(np.radians(14.0)))
