@@ -167,7 +167,7 @@ def test_furnace_drive_strength_checks_by_hand():
     assert d.stages[1].efficiency == pytest.approx(worm.extra["eta"], abs=1e-4)
     assert worm.T2 == pytest.approx(d.shafts[2].torque)
     assert all(c.passed for st in d.stages if st.design for c in st.design.checks)
-    assert all(c.passed for sh in d.extras["shafts"] for c in sh.checks)
+    assert all(c.passed for sh in d.shaft_designs for c in sh.checks)
     # Open gears: no contact check, the module is designed by bending with wear, ≥ 2 mm.
     spur = d.stages[2].design
     assert [c.key for c in spur.checks] == ["gear_bending", "gear_bending"]
@@ -191,7 +191,7 @@ def test_overloaded_closed_pair_fails_and_is_reported():
 def test_shaft_reactions_balance_the_gear_forces():
     p = _brief([{"type": "coupling"}, {"type": "worm", "z1": 2, "q": 10},
                 {"type": "spur", "open": True, "z1": 20}])
-    for sh in _run(p).extras["shafts"]:
+    for sh in _run(p).shaft_designs:
         r = sh.result
         assert r.RAh + r.RBh + sum(ld.Fh for ld in sh.loads) == pytest.approx(0, abs=1e-9)
         assert r.RAv + r.RBv + sum(ld.Fv for ld in sh.loads) == pytest.approx(0, abs=1e-9)

@@ -8,6 +8,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Literal, Optional, Union
 
+import numpy as np
 from pydantic import Field, field_validator, model_validator
 
 from .common import ReportMeta, StrictModel
@@ -35,11 +36,10 @@ def check_material(value: str | None, which: str) -> str | None:
 
     if value is None:
         return value
-    keys = {"gear": cat.gear_material_keys, "wheel": cat.worm_wheel_material_keys}[which]()
     try:
         {"gear": cat.gear_material, "wheel": cat.worm_wheel_material}[which](value)
-    except KeyError:
-        raise ValueError(f"unknown material; allowed: {', '.join(keys)}") from None
+    except KeyError as exc:       # its message lists the allowed keys
+        raise ValueError(exc.args[0]) from None
     return value
 
 
@@ -216,8 +216,6 @@ class DriveParams:
 
 
 def _stage_to_si(s: DriveStage, index: int) -> StageParams:
-    import numpy as np
-
     mm = 1e-3
     return StageParams(
         type=s.type, ratio=s.ratio, z1=s.z1, z2=s.z2,
@@ -262,8 +260,6 @@ class DriveBriefParams:
 
 
 def load_to_si(ld: DriveLoad) -> DriveLoadParams:
-    import numpy as np
-
     n = ld.output_speed_rpm
     if ld.power_kW is not None:
         return DriveLoadParams(n, ld.power_kW * 1e3, "power")

@@ -93,7 +93,7 @@ def ratio_bounds(elements: list[Element], recommended: bool = True) -> tuple[flo
         elif recommended:
             lo, hi = lo * el.recommended[0], hi * el.recommended[1]
         else:
-            lo, hi = lo * 1.0, hi * el.ratio_max
+            hi *= el.ratio_max
     return lo, hi
 
 

@@ -36,8 +36,7 @@ class StageResult:
     d1: float | None = None     # pulley datum diameters [m]
     d2: float | None = None
     slip: float = 0.0
-    geometry: object = None     # gears.SpurPair | HelicalPair | WormPair (set by the strength part)
-    design: object = None       # strength design and checks of the stage (see strength part)
+    design: object = None       # drive_strength.StageDesign: geometry, strength design, checks
 
 
 @dataclass(frozen=True)
@@ -60,7 +59,7 @@ class DriveResult:
     peak_factor: float          # design torque / mean torque downstream of the flywheel
     peak_from_shaft: int | None  # first shaft carrying the peak torque (None: none)
     warnings: tuple[Finding, ...]
-    extras: dict                # shafts, bearings and keys (strength part)
+    shaft_designs: tuple        # drive_strength.ShaftDesign per shaft after the motor
 
     @property
     def motor(self) -> core.Motor:
@@ -191,8 +190,7 @@ def design_drive(dp, machine_power: float, output_rpm: float, source: str,
     return DriveResult(output_rpm, machine_power, source, eta, p_d, choice, tuple(results),
                        tuple(shafts), n_out, error, dp.speed_tolerance, dp.service_hours, dp.KA,
                        dp.bearing_eff, dp.machine_eff, peak_factor, peak_from_shaft,
-                       tuple(warnings) + _strength_warnings(results, shaft_designs),
-                       {"shafts": shaft_designs})
+                       tuple(warnings) + _strength_warnings(results, shaft_designs), shaft_designs)
 
 
 def _strength(dp, results, shafts, peak_factor, peak_from_shaft):
@@ -200,7 +198,7 @@ def _strength(dp, results, shafts, peak_factor, peak_from_shaft):
     from . import drive_strength as ds
 
     designs, worm_eff = ds.stage_designs(dp, results, shafts, peak_factor, peak_from_shaft)
-    results = [replace(r, geometry=d.geometry, design=d) for r, d in zip(results, designs)]
+    results = [replace(r, design=d) for r, d in zip(results, designs)]
     return results, worm_eff
 
 
@@ -256,7 +254,7 @@ def drive_document(d: DriveResult) -> dict:
         "motor_candidates": d.choice.candidates, "stages": d.stages, "shafts": d.shafts,
         "output_speed_rpm": d.output_speed, "speed_error": d.speed_error,
         "speed_tolerance": d.speed_tolerance, "service_hours": d.service_hours,
-        "peak_factor": d.peak_factor, "extras": d.extras,
+        "peak_factor": d.peak_factor, "shaft_designs": d.shaft_designs,
         "warnings": [w.en for w in d.warnings],
     }
 

@@ -95,8 +95,10 @@ def _gear_stage(s, n1: float, T1: float, T2: float, hours: float, KA: float) -> 
     alpha_t = math.atan(math.tan(math.radians(20)) / math.cos(beta))
     zv = [z / math.cos(beta) ** 3 for z in (z1, z2)]
     yf = [cat.tooth_factors(max(z, 17.0)) for z in zv]
-    eps_a = gears.spur_pair(1.0, z1, z2, alpha_t, math.cos(beta), 0.25).contact_ratio if not helical else \
-        (1.88 - 3.2 * (1 / z1 + 1 / z2)) * math.cos(beta)
+    # ε_α does not depend on the module: the pair itself for spur gears (with its shift),
+    # the textbook's estimate for helical ones.
+    eps_a = ((1.88 - 3.2 * (1 / z1 + 1 / z2)) * math.cos(beta) if helical
+             else gears.spur_pair(1.0, z1, z2, x1=s.x1, x2=s.x2).contact_ratio)
     eps_b = phi_d * z1 * math.tan(beta) / math.pi
     beta_b = math.atan(math.tan(beta) * math.cos(alpha_t))
     ZE = st.elastic_coefficient(mat1.E, mat1.nu, mat2.E, mat2.nu)
@@ -127,7 +129,7 @@ def _gear_stage(s, n1: float, T1: float, T2: float, hours: float, KA: float) -> 
     checks = []
     if not is_open:
         c = st.gear_contact_check(T1, K, b, d1, u, ZE, ZH, Ze, Zb, sH)
-        checks.append(replace(c, name_zh="齿面接触疲勞强度".replace("勞", "劳"), name_en="Contact fatigue (flanks)"))
+        checks.append(replace(c, name_zh="齿面接触疲劳强度", name_en="Contact fatigue (flanks)"))
     for i, who in enumerate(("小齿轮", "大齿轮")):
         c = st.gear_bending_check(T1, K, b, d1, m, yf[i][0], yf[i][1], Ye, Yb, sF[i])
         checks.append(replace(c, name_zh=f"{who}齿根弯曲疲劳强度",
@@ -241,7 +243,7 @@ def shaft_designs(dp, designs, shafts, peak_factor, peak_from_shaft, names) -> t
     mat = cat.shaft_material("45_QT")
     worm_shafts = {k for k, d in enumerate(designs) if d.kind == "worm"} | \
                   {k + 1 for k, d in enumerate(designs) if d.kind == "worm"}
-    sp_lo, sp_hi = cat.key_allowable_stress("steel", "light_shock")
+    sp_lo, _ = cat.key_allowable_stress("steel", "light_shock")
     ci_lo, _ = cat.key_allowable_stress("cast_iron", "light_shock")
     out = []
     for j in range(1, len(shafts)):
@@ -256,8 +258,9 @@ def shaft_designs(dp, designs, shafts, peak_factor, peak_from_shaft, names) -> t
             elems.append((designs[j], True, names[j]))
         info = [(_element_loads(d, drv), nm, d) for d, drv, nm in elems]
         widths = [i[0][2] or (0.06 if i[2].kind == "worm" else 0.0) for i in info]
-        inside = [i for i in info if i[0][0] and i[0][1]]
-        span = dp.stages[j - 1].span or ((sum(w for (i, w) in zip(info, widths) if i[0][0]) or 0.05) + 2 * CLEARANCE)
+        inside = [i for i in info if i[0][0]]
+        inside_width = sum(w for i, w in zip(info, widths) if i[0][0]) or 0.05
+        span = dp.stages[j - 1].span or inside_width + 2 * CLEARANCE
         loads, where = [], []
         for n, i in enumerate(inside):
             x = span * (n + 1) / (len(inside) + 1)

@@ -14,8 +14,7 @@ MM = 1e3
 def _stage_label(st, zh: bool) -> str:
     name = st.name_zh if zh else st.name_en
     if st.z1 is not None:
-        teeth = f"z₁ = {st.z1}, z₂ = {st.z2}" if st.type != "worm" else f"z₁ = {st.z1}, z₂ = {st.z2}"
-        return f"{name} ({teeth})"
+        return f"{name} (z₁ = {st.z1}, z₂ = {st.z2})"
     if st.d1 is not None:
         return f"{name} (d₁ = {f(st.d1 * MM, 0)}, d₂ = {f(st.d2 * MM, 0)} mm)"
     return name
@@ -186,7 +185,7 @@ def stage_designs(d, lang: str) -> list[dict]:
                     ["$A$", f(e["area"], 3), "m²"]]
         out.append({"title": title, "text": text, "rows": rows,
                     "formulas": [check_formula(c) for c in g.checks], "checks": _rows(check_rows(g.checks, lang), zh)})
-    for sh in d.extras.get("shafts", ()):
+    for sh in d.shaft_designs:
         title = (f"{_shaft_name(sh.index, len(d.shafts) - 1, zh)}的设计与校核" if zh else
                  f"Design and checks of {_shaft_name(sh.index, len(d.shafts) - 1, zh)}")
         res = sh.result

@@ -6,6 +6,7 @@ from pathlib import Path
 
 import numpy as np
 
+from ..core.gears import mesh_layout
 from .fmt import f
 
 DEG = 180.0 / np.pi
@@ -68,8 +69,7 @@ def gear_context(g, lang: str, figures: dict[str, str]) -> dict:
         [name("重合度", "contact ratio"), "$\\varepsilon_\\alpha$", name("见下式", "see below"), f(p.contact_ratio, 4), "—"],
     ]
     tw = np.tan(p.alpha_work)
-    ra1, ra2, rb1, rb2 = g1.da / 2, g2.da / 2, g1.db / 2, g2.db / 2
-    b1b2 = np.sqrt(ra1**2 - rb1**2) + np.sqrt(ra2**2 - rb2**2) - p.a_work * np.sin(p.alpha_work)
+    b1b2 = mesh_layout(p).action_length   # |B1B2| from the points on the line of action
     eq = {
         "eps": (rf"\varepsilon_\alpha = \frac{{z_1(\tan\alpha_{{a1}}-\tan\alpha')+z_2(\tan\alpha_{{a2}}-\tan\alpha')}}{{2\pi}}"
                 rf" = \frac{{{g1.z}\times({f(np.tan(g1.alpha_a), 5)}-{f(tw, 5)})+{g2.z}\times"
