@@ -1,0 +1,596 @@
+"""Drawing sheets (图纸): primitives in paper millimetres, drawn by two back ends.
+
+A :class:`Sheet` is a list of primitives (lines, polylines, circles, arcs, texts, filled
+polygons, dimensions) on named layers, in paper millimetres with the origin at the
+sheet's lower-left corner. :mod:`.sheet_mpl` draws it with matplotlib (vector PDF and a
+PNG preview) and :mod:`.sheet_dxf` with ezdxf (DXF for AutoCAD/CAXA), so both files
+show the same drawing. Points are complex numbers (x + iy), as in the core.
+
+A :class:`View` maps model coordinates (e.g. the mechanism in mm at a length scale, or
+a velocity polygon in m/s at μv) onto the sheet. Sheet sizes, borders, line widths and
+text heights follow GB/T 14689, 17450 and 14691 (A1 841 × 594, binding margin 25 mm,
+thick lines 0.7 mm, thin 0.25 mm, text heights 2.5/3.5/5/7/10 mm).
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Iterable
+
+import numpy as np
+
+
+@dataclass(frozen=True)
+class Layer:
+    name: str
+    description: str       # shown in the CAD layer manager
+    weight: float          # line width [mm]
+    linetype: str          # CONTINUOUS, CENTER or DASHED
+    color: int             # AutoCAD colour index (7 = black/white)
+    rgb: tuple             # colour in the PDF
+
+
+LAYERS = {layer.name: layer for layer in (
+    Layer("OUTLINE", "粗实线 outlines (links, profiles)", 0.7, "CONTINUOUS", 7, (0, 0, 0)),
+    Layer("CONSTRUCTION", "细实线 construction and thin lines", 0.25, "CONTINUOUS", 8,
+          (0.35, 0.35, 0.35)),
+    Layer("CENTER", "点画线 centre lines, pitch circles, guides", 0.25, "CENTER", 1,
+          (0.55, 0.1, 0.1)),
+    Layer("HIDDEN", "虚线 other positions, hidden lines", 0.25, "DASHED", 8, (0.4, 0.4, 0.4)),
+    Layer("DIMENSIONS", "尺寸 dimensions", 0.25, "CONTINUOUS", 3, (0, 0.35, 0)),
+    Layer("TEXT", "文字 text and labels", 0.25, "CONTINUOUS", 7, (0, 0, 0)),
+    Layer("VECTORS", "矢量 velocity, acceleration and force polygons", 0.5, "CONTINUOUS", 5,
+          (0, 0.2, 0.65)),
+    Layer("CURVES", "曲线 motion, torque and energy curves", 0.5, "CONTINUOUS", 4,
+          (0, 0.3, 0.6)),
+    Layer("FRAME", "图框 标题栏 frame and title block", 0.7, "CONTINUOUS", 7, (0, 0, 0)),
+)}
+
+SIZES = {"A0": (1189.0, 841.0), "A1": (841.0, 594.0), "A2": (594.0, 420.0),
+         "A3": (420.0, 297.0), "A4": (297.0, 210.0)}
+# GB/T 14689 margins with a binding edge: a = 25 mm left, c on the other sides.
+MARGIN_C = {"A0": 10.0, "A1": 10.0, "A2": 10.0, "A3": 5.0, "A4": 5.0}
+MARGIN_A = 25.0
+THIN = 0.25
+TEXT_HEIGHTS = (2.5, 3.5, 5.0, 7.0, 10.0)
+
+
+# -- primitives (paper mm, complex points) ------------------------------------------------
+
+@dataclass(frozen=True)
+class Line:
+    p0: complex
+    p1: complex
+    layer: str
+    weight: float | None = None      # overrides the layer's line width [mm]
+
+
+@dataclass(frozen=True)
+class Polyline:
+    points: tuple                    # complex points
+    layer: str
+    closed: bool = False
+    weight: float | None = None
+
+
+@dataclass(frozen=True)
+class Circle:
+    center: complex
+    radius: float
+    layer: str
+    weight: float | None = None
+
+
+@dataclass(frozen=True)
+class Arc:
+    center: complex
+    radius: float
+    start: float                     # [rad], counter-clockwise to ``end``
+    end: float
+    layer: str
+    weight: float | None = None
+
+
+@dataclass(frozen=True)
+class Text:
+    position: complex
+    text: str
+    height: float                    # character height [mm]
+    layer: str = "TEXT"
+    halign: str = "left"             # left | center | right
+    valign: str = "bottom"           # bottom | middle | top
+    angle: float = 0.0               # [rad]
+
+
+@dataclass(frozen=True)
+class Fill:
+    """A solid filled polygon (arrow heads, section marks)."""
+
+    points: tuple
+    layer: str
+
+
+@dataclass(frozen=True)
+class Dimension:
+    """An aligned dimension between ``p0`` and ``p1`` (paper mm), its line ``offset`` mm
+    to the left of p0→p1; ``measurement`` is the true value written (model units)."""
+
+    p0: complex
+    p1: complex
+    offset: float
+    measurement: float
+    text: str = ""                   # "" → the measurement, formatted
+    kind: str = "aligned"            # aligned; radius (p0 centre, p1 on the circle);
+    #                                  diameter (p0, p1 the ends of the diameter)
+    layer: str = "DIMENSIONS"
+    height: float = 3.5
+
+
+# -- the sheet ----------------------------------------------------------------------------
+
+@dataclass
+class Sheet:
+    size: str = "A1"
+    entities: list = field(default_factory=list)
+    info: "TitleInfo | None" = None        # set by :func:`frame`
+
+    @property
+    def width(self) -> float:
+        return SIZES[self.size][0]
+
+    @property
+    def height(self) -> float:
+        return SIZES[self.size][1]
+
+    @property
+    def inner(self) -> tuple[float, float, float, float]:
+        """The drawing area inside the border: (x0, y0, x1, y1) [mm]."""
+        c = MARGIN_C[self.size]
+        return MARGIN_A, c, self.width - c, self.height - c
+
+    def add(self, entity) -> None:
+        self.entities.append(entity)
+
+    def line(self, p0, p1, layer="OUTLINE", weight=None):
+        self.add(Line(complex(p0), complex(p1), layer, weight))
+
+    def polyline(self, points, layer="OUTLINE", closed=False, weight=None):
+        pts = tuple(complex(p) for p in np.asarray(points).ravel())
+        if len(pts) >= 2:
+            self.add(Polyline(pts, layer, closed, weight))
+
+    def circle(self, center, radius, layer="OUTLINE", weight=None):
+        self.add(Circle(complex(center), float(radius), layer, weight))
+
+    def arc(self, center, radius, start, end, layer="OUTLINE", weight=None):
+        self.add(Arc(complex(center), float(radius), float(start), float(end), layer, weight))
+
+    def text(self, position, text, height=3.5, layer="TEXT", halign="left", valign="bottom",
+             angle=0.0):
+        self.add(Text(complex(position), str(text), float(height), layer, halign, valign,
+                      float(angle)))
+
+    def fill(self, points, layer="OUTLINE"):
+        self.add(Fill(tuple(complex(p) for p in points), layer))
+
+    def arrow(self, p0, p1, layer="VECTORS", head=3.5, weight=None):
+        """A vector p0 → p1 with a filled head at p1 (no head when shorter than it)."""
+        p0, p1 = complex(p0), complex(p1)
+        self.line(p0, p1, layer, weight)
+        length = abs(p1 - p0)
+        if length > 1e-9:
+            u = (p1 - p0) / length
+            h = min(head, 0.45 * length)
+            base = p1 - h * u
+            w = 0.3 * h
+            self.fill([p1, base + 1j * u * w, base - 1j * u * w], layer)
+
+    def dimension(self, p0, p1, offset, measurement, text="", kind="aligned", height=3.5):
+        self.add(Dimension(complex(p0), complex(p1), float(offset), float(measurement), text,
+                           kind, "DIMENSIONS", height))
+
+    def view(self, origin, scale: float, flip_x: bool = False) -> "View":
+        """Model coordinates → sheet: ``origin + scale * z`` (scale = paper mm per unit)."""
+        return View(self, complex(origin), float(scale), flip_x)
+
+    def by_layer(self, layer: str) -> list:
+        return [e for e in self.entities if getattr(e, "layer", None) == layer]
+
+
+@dataclass
+class View:
+    """Draws on a sheet in model units: paper point = origin + scale · z."""
+
+    sheet: Sheet
+    origin: complex
+    scale: float
+    flip_x: bool = False
+
+    def p(self, z):
+        z = np.asarray(z, dtype=complex)
+        if self.flip_x:
+            z = -z.conj()
+        out = self.origin + self.scale * z
+        return complex(out) if out.ndim == 0 else out
+
+    def line(self, z0, z1, layer="OUTLINE", weight=None):
+        self.sheet.line(self.p(z0), self.p(z1), layer, weight)
+
+    def polyline(self, zs, layer="OUTLINE", closed=False, weight=None):
+        self.sheet.polyline(self.p(zs), layer, closed, weight)
+
+    def circle(self, z, r, layer="OUTLINE", weight=None):
+        self.sheet.circle(self.p(z), r * self.scale, layer, weight)
+
+    def arc(self, z, r, start, end, layer="OUTLINE", weight=None):
+        if self.flip_x:
+            start, end = np.pi - end, np.pi - start
+        self.sheet.arc(self.p(z), r * self.scale, start, end, layer, weight)
+
+    def text(self, z, text, height=3.5, **kw):
+        self.sheet.text(self.p(z), text, height, **kw)
+
+    def arrow(self, z0, z1, layer="VECTORS", head=3.5, weight=None):
+        self.sheet.arrow(self.p(z0), self.p(z1), layer, head, weight)
+
+    def fill(self, zs, layer="OUTLINE"):
+        self.sheet.fill(self.p(np.asarray(zs)), layer)
+
+    def dimension(self, z0, z1, offset, text="", kind="aligned", height=3.5, measurement=None):
+        """Aligned dimension in model units; ``offset`` in paper mm; writes the true length."""
+        m = abs(complex(z1) - complex(z0)) if measurement is None else measurement
+        self.sheet.dimension(self.p(z0), self.p(z1), offset, m, text, kind, height)
+
+
+# -- helpers shared by every sheet --------------------------------------------------------
+
+def text_width(text: str, height: float) -> float:
+    """Estimated width of ``text`` [mm]: CJK characters are square, Latin ~0.6 h."""
+    wide = sum(1 for ch in text if ord(ch) > 0x2E80)
+    return height * (wide + 0.62 * (len(text) - wide))
+
+
+def fit_height(text: str, max_width: float, height: float, smallest: float = 2.5) -> float:
+    """The largest text height ≤ ``height`` for which ``text`` fits ``max_width``."""
+    w = text_width(text, height)
+    return height if w <= max_width else max(smallest, height * max_width / w)
+
+
+def nice_step(span: float, count: int = 5) -> float:
+    """A 1-2-2.5-5 × 10ⁿ step giving about ``count`` intervals over ``span``."""
+    if not span > 0:
+        return 1.0
+    raw = span / count
+    mag = 10.0 ** np.floor(np.log10(raw))
+    for m in (1.0, 2.0, 2.5, 5.0, 10.0):
+        if raw <= m * mag * (1 + 1e-9):
+            return m * mag
+    return 10.0 * mag
+
+
+def nice_scale(value: float, available: float) -> float:
+    """Smallest 1-2-5 × 10ⁿ units-per-mm scale that draws ``value`` within ``available`` mm.
+
+    Used for μv [(m/s)/mm], μa [(m/s²)/mm] and μF [N/mm]."""
+    if not value > 0:
+        return 1.0
+    raw = value / available
+    mag = 10.0 ** np.floor(np.log10(raw))
+    for m in (1.0, 2.0, 5.0, 10.0):
+        if m * mag >= raw * (1 - 1e-12):
+            return m * mag
+    return 10.0 * mag
+
+
+# GB/T 14690 reduction scales 1:n, preferred first within each decade.
+_REDUCTIONS = (1, 1.5, 2, 2.5, 3, 4, 5, 6)
+
+
+def length_scale(extent_mm: complex, box_mm: complex) -> float:
+    """The largest GB reduction 1:n (returned as n ≥ 1) that fits a model of size
+    ``extent_mm`` (width + i·height) into ``box_mm``."""
+    need = max(extent_mm.real / box_mm.real, extent_mm.imag / box_mm.imag, 1.0)
+    decade = 1.0
+    while True:
+        for m in _REDUCTIONS:
+            if m * decade >= need * (1 - 1e-12):
+                return m * decade
+        decade *= 10.0
+
+
+def scale_text(n: float) -> str:
+    """'1:5', '1:2.5', '1:1'."""
+    return f"1:{n:g}"
+
+
+def format_number(x: float, digits: int = 4) -> str:
+    """Up to ``digits`` significant figures without trailing zeros; '−' as the minus sign."""
+    if x == 0 or not np.isfinite(x):
+        return "0"
+    text = f"{x:.{digits}g}" if abs(x) >= 1e-3 else f"{x:.2e}"
+    if "e" not in text and "." in text:
+        text = text.rstrip("0").rstrip(".")
+    return text
+
+
+def ground(sheet_or_view, z, size=6.0, angle=-np.pi / 2):
+    """A frame pivot: a small circle on a triangle with a hatched ground line below.
+
+    ``size`` in paper mm; ``angle`` is the direction from the pivot to the ground."""
+    s = sheet_or_view.sheet if isinstance(sheet_or_view, View) else sheet_or_view
+    p = sheet_or_view.p(z) if isinstance(sheet_or_view, View) else complex(z)
+    u = np.exp(1j * angle)
+    n = 1j * u
+    r = 0.22 * size
+    s.circle(p, r, "OUTLINE", THIN * 2)
+    a = p + u * r
+    left, right = p + u * size - n * 0.55 * size, p + u * size + n * 0.55 * size
+    s.line(a, left, "OUTLINE", 0.35)
+    s.line(a, right, "OUTLINE", 0.35)
+    g0, g1 = left - n * 0.35 * size, right + n * 0.35 * size
+    s.line(g0, g1, "OUTLINE", 0.35)
+    for t in np.linspace(0, 1, 6):
+        q = g0 + (g1 - g0) * t
+        s.line(q, q + 0.35 * size * (u - n * 0.6), "CONSTRUCTION")
+
+
+def slider_block(sheet_or_view, z, angle, length=9.0, width=5.0, layer="OUTLINE"):
+    """A slider block (rectangle) centred on ``z`` along ``angle`` [rad], size in paper mm."""
+    s = sheet_or_view.sheet if isinstance(sheet_or_view, View) else sheet_or_view
+    p = sheet_or_view.p(z) if isinstance(sheet_or_view, View) else complex(z)
+    if isinstance(sheet_or_view, View) and sheet_or_view.flip_x:
+        angle = np.pi - angle
+    u = np.exp(1j * angle)
+    n = 1j * u
+    corners = [p + 0.5 * (sx * length * u + sy * width * n)
+               for sx, sy in ((-1, -1), (1, -1), (1, 1), (-1, 1))]
+    s.polyline(corners, layer, closed=True, weight=0.5)
+
+
+def pin(sheet_or_view, z, radius=1.2):
+    """A revolute joint: a small open circle."""
+    s = sheet_or_view.sheet if isinstance(sheet_or_view, View) else sheet_or_view
+    p = sheet_or_view.p(z) if isinstance(sheet_or_view, View) else complex(z)
+    s.circle(p, radius, "OUTLINE", 0.35)
+
+
+# -- frame and title block ----------------------------------------------------------------
+
+@dataclass(frozen=True)
+class TitleInfo:
+    """What the title block (标题栏) shows; strings as printed."""
+
+    drawing: str                 # 图名, e.g. 牛头刨床导杆机构运动分析图
+    project: str                 # the brief's title (设计题目)
+    student: str = ""
+    student_id: str = ""
+    class_name: str = ""
+    teacher: str = ""
+    date: str = ""
+    scale: str = ""
+    number: str = ""             # 图号
+    sheet_no: int = 1
+    sheets: int = 1
+    lang: str = "zh"
+
+
+TITLE_LABELS = {
+    "zh": {"drawn": "设计", "id": "学号", "class": "班级", "date": "日期", "checked": "审核",
+           "teacher": "指导教师", "grade": "成绩", "scale": "比例", "size": "图幅",
+           "number": "图号", "sheet": "第 {i} 张  共 {n} 张", "course": "机械原理课程设计"},
+    "en": {"drawn": "Drawn", "id": "Student No.", "class": "Class", "date": "Date",
+           "checked": "Checked", "teacher": "Supervisor", "grade": "Grade", "scale": "Scale",
+           "size": "Size", "number": "Drg. No.", "sheet": "Sheet {i} of {n}",
+           "course": "Theory of Machines: course design"},
+}
+
+TITLE_BLOCK_SIZE = (180.0, 40.0)
+
+
+def frame(sheet: Sheet, info: TitleInfo) -> tuple[float, float, float, float]:
+    """Draw the trimmed edge, the border and the title block; return the area inside the
+    border (x0, y0, x1, y1). Callers keep clear of :func:`title_block_box`."""
+    sheet.info = info
+    w, h = sheet.width, sheet.height
+    sheet.polyline([0, w, w + 1j * h, 1j * h], "FRAME", closed=True, weight=THIN)
+    x0, y0, x1, y1 = sheet.inner
+    sheet.polyline([x0 + 1j * y0, x1 + 1j * y0, x1 + 1j * y1, x0 + 1j * y1], "FRAME",
+                   closed=True)
+    _title_block(sheet, info)
+    return sheet.inner
+
+
+def title_block_box(sheet: Sheet) -> tuple[float, float, float, float]:
+    """(x0, y0, x1, y1) of the title block in the lower-right corner."""
+    _, y0, x1, _ = sheet.inner
+    bw, bh = TITLE_BLOCK_SIZE
+    return x1 - bw, y0, x1, y0 + bh
+
+
+def _title_block(sheet: Sheet, info: TitleInfo) -> None:
+    lab = TITLE_LABELS[info.lang]
+    bx0, by0, bx1, by1 = title_block_box(sheet)
+    row = 8.0
+    sheet.polyline([bx0 + 1j * by0, bx1 + 1j * by0, bx1 + 1j * by1, bx0 + 1j * by1], "FRAME",
+                   closed=True)
+    mid = bx0 + 90.0
+    sheet.line(mid + 1j * by0, mid + 1j * by1, "FRAME")
+    for k in range(1, 5):                                    # left half: 5 rows
+        y = by0 + k * row
+        sheet.line(bx0 + 1j * y, mid + 1j * y, "FRAME", THIN)
+    for x in (15.0, 45.0, 60.0):
+        sheet.line(bx0 + x + 1j * (by0 + row), bx0 + x + 1j * by1, "FRAME", THIN)
+    for y in (by0 + row, by0 + 2 * row):                     # right half: 2 rows + title
+        sheet.line(mid + 1j * y, bx1 + 1j * y, "FRAME", THIN)
+    for x in (15.0, 45.0, 60.0):
+        sheet.line(mid + x + 1j * by0, mid + x + 1j * (by0 + 2 * row), "FRAME", THIN)
+
+    def cell(x, y, wdt, text, height=3.5):
+        if text:
+            hh = fit_height(text, wdt - 2.0, height)
+            sheet.text(x + wdt / 2 + 1j * (y + row / 2), text, hh, "TEXT", "center", "middle")
+
+    rows = [(lab["drawn"], info.student, lab["date"], info.date),
+            (lab["id"], info.student_id, lab["class"], info.class_name),
+            (lab["checked"], "", lab["date"], ""),
+            (lab["teacher"], info.teacher, lab["grade"], "")]
+    for k, (a, b, c, d) in enumerate(rows):
+        y = by1 - (k + 1) * row
+        cell(bx0, y, 15, a, 2.5)
+        cell(bx0 + 15, y, 30, b)
+        cell(bx0 + 45, y, 15, c, 2.5)
+        cell(bx0 + 60, y, 30, d)
+    cell(bx0, by0, 90, lab["course"], 3.5)
+    cell(mid, by0 + row, 15, lab["scale"], 2.5)
+    cell(mid + 15, by0 + row, 30, info.scale)
+    cell(mid + 45, by0 + row, 15, lab["size"], 2.5)
+    cell(mid + 60, by0 + row, 30, sheet.size)
+    cell(mid, by0, 15, lab["number"], 2.5)
+    cell(mid + 15, by0, 30, info.number)
+    cell(mid + 45, by0, 45, lab["sheet"].format(i=info.sheet_no, n=info.sheets), 2.5)
+    top = by0 + 2 * row
+    hd = fit_height(info.drawing, 86.0, 7.0)
+    sheet.text(mid + 45 + 1j * (top + 15.0), info.drawing, hd, "TEXT", "center", "middle")
+    hp = fit_height(info.project, 86.0, 3.5)
+    sheet.text(mid + 45 + 1j * (top + 5.0), info.project, hp, "TEXT", "center", "middle")
+
+
+def heading(sheet: Sheet, position, text: str, height: float = 5.0):
+    """A panel title, centred at ``position`` (paper mm)."""
+    sheet.text(position, text, height, "TEXT", "center", "bottom")
+
+
+# -- charts (curves against an abscissa, drawn with primitives) --------------------------
+
+@dataclass(frozen=True)
+class Series:
+    y: np.ndarray
+    label: str = ""
+    layer: str = "CURVES"
+    weight: float | None = None
+
+
+def chart(sheet: Sheet, box: tuple[float, float, float, float], x: np.ndarray,
+          series: Iterable[Series], *, xlabel: str, ylabel: str, title: str = "",
+          xticks: Iterable[float] | None = None, shade: Iterable[tuple[float, float]] = (),
+          marks: Iterable[tuple[float, float, str]] = (), hlines: Iterable[tuple[float, str]] = (),
+          ylim: tuple[float, float] | None = None) -> "ChartMap":
+    """A framed chart in ``box`` = (x0, y0, x1, y1) paper mm with a grid, tick labels and
+    axis labels; returns the data → paper map (separate x and y scales)."""
+    series = list(series)
+    x = np.asarray(x, dtype=float)
+    x0, y0, x1, y1 = box
+    xs = np.asarray(list(xticks) if xticks is not None else [], dtype=float)
+    xlo, xhi = (float(xs[0]), float(xs[-1])) if len(xs) else (float(x.min()), float(x.max()))
+    if ylim is None:
+        lo = min(float(np.min(s.y)) for s in series)
+        hi = max(float(np.max(s.y)) for s in series)
+        lo, hi = min(lo, 0.0), max(hi, 0.0)
+        step = nice_step(hi - lo, 5)
+        lo, hi = np.floor(lo / step - 1e-9) * step, np.ceil(hi / step + 1e-9) * step
+        if hi - lo < 1e-12:
+            lo, hi, step = -1.0, 1.0, 1.0
+    else:
+        lo, hi = ylim
+        step = nice_step(hi - lo, 5)
+    sx = (x1 - x0) / (xhi - xlo)
+    sy = (y1 - y0) / (hi - lo)
+    m = ChartMap(x0, y0, xlo, lo, sx, sy)
+    for a, b in shade:                       # working stroke etc.: hatched band borders
+        for v in (a, b):
+            if xlo <= v <= xhi:
+                sheet.line(m.p(v, lo), m.p(v, hi), "HIDDEN")
+    for v in np.arange(lo, hi + step / 2, step):
+        y = m.p(xlo, v).imag
+        sheet.line(x0 + 1j * y, x1 + 1j * y, "CONSTRUCTION", 0.13)
+        sheet.text(x0 - 1.5 + 1j * y, format_number(v), 2.5, "TEXT", "right", "middle")
+    for v in xs:
+        xp = m.p(v, lo).real
+        sheet.line(xp + 1j * y0, xp + 1j * y1, "CONSTRUCTION", 0.13)
+        sheet.text(xp + 1j * (y0 - 1.5), format_number(v), 2.5, "TEXT", "center", "top")
+    sheet.polyline([x0 + 1j * y0, x1 + 1j * y0, x1 + 1j * y1, x0 + 1j * y1], "CONSTRUCTION",
+                   closed=True, weight=0.35)
+    if lo < 0 < hi:
+        sheet.line(m.p(xlo, 0), m.p(xhi, 0), "CONSTRUCTION", 0.35)
+    for value, label in hlines:
+        sheet.line(m.p(xlo, value), m.p(xhi, value), "HIDDEN")
+        if label:
+            sheet.text(m.p(xhi, value) + (-1.0 + 1.0j), label, 2.5, "TEXT", "right", "bottom")
+    for s in series:
+        sheet.polyline(m.p(x, np.asarray(s.y, dtype=float)), s.layer, weight=s.weight)
+    for xv, yv, label in marks:
+        p = m.p(xv, yv)
+        sheet.circle(p, 0.8, "CURVES", 0.25)
+        if label:
+            sheet.text(p + 1.2 + 1.2j, label, 2.5, "TEXT")
+    sheet.text((x0 + x1) / 2 + 1j * (y0 - 6.5), xlabel, 3.5, "TEXT", "center", "top")
+    sheet.text(x0 - 11.0 + 1j * (y0 + y1) / 2, ylabel, 3.5, "TEXT", "center", "bottom",
+               np.pi / 2)
+    if title:
+        heading(sheet, (x0 + x1) / 2 + 1j * (y1 + 2.0), title, 5.0)
+    return m
+
+
+@dataclass(frozen=True)
+class ChartMap:
+    """Data (x, y) → paper point of a chart."""
+
+    x0: float
+    y0: float
+    xlo: float
+    ylo: float
+    sx: float
+    sy: float
+
+    def p(self, x, y):
+        out = (self.x0 + (np.asarray(x, dtype=float) - self.xlo) * self.sx
+               + 1j * (self.y0 + (np.asarray(y, dtype=float) - self.ylo) * self.sy))
+        return complex(out) if np.ndim(out) == 0 else out
+
+
+class LabelPlacer:
+    """Places point labels so that they do not overlap each other or marked obstacles.
+
+    Each label goes to the first free spot among eight directions around its anchor
+    (starting with the preferred one) at one and then two offsets."""
+
+    def __init__(self, sheet: Sheet):
+        self.sheet = sheet
+        self.boxes: list[tuple[float, float, float, float]] = []
+
+    def block(self, z: complex, radius: float = 1.0) -> None:
+        """Mark a point (e.g. a polygon vertex) that labels must keep clear of."""
+        self.boxes.append((z.real - radius, z.imag - radius, z.real + radius, z.imag + radius))
+
+    def block_segment(self, a: complex, b: complex, step: float = 2.0) -> None:
+        count = max(2, int(abs(b - a) / step) + 1)
+        for t in np.linspace(0.0, 1.0, count):
+            self.block(a + (b - a) * t, 0.4)
+
+    def _free(self, box) -> bool:
+        x0, y0, x1, y1 = box
+        return all(x1 <= b[0] or x0 >= b[2] or y1 <= b[1] or y0 >= b[3] for b in self.boxes)
+
+    def place(self, anchor: complex, text: str, height: float = 3.5,
+              prefer: complex = 1j, gap: float = 2.5, layer: str = "TEXT") -> complex:
+        w, h = text_width(text, height), height
+        u = prefer / abs(prefer) if abs(prefer) > 1e-12 else 1j
+        turns = [0, 1, -1, 2, -2, 3, -3, 4]
+        best = None
+        for dist in (gap, 2.0 * gap, 3.2 * gap):
+            for t in turns:
+                d = u * np.exp(1j * t * np.pi / 4)
+                # centre so that the box edge, not its centre, sits ``dist`` from the anchor
+                c = anchor + d * (dist + 0.5 * abs(d.real) * w + 0.5 * abs(d.imag) * h)
+                box = (c.real - w / 2, c.imag - h / 2, c.real + w / 2, c.imag + h / 2)
+                if self._free(box):
+                    best = (c, box)
+                    break
+            if best is not None:
+                break
+        if best is None:
+            c = anchor + u * (gap + 0.5 * w)
+            best = (c, (c.real - w / 2, c.imag - h / 2, c.real + w / 2, c.imag + h / 2))
+        c, box = best
+        self.boxes.append(box)
+        self.sheet.text(c, text, height, layer, "center", "middle")
+        return c

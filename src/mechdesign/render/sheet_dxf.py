@@ -1,0 +1,114 @@
+"""Write a :class:`~.sheet.Sheet` as DXF with ezdxf: paper millimetres 1:1 on named layers
+(line weight, line type and colour set per layer, so the drawing prints by layer in
+AutoCAD or CAXA); dimensions are real DIMENSION entities that measure the true (model)
+length through DIMLFAC, texts use the GB fonts gbenor.shx + gbcbig.shx."""
+from __future__ import annotations
+
+import os
+from pathlib import Path
+
+import numpy as np
+
+from .sheet import LAYERS, Arc, Circle, Dimension, Fill, Line, Polyline, Sheet, Text
+
+TEXT_STYLE = "GB"
+_ALIGN = {("left", "bottom"): "BOTTOM_LEFT", ("center", "bottom"): "BOTTOM_CENTER",
+          ("right", "bottom"): "BOTTOM_RIGHT", ("left", "middle"): "MIDDLE_LEFT",
+          ("center", "middle"): "MIDDLE_CENTER", ("right", "middle"): "MIDDLE_RIGHT",
+          ("left", "top"): "TOP_LEFT", ("center", "top"): "TOP_CENTER",
+          ("right", "top"): "TOP_RIGHT"}
+
+
+def _lineweight(mm: float) -> int:
+    """Nearest DXF standard line weight [1/100 mm]."""
+    valid = (0, 5, 9, 13, 15, 18, 20, 25, 30, 35, 40, 50, 53, 60, 70, 80, 90, 100)
+    return min(valid, key=lambda v: abs(v - mm * 100))
+
+
+def build_document(sheet: Sheet, title: str = ""):
+    """The ezdxf document of ``sheet`` (not yet saved)."""
+    import ezdxf
+    from ezdxf.enums import TextEntityAlignment
+
+    doc = ezdxf.new("R2010", setup=True, units=4)        # 4 = millimetres
+    doc.header["$LWDISPLAY"] = 1
+    doc.header["$LTSCALE"] = 1.0
+    doc.header["$PSLTSCALE"] = 0
+    doc.header["$LIMMAX"] = (sheet.width, sheet.height)
+    if title:
+        doc.header["$PROJECTNAME"] = title[:255]
+    style = doc.styles.add(TEXT_STYLE, font="gbenor.shx")
+    style.dxf.bigfont = "gbcbig.shx"
+    style.dxf.width = 0.7
+    for lay in LAYERS.values():
+        layer = doc.layers.add(lay.name, color=lay.color, linetype=lay.linetype,
+                               lineweight=_lineweight(lay.weight))
+        layer.description = lay.description
+    dimstyle = doc.dimstyles.get("EZDXF")
+    dimstyle.dxf.dimtxsty = TEXT_STYLE
+    msp = doc.modelspace()
+
+    def attribs(e):
+        out = {"layer": e.layer}
+        w = getattr(e, "weight", None)
+        if w is not None and abs(w - LAYERS[e.layer].weight) > 1e-9:
+            out["lineweight"] = _lineweight(w)
+        return out
+
+    for e in sheet.entities:
+        if isinstance(e, Line):
+            msp.add_line((e.p0.real, e.p0.imag), (e.p1.real, e.p1.imag), dxfattribs=attribs(e))
+        elif isinstance(e, Polyline):
+            msp.add_lwpolyline([(p.real, p.imag) for p in e.points], close=e.closed,
+                               dxfattribs=attribs(e))
+        elif isinstance(e, Circle):
+            msp.add_circle((e.center.real, e.center.imag), e.radius, dxfattribs=attribs(e))
+        elif isinstance(e, Arc):
+            msp.add_arc((e.center.real, e.center.imag), e.radius, np.degrees(e.start),
+                        np.degrees(e.end), dxfattribs=attribs(e))
+        elif isinstance(e, Fill):
+            hatch = msp.add_hatch(color=256, dxfattribs={"layer": e.layer})
+            hatch.paths.add_polyline_path([(p.real, p.imag) for p in e.points], is_closed=True)
+        elif isinstance(e, Text):
+            t = msp.add_text(e.text, height=e.height, rotation=np.degrees(e.angle),
+                             dxfattribs={"layer": e.layer, "style": TEXT_STYLE})
+            t.set_placement((e.position.real, e.position.imag),
+                            align=TextEntityAlignment[_ALIGN[(e.halign, e.valign)]])
+        elif isinstance(e, Dimension):
+            _dimension(msp, e)
+    return doc
+
+
+def _dimension(msp, d: Dimension) -> None:
+    paper = abs(d.p1 - d.p0)
+    override = {"dimtxt": d.height, "dimasz": 2.5, "dimexe": 1.5, "dimexo": 1.0,
+                "dimgap": 0.8, "dimtad": 1, "dimdec": 2, "dimzin": 8, "dimtih": 0, "dimtoh": 0,
+                "dimlfac": d.measurement / paper if paper else 1.0}
+    attrs = {"layer": d.layer}
+    if d.kind == "aligned":
+        dim = msp.add_aligned_dim(p1=(d.p0.real, d.p0.imag), p2=(d.p1.real, d.p1.imag),
+                                  distance=d.offset, text=d.text or "<>", dimstyle="EZDXF",
+                                  override=override, dxfattribs=attrs)
+    elif d.kind == "radius":
+        dim = msp.add_radius_dim(center=(d.p0.real, d.p0.imag), mpoint=(d.p1.real, d.p1.imag),
+                                 text=d.text or "<>", dimstyle="EZ_RADIUS",
+                                 override=override, dxfattribs=attrs)
+    else:
+        centre = (d.p0 + d.p1) / 2          # p0, p1: the ends of the diameter
+        dim = msp.add_diameter_dim(center=(centre.real, centre.imag),
+                                   mpoint=(d.p1.real, d.p1.imag), text=d.text or "<>",
+                                   dimstyle="EZ_RADIUS", override=override, dxfattribs=attrs)
+    dim.render()
+
+
+def write_dxf(sheet: Sheet, path: Path, title: str = "") -> Path:
+    """Save ``sheet`` as a DXF file (written atomically)."""
+    path = Path(path)
+    doc = build_document(sheet, title)
+    tmp = path.with_name(f".{path.name}.{os.getpid()}.tmp")
+    try:
+        doc.saveas(tmp, encoding="utf-8")
+        os.replace(tmp, path)
+    finally:
+        tmp.unlink(missing_ok=True)
+    return path

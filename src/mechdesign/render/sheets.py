@@ -1,0 +1,119 @@
+"""The drawing sheets of a run: which sheets a machine's results give, their title
+blocks, and the files (vector PDF, DXF, PNG preview for the report).
+
+Sheets: the linkage sheet (A1) when the results have the shaper's linkage analysis, the
+cam sheet (A2) when they have a synthesised cam, the gear meshing sheet when they have
+a gear pair. Files go to ``sheets/`` (``NAME.pdf`` with the pdf format, ``NAME.dxf``
+with dxf); the previews to the figures folder.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Callable
+
+from .sheet import Sheet, TitleInfo
+
+TITLES = {
+    "linkage": {"zh": "导杆机构运动及动力分析图", "en": "Linkage: kinematic and force analysis"},
+    "cam": {"zh": "凸轮机构设计图", "en": "Cam mechanism design"},
+    "gear": {"zh": "齿轮啮合图", "en": "Gear meshing drawing"},
+}
+
+
+@dataclass(frozen=True)
+class SheetFiles:
+    """One written sheet: its name, title and files (relative to the report folder)."""
+
+    name: str
+    title: str
+    size: str
+    scale: str
+    preview: str
+    pdf: str | None
+    dxf: str | None
+
+
+def _builders(results: dict, brief) -> list[tuple[str, Callable[[TitleInfo, str], Sheet]]]:
+    out = []
+    if "motion" in results and "forces" in results:
+        settings = getattr(brief, "sheets", None)
+        chosen = None
+        if settings is not None and settings.polygon_positions is not None:
+            chosen = [str(p) for p in settings.polygon_positions]
+
+        def linkage(info, lang):
+            from .linkage_sheet import linkage_sheet
+
+            return linkage_sheet(results, info, lang, chosen)[0]
+
+        out.append(("linkage", linkage))
+    cam = results.get("cam")
+    if cam is not None and hasattr(cam, "grid"):
+        def cam_builder(info, lang):
+            from .cam_sheet import cam_sheet
+
+            return cam_sheet(cam, info, lang)
+
+        out.append(("cam", cam_builder))
+    gear = results.get("gear")
+    if gear is not None:
+        def gear_builder(info, lang):
+            from .gear_sheet import gear_sheet
+
+            return gear_sheet(gear.pair, info, lang)
+
+        out.append(("gear", gear_builder))
+    return out
+
+
+def sheet_names(results: dict, brief) -> list[str]:
+    return [name for name, _ in _builders(results, brief)]
+
+
+def title_info(meta, drawing: str, number: str, index: int, count: int, lang: str) -> TitleInfo:
+    return TitleInfo(drawing=drawing, project=meta.title, student=meta.student,
+                     student_id=meta.student_id, class_name=meta.class_name, teacher=meta.teacher,
+                     date=meta.date, number=number, sheet_no=index, sheets=count, lang=lang)
+
+
+def make_sheets(results: dict, brief, folder: Path, fig_dir: Path, lang: str,
+                formats: tuple[str, ...], progress: Callable[[str], None] | None = None
+                ) -> list[SheetFiles]:
+    """Build and write every sheet of ``results``; return what was written."""
+    from .sheet_mpl import write_sheet
+
+    say = progress or (lambda _m: None)
+    builders = _builders(results, brief)
+    settings = getattr(brief, "sheets", None)
+    prefix = settings.drawing_number if settings is not None else "MD"
+    out = []
+    sheet_dir = Path(folder) / "sheets"
+    for k, (name, build) in enumerate(builders, start=1):
+        say(f"sheet {k}/{len(builders)}: {name}")
+        info = title_info(brief.report, TITLES[name][lang], f"{prefix}-{k:02d}" if prefix else "",
+                          k, len(builders), lang)
+        sheet = build(info, lang)
+        preview = Path(fig_dir) / f"sheet_{name}.png"
+        pdf = dxf = None
+        if "pdf" in formats or "dxf" in formats:
+            sheet_dir.mkdir(exist_ok=True)
+        stem = f"{name}_{sheet.size}"
+        if "pdf" in formats:
+            pdf = sheet_dir / f"{stem}.pdf"
+        write_sheet(sheet, pdf=pdf, png=preview, png_width_px=2400)
+        if "dxf" in formats:
+            from .sheet_dxf import write_dxf
+
+            dxf = write_dxf(sheet, sheet_dir / f"{stem}.dxf", info.drawing)
+        rel = Path(folder)
+        out.append(SheetFiles(name, info.drawing, sheet.size, _scale_of(sheet),
+                              preview.relative_to(rel).as_posix(),
+                              None if pdf is None else pdf.relative_to(rel).as_posix(),
+                              None if dxf is None else dxf.relative_to(rel).as_posix()))
+    return out
+
+
+def _scale_of(sheet: Sheet) -> str:
+    """The scale written in the title block."""
+    return sheet.info.scale if sheet.info is not None else ""

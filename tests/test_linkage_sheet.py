@@ -1,0 +1,254 @@
+"""The shaper's A1 sheet: polygons built as the graphical method builds them, drawn to
+scale, and a DXF that re-opens with the expected layers, vectors and dimensions.
+
+References: the vector equations' directions (⊥ / ∥ to the links), closed forms
+(ω2·L_O2A, ω2²·L_O2A), finite differences of the positions for the velocities, the
+equilibrium of each Assur group (force polygons close), the brief's H and L_O2O3."""
+from __future__ import annotations
+
+import re
+
+import numpy as np
+import pytest
+
+ezdxf = pytest.importorskip("ezdxf")
+
+from mechdesign.render.linkage_sheet import default_positions, linkage_sheet, polygons  # noqa: E402
+from mechdesign.render.sheet import SIZES, Dimension, Text, TitleInfo, text_width  # noqa: E402
+from mechdesign.render.sheet_dxf import write_dxf  # noqa: E402
+
+INFO = TitleInfo("导杆机构运动及动力分析图", "牛头刨床", "张三", "2023001", "机械 1", "李老师",
+                 "2026-11-22", number="MD-01", sheet_no=1, sheets=3)
+
+
+@pytest.fixture(scope="module")
+def shaper_results():
+    from mechdesign.brief.loader import load_brief
+    from mechdesign.machines import get_machine, stages_for
+    from mechdesign.pipeline import run_stages
+
+    b = load_brief("designs/shaper.yaml")
+    m = get_machine(b.machine)
+    p = m.to_params(b)
+    results, _ = run_stages(stages_for(m, p), {"params": p, "brief": b}, None)
+    return results
+
+
+@pytest.fixture(scope="module")
+def sheet(shaper_results):
+    return linkage_sheet(shaper_results, INFO, "zh", ["4", "10"])
+
+
+def _unit(z):
+    return z / abs(z)
+
+
+def _perp(a, b):
+    return abs((np.conj(_unit(a)) * _unit(b)).real)
+
+
+def _par(a, b):
+    return abs((np.conj(_unit(a)) * _unit(b)).imag)
+
+
+@pytest.mark.parametrize("label", ["4", "10", "1", "7"])
+def test_velocity_polygon_follows_the_vector_equations(shaper_results, label):
+    r = shaper_results
+    vel, acc, f56, f34 = polygons(r, label)
+    k, motion, p = r["kinematics"], r["motion"], r["params"]
+    i = k.grid_size + list(k.positions.labels).index(label)
+    P = {n: motion.points[n].pos[i] for n in ("O2", "O3", "A", "B", "F")}
+    v = {x.name: x.value for x in vel.vectors}
+    L_O2A = abs(P["A"] - P["O2"])
+    w2 = abs(p.crank_omega)
+    assert abs(v["pa3"]) == pytest.approx(w2 * L_O2A, rel=1e-12)
+    assert _perp(v["pa3"], P["A"] - P["O2"]) < 1e-9
+    assert _perp(v["pa4"], P["A"] - P["O3"]) < 1e-9
+    assert _par(v["a3a4"], P["A"] - P["O3"]) < 1e-9
+    # image of the bar: pb/pa4 = O3B/O3A, same direction
+    ratio = abs(P["B"] - P["O3"]) / abs(P["A"] - P["O3"])
+    assert abs(v["pb"] - ratio * v["pa4"]) < 1e-9 * abs(v["pb"])
+    assert abs(v["pf"].imag) < 1e-9 * abs(v["pb"])           # ram moves along its guide
+    assert _perp(v["bf"], P["F"] - P["B"]) < 1e-7 or abs(v["bf"]) < 1e-9
+    # the polygon's own closure: pa3 + a3a4 = pa4, pb + bf = pf
+    assert abs(v["pa3"] + v["a3a4"] - v["pa4"]) < 1e-12
+    assert abs(v["pb"] + v["bf"] - v["pf"]) < 1e-12
+    # finite differences of the positions alone (central, small crank step)
+    mech = r["mechanism"]
+    h = 1e-6
+    phi = k.crank_angle[i]
+    ahead, back = mech.solve(np.array([phi + h])), mech.solve(np.array([phi - h]))
+    dt = h / w2 * np.sign(p.crank_omega)
+    for name, key in (("B", "pb"), ("F", "pf"), ("A", "pa3")):
+        fd = (ahead.points[name].pos[0] - back.points[name].pos[0]) / (2 * dt)
+        assert abs(fd - v[key]) < 1e-6 * max(1.0, abs(v[key]))
+
+
+@pytest.mark.parametrize("label", ["4", "10", "2"])
+def test_acceleration_polygon_components(shaper_results, label):
+    r = shaper_results
+    vel, acc, _, _ = polygons(r, label)
+    k, motion, p = r["kinematics"], r["motion"], r["params"]
+    i = k.grid_size + list(k.positions.labels).index(label)
+    P = {n: motion.points[n].pos[i] for n in ("O2", "O3", "A", "B", "F")}
+    a = {x.name: x.value for x in acc.vectors}
+    v = {x.name: x.value for x in vel.vectors}
+    w2 = abs(p.crank_omega)
+    rA = P["A"] - P["O3"]
+    # crank pin: centripetal only, towards O2
+    assert abs(a["p'a3'"] - w2 ** 2 * (P["O2"] - P["A"])) < 1e-9
+    w4 = abs(v["pa4"]) / abs(rA)
+    assert abs(a["p'n4'"]) == pytest.approx(w4 ** 2 * abs(rA), rel=1e-9)
+    assert _par(a["p'n4'"], -rA) < 1e-9 and (np.conj(a["p'n4'"]) * -rA).real > 0
+    assert _perp(a["n4'a4'"], rA) < 1e-9
+    # Coriolis: 2 ω4 v_A4A3, perpendicular to the bar
+    assert abs(a["a3'k'"]) == pytest.approx(2 * w4 * abs(v["a3a4"]), rel=1e-9)
+    assert _perp(a["a3'k'"], rA) < 1e-9
+    assert _par(a["k'a4'"], rA) < 1e-9
+    # both routes reach a4'
+    assert abs(a["p'n4'"] + a["n4'a4'"] - (a["p'a3'"] + a["a3'k'"] + a["k'a4'"])) < 1e-9
+    assert abs(a["p'f'"].imag) < 1e-9 * abs(a["p'b'"])
+    assert _perp(a["n5'f'"], P["F"] - P["B"]) < 1e-6 or abs(a["n5'f'"]) < 1e-9
+    # finite differences of the ram velocity
+    mech = r["mechanism"]
+    h = 1e-5
+    phi = k.crank_angle[i]
+    dt = h / w2 * np.sign(p.crank_omega)
+    vf = [mech.solve(np.array([phi + s * h])).points["F"].vel[0] for s in (1, -1)]
+    assert abs((vf[0] - vf[1]) / (2 * dt) - a["p'f'"]) < 1e-5 * abs(a["p'f'"]) + 1e-6
+
+
+@pytest.mark.parametrize("label", ["4", "10"])
+def test_force_polygons_close(shaper_results, label):
+    _, _, f56, f34 = polygons(shaper_results, label)
+    for pg in (f56, f34):
+        total = sum(x.value for x in pg.vectors)
+        scale = max(abs(x.value) for x in pg.vectors)
+        assert abs(total) < 1e-9 * scale
+        assert abs(pg.points[pg.vectors[-1].head]) < 1e-9 * scale
+    names = [x.name for x in f56.vectors]
+    fc = {x.name: x.value for x in f56.vectors}
+    p = shaper_results["params"]
+    if label == "4":       # inside the cutting zone: Fc = 1600 N against the motion
+        assert abs(fc["Fc"]) == pytest.approx(p.cutting_force)
+        assert abs(fc["G6"]) == pytest.approx(p.m6 * p.gravity)
+    else:                  # return stroke: no cutting force in the polygon
+        assert "Fc" not in names
+
+
+def test_default_positions_are_mid_working_and_mid_return(shaper_results):
+    assert default_positions(shaper_results["kinematics"]) == ["4", "10"]
+
+
+def _scale_from_text(texts, symbol):
+    for t in texts:
+        m = re.search(rf"{symbol} = ([0-9.e+-]+)", t)
+        if m:
+            return float(m.group(1))
+    raise AssertionError(f"no {symbol} on the sheet")
+
+
+def test_dxf_reopens_with_layers_vectors_and_dimensions(sheet, shaper_results, tmp_path):
+    s, scales = sheet
+    path = write_dxf(s, tmp_path / "linkage.dxf")
+    doc = ezdxf.readfile(path)
+    names = {layer.dxf.name for layer in doc.layers}
+    assert {"OUTLINE", "CENTER", "CONSTRUCTION", "DIMENSIONS", "TEXT", "VECTORS", "CURVES",
+            "FRAME"} <= names
+    assert doc.layers.get("CENTER").dxf.linetype == "CENTER"
+    msp = doc.modelspace()
+    count = {}
+    for e in msp:
+        count[e.dxf.layer] = count.get(e.dxf.layer, 0) + 1
+    for layer in ("OUTLINE", "CENTER", "CONSTRUCTION", "DIMENSIONS", "TEXT", "VECTORS",
+                  "CURVES", "FRAME"):
+        assert count.get(layer, 0) > 0, layer
+    texts = [e.dxf.text for e in msp.query("TEXT")]
+    assert "张三" in texts and "李老师" in texts and "1:4" in texts
+    mu_v = _scale_from_text(texts, "μv")
+    mu_a = _scale_from_text(texts, "μa")
+    lines = [(complex(e.dxf.start.x, e.dxf.start.y), complex(e.dxf.end.x, e.dxf.end.y))
+             for e in msp.query("LINE[layer=='VECTORS']")]
+    vecs = np.array([b - a for a, b in lines])
+    for label in ("4", "10"):
+        vel, acc, _, _ = polygons(shaper_results, label)
+        for pg, mu in ((vel, mu_v), (acc, mu_a)):
+            for x in pg.vectors:
+                want = x.value / mu       # paper mm, same direction (the sheet is not mirrored)
+                if abs(want) < 1e-6:
+                    continue
+                assert np.min(np.abs(vecs - want)) < 1e-6, (label, x.name)
+    # the dimensions state the true lengths: the frame L_O2O3 and the stroke H of the brief
+    measured = []
+    for d in msp.query("DIMENSION"):
+        lfac = d.get_dim_style().dxf.dimlfac
+        override = d.override()
+        lfac = override.get("dimlfac", lfac)
+        measured.append(d.get_measurement() * lfac)
+    assert any(abs(m - 650.0) < 1e-6 for m in measured)
+    assert any(abs(m - 320.0) < 1e-6 for m in measured)
+
+
+def test_everything_inside_the_border_and_texts_do_not_collide(sheet):
+    s, _ = sheet
+    w, h = SIZES["A1"]
+    pts = []
+    for e in s.entities:
+        for attr in ("p0", "p1", "center", "position"):
+            if hasattr(e, attr):
+                pts.append(getattr(e, attr))
+        pts.extend(getattr(e, "points", ()))
+    pts = np.array(pts)
+    assert pts.real.min() >= 0 and pts.real.max() <= w
+    assert pts.imag.min() >= 0 and pts.imag.max() <= h
+    x0, y0, x1, y1 = s.inner
+    inner = [e for e in s.entities if getattr(e, "layer", "") != "FRAME"]
+    for e in inner:
+        for z in [getattr(e, a) for a in ("p0", "p1", "position") if hasattr(e, a)]:
+            assert x0 <= z.real <= x1 and y0 <= z.imag <= y1, e
+    boxes = []
+    for t in s.entities:
+        if not isinstance(t, Text) or t.angle:
+            continue
+        wd, ht = text_width(t.text, t.height), t.height
+        cx = {"left": t.position.real + wd / 2, "center": t.position.real,
+              "right": t.position.real - wd / 2}[t.halign]
+        cy = {"bottom": t.position.imag + ht / 2, "middle": t.position.imag,
+              "top": t.position.imag - ht / 2}[t.valign]
+        boxes.append((cx - wd / 2, cy - ht / 2, cx + wd / 2, cy + ht / 2, t.text))
+    clashes = []
+    for i, a in enumerate(boxes):
+        for b in boxes[i + 1:]:
+            ox = min(a[2], b[2]) - max(a[0], b[0])
+            oy = min(a[3], b[3]) - max(a[1], b[1])
+            if ox > 0.3 and oy > 0.3:
+                clashes.append((a[4], b[4]))
+    assert not clashes, clashes[:10]
+
+
+def test_sheet_pdf_and_preview_are_written(sheet, tmp_path):
+    from mechdesign.render.sheet_mpl import write_sheet
+
+    s, _ = sheet
+    write_sheet(s, pdf=tmp_path / "a1.pdf", png=tmp_path / "a1.png", png_width_px=800)
+    data = (tmp_path / "a1.pdf").read_bytes()
+    assert data.startswith(b"%PDF")
+    # true A1 paper size in points: 841 × 594 mm
+    box = re.search(rb"/MediaBox \[ *0 0 ([0-9.]+) ([0-9.]+)", data)
+    assert box is not None
+    assert float(box.group(1)) == pytest.approx(841 / 25.4 * 72, abs=0.5)
+    assert float(box.group(2)) == pytest.approx(594 / 25.4 * 72, abs=0.5)
+    from PIL import Image
+
+    with Image.open(tmp_path / "a1.png") as im:
+        assert im.size[0] == 800
+
+
+def test_dimension_entities_for_the_mechanism(sheet):
+    s, scales = sheet
+    dims = [e for e in s.entities if isinstance(e, Dimension)]
+    assert any(abs(d.measurement - 650.0) < 1e-9 for d in dims)
+    # paper length × scale = true length for every aligned dimension of the mechanism
+    for d in dims:
+        if d.kind == "aligned" and d.measurement in (650.0,):
+            assert abs(d.p1 - d.p0) * scales["length"] == pytest.approx(650.0)
