@@ -140,14 +140,6 @@ def test_default_positions_are_mid_working_and_mid_return(shaper_results):
     assert default_positions(shaper_results["kinematics"]) == ["4", "10"]
 
 
-def _scale_from_text(texts, symbol):
-    for t in texts:
-        m = re.search(rf"{symbol} = ([0-9.e+-]+)", t)
-        if m:
-            return float(m.group(1))
-    raise AssertionError(f"no {symbol} on the sheet")
-
-
 def test_dxf_reopens_with_layers_vectors_and_dimensions(sheet, shaper_results, tmp_path):
     s, scales = sheet
     path = write_dxf(s, tmp_path / "linkage.dxf")
@@ -165,13 +157,14 @@ def test_dxf_reopens_with_layers_vectors_and_dimensions(sheet, shaper_results, t
         assert count.get(layer, 0) > 0, layer
     texts = [e.dxf.text for e in msp.query("TEXT")]
     assert "张三" in texts and "李老师" in texts and "1:4" in texts
-    mu_v = _scale_from_text(texts, "μv")
-    mu_a = _scale_from_text(texts, "μa")
     lines = [(complex(e.dxf.start.x, e.dxf.start.y), complex(e.dxf.end.x, e.dxf.end.y))
              for e in msp.query("LINE[layer=='VECTORS']")]
     vecs = np.array([b - a for a, b in lines])
     for label in ("4", "10"):
         vel, acc, _, _ = polygons(shaper_results, label)
+        mu_v, mu_a = scales[f"velocity_{label}"], scales[f"acceleration_{label}"]
+        # the scale the vectors are drawn at is the one written on the sheet
+        assert f"μv = {mu_v:g} (m/s)/mm" in texts and f"μa = {mu_a:g} (m/s²)/mm" in texts
         for pg, mu in ((vel, mu_v), (acc, mu_a)):
             for x in pg.vectors:
                 want = x.value / mu       # paper mm, same direction (the sheet is not mirrored)

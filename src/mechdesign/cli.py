@@ -66,7 +66,8 @@ def run(
     lang: Optional[Lang] = typer.Option(None, "--lang", help="Report language "
                                         "(default: the brief's report.language, zh)."),
     formats: str = typer.Option("md,pdf", "--format", "-f",
-                                help="Comma-separated output formats: md, pdf."),
+                                help="Comma-separated output formats: md, pdf, docx, dxf, gif "
+                                     "(pdf and dxf include the drawing sheets)."),
     templates: Optional[Path] = typer.Option(None, "--templates", exists=True, file_okay=False,
                                              help="Folder of report templates to use instead "
                                                   "of the shipped ones."),
@@ -116,6 +117,16 @@ def run(
     def render_progress(what: str) -> None:
         _err(f"      rendering {what}")
 
+    from .render.sheets import make_sheets
+
+    animate = None
+    if "gif" in fmt:
+        if hasattr(report, "animate"):
+            def animate(path):
+                return report.animate(results, path, language)
+        else:
+            _err(f"warning: gif: the {machine.name} machine has no linkage to animate; no GIF written")
+
     try:
         written = write_report(
             out_dir, machine=machine.name, lang=language, formats=fmt,
@@ -123,6 +134,9 @@ def run(
             make_context=lambda figs: report.context(results, b, figs, language),
             document=machine.document(results), meta=b.report, templates=templates,
             progress=render_progress,
+            make_sheets=lambda folder, figs: make_sheets(results, b, folder, figs, language, fmt,
+                                                         render_progress),
+            animate=animate,
             write_data=(None if not hasattr(report, "write_data")
                         else lambda d: report.write_data(results, d)))
     except Exception as exc:  # noqa: BLE001 - any rendering failure gets a clean message

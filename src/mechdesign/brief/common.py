@@ -7,7 +7,7 @@ The models are strict: unknown keys, wrong types and out-of-range values are err
 from __future__ import annotations
 
 import datetime as _dt
-from typing import Literal
+from typing import Literal, Optional
 
 from pydantic import BaseModel, ConfigDict, Field, field_validator
 
@@ -58,3 +58,15 @@ class AnalysisSettings(StrictModel):
     position_step_deg: float = Field(30.0, gt=0, le=90,
                                      description="Spacing of the textbook positions [°]")
     gravity: float = Field(9.81, gt=0, le=20, description="Gravitational acceleration g [m/s²]")
+
+
+class SheetSettings(StrictModel):
+    """Drawing sheets (图纸) written with the report (PDF with --format pdf, DXF with dxf)."""
+
+    polygon_positions: Optional[list[int]] = Field(
+        None, min_length=2, max_length=2,
+        description=("Two regular crank positions (1, 2, …) whose velocity, acceleration and force "
+                     "polygons the A1 sheet draws; default: the positions nearest the middle of the "
+                     "working and of the return stroke"))
+    drawing_number: str = Field("MD", max_length=40,
+                                description="Prefix of the drawing numbers (图号), e.g. MD → MD-01")

@@ -12,7 +12,7 @@ import numpy as np
 from pydantic import Field, field_validator, model_validator
 
 from .cam import CamParams, CamSection, cam_to_si
-from .common import AnalysisSettings, ReportMeta, StrictModel
+from .common import AnalysisSettings, ReportMeta, SheetSettings, StrictModel
 from .drive import DriveParams, DriveSection, DriveStage, check_material, drive_to_si
 
 
@@ -121,6 +121,22 @@ class ShaperBrief(StrictModel):
     drive: Optional[DriveSection] = Field(None, description=(
         "Drive from the motor to the pinion shaft O1 (传动装置); the gear pair z1/z2 is its last stage"))
     analysis: AnalysisSettings = AnalysisSettings()
+    sheets: SheetSettings = SheetSettings()
+
+    @model_validator(mode="after")
+    def _polygon_positions_exist(self):
+        chosen = self.sheets.polygon_positions
+        if chosen is None:
+            return self
+        count = int(round(360.0 / self.analysis.position_step_deg))
+        bad = [p for p in chosen if not 1 <= p <= count]
+        if bad:
+            raise ValueError(f"sheets.polygon_positions: {bad[0]} is not a position; with "
+                             f"analysis.position_step_deg = {self.analysis.position_step_deg:g} the "
+                             f"positions are 1 … {count}")
+        if chosen[0] == chosen[1]:
+            raise ValueError("sheets.polygon_positions: give two different positions")
+        return self
 
     @model_validator(mode="after")
     def _drive_needs_module(self):

@@ -28,7 +28,7 @@ LABELS = {
            "md": "等效驱动力矩 Md = {v} N·m", "table": "各位置运动与力分析结果",
            "pos": "位置", "guide": "刨头导路", "stroke": "行程 H",
            "dw": "ΔWmax = {v} J", "jf": "飞轮转动惯量 JF = {v} kg·m²",
-           "scales": "作图比例", "working": "工作行程", "return": "回程"},
+           "scales": "作图比例", "each": "μv、μa、μF 注在各多边形上方", "working": "工作行程", "return": "回程"},
     "en": {"mechanism": "Skeleton at the positions", "vel": "Velocity polygon, position {p}",
            "acc": "Acceleration polygon, position {p}", "force56": "Force polygon, group 5-6, pos. {p}",
            "force34": "Force polygon, group 3-4, pos. {p}",
@@ -38,7 +38,7 @@ LABELS = {
            "md": "driving torque Md = {v} N·m", "table": "Results at the positions",
            "pos": "Pos.", "guide": "ram guide", "stroke": "stroke H",
            "dw": "ΔWmax = {v} J", "jf": "flywheel inertia JF = {v} kg·m²",
-           "scales": "Drawing scales", "working": "working stroke", "return": "return stroke"},
+           "scales": "Drawing scales", "each": "μv, μa, μF above each polygon", "working": "working stroke", "return": "return stroke"},
 }
 
 
@@ -107,9 +107,9 @@ def polygons(r: dict, label: str) -> list[Polygon]:
     R45, R76 = frc.reactions["R45"][i], frc.reactions["R76"][i]
     G4, PI4 = -1j * p.m4 * g, -p.m4 * motion.points["S4"].acc[i]
     R23, R74 = frc.reactions["R23"][i], frc.reactions["R74"][i]
-    return [vel, acc, _force("force56", label, [("Fc", fc), ("G6", G6), ("PI6", PI6),
+    return [vel, acc, _force("force56", label, [("Fc", fc), ("G6", G6), ("FI6", PI6),
                                                ("R45", R45), ("R76", R76)]),
-            _force("force34", label, [("G4", G4), ("PI4", PI4), ("R54", -R45), ("R23", R23),
+            _force("force34", label, [("G4", G4), ("FI4", PI4), ("R54", -R45), ("R23", R23),
                                       ("R74", R74)])]
 
 
@@ -163,34 +163,29 @@ def linkage_sheet(r: dict, info: TitleInfo, lang: str, chosen: list[str] | None 
     titles = {"velocity": "vel", "acceleration": "acc", "force56": "force56", "force34": "force34"}
     by_kind = {kind: [pp for ps in polys for pp in ps if pp.kind == kind or
                       (kind.startswith("force") and pp.kind == kind)] for kind in rows}
-    force_mu = None
     for kind, (ry0, ry1) in rows.items():
-        group = by_kind[kind]
         box_h = ry1 - ry0 - 34.0          # heading above, vector list below
-        extent = max(_extent(pg) for pg in group)
-        mu = nice_scale(extent, min(half - 16.0, box_h))
-        if kind.startswith("force"):
-            force_mu = mu if force_mu is None else max(force_mu, mu)
-            mu = force_mu
         sym, unit, vunit = units[kind]
-        scales[kind] = mu
-        for j, pg in enumerate(group):
+        for j, pg in enumerate(by_kind[kind]):
+            mu = nice_scale(_extent(pg, half - 16.0, box_h), 1.0)
+            scales[f"{kind}_{pg.position}"] = mu
             cx0 = bx0 + j * half
             box = (cx0 + 4, ry0 + 22.0, cx0 + half - 4, ry1 - 10.0)
             _polygon(s, pg, mu, box, vunit)
             heading(s, cx0 + half / 2 + 1j * (ry1 - 7.5),
                     lab[titles[kind]].format(p=pg.position), 3.5)
             s.text(cx0 + half / 2 + 1j * (ry1 - 11.0),
-                   f"{sym} = {format_number(mu)} {unit}", 2.5, "TEXT", "center", "top")
+                   f"{sym} = {format_number(mu)} {unit}", 3.0, "TEXT", "center", "top")
             _vector_list(s, pg, cx0 + 3 + 1j * (ry0 + 19.0), vunit, half - 6)
     # Column C: curves.
-    _curves(s, r, lab, (612.0, 62.0, x1 - 8, y1 - 8), chosen, scales)
+    _curves(s, r, lab, (612.0, 86.0, x1 - 8, y1 - 8), chosen, scales)
     return s, scales
 
 
-def _extent(pg: Polygon) -> float:
+def _extent(pg: Polygon, width: float, height: float) -> float:
+    """The polygon's size in units per paper mm if it just filled width × height."""
     pts = np.array(list(pg.points.values()))
-    return float(max(np.ptp(pts.real), np.ptp(pts.imag), 1e-12))
+    return float(max(np.ptp(pts.real) / width, np.ptp(pts.imag) / height, 1e-12))
 
 
 def _polygon(s: Sheet, pg: Polygon, mu: float, box, unit: str) -> None:
@@ -343,8 +338,9 @@ def _curves(s: Sheet, r: dict, lab: dict, box, chosen: list[str], scales: dict) 
     span = k.working_span * DEG
     heading(s, (left + bx1) / 2 + 1j * (by1 - 5), lab["curves"], 5.0)
     panels = [(k.ram_s * 1e3, lab["s"]), (k.ram_v, lab["v"]), (k.ram_a, lab["a"])]
-    h = 52.0
     top = by1 - 14.0
+    # three stacked motion panels (gap 16), then M_b and ΔE with titles (gaps 24 and 26)
+    h = (top - by0 - 3 * 16.0 - 8.0 - 26.0 - 12.0) / 5.0
     for j, (y, yl) in enumerate(panels):
         py1 = top - j * (h + 16.0)
         marks = [(pos_ph[q], y[n + q], labels[q] if j == 0 else "") for q in regular]
@@ -369,11 +365,9 @@ def _curves(s: Sheet, r: dict, lab: dict, box, chosen: list[str], scales: dict) 
                 text=lab["dw"].format(v=format_number(fl.max_energy_swing, 5)), height=2.5)
     # Scales and flywheel result under the curves, clear of the title block.
     tb_x0, _, _, tb_y1 = title_block_box(s)
-    notes = [lab["scales"] + f":  μL = {format_number(scales['length'] / 1000)} m/mm,  "
-             f"μv = {format_number(scales['velocity'])} (m/s)/mm",
-             f"μa = {format_number(scales['acceleration'])} (m/s²)/mm,  "
-             f"μF = {format_number(scales['force56'])} N/mm",
+    notes = [lab["scales"] + f":  μL = {format_number(scales['length'] / 1000)} m/mm "
+             f"({scale_text(scales['length'])}); " + lab["each"],
              lab["dw"].format(v=format_number(fl.max_energy_swing, 5)) + ",  " +
              lab["jf"].format(v=format_number(fl.inertia, 4))]
     for j, text in enumerate(notes):
-        s.text(tb_x0 + 1j * (tb_y1 + 22.0 - 6.0 * j), text, 3.0)
+        s.text(tb_x0 + 1j * (tb_y1 + 14.0 - 6.0 * j), text, 3.0)

@@ -17,7 +17,9 @@ import jinja2
 
 from ..results import dumps
 
-FORMATS = ("md", "pdf")
+FORMATS = ("md", "pdf", "docx", "dxf", "gif")
+FORMAT_HELP = ("md: report.md; pdf: report.pdf and the sheets as vector PDF; docx: report.docx (Word); "
+               "dxf: the sheets as DXF (AutoCAD/CAXA); gif: animation of the mechanism")
 
 
 def template_dir(override: Path | None = None) -> Path:
@@ -54,10 +56,14 @@ def write_report(out_dir: Path, *, machine: str, lang: str, formats: tuple[str, 
                  make_figures: Callable[[Path], dict], make_context: Callable[[dict], dict],
                  document: dict, meta, templates: Path | None = None,
                  progress: Callable[[str], None] | None = None,
-                 write_data: Callable[[Path], list] | None = None) -> list[Path]:
+                 write_data: Callable[[Path], list] | None = None,
+                 make_sheets: Callable[[Path, Path], list] | None = None,
+                 animate: Callable[[Path], Path] | None = None) -> list[Path]:
     """Render into a staging folder, then move the finished files into ``out_dir``.
 
-    ``write_data`` may add machine-specific data files (e.g. CSV coordinates) to the folder."""
+    ``write_data`` may add machine-specific data files (e.g. CSV coordinates) to the folder;
+    ``make_sheets(folder, fig_dir)`` writes the drawing sheets and returns their
+    :class:`~.sheets.SheetFiles`; ``animate(path)`` writes the GIF (format gif)."""
     say = progress or (lambda _msg: None)
     tdir = template_dir(templates)
     out_dir = Path(out_dir)
@@ -68,7 +74,9 @@ def write_report(out_dir: Path, *, machine: str, lang: str, formats: tuple[str, 
         fig_dir.mkdir()
         say("figures")
         figures = make_figures(fig_dir)
+        sheets = make_sheets(staging, fig_dir) if make_sheets is not None else []
         ctx = make_context(figures)
+        ctx["sheets"] = [_sheet_row(sh, lang) for sh in sheets]
         say("Markdown")
         md = render_markdown(f"{machine}.{lang}.md.j2", ctx, tdir)
         (staging / "report.md").write_text(md, encoding="utf-8")
@@ -82,6 +90,15 @@ def write_report(out_dir: Path, *, machine: str, lang: str, formats: tuple[str, 
 
             render_pdf(staging / "report.md", staging / "report.pdf",
                        pdf_metadata(meta, lang), tdir / "report.typ")
+        if "docx" in formats:
+            say("Word (pandoc → docx)")
+            from .docx import render_docx
+
+            render_docx(staging / "report.md", staging / "report.docx",
+                        pdf_metadata(meta, lang), tdir)
+        if "gif" in formats and animate is not None:
+            say("animation (GIF)")
+            animate(staging / "animation.gif")
         if "md" not in formats:
             (staging / "report.md").unlink()
         return _publish(staging, out_dir)
@@ -89,13 +106,22 @@ def write_report(out_dir: Path, *, machine: str, lang: str, formats: tuple[str, 
         shutil.rmtree(staging, ignore_errors=True)
 
 
+def _sheet_row(sh, lang: str) -> dict:
+    """Strings the templates show for one sheet."""
+    files = ", ".join(f"`{x}`" for x in (sh.pdf, sh.dxf) if x) or "—"
+    return {"title": sh.title, "size": sh.size, "scale": sh.scale, "preview": sh.preview,
+            "files": files, "label": f"fig:sheet-{sh.name}"}
+
+
 def _publish(staging: Path, out_dir: Path) -> list[Path]:
-    """Move the staged files into ``out_dir`` (each move atomic; figures as a folder)."""
+    """Move the staged files into ``out_dir`` (each move atomic; folders such as figures/
+    and sheets/ replace the old folder as a whole)."""
     written = []
-    old_figs = out_dir / "figures"
-    if old_figs.exists():
+    old = [out_dir / name for name in ("figures", "sheets") if (out_dir / name).is_dir()]
+    if old:
         trash = Path(tempfile.mkdtemp(prefix=".mechdesign-old-", dir=out_dir))
-        os.replace(old_figs, trash / "figures")
+        for folder in old:
+            os.replace(folder, trash / folder.name)
         shutil.rmtree(trash, ignore_errors=True)
     for item in sorted(staging.iterdir()):
         target = out_dir / item.name

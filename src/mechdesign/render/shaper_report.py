@@ -62,6 +62,13 @@ def make_figures(r: dict, fig_dir: Path, lang: str) -> dict[str, str]:
     return paths
 
 
+def animate(r: dict, path: Path, lang: str) -> Path:
+    """The GIF of the linkage turning through one revolution (format gif)."""
+    from .animation import shaper_gif
+
+    return shaper_gif(r, path, lang)
+
+
 def write_data(r: dict, folder: Path) -> list[Path]:
     """Cam profile coordinates as CSV when the brief has a cam."""
     if r.get("cam") is None:

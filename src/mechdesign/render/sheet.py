@@ -268,14 +268,14 @@ def nice_step(span: float, count: int = 5) -> float:
 
 
 def nice_scale(value: float, available: float) -> float:
-    """Smallest 1-2-5 × 10ⁿ units-per-mm scale that draws ``value`` within ``available`` mm.
+    """Smallest 1-2-2.5-5 × 10ⁿ units-per-mm scale that draws ``value`` within ``available`` mm.
 
     Used for μv [(m/s)/mm], μa [(m/s²)/mm] and μF [N/mm]."""
     if not value > 0:
         return 1.0
     raw = value / available
     mag = 10.0 ** np.floor(np.log10(raw))
-    for m in (1.0, 2.0, 5.0, 10.0):
+    for m in (1.0, 2.0, 2.5, 5.0, 10.0):
         if m * mag >= raw * (1 - 1e-12):
             return m * mag
     return 10.0 * mag
@@ -421,8 +421,9 @@ def _title_block(sheet: Sheet, info: TitleInfo) -> None:
         sheet.line(bx0 + x + 1j * (by0 + row), bx0 + x + 1j * by1, "FRAME", THIN)
     for y in (by0 + row, by0 + 2 * row):                     # right half: 2 rows + title
         sheet.line(mid + 1j * y, bx1 + 1j * y, "FRAME", THIN)
-    for x in (15.0, 45.0, 60.0):
+    for x in (15.0, 45.0):
         sheet.line(mid + x + 1j * by0, mid + x + 1j * (by0 + 2 * row), "FRAME", THIN)
+    sheet.line(mid + 60.0 + 1j * (by0 + row), mid + 60.0 + 1j * (by0 + 2 * row), "FRAME", THIN)
 
     def cell(x, y, wdt, text, height=3.5):
         if text:
@@ -448,7 +449,7 @@ def _title_block(sheet: Sheet, info: TitleInfo) -> None:
     cell(mid + 15, by0, 30, info.number)
     cell(mid + 45, by0, 45, lab["sheet"].format(i=info.sheet_no, n=info.sheets), 2.5)
     top = by0 + 2 * row
-    hd = fit_height(info.drawing, 86.0, 7.0)
+    hd = fit_height(info.drawing, 80.0, 7.0)
     sheet.text(mid + 45 + 1j * (top + 15.0), info.drawing, hd, "TEXT", "center", "middle")
     hp = fit_height(info.project, 86.0, 3.5)
     sheet.text(mid + 45 + 1j * (top + 5.0), info.project, hp, "TEXT", "center", "middle")

@@ -79,6 +79,10 @@ def build_document(sheet: Sheet, title: str = ""):
     return doc
 
 
+def _xy(z: complex) -> tuple[float, float]:
+    return z.real, z.imag
+
+
 def _dimension(msp, d: Dimension) -> None:
     paper = abs(d.p1 - d.p0)
     override = {"dimtxt": d.height, "dimasz": 2.5, "dimexe": 1.5, "dimexo": 1.0,
@@ -90,14 +94,20 @@ def _dimension(msp, d: Dimension) -> None:
                                   distance=d.offset, text=d.text or "<>", dimstyle="EZDXF",
                                   override=override, dxfattribs=attrs)
     elif d.kind == "radius":
-        dim = msp.add_radius_dim(center=(d.p0.real, d.p0.imag), mpoint=(d.p1.real, d.p1.imag),
-                                 text=d.text or "<>", dimstyle="EZ_RADIUS",
-                                 override=override, dxfattribs=attrs)
+        # text in the middle of the leader, as the PDF draws it
+        mid = (d.p0 + d.p1) / 2
+        dim = msp.add_radius_dim(center=(d.p0.real, d.p0.imag), radius=abs(d.p1 - d.p0),
+                                 angle=float(np.degrees(np.angle(d.p1 - d.p0))),
+                                 location=(mid.real, mid.imag), text=d.text or "<>",
+                                 dimstyle="EZ_RADIUS_INSIDE", override=override, dxfattribs=attrs)
     else:
         centre = (d.p0 + d.p1) / 2          # p0, p1: the ends of the diameter
         dim = msp.add_diameter_dim(center=(centre.real, centre.imag),
-                                   mpoint=(d.p1.real, d.p1.imag), text=d.text or "<>",
-                                   dimstyle="EZ_RADIUS", override=override, dxfattribs=attrs)
+                                   radius=abs(d.p1 - d.p0) / 2,
+                                   angle=float(np.degrees(np.angle(d.p1 - d.p0))),
+                                   location=_xy(centre + 1e-3 * (d.p1 - centre)),
+                                   text=d.text or "<>",
+                                   dimstyle="EZ_RADIUS_INSIDE", override=override, dxfattribs=attrs)
     dim.render()
 
 

@@ -45,13 +45,13 @@ def dimension_geometry(d: Dimension):
         prefix = "R" if d.kind == "radius" else "Φ"
         text = d.text or prefix + format_number(d.measurement, 5)
         lines.append((d.p0, d.p1))
-        arrows.append((d.p0, d.p1))
+        arrows.append((d.p1, d.p0))            # (tip, tail): the arrow touches the circle
         if d.kind == "diameter":
-            arrows.append((d.p1, d.p0))
+            arrows.append((d.p0, d.p1))
         pos, ang = (d.p0 + d.p1) / 2 + n * 1.0, np.angle(u)
     if np.cos(ang) < -1e-9:          # keep text readable (not upside down)
         ang += np.pi
-        pos = pos - 2 * n * 1.0 - n * d.height
+        pos = pos - 2 * n * 1.0
     return lines, arrows, text, pos, ang
 
 

@@ -1,0 +1,970 @@
+"""The cam drawing sheet (凸轮机构设计图, A2): what a student hands in for the cam.
+
+The sheet is built as a :class:`~.sheet.Sheet` (paper millimetres) and drawn by
+:mod:`.sheet_mpl` (PDF, PNG) and :mod:`.sheet_dxf` (DXF). It holds, as the graphical
+method of 孙桓《机械原理》 (chapter on cam mechanisms) draws them:
+
+* the follower displacement diagram s–δ (φ–δ for an oscillating follower) at stated
+  scales μs (μφ) and μδ: the δ axis divided into the programme's segments with their
+  angles, every rise and return divided into equal parts numbered 0, 1, 2, … through the
+  cycle, the ordinates at the division points thin and the curve bold;
+* the cam at a GB length scale (1:1 when it fits) by inversion (反转法): the base circle,
+  the offset circle (offset translating follower) or the circle of the pivot's inverted
+  positions (oscillating follower), the follower's inverted positions at the division
+  points numbered 0′, 1′, 2′, … (measured against the cam's rotation), the roller there,
+  the pitch curve (点画线), the actual profile (粗实线), the follower in its start position,
+  the cam centre, ω and the key dimensions;
+* the design data, the programme and the displacements at the division points as tables;
+* the border and the title block.
+
+The cam's own arrays (``c.grid``: fine grid, SI units) give the curves; the division points
+are synthesised again at their exact angles with :func:`mechdesign.core.cam.design_cam`.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, replace
+
+import numpy as np
+
+from ..core import cam as core
+from ..core.motion_laws import LAWS
+from .cam_report import _IMPACT, CONTACT, _segment_name, _Units
+from .sheet import (
+    THIN,
+    Sheet,
+    TitleInfo,
+    fit_height,
+    format_number,
+    frame,
+    ground,
+    heading,
+    length_scale,
+    nice_step,
+    pin,
+    scale_text,
+    text_width,
+    title_block_box,
+)
+
+MM = 1e3
+DEG = 180.0 / np.pi
+PRIME = "\u2032"          # ′
+
+LABELS = {
+    "zh": {
+        "drawing": "凸轮机构设计图",
+        "diagram": "从动件位移线图",
+        "profile": "凸轮轮廓曲线（反转法）",
+        "data": "设计数据",
+        "programme": "从动件运动规律",
+        "points": "等分点位移",
+        "pitch": "理论廓线",
+        "actual": "实际廓线",
+        "point": "点号",
+        "cw": "顺时针", "ccw": "逆时针",
+        "follower": "从动件", "rotation": "凸轮转向", "speed": "凸轮转速",
+        "stroke": "行程", "swing": "最大摆角",
+        "r0": "基圆半径", "rr": "滚子半径", "offset": "偏距",
+        "a": "中心距", "L": "摆杆长度", "phi0": "初始摆角",
+        "alpha_rise": "推程最大压力角", "alpha_return": "回程最大压力角",
+        "rho": "理论廓线最小曲率半径", "rho_a": "实际廓线最小曲率半径",
+        "rho_flat": "廓线最小曲率半径",
+        "face": "平底宽度（至少）",
+        "head_data": ("项目", "符号", "数值", "要求"),
+        "head_prog": ("区段", "凸轮转角", "运动角", "运动规律", "行程", "冲击"),
+        "ok": "合格", "fail": "不合格",
+        "right": "右侧", "left": "左侧", "fav": "正偏置", "unfav": "负偏置",
+        "translating": "直动", "oscillating": "摆动",
+        "note": ("注：1. 理论廓线由反转法作出，实际廓线为滚子圆族的包络线；",
+                 "2. 图中长度单位为 mm，角度单位为 (°)。"),
+        "note_flat": ("注：1. 廓线由反转法作出，为平底各反转位置的包络线；",
+                      "2. 图中长度单位为 mm，角度单位为 (°)。"),
+        "note_knife": ("注：1. 廓线由反转法作出，为尖顶各反转位置的连线；",
+                       "2. 图中长度单位为 mm，角度单位为 (°)。"),
+    },
+    "en": {
+        "drawing": "Disc cam design drawing",
+        "diagram": "Follower displacement diagram",
+        "profile": "Cam profile (inversion method)",
+        "data": "Design data",
+        "programme": "Follower programme",
+        "points": "Displacements at the division points",
+        "pitch": "pitch curve",
+        "actual": "actual profile",
+        "point": "Point",
+        "cw": "clockwise", "ccw": "counter-clockwise",
+        "follower": "Follower", "rotation": "Cam rotation", "speed": "Cam speed",
+        "stroke": "Stroke", "swing": "Max. swing",
+        "r0": "Base radius", "rr": "Roller radius", "offset": "Offset",
+        "a": "Centre distance", "L": "Arm length", "phi0": "Initial arm angle",
+        "alpha_rise": "Max. pressure angle, rise", "alpha_return": "Max. pressure angle, return",
+        "rho": "Min. radius of curvature, pitch", "rho_a": "Min. radius of curvature, actual",
+        "rho_flat": "Min. radius of curvature",
+        "face": "Face width (at least)",
+        "head_data": ("Item", "Symbol", "Value", "Requirement"),
+        "head_prog": ("Segment", "Cam angle", "Span", "Motion law", "Lift", "Impact"),
+        "ok": "OK", "fail": "FAIL",
+        "right": "right", "left": "left", "fav": "favourable", "unfav": "unfavourable",
+        "translating": "translating", "oscillating": "oscillating",
+        "note": ("Notes: 1. Pitch curve by inversion; actual profile = envelope of the roller circles.",
+                 "2. Lengths in mm, angles in degrees."),
+        "note_flat": ("Notes: 1. Profile by inversion: envelope of the inverted face positions.",
+                      "2. Lengths in mm, angles in degrees."),
+        "note_knife": ("Notes: 1. Profile by inversion: path of the inverted knife edge.",
+                       "2. Lengths in mm, angles in degrees."),
+    },
+}
+
+# Scales of the displacement diagram: μδ [°/mm] and μs [mm/mm or °/mm], preferred values.
+_MU_DELTA = (1.0, 1.5, 2.0, 2.5, 3.0, 4.0, 5.0)
+_MU_S = (0.05, 0.1, 0.2, 0.25, 0.5, 1.0, 2.0, 2.5, 5.0, 10.0)
+ROW = 6.5                  # table row height [mm]
+GAP = 7.0                  # vertical gap between the panels of the right column [mm]
+
+
+# --------------------------------------------------------------------------- division points
+
+
+@dataclass(frozen=True)
+class Division:
+    """One division point of the graphical method, numbered through the cycle."""
+
+    number: int
+    delta: float            # cam angle [rad] in [0, 2π)
+    s: float                # follower displacement [m] or [rad]
+
+
+def parts(span: float) -> int:
+    """Equal parts of a rise or return of ``span`` [rad]: an even number (the middle of a
+    symmetric law is a division point), at most 25° each, at least 4 (6 from 60° on)."""
+    deg = span * DEG
+    n = int(np.ceil(deg / 25.0 - 1e-9))
+    n += n % 2
+    return max(n, 6 if deg >= 60.0 - 1e-9 else 4)
+
+
+def divisions(c) -> list[Division]:
+    """The division points: every rise and return in :func:`parts` equal parts, the ends of
+    every segment; numbered 0, 1, 2, … from δ = 0 (360° is point 0 again)."""
+    prog = c.params.programme
+    angles = []
+    for i, seg in enumerate(prog.segments):
+        start, span = float(prog.starts[i]), float(prog.spans[i])
+        k = 1 if seg.kind == core.DWELL else parts(span)
+        angles += [start + span * j / k for j in range(k)]
+    angles = np.array(sorted(a for a in angles if a < 2 * np.pi - 1e-9))
+    keep = np.concatenate([[True], np.diff(angles) > 1e-9])
+    angles = angles[keep]
+    s = prog.evaluate(angles).s
+    return [Division(k, float(a), float(v)) for k, (a, v) in enumerate(zip(angles, s))]
+
+
+def _follower(c):
+    """The follower as designed (an automatic offset is in ``c.offset``)."""
+    fol = c.params.follower
+    if isinstance(fol, core.TranslatingFollower):
+        fol = replace(fol, offset=c.offset)
+    return fol
+
+
+# --------------------------------------------------------------------------- the sheet
+
+
+def cam_sheet(c, info: TitleInfo, lang: str = "zh") -> Sheet:
+    """The A2 cam sheet (凸轮机构设计图) of the cam result ``c`` (machines.cam.CamResult).
+
+    ``info`` fills the title block; an empty ``info.scale`` becomes the profile's scale and
+    an empty ``info.drawing`` the sheet's default name. Raises ValueError if the drawing
+    does not fit the sheet."""
+    lab = LABELS[lang]
+    sheet = Sheet("A2")
+    x0, y0, x1, y1 = sheet.inner
+    tb = title_block_box(sheet)
+    divs = divisions(c)
+    g = _ProfileGeometry(c, divs)
+
+    # Left: the profile at the largest GB scale (≤ 1:1) that fits beside a displacement
+    # diagram of at least 360°/μδ with the second-largest μδ; right: diagram and tables.
+    need_right = _DIAGRAM_LEFT + 360.0 / _MU_DELTA[-2] + _DIAGRAM_RIGHT
+    box_h = (y1 - y0) - _PROFILE_TOP - _PROFILE_BOTTOM
+    n = length_scale(complex(g.width, g.height),
+                     complex(x1 - x0 - need_right - _SPLIT_GAP - 2 * g.margin, box_h - 2 * g.margin))
+    prof_w = g.width / n + 2 * g.margin
+    right_w = x1 - x0 - max(prof_w, _PROFILE_MIN_W) - _SPLIT_GAP
+    mu_d = next(m for m in _MU_DELTA if _DIAGRAM_LEFT + 360.0 / m + _DIAGRAM_RIGHT <= right_w)
+    right_w = min(right_w, _DIAGRAM_LEFT + 360.0 / mu_d + _DIAGRAM_RIGHT + 30.0)
+    split = x1 - right_w
+    if info.scale == "":
+        info = replace(info, scale=scale_text(n))
+    if info.drawing == "":
+        info = replace(info, drawing=lab["drawing"])
+    frame(sheet, info)
+    _profile(sheet, c, g, divs, n, (x0, y0, split - _SPLIT_GAP, y1), lab)
+    _right_column(sheet, c, divs, g, mu_d, (split, tb[3] + 5.0, x1, y1), lab, lang)
+    return sheet
+
+
+_DIAGRAM_LEFT = 16.0       # s-axis ticks and label left of the diagram [mm]
+_DIAGRAM_RIGHT = 15.0      # δ-axis arrow and label right of 360° [mm]
+_SPLIT_GAP = 8.0           # between the profile panel and the right column [mm]
+_PROFILE_TOP = 14.0        # heading of the profile panel [mm]
+_PROFILE_BOTTOM = 14.0     # notes under the profile [mm]
+_PROFILE_MIN_W = 200.0
+
+
+# --------------------------------------------------------------------------- profile panel
+
+
+class _ProfileGeometry:
+    """Everything of the profile in model millimetres (cam frame = fixed frame at δ = 0)."""
+
+    margin = 12.0          # paper mm around the model extent for labels and dimensions
+
+    def __init__(self, c, divs: list[Division]):
+        g = c.grid
+        self.c = c
+        self.fol = _follower(c)
+        self.kind = self.fol.kind
+        self.osc = isinstance(self.fol, core.OscillatingFollower)
+        self.sigma = g.rotation
+        self.r0 = c.base_radius * MM
+        self.rr = g.roller_radius * MM
+        self.e = 0.0 if self.osc else c.offset * MM
+        self.pitch = g.pitch * MM
+        self.actual = actual_profile(c)
+        delta = np.array([d.delta for d in divs])
+        self.dprof = core.design_cam(c.params.programme, self.fol, c.base_radius, g.rotation,
+                                     delta=delta)
+        self.rot = np.exp(-1j * self.sigma * delta)            # frame → cam at each division
+        self.B = self.dprof.pitch * MM                         # follower point, inverted
+        self.B0 = complex(g.follower_point[0]) * MM            # follower point at δ = 0
+        self.outer = float(max(np.max(np.abs(self.actual)), np.max(np.abs(self.pitch)) + self.rr))
+        self.a = self.L = 0.0
+        if self.osc:
+            self.a = self.fol.pivot_distance * MM
+            self.L = self.fol.arm_length * MM
+        self.face = None
+        if self.kind == "flat" and c.face_extent is not None:
+            self.face = tuple(v * MM for v in c.face_extent)
+
+    def ring(self, n: float = 1.0) -> float:
+        """Radius of the division labels (translating) [model mm] at scale 1:n."""
+        return self.outer + 7.0 * n
+
+    def stem_top(self, n: float = 1.0) -> float:
+        return self.ring(n) + 36.0 * n
+
+    def extents(self, n: float = 1.0) -> tuple[float, float, float, float]:
+        if self.osc:
+            r = max(self.ring(n), self.a + 7.0 * n)
+            return -r, -r, r, r
+        r = self.ring(n) + 3.0 * n
+        return -r, -r, r, self.stem_top(n)
+
+    @property
+    def width(self) -> float:
+        x0, _, x1, _ = self.extents()
+        return x1 - x0
+
+    @property
+    def height(self) -> float:
+        _, y0, _, y1 = self.extents()
+        return y1 - y0
+
+
+def actual_profile(c) -> np.ndarray:
+    """The actual profile [model mm] as drawn: the envelope of the roller circles.
+
+    ``c.grid.actual`` offsets every grid point of the pitch curve by r_r along its normal.
+    Where the pitch curve has a corner (a velocity jump of the follower, rigid impact) that
+    leaves a gap on the convex side, filled here with the roller circle's arc about the
+    corner, and a small loop on the concave side, cut here at the crossing of the two
+    branches. A knife edge or flat face is drawn as computed."""
+    g = c.grid
+    if g.roller_radius <= 0:
+        return g.actual * MM
+    rr = g.roller_radius * MM
+    fol = _follower(c)
+    prog = c.params.programme
+    pts = list(g.actual * MM)
+    delta = list(g.delta)
+    corners = []
+    for b in c.boundaries:
+        if b.impact != core.RIGID_IMPACT:
+            continue
+        db = float(b.delta) % (2 * np.pi)
+        left = core.design_cam(prog, fol, c.base_radius, g.rotation,
+                               delta=np.array([(db - 1e-9) % (2 * np.pi)]))
+        right = core.design_cam(prog, fol, c.base_radius, g.rotation, delta=np.array([db]))
+        P = complex(right.pitch[0]) * MM
+        a0 = np.angle(-left.normal[0])
+        turn = (np.angle(-right.normal[0]) - a0 + np.pi) % (2 * np.pi) - np.pi
+        m = max(3, int(np.ceil(abs(np.degrees(turn)) / 1.0)))
+        arc = P + rr * np.exp(1j * (a0 + turn * np.linspace(0.0, 1.0, m)))
+        corners.append(P)
+        j = int(np.searchsorted(np.asarray(delta), db, side="left"))
+        pts[j:j] = list(arc)
+        delta[j:j] = [db] * m
+    z = np.asarray(pts)
+    if not corners:
+        return z
+    from scipy.spatial import cKDTree
+
+    pitch = np.concatenate([g.pitch * MM, corners])
+    dist, _ = cKDTree(np.column_stack([pitch.real, pitch.imag])).query(np.column_stack([z.real, z.imag]))
+    bad = dist < rr - 2e-3
+    if not np.any(bad):
+        return z
+    shift = int(np.argmin(bad))                  # start the cycle at a good point
+    z, bad = np.roll(z, -shift), np.roll(bad, -shift)
+    out = []
+    i, N = 0, len(z)
+    while i < N:
+        if not bad[i]:
+            out.append(z[i])
+            i += 1
+            continue
+        j = i
+        while j + 1 < N and bad[j + 1]:
+            j += 1
+        k, l = i - 1, (j + 1) % N                    # last good before, first good after
+        x = _crossing(z[k], z[i], z[j], z[l])
+        if x is None:
+            x = _crossing(z[k - 1], z[k], z[l], z[(l + 1) % N], lines=True)
+        if x is not None:
+            out.append(x)
+        i = j + 1
+    return np.asarray(out)
+
+
+def _crossing(p0, p1, q0, q1, lines=False):
+    """The intersection of the segments (or lines) p0p1 and q0q1, or None."""
+    d1, d2 = p1 - p0, q1 - q0
+    den = d1.real * d2.imag - d1.imag * d2.real
+    if abs(den) < 1e-15:
+        return None
+    w = q0 - p0
+    t = (w.real * d2.imag - w.imag * d2.real) / den
+    u = (w.real * d1.imag - w.imag * d1.real) / den
+    if not lines and not (-1e-9 <= t <= 1 + 1e-9 and -1e-9 <= u <= 1 + 1e-9):
+        return None
+    x = p0 + t * d1
+    if lines and abs(x - p1) > 5 * (abs(d1) + abs(d2)) + 1e-6:
+        return None
+    return x
+
+
+def _largest_gap(angles) -> tuple[float, float]:
+    """(centre, width) of the largest empty angular interval between ``angles`` [rad]."""
+    a = np.sort(np.mod(np.asarray(angles, dtype=float), 2 * np.pi))
+    if len(a) == 0:
+        return np.pi / 2, 2 * np.pi
+    gaps = np.diff(np.concatenate([a, [a[0] + 2 * np.pi]]))
+    j = int(np.argmax(gaps))
+    return float(a[j] + gaps[j] / 2), float(gaps[j])
+
+
+def _crossings(segments, radius: float) -> list[float]:
+    """Angles where the line segments (z0, z1) cross the circle |z| = radius."""
+    out = []
+    for z0, z1 in segments:
+        d = z1 - z0
+        A = abs(d) ** 2
+        if A < 1e-18:
+            continue
+        B = 2 * (z0.real * d.real + z0.imag * d.imag)
+        C = abs(z0) ** 2 - radius ** 2
+        disc = B * B - 4 * A * C
+        if disc < 0:
+            continue
+        for t in ((-B - np.sqrt(disc)) / (2 * A), (-B + np.sqrt(disc)) / (2 * A)):
+            if 0 <= t <= 1:
+                out.append(float(np.angle(z0 + t * d)))
+    return out
+
+
+def _text_box(p: complex, text: str, h: float, halign: str, valign: str):
+    """(x0, y0, x1, y1) of an unrotated text [paper mm]."""
+    w = text_width(text, h)
+    x0 = {"left": p.real, "center": p.real - w / 2, "right": p.real - w}[halign]
+    y0 = {"bottom": p.imag, "middle": p.imag - h / 2, "top": p.imag - h}[valign]
+    return x0, y0, x0 + w, y0 + h
+
+
+def _boxes_overlap(a, b, pad=0.6) -> bool:
+    return not (a[2] + pad <= b[0] or b[2] + pad <= a[0] or a[3] + pad <= b[1] or b[3] + pad <= a[1])
+
+
+def _segment_hits_box(p0: complex, p1: complex, box, pad=0.5) -> bool:
+    t = np.linspace(0.0, 1.0, 60)
+    z = p0 + (p1 - p0) * t
+    return bool(np.any((z.real > box[0] - pad) & (z.real < box[2] + pad)
+                       & (z.imag > box[1] - pad) & (z.imag < box[3] + pad)))
+
+
+class _Labels:
+    """Texts placed so far on the profile (for the placement of the later ones)."""
+
+    def __init__(self, sheet: Sheet):
+        self.sheet = sheet
+        self.boxes: list = []
+        self.segments: list = []            # paper segments that texts must not cover
+
+    def free(self, box) -> bool:
+        return (not any(_boxes_overlap(box, b) for b in self.boxes)
+                and not any(_segment_hits_box(p0, p1, box) for p0, p1 in self.segments))
+
+    def text(self, p, text, h=3.5, halign="left", valign="bottom", layer="TEXT"):
+        self.sheet.text(p, text, h, layer, halign, valign)
+        self.boxes.append(_text_box(complex(p), text, h, halign, valign))
+
+
+def _profile(sheet: Sheet, c, g: _ProfileGeometry, divs, n: float, box, lab):
+    bx0, by0, bx1, by1 = box
+    k = 1.0 / n                                   # paper mm per model mm
+    ex0, ey0, ex1, ey1 = g.extents(n)
+    cx = (bx0 + bx1) / 2 - k * (ex0 + ex1) / 2
+    top, bottom = by1 - _PROFILE_TOP, by0 + _PROFILE_BOTTOM
+    cy = (top + bottom) / 2 - k * (ey0 + ey1) / 2
+    view = sheet.view(complex(cx, cy), k)
+    P = view.p
+    O = P(0)
+    labels = _Labels(sheet)
+    heading(sheet, complex((bx0 + bx1) / 2, by1 - 10.0), f"{lab['profile']}  {scale_text(n)}", 5.0)
+
+    # -- the inversion: the follower's positions at the division points (thin)
+    ring = g.ring(n)
+    rays = []                                     # model segments, thin
+    label_pos = []                                # model points of the labels 0′, 1′, …
+    for rot, B in zip(g.rot, g.B):
+        if g.osc:
+            A = g.a * rot
+            rays += [(0j, A), (A, B)]
+            label_pos.append(A * (1 + 5.0 * n / g.a))
+        else:
+            K = g.e * rot                         # foot of the inverted axis on the offset circle
+            u = 1j * rot                          # direction of the inverted follower axis
+            t_end = np.sqrt(max(ring ** 2 - g.e ** 2, 0.0))
+            if abs(g.e) > 1e-9:
+                rays.append((0j, K))
+            rays.append((K, K + t_end * u))
+            label_pos.append(K + (t_end + 3.5 * n) * u)
+    for z0, z1 in rays:
+        view.line(z0, z1, "CONSTRUCTION")
+    for d, B, rot in zip(divs, g.B, g.rot):
+        if g.osc:
+            view.circle(g.a * rot, 0.8 * n, "CONSTRUCTION")
+        if g.kind == "roller":
+            if d.number != 0:
+                view.circle(B, g.rr, "CONSTRUCTION")
+        elif g.kind == "flat":
+            _flat_face_inverted(view, g, d, rot)
+        else:
+            view.circle(B, 0.6 * n, "CONSTRUCTION")
+
+    # -- centre lines, circles, curves
+    lim = (g.outer + 6.0 * n) if g.osc else ring + 4.0 * n
+    view.line(-lim, (g.a + 12.0 * n) if g.osc else lim, "CENTER")
+    view.line(-1j * lim, 1j * lim, "CENTER")
+    view.circle(0, g.r0, "CONSTRUCTION")
+    if not g.osc and abs(g.e) > 1e-9:
+        view.circle(0, abs(g.e), "CONSTRUCTION")
+    if g.osc:
+        view.circle(0, g.a, "CENTER")
+        view.line(g.a - 10j * n, g.a + 10j * n, "CENTER")
+    if g.kind == "roller":
+        view.polyline(g.pitch, "CENTER", closed=True)
+    view.polyline(g.actual, "OUTLINE", closed=True)
+
+    # -- division labels 0′, 1′, …; 0′ beside the follower, which stands on its own ray
+    gap_c, _ = _largest_gap([np.angle(z) for z in label_pos])
+    for d, z in zip(divs, label_pos):
+        p = P(z)
+        if d.number == 0 and g.osc:                          # beside the pivot's frame
+            p = P(g.a * g.rot[0]) + complex(8.5, -4.0)
+        elif d.number == 0:
+            u = np.exp(1j * np.angle(z))
+            side = np.sign(np.sin(gap_c - np.angle(z))) or 1.0
+            p = p + side * 1j * u * 3.2 - u * 1.5
+        labels.text(p, f"{d.number}{PRIME}", 3.5, "center", "middle")
+
+    # -- the follower in its start position, cam centre
+    outside = _follower_start(sheet, view, g, n, labels)
+    ground(view, 0, 7.0, -np.pi / 2)
+    labels.text(O + complex(-3.0, -3.0), "O", 3.5, "right", "top")
+
+    # -- ω and r0 inside the cam, where no construction line passes: ω in the first part
+    # of the widest free sector, r0 in the widest sector left (clear of the centre lines)
+    down = list(np.radians(np.arange(-120, -55, 5)))            # the ground symbol
+    axes = [a * np.pi / 2 for a in range(4)]
+    best = None
+    r_in = float(np.min(np.abs(g.actual)))
+    for f in np.linspace(0.3, 0.7, 9):
+        if f * g.r0 > r_in - 3.0 * n:
+            continue
+        c_, w_ = _largest_gap(_crossings(rays, f * g.r0) + down + axes)
+        if best is None or min(w_, np.radians(90)) * f > best[0] + 1e-9:
+            best = (min(w_, np.radians(90)) * f, f * g.r0, c_, w_)
+    if best is None:                                            # a thin cam: no room inside
+        best = (0.0, 0.3 * g.r0) + _largest_gap(_crossings(rays, 0.3 * g.r0) + down + axes)
+    _, r_w, wc, ww = best
+    span = float(np.clip(0.45 * ww, 14.0 * n / r_w, np.radians(60)))
+    w_mid = wc - ww / 2 + 0.1 * ww + span / 2
+    _omega(sheet, view, r_w, w_mid, span / 2, g.sigma)
+    taken = list(np.linspace(w_mid - span / 2 - 0.12, w_mid + span / 2 + 0.12, 12)) + down
+    taken += [a + d for a in np.arange(4) * np.pi / 2 for d in (-0.12, 0.0, 0.12)]
+    for f in np.linspace(0.3, 1.0, 8):
+        taken += _crossings(rays, f * g.r0)
+    rc, _ = _largest_gap(taken)
+    view.dimension(0, g.r0 * np.exp(1j * rc), 0.0, text=f"r0={format_number(g.r0)}", kind="radius",
+                   height=3.5)
+    if g.kind == "roller":
+        _roller_dimension(sheet, view, g, n, gap_c, labels)
+
+    # -- names of the curves on radial leaders into the free sector outside the cam
+    out_angles = [np.angle(z) for z in label_pos] + outside
+    out_angles += [a * np.pi / 2 + d for a in range(4) for d in (-0.1, 0.0, 0.1)]
+    sc, sw = _largest_gap(out_angles)
+    _curve_leaders(sheet, view, g, n, sc, sw, labels, box, lab)
+
+    # -- note under the drawing
+    key = {"roller": "note", "flat": "note_flat"}.get(g.kind, "note_knife")
+    for i, line in enumerate(lab[key]):
+        sheet.text(complex(bx0 + 4.0, by0 + 8.5 - 5.0 * i), line,
+                   fit_height(line, bx1 - bx0 - 8.0, 3.5), "TEXT", "left", "bottom")
+
+
+def _flat_face_inverted(view, g: _ProfileGeometry, d: Division, rot) -> None:
+    """A flat face at an inverted position (thin), over the face extent plus a margin."""
+    fp = complex(g.dprof.follower_point[d.number]) * MM       # foot of the face, frame
+    if g.osc:
+        A = complex(g.a)
+        u = (fp - A) / abs(fp - A) if abs(fp - A) > 1e-9 else -1.0
+        lo, hi = g.face if g.face else (0.0, g.a)
+        z0, z1 = A + u * max(lo - 5.0, 0.0), A + u * (hi + 5.0)
+    else:
+        lo, hi = g.face if g.face else (-g.r0, g.r0)
+        z0 = complex(g.e + lo - 5.0, fp.imag)
+        z1 = complex(g.e + hi + 5.0, fp.imag)
+    view.line(z0 * rot, z1 * rot, "CONSTRUCTION")
+
+
+def _omega(sheet, view, radius, centre, half, sigma):
+    """The rotation arrow ω: an arc of ``2·half`` around ``centre`` with a head in the sense σ."""
+    a0, a1 = centre - half, centre + half
+    p = view.p(0)
+    r = radius * view.scale
+    head = 3.0
+    dh = head / r
+    if sigma > 0:
+        sheet.arc(p, r, a0, a1 - dh, "CONSTRUCTION", 0.35)
+        tip_a, tang = a1, 1j * np.exp(1j * a1)
+    else:
+        sheet.arc(p, r, a0 + dh, a1, "CONSTRUCTION", 0.35)
+        tip_a, tang = a0, -1j * np.exp(1j * a0)
+    tip = p + r * np.exp(1j * tip_a)
+    base = tip - head * tang
+    w = 0.35 * head
+    sheet.fill([tip, base + 1j * tang * w, base - 1j * tang * w], "CONSTRUCTION")
+    sheet.text(p + (r - 4.5) * np.exp(1j * centre), "ω", 5.0, "TEXT", "center", "middle")
+
+
+def _follower_start(sheet, view, g: _ProfileGeometry, n, labels: _Labels) -> list[float]:
+    """Draw the follower at δ = 0 with its frame and dimensions; return the angles (from O)
+    that it and its dimensions take outside the cam."""
+    B0 = g.B0
+    P = view.p
+    k = 1.0 / n
+    angles: list[float] = []
+    if g.osc:
+        A = complex(g.a)
+        ground(view, A, 7.0, -np.pi / 2)
+        labels.text(P(A) + complex(-3.0, -3.0), "A", 3.5, "right", "top")
+        if g.kind == "flat":
+            u = (B0 - A) / abs(B0 - A)
+            _, hi = g.face if g.face else (0.0, g.a)
+            view.line(A, A + u * (hi + 8.0 * n), "OUTLINE")
+        else:
+            u = (B0 - A) / abs(B0 - A)
+            view.line(A + u * 1.2 * n, B0 - u * 1.2 * n, "OUTLINE")
+            pin(view, A)
+            pin(view, B0)
+            if g.kind == "roller":
+                view.circle(B0, g.rr, "OUTLINE")
+            # arm length L beside the arm, away from the cam centre
+            side = -1.0 if np.imag(np.conj(u) * (0 - A)) > 0 else 1.0
+            z0, z1 = (A, B0) if u.real >= 0 else (B0, A)        # text reads left to right
+            view.dimension(z0, z1, side * 7.0 * (1 if u.real >= 0 else -1),
+                           text=f"L={format_number(g.L)}", height=3.5)
+        # centre distance a under the drawing; extension lines start below the pivots' frames
+        ink = np.concatenate([g.actual, g.pitch, g.B - 1j * g.rr, [-g.r0 * 1j]])
+        near = ink[(ink.real > -5.0 * n) & (ink.real < g.a + 5.0 * n)]
+        y = -float(np.min(near.imag)) + 10.0 * n
+        drop = 12.0 * n
+        view.dimension(-1j * drop, A - 1j * drop, -(y - drop) * k, text=f"a={format_number(g.a)}",
+                       height=3.5, measurement=g.a)
+        for z in np.linspace(0, g.a, 9):
+            angles.append(float(np.angle(z - 1j * y)))
+        angles += [float(np.angle(A + 1j * t)) for t in (-20 * n, 0.0, 20 * n)]
+        return angles
+    # translating: stem along x = e, guide near its top
+    top = g.stem_top(n)
+    x = g.e
+    if g.kind == "roller":
+        view.circle(B0, g.rr, "OUTLINE")
+        pin(view, B0)
+        view.line(B0 + 1.2j * n, x + 1j * top, "OUTLINE")
+    elif g.kind == "knife":
+        view.line(B0, x + 1j * top, "OUTLINE")
+        view.polyline([B0 + complex(-1.8, 5.0) * n, B0, B0 + complex(1.8, 5.0) * n], "OUTLINE")
+    else:
+        lo, hi = g.face if g.face else (-g.r0 / 2, g.r0 / 2)
+        view.line(complex(x + lo - 5.0, B0.imag), complex(x + hi + 5.0, B0.imag), "OUTLINE")
+        view.line(complex(x, B0.imag), x + 1j * top, "OUTLINE")
+    yc = top - 13.0 * n
+    half = 7.0 * n
+    for side in (-1, 1):                           # guide: hatched walls either side of the stem
+        xw = x + side * 2.2 * n
+        view.line(xw + 1j * (yc - half), xw + 1j * (yc + half), "OUTLINE", 0.5)
+        for t in np.linspace(-half, half, 5):
+            q = P(xw + 1j * (yc + t))
+            sheet.line(q, q + complex(side * 2.2, 2.2), "CONSTRUCTION")
+    labels.segments.append((P(complex(x, g.outer)), P(x + 1j * top)))
+    labels.boxes.append((P(x).real - 7.0, P(1j * (yc - half)).imag, P(x).real + 7.0, P(1j * top).imag))
+    for t in np.linspace(g.ring(n) - 6.0 * n, top, 6):
+        angles.append(float(np.angle(complex(x, t))))
+    if abs(x) > 1e-9:                               # offset e above the labels
+        y = g.ring(n) + 8.0 * n
+        view.line(0, 1j * (y + 3.0 * n), "CENTER")
+        z0, z1 = (1j * y, x + 1j * y) if x > 0 else (x + 1j * y, 1j * y)
+        view.dimension(z0, z1, 0.0, text=f"e={format_number(abs(x))}", height=3.5)
+        labels.boxes.append((min(P(0).real, P(x).real) - 6.0, P(1j * y).imag - 1.0,
+                             max(P(0).real, P(x).real) + 6.0, P(1j * y).imag + 5.5))
+        angles += [float(np.angle(1j * y)), float(np.angle(x + 1j * y))]
+    return angles
+
+
+def _roller_dimension(sheet, view, g: _ProfileGeometry, n, gap_c, labels: _Labels):
+    """r_r on the start roller as a small-radius dimension (GB/T 4458.4): the arrow from
+    outside onto the circle, the value on a shoulder; in the widest free direction from
+    the roller centre (away from the stem or arm, the cam and the neighbouring rollers)."""
+    B0 = g.B0
+    P = view.p
+    around = [np.angle(-B0)]                                   # the cam
+    if len(g.B) > 2:
+        around += [np.angle(g.B[1] - B0), np.angle(g.B[-1] - B0)]
+    if g.osc:
+        u = (B0 - g.a) / abs(B0 - g.a)                          # as in _follower_start
+        side = -1.0 if np.imag(np.conj(u) * (0 - complex(g.a))) > 0 else 1.0
+        around += [np.angle(-u), np.angle(1j * u * side)]       # arm, dimension L
+    else:
+        around += [np.pi / 2, -np.pi / 2]                       # stem, axis
+    best = None
+    for c_ in np.radians(np.arange(0, 360, 5)):
+        clear = min(abs((c_ - a + np.pi) % (2 * np.pi) - np.pi) for a in around)
+        # prefer the side of the free sector (the curve names go there, but further out)
+        score = clear + 0.05 * np.cos(c_ - gap_c)
+        if best is None or score > best[0]:
+            best = (score, c_)
+    u = np.exp(1j * best[1])
+    text = f"rr={format_number(g.rr)}"
+    h = 3.5
+    tip = P(B0 + g.rr * u)
+    tail = tip + 7.0 * u
+    sgn = 1.0 if u.real >= -1e-9 else -1.0
+    w = text_width(text, h)
+    sheet.arrow(tail, tip, "DIMENSIONS", head=3.0, weight=THIN)
+    sheet.line(tail, tail + sgn * (w + 1.0), "DIMENSIONS")
+    labels.text(tail + sgn * 0.5 + 0.8j, text, h, "left" if sgn > 0 else "right", "bottom",
+                layer="DIMENSIONS")
+    labels.segments += [(tip, tail), (tail, tail + sgn * (w + 1.0))]
+
+
+def _curve_leaders(sheet, view, g: _ProfileGeometry, n, sc, sw, labels: _Labels, box, lab):
+    """'实际廓线' and '理论廓线' on radial leaders in the free sector (centre ``sc``,
+    width ``sw``) outside the cam; a name that finds no free place is left out."""
+    k = 1.0 / n
+    O = view.p(0)
+    items = [("actual", g.actual)]
+    if g.kind == "roller":
+        items.append(("pitch", g.pitch))
+    m = len(items)
+    spread = min(sw * 0.55 / max(m - 1, 1), np.radians(14))
+    angles = sc + (np.arange(m) - (m - 1) / 2) * spread
+    bx0, by0, bx1, by1 = box
+    for (key, curve), ang in zip(items, angles):
+        u = np.exp(1j * ang)
+        target = curve[int(np.argmin(np.abs(np.angle(curve * np.conj(u)))))]
+        t = view.p(target)
+        text = lab[key]
+        w = text_width(text, 3.5)
+        sgn = np.sign(np.cos(ang)) if abs(np.cos(ang)) > 0.15 else np.sign(ang - sc) or 1.0
+        for extra in np.arange(0.0, 40.0, 1.5):
+            elbow = O + (g.outer * k + 6.0 + extra) * u
+            end = elbow + sgn * w
+            tb = (min(elbow.real, end.real), elbow.imag + 0.8, max(elbow.real, end.real), elbow.imag + 4.3)
+            if tb[0] < bx0 + 2 or tb[2] > bx1 - 2 or tb[1] < by0 + _PROFILE_BOTTOM or tb[3] > by1 - _PROFILE_TOP:
+                break
+            leader = (t, elbow)
+            if labels.free(tb) and not any(_segment_hits_box(t, elbow, b, 0.3) for b in labels.boxes):
+                sheet.line(t, elbow, "CONSTRUCTION")
+                sheet.circle(t, 0.5, "CONSTRUCTION")
+                sheet.line(elbow, end, "CONSTRUCTION")
+                sheet.text(elbow + 0.8j, text, 3.5, "TEXT", "left" if sgn > 0 else "right", "bottom")
+                labels.boxes.append(tb)
+                labels.segments += [leader, (elbow, end)]
+                break
+
+
+# --------------------------------------------------------------------------- displacement diagram
+
+
+def _mu_s(stroke_display: float) -> float:
+    """μs (μφ): the largest preferred value that draws the stroke at least 30 mm high."""
+    ok = [m for m in _MU_S if stroke_display / m >= 30.0 - 1e-9]
+    return max(ok) if ok else _MU_S[0]
+
+
+def _diagram(sheet, c, divs, mu_d, mu_s, xo, ytop, lab, lang) -> float:
+    """The s–δ (φ–δ) diagram with its origin at x = ``xo`` under ``ytop``; return the
+    lowest y it takes."""
+    u = _Units(c)
+    prog = c.params.programme
+    stroke = prog.stroke * u.s_scale
+    H = stroke / mu_s
+    W = 360.0 / mu_d
+    heading(sheet, complex(xo + W / 2, ytop - 7.0), f"{lab['diagram']}  {u.s_sym}–δ", 5.0)
+    yo = ytop - 12.0 - 9.0 - H
+    O = complex(xo, yo)
+
+    def P(delta_deg, s_disp):
+        z = O + np.asarray(delta_deg, dtype=float) / mu_d + 1j * np.asarray(s_disp, dtype=float) / mu_s
+        return complex(z) if np.ndim(z) == 0 else z
+
+    sheet.arrow(O, O + W + 8.0, "OUTLINE", head=3.0, weight=0.35)
+    sheet.arrow(O, O + 1j * (H + 8.0), "OUTLINE", head=3.0, weight=0.35)
+    sheet.text(O + W + 9.0, "δ/(°)", 3.5, "TEXT", "left", "middle")
+    unit = "(°)" if u.osc else "mm"
+    sheet.text(O + 1j * (H + 9.0) - 1.5, f"{u.s_sym}/{unit}", 3.5, "TEXT", "right", "bottom")
+    step = nice_step(stroke, 3)
+    for v in np.arange(0.0, stroke + 1e-9, step):
+        p = P(0, v)
+        sheet.line(p, p - 1.5, "OUTLINE", 0.35)
+        sheet.text(p - 2.5, format_number(v), 2.5, "TEXT", "right", "middle")
+    sheet.line(P(0, stroke), P(360, stroke), "HIDDEN")
+
+    # ordinates at the division points (thin), numbered under the axis
+    for d in divs:
+        dd = d.delta * DEG
+        sv = d.s * u.s_scale
+        if sv / mu_s > 1e-6:
+            sheet.line(P(dd, 0), P(dd, sv), "CONSTRUCTION")
+        sheet.text(P(dd, 0) - 1.2j, str(d.number), 2.5, "TEXT", "center", "top")
+    sheet.line(P(360, 0), P(360, stroke), "CONSTRUCTION")
+    # the curve, bold, with both one-sided values at the segment ends
+    gd = c.grid.delta
+    dg = np.sort(np.concatenate([gd, [2 * np.pi], prog.starts[1:]]))
+    sg = prog.evaluate(np.where(dg >= 2 * np.pi, 0.0, dg)).s * u.s_scale
+    sheet.polyline(P(dg * DEG, sg), "OUTLINE")
+
+    # segment angles (dimensions) and names under the axis
+    bounds = [float(prog.starts[i] * DEG) for i in range(len(prog.segments))] + [360.0]
+    yd = yo - 5.0
+    for i in range(len(prog.segments)):
+        a, b = bounds[i], bounds[i + 1]
+        pa, pb = P(a, 0).real, P(b, 0).real
+        span_txt = f"{format_number(b - a)}°"
+        h = 3.5 if text_width(span_txt, 3.5) + 6.0 <= pb - pa else 2.5
+        sheet.dimension(complex(pa, yd), complex(pb, yd), -6.0, b - a, span_txt, "aligned", h)
+        name = _segment_name(c, i, lang)
+        sheet.text(complex((pa + pb) / 2, yd - 8.0), name, fit_height(name, pb - pa - 1.0, 3.5),
+                   "TEXT", "center", "top")
+    mu_sym = "μφ" if u.osc else "μs"
+    scale_txt = (f"{mu_sym} = {format_number(mu_s)} {'(°)/mm' if u.osc else 'mm/mm'}    "
+                 f"μδ = {format_number(mu_d)} (°)/mm")
+    y_scale = yd - 8.0 - 3.5 - 3.5
+    sheet.text(complex(xo, y_scale), scale_txt, 3.5, "TEXT", "left", "top")
+    return y_scale - 3.5
+
+
+# --------------------------------------------------------------------------- tables
+
+
+def _table(sheet, x, ytop, widths, rows, head=None, aligns=None, row_h=ROW) -> float:
+    """A table with thin inner and heavier outer lines; return its bottom y."""
+    rows = ([list(head)] if head else []) + [list(r) for r in rows]
+    total = float(sum(widths))
+    ybot = ytop - len(rows) * row_h
+    sheet.polyline([complex(x, ytop), complex(x + total, ytop), complex(x + total, ybot),
+                    complex(x, ybot)], "FRAME", closed=True, weight=0.5)
+    for i in range(1, len(rows)):
+        y = ytop - i * row_h
+        sheet.line(complex(x, y), complex(x + total, y), "FRAME", 0.35 if (head and i == 1) else THIN)
+    xs = np.concatenate([[x], x + np.cumsum(widths)])
+    for xi in xs[1:-1]:
+        sheet.line(complex(xi, ytop), complex(xi, ybot), "FRAME", THIN)
+    aligns = aligns or ["center"] * len(widths)
+    for r, row in enumerate(rows):
+        yc = ytop - (r + 0.5) * row_h
+        for j, cell in enumerate(row):
+            if not cell:
+                continue
+            w = widths[j]
+            al = "center" if (head and r == 0) else aligns[j]
+            h = fit_height(str(cell), w - 3.0, 3.5)
+            px = {"left": xs[j] + 1.5, "center": xs[j] + w / 2, "right": xs[j + 1] - 1.5}[al]
+            sheet.text(complex(px, yc), str(cell), h, "TEXT", al, "middle")
+    return ybot
+
+
+def _fit_widths(widths, total):
+    s = float(sum(widths))
+    return [w * total / s for w in widths]
+
+
+def _right_column(sheet, c, divs, g: _ProfileGeometry, mu_d, box, lab, lang):
+    """Diagram and tables between y = box[1] and box[3]: the diagram as tall as the space
+    allows (within 30 … 80 mm), then taller rows and wider gaps."""
+    x0, ylim, x1, ytop = box
+    u = _Units(c)
+    stroke = c.params.programme.stroke * u.s_scale
+    mu0 = _mu_s(stroke)
+    avail = ytop - ylim
+
+    def height(mu_s, row, gap):
+        scratch = Sheet(sheet.size)
+        return ytop - _right_draw(scratch, c, divs, g, mu_d, mu_s, row, gap, box, lab, lang)
+
+    mu_s, row, gap = mu0, ROW, GAP
+    for m in sorted((m for m in _MU_S if m < mu0 and stroke / m <= 60.0 + 1e-9), reverse=True):
+        if height(m, row, gap) <= avail - 20.0:
+            mu_s = m
+    for r in (7.5, 7.0):
+        if height(mu_s, r, gap) <= avail - 10.0:
+            row = r
+            break
+    spare = avail - height(mu_s, row, gap)
+    if spare < 0:
+        raise ValueError(f"the cam sheet's right column is {-spare:.1f} mm too tall")
+    gap = min(GAP + spare / 4.0, 16.0)
+    _right_draw(sheet, c, divs, g, mu_d, mu_s, row, gap, box, lab, lang)
+
+
+def _right_draw(sheet, c, divs, g, mu_d, mu_s, row, gap, box, lab, lang) -> float:
+    x0, ylim, x1, ytop = box
+    xo = x0 + _DIAGRAM_LEFT
+    W = 360.0 / mu_d
+    y = _diagram(sheet, c, divs, mu_d, mu_s, xo, ytop, lab, lang) - gap
+    width = min(x1 - x0 - 4.0, 255.0)
+    xl = min(max(xo + W / 2 - width / 2, x0 + 2.0), x1 - 2.0 - width)
+    xm = xl + width / 2
+    u = _Units(c)
+    hsize = 5.0
+
+    # 1. displacements at the division points (horizontal, wrapped when long)
+    heading(sheet, complex(xm, y - 5.0), lab["points"], hsize)
+    y -= 7.5
+    first = 22.0
+    per_row = max(1, min(len(divs), int((width - first) // 12.0)))
+    per_row = int(np.ceil(len(divs) / np.ceil(len(divs) / per_row)))     # balanced rows
+    colw = min(16.0, (width - first) / per_row)
+    twidth = first + colw * per_row
+    tx = xm - twidth / 2
+    for i in range(0, len(divs), per_row):
+        chunk = divs[i:i + per_row]
+        rows = [[lab["point"]] + [f"{d.number}" for d in chunk],
+                ["δ/(°)"] + [format_number(round(d.delta * DEG, 2)) for d in chunk],
+                [f"{u.s_sym}/{'(°)' if u.osc else 'mm'}"] + [f"{d.s * u.s_scale:.2f}" for d in chunk]]
+        y = _table(sheet, tx, y, [first] + [colw] * len(chunk), rows, row_h=row) - 2.0
+    y -= gap - 2.0
+
+    # 2. the programme
+    heading(sheet, complex(xm, y - 5.0), lab["programme"], hsize)
+    y -= 7.5
+    prog = c.params.programme
+    rows = []
+    for i, seg in enumerate(prog.segments):
+        a, b = prog.starts[i] * DEG, (prog.starts[i] + prog.spans[i]) * DEG
+        law = "—" if seg.law is None else (LAWS[seg.law].name_zh if lang == "zh" else LAWS[seg.law].name_en)
+        lift = "—" if seg.kind == core.DWELL else (
+            f"{format_number(abs(prog.lifts[i]) * u.s_scale)}{'°' if u.osc else ' mm'}")
+        impact = "—" if seg.kind == core.DWELL else _IMPACT[lang][c.segments[i].impact]
+        rows.append([_segment_name(c, i, lang), f"{format_number(a)}°–{format_number(b)}°",
+                     f"{format_number(b - a)}°", law, lift, impact])
+    y = _table(sheet, xl, y, _fit_widths([20, 30, 18, 78, 24, 24], width), rows, lab["head_prog"],
+               row_h=row) - gap
+
+    # 3. design data
+    heading(sheet, complex(xm, y - 5.0), lab["data"], hsize)
+    y -= 7.5
+    y = _table(sheet, xl, y, _fit_widths([64, 20, 76, 60], width), _data_rows(c, g, lab, lang),
+               lab["head_data"], ["left", "center", "center", "center"], row_h=row)
+    return y
+
+
+def _data_rows(c, g: _ProfileGeometry, lab, lang):
+    p = c.params
+    fol = g.fol
+    zh = lang == "zh"
+    motion = lab["oscillating" if g.osc else "translating"]
+    contact = CONTACT[lang][fol.kind]
+    if zh:
+        prefix = "" if g.osc else ("偏置" if abs(g.e) > 1e-9 else "对心")
+        name = f"{prefix}{motion}{contact}从动件"
+    else:
+        prefix = "" if g.osc else ("offset " if abs(g.e) > 1e-9 else "centred ")
+        name = f"{prefix}{motion} {contact} follower"
+    rot = lab["ccw"] if p.rotation > 0 else lab["cw"]
+    if p.speed_rpm:
+        rot += (f"，n = {format_number(p.speed_rpm)} r/min" if zh
+                else f", n = {format_number(p.speed_rpm)} rpm")
+    rows = [[lab["follower"], "—", name, ""], [lab["rotation"], "ω", rot, ""]]
+    prog = p.programme
+    if g.osc:
+        rows.append([lab["swing"], "φmax", f"{format_number(prog.stroke * DEG)}°", ""])
+    else:
+        rows.append([lab["stroke"], "h", f"{format_number(prog.stroke * MM)} mm", ""])
+    rows.append([lab["r0"], "r0", f"{format_number(g.r0)} mm", ""])
+    if fol.kind == "roller":
+        rows.append([lab["rr"], "rr", f"{format_number(g.rr)} mm", ""])
+    if g.osc:
+        rows.append([lab["a"], "a", f"{format_number(g.a)} mm", ""])
+        if fol.kind != "flat":
+            rows.append([lab["L"], "L", f"{format_number(g.L)} mm", ""])
+        rows.append([lab["phi0"], "φ0", f"{c.grid.initial_angle * DEG:.2f}°", ""])
+    elif fol.kind != "flat":
+        value = f"{format_number(abs(g.e))} mm"
+        if abs(g.e) > 1e-9:
+            fav = np.sign(c.offset) == core.favourable_offset_sign(p.rotation)
+            side = lab["right"] if g.e > 0 else lab["left"]
+            kind = lab["fav" if fav else "unfav"]
+            value += f"（{side}，{kind}）" if zh else f" ({side}, {kind})"
+        rows.append([lab["offset"], "e", value, ""])
+    if fol.kind != "flat":
+        for kind, key, sym, lim_sym in ((core.RISE, "alpha_rise", "αmax", "[α]"),
+                                        (core.RETURN, "alpha_return", "α′max", "[α′]")):
+            segs = [s for s in c.segments if s.kind == kind]
+            if not segs:
+                continue
+            worst = max(segs, key=lambda s: s.max_pressure_angle)
+            ok = all(s.ok for s in segs)
+            rows.append([lab[key], sym, f"{worst.max_pressure_angle * DEG:.2f}°",
+                         f"≤ {lim_sym} = {format_number(worst.limit * DEG)}°  "
+                         f"{lab['ok'] if ok else lab['fail']}"])
+    if fol.kind == "roller":
+        rp, ra = c.rho_pitch_min_convex * MM, c.rho_actual_min_convex * MM
+        rows.append([lab["rho"], "ρmin", f"{rp:.2f} mm",
+                     f"> rr = {format_number(g.rr)} mm  {lab['ok'] if rp > g.rr else lab['fail']}"])
+        lim = p.min_actual_curvature * MM
+        rows.append([lab["rho_a"], "ρa,min", f"{ra:.2f} mm",
+                     f"≥ {format_number(lim)} mm  {lab['ok'] if ra >= lim else lab['fail']}"])
+    elif fol.kind == "flat":
+        rho = float(np.min(c.grid.rho_actual)) * MM
+        rows.append([lab["rho_flat"], "ρmin", f"{rho:.2f} mm",
+                     f"> 0  {lab['ok'] if rho > 0 else lab['fail']}"])
+        if c.face_extent is not None and not g.osc:
+            lo, hi = c.face_extent
+            rows.append([lab["face"], "b", f"{2 * max(abs(lo), abs(hi)) * MM + 7:.1f} mm", ""])
+    else:
+        rows.append([lab["rho"], "ρmin", f"{c.rho_pitch_min_convex * MM:.2f} mm", ""])
+    return rows

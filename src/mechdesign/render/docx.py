@@ -1,0 +1,138 @@
+"""Markdown -> Word (.docx) rendering of the report with pandoc.
+
+The same ``report.md`` that becomes the PDF is converted by pandoc (from
+``pypandoc_binary``; no system pandoc needed) with two files from the
+templates folder, both editable by students:
+
+``reference.docx``
+    Word style sheet and page setup (pandoc ``--reference-doc``): 宋体 /
+    Times New Roman body text, 黑体 / Arial headings, A4.  Rebuilt by
+    ``tools/make_reference_docx.py``, or edit it in Word (Modify Style).
+``docx-numbering.lua``
+    pandoc Lua filter: numbered figure/table captions ("图 1" / "Figure 1:"),
+    references ``@fig:x``/``@tbl:x`` replaced by the same text, display
+    equations numbered "(N)" at the right margin (still Word equations), the
+    title block (student, class, supervisor, date) under the title.
+
+Metadata keys (all optional): ``title``, ``subtitle``, ``student``,
+``student_id``, ``class``, ``teacher``, ``date``, ``lang`` ("zh" or "en",
+default "zh") and a nested ``labels`` mapping as for the PDF
+(:data:`mechdesign.render.pdf.DEFAULT_LABELS`).
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import re
+import tempfile
+import zipfile
+from pathlib import Path
+
+from .pdf import DEFAULT_LABELS, MARKDOWN_FORMAT
+
+REFERENCE_DOCX = "reference.docx"
+LUA_FILTER = "docx-numbering.lua"
+
+# Text width (twips) of A4 with 2.5 cm margins, used if the reference document has no page setup.
+_DEFAULT_TEXT_WIDTH = 11906 - 2 * 1418
+
+
+class DocxRenderError(RuntimeError):
+    """Pandoc failed while rendering the report to .docx (or a template file is missing)."""
+
+
+def _docx_metadata(metadata: dict, text_width: int) -> dict:
+    """``metadata`` completed with language, labels and the text width for the Lua filter."""
+    meta = {key: value for key, value in dict(metadata).items() if value not in (None, "")}
+    lang = str(meta.get("lang") or "zh")
+    is_zh = lang.lower().startswith("zh")
+    # The Lua filter reads "report-lang".  pandoc's "lang" sets the Word proofing language;
+    # reference.docx already has Chinese (zh-CN) as East-Asian language, and pandoc would
+    # warn about missing "zh-CN" translations, so "lang" is only passed for other languages.
+    meta.pop("lang", None)
+    meta["report-lang"] = "zh" if is_zh else lang
+    if not is_zh:
+        meta["lang"] = "en-US" if lang.lower() == "en" else lang
+    base = DEFAULT_LABELS["zh" if is_zh else "en"]
+    meta["labels"] = {**base, **(meta.get("labels") or {})}
+    meta["docx-text-width"] = text_width
+    return meta
+
+
+def reference_text_width(reference: Path) -> int:
+    """Width (twips) between the margins of the reference document's page."""
+    try:
+        with zipfile.ZipFile(reference) as docx:
+            xml = docx.read("word/document.xml").decode("utf-8")
+    except (OSError, KeyError, zipfile.BadZipFile):
+        return _DEFAULT_TEXT_WIDTH
+    sect = xml[xml.rfind("<w:sectPr"):]
+    page = re.search(r'<w:pgSz\b[^>]*\bw:w="(\d+)"', sect)
+    left = re.search(r'<w:pgMar\b[^>]*\bw:left="(\d+)"', sect)
+    right = re.search(r'<w:pgMar\b[^>]*\bw:right="(\d+)"', sect)
+    if not (page and left and right):
+        return _DEFAULT_TEXT_WIDTH
+    width = int(page.group(1)) - int(left.group(1)) - int(right.group(1))
+    return width if width > 0 else _DEFAULT_TEXT_WIDTH
+
+
+def render_docx(md_path: Path, docx_path: Path, metadata: dict, template_dir: Path) -> None:
+    """Render a Markdown file to a Word document via pandoc.
+
+    Inputs: the Markdown file (images referenced relative to its directory),
+    the output .docx path, the metadata mapping (see module docstring) and the
+    templates folder holding ``reference.docx`` and ``docx-numbering.lua``.
+    Metadata from a YAML block inside the Markdown takes precedence.
+    The document is written to a temporary file next to ``docx_path`` and
+    moved into place (atomic).  Raises DocxRenderError if pandoc fails or a
+    template file is missing.
+    """
+    import pypandoc
+
+    md_path = Path(md_path).resolve()
+    docx_path = Path(docx_path).resolve()
+    template_dir = Path(template_dir)
+    reference = template_dir / REFERENCE_DOCX
+    lua_filter = template_dir / LUA_FILTER
+    for needed in (reference, lua_filter):
+        if not needed.is_file():
+            raise DocxRenderError(f"template file not found: {needed}")
+    try:
+        md_text = md_path.read_text(encoding="utf-8")
+    except OSError as exc:
+        raise DocxRenderError(f"cannot read {md_path}: {exc}") from exc
+
+    meta = _docx_metadata(metadata, reference_text_width(reference))
+    docx_path.parent.mkdir(parents=True, exist_ok=True)
+    tmp_docx = docx_path.with_name(f".{docx_path.stem}.{os.getpid()}.tmp.docx")
+    try:
+        with tempfile.TemporaryDirectory(prefix="mechdesign-pandoc-") as tmp:
+            meta_file = Path(tmp) / "metadata.json"
+            # JSON is valid YAML, which is what --metadata-file expects.
+            meta_file.write_text(json.dumps(meta, ensure_ascii=False, default=str),
+                                 encoding="utf-8")
+            try:
+                pypandoc.convert_text(
+                    md_text,
+                    "docx",
+                    format=MARKDOWN_FORMAT,
+                    outputfile=str(tmp_docx),
+                    extra_args=[
+                        f"--reference-doc={reference.resolve()}",
+                        f"--lua-filter={lua_filter.resolve()}",
+                        f"--metadata-file={meta_file}",
+                        f"--resource-path={md_path.parent}",
+                        "--number-sections",
+                        # no relative column widths from long pipe-table rows (as for the PDF)
+                        "--columns=10000",
+                    ],
+                )
+            except (RuntimeError, OSError) as exc:
+                raise DocxRenderError(
+                    f"pandoc failed to convert {md_path.name} to .docx: {exc}") from exc
+        if not tmp_docx.is_file():
+            raise DocxRenderError(f"pandoc wrote no output for {md_path.name}")
+        os.replace(tmp_docx, docx_path)
+    finally:
+        tmp_docx.unlink(missing_ok=True)

@@ -1,0 +1,673 @@
+"""The gear meshing drawing sheet (齿轮啮合图) that the student hands in.
+
+The pair is drawn in the layout of :func:`mechdesign.core.gears.mesh_layout`: the line of
+centres vertical, the pinion O1 below, the gear O2 above, gear 1 driving counter-clockwise.
+Several generated teeth of each gear around the pitch point (true involutes with their
+root fillets and any undercut, :func:`mechdesign.core.gears.tooth_outline`), the pitch,
+reference, base, tip and root circles (arcs where a circle leaves the drawing area), the
+theoretical line of action N1N2 tangent to both base circles, the actual line of action
+B1B2 (bold), the pitch point P and the common tangent, the working pressure angle α′,
+the dimensions a′, r, rb, ra, rf, a data table and notes, in the border with the title
+block. Everything is clipped to the drawing area left of the table column.
+
+The scale is a GB/T 14690 scale (enlargements 2:1 … 10:1 for small modules, reductions
+1:1.5 … for large ones) chosen so that the whole pinion, the line of action and the
+gear's teeth near P fit, with the module on paper at most :data:`MAX_PAPER_MODULE` mm.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, replace
+
+import numpy as np
+
+from ..core.gears import SpurPair, mesh_layout, spur_pair, tooth_outline
+from .sheet import (Arc, Circle, Dimension, Line, Polyline, Sheet, TitleInfo, fit_height, frame,
+                    length_scale, scale_text, text_width, title_block_box)
+
+MM = 1e3
+DEG = 180.0 / np.pi
+TABLE_W = 180.0            # the right-hand column: data table, notes, title block
+GAP = 6.0                  # drawing area ↔ border and table column [mm]
+MAX_PAPER_MODULE = 16.0    # enlarge small modules up to this module on paper [mm]
+MIN_PAPER_MODULE = 5.0     # below this, give up the whole pinion for a larger scale
+ENLARGEMENTS = (10.0, 5.0, 4.0, 2.5, 2.0, 1.0)   # GB/T 14690 n:1 (2.5:1 and 4:1 allowed)
+
+LABELS = {
+    "zh": {"drawing": "齿轮啮合图", "action": "理论啮合线 N1N2", "actual": "实际啮合线 B1B2",
+           "o2": "O2（中心距 a′ = {a}）", "table": "齿轮啮合参数",
+           "head": ("名称", "符号", "齿轮 1", "齿轮 2", "单位"),
+           "m": "模数", "alpha": "压力角", "ha": "齿顶高系数", "c": "顶隙系数", "z": "齿数",
+           "x": "变位系数", "d": "分度圆直径", "dw": "节圆直径", "da": "齿顶圆直径",
+           "df": "齿根圆直径", "db": "基圆直径", "aw": "中心距", "alw": "啮合角",
+           "pb": "基圆齿距", "b1b2": "实际啮合线长", "eps_g": "重合度（作图）",
+           "eps_f": "重合度（公式）", "notes": "说明",
+           "n_drive": "齿轮 1 主动，逆时针转动；齿轮 2 顺时针转动。",
+           "n_teeth": "齿廓为范成法切制的渐开线齿廓（含齿根过渡曲线）。",
+           "n_eps": "ε = B1B2 / pb = {g}；公式 ε = [z1(tan αa1 − tan α′) + z2(tan αa2 − tan α′)] / 2π = {f}。",
+           "n_undercut": "齿轮 {i}（z = {z}，x = {x} < xmin = {xmin}）根切。",
+           "n_interf": "实际啮合线超出 N1N2：齿廓干涉。",
+           "w1": "ω1", "w2": "ω2"},
+    "en": {"drawing": "Gear meshing drawing", "action": "theoretical line of action N1N2",
+           "actual": "actual line of action B1B2", "o2": "O2 (centre distance a′ = {a})",
+           "table": "Meshing data",
+           "head": ("Item", "Symbol", "Gear 1", "Gear 2", "Unit"),
+           "m": "module", "alpha": "pressure angle", "ha": "addendum coeff.", "c": "clearance coeff.",
+           "z": "number of teeth", "x": "profile shift coeff.", "d": "reference diameter",
+           "dw": "pitch diameter", "da": "tip diameter", "df": "root diameter", "db": "base diameter",
+           "aw": "centre distance", "alw": "working pressure angle", "pb": "base pitch",
+           "b1b2": "length of action", "eps_g": "contact ratio (drawn)",
+           "eps_f": "contact ratio (formula)", "notes": "Notes",
+           "n_drive": "Gear 1 drives, counter-clockwise; gear 2 turns clockwise.",
+           "n_teeth": "Generated involute tooth profiles with their root fillets.",
+           "n_eps": "ε = B1B2 / pb = {g}; ε = [z1(tan αa1 − tan α′) + z2(tan αa2 − tan α′)] / 2π = {f}.",
+           "n_undercut": "Gear {i} (z = {z}, x = {x} < xmin = {xmin}) is undercut.",
+           "n_interf": "B1B2 runs beyond N1N2: interference.",
+           "w1": "ω1", "w2": "ω2"},
+}
+
+
+# -- clipping to the drawing area (paper mm) ---------------------------------------------
+
+Box = tuple[float, float, float, float]
+
+
+def _inside(p: complex, box: Box, tol: float = 1e-9) -> bool:
+    return box[0] - tol <= p.real <= box[2] + tol and box[1] - tol <= p.imag <= box[3] + tol
+
+
+def _clip_segment(a: complex, b: complex, box: Box):
+    """Liang–Barsky: the parameter interval (t0, t1) of a→b inside ``box``, or None."""
+    d = b - a
+    t0, t1 = 0.0, 1.0
+    for p, q in ((-d.real, a.real - box[0]), (d.real, box[2] - a.real),
+                 (-d.imag, a.imag - box[1]), (d.imag, box[3] - a.imag)):
+        if abs(p) < 1e-15:
+            if q < 0:
+                return None
+            continue
+        t = q / p
+        if p < 0:
+            t0 = max(t0, t)
+        else:
+            t1 = min(t1, t)
+    return (t0, t1) if t1 - t0 > 1e-12 else None
+
+
+def _clip_polyline(points, box: Box) -> list[np.ndarray]:
+    """The pieces of an open polyline inside ``box``."""
+    pts = np.asarray(points, dtype=complex)
+    pieces, current = [], []
+    for a, b in zip(pts[:-1], pts[1:]):
+        span = _clip_segment(a, b, box)
+        if span is None:
+            if current:
+                pieces.append(current)
+                current = []
+            continue
+        t0, t1 = span
+        start, end = a + (b - a) * t0, a + (b - a) * t1
+        if not current or t0 > 1e-12:
+            if current:
+                pieces.append(current)
+            current = [start]
+        current.append(end)
+        if t1 < 1 - 1e-12:
+            pieces.append(current)
+            current = []
+    if current:
+        pieces.append(current)
+    return [np.array(p) for p in pieces if np.sum(np.abs(np.diff(p))) > 1e-9]
+
+
+def _circle_spans(c: complex, r: float, box: Box) -> list[tuple[float, float]] | None:
+    """Counter-clockwise angular spans [rad] of the circle inside ``box``; None = whole."""
+    cuts = []
+    for x in (box[0], box[2]):
+        if abs(x - c.real) < r:
+            t = np.arccos((x - c.real) / r)
+            cuts += [t, -t]
+    for y in (box[1], box[3]):
+        if abs(y - c.imag) < r:
+            t = np.arcsin((y - c.imag) / r)
+            cuts += [t, np.pi - t]
+    if not cuts:
+        return None if _inside(c + r, box) else []
+    cuts = sorted(set(float(np.mod(t, 2 * np.pi)) for t in cuts))
+    cuts.append(cuts[0] + 2 * np.pi)
+    spans = [(a, b) for a, b in zip(cuts[:-1], cuts[1:])
+             if b - a > 1e-9 and _inside(c + r * np.exp(1j * (a + b) / 2), box)]
+    merged: list[list[float]] = []
+    for a, b in spans:
+        if merged and abs(a - merged[-1][1]) < 1e-9:
+            merged[-1][1] = b
+        else:
+            merged.append([a, b])
+    if len(merged) > 1 and abs(merged[-1][1] - 2 * np.pi - merged[0][0]) < 1e-9:
+        merged[0][0] = merged.pop()[0] - 2 * np.pi
+    return [(a, b) for a, b in merged]
+
+
+class _Pen:
+    """Draws on the sheet in paper mm, clipped to the drawing area."""
+
+    def __init__(self, sheet: Sheet, box: Box):
+        self.sheet, self.box = sheet, box
+
+    def polyline(self, points, layer, weight=None):
+        for piece in _clip_polyline(points, self.box):
+            self.sheet.polyline(piece, layer, weight=weight)
+
+    def line(self, a, b, layer, weight=None):
+        for piece in _clip_polyline([a, b], self.box):
+            self.sheet.line(piece[0], piece[-1], layer, weight)
+
+    def circle(self, c, r, layer, weight=None):
+        """The circle, or its arcs inside the area."""
+        spans = _circle_spans(c, r, self.box)
+        if spans is None:
+            self.sheet.circle(c, r, layer, weight)
+            return
+        for a, b in spans:
+            self.sheet.arc(c, r, a, b, layer, weight)
+
+
+# -- scale and placement ------------------------------------------------------------------
+
+@dataclass(frozen=True)
+class _Plan:
+    size: str
+    k: float               # paper mm per model mm
+    origin: complex        # paper position of O1
+    box: Box               # the drawing area
+
+
+def _drawing_box(size: str) -> Box:
+    s = Sheet(size)
+    x0, y0, x1, y1 = s.inner
+    return x0 + GAP, y0 + GAP, x1 - TABLE_W - GAP, y1 - GAP
+
+
+def _best_k(extent: complex, room: complex, m: float) -> float:
+    """The largest GB scale (paper per model mm) drawing ``extent`` within ``room``."""
+    if room.real <= 0 or room.imag <= 0:
+        return 0.0
+    bound = min(room.real / extent.real, room.imag / extent.imag)
+    if bound >= 1.0:
+        cap = max(1.0, MAX_PAPER_MODULE / m)
+        return next(k for k in ENLARGEMENTS if k <= min(bound, cap) * (1 + 1e-12))
+    return 1.0 / length_scale(extent, room)
+
+
+def _teeth(lay, gear: int, extra: float = 1.5, least: float = 2.5):
+    """Indices of the teeth drawn: those within the contact path's angle (seen from the
+    gear's centre) widened by ``extra`` pitches, at least ``least`` pitches either side of
+    the line of centres; and the outline of one tooth in the gear's own frame."""
+    pair = lay.pair
+    g = pair.g1 if gear == 1 else pair.g2
+    centre, rot = (lay.o1, lay.rotation1) if gear == 1 else (lay.o2, lay.rotation2)
+    towards = (lay.p - centre) / abs(lay.p - centre)
+    step = 2 * np.pi / g.z
+    reach = max(abs(np.angle((b - centre) / towards)) for b in (lay.b1, lay.b2))
+    half = max(reach + extra * step, least * step)
+    centres = rot + step * np.arange(g.z)
+    rel = np.angle(np.exp(1j * centres) / towards)
+    idx = [int(j) for j in np.argsort(rel) if abs(rel[j]) <= half]
+    return idx, tooth_outline(g, pair.m, pair.alpha, pair.c_star, 48), centre, rot, step
+
+
+def _plan(lay, size: str | None) -> _Plan:
+    pair = lay.pair
+    ra1 = pair.g1.da / 2
+    pts = [lay.p, lay.n1, lay.n2, lay.b1, lay.b2, lay.o1]
+    for gear in (1, 2):
+        idx, tooth, centre, rot, step = _teeth(lay, gear)
+        for j in idx:
+            pts.extend(centre + np.exp(1j * (rot + j * step)) * tooth[:: 4])
+    pts = np.asarray(pts)
+    # paper margins [mm]: left (the a′ dimension beyond N2), right (the pinion's radius
+    # dimensions, whose text CAD writes outside the circle), bottom, top
+    left, right, bottom, top = 28.0, 48.0, 10.0, 22.0
+    plans = []
+    for name in ([size] if size else ["A2", "A3"]):
+        box = _drawing_box(name)
+        room = complex(box[2] - box[0] - left - right, box[3] - box[1] - bottom - top)
+        tiers = []
+        for whole in (True, False):     # the whole pinion, or only O1 (35 mm above the edge)
+            zs = np.concatenate([pts, [-ra1 + 0j, ra1 + 0j, -1j * ra1]]) if whole else pts
+            lo = complex(zs.real.min(), zs.imag.min())
+            hi = complex(zs.real.max(), zs.imag.max())
+            below = 0.0 if whole else 35.0
+            tiers.append((_best_k(hi - lo, room - 1j * below, pair.m), lo, hi, below))
+        k, lo, hi, below = tiers[0]
+        if k * pair.m < MIN_PAPER_MODULE and tiers[1][0] > k:
+            k, lo, hi, below = tiers[1]
+        # centred across; the pinion kept low (more of gear 2 shows above)
+        x_o1 = (box[0] + left + box[2] - right) / 2 - k * (lo.real + hi.real) / 2
+        y_o1 = box[1] + bottom + below - k * lo.imag
+        plans.append(_Plan(name, k, complex(x_o1, y_o1), box))
+    if size:
+        return plans[0]
+    a2, a3 = plans
+    return a3 if a3.k >= a2.k * (1 - 1e-12) else a2
+
+
+def _scale_label(k: float) -> str:
+    if k >= 1 - 1e-12:
+        return f"{k:g}:1"
+    return scale_text(1.0 / k)
+
+
+def _num(x: float, decimals: int = 2) -> str:
+    text = f"{x:.{decimals}f}"
+    if "." in text:
+        text = text.rstrip("0").rstrip(".")
+    return "0" if text in ("-0", "") else text.replace("-", "−")
+
+
+# -- labels that keep clear of the linework ----------------------------------------------
+
+class _Labels:
+    """Places texts where they cover the fewest drawn lines and no other text.
+
+    The linework is sampled into points (paper mm); a candidate text box costs the number
+    of samples it covers, a large amount for each text box it overlaps and a little for
+    leaving the preferred direction or distance. Candidates outside the drawing area are
+    never taken."""
+
+    def __init__(self, sheet: Sheet, box: Box):
+        self.sheet, self.box = sheet, box
+        self.points = np.zeros(0, dtype=complex)
+        self.boxes: list[Box] = []
+
+    def absorb(self, entities, step: float = 0.8) -> None:
+        """Sample the lines, arcs and dimension lines of ``entities`` as obstacles."""
+        out = [self.points]
+        for e in entities:
+            if isinstance(e, Line):
+                out.append(_sample([e.p0, e.p1], step))
+            elif isinstance(e, Polyline):
+                out.append(_sample(list(e.points) + ([e.points[0]] if e.closed else []), step))
+            elif isinstance(e, (Circle, Arc)):
+                a0, a1 = (0.0, 2 * np.pi) if isinstance(e, Circle) else (e.start, e.end)
+                n = max(int(e.radius * abs(a1 - a0) / step), 2)
+                out.append(e.center + e.radius * np.exp(1j * np.linspace(a0, a1, n)))
+            elif isinstance(e, Dimension) and abs(e.p1 - e.p0) > 1e-9:
+                u = (e.p1 - e.p0) / abs(e.p1 - e.p0)
+                shift = 1j * u * (e.offset if e.kind == "aligned" else 0.0)
+                out.append(_sample([e.p0, e.p0 + shift, e.p1 + shift, e.p1], step))
+                mid = (e.p0 + e.p1) / 2 + shift + 1j * u * (1.0 + e.height / 2)
+                w = text_width(e.text, e.height)
+                out.append(np.repeat(_sample([mid - u * w / 2, mid + u * w / 2], 0.4), 6))
+        self.points = np.concatenate(out)
+
+    def block_box(self, b: Box) -> None:
+        self.boxes.append(b)
+
+    def _cost(self, b: Box) -> float:
+        if not (b[0] >= self.box[0] and b[2] <= self.box[2] and b[1] >= self.box[1]
+                and b[3] <= self.box[3]):
+            return np.inf
+        pts = self.points
+        hits = np.count_nonzero((pts.real > b[0]) & (pts.real < b[2]) & (pts.imag > b[1])
+                                & (pts.imag < b[3]))
+        overlap = sum(1 for o in self.boxes
+                      if not (b[2] <= o[0] or b[0] >= o[2] or b[3] <= o[1] or b[1] >= o[3]))
+        return hits + 1000.0 * overlap
+
+    def place(self, anchor: complex, text: str, height: float, prefer: complex,
+              gaps=(1.2, 2.5, 4.5, 7.0), layer: str = "TEXT") -> complex:
+        """A text near ``anchor`` (a point label); returns its centre."""
+        w, h = text_width(text, height), height
+        u = prefer / abs(prefer)
+        best = None
+        for rank, dist in enumerate(gaps):
+            for t in (0, 1, -1, 2, -2, 3, -3, 4, -4, 5, -5, 6, -6, 7, -7, 8):
+                d = u * np.exp(1j * t * np.pi / 8)
+                c = anchor + d * (dist + 0.5 * abs(d.real) * w + 0.5 * abs(d.imag) * h)
+                b = (c.real - w / 2, c.imag - h / 2, c.real + w / 2, c.imag + h / 2)
+                cost = self._cost(b) + 0.8 * rank + 0.25 * abs(t)
+                if best is None or cost < best[0]:
+                    best = (cost, c, b)
+        cost, c, b = best
+        if not np.isfinite(cost):                         # no room: pushed into the area
+            c = self._clamp(c, w, h)
+            b = (c.real - w / 2, c.imag - h / 2, c.real + w / 2, c.imag + h / 2)
+        self.boxes.append(b)
+        self.sheet.text(c, text, height, layer, "center", "middle")
+        return c
+
+    def _clamp(self, c: complex, w: float, h: float) -> complex:
+        x0, y0, x1, y1 = self.box
+        return complex(min(max(c.real, x0 + w / 2), x1 - w / 2), min(max(c.imag, y0 + h / 2), y1 - h / 2))
+
+    def leader(self, anchor: complex, text: str, height: float, prefer: complex,
+               lengths=(8.0, 13.0, 19.0, 27.0, 37.0, 50.0), layer: str = "CONSTRUCTION") -> None:
+        """A text on a short underline, joined to ``anchor`` by a leader line."""
+        w = text_width(text, height) + 2.0
+        u = prefer / abs(prefer)
+        best = None
+        for rank, length in enumerate(lengths):
+            for t in (0, 1, -1, 2, -2, 3, -3, 4, -4, 5, -5, 6, -6):
+                d = u * np.exp(1j * t * np.pi / 12)
+                elbow = anchor + length * d
+                right = d.real >= 0
+                x0, x1 = (elbow.real, elbow.real + w) if right else (elbow.real - w, elbow.real)
+                b = (x0, elbow.imag, x1, elbow.imag + height + 1.2)
+                leader_hits = sum(1 for o in self.boxes if _seg_hits_box(anchor, elbow, o))
+                cost = self._cost(b) + 1000.0 * leader_hits + 0.6 * rank + 0.2 * abs(t)
+                if best is None or cost < best[0]:
+                    best = (cost, elbow, right, b)
+        cost, elbow, right, b = best
+        if not np.isfinite(cost):                         # no room: pushed into the area
+            mid = self._clamp(complex((b[0] + b[2]) / 2, (b[1] + b[3]) / 2), w, height + 1.2)
+            elbow += mid - complex((b[0] + b[2]) / 2, (b[1] + b[3]) / 2)
+            b = (mid.real - w / 2, elbow.imag, mid.real + w / 2, elbow.imag + height + 1.2)
+        self.boxes.append(b)
+        end = complex(b[2] if right else b[0], elbow.imag)
+        self.sheet.line(anchor, elbow, layer)
+        self.sheet.line(elbow, end, layer)
+        self.sheet.fill(anchor + 0.6 * np.exp(1j * np.linspace(0, 2 * np.pi, 9)[:-1]), layer)
+        self.sheet.text(complex((b[0] + b[2]) / 2, elbow.imag + 0.8), text, height,
+                        "TEXT" if layer == "CONSTRUCTION" else layer, "center", "bottom")
+
+
+def _sample(points, step: float) -> np.ndarray:
+    pts = np.asarray(points, dtype=complex)
+    out = [pts[:1]]
+    for a, b in zip(pts[:-1], pts[1:]):
+        n = max(int(abs(b - a) / step), 1)
+        out.append(a + (b - a) * np.arange(1, n + 1) / n)
+    return np.concatenate(out)
+
+
+def _seg_hits_box(a: complex, b: complex, box: Box) -> bool:
+    return _clip_segment(a, b, box) is not None
+
+
+# -- the sheet ----------------------------------------------------------------------------
+
+def gear_sheet(pair: SpurPair, info: TitleInfo, lang: str, size: str | None = None) -> Sheet:
+    """The gear meshing drawing (齿轮啮合图) of ``pair`` (a :class:`SpurPair` in metres):
+    on an A2 sheet, or A3 when the pair is drawn as large there (``size`` forces one),
+    labels in ``lang`` ("zh" or "en"). The title block gets the scale and, when
+    ``info.drawing`` is empty, the drawing's name."""
+    lab = LABELS[lang]
+    mm = spur_pair(pair.m * MM, pair.g1.z, pair.g2.z, pair.alpha, pair.ha_star, pair.c_star,
+                   pair.g1.x, pair.g2.x)
+    lay = mesh_layout(mm)
+    plan = _plan(lay, size)
+    k, box = plan.k, plan.box
+    sheet = Sheet(plan.size)
+    frame(sheet, replace(info, scale=_scale_label(k), drawing=info.drawing or lab["drawing"]))
+    pen = _Pen(sheet, box)
+    P = lambda z: plan.origin + k * np.asarray(z, dtype=complex)  # noqa: E731
+
+    g1, g2 = mm.g1, mm.g2
+    o1, o2, p = P(lay.o1), P(lay.o2), P(lay.p)
+    n1, n2, b1, b2 = P(lay.n1), P(lay.n2), P(lay.b1), P(lay.b2)
+    u = lay.direction
+    o2_in = _inside(o2, box, -12.0)
+    shifted = abs(lay.r1w - g1.d / 2) > 1e-9 * mm.m
+
+    # circles: pitch (and reference, when shifted) dash-dotted, base, tip and root thin
+    for centre, g, rw in ((o1, g1, lay.r1w), (o2, g2, lay.r2w)):
+        pen.circle(centre, k * rw, "CENTER")
+        if shifted:
+            pen.circle(centre, k * g.d / 2, "CENTER")
+        for r in (g.db / 2, g.da / 2, g.df / 2):
+            pen.circle(centre, k * r, "CONSTRUCTION")
+
+    # generated teeth around the pitch point, one polyline per tooth
+    for gear in (1, 2):
+        idx, tooth, centre, rot, step = _teeth(lay, gear)
+        for j in idx:
+            pen.polyline(P(centre + np.exp(1j * (rot + j * step)) * tooth), "OUTLINE")
+
+    # centre lines, the common tangent t–t, O1N1 and O2N2
+    ra1k = k * g1.da / 2
+    top = complex(o1.real, box[3])
+    pen.line(o1 - 1j * (ra1k + 6.0), o2 + 10j if o2_in else top, "CENTER")
+    pen.line(o1 - (ra1k + 6.0), o1 + ra1k + 6.0, "CENTER")
+    if o2_in:
+        pen.line(o2 - 12.0, o2 + 12.0, "CENTER")
+    half_t = max(0.5 * abs(n2 - n1), 30.0)
+    pen.line(p - half_t, p + half_t, "CONSTRUCTION")
+    pen.line(o1, n1, "CONSTRUCTION")
+    pen.line(o2, n2, "CONSTRUCTION")
+
+    # the lines of action: N1N2 (a little beyond both ends), B1B2 bold
+    sheet.line(n1, n2, "CONSTRUCTION", 0.35)
+    pen.line(n1 - 8.0 * u, n1, "CONSTRUCTION", 0.35)
+    pen.line(n2, n2 + 8.0 * u, "CONSTRUCTION", 0.35)
+    sheet.line(b1, b2, "OUTLINE", 1.2)
+    for q in (n1, n2, b1, b2, p):
+        sheet.circle(q, 0.9, "CONSTRUCTION", 0.35)
+    sheet.circle(o1, 1.2, "CONSTRUCTION", 0.35)
+    if o2_in:
+        sheet.circle(o2, 1.2, "CONSTRUCTION", 0.35)
+
+    # the working pressure angle at P, between t–t and N1N2
+    r_ang = min(max(0.4 * abs(p - n2), 20.0), 40.0)
+    a0, a1 = np.pi - mm.alpha_work, np.pi
+    sheet.arc(p, r_ang, a0, a1, "DIMENSIONS")
+    for ang, sense in ((a0, -1), (a1, 1)):
+        tip = p + r_ang * np.exp(1j * ang)
+        tang = 1j * np.exp(1j * ang) * sense
+        base = tip - 2.5 * tang
+        sheet.fill([tip, base + 0.75j * tang, base - 0.75j * tang], "DIMENSIONS")
+
+    # driving directions
+    _turn(sheet, box, o1, 0.5 * k * g1.df / 2, np.radians(118), np.radians(168), lab["w1"])
+    w2r = max((o2.imag - box[3] + 24.0) / np.sin(np.radians(70)), 0.45 * k * g2.df / 2)
+    if w2r < 0.8 * k * g2.df / 2:
+        _turn(sheet, box, o2, w2r, np.radians(-70), np.radians(-84), lab["w2"])
+
+    _dimensions(sheet, lay, mm, plan, o2_in)
+
+    # labels: first the linework as obstacles
+    labels = _Labels(sheet, box)
+    labels.absorb(sheet.entities)
+    labels.absorb([Polyline(tuple(_sample([p - 3 + 3j, p + 3 + 3j], 0.5)), "TEXT")])
+    for name, q, prefer in (("P", p, 1 + 1.2j), ("N1", n1, -u + 1j * u), ("N2", n2, 1j * u),
+                            ("B2", b2, -1j * u), ("B1", b1, 1j * u - 0.3 * u), ("O1", o1, 1 + 1j)):
+        labels.place(q, name, 5.0, prefer)
+    if o2_in:
+        labels.place(o2, "O2", 5.0, 1 + 1j)
+    else:                   # the line of centres leaves the area towards O2
+        sheet.arrow(top - 14.0j, top, "CONSTRUCTION", 4.0, 0.35)
+        note = lab["o2"].format(a=_num(mm.a_work))
+        sheet.text(top + 2.5 - 5.0j, note, 3.5, "TEXT", "left", "top")
+        labels.block_box((top.real, top.imag - 10.0, top.real + text_width(note, 3.5) + 4, top.imag))
+    labels.leader(p + r_ang * np.exp(1j * (a0 + a1) / 2), f"α′ = {_num(mm.alpha_work * DEG, 3)}°",
+                  3.5, np.exp(1j * (a0 + a1) / 2), layer="DIMENSIONS")
+    labels.leader(b2 + 0.35 * (p - b2), lab["actual"], 3.5, -1j * u + 0.7)
+    labels.leader(n2 + 0.3 * (b1 - n2), lab["action"], 3.5, -1j * u - 0.5)
+    _table(sheet, mm, lay, lab)
+    return sheet
+
+
+def _turn(sheet: Sheet, box: Box, centre: complex, r: float, a0: float, a1: float,
+          text: str) -> None:
+    """A curved arrow about ``centre`` from angle a0 to a1 (paper mm), labelled at its tail;
+    left out unless it lies in the area."""
+    t = np.linspace(a0, a1, 24)
+    pts = centre + r * np.exp(1j * t)
+    if not all(_inside(q, box, -8.0) for q in pts):
+        return
+    sheet.polyline(pts[:-3], "CONSTRUCTION", weight=0.35)
+    sheet.arrow(pts[-4], pts[-1], "CONSTRUCTION", 3.5, 0.35)
+    out = np.exp(1j * a0)
+    sheet.text(pts[0] + 2.5 * out, text, 3.5, "TEXT", "left" if out.real >= 0 else "right", "middle")
+
+
+def _dimensions(sheet: Sheet, lay, mm: SpurPair, plan: _Plan, o2_in: bool) -> None:
+    """a′, and r, rb, ra, rf (and the pitch radii r′ of a shifted pair) of both gears."""
+    k, box = plan.k, plan.box
+    o1 = plan.origin
+    o2 = o1 + k * lay.o2
+    g1, g2 = mm.g1, mm.g2
+    shifted = abs(lay.r1w - g1.d / 2) > 1e-9 * mm.m
+    # centre distance a′, left of the pinion and of N2
+    n2x = o1.real + k * lay.n2.real
+    x_dim = max(min(o1.real - k * g1.da / 2, n2x) - 14.0, box[0] + 8.0)
+    if o2_in:
+        sheet.dimension(o1, o2, o1.real - x_dim, mm.a_work, f"a′ = {_num(mm.a_work)}")
+    else:                   # the far end is off the sheet: one arrow, the line up to the border
+        a, top = complex(x_dim, o1.imag), complex(x_dim, box[3])
+        sheet.line(o1 - 1.5, a - 1.5, "DIMENSIONS")
+        sheet.line(a, top, "DIMENSIONS")
+        sheet.fill([a, a + 2.5j + 0.75, a + 2.5j - 0.75], "DIMENSIONS")
+        sheet.text(complex(x_dim - 1.0, o1.imag + 0.45 * (box[3] - o1.imag)), f"a′ = {_num(mm.a_work)}",
+                   3.5, "DIMENSIONS", "center", "bottom", np.pi / 2)
+
+    def radial(centre, name, r, angles, length=None):
+        """A radius dimension at the first angle [deg] whose ends lie in the area: from the
+        centre, or (``length`` mm, centre off the area) from a point on the way to it. CAD
+        writes a radius's text outside the circle: that end must have room for it too."""
+        text = f"{name} = {_num(r)}"
+        outside = 1.05 * 3.5 * len(text) + 2.0           # as ezdxf renders it
+        for ang in angles:
+            d = np.exp(1j * np.radians(ang))
+            end = centre + k * r * d
+            start = centre if length is None else end - length * d
+            if (_inside(start, box, -2.0) and _inside(end, box, -2.0)
+                    and _inside(end + outside * d, box, -3.0)):
+                sheet.dimension(start, end, 0.0, r, text, "radius")
+                return
+
+    r1 = [("rf1", g1.df / 2), ("rb1", g1.db / 2), ("r1", g1.d / 2), ("ra1", g1.da / 2)]
+    r2 = [("rf2", g2.df / 2), ("rb2", g2.db / 2), ("r2", g2.d / 2), ("ra2", g2.da / 2)]
+    if shifted:
+        r1.insert(3, ("r1′", lay.r1w))
+        r2.insert(3, ("r2′", lay.r2w))
+    # the pinion: a fan to the lower right of O1, the largest radius the most level
+    # (upper right when the pinion's lower half is cut off)
+    for i, (name, r) in enumerate(r1[::-1]):
+        slot = -9.0 - 12.0 * i
+        radial(o1, name, r, [slot, -slot, slot - 6, -slot + 6, 180 - slot, 180 + slot,
+                             40.0 - slot, 140.0 + slot])
+    # the gear: radii just right of its drawn teeth, pointing at O2
+    idx, _, _, rot, step = _teeth(lay, 2)
+    rel = np.angle(np.exp(1j * (rot + step * np.asarray(idx))) / -1j)
+    first = np.degrees(np.max(rel) + 0.75 * step)
+    spacing = np.degrees(14.0 / (k * g2.d / 2))
+    length = None if o2_in and k * g2.da / 2 < 150.0 else 45.0
+    for i, (name, r) in enumerate(r2):
+        base = -90.0 + first + i * spacing
+        tries = [base + j * spacing * len(r2) for j in range(3)]
+        radial(o2, name, r, tries + [-180.0 - a for a in tries], length)
+
+
+def _table(sheet: Sheet, mm: SpurPair, lay, lab: dict) -> None:
+    """The data table in the upper right corner, the notes below it."""
+    _, _, x1, y1 = sheet.inner
+    g1, g2 = mm.g1, mm.g2
+    tx0 = x1 - TABLE_W
+    xs = tx0 + np.concatenate([[0.0], np.cumsum([50.0, 32.0, 35.0, 35.0, 28.0])])
+    row = 7.0
+    deg = lambda a: _num(a * DEG, 4)  # noqa: E731
+    tw = np.tan(mm.alpha_work)
+    eps_f = (g1.z * (np.tan(g1.alpha_a) - tw) + g2.z * (np.tan(g2.alpha_a) - tw)) / (2 * np.pi)
+    rows = [
+        (lab["m"], "m", _num(mm.m, 3), None, "mm"),
+        (lab["alpha"], "α", deg(mm.alpha), None, "°"),
+        (lab["ha"], "ha*", _num(mm.ha_star, 3), None, "—"),
+        (lab["c"], "c*", _num(mm.c_star, 3), None, "—"),
+        (lab["z"], "z", str(g1.z), str(g2.z), "—"),
+        (lab["x"], "x", _num(g1.x, 3), _num(g2.x, 3), "—"),
+        (lab["d"], "d", _num(g1.d, 3), _num(g2.d, 3), "mm"),
+    ]
+    if abs(lay.r1w - g1.d / 2) > 1e-9 * mm.m:
+        rows.append((lab["dw"], "d′", _num(2 * lay.r1w, 3), _num(2 * lay.r2w, 3), "mm"))
+    rows += [
+        (lab["da"], "da", _num(g1.da, 3), _num(g2.da, 3), "mm"),
+        (lab["df"], "df", _num(g1.df, 3), _num(g2.df, 3), "mm"),
+        (lab["db"], "db", _num(g1.db, 3), _num(g2.db, 3), "mm"),
+        (lab["aw"], "a′", _num(mm.a_work, 3), None, "mm"),
+        (lab["alw"], "α′", deg(mm.alpha_work), None, "°"),
+        (lab["pb"], "pb", _num(mm.pb, 3), None, "mm"),
+        (lab["b1b2"], "B1B2", _num(lay.action_length, 3), None, "mm"),
+        (lab["eps_g"], "B1B2/pb", _num(lay.contact_ratio, 4), None, "—"),
+        (lab["eps_f"], "ε", _num(eps_f, 4), None, "—"),
+    ]
+
+    def cell(xa, xb, y, text, h=3.5):
+        if text:
+            hh = fit_height(text, xb - xa - 2.0, h)
+            sheet.text((xa + xb) / 2 + 1j * (y + row / 2), text, hh, "TEXT", "center", "middle")
+
+    bottom = y1 - (len(rows) + 2) * row                 # a title row and a header row
+    sheet.polyline([tx0 + 1j * bottom, x1 + 1j * bottom, x1 + 1j * y1, tx0 + 1j * y1], "FRAME",
+                   closed=True)
+    y = y1 - row
+    cell(tx0, x1, y, lab["table"], 5.0)
+    sheet.line(tx0 + 1j * y, x1 + 1j * y, "FRAME", 0.35)
+    y -= row
+    for text, xa, xb in zip(lab["head"], xs[:-1], xs[1:]):
+        cell(xa, xb, y, text)
+    for xa in xs[1:-1]:
+        sheet.line(xa + 1j * y, xa + 1j * (y + row), "FRAME", 0.25)
+    sheet.line(tx0 + 1j * y, x1 + 1j * y, "FRAME", 0.35)
+    for name, sym, v1, v2, unit in rows:
+        y -= row
+        cell(xs[0], xs[1], y, name)
+        cell(xs[1], xs[2], y, sym)
+        if v2 is None:          # one value for the pair: the two gear columns merged
+            cell(xs[2], xs[4], y, v1)
+        else:
+            cell(xs[2], xs[3], y, v1)
+            cell(xs[3], xs[4], y, v2)
+        cell(xs[4], xs[5], y, unit)
+        for xa in (xs[1], xs[2], xs[4]) if v2 is None else xs[1:-1]:
+            sheet.line(xa + 1j * y, xa + 1j * (y + row), "FRAME", 0.25)
+        if y > bottom + 1e-9:
+            sheet.line(tx0 + 1j * y, x1 + 1j * y, "FRAME", 0.25)
+
+    notes = [lab["n_drive"], lab["n_teeth"],
+             lab["n_eps"].format(g=_num(lay.contact_ratio, 4), f=_num(eps_f, 4))]
+    for i, g, xmin in ((1, g1, mm.x_min1), (2, g2, mm.x_min2)):
+        if g.x < xmin - 1e-9:
+            notes.append(lab["n_undercut"].format(i=i, z=g.z, x=_num(g.x, 3), xmin=_num(xmin, 3)))
+    if lay.interference:
+        notes.append(lab["n_interf"])
+    ty1 = title_block_box(sheet)[3]
+    y = bottom - 9.0
+    sheet.text(tx0 + 1j * y, lab["notes"], 5.0, "TEXT", "left", "bottom")
+    for i, note in enumerate(notes, start=1):
+        for j, chunk in enumerate(_wrap(f"{i}. {note}", TABLE_W - 10.0, 3.5)):
+            y -= 6.0
+            if y < ty1 + 4.0:
+                return
+            sheet.text(tx0 + (2.0 if j == 0 else 6.0) + 1j * y, chunk, 3.5, "TEXT", "left", "bottom")
+
+
+def _wrap(text: str, width: float, height: float) -> list[str]:
+    """``text`` broken into lines of at most ``width`` mm (CJK anywhere, Latin at spaces)."""
+    lines, current = [], ""
+    for token in _tokens(text):
+        if current and text_width(current + token, height) > width:
+            lines.append(current.rstrip())
+            current = token.lstrip()
+        else:
+            current += token
+    if current.strip():
+        lines.append(current.rstrip())
+    return lines
+
+
+def _tokens(text: str) -> list[str]:
+    out, word = [], ""
+    for ch in text:
+        if ord(ch) > 0x2E80:
+            if word:
+                out.append(word)
+                word = ""
+            out.append(ch)
+        elif ch == " ":
+            out.append(word + " ")
+            word = ""
+        else:
+            word += ch
+    if word:
+        out.append(word)
+    return out

@@ -1,0 +1,396 @@
+--[[
+docx-numbering.lua -- pandoc Lua filter for the Word (.docx) report.
+
+Used by mechdesign.render.docx (pandoc 3 AST).  It
+
+  * numbers figure captions "图 N  ..." (lang zh) / "Figure N: ..." (en) and
+    captioned tables "表 N  ..." / "Table N: ..."; the number is a Word SEQ
+    field (with the number already filled in), so Word's "Update Field" and
+    "Insert Caption" continue the same sequence;
+  * replaces references @fig:x / @tbl:x (also [@fig:x], -@fig:x for the bare
+    number) by the same text "图 N" / "Figure N";
+  * numbers every display equation ($$ ... $$): the equation stays a Word
+    equation (OMML, made by pandoc from the TeX) and is laid out in a
+    borderless three-column table  | | equation | (N) |;
+  * converts image widths given in percent to centimetres of the text width;
+  * puts a title block (student, student no., class, supervisor, date) under
+    the title and subtitle, followed by a page break.
+
+Metadata read: report-lang (else lang), labels.{student,student_id,class,teacher,date},
+student, student_id, class, teacher, date, docx-text-width (twips).
+Styles used (defined in reference.docx; Word falls back to Normal if a
+style is missing): Equation, Equation Number, Equation Table, Title Info,
+Table Text.
+--]]
+
+local stringify = pandoc.utils.stringify
+
+local TEXT_WIDTH = 9070   -- twips; A4 with 2.5 cm margins (overridden by metadata)
+local is_zh = true
+local names               -- caption labels of the current language
+local counters = { figure = 0, table = 0, equation = 0 }
+local targets = {}        -- label -> { kind = "figure"|"table", n = N }
+
+local NAMES = {
+  zh = { figure = "图", table = "表", caption_sep = { " ", " " }, list_sep = "、", info_sep = "：" },
+  en = { figure = "Figure", table = "Table", caption_sep = { ":", " " }, list_sep = ", ", info_sep = ": " },
+}
+-- SEQ field identifiers (Word's caption label names)
+local SEQ = { zh = { figure = "图", table = "表" }, en = { figure = "Figure", table = "Table" } }
+
+local function warn(msg)
+  if pandoc.log and pandoc.log.warn then
+    pandoc.log.warn(msg)
+  else
+    io.stderr:write("[WARNING] " .. msg .. "\n")
+  end
+end
+
+local function xml_escape(s)
+  return (s:gsub("&", "&amp;"):gsub("<", "&lt;"):gsub(">", "&gt;"):gsub('"', "&quot;"))
+end
+
+local function run_xml(text)
+  return '<w:r><w:t xml:space="preserve">' .. xml_escape(text) .. "</w:t></w:r>"
+end
+
+-- A SEQ field whose current result is already n (Word shows it as is; F9 recomputes).
+-- Written as a complex field (begin/instr/separate/result/end), as Word does:
+-- readers that do not evaluate fields still show the result.
+local function seq_xml(name, n)
+  local function fld(kind) return '<w:r><w:fldChar w:fldCharType="' .. kind .. '" /></w:r>' end
+  return fld("begin")
+      .. '<w:r><w:instrText xml:space="preserve"> SEQ ' .. xml_escape(name)
+      .. ' \\* ARABIC </w:instrText></w:r>'
+      .. fld("separate")
+      .. "<w:r><w:t>" .. tostring(n) .. "</w:t></w:r>"
+      .. fld("end")
+end
+
+local function lang_key() return is_zh and "zh" or "en" end
+
+-- "图 N" as inlines; with_field: the number as a SEQ field (captions only)
+local function label_inlines(kind, n, with_field)
+  local out = pandoc.Inlines { pandoc.Str(names[kind]), pandoc.Space() }
+  if with_field then
+    out:insert(pandoc.RawInline("openxml", seq_xml(SEQ[lang_key()][kind], n)))
+  else
+    out:insert(pandoc.Str(tostring(n)))
+  end
+  return out
+end
+
+-- Prefix "图 N  " / "Figure N: " to a caption (pandoc Caption object).
+local function number_caption(caption, kind, n)
+  local prefix = label_inlines(kind, n, true)
+  local body = caption.long
+  local first = body[1]
+  if first and (first.t == "Plain" or first.t == "Para") and #first.content > 0 then
+    -- zh: two spaces (about one ideographic space); en: ": "
+    for _, piece in ipairs(names.caption_sep) do
+      prefix:insert(piece == " " and pandoc.Space() or pandoc.Str(piece))
+    end
+    prefix:extend(first.content)
+    first.content = prefix
+  elseif first and (first.t == "Plain" or first.t == "Para") then
+    first.content = prefix
+  else
+    body:insert(1, pandoc.Plain(prefix))
+  end
+  caption.long = body
+  return caption
+end
+
+---------------------------------------------------------------------------
+-- display equations
+
+local function twips(x) return tostring(math.floor(x + 0.5)) end
+
+local function equation_blocks(math_el, n)
+  local side = TEXT_WIDTH * 0.1
+  local mid = TEXT_WIDTH - 2 * side
+  local no_borders = "<w:tblBorders>"
+    .. '<w:top w:val="nil" /><w:left w:val="nil" /><w:bottom w:val="nil" />'
+    .. '<w:right w:val="nil" /><w:insideH w:val="nil" /><w:insideV w:val="nil" />'
+    .. "</w:tblBorders>"
+  local function cell_pr(w)
+    return '<w:tcPr><w:tcW w:w="' .. twips(w) .. '" w:type="dxa" /><w:vAlign w:val="center" /></w:tcPr>'
+  end
+  local open = "<w:tbl><w:tblPr>"
+    .. '<w:tblStyle w:val="EquationTable" />'
+    .. '<w:tblW w:w="5000" w:type="pct" /><w:jc w:val="center" />'
+    .. no_borders
+    .. '<w:tblLayout w:type="fixed" />'
+    .. '<w:tblCellMar><w:top w:w="0" w:type="dxa" /><w:left w:w="0" w:type="dxa" />'
+    .. '<w:bottom w:w="0" w:type="dxa" /><w:right w:w="0" w:type="dxa" /></w:tblCellMar>'
+    .. '<w:tblLook w:val="0000" w:firstRow="0" w:lastRow="0" w:firstColumn="0" '
+    .. 'w:lastColumn="0" w:noHBand="1" w:noVBand="1" />'
+    .. "</w:tblPr><w:tblGrid>"
+    .. '<w:gridCol w:w="' .. twips(side) .. '" /><w:gridCol w:w="' .. twips(mid) .. '" />'
+    .. '<w:gridCol w:w="' .. twips(side) .. '" /></w:tblGrid>'
+    .. "<w:tr><w:trPr><w:cantSplit /></w:trPr>"
+    .. "<w:tc>" .. cell_pr(side)
+    .. '<w:p><w:pPr><w:pStyle w:val="EquationNumber" /></w:pPr></w:p></w:tc>'
+    .. "<w:tc>" .. cell_pr(mid)
+  local close = "</w:tc><w:tc>" .. cell_pr(side)
+    .. '<w:p><w:pPr><w:pStyle w:val="EquationNumber" /><w:jc w:val="right" /></w:pPr>'
+    .. run_xml("(") .. seq_xml("Equation", n) .. run_xml(")")
+    .. "</w:p></w:tc></w:tr></w:tbl>"
+  return {
+    pandoc.RawBlock("openxml", open),
+    pandoc.Div({ pandoc.Para { math_el } }, { ["custom-style"] = "Equation" }),
+    pandoc.RawBlock("openxml", close),
+  }
+end
+
+local function is_display_math(el)
+  return el.t == "Math" and el.mathtype == "DisplayMath"
+end
+
+local function is_blank(el)
+  return el.t == "Space" or el.t == "SoftBreak" or el.t == "LineBreak"
+end
+
+-- Para/Plain containing display math -> text paragraphs and numbered equations.
+local function split_display_math(block)
+  local found = false
+  for _, el in ipairs(block.content) do
+    if is_display_math(el) then found = true; break end
+  end
+  if not found then return nil end
+  local make = block.t == "Para" and pandoc.Para or pandoc.Plain
+  local out = pandoc.Blocks {}
+  local current = pandoc.Inlines {}
+  local function flush()
+    while #current > 0 and is_blank(current[1]) do current:remove(1) end
+    while #current > 0 and is_blank(current[#current]) do current:remove(#current) end
+    if #current > 0 then out:insert(make(current)) end
+    current = pandoc.Inlines {}
+  end
+  for _, el in ipairs(block.content) do
+    if is_display_math(el) then
+      flush()
+      counters.equation = counters.equation + 1
+      out:extend(equation_blocks(el, counters.equation))
+    else
+      current:insert(el)
+    end
+  end
+  flush()
+  return out, false
+end
+
+---------------------------------------------------------------------------
+-- figures, tables, images
+
+local function percent_to_cm(value)
+  local pct = value and tonumber(value:match("^%s*([%d%.]+)%%%s*$"))
+  if not pct then return nil end
+  return string.format("%.2fcm", pct / 100 * TEXT_WIDTH / 566.93)
+end
+
+local function fix_image(img)
+  local width = percent_to_cm(img.attributes.width)
+  if width then
+    img.attributes.width = width
+    if img.attributes.height and img.attributes.height:match("%%") then
+      img.attributes.height = nil
+    end
+  end
+  return img
+end
+
+local function figure_id(fig)
+  if fig.identifier ~= "" then return fig.identifier end
+  local id = ""
+  fig:walk { Image = function(img) if id == "" then id = img.identifier end end }
+  return id
+end
+
+local function wrap_cells(tbl)
+  -- table text: its own paragraph style (small, single-spaced, no indent).
+  -- Properties of pandoc objects return copies: modify, then assign back.
+  local function wrap_rows(rows)
+    for r, row in ipairs(rows) do
+      local cells = row.cells
+      for c, cell in ipairs(cells) do
+        if #cell.contents > 0 then
+          -- (pandoc styles a bare Plain in a cell "Compact" whatever its Div says)
+          local blocks = pandoc.Blocks(cell.contents):walk {
+            Plain = function(plain) return pandoc.Para(plain.content) end,
+          }
+          cell.contents = { pandoc.Div(blocks, { ["custom-style"] = "Table Text" }) }
+          cells[c] = cell
+        end
+      end
+      row.cells = cells
+      rows[r] = row
+    end
+    return rows
+  end
+  local head = tbl.head
+  head.rows = wrap_rows(head.rows)
+  tbl.head = head
+  local bodies = tbl.bodies
+  for b, body in ipairs(bodies) do
+    body.head = wrap_rows(body.head)
+    body.body = wrap_rows(body.body)
+    bodies[b] = body
+  end
+  tbl.bodies = bodies
+  local foot = tbl.foot
+  foot.rows = wrap_rows(foot.rows)
+  tbl.foot = foot
+  return tbl
+end
+
+local number_pass = {
+  traverse = "topdown",
+  Figure = function(fig)
+    counters.figure = counters.figure + 1
+    local id = figure_id(fig)
+    if id ~= "" then targets[id] = { kind = "figure", n = counters.figure } end
+    fig.caption = number_caption(fig.caption, "figure", counters.figure)
+    return fig:walk { Image = fix_image }, false
+  end,
+  Table = function(tbl)
+    if stringify(tbl.caption.long) ~= "" then
+      counters.table = counters.table + 1
+      if tbl.identifier ~= "" then
+        targets[tbl.identifier] = { kind = "table", n = counters.table }
+      end
+      tbl.caption = number_caption(tbl.caption, "table", counters.table)
+    end
+    -- display math inside table cells stays unnumbered (no nested tables)
+    return wrap_cells(tbl:walk { Image = fix_image }), false
+  end,
+  Para = split_display_math,
+  Plain = split_display_math,
+  Image = fix_image,
+}
+
+---------------------------------------------------------------------------
+-- references
+
+local function utf8_first(s)
+  for _, c in utf8.codes(s) do return c end
+end
+
+local function utf8_last(s)
+  local last
+  for _, c in utf8.codes(s) do last = c end
+  return last
+end
+
+local function is_cjk(c)
+  return c ~= nil and ((c >= 0x3000 and c <= 0x303F) or (c >= 0x3400 and c <= 0x9FFF)
+    or (c >= 0xF900 and c <= 0xFAFF) or (c >= 0xFF00 and c <= 0xFFEF))
+end
+
+local function cjk_end(el) return el and el.t == "Str" and is_cjk(utf8_last(el.text)) end
+local function cjk_start(el) return el and el.t == "Str" and is_cjk(utf8_first(el.text)) end
+
+-- Inlines replacing a Cite whose keys are all figure/table labels, else nil.
+local function reference_inlines(cite)
+  local out = pandoc.Inlines {}
+  for i, citation in ipairs(cite.citations) do
+    local target = targets[citation.id]
+    if not target then
+      if citation.id:match("^fig:") or citation.id:match("^tbl:") then
+        warn("docx: unknown reference @" .. citation.id)
+      end
+      return nil
+    end
+    if i > 1 then out:insert(pandoc.Str(names.list_sep)) end
+    if #citation.prefix > 0 then
+      out:extend(citation.prefix)
+      out:insert(pandoc.Space())
+    end
+    if citation.mode == "SuppressAuthor" then
+      out:insert(pandoc.Str(tostring(target.n)))
+    else
+      out:extend(label_inlines(target.kind, target.n, false))
+    end
+    if #citation.suffix > 0 then out:extend(citation.suffix) end
+  end
+  return out
+end
+
+local function resolve_references(inlines)
+  local out = pandoc.Inlines {}
+  local changed = false
+  local i = 1
+  while i <= #inlines do
+    local el = inlines[i]
+    local replacement = el.t == "Cite" and reference_inlines(el) or nil
+    if replacement then
+      changed = true
+      -- Chinese: no space between a CJK character and the reference
+      if #out >= 2 and out[#out].t == "Space" and cjk_end(out[#out - 1]) then
+        out:remove(#out)
+      end
+      out:extend(replacement)
+      if inlines[i + 1] and inlines[i + 1].t == "Space" and cjk_start(inlines[i + 2]) then
+        i = i + 1
+      end
+    else
+      out:insert(el)
+    end
+    i = i + 1
+  end
+  if changed then return out end
+  return nil
+end
+
+---------------------------------------------------------------------------
+-- title block
+
+local INFO_KEYS = { "student", "student_id", "class", "teacher", "date" }
+local DEFAULT_LABELS = {
+  zh = { student = "姓名", student_id = "学号", class = "班级", teacher = "指导教师", date = "日期" },
+  en = { student = "Name", student_id = "Student No.", class = "Class", teacher = "Supervisor",
+         date = "Date" },
+}
+
+local function title_block(meta)
+  local labels = meta.labels or {}
+  local blocks = pandoc.Blocks {}
+  for _, key in ipairs(INFO_KEYS) do
+    local value = meta[key] and stringify(meta[key]) or ""
+    if value ~= "" then
+      local label = labels[key] and stringify(labels[key]) or DEFAULT_LABELS[lang_key()][key]
+      local inlines = pandoc.Inlines { pandoc.Str(label .. names.info_sep) }
+      inlines:extend(pandoc.Inlines(value))
+      blocks:insert(pandoc.Div({ pandoc.Para(inlines) }, { ["custom-style"] = "Title Info" }))
+    end
+  end
+  local has_title = meta.title and stringify(meta.title) ~= ""
+  if #blocks > 0 or has_title then
+    blocks:insert(pandoc.RawBlock("openxml", '<w:p><w:r><w:br w:type="page" /></w:r></w:p>'))
+  end
+  return blocks
+end
+
+---------------------------------------------------------------------------
+
+function Pandoc(doc)
+  local meta = doc.meta
+  local lang = meta["report-lang"] or meta.lang
+  lang = lang and stringify(lang) or "zh"
+  is_zh = lang:lower():match("^zh") ~= nil
+  names = NAMES[lang_key()]
+  local width = meta["docx-text-width"] and tonumber(stringify(meta["docx-text-width"]))
+  if width and width > 0 then TEXT_WIDTH = width end
+
+  doc = doc:walk(number_pass)
+  doc = doc:walk { Inlines = resolve_references }
+
+  local front = title_block(meta)
+  if #front > 0 then
+    front:extend(doc.blocks)
+    doc.blocks = front
+  end
+  -- the date is shown in the title block, not as pandoc's "Date" paragraph
+  doc.meta.date = nil
+  return doc
+end

@@ -1,0 +1,195 @@
+"""Rendering of the report as a Word file: Markdown -> pandoc (+ Lua filter) -> .docx."""
+
+from __future__ import annotations
+
+import re
+import shutil
+import zipfile
+from pathlib import Path
+
+import pytest
+
+pytest.importorskip("pypandoc")
+PIL_Image = pytest.importorskip("PIL.Image")
+
+from mechdesign.render.docx import (  # noqa: E402
+    DocxRenderError,
+    reference_text_width,
+    render_docx,
+)
+from mechdesign.render.report import template_dir  # noqa: E402
+
+ROOT = Path(__file__).parents[1]
+TEMPLATES = template_dir()
+METADATA = {
+    "title": "机械原理课程设计说明书",
+    "subtitle": "牛头刨床导杆机构",
+    "student": "张三",
+    "student_id": "2021012345",
+    "class": "",  # empty values are skipped
+    "teacher": "李四",
+    "date": "2024 年 6 月",
+    "lang": "zh",
+}
+MARKDOWN = """\
+# 运动分析
+
+曲柄转速 $n_2 = 60\\ \\text{r/min}$，刨头位移线图见 @fig:ram，运动参数见 @tbl:kin。
+
+$$ \\theta = 180° \\times \\frac{K-1}{K+1} $$
+
+$$ L_{O_3B} = \\frac{H}{2\\sin(\\theta/2)} $$
+
+| $\\varphi$/° | 位置 | $s_5$/mm |
+|:--|:-:|--:|
+| 0 | 左极限 | 12.50 |
+| 30 | 中间 | 25.10 |
+
+: 各位置运动参数 {#tbl:kin}
+
+![刨头位移线图](figures/ram.png){#fig:ram width=70%}
+"""
+MARKDOWN_EN = """\
+# Kinematics
+
+The ram displacement is shown in @fig:ram and listed in @tbl:kin.
+
+$$ v = \\frac{ds}{dt} $$
+
+| $\\varphi$/° | $s_5$/mm |
+|:--|--:|
+| 0 | 12.50 |
+
+: Positions {#tbl:kin}
+
+![Ram displacement](figures/ram.png){#fig:ram width=70%}
+"""
+
+
+def _write_sample(folder: Path, text: str) -> Path:
+    (folder / "figures").mkdir(parents=True, exist_ok=True)
+    PIL_Image.new("RGB", (60, 30), (30, 90, 200)).save(folder / "figures" / "ram.png")
+    md = folder / "report.md"
+    md.write_text(text, encoding="utf-8")
+    return md
+
+
+def _part(docx: Path, name: str) -> str:
+    with zipfile.ZipFile(docx) as archive:
+        return archive.read(name).decode("utf-8")
+
+
+def _paragraph_texts(document_xml: str) -> list[str]:
+    """Visible text of each paragraph (runs and field results joined, tags removed)."""
+    texts = []
+    for para in re.findall(r"<w:p[ >].*?</w:p>", document_xml, flags=re.DOTALL):
+        para = re.sub(r"<w:instrText[^>]*>.*?</w:instrText>", "", para, flags=re.DOTALL)
+        texts.append("".join(re.findall(r"<w:t(?: [^>]*)?>([^<]*)</w:t>", para)))
+    return texts
+
+
+@pytest.fixture(scope="module")
+def zh_docx(tmp_path_factory) -> Path:
+    folder = tmp_path_factory.mktemp("docx-zh")
+    md = _write_sample(folder, MARKDOWN)
+    out = folder / "out" / "report.docx"
+    render_docx(md, out, METADATA, TEMPLATES)
+    return out
+
+
+def test_chinese_text_tables_math_and_image(zh_docx):
+    document = _part(zh_docx, "word/document.xml")
+    texts = _paragraph_texts(document)
+    joined = "\n".join(texts)
+    assert "曲柄转速" in document and "左极限" in document
+    assert document.count("<w:tbl>") >= 1
+    assert 'w:tblStyle w:val="Table"' in document  # the pipe table (three-line style)
+    # display equations stay editable Word equations (OMML), not images
+    assert document.count("<m:oMathPara>") == 2
+    assert document.count("<m:oMath") >= 3  # 2 display + inline math
+    assert "<m:f>" in document and "<m:sSub>" in document  # \frac and subscripts
+    with zipfile.ZipFile(zh_docx) as archive:
+        assert any(n.startswith("word/media/") and n.endswith(".png") for n in archive.namelist())
+    # pipe-table alignment survives
+    assert '<w:jc w:val="right" />' in document and '<w:jc w:val="center" />' in document
+    assert "机械原理课程设计说明书" in joined
+
+
+def test_numbered_captions_references_and_equations(zh_docx):
+    texts = _paragraph_texts(_part(zh_docx, "word/document.xml"))
+    assert any(t.startswith("图 1 ") and "刨头位移线图" in t for t in texts)
+    assert any(t.startswith("表 1 ") and "各位置运动参数" in t for t in texts)
+    body = next(t for t in texts if t.startswith("曲柄转速"))
+    assert "@fig" not in body and "@tbl" not in body
+    assert "见图 1" in body and "见表 1" in body  # no space between CJK text and reference
+    assert "(1)" in texts and "(2)" in texts
+    document = _part(zh_docx, "word/document.xml")
+    assert "SEQ 图" in document and "SEQ 表" in document and "SEQ Equation" in document
+
+
+def test_title_block(zh_docx):
+    texts = _paragraph_texts(_part(zh_docx, "word/document.xml"))
+    assert "牛头刨床导杆机构" in texts
+    assert "姓名：张三" in texts and "学号：2021012345" in texts and "指导教师：李四" in texts
+    assert any(t.startswith("日期：2024") for t in texts)
+    assert not any(t.startswith("班级") for t in texts)  # empty value skipped
+
+
+def test_reference_doc_fonts_and_page(zh_docx):
+    styles = _part(zh_docx, "word/styles.xml")
+    east_asia = set(re.findall(r'w:eastAsia="([^"]+)"', styles))
+    assert east_asia & {"宋体", "SimSun"}
+    assert east_asia & {"黑体", "SimHei"}
+    heading1 = re.search(r'<w:style [^>]*w:styleId="Heading1".*?</w:style>', styles, re.DOTALL)
+    assert heading1 and 'w:eastAsia="黑体"' in heading1.group(0) and 'w:val="32"' in heading1.group(0)
+    document = _part(zh_docx, "word/document.xml")
+    assert re.search(r'<w:pgSz w:h="16838" w:w="11906"|<w:pgSz w:w="11906" w:h="16838"', document)
+    assert reference_text_width(TEMPLATES / "reference.docx") == 11906 - 2 * 1418
+
+
+def test_english_captions(tmp_path):
+    md = _write_sample(tmp_path, MARKDOWN_EN)
+    out = tmp_path / "report.docx"
+    render_docx(md, out, {"title": "Course design", "student": "Zhang San", "lang": "en"}, TEMPLATES)
+    texts = _paragraph_texts(_part(out, "word/document.xml"))
+    assert any(t.startswith("Figure 1: Ram displacement") for t in texts)
+    assert any(t.startswith("Table 1: Positions") for t in texts)
+    assert any("shown in Figure 1 and listed in Table 1." in t for t in texts)
+    assert "(1)" in texts
+    assert "Name: Zhang San" in texts
+
+
+def test_pandoc_failure_raises_and_leaves_no_file(tmp_path):
+    templates = tmp_path / "templates"
+    templates.mkdir()
+    shutil.copy(TEMPLATES / "docx-numbering.lua", templates)
+    (templates / "reference.docx").write_bytes(b"not a zip file")
+    md = _write_sample(tmp_path, MARKDOWN)
+    out = tmp_path / "report.docx"
+    with pytest.raises(DocxRenderError, match="pandoc"):
+        render_docx(md, out, METADATA, templates)
+    assert list(tmp_path.glob("*.docx")) == [] and not list(tmp_path.glob(".*tmp*"))
+    with pytest.raises(DocxRenderError, match="not found"):
+        render_docx(md, out, METADATA, tmp_path / "missing")
+
+
+def test_real_cam_report(tmp_path):
+    from typer.testing import CliRunner
+
+    from mechdesign.cli import app
+
+    out = tmp_path / "cam"
+    result = CliRunner().invoke(app, ["run", str(ROOT / "designs" / "cam_7_3.yaml"),
+                                      "-f", "md", "-o", str(out)])
+    assert result.exit_code == 0, result.output
+    docx = out / "report.docx"
+    render_docx(out / "report.md", docx, METADATA, TEMPLATES)
+    document = _part(docx, "word/document.xml")
+    texts = _paragraph_texts(document)
+    markdown = (out / "report.md").read_text(encoding="utf-8")
+    n_display = len(re.findall(r"\$\$.+?\$\$", markdown, flags=re.DOTALL))
+    assert n_display > 0
+    assert document.count("<m:oMathPara>") == n_display
+    assert f"({n_display})" in texts
+    assert document.count('w:tblStyle w:val="Table"') >= 2
+    assert any(t.startswith("表 1 ") for t in texts) and any(t.startswith("图 1 ") for t in texts)
