@@ -1,0 +1,118 @@
+"""Deliverables from one run, as a user gets them: every example brief with a linkage, cam
+or gear stage gets its sheets (DXF re-opens with the named layers), the report embeds
+their previews, --format docx writes a Word file with the Chinese text, tables and
+equations, --format gif an animation."""
+from __future__ import annotations
+
+import re
+import zipfile
+from pathlib import Path
+
+import pytest
+from typer.testing import CliRunner
+
+from mechdesign.cli import app
+
+ezdxf = pytest.importorskip("ezdxf")
+
+ROOT = Path(__file__).resolve().parents[1]
+LAYERS = {"OUTLINE", "CENTER", "CONSTRUCTION", "DIMENSIONS", "TEXT", "FRAME"}
+
+# brief → the sheets it must give (by the stages it has)
+EXPECTED = {
+    "shaper": ["linkage_A1", "cam_A2", "gear_A2"],
+    "cam_7_3": ["cam_A2"],
+    "lockbeam_cam": ["cam_A2"],
+    "cam_7_1": [],           # analysis of a given eccentric disc: no cam to draw
+    "furnace_drive": [],     # drive only
+}
+
+
+def _run(args):
+    result = CliRunner().invoke(app, args)
+    return result
+
+
+def test_every_example_brief_is_covered():
+    briefs = {p.stem for p in (ROOT / "designs").glob("*.yaml")}
+    assert briefs == set(EXPECTED)
+
+
+@pytest.mark.parametrize("name", sorted(EXPECTED))
+def test_sheets_for_each_example_brief(name, tmp_path):
+    out = tmp_path / name
+    result = _run(["run", str(ROOT / "designs" / f"{name}.yaml"), "-o", str(out), "-f", "md,dxf"])
+    assert result.exit_code == 0, result.output
+    got = sorted(p.stem for p in (out / "sheets").glob("*.dxf")) if (out / "sheets").exists() else []
+    assert got == sorted(EXPECTED[name])
+    md = (out / "report.md").read_text(encoding="utf-8")
+    for stem in EXPECTED[name]:
+        doc = ezdxf.readfile(out / "sheets" / f"{stem}.dxf")
+        layers = {layer.dxf.name for layer in doc.layers}
+        assert LAYERS <= layers
+        used = {e.dxf.layer for e in doc.modelspace()}
+        assert LAYERS <= used, (stem, LAYERS - used)
+        assert doc.units == 4                                     # millimetres
+        kind = stem.split("_")[0]
+        preview = out / "figures" / f"sheet_{kind}.png"
+        assert preview.exists() and f"figures/sheet_{kind}.png" in md
+        assert f"sheets/{stem}.dxf" in md
+    if not EXPECTED[name]:
+        assert "设计图纸" not in md and "Drawing sheets" not in md
+
+
+def test_shaper_all_formats(tmp_path):
+    """The issue's command: report, three sheets (PDF + DXF), Word, animation."""
+    out = tmp_path / "shaper"
+    result = _run(["run", str(ROOT / "designs" / "shaper.yaml"), "-o", str(out),
+                   "-f", "md,pdf,docx,dxf,gif"])
+    assert result.exit_code == 0, result.output
+    for stem in EXPECTED["shaper"]:
+        pdf = (out / "sheets" / f"{stem}.pdf").read_bytes()
+        assert pdf.startswith(b"%PDF")
+        # vector drawing at true paper size (A1 841 × 594 mm, A2 594 × 420 mm)
+        w, h = {"A1": (841, 594), "A2": (594, 420)}[stem.split("_")[1]]
+        box = re.search(rb"/MediaBox \[ *0 0 ([0-9.]+) ([0-9.]+)", pdf)
+        assert abs(float(box.group(1)) - w / 25.4 * 72) < 0.5
+        assert abs(float(box.group(2)) - h / 25.4 * 72) < 0.5
+        assert b"/Subtype /Image" not in pdf
+    # Word: the same report with its Chinese text, tables and equations
+    with zipfile.ZipFile(out / "report.docx") as z:
+        xml = z.read("word/document.xml").decode("utf-8")
+        media = [n for n in z.namelist() if n.startswith("word/media/")]
+    assert "导杆机构设计" in xml and "飞轮设计" in xml
+    assert xml.count("<w:tbl>") + xml.count("<w:tbl ") >= 10
+    assert xml.count("<m:oMath") >= 20
+    # the text runs with the fields' results (not their instructions)
+    plain = re.sub(r"<w:instrText[^>]*>.*?</w:instrText>", "", xml)
+    plain = re.sub(r"\s+", " ", re.sub(r"<[^>]+>", "", plain))
+    assert "图 1" in plain and "表 1" in plain and "(1)" in plain
+    assert len(media) >= 8
+    # the animation: one revolution, small
+    from PIL import Image
+
+    gif = out / "animation.gif"
+    assert gif.stat().st_size < 1_000_000
+    with Image.open(gif) as im:
+        assert im.is_animated and im.n_frames >= 36
+    # nothing left from the staging
+    assert not [p for p in out.iterdir() if p.name.startswith(".")]
+
+
+def test_gif_for_a_machine_without_linkage_warns(tmp_path):
+    out = tmp_path / "cam"
+    result = _run(["run", str(ROOT / "designs" / "cam_7_3.yaml"), "-o", str(out), "-f", "md,gif"])
+    assert result.exit_code == 0, result.output
+    assert "no linkage to animate" in result.output
+    assert not (out / "animation.gif").exists()
+
+
+def test_polygon_positions_from_the_brief_are_validated(tmp_path):
+    text = (ROOT / "designs" / "shaper.yaml").read_text(encoding="utf-8")
+    bad = tmp_path / "bad.yaml"
+    bad.write_text(text.replace("polygon_positions: [4, 10]", "polygon_positions: [4, 13]"),
+                   encoding="utf-8")
+    result = _run(["run", str(bad), "-o", str(tmp_path / "o"), "-f", "md"])
+    assert result.exit_code == 2
+    assert "sheets.polygon_positions" in result.output and "1 … 12" in result.output
+    assert "Traceback" not in result.output
