@@ -244,6 +244,57 @@ local function wrap_cells(tbl)
   return tbl
 end
 
+-- Column widths from the cells' contents (pandoc leaves "natural" widths to the reader:
+-- Word autofits, LibreOffice and WPS squeeze the columns). Half-width characters count 1,
+-- CJK and full-width 2; TeX math counts about half its source length.
+local function text_len(s)
+  local n = 0
+  for _, c in utf8.codes(s) do
+    n = n + ((c >= 0x2E80 and c <= 0xFFEF) and 2 or 1)
+  end
+  return n
+end
+
+local function cell_len(cell)
+  local n = 0
+  pandoc.Blocks(cell.contents):walk {
+    Str = function(el) n = n + text_len(el.text) end,
+    Space = function() n = n + 1 end,
+    Math = function(el) n = n + math.ceil(text_len(el.text) / 2) end,
+  }
+  return n
+end
+
+local function set_widths(tbl)
+  local ncol = #tbl.colspecs
+  local longest = {}
+  for c = 1, ncol do longest[c] = 2 end
+  local function scan(rows)
+    for _, row in ipairs(rows) do
+      for c, cell in ipairs(row.cells) do
+        if c <= ncol and cell.col_span == 1 then
+          longest[c] = math.max(longest[c], cell_len(cell))
+        end
+      end
+    end
+  end
+  scan(tbl.head.rows)
+  for _, body in ipairs(tbl.bodies) do scan(body.head); scan(body.body) end
+  local char, pad = 118, 300          -- twips per half-width character at 10.5 pt; cell margins
+  local natural, total = {}, 0
+  for c = 1, ncol do
+    natural[c] = math.min(longest[c], 40) * char + pad
+    total = total + natural[c]
+  end
+  local scale = total > TEXT_WIDTH and TEXT_WIDTH / total or 1
+  local specs = tbl.colspecs
+  for c = 1, ncol do
+    specs[c] = { specs[c][1], natural[c] * scale / TEXT_WIDTH }
+  end
+  tbl.colspecs = specs
+  return tbl
+end
+
 local number_pass = {
   traverse = "topdown",
   Figure = function(fig)
@@ -262,7 +313,7 @@ local number_pass = {
       tbl.caption = number_caption(tbl.caption, "table", counters.table)
     end
     -- display math inside table cells stays unnumbered (no nested tables)
-    return wrap_cells(tbl:walk { Image = fix_image }), false
+    return wrap_cells(set_widths(tbl:walk { Image = fix_image })), false
   end,
   Para = split_display_math,
   Plain = split_display_math,
