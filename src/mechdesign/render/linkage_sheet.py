@@ -23,7 +23,7 @@ LABELS = {
     "zh": {"mechanism": "机构运动简图", "vel": "位置 {p} 速度多边形", "acc": "位置 {p} 加速度多边形",
            "force56": "位置 {p} 杆组 5-6 力多边形", "force34": "位置 {p} 杆组 3-4 力多边形",
            "s": "刨头位移 s (mm)", "v": "刨头速度 v (m/s)", "a": "刨头加速度 a (m/s²)",
-           "mb": "平衡力矩 Mb (N·m)", "dE": "动能增量 ΔE (J)", "phase": "曲柄转角 φ (°)",
+           "mb": "平衡力矩 Mb (N·m)", "dE": "动能增量 ΔE (J)", "work": "功 W、动能增量 ΔE (J)", "phase": "曲柄转角 φ (°)",
            "curves": "刨头运动线图", "mbt": "平衡力矩线图", "et": "飞轮能量线图",
            "md": "等效驱动力矩 Md = {v} N·m", "table": "各位置运动与力分析结果",
            "pos": "位置", "guide": "刨头导路", "stroke": "行程 H",
@@ -33,7 +33,7 @@ LABELS = {
            "acc": "Acceleration polygon, position {p}", "force56": "Force polygon, group 5-6, pos. {p}",
            "force34": "Force polygon, group 3-4, pos. {p}",
            "s": "ram displacement s (mm)", "v": "ram velocity v (m/s)", "a": "ram acceleration a (m/s²)",
-           "mb": "balancing torque Mb (N·m)", "dE": "energy change ΔE (J)", "phase": "crank angle φ (°)",
+           "mb": "balancing torque Mb (N·m)", "dE": "energy change ΔE (J)", "work": "work W, energy change ΔE (J)", "phase": "crank angle φ (°)",
            "curves": "Ram motion curves", "mbt": "Balancing torque", "et": "Flywheel energy",
            "md": "driving torque Md = {v} N·m", "table": "Results at the positions",
            "pos": "Pos.", "guide": "ram guide", "stroke": "stroke H",
@@ -356,9 +356,20 @@ def _curves(s: Sheet, r: dict, lab: dict, box, chosen: list[str], scales: dict) 
           marks=[(pos_ph[q], mb[n + q], labels[q]) for q in regular])
     y_e = y_mb - h - 26.0
     e = fl.energy
-    m = chart(s, (left, y_e - h, bx1, y_e), ph, [Series(np.append(e, e[0]))], xlabel=lab["phase"],
-              ylabel=lab["dE"], title=lab["et"], xticks=ticks,
+    # the work-curve method: W_d = M_d φ (straight), W_r = ∫ M_b dφ, ΔE = W_d − W_r
+    phi = np.radians(ph)
+    mb_c = closed(mb)
+    w_r = np.concatenate([[0.0], np.cumsum(0.5 * (mb_c[1:] + mb_c[:-1]) * np.diff(phi))])
+    w_d = md * phi
+    m = chart(s, (left, y_e - h, bx1, y_e), ph,
+              [Series(w_d, weight=0.35), Series(w_r, weight=0.35), Series(np.append(e, e[0]))],
+              xlabel=lab["phase"], ylabel=lab["work"], title=lab["et"], xticks=ticks,
               hlines=[(float(e.min()), ""), (float(e.max()), "")])
+    j_r = int(np.argmax(w_r))
+    j_d = int(0.85 * len(ph))
+    s.text(m.p(ph[j_r], w_r[j_r]) + 2.0j, "Wr", 3.0, "TEXT", "center", "bottom")
+    s.text(m.p(ph[j_d], w_d[j_d]) + (1.0 - 2.0j), "Wd", 3.0, "TEXT", "left", "top")
+    s.text(m.p(ph[-1], e[0]) + (1.5 + 0j), "ΔE", 3.0, "TEXT", "left", "middle")
     x_at = 0.5 * (fl.phase_at_min + fl.phase_at_max) * DEG
     p_lo, p_hi = m.p(x_at, float(e.min())), m.p(x_at, float(e.max()))
     s.dimension(p_lo, p_hi, 0.0, fl.max_energy_swing,
