@@ -31,6 +31,10 @@ from ..core.motion_laws import LAWS
 from .cam_report import _IMPACT, CONTACT, _segment_name, _Units
 from .sheet import (
     THIN,
+    LabelPlacer,
+    segment_hits_box,
+    fit_widths,
+    table,
     Sheet,
     TitleInfo,
     fit_height,
@@ -383,42 +387,6 @@ def _crossings(segments, radius: float) -> list[float]:
     return out
 
 
-def _text_box(p: complex, text: str, h: float, halign: str, valign: str):
-    """(x0, y0, x1, y1) of an unrotated text [paper mm]."""
-    w = text_width(text, h)
-    x0 = {"left": p.real, "center": p.real - w / 2, "right": p.real - w}[halign]
-    y0 = {"bottom": p.imag, "middle": p.imag - h / 2, "top": p.imag - h}[valign]
-    return x0, y0, x0 + w, y0 + h
-
-
-def _boxes_overlap(a, b, pad=0.6) -> bool:
-    return not (a[2] + pad <= b[0] or b[2] + pad <= a[0] or a[3] + pad <= b[1] or b[3] + pad <= a[1])
-
-
-def _segment_hits_box(p0: complex, p1: complex, box, pad=0.5) -> bool:
-    t = np.linspace(0.0, 1.0, 60)
-    z = p0 + (p1 - p0) * t
-    return bool(np.any((z.real > box[0] - pad) & (z.real < box[2] + pad)
-                       & (z.imag > box[1] - pad) & (z.imag < box[3] + pad)))
-
-
-class _Labels:
-    """Texts placed so far on the profile (for the placement of the later ones)."""
-
-    def __init__(self, sheet: Sheet):
-        self.sheet = sheet
-        self.boxes: list = []
-        self.segments: list = []            # paper segments that texts must not cover
-
-    def free(self, box) -> bool:
-        return (not any(_boxes_overlap(box, b) for b in self.boxes)
-                and not any(_segment_hits_box(p0, p1, box) for p0, p1 in self.segments))
-
-    def text(self, p, text, h=3.5, halign="left", valign="bottom", layer="TEXT"):
-        self.sheet.text(p, text, h, layer, halign, valign)
-        self.boxes.append(_text_box(complex(p), text, h, halign, valign))
-
-
 def _profile(sheet: Sheet, c, g: _ProfileGeometry, divs, n: float, box, lab):
     bx0, by0, bx1, by1 = box
     k = 1.0 / n                                   # paper mm per model mm
@@ -429,7 +397,7 @@ def _profile(sheet: Sheet, c, g: _ProfileGeometry, divs, n: float, box, lab):
     view = sheet.view(complex(cx, cy), k)
     P = view.p
     O = P(0)
-    labels = _Labels(sheet)
+    labels = LabelPlacer(sheet, pad=0.6)
     heading(sheet, complex((bx0 + bx1) / 2, by1 - 10.0), f"{lab['profile']}  {scale_text(n)}", 5.0)
 
     # -- the inversion: the follower's positions at the division points (thin)
@@ -569,7 +537,7 @@ def _omega(sheet, view, radius, centre, half, sigma):
     sheet.text(p + (r - 4.5) * np.exp(1j * centre), "ω", 5.0, "TEXT", "center", "middle")
 
 
-def _follower_start(sheet, view, g: _ProfileGeometry, n, labels: _Labels) -> list[float]:
+def _follower_start(sheet, view, g: _ProfileGeometry, n, labels: LabelPlacer) -> list[float]:
     """Draw the follower at δ = 0 with its frame and dimensions; return the angles (from O)
     that it and its dimensions take outside the cam."""
     B0 = g.B0
@@ -644,7 +612,7 @@ def _follower_start(sheet, view, g: _ProfileGeometry, n, labels: _Labels) -> lis
     return angles
 
 
-def _roller_dimension(sheet, view, g: _ProfileGeometry, n, gap_c, labels: _Labels):
+def _roller_dimension(sheet, view, g: _ProfileGeometry, n, gap_c, labels: LabelPlacer):
     """r_r on the start roller as a small-radius dimension (GB/T 4458.4): the arrow from
     outside onto the circle, the value on a shoulder; in the widest free direction from
     the roller centre (away from the stem or arm, the cam and the neighbouring rollers)."""
@@ -680,7 +648,7 @@ def _roller_dimension(sheet, view, g: _ProfileGeometry, n, gap_c, labels: _Label
     labels.segments += [(tip, tail), (tail, tail + sgn * (w + 1.0))]
 
 
-def _curve_leaders(sheet, view, g: _ProfileGeometry, n, sc, sw, labels: _Labels, box, lab):
+def _curve_leaders(sheet, view, g: _ProfileGeometry, n, sc, sw, labels: LabelPlacer, box, lab):
     """'实际廓线' and '理论廓线' on radial leaders in the free sector (centre ``sc``,
     width ``sw``) outside the cam; a name that finds no free place is left out."""
     k = 1.0 / n
@@ -706,7 +674,7 @@ def _curve_leaders(sheet, view, g: _ProfileGeometry, n, sc, sw, labels: _Labels,
             if tb[0] < bx0 + 2 or tb[2] > bx1 - 2 or tb[1] < by0 + _PROFILE_BOTTOM or tb[3] > by1 - _PROFILE_TOP:
                 break
             leader = (t, elbow)
-            if labels.free(tb) and not any(_segment_hits_box(t, elbow, b, 0.3) for b in labels.boxes):
+            if labels.free(tb) and not any(segment_hits_box(t, elbow, b, 0.3) for b in labels.boxes):
                 sheet.line(t, elbow, "CONSTRUCTION")
                 sheet.circle(t, 0.5, "CONSTRUCTION")
                 sheet.line(elbow, end, "CONSTRUCTION")
@@ -790,38 +758,6 @@ def _diagram(sheet, c, divs, mu_d, mu_s, xo, ytop, lab, lang) -> float:
 # --------------------------------------------------------------------------- tables
 
 
-def _table(sheet, x, ytop, widths, rows, head=None, aligns=None, row_h=ROW) -> float:
-    """A table with thin inner and heavier outer lines; return its bottom y."""
-    rows = ([list(head)] if head else []) + [list(r) for r in rows]
-    total = float(sum(widths))
-    ybot = ytop - len(rows) * row_h
-    sheet.polyline([complex(x, ytop), complex(x + total, ytop), complex(x + total, ybot),
-                    complex(x, ybot)], "FRAME", closed=True, weight=0.5)
-    for i in range(1, len(rows)):
-        y = ytop - i * row_h
-        sheet.line(complex(x, y), complex(x + total, y), "FRAME", 0.35 if (head and i == 1) else THIN)
-    xs = np.concatenate([[x], x + np.cumsum(widths)])
-    for xi in xs[1:-1]:
-        sheet.line(complex(xi, ytop), complex(xi, ybot), "FRAME", THIN)
-    aligns = aligns or ["center"] * len(widths)
-    for r, row in enumerate(rows):
-        yc = ytop - (r + 0.5) * row_h
-        for j, cell in enumerate(row):
-            if not cell:
-                continue
-            w = widths[j]
-            al = "center" if (head and r == 0) else aligns[j]
-            h = fit_height(str(cell), w - 3.0, 3.5)
-            px = {"left": xs[j] + 1.5, "center": xs[j] + w / 2, "right": xs[j + 1] - 1.5}[al]
-            sheet.text(complex(px, yc), str(cell), h, "TEXT", al, "middle")
-    return ybot
-
-
-def _fit_widths(widths, total):
-    s = float(sum(widths))
-    return [w * total / s for w in widths]
-
-
 def _right_column(sheet, c, divs, g: _ProfileGeometry, mu_d, box, lab, lang):
     """Diagram and tables between y = box[1] and box[3]: the diagram as tall as the space
     allows (within 30 … 80 mm), then taller rows and wider gaps."""
@@ -875,7 +811,7 @@ def _right_draw(sheet, c, divs, g, mu_d, mu_s, row, gap, box, lab, lang) -> floa
         rows = [[lab["point"]] + [f"{d.number}" for d in chunk],
                 ["δ/(°)"] + [format_number(round(d.delta * DEG, 2)) for d in chunk],
                 [f"{u.s_sym}/{'(°)' if u.osc else 'mm'}"] + [f"{d.s * u.s_scale:.2f}" for d in chunk]]
-        y = _table(sheet, tx, y, [first] + [colw] * len(chunk), rows, row_h=row) - 2.0
+        y = table(sheet, tx, y, [first] + [colw] * len(chunk), rows, row_h=row) - 2.0
     y -= gap - 2.0
 
     # 2. the programme
@@ -891,13 +827,13 @@ def _right_draw(sheet, c, divs, g, mu_d, mu_s, row, gap, box, lab, lang) -> floa
         impact = "—" if seg.kind == core.DWELL else _IMPACT[lang][c.segments[i].impact]
         rows.append([_segment_name(c, i, lang), f"{format_number(a)}°–{format_number(b)}°",
                      f"{format_number(b - a)}°", law, lift, impact])
-    y = _table(sheet, xl, y, _fit_widths([20, 30, 18, 78, 24, 24], width), rows, lab["head_prog"],
+    y = table(sheet, xl, y, fit_widths([20, 30, 18, 78, 24, 24], width), rows, lab["head_prog"],
                row_h=row) - gap
 
     # 3. design data
     heading(sheet, complex(xm, y - 5.0), lab["data"], hsize)
     y -= 7.5
-    y = _table(sheet, xl, y, _fit_widths([64, 20, 76, 60], width), _data_rows(c, g, lab, lang),
+    y = table(sheet, xl, y, fit_widths([64, 20, 76, 60], width), _data_rows(c, g, lab, lang),
                lab["head_data"], ["left", "center", "center", "center"], row_h=row)
     return y
 

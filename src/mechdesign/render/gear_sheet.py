@@ -21,8 +21,8 @@ from dataclasses import dataclass, replace
 import numpy as np
 
 from ..core.gears import SpurPair, mesh_layout, spur_pair, tooth_outline
-from .sheet import (Arc, Circle, Dimension, Line, Polyline, Sheet, TitleInfo, fit_height, frame,
-                    length_scale, scale_text, text_width, title_block_box)
+from .sheet import (LabelPlacer, Polyline, Sheet, TitleInfo, clip_segment, frame,
+                    length_scale, sample_polyline, scale_text, table, text_width, title_block_box)
 
 MM = 1e3
 DEG = 180.0 / np.pi
@@ -75,30 +75,12 @@ def _inside(p: complex, box: Box, tol: float = 1e-9) -> bool:
     return box[0] - tol <= p.real <= box[2] + tol and box[1] - tol <= p.imag <= box[3] + tol
 
 
-def _clip_segment(a: complex, b: complex, box: Box):
-    """Liang–Barsky: the parameter interval (t0, t1) of a→b inside ``box``, or None."""
-    d = b - a
-    t0, t1 = 0.0, 1.0
-    for p, q in ((-d.real, a.real - box[0]), (d.real, box[2] - a.real),
-                 (-d.imag, a.imag - box[1]), (d.imag, box[3] - a.imag)):
-        if abs(p) < 1e-15:
-            if q < 0:
-                return None
-            continue
-        t = q / p
-        if p < 0:
-            t0 = max(t0, t)
-        else:
-            t1 = min(t1, t)
-    return (t0, t1) if t1 - t0 > 1e-12 else None
-
-
 def _clip_polyline(points, box: Box) -> list[np.ndarray]:
     """The pieces of an open polyline inside ``box``."""
     pts = np.asarray(points, dtype=complex)
     pieces, current = [], []
     for a, b in zip(pts[:-1], pts[1:]):
-        span = _clip_segment(a, b, box)
+        span = clip_segment(a, b, box)
         if span is None:
             if current:
                 pieces.append(current)
@@ -264,126 +246,6 @@ def _num(x: float, decimals: int = 2) -> str:
     return "0" if text in ("-0", "") else text.replace("-", "−")
 
 
-# -- labels that keep clear of the linework ----------------------------------------------
-
-class _Labels:
-    """Places texts where they cover the fewest drawn lines and no other text.
-
-    The linework is sampled into points (paper mm); a candidate text box costs the number
-    of samples it covers, a large amount for each text box it overlaps and a little for
-    leaving the preferred direction or distance. Candidates outside the drawing area are
-    never taken."""
-
-    def __init__(self, sheet: Sheet, box: Box):
-        self.sheet, self.box = sheet, box
-        self.points = np.zeros(0, dtype=complex)
-        self.boxes: list[Box] = []
-
-    def absorb(self, entities, step: float = 0.8) -> None:
-        """Sample the lines, arcs and dimension lines of ``entities`` as obstacles."""
-        out = [self.points]
-        for e in entities:
-            if isinstance(e, Line):
-                out.append(_sample([e.p0, e.p1], step))
-            elif isinstance(e, Polyline):
-                out.append(_sample(list(e.points) + ([e.points[0]] if e.closed else []), step))
-            elif isinstance(e, (Circle, Arc)):
-                a0, a1 = (0.0, 2 * np.pi) if isinstance(e, Circle) else (e.start, e.end)
-                n = max(int(e.radius * abs(a1 - a0) / step), 2)
-                out.append(e.center + e.radius * np.exp(1j * np.linspace(a0, a1, n)))
-            elif isinstance(e, Dimension) and abs(e.p1 - e.p0) > 1e-9:
-                u = (e.p1 - e.p0) / abs(e.p1 - e.p0)
-                shift = 1j * u * (e.offset if e.kind == "aligned" else 0.0)
-                out.append(_sample([e.p0, e.p0 + shift, e.p1 + shift, e.p1], step))
-                mid = (e.p0 + e.p1) / 2 + shift + 1j * u * (1.0 + e.height / 2)
-                w = text_width(e.text, e.height)
-                out.append(np.repeat(_sample([mid - u * w / 2, mid + u * w / 2], 0.4), 6))
-        self.points = np.concatenate(out)
-
-    def block_box(self, b: Box) -> None:
-        self.boxes.append(b)
-
-    def _cost(self, b: Box) -> float:
-        if not (b[0] >= self.box[0] and b[2] <= self.box[2] and b[1] >= self.box[1]
-                and b[3] <= self.box[3]):
-            return np.inf
-        pts = self.points
-        hits = np.count_nonzero((pts.real > b[0]) & (pts.real < b[2]) & (pts.imag > b[1])
-                                & (pts.imag < b[3]))
-        overlap = sum(1 for o in self.boxes
-                      if not (b[2] <= o[0] or b[0] >= o[2] or b[3] <= o[1] or b[1] >= o[3]))
-        return hits + 1000.0 * overlap
-
-    def place(self, anchor: complex, text: str, height: float, prefer: complex,
-              gaps=(1.2, 2.5, 4.5, 7.0), layer: str = "TEXT") -> complex:
-        """A text near ``anchor`` (a point label); returns its centre."""
-        w, h = text_width(text, height), height
-        u = prefer / abs(prefer)
-        best = None
-        for rank, dist in enumerate(gaps):
-            for t in (0, 1, -1, 2, -2, 3, -3, 4, -4, 5, -5, 6, -6, 7, -7, 8):
-                d = u * np.exp(1j * t * np.pi / 8)
-                c = anchor + d * (dist + 0.5 * abs(d.real) * w + 0.5 * abs(d.imag) * h)
-                b = (c.real - w / 2, c.imag - h / 2, c.real + w / 2, c.imag + h / 2)
-                cost = self._cost(b) + 0.8 * rank + 0.25 * abs(t)
-                if best is None or cost < best[0]:
-                    best = (cost, c, b)
-        cost, c, b = best
-        if not np.isfinite(cost):                         # no room: pushed into the area
-            c = self._clamp(c, w, h)
-            b = (c.real - w / 2, c.imag - h / 2, c.real + w / 2, c.imag + h / 2)
-        self.boxes.append(b)
-        self.sheet.text(c, text, height, layer, "center", "middle")
-        return c
-
-    def _clamp(self, c: complex, w: float, h: float) -> complex:
-        x0, y0, x1, y1 = self.box
-        return complex(min(max(c.real, x0 + w / 2), x1 - w / 2), min(max(c.imag, y0 + h / 2), y1 - h / 2))
-
-    def leader(self, anchor: complex, text: str, height: float, prefer: complex,
-               lengths=(8.0, 13.0, 19.0, 27.0, 37.0, 50.0), layer: str = "CONSTRUCTION") -> None:
-        """A text on a short underline, joined to ``anchor`` by a leader line."""
-        w = text_width(text, height) + 2.0
-        u = prefer / abs(prefer)
-        best = None
-        for rank, length in enumerate(lengths):
-            for t in (0, 1, -1, 2, -2, 3, -3, 4, -4, 5, -5, 6, -6):
-                d = u * np.exp(1j * t * np.pi / 12)
-                elbow = anchor + length * d
-                right = d.real >= 0
-                x0, x1 = (elbow.real, elbow.real + w) if right else (elbow.real - w, elbow.real)
-                b = (x0, elbow.imag, x1, elbow.imag + height + 1.2)
-                leader_hits = sum(1 for o in self.boxes if _seg_hits_box(anchor, elbow, o))
-                cost = self._cost(b) + 1000.0 * leader_hits + 0.6 * rank + 0.2 * abs(t)
-                if best is None or cost < best[0]:
-                    best = (cost, elbow, right, b)
-        cost, elbow, right, b = best
-        if not np.isfinite(cost):                         # no room: pushed into the area
-            mid = self._clamp(complex((b[0] + b[2]) / 2, (b[1] + b[3]) / 2), w, height + 1.2)
-            elbow += mid - complex((b[0] + b[2]) / 2, (b[1] + b[3]) / 2)
-            b = (mid.real - w / 2, elbow.imag, mid.real + w / 2, elbow.imag + height + 1.2)
-        self.boxes.append(b)
-        end = complex(b[2] if right else b[0], elbow.imag)
-        self.sheet.line(anchor, elbow, layer)
-        self.sheet.line(elbow, end, layer)
-        self.sheet.fill(anchor + 0.6 * np.exp(1j * np.linspace(0, 2 * np.pi, 9)[:-1]), layer)
-        self.sheet.text(complex((b[0] + b[2]) / 2, elbow.imag + 0.8), text, height,
-                        "TEXT" if layer == "CONSTRUCTION" else layer, "center", "bottom")
-
-
-def _sample(points, step: float) -> np.ndarray:
-    pts = np.asarray(points, dtype=complex)
-    out = [pts[:1]]
-    for a, b in zip(pts[:-1], pts[1:]):
-        n = max(int(abs(b - a) / step), 1)
-        out.append(a + (b - a) * np.arange(1, n + 1) / n)
-    return np.concatenate(out)
-
-
-def _seg_hits_box(a: complex, b: complex, box: Box) -> bool:
-    return _clip_segment(a, b, box) is not None
-
-
 # -- the sheet ----------------------------------------------------------------------------
 
 def gear_sheet(pair: SpurPair, info: TitleInfo, lang: str, size: str | None = None) -> Sheet:
@@ -465,14 +327,14 @@ def gear_sheet(pair: SpurPair, info: TitleInfo, lang: str, size: str | None = No
     _dimensions(sheet, lay, mm, plan, o2_in)
 
     # labels: first the linework as obstacles
-    labels = _Labels(sheet, box)
+    labels = LabelPlacer(sheet, box)
     labels.absorb(sheet.entities)
-    labels.absorb([Polyline(tuple(_sample([p - 3 + 3j, p + 3 + 3j], 0.5)), "TEXT")])
+    labels.absorb([Polyline(tuple(sample_polyline([p - 3 + 3j, p + 3 + 3j], 0.5)), "TEXT")])
     for name, q, prefer in (("P", p, 1 + 1.2j), ("N1", n1, -u + 1j * u), ("N2", n2, 1j * u),
                             ("B2", b2, -1j * u), ("B1", b1, 1j * u - 0.3 * u), ("O1", o1, 1 + 1j)):
-        labels.place(q, name, 5.0, prefer)
+        labels.place_best(q, name, 5.0, prefer)
     if o2_in:
-        labels.place(o2, "O2", 5.0, 1 + 1j)
+        labels.place_best(o2, "O2", 5.0, 1 + 1j)
     else:                   # the line of centres leaves the area towards O2
         sheet.arrow(top - 14.0j, top, "CONSTRUCTION", 4.0, 0.35)
         note = lab["o2"].format(a=_num(mm.a_work))
@@ -563,8 +425,6 @@ def _table(sheet: Sheet, mm: SpurPair, lay, lab: dict) -> None:
     _, _, x1, y1 = sheet.inner
     g1, g2 = mm.g1, mm.g2
     tx0 = x1 - TABLE_W
-    xs = tx0 + np.concatenate([[0.0], np.cumsum([50.0, 32.0, 35.0, 35.0, 28.0])])
-    row = 7.0
     deg = lambda a: _num(a * DEG, 4)  # noqa: E731
     tw = np.tan(mm.alpha_work)
     eps_f = (g1.z * (np.tan(g1.alpha_a) - tw) + g2.z * (np.tan(g2.alpha_a) - tw)) / (2 * np.pi)
@@ -591,37 +451,9 @@ def _table(sheet: Sheet, mm: SpurPair, lay, lab: dict) -> None:
         (lab["eps_f"], "ε", _num(eps_f, 4), None, "—"),
     ]
 
-    def cell(xa, xb, y, text, h=3.5):
-        if text:
-            hh = fit_height(text, xb - xa - 2.0, h)
-            sheet.text((xa + xb) / 2 + 1j * (y + row / 2), text, hh, "TEXT", "center", "middle")
-
-    bottom = y1 - (len(rows) + 2) * row                 # a title row and a header row
-    sheet.polyline([tx0 + 1j * bottom, x1 + 1j * bottom, x1 + 1j * y1, tx0 + 1j * y1], "FRAME",
-                   closed=True)
-    y = y1 - row
-    cell(tx0, x1, y, lab["table"], 5.0)
-    sheet.line(tx0 + 1j * y, x1 + 1j * y, "FRAME", 0.35)
-    y -= row
-    for text, xa, xb in zip(lab["head"], xs[:-1], xs[1:]):
-        cell(xa, xb, y, text)
-    for xa in xs[1:-1]:
-        sheet.line(xa + 1j * y, xa + 1j * (y + row), "FRAME", 0.25)
-    sheet.line(tx0 + 1j * y, x1 + 1j * y, "FRAME", 0.35)
-    for name, sym, v1, v2, unit in rows:
-        y -= row
-        cell(xs[0], xs[1], y, name)
-        cell(xs[1], xs[2], y, sym)
-        if v2 is None:          # one value for the pair: the two gear columns merged
-            cell(xs[2], xs[4], y, v1)
-        else:
-            cell(xs[2], xs[3], y, v1)
-            cell(xs[3], xs[4], y, v2)
-        cell(xs[4], xs[5], y, unit)
-        for xa in (xs[1], xs[2], xs[4]) if v2 is None else xs[1:-1]:
-            sheet.line(xa + 1j * y, xa + 1j * (y + row), "FRAME", 0.25)
-        if y > bottom + 1e-9:
-            sheet.line(tx0 + 1j * y, x1 + 1j * y, "FRAME", 0.25)
+    # v2 = None: one value for the pair, the two gear columns merged
+    bottom = table(sheet, tx0, y1, [50.0, 32.0, 35.0, 35.0, 28.0], rows, lab["head"], row_h=7.0,
+                   title=lab["table"], margin=1.0, outer=None, inner=0.25)
 
     notes = [lab["n_drive"], lab["n_teeth"],
              lab["n_eps"].format(g=_num(lay.contact_ratio, 4), f=_num(eps_f, 4))]

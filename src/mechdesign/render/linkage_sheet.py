@@ -13,8 +13,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .sheet import (LabelPlacer, Series, Sheet, TitleInfo, View, chart, fit_height, format_number, frame,
-                    ground, heading, length_scale, nice_scale, pin, scale_text, slider_block,
+from .sheet import (LabelPlacer, Series, Sheet, TitleInfo, chart, fit_height, format_number, frame,
+                    ground, heading, length_scale, nice_scale, pin, scale_text, slider_block, table,
                     title_block_box)
 
 DEG = 180.0 / np.pi
@@ -305,20 +305,10 @@ def _table(s: Sheet, r: dict, lab: dict, box, chosen: list[str]) -> None:
                      f"{frc.balancing_torque[i]:.1f}"])
     rh = min(7.0, (by1 - by0 - 8) / (len(rows) + 1))
     widths = np.array([0.1, 0.14, 0.15, 0.15, 0.16, 0.15, 0.15]) * (bx1 - bx0)
-    xs = bx0 + np.concatenate([[0], np.cumsum(widths)])
     top = by1 - 7.0
     heading(s, (bx0 + bx1) / 2 + 1j * (top + 1.5), lab["table"], 5.0)
-    nrow = len(rows) + 1
-    for j in range(nrow + 1):
-        y = top - j * rh
-        s.line(bx0 + 1j * y, bx1 + 1j * y, "FRAME", 0.7 if j in (0, 1, nrow) else 0.25)
-    for x in xs:
-        s.line(x + 1j * top, x + 1j * (top - nrow * rh), "FRAME", 0.7 if x in (xs[0], xs[-1]) else 0.25)
-    for j, row in enumerate([head] + rows):
-        y = top - (j + 0.5) * rh
-        for c, text in enumerate(row):
-            h = fit_height(text, widths[c] - 2, 2.5 if j else 3.0)
-            s.text((xs[c] + xs[c + 1]) / 2 + 1j * y, text, h, "TEXT", "center", "middle")
+    table(s, bx0, top, widths, rows, head, row_h=rh, height=2.5, head_height=3.0, margin=1.0,
+          outer=0.7, rule=0.7, inner=0.25)
 
 
 def _curves(s: Sheet, r: dict, lab: dict, box, chosen: list[str], scales: dict) -> None:

@@ -460,6 +460,71 @@ def heading(sheet: Sheet, position, text: str, height: float = 5.0):
     sheet.text(position, text, height, "TEXT", "center", "bottom")
 
 
+# -- tables (lines and text, GB style) ---------------------------------------------------
+
+def table(sheet: Sheet, x: float, ytop: float, widths, rows, head=None, aligns=None,
+          row_h: float = 6.5, *, title: str | None = None, title_height: float = 5.0,
+          height: float = 3.5, head_height: float | None = None, margin: float = 1.5,
+          outer: float | None = 0.5, rule: float = 0.35, inner: float = THIN) -> float:
+    """A drawn table with its top-left corner at (``x``, ``ytop``); return its bottom y.
+
+    ``widths`` are the column widths [mm]; ``rows`` lists of cells (``""`` leaves a cell
+    empty, ``None`` merges it into the cell on its left). An optional ``title`` row spans
+    the whole width and an optional ``head`` row follows it; both are centred and closed
+    by a ``rule``-weight line. The outer border has weight ``outer`` (None: the FRAME
+    layer's), inner lines ``inner``. Text is fitted into its cell less ``margin`` on either
+    side, with ``height`` (``head_height`` in the header) as the largest height;
+    ``aligns`` gives each column's alignment (default centred)."""
+    widths = [float(w) for w in widths]
+    xs = x + np.concatenate([[0.0], np.cumsum(widths)])
+    x1 = float(xs[-1])
+    body = [list(r) for r in rows]
+    lines = ([[title] + [None] * (len(widths) - 1)] if title is not None else []) \
+        + ([list(head)] if head is not None else []) + body
+    n_top = (title is not None) + (head is not None)       # rows closed by a rule
+    ybot = ytop - len(lines) * row_h
+    sheet.polyline([complex(x, ybot), complex(x1, ybot), complex(x1, ytop), complex(x, ytop)],
+                   "FRAME", closed=True, weight=outer)
+    for i in range(1, len(lines)):
+        y = ytop - i * row_h
+        sheet.line(complex(x, y), complex(x1, y), "FRAME", rule if i <= n_top else inner)
+    # vertical lines, one per run of rows in which the boundary is not merged away
+    for j in range(1, len(widths)):
+        start = None
+        for i, row in enumerate(lines + [[None] * len(widths)]):
+            cut = i < len(lines) and j < len(row) and row[j] is not None
+            if cut and start is None:
+                start = i
+            elif not cut and start is not None:
+                sheet.line(complex(xs[j], ytop - start * row_h), complex(xs[j], ytop - i * row_h),
+                           "FRAME", inner)
+                start = None
+    aligns = aligns or ["center"] * len(widths)
+    for i, row in enumerate(lines):
+        yc = ytop - (i + 0.5) * row_h
+        top = i < n_top
+        hh = title_height if (title is not None and i == 0) else (
+            (head_height or height) if top else height)
+        for j, cell in enumerate(row):
+            if cell is None or cell == "":
+                continue
+            k = j + 1
+            while k < len(row) and row[k] is None:
+                k += 1
+            text = str(cell)
+            al = "center" if top else aligns[j]
+            h = fit_height(text, xs[k] - xs[j] - 2 * margin, hh)
+            px = {"left": xs[j] + margin, "center": (xs[j] + xs[k]) / 2, "right": xs[k] - margin}[al]
+            sheet.text(complex(px, yc), text, h, "TEXT", al, "middle")
+    return ybot
+
+
+def fit_widths(widths, total: float) -> list[float]:
+    """``widths`` scaled to add up to ``total``."""
+    s = float(sum(widths))
+    return [w * total / s for w in widths]
+
+
 # -- charts (curves against an abscissa, drawn with primitives) --------------------------
 
 @dataclass(frozen=True)
@@ -548,16 +613,76 @@ class ChartMap:
         return complex(out) if np.ndim(out) == 0 else out
 
 
+Box = tuple[float, float, float, float]          # (x0, y0, x1, y1) in paper mm
+
+
+def text_box(p: complex, text: str, h: float, halign: str = "left", valign: str = "bottom") -> Box:
+    """(x0, y0, x1, y1) of an unrotated text [paper mm]."""
+    w = text_width(text, h)
+    x0 = {"left": p.real, "center": p.real - w / 2, "right": p.real - w}[halign]
+    y0 = {"bottom": p.imag, "middle": p.imag - h / 2, "top": p.imag - h}[valign]
+    return x0, y0, x0 + w, y0 + h
+
+
+def boxes_overlap(a: Box, b: Box, pad: float = 0.0) -> bool:
+    return not (a[2] + pad <= b[0] or b[2] + pad <= a[0] or a[3] + pad <= b[1] or b[3] + pad <= a[1])
+
+
+def segment_hits_box(p0: complex, p1: complex, box: Box, pad: float = 0.5) -> bool:
+    """Whether ``p0``→``p1`` (sampled) comes within ``pad`` of ``box``."""
+    t = np.linspace(0.0, 1.0, 60)
+    z = p0 + (p1 - p0) * t
+    return bool(np.any((z.real > box[0] - pad) & (z.real < box[2] + pad)
+                       & (z.imag > box[1] - pad) & (z.imag < box[3] + pad)))
+
+
+def clip_segment(a: complex, b: complex, box: Box):
+    """Liang–Barsky: the parameter interval (t0, t1) of a→b inside ``box``, or None."""
+    d = b - a
+    t0, t1 = 0.0, 1.0
+    for p, q in ((-d.real, a.real - box[0]), (d.real, box[2] - a.real),
+                 (-d.imag, a.imag - box[1]), (d.imag, box[3] - a.imag)):
+        if abs(p) < 1e-15:
+            if q < 0:
+                return None
+            continue
+        t = q / p
+        if p < 0:
+            t0 = max(t0, t)
+        else:
+            t1 = min(t1, t)
+    return (t0, t1) if t1 - t0 > 1e-12 else None
+
+
+def sample_polyline(points, step: float) -> np.ndarray:
+    """Points along a polyline at most ``step`` apart."""
+    pts = np.asarray(points, dtype=complex)
+    out = [pts[:1]]
+    for a, b in zip(pts[:-1], pts[1:]):
+        n = max(int(abs(b - a) / step), 1)
+        out.append(a + (b - a) * np.arange(1, n + 1) / n)
+    return np.concatenate(out)
+
+
 class LabelPlacer:
-    """Places point labels so that they do not overlap each other or marked obstacles.
+    """Places labels so that they do not overlap each other or marked obstacles.
 
-    Each label goes to the first free spot among eight directions around its anchor
-    (starting with the preferred one) at one and then two offsets."""
+    Obstacles are boxes (texts, blocked points), segments (lines that texts must not
+    cover) and sampled points of the linework (:meth:`absorb`). :meth:`place` puts a point
+    label at the first free spot among eight directions around its anchor (starting with
+    the preferred one) at one to three offsets; :meth:`place_best` and :meth:`leader` take
+    the cheapest of many candidates instead, where a candidate costs the number of line
+    samples it covers, a large amount for each box or segment it hits and a little for
+    leaving the preferred direction or distance. With an ``area`` no candidate outside it
+    is taken by those two. ``pad`` is the clearance kept by :meth:`free`."""
 
-    def __init__(self, sheet: Sheet):
-        self.sheet = sheet
-        self.boxes: list[tuple[float, float, float, float]] = []
+    def __init__(self, sheet: Sheet, area: Box | None = None, pad: float = 0.0):
+        self.sheet, self.area, self.pad = sheet, area, pad
+        self.boxes: list[Box] = []
+        self.segments: list[tuple[complex, complex]] = []
+        self.points = np.zeros(0, dtype=complex)
 
+    # -- obstacles
     def block(self, z: complex, radius: float = 1.0) -> None:
         """Mark a point (e.g. a polygon vertex) that labels must keep clear of."""
         self.boxes.append((z.real - radius, z.imag - radius, z.real + radius, z.imag + radius))
@@ -567,9 +692,59 @@ class LabelPlacer:
         for t in np.linspace(0.0, 1.0, count):
             self.block(a + (b - a) * t, 0.4)
 
-    def _free(self, box) -> bool:
-        x0, y0, x1, y1 = box
-        return all(x1 <= b[0] or x0 >= b[2] or y1 <= b[1] or y0 >= b[3] for b in self.boxes)
+    def block_box(self, b: Box) -> None:
+        self.boxes.append(b)
+
+    def absorb(self, entities, step: float = 0.8) -> None:
+        """Sample the lines, arcs and dimension lines of ``entities`` as obstacles."""
+        out = [self.points]
+        for e in entities:
+            if isinstance(e, Line):
+                out.append(sample_polyline([e.p0, e.p1], step))
+            elif isinstance(e, Polyline):
+                out.append(sample_polyline(list(e.points) + ([e.points[0]] if e.closed else []), step))
+            elif isinstance(e, (Circle, Arc)):
+                a0, a1 = (0.0, 2 * np.pi) if isinstance(e, Circle) else (e.start, e.end)
+                n = max(int(e.radius * abs(a1 - a0) / step), 2)
+                out.append(e.center + e.radius * np.exp(1j * np.linspace(a0, a1, n)))
+            elif isinstance(e, Dimension) and abs(e.p1 - e.p0) > 1e-9:
+                u = (e.p1 - e.p0) / abs(e.p1 - e.p0)
+                shift = 1j * u * (e.offset if e.kind == "aligned" else 0.0)
+                out.append(sample_polyline([e.p0, e.p0 + shift, e.p1 + shift, e.p1], step))
+                mid = (e.p0 + e.p1) / 2 + shift + 1j * u * (1.0 + e.height / 2)
+                w = text_width(e.text, e.height)
+                out.append(np.repeat(sample_polyline([mid - u * w / 2, mid + u * w / 2], 0.4), 6))
+        self.points = np.concatenate(out)
+
+    # -- tests
+    def free(self, box: Box) -> bool:
+        """No box within ``pad`` of ``box`` and no segment across it."""
+        return (not any(boxes_overlap(box, b, self.pad) for b in self.boxes)
+                and not any(segment_hits_box(p0, p1, box) for p0, p1 in self.segments))
+
+    def cost(self, b: Box) -> float:
+        a = self.area
+        if a is not None and not (b[0] >= a[0] and b[2] <= a[2] and b[1] >= a[1] and b[3] <= a[3]):
+            return np.inf
+        pts = self.points
+        hits = np.count_nonzero((pts.real > b[0]) & (pts.real < b[2]) & (pts.imag > b[1])
+                                & (pts.imag < b[3]))
+        overlap = sum(1 for o in self.boxes if boxes_overlap(b, o))
+        overlap += sum(1 for p0, p1 in self.segments if clip_segment(p0, p1, b) is not None)
+        return hits + 1000.0 * overlap
+
+    def _clamp(self, c: complex, w: float, h: float) -> complex:
+        if self.area is None:
+            return c
+        x0, y0, x1, y1 = self.area
+        return complex(min(max(c.real, x0 + w / 2), x1 - w / 2), min(max(c.imag, y0 + h / 2), y1 - h / 2))
+
+    # -- texts
+    def text(self, p, text: str, h: float = 3.5, halign: str = "left", valign: str = "bottom",
+             layer: str = "TEXT") -> None:
+        """A text at a position chosen by the caller, kept clear of by later labels."""
+        self.sheet.text(p, text, h, layer, halign, valign)
+        self.boxes.append(text_box(complex(p), text, h, halign, valign))
 
     def place(self, anchor: complex, text: str, height: float = 3.5,
               prefer: complex = 1j, gap: float = 2.5, layer: str = "TEXT") -> complex:
@@ -583,7 +758,7 @@ class LabelPlacer:
                 # centre so that the box edge, not its centre, sits ``dist`` from the anchor
                 c = anchor + d * (dist + 0.5 * abs(d.real) * w + 0.5 * abs(d.imag) * h)
                 box = (c.real - w / 2, c.imag - h / 2, c.real + w / 2, c.imag + h / 2)
-                if self._free(box):
+                if self.free(box):
                     best = (c, box)
                     break
             if best is not None:
@@ -595,3 +770,55 @@ class LabelPlacer:
         self.boxes.append(box)
         self.sheet.text(c, text, height, layer, "center", "middle")
         return c
+
+    def place_best(self, anchor: complex, text: str, height: float, prefer: complex,
+                   gaps=(1.2, 2.5, 4.5, 7.0), layer: str = "TEXT") -> complex:
+        """A point label at the cheapest of 16 directions × ``gaps``; returns its centre."""
+        w, h = text_width(text, height), height
+        u = prefer / abs(prefer)
+        best = None
+        for rank, dist in enumerate(gaps):
+            for t in (0, 1, -1, 2, -2, 3, -3, 4, -4, 5, -5, 6, -6, 7, -7, 8):
+                d = u * np.exp(1j * t * np.pi / 8)
+                c = anchor + d * (dist + 0.5 * abs(d.real) * w + 0.5 * abs(d.imag) * h)
+                b = (c.real - w / 2, c.imag - h / 2, c.real + w / 2, c.imag + h / 2)
+                cost = self.cost(b) + 0.8 * rank + 0.25 * abs(t)
+                if best is None or cost < best[0]:
+                    best = (cost, c, b)
+        cost, c, b = best
+        if not np.isfinite(cost):                         # no room: pushed into the area
+            c = self._clamp(c, w, h)
+            b = (c.real - w / 2, c.imag - h / 2, c.real + w / 2, c.imag + h / 2)
+        self.boxes.append(b)
+        self.sheet.text(c, text, height, layer, "center", "middle")
+        return c
+
+    def leader(self, anchor: complex, text: str, height: float, prefer: complex,
+               lengths=(8.0, 13.0, 19.0, 27.0, 37.0, 50.0), layer: str = "CONSTRUCTION") -> None:
+        """A text on a short underline, joined to ``anchor`` by a leader line."""
+        w = text_width(text, height) + 2.0
+        u = prefer / abs(prefer)
+        best = None
+        for rank, length in enumerate(lengths):
+            for t in (0, 1, -1, 2, -2, 3, -3, 4, -4, 5, -5, 6, -6):
+                d = u * np.exp(1j * t * np.pi / 12)
+                elbow = anchor + length * d
+                right = d.real >= 0
+                x0, x1 = (elbow.real, elbow.real + w) if right else (elbow.real - w, elbow.real)
+                b = (x0, elbow.imag, x1, elbow.imag + height + 1.2)
+                leader_hits = sum(1 for o in self.boxes if clip_segment(anchor, elbow, o) is not None)
+                cost = self.cost(b) + 1000.0 * leader_hits + 0.6 * rank + 0.2 * abs(t)
+                if best is None or cost < best[0]:
+                    best = (cost, elbow, right, b)
+        cost, elbow, right, b = best
+        if not np.isfinite(cost):                         # no room: pushed into the area
+            mid = self._clamp(complex((b[0] + b[2]) / 2, (b[1] + b[3]) / 2), w, height + 1.2)
+            elbow += mid - complex((b[0] + b[2]) / 2, (b[1] + b[3]) / 2)
+            b = (mid.real - w / 2, elbow.imag, mid.real + w / 2, elbow.imag + height + 1.2)
+        self.boxes.append(b)
+        end = complex(b[2] if right else b[0], elbow.imag)
+        self.sheet.line(anchor, elbow, layer)
+        self.sheet.line(elbow, end, layer)
+        self.sheet.fill(anchor + 0.6 * np.exp(1j * np.linspace(0, 2 * np.pi, 9)[:-1]), layer)
+        self.sheet.text(complex((b[0] + b[2]) / 2, elbow.imag + 0.8), text, height,
+                        "TEXT" if layer == "CONSTRUCTION" else layer, "center", "bottom")
