@@ -6,7 +6,6 @@ wrong phase, mirrored, or on a different scale fails them.
 """
 from __future__ import annotations
 
-import shutil
 import time
 from pathlib import Path
 
@@ -184,11 +183,3 @@ def test_shaper_trace_is_the_ram_guide_line(shaper_results):
     assert a.imag == b.imag == pytest.approx(y)
     assert a.real < f.real.min() and b.real > f.real.max()
     assert args["title"] == "Shaper linkage in motion"
-
-
-@pytest.mark.skipif(shutil.which("ffmpeg") is None, reason="ffmpeg not installed")
-def test_mp4(tmp_path):
-    path = an.write_mechanism_mp4(tmp_path / "crank.mp4", _crank_points(), [("O", "A")],
-                                  pivots=["O"], trace="A", frames=12, size_px=200)
-    assert path.stat().st_size > 0
-    assert not [p for p in tmp_path.iterdir() if p != path]

@@ -1,4 +1,4 @@
-"""Animations of a planar mechanism over one crank revolution (GIF; MP4 when ffmpeg exists).
+"""Animations of a planar mechanism over one crank revolution (GIF).
 
 The drawing is generic: named points (complex positions in mm, one sample per equal
 crank-angle step over a revolution), links drawn as polylines of point names, frame
@@ -14,8 +14,6 @@ Computation never imports this module.
 from __future__ import annotations
 
 import os
-import shutil
-import subprocess
 import tempfile
 from dataclasses import dataclass
 from pathlib import Path
@@ -384,47 +382,6 @@ def write_mechanism_gif(path, points: dict[str, np.ndarray], bars: list[tuple[st
     return path
 
 
-def write_mechanism_mp4(path, points: dict[str, np.ndarray], bars: list[tuple[str, ...]], *,
-                        pivots: list[str], sliders: list[tuple[str, float]] = (),
-                        guides: list[tuple[complex, complex]] = (), trace: str | None = None,
-                        title: str = "", frames: int = 72, fps: int = 18,
-                        size_px: int = 520) -> Path:
-    """The same animation as an H.264 MP4 (needs ``ffmpeg`` on PATH; RuntimeError
-    otherwise). Frames are piped to ffmpeg as raw RGBA; the file is written atomically."""
-    ffmpeg = shutil.which("ffmpeg")
-    if ffmpeg is None:
-        raise RuntimeError("ffmpeg is not on PATH; MP4 output is unavailable (use GIF)")
-    path = Path(path)
-    layout, it = _render_frames(points, bars, pivots=pivots, sliders=list(sliders),
-                                guides=list(guides), trace=trace, title=title,
-                                frames=frames, size_px=size_px)
-    tmp = _atomic_target(path, ".mp4")
-    cmd = [ffmpeg, "-y", "-loglevel", "error", "-f", "rawvideo", "-pix_fmt", "rgba",
-           "-s", f"{layout.width}x{layout.height}", "-r", str(fps), "-i", "-", "-an",
-           "-vcodec", "libx264", "-pix_fmt", "yuv420p", "-movflags", "+faststart",
-           "-f", "mp4", str(tmp)]
-    try:
-        proc = subprocess.Popen(cmd, stdin=subprocess.PIPE, stderr=subprocess.PIPE)
-        try:
-            for frame in it:
-                proc.stdin.write(np.ascontiguousarray(frame).tobytes())
-        finally:
-            proc.stdin.close()
-            err = proc.stderr.read().decode(errors="replace")
-            proc.wait()
-        if proc.returncode != 0:
-            raise RuntimeError(f"ffmpeg failed ({proc.returncode}): {err.strip()}")
-        os.replace(tmp, path)
-    except BaseException:
-        tmp.unlink(missing_ok=True)
-        raise
-    return path
-
-
-# ---------------------------------------------------------------------------------
-# shaper
-
-
 def shaper_animation_args(results: dict, lang: str) -> dict:
     """Arguments of :func:`write_mechanism_gif` for the shaper results (mm)."""
     k = results["kinematics"]
@@ -448,9 +405,3 @@ def shaper_gif(results: dict, path, lang: str, **kwargs) -> Path:
     ``kwargs`` (frames, fps, size_px) pass through to :func:`write_mechanism_gif`."""
     args = shaper_animation_args(results, lang)
     return write_mechanism_gif(path, args.pop("points"), args.pop("bars"), **args, **kwargs)
-
-
-def shaper_mp4(results: dict, path, lang: str, **kwargs) -> Path:
-    """MP4 variant of :func:`shaper_gif` (needs ffmpeg)."""
-    args = shaper_animation_args(results, lang)
-    return write_mechanism_mp4(path, args.pop("points"), args.pop("bars"), **args, **kwargs)

@@ -20,7 +20,7 @@ from .sheet import (LabelPlacer, Series, Sheet, TitleInfo, chart, fit_height, fo
 DEG = 180.0 / np.pi
 
 LABELS = {
-    "zh": {"mechanism": "机构运动简图", "vel": "位置 {p} 速度多边形", "acc": "位置 {p} 加速度多边形",
+    "zh": {"mechanism": "机构运动简图", "velocity": "位置 {p} 速度多边形", "acceleration": "位置 {p} 加速度多边形",
            "force56": "位置 {p} 杆组 5-6 力多边形", "force34": "位置 {p} 杆组 3-4 力多边形",
            "s": "刨头位移 s (mm)", "v": "刨头速度 v (m/s)", "a": "刨头加速度 a (m/s²)",
            "mb": "平衡力矩 Mb (N·m)", "dE": "动能增量 ΔE (J)", "work": "功 W、动能增量 ΔE (J)", "phase": "曲柄转角 φ (°)",
@@ -29,8 +29,8 @@ LABELS = {
            "pos": "位置", "guide": "刨头导路", "stroke": "行程 H",
            "dw": "ΔWmax = {v} J", "jf": "飞轮转动惯量 JF = {v} kg·m²",
            "scales": "作图比例", "each": "μv、μa、μF 注在各多边形上方", "working": "工作行程", "return": "回程"},
-    "en": {"mechanism": "Skeleton at the positions", "vel": "Velocity polygon, position {p}",
-           "acc": "Acceleration polygon, position {p}", "force56": "Force polygon, group 5-6, pos. {p}",
+    "en": {"mechanism": "Skeleton at the positions", "velocity": "Velocity polygon, position {p}",
+           "acceleration": "Acceleration polygon, position {p}", "force56": "Force polygon, group 5-6, pos. {p}",
            "force34": "Force polygon, group 3-4, pos. {p}",
            "s": "ram displacement s (mm)", "v": "ram velocity v (m/s)", "a": "ram acceleration a (m/s²)",
            "mb": "balancing torque Mb (N·m)", "dE": "energy change ΔE (J)", "work": "work W, energy change ΔE (J)", "phase": "crank angle φ (°)",
@@ -51,12 +51,11 @@ class Vector:
     tail: str
     head: str
     value: complex
-    symbol: str        # e.g. "vA3", "aA4A3k", "G6"
 
 
 @dataclass(frozen=True)
 class Polygon:
-    kind: str                    # velocity | acceleration | force
+    kind: str                    # velocity | acceleration | force56 | force34 (Assur groups)
     position: str                # the position label
     points: dict                 # name → complex location in SI units, pole at 0
     vectors: tuple               # Vector, drawn in this order
@@ -67,7 +66,7 @@ def polygons(r: dict, label: str) -> list[Polygon]:
     k, motion, frc, p = r["kinematics"], r["motion"], r["forces"], r["params"]
     n = k.grid_size
     i = n + list(k.positions.labels).index(label)
-    pos = {name: motion.points[name].pos[i] for name in ("O2", "O3", "A", "B", "F", "S4")}
+    pos = {name: motion.points[name].pos[i] for name in ("O3", "A", "B", "F")}
     w4, al4 = motion.links["4"].omega[i], motion.links["4"].alpha[i]
     w5 = motion.links["5"].omega[i]
     rA = pos["A"] - pos["O3"]
@@ -78,9 +77,9 @@ def polygons(r: dict, label: str) -> list[Polygon]:
     vB = motion.points["B"].vel[i]
     vF = motion.points["F"].vel[i]
     vel = Polygon("velocity", label, {"p": 0j, "a3": vA3, "a4": vA4, "b": vB, "f": vF}, (
-        Vector("pa3", "p", "a3", vA3, "vA3"), Vector("a3a4", "a3", "a4", vA4 - vA3, "vA4A3"),
-        Vector("pa4", "p", "a4", vA4, "vA4"), Vector("pb", "p", "b", vB, "vB"),
-        Vector("bf", "b", "f", vF - vB, "vFB"), Vector("pf", "p", "f", vF, "vF")))
+        Vector("pa3", "p", "a3", vA3), Vector("a3a4", "a3", "a4", vA4 - vA3),
+        Vector("pa4", "p", "a4", vA4), Vector("pb", "p", "b", vB),
+        Vector("bf", "b", "f", vF - vB), Vector("pf", "p", "f", vF)))
     # Accelerations: a_A4 = a^n_A4 + a^t_A4 = a_A3 + a^k_A4A3 + a^r_A4A3;
     # a_F = a_B + a^n_FB + a^t_FB.
     aA3 = motion.points["A"].acc[i]
@@ -94,12 +93,12 @@ def polygons(r: dict, label: str) -> list[Polygon]:
     acc = Polygon("acceleration", label,
                   {"p'": 0j, "a3'": aA3, "k'": aA3 + ak, "n4'": an4, "a4'": aA4, "b'": aB,
                    "n5'": aB + an5, "f'": aF}, (
-        Vector("p'a3'", "p'", "a3'", aA3, "aA3"),
-        Vector("a3'k'", "a3'", "k'", ak, "akA4A3"), Vector("k'a4'", "k'", "a4'", ar, "arA4A3"),
-        Vector("p'n4'", "p'", "n4'", an4, "anA4"), Vector("n4'a4'", "n4'", "a4'", at4, "atA4"),
-        Vector("p'a4'", "p'", "a4'", aA4, "aA4"), Vector("p'b'", "p'", "b'", aB, "aB"),
-        Vector("b'n5'", "b'", "n5'", an5, "anFB"), Vector("n5'f'", "n5'", "f'", aF - aB - an5, "atFB"),
-        Vector("p'f'", "p'", "f'", aF, "aF")))
+        Vector("p'a3'", "p'", "a3'", aA3),
+        Vector("a3'k'", "a3'", "k'", ak), Vector("k'a4'", "k'", "a4'", ar),
+        Vector("p'n4'", "p'", "n4'", an4), Vector("n4'a4'", "n4'", "a4'", at4),
+        Vector("p'a4'", "p'", "a4'", aA4), Vector("p'b'", "p'", "b'", aB),
+        Vector("b'n5'", "b'", "n5'", an5), Vector("n5'f'", "n5'", "f'", aF - aB - an5),
+        Vector("p'f'", "p'", "f'", aF)))
     # Forces on each Assur group, known loads first, then the reactions that close it.
     g = p.gravity
     fc = -k.stroke_direction * frc.cutting_force[i] + 0j
@@ -117,14 +116,14 @@ def _force(kind: str, label: str, forces: list) -> Polygon:
     """Forces laid tip to tail; zero forces (no cutting on the return stroke) are left out."""
     scale = max(abs(f) for _, f in forces)
     pts, vecs, at = {"0": 0j}, [], 0j
-    for j, (name, f) in enumerate(forces):
+    for name, f in forces:
         if abs(f) < 1e-9 * scale:
             continue
         tail = list(pts)[-1]
         at = at + f
         head = str(len(pts))
         pts[head] = at
-        vecs.append(Vector(name, tail, head, f, name))
+        vecs.append(Vector(name, tail, head, f))
     return Polygon(kind, label, pts, tuple(vecs))
 
 
@@ -152,7 +151,7 @@ def linkage_sheet(r: dict, info: TitleInfo, lang: str, chosen: list[str] | None 
     scales = {"length": n_len}
     info = TitleInfo(**{**info.__dict__, "scale": scale_text(n_len)})
     frame(s, info)
-    _table(s, r, lab, (x0 + 8, y0 + 8, 315.0, 168.0), chosen)
+    _table(s, r, lab, (x0 + 8, y0 + 8, 315.0, 168.0))
     # Column B: polygons. Rows: velocity, acceleration, the two force groups.
     bx0, bx1 = 330.0, 590.0
     half = (bx1 - bx0) / 2
@@ -160,9 +159,7 @@ def linkage_sheet(r: dict, info: TitleInfo, lang: str, chosen: list[str] | None 
             "force56": (160.0, 288.0), "force34": (y0 + 10, 148.0)}
     units = {"velocity": ("μv", "(m/s)/mm", "m/s"), "acceleration": ("μa", "(m/s²)/mm", "m/s²"),
              "force56": ("μF", "N/mm", "N"), "force34": ("μF", "N/mm", "N")}
-    titles = {"velocity": "vel", "acceleration": "acc", "force56": "force56", "force34": "force34"}
-    by_kind = {kind: [pp for ps in polys for pp in ps if pp.kind == kind or
-                      (kind.startswith("force") and pp.kind == kind)] for kind in rows}
+    by_kind = {kind: [pp for ps in polys for pp in ps if pp.kind == kind] for kind in rows}
     for kind, (ry0, ry1) in rows.items():
         box_h = ry1 - ry0 - 34.0          # heading above, vector list below
         sym, unit, vunit = units[kind]
@@ -171,14 +168,14 @@ def linkage_sheet(r: dict, info: TitleInfo, lang: str, chosen: list[str] | None 
             scales[f"{kind}_{pg.position}"] = mu
             cx0 = bx0 + j * half
             box = (cx0 + 4, ry0 + 22.0, cx0 + half - 4, ry1 - 10.0)
-            _polygon(s, pg, mu, box, vunit)
+            _polygon(s, pg, mu, box)
             heading(s, cx0 + half / 2 + 1j * (ry1 - 7.5),
-                    lab[titles[kind]].format(p=pg.position), 3.5)
+                    lab[kind].format(p=pg.position), 3.5)
             s.text(cx0 + half / 2 + 1j * (ry1 - 11.0),
                    f"{sym} = {format_number(mu)} {unit}", 3.0, "TEXT", "center", "top")
             _vector_list(s, pg, cx0 + 3 + 1j * (ry0 + 19.0), vunit, half - 6)
     # Column C: curves.
-    _curves(s, r, lab, (612.0, 86.0, x1 - 8, y1 - 8), chosen, scales)
+    _curves(s, r, lab, (612.0, 86.0, x1 - 8, y1 - 8), scales)
     return s, scales
 
 
@@ -188,7 +185,7 @@ def _extent(pg: Polygon, width: float, height: float) -> float:
     return float(max(np.ptp(pts.real) / width, np.ptp(pts.imag) / height, 1e-12))
 
 
-def _polygon(s: Sheet, pg: Polygon, mu: float, box, unit: str) -> None:
+def _polygon(s: Sheet, pg: Polygon, mu: float, box) -> None:
     """Draw the polygon with its pole placed so that it is centred in ``box``."""
     pts = np.array(list(pg.points.values())) / mu
     bx0, by0, bx1, by1 = box
@@ -292,7 +289,7 @@ def _mechanism(s: Sheet, r: dict, lab: dict, box, chosen: list[str]) -> float:
     return n_len
 
 
-def _table(s: Sheet, r: dict, lab: dict, box, chosen: list[str]) -> None:
+def _table(s: Sheet, r: dict, lab: dict, box) -> None:
     k, frc = r["kinematics"], r["forces"]
     n = k.grid_size
     bx0, by0, bx1, by1 = box
@@ -311,7 +308,7 @@ def _table(s: Sheet, r: dict, lab: dict, box, chosen: list[str]) -> None:
           outer=0.7, rule=0.7, inner=0.25)
 
 
-def _curves(s: Sheet, r: dict, lab: dict, box, chosen: list[str], scales: dict) -> None:
+def _curves(s: Sheet, r: dict, lab: dict, box, scales: dict) -> None:
     k, frc, fl = r["kinematics"], r["forces"], r["flywheel"]
     n = k.grid_size
     ph = np.append(k.phase[:n], 2 * np.pi) * DEG

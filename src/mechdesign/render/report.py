@@ -18,8 +18,6 @@ import jinja2
 from ..results import dumps
 
 FORMATS = ("md", "pdf", "docx", "dxf", "gif")
-FORMAT_HELP = ("md: report.md; pdf: report.pdf and the sheets as vector PDF; docx: report.docx (Word); "
-               "dxf: the sheets as DXF (AutoCAD/CAXA); gif: animation of the mechanism")
 
 
 def template_dir(override: Path | None = None) -> Path:

@@ -192,9 +192,6 @@ class Sheet:
         """Model coordinates → sheet: ``origin + scale * z`` (scale = paper mm per unit)."""
         return View(self, complex(origin), float(scale), flip_x)
 
-    def by_layer(self, layer: str) -> list:
-        return [e for e in self.entities if getattr(e, "layer", None) == layer]
-
 
 @dataclass
 class View:

@@ -63,7 +63,7 @@ def _arrow_head(tip, tail, size=2.5):
     return [tip, base + 1j * u * w, base - 1j * u * w]
 
 
-def _draw(sheet: Sheet, dpi_hint: float = 100.0):
+def _draw(sheet: Sheet):
     configure_matplotlib()
     import matplotlib
 

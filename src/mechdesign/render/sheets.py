@@ -67,10 +67,6 @@ def _builders(results: dict, brief) -> list[tuple[str, Callable[[TitleInfo, str]
     return out
 
 
-def sheet_names(results: dict, brief) -> list[str]:
-    return [name for name, _ in _builders(results, brief)]
-
-
 def title_info(meta, drawing: str, number: str, index: int, count: int, lang: str) -> TitleInfo:
     return TitleInfo(drawing=drawing, project=meta.title, student=meta.student,
                      student_id=meta.student_id, class_name=meta.class_name, teacher=meta.teacher,
@@ -107,13 +103,10 @@ def make_sheets(results: dict, brief, folder: Path, fig_dir: Path, lang: str,
 
             dxf = write_dxf(sheet, sheet_dir / f"{stem}.dxf", info.drawing)
         rel = Path(folder)
-        out.append(SheetFiles(name, info.drawing, sheet.size, _scale_of(sheet),
+        out.append(SheetFiles(name, info.drawing, sheet.size,
+                              sheet.info.scale if sheet.info is not None else "",
                               preview.relative_to(rel).as_posix(),
                               None if pdf is None else pdf.relative_to(rel).as_posix(),
                               None if dxf is None else dxf.relative_to(rel).as_posix()))
     return out
 
-
-def _scale_of(sheet: Sheet) -> str:
-    """The scale written in the title block."""
-    return sheet.info.scale if sheet.info is not None else ""
