@@ -16,12 +16,13 @@ from pydantic import BaseModel, ValidationError
 
 from .cam import CamBrief, EccentricCamBrief
 from .drive import DriveBrief
+from .linkage import LinkageBrief
 from .shaper import ShaperBrief
 
 #: Machine name → brief model. Later machines register here.
 BRIEF_MODELS: dict[str, type[BaseModel]] = {
     "shaper": ShaperBrief, "cam": CamBrief, "eccentric_cam": EccentricCamBrief,
-    "drive": DriveBrief}
+    "drive": DriveBrief, "linkage": LinkageBrief}
 
 
 @dataclass(frozen=True)

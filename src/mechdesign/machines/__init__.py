@@ -53,7 +53,15 @@ def _drive() -> Machine:
                    "mechdesign.render.drive_report")
 
 
+def _linkage() -> Machine:
+    from . import linkage
+
+    return Machine("linkage", linkage.linkage_params, linkage.STAGES, linkage.results_document,
+                   "mechdesign.render.linkage_report")
+
+
 MACHINES: dict[str, Callable[[], Machine]] = {
+    "linkage": _linkage,
     "shaper": _shaper, "cam": _cam, "eccentric_cam": _eccentric_cam, "drive": _drive}
 
 

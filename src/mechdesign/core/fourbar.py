@@ -1,0 +1,392 @@
+"""Four-bar and slider-crank dimensional synthesis (尺寸综合) and the checks that go with it.
+
+Textbook method (孙桓《机械原理》 §8 平面连杆机构及其设计, 按行程速比系数 K 设计四杆机构),
+written analytically instead of with ruler and compasses:
+
+* extreme-position angle θ = 180°·(K − 1)/(K + 1);
+* the rocker's two extreme positions C1 (crank and coupler folded, AC1 = b − a) and
+  C2 (extended, AC2 = b + a) lie on the rocker circle, ψ apart;
+* the crank pivot A sees the chord C1C2 under the angle θ, so A lies on the circle
+  through C1, C2 of radius R = C1C2 / (2 sin θ) (the θ-circle);
+* a = (AC2 − AC1)/2, b = (AC2 + AC1)/2, frame d = AD.
+
+Coordinates used throughout: rocker pivot D at the origin, the rocker's extremes
+symmetric about the +y axis, C1 = (w, h), C2 = (−w, h), w = c·sin(ψ/2), h = c·cos(ψ/2).
+A point of the θ-circle is A(t) = O + R·(sin t·x̂ + cos t·n̂), n̂ the unit normal of the
+chord pointing to the side of the major arc; ``t`` = 0 is the point of the arc farthest
+from the chord and C1 is at t = π − θ. A must not lie where the line AD separates C1 from
+C2 (then the two extremes belong to different assembly branches), which leaves the arc
+t_lo < t < π − θ on the C1 side (the mirror arc gives the mirror-image linkage).
+
+``side`` = +1 is the textbook's θ-circle, whose centre is on D's side of the chord;
+``side`` = −1 is its mirror image across the chord (A beyond the rocker's chord).
+
+Everything is SI (metres) and radians; nothing here does I/O.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+from scipy.optimize import minimize_scalar
+
+from .synthesis import extreme_angle
+
+_TOL = 1e-12
+
+
+class SynthesisError(ValueError):
+    """No real solution: the message says which datum to change and in which direction."""
+
+
+@dataclass(frozen=True)
+class FourBar:
+    """Link lengths of a four-bar [m]: crank a, coupler b, rocker c, frame d."""
+
+    crank: float
+    coupler: float
+    rocker: float
+    frame: float
+
+    def scaled(self, factor: float) -> "FourBar":
+        return FourBar(self.crank * factor, self.coupler * factor,
+                       self.rocker * factor, self.frame * factor)
+
+
+@dataclass(frozen=True)
+class CircleConstruction:
+    """The θ-circle construction of a crank-rocker, D at the origin [m] (complex points)."""
+
+    c1: complex            # rocker tip at the folded extreme (AC1 = b − a)
+    c2: complex            # rocker tip at the extended extreme (AC2 = b + a)
+    centre: complex        # centre O of the θ-circle
+    radius: float          # R = C1C2 / (2 sin θ)
+    theta: float           # extreme-position angle θ [rad]
+    swing: float           # rocker swing ψ [rad]
+    side: int              # +1 textbook circle (centre on D's side of the chord), −1 mirror
+    t_lo: float            # allowed arc: t_lo < t < t_hi
+    t_hi: float
+
+    def point(self, t):
+        """Point(s) A(t) of the circle (complex), t [rad] scalar or array."""
+        t = np.asarray(t, dtype=float)
+        n = -1j * self.side          # unit normal towards the major arc (as a complex number)
+        return self.centre + self.radius * (np.sin(t) + n * np.cos(t))
+
+    def position_of(self, a: complex) -> float:
+        """Parameter t of a point A on the circle."""
+        r = (a - self.centre) / self.radius
+        n = -1j * self.side
+        return float(np.arctan2(r.real, (np.conj(n) * r).real))
+
+
+# ----------------------------------------------------------------------------- checks
+
+def grashof(fb: FourBar) -> tuple[bool, str]:
+    """Grashof's rule: (does the crank a turn fully?, classification text).
+
+    s + l < p + q: the shortest link fully rotates relative to its neighbours; which link
+    is the shortest decides crank-rocker / double-crank / double-rocker / rocker-crank.
+    s + l = p + q: change-point mechanism (the links can become collinear all at once).
+    s + l > p + q: no link fully rotates (triple-rocker).
+    """
+    lengths = {"crank": fb.crank, "coupler": fb.coupler, "rocker": fb.rocker, "frame": fb.frame}
+    if min(lengths.values()) <= 0.0:
+        raise ValueError(f"link lengths must be positive, got {lengths}")
+    vals = sorted(lengths.values())
+    s, p, q, l = vals
+    margin = (p + q) - (s + l)
+    scale = l
+    shortest = min(lengths, key=lengths.get)
+    if margin < -1e-12 * scale:
+        return False, "triple-rocker (non-Grashof: s + l > p + q)"
+    change = abs(margin) <= 1e-12 * scale
+    if change:
+        turns = fb.crank <= min(fb.coupler, fb.rocker) + 1e-12 * scale or \
+            fb.frame <= min(fb.crank, fb.coupler, fb.rocker) + 1e-12 * scale
+        return turns, "change-point (s + l = p + q)"
+    if shortest == "crank":
+        return True, "crank-rocker"
+    if shortest == "frame":
+        return True, "double-crank"
+    if shortest == "coupler":
+        return False, "double-rocker (Grashof, coupler shortest)"
+    return False, "rocker-crank (the rocker is the shortest and turns fully)"
+
+
+def _deviation(fb: FourBar) -> tuple[float, float]:
+    """Coupler-rocker angles δ' (crank along AD towards D) and δ'' (crank pointing away)."""
+    a, b, c, d = fb.crank, fb.coupler, fb.rocker, fb.frame
+    cos1 = (b * b + c * c - (d - a) ** 2) / (2.0 * b * c)
+    cos2 = (b * b + c * c - (d + a) ** 2) / (2.0 * b * c)
+    return (float(np.arccos(np.clip(cos1, -1.0, 1.0))),
+            float(np.arccos(np.clip(cos2, -1.0, 1.0))))
+
+
+def transmission_angle_extremes(fb: FourBar) -> tuple[float, float]:
+    """(γ_min, γ_max) [rad] of a four-bar whose crank a turns fully.
+
+    The coupler-rocker angle δ is extreme when the crank is collinear with the frame:
+    cos δ = (b² + c² − (d ∓ a)²)/(2bc); the transmission angle is γ = min(δ, π − δ).
+    γ_min is the smaller of γ at those two positions; γ_max is π/2 when δ passes
+    through 90° during the revolution, otherwise the larger of the two.
+    """
+    d1, d2 = _deviation(fb)
+    g1, g2 = min(d1, np.pi - d1), min(d2, np.pi - d2)
+    lo, hi = min(d1, d2), max(d1, d2)
+    gmax = np.pi / 2.0 if lo <= np.pi / 2.0 <= hi else max(g1, g2)
+    return float(min(g1, g2)), float(gmax)
+
+
+def crank_rocker_extremes(fb: FourBar) -> tuple[float, float]:
+    """(θ, ψ) [rad]: extreme-position angle and rocker swing by the closed forms.
+
+    At the folded extreme AC1 = b − a, at the extended AC2 = b + a; in triangles ADC1 and
+    ADC2 (law of cosines) θ = ∠DAC1 − ∠DAC2 (the angle between the crank's two
+    positions, taken positive) and ψ = ∠ADC2 − ∠ADC1.
+    """
+    a, b, c, d = fb.crank, fb.coupler, fb.rocker, fb.frame
+    ok, kind = grashof(fb)
+    if not (ok and kind == "crank-rocker"):
+        raise SynthesisError(f"not a crank-rocker ({kind}): the extreme positions are undefined")
+    r1, r2 = b - a, b + a
+
+    def ang(x, y, z):  # angle opposite z in a triangle with sides x, y, z
+        return np.arccos(np.clip((x * x + y * y - z * z) / (2.0 * x * y), -1.0, 1.0))
+    theta = abs(float(ang(r1, d, c) - ang(r2, d, c)))
+    psi = float(ang(d, c, r2) - ang(d, c, r1))
+    return theta, psi
+
+
+# ------------------------------------------------------------------ θ-circle synthesis
+
+def _check_data(K: float, swing: float, rocker: float) -> None:
+    if not np.isfinite(K) or K <= 1.0:
+        raise SynthesisError(f"time ratio K = {K} must be > 1 (K = 1 gives θ = 0: "
+                             "A on the line C1C2, no quick return to design)")
+    if extreme_angle(K) >= np.pi / 2.0:
+        raise SynthesisError(f"time ratio K = {K} gives θ ≥ 90°; use K < 3")
+    if not (0.0 < swing < np.pi):
+        raise SynthesisError(f"rocker swing ψ = {np.degrees(swing):.4g}° must be in (0°, 180°)")
+    if not rocker > 0.0:
+        raise SynthesisError(f"rocker length {rocker} must be positive")
+
+
+def circle_construction(K: float, swing: float, rocker: float, *, side: int = +1
+                        ) -> CircleConstruction:
+    """The θ-circle through the rocker's extremes C1, C2 and the allowed arc for A."""
+    _check_data(K, swing, rocker)
+    if side not in (+1, -1):
+        raise ValueError(f"side must be +1 or -1, got {side}")
+    theta = extreme_angle(K)
+    w, h = rocker * np.sin(swing / 2.0), rocker * np.cos(swing / 2.0)
+    c1, c2 = complex(w, h), complex(-w, h)
+    radius = w / np.sin(theta)
+    n = -1j * side
+    centre = complex(0.0, h) + n * radius * np.cos(theta)
+    t_hi = np.pi - theta
+    # the lines D–C1 and D–C2 meet the circle a second time at s·u with
+    # s·c = |O|² − R² (power of D); those points bound the arc where AD separates C1, C2
+    power = abs(centre) ** 2 - radius ** 2
+    proto = CircleConstruction(c1, c2, centre, radius, theta, swing, side, 0.0, t_hi)
+    t_lo = 0.0
+    for tip in (c1, c2):
+        other = tip / abs(tip) * power / rocker
+        if abs(other - tip) < 1e-12 * rocker:       # tangent: no second point
+            continue
+        t = proto.position_of(other)
+        if 0.0 < t < t_hi - 1e-12:
+            t_lo = max(t_lo, t)
+    cons = CircleConstruction(c1, c2, centre, radius, theta, swing, side, t_lo, t_hi)
+    # the arc must really be valid: probe its middle
+    mid = cons.point(0.5 * (t_lo + t_hi))
+    if not _same_branch(complex(mid), c1, c2):
+        raise SynthesisError(
+            f"no crank-rocker on this θ-circle (side {side}) for K = {K}, "
+            f"ψ = {np.degrees(swing):.4g}°: the line AD separates C1 and C2 everywhere")
+    return cons
+
+
+def _same_branch(a: complex, c1: complex, c2: complex) -> bool:
+    """C1 and C2 on the same side of the line AD (D the origin): one assembly branch."""
+    s1 = (np.conj(a) * c1).imag
+    s2 = (np.conj(a) * c2).imag
+    return bool(s1 * s2 > 0.0)
+
+
+def _design_at(cons: CircleConstruction, a_pt: complex) -> FourBar:
+    ac1, ac2 = abs(a_pt - cons.c1), abs(a_pt - cons.c2)
+    return FourBar(crank=(ac2 - ac1) / 2.0, coupler=(ac2 + ac1) / 2.0,
+                   rocker=abs(cons.c1), frame=abs(a_pt))
+
+
+def crank_rocker_on_circle(K: float, swing: float, rocker: float, position: float,
+                           *, side: int = +1) -> FourBar:
+    """Crank-rocker with A at parameter ``position`` = t [rad] on the θ-circle.
+
+    Raises SynthesisError when t is outside the allowed arc t_lo < t < π − θ.
+    """
+    cons = circle_construction(K, swing, rocker, side=side)
+    if not (cons.t_lo < position < cons.t_hi):
+        raise SynthesisError(
+            f"position t = {np.degrees(position):.6g}° is outside the allowed arc "
+            f"({np.degrees(cons.t_lo):.6g}°, {np.degrees(cons.t_hi):.6g}°)")
+    return _design_at(cons, complex(cons.point(position)))
+
+
+def frame_range(K: float, swing: float, rocker: float, *, side: int = +1) -> tuple[float, float]:
+    """(smallest, largest) frame AD [m] reachable on the allowed arc (open interval)."""
+    cons = circle_construction(K, swing, rocker, side=side)
+    ends = [abs(complex(cons.point(cons.t_lo))), abs(complex(cons.point(cons.t_hi)))]
+    return min(ends), max(ends)
+
+
+def crank_rocker_from_K(K: float, swing: float, rocker: float, frame: float, *,
+                        side: int = +1) -> FourBar:
+    """Textbook design: A where the circle |AD| = frame cuts the allowed arc of the θ-circle.
+
+    |A(t)|² = |O|² + R² + 2R·(O·n̂)·cos t is monotonic in t on (0, π), so there is at most
+    one such A on the arc. Raises SynthesisError naming the frame range that works.
+    """
+    cons = circle_construction(K, swing, rocker, side=side)
+    if not frame > 0.0:
+        raise SynthesisError(f"frame length {frame} must be positive")
+    n = -1j * cons.side
+    on = (np.conj(n) * cons.centre).real              # O·n̂
+    big = abs(cons.centre) ** 2 + cons.radius ** 2
+    lo, hi = frame_range(K, swing, rocker, side=side)
+    if abs(on) < 1e-15 * rocker:
+        raise SynthesisError("the θ-circle is centred on D: every A has the same frame "
+                             "length, so the frame does not fix the design")
+    cos_t = (frame ** 2 - big) / (2.0 * cons.radius * on)
+    if abs(cos_t) > 1.0:
+        t = None
+    else:
+        t = float(np.arccos(cos_t))
+    if t is None or not (cons.t_lo < t < cons.t_hi):
+        raise SynthesisError(
+            f"frame length {frame * 1e3:.6g} mm cannot be met: with K = {K:.6g}, "
+            f"ψ = {np.degrees(swing):.6g}° and rocker {rocker * 1e3:.6g} mm the crank pivot "
+            f"on the allowed arc gives frames between {lo * 1e3:.6g} and {hi * 1e3:.6g} mm "
+            "(exclusive)")
+    return _design_at(cons, complex(cons.point(t)))
+
+
+def gamma_min_on_arc(K: float, swing: float, rocker: float, positions, *, side: int = +1
+                     ) -> np.ndarray:
+    """γ_min [rad] of the designs at the positions t (array; vectorised)."""
+    cons = circle_construction(K, swing, rocker, side=side)
+    t = np.asarray(positions, dtype=float)
+    a_pt = cons.point(t)
+    ac1, ac2 = np.abs(a_pt - cons.c1), np.abs(a_pt - cons.c2)
+    a, b = (ac2 - ac1) / 2.0, (ac2 + ac1) / 2.0
+    c, d = rocker, np.abs(a_pt)
+    cos1 = np.clip((b * b + c * c - (d - a) ** 2) / (2.0 * b * c), -1.0, 1.0)
+    cos2 = np.clip((b * b + c * c - (d + a) ** 2) / (2.0 * b * c), -1.0, 1.0)
+    d1, d2 = np.arccos(cos1), np.arccos(cos2)
+    g = np.minimum(np.minimum(d1, np.pi - d1), np.minimum(d2, np.pi - d2))
+    inside = (t > cons.t_lo) & (t < cons.t_hi)
+    return np.where(inside, g, 0.0)
+
+
+def optimal_position(K: float, swing: float, rocker: float = 1.0, *, side: int = +1,
+                     grid: int = 721) -> tuple[float, float]:
+    """(t*, γ_min*) maximising γ_min over the allowed arc: grid pre-scan, then a bounded
+    Brent search (scipy ``minimize_scalar(method='bounded')``) between the grid
+    neighbours of the best grid point."""
+    cons = circle_construction(K, swing, rocker, side=side)
+    span = cons.t_hi - cons.t_lo
+    ts = cons.t_lo + span * (np.arange(1, grid + 1) / (grid + 1))
+    gs = gamma_min_on_arc(K, swing, rocker, ts, side=side)
+    k = int(np.argmax(gs))
+    lo = ts[k - 1] if k > 0 else cons.t_lo + 1e-12 * span
+    hi = ts[k + 1] if k + 1 < len(ts) else cons.t_hi - 1e-12 * span
+
+    def neg(t):
+        return -float(gamma_min_on_arc(K, swing, rocker, t, side=side))
+    res = minimize_scalar(neg, bounds=(lo, hi), method="bounded",
+                          options={"xatol": 1e-13 * max(1.0, span)})
+    t_best, g_best = float(res.x), -float(res.fun)
+    if gs[k] > g_best:            # never worse than the grid
+        t_best, g_best = float(ts[k]), float(gs[k])
+    return t_best, g_best
+
+
+def optimal_crank_rocker(K: float, swing: float, rocker: float, *, side: int = +1
+                         ) -> tuple[FourBar, float]:
+    """(design, γ_min [rad]) of the crank-rocker with the largest minimum transmission
+    angle for the given K, ψ and rocker length (A searched over the allowed arc)."""
+    t, g = optimal_position(K, swing, rocker, side=side)
+    return crank_rocker_on_circle(K, swing, rocker, t, side=side), g
+
+
+# -------------------------------------------------------------- offset slider-crank
+
+@dataclass(frozen=True)
+class SliderConstruction:
+    """θ-circle construction of an offset slider-crank, A at the origin [m].
+
+    The slider guide is the line y = −e (offset below A); the slider's extremes are
+    C1 = (x1, −e) (folded, AC1 = b − a) and C2 = (x2, −e) (extended, AC2 = b + a).
+    """
+
+    c1: complex
+    c2: complex
+    centre: complex
+    radius: float
+    theta: float
+
+
+def slider_crank_construction(K: float, stroke: float, offset: float) -> SliderConstruction:
+    """C1, C2 on the guide H apart; A on the θ-circle through them at distance e from it.
+
+    With the chord C1C2 as x-axis and its midpoint as origin the circle's centre is at
+    (0, −R cos θ), R = H/(2 sin θ); A = (x_A, −e) with x_A² = R² − (R cos θ − e)² and A
+    on C1's side (x_A < −H/2, i.e. e < H·cot θ); then shifted so that A is the origin.
+    """
+    if not np.isfinite(K) or K <= 1.0:
+        raise SynthesisError(f"time ratio K = {K} must be > 1 for an offset slider-crank "
+                             "(K = 1 needs no offset: a centred slider-crank)")
+    theta = extreme_angle(K)
+    if not stroke > 0.0:
+        raise SynthesisError(f"stroke H = {stroke} must be positive")
+    if not offset > 0.0:
+        raise SynthesisError(f"offset e = {offset} must be > 0: with e = 0 the extreme "
+                             "positions are 180° apart and K = 1")
+    limit = stroke / np.tan(theta)
+    if offset >= limit:
+        raise SynthesisError(
+            f"offset e = {offset * 1e3:.6g} mm is too large for K = {K:.6g} and "
+            f"H = {stroke * 1e3:.6g} mm: it must be below H·cot θ = {limit * 1e3:.6g} mm "
+            "(reduce e or K, or increase H)")
+    radius = stroke / (2.0 * np.sin(theta))
+    yc = -radius * np.cos(theta)
+    xa = -np.sqrt(radius ** 2 - (yc + offset) ** 2)
+    shift = complex(xa, -offset)                      # A in chord coordinates
+    c1 = complex(-stroke / 2.0, 0.0) - shift
+    c2 = complex(stroke / 2.0, 0.0) - shift
+    return SliderConstruction(c1, c2, complex(0.0, yc) - shift, float(radius), float(theta))
+
+
+def offset_slider_crank(K: float, stroke: float, offset: float) -> tuple[float, float]:
+    """(crank a, rod b) [m] of the offset slider-crank with time ratio K, stroke H, offset e."""
+    cons = slider_crank_construction(K, stroke, offset)
+    ac1, ac2 = abs(cons.c1), abs(cons.c2)
+    return (ac2 - ac1) / 2.0, (ac2 + ac1) / 2.0
+
+
+def slider_crank_pressure_angle_max(crank: float, rod: float, offset: float) -> float:
+    """Largest pressure angle α_max [rad] on the slider over a revolution.
+
+    The rod's angle to the guide obeys b·sin α = a·sin φ + e (φ the crank angle from the
+    guide direction), largest with the crank perpendicular to the guide on the offset's
+    far side: α_max = arcsin((a + e)/b). The crank turns fully only if a + e < b.
+    """
+    a, b, e = crank, rod, abs(offset)
+    if not (a > 0.0 and b > 0.0):
+        raise SynthesisError(f"crank {a} and rod {b} must be positive")
+    if a + e >= b:
+        raise SynthesisError(
+            f"crank + offset = {(a + e) * 1e3:.6g} mm ≥ rod {b * 1e3:.6g} mm: "
+            "the crank cannot turn fully (lengthen the rod)")
+    return float(np.arcsin((a + e) / b))

@@ -1,0 +1,564 @@
+"""Any planar linkage, crank plus Assur groups, analysed by the shared linkage stages.
+
+This is the engine every linkage machine composes (the furnace pusher's six-bar, the
+lock-beam bender's feed, the die-cutter's toggle press and the stand-alone ``linkage``
+brief). A :class:`LinkageModel` in SI units goes through four stages:
+
+- motion (机构运动分析): the whole revolution on a fine grid plus the textbook
+  positions, numbered from the output extreme that starts the working stroke; the
+  transmission angle of every RRR group and the pressure angle of every slider;
+- forces (动态静力分析): inertia forces and couples of the bodies, their weights and the
+  resistances; joint reactions group by group and the balancing torque M_b on the crank;
+- flywheel (飞轮设计), when the model asks for one;
+- verification (校核): closure of every group, finite differences of every point and
+  link, Σ power = 0, and the output's stroke and time ratio found by a bounded search
+  between grid points (independent of the grid and of any synthesis formula).
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from ..core import flywheel as fw
+from ..core.kinetostatics import Body, PointLoad, power_residual, solve_forces
+from ..core.mechanism import RPR, RRP, RRR, Crank, LinkPoint, Mechanism, Motion
+from ..pipeline import Stage
+from .findings import Finding
+from .positions import Positions, textbook_positions
+
+TWO_PI = 2.0 * np.pi
+
+
+@dataclass(frozen=True)
+class Output:
+    """The output whose motion defines the strokes: a point measured along ``direction``
+    [rad] (``kind`` "point") or a link's angle (``kind`` "link"). ``working`` = +1 when the
+    working stroke is the one in which the coordinate grows, −1 when it falls."""
+
+    kind: str
+    name: str
+    direction: float = 0.0
+    working: int = 1
+
+
+@dataclass(frozen=True)
+class Resistance:
+    """A force on ``link`` at ``point`` along the line of angle ``direction`` [rad],
+    opposing the point's motion along it: ``working`` [N] in the working stroke,
+    ``returning`` [N] in the return stroke. With ``active`` = (from, to) the working
+    force acts only while the output's displacement from position 1 lies in that
+    window [m or rad] (a cutting or pressing zone)."""
+
+    link: str
+    point: str
+    direction: float
+    working: float
+    returning: float = 0.0
+    active: tuple[float, float] | None = None
+
+
+@dataclass(frozen=True)
+class FlywheelSpec:
+    """Allowed speed fluctuation [δ] and the flywheel shaft's speed as a multiple of the
+    crank's."""
+
+    fluctuation: float
+    speed_ratio: float = 1.0
+
+
+@dataclass(frozen=True)
+class LinkageModel:
+    """Everything the linkage stages need, SI units. ``crank_omega`` is signed, CCW +."""
+
+    mechanism: Mechanism
+    crank_omega: float
+    output: Output
+    bodies: tuple[Body, ...] = ()
+    resistances: tuple[Resistance, ...] = ()
+    grid_points: int = 3600
+    position_step: float = np.pi / 6
+    gravity: float = 9.81
+    flywheel: FlywheelSpec | None = None
+    pressure_angle_limit: float | None = None   # [rad], checked over the working stroke
+    transmission_angle_min: float | None = None  # [rad], checked over the whole cycle
+    names: dict = field(default_factory=dict)    # link id → (name_zh, name_en), optional
+
+    @property
+    def crank(self) -> Crank:
+        return self.mechanism.groups[0]
+
+
+@dataclass(frozen=True)
+class QualityAngle:
+    """Transmission angle γ of an RRR group (at its middle joint) or pressure angle α of
+    an RRP slider (between the rod and the guide), over the grid and the positions."""
+
+    group: str
+    kind: str                   # "transmission" | "pressure"
+    point: str                  # the joint where it is measured
+    values: np.ndarray          # [rad], one per entry of the phase array
+    extreme: float              # γ_min or α_max over the cycle [rad]
+    extreme_phase: float        # [rad]
+    working_extreme: float      # the same over the working stroke only [rad]
+    working_extreme_phase: float
+
+
+@dataclass(frozen=True)
+class LinkageMotion:
+    """Stage 机构运动分析. Arrays: the grid (``grid_size`` entries) then the positions.
+
+    ``phase`` is the crank angle from position 1 in the sense of rotation [rad]; the output
+    displacement ``s`` [m or rad] is measured from position 1 along the working direction.
+    """
+
+    positions: Positions
+    phase: np.ndarray
+    crank_angle: np.ndarray
+    s: np.ndarray
+    v: np.ndarray
+    a: np.ndarray
+    output_unit: str            # "m" | "rad"
+    stroke: float               # [m] or [rad] (swing)
+    working_span: float         # crank angle of the working stroke [rad]
+    time_ratio: float           # K = working span / return span
+    start_angle: float          # crank angle of position 1 [rad, CCW from +x]
+    sense: float                # +1 CCW, −1 CW
+    points: dict                # name → complex positions [m]
+    link_angle: dict            # link → angle [rad]
+    link_omega: dict            # link → ω [rad/s] (CCW +)
+    link_alpha: dict            # link → α [rad/s²]
+    quality: tuple[QualityAngle, ...]
+    grid_size: int
+
+
+@dataclass(frozen=True)
+class LinkageForces:
+    """Stage 动态静力分析 (arrays as in :class:`LinkageMotion`)."""
+
+    resistance: dict            # "R{i}" → signed force along its line [N]
+    reactions: dict             # R{a}{b} → complex force of link a on b [N]
+    couples: dict               # prismatic-pair couples [N·m]
+    inertia_force: dict         # link → complex −m·a_S [N]
+    inertia_couple: dict        # link → −J_S·α [N·m]
+    balancing_torque: np.ndarray  # M_b on the crank, in its sense of rotation [N·m]
+    power_residual: np.ndarray  # Σ power of every load incl. M_b [W]
+    mean_torque: float          # mean M_b over a revolution [N·m]
+    mean_power: float           # mean power delivered to the crank [W]
+    peak_torque: float          # max |M_b| [N·m]
+
+
+@dataclass(frozen=True)
+class LinkageFlywheel:
+    """Stage 飞轮设计 (the flywheel evens out M_b; the mechanism's own inertia ignored)."""
+
+    speed_ratio: float
+    shaft_speed_rpm: float
+    driving_torque: float       # constant M_d on the crank [N·m]
+    energy: np.ndarray          # ΔE over the grid [J]
+    max_energy_swing: float     # ΔW_max [J]
+    phase_at_min: float
+    phase_at_max: float
+    fluctuation: float
+    inertia: float              # J_F on the flywheel shaft [kg·m²]
+
+
+@dataclass(frozen=True)
+class LinkageVerification:
+    closure_residual: float     # max constraint violation [m]
+    velocity_fd_error: float    # max |v − Δx/Δt| / max |v| over every moving point and link
+    acceleration_fd_error: float
+    power_balance_residual: float  # max |Σ P| / max |M_b ω| (0 when there is no load)
+    stroke: float               # by bounded search [m or rad]
+    time_ratio: float           # K from the searched extremes
+    fd_step: float              # [rad]
+    warnings: tuple = ()
+
+
+# ---------------------------------------------------------------- motion
+
+def _output_coordinate(model: LinkageModel, m: Motion, reference: float | None = None):
+    """Raw output coordinate: a point's position along the direction, or a link angle
+    relative to ``reference`` (wrapped into ±π so an oscillating link is continuous)."""
+    out = model.output
+    if out.kind == "point":
+        u = np.exp(1j * out.direction)
+        p = m.points[out.name]
+        return ((np.conj(u) * p.pos).real, (np.conj(u) * p.vel).real, (np.conj(u) * p.acc).real)
+    link = m.links[out.name]
+    ref = link.angle[0] if reference is None else reference
+    return np.angle(np.exp(1j * (link.angle - ref))), link.omega, link.alpha
+
+
+def _extremes_by_position(model: LinkageModel, angles: np.ndarray, s: np.ndarray, ref):
+    """Crank angles and values of the output's minimum and maximum, each refined by a
+    bounded scalar search on the position between the neighbouring grid points."""
+    from scipy.optimize import minimize_scalar
+
+    h = angles[1] - angles[0]
+
+    def s_at(angle: float) -> float:
+        return float(_output_coordinate(model, model.mechanism.solve(np.array([angle])), ref)[0][0])
+
+    found = []
+    for i, sign in ((int(np.argmin(s)), 1.0), (int(np.argmax(s)), -1.0)):
+        r = minimize_scalar(lambda x: sign * s_at(x), bounds=(angles[i] - h, angles[i] + h),
+                            method="bounded", options={"xatol": 1e-12})
+        found.append((float(r.x) % TWO_PI, s_at(float(r.x))))
+    return found
+
+
+def _extremes_by_velocity(model: LinkageModel, angles: np.ndarray, v: np.ndarray, ref):
+    """The same from the crank angles where the output's analytic velocity is zero
+    (Brent's method between grid points where it changes sign; precise to ~1e-14 rad)."""
+    from scipy.optimize import brentq
+
+    h = angles[1] - angles[0]
+
+    def at(angle: float):
+        s, vel, _ = _output_coordinate(model, model.mechanism.solve(np.array([angle])), ref)
+        return float(s[0]), float(vel[0])
+
+    roots = []
+    for i in np.flatnonzero(np.sign(v) != np.sign(np.roll(v, -1))):
+        a, b = angles[i], angles[i] + h
+        va, vb = at(a)[1], at(b)[1]
+        if va == 0.0:
+            roots.append(a)
+        elif va * vb < 0:
+            roots.append(brentq(lambda x: at(x)[1], a, b, xtol=1e-15, rtol=4 * np.finfo(float).eps))
+    if len(roots) < 2:
+        raise ValueError("the output does not reciprocate: its velocity never changes sign")
+    values = [at(x)[0] for x in roots]
+    lo, hi = int(np.argmin(values)), int(np.argmax(values))
+    return [(roots[lo] % TWO_PI, values[lo]), (roots[hi] % TWO_PI, values[hi])]
+
+
+def _strokes(model: LinkageModel, by_velocity: bool = True):
+    """(start angle, end angle, s_start, s_end, reference) of the working stroke: by the
+    velocity's zeros (motion stage) or by a position search (verification)."""
+    n = model.grid_points
+    angles = np.arange(n) * (TWO_PI / n)
+    m = model.mechanism.solve(angles)
+    ref = m.links[model.output.name].angle[0] if model.output.kind == "link" else None
+    s, v, _ = _output_coordinate(model, m, ref)
+    if by_velocity:
+        found = _extremes_by_velocity(model, angles, v, ref)
+    else:
+        found = _extremes_by_position(model, angles, s, ref)
+    (a_min, s_min), (a_max, s_max) = found
+    if model.output.working > 0:
+        return a_min, a_max, s_min, s_max, ref
+    return a_max, a_min, s_max, s_min, ref
+
+
+def _quality(model: LinkageModel, m: Motion, phase: np.ndarray, working_span: float, n: int):
+    out = []
+    working = phase[:n] <= working_span + 1e-12
+    for g in model.mechanism.groups:
+        if isinstance(g, RRR):
+            u1 = np.exp(1j * m.links[g.link1].angle)
+            u2 = np.exp(1j * m.links[g.link2].angle)
+            delta = np.abs(np.angle(u1 * np.conj(u2)))
+            values = np.minimum(delta, np.pi - delta)
+            kind, point, pick = "transmission", g.c, np.argmin
+        elif isinstance(g, RRP):
+            u = np.exp(1j * m.links[g.rod].angle)
+            delta = np.abs(np.angle(u * np.exp(-1j * g.guide_angle)))
+            values = np.minimum(delta, np.pi - delta)
+            kind, point, pick = "pressure", g.c, np.argmax
+        else:
+            continue
+        grid = values[:n]
+        i = int(pick(grid))
+        wi = np.flatnonzero(working)[int(pick(grid[working]))]
+        out.append(QualityAngle(g.name, kind, point, values, float(grid[i]), float(phase[i]),
+                                float(grid[wi]), float(phase[wi])))
+    return tuple(out)
+
+
+def motion(model: LinkageModel) -> tuple[LinkageMotion, Motion]:
+    """Solve the revolution; position 1 is the output extreme that starts the working stroke."""
+    start, end, s0, s1, ref = _strokes(model)
+    sense = float(np.sign(model.crank_omega))
+    span = (sense * (end - start)) % TWO_PI
+    pos = textbook_positions(model.position_step, span, [])
+    n = model.grid_points
+    grid = np.arange(n) * (TWO_PI / n)
+    phase = np.concatenate([grid, pos.phase])
+    crank_angle = start + sense * phase
+    m = model.mechanism.solve(crank_angle)
+    raw, v, a = _output_coordinate(model, m, ref)
+    w = float(model.output.working)
+    k = LinkageMotion(
+        positions=pos, phase=phase, crank_angle=crank_angle,
+        s=w * (raw - s0), v=w * v, a=w * a,
+        output_unit="m" if model.output.kind == "point" else "rad",
+        stroke=abs(s1 - s0), working_span=float(span), time_ratio=float(span / (TWO_PI - span)),
+        start_angle=float(start), sense=sense,
+        points={name: p.pos for name, p in m.points.items()},
+        link_angle={k_: v_.angle for k_, v_ in m.links.items()},
+        link_omega={k_: v_.omega for k_, v_ in m.links.items()},
+        link_alpha={k_: v_.alpha for k_, v_ in m.links.items()},
+        quality=_quality(model, m, phase, span, n), grid_size=n)
+    return k, m
+
+
+# ---------------------------------------------------------------- forces
+
+def resistance_loads(model: LinkageModel, k: LinkageMotion, m: Motion) -> list[PointLoad]:
+    """The resistances as point loads over the phase array (zero where the point is at rest
+    along the line)."""
+    loads = []
+    working = k.phase <= k.working_span + 1e-12
+    for r in model.resistances:
+        u = np.exp(1j * r.direction)
+        along = (np.conj(u) * m.points[r.point].vel).real
+        scale = np.max(np.abs(along[:k.grid_size])) or 1.0
+        moving = np.where(np.abs(along) > 1e-12 * scale, np.sign(along), 0.0)
+        magnitude = np.where(working, r.working, r.returning)
+        if r.active is not None:
+            lo, hi = r.active
+            tol = 1e-9 * max(k.stroke, 1e-12)
+            inside = (k.s >= lo - tol) & (k.s <= hi + tol)
+            magnitude = np.where(working & ~inside, 0.0, magnitude)
+        loads.append(PointLoad(r.link, r.point, -moving * magnitude * u))
+    return loads
+
+
+def forces(model: LinkageModel, k: LinkageMotion, m: Motion) -> LinkageForces:
+    loads = resistance_loads(model, k, m)
+    bodies = list(model.bodies)
+    fa = solve_forces(model.mechanism, m, bodies, loads, model.gravity)
+    mb = k.sense * fa.driving_torque
+    residual = power_residual(model.mechanism, m, bodies, loads, fa.driving_torque, model.gravity)
+    n = k.grid_size
+    mean = float(np.mean(mb[:n]))
+    return LinkageForces(
+        resistance={f"R{i + 1}": (np.conj(np.exp(1j * r.direction)) * ld.force).real
+                    for i, (r, ld) in enumerate(zip(model.resistances, loads))},
+        reactions={name: r.force for name, r in fa.reactions.items()},
+        couples={name: r.couple for name, r in fa.reactions.items() if r.couple is not None},
+        inertia_force=fa.inertia_force, inertia_couple=fa.inertia_couple,
+        balancing_torque=mb, power_residual=residual, mean_torque=mean,
+        mean_power=mean * abs(model.crank_omega), peak_torque=float(np.max(np.abs(mb[:n]))))
+
+
+def flywheel(model: LinkageModel, k: LinkageMotion, f: LinkageForces) -> LinkageFlywheel | None:
+    spec = model.flywheel
+    if spec is None:
+        return None
+    n = k.grid_size
+    cycle = fw.energy_cycle(k.phase[:n], f.balancing_torque[:n])
+    speed = abs(model.crank_omega) * 30.0 / np.pi * spec.speed_ratio
+    return LinkageFlywheel(
+        speed_ratio=spec.speed_ratio, shaft_speed_rpm=float(speed),
+        driving_torque=cycle.driving_torque, energy=cycle.energy,
+        max_energy_swing=cycle.max_energy_swing, phase_at_min=cycle.angle_at_min,
+        phase_at_max=cycle.angle_at_max, fluctuation=spec.fluctuation,
+        inertia=fw.flywheel_inertia(cycle.max_energy_swing, speed, spec.fluctuation))
+
+
+# ---------------------------------------------------------------- verification
+
+def closure_residual(mech: Mechanism, m: Motion, n: int | None = None) -> float:
+    """Largest violation of any group's constraints [m] (lengths, points on guides)."""
+    P = {name: p.pos[:n] for name, p in m.points.items()}
+    res = [0.0]
+
+    def worst(x):
+        res.append(float(np.max(np.abs(x))))
+
+    for g in mech.groups:
+        if isinstance(g, Crank):
+            worst(np.abs(P[g.tip] - P[g.pivot]) - g.length)
+        elif isinstance(g, RRR):
+            worst(np.abs(P[g.c] - P[g.b]) - g.l1)
+            worst(np.abs(P[g.c] - P[g.d]) - g.l2)
+        elif isinstance(g, RRP):
+            worst(np.abs(P[g.c] - P[g.b]) - g.length)
+            worst((np.exp(-1j * g.guide_angle) * (P[g.c] - g.guide_point)).imag)
+        elif isinstance(g, RPR):
+            u = np.exp(1j * m.links[g.bar].angle[:n])
+            worst((np.conj(u) * (P[g.a] - P[g.pivot])).imag - g.offset)
+        elif isinstance(g, LinkPoint):
+            worst(np.abs(P[g.name] - P[g.origin]) - g.distance)
+    return max(res)
+
+
+def _fd_errors(m: Motion, n: int, omega: float) -> tuple[float, float]:
+    """Central differences on the periodic grid against the analytic velocities and
+    accelerations of every moving point and link (relative to each one's maximum)."""
+    dt = (TWO_PI / n) / abs(omega)
+    vel_err, acc_err = 0.0, 0.0
+
+    def rel(x, ref):
+        scale = np.max(np.abs(ref))
+        return 0.0 if scale < 1e-12 else float(np.max(np.abs(x)) / scale)
+
+    for p in m.points.values():
+        pos, vel, acc = p.pos[:n], p.vel[:n], p.acc[:n]
+        if np.max(np.abs(vel)) < 1e-12:
+            continue
+        vel_err = max(vel_err, rel(vel - (np.roll(pos, -1) - np.roll(pos, 1)) / (2 * dt), vel))
+        acc_err = max(acc_err, rel(acc - (np.roll(vel, -1) - np.roll(vel, 1)) / (2 * dt), acc))
+    for link in m.links.values():
+        th, w, al = link.angle[:n], link.omega[:n], link.alpha[:n]
+        if np.max(np.abs(w)) < 1e-12:
+            continue
+        dth = np.angle(np.exp(1j * (np.roll(th, -1) - np.roll(th, 1))))
+        vel_err = max(vel_err, rel(w - dth / (2 * dt), w))
+        acc_err = max(acc_err, rel(al - (np.roll(w, -1) - np.roll(w, 1)) / (2 * dt), al))
+    return vel_err, acc_err
+
+
+def verify(model: LinkageModel, k: LinkageMotion, m: Motion, f: LinkageForces | None
+           ) -> LinkageVerification:
+    n = k.grid_size
+    vel_err, acc_err = _fd_errors(m, n, model.crank_omega)
+    power = 0.0
+    if f is not None:
+        scale = np.max(np.abs(f.balancing_torque[:n] * model.crank_omega))
+        power = float(np.max(np.abs(f.power_residual[:n])) / scale) if scale > 0 else 0.0
+    start, end, s0, s1, _ = _strokes(model, by_velocity=False)
+    span = (k.sense * (end - start)) % TWO_PI
+    stroke, ratio = abs(s1 - s0), float(span / (TWO_PI - span))
+    return LinkageVerification(
+        closure_residual=closure_residual(model.mechanism, m, n),
+        velocity_fd_error=vel_err, acceleration_fd_error=acc_err,
+        power_balance_residual=power, stroke=stroke, time_ratio=ratio, fd_step=TWO_PI / n,
+        warnings=tuple(quality_findings(model, k)))
+
+
+def quality_findings(model: LinkageModel, k: LinkageMotion) -> list[Finding]:
+    """Pressure angle over the working stroke and transmission angle over the cycle
+    against the model's limits."""
+    found = []
+    deg = 180.0 / np.pi
+    for q in k.quality:
+        if q.kind == "pressure" and model.pressure_angle_limit is not None \
+                and q.working_extreme > model.pressure_angle_limit + 1e-9:
+            found.append(Finding(
+                "pressure_angle",
+                f"{q.group}：工作行程最大压力角 {q.working_extreme * deg:.2f}° 超过许用值 "
+                f"{model.pressure_angle_limit * deg:.1f}°；应加长连杆或调整导路位置",
+                f"{q.group}: the largest pressure angle in the working stroke, "
+                f"{q.working_extreme * deg:.2f}°, exceeds the allowed "
+                f"{model.pressure_angle_limit * deg:.1f}°; lengthen the rod or move the guide"))
+        if q.kind == "transmission" and model.transmission_angle_min is not None \
+                and q.extreme < model.transmission_angle_min - 1e-9:
+            found.append(Finding(
+                "transmission_angle",
+                f"{q.group}：最小传动角 {q.extreme * deg:.2f}° 小于许用值 "
+                f"{model.transmission_angle_min * deg:.1f}°；应调整杆长",
+                f"{q.group}: the minimum transmission angle {q.extreme * deg:.2f}° is below "
+                f"the allowed {model.transmission_angle_min * deg:.1f}°; change the link lengths"))
+    return found
+
+
+# ---------------------------------------------------------------- stages and results
+
+def linkage_stages(model_key: str = "model", prefix: str = "linkage") -> list[Stage]:
+    """The four stages on the model found at ``results[model_key]``; results are stored as
+    ``{prefix}``, ``{prefix}_motion``, ``{prefix}_forces``, ``{prefix}_flywheel`` and
+    ``{prefix}_verification``."""
+    return [
+        Stage((prefix, f"{prefix}_raw"), "机构运动分析 / kinematics",
+              lambda r: motion(r[model_key])),
+        Stage(f"{prefix}_forces", "动态静力分析 / kinetostatics",
+              lambda r: forces(r[model_key], r[prefix], r[f"{prefix}_raw"])),
+        Stage(f"{prefix}_flywheel", "飞轮设计 / flywheel",
+              lambda r: flywheel(r[model_key], r[prefix], r[f"{prefix}_forces"])),
+        Stage(f"{prefix}_verification", "校核 / verification",
+              lambda r: verify(r[model_key], r[prefix], r[f"{prefix}_raw"],
+                               r[f"{prefix}_forces"])),
+    ]
+
+
+def linkage_document(model: LinkageModel, k: LinkageMotion, f: LinkageForces,
+                     fly: LinkageFlywheel | None, v: LinkageVerification) -> dict:
+    """The linkage part of results.json (SI)."""
+    n = k.grid_size
+    per_position = []
+    for i, label in enumerate(k.positions.labels):
+        j = n + i
+        per_position.append({
+            "label": label, "phase": k.phase[j], "crank_angle": k.crank_angle[j] % TWO_PI,
+            "s": k.s[j], "v": k.v[j], "a": k.a[j],
+            "points": {p: z[j] for p, z in k.points.items()},
+            "link_omega": {l_: w[j] for l_, w in k.link_omega.items()},
+            "link_alpha": {l_: a[j] for l_, a in k.link_alpha.items()},
+            "quality": {q.group: q.values[j] for q in k.quality},
+            "reactions": {name: r[j] for name, r in f.reactions.items()},
+            "balancing_torque": f.balancing_torque[j],
+        })
+    return {
+        "crank_omega": model.crank_omega,
+        "output": {"kind": model.output.kind, "name": model.output.name,
+                   "unit": k.output_unit, "stroke": k.stroke},
+        "working_stroke_crank_angle": k.working_span, "time_ratio": k.time_ratio,
+        "start_crank_angle": k.start_angle,
+        "quality": [{"group": q.group, "kind": q.kind, "point": q.point, "extreme": q.extreme,
+                     "extreme_phase": q.extreme_phase, "working_extreme": q.working_extreme}
+                    for q in k.quality],
+        "positions": per_position,
+        "grid": {"phase": k.phase[:n], "s": k.s[:n], "v": k.v[:n], "a": k.a[:n],
+                 "balancing_torque": f.balancing_torque[:n]},
+        "mean_torque": f.mean_torque, "mean_power": f.mean_power, "peak_torque": f.peak_torque,
+        "flywheel": None if fly is None else {
+            "speed_ratio": fly.speed_ratio, "shaft_speed_rpm": fly.shaft_speed_rpm,
+            "driving_torque": fly.driving_torque, "max_energy_swing": fly.max_energy_swing,
+            "fluctuation": fly.fluctuation, "inertia": fly.inertia},
+        "verification": {key: getattr(v, key) for key in (
+            "closure_residual", "velocity_fd_error", "acceleration_fd_error",
+            "power_balance_residual", "stroke", "time_ratio", "fd_step")},
+    }
+
+
+def link_members(mech: Mechanism) -> tuple[dict, list]:
+    """For drawings: the points each moving link carries, and the sliders as
+    (slider link, point, guide: link id or fixed angle [rad])."""
+    members: dict[str, list[str]] = {}
+    sliders = []
+
+    def add(link, *pts):
+        lst = members.setdefault(link, [])
+        lst.extend(p for p in pts if p not in lst)
+
+    for g in mech.groups:
+        if isinstance(g, Crank):
+            add(g.link, g.pivot, g.tip)
+        elif isinstance(g, RRR):
+            add(g.link1, g.b, g.c)
+            add(g.link2, g.d, g.c)
+        elif isinstance(g, RRP):
+            add(g.rod, g.b, g.c)
+            sliders.append((g.slider, g.c, g.guide_angle, g.guide_point))
+        elif isinstance(g, RPR):
+            add(g.bar, g.pivot, g.a)
+            sliders.append((g.slider, g.a, g.bar, None))
+        elif isinstance(g, LinkPoint):
+            add(g.link, g.origin, g.name)
+    return members, sliders
+
+
+# ---------------------------------------------------------------- the `linkage` machine
+
+def linkage_params(brief):
+    """The generic brief's SI model."""
+    from ..brief.linkage import linkage_to_model
+
+    return linkage_to_model(brief.linkage, brief.analysis)
+
+
+STAGES = linkage_stages(model_key="params")
+
+
+def results_document(r: dict) -> dict:
+    return {
+        "schema": "mechdesign.results/1",
+        "machine": "linkage",
+        "units": "SI: m, s, rad, kg, N, N·m, J, W; complex vectors as [x, y]",
+        "linkage": linkage_document(r["params"], r["linkage"], r["linkage_forces"],
+                                    r["linkage_flywheel"], r["linkage_verification"]),
+    }
