@@ -25,6 +25,7 @@ EXPECTED = {
     "lockbeam_cam": ["cam_A2"],
     "cam_7_1": [],           # analysis of a given eccentric disc: no cam to draw
     "furnace_drive": [],     # drive only
+    "linkage_sixbar": [],    # generic linkage: no drawing sheet yet
 }
 
 

@@ -405,3 +405,32 @@ def shaper_gif(results: dict, path, lang: str, **kwargs) -> Path:
     ``kwargs`` (frames, fps, size_px) pass through to :func:`write_mechanism_gif`."""
     args = shaper_animation_args(results, lang)
     return write_mechanism_gif(path, args.pop("points"), args.pop("bars"), **args, **kwargs)
+
+
+def linkage_animation_args(model, k, title: str = "") -> dict:
+    """Arguments of :func:`write_mechanism_gif` for any linkage of the shared stages (mm)."""
+    from ..machines.linkage import link_members
+
+    n = k.grid_size
+    members, sliders = link_members(model.mechanism)
+    pts = {name: np.asarray(z[:n], dtype=complex) * 1e3 for name, z in k.points.items()}
+    bars = [tuple(p) for p in members.values() if len(p) >= 2]
+    blocks, guides = [], []
+    for _slider, p, guide, gp in sliders:
+        if isinstance(guide, float):
+            u = np.exp(1j * guide)
+            along = (np.conj(u) * (pts[p] - gp * 1e3)).real
+            extra = 0.3 * max(float(np.ptp(along)), 1.0)
+            guides.append((gp * 1e3 + (along.min() - extra) * u, gp * 1e3 + (along.max() + extra) * u))
+            blocks.append((p, guide))
+        else:
+            blocks.append((p, np.asarray(k.link_angle[guide][:n])))
+    trace = model.output.name if model.output.kind == "point" else None
+    return dict(points=pts, bars=bars, pivots=list(model.mechanism.frame_points), sliders=blocks,
+                guides=guides, trace=trace, title=title)
+
+
+def linkage_gif(model, k, path, lang: str, **kwargs) -> Path:
+    """Animate a linkage of the shared stages over one crank revolution as a GIF."""
+    args = linkage_animation_args(model, k, "连杆机构运动" if lang == "zh" else "Linkage motion")
+    return write_mechanism_gif(path, args.pop("points"), args.pop("bars"), **args, **kwargs)

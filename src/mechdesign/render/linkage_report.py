@@ -1,0 +1,361 @@
+"""Report pieces of any linkage (the shared linkage stages): figures, template context and
+the verification rows; plus the report module of the stand-alone ``linkage`` machine.
+
+Machines that analyse a linkage include ``templates/linkage_section.*.md.j2`` with
+``{% with lk = … %}`` and pass :func:`linkage_context`'s dict; the verification rows of
+:func:`verification_rows` go into ``templates/verification_section.*.md.j2`` together
+with the machine's own checks.
+"""
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+
+from . import figures as fig
+from .fmt import e, f
+
+DEG = 180.0 / np.pi
+
+_TXT = {
+    "zh": {"s": "位移 s", "v": "速度 v", "a": "加速度 a", "swing": "角位移 ψ", "w": "角速度 ω",
+           "al": "角加速度 α", "gamma": "传动角 γ", "alpha": "压力角 α", "limit": "许用值",
+           "mb": r"平衡力矩 $M_b$ (N·m)", "mean": "平均值", "resist": "阻力作用区",
+           "angle": "角度 (°)", "transmission": "传动角", "pressure": "压力角"},
+    "en": {"s": "displacement s", "v": "velocity v", "a": "acceleration a", "swing": "angle ψ",
+           "w": "angular velocity ω", "al": "angular acceleration α", "gamma": "transmission angle γ",
+           "alpha": "pressure angle α", "limit": "allowed", "mb": r"balancing torque $M_b$ (N·m)",
+           "mean": "mean", "resist": "resistance acts", "angle": "angle (°)",
+           "transmission": "transmission angle", "pressure": "pressure angle"},
+}
+
+
+def _units(k):
+    """Display scale and unit strings of the output (mm or °)."""
+    if k.output_unit == "m":
+        return 1e3, ("mm", "m/s", "m/s²"), 1.0
+    return DEG, ("°", "rad/s", "rad/s²"), 1.0
+
+
+def _labels(k):
+    return [lab.replace("'", "′") for lab in k.positions.labels]
+
+
+def make_linkage_figures(model, k, f_, fly, fig_dir: Path, lang: str,
+                         prefix: str = "linkage") -> dict[str, str]:
+    """Draw the linkage figures into ``fig_dir``; return name → relative path."""
+    from ..machines.linkage import link_members
+
+    t = _TXT[lang]
+    n = k.grid_size
+    ph = k.phase[:n] * DEG
+    span = k.working_span * DEG
+    pos_ph = k.phase[n:] * DEG
+    labels = _labels(k)
+    paths = {}
+
+    def out(name):
+        key = f"{prefix}_{name}"
+        paths[key] = f"{fig_dir.name}/{key}.png"
+        return fig_dir / f"{key}.png"
+
+    scale, units, _ = _units(k)
+    point = k.output_unit == "m"
+    names = ([t["s"], t["v"], t["a"]] if point else [t["swing"], t["w"], t["al"]])
+    ylabels = [f"{nm} ({u})" for nm, u in zip(names, units)]
+    fig.curves_vs_phase(out("motion"), lang, ph, [k.s[:n] * scale, k.v[:n], k.a[:n]], ylabels,
+                        span, (labels, pos_ph, [k.s[n:] * scale, k.v[n:], k.a[n:]]))
+    if k.quality:
+        _quality_figure(out("angles"), lang, ph, span, k, model)
+    _torque_figure(out("torque"), lang, ph, span, f_.balancing_torque[:n], f_.mean_torque,
+                   f_.resistance, n, (labels, pos_ph, f_.balancing_torque[n:]))
+    if fly is not None:
+        fig.energy(out("energy"), lang, ph, fly.energy, fly.phase_at_min * DEG,
+                   fly.phase_at_max * DEG, fly.max_energy_swing, span)
+    if f_.reactions:
+        fig.reactions(out("reactions"), lang, ph,
+                      {f"$F_{{{name}}}$": np.abs(v[:n]) for name, v in f_.reactions.items()}, span)
+    members, sliders = link_members(model.mechanism)
+    skeleton(out("mechanism"), lang, model, k, members, sliders)
+    return paths
+
+
+def _quality_figure(path, lang, ph, span, k, model):
+    t = _TXT[lang]
+    n = k.grid_size
+    with fig.figure(path, 1, (7.0, 3.2)) as (ax,):
+        fig._phase_axis(ax, span)
+        for q in k.quality:
+            sym = "γ" if q.kind == "transmission" else "α"
+            ax.plot(ph, q.values[:n] * DEG, lw=1.3, label=f"{sym} {q.group}")
+        if model.pressure_angle_limit is not None:
+            ax.axhline(model.pressure_angle_limit * DEG, color="C3", ls="--", lw=0.9,
+                       label=f"[α] = {model.pressure_angle_limit * DEG:.0f}°")
+        if model.transmission_angle_min is not None:
+            ax.axhline(model.transmission_angle_min * DEG, color="C2", ls=":", lw=0.9,
+                       label=f"[γ] = {model.transmission_angle_min * DEG:.0f}°")
+        ax.set_ylim(0, 90)
+        ax.set_ylabel(t["angle"])
+        ax.set_xlabel(fig.LABELS[lang]["phase"])
+        ax.legend(fontsize=7, loc="upper right", ncol=2)
+
+
+def _torque_figure(path, lang, ph, span, mb, mean, resistance, n, marks):
+    t = _TXT[lang]
+    with fig.figure(path, 1, (7.0, 3.4)) as (ax,):
+        fig._phase_axis(ax, span, marks)
+        if resistance:
+            on = np.zeros(n, dtype=bool)
+            for values in resistance.values():
+                on |= np.abs(values[:n]) > 0
+            ax.fill_between(ph, 0, 1, where=on, transform=ax.get_xaxis_transform(),
+                            color="C1", alpha=0.10, lw=0, label=t["resist"])
+        ax.plot(ph, mb, lw=1.4, color="C0", label=r"$M_b$")
+        ax.axhline(mean, color="C2", lw=1.0, ls="--", label=f"{t['mean']} = {mean:.2f} N·m")
+        ax.axhline(0, color="0.4", lw=0.6)
+        ax.set_xlabel(fig.LABELS[lang]["phase"])
+        ax.set_ylabel(t["mb"])
+        ax.legend(fontsize=7, loc="best")
+
+
+def skeleton(path: Path, lang: str, model, k, members: dict, sliders: list):
+    """The linkage at its regular textbook positions (thin) and position 1 (bold), in mm."""
+    from ..core.mechanism import Crank
+
+    n = k.grid_size
+    regular = [n + i for i, s in enumerate(k.positions.special) if not s]
+    labels = [k.positions.labels[i - n] for i in regular]
+    P = {name: z * 1e3 for name, z in k.points.items()}
+    frame = model.mechanism.frame_points
+    crank: Crank = model.crank
+    allpts = np.concatenate([P[p][:n] for p in P])
+    span = max(np.ptp(allpts.real), np.ptp(allpts.imag), 1e-9)
+    block = 0.025 * span
+    with fig.figure(path, 1, (6.4, 5.6), sharex=False) as (ax,):
+        # Paths of every moving point over the cycle.
+        for name, z in P.items():
+            if name not in frame:
+                ax.plot(z[:n].real, z[:n].imag, color="0.82", lw=0.5, zorder=1)
+        for rank, j in enumerate(regular):
+            bold = rank == 0
+            color, lw = ("C0", 1.9) if bold else ("0.6", 0.6)
+            for link, pts in members.items():
+                zs = [P[p][j] for p in pts]
+                c = "C3" if (bold and link == crank.link) else color
+                if len(zs) >= 3:
+                    poly = np.array(zs + [zs[0]])
+                    ax.fill(poly.real, poly.imag, color=c, alpha=0.12 if bold else 0.04, lw=0)
+                    ax.plot(poly.real, poly.imag, color=c, lw=lw)
+                else:
+                    ax.plot([z.real for z in zs], [z.imag for z in zs], color=c, lw=lw)
+            for slider, p, guide, _gp in sliders:
+                ang = guide if isinstance(guide, float) else k.link_angle[guide][j]
+                u = np.exp(1j * ang) * block
+                corners = P[p][j] + np.array([-u - 0.6j * u, u - 0.6j * u, u + 0.6j * u,
+                                              -u + 0.6j * u, -u - 0.6j * u])
+                ax.plot(corners.real, corners.imag, color=color, lw=lw)
+            tip = P[crank.tip][j]
+            o = complex(frame[crank.pivot]) * 1e3
+            u = (tip - o) / abs(tip - o)
+            ax.text((tip + 1.8 * block * u).real, (tip + 1.8 * block * u).imag, labels[rank],
+                    fontsize=6.5, ha="center", va="center")
+        for slider, p, guide, gp in sliders:
+            if isinstance(guide, float):
+                z = P[p][:n]
+                u = np.exp(1j * guide)
+                along = (np.conj(u) * (z - gp * 1e3)).real
+                a, b = along.min() - 2 * block, along.max() + 2 * block
+                ends = gp * 1e3 + np.array([a, b]) * u
+                ax.plot(ends.real, ends.imag, color="0.4", lw=0.8, ls="-.")
+        for name, z in frame.items():
+            z = complex(z) * 1e3
+            ax.plot([z.real], [z.imag], "^", color="k", ms=6, zorder=4)
+            ax.text(z.real + 0.6 * block, z.imag - 1.6 * block, name, fontsize=8)
+        j0 = regular[0]
+        for name in P:
+            if name not in frame:
+                z = P[name][j0]
+                ax.plot([z.real], [z.imag], "o", color="C0", ms=2.5, zorder=4)
+                ax.text(z.real + 0.5 * block, z.imag + 0.5 * block, name, fontsize=8, color="C0")
+        ax.set_aspect("equal")
+        ax.set_xlabel("x (mm)")
+        ax.set_ylabel("y (mm)")
+        ax.grid(True, lw=0.3, color="0.88")
+
+
+def _link_rows(model, lang: str) -> list[list[str]]:
+    """Groups of the linkage with their dimensions, for the data table."""
+    from ..core.mechanism import RPR, RRP, RRR, Crank, LinkPoint
+
+    zh = lang == "zh"
+    rows = []
+    for g in model.mechanism.groups:
+        if isinstance(g, Crank):
+            rows.append([("曲柄" if zh else "crank"), g.link, f"{g.pivot}{g.tip}",
+                         f"{g.pivot}{g.tip} = {f(g.length * 1e3, 2)} mm"])
+        elif isinstance(g, RRR):
+            rows.append([g.name, f"{g.link1}, {g.link2}", f"{g.b}{g.c}, {g.d}{g.c}",
+                         f"{g.b}{g.c} = {f(g.l1 * 1e3, 2)} mm, {g.d}{g.c} = {f(g.l2 * 1e3, 2)} mm"])
+        elif isinstance(g, RRP):
+            rows.append([g.name, f"{g.rod}, {g.slider}", f"{g.b}{g.c}",
+                         f"{g.b}{g.c} = {f(g.length * 1e3, 2)} mm; "
+                         + ("导路过" if zh else "guide through ")
+                         + f"({f(g.guide_point.real * 1e3, 1)}, {f(g.guide_point.imag * 1e3, 1)}) mm, "
+                         + f"{f(g.guide_angle * DEG, 1)}°"])
+        elif isinstance(g, RPR):
+            rows.append([g.name, f"{g.slider}, {g.bar}", f"{g.pivot}{g.a}",
+                         ("偏距" if zh else "offset") + f" {f(g.offset * 1e3, 2)} mm"])
+        elif isinstance(g, LinkPoint):
+            rows.append([("点" if zh else "point") + f" {g.name}", g.link, f"{g.origin}{g.name}",
+                         f"{g.origin}{g.name} = {f(g.distance * 1e3, 2)} mm, "
+                         f"{f(g.offset_angle * DEG, 1)}°"])
+    return rows
+
+
+def linkage_context(model, k, f_, fly, v, figures: dict, lang: str,
+                    prefix: str = "linkage", title: str | None = None) -> dict:
+    """Strings and rows for ``linkage_section``; ``title`` is the chapter heading."""
+    zh = lang == "zh"
+    n = k.grid_size
+    scale, units, _ = _units(k)
+    labels = _labels(k)
+    frame = model.mechanism.frame_points
+    frame_rows = [[name, f(complex(z).real * 1e3, 2), f(complex(z).imag * 1e3, 2)]
+                  for name, z in frame.items()]
+    point_names = [p for p in k.points if p not in frame]
+    qual_head = [("$\\gamma$ " if q.kind == "transmission" else "$\\alpha$ ") + q.point
+                 for q in k.quality]
+    kin_rows, force_rows, point_rows = [], [], []
+    reaction_names = list(f_.reactions)
+    for i, label in enumerate(labels):
+        j = n + i
+        kin_rows.append([label, f(k.phase[j] * DEG, 2), f((k.crank_angle[j] * DEG) % 360, 2),
+                         f(k.s[j] * scale, 3), f(k.v[j], 4), f(k.a[j], 4)]
+                        + [f(q.values[j] * DEG, 2) for q in k.quality])
+        force_rows.append([label] + [f(abs(f_.reactions[nm][j]), 1) for nm in reaction_names]
+                          + [f(f_.balancing_torque[j], 3)])
+        point_rows.append([label] + [f"({f(k.points[p][j].real * 1e3, 1)}, "
+                                     f"{f(k.points[p][j].imag * 1e3, 1)})" for p in point_names])
+    link_speed_rows = []
+    for i, label in enumerate(labels):
+        j = n + i
+        link_speed_rows.append([label] + [f"{f(k.link_omega[l_][j], 3)} / {f(k.link_alpha[l_][j], 2)}"
+                                          for l_ in k.link_omega])
+    qual_rows = []
+    for q in k.quality:
+        kind = ("传动角 γ" if zh else "transmission angle γ") if q.kind == "transmission" \
+            else ("压力角 α" if zh else "pressure angle α")
+        if q.kind == "transmission":
+            extreme = ("最小" if zh else "min") + f" {f(q.extreme * DEG, 2)}° @ φ = {f(q.extreme_phase * DEG, 1)}°"
+            work = f(q.working_extreme * DEG, 2) + "°"
+            limit = "—" if model.transmission_angle_min is None else \
+                f"≥ {f(model.transmission_angle_min * DEG, 0)}°"
+        else:
+            extreme = ("最大" if zh else "max") + f" {f(q.extreme * DEG, 2)}° @ φ = {f(q.extreme_phase * DEG, 1)}°"
+            work = f"{f(q.working_extreme * DEG, 2)}° @ φ = {f(q.working_extreme_phase * DEG, 1)}°"
+            limit = "—" if model.pressure_angle_limit is None else \
+                f"≤ {f(model.pressure_angle_limit * DEG, 0)}° " + ("(工作行程)" if zh else "(working stroke)")
+        qual_rows.append([q.group, kind, q.point, extreme, work, limit])
+    res_rows = []
+    for i, r in enumerate(model.resistances):
+        window = "—"
+        if r.active is not None:
+            window = f"{f(r.active[0] * scale, 1)} – {f(r.active[1] * scale, 1)} {units[0]}"
+        res_rows.append([f"R{i + 1}", r.point, r.link, f(r.direction * DEG, 1), f(r.working, 1),
+                         f(r.returning, 1), window])
+    mass_rows = [[b.link, b.com, f(b.mass, 2), f(b.inertia, 4)] for b in model.bodies]
+    omega = abs(model.crank_omega)
+    ctx = {
+        "title": title or ("连杆机构分析" if zh else "Linkage analysis"),
+        "fig": {"mechanism": None, "motion": None, "angles": None, "torque": None,
+                "energy": None, "reactions": None,
+                **{key.removeprefix(prefix + "_"): path for key, path in figures.items()
+                   if key.startswith(prefix + "_")}},
+        "frame_rows": frame_rows, "link_rows": _link_rows(model, lang),
+        "mass_rows": mass_rows, "res_rows": res_rows,
+        "speed": f(omega * 30 / np.pi, 2), "omega": f(omega, 4),
+        "sense": ("顺时针" if model.crank_omega < 0 else "逆时针") if zh else
+                 ("clockwise" if model.crank_omega < 0 else "counter-clockwise"),
+        "output": model.output.name,
+        "unit_s": units[0], "unit_v": units[1], "unit_a": units[2],
+        "stroke": f(k.stroke * scale, 3), "K": f(k.time_ratio, 4),
+        "theta": f(180 * (k.time_ratio - 1) / (k.time_ratio + 1), 3),
+        "working_span": f(k.working_span * DEG, 2),
+        "return_span": f(360 - k.working_span * DEG, 2),
+        "start_angle": f((k.start_angle * DEG) % 360, 3),
+        "grid_points": str(n),
+        "kin_head": qual_head, "kin_rows": kin_rows,
+        "point_names": point_names, "point_rows": point_rows,
+        "link_ids": list(k.link_omega), "link_speed_rows": link_speed_rows,
+        "qual_rows": qual_rows,
+        "reaction_names": [f"$F_{{{nm}}}$" for nm in reaction_names], "force_rows": force_rows,
+        "mb_max": f(float(np.max(f_.balancing_torque[:n])), 3),
+        "mb_min": f(float(np.min(f_.balancing_torque[:n])), 3),
+        "mb_mean": f(f_.mean_torque, 3), "mb_peak": f(f_.peak_torque, 3),
+        "power": f(f_.mean_power, 2),
+        "eq_power": (rf"P = \bar M_b\,\omega = {f(f_.mean_torque, 3)} \times {f(omega, 4)} = "
+                     rf"{f(f_.mean_power, 2)}\ \text{{W}}"),
+        "has_forces": bool(model.bodies or model.resistances),
+        "fly": None,
+    }
+    if fly is not None:
+        ctx["fly"] = {
+            "n": f(fly.shaft_speed_rpm, 2), "dw": f(fly.max_energy_swing, 3),
+            "at_min": f(fly.phase_at_min * DEG, 1), "at_max": f(fly.phase_at_max * DEG, 1),
+            "delta": f"1/{1 / fly.fluctuation:.4g}", "jf": f(fly.inertia, 4),
+            "eq": (rf"J_F = \frac{{900\,\Delta W_{{max}}}}{{\pi^2 n^2 [\delta]}} = \frac{{900 \times "
+                   rf"{f(fly.max_energy_swing, 3)}}}{{\pi^2 \times {f(fly.shaft_speed_rpm, 2)}^2 \times "
+                   rf"{f(fly.fluctuation, 4)}}} = {f(fly.inertia, 4)}\ \text{{kg·m}}^2"),
+        }
+    return ctx
+
+
+def verification_rows(v, lang: str, k=None) -> list[list[str]]:
+    """The shared linkage checks as [item, result, reference, verdict] rows."""
+    zh = lang == "zh"
+
+    def verdict(x, limit):
+        return ("满足" if zh else "ok") if x <= limit else ("不满足" if zh else "fails")
+
+    rows = [
+        ["封闭方程残差（最大）/m" if zh else "closure residual (max) / m", e(v.closure_residual),
+         "≤ 1e-9", verdict(v.closure_residual, 1e-9)],
+        ["速度与位移中心差分之差（相对）" if zh else "velocity vs central difference (relative)",
+         e(v.velocity_fd_error), f"O(h²), h = {f(v.fd_step * DEG, 3)}°",
+         verdict(v.velocity_fd_error, 1e-3)],
+        ["加速度与速度中心差分之差（相对）" if zh else "acceleration vs central difference (relative)",
+         e(v.acceleration_fd_error), "O(h²)", verdict(v.acceleration_fd_error, 1e-3)],
+        ["功率平衡残差 ΣP / max|M_b ω|" if zh else "power balance ΣP / max|M_b ω|",
+         e(v.power_balance_residual), "≤ 1e-9", verdict(v.power_balance_residual, 1e-9)],
+    ]
+    if k is not None:
+        scale, units, _ = _units(k)
+        rows.append(["位置搜索所得行程 / " + units[0] if zh else "stroke by position search / " + units[0],
+                     f(v.stroke * scale, 6), f(k.stroke * scale, 6) + (" (速度零点)" if zh else " (velocity zeros)"),
+                     verdict(abs(v.stroke - k.stroke) / max(k.stroke, 1e-12), 1e-6)])
+        rows.append(["位置搜索所得 K" if zh else "K by position search", f(v.time_ratio, 6),
+                     f(k.time_ratio, 6), verdict(abs(v.time_ratio - k.time_ratio), 1e-6)])
+    return rows
+
+
+# ---------------------------------------------------------------- the `linkage` machine
+
+def make_figures(r: dict, fig_dir: Path, lang: str) -> dict[str, str]:
+    return make_linkage_figures(r["params"], r["linkage"], r["linkage_forces"],
+                                r["linkage_flywheel"], fig_dir, lang)
+
+
+def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
+    k, v = r["linkage"], r["linkage_verification"]
+    lk = linkage_context(r["params"], k, r["linkage_forces"], r["linkage_flywheel"], v,
+                         figures, lang, title="机构分析" if lang == "zh" else "Linkage analysis")
+    warnings = [w.text(lang) for w in v.warnings]
+    return {"meta": brief.report, "linkage": lk, "verify_rows": verification_rows(v, lang, k),
+            "findings": warnings}
+
+
+def animate(r: dict, path: Path, lang: str) -> Path:
+    """GIF of the linkage over one revolution."""
+    from .animation import linkage_gif
+
+    return linkage_gif(r["params"], r["linkage"], path, lang)
