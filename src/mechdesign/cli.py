@@ -76,7 +76,10 @@ def run(
     """Run every stage for BRIEF and write report.md, report.pdf, results.json and figures."""
     from .brief.loader import BriefError, load_brief
     from .core.cam import CamDesignError
+    from .core.cycle import CycleError
     from .core.drive import DriveDesignError
+    from .core.fourbar import SynthesisError
+    from .core.intermittent import IntermittentDesignError
     from .core.mechanism import AssemblyError
     from .machines import get_machine, stages_for
     from .pipeline import run_stages
@@ -100,12 +103,17 @@ def run(
         params = machine.to_params(b)
         results, _ = run_stages(stages_for(machine, params), {"params": params, "brief": b},
                                 stage_progress)
-    except (AssemblyError, CamDesignError, DriveDesignError) as exc:
+    except (AssemblyError, CamDesignError, DriveDesignError, SynthesisError, CycleError,
+            IntermittentDesignError) as exc:
         if debug:
             traceback.print_exc()
         what = {AssemblyError: "the mechanism cannot be assembled",
                 CamDesignError: "the cam cannot be designed",
-                DriveDesignError: "the drive cannot be designed"}[type(exc)]
+                DriveDesignError: "the drive cannot be designed",
+                SynthesisError: "the linkage cannot be synthesised",
+                CycleError: "the motion cycle diagram is inconsistent",
+                IntermittentDesignError: "the intermittent drive cannot be designed",
+                }.get(type(exc), "the design is not feasible")
         _err(f"{brief}: {what} with the brief's data:\n  {exc}")
         raise typer.Exit(EXIT_INVALID)
     for value in results.values():
