@@ -1,0 +1,349 @@
+"""Report pieces of the motion-scheme components, for any machine report: the motion cycle
+diagram, the morphological matrix and the incomplete gear. Each ``*_context`` returns the
+strings and rows its template section (``templates/<name>_section.<lang>.md.j2``) shows;
+each ``make_*_figures`` draws the section's figures and returns name → path relative to
+the report folder.
+
+Heading level: the sections start with ``level`` hashes (default 2, ``##``: a section under
+the machine's chapter such as "# 运动方案设计"); their sub-headings use one more. Labels of
+figures and tables begin with ``label`` so that a report may hold two of the same kind.
+Course units in the report: °, s, mm, rpm, rad/s.
+"""
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+
+from ..core import cycle as cy
+from . import cycle_figures as cf
+from .fmt import e, f
+
+DEG = 180.0 / np.pi
+MM = 1e3
+_OK = {"zh": ("满足", "不满足"), "en": ("met", "not met")}
+
+
+def _heads(level: int) -> tuple[str, str]:
+    if not 1 <= level <= 5:
+        raise ValueError(f"heading level must be 1 … 5, not {level}")
+    return "#" * level, "#" * (level + 1)
+
+
+def _deg(x: float, digits: int = 1) -> str:
+    return f(x * DEG, digits)
+
+
+# --------------------------------------------------------------------------- cycle diagram
+
+
+def _phase_rows(cycle: cy.CycleDiagram, lang: str):
+    """Per actuator: (name, [(start°, span°, state, label), …])."""
+    return [(a.name(lang), [(p.start * DEG, p.span * DEG, p.state, p.name(lang)) for p in a.phases])
+            for a in cycle.actuators]
+
+
+def _states_used(cycle: cy.CycleDiagram, lang: str) -> dict[str, str]:
+    used = []
+    for a in cycle.actuators:
+        for p in a.phases:
+            if p.state not in used:
+                used.append(p.state)
+    return {s: cy.STATES[s][0 if lang == "zh" else 1] for s in cy.STATES if s in used}
+
+
+def _ref_text(cycle: cy.CycleDiagram, ref: cy.PhaseRef, lang: str) -> str:
+    act = cycle.actuator(ref.actuator)
+    ph = cy.resolve(cycle, ref)
+    return f"{act.name(lang)}{'' if lang == 'zh' else ' '}{ph.name(lang)}"
+
+
+def constraint_text(cycle: cy.CycleDiagram, c: cy.Constraint, lang: str) -> str:
+    """The requirement in words: the brief's text, or one made from the references."""
+    if c.text(lang):
+        return c.text(lang)
+    a, b = _ref_text(cycle, c.a, lang), _ref_text(cycle, c.b, lang)
+    m = _deg(c.margin, 1)
+    if lang == "zh":
+        return (f"{a}在{b}开始前至少 {m}° 结束" if c.kind == "before" else
+                f"{a}全程处于{b}之内（两端余量 ≥ {m}°）")
+    return (f"{a} ends at least {m}° before {b} starts" if c.kind == "before" else
+            f"{a} lies within {b} (≥ {m}° to spare at both ends)")
+
+
+def _links(cycle: cy.CycleDiagram, checks):
+    rows = {a.key: i for i, a in enumerate(cycle.actuators)}
+    out = []
+    for chk in checks:
+        c = chk.constraint
+        pa, pb = cy.resolve(cycle, c.a), cy.resolve(cycle, c.b)
+        pieces_a = cf.window_pieces(pa.start * DEG, pa.span * DEG, cycle.origin * DEG)
+        pieces_b = cf.window_pieces(pb.start * DEG, pb.span * DEG, cycle.origin * DEG)
+        a0, b0 = pieces_a[0][0], pieces_b[0][0]
+        a1 = pieces_a[-1][0] + pieces_a[-1][1]
+        out.append((c.kind, (rows[c.a.actuator], a0, a1),
+                    (rows[c.b.actuator], b0, b0 + pieces_b[0][1]), chk.ok))
+    return out
+
+
+def make_cycle_figures(cycle: cy.CycleDiagram, fig_dir: Path, lang: str, checks=None,
+                       prefix: str = "cycle") -> dict[str, str]:
+    """The linear and the circular cycle diagrams: keys ``linear``, ``circular``."""
+    checks = cy.check_constraints(cycle) if checks is None else checks
+    rows = _phase_rows(cycle, lang)
+    states = _states_used(cycle, lang)
+    paths = {}
+    for name, draw in (("linear", lambda p: cf.linear(p, lang, rows, cycle.origin * DEG,
+                                                        _links(cycle, checks), states)),
+                       ("circular", lambda p: cf.circular(p, lang, rows, cycle.origin * DEG, states))):
+        draw(fig_dir / f"{prefix}_{name}.png")
+        paths[name] = f"{fig_dir.name}/{prefix}_{name}.png"
+    return paths
+
+
+def cycle_context(cycle: cy.CycleDiagram, lang: str, figs: dict[str, str], checks=None,
+                  level: int = 2, label: str = "cycle") -> dict:
+    """Strings and rows of ``cycle_section``: the phase table (degrees and seconds), the
+    period formula, the constraint checks with their slack, the verification rows."""
+    zh = lang == "zh"
+    h, h3 = _heads(level)
+    checks = cy.check_constraints(cycle) if checks is None else checks
+    T, rpm = cycle.period, cycle.speed_rpm
+    rows = []
+    for a in cycle.actuators:
+        for i, (ph, t0, dt) in enumerate(cycle.phase_times(a.key)):
+            end = np.mod(ph.end, cy.TWO_PI) * DEG
+            end = 360.0 if end < 1e-6 else end
+            rows.append([a.name(lang) if i == 0 else "", ph.name(lang),
+                         f"{_deg(ph.start)} – {f(end, 1)}", _deg(ph.span), f(t0, 3), f(dt, 3)])
+    ok_word, bad_word = _OK[lang]
+    check_rows, failed = [], []
+    for i, chk in enumerate(checks, 1):
+        text = constraint_text(cycle, chk.constraint, lang)
+        check_rows.append([str(i), text, _deg(chk.slack, 2), f(chk.slack / cycle.shaft_speed, 3),
+                           ok_word if chk.ok else f"**{bad_word}**"])
+        if not chk.ok:
+            failed.append(text)
+    spans = [abs(sum(p.span for p in a.phases) - cy.TWO_PI) for a in cycle.actuators]
+    durations = [abs(sum(dt for _, _, dt in cycle.phase_times(a.key)) - T) for a in cycle.actuators]
+    verify = [
+        [("各执行构件相位角之和 − 360°（最大）/°" if zh else
+          "sum of each actuator's phase angles − 360° (largest) /°"), e(max(spans) * DEG)],
+        [("各执行构件持续时间之和 − T（最大）/s" if zh else
+          "sum of each actuator's phase durations − T (largest) /s"), e(max(durations))],
+    ]
+    return {
+        "h": h, "h3": h3, "label": label,
+        "rpm": f(rpm, 2), "period": f(T, 3), "origin": _deg(cycle.origin, 1),
+        "eq_period": rf"T = \frac{{60}}{{n}} = \frac{{60}}{{{f(rpm, 2)}}} = {f(T, 3)}\ \text{{s}}",
+        "eq_duration": (r"t_i = \frac{\Delta\varphi_i}{360°}\,T = \frac{\Delta\varphi_i}{360°}"
+                        rf"\times {f(T, 3)}\ \text{{s}}"),
+        "rows": rows, "checks": check_rows, "failed": failed,
+        "all_ok": all(c.ok for c in checks), "fig": figs, "verify": verify,
+        "n_actuators": str(len(cycle.actuators)),
+    }
+
+
+# --------------------------------------------------------------------------- morphology
+
+
+def morphology_context(m, lang: str, level: int = 2, label: str = "morph") -> dict:
+    """Strings and rows of ``morphology_section`` for a
+    :class:`mechdesign.brief.components.Morphology`: the matrix (functions × options, the
+    chosen one bold), the count of schemes N = Π k_i as a formula, the chosen scheme."""
+    zh = lang == "zh"
+    h, h3 = _heads(level)
+    width = max(m.counts)
+    head = ["分功能" if zh else "function"] + [(f"方案 {j + 1}" if zh else f"option {j + 1}")
+                                             for j in range(width)]
+    align = "|:--|" + ":--|" * width
+    rows, chosen = [], []
+    for i, fn in enumerate(m.functions):
+        name = fn.name_zh if zh else fn.name_en
+        cells = []
+        for j in range(width):
+            if j >= len(fn.options):
+                cells.append("—")
+                continue
+            text = fn.options[j][0 if zh else 1]
+            cells.append(f"**{text}** ✓" if j == fn.chosen else text)
+        rows.append([f"{chr(ord('A') + i)}. {name}" if i < 26 else name] + cells)
+        chosen.append([f"{chr(ord('A') + i)}{fn.chosen + 1}" if i < 26 else str(fn.chosen + 1),
+                       name, fn.options[fn.chosen][0 if zh else 1]])
+    counts = m.counts
+    product = r" \times ".join(str(k) for k in counts)
+    if len(set(counts)) == 1 and len(counts) > 1:
+        eq = rf"N = {product} = {counts[0]}^{{{len(counts)}}} = {m.scheme_count}"
+    else:
+        eq = rf"N = \prod_i k_i = {product} = {m.scheme_count}"
+    code = " + ".join(c[0] for c in chosen)
+    reasons = m.reasons_zh if zh else m.reasons_en
+    return {"h": h, "h3": h3, "label": label, "head": head, "align": align, "rows": rows,
+            "eq_count": eq, "count": str(m.scheme_count), "n_functions": str(len(counts)),
+            "chosen": chosen, "code": code, "reasons": reasons}
+
+
+# --------------------------------------------------------------------------- incomplete gear
+
+
+def _driven_curves(g, n: int = 3600):
+    """Driver angle [rad] on a fine grid 0 … 2π with both one-sided values at the meshing
+    boundaries (so the velocity's jumps show as vertical steps), and the driven motion
+    read from θ = 0."""
+    theta = np.linspace(0.0, cy.TWO_PI, n + 1)
+    ends = np.mod([g.motion_start, g.motion_start + g.motion_angle], cy.TWO_PI)
+    eps = 1e-7          # well outside core.intermittent.BOUNDARY_TOL
+    extra = np.concatenate([ends - eps, ends + eps])
+    theta = np.sort(np.concatenate([theta, np.clip(extra, 0.0, cy.TWO_PI)]))
+    return theta, g.driven_motion(theta, since=0.0)
+
+
+def _motion_arcs_deg(g):
+    s = g.motion_start * DEG
+    e_ = s + g.motion_angle * DEG
+    return [(s, min(e_, 360.0))] + ([(0.0, e_ - 360.0)] if e_ > 360.0 else [])
+
+
+def make_intermittent_figures(g, fig_dir: Path, lang: str, prefix: str = "intermittent") -> dict[str, str]:
+    """The driven wheel's angle and velocity against the driver angle: key ``motion``."""
+    theta, dm = _driven_curves(g)
+    zh = lang == "zh"
+    jump = g.engagement_jump()
+    if dm.omega is not None:
+        vel = dm.omega
+        vel_label = r"从动轮角速度 $\omega_2$ (rad/s)" if zh else r"driven speed $\omega_2$ (rad/s)"
+        jump_text = rf"$\Delta\omega_2$ = {f(jump.omega2, 3)} rad/s"
+    else:
+        vel, vel_label = dm.ratio, r"$d\varphi_2/d\theta$"
+        jump_text = rf"$\Delta(d\varphi_2/d\theta)$ = {f(jump.omega2, 3)}"
+    path = fig_dir / f"{prefix}_motion.png"
+    cf.intermittent_motion(path, lang, theta * DEG, dm.angle * DEG, vel, vel_label,
+                           _motion_arcs_deg(g), jump_text,
+                           None if dm.travel is None else dm.travel * MM)
+    return {"motion": f"{fig_dir.name}/{prefix}_motion.png"}
+
+
+def intermittent_context(g, lang: str, figs: dict[str, str], level: int = 2,
+                         label: str = "intermittent") -> dict:
+    """Strings, rows and formulas (numbers substituted) of ``intermittent_section`` for a
+    :class:`mechdesign.core.intermittent.IncompleteGear`."""
+    zh = lang == "zh"
+    h, h3 = _heads(level)
+    m = g.module * MM
+    z1, z2, n = g.z1, g.z2, g.teeth
+    rows = []
+
+    def row(zh_name, en_name, sym, formula, value, unit):
+        rows.append([zh_name if zh else en_name, sym, formula, value, unit])
+
+    row("模数", "module", "$m$", "—", f(m, 2), "mm")
+    row("主动轮假想整齿数", "driver's notional full tooth count", "$z_1$", "—", str(z1), "—")
+    row("主动轮实有齿数", "teeth present on the driver", "$z_1'$", "—", str(n), "—")
+    row("从动轮齿数", "driven wheel teeth", "$z_2$", "—", str(z2), "—")
+    row("主动轮分度圆半径", "driver pitch radius", "$r_1$", f"$m z_1/2 = {f(m, 2)}\\times{z1}/2$",
+        f(g.r1 * MM, 2), "mm")
+    row("从动轮分度圆半径", "driven pitch radius", "$r_2$", f"$m z_2/2 = {f(m, 2)}\\times{z2}/2$",
+        f(g.r2 * MM, 2), "mm")
+    row("主动轮齿顶圆半径", "driver tip radius", "$r_{a1}$",
+        f"$r_1 + h_a^* m = {f(g.r1 * MM, 2)} + {f(g.ha_star, 2)}\\times{f(m, 2)}$", f(g.ra1 * MM, 2), "mm")
+    row("从动轮齿顶圆半径", "driven tip radius", "$r_{a2}$",
+        f"$r_2 + h_a^* m = {f(g.r2 * MM, 2)} + {f(g.ha_star, 2)}\\times{f(m, 2)}$", f(g.ra2 * MM, 2), "mm")
+    row("中心距", "centre distance", "$a$", f"$m(z_1 + z_2)/2 = {f(m, 2)}\\times({z1} + {z2})/2$",
+        f(g.centre_distance * MM, 2), "mm")
+    row("锁止弧半径", "locking-arc radius", "$R_L$", "$R_L = r_{a1}$", f(g.locking_radius * MM, 2), "mm")
+    row("主动轮运动角", "driver's motion angle", "$\\varphi_m$",
+        f"$360°\\,z_1'/z_1 = 360°\\times{n}/{z1}$", _deg(g.motion_angle, 2), "°")
+    row("主动轮停歇角", "dwell angle", "$\\varphi_d$", "$360° - \\varphi_m$", _deg(g.dwell_angle, 2), "°")
+    row("从动轮每次转角", "driven advance per cycle", "$\\Delta\\varphi_2$",
+        f"$360°\\,z_1'/z_2 = 360°\\times{n}/{z2}$", _deg(g.advance, 2), "°")
+    if g.feed is not None:
+        row("链轮分度圆半径", "sprocket pitch radius", "$R_s$", "—", f(g.sprocket_radius * MM, 2), "mm")
+        row("每次送进量", "feed per cycle", "$L$",
+            f"$R_s\\,\\Delta\\varphi_2 = {f(g.sprocket_radius * MM, 2)}\\times{f(g.advance, 4)}$",
+            f(g.feed * MM, 2), "mm")
+    row("啮合时传动比", "ratio while meshing", "$i_{12}$", f"$z_2/z_1 = {z2}/{z1}$", f(z2 / z1, 4), "—")
+    row("动停比", "motion/dwell ratio", "$k$", "$\\varphi_m/\\varphi_d$", f(g.motion_dwell_ratio, 4), "—")
+    row("运动系数", "kinematic coefficient", "$\\tau$", "$t_m/T = \\varphi_m/360°$", f(g.tau, 4), "—")
+    if g.stations is not None:
+        row("从动轮每转停歇次数", "dwells per driven revolution", "$z_2/z_1'$", f"${z2}/{n}$",
+            str(g.stations), "—")
+    times = g.times()
+    if times is not None:
+        T, tm, td = times
+        rpm = g.driver_speed * 60 / cy.TWO_PI
+        row("循环时间", "cycle time", "$T$", f"$60/n_1 = 60/{f(rpm, 2)}$", f(T, 3), "s")
+        row("运动时间", "motion time", "$t_m$", "$\\tau T$", f(tm, 3), "s")
+        row("停歇时间", "dwell time", "$t_d$", "$T - t_m$", f(td, 3), "s")
+    jump = g.engagement_jump()
+    per_rad = g.driver_speed is None
+    if per_rad:
+        row("啮合开始时 dφ₂/dθ 的突变", "jump of dφ₂/dθ at engagement", "$\\Delta(d\\varphi_2/d\\theta)$",
+            f"$z_1/z_2 = {z1}/{z2}$", f(jump.omega2, 4), "—")
+    else:
+        row("啮合开始时从动轮角速度突变", "jump of the driven speed at engagement", "$\\Delta\\omega_2$",
+            f"$\\omega_1 z_1/z_2 = {f(g.driver_speed, 4)}\\times{z1}/{z2}$", f(jump.omega2, 4), "rad/s")
+        row("分度圆圆周速度突变", "jump of the pitch-line speed", "$\\Delta v$",
+            "$\\omega_1 r_1$", f(jump.pitch_speed * MM, 2), "mm/s")
+        if jump.chain_speed is not None:
+            row("链速突变", "jump of the chain speed", "$\\Delta v_c$", "$R_s\\,\\Delta\\omega_2$",
+                f(jump.chain_speed * MM, 2), "mm/s")
+
+    eqs = {
+        "motion": (rf"\varphi_m = \frac{{360°\,z_1'}}{{z_1}} = \frac{{360° \times {n}}}{{{z1}}} = "
+                   rf"{_deg(g.motion_angle, 2)}°,\qquad \varphi_d = 360° - \varphi_m = {_deg(g.dwell_angle, 2)}°"),
+        "advance": (rf"\Delta\varphi_2 = \frac{{360°\,z_1'}}{{z_2}} = \frac{{360° \times {n}}}{{{z2}}} = "
+                    rf"{_deg(g.advance, 2)}°"
+                    + (rf",\qquad L = R_s\,\Delta\varphi_2 = {f(g.sprocket_radius * MM, 2)} \times "
+                       rf"{f(g.advance, 4)} = {f(g.feed * MM, 2)}\ \text{{mm}}" if g.feed is not None else "")),
+        "ratios": (rf"k = \frac{{t_m}}{{t_d}} = \frac{{\varphi_m}}{{\varphi_d}} = \frac{{{_deg(g.motion_angle, 2)}}}"
+                   rf"{{{_deg(g.dwell_angle, 2)}}} = {f(g.motion_dwell_ratio, 4)},\qquad "
+                   rf"\tau = \frac{{t_m}}{{T}} = \frac{{\varphi_m}}{{360°}} = {f(g.tau, 4)}"),
+        "centre": (rf"a = \frac{{m (z_1 + z_2)}}{{2}} = \frac{{{f(m, 2)} \times ({z1} + {z2})}}{{2}} = "
+                   rf"{f(g.centre_distance * MM, 2)}\ \text{{mm}}"),
+        "jump": ((rf"\Delta\left(\frac{{d\varphi_2}}{{d\theta}}\right) = \frac{{z_1}}{{z_2}} = "
+                  rf"\frac{{{z1}}}{{{z2}}} = {f(jump.omega2, 4)}") if per_rad else
+                 (rf"\Delta\omega_2 = \omega_1 \frac{{z_1}}{{z_2}} = {f(g.driver_speed, 4)} \times "
+                  rf"\frac{{{z1}}}{{{z2}}} = {f(jump.omega2, 4)}\ \text{{rad/s}}")),
+    }
+    required = []
+    if g.requested_motion_angle is not None:
+        required.append([("主动轮运动角" if zh else "driver's motion angle"),
+                         _deg(g.requested_motion_angle, 2) + "°", _deg(g.motion_angle, 2) + "°",
+                         e((g.motion_angle - g.requested_motion_angle) * DEG)])
+    if g.requested_advance is not None:
+        if g.sprocket_radius is not None and g.feed is not None:
+            required.append([("每次送进量" if zh else "feed per cycle"),
+                             f(g.requested_advance * g.sprocket_radius * MM, 2) + " mm",
+                             f(g.feed * MM, 2) + " mm",
+                             e((g.advance - g.requested_advance) * g.sprocket_radius * MM)])
+        else:
+            required.append([("从动轮每次转角" if zh else "driven advance per cycle"),
+                             _deg(g.requested_advance, 2) + "°", _deg(g.advance, 2) + "°",
+                             e((g.advance - g.requested_advance) * DEG)])
+
+    # Verification: equal pitch arcs rolled on both wheels, and the simulated motion.
+    theta, dm = _driven_curves(g)
+    rate = dm.ratio
+    integral = float(np.sum(0.5 * (rate[1:] + rate[:-1]) * np.diff(theta)))
+    dwell = ~dm.moving
+    arc = n * np.pi * g.module
+    verify = [
+        [("主动轮分度圆滚过弧长 $r_1\\varphi_m - z_1'\\pi m$ /mm" if zh else
+          "pitch arc rolled by the driver $r_1\\varphi_m - z_1'\\pi m$ /mm"),
+         e((g.r1 * g.motion_angle - arc) * MM)],
+        [("从动轮分度圆滚过弧长 $r_2\\Delta\\varphi_2 - z_1'\\pi m$ /mm" if zh else
+          "pitch arc rolled by the driven wheel $r_2\\Delta\\varphi_2 - z_1'\\pi m$ /mm"),
+         e((g.r2 * g.advance - arc) * MM)],
+        [("仿真：$\\int_0^{2\\pi} (d\\varphi_2/d\\theta)\\,d\\theta - \\Delta\\varphi_2$ /°" if zh else
+          "simulation: $\\int_0^{2\\pi} (d\\varphi_2/d\\theta)\\,d\\theta - \\Delta\\varphi_2$ /°"),
+         e((integral - g.advance) * DEG)],
+        [("仿真：停歇区内从动轮最大转速 /(rad/s)" if zh else
+          "simulation: largest driven speed in the dwell /(rad/s)"),
+         e(float(np.max(np.abs((dm.omega if dm.omega is not None else dm.ratio)[dwell]), initial=0.0)))],
+    ]
+    return {"h": h, "h3": h3, "label": label, "rows": rows, "eq": eqs, "required": required,
+            "fig": figs, "notes": [note.zh if zh else note.en for note in g.notes],
+            "verify": verify, "z1": str(z1), "z2": str(z2), "teeth": str(n),
+            "motion_start": _deg(g.motion_start, 1),
+            "motion_end": f(np.mod(g.motion_start + g.motion_angle, cy.TWO_PI) * DEG, 1),
+            "per_radian": per_rad}
