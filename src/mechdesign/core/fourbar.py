@@ -53,33 +53,6 @@ class FourBar:
                        self.rocker * factor, self.frame * factor)
 
 
-@dataclass(frozen=True)
-class CircleConstruction:
-    """The θ-circle construction of a crank-rocker, D at the origin [m] (complex points)."""
-
-    c1: complex            # rocker tip at the folded extreme (AC1 = b − a)
-    c2: complex            # rocker tip at the extended extreme (AC2 = b + a)
-    centre: complex        # centre O of the θ-circle
-    radius: float          # R = C1C2 / (2 sin θ)
-    theta: float           # extreme-position angle θ [rad]
-    swing: float           # rocker swing ψ [rad]
-    side: int              # +1 textbook circle (centre on D's side of the chord), −1 mirror
-    t_lo: float            # allowed arc: t_lo < t < t_hi
-    t_hi: float
-
-    def point(self, t):
-        """Point(s) A(t) of the circle (complex), t [rad] scalar or array."""
-        t = np.asarray(t, dtype=float)
-        n = -1j * self.side          # unit normal towards the major arc (as a complex number)
-        return self.centre + self.radius * (np.sin(t) + n * np.cos(t))
-
-    def position_of(self, a: complex) -> float:
-        """Parameter t of a point A on the circle."""
-        r = (a - self.centre) / self.radius
-        n = -1j * self.side
-        return float(np.arctan2(r.real, (np.conj(n) * r).real))
-
-
 # ----------------------------------------------------------------------------- checks
 
 def grashof(fb: FourBar) -> tuple[bool, str]:
@@ -160,51 +133,124 @@ def crank_rocker_extremes(fb: FourBar) -> tuple[float, float]:
 
 # ------------------------------------------------------------------ θ-circle synthesis
 
-def _check_data(K: float, swing: float, rocker: float) -> None:
-    if not np.isfinite(K) or K <= 1.0:
-        raise SynthesisError(f"time ratio K = {K} must be > 1 (K = 1 gives θ = 0: "
-                             "A on the line C1C2, no quick return to design)")
-    if extreme_angle(K) >= np.pi / 2.0:
-        raise SynthesisError(f"time ratio K = {K} gives θ ≥ 90°; use K < 3")
-    if not (0.0 < swing < np.pi):
-        raise SynthesisError(f"rocker swing ψ = {np.degrees(swing):.4g}° must be in (0°, 180°)")
-    if not rocker > 0.0:
+@dataclass(frozen=True)
+class CircleConstruction:
+    """The θ-circle construction of a crank-rocker, D at the origin [m] (complex points).
+
+    ``point(p)`` gives the crank pivot A for the arc parameter p; the allowed arc is
+    p_lo < p < p_hi. For θ > 0, p = t, the angle at the circle's centre O measured from
+    the arc's point farthest from the chord towards C1 (C1 at t = π − θ). For θ = 0 the
+    circle degenerates into the line C1C2 and A = C1 + w·tan(p)·x̂, 0 < p < π/2.
+    """
+
+    c1: complex            # rocker tip at the folded extreme (AC1 = b − a)
+    c2: complex            # rocker tip at the extended extreme (AC2 = b + a)
+    centre: complex | None  # centre O of the θ-circle (None for θ = 0)
+    radius: float          # R = C1C2 / (2 sin θ) (inf for θ = 0)
+    theta: float           # extreme-position angle θ [rad]
+    swing: float           # rocker swing ψ [rad]
+    side: int              # +1 textbook circle (centre on D's side of the chord), −1 mirror
+    p_lo: float            # allowed arc: p_lo < p < p_hi
+    p_hi: float
+
+    @property
+    def rocker(self) -> float:
+        return abs(self.c1)
+
+    def point(self, p):
+        """Crank pivot(s) A(p) (complex), p [rad] scalar or array."""
+        p = np.asarray(p, dtype=float)
+        if self.centre is None:
+            return self.c1 + self.c1.real * np.tan(p)
+        n = -1j * self.side          # unit normal towards the major arc (as a complex number)
+        return self.centre + self.radius * (np.sin(p) + n * np.cos(p))
+
+    def position_of(self, a: complex) -> float:
+        """Parameter p of a point A of the construction."""
+        if self.centre is None:
+            return float(np.arctan2((a - self.c1).real, self.c1.real))
+        r = (a - self.centre) / self.radius
+        n = -1j * self.side
+        return float(np.arctan2(r.real, (np.conj(n) * r).real))
+
+    def designs(self, p) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """(a, b, d) [m] of the designs at the parameters p (vectorised)."""
+        a_pt = self.point(p)
+        ac1, ac2 = np.abs(a_pt - self.c1), np.abs(a_pt - self.c2)
+        return (ac2 - ac1) / 2.0, (ac2 + ac1) / 2.0, np.abs(a_pt)
+
+    def gamma_min(self, p) -> np.ndarray:
+        """γ_min [rad] of the designs at the parameters p (vectorised; 0 off the arc)."""
+        p = np.asarray(p, dtype=float)
+        a, b, d = self.designs(p)
+        c = self.rocker
+        with np.errstate(invalid="ignore", divide="ignore"):
+            cos1 = np.clip((b * b + c * c - (d - a) ** 2) / (2.0 * b * c), -1.0, 1.0)
+            cos2 = np.clip((b * b + c * c - (d + a) ** 2) / (2.0 * b * c), -1.0, 1.0)
+        d1, d2 = np.arccos(cos1), np.arccos(cos2)
+        g = np.minimum(np.minimum(d1, np.pi - d1), np.minimum(d2, np.pi - d2))
+        inside = (p > self.p_lo) & (p < self.p_hi) & np.isfinite(g)
+        return np.where(inside, g, 0.0)
+
+
+def _check_data(theta: float, swing: float, rocker: float) -> None:
+    if not (np.isfinite(theta) and 0.0 <= theta < np.pi / 2.0):
+        raise SynthesisError(f"extreme-position angle θ = {np.degrees(theta):.6g}° must be in "
+                             "[0°, 90°) (time ratio 1 ≤ K < 3)")
+    if not (np.isfinite(swing) and 0.0 < swing < np.pi):
+        raise SynthesisError(f"rocker swing ψ = {np.degrees(swing):.6g}° must be in (0°, 180°)")
+    if not (np.isfinite(rocker) and rocker > 0.0):
         raise SynthesisError(f"rocker length {rocker} must be positive")
 
 
-def circle_construction(K: float, swing: float, rocker: float, *, side: int = +1
-                        ) -> CircleConstruction:
+def _theta_of(K: float) -> float:
+    if not np.isfinite(K) or K < 1.0:
+        raise SynthesisError(f"time ratio K = {K} must be ≥ 1")
+    if K >= 3.0:
+        raise SynthesisError(f"time ratio K = {K} gives θ ≥ 90°; a crank-rocker needs K < 3")
+    return float(extreme_angle(K))
+
+
+def circle_construction_theta(theta: float, swing: float, rocker: float, *, side: int = +1
+                              ) -> CircleConstruction:
     """The θ-circle through the rocker's extremes C1, C2 and the allowed arc for A."""
-    _check_data(K, swing, rocker)
+    _check_data(theta, swing, rocker)
     if side not in (+1, -1):
         raise ValueError(f"side must be +1 or -1, got {side}")
-    theta = extreme_angle(K)
     w, h = rocker * np.sin(swing / 2.0), rocker * np.cos(swing / 2.0)
     c1, c2 = complex(w, h), complex(-w, h)
+    if theta == 0.0:
+        # A on the line C1C2 beyond C1: the line AD never separates C1 and C2
+        return CircleConstruction(c1, c2, None, float("inf"), 0.0, swing, side, 0.0, np.pi / 2.0)
     radius = w / np.sin(theta)
     n = -1j * side
     centre = complex(0.0, h) + n * radius * np.cos(theta)
-    t_hi = np.pi - theta
+    p_hi = np.pi - theta
     # the lines D–C1 and D–C2 meet the circle a second time at s·u with
     # s·c = |O|² − R² (power of D); those points bound the arc where AD separates C1, C2
     power = abs(centre) ** 2 - radius ** 2
-    proto = CircleConstruction(c1, c2, centre, radius, theta, swing, side, 0.0, t_hi)
-    t_lo = 0.0
+    proto = CircleConstruction(c1, c2, centre, radius, theta, swing, side, 0.0, p_hi)
+    p_lo = 0.0
     for tip in (c1, c2):
         other = tip / abs(tip) * power / rocker
         if abs(other - tip) < 1e-12 * rocker:       # tangent: no second point
             continue
         t = proto.position_of(other)
-        if 0.0 < t < t_hi - 1e-12:
-            t_lo = max(t_lo, t)
-    cons = CircleConstruction(c1, c2, centre, radius, theta, swing, side, t_lo, t_hi)
-    # the arc must really be valid: probe its middle
-    mid = cons.point(0.5 * (t_lo + t_hi))
-    if not _same_branch(complex(mid), c1, c2):
+        if 0.0 < t < p_hi - 1e-12:
+            p_lo = max(p_lo, t)
+    cons = CircleConstruction(c1, c2, centre, radius, theta, swing, side, p_lo, p_hi)
+    mid = complex(cons.point(0.5 * (p_lo + p_hi)))
+    if not _same_branch(mid, c1, c2):
         raise SynthesisError(
-            f"no crank-rocker on this θ-circle (side {side}) for K = {K}, "
-            f"ψ = {np.degrees(swing):.4g}°: the line AD separates C1 and C2 everywhere")
+            f"no crank-rocker on this θ-circle (side {side}) for θ = {np.degrees(theta):.6g}°, "
+            f"ψ = {np.degrees(swing):.6g}°: the line AD separates C1 and C2 everywhere")
     return cons
+
+
+def circle_construction(K: float, swing: float, rocker: float, *, side: int = +1
+                        ) -> CircleConstruction:
+    """:func:`circle_construction_theta` for the time ratio K."""
+    return circle_construction_theta(_theta_of(K), swing, rocker, side=side)
 
 
 def _same_branch(a: complex, c1: complex, c2: complex) -> bool:
@@ -214,110 +260,131 @@ def _same_branch(a: complex, c1: complex, c2: complex) -> bool:
     return bool(s1 * s2 > 0.0)
 
 
-def _design_at(cons: CircleConstruction, a_pt: complex) -> FourBar:
-    ac1, ac2 = abs(a_pt - cons.c1), abs(a_pt - cons.c2)
-    return FourBar(crank=(ac2 - ac1) / 2.0, coupler=(ac2 + ac1) / 2.0,
-                   rocker=abs(cons.c1), frame=abs(a_pt))
+def _design_at(cons: CircleConstruction, p: float) -> FourBar:
+    a, b, d = cons.designs(p)
+    return FourBar(crank=float(a), coupler=float(b), rocker=cons.rocker, frame=float(d))
+
+
+def design_at(cons: CircleConstruction, position: float) -> FourBar:
+    """The crank-rocker with A at the arc parameter ``position`` of ``cons`` (no range check)."""
+    return _design_at(cons, position)
 
 
 def crank_rocker_on_circle(K: float, swing: float, rocker: float, position: float,
                            *, side: int = +1) -> FourBar:
-    """Crank-rocker with A at parameter ``position`` = t [rad] on the θ-circle.
+    """Crank-rocker with A at the arc parameter ``position`` (see CircleConstruction).
 
-    Raises SynthesisError when t is outside the allowed arc t_lo < t < π − θ.
+    Raises SynthesisError when the position is outside the allowed arc.
     """
     cons = circle_construction(K, swing, rocker, side=side)
-    if not (cons.t_lo < position < cons.t_hi):
+    if not (cons.p_lo < position < cons.p_hi):
         raise SynthesisError(
-            f"position t = {np.degrees(position):.6g}° is outside the allowed arc "
-            f"({np.degrees(cons.t_lo):.6g}°, {np.degrees(cons.t_hi):.6g}°)")
-    return _design_at(cons, complex(cons.point(position)))
+            f"position {np.degrees(position):.6g}° is outside the allowed arc "
+            f"({np.degrees(cons.p_lo):.6g}°, {np.degrees(cons.p_hi):.6g}°)")
+    return _design_at(cons, position)
+
+
+def frame_range_theta(theta: float, swing: float, rocker: float, *, side: int = +1
+                      ) -> tuple[float, float]:
+    """(smallest, largest) frame AD [m] on the allowed arc (open interval; may be inf)."""
+    cons = circle_construction_theta(theta, swing, rocker, side=side)
+    if cons.centre is None:
+        return rocker, float("inf")
+    ends = [abs(complex(cons.point(cons.p_lo))), abs(complex(cons.point(cons.p_hi)))]
+    return min(ends), max(ends)
 
 
 def frame_range(K: float, swing: float, rocker: float, *, side: int = +1) -> tuple[float, float]:
-    """(smallest, largest) frame AD [m] reachable on the allowed arc (open interval)."""
-    cons = circle_construction(K, swing, rocker, side=side)
-    ends = [abs(complex(cons.point(cons.t_lo))), abs(complex(cons.point(cons.t_hi)))]
-    return min(ends), max(ends)
+    """:func:`frame_range_theta` for the time ratio K."""
+    return frame_range_theta(_theta_of(K), swing, rocker, side=side)
+
+
+def position_for_frame(cons: CircleConstruction, frame: float) -> float:
+    """Arc parameter p of the A with |AD| = frame. |A(t)|² = |O|² + R² + 2R·(O·n̂)·cos t is
+    monotonic in t on (0, π), so there is at most one such A on the arc.
+    Raises SynthesisError naming the frame range that works."""
+    if not (np.isfinite(frame) and frame > 0.0):
+        raise SynthesisError(f"frame length {frame} must be positive")
+    c = cons.rocker
+    p = None
+    if cons.centre is None:
+        if frame > c:
+            x = np.sqrt(frame ** 2 - cons.c1.imag ** 2)
+            p = float(np.arctan((x - cons.c1.real) / cons.c1.real))
+        lo, hi = c, float("inf")
+    else:
+        n = -1j * cons.side
+        on = (np.conj(n) * cons.centre).real              # O·n̂
+        if abs(on) < 1e-15 * c:
+            raise SynthesisError("the θ-circle is centred on D: every A has the same frame "
+                                 "length, so the frame does not fix the design")
+        big = abs(cons.centre) ** 2 + cons.radius ** 2
+        cos_t = (frame ** 2 - big) / (2.0 * cons.radius * on)
+        if abs(cos_t) <= 1.0:
+            p = float(np.arccos(cos_t))
+        ends = [abs(complex(cons.point(cons.p_lo))), abs(complex(cons.point(cons.p_hi)))]
+        lo, hi = min(ends), max(ends)
+    if p is None or not (cons.p_lo < p < cons.p_hi):
+        top = "∞" if not np.isfinite(hi) else f"{hi * 1e3:.6g}"
+        raise SynthesisError(
+            f"frame length {frame * 1e3:.6g} mm cannot be met: with θ = "
+            f"{np.degrees(cons.theta):.6g}°, ψ = {np.degrees(cons.swing):.6g}° and rocker "
+            f"{c * 1e3:.6g} mm the crank pivot on the allowed arc gives frames between "
+            f"{lo * 1e3:.6g} and {top} mm (exclusive)")
+    return p
 
 
 def crank_rocker_from_K(K: float, swing: float, rocker: float, frame: float, *,
                         side: int = +1) -> FourBar:
-    """Textbook design: A where the circle |AD| = frame cuts the allowed arc of the θ-circle.
-
-    |A(t)|² = |O|² + R² + 2R·(O·n̂)·cos t is monotonic in t on (0, π), so there is at most
-    one such A on the arc. Raises SynthesisError naming the frame range that works.
-    """
+    """Textbook design: A where the circle |AD| = frame cuts the allowed arc of the θ-circle;
+    a = (AC2 − AC1)/2, b = (AC2 + AC1)/2. Raises SynthesisError naming the frame range
+    that works."""
     cons = circle_construction(K, swing, rocker, side=side)
-    if not frame > 0.0:
-        raise SynthesisError(f"frame length {frame} must be positive")
-    n = -1j * cons.side
-    on = (np.conj(n) * cons.centre).real              # O·n̂
-    big = abs(cons.centre) ** 2 + cons.radius ** 2
-    lo, hi = frame_range(K, swing, rocker, side=side)
-    if abs(on) < 1e-15 * rocker:
-        raise SynthesisError("the θ-circle is centred on D: every A has the same frame "
-                             "length, so the frame does not fix the design")
-    cos_t = (frame ** 2 - big) / (2.0 * cons.radius * on)
-    if abs(cos_t) > 1.0:
-        t = None
-    else:
-        t = float(np.arccos(cos_t))
-    if t is None or not (cons.t_lo < t < cons.t_hi):
-        raise SynthesisError(
-            f"frame length {frame * 1e3:.6g} mm cannot be met: with K = {K:.6g}, "
-            f"ψ = {np.degrees(swing):.6g}° and rocker {rocker * 1e3:.6g} mm the crank pivot "
-            f"on the allowed arc gives frames between {lo * 1e3:.6g} and {hi * 1e3:.6g} mm "
-            "(exclusive)")
-    return _design_at(cons, complex(cons.point(t)))
+    return _design_at(cons, position_for_frame(cons, frame))
 
 
 def gamma_min_on_arc(K: float, swing: float, rocker: float, positions, *, side: int = +1
                      ) -> np.ndarray:
-    """γ_min [rad] of the designs at the positions t (array; vectorised)."""
-    cons = circle_construction(K, swing, rocker, side=side)
-    t = np.asarray(positions, dtype=float)
-    a_pt = cons.point(t)
-    ac1, ac2 = np.abs(a_pt - cons.c1), np.abs(a_pt - cons.c2)
-    a, b = (ac2 - ac1) / 2.0, (ac2 + ac1) / 2.0
-    c, d = rocker, np.abs(a_pt)
-    cos1 = np.clip((b * b + c * c - (d - a) ** 2) / (2.0 * b * c), -1.0, 1.0)
-    cos2 = np.clip((b * b + c * c - (d + a) ** 2) / (2.0 * b * c), -1.0, 1.0)
-    d1, d2 = np.arccos(cos1), np.arccos(cos2)
-    g = np.minimum(np.minimum(d1, np.pi - d1), np.minimum(d2, np.pi - d2))
-    inside = (t > cons.t_lo) & (t < cons.t_hi)
-    return np.where(inside, g, 0.0)
+    """γ_min [rad] of the designs at the arc parameters ``positions`` (vectorised)."""
+    return circle_construction(K, swing, rocker, side=side).gamma_min(positions)
+
+
+def optimal_position_theta(theta: float, swing: float, rocker: float = 1.0, *,
+                           side: int = +1, grid: int = 721) -> tuple[float, float]:
+    """(p*, γ_min*) maximising γ_min over the allowed arc: grid pre-scan, then a bounded
+    Brent search (scipy ``minimize_scalar(method='bounded')``) between the grid
+    neighbours of the best grid point."""
+    cons = circle_construction_theta(theta, swing, rocker, side=side)
+    span = cons.p_hi - cons.p_lo
+    ps = cons.p_lo + span * (np.arange(1, grid + 1) / (grid + 1))
+    gs = cons.gamma_min(ps)
+    k = int(np.argmax(gs))
+    lo = ps[k - 1] if k > 0 else cons.p_lo + 1e-12 * span
+    hi = ps[k + 1] if k + 1 < len(ps) else cons.p_hi - 1e-12 * span
+
+    def neg(p):
+        return -float(cons.gamma_min(p))
+    res = minimize_scalar(neg, bounds=(lo, hi), method="bounded",
+                          options={"xatol": 1e-13 * max(1.0, span)})
+    p_best, g_best = float(res.x), -float(res.fun)
+    if gs[k] > g_best:            # never worse than the grid
+        p_best, g_best = float(ps[k]), float(gs[k])
+    return p_best, g_best
 
 
 def optimal_position(K: float, swing: float, rocker: float = 1.0, *, side: int = +1,
                      grid: int = 721) -> tuple[float, float]:
-    """(t*, γ_min*) maximising γ_min over the allowed arc: grid pre-scan, then a bounded
-    Brent search (scipy ``minimize_scalar(method='bounded')``) between the grid
-    neighbours of the best grid point."""
-    cons = circle_construction(K, swing, rocker, side=side)
-    span = cons.t_hi - cons.t_lo
-    ts = cons.t_lo + span * (np.arange(1, grid + 1) / (grid + 1))
-    gs = gamma_min_on_arc(K, swing, rocker, ts, side=side)
-    k = int(np.argmax(gs))
-    lo = ts[k - 1] if k > 0 else cons.t_lo + 1e-12 * span
-    hi = ts[k + 1] if k + 1 < len(ts) else cons.t_hi - 1e-12 * span
-
-    def neg(t):
-        return -float(gamma_min_on_arc(K, swing, rocker, t, side=side))
-    res = minimize_scalar(neg, bounds=(lo, hi), method="bounded",
-                          options={"xatol": 1e-13 * max(1.0, span)})
-    t_best, g_best = float(res.x), -float(res.fun)
-    if gs[k] > g_best:            # never worse than the grid
-        t_best, g_best = float(ts[k]), float(gs[k])
-    return t_best, g_best
+    """:func:`optimal_position_theta` for the time ratio K."""
+    return optimal_position_theta(_theta_of(K), swing, rocker, side=side, grid=grid)
 
 
 def optimal_crank_rocker(K: float, swing: float, rocker: float, *, side: int = +1
                          ) -> tuple[FourBar, float]:
     """(design, γ_min [rad]) of the crank-rocker with the largest minimum transmission
     angle for the given K, ψ and rocker length (A searched over the allowed arc)."""
-    t, g = optimal_position(K, swing, rocker, side=side)
-    return crank_rocker_on_circle(K, swing, rocker, t, side=side), g
+    cons = circle_construction(K, swing, rocker, side=side)
+    p, g = optimal_position(K, swing, rocker, side=side)
+    return _design_at(cons, p), g
 
 
 # -------------------------------------------------------------- offset slider-crank
@@ -390,3 +457,19 @@ def slider_crank_pressure_angle_max(crank: float, rod: float, offset: float) -> 
             f"crank + offset = {(a + e) * 1e3:.6g} mm ≥ rod {b * 1e3:.6g} mm: "
             "the crank cannot turn fully (lengthen the rod)")
     return float(np.arcsin((a + e) / b))
+
+
+def slider_crank_pressure_angles(crank: float, rod: float, offset: float) -> tuple[float, float]:
+    """(α_max in the slow stroke, α_max in the fast stroke) [rad] of an offset slider-crank.
+
+    With the guide at distance e from A, the slider's distance from the guide's foot of A
+    grows during the slow stroke (180° + θ), which carries the crank through the position
+    pointing at the guide: there |a sin φ + e| stays between e − a and the folded value, so
+    α_slow = max(arcsin(e/(b − a)), arcsin(|a − e|/b)). The fast stroke carries the crank
+    through the position pointing away from the guide: α_fast = arcsin((a + e)/b), the
+    largest of the revolution. Giving the slow stroke the work keeps its pressure angle small.
+    """
+    a, b, e = crank, rod, abs(offset)
+    fast = slider_crank_pressure_angle_max(a, b, e)
+    slow = max(np.arcsin(e / (b - a)), np.arcsin(abs(a - e) / b))
+    return float(slow), float(fast)

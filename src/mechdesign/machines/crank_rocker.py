@@ -1,0 +1,457 @@
+"""Crank-rocker synthesis machine (``machine: crank_rocker``, seed 001a).
+
+Stages: the crank-rocker with the largest minimum transmission angle for K, ψ and the
+rocker length (crank pivot searched over the allowed arc of the θ-circle); the textbook
+design with a given frame; the offset slider-crank from K, H and e; the design chart
+(optimum l3/l4 and γmin against ψ, one curve per θ); and the verification, which
+simulates every design with :mod:`mechdesign.core.mechanism` (crank + RRR or RRP group)
+and measures K, ψ (or the stroke) and γmin from the simulated motion.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+from scipy.optimize import brentq, minimize_scalar
+
+from ..core import fourbar as fb
+from ..core.mechanism import RRP, RRR, Crank, Mechanism
+from ..pipeline import Stage
+from .findings import Finding
+
+DEG = 180.0 / np.pi
+
+
+# ------------------------------------------------------------------------------ results
+
+@dataclass(frozen=True)
+class Design:
+    """A crank-rocker placed in the construction's coordinates (D at the origin) [m]."""
+
+    label: str
+    design: fb.FourBar
+    a_pivot: complex               # crank pivot A
+    position: float | None         # arc parameter of A (None for a compared design)
+    gamma_min: float               # closed form [rad]
+    gamma_max: float
+    theta: float                   # closed-form θ, ψ [rad]
+    swing: float
+    grashof: str
+    warnings: list[Finding]
+
+
+@dataclass(frozen=True)
+class OptimumResult:
+    construction: fb.CircleConstruction
+    best: Design
+    far_side_gamma: float | None    # best γmin on the mirror circle (A beyond the chord) [rad]
+    warnings: list[Finding]
+
+
+@dataclass(frozen=True)
+class SliderResult:
+    construction: fb.SliderConstruction
+    crank: float
+    rod: float
+    offset: float
+    stroke: float
+    K: float
+    theta: float
+    alpha_slow: float               # closed form [rad]
+    alpha_fast: float
+    alpha_allowed: float
+    warnings: list[Finding]
+
+
+@dataclass(frozen=True)
+class ChartResult:
+    thetas: tuple[float, ...]       # [rad]
+    swings: np.ndarray              # [rad]
+    ratio: np.ndarray               # l3/l4 at the optimum, shape (len(thetas), len(swings))
+    gamma: np.ndarray               # γmin at the optimum [rad]
+
+
+@dataclass(frozen=True)
+class Simulation:
+    """A design simulated over one revolution of the crank."""
+
+    label: str
+    phi: np.ndarray                 # crank angle from the frame line A→D [rad] (grid)
+    rocker_angle: np.ndarray        # [rad], relative to the mean of the extremes
+    omega4: np.ndarray              # [rad/s]
+    alpha4: np.ndarray              # [rad/s²]
+    gamma: np.ndarray               # transmission angle [rad]
+    phi_extremes: tuple[float, float]   # crank angles of the rocker's extremes [rad]
+    swing: float                    # simulated ψ [rad]
+    theta: float                    # simulated θ [rad]
+    K: float
+    gamma_min: float                # simulated [rad]
+    phi_gamma_min: float
+    closure: float                  # largest |loop closure| residual [m]
+    points: dict                    # positions at the two extremes (complex) for drawing
+
+
+@dataclass(frozen=True)
+class SliderSimulation:
+    phi: np.ndarray
+    s: np.ndarray                   # slider position along the guide [m]
+    alpha: np.ndarray               # pressure angle [rad]
+    slow: np.ndarray                # mask: grid points in the slow stroke
+    stroke: float
+    theta: float
+    K: float
+    alpha_slow: float
+    alpha_fast: float
+    closure: float
+
+
+@dataclass(frozen=True)
+class VerifyResult:
+    sims: list[Simulation]          # optimum first, then textbook, then the compared designs
+    slider: SliderSimulation | None
+    optimum_neighbours: tuple[float, float]   # γmin at p* ∓ 1e-3·span [rad]
+    optimum_scan: float             # largest γmin on a dense scan of the arc [rad]
+
+
+# ------------------------------------------------------------------------------- stages
+
+def _place(label: str, cons: fb.CircleConstruction, p: float, gamma_allowed: float) -> Design:
+    design = fb.design_at(cons, p)
+    return _describe(label, design, complex(cons.point(p)), p, gamma_allowed)
+
+
+def _describe(label, design, a_pivot, p, gamma_allowed) -> Design:
+    ok, kind = fb.grashof(design)
+    gmin, gmax = fb.transmission_angle_extremes(design)
+    theta, swing = fb.crank_rocker_extremes(design) if ok and kind == "crank-rocker" else (np.nan, np.nan)
+    warnings = []
+    zh, en = label.split(" / ", 1) if " / " in label else (label, label)
+    if not (ok and kind == "crank-rocker"):
+        warnings.append(Finding(
+            "grashof", f"{zh}：杆长不满足曲柄存在条件（{kind}），曲柄不能整周转动。",
+            f"{en}: the lengths fail Grashof's crank condition ({kind}); the crank cannot turn fully."))
+    if gmin < gamma_allowed:
+        warnings.append(Finding(
+            "transmission_angle",
+            f"{zh}：最小传动角 γmin = {gmin * DEG:.2f}° 小于许用值 [γ] = {gamma_allowed * DEG:.0f}°；"
+            "减小摇杆摆角 ψ 或行程速比系数 K 可提高 γmin（见设计线图）。",
+            f"{en}: the minimum transmission angle γmin = {gmin * DEG:.2f}° is below the allowed "
+            f"[γ] = {gamma_allowed * DEG:.0f}°; a smaller swing ψ or time ratio K raises γmin "
+            "(see the design chart)."))
+    return Design(label, design, a_pivot, p, gmin, gmax, theta, swing, kind, warnings)
+
+
+def optimum_stage(r: dict) -> OptimumResult:
+    p = r["params"]
+    cons = fb.circle_construction_theta(p.theta, p.swing, p.rocker)
+    pos, _ = fb.optimal_position_theta(p.theta, p.swing, p.rocker)
+    best = _place("最优设计 / optimum", cons, pos, p.gamma_allowed)
+    try:
+        far = fb.optimal_position_theta(p.theta, p.swing, p.rocker, side=-1)[1]
+    except fb.SynthesisError:
+        far = None
+    return OptimumResult(cons, best, far, list(best.warnings))
+
+
+def textbook_stage(r: dict) -> Design:
+    p = r["params"]
+    cons = r["optimum"].construction
+    pos = fb.position_for_frame(cons, p.frame)
+    return _place("给定机架 / given frame", cons, pos, p.gamma_allowed)
+
+
+def slider_stage(r: dict) -> SliderResult:
+    sp = r["params"].slider
+    allowed = np.pi / 2.0 - r["params"].gamma_allowed
+    cons = fb.slider_crank_construction(sp.K, sp.stroke, sp.offset)
+    a, b = fb.offset_slider_crank(sp.K, sp.stroke, sp.offset)
+    slow, fast = fb.slider_crank_pressure_angles(a, b, sp.offset)
+    warnings = []
+    if slow > allowed:
+        warnings.append(Finding(
+            "pressure_angle",
+            f"偏置曲柄滑块机构：工作行程（慢行程）最大压力角 {slow * DEG:.2f}° 大于许用值 "
+            f"{allowed * DEG:.0f}°；改变偏距 e 或减小 K。",
+            f"offset slider-crank: the largest pressure angle of the working (slow) stroke, "
+            f"{slow * DEG:.2f}°, exceeds the allowed {allowed * DEG:.0f}°; change the offset e "
+            "or reduce K."))
+    return SliderResult(cons, a, b, sp.offset, sp.stroke, sp.K, sp.theta, slow, fast, allowed,
+                        warnings)
+
+
+def chart_stage(r: dict) -> ChartResult:
+    p = r["params"]
+    swings = np.linspace(p.chart_swing[0], p.chart_swing[1], p.chart_points)
+    ratio = np.full((len(p.chart_thetas), len(swings)), np.nan)
+    gamma = np.full_like(ratio, np.nan)
+    for i, th in enumerate(p.chart_thetas):
+        for j, ps in enumerate(swings):
+            if th == 0.0:
+                # A at infinity on the line C1C2: the supremum γmin = 90° − ψ/2, l3/l4 → 0
+                ratio[i, j], gamma[i, j] = 0.0, np.pi / 2.0 - ps / 2.0
+                continue
+            try:
+                pos, g = fb.optimal_position_theta(th, ps, 1.0, grid=241)
+            except fb.SynthesisError:
+                continue
+            cons = fb.circle_construction_theta(th, ps, 1.0)
+            ratio[i, j] = 1.0 / float(cons.designs(pos)[2])
+            gamma[i, j] = g
+    return ChartResult(tuple(p.chart_thetas), swings, ratio, gamma)
+
+
+# ------------------------------------------------------------------------- verification
+
+def folded_branch(design: fb.FourBar, a_pivot: complex, c1: complex) -> int:
+    """RRR branch (+1: C left of B→D) that puts C at the folded extreme C1 (D at the origin)."""
+    u = (c1 - a_pivot) / abs(c1 - a_pivot)
+    b1 = a_pivot - design.crank * u
+    return 1 if (np.conj(0j - b1) * (c1 - b1)).imag > 0 else -1
+
+
+def _four_bar_mechanism(design: fb.FourBar, a_pivot: complex, branch: int, omega: float
+                        ) -> Mechanism:
+    """Crank AB (link 2) + RRR group BC (3) / DC (4); D at the origin."""
+    mech = Mechanism("1", {"A": a_pivot, "D": 0j})
+    mech.add(Crank("crank", "2", "A", "B", design.crank, omega))
+    mech.add(RRR("RRR", "3", "4", "B", "D", "C", design.coupler, design.rocker, branch))
+    return mech
+
+
+def _refine_roots(fun, phi, values) -> list[float]:
+    """Roots of fun(φ) between grid neighbours where ``values`` changes sign (periodic)."""
+    roots = []
+    n = len(phi)
+    for k in range(n):
+        v0, v1 = values[k], values[(k + 1) % n]
+        if v0 == 0.0:
+            roots.append(float(phi[k]))
+        elif v0 * v1 < 0.0:
+            lo = phi[k]
+            hi = phi[k + 1] if k + 1 < n else phi[0] + 2.0 * np.pi
+            roots.append(float(brentq(fun, lo, hi, xtol=1e-15, rtol=1e-15)))
+    return roots
+
+
+def _min_refined(fun, phi, values, step) -> tuple[float, float]:
+    k = int(np.argmin(values))
+    res = minimize_scalar(fun, bounds=(phi[k] - step, phi[k] + step), method="bounded",
+                          options={"xatol": 1e-12})
+    if res.fun <= values[k]:
+        return float(res.x), float(res.fun)
+    return float(phi[k]), float(values[k])
+
+
+def _transmission(m) -> np.ndarray:
+    u3 = m.points["C"].pos - m.points["B"].pos
+    u4 = m.points["C"].pos - m.points["D"].pos
+    delta = np.abs(np.angle(u3 / u4))
+    return np.minimum(delta, np.pi - delta)
+
+
+def simulate_four_bar(label: str, design: fb.FourBar, a_pivot: complex, branch: int,
+                      omega: float, n: int) -> Simulation:
+    """Simulate a crank-rocker with D at the origin and the crank pivot at ``a_pivot``: the
+    rocker's extremes are the roots of ω4(φ) (bracketed on the grid, brentq); γmin by a
+    bounded scalar search around the grid minimum. The crank angle φ is measured from the
+    frame line A→D (φ = 0: crank along AD, pointing at D)."""
+    mech = _four_bar_mechanism(design, a_pivot, branch, omega)
+    phi = np.angle(-a_pivot) + np.arange(n) * (2.0 * np.pi / n)
+    m = mech.solve(phi)
+    th4 = m.links["4"].angle
+    ref = float(th4[0])
+
+    def rel(x):
+        return np.angle(np.exp(1j * (x - ref)))
+
+    w4 = m.links["4"].omega
+
+    def w_at(x):
+        return float(mech.solve(np.array([x])).links["4"].omega[0])
+    roots = _refine_roots(w_at, phi, w4)
+    if len(roots) != 2:
+        raise fb.SynthesisError(f"{label}: the simulated rocker has {len(roots)} extreme positions "
+                                "per revolution, not 2: it is not a crank-rocker")
+    ends = mech.solve(np.array(roots))
+    ang = rel(ends.links["4"].angle)
+    i_max = int(np.argmax(ang))
+    phi_max, phi_min = roots[i_max], roots[1 - i_max]
+    swing = float(ang[i_max] - ang[1 - i_max])
+    span = (phi_max - phi_min) % (2.0 * np.pi)
+    slow, fast = max(span, 2 * np.pi - span), min(span, 2 * np.pi - span)
+    theta = float(abs(np.pi - span))
+    gam = _transmission(m)
+
+    def g_at(x):
+        return float(_transmission(mech.solve(np.array([x])))[0])
+    phi_g, g_min = _min_refined(g_at, phi, gam, 2.0 * np.pi / n)
+    # loop closure A + AB + BC − DC − AD = 0 with the simulated link angles
+    loop = (a_pivot + design.crank * np.exp(1j * m.links["2"].angle)
+            + design.coupler * np.exp(1j * m.links["3"].angle)
+            - design.rocker * np.exp(1j * m.links["4"].angle))
+    closure = float(np.max(np.abs(loop)))
+    mid = 0.5 * (ang[0] + ang[1])
+    pts = {k: ends.points[k].pos for k in ("A", "B", "C", "D")}
+    base = np.angle(-a_pivot)
+    return Simulation(label, phi - base, rel(th4) - mid, w4, m.links["4"].alpha, gam,
+                      (float(roots[0] - base) % (2 * np.pi), float(roots[1] - base) % (2 * np.pi)),
+                      swing, theta, slow / fast, g_min, float(phi_g - base) % (2 * np.pi), closure, pts)
+
+
+def simulate_slider(res: SliderResult, omega: float, n: int) -> SliderSimulation:
+    """Crank AB + RRP group on the guide y = −e (A at the origin, C ahead of B's foot)."""
+    mech = Mechanism("1", {"A": 0j})
+    mech.add(Crank("crank", "2", "A", "B", res.crank, omega))
+    mech.add(RRP("RRP", "3", "4", "B", "C", res.rod, complex(0.0, -res.offset), 0.0, +1, "1"))
+    phi = np.arange(n) * (2.0 * np.pi / n)
+    m = mech.solve(phi)
+    s = m.slides["4"].s
+    ds = m.slides["4"].ds
+
+    def ds_at(x):
+        return float(mech.solve(np.array([x])).slides["4"].ds[0])
+    roots = _refine_roots(ds_at, phi, ds)
+    if len(roots) != 2:
+        raise fb.SynthesisError(f"the simulated slider has {len(roots)} dead centres, not 2")
+    ends = mech.solve(np.array(roots)).slides["4"].s
+    i_max = int(np.argmax(ends))
+    phi_max, phi_min = roots[i_max], roots[1 - i_max]
+    stroke = float(ends[i_max] - ends[1 - i_max])
+    out_span = (phi_max - phi_min) % (2.0 * np.pi)       # crank turn of the outward stroke
+    theta = float(abs(np.pi - out_span))
+    K = max(out_span, 2 * np.pi - out_span) / min(out_span, 2 * np.pi - out_span)
+
+    def alpha_of(mm):
+        u = mm.points["C"].pos - mm.points["B"].pos
+        return np.arcsin(np.abs(u.imag) / np.abs(u))
+    alpha = alpha_of(m)
+    outward = ((phi - phi_min) % (2.0 * np.pi)) < out_span
+    slow = outward if out_span > np.pi else ~outward
+    step = 2.0 * np.pi / n
+
+    def alpha_at(x):
+        return float(alpha_of(mech.solve(np.array([x])))[0])
+
+    def stroke_max(start, length):
+        """Largest α over the stroke that begins at the dead centre ``start`` [rad] and lasts
+        ``length`` [rad] of crank turn; the search stays inside the stroke."""
+        u = (phi - start) % (2.0 * np.pi)
+        inside = u <= length
+        k = int(np.argmax(np.where(inside, alpha, -np.inf)))
+        lo, hi = max(0.0, u[k] - step), min(length, u[k] + step)
+        res_ = minimize_scalar(lambda v: -alpha_at(start + v), bounds=(lo, hi), method="bounded",
+                               options={"xatol": 1e-12})
+        return max(float(alpha[k]), -float(res_.fun), alpha_at(start), alpha_at(start + length))
+    if out_span > np.pi:
+        a_slow = stroke_max(phi_min, out_span)
+        a_fast = stroke_max(phi_max, 2.0 * np.pi - out_span)
+    else:
+        a_fast = stroke_max(phi_min, out_span)
+        a_slow = stroke_max(phi_max, 2.0 * np.pi - out_span)
+    loop = (res.crank * np.exp(1j * m.links["2"].angle) + res.rod * np.exp(1j * m.links["3"].angle)
+            - (complex(0.0, -res.offset) + s))
+    return SliderSimulation(phi, s - ends[1 - i_max], alpha, slow, stroke, theta, K, a_slow,
+                            a_fast, float(np.max(np.abs(loop))))
+
+
+def verify_stage(r: dict) -> VerifyResult:
+    p = r["params"]
+    opt: OptimumResult = r["optimum"]
+    cons = opt.construction
+    branch = folded_branch(opt.best.design, opt.best.a_pivot, cons.c1)
+    sims = [simulate_four_bar(opt.best.label, opt.best.design, opt.best.a_pivot, branch,
+                              p.omega, p.grid_points)]
+    if r.get("textbook") is not None:
+        t = r["textbook"]
+        sims.append(simulate_four_bar(t.label, t.design, t.a_pivot,
+                                      folded_branch(t.design, t.a_pivot, cons.c1), p.omega,
+                                      p.grid_points))
+    # compared designs: the frame along our optimum's AD, the same assembly branch
+    direction = opt.best.a_pivot / abs(opt.best.a_pivot)
+    for cd in p.compare:
+        sims.append(simulate_four_bar(cd.label, cd.design, direction * cd.design.frame, branch,
+                                      p.omega, p.grid_points))
+    slider = None
+    if r.get("slider") is not None:
+        slider = simulate_slider(r["slider"], p.omega, p.grid_points)
+    span = cons.p_hi - cons.p_lo
+    h = 1e-3 * span
+    pos = opt.best.position
+    neigh = (float(cons.gamma_min(pos - h)), float(cons.gamma_min(pos + h)))
+    dense = cons.p_lo + span * (np.arange(1, 200_001) / 200_001)
+    scan = float(np.max(cons.gamma_min(dense)))
+    return VerifyResult(sims, slider, neigh, scan)
+
+
+def compared_designs(r: dict) -> list[Design]:
+    """The brief's compared designs with their closed-form θ, ψ, γ (report tables)."""
+    p = r["params"]
+    return [_describe(cd.label, cd.design, complex(-cd.design.frame, 0.0), None, p.gamma_allowed)
+            for cd in p.compare]
+
+
+def stages(params) -> list[Stage]:
+    out = [Stage("optimum", "最小传动角最大的曲柄摇杆机构 / crank-rocker with the best transmission angle",
+                 optimum_stage)]
+    if params.frame is not None:
+        out.append(Stage("textbook", "按 K 设计曲柄摇杆机构（给定机架）/ design from K with the given frame",
+                         textbook_stage))
+    if params.slider is not None:
+        out.append(Stage("slider", "偏置曲柄滑块机构设计 / offset slider-crank", slider_stage))
+    out.append(Stage("chart", "设计线图 / design chart", chart_stage))
+    out.append(Stage("compare", "对比设计 / designs to compare", compared_designs))
+    out.append(Stage("verify", "仿真校核 / verification by simulation", verify_stage))
+    return out
+
+
+# ------------------------------------------------------------------------------ results
+
+def _c(z):
+    return [float(np.real(z)), float(np.imag(z))]
+
+
+def _design_doc(d: Design) -> dict:
+    return {"label": d.label, "crank": d.design.crank, "coupler": d.design.coupler,
+            "rocker": d.design.rocker, "frame": d.design.frame, "crank_pivot": _c(d.a_pivot),
+            "arc_position": d.position, "gamma_min": d.gamma_min, "gamma_max": d.gamma_max,
+            "theta": d.theta, "swing": d.swing, "classification": d.grashof,
+            "warnings": [w.code for w in d.warnings]}
+
+
+def _sim_doc(s: Simulation) -> dict:
+    return {"label": s.label, "K": s.K, "theta": s.theta, "swing": s.swing,
+            "gamma_min": s.gamma_min, "crank_angle_at_gamma_min": s.phi_gamma_min,
+            "crank_angles_at_extremes": list(s.phi_extremes), "closure_residual": s.closure}
+
+
+def results_document(r: dict) -> dict:
+    p = r["params"]
+    opt: OptimumResult = r["optimum"]
+    cons = opt.construction
+    doc = {"schema": "mechdesign.results/1", "machine": "crank_rocker",
+           "units": "SI: m, rad; complex points as [x, y], rocker pivot D at the origin",
+           "spec": {"K": p.K, "theta": p.theta, "swing": p.swing, "rocker": p.rocker,
+                    "frame": p.frame, "gamma_allowed": p.gamma_allowed},
+           "construction": {"C1": _c(cons.c1), "C2": _c(cons.c2),
+                            "centre": None if cons.centre is None else _c(cons.centre),
+                            "radius": cons.radius, "arc": [cons.p_lo, cons.p_hi]},
+           "optimum": _design_doc(opt.best), "optimum_far_circle_gamma_min": opt.far_side_gamma,
+           "textbook": None if r.get("textbook") is None else _design_doc(r["textbook"]),
+           "compare": [_design_doc(d) for d in r["compare"]],
+           "chart": {"theta": list(r["chart"].thetas), "swing": r["chart"].swings,
+                     "rocker_over_frame": r["chart"].ratio, "gamma_min": r["chart"].gamma},
+           "simulation": [_sim_doc(s) for s in r["verify"].sims]}
+    if r.get("slider") is not None:
+        sl: SliderResult = r["slider"]
+        ss = r["verify"].slider
+        doc["slider_crank"] = {
+            "K": sl.K, "theta": sl.theta, "stroke": sl.stroke, "offset": sl.offset,
+            "crank": sl.crank, "rod": sl.rod, "pressure_angle_slow": sl.alpha_slow,
+            "pressure_angle_fast": sl.alpha_fast,
+            "simulated": {"stroke": ss.stroke, "K": ss.K, "theta": ss.theta,
+                          "pressure_angle_slow": ss.alpha_slow,
+                          "pressure_angle_fast": ss.alpha_fast, "closure_residual": ss.closure}}
+    return doc
+
+
+__all__ = ["stages", "results_document", "simulate_four_bar", "simulate_slider", "folded_branch"]

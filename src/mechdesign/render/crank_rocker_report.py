@@ -1,0 +1,503 @@
+"""Report of the crank-rocker synthesis (``machine: crank_rocker``): the design chart,
+the θ-circle construction, γ(φ) from the simulation, the offset slider-crank, and the
+context strings for ``templates/crank_rocker.*.md.j2``."""
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+
+from .figures import figure
+from .fmt import e as fe
+from .fmt import f
+
+DEG = 180.0 / np.pi
+MM = 1e3
+
+LABELS = {
+    "zh": {"psi": "摇杆摆角 ψ (°)", "ratio": r"$l_3/l_4$（最优）", "gamma_opt": r"最大的 $\gamma_{min}$ (°)",
+           "theta": "θ", "ours": "本设计", "allowed": "许用值 [γ]", "phi": "曲柄转角 φ，由机架线 AD 量起 (°)", "phi_s": "曲柄转角 φ，由导路方向量起 (°)",
+           "gamma": "传动角 γ (°)", "rocker": "摇杆角位移 (°)", "w4": r"摇杆角速度 $\omega_4$ (rad/s)",
+           "a4": r"摇杆角加速度 $\alpha_4$ (rad/s²)", "x": "x (mm)", "y": "y (mm)",
+           "circle": "θ 圆", "arc": "A 的允许弧", "frame_arc": r"以 D 为圆心、$l_4$ 为半径的圆弧",
+           "textbook": "给定机架的设计 A′", "limit": r"$\theta = 0$ 为极限（A 在无穷远）",
+           "alpha": "压力角 α (°)", "slow": "慢行程（工作行程）", "fast": "快行程（回程）",
+           "guide": "滑块导路", "optimum": "最优设计"},
+    "en": {"psi": "rocker swing ψ (°)", "ratio": r"$l_3/l_4$ (optimum)", "gamma_opt": r"largest $\gamma_{min}$ (°)",
+           "theta": "θ", "ours": "this design", "allowed": "allowed [γ]", "phi": "crank angle φ from the frame line AD (°)",
+           "phi_s": "crank angle φ from the guide direction (°)",
+           "gamma": "transmission angle γ (°)", "rocker": "rocker angle (°)",
+           "w4": r"rocker $\omega_4$ (rad/s)", "a4": r"rocker $\alpha_4$ (rad/s²)",
+           "x": "x (mm)", "y": "y (mm)", "circle": "θ-circle", "arc": "allowed arc for A",
+           "frame_arc": r"arc about D of radius $l_4$", "textbook": "given-frame design A′",
+           "limit": r"$\theta = 0$ is a limit (A at infinity)", "alpha": "pressure angle α (°)",
+           "slow": "slow (working) stroke", "fast": "fast (return) stroke", "guide": "slider guide",
+           "optimum": "optimum"},
+}
+
+
+# ------------------------------------------------------------------------------ figures
+
+def _chart(path: Path, lang: str, ch, mark, allowed_deg):
+    lab = LABELS[lang]
+    psi = ch.swings * DEG
+    with figure(path, 2, (7.0, 6.4)) as (ax1, ax2):
+        for i, th in enumerate(ch.thetas):
+            ls = ":" if th == 0.0 else "-"
+            name = f"θ = {th * DEG:g}°"
+            ax1.plot(psi, ch.ratio[i], ls, lw=1.2, color=f"C{i % 10}", label=name)
+            ax2.plot(psi, ch.gamma[i] * DEG, ls, lw=1.2, color=f"C{i % 10}", label=name)
+        ax1.plot([mark[0]], [mark[1]], "k*", ms=9, zorder=5, label=lab["ours"])
+        ax2.plot([mark[0]], [mark[2]], "k*", ms=9, zorder=5)
+        ax2.axhline(allowed_deg, color="C3", lw=0.8, ls="--")
+        ax2.text(psi[-1], allowed_deg + 1, f"{lab['allowed']} = {allowed_deg:g}°", color="C3",
+                 fontsize=7, ha="right")
+        ax1.set_ylabel(lab["ratio"])
+        ax2.set_ylabel(lab["gamma_opt"])
+        ax2.set_xlabel(lab["psi"])
+        for ax in (ax1, ax2):
+            ax.grid(True, lw=0.4, color="0.82")
+            ax.set_xlim(psi[0], psi[-1])
+        ax1.legend(fontsize=7, ncol=4, loc="lower right")
+        if any(th == 0.0 for th in ch.thetas):
+            ax1.text(0.01, 0.08, lab["limit"], transform=ax1.transAxes, fontsize=7, color="0.35")
+
+
+def _arc(ax, centre, radius, a0, a1, **kw):
+    t = np.linspace(a0, a1, 120)
+    z = centre + radius * np.exp(1j * t)
+    ax.plot(z.real * MM, z.imag * MM, **kw)
+
+
+def _label(ax, z, text, dx=0.0, dy=0.0, **kw):
+    ax.text(z.real * MM + dx, z.imag * MM + dy, text, fontsize=8, **kw)
+
+
+def _construction(path: Path, lang: str, opt, sim, textbook):
+    lab = LABELS[lang]
+    cons = opt.construction
+    best = opt.best
+    a_pt = best.a_pivot
+    d_pt = 0j
+    pts = sim.points
+    # the folded extreme is the one with the shorter AC
+    ac = np.abs(pts["C"] - pts["A"])
+    i1, i2 = int(np.argmin(ac)), int(np.argmax(ac))
+    with figure(path, 1, (6.6, 6.2)) as (ax,):
+        ax.set_aspect("equal")
+        # θ-circle and the allowed arc
+        t = np.linspace(-np.pi, np.pi, 400)
+        z = cons.point(t)
+        ax.plot(z.real * MM, z.imag * MM, color="0.6", lw=0.8, label=lab["circle"])
+        t = np.linspace(cons.p_lo, cons.p_hi, 200)
+        z = cons.point(t)
+        ax.plot(z.real * MM, z.imag * MM, color="C2", lw=2.4, alpha=0.6, label=lab["arc"])
+        ax.plot(cons.centre.real * MM, cons.centre.imag * MM, "+", color="0.4")
+        _label(ax, cons.centre, "O", dx=1.0, dy=1.0, color="0.4")
+        g = cons.point(cons.p_lo)
+        ax.plot([cons.c2.real * MM, g.real * MM], [cons.c2.imag * MM, g.imag * MM], ":",
+                color="0.5", lw=0.8)
+        _label(ax, g, "G", dx=1.0, dy=-3.0, color="0.4")
+        # chord, rocker arc, ψ
+        ax.plot([cons.c1.real * MM, cons.c2.real * MM], [cons.c1.imag * MM, cons.c2.imag * MM],
+                "--", color="0.4", lw=0.8)
+        c = cons.rocker
+        _arc(ax, d_pt, c, np.angle(cons.c1) - 0.1, np.angle(cons.c2) + 0.1, color="0.5", lw=0.6,
+             ls="--")
+        _arc(ax, d_pt, 0.25 * c, np.angle(cons.c1), np.angle(cons.c2), color="C3", lw=1.0)
+        _label(ax, 0.3 * c * np.exp(1j * np.pi / 2), "ψ", color="C3", ha="center")
+        # frame arc (textbook: arc about D of radius l4)
+        ang_a = np.angle(a_pt)
+        _arc(ax, d_pt, abs(a_pt), ang_a - 0.25, ang_a + 0.25, color="C4", lw=0.8, ls="-.",
+             label=lab["frame_arc"])
+        # the linkage at its two extremes
+        for k, col, suffix in ((i1, "C0", "1"), (i2, "C1", "2")):
+            chain = np.array([pts["A"][k], pts["B"][k], pts["C"][k], pts["D"][k]])
+            ax.plot(chain.real * MM, chain.imag * MM, "-o", color=col, lw=1.8, ms=3.5)
+            _label(ax, pts["B"][k], f"B{suffix}", dx=1.2, dy=1.2, color=col)
+            _label(ax, pts["C"][k], f"C{suffix}", dx=1.2, dy=1.2, color=col)
+        # rays A–C1, A–C2 and the angle θ between them
+        for cc in (cons.c1, cons.c2):
+            ax.plot([a_pt.real * MM, cc.real * MM], [a_pt.imag * MM, cc.imag * MM], color="0.3",
+                    lw=0.6)
+        r_th = 0.55 * abs(cons.c1 - a_pt)
+        a1, a2 = np.angle(cons.c1 - a_pt), np.angle(cons.c2 - a_pt)
+        lo, hi = min(a1, a2), max(a1, a2)
+        _arc(ax, a_pt, r_th, lo, hi, color="C3", lw=1.0)
+        mid = a_pt + 1.15 * r_th * np.exp(1j * (lo + hi) / 2)
+        _label(ax, mid, "θ", color="C3", ha="center", va="center")
+        # crank circle
+        _arc(ax, a_pt, best.design.crank, 0, 2 * np.pi, color="0.6", lw=0.6, ls=":")
+        ax.plot([a_pt.real * MM, 0.0], [a_pt.imag * MM, 0.0], color="k", lw=1.2)
+        for zz, name in ((a_pt, "A"), (d_pt, "D")):
+            ax.plot(zz.real * MM, zz.imag * MM, "ks", ms=5)
+            _label(ax, zz, name, dx=1.5, dy=-4.0)
+        if textbook is not None:
+            tp = textbook.a_pivot
+            ax.plot(tp.real * MM, tp.imag * MM, "^", color="C4", ms=6, label=lab["textbook"])
+        ax.set_xlabel(lab["x"])
+        ax.set_ylabel(lab["y"])
+        ax.grid(True, lw=0.3, color="0.88")
+        ax.legend(fontsize=7, loc="lower left")
+
+
+def _wrap(phi, *ys):
+    """φ [rad] wrapped to [−180°, 180°) in degrees, sorted, with the series reordered."""
+    x = (np.asarray(phi) * DEG + 180.0) % 360.0 - 180.0
+    k = np.argsort(x)
+    return (x[k],) + tuple(np.asarray(y)[k] for y in ys)
+
+
+def _motion(path: Path, lang: str, sims, allowed_deg, with_speed: bool):
+    lab = LABELS[lang]
+    n = 3 if with_speed else 2
+    opt = sims[0]
+    with figure(path, n, (7.0, 2.4 * n + 0.6)) as axes:
+        ax = axes[0]
+        for i, s in enumerate(sims):
+            x, y = _wrap(s.phi, s.gamma * DEG)
+            ax.plot(x, y, lw=1.6 if i == 0 else 0.9, color=f"C{i}", label=_name(s.label, lang))
+        xg = float(_wrap([opt.phi_gamma_min])[0][0])
+        ax.plot(xg, opt.gamma_min * DEG, "o", color="C3", ms=5)
+        ax.annotate(f"γmin = {opt.gamma_min * DEG:.2f}°", (xg, opt.gamma_min * DEG),
+                    xytext=(8, -14), textcoords="offset points", fontsize=8, color="C3")
+        ax.axhline(allowed_deg, color="C3", lw=0.8, ls="--")
+        ax.set_ylabel(lab["gamma"])
+        ax.legend(fontsize=7, loc="upper right")
+        ax = axes[1]
+        ax.plot(*_wrap(opt.phi, opt.rocker_angle * DEG), color="C0", lw=1.4)
+        for x in _wrap(list(opt.phi_extremes))[0]:
+            ax.axvline(x, color="0.5", lw=0.6, ls=":")
+        ax.set_ylabel(lab["rocker"])
+        if with_speed:
+            axes[2].plot(*_wrap(opt.phi, opt.omega4), color="C0", lw=1.4)
+            axes[2].set_ylabel(lab["w4"])
+            axes[2].axhline(0, color="0.4", lw=0.6)
+        for ax in axes:
+            ax.set_xlim(-180, 180)
+            ax.set_xticks(np.arange(-180, 181, 30))
+            ax.grid(True, lw=0.4, color="0.82")
+        axes[-1].set_xlabel(lab["phi"])
+
+
+def _slider(path: Path, lang: str, sl, ss, allowed_deg):
+    lab = LABELS[lang]
+    cons = sl.construction
+    with figure(path, 2, (7.0, 7.4), sharex=False) as (ax, ax2):
+        ax.set_aspect("equal")
+        a_pt = 0j
+        y_g = -sl.offset
+        xs = np.array([min(cons.c1.real, -sl.crank) - 0.1 * sl.stroke, cons.c2.real + 0.15 * sl.stroke])
+        ax.plot(xs * MM, [y_g * MM] * 2, color="0.3", lw=0.8, ls="-.", label=lab["guide"])
+        t = np.linspace(0, 2 * np.pi, 400)
+        z = cons.centre + cons.radius * np.exp(1j * t)
+        ax.plot(z.real * MM, z.imag * MM, color="0.6", lw=0.8, label=lab["circle"])
+        for cc, bb, col, name in ((cons.c1, -sl.crank * cons.c1 / abs(cons.c1), "C0", "1"),
+                                  (cons.c2, sl.crank * cons.c2 / abs(cons.c2), "C1", "2")):
+            ax.plot([0, bb.real * MM, cc.real * MM], [0, bb.imag * MM, cc.imag * MM], "-o",
+                    color=col, lw=1.8, ms=3.5)
+            ax.plot([cc.real * MM], [cc.imag * MM], "s", color=col, ms=7, mfc="none")
+            _label(ax, bb, f"B{name}", dx=1.5, dy=1.5, color=col)
+            _label(ax, cc, f"C{name}", dx=0.0, dy=-9.0, color=col, ha="center")
+        _arc(ax, a_pt, sl.crank, 0, 2 * np.pi, color="0.6", lw=0.6, ls=":")
+        r_th = 0.3 * abs(cons.c1)
+        a1, a2 = np.angle(cons.c1), np.angle(cons.c2)
+        _arc(ax, a_pt, r_th, min(a1, a2), max(a1, a2), color="C3", lw=1.0)
+        _label(ax, 1.2 * r_th * np.exp(1j * (a1 + a2) / 2), "θ", color="C3", ha="center", va="center")
+        ax.plot([0, 0], [0, y_g * MM], color="C4", lw=0.8, ls="--")
+        _label(ax, complex(0, y_g / 2), "e", dx=1.5, color="C4")
+        ax.plot(0, 0, "ks", ms=5)
+        _label(ax, a_pt, "A", dx=-6, dy=2)
+        pad = 0.25 * sl.stroke
+        ax.set_xlim((min(cons.c1.real, -sl.crank) - pad) * MM, (cons.c2.real + pad) * MM)
+        ax.set_ylim((min(-sl.crank, y_g) - pad) * MM, (sl.crank + pad) * MM)
+        ax.set_xlabel(lab["x"])
+        ax.set_ylabel(lab["y"])
+        ax.grid(True, lw=0.3, color="0.88")
+        ax.legend(fontsize=7, loc="upper left")
+        phi = ss.phi * DEG
+        alpha = ss.alpha * DEG
+        ax2.plot(phi, np.where(ss.slow, alpha, np.nan), color="C0", lw=1.6, label=lab["slow"])
+        ax2.plot(phi, np.where(~ss.slow, alpha, np.nan), color="C1", lw=1.6, label=lab["fast"])
+        ax2.axhline(allowed_deg, color="C3", lw=0.8, ls="--")
+        ax2.text(355, allowed_deg + 1, f"[α] = {allowed_deg:g}°", color="C3", fontsize=7, ha="right")
+        ax2.set_xlim(0, 360)
+        ax2.set_xticks(np.arange(0, 361, 30))
+        ax2.grid(True, lw=0.4, color="0.82")
+        ax2.set_xlabel(lab["phi_s"])
+        ax2.set_ylabel(lab["alpha"])
+        ax2.legend(fontsize=7, loc="upper right")
+
+
+def make_figures(r: dict, fig_dir: Path, lang: str) -> dict[str, str]:
+    p = r["params"]
+    opt = r["optimum"]
+    ver = r["verify"]
+    out = {}
+    mark = (p.swing * DEG, p.rocker / opt.best.design.frame, opt.best.gamma_min * DEG)
+    _chart(fig_dir / "chart.png", lang, r["chart"], mark, p.gamma_allowed * DEG)
+    out["chart"] = f"{fig_dir.name}/chart.png"
+    _construction(fig_dir / "construction.png", lang, opt, ver.sims[0], r.get("textbook"))
+    out["construction"] = f"{fig_dir.name}/construction.png"
+    _motion(fig_dir / "motion.png", lang, ver.sims, p.gamma_allowed * DEG,
+            p.crank_speed_rpm is not None)
+    out["motion"] = f"{fig_dir.name}/motion.png"
+    if r.get("slider") is not None:
+        _slider(fig_dir / "slider.png", lang, r["slider"], ver.slider, 90 - p.gamma_allowed * DEG)
+        out["slider"] = f"{fig_dir.name}/slider.png"
+    return out
+
+
+# ------------------------------------------------------------------------------ context
+
+def _mm(x: float, d: int = 4) -> str:
+    return f(x * MM, d)
+
+
+def _deg(x: float, d: int = 4) -> str:
+    return f(x * DEG, d)
+
+
+def _gamma_eqs(d) -> tuple[str, str]:
+    """LaTeX of the two collinear-position transmission angles with numbers."""
+    a, b, c, l4 = (x * MM for x in (d.crank, d.coupler, d.rocker, d.frame))
+    c1 = (b * b + c * c - (l4 - a) ** 2) / (2 * b * c)
+    c2 = (b * b + c * c - (l4 + a) ** 2) / (2 * b * c)
+    e1 = (rf"\cos\delta' = \frac{{{f(b, 4)}^2 + {f(c, 4)}^2 - ({f(l4, 4)} - {f(a, 4)})^2}}{{2 \times {f(b, 4)} "
+          rf"\times {f(c, 4)}}} = {f(c1, 6)},\quad \delta' = {f(np.degrees(np.arccos(c1)), 4)}^\circ")
+    e2 = (rf"\cos\delta'' = \frac{{{f(b, 4)}^2 + {f(c, 4)}^2 - ({f(l4, 4)} + {f(a, 4)})^2}}{{2 \times {f(b, 4)} "
+          rf"\times {f(c, 4)}}} = {f(c2, 6)},\quad \delta'' = {f(np.degrees(np.arccos(c2)), 4)}^\circ")
+    return e1, e2
+
+
+def _cosines(d) -> tuple[float, float]:
+    a, b, c, l4 = d.crank, d.coupler, d.rocker, d.frame
+    return ((b * b + c * c - (l4 - a) ** 2) / (2 * b * c), (b * b + c * c - (l4 + a) ** 2) / (2 * b * c))
+
+
+def _name(label: str, lang: str) -> str:
+    """'中文 / english' labels: the part for the report's language."""
+    if " / " in label:
+        zh, en = label.split(" / ", 1)
+        return zh if lang == "zh" else en
+    return label
+
+
+def _verdict(ok: bool) -> str:
+    return "✓" if ok else "✗"
+
+
+def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
+    zh = lang == "zh"
+    p = r["params"]
+    opt = r["optimum"]
+    cons = opt.construction
+    best = opt.best
+    tb = r.get("textbook")
+    ver = r["verify"]
+    th_deg = p.theta * DEG
+    chord = abs(cons.c1 - cons.c2)
+    eq = {}
+    if p.K_given:
+        eq["theta"] = (rf"\theta = 180^\circ\frac{{K - 1}}{{K + 1}} = 180^\circ \times "
+                       rf"\frac{{{f(p.K, 4)} - 1}}{{{f(p.K, 4)} + 1}} = {f(th_deg, 4)}^\circ")
+    else:
+        eq["theta"] = (rf"K = \frac{{180^\circ + \theta}}{{180^\circ - \theta}} = "
+                       rf"\frac{{180^\circ + {f(th_deg, 4)}^\circ}}{{180^\circ - {f(th_deg, 4)}^\circ}}"
+                       rf" = {f(p.K, 6)}")
+    eq["chord"] = (rf"\overline{{C_1C_2}} = 2 l_3 \sin\frac{{\psi}}{{2}} = 2 \times {_mm(p.rocker, 2)}"
+                   rf" \times \sin {f(p.swing * DEG / 2, 4)}^\circ = {_mm(chord)}\ \text{{mm}}")
+    eq["radius"] = (rf"R = \frac{{\overline{{C_1C_2}}}}{{2\sin\theta}} = \frac{{{_mm(chord)}}}"
+                    rf"{{2 \sin {f(th_deg, 4)}^\circ}} = {_mm(cons.radius)}\ \text{{mm}}")
+    eq["centre"] = (rf"\overline{{OM}} = R\cos\theta = {_mm(cons.radius * np.cos(p.theta))}\ \text{{mm}}")
+    eq["lengths"] = (r"l_1 = \frac{\overline{AC_2} - \overline{AC_1}}{2},\qquad "
+                     r"l_2 = \frac{\overline{AC_2} + \overline{AC_1}}{2},\qquad l_4 = \overline{AD}")
+    eq["gamma_min"] = r"\gamma_{min} = \min(\delta',\ 180^\circ - \delta'')"
+    eq["gamma"] = (r"\cos\delta' = \frac{l_2^2 + l_3^2 - (l_4 - l_1)^2}{2 l_2 l_3},\quad "
+                   r"\cos\delta'' = \frac{l_2^2 + l_3^2 - (l_4 + l_1)^2}{2 l_2 l_3}")
+    eq["arc"] = (rf"A(t) = O + R\,(\sin t,\ -\cos t),\qquad t_G = {_deg(cons.p_lo, 3)}^\circ < t"
+                 rf" < 180^\circ - \theta = {_deg(cons.p_hi, 3)}^\circ")
+    eq["problem"] = (r"\max_{t_G < t < 180^\circ - \theta}\ \gamma_{min}(t) = "
+                     r"\max_t\ \min\bigl(\delta'(t),\ 180^\circ - \delta''(t)\bigr)")
+    g1, g2 = _gamma_eqs(best.design)
+    eq["opt_d1"], eq["opt_d2"] = g1, g2
+    ac1 = abs(best.a_pivot - cons.c1)
+    ac2 = abs(best.a_pivot - cons.c2)
+    eq["opt_l1"] = (rf"l_1 = \frac{{{_mm(ac2)} - {_mm(ac1)}}}{{2}} = {_mm(best.design.crank)}\ \text{{mm}}")
+    eq["opt_l2"] = (rf"l_2 = \frac{{{_mm(ac2)} + {_mm(ac1)}}}{{2}} = {_mm(best.design.coupler)}\ \text{{mm}}")
+    textbook = None
+    if tb is not None:
+        t1 = abs(tb.a_pivot - cons.c1)
+        t2 = abs(tb.a_pivot - cons.c2)
+        d1, d2 = _gamma_eqs(tb.design)
+        textbook = {
+            "frame": _mm(p.frame, 2), "ac1": _mm(t1), "ac2": _mm(t2),
+            "t": _deg(tb.position, 3),
+            "l1": (rf"l_1 = \frac{{{_mm(t2)} - {_mm(t1)}}}{{2}} = {_mm(tb.design.crank)}\ \text{{mm}}"),
+            "l2": (rf"l_2 = \frac{{{_mm(t2)} + {_mm(t1)}}}{{2}} = {_mm(tb.design.coupler)}\ \text{{mm}}"),
+            "d1": d1, "d2": d2, "gamma_min": _deg(tb.gamma_min, 3),
+            "kind": tb.grashof,
+        }
+    # data table
+    if zh:
+        data_rows = [["K", "行程速比系数", f(p.K, 4), "—"], ["θ", "极位夹角", f(th_deg, 4), "°"],
+                     ["ψ", "摇杆摆角", _deg(p.swing, 2), "°"], ["l3", "摇杆长度 CD", _mm(p.rocker, 2), "mm"]]
+        if p.frame is not None:
+            data_rows.append(["l4", "给定机架长度 AD（教材作图法）", _mm(p.frame, 2), "mm"])
+        data_rows.append(["[γ]", "许用最小传动角", _deg(p.gamma_allowed, 0), "°"])
+        if p.crank_speed_rpm is not None:
+            data_rows.append(["n1", "曲柄转速（仅用于运动线图）", f(p.crank_speed_rpm, 1), "rpm"])
+    else:
+        data_rows = [["K", "time ratio", f(p.K, 4), "—"], ["θ", "extreme-position angle", f(th_deg, 4), "°"],
+                     ["ψ", "rocker swing", _deg(p.swing, 2), "°"], ["l3", "rocker CD", _mm(p.rocker, 2), "mm"]]
+        if p.frame is not None:
+            data_rows.append(["l4", "given frame AD (textbook method)", _mm(p.frame, 2), "mm"])
+        data_rows.append(["[γ]", "allowed minimum transmission angle", _deg(p.gamma_allowed, 0), "°"])
+        if p.crank_speed_rpm is not None:
+            data_rows.append(["n1", "crank speed (motion curves only)", f(p.crank_speed_rpm, 1), "rpm"])
+    # comparison of designs: lengths and simulated θ, ψ, K, γmin
+    designs = [best] + ([tb] if tb is not None else []) + list(r["compare"])
+    cmp_rows = []
+    for d, s in zip(designs, ver.sims):
+        cmp_rows.append([_name(s.label, lang), _mm(d.design.crank), _mm(d.design.coupler), _mm(d.design.rocker),
+                         _mm(d.design.frame), _deg(s.theta, 4), _deg(s.swing, 4), f(s.K, 5),
+                         _deg(s.gamma_min, 3)])
+    spec_row = ["要求 specification" if zh else "specification", "", "", _mm(p.rocker, 4), "",
+                f(th_deg, 4), _deg(p.swing, 4), f(p.K, 5), ""]
+    paper_notes = []
+    missing = []
+    for d, s in zip(designs[len(designs) - len(r["compare"]):], ver.sims[len(designs) - len(r["compare"]):]):
+        dth, dpsi = (s.theta - p.theta) * DEG, (s.swing - p.swing) * DEG
+        dg = (best.gamma_min - s.gamma_min) * DEG
+        if abs(dth) > 1e-6 or abs(dpsi) > 1e-6:
+            missing.append(_name(s.label, lang))
+        paper_notes.append(
+            f"{_name(s.label, lang)}：θ 偏差 {f(dth, 3)}°，ψ 偏差 {f(dpsi, 3)}°，γmin 比最优设计低 {f(dg, 3)}°"
+            if zh else
+            f"{_name(s.label, lang)}: θ off by {f(dth, 3)}°, ψ off by {f(dpsi, 3)}°, γmin {f(dg, 3)}° below the optimum")
+    # verification rows: [item, result, reference, verdict]
+    tol = 1e-9
+    vrows = []
+    for d, s in zip(designs, ver.sims):
+        if d is not best and d is not tb:
+            continue
+        name = _name(s.label, lang)
+        for item_zh, item_en, val, ref, err in (
+                ("仿真 K", "simulated K", f(s.K, 10), f(p.K, 10), s.K - p.K),
+                ("仿真 θ /°", "simulated θ /°", _deg(s.theta, 10), f(th_deg, 10), s.theta - p.theta),
+                ("仿真 ψ /°", "simulated ψ /°", _deg(s.swing, 10), _deg(p.swing, 10), s.swing - p.swing),
+                ("仿真 γmin /°（参考：闭式解）", "simulated γmin /° (ref.: closed form)",
+                 _deg(s.gamma_min, 10), _deg(d.gamma_min, 10), s.gamma_min - d.gamma_min)):
+            vrows.append([f"{name}：{item_zh if zh else item_en}", val, ref, _verdict(abs(err) < tol)])
+        vrows.append([f"{name}：{'封闭矢量方程残差 /m' if zh else 'loop-closure residual /m'}",
+                      fe(s.closure), "0", _verdict(s.closure < 1e-12)])
+    n0, n1 = ver.optimum_neighbours
+    vrows.append(["γmin(t* ∓ 0.001·弧长) − γmin* /°" if zh else "γmin(t* ∓ 0.001·arc) − γmin* /°",
+                  f"{fe((n0 - best.gamma_min) * DEG)}, {fe((n1 - best.gamma_min) * DEG)}", "< 0",
+                  _verdict(n0 < best.gamma_min and n1 < best.gamma_min)])
+    vrows.append(["20 万点密集扫描的最大 γmin − γmin* /°" if zh else
+                  "largest γmin of a 200 000-point scan − γmin* /°",
+                  fe((ver.optimum_scan - best.gamma_min) * DEG), "≤ 0",
+                  _verdict(ver.optimum_scan <= best.gamma_min + 1e-12)])
+    slider = None
+    if r.get("slider") is not None:
+        sl, ss = r["slider"], ver.slider
+        sc = sl.construction
+        e_mm, h_mm = sl.offset * MM, sl.stroke * MM
+        slider = {
+            "K": f(sl.K, 4), "theta": _deg(sl.theta, 4), "H": f(h_mm, 2), "e": f(e_mm, 2),
+            "R": _mm(sc.radius), "ac1": _mm(abs(sc.c1)), "ac2": _mm(abs(sc.c2)),
+            "a": _mm(sl.crank), "b": _mm(sl.rod),
+            "eq_theta": (rf"\theta = 180^\circ\frac{{K - 1}}{{K + 1}} = 180^\circ \times "
+                         rf"\frac{{{f(sl.K, 4)} - 1}}{{{f(sl.K, 4)} + 1}} = {_deg(sl.theta, 4)}^\circ"),
+            "eq_R": (rf"R = \frac{{H}}{{2\sin\theta}} = \frac{{{f(h_mm, 2)}}}{{2\sin {_deg(sl.theta, 4)}^\circ}}"
+                     rf" = {_mm(sc.radius)}\ \text{{mm}}"),
+            "eq_x": (rf"x_A = -\sqrt{{R^2 - (R\cos\theta - e)^2}} = -\sqrt{{{_mm(sc.radius)}^2 - "
+                     rf"({_mm(sc.radius * np.cos(sl.theta))} - {f(e_mm, 2)})^2}} = "
+                     rf"{f(-np.sqrt(sc.radius ** 2 - (sc.radius * np.cos(sl.theta) - sl.offset) ** 2) * MM, 4)}"
+                     r"\ \text{mm}"),
+            "eq_limit": (rf"e < H\cot\theta = {f(h_mm / np.tan(sl.theta), 3)}\ \text{{mm}}"),
+            "eq_a": (rf"a = \frac{{\overline{{AC_2}} - \overline{{AC_1}}}}{{2}} = \frac{{{_mm(abs(sc.c2))} - "
+                     rf"{_mm(abs(sc.c1))}}}{{2}} = {_mm(sl.crank)}\ \text{{mm}}"),
+            "eq_b": (rf"b = \frac{{\overline{{AC_2}} + \overline{{AC_1}}}}{{2}} = "
+                      rf"\frac{{{_mm(abs(sc.c2))} + {_mm(abs(sc.c1))}}}{{2}} = {_mm(sl.rod)}\ \text{{mm}}"),
+            "eq_alpha_fast": (rf"\alpha_{{max}} = \arcsin\frac{{a + e}}{{b}} = \arcsin\frac{{{_mm(sl.crank)} + "
+                              rf"{f(e_mm, 2)}}}{{{_mm(sl.rod)}}} = {_deg(sl.alpha_fast, 3)}^\circ"),
+            "eq_alpha_slow": (rf"\alpha_{{w}} = \max\Bigl(\arcsin\frac{{e}}{{b - a}},\ \arcsin\frac{{|a - e|}}{{b}}\Bigr)"
+                              rf" = {_deg(sl.alpha_slow, 3)}^\circ"),
+            "alpha_slow": _deg(sl.alpha_slow, 2), "alpha_fast": _deg(sl.alpha_fast, 2),
+            "allowed": _deg(sl.alpha_allowed, 0),
+        }
+        for item_zh, item_en, val, ref, err in (
+                ("仿真行程 H /mm", "simulated stroke H /mm", _mm(ss.stroke, 10), f(h_mm, 10),
+                 (ss.stroke - sl.stroke) / sl.stroke),
+                ("仿真 K", "simulated K", f(ss.K, 10), f(sl.K, 10), ss.K - sl.K),
+                ("仿真慢行程 αmax /°（参考：闭式解）", "simulated slow-stroke αmax /° (ref.: closed form)",
+                 _deg(ss.alpha_slow, 10), _deg(sl.alpha_slow, 10), ss.alpha_slow - sl.alpha_slow),
+                ("仿真快行程 αmax /°（参考：闭式解）", "simulated fast-stroke αmax /° (ref.: closed form)",
+                 _deg(ss.alpha_fast, 10), _deg(sl.alpha_fast, 10), ss.alpha_fast - sl.alpha_fast)):
+            vrows.append([("偏置曲柄滑块：" if zh else "offset slider-crank: ") + (item_zh if zh else item_en),
+                          val, ref, _verdict(abs(err) < tol)])
+        vrows.append([("偏置曲柄滑块：封闭矢量方程残差 /m" if zh else "offset slider-crank: loop-closure residual /m"),
+                      fe(ss.closure), "0", _verdict(ss.closure < 1e-12)])
+    findings = []
+    for key in ("optimum", "textbook", "slider"):
+        v = r.get(key)
+        for w in getattr(v, "warnings", None) or ():
+            text = w.text(lang)
+            if text not in findings:
+                findings.append(text)
+    far = opt.far_side_gamma
+    ch = r["chart"]
+    d1, d2 = (np.degrees(x) for x in (np.arccos(np.clip(c, -1, 1)) for c in _cosines(best.design)))
+    g1, g2 = min(d1, 180 - d1), min(d2, 180 - d2)
+    if abs(g1 - g2) < 1e-6:
+        where = ("两个共线位置的传动角相等（$\\gamma_{min}(t)$ 的最大值在两条曲线的交点，即折点处）。" if zh else
+                 "The transmission angles of both collinear positions are equal (the maximum of "
+                 "$\\gamma_{min}(t)$ is the kink where the two curves cross).")
+    else:
+        pos_zh = "重叠共线" if g1 < g2 else "拉直共线"
+        pos_en = "overlaps" if g1 < g2 else "extends"
+        where = (f"最小传动角出现在曲柄与机架{pos_zh}的位置（另一位置的传动角为 {f(max(g1, g2), 2)}°），"
+                 "$\\gamma_{min}(t)$ 在最优点是光滑的极大值，而不是两个共线位置传动角相等的折点。" if zh else
+                 f"The minimum occurs where the crank {pos_en} the frame (the other collinear position "
+                 f"has {f(max(g1, g2), 2)}°): $\\gamma_{{min}}(t)$ has a smooth maximum at the optimum, "
+                 "not the kink where the two collinear angles are equal.")
+    return {
+        "meta": brief.report, "fig": figures, "data_rows": data_rows, "eq": eq,
+        "K": f(p.K, 4), "theta": f(th_deg, 4), "psi": _deg(p.swing, 2), "l3": _mm(p.rocker, 2),
+        "K_given": p.K_given,
+        "opt": {"l1": _mm(best.design.crank), "l2": _mm(best.design.coupler),
+                "l3": _mm(best.design.rocker), "l4": _mm(best.design.frame),
+                "ratio": f(best.design.rocker / best.design.frame, 4),
+                "gamma_min": _deg(best.gamma_min, 3), "t": _deg(best.position, 4),
+                "ac1": _mm(ac1), "ac2": _mm(ac2), "kind": best.grashof,
+                "far": None if far is None else _deg(far, 2), "where": where},
+        "with_speed": p.crank_speed_rpm is not None,
+        "textbook": textbook,
+        "cmp_head": (["设计", "l1/mm", "l2/mm", "l3/mm", "l4/mm", "θ/°", "ψ/°", "K", "γmin/°"] if zh else
+                     ["design", "l1/mm", "l2/mm", "l3/mm", "l4/mm", "θ/°", "ψ/°", "K", "γmin/°"]),
+        "cmp_rows": cmp_rows + [spec_row], "cmp_align": "|".join([":--"] + ["--:"] * 8),
+        "paper_notes": paper_notes, "compare_miss": ("、" if zh else ", ").join(missing), "has_compare": bool(r["compare"]),
+        "chart": {"thetas": ", ".join(f"{t * DEG:g}°" for t in ch.thetas),
+                  "from": f(ch.swings[0] * DEG, 0), "to": f(ch.swings[-1] * DEG, 0),
+                  "n": str(len(ch.swings))},
+        "grid": str(p.grid_points), "slider": slider,
+        "verify_rows": vrows, "findings": findings,
+    }
+
+
+def write_data(r: dict, folder: Path) -> list[Path]:
+    """The design chart as CSV (one row per ψ, l3/l4 and γmin per θ)."""
+    import csv
+
+    ch = r["chart"]
+    path = folder / "design_chart.csv"
+    with path.open("w", newline="", encoding="utf-8") as fh:
+        w = csv.writer(fh)
+        w.writerow(["psi_deg"] + [f"l3_over_l4[theta={t * DEG:g}]" for t in ch.thetas] +
+                   [f"gamma_min_deg[theta={t * DEG:g}]" for t in ch.thetas])
+        for j, ps in enumerate(ch.swings):
+            w.writerow([f"{ps * DEG:.4f}"] + [f"{x:.6f}" for x in ch.ratio[:, j]] +
+                       [f"{x * DEG:.6f}" for x in ch.gamma[:, j]])
+    return [path]
