@@ -314,8 +314,11 @@ def resistance_loads(model: LinkageModel, k: LinkageMotion, m: Motion) -> list[P
     for r in model.resistances:
         u = np.exp(1j * r.direction)
         along = (np.conj(u) * m.points[r.point].vel).real
+        # At rest (an extreme position) the force opposes the motion about to start,
+        # whose direction is the acceleration's.
+        ahead = (np.conj(u) * m.points[r.point].acc).real
         scale = np.max(np.abs(along[:k.grid_size])) or 1.0
-        moving = np.where(np.abs(along) > 1e-12 * scale, np.sign(along), 0.0)
+        moving = np.where(np.abs(along) > 1e-12 * scale, np.sign(along), np.sign(ahead))
         magnitude = np.where(working, r.working, r.returning)
         if r.active is not None:
             lo, hi = r.active

@@ -325,7 +325,8 @@ def verification_rows(v, lang: str, k=None) -> list[list[str]]:
          verdict(v.velocity_fd_error, 1e-3)],
         ["加速度与速度中心差分之差（相对）" if zh else "acceleration vs central difference (relative)",
          e(v.acceleration_fd_error), "O(h²)", verdict(v.acceleration_fd_error, 1e-3)],
-        ["功率平衡残差 ΣP / max|M_b ω|" if zh else "power balance ΣP / max|M_b ω|",
+        [r"功率平衡残差 $\Sigma P / \max\lvert M_b\,\omega\rvert$" if zh
+         else r"power balance $\Sigma P / \max\lvert M_b\,\omega\rvert$",
          e(v.power_balance_residual), "≤ 1e-9", verdict(v.power_balance_residual, 1e-9)],
     ]
     if k is not None:

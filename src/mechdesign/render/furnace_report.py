@@ -1,0 +1,380 @@
+"""Prepare the heating-furnace pusher report: figures and the template context (strings
+and rows only). Report units are the course's (mm, °, rpm, N, N·m, W)."""
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+
+from . import figures as fig
+from .fmt import e, f
+
+DEG = 180.0 / np.pi
+MM = 1e3
+
+
+# ------------------------------------------------------------------------------ figures
+
+def _scheme(path: Path, lang: str, syn) -> None:
+    """Left: the six-bar at its two extreme positions with C's arc and the slider guide.
+    Right: the four-bar's θ-circle construction (B1, B2, O1 and the crank circle)."""
+    from .fonts import configure_matplotlib
+
+    configure_matplotlib()
+    import matplotlib
+
+    matplotlib.use("Agg", force=False)
+    import matplotlib.pyplot as plt
+
+    zh = lang == "zh"
+    figure, (left, right) = plt.subplots(1, 2, figsize=(7.0, 5.4),
+                                         gridspec_kw={"width_ratios": [1.0, 1.25]})
+    try:
+        R, c = syn.rocker_DC * MM, syn.rocker_DB * MM
+        half = syn.swing / 2
+        t = np.linspace(-1.5 * half, 1.5 * half, 120)
+        o1 = syn.O1 * MM
+        extremes = ((syn.B1, syn.C1, syn.A_fold, "C0"), (syn.B2, syn.C2, syn.A_ext, "C3"))
+        for ax in (left, right):
+            for radius in (R, c):
+                ax.plot(radius * np.sin(t), radius * np.cos(t), color="0.7", lw=0.7, ls="--")
+            for B, C, A, col in extremes:
+                B, C, A = B * MM, C * MM, A * MM
+                ax.plot([0, C.real], [0, C.imag], color=col, lw=1.6)
+                ax.plot([A.real, B.real], [A.imag, B.imag], color=col, lw=1.1)
+                ax.plot([o1.real, A.real], [o1.imag, A.imag], color=col, lw=2.2)
+                ax.plot([B.real], [B.imag], "o", color=col, ms=3)
+            ring = o1 + syn.crank * MM * np.exp(1j * np.linspace(0, 2 * np.pi, 100))
+            ax.plot(ring.real, ring.imag, color="0.5", lw=0.6)
+            for q in (0j, o1):
+                ax.plot([q.real], [q.imag], "^", color="k", ms=6, zorder=4)
+            ax.set_aspect("equal")
+            ax.grid(True, lw=0.3, color="0.88")
+            ax.set_xlabel("x (mm)")
+        # Left: the slider at both extremes (E1 starts the working stroke).
+        yg = syn.guide_height * MM
+        c_start = syn.C1 if abs(abs(syn.E1 - syn.C1) - syn.link_CE) < 1e-9 * syn.link_CE else syn.C2
+        c_end = syn.C2 if c_start is syn.C1 else syn.C1
+        xs = np.array([syn.E1.real, syn.E2.real, syn.C1.real, syn.C2.real, syn.O1.real, 0.0]) * MM
+        left.plot([xs.min() - 80, xs.max() + 80], [yg, yg], color="0.4", lw=0.8, ls="-.")
+        blk = 14.0
+        for C, E, col in ((c_start, syn.E1, "0.15"), (c_end, syn.E2, "0.55")):
+            C, E = C * MM, E * MM
+            left.plot([C.real, E.real], [C.imag, E.imag], color=col, lw=1.2)
+            left.plot(E.real + blk * np.array([-1, 1, 1, -1, -1]),
+                      yg + 0.6 * blk * np.array([-1, -1, 1, 1, -1]), color=col, lw=1.0)
+        left.annotate("", xy=(syn.E2.real * MM, yg + 45), xytext=(syn.E1.real * MM, yg + 45),
+                      arrowprops=dict(arrowstyle="->", color="C2"))
+        left.text(0.5 * (syn.E1.real + syn.E2.real) * MM, yg + 60, "H", ha="center", fontsize=8,
+                  color="C2")
+        for name, q, dy in (("C1", c_start, -60), ("C2", c_end, -60), ("E1", syn.E1, 22),
+                            ("E2", syn.E2, 22)):
+            left.text(q.real * MM, q.imag * MM + dy, name, fontsize=7, ha="center")
+        left.text(20, -50, "D", fontsize=8)
+        left.text(o1.real + 20, o1.imag - 50, "O1", fontsize=8)
+        left.set_xlim(xs.min() - 350, xs.max() + 200)
+        left.set_ylim(-100, yg + 130)
+        left.set_ylabel("y (mm)")
+        left.set_title("六杆机构的两个极限位置" if zh else "six-bar at its two extremes", fontsize=8)
+        # Right: the θ-circle through B1, B2 on which O1 lies.
+        B1, B2 = syn.B1 * MM, syn.B2 * MM
+        chord = abs(B2 - B1)
+        if syn.theta > 0:
+            rad = chord / (2 * np.sin(syn.theta))
+            mid, nrm = 0.5 * (B1 + B2), 1j * (B2 - B1) / chord
+            h = np.sqrt(max(rad ** 2 - (chord / 2) ** 2, 0.0))
+            centre = min((mid + h * nrm, mid - h * nrm), key=lambda z: abs(abs(z - o1) - rad))
+            circ = centre + rad * np.exp(1j * np.linspace(0, 2 * np.pi, 300))
+            right.plot(circ.real, circ.imag, color="C2", lw=0.9, ls=":")
+            right.plot([centre.real], [centre.imag], "+", color="C2", ms=6)
+            right.text(centre.real + 6, centre.imag + 6, "θ 圆" if zh else "θ-circle", color="C2", fontsize=7)
+        for name, q in (("B1", B1), ("B2", B2), ("A (折叠)" if zh else "A (folded)", syn.A_fold * MM),
+                        ("A (拉直)" if zh else "A (extended)", syn.A_ext * MM)):
+            right.text(q.real + 5, q.imag + 6, name, fontsize=7)
+        right.text(o1.real + 6, o1.imag - 16, "O1", fontsize=8)
+        pts = np.array([B1, B2, o1, syn.A_fold * MM, syn.A_ext * MM])
+        pad = 0.45 * max(np.ptp(pts.real), np.ptp(pts.imag))
+        right.set_xlim(pts.real.min() - pad, pts.real.max() + pad)
+        right.set_ylim(pts.imag.min() - pad, pts.imag.max() + pad)
+        right.set_title(("四杆机构的 θ 圆作图（蓝：折叠极位，红：拉直极位）" if zh else
+                         "four-bar θ-circle (blue: folded, red: extended)"), fontsize=8)
+        figure.tight_layout()
+        figure.savefig(path, dpi=150)
+    finally:
+        plt.close(figure)
+
+
+def _design_chart(path: Path, lang: str, syn) -> None:
+    """γ_min over the cycle and over the working stroke along the allowed arc, against the
+    frame length; the limits and the chosen design."""
+    zh = lang == "zh"
+    ps, g, gw, d = syn.scan
+    with fig.figure(path, 1, (7.0, 3.4)) as (ax,):
+        ax.plot(d * MM, g * DEG, color="C0", lw=1.4,
+                label="全周期最小传动角 $\\gamma_{min}$" if zh else "$\\gamma_{min}$ over the cycle")
+        ax.plot(d * MM, gw * DEG, color="C1", lw=1.4,
+                label="工作行程最小传动角" if zh else "$\\gamma_{min}$ over the working stroke")
+        ax.axhline(syn.gamma_limit * DEG, color="C2", ls=":", lw=0.9,
+                   label=f"[γ] = {syn.gamma_limit * DEG:.0f}°")
+        if syn.limit_rocker:
+            ax.axhline(90 - syn.alpha_limit * DEG, color="C3", ls="--", lw=0.9,
+                       label=f"90° − [α] = {90 - syn.alpha_limit * DEG:.0f}°")
+        ax.plot([syn.frame * MM], [syn.gamma_min * DEG], "o", color="C0", ms=5)
+        ax.plot([syn.frame * MM], [syn.gamma_work * DEG], "o", color="C1", ms=5)
+        ax.axvline(syn.frame * MM, color="0.5", lw=0.6)
+        ax.set_ylim(0, 90)
+        ax.set_xlabel("机架长 $l_{O_1D}$ (mm)" if zh else "frame $l_{O_1D}$ (mm)")
+        ax.set_ylabel("传动角 (°)" if zh else "transmission angle (°)")
+        ax.grid(True, lw=0.4, color="0.85")
+        ax.legend(fontsize=7, loc="lower center", ncol=2)
+
+
+def make_figures(r: dict, fig_dir: Path, lang: str) -> dict[str, str]:
+    from .linkage_report import make_linkage_figures
+
+    syn = r["synthesis"]
+    paths = {}
+
+    def out(name):
+        paths[name] = f"{fig_dir.name}/{name}.png"
+        return fig_dir / f"{name}.png"
+
+    _scheme(out("furnace_scheme"), lang, syn)
+    _design_chart(out("furnace_chart"), lang, syn)
+    paths.update(make_linkage_figures(r["model"], r["linkage"], r["linkage_forces"],
+                                      r["linkage_flywheel"], fig_dir, lang))
+    return paths
+
+
+def animate(r: dict, path: Path, lang: str) -> Path:
+    """GIF of the six-bar over one revolution."""
+    from .animation import linkage_gif
+
+    return linkage_gif(r["model"], r["linkage"], path, lang)
+
+
+# ------------------------------------------------------------------------------ context
+
+def _ok(flag: bool, zh: bool) -> str:
+    return ("满足" if zh else "ok") if flag else ("不满足" if zh else "fails")
+
+
+def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
+    from .linkage_report import linkage_context, verification_rows
+
+    zh = lang == "zh"
+    p, syn, chk = r["params"], r["synthesis"], r["pusher_check"]
+    pp, ps = p.pusher, brief.pusher
+    k, frc, v = r["linkage"], r["linkage_forces"], r["linkage_verification"]
+    n = k.grid_size
+    H, R, L = syn.stroke * MM, syn.rocker_DC * MM, syn.link_CE * MM
+    a, b, c, d = syn.crank * MM, syn.coupler * MM, syn.rocker_DB * MM, syn.frame * MM
+    th, psi = syn.theta * DEG, syn.swing * DEG
+    sag = syn.sagitta * MM
+    chord = abs(syn.B2 - syn.B1) * MM
+    o1b1, o1b2 = abs(syn.B1 - syn.O1) * MM, abs(syn.B2 - syn.O1) * MM
+    lim = syn.alpha_limit * DEG
+    sense = ("顺时针" if syn.sense < 0 else "逆时针") if zh else \
+        ("clockwise" if syn.sense < 0 else "counter-clockwise")
+    towards = "+x" if syn.working_direction > 0 else "−x"
+
+    data_rows = [
+        ["$H$", "滑块行程" if zh else "slider stroke", f(ps.stroke_H_mm, 0), "mm"],
+        ["$n$", "滑块往复次数（曲柄转速）" if zh else "strokes per minute (crank speed)",
+         f(ps.strokes_per_min, 0), "1/min"],
+        ["$K$", "行程速比系数" if zh else "time ratio", f(ps.time_ratio_K, 2), "—"],
+        ["$l_{DC}$", "摇杆 DC" if zh else "rocker DC", f(ps.rocker_DC_mm, 0), "mm"],
+        ["$l_{CE}$", "连杆 CE" if zh else "link CE", f(ps.link_CE_mm, 0), "mm"],
+        ["$[\\alpha]$", "工作行程最大压力角" if zh else "largest pressure angle, working stroke",
+         f(ps.pressure_angle_max_deg, 0), "°"],
+        ["$F_{r1}$", "工作行程阻力（含摩擦）" if zh else "working-stroke resistance (incl. friction)",
+         f(ps.working_force_N, 0), "N"],
+        ["$F_{r2}$", "回程阻力（含摩擦）" if zh else "return-stroke resistance (incl. friction)",
+         f(ps.return_force_N, 0), "N"],
+    ]
+    choice_rows = [
+        ["曲柄转向" if zh else "crank rotation", sense,
+         (f"工作行程（慢行程）推向 {towards}" if zh else f"the slow working stroke pushes towards {towards}")],
+        ["$l_{DB}/l_{DC}$", f(ps.rocker_ratio_DB_DC, 3),
+         ("B 在摇杆上的位置，只决定四杆机构的大小，不影响其角度" if zh else
+          "where B sits on the rocker: sets the four-bar's size, not its angles")],
+        ["$l_{O_1D}$", ("auto（按准则优化）" if zh else "auto (optimised)") if pp.frame is None
+         else f(pp.frame * MM, 2) + " mm",
+         ("最大化全周期最小传动角 $\\gamma_{min}$，且工作行程中 B 点压力角不超过 $[\\alpha]$" if zh else
+          "maximise $\\gamma_{min}$ over the cycle, the pressure angle at B within $[\\alpha]$ in the working stroke")
+         if pp.frame is None else ("给定机架长" if zh else "frame given")],
+        ["$e$", f(pp.guide_offset * MM, 2) + " mm",
+         ("导路相对 C 点圆弧弦高中点的偏移" if zh else "guide offset from the middle of the sagitta of C's arc")],
+        ["$[\\gamma]$", f(ps.transmission_angle_min_deg, 0) + "°",
+         ("全周期最小传动角的许用值" if zh else "smallest acceptable transmission angle")],
+    ]
+    cos_h = np.cos(syn.swing / 2)
+    eq = {
+        "psi": (rf"\psi = 2\arcsin\frac{{H}}{{2\,l_{{DC}}}} = 2\arcsin\frac{{{f(H, 0)}}}{{2 \times {f(R, 0)}}}"
+                rf" = {f(psi, 4)}°"),
+        "theta": (rf"\theta = 180° \times \frac{{K-1}}{{K+1}} = 180° \times \frac{{{f(pp.time_ratio_K, 2)}-1}}"
+                  rf"{{{f(pp.time_ratio_K, 2)}+1}} = {f(th, 4)}°"),
+        "sagitta": (rf"f = l_{{DC}}\left(1-\cos\frac{{\psi}}{{2}}\right) = {f(R, 0)} \times (1 - {f(cos_h, 6)})"
+                    rf" = {f(sag, 3)}\ \text{{mm}}"),
+        "guide": (rf"y_g = l_{{DC}}\,\frac{{1+\cos(\psi/2)}}{{2}} + e = {f(R, 0)} \times \frac{{1+{f(cos_h, 6)}}}{{2}}"
+                  rf" + {f(syn.guide_offset * MM, 2)} = {f(syn.guide_height * MM, 3)}\ \text{{mm}}"),
+        "alphaE": (rf"\alpha_{{E,max}} = \arcsin\frac{{f/2 + \lvert e\rvert}}{{l_{{CE}}}} = \arcsin\frac{{{f(sag / 2, 3)} + "
+                   rf"{f(abs(syn.guide_offset) * MM, 2)}}}{{{f(L, 0)}}} = {f(syn.alpha_E * DEG, 4)}°"),
+        "band": (rf"\lvert e\rvert \le l_{{CE}}\sin[\alpha] - \frac{{f}}{{2}} = {f(L, 0)} \times \sin {f(lim, 0)}° - "
+                 rf"{f(sag / 2, 3)} = {f(syn.guide_offset_max * MM, 2)}\ \text{{mm}}"),
+        "db": (rf"l_{{DB}} = {f(pp.rocker_ratio, 3)}\,l_{{DC}} = {f(c, 2)}\ \text{{mm}}, \quad "
+               rf"B_1B_2 = 2\,l_{{DB}}\sin\frac{{\psi}}{{2}} = {f(chord, 3)}\ \text{{mm}}"),
+        "radius": (rf"r_\theta = \frac{{B_1B_2}}{{2\sin\theta}} = \frac{{{f(chord, 3)}}}{{2\sin {f(th, 2)}°}}"
+                   rf" = {f(chord / (2 * np.sin(syn.theta)), 3) if syn.theta > 0 else '∞'}\ \text{{mm}}"),
+        "a": (rf"a = \frac{{O_1B_2 - O_1B_1}}{{2}} = \frac{{{f(o1b2, 3)} - {f(o1b1, 3)}}}{{2}} = {f(a, 3)}\ "
+              rf"\text{{mm}}"),
+        "b": (rf"b = \frac{{O_1B_2 + O_1B_1}}{{2}} = \frac{{{f(o1b2, 3)} + {f(o1b1, 3)}}}{{2}} = {f(b, 3)}\ "
+              rf"\text{{mm}}, \quad d = O_1D = {f(d, 3)}\ \text{{mm}}"),
+        "eq1": r"B_1B_2^2 = (b-a)^2 + (b+a)^2 - 2(b-a)(b+a)\cos\theta",
+        "eq1n": (rf"{f(o1b1, 3)}^2 + {f(o1b2, 3)}^2 - 2 \times {f(o1b1, 3)} \times {f(o1b2, 3)} "
+                 rf"\cos {f(th, 2)}° = {f(chord ** 2, 3)} = {f(chord, 3)}^2"),
+        "delta": r"\cos\delta = \frac{b^2 + c^2 - (d \mp a)^2}{2bc}, \quad \gamma = \min(\delta,\ 180° - \delta)",
+        "gamma": (rf"\gamma_{{min}} = {f(syn.gamma_min * DEG, 3)}°, \quad "
+                  rf"\gamma_{{max}} = {f(syn.gamma_max * DEG, 3)}°"),
+        "gwork": (rf"\alpha_B = 90° - \gamma_{{work,min}} = 90° - {f(syn.gamma_work * DEG, 3)}° = "
+                  rf"{f(syn.alpha_B * DEG, 3)}°"),
+        "torque": r"M_b\,\omega = F_r\,\lvert v_E\rvert \quad\Rightarrow\quad M_b = \frac{F_r\,\lvert v_E\rvert}{\omega}",
+        "hand": (rf"\bar P = \frac{{(F_{{r1}} + F_{{r2}})\,H\,n}}{{60}} = \frac{{({f(pp.working_force, 0)} + "
+                 rf"{f(pp.return_force, 0)}) \times {f(pp.stroke, 3)} \times {f(pp.crank_speed_rpm, 0)}}}{{60}}"
+                 rf" = {f(chk.hand_power, 3)}\ \text{{W}}"),
+        "mean": (rf"\bar P = \bar M_b\,\omega = {f(chk.mean_torque, 4)} \times {f(abs(pp.crank_omega), 5)} = "
+                 rf"{f(chk.mean_power, 4)}\ \text{{W}}"),
+    }
+    syn_rows = [
+        ["$\\theta$", "极位夹角" if zh else "extreme-position angle", f(th, 4), "°"],
+        ["$\\psi$", "摇杆摆角" if zh else "rocker swing", f(psi, 4), "°"],
+        ["$l_{O_1A}=a$", "曲柄" if zh else "crank", f(a, 3), "mm"],
+        ["$l_{AB}=b$", "连杆" if zh else "coupler", f(b, 3), "mm"],
+        ["$l_{DB}=c$", "摇杆（至 B）" if zh else "rocker (to B)", f(c, 3), "mm"],
+        ["$l_{DC}$", "摇杆（至 C）" if zh else "rocker (to C)", f(R, 3), "mm"],
+        ["$l_{O_1D}=d$", "机架" if zh else "frame", f(d, 3), "mm"],
+        ["$O_1$", "曲柄回转中心（D 为原点）" if zh else "crank pivot (D the origin)",
+         f"({f(syn.O1.real * MM, 3)}, {f(syn.O1.imag * MM, 3)})", "mm"],
+        ["$l_{CE}$", "连杆 CE" if zh else "link CE", f(L, 3), "mm"],
+        ["$y_g$", "滑块导路高度（D 之上）" if zh else "slider guide above D", f(syn.guide_height * MM, 3), "mm"],
+        ["$\\gamma_{min}$", "四杆机构最小传动角" if zh else "four-bar minimum transmission angle",
+         f(syn.gamma_min * DEG, 3), "°"],
+        ["$\\alpha_B$", "工作行程 B 点最大压力角" if zh else "largest pressure angle at B, working stroke",
+         f(syn.alpha_B * DEG, 3), "°"],
+        ["$\\alpha_E$", "工作行程 E 点最大压力角" if zh else "largest pressure angle at E, working stroke",
+         f(syn.alpha_E * DEG, 3), "°"],
+    ]
+    names = {"stroke": ("行程", "stroke"), "chord": ("弦长", "chord"), "eq1": ("方程 (1)", "equation (1)"),
+             "folded": ("折叠极位", "folded extreme"), "extended": ("拉直极位", "extended extreme"),
+             "frame": ("机架", "frame"), "theta": ("极位夹角", "extreme angle"), "K": ("K", "K")}
+    res_rows = [[names[nm][0 if zh else 1], f"${eqn}$", e(val)] for nm, eqn, val in syn.residuals]
+    sd = syn.seed
+    seed_rows = [
+        [("(一) 原文：$(a+b)^2+(b-a)^2-2(a+b)(b-a)\\cos 30° = B_1B_2^2$" if zh else
+          "(1) as printed: $(a+b)^2+(b-a)^2-2(a+b)(b-a)\\cos 30° = B_1B_2^2$"),
+         f"{f(sd.chord_printed * MM, 2)}²", f"{f(sd.chord * MM, 2)}²",
+         f(sd.eq1_printed * 1e6, 0) + " mm²"],
+        [("(一) 改用正确的 θ = " if zh else "(1) with the correct θ = ") + f"{f(th, 0)}°",
+         f"{f(sd.chord_correct * MM, 2)}²", f"{f(sd.chord * MM, 2)}²",
+         f(sd.eq1_correct * 1e6, 0) + " mm²"],
+        [("(二) 原文：$\\arccos\\frac{b^2+1150^2-(a+505.37)^2}{2300\\,b} + 30° = 180°$" if zh else
+          "(2) as printed: $\\arccos\\frac{b^2+1150^2-(a+505.37)^2}{2300\\,b} + 30° = 180°$"),
+         f(sd.eq3_lhs * DEG, 2) + "°", "180°", f((sd.eq3_lhs - np.pi) * DEG, 2) + "°"],
+    ]
+    seed_sim_rows = [
+        ["$K$", f(sd.time_ratio, 4), f(pp.time_ratio_K, 2)],
+        ["$\\theta$ /°", f(sd.theta * DEG, 3), f(th, 3)],
+        ["$\\psi$ /°", f(sd.swing * DEG, 3), f(psi, 3)],
+        [("C 点弦长（≈ 滑块行程）/mm" if zh else "chord of C (≈ the stroke) / mm"),
+         f(sd.stroke_C * MM, 2), f(H, 0)],
+        ["$\\gamma_{min}$ /°", f(sd.gamma_min * DEG, 2), "≥ " + f(syn.gamma_limit * DEG, 0)],
+    ]
+    side_txt = {
+        1: ("O1 位于 B1B2 弦靠近 D 的一侧（教材的 θ 圆）", "O1 on D's side of the chord B1B2 (the textbook's θ-circle)"),
+        -1: ("O1 位于 B1B2 弦背离 D 的一侧（镜像 θ 圆）", "O1 beyond the chord B1B2 (the mirror θ-circle)"),
+    }[syn.side][0 if zh else 1]
+    if syn.criterion == "max_gamma":
+        if syn.constraint_active:
+            crit = (f"B 点压力角限制起作用：O1 取在工作行程最小传动角恰为 {f(90 - lim, 0)}° 处；不加此限制时最大 $\\gamma_{{min}}$ 为 "
+                    f"{f(syn.gamma_unconstrained * DEG, 3)}°。" if zh else
+                    f"the limit at B is active: O1 sits where the working-stroke transmission angle is exactly "
+                    f"{f(90 - lim, 0)}°; without it the best $\\gamma_{{min}}$ would be {f(syn.gamma_unconstrained * DEG, 3)}°.")
+        elif not syn.limit_rocker:
+            crit = ("B 点压力角不设限。" if zh else "the pressure angle at B is not limited.")
+        else:
+            crit = ("最优点处 B 点压力角限制不起作用（$\\gamma_{min}$ 的无约束最大值即满足它）。" if zh else
+                    "the limit at B is not active at the optimum (the unconstrained maximum of $\\gamma_{min}$ meets it).")
+        other = (f"另一侧 θ 圆上 $\\gamma_{{min}}$ 最大只有 {f(syn.gamma_other_side_free * DEG, 3)}°"
+                 + ("，且不能满足 B 点压力角限制" if syn.limit_rocker and syn.gamma_other_side == 0 else "")
+                 + "。") if zh else (
+                 f"On the other θ-circle the best $\\gamma_{{min}}$ is only {f(syn.gamma_other_side_free * DEG, 3)}°"
+                 + (", and it cannot meet the limit at B" if syn.limit_rocker and syn.gamma_other_side == 0 else "")
+                 + ".")
+    else:
+        crit = ("机架长由设计任务给定，O1 为 θ 圆与以 D 为圆心、半径 d 的圆的交点。" if zh else
+                "the frame is given: O1 is where the circle of radius d about D cuts the θ-circle.")
+        other = ""
+    # Torque: kinetostatics against virtual work at the positions.
+    labels = [lab.replace("'", "′") for lab in k.positions.labels]
+    torque_rows = []
+    for i, label in enumerate(labels):
+        j = n + i
+        torque_rows.append([label, f(k.phase[j] * DEG, 2), f(k.v[j], 4), f(chk.resistance_force[j], 0),
+                            f(frc.balancing_torque[j], 4), f(chk.virtual_work_torque[j], 4)])
+    lk = linkage_context(r["model"], k, frc, r["linkage_flywheel"], v, figures, lang,
+                         title="机构运动分析与曲柄驱动力矩" if zh else "Kinematics and crank driving torque")
+    drive = None
+    if r.get("drive") is not None:
+        from .drive_report import drive_context
+
+        pw = (rf"P_w = \bar M_b\,\omega = {f(chk.mean_torque, 4)} \times {f(abs(pp.crank_omega), 5)} = "
+              rf"{f(chk.mean_power, 3)}\ \text{{W}}")
+        drive = drive_context(r["drive"], lang, figures, pw)
+        drive["peak"] = None        # no flywheel: the note is in this report's own text
+    tol = 1e-6
+    verify_rows = [
+        ["仿真行程（位置搜索）/mm" if zh else "simulated stroke (position search) / mm",
+         f(chk.stroke * MM, 6), f"H = {f(H, 0)}", _ok(abs(chk.stroke_error) <= tol * pp.stroke, zh)],
+        ["仿真行程速比系数 K" if zh else "simulated time ratio K", f(chk.time_ratio, 6),
+         f(pp.time_ratio_K, 2), _ok(abs(chk.time_ratio - pp.time_ratio_K) <= tol, zh)],
+        ["工作行程 E 点最大压力角 /°" if zh else "largest pressure angle at E, working stroke / °",
+         f(chk.alpha_E_work * DEG, 4), f"≤ {f(lim, 0)}（{f(syn.alpha_E * DEG, 4)}）" if zh else
+         f"≤ {f(lim, 0)} ({f(syn.alpha_E * DEG, 4)})", _ok(chk.alpha_E_work <= syn.alpha_limit + 1e-9, zh)],
+        ["工作行程 B 点最大压力角 /°" if zh else "largest pressure angle at B, working stroke / °",
+         f(chk.alpha_B_work * DEG, 4),
+         (f"≤ {f(lim, 0)}" if pp.limit_rocker else "—") + f" ({f(syn.alpha_B * DEG, 4)})",
+         _ok(chk.alpha_B_work <= syn.alpha_limit + 1e-9, zh) if pp.limit_rocker else "—"],
+        ["四杆机构最小传动角 /°" if zh else "four-bar minimum transmission angle / °",
+         f(chk.gamma_min * DEG, 4), f"≥ {f(syn.gamma_limit * DEG, 0)} ({f(syn.gamma_min * DEG, 4)})",
+         _ok(chk.gamma_min >= syn.gamma_limit - 1e-9, zh)],
+        ["平均驱动功率 $\\bar M_b\\,\\omega$ /W" if zh else "mean driving power $\\bar M_b\\,\\omega$ / W",
+         f(chk.mean_power, 4),
+         (f"阻力功率平均 {f(chk.resistance_power, 4)}；手算 {f(chk.hand_power, 4)}" if zh else
+          f"mean resistance power {f(chk.resistance_power, 4)}; by hand {f(chk.hand_power, 4)}"),
+         _ok(abs(chk.mean_power - chk.hand_power) <= 1e-4 * chk.hand_power, zh)],
+        ["$M_b$ 与虚功原理 $F_r\\lvert v_E\\rvert/\\omega$ 之差（相对）" if zh else
+         "$M_b$ vs virtual work $F_r\\lvert v_E\\rvert/\\omega$ (relative)",
+         e(chk.virtual_work_error), "≤ 1e-9", _ok(chk.virtual_work_error <= 1e-9, zh)],
+    ] + verification_rows(v, lang, k)
+    # A bare "|" would split a pipe-table cell: escape it (math uses \lvert … \rvert).
+    verify_rows = [[cell.replace("|", "\\|") for cell in row] for row in verify_rows]
+    findings = [w.text(lang) for key in ("synthesis", "linkage_verification", "pusher_check")
+                for w in (getattr(r[key], "warnings", ()) or ())]
+    return {
+        "meta": brief.report, "fig": figures, "data_rows": data_rows, "choice_rows": choice_rows,
+        "eq": eq, "syn_rows": syn_rows, "res_rows": res_rows, "seed_rows": seed_rows,
+        "seed_sim_rows": seed_sim_rows, "side": side_txt, "criterion": crit, "other_side": other,
+        "sense": sense, "towards": towards, "linkage": lk, "torque_rows": torque_rows,
+        "drive": drive, "verify_rows": verify_rows, "findings": findings,
+        "H": f(H, 0), "n": f(pp.crank_speed_rpm, 0), "K": f(pp.time_ratio_K, 2),
+        "DC": f(R, 0), "CE": f(L, 0), "lim": f(lim, 0), "gam_lim": f(syn.gamma_limit * DEG, 0),
+        "lim_B": f(90 - lim, 0), "limit_rocker": pp.limit_rocker,
+        "gamma_min": f(syn.gamma_min * DEG, 3), "alpha_B": f(syn.alpha_B * DEG, 3),
+        "alpha_E": f(syn.alpha_E * DEG, 4),
+        "seed_a": f(sd.crank * MM, 2), "seed_b": f(sd.coupler * MM, 2),
+        "seed_d": f(sd.frame * MM, 2), "seed_c": f(sd.rocker * MM, 0), "seed_chord": f(sd.chord * MM, 2),
+        "mean_torque": f(chk.mean_torque, 4), "mean_power": f(chk.mean_power, 4),
+        "peak_torque": f(chk.peak_torque, 3), "peak_factor": f(chk.peak_factor, 3),
+        "hand_power": f(chk.hand_power, 3), "seed_power": f(2 * pp.working_force * pp.stroke
+                                                            * pp.crank_speed_rpm / 60.0, 3),
+    }
