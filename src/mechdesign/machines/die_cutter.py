@@ -1,0 +1,660 @@
+"""Semi-automatic flat die-cutter (半自动平压模切机, seed 001b), composed from shared stages.
+
+Scheme: one distribution shaft (分配轴), one turn per sheet, drives
+
+* the toggle press (肘杆机构): crank O1A (link 2), coupler AB (3), toggle links CB (4,
+  pivot C on the frame) and BD (5), lower platen D (6) on a vertical guide through C;
+  four-bar O1-A-B-C plus an RRP dyad. Near the top dead centre CB and BD are almost in
+  line, so the platen's speed v_D tends to zero while the crank turns on: the pressing
+  force the crank torque M can produce, F = M ω / v_D (virtual work), grows without bound;
+* the gripper-opening cam (the shared cam stage);
+* the incomplete gear (不完全齿轮) driving the gripper chain's sprocket.
+
+Synthesis of the press (analytic, :func:`toggle_synthesis`): with C at the origin and the
+platen guide the vertical through C, the platen height above C is
+y(β) = l_CB cos β + √(l_BD² − l_CB² sin² β), β the angle of CB from the guide. The top
+is at β = ε (0: the toggle straight), the bottom at β = ε + ψ, so the stroke
+H = y(ε) − y(ε + ψ) fixes the rocker swing ψ (y falls monotonically on 0 … 90°, one root).
+CB is the rocker of the crank-rocker O1ABC; K and ψ give it by the θ-circle construction
+(:mod:`mechdesign.core.fourbar`): the crank pivot with the largest minimum transmission
+angle, or the one at the given frame O1C. The extreme of the rocker at the platen's top is
+the extended (crank and coupler in line) or the folded one; the drawing is mirrored when
+needed so that the rise is the slow stroke (K > 1) in the brief's sense of rotation.
+
+Stages: the synthesis, the shared linkage stages on the press (prefix ``press``), the force
+amplification, the drive, the flywheel on the chosen drive shaft, the cam, the incomplete
+gear with the chain, the motion cycle diagram, and this machine's own checks.
+Coordinates: C at the origin, y up; SI units throughout.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+from scipy.optimize import brentq
+
+from ..brief.die_cutter import DieCutterParams, PressGeometry
+from ..core import cycle as cy
+from ..core import flywheel as fw
+from ..core import fourbar
+from ..core.kinetostatics import Body, PointLoad, solve_forces
+from ..core.mechanism import RRP, RRR, Crank, LinkPoint, Mechanism
+from ..core.synthesis import extreme_angle
+from ..pipeline import Stage
+from .findings import Finding
+from .linkage import LinkageModel, Output, Resistance, linkage_stages
+
+TWO_PI = 2.0 * np.pi
+DEG = 180.0 / np.pi
+FRAME = "1"
+
+
+# --------------------------------------------------------------------------- synthesis
+
+
+def toggle_height(beta, l_cb: float, l_bd: float):
+    """Platen height above C [m] with CB at ``beta`` [rad] from the vertical guide."""
+    beta = np.asarray(beta, dtype=float)
+    return l_cb * np.cos(beta) + np.sqrt(l_bd ** 2 - (l_cb * np.sin(beta)) ** 2)
+
+
+def _max_beta(l_cb: float, l_bd: float) -> float:
+    """Largest β the toggle reaches below the guide's end: 90°, or where BD would have to
+    lie flat (l_BD < l_CB)."""
+    return np.pi / 2 if l_bd >= l_cb else float(np.arcsin(l_bd / l_cb))
+
+
+def toggle_swing(g: PressGeometry) -> float:
+    """Rocker swing ψ [rad] giving the stroke: y(ε) − y(ε + ψ) = H (Brent's method)."""
+    lt, ld, eps, H = g.toggle_CB, g.toggle_BD, g.top_angle, g.stroke
+    beta_max = _max_beta(lt, ld)
+    if eps >= beta_max:
+        raise fourbar.SynthesisError(
+            f"toggle_angle_at_top_deg = {eps * DEG:g}° leaves no swing (the toggle lies flat at "
+            f"{beta_max * DEG:.3g}°)")
+    top = float(toggle_height(eps, lt, ld))
+    h_max = top - float(toggle_height(beta_max, lt, ld))
+    # the rocker must swing less than the crank-rocker allows; keep ψ below 120° in any case
+    psi_cap = min(beta_max - eps, np.radians(120.0))
+    h_cap = top - float(toggle_height(eps + psi_cap, lt, ld))
+    if not H < min(h_max, h_cap):
+        raise fourbar.SynthesisError(
+            f"stroke_H_mm = {H * 1e3:g} cannot be reached: toggle links CB = {lt * 1e3:g} mm and "
+            f"BD = {ld * 1e3:g} mm give at most {min(h_max, h_cap) * 1e3:.4g} mm; lengthen CB or "
+            "reduce the stroke")
+    return float(brentq(lambda psi: top - float(toggle_height(eps + psi, lt, ld)) - H,
+                        1e-12, psi_cap, xtol=1e-15, rtol=4 * np.finfo(float).eps))
+
+
+@dataclass(frozen=True)
+class ToggleDesign:
+    """Stage 肘杆机构设计: the toggle press's dimensions and placement (C at the origin) [m, rad]."""
+
+    geometry: PressGeometry
+    swing: float                # ψ of CB
+    theta: float                # extreme-position angle θ of the crank-rocker
+    four: fourbar.FourBar       # crank a = O1A, coupler b = AB, rocker c = CB, frame d = O1C
+    gamma_min: float            # minimum transmission angle (closed form)
+    gamma_max: float
+    O1: complex                 # crank pivot
+    B_top: complex              # B when the platen is at its top
+    B_bottom: complex
+    crank_top: float            # crank angle at the platen's top [rad, CCW from +x]
+    crank_bottom: float
+    branch: int                 # assembly branch of the RRR group (A, C → B)
+    mirrored: bool              # the θ-circle drawing mirrored to make the rise the slow stroke
+    top_height: float           # y_D at the top, above C
+    bottom_height: float
+    rising_span: float          # crank angle of the rise (π + θ)
+
+
+def toggle_synthesis(g: PressGeometry) -> ToggleDesign:
+    """Dimensions and placement of the toggle press (see the module docstring).
+
+    Raises :class:`~mechdesign.core.fourbar.SynthesisError` naming what to change."""
+    lt, ld, eps = g.toggle_CB, g.toggle_BD, g.top_angle
+    psi = toggle_swing(g)
+    theta = float(extreme_angle(g.K))
+    cons = fourbar.circle_construction(g.K, psi, lt)
+    if g.frame is None:
+        p, _ = fourbar.optimal_position(g.K, psi, lt)
+    else:
+        p = fourbar.position_for_frame(cons, g.frame)
+    a_pt = complex(cons.point(p))
+    a, b, d = (float(x) for x in cons.designs(p))
+    four = fourbar.FourBar(a, b, lt, d)
+    ok, kind = fourbar.grashof(four)
+    if not (ok and kind == "crank-rocker"):
+        raise fourbar.SynthesisError(f"the four-bar O1ABC comes out a {kind}, not a crank-rocker; "
+                                     "change K or the toggle lengths")
+    gmin, gmax = fourbar.transmission_angle_extremes(four)
+    top, other = (cons.c2, cons.c1) if g.top_position == "extended" else (cons.c1, cons.c2)
+    rot = np.exp(1j * (np.pi / 2 - np.angle(top)))
+    side = 1.0 if (other * rot).real > 0 else -1.0
+    rot *= np.exp(-1j * side * eps)             # CB leans ε towards the side it swings to
+    o1, b_top, b_bot = a_pt * rot, top * rot, other * rot
+
+    def crank_angles(o1, b_top, b_bot):
+        ext = g.top_position == "extended"
+        at_top = np.angle(b_top - o1) if ext else np.angle(o1 - b_top)
+        at_bot = np.angle(o1 - b_bot) if ext else np.angle(b_bot - o1)
+        return float(at_top), float(at_bot)
+
+    c_top, c_bot = crank_angles(o1, b_top, b_bot)
+    mirrored = (g.sense * (c_top - c_bot)) % TWO_PI < np.pi
+    if mirrored:                                # x → −x reverses the timing
+        o1, b_top, b_bot = (complex(-z.real, z.imag) for z in (o1, b_top, b_bot))
+        c_top, c_bot = crank_angles(o1, b_top, b_bot)
+    span = float((g.sense * (c_top - c_bot)) % TWO_PI)
+    a_top = o1 + a * np.exp(1j * c_top)
+    cross = ((np.conj(0j - a_top)) * (b_top - a_top)).imag
+    return ToggleDesign(g, psi, theta, four, gmin, gmax, complex(o1), complex(b_top),
+                        complex(b_bot), c_top, c_bot, 1 if cross > 0 else -1, bool(mirrored),
+                        float(toggle_height(eps, lt, ld)), float(toggle_height(eps + psi, lt, ld)),
+                        span)
+
+
+def build_press(d: ToggleDesign, p: DieCutterParams) -> LinkageModel:
+    """The press as a crank, an RRR dyad (AB, CB), an RRP dyad (BD, platen) and the centres
+    of mass; the platen's mass and the die-cutting resistance over the last
+    ``pressing_travel`` of the rise."""
+    fb, g = d.four, d.geometry
+    m = Mechanism(FRAME, {"C": 0j, "O1": d.O1})
+    m.add(Crank("crank O1A", "2", "O1", "A", fb.crank, p.crank_omega))
+    m.add(RRR("RRR A-B-C", "3", "4", "A", "C", "B", fb.coupler, fb.rocker, d.branch))
+    m.add(RRP("RRP B-D", "5", "6", "B", "D", g.toggle_BD, 0j, np.pi / 2, 1, FRAME))
+    m_ab, m_cb, m_bd = p.link_masses
+    bodies = [Body("6", p.platen_mass, "D", 0.0)]
+    for link, mass, origin, name, length in (("3", m_ab, "A", "S3", fb.coupler),
+                                             ("4", m_cb, "C", "S4", fb.rocker),
+                                             ("5", m_bd, "B", "S5", g.toggle_BD)):
+        if mass > 0:
+            m.add(LinkPoint(name, link, origin, length / 2))
+            bodies.append(Body(link, mass, name, mass * length ** 2 / 12.0))
+    H, t = g.stroke, p.pressing_travel
+    cut = Resistance("6", "D", np.pi / 2, p.cutting_force, 0.0, (H - t, H))
+    names = {"2": ("曲柄", "crank"), "3": ("连杆 AB", "coupler AB"), "4": ("肘杆 CB", "toggle CB"),
+             "5": ("肘杆 BD", "toggle BD"), "6": ("下模板", "platen")}
+    return LinkageModel(
+        mechanism=m, crank_omega=p.crank_omega, output=Output("point", "D", np.pi / 2, 1),
+        bodies=tuple(bodies), resistances=(cut,), grid_points=p.grid_points,
+        position_step=p.position_step, gravity=p.gravity, flywheel=None,
+        pressure_angle_limit=p.pressure_angle_max, transmission_angle_min=p.transmission_angle_min,
+        names=names)
+
+
+def synthesis(p: DieCutterParams) -> tuple[ToggleDesign, LinkageModel]:
+    d = toggle_synthesis(p.geometry)
+    return d, build_press(d, p)
+
+
+# --------------------------------------------------------------------------- force amplification
+
+
+@dataclass(frozen=True)
+class PlatenTiming:
+    """Crank phases (from position 1, the platen's bottom) where the platen crosses the
+    clearance level H − c and the pressing level H − t, rising and falling [rad]."""
+
+    clear_up: float
+    press_up: float
+    top: float
+    press_down: float
+    clear_down: float
+
+    @property
+    def clear_span(self) -> float:
+        """Shaft angle during which the platen is at least c below its top [rad]."""
+        return self.clear_up + TWO_PI - self.clear_down
+
+    @property
+    def press_span(self) -> float:
+        """Rise through the pressing travel (force acting) [rad]."""
+        return self.top - self.press_up
+
+
+def _platen_s(model: LinkageModel, k, phase: float) -> float:
+    z = model.mechanism.solve(np.array([k.start_angle + k.sense * phase])).points["D"].pos[0]
+    return float(z.imag - k.points["D"][0].imag)
+
+
+def platen_timing(model: LinkageModel, k, clearance: float, travel: float) -> PlatenTiming:
+    """Level crossings of the platen by Brent's method on the solved linkage: s rises
+    monotonically from position 1 (0) to the top (the working span) and falls back."""
+    H, top = k.stroke, k.working_span
+
+    def cross(level: float, lo: float, hi: float) -> float:
+        return float(brentq(lambda ph: _platen_s(model, k, ph) - level, lo, hi, xtol=1e-13))
+
+    return PlatenTiming(cross(H - clearance, 0.0, top), cross(H - travel, 0.0, top), top,
+                        cross(H - travel, top, TWO_PI), cross(H - clearance, top, TWO_PI))
+
+
+def unit_load_torque(model: LinkageModel, m) -> np.ndarray:
+    """Crank torque [N·m per N] (in the sense of rotation) that balances a unit downward force
+    on the platen, the links massless: kinetostatics group by group."""
+    n = len(m.crank_angle)
+    load = PointLoad("6", "D", np.full(n, -1j))
+    fa = solve_forces(model.mechanism, m, [], [load], 0.0)
+    return np.sign(model.crank_omega) * fa.driving_torque
+
+
+def closed_form_unit_torque(d: ToggleDesign, m) -> np.ndarray:
+    """The same by virtual work, M ω = F v_D, with v_D from closed forms: the four-bar's
+    ω_CB/ω_2 = a sin(θ2 − θ3) / (c sin(θ4 − θ3)) and the toggle's
+    dy/dθ4 = l_CB cos θ4 + l_CB² sin θ4 cos θ4 / √(l_BD² − l_CB² cos² θ4)."""
+    a, c, ld = d.four.crank, d.four.rocker, d.geometry.toggle_BD
+    th2, th3, th4 = (m.links[k].angle for k in ("2", "3", "4"))
+    ratio = a * np.sin(th2 - th3) / (c * np.sin(th4 - th3))
+    dy = c * np.cos(th4) + c ** 2 * np.sin(th4) * np.cos(th4) / np.sqrt(ld ** 2 - (c * np.cos(th4)) ** 2)
+    omega = m.links["2"].omega
+    return np.sign(omega) * dy * ratio
+
+
+@dataclass(frozen=True)
+class Amplification:
+    """Stage 增力特性: the pressing force per unit crank torque and the torque the cut needs.
+
+    Arrays over the press's phase array (grid then positions)."""
+
+    timing: PlatenTiming
+    unit_torque: np.ndarray       # M/F by kinetostatics (massless) [m]
+    closed_form: np.ndarray       # M/F = v_D/|ω| by the closed forms [m]
+    required_torque: np.ndarray   # F_c·M/F where the force acts, 0 elsewhere [N·m]
+    peak_required: float          # [N·m]
+    peak_phase: float             # [rad]
+    table: tuple                  # rows (gap to the top [m], phase [rad], M/F [m], F/M [1/m], Π)
+    max_error: float              # max |kinetostatics − closed form| / max |closed form| (rise)
+    cut_work: float               # F_c·t [J]
+    cycle_work: float             # ∮ M_b dφ [J]
+    press_time: float             # time the force acts [s]
+    top_ratio: float              # Π at the top (inf for a straight toggle)
+
+
+def amplification(model: LinkageModel, d: ToggleDesign, k, raw, f, p: DieCutterParams) -> Amplification:
+    n = k.grid_size
+    timing = platen_timing(model, k, p.clearance, p.pressing_travel)
+    unit = unit_load_torque(model, raw)
+    closed = closed_form_unit_torque(d, raw)
+    rising = k.phase[:n] <= k.working_span
+    scale = float(np.max(np.abs(closed[:n][rising])))
+    err = float(np.max(np.abs(unit[:n] - closed[:n])[rising]) / scale)
+    acting = np.abs(f.resistance["R1"]) > 0
+    required = np.where(acting, p.cutting_force * unit, 0.0)
+    i = int(np.argmax(required[:n]))
+    # The table: the platen's gap to its top, from the start of pressing to the top.
+    a = d.four.crank
+    gaps = [g for g in (p.pressing_travel, 2e-3, 1e-3, 0.5e-3, 0.1e-3, 0.01e-3)
+            if g <= p.pressing_travel + 1e-15]
+    phases = [float(brentq(lambda ph: _platen_s(model, k, ph) - (k.stroke - gap), 0.0,
+                           k.working_span, xtol=1e-14)) for gap in gaps]
+    at = model.mechanism.solve(k.start_angle + k.sense * np.array(phases + [k.working_span]))
+    u_at = unit_load_torque(model, at)
+    table = []
+    for gap, ph, u in zip(gaps, phases, u_at[:-1]):
+        table.append((gap, ph, float(u), 1.0 / float(u), a / float(u)))
+    top_unit = float(abs(u_at[-1]))
+    top_ratio = float("inf") if top_unit < 1e-12 * a else a / top_unit
+    cycle_work = float(np.mean(f.balancing_torque[:n]) * TWO_PI)
+    return Amplification(timing, unit, closed, required, float(required[i]), float(k.phase[i]),
+                         tuple(table), err, p.cutting_force * p.pressing_travel, cycle_work,
+                         timing.press_span / abs(p.crank_omega), top_ratio)
+
+
+# --------------------------------------------------------------------------- drive and flywheel
+
+
+def _drive(r: dict):
+    """The drive delivers the crank's mean power at the distribution shaft's speed; the
+    stages after the flywheel carry the peak of M_b (peak factor = peak / mean)."""
+    from .drive import design_drive
+
+    p, f = r["params"], r["press_forces"]
+    peak = float(f.peak_torque / f.mean_torque)
+    shafts = len(p.drive.stages)
+    j = p.flywheel_shaft
+    return design_drive(p.drive, f.mean_power, p.shaft_rpm, "mechanism", peak,
+                        j if j < shafts else None)
+
+
+@dataclass(frozen=True)
+class DieFlywheel:
+    """Stage 飞轮设计: the flywheel on drive shaft ``shaft``."""
+
+    shaft: int
+    speed_ratio: float          # flywheel shaft speed / distribution shaft speed
+    shaft_speed_rpm: float
+    mean_torque: float          # M_d on the distribution shaft [N·m]
+    energy: np.ndarray          # ΔE over the grid [J]
+    max_energy_swing: float     # ΔW_max [J]
+    phase_at_min: float
+    phase_at_max: float
+    fluctuation: float
+    inertia: float              # J_F [kg·m²]
+    inertia_on_crank: float     # the same flywheel on the distribution shaft [kg·m²]
+    rim: fw.RimFlywheel
+    peak_shafts: tuple = ()     # (shaft, n [rpm], mean T, peak T [N·m], d designed, d for the peak [m])
+    warnings: tuple = ()
+
+
+def peak_shafts(drive) -> tuple:
+    """The shafts after the flywheel carry the peak of M_b: their torsion estimate
+    d ≥ A0 ∛(P/n) (the drive stage's, from the mean power) against the same estimate with the
+    peak power T_peak·ω."""
+    from ..core.strength import shaft_min_diameter
+    from .drive_strength import A0, KEYWAY
+
+    first = drive.peak_from_shaft
+    if first is None:
+        return ()
+    out = []
+    for sd in drive.shaft_designs:
+        if sd.index < max(first, 1):
+            continue
+        sh = drive.shafts[sd.index]
+        peak = sh.torque * drive.peak_factor
+        d_peak = shaft_min_diameter(peak * sh.speed_rpm * np.pi / 30.0, sh.speed_rpm, A0, KEYWAY)
+        out.append((sd.index, sh.speed_rpm, sh.torque, peak, sd.d_seat, d_peak))
+    return tuple(out)
+
+
+def flywheel(k, f, drive, p: DieCutterParams) -> DieFlywheel:
+    n = k.grid_size
+    cycle = fw.energy_cycle(k.phase[:n], f.balancing_torque[:n])
+    ratios = [st.ratio for st in drive.stages]
+    ratio = float(np.prod(ratios[p.flywheel_shaft:]))
+    speed = p.shaft_rpm * ratio
+    inertia = fw.flywheel_inertia(cycle.max_energy_swing, speed, p.fluctuation)
+    on_crank = fw.flywheel_inertia(cycle.max_energy_swing, p.shaft_rpm, p.fluctuation)
+    rim = fw.rim_dimensions(inertia, p.rim_diameter, p.rim_height_to_width, p.specific_weight,
+                            speed, p.gravity)
+    warnings = []
+    if rim.rim_speed > 30.0:
+        warnings.append(Finding(
+            "rim_speed",
+            f"飞轮轮缘圆周速度 {rim.rim_speed:.1f} m/s 超过铸铁飞轮的许用值约 30 m/s：减小轮缘直径或改用钢制飞轮。",
+            f"the flywheel rim speed {rim.rim_speed:.1f} m/s exceeds about 30 m/s allowed for cast "
+            "iron: reduce the rim diameter or use a steel wheel."))
+    return DieFlywheel(p.flywheel_shaft, ratio, speed, cycle.driving_torque, cycle.energy,
+                       cycle.max_energy_swing, cycle.angle_at_min, cycle.angle_at_max,
+                       p.fluctuation, inertia, on_crank, rim, peak_shafts(drive), tuple(warnings))
+
+
+# --------------------------------------------------------------------------- feed and cycle
+
+
+@dataclass(frozen=True)
+class Feed:
+    """Stage 不完全齿轮送纸: the incomplete gear placed on the shaft, and the chain."""
+
+    gear: object                # core.intermittent.IncompleteGear
+    start_auto: bool
+    sprocket_radius: float      # R_s = p / (2 sin(π/z_s)) [m]
+    feed: float                 # chain travel per cycle = Δφ2/2π · z_s · p [m]
+    chain_speed: float          # mean chain speed while moving = feed / t_m [m/s]
+    chain_jump: float           # chain speed reached at once at engagement R_s Δω2 [m/s]
+    warnings: tuple = ()
+
+
+def _wrap(x: float) -> float:
+    return float(np.mod(x, TWO_PI))
+
+
+def feed(amp: Amplification, p: DieCutterParams) -> Feed:
+    from ..brief.components import incomplete_gear_to_si
+
+    free = incomplete_gear_to_si(p.gear_section, p.shaft_rpm)
+    auto = p.feed_start is None
+    if auto:
+        t = amp.timing
+        middle = t.clear_down + t.clear_span / 2
+        start = _wrap(np.radians(np.round(np.degrees(middle - free.motion_angle / 2))))
+    else:
+        start = p.feed_start
+    section = p.gear_section.model_copy(update={"motion_start_deg": float(np.degrees(start))})
+    g = incomplete_gear_to_si(section, p.shaft_rpm)
+    radius = p.chain_pitch / (2 * np.sin(np.pi / p.sprocket_teeth))
+    travel = g.advance / TWO_PI * p.sprocket_teeth * p.chain_pitch
+    times = g.times()
+    jump = g.engagement_jump()
+    notes = [Finding(n.code, n.zh, n.en) for n in g.notes]
+    return Feed(g, auto, float(radius), float(travel), float(travel / times[1]),
+                float(radius * jump.omega2), tuple(notes))
+
+
+_GRIPPER_LABELS = {"rise": ("张开", "opening"), "dwell_high": ("保持张开", "held open"),
+                   "return": ("闭合", "closing"), "dwell_low": ("夹紧", "closed")}
+
+
+@dataclass(frozen=True)
+class CycleResult:
+    """Stage 运动循环图: the diagram made from the three mechanisms and its checks."""
+
+    diagram: cy.CycleDiagram
+    checks: tuple
+    gripper_start: float        # shaft angle where the cam's rise begins [rad]
+    gripper_auto: bool
+    warnings: tuple = ()
+
+
+def platen_actuator(t: PlatenTiming) -> cy.Actuator:
+    """The platen's phases from its simulated level crossings."""
+    return cy.make_actuator("platen", "下模板", "lower platen", t.clear_up, [
+        ("rise", t.press_up - t.clear_up, "上升", "rising"),
+        ("dwell_high", t.press_down - t.press_up, "模切", "die cutting"),
+        ("return", t.clear_down - t.press_down, "下降", "falling"),
+        ("dwell_low", t.clear_up + TWO_PI - t.clear_down, "让开", "clear")])
+
+
+def gripper_actuator(programme, start: float) -> cy.Actuator:
+    act = cy.actuator_from_cam_programme("gripper", "夹纸爪", "grippers", programme, start)
+    return cy.make_actuator("gripper", "夹纸爪", "grippers", start,
+                            [(ph.state, ph.span) + _GRIPPER_LABELS.get(ph.state, ("", ""))
+                             for ph in act.phases])
+
+
+def chain_actuator(g) -> cy.Actuator:
+    return cy.make_actuator("chain", "链条送纸", "chain feed", g.motion_start,
+                            [("move", g.motion_angle, "送纸", "feed"),
+                             ("dwell", g.dwell_angle, "停歇", "dwell")])
+
+
+def timing_constraints(margin: float) -> list[cy.Constraint]:
+    return [
+        cy.Constraint("during", ("chain", "move"), ("platen", "dwell_low"), margin,
+                      "链条只在下模板让开（低于上止点不少于间隙 c）时送纸",
+                      "the chain moves only while the platen is clear of the die (at least c below its top)"),
+        cy.Constraint("during", ("platen", "dwell_high"), ("chain", "dwell"), margin,
+                      "模切时纸板与链条静止", "the sheet and the chain stand still while the die cuts"),
+        cy.Constraint("during", ("gripper", "rise"), ("chain", "dwell"), margin,
+                      "夹纸爪在链条停歇后才张开", "the grippers open only while the chain dwells"),
+        cy.Constraint("during", ("gripper", "return"), ("chain", "dwell"), margin,
+                      "夹纸爪在链条再次运动前闭合", "the grippers close before the chain moves again"),
+    ]
+
+
+def cycle(amp: Amplification, fd: Feed, cam, p: DieCutterParams) -> CycleResult:
+    g = fd.gear
+    programme = cam.params.programme
+    auto = p.gripper_open is None
+    if auto:
+        open_span = float(sum(programme.spans[:3]))
+        middle = g.motion_start + g.motion_angle + g.dwell_angle / 2
+        start = _wrap(np.radians(np.round(np.degrees(middle - open_span / 2))))
+    else:
+        start = p.gripper_open
+    acts = [platen_actuator(amp.timing), gripper_actuator(programme, start), chain_actuator(g)]
+    diagram = cy.build_cycle(acts, abs(p.crank_omega), 0.0, timing_constraints(p.margin))
+    checks = tuple(cy.check_constraints(diagram))
+    warnings = []
+    for c in checks:
+        if not c.ok:
+            con = c.constraint
+            warnings.append(Finding(
+                "timing",
+                f"运动循环不协调：{con.text_zh}（余量 {c.slack * DEG:.2f}°，要求 ≥ {con.margin * DEG:g}°）；"
+                "调整 timing 中的安装角或凸轮、不完全齿轮的运动角。",
+                f"timing conflict: {con.text_en} (slack {c.slack * DEG:.2f}°, needs ≥ "
+                f"{con.margin * DEG:g}°); change the placement in timing or the cam's or the "
+                "incomplete gear's motion angle."))
+    return CycleResult(diagram, checks, start, auto, tuple(warnings))
+
+
+# --------------------------------------------------------------------------- verification
+
+
+@dataclass(frozen=True)
+class DieVerification:
+    """The machine's own checks (the shared linkage checks are in ``press_verification``)."""
+
+    stroke_simulated: float     # by the linkage engine's position search [m]
+    stroke_error: float         # simulated − H [m]
+    K_position_search: float    # K from the position search (limited by the flat top, see K_search_tol)
+    top_toggle_angle: float     # angle of CB from the guide at the simulated top [rad]
+    amplification_error: float  # kinetostatics vs virtual-work closed form (relative)
+    energy_ratio: float         # ∮ M_b dφ / (F_c t)
+    platen_mismatch: float      # shaft angle where the diagram's platen row disagrees with s(φ) [rad]
+    gripper_mismatch: float     # … its gripper row with the cam's lift
+    chain_mismatch: float       # … its chain row with the incomplete gear's motion
+    feed_error: float           # chain feed − bar spacing [m]
+    grid_step: float            # [rad]
+    top_order: float            # n in H − s ≈ c Δφⁿ near the top (4: toggle straight at the dead centre)
+    search_angle_tol: float     # how closely a position search can place such a top [rad]
+    K_search_tol: float         # the time ratio's resulting uncertainty
+    K_velocity_tol: float       # the same for the zeros of v_D ∝ Δφⁿ⁻¹ (the motion stage's K)
+
+
+def verify(model: LinkageModel, d: ToggleDesign, k, v_link, amp: Amplification, fd: Feed,
+           cam, cyc: CycleResult, p: DieCutterParams) -> DieVerification:
+    from scipy.optimize import minimize_scalar
+
+    n = k.grid_size
+    phase = k.phase[:n]
+    step = TWO_PI / n
+    # The simulated top (bounded search between grid points) and the toggle's angle there.
+    i_top = int(np.argmax(k.s[:n]))
+    res = minimize_scalar(lambda ph: -_platen_s(model, k, ph),
+                          bounds=(phase[i_top] - step, phase[i_top] + step), method="bounded",
+                          options={"xatol": 1e-12})
+    at_top = model.mechanism.solve(np.array([k.start_angle + k.sense * float(res.x)]))
+    b_top = at_top.points["B"].pos[0]
+    top_angle = float(abs(np.angle(b_top * np.exp(-1j * np.pi / 2))))
+    diagram = cyc.diagram
+    clear_sim = k.s[:n] < k.stroke - p.clearance
+    clear_row = cy.state_at(diagram.actuator("platen"), phase) == "dwell_low"
+    prog = cam.params.programme
+    open_cam = prog.evaluate(np.mod(phase - cyc.gripper_start, TWO_PI)).s > 1e-9 * prog.stroke
+    open_row = cy.state_at(diagram.actuator("gripper"), phase) != "dwell_low"
+    moving_gear = fd.gear.driven_motion(phase).moving
+    moving_row = cy.moving_at(diagram.actuator("chain"), phase)
+    # Flatness of the top: H − s = c Δφⁿ fitted through two small gaps (2·10⁻⁷ H and 2·10⁻⁹ H);
+    # a search on s sees nothing below the rounding of y_D, 4 ε |y_D|.
+    gaps = (2e-7 * k.stroke, 2e-9 * k.stroke)
+    deltas = [amp.timing.top - float(brentq(lambda ph: _platen_s(model, k, ph) - (k.stroke - g_),
+                                             0.0, amp.timing.top, xtol=1e-15)) for g_ in gaps]
+    order = float(np.log(gaps[0] / gaps[1]) / np.log(deltas[0] / deltas[1]))
+    c = gaps[1] / deltas[1] ** order
+    eps_m = np.finfo(float).eps
+    tol = float((4 * eps_m * abs(d.top_height) / c) ** (1 / order))
+    # v_D/ω = n c Δφⁿ⁻¹ is computed to about 10 ε max|dy_D/dφ| (cancellation at the dead centre)
+    slope = float(np.max(np.abs(k.v[:n]))) / abs(model.crank_omega)
+    tol_v = float((10 * eps_m * slope / (order * c)) ** (1 / (order - 1)))
+    back = TWO_PI - k.working_span
+    return DieVerification(
+        stroke_simulated=v_link.stroke, stroke_error=v_link.stroke - d.geometry.stroke,
+        K_position_search=v_link.time_ratio, top_toggle_angle=top_angle,
+        amplification_error=amp.max_error, energy_ratio=amp.cycle_work / amp.cut_work,
+        platen_mismatch=float(np.sum(clear_sim != clear_row) * step),
+        gripper_mismatch=float(np.sum(open_cam != open_row) * step),
+        chain_mismatch=float(np.sum(moving_gear != moving_row) * step),
+        feed_error=fd.feed - p.bar_spacing, grid_step=step, top_order=order,
+        search_angle_tol=tol, K_search_tol=float(tol * TWO_PI / back ** 2),
+        K_velocity_tol=float(max(tol_v * TWO_PI / back ** 2, 1e-12)))
+
+
+def _verify(r: dict) -> DieVerification:
+    return verify(r["press_model"], r["toggle"], r["press"], r["press_verification"],
+                  r["amplification"], r["feed"], r["cam"], r["cycle"], r["params"])
+
+
+# --------------------------------------------------------------------------- stages
+
+
+def stages(params: DieCutterParams) -> list[Stage]:
+    from .cam import cam_stage
+
+    press = [s for s in linkage_stages(model_key="press_model", prefix="press")
+             if s.key != "press_flywheel"]
+    return [
+        Stage(("toggle", "press_model"), "肘杆机构设计 / toggle press synthesis",
+              lambda r: synthesis(r["params"])),
+        *press,
+        Stage("amplification", "增力特性 / force amplification",
+              lambda r: amplification(r["press_model"], r["toggle"], r["press"], r["press_raw"],
+                                      r["press_forces"], r["params"])),
+        Stage("drive", "传动装置设计 / drive", _drive),
+        Stage("flywheel", "飞轮设计 / flywheel",
+              lambda r: flywheel(r["press"], r["press_forces"], r["drive"], r["params"])),
+        cam_stage(),
+        Stage("feed", "不完全齿轮送纸 / incomplete-gear feed",
+              lambda r: feed(r["amplification"], r["params"])),
+        Stage("cycle", "运动循环图 / motion cycle diagram",
+              lambda r: cycle(r["amplification"], r["feed"], r["cam"], r["params"])),
+        Stage("verification", "校核 / verification", _verify),
+    ]
+
+
+def results_document(r: dict) -> dict:
+    """Everything computed, in SI units, for ``results.json``."""
+    from ..core.intermittent import intermittent_document
+    from .cam import cam_document
+    from .drive import drive_document
+    from .linkage import linkage_document
+
+    d, amp, fl, fd, cyc, v = (r[key] for key in ("toggle", "amplification", "flywheel", "feed",
+                                                 "cycle", "verification"))
+    p = r["params"]
+    fb = d.four
+    n = r["press"].grid_size
+    return {
+        "schema": "mechdesign.results/1",
+        "machine": "die_cutter",
+        "units": "SI: m, s, rad, kg, N, N·m, J, W; complex vectors as [x, y]",
+        "shaft_speed_rpm": p.shaft_rpm,
+        "cutting_force": p.cutting_force, "pressing_travel": p.pressing_travel,
+        "clearance": p.clearance,
+        "toggle": {
+            "swing": d.swing, "theta": d.theta, "crank": fb.crank, "coupler": fb.coupler,
+            "toggle_CB": fb.rocker, "toggle_BD": d.geometry.toggle_BD, "frame_O1C": fb.frame,
+            "O1": d.O1, "B_top": d.B_top, "B_bottom": d.B_bottom, "crank_top": d.crank_top,
+            "crank_bottom": d.crank_bottom, "branch": d.branch, "mirrored": d.mirrored,
+            "gamma_min": d.gamma_min, "top_height": d.top_height,
+            "bottom_height": d.bottom_height, "top_position": d.geometry.top_position,
+        },
+        "press": linkage_document(r["press_model"], r["press"], r["press_forces"], None,
+                                  r["press_verification"]),
+        "amplification": {
+            "platen_timing": {key: getattr(amp.timing, key) for key in (
+                "clear_up", "press_up", "top", "press_down", "clear_down")},
+            "unit_torque_grid": amp.unit_torque[:n], "required_torque_grid": amp.required_torque[:n],
+            "peak_required_torque": amp.peak_required, "peak_phase": amp.peak_phase,
+            "table": [{"gap": g, "phase": ph, "torque_per_force": u, "force_per_torque": fpt,
+                       "ratio": rt} for g, ph, u, fpt, rt in amp.table],
+            "cut_work": amp.cut_work, "cycle_work": amp.cycle_work, "press_time": amp.press_time,
+        },
+        "flywheel": {
+            "shaft": fl.shaft, "speed_ratio": fl.speed_ratio, "shaft_speed_rpm": fl.shaft_speed_rpm,
+            "mean_torque": fl.mean_torque, "max_energy_swing": fl.max_energy_swing,
+            "fluctuation": fl.fluctuation, "inertia": fl.inertia,
+            "inertia_on_crank": fl.inertia_on_crank, "rim": fl.rim,
+            "phase_at_min": fl.phase_at_min, "phase_at_max": fl.phase_at_max,
+        },
+        "drive": drive_document(r["drive"]),
+        "cam": cam_document(r["cam"]),
+        "feed": {"gear": intermittent_document(fd.gear), "start_auto": fd.start_auto,
+                 "sprocket_radius": fd.sprocket_radius, "feed": fd.feed,
+                 "chain_speed": fd.chain_speed, "chain_jump": fd.chain_jump},
+        "cycle": cy.cycle_document(cyc.diagram, cyc.checks) | {
+            "gripper_start": cyc.gripper_start, "gripper_auto": cyc.gripper_auto},
+        "verification": v,
+    }

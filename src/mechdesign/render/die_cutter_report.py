@@ -1,0 +1,537 @@
+"""Prepare the die-cutter report (半自动平压模切机): figures and the template context.
+
+All formatting and unit conversion for display happens here (course units: mm, °, rpm, N,
+kN, N·m, J, kg·m²); the templates only place prepared strings, rows and LaTeX formulas
+with the numbers substituted. The shared pieces (linkage, cam, incomplete gear, cycle
+diagram, drive, verification) come from their own report modules.
+"""
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+
+from . import figures as fig
+from .fmt import e, f
+
+DEG = 180.0 / np.pi
+MM = 1e3
+
+_TXT = {
+    "zh": {"phase": "分配轴（曲柄）转角 φ (°)", "s": "下模板位移 s (mm)", "fm": "F/M (kN/(kN·m))",
+           "torque": "曲柄力矩 (N·m)", "mb": r"平衡力矩 $M_b$", "req": r"模切所需 $F_c\,M/F$",
+           "press": "模切区", "clear": "让开区", "level_p": "开始压切", "level_c": "让开高度",
+           "top": "上止点"},
+    "en": {"phase": "shaft (crank) angle φ (°)", "s": "platen displacement s (mm)",
+           "fm": "F/M (kN/(kN·m))", "torque": "crank torque (N·m)", "mb": r"balancing torque $M_b$",
+           "req": r"cut alone $F_c\,M/F$", "press": "cutting", "clear": "clear",
+           "level_p": "cutting starts", "level_c": "clearance level", "top": "top"},
+}
+
+
+# --------------------------------------------------------------------------- figures
+
+
+def _amplification_figure(path: Path, lang: str, k, amp, p, f_):
+    """Platen near its top, the force per unit torque F/M (log) and the torque the cut needs."""
+    t = _TXT[lang]
+    n = k.grid_size
+    ph = k.phase[:n] * DEG
+    tm = amp.timing
+    lo, hi = tm.clear_up * DEG - 15, tm.clear_down * DEG + 15
+    view = (ph >= lo) & (ph <= hi)
+    H = k.stroke * MM
+    with fig.figure(path, 3, (7.0, 7.4)) as (ax1, ax2, ax3):
+        for ax in (ax1, ax2, ax3):
+            ax.set_xlim(lo, hi)
+            ax.grid(True, lw=0.4, color="0.82")
+            ax.axvspan(tm.press_up * DEG, tm.top * DEG, color="C1", alpha=0.12, lw=0)
+            ax.axvline(tm.top * DEG, color="0.4", lw=0.7, ls=":")
+        ax1.plot(ph[view], k.s[:n][view] * MM, color="C0", lw=1.4)
+        ax1.axhline(H - p.pressing_travel * MM, color="C1", lw=0.9, ls="--",
+                    label=f"{t['level_p']} H − t = {f(H - p.pressing_travel * MM, 1)} mm")
+        ax1.axhline(H - p.clearance * MM, color="C2", lw=0.9, ls="-.",
+                    label=f"{t['level_c']} H − c = {f(H - p.clearance * MM, 1)} mm")
+        ax1.set_ylim(H - p.clearance * MM - 12, H + 3)
+        ax1.set_ylabel(t["s"])
+        ax1.legend(fontsize=7, loc="lower center")
+        rising = (k.v[:n] > 1e-9 * np.max(k.v[:n])) & view
+        fm = 1.0 / amp.unit_torque[:n][rising]          # N per N·m = kN per kN·m
+        ax2.semilogy(ph[rising], fm, color="C3", lw=1.4)
+        ax2.set_ylim(0.7 * float(np.min(fm)), min(float(np.max(fm)) * 1.5, 1e3 * float(np.min(fm))))
+        ax2.set_ylabel(t["fm"])
+        ax3.plot(ph[view], f_.balancing_torque[:n][view], color="C0", lw=1.3, label=t["mb"])
+        act = amp.required_torque[:n] > 0
+        ax3.plot(ph[act], amp.required_torque[:n][act], color="C1", lw=1.3, ls="--", label=t["req"])
+        ax3.axhline(0, color="0.4", lw=0.6)
+        ax3.set_ylabel(t["torque"])
+        ax3.set_xlabel(t["phase"])
+        ax3.legend(fontsize=7, loc="upper right")
+
+
+def make_figures(r: dict, fig_dir: Path, lang: str) -> dict[str, str]:
+    """Draw every figure into ``fig_dir``; return name → relative path."""
+    from .cam_report import make_cam_figures
+    from .components_report import make_cycle_figures, make_intermittent_figures
+    from .linkage_report import make_linkage_figures
+
+    model, k, f_ = r["press_model"], r["press"], r["press_forces"]
+    paths = make_linkage_figures(model, k, f_, None, fig_dir, lang, prefix="press")
+
+    def out(name):
+        paths[name] = f"{fig_dir.name}/{name}.png"
+        return fig_dir / f"{name}.png"
+
+    _amplification_figure(out("dc_amplification"), lang, k, r["amplification"], r["params"], f_)
+    fl = r["flywheel"]
+    n = k.grid_size
+    fig.energy(out("dc_energy"), lang, k.phase[:n] * DEG, fl.energy, fl.phase_at_min * DEG,
+               fl.phase_at_max * DEG, fl.max_energy_swing, k.working_span * DEG)
+    paths.update(make_cam_figures(r["cam"], fig_dir, lang, prefix="cam"))
+    for key, path in make_intermittent_figures(r["feed"].gear, fig_dir, lang, prefix="dc_feed").items():
+        paths[f"ig_{key}"] = path
+    cyc = r["cycle"]
+    for key, path in make_cycle_figures(cyc.diagram, fig_dir, lang, cyc.checks, prefix="dc_cycle").items():
+        paths[f"cycle_{key}"] = path
+    return paths
+
+
+def animate(r: dict, path: Path, lang: str) -> Path:
+    """GIF of the toggle press over one revolution."""
+    from .animation import linkage_gif
+
+    return linkage_gif(r["press_model"], r["press"], path, lang)
+
+
+def write_data(r: dict, folder: Path) -> list[Path]:
+    """The gripper cam's profile coordinates as CSV."""
+    from .cam_report import write_cam_csv
+
+    return write_cam_csv(r["cam"], folder)
+
+
+# --------------------------------------------------------------------------- context
+
+
+def _deg(x: float, digits: int = 2) -> str:
+    return f(x * DEG, digits)
+
+
+def _data_rows(b, p, zh: bool) -> list[list[str]]:
+    """The task's data (seed 001b)."""
+    rows = [
+        ["生产率" if zh else "output", f"{f(b.production.sheets_per_hour, 0)} " + ("张/h" if zh else "sheets/h"),
+         (f"分配轴每转一周模切一张：n = {f(p.shaft_rpm, 2)} r/min" if zh else
+          f"one sheet per turn of the distribution shaft: n = {f(p.shaft_rpm, 2)} rpm")],
+        ["电动机转速" if zh else "motor speed", "1450 r/min" if zh else "1450 rpm",
+         "4 极 Y 系列（同步转速 1500 r/min），型号由传动设计按功率选定" if zh else
+         "4-pole Y series (1500 rpm synchronous), the size chosen by the drive design from the power"],
+        ["工作台面高度" if zh else "table height", f"≈ {f(b.production.table_height_mm, 0)} mm",
+         "总体布置尺寸" if zh else "layout datum"],
+        ["纸板厚度" if zh else "board thickness", f"≤ {f(b.production.board_thickness_mm, 1)} mm",
+         "瓦楞纸板、白纸板及印刷品" if zh else "corrugated board, white board and prints"],
+        ["传动路线" if zh else "drive", "V 带 → 两级斜齿圆柱齿轮减速器 → 联轴器 → 分配轴" if zh else
+         "V-belt → two-stage helical reducer → coupling → distribution shaft", "—"],
+        ["执行机构" if zh else "actuators",
+         "上模固定，六杆肘杆机构推下模上升；凸轮张开弹簧夹爪；不完全齿轮间歇驱动链条" if zh else
+         "fixed upper die, lower platen lifted by a six-bar toggle linkage; a cam opens the spring "
+         "grippers; an incomplete gear drives the gripper chain intermittently", "—"],
+    ]
+    return rows
+
+
+def _choice_rows(b, p, r, zh: bool) -> list[list[str]]:
+    """Values this design chooses where the task is silent, with the reasons."""
+    pr, ms, ct = b.press, b.masses, b.cutting
+    from ..core.motion_laws import LAWS
+
+    cam = b.gripper_cam
+    ig = r["feed"].gear
+    seg = cam.programme
+    F_kN = f(p.cutting_force / 1e3, 0)
+    t_mm = f(p.pressing_travel * MM, 1)
+    rows = [
+        ["$H$", "下模板行程" if zh else "platen stroke", f"{f(pr.stroke_H_mm, 1)} mm",
+         (f"送纸时夹爪排与纸板须从上、下模之间通过；下模板在最低位置时与上模的间隙为 H − t = "
+          f"{f(pr.stroke_H_mm - b.production.board_thickness_mm, 1)} mm" if zh else
+          f"the gripper bar and the sheet pass between die and platen; at the bottom the gap is "
+          f"H − t = {f(pr.stroke_H_mm - b.production.board_thickness_mm, 1)} mm")],
+        ["$c$", "让开高度" if zh else "clearance level", f"{f(pr.clearance_mm, 1)} mm",
+         "下模板低于上止点至少 c 时夹爪排（约 12 mm）与纸板才能通过，另留余量" if zh else
+         "the platen must be at least c below its top for the gripper bar (about 12 mm) and the "
+         "sheet to pass, with some margin"],
+        ["$K$", "行程速比系数" if zh else "time ratio", f(pr.time_ratio_K, 2),
+         "上升（压切）行程慢、下降快：压切区占较大的曲柄转角，所需力矩峰值较小" if zh else
+         "slow rise (cutting), quick fall: the cut takes more crank angle, so the torque peak is lower"],
+        ["$l_{CB}, l_{BD}$", "肘杆长度" if zh else "toggle links",
+         f"{f(pr.toggle_CB_mm, 0)}, {f(pr.toggle_BD_mm, 0)} mm",
+         "肘杆越长，同一行程所需摆角越小；BD 长于 CB，BD 不会躺平，最低位置时滑块压力角小" if zh else
+         "longer toggles need less swing for the stroke; BD longer than CB never lies flat and keeps "
+         "the slider's pressure angle small at the bottom"],
+        ["$\\varepsilon$", "上止点时 CB 偏离导路的角度" if zh else "toggle angle at the top",
+         f"{f(pr.toggle_angle_at_top_deg, 1)}°",
+         "肘杆在上止点伸直，且与曲柄摇杆的极位重合：$v_D \\to 0$ 更快（上止点附近 $H - s \\propto \\Delta\\varphi^4$），模切力直接由伸直的肘杆传给机架" if zh else
+         "toggle straight at the top, which is also the crank-rocker's extreme: $v_D \\to 0$ faster "
+         "($H - s \\propto \\Delta\\varphi^4$ near the top), the cutting force goes straight through the toggle "
+         "into the frame"],
+        ["—", "上止点对应的曲柄摇杆极位" if zh else "crank-rocker extreme at the top",
+         ({"extended": "拉直共线", "folded": "重叠共线"} if zh else
+          {"extended": "extended", "folded": "folded"})[pr.top_position],
+         "摇杆在极位附近转得慢，与肘杆伸直叠加，上止点附近下模板近似停歇" if zh else
+         "the rocker is slow near its extreme; with the straight toggle the platen all but dwells "
+         "near the top"],
+        ["$F_c$", "模切力" if zh else "cutting force", f"{F_kN} kN",
+         (f"刀线总长 L = {f(ct.cut_length_m, 1)} m（估计值）× 单位长度模切阻力 q = "
+          f"{f(ct.specific_resistance_N_per_mm, 0)} N/mm（假定值）" if zh else
+          f"total rule length L = {f(ct.cut_length_m, 1)} m (estimate) × resistance per mm of rule "
+          f"q = {f(ct.specific_resistance_N_per_mm, 0)} N/mm (assumed)")],
+        ["$t$", "压切行程" if zh else "pressing travel", f"{t_mm} mm",
+         "等于纸板厚度，$F_c$ 在这段行程内取常值（偏于安全：实际压力随刀线切入逐渐增大）" if zh else
+         "the board thickness; $F_c$ is taken constant over it (on the safe side: the real force "
+         "builds up as the rule cuts in)"],
+        ["$m_6$", "下模板及滑块质量" if zh else "platen and slide mass", f"{f(ms.platen_kg, 0)} kg",
+         "铸铁下模板约 750 × 520 × 70 mm" if zh else "cast-iron platen about 750 × 520 × 70 mm"],
+        ["$m_3, m_4, m_5$", "连杆与肘杆质量（均质杆）" if zh else "coupler and toggle masses (uniform bars)",
+         f"{f(ms.coupler_AB_kg, 0)}, {f(ms.toggle_CB_kg, 0)}, {f(ms.toggle_BD_kg, 0)} kg",
+         "按截面估算" if zh else "estimated from the sections"],
+        ["$[\\delta]$", "许用速度不均匀系数" if zh else "allowed speed fluctuation",
+         f"1/{1 / p.fluctuation:.4g}",
+         "冲压类机械 1/7–1/20（教材表）；模切质量对转速波动不敏感" if zh else
+         "presses 1/7–1/20 (textbook table); die cutting is not sensitive to the speed fluctuation"],
+        ["—", "飞轮位置" if zh else "flywheel", _shaft(p.flywheel_shaft, len(b.drive.stages), zh),
+         "转速高处所需转动惯量小（J ∝ 1/n²）" if zh else "a fast shaft needs far less inertia (J ∝ 1/n²)"],
+        (["$h$", "夹爪凸轮行程" if zh else "gripper cam lift", f"{f(cam.follower.stroke_h_mm, 1)} mm",
+          "推开夹爪所需的顶杆行程" if zh else "push-rod travel that opens the grippers"]
+         if cam.follower.motion == "translating" else
+         ["$\\varphi_{max}$", "夹爪凸轮摆杆摆角" if zh else "gripper cam lever swing",
+          f"{f(cam.follower.max_swing_deg, 1)}°",
+          "推开夹爪所需的摆杆转角" if zh else "lever swing that opens the grippers"]),
+        ["—", "夹爪凸轮运动角" if zh else "gripper cam angles",
+         " / ".join(f"{f(s_.angle_deg, 0)}°" for s_ in seg),
+         (f"推程、回程用{LAWS[seg[0].law].name_zh}规律，起止处速度、加速度连续，无刚性和柔性冲击" if zh else
+          f"{LAWS[seg[0].law].name_en} rise and return: velocity and acceleration continuous at the "
+          "ends, neither rigid nor soft impact")],
+        ["$m; z_1, z_1', z_2$", "不完全齿轮" if zh else "incomplete gear",
+         f"{f(ig.module * MM, 1)} mm; {ig.z1}, {ig.teeth}, {ig.z2}",
+         (f"运动角 {_deg(ig.motion_angle, 0)}° 落在下模板让开区内，从动轮每循环转 $z_1'/z_2$ 周" if zh else
+          f"the motion angle {_deg(ig.motion_angle, 0)}° fits in the platen's clear arc; the driven "
+          "wheel turns $z_1'/z_2$ of a turn per cycle")],
+        ["$p, z_s$", "链条节距与链轮齿数" if zh else "chain pitch, sprocket teeth",
+         f"{f(b.chain.pitch_mm, 2)} mm, {b.chain.sprocket_teeth}",
+         (f"每循环送进一个夹爪排间距 {f(b.chain.bar_spacing_mm, 1)} mm（幅面长度加夹爪排与间隙）" if zh else
+          f"one gripper-bar spacing {f(b.chain.bar_spacing_mm, 1)} mm per cycle (sheet length plus "
+          "the bar and a gap)")],
+        ["$K_A$", "使用系数" if zh else "application factor", f(b.drive.service.application_factor_KA, 2),
+         "冲击载荷" if zh else "shock load"],
+    ]
+    return rows
+
+
+def _shaft(index: int, stages: int, zh: bool) -> str:
+    roman = "0 Ⅰ Ⅱ Ⅲ Ⅳ Ⅴ Ⅵ Ⅶ Ⅷ Ⅸ".split()
+    if index == 0:
+        return "电动机轴" if zh else "motor shaft"
+    if index == stages:
+        return "分配轴" if zh else "distribution shaft"
+    return f"{roman[index]} 轴" if zh else f"shaft {roman[index]}"
+
+
+def _synthesis(d, p, zh: bool) -> dict:
+    g = d.geometry
+    lt, ld = g.toggle_CB * MM, g.toggle_BD * MM
+    eps, psi = g.top_angle, d.swing
+    fb = d.four
+    K = g.K
+    theta = d.theta * DEG
+    eq = {
+        "height": (r"y_D(\beta) = l_{CB}\cos\beta + \sqrt{l_{BD}^2 - l_{CB}^2\sin^2\beta}"),
+        "stroke": (rf"H = y_D(\varepsilon) - y_D(\varepsilon + \psi) = {f(d.top_height * MM, 3)} - "
+                   rf"{f(d.bottom_height * MM, 3)} = {f(g.stroke * MM, 3)}\ \text{{mm}}"
+                   rf"\ \Rightarrow\ \psi = {_deg(psi, 4)}°"),
+        "theta": (rf"\theta = 180° \times \frac{{K-1}}{{K+1}} = 180° \times \frac{{{f(K, 3)}-1}}"
+                  rf"{{{f(K, 3)}+1}} = {f(theta, 4)}°"),
+        "links": (rf"a = \frac{{AC_2 - AC_1}}{{2}} = {f(fb.crank * MM, 3)}\ \text{{mm}},\quad "
+                  rf"b = \frac{{AC_2 + AC_1}}{{2}} = {f(fb.coupler * MM, 3)}\ \text{{mm}},\quad "
+                  rf"d = {f(fb.frame * MM, 3)}\ \text{{mm}}"),
+        "gamma": (rf"\cos\delta = \frac{{b^2 + c^2 - (d \mp a)^2}}{{2bc}}\ \Rightarrow\ "
+                  rf"\gamma_{{min}} = {_deg(d.gamma_min, 3)}°"),
+        "virtual": r"M\,\omega = F\,v_D\ \Rightarrow\ F = \frac{M\,\omega}{v_D} = \frac{M}{dy_D/d\varphi}",
+        "chain_rule": (r"\frac{dy_D}{d\varphi} = \frac{dy_D}{d\theta_4}\,\frac{\omega_4}{\omega_2},\quad "
+                       r"\frac{\omega_4}{\omega_2} = \frac{a\sin(\theta_2 - \theta_3)}{c\sin(\theta_4 - \theta_3)},"
+                       r"\quad \frac{dy_D}{d\theta_4} = l_{CB}\cos\theta_4 + "
+                       r"\frac{l_{CB}^2\sin\theta_4\cos\theta_4}{\sqrt{l_{BD}^2 - l_{CB}^2\cos^2\theta_4}}"),
+    }
+    rows = [
+        ["$\\psi$", "肘杆 CB 摆角" if zh else "swing of CB", _deg(psi, 3), "°"],
+        ["$\\theta$", "极位夹角" if zh else "extreme-position angle", f(theta, 3), "°"],
+        ["$a = l_{O_1A}$", "曲柄" if zh else "crank", f(fb.crank * MM, 2), "mm"],
+        ["$b = l_{AB}$", "连杆" if zh else "coupler", f(fb.coupler * MM, 2), "mm"],
+        ["$c = l_{CB}$", "肘杆（摇杆）" if zh else "toggle (rocker)", f(lt, 2), "mm"],
+        ["$l_{BD}$", "肘杆" if zh else "toggle", f(ld, 2), "mm"],
+        ["$d = l_{O_1C}$", "机架" if zh else "frame", f(fb.frame * MM, 2), "mm"],
+        ["$O_1$", "曲柄轴心（C 为原点）" if zh else "crank pivot (C at the origin)",
+         f"({f(d.O1.real * MM, 2)}, {f(d.O1.imag * MM, 2)})", "mm"],
+        ["$y_D$", "下模板铰点 D 的高度（上止点 / 下止点）" if zh else "height of D (top / bottom)",
+         f"{f(d.top_height * MM, 2)} / {f(d.bottom_height * MM, 2)}", "mm"],
+        ["$\\gamma_{min}$", "曲柄摇杆最小传动角" if zh else "minimum transmission angle",
+         _deg(d.gamma_min, 2), "°"],
+        ["$\\varphi_{rise}$", "上升行程曲柄转角" if zh else "crank angle of the rise",
+         _deg(d.rising_span, 2), "°"],
+    ]
+    pivot = ("按给定机架长 O1C 取 θ 圆上的点" if zh else "the point of the θ-circle at the given frame O1C") \
+        if g.frame is not None else \
+        ("在 θ 圆的允许弧上搜索，使最小传动角最大" if zh else
+         "searched along the allowed arc of the θ-circle for the largest minimum transmission angle")
+    mirrored = ("为使上升行程为慢行程（K > 1），图形按导路作了镜像。" if zh else
+                "The drawing is mirrored about the guide so that the rise is the slow stroke (K > 1).") \
+        if d.mirrored else ""
+    return {"eq": eq, "rows": rows, "pivot": pivot, "mirrored": mirrored,
+            "psi": _deg(psi, 3), "eps": _deg(eps, 2), "theta": f(theta, 3),
+            "top": ({"extended": "拉直共线位置（AC = b + a）", "folded": "重叠共线位置（AC = b − a）"} if zh else
+                    {"extended": "extended position (AC = b + a)", "folded": "folded position (AC = b − a)"}
+                    )[g.top_position]}
+
+
+def _amplification(r, p, zh: bool) -> dict:
+    amp, k, f_ = r["amplification"], r["press"], r["press_forces"]
+    d = r["toggle"]
+    n = k.grid_size
+    tm = amp.timing
+    a = d.four.crank
+    rows = []
+    for gap, ph, u, fpt, ratio in amp.table:
+        rows.append([f(gap * MM, 3), _deg(ph, 3), f(u * MM, 4), f(fpt, 1), f(ratio, 2),
+                     f(p.cutting_force * u, 1)])
+    top = "∞" if not np.isfinite(amp.top_ratio) else f(amp.top_ratio, 2)
+    rows.append([f(0.0, 3), _deg(tm.top, 3), "0" if not np.isfinite(amp.top_ratio) else
+                 f(a / amp.top_ratio * MM, 4), "∞" if not np.isfinite(amp.top_ratio) else
+                 f(amp.top_ratio / a, 1), top, f(0.0, 1)])
+    drive = r["drive"]
+    motor = drive.motor
+    # the motor alone: its rated torque brought to the distribution shaft
+    t_motor = motor.power * drive.efficiency / abs(p.crank_omega)
+    u0 = amp.table[0][2]
+    f_motor = t_motor / u0
+    i_peak = int(np.argmax(f_.balancing_torque[:n]))
+    eq = {
+        "force": (rf"F_c = L\,q = {f(p.cut_length, 2)}\ \text{{m}} \times {f(p.specific_resistance / 1e3, 1)}"
+                  rf"\ \text{{N/mm}} = {f(p.cutting_force / 1e3, 1)}\ \text{{kN}}"),
+        "work": (rf"W_c = F_c\,t = {f(p.cutting_force / 1e3, 1)}\ \text{{kN}} \times "
+                 rf"{f(p.pressing_travel * MM, 2)}\ \text{{mm}} = {f(amp.cut_work, 1)}\ \text{{J}}"),
+        "power": (rf"\bar P = \frac{{W_c}}{{T}} = \frac{{{f(amp.cut_work, 1)}}}{{{f(60 / p.shaft_rpm, 3)}}}"
+                  rf" = {f(amp.cut_work * p.shaft_rpm / 60, 1)}\ \text{{W}},\qquad \bar M_b\,\omega = "
+                  rf"{f(f_.mean_torque, 2)} \times {f(abs(p.crank_omega), 4)} = {f(f_.mean_power, 1)}\ \text{{W}}"),
+        "required": (rf"M_{{req}} = F_c\,\frac{{v_D}}{{\omega}} = {f(p.cutting_force / 1e3, 1)}\ "
+                     rf"\text{{kN}} \times {f(u0 * MM, 4)}\ \text{{mm}} = {f(p.cutting_force * u0, 1)}"
+                     rf"\ \text{{N·m}}"),
+        "motor": (rf"T = \frac{{P_{{ed}}\,\eta}}{{\omega}} = \frac{{{f(motor.power, 0)} \times "
+                  rf"{f(drive.efficiency, 4)}}}{{{f(abs(p.crank_omega), 4)}}} = {f(t_motor, 1)}\ "
+                  rf"\text{{N·m}},\qquad F = \frac{{T}}{{M/F}} = {f(f_motor / 1e3, 1)}\ \text{{kN}}"),
+    }
+    return {
+        "eq": eq, "rows": rows,
+        "press_up": _deg(tm.press_up, 2), "top": _deg(tm.top, 2), "press_span": _deg(tm.press_span, 2),
+        "press_time": f(amp.press_time * 1e3, 1),
+        "clear_up": _deg(tm.clear_up, 2), "clear_down": _deg(tm.clear_down, 2),
+        "clear_span": _deg(tm.clear_span, 2), "press_down": _deg(tm.press_down, 2),
+        "peak_req": f(amp.peak_required, 1), "peak_phase": _deg(amp.peak_phase, 2),
+        "mb_peak": f(f_.balancing_torque[i_peak], 1), "mb_peak_phase": _deg(k.phase[i_peak], 2),
+        "mb_mean": f(f_.mean_torque, 2), "peak_factor": f(f_.peak_torque / f_.mean_torque, 2),
+        "f_motor": f(f_motor / 1e3, 1), "t_motor": f(t_motor, 1), "motor": motor.designation,
+        "F": f(p.cutting_force / 1e3, 1), "t": f(p.pressing_travel * MM, 2),
+        "c": f(p.clearance * MM, 1), "ratio_start": f(amp.table[0][4], 2),
+    }
+
+
+def _flywheel(r, p, b, zh: bool) -> dict:
+    fl = r["flywheel"]
+    shaft = _shaft(fl.shaft, len(b.drive.stages), zh)
+    rows = [[_shaft(j, len(b.drive.stages), zh), f(n_, 1), f(tm, 1), f(tp, 1), f(ds * MM, 0),
+             f(dp * MM, 0)] for j, n_, tm, tp, ds, dp in fl.peak_shafts]
+    eq = {
+        "md": (rf"M_d = \frac{{1}}{{2\pi}}\oint M_b\,d\varphi = {f(fl.mean_torque, 2)}\ \text{{N·m}}"
+               rf"\ (\text{{{'分配轴' if zh else 'distribution shaft'}}})"),
+        "jf": (rf"J_F = \frac{{900\,\Delta W_{{max}}}}{{\pi^2 n^2 [\delta]}} = \frac{{900 \times "
+               rf"{f(fl.max_energy_swing, 1)}}}{{\pi^2 \times {f(fl.shaft_speed_rpm, 2)}^2 \times "
+               rf"{f(fl.fluctuation, 4)}}} = {f(fl.inertia, 3)}\ \text{{kg·m}}^2"),
+        "crank": (rf"J_F' = J_F\,i^2 = {f(fl.inertia, 3)} \times {f(fl.speed_ratio, 3)}^2 = "
+                  rf"{f(fl.inertia_on_crank, 1)}\ \text{{kg·m}}^2"),
+        "mass": (rf"m = \frac{{4 J_F}}{{D^2}} = \frac{{4 \times {f(fl.inertia, 3)}}}"
+                 rf"{{{f(fl.rim.diameter, 3)}^2}} = {f(fl.rim.rim_mass, 2)}\ \text{{kg}}"),
+        "width": (rf"b = \sqrt{{\frac{{4 g J_F}}{{\pi D^3 (H/b) \gamma}}}} = \sqrt{{\frac{{4 \times "
+                  rf"{f(p.gravity, 2)} \times {f(fl.inertia, 3)}}}{{\pi \times "
+                  rf"{f(fl.rim.diameter, 3)}^3 \times {f(p.rim_height_to_width, 2)} \times "
+                  rf"{f(p.specific_weight, 0)}}}}} = {f(fl.rim.width * MM, 1)}\ \text{{mm}}"),
+    }
+    return {"eq": eq, "shaft": shaft, "n": f(fl.shaft_speed_rpm, 2), "ratio": f(fl.speed_ratio, 3),
+            "dw": f(fl.max_energy_swing, 1), "at_min": _deg(fl.phase_at_min, 1),
+            "at_max": _deg(fl.phase_at_max, 1), "delta": f"1/{1 / fl.fluctuation:.4g}",
+            "jf": f(fl.inertia, 3), "jf_crank": f(fl.inertia_on_crank, 1),
+            "D": f(fl.rim.diameter * MM, 0), "b": f(fl.rim.width * MM, 1),
+            "Hr": f(fl.rim.height * MM, 1), "m": f(fl.rim.rim_mass, 1),
+            "speed": f(fl.rim.rim_speed, 2), "peak_rows": rows,
+            "share": f(fl.max_energy_swing / r["amplification"].cut_work * 100, 1)}
+
+
+def _feed(r, b, p, zh: bool) -> dict:
+    """The chain, and the incomplete gear's motion angle against the platen's clear arc."""
+    fd = r["feed"]
+    g = fd.gear
+    t = g.times()
+    rows = [
+        ["$p$", "链条节距" if zh else "chain pitch", f(p.chain_pitch * MM, 2), "mm"],
+        ["$z_s$", "链轮齿数" if zh else "sprocket teeth", str(p.sprocket_teeth), "—"],
+        ["$R_s$", "链轮分度圆半径 $p/(2\\sin(180°/z_s))$" if zh else "sprocket pitch radius $p/(2\\sin(180°/z_s))$",
+         f(fd.sprocket_radius * MM, 2), "mm"],
+        ["$L$", "每循环送进量 $(z_1'/z_2)\\,z_s\\,p$" if zh else "feed per cycle $(z_1'/z_2)\\,z_s\\,p$",
+         f(fd.feed * MM, 2), "mm"],
+        ["$L_0$", "夹爪排间距（要求）" if zh else "gripper-bar spacing (required)", f(p.bar_spacing * MM, 2), "mm"],
+        ["$t_m$", "送进时间" if zh else "feed time", f(t[1], 3), "s"],
+        ["$\\bar v_c$", "送进时链条平均速度 $L/t_m$" if zh else "mean chain speed while feeding $L/t_m$",
+         f(fd.chain_speed, 3), "m/s"],
+        ["$\\Delta v_c$", "啮合开始时链速突变 $R_s\\,\\Delta\\omega_2$" if zh else
+         "chain speed jump at engagement $R_s\\,\\Delta\\omega_2$", f(fd.chain_jump, 3), "m/s"],
+    ]
+    eq = (rf"L = \frac{{z_1'}}{{z_2}}\,z_s\,p = \frac{{{g.teeth}}}{{{g.z2}}} \times {p.sprocket_teeth} "
+          rf"\times {f(p.chain_pitch * MM, 2)} = {f(fd.feed * MM, 2)}\ \text{{mm}}")
+    clear = r["amplification"].timing.clear_span
+    available = clear - 2 * p.margin
+    rel = r"\le" if g.motion_angle <= available else ">"
+    eq_timing = (rf"\varphi_m = 360° \times \frac{{z_1'}}{{z_1}} = 360° \times \frac{{{g.teeth}}}{{{g.z1}}} = "
+                 rf"{_deg(g.motion_angle, 2)}° {rel} "
+                 rf"{_deg(clear, 2)}° - 2 \times {_deg(p.margin, 1)}° = {_deg(available, 2)}°")
+    eq_ratio = (rf"k = \frac{{\varphi_m}}{{360° - \varphi_m}} = \frac{{{_deg(g.motion_angle, 2)}}}"
+                rf"{{{_deg(g.dwell_angle, 2)}}} = {f(g.motion_dwell_ratio, 4)}")
+    return {"rows": rows, "eq": eq, "auto": fd.start_auto, "start": _deg(g.motion_start, 1),
+            "feed": f(fd.feed * MM, 2), "jump": f(fd.chain_jump, 3), "eq_timing": eq_timing,
+            "eq_ratio": eq_ratio, "fits": bool(g.motion_angle <= available), "clear_span": _deg(clear, 2),
+            "margin": _deg(p.margin, 1)}
+
+
+def _ok(zh: bool, good: bool) -> str:
+    return ("满足" if zh else "ok") if good else ("不满足" if zh else "fails")
+
+
+def _verify_rows(r, p, zh: bool) -> list[list[str]]:
+    from .linkage_report import verification_rows
+
+    v, k, amp = r["verification"], r["press"], r["amplification"]
+    f_ = r["press_forces"]
+    g = r["toggle"].geometry
+    step = v.grid_step
+    rows = verification_rows(r["press_verification"], "zh" if zh else "en", k)
+    # The top is flat to order n: a position search places it only within δφ, so the
+    # K it finds carries that uncertainty (the velocity zeros are exact).
+    vk = r["press_verification"]
+    for row in rows:
+        if row[0] in ("位置搜索所得 K", "K by position search"):
+            row[2] = (f"{f(k.time_ratio, 6)} ± {e(v.K_search_tol)}（顶部 $H - s \\propto \\Delta\\varphi^n$，n = {f(v.top_order, 2)}，"
+                      f"位置搜索的角度分辨率约 {e(v.search_angle_tol)} rad）" if zh else
+                      f"{f(k.time_ratio, 6)} ± {e(v.K_search_tol)} (top flat as $H - s \\propto \\Delta\\varphi^n$, n = {f(v.top_order, 2)}: "
+                      f"a position search resolves about {e(v.search_angle_tol)} rad)")
+            row[3] = _ok(zh, abs(vk.time_ratio - k.time_ratio) <= v.K_search_tol + 1e-6)
+    # the switch-on of F_c falls between grid points: the mean of M_b is off by at most
+    # one jump × one step / 2π
+    bound = float(amp.peak_required * step / (2 * np.pi) / f_.mean_torque)
+    rows += [
+        ["仿真行程 − 设计行程 H /mm" if zh else "simulated stroke − H /mm", e(v.stroke_error * MM),
+         f"H = {f(g.stroke * MM, 2)} mm", _ok(zh, abs(v.stroke_error) < 1e-9)],
+        ["仿真所得 K（输出速度零点）" if zh else "simulated K (zeros of the output speed)",
+         f(k.time_ratio, 9), f"K = {f(g.K, 6)} ± {e(v.K_velocity_tol)}",
+         _ok(zh, abs(k.time_ratio - g.K) <= v.K_velocity_tol)],
+        ["仿真上止点处 CB 偏离导路的角度 /°" if zh else "toggle angle at the simulated top /°",
+         e(v.top_toggle_angle * DEG), f"ε = {f(g.top_angle * DEG, 2)}°",
+         _ok(zh, abs(v.top_toggle_angle - g.top_angle) <= max(v.search_angle_tol, 1e-8))],
+        ["上止点附近 $H - s \\propto \\Delta\\varphi^n$ 的阶数 n" if zh else
+         "order n of $H - s \\propto \\Delta\\varphi^n$ near the top", f(v.top_order, 3),
+         "4 (ε = 0) / 2 (ε > 0)", _ok(zh, abs(v.top_order - (4 if g.top_angle == 0 else 2)) < 0.05)],
+        ["增力特性：动态静力分析与虚功闭式解之差（相对）" if zh else
+         "force amplification: kinetostatics vs virtual-work closed form (relative)",
+         e(v.amplification_error), "≤ 1e-9", _ok(zh, v.amplification_error < 1e-9)],
+        ["能量平衡 $\\oint M_b d\\varphi / (F_c t)$" if zh else "energy balance $\\oint M_b d\\varphi / (F_c t)$",
+         f(v.energy_ratio, 5), f"1 ± {f(bound, 4)}", _ok(zh, abs(v.energy_ratio - 1) <= bound)],
+        ["循环图下模板行与仿真位移不符的转角 /°" if zh else "platen row vs simulated s: disagreeing angle /°",
+         f(v.platen_mismatch * DEG, 2), f"≤ {f(2 * step * DEG, 2)}", _ok(zh, v.platen_mismatch <= 2 * step + 1e-12)],
+        ["循环图夹爪行与凸轮升程不符的转角 /°" if zh else "gripper row vs cam lift: disagreeing angle /°",
+         f(v.gripper_mismatch * DEG, 2), f"≤ {f(2 * step * DEG, 2)}", _ok(zh, v.gripper_mismatch <= 2 * step + 1e-12)],
+        ["循环图链条行与不完全齿轮运动不符的转角 /°" if zh else
+         "chain row vs incomplete gear motion: disagreeing angle /°",
+         f(v.chain_mismatch * DEG, 2), f"≤ {f(2 * step * DEG, 2)}", _ok(zh, v.chain_mismatch <= 2 * step + 1e-12)],
+        ["链条送进量 − 夹爪排间距 /mm" if zh else "chain feed − gripper-bar spacing /mm",
+         e(v.feed_error * MM), "0", _ok(zh, abs(v.feed_error) < 1e-8)],
+    ]
+    return rows
+
+
+def _findings(r, lang: str) -> list[str]:
+    """Every stage's findings; the drive's (listed in its own chapter) as one summary line."""
+    out = []
+    for key in ("press_verification", "flywheel", "cam", "feed", "cycle"):
+        for w in getattr(r.get(key), "warnings", None) or ():
+            text = w.text(lang)
+            if text not in out:
+                out.append(text)
+    drive = r["drive"].warnings
+    if drive:
+        peak = r["flywheel"].peak_shafts
+        if lang == "zh":
+            text = f"传动装置设计中有 {len(drive)} 项校核不合格（见传动装置设计一章的“设计中的问题”）"
+            if peak:
+                text += "：飞轮之后的轴、轴承和键按峰值转矩校核，应按“飞轮之后各轴的峰值转矩”表加大轴径后重新选择轴承和键"
+        else:
+            text = (f"{len(drive)} checks of the drive design fail (listed in the drive chapter's "
+                    "problems)")
+            if peak:
+                text += ("; the shafts, bearings and keys after the flywheel are checked with the peak "
+                         "torque: enlarge the shafts as the table \"shafts after the flywheel\" says, then "
+                         "choose bearings and keys again")
+        out.append(text + ("。" if lang == "zh" else "."))
+    return out
+
+
+def _cells(rows: list[list[str]]) -> list[list[str]]:
+    """Escape the pipes inside table cells (e.g. max|M_b ω|), which would split the cell."""
+    return [[c.replace("|", "\\|") for c in row] for row in rows]
+
+
+def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
+    """Strings, rows and formulas for the templates."""
+    from .cam_report import cam_context
+    from .components_report import cycle_context, intermittent_context
+    from .drive_report import drive_context
+    from .linkage_report import linkage_context
+
+    zh = lang == "zh"
+    p = r["params"]
+    k, f_ = r["press"], r["press_forces"]
+    lk = linkage_context(r["press_model"], k, f_, None, r["press_verification"], figures, lang,
+                         prefix="press",
+                         title="模切机构运动与动力分析" if zh else "Toggle press: kinematics and kinetostatics")
+    cam = cam_context(r["cam"], lang, figures, "cam_profile.csv")
+    ig = intermittent_context(r["feed"].gear, lang, {"motion": figures["ig_motion"]}, level=2,
+                              label="dc-ig")
+    cyc = r["cycle"]
+    cycle = cycle_context(cyc.diagram, lang, {"linear": figures["cycle_linear"],
+                                             "circular": figures["cycle_circular"]},
+                          cyc.checks, level=2, label="dc-cycle")
+    pw = (rf"P_w = \bar M_b\,\omega = {f(f_.mean_torque, 2)} \times {f(abs(p.crank_omega), 4)} = "
+          rf"{f(f_.mean_power, 1)}\ \text{{W}}")
+    drive = drive_context(r["drive"], lang, figures, pw)
+    verify = _verify_rows(r, p, zh)
+    for row in cycle["verify"] + ig["verify"]:
+        value = float(row[1])
+        verify.append([row[0], row[1], "0", _ok(zh, abs(value) < 1e-6)])
+    gear = r["feed"].gear
+    return {
+        "meta": brief.report, "fig": figures,
+        "rpm": f(p.shaft_rpm, 2), "period": f(60 / p.shaft_rpm, 3), "omega": f(abs(p.crank_omega), 4),
+        "sense": ("顺时针" if p.crank_omega < 0 else "逆时针") if zh else
+                 ("clockwise" if p.crank_omega < 0 else "counter-clockwise"),
+        "data_rows": _data_rows(brief, p, zh), "choice_rows": _choice_rows(brief, p, r, zh),
+        "syn": _synthesis(r["toggle"], p, zh), "amp": _amplification(r, p, zh),
+        "fly": _flywheel(r, p, brief, zh), "feed": _feed(r, brief, p, zh),
+        "linkage": lk, "cam": cam, "ig": ig, "cycle": cycle, "drive": drive,
+        "gripper_start": _deg(cyc.gripper_start, 1), "gripper_auto": cyc.gripper_auto,
+        "feed_start": _deg(gear.motion_start, 1),
+        "verify_rows": _cells(verify), "findings": _findings(r, lang),
+    }

@@ -1,0 +1,353 @@
+"""The die-cutter (seed 001b) against independent references: the toggle's closed-form
+geometry, the crank-rocker's law-of-cosines extremes, finite differences of the simulated
+platen, virtual work, the work of the cutting force per cycle, the textbook formulas of the
+incomplete gear and the cam's own lift table."""
+from __future__ import annotations
+
+import copy
+from pathlib import Path
+
+import numpy as np
+import pytest
+import yaml
+from typer.testing import CliRunner
+
+from mechdesign.brief.loader import BriefError, _UniqueKeyLoader, parse_brief
+from mechdesign.cli import app
+from mechdesign.core import cycle as cy
+from mechdesign.core import fourbar
+from mechdesign.machines import get_machine, stages_for
+from mechdesign.pipeline import run_stages
+
+ROOT = Path(__file__).resolve().parents[1]
+BRIEF = ROOT / "designs" / "die_cutter.yaml"
+TWO_PI = 2 * np.pi
+
+
+def base() -> dict:
+    # the brief loader's YAML reading (7.0e4 is a number, as in YAML 1.2)
+    return yaml.load(BRIEF.read_text(encoding="utf-8"), Loader=_UniqueKeyLoader)  # noqa: S506
+
+
+def run(data: dict) -> dict:
+    b = parse_brief(data)
+    m = get_machine(b.machine)
+    p = m.to_params(b)
+    return run_stages(stages_for(m, p), {"params": p, "brief": b})[0]
+
+
+@pytest.fixture(scope="module")
+def shipped():
+    return run(base())
+
+
+def edited(**changes) -> dict:
+    """The shipped brief with ``section.field`` values replaced."""
+    data = copy.deepcopy(base())
+    for path, value in changes.items():
+        node = data
+        *parents, leaf = path.split("__")
+        for key in parents:
+            node = node[key]
+        node[leaf] = value
+    return data
+
+
+# ----------------------------------------------------------------------------- geometry
+
+
+def test_stroke_and_top_height_by_the_toggle_closed_form(shipped):
+    r = shipped
+    p, k = r["params"], r["press"]
+    lt, ld = p.geometry.toggle_CB, p.geometry.toggle_BD
+    n = k.grid_size
+    y = k.points["D"][:n].imag
+    # Straight toggle at the top: D is CB + BD above C; the stroke is the brief's H.
+    assert np.max(y) == pytest.approx(lt + ld, abs=1e-12)
+    assert r["press_verification"].stroke == pytest.approx(p.geometry.stroke, abs=1e-12)
+    # At the bottom B is ψ off the guide: y = l_CB cos ψ + √(l_BD² − l_CB² sin² ψ).
+    psi = r["toggle"].swing
+    bottom = lt * np.cos(psi) + np.sqrt(ld ** 2 - (lt * np.sin(psi)) ** 2)
+    assert np.min(y) == pytest.approx(bottom, abs=1e-12)
+    assert lt + ld - bottom == pytest.approx(p.geometry.stroke, abs=1e-12)
+    # D stays on the vertical guide through C, and B on its circle about C.
+    assert np.max(np.abs(k.points["D"][:n].real)) < 1e-12
+    assert np.max(np.abs(np.abs(k.points["B"][:n]) - lt)) < 1e-12
+
+
+def test_crank_rocker_extremes_by_the_law_of_cosines(shipped):
+    """θ and ψ of the synthesised four-bar O1ABC from its lengths alone (triangles O1CB at the
+    folded and extended positions) are the K and the swing the design asked for."""
+    d = shipped["toggle"]
+    theta, psi = fourbar.crank_rocker_extremes(d.four)
+    K = shipped["params"].geometry.K
+    assert theta == pytest.approx(np.pi * (K - 1) / (K + 1), abs=1e-10)
+    assert psi == pytest.approx(d.swing, abs=1e-10)
+    ok, kind = fourbar.grashof(d.four)
+    assert ok and kind == "crank-rocker"
+    # the pivot positions reproduce the frame length
+    assert abs(d.O1) == pytest.approx(d.four.frame, abs=1e-12)
+
+
+def test_time_ratio_and_rise_span_from_the_simulation(shipped):
+    k = shipped["press"]
+    K = shipped["params"].geometry.K
+    # The rise (platen up) is the slow stroke: 180° + θ of crank angle.
+    tol = shipped["verification"].K_velocity_tol
+    assert k.time_ratio == pytest.approx(K, abs=tol)
+    assert k.working_span == pytest.approx(np.pi * 2 * K / (K + 1), abs=tol)
+    # position 1 is the bottom: the platen rises from there
+    assert k.s[0] == 0.0 and k.v[1] > 0
+
+
+@pytest.mark.parametrize("rotation", ["cw", "ccw"])
+@pytest.mark.parametrize("top", ["extended", "folded"])
+def test_every_placement_keeps_stroke_K_and_the_slow_rise(rotation, top):
+    r = run(edited(press__crank_rotation=rotation, press__top_position=top,
+                   gripper_cam__rotation=rotation))
+    k, g, v = r["press"], r["params"].geometry, r["verification"]
+    assert r["press_verification"].stroke == pytest.approx(g.stroke, abs=1e-12)
+    # the top is flat to fourth order: the speed's zero is found to about (ε/c)^(1/3) in angle
+    assert v.K_velocity_tol < 1e-4
+    assert k.time_ratio == pytest.approx(g.K, abs=v.K_velocity_tol)
+    assert np.sign(r["params"].crank_omega) == (1 if rotation == "ccw" else -1)
+
+
+def test_rotation_sense_mirrors_the_drawing():
+    cw, ccw = run(edited()), run(edited(press__crank_rotation="ccw", gripper_cam__rotation="ccw"))
+    a, b = cw["toggle"].O1, ccw["toggle"].O1
+    assert a.real == pytest.approx(-b.real, abs=1e-12) and a.imag == pytest.approx(b.imag, abs=1e-12)
+
+
+def test_folded_top_spends_more_crank_angle_cutting_but_less_clear():
+    """The YAML's reason for the extended top: the folded one gives a longer cut (lower torque
+    peak) but a shorter clear arc for the feed."""
+    ext = run(edited())["amplification"]
+    fol = run(edited(press__top_position="folded", timing__feed_start_deg=0,
+                     timing__gripper_open_deg=0))["amplification"]
+    assert fol.timing.press_span > ext.timing.press_span
+    assert fol.timing.clear_span < ext.timing.clear_span
+    assert fol.peak_required < ext.peak_required
+
+
+@pytest.mark.parametrize("eps, order", [(0.0, 4.0), (3.0, 2.0)])
+def test_top_is_flat_to_fourth_order_only_with_the_straight_toggle(eps, order):
+    """With the toggle straight at the crank-rocker's dead centre H − s ∝ Δφ⁴ (both dy/dβ and
+    dβ/dφ vanish); a toggle stopping short of straight gives the ordinary Δφ²."""
+    r = run(edited(press__toggle_angle_at_top_deg=eps))
+    v = r["verification"]
+    assert v.top_order == pytest.approx(order, abs=0.05)
+    assert v.top_toggle_angle == pytest.approx(np.radians(eps), abs=max(v.search_angle_tol, 1e-8))
+
+
+# ----------------------------------------------------------------------------- forces
+
+
+def test_force_amplification_against_finite_differences_of_the_platen(shipped):
+    """F = M ω / v_D: the crank torque per newton of pressing force (kinetostatics, links
+    massless) equals dy_D/dφ from central differences of the simulated positions."""
+    k, amp = shipped["press"], shipped["amplification"]
+    n = k.grid_size
+    h = TWO_PI / n
+    y = k.points["D"][:n].imag
+    dy = (np.roll(y, -1) - np.roll(y, 1)) / (2 * h)
+    scale = np.max(np.abs(dy))
+    assert np.max(np.abs(amp.unit_torque[:n] - dy)) / scale < 1e-5      # O(h²)
+    # and the virtual-work closed form (four-bar ω ratio × toggle derivative) to rounding
+    assert np.max(np.abs(amp.unit_torque[:n] - amp.closed_form[:n])) / scale < 1e-12
+
+
+def test_amplification_table_matches_the_platen_gap(shipped):
+    """Each row's phase puts the platen the stated gap below its top, and its F/M is the
+    reciprocal of M/F; Π = a/(M/F)."""
+    r = shipped
+    k, amp, model = r["press"], r["amplification"], r["press_model"]
+    a = r["toggle"].four.crank
+    for gap, ph, u, fpt, ratio in amp.table:
+        z = model.mechanism.solve(np.array([k.start_angle + k.sense * ph])).points["D"].pos[0]
+        assert k.stroke - (z.imag - k.points["D"][0].imag) == pytest.approx(gap, abs=1e-12)
+        assert fpt * u == pytest.approx(1.0)
+        assert ratio == pytest.approx(a / u)
+    gaps = [row[0] for row in amp.table]
+    forces = [row[3] for row in amp.table]
+    assert gaps == sorted(gaps, reverse=True) and forces == sorted(forces)   # grows to the top
+
+
+def test_mean_crank_power_is_the_cutting_work_per_cycle(shipped):
+    """Gravity and inertia do no net work over a cycle, so ∮ M_b dφ = F_c·t exactly; the grid's
+    mean is off by at most the torque jump at switch-on times one step / 2π."""
+    r = shipped
+    p, f, amp = r["params"], r["press_forces"], r["amplification"]
+    work = p.cut_length * p.specific_resistance * p.pressing_travel    # L q t
+    assert amp.cut_work == pytest.approx(work)
+    h = TWO_PI / r["press"].grid_size
+    bound = amp.peak_required * h / TWO_PI
+    assert abs(f.mean_torque * TWO_PI - work) / TWO_PI <= bound
+    period = 60.0 / p.shaft_rpm
+    assert f.mean_power == pytest.approx(work / period, rel=bound / f.mean_torque)
+
+
+def test_mean_power_converges_with_the_grid():
+    r = run(edited(analysis__grid_points=36000))
+    p, f = r["params"], r["press_forces"]
+    work = p.cut_length * p.specific_resistance * p.pressing_travel
+    assert f.mean_torque * TWO_PI == pytest.approx(work, rel=3e-4)
+
+
+def test_required_torque_peaks_where_cutting_starts(shipped):
+    r = shipped
+    amp, p = r["amplification"], r["params"]
+    assert amp.peak_phase == pytest.approx(amp.timing.press_up, abs=TWO_PI / r["press"].grid_size)
+    # the supremum is at the window's start (table row 1); the grid's first point inside it is
+    # less than one step later, where the torque has fallen by at most one step's slope
+    sup = p.cutting_force * amp.table[0][2]
+    assert sup * (1 - 5e-3) <= amp.peak_required <= sup
+
+
+# ----------------------------------------------------------------------------- flywheel, drive
+
+
+def test_flywheel_inertia_in_si_form(shipped):
+    """J = ΔW/(ω² [δ]) with ω in rad/s on the flywheel's shaft; on the distribution shaft the
+    same flywheel would need i² times more."""
+    fl = shipped["flywheel"]
+    omega = fl.shaft_speed_rpm * np.pi / 30
+    assert fl.inertia == pytest.approx(fl.max_energy_swing / (omega ** 2 * fl.fluctuation))
+    assert fl.inertia_on_crank == pytest.approx(fl.inertia * fl.speed_ratio ** 2)
+    # the energy swing cannot exceed the work of one cut (the cut is the only net load)
+    assert 0.5 * fl.max_energy_swing < shipped["amplification"].cut_work
+    assert fl.max_energy_swing < shipped["amplification"].cut_work
+
+
+def test_drive_meets_the_speed_and_the_power(shipped):
+    d, p = shipped["drive"], shipped["params"]
+    assert abs(d.output_speed - p.shaft_rpm) / p.shaft_rpm <= 0.05
+    assert d.motor.power >= d.power_required
+    assert d.machine_power == pytest.approx(shipped["press_forces"].mean_power)
+    assert [s.type for s in d.stages] == ["belt", "helical", "helical"]
+    # the flywheel on shaft Ⅰ: the stages after it carry the peak torque
+    assert d.peak_from_shaft == 1
+    assert d.peak_factor == pytest.approx(shipped["press_forces"].peak_torque /
+                                          shipped["press_forces"].mean_torque)
+
+
+# ----------------------------------------------------------------------------- feed and cycle
+
+
+def test_incomplete_gear_by_the_textbook_formulas(shipped):
+    r = shipped
+    g, fd, p = r["feed"].gear, r["feed"], r["params"]
+    assert (g.z1, g.teeth, g.z2) == (45, 18, 18)
+    assert g.motion_angle == pytest.approx(np.radians(360 * 18 / 45))
+    # the chain advances (z1'/z2) z_s p per cycle = one gripper-bar spacing
+    assert fd.feed == pytest.approx(18 / 18 * 24 * 25.4e-3)
+    assert fd.feed == pytest.approx(p.bar_spacing)
+    # integrating the driven wheel's speed ratio over one driver turn gives the advance
+    theta = np.linspace(0, TWO_PI, 200001)
+    ratio = g.driven_motion(theta).ratio
+    advance = np.sum(0.5 * (ratio[1:] + ratio[:-1]) * np.diff(theta))
+    assert advance == pytest.approx(g.advance, rel=1e-4)
+
+
+def test_cycle_rows_match_the_cam_the_gear_and_the_simulated_platen(shipped):
+    """Sampled over the shaft angle: the gripper row is open exactly where the designed cam
+    lifts its follower, the chain row moves exactly where the incomplete gear meshes, the
+    platen row is 'clear' exactly where the simulated platen is c below its top."""
+    r = shipped
+    k, cam, g, cyc, p = r["press"], r["cam"], r["feed"].gear, r["cycle"], r["params"]
+    n = k.grid_size
+    phase = k.phase[:n]
+    step = TWO_PI / n
+    diagram = cyc.diagram
+    # the cam's own table on its fine grid (δ from the cam stage), shifted by its mounting angle
+    lift = np.interp(np.mod(phase - cyc.gripper_start, TWO_PI), cam.grid.delta, cam.grid.motion.s,
+                     period=TWO_PI)
+    open_cam = lift > 1e-6 * cam.params.programme.stroke
+    open_row = cy.state_at(diagram.actuator("gripper"), phase) != "dwell_low"
+    assert np.sum(open_cam != open_row) <= 4          # only samples next to the boundaries
+    moving = g.driven_motion(phase).moving
+    assert np.array_equal(moving, cy.moving_at(diagram.actuator("chain"), phase))
+    clear = k.s[:n] < k.stroke - p.clearance
+    assert np.sum(clear != (cy.state_at(diagram.actuator("platen"), phase) == "dwell_low")) <= 2
+    # the chain row's motion angle is the incomplete gear's 360° z1'/z1
+    move = cy.interval_of(diagram.actuator("chain"), "move")
+    assert move.span == pytest.approx(TWO_PI * g.teeth / g.z1)
+    # the gripper's open arc is the cam's rise + far dwell + return
+    spans = [s["angle_deg"] for s in base()["gripper_cam"]["programme"]]
+    opened = sum(ph.span for ph in diagram.actuator("gripper").phases if ph.state != "dwell_low")
+    assert opened == pytest.approx(np.radians(sum(spans[:3])))
+    assert step > 0
+
+
+def test_timing_requirements_hold_by_sampling(shipped):
+    """Checked without the constraint machinery: while the chain moves the simulated platen is
+    more than c below its top; while the cam lifts the follower the chain stands still."""
+    r = shipped
+    k, cam, g, cyc, p = r["press"], r["cam"], r["feed"].gear, r["cycle"], r["params"]
+    n = k.grid_size
+    phase = k.phase[:n]
+    moving = g.driven_motion(phase).moving
+    assert np.all(k.s[:n][moving] < k.stroke - p.clearance)
+    lift = np.interp(np.mod(phase - cyc.gripper_start, TWO_PI), cam.grid.delta, cam.grid.motion.s,
+                     period=TWO_PI)
+    assert not np.any(moving & (lift > 0))
+    assert all(c.ok for c in cyc.checks) and not cyc.warnings
+
+
+def test_feed_placed_in_the_cutting_zone_is_a_finding_not_an_error():
+    r = run(edited(timing__feed_start_deg=150))
+    codes = {w.code for w in r["cycle"].warnings}
+    assert codes == {"timing"}
+    assert not all(c.ok for c in r["cycle"].checks)
+
+
+# ----------------------------------------------------------------------------- the brief
+
+
+@pytest.mark.parametrize("changes, where, says", [
+    ({"chain__bar_spacing_mm": 600}, "chain.bar_spacing_mm", "609.60"),
+    ({"press__stroke_H_mm": 400}, "press", "cannot be reached"),
+    ({"press__clearance_mm": 3}, "press.clearance_mm", "pressing travel"),
+    ({"press__clearance_mm": 60}, "press.clearance_mm", "stroke"),
+    ({"incomplete_gear__motion_start_deg": 10}, "incomplete_gear.motion_start_deg",
+     "timing.feed_start_deg"),
+    ({"gripper_cam__rotation": "ccw"}, "gripper_cam.rotation", "distribution shaft"),
+    ({"flywheel__shaft": 5}, "flywheel.shaft", "0 (motor) … 3"),
+    ({"timing__feed_start_deg": 400}, "timing", "0 ≤ value < 360"),
+])
+def test_bad_briefs_name_the_field(changes, where, says):
+    with pytest.raises(BriefError) as exc:
+        parse_brief(edited(**changes))
+    text = str(exc.value)
+    assert where in text and says in text
+
+
+def test_cam_programme_must_open_hold_close_rest():
+    data = edited()
+    prog = data["gripper_cam"]["programme"]
+    data["gripper_cam"]["programme"] = [prog[3], prog[0], prog[1], prog[2]]
+    with pytest.raises(BriefError) as exc:
+        parse_brief(data)
+    assert "rise, dwell, return, dwell" in str(exc.value)
+
+
+def test_cli_bad_brief_exits_2_without_traceback(tmp_path):
+    path = tmp_path / "bad.yaml"
+    path.write_text(yaml.safe_dump(edited(chain__bar_spacing_mm=600), allow_unicode=True),
+                    encoding="utf-8")
+    result = CliRunner().invoke(app, ["run", str(path), "-o", str(tmp_path / "out"), "-f", "md"])
+    assert result.exit_code == 2
+    assert "chain.bar_spacing_mm" in result.output and "Traceback" not in result.output
+
+
+def test_cli_writes_the_english_report(tmp_path):
+    out = tmp_path / "en"
+    result = CliRunner().invoke(app, ["run", str(BRIEF), "-o", str(out), "-f", "md", "--lang", "en"])
+    assert result.exit_code == 0, result.output
+    md = (out / "report.md").read_text(encoding="utf-8")
+    assert "{{" not in md and "{%" not in md
+    for heading in ("# Toggle press synthesis", "# Cutting force and force amplification",
+                    "# Flywheel", "# Drive design", "# Cam mechanism", "## Incomplete gear drive",
+                    "## Motion cycle diagram", "# Verification"):
+        assert heading in md
+    assert (out / "cam_profile.csv").exists() and (out / "results.json").exists()
