@@ -107,13 +107,14 @@ def run(
             IntermittentDesignError) as exc:
         if debug:
             traceback.print_exc()
-        what = {AssemblyError: "the mechanism cannot be assembled",
-                CamDesignError: "the cam cannot be designed",
-                DriveDesignError: "the drive cannot be designed",
-                SynthesisError: "the linkage cannot be synthesised",
-                CycleError: "the motion cycle diagram is inconsistent",
-                IntermittentDesignError: "the intermittent drive cannot be designed",
-                }.get(type(exc), "the design is not feasible")
+        what = next(text for kind, text in (
+            (AssemblyError, "the mechanism cannot be assembled"),
+            (CamDesignError, "the cam cannot be designed"),
+            (DriveDesignError, "the drive cannot be designed"),
+            (SynthesisError, "the linkage cannot be synthesised"),
+            (CycleError, "the motion cycle diagram is inconsistent"),
+            (IntermittentDesignError, "the intermittent drive cannot be designed"))
+            if isinstance(exc, kind))
         _err(f"{brief}: {what} with the brief's data:\n  {exc}")
         raise typer.Exit(EXIT_INVALID)
     for value in results.values():

@@ -1,0 +1,641 @@
+"""Lock-beam bender (锁梁自动成型机床扳弯机构, seed 002), composed from shared stages.
+
+One main (distribution) shaft turns once per part. Stages:
+
+- transmission (传动系统): motor → belt → spur gears → main shaft; exact ratio, shaft
+  speeds (powers and torques only when the brief gives the motor power: the seed does not);
+- positioning cam (定位凸轮): the shared cam stage on ``params.cam`` (result ``cam``);
+- bending cam (扳弯凸轮): the shared cam design on ``params.bending_cam``;
+- bending linkage (扳弯机构): two-position synthesis of the double rocker
+  (:mod:`mechdesign.core.rocker_synthesis`), simulated with :mod:`mechdesign.core.mechanism`
+  over the input swing and over the main-shaft cycle (cam → rocker → four-bar → chain →
+  bending wheel), the seed's graphical lengths checked the same way;
+- feed linkage (送料机构): the shared linkage stages (prefix ``feed``) on the brief's
+  Assur-group description, plus the seed-format table and the guide-bar closed forms;
+- cycle (运动循环图): the brief's diagram, its timing constraints, and its agreement with
+  what the cams and the feed linkage actually do, found by simulation along the main shaft.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+from fractions import Fraction
+from functools import lru_cache
+
+import numpy as np
+
+from ..brief.lockbeam import BEND, FEED, PIN, BendingParams, LockbeamParams
+from ..core import cycle as cy
+from ..core import rocker_synthesis as rs
+from ..core.fourbar import FourBar, SynthesisError, grashof
+from ..core.gears import SpurPair, spur_pair
+from ..core.mechanism import RPR, RRP, RRR, Crank, LinkPoint, Mechanism
+from ..pipeline import Stage
+from .cam import cam_document, cam_stage, design as design_cam
+from .findings import Finding
+from .linkage import closure_residual, linkage_document, linkage_stages
+
+TWO_PI = 2.0 * np.pi
+DEG = 180.0 / np.pi
+
+
+# --------------------------------------------------------------------------- transmission
+
+
+@dataclass(frozen=True)
+class TrainStage:
+    kind: str                   # "belt" | "gear"
+    driver: float               # pulley diameter [m] or teeth
+    driven: float
+    ratio: float                # nominal n_in / n_out
+    ratio_exact: Fraction
+    pair: SpurPair | None
+    speed_in: float             # [rpm]
+    speed_out: float            # [rpm]
+
+
+@dataclass(frozen=True)
+class Shaft:
+    index: int                  # 0 the motor shaft
+    speed_rpm: float
+    power: float | None         # [W]
+    torque: float | None        # [N·m]
+
+
+@dataclass(frozen=True)
+class Transmission:
+    """Stage 传动系统设计."""
+
+    stages: tuple[TrainStage, ...]
+    ratio: float
+    ratio_exact: Fraction       # product of the stage ratios, exact
+    required_ratio: float       # motor speed / main-shaft speed
+    motor_rpm: float
+    output_rpm: float           # nominal (no slip)
+    output_rpm_slip: float      # with the belt's elastic slip
+    required_rpm: float
+    shafts: tuple[Shaft, ...]
+    warnings: list
+
+
+def transmission(p: LockbeamParams) -> Transmission:
+    t = p.transmission
+    stages, warnings = [], []
+    n = p.motor_rpm
+    belt = t.belt_ratio_exact
+    stages.append(TrainStage("belt", t.belt_d1, t.belt_d2, t.belt_d2 / t.belt_d1, belt, None,
+                             n, n / float(belt)))
+    n = n / float(belt)
+    for z1, z2 in t.gears:
+        r = Fraction(z2, z1)
+        pair = spur_pair(t.module, z1, z2, t.alpha)
+        stages.append(TrainStage("gear", z1, z2, z2 / z1, r, pair, n, n / float(r)))
+        n = n / float(r)
+        if z1 < pair.z_min - 1e-12:
+            warnings.append(Finding(
+                "undercut", f"齿轮 z1 = {z1} 少于不根切最少齿数 {pair.z_min:.1f}，标准齿轮会根切；应增加齿数或正变位",
+                f"the gear with z1 = {z1} teeth is below the least tooth number without undercut "
+                f"({pair.z_min:.1f}): a standard gear is undercut; add teeth or use a positive shift"))
+    exact = Fraction(1)
+    for s in stages:
+        exact *= s.ratio_exact
+    out = p.motor_rpm / float(exact)
+    slip = p.motor_rpm * (1.0 - t.slip) / float(exact)
+    if abs(out - p.rate) > 1e-9 * p.rate:
+        warnings.append(Finding(
+            "ratio", f"传动比 {float(exact):.4f} 使主轴转速为 {out:.3f} r/min，而生产率要求 {p.rate:g} r/min"
+                     f"（需要传动比 {p.motor_rpm / p.rate:.4f}）",
+            f"the train's ratio {float(exact):.4f} turns the main shaft at {out:.3f} rpm, but the "
+            f"production rate needs {p.rate:g} rpm (a ratio of {p.motor_rpm / p.rate:.4f})"))
+    shafts = []
+    power = t.power
+    speed = p.motor_rpm
+    shafts.append(Shaft(0, speed, power, None if power is None else power / (speed * np.pi / 30)))
+    for i, s in enumerate(stages, 1):
+        speed = s.speed_out
+        if power is not None:
+            power = power * (t.belt_efficiency if s.kind == "belt" else t.gear_efficiency)
+        shafts.append(Shaft(i, speed, power, None if power is None else power / (speed * np.pi / 30)))
+    return Transmission(tuple(stages), float(exact), exact, p.motor_rpm / p.rate, p.motor_rpm,
+                        out, slip, p.rate, tuple(shafts), warnings)
+
+
+# --------------------------------------------------------------------------- bending linkage
+
+
+@dataclass(frozen=True)
+class BendingSynthesis:
+    """The chosen design and the candidates considered (one per output sense)."""
+
+    design: rs.RockerDesign
+    gamma_min: float
+    sense: str                          # same | opposite
+    candidates: tuple                   # (sense, design or None, γ_min, message)
+
+
+def _dbeta(bp: BendingParams, sense: str) -> float:
+    return bp.output_swing if sense == "same" else -bp.output_swing
+
+
+@lru_cache(maxsize=32)
+def synthesise_bending(bp: BendingParams) -> BendingSynthesis:
+    """Two-position synthesis of the bending four-bar (the input rocker turns CCW by the cam's
+    swing Δα; the output by Δβ = bending angle / chain ratio, the same way or the opposite
+    way). Raises SynthesisError when no sense gives a valid design."""
+    senses = ("opposite", "same") if bp.sense == "auto" else (bp.sense,)
+    cands = []
+    for sense in senses:
+        try:
+            if bp.start is None:
+                limit = None if bp.ratio_factor is None else \
+                    bp.ratio_factor * bp.output_swing / bp.input_swing
+                ds, g = rs.best_start(bp.frame, bp.output_arm, bp.input_swing, _dbeta(bp, sense),
+                                      bp.length_bounds, limit)
+            else:
+                ds = rs.design_two_position(bp.frame, bp.output_arm, bp.start[0], bp.input_swing,
+                                            bp.start[1], _dbeta(bp, sense))
+                g = rs.sweep(ds).gamma_min
+            cands.append((sense, ds, float(g), ""))
+        except SynthesisError as exc:
+            cands.append((sense, None, 0.0, str(exc)))
+    valid = [c for c in cands if c[1] is not None]
+    if not valid:
+        raise SynthesisError("; ".join(f"output turning the {c[0]} way: {c[3]}" for c in cands))
+    best = max(valid, key=lambda c: c[2])
+    return BendingSynthesis(best[1], best[2], best[0], tuple(cands))
+
+
+def bending_mechanism(ds: rs.RockerDesign) -> Mechanism:
+    """The four-bar as Assur groups: the input rocker 2 (driven like a crank, ω = 1 so that
+    the links' ω and α are dβ/dα and d²β/dα²), then the RRR dyad coupler 3 – output 4."""
+    m = Mechanism("1", {"A0": 0j, "B0": complex(ds.frame, 0.0)})
+    m.add(Crank("input rocker A0A", "2", "A0", "A", ds.input_rocker, 1.0))
+    m.add(RRR("coupler AB – wheel arm B0B", "3", "4", "A", "B0", "B", ds.coupler,
+              ds.output_rocker, ds.branch))
+    return m
+
+
+@dataclass(frozen=True)
+class RoundedCheck:
+    """The design with its lengths rounded as drawn, assembled at the same input start."""
+
+    input_rocker: float         # [m]
+    coupler: float              # [m]
+    beta1: float                # [rad]
+    swing: float                # |Δβ| produced by the cam's swing [rad]
+    bend: float                 # bending angle that gives [rad]
+    gamma_min: float            # [rad]
+    input_swing_needed: float | None   # cam swing for exactly the required Δβ [rad]
+
+
+def rounded_check(ds: rs.RockerDesign, step: float, ratio: float) -> RoundedCheck | None:
+    """Round a and b to ``step`` [m], keep α1 and the branch, and simulate (None if the
+    rounded linkage cannot move through the swing)."""
+    from scipy.optimize import brentq
+
+    if step <= 0:
+        return None
+    a, b = round(ds.input_rocker / step) * step, round(ds.coupler / step) * step
+    beta1 = float(rs.output_angle(ds.frame, a, b, ds.output_rocker, ds.alpha1, ds.branch))
+    if not np.isfinite(beta1):
+        return None
+    rd = rs.RockerDesign(ds.frame, a, b, ds.output_rocker, ds.alpha1, ds.dalpha, beta1, ds.dbeta,
+                         ds.branch)
+    sw = rs.sweep(rd)
+    if not (sw.assembled and sw.monotonic):
+        return None
+    target = abs(ds.dbeta)
+
+    def miss(x):
+        z = rs.output_angle(ds.frame, a, b, ds.output_rocker, ds.alpha1 + x, ds.branch)
+        return abs(float(np.angle(np.exp(1j * (z - beta1))))) - target
+
+    needed = None
+    lo, hi = 0.5 * ds.dalpha, min(1.5 * ds.dalpha, np.pi / 2)
+    try:
+        if np.isfinite(miss(lo)) and np.isfinite(miss(hi)) and miss(lo) * miss(hi) < 0:
+            needed = float(brentq(miss, lo, hi, xtol=1e-15))
+    except ValueError:
+        needed = None
+    return RoundedCheck(a, b, beta1, abs(sw.swing), ratio * abs(sw.swing), sw.gamma_min, needed)
+
+
+@dataclass(frozen=True)
+class SeedCheck:
+    input_rocker: float
+    coupler: float
+    grashof: str
+    check: rs.LengthCheck
+
+
+@dataclass(frozen=True)
+class BendingResult:
+    """Stage 扳弯机构设计: synthesis and its simulation."""
+
+    synthesis: BendingSynthesis
+    design: rs.RockerDesign
+    mechanism: Mechanism
+    ratio: float                # chain ratio i = D_driving / D_bending
+    output_swing: float         # required |Δβ| [rad]
+    input_swing: float          # Δα [rad]
+    grashof: str
+    # simulation over the input swing (core.mechanism)
+    sweep_input: np.ndarray     # [rad]
+    sweep_output: np.ndarray    # [rad], continuous
+    sweep_gamma: np.ndarray     # [rad]
+    swing_simulated: float      # signed [rad]
+    gamma_min: float
+    gamma_max: float
+    gamma_min_at: float         # input rotation from the start where γ is least [rad]
+    velocity_ratio: np.ndarray  # dβ/dα over the sweep (core.mechanism, input ω = 1) [–]
+    rounded: RoundedCheck | None
+    closure: float              # [m]
+    # over the main-shaft cycle
+    shaft_angle: np.ndarray     # φ [rad], grid over one revolution
+    rocker_angle: np.ndarray    # input rocker angle from its start [rad]
+    rocker_omega: np.ndarray    # [rad/s]
+    wheel_angle: np.ndarray     # bending wheel, from its start, in the bending sense [rad]
+    wheel_omega: np.ndarray     # [rad/s]
+    wheel_alpha: np.ndarray     # [rad/s²]
+    bend_simulated: float       # largest wheel angle [rad]
+    fd_velocity: float          # max |ω − Δθ/Δt| / max |ω|
+    fd_acceleration: float
+    seed: SeedCheck | None
+    warnings: list
+
+
+def bending(p: LockbeamParams, bcam) -> BendingResult:
+    bp = p.bending
+    syn = synthesise_bending(bp)
+    ds = syn.design
+    mech = bending_mechanism(ds)
+    # 1. over the input swing
+    alpha = ds.alpha1 + ds.dalpha * np.linspace(0.0, 1.0, 1441)
+    m = mech.solve(alpha)
+    out = m.links["4"].angle
+    beta = ds.beta1 + np.unwrap(np.angle(np.exp(1j * (out - ds.beta1))))
+    delta = np.abs(np.angle(np.exp(1j * (m.links["3"].angle - m.links["4"].angle))))
+    gamma = np.minimum(delta, np.pi - delta)
+    i_min = int(np.argmin(gamma))
+    # 2. over the main-shaft cycle: δ = φ − φ0 on the bending cam, α = α1 + ψ(δ)
+    n = p.grid_points
+    phi = np.arange(n) * (TWO_PI / n)
+    prog = bcam.params.programme
+    fm = prog.evaluate(phi - p.bend_cam_start)
+    w = p.main_omega
+    mc = mech.solve(ds.alpha1 + fm.s)
+    g1, g2 = mc.links["4"].omega, mc.links["4"].alpha           # dβ/dα, d²β/dα²
+    a_dot, a_ddot = fm.ds * w, fm.d2s * w * w
+    beta_c = ds.beta1 + np.angle(np.exp(1j * (mc.links["4"].angle - ds.beta1)))
+    sign = np.sign(ds.dbeta)
+    ratio = bp.ratio
+    wheel = ratio * sign * (beta_c - ds.beta1)
+    wheel_w = ratio * sign * g1 * a_dot
+    wheel_a = ratio * sign * (g2 * a_dot ** 2 + g1 * a_ddot)
+    dt = (TWO_PI / n) / w
+
+    # Central differences are O(h²) only where the cam law is smooth: leave out the grid
+    # points next to a segment boundary (the 3-4-5 law's jerk jumps there).
+    edges = np.mod(prog.starts + p.bend_cam_start, TWO_PI)
+    gap = np.abs(np.angle(np.exp(1j * (phi[:, None] - edges[None, :]))))
+    smooth = np.all(gap > 1.5 * (TWO_PI / n), axis=1)
+
+    def rel(x, ref):
+        scale = np.max(np.abs(ref))
+        return 0.0 if scale == 0 else float(np.max(np.abs(x[smooth])) / scale)
+
+    fd_v = rel(wheel_w - (np.roll(wheel, -1) - np.roll(wheel, 1)) / (2 * dt), wheel_w)
+    fd_a = rel(wheel_a - (np.roll(wheel_w, -1) - np.roll(wheel_w, 1)) / (2 * dt), wheel_a)
+    warnings = []
+    g_min = float(gamma[i_min])
+    if g_min < bp.gamma_allowed - 1e-12:
+        warnings.append(Finding(
+            "transmission_angle",
+            f"扳弯四杆机构最小传动角 {g_min * DEG:.2f}° 小于许用值 {bp.gamma_allowed * DEG:.0f}°；应改变起始位置或杆长",
+            f"the bending four-bar's minimum transmission angle {g_min * DEG:.2f}° is below the "
+            f"allowed {bp.gamma_allowed * DEG:.0f}°; change the start position or the lengths"))
+    seed = None
+    if bp.seed is not None:
+        sa, sb = bp.seed
+        seed = SeedCheck(sa, sb, grashof(FourBar(sa, sb, ds.output_rocker, ds.frame))[1],
+                         rs.check_lengths(ds.frame, sa, sb, ds.output_rocker, ds.dalpha,
+                                          bp.output_swing))
+    return BendingResult(
+        synthesis=syn, design=ds, mechanism=mech, ratio=ratio, output_swing=bp.output_swing,
+        input_swing=bp.input_swing,
+        grashof=grashof(FourBar(ds.input_rocker, ds.coupler, ds.output_rocker, ds.frame))[1],
+        sweep_input=alpha, sweep_output=beta, sweep_gamma=gamma,
+        swing_simulated=float(beta[-1] - beta[0]), gamma_min=g_min, gamma_max=float(np.max(gamma)),
+        gamma_min_at=float(alpha[i_min] - ds.alpha1), velocity_ratio=m.links["4"].omega,
+        rounded=rounded_check(ds, bp.rounding, ratio),
+        closure=closure_residual(mech, m),
+        shaft_angle=phi, rocker_angle=fm.s, rocker_omega=a_dot, wheel_angle=wheel,
+        wheel_omega=wheel_w, wheel_alpha=wheel_a, bend_simulated=float(np.max(wheel)),
+        fd_velocity=fd_v, fd_acceleration=fd_a, seed=seed, warnings=warnings)
+
+
+# --------------------------------------------------------------------------- feed linkage
+
+
+@dataclass(frozen=True)
+class GuideBarClosedForm:
+    """Closed forms of a guide-bar (摆动导杆) drive with the crank pin on the bar's slider:
+    swing θ = 2 arcsin(r/d) (the bar is perpendicular to the crank at both extremes, and the
+    slider's extremes are the bar's), K = (180° + θ)/(180° − θ); with the slider guide
+    perpendicular to O2O3 the two extremes are mirror images, so H = 2 L sin(θ/2) = 2Lr/d."""
+
+    crank: float                # r [m]
+    centres: float              # d = |O2O3| [m]
+    bar_point: float | None     # L [m]: distance of the rod's pin on the bar from its pivot
+    theta: float                # [rad]
+    K: float
+    stroke: float | None        # [m] (None when the layout is not symmetric)
+
+
+def guide_bar_closed_form(model) -> GuideBarClosedForm | None:
+    """The closed forms when the feed linkage is crank + RPR (+ a point on the bar driving an
+    RRP slider); None for any other topology."""
+    g = model.mechanism.groups
+    crank = g[0]
+    rpr = next((x for x in g if isinstance(x, RPR)), None)
+    if rpr is None or rpr.a != crank.tip or abs(rpr.offset) > 0:
+        return None
+    frame = model.mechanism.frame_points
+    if rpr.pivot not in frame:
+        return None
+    o2o3 = complex(frame[crank.pivot]) - complex(frame[rpr.pivot])
+    d, r = abs(o2o3), crank.length
+    if not r < d:
+        return None
+    theta = 2.0 * np.arcsin(r / d)
+    K = (np.pi + theta) / (np.pi - theta)
+    L = stroke = None
+    rrp = next((x for x in g if isinstance(x, RRP) and x.c == model.output.name), None)
+    pt = None if rrp is None else next(
+        (x for x in g if isinstance(x, LinkPoint) and x.name == rrp.b and x.link == rpr.bar
+         and x.origin == rpr.pivot and x.offset_angle == 0.0), None)
+    if pt is not None:
+        L = pt.distance
+        u = np.exp(1j * rrp.guide_angle)
+        perpendicular = abs((np.conj(u) * o2o3).real) < 1e-12 * d
+        if perpendicular and model.output.kind == "point" and \
+                abs(np.sin(model.output.direction - rrp.guide_angle)) < 1e-12:
+            stroke = 2.0 * L * r / d
+    return GuideBarClosedForm(r, d, L, float(theta), float(K), stroke)
+
+
+@dataclass(frozen=True)
+class FeedTable:
+    """The seed's VB output: every 10° of crank angle from +x (counter-clockwise)."""
+
+    crank_angle: np.ndarray     # [rad]
+    x: np.ndarray               # slider x [m]
+    v: np.ndarray               # [m/s]
+    a: np.ndarray               # [m/s²]
+    bar_omega: np.ndarray       # [rad/s]
+    bar_alpha: np.ndarray
+    rod_omega: np.ndarray
+    rod_alpha: np.ndarray
+    seed_x: np.ndarray | None   # the seed's RRP routine: x_P + |x − x_P| (its abs())
+    closed: GuideBarClosedForm | None
+
+
+def feed_table(model, step: float = np.radians(10.0)) -> FeedTable:
+    angles = np.arange(0.0, TWO_PI - 1e-9, step)
+    m = model.mechanism.solve(angles)
+    out = model.output.name
+    rrp = next((x for x in model.mechanism.groups if isinstance(x, RRP) and x.c == out), None)
+    rpr = next((x for x in model.mechanism.groups if isinstance(x, RPR)), None)
+    e = m.points[out]
+    bar = m.links[rpr.bar] if rpr is not None else None
+    rod = m.links[rrp.rod] if rrp is not None else None
+    nan = np.full_like(angles, np.nan)
+    seed_x = None
+    if rrp is not None and abs(np.sin(rrp.guide_angle)) < 1e-12:
+        xp = rrp.guide_point.real
+        seed_x = xp + np.abs(e.pos.real - xp)
+    return FeedTable(angles, e.pos.real, e.vel.real, e.acc.real,
+                     bar.omega if bar else nan, bar.alpha if bar else nan,
+                     rod.omega if rod else nan, rod.alpha if rod else nan, seed_x,
+                     guide_bar_closed_form(model))
+
+
+# --------------------------------------------------------------------------- cycle
+
+
+@dataclass(frozen=True)
+class CycleResult:
+    """Stage 运动循环图: the brief's diagram, its checks, and the motions along the main shaft."""
+
+    diagram: cy.CycleDiagram
+    checks: list
+    shaft_angle: np.ndarray     # φ [rad]
+    feed_s: np.ndarray          # feed slider from its start of feed [m]
+    pin_lift: np.ndarray        # [m]
+    wheel_angle: np.ndarray     # [rad]
+    cam_timing_error: dict      # key → largest deviation of the cam from the diagram's phases (fraction of stroke)
+    cam_disagreement: dict      # key → shaft angle where diagram and cam states differ [rad]
+    feed_span_cycle: float      # the diagram's feed rise [rad]
+    feed_span_simulated: float  # the linkage's working stroke [rad]
+    pin_lift_while_bending: float   # least pin lift while the bending wheel moves [m]
+    pin_stroke: float
+    feed_at_pin_down: float     # feed travel when the pin is fully down [m]
+    feed_at_pin_rise: float     # feed travel (from its start) when the pin starts to rise [m]
+    pin_down_angle: float       # φ where the pin is fully down [rad]
+    pin_rise_angle: float
+    warnings: list
+
+
+def _phase_error(act: cy.Actuator, phi: np.ndarray, s: np.ndarray, ds: np.ndarray,
+                 stroke: float) -> float:
+    """Largest violation, as a fraction of the stroke, of what the diagram says the
+    follower does at the shaft angles ``phi`` (a uniform grid): at 0 in a near dwell, at the
+    stroke in a far dwell, not falling in a rise and not rising in a return (a wrong-way
+    step counts with its size over one grid step)."""
+    step = phi[1] - phi[0]
+    states = cy.state_at(act, phi)
+    err = np.zeros_like(phi)
+    err = np.where(states == cy.DWELL_LOW, np.abs(s), err)
+    err = np.where(states == cy.DWELL_HIGH, np.abs(s - stroke), err)
+    err = np.where(states == cy.RISE, np.maximum(-ds, 0.0) * step, err)
+    err = np.where(states == cy.RETURN, np.maximum(ds, 0.0) * step, err)
+    return float(np.max(err) / stroke)
+
+
+def _requirement(c: cy.Constraint, lang: str) -> str:
+    if c.text(lang):
+        return c.text(lang)
+    kind = {"before": ("在…之前", "before"), "during": ("在…之内", "during")}[c.kind]
+    return f"{c.a} {kind[0] if lang == 'zh' else kind[1]} {c.b}"
+
+
+def cycle(p: LockbeamParams, r: dict) -> CycleResult:
+    diagram = p.cycle
+    checks = cy.check_constraints(diagram)
+    phi = r["bending"].shaft_angle
+    pin = r["cam"].params.programme
+    bprog = r["bending_cam"].params.programme
+    pm = pin.evaluate(phi - p.pin_cam_start)
+    bm = bprog.evaluate(phi - p.bend_cam_start)
+    acts = {a.key: a for a in diagram.actuators}
+    errors = {PIN: _phase_error(acts[PIN], phi, pm.s, pm.ds, pin.stroke),
+              BEND: _phase_error(acts[BEND], phi, bm.s, bm.ds, bprog.stroke)}
+    disagree = {PIN: cy.timing_disagreement(acts[PIN], cy.actuator_from_cam_programme(
+                    PIN, "", "", pin, p.pin_cam_start)),
+                BEND: cy.timing_disagreement(acts[BEND], cy.actuator_from_cam_programme(
+                    BEND, "", "", bprog, p.bend_cam_start))}
+    # The feed crank turns with the main shaft; φ = feed start is its position 1.
+    k, model = r["feed"], p.feed
+    feed = acts[FEED]
+    rise = cy.intervals_of(feed, cy.RISE)[0]
+    feed_phase = np.mod(phi - rise.start, TWO_PI)
+    fmotion = model.mechanism.solve(k.start_angle + k.sense * feed_phase)
+    u = np.exp(1j * model.output.direction)
+    raw = (np.conj(u) * fmotion.points[model.output.name].pos).real
+    raw0 = (np.conj(u) * model.mechanism.solve(np.array([k.start_angle])).points[
+        model.output.name].pos).real[0]
+    feed_s = model.output.working * (raw - raw0)
+    wheel = r["bending"].wheel_angle
+    moving = np.abs(r["bending"].wheel_omega) > 1e-9 * np.max(np.abs(r["bending"].wheel_omega))
+    lift_bending = float(np.min(pm.s[moving])) if np.any(moving) else float("nan")
+    pin_act = acts[PIN]
+    ret = cy.intervals_of(pin_act, cy.RETURN)[-1]     # the pin is fully down after its last return
+    up = cy.intervals_of(pin_act, cy.RISE)[0]
+    down_at, rise_at = float(np.mod(ret.end, TWO_PI)), float(up.start)
+
+    def feed_at(angle):
+        ph = np.mod(angle - rise.start, TWO_PI)
+        z = model.mechanism.solve(np.array([k.start_angle + k.sense * ph])).points[model.output.name].pos
+        return float(model.output.working * ((np.conj(u) * z).real[0] - raw0))
+
+    warnings = []
+    for chk in checks:
+        if not chk.ok:
+            warnings.append(Finding(
+                "cycle", f"运动循环图不满足协调要求：{_requirement(chk.constraint, 'zh')}"
+                         f"（差 {-chk.slack * DEG:.2f}°）",
+                f"the motion cycle diagram misses a timing requirement: "
+                f"{_requirement(chk.constraint, 'en')} (short by {-chk.slack * DEG:.2f}°)"))
+    span_sim = k.working_span
+    if abs(rise.span - span_sim) > np.radians(0.5):
+        warnings.append(Finding(
+            "feed_timing",
+            f"循环图中送料推程 {rise.span * DEG:.2f}° 与送料机构实际工作行程 {span_sim * DEG:.2f}°"
+            f"（K = {k.time_ratio:.4f}）不符；应按机构修改循环图",
+            f"the cycle diagram's feed stroke {rise.span * DEG:.2f}° differs from the feed "
+            f"linkage's working stroke {span_sim * DEG:.2f}° (K = {k.time_ratio:.4f}); correct the diagram"))
+    if np.isfinite(lift_bending) and lift_bending < pin.stroke * (1 - 1e-9):
+        warnings.append(Finding(
+            "pin_not_up",
+            f"扳弯轮转动时定位销升程最低只有 {lift_bending * 1e3:.3f} mm（应为 {pin.stroke * 1e3:.3f} mm）",
+            f"while the bending wheel turns the pin is only {lift_bending * 1e3:.3f} mm up "
+            f"(it should be fully up, {pin.stroke * 1e3:.3f} mm)"))
+    return CycleResult(
+        diagram=diagram, checks=checks, shaft_angle=phi, feed_s=feed_s, pin_lift=pm.s,
+        wheel_angle=wheel, cam_timing_error=errors, cam_disagreement=disagree,
+        feed_span_cycle=float(rise.span), feed_span_simulated=float(span_sim),
+        pin_lift_while_bending=lift_bending, pin_stroke=float(pin.stroke),
+        feed_at_pin_down=feed_at(down_at), feed_at_pin_rise=feed_at(rise_at),
+        pin_down_angle=down_at, pin_rise_angle=rise_at, warnings=warnings)
+
+
+@dataclass(frozen=True)
+class PinCheck:
+    """The positioning pin must rise more than the groove depth (d1 − d2)/2."""
+
+    lift: float
+    required: float
+    warnings: list
+
+
+def pin_check(p: LockbeamParams) -> PinCheck:
+    need = (p.part_diameter - p.groove_diameter) / 2.0
+    h = p.cam.programme.stroke
+    warnings = []
+    if not h > need:
+        warnings.append(Finding(
+            "pin_lift", f"定位销升程 {h * 1e3:.2f} mm 不大于槽深 (d1 − d2)/2 = {need * 1e3:.2f} mm，插不进锁梁槽",
+            f"the pin's lift {h * 1e3:.2f} mm does not exceed the groove depth (d1 − d2)/2 = "
+            f"{need * 1e3:.2f} mm: it cannot enter the groove"))
+    return PinCheck(float(h), float(need), warnings)
+
+
+# --------------------------------------------------------------------------- stages
+
+
+def stages(params: LockbeamParams) -> list[Stage]:
+    return [
+        Stage("transmission", "传动系统设计 / transmission", lambda r: transmission(r["params"])),
+        cam_stage(),
+        Stage("pin_check", "定位销升程校核 / pin lift", lambda r: pin_check(r["params"])),
+        Stage("bending_cam", "扳弯凸轮设计 / bending cam",
+              lambda r: design_cam(r["params"].bending_cam)),
+        Stage("bending", "扳弯机构设计 / bending linkage",
+              lambda r: bending(r["params"], r["bending_cam"])),
+        Stage("feed_model", "送料机构 / feed linkage", lambda r: r["params"].feed),
+        *linkage_stages(model_key="feed_model", prefix="feed"),
+        Stage("feed_table", "送料机构位置表 / feed table", lambda r: feed_table(r["params"].feed)),
+        Stage("cycle", "运动循环图 / motion cycle", lambda r: cycle(r["params"], r)),
+    ]
+
+
+def _c(z) -> list[float]:
+    return [float(np.real(z)), float(np.imag(z))]
+
+
+def results_document(r: dict) -> dict:
+    p: LockbeamParams = r["params"]
+    tr, b, cyc, ft = r["transmission"], r["bending"], r["cycle"], r["feed_table"]
+    ds = b.design
+    return {
+        "schema": "mechdesign.results/1",
+        "machine": "lockbeam",
+        "units": "SI: m, s, rad, kg, N, N·m, W; complex vectors as [x, y]",
+        "main_shaft_rpm": p.rate,
+        "transmission": {
+            "stages": [{"kind": s.kind, "driver": s.driver, "driven": s.driven, "ratio": s.ratio,
+                        "speed_in_rpm": s.speed_in, "speed_out_rpm": s.speed_out,
+                        "centre_distance": None if s.pair is None else s.pair.a,
+                        "contact_ratio": None if s.pair is None else s.pair.contact_ratio}
+                       for s in tr.stages],
+            "ratio": tr.ratio, "ratio_exact": str(tr.ratio_exact), "output_rpm": tr.output_rpm,
+            "output_rpm_with_slip": tr.output_rpm_slip,
+            "shafts": [{"index": s.index, "speed_rpm": s.speed_rpm, "power": s.power,
+                        "torque": s.torque} for s in tr.shafts]},
+        "positioning_cam": cam_document(r["cam"]),
+        "pin": {"lift": r["pin_check"].lift, "required": r["pin_check"].required},
+        "bending_cam": cam_document(r["bending_cam"]),
+        "bending": {
+            "frame": ds.frame, "input_rocker": ds.input_rocker, "coupler": ds.coupler,
+            "output_rocker": ds.output_rocker, "input_start": ds.alpha1, "input_swing": ds.dalpha,
+            "output_start": ds.beta1, "output_swing": ds.dbeta, "branch": ds.branch,
+            "sense": b.synthesis.sense, "chain_ratio": b.ratio,
+            "swing_simulated": b.swing_simulated, "bend_simulated": b.bend_simulated,
+            "gamma_min": b.gamma_min, "gamma_max": b.gamma_max, "grashof": b.grashof,
+            "velocity_ratio": {"min": float(np.min(np.abs(b.velocity_ratio))),
+                               "max": float(np.max(np.abs(b.velocity_ratio)))},
+            "rounded": None if b.rounded is None else {
+                "input_rocker": b.rounded.input_rocker, "coupler": b.rounded.coupler,
+                "output_start": b.rounded.beta1, "swing": b.rounded.swing, "bend": b.rounded.bend,
+                "gamma_min": b.rounded.gamma_min, "input_swing_needed": b.rounded.input_swing_needed},
+            "candidates": [{"sense": c[0], "gamma_min": c[2], "message": c[3],
+                            "input_rocker": None if c[1] is None else c[1].input_rocker,
+                            "coupler": None if c[1] is None else c[1].coupler}
+                           for c in b.synthesis.candidates],
+            "seed": None if b.seed is None else {
+                "input_rocker": b.seed.input_rocker, "coupler": b.seed.coupler,
+                "grashof": b.seed.grashof, "swing_range": list(b.seed.check.swing_range),
+                "starts": [{"input_start": s[0], "output_start": s[1], "gamma_min": s[2]}
+                           for s in b.seed.check.starts]},
+            "cycle": {"shaft_angle": b.shaft_angle, "wheel_angle": b.wheel_angle,
+                      "wheel_omega": b.wheel_omega, "wheel_alpha": b.wheel_alpha}},
+        "feed": linkage_document(p.feed, r["feed"], r["feed_forces"], r["feed_flywheel"],
+                                 r["feed_verification"]),
+        "feed_table": {"crank_angle": ft.crank_angle, "x": ft.x, "v": ft.v, "a": ft.a,
+                       "bar_omega": ft.bar_omega, "bar_alpha": ft.bar_alpha,
+                       "rod_omega": ft.rod_omega, "rod_alpha": ft.rod_alpha},
+        "cycle": {**cy.cycle_document(cyc.diagram, cyc.checks),
+                  "cam_timing_error": cyc.cam_timing_error,
+                  "feed_span_simulated": cyc.feed_span_simulated,
+                  "pin_lift_while_bending": cyc.pin_lift_while_bending},
+        "morphology": p.morphology.document(),
+    }

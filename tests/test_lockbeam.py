@@ -1,0 +1,310 @@
+"""Lock-beam bender (seed 002): every number checked against an independent reference —
+closed forms worked by hand, a separate numerical solution of the loop equation, the
+Assur-group simulation, finite differences — never against the program's own output."""
+from __future__ import annotations
+
+from fractions import Fraction
+from pathlib import Path
+
+import numpy as np
+import pytest
+import yaml
+from scipy.optimize import brentq
+from typer.testing import CliRunner
+
+from mechdesign.brief.loader import BriefError, parse_brief
+from mechdesign.cli import app
+from mechdesign.core import cycle as cy
+from mechdesign.core import rocker_synthesis as rs
+from mechdesign.core.fourbar import SynthesisError
+from mechdesign.core.mechanism import RRR, Crank, Mechanism
+from mechdesign.machines import get_machine, stages_for
+from mechdesign.pipeline import run_stages
+
+ROOT = Path(__file__).resolve().parents[1]
+BRIEF = ROOT / "designs" / "lockbeam.yaml"
+DEG = np.pi / 180
+
+
+def _data():
+    return yaml.safe_load(BRIEF.read_text(encoding="utf-8"))
+
+
+@pytest.fixture(scope="module")
+def run():
+    b = parse_brief(_data())
+    m = get_machine("lockbeam")
+    p = m.to_params(b)
+    r, _ = run_stages(stages_for(m, p), {"params": p, "brief": b})
+    return r
+
+
+def _output_by_root_finding(d, a, b, c, alpha, beta_guess):
+    """β with |a e^{iα} − (d + c e^{iβ})| = b, solved by Brent's method near a guess: an
+    independent solution of the loop equation (no closed form, no Assur groups)."""
+    A = a * np.exp(1j * alpha)
+
+    def g(beta):
+        return abs(A - (d + c * np.exp(1j * beta))) - b
+
+    lo, hi = beta_guess - 0.05, beta_guess + 0.05
+    return brentq(g, lo, hi, xtol=1e-14)
+
+
+# ----------------------------------------------------------------------------- synthesis
+
+
+def test_parallelogram_is_reproduced():
+    """Equal swings from equal start angles: the textbook parallelogram, a = c, b = d."""
+    a, b = rs.two_position(0.2, 0.05, 0.7, 0.3, 0.7, 0.3)
+    assert a == pytest.approx(0.05, rel=1e-12)
+    assert b == pytest.approx(0.2, rel=1e-12)
+
+
+def test_two_position_closes_both_loops_and_matches_inversion():
+    d, c = 0.2, 0.04
+    a1, da, b1, db = np.radians(300.0), np.radians(24.4), np.radians(150.0), np.radians(-50.0)
+    a, b = (float(x) for x in rs.two_position(d, c, a1, da, b1, db))
+    for al, be in ((a1, b1), (a1 + da, b1 + db)):
+        assert abs(a * np.exp(1j * al) - (d + c * np.exp(1j * be))) == pytest.approx(b, rel=1e-12)
+    # Inversion (刚化反转法): A1 is equidistant from B1 and from B2 turned back by −Δα about A0.
+    B1 = d + c * np.exp(1j * b1)
+    B2r = (d + c * np.exp(1j * (b1 + db))) * np.exp(-1j * da)
+    A1 = a * np.exp(1j * a1)
+    assert abs(A1 - B1) == pytest.approx(abs(A1 - B2r), rel=1e-12)
+
+
+def test_design_is_reproduced_by_assur_group_simulation():
+    """The synthesised four-bar, solved by core.mechanism (crank unit + RRR dyad) and by
+    root-finding on the loop equation, turns the output exactly Δβ."""
+    d, c, da, db = 0.2, 0.04, np.radians(24.398), np.radians(-50.0)
+    ds = rs.design_two_position(d, c, np.radians(296.0), da, np.radians(148.7), db)
+    mech = Mechanism("1", {"A0": 0j, "B0": complex(d, 0)})
+    mech.add(Crank("in", "2", "A0", "A", ds.input_rocker, 1.0))
+    mech.add(RRR("out", "3", "4", "A", "B0", "B", ds.coupler, c, ds.branch))
+    alpha = ds.alpha1 + da * np.linspace(0, 1, 201)
+    m = mech.solve(alpha)
+    beta = np.unwrap(m.links["4"].angle)
+    assert np.angle(np.exp(1j * (beta[0] - ds.beta1))) == pytest.approx(0, abs=1e-12)
+    assert beta[-1] - beta[0] == pytest.approx(db, abs=1e-10)
+    # independent: Brent on |A − B| = b at a few input angles
+    for j in (0, 57, 133, 200):
+        ref = _output_by_root_finding(d, ds.input_rocker, ds.coupler, c, alpha[j], beta[j])
+        assert ref == pytest.approx(beta[j], abs=1e-11)
+    # velocity ratio formula against the mechanism's ω4 (input ω = 1) and finite differences
+    sw = rs.sweep(ds, alpha=alpha)
+    assert np.allclose(sw.ratio, m.links["4"].omega, rtol=1e-9, atol=1e-12)
+    fd = np.gradient(beta, alpha)
+    assert np.allclose(sw.ratio[1:-1], fd[1:-1], rtol=1e-3)
+
+
+def test_infeasible_start_is_an_error_naming_the_start():
+    with pytest.raises(SynthesisError, match="start"):
+        # both rockers turning through the same arc far from each other: no positive a
+        rs.design_two_position(0.2, 0.04, np.radians(90.0), np.radians(10.0), np.radians(90.0),
+                               np.radians(-60.0))
+
+
+def test_best_start_meets_its_constraints_and_is_locally_optimal():
+    d, c, da, db = 0.2, 0.04, np.radians(24.398), np.radians(-50.0)
+    limit = 1.05 * abs(db) / da
+    ds, g = rs.best_start(d, c, da, db, (0.02, 0.3), limit)
+    sw = rs.sweep(ds, 2001)
+    assert sw.swing == pytest.approx(db, abs=1e-9)
+    assert sw.ratio_peak <= limit * (1 + 1e-6)
+    assert 0.02 <= ds.input_rocker <= 0.3 and 0.02 <= ds.coupler <= 0.3
+    assert g == pytest.approx(sw.gamma_min, abs=1e-6)
+    # no feasible neighbour within ±0.05° is better (checked by an independent sweep)
+    for dx in (-0.05, 0.05):
+        for dy in (-0.05, 0.0, 0.05):
+            try:
+                nb = rs.design_two_position(d, c, ds.alpha1 + np.radians(dx), da,
+                                            ds.beta1 + np.radians(dy), db)
+            except SynthesisError:
+                continue
+            ns = rs.sweep(nb, 2001)
+            if ns.ratio_peak <= limit and 0.02 <= nb.input_rocker <= 0.3 and 0.02 <= nb.coupler <= 0.3:
+                assert ns.gamma_min <= sw.gamma_min + 1e-4
+
+
+def test_seed_lengths_checked_by_simulation():
+    """The seed's 90/150 mm: wherever check_lengths says the swing is 50°, a separate
+    simulation from that start gives 50°; 90 + 150 = 40 + 200 (change point)."""
+    d, c, da = 0.2, 0.04, np.radians(24.398)
+    lc = rs.check_lengths(d, 0.09, 0.15, c, da, np.radians(50.0))
+    assert lc.starts
+    for a1, b1, _ in lc.starts:
+        mech = Mechanism("1", {"A0": 0j, "B0": complex(d, 0)})
+        mech.add(Crank("in", "2", "A0", "A", 0.09, 1.0))
+        mech.add(RRR("out", "3", "4", "A", "B0", "B", 0.15, c, 1))
+        beta = np.unwrap(mech.solve(a1 + da * np.linspace(0, 1, 301)).links["4"].angle)
+        assert abs(beta[-1] - beta[0]) == pytest.approx(np.radians(50.0), abs=1e-9)
+    assert lc.swing_range[0] < np.radians(50) < lc.swing_range[1]
+
+
+# ----------------------------------------------------------------------------- the machine
+
+
+def test_transmission_ratio_is_exactly_70(run):
+    tr = run["transmission"]
+    assert tr.ratio_exact == Fraction(70)
+    assert tr.output_rpm == pytest.approx(10.0, rel=1e-15)
+    # centre distances by hand: a = m (z1 + z2)/2
+    assert tr.stages[1].pair.a == pytest.approx(0.006 * (18 + 90) / 2, rel=1e-12)
+    assert tr.stages[2].pair.a == pytest.approx(0.006 * (18 + 126) / 2, rel=1e-12)
+    assert not tr.warnings
+    assert all(s.torque is None for s in tr.shafts)       # no power in the seed
+
+
+def test_torques_when_the_power_is_given():
+    data = _data()
+    data["transmission"]["motor_power_kW"] = 1.5
+    b = parse_brief(data)
+    m = get_machine("lockbeam")
+    p = m.to_params(b)
+    from mechdesign.machines.lockbeam import transmission
+
+    tr = transmission(p)
+    # main shaft: P = 1500 · 0.96 · 0.97², T = P / (2π·10/60)
+    P = 1500 * 0.96 * 0.97 ** 2
+    assert tr.shafts[-1].power == pytest.approx(P, rel=1e-12)
+    assert tr.shafts[-1].torque == pytest.approx(P / (2 * np.pi * 10 / 60), rel=1e-12)
+
+
+def test_bending_wheel_turns_180_by_simulation(run):
+    b = run["bending"]
+    # wheel swing 180° × 40/144 = 50° by the Assur-group simulation
+    assert abs(b.swing_simulated) == pytest.approx(np.radians(50.0), abs=1e-10)
+    # the whole chain cam → rocker → four-bar → chain: 180° at the far dwell
+    assert b.bend_simulated == pytest.approx(np.pi, abs=1e-9)
+    # independent: input angle from the cam programme, output by root-finding on the loop
+    p = run["params"]
+    prog = run["bending_cam"].params.programme
+    far = prog.starts[2] + 0.5 * prog.spans[2]              # middle of the far dwell
+    phi = p.bend_cam_start + far
+    psi = float(prog.evaluate(np.array([far])).s[0])
+    ds = b.design
+    beta = _output_by_root_finding(ds.frame, ds.input_rocker, ds.coupler, ds.output_rocker,
+                                   ds.alpha1 + psi, ds.beta1 + ds.dbeta)
+    assert b.ratio * abs(beta - ds.beta1) == pytest.approx(np.pi, abs=1e-9)
+    assert psi == pytest.approx(np.radians(24.398), abs=1e-12)
+    assert np.isfinite(phi)
+    assert b.gamma_min >= np.radians(40.0)
+    # wheel speed against central differences of the wheel angle (smooth parts)
+    assert b.fd_velocity < 1e-3 and b.fd_acceleration < 1e-3
+
+
+def test_cycle_diagram_matches_the_cams(run):
+    """Sample both cams along the main shaft: near dwell ⇒ follower down, far dwell ⇒ up,
+    rise ⇒ rising, return ⇒ falling, exactly where the brief's cycle diagram says."""
+    p, c = run["params"], run["cycle"]
+    acts = {a.key: a for a in c.diagram.actuators}
+    phi = np.linspace(0, 2 * np.pi, 7201)[:-1] + 1e-7
+    for key, cam, start in (("pin", run["cam"], p.pin_cam_start),
+                            ("bend", run["bending_cam"], p.bend_cam_start)):
+        prog = cam.params.programme
+        fm = prog.evaluate(phi - start)
+        states = cy.state_at(acts[key], phi)
+        assert np.all(np.abs(fm.s[states == "dwell_low"]) < 1e-15)
+        assert np.all(np.abs(fm.s[states == "dwell_high"] - prog.stroke) < 1e-12 * prog.stroke)
+        assert np.all(fm.ds[states == "rise"] >= 0) and np.all(fm.ds[states == "return"] <= 0)
+        inner = (states == "rise") & (fm.s > 1e-6 * prog.stroke) & (fm.s < (1 - 1e-6) * prog.stroke)
+        assert np.all(fm.ds[inner] > 0)
+    assert all(ch.ok for ch in c.checks)
+    # the pin is fully up whenever the bending wheel moves (simulation of both)
+    assert c.pin_lift_while_bending == pytest.approx(0.010, abs=1e-15)
+
+
+def test_feed_stroke_and_K_against_closed_forms(run):
+    """Guide bar: θ = 2 arcsin(50/100) = 60° ⇒ K = 240/120 = 2; symmetric layout ⇒
+    H = 2·250·50/100 = 250 mm. The feed takes 240° of the main shaft."""
+    k = run["feed"]
+    assert k.time_ratio == pytest.approx(2.0, abs=1e-9)
+    assert k.stroke == pytest.approx(0.250, abs=1e-12)
+    assert k.working_span == pytest.approx(np.radians(240.0), abs=1e-9)
+    assert run["cycle"].feed_span_simulated == pytest.approx(run["cycle"].feed_span_cycle, abs=1e-9)
+
+
+def test_feed_positions_by_hand(run):
+    """Two of the seed's positions worked by hand. φ1 = 90°: A = (0, 50), the bar is
+    vertical, D = (0, 150), E = 0 + √(80² − 6.7²). φ1 = 0°: A = (50, 0), the bar's direction
+    (50, 100)/√12500, D = O3 + 250·that, E = x_D + √(80² − (156.7 − y_D)²)."""
+    ft = run["feed_table"]
+    i90 = int(np.argmin(np.abs(ft.crank_angle - np.pi / 2)))
+    assert ft.x[i90] == pytest.approx(np.sqrt(0.08 ** 2 - 0.0067 ** 2), abs=1e-12)
+    u = np.array([0.05, 0.10]) / np.hypot(0.05, 0.10)
+    xd, yd = 0.25 * u[0], -0.1 + 0.25 * u[1]
+    assert ft.x[0] == pytest.approx(xd + np.sqrt(0.08 ** 2 - (0.1567 - yd) ** 2), abs=1e-12)
+    # the seed's abs() is wrong exactly where the slider is left of x = 0
+    assert np.array_equal(np.abs(ft.seed_x - ft.x) > 1e-12, ft.x < 0)
+
+
+def test_pin_lift_requirement(run):
+    pc = run["pin_check"]
+    assert pc.required == pytest.approx((0.010 - 0.007) / 2, abs=1e-15)
+    assert pc.lift > pc.required and not pc.warnings
+
+
+# ----------------------------------------------------------------------------- bad input
+
+
+def _invoke(tmp_path, data, *extra):
+    tmp_path.mkdir(parents=True, exist_ok=True)
+    path = tmp_path / "bad.yaml"
+    path.write_text(yaml.safe_dump(data, allow_unicode=True), encoding="utf-8")
+    return CliRunner().invoke(app, ["run", str(path), "-o", str(tmp_path / "out"), "-f", "md", *extra])
+
+
+def test_cycle_that_differs_from_the_cam_is_rejected():
+    data = _data()
+    pin = next(a for a in data["cycle"]["actuators"] if a["key"] == "pin")
+    pin["phases"][0]["span_deg"] = 160
+    pin["phases"][2]["span_deg"] = 80
+    with pytest.raises(BriefError) as exc:
+        parse_brief(data)
+    text = str(exc.value)
+    assert "cycle.actuators" in text and "cam.programme" in text
+
+
+def test_bad_inputs_exit_2_naming_the_field(tmp_path):
+    cases = []
+    d = _data()
+    d["feed_linkage"]["crank"]["speed_rpm"] = 12
+    cases.append((d, "feed_linkage.crank.speed_rpm"))
+    d = _data()
+    d["bending"]["link_length_range_mm"] = [20, 25]
+    cases.append((d, "bending"))
+    d = _data()
+    d["cam"]["follower"] = {"motion": "oscillating", "contact": "roller", "roller_radius_mm": 5,
+                            "max_swing_deg": 10, "arm_length_mm": 30, "pivot_distance_mm": 60}
+    cases.append((d, "cam.follower.motion"))
+    d = _data()
+    d["bending"]["bending_wheel_diameter_mm"] = 160
+    cases.append((d, "driving_wheel_diameter_mm"))
+    d = _data()
+    d["cycle"]["actuators"] = [a for a in d["cycle"]["actuators"] if a["key"] != "bend"]
+    d["cycle"]["constraints"] = []
+    cases.append((d, "'bend'"))
+    for i, (data, field) in enumerate(cases):
+        res = _invoke(tmp_path / str(i), data)
+        assert res.exit_code == 2, res.output
+        assert field in res.output, res.output
+        assert "Traceback" not in res.output
+
+
+def test_small_pin_lift_is_a_warning_not_an_error(tmp_path):
+    d = _data()
+    d["cam"]["follower"]["stroke_h_mm"] = 1.2
+    res = _invoke(tmp_path, d)
+    assert res.exit_code == 0, res.output
+    assert "groove" in res.output or "槽" in res.output
+
+
+def test_english_report_and_gif(tmp_path):
+    res = CliRunner().invoke(app, ["run", str(BRIEF), "-o", str(tmp_path / "en"), "--lang", "en",
+                                   "-f", "md,gif"])
+    assert res.exit_code == 0, res.output
+    md = (tmp_path / "en" / "report.md").read_text(encoding="utf-8")
+    assert "Bending mechanism" in md and "Motion cycle diagram" in md
+    assert (tmp_path / "en" / "animation.gif").stat().st_size > 1000
+    assert (tmp_path / "en" / "bending_cam_profile.csv").exists()
