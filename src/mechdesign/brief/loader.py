@@ -15,14 +15,19 @@ import yaml
 from pydantic import BaseModel, ValidationError
 
 from .cam import CamBrief, EccentricCamBrief
+from .crank_rocker import CrankRockerBrief
+from .die_cutter import DieCutterBrief
 from .drive import DriveBrief
+from .furnace import FurnaceBrief
 from .linkage import LinkageBrief
+from .lockbeam import LockbeamBrief
 from .shaper import ShaperBrief
 
 #: Machine name → brief model. Later machines register here.
 BRIEF_MODELS: dict[str, type[BaseModel]] = {
-    "shaper": ShaperBrief, "cam": CamBrief, "eccentric_cam": EccentricCamBrief,
-    "drive": DriveBrief, "linkage": LinkageBrief}
+    "shaper": ShaperBrief, "furnace_pusher": FurnaceBrief, "lockbeam": LockbeamBrief,
+    "die_cutter": DieCutterBrief, "crank_rocker": CrankRockerBrief, "linkage": LinkageBrief,
+    "cam": CamBrief, "eccentric_cam": EccentricCamBrief, "drive": DriveBrief}
 
 
 @dataclass(frozen=True)

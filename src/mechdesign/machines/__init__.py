@@ -60,9 +60,42 @@ def _linkage() -> Machine:
                    "mechdesign.render.linkage_report")
 
 
+def _crank_rocker() -> Machine:
+    from ..brief.crank_rocker import crank_rocker_to_si
+    from . import crank_rocker
+
+    return Machine("crank_rocker", crank_rocker_to_si, crank_rocker.stages,
+                   crank_rocker.results_document, "mechdesign.render.crank_rocker_report")
+
+
+def _furnace_pusher() -> Machine:
+    from ..brief.furnace import furnace_to_si
+    from . import furnace
+
+    return Machine("furnace_pusher", furnace_to_si, furnace.stages, furnace.results_document,
+                   "mechdesign.render.furnace_report")
+
+
+def _die_cutter() -> Machine:
+    from ..brief.die_cutter import die_cutter_to_si
+    from . import die_cutter
+
+    return Machine("die_cutter", die_cutter_to_si, die_cutter.stages, die_cutter.results_document,
+                   "mechdesign.render.die_cutter_report")
+
+
+def _lockbeam() -> Machine:
+    from ..brief.lockbeam import lockbeam_to_si
+    from . import lockbeam
+
+    return Machine("lockbeam", lockbeam_to_si, lockbeam.stages, lockbeam.results_document,
+                   "mechdesign.render.lockbeam_report")
+
+
 MACHINES: dict[str, Callable[[], Machine]] = {
-    "linkage": _linkage,
-    "shaper": _shaper, "cam": _cam, "eccentric_cam": _eccentric_cam, "drive": _drive}
+    "shaper": _shaper, "furnace_pusher": _furnace_pusher, "lockbeam": _lockbeam,
+    "die_cutter": _die_cutter, "crank_rocker": _crank_rocker, "linkage": _linkage,
+    "cam": _cam, "eccentric_cam": _eccentric_cam, "drive": _drive}
 
 
 def stages_for(machine: Machine, params) -> list[Stage]:
