@@ -117,3 +117,9 @@ def test_render_pdf_reports_typst_errors(tmp_path):
     with pytest.raises(PdfRenderError, match="none.png"):
         render_pdf(md_path, tmp_path / "bad.pdf", METADATA, TEMPLATE)
     assert not (tmp_path / "bad.pdf").exists()
+
+
+def test_table_cell_starting_with_equals_is_text_not_a_heading(tmp_path):
+    md = "| a | b |\n|--|--|\n| = 5 mm | x |\n"
+    src = markdown_to_typst(md, TEMPLATE, {"title": "t"}, tmp_path)
+    assert "[\\= 5 mm]" in src and "[= 5 mm]" not in src

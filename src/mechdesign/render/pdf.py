@@ -115,6 +115,8 @@ def markdown_to_typst(md_text: str, template: Path, metadata: dict, resource_dir
         key = match.group(1)
         return f"#ref(<{key}>)" if key in defined or not has_bibliography else match.group(0)
 
+    # pandoc writes a table cell "= 5" as [= 5], which typst reads as a heading.
+    source = re.sub(r"(?<=\[)(=+ )", r"\\\1", source)
     source = _PROSE_CITE.sub(to_ref, source)
     source = _SPACE_BEFORE_REF.sub("", source)
     return _SPACE_AFTER_REF.sub(r"\1", source)
