@@ -306,11 +306,15 @@ def design_cam(programme: Programme, follower, base_radius: float, rotation: int
         delta = np.arange(points) * (TWO_PI / points)
     if not base_radius > 0:
         raise CamDesignError("the base radius must be positive")
-    m = programme.evaluate(delta)
+    return _profile(programme.evaluate(delta), follower, base_radius, sigma)
+
+
+def _profile(m: FollowerMotion, follower, base_radius: float, sigma: int) -> CamProfile:
+    """The cam geometry for the follower motion ``m`` (values and derivatives at m.delta)."""
     d = m.delta
     rot = np.exp(-1j * sigma * d)
     if follower.kind == "flat":
-        return _flat(programme, follower, base_radius, sigma, m, rot)
+        return _flat(follower, base_radius, sigma, m, rot)
     rr = _roller(follower)
     if isinstance(follower, TranslatingFollower):
         e = follower.offset
@@ -354,7 +358,7 @@ def design_cam(programme: Programme, follower, base_radius: float, rotation: int
                       B, B - rr * n_frame, initial, extras)
 
 
-def _flat(programme, follower, r0, sigma, m, rot) -> CamProfile:
+def _flat(follower, r0, sigma, m, rot) -> CamProfile:
     """Flat-faced followers: envelope of the face lines via the support function."""
     if isinstance(follower, TranslatingFollower):
         h, h1, h2 = r0 + m.s, m.ds, m.d2s
@@ -388,6 +392,202 @@ def _flat(programme, follower, r0, sigma, m, rot) -> CamProfile:
     zero = np.zeros_like(h)
     return CamProfile(m.delta, m, sigma, r0, 0.0, contact_cam, contact_cam, n_out, zero, rho, rho,
                       foot, contact, initial, extras)
+
+
+# --------------------------------------------------------------------------- roller envelope
+
+
+@dataclass(frozen=True)
+class Corner:
+    """A corner of the pitch curve: a joint where the follower's velocity jumps (刚性冲击)."""
+
+    delta: float     # cam angle of the joint [rad]
+    point: complex   # the corner P of the pitch curve (cam frame) [m]
+    turn: float      # signed angle through which the profile normal turns at P [rad]
+    kind: str        # "arc": the actual profile follows the roller circle about P (a concave
+                     # arc of radius r_r); "edge": the two offset branches cross, the loop
+                     # between them is cut away and the profile has a sharp edge
+    stand_off: float = 0.0   # edge: how far the designed roller centre stands off the edge
+                             # beyond r_r, at most [m] (the follower cannot follow exactly)
+
+
+@dataclass(frozen=True)
+class RollerEnvelope:
+    """The actual profile of a roller cam as it is cut: the envelope of the roller circles.
+
+    The offset curve ``CamProfile.actual`` (r_r along each normal) is that envelope only where
+    the pitch curve is smooth. At a corner of the pitch curve it leaves a gap on one side of
+    the corner and a loop on the other: the gap is filled with the roller circle about the
+    corner, the loop is cut at the crossing of its two branches (also any loop of an undercut
+    profile). ``contact`` is, for every cam angle of the profile it was built from, the point
+    of the real profile the roller touches: the offset point, or the edge where it was cut
+    away (there the designed roller centre stands ``stand_off`` at most off the edge, beyond
+    r_r: the follower cannot follow the velocity jump exactly)."""
+
+    outline: np.ndarray              # closed polyline of the actual profile, cam frame [m]
+    pitch_outline: np.ndarray        # closed polyline of the pitch curve with its corners [m]
+    contact: np.ndarray              # per cam angle of the profile [m] (complex)
+    trimmed: np.ndarray              # per cam angle: the offset point was cut away
+    corners: tuple[Corner, ...]
+    edges: tuple[tuple[float, float, complex, float], ...]   # (δ from, δ to, edge point,
+                                     # stand-off [m]) of each cut
+    stand_off: float                 # the largest stand-off [m]
+    roller_radius: float             # [m]
+
+
+def polyline_distance(points, polyline, k: int = 6) -> np.ndarray:
+    """Shortest distance from each point (complex) to the closed polyline (complex vertices),
+    measured to its segments (the segments next to the ``k`` nearest vertices)."""
+    from scipy.spatial import cKDTree
+
+    pts = np.atleast_1d(np.asarray(points, dtype=complex))
+    poly = np.asarray(polyline, dtype=complex)
+    n = len(poly)
+    k = min(k, n)
+    _, idx = cKDTree(np.column_stack([poly.real, poly.imag])).query(
+        np.column_stack([pts.real, pts.imag]), k=k)
+    idx = idx.reshape(len(pts), k)
+    a = poly[np.concatenate([idx, (idx - 1) % n], axis=1)]
+    b = poly[np.concatenate([(idx + 1) % n, idx], axis=1)]
+    ab = b - a
+    p = pts[:, None]
+    t = np.real(np.conj(ab) * (p - a)) / np.maximum(np.abs(ab) ** 2, 1e-300)
+    return np.min(np.abs(p - (a + np.clip(t, 0.0, 1.0) * ab)), axis=1)
+
+
+def _crossing(p0, p1, q0, q1, lines: bool = False):
+    """The intersection of the segments (or, with ``lines``, the lines) p0p1 and q0q1."""
+    d1, d2 = p1 - p0, q1 - q0
+    den = d1.real * d2.imag - d1.imag * d2.real
+    if abs(den) < 1e-300 or abs(den) < 1e-14 * abs(d1) * abs(d2):
+        return None
+    w = q0 - p0
+    t = (w.real * d2.imag - w.imag * d2.real) / den
+    u = (w.real * d1.imag - w.imag * d1.real) / den
+    if not lines and not (-1e-9 <= t <= 1 + 1e-9 and -1e-9 <= u <= 1 + 1e-9):
+        return None
+    x = p0 + t * d1
+    if lines and abs(x - p1) > 5 * (abs(d1) + abs(d2)):
+        return None
+    return complex(x)
+
+
+ARC_STEP = np.radians(0.25)   # roller arcs at corners are drawn every 0.25°
+
+
+def roller_envelope(programme: Programme, follower, grid: CamProfile,
+                    tolerance: float = 1e-6) -> RollerEnvelope:
+    """The true actual profile of the roller cam ``grid`` (designed for ``programme`` and
+    ``follower`` on cam angles sorted over one whole revolution). A point of the offset curve
+    is cut away where it lies closer than r_r − ``tolerance`` [m] to the pitch curve."""
+    rr = grid.roller_radius
+    delta = np.asarray(grid.delta)
+    n = len(delta)
+    if rr <= 0:
+        raise ValueError("roller_envelope needs a roller follower")
+    if n < 8 or np.any(np.diff(delta) <= 0) or delta[-1] - delta[0] < TWO_PI * (1 - 2.0 / n) - 1e-12:
+        raise ValueError("roller_envelope needs the profile on sorted cam angles over one revolution")
+    sigma = grid.rotation
+    # The corners: left- and right-hand limits of the geometry at every velocity jump.
+    corners, inserts = [], []
+    for i, b in enumerate(programme.boundaries()):
+        if b.impact != RIGID_IMPACT:
+            continue
+        db = float(programme.starts[i])
+        s, v, a, j = programme.end_values((i - 1) % len(programme.segments), 1.0)
+        one = lambda x: np.array([x])  # noqa: E731
+        left = _profile(FollowerMotion(one(db), one(s), one(v), one(a), one(j), one((i - 1) % len(programme.segments))),
+                        follower, grid.base_radius, sigma)
+        right = _profile(programme.evaluate(one(db)), follower, grid.base_radius, sigma)
+        P = complex(right.pitch[0])
+        n0, n1 = complex(left.normal[0]), complex(right.normal[0])
+        turn = float(np.angle(n1 / n0))
+        m = max(2, int(np.ceil(abs(turn) / ARC_STEP))) + 1
+        arc = P - rr * n0 * np.exp(1j * turn * np.linspace(0.0, 1.0, m))
+        at = int(np.searchsorted(delta, db, side="left"))
+        inserts.append((at, arc, P, len(corners)))
+        corners.append((db, P, turn))
+    # Offset curve and pitch curve as polylines, with the arcs and corner points inserted;
+    # ``src`` is the profile index of every vertex, −1 − c on the arc of corner c.
+    z_parts, p_parts, src_parts, last = [], [], [], 0
+    for at, arc, P, c in sorted(inserts, key=lambda t: t[0]):
+        z_parts += [grid.actual[last:at], arc]
+        p_parts += [grid.pitch[last:at], np.array([P])]
+        src_parts += [np.arange(last, at), np.full(len(arc), -1 - c)]
+        last = at
+    z = np.concatenate(z_parts + [grid.actual[last:]])
+    pitch = np.concatenate(p_parts + [grid.pitch[last:]])
+    src = np.concatenate(src_parts + [np.arange(last, n)])
+    bad = polyline_distance(z, pitch) < rr - tolerance
+    contact = np.array(grid.actual, dtype=complex)
+    trimmed = np.zeros(n, dtype=bool)
+    edges, stand_off, cut_corners = [], 0.0, {}
+    if np.any(bad) and not np.all(bad):
+        shift = int(np.argmin(bad))                  # start the cycle at a kept vertex
+        z, bad, src = np.roll(z, -shift), np.roll(bad, -shift), np.roll(src, -shift)
+        N = len(z)
+        starts = np.flatnonzero(bad & ~np.roll(bad, 1))
+        ends = np.flatnonzero(bad & ~np.roll(bad, -1))
+        keep = ~bad
+        out_pts, out_idx = [], []
+        for i, j in zip(starts, ends):               # one cut per loop (a few per cam)
+            k, l = i - 1, (j + 1) % N
+            x = _crossing(z[k], z[i], z[j], z[l])
+            if x is None:
+                x = _crossing(z[k - 1], z[k], z[l], z[(l + 1) % N], lines=True)
+            if x is None:                             # no crossing found: keep the points
+                keep[i:j + 1] = True
+                continue
+            out_pts.append(x)
+            out_idx.append(i)
+            run = src[i:j + 1]
+            grid_idx = run[run >= 0]
+            contact[grid_idx] = x
+            trimmed[grid_idx] = True
+            on_arcs = {int(-1 - c) for c in run[run < 0]}
+            # how far the designed roller centre (grid points, corners) stands off the edge
+            centres = np.concatenate([grid.pitch[grid_idx], [corners[c][1] for c in on_arcs]])
+            off = max(float(np.max(np.abs(centres - x))) - rr, 0.0) if len(centres) else 0.0
+            stand_off = max(stand_off, off)
+            cut_corners.update({c: off for c in on_arcs})
+            # the cut spans the cam angles from the last kept grid point to the next one
+            d_from = float(delta[src[k]]) if src[k] >= 0 else float("nan")
+            d_to = float(delta[src[l]]) if src[l] >= 0 else float("nan")
+            edges.append((d_from, d_to, x, off))
+        # assemble: kept vertices, each cut replaced by its edge point
+        pieces, pos = [], 0
+        for x, i in sorted(zip(out_pts, out_idx), key=lambda t: t[1]):
+            pieces.append(z[pos:i][keep[pos:i]])
+            pieces.append(np.array([x]))
+            pos = i
+            while pos < N and bad[pos] and not keep[pos]:
+                pos += 1
+        pieces.append(z[pos:][keep[pos:]])
+        outline = np.concatenate(pieces)
+    else:
+        outline = z
+    # a corner is an edge when its arc fell inside a cut loop
+    corner_list = [Corner(db, P, turn, "edge", cut_corners[c]) if c in cut_corners else
+                   Corner(db, P, turn, "arc") for c, (db, P, turn) in enumerate(corners)]
+    keep_mask = np.concatenate([[True], np.abs(np.diff(outline)) > 1e-12])
+    return RollerEnvelope(outline[keep_mask], pitch, contact, trimmed, tuple(corner_list), tuple(edges),
+                          max(stand_off, 0.0), rr)
+
+
+def envelope_contact(env: RollerEnvelope, profile: CamProfile) -> np.ndarray:
+    """The actual-profile points a roller touches at the cam angles of ``profile`` (the same
+    cam, any cam angles): its offset points, except where they were cut away by ``env``,
+    where it is the edge of that cut."""
+    out = np.array(profile.actual, dtype=complex)
+    if not env.edges:
+        return out
+    bad = polyline_distance(out, env.pitch_outline) < env.roller_radius - 1e-6
+    for lo, hi, x, _ in env.edges:
+        if np.isnan(lo) or np.isnan(hi):
+            continue
+        inside = bad & ((profile.delta - lo) % TWO_PI <= (hi - lo) % TWO_PI)
+        out[inside] = x
+    return out
 
 
 # --------------------------------------------------------------------------- base circle

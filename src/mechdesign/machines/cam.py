@@ -9,7 +9,7 @@ for a flat face, convexity. Problems that leave the cam computable but unusable 
 """
 from __future__ import annotations
 
-from dataclasses import dataclass, replace
+from dataclasses import dataclass, field, replace
 
 import numpy as np
 
@@ -50,6 +50,9 @@ class CamResult:
     rho_actual_min_convex: float     # [m]
     face_extent: tuple | None        # flat face: (min, max) contact position along the face [m]
     warnings: list[Finding]
+    outline: np.ndarray | None = None              # the actual profile as cut, closed polyline [m]
+    envelope: core.RollerEnvelope | None = None    # roller follower: corners and cut loops
+    follower: object = None                        # the follower as designed (with its offset)
 
 
 def design(p) -> CamResult:
@@ -92,6 +95,16 @@ def design(p) -> CamResult:
     n_table = int(round(2 * np.pi / p.table_step))
     table = core.design_cam(prog, fol, r0, p.rotation,
                             delta=np.arange(n_table) * (2 * np.pi / n_table))
+    # A roller cam as it is cut: where the pitch curve has a corner (a velocity jump) or the
+    # offset curve a loop, the actual profile is the envelope of the roller circles (see
+    # core.roller_envelope); its points replace the plain offset points there.
+    envelope = None
+    outline = grid.actual
+    if fol.kind == "roller":
+        envelope = core.roller_envelope(prog, fol, grid)
+        outline = envelope.outline
+        grid = replace(grid, actual=envelope.contact)
+        table = replace(table, actual=core.envelope_contact(envelope, table))
     impacts = prog.impacts()
     segs = []
     seg_of = grid.motion.segment
@@ -115,7 +128,7 @@ def design(p) -> CamResult:
         face = (float(np.min(along)), float(np.max(along)))
     warnings = _checks(p, fol, r0, segs, rho_p, rho_a, grid, min_r0, best)
     return CamResult(p, r0, offset, designed, min_r0, best, grid, table, segs,
-                     prog.boundaries(), rho_p, rho_a, face, warnings)
+                     prog.boundaries(), rho_p, rho_a, face, warnings, outline, envelope, fol)
 
 
 def _face_positions(prof: core.CamProfile, fol) -> np.ndarray:
@@ -219,9 +232,321 @@ def analyse_disc(p) -> DiscResult:
     return DiscResult(p, grid, motions, tdelta, tables, queries, [])
 
 
-CAM_STAGES = [cam_stage()]
+# --------------------------------------------------------------------------- self-checks
+
+
+@dataclass(frozen=True)
+class SelfCheck:
+    """One self-check of a result, computed by a route independent of the design formulas.
+
+    ``value`` is SI (m, rad, or a ratio); it passes when ``value ≤ limit`` (sense "le"),
+    ``value ≥ limit`` ("ge"); sense "info" reports a number without a verdict. ``reference``
+    is the value it is compared with, where there is one; ``detail`` names what the row is
+    about (e.g. the follower's label, the cam angle)."""
+
+    key: str
+    value: float
+    limit: float | None
+    sense: str = "le"
+    reference: float | None = None
+    detail: dict = field(default_factory=dict)
+    requirement: bool = False    # a design requirement (e.g. a strength margin), not a check of
+                                 # the computation: its failure is a design finding elsewhere
+
+    @property
+    def passed(self) -> bool | None:
+        if self.sense == "info" or self.limit is None:
+            return None
+        ok = self.value <= self.limit if self.sense == "le" else self.value >= self.limit
+        return bool(ok and np.isfinite(self.value))
+
+
+def failed_findings(checks, names: dict) -> list[Finding]:
+    """A finding for every failed check of the computation (not for a design requirement);
+    ``names`` maps a key to its (zh, en) name."""
+    out = []
+    for c in checks:
+        if c.passed is False and not c.requirement:
+            zh, en = names.get(c.key, (c.key, c.key))
+            out.append(Finding("self_check",
+                               f"自检未通过：{zh}{_where(c, 'zh')} = {c.value:.4g}（限值 {c.limit:.4g}，SI 单位）；"
+                               "计算结果不可信，请报告此问题。",
+                               f"self-check failed: {en}{_where(c, 'en')} = {c.value:.4g} (limit "
+                               f"{c.limit:.4g}, SI units); the results cannot be trusted, please report it."))
+    return out
+
+
+def _where(c: SelfCheck, lang: str) -> str:
+    label = c.detail.get("label") or c.detail.get(f"where_{lang}")
+    return f" ({label})" if label else ""
+
+
+# Limits of the cam self-checks (SI). Central differences on the 0.1° grid have truncation
+# errors of order h² ≈ 3e-6 relative; a geometric distance to a polyline of the pitch curve
+# is exact to well below a micrometre.
+FD_LIMIT = 1e-3                 # relative, velocity/acceleration/curvature vs central differences
+ALPHA_LIMIT = np.radians(1e-2)  # pressure angle from the chord vs the analytic one [rad] (0.01°)
+DIST_LIMIT = 1e-6               # envelope distances [m] (1 µm)
+CLOSURE_LIMIT = 1e-9            # relative to the stroke
+DENSE_FACTOR = 20               # the reference pitch curve: 20 × the design grid
+
+
+CAM_CHECK_NAMES = {
+    "angle_sum": ("运动角之和", "sum of the programme's angles"),
+    "closure": ("位移闭合：s(360°) − s(0)", "closure: s(360°) − s(0)"),
+    "stroke": ("最大位移（应等于行程）", "largest displacement (must equal the stroke)"),
+    "velocity_fd": ("速度与位移中心差分之差（相对）", "velocity vs central difference of s (relative)"),
+    "acceleration_fd": ("加速度与速度中心差分之差（相对）", "acceleration vs central difference (relative)"),
+    "pressure_angle": ("压力角：由理论廓线切线几何求得与解析值之差",
+                       "pressure angle from the pitch-curve tangent vs analytic"),
+    "curvature_fd": ("曲率 1/ρ 与三点差分之差（相对）", "curvature 1/ρ vs three-point difference (relative)"),
+    "envelope": ("实际廓线各点到理论廓线的最短距离与 r_r 之差", "actual profile to pitch curve, distance − r_r"),
+    "interference": ("滚子侵入实际廓线的最大深度", "largest penetration of the roller into the profile"),
+    "gap": ("滚子与实际廓线的最大间隙（尖边处除外）", "largest gap between roller and profile (off the edges)"),
+    "offset_curve": ("未修正的等距曲线到理论廓线的距离与 r_r 之差", "plain offset curve to pitch curve, distance − r_r"),
+    "face_support": ("平底与廓线相切（廓线不越过平底）", "flat face tangent to the profile (profile never crosses it)"),
+    "corner": ("刚性冲击处的实际廓线", "actual profile at a velocity jump"),
+}
+
+
+@dataclass(frozen=True)
+class CamVerification:
+    checks: tuple[SelfCheck, ...]
+    fd_step: float                      # [rad]
+    corners: tuple                      # core.Corner of the roller envelope
+    stand_off: float                    # [m]
+    warnings: tuple[Finding, ...] = ()
+
+
+def _stencil_mask(delta: np.ndarray, seg: np.ndarray, programme, h: float) -> np.ndarray:
+    """Grid points whose central-difference stencil stays inside one segment and away from
+    any jump inside a segment (e.g. the middle of the parabolic law)."""
+    ok = (np.roll(seg, 1) == seg) & (np.roll(seg, -1) == seg)
+    for _, b in programme.internal_jumps():
+        dist = np.abs((delta - b.delta + np.pi) % (2 * np.pi) - np.pi)
+        ok &= dist > 1.5 * h
+    return ok
+
+
+def _rel(err: np.ndarray, scale: np.ndarray) -> float:
+    top = float(np.max(np.abs(scale))) if scale.size else 0.0
+    worst = float(np.max(np.abs(err))) if err.size else 0.0
+    return worst / top if top > 0 else worst
+
+
+def verify_cam(c: CamResult) -> CamVerification:
+    """Self-checks of the cam on its design grid, each by a route that does not use the
+    formula it checks: the programme's closure, velocity and acceleration against central
+    differences of the displacement, the pressure angle from the chord direction of the pitch
+    curve, the curvature from three neighbouring pitch points, and for a roller the actual
+    profile against a 20 × denser pitch curve (shortest distances both ways)."""
+    p = c.params
+    prog = p.programme
+    g = c.grid
+    m = g.motion
+    n = len(g.delta)
+    h = 2 * np.pi / n
+    scale_s = prog.stroke
+    checks = []
+    total = float(np.sum(prog.spans))
+    checks.append(SelfCheck("angle_sum", abs(total - 2 * np.pi), 1e-9, reference=2 * np.pi,
+                            detail={"sum": total}))
+    s_end = prog.end_values(len(prog.segments) - 1, 1.0)[0]
+    checks.append(SelfCheck("closure", abs(s_end - float(m.s[0])), CLOSURE_LIMIT * scale_s,
+                            reference=0.0, detail={"end": s_end}))
+    checks.append(SelfCheck("stroke", abs(float(np.max(m.s)) - prog.stroke), CLOSURE_LIMIT * scale_s,
+                            reference=prog.stroke, detail={"max": float(np.max(m.s))}))
+    ok = _stencil_mask(g.delta, m.segment, prog, h)
+    fwd = lambda x: np.roll(x, -1)   # noqa: E731
+    back = lambda x: np.roll(x, 1)   # noqa: E731
+    v_fd = (fwd(m.s) - back(m.s)) / (2 * h)
+    a_fd = (fwd(m.ds) - back(m.ds)) / (2 * h)
+    checks.append(SelfCheck("velocity_fd", _rel(m.ds[ok] - v_fd[ok], m.ds[ok]), FD_LIMIT,
+                            detail={"step": h}))
+    checks.append(SelfCheck("acceleration_fd", _rel(m.d2s[ok] - a_fd[ok], m.d2s[ok]), FD_LIMIT,
+                            detail={"step": h}))
+    # Pressure angle: the normal from the chord p(δ+h) − p(δ−h) of the pitch curve (the
+    # profile for a flat face), turned into the frame, against the follower point's direction
+    # of motion (the axis, or ⟂ to the arm through the pivot A).
+    pitch = g.pitch
+    chord = fwd(pitch) - back(pitch)
+    normal_frame = 1j * chord * np.exp(1j * g.rotation * g.delta)
+    if "pivot" in g.extras:
+        point = g.contact if p.follower.kind == "flat" else g.follower_point
+        motion_dir = 1j * (point - g.extras["pivot"])
+    else:
+        motion_dir = np.full_like(pitch, 1j)
+    dot = np.conj(normal_frame) * motion_dir
+    alpha_geo = np.arctan2(np.abs(dot.imag), np.abs(dot.real))
+    checks.append(SelfCheck("pressure_angle",
+                            float(np.max(np.abs(alpha_geo[ok] - g.pressure_angle[ok]))), ALPHA_LIMIT,
+                            detail={"step": h}))
+    # Curvature from three neighbouring points (the sign by the curve's own orientation).
+    d1 = chord / (2 * h)
+    d2 = (fwd(pitch) - 2 * pitch + back(pitch)) / h ** 2
+    area = 0.5 * float(np.sum(np.imag(np.conj(pitch) * fwd(pitch))))
+    kappa_fd = np.sign(area) * np.imag(np.conj(d1) * d2) / np.abs(d1) ** 3
+    kappa = 1.0 / g.rho_pitch
+    checks.append(SelfCheck("curvature_fd", _rel(kappa[ok] - kappa_fd[ok], kappa[ok]), FD_LIMIT,
+                            detail={"step": h}))
+    corners, stand_off = (), 0.0
+    fol = c.follower if c.follower is not None else p.follower
+    if p.follower.kind == "roller":
+        rr = g.roller_radius
+        dense_delta = np.unique(np.concatenate([
+            np.arange(n * DENSE_FACTOR) * (2 * np.pi / (n * DENSE_FACTOR)), prog.starts]))
+        dense = core.design_cam(prog, fol, c.base_radius, p.rotation, delta=dense_delta)
+        outline = c.outline if c.outline is not None else g.actual
+        out_dist = core.polyline_distance(outline, dense.pitch)
+        checks.append(SelfCheck("envelope", float(np.max(np.abs(out_dist - rr))), DIST_LIMIT,
+                                reference=rr, detail={"points": len(outline)}))
+        in_dist = core.polyline_distance(dense.pitch, outline)
+        checks.append(SelfCheck("interference", max(float(np.max(rr - in_dist)), 0.0), DIST_LIMIT,
+                                reference=rr))
+        # Off the edges every roller position touches the profile: leave out the positions
+        # whose nearest profile point is an edge (there the roller stands off by design).
+        off_edge = np.ones_like(dense_delta, dtype=bool)
+        env = c.envelope
+        if env is not None:
+            for _, _, x, _ in env.edges:
+                off_edge &= np.abs(dense.pitch - x) > in_dist + DIST_LIMIT
+            corners, stand_off = env.corners, env.stand_off
+        gap = float(np.max(in_dist[off_edge] - rr)) if np.any(off_edge) else 0.0
+        checks.append(SelfCheck("gap", max(gap, 0.0), DIST_LIMIT, reference=rr))
+        raw = g.pitch - rr * g.normal
+        raw_err = float(np.max(np.abs(core.polyline_distance(raw, dense.pitch) - rr)))
+        if raw_err > DIST_LIMIT:
+            checks.append(SelfCheck("offset_curve", raw_err, None, sense="info", reference=rr))
+        for k in corners:
+            checks.append(SelfCheck("corner", abs(k.turn), None, sense="info",
+                                    detail={"delta": k.delta, "kind": k.kind, "stand_off": k.stand_off}))
+    design_findings = []
+    if p.follower.kind == "flat":
+        cut, at = _face_support(c)
+        checks.append(SelfCheck("face_support", cut, DIST_LIMIT, requirement=True, detail={"delta": at}))
+        if cut > DIST_LIMIT:
+            # A flat face cannot envelope a velocity jump: the cam it would need crosses the face.
+            design_findings.append(Finding(
+                "flat_face_cut",
+                f"平底从动件运动失真：δ = {np.degrees(at):.1f}° 处凸轮廓线越过平底 {cut * 1e3:.3f} mm，"
+                "平底不能按给定规律运动（速度突变处平底无法包络廓线）；改用无刚性冲击的运动规律或滚子从动件。",
+                f"the flat-faced follower's motion is distorted: at δ = {np.degrees(at):.1f}° the cam profile "
+                f"crosses the face by {cut * 1e3:.3f} mm, so the face cannot follow the programme (a flat face "
+                "cannot envelope a velocity jump); use a law without rigid impact or a roller follower."))
+    return CamVerification(tuple(checks), h, corners, stand_off,
+                           tuple(failed_findings(checks, CAM_CHECK_NAMES) + design_findings))
+
+
+def _face_support(c: CamResult, every: int = 5) -> tuple[float, float]:
+    """Largest distance by which the profile crosses the flat face and the cam angle where
+    it does [m, rad], over every ``every``-th
+    grid angle: the face is the line y = r0 + s (translating) or the line through the pivot
+    and the contact point (oscillating); every profile point, turned into the frame, must lie
+    on the cam's side of it."""
+    g = c.grid
+    idx = np.arange(0, len(g.delta), every)
+    prof = g.actual[None, :] * np.exp(1j * g.rotation * g.delta[idx])[:, None]   # in the frame
+    if "pivot" in g.extras:
+        A = g.extras["pivot"]
+        u = g.contact[idx] - A
+        nu = 1j * u / np.abs(u)
+        nu = np.where(np.real(np.conj(nu) * (0 - A)) > 0, -nu, nu)        # away from the cam
+        excess = np.real(np.conj(nu)[:, None] * (prof - A))
+    else:
+        face = c.base_radius + g.motion.s[idx]
+        excess = prof.imag - face[:, None]
+    worst = np.abs(np.max(excess, axis=1))
+    k = int(np.argmax(worst))
+    return float(worst[k]), float(g.delta[idx[k]])
+
+
+DISC_CHECK_NAMES = {
+    "disc_s": ("位移：作图法（导路与圆盘求交）与解析式之差", "displacement: line–disc intersection vs closed form"),
+    "disc_alpha": ("压力角：三心定理（速度瞬心）与解析式之差", "pressure angle: three-centre theorem vs closed form"),
+    "disc_stroke": ("行程（由位移曲线的极值求得）", "stroke from the extremes of the displacement"),
+}
+
+DISC_S_LIMIT = 1e-9             # [m]
+DISC_ALPHA_LIMIT = np.radians(1e-4)
+DISC_FD_STEP = 1e-4             # [rad]
+
+
+@dataclass(frozen=True)
+class DiscVerification:
+    checks: tuple[SelfCheck, ...]
+    warnings: tuple[Finding, ...] = ()
+
+
+def disc_geometric(delta, radius: float, eccentricity: float, follower, rotation: int):
+    """Height y of the follower point by inversion: the disc held still (centre −iε, as at
+    δ = 0) and the follower's line turned by −σδ; the follower point is where that line leaves
+    the disc circle (radius R + r_r for a roller: the circle its centre rolls on) on the
+    follower's side, the root of |P + t·u − C|² = ρ². A flat face rests on the circle's
+    highest point. Returns y [m]."""
+    sigma = 1 if rotation > 0 else -1
+    d = np.asarray(delta, dtype=float)
+    turn = np.exp(-1j * sigma * d)
+    C = -1j * eccentricity
+    if follower.kind == "flat":
+        return np.imag(C / turn) + radius
+    rho = radius + (follower.roller_radius if follower.kind == "roller" else 0.0)
+    P0, u = follower.offset * turn, 1j * turn          # the line x = e of the frame
+    w = P0 - C
+    b = np.real(np.conj(u) * w)
+    q = np.abs(w) ** 2 - rho ** 2
+    return -b + np.sqrt(b * b - q)                      # t = y, the upper crossing
+
+
+def verify_disc(d: DiscResult) -> DiscVerification:
+    """Each follower's displacement from the line–circle intersection (inversion), its
+    pressure angle from the three-centre theorem (the normal passes through the relative
+    pole P of cam and follower, x_P = σ·dy/dδ by central differences of the geometric y),
+    the stroke from the geometric extremes, and the same at the brief's query angles."""
+    p = d.params
+    sigma = 1 if p.rotation > 0 else -1
+    checks = []
+    h = DISC_FD_STEP
+
+    def geo(delta, fol):
+        y = disc_geometric(delta, p.radius, p.eccentricity, fol, p.rotation)
+        if fol.kind == "flat":
+            return y, np.zeros_like(y)
+        dy = (disc_geometric(delta + h, p.radius, p.eccentricity, fol, p.rotation)
+              - disc_geometric(delta - h, p.radius, p.eccentricity, fol, p.rotation)) / (2 * h)
+        x_pole = sigma * dy
+        return y, np.arctan2(np.abs(x_pole - fol.offset), y)
+
+    for (label, fol), mo, q in zip(p.followers, d.motions, d.queries):
+        # the fine grid and the brief's query angles together
+        delta = np.concatenate([d.grid_delta, q.delta])
+        y, alpha = geo(delta, fol)
+        # extremes over the periodic grid, refined by the parabola through the three points
+        # about the grid extreme
+        yy = y[:len(d.grid_delta) - 1]
+        N = len(yy)
+        ext = []
+        for k in (int(np.argmin(yy)), int(np.argmax(yy))):
+            a, b, c_ = yy[(k - 1) % N], yy[k], yy[(k + 1) % N]
+            den = a - 2 * b + c_
+            ext.append(b - (c_ - a) ** 2 / (8 * den) if den != 0 else b)
+        y_min, y_max = ext
+        s_ref = np.concatenate([mo.s, q.s])
+        a_ref = np.concatenate([mo.pressure_angle, q.pressure_angle])
+        checks.append(SelfCheck("disc_s", float(np.max(np.abs((y - y_min) - s_ref))), DISC_S_LIMIT,
+                                detail={"label": label, "queries": len(q.delta)}))
+        checks.append(SelfCheck("disc_alpha", float(np.max(np.abs(alpha - a_ref))),
+                                DISC_ALPHA_LIMIT, detail={"label": label, "queries": len(q.delta)}))
+        checks.append(SelfCheck("disc_stroke", abs((y_max - y_min) - mo.stroke), DISC_S_LIMIT,
+                                reference=mo.stroke, detail={"label": label, "stroke": y_max - y_min}))
+    return DiscVerification(tuple(checks), tuple(failed_findings(checks, DISC_CHECK_NAMES)))
+
+
+CAM_STAGES = [cam_stage(),
+              Stage("cam_verification", "计算校核 / verification", lambda r: verify_cam(r["cam"]))]
 DISC_STAGES = [Stage("disc", "偏心圆盘凸轮分析 / eccentric disc analysis",
-                     lambda r: analyse_disc(r["params"]))]
+                     lambda r: analyse_disc(r["params"])),
+               Stage("disc_verification", "计算校核 / verification",
+                     lambda r: verify_disc(r["disc"]))]
 
 
 def _c(z):
@@ -244,6 +569,9 @@ def cam_document(c: CamResult) -> dict:
         "rho_actual_min_convex": c.rho_actual_min_convex,
         "face_extent": c.face_extent,
         "warnings": [w.code for w in c.warnings],
+        "outline": c.outline,
+        "corners": [] if c.envelope is None else [k.__dict__ for k in c.envelope.corners],
+        "stand_off": None if c.envelope is None else c.envelope.stand_off,
         "table": {"delta": t.delta, "s": t.motion.s, "ds": t.motion.ds, "d2s": t.motion.d2s,
                   "d3s": t.motion.d3s, "pitch": t.pitch, "actual": t.actual,
                   "pressure_angle": t.pressure_angle, "rho_pitch": t.rho_pitch,
@@ -254,7 +582,18 @@ def cam_document(c: CamResult) -> dict:
 def cam_results_document(r: dict) -> dict:
     return {"schema": "mechdesign.results/1", "machine": "cam",
             "units": "SI: m, rad; derivatives per radian of cam angle; complex points as [x, y]",
-            "cam": cam_document(r["cam"])}
+            "cam": cam_document(r["cam"]),
+            "verification": (None if r.get("cam_verification") is None
+                             else verification_document(r["cam_verification"]))}
+
+
+def verification_document(v) -> dict:
+    """Self-checks in ``results.json``: value, limit and verdict of each (SI)."""
+    return {"checks": [{"key": c.key, "value": c.value, "limit": c.limit, "sense": c.sense,
+                        "reference": c.reference, "passed": c.passed, "requirement": c.requirement,
+                        "detail": c.detail}
+                       for c in v.checks],
+            "failed": [w.en for w in v.warnings]}
 
 
 def disc_results_document(r: dict) -> dict:
@@ -267,4 +606,6 @@ def disc_results_document(r: dict) -> dict:
                                                          "pressure_angle": t.pressure_angle},
                            "queries": {"delta": q.delta, "s": q.s, "pressure_angle": q.pressure_angle}}
                           for (label, f), m, t, q in zip(d.params.followers, d.motions, d.tables,
-                                                         d.queries)]}
+                                                         d.queries)],
+            "verification": (None if r.get("disc_verification") is None
+                             else verification_document(r["disc_verification"]))}

@@ -234,6 +234,130 @@ def _failed(c, where_zh: str, where_en: str) -> Finding:
 
 
 # ------------------------------------------------------------------------------------
+# Self-checks (计算校核)
+
+DRIVE_CHECK_NAMES = {
+    "shaft_speed": ("各轴转速 n₍ₖ₊₁₎ = nₖ / iₖ（相对误差）", "shaft speeds n₍ₖ₊₁₎ = nₖ / iₖ (relative error)"),
+    "shaft_power": ("各轴功率 P₍ₖ₊₁₎ = Pₖ ηₖ η_b（相对误差）", "shaft powers P₍ₖ₊₁₎ = Pₖ ηₖ η_b (relative error)"),
+    "shaft_torque": ("各轴转矩 T = 9549.3 P/n（相对误差）", "shaft torques T = 9549.3 P/n (relative error)"),
+    "power_balance": ("功率平衡 P_末 η_b η_w = P_w（相对误差）", "power balance P_last η_b η_w = P_w (relative error)"),
+    "ratio_product": ("各级传动比之积 Π iₖ 与 n_m / n_w′（相对误差）", "product of the stage ratios Π iₖ vs n_m / n_w′ (relative error)"),
+    "stage_ratio": ("各级传动比与齿数比、带轮直径比（相对误差）", "stage ratios vs teeth and pulley ratios (relative error)"),
+    "speed_error": ("工作机转速误差 (n_w′ − n_w) / n_w", "machine speed error (n_w′ − n_w) / n_w"),
+    "motor_power": ("电动机额定功率裕度 1 − P_d / P_ed", "motor rating margin 1 − P_d / P_ed"),
+    "margin": ("强度裕度 1 − 利用率（最小）", "strength margin 1 − utilisation (smallest)"),
+    "verdicts": ("强度结论与裕度不一致的项数", "strength verdicts that disagree with their margin"),
+    "reactions": ("支反力平衡 ΣF = 0、ΣM_B = 0（相对残差）", "bearing reactions ΣF = 0, ΣM_B = 0 (relative residual)"),
+}
+
+DRIVE_REL_LIMIT = 1e-9
+
+
+@dataclass(frozen=True)
+class DriveVerification:
+    checks: tuple
+    warnings: tuple[Finding, ...] = ()
+
+
+def _rel_err(value, reference) -> float:
+    value, reference = np.asarray(value, dtype=float), np.asarray(reference, dtype=float)
+    if value.size == 0:
+        return 0.0
+    return float(np.max(np.abs(value - reference) / np.maximum(np.abs(reference), 1e-300)))
+
+
+def _margin(c) -> float:
+    """1 − utilisation, recomputed from the check's value and allowable (≥ 0 passes)."""
+    if c.sense == "le":
+        return 1.0 - c.value / c.allowable
+    return 1.0 - c.allowable / c.value
+
+
+def verify_drive(d: DriveResult) -> DriveVerification:
+    """The drive recomputed by its definitions: the shaft table stage by stage (n_{k+1} =
+    n_k/i_k, P_{k+1} = P_k·η_k·η_b with no bearing loss charged to the motor shaft, T = P/ω),
+    the power delivered against the machine's need, the ratios against the teeth, the speed
+    error against the tolerance, every strength check's margin and every shaft's statics."""
+    from .cam import SelfCheck, failed_findings
+
+    sh = d.shafts
+    ratios = np.array([st.ratio for st in d.stages])
+    etas = np.array([st.efficiency for st in d.stages])
+    n = np.array([s.speed_rpm for s in sh])
+    P = np.array([s.power for s in sh])
+    T = np.array([s.torque for s in sh])
+    bearing = np.array([1.0] + [d.bearing_eff] * (len(d.stages) - 1))
+    checks = [
+        SelfCheck("shaft_speed", _rel_err(n[1:], n[:-1] / ratios), DRIVE_REL_LIMIT),
+        SelfCheck("shaft_power", _rel_err(np.concatenate([[P[0]], P[1:]]),
+                                          np.concatenate([[d.power_required], P[:-1] * etas * bearing])),
+                  DRIVE_REL_LIMIT),
+        SelfCheck("shaft_torque", _rel_err(T, 30000.0 / np.pi * (P / 1e3) / n), DRIVE_REL_LIMIT),
+        SelfCheck("power_balance", _rel_err(P[-1] * d.bearing_eff * d.machine_eff, d.machine_power),
+                  DRIVE_REL_LIMIT, reference=d.machine_power),
+        SelfCheck("ratio_product", _rel_err(np.prod(ratios), n[0] / n[-1]), DRIVE_REL_LIMIT,
+                  reference=float(n[0] / n[-1]), detail={"product": float(np.prod(ratios))}),
+    ]
+    geo_ratio, real_ratio = [], []
+    for st in d.stages:
+        if st.type == "coupling":
+            geo_ratio.append(1.0)
+        elif st.z1 is not None and st.z2 is not None:
+            geo_ratio.append(st.z2 / st.z1)
+        elif st.d1 is not None and st.d2 is not None:
+            geo_ratio.append(st.d2 / (st.d1 * (1.0 - st.slip)))
+        else:
+            continue
+        real_ratio.append(st.ratio)
+    checks.append(SelfCheck("stage_ratio", _rel_err(real_ratio, geo_ratio), DRIVE_REL_LIMIT,
+                            detail={"stages": len(real_ratio)}))
+    err = abs(n[-1] - d.output_speed_required) / d.output_speed_required
+    signed = float((n[-1] - d.output_speed_required) / d.output_speed_required)
+    checks.append(SelfCheck("speed_error", float(err), d.speed_tolerance, reference=d.speed_tolerance,
+                            detail={"signed": signed}, requirement=True))
+    checks.append(SelfCheck("motor_power", 1.0 - d.power_required / d.motor.power, 0.0, sense="ge",
+                            requirement=True, detail={"rated": d.motor.power, "required": d.power_required}))
+    mismatches = 0
+    groups = [(f"第 {st.index + 1} 级{st.name_zh}", f"stage {st.index + 1} ({st.name_en})",
+               {"stage": st.index}, st.design.checks if st.design else ()) for st in d.stages]
+    groups += [(f"{s.index} 轴", f"shaft {s.index}", {"shaft": s.index}, s.checks)
+               for s in d.shaft_designs]
+    for zh, en, which, cs in groups:
+        if not cs:
+            continue
+        margins = [_margin(c) for c in cs]
+        k = int(np.argmin(margins))
+        mismatches += sum(1 for c, m in zip(cs, margins) if c.passed != (m >= 0))
+        checks.append(SelfCheck("margin", float(margins[k]), 0.0, sense="ge", requirement=True,
+                                detail={"where_zh": zh, "where_en": en, **which, "checks": len(cs),
+                                        "check_zh": cs[k].name_zh, "check_en": cs[k].name_en}))
+    checks.append(SelfCheck("verdicts", float(mismatches), 0.0))
+    for s in d.shaft_designs:
+        checks.append(SelfCheck("reactions", _statics_residual(s), DRIVE_REL_LIMIT,
+                                detail={"where_zh": f"{s.index} 轴", "where_en": f"shaft {s.index}",
+                                        "shaft": s.index}))
+    return DriveVerification(tuple(checks), tuple(failed_findings(checks, DRIVE_CHECK_NAMES)))
+
+
+def _statics_residual(s) -> float:
+    """max(|ΣF|/ΣF_abs, |ΣM_B|/(ΣF_abs·L)) in both planes for the loads and the bearing
+    reactions (A at x = 0, B at the span; the axial force at radius r adds the couple −r·F_a
+    in the vertical plane), moments taken about bearing B."""
+    res = s.result
+    L = s.span
+    xs = np.array([p.x for p in s.loads] + [0.0, L])
+    Fh = np.array([p.Fh for p in s.loads] + [res.RAh, res.RBh])
+    Fv = np.array([p.Fv for p in s.loads] + [res.RAv, res.RBv])
+    couple = np.array([-p.r * p.Fa for p in s.loads] + [0.0, 0.0])
+    scale = float(np.sum(np.abs(Fh)) + np.sum(np.abs(Fv)) + np.sum(np.abs(couple)) / L)
+    if scale == 0:
+        return 0.0
+    sums = [abs(np.sum(Fh)) / scale, abs(np.sum(Fv)) / scale,
+            abs(np.sum((xs - L) * Fh)) / (scale * L), abs(np.sum((xs - L) * Fv + couple)) / (scale * L)]
+    return float(max(sums))
+
+
+# ------------------------------------------------------------------------------------
 # The stand-alone drive machine
 
 def drive_stage_standalone() -> Stage:
@@ -243,7 +367,8 @@ def drive_stage_standalone() -> Stage:
     return Stage("drive", "传动装置设计 / drive", run)
 
 
-DRIVE_STAGES = [drive_stage_standalone()]
+DRIVE_STAGES = [drive_stage_standalone(),
+                Stage("drive_verification", "计算校核 / verification", lambda r: verify_drive(r["drive"]))]
 
 
 def drive_document(d: DriveResult) -> dict:
@@ -260,6 +385,11 @@ def drive_document(d: DriveResult) -> dict:
 
 
 def drive_results_document(r: dict) -> dict:
+    from .cam import verification_document
+
     return {"schema": "mechdesign.results/1", "machine": "drive",
             "units": "SI: m, s, rad, N, N·m, W, Pa; speeds in rpm where named _rpm",
-            "drive": drive_document(r["drive"])}
+            "drive": drive_document(r["drive"]),
+            "verification": (None if r.get("drive_verification") is None
+                             else verification_document(r["drive_verification"]))}
+

@@ -10,7 +10,7 @@ import numpy as np
 from ..core import cam as core
 from ..core.motion_laws import LAWS
 from . import cam_figures as cf
-from .fmt import f
+from .fmt import e, f
 
 DEG = 180.0 / np.pi
 MM = 1e3
@@ -135,7 +135,8 @@ def make_cam_figures(c, fig_dir: Path, lang: str, prefix: str = "cam") -> dict[s
     pivot = None
     if "pivot" in g.extras:
         pivot = complex(g.extras["pivot"]) * MM
-    cf.profile(out("profile"), lang, g.pitch * MM, g.actual * MM, c.base_radius * MM,
+    outline = g.actual if getattr(c, "outline", None) is None else c.outline
+    cf.profile(out("profile"), lang, g.pitch * MM, outline * MM, c.base_radius * MM,
                g.roller_radius * MM, marks, g.rotation, g.follower_point[0] * MM, pivot,
                flat=c.params.follower.kind == "flat")
     return paths
@@ -367,6 +368,16 @@ def write_cam_csv(c, folder: Path, name: str = "cam_profile") -> list[Path]:
                             f"{prof.pressure_angle[i] * DEG:.6f}",
                             f"{prof.rho_pitch[i] * MM:.6f}", f"{prof.rho_actual[i] * MM:.6f}"])
         paths.append(path)
+    env = getattr(c, "envelope", None)
+    if env is not None and (env.corners or env.edges):
+        # the actual profile as it is cut, with the roller arcs and edges at the corners
+        path = folder / f"{name}_outline.csv"
+        with path.open("w", newline="", encoding="utf-8") as fh:
+            w = csv.writer(fh)
+            w.writerow(["actual_x_mm", "actual_y_mm"])
+            for z in c.outline:
+                w.writerow([f"{z.real * MM:.6f}", f"{z.imag * MM:.6f}"])
+        paths.append(path)
     return paths
 
 
@@ -378,7 +389,132 @@ def make_figures(r: dict, fig_dir: Path, lang: str) -> dict[str, str]:
 
 
 def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
-    return {"meta": brief.report, "cam": cam_context(r["cam"], lang, figures, "cam_profile.csv")}
+    c, v = r["cam"], r.get("cam_verification")
+    out = {"meta": brief.report, "cam": cam_context(c, lang, figures, "cam_profile.csv"),
+           "envelope_note": envelope_note(c, lang, "cam_profile"),
+           "verify_rows": [], "findings": [], "verify_note": ""}
+    if v is not None:
+        out.update(verify_rows=cam_verification_rows(v, c, lang),
+                   findings=[w.text(lang) for w in v.warnings],
+                   verify_note=_CAM_NOTE[lang])
+    return out
+
+
+# --------------------------------------------------------------------------- verification
+
+_CAM_NOTE = {
+    "zh": "各项均由本次运行在 0.1° 设计网格上重新算出，不用被校核的公式：速度、加速度与位移（速度）的中心差分比较，"
+          "截断误差与步长平方成正比（跨越冲击点的差分不计）；压力角由理论廓线相邻两点的弦向求法线，再与从动件在该点的运动方向求夹角；"
+          "曲率由相邻三点求得；滚子从动件的实际廓线与 20 倍加密的理论廓线比较两向最短距离（实际廓线上各点到理论廓线、"
+          "理论廓线上各点到实际廓线），两者都应等于滚子半径。",
+    "en": "Every item is recomputed in this run on the 0.1° design grid without the formula it checks: velocity and "
+          "acceleration against central differences of the displacement (velocity), whose truncation error scales with "
+          "the square of the step (stencils across an impact are left out); the pressure angle from the normal to the chord "
+          "of two neighbouring pitch points and the follower's direction of motion; the curvature from three neighbouring "
+          "points; a roller follower's actual profile against a 20 × denser pitch curve by the shortest distance both ways "
+          "(profile to pitch curve and pitch curve to profile), both of which must equal the roller radius.",
+}
+
+
+def _verdict(ok, lang: str) -> str:
+    if ok is None:
+        return "—"
+    return ("满足" if lang == "zh" else "ok") if ok else ("不满足" if lang == "zh" else "fails")
+
+
+def _sci(x: float, unit: str = "") -> str:
+    return e(x) + (f" {unit}" if unit else "")
+
+
+def cam_verification_rows(v, c, lang: str) -> list[list[str]]:
+    """The cam self-checks as [item, result, reference / limit, verdict] rows."""
+    from ..machines.cam import CAM_CHECK_NAMES, DIST_LIMIT
+
+    zh = lang == "zh"
+    osc = c.params.oscillating
+    s_scale, s_unit = (DEG, "°") if osc else (MM, "mm")
+    step = f(v.fd_step * DEG, 1)
+    rr = f(c.grid.roller_radius * MM, 2)
+    rows = []
+    for k in v.checks:
+        name = CAM_CHECK_NAMES[k.key][0 if zh else 1]
+        ok = _verdict(k.passed, lang)
+        if k.key == "angle_sum":
+            rows.append([name, f"{f(k.detail['sum'] * DEG, 6)}°", "360°", ok])
+        elif k.key == "closure":
+            rows.append([name, _sci(k.value * s_scale, s_unit), f"≤ {e(k.limit * s_scale)} {s_unit}", ok])
+        elif k.key == "stroke":
+            rows.append([name, f"{f(k.detail['max'] * s_scale, 6)} {s_unit}",
+                         f"{'行程' if zh else 'stroke'} {f(k.reference * s_scale, 6)} {s_unit}", ok])
+        elif k.key in ("velocity_fd", "acceleration_fd", "curvature_fd"):
+            rows.append([name, e(k.value), f"≤ {e(k.limit)}（O(h²)，h = {step}°）" if zh else
+                         f"≤ {e(k.limit)} (O(h²), h = {step}°)", ok])
+        elif k.key == "pressure_angle":
+            rows.append([name, f"{e(k.value * DEG)}°", f"≤ {f(k.limit * DEG, 2)}°", ok])
+        elif k.key in ("envelope", "interference", "gap", "face_support"):
+            ref = f"≤ {f(k.limit * MM, 3)} mm" + (f"（r_r = {rr} mm）" if zh else f" (r_r = {rr} mm)") \
+                if k.key != "face_support" else f"≤ {f(k.limit * MM, 3)} mm"
+            rows.append([name, f"{e(k.value * MM)} mm", ref, ok])
+        elif k.key == "offset_curve":
+            rows.append([name, f"{f(k.value * MM, 3)} mm", f"≤ {f(DIST_LIMIT * MM, 3)} mm",
+                         "已按包络修正" if zh else "corrected (envelope)"])
+        elif k.key == "corner":
+            at = f(k.detail["delta"] * DEG, 1)
+            turn = f(k.value * DEG, 2)
+            if k.detail["kind"] == "edge":
+                res = f"尖边，法线转过 {turn}°" if zh else f"sharp edge, normal turns {turn}°"
+                ref = (f"切去等距线的自交环；滚子中心偏离设计位置 {f(k.detail['stand_off'] * MM, 3)} mm" if zh else
+                       f"offset loop cut away; roller centre {f(k.detail['stand_off'] * MM, 3)} mm off its path")
+            else:
+                res = f"r_r 圆弧，法线转过 {turn}°" if zh else f"r_r arc, normal turns {turn}°"
+                ref = ("补齐等距线间的缺口；从动件按设计运动" if zh else
+                       "fills the gap between the offset branches; motion as designed")
+            rows.append([f"{name}（δ = {at}°）" if zh else f"{name} (δ = {at}°)", res, ref, "—"])
+    return rows
+
+
+def envelope_note(c, lang: str, csv_stem: str) -> str:
+    """A paragraph on the actual profile at the pitch curve's corners ('' when there are none)."""
+    env = getattr(c, "envelope", None)
+    if env is None or not (env.corners or env.edges):
+        return ""
+    zh = lang == "zh"
+    rr = f(env.roller_radius * MM, 2)
+    edges = [k for k in env.corners if k.kind == "edge"]
+    arcs = [k for k in env.corners if k.kind == "arc"]
+    sep = "、" if zh else ", "
+    deg = lambda ks: sep.join(f"{f(k.delta * DEG, 1)}°" for k in ks)  # noqa: E731
+    if zh:
+        text = ("从动件速度突变（刚性冲击）处理论廓线有尖点，沿法线量取 r_r 的等距曲线在尖点两侧不连续，"
+                "不是滚子圆族的包络。实际廓线按包络线修正：")
+        parts = []
+        if edges:
+            parts.append(f"δ = {deg(edges)} 处两支等距线相交成小环，环内的点到理论廓线的距离小于 r_r（会被滚子切去），"
+                         f"实际廓线取到两支的交点为止，成一尖边；此处滚子中心最多离开设计位置 {f(env.stand_off * MM, 3)} mm")
+        if arcs:
+            parts.append(f"δ = {deg(arcs)} 处两支等距线之间有缺口，以滚子中心在尖点处的圆弧（半径 r_r = {rr} mm）补齐，"
+                         "此处从动件按设计运动")
+        text += "；".join(parts) + "。"
+        text += (f"廓线坐标表与 `{csv_stem}.csv` 中被切去的点已换成尖边点；完整的实际廓线（含圆弧）另存为 "
+                 f"`{csv_stem}_outline.csv`，图 [@fig:cam-profile] 即按此绘制。")
+    else:
+        text = ("Where the follower's velocity jumps (rigid impact) the pitch curve has a corner, and the curve offset "
+                "by r_r along the normal is broken there: it is not the envelope of the roller circles. The actual "
+                "profile is corrected to that envelope: ")
+        parts = []
+        if edges:
+            parts.append(f"at δ = {deg(edges)} the two offset branches cross in a small loop whose points lie closer "
+                         "than r_r to the pitch curve (the roller would cut them away); the profile stops at the "
+                         f"crossing, a sharp edge, and there the roller centre leaves its designed path by at most "
+                         f"{f(env.stand_off * MM, 3)} mm")
+        if arcs:
+            parts.append(f"at δ = {deg(arcs)} the offset branches leave a gap, filled by the arc of radius "
+                         f"r_r = {rr} mm about the corner; there the follower moves as designed")
+        text += "; ".join(parts) + ". "
+        text += (f"The cut-away points in the coordinate table and in `{csv_stem}.csv` are replaced by the edge; "
+                 f"the whole actual profile (with the arcs) is written to `{csv_stem}_outline.csv` and drawn in "
+                 "[@fig:cam-profile].")
+    return text
 
 
 def write_data(r: dict, folder: Path) -> list[Path]:

@@ -9,7 +9,7 @@ import numpy as np
 
 from . import cam_figures as cf
 from .cam_report import CONTACT
-from .fmt import f
+from .fmt import e, f
 
 DEG = 180.0 / np.pi
 MM = 1e3
@@ -80,7 +80,45 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
         "query_head": ["δ/°"] + [label for label, _ in p.followers],
         "query_align": "|".join([":-:"] * (1 + len(p.followers))),
         "query_rows": qrows,
+        **verification_context(r.get("disc_verification"), lang),
     }
+
+
+_NOTE = {
+    "zh": "校核不用解析式：位移由反转法作图求得——凸轮不动，推杆导路反向转过 δ，导路与圆盘轮廓（滚子从动件为半径 R + r_r "
+          "的滚子中心轨迹圆）的交点即推杆位置；压力角由三心定理求得——凸轮与推杆的相对速度瞬心 P 在过 O 垂直于导路的直线上，"
+          "OP = dy/dδ（由作图所得位移的中心差分求得），公法线过 P；行程由位移曲线的极值（三点抛物线插值）求得。"
+          "比较范围为 0.1° 网格上的全部位置及指定位置。",
+    "en": "The checks do not use the closed forms: the displacement by inversion — the cam held still, the follower's "
+          "line turned back through δ and intersected with the disc (for a roller, the circle of radius R + r_r on which "
+          "its centre rolls); the pressure angle by the three-centre theorem — the relative pole P of cam and follower "
+          "lies on the line through O perpendicular to the follower's line, OP = dy/dδ (central differences of the "
+          "geometric displacement), and the common normal passes through P; the stroke from the extremes of the "
+          "displacement (three-point parabola). Compared on every position of the 0.1° grid and at the given angles.",
+}
+
+
+def verification_context(v, lang: str) -> dict:
+    """``verify_rows``, ``findings`` and ``verify_note`` of the verification section."""
+    if v is None:
+        return {"verify_rows": [], "findings": [], "verify_note": ""}
+    from ..machines.cam import DISC_CHECK_NAMES
+
+    zh = lang == "zh"
+    rows = []
+    for k in v.checks:
+        name = f"{k.detail.get('label', '')} " + DISC_CHECK_NAMES[k.key][0 if zh else 1]
+        ok = ("满足" if zh else "ok") if k.passed else ("不满足" if zh else "fails")
+        if k.key == "disc_s":
+            rows.append([name, f"{e(k.value * MM)} mm", f"≤ {e(k.limit * MM)} mm", ok])
+        elif k.key == "disc_alpha":
+            rows.append([name, f"{e(k.value * DEG)}°", f"≤ {e(k.limit * DEG)}°", ok])
+        elif k.key == "disc_stroke":
+            rows.append([name, f"{f(k.detail['stroke'] * MM, 6)} mm",
+                         (f"解析 h = {f(k.reference * MM, 6)} mm" if zh else
+                          f"closed form h = {f(k.reference * MM, 6)} mm"), ok])
+    return {"verify_rows": rows, "findings": [w.text(lang) for w in v.warnings],
+            "verify_note": _NOTE[lang]}
 
 
 def write_data(r: dict, folder: Path) -> list[Path]:
