@@ -14,7 +14,6 @@ from dataclasses import dataclass, replace
 import numpy as np
 
 from ..core import drive as core
-from ..core import gears
 from ..data import load_csv, load_yaml
 from ..pipeline import Stage
 from .findings import Finding

@@ -338,7 +338,7 @@ def cam_context(c, lang: str, figs: dict[str, str], csv_name: str) -> dict:
         "joints": "、".join(joints) if zh else ", ".join(joints),
         "laws": laws, "geo": geo, "checks": checks, "design_rows": design_rows,
         "table_rows": table_rows, "table_step": f(p.table_step * DEG, 1),
-        "table_head": [f"δ/°", f"{u.s_sym}/{u.s_unit}", f"{u.syms[0]}/({u.units[0]})",
+        "table_head": ["δ/°", f"{u.s_sym}/{u.s_unit}", f"{u.syms[0]}/({u.units[0]})",
                        "x/mm", "y/mm", "x_a/mm", "y_a/mm", "α/°"],
         "fig": figs, "csv": csv_name, "roller": fol.kind == "roller", "flat": fol.kind == "flat",
         "warnings": [w.text(lang) for w in c.warnings],

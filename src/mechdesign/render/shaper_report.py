@@ -25,7 +25,6 @@ def make_figures(r: dict, fig_dir: Path, lang: str) -> dict[str, str]:
     span = k.working_span * DEG
     pos_ph = k.phase[n:] * DEG
     labels = list(k.positions.labels)
-    marks = (labels, pos_ph)
     paths = {}
 
     def out(name):
