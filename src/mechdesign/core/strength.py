@@ -18,6 +18,8 @@ from typing import Iterable, Literal
 
 import numpy as np
 
+from .drive import DriveDesignError
+
 Sense = Literal["le", "ge"]
 
 #: Factor from the SI value of a :class:`Check` to its course display unit.
@@ -241,7 +243,10 @@ def worm_contact_coefficient(d1_over_a: float) -> float:
     valid for 0.2 ≤ d1/a ≤ 0.55."""
     x = d1_over_a
     if not 0.2 <= x <= 0.55:
-        raise ValueError(f"d1/a = {x:.3f} is outside the chart range 0.2–0.55")
+        raise DriveDesignError(
+            f"worm pair: d1/a = {x:.3f} is outside the contact-coefficient chart (0.2–0.55); "
+            "change the diameter factor q or the wheel's teeth z2 (d1/a = q/(q + z2) for x = 0), "
+            "or the stage's ratio")
     return 8.809524 * x * x - 9.583333 * x + 5.177143
 
 
