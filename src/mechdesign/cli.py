@@ -1,4 +1,4 @@
-"""Command line: ``mechdesign run BRIEF``.
+"""Command line: ``mechdesign run BRIEF``, ``check``, ``schema``, ``new``.
 
 Exit codes: 0 success; 1 the report could not be rendered (toolchain or file-system
 problem); 2 the brief or the command line is invalid (including a mechanism that
@@ -158,6 +158,86 @@ def run(
     _err(f"done in {total:.1f} s (computation {computed:.2f} s)")
     for path in written:
         typer.echo(str(path))
+
+
+#: The example brief each machine's starter (`mechdesign new`) is copied from.
+EXAMPLES = {
+    "shaper": "shaper.yaml", "furnace_pusher": "furnace_pusher.yaml", "lockbeam": "lockbeam.yaml",
+    "die_cutter": "die_cutter.yaml", "crank_rocker": "crank_rocker.yaml",
+    "linkage": "linkage_sixbar.yaml", "cam": "cam_7_3.yaml", "eccentric_cam": "cam_7_1.yaml",
+    "drive": "furnace_drive.yaml"}
+
+
+@app.command()
+def check(
+    briefs: list[Path] = typer.Argument(..., help="Design briefs (YAML) to validate."),
+):
+    """Validate briefs without computing anything (fast: for editors and pre-commit).
+
+    Prints one line per brief; exit 0 when all are valid, 2 when any is not."""
+    from .brief.loader import BriefError, load_brief
+    from .machines import get_machine
+
+    bad = 0
+    for path in briefs:
+        try:
+            b = load_brief(path)
+            get_machine(b.machine).to_params(b)
+        except BriefError as exc:
+            bad += 1
+            _err(str(exc))
+            continue
+        except ValueError as exc:  # a conversion found the data inconsistent
+            bad += 1
+            _err(f"{path}: {exc}")
+            continue
+        typer.echo(f"ok: {path} ({b.machine})")
+    if bad:
+        _err(f"{bad} of {len(briefs)} brief{'s' if len(briefs) != 1 else ''} invalid")
+        raise typer.Exit(EXIT_INVALID)
+
+
+@app.command()
+def schema(
+    machine: Optional[str] = typer.Argument(None, help="Only this machine's brief "
+                                            "(default: all, chosen by the `machine` field)."),
+):
+    """Print the JSON Schema of the design brief (for editors, e.g. VS Code's YAML extension)."""
+    import json
+
+    from .brief.loader import BRIEF_MODELS, brief_schema
+
+    if machine is not None and machine not in BRIEF_MODELS:
+        _err(f"machine {machine!r}: one of {', '.join(sorted(BRIEF_MODELS))}")
+        raise typer.Exit(EXIT_INVALID)
+    typer.echo(json.dumps(brief_schema(machine), ensure_ascii=False, indent=1))
+
+
+@app.command()
+def new(
+    machine: str = typer.Argument(..., help="Machine of the starter brief, e.g. shaper."),
+    out: Optional[Path] = typer.Option(None, "--out", "-o", dir_okay=False,
+                                       help="File to write (default: MACHINE.yaml here)."),
+):
+    """Write a commented starter brief for MACHINE (the shipped example, to edit)."""
+    from importlib import resources
+
+    if machine not in EXAMPLES:
+        _err(f"machine {machine!r}: one of {', '.join(sorted(EXAMPLES))}")
+        raise typer.Exit(EXIT_INVALID)
+    target = out if out is not None else Path(f"{machine}.yaml")
+    if target.exists():
+        _err(f"{target} exists; choose another name with --out (nothing was written)")
+        raise typer.Exit(EXIT_INVALID)
+    text = resources.files("mechdesign.designs").joinpath(EXAMPLES[machine]).read_text(encoding="utf-8")
+    try:
+        target.write_text(text, encoding="utf-8")
+    except OSError as exc:
+        _err(f"{target}: cannot be written: {exc.strerror}")
+        raise typer.Exit(EXIT_FAILED)
+    typer.echo(str(target))
+    _err(f"wrote a starter {machine} brief; edit it, then: mechdesign check {target} && "
+         f"mechdesign run {target}")
 
 
 if __name__ == "__main__":  # pragma: no cover

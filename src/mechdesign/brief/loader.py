@@ -157,3 +157,20 @@ def load_brief(path: str | Path) -> BaseModel:
         problem = getattr(exc, "problem", None) or str(exc)
         raise BriefError(str(path), [BriefProblem(where, "invalid YAML", problem)]) from None
     return parse_brief(data, str(path))
+
+
+def brief_schema(machine: str | None = None) -> dict:
+    """JSON Schema of one machine's brief, or of any brief (one of them, by ``machine``)."""
+    from typing import Annotated, Union
+
+    from pydantic import Field, TypeAdapter
+
+    if machine is not None:
+        schema = BRIEF_MODELS[machine].model_json_schema(by_alias=True)
+    else:
+        models = tuple(BRIEF_MODELS.values())
+        any_brief = Annotated[Union[models], Field(discriminator="machine")]
+        schema = TypeAdapter(any_brief).json_schema(by_alias=True)
+    schema["$schema"] = "https://json-schema.org/draft/2020-12/schema"
+    schema.setdefault("title", "mechdesign design brief")
+    return schema
