@@ -277,85 +277,11 @@ class _ProfileGeometry:
 
 
 def actual_profile(c) -> np.ndarray:
-    """The actual profile [model mm] as drawn: the envelope of the roller circles.
-
-    ``c.grid.actual`` offsets every grid point of the pitch curve by r_r along its normal.
-    Where the pitch curve has a corner (a velocity jump of the follower, rigid impact) that
-    leaves a gap on the convex side, filled here with the roller circle's arc about the
-    corner, and a small loop on the concave side, cut here at the crossing of the two
-    branches. A knife edge or flat face is drawn as computed."""
-    g = c.grid
-    if g.roller_radius <= 0:
-        return g.actual * MM
-    rr = g.roller_radius * MM
-    fol = _follower(c)
-    prog = c.params.programme
-    pts = list(g.actual * MM)
-    delta = list(g.delta)
-    corners = []
-    for b in c.boundaries:
-        if b.impact != core.RIGID_IMPACT:
-            continue
-        db = float(b.delta) % (2 * np.pi)
-        left = core.design_cam(prog, fol, c.base_radius, g.rotation,
-                               delta=np.array([(db - 1e-9) % (2 * np.pi)]))
-        right = core.design_cam(prog, fol, c.base_radius, g.rotation, delta=np.array([db]))
-        P = complex(right.pitch[0]) * MM
-        a0 = np.angle(-left.normal[0])
-        turn = (np.angle(-right.normal[0]) - a0 + np.pi) % (2 * np.pi) - np.pi
-        m = max(3, int(np.ceil(abs(np.degrees(turn)) / 1.0)))
-        arc = P + rr * np.exp(1j * (a0 + turn * np.linspace(0.0, 1.0, m)))
-        corners.append(P)
-        j = int(np.searchsorted(np.asarray(delta), db, side="left"))
-        pts[j:j] = list(arc)
-        delta[j:j] = [db] * m
-    z = np.asarray(pts)
-    if not corners:
-        return z
-    from scipy.spatial import cKDTree
-
-    pitch = np.concatenate([g.pitch * MM, corners])
-    dist, _ = cKDTree(np.column_stack([pitch.real, pitch.imag])).query(np.column_stack([z.real, z.imag]))
-    bad = dist < rr - 2e-3
-    if not np.any(bad):
-        return z
-    shift = int(np.argmin(bad))                  # start the cycle at a good point
-    z, bad = np.roll(z, -shift), np.roll(bad, -shift)
-    out = []
-    i, N = 0, len(z)
-    while i < N:
-        if not bad[i]:
-            out.append(z[i])
-            i += 1
-            continue
-        j = i
-        while j + 1 < N and bad[j + 1]:
-            j += 1
-        k, l = i - 1, (j + 1) % N                    # last good before, first good after
-        x = _crossing(z[k], z[i], z[j], z[l])
-        if x is None:
-            x = _crossing(z[k - 1], z[k], z[l], z[(l + 1) % N], lines=True)
-        if x is not None:
-            out.append(x)
-        i = j + 1
-    return np.asarray(out)
-
-
-def _crossing(p0, p1, q0, q1, lines=False):
-    """The intersection of the segments (or lines) p0p1 and q0q1, or None."""
-    d1, d2 = p1 - p0, q1 - q0
-    den = d1.real * d2.imag - d1.imag * d2.real
-    if abs(den) < 1e-15:
-        return None
-    w = q0 - p0
-    t = (w.real * d2.imag - w.imag * d2.real) / den
-    u = (w.real * d1.imag - w.imag * d1.real) / den
-    if not lines and not (-1e-9 <= t <= 1 + 1e-9 and -1e-9 <= u <= 1 + 1e-9):
-        return None
-    x = p0 + t * d1
-    if lines and abs(x - p1) > 5 * (abs(d1) + abs(d2)) + 1e-6:
-        return None
-    return x
+    """The actual profile [model mm] as drawn: the cam stage's outline (for a roller, the
+    envelope of the roller circles, ``core.cam.roller_envelope``: arcs at the corners of the
+    pitch curve, loops cut); a knife edge or flat face as computed."""
+    outline = c.outline if c.outline is not None else c.grid.actual
+    return np.asarray(outline) * MM
 
 
 def _largest_gap(angles) -> tuple[float, float]:

@@ -33,8 +33,8 @@ _TXT = {
 def _units(k):
     """Display scale and unit strings of the output (mm or °)."""
     if k.output_unit == "m":
-        return 1e3, ("mm", "m/s", "m/s²"), 1.0
-    return DEG, ("°", "rad/s", "rad/s²"), 1.0
+        return 1e3, ("mm", "m/s", "m/s²")
+    return DEG, ("°", "rad/s", "rad/s²")
 
 
 def _labels(k):
@@ -59,7 +59,7 @@ def make_linkage_figures(model, k, f_, fly, fig_dir: Path, lang: str,
         paths[key] = f"{fig_dir.name}/{key}.png"
         return fig_dir / f"{key}.png"
 
-    scale, units, _ = _units(k)
+    scale, units = _units(k)
     point = k.output_unit == "m"
     names = ([t["s"], t["v"], t["a"]] if point else [t["swing"], t["w"], t["al"]])
     ylabels = [f"{nm} ({u})" for nm, u in zip(names, units)]
@@ -188,25 +188,31 @@ def _link_rows(model, lang: str) -> list[list[str]]:
     from ..core.mechanism import RPR, RRP, RRR, Crank, LinkPoint
 
     zh = lang == "zh"
+
+    def ids(*links):
+        # The machine's names of its links, where it gives them (e.g. 4 摇杆).
+        return ", ".join(f"{l_} {model.names[l_][0 if zh else 1]}" if l_ in model.names else l_
+                         for l_ in links)
+
     rows = []
     for g in model.mechanism.groups:
         if isinstance(g, Crank):
-            rows.append([("曲柄" if zh else "crank"), g.link, f"{g.pivot}{g.tip}",
+            rows.append([("曲柄" if zh else "crank"), ids(g.link), f"{g.pivot}{g.tip}",
                          f"{g.pivot}{g.tip} = {f(g.length * 1e3, 2)} mm"])
         elif isinstance(g, RRR):
-            rows.append([g.name, f"{g.link1}, {g.link2}", f"{g.b}{g.c}, {g.d}{g.c}",
+            rows.append([g.name, ids(g.link1, g.link2), f"{g.b}{g.c}, {g.d}{g.c}",
                          f"{g.b}{g.c} = {f(g.l1 * 1e3, 2)} mm, {g.d}{g.c} = {f(g.l2 * 1e3, 2)} mm"])
         elif isinstance(g, RRP):
-            rows.append([g.name, f"{g.rod}, {g.slider}", f"{g.b}{g.c}",
+            rows.append([g.name, ids(g.rod, g.slider), f"{g.b}{g.c}",
                          f"{g.b}{g.c} = {f(g.length * 1e3, 2)} mm; "
                          + ("导路过" if zh else "guide through ")
                          + f"({f(g.guide_point.real * 1e3, 1)}, {f(g.guide_point.imag * 1e3, 1)}) mm, "
                          + f"{f(g.guide_angle * DEG, 1)}°"])
         elif isinstance(g, RPR):
-            rows.append([g.name, f"{g.slider}, {g.bar}", f"{g.pivot}{g.a}",
+            rows.append([g.name, ids(g.slider, g.bar), f"{g.pivot}{g.a}",
                          ("偏距" if zh else "offset") + f" {f(g.offset * 1e3, 2)} mm"])
         elif isinstance(g, LinkPoint):
-            rows.append([("点" if zh else "point") + f" {g.name}", g.link, f"{g.origin}{g.name}",
+            rows.append([("点" if zh else "point") + f" {g.name}", ids(g.link), f"{g.origin}{g.name}",
                          f"{g.origin}{g.name} = {f(g.distance * 1e3, 2)} mm, "
                          f"{f(g.offset_angle * DEG, 1)}°"])
     return rows
@@ -217,7 +223,7 @@ def linkage_context(model, k, f_, fly, v, figures: dict, lang: str,
     """Strings and rows for ``linkage_section``; ``title`` is the chapter heading."""
     zh = lang == "zh"
     n = k.grid_size
-    scale, units, _ = _units(k)
+    scale, units = _units(k)
     labels = _labels(k)
     frame = model.mechanism.frame_points
     frame_rows = [[name, f(complex(z).real * 1e3, 2), f(complex(z).imag * 1e3, 2)]
@@ -330,7 +336,7 @@ def verification_rows(v, lang: str, k=None) -> list[list[str]]:
          e(v.power_balance_residual), "≤ 1e-9", verdict(v.power_balance_residual, 1e-9)],
     ]
     if k is not None:
-        scale, units, _ = _units(k)
+        scale, units = _units(k)
         rows.append(["位置搜索所得行程 / " + units[0] if zh else "stroke by position search / " + units[0],
                      f(v.stroke * scale, 6), f(k.stroke * scale, 6) + (" (速度零点)" if zh else " (velocity zeros)"),
                      verdict(abs(v.stroke - k.stroke) / max(k.stroke, 1e-12), 1e-6)])
