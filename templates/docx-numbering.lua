@@ -396,11 +396,12 @@ end
 ---------------------------------------------------------------------------
 -- title block
 
-local INFO_KEYS = { "student", "student_id", "class", "teacher", "date" }
+local INFO_KEYS = { "student", "student_id", "class", "teacher", "date", "group" }
 local DEFAULT_LABELS = {
-  zh = { student = "姓名", student_id = "学号", class = "班级", teacher = "指导教师", date = "日期" },
+  zh = { student = "姓名", student_id = "学号", class = "班级", teacher = "指导教师", date = "日期",
+         group = "分组" },
   en = { student = "Name", student_id = "Student No.", class = "Class", teacher = "Supervisor",
-         date = "Date" },
+         date = "Date", group = "Data group" },
 }
 
 local function title_block(meta)

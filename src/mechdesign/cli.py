@@ -6,10 +6,7 @@ cannot be assembled with the brief's data).
 """
 from __future__ import annotations
 
-import importlib
 import sys
-import time
-import traceback
 from enum import Enum
 from pathlib import Path
 from typing import Optional
@@ -22,7 +19,7 @@ app = typer.Typer(add_completion=False, no_args_is_help=True,
                   help="Mechanism course design (机械原理课程设计): from a YAML design brief "
                        "to a bilingual report (Markdown + PDF).")
 
-EXIT_OK, EXIT_FAILED, EXIT_INVALID = 0, 1, 2
+from .runner import EXIT_FAILED, EXIT_INVALID, EXIT_OK  # noqa: F401
 
 
 class Lang(str, Enum):
@@ -62,7 +59,11 @@ def run(
     brief: Path = typer.Argument(..., exists=True, dir_okay=False, readable=True,
                                  help="Design brief (YAML), e.g. designs/shaper.yaml."),
     out: Optional[Path] = typer.Option(None, "--out", "-o", file_okay=False,
-                                       help="Output folder (default: out/BRIEF-NAME/)."),
+                                       help="Output folder (default: out/BRIEF-NAME/, "
+                                            "out/BRIEF-NAME-gGROUP/ for a group)."),
+    group: Optional[str] = typer.Option(None, "--group", "-g",
+                                        help="Data group (分组) of the brief's `groups` table "
+                                             "(default: the table's default)."),
     lang: Optional[Lang] = typer.Option(None, "--lang", help="Report language "
                                         "(default: the brief's report.language, zh)."),
     formats: str = typer.Option("md,pdf", "--format", "-f",
@@ -74,90 +75,27 @@ def run(
     debug: bool = typer.Option(False, "--debug", help="Show Python tracebacks on errors."),
 ):
     """Run every stage for BRIEF and write report.md, report.pdf, results.json and figures."""
-    from .brief.loader import BriefError, load_brief
-    from .core.cam import CamDesignError
-    from .core.cycle import CycleError
-    from .core.drive import DriveDesignError
-    from .core.fourbar import SynthesisError
-    from .core.intermittent import IntermittentDesignError
-    from .core.mechanism import AssemblyError
-    from .machines import get_machine, stages_for
-    from .pipeline import run_stages
-    from .render.report import write_report
+    from .runner import run_one
 
     fmt = _parse_formats(formats)
-    try:
-        b = load_brief(brief)
-    except BriefError as exc:
-        _err(str(exc))
-        raise typer.Exit(EXIT_INVALID)
-    language = (lang.value if lang else b.report.language)
-    out_dir = out if out is not None else Path("out") / brief.stem
-    machine = get_machine(b.machine)
 
     def stage_progress(i: int, total: int, title: str) -> None:
         _err(f"[{i}/{total}] {title}")
 
-    start = time.perf_counter()
-    try:
-        params = machine.to_params(b)
-        results, _ = run_stages(stages_for(machine, params), {"params": params, "brief": b},
-                                stage_progress)
-    except (AssemblyError, CamDesignError, DriveDesignError, SynthesisError, CycleError,
-            IntermittentDesignError) as exc:
-        if debug:
-            traceback.print_exc()
-        what = next(text for kind, text in (
-            (AssemblyError, "the mechanism cannot be assembled"),
-            (CamDesignError, "the cam cannot be designed"),
-            (DriveDesignError, "the drive cannot be designed"),
-            (SynthesisError, "the linkage cannot be synthesised"),
-            (CycleError, "the motion cycle diagram is inconsistent"),
-            (IntermittentDesignError, "the intermittent drive cannot be designed"))
-            if isinstance(exc, kind))
-        _err(f"{brief}: {what} with the brief's data:\n  {exc}")
-        raise typer.Exit(EXIT_INVALID)
-    for value in results.values():
-        for finding in getattr(value, "warnings", None) or ():
-            _err(f"warning: {finding.text(language)}")
-    computed = time.perf_counter() - start
-    report = importlib.import_module(machine.report_module)
-
-    def render_progress(what: str) -> None:
-        _err(f"      rendering {what}")
-
-    from .render.sheets import make_sheets
-
-    animate = None
-    if "gif" in fmt:
-        if hasattr(report, "animate"):
-            def animate(path):
-                return report.animate(results, path, language)
-        else:
-            _err(f"warning: gif: the {machine.name} machine has no linkage to animate; no GIF written")
-
-    try:
-        written = write_report(
-            out_dir, machine=machine.name, lang=language, formats=fmt,
-            make_figures=lambda d: report.make_figures(results, d, language),
-            make_context=lambda figs: report.context(results, b, figs, language),
-            document=machine.document(results), meta=b.report, templates=templates,
-            progress=render_progress,
-            make_sheets=lambda folder, figs: make_sheets(results, b, folder, figs, language, fmt,
-                                                         render_progress),
-            animate=animate,
-            write_data=(None if not hasattr(report, "write_data")
-                        else lambda d: report.write_data(results, d)))
-    except Exception as exc:  # noqa: BLE001 - any rendering failure gets a clean message
-        if debug:
-            traceback.print_exc()
-        _err(f"error: the report could not be rendered: {exc}\n"
-             "(nothing was written; run with --debug for the traceback)")
-        raise typer.Exit(EXIT_FAILED)
-    total = time.perf_counter() - start
-    _err(f"done in {total:.1f} s (computation {computed:.2f} s)")
-    for path in written:
-        typer.echo(str(path))
+    outcome = run_one(brief, out_dir=out, lang=lang.value if lang else None, formats=fmt,
+                      group=group, templates=templates, stage_progress=stage_progress,
+                      render_progress=lambda what: _err(f"      rendering {what}"),
+                      on_warning=lambda text: _err(f"warning: {text}"))
+    if outcome.status != "ok":
+        if debug and outcome.traceback:
+            _err(outcome.traceback.rstrip())
+        _err(outcome.message)
+        if outcome.status == "failed":
+            _err("(nothing was written; run with --debug for the traceback)")
+        raise typer.Exit(outcome.exit_code)
+    _err(f"done in {outcome.seconds:.1f} s (computation {outcome.compute_seconds:.2f} s)")
+    for path in outcome.files:
+        typer.echo(path)
 
 
 #: The example brief each machine's starter (`mechdesign new`) is copied from.
@@ -174,24 +112,29 @@ def check(
 ):
     """Validate briefs without computing anything (fast: for editors and pre-commit).
 
-    Prints one line per brief; exit 0 when all are valid, 2 when any is not."""
-    from .brief.loader import BriefError, load_brief
+    A brief with a `groups` table is checked with every group applied. Prints one line
+    per brief; exit 0 when all are valid, 2 when any is not."""
+    from .brief.loader import BriefError, brief_groups, load_variant
     from .machines import get_machine
 
     bad = 0
     for path in briefs:
         try:
-            b = load_brief(path)
-            get_machine(b.machine).to_params(b)
+            labels = brief_groups(path)
+            for label in (None,) + labels:
+                variant = load_variant(path, label)
+                try:
+                    get_machine(variant.brief.machine).to_params(variant.brief)
+                except ValueError as exc:  # a conversion found the data inconsistent
+                    where = f" (group {label})" if label is not None else ""
+                    raise BriefError(f"{path}{where}", []) from exc
         except BriefError as exc:
             bad += 1
-            _err(str(exc))
+            cause = exc.__cause__
+            _err(f"{exc.source}: {cause}" if cause is not None and not exc.problems else str(exc))
             continue
-        except ValueError as exc:  # a conversion found the data inconsistent
-            bad += 1
-            _err(f"{path}: {exc}")
-            continue
-        typer.echo(f"ok: {path} ({b.machine})")
+        groups = f", groups {', '.join(labels)}" if labels else ""
+        typer.echo(f"ok: {path} ({variant.brief.machine}{groups})")
     if bad:
         _err(f"{bad} of {len(briefs)} brief{'s' if len(briefs) != 1 else ''} invalid")
         raise typer.Exit(EXIT_INVALID)

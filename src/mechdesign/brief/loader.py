@@ -19,6 +19,7 @@ from .crank_rocker import CrankRockerBrief
 from .die_cutter import DieCutterBrief
 from .drive import DriveBrief
 from .furnace import FurnaceBrief
+from .groups import GROUPS_KEY, GroupError, GroupTable, apply_group, choose, parse_groups
 from .linkage import LinkageBrief
 from .lockbeam import LockbeamBrief
 from .shaper import ShaperBrief
@@ -123,8 +124,11 @@ def _problem(model: type[BaseModel], err: dict) -> BriefProblem:
     return BriefProblem(path, _show(err.get("input")), f"{msg}{unit}")
 
 
-def parse_brief(data: Any, source: str = "brief") -> BaseModel:
-    """Validate already-loaded YAML data; raise BriefError listing every problem."""
+def parse_brief(data: Any, source: str = "brief", located: dict[str, str] | None = None) -> BaseModel:
+    """Validate already-loaded YAML data; raise BriefError listing every problem.
+
+    ``located`` maps field paths set by a group variant to where the group set them, so
+    a bad value from a group is reported there."""
     if not isinstance(data, dict):
         raise BriefError(source, [BriefProblem("(top level)", _show(type(data).__name__),
                                                "a brief is a YAML mapping of sections")])
@@ -137,11 +141,21 @@ def parse_brief(data: Any, source: str = "brief") -> BaseModel:
     try:
         return model.model_validate(data)
     except ValidationError as exc:
-        raise BriefError(source, [_problem(model, e) for e in exc.errors()]) from None
+        problems = [_problem(model, e) for e in exc.errors()]
+        if located:
+            problems = [_relocate(p, located) for p in problems]
+        raise BriefError(source, problems) from None
 
 
-def load_brief(path: str | Path) -> BaseModel:
-    """Read and validate a brief file; raise BriefError (never a bare traceback)."""
+def _relocate(problem: BriefProblem, located: dict[str, str]) -> BriefProblem:
+    for path in sorted(located, key=len, reverse=True):
+        if problem.path == path or problem.path.startswith(path + "."):
+            return BriefProblem(located[path] + problem.path[len(path):], problem.value, problem.allowed)
+    return problem
+
+
+def read_brief_data(path: str | Path) -> Any:
+    """The YAML data of a brief file (not yet validated); BriefError if unreadable."""
     path = Path(path)
     try:
         text = path.read_text(encoding="utf-8")
@@ -150,13 +164,59 @@ def load_brief(path: str | Path) -> BaseModel:
     except UnicodeDecodeError:
         raise BriefError(str(path), [BriefProblem("(file)", str(path), "must be UTF-8 text")]) from None
     try:
-        data = yaml.load(text, Loader=_UniqueKeyLoader)  # noqa: S506 - a SafeLoader subclass
+        return yaml.load(text, Loader=_UniqueKeyLoader)  # noqa: S506 - a SafeLoader subclass
     except yaml.YAMLError as exc:
         mark = getattr(exc, "problem_mark", None) or getattr(exc, "context_mark", None)
         where = f"line {mark.line + 1}, column {mark.column + 1}" if mark else "(file)"
         problem = getattr(exc, "problem", None) or str(exc)
         raise BriefError(str(path), [BriefProblem(where, "invalid YAML", problem)]) from None
-    return parse_brief(data, str(path))
+
+
+@dataclass(frozen=True)
+class Variant:
+    """A validated brief, the group it was built for (None: the brief as written) and
+    the labels of every group the brief carries."""
+
+    brief: BaseModel
+    group: str | None
+    groups: tuple[str, ...]
+
+
+def _groups_of(data: Any, source: str) -> tuple[Any, GroupTable | None]:
+    if not isinstance(data, dict) or GROUPS_KEY not in data:
+        return data, None
+    data = dict(data)
+    try:
+        return data, parse_groups(data.pop(GROUPS_KEY))
+    except GroupError as exc:
+        raise BriefError(source, [BriefProblem(exc.path, exc.value, exc.allowed)]) from None
+
+
+def brief_groups(path: str | Path) -> tuple[str, ...]:
+    """The group labels a brief carries (empty when it has no ``groups`` table)."""
+    _, table = _groups_of(read_brief_data(path), str(path))
+    return tuple(table.labels) if table is not None else ()
+
+
+def load_variant(path: str | Path, group: str | None = None) -> Variant:
+    """Read a brief, apply group ``group`` (default: the table's ``default``, else the
+    brief as written) and validate it; raise BriefError (never a bare traceback)."""
+    source = str(path)
+    data, table = _groups_of(read_brief_data(path), source)
+    located: dict[str, str] = {}
+    try:
+        label = choose(table, group)
+        if label is not None:
+            data, located = apply_group(data, table, label)
+    except GroupError as exc:
+        raise BriefError(source, [BriefProblem(exc.path, exc.value, exc.allowed)]) from None
+    brief = parse_brief(data, source, located)
+    return Variant(brief, label, tuple(table.labels) if table is not None else ())
+
+
+def load_brief(path: str | Path, group: str | None = None) -> BaseModel:
+    """Read and validate a brief file (group ``group`` applied, see :func:`load_variant`)."""
+    return load_variant(path, group).brief
 
 
 def brief_schema(machine: str | None = None) -> dict:
@@ -171,6 +231,28 @@ def brief_schema(machine: str | None = None) -> dict:
         models = tuple(BRIEF_MODELS.values())
         any_brief = Annotated[Union[models], Field(discriminator="machine")]
         schema = TypeAdapter(any_brief).json_schema(by_alias=True)
+    # Every brief may carry a groups table (brief/groups.py); it is read before validation.
+    defs = schema.setdefault("$defs", {})
+    defs["Groups"] = GROUPS_SCHEMA
+    for sub in [schema] + list(defs.values()):
+        props = sub.get("properties", {})
+        if "machine" in props and "report" in props:
+            props[GROUPS_KEY] = {"$ref": "#/$defs/Groups"}
     schema["$schema"] = "https://json-schema.org/draft/2020-12/schema"
     schema.setdefault("title", "mechdesign design brief")
     return schema
+
+
+#: JSON Schema of the ``groups`` section (brief/groups.py).
+GROUPS_SCHEMA = {
+    "title": "Groups", "type": "object", "additionalProperties": False,
+    "description": "Data groups (分组/方案): the brief's fields each group overrides; "
+                   "`mechdesign run BRIEF --group LABEL`, `mechdesign batch --groups all`",
+    "properties": {
+        "default": {"type": ["integer", "string"],
+                    "description": "Group used when --group is not given"},
+        "variants": {"type": "object", "minProperties": 1,
+                     "description": "Group label → overridden fields (dotted paths such as "
+                                    "pusher.stroke_H_mm, or nested sections)",
+                     "additionalProperties": {"type": ["object", "null"]}}},
+    "required": ["variants"]}

@@ -31,6 +31,7 @@ DEFAULT_LABELS = {
         "class": "班级",
         "teacher": "指导教师",
         "date": "日期",
+        "group": "分组",
         "contents": "目录",
     },
     "en": {
@@ -39,6 +40,7 @@ DEFAULT_LABELS = {
         "class": "Class",
         "teacher": "Supervisor",
         "date": "Date",
+        "group": "Data group",
         "contents": "Contents",
     },
 }

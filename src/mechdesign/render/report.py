@@ -36,11 +36,20 @@ def render_markdown(template_name: str, ctx: dict, templates: Path) -> str:
     return env.get_template(template_name).render(**ctx)
 
 
-def pdf_metadata(meta, lang: str) -> dict:
+def group_banner(group: str, lang: str) -> str:
+    """The line atop a report computed for one data group of its brief."""
+    if lang == "zh":
+        return f"**分组（方案）：{group}**。本报告按任务书 `groups` 表中该组的数据计算。\n\n"
+    return f"**Data group: {group}.** This report uses that group's data from the brief's `groups` table.\n\n"
+
+
+def pdf_metadata(meta, lang: str, group: str | None = None) -> dict:
     """Title-page metadata for templates/report.typ from the brief's report section."""
     data = {"title": meta.title, "subtitle": meta.subtitle, "student": meta.student,
             "student_id": meta.student_id, "class": meta.class_name, "teacher": meta.teacher,
             "date": meta.date, "lang": lang}
+    if group is not None:
+        data["group"] = group
     if lang == "en":
         # Latin text in a Latin face (typst ships Libertinus Serif); CJK names and titles
         # fall back to the Chinese serif, whose punctuation is full-width.
@@ -56,12 +65,14 @@ def write_report(out_dir: Path, *, machine: str, lang: str, formats: tuple[str, 
                  progress: Callable[[str], None] | None = None,
                  write_data: Callable[[Path], list] | None = None,
                  make_sheets: Callable[[Path, Path], list] | None = None,
-                 animate: Callable[[Path], Path] | None = None) -> list[Path]:
+                 animate: Callable[[Path], Path] | None = None,
+                 group: str | None = None) -> list[Path]:
     """Render into a staging folder, then move the finished files into ``out_dir``.
 
     ``write_data`` may add machine-specific data files (e.g. CSV coordinates) to the folder;
     ``make_sheets(folder, fig_dir)`` writes the drawing sheets and returns their
-    :class:`~.sheets.SheetFiles`; ``animate(path)`` writes the GIF (format gif)."""
+    :class:`~.sheets.SheetFiles`; ``animate(path)`` writes the GIF (format gif);
+    ``group`` (a data group of the brief) is stated on the title page and atop the report."""
     say = progress or (lambda _msg: None)
     tdir = template_dir(templates)
     out_dir = Path(out_dir)
@@ -77,6 +88,8 @@ def write_report(out_dir: Path, *, machine: str, lang: str, formats: tuple[str, 
         ctx["sheets"] = [_sheet_row(sh, lang) for sh in sheets]
         say("Markdown")
         md = render_markdown(f"{machine}.{lang}.md.j2", ctx, tdir)
+        if group is not None:
+            md = group_banner(group, lang) + md
         (staging / "report.md").write_text(md, encoding="utf-8")
         (staging / "results.json").write_text(dumps(document), encoding="utf-8")
         if write_data is not None:
@@ -87,13 +100,13 @@ def write_report(out_dir: Path, *, machine: str, lang: str, formats: tuple[str, 
             from .pdf import render_pdf
 
             render_pdf(staging / "report.md", staging / "report.pdf",
-                       pdf_metadata(meta, lang), tdir / "report.typ")
+                       pdf_metadata(meta, lang, group), tdir / "report.typ")
         if "docx" in formats:
             say("Word (pandoc → docx)")
             from .docx import render_docx
 
             render_docx(staging / "report.md", staging / "report.docx",
-                        pdf_metadata(meta, lang), tdir)
+                        pdf_metadata(meta, lang, group), tdir)
         if "gif" in formats and animate is not None:
             say("animation (GIF)")
             animate(staging / "animation.gif")

@@ -1,0 +1,177 @@
+"""Run one brief (one group) from file to report, without printing or exiting.
+
+Used by ``mechdesign run`` (which prints as it goes) and ``mechdesign batch`` (which runs
+many in worker processes and collects the outcomes into an index).
+"""
+from __future__ import annotations
+
+import importlib
+import time
+import traceback
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Callable
+
+#: Exit codes shared by the commands.
+EXIT_OK, EXIT_FAILED, EXIT_INVALID = 0, 1, 2
+
+
+@dataclass(frozen=True)
+class Outcome:
+    """What became of one run: ``status`` is ok, invalid (bad brief or infeasible design:
+    exit 2) or failed (rendering or an unexpected error: exit 1)."""
+
+    brief: str
+    group: str | None
+    status: str
+    exit_code: int
+    message: str = ""
+    machine: str = ""
+    out_dir: str = ""
+    files: tuple[str, ...] = ()
+    warnings: tuple[str, ...] = ()
+    summary: tuple[tuple[str, str], ...] = ()
+    seconds: float = 0.0
+    compute_seconds: float = 0.0
+    traceback: str = ""
+    groups: tuple[str, ...] = field(default=())
+
+
+def design_error_kinds() -> dict[type, tuple[str, str]]:
+    """Design errors (infeasible with the brief's data) → what cannot be done (zh, en)."""
+    from .core.cam import CamDesignError
+    from .core.cycle import CycleError
+    from .core.drive import DriveDesignError
+    from .core.fourbar import SynthesisError
+    from .core.intermittent import IntermittentDesignError
+    from .core.mechanism import AssemblyError
+
+    return {
+        AssemblyError: ("机构无法装配", "the mechanism cannot be assembled"),
+        CamDesignError: ("凸轮无法设计", "the cam cannot be designed"),
+        DriveDesignError: ("传动装置无法设计", "the drive cannot be designed"),
+        SynthesisError: ("连杆机构无法综合", "the linkage cannot be synthesised"),
+        CycleError: ("运动循环图不协调", "the motion cycle diagram is inconsistent"),
+        IntermittentDesignError: ("间歇机构无法设计", "the intermittent drive cannot be designed"),
+    }
+
+
+def describe_design_error(exc: Exception, lang: str) -> str | None:
+    """A user-language line for a design error, or None if ``exc`` is not one."""
+    for kind, (zh, en) in design_error_kinds().items():
+        if isinstance(exc, kind):
+            text = getattr(exc, "text", None)
+            detail = text(lang) if callable(text) else str(exc)
+            head = f"按任务书数据{zh}" if lang == "zh" else f"{en} with the brief's data"
+            return f"{head}:\n  {detail}"
+    return None
+
+
+def run_one(brief: Path, *, out_dir: Path | None = None, lang: str | None = None,
+            formats: tuple[str, ...] = ("md", "pdf"), group: str | None = None,
+            templates: Path | None = None,
+            stage_progress: Callable[[int, int, str], None] | None = None,
+            render_progress: Callable[[str], None] | None = None,
+            on_warning: Callable[[str], None] | None = None) -> Outcome:
+    """Validate, compute and render ``brief`` (group ``group``) into ``out_dir``.
+
+    Never raises for a bad brief, an infeasible design or a rendering failure: the
+    Outcome says what happened. The report is written to a staging folder and moved
+    into place only when complete, so a failure leaves an earlier report as it was."""
+    from .brief.loader import BriefError, load_variant
+    from .machines import get_machine, stages_for
+    from .pipeline import run_stages
+    from .render.report import write_report
+
+    brief = Path(brief)
+    start = time.perf_counter()
+    base = {"brief": str(brief), "group": group}
+    try:
+        variant = load_variant(brief, group)
+    except BriefError as exc:
+        return Outcome(**base, status="invalid", exit_code=EXIT_INVALID, message=str(exc))
+    b, label = variant.brief, variant.group
+    base["group"] = label
+    language = lang or b.report.language
+    if out_dir is None:
+        out_dir = Path("out") / (brief.stem if label is None else f"{brief.stem}-g{safe_label(label)}")
+    machine = get_machine(b.machine)
+    common = dict(base, machine=machine.name, out_dir=str(out_dir), groups=variant.groups)
+    try:
+        params = machine.to_params(b)
+    except ValueError as exc:  # a conversion found the data inconsistent
+        return Outcome(**common, status="invalid", exit_code=EXIT_INVALID, message=f"{brief}: {exc}")
+    try:
+        results, _ = run_stages(stages_for(machine, params), {"params": params, "brief": b},
+                                stage_progress)
+    except Exception as exc:  # noqa: BLE001 - classified below; never a bare traceback
+        message = describe_design_error(exc, language)
+        if message is not None:
+            return Outcome(**common, status="invalid", exit_code=EXIT_INVALID,
+                           message=f"{brief}: {message}")
+        return Outcome(**common, status="failed", exit_code=EXIT_FAILED,
+                       message=f"{brief}: internal error while computing: "
+                               f"{type(exc).__name__}: {exc}",
+                       traceback=traceback.format_exc())
+    warnings = []
+    for value in results.values():
+        for finding in getattr(value, "warnings", None) or ():
+            warnings.append(finding.text(language))
+            if on_warning is not None:
+                on_warning(finding.text(language))
+    computed = time.perf_counter() - start
+    report = importlib.import_module(machine.report_module)
+    from .render.sheets import make_sheets
+
+    document = _with_group(machine.document(results), label)
+
+    animate = None
+    if "gif" in formats:
+        if hasattr(report, "animate"):
+            def animate(path):
+                return report.animate(results, path, language)
+        elif on_warning is not None:
+            on_warning(f"gif: the {machine.name} machine has no linkage to animate; no GIF written")
+    try:
+        written = write_report(
+            Path(out_dir), machine=machine.name, lang=language, formats=formats,
+            make_figures=lambda d: report.make_figures(results, d, language),
+            make_context=lambda figs: report.context(results, b, figs, language),
+            document=document, meta=b.report,
+            templates=templates, progress=render_progress, group=label,
+            make_sheets=lambda folder, figs: make_sheets(results, b, folder, figs, language,
+                                                         formats, render_progress),
+            animate=animate,
+            write_data=(None if not hasattr(report, "write_data")
+                        else lambda d: report.write_data(results, d)))
+    except Exception as exc:  # noqa: BLE001 - any rendering failure gets a clean message
+        return Outcome(**common, status="failed", exit_code=EXIT_FAILED,
+                       message=f"{brief}: the report could not be rendered: {exc}",
+                       warnings=tuple(warnings), traceback=traceback.format_exc())
+    from .machines.summary import summary_rows
+
+    return Outcome(**common, status="ok", exit_code=EXIT_OK, files=tuple(str(p) for p in written),
+                   warnings=tuple(warnings),
+                   summary=tuple(summary_rows(machine.name, document, language)),
+                   seconds=time.perf_counter() - start, compute_seconds=computed)
+
+
+def _with_group(document: dict, label: str | None) -> dict:
+    if label is None:
+        return document
+    out = dict(document)
+    out["data_group"] = label
+    return out
+
+
+def safe_label(label: str) -> str:
+    """A group label as a file-name part: letters, digits, - and _ kept, anything else
+    (path separators, dots, CJK, spaces) replaced, so a label never leaves the folder."""
+    import re
+
+    text = re.sub(r"[^A-Za-z0-9_-]+", "_", label).strip("_")
+    if text == label:
+        return text
+    import hashlib
+
+    return f"{text[:20] or 'group'}-{hashlib.sha1(label.encode()).hexdigest()[:6]}"
