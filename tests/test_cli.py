@@ -108,7 +108,7 @@ def test_bad_brief_lists_every_problem_with_exit_code_2(tmp_path):
 def test_unassemblable_linkage_names_the_group_and_angle(tmp_path):
     # Half the sagitta of B's arc is ~5.7 mm; a 1.1 mm rod cannot reach the ram guide.
     path = _write_brief(tmp_path, lambda d: d["linkage"].update(rod_ratio_BF_O3B=0.001))
-    result = runner.invoke(app, ["run", str(path), "--out", str(tmp_path / "out")])
+    result = runner.invoke(app, ["run", str(path), "--out", str(tmp_path / "out"), "--lang", "en"])
     assert result.exit_code == 2
     assert "ram (RRP)" in result.output and "crank angle" in result.output
     assert "Traceback" not in result.output

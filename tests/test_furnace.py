@@ -338,7 +338,7 @@ def test_a_worm_outside_its_chart_is_a_design_error_not_a_traceback(tmp_path):
     # 3 strokes/min asks for a 463:1 drive; the worm's d1/a leaves the Z_ρ chart (0.2–0.55).
     path = tmp_path / "slow.yaml"
     path.write_text(yaml.safe_dump(_data(strokes_per_min=3), allow_unicode=True), encoding="utf-8")
-    result = runner.invoke(app, ["run", str(path), "-o", str(tmp_path / "out")])
+    result = runner.invoke(app, ["run", str(path), "-o", str(tmp_path / "out"), "--lang", "en"])
     assert result.exit_code == 2, result.output
     assert "the drive cannot be designed" in result.output and "d1/a" in result.output
     assert "Traceback" not in result.output and not (tmp_path / "out" / "report.md").exists()

@@ -7,6 +7,7 @@ cannot be assembled with the brief's data).
 from __future__ import annotations
 
 import sys
+import time
 from enum import Enum
 from pathlib import Path
 from typing import Optional
@@ -96,6 +97,68 @@ def run(
     _err(f"done in {outcome.seconds:.1f} s (computation {outcome.compute_seconds:.2f} s)")
     for path in outcome.files:
         typer.echo(path)
+
+
+@app.command()
+def batch(
+    paths: list[Path] = typer.Argument(..., help="Briefs and folders of briefs (*.yaml, searched "
+                                       "recursively), e.g. designs/ or class/*.yaml."),
+    groups: str = typer.Option("default", "--groups", help="Which data groups to run: default "
+                               "(each brief's default), all, or labels such as 1,3,III."),
+    jobs: Optional[int] = typer.Option(None, "--jobs", "-j", min=1,
+                                       help="Runs at once, in worker processes (default: the "
+                                            "number of CPUs)."),
+    shard_text: Optional[str] = typer.Option(None, "--shard", metavar="i/n",
+                                             help="Run only shard i of n (deterministic), to "
+                                                  "split a class across CI machines."),
+    out: Path = typer.Option(Path("out"), "--out", "-o", file_okay=False,
+                             help="Output folder: one sub-folder per run, plus index.md and "
+                                  "index.json."),
+    lang: Optional[Lang] = typer.Option(None, "--lang", help="Report language (default: each "
+                                        "brief's report.language)."),
+    formats: str = typer.Option("md,pdf", "--format", "-f",
+                                help="Comma-separated output formats: md, pdf, docx, dxf, gif."),
+    templates: Optional[Path] = typer.Option(None, "--templates", exists=True, file_okay=False,
+                                             help="Folder of report templates to use instead "
+                                                  "of the shipped ones."),
+):
+    """Run many briefs (and their groups) in parallel and write an index of the reports.
+
+    Continues past failing briefs; exit 0 when every run succeeded, 2 when a brief was
+    invalid (or its design infeasible), 1 when a report failed otherwise."""
+    from .batch import (BatchError, Progress, collect_briefs, default_jobs, exit_code,
+                        index_document, parse_shard, plan_jobs, run_batch, shard, write_index)
+
+    fmt = _parse_formats(formats)
+    try:
+        which = parse_shard(shard_text)
+        planned = plan_jobs(collect_briefs(paths), groups)
+    except BatchError as exc:
+        _err(f"error: {exc}")
+        raise typer.Exit(EXIT_INVALID)
+    selected = shard(planned, which)
+    n_jobs = jobs or default_jobs()
+    where = f" (shard {which[0]}/{which[1]} of {len(planned)})" if which else ""
+    _err(f"{len(selected)} run{'s' if len(selected) != 1 else ''}{where}, "
+         f"{min(n_jobs, max(len(selected), 1))} at a time → {out}/")
+    progress = Progress(len(selected))
+    start = time.perf_counter()
+    try:
+        results = run_batch(selected, out, jobs_n=n_jobs, lang=lang.value if lang else None,
+                            formats=fmt, templates=templates, on_result=progress.update)
+    except KeyboardInterrupt:
+        _err("\ninterrupted: finished reports are in place; unfinished ones were not written")
+        raise typer.Exit(130)
+    doc = index_document(selected, results, out, which)
+    stem = "index" if which is None else f"index.shard-{which[0]}-of-{which[1]}"
+    index_lang = lang.value if lang else "zh"
+    written = write_index(doc, out, index_lang, stem)
+    t = doc["totals"]
+    _err(f"{t['ok']} ok, {t['invalid']} invalid, {t['failed']} failed in "
+         f"{time.perf_counter() - start:.1f} s")
+    for path in written:
+        typer.echo(str(path))
+    raise typer.Exit(exit_code(results))
 
 
 #: The example brief each machine's starter (`mechdesign new`) is copied from.

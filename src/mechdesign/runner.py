@@ -57,14 +57,23 @@ def design_error_kinds() -> dict[type, tuple[str, str]]:
 
 
 def describe_design_error(exc: Exception, lang: str) -> str | None:
-    """A user-language line for a design error, or None if ``exc`` is not one."""
-    for kind, (zh, en) in design_error_kinds().items():
+    """A user-language line for a design error, or None if ``exc`` is not one: what cannot
+    be done, then the error's own text in ``lang`` (the problem by name, its numbers and
+    what to change; see :class:`mechdesign.core.errors.DesignError`)."""
+    from .core.errors import DesignError
+
+    kinds = design_error_kinds()
+    for kind, (zh, en) in kinds.items():
         if isinstance(exc, kind):
-            text = getattr(exc, "text", None)
-            detail = text(lang) if callable(text) else str(exc)
-            head = f"按任务书数据{zh}" if lang == "zh" else f"{en} with the brief's data"
-            return f"{head}:\n  {detail}"
-    return None
+            break
+    else:
+        if not isinstance(exc, DesignError):
+            return None
+        zh, en = "设计不可行", "the design is infeasible"
+    text = getattr(exc, "text", None)
+    detail = text(lang) if callable(text) else str(exc)
+    head = f"按任务书数据{zh}" if lang == "zh" else f"{en} with the brief's data"
+    return f"{head}{'：' if lang == 'zh' else ':'}\n  {detail}"
 
 
 def run_one(brief: Path, *, out_dir: Path | None = None, lang: str | None = None,
@@ -94,7 +103,8 @@ def run_one(brief: Path, *, out_dir: Path | None = None, lang: str | None = None
     base["group"] = label
     language = lang or b.report.language
     if out_dir is None:
-        out_dir = Path("out") / (brief.stem if label is None else f"{brief.stem}-g{safe_label(label)}")
+        # a group asked for by name gets its own folder; the default group keeps the brief's
+        out_dir = Path("out") / (brief.stem if group is None else f"{brief.stem}-g{safe_label(label)}")
     machine = get_machine(b.machine)
     common = dict(base, machine=machine.name, out_dir=str(out_dir), groups=variant.groups)
     try:

@@ -33,21 +33,39 @@ BRIEF_MODELS: dict[str, type[BaseModel]] = {
 
 @dataclass(frozen=True)
 class BriefProblem:
+    """One problem: the field ``path``, the ``value`` found and what is ``allowed`` there
+    (English; ``allowed_zh`` the same in Chinese, when known)."""
+
     path: str
     value: str
     allowed: str
+    allowed_zh: str | None = None
 
     def __str__(self) -> str:
         return f"{self.path}: {self.value} — {self.allowed}"
 
+    def text(self, lang: str) -> str:
+        """The line in ``lang`` ("zh" or "en"); the value "missing" is said in Chinese too."""
+        if lang != "zh":
+            return str(self)
+        value = "缺少" if self.value == "missing" else self.value
+        return f"{self.path}：{value} — {self.allowed_zh or self.allowed}"
+
 
 class BriefError(ValueError):
-    """One or more problems in a brief; ``str()`` lists them, one per line."""
+    """One or more problems in a brief; ``str()`` lists them in English, one per line,
+    :meth:`text` in the report's language."""
 
     def __init__(self, source: str, problems: list[BriefProblem]):
         self.source, self.problems = source, problems
         head = f"{source}: {len(problems)} problem{'s' if len(problems) != 1 else ''} in the brief"
         super().__init__("\n".join([head] + [f"  {p}" for p in problems]))
+
+    def text(self, lang: str) -> str:
+        if lang != "zh":
+            return str(self)
+        head = f"{self.source}：任务书中有 {len(self.problems)} 处问题"
+        return "\n".join([head] + [f"  {p.text('zh')}" for p in self.problems])
 
 
 class _UniqueKeyLoader(yaml.SafeLoader):
@@ -109,19 +127,66 @@ def _field_info(model: type[BaseModel], loc: tuple) -> tuple[type[BaseModel] | N
     return parent, info
 
 
+#: pydantic error type → Chinese text of what is allowed ({…} from the error's context).
+_ZH = {
+    "greater_than": "须大于 {gt}", "greater_than_equal": "须不小于 {ge}",
+    "less_than": "须小于 {lt}", "less_than_equal": "须不大于 {le}",
+    "multiple_of": "须为 {multiple_of} 的整数倍",
+    "int_type": "须为整数", "int_parsing": "须为整数", "int_from_float": "须为整数（不能带小数）",
+    "float_type": "须为数值", "float_parsing": "须为数值",
+    "finite_number": "须为有限数值（不能是 inf 或 nan）",
+    "string_type": "须为文字（字符串）", "bool_type": "须为 true 或 false",
+    "bool_parsing": "须为 true 或 false",
+    "literal_error": "须为以下之一：{expected}",
+    "too_short": "至少需 {min_length} 项（现有 {actual_length} 项）",
+    "too_long": "至多 {max_length} 项（现有 {actual_length} 项）",
+    "string_too_short": "至少 {min_length} 个字符", "string_too_long": "至多 {max_length} 个字符",
+    "string_pattern_mismatch": "格式不符（须匹配 {pattern}）",
+    "dict_type": "须为映射（键: 值）", "model_type": "须为映射（键: 值）的一节",
+    "model_attributes_type": "须为映射（键: 值）的一节",
+    "list_type": "须为列表", "tuple_type": "须为列表",
+    "date_type": "须为日期（YYYY-MM-DD）", "date_parsing": "须为日期（YYYY-MM-DD）",
+    "date_from_datetime_parsing": "须为日期（YYYY-MM-DD）",
+    "union_tag_invalid": "类型 {tag} 不存在；可用：{expected_tags}",
+    "union_tag_not_found": "缺少区分字段 {discriminator}",
+    "enum": "须为以下之一：{expected}",
+}
+
+
+def _zh_allowed(kind: str, err: dict, msg: str) -> str | None:
+    """Chinese text for pydantic error ``kind`` (None when unknown)."""
+    if kind in ("value_error", "assertion_error"):
+        from ..core.errors import chinese_of
+
+        ctx = err.get("ctx") or {}
+        return chinese_of(msg, ctx.get("error") if isinstance(ctx.get("error"), BaseException)
+                          else None)
+    template = _ZH.get(kind)
+    if template is None:
+        return None
+    try:
+        return template.format(**{k: v for k, v in (err.get("ctx") or {}).items()})
+    except (KeyError, IndexError, ValueError):
+        return None
+
+
 def _problem(model: type[BaseModel], err: dict) -> BriefProblem:
     loc = tuple(err["loc"])
     path = ".".join(str(p) for p in loc) or "(top level)"
     kind = err["type"]
     parent, info = _field_info(model, loc)
     unit = f" ({info.description})" if info is not None and info.description else ""
+    unit_zh = f"（{info.description}）" if unit else ""
     if kind == "extra_forbidden":
         allowed = ", ".join((f.alias or k) for k, f in parent.model_fields.items()) if parent else ""
-        return BriefProblem(path, _show(err.get("input")), f"unknown field; allowed here: {allowed}")
+        return BriefProblem(path, _show(err.get("input")), f"unknown field; allowed here: {allowed}",
+                            f"未知字段；此处可用的字段：{allowed}")
     if kind == "missing":
-        return BriefProblem(path, "missing", f"required{unit}")
+        return BriefProblem(path, "missing", f"required{unit}", f"必填{unit_zh}")
     msg = err["msg"].removeprefix("Value error, ")
-    return BriefProblem(path, _show(err.get("input")), f"{msg}{unit}")
+    zh = _zh_allowed(kind, err, msg)
+    return BriefProblem(path, _show(err.get("input")), f"{msg}{unit}",
+                        None if zh is None else f"{zh}{unit_zh}")
 
 
 def parse_brief(data: Any, source: str = "brief", located: dict[str, str] | None = None) -> BaseModel:
@@ -132,6 +197,8 @@ def parse_brief(data: Any, source: str = "brief", located: dict[str, str] | None
     if not isinstance(data, dict):
         raise BriefError(source, [BriefProblem("(top level)", _show(type(data).__name__),
                                                "a brief is a YAML mapping of sections")])
+    if GROUPS_KEY in data:  # the brief as written; load_variant applies a group
+        data, _ = _groups_of(data, source)
     machine = data.get("machine")
     model = BRIEF_MODELS.get(machine) if isinstance(machine, str) else None
     if model is None:

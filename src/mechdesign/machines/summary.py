@@ -61,9 +61,12 @@ _ROWS: dict[str, list[tuple[str, str, str, str, float]]] = {
 def _get(document: Any, path: str) -> Any:
     node = document
     for part in path.split("."):
-        if not isinstance(node, dict) or part not in node:
+        if isinstance(node, dict):
+            node = node.get(part)
+        else:
+            node = getattr(node, part, None)
+        if node is None:
             return None
-        node = node[part]
     return node
 
 
@@ -72,8 +75,11 @@ def _show(value: Any, factor: float) -> str | None:
         return None
     if isinstance(value, str):
         return value
-    if isinstance(value, (int, float)) and math.isfinite(value):
-        x = value * factor
+    try:
+        x = float(value) * factor
+    except (TypeError, ValueError):
+        return None
+    if math.isfinite(x):
         return f"{x:.4g}" if abs(x) < 1e4 else f"{x:.0f}"
     return None
 

@@ -1,0 +1,322 @@
+"""Many briefs (and their data groups) at once, in parallel worker processes.
+
+``mechdesign batch designs/ --groups all --jobs 4`` plans one run per brief and group,
+optionally keeps one deterministic shard of them (``--shard 2/5`` for a CI matrix),
+runs them in a process pool (each run exactly as ``mechdesign run`` would, into its
+own folder), shows progress, and writes an index (``index.md`` and ``index.json``) with
+every run's status, key results and links to its report. A failing brief does not stop
+the others.
+"""
+from __future__ import annotations
+
+import json
+import os
+import sys
+import time
+import warnings
+from collections import Counter
+from concurrent.futures import ProcessPoolExecutor, as_completed
+from concurrent.futures.process import BrokenProcessPool
+from dataclasses import asdict, dataclass, replace
+from pathlib import Path
+from typing import Callable, Iterable
+
+from .runner import EXIT_FAILED, EXIT_INVALID, EXIT_OK, Outcome, run_one, safe_label
+
+BRIEF_SUFFIXES = (".yaml", ".yml")
+
+
+@dataclass(frozen=True)
+class Job:
+    """One run of the batch: a brief, a group of it (None: its default / as written) and
+    the folder name of its report inside the batch's output folder."""
+
+    brief: str
+    group: str | None
+    run_id: str
+
+
+class BatchError(ValueError):
+    """A bad batch command line (no briefs, a bad --shard or --groups)."""
+
+
+def collect_briefs(paths: Iterable[str | Path]) -> list[Path]:
+    """Brief files named or found (recursively, sorted) in the folders named; each once."""
+    found: list[Path] = []
+    for raw in paths:
+        path = Path(raw)
+        if path.is_dir():
+            found += sorted(p for p in path.rglob("*") if p.suffix in BRIEF_SUFFIXES and p.is_file()
+                            and not any(part.startswith(".") for part in p.relative_to(path).parts))
+        elif path.exists():
+            found.append(path)
+        else:
+            raise BatchError(f"{raw}: no such file or folder")
+    unique = list(dict.fromkeys(found))
+    if not unique:
+        raise BatchError(f"no briefs (*.yaml) in {', '.join(map(str, paths))}")
+    return unique
+
+
+def parse_shard(text: str | None) -> tuple[int, int] | None:
+    """``"i/n"`` (1 ≤ i ≤ n) → (i, n)."""
+    if text is None:
+        return None
+    try:
+        i, n = (int(x) for x in text.split("/"))
+    except ValueError:
+        raise BatchError(f"--shard {text!r}: write i/n, e.g. 2/5 (the second of five shards)") from None
+    if not (n >= 1 and 1 <= i <= n):
+        raise BatchError(f"--shard {text!r}: i must be between 1 and n, and n at least 1")
+    return i, n
+
+
+def plan_jobs(briefs: list[Path], groups: str = "default") -> list[Job]:
+    """One job per brief, or per group (``groups``: default, all, or labels "1,3,III").
+
+    A brief without a groups table runs once as written; with ``groups`` a list of labels,
+    a brief that has none of them runs not at all. A brief whose groups table cannot be
+    read runs once, so its run reports the problem."""
+    from .brief.loader import BriefError, brief_groups
+
+    wanted = None if groups in ("default", "all") else [g.strip() for g in groups.split(",") if g.strip()]
+    if wanted is not None and not wanted:
+        raise BatchError(f"--groups {groups!r}: all, default, or labels such as 1,3,III")
+    jobs: list[tuple[Path, str | None]] = []
+    for brief in briefs:
+        try:
+            labels = brief_groups(brief)
+        except BriefError:
+            labels = ()
+        if groups == "all" and labels:
+            jobs += [(brief, label) for label in labels]
+        elif wanted is not None:
+            jobs += [(brief, label) for label in labels if label in wanted]
+            if not labels:
+                jobs.append((brief, None))
+        else:
+            jobs.append((brief, None))
+    return _name_jobs(jobs)
+
+
+def _name_jobs(jobs: list[tuple[Path, str | None]]) -> list[Job]:
+    """Folder names: the brief's stem (+ -gLABEL); briefs of the same name in different
+    folders are told apart by their parent folders."""
+    def name(brief: Path, group: str | None, depth: int) -> str:
+        parts = [p for p in brief.parent.parts[len(brief.parent.parts) - depth:] if p not in ("", ".", "/")]
+        stem = "_".join(safe_label(p) for p in parts + [brief.stem]) if depth else safe_label(brief.stem)
+        return stem if group is None else f"{stem}-g{safe_label(group)}"
+
+    depth = {job: 0 for job in jobs}
+    for _ in range(8):
+        names = Counter(name(b, g, depth[(b, g)]) for b, g in jobs)
+        clashes = [(b, g) for b, g in jobs if names[name(b, g, depth[(b, g)])] > 1]
+        if not clashes:
+            break
+        for job in clashes:
+            depth[job] += 1
+    out, used = [], Counter()
+    for b, g in jobs:
+        run_id = name(b, g, depth[(b, g)])
+        used[run_id] += 1
+        out.append(Job(str(b), g, run_id if used[run_id] == 1 else f"{run_id}-{used[run_id]}"))
+    return out
+
+
+def shard(jobs: list[Job], which: tuple[int, int] | None) -> list[Job]:
+    """Shard i of n: every n-th job starting at the i-th (deterministic, balanced)."""
+    if which is None:
+        return jobs
+    i, n = which
+    return jobs[i - 1::n]
+
+
+def _work(job: Job, out_root: str, lang: str | None, formats: tuple[str, ...],
+          templates: str | None) -> dict:
+    """Worker: one run, never raising; warnings (e.g. typst's) go into the outcome."""
+    start = time.perf_counter()
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        try:
+            outcome = run_one(Path(job.brief), out_dir=Path(out_root) / job.run_id, lang=lang,
+                              formats=formats, group=job.group,
+                              templates=Path(templates) if templates else None)
+        except Exception as exc:  # noqa: BLE001 - an internal error must not stop the batch
+            outcome = Outcome(brief=job.brief, group=job.group, status="failed",
+                              exit_code=EXIT_FAILED,
+                              message=f"{job.brief}: internal error: {type(exc).__name__}: {exc}")
+    extra = tuple(str(w.message) for w in caught if "typst" in str(w.message))
+    outcome = replace(outcome, warnings=outcome.warnings + extra,
+                      seconds=outcome.seconds or time.perf_counter() - start)
+    return asdict(outcome)
+
+
+class Progress:
+    """A progress bar on a terminal; one plain line per finished run otherwise (CI logs)."""
+
+    def __init__(self, total: int, stream=None, tty: bool | None = None):
+        self.total, self.done, self.failed = total, 0, 0
+        self.stream = stream or sys.stderr
+        self.tty = self.stream.isatty() if tty is None else tty
+        self.start = time.perf_counter()
+
+    def update(self, job: Job, result: dict) -> None:
+        self.done += 1
+        ok = result["status"] == "ok"
+        self.failed += not ok
+        secs = result.get("seconds") or 0.0
+        line = f"{'ok    ' if ok else result['status']:6s} {job.run_id} ({secs:.1f} s)"
+        if self.tty:
+            width = 30
+            filled = round(width * self.done / max(self.total, 1))
+            bar = "█" * filled + "░" * (width - filled)
+            elapsed = time.perf_counter() - self.start
+            if not ok:
+                self.stream.write("\r\033[K" + line + "\n")
+            self.stream.write(f"\r\033[K[{bar}] {self.done}/{self.total}  {elapsed:.0f} s  "
+                              f"{self.failed} failed  last: {job.run_id}")
+            if self.done == self.total:
+                self.stream.write("\n")
+        else:
+            self.stream.write(f"[{self.done}/{self.total}] {line}\n")
+        if not ok:
+            first = (result.get("message") or "").strip().splitlines()
+            for text in first[:6]:
+                self.stream.write(f"    {text}\n")
+        self.stream.flush()
+
+
+def run_batch(jobs: list[Job], out_root: Path, *, jobs_n: int = 1, lang: str | None = None,
+              formats: tuple[str, ...] = ("md", "pdf"), templates: Path | None = None,
+              on_result: Callable[[Job, dict], None] | None = None) -> list[dict]:
+    """Run ``jobs`` (``jobs_n`` at a time in worker processes; 1: in this process);
+    return their outcomes (as dicts) in the order of ``jobs``."""
+    out_root = Path(out_root)
+    out_root.mkdir(parents=True, exist_ok=True)
+    args = (str(out_root), lang, formats, str(templates) if templates else None)
+    results: dict[int, dict] = {}
+    if jobs_n <= 1 or len(jobs) <= 1:
+        for i, job in enumerate(jobs):
+            results[i] = _work(job, *args)
+            if on_result:
+                on_result(job, results[i])
+    else:
+        with ProcessPoolExecutor(max_workers=min(jobs_n, len(jobs))) as pool:
+            futures = {pool.submit(_work, job, *args): i for i, job in enumerate(jobs)}
+            try:
+                for future in as_completed(futures):
+                    i = futures[future]
+                    try:
+                        results[i] = future.result()
+                    except BrokenProcessPool as exc:  # a worker died (e.g. out of memory)
+                        results[i] = asdict(Outcome(
+                            brief=jobs[i].brief, group=jobs[i].group, status="failed",
+                            exit_code=EXIT_FAILED,
+                            message=f"{jobs[i].brief}: the worker process died: {exc}"))
+                    if on_result:
+                        on_result(jobs[i], results[i])
+            except KeyboardInterrupt:
+                for future in futures:
+                    future.cancel()
+                raise
+    return [results[i] for i in range(len(jobs))]
+
+
+def exit_code(results: list[dict]) -> int:
+    """0 when every run succeeded; 2 when any brief was invalid; else 1."""
+    codes = {r["exit_code"] for r in results}
+    if codes <= {EXIT_OK}:
+        return EXIT_OK
+    return EXIT_INVALID if EXIT_INVALID in codes else EXIT_FAILED
+
+
+# ----------------------------------------------------------------------------- index
+def _relative(path: str, root: Path) -> str:
+    try:
+        return Path(os.path.relpath(Path(path).resolve(), root.resolve())).as_posix()
+    except ValueError:
+        return Path(path).as_posix()
+
+
+def index_document(jobs: list[Job], results: list[dict], out_root: Path,
+                   shard_of: tuple[int, int] | None = None) -> dict:
+    """The index as plain data (index.json): every run with status, key results, links."""
+    runs = []
+    for job, r in zip(jobs, results, strict=True):
+        files = [_relative(p, out_root) for p in r.get("files", ())]
+        links = {Path(f).name: f for f in files if Path(f).suffix in (".pdf", ".md", ".docx", ".json", ".gif")}
+        runs.append({
+            "id": job.run_id, "brief": Path(job.brief).as_posix(), "group": r.get("group", job.group),
+            "machine": r.get("machine") or "", "status": r["status"], "exit_code": r["exit_code"],
+            "message": r.get("message") or "", "folder": job.run_id if r["status"] == "ok" else None,
+            "links": links, "summary": [list(x) for x in r.get("summary", ())],
+            "warnings": list(r.get("warnings", ())), "seconds": round(r.get("seconds") or 0.0, 2)})
+    totals = Counter(r["status"] for r in runs)
+    return {"schema": "mechdesign.batch/1", "shard": list(shard_of) if shard_of else None,
+            "runs": runs, "totals": {"runs": len(runs), "ok": totals.get("ok", 0),
+                                     "invalid": totals.get("invalid", 0),
+                                     "failed": totals.get("failed", 0)}}
+
+
+def _cell(text: str) -> str:
+    """Text safe inside a Markdown table cell."""
+    import re
+
+    return re.sub(r"([\\`*_{}\[\]<>()#+!|$@~^&])", r"\\\1", str(text)).replace("\n", " ")
+
+
+def index_markdown(doc: dict, lang: str = "zh") -> str:
+    """index.md: a table of every run (status, brief, group, key results, links)."""
+    zh = lang == "zh"
+    t = doc["totals"]
+    head = ("# 批量计算索引 Batch index\n\n"
+            f"共 {t['runs']} 次计算：成功 {t['ok']}，任务书无效或设计不可行 {t['invalid']}，"
+            f"失败 {t['failed']}。\n\n" if zh else
+            "# Batch index\n\n"
+            f"{t['runs']} runs: {t['ok']} ok, {t['invalid']} invalid brief or infeasible design, "
+            f"{t['failed']} failed.\n\n")
+    if doc.get("shard"):
+        i, n = doc["shard"]
+        head += (f"本索引为第 {i}/{n} 分片。\n\n" if zh else f"This index is shard {i} of {n}.\n\n")
+    status_text = ({"ok": "✓ 成功", "invalid": "✗ 无效", "failed": "✗ 失败"} if zh else
+                   {"ok": "✓ ok", "invalid": "✗ invalid", "failed": "✗ failed"})
+    cols = (["状态", "任务书", "分组", "机器", "主要结果", "报告", "用时 [s]"] if zh else
+            ["Status", "Brief", "Group", "Machine", "Key results", "Report", "Time [s]"])
+    lines = ["| " + " | ".join(cols) + " |", "|" + "|".join([":--"] * 6 + ["--:"]) + "|"]
+    problems = []
+    for run in doc["runs"]:
+        summary = "; ".join(f"{_cell(k)} = {_cell(v)}" for k, v in run["summary"]) or "—"
+        links = " ".join(f"[{name.rsplit('.', 1)[-1].upper()}](<{path}>)"
+                         for name, path in sorted(run["links"].items())
+                         if name in ("report.pdf", "report.md", "report.docx")) or "—"
+        warn = f" ({len(run['warnings'])} ⚠)" if run["warnings"] else ""
+        lines.append("| " + " | ".join([
+            status_text.get(run["status"], run["status"]) + warn, _cell(run["brief"]),
+            _cell(run["group"]) if run["group"] is not None else "—", _cell(run["machine"] or "—"),
+            summary, links, f"{run['seconds']:.1f}"]) + " |")
+        if run["status"] != "ok":
+            problems.append(f"### {_cell(run['id'])}\n\n```\n{run['message'].replace('```', '`​``')}\n```\n")
+    body = head + "\n".join(lines) + "\n"
+    if problems:
+        body += ("\n## 问题 Problems\n\n" if zh else "\n## Problems\n\n") + "\n".join(problems)
+    return body
+
+
+def write_index(doc: dict, out_root: Path, lang: str = "zh", stem: str = "index") -> list[Path]:
+    """Write ``stem``.json and ``stem``.md into ``out_root`` (each atomically)."""
+    paths = []
+    for name, text in ((f"{stem}.json", json.dumps(doc, ensure_ascii=False, indent=1) + "\n"),
+                       (f"{stem}.md", index_markdown(doc, lang))):
+        target = out_root / name
+        tmp = target.with_name(f".{name}.{os.getpid()}.tmp")
+        tmp.write_text(text, encoding="utf-8")
+        os.replace(tmp, target)
+        paths.append(target)
+    return paths
+
+
+def default_jobs() -> int:
+    try:
+        return max(1, len(os.sched_getaffinity(0)))
+    except AttributeError:  # pragma: no cover - not Linux
+        return max(1, os.cpu_count() or 1)
