@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import sys
 import time
+from contextlib import contextmanager
 from enum import Enum
 from pathlib import Path
 from typing import Optional
@@ -42,6 +43,26 @@ def main(version: Optional[bool] = typer.Option(None, "--version", callback=_ver
 
 def _err(msg: str) -> None:
     typer.echo(msg, err=True)
+
+
+@contextmanager
+def _terminate_as_interrupt():
+    """SIGTERM (a CI job cancelled, `kill`) unwinds like Ctrl-C, so the staging folder is
+    removed and the previous report stays as it was."""
+    import signal
+
+    def handler(signum, frame):
+        raise KeyboardInterrupt
+
+    try:
+        previous = signal.signal(signal.SIGTERM, handler)
+    except ValueError:  # not the main thread (e.g. inside a test runner's thread)
+        yield
+        return
+    try:
+        yield
+    finally:
+        signal.signal(signal.SIGTERM, previous)
 
 
 def _parse_formats(text: str) -> tuple[str, ...]:
@@ -83,10 +104,15 @@ def run(
     def stage_progress(i: int, total: int, title: str) -> None:
         _err(f"[{i}/{total}] {title}")
 
-    outcome = run_one(brief, out_dir=out, lang=lang.value if lang else None, formats=fmt,
-                      group=group, templates=templates, stage_progress=stage_progress,
-                      render_progress=lambda what: _err(f"      rendering {what}"),
-                      on_warning=lambda text: _err(f"warning: {text}"))
+    try:
+        with _terminate_as_interrupt():
+            outcome = run_one(brief, out_dir=out, lang=lang.value if lang else None, formats=fmt,
+                              group=group, templates=templates, stage_progress=stage_progress,
+                              render_progress=lambda what: _err(f"      rendering {what}"),
+                              on_warning=lambda text: _err(f"warning: {text}"))
+    except KeyboardInterrupt:
+        _err("\ninterrupted: nothing was written; an earlier report in the output folder is unchanged")
+        raise typer.Exit(130)
     if outcome.status != "ok":
         if debug and outcome.traceback:
             _err(outcome.traceback.rstrip())
