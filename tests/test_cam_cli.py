@@ -168,6 +168,10 @@ def test_unreachable_base_circle_is_exit_2_with_a_message(tmp_path):
         d["cam"]["base_radius_mm"] = 300                # beyond a + L = 256 mm
     result = runner.invoke(app, ["run", str(edited(tmp_path, "shaper.yaml", far)),
                                  "--out", str(tmp_path / "x"), "--format", "md"])
+    assert result.exit_code == 2                     # the brief is Chinese: so is the message
+    assert "滚子中心到不了基圆" in result.output and "Traceback" not in result.output
+    result = runner.invoke(app, ["run", str(edited(tmp_path, "shaper.yaml", far)),
+                                 "--out", str(tmp_path / "x"), "--format", "md", "--lang", "en"])
     assert result.exit_code == 2
     assert "cannot reach the base circle" in result.output and "Traceback" not in result.output
     assert not (tmp_path / "x" / "report.md").exists()

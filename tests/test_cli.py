@@ -93,7 +93,7 @@ def test_bad_brief_lists_every_problem_with_exit_code_2(tmp_path):
         d["linkage"]["time_ratio_K"] = "fast"
     path = _write_brief(tmp_path, edit)
     out = tmp_path / "out"
-    result = runner.invoke(app, ["run", str(path), "--out", str(out)])
+    result = runner.invoke(app, ["run", str(path), "--out", str(out), "--lang", "en"])
     assert result.exit_code == 2
     text = result.output
     assert "4 problems" in text

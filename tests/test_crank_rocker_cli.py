@@ -146,7 +146,7 @@ def test_poor_design_warns(tmp_path):
     (lambda d: d["compare"][0].update(crank_mm=60), ["compare.0", "not a crank-rocker"]),
 ])
 def test_bad_data_exit_2_naming_the_field(tmp_path, edit, words):
-    result = run(edited(tmp_path, edit), tmp_path / "o", "--format", "md")
+    result = run(edited(tmp_path, edit), tmp_path / "o", "--format", "md", "--lang", "en")
     assert result.exit_code == 2, result.output
     assert "Traceback" not in result.output
     for w in words:

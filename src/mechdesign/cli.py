@@ -198,6 +198,8 @@ EXAMPLES = {
 @app.command()
 def check(
     briefs: list[Path] = typer.Argument(..., help="Design briefs (YAML) to validate."),
+    lang: Optional[Lang] = typer.Option(None, "--lang", help="Language of the messages "
+                                        "(default: each brief's report.language)."),
 ):
     """Validate briefs without computing anything (fast: for editors and pre-commit).
 
@@ -205,6 +207,7 @@ def check(
     per brief; exit 0 when all are valid, 2 when any is not."""
     from .brief.loader import BriefError, brief_groups, load_variant
     from .machines import get_machine
+    from .runner import brief_language
 
     bad = 0
     for path in briefs:
@@ -220,7 +223,12 @@ def check(
         except BriefError as exc:
             bad += 1
             cause = exc.__cause__
-            _err(f"{exc.source}: {cause}" if cause is not None and not exc.problems else str(exc))
+            language = brief_language(path, lang.value if lang else None)
+            if cause is not None and not exc.problems:
+                text = getattr(cause, "text", None)
+                _err(f"{exc.source}: {text(language) if callable(text) else cause}")
+            else:
+                _err(exc.text(language))
             continue
         groups = f", groups {', '.join(labels)}" if labels else ""
         typer.echo(f"ok: {path} ({variant.brief.machine}{groups})")

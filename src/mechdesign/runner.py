@@ -72,8 +72,26 @@ def describe_design_error(exc: Exception, lang: str) -> str | None:
         zh, en = "设计不可行", "the design is infeasible"
     text = getattr(exc, "text", None)
     detail = text(lang) if callable(text) else str(exc)
-    head = f"按任务书数据{zh}" if lang == "zh" else f"{en} with the brief's data"
-    return f"{head}{'：' if lang == 'zh' else ':'}\n  {detail}"
+    if lang == "zh":
+        return f"按任务书数据{zh}：\n  {detail}"
+    return f"{en} with the brief's data:\n  {detail}"
+
+
+def brief_language(path: Path, lang: str | None = None) -> str:
+    """The language of messages about a brief: ``lang`` (--lang) if given, else the brief's
+    ``report.language`` when the file reads as YAML (even if other fields are invalid),
+    else zh (the default of report.language)."""
+    if lang in ("zh", "en"):
+        return lang
+    from .brief.loader import BriefError, read_brief_data
+
+    try:
+        data = read_brief_data(path)
+    except BriefError:
+        return "zh"
+    report = data.get("report") if isinstance(data, dict) else None
+    value = report.get("language") if isinstance(report, dict) else None
+    return value if value in ("zh", "en") else "zh"
 
 
 def run_one(brief: Path, *, out_dir: Path | None = None, lang: str | None = None,
@@ -98,7 +116,8 @@ def run_one(brief: Path, *, out_dir: Path | None = None, lang: str | None = None
     try:
         variant = load_variant(brief, group)
     except BriefError as exc:
-        return Outcome(**base, status="invalid", exit_code=EXIT_INVALID, message=str(exc))
+        return Outcome(**base, status="invalid", exit_code=EXIT_INVALID,
+                       message=exc.text(brief_language(brief, lang)))
     b, label = variant.brief, variant.group
     base["group"] = label
     language = lang or b.report.language

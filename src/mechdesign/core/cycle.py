@@ -27,6 +27,8 @@ from typing import Iterable, NamedTuple, Sequence
 
 import numpy as np
 
+from .errors import DesignError
+
 TWO_PI = 2.0 * np.pi
 #: Angles this close to a phase boundary count as lying on it [rad].
 BOUNDARY_TOL = 1e-9
@@ -52,7 +54,7 @@ STATES: dict[str, tuple[str, str, str]] = {
 }
 
 
-class CycleError(ValueError):
+class CycleError(DesignError):
     """A cycle diagram or constraint that is inconsistent; the message names the actuator."""
 
 
@@ -136,11 +138,13 @@ class Constraint:
 
     def __post_init__(self):
         if self.kind not in ("before", "during"):
-            raise CycleError(f"constraint kind {self.kind!r} is not 'before' or 'during'")
+            raise CycleError(f"constraint kind {self.kind!r} is not 'before' or 'during'",
+                             f"约束类型 {self.kind!r} 不是 'before' 或 'during'")
         object.__setattr__(self, "a", _ref(self.a))
         object.__setattr__(self, "b", _ref(self.b))
         if not np.isfinite(self.margin):
-            raise CycleError(f"constraint {self.a} {self.kind} {self.b}: the margin must be finite")
+            raise CycleError(f"constraint {self.a} {self.kind} {self.b}: the margin must be finite",
+                             f"约束 {self.a} {self.kind} {self.b}：裕量须为有限值")
 
     def text(self, lang: str) -> str:
         return self.text_zh if lang == "zh" else self.text_en
@@ -179,7 +183,8 @@ class CycleDiagram:
             if act.key == key:
                 return act
         raise CycleError(f"no actuator {key!r}; the diagram has: "
-                         f"{', '.join(a.key for a in self.actuators)}")
+                         f"{', '.join(a.key for a in self.actuators)}",
+                         f"没有执行构件 {key!r}；循环图中有：{', '.join(a.key for a in self.actuators)}")
 
     def duration(self, angle) -> np.ndarray | float:
         """Time the shaft takes to turn through ``angle`` [rad] → [s]."""
@@ -206,7 +211,8 @@ def _ref(ref) -> PhaseRef:
         return ref
     if isinstance(ref, (tuple, list)) and len(ref) in (2, 3):
         return PhaseRef(*ref)
-    raise CycleError(f"a phase reference is (actuator, state[, occurrence]), not {ref!r}")
+    raise CycleError(f"a phase reference is (actuator, state[, occurrence]), not {ref!r}",
+                     f"区段引用应为 (执行构件, 状态[, 第几次])，而不是 {ref!r}")
 
 
 def make_actuator(key: str, name_zh: str, name_en: str, start: float,
@@ -226,24 +232,31 @@ def make_actuator(key: str, name_zh: str, name_en: str, start: float,
             ph = tuple(ph)
             if not 2 <= len(ph) <= 4:
                 raise CycleError(f"actuator {key!r}, phase {i + 1}: give (state, span[, label_zh, "
-                                 f"label_en]), not {ph!r}")
+                                 f"label_en]), not {ph!r}",
+                                 f"执行构件 {key!r} 第 {i + 1} 区段：应为 (状态, 转角[, 中文名, 英文名])，"
+                                 f"而不是 {ph!r}")
             state, span = ph[0], ph[1]
             lzh = ph[2] if len(ph) > 2 else ""
             len_ = ph[3] if len(ph) > 3 else ""
         if state not in STATES:
             raise CycleError(f"actuator {key!r}, phase {i + 1}: state {state!r} is not one of "
+                             f"{', '.join(STATES)}",
+                             f"执行构件 {key!r} 第 {i + 1} 区段：状态 {state!r} 不是以下之一："
                              f"{', '.join(STATES)}")
         span = float(span)
         if not (np.isfinite(span) and span > 0):
             raise CycleError(f"actuator {key!r}, phase {i + 1}: its span must be positive, "
-                             f"not {np.degrees(span):g}°")
+                             f"not {np.degrees(span):g}°",
+                             f"执行构件 {key!r} 第 {i + 1} 区段：转角须为正，而不是 {np.degrees(span):g}°")
         items.append((state, span, lzh, len_))
     if not items:
-        raise CycleError(f"actuator {key!r} has no phases")
+        raise CycleError(f"actuator {key!r} has no phases", f"执行构件 {key!r} 没有任何区段")
     total = sum(s for _, s, _, _ in items)
     if abs(total - TWO_PI) > tol:
         raise CycleError(f"actuator {key!r} ({name_en}): the phase spans add up to "
-                         f"{np.degrees(total):.6g}°; they must cover exactly 360°")
+                         f"{np.degrees(total):.6g}°; they must cover exactly 360°",
+                         f"执行构件 {key!r}（{name_zh or name_en}）：各区段转角之和为 "
+                         f"{np.degrees(total):.6g}°，须恰为 360°")
     scale = TWO_PI / total
     out, at = [], float(np.mod(start, TWO_PI))
     for state, span, lzh, len_ in items:
@@ -261,21 +274,23 @@ def build_cycle(actuators: Sequence, shaft_speed: float, origin: float = 0.0,
     ``constraints``: :class:`Constraint` whose phase references must exist.
     """
     if not (np.isfinite(shaft_speed) and shaft_speed > 0):
-        raise CycleError(f"the shaft speed must be positive, not {shaft_speed!r} rad/s")
+        raise CycleError(f"the shaft speed must be positive, not {shaft_speed!r} rad/s",
+                         f"分配轴转速须为正，而不是 {shaft_speed!r} rad/s")
     acts = []
     for item in actuators:
         acts.append(item if isinstance(item, Actuator) else make_actuator(*item))
     if not acts:
-        raise CycleError("a cycle diagram needs at least one actuator")
+        raise CycleError("a cycle diagram needs at least one actuator", "运动循环图至少需要一个执行构件")
     keys = [a.key for a in acts]
     dup = sorted({k for k in keys if keys.count(k) > 1})
     if dup:
-        raise CycleError(f"actuator key(s) {', '.join(map(repr, dup))} appear more than once")
+        raise CycleError(f"actuator key(s) {', '.join(map(repr, dup))} appear more than once",
+                         f"执行构件代号 {', '.join(map(repr, dup))} 出现不止一次")
     cycle = CycleDiagram(tuple(acts), float(shaft_speed), float(np.mod(origin, TWO_PI)), ())
     cons = tuple(constraints)
     for c in cons:
         if not isinstance(c, Constraint):
-            raise CycleError(f"not a Constraint: {c!r}")
+            raise CycleError(f"not a Constraint: {c!r}", f"不是约束（Constraint）：{c!r}")
         resolve(cycle, c.a)
         resolve(cycle, c.b)
     return CycleDiagram(cycle.actuators, cycle.shaft_speed, cycle.origin, cons)
@@ -316,15 +331,20 @@ def interval_of(actuator: Actuator, state: str, occurrence: int | None = None) -
     found = intervals_of(actuator, state)
     have = ", ".join(p.state for p in actuator.phases)
     if not found:
-        raise CycleError(f"actuator {actuator.key!r} has no {state!r} phase; its phases: {have}")
+        raise CycleError(f"actuator {actuator.key!r} has no {state!r} phase; its phases: {have}",
+                         f"执行构件 {actuator.key!r} 没有 {state!r} 区段；它的区段：{have}")
     if occurrence is None:
         if len(found) > 1:
             raise CycleError(f"actuator {actuator.key!r} has {len(found)} {state!r} phases; say "
-                             f"which (occurrence 1 … {len(found)})")
+                             f"which (occurrence 1 … {len(found)})",
+                             f"执行构件 {actuator.key!r} 有 {len(found)} 个 {state!r} 区段；请指明第几个"
+                             f"（occurrence 1 … {len(found)}）")
         return found[0]
     if not 1 <= occurrence <= len(found):
         raise CycleError(f"actuator {actuator.key!r} has {len(found)} {state!r} phase(s); "
-                         f"occurrence {occurrence} does not exist")
+                         f"occurrence {occurrence} does not exist",
+                         f"执行构件 {actuator.key!r} 只有 {len(found)} 个 {state!r} 区段；"
+                         f"不存在第 {occurrence} 个")
     return found[occurrence - 1]
 
 
@@ -401,7 +421,8 @@ def actuator_from_cam_programme(key: str, name_zh: str, name_en: str, programme,
         total = sum(s.span for s in segs)
         if abs(total - TWO_PI) > COVER_TOL:
             raise CycleError(f"actuator {key!r}: the cam programme covers "
-                             f"{np.degrees(total):.6g}°, not 360°")
+                             f"{np.degrees(total):.6g}°, not 360°",
+                             f"执行构件 {key!r}：凸轮运动规律覆盖 {np.degrees(total):.6g}°，而不是 360°")
         segs = [Segment(s.kind, s.span * TWO_PI / total, s.law, s.lift) for s in segs]
         prog = Programme(segs, _stroke_of(segs))
     phases = []
@@ -440,7 +461,8 @@ def timing_disagreement(a: Actuator, b: Actuator, by: str = "state") -> float:
     same timing). ``by="motion"`` compares only moving against resting, so that e.g. a
     ``dwell`` matches a ``dwell_low``, and a ``move`` a ``rise``."""
     if by not in ("state", "motion"):
-        raise CycleError(f"compare by 'state' or 'motion', not {by!r}")
+        raise CycleError(f"compare by 'state' or 'motion', not {by!r}",
+                         f"比较方式应为 'state' 或 'motion'，而不是 {by!r}")
     cuts = np.sort(np.mod(np.array([p.start for p in a.phases + b.phases]), TWO_PI))
     cuts = np.concatenate([cuts, [cuts[0] + TWO_PI]])
     arcs = np.diff(cuts)

@@ -19,10 +19,12 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from .errors import DesignError
+
 SYNCHRONOUS_PREFERENCE = (1500, 1000, 3000, 750)   # rpm; 1500 and 1000 are the usual choice
 
 
-class DriveDesignError(ValueError):
+class DriveDesignError(DesignError):
     """A drive that cannot meet the brief (no motor, ratio out of every range)."""
 
 
@@ -129,11 +131,17 @@ def choose_motor(catalogue: list[Motor], power_required: float, output_rpm: floa
         raise DriveDesignError(
             f"no motor in the catalogue gives {power_required / 1e3:.3f} kW"
             + (f" at {synchronous_rpm:g} rpm" if synchronous_rpm else "")
-            + f" (largest: {largest / 1e3:g} kW)")
+            + f" (largest: {largest / 1e3:g} kW): reduce the load or the speed, or allow "
+            "another synchronous speed",
+            f"电动机目录中没有功率达到 {power_required / 1e3:.3f} kW 的电动机"
+            + (f"（同步转速 {synchronous_rpm:g} rpm）" if synchronous_rpm else "")
+            + f"（最大 {largest / 1e3:g} kW）：应减小负载或转速，或改用其他同步转速")
     ratios = ", ".join(f"{c.synchronous_rpm:g} rpm → i = {c.total_ratio:.1f}" for c in candidates if c.motor)
     raise DriveDesignError(
         f"the drive's stages give total ratios {max_lo:.3g}–{max_hi:.3g}, but the motors need "
-        f"{ratios} to reach {output_rpm:g} rpm: add a stage or change a fixed ratio")
+        f"{ratios} to reach {output_rpm:g} rpm: add a stage or change a fixed ratio",
+        f"传动各级的总传动比范围为 {max_lo:.3g}–{max_hi:.3g}，而要得到 {output_rpm:g} rpm，"
+        f"各电动机需要 {ratios}：应增加一级传动或改变某一固定传动比")
 
 
 def allocate_ratios(total: float, elements: list[Element]) -> list[float]:

@@ -34,6 +34,8 @@ from math import gcd
 
 import numpy as np
 
+from .errors import DesignError
+
 TWO_PI = 2.0 * np.pi
 DEG = 180.0 / np.pi
 #: Default allowed difference between a requested timing angle and the one whole teeth give [rad].
@@ -42,7 +44,7 @@ TIMING_TOL = 1e-6
 BOUNDARY_TOL = 1e-9
 
 
-class IntermittentDesignError(ValueError):
+class IntermittentDesignError(DesignError):
     """An incomplete gear that cannot meet the timing with whole teeth; the message says
     what to change."""
 
@@ -244,34 +246,46 @@ def design_incomplete_gear(module: float, z1: int | None = None, z2: int | None 
     ``motion_start``: shaft angle where meshing begins [rad]; ``driver_speed`` ω1 [rad/s].
     """
     if not (np.isfinite(module) and module > 0):
-        raise IntermittentDesignError(f"the module must be positive, not {module!r}")
+        raise IntermittentDesignError(f"the module must be positive, not {module!r}",
+                                      f"模数须为正，而不是 {module!r}")
     for name, z in (("z1", z1), ("z2", z2), ("teeth", teeth)):
         if z is not None and (isinstance(z, bool) or int(z) != z or z < 1):
-            raise IntermittentDesignError(f"{name} must be a whole number ≥ 1, not {z!r}")
+            raise IntermittentDesignError(f"{name} must be a whole number ≥ 1, not {z!r}",
+                                          f"{name} 须为 ≥ 1 的整数，而不是 {z!r}")
     z1 = None if z1 is None else int(z1)
     z2 = None if z2 is None else int(z2)
     teeth = None if teeth is None else int(teeth)
     if motion_span is not None and not 0 < motion_span < TWO_PI:
         raise IntermittentDesignError(f"the motion span must lie between 0° and 360°, not "
-                                      f"{motion_span * DEG:g}°")
+                                      f"{motion_span * DEG:g}°",
+                                      f"运动角须在 0° 与 360° 之间，而不是 {motion_span * DEG:g}°")
     if feed is not None:
         if sprocket_radius is None or not sprocket_radius > 0:
-            raise IntermittentDesignError("a chain feed needs the sprocket's pitch radius")
+            raise IntermittentDesignError("a chain feed needs the sprocket's pitch radius",
+                                          "链条送进量需要链轮的分度圆半径")
         from_feed = feed / sprocket_radius
         if advance is not None and abs(from_feed - advance) > tol:
             raise IntermittentDesignError(
                 f"the feed {feed * 1e3:g} mm on a sprocket of pitch radius "
                 f"{sprocket_radius * 1e3:g} mm is an advance of {from_feed * DEG:.4g}°, not the "
-                f"{advance * DEG:g}° also given: give one of them")
+                f"{advance * DEG:g}° also given: give one of them",
+                f"送进量 {feed * 1e3:g} mm 在分度圆半径 {sprocket_radius * 1e3:g} mm 的链轮上相当于转过 "
+                f"{from_feed * DEG:.4g}°，而不是同时给出的 {advance * DEG:g}°：两者只给一个")
         advance = from_feed
     if advance is not None and not advance > 0:
-        raise IntermittentDesignError(f"the advance must be positive, not {advance * DEG:g}°")
+        raise IntermittentDesignError(f"the advance must be positive, not {advance * DEG:g}°",
+                                      f"从动轮转角须为正，而不是 {advance * DEG:g}°")
 
     def adv_text(angle: float, extra: str = "") -> str:
         """The advance in degrees, with the feed when the brief gave a feed."""
         parts = ([f"feed {angle * sprocket_radius * 1e3:.4g} mm"] if feed is not None else []) + \
             ([extra] if extra else [])
         return f"{angle * DEG:.4g}°" + (f" ({', '.join(parts)})" if parts else "")
+
+    def adv_zh(angle: float, extra: str = "") -> str:
+        parts = ([f"送进量 {angle * sprocket_radius * 1e3:.4g} mm"] if feed is not None else []) + \
+            ([extra] if extra else [])
+        return f"{angle * DEG:.4g}°" + (f"（{'，'.join(parts)}）" if parts else "")
 
     # --- the teeth present
     if teeth is None:
@@ -282,10 +296,14 @@ def design_incomplete_gear(module: float, z1: int | None = None, z2: int | None 
                 lo, hi = _whole(exact)
                 options = " or ".join(f"{TWO_PI * n / z1 * DEG:.4g}° ({n} teeth)"
                                       for n in (lo, hi) if 1 <= n < z1)
+                opt_zh = " 或 ".join(f"{TWO_PI * n / z1 * DEG:.4g}°（{n} 齿）"
+                                     for n in (lo, hi) if 1 <= n < z1)
                 raise IntermittentDesignError(
                     f"the motion span {motion_span * DEG:g}° needs z1·φm/360° = {exact:.4g} teeth "
                     f"on the driver (z1 = {z1}), not a whole number; whole teeth give {options or 'no usable value'}: "
-                    f"change the motion span or z1")
+                    f"change the motion span or z1",
+                    f"运动角 {motion_span * DEG:g}° 要求主动轮上有 z1·φm/360° = {exact:.4g} 个齿"
+                    f"（z1 = {z1}），不是整数；整齿数可得 {opt_zh or '无可用值'}：应改变运动角或 z1")
         elif z2 is not None and advance is not None:
             exact = z2 * advance / TWO_PI
             teeth = int(round(exact))
@@ -293,60 +311,81 @@ def design_incomplete_gear(module: float, z1: int | None = None, z2: int | None 
                 lo, hi = _whole(exact)
                 options = " or ".join(adv_text(TWO_PI * n / z2, f"{n} teeth")
                                       for n in (lo, hi) if n >= 1 and (z1 is None or n < z1))
+                opt_zh = " 或 ".join(adv_zh(TWO_PI * n / z2, f"{n} 齿")
+                                     for n in (lo, hi) if n >= 1 and (z1 is None or n < z1))
                 raise IntermittentDesignError(
                     f"the advance {adv_text(advance)} needs z2·Δφ2/360° = {exact:.4g} teeth on the "
                     f"driver (z2 = {z2}), not a whole number; whole teeth give {options or 'no usable value'}: change "
-                    f"the advance or z2")
+                    f"the advance or z2",
+                    f"从动轮转角 {adv_zh(advance)} 要求主动轮上有 z2·Δφ2/360° = {exact:.4g} 个齿"
+                    f"（z2 = {z2}），不是整数；整齿数可得 {opt_zh or '无可用值'}：应改变转角或 z2")
         else:
             raise IntermittentDesignError(
                 "the teeth on the driver are not fixed: give them, or z1 with the motion span, "
-                "or z2 with the advance (or feed)")
+                "or z2 with the advance (or feed)",
+                "主动轮的齿数未确定：请直接给出，或给出 z1 与运动角，或给出 z2 与转角（或送进量）")
     # --- the driver's notional full count
     if z1 is None:
         if motion_span is None:
             raise IntermittentDesignError("give z1 (the driver's full tooth count) or the "
-                                          "driver's motion span")
+                                          "driver's motion span",
+                                          "请给出 z1（主动轮的完整齿数）或主动轮的运动角")
         exact = TWO_PI * teeth / motion_span
         z1 = int(round(exact))
         if z1 < 1 or abs(TWO_PI * teeth / z1 - motion_span) > tol:
             lo, hi = _whole(exact)
             options = " or ".join(f"{TWO_PI * teeth / z * DEG:.4g}° (z1 = {z})"
                                   for z in (lo, hi) if z > teeth)
+            opt_zh = " 或 ".join(f"{TWO_PI * teeth / z * DEG:.4g}°（z1 = {z}）"
+                                 for z in (lo, hi) if z > teeth)
             raise IntermittentDesignError(
                 f"with {teeth} teeth the motion span {motion_span * DEG:g}° needs "
                 f"z1 = 360°·z1'/φm = {exact:.4g}, not a whole number; whole z1 give {options or 'no usable value'}: "
-                f"change the motion span or the teeth")
+                f"change the motion span or the teeth",
+                f"齿数为 {teeth} 时运动角 {motion_span * DEG:g}° 要求 z1 = 360°·z1'/φm = {exact:.4g}，"
+                f"不是整数；整数 z1 可得 {opt_zh or '无可用值'}：应改变运动角或齿数")
     # --- the driven wheel
     if z2 is None:
         if advance is None:
-            raise IntermittentDesignError("give z2 (the driven wheel's teeth) or the advance")
+            raise IntermittentDesignError("give z2 (the driven wheel's teeth) or the advance",
+                                          "请给出 z2（从动轮齿数）或从动轮转角")
         exact = TWO_PI * teeth / advance
         z2 = int(round(exact))
         if z2 < 1 or abs(TWO_PI * teeth / z2 - advance) > tol:
             lo, hi = _whole(exact)
             options = " or ".join(adv_text(TWO_PI * teeth / z, f"z2 = {z}")
                                   for z in (lo, hi) if z >= 1)
+            opt_zh = " 或 ".join(adv_zh(TWO_PI * teeth / z, f"z2 = {z}")
+                                 for z in (lo, hi) if z >= 1)
             raise IntermittentDesignError(
                 f"with {teeth} teeth the advance {adv_text(advance)} needs z2 = 360°·z1'/Δφ2 = "
                 f"{exact:.4g}, not a whole number; whole z2 give {options or 'no usable value'}: change the advance "
-                f"or the teeth")
+                f"or the teeth",
+                f"齿数为 {teeth} 时从动轮转角 {adv_zh(advance)} 要求 z2 = 360°·z1'/Δφ2 = {exact:.4g}，"
+                f"不是整数；整数 z2 可得 {opt_zh or '无可用值'}：应改变转角或齿数")
     # --- consistency of everything given
     if teeth >= z1:
         raise IntermittentDesignError(
             f"{teeth} teeth on a driver of z1 = {z1} leave no toothless arc for the dwell: "
-            f"the driver needs fewer teeth than z1")
+            f"the driver needs fewer teeth than z1",
+            f"主动轮 z1 = {z1} 上有 {teeth} 个齿，没有留下停歇所需的无齿弧：齿数须少于 z1")
     phi_m = TWO_PI * teeth / z1
     if motion_span is not None and abs(phi_m - motion_span) > tol:
         raise IntermittentDesignError(
             f"{teeth} teeth on a driver of z1 = {z1} mesh over 360°·{teeth}/{z1} = "
-            f"{phi_m * DEG:.4g}°, not the motion span {motion_span * DEG:g}° given")
+            f"{phi_m * DEG:.4g}°, not the motion span {motion_span * DEG:g}° given",
+            f"主动轮 z1 = {z1} 上的 {teeth} 个齿啮合 360°·{teeth}/{z1} = {phi_m * DEG:.4g}°，"
+            f"而不是给定的运动角 {motion_span * DEG:g}°")
     adv = TWO_PI * teeth / z2
     if advance is not None and abs(adv - advance) > tol:
         raise IntermittentDesignError(
             f"{teeth} teeth advance a driven wheel of z2 = {z2} by 360°·{teeth}/{z2} = "
-            f"{adv_text(adv)}, not the required {adv_text(advance)}")
+            f"{adv_text(adv)}, not the required {adv_text(advance)}",
+            f"{teeth} 个齿使 z2 = {z2} 的从动轮转过 360°·{teeth}/{z2} = {adv_zh(adv)}，"
+            f"而不是要求的 {adv_zh(advance)}")
     if z1 < 3 or z2 < 3:
-        raise IntermittentDesignError(f"z1 = {z1} and z2 = {z2}: a gear needs at least 3 teeth")
+        raise IntermittentDesignError(f"z1 = {z1} and z2 = {z2}: a gear needs at least 3 teeth",
+                                      f"z1 = {z1}，z2 = {z2}：齿轮至少需要 3 个齿")
 
     notes = []
     zmin = _z_min(alpha, ha_star)

@@ -17,19 +17,53 @@ from typing import Protocol
 import numpy as np
 
 from . import kinematics as kin
+from .errors import DesignError
 from .kinematics import AngleMotion, PointMotion, SlideMotion
 
 
-class AssemblyError(ValueError):
-    """A group cannot be assembled at some crank angle."""
+class AssemblyError(DesignError):
+    """A group cannot be assembled at some crank angle.
 
-    def __init__(self, group: str, kind: str, crank_angle_deg: float, count: int):
+    ``code`` names the diagnosis: "grashof" (the crank of a four-bar cannot make a full
+    turn), "slider_crank" (the crank of a slider-crank cannot), "guide_bar" (the slider of a
+    guide bar is offset more than the crank pin's distance from the pivot) or "assembly"
+    (a group further down the chain cannot close). The message gives the numbers and what to
+    change, in English (``str``) and Chinese (:meth:`text`)."""
+
+    def __init__(self, group: str, kind: str, crank_angle_deg: float, count: int, *,
+                 code: str = "assembly", en: str | None = None, zh: str | None = None,
+                 numbers: dict | None = None):
         self.group, self.kind = group, kind
         self.crank_angle_deg, self.count = crank_angle_deg, count
-        super().__init__(
-            f"group '{group}' ({kind}) cannot be assembled at crank angle "
-            f"{crank_angle_deg:.2f}° (and {count - 1} more of the angles asked): "
-            "the links are too short to close; check the lengths or the branch")
+        self.code = code
+        self.numbers = dict(numbers or {})
+        where_en = (f"group '{group}' ({kind}) cannot be assembled at crank angle "
+                    f"{crank_angle_deg:.2f}° (and {count - 1} more of the angles asked)")
+        where_zh = (f"杆组 '{group}'（{kind}）在曲柄转角 {crank_angle_deg:.2f}° 处"
+                    f"（及所给转角中另外 {count - 1} 处）无法装配")
+        if en is None:
+            en = f"{where_en}: the links are too short to close; check the lengths or the branch"
+            zh = f"{where_zh}：杆长不足以闭合，请检查杆长或装配方案"
+        else:
+            en, zh = en.replace("{where}", where_en), (zh or en).replace("{where}", where_zh)
+        super().__init__(en, zh)
+
+    def with_hint(self, en: str, zh: str) -> "AssemblyError":
+        """The same error with a sentence appended (e.g. the brief fields to change)."""
+        return AssemblyError(self.group, self.kind, self.crank_angle_deg, self.count,
+                             code=self.code, en=f"{self.en} {en}", zh=f"{self.zh}{zh}",
+                             numbers=self.numbers)
+
+    def __reduce__(self):   # picklable (worker processes) with every attribute
+        return (_rebuild_assembly_error, (self.group, self.kind, self.crank_angle_deg, self.count,
+                                          self.code, self.en, self.zh, self.numbers))
+
+
+def _rebuild_assembly_error(group, kind, angle, count, code, en, zh, numbers) -> AssemblyError:
+    err = AssemblyError(group, kind, angle, count, code=code, en="{where}", zh="{where}",
+                        numbers=numbers)
+    err.args, err.en, err.zh = (en,), en, zh
+    return err
 
 
 @dataclass(frozen=True)
@@ -282,11 +316,12 @@ class Mechanism:
             m.points[name] = kin.fixed_point(xy, len(phi))
         for g in self.groups:
             g.solve(m)
-            _check_assembled(g, m, g.produced, phi)
+            _check_assembled(g, m, g.produced, phi, self)
         return m
 
 
-def _check_assembled(group, m: Motion, produced: dict[str, str], phi: np.ndarray) -> None:
+def _check_assembled(group, m: Motion, produced: dict[str, str], phi: np.ndarray,
+                     mech: "Mechanism | None" = None) -> None:
     bad = np.zeros(len(phi), dtype=bool)
     for link in group.links:
         bad |= ~np.isfinite(m.links[link].angle)
@@ -294,4 +329,179 @@ def _check_assembled(group, m: Motion, produced: dict[str, str], phi: np.ndarray
         bad |= ~np.isfinite(m.points[p].pos)
     if bad.any():
         first = float(np.degrees(phi[bad][0]) % 360.0)
-        raise AssemblyError(group.name, group.kind, first, int(bad.sum()))
+        count = int(bad.sum())
+        found = None if mech is None else _diagnose(group, m, bad, mech)
+        if found is None:
+            raise AssemblyError(group.name, group.kind, first, count)
+        code, en, zh, numbers = found
+        raise AssemblyError(group.name, group.kind, first, count, code=code, en=en, zh=zh,
+                            numbers=numbers)
+
+
+def _mm(x: float) -> str:
+    return f"{x * 1e3:.6g}"
+
+
+def _diagnose(group, m: Motion, bad: np.ndarray, mech: "Mechanism"):
+    """Why ``group`` does not close where ``bad``: (code, en, zh, numbers) with "{where}"
+    standing for the group and the crank angle, or None for a group of another kind."""
+    crank = mech.groups[0] if mech.groups and isinstance(mech.groups[0], Crank) else None
+    frame = mech.frame_points
+
+    def on_crank(tip: str, fixed: str) -> bool:
+        return crank is not None and tip == crank.tip and fixed in frame
+
+    if isinstance(group, RRR):
+        for tip, fixed, b, c in ((group.b, group.d, group.l1, group.l2),
+                                 (group.d, group.b, group.l2, group.l1)):
+            if on_crank(tip, fixed):
+                return _grashof(group, crank, fixed, b, c, abs(frame[fixed] - frame[crank.pivot]))
+        dist = np.abs(m.points[group.b].pos - m.points[group.d].pos)
+        return _rrr_reach(group, dist, bad)
+    if isinstance(group, RRP):
+        u = np.exp(-1j * group.guide_angle)
+        h = (u * (m.points[group.b].pos - group.guide_point)).imag
+        if crank is not None and group.b == crank.tip:
+            e = float((u * (frame[crank.pivot] - group.guide_point)).imag)
+            return _slider_crank(group, crank, e)
+        return _rrp_reach(group, np.abs(h), bad)
+    if isinstance(group, RPR):
+        dist = np.abs(m.points[group.a].pos - m.points[group.pivot].pos)
+        if on_crank(group.a, group.pivot):
+            d = abs(frame[group.pivot] - frame[crank.pivot])
+            return _guide_bar(group, crank, d, float(np.min(dist)))
+        return _rpr_reach(group, dist, bad)
+    return None
+
+
+_FOUR = {"crank": ("crank", "曲柄"), "coupler": ("coupler", "连杆"),
+         "rocker": ("rocker", "摇杆"), "frame": ("frame", "机架")}
+
+
+def _grashof(group, crank, fixed: str, b: float, c: float, d: float):
+    """The RRR right after the crank, with one end on the frame: a four-bar whose crank
+    turns fully iff a + d ≤ b + c and |d − a| ≥ |b − c| (Grashof's rule with the crank or
+    the frame shortest)."""
+    a = crank.length
+    lengths = {"crank": a, "coupler": b, "rocker": c, "frame": d}
+    order = sorted(lengths, key=lengths.get)
+    s_, l_ = lengths[order[0]], lengths[order[-1]]
+    p_, q_ = lengths[order[1]], lengths[order[2]]
+    name = f"{crank.pivot}{crank.tip}{group.c}{fixed}"
+    lens_en = (f"crank a = {_mm(a)} mm, coupler b = {_mm(b)} mm, rocker c = {_mm(c)} mm, "
+               f"frame d = {_mm(d)} mm")
+    lens_zh = (f"曲柄 a = {_mm(a)} mm，连杆 b = {_mm(b)} mm，摇杆 c = {_mm(c)} mm，"
+               f"机架 d = {_mm(d)} mm")
+    rel = ">" if s_ + l_ > p_ + q_ else "≤"
+    sums_en = (f"shortest + longest = {_mm(s_)} + {_mm(l_)} = {_mm(s_ + l_)} mm {rel} "
+               f"{_mm(p_)} + {_mm(q_)} = {_mm(p_ + q_)} mm (the other two)")
+    sums_zh = (f"最短杆 + 最长杆 = {_mm(s_)} + {_mm(l_)} = {_mm(s_ + l_)} mm {rel} "
+               f"其余两杆之和 {_mm(p_)} + {_mm(q_)} = {_mm(p_ + q_)} mm")
+    if s_ + l_ > p_ + q_:
+        why_en, why_zh = "the Grashof condition fails", "不满足杆长之和条件"
+    else:
+        en_s, zh_s = _FOUR[order[0]]
+        why_en = (f"the Grashof sums hold but the shortest link is the {en_s}, not the crank "
+                  "or the frame")
+        why_zh = f"杆长之和条件满足，但最短杆是{zh_s}而不是曲柄或机架"
+    fix_en, fix_zh = [], []
+    short1 = a + d - (b + c)           # the folded/extended position: BD = d + a > b + c
+    if short1 > 0:
+        crank_en = f" or shorten the crank by {_mm(short1)} mm" if short1 < a else ""
+        crank_zh = f"，或将曲柄缩短 {_mm(short1)} mm" if short1 < a else ""
+        fix_en.append(f"make coupler + rocker at least a + d = {_mm(a + d)} mm (lengthen them by "
+                      f"{_mm(short1)} mm in total){crank_en}")
+        fix_zh.append(f"使连杆 + 摇杆 ≥ a + d = {_mm(a + d)} mm（两者共加长 {_mm(short1)} mm）"
+                      f"{crank_zh}")
+    short2 = abs(b - c) - abs(d - a)   # BD = |d − a| < |b − c|
+    if short2 > 0:
+        longer_en, longer_zh = ("coupler", "连杆") if b > c else ("rocker", "摇杆")
+        fix_en.append(f"make |b − c| = {_mm(abs(b - c))} mm at most |d − a| = {_mm(abs(d - a))} mm "
+                      f"(shorten the {longer_en} by {_mm(short2)} mm, or lengthen the other)")
+        fix_zh.append(f"使 |b − c| = {_mm(abs(b - c))} mm 不超过 |d − a| = {_mm(abs(d - a))} mm"
+                      f"（将{longer_zh}缩短 {_mm(short2)} mm，或加长另一杆）")
+    if not fix_en:   # a rounding edge: the closure fails by a hair
+        fix_en.append("change the link lengths slightly")
+        fix_zh.append("略微调整杆长")
+    en = (f"the crank cannot make a full turn (Grashof): four-bar {name} with {lens_en}: "
+          f"{sums_en}; {why_en}, so {{where}}. To let the crank turn: {'; or '.join(fix_en)}")
+    zh = (f"曲柄不能整周转动（不满足曲柄存在条件 / Grashof 条件）：四杆机构 {name}，{lens_zh}；"
+          f"{sums_zh}；{why_zh}，因此{{where}}。要使曲柄整周转动：{'；或'.join(fix_zh)}")
+    return "grashof", en, zh, {"a": a, "b": b, "c": c, "d": d, "s_plus_l": s_ + l_,
+                               "p_plus_q": p_ + q_}
+
+
+def _slider_crank(group, crank, e: float):
+    """The RRP right after the crank: the crank turns fully iff rod ≥ crank + |offset|."""
+    a, L = crank.length, group.length
+    need = a + abs(e)
+    en = (f"the crank cannot make a full turn: slider-crank with crank a = {_mm(a)} mm, offset "
+          f"e = {_mm(abs(e))} mm (pivot {crank.pivot} from the guide) and rod b = {_mm(L)} mm needs "
+          f"b ≥ a + e = {_mm(need)} mm, so {{where}}. Lengthen the rod by at least "
+          f"{_mm(need - L)} mm (to {_mm(need)} mm), or reduce the crank and the offset by that much "
+          "together")
+    zh = (f"曲柄不能整周转动：曲柄滑块机构曲柄 a = {_mm(a)} mm，偏距 e = {_mm(abs(e))} mm"
+          f"（{crank.pivot} 到导路的距离），连杆 b = {_mm(L)} mm，须 b ≥ a + e = {_mm(need)} mm，"
+          f"因此{{where}}。应将连杆至少加长 {_mm(need - L)} mm（到 {_mm(need)} mm），"
+          "或使曲柄与偏距之和减小同样的量")
+    return "slider_crank", en, zh, {"a": a, "b": L, "e": abs(e), "needed": need}
+
+
+def _guide_bar(group, crank, d: float, closest: float):
+    """The RPR right after the crank: the slider's offset cannot exceed the crank pin's
+    least distance from the bar's pivot, |d − a|."""
+    a, off = crank.length, abs(group.offset)
+    gap = abs(d - a)
+    en = (f"guide bar {group.pivot}{group.a}: the slider's path is offset {_mm(off)} mm from the "
+          f"bar's axis, but the crank pin {group.a} comes within |d − a| = {_mm(gap)} mm of the "
+          f"pivot {group.pivot} (crank a = {_mm(a)} mm, frame d = {_mm(d)} mm), so {{where}}. "
+          f"Reduce the offset to at most {_mm(gap)} mm, or make |d − a| ≥ {_mm(off)} mm")
+    zh = (f"导杆 {group.pivot}{group.a}：滑块导路相对导杆轴线偏距 {_mm(off)} mm，而曲柄销 "
+          f"{group.a} 与导杆转动中心 {group.pivot} 的最近距离只有 |d − a| = {_mm(gap)} mm"
+          f"（曲柄 a = {_mm(a)} mm，机架 d = {_mm(d)} mm），因此{{where}}。应将偏距减小到 "
+          f"{_mm(gap)} mm 以内，或使 |d − a| ≥ {_mm(off)} mm")
+    return "guide_bar", en, zh, {"a": a, "d": d, "offset": off, "closest": closest}
+
+
+def _rrr_reach(group, dist: np.ndarray, bad: np.ndarray):
+    l1, l2 = group.l1, group.l2
+    lo, hi = float(np.min(dist)), float(np.max(dist))
+    at = float(dist[bad][0])
+    fix_en, fix_zh = [], []
+    if hi > l1 + l2:
+        fix_en.append(f"make {group.b}{group.c} + {group.d}{group.c} at least {_mm(hi)} mm "
+                      f"(lengthen them by {_mm(hi - l1 - l2)} mm in total)")
+        fix_zh.append(f"使 {group.b}{group.c} + {group.d}{group.c} ≥ {_mm(hi)} mm"
+                      f"（两杆共加长 {_mm(hi - l1 - l2)} mm）")
+    if lo < abs(l1 - l2):
+        fix_en.append(f"make their difference at most {_mm(lo)} mm (now {_mm(abs(l1 - l2))} mm)")
+        fix_zh.append(f"使两杆长度差不超过 {_mm(lo)} mm（现为 {_mm(abs(l1 - l2))} mm）")
+    en = (f"{{where}}: links {group.b}{group.c} = {_mm(l1)} mm and {group.d}{group.c} = {_mm(l2)} mm "
+          f"close only while |{group.b}{group.d}| lies between {_mm(abs(l1 - l2))} and "
+          f"{_mm(l1 + l2)} mm, but it is {_mm(at)} mm there and ranges {_mm(lo)} … {_mm(hi)} mm "
+          f"over the angles asked: {'; '.join(fix_en)}")
+    zh = (f"{{where}}：两杆 {group.b}{group.c} = {_mm(l1)} mm、{group.d}{group.c} = {_mm(l2)} mm "
+          f"只在 |{group.b}{group.d}| 介于 {_mm(abs(l1 - l2))} 与 {_mm(l1 + l2)} mm 之间时能闭合，"
+          f"而该处为 {_mm(at)} mm，所给转角内变化范围 {_mm(lo)} … {_mm(hi)} mm：{'；'.join(fix_zh)}")
+    return "assembly", en, zh, {"l1": l1, "l2": l2, "min": lo, "max": hi}
+
+
+def _rrp_reach(group, h: np.ndarray, bad: np.ndarray):
+    L, hi = group.length, float(np.max(h))
+    en = (f"{{where}}: the rod {group.b}{group.c} = {_mm(L)} mm cannot reach the guide, from which "
+          f"{group.b} is {_mm(float(h[bad][0]))} mm away there (up to {_mm(hi)} mm over the angles "
+          f"asked): lengthen the rod to at least {_mm(hi)} mm or move the guide closer")
+    zh = (f"{{where}}：连杆 {group.b}{group.c} = {_mm(L)} mm 够不到导路，该处 {group.b} 距导路 "
+          f"{_mm(float(h[bad][0]))} mm（所给转角内最大 {_mm(hi)} mm）：应将连杆加长到至少 "
+          f"{_mm(hi)} mm，或使导路靠近")
+    return "assembly", en, zh, {"length": L, "max": hi}
+
+
+def _rpr_reach(group, dist: np.ndarray, bad: np.ndarray):
+    off, lo = abs(group.offset), float(np.min(dist))
+    en = (f"{{where}}: the slider's path is offset {_mm(off)} mm from the bar's axis, but "
+          f"{group.a} comes within {_mm(lo)} mm of the pivot {group.pivot}: reduce the offset to "
+          f"at most {_mm(lo)} mm")
+    zh = (f"{{where}}：滑块导路相对导杆轴线偏距 {_mm(off)} mm，而 {group.a} 与转动中心 "
+          f"{group.pivot} 的最近距离只有 {_mm(lo)} mm：应将偏距减小到 {_mm(lo)} mm 以内")
+    return "assembly", en, zh, {"offset": off, "min": lo}

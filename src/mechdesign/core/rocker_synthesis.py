@@ -184,13 +184,14 @@ def sweep(ds: RockerDesign, n: int = 721, alpha=None) -> Sweep:
 
 def _check_data(frame, output_rocker, dalpha, dbeta):
     if not (np.isfinite(frame) and frame > 0):
-        raise SynthesisError(f"frame length {frame} must be positive")
+        raise SynthesisError(f"frame length {frame} must be positive", f"机架长度 {frame} 须为正")
     if not (np.isfinite(output_rocker) and output_rocker > 0):
-        raise SynthesisError(f"output rocker length {output_rocker} must be positive")
-    for name, x in (("input swing", dalpha), ("output swing", dbeta)):
+        raise SynthesisError(f"output rocker length {output_rocker} must be positive",
+                             f"输出摇杆长度 {output_rocker} 须为正")
+    for name, zh, x in (("input swing", "输入摆角", dalpha), ("output swing", "输出摆角", dbeta)):
         if not (np.isfinite(x) and 0.0 < abs(x) < np.pi):
             raise SynthesisError(f"{name} {np.degrees(x):.6g}° must be between 0° and 180° "
-                                 "(a rocker)")
+                                 "(a rocker)", f"{zh} {np.degrees(x):.6g}° 须在 0° 与 180° 之间（摇杆）")
 
 
 def design_two_position(frame: float, output_rocker: float, alpha1: float, dalpha: float,
@@ -202,22 +203,30 @@ def design_two_position(frame: float, output_rocker: float, alpha1: float, dalph
     a, b = (float(x) for x in two_position(frame, output_rocker, alpha1, dalpha, beta1, dbeta))
     where = (f"with the input rocker starting at {np.degrees(alpha1):.6g}° and the output "
              f"at {np.degrees(beta1):.6g}°")
+    where_zh = f"输入摇杆起始角 {np.degrees(alpha1):.6g}°、输出摇杆起始角 {np.degrees(beta1):.6g}° 时"
     if not (np.isfinite(a) and a > 0):
         raise SynthesisError(f"{where} the loop equations give an input rocker of "
-                             f"{a * 1e3:.6g} mm (not a positive length): choose other start angles")
+                             f"{a * 1e3:.6g} mm (not a positive length): choose other start angles",
+                             f"两位置综合无实解：{where_zh}，封闭方程给出输入摇杆长 {a * 1e3:.6g} mm"
+                             "（不是正的长度）：应另选起始角")
     branch = branch_of((frame, a, output_rocker), alpha1, beta1)
     ds = RockerDesign(frame, a, b, output_rocker, float(alpha1), float(dalpha), float(beta1),
                       float(dbeta), branch)
     sw = sweep(ds, n)
     if not sw.assembled:
         raise SynthesisError(f"{where} (a = {a * 1e3:.6g} mm, b = {b * 1e3:.6g} mm) the linkage "
-                             "cannot be assembled over the whole input swing")
+                             "cannot be assembled over the whole input swing",
+                             f"{where_zh}（a = {a * 1e3:.6g} mm，b = {b * 1e3:.6g} mm）机构在整个输入摆程内"
+                             "不能装配：应另选起始角")
     if abs(sw.beta[0] - beta1) > 1e-9 or not sw.monotonic or abs(sw.swing - dbeta) > 1e-7:
         raise SynthesisError(
             f"{where} (a = {a * 1e3:.6g} mm, b = {b * 1e3:.6g} mm) the two positions are not "
             f"joined by a one-way motion on one assembly branch (the output turns "
             f"{np.degrees(sw.swing):.6g}° instead of {np.degrees(dbeta):.6g}°, or reverses): "
-            "choose other start angles")
+            "choose other start angles",
+            f"{where_zh}（a = {a * 1e3:.6g} mm，b = {b * 1e3:.6g} mm）两个位置不能在同一装配方案上"
+            f"单向连续到达（输出摆过 {np.degrees(sw.swing):.6g}° 而不是 {np.degrees(dbeta):.6g}°，"
+            "或中途反向）：应另选起始角")
     return ds
 
 
@@ -266,7 +275,8 @@ def best_start(frame: float, output_rocker: float, dalpha: float, dbeta: float,
     _check_data(frame, output_rocker, dalpha, dbeta)
     lo, hi = length_bounds
     if not (0 < lo < hi):
-        raise SynthesisError(f"length bounds {lo * 1e3:.6g} … {hi * 1e3:.6g} mm are not an interval")
+        raise SynthesisError(f"length bounds {lo * 1e3:.6g} … {hi * 1e3:.6g} mm are not an interval",
+                             f"杆长范围 {lo * 1e3:.6g} … {hi * 1e3:.6g} mm 不是一个区间")
     grid = np.arange(0.0, TWO_PI, step)
     best = (-1.0, None)
     for a1 in np.array_split(grid, max(1, len(grid) // 30)):
@@ -283,7 +293,12 @@ def best_start(frame: float, output_rocker: float, dalpha: float, dbeta: float,
             f"no start position gives a valid linkage with the input rocker and the coupler "
             f"between {lo * 1e3:.6g} and {hi * 1e3:.6g} mm{extra} (frame {frame * 1e3:.6g} mm, "
             f"output rocker {output_rocker * 1e3:.6g} mm, swings {np.degrees(dalpha):.6g}° and "
-            f"{np.degrees(dbeta):.6g}°): widen the length range or relax the ratio limit")
+            f"{np.degrees(dbeta):.6g}°): widen the length range or relax the ratio limit",
+            f"综合无实解：输入摇杆与连杆长度在 {lo * 1e3:.6g} 与 {hi * 1e3:.6g} mm 之间"
+            + ("" if ratio_limit is None else f"且最大速比 |dβ/dα| ≤ {ratio_limit:.6g}")
+            + f"时，没有任何起始位置能得到可用的机构（机架 {frame * 1e3:.6g} mm，输出摇杆 "
+            f"{output_rocker * 1e3:.6g} mm，摆角 {np.degrees(dalpha):.6g}° 与 {np.degrees(dbeta):.6g}°）："
+            "应放宽杆长范围或速比限制")
     g_best, x = best[0], np.array(best[1])
     h = step
     offsets = np.arange(-4, 5)

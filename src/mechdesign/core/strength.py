@@ -246,7 +246,9 @@ def worm_contact_coefficient(d1_over_a: float) -> float:
         raise DriveDesignError(
             f"worm pair: d1/a = {x:.3f} is outside the contact-coefficient chart (0.2–0.55); "
             "change the diameter factor q or the wheel's teeth z2 (d1/a = q/(q + z2) for x = 0), "
-            "or the stage's ratio")
+            "or the stage's ratio",
+            f"蜗杆传动：d1/a = {x:.3f} 超出接触系数线图范围（0.2–0.55）；应改变直径系数 q 或蜗轮齿数 z2"
+            "（x = 0 时 d1/a = q/(q + z2)），或该级传动比")
     return 8.809524 * x * x - 9.583333 * x + 5.177143
 
 

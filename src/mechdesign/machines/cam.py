@@ -85,7 +85,9 @@ def design(p) -> CamResult:
     if designed:
         if min_r0 is None:
             raise core.CamDesignError("cam.base_radius_mm: 'auto' cannot be met: no base radius keeps "
-                                      "the pressure angle within the limits; give a base radius")
+                                      "the pressure angle within the limits; give a base radius",
+                                      "cam.base_radius_mm：无法自动确定（auto）：没有任何基圆半径能使"
+                                      "压力角不超过许用值；请直接给出基圆半径")
         r0 = float(np.ceil(min_r0 * 1e3 - 1e-9) / 1e3)          # whole millimetres, upwards
         if fol.kind == "roller":
             r0 = max(r0, float(np.ceil((fol.roller_radius + p.min_actual_curvature) * 1e3) / 1e3))

@@ -127,17 +127,22 @@ def _describe(label, design, a_pivot, p, gamma_allowed) -> Design:
     warnings = []
     zh, en = label.split(" / ", 1) if " / " in label else (label, label)
     if not (ok and kind == "crank-rocker"):
+        sums_en, sums_zh = fb.grashof_sums(design)
         warnings.append(Finding(
-            "grashof", f"{zh}：杆长不满足曲柄存在条件（{kind}），曲柄不能整周转动。",
-            f"{en}: the lengths fail Grashof's crank condition ({kind}); the crank cannot turn fully."))
+            "grashof", f"{zh}：杆长不满足曲柄存在条件（{kind}；{sums_zh}），曲柄不能整周转动；"
+            "应使最短杆为曲柄且最短杆 + 最长杆 ≤ 其余两杆之和。",
+            f"{en}: the lengths fail Grashof's crank condition ({kind}; {sums_en}); the crank "
+            "cannot turn fully: the crank must be the shortest link and shortest + longest ≤ the "
+            "other two."))
     if gmin < gamma_allowed:
         warnings.append(Finding(
             "transmission_angle",
             f"{zh}：最小传动角 γmin = {gmin * DEG:.2f}° 小于许用值 [γ] = {gamma_allowed * DEG:.0f}°；"
-            "减小摇杆摆角 ψ 或行程速比系数 K 可提高 γmin（见设计线图）。",
+            "减小摇杆摆角 ψ（rocker_swing_deg）或行程速比系数 K（time_ratio_K 或 extreme_angle_deg）"
+            "可提高 γmin（见设计线图）。",
             f"{en}: the minimum transmission angle γmin = {gmin * DEG:.2f}° is below the allowed "
-            f"[γ] = {gamma_allowed * DEG:.0f}°; a smaller swing ψ or time ratio K raises γmin "
-            "(see the design chart)."))
+            f"[γ] = {gamma_allowed * DEG:.0f}°; a smaller swing ψ (rocker_swing_deg) or time ratio "
+            "K (time_ratio_K or extreme_angle_deg) raises γmin (see the design chart)."))
     return Design(label, design, a_pivot, p, gmin, gmax, theta, swing, kind, warnings)
 
 
@@ -171,10 +176,11 @@ def slider_stage(r: dict) -> SliderResult:
         warnings.append(Finding(
             "pressure_angle",
             f"偏置曲柄滑块机构：工作行程（慢行程）最大压力角 {slow * DEG:.2f}° 大于许用值 "
-            f"{allowed * DEG:.0f}°；改变偏距 e 或减小 K。",
+            f"{allowed * DEG:.0f}°；改变偏距 e（slider_crank.offset_e_mm）或减小 K"
+            "（slider_crank.time_ratio_K）。",
             f"offset slider-crank: the largest pressure angle of the working (slow) stroke, "
             f"{slow * DEG:.2f}°, exceeds the allowed {allowed * DEG:.0f}°; change the offset e "
-            "or reduce K."))
+            "(slider_crank.offset_e_mm) or reduce K (slider_crank.time_ratio_K)."))
     return SliderResult(cons, a, b, sp.offset, sp.stroke, sp.K, sp.theta, slow, fast, allowed,
                         warnings)
 
@@ -271,7 +277,9 @@ def simulate_four_bar(label: str, design: fb.FourBar, a_pivot: complex, branch: 
     roots = _refine_roots(w_at, phi, w4)
     if len(roots) != 2:
         raise fb.SynthesisError(f"{label}: the simulated rocker has {len(roots)} extreme positions "
-                                "per revolution, not 2: it is not a crank-rocker")
+                                "per revolution, not 2: it is not a crank-rocker",
+                                f"{label}：仿真得到摇杆每转有 {len(roots)} 个极位而不是 2 个："
+                                "它不是曲柄摇杆机构")
     ends = mech.solve(np.array(roots))
     ang = rel(ends.links["4"].angle)
     i_max = int(np.argmax(ang))
@@ -312,7 +320,8 @@ def simulate_slider(res: SliderResult, omega: float, n: int) -> SliderSimulation
         return float(mech.solve(np.array([x])).slides["4"].ds[0])
     roots = _refine_roots(ds_at, phi, ds)
     if len(roots) != 2:
-        raise fb.SynthesisError(f"the simulated slider has {len(roots)} dead centres, not 2")
+        raise fb.SynthesisError(f"the simulated slider has {len(roots)} dead centres, not 2",
+                                f"仿真得到滑块有 {len(roots)} 个死点而不是 2 个")
     ends = mech.solve(np.array(roots)).slides["4"].s
     i_max = int(np.argmax(ends))
     phi_max, phi_min = roots[i_max], roots[1 - i_max]

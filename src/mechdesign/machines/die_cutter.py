@@ -71,7 +71,9 @@ def toggle_swing(g: PressGeometry) -> float:
     if eps >= beta_max:
         raise fourbar.SynthesisError(
             f"toggle_angle_at_top_deg = {eps * DEG:g}° leaves no swing (the toggle lies flat at "
-            f"{beta_max * DEG:.3g}°)")
+            f"{beta_max * DEG:.3g}°): make it smaller than {beta_max * DEG:.3g}°",
+            f"toggle_angle_at_top_deg = {eps * DEG:g}° 使肘杆无法摆动（肘杆在 {beta_max * DEG:.3g}° "
+            f"处已躺平）：应小于 {beta_max * DEG:.3g}°")
     top = float(toggle_height(eps, lt, ld))
     h_max = top - float(toggle_height(beta_max, lt, ld))
     # the rocker must swing less than the crank-rocker allows; keep ψ below 120° in any case
@@ -81,7 +83,9 @@ def toggle_swing(g: PressGeometry) -> float:
         raise fourbar.SynthesisError(
             f"stroke_H_mm = {H * 1e3:g} cannot be reached: toggle links CB = {lt * 1e3:g} mm and "
             f"BD = {ld * 1e3:g} mm give at most {min(h_max, h_cap) * 1e3:.4g} mm; lengthen CB or "
-            "reduce the stroke")
+            "reduce the stroke",
+            f"stroke_H_mm = {H * 1e3:g} 无法实现：肘杆 CB = {lt * 1e3:g} mm、BD = {ld * 1e3:g} mm "
+            f"最多只能得到 {min(h_max, h_cap) * 1e3:.4g} mm 的行程；应加长 CB 或减小行程")
     return float(brentq(lambda psi: top - float(toggle_height(eps + psi, lt, ld)) - H,
                         1e-12, psi_cap, xtol=1e-15, rtol=4 * np.finfo(float).eps))
 
@@ -125,8 +129,13 @@ def toggle_synthesis(g: PressGeometry) -> ToggleDesign:
     four = fourbar.FourBar(a, b, lt, d)
     ok, kind = fourbar.grashof(four)
     if not (ok and kind == "crank-rocker"):
-        raise fourbar.SynthesisError(f"the four-bar O1ABC comes out a {kind}, not a crank-rocker; "
-                                     "change K or the toggle lengths")
+        en, zh = fourbar.grashof_sums(four)
+        raise fourbar.SynthesisError(
+            f"the crank cannot make a full turn (Grashof): the four-bar O1ABC comes out a {kind}, "
+            f"not a crank-rocker ({en}); change K (time_ratio_K) or the toggle lengths "
+            "(toggle_CB_mm), or give another frame",
+            f"曲柄不能整周转动（不满足曲柄存在条件 / Grashof）：四杆机构 O1ABC 成为{kind}而不是曲柄摇杆机构"
+            f"（{zh}）；应改变 K（time_ratio_K）或肘杆长度（toggle_CB_mm），或另给机架长度")
     gmin, gmax = fourbar.transmission_angle_extremes(four)
     top, other = (cons.c2, cons.c1) if g.top_position == "extended" else (cons.c1, cons.c2)
     rot = np.exp(1j * (np.pi / 2 - np.angle(top)))
@@ -180,7 +189,15 @@ def build_press(d: ToggleDesign, p: DieCutterParams) -> LinkageModel:
         bodies=tuple(bodies), resistances=(cut,), grid_points=p.grid_points,
         position_step=p.position_step, gravity=p.gravity, flywheel=None,
         pressure_angle_limit=p.pressure_angle_max, transmission_angle_min=p.transmission_angle_min,
-        names=names)
+        names=names, advice={
+            "pressure": ("任务书字段：加长 press.toggle_BD_mm，或减小 press.toggle_angle_at_top_deg",
+                         "brief fields: a longer press.toggle_BD_mm or a smaller "
+                         "press.toggle_angle_at_top_deg"),
+            "transmission": ("任务书字段：减小 press.time_ratio_K，加长 press.toggle_CB_mm（摆角更小），"
+                             "或去掉 press.frame_O1C_mm 以取传动角最大的机架",
+                             "brief fields: a smaller press.time_ratio_K, a longer press.toggle_CB_mm "
+                             "(a smaller swing), or no press.frame_O1C_mm (the frame with the "
+                             "largest transmission angle)")})
 
 
 def synthesis(p: DieCutterParams) -> tuple[ToggleDesign, LinkageModel]:

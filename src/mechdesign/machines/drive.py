@@ -186,6 +186,7 @@ def design_drive(dp, machine_power: float, output_rpm: float, source: str,
                 f"第 {st.index + 1} 级{st.name_zh}传动比 {st.ratio:.3f} 超出其最大值 {el.ratio_max:g}。",
                 f"stage {st.index + 1} ({st.name_en}) ratio {st.ratio:.3f} exceeds its maximum "
                 f"{el.ratio_max:g}."))
+    warnings.extend(undercut_findings(results))
     return DriveResult(output_rpm, machine_power, source, eta, p_d, choice, tuple(results),
                        tuple(shafts), n_out, error, dp.speed_tolerance, dp.service_hours, dp.KA,
                        dp.bearing_eff, dp.machine_eff, peak_factor, peak_from_shaft,
@@ -206,6 +207,50 @@ def _shafts(dp, results, shafts, peak_factor, peak_from_shaft):
 
     names = [(r.name_zh, r.name_en) for r in results]
     return ds.shaft_designs(dp, [r.design for r in results], shafts, peak_factor, peak_from_shaft, names)
+
+
+def undercut_findings(results) -> list[Finding]:
+    """Undercut gear stages (根切): a spur pinion or wheel below z_min = 2h_a*/sin²α with a
+    shift x below x_min = h_a*(z_min − z)/z_min, a helical one whose equivalent tooth number
+    z/cos³β is below z_min (the drive's helical gears are not shifted)."""
+    import math
+
+    out = []
+    for r in results:
+        d = r.design
+        if d is None or d.kind != "gear" or d.geometry is None:
+            continue
+        here = f"drive.stages[{r.index}]"
+        g = d.geometry
+        if hasattr(g, "x_min1"):
+            for name, gd, x_min, key in (("小齿轮", g.g1, g.x_min1, "1"), ("大齿轮", g.g2, g.x_min2, "2")):
+                if gd.x < x_min - 1e-9:
+                    who_en = "pinion" if key == "1" else "wheel"
+                    out.append(Finding(
+                        "undercut",
+                        f"第 {r.index + 1} 级{r.name_zh}{name}（z{key} = {gd.z}）根切：z{key} < z_min = "
+                        f"{g.z_min:.1f} 且 x{key} = {gd.x:g} < x_min = {x_min:.3f}；应将 {here}.x{key} 取为 "
+                        f"≥ {x_min:.3f}（正变位）或把 {here}.z{key} 增加到 ≥ {math.ceil(g.z_min - 1e-9)}。",
+                        f"stage {r.index + 1} ({r.name_en}): the {who_en} (z{key} = {gd.z}) is undercut: "
+                        f"z{key} < z_min = {g.z_min:.1f} and x{key} = {gd.x:g} < x_min = {x_min:.3f}; set "
+                        f"{here}.x{key} ≥ {x_min:.3f} (a positive shift) or {here}.z{key} ≥ "
+                        f"{math.ceil(g.z_min - 1e-9)}."))
+        elif hasattr(g, "beta"):
+            z_min = 2.0 / math.sin(math.radians(20.0)) ** 2
+            for key, z in (("1", r.z1), ("2", r.z2)):
+                if z is None:
+                    continue
+                zv = z / math.cos(g.beta) ** 3
+                if zv < z_min - 1e-9:
+                    need = math.ceil(z_min * math.cos(g.beta) ** 3 - 1e-9)
+                    out.append(Finding(
+                        "undercut",
+                        f"第 {r.index + 1} 级{r.name_zh}：z{key} = {z} 的当量齿数 z_v = z/cos³β = {zv:.2f} "
+                        f"< z_min = {z_min:.1f}，齿轮根切；应把 {here}.z{key} 增加到 ≥ {need}，或增大螺旋角。",
+                        f"stage {r.index + 1} ({r.name_en}): z{key} = {z} has the equivalent tooth number "
+                        f"z_v = z/cos³β = {zv:.2f} < z_min = {z_min:.1f}, so the gear is undercut; set "
+                        f"{here}.z{key} ≥ {need} or use a larger helix angle."))
+    return out
 
 
 def _strength_warnings(results, shaft_designs) -> tuple[Finding, ...]:

@@ -250,7 +250,9 @@ def synthesize(pp: PusherParams) -> PusherSynthesis:
     if not H < 2.0 * R:
         raise fb.SynthesisError(
             f"pusher.stroke_H_mm = {H * 1e3:g} mm needs a rocker DC longer than H/2: the chord of "
-            f"C's arc cannot exceed 2·DC = {2 * R * 1e3:g} mm (pusher.rocker_DC_mm)")
+            f"C's arc cannot exceed 2·DC = {2 * R * 1e3:g} mm (pusher.rocker_DC_mm)",
+            f"pusher.stroke_H_mm = {H * 1e3:g} mm 要求摇杆 DC 长于 H/2：C 点圆弧的弦长不能超过 "
+            f"2·DC = {2 * R * 1e3:g} mm（pusher.rocker_DC_mm）")
     swing = 2.0 * np.arcsin(H / (2.0 * R))
     theta = float(extreme_angle(pp.time_ratio_K))
     sag = R * (1.0 - np.cos(swing / 2.0))
@@ -259,12 +261,18 @@ def synthesize(pp: PusherParams) -> PusherSynthesis:
         raise fb.SynthesisError(
             f"pusher.link_CE_mm = {L * 1e3:g} mm is too short: C's arc has a sagitta of "
             f"{sag * 1e3:.4g} mm, so CE must be at least {sag / 2 / np.sin(pp.pressure_angle_max) * 1e3:.4g} mm "
-            f"for a pressure angle at E within {np.degrees(pp.pressure_angle_max):g}°")
+            f"for a pressure angle at E within {np.degrees(pp.pressure_angle_max):g}°",
+            f"pusher.link_CE_mm = {L * 1e3:g} mm 太短：C 点圆弧的弓高为 {sag * 1e3:.4g} mm，要使 E 点压力角"
+            f"不超过 {np.degrees(pp.pressure_angle_max):g}°，CE 至少须为 "
+            f"{sag / 2 / np.sin(pp.pressure_angle_max) * 1e3:.4g} mm")
     if abs(pp.guide_offset) > off_max:
         raise fb.SynthesisError(
             f"pusher.guide_offset_mm = {pp.guide_offset * 1e3:g} mm puts the pressure angle at E "
             f"above {np.degrees(pp.pressure_angle_max):g}°: allowed |offset| ≤ {off_max * 1e3:.4g} mm "
-            f"(CE·sin[α] − f/2 with the sagitta f = {sag * 1e3:.4g} mm)")
+            f"(CE·sin[α] − f/2 with the sagitta f = {sag * 1e3:.4g} mm)",
+            f"pusher.guide_offset_mm = {pp.guide_offset * 1e3:g} mm 使 E 点压力角超过 "
+            f"{np.degrees(pp.pressure_angle_max):g}°：允许 |偏距| ≤ {off_max * 1e3:.4g} mm"
+            f"（CE·sin[α] − f/2，弓高 f = {sag * 1e3:.4g} mm）")
     c = pp.rocker_ratio * R
     limit = (np.pi / 2 - pp.pressure_angle_max) if pp.limit_rocker else None
     circles = {s: _circle(theta, swing, c, s) for s in (+1, -1)}
@@ -284,7 +292,10 @@ def synthesize(pp: PusherParams) -> PusherSynthesis:
             raise fb.SynthesisError(
                 f"pusher.frame_O1D_mm = {pp.frame * 1e3:g} mm: no crank-rocker with θ = {np.degrees(theta):.4g}°, "
                 f"ψ = {np.degrees(swing):.4g}° and DB = {c * 1e3:.5g} mm has this frame; it must lie in "
-                f"{' or '.join(ranges)} (exclusive), or use auto")
+                f"{' or '.join(ranges)} (exclusive), or use auto",
+                f"pusher.frame_O1D_mm = {pp.frame * 1e3:g} mm：θ = {np.degrees(theta):.4g}°、"
+                f"ψ = {np.degrees(swing):.4g}°、DB = {c * 1e3:.5g} mm 的曲柄摇杆机构不可能有此机架长度；"
+                f"机架长度须在 {' 或 '.join(ranges)} 之内（不含端点），或用 auto")
         cons = circles[side]
         criterion, active = "frame", False
         g_free = _best_on_circle(cons, None)[1]
@@ -305,7 +316,11 @@ def synthesize(pp: PusherParams) -> PusherSynthesis:
                 f"{pp.time_ratio_K:g} (θ = {np.degrees(theta):.4g}°) and the swing ψ = {np.degrees(swing):.4g}° "
                 f"the four-bar's pressure angle at B in the working stroke cannot be below "
                 f"{90 - np.degrees(best_work):.4g}°; raise the limit or set "
-                "pusher.limit_rocker_pressure_angle: false")
+                "pusher.limit_rocker_pressure_angle: false",
+                f"pusher.pressure_angle_max_deg = {np.degrees(pp.pressure_angle_max):g}°：K = "
+                f"{pp.time_ratio_K:g}（θ = {np.degrees(theta):.4g}°）、摆角 ψ = {np.degrees(swing):.4g}° 时，"
+                f"四杆机构工作行程中 B 点的压力角不可能低于 {90 - np.degrees(best_work):.4g}°；"
+                "应提高许用值，或设 pusher.limit_rocker_pressure_angle: false")
         side = max(found, key=lambda s: found[s][1])
         p, _, active, _ = found[side]
         cons = circles[side]
@@ -401,7 +416,14 @@ def build_model(syn: PusherSynthesis, p: FurnaceParams) -> LinkageModel:
         resistances=(Resistance(SLIDER, "E", guide, pp.working_force, pp.return_force),),
         grid_points=p.grid_points, position_step=p.position_step, gravity=p.gravity,
         flywheel=None, pressure_angle_limit=pp.pressure_angle_max,
-        transmission_angle_min=pp.transmission_angle_min, names=dict(LINK_NAMES))
+        transmission_angle_min=pp.transmission_angle_min, names=dict(LINK_NAMES), advice={
+            "pressure": ("任务书字段：加长 pusher.link_CE_mm，或使 pusher.guide_offset_mm 接近 0",
+                         "brief fields: a longer pusher.link_CE_mm, or pusher.guide_offset_mm "
+                         "closer to 0"),
+            "transmission": ("任务书字段：减小 pusher.time_ratio_K，或增大摆角（pusher.stroke_H_mm / "
+                             "pusher.rocker_DC_mm），pusher.frame_O1D_mm 取 auto",
+                             "brief fields: a smaller pusher.time_ratio_K or a larger swing "
+                             "(pusher.stroke_H_mm / pusher.rocker_DC_mm), pusher.frame_O1D_mm: auto")})
 
 
 def synthesis_stage(r: dict):

@@ -22,16 +22,22 @@ class GearResult:
     warnings: tuple[Finding, ...]
 
 
-def gear_findings(g: gears.SpurPair) -> tuple[Finding, ...]:
+def gear_findings(g: gears.SpurPair, prefix: str = "gear_pair") -> tuple[Finding, ...]:
+    """The pair's findings; ``prefix`` is the brief section the fields to change are in."""
+    import math
+
     out = []
     for name, gd, x_min in (("1", g.g1, g.x_min1), ("2", g.g2, g.x_min2)):
         if gd.x < x_min - 1e-9:
+            need = math.ceil(g.z_min - 1e-9)
             out.append(Finding(
                 "undercut",
-                f"齿轮 {name}（z = {gd.z}）根切：z < z_min = {g.z_min:.1f} 且 x = {gd.x:g} < x_min = "
-                f"{x_min:.3f}；应正变位 x ≥ {x_min:.3f} 或增加齿数。",
-                f"gear {name} (z = {gd.z}) is undercut: z < z_min = {g.z_min:.1f} and x = {gd.x:g} < "
-                f"x_min = {x_min:.3f}; use a positive shift x ≥ {x_min:.3f} or more teeth."))
+                f"齿轮 {name}（z = {gd.z}）根切：z < z_min = 2h_a*/sin²α = {g.z_min:.1f} 且 x = {gd.x:g} "
+                f"< x_min = h_a*(z_min − z)/z_min = {x_min:.3f}；应正变位 {prefix}.x{name} ≥ {x_min:.3f}，"
+                f"或把 {prefix}.z{name} 增加到 ≥ {need}。",
+                f"gear {name} (z = {gd.z}) is undercut: z < z_min = 2h_a*/sin²α = {g.z_min:.1f} and "
+                f"x = {gd.x:g} < x_min = h_a*(z_min − z)/z_min = {x_min:.3f}; use a positive shift "
+                f"{prefix}.x{name} ≥ {x_min:.3f} or {prefix}.z{name} ≥ {need}."))
         if gd.sa < MIN_TIP_THICKNESS * g.m:
             out.append(Finding(
                 "pointed",

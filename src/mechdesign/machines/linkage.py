@@ -83,6 +83,8 @@ class LinkageModel:
     pressure_angle_limit: float | None = None   # [rad], checked over the working stroke
     transmission_angle_min: float | None = None  # [rad], checked over the whole cycle
     names: dict = field(default_factory=dict)    # link id → (name_zh, name_en), optional
+    advice: dict = field(default_factory=dict)   # "pressure"/"transmission" → (zh, en): the
+    #                                              brief fields to change, added to the finding
 
     @property
     def crank(self) -> Crank:
@@ -433,29 +435,64 @@ def verify(model: LinkageModel, k: LinkageMotion, m: Motion, f: LinkageForces | 
         warnings=tuple(quality_findings(model, k)))
 
 
+def _four_bar_of(model: LinkageModel, group_name: str):
+    """(a, b, c, d) [m] when the RRR group ``group_name`` closes a four-bar with the crank
+    (one end on the crank pin, the other on the frame), else None."""
+    mech = model.mechanism
+    crank = mech.groups[0] if mech.groups and isinstance(mech.groups[0], Crank) else None
+    for g in mech.groups:
+        if crank is None or not isinstance(g, RRR) or g.name != group_name:
+            continue
+        for tip, fixed, b, c in ((g.b, g.d, g.l1, g.l2), (g.d, g.b, g.l2, g.l1)):
+            if tip == crank.tip and fixed in mech.frame_points:
+                d = abs(mech.frame_points[fixed] - mech.frame_points[crank.pivot])
+                return crank.length, b, c, d
+    return None
+
+
 def quality_findings(model: LinkageModel, k: LinkageMotion) -> list[Finding]:
     """Pressure angle over the working stroke and transmission angle over the cycle
-    against the model's limits."""
+    against the model's limits, each saying what to change (``model.advice`` adds the
+    brief's fields)."""
     found = []
     deg = 180.0 / np.pi
+
+    def extra(kind):
+        zh, en = model.advice.get(kind, ("", ""))
+        return (f"（{zh}）" if zh else ""), (f" ({en})" if en else "")
+
     for q in k.quality:
         if q.kind == "pressure" and model.pressure_angle_limit is not None \
                 and q.working_extreme > model.pressure_angle_limit + 1e-9:
+            zh, en = extra("pressure")
             found.append(Finding(
                 "pressure_angle",
                 f"{q.group}：工作行程最大压力角 {q.working_extreme * deg:.2f}° 超过许用值 "
-                f"{model.pressure_angle_limit * deg:.1f}°；应加长连杆或调整导路位置",
+                f"{model.pressure_angle_limit * deg:.1f}°；应加长连杆或调整导路位置{zh}",
                 f"{q.group}: the largest pressure angle in the working stroke, "
                 f"{q.working_extreme * deg:.2f}°, exceeds the allowed "
-                f"{model.pressure_angle_limit * deg:.1f}°; lengthen the rod or move the guide"))
+                f"{model.pressure_angle_limit * deg:.1f}°; lengthen the rod or move the guide{en}"))
         if q.kind == "transmission" and model.transmission_angle_min is not None \
                 and q.extreme < model.transmission_angle_min - 1e-9:
+            zh, en = extra("transmission")
+            fix_zh, fix_en = "应调整杆长", "change the link lengths"
+            four = _four_bar_of(model, q.group)
+            if four is not None:
+                # γ at the two crank–frame collinear positions is balanced (γmin largest for
+                # these a, d) when b² + c² = a² + d²; a shorter crank raises both.
+                a, b, c, d = (x * 1e3 for x in four)
+                fix_zh = (f"应缩短曲柄（a = {a:.6g} mm），并使 b² + c² 接近 a² + d²"
+                          f"（现为 {b * b + c * c:.6g} 与 {a * a + d * d:.6g} mm²，相等时两个极限位置的"
+                          "传动角相同）")
+                fix_en = (f"shorten the crank (a = {a:.6g} mm) and bring b² + c² close to a² + d² "
+                          f"(now {b * b + c * c:.6g} and {a * a + d * d:.6g} mm²; when equal, the "
+                          "transmission angles at the two crank–frame collinear positions are the same)")
             found.append(Finding(
                 "transmission_angle",
                 f"{q.group}：最小传动角 {q.extreme * deg:.2f}° 小于许用值 "
-                f"{model.transmission_angle_min * deg:.1f}°；应调整杆长",
+                f"{model.transmission_angle_min * deg:.1f}°；{fix_zh}{zh}",
                 f"{q.group}: the minimum transmission angle {q.extreme * deg:.2f}° is below "
-                f"the allowed {model.transmission_angle_min * deg:.1f}°; change the link lengths"))
+                f"the allowed {model.transmission_angle_min * deg:.1f}°; {fix_en}{en}"))
     return found
 
 
@@ -551,10 +588,54 @@ def linkage_params(brief):
     """The generic brief's SI model."""
     from ..brief.linkage import linkage_to_model
 
-    return linkage_to_model(brief.linkage, brief.analysis)
+    from dataclasses import replace
+
+    model = linkage_to_model(brief.linkage, brief.analysis)
+    return replace(model, advice={
+        "pressure": ("任务书字段：linkage.groups[…].length_mm、guide_point_mm",
+                     "brief fields: linkage.groups[…].length_mm, guide_point_mm"),
+        "transmission": ("任务书字段：linkage.crank.length_mm、linkage.groups[…].lengths_mm",
+                         "brief fields: linkage.crank.length_mm, linkage.groups[…].lengths_mm")})
+
+
+def brief_fields(section, group: str, code: str, prefix: str = "linkage") -> tuple[str, str]:
+    """The fields of a ``linkage:`` section to change for an assembly failure of the group
+    named ``group`` (diagnosis ``code``): (en, zh) sentences, empty when not found."""
+    for i, g in enumerate(section.groups):
+        default = {"RRR": f"RRR {getattr(g, 'joint', '')}", "RRP": f"RRP {getattr(g, 'joint', '')}",
+                   "RPR": f"RPR {getattr(g, 'slider_at', '')}"}.get(g.type, "")
+        if (g.name or default) != group:
+            continue
+        here = f"{prefix}.groups[{i}]"
+        crank = f"{prefix}.crank.length_mm"
+        fields = {"grashof": [f"{here}.lengths_mm", crank, f"{prefix}.frame_points_mm"],
+                  "slider_crank": [f"{here}.length_mm", crank, f"{here}.guide_point_mm"],
+                  "guide_bar": [f"{here}.offset_mm", crank, f"{prefix}.frame_points_mm"]}.get(code)
+        if fields is None:
+            fields = {"RRR": [f"{here}.lengths_mm"], "RRP": [f"{here}.length_mm", f"{here}.guide_point_mm"],
+                      "RPR": [f"{here}.offset_mm"]}.get(g.type, [here])
+        names = ", ".join(fields)
+        return f"(Brief fields: {names}.)", f"（任务书字段：{names}。）"
+    return "", ""
+
+
+def _motion_of_brief(r: dict):
+    """The motion stage of the ``linkage`` machine: an assembly failure also names the
+    brief's fields to change."""
+    from ..core.mechanism import AssemblyError
+
+    try:
+        return motion(r["params"])
+    except AssemblyError as exc:
+        brief = r.get("brief")
+        en, zh = ("", "") if brief is None else brief_fields(brief.linkage, exc.group, exc.code)
+        if en:
+            raise exc.with_hint(en, zh) from None
+        raise
 
 
 STAGES = linkage_stages(model_key="params")
+STAGES[0] = Stage(STAGES[0].key, STAGES[0].title, _motion_of_brief)
 
 
 def results_document(r: dict) -> dict:

@@ -143,6 +143,7 @@ def synthesise_bending(bp: BendingParams) -> BendingSynthesis:
     way). Raises SynthesisError when no sense gives a valid design."""
     senses = ("opposite", "same") if bp.sense == "auto" else (bp.sense,)
     cands = []
+    zh_of = {}
     for sense in senses:
         try:
             if bp.start is None:
@@ -157,9 +158,13 @@ def synthesise_bending(bp: BendingParams) -> BendingSynthesis:
             cands.append((sense, ds, float(g), ""))
         except SynthesisError as exc:
             cands.append((sense, None, 0.0, str(exc)))
+            zh_of[sense] = exc.text("zh")
     valid = [c for c in cands if c[1] is not None]
     if not valid:
-        raise SynthesisError("; ".join(f"output turning the {c[0]} way: {c[3]}" for c in cands))
+        way = {"same": "同向", "opposite": "反向"}
+        raise SynthesisError("; ".join(f"output turning the {c[0]} way: {c[3]}" for c in cands),
+                             "；".join(f"输出摇杆{way.get(c[0], c[0])}转动时：{zh_of.get(c[0], c[3])}"
+                                      for c in cands))
     best = max(valid, key=lambda c: c[2])
     return BendingSynthesis(best[1], best[2], best[0], tuple(cands))
 

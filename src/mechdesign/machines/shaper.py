@@ -13,7 +13,7 @@ import numpy as np
 from ..brief.shaper import ShaperParams
 from ..core import flywheel as fw
 from ..core.kinetostatics import Body, PointLoad, power_residual, solve_forces
-from ..core.mechanism import RPR, RRP, Crank, LinkPoint, Mechanism
+from ..core.mechanism import RPR, RRP, AssemblyError, Crank, LinkPoint, Mechanism
 from ..core.synthesis import GuideBarDesign, guide_bar_quick_return
 from ..pipeline import Stage
 from .cam import cam_document
@@ -138,7 +138,16 @@ def kinematics(syn: Synthesis, p: ShaperParams) -> tuple[Kinematics, Mechanism, 
     grid = np.arange(p.grid_points) * (2 * np.pi / p.grid_points)
     phase = np.concatenate([grid, pos.phase])
     crank_angle = start + sense * phase
-    motion = mech.solve(crank_angle)
+    try:
+        motion = mech.solve(crank_angle)
+    except AssemblyError as exc:
+        # The ram's rod must bridge half the sagitta of B's arc: L_BF ≥ L_O3B(1 − cos(ψ/2))/2.
+        need = (1.0 - np.cos(d.swing_angle / 2.0)) / 2.0
+        raise exc.with_hint(
+            f"(Brief field: linkage.rod_ratio_BF_O3B = {p.rod_ratio:g} must be at least "
+            f"(1 − cos(ψ/2))/2 = {need:.6g}.)",
+            f"（任务书字段：linkage.rod_ratio_BF_O3B = {p.rod_ratio:g}，须不小于 "
+            f"(1 − cos(ψ/2))/2 = {need:.6g}。）") from None
     x_pos = motion.points["F"].pos.real[len(grid):]
     x0 = x_pos[0]  # position 1
     x_end = x_pos[int(np.argmin(np.abs(pos.phase - working_span)))]  # the other extreme
@@ -301,8 +310,14 @@ def _drive(r: dict):
     peak = float(np.max(np.abs(mb)) / np.mean(mb))
     shafts = len(p.drive.stages)          # the crank shaft's index
     flywheel_shaft = shafts - 1 if p.flywheel_shaft == "pinion" else shafts
-    return design_drive(p.drive, fl.mean_power, p.crank_speed_rpm, "mechanism",
-                        peak, flywheel_shaft if flywheel_shaft < shafts else None)
+    from dataclasses import replace
+
+    result = design_drive(p.drive, fl.mean_power, p.crank_speed_rpm, "mechanism",
+                          peak, flywheel_shaft if flywheel_shaft < shafts else None)
+    # The last stage is gear_pair, whose undercut the gear stage reports with its own fields.
+    last = f"drive.stages[{shafts - 1}]"
+    return replace(result, warnings=tuple(w for w in result.warnings
+                                          if not (w.code == "undercut" and last in w.en)))
 
 
 def stages(params: ShaperParams) -> list[Stage]:
