@@ -259,10 +259,10 @@ def index_document(jobs: list[Job], results: list[dict], out_root: Path,
 
 
 def _cell(text: str) -> str:
-    """Text safe inside a Markdown table cell."""
-    import re
+    """Text safe inside a Markdown table cell (shown literally by any Markdown reader)."""
+    from .render.fmt import md_text
 
-    return re.sub(r"([\\`*_{}\[\]<>()#+!|$@~^&])", r"\\\1", str(text)).replace("\n", " ")
+    return md_text(str(text))
 
 
 def index_markdown(doc: dict, lang: str = "zh") -> str:

@@ -10,7 +10,7 @@ import numpy as np
 from ..core import cam as core
 from ..core.motion_laws import LAWS
 from . import cam_figures as cf
-from .fmt import e, f
+from .fmt import e, f, md_meta, md_text
 
 DEG = 180.0 / np.pi
 MM = 1e3
@@ -341,7 +341,7 @@ def cam_context(c, lang: str, figs: dict[str, str], csv_name: str) -> dict:
         "table_head": ["δ/°", f"{u.s_sym}/{u.s_unit}", f"{u.syms[0]}/({u.units[0]})",
                        "x/mm", "y/mm", "x_a/mm", "y_a/mm", "α/°"],
         "fig": figs, "csv": csv_name, "roller": fol.kind == "roller", "flat": fol.kind == "flat",
-        "warnings": [w.text(lang) for w in c.warnings],
+        "warnings": [md_text(w.text(lang)) for w in c.warnings],
         "alpha_max": f(alpha_max * DEG, 2),
         "rr": f(c.grid.roller_radius * MM, 2), "r0": f(c.base_radius * MM, 2),
         "time_derivs": bool(p.omega),
@@ -390,12 +390,12 @@ def make_figures(r: dict, fig_dir: Path, lang: str) -> dict[str, str]:
 
 def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
     c, v = r["cam"], r.get("cam_verification")
-    out = {"meta": brief.report, "cam": cam_context(c, lang, figures, "cam_profile.csv"),
+    out = {"meta": md_meta(brief.report), "cam": cam_context(c, lang, figures, "cam_profile.csv"),
            "envelope_note": envelope_note(c, lang, "cam_profile"),
            "verify_rows": [], "findings": [], "verify_note": ""}
     if v is not None:
         out.update(verify_rows=cam_verification_rows(v, c, lang),
-                   findings=[w.text(lang) for w in v.warnings],
+                   findings=[md_text(w.text(lang)) for w in v.warnings],
                    verify_note=_CAM_NOTE[lang])
     return out
 

@@ -17,7 +17,7 @@ import numpy as np
 
 from ..core import cycle as cy
 from . import cycle_figures as cf
-from .fmt import e, f
+from .fmt import e, f, md_paragraphs, md_text, mpl_text
 
 DEG = 180.0 / np.pi
 MM = 1e3
@@ -38,8 +38,9 @@ def _deg(x: float, digits: int = 1) -> str:
 
 
 def _phase_rows(cycle: cy.CycleDiagram, lang: str):
-    """Per actuator: (name, [(start°, span°, state, label), …])."""
-    return [(a.name(lang), [(p.start * DEG, p.span * DEG, p.state, p.name(lang)) for p in a.phases])
+    """Per actuator: (name, [(start°, span°, state, label), …]), names as figure text."""
+    return [(mpl_text(a.name(lang)),
+             [(p.start * DEG, p.span * DEG, p.state, mpl_text(p.name(lang))) for p in a.phases])
             for a in cycle.actuators]
 
 
@@ -114,12 +115,12 @@ def cycle_context(cycle: cy.CycleDiagram, lang: str, figs: dict[str, str], check
         for i, (ph, t0, dt) in enumerate(cycle.phase_times(a.key)):
             end = np.mod(ph.end, cy.TWO_PI) * DEG
             end = 360.0 if end < 1e-6 else end
-            rows.append([a.name(lang) if i == 0 else "", ph.name(lang),
+            rows.append([md_text(a.name(lang)) if i == 0 else "", md_text(ph.name(lang)),
                          f"{_deg(ph.start)} – {f(end, 1)}", _deg(ph.span), f(t0, 3), f(dt, 3)])
     ok_word, bad_word = _OK[lang]
     check_rows, failed = [], []
     for i, chk in enumerate(checks, 1):
-        text = constraint_text(cycle, chk.constraint, lang)
+        text = md_text(constraint_text(cycle, chk.constraint, lang))
         check_rows.append([str(i), text, _deg(chk.slack, 2), f(chk.slack / cycle.shaft_speed, 3),
                            ok_word if chk.ok else f"**{bad_word}**"])
         if not chk.ok:
@@ -159,17 +160,17 @@ def morphology_context(m, lang: str, level: int = 2, label: str = "morph") -> di
     align = "|:--|" + ":--|" * width
     rows, chosen = [], []
     for i, fn in enumerate(m.functions):
-        name = fn.name_zh if zh else fn.name_en
+        name = md_text(fn.name_zh if zh else fn.name_en)
         cells = []
         for j in range(width):
             if j >= len(fn.options):
                 cells.append("—")
                 continue
-            text = fn.options[j][0 if zh else 1]
+            text = md_text(fn.options[j][0 if zh else 1])
             cells.append(f"**{text}** ✓" if j == fn.chosen else text)
         rows.append([f"{chr(ord('A') + i)}. {name}" if i < 26 else name] + cells)
         chosen.append([f"{chr(ord('A') + i)}{fn.chosen + 1}" if i < 26 else str(fn.chosen + 1),
-                       name, fn.options[fn.chosen][0 if zh else 1]])
+                       name, md_text(fn.options[fn.chosen][0 if zh else 1])])
     counts = m.counts
     product = r" \times ".join(str(k) for k in counts)
     if len(set(counts)) == 1 and len(counts) > 1:
@@ -177,7 +178,7 @@ def morphology_context(m, lang: str, level: int = 2, label: str = "morph") -> di
     else:
         eq = rf"N = \prod_i k_i = {product} = {m.scheme_count}"
     code = " + ".join(c[0] for c in chosen)
-    reasons = m.reasons_zh if zh else m.reasons_en
+    reasons = md_paragraphs(m.reasons_zh if zh else m.reasons_en)
     return {"h": h, "h3": h3, "label": label, "head": head, "align": align, "rows": rows,
             "eq_count": eq, "count": str(m.scheme_count), "n_functions": str(len(counts)),
             "chosen": chosen, "code": code, "reasons": reasons}

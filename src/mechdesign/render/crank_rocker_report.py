@@ -9,7 +9,7 @@ import numpy as np
 
 from .figures import figure
 from .fmt import e as fe
-from .fmt import f
+from .fmt import f, md_meta, md_text, mpl_text
 
 DEG = 180.0 / np.pi
 MM = 1e3
@@ -156,7 +156,7 @@ def _motion(path: Path, lang: str, sims, allowed_deg, with_speed: bool):
         ax = axes[0]
         for i, s in enumerate(sims):
             x, y = _wrap(s.phi, s.gamma * DEG)
-            ax.plot(x, y, lw=1.6 if i == 0 else 0.9, color=f"C{i}", label=_name(s.label, lang))
+            ax.plot(x, y, lw=1.6 if i == 0 else 0.9, color=f"C{i}", label=mpl_text(_name(s.label, lang)))
         xg = float(_wrap([opt.phi_gamma_min])[0][0])
         ax.plot(xg, opt.gamma_min * DEG, "o", color="C3", ms=5)
         ax.annotate(f"γmin = {opt.gamma_min * DEG:.2f}°", (xg, opt.gamma_min * DEG),
@@ -359,7 +359,7 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
     designs = [best] + ([tb] if tb is not None else []) + list(r["compare"])
     cmp_rows = []
     for d, s in zip(designs, ver.sims):
-        cmp_rows.append([_name(s.label, lang), _mm(d.design.crank), _mm(d.design.coupler), _mm(d.design.rocker),
+        cmp_rows.append([md_text(_name(s.label, lang)), _mm(d.design.crank), _mm(d.design.coupler), _mm(d.design.rocker),
                          _mm(d.design.frame), _deg(s.theta, 4), _deg(s.swing, 4), f(s.K, 5),
                          _deg(s.gamma_min, 3)])
     spec_row = ["要求 specification" if zh else "specification", "", "", _mm(p.rocker, 4), "",
@@ -370,18 +370,18 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
         dth, dpsi = (s.theta - p.theta) * DEG, (s.swing - p.swing) * DEG
         dg = (best.gamma_min - s.gamma_min) * DEG
         if abs(dth) > 1e-6 or abs(dpsi) > 1e-6:
-            missing.append(_name(s.label, lang))
+            missing.append(md_text(_name(s.label, lang)))
         paper_notes.append(
-            f"{_name(s.label, lang)}：θ 偏差 {f(dth, 3)}°，ψ 偏差 {f(dpsi, 3)}°，γmin 比最优设计低 {f(dg, 3)}°"
+            f"{md_text(_name(s.label, lang))}：θ 偏差 {f(dth, 3)}°，ψ 偏差 {f(dpsi, 3)}°，γmin 比最优设计低 {f(dg, 3)}°"
             if zh else
-            f"{_name(s.label, lang)}: θ off by {f(dth, 3)}°, ψ off by {f(dpsi, 3)}°, γmin {f(dg, 3)}° below the optimum")
+            f"{md_text(_name(s.label, lang))}: θ off by {f(dth, 3)}°, ψ off by {f(dpsi, 3)}°, γmin {f(dg, 3)}° below the optimum")
     # verification rows: [item, result, reference, verdict]
     tol = 1e-9
     vrows = []
     for d, s in zip(designs, ver.sims):
         if d is not best and d is not tb:
             continue
-        name = _name(s.label, lang)
+        name = md_text(_name(s.label, lang))
         for item_zh, item_en, val, ref, err in (
                 ("仿真 K", "simulated K", f(s.K, 10), f(p.K, 10), s.K - p.K),
                 ("仿真 θ /°", "simulated θ /°", _deg(s.theta, 10), f(th_deg, 10), s.theta - p.theta),
@@ -444,7 +444,7 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
     for key in ("optimum", "textbook", "slider"):
         v = r.get(key)
         for w in getattr(v, "warnings", None) or ():
-            text = w.text(lang)
+            text = md_text(w.text(lang))
             if text not in findings:
                 findings.append(text)
     far = opt.far_side_gamma
@@ -464,7 +464,7 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
                  f"has {f(max(g1, g2), 2)}°): $\\gamma_{{min}}(t)$ has a smooth maximum at the optimum, "
                  "not the kink where the two collinear angles are equal.")
     return {
-        "meta": brief.report, "fig": figures, "data_rows": data_rows, "eq": eq,
+        "meta": md_meta(brief.report), "fig": figures, "data_rows": data_rows, "eq": eq,
         "K": f(p.K, 4), "theta": f(th_deg, 4), "psi": _deg(p.swing, 2), "l3": _mm(p.rocker, 2),
         "K_given": p.K_given,
         "opt": {"l1": _mm(best.design.crank), "l2": _mm(best.design.coupler),

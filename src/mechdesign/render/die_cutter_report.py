@@ -12,7 +12,7 @@ from pathlib import Path
 import numpy as np
 
 from . import figures as fig
-from .fmt import e, f
+from .fmt import e, f, md_meta, md_text
 
 DEG = 180.0 / np.pi
 MM = 1e3
@@ -468,7 +468,7 @@ def _findings(r, lang: str) -> list[str]:
     out = []
     for key in ("press_verification", "flywheel", "cam", "feed", "cycle"):
         for w in getattr(r.get(key), "warnings", None) or ():
-            text = w.text(lang)
+            text = md_text(w.text(lang))
             if text not in out:
                 out.append(text)
     drive = r["drive"].warnings
@@ -523,7 +523,7 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
         verify.append([row[0], row[1], "0", _ok(zh, abs(value) < 1e-6)])
     gear = r["feed"].gear
     return {
-        "meta": brief.report, "fig": figures,
+        "meta": md_meta(brief.report), "fig": figures,
         "rpm": f(p.shaft_rpm, 2), "period": f(60 / p.shaft_rpm, 3), "omega": f(abs(p.crank_omega), 4),
         "sense": ("顺时针" if p.crank_omega < 0 else "逆时针") if zh else
                  ("clockwise" if p.crank_omega < 0 else "counter-clockwise"),

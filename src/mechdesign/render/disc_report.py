@@ -9,14 +9,14 @@ import numpy as np
 
 from . import cam_figures as cf
 from .cam_report import CONTACT
-from .fmt import e, f
+from .fmt import e, f, md_meta, md_text, mpl_text
 
 DEG = 180.0 / np.pi
 MM = 1e3
 
 def make_figures(r: dict, fig_dir: Path, lang: str) -> dict[str, str]:
     d = r["disc"]
-    named = [(label, m.s * MM, m.pressure_angle * DEG)
+    named = [(mpl_text(label), m.s * MM, m.pressure_angle * DEG)
              for (label, _), m in zip(d.params.followers, d.motions)]
     cf.disc_curves(fig_dir / "disc_curves.png", lang, d.grid_delta * DEG, named)
     return {"curves": f"{fig_dir.name}/disc_curves.png"}
@@ -56,12 +56,12 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
                     rf" = \sqrt{{{f(Rp + ecc, 1)}^2 - {f(x, 1)}^2}} - \sqrt{{{f(Rp - ecc, 1)}^2 - "
                     rf"{f(x, 1)}^2}} = {f(m.stroke * MM, 4)}\ \text{{mm}}")
             a_eq = rf"\sin\alpha = \frac{{|e - C_x|}}{{R + r_r}},\quad R + r_r = {f(Rp, 1)}\ \text{{mm}}"
-        followers.append({"label": label, "desc": _describe(fol, lang), "y": y_eq, "h": h_eq, "alpha": a_eq,
+        followers.append({"label": md_text(label), "desc": _describe(fol, lang), "y": y_eq, "h": h_eq, "alpha": a_eq,
                           "stroke": f(m.stroke * MM, 4), "ymin": f(m.y_min * MM, 4),
                           "ymax": f(m.y_max * MM, 4),
                           "alpha_max": f(float(np.max(m.pressure_angle)) * DEG, 2)})
-    head = ["δ/°"] + [f"{label} s/mm" for label, _ in p.followers] + \
-        [f"{label} α/°" for label, _ in p.followers]
+    head = ["δ/°"] + [f"{md_text(label)} s/mm" for label, _ in p.followers] + \
+        [f"{md_text(label)} α/°" for label, _ in p.followers]
     rows = []
     for i, delta in enumerate(d.table_delta):
         rows.append([f(delta * DEG, 1)] + [f(t.s[i] * MM, 4) for t in d.tables] +
@@ -71,13 +71,13 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
         qrows.append([f(delta * DEG, 1)] + [f"{f(q.s[i] * MM, 3)} / {f(q.pressure_angle[i] * DEG, 2)}°"
                                             for q in d.queries])
     return {
-        "meta": brief.report, "fig": figures, "R": f(R, 1), "ecc": f(ecc, 1),
+        "meta": md_meta(brief.report), "fig": figures, "R": f(R, 1), "ecc": f(ecc, 1),
         "rotation": ("逆时针" if p.rotation > 0 else "顺时针") if zh else
                     ("counter-clockwise" if p.rotation > 0 else "clockwise"),
         "followers": followers, "table_head": head, "table_rows": rows,
         "table_align": "|".join(["--:"] * len(head)),
         "table_step": f(p.table_step * DEG, 1),
-        "query_head": ["δ/°"] + [label for label, _ in p.followers],
+        "query_head": ["δ/°"] + [md_text(label) for label, _ in p.followers],
         "query_align": "|".join([":-:"] * (1 + len(p.followers))),
         "query_rows": qrows,
         **verification_context(r.get("disc_verification"), lang),
@@ -107,7 +107,7 @@ def verification_context(v, lang: str) -> dict:
     zh = lang == "zh"
     rows = []
     for k in v.checks:
-        name = f"{k.detail.get('label', '')} " + DISC_CHECK_NAMES[k.key][0 if zh else 1]
+        name = f"{md_text(k.detail.get('label', ''))} " + DISC_CHECK_NAMES[k.key][0 if zh else 1]
         ok = ("满足" if zh else "ok") if k.passed else ("不满足" if zh else "fails")
         if k.key == "disc_s":
             rows.append([name, f"{e(k.value * MM)} mm", f"≤ {e(k.limit * MM)} mm", ok])
@@ -117,7 +117,7 @@ def verification_context(v, lang: str) -> dict:
             rows.append([name, f"{f(k.detail['stroke'] * MM, 6)} mm",
                          (f"解析 h = {f(k.reference * MM, 6)} mm" if zh else
                           f"closed form h = {f(k.reference * MM, 6)} mm"), ok])
-    return {"verify_rows": rows, "findings": [w.text(lang) for w in v.warnings],
+    return {"verify_rows": rows, "findings": [md_text(w.text(lang)) for w in v.warnings],
             "verify_note": _NOTE[lang]}
 
 

@@ -17,7 +17,11 @@ templates folder, both editable by students:
 Metadata keys (all optional): ``title``, ``subtitle``, ``student``,
 ``student_id``, ``class``, ``teacher``, ``date``, ``lang`` ("zh" or "en",
 default "zh") and a nested ``labels`` mapping as for the PDF
-(:data:`mechdesign.render.pdf.DEFAULT_LABELS`).
+(:data:`mechdesign.render.pdf.DEFAULT_LABELS`). Values are pandoc Markdown.
+
+Reproducible output: pandoc dates the file (document properties and ZIP entries) by
+``SOURCE_DATE_EPOCH``, which is set for the conversion to
+:func:`mechdesign.render.pdf.source_timestamp` (the brief's date, or a fixed date).
 """
 
 from __future__ import annotations
@@ -27,9 +31,10 @@ import os
 import re
 import tempfile
 import zipfile
+from contextlib import contextmanager
 from pathlib import Path
 
-from .pdf import DEFAULT_LABELS, MARKDOWN_FORMAT
+from .pdf import DEFAULT_LABELS, MARKDOWN_FORMAT, source_timestamp
 
 REFERENCE_DOCX = "reference.docx"
 LUA_FILTER = "docx-numbering.lua"
@@ -60,6 +65,21 @@ def _docx_metadata(metadata: dict, text_width: int) -> dict:
     return meta
 
 
+@contextmanager
+def _source_date_epoch(timestamp: int):
+    """``SOURCE_DATE_EPOCH`` set for the pandoc child process (pypandoc passes a copy of
+    ``os.environ``), restored afterwards."""
+    old = os.environ.get("SOURCE_DATE_EPOCH")
+    os.environ["SOURCE_DATE_EPOCH"] = str(int(timestamp))
+    try:
+        yield
+    finally:
+        if old is None:
+            os.environ.pop("SOURCE_DATE_EPOCH", None)
+        else:
+            os.environ["SOURCE_DATE_EPOCH"] = old
+
+
 def reference_text_width(reference: Path) -> int:
     """Width (twips) between the margins of the reference document's page."""
     try:
@@ -85,8 +105,9 @@ def render_docx(md_path: Path, docx_path: Path, metadata: dict, template_dir: Pa
     templates folder holding ``reference.docx`` and ``docx-numbering.lua``.
     Metadata from a YAML block inside the Markdown takes precedence.
     The document is written to a temporary file next to ``docx_path`` and
-    moved into place (atomic).  Raises DocxRenderError if pandoc fails or a
-    template file is missing.
+    moved into place (atomic); it is dated :func:`~.pdf.source_timestamp` of
+    ``metadata["date"]``, so the same input gives the same bytes.  Raises
+    DocxRenderError if pandoc fails or a template file is missing.
     """
     import pypandoc
 
@@ -113,21 +134,22 @@ def render_docx(md_path: Path, docx_path: Path, metadata: dict, template_dir: Pa
             meta_file.write_text(json.dumps(meta, ensure_ascii=False, default=str),
                                  encoding="utf-8")
             try:
-                pypandoc.convert_text(
-                    md_text,
-                    "docx",
-                    format=MARKDOWN_FORMAT,
-                    outputfile=str(tmp_docx),
-                    extra_args=[
-                        f"--reference-doc={reference.resolve()}",
-                        f"--lua-filter={lua_filter.resolve()}",
-                        f"--metadata-file={meta_file}",
-                        f"--resource-path={md_path.parent}",
-                        "--number-sections",
-                        # no relative column widths from long pipe-table rows (as for the PDF)
-                        "--columns=10000",
-                    ],
-                )
+                with _source_date_epoch(source_timestamp(metadata.get("date"))):
+                    pypandoc.convert_text(
+                        md_text,
+                        "docx",
+                        format=MARKDOWN_FORMAT,
+                        outputfile=str(tmp_docx),
+                        extra_args=[
+                            f"--reference-doc={reference.resolve()}",
+                            f"--lua-filter={lua_filter.resolve()}",
+                            f"--metadata-file={meta_file}",
+                            f"--resource-path={md_path.parent}",
+                            "--number-sections",
+                            # no relative column widths from long pipe-table rows (as for the PDF)
+                            "--columns=10000",
+                        ],
+                    )
             except (RuntimeError, OSError) as exc:
                 raise DocxRenderError(
                     f"pandoc failed to convert {md_path.name} to .docx: {exc}") from exc

@@ -6,7 +6,7 @@ from pathlib import Path
 
 import numpy as np
 
-from .fmt import e, f
+from .fmt import e, f, md_meta, md_text
 
 MM = 1e3
 
@@ -83,7 +83,7 @@ def drive_context(d, lang: str, figures: dict[str, str], machine_power_eq: str |
         "hours": f(d.service_hours, 0), "KA": f(d.KA, 2),
         "peak": f(d.peak_factor, 3) if d.peak_from_shaft is not None else None,
         "peak_shaft": _shaft_name(d.peak_from_shaft, len(d.shafts) - 1, zh) if d.peak_from_shaft is not None else "",
-        "warnings": [w.text(lang) for w in d.warnings],
+        "warnings": [md_text(w.text(lang)) for w in d.warnings],
         "stage_designs": stage_designs(d, lang),
         "fig": figures,
     }
@@ -233,7 +233,7 @@ def make_figures(r: dict, fig_dir: Path, lang: str) -> dict[str, str]:
 
 def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
     p = r["params"]
-    return {"meta": brief.report,
+    return {"meta": md_meta(brief.report),
             "drive": drive_context(r["drive"], lang, figures, _load_equation(p)),
             "load_how": p.load.how,
             **verification_context(r["drive"], r.get("drive_verification"), lang)}
@@ -290,5 +290,5 @@ def verification_context(d, v, lang: str) -> dict:
             rows.append([f"{where}：{name}" if zh else f"{where}: {name}", e(k.value), f"≤ {e(k.limit)}", ok])
         else:
             rows.append([name, e(k.value), f"≤ {e(k.limit)}", ok])
-    return {"verify_rows": rows, "findings": [w.text(lang) for w in v.warnings],
+    return {"verify_rows": rows, "findings": [md_text(w.text(lang)) for w in v.warnings],
             "verify_note": _NOTE[lang]}

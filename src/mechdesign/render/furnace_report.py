@@ -7,7 +7,7 @@ from pathlib import Path
 import numpy as np
 
 from . import figures as fig
-from .fmt import e, f
+from .fmt import e, f, md_meta, md_text
 
 DEG = 180.0 / np.pi
 MM = 1e3
@@ -358,10 +358,10 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
     ] + verification_rows(v, lang, k)
     # A bare "|" would split a pipe-table cell: escape it (math uses \lvert … \rvert).
     verify_rows = [[cell.replace("|", "\\|") for cell in row] for row in verify_rows]
-    findings = [w.text(lang) for key in ("synthesis", "linkage_verification", "pusher_check")
+    findings = [md_text(w.text(lang)) for key in ("synthesis", "linkage_verification", "pusher_check")
                 for w in (getattr(r[key], "warnings", ()) or ())]
     return {
-        "meta": brief.report, "fig": figures, "data_rows": data_rows, "choice_rows": choice_rows,
+        "meta": md_meta(brief.report), "fig": figures, "data_rows": data_rows, "choice_rows": choice_rows,
         "eq": eq, "syn_rows": syn_rows, "res_rows": res_rows, "seed_rows": seed_rows,
         "seed_sim_rows": seed_sim_rows, "side": side_txt, "criterion": crit, "other_side": other,
         "sense": sense, "towards": towards, "linkage": lk, "torque_rows": torque_rows,

@@ -7,7 +7,7 @@ from pathlib import Path
 import numpy as np
 
 from ..core.gears import mesh_layout
-from .fmt import f
+from .fmt import f, md_text
 
 DEG = 180.0 / np.pi
 MM = 1e3
@@ -87,6 +87,6 @@ def gear_context(g, lang: str, figures: dict[str, str]) -> dict:
         "rows": rows, "pair_rows": pair_rows, "eq": eq, "shifted": shifted,
         "z1": str(g1.z), "z2": str(g2.z), "m": f(p.m * MM, 2), "eps": f(p.contact_ratio, 3),
         "zmin": f(p.z_min, 1), "undercut": bool(undercut),
-        "warnings": [w.text(lang) for w in g.warnings],
+        "warnings": [md_text(w.text(lang)) for w in g.warnings],
         "fig": figures,
     }

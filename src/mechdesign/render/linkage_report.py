@@ -13,7 +13,7 @@ from pathlib import Path
 import numpy as np
 
 from . import figures as fig
-from .fmt import e, f
+from .fmt import e, f, md_meta, md_text, mpl_text, tex_name
 
 DEG = 180.0 / np.pi
 
@@ -74,7 +74,8 @@ def make_linkage_figures(model, k, f_, fly, fig_dir: Path, lang: str,
                    fly.phase_at_max * DEG, fly.max_energy_swing, span)
     if f_.reactions:
         fig.reactions(out("reactions"), lang, ph,
-                      {f"$F_{{{name}}}$": np.abs(v[:n]) for name, v in f_.reactions.items()}, span)
+                      {f"$F_{{{tex_name(name)}}}$": np.abs(v[:n]) for name, v in f_.reactions.items()},
+                      span)
     members, sliders = link_members(model.mechanism)
     skeleton(out("mechanism"), lang, model, k, members, sliders)
     return paths
@@ -87,7 +88,7 @@ def _quality_figure(path, lang, ph, span, k, model):
         fig._phase_axis(ax, span)
         for q in k.quality:
             sym = "γ" if q.kind == "transmission" else "α"
-            ax.plot(ph, q.values[:n] * DEG, lw=1.3, label=f"{sym} {q.group}")
+            ax.plot(ph, q.values[:n] * DEG, lw=1.3, label=f"{sym} {mpl_text(q.group)}")
         if model.pressure_angle_limit is not None:
             ax.axhline(model.pressure_angle_limit * DEG, color="C3", ls="--", lw=0.9,
                        label=f"[α] = {model.pressure_angle_limit * DEG:.0f}°")
@@ -170,13 +171,14 @@ def skeleton(path: Path, lang: str, model, k, members: dict, sliders: list):
         for name, z in frame.items():
             z = complex(z) * 1e3
             ax.plot([z.real], [z.imag], "^", color="k", ms=6, zorder=4)
-            ax.text(z.real + 0.6 * block, z.imag - 1.6 * block, name, fontsize=8)
+            ax.text(z.real + 0.6 * block, z.imag - 1.6 * block, mpl_text(name), fontsize=8)
         j0 = regular[0]
         for name in P:
             if name not in frame:
                 z = P[name][j0]
                 ax.plot([z.real], [z.imag], "o", color="C0", ms=2.5, zorder=4)
-                ax.text(z.real + 0.5 * block, z.imag + 0.5 * block, name, fontsize=8, color="C0")
+                ax.text(z.real + 0.5 * block, z.imag + 0.5 * block, mpl_text(name), fontsize=8,
+                        color="C0")
         ax.set_aspect("equal")
         ax.set_xlabel("x (mm)")
         ax.set_ylabel("y (mm)")
@@ -184,36 +186,42 @@ def skeleton(path: Path, lang: str, model, k, members: dict, sliders: list):
 
 
 def _link_rows(model, lang: str) -> list[list[str]]:
-    """Groups of the linkage with their dimensions, for the data table."""
+    """Groups of the linkage with their dimensions, for the data table (names, point
+    names and link ids come from the brief: escaped)."""
     from ..core.mechanism import RPR, RRP, RRR, Crank, LinkPoint
 
     zh = lang == "zh"
+    m = md_text
 
     def ids(*links):
         # The machine's names of its links, where it gives them (e.g. 4 摇杆).
-        return ", ".join(f"{l_} {model.names[l_][0 if zh else 1]}" if l_ in model.names else l_
+        return ", ".join(m(f"{l_} {model.names[l_][0 if zh else 1]}" if l_ in model.names else l_)
                          for l_ in links)
 
     rows = []
     for g in model.mechanism.groups:
         if isinstance(g, Crank):
-            rows.append([("曲柄" if zh else "crank"), ids(g.link), f"{g.pivot}{g.tip}",
-                         f"{g.pivot}{g.tip} = {f(g.length * 1e3, 2)} mm"])
+            bar = m(f"{g.pivot}{g.tip}")
+            rows.append([("曲柄" if zh else "crank"), ids(g.link), bar,
+                         f"{bar} = {f(g.length * 1e3, 2)} mm"])
         elif isinstance(g, RRR):
-            rows.append([g.name, ids(g.link1, g.link2), f"{g.b}{g.c}, {g.d}{g.c}",
-                         f"{g.b}{g.c} = {f(g.l1 * 1e3, 2)} mm, {g.d}{g.c} = {f(g.l2 * 1e3, 2)} mm"])
+            bc, dc = m(f"{g.b}{g.c}"), m(f"{g.d}{g.c}")
+            rows.append([m(g.name), ids(g.link1, g.link2), f"{bc}, {dc}",
+                         f"{bc} = {f(g.l1 * 1e3, 2)} mm, {dc} = {f(g.l2 * 1e3, 2)} mm"])
         elif isinstance(g, RRP):
-            rows.append([g.name, ids(g.rod, g.slider), f"{g.b}{g.c}",
-                         f"{g.b}{g.c} = {f(g.length * 1e3, 2)} mm; "
+            bc = m(f"{g.b}{g.c}")
+            rows.append([m(g.name), ids(g.rod, g.slider), bc,
+                         f"{bc} = {f(g.length * 1e3, 2)} mm; "
                          + ("导路过" if zh else "guide through ")
                          + f"({f(g.guide_point.real * 1e3, 1)}, {f(g.guide_point.imag * 1e3, 1)}) mm, "
                          + f"{f(g.guide_angle * DEG, 1)}°"])
         elif isinstance(g, RPR):
-            rows.append([g.name, ids(g.slider, g.bar), f"{g.pivot}{g.a}",
+            rows.append([m(g.name), ids(g.slider, g.bar), m(f"{g.pivot}{g.a}"),
                          ("偏距" if zh else "offset") + f" {f(g.offset * 1e3, 2)} mm"])
         elif isinstance(g, LinkPoint):
-            rows.append([("点" if zh else "point") + f" {g.name}", ids(g.link), f"{g.origin}{g.name}",
-                         f"{g.origin}{g.name} = {f(g.distance * 1e3, 2)} mm, "
+            bar = m(f"{g.origin}{g.name}")
+            rows.append([("点" if zh else "point") + f" {m(g.name)}", ids(g.link), bar,
+                         f"{bar} = {f(g.distance * 1e3, 2)} mm, "
                          f"{f(g.offset_angle * DEG, 1)}°"])
     return rows
 
@@ -226,10 +234,10 @@ def linkage_context(model, k, f_, fly, v, figures: dict, lang: str,
     scale, units = _units(k)
     labels = _labels(k)
     frame = model.mechanism.frame_points
-    frame_rows = [[name, f(complex(z).real * 1e3, 2), f(complex(z).imag * 1e3, 2)]
+    frame_rows = [[md_text(name), f(complex(z).real * 1e3, 2), f(complex(z).imag * 1e3, 2)]
                   for name, z in frame.items()]
     point_names = [p for p in k.points if p not in frame]
-    qual_head = [("$\\gamma$ " if q.kind == "transmission" else "$\\alpha$ ") + q.point
+    qual_head = [("$\\gamma$ " if q.kind == "transmission" else "$\\alpha$ ") + md_text(q.point)
                  for q in k.quality]
     kin_rows, force_rows, point_rows = [], [], []
     reaction_names = list(f_.reactions)
@@ -261,15 +269,17 @@ def linkage_context(model, k, f_, fly, v, figures: dict, lang: str,
             work = f"{f(q.working_extreme * DEG, 2)}° @ φ = {f(q.working_extreme_phase * DEG, 1)}°"
             limit = "—" if model.pressure_angle_limit is None else \
                 f"≤ {f(model.pressure_angle_limit * DEG, 0)}° " + ("(工作行程)" if zh else "(working stroke)")
-        qual_rows.append([q.group, kind, q.point, extreme, work, limit])
+        qual_rows.append([md_text(q.group), kind, md_text(q.point), extreme, work, limit])
     res_rows = []
     for i, r in enumerate(model.resistances):
         window = "—"
         if r.active is not None:
             window = f"{f(r.active[0] * scale, 1)} – {f(r.active[1] * scale, 1)} {units[0]}"
-        res_rows.append([f"R{i + 1}", r.point, r.link, f(r.direction * DEG, 1), f(r.working, 1),
+        res_rows.append([f"R{i + 1}", md_text(r.point), md_text(r.link), f(r.direction * DEG, 1),
+                         f(r.working, 1),
                          f(r.returning, 1), window])
-    mass_rows = [[b.link, b.com, f(b.mass, 2), f(b.inertia, 4)] for b in model.bodies]
+    mass_rows = [[md_text(b.link), md_text(b.com), f(b.mass, 2), f(b.inertia, 4)]
+                 for b in model.bodies]
     omega = abs(model.crank_omega)
     ctx = {
         "title": title or ("连杆机构分析" if zh else "Linkage analysis"),
@@ -282,7 +292,7 @@ def linkage_context(model, k, f_, fly, v, figures: dict, lang: str,
         "speed": f(omega * 30 / np.pi, 2), "omega": f(omega, 4),
         "sense": ("顺时针" if model.crank_omega < 0 else "逆时针") if zh else
                  ("clockwise" if model.crank_omega < 0 else "counter-clockwise"),
-        "output": model.output.name,
+        "output": md_text(model.output.name),
         "unit_s": units[0], "unit_v": units[1], "unit_a": units[2],
         "stroke": f(k.stroke * scale, 3), "K": f(k.time_ratio, 4),
         "theta": f(180 * (k.time_ratio - 1) / (k.time_ratio + 1), 3),
@@ -291,10 +301,11 @@ def linkage_context(model, k, f_, fly, v, figures: dict, lang: str,
         "start_angle": f((k.start_angle * DEG) % 360, 3),
         "grid_points": str(n),
         "kin_head": qual_head, "kin_rows": kin_rows,
-        "point_names": point_names, "point_rows": point_rows,
-        "link_ids": list(k.link_omega), "link_speed_rows": link_speed_rows,
+        "point_names": [md_text(p) for p in point_names], "point_rows": point_rows,
+        "link_ids": [md_text(l_) for l_ in k.link_omega], "link_speed_rows": link_speed_rows,
         "qual_rows": qual_rows,
-        "reaction_names": [f"$F_{{{nm}}}$" for nm in reaction_names], "force_rows": force_rows,
+        "reaction_names": [f"$F_{{{tex_name(nm)}}}$" for nm in reaction_names],
+        "force_rows": force_rows,
         "mb_max": f(float(np.max(f_.balancing_torque[:n])), 3),
         "mb_min": f(float(np.min(f_.balancing_torque[:n])), 3),
         "mb_mean": f(f_.mean_torque, 3), "mb_peak": f(f_.peak_torque, 3),
@@ -356,8 +367,8 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
     k, v = r["linkage"], r["linkage_verification"]
     lk = linkage_context(r["params"], k, r["linkage_forces"], r["linkage_flywheel"], v,
                          figures, lang, title="机构分析" if lang == "zh" else "Linkage analysis")
-    warnings = [w.text(lang) for w in v.warnings]
-    return {"meta": brief.report, "linkage": lk, "verify_rows": verification_rows(v, lang, k),
+    warnings = [md_text(w.text(lang)) for w in v.warnings]
+    return {"meta": md_meta(brief.report), "linkage": lk, "verify_rows": verification_rows(v, lang, k),
             "findings": warnings}
 
 

@@ -12,7 +12,7 @@ from pathlib import Path
 import numpy as np
 
 from . import figures as fig
-from .fmt import e, f
+from .fmt import e, f, md_meta, md_text
 
 DEG = 180.0 / np.pi
 MM = 1e3
@@ -342,7 +342,7 @@ def _transmission(r: dict, lang: str) -> dict:
             "motor": f(tr.motor_rpm, 0),
             "rate": f(tr.required_rpm, 0), "out": f(tr.output_rpm, 3),
             "slip": f(slip, 3), "out_slip": f(tr.output_rpm_slip, 3), "has_slip": slip > 0,
-            "shafts": shafts, "warnings": [w.text(lang) for w in tr.warnings],
+            "shafts": shafts, "warnings": [md_text(w.text(lang)) for w in tr.warnings],
             "eq_slip": (rf"n' = \frac{{n_m (1 - \varepsilon)}}{{i}} = \frac{{{f(tr.motor_rpm, 0)} \times "
                         rf"0.98}}{{{tr.ratio_exact}}} = {f(tr.motor_rpm * 0.98 / tr.ratio, 2)}\ \text{{r/min}}")}
 
@@ -446,7 +446,7 @@ def _bending(r: dict, lang: str, figures: dict) -> dict:
         "wheel_w": f(float(np.max(np.abs(b.wheel_omega))), 3),
         "wheel_a": f(float(np.max(np.abs(b.wheel_alpha))), 2),
         "rocker_w": f(float(np.max(np.abs(b.rocker_omega))), 3),
-        "cam": bc, "warnings": [w.text(lang) for w in b.warnings],
+        "cam": bc, "warnings": [md_text(w.text(lang)) for w in b.warnings],
         "mean_ratio": f(mean_ratio, 4),
         "pin_hold": f(_pin_hold(r) * DEG, 1),
         "cam_motion": _cam_motion_text(bcam, lang),
@@ -641,8 +641,8 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
     cyc_figs = {k.removeprefix("cycle_"): v for k, v in figures.items() if k.startswith("cycle_")}
     findings = []
     for key in ("transmission", "cam", "pin_check", "bending_cam", "bending", "cycle"):
-        findings.extend(w.text(lang) for w in getattr(r[key], "warnings", None) or ())
-    findings.extend(w.text(lang) for w in r["feed_verification"].warnings)
+        findings.extend(md_text(w.text(lang)) for w in getattr(r[key], "warnings", None) or ())
+    findings.extend(md_text(w.text(lang)) for w in r["feed_verification"].warnings)
     bend_act = {a.key: a for a in c.diagram.actuators}
     pin_down_span = sum(ph.span for ph in bend_act["pin"].phases if ph.state == "dwell_low")
     timing = {
@@ -657,7 +657,7 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
         "overlap": c.feed_span_cycle > pin_down_span + 1e-9,
     }
     return {
-        "meta": brief.report, "fig": figures,
+        "meta": md_meta(brief.report), "fig": figures,
         "data_rows": _data_rows(r, brief, lang), "seed_notes": _seed_notes(r, lang),
         "morph": morphology_context(p.morphology, lang, level=2),
         "cycle": cycle_context(c.diagram, lang, cyc_figs, c.checks, level=2),

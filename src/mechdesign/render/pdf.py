@@ -6,10 +6,17 @@ Metadata keys understood by ``templates/report.typ`` (all optional):
 (family name or list; default: the CJK families from :mod:`fonts`),
 ``toc-depth`` and a nested ``labels`` mapping with ``student``, ``student_id``,
 ``class``, ``teacher``, ``date``, ``contents`` (defaults depend on ``lang``).
+Metadata values are pandoc Markdown: user text comes escaped
+(:func:`mechdesign.render.report.pdf_metadata`).
+
+Reproducible output: the PDF's creation date is :func:`source_timestamp` (the
+``SOURCE_DATE_EPOCH`` environment variable, else the brief's date, else a fixed date), so
+the same Markdown and metadata give the same bytes.
 """
 
 from __future__ import annotations
 
+import datetime as _dt
 import json
 import os
 import re
@@ -54,6 +61,85 @@ _SPACE_BEFORE_REF = re.compile(rf"(?<=[{_CJK}]) (?=#ref\(<[^>]+>\))")
 _SPACE_AFTER_REF = re.compile(rf"(#ref\(<[^>]+>\)) (?=[{_CJK}])")
 
 
+#: Creation date written when neither SOURCE_DATE_EPOCH nor the brief gives one:
+#: 1980-01-01 00:00 UTC, the earliest date a ZIP file (a .docx) can hold.
+FALLBACK_TIMESTAMP = 315532800
+
+_DATE = re.compile(r"^\s*(\d{4})\s*[-./年]\s*(\d{1,2})\s*[-./月]\s*(\d{1,2})")
+
+
+def source_timestamp(date_text: str | None = None) -> int:
+    """The creation time (Unix seconds, UTC) written into the PDF and the Word file.
+
+    ``SOURCE_DATE_EPOCH`` (the reproducible-builds convention) if set to a number; else
+    the brief's date (``2026-11-22``, ``2026.11.22``, ``2026年11月22日``) at 00:00 UTC; else
+    :data:`FALLBACK_TIMESTAMP`. Never the clock: the same brief gives the same bytes."""
+    env = os.environ.get("SOURCE_DATE_EPOCH", "").strip()
+    if env.isdigit():
+        return max(int(env), FALLBACK_TIMESTAMP)
+    match = _DATE.match(str(date_text or ""))
+    if match:
+        try:
+            day = _dt.datetime(*map(int, match.groups()), tzinfo=_dt.timezone.utc)
+        except ValueError:
+            return FALLBACK_TIMESTAMP
+        return max(int(day.timestamp()), FALLBACK_TIMESTAMP)
+    return FALLBACK_TIMESTAMP
+
+
+# pandoc Lua filter for the typst writer: what the writer leaves unescaped in user text.
+# * typst shorthands inside a word: "..." (an ellipsis) and "-?" (a soft hyphen);
+# * a block marker starting a content block ("- ", "+ ", "/ ", "= ", "1. "): the writer
+#   escapes it at the start of a line, but not at the start of a table cell, a caption
+#   or a title-page field, where typst would make a list or a heading of it.
+_TYPST_FILTER = r"""
+local function split_shorthands(el)
+  local text = el.text
+  if not (text:find("...", 1, true) or text:find("-?", 1, true)) then return nil end
+  local out = pandoc.Inlines {}
+  local buf = ""
+  local i = 1
+  while i <= #text do
+    if text:sub(i, i + 2) == "..." then
+      if buf ~= "" then out:insert(pandoc.Str(buf)); buf = "" end
+      out:insert(pandoc.RawInline("typst", "..\\."))
+      i = i + 3
+    elseif text:sub(i, i + 1) == "-?" then
+      if buf ~= "" then out:insert(pandoc.Str(buf)); buf = "" end
+      out:insert(pandoc.RawInline("typst", "-\\?"))
+      i = i + 2
+    else
+      buf = buf .. text:sub(i, i)
+      i = i + 1
+    end
+  end
+  if buf ~= "" then out:insert(pandoc.Str(buf)) end
+  return out
+end
+
+local function is_break(el)
+  return el == nil or el.t == "Space" or el.t == "SoftBreak" or el.t == "LineBreak"
+end
+
+local function escape_marker(inlines)
+  local first = inlines[1]
+  if first and first.t == "Str" and is_break(inlines[2]) then
+    local t = first.text
+    if t:match("^[-+/]$") or t:match("^=+$") or t:match("^%d+%.$") then
+      inlines[1] = pandoc.RawInline("typst", "\\" .. t)
+      return inlines
+    end
+  end
+  return nil
+end
+
+return {
+  { Str = split_shorthands },
+  { Inlines = escape_marker },
+}
+"""
+
+
 class PdfRenderError(RuntimeError):
     """Pandoc or typst failed while rendering the report."""
 
@@ -91,6 +177,8 @@ def markdown_to_typst(md_text: str, template: Path, metadata: dict, resource_dir
         meta_file = Path(tmp) / "metadata.json"
         # JSON is valid YAML, which is what --metadata-file expects.
         meta_file.write_text(json.dumps(meta, ensure_ascii=False, default=str), encoding="utf-8")
+        lua_filter = Path(tmp) / "typst-literal.lua"
+        lua_filter.write_text(_TYPST_FILTER, encoding="utf-8")
         try:
             source = pypandoc.convert_text(
                 md_text,
@@ -100,6 +188,7 @@ def markdown_to_typst(md_text: str, template: Path, metadata: dict, resource_dir
                     "--standalone",
                     f"--template={Path(template).resolve()}",
                     f"--metadata-file={meta_file}",
+                    f"--lua-filter={lua_filter}",
                     f"--resource-path={Path(resource_dir).resolve()}",
                     "--wrap=none",
                     # wide pipe tables keep natural (auto) column widths; typst
@@ -139,7 +228,8 @@ def render_pdf(md_path: Path, pdf_path: Path, metadata: dict, template: Path) ->
     typst template.  The typst source is written under a temporary name into the
     Markdown's directory (the typst root) and deleted afterwards; the PDF is
     written atomically.  Typst warnings are re-emitted as Python warnings.
-    Raises PdfRenderError if pandoc or typst fails.
+    The PDF is dated :func:`source_timestamp` of ``metadata["date"]``: the same input
+    gives the same bytes.  Raises PdfRenderError if pandoc or typst fails.
     """
     import typst
 
@@ -157,6 +247,7 @@ def render_pdf(md_path: Path, pdf_path: Path, metadata: dict, template: Path) ->
                 typ_name,
                 root=str(root),
                 font_paths=[str(d) for d in font_dirs()],
+                timestamp=source_timestamp(metadata.get("date")),
             )
         except typst.TypstError as exc:
             raise PdfRenderError(f"typst failed to compile {md_path.name}:\n{_typst_message(exc)}") from exc

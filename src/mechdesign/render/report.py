@@ -16,6 +16,7 @@ from typing import Callable
 import jinja2
 
 from ..results import dumps
+from .fmt import md_text
 
 FORMATS = ("md", "pdf", "docx", "dxf", "gif")
 
@@ -37,19 +38,26 @@ def render_markdown(template_name: str, ctx: dict, templates: Path) -> str:
 
 
 def group_banner(group: str, lang: str) -> str:
-    """The line atop a report computed for one data group of its brief."""
+    """The line atop a report computed for one data group of its brief (the label is
+    user text: escaped so that it shows as written)."""
+    group = md_text(group)
     if lang == "zh":
         return f"**分组（方案）：{group}**。本报告按任务书 `groups` 表中该组的数据计算。\n\n"
     return f"**Data group: {group}.** This report uses that group's data from the brief's `groups` table.\n\n"
 
 
 def pdf_metadata(meta, lang: str, group: str | None = None) -> dict:
-    """Title-page metadata for templates/report.typ from the brief's report section."""
-    data = {"title": meta.title, "subtitle": meta.subtitle, "student": meta.student,
-            "student_id": meta.student_id, "class": meta.class_name, "teacher": meta.teacher,
-            "date": meta.date, "lang": lang}
+    """Title-page metadata for templates/report.typ (and the Word title block) from the
+    brief's report section. pandoc reads metadata strings as Markdown: the user's text is
+    escaped (:func:`~.fmt.md_text`) so that it shows as written. The date also dates the
+    PDF and the Word file (:func:`.pdf.source_timestamp`), so that a brief renders the
+    same bytes every time."""
+    data = {"title": md_text(meta.title), "subtitle": md_text(meta.subtitle),
+            "student": md_text(meta.student), "student_id": md_text(meta.student_id),
+            "class": md_text(meta.class_name), "teacher": md_text(meta.teacher),
+            "date": md_text(meta.date), "lang": lang}
     if group is not None:
-        data["group"] = group
+        data["group"] = md_text(group)
     if lang == "en":
         # Latin text in a Latin face (typst ships Libertinus Serif); CJK names and titles
         # fall back to the Chinese serif, whose punctuation is full-width.

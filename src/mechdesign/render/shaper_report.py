@@ -12,7 +12,7 @@ from pathlib import Path
 import numpy as np
 
 from . import figures as fig
-from .fmt import e, f
+from .fmt import e, f, md_meta
 
 DEG = 180.0 / np.pi
 
@@ -206,7 +206,7 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
         drive = drive_context(r["drive"], lang, figures, pw)
     return {
         "gear": gear, "drive": drive,
-        "meta": brief.report,
+        "meta": md_meta(brief.report),
         "cam": cam,
         "fig": figures,
         "data_rows": data_rows,

@@ -9,6 +9,7 @@ from pathlib import Path
 
 import numpy as np
 
+from .fmt import dxf_text, plain_line
 from .sheet import LAYERS, Arc, Circle, Dimension, Fill, Line, Polyline, Sheet, Text
 
 TEXT_STYLE = "GB"
@@ -36,7 +37,7 @@ def build_document(sheet: Sheet, title: str = ""):
     doc.header["$PSLTSCALE"] = 0
     doc.header["$LIMMAX"] = (sheet.width, sheet.height)
     if title:
-        doc.header["$PROJECTNAME"] = title[:255]
+        doc.header["$PROJECTNAME"] = plain_line(title)[:255]
     style = doc.styles.add(TEXT_STYLE, font="gbenor.shx")
     style.dxf.bigfont = "gbcbig.shx"
     style.dxf.width = 0.7
@@ -70,7 +71,8 @@ def build_document(sheet: Sheet, title: str = ""):
             hatch = msp.add_hatch(color=256, dxfattribs={"layer": e.layer})
             hatch.paths.add_polyline_path([(p.real, p.imag) for p in e.points], is_closed=True)
         elif isinstance(e, Text):
-            t = msp.add_text(e.text, height=e.height, rotation=np.degrees(e.angle),
+            # as written: "%%d", "^J" … are control codes in DXF text (dxf_text escapes them)
+            t = msp.add_text(dxf_text(e.text), height=e.height, rotation=np.degrees(e.angle),
                              dxfattribs={"layer": e.layer, "style": TEXT_STYLE})
             t.set_placement((e.position.real, e.position.imag),
                             align=TextEntityAlignment[_ALIGN[(e.halign, e.valign)]])
@@ -111,14 +113,39 @@ def _dimension(msp, d: Dimension) -> None:
     dim.render()
 
 
+def _fix_class_order(doc) -> None:
+    """Register the CLASS entries ezdxf adds on saving now, in a fixed order: it adds those
+    of the entity types in use from a set, whose order changes from one process to the next."""
+    try:
+        from ezdxf.sections.classes import REQUIRED_CLASSES
+
+        doc.classes.add_required_classes(doc.dxfversion)
+        required = list(REQUIRED_CLASSES.get(doc.dxfversion, ()))
+        rank = {name: i for i, name in enumerate(required)}
+        items = sorted(doc.classes.classes.items(),
+                       key=lambda kv: (rank.get(kv[0][0], len(rank)), kv[0]))
+        doc.classes.classes.clear()
+        doc.classes.classes.update(items)
+    except (ImportError, AttributeError):     # another ezdxf: the order is cosmetic anyway
+        pass
+
+
 def write_dxf(sheet: Sheet, path: Path, title: str = "") -> Path:
     """Save ``sheet`` as a DXF file (written atomically)."""
     path = Path(path)
-    doc = build_document(sheet, title)
+    import ezdxf
+
     tmp = path.with_name(f".{path.name}.{os.getpid()}.tmp")
+    # Reproducible file: ezdxf otherwise stamps the creation and save times and random
+    # GUIDs into the file; with this option it writes fixed ones (2000-01-01, constant GUIDs).
+    fixed = ezdxf.options.write_fixed_meta_data_for_testing
+    ezdxf.options.write_fixed_meta_data_for_testing = True
     try:
+        doc = build_document(sheet, title)
+        _fix_class_order(doc)
         doc.saveas(tmp, encoding="utf-8")
         os.replace(tmp, path)
     finally:
+        ezdxf.options.write_fixed_meta_data_for_testing = fixed
         tmp.unlink(missing_ok=True)
     return path

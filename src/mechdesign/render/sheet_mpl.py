@@ -123,8 +123,11 @@ def _draw(sheet: Sheet):
 
 
 def _text(ax, pos, text, height, layer, halign, valign, angle):
+    # Sheet texts are printed as written (the title block holds the brief's title and
+    # names): no mathtext, so a "$" is a dollar sign.
     ax.text(pos.real, pos.imag, text, fontsize=height * PT_PER_MM, color=LAYERS[layer].rgb,
-            ha=halign, va=_ALIGN_V[valign], rotation=np.degrees(angle), rotation_mode="anchor")
+            ha=halign, va=_ALIGN_V[valign], rotation=np.degrees(angle), rotation_mode="anchor",
+            parse_math=False)
 
 
 def write_sheet(sheet: Sheet, pdf: Path | None = None, png: Path | None = None,
@@ -135,11 +138,22 @@ def write_sheet(sheet: Sheet, pdf: Path | None = None, png: Path | None = None,
     fig = _draw(sheet)
     try:
         if pdf is not None:
-            _atomic(fig, Path(pdf), format="pdf")
+            _atomic(fig, Path(pdf), format="pdf", metadata={"CreationDate": _creation_date(sheet)})
         if png is not None:
             _atomic(fig, Path(png), format="png", dpi=png_width_px / (sheet.width / 25.4))
     finally:
         plt.close(fig)
+
+
+def _creation_date(sheet: Sheet):
+    """The PDF's creation date: the title block's date (or SOURCE_DATE_EPOCH, or a fixed
+    date; see :func:`.pdf.source_timestamp`), never the clock, so a brief gives the same bytes."""
+    import datetime as dt
+
+    from .pdf import source_timestamp
+
+    date = sheet.info.date if sheet.info is not None else None
+    return dt.datetime.fromtimestamp(source_timestamp(date), tz=dt.timezone.utc)
 
 
 def _atomic(fig, path: Path, **kw) -> None:

@@ -12,6 +12,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Callable
 
+from .fmt import plain_line
 from .sheet import Sheet, TitleInfo
 
 TITLES = {
@@ -68,9 +69,13 @@ def _builders(results: dict, brief) -> list[tuple[str, Callable[[TitleInfo, str]
 
 
 def title_info(meta, drawing: str, number: str, index: int, count: int, lang: str) -> TitleInfo:
-    return TitleInfo(drawing=drawing, project=meta.title, student=meta.student,
-                     student_id=meta.student_id, class_name=meta.class_name, teacher=meta.teacher,
-                     date=meta.date, number=number, sheet_no=index, sheets=count, lang=lang)
+    """The title block's strings; the brief's text as one line each (a title block cell
+    holds one line; the backends print the text as written)."""
+    return TitleInfo(drawing=drawing, project=plain_line(meta.title),
+                     student=plain_line(meta.student), student_id=plain_line(meta.student_id),
+                     class_name=plain_line(meta.class_name), teacher=plain_line(meta.teacher),
+                     date=plain_line(meta.date), number=plain_line(number), sheet_no=index,
+                     sheets=count, lang=lang)
 
 
 def make_sheets(results: dict, brief, folder: Path, fig_dir: Path, lang: str,
