@@ -186,7 +186,7 @@ def test_pressure_angle_limit_is_reported():
     (lambda g: g[0].update(end="Q"), "linkage", "'Q' is not defined"),
     (lambda g: g[0].update(links=[2, 5]), "linkage", "already used"),
     (lambda g: g[0].update(type="RRX"), "linkage.groups.0", "RRX"),
-    (lambda g: g[0].update(length_mm=-5), "linkage.groups.0.RRP.length_mm", "greater than 0"),
+    (lambda g: g[0].update(length_mm=-5), "linkage.groups.0.length_mm", "greater than 0"),
     (lambda g: g[0].update(joint="A"), "linkage", "already defined"),
 ])
 def test_bad_groups_name_the_field(change, field, words):

@@ -7,9 +7,30 @@ The models are strict: unknown keys, wrong types and out-of-range values are err
 from __future__ import annotations
 
 import datetime as _dt
+import re
+from fractions import Fraction
 from typing import Literal, Optional
 
 from pydantic import BaseModel, ConfigDict, Field, field_validator
+
+
+_FRACTION = re.compile(r"^\s*([-+]?(?:\d+\.?\d*|\.\d+))\s*(?:/\s*(\d+\.?\d*|\.\d+)\s*)?$")
+
+
+def parse_fraction(value, message: str):
+    """``value`` as a number when it is text such as '1/25' or '0.04' (the course writes
+    fluctuation coefficients as fractions); other values unchanged (the field checks them).
+    ``message`` is the ValueError raised for text that is no such number. Only plain
+    decimals are read (no exponents), so the text cannot ask for a huge number."""
+    if not isinstance(value, str):
+        return value
+    match = _FRACTION.match(value) if len(value) <= 40 else None
+    if match is None:
+        raise ValueError(message)
+    num, den = match.groups()
+    if den is not None and Fraction(den) == 0:
+        raise ValueError(f"{message}; the denominator is 0")
+    return float(Fraction(num) / (Fraction(den) if den is not None else 1))
 
 
 class StrictModel(BaseModel):
@@ -21,13 +42,13 @@ class StrictModel(BaseModel):
 class ReportMeta(StrictModel):
     """Report metadata shown on the title page (封面)."""
 
-    title: str = Field(description="Report title (设计题目)", min_length=1)
-    subtitle: str = Field("", description="Optional subtitle")
-    student: str = Field(description="Student name (学生姓名)", min_length=1)
-    student_id: str = Field("", description="Student number (学号); quote it in YAML")
-    class_name: str = Field("", alias="class", description="Class (班级)")
-    teacher: str = Field("", description="Teacher (指导教师)")
-    date: str = Field("", description="Date shown on the title page, e.g. 2026-11-22")
+    title: str = Field(description="Report title (设计题目)", min_length=1, max_length=200)
+    subtitle: str = Field("", max_length=200, description="Optional subtitle")
+    student: str = Field(description="Student name (学生姓名)", min_length=1, max_length=100)
+    student_id: str = Field("", max_length=40, description="Student number (学号); quote it in YAML")
+    class_name: str = Field("", alias="class", max_length=100, description="Class (班级)")
+    teacher: str = Field("", max_length=100, description="Teacher (指导教师)")
+    date: str = Field("", max_length=40, description="Date shown on the title page, e.g. 2026-11-22")
     language: Literal["zh", "en"] = Field("zh", description="Report language: zh (中文) or en")
 
     model_config = ConfigDict(extra="forbid", strict=True, frozen=True, populate_by_name=True,

@@ -13,7 +13,6 @@ from typing import Literal, Optional
 import numpy as np
 from pydantic import Field, field_validator, model_validator
 
-from ..core import fourbar
 from ..core.synthesis import extreme_angle
 from .common import ReportMeta, StrictModel
 
@@ -31,6 +30,8 @@ class SliderCrankSection(StrictModel):
 
     @model_validator(mode="after")
     def _feasible(self):
+        from ..core import fourbar  # lazily: it imports scipy
+
         try:
             fourbar.offset_slider_crank(self.time_ratio_K, self.stroke_H_mm * 1e-3,
                                         self.offset_e_mm * 1e-3)
@@ -71,7 +72,7 @@ class ChartSettings(StrictModel):
 class CompareDesign(StrictModel):
     """A published or hand-made design to check by simulation (e.g. a paper's result)."""
 
-    label: str = Field(min_length=1, description="Name shown in the report, e.g. 'paper, computer result'")
+    label: str = Field(min_length=1, max_length=60, description="Name shown in the report, e.g. 'paper, computer result'")
     crank_mm: float = Field(gt=0, le=100000, description="Crank l1 [mm]")
     coupler_mm: float = Field(gt=0, le=100000, description="Coupler l2 [mm]")
     rocker_mm: Optional[float] = Field(None, gt=0, le=100000,
@@ -107,6 +108,8 @@ class CrankRockerBrief(StrictModel):
 
     @model_validator(mode="after")
     def _complete(self):
+        from ..core import fourbar
+
         if (self.time_ratio_K is None) == (self.extreme_angle_deg is None):
             raise ValueError("give exactly one of time_ratio_K and extreme_angle_deg")
         theta = self.theta_rad
@@ -173,6 +176,8 @@ class CrankRockerParams:
 
 def crank_rocker_to_si(b: CrankRockerBrief) -> CrankRockerParams:
     """Convert the brief's course units to SI (the only unit conversion on input)."""
+    from ..core import fourbar
+
     mm = 1e-3
     theta = b.theta_rad
     K = b.time_ratio_K if b.time_ratio_K is not None else float((np.pi + theta) / (np.pi - theta))

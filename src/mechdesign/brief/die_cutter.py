@@ -14,26 +14,20 @@ The drive (motor → V-belt → two-stage helical reducer → distribution shaft
 from __future__ import annotations
 
 from dataclasses import dataclass
-from fractions import Fraction
 from typing import Annotated, Literal, Optional, Union
 
 import numpy as np
 from pydantic import BeforeValidator, Field, model_validator
 
 from .cam import CamParams, CamSection, cam_to_si
-from .common import AnalysisSettings, ReportMeta, StrictModel
+from .common import AnalysisSettings, ReportMeta, StrictModel, parse_fraction
 from .components import IncompleteGearSection
 from .drive import DriveParams, DriveSection, drive_to_si
 
 
 def _fraction(value):
     """Accept 0.1 or the course's '1/10'."""
-    if isinstance(value, str):
-        try:
-            return float(Fraction(value.replace(" ", "")))
-        except (ValueError, ZeroDivisionError):
-            raise ValueError("write the fluctuation as a number or a fraction such as 1/10") from None
-    return value
+    return parse_fraction(value, "write the fluctuation as a number or a fraction such as 1/10")
 
 
 class Production(StrictModel):

@@ -61,14 +61,14 @@ class DriveStage(StrictModel):
         "Spur pair only: open gears (开式), designed by bending with a wear allowance"))
     face_width_factor: Optional[float] = Field(None, gt=0, le=2, description=(
         "Face width factor φd = b/d1 (default 1.0 closed, 0.5 open)"))
-    pinion_material: Optional[str] = Field(None, description="Pinion material key (default 40Cr_QT)")
-    gear_material: Optional[str] = Field(None, description="Gear material key (default 45_QT)")
+    pinion_material: Optional[str] = Field(None, max_length=40, description="Pinion material key (default 40Cr_QT)")
+    gear_material: Optional[str] = Field(None, max_length=40, description="Gear material key (default 45_QT)")
     x1: Optional[float] = Field(None, ge=-1, le=1.5, description="Pinion profile-shift coefficient x1")
     x2: Optional[float] = Field(None, ge=-1, le=1.5, description=(
         "Gear (or worm-wheel) profile-shift coefficient x2"))
     helix_angle_deg: Optional[float] = Field(None, ge=8, le=25, description="Helix angle β [°] (default 14)")
     q: Optional[float] = Field(None, ge=6, le=20, description="Worm diameter factor q = d1/m (default 10)")
-    wheel_material: Optional[str] = Field(None, description="Worm-wheel rim material key (default ZCuSn10P1)")
+    wheel_material: Optional[str] = Field(None, max_length=40, description="Worm-wheel rim material key (default ZCuSn10P1)")
     d1_mm: Optional[float] = Field(None, gt=20, le=2000, description="Small pulley datum diameter d1 [mm] (default 100)")
     d2_mm: Optional[float] = Field(None, gt=20, le=5000, description="Large pulley datum diameter d2 [mm]")
     slip: Optional[float] = Field(None, ge=0, le=0.05, description="Belt elastic slip ε (default 0.015)")

@@ -12,13 +12,12 @@ the joint, the slider along the guide; an RPR bar from its pivot towards the sli
 from __future__ import annotations
 
 import re
-from fractions import Fraction
 from typing import Annotated, Literal, Optional, Union
 
 import numpy as np
 from pydantic import BeforeValidator, Field, model_validator
 
-from .common import AnalysisSettings, ReportMeta, StrictModel
+from .common import AnalysisSettings, ReportMeta, StrictModel, parse_fraction
 
 _NAME = re.compile(r"^[A-Za-z][A-Za-z0-9_']{0,15}$")
 
@@ -38,6 +37,9 @@ def _link_id(value):
         raise ValueError("a link id is a number or a short name, e.g. 3")
     return value
 
+
+#: Link id of the frame (机架); moving links are numbered from 2.
+FRAME_LINK = "1"
 
 PointName = Annotated[str, BeforeValidator(_name)]
 LinkId = Annotated[str, BeforeValidator(_link_id)]
@@ -156,12 +158,7 @@ class ResistanceSpec(StrictModel):
 
 
 def _fraction(value):
-    if isinstance(value, str):
-        try:
-            return float(Fraction(value.strip()))
-        except (ValueError, ZeroDivisionError):
-            raise ValueError("write the fluctuation as a number or a fraction such as 1/20") from None
-    return value
+    return parse_fraction(value, "write the fluctuation as a number or a fraction such as 1/20")
 
 
 class LinkageFlywheelSpec(StrictModel):
@@ -176,7 +173,7 @@ class LinkageFlywheelSpec(StrictModel):
 class LinkageSection(StrictModel):
     """A planar linkage: frame points, the crank, Assur groups in solving order."""
 
-    frame_points_mm: dict[str, XY] = Field(description="Frame points {name: [x, y]} [mm]")
+    frame_points_mm: dict[str, XY] = Field(min_length=1, max_length=40, description="Frame points {name: [x, y]} [mm]")
     crank: CrankSpec
     groups: list[Group] = Field(min_length=1, max_length=40,
                                 description="Assur groups and points in solving order")
@@ -252,6 +249,9 @@ def check_references(s: LinkageSection) -> dict[str, list[str]]:
             lst = members.setdefault(link, [])
             lst.extend(p for p in pts if p not in lst)
         known.update(makes)
+    if FRAME_LINK in members:
+        raise ValueError(f"link '{FRAME_LINK}' is the frame (the course numbers it 1); number the "
+                         "moving links from 2 (the crank) on")
     out = s.output
     if out.point is not None and out.point not in known:
         raise ValueError(f"output.point '{out.point}' is not a point of the linkage")
@@ -294,7 +294,7 @@ def linkage_to_model(s: LinkageSection, analysis: AnalysisSettings, names: dict 
     from ..machines.linkage import FlywheelSpec, LinkageModel, Output, Resistance
 
     mm, rad = 1e-3, np.radians
-    frame = "1"
+    frame = FRAME_LINK
     mech = Mechanism(frame, {n: complex(x, y) * mm for n, (x, y) in s.frame_points_mm.items()})
     sense = -1.0 if s.crank.rotation == "cw" else 1.0
     omega = sense * s.crank.speed_rpm * np.pi / 30.0

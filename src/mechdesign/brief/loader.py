@@ -3,10 +3,22 @@
 Every problem becomes one :class:`BriefProblem` line naming the field path, the value
 found and what is allowed; all problems are collected and raised together as a
 :class:`BriefError`.
+
+A problem's path is a dotted path into the brief's data (``linkage.stroke_H_mm``,
+``cam.programme.2.angle_deg``; a value set by a data group is reported where the group
+sets it, ``groups.variants.2.pusher.stroke_H_mm``), or one of the special paths
+``(file)`` (the file cannot be read as a brief: missing, a folder, too large, binary, not
+UTF-8, empty), ``(top level)`` (the data are not a mapping, or a check of the whole
+brief), ``line L, column C`` (invalid YAML) and ``--group`` (an unknown group).
+
+Malformed or hostile files are rejected within a fraction of a second: the file size,
+the number of values (aliases counted expanded: no "billion laughs"), the items of one
+list or mapping, the nesting depth and the key length are limited while the YAML is
+composed (see ``MAX_*``), before anything walks the data.
 """
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from pathlib import Path
 import re
 from typing import Any, get_args
@@ -68,15 +80,165 @@ class BriefError(ValueError):
         return "\n".join([head] + [f"  {p.text('zh')}" for p in self.problems])
 
 
+#: Limits on a brief file, far above any real brief (the largest example has 11 kB and
+#: about 600 values) and low enough that a malformed or hostile file is rejected in a
+#: fraction of a second: a file of junk, an alias bomb, a huge list, deep nesting.
+MAX_BYTES = 256 * 1024
+MAX_VALUES = 5000          # values (numbers, texts, lists, mappings), aliases counted expanded
+MAX_ITEMS = 500            # items of one list or mapping
+MAX_DEPTH = 30             # lists and mappings inside each other
+MAX_KEY_CHARS = 100        # characters of one key
+MAX_DIGITS = 300           # digits of an integer; more is read as inf (beyond any float)
+
+
+class _LimitError(yaml.YAMLError):
+    """The YAML data break one of the limits above, at field ``path``."""
+
+    def __init__(self, path: list[str], value: str, allowed: str, allowed_zh: str):
+        super().__init__(f"{value}: {allowed}")
+        self.path = ".".join(path) or "(top level)"
+        self.value, self.allowed, self.allowed_zh = value, allowed, allowed_zh
+
+
 class _UniqueKeyLoader(yaml.SafeLoader):
-    """Safe loader that rejects a key given twice in one mapping (YAML keeps the last)."""
+    """Safe loader that rejects a key given twice in one mapping (YAML keeps the last) and
+    enforces the limits above while the file is composed, naming the field path."""
+
+    def __init__(self, stream):
+        super().__init__(stream)
+        self._path: list[str] = []
+        self._values = 0
+
+    def _count(self, n: int) -> None:
+        self._values += n
+        if self._values > MAX_VALUES:
+            raise _LimitError(self._path, f"more than {MAX_VALUES} values",
+                              "a brief holds at most that many values (anchors/aliases counted "
+                              "each time they are used)",
+                              f"任务书至多 {MAX_VALUES} 个值（锚点/别名每用一次都计数）")
+
+    def compose_node(self, parent, index):
+        if self.check_event(yaml.AliasEvent):
+            anchor = self.peek_event().anchor
+            node = self.anchors.get(anchor)
+            if node is not None:
+                size = getattr(node, "_md_size", None)
+                if size is None:
+                    raise _LimitError(self._path, f"*{anchor}",
+                                      "an alias cannot refer to the list or mapping that contains it",
+                                      "别名不能引用包含它自身的列表或映射")
+                self._count(size)
+            return super().compose_node(parent, index)  # an undefined alias: YAML's error
+        if self.check_event(yaml.SequenceStartEvent, yaml.MappingStartEvent) \
+                and len(self._path) >= MAX_DEPTH:
+            raise _LimitError(self._path, f"lists or mappings nested more than {MAX_DEPTH} deep",
+                              "a brief nests sections a few levels deep",
+                              f"列表或映射嵌套超过 {MAX_DEPTH} 层；任务书只有几层")
+        self._count(1)
+        return super().compose_node(parent, index)
+
+    def compose_scalar_node(self, anchor):
+        node = super().compose_scalar_node(anchor)
+        node._md_size = 1
+        return node
+
+    def _too_many(self, what: str, zh: str):
+        return _LimitError(self._path, f"a {what} of more than {MAX_ITEMS} items",
+                           f"no {what} in a brief is that long",
+                           f"{zh}超过 {MAX_ITEMS} 项；任务书中没有这么长的{zh}")
+
+    def compose_sequence_node(self, anchor):
+        start = self.get_event()
+        tag = start.tag
+        if tag is None or tag == "!":
+            tag = self.resolve(yaml.SequenceNode, None, start.implicit)
+        node = yaml.SequenceNode(tag, [], start.start_mark, None, flow_style=start.flow_style)
+        if anchor is not None:
+            self.anchors[anchor] = node
+        size = 1
+        while not self.check_event(yaml.SequenceEndEvent):
+            index = len(node.value)
+            if index >= MAX_ITEMS:
+                raise self._too_many("list", "列表")
+            self._path.append(str(index))
+            child = self.compose_node(node, index)
+            self._path.pop()
+            node.value.append(child)
+            size += child._md_size
+        node.end_mark = self.get_event().end_mark
+        node._md_size = size
+        return node
+
+    def compose_mapping_node(self, anchor):
+        start = self.get_event()
+        tag = start.tag
+        if tag is None or tag == "!":
+            tag = self.resolve(yaml.MappingNode, None, start.implicit)
+        node = yaml.MappingNode(tag, [], start.start_mark, None, flow_style=start.flow_style)
+        if anchor is not None:
+            self.anchors[anchor] = node
+        size = 1
+        while not self.check_event(yaml.MappingEndEvent):
+            if len(node.value) >= MAX_ITEMS:
+                raise self._too_many("mapping", "映射")
+            key = self.compose_node(node, None)
+            if not isinstance(key, yaml.ScalarNode):
+                raise _LimitError(self._path, "a list or mapping used as a key",
+                                  "a key is a field name (or a group label)",
+                                  "键须为字段名（或分组标签），不能是列表或映射")
+            if len(key.value) > MAX_KEY_CHARS:
+                raise _LimitError(self._path, f"a key of {len(key.value)} characters "
+                                  f"({key.value[:20]!r}…)", f"a key has at most {MAX_KEY_CHARS} characters",
+                                  f"键至多 {MAX_KEY_CHARS} 个字符")
+            self._path.append(key.value)
+            value = self.compose_node(node, key)
+            self._path.pop()
+            node.value.append((key, value))
+            size += key._md_size + value._md_size
+        node.end_mark = self.get_event().end_mark
+        node._md_size = size
+        return node
+
+    def construct_object(self, node, deep=False):
+        try:
+            return super().construct_object(node, deep=deep)
+        except yaml.YAMLError:
+            raise
+        except (ValueError, TypeError, KeyError, OverflowError) as exc:  # e.g. `!!float abc`
+            what = node.value if isinstance(node, yaml.ScalarNode) else node.id
+            raise yaml.constructor.ConstructorError(
+                None, None, f"{str(what)[:40]!r} cannot be read as {node.tag.rsplit(':', 1)[-1]} "
+                f"({type(exc).__name__}: {str(exc)[:80]})", node.start_mark) from None
+
+    def construct_yaml_int(self, node):
+        text = str(node.value)
+        if sum(c.isdigit() for c in text) > MAX_DIGITS:  # beyond any float; int() would refuse it
+            return float("-inf") if text.lstrip().startswith("-") else float("inf")
+        return super().construct_yaml_int(node)
+
+    def construct_yaml_timestamp(self, node):
+        try:
+            return super().construct_yaml_timestamp(node)
+        except ValueError:  # 2026-13-45 looks like a date but is none: keep the text
+            return self.construct_scalar(node)
+
+
+_MERGE_TAG = "tag:yaml.org,2002:merge"
 
 
 def _construct_mapping(loader: _UniqueKeyLoader, node: yaml.MappingNode, deep: bool = False):
     seen: dict[Any, int] = {}
     for key_node, _ in node.value:
+        if key_node.tag == _MERGE_TAG:    # `<<: *base` merges a mapping (its keys may repeat)
+            continue
         key = loader.construct_object(key_node, deep=deep)
-        if key in seen:
+        try:
+            again = key in seen
+        except TypeError:
+            raise yaml.constructor.ConstructorError(
+                None, None, f"the key {str(key)[:40]!r} is not a field name",
+                key_node.start_mark) from None
+        if again:
             raise yaml.constructor.ConstructorError(
                 None, None, f"key '{key}' appears twice (lines {seen[key]} and "
                 f"{key_node.start_mark.line + 1})", key_node.start_mark)
@@ -85,6 +247,9 @@ def _construct_mapping(loader: _UniqueKeyLoader, node: yaml.MappingNode, deep: b
 
 
 _UniqueKeyLoader.add_constructor(yaml.resolver.BaseResolver.DEFAULT_MAPPING_TAG, _construct_mapping)
+_UniqueKeyLoader.add_constructor("tag:yaml.org,2002:int", _UniqueKeyLoader.construct_yaml_int)
+_UniqueKeyLoader.add_constructor("tag:yaml.org,2002:timestamp",
+                                 _UniqueKeyLoader.construct_yaml_timestamp)
 # YAML 1.1 (PyYAML) reads 7.0e4 or 1e5 as strings; read them as numbers, as YAML 1.2 does.
 _UniqueKeyLoader.add_implicit_resolver(
     "tag:yaml.org,2002:float",
@@ -189,26 +354,124 @@ def _problem(model: type[BaseModel], err: dict) -> BriefProblem:
                         None if zh is None else f"{zh}{unit_zh}")
 
 
+def _models_in(annotation: Any) -> list[type[BaseModel]]:
+    """Every brief section inside ``annotation`` (the members of a union, the items of a list)."""
+    if isinstance(annotation, type) and issubclass(annotation, BaseModel):
+        return [annotation]
+    return [m for arg in get_args(annotation) for m in _models_in(arg)]
+
+
+def _data_loc(model: type[BaseModel], data: Any, loc: tuple) -> tuple:
+    """``loc`` of a pydantic error as a path into the brief's data: the union members
+    pydantic names along the way (``float``, ``literal['auto']``, ``RRR``, ``BendingStart``)
+    are dropped; a missing field's name stays at the end."""
+    out: list = []
+    node, models = data, [model]
+    for part in loc:
+        if isinstance(part, int):
+            out.append(part)
+            node = node[part] if isinstance(node, list) and 0 <= part < len(node) else None
+            continue
+        info = next((f for m in models for k, f in m.model_fields.items()
+                     if part in (k, f.alias)), None)
+        in_data = isinstance(node, dict) and part in node
+        if info is None and not in_data:
+            continue
+        out.append(part)
+        node = node.get(part) if in_data else None
+        models = _models_in(info.annotation) if info is not None else []
+    return tuple(out)
+
+
+#: Unit of a field, from the suffix of its name (the briefs' convention).
+_UNITS = (("_N_per_mm", "N/mm"), ("_N_m3", "N/m³"), ("_kgm2", "kg·m²"), ("_mm", "mm"),
+          ("_deg", "°"), ("_rpm", "rpm"), ("_kW", "kW"), ("_Nm", "N·m"), ("_kg", "kg"),
+          ("_pct", "%"), ("_N", "N"), ("_m", "m"))
+_NUMBER_WITH_UNIT = re.compile(r"^\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*(.*?)\s*$")
+
+
+def _unit_hint(err: dict, problem: BriefProblem) -> BriefProblem:
+    """A number written as text ("320 mm", "320"): say to write the number alone."""
+    value = err.get("input")
+    if err["type"] not in ("float_type", "int_type", "float_parsing", "int_parsing") \
+            or not isinstance(value, str):
+        return problem
+    match = _NUMBER_WITH_UNIT.match(value)
+    if match is None:
+        return problem
+    number, written = match.groups()
+    name = next((p for p in reversed(err["loc"]) if isinstance(p, str)), "")
+    unit = next((u for suffix, u in _UNITS if name.endswith(suffix)), None)
+    kind = "a whole number" if err["type"].startswith("int") else "a number"
+    kind_zh = "整数" if err["type"].startswith("int") else "数值"
+    if not written:
+        return replace(problem, allowed=f"{kind}, not text: write {number} without quotes",
+                       allowed_zh=f"须为{kind_zh}而非文字：写作 {number}，不加引号")
+    if unit is None:
+        return replace(problem, allowed=f"{kind} without a unit: write {number}",
+                       allowed_zh=f"须为{kind_zh}，不带单位：写作 {number}")
+    if written == unit:
+        return replace(problem, allowed=f"{kind} in {unit}, without the unit: write {number}",
+                       allowed_zh=f"须为以 {unit} 计的{kind_zh}，不带单位：写作 {number}")
+    return replace(problem, allowed=f"{kind} in {unit}, without the unit: convert {value.strip()!r} "
+                                    f"to {unit} and write the number alone",
+                   allowed_zh=f"须为以 {unit} 计的{kind_zh}，不带单位：请将 {value.strip()!r} 换算为 "
+                              f"{unit} 后只写数字")
+
+
+def _merge_alternatives(problems: list[BriefProblem]) -> list[BriefProblem]:
+    """One line per field: a value that fits no member of a union (a number or 'auto')
+    gets one problem listing what each member allows."""
+    merged: dict[tuple[str, str], BriefProblem] = {}
+    for p in problems:
+        key = (p.path, p.value)
+        if key in merged:
+            first = merged[key]
+            zh = None if first.allowed_zh is None and p.allowed_zh is None else \
+                f"{first.allowed_zh or first.allowed}；或：{p.allowed_zh or p.allowed}"
+            merged[key] = replace(first, allowed=f"{first.allowed}; or: {p.allowed}", allowed_zh=zh)
+        else:
+            merged[key] = p
+    return list(merged.values())
+
+
+def _top_level_problem(data: Any) -> BriefProblem:
+    allowed = "a brief is a YAML mapping of sections: machine: …, report: …, then the machine's data"
+    zh = "任务书须为由各节组成的 YAML 映射：machine: …、report: …，然后是机器的数据"
+    name = type(data).__name__
+    if data is None:
+        shown = f"an empty file ({name})"
+    elif isinstance(data, list):
+        shown = f"a {name}"
+    else:
+        shown = f"{'text' if isinstance(data, str) else 'a value'} ({name}) {_show(data)}"
+    return BriefProblem("(top level)", shown, allowed, zh)
+
+
 def parse_brief(data: Any, source: str = "brief", located: dict[str, str] | None = None) -> BaseModel:
     """Validate already-loaded YAML data; raise BriefError listing every problem.
 
     ``located`` maps field paths set by a group variant to where the group set them, so
     a bad value from a group is reported there."""
     if not isinstance(data, dict):
-        raise BriefError(source, [BriefProblem("(top level)", _show(type(data).__name__),
-                                               "a brief is a YAML mapping of sections")])
+        raise BriefError(source, [_top_level_problem(data)])
     if GROUPS_KEY in data:  # the brief as written; load_variant applies a group
         data, _ = _groups_of(data, source)
     machine = data.get("machine")
     model = BRIEF_MODELS.get(machine) if isinstance(machine, str) else None
     if model is None:
+        names = ", ".join(sorted(BRIEF_MODELS))
         raise BriefError(source, [BriefProblem(
             "machine", _show(machine) if "machine" in data else "missing",
-            f"one of: {', '.join(sorted(BRIEF_MODELS))}")])
+            f"one of: {names}", f"须为以下之一：{names}")])
     try:
         return model.model_validate(data)
     except ValidationError as exc:
-        problems = [_problem(model, e) for e in exc.errors()]
+        problems = []
+        for e in exc.errors():
+            e = dict(e, loc=_data_loc(model, data, tuple(e["loc"])))
+            problems.append(_unit_hint(e, _problem(model, e)))
+        problems = _merge_alternatives(problems)
         if located:
             problems = [_relocate(p, located) for p in problems]
         raise BriefError(source, problems) from None
@@ -217,26 +480,91 @@ def parse_brief(data: Any, source: str = "brief", located: dict[str, str] | None
 def _relocate(problem: BriefProblem, located: dict[str, str]) -> BriefProblem:
     for path in sorted(located, key=len, reverse=True):
         if problem.path == path or problem.path.startswith(path + "."):
-            return BriefProblem(located[path] + problem.path[len(path):], problem.value, problem.allowed)
+            return replace(problem, path=located[path] + problem.path[len(path):])
     return problem
 
 
+def _file_problem(source: str, value: str, allowed: str, allowed_zh: str) -> BriefError:
+    return BriefError(source, [BriefProblem("(file)", value, allowed, allowed_zh)])
+
+
+def _line_col(text: str | bytes, index: int) -> str:
+    nl = "\n" if isinstance(text, str) else b"\n"
+    line = text.count(nl, 0, index) + 1
+    return f"line {line}, column {index - (text.rfind(nl, 0, index) + 1) + 1}"
+
+
 def read_brief_data(path: str | Path) -> Any:
-    """The YAML data of a brief file (not yet validated); BriefError if unreadable."""
+    """The YAML data of a brief file (not yet validated); BriefError if the file cannot
+    be read, is not UTF-8 text, is too large or is not valid YAML within the limits."""
     path = Path(path)
+    source = str(path)
     try:
-        text = path.read_text(encoding="utf-8")
+        kind = "folder" if path.is_dir() else "file" if path.is_file() else \
+            "other" if path.exists() else "missing"
+    except (OSError, ValueError):  # e.g. a NUL character in the path
+        raise _file_problem(source, repr(source)[:60], "not a valid file path",
+                            "不是有效的文件路径") from None
+    if kind == "folder":
+        raise _file_problem(source, "a folder", "give a brief file (.yaml), not a folder",
+                            "这是文件夹；请给出任务书文件（.yaml）")
+    if kind == "missing":
+        raise _file_problem(source, "no such file", "give the path of an existing brief file",
+                            "文件不存在；请给出已有任务书文件的路径")
+    if kind == "other":   # a pipe or a device would block or never end
+        raise _file_problem(source, "not a regular file", "a brief is a text file (.yaml)",
+                            "不是普通文件；任务书是文本文件（.yaml）")
+    try:
+        with path.open("rb") as f:
+            raw = f.read(MAX_BYTES + 1)
     except OSError as exc:
-        raise BriefError(str(path), [BriefProblem("(file)", str(path), f"cannot be read: {exc.strerror}")]) from None
-    except UnicodeDecodeError:
-        raise BriefError(str(path), [BriefProblem("(file)", str(path), "must be UTF-8 text")]) from None
+        raise _file_problem(source, source, f"cannot be read: {exc.strerror}",
+                            f"无法读取：{exc.strerror}") from None
+    if len(raw) > MAX_BYTES:
+        raise _file_problem(source, f"more than {MAX_BYTES} bytes",
+                            f"a brief is at most {MAX_BYTES} bytes (the examples have about 10 kB); "
+                            "is this the right file?",
+                            f"任务书至多 {MAX_BYTES} 字节（示例约 10 kB）；文件是否选错？")
+    if raw.startswith((b"\xff\xfe", b"\xfe\xff")):
+        raise _file_problem(source, "UTF-16 text", "save the brief as UTF-8 text",
+                            "请将任务书另存为 UTF-8 文本")
+    raw = raw.removeprefix(b"\xef\xbb\xbf")   # a byte-order mark some editors write
+    nul = raw.find(b"\x00")
+    if nul >= 0:
+        raise _file_problem(source, f"a NUL byte at {_line_col(raw, nul)}",
+                            "a brief is YAML text; this looks like a binary file",
+                            "任务书是 YAML 文本；此文件像是二进制文件")
+    try:
+        text = raw.decode("utf-8")
+    except UnicodeDecodeError as exc:
+        raise _file_problem(source, f"byte 0x{raw[exc.start]:02x} at {_line_col(raw, exc.start)}",
+                            "a brief is UTF-8 text; save it as UTF-8",
+                            "任务书须为 UTF-8 文本；请另存为 UTF-8") from None
     try:
         return yaml.load(text, Loader=_UniqueKeyLoader)  # noqa: S506 - a SafeLoader subclass
+    except _LimitError as exc:
+        raise BriefError(source, [BriefProblem(exc.path, exc.value, exc.allowed, exc.allowed_zh)]) from None
     except yaml.YAMLError as exc:
-        mark = getattr(exc, "problem_mark", None) or getattr(exc, "context_mark", None)
-        where = f"line {mark.line + 1}, column {mark.column + 1}" if mark else "(file)"
-        problem = getattr(exc, "problem", None) or str(exc)
-        raise BriefError(str(path), [BriefProblem(where, "invalid YAML", problem)]) from None
+        raise BriefError(source, [_yaml_problem(exc, text)]) from None
+    except RecursionError:  # not reached within MAX_DEPTH; kept as a last guard
+        raise _file_problem(source, "nested too deeply", "a brief nests sections a few levels deep",
+                            "嵌套过深；任务书只有几层") from None
+
+
+def _yaml_problem(exc: yaml.YAMLError, text: str) -> BriefProblem:
+    if isinstance(exc, yaml.reader.ReaderError):   # a control character
+        return BriefProblem(_line_col(text, exc.position), f"character #x{exc.character:04x}"
+                            if isinstance(exc.character, int) else "a control character",
+                            "a brief is YAML text; control characters are not allowed",
+                            "任务书是 YAML 文本，不能含控制字符")
+    mark = getattr(exc, "problem_mark", None) or getattr(exc, "context_mark", None)
+    where = f"line {mark.line + 1}, column {mark.column + 1}" if mark else "(file)"
+    problem = getattr(exc, "problem", None) or str(exc)
+    if "another document" in problem:
+        return BriefProblem(where, "a second YAML document",
+                            "a brief is one YAML document: remove the `---` line and what follows",
+                            "任务书只能是一个 YAML 文档：请删去 `---` 行及其后的内容")
+    return BriefProblem(where, "invalid YAML", problem, f"YAML 格式错误：{problem}")
 
 
 @dataclass(frozen=True)
@@ -265,6 +593,37 @@ def brief_groups(path: str | Path) -> tuple[str, ...]:
     return tuple(table.labels) if table is not None else ()
 
 
+def _has(data: Any, parts: list[str]) -> bool:
+    node = data
+    for part in parts:
+        if isinstance(node, dict):
+            key = next((k for k in node if str(k) == part), _MISSING)
+            if key is _MISSING:
+                return False
+            node = node[key]
+        elif isinstance(node, list) and part.isdigit() and int(part) < len(node):
+            node = node[int(part)]
+        else:
+            return False
+    return True
+
+
+_MISSING = object()
+
+
+def _with_created(original: Any, located: dict[str, str]) -> dict[str, str]:
+    """``located`` plus the sections a group created (``foo`` for an override ``foo.bar``
+    the brief lacks), so a problem found on such a section is reported in the group."""
+    created: dict[str, str] = {}
+    for path, where in located.items():
+        parts = path.split(".")
+        for k in range(1, len(parts)):
+            if not _has(original, parts[:k]):
+                created.setdefault(".".join(parts[:k]), where)
+                break
+    return {**created, **located}
+
+
 def load_variant(path: str | Path, group: str | None = None) -> Variant:
     """Read a brief, apply group ``group`` (default: the table's ``default``, else the
     brief as written) and validate it; raise BriefError (never a bare traceback)."""
@@ -274,7 +633,9 @@ def load_variant(path: str | Path, group: str | None = None) -> Variant:
     try:
         label = choose(table, group)
         if label is not None:
+            original = data
             data, located = apply_group(data, table, label)
+            located = _with_created(original, located)
     except GroupError as exc:
         raise BriefError(source, [BriefProblem(exc.path, exc.value, exc.allowed)]) from None
     brief = parse_brief(data, source, located)

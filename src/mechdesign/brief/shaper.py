@@ -5,14 +5,13 @@ Course units in the brief; :func:`to_si` converts once to SI for the computation
 from __future__ import annotations
 
 from dataclasses import dataclass
-from fractions import Fraction
 from typing import Literal, Optional
 
 import numpy as np
 from pydantic import Field, field_validator, model_validator
 
 from .cam import CamParams, CamSection, cam_to_si
-from .common import AnalysisSettings, ReportMeta, SheetSettings, StrictModel
+from .common import AnalysisSettings, ReportMeta, SheetSettings, StrictModel, parse_fraction
 from .drive import DriveParams, DriveSection, DriveStage, check_material, drive_to_si
 
 
@@ -66,8 +65,8 @@ class GearPair(StrictModel):
     x2: float = Field(0.0, ge=-1, le=1.5, description="Gear profile-shift coefficient x2")
     open: bool = Field(True, description=(
         "Open gears (开式, designed by bending with a wear allowance) or closed (闭式); for the drive's checks"))
-    pinion_material: Optional[str] = Field(None, description="Pinion material key for the drive's checks")
-    gear_material: Optional[str] = Field(None, description="Gear material key for the drive's checks")
+    pinion_material: Optional[str] = Field(None, max_length=40, description="Pinion material key for the drive's checks")
+    gear_material: Optional[str] = Field(None, max_length=40, description="Gear material key for the drive's checks")
     face_width_factor: Optional[float] = Field(None, gt=0, le=2, description="Face width factor φd = b/d1")
 
     @field_validator("pinion_material", "gear_material")
@@ -84,12 +83,7 @@ class GearPair(StrictModel):
 
 def _fraction(value):
     """Accept 0.04 or the course's '1/25'."""
-    if isinstance(value, str):
-        try:
-            return float(Fraction(value.replace(" ", "")))
-        except (ValueError, ZeroDivisionError):
-            raise ValueError("must be a number or a fraction such as 1/25") from None
-    return value
+    return parse_fraction(value, "must be a number or a fraction such as 1/25")
 
 
 class ShaperFlywheel(StrictModel):
