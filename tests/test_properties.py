@@ -189,7 +189,9 @@ def compute(variant):
         params = machine.to_params(variant.brief)
     except ValueError:        # runner: exit 2 with the message
         return "invalid"
-    with warnings.catch_warnings(), np.errstate(all="raise"):
+    # Overflow, 0/0 and x/0 raise (a silent inf or nan would reach the report); an
+    # underflow to 0 is harmless.
+    with warnings.catch_warnings(), np.errstate(divide="raise", over="raise", invalid="raise"):
         warnings.simplefilter("error", RuntimeWarning)
         try:
             run_stages(stages_for(machine, params), {"params": params, "brief": variant.brief})

@@ -8,7 +8,7 @@ objects in SI units (m, rad, rad/s).
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Literal, Optional, Union
+from typing import Annotated, Literal, Optional, Union
 
 import numpy as np
 from pydantic import Field, model_validator
@@ -59,7 +59,7 @@ class CamFollower(StrictModel):
     roller_radius_mm: float = Field(0.0, ge=0, le=1000, description="Roller radius r_r [mm] (roller only)")
     stroke_h_mm: Optional[float] = Field(None, gt=0, le=2000,
                                          description="Stroke h of a translating follower [mm]")
-    offset_mm: Union[float, Literal["auto"]] = Field(0.0, description=(
+    offset_mm: Union[Annotated[float, Field(le=10000)], Literal["auto"]] = Field(0.0, description=(
         "Offset e of a translating follower's axis from the cam centre [mm], ≥ 0; 'auto' chooses "
         "the offset that allows the smallest base circle"))
     offset_side: Literal["right", "left"] = Field("right", description=(
@@ -115,7 +115,7 @@ class CamSection(StrictModel):
     speed_rpm: Optional[float] = Field(None, gt=0, le=100000, description=(
         "Cam speed [rpm]; gives time derivatives (mm/s …); default: the crank speed in a machine "
         "brief, none (derivatives per radian) in a stand-alone cam brief"))
-    base_radius_mm: Union[float, Literal["auto"]] = Field(description=(
+    base_radius_mm: Union[Annotated[float, Field(le=10000)], Literal["auto"]] = Field(description=(
         "Base radius r0 of the pitch curve (roller/knife) or of the profile (flat face) [mm]; "
         "'auto' designs the smallest one that keeps the pressure angle within the limits"))
     follower: CamFollower
@@ -200,7 +200,7 @@ class EccentricCamBrief(StrictModel):
     report: ReportMeta
     disc: EccentricDisc
     followers: list[DiscFollower] = Field(min_length=1, max_length=6)
-    query_angles_deg: list[float] = Field(default_factory=list, max_length=24, description=(
+    query_angles_deg: list[Annotated[float, Field(ge=-3600, le=3600)]] = Field(default_factory=list, max_length=24, description=(
         "Cam angles [°] at which displacement and pressure angle are tabulated (e.g. exercise 7-2)"))
     table_step_deg: float = Field(10.0, ge=0.5, le=90, description="Step of the displacement table [°]")
 

@@ -6,7 +6,7 @@ Course units in the brief (kW, rpm, mm, N, N·m, h); :func:`drive_to_si` convert
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Literal, Optional, Union
+from typing import Annotated, Literal, Optional, Union
 
 import numpy as np
 from pydantic import Field, field_validator, model_validator
@@ -54,7 +54,7 @@ class DriveStage(StrictModel):
     z1: Optional[int] = Field(None, ge=1, le=200, description=(
         "Teeth of the driving gear / sprocket, or worm starts (蜗杆头数) [count]"))
     z2: Optional[int] = Field(None, ge=8, le=1000, description="Teeth of the driven gear / wheel [count]")
-    module_mm: Union[float, Literal["auto"], None] = Field(None, description=(
+    module_mm: Union[Annotated[float, Field(gt=0, le=100)], Literal["auto"], None] = Field(None, description=(
         "Module m [mm] (normal module for helical; axial for worm); 'auto' (default) sizes it "
         "by the strength design formula and takes the next standard module"))
     open: Optional[bool] = Field(None, description=(

@@ -8,7 +8,7 @@ problems naming the field, the value and what is allowed (never a traceback).
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Literal, Optional, Union
+from typing import Annotated, Literal, Optional, Union
 
 import numpy as np
 from pydantic import Field, model_validator
@@ -31,8 +31,9 @@ class PusherSection(StrictModel):
     link_CE_mm: float = Field(gt=0, le=20000, description="Length of the link CE from the rocker to the slider [mm]")
     pressure_angle_max_deg: float = Field(gt=0, lt=90, description=(
         "Largest allowed pressure angle in the working stroke [°] (滑块工作行程最大压力角)"))
-    working_force_N: float = Field(ge=0, le=1e7, description=(
-        "Resistance on the slider in the working stroke, friction included [N]"))
+    working_force_N: float = Field(gt=0, le=1e7, description=(
+        "Resistance on the slider in the working stroke, friction included [N]; > 0: it is "
+        "what the crank torque, and the drive, are sized by"))
     return_force_N: float = Field(0.0, ge=0, le=1e7, description=(
         "Resistance on the slider in the return stroke, friction included [N]"))
     crank_rotation: Literal["cw", "ccw"] = Field("cw", description=(
@@ -41,7 +42,7 @@ class PusherSection(StrictModel):
     rocker_ratio_DB_DC: float = Field(0.5, gt=0, le=1, description=(
         "Free choice: position of the coupler joint B on the rocker, DB/DC (sets the four-bar's "
         "size; its angles do not depend on it)"))
-    frame_O1D_mm: Union[float, Literal["auto"]] = Field("auto", description=(
+    frame_O1D_mm: Union[Annotated[float, Field(gt=0, le=20000)], Literal["auto"]] = Field("auto", description=(
         "Free choice: frame length O1D [mm]; auto maximises the four-bar's minimum transmission "
         "angle under the pressure-angle limits"))
     guide_offset_mm: float = Field(0.0, ge=-10000, le=10000, description=(

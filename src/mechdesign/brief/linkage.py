@@ -43,7 +43,7 @@ FRAME_LINK = "1"
 
 PointName = Annotated[str, BeforeValidator(_name)]
 LinkId = Annotated[str, BeforeValidator(_link_id)]
-XY = Annotated[list[float], Field(min_length=2, max_length=2)]
+XY = Annotated[list[Annotated[float, Field(ge=-100000, le=100000)]], Field(min_length=2, max_length=2)]
 
 
 class CrankSpec(StrictModel):
@@ -66,7 +66,7 @@ class RRRGroup(StrictModel):
     ends: list[PointName] = Field(min_length=2, max_length=2,
                                   description="Known points the two links are pinned at [B, D]")
     joint: PointName = Field(description="The joint between the two links (new point C)")
-    lengths_mm: list[float] = Field(min_length=2, max_length=2,
+    lengths_mm: list[Annotated[float, Field(gt=0, le=100000)]] = Field(min_length=2, max_length=2,
                                     description="Lengths [BC, DC] [mm], each > 0")
     branch: Literal[1, -1] = Field(1, description="+1: C left of B→D (counter-clockwise), −1: right")
 
@@ -150,10 +150,10 @@ class ResistanceSpec(StrictModel):
     direction_deg: float = Field(0.0, ge=-360, le=360, description="Line of action [°] from +x")
     working_N: float = Field(ge=0, le=1e7, description="Resistance in the working stroke [N]")
     return_N: float = Field(0.0, ge=0, le=1e7, description="Resistance in the return stroke [N]")
-    active_mm: Optional[list[float]] = Field(None, min_length=2, max_length=2, description=(
+    active_mm: Optional[list[Annotated[float, Field(ge=-100000, le=100000)]]] = Field(None, min_length=2, max_length=2, description=(
         "Window [from, to] of the output displacement from position 1 where the working resistance "
         "acts [mm] (point output); default: the whole working stroke"))
-    active_deg: Optional[list[float]] = Field(None, min_length=2, max_length=2, description=(
+    active_deg: Optional[list[Annotated[float, Field(ge=-3600, le=3600)]]] = Field(None, min_length=2, max_length=2, description=(
         "The same window for a link output [°]"))
 
 

@@ -18,7 +18,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 from fractions import Fraction
-from typing import Literal, Optional, Union
+from typing import Annotated, Literal, Optional, Union
 
 import numpy as np
 from pydantic import Field, model_validator
@@ -119,7 +119,7 @@ class BendingSection(StrictModel):
     output_sense: Literal["auto", "same", "opposite"] = Field("auto", description=(
         "Does the output turn the same way as the input rocker or the opposite way; 'auto' "
         "takes the better transmission angle"))
-    link_length_range_mm: list[float] = Field([20.0, 300.0], min_length=2, max_length=2, description=(
+    link_length_range_mm: list[Annotated[float, Field(ge=-10000, le=10000)]] = Field([20.0, 300.0], min_length=2, max_length=2, description=(
         "Range [min, max] allowed for the input rocker and the coupler when start is 'auto' [mm]"))
     transmission_angle_min_deg: float = Field(40.0, gt=0, lt=90, description=(
         "Allowed minimum transmission angle [γ] [°]"))

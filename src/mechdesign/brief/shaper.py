@@ -25,7 +25,7 @@ class ShaperLinkage(StrictModel):
     rod_ratio_BF_O3B: float = Field(gt=0, le=2, description="Rod-to-guide-bar length ratio L_BF/L_O3B")
     com_ratio_O3S4_O3B: float = Field(0.5, ge=0, le=1,
                                       description="Guide-bar centre-of-mass position L_O3S4/L_O3B")
-    ram_com_x_S6_mm: float = Field(description="Horizontal distance from F to the ram's centre of mass S6, +x to the right [mm]")
+    ram_com_x_S6_mm: float = Field(ge=-10000, le=10000, description="Horizontal distance from F to the ram's centre of mass S6, +x to the right [mm]")
     crank_speed_n2_rpm: float = Field(gt=0, le=3000, description="Crank speed n2 [rpm]")
     crank_rotation: Literal["cw", "ccw"] = Field(
         "cw", description="Crank sense of rotation seen on the drawing: cw (顺时针) or ccw")
@@ -46,7 +46,7 @@ class ShaperLoads(StrictModel):
     """Cutting resistance (切削阻力)."""
 
     cutting_force_Fc_N: float = Field(ge=0, le=1e6, description="Cutting force Fc [N], opposing the working stroke")
-    cutting_height_yP_mm: float = Field(description="Height of the cutting-force line above O2, y_P [mm]")
+    cutting_height_yP_mm: float = Field(ge=-10000, le=10000, description="Height of the cutting-force line above O2, y_P [mm]")
     idle_travel_ratio: float = Field(0.05, ge=0, lt=0.5,
                                      description="Idle travel at each end of the working stroke as a fraction of H (空刀距离)")
 

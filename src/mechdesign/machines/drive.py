@@ -143,6 +143,15 @@ def _names(kind: str) -> tuple[str, str]:
 def design_drive(dp, machine_power: float, output_rpm: float, source: str,
                  peak_factor: float = 1.0, peak_from_shaft: int | None = None) -> DriveResult:
     """The whole drive for a machine needing ``machine_power`` [W] at ``output_rpm``."""
+    # A machine without working resistance takes (almost) no mean power: its torque only
+    # swings about zero, the peak factor peak/mean is unbounded and nothing sizes the drive.
+    if not (machine_power > 0 and np.isfinite(machine_power) and 0 < peak_factor < 1e6):
+        raise core.DriveDesignError(
+            f"the machine takes (almost) no mean power ({machine_power:.3g} W at its input shaft, "
+            f"peak torque {peak_factor:.3g} × the mean): without working resistance nothing sizes "
+            "the drive; give the machine a load, or leave the drive section out",
+            f"工作机的平均功率几乎为零（{machine_power:.3g} W，峰值转矩为平均值的 {peak_factor:.3g} 倍），"
+            "没有工作阻力，传动装置无从设计：应给出工作阻力，或删去 drive 一节")
     catalogue = motor_catalogue()
     stages = dp.stages
     worm_eff = {s.index: _WORM_EFF_BY_STARTS.get(s.z1 or 2, 0.8) for s in stages

@@ -307,7 +307,8 @@ def _drive(r: dict):
     p, f, fl = r["params"], r["forces"], r["flywheel"]
     n = r["kinematics"].grid_size
     mb = f.balancing_torque[:n]
-    peak = float(np.max(np.abs(mb)) / np.mean(mb))
+    mean = float(np.mean(mb))
+    peak = float(np.max(np.abs(mb)) / mean) if mean > 0 else float("inf")  # inf: no load
     shafts = len(p.drive.stages)          # the crank shaft's index
     flywheel_shaft = shafts - 1 if p.flywheel_shaft == "pinion" else shafts
     from dataclasses import replace
