@@ -207,8 +207,12 @@ def test_limits_sit_far_above_every_example():
 @pytest.mark.parametrize("text, value", [
     ("1" + "0" * 400, float("inf")),            # more digits than any float: int() would refuse 4300+
     ("-" + "9" * 5000, float("-inf")),
+    ("0x" + "f" * 5000, float("inf")),         # read by int(), but str() of it would raise
+    ("0b" + "1" * 2000, float("inf")),
     ("1e400", float("inf")),
+    ("1" + "0" * 299, 10**299),                 # a big integer below the limit stays exact
     ("2026-13-45", "2026-13-45"),               # looks like a date, is none: kept as text
+    ("!!timestamp hello", "hello"),             # an explicit tag on no date at all: the same
 ])
 def test_numbers_python_cannot_hold_are_read_as_inf(text, value):
     assert yaml.load(f"v: {text}\n", Loader=loader._UniqueKeyLoader) == {"v": value}
@@ -218,6 +222,7 @@ def test_numbers_python_cannot_hold_are_read_as_inf(text, value):
     ("v: !!float abc\n", "cannot be read as float"),
     ("v: !!int abc\n", "cannot be read as int"),
     ("v: !!bool maybe\n", "cannot be read as bool"),
+    ("v: !!int 0x\n", "cannot be read as int"),
 ])
 def test_explicit_tags_that_fail_give_the_line(tmp_path, text, found):
     p = problem_of(write(tmp_path, text))

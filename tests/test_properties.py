@@ -231,6 +231,42 @@ def test_a_changed_brief_that_loads_computes_or_fails_by_name(folder, case):
         compute(variant)
 
 
+TEXTS = {p.name: p.read_text(encoding="utf-8") for p in sorted((ROOT / "designs").glob("*.yaml"))}
+SPECIALS = list("&*!|>{}[]:,-?#%@`'\"\t\n \\<") + ["\x00", "\x07", "\ufeff", "---\n", "<<: ",
+                                                 "!!python/name:os.system ", "*a", "&a ", "é", "\r"]
+
+
+@st.composite
+def garbled(draw):
+    """An example file with a few characters inserted, deleted or replaced (YAML's special
+    characters weighted up), as text or as raw bytes."""
+    text = TEXTS[draw(st.sampled_from(sorted(TEXTS)))]
+    for _ in range(draw(st.integers(1, 4))):
+        i = draw(st.integers(0, len(text)))
+        j = min(len(text), i + draw(st.integers(0, 3)))
+        new = draw(st.one_of(st.sampled_from(SPECIALS), st.text(max_size=3)))
+        text = text[:i] + new + text[j:]
+    raw = text.encode("utf-8", "surrogatepass")
+    if draw(st.booleans()):
+        return raw
+    i = draw(st.integers(0, len(raw)))
+    return raw[:i] + draw(st.binary(max_size=4)) + raw[i:]
+
+
+@settings(max_examples=300, **SETTINGS)
+@given(st.one_of(garbled(), st.binary(max_size=300)))
+@example(b"v: !!timestamp hello\n")        # once AttributeError from PyYAML's date reader
+@example(b"v: 0x" + b"f" * 5000 + b"\n")   # once ValueError printing the value (4300 digits)
+def test_garbled_files_load_or_fail_as_brief_errors(folder, raw):
+    path = folder / "garbled.yaml"
+    path.write_bytes(raw)
+    try:
+        load_variant(path)
+    except BriefError as exc:
+        for p in exc.problems:
+            assert p.path and p.value and p.allowed
+
+
 def _crank_is_frame():
     data = copy.deepcopy(DESIGNS["linkage_sixbar.yaml"])
     data["linkage"]["crank"]["link"] = 1     # once: LinAlgError (singular matrix) in the forces

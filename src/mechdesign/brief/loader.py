@@ -204,22 +204,27 @@ class _UniqueKeyLoader(yaml.SafeLoader):
             return super().construct_object(node, deep=deep)
         except yaml.YAMLError:
             raise
-        except (ValueError, TypeError, KeyError, OverflowError) as exc:  # e.g. `!!float abc`
+        except Exception as exc:  # noqa: BLE001 - e.g. `!!float abc`, `!!timestamp hello`
             what = node.value if isinstance(node, yaml.ScalarNode) else node.id
             raise yaml.constructor.ConstructorError(
                 None, None, f"{str(what)[:40]!r} cannot be read as {node.tag.rsplit(':', 1)[-1]} "
                 f"({type(exc).__name__}: {str(exc)[:80]})", node.start_mark) from None
 
     def construct_yaml_int(self, node):
+        # Beyond any float: read as ±inf, which the fields refuse by name. Python itself
+        # refuses to read (or print) a decimal integer of more than 4300 digits; 0x…, 0o…
+        # and 0b… have no such limit, so their size is checked after reading.
         text = str(node.value)
-        if sum(c.isdigit() for c in text) > MAX_DIGITS:  # beyond any float; int() would refuse it
-            return float("-inf") if text.lstrip().startswith("-") else float("inf")
-        return super().construct_yaml_int(node)
+        inf = float("-inf") if text.lstrip().startswith("-") else float("inf")
+        if sum(c.isdigit() for c in text) > MAX_DIGITS:
+            return inf
+        value = super().construct_yaml_int(node)
+        return inf if abs(value).bit_length() > MAX_DIGITS * 10 // 3 else value
 
     def construct_yaml_timestamp(self, node):
         try:
             return super().construct_yaml_timestamp(node)
-        except ValueError:  # 2026-13-45 looks like a date but is none: keep the text
+        except (ValueError, AttributeError):  # 2026-13-45 looks like a date but is none: keep the text
             return self.construct_scalar(node)
 
 
