@@ -217,7 +217,7 @@ def check(
                 variant = load_variant(path, label)
                 try:
                     get_machine(variant.brief.machine).to_params(variant.brief)
-                except ValueError as exc:  # a conversion found the data inconsistent
+                except Exception as exc:  # noqa: BLE001 - a conversion found the data inconsistent
                     where = f" (group {label})" if label is not None else ""
                     raise BriefError(f"{path}{where}", []) from exc
         except BriefError as exc:

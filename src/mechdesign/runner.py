@@ -130,6 +130,10 @@ def run_one(brief: Path, *, out_dir: Path | None = None, lang: str | None = None
         params = machine.to_params(b)
     except ValueError as exc:  # a conversion found the data inconsistent
         return Outcome(**common, status="invalid", exit_code=EXIT_INVALID, message=f"{brief}: {exc}")
+    except Exception as exc:  # noqa: BLE001 - a bug, but never a bare traceback
+        return Outcome(**common, status="failed", exit_code=EXIT_FAILED,
+                       message=f"{brief}: internal error while reading the brief: "
+                               f"{type(exc).__name__}: {exc}", traceback=traceback.format_exc())
     try:
         results, _ = run_stages(stages_for(machine, params), {"params": params, "brief": b},
                                 stage_progress)
