@@ -8,7 +8,7 @@ from __future__ import annotations
 import importlib
 import time
 import traceback
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from pathlib import Path
 from typing import Callable
 
@@ -34,7 +34,6 @@ class Outcome:
     seconds: float = 0.0
     compute_seconds: float = 0.0
     traceback: str = ""
-    groups: tuple[str, ...] = field(default=())
 
 
 def design_error_kinds() -> dict[type, tuple[str, str]]:
@@ -70,8 +69,7 @@ def describe_design_error(exc: Exception, lang: str) -> str | None:
         if not isinstance(exc, DesignError):
             return None
         zh, en = "设计不可行", "the design is infeasible"
-    text = getattr(exc, "text", None)
-    detail = text(lang) if callable(text) else str(exc)
+    detail = exc.text(lang)           # every design error is a DesignError (zh + en)
     if lang == "zh":
         return f"按任务书数据{zh}：\n  {detail}"
     return f"{en} with the brief's data:\n  {detail}"
@@ -125,7 +123,7 @@ def run_one(brief: Path, *, out_dir: Path | None = None, lang: str | None = None
         # a group asked for by name gets its own folder; the default group keeps the brief's
         out_dir = Path("out") / (brief.stem if group is None else f"{brief.stem}-g{safe_label(label)}")
     machine = get_machine(b.machine)
-    common = dict(base, machine=machine.name, out_dir=str(out_dir), groups=variant.groups)
+    common = dict(base, machine=machine.name, out_dir=str(out_dir))
     try:
         params = machine.to_params(b)
     except ValueError as exc:  # a conversion found the data inconsistent

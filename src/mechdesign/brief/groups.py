@@ -119,7 +119,7 @@ def apply_group(data: dict, table: GroupTable, label: str) -> tuple[dict, dict[s
                              "a group cannot change the machine or the groups table")
         node: Any = result
         for i, part in enumerate(path[:-1]):
-            node = _step(node, part, create=True, where=f"{base}.{'.'.join(map(str, path[:i + 1]))}")
+            node = _step(node, part, where=f"{base}.{'.'.join(map(str, path[:i + 1]))}")
         last = path[-1]
         if isinstance(node, list):
             index = _index(node, last, f"{base}.{dotted}")
@@ -143,13 +143,12 @@ def _index(node: list, part: Any, where: str) -> int:
     return index
 
 
-def _step(node: Any, part: Any, *, create: bool, where: str) -> Any:
+def _step(node: Any, part: Any, *, where: str) -> Any:
+    """One step down a group's path; a section the brief lacks is created."""
     if isinstance(node, list):
         return node[_index(node, part, where)]
     if isinstance(node, dict):
         if part not in node or node[part] is None:
-            if not create:
-                raise GroupError(where, "missing", "no such section")
             node[part] = {}
         return node[part]
     raise GroupError(where, repr(node)[:60], "this is a value, not a section")
