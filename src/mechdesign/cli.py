@@ -109,7 +109,7 @@ def run(
             outcome = run_one(brief, out_dir=out, lang=lang.value if lang else None, formats=fmt,
                               group=group, templates=templates, stage_progress=stage_progress,
                               render_progress=lambda what: _err(f"      rendering {what}"),
-                              on_warning=lambda text: _err(f"warning: {text}"))
+                              on_warning=lambda text: _err(f"warning: {text}"), parallel=True)
     except KeyboardInterrupt:
         _err("\ninterrupted: nothing was written; an earlier report in the output folder is unchanged")
         raise typer.Exit(130)

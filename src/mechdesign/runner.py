@@ -97,12 +97,15 @@ def run_one(brief: Path, *, out_dir: Path | None = None, lang: str | None = None
             templates: Path | None = None,
             stage_progress: Callable[[int, int, str], None] | None = None,
             render_progress: Callable[[str], None] | None = None,
-            on_warning: Callable[[str], None] | None = None) -> Outcome:
+            on_warning: Callable[[str], None] | None = None,
+            parallel: bool = False) -> Outcome:
     """Validate, compute and render ``brief`` (group ``group``) into ``out_dir``.
 
     Never raises for a bad brief, an infeasible design or a rendering failure: the
     Outcome says what happened. The report is written to a staging folder and moved
-    into place only when complete, so a failure leaves an earlier report as it was."""
+    into place only when complete, so a failure leaves an earlier report as it was.
+    ``parallel``: figures and sheets may be written by a helper process (a single run;
+    a batch already keeps every core busy)."""
     from .brief.loader import BriefError, load_variant
     from .machines import get_machine, stages_for
     from .pipeline import run_stages
@@ -172,7 +175,7 @@ def run_one(brief: Path, *, out_dir: Path | None = None, lang: str | None = None
             templates=templates, progress=render_progress, group=label,
             make_sheets=lambda folder, figs: make_sheets(results, b, folder, figs, language,
                                                          formats, render_progress),
-            animate=animate,
+            animate=animate, parallel=parallel,
             write_data=(None if not hasattr(report, "write_data")
                         else lambda d: report.write_data(results, d)))
     except Exception as exc:  # noqa: BLE001 - any rendering failure gets a clean message

@@ -41,13 +41,29 @@ def figure(path: Path, nrows: int = 1, size: tuple[float, float] = (7.0, 3.2), s
     matplotlib.use("Agg", force=False)
     import matplotlib.pyplot as plt
 
-    fig, axes = plt.subplots(nrows, 1, figsize=size, sharex=sharex, squeeze=False)
+    # Created at the saving resolution: tight_layout then measures the text at the same
+    # dpi as the drawing, and matplotlib's text-metrics cache serves both.
+    fig, axes = plt.subplots(nrows, 1, figsize=size, sharex=sharex, squeeze=False, dpi=DPI)
     try:
         yield [ax for ax in axes[:, 0]]
-        fig.tight_layout()
-        fig.savefig(path, dpi=150)
+        save_png(fig, path)
     finally:
         plt.close(fig)
+
+
+DPI = 150
+
+
+def save_png(fig, path: Path) -> None:
+    """Lay out and write a finished figure as PNG, in a helper process when the report
+    is rendered with background saves (:mod:`.parallel`)."""
+    from .parallel import save
+
+    def write():
+        fig.tight_layout()
+        fig.savefig(path, dpi=DPI)
+
+    save(write, Path(path).name)
 
 
 def _phase_axis(ax, working_span_deg: float, positions=None):

@@ -27,7 +27,7 @@ def _scheme(path: Path, lang: str, syn) -> None:
     import matplotlib.pyplot as plt
 
     zh = lang == "zh"
-    figure, (left, right) = plt.subplots(1, 2, figsize=(7.0, 5.4),
+    figure, (left, right) = plt.subplots(1, 2, figsize=(7.0, 5.4), dpi=fig.DPI,
                                          gridspec_kw={"width_ratios": [1.0, 1.25]})
     try:
         R, c = syn.rocker_DC * MM, syn.rocker_DB * MM
@@ -98,8 +98,7 @@ def _scheme(path: Path, lang: str, syn) -> None:
         right.set_ylim(pts.imag.min() - pad, pts.imag.max() + pad)
         right.set_title(("四杆机构的 θ 圆作图（蓝：折叠极位，红：拉直极位）" if zh else
                          "four-bar θ-circle (blue: folded, red: extended)"), fontsize=8)
-        figure.tight_layout()
-        figure.savefig(path, dpi=150)
+        fig.save_png(figure, path)
     finally:
         plt.close(figure)
 

@@ -220,25 +220,92 @@ def _typst_message(exc: Exception) -> str:
     return "\n".join(part.rstrip() for part in parts if part)
 
 
-def render_pdf(md_path: Path, pdf_path: Path, metadata: dict, template: Path) -> None:
+def _atomic_write(path: Path, data: bytes) -> None:
+    path.parent.mkdir(parents=True, exist_ok=True)
+    tmp = path.with_name(f".{path.name}.{os.getpid()}.tmp")
+    try:
+        tmp.write_bytes(data)
+        os.replace(tmp, path)
+    except BaseException:
+        tmp.unlink(missing_ok=True)
+        raise
+
+
+def rasterize_pdf(pdf_path: Path, png_path: Path, ppi: float) -> None:
+    """The first page of a PDF as a PNG at ``ppi`` pixels per inch, rasterised by typst
+    (a one-line document placing the PDF as an image on a page of its size)."""
+    import typst
+
+    from .parallel import note_typst_used
+
+    note_typst_used()
+    pdf_path, png_path = Path(pdf_path).resolve(), Path(png_path).resolve()
+    root = pdf_path.parent
+    source = ("#set page(width: auto, height: auto, margin: 0pt)\n"
+              f"#image({json.dumps(pdf_path.name)})\n")
+    fd, typ_name = tempfile.mkstemp(prefix=f".{pdf_path.stem}-", suffix=".typ", dir=root)
+    try:
+        with os.fdopen(fd, "w", encoding="utf-8") as handle:
+            handle.write(source)
+        try:
+            png = typst.compile(typ_name, root=str(root), format="png", ppi=float(ppi),
+                                ignore_system_fonts=True)
+        except typst.TypstError as exc:
+            raise PdfRenderError(f"typst failed to rasterise {pdf_path.name}:\n"
+                                 f"{_typst_message(exc)}") from exc
+    finally:
+        Path(typ_name).unlink(missing_ok=True)
+    _atomic_write(png_path, png if isinstance(png, bytes) else png[0])
+
+
+def _use_vector_images(source: str, substitutes: dict[str, str]) -> str:
+    """Point typst's image() calls at the vector files that ``substitutes`` maps the
+    Markdown's raster previews to (a drawing sheet's PDF for its PNG preview)."""
+    for raster, vector in substitutes.items():
+        source = source.replace(f"image({json.dumps(raster)}", f"image({json.dumps(vector)}")
+    return source
+
+
+def render_pdf(md_path: Path, pdf_path: Path, metadata: dict, template: Path,
+               substitutes: dict[str, str] | None = None) -> None:
     """Render a Markdown file to PDF via pandoc and typst.
 
     Inputs: the Markdown file (images referenced relative to its directory), the
-    output PDF path, the metadata mapping (see module docstring) and the pandoc
-    typst template.  The typst source is written under a temporary name into the
-    Markdown's directory (the typst root) and deleted afterwards; the PDF is
-    written atomically.  Typst warnings are re-emitted as Python warnings.
-    The PDF is dated :func:`source_timestamp` of ``metadata["date"]``: the same input
-    gives the same bytes.  Raises PdfRenderError if pandoc or typst fails.
-    """
+    output PDF path, the metadata mapping (see module docstring), the pandoc typst
+    template and ``substitutes`` (see :func:`compile_pdf`). The PDF is dated
+    :func:`source_timestamp` of ``metadata["date"]``: the same input gives the same
+    bytes. Raises PdfRenderError if pandoc or typst fails."""
+    md_path = Path(md_path).resolve()
+    compile_pdf(typst_source(md_path, metadata, template), md_path.parent, pdf_path, metadata,
+                substitutes, stem=md_path.stem)
+
+
+def typst_source(md_path: Path, metadata: dict, template: Path) -> str:
+    """The typst document of a Markdown file (pandoc; images are not read, so this may
+    run while they are still being written)."""
+    md_path = Path(md_path).resolve()
+    return markdown_to_typst(md_path.read_text(encoding="utf-8"), template, metadata,
+                             md_path.parent)
+
+
+def compile_pdf(source: str, root: Path, pdf_path: Path, metadata: dict,
+                substitutes: dict[str, str] | None = None, stem: str = "report") -> None:
+    """Compile typst ``source`` (images relative to ``root``) in-process to ``pdf_path``.
+
+    The source is written under a temporary name into ``root`` (the typst root) and
+    deleted afterwards; the PDF is written atomically. ``substitutes`` maps images of
+    the document (paths relative to ``root``) to vector files placed instead where they
+    exist: the drawing sheets' PDFs for their PNG previews. Typst warnings are re-emitted
+    as Python warnings. Raises PdfRenderError if typst fails."""
     import typst
 
-    md_path = Path(md_path).resolve()
-    pdf_path = Path(pdf_path).resolve()
-    root = md_path.parent
-    source = markdown_to_typst(md_path.read_text(encoding="utf-8"), template, metadata, root)
+    from .parallel import note_typst_used
 
-    fd, typ_name = tempfile.mkstemp(prefix=f".{md_path.stem}-", suffix=".typ", dir=root)
+    root, pdf_path = Path(root).resolve(), Path(pdf_path).resolve()
+    source = _use_vector_images(source, {k: v for k, v in (substitutes or {}).items()
+                                         if (root / v).is_file()})
+    note_typst_used()
+    fd, typ_name = tempfile.mkstemp(prefix=f".{stem}-", suffix=".typ", dir=root)
     try:
         with os.fdopen(fd, "w", encoding="utf-8") as handle:
             handle.write(source)
@@ -250,18 +317,11 @@ def render_pdf(md_path: Path, pdf_path: Path, metadata: dict, template: Path) ->
                 timestamp=source_timestamp(metadata.get("date")),
             )
         except typst.TypstError as exc:
-            raise PdfRenderError(f"typst failed to compile {md_path.name}:\n{_typst_message(exc)}") from exc
+            raise PdfRenderError(f"typst failed to compile {stem}.md:\n{_typst_message(exc)}") from exc
     finally:
         Path(typ_name).unlink(missing_ok=True)
 
     for warning in typst_warnings:
-        warnings.warn(f"typst: {_typst_message(warning)}", stacklevel=2)
+        warnings.warn(f"typst: {_typst_message(warning)}", stacklevel=3)
 
-    pdf_path.parent.mkdir(parents=True, exist_ok=True)
-    tmp_pdf = pdf_path.with_name(f".{pdf_path.name}.{os.getpid()}.tmp")
-    try:
-        tmp_pdf.write_bytes(pdf_bytes)
-        os.replace(tmp_pdf, pdf_path)
-    except BaseException:
-        tmp_pdf.unlink(missing_ok=True)
-        raise
+    _atomic_write(pdf_path, pdf_bytes)

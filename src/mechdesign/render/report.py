@@ -17,6 +17,7 @@ import jinja2
 
 from ..results import dumps
 from .fmt import md_text
+from .parallel import background_saves
 
 FORMATS = ("md", "pdf", "docx", "dxf", "gif")
 
@@ -74,13 +75,15 @@ def write_report(out_dir: Path, *, machine: str, lang: str, formats: tuple[str, 
                  write_data: Callable[[Path], list] | None = None,
                  make_sheets: Callable[[Path, Path], list] | None = None,
                  animate: Callable[[Path], Path] | None = None,
-                 group: str | None = None) -> list[Path]:
+                 group: str | None = None, parallel: bool = False) -> list[Path]:
     """Render into a staging folder, then move the finished files into ``out_dir``.
 
     ``write_data`` may add machine-specific data files (e.g. CSV coordinates) to the folder;
     ``make_sheets(folder, fig_dir)`` writes the drawing sheets and returns their
     :class:`~.sheets.SheetFiles`; ``animate(path)`` writes the GIF (format gif);
-    ``group`` (a data group of the brief) is stated on the title page and atop the report."""
+    ``group`` (a data group of the brief) is stated on the title page and atop the report;
+    ``parallel`` lets figures and sheets be written by a helper process while the next one
+    is drawn (:mod:`.parallel`: a single run on a machine of two cores or more)."""
     say = progress or (lambda _msg: None)
     tdir = template_dir(templates)
     out_dir = Path(out_dir)
@@ -90,25 +93,35 @@ def write_report(out_dir: Path, *, machine: str, lang: str, formats: tuple[str, 
         fig_dir = staging / "figures"
         fig_dir.mkdir()
         say("figures")
-        figures = make_figures(fig_dir)
-        sheets = make_sheets(staging, fig_dir) if make_sheets is not None else []
-        ctx = make_context(figures)
-        ctx["sheets"] = [_sheet_row(sh, lang) for sh in sheets]
-        say("Markdown")
-        md = render_markdown(f"{machine}.{lang}.md.j2", ctx, tdir)
-        if group is not None:
-            md = group_banner(group, lang) + md
-        (staging / "report.md").write_text(md, encoding="utf-8")
-        (staging / "results.json").write_text(dumps(document), encoding="utf-8")
-        if write_data is not None:
-            say("data files (CSV)")
-            write_data(staging)
-        if "pdf" in formats:
-            say("PDF (pandoc → typst)")
-            from .pdf import render_pdf
+        # Figures and sheets may still be being written by a helper process until the
+        # block ends; the Markdown, the data files and pandoc's typst need only their names.
+        with background_saves(parallel):
+            figures = make_figures(fig_dir)
+            sheets = make_sheets(staging, fig_dir) if make_sheets is not None else []
+            ctx = make_context(figures)
+            ctx["sheets"] = [_sheet_row(sh, lang) for sh in sheets]
+            say("Markdown")
+            md = render_markdown(f"{machine}.{lang}.md.j2", ctx, tdir)
+            if group is not None:
+                md = group_banner(group, lang) + md
+            (staging / "report.md").write_text(md, encoding="utf-8")
+            (staging / "results.json").write_text(dumps(document), encoding="utf-8")
+            if write_data is not None:
+                say("data files (CSV)")
+                write_data(staging)
+            if "pdf" in formats:
+                say("PDF (pandoc → typst)")
+                from .pdf import typst_source
 
-            render_pdf(staging / "report.md", staging / "report.pdf",
-                       pdf_metadata(meta, lang, group), tdir / "report.typ")
+                source = typst_source(staging / "report.md", pdf_metadata(meta, lang, group),
+                                      tdir / "report.typ")
+        if "pdf" in formats:
+            from .pdf import compile_pdf
+
+            # the PDF places each drawing sheet as vector graphics (its own PDF)
+            vector = {sh.preview: sh.pdf for sh in sheets if sh.pdf}
+            compile_pdf(source, staging, staging / "report.pdf",
+                        pdf_metadata(meta, lang, group), vector)
         if "docx" in formats:
             say("Word (pandoc → docx)")
             from .docx import render_docx

@@ -132,15 +132,34 @@ def _text(ax, pos, text, height, layer, halign, valign, angle):
 
 def write_sheet(sheet: Sheet, pdf: Path | None = None, png: Path | None = None,
                 png_width_px: int = 2400) -> None:
-    """Write the sheet as a vector PDF at true size and/or a PNG preview."""
+    """Write the sheet as a vector PDF at true size and/or a PNG preview.
+
+    The sheet is drawn once, as the PDF; the preview is that PDF rasterised by typst
+    (:func:`.pdf.rasterize_pdf`), so the two cannot differ. Without ``pdf`` the PDF is a
+    temporary file beside the PNG. In a report rendered with background saves the
+    writing happens in a helper process (:mod:`.parallel`)."""
     import matplotlib.pyplot as plt
 
+    from .parallel import save
+
+    if pdf is None and png is None:
+        return
     fig = _draw(sheet)
+    target = Path(pdf) if pdf is not None else Path(png).with_name(f".{Path(png).stem}.sheet.pdf")
+
+    def write():
+        try:
+            _atomic(fig, target, format="pdf", metadata={"CreationDate": _creation_date(sheet)})
+            if png is not None:
+                from .pdf import rasterize_pdf
+
+                rasterize_pdf(target, Path(png), ppi=png_width_px / (sheet.width / 25.4))
+        finally:
+            if pdf is None:
+                target.unlink(missing_ok=True)
+
     try:
-        if pdf is not None:
-            _atomic(fig, Path(pdf), format="pdf", metadata={"CreationDate": _creation_date(sheet)})
-        if png is not None:
-            _atomic(fig, Path(png), format="png", dpi=png_width_px / (sheet.width / 25.4))
+        save(write, target.name if png is None else Path(png).name, uses_typst=png is not None)
     finally:
         plt.close(fig)
 
