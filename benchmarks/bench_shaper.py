@@ -35,7 +35,7 @@ def main() -> None:
     args = parser.parse_args()
 
     from mechdesign.brief.loader import load_brief
-    from mechdesign.machines import get_machine, shaper
+    from mechdesign.machines import get_machine, shaper, stages_for
     from mechdesign.pipeline import run_stages
     from mechdesign.render import shaper_report
     from mechdesign.render.report import pdf_metadata, render_markdown, template_dir
@@ -61,7 +61,7 @@ def main() -> None:
     with tempfile.TemporaryDirectory() as tmp:
         out = Path(tmp)
         start = time.perf_counter()
-        results, _ = run_stages(machine.stages, {"params": params, "brief": brief})
+        results, _ = run_stages(stages_for(machine, params), {"params": params, "brief": brief})
         document = dumps(machine.document(results))
         t_compute = time.perf_counter() - start
 

@@ -11,6 +11,14 @@ The inner solvers return NaN where a group cannot be assembled; the mechanism la
 Method: 孙桓《机械原理》 杆组法 (analysis by Assur groups). Velocities and accelerations
 come from differentiating the closure equation of each group analytically; the two
 unknowns of each group follow from a 2×2 real system solved by Cramer's rule.
+
+Speed (issue 8): every function below is a short chain of whole-array numpy operations.
+Trigonometric functions are the expensive part (~10 ns per angle each, against ~1 ns for
+an addition), so unit vectors e^{iθ} come from the closure geometry where the group gives
+them for free (the RRR's rotation by β, the RPR's r = (s + i·e)·u) and from cos/sin only
+where an angle is the input (crank, point on a link). Constants (frame points, the crank's
+ω, a fixed guide's angle) are read-only full-length broadcast views of one number: they
+behave as arrays of shape (N,) for every reader and cost no memory.
 """
 from __future__ import annotations
 
@@ -46,23 +54,56 @@ class SlideMotion:
     dds: np.ndarray
 
 
-def cross(p: np.ndarray, q: np.ndarray) -> np.ndarray:
-    """z-component of the planar cross product p × q for complex vectors."""
-    return (np.conj(p) * q).imag
+def cross(p, q):
+    """z-component of the planar cross product p × q for complex vectors (or scalars)."""
+    return p.real * q.imag - p.imag * q.real
+
+
+def dot(p, q):
+    """Scalar product p · q of complex vectors (or scalars)."""
+    return p.real * q.real + p.imag * q.imag
 
 
 def solve2(a: np.ndarray, b: np.ndarray, c: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """Real x, y with ``a·x + b·y = c`` for complex a, b, c (Cramer's rule)."""
+    return _cramer(a, b, c, cross(a, b))
+
+
+def _cramer(a, b, c, det):
+    """solve2 with the determinant a × b given (groups reuse it for ω and α)."""
     with np.errstate(divide="ignore", invalid="ignore"):
-        x = cross(b, c) / cross(b, a)
-        y = cross(a, c) / cross(a, b)
-    return x, y
+        return cross(c, b) / det, cross(a, c) / det
+
+
+def unit(angle: np.ndarray) -> np.ndarray:
+    """e^{iθ} for an array of angles, as cos θ + i·sin θ (faster than np.exp(1j·θ))."""
+    angle = np.asarray(angle, dtype=float)
+    u = np.empty(angle.shape, dtype=complex)
+    np.cos(angle, out=u.real)
+    np.sin(angle, out=u.imag)
+    return u
+
+
+def constant(value, n: int) -> np.ndarray:
+    """A read-only array of n equal entries (a broadcast view: no memory per entry)."""
+    return np.broadcast_to(value, (n,))
 
 
 def fixed_point(xy: complex, n: int) -> PointMotion:
-    """A frame point, repeated for n crank positions."""
-    zero = np.zeros(n, dtype=complex)
-    return PointMotion(np.full(n, complex(xy)), zero, zero.copy())
+    """A frame point, repeated for n crank positions (read-only constant arrays)."""
+    zero = constant(0j, n)
+    return PointMotion(constant(complex(xy), n), zero, zero)
+
+
+def _carried(origin: PointMotion, u: np.ndarray, omega, alpha) -> PointMotion:
+    """The point at ``origin + u`` on a link turning at ω, α (u rigid on the link):
+    v = v_O + iω·u,  a = a_O + (iα − ω²)·u."""
+    vel = 1j * u
+    vel *= omega
+    vel += origin.vel
+    acc = (1j * alpha - omega * omega) * u
+    acc += origin.acc
+    return PointMotion(origin.pos + u, vel, acc)
 
 
 def point_on_link(origin: PointMotion, link: AngleMotion, distance: float,
@@ -72,10 +113,9 @@ def point_on_link(origin: PointMotion, link: AngleMotion, distance: float,
     The point lies ``distance`` [m] from ``origin`` (a point of the same link) in the
     direction ``link.angle + offset_angle``.
     """
-    u = distance * np.exp(1j * (link.angle + offset_angle))
-    vel = origin.vel + 1j * link.omega * u
-    acc = origin.acc + (1j * link.alpha - link.omega**2) * u
-    return PointMotion(origin.pos + u, vel, acc)
+    u = unit(link.angle + offset_angle if offset_angle else link.angle)
+    u *= distance
+    return _carried(origin, u, link.omega, link.alpha)
 
 
 def crank(pivot: PointMotion, length: float, angle: np.ndarray, omega: float
@@ -86,9 +126,11 @@ def crank(pivot: PointMotion, length: float, angle: np.ndarray, omega: float
     and its tip.
     """
     angle = np.asarray(angle, dtype=float)
-    w = np.full_like(angle, omega)
-    motion = AngleMotion(angle, w, np.zeros_like(angle))
-    return motion, point_on_link(pivot, motion, length)
+    n = len(angle)
+    motion = AngleMotion(angle, constant(float(omega), n), constant(0.0, n))
+    u = unit(angle)
+    u *= length
+    return motion, _carried(pivot, u, float(omega), 0.0)
 
 
 def rrr(b: PointMotion, d: PointMotion, l1: float, l2: float, branch: int
@@ -101,21 +143,35 @@ def rrr(b: PointMotion, d: PointMotion, l1: float, l2: float, branch: int
     bd = d.pos - b.pos
     dist = np.abs(bd)
     with np.errstate(divide="ignore", invalid="ignore"):
-        cos_beta = (l1**2 + dist**2 - l2**2) / (2.0 * l1 * dist)
-    beta = np.arccos(np.where(np.abs(cos_beta) <= 1.0, cos_beta, np.nan))
-    th1 = np.angle(bd) + branch * beta
-    u1 = l1 * np.exp(1j * th1)
+        cos_beta = (l1**2 + dist**2 - l2**2) / (2.0 * l1 * dist)   # law of cosines
+        cos_beta[~(np.abs(cos_beta) <= 1.0)] = np.nan            # cannot close there
+    beta = np.arccos(cos_beta)
+    th1 = np.arctan2(bd.imag, bd.real) + branch * beta          # angle(BD) ± β
+    # e^{iθ1} = e^{i·angle(BD)}·e^{±iβ}: rotate the unit vector along BD by β
+    # (sin β = √((1 − cos β)(1 + cos β)), accurate near β = 0 and π).
+    rot = np.empty_like(bd)
+    rot.real = cos_beta
+    np.sqrt((1.0 - cos_beta) * (1.0 + cos_beta), out=rot.imag)
+    rot.imag *= branch
+    rot *= bd
+    rot *= l1 / dist
+    u1 = rot                                  # B→C
     c_pos = b.pos + u1
-    u2 = c_pos - d.pos
-    th2 = np.angle(u2)
-    # vB + iω1·u1 = vD + iω2·u2
-    w1, w2 = solve2(1j * u1, -1j * u2, d.vel - b.vel)
-    rhs = d.acc - b.acc + w1**2 * u1 - w2**2 * u2
-    a1, a2 = solve2(1j * u1, -1j * u2, rhs)
+    u2 = c_pos - d.pos                        # D→C
+    th2 = np.arctan2(u2.imag, u2.real)
+    # Closure B + u1 = D + u2 differentiated: iω1·u1 − iω2·u2 = vD − vB.
+    col1, col2 = 1j * u1, -1j * u2            # the 2×2 system's columns, for ω and α
+    det = cross(col1, col2)
+    w1, w2 = _cramer(col1, col2, d.vel - b.vel, det)
+    # Twice: iα1·u1 − iα2·u2 = aD − aB + ω1²·u1 − ω2²·u2.
+    rhs = d.acc - b.acc
+    rhs += (w1 * w1) * u1
+    rhs -= (w2 * w2) * u2
+    a1, a2 = _cramer(col1, col2, rhs, det)
     link1 = AngleMotion(th1, w1, a1)
     link2 = AngleMotion(th2, w2, a2)
-    c = PointMotion(c_pos, b.vel + 1j * w1 * u1, b.acc + (1j * a1 - w1**2) * u1)
-    return link1, link2, c
+    c = _carried(b, u1, w1, a1)
+    return link1, link2, PointMotion(c_pos, c.vel, c.acc)
 
 
 def rrp(b: PointMotion, length: float, guide_point: complex, guide_angle: float,
@@ -128,18 +184,21 @@ def rrp(b: PointMotion, length: float, guide_point: complex, guide_angle: float,
     position along the guide measured from ``guide_point``, and C.
     """
     e = np.exp(1j * guide_angle)
-    w = b.pos - guide_point
-    along = (np.conj(e) * w).real
-    h = (np.conj(e) * w).imag
+    local = (b.pos - guide_point) * np.conj(e)   # B in guide coordinates
+    along, h = local.real, local.imag
     root = length**2 - h**2
-    s = along + branch * np.sqrt(np.where(root >= 0.0, root, np.nan))
+    root[~(root >= 0.0)] = np.nan                # the rod cannot reach the guide there
+    s = along + branch * np.sqrt(root)
     c_pos = guide_point + s * e
     u = c_pos - b.pos
-    th = np.angle(u)
-    # vB + iω·u = ṡ·e
-    w_rod, ds = solve2(1j * u, -e * np.ones_like(u), -b.vel)
-    rhs = -b.acc + w_rod**2 * u
-    a_rod, dds = solve2(1j * u, -e * np.ones_like(u), rhs)
+    th = np.arctan2(u.imag, u.real)
+    # vB + iω·u = ṡ·e  →  iω·u − ṡ·e = −vB
+    a = 1j * u
+    det = cross(a, -e)
+    w_rod, ds = _cramer(a, -e, -b.vel, det)
+    rhs = w_rod * w_rod * u
+    rhs -= b.acc
+    a_rod, dds = _cramer(a, -e, rhs, det)
     rod = AngleMotion(th, w_rod, a_rod)
     slide = SlideMotion(s, ds, dds)
     c = PointMotion(c_pos, ds * e, dds * e)
@@ -160,11 +219,20 @@ def rpr(a: PointMotion, pivot: PointMotion, branch: int, offset: float = 0.0
     r = a.pos - pivot.pos
     dist2 = np.abs(r) ** 2
     root = dist2 - offset**2
-    s = branch * np.sqrt(np.where(root >= 0.0, root, np.nan))
-    th = np.angle(r) - np.arctan2(offset, s)
-    u = np.exp(1j * th)
+    root[~(root >= 0.0)] = np.nan
+    s = np.sqrt(root)
+    s *= branch
+    th = np.arctan2(r.imag, r.real) - np.arctan2(offset, s)
+    # The bar's unit vector from the closure r = (s + i·offset)·u, no trigonometry.
+    u = r * (s - 1j * offset)
+    u /= dist2
     # vA − vO = iω·r + ṡ·u   (r = s·u + offset·iu)
-    w, ds = solve2(1j * r, u, a.vel - pivot.vel)
-    rhs = a.acc - pivot.acc + w**2 * r - 2.0 * w * ds * 1j * u
-    al, dds = solve2(1j * r, u, rhs)
+    ir = 1j * r
+    det = cross(ir, u)
+    w, ds = _cramer(ir, u, a.vel - pivot.vel, det)
+    # aA − aO = iα·r − ω²·r + 2ω·ṡ·iu + s̈·u
+    rhs = a.acc - pivot.acc
+    rhs += (w * w) * r
+    rhs -= (2.0 * w * ds) * (1j * u)
+    al, dds = _cramer(ir, u, rhs, det)
     return AngleMotion(th, w, al), SlideMotion(s, ds, dds)

@@ -117,8 +117,8 @@ class Group(Protocol):
 
 
 def _const_angle(angle: float, n: int) -> AngleMotion:
-    z = np.zeros(n)
-    return AngleMotion(np.full(n, angle), z, z.copy())
+    zero = kin.constant(0.0, n)
+    return AngleMotion(kin.constant(float(angle), n), zero, zero)
 
 
 @dataclass(frozen=True)
@@ -322,11 +322,12 @@ class Mechanism:
 
 def _check_assembled(group, m: Motion, produced: dict[str, str], phi: np.ndarray,
                      mech: "Mechanism | None" = None) -> None:
+    arrays = [m.links[link].angle for link in group.links] + [m.points[p].pos for p in produced]
+    if all(np.isfinite(a).all() for a in arrays):
+        return
     bad = np.zeros(len(phi), dtype=bool)
-    for link in group.links:
-        bad |= ~np.isfinite(m.links[link].angle)
-    for p in produced:
-        bad |= ~np.isfinite(m.points[p].pos)
+    for a in arrays:
+        bad |= ~np.isfinite(a)
     if bad.any():
         first = float(np.degrees(phi[bad][0]) % 360.0)
         count = int(bad.sum())

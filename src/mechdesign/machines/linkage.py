@@ -229,6 +229,9 @@ def _extremes_by_velocity(model: LinkageModel, angles: np.ndarray, v: np.ndarray
             roots.append(a)
         elif va * vb < 0:
             roots.append(brentq(lambda x: at(x)[1], a, b, xtol=1e-15, rtol=4 * np.finfo(float).eps))
+        elif min(abs(va), abs(vb)) <= 1e-9 * np.max(np.abs(v)):
+            # The zero sits on a grid point: round-off gave both ends the same sign.
+            roots.append(a if abs(va) <= abs(vb) else b)
     if len(roots) < 2:
         raise ValueError("the output does not reciprocate: its velocity never changes sign")
     values = [at(x)[0] for x in roots]
