@@ -34,6 +34,8 @@ def meshing_drawing(path: Path, lang: str, pair: SpurPair, title: str | None = N
     shifted = any(abs(w - g.d / 2) > 1e-6 * m for w, g in ((lay.r1w, g1), (lay.r2w, g2)))
     left, right = lay.n2.real - 3 * m, max(lay.n1.real, lay.b2.real) + 5 * m
     bottom, top = -2 * m, lay.n2.imag + 3.5 * m
+    from matplotlib.collections import PolyCollection
+
     with figure(path, 1, (6.4, 6.6), sharex=False) as (ax,):
         plot = lambda z, *a, **k: ax.plot(np.real(z), np.imag(z), *a, **k)  # noqa: E731
         circle = np.exp(1j * np.linspace(0, 2 * np.pi, 1500))
@@ -46,7 +48,11 @@ def meshing_drawing(path: Path, lang: str, pair: SpurPair, title: str | None = N
             for key, rad in radii.items():
                 plot(centre + rad * circle, **styles.get(key, styles["tip"]))
         for outline, tint in zip(lay.outlines(60), ("#d6e4f2", "#f4e2c8")):
-            ax.fill(outline.real, outline.imag, color=tint, lw=0, zorder=0)
+            # a collection, not ax.fill: fill's patch would have its thousands of
+            # segments measured one by one for the data limits, which are set below
+            ax.add_collection(PolyCollection([np.column_stack([outline.real, outline.imag])],
+                                             facecolors=tint, edgecolors="none", zorder=0),
+                              autolim=False)
             plot(outline, color="k", lw=1.1)
         # line of centres (O2 above the frame), common tangent, line of action, B1B2
         plot([lay.o1, 1j * top], color="0.3", lw=0.7, ls="-.")

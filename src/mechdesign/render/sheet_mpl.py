@@ -99,7 +99,9 @@ def _draw(sheet: Sheet):
                 patch = MArc((e.center.real, e.center.imag), 2 * e.radius, 2 * e.radius,
                              theta1=np.degrees(e.start), theta2=np.degrees(e.end))
             patch.set(lw=lw, ls=ls, edgecolor=color, capstyle="round")
-            ax.add_patch(patch)
+            # add_artist, not add_patch: the limits are the paper's, and add_patch would
+            # measure every arc's Bézier extents to update them (most of the drawing time)
+            ax.add_artist(patch)
         elif isinstance(e, Fill):
             fills.setdefault(e.layer, []).append(np.column_stack([np.real(e.points),
                                                                   np.imag(e.points)]))
