@@ -28,7 +28,6 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-from scipy.optimize import minimize_scalar
 
 from .errors import DesignError
 from .synthesis import extreme_angle
@@ -400,6 +399,9 @@ def optimal_position_theta(theta: float, swing: float, rocker: float = 1.0, *,
 
     def neg(p):
         return -float(cons.gamma_min(p))
+
+    from scipy.optimize import minimize_scalar   # here: it takes ~0.3 s to import
+
     res = minimize_scalar(neg, bounds=(lo, hi), method="bounded",
                           options={"xatol": 1e-13 * max(1.0, span)})
     p_best, g_best = float(res.x), -float(res.fun)

@@ -9,7 +9,6 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-from scipy.optimize import brentq
 
 
 def inv(alpha):
@@ -18,12 +17,24 @@ def inv(alpha):
 
 
 def inv_inverse(value: float) -> float:
-    """The angle α in [0, π/2) with inv α = ``value`` (≥ 0)."""
+    """The angle α in [0, π/2) with inv α = ``value`` (≥ 0).
+
+    Newton's method on f(α) = tan α − α − value (f′ = tan²α). f is increasing and convex
+    on [0, π/2), so from a start where f ≥ 0 the iterates fall monotonically onto the
+    root: both α = ∛(3·value) (tan α − α ≥ α³/3) and α = atan(value + π/2) are such
+    starts, and so is the smaller of them."""
     if value < 0:
         raise ValueError("the involute function is not negative")
     if value == 0:
         return 0.0
-    return float(brentq(lambda a: inv(a) - value, 0.0, np.pi / 2 - 1e-9, xtol=1e-15))
+    a = min(np.cbrt(3.0 * value), np.arctan(value + np.pi / 2))
+    for _ in range(100):
+        t = np.tan(a)
+        step = (t - a - value) / (t * t)
+        a -= step
+        if step <= 4e-16 * a:
+            break
+    return float(a)
 
 
 @dataclass(frozen=True)
@@ -139,6 +150,8 @@ def _fillet_end(gear: GearDims, m, alpha, c_star) -> float:
     k_end = h_c / np.tan(alpha)                            # the rounding's end on the line of action
     if gear.d / 2 * np.sin(alpha) >= (gear.hf - c_star * m) / np.sin(alpha):
         return k_end                                       # that point lies before N: no undercut
+    from scipy.optimize import brentq
+
     at = lambda k: _rack_fillet(gear, m, alpha, c_star, k)[0]  # noqa: E731
     k_b = brentq(lambda k: abs(at(k)) - gear.db / 2, k_end, 0.0)
     gap = lambda k: _involute_half_angle(gear, alpha, abs(at(k))) - np.angle(at(k))  # noqa: E731

@@ -215,29 +215,30 @@ def flywheel(k: Kinematics, f: Forces, p: ShaperParams) -> Flywheel:
 def simulated_stroke_and_K(mech: Mechanism, k: Kinematics) -> tuple[float, float]:
     """Stroke [m] and time ratio K found by simulating the linkage alone.
 
-    The extremes of the ram are searched numerically (bounded scalar minimisation of
-    x_F around the grid's extremes), independent of the synthesis formulas.
+    The extremes of the ram are the zeros of its velocity: Newton's method on
+    dx_F/dφ = v_F/ω with the analytic acceleration as its derivative (d²x_F/dφ² = a_F/ω²),
+    both extremes at once, started at the grid's extremes and each step solving the
+    linkage afresh at the new angles — independent of the synthesis formulas.
     """
-    from scipy.optimize import minimize_scalar
-
     n = k.grid_size
     phase, s = k.phase[:n], k.ram_s[:n]
     start, sense = k.crank_angle[0], np.sign(k.crank_angle[1] - k.crank_angle[0])
+    omega = next(g.omega for g in mech.groups if getattr(g, "kind", "") == "crank")
     h = phase[1] - phase[0]
-
-    def x_of(ph: float) -> float:
-        return float(mech.solve(np.array([start + sense * ph])).points["F"].pos.real[0])
-
-    found = []
-    for i, sign in ((int(np.argmin(s)), 1.0), (int(np.argmax(s)), -1.0)):
-        c = phase[i]
-        r = minimize_scalar(lambda ph: sign * k.stroke_direction * x_of(ph),
-                            bounds=(c - h, c + h), method="bounded",
-                            options={"xatol": 1e-12})
-        found.append((r.x % (2 * np.pi), k.stroke_direction * x_of(r.x)))
-    (ph_min, x_min), (ph_max, x_max) = found
-    work = (ph_max - ph_min) % (2 * np.pi)
-    return x_max - x_min, work / (2 * np.pi - work)
+    ph0 = phase[[int(np.argmin(s)), int(np.argmax(s))]]
+    ph = ph0.copy()
+    for _ in range(20):
+        f = mech.solve(start + sense * ph).points["F"]
+        slope = f.vel.real * sense / omega           # dx_F/dφ (phase runs with the crank)
+        curvature = f.acc.real / omega**2            # d²x_F/dφ² (ω constant)
+        step = np.clip(slope / curvature, -h, h)     # never leave the grid's bracket
+        ph = np.clip(ph - step, ph0 - h, ph0 + h)
+        if np.max(np.abs(step)) < 1e-14:
+            break
+    x = mech.solve(start + sense * ph).points["F"].pos.real
+    s_min, s_max = k.stroke_direction * x
+    work = (ph[1] - ph[0]) % (2 * np.pi)
+    return s_max - s_min, work / (2 * np.pi - work)
 
 
 @dataclass(frozen=True)
