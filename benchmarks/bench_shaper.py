@@ -1,20 +1,34 @@
 """Shaper benchmark: core pipeline time and the whole `mechdesign run` split by phase.
 
-Run:  python benchmarks/bench_shaper.py  [--repeat 20]
+Run:  python benchmarks/bench_shaper.py  [--repeat 20] [--big 1000000]
 
-Targets (issue 2, 2-core machine): core pipeline (kinematics + kinetostatics +
-flywheel) at 3600 crank positions <= 50 ms; the whole run (compute + figures + PDF)
-<= 3 s. Prints a table; it is not a test and never fails on time.
+Targets (issues 2 and 8, 2-core machine): core pipeline (kinematics + kinetostatics +
+flywheel) at 3600 crank positions <= 50 ms, and at 1,000,000 positions <= 2 s with a
+peak memory below 2 GB; the kinematics of a four-bar and of an offset slider-crank
+(positions, velocities, accelerations) at 100,000 crank angles within 2x of a
+hand-written closed-form numpy solution of the same linkage; the whole run (compute +
+figures + PDF) <= 3 s. Prints a table; it is not a test and never fails on time.
+
+The 1,000,000-position case runs in a fresh subprocess (one call, as a run with that
+grid would): its time is that call's, and its peak memory is the subprocess's maximum
+resident set size (getrusage RUSAGE_CHILDREN ru_maxrss, so it includes the interpreter
+and the imported modules, ~100 MB).
 """
 from __future__ import annotations
 
 import argparse
+import dataclasses
+import json
 import os
+import resource
 import statistics
+import subprocess
 import sys
 import tempfile
 import time
 from pathlib import Path
+
+import numpy as np
 
 ROOT = Path(__file__).resolve().parents[1]
 
@@ -28,11 +42,144 @@ def _median_ms(fn, repeat: int) -> float:
     return statistics.median(times)
 
 
+def _core(brief_path: str, grid_points: int | None = None):
+    """The shaper's core pipeline for a brief, as a function to time."""
+    from mechdesign.brief.loader import load_brief
+    from mechdesign.machines import get_machine, shaper
+
+    brief = load_brief(brief_path)
+    params = get_machine(brief.machine).to_params(brief)
+    if grid_points is not None:
+        params = dataclasses.replace(params, grid_points=grid_points)
+    syn = shaper.synthesize(params)
+
+    def core():
+        k, mech, motion = shaper.kinematics(syn, params)
+        f = shaper.kinetostatics(k, mech, motion, params)
+        return shaper.flywheel(k, f, params)
+    return core, params
+
+
+def _big_child(brief_path: str, grid_points: int) -> None:
+    """In the subprocess: one core call at a large grid; prints its time as JSON."""
+    core, _ = _core(brief_path, grid_points)
+    start = time.perf_counter()
+    fl = core()
+    print(json.dumps({"ms": (time.perf_counter() - start) * 1e3, "J": fl.inertia}))
+
+
+def _big_case(brief_path: str, grid_points: int) -> tuple[float, float]:
+    """Time [ms] and peak memory [MB] of one core call at ``grid_points``, in a subprocess."""
+    before = resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss
+    out = subprocess.run([sys.executable, __file__, "--child", str(grid_points),
+                          "--brief", brief_path], capture_output=True, text=True, check=True)
+    peak_kb = resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss
+    if peak_kb < before:   # ru_maxrss of children is the largest so far, not this child's
+        raise RuntimeError("peak memory of the child is hidden by an earlier, larger child")
+    return json.loads(out.stdout)["ms"], peak_kb / 1024.0
+
+
+# ------------------------------------------------------------------ hand-written references
+# Textbook closed forms for one linkage each, in real arithmetic, computing the same
+# quantities as Mechanism.solve (every moving point's position, velocity and acceleration,
+# every moving link's angle, ω and α). Written for this benchmark, independent of
+# mechdesign.core.
+
+def four_bar_by_hand(phi, a, b, c, d, w2):
+    """Crank a about (0, 0), coupler b (B→C), rocker c (D→C), D = (d, 0); C left of B→D."""
+    c2, s2 = np.cos(phi), np.sin(phi)
+    bx, by = a * c2, a * s2
+    vbx, vby = -w2 * by, w2 * bx
+    abx, aby = -w2 * w2 * bx, -w2 * w2 * by
+    dx, dy = d - bx, -by
+    dist2 = dx * dx + dy * dy
+    beta = np.arccos((b * b + dist2 - c * c) / (2.0 * b * np.sqrt(dist2)))
+    th3 = np.arctan2(dy, dx) + beta
+    c3, s3 = np.cos(th3), np.sin(th3)
+    cx, cy = bx + b * c3, by + b * s3
+    c4, s4 = (cx - d) / c, cy / c
+    th4 = np.arctan2(s4, c4)
+    s34 = s3 * c4 - c3 * s4                                # sin(θ3 − θ4)
+    w3 = a * w2 * (s4 * c2 - c4 * s2) / (b * s34)          # a·ω2·sin(θ4 − θ2) / (b·sin(θ3 − θ4))
+    w4 = a * w2 * (s3 * c2 - c3 * s2) / (c * s34)
+    rx = -c * w4 * w4 * c4 + b * w3 * w3 * c3 + a * w2 * w2 * c2
+    ry = -c * w4 * w4 * s4 + b * w3 * w3 * s3 + a * w2 * w2 * s2
+    al3 = -(rx * c4 + ry * s4) / (b * s34)
+    al4 = -(rx * c3 + ry * s3) / (c * s34)
+    vcx, vcy = vbx - w3 * b * s3, vby + w3 * b * c3
+    acx = abx - al3 * b * s3 - w3 * w3 * b * c3
+    acy = aby + al3 * b * c3 - w3 * w3 * b * s3
+    return (bx, by, vbx, vby, abx, aby, cx, cy, vcx, vcy, acx, acy,
+            th3, w3, al3, th4, w4, al4)
+
+
+def slider_crank_by_hand(phi, r, l, e, w2):
+    """Crank r about (0, 0), rod l to the slider C on the guide y = e, C ahead (+x)."""
+    c2, s2 = np.cos(phi), np.sin(phi)
+    bx, by = r * c2, r * s2
+    vbx, vby = -w2 * by, w2 * bx
+    abx, aby = -w2 * w2 * bx, -w2 * w2 * by
+    h = e - by
+    x = bx + np.sqrt(l * l - h * h)
+    c3, s3 = (x - bx) / l, h / l
+    th3 = np.arctan2(s3, c3)
+    w3 = -r * w2 * c2 / (l * c3)                           # from r·sinφ + l·sinθ3 = e
+    v = -r * w2 * s2 - l * w3 * s3
+    al3 = (r * w2 * w2 * s2 + l * w3 * w3 * s3) / (l * c3)
+    a = -r * w2 * w2 * c2 - l * al3 * s3 - l * w3 * w3 * c3
+    return bx, by, vbx, vby, abx, aby, x, v, a, th3, w3, al3
+
+
+def _linkage_rows(n: int, repeat: int) -> list:
+    """(what, ours ms, hand ms, max relative difference) for the two linkages."""
+    from mechdesign.core.mechanism import RRP, RRR, Crank, Mechanism
+
+    phi = np.linspace(0.0, 2 * np.pi, n, endpoint=False) + 1e-3
+    four = (Mechanism("1", {"A": 0j, "D": 9 + 0j})
+            .add(Crank("crank", "2", "A", "B", 5.0, 10.0))
+            .add(RRR("g", "3", "4", "B", "D", "C", 8.0, 8.0, 1)))
+    slider = (Mechanism("1", {"O": 0j})
+              .add(Crank("crank", "2", "O", "B", 0.05, 10.0))
+              .add(RRP("g", "3", "4", "B", "C", 0.2, 0.01j, 0.0, 1, "1")))
+
+    def rel(ours, hand):
+        return max(float(np.max(np.abs(o - h)) / np.max(np.abs(h))) for o, h in zip(ours, hand))
+
+    m = four.solve(phi)
+    B, C, l3, l4 = m.points["B"], m.points["C"], m.links["3"], m.links["4"]
+    ours = [f(p) for p in (B, C) for q in ("pos", "vel", "acc") for f in
+            (lambda p: getattr(p, q).real, lambda p: getattr(p, q).imag)]
+    ours += [getattr(l, q) for l in (l3, l4) for q in ("angle", "omega", "alpha")]
+    err4 = rel(ours, four_bar_by_hand(phi, 5.0, 8.0, 8.0, 9.0, 10.0))
+    m = slider.solve(phi)
+    B, C, l3 = m.points["B"], m.points["C"], m.links["3"]
+    ours = [f(p) for p in (B,) for q in ("pos", "vel", "acc") for f in
+            (lambda p: getattr(p, q).real, lambda p: getattr(p, q).imag)]
+    ours += [C.pos.real, C.vel.real, C.acc.real, l3.angle, l3.omega, l3.alpha]
+    errs = rel(ours, slider_crank_by_hand(phi, 0.05, 0.2, 0.01, 10.0))
+
+    def timed(fn):
+        fn()
+        return _median_ms(fn, repeat)
+    return [(f"four-bar kinematics, {n} angles", timed(lambda: four.solve(phi)),
+             timed(lambda: four_bar_by_hand(phi, 5.0, 8.0, 8.0, 9.0, 10.0)), err4),
+            (f"slider-crank kinematics, {n} angles", timed(lambda: slider.solve(phi)),
+             timed(lambda: slider_crank_by_hand(phi, 0.05, 0.2, 0.01, 10.0)), errs)]
+
+
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--repeat", type=int, default=20, help="repetitions of the core timing")
     parser.add_argument("--brief", default=str(ROOT / "designs" / "shaper.yaml"))
+    parser.add_argument("--big", type=int, default=1_000_000,
+                        help="crank positions of the large core case (0: skip it)")
+    parser.add_argument("--angles", type=int, default=100_000,
+                        help="crank angles of the four-bar / slider-crank rows")
+    parser.add_argument("--child", type=int, help=argparse.SUPPRESS)
     args = parser.parse_args()
+    if args.child:
+        _big_child(args.brief, args.child)
+        return
 
     from mechdesign.brief.loader import load_brief
     from mechdesign.machines import get_machine, shaper, stages_for
@@ -45,18 +192,18 @@ def main() -> None:
     brief = load_brief(args.brief)
     machine = get_machine(brief.machine)
     params = machine.to_params(brief)
-    syn = shaper.synthesize(params)
-
-    def core():
-        k, mech, motion = shaper.kinematics(syn, params)
-        f = shaper.kinetostatics(k, mech, motion, params)
-        shaper.flywheel(k, f, params)
+    core, _ = _core(args.brief)
 
     core()  # warm-up (imports, caches)
     core_ms = _median_ms(core, args.repeat)
 
     rows = [("core pipeline, %d crank positions (median of %d)" % (params.grid_points, args.repeat),
              core_ms, 50.0)]
+    big_mb = None
+    if args.big:
+        big_ms, big_mb = _big_case(args.brief, args.big)
+        rows.append((f"core pipeline, {args.big} positions (one call, subprocess)", big_ms, 2000.0))
+    linkage_rows = _linkage_rows(args.angles, args.repeat) if args.angles else []
 
     with tempfile.TemporaryDirectory() as tmp:
         out = Path(tmp)
@@ -72,6 +219,7 @@ def main() -> None:
 
         start = time.perf_counter()
         ctx = shaper_report.context(results, brief, figs, "zh")
+        ctx.setdefault("sheets", [])   # drawing sheets are not timed here (write_report adds them)
         md = render_markdown("shaper.zh.md.j2", ctx, template_dir())
         (out / "report.md").write_text(md, encoding="utf-8")
         (out / "results.json").write_text(document, encoding="utf-8")
@@ -95,6 +243,17 @@ def main() -> None:
         tgt = f"{target:.0f}" if target else ""
         ok = "" if target is None else ("yes" if ms <= target else "NO")
         print(f"{what:58s} {ms:9.1f} {tgt:>8s}  {ok}")
+    if big_mb is not None:
+        print(f"{'  peak memory of that subprocess (maxrss) [MB]':58s} {big_mb:9.0f} "
+              f"{2048:>8d}  {'yes' if big_mb < 2048 else 'NO'}")
+    if linkage_rows:
+        print()
+        print(f"{'kinematics (pos+vel+acc), median of %d' % args.repeat:40s} {'ours ms':>8s} "
+              f"{'hand ms':>8s} {'ratio':>6s} {'target':>6s}  ok  max rel diff")
+        for what, ours, hand, err in linkage_rows:
+            ratio = ours / hand
+            print(f"{what:40s} {ours:8.2f} {hand:8.2f} {ratio:6.2f} {2.0:6.1f}  "
+                  f"{'yes' if ratio <= 2.0 else 'NO ':3s} {err:.1e}")
 
 
 if __name__ == "__main__":

@@ -147,6 +147,7 @@ def rrr(b: PointMotion, d: PointMotion, l1: float, l2: float, branch: int
         cos_beta[~(np.abs(cos_beta) <= 1.0)] = np.nan            # cannot close there
     beta = np.arccos(cos_beta)
     th1 = np.arctan2(bd.imag, bd.real) + branch * beta          # angle(BD) ± β
+    del beta
     # e^{iθ1} = e^{i·angle(BD)}·e^{±iβ}: rotate the unit vector along BD by β
     # (sin β = √((1 − cos β)(1 + cos β)), accurate near β = 0 and π).
     rot = np.empty_like(bd)
@@ -156,6 +157,7 @@ def rrr(b: PointMotion, d: PointMotion, l1: float, l2: float, branch: int
     rot *= bd
     rot *= l1 / dist
     u1 = rot                                  # B→C
+    del bd, dist, cos_beta                    # (temporaries freed early: less memory)
     c_pos = b.pos + u1
     u2 = c_pos - d.pos                        # D→C
     th2 = np.arctan2(u2.imag, u2.real)
@@ -185,10 +187,11 @@ def rrp(b: PointMotion, length: float, guide_point: complex, guide_angle: float,
     """
     e = np.exp(1j * guide_angle)
     local = (b.pos - guide_point) * np.conj(e)   # B in guide coordinates
-    along, h = local.real, local.imag
+    h = local.imag
     root = length**2 - h**2
     root[~(root >= 0.0)] = np.nan                # the rod cannot reach the guide there
-    s = along + branch * np.sqrt(root)
+    s = local.real + branch * np.sqrt(root, out=root)
+    del local, root                              # (temporaries freed early: less memory)
     c_pos = guide_point + s * e
     u = c_pos - b.pos
     th = np.arctan2(u.imag, u.real)
