@@ -161,3 +161,19 @@ def test_sheet_preview_is_its_pdf_rasterised(tmp_path):
     col = np.flatnonzero(dark[:, centre_col - 1:centre_col + 2].any(axis=1))
     inner = col[(col > rows.min() + 5) & (col < rows.max() - 5)]
     assert abs(inner.min() - (148.5 - 50) * px) <= 3 and abs(inner.max() - (148.5 + 50) * px) <= 3
+
+
+def test_timings_prefix_every_progress_line_with_a_growing_time(tmp_path):
+    from typer.testing import CliRunner
+
+    from mechdesign.cli import app
+
+    result = CliRunner().invoke(app, ["run", str(ROOT / "designs" / "cam_7_3.yaml"), "-o",
+                                      str(tmp_path / "o"), "--format", "md", "--timings"])
+    assert result.exit_code == 0, result.output
+    import re
+
+    times = [float(m.group(1)) for m in re.finditer(r"^\s*(\d+\.\d+) s  ", result.output, re.M)]
+    lines = [ln for ln in result.output.splitlines() if "rendering" in ln or ln.lstrip().startswith("[")]
+    assert len(times) >= len(lines) >= 3
+    assert times == sorted(times) and times[0] > 0

@@ -6,6 +6,7 @@ cannot be assembled with the brief's data).
 """
 from __future__ import annotations
 
+import os
 import sys
 import time
 from contextlib import contextmanager
@@ -16,6 +17,8 @@ from typing import Optional
 import typer
 
 from . import __version__
+
+_IMPORTED = time.perf_counter()
 
 app = typer.Typer(add_completion=False, no_args_is_help=True,
                   help="Mechanism course design (机械原理课程设计): from a YAML design brief "
@@ -39,6 +42,19 @@ def _version(value: bool):
 def main(version: Optional[bool] = typer.Option(None, "--version", callback=_version,
                                                 is_eager=True, help="Show the version and exit.")):
     """Mechanism course design reports from YAML briefs."""
+
+
+def _elapsed() -> float:
+    """Seconds since this process started (the interpreter's start-up and every import
+    included), from the kernel's process start time where it tells, else since import."""
+    try:
+        with open("/proc/self/stat", encoding="ascii") as handle:
+            start_ticks = int(handle.read().rsplit(")", 1)[1].split()[19])
+        with open("/proc/uptime", encoding="ascii") as handle:
+            uptime = float(handle.read().split()[0])
+        return uptime - start_ticks / os.sysconf("SC_CLK_TCK")
+    except (OSError, ValueError, IndexError, AttributeError):
+        return time.perf_counter() - _IMPORTED
 
 
 def _err(msg: str) -> None:
@@ -95,20 +111,25 @@ def run(
                                              help="Folder of report templates to use instead "
                                                   "of the shipped ones."),
     debug: bool = typer.Option(False, "--debug", help="Show Python tracebacks on errors."),
+    timings: bool = typer.Option(False, "--timings", help="Prefix every progress line with the "
+                                 "seconds since the program started (imports included)."),
 ):
     """Run every stage for BRIEF and write report.md, report.pdf, results.json and figures."""
     from .runner import run_one
 
     fmt = _parse_formats(formats)
 
+    def say(text: str) -> None:
+        _err(f"{_elapsed():6.2f} s  {text}" if timings else text)
+
     def stage_progress(i: int, total: int, title: str) -> None:
-        _err(f"[{i}/{total}] {title}")
+        say(f"[{i}/{total}] {title}")
 
     try:
         with _terminate_as_interrupt():
             outcome = run_one(brief, out_dir=out, lang=lang.value if lang else None, formats=fmt,
                               group=group, templates=templates, stage_progress=stage_progress,
-                              render_progress=lambda what: _err(f"      rendering {what}"),
+                              render_progress=lambda what: say(f"      rendering {what}"),
                               on_warning=lambda text: _err(f"warning: {text}"), parallel=True)
     except KeyboardInterrupt:
         _err("\ninterrupted: nothing was written; an earlier report in the output folder is unchanged")
@@ -120,7 +141,7 @@ def run(
         if outcome.status == "failed":
             _err("(nothing was written; run with --debug for the traceback)")
         raise typer.Exit(outcome.exit_code)
-    _err(f"done in {outcome.seconds:.1f} s (computation {outcome.compute_seconds:.2f} s)")
+    say(f"done in {outcome.seconds:.1f} s (computation {outcome.compute_seconds:.2f} s)")
     for path in outcome.files:
         typer.echo(path)
 

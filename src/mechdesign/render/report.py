@@ -110,14 +110,16 @@ def write_report(out_dir: Path, *, machine: str, lang: str, formats: tuple[str, 
                 say("data files (CSV)")
                 write_data(staging)
             if "pdf" in formats:
-                say("PDF (pandoc → typst)")
+                say("PDF: Markdown → typst (pandoc)")
                 from .pdf import typst_source
 
                 source = typst_source(staging / "report.md", pdf_metadata(meta, lang, group),
                                       tdir / "report.typ")
+            say("figures and sheets: the last ones")
         if "pdf" in formats:
             from .pdf import compile_pdf
 
+            say("PDF: typst → report.pdf")
             # the PDF places each drawing sheet as vector graphics (its own PDF)
             vector = {sh.preview: sh.pdf for sh in sheets if sh.pdf}
             compile_pdf(source, staging, staging / "report.pdf",
