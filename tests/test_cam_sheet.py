@@ -36,7 +36,7 @@ from mechdesign.pipeline import run_stages  # noqa: E402
 from mechdesign.render.cam_sheet import cam_sheet  # noqa: E402
 from mechdesign.render.sheet import Text, TitleInfo, text_width, title_block_box  # noqa: E402
 from mechdesign.render.sheet_dxf import write_dxf  # noqa: E402
-from mechdesign.render.sheet_mpl import write_sheet  # noqa: E402
+from mechdesign.render.sheet_typst import write_sheet  # noqa: E402
 
 ROOT = Path(__file__).resolve().parents[1]
 DESIGNS = ["cam_7_3", "lockbeam_cam", "shaper"]

@@ -25,7 +25,7 @@ from mechdesign.core.gears import spur_pair
 from mechdesign.render.gear_sheet import gear_sheet
 from mechdesign.render.sheet import SIZES, TitleInfo, title_block_box
 from mechdesign.render.sheet_dxf import write_dxf
-from mechdesign.render.sheet_mpl import write_sheet
+from mechdesign.render.sheet_typst import write_sheet
 
 PAIRS = {
     # (m [m], z1, z2, α, ha*, c*, x1, x2)

@@ -220,14 +220,14 @@ def test_everything_inside_the_border_and_texts_do_not_collide(sheet):
 
 
 def test_sheet_pdf_and_preview_are_written(sheet, tmp_path):
-    from mechdesign.render.sheet_mpl import write_sheet
+    from mechdesign.render.sheet_typst import write_sheet
 
     s, _ = sheet
     write_sheet(s, pdf=tmp_path / "a1.pdf", png=tmp_path / "a1.png", png_width_px=800)
     data = (tmp_path / "a1.pdf").read_bytes()
     assert data.startswith(b"%PDF")
     # true A1 paper size in points: 841 × 594 mm
-    box = re.search(rb"/MediaBox \[ *0 0 ([0-9.]+) ([0-9.]+)", data)
+    box = re.search(rb"/MediaBox *\[ *0 0 ([0-9.]+) ([0-9.]+)", data)
     assert box is not None
     assert float(box.group(1)) == pytest.approx(841 / 25.4 * 72, abs=0.5)
     assert float(box.group(2)) == pytest.approx(594 / 25.4 * 72, abs=0.5)

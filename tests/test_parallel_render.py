@@ -1,9 +1,8 @@
-"""Figures saved by a helper process (render/parallel.py) and sheets drawn once.
+"""Figures saved by a helper process (render/parallel.py); sheets drawn by typst.
 
 The helper is a fork: what it writes must be exactly what the parent would have
 written, its failures must reach the parent with their traceback, and an interrupted
-parent must leave no helper running. The sheet preview is the sheet's own PDF rasterised
-(typst), so the two are checked against each other pixel by pixel.
+parent must leave no helper running.
 """
 from __future__ import annotations
 
@@ -134,11 +133,11 @@ def test_parallel_and_serial_runs_write_the_same_bytes(tmp_path):
     assert not any(".tmp" in name or ".typ" in name for name in outs["parallel"])
 
 
-def test_sheet_preview_is_its_pdf_rasterised(tmp_path):
-    """write_sheet draws the sheet once (PDF); the PNG preview is that PDF rendered by
-    typst at the asked width, with the lines and the circle where the drawing puts them."""
+def test_sheet_preview_shows_the_drawing_where_the_sheet_puts_it(tmp_path):
+    """write_sheet's PNG preview (the sheet's typst document at the asked width): the
+    lines and the circle at their paper coordinates, y upwards on paper."""
     from mechdesign.render.sheet import Sheet
-    from mechdesign.render.sheet_mpl import write_sheet
+    from mechdesign.render.sheet_typst import write_sheet
 
     sheet = Sheet("A3")
     sheet.line(10 + 10j, 410 + 10j, "OUTLINE")

@@ -77,7 +77,7 @@ def test_shaper_all_formats(tmp_path):
         assert pdf.startswith(b"%PDF")
         # vector drawing at true paper size (A1 841 × 594 mm, A2 594 × 420 mm)
         w, h = {"A1": (841, 594), "A2": (594, 420)}[stem.split("_")[1]]
-        box = re.search(rb"/MediaBox \[ *0 0 ([0-9.]+) ([0-9.]+)", pdf)
+        box = re.search(rb"/MediaBox *\[ *0 0 ([0-9.]+) ([0-9.]+)", pdf)
         assert abs(float(box.group(1)) - w / 25.4 * 72) < 0.5
         assert abs(float(box.group(2)) - h / 25.4 * 72) < 0.5
         assert b"/Subtype /Image" not in pdf

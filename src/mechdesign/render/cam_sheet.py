@@ -1,7 +1,7 @@
 """The cam drawing sheet (凸轮机构设计图, A2): what a student hands in for the cam.
 
 The sheet is built as a :class:`~.sheet.Sheet` (paper millimetres) and drawn by
-:mod:`.sheet_mpl` (PDF, PNG) and :mod:`.sheet_dxf` (DXF). It holds, as the graphical
+:mod:`.sheet_typst` (PDF, PNG) and :mod:`.sheet_dxf` (DXF). It holds, as the graphical
 method of 孙桓《机械原理》 (chapter on cam mechanisms) draws them:
 
 * the follower displacement diagram s–δ (φ–δ for an oscillating follower) at stated

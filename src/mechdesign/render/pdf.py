@@ -170,35 +170,71 @@ def markdown_to_typst(md_text: str, template: Path, metadata: dict, resource_dir
     (e.g. "图 1") instead of a citation.
     Output: the typst source.  Raises PdfRenderError if pandoc fails.
     """
-    import pypandoc
+    return PendingTypst(md_text, template, metadata, resource_dir).result()
 
-    meta = _full_metadata(metadata)
-    with tempfile.TemporaryDirectory(prefix="mechdesign-pandoc-") as tmp:
-        meta_file = Path(tmp) / "metadata.json"
+
+class PendingTypst:
+    """pandoc converting Markdown to typst in its own process, started at once;
+    :meth:`result` waits for it (see :func:`markdown_to_typst`). The report starts it
+    while the last figures are still being written. pandoc is run directly (the binary
+    pypandoc ships), reading and writing files, so nothing blocks on a pipe."""
+
+    def __init__(self, md_text: str, template: Path, metadata: dict, resource_dir: Path):
+        import subprocess
+
+        import pypandoc
+
+        self._meta = _full_metadata(metadata)
+        self._tmp = tempfile.TemporaryDirectory(prefix="mechdesign-pandoc-")
+        tmp = Path(self._tmp.name)
         # JSON is valid YAML, which is what --metadata-file expects.
-        meta_file.write_text(json.dumps(meta, ensure_ascii=False, default=str), encoding="utf-8")
-        lua_filter = Path(tmp) / "typst-literal.lua"
-        lua_filter.write_text(_TYPST_FILTER, encoding="utf-8")
+        (tmp / "metadata.json").write_text(json.dumps(self._meta, ensure_ascii=False, default=str),
+                                           encoding="utf-8")
+        (tmp / "typst-literal.lua").write_text(_TYPST_FILTER, encoding="utf-8")
+        (tmp / "in.md").write_text(md_text, encoding="utf-8")
+        self._out, self._err = tmp / "out.typ", tmp / "pandoc.err"
+        args = [pypandoc.get_pandoc_path(), f"--from={MARKDOWN_FORMAT}", "--to=typst",
+                str(tmp / "in.md"), f"--output={self._out}",
+                "--standalone",
+                f"--template={Path(template).resolve()}",
+                f"--metadata-file={tmp / 'metadata.json'}",
+                f"--lua-filter={tmp / 'typst-literal.lua'}",
+                f"--resource-path={Path(resource_dir).resolve()}",
+                "--wrap=none",
+                # wide pipe tables keep natural (auto) column widths; typst shrinks
+                # them to the text width only when needed
+                "--columns=10000"]
         try:
-            source = pypandoc.convert_text(
-                md_text,
-                "typst",
-                format=MARKDOWN_FORMAT,
-                extra_args=[
-                    "--standalone",
-                    f"--template={Path(template).resolve()}",
-                    f"--metadata-file={meta_file}",
-                    f"--lua-filter={lua_filter}",
-                    f"--resource-path={Path(resource_dir).resolve()}",
-                    "--wrap=none",
-                    # wide pipe tables keep natural (auto) column widths; typst
-                    # shrinks them to the text width only when needed
-                    "--columns=10000",
-                ],
-            )
-        except (RuntimeError, OSError) as exc:
-            raise PdfRenderError(f"pandoc failed to convert Markdown to typst: {exc}") from exc
+            with open(self._err, "wb") as err:
+                self._proc = subprocess.Popen(args, stdin=subprocess.DEVNULL,
+                                              stdout=subprocess.DEVNULL, stderr=err)
+        except OSError as exc:
+            self._tmp.cleanup()
+            raise PdfRenderError(f"pandoc could not be started: {exc}") from exc
 
+    def result(self) -> str:
+        """The typst source (waits for pandoc). Raises PdfRenderError if pandoc failed."""
+        try:
+            code = self._proc.wait()
+            if code != 0:
+                message = self._err.read_text(encoding="utf-8", errors="replace").strip()
+                raise PdfRenderError(f"pandoc failed to convert Markdown to typst "
+                                     f"(exit {code}): {message}")
+            source = self._out.read_text(encoding="utf-8")
+        finally:
+            self.cancel()
+        return _typst_references(source, self._meta)
+
+    def cancel(self) -> None:
+        """Stop pandoc if it still runs and remove its files."""
+        if self._proc.poll() is None:
+            self._proc.kill()
+            self._proc.wait()
+        self._tmp.cleanup()
+
+
+def _typst_references(source: str, meta: dict) -> str:
+    """pandoc's typst with references and the cells typst would misread mended."""
     defined = set(re.findall(r"^<([^>\s]+)>$", source, flags=re.MULTILINE))
     has_bibliography = bool(meta.get("bibliography"))
 
@@ -231,33 +267,6 @@ def _atomic_write(path: Path, data: bytes) -> None:
         raise
 
 
-def rasterize_pdf(pdf_path: Path, png_path: Path, ppi: float) -> None:
-    """The first page of a PDF as a PNG at ``ppi`` pixels per inch, rasterised by typst
-    (a one-line document placing the PDF as an image on a page of its size)."""
-    import typst
-
-    from .parallel import note_typst_used
-
-    note_typst_used()
-    pdf_path, png_path = Path(pdf_path).resolve(), Path(png_path).resolve()
-    root = pdf_path.parent
-    source = ("#set page(width: auto, height: auto, margin: 0pt)\n"
-              f"#image({json.dumps(pdf_path.name)})\n")
-    fd, typ_name = tempfile.mkstemp(prefix=f".{pdf_path.stem}-", suffix=".typ", dir=root)
-    try:
-        with os.fdopen(fd, "w", encoding="utf-8") as handle:
-            handle.write(source)
-        try:
-            png = typst.compile(typ_name, root=str(root), format="png", ppi=float(ppi),
-                                ignore_system_fonts=True)
-        except typst.TypstError as exc:
-            raise PdfRenderError(f"typst failed to rasterise {pdf_path.name}:\n"
-                                 f"{_typst_message(exc)}") from exc
-    finally:
-        Path(typ_name).unlink(missing_ok=True)
-    _atomic_write(png_path, png if isinstance(png, bytes) else png[0])
-
-
 def _use_vector_images(source: str, substitutes: dict[str, str]) -> str:
     """Point typst's image() calls at the vector files that ``substitutes`` maps the
     Markdown's raster previews to (a drawing sheet's PDF for its PNG preview)."""
@@ -276,16 +285,15 @@ def render_pdf(md_path: Path, pdf_path: Path, metadata: dict, template: Path,
     :func:`source_timestamp` of ``metadata["date"]``: the same input gives the same
     bytes. Raises PdfRenderError if pandoc or typst fails."""
     md_path = Path(md_path).resolve()
-    compile_pdf(typst_source(md_path, metadata, template), md_path.parent, pdf_path, metadata,
-                substitutes, stem=md_path.stem)
+    compile_pdf(typst_source(md_path, metadata, template).result(), md_path.parent, pdf_path,
+                metadata, substitutes, stem=md_path.stem)
 
 
-def typst_source(md_path: Path, metadata: dict, template: Path) -> str:
-    """The typst document of a Markdown file (pandoc; images are not read, so this may
-    run while they are still being written)."""
+def typst_source(md_path: Path, metadata: dict, template: Path) -> "PendingTypst":
+    """pandoc converting a Markdown file to typst, started now (images are not read, so
+    the figures may still be being written); ``.result()`` is the source."""
     md_path = Path(md_path).resolve()
-    return markdown_to_typst(md_path.read_text(encoding="utf-8"), template, metadata,
-                             md_path.parent)
+    return PendingTypst(md_path.read_text(encoding="utf-8"), template, metadata, md_path.parent)
 
 
 def compile_pdf(source: str, root: Path, pdf_path: Path, metadata: dict,

@@ -92,38 +92,47 @@ def write_report(out_dir: Path, *, machine: str, lang: str, formats: tuple[str, 
     try:
         fig_dir = staging / "figures"
         fig_dir.mkdir()
-        say("figures")
-        # Figures and sheets may still be being written by a helper process until the
-        # block ends; the Markdown, the data files and pandoc's typst need only their names.
-        with background_saves(parallel):
-            figures = make_figures(fig_dir)
-            sheets = make_sheets(staging, fig_dir) if make_sheets is not None else []
-            ctx = make_context(figures)
-            ctx["sheets"] = [_sheet_row(sh, lang) for sh in sheets]
-            say("Markdown")
-            md = render_markdown(f"{machine}.{lang}.md.j2", ctx, tdir)
-            if group is not None:
-                md = group_banner(group, lang) + md
-            (staging / "report.md").write_text(md, encoding="utf-8")
-            (staging / "results.json").write_text(dumps(document), encoding="utf-8")
-            if write_data is not None:
-                say("data files (CSV)")
-                write_data(staging)
-            if "pdf" in formats:
-                say("PDF: Markdown → typst (pandoc)")
-                from .pdf import typst_source
+        # Figures and sheets may be saved later or by a helper process until the block
+        # ends (:mod:`.parallel`); the Markdown, the data files and pandoc need only their
+        # names, so pandoc runs while the last of them are written. The sheets first: they
+        # are the largest pieces, and a large piece left to the end would keep one core
+        # busy while the other waits.
+        pending = None
+        try:
+            with background_saves(parallel):
+                sheets = make_sheets(staging, fig_dir) if make_sheets is not None else []
+                say("figures")
+                figures = make_figures(fig_dir)
+                ctx = make_context(figures)
+                ctx["sheets"] = [_sheet_row(sh, lang) for sh in sheets]
+                say("Markdown")
+                md = render_markdown(f"{machine}.{lang}.md.j2", ctx, tdir)
+                if group is not None:
+                    md = group_banner(group, lang) + md
+                (staging / "report.md").write_text(md, encoding="utf-8")
+                (staging / "results.json").write_text(dumps(document), encoding="utf-8")
+                if "pdf" in formats:
+                    from .pdf import typst_source
 
-                source = typst_source(staging / "report.md", pdf_metadata(meta, lang, group),
-                                      tdir / "report.typ")
-            say("figures and sheets: the last ones")
-        if "pdf" in formats:
-            from .pdf import compile_pdf
+                    say("PDF: Markdown → typst (pandoc, in the background)")
+                    pending = typst_source(staging / "report.md", pdf_metadata(meta, lang, group),
+                                           tdir / "report.typ")
+                if write_data is not None:
+                    say("data files (CSV)")
+                    write_data(staging)
+                say("figures and sheets: the last ones")
+            if pending is not None:
+                from .pdf import compile_pdf
 
-            say("PDF: typst → report.pdf")
-            # the PDF places each drawing sheet as vector graphics (its own PDF)
-            vector = {sh.preview: sh.pdf for sh in sheets if sh.pdf}
-            compile_pdf(source, staging, staging / "report.pdf",
-                        pdf_metadata(meta, lang, group), vector)
+                source = pending.result()
+                say("PDF: typst → report.pdf")
+                # the PDF places each drawing sheet as vector graphics (its own PDF)
+                vector = {sh.preview: sh.pdf for sh in sheets if sh.pdf}
+                compile_pdf(source, staging, staging / "report.pdf",
+                            pdf_metadata(meta, lang, group), vector)
+        finally:
+            if pending is not None:
+                pending.cancel()
         if "docx" in formats:
             say("Word (pandoc → docx)")
             from .docx import render_docx

@@ -2,7 +2,7 @@
 
 A :class:`Sheet` is a list of primitives (lines, polylines, circles, arcs, texts, filled
 polygons, dimensions) on named layers, in paper millimetres with the origin at the
-sheet's lower-left corner. :mod:`.sheet_mpl` draws it with matplotlib (vector PDF and a
+sheet's lower-left corner. :mod:`.sheet_typst` draws it with typst (vector PDF and a
 PNG preview) and :mod:`.sheet_dxf` with ezdxf (DXF for AutoCAD/CAXA), so both files
 show the same drawing. Points are complex numbers (x + iy), as in the core.
 

@@ -82,13 +82,13 @@ def make_sheets(results: dict, brief, folder: Path, fig_dir: Path, lang: str,
                 formats: tuple[str, ...], progress: Callable[[str], None] | None = None
                 ) -> list[SheetFiles]:
     """Build and write every sheet of ``results``; return what was written."""
-    from .sheet_mpl import write_sheet
+    from .sheet_typst import write_sheets
 
     say = progress or (lambda _m: None)
     builders = _builders(results, brief)
     settings = getattr(brief, "sheets", None)
     prefix = settings.drawing_number if settings is not None else "MD"
-    out = []
+    out, jobs = [], []
     sheet_dir = Path(folder) / "sheets"
     for k, (name, build) in enumerate(builders, start=1):
         say(f"sheet {k}/{len(builders)}: {name}")
@@ -102,7 +102,7 @@ def make_sheets(results: dict, brief, folder: Path, fig_dir: Path, lang: str,
         stem = f"{name}_{sheet.size}"
         if "pdf" in formats:
             pdf = sheet_dir / f"{stem}.pdf"
-        write_sheet(sheet, pdf=pdf, png=preview, png_width_px=2400)
+        jobs.append((sheet, pdf, preview, 2400))
         if "dxf" in formats:
             from .sheet_dxf import write_dxf
 
@@ -113,5 +113,6 @@ def make_sheets(results: dict, brief, folder: Path, fig_dir: Path, lang: str,
                               preview.relative_to(rel).as_posix(),
                               None if pdf is None else pdf.relative_to(rel).as_posix(),
                               None if dxf is None else dxf.relative_to(rel).as_posix()))
+    write_sheets(jobs)
     return out
 

@@ -1,0 +1,243 @@
+"""Draw a :class:`~.sheet.Sheet` with typst: vector PDF at true paper size and a PNG
+preview, both from one typst document compiled in-process.
+
+Each primitive becomes an absolutely placed typst element on a page of the sheet's size
+(paper mm, y measured downwards from the top edge): lines and polylines of one layer and
+width one ``curve`` each, circles true circles, arcs cubic Bézier curves (at most 90° a
+piece, radial error < 3e-4 of the radius), texts placed at their anchor with the sheet's
+alignment and rotated about it. Line widths, GB line types (dash patterns in paper mm)
+and colours come from the layers (:data:`.sheet.LAYERS`), as in the DXF back end
+(:mod:`.sheet_dxf`). Text is the CJK sans serif (:mod:`.fonts`), printed as written.
+
+Typst lays out the 700 texts of an A1 sheet in tens of milliseconds, which is why the
+sheets are drawn by it rather than by matplotlib.
+"""
+from __future__ import annotations
+
+import math
+from pathlib import Path
+
+import numpy as np
+
+from .fonts import cjk_families, font_dirs
+from .sheet import LAYERS, Arc, Circle, Dimension, Fill, Line, Polyline, Sheet, Text, format_number
+
+# Dash patterns in paper mm (GB/T 17450: long dash 15–20, gap 3, dot ≤ 0.5); as the
+# DXF line types CENTER and DASHED.
+_DASHES = {"CENTER": (12.0, 2.0, 1.0, 2.0), "DASHED": (4.0, 1.5)}
+# the anchor's place in the text's box: share of the width from the left, of the
+# height (ascender to baseline) from the top
+_HALIGN = {"left": 0, "center": 0.5, "right": 1}
+_VALIGN = {"bottom": 1, "middle": 0.5, "top": 0}
+
+
+def dimension_geometry(d: Dimension):
+    """Extension lines, dimension line with arrows and the text placement (paper mm)."""
+    u = d.p1 - d.p0
+    length = abs(u)
+    u = u / length if length else 1.0
+    n = 1j * u
+    text = d.text or format_number(d.measurement, 5)
+    lines = []
+    arrows = []
+    if d.kind == "aligned":
+        a, b = d.p0 + n * d.offset, d.p1 + n * d.offset
+        ext = np.sign(d.offset) * 1.5 if d.offset else 0
+        lines += [(d.p0 + n * np.sign(d.offset) * 1.0, a + n * ext),
+                  (d.p1 + n * np.sign(d.offset) * 1.0, b + n * ext), (a, b)]
+        arrows += [(b, a), (a, b)]
+        pos, ang = (a + b) / 2 + n * 1.0, np.angle(u)
+    else:  # radius/diameter: p0 = centre side, p1 = on the circle
+        prefix = "R" if d.kind == "radius" else "Φ"
+        text = d.text or prefix + format_number(d.measurement, 5)
+        lines.append((d.p0, d.p1))
+        arrows.append((d.p1, d.p0))            # (tip, tail): the arrow touches the circle
+        if d.kind == "diameter":
+            arrows.append((d.p0, d.p1))
+        pos, ang = (d.p0 + d.p1) / 2 + n * 1.0, np.angle(u)
+    if np.cos(ang) < -1e-9:          # keep text readable (not upside down)
+        ang += np.pi
+        pos = pos - 2 * n * 1.0
+    return lines, arrows, text, pos, ang
+
+
+def arrow_head(tip, tail, size=2.5):
+    """The filled triangle of a dimension arrow touching ``tip`` (paper mm)."""
+    u = tip - tail
+    u = u / abs(u) if abs(u) else 1.0
+    base = tip - size * u
+    w = 0.3 * size
+    return [tip, base + 1j * u * w, base - 1j * u * w]
+
+
+def typst_string(text: str) -> str:
+    """A typst string literal holding ``text`` exactly (user text: names, titles)."""
+    out = []
+    for ch in text:
+        if ch in '\\"':
+            out.append("\\" + ch)
+        elif ord(ch) < 0x20 or ch in "\u2028\u2029\x7f":
+            out.append(f"\\u{{{ord(ch):x}}}")
+        else:
+            out.append(ch)
+    return '"' + "".join(out) + '"'
+
+
+def _num(x: float) -> str:
+    return f"{x:.4f}".rstrip("0").rstrip(".") if math.isfinite(x) else "0"
+
+
+class _Writer:
+    def __init__(self, sheet: Sheet):
+        self.h = sheet.height
+        self.lines: list[str] = []
+
+    def pt(self, z: complex) -> str:
+        return f"({_num(z.real)}mm, {_num(self.h - z.imag)}mm)"
+
+    def stroke(self, layer: str, weight: float | None) -> str:
+        lay = LAYERS[layer]
+        w = lay.weight if weight is None else weight
+        r, g, b = (round(255 * c) for c in lay.rgb)
+        dashes = _DASHES.get(lay.linetype)
+        dash = "" if dashes is None else \
+            ", dash: (" + ", ".join(f"{_num(d)}mm" for d in dashes) + ",)"
+        return (f'(paint: rgb({r}, {g}, {b}), thickness: {_num(w)}mm, cap: "round", '
+                f'join: "round"{dash})')
+
+    def curve(self, parts: list[str], stroke: str = "none", fill: str = "none") -> None:
+        self.lines.append(f"#place(curve(stroke: {stroke}, fill: {fill}, {', '.join(parts)}))")
+
+    def polyline(self, points, stroke: str, closed: bool = False) -> None:
+        pts = [complex(p) for p in points]
+        parts = [f"curve.move({self.pt(pts[0])})"] + [f"curve.line({self.pt(p)})" for p in pts[1:]]
+        if closed:
+            parts.append("curve.close()")
+        self.curve(parts, stroke)
+
+    def arc(self, c: complex, r: float, start: float, end: float, stroke: str) -> None:
+        span = (end - start) % (2 * math.pi) or 2 * math.pi
+        n = max(1, math.ceil(span / (math.pi / 2) - 1e-9))
+        step = span / n
+        k = 4.0 / 3.0 * math.tan(step / 4.0) * r
+        a = start
+        p = c + r * complex(math.cos(a), math.sin(a))
+        parts = [f"curve.move({self.pt(p)})"]
+        for _ in range(n):
+            b = a + step
+            q = c + r * complex(math.cos(b), math.sin(b))
+            c1 = p + k * complex(-math.sin(a), math.cos(a))
+            c2 = q - k * complex(-math.sin(b), math.cos(b))
+            parts.append(f"curve.cubic({self.pt(c1)}, {self.pt(c2)}, {self.pt(q)})")
+            a, p = b, q
+        self.curve(parts, stroke)
+
+    def circle(self, c: complex, r: float, stroke: str) -> None:
+        self.lines.append(f"#place(dx: {_num(c.real - r)}mm, dy: {_num(self.h - c.imag - r)}mm, "
+                          f"circle(radius: {_num(r)}mm, stroke: {stroke}))")
+
+    def fill(self, points, layer: str) -> None:
+        r, g, b = (round(255 * c) for c in LAYERS[layer].rgb)
+        pts = [complex(p) for p in points]
+        parts = [f"curve.move({self.pt(pts[0])})"] + [f"curve.line({self.pt(p)})" for p in pts[1:]]
+        self.curve(parts + ["curve.close()"], "none", f"rgb({r}, {g}, {b})")
+
+    def text(self, pos: complex, text: str, height: float, layer: str, halign: str,
+             valign: str, angle: float) -> None:
+        r, g, b = (round(255 * c) for c in LAYERS[layer].rgb)
+        self.lines.append(
+            f"#T({_num(pos.real)}mm, {_num(self.h - pos.imag)}mm, {_HALIGN[halign]}, "
+            f"{_VALIGN[valign]}, {_num(-math.degrees(angle))}deg, {_num(height)}mm, "
+            f"rgb({r}, {g}, {b}), {typst_string(text)})")
+
+
+def sheet_source(sheet: Sheet) -> str:
+    """The typst document that draws ``sheet`` on one page of its paper size."""
+    w = _Writer(sheet)
+    families = cjk_families()
+    head = [
+        f"#set page(width: {_num(sheet.width)}mm, height: {_num(sheet.height)}mm, margin: 0pt, "
+        "fill: white)",
+        f'#set text(font: ({typst_string(families["sans"])}, {typst_string(families["serif"])}), '
+        'top-edge: "ascender", bottom-edge: "baseline", hyphenate: false)',
+        "#set par(justify: false)",
+        # a text anchored at (x, y): its box shifted by its own size so that the anchor
+        # falls where the alignment says, then turned about the anchor (clockwise angles)
+        "#let T(x, y, ha, va, ang, size, col, body) = place(dx: x, dy: y, rotate(ang, "
+        "origin: top + left, reflow: false, context { let t = text(size: size, fill: col, body); "
+        "let m = measure(t); place(dx: -ha * m.width, dy: -va * m.height, t) }))",
+    ]
+    segments: dict = {}
+    for e in sheet.entities:
+        if isinstance(e, Line):
+            segments.setdefault((e.layer, e.weight), []).append(("line", (e.p0, e.p1), False))
+        elif isinstance(e, Polyline):
+            segments.setdefault((e.layer, e.weight), []).append(("line", e.points, e.closed))
+        elif isinstance(e, Circle):
+            w.circle(complex(e.center), e.radius, w.stroke(e.layer, e.weight))
+        elif isinstance(e, Arc):
+            w.arc(complex(e.center), e.radius, e.start, e.end, w.stroke(e.layer, e.weight))
+        elif isinstance(e, Fill):
+            w.fill(e.points, e.layer)
+        elif isinstance(e, Text):
+            w.text(complex(e.position), e.text, e.height, e.layer, e.halign, e.valign, e.angle)
+        elif isinstance(e, Dimension):
+            lines, arrows, text, pos, ang = dimension_geometry(e)
+            for a, b in lines:
+                segments.setdefault((e.layer, None), []).append(("line", (a, b), False))
+            for tip, tail in arrows:
+                w.fill(arrow_head(tip, tail), e.layer)
+            w.text(complex(pos), text, e.height, e.layer, "center", "bottom", ang)
+    body = w.lines
+    w.lines = []
+    for (layer, weight), items in segments.items():
+        stroke = w.stroke(layer, weight)
+        for _, pts, closed in items:
+            w.polyline(pts, stroke, closed)
+    # lines first (as matplotlib's collections were drawn under the texts), then the rest
+    return "\n".join(head + w.lines + body) + "\n"
+
+
+def write_sheet(sheet: Sheet, pdf: Path | None = None, png: Path | None = None,
+                png_width_px: int = 2400) -> None:
+    """Write the sheet as a vector PDF at true size and/or a PNG preview ``png_width_px``
+    wide, both from the same typst document (see :func:`write_sheets`)."""
+    write_sheets([(sheet, pdf, png, png_width_px)])
+
+
+def write_sheets(jobs) -> None:
+    """Write several sheets: ``jobs`` of (sheet, pdf path or None, png path or None, PNG
+    width [px]). The documents are made here; typst compiles them in one go, in a helper
+    process when the report is rendered with background saves (:mod:`.parallel`), so its
+    fonts are loaded once."""
+    from .parallel import save
+
+    work = [(sheet_source(sheet).encode("utf-8"), sheet, pdf, png, width)
+            for sheet, pdf, png, width in jobs if pdf is not None or png is not None]
+    if not work:
+        return
+
+    def write():
+        import typst
+
+        from .parallel import note_typst_used
+        from .pdf import PdfRenderError, _atomic_write, _typst_message, source_timestamp
+
+        note_typst_used()
+        fonts = [str(d) for d in font_dirs()]
+        for source, sheet, pdf, png, width in work:
+            date = sheet.info.date if sheet.info is not None else None
+            try:
+                if pdf is not None:
+                    _atomic_write(Path(pdf), typst.compile(
+                        source, font_paths=fonts, timestamp=source_timestamp(date)))
+                if png is not None:
+                    image = typst.compile(source, font_paths=fonts, format="png",
+                                          ppi=width / (sheet.width / 25.4))
+                    _atomic_write(Path(png), image if isinstance(image, bytes) else image[0])
+            except typst.TypstError as exc:
+                raise PdfRenderError(f"typst failed to draw the sheet "
+                                     f"{Path(pdf or png).name}:\n{_typst_message(exc)}") from exc
+
+    names = ", ".join(Path(png or pdf).name for _, _, pdf, png, _ in work)
+    save(write, names, uses_typst=True)
