@@ -18,8 +18,6 @@ import typer
 
 from . import __version__
 
-_IMPORTED = time.perf_counter()
-
 app = typer.Typer(add_completion=False, no_args_is_help=True,
                   help="Mechanism course design (机械原理课程设计): from a YAML design brief "
                        "to a bilingual report (Markdown + PDF).")
@@ -44,17 +42,25 @@ def main(version: Optional[bool] = typer.Option(None, "--version", callback=_ver
     """Mechanism course design reports from YAML briefs."""
 
 
-def _elapsed() -> float:
+def _since_process_start() -> float:
     """Seconds since this process started (the interpreter's start-up and every import
-    included), from the kernel's process start time where it tells, else since import."""
+    included), from the kernel's process start time where it tells, else 0."""
     try:
         with open("/proc/self/stat", encoding="ascii") as handle:
             start_ticks = int(handle.read().rsplit(")", 1)[1].split()[19])
         with open("/proc/uptime", encoding="ascii") as handle:
             uptime = float(handle.read().split()[0])
-        return uptime - start_ticks / os.sysconf("SC_CLK_TCK")
+        return max(0.0, uptime - start_ticks / os.sysconf("SC_CLK_TCK"))
     except (OSError, ValueError, IndexError, AttributeError):
-        return time.perf_counter() - _IMPORTED
+        return 0.0
+
+
+# the process's start on the monotonic clock (the same in a forked helper process)
+_STARTED = time.perf_counter() - _since_process_start()
+
+
+def _elapsed() -> float:
+    return time.perf_counter() - _STARTED
 
 
 def _err(msg: str) -> None:

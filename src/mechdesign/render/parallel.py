@@ -17,6 +17,7 @@ survive a fork) every save simply happens in place.
 """
 from __future__ import annotations
 
+import gc
 import os
 import signal
 import sys
@@ -33,6 +34,7 @@ _enabled = False
 # (pid, read end of its error pipe, label, uses typst)
 _children: list[tuple[int, int, str, bool]] = []
 _typst_used = False
+_held: list[tuple[Callable[[], None], str]] = []   # the figure held back (at most one)
 
 
 def note_typst_used() -> None:
@@ -55,43 +57,87 @@ def can_fork() -> bool:
 
 @contextmanager
 def background_saves(enabled: bool = True):
-    """Within the block, :func:`save` may run in a child process; on leaving, every
-    save has finished (or its error is raised)."""
+    """Within the block, :func:`save` may run in a child process, or a little later; on
+    leaving, every save has finished (or its error is raised)."""
     global _enabled
     previous = _enabled
     _enabled = bool(enabled) and can_fork()
     try:
         yield
-        _wait()
+        drain()
     finally:
         _kill()
+        _held.clear()
         _enabled = previous
+        if gc.get_freeze_count():
+            gc.unfreeze()
 
 
-def save(action: Callable[[], None], label: str, *, uses_typst: bool = False) -> None:
-    """Run ``action`` (which writes the files of a figure that is complete) now or in the
-    background. ``label`` names the figure in an error message.
+def save(action: Callable[[], None], label: str, *, uses_typst: bool = False
+         ) -> Callable[[], None]:
+    """Run ``action`` (which writes the files of a figure that is complete) now, in the
+    background, or a little later. ``label`` names the figure in an error message.
 
-    One child at a time takes ordinary saves (the parent is the other worker); when it
-    is busy the parent saves in place. An action that ``uses_typst`` always gets a child
-    of its own when forking is on, so that this process stays free of typst's threads
-    and can go on forking."""
-    if _enabled:
-        _reap(block=False)
-        if uses_typst or not any(not typ for *_, typ in _children):
-            _fork(action, label, uses_typst)
-            return
+    One child at a time takes ordinary saves; this process is the other worker. It holds
+    back the newest figure and saves the one it held when the child is busy, so that the
+    last figure of the report is written while the Markdown is rendered and pandoc runs
+    (:func:`drain`), not before. An action that ``uses_typst`` always gets a child of its
+    own when forking is on, so that this process stays free of typst's threads and can
+    go on forking. Returns a function that waits until this save is done (raising its
+    error) — for a save that uses typst; for the others it waits for everything."""
+    if not _enabled:
+        if uses_typst:
+            note_typst_used()
+        action()
+        return lambda: None
+    _reap(block=False)
     if uses_typst:
-        note_typst_used()
-    action()
+        pid = _fork(action, label, True)
+        return lambda: _reap(block=True, only=pid)
+    if _helper_free():
+        if _held:
+            _fork(*_held.pop(), False)
+            _held.append((action, label))
+        else:
+            _fork(action, label, False)
+    else:
+        if _held:
+            _held.pop()[0]()
+        _held.append((action, label))
+    return drain
 
 
-def _fork(action: Callable[[], None], label: str, uses_typst: bool) -> None:
+def drain() -> None:
+    """Write the figure held back (by the helper if it is free, else here), then wait
+    for every child."""
+    while _held:
+        _reap(block=False)
+        if _helper_free():
+            _fork(*_held.pop(), False)
+        else:
+            _held.pop()[0]()
+    _wait()
+
+
+def _helper_free() -> bool:
+    return not any(not typ for *_, typ in _children)
+
+
+def _fork(action: Callable[[], None], label: str, uses_typst: bool) -> int:
+    global _enabled
     _flush_std()
+    # The objects that exist now are the parent's and the child's alike: kept out of the
+    # cyclic garbage collector's scans, their memory pages stay shared instead of being
+    # copied by either process (copy-on-write); the child, short-lived, collects nothing.
+    gc.freeze()
     read_end, write_end = os.pipe()
     pid = os.fork()
     if pid == 0:   # the child: save, report, leave without unwinding the caller
         code = 1
+        gc.disable()
+        _enabled = False          # what the action saves, it saves itself
+        _children.clear()         # the parent's other children are not its own
+        _held.clear()
         try:
             os.close(read_end)
             signal.signal(signal.SIGINT, signal.SIG_DFL)
@@ -108,6 +154,7 @@ def _fork(action: Callable[[], None], label: str, uses_typst: bool) -> None:
             os._exit(code)
     os.close(write_end)
     _children.append((pid, read_end, label, uses_typst))
+    return pid
 
 
 def _flush_std() -> None:
@@ -118,12 +165,14 @@ def _flush_std() -> None:
             pass
 
 
-def _reap(block: bool) -> None:
-    """Collect the children that have finished (all of them, when ``block``); raise the
-    first error."""
+def _reap(block: bool, only: int | None = None) -> None:
+    """Collect the children that have finished (all of them, or the one ``only``, when
+    ``block``); raise their errors."""
     errors = []
     for child in list(_children):
         pid, read_end, label, _ = child
+        if only is not None and pid != only:
+            continue
         done, status = os.waitpid(pid, 0 if block else os.WNOHANG)
         if done == 0:
             continue

@@ -73,14 +73,14 @@ def write_report(out_dir: Path, *, machine: str, lang: str, formats: tuple[str, 
                  document: dict, meta, templates: Path | None = None,
                  progress: Callable[[str], None] | None = None,
                  write_data: Callable[[Path], list] | None = None,
-                 make_sheets: Callable[[Path, Path], list] | None = None,
+                 make_sheets: Callable[[Path, Path], Callable[[], list]] | None = None,
                  animate: Callable[[Path], Path] | None = None,
                  group: str | None = None, parallel: bool = False) -> list[Path]:
     """Render into a staging folder, then move the finished files into ``out_dir``.
 
     ``write_data`` may add machine-specific data files (e.g. CSV coordinates) to the folder;
-    ``make_sheets(folder, fig_dir)`` writes the drawing sheets and returns their
-    :class:`~.sheets.SheetFiles`; ``animate(path)`` writes the GIF (format gif);
+    ``make_sheets(folder, fig_dir)`` writes the drawing sheets and returns a function
+    giving their :class:`~.sheets.SheetFiles`; ``animate(path)`` writes the GIF (format gif);
     ``group`` (a data group of the brief) is stated on the title page and atop the report;
     ``parallel`` lets figures and sheets be written by a helper process while the next one
     is drawn (:mod:`.parallel`: a single run on a machine of two cores or more)."""
@@ -100,9 +100,11 @@ def write_report(out_dir: Path, *, machine: str, lang: str, formats: tuple[str, 
         pending = None
         try:
             with background_saves(parallel):
-                sheets = make_sheets(staging, fig_dir) if make_sheets is not None else []
+                collect_sheets = (make_sheets(staging, fig_dir) if make_sheets is not None
+                                  else (lambda: []))
                 say("figures")
                 figures = make_figures(fig_dir)
+                sheets = collect_sheets()
                 ctx = make_context(figures)
                 ctx["sheets"] = [_sheet_row(sh, lang) for sh in sheets]
                 say("Markdown")

@@ -8,7 +8,8 @@ with dxf); the previews to the figures folder.
 """
 from __future__ import annotations
 
-from dataclasses import dataclass
+import json
+from dataclasses import asdict, dataclass
 from pathlib import Path
 from typing import Callable
 
@@ -80,8 +81,39 @@ def title_info(meta, drawing: str, number: str, index: int, count: int, lang: st
 
 def make_sheets(results: dict, brief, folder: Path, fig_dir: Path, lang: str,
                 formats: tuple[str, ...], progress: Callable[[str], None] | None = None
-                ) -> list[SheetFiles]:
-    """Build and write every sheet of ``results``; return what was written."""
+                ) -> Callable[[], list[SheetFiles]]:
+    """Build and write every sheet of ``results``: in a helper process when the report is
+    rendered with background saves (:mod:`.parallel`), the whole of it, models included,
+    while this process draws the figures. Returns a function that gives what was written
+    (waiting for the helper); the helper hands the list over in a small JSON file."""
+    from .parallel import save
+
+    if not _builders(results, brief):
+        return lambda: []
+    manifest = Path(folder) / ".sheets.json"
+
+    def work():
+        files = write_all(results, brief, folder, fig_dir, lang, formats, progress)
+        manifest.write_text(json.dumps([asdict(f) for f in files], ensure_ascii=False),
+                            encoding="utf-8")
+
+    wait = save(work, "the drawing sheets", uses_typst=True)
+    done: list[SheetFiles] = []
+
+    def collect() -> list[SheetFiles]:
+        if not done:
+            wait()
+            done.extend(SheetFiles(**row) for row in json.loads(manifest.read_text(encoding="utf-8")))
+            manifest.unlink()
+        return done
+
+    return collect
+
+
+def write_all(results: dict, brief, folder: Path, fig_dir: Path, lang: str,
+              formats: tuple[str, ...], progress: Callable[[str], None] | None = None
+              ) -> list[SheetFiles]:
+    """Build and write every sheet of ``results`` here and now; return what was written."""
     from .sheet_typst import write_sheets
 
     say = progress or (lambda _m: None)
@@ -115,4 +147,3 @@ def make_sheets(results: dict, brief, folder: Path, fig_dir: Path, lang: str,
                               None if dxf is None else dxf.relative_to(rel).as_posix()))
     write_sheets(jobs)
     return out
-
