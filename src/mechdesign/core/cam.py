@@ -668,9 +668,11 @@ def min_base_radius_oscillating(programme: Programme, follower: OscillatingFollo
     # return is largest at its very end).
     ends = programme.starts + programme.spans * (1 - 1e-12)
     delta = np.concatenate([np.arange(points) * (TWO_PI / points), ends])
+    motion = programme.evaluate(delta)           # the same for every base radius tried
+    sigma = 1 if rotation > 0 else -1
 
     def excess(r0: float) -> float:
-        prof = design_cam(programme, follower, r0, rotation, delta=delta)
+        prof = _profile(motion, follower, r0, sigma)
         k = kinds[prof.motion.segment]
         lim = np.where(k == RISE, alpha_rise, alpha_return)
         mov = k != DWELL

@@ -14,9 +14,12 @@ import yaml
 
 @lru_cache(maxsize=None)
 def load_yaml(name: str):
-    """Parse the shipped YAML file ``name`` (e.g. ``"materials.yaml"``)."""
+    """Parse the shipped YAML file ``name`` (e.g. ``"materials.yaml"``). libyaml's safe
+    loader where PyYAML has it (ten times the pure-Python loader's speed: ~0.08 s of a
+    run); these files are ours, so the brief loader's limits are not needed here."""
+    loader = getattr(yaml, "CSafeLoader", yaml.SafeLoader)
     with resources.files(__name__).joinpath(name).open(encoding="utf-8") as fh:
-        return yaml.safe_load(fh)
+        return yaml.load(fh, Loader=loader)  # noqa: S506 - a safe loader
 
 
 @lru_cache(maxsize=None)

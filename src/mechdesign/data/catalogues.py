@@ -7,7 +7,10 @@ Material look-ups accept the table key (``"45_QT"``) or the Chinese name without
 """
 from __future__ import annotations
 
+from collections.abc import Mapping
 from dataclasses import dataclass
+from functools import lru_cache
+from types import MappingProxyType
 
 import numpy as np
 
@@ -190,7 +193,9 @@ class Bearing:
         return self.kind == "deep_groove_ball"
 
 
-def _bearing_rows() -> dict[str, Bearing]:
+@lru_cache(maxsize=None)
+def _bearing_rows() -> Mapping[str, Bearing]:
+    """The catalogue by designation (built once; read-only)."""
     t = load_yaml("bearings.yaml")
     out = {}
     for kind in ("deep_groove_ball", "tapered_roller"):
@@ -198,7 +203,7 @@ def _bearing_rows() -> dict[str, Bearing]:
             out[str(r["designation"])] = Bearing(
                 str(r["designation"]), kind, r["d_mm"] * MM, r["D_mm"] * MM, r["B_mm"] * MM, r["Cr_kN"] * KN,
                 r["C0r_kN"] * KN, r["T_mm"] * MM if "T_mm" in r else None, r.get("e"), r.get("Y"), r.get("Y0"))
-    return out
+    return MappingProxyType(out)
 
 
 def bearing_designations(series: str | None = None) -> tuple[str, ...]:
