@@ -1,18 +1,22 @@
-"""Shaper benchmark: core pipeline time and the whole `mechdesign run` split by phase.
+"""Shaper benchmark: the core pipeline's time and memory, and our kinematics against
+hand-written closed forms.
 
-Run:  python benchmarks/bench_shaper.py  [--repeat 20] [--big 1000000]
+Run:  python benchmarks/bench_shaper.py  [--repeat 20] [--big 1000000] [--angles 100000]
 
 Targets (issues 2 and 8, 2-core machine): core pipeline (kinematics + kinetostatics +
 flywheel) at 3600 crank positions <= 50 ms, and at 1,000,000 positions <= 2 s with a
 peak memory below 2 GB; the kinematics of a four-bar and of an offset slider-crank
 (positions, velocities, accelerations) at 100,000 crank angles within 2x of a
-hand-written closed-form numpy solution of the same linkage; the whole run (compute +
-figures + PDF) <= 3 s. Prints a table; it is not a test and never fails on time.
+hand-written closed-form numpy solution of the same linkage. Prints a table; it is not a
+test and never fails on time. The whole `mechdesign run` by phase (imports, figures, PDF)
+is benchmarks/bench_run.py; the peer libraries are benchmarks/peers.py.
 
 The 1,000,000-position case runs in a fresh subprocess (one call, as a run with that
 grid would): its time is that call's, and its peak memory is the subprocess's maximum
-resident set size (getrusage RUSAGE_CHILDREN ru_maxrss, so it includes the interpreter
-and the imported modules, ~100 MB).
+resident set size (its getrusage ru_maxrss at the end, so it includes the interpreter
+and the imported modules, ~100 MB). It is measured as the command line runs it, with
+glibc serving large arrays from the heap (mechdesign.allocator.prefer_heap), and once
+without that setting (the default allocator), for comparison.
 """
 from __future__ import annotations
 
@@ -24,7 +28,6 @@ import resource
 import statistics
 import subprocess
 import sys
-import tempfile
 import time
 from pathlib import Path
 
@@ -60,23 +63,27 @@ def _core(brief_path: str, grid_points: int | None = None):
     return core, params
 
 
-def _big_child(brief_path: str, grid_points: int) -> None:
+def _big_child(brief_path: str, grid_points: int, heap: bool) -> None:
     """In the subprocess: one core call at a large grid; prints its time as JSON."""
+    if heap:
+        from mechdesign.allocator import prefer_heap
+
+        prefer_heap()
     core, _ = _core(brief_path, grid_points)
     start = time.perf_counter()
     fl = core()
-    print(json.dumps({"ms": (time.perf_counter() - start) * 1e3, "J": fl.inertia}))
+    ms = (time.perf_counter() - start) * 1e3
+    print(json.dumps({"ms": ms, "J": fl.inertia,
+                      "maxrss_kb": resource.getrusage(resource.RUSAGE_SELF).ru_maxrss}))
 
 
-def _big_case(brief_path: str, grid_points: int) -> tuple[float, float]:
+def _big_case(brief_path: str, grid_points: int, heap: bool) -> tuple[float, float]:
     """Time [ms] and peak memory [MB] of one core call at ``grid_points``, in a subprocess."""
-    before = resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss
     out = subprocess.run([sys.executable, __file__, "--child", str(grid_points),
-                          "--brief", brief_path], capture_output=True, text=True, check=True)
-    peak_kb = resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss
-    if peak_kb < before:   # ru_maxrss of children is the largest so far, not this child's
-        raise RuntimeError("peak memory of the child is hidden by an earlier, larger child")
-    return json.loads(out.stdout)["ms"], peak_kb / 1024.0
+                          "--brief", brief_path] + ([] if heap else ["--no-heap"]),
+                         capture_output=True, text=True, check=True)
+    data = json.loads(out.stdout)
+    return data["ms"], data["maxrss_kb"] / 1024.0
 
 
 # ------------------------------------------------------------------ hand-written references
@@ -176,76 +183,31 @@ def main() -> None:
     parser.add_argument("--angles", type=int, default=100_000,
                         help="crank angles of the four-bar / slider-crank rows")
     parser.add_argument("--child", type=int, help=argparse.SUPPRESS)
+    parser.add_argument("--no-heap", action="store_true", help=argparse.SUPPRESS)
     args = parser.parse_args()
     if args.child:
-        _big_child(args.brief, args.child)
+        _big_child(args.brief, args.child, heap=not args.no_heap)
         return
 
-    from mechdesign.brief.loader import load_brief
-    from mechdesign.machines import get_machine, shaper, stages_for
-    from mechdesign.pipeline import run_stages
-    from mechdesign.render import shaper_report
-    from mechdesign.render.report import pdf_metadata, render_markdown, template_dir
-    from mechdesign.render.pdf import render_pdf
-    from mechdesign.results import dumps
-
-    brief = load_brief(args.brief)
-    machine = get_machine(brief.machine)
-    params = machine.to_params(brief)
-    core, _ = _core(args.brief)
-
+    core, params = _core(args.brief)
     core()  # warm-up (imports, caches)
     core_ms = _median_ms(core, args.repeat)
 
     rows = [("core pipeline, %d crank positions (median of %d)" % (params.grid_points, args.repeat),
-             core_ms, 50.0)]
-    big_mb = None
+             core_ms, 50.0, None)]
     if args.big:
-        big_ms, big_mb = _big_case(args.brief, args.big)
-        rows.append((f"core pipeline, {args.big} positions (one call, subprocess)", big_ms, 2000.0))
+        for heap in (False, True):
+            ms, mb = _big_case(args.brief, args.big, heap)
+            how = "as the CLI runs it" if heap else "default allocator"
+            rows.append((f"core pipeline, {args.big} positions ({how})", ms, 2000.0, mb))
     linkage_rows = _linkage_rows(args.angles, args.repeat) if args.angles else []
 
-    with tempfile.TemporaryDirectory() as tmp:
-        out = Path(tmp)
-        start = time.perf_counter()
-        results, _ = run_stages(stages_for(machine, params), {"params": params, "brief": brief})
-        document = dumps(machine.document(results))
-        t_compute = time.perf_counter() - start
-
-        start = time.perf_counter()
-        (out / "figures").mkdir()
-        figs = shaper_report.make_figures(results, out / "figures", "zh")
-        t_figures = time.perf_counter() - start
-
-        start = time.perf_counter()
-        ctx = shaper_report.context(results, brief, figs, "zh")
-        ctx.setdefault("sheets", [])   # drawing sheets are not timed here (write_report adds them)
-        md = render_markdown("shaper.zh.md.j2", ctx, template_dir())
-        (out / "report.md").write_text(md, encoding="utf-8")
-        (out / "results.json").write_text(document, encoding="utf-8")
-        t_md = time.perf_counter() - start
-
-        start = time.perf_counter()
-        render_pdf(out / "report.md", out / "report.pdf", pdf_metadata(brief.report, "zh"),
-                   template_dir() / "report.typ")
-        t_pdf = time.perf_counter() - start
-
-    total = t_compute + t_figures + t_md + t_pdf
-    rows += [("run: compute (all stages + results.json)", t_compute * 1e3, None),
-             ("run: figures (6 PNG)", t_figures * 1e3, None),
-             ("run: Markdown", t_md * 1e3, None),
-             ("run: PDF (pandoc + typst)", t_pdf * 1e3, None),
-             ("run: total", total * 1e3, 3000.0)]
-
     print(f"mechdesign shaper benchmark  ({os.cpu_count()} CPUs, Python {sys.version.split()[0]})")
-    print(f"{'what':58s} {'ms':>9s} {'target':>8s}  ok")
-    for what, ms, target in rows:
-        tgt = f"{target:.0f}" if target else ""
-        ok = "" if target is None else ("yes" if ms <= target else "NO")
-        print(f"{what:58s} {ms:9.1f} {tgt:>8s}  {ok}")
-    if big_mb is not None:
-        print(f"{'  peak memory of that subprocess (maxrss) [MB]':58s} {big_mb:9.0f} "
-              f"{2048:>8d}  {'yes' if big_mb < 2048 else 'NO'}")
+    print(f"{'what':62s} {'ms':>9s} {'target':>7s}  ok  {'peak MB':>7s}")
+    for what, ms, target, mb in rows:
+        ok = "yes" if ms <= target else "NO"
+        mem = "" if mb is None else f"{mb:7.0f}" + ("" if mb < 2048 else " (> 2048: NO)")
+        print(f"{what:62s} {ms:9.1f} {target:7.0f}  {ok:3s} {mem}")
     if linkage_rows:
         print()
         print(f"{'kinematics (pos+vel+acc), median of %d' % args.repeat:40s} {'ours ms':>8s} "

@@ -176,3 +176,14 @@ def test_timings_prefix_every_progress_line_with_a_growing_time(tmp_path):
     lines = [ln for ln in result.output.splitlines() if "rendering" in ln or ln.lstrip().startswith("[")]
     assert len(times) >= len(lines) >= 3
     assert times == sorted(times) and times[0] > 0
+
+
+def test_prefer_heap_takes_effect_exactly_on_glibc():
+    import platform
+
+    from mechdesign.allocator import prefer_heap
+
+    glibc = sys.platform.startswith("linux") and platform.libc_ver()[0] == "glibc"
+    assert prefer_heap() is glibc
+    a = np.ones(2_000_000)          # large arrays still allocate and free normally
+    assert float(a.sum()) == 2_000_000.0

@@ -40,6 +40,9 @@ def _version(value: bool):
 def main(version: Optional[bool] = typer.Option(None, "--version", callback=_version,
                                                 is_eager=True, help="Show the version and exit.")):
     """Mechanism course design reports from YAML briefs."""
+    from .allocator import prefer_heap
+
+    prefer_heap()
 
 
 def _since_process_start() -> float:
