@@ -1,19 +1,22 @@
 """Save figures in a second process while the next one is drawn.
 
 Drawing a report is mostly matplotlib laying out text and encoding images, one figure
-after another on one core. Inside :func:`background_saves`, :func:`save` hands the
+after another on one core. Inside :func:`background_saves`, :func:`save` hands a
 finished figure to a forked child process (it inherits the figure as it is, nothing is
-pickled) and returns at once, so the parent goes on building the next figure; when the
-child is still busy, the parent saves the figure itself. Two cores are then both at
-work, whatever the machine's report module draws, and every figure is drawn once.
+pickled), so this process goes on building the next one; while the child is busy this
+process saves the figure it held back and holds the new one, so the last figure of a
+report is written while the Markdown is rendered and pandoc runs. Work that uses typst
+(the drawing sheets) gets a child of its own. Two cores are then both at work, whatever
+a machine's report module draws, and every figure is drawn once.
 
-The child never returns into the caller's stack: it saves, reports a failure through a
+A child never returns into the caller's stack: it saves, reports a failure through a
 pipe and leaves with ``os._exit``, so no ``finally`` of the parent (the staging folder's
-cleanup) runs twice. Leaving the context waits for the child and raises its error; an
-exception or an interrupt in the parent kills it first. Nothing here is used outside
-rendering, and without ``fork`` (Windows), with one usable CPU, with
-``MECHDESIGN_SERIAL=1`` or once typst has run in this process (its worker threads do not
-survive a fork) every save simply happens in place.
+cleanup) runs twice. Leaving the context waits for the children and raises their
+errors; an exception or an interrupt in the parent kills them first. Nothing here is
+used outside rendering. Off Linux (Windows has no ``fork``; macOS's system libraries are
+not fork-safe), with one usable CPU, with ``MECHDESIGN_SERIAL=1``, or once typst has run
+in this process (its worker threads do not survive a fork), every save simply happens
+in place.
 """
 from __future__ import annotations
 
@@ -51,7 +54,8 @@ def usable_cpus() -> int:
 
 
 def can_fork() -> bool:
-    return (hasattr(os, "fork") and usable_cpus() >= 2 and not _typst_used
+    # Linux only: macOS's system libraries are not safe to use in a forked child.
+    return (sys.platform.startswith("linux") and usable_cpus() >= 2 and not _typst_used
             and os.environ.get("MECHDESIGN_SERIAL", "") not in ("1", "true", "yes"))
 
 
