@@ -123,6 +123,7 @@ def write_report(out_dir: Path, *, machine: str, lang: str, formats: tuple[str, 
                     say("data files (CSV)")
                     write_data(staging)
                 say("figures and sheets: the last ones")
+            say("figures and sheets: all written")
             if pending is not None:
                 from .pdf import compile_pdf
 
