@@ -188,3 +188,24 @@ def test_prefer_heap_takes_effect_exactly_on_glibc():
     assert prefer_heap() is glibc
     a = np.ones(2_000_000)          # large arrays still allocate and free normally
     assert float(a.sum()) == 2_000_000.0
+
+
+@pytest.mark.parametrize("text", ['a "quoted" \\ back\\slash', "#let x = 1 $y$ [z] <l> @r *b* _i_",
+                                  "tab\there\x01\x7f", "中文 ΔW_max 😀"])
+def test_sheet_text_is_a_typst_string_literal(text):
+    """Any user text (title block names) becomes a typst string that compiles and holds
+    exactly that text: typst's repr of the value, read back, is the text."""
+    import typst
+
+    from mechdesign.render.sheet_typst import typst_string
+
+    literal = typst_string(text)
+    source = f"#let s = {literal}\n#assert.eq(s.len(), {len(text.encode('utf-8'))})\n#s\n"
+    typst.compile(source.encode("utf-8"))   # raises on a syntax error or a failed assert
+
+
+def test_pandoc_failure_is_a_render_error_naming_pandoc(tmp_path):
+    from mechdesign.render.pdf import PdfRenderError, markdown_to_typst
+
+    with pytest.raises(PdfRenderError, match="pandoc"):
+        markdown_to_typst("# T\n", tmp_path / "no-such-template.typ", {}, tmp_path)
