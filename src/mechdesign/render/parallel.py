@@ -111,6 +111,15 @@ def save(action: Callable[[], None], label: str, *, uses_typst: bool = False
     return drain
 
 
+def pump() -> None:
+    """Hand the figure held back to the helper if it is free (call when drawing is over
+    and other work follows)."""
+    if _enabled and _held:
+        _reap(block=False)
+        if _helper_free():
+            _fork(*_held.pop(), False)
+
+
 def drain() -> None:
     """Write the figure held back (by the helper if it is free, else here), then wait
     for every child."""

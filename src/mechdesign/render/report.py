@@ -17,7 +17,7 @@ import jinja2
 
 from ..results import dumps
 from .fmt import md_text
-from .parallel import background_saves
+from .parallel import background_saves, pump
 
 FORMATS = ("md", "pdf", "docx", "dxf", "gif")
 
@@ -104,6 +104,7 @@ def write_report(out_dir: Path, *, machine: str, lang: str, formats: tuple[str, 
                                   else (lambda: []))
                 say("figures")
                 figures = make_figures(fig_dir)
+                pump()                     # the last figure, while the Markdown is made
                 sheets = collect_sheets()
                 ctx = make_context(figures)
                 ctx["sheets"] = [_sheet_row(sh, lang) for sh in sheets]
