@@ -5,7 +5,7 @@ as blocks are freed) a memory map of its own and unmaps it on free, so in a long
 vectorised computation each new array faults all its pages in again. With the threshold
 at 1 GiB, freed blocks stay in the heap and the next arrays reuse them. Measured on the
 shaper's core pipeline at 1,000,000 crank positions (2-core machine): 2.0 s → 0.8 s, the
-same peak memory (benchmarks/bench_shaper.py). The command line sets it once at start;
+same peak memory (benchmarks/bench_shaper.py). `mechdesign run` and `batch` set it at start;
 a program importing mechdesign as a library may call :func:`prefer_heap` itself.
 """
 from __future__ import annotations

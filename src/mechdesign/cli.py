@@ -40,9 +40,6 @@ def _version(value: bool):
 def main(version: Optional[bool] = typer.Option(None, "--version", callback=_version,
                                                 is_eager=True, help="Show the version and exit.")):
     """Mechanism course design reports from YAML briefs."""
-    from .allocator import prefer_heap
-
-    prefer_heap()
 
 
 def _since_process_start() -> float:
@@ -56,14 +53,6 @@ def _since_process_start() -> float:
         return max(0.0, uptime - start_ticks / os.sysconf("SC_CLK_TCK"))
     except (OSError, ValueError, IndexError, AttributeError):
         return 0.0
-
-
-# the process's start on the monotonic clock (the same in a forked helper process)
-_STARTED = time.perf_counter() - _since_process_start()
-
-
-def _elapsed() -> float:
-    return time.perf_counter() - _STARTED
 
 
 def _err(msg: str) -> None:
@@ -126,10 +115,15 @@ def run(
     """Run every stage for BRIEF and write report.md, report.pdf, results.json and figures."""
     from .runner import run_one
 
+    from .allocator import prefer_heap
+
+    prefer_heap()
     fmt = _parse_formats(formats)
+    # the process's start on the monotonic clock (the same in a forked helper process)
+    started = time.perf_counter() - _since_process_start() if timings else 0.0
 
     def say(text: str) -> None:
-        _err(f"{_elapsed():6.2f} s  {text}" if timings else text)
+        _err(f"{time.perf_counter() - started:6.2f} s  {text}" if timings else text)
 
     def stage_progress(i: int, total: int, title: str) -> None:
         say(f"[{i}/{total}] {title}")
@@ -182,9 +176,11 @@ def batch(
 
     Continues past failing briefs; exit 0 when every run succeeded, 2 when a brief was
     invalid (or its design infeasible), 1 when a report failed otherwise."""
+    from .allocator import prefer_heap
     from .batch import (BatchError, Progress, collect_briefs, default_jobs, exit_code,
                         index_document, parse_shard, plan_jobs, run_batch, shard, write_index)
 
+    prefer_heap()   # inherited by the forked workers
     fmt = _parse_formats(formats)
     try:
         which = parse_shard(shard_text)

@@ -25,7 +25,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .kinematics import cross
+from .kinematics import cross, dot
 from .mechanism import Joint, Mechanism, Motion
 
 STANDARD_GRAVITY = 9.81  # [m/s²]; gravity acts along −y
@@ -306,9 +306,6 @@ def power_residual(mech: Mechanism, motion: Motion, bodies: list[Body],
     By the principle of virtual power this is zero for ideal joints; it is an
     independent check of :func:`solve_forces` that never looks at a reaction.
     """
-    def dot(f, v):
-        return (np.conj(f) * v).real
-
     total = np.zeros(len(motion.crank_angle))
     for b in bodies:
         if b.mass:

@@ -6,8 +6,8 @@ finished figure to a forked child process (it inherits the figure as it is, noth
 pickled), so this process goes on building the next one; while the child is busy this
 process saves the figure it held back and holds the new one, so the last figure of a
 report is written while the Markdown is rendered and pandoc runs. Work that uses typst
-(the drawing sheets) gets a child of its own. Two cores are then both at work, whatever
-a machine's report module draws, and every figure is drawn once.
+(the drawing sheets) gets a child of its own (:func:`save_apart`). Two cores are then
+both at work, whatever a machine's report module draws, and every figure is drawn once.
 
 A child never returns into the caller's stack: it saves, reports a failure through a
 pipe and leaves with ``os._exit``, so no ``finally`` of the parent (the staging folder's
@@ -34,10 +34,10 @@ class BackgroundSaveError(RuntimeError):
 
 
 _enabled = False
-# (pid, read end of its error pipe, label, uses typst)
+# (pid, read end of its error pipe, label, a child of its own (save_apart))
 _children: list[tuple[int, int, str, bool]] = []
 _typst_used = False
-_held: list[tuple[Callable[[], None], str]] = []   # the figure held back (at most one)
+_held: list[tuple[Callable[[], None], str]] = []   # figures held back, oldest first
 
 
 def note_typst_used() -> None:
@@ -77,66 +77,60 @@ def background_saves(enabled: bool = True):
             gc.unfreeze()
 
 
-def save(action: Callable[[], None], label: str, *, uses_typst: bool = False
-         ) -> Callable[[], None]:
+def save(action: Callable[[], None], label: str) -> None:
     """Run ``action`` (which writes the files of a figure that is complete) now, in the
     background, or a little later. ``label`` names the figure in an error message.
 
-    One child at a time takes ordinary saves; this process is the other worker. It holds
-    back the newest figure and saves the one it held when the child is busy, so that the
-    last figure of the report is written while the Markdown is rendered and pandoc runs
-    (:func:`drain`), not before. An action that ``uses_typst`` always gets a child of its
-    own when forking is on, so that this process stays free of typst's threads and can
-    go on forking. Returns a function that waits until this save is done (raising its
-    error) — for a save that uses typst; for the others it waits for everything."""
+    One child at a time takes these saves; this process is the other worker. It holds
+    back the newest figure and, when the child is busy, saves the one it held before, so
+    the last figure of a report is written while the Markdown is made and pandoc runs
+    (:func:`pump`, :func:`drain`), not before."""
     if not _enabled:
-        if uses_typst:
-            note_typst_used()
+        action()
+        return
+    _held.append((action, label))
+    pump()                          # a free helper takes the oldest figure
+    if len(_held) > 1:              # else this process saves it
+        _held.pop(0)[0]()
+
+
+def save_apart(action: Callable[[], None], label: str) -> Callable[[], None]:
+    """Run ``action``, which uses typst, in a child process of its own when saves go to
+    the background (this process must stay free of typst's threads to go on forking),
+    else here and now. Returns a function that waits until it is done (raising its
+    error)."""
+    if not _enabled:
+        note_typst_used()
         action()
         return lambda: None
-    _reap(block=False)
-    if uses_typst:
-        pid = _fork(action, label, True)
-        return lambda: _reap(block=True, only=pid)
-    if _helper_free():
-        if _held:
-            _fork(*_held.pop(), False)
-            _held.append((action, label))
-        else:
-            _fork(action, label, False)
-    else:
-        if _held:
-            _held.pop()[0]()
-        _held.append((action, label))
-    return drain
+    pid = _fork(action, label, apart=True)
+    return lambda: _reap(block=True, only=pid)
 
 
 def pump() -> None:
-    """Hand the figure held back to the helper if it is free (call when drawing is over
-    and other work follows)."""
+    """Hand the oldest figure held back to the helper if it is free (also to call when
+    drawing is over and other work follows)."""
     if _enabled and _held:
         _reap(block=False)
         if _helper_free():
-            _fork(*_held.pop(), False)
+            _fork(*_held.pop(0), apart=False)
 
 
 def drain() -> None:
-    """Write the figure held back (by the helper if it is free, else here), then wait
-    for every child."""
+    """Write the figures held back (the helper takes one when it is free, this process
+    the rest), then wait for every child."""
     while _held:
-        _reap(block=False)
-        if _helper_free():
-            _fork(*_held.pop(), False)
-        else:
-            _held.pop()[0]()
-    _wait()
+        pump()
+        if _held:
+            _held.pop(0)[0]()
+    _reap(block=True)
 
 
 def _helper_free() -> bool:
-    return not any(not typ for *_, typ in _children)
+    return not any(not apart for *_, apart in _children)
 
 
-def _fork(action: Callable[[], None], label: str, uses_typst: bool) -> int:
+def _fork(action: Callable[[], None], label: str, apart: bool) -> int:
     global _enabled
     _flush_std()
     # The objects that exist now are the parent's and the child's alike: kept out of the
@@ -166,7 +160,7 @@ def _fork(action: Callable[[], None], label: str, uses_typst: bool) -> int:
             _flush_std()
             os._exit(code)
     os.close(write_end)
-    _children.append((pid, read_end, label, uses_typst))
+    _children.append((pid, read_end, label, apart))
     return pid
 
 
@@ -198,10 +192,6 @@ def _reap(block: bool, only: int | None = None) -> None:
                           + (f":\n{message}" if message else ""))
     if errors:
         raise BackgroundSaveError("\n".join(errors))
-
-
-def _wait() -> None:
-    _reap(block=True)
 
 
 def _kill() -> None:

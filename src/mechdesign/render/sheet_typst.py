@@ -201,43 +201,35 @@ def sheet_source(sheet: Sheet) -> str:
 def write_sheet(sheet: Sheet, pdf: Path | None = None, png: Path | None = None,
                 png_width_px: int = 2400) -> None:
     """Write the sheet as a vector PDF at true size and/or a PNG preview ``png_width_px``
-    wide, both from the same typst document (see :func:`write_sheets`)."""
+    wide, both from the same typst document, here and now (see :func:`write_sheets`)."""
     write_sheets([(sheet, pdf, png, png_width_px)])
 
 
 def write_sheets(jobs) -> None:
     """Write several sheets: ``jobs`` of (sheet, pdf path or None, png path or None, PNG
-    width [px]). The documents are made here; typst compiles them in one go, in a helper
-    process when the report is rendered with background saves (:mod:`.parallel`), so its
-    fonts are loaded once."""
-    from .parallel import save
+    width [px]), compiled by typst in this process one after the other (its fonts are
+    loaded once). :func:`.sheets.make_sheets` runs this in a helper process of its own
+    when the report is rendered with background saves."""
+    import typst
 
-    work = [(sheet_source(sheet).encode("utf-8"), sheet, pdf, png, width)
-            for sheet, pdf, png, width in jobs if pdf is not None or png is not None]
-    if not work:
-        return
+    from .parallel import note_typst_used
+    from .pdf import PdfRenderError, _atomic_write, _typst_message, source_timestamp
 
-    def write():
-        import typst
-
-        from .parallel import note_typst_used
-        from .pdf import PdfRenderError, _atomic_write, _typst_message, source_timestamp
-
-        note_typst_used()
-        fonts = [str(d) for d in font_dirs()]
-        for source, sheet, pdf, png, width in work:
-            date = sheet.info.date if sheet.info is not None else None
-            try:
-                if pdf is not None:
-                    _atomic_write(Path(pdf), typst.compile(
-                        source, font_paths=fonts, timestamp=source_timestamp(date)))
-                if png is not None:
-                    image = typst.compile(source, font_paths=fonts, format="png",
-                                          ppi=width / (sheet.width / 25.4))
-                    _atomic_write(Path(png), image if isinstance(image, bytes) else image[0])
-            except typst.TypstError as exc:
-                raise PdfRenderError(f"typst failed to draw the sheet "
-                                     f"{Path(pdf or png).name}:\n{_typst_message(exc)}") from exc
-
-    names = ", ".join(Path(png or pdf).name for _, _, pdf, png, _ in work)
-    save(write, names, uses_typst=True)
+    note_typst_used()
+    fonts = [str(d) for d in font_dirs()]
+    for sheet, pdf, png, width in jobs:
+        if pdf is None and png is None:
+            continue
+        source = sheet_source(sheet).encode("utf-8")
+        date = sheet.info.date if sheet.info is not None else None
+        try:
+            if pdf is not None:
+                _atomic_write(Path(pdf), typst.compile(
+                    source, font_paths=fonts, timestamp=source_timestamp(date)))
+            if png is not None:
+                image = typst.compile(source, font_paths=fonts, format="png",
+                                      ppi=width / (sheet.width / 25.4))
+                _atomic_write(Path(png), image if isinstance(image, bytes) else image[0])
+        except typst.TypstError as exc:
+            raise PdfRenderError(f"typst failed to draw the sheet "
+                                 f"{Path(pdf or png).name}:\n{_typst_message(exc)}") from exc

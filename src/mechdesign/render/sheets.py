@@ -86,18 +86,19 @@ def make_sheets(results: dict, brief, folder: Path, fig_dir: Path, lang: str,
     rendered with background saves (:mod:`.parallel`), the whole of it, models included,
     while this process draws the figures. Returns a function that gives what was written
     (waiting for the helper); the helper hands the list over in a small JSON file."""
-    from .parallel import save
+    from .parallel import save_apart
 
-    if not _builders(results, brief):
+    builders = _builders(results, brief)
+    if not builders:
         return lambda: []
     manifest = Path(folder) / ".sheets.json"
 
     def work():
-        files = write_all(results, brief, folder, fig_dir, lang, formats, progress)
+        files = write_all(builders, brief, folder, fig_dir, lang, formats, progress)
         manifest.write_text(json.dumps([asdict(f) for f in files], ensure_ascii=False),
                             encoding="utf-8")
 
-    wait = save(work, "the drawing sheets", uses_typst=True)
+    wait = save_apart(work, "the drawing sheets")
     done: list[SheetFiles] = []
 
     def collect() -> list[SheetFiles]:
@@ -110,14 +111,14 @@ def make_sheets(results: dict, brief, folder: Path, fig_dir: Path, lang: str,
     return collect
 
 
-def write_all(results: dict, brief, folder: Path, fig_dir: Path, lang: str,
+def write_all(builders: list, brief, folder: Path, fig_dir: Path, lang: str,
               formats: tuple[str, ...], progress: Callable[[str], None] | None = None
               ) -> list[SheetFiles]:
-    """Build and write every sheet of ``results`` here and now; return what was written."""
+    """Build and write the sheets of ``builders`` (see :func:`_builders`) here and now;
+    return what was written."""
     from .sheet_typst import write_sheets
 
     say = progress or (lambda _m: None)
-    builders = _builders(results, brief)
     settings = getattr(brief, "sheets", None)
     prefix = settings.drawing_number if settings is not None else "MD"
     out, jobs = [], []
