@@ -1,0 +1,181 @@
+"""Compare two results.json documents number by number (issue 17: "prove nothing changed").
+
+    python tools/compare_results.py OLD.json NEW.json [--rtol 1e-9]
+    python tools/compare_results.py OLD_DIR NEW_DIR          # every */results.json in OLD_DIR
+
+The old document's keys are first renamed by :data:`RENAMES` (the results schema's
+deliberate renames, old path → new path); every number of the old document must then be
+found at its (renamed) path in the new document and agree to ``rtol`` relative to the
+larger magnitude of the two — or of the whole array it belongs to, so that a value that
+is zero up to round-off inside a large array is not compared on its own round-off.
+Paths listed in :data:`IGNORED` (round-off residuals of the self-checks, which measure
+the arithmetic itself) are skipped. New keys in the new document are allowed.
+
+A reduced copy (long arrays sampled every ``stride`` entries) is what the test suite
+keeps of the pre-redesign results: ``--reduce OUT_DIR`` writes it.
+"""
+from __future__ import annotations
+
+import argparse
+import fnmatch
+import gzip
+import json
+import math
+import sys
+from pathlib import Path
+
+# old path (glob on dotted paths, list indices as numbers) → new path; "{1}" etc. refer to
+# the glob's "*" parts in order. Applied per machine ("*" for all machines).
+RENAMES: dict[str, list[tuple[str, str]]] = {
+    "*": [("schema", "")],          # the schema string changes by design (version bump)
+}
+
+# Self-check residuals: round-off, not results. Compared only as "still tiny".
+IGNORED = ("*closure_residual", "*power_balance_residual", "*power_residual*",
+           "*self_check*residual*")
+TINY = 1e-6
+# Finite-difference errors are O(h²) quantities formed by cancellation: compared to 1e-6.
+LOOSE = ("*velocity_fd_error", "*acceleration_fd_error")
+LOOSE_RTOL = 1e-6
+
+SAMPLED = "__sampled__"
+
+
+def load(path: Path):
+    if path.suffix == ".gz":
+        with gzip.open(path, "rt", encoding="utf-8") as fh:
+            return json.load(fh)
+    return json.loads(path.read_text(encoding="utf-8"))
+
+
+def flatten(doc, prefix: str = "", out: dict | None = None, scale: float | None = None) -> dict:
+    """dotted path → (value, scale of its array or None)."""
+    out = {} if out is None else out
+    if isinstance(doc, dict):
+        if SAMPLED in doc:
+            stride = doc[SAMPLED]
+            values = doc["values"]
+            sc = _scale(values)
+            for j, v in enumerate(values):
+                flatten(v, f"{prefix}.{j * stride}", out, sc)
+            out[f"{prefix}.__len__"] = (doc["n"], None)
+            return out
+        for k, v in doc.items():
+            flatten(v, f"{prefix}.{k}" if prefix else str(k), out, None)
+        return out
+    if isinstance(doc, list):
+        sc = _scale(doc)
+        for j, v in enumerate(doc):
+            flatten(v, f"{prefix}.{j}", out, sc)
+        out[f"{prefix}.__len__"] = (len(doc), None)
+        return out
+    out[prefix] = (doc, scale)
+    return out
+
+
+def _scale(values) -> float | None:
+    nums = [abs(v) for v in values if isinstance(v, (int, float)) and not isinstance(v, bool)]
+    return max(nums) if nums else None
+
+
+def rename(path: str, machine: str) -> str | None:
+    for pattern, target in RENAMES.get(machine, []) + RENAMES.get("*", []):
+        if fnmatch.fnmatchcase(path, pattern) or path.startswith(pattern + "."):
+            if not target:
+                return None
+            rest = path[len(pattern):] if path.startswith(pattern) else ""
+            return target + rest
+    return path
+
+
+def compare(old: dict, new: dict, rtol: float = 1e-9) -> list[str]:
+    """Differences as readable lines (empty when the documents agree)."""
+    machine = old.get("machine", "*")
+    a, b = flatten(old), flatten(new)
+    problems = []
+    for path, (value, scale) in a.items():
+        target = rename(path, machine)
+        if target is None:
+            continue
+        if target.endswith(".__len__") and target not in b:
+            continue  # a reduced (sampled) array compared with a full one
+        if any(fnmatch.fnmatchcase(target, pat) for pat in IGNORED):
+            got = b.get(target, (None, None))[0]
+            if isinstance(got, (int, float)) and abs(got) > TINY:
+                problems.append(f"{path}: self-check residual {got!r} is no longer tiny")
+            continue
+        if target not in b:
+            problems.append(f"{path}: missing in the new document (looked for {target})")
+            continue
+        got, got_scale = b[target]
+        if isinstance(value, bool) or not isinstance(value, (int, float)):
+            if value != got:
+                problems.append(f"{path}: {value!r} -> {got!r}")
+            continue
+        if not isinstance(got, (int, float)) or isinstance(got, bool):
+            problems.append(f"{path}: {value!r} -> {got!r}")
+            continue
+        ref = max(abs(value), abs(got), scale or 0.0, got_scale or 0.0)
+        tol = LOOSE_RTOL if any(fnmatch.fnmatchcase(target, pat) for pat in LOOSE) else rtol
+        if abs(value - got) > tol * ref and not (math.isclose(value, got, abs_tol=1e-300)):
+            problems.append(f"{path}: {value!r} -> {got!r} (rel {abs(value - got) / ref:.3g})")
+    return problems
+
+
+def reduce(doc, stride_for: int = 64):
+    """Long arrays (> stride_for entries) sampled so the document stays small."""
+    if isinstance(doc, dict):
+        return {k: reduce(v, stride_for) for k, v in doc.items()}
+    if isinstance(doc, list):
+        if len(doc) > stride_for and all(not isinstance(v, (dict, list)) for v in doc):
+            stride = max(1, len(doc) // 48)
+            return {SAMPLED: stride, "n": len(doc), "values": doc[::stride]}
+        return [reduce(v, stride_for) for v in doc]
+    return doc
+
+
+def _pairs(old: Path, new: Path):
+    if old.is_file():
+        yield old.name, old, new
+        return
+    for f in sorted(list(old.glob("*/results.json")) + list(old.glob("*.json.gz"))):
+        name = f.parent.name if f.name == "results.json" else f.name.removesuffix(".json.gz")
+        target = new / name / "results.json"
+        yield name, f, target
+
+
+def main(argv=None) -> int:
+    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    ap.add_argument("old", type=Path)
+    ap.add_argument("new", type=Path, nargs="?")
+    ap.add_argument("--rtol", type=float, default=1e-9)
+    ap.add_argument("--reduce", type=Path, metavar="OUT_DIR",
+                    help="write reduced gzip copies of OLD's results to OUT_DIR")
+    args = ap.parse_args(argv)
+    if args.reduce:
+        args.reduce.mkdir(parents=True, exist_ok=True)
+        for name, f, _ in _pairs(args.old, args.old):
+            data = json.dumps(reduce(load(f)), ensure_ascii=False, separators=(",", ":"))
+            with gzip.open(args.reduce / f"{name}.json.gz", "wt", encoding="utf-8",
+                           compresslevel=9) as fh:
+                fh.write(data)
+        return 0
+    bad = 0
+    for name, f, g in _pairs(args.old, args.new):
+        if not g.exists():
+            print(f"{name}: no {g}")
+            bad += 1
+            continue
+        problems = compare(load(f), load(g), args.rtol)
+        print(f"{name}: {'same' if not problems else f'{len(problems)} differences'}")
+        for line in problems[:40]:
+            print("   ", line)
+        bad += bool(problems)
+    return 1 if bad else 0
+
+
+if __name__ == "__main__":
+    try:
+        sys.exit(main())
+    except BrokenPipeError:
+        sys.exit(1)
