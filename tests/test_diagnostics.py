@@ -52,8 +52,8 @@ def run(data: dict, stop_after: str | None = None) -> dict:
     p = m.to_params(b)
     stages = stages_for(m, p)
     if stop_after is not None:
-        keys = [s.key if isinstance(s.key, str) else s.key[0] for s in stages]
-        stages = stages[:keys.index(stop_after) + 1]
+        keys = [(s.key,) if isinstance(s.key, str) else s.key for s in stages]
+        stages = stages[:next(i for i, k in enumerate(keys) if stop_after in k) + 1]
     return run_stages(stages, {"params": p, "brief": b})[0]
 
 

@@ -306,8 +306,9 @@ def test_flywheel_stage_from_independent_torque(run):
     assert fl.ratio_to_crank == pytest.approx(i) and fl.shaft_speed_rpm == pytest.approx(n1)
     J = 900 * dw / (np.pi**2 * n1**2 * p.fluctuation)
     assert fl.inertia == pytest.approx(J, rel=1e-6)
-    np.testing.assert_allclose(fl.resistance_torque, f.balancing_torque[:n] / i, rtol=1e-15)
-    assert fl.driving_torque == pytest.approx(md / i, rel=1e-6)
+    # M_d on the crank and on the flywheel shaft (M_r there is M_b / i).
+    assert fl.mean_torque == pytest.approx(md, rel=1e-6)
+    assert fl.shaft_torque == pytest.approx(md / i, rel=1e-6)
     assert fl.rim.rim_mass == pytest.approx(4 * J / p.rim_diameter**2, rel=1e-6)
 
 

@@ -125,7 +125,11 @@ def test_simulated_linkage_reproduces_H_and_K(shaper):
     k_sim = working / (2 * np.pi - working)
     assert k_sim == pytest.approx(K, abs=1e-9)     # angles known to 1e-9 rad
     # The program's own self-check agrees with this independent search.
-    stroke, k_prog = sh.simulated_stroke_and_K(mech, k)
+    # (the linkage engine's verification: a bounded search on x_F between grid points)
+    from mechdesign.machines import linkage as lk
+
+    v = lk.verify(k.model, k.linkage, mech.solve(k.crank_angle), None)
+    stroke, k_prog = v.stroke, v.time_ratio
     assert stroke == pytest.approx(H, abs=1e-9)
     # Its K comes from a bounded minimisation of x (flat extremum, angle ~sqrt(ε) ≈ 1e-7 rad
     # per end) → K to ~1e-7.

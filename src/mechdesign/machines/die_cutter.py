@@ -35,13 +35,13 @@ from scipy.optimize import brentq
 
 from ..brief.die_cutter import DieCutterParams, PressGeometry
 from ..core import cycle as cy
-from ..core import flywheel as fw
 from ..core import fourbar
 from ..core.kinetostatics import Body, PointLoad, solve_forces
 from ..core.mechanism import RRP, RRR, Crank, LinkPoint, Mechanism
 from ..core.synthesis import extreme_angle
 from ..pipeline import Stage
 from .findings import Finding
+from ..stages.flywheel import Flywheel, FlywheelSpec, RimSpec, design_flywheel
 from .linkage import LinkageModel, Output, Resistance, linkage_stages
 
 TWO_PI = 2.0 * np.pi
@@ -334,26 +334,6 @@ def _drive(r: dict):
                         j if j < shafts else None)
 
 
-@dataclass(frozen=True)
-class DieFlywheel:
-    """Stage 飞轮设计: the flywheel on drive shaft ``shaft``."""
-
-    shaft: int
-    speed_ratio: float          # flywheel shaft speed / distribution shaft speed
-    shaft_speed_rpm: float
-    mean_torque: float          # M_d on the distribution shaft [N·m]
-    energy: np.ndarray          # ΔE over the grid [J]
-    max_energy_swing: float     # ΔW_max [J]
-    phase_at_min: float
-    phase_at_max: float
-    fluctuation: float
-    inertia: float              # J_F [kg·m²]
-    inertia_on_crank: float     # the same flywheel on the distribution shaft [kg·m²]
-    rim: fw.RimFlywheel
-    peak_shafts: tuple = ()     # (shaft, n [rpm], mean T, peak T [N·m], d designed, d for the peak [m])
-    warnings: tuple = ()
-
-
 def peak_shafts(drive) -> tuple:
     """The shafts after the flywheel carry the peak of M_b: their torsion estimate
     d ≥ A0 ∛(P/n) (the drive stage's, from the mean power) against the same estimate with the
@@ -375,26 +355,15 @@ def peak_shafts(drive) -> tuple:
     return tuple(out)
 
 
-def flywheel(k, f, drive, p: DieCutterParams) -> DieFlywheel:
+def flywheel(model: LinkageModel, k, f, drive, p: DieCutterParams) -> tuple[Flywheel, tuple]:
+    """The one flywheel stage on drive shaft ``p.flywheel_shaft`` (its speed from the
+    designed drive), and the shafts after it that carry the peak torque."""
+    ratio = float(np.prod([st.ratio for st in drive.stages][p.flywheel_shaft:]))
+    spec = FlywheelSpec(p.fluctuation, ratio, p.flywheel_shaft,
+                        RimSpec(p.rim_diameter, p.rim_height_to_width, p.specific_weight))
     n = k.grid_size
-    cycle = fw.energy_cycle(k.phase[:n], f.balancing_torque[:n])
-    ratios = [st.ratio for st in drive.stages]
-    ratio = float(np.prod(ratios[p.flywheel_shaft:]))
-    speed = p.shaft_rpm * ratio
-    inertia = fw.flywheel_inertia(cycle.max_energy_swing, speed, p.fluctuation)
-    on_crank = fw.flywheel_inertia(cycle.max_energy_swing, p.shaft_rpm, p.fluctuation)
-    rim = fw.rim_dimensions(inertia, p.rim_diameter, p.rim_height_to_width, p.specific_weight,
-                            speed, p.gravity)
-    warnings = []
-    if rim.rim_speed > 30.0:
-        warnings.append(Finding(
-            "rim_speed",
-            f"飞轮轮缘圆周速度 {rim.rim_speed:.1f} m/s 超过铸铁飞轮的许用值约 30 m/s：减小轮缘直径或改用钢制飞轮。",
-            f"the flywheel rim speed {rim.rim_speed:.1f} m/s exceeds about 30 m/s allowed for cast "
-            "iron: reduce the rim diameter or use a steel wheel."))
-    return DieFlywheel(p.flywheel_shaft, ratio, speed, cycle.driving_torque, cycle.energy,
-                       cycle.max_energy_swing, cycle.angle_at_min, cycle.angle_at_max,
-                       p.fluctuation, inertia, on_crank, rim, peak_shafts(drive), tuple(warnings))
+    fl = design_flywheel(spec, k.phase[:n], f.balancing_torque[:n], model.crank_omega, p.gravity)
+    return fl, peak_shafts(drive)
 
 
 # --------------------------------------------------------------------------- feed and cycle
@@ -610,8 +579,9 @@ def stages(params: DieCutterParams) -> list[Stage]:
               lambda r: amplification(r["press_model"], r["toggle"], r["press"], r["press_raw"],
                                       r["press_forces"], r["params"])),
         Stage("drive", "传动装置设计 / drive", _drive),
-        Stage("flywheel", "飞轮设计 / flywheel",
-              lambda r: flywheel(r["press"], r["press_forces"], r["drive"], r["params"])),
+        Stage(("flywheel", "peak_shafts"), "飞轮设计 / flywheel",
+              lambda r: flywheel(r["press_model"], r["press"], r["press_forces"], r["drive"],
+                                 r["params"])),
         cam_stage(),
         Stage("feed", "不完全齿轮送纸 / incomplete-gear feed",
               lambda r: feed(r["amplification"], r["params"])),

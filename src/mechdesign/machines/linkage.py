@@ -20,10 +20,10 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from ..core import flywheel as fw
 from ..core.kinetostatics import Body, PointLoad, power_residual, solve_forces
 from ..core.mechanism import RPR, RRP, RRR, Crank, LinkPoint, Mechanism, Motion
 from ..pipeline import Stage
+from ..stages.flywheel import Flywheel, FlywheelSpec, design_flywheel
 from .findings import Finding
 from .positions import Positions, textbook_positions
 
@@ -59,15 +59,6 @@ class Resistance:
 
 
 @dataclass(frozen=True)
-class FlywheelSpec:
-    """Allowed speed fluctuation [δ] and the flywheel shaft's speed as a multiple of the
-    crank's."""
-
-    fluctuation: float
-    speed_ratio: float = 1.0
-
-
-@dataclass(frozen=True)
 class LinkageModel:
     """Everything the linkage stages need, SI units. ``crank_omega`` is signed, CCW +."""
 
@@ -80,6 +71,8 @@ class LinkageModel:
     position_step: float = np.pi / 6
     gravity: float = 9.81
     flywheel: FlywheelSpec | None = None
+    special_crank_angles: tuple = ()            # crank angles [rad, CCW from +x] added to
+    #                                             the textbook positions (primed labels)
     pressure_angle_limit: float | None = None   # [rad], checked over the working stroke
     transmission_angle_min: float | None = None  # [rad], checked over the whole cycle
     names: dict = field(default_factory=dict)    # link id → (name_zh, name_en), optional
@@ -150,19 +143,7 @@ class LinkageForces:
     peak_torque: float          # max |M_b| [N·m]
 
 
-@dataclass(frozen=True)
-class LinkageFlywheel:
-    """Stage 飞轮设计 (the flywheel evens out M_b; the mechanism's own inertia ignored)."""
-
-    speed_ratio: float
-    shaft_speed_rpm: float
-    driving_torque: float       # constant M_d on the crank [N·m]
-    energy: np.ndarray          # ΔE over the grid [J]
-    max_energy_swing: float     # ΔW_max [J]
-    phase_at_min: float
-    phase_at_max: float
-    fluctuation: float
-    inertia: float              # J_F on the flywheel shaft [kg·m²]
+LinkageFlywheel = Flywheel   # the one flywheel result (mechdesign.stages.flywheel)
 
 
 @dataclass(frozen=True)
@@ -287,7 +268,8 @@ def motion(model: LinkageModel) -> tuple[LinkageMotion, Motion]:
     start, end, s0, s1, ref = _strokes(model)
     sense = float(np.sign(model.crank_omega))
     span = (sense * (end - start)) % TWO_PI
-    pos = textbook_positions(model.position_step, span, [])
+    specials = [(sense * (a - start)) % TWO_PI for a in model.special_crank_angles]
+    pos = textbook_positions(model.position_step, span, specials)
     n = model.grid_points
     grid = np.arange(n) * (TWO_PI / n)
     phase = np.concatenate([grid, pos.phase])
@@ -319,9 +301,12 @@ def resistance_loads(model: LinkageModel, k: LinkageMotion, m: Motion) -> list[P
     for r in model.resistances:
         u = np.exp(1j * r.direction)
         along = (np.conj(u) * m.points[r.point].vel).real
-        # At rest (an extreme position) the force opposes the motion about to start,
-        # whose direction is the acceleration's.
+        # At rest the force opposes the motion of the stroke it belongs to (one-sided
+        # limit): the motion about to start (the acceleration's sign) — except at the end
+        # of the working stroke, where it is the working motion just ending (the opposite).
         ahead = (np.conj(u) * m.points[r.point].acc).real
+        ending = np.abs(k.phase - k.working_span) <= 1e-12
+        ahead = np.where(ending, -ahead, ahead)
         scale = np.max(np.abs(along[:k.grid_size])) or 1.0
         moving = np.where(np.abs(along) > 1e-12 * scale, np.sign(along), np.sign(ahead))
         magnitude = np.where(working, r.working, r.returning)
@@ -352,19 +337,13 @@ def forces(model: LinkageModel, k: LinkageMotion, m: Motion) -> LinkageForces:
         mean_power=mean * abs(model.crank_omega), peak_torque=float(np.max(np.abs(mb[:n]))))
 
 
-def flywheel(model: LinkageModel, k: LinkageMotion, f: LinkageForces) -> LinkageFlywheel | None:
-    spec = model.flywheel
-    if spec is None:
+def flywheel(model: LinkageModel, k: LinkageMotion, f: LinkageForces) -> Flywheel | None:
+    """The one flywheel stage on M_b over the grid, when the model asks for a flywheel."""
+    if model.flywheel is None:
         return None
     n = k.grid_size
-    cycle = fw.energy_cycle(k.phase[:n], f.balancing_torque[:n])
-    speed = abs(model.crank_omega) * 30.0 / np.pi * spec.speed_ratio
-    return LinkageFlywheel(
-        speed_ratio=spec.speed_ratio, shaft_speed_rpm=float(speed),
-        driving_torque=cycle.driving_torque, energy=cycle.energy,
-        max_energy_swing=cycle.max_energy_swing, phase_at_min=cycle.angle_at_min,
-        phase_at_max=cycle.angle_at_max, fluctuation=spec.fluctuation,
-        inertia=fw.flywheel_inertia(cycle.max_energy_swing, speed, spec.fluctuation))
+    return design_flywheel(model.flywheel, k.phase[:n], f.balancing_torque[:n],
+                           model.crank_omega, model.gravity)
 
 
 # ---------------------------------------------------------------- verification
@@ -550,7 +529,7 @@ def linkage_document(model: LinkageModel, k: LinkageMotion, f: LinkageForces,
         "mean_torque": f.mean_torque, "mean_power": f.mean_power, "peak_torque": f.peak_torque,
         "flywheel": None if fly is None else {
             "speed_ratio": fly.speed_ratio, "shaft_speed_rpm": fly.shaft_speed_rpm,
-            "driving_torque": fly.driving_torque, "max_energy_swing": fly.max_energy_swing,
+            "driving_torque": fly.mean_torque, "max_energy_swing": fly.max_energy_swing,
             "fluctuation": fly.fluctuation, "inertia": fly.inertia},
         "verification": {key: getattr(v, key) for key in (
             "closure_residual", "velocity_fd_error", "acceleration_fd_error",

@@ -1,8 +1,13 @@
-"""Shaper (牛头刨床): crank + RPR dyad (guide bar) + RRP dyad (ram), composed from shared stages.
+"""Shaper (牛头刨床): crank + RPR dyad (guide bar) + RRP dyad (ram) — a model on the one
+linkage engine (:mod:`mechdesign.machines.linkage`) and the one flywheel stage.
 
 Coordinates: O3 (guide-bar pivot) at the origin, O2 (crank pivot) at (0, L_O2O3) above
 it, the ram guide horizontal at y = L_O3M. Links: 2 crank O2A, 3 slider at A, 4 guide
 bar O3B, 5 rod BF, 6 ram, 7 frame (the course's numbering).
+
+This module only says what the shaper is: its synthesis, its points, groups, bodies and
+cutting force (:func:`model`), and the shaper's names for the engine's results (the ram's
+s, v, a; ω4, α4; the Coriolis acceleration of the slider on the bar) as views.
 """
 from __future__ import annotations
 
@@ -11,15 +16,16 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..brief.shaper import ShaperParams
-from ..core import flywheel as fw
-from ..core.kinetostatics import Body, PointLoad, power_residual, solve_forces
+from ..core.kinetostatics import Body
 from ..core.mechanism import RPR, RRP, AssemblyError, Crank, LinkPoint, Mechanism
 from ..core.synthesis import GuideBarDesign, guide_bar_quick_return
 from ..pipeline import Stage
+from ..stages.flywheel import FlywheelSpec, RimSpec, design_flywheel
+from . import linkage as lk
 from .cam import cam_document
 from .drive import drive_document
 from .gear import gear_document
-from .positions import Positions, textbook_positions
+from .positions import Positions
 
 FRAME = "7"
 
@@ -35,7 +41,7 @@ class Synthesis:
 
 @dataclass(frozen=True)
 class Kinematics:
-    """Stage 机构运动分析 on the grid and at the textbook positions.
+    """The shaper's view of the engine's motion (机构运动分析), grid then textbook positions.
 
     Arrays have one entry per crank phase; phase = crank angle from position 1 in the
     sense of rotation [rad]. Ram quantities are along the working-stroke direction.
@@ -57,11 +63,13 @@ class Kinematics:
     working_span: float         # crank angle of the working stroke [rad]
     stroke_direction: float     # +1 when the working stroke moves the ram towards +x
     grid_size: int
+    model: object = None        # the linkage model (not serialised)
+    linkage: object = None      # the engine's LinkageMotion this view reads
 
 
 @dataclass(frozen=True)
 class Forces:
-    """Stage 动态静力分析: loads and reactions (arrays as in :class:`Kinematics`)."""
+    """The shaper's view of the engine's forces (动态静力分析), arrays as in :class:`Kinematics`."""
 
     cutting_force: np.ndarray   # resistance on the ram along −working direction [N] (≥ 0)
     inertia_force4: np.ndarray  # |P_I4| = m4·|a_S4| [N]
@@ -71,24 +79,7 @@ class Forces:
     couples: dict               # prismatic-pair couples by name [N·m]
     balancing_torque: np.ndarray  # M_b in the sense of rotation [N·m]
     power_residual: np.ndarray  # Σ power of all loads incl. M_b [W]
-
-
-@dataclass(frozen=True)
-class Flywheel:
-    """Stage 飞轮设计."""
-
-    shaft: str                  # "pinion" (O1) or "crank" (O2)
-    ratio_to_crank: float       # i = shaft speed / crank speed
-    shaft_speed_rpm: float
-    resistance_torque: np.ndarray  # M_r on the flywheel shaft over the crank phase [N·m]
-    driving_torque: float       # constant M_d on the flywheel shaft [N·m]
-    energy: np.ndarray          # ΔE over the crank phase [J]
-    max_energy_swing: float     # ΔW_max [J]
-    phase_at_min: float         # [rad]
-    phase_at_max: float         # [rad]
-    inertia: float              # J_F [kg·m²]
-    rim: fw.RimFlywheel
-    mean_power: float           # mean power the drive delivers to the crank [W]
+    linkage: object = None      # the engine's LinkageForces this view reads
 
 
 def synthesize(p: ShaperParams) -> Synthesis:
@@ -121,124 +112,96 @@ def _extremes(d: GuideBarDesign) -> tuple[float, float]:
     return np.pi + half, 2.0 * np.pi - half
 
 
-def kinematics(syn: Synthesis, p: ShaperParams) -> tuple[Kinematics, Mechanism, object]:
+def model(syn: Synthesis, p: ShaperParams) -> lk.LinkageModel:
+    """The shaper as a linkage model: groups, bodies, the cutting force, the flywheel.
+
+    The working (slow) stroke starts at the extreme from which the crank needs 180° + θ to
+    reach the other in its sense of rotation; from the left extreme (bar leaning left) the
+    ram then moves towards +x. Position 1 starts it; the crank vertical (90°, 270°) gives
+    the special positions 4′ and 10′.
+    """
     d = syn.design
-    mech = build_mechanism(d, p)
     sense = np.sign(p.crank_omega)
     left, right = _extremes(d)
-    # Position 1 starts the working (slow) stroke: the extreme from which the crank
-    # needs 180° + θ to reach the other one in its sense of rotation.
-    span_from_left = (sense * (right - left)) % (2 * np.pi)
-    start, end = (left, right) if span_from_left > np.pi else (right, left)
-    working_span = (sense * (end - start)) % (2 * np.pi)
-    vertical = [np.pi / 2, 3 * np.pi / 2]
-    specials = [(sense * (a - start)) % (2 * np.pi) for a in vertical]
-    pos = textbook_positions(p.position_step, working_span, specials)
+    working = 1 if (sense * (right - left)) % (2 * np.pi) > np.pi else -1
+    idle = p.idle_travel_ratio * p.stroke
+    ratio = p.z2 / p.z1 if p.flywheel_shaft == "pinion" else 1.0
+    return lk.LinkageModel(
+        mechanism=build_mechanism(d, p), crank_omega=p.crank_omega,
+        output=lk.Output("point", "F", 0.0, working),
+        bodies=(Body("4", p.m4, "S4", p.J_S4), Body("6", p.m6, "S6", 0.0),
+                Body("2", p.G2 / p.gravity, "O2", 0.0)),
+        resistances=(lk.Resistance("6", "P", 0.0, p.cutting_force, 0.0,
+                                   (idle, p.stroke - idle)),),
+        grid_points=p.grid_points, position_step=p.position_step, gravity=p.gravity,
+        flywheel=FlywheelSpec(p.fluctuation, ratio, p.flywheel_shaft,
+                              RimSpec(p.rim_diameter, p.rim_height_to_width, p.specific_weight)),
+        special_crank_angles=(np.pi / 2, 3 * np.pi / 2))
 
-    grid = np.arange(p.grid_points) * (2 * np.pi / p.grid_points)
-    phase = np.concatenate([grid, pos.phase])
-    crank_angle = start + sense * phase
+
+def _assembly_hint(exc: AssemblyError, d: GuideBarDesign, p: ShaperParams) -> AssemblyError:
+    # The ram's rod must bridge half the sagitta of B's arc: L_BF ≥ L_O3B(1 − cos(ψ/2))/2.
+    need = (1.0 - np.cos(d.swing_angle / 2.0)) / 2.0
+    return exc.with_hint(
+        f"(Brief field: linkage.rod_ratio_BF_O3B = {p.rod_ratio:g} must be at least "
+        f"(1 − cos(ψ/2))/2 = {need:.6g}.)",
+        f"（任务书字段：linkage.rod_ratio_BF_O3B = {p.rod_ratio:g}，须不小于 "
+        f"(1 − cos(ψ/2))/2 = {need:.6g}。）")
+
+
+def motion(m: lk.LinkageModel, syn: Synthesis, p: ShaperParams):
+    """The engine's motion stage, an assembly failure naming the brief's field."""
     try:
-        motion = mech.solve(crank_angle)
+        return lk.motion(m)
     except AssemblyError as exc:
-        # The ram's rod must bridge half the sagitta of B's arc: L_BF ≥ L_O3B(1 − cos(ψ/2))/2.
-        need = (1.0 - np.cos(d.swing_angle / 2.0)) / 2.0
-        raise exc.with_hint(
-            f"(Brief field: linkage.rod_ratio_BF_O3B = {p.rod_ratio:g} must be at least "
-            f"(1 − cos(ψ/2))/2 = {need:.6g}.)",
-            f"（任务书字段：linkage.rod_ratio_BF_O3B = {p.rod_ratio:g}，须不小于 "
-            f"(1 − cos(ψ/2))/2 = {need:.6g}。）") from None
-    x_pos = motion.points["F"].pos.real[len(grid):]
-    x0 = x_pos[0]  # position 1
-    x_end = x_pos[int(np.argmin(np.abs(pos.phase - working_span)))]  # the other extreme
-    direction = float(np.sign(x_end - x0))
-    F = motion.points["F"]
-    slide = motion.slides["3"]
-    k = Kinematics(
-        positions=pos, phase=phase, crank_angle=crank_angle,
-        ram_s=direction * (F.pos.real - x0), ram_v=direction * F.vel.real,
-        ram_a=direction * F.acc.real,
-        omega4=motion.links["4"].omega, alpha4=motion.links["4"].alpha,
-        slide_v=slide.ds, coriolis=2.0 * motion.links["4"].omega * slide.ds,
-        omega5=motion.links["5"].omega, alpha5=motion.links["5"].alpha,
-        points={n: motion.points[n].pos for n in ("O2", "O3", "A", "B", "F", "S4", "S6")},
-        working_span=float(working_span), stroke_direction=direction, grid_size=len(grid))
-    return k, mech, motion
+        raise _assembly_hint(exc, syn.design, p) from None
+
+
+def kinematics_view(m: lk.LinkageModel, k: lk.LinkageMotion, raw) -> Kinematics:
+    """The shaper's names for the engine's motion: the ram (F), the guide bar (4) with the
+    slider's sliding velocity on it and its Coriolis acceleration, the rod (5)."""
+    slide = raw.slides["3"]
+    bar, rod = raw.links["4"], raw.links["5"]
+    return Kinematics(
+        positions=k.positions, phase=k.phase, crank_angle=k.crank_angle,
+        ram_s=k.s, ram_v=k.v, ram_a=k.a, omega4=bar.omega, alpha4=bar.alpha,
+        slide_v=slide.ds, coriolis=2.0 * bar.omega * slide.ds,
+        omega5=rod.omega, alpha5=rod.alpha,
+        points={n: raw.points[n].pos for n in ("O2", "O3", "A", "B", "F", "S4", "S6")},
+        working_span=k.working_span, stroke_direction=float(m.output.working),
+        grid_size=k.grid_size, model=m, linkage=k)
+
+
+def kinematics(syn: Synthesis, p: ShaperParams) -> tuple[Kinematics, Mechanism, object]:
+    """Model and motion in one call (for tests and benchmarks)."""
+    m = model(syn, p)
+    k, raw = motion(m, syn, p)
+    return kinematics_view(m, k, raw), m.mechanism, raw
+
+
+def forces_view(f: lk.LinkageForces) -> Forces:
+    zero = np.zeros_like(f.balancing_torque)  # a massless link has no entry in the inertia loads
+    return Forces(
+        cutting_force=np.abs(f.resistance["R1"]),
+        inertia_force4=np.abs(f.inertia_force.get("4", zero)),
+        inertia_couple4=f.inertia_couple.get("4", zero),
+        inertia_force6=f.inertia_force.get("6", zero).real,
+        reactions=f.reactions, couples=f.couples,
+        balancing_torque=f.balancing_torque, power_residual=f.power_residual, linkage=f)
 
 
 def cutting_force(k: Kinematics, p: ShaperParams) -> np.ndarray:
-    """Fc [N] while the ram is in the working stroke and inside its idle-travel limits."""
-    idle = p.idle_travel_ratio * p.stroke
-    tol = 1e-9
-    working = k.phase <= k.working_span + tol
-    inside = (k.ram_s >= idle - tol) & (k.ram_s <= p.stroke - idle + tol)
-    return np.where(working & inside, p.cutting_force, 0.0)
+    """Fc [N] (≥ 0) over the phase array, from the engine's resistance law."""
+    return np.abs(lk.forces(k.model, k.linkage, k.model.mechanism.solve(k.crank_angle))
+                  .resistance["R1"])
 
 
-def kinetostatics(k: Kinematics, mech: Mechanism, motion, p: ShaperParams) -> Forces:
-    bodies = [Body("4", p.m4, "S4", p.J_S4), Body("6", p.m6, "S6", 0.0),
-              Body("2", p.G2 / p.gravity, "O2", 0.0)]
-    fc = cutting_force(k, p)
-    loads = [PointLoad("6", "P", -k.stroke_direction * fc + 0j)]
-    fa = solve_forces(mech, motion, bodies, loads, p.gravity)
-    sense = np.sign(p.crank_omega)
-    mb = sense * fa.driving_torque
-    residual = power_residual(mech, motion, bodies, loads, fa.driving_torque, p.gravity)
-    zero = np.zeros_like(mb)  # a massless link has no entry in the inertia loads
-    return Forces(
-        cutting_force=fc,
-        inertia_force4=np.abs(fa.inertia_force.get("4", zero)),
-        inertia_couple4=fa.inertia_couple.get("4", zero),
-        inertia_force6=fa.inertia_force.get("6", zero).real,
-        reactions={n: r.force for n, r in fa.reactions.items()},
-        couples={n: r.couple for n, r in fa.reactions.items() if r.couple is not None},
-        balancing_torque=mb, power_residual=residual)
+def kinetostatics(k: Kinematics, mech: Mechanism, raw, p: ShaperParams) -> Forces:
+    return forces_view(lk.forces(k.model, k.linkage, raw))
 
 
-def flywheel(k: Kinematics, f: Forces, p: ShaperParams) -> Flywheel:
-    n = k.grid_size
-    phase, mb = k.phase[:n], f.balancing_torque[:n]
-    cycle = fw.energy_cycle(phase, mb)
-    ratio = p.z2 / p.z1 if p.flywheel_shaft == "pinion" else 1.0
-    speed = p.crank_speed_rpm * ratio
-    inertia = fw.flywheel_inertia(cycle.max_energy_swing, speed, p.fluctuation)
-    rim = fw.rim_dimensions(inertia, p.rim_diameter, p.rim_height_to_width,
-                            p.specific_weight, speed, p.gravity)
-    return Flywheel(
-        shaft=p.flywheel_shaft, ratio_to_crank=ratio, shaft_speed_rpm=speed,
-        resistance_torque=mb / ratio, driving_torque=cycle.driving_torque / ratio,
-        energy=cycle.energy, max_energy_swing=cycle.max_energy_swing,
-        phase_at_min=cycle.angle_at_min, phase_at_max=cycle.angle_at_max,
-        inertia=inertia, rim=rim, mean_power=cycle.driving_torque * abs(p.crank_omega))
-
-
-def simulated_stroke_and_K(mech: Mechanism, k: Kinematics) -> tuple[float, float]:
-    """Stroke [m] and time ratio K found by simulating the linkage alone.
-
-    The extremes of the ram are the zeros of its velocity: Newton's method on
-    dx_F/dφ = v_F/ω with the analytic acceleration as its derivative (d²x_F/dφ² = a_F/ω²),
-    both extremes at once, started at the grid's extremes and each step solving the
-    linkage afresh at the new angles — independent of the synthesis formulas.
-    """
-    n = k.grid_size
-    phase, s = k.phase[:n], k.ram_s[:n]
-    start, sense = k.crank_angle[0], np.sign(k.crank_angle[1] - k.crank_angle[0])
-    omega = next(g.omega for g in mech.groups if getattr(g, "kind", "") == "crank")
-    h = phase[1] - phase[0]
-    ph0 = phase[[int(np.argmin(s)), int(np.argmax(s))]]
-    ph = ph0.copy()
-    for _ in range(20):
-        f = mech.solve(start + sense * ph).points["F"]
-        slope = f.vel.real * sense / omega           # dx_F/dφ (phase runs with the crank)
-        curvature = f.acc.real / omega**2            # d²x_F/dφ² (ω constant)
-        step = np.clip(slope / curvature, -h, h)     # never leave the grid's bracket
-        ph = np.clip(ph - step, ph0 - h, ph0 + h)
-        if np.max(np.abs(step)) < 1e-14:
-            break
-    x = mech.solve(start + sense * ph).points["F"].pos.real
-    s_min, s_max = k.stroke_direction * x
-    work = (ph[1] - ph[0]) % (2 * np.pi)
-    return s_max - s_min, work / (2 * np.pi - work)
+def flywheel(k: Kinematics, f: Forces, p: ShaperParams):
+    return lk.flywheel(k.model, k.linkage, f.linkage)
 
 
 @dataclass(frozen=True)
@@ -246,7 +209,7 @@ class Verification:
     """Residuals of the run's self-checks (shown at the end of the report)."""
 
     closure_residual: float     # max |constraint violation| over the grid [m]
-    velocity_fd_error: float    # max |v − dx/dt (central differences)| / max|v|
+    velocity_fd_error: float    # max |v − dx/dt (central differences)| / max|v|, every point and link
     acceleration_fd_error: float  # max |a − dv/dt| / max|a|
     stroke_error: float         # simulated stroke − H [m]
     time_ratio_simulated: float  # K from the simulated extreme positions
@@ -254,49 +217,51 @@ class Verification:
     fd_step: float              # crank-angle step of the differences [rad]
 
 
-def verify(syn: Synthesis, k: Kinematics, mech: Mechanism, motion, f: Forces,
+def verification_view(v: lk.LinkageVerification, p: ShaperParams) -> Verification:
+    return Verification(v.closure_residual, v.velocity_fd_error, v.acceleration_fd_error,
+                        v.stroke - p.stroke, v.time_ratio, v.power_balance_residual, v.fd_step)
+
+
+def verify(syn: Synthesis, k: Kinematics, mech: Mechanism, raw, f: Forces,
            p: ShaperParams) -> Verification:
-    d = syn.design
-    n = k.grid_size
-    pts = {name: motion.points[name].pos[:n] for name in ("A", "B", "F", "O2", "O3")}
-    u4 = np.exp(1j * motion.links["4"].angle[:n])
-    closure = max(
-        np.max(np.abs(np.abs(pts["A"] - pts["O2"]) - d.crank)),
-        np.max(np.abs(((np.conj(u4) * (pts["A"] - pts["O3"])).imag))),  # A on the bar line
-        np.max(np.abs(np.abs(pts["F"] - pts["B"]) - d.rod)),
-        np.max(np.abs(pts["F"].imag - d.guide_height)))
-    dt = (2 * np.pi / n) / abs(p.crank_omega)
-    s, v, a = k.ram_s[:n], k.ram_v[:n], k.ram_a[:n]
-    # Central differences on the periodic grid: error O(h²).
-    v_fd = (np.roll(s, -1) - np.roll(s, 1)) / (2 * dt)
-    a_fd = (np.roll(v, -1) - np.roll(v, 1)) / (2 * dt)
-    w4 = k.omega4[:n]
-    th4 = motion.links["4"].angle[:n]
-    w4_fd = np.angle(np.exp(1j * (np.roll(th4, -1) - np.roll(th4, 1)))) / (2 * dt)
-    vel_err = max(np.max(np.abs(v - v_fd)) / np.max(np.abs(v)),
-                  np.max(np.abs(w4 - w4_fd)) / np.max(np.abs(w4)))
-    acc_err = np.max(np.abs(a - a_fd)) / np.max(np.abs(a))
-    stroke, k_sim = simulated_stroke_and_K(mech, k)
-    power = f.power_residual[:n]
-    scale = np.max(np.abs(f.balancing_torque[:n] * p.crank_omega))
-    return Verification(float(closure), float(vel_err), float(acc_err), stroke - p.stroke,
-                        float(k_sim), float(np.max(np.abs(power)) / scale), float(2 * np.pi / n))
+    return verification_view(lk.verify(k.model, k.linkage, raw, f.linkage), p)
 
 
+def _motion_stage(r: dict):
+    m, syn, p = r["model"], r["synthesis"], r["params"]
+    k, raw = motion(m, syn, p)
+    return k, raw, kinematics_view(m, k, raw), m.mechanism, raw
 
 
+def _forces_stage(r: dict):
+    f = lk.forces(r["model"], r["linkage"], r["linkage_raw"])
+    return f, forces_view(f)
+
+
+def _flywheel_stage(r: dict):
+    fl = lk.flywheel(r["model"], r["linkage"], r["linkage_forces"])
+    return fl, fl
+
+
+def _verify_stage(r: dict):
+    v = lk.verify(r["model"], r["linkage"], r["linkage_raw"], r["linkage_forces"])
+    return v, verification_view(v, r["params"])
+
+
+def _synthesis_stage(r: dict):
+    syn = synthesize(r["params"])
+    return syn, model(syn, r["params"])
+
+
+# The engine's results under the shared keys (model, linkage, linkage_raw, linkage_forces,
+# linkage_flywheel, linkage_verification) and the shaper's views of them.
 STAGES = [
-    Stage("synthesis", "导杆机构设计 / linkage synthesis",
-          lambda r: synthesize(r["params"])),
-    Stage(("kinematics", "mechanism", "motion"), "机构运动分析 / kinematics",
-          lambda r: kinematics(r["synthesis"], r["params"])),
-    Stage("forces", "动态静力分析 / kinetostatics",
-          lambda r: kinetostatics(r["kinematics"], r["mechanism"], r["motion"], r["params"])),
-    Stage("flywheel", "飞轮设计 / flywheel",
-          lambda r: flywheel(r["kinematics"], r["forces"], r["params"])),
-    Stage("verification", "校核 / verification",
-          lambda r: verify(r["synthesis"], r["kinematics"], r["mechanism"], r["motion"],
-                           r["forces"], r["params"])),
+    Stage(("synthesis", "model"), "导杆机构设计 / linkage synthesis", _synthesis_stage),
+    Stage(("linkage", "linkage_raw", "kinematics", "mechanism", "motion"),
+          "机构运动分析 / kinematics", _motion_stage),
+    Stage(("linkage_forces", "forces"), "动态静力分析 / kinetostatics", _forces_stage),
+    Stage(("linkage_flywheel", "flywheel"), "飞轮设计 / flywheel", _flywheel_stage),
+    Stage(("linkage_verification", "verification"), "校核 / verification", _verify_stage),
 ]
 
 
@@ -379,7 +344,7 @@ def results_document(r: dict) -> dict:
         "working_stroke_crank_angle": k.working_span,
         "flywheel": {
             "shaft": fl.shaft, "ratio_to_crank": fl.ratio_to_crank,
-            "shaft_speed_rpm": fl.shaft_speed_rpm, "driving_torque": fl.driving_torque,
+            "shaft_speed_rpm": fl.shaft_speed_rpm, "driving_torque": fl.shaft_torque,
             "max_energy_swing": fl.max_energy_swing, "inertia": fl.inertia,
             "phase_at_min": fl.phase_at_min, "phase_at_max": fl.phase_at_max,
             "mean_power": fl.mean_power, "rim": fl.rim,

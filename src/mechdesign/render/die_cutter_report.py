@@ -347,7 +347,7 @@ def _flywheel(r, p, b, zh: bool) -> dict:
     fl = r["flywheel"]
     shaft = _shaft(fl.shaft, len(b.drive.stages), zh)
     rows = [[_shaft(j, len(b.drive.stages), zh), f(n_, 1), f(tm, 1), f(tp, 1), f(ds * MM, 0),
-             f(dp * MM, 0)] for j, n_, tm, tp, ds, dp in fl.peak_shafts]
+             f(dp * MM, 0)] for j, n_, tm, tp, ds, dp in r["peak_shafts"]]
     eq = {
         "md": (rf"M_d = \frac{{1}}{{2\pi}}\oint M_b\,d\varphi = {f(fl.mean_torque, 2)}\ \text{{N·m}}"
                rf"\ (\text{{{'分配轴' if zh else 'distribution shaft'}}})"),
@@ -473,7 +473,7 @@ def _findings(r, lang: str) -> list[str]:
                 out.append(text)
     drive = r["drive"].warnings
     if drive:
-        peak = r["flywheel"].peak_shafts
+        peak = r["peak_shafts"]
         if lang == "zh":
             text = f"传动装置设计中有 {len(drive)} 项校核不合格（见传动装置设计一章的“设计中的问题”）"
             if peak:

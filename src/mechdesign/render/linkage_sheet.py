@@ -335,7 +335,7 @@ def _curves(s: Sheet, r: dict, lab: dict, box, scales: dict) -> None:
               ylabel=yl, xticks=ticks, shade=[(0, span)], marks=marks)
     # M_b with the mean driving torque; ΔE with ΔW_max.
     y_mb = top - 3 * (h + 16.0) - 8.0
-    md = fl.driving_torque * fl.ratio_to_crank
+    md = fl.mean_torque
     mb = frc.balancing_torque
     chart(s, (left, y_mb - h, bx1, y_mb), ph, [Series(closed(mb))], xlabel=lab["phase"],
           ylabel=lab["mb"], title=lab["mbt"], xticks=ticks, shade=[(0, span)],

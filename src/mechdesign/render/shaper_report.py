@@ -40,7 +40,7 @@ def make_figures(r: dict, fig_dir: Path, lang: str) -> dict[str, str]:
                         [lab["w4"], lab["a4"]], span,
                         (labels, pos_ph, [k.omega4[n:], k.alpha4[n:]]), size=(7.0, 4.4))
     fig.balancing_torque(out("balancing_torque"), lang, ph, frc.balancing_torque[:n],
-                         fl.driving_torque * fl.ratio_to_crank, frc.cutting_force[:n], span,
+                         fl.mean_torque, frc.cutting_force[:n], span,
                          (labels, pos_ph, frc.balancing_torque[n:]))
     fig.energy(out("energy"), lang, ph, fl.energy, fl.phase_at_min * DEG,
                fl.phase_at_max * DEG, fl.max_energy_swing, span)
@@ -174,7 +174,7 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
     fly_eq = {
         "mr": (rf"M_r = \frac{{M_b}}{{i}}, \quad i = \frac{{z_2}}{{z_1}} = \frac{{{p.z2}}}{{{p.z1}}}"
                rf" = {f(i_ratio, 4)}") if fl.shaft == "pinion" else r"M_r = M_b",
-        "md": (rf"M_d = \frac{{1}}{{2\pi}}\int_0^{{2\pi}} M_r\,d\varphi = {f(fl.driving_torque, 3)}"
+        "md": (rf"M_d = \frac{{1}}{{2\pi}}\int_0^{{2\pi}} M_r\,d\varphi = {f(fl.shaft_torque, 3)}"
                rf"\ \text{{N·m}}"),
         "jf": (rf"J_F = \frac{{900\,\Delta W_{{max}}}}{{\pi^2 n^2 [\delta]}} = \frac{{900 \times "
                rf"{f(fl.max_energy_swing, 2)}}}{{\pi^2 \times {f(fl.shaft_speed_rpm, 2)}^2 \times "
@@ -201,7 +201,7 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
     if r.get("drive") is not None:
         from .drive_report import drive_context
 
-        pw = (rf"P_w = \bar M_b\,\omega_2 = {f(fl.driving_torque * i_ratio, 3)} \times "
+        pw = (rf"P_w = \bar M_b\,\omega_2 = {f(fl.mean_torque, 3)} \times "
               rf"{f(abs(p.crank_omega), 4)} = {f(fl.mean_power, 2)}\ \text{{W}}")
         drive = drive_context(r["drive"], lang, figures, pw)
     return {
@@ -230,12 +230,12 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
         "max_a": f(np.max(np.abs(k.ram_a[:n])), 3),
         "mb_max": f(np.max(frc.balancing_torque[:n]), 2),
         "mb_min": f(np.min(frc.balancing_torque[:n]), 2),
-        "mb_mean": f(fl.driving_torque * i_ratio, 2),
+        "mb_mean": f(fl.mean_torque, 2),
         "power": f(fl.mean_power, 1),
         "fly": {
             "shaft_zh": "小齿轮 z1 所在的 O1 轴" if fl.shaft == "pinion" else "曲柄轴 O2",
             "shaft_en": "the pinion shaft O1 (z1)" if fl.shaft == "pinion" else "the crank shaft O2",
-            "n": f(fl.shaft_speed_rpm, 2), "md": f(fl.driving_torque, 3),
+            "n": f(fl.shaft_speed_rpm, 2), "md": f(fl.shaft_torque, 3),
             "dw": f(fl.max_energy_swing, 2), "jf": f(fl.inertia, 3),
             "at_min": f(fl.phase_at_min * DEG, 1), "at_max": f(fl.phase_at_max * DEG, 1),
             "D": f(fl.rim.diameter * mm, 0), "b": f(fl.rim.width * mm, 1),

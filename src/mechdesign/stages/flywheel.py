@@ -1,0 +1,105 @@
+"""The one flywheel stage (飞轮设计) of every machine that has a flywheel.
+
+From the balancing torque M_b on the crank over one steady-state revolution: the energy
+cycle (ΔE, ΔW_max, where they occur), the flywheel inertia on the chosen shaft
+J_F = 900·ΔW_max/(π²·n²·[δ]) (孙桓 §7, mechanism inertia neglected), the same flywheel
+referred to the crank, and — when the machine sizes a cast rim — the rim (m = 4J_F/D²,
+b, H = k·b) with its checks: the rim speed against cast iron's ~30 m/s and the rim's
+proportions (its radial height must leave a hole: H < D).
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..core import flywheel as fw
+from ..machines.findings import Finding
+
+CAST_IRON_RIM_SPEED = 30.0   # [m/s] usual limit of a cast-iron rim's peripheral speed
+
+
+@dataclass(frozen=True)
+class RimSpec:
+    """Cast rim to size: mean diameter D [m], H/b, material's specific weight γ [N/m³]."""
+
+    diameter: float
+    height_to_width: float
+    specific_weight: float
+
+
+@dataclass(frozen=True)
+class FlywheelSpec:
+    """Allowed speed fluctuation [δ]; the flywheel shaft's speed as a multiple of the
+    crank's; the shaft's name (as the machine calls it); the rim to size, if any."""
+
+    fluctuation: float
+    speed_ratio: float = 1.0
+    shaft: object = "crank"
+    rim: RimSpec | None = None
+
+
+@dataclass(frozen=True)
+class Flywheel:
+    """Stage 飞轮设计 (the flywheel evens out M_b; the mechanism's own inertia neglected)."""
+
+    shaft: object               # the machine's name for the flywheel shaft
+    speed_ratio: float          # flywheel shaft speed / crank speed
+    shaft_speed_rpm: float      # [rpm]
+    mean_torque: float          # M_d on the crank = mean M_b [N·m]
+    shaft_torque: float         # the same on the flywheel shaft, M_d / i [N·m]
+    mean_power: float           # mean power delivered to the crank [W]
+    energy: np.ndarray          # ΔE over the crank phase grid [J]
+    max_energy_swing: float     # ΔW_max [J]
+    phase_at_min: float         # [rad]
+    phase_at_max: float         # [rad]
+    fluctuation: float          # [δ]
+    inertia: float              # J_F on the flywheel shaft [kg·m²]
+    inertia_on_crank: float     # the same flywheel's duty on the crank [kg·m²]
+    rim: fw.RimFlywheel | None  # sized rim, when the machine asks for one
+    warnings: tuple = ()        # Finding: rim speed, rim proportions
+
+    @property
+    def ratio_to_crank(self) -> float:
+        return self.speed_ratio
+
+
+def design_flywheel(spec: FlywheelSpec, phase: np.ndarray, balancing_torque: np.ndarray,
+                    crank_omega: float, gravity: float = 9.81) -> Flywheel:
+    """The flywheel for M_b [N·m] sampled on the uniform crank ``phase`` grid [rad]."""
+    cycle = fw.energy_cycle(phase, balancing_torque)
+    crank_rpm = abs(crank_omega) * 30.0 / np.pi
+    speed = crank_rpm * spec.speed_ratio
+    inertia = fw.flywheel_inertia(cycle.max_energy_swing, speed, spec.fluctuation)
+    on_crank = fw.flywheel_inertia(cycle.max_energy_swing, crank_rpm, spec.fluctuation)
+    rim, warnings = None, []
+    if spec.rim is not None:
+        rim = fw.rim_dimensions(inertia, spec.rim.diameter, spec.rim.height_to_width,
+                                spec.rim.specific_weight, speed, gravity)
+        warnings += rim_findings(rim)
+    return Flywheel(
+        shaft=spec.shaft, speed_ratio=float(spec.speed_ratio), shaft_speed_rpm=float(speed),
+        mean_torque=cycle.driving_torque, shaft_torque=cycle.driving_torque / spec.speed_ratio,
+        mean_power=cycle.driving_torque * abs(crank_omega), energy=cycle.energy,
+        max_energy_swing=cycle.max_energy_swing, phase_at_min=cycle.angle_at_min,
+        phase_at_max=cycle.angle_at_max, fluctuation=spec.fluctuation, inertia=inertia,
+        inertia_on_crank=on_crank, rim=rim, warnings=tuple(warnings))
+
+
+def rim_findings(rim: fw.RimFlywheel) -> list[Finding]:
+    out = []
+    if rim.rim_speed > CAST_IRON_RIM_SPEED:
+        out.append(Finding(
+            "rim_speed",
+            f"飞轮轮缘圆周速度 {rim.rim_speed:.1f} m/s 超过铸铁飞轮的许用值约 30 m/s：减小轮缘直径或改用钢制飞轮。",
+            f"the flywheel rim speed {rim.rim_speed:.1f} m/s exceeds about 30 m/s allowed for cast "
+            "iron: reduce the rim diameter or use a steel wheel."))
+    if rim.height >= rim.diameter:
+        out.append(Finding(
+            "rim_proportion",
+            f"飞轮轮缘高度 H = {rim.height * 1e3:.1f} mm 不小于平均直径 D = {rim.diameter * 1e3:.1f} mm，"
+            "轮缘无法成形：增大轮缘平均直径 D，或把飞轮装在转速更高的轴上。",
+            f"the flywheel rim height H = {rim.height * 1e3:.1f} mm is not smaller than its mean "
+            f"diameter D = {rim.diameter * 1e3:.1f} mm, so the rim cannot be made: increase the "
+            "rim's mean diameter D or put the flywheel on a faster shaft."))
+    return out
