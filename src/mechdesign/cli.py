@@ -213,12 +213,17 @@ def batch(
     raise typer.Exit(exit_code(results))
 
 
-#: The example brief each machine's starter (`mechdesign new`) is copied from.
-EXAMPLES = {
-    "shaper": "shaper.yaml", "furnace_pusher": "furnace_pusher.yaml", "lockbeam": "lockbeam.yaml",
-    "die_cutter": "die_cutter.yaml", "crank_rocker": "crank_rocker.yaml",
-    "linkage": "linkage_sixbar.yaml", "cam": "cam_7_3.yaml", "eccentric_cam": "cam_7_1.yaml",
-    "drive": "furnace_drive.yaml"}
+class _Examples(dict):
+    """Machine → the example brief its starter (`mechdesign new`) is copied from."""
+
+    def __init__(self):
+        from .registry import entry, names
+
+        super().__init__({n: entry(n).example for n in names()})
+
+
+#: The example brief each machine's starter (`mechdesign new`) is copied from (registry).
+EXAMPLES = _Examples()
 
 
 @app.command()

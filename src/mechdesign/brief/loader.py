@@ -32,29 +32,27 @@ from .groups import GROUPS_KEY, GroupError, GroupTable, apply_group, choose, par
 
 
 class _Models(Mapping):
-    """Machine name → brief model, each model's module imported when first asked for:
-    building the pydantic models of every machine costs a run that needs one of them
-    about 0.1 s."""
-
-    _where = {
-        "shaper": ("shaper", "ShaperBrief"), "furnace_pusher": ("furnace", "FurnaceBrief"),
-        "lockbeam": ("lockbeam", "LockbeamBrief"), "die_cutter": ("die_cutter", "DieCutterBrief"),
-        "crank_rocker": ("crank_rocker", "CrankRockerBrief"),
-        "linkage": ("linkage", "LinkageBrief"), "cam": ("cam", "CamBrief"),
-        "eccentric_cam": ("cam", "EccentricCamBrief"), "drive": ("drive", "DriveBrief")}
+    """Machine name → brief model, from the registry (:mod:`mechdesign.registry`), each
+    model's module imported when first asked for: building the pydantic models of every
+    machine costs a run that needs one of them about 0.1 s."""
 
     def __getitem__(self, machine: str) -> type[BaseModel]:
-        module, name = self._where[machine]
-        return getattr(importlib.import_module(f"{__package__}.{module}"), name)
+        from ..registry import entry, resolve
+
+        return resolve(entry(machine).brief)
 
     def __iter__(self):
-        return iter(self._where)
+        from ..registry import names
+
+        return iter(names())
 
     def __len__(self) -> int:
-        return len(self._where)
+        from ..registry import names
+
+        return len(names())
 
 
-#: Machine name → brief model. Later machines register in ``_Models._where``.
+#: Machine name → brief model (machines register in :mod:`mechdesign.registry`).
 BRIEF_MODELS: Mapping[str, type[BaseModel]] = _Models()
 
 

@@ -21,81 +21,24 @@ class Machine:
     report_module: str
 
 
-def _shaper() -> Machine:
-    from ..brief.shaper import to_si
-    from . import shaper
+def _from_registry(name: str) -> Machine:
+    from ..registry import entry, resolve
 
-    return Machine("shaper", to_si, shaper.stages, shaper.results_document,
-                   "mechdesign.render.shaper_report")
-
-
-def _cam() -> Machine:
-    from ..brief.cam import cam_brief_to_si
-    from . import cam
-
-    return Machine("cam", cam_brief_to_si, cam.CAM_STAGES, cam.cam_results_document,
-                   "mechdesign.render.cam_report")
+    e = entry(name)
+    stages = resolve(e.stages)
+    return Machine(e.name, resolve(e.to_params), stages, resolve(e.document), e.report)
 
 
-def _eccentric_cam() -> Machine:
-    from ..brief.cam import eccentric_to_si
-    from . import cam
+class _Machines(dict):
+    """Machine name → factory of its :class:`Machine`, from :mod:`mechdesign.registry`."""
 
-    return Machine("eccentric_cam", eccentric_to_si, cam.DISC_STAGES, cam.disc_results_document,
-                   "mechdesign.render.disc_report")
+    def __init__(self):
+        from ..registry import names
 
-
-def _drive() -> Machine:
-    from ..brief.drive import drive_brief_to_si
-    from . import drive
-
-    return Machine("drive", drive_brief_to_si, drive.DRIVE_STAGES, drive.drive_results_document,
-                   "mechdesign.render.drive_report")
+        super().__init__({n: (lambda n=n: _from_registry(n)) for n in names()})
 
 
-def _linkage() -> Machine:
-    from . import linkage
-
-    return Machine("linkage", linkage.linkage_params, linkage.STAGES, linkage.results_document,
-                   "mechdesign.render.linkage_report")
-
-
-def _crank_rocker() -> Machine:
-    from ..brief.crank_rocker import crank_rocker_to_si
-    from . import crank_rocker
-
-    return Machine("crank_rocker", crank_rocker_to_si, crank_rocker.stages,
-                   crank_rocker.results_document, "mechdesign.render.crank_rocker_report")
-
-
-def _furnace_pusher() -> Machine:
-    from ..brief.furnace import furnace_to_si
-    from . import furnace
-
-    return Machine("furnace_pusher", furnace_to_si, furnace.stages, furnace.results_document,
-                   "mechdesign.render.furnace_report")
-
-
-def _die_cutter() -> Machine:
-    from ..brief.die_cutter import die_cutter_to_si
-    from . import die_cutter
-
-    return Machine("die_cutter", die_cutter_to_si, die_cutter.stages, die_cutter.results_document,
-                   "mechdesign.render.die_cutter_report")
-
-
-def _lockbeam() -> Machine:
-    from ..brief.lockbeam import lockbeam_to_si
-    from . import lockbeam
-
-    return Machine("lockbeam", lockbeam_to_si, lockbeam.stages, lockbeam.results_document,
-                   "mechdesign.render.lockbeam_report")
-
-
-MACHINES: dict[str, Callable[[], Machine]] = {
-    "shaper": _shaper, "furnace_pusher": _furnace_pusher, "lockbeam": _lockbeam,
-    "die_cutter": _die_cutter, "crank_rocker": _crank_rocker, "linkage": _linkage,
-    "cam": _cam, "eccentric_cam": _eccentric_cam, "drive": _drive}
+MACHINES: dict[str, Callable[[], Machine]] = _Machines()
 
 
 def stages_for(machine: Machine, params) -> list[Stage]:

@@ -267,24 +267,29 @@ STAGES = [
 
 def _drive(r: dict):
     """The drive delivers the crank's mean power at the crank speed. The flywheel evens out
-    the torque upstream of its shaft only: the stages after it carry the peak of M_b."""
+    the torque upstream of its shaft only: the stages after it carry the peak of M_b.
+    (Any guide-bar machine whose gear pair z1/z2 is the drive's last stage.)"""
+    from dataclasses import replace
+
     from .drive import design_drive
 
-    p, f, fl = r["params"], r["forces"], r["flywheel"]
-    n = r["kinematics"].grid_size
+    p, f, fl = r["params"], r["linkage_forces"], r["linkage_flywheel"]
+    n = r["linkage"].grid_size
     mb = f.balancing_torque[:n]
     mean = float(np.mean(mb))
     peak = float(np.max(np.abs(mb)) / mean) if mean > 0 else float("inf")  # inf: no load
     shafts = len(p.drive.stages)          # the crank shaft's index
     flywheel_shaft = shafts - 1 if p.flywheel_shaft == "pinion" else shafts
-    from dataclasses import replace
-
     result = design_drive(p.drive, fl.mean_power, p.crank_speed_rpm, "mechanism",
                           peak, flywheel_shaft if flywheel_shaft < shafts else None)
     # The last stage is gear_pair, whose undercut the gear stage reports with its own fields.
     last = f"drive.stages[{shafts - 1}]"
     return replace(result, warnings=tuple(w for w in result.warnings
                                           if not (w.code == "undercut" and last in w.en)))
+
+
+def drive_stage() -> Stage:
+    return Stage("drive", "传动装置设计 / drive", _drive)
 
 
 def stages(params: ShaperParams) -> list[Stage]:
@@ -295,7 +300,7 @@ def stages(params: ShaperParams) -> list[Stage]:
 
         out.append(gear_stage())
     if params.drive is not None:
-        out.append(Stage("drive", "传动装置设计 / drive", _drive))
+        out.append(drive_stage())
     if params.cam is not None:
         from .cam import cam_stage
 

@@ -323,7 +323,19 @@ def linkage_context(model, k, f_, fly, v, figures: dict, lang: str,
             "eq": (rf"J_F = \frac{{900\,\Delta W_{{max}}}}{{\pi^2 n^2 [\delta]}} = \frac{{900 \times "
                    rf"{f(fly.max_energy_swing, 3)}}}{{\pi^2 \times {f(fly.shaft_speed_rpm, 2)}^2 \times "
                    rf"{f(fly.fluctuation, 4)}}} = {f(fly.inertia, 4)}\ \text{{kg·m}}^2"),
+            "rim": None,
         }
+        if fly.rim is not None:
+            rim, spec = fly.rim, model.flywheel.rim
+            ctx["fly"]["rim"] = {
+                "D": f(rim.diameter * 1e3, 0), "b": f(rim.width * 1e3, 1),
+                "Hr": f(rim.height * 1e3, 1), "m": f(rim.rim_mass, 2), "speed": f(rim.rim_speed, 2),
+                "hb": f(spec.height_to_width, 2),
+                "mass": (rf"m = \frac{{4 J_F}}{{D^2}} = \frac{{4 \times {f(fly.inertia, 3)}}}"
+                         rf"{{{f(rim.diameter, 3)}^2}} = {f(rim.rim_mass, 2)}\ \text{{kg}}"),
+                "width": (rf"b = \sqrt{{\frac{{4 g J_F}}{{\pi D^3 (H/b) \gamma}}}} = "
+                          rf"{f(rim.width * 1e3, 1)}\ \text{{mm}}"),
+            }
     return ctx
 
 

@@ -1,0 +1,135 @@
+"""The slotter as a linkage model on the one engine, and its stages.
+
+Coordinates: O3 (guide-bar pivot) at the origin, O2 on the x axis at ±L_O2O3 (to the right
+for a clockwise crank, mirrored for a counter-clockwise one, so that the slow stroke is
+always the downward cutting stroke), the ram guide vertical at x = ±L_O3M. Links: 2 crank
+O2A, 3 slider at A, 4 guide bar O3B, 5 rod BC, 6 ram (slider C), 7 frame.
+"""
+from __future__ import annotations
+
+import numpy as np
+
+from ...core.kinetostatics import Body
+from ...core.mechanism import RPR, RRP, AssemblyError, Crank, LinkPoint, Mechanism
+from ...core.synthesis import GuideBarDesign, guide_bar_quick_return
+from ...pipeline import Stage
+from ...stages.flywheel import FlywheelSpec, RimSpec
+from .. import linkage as lk
+from ..shaper import Synthesis
+from .brief import SlotterParams
+
+FRAME = "7"
+DOWN = -np.pi / 2
+
+
+def synthesize(p: SlotterParams) -> Synthesis:
+    d = guide_bar_quick_return(p.stroke, p.time_ratio_K, p.frame, p.rod_ratio, p.com_ratio)
+    return Synthesis(d, d.swing_angle, d.guide_height - d.frame)
+
+
+def side(p: SlotterParams) -> float:
+    """+1: O2 to the right of O3 (clockwise crank); −1: the mirror image."""
+    return 1.0 if p.crank_omega < 0 else -1.0
+
+
+def build_mechanism(d: GuideBarDesign, p: SlotterParams) -> Mechanism:
+    s = side(p)
+    m = Mechanism(FRAME, {"O3": 0j, "O2": s * d.frame + 0j})
+    m.add(Crank("crank O2A", "2", "O2", "A", d.crank, p.crank_omega))
+    m.add(RPR("guide bar (RPR)", "3", "4", "A", "O3", branch=+1))
+    m.add(LinkPoint("B", "4", "O3", d.guide_bar))
+    m.add(LinkPoint("S4", "4", "O3", d.bar_com))
+    # The ram C above B on the vertical guide (the shaper's layout turned by −90°).
+    m.add(RRP("ram (RRP)", "5", "6", "B", "C", d.rod, s * d.guide_height + 0j, np.pi / 2,
+              branch=-1 if s > 0 else +1, frame=FRAME))
+    m.add(LinkPoint("S6", "6", "C", abs(p.ram_com), 0.0 if p.ram_com >= 0 else np.pi))
+    # P on the cutting-force line, beside C (the ram translates, the line is vertical).
+    xp = s * p.cutting_offset
+    m.add(LinkPoint("P", "6", "C", abs(xp), -np.pi / 2 if xp >= 0 else np.pi / 2))
+    return m
+
+
+def model(syn: Synthesis, p: SlotterParams) -> lk.LinkageModel:
+    """Output: the ram C measured downwards (the working stroke is the downward, slow one);
+    resistance: Fc upwards while the ram cuts (idle travel at both ends); bodies: guide bar,
+    ram (its weight acts along its motion), gear 2 on the crank shaft."""
+    d = syn.design
+    idle = p.idle_travel_ratio * p.stroke
+    ratio = p.z2 / p.z1 if p.flywheel_shaft == "pinion" else 1.0
+    return lk.LinkageModel(
+        mechanism=build_mechanism(d, p), crank_omega=p.crank_omega,
+        output=lk.Output("point", "C", DOWN, 1),
+        bodies=(Body("4", p.m4, "S4", p.J_S4), Body("6", p.m6, "S6", 0.0),
+                Body("2", p.G2 / p.gravity, "O2", 0.0)),
+        resistances=(lk.Resistance("6", "P", DOWN, p.cutting_force, 0.0,
+                                   (idle, p.stroke - idle)),),
+        grid_points=p.grid_points, position_step=p.position_step, gravity=p.gravity,
+        flywheel=FlywheelSpec(p.fluctuation, ratio, p.flywheel_shaft,
+                              RimSpec(p.rim_diameter, p.rim_height_to_width, p.specific_weight)),
+        special_crank_angles=(0.0, np.pi),   # the crank level with O2O3: the bar at its mid-swing
+        names={"2": ("曲柄 O2A", "crank O2A"), "3": ("滑块 A", "slider A"),
+               "4": ("导杆 O3B", "guide bar O3B"), "5": ("连杆 BC", "rod BC"),
+               "6": ("插刀滑枕", "ram")})
+
+
+def _synthesis(r: dict):
+    syn = synthesize(r["params"])
+    return syn, model(syn, r["params"])
+
+
+def _motion(r: dict):
+    p, d = r["params"], r["synthesis"].design
+    try:
+        return lk.motion(r["model"])
+    except AssemblyError as exc:
+        need = (1.0 - np.cos(d.swing_angle / 2.0)) / 2.0
+        raise exc.with_hint(
+            f"(Brief field: linkage.rod_ratio_BC_O3B = {p.rod_ratio:g} must be at least "
+            f"(1 − cos(ψ/2))/2 = {need:.6g}.)",
+            f"（任务书字段：linkage.rod_ratio_BC_O3B = {p.rod_ratio:g}，须不小于 "
+            f"(1 − cos(ψ/2))/2 = {need:.6g}。）") from None
+
+
+def stages(p: SlotterParams) -> list[Stage]:
+    from ..shaper import drive_stage
+
+    engine = lk.linkage_stages(model_key="model", prefix="linkage")
+    out = [Stage(("synthesis", "model"), "导杆机构设计 / linkage synthesis", _synthesis),
+           Stage(engine[0].key, engine[0].title, _motion), *engine[1:]]
+    if p.gear is not None:
+        from ..gear import gear_stage
+
+        out.append(gear_stage())
+    if p.drive is not None:
+        out.append(drive_stage())
+    if p.cam is not None:
+        from ..cam import cam_stage
+
+        out.append(cam_stage())
+    return out
+
+
+def results_document(r: dict) -> dict:
+    from ..cam import cam_document
+    from ..drive import drive_document
+    from ..gear import gear_document
+
+    syn, fl = r["synthesis"], r["linkage_flywheel"]
+    d = syn.design
+    return {
+        "schema": "mechdesign.results/1",
+        "machine": "slotter",
+        "units": "SI: m, s, rad, kg, N, N·m, J, W; complex vectors as [x, y]",
+        "synthesis": {"extreme_angle": syn.extreme_angle, "swing_angle": d.swing_angle,
+                      "crank": d.crank, "frame": d.frame, "guide_bar": d.guide_bar, "rod": d.rod,
+                      "guide_offset": d.guide_height, "bar_com": d.bar_com},
+        "linkage": lk.linkage_document(r["model"], r["linkage"], r["linkage_forces"], fl,
+                                       r["linkage_verification"]),
+        "flywheel": {"shaft": fl.shaft, "ratio_to_crank": fl.speed_ratio,
+                     "shaft_speed_rpm": fl.shaft_speed_rpm, "driving_torque": fl.shaft_torque,
+                     "max_energy_swing": fl.max_energy_swing, "inertia": fl.inertia,
+                     "mean_power": fl.mean_power, "rim": fl.rim},
+        "cam": None if r.get("cam") is None else cam_document(r["cam"]),
+        "gear": None if r.get("gear") is None else gear_document(r["gear"]),
+        "drive": None if r.get("drive") is None else drive_document(r["drive"]),
+    }
