@@ -15,7 +15,6 @@ from collections import Counter
 import numpy as np
 import pytest
 
-from mechdesign.core.kinetostatics import STANDARD_GRAVITY  # noqa: F401
 from mechdesign.core.mechanism import RPR, Crank
 from mechdesign.core.polygons import kinematic_polygon
 from mechdesign.render.analysis_sheet import analysis_sheet, default_positions, entry, polygons

@@ -17,7 +17,7 @@ import numpy as np
 from ..core.polygons import Polygon, kinematic_polygon, linkage_force_polygons
 from .sheet import (LabelPlacer, Series, Sheet, TitleInfo, chart, fit_height, format_number, frame,
                     ground, heading, length_scale, nice_scale, pin, scale_text, slider_block, table,
-                    text_width, title_block_box)
+                    title_block_box)
 
 DEG = 180.0 / np.pi
 TWO_PI = 2.0 * np.pi
@@ -300,8 +300,6 @@ def _mechanism(s: Sheet, model, k, lab: dict, box, chosen: list[str]) -> float:
     for g0, u, t0, t1 in guides:
         v.line(g0 + u * t0, g0 + u * t1, "CENTER")
     out = model.output
-    if out.kind == "point" and out.name in P:
-        pass
     order = [i for i in range(len(labels)) if labels[i] not in chosen] + \
             [labels.index(c) for c in chosen if c in labels]
     placer = LabelPlacer(s)
@@ -474,5 +472,3 @@ def _curves(s: Sheet, model, k, forces, fl, lab: dict, box) -> None:
     s.dimension(p_lo, p_hi, 0.0, fl.max_energy_swing,
                 text=lab["dw"].format(v=format_number(fl.max_energy_swing, 5)), height=2.5)
 
-
-__all__ = ["analysis_sheet", "polygons", "default_positions", "entry", "text_width"]
