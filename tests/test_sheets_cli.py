@@ -23,13 +23,15 @@ EXPECTED = {
     "shaper": ["linkage_A1", "cam_A2", "gear_A2"],
     "cam_7_3": ["cam_A2"],
     "lockbeam_cam": ["cam_A2"],
-    "lockbeam": ["cam_A2"],    # the positioning cam (the bending cam is drawn in the report only)
+    # the feed linkage's analysis sheet and the positioning cam (the bending cam is drawn in
+    # the report only)
+    "lockbeam": ["analysis_A1", "cam_A2"],
     "crank_rocker": [],      # linkage synthesis: no drawing sheet
     "cam_7_1": [],           # analysis of a given eccentric disc: no cam to draw
     "furnace_drive": [],     # drive only
-    "furnace_pusher": [],    # six-bar + drive: no linkage/cam/gear sheet for it yet
-    "linkage_sixbar": [],    # generic linkage: no drawing sheet yet
-    "die_cutter": ["cam_A2"],  # the gripper cam
+    "furnace_pusher": ["analysis_A1"],  # the six-bar's analysis sheet
+    "linkage_sixbar": ["analysis_A1"],  # generic linkage: its analysis sheet
+    "die_cutter": ["analysis_A1", "cam_A2"],  # the toggle press and the gripper cam
 }
 
 

@@ -17,6 +17,7 @@ from typing import Protocol
 import numpy as np
 
 from . import kinematics as kin
+from . import polygons as poly
 from .errors import DesignError
 from .kinematics import AngleMotion, PointMotion, SlideMotion
 
@@ -116,13 +117,53 @@ class Group(Protocol):
         """Add the group's links, sliders and points to ``m``."""
 
 
+class _GroupGeometry:
+    """What every group type provides besides ``solve`` (see each class for its own):
+
+    - ``residual(points, motion, n)``: its closure equations' violations [m] (arrays);
+    - ``members()``: the points each of its links carries and its sliders, for drawings;
+    - ``quality(motion)``: its transmission or pressure angle, or None;
+    - ``velocity_polygon(builder, motion)`` / ``acceleration_polygon(builder, motion)``:
+      its vectors of the relative-motion method (:mod:`.polygons`);
+    - ``force_polygon(...)``: its force polygon (known loads, then the reactions that
+      close it)."""
+
+    def members(self) -> tuple[tuple, tuple]:
+        return (), ()
+
+    def quality(self, m: "Motion"):
+        return None
+
+    def velocity_polygon(self, b: "poly.Builder", m: "Motion") -> None:
+        self._kinematic(b, m)
+
+    def acceleration_polygon(self, b: "poly.Builder", m: "Motion") -> None:
+        self._kinematic(b, m)
+
+    def force_polygon(self, joints: dict, loads: dict, reactions: dict, moments: dict,
+                      position: str) -> "poly.Polygon":
+        return poly.force_polygon(self, joints, loads, reactions, moments, position)
+
+    @staticmethod
+    def _rotate(b: "poly.Builder", m: "Motion", tail: str, head: str, link: str,
+                head_name: str | None = None) -> list[str]:
+        """Vectors of ``head`` relative to ``tail`` on ``link`` (both mechanism points)."""
+        i = b.i
+        r = m.points[head].pos[i] - m.points[tail].pos[i]
+        return b.rotation(b.img(tail), head_name or b.img(head), m.links[link], r, link)
+
+    @staticmethod
+    def _symbol(b: "poly.Builder") -> str:
+        return "v" if b.prime == "" else "a"
+
+
 def _const_angle(angle: float, n: int) -> AngleMotion:
     zero = kin.constant(0.0, n)
     return AngleMotion(kin.constant(float(angle), n), zero, zero)
 
 
 @dataclass(frozen=True)
-class Crank:
+class Crank(_GroupGeometry):
     """Driving link ``link`` turning about ``pivot`` at constant ``omega`` [rad/s]; tip ``tip``."""
 
     name: str
@@ -152,9 +193,23 @@ class Crank:
         m.links[self.link], m.points[self.tip] = kin.crank(
             m.points[self.pivot], self.length, m.crank_angle, self.omega)
 
+    def residual(self, P, m, n=None):
+        return [np.abs(P[self.tip] - P[self.pivot]) - self.length]
+
+    def members(self):
+        return ((self.link, (self.pivot, self.tip)),), ()
+
+    def _kinematic(self, b, m):
+        """v_A = v_O + v_AO (v_AO = iω·OA ⊥ OA); a_A = a_O + a^n_AO (+ a^t_AO when α ≠ 0)."""
+        x = self._symbol(b)
+        b.put(b.img(self.tip), b.value(m.points[self.tip]))
+        rot = self._rotate(b, m, self.pivot, self.tip, self.link)
+        b.equation(f"{x}_{self.tip} = {x}_{self.pivot} + {x}_{self.tip}{self.pivot}",
+                   b.path_to(b.img(self.tip)), b.path_to(b.img(self.pivot)) + rot)
+
 
 @dataclass(frozen=True)
-class RRR:
+class RRR(_GroupGeometry):
     """RRR dyad: ``link1`` from B to C (l1), ``link2`` from D to C (l2)."""
 
     name: str
@@ -187,9 +242,34 @@ class RRR:
         l1, l2, c = kin.rrr(m.points[self.b], m.points[self.d], self.l1, self.l2, self.branch)
         m.links[self.link1], m.links[self.link2], m.points[self.c] = l1, l2, c
 
+    def residual(self, P, m, n=None):
+        return [np.abs(P[self.c] - P[self.b]) - self.l1, np.abs(P[self.c] - P[self.d]) - self.l2]
+
+    def members(self):
+        return ((self.link1, (self.b, self.c)), (self.link2, (self.d, self.c))), ()
+
+    def quality(self, m):
+        """Transmission angle γ at C: the acute angle between the two links."""
+        u1 = np.exp(1j * m.links[self.link1].angle)
+        u2 = np.exp(1j * m.links[self.link2].angle)
+        delta = np.abs(np.angle(u1 * np.conj(u2)))
+        return "transmission", self.c, np.minimum(delta, np.pi - delta)
+
+    def _kinematic(self, b, m):
+        """v_C = v_B + v_CB = v_D + v_CD (each relative vector ⊥ its link); for
+        accelerations each relative term is a normal plus a tangential component."""
+        x = self._symbol(b)
+        c = b.put(b.img(self.c), b.value(m.points[self.c]))
+        r1 = self._rotate(b, m, self.b, self.c, self.link1)
+        r2 = self._rotate(b, m, self.d, self.c, self.link2)
+        b.equation(f"{x}_{self.c} = {x}_{self.b} + {x}_{self.c}{self.b} = "
+                   f"{x}_{self.d} + {x}_{self.c}{self.d}",
+                   b.path_to(b.img(self.b)) + r1, b.path_to(b.img(self.d)) + r2)
+        b.path_to(c)
+
 
 @dataclass(frozen=True)
-class RRP:
+class RRP(_GroupGeometry):
     """RRP dyad: rod ``rod`` from B to C, slider ``slider`` at C on a frame guide."""
 
     name: str
@@ -225,9 +305,32 @@ class RRP:
         m.links[self.rod], m.slides[self.slider], m.points[self.c] = rod, slide, c
         m.links[self.slider] = _const_angle(self.guide_angle, len(m.crank_angle))
 
+    def residual(self, P, m, n=None):
+        return [np.abs(P[self.c] - P[self.b]) - self.length,
+                (np.exp(-1j * self.guide_angle) * (P[self.c] - self.guide_point)).imag]
+
+    def members(self):
+        return ((self.rod, (self.b, self.c)),), \
+            ((self.slider, self.c, self.guide_angle, self.guide_point),)
+
+    def quality(self, m):
+        """Pressure angle α at C: between the rod and the guide."""
+        u = np.exp(1j * m.links[self.rod].angle)
+        delta = np.abs(np.angle(u * np.exp(-1j * self.guide_angle)))
+        return "pressure", self.c, np.minimum(delta, np.pi - delta)
+
+    def _kinematic(self, b, m):
+        """v_C = v_B + v_CB with v_C along the guide and v_CB ⊥ BC (accelerations: a_C =
+        a_B + a^n_CB + a^t_CB, a_C along the guide)."""
+        x = self._symbol(b)
+        c = b.put(b.img(self.c), b.value(m.points[self.c]))
+        rot = self._rotate(b, m, self.b, self.c, self.rod)
+        b.equation(f"{x}_{self.c} = {x}_{self.b} + {x}_{self.c}{self.b}",
+                   b.path_to(c), b.path_to(b.img(self.b)) + rot)
+
 
 @dataclass(frozen=True)
-class RPR:
+class RPR(_GroupGeometry):
     """RPR dyad: ``slider`` pinned at A slides on guide bar ``bar`` pinned at ``pivot``."""
 
     name: str
@@ -259,9 +362,44 @@ class RPR:
         m.links[self.bar] = m.links[self.slider] = bar
         m.slides[self.slider] = slide
 
+    def residual(self, P, m, n=None):
+        u = np.exp(1j * m.links[self.bar].angle[:n])
+        return [(np.conj(u) * (P[self.a] - P[self.pivot])).imag - self.offset]
+
+    def members(self):
+        return ((self.bar, (self.pivot, self.a)),), ((self.slider, self.a, self.bar, None),)
+
+    def _kinematic(self, b, m):
+        """The bar's point A4 coinciding with the slider's pin A (A3):
+        v_A4 = v_O + v_A4O (⊥ the bar) = v_A3 + v_A4A3 (along the bar);
+        a_A4 = a_O + a^n_A4O + a^t_A4O = a_A3 + a^k_A4A3 + a^r_A4A3 with the Coriolis
+        term a^k = 2ω·v_A4A3 turned 90° in the sense of ω."""
+        i, x, A = b.i, self._symbol(b), self.a
+        r = m.points[A].pos[i] - m.points[self.pivot].pos[i]
+        u = np.exp(1j * m.links[self.bar].angle[i])
+        bar, slide = m.links[self.bar], m.slides[self.slider]
+        w = float(bar.omega[i])
+        ds, dds = float(slide.ds[i]), float(slide.dds[i])
+        o = b.value(m.points[self.pivot])
+        a4 = b.put(f"{A.lower()}{self.bar}{b.prime}",
+                   o + (1j * w * r if b.prime == "" else (1j * float(bar.alpha[i]) - w * w) * r))
+        rot = self._rotate(b, m, self.pivot, A, self.bar, head_name=a4)
+        v_rel = -ds * u                         # v_A4A3: the bar's point relative to the slider
+        if b.prime == "":
+            right = [b.vec(b.img(A), a4, v_rel, "sliding")]
+        else:
+            cor = 2j * w * v_rel
+            k = b.put(b.fresh("k"), b.points[b.img(A)] + cor)
+            right = [b.vec(b.img(A), k, cor, "coriolis"), b.vec(k, a4, -dds * u, "sliding")]
+        sub = f"{A}{self.bar}"
+        b.equation(f"{x}_{sub} = {x}_{self.pivot} + {x}_{sub}{self.pivot} = "
+                   f"{x}_{A}{self.slider} + {x}_{sub}{A}{self.slider}",
+                   b.path_to(b.img(self.pivot)) + rot, b.path_to(b.img(A)) + right)
+        b.path_to(a4)
+
 
 @dataclass(frozen=True)
-class LinkPoint:
+class LinkPoint(_GroupGeometry):
     """A named point fixed on ``link``: ``distance`` [m] from its point ``origin`` at
     ``offset_angle`` [rad] from the link's direction. Adds no joint."""
 
@@ -286,6 +424,20 @@ class LinkPoint:
     def solve(self, m):
         m.points[self.name] = kin.point_on_link(
             m.points[self.origin], m.links[self.link], self.distance, self.offset_angle)
+
+    def residual(self, P, m, n=None):
+        return [np.abs(P[self.name] - P[self.origin]) - self.distance]
+
+    def members(self):
+        return ((self.link, (self.origin, self.name)),), ()
+
+    def _kinematic(self, b, m):
+        """By the image of the link: v_X = v_O + v_XO (accelerations: + a^n_XO + a^t_XO)."""
+        x = self._symbol(b)
+        p = b.put(b.img(self.name), b.value(m.points[self.name]))
+        rot = self._rotate(b, m, self.origin, self.name, self.link)
+        b.equation(f"{x}_{self.name} = {x}_{self.origin} + {x}_{self.name}{self.origin}",
+                   b.path_to(p), b.path_to(b.img(self.origin)) + rot)
 
 
 class Mechanism:

@@ -239,22 +239,16 @@ def _strokes(model: LinkageModel, by_velocity: bool = True):
 
 
 def _quality(model: LinkageModel, m: Motion, phase: np.ndarray, working_span: float, n: int):
+    """Each group's own quality angle (:meth:`quality` of the group types): the
+    transmission angle's minimum, the pressure angle's maximum."""
     out = []
     working = phase[:n] <= working_span + 1e-12
     for g in model.mechanism.groups:
-        if isinstance(g, RRR):
-            u1 = np.exp(1j * m.links[g.link1].angle)
-            u2 = np.exp(1j * m.links[g.link2].angle)
-            delta = np.abs(np.angle(u1 * np.conj(u2)))
-            values = np.minimum(delta, np.pi - delta)
-            kind, point, pick = "transmission", g.c, np.argmin
-        elif isinstance(g, RRP):
-            u = np.exp(1j * m.links[g.rod].angle)
-            delta = np.abs(np.angle(u * np.exp(-1j * g.guide_angle)))
-            values = np.minimum(delta, np.pi - delta)
-            kind, point, pick = "pressure", g.c, np.argmax
-        else:
+        found = g.quality(m)
+        if found is None:
             continue
+        kind, point, values = found
+        pick = np.argmin if kind == "transmission" else np.argmax
         grid = values[:n]
         i = int(pick(grid))
         wi = np.flatnonzero(working)[int(pick(grid[working]))]
@@ -349,27 +343,12 @@ def flywheel(model: LinkageModel, k: LinkageMotion, f: LinkageForces) -> Flywhee
 # ---------------------------------------------------------------- verification
 
 def closure_residual(mech: Mechanism, m: Motion, n: int | None = None) -> float:
-    """Largest violation of any group's constraints [m] (lengths, points on guides)."""
+    """Largest violation of any group's constraints [m] (lengths, points on guides), each
+    group's own closure equations (:meth:`residual` of the group types)."""
     P = {name: p.pos[:n] for name, p in m.points.items()}
     res = [0.0]
-
-    def worst(x):
-        res.append(float(np.max(np.abs(x))))
-
     for g in mech.groups:
-        if isinstance(g, Crank):
-            worst(np.abs(P[g.tip] - P[g.pivot]) - g.length)
-        elif isinstance(g, RRR):
-            worst(np.abs(P[g.c] - P[g.b]) - g.l1)
-            worst(np.abs(P[g.c] - P[g.d]) - g.l2)
-        elif isinstance(g, RRP):
-            worst(np.abs(P[g.c] - P[g.b]) - g.length)
-            worst((np.exp(-1j * g.guide_angle) * (P[g.c] - g.guide_point)).imag)
-        elif isinstance(g, RPR):
-            u = np.exp(1j * m.links[g.bar].angle[:n])
-            worst((np.conj(u) * (P[g.a] - P[g.pivot])).imag - g.offset)
-        elif isinstance(g, LinkPoint):
-            worst(np.abs(P[g.name] - P[g.origin]) - g.distance)
+        res.extend(float(np.max(np.abs(x))) for x in g.residual(P, m, n))
     return max(res)
 
 
@@ -539,28 +518,16 @@ def linkage_document(model: LinkageModel, k: LinkageMotion, f: LinkageForces,
 
 def link_members(mech: Mechanism) -> tuple[dict, list]:
     """For drawings: the points each moving link carries, and the sliders as
-    (slider link, point, guide: link id or fixed angle [rad])."""
+    (slider link, point, guide: link id or fixed angle [rad], guide point or None), from
+    each group's :meth:`members`."""
     members: dict[str, list[str]] = {}
     sliders = []
-
-    def add(link, *pts):
-        lst = members.setdefault(link, [])
-        lst.extend(p for p in pts if p not in lst)
-
     for g in mech.groups:
-        if isinstance(g, Crank):
-            add(g.link, g.pivot, g.tip)
-        elif isinstance(g, RRR):
-            add(g.link1, g.b, g.c)
-            add(g.link2, g.d, g.c)
-        elif isinstance(g, RRP):
-            add(g.rod, g.b, g.c)
-            sliders.append((g.slider, g.c, g.guide_angle, g.guide_point))
-        elif isinstance(g, RPR):
-            add(g.bar, g.pivot, g.a)
-            sliders.append((g.slider, g.a, g.bar, None))
-        elif isinstance(g, LinkPoint):
-            add(g.link, g.origin, g.name)
+        carried, slides = g.members()
+        for link, pts in carried:
+            lst = members.setdefault(link, [])
+            lst.extend(p for p in pts if p not in lst)
+        sliders.extend(slides)
     return members, sliders
 
 

@@ -2,6 +2,8 @@
 blocks, and the files (vector PDF, DXF, PNG preview for the report).
 
 Sheets: the linkage sheet (A1) when the results have the shaper's linkage analysis, the
+generic analysis sheet (A1) for any linkage run through the shared linkage stages
+(furnace pusher, die-cutter press, lock-beam feed, ``linkage`` briefs), the
 cam sheet (A2) when they have a synthesised cam, the gear meshing sheet when they have
 a gear pair. Files go to ``sheets/`` (``NAME.pdf`` with the pdf format, ``NAME.dxf``
 with dxf); the previews to the figures folder.
@@ -18,6 +20,7 @@ from .sheet import Sheet, TitleInfo
 
 TITLES = {
     "linkage": {"zh": "导杆机构运动及动力分析图", "en": "Linkage: kinematic and force analysis"},
+    "analysis": {"zh": "机构运动及动力分析图", "en": "Linkage: kinematic and force analysis"},
     "cam": {"zh": "凸轮机构设计图", "en": "Cam mechanism design"},
     "gear": {"zh": "齿轮啮合图", "en": "Gear meshing drawing"},
 }
@@ -36,6 +39,24 @@ class SheetFiles:
     dxf: str | None
 
 
+# (model key, prefix) of the shared linkage stages, as each machine stores them
+LINKAGE_KEYS = (("model", "linkage"), ("params", "linkage"), ("press_model", "press"),
+                ("feed_model", "feed"))
+
+
+def linkage_results(results: dict):
+    """(model, motion, raw motion, forces, flywheel or None) of the shared linkage stages
+    in ``results``, or None."""
+    from ..machines.linkage import LinkageModel
+
+    for model_key, prefix in LINKAGE_KEYS:
+        model = results.get(model_key)
+        if isinstance(model, LinkageModel) and f"{prefix}_raw" in results:
+            return (model, results[prefix], results[f"{prefix}_raw"],
+                    results.get(f"{prefix}_forces"), results.get(f"{prefix}_flywheel"))
+    return None
+
+
 def _builders(results: dict, brief) -> list[tuple[str, Callable[[TitleInfo, str], Sheet]]]:
     out = []
     if "motion" in results and "forces" in results:
@@ -50,6 +71,15 @@ def _builders(results: dict, brief) -> list[tuple[str, Callable[[TitleInfo, str]
             return linkage_sheet(results, info, lang, chosen)[0]
 
         out.append(("linkage", linkage))
+    else:
+        found = linkage_results(results)
+        if found is not None:
+            def analysis(info, lang):
+                from .analysis_sheet import analysis_sheet
+
+                return analysis_sheet(*found, info, lang)[0]
+
+            out.append(("analysis", analysis))
     cam = results.get("cam")
     if cam is not None and hasattr(cam, "grid"):
         def cam_builder(info, lang):

@@ -1,0 +1,474 @@
+"""The A1 analysis sheet (机构运动及动力分析图) of ANY linkage computed by the shared linkage
+stages: the mechanism at every textbook position to a length scale, the velocity and
+acceleration polygons at the chosen positions, the force polygon of every Assur group
+(the crank included) at those positions, the output's s, v, a curves, the M_b curve, the
+energy curve with ΔW_max when there is a flywheel, a table of the positions and the title
+block.
+
+The polygons come from the group types themselves (:mod:`mechdesign.core.polygons`, built
+from the computed motion and reactions); the sheet only places and draws them, each to a
+scale written above it. :func:`analysis_sheet` takes the model, the motion, the raw
+motion, the forces and the flywheel, so it does not care which machine it draws.
+"""
+from __future__ import annotations
+
+import numpy as np
+
+from ..core.polygons import Polygon, kinematic_polygon, linkage_force_polygons
+from .sheet import (LabelPlacer, Series, Sheet, TitleInfo, chart, fit_height, format_number, frame,
+                    ground, heading, length_scale, nice_scale, pin, scale_text, slider_block, table,
+                    title_block_box)
+
+DEG = 180.0 / np.pi
+TWO_PI = 2.0 * np.pi
+
+LABELS = {
+    "zh": {"mechanism": "机构运动简图", "velocity": "位置 {p} 速度多边形", "acceleration": "位置 {p} 加速度多边形",
+           "force": "位置 {p} {g} 力多边形", "crank_group": "原动件 {l}", "group": "杆组 {l}",
+           "s": "输出位移 s ({u})", "v": "输出速度 v ({u})", "a": "输出加速度 a ({u})",
+           "mb": "平衡力矩 Mb (N·m)", "work": "功 W、动能增量 ΔE (J)", "phase": "曲柄转角 φ (°)",
+           "curves": "输出构件运动线图", "mbt": "平衡力矩线图", "et": "飞轮能量线图",
+           "md": "等效驱动力矩 Md = {v} N·m", "mean": "平均 Mb = {v} N·m", "table": "各位置运动与力分析结果",
+           "pos": "位置", "dw": "ΔWmax = {v} J", "jf": "飞轮转动惯量 JF = {v} kg·m²",
+           "scales": "作图比例", "each": "μv、μa、μF 注在各多边形上方", "noforce": "该位置无载荷（各反力为零）",
+           "nofly": "未设飞轮"},
+    "en": {"mechanism": "Skeleton at the positions", "velocity": "Velocity polygon, position {p}",
+           "acceleration": "Acceleration polygon, position {p}", "force": "Force polygon, {g}, pos. {p}",
+           "crank_group": "driver {l}", "group": "group {l}",
+           "s": "output displacement s ({u})", "v": "output velocity v ({u})", "a": "output acceleration a ({u})",
+           "mb": "balancing torque Mb (N·m)", "work": "work W, energy change ΔE (J)", "phase": "crank angle φ (°)",
+           "curves": "Output motion curves", "mbt": "Balancing torque", "et": "Flywheel energy",
+           "md": "driving torque Md = {v} N·m", "mean": "mean Mb = {v} N·m", "table": "Results at the positions",
+           "pos": "Pos.", "dw": "ΔWmax = {v} J", "jf": "flywheel inertia JF = {v} kg·m²",
+           "scales": "Drawing scales", "each": "μv, μa, μF above each polygon",
+           "noforce": "no load at this position (all reactions zero)", "nofly": "no flywheel"},
+}
+
+UNITS = {"velocity": ("μv", "(m/s)/mm", "m/s"), "acceleration": ("μa", "(m/s²)/mm", "m/s²"),
+         "force": ("μF", "N/mm", "N")}
+
+
+# ------------------------------------------------------------------ polygons (data)
+
+def entry(k, label: str) -> int:
+    """Index of position ``label`` in the motion arrays (the grid comes first)."""
+    return k.grid_size + list(k.positions.labels).index(label)
+
+
+def polygons(model, k, raw, forces, label: str) -> list[Polygon]:
+    """Velocity polygon, acceleration polygon and the force polygons (one per group with
+    links, the crank first) at position ``label``."""
+    i = entry(k, label)
+    mech = model.mechanism
+    out = [kinematic_polygon(mech, raw, i, label, "velocity"),
+           kinematic_polygon(mech, raw, i, label, "acceleration")]
+    if forces is None:
+        return out
+    multi = len(model.resistances) > 1
+    external = [(r.link, f"Fr{j + 1}" if multi else "Fr",
+                 complex(forces.resistance[f"R{j + 1}"][i] * np.exp(1j * r.direction)))
+                for j, r in enumerate(model.resistances)]
+    out += linkage_force_polygons(
+        mech, raw, i, label, model.bodies, model.gravity, external,
+        {name: complex(v[i]) for name, v in forces.reactions.items()},
+        {link: complex(v[i]) for link, v in forces.inertia_force.items()},
+        {link: float(v[i]) for link, v in forces.inertia_couple.items()},
+        float(k.sense * forces.balancing_torque[i]))
+    return out
+
+
+def default_positions(k) -> list[str]:
+    """Regular positions nearest the middle of the working and of the return stroke."""
+    regular = [(lab, ph) for lab, ph, sp in zip(k.positions.labels, k.positions.phase,
+                                                 k.positions.special) if not sp]
+    w = k.working_span
+    out = []
+    for target in (w / 2, (w + TWO_PI) / 2):
+        best = min(regular, key=lambda e: abs(e[1] - target))[0]
+        if best not in out:
+            out.append(best)
+    return out
+
+
+# ------------------------------------------------------------------ the sheet
+
+def analysis_sheet(model, k, raw, forces, flywheel, info: TitleInfo, lang: str,
+                   chosen: list[str] | None = None, labels: dict | None = None
+                   ) -> tuple[Sheet, dict]:
+    """The A1 sheet of a linkage and the scales used ({"length": n (1:n), "velocity_4":
+    μv, …}). ``labels`` overrides texts of :data:`LABELS` (e.g. the output's name)."""
+    lab = {**LABELS[lang], **(labels or {})}
+    chosen = [str(c) for c in (chosen or default_positions(k))]
+    polys = {c: polygons(model, k, raw, forces, c) for c in chosen}
+    s = Sheet("A1")
+    x0, y0, x1, y1 = s.inner
+    table_top = y0 + 8 + _table_height(k)
+    n_len = _mechanism(s, model, k, lab, (x0 + 8, table_top + 10.0, 300.0, y1 - 6), chosen)
+    scales = {"length": n_len}
+    info = TitleInfo(**{**info.__dict__, "scale": scale_text(n_len)})
+    frame(s, info)
+    _table(s, model, k, forces, lab, (x0 + 8, y0 + 8, 300.0, table_top))
+    _polygon_grid(s, model, polys, chosen, lab, (310.0, y0 + 8, 602.0, y1 - 4), scales)
+    _curves(s, model, k, forces, flywheel, lab, (622.0, 72.0, x1 - 8, y1 - 6))
+    tb_x0, _, _, tb_y1 = title_block_box(s)
+    notes = [lab["scales"] + f":  μL = {format_number(n_len / 1000)} m/mm ({scale_text(n_len)}); "
+             + lab["each"]]
+    if flywheel is not None:
+        notes.append(lab["dw"].format(v=format_number(flywheel.max_energy_swing, 5)) + ",  "
+                     + lab["jf"].format(v=format_number(flywheel.inertia, 4)))
+    for j, text in enumerate(notes):
+        s.text(tb_x0 - 30.0 + 1j * (tb_y1 + 10.0 - 5.5 * j), text,
+               fit_height(text, 205.0, 3.0), "TEXT")
+    return s, scales
+
+
+def _group_title(model, pg: Polygon, lab: dict) -> str:
+    g = next(g for g in model.mechanism.groups if g.name == pg.group)
+    key = "crank_group" if g.driver is not None else "group"
+    return lab[key].format(l="-".join(g.links))
+
+
+def _polygon_grid(s: Sheet, model, polys: dict, chosen: list[str], lab: dict, box,
+                  scales: dict) -> None:
+    """Rows: velocity, acceleration, then one row per group's force polygon; one column
+    per chosen position. Row heights are shared out so that every cell fits."""
+    bx0, by0, bx1, by1 = box
+    cols = max(len(chosen), 1)
+    width = (bx1 - bx0) / cols
+    rows = [kind for kind in ("velocity", "acceleration")]
+    n_force = max((len(p) - 2 for p in polys.values()), default=0)
+    rows += [f"force{j}" for j in range(n_force)]
+    weights = [1.5 if r in ("velocity", "acceleration") else 1.0 for r in rows]
+    gap = 3.0
+    avail = by1 - by0 - gap * (len(rows) - 1)
+    heights = [avail * w / sum(weights) for w in weights]
+    top = by1
+    for r, h in zip(rows, heights):
+        for c, label in enumerate(chosen):
+            ps = polys[label]
+            pg = ps[0] if r == "velocity" else ps[1] if r == "acceleration" else (
+                ps[2 + int(r[5:])] if 2 + int(r[5:]) < len(ps) else None)
+            if pg is None:
+                continue
+            cell = (bx0 + c * width + 2.0, top - h, bx0 + (c + 1) * width - 2.0, top)
+            title = (lab[pg.kind].format(p=label) if pg.kind != "force"
+                     else lab["force"].format(p=label, g=_group_title(model, pg, lab)))
+            mu = _cell(s, pg, cell, title, lab)
+            key = pg.kind if pg.kind != "force" else f"force_{pg.group}"
+            scales[f"{key}_{label}"] = mu
+        top -= h + gap
+
+
+def _items(pg: Polygon) -> list[str]:
+    unit = UNITS[pg.kind][2]
+    out = [f"{v.name} = {format_number(abs(v.value), 4)} {unit}" for v in pg.vectors]
+    out += [f"{name} = {format_number(value, 4)} N·m" for name, value in pg.moments.items()]
+    return out
+
+
+def _cell(s: Sheet, pg: Polygon, cell, title: str, lab: dict) -> float:
+    """One polygon with its heading, scale and the list of its vectors; returns μ."""
+    cx0, cy0, cx1, cy1 = cell
+    w = cx1 - cx0
+    s.polyline([cx0 + 1j * cy0, cx1 + 1j * cy0, cx1 + 1j * cy1, cx0 + 1j * cy1], "CONSTRUCTION",
+               closed=True, weight=0.13)
+    head_h = fit_height(title, w - 4.0, 3.5)
+    s.text((cx0 + cx1) / 2 + 1j * (cy1 - 1.5), title, head_h, "TEXT", "center", "top")
+    items = _items(pg)
+    ncol = 3 if w > 110 else 2
+    nrow = int(np.ceil(len(items) / ncol))
+    line = 3.4
+    list_h = nrow * line + 1.0
+    colw = (w - 4.0) / ncol
+    for j, text in enumerate(items):
+        c, row = divmod(j, nrow)
+        s.text(cx0 + 2.0 + c * colw + 1j * (cy0 + 1.0 + list_h - row * line), text,
+               min(2.5, fit_height(text, colw - 1.5, 2.5, smallest=1.8)), "TEXT", "left", "top")
+    sym, unit, _ = UNITS[pg.kind]
+    pbox = (cx0 + 8.0, cy0 + list_h + 5.0, cx1 - 8.0, cy1 - 12.0)
+    if not pg.vectors:
+        s.text((cx0 + cx1) / 2 + 1j * (pbox[1] + pbox[3]) / 2, lab["noforce"], 2.5, "TEXT",
+               "center", "middle")
+        return 1.0
+    pts = np.array(list(pg.points.values()))
+    extent = max(np.ptp(pts.real) / (pbox[2] - pbox[0]), np.ptp(pts.imag) / (pbox[3] - pbox[1]),
+                 1e-12)
+    mu = nice_scale(extent, 1.0)
+    text = f"{sym} = {format_number(mu)} {unit}"
+    s.text((cx0 + cx1) / 2 + 1j * (cy1 - 2.0 - head_h - 1.0), text, 2.5, "TEXT", "center", "top")
+    _draw_polygon(s, pg, mu, pbox)
+    return mu
+
+
+def _draw_polygon(s: Sheet, pg: Polygon, mu: float, box) -> None:
+    """The polygon centred in ``box`` at μ (units per paper mm), labels kept clear."""
+    pts = np.array(list(pg.points.values())) / mu
+    bx0, by0, bx1, by1 = box
+    centre = (pts.real.min() + pts.real.max()) / 2 + 1j * (pts.imag.min() + pts.imag.max()) / 2
+    v = s.view((bx0 + bx1) / 2 + 1j * (by0 + by1) / 2 - centre, 1.0 / mu)
+    placer = LabelPlacer(s)
+    for vec in pg.vectors:
+        a, b = pg.points[vec.tail], pg.points[vec.head]
+        if abs(b - a) / mu < 1e-6:
+            continue
+        weight = 0.25 if vec.role in ("absolute", "internal") else None
+        v.arrow(a, b, "VECTORS", head=2.5, weight=weight)
+        placer.block_segment(v.p(a), v.p(b))
+    for z in pg.points.values():
+        s.circle(v.p(z), 0.4, "VECTORS", 0.25)
+        placer.block(v.p(z), 0.8)
+    if pg.kind == "force":
+        for vec in pg.vectors:
+            mid = (pg.points[vec.tail] + pg.points[vec.head]) / 2
+            placer.place(v.p(mid), vec.name, 2.5, prefer=1j * vec.value, gap=1.2)
+        placer.place(v.p(0j), "o", 2.5, prefer=-1 - 1j, gap=1.2)
+        return
+    values = list(pg.points.values())
+    centroid = np.mean(values)
+    done = {}
+    for name, z in pg.points.items():
+        key = (round(z.real / mu, 1), round(z.imag / mu, 1))
+        text = name if key not in done else None
+        if text is None:           # coincident points share one label: "a', b'"
+            continue
+        same = [n for n, zz in pg.points.items()
+                if (round(zz.real / mu, 1), round(zz.imag / mu, 1)) == key]
+        done[key] = True
+        d = z - centroid
+        placer.place(v.p(z), ", ".join(same), 2.5, prefer=d if abs(d) > 1e-9 * mu else 1j,
+                     gap=1.2)
+
+
+# ------------------------------------------------------------------ the mechanism
+
+def _joint_points(mech) -> set:
+    return {j.point for js in mech.joints.values() for j in js}
+
+
+def _link_outline(zs: list) -> list:
+    """The points to join for one link: the two farthest apart when they are in line,
+    else all of them around their centre (a ternary link)."""
+    zs = list(dict.fromkeys(complex(z) for z in zs))
+    if len(zs) <= 2:
+        return zs
+    pairs = [(abs(a - b), a, b) for a in zs for b in zs]
+    _, a, b = max(pairs, key=lambda t: t[0])
+    u = (b - a) / abs(b - a)
+    if all(abs((np.conj(u) * (z - a)).imag) < 1e-6 * abs(b - a) for z in zs):
+        return [a, b]
+    c = np.mean(zs)
+    return sorted(zs, key=lambda z: np.angle(z - c)) + [sorted(zs, key=lambda z: np.angle(z - c))[0]]
+
+
+def _mechanism(s: Sheet, model, k, lab: dict, box, chosen: list[str]) -> float:
+    from ..machines.linkage import link_members
+
+    mech = model.mechanism
+    members, sliders = link_members(mech)
+    n = k.grid_size
+    labels = list(k.positions.labels)
+    mm = 1e3
+    P = {name: np.asarray(z[n:]) * mm for name, z in k.points.items()}
+    joints = _joint_points(mech) | set(mech.frame_points)
+    coms = {b.com for b in model.bodies if b.com is not None} - joints
+    drawn = {name: z for name, z in P.items() if name not in coms}
+    allpts = np.concatenate([z for z in drawn.values()])
+    guides = []                              # fixed guides: (point, angle, lo, hi) in mm
+    for slider, point, guide, gpoint in sliders:
+        if isinstance(guide, str):
+            continue
+        u = np.exp(1j * guide)
+        t = (np.conj(u) * (P[point] - gpoint * mm)).real
+        span = max(np.ptp(t), 1.0)
+        guides.append((gpoint * mm, u, t.min() - 0.25 * span, t.max() + 0.25 * span))
+        allpts = np.concatenate([allpts, [gpoint * mm + u * (t.min() - 0.25 * span),
+                                          gpoint * mm + u * (t.max() + 0.25 * span)]])
+    lo = complex(allpts.real.min(), allpts.imag.min())
+    hi = complex(allpts.real.max(), allpts.imag.max())
+    pad = 0.08 * max(hi.real - lo.real, hi.imag - lo.imag) + 20.0
+    lo, hi = lo - pad * (1 + 1j), hi + pad * (1 + 1j)
+    bx0, by0, bx1, by1 = box
+    avail = (bx1 - bx0) + 1j * (by1 - by0 - 16)
+    n_len = length_scale(hi - lo, avail)
+    sc = 1.0 / n_len
+    centre = (lo + hi) / 2
+    v = s.view((bx0 + bx1) / 2 + 1j * ((by0 + by1) / 2 - 6) - sc * centre, sc)
+    title = f"{lab['mechanism']}  {scale_text(n_len)}  (μL = {format_number(n_len / 1000)} m/mm)"
+    heading(s, (bx0 + bx1) / 2 + 1j * (by1 - 6), title, min(5.0, fit_height(title, bx1 - bx0, 5.0)))
+    crank = model.crank
+    v.circle(P[crank.pivot][0], crank.length * mm, "CENTER")
+    for g0, u, t0, t1 in guides:
+        v.line(g0 + u * t0, g0 + u * t1, "CENTER")
+    out = model.output
+    order = [i for i in range(len(labels)) if labels[i] not in chosen] + \
+            [labels.index(c) for c in chosen if c in labels]
+    placer = LabelPlacer(s)
+    for i in order:
+        bold = labels[i] in chosen
+        layer, w = ("OUTLINE", None) if bold else ("CONSTRUCTION", 0.25)
+        for link, names in members.items():
+            zs = [P[p][i] for p in names if p in drawn]
+            outline = _link_outline(zs)
+            if len(outline) >= 2:
+                v.polyline(np.array(outline), layer, weight=w)
+                if bold:
+                    for a, b in zip(outline[:-1], outline[1:]):
+                        placer.block_segment(v.p(a), v.p(b), 1.5)
+        if bold:
+            for slider, point, guide, _ in sliders:
+                ang = guide if not isinstance(guide, str) else float(k.link_angle[guide][n + i])
+                slider_block(v, P[point][i], ang, 10.0, 5.0)
+                placer.block(v.p(P[point][i]), 5.0)
+            for name in joints - set(mech.frame_points):
+                if name in P:
+                    pin(v, P[name][i])
+                    placer.block(v.p(P[name][i]), 1.5)
+            for name in coms:
+                if name in P:
+                    s.circle(v.p(P[name][i]), 0.8, "OUTLINE", 0.25)
+    for name, z in mech.frame_points.items():
+        ground(v, z * mm, 6.0)
+        placer.block(v.p(z * mm), 4.0)
+        placer.place(v.p(z * mm), name, 3.5, prefer=1 + 0.3j, gap=2.5)
+    tip = P[crank.tip]
+    piv = P[crank.pivot][0]
+    for i in range(len(labels)):
+        u = (tip[i] - piv) / abs(tip[i] - piv)
+        placer.place(v.p(tip[i]), labels[i], 3.5 if labels[i] in chosen else 2.5, prefer=u, gap=1.5)
+    if chosen and chosen[0] in labels:
+        i0 = labels.index(chosen[0])
+        mid = np.mean([P[nm][i0] for nm in drawn])
+        for name in sorted(joints - set(mech.frame_points)):
+            if name in P:
+                d = P[name][i0] - mid
+                placer.place(v.p(P[name][i0]), name, 3.5, prefer=d if abs(d) > 1e-9 else 1j,
+                             gap=2.0)
+    # Dimensions: the crank, the frame, the output's stroke.
+    v.dimension(piv, piv + crank.length * mm * np.exp(-0.75j * np.pi), 0.0, kind="radius",
+                measurement=crank.length * mm)
+    frames = list(mech.frame_points.values())
+    if len(frames) >= 2:
+        a, b = frames[0] * mm, frames[1] * mm
+        v.dimension(a, b, 12.0, measurement=abs(b - a))
+    if out.kind == "point" and out.name in P:
+        j = int(np.argmax(np.abs(k.s[n:])))
+        a, b = P[out.name][0], P[out.name][j]
+        if abs(b - a) > 1e-9:
+            v.dimension(a, b, -14.0, measurement=k.stroke * mm)
+    return n_len
+
+
+# ------------------------------------------------------------------ table and curves
+
+def _moving_links(model, k) -> list[str]:
+    """Links whose ω varies (the crank and translating sliders left out), in order."""
+    out = []
+    n = k.grid_size
+    for g in model.mechanism.groups:
+        for link in g.links:
+            if link in out or link == model.crank.link or link not in k.link_omega:
+                continue
+            w = np.asarray(k.link_omega[link][:n])
+            if np.ptp(w) > 1e-12 and not any(np.array_equal(k.link_omega[o], k.link_omega[link])
+                                              for o in out):
+                out.append(link)
+    return out[:4]
+
+
+def _output_units(k) -> tuple[float, str, str, str]:
+    if k.output_unit == "m":
+        return 1e3, "mm", "m/s", "m/s²"
+    return DEG, "°", "rad/s", "rad/s²"
+
+
+ROW_H = 6.5
+
+
+def _table_height(k) -> float:
+    """Heading plus a head row and one row per position [mm]."""
+    return 9.0 + ROW_H * (len(k.positions.labels) + 1)
+
+
+def _table(s: Sheet, model, k, forces, lab: dict, box) -> None:
+    n = k.grid_size
+    bx0, by0, bx1, by1 = box
+    fs, us, uv, ua = _output_units(k)
+    links = _moving_links(model, k)
+    head = [lab["pos"], "φ (°)", f"s ({us})", f"v ({uv})", f"a ({ua})"] + \
+        [f"ω{link} (rad/s)" for link in links] + (["Mb (N·m)"] if forces is not None else [])
+    rows = []
+    for j, label in enumerate(k.positions.labels):
+        i = n + j
+        row = [label, f"{k.phase[i] * DEG:.1f}", f"{k.s[i] * fs:.2f}", f"{k.v[i]:.4g}",
+               f"{k.a[i]:.4g}"] + [f"{k.link_omega[link][i]:.4g}" for link in links]
+        if forces is not None:
+            row.append(f"{forces.balancing_torque[i]:.4g}")
+        rows.append(row)
+    rh = ROW_H
+    weights = np.array([0.8, 1.0] + [1.2] * (len(head) - 2))
+    widths = weights / weights.sum() * (bx1 - bx0)
+    top = by1 - 7.0
+    heading(s, (bx0 + bx1) / 2 + 1j * (top + 1.5), lab["table"], 5.0)
+    table(s, bx0, top, widths, rows, head, row_h=rh, height=2.5, head_height=2.5, margin=1.0,
+          outer=0.7, rule=0.7, inner=0.25)
+
+
+def _curves(s: Sheet, model, k, forces, fl, lab: dict, box) -> None:
+    n = k.grid_size
+    ph = np.append(k.phase[:n], TWO_PI) * DEG
+
+    def closed(y):
+        return np.append(y[:n], y[0])
+
+    labels = list(k.positions.labels)
+    pos_ph = k.phase[n:] * DEG
+    regular = [j for j, sp in enumerate(k.positions.special) if not sp]
+    bx0, by0, bx1, by1 = box
+    left = bx0 + 6.0
+    ticks = range(0, 361, 30)
+    span = k.working_span * DEG
+    fs, us, uv, ua = _output_units(k)
+    heading(s, (left + bx1) / 2 + 1j * (by1 - 5), lab["curves"], 5.0)
+    panels = [(k.s * fs, lab["s"].format(u=us)), (k.v, lab["v"].format(u=uv)),
+              (k.a, lab["a"].format(u=ua))]
+    top = by1 - 14.0
+    n_panels = 3 + (forces is not None) + (fl is not None)
+    gaps = 3 * 15.0 + (forces is not None) * 24.0 + (fl is not None) * 26.0
+    h = (top - by0 - gaps) / n_panels
+    y = top
+    for j, (yv, yl) in enumerate(panels):
+        marks = [(pos_ph[q], yv[n + q], labels[q] if j == 0 else "") for q in regular]
+        chart(s, (left, y - h, bx1, y), ph, [Series(closed(yv))], xlabel=lab["phase"] if j == 2 else "",
+              ylabel=yl, xticks=ticks, shade=[(0, span)], marks=marks)
+        y -= h + 15.0
+    if forces is None:
+        return
+    y -= 9.0
+    mb = forces.balancing_torque
+    md = fl.driving_torque if fl is not None else forces.mean_torque
+    text = lab["md"] if fl is not None else lab["mean"]
+    chart(s, (left, y - h, bx1, y), ph, [Series(closed(mb))], xlabel=lab["phase"],
+          ylabel=lab["mb"], title=lab["mbt"], xticks=ticks, shade=[(0, span)],
+          hlines=[(md, text.format(v=format_number(md, 4)))],
+          marks=[(pos_ph[q], mb[n + q], "") for q in regular])
+    if fl is None:
+        return
+    y -= h + 26.0
+    e = fl.energy
+    phi = np.radians(ph)
+    mb_c = closed(mb)
+    w_r = np.concatenate([[0.0], np.cumsum(0.5 * (mb_c[1:] + mb_c[:-1]) * np.diff(phi))])
+    w_d = md * phi
+    m = chart(s, (left, y - h, bx1, y), ph,
+              [Series(w_d, weight=0.35), Series(w_r, weight=0.35), Series(np.append(e, e[0]))],
+              xlabel=lab["phase"], ylabel=lab["work"], title=lab["et"], xticks=ticks,
+              hlines=[(float(e.min()), ""), (float(e.max()), "")])
+    j_r = int(np.argmax(w_r))
+    j_d = int(0.85 * len(ph))
+    s.text(m.p(ph[j_r], w_r[j_r]) + 2.0j, "Wr", 3.0, "TEXT", "center", "bottom")
+    s.text(m.p(ph[j_d], w_d[j_d]) + (1.0 - 2.0j), "Wd", 3.0, "TEXT", "left", "top")
+    x_at = 0.5 * (fl.phase_at_min + fl.phase_at_max) * DEG
+    p_lo, p_hi = m.p(x_at, float(e.min())), m.p(x_at, float(e.max()))
+    s.dimension(p_lo, p_hi, 0.0, fl.max_energy_swing,
+                text=lab["dw"].format(v=format_number(fl.max_energy_swing, 5)), height=2.5)
+

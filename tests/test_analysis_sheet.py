@@ -1,0 +1,272 @@
+"""The generic A1 analysis sheet and the polygons the group types build.
+
+References, all independent of the polygon code: finite differences of positions solved
+again at nearby crank angles (velocities) and of the analytic velocities (accelerations);
+the Coriolis term 2ω·v_rel from the bar's ω and the slider's sliding speed; the point of the
+guide bar under the slider pin differentiated twice by finite differences of the bar's
+motion; Newton's second law for every Assur group (ΣF = 0 of its known loads and
+reactions); the balancing torque from the power balance −ΣP/ω, which never looks at a
+reaction. The sheet is checked for texts and boxes that overlap and for a DXF with the
+same entities."""
+from __future__ import annotations
+
+from collections import Counter
+
+import numpy as np
+import pytest
+
+from mechdesign.core.mechanism import RPR, Crank
+from mechdesign.core.polygons import kinematic_polygon
+from mechdesign.render.analysis_sheet import analysis_sheet, default_positions, entry, polygons
+from mechdesign.render.sheet import (SIZES, Arc, Circle, Dimension, Fill, Line, Polyline, Text,
+                                     TitleInfo, boxes_overlap, text_width)
+
+MACHINES = ["linkage_sixbar", "furnace_pusher", "die_cutter", "lockbeam"]
+INFO = TitleInfo("机构运动及动力分析图", "课程设计", "张三", "2023001", "机械 1", "李老师",
+                 "2026-11-22", number="MD-01", sheet_no=1, sheets=1)
+
+
+@pytest.fixture(scope="module", params=MACHINES)
+def run(request):
+    from mechdesign.brief.loader import load_brief
+    from mechdesign.machines import get_machine, stages_for
+    from mechdesign.pipeline import run_stages
+    from mechdesign.render.sheets import _builders, linkage_results
+
+    b = load_brief(f"designs/{request.param}.yaml")
+    m = get_machine(b.machine)
+    p = m.to_params(b)
+    results, _ = run_stages(stages_for(m, p), {"params": p, "brief": b}, None)
+    found = linkage_results(results)
+    assert found is not None
+    assert "analysis" in [name for name, _ in _builders(results, b)]
+    return request.param, found
+
+
+def _labels(k):
+    return [str(x) for x in k.positions.labels]
+
+
+def _fd(model, phi, h, name, what):
+    """Central difference in time of a point's position ("pos") or velocity ("vel")."""
+    w = model.crank_omega
+    ahead = model.mechanism.solve(np.array([phi + h]))
+    back = model.mechanism.solve(np.array([phi - h]))
+    dt = h / w
+    return (getattr(ahead.points[name], what)[0] - getattr(back.points[name], what)[0]) / (2 * dt)
+
+
+def _check_closure(pg, scale):
+    for v in pg.vectors:
+        assert abs(pg.points[v.head] - pg.points[v.tail] - v.value) <= 1e-9 * scale, v.name
+    named = {v.name: v.value for v in pg.vectors}
+    for eq in pg.equations:
+        left = sum((named[n] for n in eq.left), 0j)
+        right = sum((named[n] for n in eq.right), 0j)
+        assert abs(left - right) <= 1e-9 * scale, eq.text
+
+
+def test_velocity_polygons_close_and_match_finite_differences(run):
+    name, (model, k, raw, forces, fly) = run
+    mech = model.mechanism
+    for label in _labels(k)[::2]:
+        i = entry(k, label)
+        pg = kinematic_polygon(mech, raw, i, label, "velocity")
+        scale = max(abs(z) for z in pg.points.values())
+        _check_closure(pg, scale)
+        assert pg.equations
+        for point in raw.points:
+            if point in mech.frame_points:
+                continue
+            fd = _fd(model, k.crank_angle[i], 1e-6, point, "pos")
+            assert abs(pg.points[point.lower()] - fd) <= 1e-6 * scale, (name, label, point)
+        for v in pg.vectors:                  # relative velocities ⊥ the line joining the points
+            a, b = v.tail.upper(), v.head.upper()
+            if v.role == "relative" and a in raw.points and b in raw.points and abs(v.value) > 0:
+                r = raw.points[b].pos[i] - raw.points[a].pos[i]
+                assert abs((np.conj(v.value) * r).real) <= 1e-9 * abs(v.value) * abs(r)
+
+
+def test_acceleration_polygons_close_and_match_finite_differences(run):
+    name, (model, k, raw, forces, fly) = run
+    mech = model.mechanism
+    for label in _labels(k)[1::3]:
+        i = entry(k, label)
+        pg = kinematic_polygon(mech, raw, i, label, "acceleration")
+        scale = max(abs(z) for z in pg.points.values())
+        _check_closure(pg, scale)
+        for point in raw.points:
+            if point in mech.frame_points:
+                continue
+            fd = _fd(model, k.crank_angle[i], 1e-5, point, "vel")
+            assert abs(pg.points[point.lower() + "'"] - fd) <= 1e-5 * scale, (name, label, point)
+        # a normal component points from the moving point back along the link, the
+        # tangential one is perpendicular to it
+        for v in pg.vectors:
+            tail = v.tail.rstrip("'").upper()
+            if v.role != "normal" or tail not in raw.points:
+                continue
+            t = next((x for x in pg.vectors if x.tail == v.head and x.role == "tangential"), None)
+            head = (t.head if t is not None else v.head).rstrip("'").upper()
+            if head not in raw.points:
+                continue
+            r = raw.points[head].pos[i] - raw.points[tail].pos[i]
+            if abs(v.value) > 1e-12 * scale:
+                assert abs((np.conj(v.value) * r).imag) <= 1e-9 * abs(v.value) * abs(r)
+                assert (np.conj(v.value) * r).real < 0
+            if t is not None and abs(t.value) > 1e-12 * scale:
+                assert abs((np.conj(t.value) * r).real) <= 1e-9 * abs(t.value) * abs(r)
+
+
+def test_coriolis_term_of_the_guide_bar(run):
+    name, (model, k, raw, forces, fly) = run
+    mech = model.mechanism
+    bars = [g for g in mech.groups if isinstance(g, RPR)]
+    if not bars:
+        pytest.skip("no sliding pair on a turning guide")
+    g = bars[0]
+    for label in _labels(k):
+        i = entry(k, label)
+        vel = kinematic_polygon(mech, raw, i, label, "velocity")
+        acc = kinematic_polygon(mech, raw, i, label, "acceleration")
+        w = raw.links[g.bar].omega[i]
+        v_rel = next(v for v in vel.vectors if v.role == "sliding").value
+        cor = next(v for v in acc.vectors if v.role == "coriolis").value
+        # 2ω·v_rel turned 90° in the sense of ω: magnitude and direction
+        assert abs(cor) == pytest.approx(2 * abs(w) * abs(v_rel), rel=1e-12, abs=1e-15)
+        assert abs(cor - 2j * w * v_rel) <= 1e-12 * max(abs(cor), 1e-12)
+        # the sliding speed itself: the slider's distance along the bar, differentiated
+        h = 1e-6
+        phi = k.crank_angle[i]
+        s = [mech.solve(np.array([phi + d])).slides[g.slider].s[0] for d in (h, -h)]
+        ds = (s[0] - s[1]) / (2 * h / model.crank_omega)
+        assert abs(v_rel) == pytest.approx(abs(ds), rel=1e-6, abs=1e-9)
+        # the bar's point under the pin: rigid with the bar, differentiated twice
+        m0 = mech.solve(np.array([phi]))
+        r0 = m0.points[g.a].pos[0] - m0.points[g.pivot].pos[0]
+        th0 = m0.links[g.bar].angle[0]
+        hh = 1e-4
+
+        def bar_point(d):
+            m1 = mech.solve(np.array([phi + d]))
+            return m1.points[g.pivot].pos[0] + np.exp(1j * (m1.links[g.bar].angle[0] - th0)) * r0
+
+        dt = hh / model.crank_omega
+        a_fd = (bar_point(hh) - 2 * bar_point(0.0) + bar_point(-hh)) / dt ** 2
+        a4 = acc.points[f"{g.a.lower()}{g.bar}'"]
+        scale = max(abs(z) for z in acc.points.values())
+        assert abs(a4 - a_fd) <= 1e-5 * scale, label
+
+
+def _power_torque(model, raw, forces, i):
+    """−Σ P / ω: the balancing torque from the power of every load (no reaction used)."""
+    total = 0.0
+    for b in model.bodies:
+        if b.mass:
+            s = raw.points[b.com]
+            f = -b.mass * s.acc[i] - 1j * b.mass * model.gravity
+            total += (f * np.conj(s.vel[i])).real
+        if b.inertia:
+            w = raw.links[b.link]
+            total += -b.inertia * w.alpha[i] * w.omega[i]
+    for j, r in enumerate(model.resistances):
+        f = forces.resistance[f"R{j + 1}"][i] * np.exp(1j * r.direction)
+        total += (f * np.conj(raw.points[r.point].vel[i])).real
+    return -total / model.crank_omega
+
+
+def test_force_polygons_close_and_the_crank_balances_the_power(run):
+    name, (model, k, raw, forces, fly) = run
+    groups = [g for g in model.mechanism.groups if g.links]
+    for label in _labels(k):
+        i = entry(k, label)
+        ps = polygons(model, k, raw, forces, label)
+        fps = [p for p in ps if p.kind == "force"]
+        assert [p.group for p in fps] == [g.name for g in groups]
+        for pg in fps:
+            if not pg.vectors:          # no load at all (the lock-beam feed): nothing to close
+                assert name == "lockbeam"
+                continue
+            scale = max(abs(v.value) for v in pg.vectors)
+            total = sum(v.value for v in pg.vectors if v.role != "internal")
+            assert abs(total) <= 1e-9 * scale, (name, label, pg.group)
+            assert abs(pg.points[pg.vectors[-1].head] if pg.vectors[-1].role != "internal"
+                       else 0j) <= 1e-9 * scale
+            _check_closure(pg, scale)
+        crank = fps[0]
+        assert isinstance(groups[0], Crank)
+        mb = crank.moments["Mb"]
+        ref = _power_torque(model, raw, forces, i)
+        peak = max(np.max(np.abs(forces.balancing_torque)), 1e-9)
+        assert abs(mb - ref) <= 1e-8 * peak, (name, label, mb, ref)
+
+
+def _text_boxes(sheet):
+    boxes = []
+    for t in sheet.entities:
+        if not isinstance(t, Text) or t.angle:
+            continue
+        wd, ht = text_width(t.text, t.height), t.height
+        cx = {"left": t.position.real + wd / 2, "center": t.position.real,
+              "right": t.position.real - wd / 2}[t.halign]
+        cy = {"bottom": t.position.imag + ht / 2, "middle": t.position.imag,
+              "top": t.position.imag - ht / 2}[t.valign]
+        boxes.append(((cx - wd / 2, cy - ht / 2, cx + wd / 2, cy + ht / 2), t.text))
+    return boxes
+
+
+def test_sheet_has_no_overlaps_and_the_dxf_the_same_entities(run, tmp_path):
+    ezdxf = pytest.importorskip("ezdxf")
+    from mechdesign.render.sheet_dxf import write_dxf
+
+    name, (model, k, raw, forces, fly) = run
+    s, scales = analysis_sheet(model, k, raw, forces, fly, INFO, "zh")
+    assert scales["length"] >= 1
+    chosen = default_positions(k)
+    assert len(chosen) == 2
+    n_groups = sum(1 for g in model.mechanism.groups if g.links)
+    assert sum(1 for key in scales if key.startswith("force_")) == 2 * n_groups
+    # everything inside the sheet, everything but the frame inside the border
+    w, h = SIZES["A1"]
+    x0, y0, x1, y1 = s.inner
+    for e in s.entities:
+        for z in [getattr(e, a) for a in ("p0", "p1", "position", "center") if hasattr(e, a)]:
+            assert 0 <= z.real <= w and 0 <= z.imag <= h
+            if getattr(e, "layer", "") != "FRAME":
+                assert x0 <= z.real <= x1 and y0 <= z.imag <= y1, (name, e)
+    boxes = _text_boxes(s)
+    clashes = [(a[1], b[1]) for j, a in enumerate(boxes) for b in boxes[j + 1:]
+               if boxes_overlap(a[0], b[0], -0.3)]
+    assert not clashes, (name, clashes[:10])
+    # the polygon cells (thin frames) do not overlap one another
+    cells = [e for e in s.entities if isinstance(e, Polyline) and e.closed and e.weight == 0.13]
+    assert len(cells) == 4 + 2 * n_groups
+    rects = [(min(p.real for p in c.points), min(p.imag for p in c.points),
+              max(p.real for p in c.points), max(p.imag for p in c.points)) for c in cells]
+    for j, a in enumerate(rects):
+        for b in rects[j + 1:]:
+            assert not boxes_overlap(a, b), (name, a, b)
+    path = write_dxf(s, tmp_path / "analysis.dxf", INFO.drawing)
+    doc = ezdxf.readfile(path)
+    msp = doc.modelspace()
+    kinds = Counter(type(e).__name__ for e in s.entities)
+    dxf = Counter(e.dxftype() for e in msp)
+    assert dxf["LINE"] == kinds[Line.__name__]
+    assert dxf["LWPOLYLINE"] == kinds[Polyline.__name__]
+    assert dxf["CIRCLE"] == kinds[Circle.__name__]
+    assert dxf["ARC"] == kinds[Arc.__name__]
+    assert dxf["HATCH"] == kinds[Fill.__name__]
+    assert dxf["TEXT"] == kinds[Text.__name__]
+    assert dxf["DIMENSION"] == kinds[Dimension.__name__]
+    texts = {e.dxf.text for e in msp.query("TEXT")}
+    assert "张三" in texts and INFO.drawing in texts
+    # the velocity polygon at the first position is drawn at the μv written above it
+    mu = scales[f"velocity_{chosen[0]}"]
+    assert any(f"μv = {mu:g} (m/s)/mm" == t for t in texts)
+    vel = polygons(model, k, raw, forces, chosen[0])[0]
+    vecs = np.array([complex(e.dxf.end.x - e.dxf.start.x, e.dxf.end.y - e.dxf.start.y)
+                     for e in msp.query("LINE[layer=='VECTORS']")])
+    for v in vel.vectors:
+        want = v.value / mu
+        if abs(want) > 1e-6:
+            assert np.min(np.abs(vecs - want)) < 1e-6, (name, v.name)
