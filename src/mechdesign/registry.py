@@ -30,6 +30,7 @@ class Entry:
     # (zh label, en label, unit, dotted path in the results document, factor SI → unit)
     summary: tuple = ()
     template: str = ""          # report template stem (default: the machine's name)
+    results: str = ""           # "module:Class" of the typed results document
 
     @property
     def template_stem(self) -> str:

@@ -41,3 +41,25 @@ def _number(x: float) -> float | None:
 
 def dumps(document: dict) -> str:
     return json.dumps(to_plain(document), ensure_ascii=False, indent=1)
+
+
+# ------------------------------------------------------------------ typed results with units
+
+SCHEMA = "mechdesign.results/2"
+UNITS_NOTE = "SI: m, s, rad, kg, N, N·m, J, W; complex vectors as [x, y]"
+
+
+def q(unit: str, doc: str = "", *, default: Any = dataclasses.MISSING,
+      default_factory: Any = dataclasses.MISSING) -> Any:
+    """A result field that states its unit (and meaning) in its metadata.
+
+    ``unit`` is the SI unit of a number or array ("m", "rad", "N·m", "kg·m²", "rpm" where the
+    course's formula needs it), "1" for a pure number, "" for text, flags and structure.
+    ``docs/results.md`` is generated from these (``python -m mechdesign.results_docs``).
+    """
+    return dataclasses.field(default=default, default_factory=default_factory,
+                             metadata={"unit": unit, "doc": doc})
+
+
+def unit_of(field: dataclasses.Field) -> str | None:
+    return field.metadata.get("unit")
