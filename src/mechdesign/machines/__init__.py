@@ -19,6 +19,10 @@ class Machine:
     stages: list[Stage] | Callable[[object], list[Stage]]   # or a function of the parameters
     document: Callable[[dict], dict]
     report_module: str
+    #: Feasibility checks run once per run after validation: ``checks(params, keep)`` →
+    #: every problem (BriefProblem at its brief field); what they compute goes into ``keep``,
+    #: which the stages find as ``results["checked"]``. None: the machine has none.
+    checks: Callable | None = None
 
 
 def _shaper() -> Machine:
@@ -73,7 +77,7 @@ def _furnace_pusher() -> Machine:
     from . import furnace
 
     return Machine("furnace_pusher", furnace_to_si, furnace.stages, furnace.results_document,
-                   "mechdesign.render.furnace_report")
+                   "mechdesign.render.furnace_report", furnace.checks)
 
 
 def _die_cutter() -> Machine:
@@ -81,7 +85,7 @@ def _die_cutter() -> Machine:
     from . import die_cutter
 
     return Machine("die_cutter", die_cutter_to_si, die_cutter.stages, die_cutter.results_document,
-                   "mechdesign.render.die_cutter_report")
+                   "mechdesign.render.die_cutter_report", die_cutter.checks)
 
 
 def _lockbeam() -> Machine:
@@ -89,7 +93,7 @@ def _lockbeam() -> Machine:
     from . import lockbeam
 
     return Machine("lockbeam", lockbeam_to_si, lockbeam.stages, lockbeam.results_document,
-                   "mechdesign.render.lockbeam_report")
+                   "mechdesign.render.lockbeam_report", lockbeam.checks)
 
 
 MACHINES: dict[str, Callable[[], Machine]] = {
