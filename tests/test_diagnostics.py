@@ -21,7 +21,8 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from mechdesign.brief.loader import BriefError, parse_brief, read_brief_data
+from mechdesign.brief.loader import (BriefError, FeasibilityError, Variant, parse_brief,
+                                     read_brief_data)
 from mechdesign.core.cam import CamDesignError
 from mechdesign.core.cycle import CycleError
 from mechdesign.core.drive import DriveDesignError
@@ -31,7 +32,7 @@ from mechdesign.core.intermittent import IntermittentDesignError
 from mechdesign.core.mechanism import AssemblyError
 from mechdesign.machines import get_machine, stages_for
 from mechdesign.pipeline import run_stages
-from mechdesign.runner import describe_design_error
+from mechdesign.runner import describe_design_error, feasibility
 
 DESIGNS = Path(__file__).resolve().parents[1] / "designs"
 REPORT = {"title": "t", "student": "s"}
@@ -65,6 +66,16 @@ def brief_error(data: dict) -> BriefError:
     with pytest.raises(BriefError) as info:
         parse_brief(data, "x.yaml")
     return info.value
+
+
+def infeasible(data: dict) -> FeasibilityError:
+    """A valid brief whose data admit no design: validation accepts it (it runs no
+    synthesis), the run's feasibility checks (once, after validation) report it."""
+    b = parse_brief(data, "x.yaml")
+    m = get_machine(b.machine)
+    problems, _ = feasibility(m, m.to_params(b), Variant(b, None, ()))
+    assert problems
+    return FeasibilityError("x.yaml", problems)
 
 
 def both(exc_or_finding, names: tuple[str, ...] = ()) -> tuple[str, str]:
@@ -183,7 +194,7 @@ def test_guide_bar_offset_in_the_lockbeam_feed():
     offset of 60 mm exceeds A's least distance from O3, |d − a| = 100 − 50 = 50 mm."""
     data = example("lockbeam.yaml")
     data["feed_linkage"]["groups"][0]["offset_mm"] = 60
-    (p,) = brief_error(data).problems
+    (p,) = infeasible(data).problems
     assert p.path == "feed_linkage.groups"
     for text, words in ((p.allowed, ("guide bar", "offset 60 mm", "|d − a| = 50 mm",
                                      "at most 50 mm", "crank angle")),
@@ -258,7 +269,7 @@ def test_furnace_stroke_beyond_the_rocker_chord():
     """H = 2400 mm cannot be a chord of C's arc with DC = 1150 mm: 2·DC = 2300 mm."""
     data = example("furnace_pusher.yaml")
     data["pusher"]["stroke_H_mm"] = 2400
-    (p,) = brief_error(data).problems
+    (p,) = infeasible(data).problems
     assert "2·DC = 2300 mm" in p.allowed and "2·DC = 2300 mm" in p.allowed_zh
     assert "pusher.rocker_DC_mm" in p.allowed_zh and "要求摇杆 DC 长于 H/2" in p.allowed_zh
 
@@ -266,7 +277,7 @@ def test_furnace_stroke_beyond_the_rocker_chord():
 def test_lockbeam_bending_synthesis_without_a_solution():
     data = example("lockbeam.yaml")
     data["bending"]["link_length_range_mm"] = [20, 30]
-    (p,) = brief_error(data).problems
+    (p,) = infeasible(data).problems
     assert p.path == "bending.start"
     assert "widen the length range" in p.allowed and "20 and 30 mm" in p.allowed
     assert "综合无实解" in p.allowed_zh and "应放宽杆长范围" in p.allowed_zh

@@ -306,7 +306,6 @@ def test_feed_placed_in_the_cutting_zone_is_a_finding_not_an_error():
 
 @pytest.mark.parametrize("changes, where, says", [
     ({"chain__bar_spacing_mm": 600}, "chain.bar_spacing_mm", "609.60"),
-    ({"press__stroke_H_mm": 400}, "press", "cannot be reached"),
     ({"press__clearance_mm": 3}, "press.clearance_mm", "pressing travel"),
     ({"press__clearance_mm": 60}, "press.clearance_mm", "stroke"),
     ({"incomplete_gear__motion_start_deg": 10}, "incomplete_gear.motion_start_deg",
@@ -320,6 +319,22 @@ def test_bad_briefs_name_the_field(changes, where, says):
         parse_brief(edited(**changes))
     text = str(exc.value)
     assert where in text and says in text
+
+
+def test_press_that_cannot_be_built_is_rejected_by_run_not_by_validation(tmp_path):
+    """H = 400 mm is beyond what CB and BD can lift: the synthesis (run once, in the run's
+    feasibility checks) says so at press.stroke_H_mm; validation runs no synthesis."""
+    data = edited(press__stroke_H_mm=400)
+    parse_brief(data)
+    path = tmp_path / "bad.yaml"
+    path.write_text(yaml.safe_dump(data, allow_unicode=True), encoding="utf-8")
+    result = CliRunner().invoke(app, ["run", str(path), "-o", str(tmp_path / "out"), "-f", "md",
+                                      "--lang", "en"])
+    assert result.exit_code == 2
+    text = result.output
+    assert "press" in text and "cannot be reached" in text
+    assert "press.stroke_H_mm: 400 — stroke_H_mm = 400 cannot be reached" in text
+    assert "Traceback" not in text and not (tmp_path / "out").exists()
 
 
 def test_cam_programme_must_open_hold_close_rest():

@@ -31,6 +31,7 @@ class Entry:
     summary: tuple = ()
     template: str = ""          # report template stem (default: the machine's name)
     results: str = ""           # "module:Class" of the typed results document
+    checks: str = ""            # "module:function" feasibility checks(params, keep), run once
 
     @property
     def template_stem(self) -> str:
@@ -65,7 +66,8 @@ _ENTRIES: dict[str, Entry | str] = {
             ("K", "K", "", "linkage.time_ratio", 1.0),
             ("γ_min", "γ_min", "°", "synthesis.gamma_min", _DEG),
             ("平均功率", "mean power", "W", "linkage.mean_power", 1.0),
-            ("电动机", "motor", "", "drive.motor.designation", 1.0))),
+            ("电动机", "motor", "", "drive.motor.designation", 1.0)),
+        checks=_M + "furnace:checks"),
     "lockbeam": Entry(
         "lockbeam", _B + "lockbeam:LockbeamBrief", _B + "lockbeam:lockbeam_to_si",
         _M + "lockbeam:stages", _M + "lockbeam:results_document", _R + "lockbeam_report",
@@ -74,7 +76,8 @@ _ENTRIES: dict[str, Entry | str] = {
             ("送料行程", "feed stroke", "mm", "feed.output.stroke", _MM),
             ("送料 K", "feed K", "", "feed.time_ratio", 1.0),
             ("扳弯角（仿真）", "bend (simulated)", "°", "bending.bend_simulated", _DEG),
-            ("扳弯 γ_min", "bending γ_min", "°", "bending.gamma_min", _DEG))),
+            ("扳弯 γ_min", "bending γ_min", "°", "bending.gamma_min", _DEG)),
+        checks=_M + "lockbeam:checks"),
     "die_cutter": Entry(
         "die_cutter", _B + "die_cutter:DieCutterBrief", _B + "die_cutter:die_cutter_to_si",
         _M + "die_cutter:stages", _M + "die_cutter:results_document", _R + "die_cutter_report",
@@ -84,7 +87,8 @@ _ENTRIES: dict[str, Entry | str] = {
             ("K", "K", "", "press.time_ratio", 1.0),
             ("峰值扭矩", "peak torque", "N·m", "press.peak_torque", 1.0),
             ("飞轮 J_F", "flywheel J_F", "kg·m²", "flywheel.inertia", 1.0),
-            ("电动机", "motor", "", "drive.motor.designation", 1.0))),
+            ("电动机", "motor", "", "drive.motor.designation", 1.0)),
+        checks=_M + "die_cutter:checks"),
     "crank_rocker": Entry(
         "crank_rocker", _B + "crank_rocker:CrankRockerBrief",
         _B + "crank_rocker:crank_rocker_to_si", _M + "crank_rocker:stages",

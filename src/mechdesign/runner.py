@@ -136,7 +136,20 @@ def run_one(brief: Path, *, out_dir: Path | None = None, lang: str | None = None
                        message=f"{brief}: internal error while reading the brief: "
                                f"{type(exc).__name__}: {exc}", traceback=traceback.format_exc())
     try:
-        results, _ = run_stages(stages_for(machine, params), {"params": params, "brief": b},
+        problems, checked = feasibility(machine, params, variant)
+    except Exception as exc:  # noqa: BLE001 - a bug in a check, but never a bare traceback
+        return Outcome(**common, status="failed", exit_code=EXIT_FAILED,
+                       message=f"{brief}: internal error while checking the design: "
+                               f"{type(exc).__name__}: {exc}", traceback=traceback.format_exc())
+    if problems:
+        from .brief.loader import FeasibilityError
+
+        source = str(brief) if label is None else f"{brief} (group {label})"
+        return Outcome(**common, status="invalid", exit_code=EXIT_INVALID,
+                       message=FeasibilityError(source, problems).text(language))
+    try:
+        results, _ = run_stages(stages_for(machine, params),
+                                {"params": params, "brief": b, "checked": checked},
                                 stage_progress)
     except Exception as exc:  # noqa: BLE001 - classified below; never a bare traceback
         message = describe_design_error(exc, language)
@@ -188,6 +201,19 @@ def run_one(brief: Path, *, out_dir: Path | None = None, lang: str | None = None
                    warnings=tuple(warnings),
                    summary=tuple(summary_rows(machine.name, document, language)),
                    seconds=time.perf_counter() - start, compute_seconds=computed)
+
+
+def feasibility(machine, params, variant) -> tuple[list, dict]:
+    """Run the machine's feasibility checks once (after validation): every problem, each
+    at its brief field with its value (where a data group sets the field, reported there),
+    and what the checks computed for the stages (``results["checked"]``)."""
+    from .brief.loader import located_problems
+
+    checked: dict = {}
+    if machine.checks is None:
+        return [], checked
+    problems = machine.checks(params, checked)
+    return located_problems(problems, variant.brief, variant.located), checked
 
 
 def _with_group(document: dict, label: str | None) -> dict:

@@ -33,6 +33,36 @@ def parse_fraction(value, message: str):
     return float(Fraction(num) / (Fraction(den) if den is not None else 1))
 
 
+class Problems:
+    """The cross-field problems of one brief section, collected so that a model validator
+    reports every one of them at once, each at its exact field path (``loc`` relative to
+    the section), with the value found and what to change in English and Chinese.
+
+    Use: ``out = Problems(self)``, ``out.add(("field",), value, en, zh)`` for each problem,
+    then ``out.raise_any()`` at the end of the validator."""
+
+    def __init__(self, model: BaseModel):
+        self.title = type(model).__name__
+        self.items: list[tuple[tuple, object, str, str | None]] = []
+
+    def add(self, loc: tuple | str, value, en: str, zh: str | None = None) -> None:
+        if isinstance(value, float) and value.is_integer():   # as written: 3, not 3.0
+            value = int(value)
+        self.items.append(((loc,) if isinstance(loc, (str, int)) else tuple(loc), value, en, zh))
+
+    def raise_any(self) -> None:
+        """Raise one pydantic ValidationError carrying every problem (none: return)."""
+        if not self.items:
+            return
+        from pydantic import ValidationError
+        from pydantic_core import InitErrorDetails, PydanticCustomError
+
+        raise ValidationError.from_exception_data(self.title, [InitErrorDetails(
+            type=PydanticCustomError("value_error", "{msg}",
+                                     {"msg": en} if zh is None else {"msg": en, "zh": zh}),
+            loc=loc, input=value) for loc, value, en, zh in self.items])
+
+
 class StrictModel(BaseModel):
     """Base for brief sections: unknown keys forbidden, no silent type coercion."""
 

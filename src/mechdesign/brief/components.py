@@ -9,8 +9,8 @@ validated section into the core's objects in SI units, once:
 * :func:`morphology_to_si` → :class:`Morphology`
 * :func:`incomplete_gear_to_si` → :class:`mechdesign.core.intermittent.IncompleteGear`
 
-Every check that could make a computation fail runs in the validators, so a brief that
-loads always converts, and a problem is reported as a brief problem naming the field.
+The closed-form checks that could make a conversion fail run in the validators, so a brief
+that loads always converts, and a problem is reported as a brief problem naming the field.
 """
 from __future__ import annotations
 

@@ -9,7 +9,9 @@ One distribution shaft (分配轴), one revolution per sheet, drives three actua
 
 The drive (motor → V-belt → two-stage helical reducer → distribution shaft) is the shared
 ``drive:`` section. Course units in the brief (mm, °, rpm, kg, N, m for the cut length);
-:func:`die_cutter_to_si` converts once to the SI :class:`DieCutterParams`.
+:func:`die_cutter_to_si` converts once to the SI :class:`DieCutterParams`. Validation checks
+fields and the closed-form rules between them; whether the press can be synthesised is
+asked once per run by :func:`mechdesign.machines.die_cutter.checks`.
 """
 from __future__ import annotations
 
@@ -20,7 +22,7 @@ import numpy as np
 from pydantic import BeforeValidator, Field, model_validator
 
 from .cam import CamParams, CamSection, cam_to_si
-from .common import AnalysisSettings, ReportMeta, StrictModel, parse_fraction
+from .common import AnalysisSettings, Problems, ReportMeta, StrictModel, parse_fraction
 from .components import IncompleteGearSection
 from .drive import DriveParams, DriveSection, drive_to_si
 
@@ -135,10 +137,13 @@ class Timing(StrictModel):
 
     @model_validator(mode="after")
     def _angles(self):
+        out = Problems(self)
         for name in ("feed_start_deg", "gripper_open_deg"):
             v = getattr(self, name)
             if v != "auto" and not 0.0 <= v < 360.0:
-                raise ValueError(f"{name} = {v:g}: give an angle 0 ≤ value < 360 or 'auto'")
+                out.add(name, v, f"{name} = {v:g}: give an angle 0 ≤ value < 360 or 'auto'",
+                        f"{name} = {v:g}：应给出 0 ≤ 值 < 360 的角度，或 'auto'")
+        out.raise_any()
         return self
 
 
@@ -166,66 +171,77 @@ class DieCutterBrief(StrictModel):
     analysis: AnalysisSettings = AnalysisSettings()
 
     @model_validator(mode="after")
-    def _press_can_be_built(self):
-        from ..core.fourbar import SynthesisError
-        from ..machines.die_cutter import toggle_synthesis
-
-        pr = self.press
-        try:
-            toggle_synthesis(_press_geometry(self))
-        except SynthesisError as exc:
-            raise ValueError(f"press: {exc}") from None
-        travel = self.pressing_travel_mm
-        if not travel < pr.clearance_mm:
-            raise ValueError(f"press.clearance_mm = {pr.clearance_mm:g} must exceed the pressing "
-                             f"travel {travel:g} mm (cutting.pressing_travel_mm, default the board "
-                             "thickness): the platen presses while the sheet is in the die")
-        if not pr.clearance_mm < pr.stroke_H_mm:
-            raise ValueError(f"press.clearance_mm = {pr.clearance_mm:g} must be below the stroke "
-                             f"stroke_H_mm = {pr.stroke_H_mm:g}: otherwise the platen is never clear")
-        return self
-
-    @model_validator(mode="after")
-    def _cam_on_distribution_shaft(self):
-        c = self.gripper_cam
-        if c.rotation != self.press.crank_rotation:
-            raise ValueError(f"gripper_cam.rotation is {c.rotation!r} but the cam turns with the "
-                             f"distribution shaft: press.crank_rotation is {self.press.crank_rotation!r}")
-        if c.speed_rpm is not None:
-            raise ValueError("gripper_cam.speed_rpm: the cam turns with the distribution shaft "
-                             f"({self.shaft_rpm:g} rpm from production.sheets_per_hour); leave it out")
-        kinds = [s.motion for s in c.programme]
-        if kinds != ["rise", "dwell", "return", "dwell"]:
-            raise ValueError("gripper_cam.programme: the gripper cam opens, holds, closes and rests: "
-                             "give the segments rise, dwell, return, dwell (found "
-                             f"{', '.join(kinds)})")
-        return self
-
-    @model_validator(mode="after")
-    def _feed_matches_chain(self):
+    def _consistent(self):
+        """The rules between sections (closed form, no synthesis: whether the press can be
+        built is asked once per run by :func:`mechdesign.machines.die_cutter.checks`); every
+        problem is reported, each at its field."""
         from .components import incomplete_gear_to_si
 
+        out = Problems(self)
+        pr = self.press
+        travel = self.pressing_travel_mm
+        if not travel < pr.clearance_mm:
+            out.add(("press", "clearance_mm"), pr.clearance_mm,
+                    f"press.clearance_mm = {pr.clearance_mm:g} must exceed the pressing travel "
+                    f"{travel:g} mm (cutting.pressing_travel_mm, default the board thickness): the "
+                    "platen presses while the sheet is in the die",
+                    f"press.clearance_mm = {pr.clearance_mm:g} 须大于压紧行程 {travel:g} mm"
+                    "（cutting.pressing_travel_mm，默认为纸板厚度）：纸板在模内时动平台才施压")
+        if not pr.clearance_mm < pr.stroke_H_mm:
+            out.add(("press", "clearance_mm"), pr.clearance_mm,
+                    f"press.clearance_mm = {pr.clearance_mm:g} must be below the stroke "
+                    f"stroke_H_mm = {pr.stroke_H_mm:g}: otherwise the platen is never clear",
+                    f"press.clearance_mm = {pr.clearance_mm:g} 须小于行程 stroke_H_mm = "
+                    f"{pr.stroke_H_mm:g}：否则动平台永远让不开")
+        c = self.gripper_cam
+        if c.rotation != pr.crank_rotation:
+            out.add(("gripper_cam", "rotation"), c.rotation,
+                    f"gripper_cam.rotation is {c.rotation!r} but the cam turns with the "
+                    f"distribution shaft: press.crank_rotation is {pr.crank_rotation!r}",
+                    f"gripper_cam.rotation 为 {c.rotation!r}，但凸轮随分配轴转动："
+                    f"press.crank_rotation 为 {pr.crank_rotation!r}")
+        if c.speed_rpm is not None:
+            out.add(("gripper_cam", "speed_rpm"), c.speed_rpm,
+                    "gripper_cam.speed_rpm: the cam turns with the distribution shaft "
+                    f"({self.shaft_rpm:g} rpm from production.sheets_per_hour); leave it out",
+                    "gripper_cam.speed_rpm：凸轮随分配轴转动（由 production.sheets_per_hour 得 "
+                    f"{self.shaft_rpm:g} rpm）；请删去此项")
+        kinds = [s.motion for s in c.programme]
+        if kinds != ["rise", "dwell", "return", "dwell"]:
+            out.add(("gripper_cam", "programme"), ", ".join(kinds),
+                    "gripper_cam.programme: the gripper cam opens, holds, closes and rests: give "
+                    f"the segments rise, dwell, return, dwell (found {', '.join(kinds)})",
+                    "gripper_cam.programme：夹爪凸轮依次张开、保持、闭合、停歇：区段须为 rise, dwell, "
+                    f"return, dwell（现为 {', '.join(kinds)}）")
         if "motion_start_deg" in self.incomplete_gear.model_fields_set:
-            raise ValueError("incomplete_gear.motion_start_deg: place the incomplete gear with "
-                             "timing.feed_start_deg (an angle or auto) instead")
+            out.add(("incomplete_gear", "motion_start_deg"), self.incomplete_gear.motion_start_deg,
+                    "incomplete_gear.motion_start_deg: place the incomplete gear with "
+                    "timing.feed_start_deg (an angle or auto) instead",
+                    "incomplete_gear.motion_start_deg：不完全齿轮的安装角请用 "
+                    "timing.feed_start_deg 给出（角度或 auto）")
         g = incomplete_gear_to_si(self.incomplete_gear)
         ch = self.chain
         feed = g.advance / (2 * np.pi) * ch.sprocket_teeth * ch.pitch_mm
         if abs(feed - ch.bar_spacing_mm) > 0.01:
             links = ch.bar_spacing_mm / ch.pitch_mm
-            raise ValueError(
-                f"chain.bar_spacing_mm = {ch.bar_spacing_mm:g}: the incomplete gear turns the "
-                f"sprocket by z1'/z2 = {g.teeth}/{g.z2} of a turn per cycle, which moves the chain "
-                f"{g.teeth}/{g.z2} × {ch.sprocket_teeth} × {ch.pitch_mm:g} = {feed:.2f} mm; the bar "
-                f"spacing ({links:.3g} pitches) must equal it: change the teeth, the sprocket or the spacing")
-        return self
-
-    @model_validator(mode="after")
-    def _flywheel_shaft_exists(self):
+            out.add(("chain", "bar_spacing_mm"), ch.bar_spacing_mm,
+                    f"chain.bar_spacing_mm = {ch.bar_spacing_mm:g}: the incomplete gear turns the "
+                    f"sprocket by z1'/z2 = {g.teeth}/{g.z2} of a turn per cycle, which moves the "
+                    f"chain {g.teeth}/{g.z2} × {ch.sprocket_teeth} × {ch.pitch_mm:g} = {feed:.2f} mm; "
+                    f"the bar spacing ({links:.3g} pitches) must equal it: change the teeth, the "
+                    "sprocket or the spacing",
+                    f"chain.bar_spacing_mm = {ch.bar_spacing_mm:g}：不完全齿轮每个循环使链轮转过 "
+                    f"z1'/z2 = {g.teeth}/{g.z2} 圈，链条移动 {g.teeth}/{g.z2} × {ch.sprocket_teeth} × "
+                    f"{ch.pitch_mm:g} = {feed:.2f} mm；夹爪杆间距（{links:.3g} 个节距）须与之相等："
+                    "应改变齿数、链轮齿数或间距")
         n = len(self.drive.stages)
         if self.flywheel.shaft > n:
-            raise ValueError(f"flywheel.shaft = {self.flywheel.shaft}: the drive has {n} stage(s), "
-                             f"so its shafts are 0 (motor) … {n} (distribution shaft)")
+            out.add(("flywheel", "shaft"), self.flywheel.shaft,
+                    f"flywheel.shaft = {self.flywheel.shaft}: the drive has {n} stage(s), so its "
+                    f"shafts are 0 (motor) … {n} (distribution shaft)",
+                    f"flywheel.shaft = {self.flywheel.shaft}：传动装置有 {n} 级，其轴为 0（电动机）… "
+                    f"{n}（分配轴）")
+        out.raise_any()
         return self
 
     @property

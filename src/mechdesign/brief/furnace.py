@@ -1,9 +1,10 @@
 """The heating-furnace pusher (加热炉推料机) brief: a crank-rocker O1A–AB–rocker DBC driving
 the pushing slider E through the link CE, with its drive (worm reducer + open gear pair).
 
-Course units in the brief; :func:`furnace_to_si` converts once to SI. The model validator
-runs the linkage synthesis itself, so data that admit no linkage are reported as brief
-problems naming the field, the value and what is allowed (never a traceback).
+Course units in the brief; :func:`furnace_to_si` converts once to SI. Validation checks
+the fields alone; whether the data admit a linkage is the synthesis's question, asked
+once per run by :func:`mechdesign.machines.furnace.checks`, which reports every problem
+by its brief field, with the value and what to change.
 """
 from __future__ import annotations
 
@@ -11,7 +12,7 @@ from dataclasses import dataclass
 from typing import Annotated, Literal, Optional, Union
 
 import numpy as np
-from pydantic import Field, model_validator
+from pydantic import Field
 
 from .common import AnalysisSettings, ReportMeta, StrictModel
 from .drive import DriveParams, DriveSection, drive_to_si
@@ -53,19 +54,6 @@ class PusherSection(StrictModel):
         "over the working stroke, as the seed intended"))
     transmission_angle_min_deg: float = Field(40.0, gt=0, lt=90, description=(
         "Smallest acceptable transmission angle of the four-bar over the cycle [°] (textbook: 40)"))
-
-    @model_validator(mode="after")
-    def _linkage_exists(self):
-        """Run the synthesis on the data: any impossibility becomes a brief problem that
-        names the field to change."""
-        from ..core.fourbar import SynthesisError
-        from ..machines.furnace import synthesize
-
-        try:
-            synthesize(pusher_to_si(self))
-        except SynthesisError as exc:
-            raise ValueError(str(exc)) from None
-        return self
 
 
 class FurnaceBrief(StrictModel):

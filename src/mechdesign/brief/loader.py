@@ -21,7 +21,7 @@ from __future__ import annotations
 import importlib
 import re
 from collections.abc import Mapping
-from dataclasses import dataclass, replace
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import Any, get_args
 
@@ -67,6 +67,8 @@ class BriefProblem:
     allowed_zh: str | None = None
 
     def __str__(self) -> str:
+        if not self.value:
+            return f"{self.path}: {self.allowed}"
         return f"{self.path}: {self.value} — {self.allowed}"
 
     def text(self, lang: str) -> str:
@@ -74,6 +76,8 @@ class BriefProblem:
         if lang != "zh":
             return str(self)
         value = "缺少" if self.value == "missing" else self.value
+        if not value:
+            return f"{self.path}：{self.allowed_zh or self.allowed}"
         return f"{self.path}：{value} — {self.allowed_zh or self.allowed}"
 
 
@@ -91,6 +95,60 @@ class BriefError(ValueError):
             return str(self)
         head = f"{self.source}：任务书中有 {len(self.problems)} 处问题"
         return "\n".join([head] + [f"  {p.text('zh')}" for p in self.problems])
+
+
+class FeasibilityError(BriefError):
+    """The brief is valid but its data admit no design: every problem the machine's
+    feasibility checks found (run once per run, after validation), each at its field."""
+
+    def __init__(self, source: str, problems: list[BriefProblem]):
+        super().__init__(source, problems)
+        n = len(problems)
+        head = (f"{source}: the design is infeasible with the brief's data "
+                f"({n} problem{'s' if n != 1 else ''})")
+        self.args = ("\n".join([head] + [f"  {p}" for p in problems]),)
+
+    def __str__(self) -> str:
+        return self.args[0]
+
+    def text(self, lang: str) -> str:
+        if lang != "zh":
+            return str(self)
+        head = f"{self.source}：按任务书数据无法完成设计（{len(self.problems)} 处问题）"
+        return "\n".join([head] + [f"  {p.text('zh')}" for p in self.problems])
+
+
+def value_at(brief: BaseModel, path: str) -> str:
+    """The value at the dotted field ``path`` of a validated brief, as a problem line shows
+    it ("" for a whole section or a path that is not there)."""
+    node: Any = brief
+    for part in path.split("."):
+        if isinstance(node, BaseModel):
+            fields = type(node).model_fields
+            name = next((k for k, f in fields.items() if part in (k, f.alias)), None)
+            if name is None:
+                return ""
+            node = getattr(node, name)
+        elif isinstance(node, (list, tuple)) and part.isdigit() and int(part) < len(node):
+            node = node[int(part)]
+        else:
+            return ""
+    if isinstance(node, (BaseModel, list, tuple, dict)):
+        return ""
+    return f"{node:g}" if isinstance(node, float) else _show(node)
+
+
+def located_problems(problems: list[BriefProblem], brief: BaseModel,
+                     located: dict[str, str] | None = None) -> list[BriefProblem]:
+    """``problems`` found on a validated brief, each with its value filled in from the
+    brief where the check left it empty and, when a data group set the field, reported
+    where the group sets it (``groups.variants.3.pusher.stroke_H_mm``)."""
+    out = []
+    for p in problems:
+        if not p.value:
+            p = replace(p, value=value_at(brief, p.path))
+        out.append(_relocate(p, located) if located else p)
+    return out
 
 
 #: Limits on a brief file, far above any real brief (the largest example has 11 kB and
@@ -342,6 +400,8 @@ def _zh_allowed(kind: str, err: dict, msg: str) -> str | None:
         from ..core.errors import chinese_of
 
         ctx = err.get("ctx") or {}
+        if isinstance(ctx.get("zh"), str):     # a check that wrote its Chinese text (Problems)
+            return ctx["zh"]
         return chinese_of(msg, ctx.get("error") if isinstance(ctx.get("error"), BaseException)
                           else None)
     template = _ZH.get(kind)
@@ -593,6 +653,8 @@ class Variant:
     brief: BaseModel
     group: str | None
     groups: tuple[str, ...]
+    #: field path → where the group sets it (for problems found later, e.g. by the checks)
+    located: dict[str, str] = field(default_factory=dict)
 
 
 def _groups_of(data: Any, source: str) -> tuple[Any, GroupTable | None]:
@@ -642,11 +704,12 @@ def _with_created(original: Any, located: dict[str, str]) -> dict[str, str]:
     return {**created, **located}
 
 
-def load_variant(path: str | Path, group: str | None = None) -> Variant:
+def load_variant(path: str | Path, group: str | None = None, *, data: Any = _MISSING) -> Variant:
     """Read a brief, apply group ``group`` (default: the table's ``default``, else the
-    brief as written) and validate it; raise BriefError (never a bare traceback)."""
+    brief as written) and validate it; raise BriefError (never a bare traceback).
+    ``data``: the file's YAML data when already read (:func:`read_brief_data`)."""
     source = str(path)
-    data, table = _groups_of(read_brief_data(path), source)
+    data, table = _groups_of(read_brief_data(path) if data is _MISSING else data, source)
     located: dict[str, str] = {}
     try:
         label = choose(table, group)
@@ -657,7 +720,7 @@ def load_variant(path: str | Path, group: str | None = None) -> Variant:
     except GroupError as exc:
         raise BriefError(source, [BriefProblem(exc.path, exc.value, exc.allowed)]) from None
     brief = parse_brief(data, source, located)
-    return Variant(brief, label, tuple(table.labels) if table is not None else ())
+    return Variant(brief, label, tuple(table.labels) if table is not None else (), located)
 
 
 def load_brief(path: str | Path, group: str | None = None) -> BaseModel:

@@ -11,8 +11,9 @@ morphological matrix (``morphology``) document the scheme.
 
 Course units in the brief (mm, °, rpm, 1/min); :func:`lockbeam_to_si` converts once to
 :class:`LockbeamParams` in SI units. Every cross-section rule (speeds, the cycle diagram
-against the cam programmes, the bending linkage's synthesis) is checked when the brief is
-loaded, so a brief that loads always computes.
+against the cam programmes) is checked when the brief is loaded; whether the feed
+linkage assembles and the bending linkage can be synthesised is asked once per run by
+:func:`mechdesign.machines.lockbeam.checks` (validation never solves a linkage).
 """
 from __future__ import annotations
 
@@ -24,7 +25,7 @@ import numpy as np
 from pydantic import Field, model_validator
 
 from .cam import CamParams, CamSection, cam_to_si
-from .common import AnalysisSettings, ReportMeta, StrictModel
+from .common import AnalysisSettings, Problems, ReportMeta, StrictModel
 from .components import CycleSection, MorphologySection, cycle_to_si, morphology_to_si
 from .linkage import LinkageSection, linkage_to_model
 
@@ -46,9 +47,14 @@ class ProductionData(StrictModel):
 
     @model_validator(mode="after")
     def _groove_inside(self):
+        out = Problems(self)
         if self.groove_diameter_mm >= self.part_diameter_mm:
-            raise ValueError(f"groove_diameter_mm = {self.groove_diameter_mm:g} must be smaller "
-                             f"than part_diameter_mm = {self.part_diameter_mm:g}")
+            out.add("groove_diameter_mm", self.groove_diameter_mm,
+                    f"groove_diameter_mm = {self.groove_diameter_mm:g} must be smaller than "
+                    f"part_diameter_mm = {self.part_diameter_mm:g}",
+                    f"groove_diameter_mm = {self.groove_diameter_mm:g} 须小于 part_diameter_mm = "
+                    f"{self.part_diameter_mm:g}")
+        out.raise_any()
         return self
 
 
@@ -133,16 +139,21 @@ class BendingSection(StrictModel):
 
     @model_validator(mode="after")
     def _swing(self):
+        out = Problems(self)
         swing = self.bending_angle_deg * self.bending_wheel_diameter_mm / self.driving_wheel_diameter_mm
         if not swing < 180.0:
-            raise ValueError(
-                f"the large wheel would have to turn {swing:.6g}° "
-                f"(= bending_angle_deg × bending_wheel_diameter_mm / driving_wheel_diameter_mm); "
-                "a rocker swings less than 180°: use a larger driving wheel")
+            out.add("driving_wheel_diameter_mm", self.driving_wheel_diameter_mm,
+                    f"the large wheel would have to turn {swing:.6g}° "
+                    "(= bending_angle_deg × bending_wheel_diameter_mm / driving_wheel_diameter_mm); "
+                    "a rocker swings less than 180°: use a larger driving wheel",
+                    f"大链轮须转过 {swing:.6g}°（= bending_angle_deg × bending_wheel_diameter_mm / "
+                    "driving_wheel_diameter_mm）；摇杆的摆角小于 180°：应加大主动链轮")
         lo, hi = self.link_length_range_mm
         if not 0 < lo < hi:
-            raise ValueError(f"link_length_range_mm = [{lo:g}, {hi:g}] must be [min, max] with "
-                             "0 < min < max")
+            out.add("link_length_range_mm", f"[{lo:g}, {hi:g}]",
+                    f"link_length_range_mm = [{lo:g}, {hi:g}] must be [min, max] with 0 < min < max",
+                    f"link_length_range_mm = [{lo:g}, {hi:g}] 须为 [最小, 最大]，且 0 < 最小 < 最大")
+        out.raise_any()
         return self
 
 
@@ -165,58 +176,45 @@ class LockbeamBrief(StrictModel):
 
     @model_validator(mode="after")
     def _consistent(self):
+        """The rules between sections (closed form: no linkage is solved here; whether the
+        feed assembles and the bending linkage can be synthesised is asked once per run by
+        :func:`mechdesign.machines.lockbeam.checks`). Every problem is reported, each at
+        its field."""
+        out = Problems(self)
         rate = self.production.rate_per_min
         if self.cam.follower.motion != "translating":
-            _fail(("cam", "follower", "motion"), self.cam.follower.motion,
-                  "the positioning pin moves straight up and down: use a translating follower")
+            out.add(("cam", "follower", "motion"), self.cam.follower.motion,
+                    "the positioning pin moves straight up and down: use a translating follower",
+                    "定位销上下直线移动：应采用直动从动件（translating）")
         if self.bending_cam.follower.motion != "oscillating":
-            _fail(("bending_cam", "follower", "motion"), self.bending_cam.follower.motion,
-                  "the bending cam swings the four-bar's input rocker: use an oscillating follower")
+            out.add(("bending_cam", "follower", "motion"), self.bending_cam.follower.motion,
+                    "the bending cam swings the four-bar's input rocker: use an oscillating follower",
+                    "扳弯凸轮驱动四杆机构的输入摇杆摆动：应采用摆动从动件（oscillating）")
         for loc, value in ((("cam", "speed_rpm"), self.cam.speed_rpm),
                            (("bending_cam", "speed_rpm"), self.bending_cam.speed_rpm),
                            (("cycle", "shaft_speed_rpm"), self.cycle.shaft_speed_rpm),
                            (("feed_linkage", "crank", "speed_rpm"), self.feed_linkage.crank.speed_rpm)):
             if value is not None and abs(value - rate) > 1e-9 * rate:
-                _fail(loc, value, f"{value:g} rpm, but it turns with the main shaft, once per part: "
-                                  f"it must be production.rate_per_min = {rate:g} (or be left out)")
-        _check_feed(self)
-        _check_cycle(self)
-        _check_bending(self)
+                out.add(loc, value,
+                        f"{value:g} rpm, but it turns with the main shaft, once per part: it must "
+                        f"be production.rate_per_min = {rate:g} (or be left out)",
+                        f"{value:g} rpm，但它随主轴转动、每件一转：须等于 production.rate_per_min = "
+                        f"{rate:g}（或不写）")
+        out_point = self.feed_linkage.output
+        if out_point.point is None:
+            out.add(("feed_linkage", "output", "link"), out_point.link,
+                    "the feed's output is the feed slider: give output.point (its pin), not a link",
+                    "送料机构的输出是送料滑块：应给出 output.point（其铰点），而不是构件")
+        _check_cycle(self, out)
+        out.raise_any()
         return self
-
-
-def _fail(loc: tuple, value, message: str):
-    """Raise a validation error located at ``loc`` (so the brief problem names the field)."""
-    from pydantic import ValidationError
-    from pydantic_core import InitErrorDetails, PydanticCustomError
-
-    raise ValidationError.from_exception_data("LockbeamBrief", [InitErrorDetails(
-        type=PydanticCustomError("value_error", "{msg}", {"msg": message}), loc=loc, input=value)])
-
-
-def _check_feed(b: LockbeamBrief) -> None:
-    """The feed's output is the slider (a point) and the linkage assembles and reciprocates."""
-    from ..core.mechanism import AssemblyError
-    from ..machines.linkage import motion
-
-    out = b.feed_linkage.output
-    if out.point is None:
-        _fail(("feed_linkage", "output", "link"), out.link,
-              "the feed's output is the feed slider: give output.point (its pin), not a link")
-    model = linkage_to_model(b.feed_linkage, b.analysis)
-    try:
-        motion(model)
-    except AssemblyError as exc:
-        _fail(("feed_linkage", "groups"), exc.group, str(exc))
-    except ValueError as exc:
-        _fail(("feed_linkage", "output", "point"), out.point, str(exc))
 
 
 def _phases_text(phases) -> str:
     return ", ".join(f"{s} {np.degrees(w):.6g}°" for s, w in phases)
 
 
-def _check_cycle(b: LockbeamBrief) -> None:
+def _check_cycle(b: LockbeamBrief, out: Problems) -> None:
     """The cycle diagram names the three actuators, and the pin's and the bending arm's
     phases are exactly those of their cams."""
     from ..core.cycle import actuator_from_cam_programme
@@ -224,16 +222,22 @@ def _check_cycle(b: LockbeamBrief) -> None:
     keys = [a.key for a in b.cycle.actuators]
     missing = [k for k in (FEED, PIN, BEND) if k not in keys]
     if missing:
-        _fail(("cycle", "actuators"), ", ".join(keys),
-              f"the lock-beam bender's diagram needs the actuators "
-              f"{', '.join(repr(k) for k in (FEED, PIN, BEND))}; missing "
-              f"{', '.join(repr(k) for k in missing)}")
-    feed = keys.index(FEED)
-    states = [p.state for p in b.cycle.actuators[feed].phases]
-    if sorted(states) != ["return", "rise"]:
-        _fail(("cycle", "actuators", feed, "phases"), ", ".join(states),
-              "the feed slider reciprocates without dwelling: give a rise (送料) and a return (退回)")
+        need = ", ".join(repr(k) for k in (FEED, PIN, BEND))
+        lack = ", ".join(repr(k) for k in missing)
+        out.add(("cycle", "actuators"), ", ".join(keys),
+                f"the lock-beam bender's diagram needs the actuators {need}; missing {lack}",
+                f"锁梁扳弯机的运动循环图须有执行构件 {need}；缺少 {lack}")
+    if FEED in keys:
+        feed = keys.index(FEED)
+        states = [p.state for p in b.cycle.actuators[feed].phases]
+        if sorted(states) != ["return", "rise"]:
+            out.add(("cycle", "actuators", feed, "phases"), ", ".join(states),
+                    "the feed slider reciprocates without dwelling: give a rise (送料) and a "
+                    "return (退回)",
+                    "送料滑块往复运动、没有停歇：应给出一个 rise（送料）和一个 return（退回）")
     for key, section, name in ((PIN, b.cam, "cam"), (BEND, b.bending_cam, "bending_cam")):
+        if key not in keys:
+            continue
         i = keys.index(key)
         act = b.cycle.actuators[i]
         prog = cam_to_si(section).programme
@@ -243,21 +247,11 @@ def _check_cycle(b: LockbeamBrief) -> None:
         same = len(want) == len(have) and all(
             sw == sh and abs(ww - wh) < 1e-9 for (sw, ww), (sh, wh) in zip(want, have))
         if not same:
-            _fail(("cycle", "actuators", i, "phases"), f"'{key}': {_phases_text(have)}",
-                  f"not what {name}.programme makes the follower do ({_phases_text(want)}); the "
-                  "cycle diagram must show the cam's programme from its δ = 0, placed at start_deg")
-
-
-def _check_bending(b: LockbeamBrief) -> None:
-    from ..core.fourbar import SynthesisError
-    from ..machines.lockbeam import synthesise_bending
-
-    try:
-        synthesise_bending(bending_params(b))
-    except SynthesisError as exc:
-        _fail(("bending", "start"), b.bending.start if isinstance(b.bending.start, str)
-              else f"input {b.bending.start.input_deg:g}°, output {b.bending.start.output_deg:g}°",
-              str(exc))
+            out.add(("cycle", "actuators", i, "phases"), f"'{key}': {_phases_text(have)}",
+                    f"not what {name}.programme makes the follower do ({_phases_text(want)}); the "
+                    "cycle diagram must show the cam's programme from its δ = 0, placed at start_deg",
+                    f"与 {name}.programme 给出的从动件运动（{_phases_text(want)}）不符；运动循环图须"
+                    "从凸轮的 δ = 0 起画出其运动规律，并置于 start_deg 处")
 
 
 # --------------------------------------------------------------------------- to SI

@@ -7,9 +7,10 @@ and the module that prepares the report (figures and template context).
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Callable
+from typing import TYPE_CHECKING, Callable
 
-from ..pipeline import Stage
+if TYPE_CHECKING:
+    from ..pipeline import Stage
 
 
 @dataclass(frozen=True)
@@ -19,6 +20,10 @@ class Machine:
     stages: list[Stage] | Callable[[object], list[Stage]]   # or a function of the parameters
     document: Callable[[dict], dict]
     report_module: str
+    #: Feasibility checks run once per run after validation: ``checks(params, keep)`` →
+    #: every problem (BriefProblem at its brief field); what they compute goes into ``keep``,
+    #: which the stages find as ``results["checked"]``. None: the machine has none.
+    checks: Callable | None = None
 
 
 def _from_registry(name: str) -> Machine:
@@ -26,7 +31,8 @@ def _from_registry(name: str) -> Machine:
 
     e = entry(name)
     stages = resolve(e.stages)
-    return Machine(e.name, resolve(e.to_params), stages, resolve(e.document), e.report)
+    return Machine(e.name, resolve(e.to_params), stages, resolve(e.document), e.report,
+                   resolve(e.checks) if e.checks else None)
 
 
 class _Machines(dict):

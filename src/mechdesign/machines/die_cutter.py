@@ -200,8 +200,36 @@ def build_press(d: ToggleDesign, p: DieCutterParams) -> LinkageModel:
                              "largest transmission angle)")})
 
 
-def synthesis(p: DieCutterParams) -> tuple[ToggleDesign, LinkageModel]:
-    d = toggle_synthesis(p.geometry)
+#: TogglePress fields a synthesis message may start with ("stroke_H_mm = 400 …").
+_PRESS_FIELDS = ("stroke_H_mm", "time_ratio_K", "toggle_CB_mm", "toggle_BD_mm",
+                 "toggle_angle_at_top_deg", "frame_O1C_mm")
+
+
+def checks(p: DieCutterParams, keep: dict | None = None) -> list:
+    """The feasibility checks of a run (after validation, once): can the toggle press be
+    synthesised? Every problem as a :class:`~mechdesign.brief.loader.BriefProblem` at its
+    brief field; the design is stored in ``keep["toggle"]`` for the synthesis stage."""
+    from ..brief.loader import BriefProblem
+
+    try:
+        d = toggle_synthesis(p.geometry)
+    except fourbar.SynthesisError as exc:
+        name = exc.en.split(" = ", 1)[0] if " = " in exc.en else ""
+        if name in _PRESS_FIELDS:
+            path = f"press.{name}"
+        elif exc.en.startswith("frame length") and p.geometry.frame is not None:
+            path = "press.frame_O1C_mm"
+        else:
+            path = "press"
+        return [BriefProblem(path, "", exc.en, exc.zh)]
+    if keep is not None:
+        keep["toggle"] = d
+    return []
+
+
+def synthesis(p: DieCutterParams, d: ToggleDesign | None = None) -> tuple[ToggleDesign, LinkageModel]:
+    """The press (``d``: its design when the checks already made it)."""
+    d = toggle_synthesis(p.geometry) if d is None else d
     return d, build_press(d, p)
 
 
@@ -573,7 +601,7 @@ def stages(params: DieCutterParams) -> list[Stage]:
              if s.key != "press_flywheel"]
     return [
         Stage(("toggle", "press_model"), "肘杆机构设计 / toggle press synthesis",
-              lambda r: synthesis(r["params"])),
+              lambda r: synthesis(r["params"], r.get("checked", {}).get("toggle"))),
         *press,
         Stage("amplification", "增力特性 / force amplification",
               lambda r: amplification(r["press_model"], r["toggle"], r["press"], r["press_raw"],

@@ -29,6 +29,7 @@ CE, 5 slider E, 6 frame.
 """
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass
 
 import numpy as np
@@ -426,8 +427,25 @@ def build_model(syn: PusherSynthesis, p: FurnaceParams) -> LinkageModel:
                              "(pusher.stroke_H_mm / pusher.rocker_DC_mm), pusher.frame_O1D_mm: auto")})
 
 
+def checks(p: FurnaceParams, keep: dict | None = None) -> list:
+    """The feasibility checks of a run (after validation, once): can the data make the
+    six-bar? Every problem as a :class:`~mechdesign.brief.loader.BriefProblem` at its brief
+    field (the value is filled in from the brief by the runner). The synthesis is stored
+    in ``keep["synthesis"]`` for :func:`synthesis_stage`, so it is not computed twice."""
+    from ..brief.loader import BriefProblem
+
+    try:
+        syn = synthesize(p.pusher)
+    except fb.SynthesisError as exc:
+        field = re.match(r"(pusher\.[A-Za-z_0-9]+) = ", exc.en)
+        return [BriefProblem(field.group(1) if field else "pusher", "", exc.en, exc.zh)]
+    if keep is not None:
+        keep["synthesis"] = syn
+    return []
+
+
 def synthesis_stage(r: dict):
-    syn = synthesize(r["params"].pusher)
+    syn = r.get("checked", {}).get("synthesis") or synthesize(r["params"].pusher)
     return syn, build_model(syn, r["params"])
 
 

@@ -268,9 +268,44 @@ class BendingResult:
     warnings: list
 
 
-def bending(p: LockbeamParams, bcam) -> BendingResult:
+def checks(p: LockbeamParams, keep: dict | None = None) -> list:
+    """The feasibility checks of a run (after validation, once): does the feed linkage
+    assemble over the turn, and can the bending four-bar be synthesised? Both are asked and
+    every problem returned as a :class:`~mechdesign.brief.loader.BriefProblem` at its brief
+    field. The results are stored in ``keep`` (``feed_motion``, ``bending_synthesis``)
+    for the stages, so nothing is computed twice."""
+    from ..brief.loader import BriefProblem
+    from ..core.mechanism import AssemblyError
+    from .linkage import motion
+
+    problems = []
+    try:
+        feed = motion(p.feed)
+    except AssemblyError as exc:
+        problems.append(BriefProblem("feed_linkage.groups", "", exc.en, exc.zh))
+    except ValueError as exc:
+        problems.append(BriefProblem("feed_linkage.output.point", "", str(exc),
+                                     getattr(exc, "zh", None)))
+    else:
+        if keep is not None:
+            keep["feed_motion"] = feed
     bp = p.bending
-    syn = synthesise_bending(bp)
+    try:
+        syn = synthesise_bending(bp)
+    except SynthesisError as exc:
+        start = "auto" if bp.start is None else \
+            f"input {np.degrees(bp.start[0]):g}°, output {np.degrees(bp.start[1]):g}°"
+        problems.append(BriefProblem("bending.start", start, exc.en, exc.zh))
+    else:
+        if keep is not None:
+            keep["bending_synthesis"] = syn
+    return problems
+
+
+def bending(p: LockbeamParams, bcam, syn: BendingSynthesis | None = None) -> BendingResult:
+    """The bending linkage (``syn``: its synthesis when the checks already made it)."""
+    bp = p.bending
+    syn = synthesise_bending(bp) if syn is None else syn
     ds = syn.design
     mech = bending_mechanism(ds)
     # 1. over the input swing
@@ -567,7 +602,16 @@ def pin_check(p: LockbeamParams) -> PinCheck:
 # --------------------------------------------------------------------------- stages
 
 
+def _reuse(stage: Stage, key: str) -> Stage:
+    """``stage``, returning the run's checks' result ``key`` instead when they made it."""
+    def run(r: dict):
+        done = r.get("checked", {}).get(key)
+        return stage.run(r) if done is None else done
+    return Stage(stage.key, stage.title, run)
+
+
 def stages(params: LockbeamParams) -> list[Stage]:
+    feed_kinematics, *feed_rest = linkage_stages(model_key="feed_model", prefix="feed")
     return [
         Stage("transmission", "传动系统设计 / transmission", lambda r: transmission(r["params"])),
         cam_stage(),
@@ -575,9 +619,10 @@ def stages(params: LockbeamParams) -> list[Stage]:
         Stage("bending_cam", "扳弯凸轮设计 / bending cam",
               lambda r: design_cam(r["params"].bending_cam)),
         Stage("bending", "扳弯机构设计 / bending linkage",
-              lambda r: bending(r["params"], r["bending_cam"])),
+              lambda r: bending(r["params"], r["bending_cam"],
+                                r.get("checked", {}).get("bending_synthesis"))),
         Stage("feed_model", "送料机构 / feed linkage", lambda r: r["params"].feed),
-        *linkage_stages(model_key="feed_model", prefix="feed"),
+        _reuse(feed_kinematics, "feed_motion"), *feed_rest,
         Stage("feed_table", "送料机构位置表 / feed table", lambda r: feed_table(r["params"].feed)),
         Stage("cycle", "运动循环图 / motion cycle", lambda r: cycle(r["params"], r)),
     ]
