@@ -28,6 +28,10 @@ from pathlib import Path
 # the glob's "*" parts in order. Applied per machine ("*" for all machines).
 RENAMES: dict[str, list[tuple[str, str]]] = {
     "*": [("schema", "")],          # the schema string changes by design (version bump)
+    # the one flywheel result: M_d on the crank is mean_torque, on the flywheel shaft shaft_torque
+    "linkage": [("linkage.flywheel.driving_torque", "linkage.flywheel.mean_torque")],
+    "shaper": [("flywheel.driving_torque", "flywheel.shaft_torque"),
+               ("flywheel.ratio_to_crank", "flywheel.speed_ratio")],
 }
 
 # Deliberate corrections of the redesign (issue 17), per machine: old path patterns whose

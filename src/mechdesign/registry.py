@@ -49,7 +49,7 @@ _B, _M, _R = "mechdesign.brief.", "mechdesign.machines.", "mechdesign.render."
 _ENTRIES: dict[str, Entry | str] = {
     "shaper": Entry(
         "shaper", _B + "shaper:ShaperBrief", _B + "shaper:to_si", _M + "shaper:stages",
-        _M + "shaper:results_document", _R + "shaper_report", "shaper.yaml", (
+        _M + "shaper:results_document", _R + "shaper_report", "shaper.yaml", results=_M + "shaper:ShaperResults", summary=(
             ("曲柄", "crank", "mm", "synthesis.crank", _MM),
             ("导杆", "guide bar", "mm", "synthesis.guide_bar", _MM),
             ("K（仿真）", "K (simulated)", "", "verification.time_ratio_simulated", 1.0),
@@ -100,7 +100,7 @@ _ENTRIES: dict[str, Entry | str] = {
     "linkage": Entry(
         "linkage", _B + "linkage:LinkageBrief", _M + "linkage:linkage_params",
         _M + "linkage:STAGES", _M + "linkage:results_document", _R + "linkage_report",
-        "linkage_sixbar.yaml", (
+        "linkage_sixbar.yaml", results=_M + "linkage:LinkageResults", summary=(
             ("行程", "stroke", "mm", "linkage.output.stroke", _MM),
             ("K", "K", "", "linkage.time_ratio", 1.0),
             ("平均扭矩", "mean torque", "N·m", "linkage.mean_torque", 1.0),

@@ -45,20 +45,10 @@ def dumps(document: dict) -> str:
 
 # ------------------------------------------------------------------ typed results with units
 
+from .core.fields import q  # noqa: E402,F401  (re-exported)
+
 SCHEMA = "mechdesign.results/2"
 UNITS_NOTE = "SI: m, s, rad, kg, N, N·m, J, W; complex vectors as [x, y]"
-
-
-def q(unit: str, doc: str = "", *, default: Any = dataclasses.MISSING,
-      default_factory: Any = dataclasses.MISSING) -> Any:
-    """A result field that states its unit (and meaning) in its metadata.
-
-    ``unit`` is the SI unit of a number or array ("m", "rad", "N·m", "kg·m²", "rpm" where the
-    course's formula needs it), "1" for a pure number, "" for text, flags and structure.
-    ``docs/results.md`` is generated from these (``python -m mechdesign.results_docs``).
-    """
-    return dataclasses.field(default=default, default_factory=default_factory,
-                             metadata={"unit": unit, "doc": doc})
 
 
 def unit_of(field: dataclasses.Field) -> str | None:

@@ -124,7 +124,8 @@ def markdown() -> str:
         for path, unit, meaning, _tp in rows(cls):
             if path in ("schema", "machine", "units", "data_group"):
                 continue
-            lines.append(f"| `{path}` | {_unit_cell(unit)} | {' '.join(meaning.split())} |")
+            text = ' '.join(meaning.split()).replace('|', '\\|')
+            lines.append(f"| `{path}` | {_unit_cell(unit)} | {text} |")
         lines.append("")
     return "\n".join(lines)
 

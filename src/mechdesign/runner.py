@@ -170,7 +170,9 @@ def run_one(brief: Path, *, out_dir: Path | None = None, lang: str | None = None
     report = importlib.import_module(machine.report_module)
     from .render.sheets import make_sheets
 
-    document = _with_group(machine.document(results), label)
+    from .results import to_plain
+
+    document = _with_group(to_plain(machine.document(results)), label)
 
     animate = None
     if "gif" in formats:

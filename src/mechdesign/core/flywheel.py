@@ -12,19 +12,20 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
+from .fields import q
 
 
 @dataclass(frozen=True)
 class EnergyCycle:
     """Energy bookkeeping over one revolution of the reference shaft."""
 
-    angle: np.ndarray            # shaft angle from the cycle start [rad]
-    resistance_torque: np.ndarray  # M_r on the flywheel shaft [N·m]
-    driving_torque: float        # constant M_d on the flywheel shaft [N·m]
-    energy: np.ndarray           # ΔE(φ) = ∫(M_d − M_r)dφ [J]
-    max_energy_swing: float      # ΔW_max [J]
-    angle_at_min: float          # [rad]
-    angle_at_max: float          # [rad]
+    angle: np.ndarray = q("rad", "shaft angle from the cycle start")
+    resistance_torque: np.ndarray = q("N·m", "M_r on the flywheel shaft")
+    driving_torque: float = q("N·m", "constant M_d on the flywheel shaft")
+    energy: np.ndarray = q("J", "ΔE(φ) = ∫(M_d − M_r)dφ")
+    max_energy_swing: float = q("J", "ΔW_max")
+    angle_at_min: float = q("rad")
+    angle_at_max: float = q("rad")
 
 
 def energy_cycle(angle: np.ndarray, resistance_torque: np.ndarray) -> EnergyCycle:
@@ -52,11 +53,11 @@ def flywheel_inertia(max_energy_swing: float, speed_rpm: float, fluctuation: flo
 class RimFlywheel:
     """Cast rim flywheel: mean diameter D, rim width b and height H (H = ratio·b) [m]."""
 
-    diameter: float
-    width: float
-    height: float
-    rim_mass: float          # [kg]
-    rim_speed: float         # peripheral speed at D [m/s]
+    diameter: float = q("m", "mean rim diameter D")
+    width: float = q("m", "rim width b")
+    height: float = q("m", "rim height H")
+    rim_mass: float = q("kg")
+    rim_speed: float = q("m/s", "peripheral speed at D")
 
 
 def rim_dimensions(inertia: float, diameter: float, height_to_width: float,

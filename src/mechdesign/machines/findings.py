@@ -3,14 +3,16 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+from ..core.fields import q
+
 
 @dataclass(frozen=True)
 class Finding:
     """A design problem found by a check: ``code`` names it, the messages say what to change."""
 
-    code: str
-    zh: str
-    en: str
+    code: str = q("", "the problem's name")
+    zh: str = q("", "what it is and what to change (中文)")
+    en: str = q("", "what it is and what to change (English)")
 
     def text(self, lang: str) -> str:
         return self.zh if lang == "zh" else self.en

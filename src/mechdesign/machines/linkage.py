@@ -24,6 +24,7 @@ from ..core.kinetostatics import Body, PointLoad, power_residual, solve_forces
 from ..core.mechanism import RPR, RRP, RRR, Crank, LinkPoint, Mechanism, Motion
 from ..pipeline import Stage
 from ..stages.flywheel import Flywheel, FlywheelSpec, design_flywheel
+from ..core.fields import q
 from .findings import Finding
 from .positions import Positions, textbook_positions
 
@@ -89,14 +90,14 @@ class QualityAngle:
     """Transmission angle γ of an RRR group (at its middle joint) or pressure angle α of
     an RRP slider (between the rod and the guide), over the grid and the positions."""
 
-    group: str
-    kind: str                   # "transmission" | "pressure"
-    point: str                  # the joint where it is measured
-    values: np.ndarray          # [rad], one per entry of the phase array
-    extreme: float              # γ_min or α_max over the cycle [rad]
-    extreme_phase: float        # [rad]
-    working_extreme: float      # the same over the working stroke only [rad]
-    working_extreme_phase: float
+    group: str = q("")
+    kind: str = q("", "'transmission' | 'pressure'")
+    point: str = q("", "the joint where it is measured")
+    values: np.ndarray = q("rad", "one per entry of the phase array")
+    extreme: float = q("rad", "γ_min or α_max over the cycle")
+    extreme_phase: float = q("rad")
+    working_extreme: float = q("rad", "the same over the working stroke only")
+    working_extreme_phase: float = q("rad")
 
 
 @dataclass(frozen=True)
@@ -107,40 +108,40 @@ class LinkageMotion:
     displacement ``s`` [m or rad] is measured from position 1 along the working direction.
     """
 
-    positions: Positions
-    phase: np.ndarray
-    crank_angle: np.ndarray
-    s: np.ndarray
-    v: np.ndarray
-    a: np.ndarray
-    output_unit: str            # "m" | "rad"
-    stroke: float               # [m] or [rad] (swing)
-    working_span: float         # crank angle of the working stroke [rad]
-    time_ratio: float           # K = working span / return span
-    start_angle: float          # crank angle of position 1 [rad, CCW from +x]
-    sense: float                # +1 CCW, −1 CW
-    points: dict                # name → complex positions [m]
-    link_angle: dict            # link → angle [rad]
-    link_omega: dict            # link → ω [rad/s] (CCW +)
-    link_alpha: dict            # link → α [rad/s²]
-    quality: tuple[QualityAngle, ...]
-    grid_size: int
+    positions: Positions = q("")
+    phase: np.ndarray = q("rad", "crank angle from position 1 in the sense of rotation")
+    crank_angle: np.ndarray = q("rad", "crank angle, CCW from +x")
+    s: np.ndarray = q("m or rad", "output displacement from position 1 along the working direction")
+    v: np.ndarray = q("m/s or rad/s", "output velocity")
+    a: np.ndarray = q("m/s² or rad/s²", "output acceleration")
+    output_unit: str = q("", "'m' | 'rad'")
+    stroke: float = q("m or rad", "stroke (or swing) of the output")
+    working_span: float = q("rad", "crank angle of the working stroke")
+    time_ratio: float = q("1", "K = working span / return span")
+    start_angle: float = q("rad", "crank angle of position 1")
+    sense: float = q("1", "+1 CCW, −1 CW")
+    points: dict = q("m", "name → complex positions")
+    link_angle: dict = q("rad", "link → angle")
+    link_omega: dict = q("rad/s", "link → ω  (CCW +)")
+    link_alpha: dict = q("rad/s²", "link → α")
+    quality: tuple[QualityAngle, ...] = q("")
+    grid_size: int = q("1", "entries of the uniform grid before the positions")
 
 
 @dataclass(frozen=True)
 class LinkageForces:
     """Stage 动态静力分析 (arrays as in :class:`LinkageMotion`)."""
 
-    resistance: dict            # "R{i}" → signed force along its line [N]
-    reactions: dict             # R{a}{b} → complex force of link a on b [N]
-    couples: dict               # prismatic-pair couples [N·m]
-    inertia_force: dict         # link → complex −m·a_S [N]
-    inertia_couple: dict        # link → −J_S·α [N·m]
-    balancing_torque: np.ndarray  # M_b on the crank, in its sense of rotation [N·m]
-    power_residual: np.ndarray  # Σ power of every load incl. M_b [W]
-    mean_torque: float          # mean M_b over a revolution [N·m]
-    mean_power: float           # mean power delivered to the crank [W]
-    peak_torque: float          # max |M_b| [N·m]
+    resistance: dict = q("N", "'R{i}' → signed force along its line")
+    reactions: dict = q("N", "R{a}{b} → complex force of link a on b")
+    couples: dict = q("N·m", "prismatic-pair couples")
+    inertia_force: dict = q("N", "link → complex −m·a_S")
+    inertia_couple: dict = q("N·m", "link → −J_S·α")
+    balancing_torque: np.ndarray = q("N·m", "M_b on the crank, in its sense of rotation")
+    power_residual: np.ndarray = q("W", "Σ power of every load incl. M_b")
+    mean_torque: float = q("N·m", "mean M_b over a revolution")
+    mean_power: float = q("W", "mean power delivered to the crank")
+    peak_torque: float = q("N·m", "max |M_b|")
 
 
 LinkageFlywheel = Flywheel   # the one flywheel result (mechdesign.stages.flywheel)
@@ -148,14 +149,16 @@ LinkageFlywheel = Flywheel   # the one flywheel result (mechdesign.stages.flywhe
 
 @dataclass(frozen=True)
 class LinkageVerification:
-    closure_residual: float     # max constraint violation [m]
-    velocity_fd_error: float    # max |v − Δx/Δt| / max |v| over every moving point and link
-    acceleration_fd_error: float
-    power_balance_residual: float  # max |Σ P| / max |M_b ω| (0 when there is no load)
-    stroke: float               # by bounded search [m or rad]
-    time_ratio: float           # K from the searched extremes
-    fd_step: float              # [rad]
-    warnings: tuple = ()
+    """Stage 校核: self-checks of the linkage run."""
+
+    closure_residual: float = q("m", "max constraint violation")
+    velocity_fd_error: float = q("1", "max |v − Δx/Δt| / max |v| over every moving point and link")
+    acceleration_fd_error: float = q("1", "the same for accelerations")
+    power_balance_residual: float = q("1", "max |Σ P| / max |M_b ω| (0 when there is no load)")
+    stroke: float = q("m or rad", "stroke by a bounded position search")
+    time_ratio: float = q("1", "K from the searched extremes")
+    fd_step: float = q("rad")
+    warnings: tuple[Finding, ...] = q("", "quality-angle findings", default=())
 
 
 # ---------------------------------------------------------------- motion
@@ -476,44 +479,102 @@ def linkage_stages(model_key: str = "model", prefix: str = "linkage") -> list[St
     ]
 
 
+@dataclass(frozen=True)
+class OutputDoc:
+    """The output whose motion defines the strokes."""
+
+    kind: str = q("", "'point' (a point along a direction) or 'link' (a link's angle)")
+    name: str = q("", "the point's or the link's name")
+    unit: str = q("", "'m' or 'rad': the unit of s, v, a and the stroke")
+    stroke: float = q("m or rad", "stroke (or swing) of the output")
+
+
+@dataclass(frozen=True)
+class QualityDoc:
+    group: str = q("", "the Assur group")
+    kind: str = q("", "'transmission' (γ of an RRR group) or 'pressure' (α of a slider)")
+    point: str = q("", "the joint where it is measured")
+    extreme: float = q("rad", "γ_min or α_max over the cycle")
+    extreme_phase: float = q("rad", "crank phase where it occurs")
+    working_extreme: float = q("rad", "the same over the working stroke only")
+
+
+@dataclass(frozen=True)
+class LinkagePosition:
+    """One textbook position (机构位置)."""
+
+    label: str = q("", "1, 2, …; primed labels are special positions (the other extreme, 4′ …)")
+    phase: float = q("rad", "crank angle from position 1 in the sense of rotation")
+    crank_angle: float = q("rad", "crank angle, CCW from +x")
+    s: float = q("m or rad", "output displacement from position 1 along the working direction")
+    v: float = q("m/s or rad/s", "output velocity")
+    a: float = q("m/s² or rad/s²", "output acceleration")
+    points: dict[str, complex] = q("m", "every named point, [x, y]")
+    link_omega: dict[str, float] = q("rad/s", "angular velocity of every link (CCW +)")
+    link_alpha: dict[str, float] = q("rad/s²", "angular acceleration of every link")
+    quality: dict[str, float] = q("rad", "transmission/pressure angle of each group")
+    reactions: dict[str, complex] = q("N", "R{a}{b}: force of link a on link b, [x, y]")
+    balancing_torque: float = q("N·m", "M_b on the crank, in its sense of rotation")
+
+
+@dataclass(frozen=True)
+class LinkageGrid:
+    """Arrays over one revolution on the uniform grid (phase from 0)."""
+
+    phase: np.ndarray = q("rad", "crank phase from position 1")
+    s: np.ndarray = q("m or rad", "output displacement")
+    v: np.ndarray = q("m/s or rad/s", "output velocity")
+    a: np.ndarray = q("m/s² or rad/s²", "output acceleration")
+    balancing_torque: np.ndarray = q("N·m", "M_b")
+
+
+@dataclass(frozen=True)
+class LinkageDocument:
+    """The linkage engine's results: motion at the positions and over the grid, quality
+    angles, kinetostatics, flywheel and self-checks."""
+
+    crank_omega: float = q("rad/s", "crank angular velocity, CCW +")
+    output: OutputDoc = q("", "the output")
+    working_stroke_crank_angle: float = q("rad", "crank rotation of the working stroke")
+    time_ratio: float = q("1", "K = working span / return span (from the velocity zeros)")
+    start_crank_angle: float = q("rad", "crank angle of position 1")
+    quality: tuple[QualityDoc, ...] = q("", "transmission and pressure angles")
+    positions: tuple[LinkagePosition, ...] = q("", "the textbook positions in crank order")
+    grid: LinkageGrid = q("", "one revolution")
+    mean_torque: float = q("N·m", "mean M_b")
+    mean_power: float = q("W", "mean power delivered to the crank")
+    peak_torque: float = q("N·m", "max |M_b|")
+    flywheel: Flywheel | None = q("", "the flywheel (the one flywheel stage), if any")
+    verification: LinkageVerification = q("", "self-checks")
+
+
 def linkage_document(model: LinkageModel, k: LinkageMotion, f: LinkageForces,
-                     fly: LinkageFlywheel | None, v: LinkageVerification) -> dict:
+                     fly: Flywheel | None, v: LinkageVerification) -> LinkageDocument:
     """The linkage part of results.json (SI)."""
     n = k.grid_size
     per_position = []
     for i, label in enumerate(k.positions.labels):
         j = n + i
-        per_position.append({
-            "label": label, "phase": k.phase[j], "crank_angle": k.crank_angle[j] % TWO_PI,
-            "s": k.s[j], "v": k.v[j], "a": k.a[j],
-            "points": {p: z[j] for p, z in k.points.items()},
-            "link_omega": {l_: w[j] for l_, w in k.link_omega.items()},
-            "link_alpha": {l_: a[j] for l_, a in k.link_alpha.items()},
-            "quality": {q.group: q.values[j] for q in k.quality},
-            "reactions": {name: r[j] for name, r in f.reactions.items()},
-            "balancing_torque": f.balancing_torque[j],
-        })
-    return {
-        "crank_omega": model.crank_omega,
-        "output": {"kind": model.output.kind, "name": model.output.name,
-                   "unit": k.output_unit, "stroke": k.stroke},
-        "working_stroke_crank_angle": k.working_span, "time_ratio": k.time_ratio,
-        "start_crank_angle": k.start_angle,
-        "quality": [{"group": q.group, "kind": q.kind, "point": q.point, "extreme": q.extreme,
-                     "extreme_phase": q.extreme_phase, "working_extreme": q.working_extreme}
-                    for q in k.quality],
-        "positions": per_position,
-        "grid": {"phase": k.phase[:n], "s": k.s[:n], "v": k.v[:n], "a": k.a[:n],
-                 "balancing_torque": f.balancing_torque[:n]},
-        "mean_torque": f.mean_torque, "mean_power": f.mean_power, "peak_torque": f.peak_torque,
-        "flywheel": None if fly is None else {
-            "speed_ratio": fly.speed_ratio, "shaft_speed_rpm": fly.shaft_speed_rpm,
-            "driving_torque": fly.mean_torque, "max_energy_swing": fly.max_energy_swing,
-            "fluctuation": fly.fluctuation, "inertia": fly.inertia},
-        "verification": {key: getattr(v, key) for key in (
-            "closure_residual", "velocity_fd_error", "acceleration_fd_error",
-            "power_balance_residual", "stroke", "time_ratio", "fd_step")},
-    }
+        per_position.append(LinkagePosition(
+            label=label, phase=k.phase[j], crank_angle=k.crank_angle[j] % TWO_PI,
+            s=k.s[j], v=k.v[j], a=k.a[j],
+            points={p: z[j] for p, z in k.points.items()},
+            link_omega={l_: w[j] for l_, w in k.link_omega.items()},
+            link_alpha={l_: a[j] for l_, a in k.link_alpha.items()},
+            quality={q_.group: q_.values[j] for q_ in k.quality},
+            reactions={name: r[j] for name, r in f.reactions.items()},
+            balancing_torque=f.balancing_torque[j]))
+    return LinkageDocument(
+        crank_omega=model.crank_omega,
+        output=OutputDoc(model.output.kind, model.output.name, k.output_unit, k.stroke),
+        working_stroke_crank_angle=k.working_span, time_ratio=k.time_ratio,
+        start_crank_angle=k.start_angle,
+        quality=tuple(QualityDoc(q_.group, q_.kind, q_.point, q_.extreme, q_.extreme_phase,
+                                 q_.working_extreme) for q_ in k.quality),
+        positions=tuple(per_position),
+        grid=LinkageGrid(k.phase[:n], k.s[:n], k.v[:n], k.a[:n], f.balancing_torque[:n]),
+        mean_torque=f.mean_torque, mean_power=f.mean_power, peak_torque=f.peak_torque,
+        flywheel=fly, verification=v)
 
 
 def link_members(mech: Mechanism) -> tuple[dict, list]:
@@ -587,11 +648,19 @@ STAGES = linkage_stages(model_key="params")
 STAGES[0] = Stage(STAGES[0].key, STAGES[0].title, _motion_of_brief)
 
 
-def results_document(r: dict) -> dict:
-    return {
-        "schema": "mechdesign.results/1",
-        "machine": "linkage",
-        "units": "SI: m, s, rad, kg, N, N·m, J, W; complex vectors as [x, y]",
-        "linkage": linkage_document(r["params"], r["linkage"], r["linkage_forces"],
-                                    r["linkage_flywheel"], r["linkage_verification"]),
-    }
+@dataclass(frozen=True)
+class LinkageResults:
+    """Any planar linkage written in the brief (crank + Assur groups)."""
+
+    schema: str = q("", "'mechdesign.results/2'")
+    machine: str = q("", "'linkage'")
+    units: str = q("", "reminder of the unit system")
+    linkage: LinkageDocument = q("", "the linkage engine's results")
+
+
+def results_document(r: dict) -> LinkageResults:
+    from ..results import SCHEMA, UNITS_NOTE
+
+    return LinkageResults(SCHEMA, "linkage", UNITS_NOTE, linkage_document(
+        r["params"], r["linkage"], r["linkage_forces"], r["linkage_flywheel"],
+        r["linkage_verification"]))

@@ -20,12 +20,13 @@ from ..core.kinetostatics import Body
 from ..core.mechanism import RPR, RRP, AssemblyError, Crank, LinkPoint, Mechanism
 from ..core.synthesis import GuideBarDesign, guide_bar_quick_return
 from ..pipeline import Stage
-from ..stages.flywheel import FlywheelSpec, RimSpec, design_flywheel
+from ..stages.flywheel import Flywheel, FlywheelSpec, RimSpec
 from . import linkage as lk
 from .cam import cam_document
 from .drive import drive_document
 from .gear import gear_document
 from .positions import Positions
+from ..core.fields import q
 
 FRAME = "7"
 
@@ -34,9 +35,9 @@ FRAME = "7"
 class Synthesis:
     """Stage 导杆机构设计: the link lengths [m] and angles [rad]."""
 
-    design: GuideBarDesign
-    extreme_angle: float        # θ [rad]
-    guide_height_above_O2: float  # L_O2M = L_O3M − L_O2O3 [m]
+    design: GuideBarDesign = q("")
+    extreme_angle: float = q("rad", "θ")
+    guide_height_above_O2: float = q("m", "L_O2M = L_O3M − L_O2O3")
 
 
 @dataclass(frozen=True)
@@ -47,39 +48,39 @@ class Kinematics:
     sense of rotation [rad]. Ram quantities are along the working-stroke direction.
     """
 
-    positions: Positions
-    phase: np.ndarray           # [rad]
-    crank_angle: np.ndarray     # crank angle CCW from +x [rad]
-    ram_s: np.ndarray           # ram displacement from position 1 [m]
-    ram_v: np.ndarray           # [m/s]
-    ram_a: np.ndarray           # [m/s²]
-    omega4: np.ndarray          # guide-bar angular velocity, CCW + [rad/s]
-    alpha4: np.ndarray          # guide-bar angular acceleration, CCW + [rad/s²]
-    slide_v: np.ndarray         # sliding velocity of slider 3 on the bar, v_A4A3 [m/s]
-    coriolis: np.ndarray        # Coriolis acceleration 2·ω4·v_A4A3 [m/s²]
-    omega5: np.ndarray          # rod angular velocity [rad/s]
-    alpha5: np.ndarray          # rod angular acceleration [rad/s²]
-    points: dict                # name → complex positions [m] (for drawings)
-    working_span: float         # crank angle of the working stroke [rad]
-    stroke_direction: float     # +1 when the working stroke moves the ram towards +x
-    grid_size: int
-    model: object = None        # the linkage model (not serialised)
-    linkage: object = None      # the engine's LinkageMotion this view reads
+    positions: Positions = q("")
+    phase: np.ndarray = q("rad")
+    crank_angle: np.ndarray = q("rad", "crank angle CCW from +x")
+    ram_s: np.ndarray = q("m", "ram displacement from position 1")
+    ram_v: np.ndarray = q("m/s")
+    ram_a: np.ndarray = q("m/s²")
+    omega4: np.ndarray = q("rad/s", "guide-bar angular velocity, CCW +")
+    alpha4: np.ndarray = q("rad/s²", "guide-bar angular acceleration, CCW +")
+    slide_v: np.ndarray = q("m/s", "sliding velocity of slider 3 on the bar, v_A4A3")
+    coriolis: np.ndarray = q("m/s²", "Coriolis acceleration 2·ω4·v_A4A3")
+    omega5: np.ndarray = q("rad/s", "rod angular velocity")
+    alpha5: np.ndarray = q("rad/s²", "rod angular acceleration")
+    points: dict = q("m", "name → complex positions  (for drawings)")
+    working_span: float = q("rad", "crank angle of the working stroke")
+    stroke_direction: float = q("1", "+1 when the working stroke moves the ram towards +x")
+    grid_size: int = q("1", "entries of the uniform grid before the positions")
+    model: object = q("", "the linkage model (not serialised)", default=None)
+    linkage: object = q("", "the engine's LinkageMotion this view reads", default=None)
 
 
 @dataclass(frozen=True)
 class Forces:
     """The shaper's view of the engine's forces (动态静力分析), arrays as in :class:`Kinematics`."""
 
-    cutting_force: np.ndarray   # resistance on the ram along −working direction [N] (≥ 0)
-    inertia_force4: np.ndarray  # |P_I4| = m4·|a_S4| [N]
-    inertia_couple4: np.ndarray  # M_I4 = −J_S4·α4, CCW + [N·m]
-    inertia_force6: np.ndarray  # P_I6 = −m6·a_6 along +x [N]
-    reactions: dict             # name (R72, R23, ...) → complex force of a on b [N]
-    couples: dict               # prismatic-pair couples by name [N·m]
-    balancing_torque: np.ndarray  # M_b in the sense of rotation [N·m]
-    power_residual: np.ndarray  # Σ power of all loads incl. M_b [W]
-    linkage: object = None      # the engine's LinkageForces this view reads
+    cutting_force: np.ndarray = q("N", "resistance on the ram along −working direction  (≥ 0)")
+    inertia_force4: np.ndarray = q("N", "|P_I4| = m4·|a_S4|")
+    inertia_couple4: np.ndarray = q("N·m", "M_I4 = −J_S4·α4, CCW +")
+    inertia_force6: np.ndarray = q("N", "P_I6 = −m6·a_6 along +x")
+    reactions: dict = q("N", "name (R72, R23, ...) → complex force of a on b")
+    couples: dict = q("N·m", "prismatic-pair couples by name")
+    balancing_torque: np.ndarray = q("N·m", "M_b in the sense of rotation")
+    power_residual: np.ndarray = q("W", "Σ power of all loads incl. M_b")
+    linkage: object = q("", "the engine's LinkageForces this view reads", default=None)
 
 
 def synthesize(p: ShaperParams) -> Synthesis:
@@ -208,13 +209,13 @@ def flywheel(k: Kinematics, f: Forces, p: ShaperParams):
 class Verification:
     """Residuals of the run's self-checks (shown at the end of the report)."""
 
-    closure_residual: float     # max |constraint violation| over the grid [m]
-    velocity_fd_error: float    # max |v − dx/dt (central differences)| / max|v|, every point and link
-    acceleration_fd_error: float  # max |a − dv/dt| / max|a|
-    stroke_error: float         # simulated stroke − H [m]
-    time_ratio_simulated: float  # K from the simulated extreme positions
-    power_balance_residual: float  # max |Σ P| / max |M_b·ω| (dimensionless)
-    fd_step: float              # crank-angle step of the differences [rad]
+    closure_residual: float = q("m", "max |constraint violation| over the grid")
+    velocity_fd_error: float = q("1", "max |v − dx/dt (central differences)| / max|v|, every point and link")
+    acceleration_fd_error: float = q("1", "max |a − dv/dt| / max|a|")
+    stroke_error: float = q("m", "simulated stroke − H")
+    time_ratio_simulated: float = q("1", "K from the simulated extreme positions")
+    power_balance_residual: float = q("1", "max |Σ P| / max |M_b·ω|")
+    fd_step: float = q("rad", "crank-angle step of the differences")
 
 
 def verification_view(v: lk.LinkageVerification, p: ShaperParams) -> Verification:
@@ -308,54 +309,105 @@ def stages(params: ShaperParams) -> list[Stage]:
     return out
 
 
-def results_document(r: dict) -> dict:
+@dataclass(frozen=True)
+class ShaperSynthesisDoc:
+    extreme_angle: float = q("rad", "θ = π(K − 1)/(K + 1)")
+    swing_angle: float = q("rad", "guide-bar swing ψ (= θ)")
+    crank: float = q("m", "L_O2A")
+    frame: float = q("m", "L_O2O3")
+    guide_bar: float = q("m", "L_O3B")
+    rod: float = q("m", "L_BF")
+    guide_height: float = q("m", "L_O3M, ram guide line above O3")
+    bar_com: float = q("m", "L_O3S4")
+    guide_height_above_O2: float = q("m", "L_O2M")
+
+
+@dataclass(frozen=True)
+class ShaperPosition:
+    """One textbook position; ram quantities along the working-stroke direction."""
+
+    label: str = q("", "1, 2, …; 4′, 8′ (the other extreme), 10′ are special positions")
+    phase: float = q("rad", "crank angle from position 1 in the sense of rotation")
+    crank_angle: float = q("rad", "crank angle, CCW from +x")
+    ram_s: float = q("m", "ram displacement from position 1")
+    ram_v: float = q("m/s", "ram velocity")
+    ram_a: float = q("m/s²", "ram acceleration")
+    omega4: float = q("rad/s", "guide-bar angular velocity, CCW +")
+    alpha4: float = q("rad/s²", "guide-bar angular acceleration, CCW +")
+    slide_v: float = q("m/s", "sliding velocity v_A4A3 of slider 3 on the bar")
+    coriolis: float = q("m/s²", "Coriolis acceleration 2·ω4·v_A4A3")
+    cutting_force: float = q("N", "Fc (0 outside the cutting zone)")
+    inertia_force4: float = q("N", "|F_I4| = m4·|a_S4|")
+    inertia_couple4: float = q("N·m", "M_I4 = −J_S4·α4, CCW +")
+    inertia_force6: float = q("N", "F_I6 = −m6·a_6 along +x")
+    reactions: dict[str, complex] = q("N", "R{a}{b}: force of link a on link b, [x, y]")
+    prismatic_couples: dict[str, float] = q("N·m", "couples of the prismatic pairs")
+    balancing_torque: float = q("N·m", "M_b in the crank's sense of rotation")
+
+
+@dataclass(frozen=True)
+class ShaperGrid:
+    """Arrays over one revolution on the uniform grid."""
+
+    phase: np.ndarray = q("rad", "crank phase from position 1")
+    ram_s: np.ndarray = q("m")
+    ram_v: np.ndarray = q("m/s")
+    ram_a: np.ndarray = q("m/s²")
+    omega4: np.ndarray = q("rad/s")
+    alpha4: np.ndarray = q("rad/s²")
+    balancing_torque: np.ndarray = q("N·m")
+    energy: np.ndarray = q("J", "ΔE of the flywheel cycle")
+
+
+@dataclass(frozen=True)
+class ShaperResults:
+    """Shaper (牛头刨床). Frame: O3 (guide-bar pivot) at the origin, O2 (crank pivot) at (0,
+    frame) above it, the ram guide horizontal at y = synthesis.guide_height. Links: 2 crank,
+    3 slider, 4 guide bar, 5 rod BF, 6 ram, 7 frame."""
+
+    schema: str = q("", "'mechdesign.results/2'")
+    machine: str = q("", "'shaper'")
+    units: str = q("", "reminder of the unit system")
+    synthesis: ShaperSynthesisDoc = q("", "the guide-bar mechanism's dimensions")
+    positions: tuple[ShaperPosition, ...] = q("", "the textbook positions in crank order")
+    grid: ShaperGrid = q("", "one revolution")
+    working_stroke_crank_angle: float = q("rad", "crank rotation of the working stroke (π + θ)")
+    flywheel: Flywheel = q("", "the flywheel (the one flywheel stage) on the pinion or crank shaft")
+    verification: Verification = q("", "self-checks")
+    cam: dict | None = q("", "the cam on the crank shaft, when the brief has one")
+    gear: dict | None = q("", "the gear pair z1/z2, when the brief gives its module")
+    drive: dict | None = q("", "the drive, when the brief has one")
+
+
+def results_document(r: dict) -> ShaperResults:
     """Everything computed, in SI units, for ``results.json`` (see docs/results.md)."""
+    from ..results import SCHEMA, UNITS_NOTE
+
     syn, k, f, fl, v = (r[key] for key in ("synthesis", "kinematics", "forces", "flywheel",
                                             "verification"))
     n = k.grid_size
     per_position = []
     for i, label in enumerate(k.positions.labels):
         j = n + i
-        per_position.append({
-            "label": label,
-            "phase": k.phase[j], "crank_angle": k.crank_angle[j] % (2 * np.pi),
-            "ram_s": k.ram_s[j], "ram_v": k.ram_v[j], "ram_a": k.ram_a[j],
-            "omega4": k.omega4[j], "alpha4": k.alpha4[j],
-            "slide_v": k.slide_v[j], "coriolis": k.coriolis[j],
-            "cutting_force": f.cutting_force[j],
-            "inertia_force4": f.inertia_force4[j], "inertia_couple4": f.inertia_couple4[j],
-            "inertia_force6": f.inertia_force6[j],
-            "reactions": {name: force[j] for name, force in f.reactions.items()},
-            "prismatic_couples": {name: c[j] for name, c in f.couples.items()},
-            "balancing_torque": f.balancing_torque[j],
-        })
+        per_position.append(ShaperPosition(
+            label=label, phase=k.phase[j], crank_angle=k.crank_angle[j] % (2 * np.pi),
+            ram_s=k.ram_s[j], ram_v=k.ram_v[j], ram_a=k.ram_a[j],
+            omega4=k.omega4[j], alpha4=k.alpha4[j], slide_v=k.slide_v[j], coriolis=k.coriolis[j],
+            cutting_force=f.cutting_force[j], inertia_force4=f.inertia_force4[j],
+            inertia_couple4=f.inertia_couple4[j], inertia_force6=f.inertia_force6[j],
+            reactions={name: force[j] for name, force in f.reactions.items()},
+            prismatic_couples={name: c[j] for name, c in f.couples.items()},
+            balancing_torque=f.balancing_torque[j]))
     d = syn.design
-    return {
-        "schema": "mechdesign.results/1",
-        "machine": "shaper",
-        "units": "SI: m, s, rad, kg, N, N·m, J, W; complex vectors as [x, y]",
-        "synthesis": {
-            "extreme_angle": syn.extreme_angle, "swing_angle": d.swing_angle,
-            "crank": d.crank, "frame": d.frame, "guide_bar": d.guide_bar, "rod": d.rod,
-            "guide_height": d.guide_height, "bar_com": d.bar_com,
-            "guide_height_above_O2": syn.guide_height_above_O2,
-        },
-        "positions": per_position,
-        "grid": {
-            "phase": k.phase[:n], "ram_s": k.ram_s[:n], "ram_v": k.ram_v[:n],
-            "ram_a": k.ram_a[:n], "omega4": k.omega4[:n], "alpha4": k.alpha4[:n],
-            "balancing_torque": f.balancing_torque[:n], "energy": fl.energy,
-        },
-        "working_stroke_crank_angle": k.working_span,
-        "flywheel": {
-            "shaft": fl.shaft, "ratio_to_crank": fl.ratio_to_crank,
-            "shaft_speed_rpm": fl.shaft_speed_rpm, "driving_torque": fl.shaft_torque,
-            "max_energy_swing": fl.max_energy_swing, "inertia": fl.inertia,
-            "phase_at_min": fl.phase_at_min, "phase_at_max": fl.phase_at_max,
-            "mean_power": fl.mean_power, "rim": fl.rim,
-        },
-        "verification": v,
-        "cam": None if r.get("cam") is None else cam_document(r["cam"]),
-        "gear": None if r.get("gear") is None else gear_document(r["gear"]),
-        "drive": None if r.get("drive") is None else drive_document(r["drive"]),
-    }
+    return ShaperResults(
+        schema=SCHEMA, machine="shaper", units=UNITS_NOTE,
+        synthesis=ShaperSynthesisDoc(syn.extreme_angle, d.swing_angle, d.crank, d.frame,
+                                     d.guide_bar, d.rod, d.guide_height, d.bar_com,
+                                     syn.guide_height_above_O2),
+        positions=tuple(per_position),
+        grid=ShaperGrid(k.phase[:n], k.ram_s[:n], k.ram_v[:n], k.ram_a[:n], k.omega4[:n],
+                        k.alpha4[:n], f.balancing_torque[:n], fl.energy),
+        working_stroke_crank_angle=k.working_span, flywheel=fl, verification=v,
+        cam=None if r.get("cam") is None else cam_document(r["cam"]),
+        gear=None if r.get("gear") is None else gear_document(r["gear"]),
+        drive=None if r.get("drive") is None else drive_document(r["drive"]))

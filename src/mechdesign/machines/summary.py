@@ -61,4 +61,6 @@ def summarise(machine_name: str, results: dict, lang: str) -> list[tuple[str, st
     """Key results of a finished run (its results document, in the course's units)."""
     from . import get_machine
 
-    return summary_rows(machine_name, get_machine(machine_name).document(results), lang)
+    from ..results import to_plain
+
+    return summary_rows(machine_name, to_plain(get_machine(machine_name).document(results)), lang)

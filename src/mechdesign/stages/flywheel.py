@@ -14,6 +14,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..core import flywheel as fw
+from ..core.fields import q
 from ..machines.findings import Finding
 
 CAST_IRON_RIM_SPEED = 30.0   # [m/s] usual limit of a cast-iron rim's peripheral speed
@@ -23,9 +24,9 @@ CAST_IRON_RIM_SPEED = 30.0   # [m/s] usual limit of a cast-iron rim's peripheral
 class RimSpec:
     """Cast rim to size: mean diameter D [m], H/b, material's specific weight γ [N/m³]."""
 
-    diameter: float
-    height_to_width: float
-    specific_weight: float
+    diameter: float = q("m", "mean rim diameter D")
+    height_to_width: float = q("1", "H/b")
+    specific_weight: float = q("N/m³", "γ of the rim material")
 
 
 @dataclass(frozen=True)
@@ -33,31 +34,31 @@ class FlywheelSpec:
     """Allowed speed fluctuation [δ]; the flywheel shaft's speed as a multiple of the
     crank's; the shaft's name (as the machine calls it); the rim to size, if any."""
 
-    fluctuation: float
-    speed_ratio: float = 1.0
-    shaft: object = "crank"
-    rim: RimSpec | None = None
+    fluctuation: float = q("1", "[δ]")
+    speed_ratio: float = q("1", "flywheel shaft speed / crank speed", default=1.0)
+    shaft: object = q("", default="crank")
+    rim: RimSpec | None = q("", default=None)
 
 
 @dataclass(frozen=True)
 class Flywheel:
     """Stage 飞轮设计 (the flywheel evens out M_b; the mechanism's own inertia neglected)."""
 
-    shaft: object               # the machine's name for the flywheel shaft
-    speed_ratio: float          # flywheel shaft speed / crank speed
-    shaft_speed_rpm: float      # [rpm]
-    mean_torque: float          # M_d on the crank = mean M_b [N·m]
-    shaft_torque: float         # the same on the flywheel shaft, M_d / i [N·m]
-    mean_power: float           # mean power delivered to the crank [W]
-    energy: np.ndarray          # ΔE over the crank phase grid [J]
-    max_energy_swing: float     # ΔW_max [J]
-    phase_at_min: float         # [rad]
-    phase_at_max: float         # [rad]
-    fluctuation: float          # [δ]
-    inertia: float              # J_F on the flywheel shaft [kg·m²]
-    inertia_on_crank: float     # the same flywheel's duty on the crank [kg·m²]
-    rim: fw.RimFlywheel | None  # sized rim, when the machine asks for one
-    warnings: tuple = ()        # Finding: rim speed, rim proportions
+    shaft: str | int = q("", "the machine's name (or drive index) of the flywheel shaft")
+    speed_ratio: float = q("1", "flywheel shaft speed / crank speed")
+    shaft_speed_rpm: float = q("rpm")
+    mean_torque: float = q("N·m", "M_d on the crank = mean M_b")
+    shaft_torque: float = q("N·m", "the same on the flywheel shaft, M_d / i")
+    mean_power: float = q("W", "mean power delivered to the crank")
+    energy: np.ndarray = q("J", "ΔE over the crank phase grid")
+    max_energy_swing: float = q("J", "ΔW_max")
+    phase_at_min: float = q("rad")
+    phase_at_max: float = q("rad")
+    fluctuation: float = q("1", "[δ]")
+    inertia: float = q("kg·m²", "J_F on the flywheel shaft")
+    inertia_on_crank: float = q("kg·m²", "the same flywheel's duty on the crank")
+    rim: fw.RimFlywheel | None = q("", "sized rim, when the machine asks for one")
+    warnings: tuple[Finding, ...] = q("", "rim speed, rim proportions", default=())
 
     @property
     def ratio_to_crank(self) -> float:
