@@ -99,7 +99,7 @@ def test_render_pdf_embeds_chinese_fonts(tmp_path):
     data = pdf_path.read_bytes()
     assert data.startswith(b"%PDF")
     assert not list(tmp_path.glob(".*.typ")), "temporary typst source left behind"
-    assert not list(pdf_path.parent.glob(".*.tmp")), "temporary PDF left behind"
+    assert not list(pdf_path.parent.glob(".*.tmp*")), "temporary PDF left behind"
     if shutil.which("pdftotext"):
         text = subprocess.run(
             ["pdftotext", "-enc", "UTF-8", str(pdf_path), "-"],
