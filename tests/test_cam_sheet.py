@@ -19,7 +19,6 @@ module's arrays:
 from __future__ import annotations
 
 import re
-from pathlib import Path
 
 import numpy as np
 import pytest
@@ -29,33 +28,27 @@ from ezdxf import bbox as dxf_bbox  # noqa: E402
 from ezdxf.enums import TextEntityAlignment  # noqa: E402
 from scipy.spatial import cKDTree  # noqa: E402
 
-from mechdesign.brief.loader import load_brief  # noqa: E402
 from mechdesign.core.cam import OscillatingFollower  # noqa: E402
-from mechdesign.machines import get_machine, stages_for  # noqa: E402
-from mechdesign.pipeline import run_stages  # noqa: E402
 from mechdesign.render.cam_sheet import cam_sheet  # noqa: E402
 from mechdesign.render.sheet import Text, TitleInfo, text_width, title_block_box  # noqa: E402
 from mechdesign.render.sheet_dxf import write_dxf  # noqa: E402
 from mechdesign.render.sheet_typst import write_sheet  # noqa: E402
 
-ROOT = Path(__file__).resolve().parents[1]
 DESIGNS = ["cam_7_3", "lockbeam_cam", "shaper"]
 BORDER = (25.0, 10.0, 584.0, 410.0)
 LAYERS = ("OUTLINE", "CENTER", "CONSTRUCTION", "DIMENSIONS", "TEXT", "FRAME")
 
 
-def _cam(name):
-    brief = load_brief(ROOT / "designs" / f"{name}.yaml")
-    machine = get_machine(brief.machine)
-    params = machine.to_params(brief)
-    results, _ = run_stages(stages_for(machine, params), {"params": params, "brief": brief}, None)
-    return brief, results["cam"]
+def _cam(example_results, name):
+    """The brief and the cam result of designs/<name>.yaml (computed once per session)."""
+    results = example_results(name)
+    return results["brief"], results["cam"]
 
 
 @pytest.fixture(scope="module", params=DESIGNS)
-def drawn(request, tmp_path_factory):
+def drawn(request, tmp_path_factory, example_results):
     name = request.param
-    brief, cam = _cam(name)
+    brief, cam = _cam(example_results, name)
     rep = brief.report
     info = TitleInfo("", rep.title, rep.student, rep.student_id, rep.class_name, rep.teacher,
                      str(rep.date), number="MD-CAM", lang="zh")
@@ -290,8 +283,8 @@ def test_pdf_and_png_written(drawn):
     assert img[..., :3].mean() < 0.995                   # something is drawn
 
 
-def test_english_sheet_builds():
-    _, cam = _cam("cam_7_3")
+def test_english_sheet_builds(example_results):
+    _, cam = _cam(example_results, "cam_7_3")
     sheet = cam_sheet(cam, TitleInfo("Cam drawing", "Exercise 7-3", lang="en"), "en")
     words = " ".join(t.text for t in sheet.entities if isinstance(t, Text))
     assert "Follower displacement diagram" in words and "pitch curve" in words

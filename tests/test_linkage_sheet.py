@@ -22,16 +22,8 @@ INFO = TitleInfo("导杆机构运动及动力分析图", "牛头刨床", "张三
 
 
 @pytest.fixture(scope="module")
-def shaper_results():
-    from mechdesign.brief.loader import load_brief
-    from mechdesign.machines import get_machine, stages_for
-    from mechdesign.pipeline import run_stages
-
-    b = load_brief("designs/shaper.yaml")
-    m = get_machine(b.machine)
-    p = m.to_params(b)
-    results, _ = run_stages(stages_for(m, p), {"params": p, "brief": b}, None)
-    return results
+def shaper_results(example_results):
+    return example_results("shaper")
 
 
 @pytest.fixture(scope="module")

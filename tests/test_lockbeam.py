@@ -18,8 +18,7 @@ from mechdesign.core import cycle as cy
 from mechdesign.core import rocker_synthesis as rs
 from mechdesign.core.fourbar import SynthesisError
 from mechdesign.core.mechanism import RRR, Crank, Mechanism
-from mechdesign.machines import get_machine, stages_for
-from mechdesign.pipeline import run_stages
+from mechdesign.machines import get_machine
 
 ROOT = Path(__file__).resolve().parents[1]
 BRIEF = ROOT / "designs" / "lockbeam.yaml"
@@ -31,12 +30,8 @@ def _data():
 
 
 @pytest.fixture(scope="module")
-def run():
-    b = parse_brief(_data())
-    m = get_machine("lockbeam")
-    p = m.to_params(b)
-    r, _ = run_stages(stages_for(m, p), {"params": p, "brief": b})
-    return r
+def run(example_results):
+    return example_results("lockbeam")                   # = parse_brief(_data()), computed
 
 
 def _output_by_root_finding(d, a, b, c, alpha, beta_guess):

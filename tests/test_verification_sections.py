@@ -47,23 +47,23 @@ def run_brief(brief) -> dict:
 
 
 @pytest.fixture(scope="module")
-def cam73():
-    return run_brief(load_brief(DESIGNS / "cam_7_3.yaml"))
+def cam73(example_results):
+    return example_results("cam_7_3")
 
 
 @pytest.fixture(scope="module")
-def lockbeam():
-    return run_brief(load_brief(DESIGNS / "lockbeam_cam.yaml"))
+def lockbeam(example_results):
+    return example_results("lockbeam_cam")
 
 
 @pytest.fixture(scope="module")
-def disc():
-    return run_brief(load_brief(DESIGNS / "cam_7_1.yaml"))
+def disc(example_results):
+    return example_results("cam_7_1")
 
 
 @pytest.fixture(scope="module")
-def drive():
-    return run_brief(load_brief(DESIGNS / "furnace_drive.yaml"))
+def drive(example_results):
+    return example_results("furnace_drive")
 
 
 def by_key(v, key):
