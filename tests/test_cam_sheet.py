@@ -118,6 +118,7 @@ def _pitch_reference(cam, points=200_000) -> np.ndarray:
 # --------------------------------------------------------------------------- tests
 
 
+@pytest.mark.e2e
 def test_layers_have_entities(drawn):
     doc, msp = drawn["doc"], drawn["msp"]
     for layer in LAYERS:
@@ -126,6 +127,7 @@ def test_layers_have_entities(drawn):
     assert len(msp.query("DIMENSION")) >= 1           # r0 (rr is a leader), e or a, L
 
 
+@pytest.mark.e2e
 def test_actual_profile_is_the_roller_envelope_of_the_pitch_curve(drawn):
     cam, msp = drawn["cam"], drawn["msp"]
     n = _scale(msp)
@@ -152,6 +154,7 @@ def test_actual_profile_is_the_roller_envelope_of_the_pitch_curve(drawn):
     assert np.mean(np.abs(dist2 - rr) < 1e-3) > 0.98
 
 
+@pytest.mark.e2e
 def test_pitch_curve_and_base_circle(drawn):
     cam, msp = drawn["cam"], drawn["msp"]
     n = _scale(msp)
@@ -167,6 +170,7 @@ def test_pitch_curve_and_base_circle(drawn):
     assert abs(r.min() - cam.base_radius * 1e3) < 0.01
 
 
+@pytest.mark.e2e
 def test_displacement_ordinates(drawn):
     cam, msp = drawn["cam"], drawn["msp"]
     prog = cam.params.programme
@@ -215,6 +219,7 @@ def test_displacement_ordinates(drawn):
     assert primed == {f"{k}′" for k, _ in numbers}
 
 
+@pytest.mark.e2e
 def test_everything_inside_the_border(drawn):
     msp = drawn["msp"]
     x0, y0, x1, y1 = BORDER
@@ -231,6 +236,7 @@ def test_everything_inside_the_border(drawn):
     assert not outside, outside[:5]
 
 
+@pytest.mark.e2e
 def test_title_block_kept_clear(drawn):
     sheet, msp = drawn["sheet"], drawn["msp"]
     tx0, ty0, tx1, ty1 = title_block_box(sheet)
@@ -258,6 +264,7 @@ def _box(t: Text):
     return x, y, x + w, y + t.height
 
 
+@pytest.mark.e2e
 def test_texts_do_not_overlap(drawn):
     sheet = drawn["sheet"]
     texts = [t for t in sheet.entities if isinstance(t, Text)]
@@ -272,6 +279,7 @@ def test_texts_do_not_overlap(drawn):
     assert not clashes, clashes
 
 
+@pytest.mark.e2e
 def test_pdf_and_png_written(drawn):
     from matplotlib.image import imread
 
@@ -291,6 +299,7 @@ def test_english_sheet_builds(example_results):
     assert not re.search(r"[\u4e00-\u9fff]", words)
 
 
+@pytest.mark.e2e
 def test_dimensions_measure_the_design(drawn):
     """Every DIMENSION's measured paper length, back at the sheet's scale (or μδ for the
     segment angles of the diagram), equals its written value and the design's value."""

@@ -340,6 +340,7 @@ def test_cli_bad_brief_exits_2_without_traceback(tmp_path):
     assert "chain.bar_spacing_mm" in result.output and "Traceback" not in result.output
 
 
+@pytest.mark.e2e
 def test_cli_writes_the_english_report(tmp_path):
     out = tmp_path / "en"
     result = CliRunner().invoke(app, ["run", str(BRIEF), "-o", str(out), "-f", "md", "--lang", "en"])

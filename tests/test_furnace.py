@@ -290,6 +290,7 @@ def test_torque_is_virtual_work_at_several_angles(run, design):
 
 # ------------------------------------------------------------------ the command line
 
+@pytest.mark.e2e
 def test_cli_writes_report_pdf_and_results_with_the_motor(tmp_path):
     out = tmp_path / "zh"
     result = runner.invoke(app, ["run", str(BRIEF), "-o", str(out), "-f", "md,pdf"])

@@ -132,6 +132,7 @@ def test_default_positions_are_mid_working_and_mid_return(shaper_results):
     assert default_positions(shaper_results["kinematics"]) == ["4", "10"]
 
 
+@pytest.mark.e2e
 def test_dxf_reopens_with_layers_vectors_and_dimensions(sheet, shaper_results, tmp_path):
     s, scales = sheet
     path = write_dxf(s, tmp_path / "linkage.dxf")
@@ -211,6 +212,7 @@ def test_everything_inside_the_border_and_texts_do_not_collide(sheet):
     assert not clashes, clashes[:10]
 
 
+@pytest.mark.e2e
 def test_sheet_pdf_and_preview_are_written(sheet, tmp_path):
     from mechdesign.render.sheet_typst import write_sheet
 

@@ -287,6 +287,7 @@ def test_bad_inputs_exit_2_naming_the_field(tmp_path):
         assert "Traceback" not in res.output
 
 
+@pytest.mark.e2e
 def test_small_pin_lift_is_a_warning_not_an_error(tmp_path):
     d = _data()
     d["cam"]["follower"]["stroke_h_mm"] = 1.2
@@ -295,6 +296,7 @@ def test_small_pin_lift_is_a_warning_not_an_error(tmp_path):
     assert "groove" in res.output or "槽" in res.output
 
 
+@pytest.mark.e2e
 def test_english_report_and_gif(tmp_path):
     res = CliRunner().invoke(app, ["run", str(BRIEF), "-o", str(tmp_path / "en"), "--lang", "en",
                                    "-f", "md,gif"])

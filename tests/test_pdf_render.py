@@ -88,6 +88,7 @@ def test_markdown_to_typst_metadata_and_refs(tmp_path):
     assert "math.equation(numbering" in source
 
 
+@pytest.mark.e2e
 def test_render_pdf_embeds_chinese_fonts(tmp_path):
     _chinese_figure(tmp_path / "figures" / "ram.png")
     md_path = tmp_path / "report.md"
@@ -111,6 +112,7 @@ def test_render_pdf_embeds_chinese_fonts(tmp_path):
         assert b"NotoSerifSC" in data and b"NotoSansSC" in data
 
 
+@pytest.mark.e2e
 def test_render_pdf_reports_typst_errors(tmp_path):
     md_path = tmp_path / "bad.md"
     md_path.write_text("# 标题\n\n![缺图](figures/none.png)\n", encoding="utf-8")

@@ -389,6 +389,7 @@ def test_each_drive_check_fails_on_a_perturbed_drive(drive, what):
 # ---------------------------------------------------------------- 6. the reports
 
 
+@pytest.mark.e2e
 @pytest.mark.parametrize("lang", ["zh", "en"])
 @pytest.mark.parametrize("name", ["cam_7_3", "lockbeam_cam", "cam_7_1", "furnace_drive"])
 def test_reports_end_with_the_verification_chapter(tmp_path, name, lang):
