@@ -132,17 +132,8 @@ def test_bad_input_rejected(tmp_path):
 
 
 @pytest.fixture(scope="module")
-def shaper_results():
-    from mechdesign.brief.loader import load_brief
-    from mechdesign.machines import get_machine, stages_for
-    from mechdesign.pipeline import run_stages
-
-    root = Path(__file__).resolve().parents[1]
-    b = load_brief(root / "designs" / "shaper.yaml")
-    m = get_machine(b.machine)
-    p = m.to_params(b)
-    results, _ = run_stages(stages_for(m, p), {"params": p, "brief": b}, None)
-    return results
+def shaper_results(example_results):
+    return example_results("shaper")
 
 
 def test_shaper_gif(shaper_results, tmp_path):

@@ -40,6 +40,7 @@ def run_73(tmp_path_factory):
     return run(DESIGNS / "cam_7_3.yaml", out), out
 
 
+@pytest.mark.e2e
 def test_73_writes_report_results_and_csv(run_73):
     result, out = run_73
     assert result.exit_code == 0, result.output
@@ -50,6 +51,7 @@ def test_73_writes_report_results_and_csv(run_73):
     assert "warning" not in result.output        # r0 = 50 mm, r_r = 10 mm is a sound design
 
 
+@pytest.mark.e2e
 def test_73_csv_matches_closed_form_pitch_point(run_73):
     """At δ = 60° (mid-rise of the cycloidal 120° rise) s = h/2 = 15 mm. The roller centre
     in the frame is (e, s0 + s); a counter-clockwise cam sees it turned by −δ."""
@@ -72,6 +74,7 @@ def test_73_csv_matches_closed_form_pitch_point(run_73):
     assert d == pytest.approx(10.0, abs=1e-5)
 
 
+@pytest.mark.e2e
 def test_73_report_text_carries_the_numbers(run_73):
     _, out = run_73
     md = (out / "report.md").read_text(encoding="utf-8")
@@ -85,6 +88,7 @@ def test_73_report_text_carries_the_numbers(run_73):
     assert "24.00 mm" in md
 
 
+@pytest.mark.e2e
 def test_73_english_report(tmp_path):
     result = run(DESIGNS / "cam_7_3.yaml", tmp_path / "en", "--lang", "en")
     assert result.exit_code == 0, result.output
@@ -92,6 +96,7 @@ def test_73_english_report(tmp_path):
     assert "# Cam mechanism" in md and "cycloidal" in md and "rigid impact" in md
 
 
+@pytest.mark.e2e
 def test_71_textbook_list_and_offset_stroke(tmp_path):
     result = run(DESIGNS / "cam_7_1.yaml", tmp_path / "c71")
     assert result.exit_code == 0, result.output
@@ -112,6 +117,7 @@ def test_71_textbook_list_and_offset_stroke(tmp_path):
     assert (tmp_path / "c71" / "disc_displacement.csv").is_file()
 
 
+@pytest.mark.e2e
 def test_shaper_report_has_the_cam_section(tmp_path):
     result = runner.invoke(app, ["run", str(DESIGNS / "shaper.yaml"), "--out", str(tmp_path / "s"),
                                  "--format", "md"])
@@ -125,6 +131,7 @@ def test_shaper_report_has_the_cam_section(tmp_path):
     assert (tmp_path / "s" / "cam_profile.csv").is_file()
 
 
+@pytest.mark.e2e
 def test_lockbeam_cam_has_no_impacts(tmp_path):
     result = run(DESIGNS / "lockbeam_cam.yaml", tmp_path / "lb")
     assert result.exit_code == 0, result.output
@@ -133,6 +140,7 @@ def test_lockbeam_cam_has_no_impacts(tmp_path):
     assert max(s["max_pressure_angle"] for s in doc["cam"]["segments"]) < np.radians(30)
 
 
+@pytest.mark.e2e
 def test_roller_larger_than_curvature_is_reported_as_undercut(tmp_path):
     def big_roller(d):
         d["cam"]["follower"]["roller_radius_mm"] = 48   # the pitch curve's convex ρmin ≈ 47.4 mm
@@ -143,6 +151,7 @@ def test_roller_larger_than_curvature_is_reported_as_undercut(tmp_path):
     assert "运动失真" in md and "FAIL" in md
 
 
+@pytest.mark.e2e
 def test_base_circle_too_small_is_reported_with_the_smallest_one(tmp_path):
     def small(d):
         d["cam"]["base_radius_mm"] = 22
@@ -152,6 +161,7 @@ def test_base_circle_too_small_is_reported_with_the_smallest_one(tmp_path):
     assert "at least 24.00 mm" in result.output               # 2e, see test_73_report_text…
 
 
+@pytest.mark.e2e
 def test_auto_base_radius_meets_the_limit(tmp_path):
     def auto(d):
         d["cam"]["base_radius_mm"] = "auto"
@@ -191,6 +201,7 @@ def test_bad_cam_brief_names_the_field(tmp_path, edit, path, words):
     assert "Traceback" not in result.output
 
 
+@pytest.mark.e2e
 def test_73_pdf_renders(tmp_path):
     result = runner.invoke(app, ["run", str(DESIGNS / "cam_7_3.yaml"), "--out", str(tmp_path / "pdf")])
     assert result.exit_code == 0, result.output

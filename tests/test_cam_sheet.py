@@ -19,7 +19,6 @@ module's arrays:
 from __future__ import annotations
 
 import re
-from pathlib import Path
 
 import numpy as np
 import pytest
@@ -29,33 +28,27 @@ from ezdxf import bbox as dxf_bbox  # noqa: E402
 from ezdxf.enums import TextEntityAlignment  # noqa: E402
 from scipy.spatial import cKDTree  # noqa: E402
 
-from mechdesign.brief.loader import load_brief  # noqa: E402
 from mechdesign.core.cam import OscillatingFollower  # noqa: E402
-from mechdesign.machines import get_machine, stages_for  # noqa: E402
-from mechdesign.pipeline import run_stages  # noqa: E402
 from mechdesign.render.cam_sheet import cam_sheet  # noqa: E402
 from mechdesign.render.sheet import Text, TitleInfo, text_width, title_block_box  # noqa: E402
 from mechdesign.render.sheet_dxf import write_dxf  # noqa: E402
 from mechdesign.render.sheet_typst import write_sheet  # noqa: E402
 
-ROOT = Path(__file__).resolve().parents[1]
 DESIGNS = ["cam_7_3", "lockbeam_cam", "shaper"]
 BORDER = (25.0, 10.0, 584.0, 410.0)
 LAYERS = ("OUTLINE", "CENTER", "CONSTRUCTION", "DIMENSIONS", "TEXT", "FRAME")
 
 
-def _cam(name):
-    brief = load_brief(ROOT / "designs" / f"{name}.yaml")
-    machine = get_machine(brief.machine)
-    params = machine.to_params(brief)
-    results, _ = run_stages(stages_for(machine, params), {"params": params, "brief": brief}, None)
-    return brief, results["cam"]
+def _cam(example_results, name):
+    """The brief and the cam result of designs/<name>.yaml (computed once per session)."""
+    results = example_results(name)
+    return results["brief"], results["cam"]
 
 
 @pytest.fixture(scope="module", params=DESIGNS)
-def drawn(request, tmp_path_factory):
+def drawn(request, tmp_path_factory, example_results):
     name = request.param
-    brief, cam = _cam(name)
+    brief, cam = _cam(example_results, name)
     rep = brief.report
     info = TitleInfo("", rep.title, rep.student, rep.student_id, rep.class_name, rep.teacher,
                      str(rep.date), number="MD-CAM", lang="zh")
@@ -125,6 +118,7 @@ def _pitch_reference(cam, points=200_000) -> np.ndarray:
 # --------------------------------------------------------------------------- tests
 
 
+@pytest.mark.e2e
 def test_layers_have_entities(drawn):
     doc, msp = drawn["doc"], drawn["msp"]
     for layer in LAYERS:
@@ -133,6 +127,7 @@ def test_layers_have_entities(drawn):
     assert len(msp.query("DIMENSION")) >= 1           # r0 (rr is a leader), e or a, L
 
 
+@pytest.mark.e2e
 def test_actual_profile_is_the_roller_envelope_of_the_pitch_curve(drawn):
     cam, msp = drawn["cam"], drawn["msp"]
     n = _scale(msp)
@@ -159,6 +154,7 @@ def test_actual_profile_is_the_roller_envelope_of_the_pitch_curve(drawn):
     assert np.mean(np.abs(dist2 - rr) < 1e-3) > 0.98
 
 
+@pytest.mark.e2e
 def test_pitch_curve_and_base_circle(drawn):
     cam, msp = drawn["cam"], drawn["msp"]
     n = _scale(msp)
@@ -174,6 +170,7 @@ def test_pitch_curve_and_base_circle(drawn):
     assert abs(r.min() - cam.base_radius * 1e3) < 0.01
 
 
+@pytest.mark.e2e
 def test_displacement_ordinates(drawn):
     cam, msp = drawn["cam"], drawn["msp"]
     prog = cam.params.programme
@@ -222,6 +219,7 @@ def test_displacement_ordinates(drawn):
     assert primed == {f"{k}′" for k, _ in numbers}
 
 
+@pytest.mark.e2e
 def test_everything_inside_the_border(drawn):
     msp = drawn["msp"]
     x0, y0, x1, y1 = BORDER
@@ -238,6 +236,7 @@ def test_everything_inside_the_border(drawn):
     assert not outside, outside[:5]
 
 
+@pytest.mark.e2e
 def test_title_block_kept_clear(drawn):
     sheet, msp = drawn["sheet"], drawn["msp"]
     tx0, ty0, tx1, ty1 = title_block_box(sheet)
@@ -265,6 +264,7 @@ def _box(t: Text):
     return x, y, x + w, y + t.height
 
 
+@pytest.mark.e2e
 def test_texts_do_not_overlap(drawn):
     sheet = drawn["sheet"]
     texts = [t for t in sheet.entities if isinstance(t, Text)]
@@ -279,6 +279,7 @@ def test_texts_do_not_overlap(drawn):
     assert not clashes, clashes
 
 
+@pytest.mark.e2e
 def test_pdf_and_png_written(drawn):
     from matplotlib.image import imread
 
@@ -290,14 +291,15 @@ def test_pdf_and_png_written(drawn):
     assert img[..., :3].mean() < 0.995                   # something is drawn
 
 
-def test_english_sheet_builds():
-    _, cam = _cam("cam_7_3")
+def test_english_sheet_builds(example_results):
+    _, cam = _cam(example_results, "cam_7_3")
     sheet = cam_sheet(cam, TitleInfo("Cam drawing", "Exercise 7-3", lang="en"), "en")
     words = " ".join(t.text for t in sheet.entities if isinstance(t, Text))
     assert "Follower displacement diagram" in words and "pitch curve" in words
     assert not re.search(r"[\u4e00-\u9fff]", words)
 
 
+@pytest.mark.e2e
 def test_dimensions_measure_the_design(drawn):
     """Every DIMENSION's measured paper length, back at the sheet's scale (or μδ for the
     segment angles of the diagram), equals its written value and the design's value."""

@@ -46,6 +46,7 @@ def test_version():
     assert __version__ in result.output
 
 
+@pytest.mark.e2e
 def test_run_writes_report_json_and_figures(md_run):
     result, out = md_run
     assert result.exit_code == 0, result.output
@@ -58,6 +59,7 @@ def test_run_writes_report_json_and_figures(md_run):
     assert not list(out.glob(".mechdesign-*")), "staging folders must not remain"
 
 
+@pytest.mark.e2e
 def test_results_json_matches_closed_form_and_report(md_run):
     _, out = md_run
     doc = json.loads((out / "results.json").read_text(encoding="utf-8"))
@@ -77,6 +79,7 @@ def test_results_json_matches_closed_form_and_report(md_run):
     assert "# 导杆机构设计" in md and "# 计算校核" in md
 
 
+@pytest.mark.e2e
 def test_english_report(tmp_path):
     result = runner.invoke(app, ["run", str(BRIEF), "--out", str(tmp_path), "--format", "md",
                                  "--lang", "en"])
@@ -120,6 +123,7 @@ def test_bad_format_is_a_usage_error(tmp_path):
     assert "md, pdf" in result.output
 
 
+@pytest.mark.e2e
 def test_failed_render_leaves_the_previous_report_untouched(tmp_path, md_run):
     _, good = md_run
     out = tmp_path / "out"
@@ -141,6 +145,7 @@ def test_brief_reference_is_up_to_date():
         "regenerate with: python -m mechdesign.brief.docs > docs/brief.md"
 
 
+@pytest.mark.e2e
 def test_full_run_renders_a_chinese_pdf(tmp_path):
     result = runner.invoke(app, ["run", str(BRIEF), "--out", str(tmp_path)])
     assert result.exit_code == 0, result.output

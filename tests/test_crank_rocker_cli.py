@@ -55,6 +55,7 @@ def report(tmp_path_factory):
     return result, out
 
 
+@pytest.mark.e2e
 @pytest.mark.skipif(importlib.util.find_spec("pypandoc") is None
                     or importlib.util.find_spec("typst") is None,
                     reason="pypandoc and typst are needed for the PDF")
@@ -72,6 +73,7 @@ def test_writes_pdf_report_and_figures(report):
     assert (out / "design_chart.csv").is_file()
 
 
+@pytest.mark.e2e
 def test_results_meet_the_specification(report):
     result, out = report
     assert result.exit_code == 0, result.output
@@ -118,6 +120,7 @@ def test_optimum_beats_every_given_frame():
     assert best == pytest.approx(g_opt, abs=1e-5)
 
 
+@pytest.mark.e2e
 def test_english_report(tmp_path):
     result = run(BRIEF, tmp_path / "en", "--format", "md", "--lang", "en")
     assert result.exit_code == 0, result.output
@@ -126,6 +129,7 @@ def test_english_report(tmp_path):
     assert "最优设计" not in md
 
 
+@pytest.mark.e2e
 def test_poor_design_warns(tmp_path):
     def edit(d):
         d["extreme_angle_deg"] = 30

@@ -37,8 +37,8 @@ def run(data: dict) -> dict:
 
 
 @pytest.fixture(scope="module")
-def shipped():
-    return run(base())
+def shipped(example_results):
+    return example_results("die_cutter")                 # = run(base())
 
 
 def edited(**changes) -> dict:
@@ -355,6 +355,7 @@ def test_cli_bad_brief_exits_2_without_traceback(tmp_path):
     assert "chain.bar_spacing_mm" in result.output and "Traceback" not in result.output
 
 
+@pytest.mark.e2e
 def test_cli_writes_the_english_report(tmp_path):
     out = tmp_path / "en"
     result = CliRunner().invoke(app, ["run", str(BRIEF), "-o", str(out), "-f", "md", "--lang", "en"])

@@ -19,6 +19,8 @@ from mechdesign.render.docx import (  # noqa: E402
 )
 from mechdesign.render.report import template_dir  # noqa: E402
 
+pytestmark = pytest.mark.e2e     # renders Word files (see tests/conftest.py)
+
 ROOT = Path(__file__).parents[1]
 TEMPLATES = template_dir()
 METADATA = {

@@ -11,6 +11,8 @@ from typer.testing import CliRunner
 
 from mechdesign.cli import app
 
+pytestmark = pytest.mark.e2e     # runs `mechdesign run` to a report (see tests/conftest.py)
+
 ROOT = Path(__file__).resolve().parents[1]
 runner = CliRunner()
 

@@ -19,13 +19,11 @@ from scipy.optimize import brentq, minimize_scalar
 from typer.testing import CliRunner
 
 from mechdesign.brief.furnace import furnace_to_si
-from mechdesign.brief.loader import load_brief, parse_brief
+from mechdesign.brief.loader import parse_brief
 from mechdesign.cli import app
 from mechdesign.core import fourbar as fb
 from mechdesign.core.mechanism import RRR, Crank, Mechanism
-from mechdesign.machines import get_machine, stages_for
 from mechdesign.machines.furnace import build_mechanism, synthesize
-from mechdesign.pipeline import run_stages
 
 ROOT = Path(__file__).resolve().parents[1]
 BRIEF = ROOT / "designs" / "furnace_pusher.yaml"
@@ -248,12 +246,9 @@ def test_the_seeds_linkage_simulated_misses_K_and_the_stroke(design):
 # ------------------------------------------------------------------ forces and power
 
 @pytest.fixture(scope="module")
-def run():
-    b = load_brief(BRIEF)
-    machine = get_machine(b.machine)
-    params = machine.to_params(b)
-    results, _ = run_stages(stages_for(machine, params), {"params": params, "brief": b})
-    return params, results
+def run(example_results):
+    results = example_results("furnace_pusher")          # = load_brief(BRIEF), computed
+    return results["params"], results
 
 
 def test_power_balance_mean_torque_times_omega_is_mean_resistance_power(run, design):
@@ -295,6 +290,7 @@ def test_torque_is_virtual_work_at_several_angles(run, design):
 
 # ------------------------------------------------------------------ the command line
 
+@pytest.mark.e2e
 def test_cli_writes_report_pdf_and_results_with_the_motor(tmp_path):
     out = tmp_path / "zh"
     result = runner.invoke(app, ["run", str(BRIEF), "-o", str(out), "-f", "md,pdf"])

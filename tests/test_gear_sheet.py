@@ -27,6 +27,8 @@ from mechdesign.render.sheet import SIZES, TitleInfo, title_block_box
 from mechdesign.render.sheet_dxf import write_dxf
 from mechdesign.render.sheet_typst import write_sheet
 
+pytestmark = pytest.mark.e2e     # renders drawing sheets (see tests/conftest.py)
+
 PAIRS = {
     # (m [m], z1, z2, α, ha*, c*, x1, x2)
     "shaper": (0.012, 18, 60, radians(20), 1.0, 0.25, 0.0, 0.0),

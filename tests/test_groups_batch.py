@@ -128,6 +128,7 @@ def test_check_validates_every_group(tmp_path):
     assert "groups.variants.4.pusher.time_ratio_K" in result.output
 
 
+@pytest.mark.e2e
 def test_run_with_a_group_states_it(tmp_path):
     """`run --group 2` computes group 2's stroke and says so in the report and results."""
     out = tmp_path / "g2"
@@ -192,6 +193,7 @@ def test_group_labels_cannot_leave_the_output_folder(tmp_path):
         assert "/" not in job.run_id and ".." not in job.run_id and job.run_id.startswith("c-g")
 
 
+@pytest.mark.e2e
 def test_batch_continues_past_a_bad_brief_and_indexes_everything(tmp_path):
     """Two good briefs (one with two groups) and a broken one, two workers: every good
     report is written, the index lists all four runs, the exit code is 2."""

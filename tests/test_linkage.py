@@ -3,16 +3,14 @@ machine (a different composition of the same physics) and virtual work."""
 from __future__ import annotations
 
 import copy
-from pathlib import Path
 
 import numpy as np
 import pytest
 
-from mechdesign.brief.loader import BriefError, load_brief, parse_brief
+from mechdesign.brief.loader import BriefError, parse_brief
 from mechdesign.machines import get_machine, stages_for
 from mechdesign.pipeline import run_stages
 
-ROOT = Path(__file__).resolve().parents[1]
 REPORT = {"title": "t", "student": "s"}
 
 
@@ -112,12 +110,10 @@ def test_resistance_torque_is_virtual_work_and_power_balances():
     assert np.max(np.abs(f.power_residual[:n])) < 1e-9 * f.peak_torque * abs(p.crank_omega)
 
 
-def test_same_as_the_shaper_machine():
+def test_same_as_the_shaper_machine(example_results):
     """The shaper written as a generic linkage gives the shaper machine's M_b and ram motion."""
-    shaper = load_brief(ROOT / "designs" / "shaper.yaml")
-    sm = get_machine("shaper")
-    sp = sm.to_params(shaper)
-    sr = run_stages(sm.stages(sp)[:5], {"params": sp, "brief": shaper})[0]
+    sr = example_results("shaper")
+    sp = sr["params"]
     d, ks = sr["synthesis"].design, sr["kinematics"]
     mm = 1e3
     drop = d.guide_height - (d.frame + sp.cutting_height)
@@ -211,26 +207,19 @@ def test_assembly_failure_names_the_group_and_angle():
         run(slider_crank(100, 80, 0))
 
 
-def test_example_brief_runs_and_verifies():
-    r = run_stages_for(ROOT / "designs" / "linkage_sixbar.yaml")
+def test_example_brief_runs_and_verifies(example_results):
+    r = example_results("linkage_sixbar")
     v = r["linkage_verification"]
     assert v.closure_residual < 1e-12
     assert v.velocity_fd_error < 1e-4 and v.acceleration_fd_error < 1e-4
     assert v.power_balance_residual < 1e-12
 
 
-def run_stages_for(path: Path) -> dict:
-    b = load_brief(path)
-    m = get_machine(b.machine)
-    p = m.to_params(b)
-    return run_stages(stages_for(m, p), {"params": p, "brief": b})[0]
-
-
-def test_document_serialises():
+def test_document_serialises(example_results):
     from mechdesign.results import dumps
     import json
 
-    r = run_stages_for(ROOT / "designs" / "linkage_sixbar.yaml")
+    r = example_results("linkage_sixbar")
     doc = json.loads(dumps(get_machine("linkage").document(r)))
     lk = doc["linkage"]
     assert lk["output"]["name"] == "E" and len(lk["positions"]) >= 12

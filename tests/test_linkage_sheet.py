@@ -22,16 +22,8 @@ INFO = TitleInfo("导杆机构运动及动力分析图", "牛头刨床", "张三
 
 
 @pytest.fixture(scope="module")
-def shaper_results():
-    from mechdesign.brief.loader import load_brief
-    from mechdesign.machines import get_machine, stages_for
-    from mechdesign.pipeline import run_stages
-
-    b = load_brief("designs/shaper.yaml")
-    m = get_machine(b.machine)
-    p = m.to_params(b)
-    results, _ = run_stages(stages_for(m, p), {"params": p, "brief": b}, None)
-    return results
+def shaper_results(example_results):
+    return example_results("shaper")
 
 
 @pytest.fixture(scope="module")
@@ -140,6 +132,7 @@ def test_default_positions_are_mid_working_and_mid_return(shaper_results):
     assert default_positions(shaper_results["kinematics"]) == ["4", "10"]
 
 
+@pytest.mark.e2e
 def test_dxf_reopens_with_layers_vectors_and_dimensions(sheet, shaper_results, tmp_path):
     s, scales = sheet
     path = write_dxf(s, tmp_path / "linkage.dxf")
@@ -219,6 +212,7 @@ def test_everything_inside_the_border_and_texts_do_not_collide(sheet):
     assert not clashes, clashes[:10]
 
 
+@pytest.mark.e2e
 def test_sheet_pdf_and_preview_are_written(sheet, tmp_path):
     from mechdesign.render.sheet_typst import write_sheet
 

@@ -18,8 +18,7 @@ from mechdesign.core import cycle as cy
 from mechdesign.core import rocker_synthesis as rs
 from mechdesign.core.fourbar import SynthesisError
 from mechdesign.core.mechanism import RRR, Crank, Mechanism
-from mechdesign.machines import get_machine, stages_for
-from mechdesign.pipeline import run_stages
+from mechdesign.machines import get_machine
 
 ROOT = Path(__file__).resolve().parents[1]
 BRIEF = ROOT / "designs" / "lockbeam.yaml"
@@ -31,12 +30,8 @@ def _data():
 
 
 @pytest.fixture(scope="module")
-def run():
-    b = parse_brief(_data())
-    m = get_machine("lockbeam")
-    p = m.to_params(b)
-    r, _ = run_stages(stages_for(m, p), {"params": p, "brief": b})
-    return r
+def run(example_results):
+    return example_results("lockbeam")                   # = parse_brief(_data()), computed
 
 
 def _output_by_root_finding(d, a, b, c, alpha, beta_guess):
@@ -292,6 +287,7 @@ def test_bad_inputs_exit_2_naming_the_field(tmp_path):
         assert "Traceback" not in res.output
 
 
+@pytest.mark.e2e
 def test_small_pin_lift_is_a_warning_not_an_error(tmp_path):
     d = _data()
     d["cam"]["follower"]["stroke_h_mm"] = 1.2
@@ -300,6 +296,7 @@ def test_small_pin_lift_is_a_warning_not_an_error(tmp_path):
     assert "groove" in res.output or "槽" in res.output
 
 
+@pytest.mark.e2e
 def test_english_report_and_gif(tmp_path):
     res = CliRunner().invoke(app, ["run", str(BRIEF), "-o", str(tmp_path / "en"), "--lang", "en",
                                    "-f", "md,gif"])

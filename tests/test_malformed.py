@@ -81,6 +81,7 @@ def timed_run(args: list[str]) -> tuple[subprocess.CompletedProcess, float, floa
     return proc, wall, cpu
 
 
+@pytest.mark.e2e
 @pytest.mark.skipif(resource is None, reason="needs the resource module (POSIX)")
 @pytest.mark.parametrize("name", ["binary_junk.bin.yaml", "billion_laughs.yaml", "deep_nesting.yaml",
                                   "huge_list.yaml", "fraction_exponent.yaml"])

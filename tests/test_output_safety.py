@@ -30,6 +30,7 @@ def workspace(tmp_path, monkeypatch):
     return tmp_path
 
 
+@pytest.mark.e2e
 def test_a_run_writes_only_its_output_folder(workspace):
     before = _snapshot(workspace)
     result = runner.invoke(app, ["run", f"briefs/{BRIEF}", "-f", "md"])
@@ -57,6 +58,7 @@ def _render_fails(monkeypatch, exc: BaseException) -> None:
     monkeypatch.setattr(report, "context", broken)
 
 
+@pytest.mark.e2e
 def test_an_interrupted_run_leaves_the_previous_report(workspace, monkeypatch):
     out = workspace / "out" / "cr"
     first = run_one(workspace / "briefs" / BRIEF, out_dir=out, formats=("md",))
@@ -69,6 +71,7 @@ def test_an_interrupted_run_leaves_the_previous_report(workspace, monkeypatch):
     assert [p.name for p in out.iterdir() if p.name.startswith(".")] == []
 
 
+@pytest.mark.e2e
 def test_an_interrupted_run_through_the_cli_exits_130(workspace, monkeypatch):
     out = workspace / "out" / "cr"
     assert runner.invoke(app, ["run", f"briefs/{BRIEF}", "-o", str(out), "-f", "md"]).exit_code == 0
@@ -80,6 +83,7 @@ def test_an_interrupted_run_through_the_cli_exits_130(workspace, monkeypatch):
     assert _snapshot(out) == before
 
 
+@pytest.mark.e2e
 def test_a_failed_render_leaves_the_previous_report(workspace, monkeypatch):
     out = workspace / "out" / "cr"
     assert run_one(workspace / "briefs" / BRIEF, out_dir=out, formats=("md",)).status == "ok"

@@ -116,6 +116,7 @@ def _tree_digest(folder: Path) -> dict[str, str]:
             for p in sorted(folder.rglob("*")) if p.is_file()}
 
 
+@pytest.mark.e2e
 def test_parallel_and_serial_runs_write_the_same_bytes(tmp_path):
     """The whole shaper report (figures, sheets, previews, PDF) from a run that forks
     helpers and from one that does not: every file byte for byte the same."""
@@ -134,6 +135,7 @@ def test_parallel_and_serial_runs_write_the_same_bytes(tmp_path):
     assert not any(".tmp" in name or ".typ" in name for name in outs["parallel"])
 
 
+@pytest.mark.e2e
 def test_sheet_preview_shows_the_drawing_where_the_sheet_puts_it(tmp_path):
     """write_sheet's PNG preview (the sheet's typst document at the asked width): the
     lines and the circle at their paper coordinates, y upwards on paper."""
@@ -163,6 +165,7 @@ def test_sheet_preview_shows_the_drawing_where_the_sheet_puts_it(tmp_path):
     assert abs(inner.min() - (148.5 - 50) * px) <= 3 and abs(inner.max() - (148.5 + 50) * px) <= 3
 
 
+@pytest.mark.e2e
 def test_timings_prefix_every_progress_line_with_a_growing_time(tmp_path):
     from typer.testing import CliRunner
 

@@ -88,6 +88,7 @@ def test_markdown_to_typst_metadata_and_refs(tmp_path):
     assert "math.equation(numbering" in source
 
 
+@pytest.mark.e2e
 def test_render_pdf_embeds_chinese_fonts(tmp_path):
     _chinese_figure(tmp_path / "figures" / "ram.png")
     md_path = tmp_path / "report.md"
@@ -99,7 +100,7 @@ def test_render_pdf_embeds_chinese_fonts(tmp_path):
     data = pdf_path.read_bytes()
     assert data.startswith(b"%PDF")
     assert not list(tmp_path.glob(".*.typ")), "temporary typst source left behind"
-    assert not list(pdf_path.parent.glob(".*.tmp")), "temporary PDF left behind"
+    assert not list(pdf_path.parent.glob(".*.tmp*")), "temporary PDF left behind"
     if shutil.which("pdftotext"):
         text = subprocess.run(
             ["pdftotext", "-enc", "UTF-8", str(pdf_path), "-"],
@@ -111,6 +112,7 @@ def test_render_pdf_embeds_chinese_fonts(tmp_path):
         assert b"NotoSerifSC" in data and b"NotoSansSC" in data
 
 
+@pytest.mark.e2e
 def test_render_pdf_reports_typst_errors(tmp_path):
     md_path = tmp_path / "bad.md"
     md_path.write_text("# 标题\n\n![缺图](figures/none.png)\n", encoding="utf-8")

@@ -72,6 +72,7 @@ def two_runs(tmp_path_factory):
     return outs
 
 
+@pytest.mark.e2e
 @needs_pdf
 def test_two_runs_give_identical_bytes(two_runs):
     a, b = (_files(out) for out in two_runs)
@@ -82,6 +83,7 @@ def test_two_runs_give_identical_bytes(two_runs):
     assert differ == []
 
 
+@pytest.mark.e2e
 @needs_pdf
 def test_dates_in_the_files_are_the_briefs(two_runs):
     out = two_runs[0]
@@ -122,6 +124,7 @@ write_dxf(s, out / "s.dxf", "- T $x$")
 """
 
 
+@pytest.mark.e2e
 def test_drawing_sheets_are_reproducible(tmp_path):
     outs = []
     for seed in ("1", "2"):

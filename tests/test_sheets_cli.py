@@ -45,6 +45,7 @@ def test_every_example_brief_is_covered():
     assert briefs == set(EXPECTED)
 
 
+@pytest.mark.e2e
 @pytest.mark.parametrize("name", sorted(EXPECTED))
 def test_sheets_for_each_example_brief(name, tmp_path):
     out = tmp_path / name
@@ -68,6 +69,7 @@ def test_sheets_for_each_example_brief(name, tmp_path):
         assert "设计图纸" not in md and "Drawing sheets" not in md
 
 
+@pytest.mark.e2e
 def test_shaper_all_formats(tmp_path):
     """The issue's command: report, three sheets (PDF + DXF), Word, animation."""
     out = tmp_path / "shaper"
@@ -106,6 +108,7 @@ def test_shaper_all_formats(tmp_path):
     assert not [p for p in out.iterdir() if p.name.startswith(".")]
 
 
+@pytest.mark.e2e
 def test_gif_for_a_machine_without_linkage_warns(tmp_path):
     out = tmp_path / "cam"
     result = _run(["run", str(ROOT / "designs" / "cam_7_3.yaml"), "-o", str(out), "-f", "md,gif"])

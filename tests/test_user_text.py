@@ -283,6 +283,7 @@ def squeeze(text: str) -> str:
     return re.sub(r"\s+", "", plain_line(text))
 
 
+@pytest.mark.e2e
 @needs_pdf
 def test_typst_shows_user_text_literally_at_block_starts(tmp_path):
     from mechdesign.render.pdf import render_pdf
@@ -393,6 +394,7 @@ def cam_run(tmp_path_factory):
     return result, tmp / "out", values
 
 
+@pytest.mark.e2e
 @needs_pdf
 def test_hostile_cam_brief_renders_literally(cam_run):
     result, out, v = cam_run
@@ -418,6 +420,7 @@ def test_hostile_cam_brief_renders_literally(cam_run):
     assert [f["label"] for f in doc["followers"]] == v["labels"]
 
 
+@pytest.mark.e2e
 @needs_pdf
 def test_hostile_linkage_names_render_literally(tmp_path):
     brief, v = hostile_linkage_brief(tmp_path)

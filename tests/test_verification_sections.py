@@ -47,23 +47,23 @@ def run_brief(brief) -> dict:
 
 
 @pytest.fixture(scope="module")
-def cam73():
-    return run_brief(load_brief(DESIGNS / "cam_7_3.yaml"))
+def cam73(example_results):
+    return example_results("cam_7_3")
 
 
 @pytest.fixture(scope="module")
-def lockbeam():
-    return run_brief(load_brief(DESIGNS / "lockbeam_cam.yaml"))
+def lockbeam(example_results):
+    return example_results("lockbeam_cam")
 
 
 @pytest.fixture(scope="module")
-def disc():
-    return run_brief(load_brief(DESIGNS / "cam_7_1.yaml"))
+def disc(example_results):
+    return example_results("cam_7_1")
 
 
 @pytest.fixture(scope="module")
-def drive():
-    return run_brief(load_brief(DESIGNS / "furnace_drive.yaml"))
+def drive(example_results):
+    return example_results("furnace_drive")
 
 
 def by_key(v, key):
@@ -389,6 +389,7 @@ def test_each_drive_check_fails_on_a_perturbed_drive(drive, what):
 # ---------------------------------------------------------------- 6. the reports
 
 
+@pytest.mark.e2e
 @pytest.mark.parametrize("lang", ["zh", "en"])
 @pytest.mark.parametrize("name", ["cam_7_3", "lockbeam_cam", "cam_7_1", "furnace_drive"])
 def test_reports_end_with_the_verification_chapter(tmp_path, name, lang):

@@ -21,6 +21,7 @@ from dataclasses import asdict, dataclass, replace
 from pathlib import Path
 from typing import Callable, Iterable
 
+from .fileio import write_text
 from .runner import EXIT_FAILED, EXIT_INVALID, EXIT_OK, Outcome, run_one, safe_label
 
 BRIEF_SUFFIXES = (".yaml", ".yml")
@@ -307,11 +308,7 @@ def write_index(doc: dict, out_root: Path, lang: str = "zh", stem: str = "index"
     paths = []
     for name, text in ((f"{stem}.json", json.dumps(doc, ensure_ascii=False, indent=1) + "\n"),
                        (f"{stem}.md", index_markdown(doc, lang))):
-        target = out_root / name
-        tmp = target.with_name(f".{name}.{os.getpid()}.tmp")
-        tmp.write_text(text, encoding="utf-8")
-        os.replace(tmp, target)
-        paths.append(target)
+        paths.append(write_text(out_root / name, text, encoding="utf-8"))
     return paths
 
 

@@ -286,6 +286,8 @@ def new(
     """Write a commented starter brief for MACHINE (the shipped example, to edit)."""
     from importlib import resources
 
+    from .fileio import write_text
+
     if machine not in EXAMPLES:
         _err(f"machine {machine!r}: one of {', '.join(sorted(EXAMPLES))}")
         raise typer.Exit(EXIT_INVALID)
@@ -295,7 +297,7 @@ def new(
         raise typer.Exit(EXIT_INVALID)
     text = resources.files("mechdesign.designs").joinpath(EXAMPLES[machine]).read_text(encoding="utf-8")
     try:
-        target.write_text(text, encoding="utf-8")
+        write_text(target, text, encoding="utf-8", parents=False)
     except OSError as exc:
         _err(f"{target}: cannot be written: {exc.strerror}")
         raise typer.Exit(EXIT_FAILED)

@@ -13,14 +13,13 @@ Computation never imports this module.
 """
 from __future__ import annotations
 
-import os
-import tempfile
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Iterator, Mapping, Sequence
 
 import numpy as np
 
+from ..fileio import atomic_path
 from .fonts import configure_matplotlib
 
 DPI = 100
@@ -332,17 +331,6 @@ def _palette_image(sample_rgb: np.ndarray):
     return pal
 
 
-def _atomic_target(path: Path, suffix: str) -> Path:
-    path.parent.mkdir(parents=True, exist_ok=True)
-    fd, tmp = tempfile.mkstemp(prefix=f".{path.stem}-", suffix=suffix, dir=path.parent)
-    os.close(fd)
-    # mkstemp creates the file private (0600); the result is an ordinary file (umask applies)
-    mask = os.umask(0)
-    os.umask(mask)
-    os.chmod(tmp, 0o666 & ~mask)
-    return Path(tmp)
-
-
 def write_mechanism_gif(path, points: dict[str, np.ndarray], bars: list[tuple[str, ...]], *,
                         pivots: list[str], sliders: list[tuple[str, float]] = (),
                         guides: list[tuple[complex, complex]] = (), trace: str | None = None,
@@ -371,14 +359,9 @@ def write_mechanism_gif(path, points: dict[str, np.ndarray], bars: list[tuple[st
     _, no_dither = _pil_constants()
     images = [Image.fromarray(np.ascontiguousarray(f)).quantize(palette=pal, dither=no_dither)
               for f in rgb]
-    tmp = _atomic_target(path, ".gif")
-    try:
+    with atomic_path(path) as tmp:
         images[0].save(tmp, format="GIF", save_all=True, append_images=images[1:], loop=0,
                        optimize=True, duration=1000.0 / fps, disposal=2)
-        os.replace(tmp, path)
-    except BaseException:
-        tmp.unlink(missing_ok=True)
-        raise
     return path
 
 

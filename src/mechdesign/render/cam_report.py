@@ -8,6 +8,7 @@ from pathlib import Path
 import numpy as np
 
 from ..core import cam as core
+from ..fileio import atomic_open
 from ..core.motion_laws import LAWS
 from . import cam_figures as cf
 from .fmt import e, f, md_meta, md_text
@@ -355,7 +356,7 @@ def write_cam_csv(c, folder: Path, name: str = "cam_profile") -> list[Path]:
     for prof, suffix in ((c.table, ""), (c.grid, "_fine")):
         path = folder / f"{name}{suffix}.csv"
         osc = c.params.oscillating
-        with path.open("w", newline="", encoding="utf-8") as fh:
+        with atomic_open(path, "w", newline="", encoding="utf-8") as fh:
             w = csv.writer(fh)
             w.writerow(["delta_deg", "phi_deg" if osc else "s_mm", "pitch_x_mm", "pitch_y_mm",
                         "actual_x_mm", "actual_y_mm", "pressure_angle_deg", "rho_pitch_mm",
@@ -372,7 +373,7 @@ def write_cam_csv(c, folder: Path, name: str = "cam_profile") -> list[Path]:
     if env is not None and (env.corners or env.edges):
         # the actual profile as it is cut, with the roller arcs and edges at the corners
         path = folder / f"{name}_outline.csv"
-        with path.open("w", newline="", encoding="utf-8") as fh:
+        with atomic_open(path, "w", newline="", encoding="utf-8") as fh:
             w = csv.writer(fh)
             w.writerow(["actual_x_mm", "actual_y_mm"])
             for z in c.outline:

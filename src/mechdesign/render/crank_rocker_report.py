@@ -7,6 +7,7 @@ from pathlib import Path
 
 import numpy as np
 
+from ..fileio import atomic_open
 from .figures import figure
 from .fmt import e as fe
 from .fmt import f, md_meta, md_text, mpl_text
@@ -493,7 +494,7 @@ def write_data(r: dict, folder: Path) -> list[Path]:
 
     ch = r["chart"]
     path = folder / "design_chart.csv"
-    with path.open("w", newline="", encoding="utf-8") as fh:
+    with atomic_open(path, "w", newline="", encoding="utf-8") as fh:
         w = csv.writer(fh)
         w.writerow(["psi_deg"] + [f"l3_over_l4[theta={t * DEG:g}]" for t in ch.thetas] +
                    [f"gamma_min_deg[theta={t * DEG:g}]" for t in ch.thetas])

@@ -7,6 +7,7 @@ from pathlib import Path
 
 import numpy as np
 
+from ..fileio import atomic_open
 from . import cam_figures as cf
 from .cam_report import CONTACT
 from .fmt import e, f, md_meta, md_text, mpl_text
@@ -124,7 +125,7 @@ def verification_context(v, lang: str) -> dict:
 def write_data(r: dict, folder: Path) -> list[Path]:
     d = r["disc"]
     path = folder / "disc_displacement.csv"
-    with path.open("w", newline="", encoding="utf-8") as fh:
+    with atomic_open(path, "w", newline="", encoding="utf-8") as fh:
         w = csv.writer(fh)
         w.writerow(["delta_deg"] + [f"s_mm[{label}]" for label, _ in d.params.followers] +
                    [f"alpha_deg[{label}]" for label, _ in d.params.followers])

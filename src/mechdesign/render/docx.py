@@ -34,6 +34,7 @@ import zipfile
 from contextlib import contextmanager
 from pathlib import Path
 
+from ..fileio import atomic_path
 from .pdf import DEFAULT_LABELS, MARKDOWN_FORMAT, source_timestamp
 
 REFERENCE_DOCX = "reference.docx"
@@ -125,9 +126,7 @@ def render_docx(md_path: Path, docx_path: Path, metadata: dict, template_dir: Pa
         raise DocxRenderError(f"cannot read {md_path}: {exc}") from exc
 
     meta = _docx_metadata(metadata, reference_text_width(reference))
-    docx_path.parent.mkdir(parents=True, exist_ok=True)
-    tmp_docx = docx_path.with_name(f".{docx_path.stem}.{os.getpid()}.tmp.docx")
-    try:
+    with atomic_path(docx_path) as tmp_docx:
         with tempfile.TemporaryDirectory(prefix="mechdesign-pandoc-") as tmp:
             meta_file = Path(tmp) / "metadata.json"
             # JSON is valid YAML, which is what --metadata-file expects.
@@ -153,8 +152,5 @@ def render_docx(md_path: Path, docx_path: Path, metadata: dict, template_dir: Pa
             except (RuntimeError, OSError) as exc:
                 raise DocxRenderError(
                     f"pandoc failed to convert {md_path.name} to .docx: {exc}") from exc
-        if not tmp_docx.is_file():
+        if not tmp_docx.is_file() or tmp_docx.stat().st_size == 0:
             raise DocxRenderError(f"pandoc wrote no output for {md_path.name}")
-        os.replace(tmp_docx, docx_path)
-    finally:
-        tmp_docx.unlink(missing_ok=True)

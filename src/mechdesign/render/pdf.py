@@ -24,6 +24,7 @@ import tempfile
 import warnings
 from pathlib import Path
 
+from ..fileio import write_bytes
 from .fonts import cjk_families, font_dirs
 
 MARKDOWN_FORMAT = (
@@ -256,17 +257,6 @@ def _typst_message(exc: Exception) -> str:
     return "\n".join(part.rstrip() for part in parts if part)
 
 
-def _atomic_write(path: Path, data: bytes) -> None:
-    path.parent.mkdir(parents=True, exist_ok=True)
-    tmp = path.with_name(f".{path.name}.{os.getpid()}.tmp")
-    try:
-        tmp.write_bytes(data)
-        os.replace(tmp, path)
-    except BaseException:
-        tmp.unlink(missing_ok=True)
-        raise
-
-
 def _use_vector_images(source: str, substitutes: dict[str, str]) -> str:
     """Point typst's image() calls at the vector files that ``substitutes`` maps the
     Markdown's raster previews to (a drawing sheet's PDF for its PNG preview)."""
@@ -332,4 +322,4 @@ def compile_pdf(source: str, root: Path, pdf_path: Path, metadata: dict,
     for warning in typst_warnings:
         warnings.warn(f"typst: {_typst_message(warning)}", stacklevel=3)
 
-    _atomic_write(pdf_path, pdf_bytes)
+    write_bytes(pdf_path, pdf_bytes)

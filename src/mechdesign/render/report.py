@@ -15,6 +15,7 @@ from typing import Callable
 
 import jinja2
 
+from ..fileio import write_text
 from ..results import dumps
 from .fmt import md_text
 from .parallel import background_saves, pump
@@ -112,8 +113,8 @@ def write_report(out_dir: Path, *, machine: str, lang: str, formats: tuple[str, 
                 md = render_markdown(f"{machine}.{lang}.md.j2", ctx, tdir)
                 if group is not None:
                     md = group_banner(group, lang) + md
-                (staging / "report.md").write_text(md, encoding="utf-8")
-                (staging / "results.json").write_text(dumps(document), encoding="utf-8")
+                write_text(staging / "report.md", md, encoding="utf-8")
+                write_text(staging / "results.json", dumps(document), encoding="utf-8")
                 if "pdf" in formats:
                     from .pdf import typst_source
 

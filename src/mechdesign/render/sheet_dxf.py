@@ -4,11 +4,11 @@ AutoCAD or CAXA); dimensions are real DIMENSION entities that measure the true (
 length through DIMLFAC, texts use the GB fonts gbenor.shx + gbcbig.shx."""
 from __future__ import annotations
 
-import os
 from pathlib import Path
 
 import numpy as np
 
+from ..fileio import atomic_path
 from .fmt import dxf_text, plain_line
 from .sheet import LAYERS, Arc, Circle, Dimension, Fill, Line, Polyline, Sheet, Text
 
@@ -135,7 +135,6 @@ def write_dxf(sheet: Sheet, path: Path, title: str = "") -> Path:
     path = Path(path)
     import ezdxf
 
-    tmp = path.with_name(f".{path.name}.{os.getpid()}.tmp")
     # Reproducible file: ezdxf otherwise stamps the creation and save times and random
     # GUIDs into the file; with this option it writes fixed ones (2000-01-01, constant GUIDs).
     fixed = ezdxf.options.write_fixed_meta_data_for_testing
@@ -143,9 +142,8 @@ def write_dxf(sheet: Sheet, path: Path, title: str = "") -> Path:
     try:
         doc = build_document(sheet, title)
         _fix_class_order(doc)
-        doc.saveas(tmp, encoding="utf-8")
-        os.replace(tmp, path)
+        with atomic_path(path) as tmp:
+            doc.saveas(tmp, encoding="utf-8")
     finally:
         ezdxf.options.write_fixed_meta_data_for_testing = fixed
-        tmp.unlink(missing_ok=True)
     return path

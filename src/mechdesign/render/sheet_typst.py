@@ -213,7 +213,8 @@ def write_sheets(jobs) -> None:
     import typst
 
     from .parallel import note_typst_used
-    from .pdf import PdfRenderError, _atomic_write, _typst_message, source_timestamp
+    from ..fileio import write_bytes
+    from .pdf import PdfRenderError, _typst_message, source_timestamp
 
     note_typst_used()
     fonts = [str(d) for d in font_dirs()]
@@ -224,12 +225,12 @@ def write_sheets(jobs) -> None:
         date = sheet.info.date if sheet.info is not None else None
         try:
             if pdf is not None:
-                _atomic_write(Path(pdf), typst.compile(
+                write_bytes(Path(pdf), typst.compile(
                     source, font_paths=fonts, timestamp=source_timestamp(date)))
             if png is not None:
                 image = typst.compile(source, font_paths=fonts, format="png",
                                       ppi=width / (sheet.width / 25.4))
-                _atomic_write(Path(png), image if isinstance(image, bytes) else image[0])
+                write_bytes(Path(png), image if isinstance(image, bytes) else image[0])
         except typst.TypstError as exc:
             raise PdfRenderError(f"typst failed to draw the sheet "
                                  f"{Path(pdf or png).name}:\n{_typst_message(exc)}") from exc

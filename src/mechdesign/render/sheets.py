@@ -15,6 +15,7 @@ from dataclasses import asdict, dataclass
 from pathlib import Path
 from typing import Callable
 
+from ..fileio import write_text
 from .fmt import plain_line
 from .sheet import Sheet, TitleInfo
 
@@ -125,8 +126,8 @@ def make_sheets(results: dict, brief, folder: Path, fig_dir: Path, lang: str,
 
     def work():
         files = write_all(builders, brief, folder, fig_dir, lang, formats, progress)
-        manifest.write_text(json.dumps([asdict(f) for f in files], ensure_ascii=False),
-                            encoding="utf-8")
+        write_text(manifest, json.dumps([asdict(f) for f in files], ensure_ascii=False),
+                   encoding="utf-8")
 
     wait = save_apart(work, "the drawing sheets")
     done: list[SheetFiles] = []

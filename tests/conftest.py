@@ -1,0 +1,59 @@
+"""Shared test fixtures.
+
+``example_results(name)`` gives the computed results of the example brief
+``designs/<name>.yaml`` (its default group): what ``mechdesign run`` computes before it
+renders — the brief read by :func:`~mechdesign.brief.loader.load_brief`, the machine's
+SI parameters and every stage (:func:`~mechdesign.pipeline.run_stages`), no rendering.
+Each brief is computed once per test session, on first use, and shared by every test
+module that asks for it.
+
+The results must NOT be mutated. Each call returns a fresh shallow copy of the results
+dict, so adding or replacing a top-level key stays local to the caller, but the values
+(frozen dataclasses holding numpy arrays, dicts and lists; ``params`` and ``brief`` too)
+are the same objects for every test: never write into an array, a dict or a list taken
+from them. A test that needs changed results computes its own (e.g. from an edited
+brief) or uses :func:`dataclasses.replace`.
+
+Markers: ``e2e`` (registered in pyproject.toml) marks end-to-end tests — the CLI run in a
+subprocess or through typer's runner, a PDF, DOCX or drawing sheets rendered, a whole
+batch run. ``python -m pytest -m "not e2e"`` runs the fast suite alone.
+"""
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Any, Callable
+
+import pytest
+
+ROOT = Path(__file__).resolve().parents[1]
+DESIGNS = ROOT / "designs"
+
+
+def compute_example(name: str) -> dict[str, Any]:
+    """Validate and compute ``designs/<name>.yaml`` (default group) without rendering, as
+    :func:`mechdesign.runner.run_one` does."""
+    from mechdesign.brief.loader import load_brief
+    from mechdesign.machines import get_machine, stages_for
+    from mechdesign.pipeline import run_stages
+
+    brief = load_brief(DESIGNS / f"{name}.yaml")
+    machine = get_machine(brief.machine)
+    params = machine.to_params(brief)
+    results, _ = run_stages(stages_for(machine, params), {"params": params, "brief": brief})
+    return results
+
+
+@pytest.fixture(scope="session")
+def example_results() -> Callable[[str], dict[str, Any]]:
+    """``example_results("shaper")``: the computed results of designs/shaper.yaml, cached
+    for the session (a fresh shallow copy of the dict per call; do not mutate the values)."""
+    cache: dict[str, dict[str, Any]] = {}
+
+    def get(name: str) -> dict[str, Any]:
+        if not (DESIGNS / f"{name}.yaml").is_file():
+            raise ValueError(f"no example brief designs/{name}.yaml")
+        if name not in cache:
+            cache[name] = compute_example(name)
+        return dict(cache[name])
+
+    return get
