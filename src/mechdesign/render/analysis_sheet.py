@@ -445,7 +445,7 @@ def _curves(s: Sheet, model, k, forces, fl, lab: dict, box) -> None:
         return
     y -= 9.0
     mb = forces.balancing_torque
-    md = fl.driving_torque if fl is not None else forces.mean_torque
+    md = fl.mean_torque if fl is not None else forces.mean_torque
     text = lab["md"] if fl is not None else lab["mean"]
     chart(s, (left, y - h, bx1, y), ph, [Series(closed(mb))], xlabel=lab["phase"],
           ylabel=lab["mb"], title=lab["mbt"], xticks=ticks, shade=[(0, span)],
