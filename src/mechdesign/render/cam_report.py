@@ -111,9 +111,8 @@ def make_cam_figures(c, fig_dir: Path, lang: str, prefix: str = "cam") -> dict[s
 
     g = c.grid
     u = _Units(c)
-    prog = c.params.programme
-    # Close the curves at 360°, and add each segment's left-hand limit at its end so that
-    # velocity and acceleration jumps plot as vertical steps.
+    # Close the curves at 360°, and add each segment's left-hand limit at its end (stored by
+    # the cam stage) so that velocity and acceleration jumps plot as vertical steps.
     ends = c.drawing.segment_ends
     delta = np.concatenate([g.delta, [2 * np.pi], [d for d, _ in ends]])
     first = [g.motion.s[0], g.motion.ds[0], g.motion.d2s[0], g.motion.d3s[0]]
