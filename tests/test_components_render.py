@@ -17,6 +17,7 @@ import pytest
 from mechdesign.brief.components import (CycleSection, IncompleteGearSection, MorphologySection,
                                           cycle_to_si, incomplete_gear_to_si, morphology_to_si)
 from mechdesign.core import cycle as cy
+from mechdesign.core.intermittent import intermittent_curves
 from mechdesign.render import components_report as cr
 from mechdesign.render.report import render_markdown, template_dir
 
@@ -78,11 +79,12 @@ def figs(tmp_path):
 
 def test_cycle_rows_and_checks(tmp_path, figs):
     c = cycle_to_si(cycle_brief())
-    paths = cr.make_cycle_figures(c, figs, "zh")
+    checks = cy.check_constraints(c)          # what the cycle stage stores
+    paths = cr.make_cycle_figures(c, figs, "zh", checks)
     assert set(paths) == {"linear", "circular"}
     for p in paths.values():
         assert (tmp_path / p).stat().st_size > 5000
-    md = render(tmp_path, {"cycle": cr.cycle_context(c, "zh", paths)}, "cycle", "zh")
+    md = render(tmp_path, {"cycle": cr.cycle_context(c, "zh", paths, checks)}, "cycle", "zh")
     # T = 60/10 = 6 s; pin rise 170–230: starts 170/360 × 6 = 2.833 s, lasts 1 s
     assert r"\frac{60}{10.00} = 6.000\ \text{s}" in md
     assert "| 定位销 | 近停歇 | 0.0 – 170.0 | 170.0 | 0.000 | 2.833 |" in md
@@ -100,7 +102,8 @@ def test_cycle_rows_and_checks(tmp_path, figs):
 
 def test_cycle_english_level_and_label(tmp_path, figs):
     c = cycle_to_si(cycle_brief())
-    ctx = cr.cycle_context(c, "en", {"linear": "a.png", "circular": "b.png"}, level=3, label="cyc2")
+    ctx = cr.cycle_context(c, "en", {"linear": "a.png", "circular": "b.png"}, cy.check_constraints(c),
+                           level=3, label="cyc2")
     md = render(tmp_path, {"cycle": ctx}, "cycle", "en")
     assert "### Motion cycle diagram" in md and "#### Timing checks" in md
     assert "| positioning pin | near dwell | 0.0 – 170.0 | 170.0 | 0.000 | 2.833 |" in md
@@ -114,7 +117,8 @@ def test_cycle_all_met_says_so(tmp_path):
     b = cycle_brief().model_dump()
     b["constraints"] = b["constraints"][:1]
     c = cycle_to_si(CycleSection.model_validate(b))
-    md = render(tmp_path, {"cycle": cr.cycle_context(c, "zh", {"linear": "a", "circular": "b"})},
+    md = render(tmp_path, {"cycle": cr.cycle_context(c, "zh", {"linear": "a", "circular": "b"},
+                                                  cy.check_constraints(c))},
                 "cycle", "zh")
     assert "各项协调要求均满足" in md and "警告" not in md
 
@@ -152,9 +156,10 @@ def test_morphology_chosen_must_exist():
 
 def test_intermittent_section(tmp_path, figs):
     g = gear(rpm=50)
-    paths = cr.make_intermittent_figures(g, figs, "zh")
+    curves = intermittent_curves(g)           # what the feed stage stores
+    paths = cr.make_intermittent_figures(g, curves, figs, "zh")
     assert (tmp_path / paths["motion"]).stat().st_size > 5000
-    ctx = cr.intermittent_context(g, "zh", paths)
+    ctx = cr.intermittent_context(g, curves, "zh", paths)
     md = render(tmp_path, {"ig": ctx}, "intermittent", "zh")
     assert r"\frac{360° \times 10}{36} = 100.00°" in md
     assert r"\frac{360° \times 10}{30} = 120.00°" in md
@@ -174,7 +179,8 @@ def test_intermittent_section(tmp_path, figs):
 
 def test_intermittent_per_radian_english(tmp_path):
     g = gear()
-    md = render(tmp_path, {"ig": cr.intermittent_context(g, "en", {"motion": "m.png"}, level=3)},
+    md = render(tmp_path, {"ig": cr.intermittent_context(g, intermittent_curves(g), "en", {"motion": "m.png"},
+                                                        level=3)},
                 "intermittent", "en")
     assert "### Incomplete gear drive" in md
     assert r"\Delta\left(\frac{d\varphi_2}{d\theta}\right) = \frac{z_1}{z_2} = \frac{36}{30} = 1.2000" in md
@@ -185,7 +191,7 @@ def test_intermittent_notes_shown(tmp_path):
     from mechdesign.core.intermittent import design_incomplete_gear
 
     g = design_incomplete_gear(0.004, 12, 16, teeth=3)
-    md = render(tmp_path, {"ig": cr.intermittent_context(g, "zh", {"motion": "m.png"})},
+    md = render(tmp_path, {"ig": cr.intermittent_context(g, intermittent_curves(g), "zh", {"motion": "m.png"})},
                 "intermittent", "zh")
     assert md.count("> **注意：**") == 2
 
@@ -197,9 +203,11 @@ def test_intermittent_notes_shown(tmp_path):
 def test_every_section_renders(tmp_path, figs, lang):
     c = cycle_to_si(cycle_brief())
     g = gear(rpm=10)
-    ctx = {"cycle": cr.cycle_context(c, lang, cr.make_cycle_figures(c, figs, lang)),
+    checks = cy.check_constraints(c)
+    ctx = {"cycle": cr.cycle_context(c, lang, cr.make_cycle_figures(c, figs, lang, checks), checks),
            "morph": cr.morphology_context(morph(), lang),
-           "ig": cr.intermittent_context(g, lang, cr.make_intermittent_figures(g, figs, lang))}
+           "ig": cr.intermittent_context(g, intermittent_curves(g), lang,
+                                         cr.make_intermittent_figures(g, intermittent_curves(g), figs, lang))}
     for s in SECTIONS:
         md = render(tmp_path, ctx, s, lang)
         assert md.startswith("# Chapter\n\n") and "{{" not in md and "{%" not in md

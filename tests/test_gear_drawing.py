@@ -221,10 +221,12 @@ def test_overlap_check_is_sensitive():
 
 @pytest.mark.parametrize("lang", ["zh", "en"])
 def test_meshing_drawing_writes_png(tmp_path, lang):
+    from mechdesign.machines.gear import gear_drawing
     from mechdesign.render.gear_figures import meshing_drawing
 
-    for i, pair in enumerate((SHAPER, SHIFTED)):
+    # the gear stage's drawing data of SHAPER and SHIFTED (given in metres; drawn in mm)
+    for i, pair in enumerate((spur_pair(0.012, 18, 60), spur_pair(0.005, 12, 40, x1=0.4))):
         out = tmp_path / f"mesh_{lang}_{i}.png"
-        meshing_drawing(out, lang, pair)
+        meshing_drawing(out, lang, gear_drawing(pair))
         assert out.stat().st_size > 20_000
         assert out.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"

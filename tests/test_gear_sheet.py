@@ -22,6 +22,7 @@ from ezdxf import bbox
 from scipy.optimize import brentq
 
 from mechdesign.core.gears import spur_pair
+from mechdesign.machines.gear import gear_drawing
 from mechdesign.render.gear_sheet import gear_sheet
 from mechdesign.render.sheet import SIZES, TitleInfo, title_block_box
 from mechdesign.render.sheet_dxf import write_dxf
@@ -104,7 +105,7 @@ def drawn(request, tmp_path_factory):
     name, lang, size = request.param
     pair = spur_pair(*PAIRS[name])
     info = TitleInfo(drawing="", project="Course design", student="Student", lang=lang)
-    sheet = gear_sheet(pair, info, lang, size)
+    sheet = gear_sheet(gear_drawing(pair), info, lang, size)
     path = write_dxf(sheet, tmp_path_factory.mktemp("dxf") / f"{name}.dxf")
     doc = ezdxf.readfile(path)
     msp = doc.modelspace()
@@ -267,12 +268,12 @@ def test_nothing_outside_the_border(drawn):
 
 def test_sheet_size_and_preview(tmp_path):
     pair = spur_pair(*PAIRS["shaper"])
-    sheet = gear_sheet(pair, TitleInfo(drawing="齿轮啮合图", project="牛头刨床"), "zh")
+    sheet = gear_sheet(gear_drawing(pair), TitleInfo(drawing="齿轮啮合图", project="牛头刨床"), "zh")
     assert sheet.size == "A2" and sheet.info.scale == "1:1"
     assert sheet.info.drawing == "齿轮啮合图"
     png = tmp_path / "gear.png"
     write_sheet(sheet, png=png, png_width_px=1200)
     assert png.stat().st_size > 20_000
-    small = gear_sheet(spur_pair(*PAIRS["pusher"]), TitleInfo(drawing="", project=""), "en")
+    small = gear_sheet(gear_drawing(spur_pair(*PAIRS["pusher"])), TitleInfo(drawing="", project=""), "en")
     assert small.info.scale == "5:1"                # m = 2 mm enlarged: 10 mm on paper
     assert small.info.drawing == "Gear meshing drawing"

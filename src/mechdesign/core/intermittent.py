@@ -212,6 +212,35 @@ class IncompleteGear:
         return EngagementJump(dw2, w * self.r1, chain)
 
 
+@dataclass(frozen=True)
+class IntermittentCurves:
+    """What a report plots and prints of the drive over one driver turn."""
+
+    theta: np.ndarray          # driver angle 0 … 2π with both one-sided values at the meshing
+                               # boundaries (the velocity's jumps plot as steps) [rad]
+    motion: DrivenMotion       # the driven wheel at ``theta``, angle read from θ = 0
+    jump: EngagementJump       # the speed jump at engagement
+    times: tuple | None        # (T, t_m, t_d) [s], None without a driver speed
+    advance_integral: float    # ∫ dφ2/dθ dθ over the grid (trapezoids), to equal Δφ2 [rad]
+    dwell_speed_max: float     # largest |ω2| in the dwell [rad/s] (|dφ2/dθ| [–] without a speed)
+
+
+def intermittent_curves(g: IncompleteGear, n: int = 3600) -> IntermittentCurves:
+    """The driven motion of ``g`` on a grid of ``n`` steps over 0 … 2π, with points just
+    either side of the meshing boundaries, its engagement jump and its times."""
+    theta = np.linspace(0.0, TWO_PI, n + 1)
+    ends = np.mod([g.motion_start, g.motion_start + g.motion_angle], TWO_PI)
+    eps = 1e-7          # well outside BOUNDARY_TOL
+    extra = np.concatenate([ends - eps, ends + eps])
+    theta = np.sort(np.concatenate([theta, np.clip(extra, 0.0, TWO_PI)]))
+    dm = g.driven_motion(theta, since=0.0)
+    rate = dm.ratio
+    integral = float(np.sum(0.5 * (rate[1:] + rate[:-1]) * np.diff(theta)))
+    speed = dm.omega if dm.omega is not None else dm.ratio
+    dwell_max = float(np.max(np.abs(speed[~dm.moving]), initial=0.0))
+    return IntermittentCurves(theta, dm, g.engagement_jump(), g.times(), integral, dwell_max)
+
+
 def _z_min(alpha: float, ha_star: float) -> float:
     """Smallest tooth number of a standard gear without undercut, 2 h_a*/sin²α."""
     return 2 * ha_star / np.sin(alpha) ** 2

@@ -34,6 +34,33 @@ class SegmentCheck:
     ok: bool
 
 
+DEG = 180.0 / np.pi
+
+
+@dataclass(frozen=True)
+class Division:
+    """One division point of the graphical method (反转法), numbered through the cycle."""
+
+    number: int
+    delta: float            # cam angle in [0, 2π) [rad]
+    s: float                # follower displacement [m] (translating) or [rad] (oscillating)
+
+
+@dataclass(frozen=True)
+class CamDrawing:
+    """What the cam figures and the cam sheet draw, computed by the stage (render only reads)."""
+
+    divisions: tuple                    # Division points: every rise/return in parts(span) equal parts
+    division_profile: core.CamProfile   # the cam designed at exactly the division angles [m, rad]
+    diagram_delta: np.ndarray           # s–δ curve: fine grid, 2π and every segment start [rad]
+    diagram_s: np.ndarray               # displacement there [m] or [rad] (at 2π: the value at 0)
+    segment_ends: tuple                 # per segment (δ end − 1e-9 [rad], (s, ds/dδ, d²s/dδ², d³s/dδ³)
+                                        # left-hand limits [m or rad, per rad, per rad², per rad³])
+    internal_jumps: tuple               # core.Boundary: acceleration jumps inside a segment
+    offset_favourable: bool             # the offset's sign lowers the rise pressure angle
+    arm_side: int                       # oscillating follower: k in β = π − k(φ0 + φ); 0 otherwise
+
+
 @dataclass(frozen=True)
 class CamResult:
     params: object
@@ -53,6 +80,7 @@ class CamResult:
     outline: np.ndarray | None = None              # the actual profile as cut, closed polyline [m]
     envelope: core.RollerEnvelope | None = None    # roller follower: corners and cut loops
     follower: object = None                        # the follower as designed (with its offset)
+    drawing: CamDrawing | None = None              # what the figures and the sheet draw
 
 
 def design(p) -> CamResult:
@@ -130,7 +158,49 @@ def design(p) -> CamResult:
         face = (float(np.min(along)), float(np.max(along)))
     warnings = _checks(p, fol, r0, segs, rho_p, rho_a, grid, min_r0, best)
     return CamResult(p, r0, offset, designed, min_r0, best, grid, table, segs,
-                     prog.boundaries(), rho_p, rho_a, face, warnings, outline, envelope, fol)
+                     prog.boundaries(), rho_p, rho_a, face, warnings, outline, envelope, fol,
+                     drawing(p, fol, r0, grid, offset))
+
+
+def parts(span: float) -> int:
+    """Equal parts of a rise or return of ``span`` [rad] in the graphical method: an even
+    number (the middle of a symmetric law is a division point), at most 25° each, at least 4
+    (6 from 60° on)."""
+    deg = span * DEG
+    n = int(np.ceil(deg / 25.0 - 1e-9))
+    n += n % 2
+    return max(n, 6 if deg >= 60.0 - 1e-9 else 4)
+
+
+def divisions(prog) -> tuple:
+    """The division points of the programme ``prog``: every rise and return in :func:`parts`
+    equal parts, the ends of every segment; numbered 0, 1, 2, … from δ = 0 (360° is point 0
+    again)."""
+    angles = []
+    for i, seg in enumerate(prog.segments):
+        start, span = float(prog.starts[i]), float(prog.spans[i])
+        k = 1 if seg.kind == core.DWELL else parts(span)
+        angles += [start + span * j / k for j in range(k)]
+    angles = np.array(sorted(a for a in angles if a < 2 * np.pi - 1e-9))
+    keep = np.concatenate([[True], np.diff(angles) > 1e-9])
+    angles = angles[keep]
+    s = prog.evaluate(angles).s
+    return tuple(Division(k, float(a), float(v)) for k, (a, v) in enumerate(zip(angles, s)))
+
+
+def drawing(p, fol, r0: float, grid: core.CamProfile, offset: float) -> CamDrawing:
+    """The drawing data of the cam designed with follower ``fol`` and base radius ``r0``."""
+    prog = p.programme
+    divs = divisions(prog)
+    dprof = core.design_cam(prog, fol, r0, grid.rotation, delta=np.array([d.delta for d in divs]))
+    dg = np.sort(np.concatenate([grid.delta, [2 * np.pi], prog.starts[1:]]))
+    sg = prog.evaluate(np.where(dg >= 2 * np.pi, 0.0, dg)).s
+    ends = tuple((prog.starts[i] + prog.spans[i] - 1e-9, prog.end_values(i, 1.0))
+                 for i in range(len(prog.segments)))
+    jumps = tuple(j for _, j in prog.internal_jumps())
+    fav = bool(np.sign(offset) == core.favourable_offset_sign(p.rotation))
+    side = core.arm_side(fol, p.rotation) if isinstance(fol, core.OscillatingFollower) else 0
+    return CamDrawing(divs, dprof, dg, sg, ends, jumps, fav, side)
 
 
 def _face_positions(prof: core.CamProfile, fol) -> np.ndarray:

@@ -408,6 +408,7 @@ class Feed:
     chain_speed: float          # mean chain speed while moving = feed / t_m [m/s]
     chain_jump: float           # chain speed reached at once at engagement R_s Δω2 [m/s]
     warnings: tuple = ()
+    curves: object = None       # core.intermittent.IntermittentCurves: what the report plots
 
 
 def _wrap(x: float) -> float:
@@ -416,6 +417,7 @@ def _wrap(x: float) -> float:
 
 def feed(amp: Amplification, p: DieCutterParams) -> Feed:
     from ..brief.components import incomplete_gear_to_si
+    from ..core.intermittent import intermittent_curves
 
     free = incomplete_gear_to_si(p.gear_section, p.shaft_rpm)
     auto = p.feed_start is None
@@ -433,7 +435,7 @@ def feed(amp: Amplification, p: DieCutterParams) -> Feed:
     jump = g.engagement_jump()
     notes = [Finding(n.code, n.zh, n.en) for n in g.notes]
     return Feed(g, auto, float(radius), float(travel), float(travel / times[1]),
-                float(radius * jump.omega2), tuple(notes))
+                float(radius * jump.omega2), tuple(notes), intermittent_curves(g))
 
 
 _GRIPPER_LABELS = {"rise": ("张开", "opening"), "dwell_high": ("保持张开", "held open"),

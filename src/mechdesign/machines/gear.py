@@ -16,10 +16,40 @@ MIN_CONTACT_RATIO = 1.2      # textbook: [ε] ≥ 1.1–1.4 for general machiner
 MIN_TIP_THICKNESS = 0.25     # × m: s_a ≥ (0.25–0.4) m
 
 
+MM = 1e3
+SHEET_TOOTH_POINTS = 48      # samples per fillet and per involute flank of a tooth on the sheet
+FIGURE_TOOTH_POINTS = 60     # the same for the whole gears of the report's figure
+
+
+@dataclass(frozen=True)
+class GearDrawing:
+    """What the meshing figure and the gear sheet draw, computed by the stage: the pair in
+    millimetres (both drawings are made in mm) and its meshing layout."""
+
+    pair: gears.SpurPair         # the pair with every length in [mm] (angles [rad])
+    layout: gears.MeshLayout     # mesh_layout of that pair: points and radii [mm]
+    teeth: tuple                 # one generated tooth of gear 1 and of gear 2, own frame [mm]
+    outlines: tuple              # both gears' closed outlines placed in the layout [mm]
+    interference: bool           # B1B2 runs beyond N1N2 (layout.interference)
+    action_length: float         # |B1B2| measured on the line of action of the pair [m]
+
+
 @dataclass(frozen=True)
 class GearResult:
     pair: gears.SpurPair
     warnings: tuple[Finding, ...]
+    drawing: GearDrawing | None = None     # what the figure and the sheet draw
+
+
+def gear_drawing(pair: gears.SpurPair) -> GearDrawing:
+    """The drawing data of ``pair`` (lengths in metres)."""
+    mm = gears.spur_pair(pair.m * MM, pair.g1.z, pair.g2.z, pair.alpha, pair.ha_star,
+                         pair.c_star, pair.g1.x, pair.g2.x)
+    lay = gears.mesh_layout(mm)
+    teeth = tuple(gears.tooth_outline(g, mm.m, mm.alpha, mm.c_star, SHEET_TOOTH_POINTS)
+                  for g in (mm.g1, mm.g2))
+    return GearDrawing(mm, lay, teeth, lay.outlines(FIGURE_TOOTH_POINTS), lay.interference,
+                       float(gears.mesh_layout(pair).action_length))
 
 
 def gear_findings(g: gears.SpurPair, prefix: str = "gear_pair") -> tuple[Finding, ...]:
@@ -58,7 +88,7 @@ def gear_findings(g: gears.SpurPair, prefix: str = "gear_pair") -> tuple[Finding
 
 def design_gear(gp) -> GearResult:
     pair = gears.spur_pair(gp.m, gp.z1, gp.z2, gp.alpha, gp.ha_star, gp.c_star, gp.x1, gp.x2)
-    return GearResult(pair, gear_findings(pair))
+    return GearResult(pair, gear_findings(pair), gear_drawing(pair))
 
 
 def gear_stage() -> Stage:

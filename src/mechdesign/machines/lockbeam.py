@@ -230,6 +230,39 @@ class SeedCheck:
     coupler: float
     grashof: str
     check: rs.LengthCheck
+    # per start of ``check.starts``: (least, largest) |dβ/dα| over the swing [–]
+    start_ratio_ranges: tuple = ()
+
+
+@dataclass(frozen=True)
+class BendingDrawing:
+    """The bending four-bar as the report draws it (positions solved by the stage)."""
+
+    A: np.ndarray               # joint A at 5 equal steps of the input swing, start to end [m]
+    B: np.ndarray               # joint B at the same input angles [m]
+    path_A: np.ndarray          # A over the swing, 60 points [m]
+    path_B: np.ndarray          # B over the swing, 60 points [m]
+
+
+def bending_drawing(ds: rs.RockerDesign, mech: Mechanism) -> BendingDrawing:
+    m = mech.solve(ds.alpha1 + ds.dalpha * np.linspace(0.0, 1.0, 5))
+    arc = mech.solve(ds.alpha1 + ds.dalpha * np.linspace(0, 1, 60))
+    return BendingDrawing(m.points["A"].pos, m.points["B"].pos, arc.points["A"].pos,
+                          arc.points["B"].pos)
+
+
+def seed_check(ds: rs.RockerDesign, bp: BendingParams) -> SeedCheck:
+    """The seed's graphical lengths checked over the swing, with the velocity ratio range of
+    every start the check tried."""
+    sa, sb = bp.seed
+    check = rs.check_lengths(ds.frame, sa, sb, ds.output_rocker, ds.dalpha, bp.output_swing)
+    ranges = []
+    for a1, b1, _ in check.starts:
+        sw = rs.sweep(rs.RockerDesign(ds.frame, sa, sb, ds.output_rocker, a1, ds.dalpha, b1, 0.0, 1))
+        r_ = np.abs(sw.ratio)
+        ranges.append((float(r_.min()), float(r_.max())))
+    return SeedCheck(sa, sb, grashof(FourBar(sa, sb, ds.output_rocker, ds.frame))[1], check,
+                     tuple(ranges))
 
 
 @dataclass(frozen=True)
@@ -266,6 +299,9 @@ class BendingResult:
     fd_acceleration: float
     seed: SeedCheck | None
     warnings: list
+    # per synthesis candidate: peak |dβ/dα| over its swing (rs.sweep), None without a design [–]
+    candidate_ratio_peaks: tuple = ()
+    drawing: BendingDrawing | None = None
 
 
 def checks(p: LockbeamParams, keep: dict | None = None) -> list:
@@ -353,12 +389,9 @@ def bending(p: LockbeamParams, bcam, syn: BendingSynthesis | None = None) -> Ben
             f"扳弯四杆机构最小传动角 {g_min * DEG:.2f}° 小于许用值 {bp.gamma_allowed * DEG:.0f}°；应改变起始位置或杆长",
             f"the bending four-bar's minimum transmission angle {g_min * DEG:.2f}° is below the "
             f"allowed {bp.gamma_allowed * DEG:.0f}°; change the start position or the lengths"))
-    seed = None
-    if bp.seed is not None:
-        sa, sb = bp.seed
-        seed = SeedCheck(sa, sb, grashof(FourBar(sa, sb, ds.output_rocker, ds.frame))[1],
-                         rs.check_lengths(ds.frame, sa, sb, ds.output_rocker, ds.dalpha,
-                                          bp.output_swing))
+    seed = None if bp.seed is None else seed_check(ds, bp)
+    peaks = tuple(None if d_ is None else rs.sweep(d_).ratio_peak
+                  for _, d_, _, _ in syn.candidates)
     return BendingResult(
         synthesis=syn, design=ds, mechanism=mech, ratio=ratio, output_swing=bp.output_swing,
         input_swing=bp.input_swing,
@@ -370,7 +403,8 @@ def bending(p: LockbeamParams, bcam, syn: BendingSynthesis | None = None) -> Ben
         closure=closure_residual(mech, m),
         shaft_angle=phi, rocker_angle=fm.s, rocker_omega=a_dot, wheel_angle=wheel,
         wheel_omega=wheel_w, wheel_alpha=wheel_a, bend_simulated=float(np.max(wheel)),
-        fd_velocity=fd_v, fd_acceleration=fd_a, seed=seed, warnings=warnings)
+        fd_velocity=fd_v, fd_acceleration=fd_a, seed=seed, warnings=warnings,
+        candidate_ratio_peaks=peaks, drawing=bending_drawing(ds, mech))
 
 
 # --------------------------------------------------------------------------- feed linkage

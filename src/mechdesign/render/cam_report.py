@@ -7,7 +7,7 @@ from pathlib import Path
 
 import numpy as np
 
-from ..core import cam as core
+from ..core.cam import DWELL, RISE, TranslatingFollower
 from ..fileio import atomic_open
 from ..core.motion_laws import LAWS
 from . import cam_figures as cf
@@ -28,7 +28,7 @@ CONTACT = {"zh": {"knife": "尖顶", "roller": "滚子", "flat": "平底"},
 
 def _segment_name(c, i, lang):
     seg = c.params.programme.segments[i]
-    if seg.kind != core.DWELL:
+    if seg.kind != DWELL:
         return _KIND[lang][seg.kind]
     level = c.params.programme.levels[i]
     if level <= 1e-12:
@@ -94,7 +94,7 @@ def _impulses(c):
     """Where a derivative is infinite: (δ [°], panel, sign). A velocity jump makes the
     acceleration (panel 2) and jerk (panel 3) infinite; an acceleration jump the jerk."""
     out = []
-    for b in c.boundaries + [j for _, j in c.params.programme.internal_jumps()]:
+    for b in c.boundaries + list(c.drawing.internal_jumps):
         if b.impact == "rigid":
             out += [(b.delta * DEG, 2, np.sign(b.velocity_jump)), (b.delta * DEG, 3, 0.0)]
         elif b.impact == "soft":
@@ -112,11 +112,9 @@ def make_cam_figures(c, fig_dir: Path, lang: str, prefix: str = "cam") -> dict[s
 
     g = c.grid
     u = _Units(c)
-    prog = c.params.programme
-    # Close the curves at 360°, and add each segment's left-hand limit at its end so that
-    # velocity and acceleration jumps plot as vertical steps.
-    ends = [(prog.starts[i] + prog.spans[i] - 1e-9, prog.end_values(i, 1.0))
-            for i in range(len(prog.segments))]
+    # Close the curves at 360°, and add each segment's left-hand limit at its end (stored by
+    # the cam stage) so that velocity and acceleration jumps plot as vertical steps.
+    ends = c.drawing.segment_ends
     delta = np.concatenate([g.delta, [2 * np.pi], [d for d, _ in ends]])
     first = [g.motion.s[0], g.motion.ds[0], g.motion.d2s[0], g.motion.d3s[0]]
     ys = [np.concatenate([col, [first[k]], [v[k] for _, v in ends]])
@@ -156,16 +154,16 @@ def _law_eqs(c, i, u: _Units, lang):
     unit = "°" if u.osc else "\\text{mm}"
     head = (rf"u = \frac{{\delta - {f(start, 1)}°}}{{\Phi}},\quad \Phi = {f(span, 1)}°"
             rf" = {f(np.radians(span), 4)}\ \text{{rad}}")
-    if seg.kind == core.RISE and level > 1e-9:
+    if seg.kind == RISE and level > 1e-9:
         s_eq = rf"{sym} = {f(level, 2)} + {f(abs(lift), 2)}\,S(u)"
-    elif seg.kind == core.RISE:
+    elif seg.kind == RISE:
         s_eq = rf"{sym} = {f(abs(lift), 2)}\,S(u)"
     else:
         s_eq = rf"{sym} = {f(level, 2)} - {f(abs(lift), 2)}\,S(u)"
     s_eq += rf"\quad ({unit.strip()})"
     # Derivatives in SI: rad for an oscillating follower, mm for a translating one.
     amp = f(abs(prog.lifts[i]), 5) if u.osc else f(abs(prog.lifts[i]) * MM, 2)
-    sign = "" if seg.kind == core.RISE else "-"
+    sign = "" if seg.kind == RISE else "-"
     phi_rad = prog.spans[i]
     if u.omega:
         w = f(u.omega, 4)
@@ -192,7 +190,7 @@ def cam_context(c, lang: str, figs: dict[str, str], csv_name: str) -> dict:
     prog = p.programme
     u = _Units(c)
     zh = lang == "zh"
-    translating = isinstance(fol, core.TranslatingFollower)
+    translating = isinstance(fol, TranslatingFollower)
     motion = ("直动" if translating else "摆动") if zh else ("translating" if translating else "oscillating")
     contact = CONTACT[lang][fol.kind]
     follower_name = f"{motion}{contact}从动件" if zh else f"{motion} {contact} follower"
@@ -219,7 +217,7 @@ def cam_context(c, lang: str, figs: dict[str, str], csv_name: str) -> dict:
     if fol.kind == "roller":
         row("$r_r$", "滚子半径", "roller radius", f(fol.roller_radius * MM, 2), "mm")
     if translating and fol.kind != "flat":
-        fav = np.sign(c.offset) == core.favourable_offset_sign(p.rotation)
+        fav = c.drawing.offset_favourable
         side = ("右侧" if c.offset > 0 else "左侧") if zh else ("right" if c.offset > 0 else "left")
         kind_zh = "正偏置" if fav else "负偏置"
         kind_en = "favourable" if fav else "unfavourable"
@@ -234,15 +232,15 @@ def cam_context(c, lang: str, figs: dict[str, str], csv_name: str) -> dict:
     prog_rows = []
     for i, (seg, chk) in enumerate(zip(prog.segments, c.segments)):
         law = "—" if seg.law is None else (LAWS[seg.law].name_zh if zh else LAWS[seg.law].name_en)
-        lift = "—" if seg.kind == core.DWELL else f(abs(prog.lifts[i]) * u.s_scale, 2)
+        lift = "—" if seg.kind == DWELL else f(abs(prog.lifts[i]) * u.s_scale, 2)
         prog_rows.append([str(i + 1), _segment_name(c, i, lang),
                           f"{f(prog.starts[i] * DEG, 1)} – {f((prog.starts[i] + prog.spans[i]) * DEG, 1)}",
                           f(prog.spans[i] * DEG, 1), law, lift,
-                          "—" if seg.kind == core.DWELL else _IMPACT[lang][chk.impact]])
+                          "—" if seg.kind == DWELL else _IMPACT[lang][chk.impact]])
     joints = [f"{f(b.delta * DEG, 1)}°（{_IMPACT[lang][b.impact]}）" if zh else
               f"{f(b.delta * DEG, 1)}° ({_IMPACT[lang][b.impact]})"
               for b in c.boundaries if b.impact != "none"]
-    laws = [_law_eqs(c, i, u, lang) for i, seg in enumerate(prog.segments) if seg.kind != core.DWELL]
+    laws = [_law_eqs(c, i, u, lang) for i, seg in enumerate(prog.segments) if seg.kind != DWELL]
 
     # Geometry formulas (pitch curve by inversion, envelope, pressure angle).
     if translating:
@@ -271,7 +269,7 @@ def cam_context(c, lang: str, figs: dict[str, str], csv_name: str) -> dict:
                       rf"y = a\sin\delta - L\sin(\delta - \varphi - \varphi_0)")
             if (p.rotation < 0 and fol.rise_sense == "same") else
             (rf"\mathbf{{B}}(\delta) = e^{{{'-' if p.rotation > 0 else ''}i\delta}}\left[a + L\,"
-             rf"e^{{i(\pi - k(\varphi_0 + \varphi))}}\right],\quad k = {core.arm_side(fol, p.rotation):+d}"),
+             rf"e^{{i(\pi - k(\varphi_0 + \varphi))}}\right],\quad k = {c.drawing.arm_side:+d}"),
             "alpha": r"\alpha = \angle(\mathbf{n},\ \mathbf{v}_B),\quad \mathbf{v}_B \perp AB",
         }
     geo["envelope"] = (r"\mathbf{B}_a = \mathbf{B} - r_r\,\mathbf{n},\quad \mathbf{n} = "

@@ -18,7 +18,8 @@ method of 孙桓《机械原理》 (chapter on cam mechanisms) draws them:
 * the border and the title block.
 
 The cam's own arrays (``c.grid``: fine grid, SI units) give the curves; the division points
-are synthesised again at their exact angles with :func:`mechdesign.core.cam.design_cam`.
+and the cam designed at their exact angles come from the cam stage (``c.drawing``): the sheet
+only reads the result.
 """
 from __future__ import annotations
 
@@ -26,8 +27,9 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
-from ..core import cam as core
+from ..core.cam import DWELL, RETURN, RISE, OscillatingFollower
 from ..core.motion_laws import LAWS
+from ..machines.cam import Division
 from .cam_report import _IMPACT, CONTACT, _segment_name, _Units
 from .sheet import (
     THIN,
@@ -129,46 +131,15 @@ GAP = 7.0                  # vertical gap between the panels of the right column
 # --------------------------------------------------------------------------- division points
 
 
-@dataclass(frozen=True)
-class Division:
-    """One division point of the graphical method, numbered through the cycle."""
-
-    number: int
-    delta: float            # cam angle [rad] in [0, 2π)
-    s: float                # follower displacement [m] or [rad]
-
-
-def parts(span: float) -> int:
-    """Equal parts of a rise or return of ``span`` [rad]: an even number (the middle of a
-    symmetric law is a division point), at most 25° each, at least 4 (6 from 60° on)."""
-    deg = span * DEG
-    n = int(np.ceil(deg / 25.0 - 1e-9))
-    n += n % 2
-    return max(n, 6 if deg >= 60.0 - 1e-9 else 4)
-
-
-def divisions(c) -> list[Division]:
-    """The division points: every rise and return in :func:`parts` equal parts, the ends of
-    every segment; numbered 0, 1, 2, … from δ = 0 (360° is point 0 again)."""
-    prog = c.params.programme
-    angles = []
-    for i, seg in enumerate(prog.segments):
-        start, span = float(prog.starts[i]), float(prog.spans[i])
-        k = 1 if seg.kind == core.DWELL else parts(span)
-        angles += [start + span * j / k for j in range(k)]
-    angles = np.array(sorted(a for a in angles if a < 2 * np.pi - 1e-9))
-    keep = np.concatenate([[True], np.diff(angles) > 1e-9])
-    angles = angles[keep]
-    s = prog.evaluate(angles).s
-    return [Division(k, float(a), float(v)) for k, (a, v) in enumerate(zip(angles, s))]
+def divisions(c) -> list:
+    """The division points (machines.cam.Division) the cam stage chose: every rise and
+    return in equal parts, the ends of every segment; numbered 0, 1, 2, … from δ = 0."""
+    return list(c.drawing.divisions)
 
 
 def _follower(c):
     """The follower as designed (an automatic offset is in ``c.offset``)."""
-    fol = c.params.follower
-    if isinstance(fol, core.TranslatingFollower):
-        fol = replace(fol, offset=c.offset)
-    return fol
+    return c.follower if c.follower is not None else c.params.follower
 
 
 # --------------------------------------------------------------------------- the sheet
@@ -229,7 +200,7 @@ class _ProfileGeometry:
         self.c = c
         self.fol = _follower(c)
         self.kind = self.fol.kind
-        self.osc = isinstance(self.fol, core.OscillatingFollower)
+        self.osc = isinstance(self.fol, OscillatingFollower)
         self.sigma = g.rotation
         self.r0 = c.base_radius * MM
         self.rr = g.roller_radius * MM
@@ -237,8 +208,7 @@ class _ProfileGeometry:
         self.pitch = g.pitch * MM
         self.actual = actual_profile(c)
         delta = np.array([d.delta for d in divs])
-        self.dprof = core.design_cam(c.params.programme, self.fol, c.base_radius, g.rotation,
-                                     delta=delta)
+        self.dprof = c.drawing.division_profile                 # the cam at the divisions
         self.rot = np.exp(-1j * self.sigma * delta)            # frame → cam at each division
         self.B = self.dprof.pitch * MM                         # follower point, inverted
         self.B0 = complex(g.follower_point[0]) * MM            # follower point at δ = 0
@@ -656,9 +626,8 @@ def _diagram(sheet, c, divs, mu_d, mu_s, xo, ytop, lab, lang) -> float:
         sheet.text(P(dd, 0) - 1.2j, str(d.number), 2.5, "TEXT", "center", "top")
     sheet.line(P(360, 0), P(360, stroke), "CONSTRUCTION")
     # the curve, bold, with both one-sided values at the segment ends
-    gd = c.grid.delta
-    dg = np.sort(np.concatenate([gd, [2 * np.pi], prog.starts[1:]]))
-    sg = prog.evaluate(np.where(dg >= 2 * np.pi, 0.0, dg)).s * u.s_scale
+    dg = c.drawing.diagram_delta
+    sg = c.drawing.diagram_s * u.s_scale
     sheet.polyline(P(dg * DEG, sg), "OUTLINE")
 
     # segment angles (dimensions) and names under the axis
@@ -748,9 +717,9 @@ def _right_draw(sheet, c, divs, g, mu_d, mu_s, row, gap, box, lab, lang) -> floa
     for i, seg in enumerate(prog.segments):
         a, b = prog.starts[i] * DEG, (prog.starts[i] + prog.spans[i]) * DEG
         law = "—" if seg.law is None else (LAWS[seg.law].name_zh if lang == "zh" else LAWS[seg.law].name_en)
-        lift = "—" if seg.kind == core.DWELL else (
+        lift = "—" if seg.kind == DWELL else (
             f"{format_number(abs(prog.lifts[i]) * u.s_scale)}{'°' if u.osc else ' mm'}")
-        impact = "—" if seg.kind == core.DWELL else _IMPACT[lang][c.segments[i].impact]
+        impact = "—" if seg.kind == DWELL else _IMPACT[lang][c.segments[i].impact]
         rows.append([_segment_name(c, i, lang), f"{format_number(a)}°–{format_number(b)}°",
                      f"{format_number(b - a)}°", law, lift, impact])
     y = table(sheet, xl, y, fit_widths([20, 30, 18, 78, 24, 24], width), rows, lab["head_prog"],
@@ -797,14 +766,14 @@ def _data_rows(c, g: _ProfileGeometry, lab, lang):
     elif fol.kind != "flat":
         value = f"{format_number(abs(g.e))} mm"
         if abs(g.e) > 1e-9:
-            fav = np.sign(c.offset) == core.favourable_offset_sign(p.rotation)
+            fav = c.drawing.offset_favourable
             side = lab["right"] if g.e > 0 else lab["left"]
             kind = lab["fav" if fav else "unfav"]
             value += f"（{side}，{kind}）" if zh else f" ({side}, {kind})"
         rows.append([lab["offset"], "e", value, ""])
     if fol.kind != "flat":
-        for kind, key, sym, lim_sym in ((core.RISE, "alpha_rise", "αmax", "[α]"),
-                                        (core.RETURN, "alpha_return", "α′max", "[α′]")):
+        for kind, key, sym, lim_sym in ((RISE, "alpha_rise", "αmax", "[α]"),
+                                        (RETURN, "alpha_return", "α′max", "[α′]")):
             segs = [s for s in c.segments if s.kind == kind]
             if not segs:
                 continue

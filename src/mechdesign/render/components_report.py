@@ -15,7 +15,7 @@ from pathlib import Path
 
 import numpy as np
 
-from ..core import cycle as cy
+from ..core.cycle import STATES, TWO_PI, Constraint, CycleDiagram, PhaseRef, resolve
 from . import cycle_figures as cf
 from .fmt import e, f, md_paragraphs, md_text, mpl_text
 
@@ -37,29 +37,29 @@ def _deg(x: float, digits: int = 1) -> str:
 # --------------------------------------------------------------------------- cycle diagram
 
 
-def _phase_rows(cycle: cy.CycleDiagram, lang: str):
+def _phase_rows(cycle: CycleDiagram, lang: str):
     """Per actuator: (name, [(start°, span°, state, label), …]), names as figure text."""
     return [(mpl_text(a.name(lang)),
              [(p.start * DEG, p.span * DEG, p.state, mpl_text(p.name(lang))) for p in a.phases])
             for a in cycle.actuators]
 
 
-def _states_used(cycle: cy.CycleDiagram, lang: str) -> dict[str, str]:
+def _states_used(cycle: CycleDiagram, lang: str) -> dict[str, str]:
     used = []
     for a in cycle.actuators:
         for p in a.phases:
             if p.state not in used:
                 used.append(p.state)
-    return {s: cy.STATES[s][0 if lang == "zh" else 1] for s in cy.STATES if s in used}
+    return {s: STATES[s][0 if lang == "zh" else 1] for s in STATES if s in used}
 
 
-def _ref_text(cycle: cy.CycleDiagram, ref: cy.PhaseRef, lang: str) -> str:
+def _ref_text(cycle: CycleDiagram, ref: PhaseRef, lang: str) -> str:
     act = cycle.actuator(ref.actuator)
-    ph = cy.resolve(cycle, ref)
+    ph = resolve(cycle, ref)
     return f"{act.name(lang)}{'' if lang == 'zh' else ' '}{ph.name(lang)}"
 
 
-def constraint_text(cycle: cy.CycleDiagram, c: cy.Constraint, lang: str) -> str:
+def constraint_text(cycle: CycleDiagram, c: Constraint, lang: str) -> str:
     """The requirement in words: the brief's text, or one made from the references."""
     if c.text(lang):
         return c.text(lang)
@@ -72,12 +72,12 @@ def constraint_text(cycle: cy.CycleDiagram, c: cy.Constraint, lang: str) -> str:
             f"{a} lies within {b} (≥ {m}° to spare at both ends)")
 
 
-def _links(cycle: cy.CycleDiagram, checks):
+def _links(cycle: CycleDiagram, checks):
     rows = {a.key: i for i, a in enumerate(cycle.actuators)}
     out = []
     for chk in checks:
         c = chk.constraint
-        pa, pb = cy.resolve(cycle, c.a), cy.resolve(cycle, c.b)
+        pa, pb = resolve(cycle, c.a), resolve(cycle, c.b)
         pieces_a = cf.window_pieces(pa.start * DEG, pa.span * DEG, cycle.origin * DEG)
         pieces_b = cf.window_pieces(pb.start * DEG, pb.span * DEG, cycle.origin * DEG)
         a0, b0 = pieces_a[0][0], pieces_b[0][0]
@@ -87,10 +87,10 @@ def _links(cycle: cy.CycleDiagram, checks):
     return out
 
 
-def make_cycle_figures(cycle: cy.CycleDiagram, fig_dir: Path, lang: str, checks=None,
+def make_cycle_figures(cycle: CycleDiagram, fig_dir: Path, lang: str, checks,
                        prefix: str = "cycle") -> dict[str, str]:
-    """The linear and the circular cycle diagrams: keys ``linear``, ``circular``."""
-    checks = cy.check_constraints(cycle) if checks is None else checks
+    """The linear and the circular cycle diagrams: keys ``linear``, ``circular``; ``checks``
+    are the stage's constraint checks (core.cycle.ConstraintCheck)."""
     rows = _phase_rows(cycle, lang)
     states = _states_used(cycle, lang)
     paths = {}
@@ -102,18 +102,17 @@ def make_cycle_figures(cycle: cy.CycleDiagram, fig_dir: Path, lang: str, checks=
     return paths
 
 
-def cycle_context(cycle: cy.CycleDiagram, lang: str, figs: dict[str, str], checks=None,
+def cycle_context(cycle: CycleDiagram, lang: str, figs: dict[str, str], checks,
                   level: int = 2, label: str = "cycle") -> dict:
     """Strings and rows of ``cycle_section``: the phase table (degrees and seconds), the
-    period formula, the constraint checks with their slack, the verification rows."""
+    period formula, the stage's constraint checks with their slack, the verification rows."""
     zh = lang == "zh"
     h, h3 = _heads(level)
-    checks = cy.check_constraints(cycle) if checks is None else checks
     T, rpm = cycle.period, cycle.speed_rpm
     rows = []
     for a in cycle.actuators:
         for i, (ph, t0, dt) in enumerate(cycle.phase_times(a.key)):
-            end = np.mod(ph.end, cy.TWO_PI) * DEG
+            end = np.mod(ph.end, TWO_PI) * DEG
             end = 360.0 if end < 1e-6 else end
             rows.append([md_text(a.name(lang)) if i == 0 else "", md_text(ph.name(lang)),
                          f"{_deg(ph.start)} – {f(end, 1)}", _deg(ph.span), f(t0, 3), f(dt, 3)])
@@ -125,7 +124,7 @@ def cycle_context(cycle: cy.CycleDiagram, lang: str, figs: dict[str, str], check
                            ok_word if chk.ok else f"**{bad_word}**"])
         if not chk.ok:
             failed.append(text)
-    spans = [abs(sum(p.span for p in a.phases) - cy.TWO_PI) for a in cycle.actuators]
+    spans = [abs(sum(p.span for p in a.phases) - TWO_PI) for a in cycle.actuators]
     durations = [abs(sum(dt for _, _, dt in cycle.phase_times(a.key)) - T) for a in cycle.actuators]
     verify = [
         [("各执行构件相位角之和 − 360°（最大）/°" if zh else
@@ -187,29 +186,19 @@ def morphology_context(m, lang: str, level: int = 2, label: str = "morph") -> di
 # --------------------------------------------------------------------------- incomplete gear
 
 
-def _driven_curves(g, n: int = 3600):
-    """Driver angle [rad] on a fine grid 0 … 2π with both one-sided values at the meshing
-    boundaries (so the velocity's jumps show as vertical steps), and the driven motion
-    read from θ = 0."""
-    theta = np.linspace(0.0, cy.TWO_PI, n + 1)
-    ends = np.mod([g.motion_start, g.motion_start + g.motion_angle], cy.TWO_PI)
-    eps = 1e-7          # well outside core.intermittent.BOUNDARY_TOL
-    extra = np.concatenate([ends - eps, ends + eps])
-    theta = np.sort(np.concatenate([theta, np.clip(extra, 0.0, cy.TWO_PI)]))
-    return theta, g.driven_motion(theta, since=0.0)
-
-
 def _motion_arcs_deg(g):
     s = g.motion_start * DEG
     e_ = s + g.motion_angle * DEG
     return [(s, min(e_, 360.0))] + ([(0.0, e_ - 360.0)] if e_ > 360.0 else [])
 
 
-def make_intermittent_figures(g, fig_dir: Path, lang: str, prefix: str = "intermittent") -> dict[str, str]:
-    """The driven wheel's angle and velocity against the driver angle: key ``motion``."""
-    theta, dm = _driven_curves(g)
+def make_intermittent_figures(g, curves, fig_dir: Path, lang: str,
+                              prefix: str = "intermittent") -> dict[str, str]:
+    """The driven wheel's angle and velocity against the driver angle (``curves``: the
+    stage's core.intermittent.IntermittentCurves of the gear ``g``): key ``motion``."""
+    theta, dm = curves.theta, curves.motion
     zh = lang == "zh"
-    jump = g.engagement_jump()
+    jump = curves.jump
     if dm.omega is not None:
         vel = dm.omega
         vel_label = r"从动轮角速度 $\omega_2$ (rad/s)" if zh else r"driven speed $\omega_2$ (rad/s)"
@@ -224,10 +213,11 @@ def make_intermittent_figures(g, fig_dir: Path, lang: str, prefix: str = "interm
     return {"motion": f"{fig_dir.name}/{prefix}_motion.png"}
 
 
-def intermittent_context(g, lang: str, figs: dict[str, str], level: int = 2,
+def intermittent_context(g, curves, lang: str, figs: dict[str, str], level: int = 2,
                          label: str = "intermittent") -> dict:
     """Strings, rows and formulas (numbers substituted) of ``intermittent_section`` for a
-    :class:`mechdesign.core.intermittent.IncompleteGear`."""
+    :class:`mechdesign.core.intermittent.IncompleteGear` and the stage's ``curves``
+    (core.intermittent.IntermittentCurves)."""
     zh = lang == "zh"
     h, h3 = _heads(level)
     m = g.module * MM
@@ -268,14 +258,14 @@ def intermittent_context(g, lang: str, figs: dict[str, str], level: int = 2,
     if g.stations is not None:
         row("从动轮每转停歇次数", "dwells per driven revolution", "$z_2/z_1'$", f"${z2}/{n}$",
             str(g.stations), "—")
-    times = g.times()
+    times = curves.times
     if times is not None:
         T, tm, td = times
-        rpm = g.driver_speed * 60 / cy.TWO_PI
+        rpm = g.driver_speed * 60 / TWO_PI
         row("循环时间", "cycle time", "$T$", f"$60/n_1 = 60/{f(rpm, 2)}$", f(T, 3), "s")
         row("运动时间", "motion time", "$t_m$", "$\\tau T$", f(tm, 3), "s")
         row("停歇时间", "dwell time", "$t_d$", "$T - t_m$", f(td, 3), "s")
-    jump = g.engagement_jump()
+    jump = curves.jump
     per_rad = g.driver_speed is None
     if per_rad:
         row("啮合开始时 dφ₂/dθ 的突变", "jump of dφ₂/dθ at engagement", "$\\Delta(d\\varphi_2/d\\theta)$",
@@ -323,10 +313,7 @@ def intermittent_context(g, lang: str, figs: dict[str, str], level: int = 2,
                              e((g.advance - g.requested_advance) * DEG)])
 
     # Verification: equal pitch arcs rolled on both wheels, and the simulated motion.
-    theta, dm = _driven_curves(g)
-    rate = dm.ratio
-    integral = float(np.sum(0.5 * (rate[1:] + rate[:-1]) * np.diff(theta)))
-    dwell = ~dm.moving
+    integral = curves.advance_integral
     arc = n * np.pi * g.module
     verify = [
         [("主动轮分度圆滚过弧长 $r_1\\varphi_m - z_1'\\pi m$ /mm" if zh else
@@ -340,11 +327,11 @@ def intermittent_context(g, lang: str, figs: dict[str, str], level: int = 2,
          e((integral - g.advance) * DEG)],
         [("仿真：停歇区内从动轮最大转速 /(rad/s)" if zh else
           "simulation: largest driven speed in the dwell /(rad/s)"),
-         e(float(np.max(np.abs((dm.omega if dm.omega is not None else dm.ratio)[dwell]), initial=0.0)))],
+         e(curves.dwell_speed_max)],
     ]
     return {"h": h, "h3": h3, "label": label, "rows": rows, "eq": eqs, "required": required,
             "fig": figs, "notes": [note.zh if zh else note.en for note in g.notes],
             "verify": verify, "z1": str(z1), "z2": str(z2), "teeth": str(n),
             "motion_start": _deg(g.motion_start, 1),
-            "motion_end": f(np.mod(g.motion_start + g.motion_angle, cy.TWO_PI) * DEG, 1),
+            "motion_end": f(np.mod(g.motion_start + g.motion_angle, TWO_PI) * DEG, 1),
             "per_radian": per_rad}

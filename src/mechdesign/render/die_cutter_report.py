@@ -88,7 +88,8 @@ def make_figures(r: dict, fig_dir: Path, lang: str) -> dict[str, str]:
     fig.energy(out("dc_energy"), lang, k.phase[:n] * DEG, fl.energy, fl.phase_at_min * DEG,
                fl.phase_at_max * DEG, fl.max_energy_swing, k.working_span * DEG)
     paths.update(make_cam_figures(r["cam"], fig_dir, lang, prefix="cam"))
-    for key, path in make_intermittent_figures(r["feed"].gear, fig_dir, lang, prefix="dc_feed").items():
+    for key, path in make_intermittent_figures(r["feed"].gear, r["feed"].curves, fig_dir, lang,
+                                               prefix="dc_feed").items():
         paths[f"ig_{key}"] = path
     cyc = r["cycle"]
     for key, path in make_cycle_figures(cyc.diagram, fig_dir, lang, cyc.checks, prefix="dc_cycle").items():
@@ -508,7 +509,7 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
                          prefix="press",
                          title="模切机构运动与动力分析" if zh else "Toggle press: kinematics and kinetostatics")
     cam = cam_context(r["cam"], lang, figures, "cam_profile.csv")
-    ig = intermittent_context(r["feed"].gear, lang, {"motion": figures["ig_motion"]}, level=2,
+    ig = intermittent_context(r["feed"].gear, r["feed"].curves, lang, {"motion": figures["ig_motion"]}, level=2,
                               label="dc-ig")
     cyc = r["cycle"]
     cycle = cycle_context(cyc.diagram, lang, {"linear": figures["cycle_linear"],

@@ -1,13 +1,13 @@
 """The gear meshing drawing (齿轮啮合图) with generated involute teeth, in the layout of
 :func:`mechdesign.core.gears.mesh_layout` (O1 at the origin, O2 straight above, gear 1
-driving counter-clockwise). Lengths in the pair's unit (mm)."""
+driving counter-clockwise), as the gear stage computed it (``GearDrawing``). Lengths in mm."""
 from __future__ import annotations
 
 from pathlib import Path
 
 import numpy as np
 
-from ..core.gears import SpurPair, mesh_layout
+from ..machines.gear import GearDrawing
 from .figures import figure
 
 LABELS = {
@@ -21,14 +21,15 @@ LABELS = {
 }
 
 
-def meshing_drawing(path: Path, lang: str, pair: SpurPair, title: str | None = None):
+def meshing_drawing(path: Path, lang: str, drawing: GearDrawing, title: str | None = None):
     """Both gears with their generated involute teeth around the mesh, their pitch, base,
     tip and root circles, the centres and the line of centres (O2, far above, is marked by
     an arrow with a'), the pitch point P, the line of action N1N2, the actual contact B1B2
     (bold), the working pressure angle α' (at P and as ∠PO1N1) and the contact ratio
     ε = B1B2 / pb in a box. The view is cut to the mesh region."""
     lab = LABELS[lang]
-    lay = mesh_layout(pair)
+    lay = drawing.layout
+    pair = drawing.pair
     g1, g2, m = pair.g1, pair.g2, pair.m
     P, u, aw = lay.p, lay.direction, pair.alpha_work
     shifted = any(abs(w - g.d / 2) > 1e-6 * m for w, g in ((lay.r1w, g1), (lay.r2w, g2)))
@@ -47,7 +48,7 @@ def meshing_drawing(path: Path, lang: str, pair: SpurPair, title: str | None = N
                 radii["ref"] = gear.d / 2
             for key, rad in radii.items():
                 plot(centre + rad * circle, **styles.get(key, styles["tip"]))
-        for outline, tint in zip(lay.outlines(60), ("#d6e4f2", "#f4e2c8")):
+        for outline, tint in zip(drawing.outlines, ("#d6e4f2", "#f4e2c8")):
             # a collection, not ax.fill: fill's patch would have its thousands of
             # segments measured one by one for the data limits, which are set below
             ax.add_collection(PolyCollection([np.column_stack([outline.real, outline.imag])],

@@ -6,7 +6,6 @@ from pathlib import Path
 
 import numpy as np
 
-from ..core.gears import mesh_layout
 from .fmt import f, md_text
 
 DEG = 180.0 / np.pi
@@ -16,11 +15,7 @@ MM = 1e3
 def make_gear_figures(g, fig_dir: Path, lang: str) -> dict[str, str]:
     from .gear_figures import meshing_drawing
 
-    from ..core.gears import spur_pair
-
-    p = g.pair   # the drawing works in millimetres
-    mm = spur_pair(p.m * MM, p.g1.z, p.g2.z, p.alpha, p.ha_star, p.c_star, p.g1.x, p.g2.x)
-    meshing_drawing(fig_dir / "gear_mesh.png", lang, mm)
+    meshing_drawing(fig_dir / "gear_mesh.png", lang, g.drawing)   # the drawing is in mm
     return {"gear_mesh": f"{fig_dir.name}/gear_mesh.png"}
 
 
@@ -69,7 +64,7 @@ def gear_context(g, lang: str, figures: dict[str, str]) -> dict:
         [name("重合度", "contact ratio"), "$\\varepsilon_\\alpha$", name("见下式", "see below"), f(p.contact_ratio, 4), "—"],
     ]
     tw = np.tan(p.alpha_work)
-    b1b2 = mesh_layout(p).action_length   # |B1B2| from the points on the line of action
+    b1b2 = g.drawing.action_length   # |B1B2| from the points on the line of action
     eq = {
         "eps": (rf"\varepsilon_\alpha = \frac{{z_1(\tan\alpha_{{a1}}-\tan\alpha')+z_2(\tan\alpha_{{a2}}-\tan\alpha')}}{{2\pi}}"
                 rf" = \frac{{{g1.z}\times({f(np.tan(g1.alpha_a), 5)}-{f(tw, 5)})+{g2.z}\times"

@@ -1,6 +1,7 @@
 """The gear meshing drawing sheet (齿轮啮合图) that the student hands in.
 
-The pair is drawn in the layout of :func:`mechdesign.core.gears.mesh_layout`: the line of
+The pair is drawn in the layout of :func:`mechdesign.core.gears.mesh_layout` (computed by the
+gear stage, :class:`mechdesign.machines.gear.GearDrawing`; the sheet only reads it): the line of
 centres vertical, the pinion O1 below, the gear O2 above, gear 1 driving counter-clockwise.
 Several generated teeth of each gear around the pitch point (true involutes with their
 root fillets and any undercut, :func:`mechdesign.core.gears.tooth_outline`), the pitch,
@@ -20,7 +21,8 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
-from ..core.gears import SpurPair, mesh_layout, spur_pair, tooth_outline
+from ..core.gears import SpurPair
+from ..machines.gear import GearDrawing
 from .sheet import (LabelPlacer, Polyline, Sheet, TitleInfo, clip_segment, frame,
                     length_scale, sample_polyline, scale_text, table, text_width, title_block_box)
 
@@ -180,10 +182,11 @@ def _best_k(extent: complex, room: complex, m: float) -> float:
     return 1.0 / length_scale(extent, room)
 
 
-def _teeth(lay, gear: int, extra: float = 1.5, least: float = 2.5):
+def _teeth(drawing: GearDrawing, gear: int, extra: float = 1.5, least: float = 2.5):
     """Indices of the teeth drawn: those within the contact path's angle (seen from the
     gear's centre) widened by ``extra`` pitches, at least ``least`` pitches either side of
     the line of centres; and the outline of one tooth in the gear's own frame."""
+    lay = drawing.layout
     pair = lay.pair
     g = pair.g1 if gear == 1 else pair.g2
     centre, rot = (lay.o1, lay.rotation1) if gear == 1 else (lay.o2, lay.rotation2)
@@ -194,15 +197,16 @@ def _teeth(lay, gear: int, extra: float = 1.5, least: float = 2.5):
     centres = rot + step * np.arange(g.z)
     rel = np.angle(np.exp(1j * centres) / towards)
     idx = [int(j) for j in np.argsort(rel) if abs(rel[j]) <= half]
-    return idx, tooth_outline(g, pair.m, pair.alpha, pair.c_star, 48), centre, rot, step
+    return idx, drawing.teeth[gear - 1], centre, rot, step
 
 
-def _plan(lay, size: str | None) -> _Plan:
+def _plan(drawing: GearDrawing, size: str | None) -> _Plan:
+    lay = drawing.layout
     pair = lay.pair
     ra1 = pair.g1.da / 2
     pts = [lay.p, lay.n1, lay.n2, lay.b1, lay.b2, lay.o1]
     for gear in (1, 2):
-        idx, tooth, centre, rot, step = _teeth(lay, gear)
+        idx, tooth, centre, rot, step = _teeth(drawing, gear)
         for j in idx:
             pts.extend(centre + np.exp(1j * (rot + j * step)) * tooth[:: 4])
     pts = np.asarray(pts)
@@ -248,16 +252,15 @@ def _num(x: float, decimals: int = 2) -> str:
 
 # -- the sheet ----------------------------------------------------------------------------
 
-def gear_sheet(pair: SpurPair, info: TitleInfo, lang: str, size: str | None = None) -> Sheet:
-    """The gear meshing drawing (齿轮啮合图) of ``pair`` (a :class:`SpurPair` in metres):
+def gear_sheet(drawing: GearDrawing, info: TitleInfo, lang: str, size: str | None = None) -> Sheet:
+    """The gear meshing drawing (齿轮啮合图) of the gear stage's ``drawing`` (the pair in mm):
     on an A2 sheet, or A3 when the pair is drawn as large there (``size`` forces one),
     labels in ``lang`` ("zh" or "en"). The title block gets the scale and, when
     ``info.drawing`` is empty, the drawing's name."""
     lab = LABELS[lang]
-    mm = spur_pair(pair.m * MM, pair.g1.z, pair.g2.z, pair.alpha, pair.ha_star, pair.c_star,
-                   pair.g1.x, pair.g2.x)
-    lay = mesh_layout(mm)
-    plan = _plan(lay, size)
+    mm = drawing.pair
+    lay = drawing.layout
+    plan = _plan(drawing, size)
     k, box = plan.k, plan.box
     sheet = Sheet(plan.size)
     frame(sheet, replace(info, scale=_scale_label(k), drawing=info.drawing or lab["drawing"]))
@@ -281,7 +284,7 @@ def gear_sheet(pair: SpurPair, info: TitleInfo, lang: str, size: str | None = No
 
     # generated teeth around the pitch point, one polyline per tooth
     for gear in (1, 2):
-        idx, tooth, centre, rot, step = _teeth(lay, gear)
+        idx, tooth, centre, rot, step = _teeth(drawing, gear)
         for j in idx:
             pen.polyline(P(centre + np.exp(1j * (rot + j * step)) * tooth), "OUTLINE")
 
@@ -324,7 +327,7 @@ def gear_sheet(pair: SpurPair, info: TitleInfo, lang: str, size: str | None = No
     if w2r < 0.8 * k * g2.df / 2:
         _turn(sheet, box, o2, w2r, np.radians(-70), np.radians(-84), lab["w2"])
 
-    _dimensions(sheet, lay, mm, plan, o2_in)
+    _dimensions(sheet, drawing, plan, o2_in)
 
     # labels: first the linework as obstacles
     labels = LabelPlacer(sheet, box)
@@ -344,7 +347,7 @@ def gear_sheet(pair: SpurPair, info: TitleInfo, lang: str, size: str | None = No
                   3.5, np.exp(1j * (a0 + a1) / 2), layer="DIMENSIONS")
     labels.leader(b2 + 0.35 * (p - b2), lab["actual"], 3.5, -1j * u + 0.7)
     labels.leader(n2 + 0.3 * (b1 - n2), lab["action"], 3.5, -1j * u - 0.5)
-    _table(sheet, mm, lay, lab)
+    _table(sheet, mm, lay, lab, drawing.interference)
     return sheet
 
 
@@ -362,8 +365,9 @@ def _turn(sheet: Sheet, box: Box, centre: complex, r: float, a0: float, a1: floa
     sheet.text(pts[0] + 2.5 * out, text, 3.5, "TEXT", "left" if out.real >= 0 else "right", "middle")
 
 
-def _dimensions(sheet: Sheet, lay, mm: SpurPair, plan: _Plan, o2_in: bool) -> None:
+def _dimensions(sheet: Sheet, drawing: GearDrawing, plan: _Plan, o2_in: bool) -> None:
     """a′, and r, rb, ra, rf (and the pitch radii r′ of a shifted pair) of both gears."""
+    lay, mm = drawing.layout, drawing.pair
     k, box = plan.k, plan.box
     o1 = plan.origin
     o2 = o1 + k * lay.o2
@@ -409,7 +413,7 @@ def _dimensions(sheet: Sheet, lay, mm: SpurPair, plan: _Plan, o2_in: bool) -> No
         radial(o1, name, r, [slot, -slot, slot - 6, -slot + 6, 180 - slot, 180 + slot,
                              40.0 - slot, 140.0 + slot])
     # the gear: radii just right of its drawn teeth, pointing at O2
-    idx, _, _, rot, step = _teeth(lay, 2)
+    idx, _, _, rot, step = _teeth(drawing, 2)
     rel = np.angle(np.exp(1j * (rot + step * np.asarray(idx))) / -1j)
     first = np.degrees(np.max(rel) + 0.75 * step)
     spacing = np.degrees(14.0 / (k * g2.d / 2))
@@ -420,7 +424,7 @@ def _dimensions(sheet: Sheet, lay, mm: SpurPair, plan: _Plan, o2_in: bool) -> No
         radial(o2, name, r, tries + [-180.0 - a for a in tries], length)
 
 
-def _table(sheet: Sheet, mm: SpurPair, lay, lab: dict) -> None:
+def _table(sheet: Sheet, mm: SpurPair, lay, lab: dict, interference: bool) -> None:
     """The data table in the upper right corner, the notes below it."""
     _, _, x1, y1 = sheet.inner
     g1, g2 = mm.g1, mm.g2
@@ -460,7 +464,7 @@ def _table(sheet: Sheet, mm: SpurPair, lay, lab: dict) -> None:
     for i, g, xmin in ((1, g1, mm.x_min1), (2, g2, mm.x_min2)):
         if g.x < xmin - 1e-9:
             notes.append(lab["n_undercut"].format(i=i, z=g.z, x=_num(g.x, 3), xmin=_num(xmin, 3)))
-    if lay.interference:
+    if interference:
         notes.append(lab["n_interf"])
     ty1 = title_block_box(sheet)[3]
     y = bottom - 9.0

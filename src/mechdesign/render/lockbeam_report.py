@@ -75,23 +75,20 @@ def _timing_figure(path: Path, lang: str, r: dict):
 
 def _linkage_drawing(path: Path, lang: str, b, wheel_d: float):
     """The bending four-bar at its start (bold) and end positions, with the large wheel."""
-    ds, mech = b.design, b.mechanism
+    ds, dr = b.design, b.drawing
     zh = lang == "zh"
-    al = ds.alpha1 + ds.dalpha * np.linspace(0.0, 1.0, 5)
-    m = mech.solve(al)
-    A, B = m.points["A"].pos * MM, m.points["B"].pos * MM
+    A, B = dr.A * MM, dr.B * MM
     B0 = ds.frame * MM
     with fig.figure(path, 1, (6.6, 4.4), sharex=False) as (ax,):
         t = np.linspace(0, 2 * np.pi, 200)
         ax.plot(B0 + wheel_d / 2 * MM * np.cos(t), wheel_d / 2 * MM * np.sin(t), color="0.6",
                 lw=0.8, ls="--")
         ax.plot([0, B0], [0, 0], color="k", lw=0.8, ls="-.")
-        arc = mech.solve(ds.alpha1 + ds.dalpha * np.linspace(0, 1, 60))
-        for name in ("A", "B"):
-            z = arc.points[name].pos * MM
+        for path in (dr.path_A, dr.path_B):
+            z = path * MM
             ax.plot(z.real, z.imag, color="0.7", lw=0.6)
-        for j in range(len(al)):
-            bold = j in (0, len(al) - 1)
+        for j in range(len(A)):
+            bold = j in (0, len(A) - 1)
             col = ("C0" if j == 0 else "C3") if bold else "0.7"
             lw = 1.8 if bold else 0.6
             ax.plot([0, A[j].real, B[j].real, B0], [0, A[j].imag, B[j].imag, 0], color=col, lw=lw,
@@ -99,7 +96,7 @@ def _linkage_drawing(path: Path, lang: str, b, wheel_d: float):
         for z, name in ((0j, "A0"), (complex(B0, 0), "B0")):
             ax.plot([z.real], [z.imag], "^", color="k", ms=7)
             ax.text(z.real, z.imag - 12, name, ha="center", va="top", fontsize=8)
-        for j, tag in ((0, "1"), (len(al) - 1, "2")):
+        for j, tag in ((0, "1"), (len(A) - 1, "2")):
             ax.text(A[j].real, A[j].imag + 5, f"A{tag}", fontsize=8, color="C0" if j == 0 else "C3")
             ax.text(B[j].real + 3, B[j].imag + 3, f"B{tag}", fontsize=8, color="C0" if j == 0 else "C3")
         ax.set_aspect("equal")
@@ -348,7 +345,6 @@ def _transmission(r: dict, lang: str) -> dict:
 
 
 def _bending(r: dict, lang: str, figures: dict) -> dict:
-    from ..core import rocker_synthesis as rs
     from .cam_report import cam_context
 
     zh = lang == "zh"
@@ -384,7 +380,7 @@ def _bending(r: dict, lang: str, figures: dict) -> dict:
     mean_ratio = bp.output_swing / bp.input_swing
     sense_name = {"same": ("同向", "same way"), "opposite": ("反向", "opposite way")}
     cand_rows = []
-    for sense, d_, g, msg in b.synthesis.candidates:
+    for (sense, d_, g, msg), peak in zip(b.synthesis.candidates, b.candidate_ratio_peaks):
         name = sense_name[sense][0 if zh else 1]
         if d_ is None:
             cand_rows.append([name, "—", "—", "—", "—", "—", "—", msg])
@@ -396,7 +392,7 @@ def _bending(r: dict, lang: str, figures: dict) -> dict:
             if any(abs(length - x) < 1e-6 for x in bp.length_bounds):
                 note.append(f"{sym} 达到限值" if zh else f"{sym} at its bound")
         cand_rows.append([name + mark, ad(d_.alpha1), ad(d_.beta1), f(d_.input_rocker * MM, 2),
-                          f(d_.coupler * MM, 2), f(g * DEG, 2), f(rs.sweep(d_).ratio_peak, 4),
+                          f(d_.coupler * MM, 2), f(g * DEG, 2), f(peak, 4),
                           ("；" if zh else "; ").join(note)])
     design_rows = [
         ["$d$", "机架（摆杆转轴 A0 至链轮中心 B0）" if zh else "frame A0B0", f(ds.frame * MM, 2), "mm"],
@@ -417,11 +413,8 @@ def _bending(r: dict, lang: str, figures: dict) -> dict:
     if b.seed is not None:
         s = b.seed
         starts = []
-        for a1, b1, g in s.check.starts:
-            sw = rs.sweep(rs.RockerDesign(ds.frame, s.input_rocker, s.coupler, ds.output_rocker,
-                                          a1, ds.dalpha, b1, 0.0, 1))
-            r_ = np.abs(sw.ratio)
-            starts.append([ad(a1), ad(b1), f(g * DEG, 2), f"{f(float(r_.min()), 4)} ~ {f(float(r_.max()), 4)}"])
+        for (a1, b1, g), (lo, hi) in zip(s.check.starts, s.start_ratio_ranges):
+            starts.append([ad(a1), ad(b1), f(g * DEG, 2), f"{f(lo, 4)} ~ {f(hi, 4)}"])
         seed = {"a": f(s.input_rocker * MM, 0), "b": f(s.coupler * MM, 0),
                 "grashof": grashof_sentence(s.input_rocker, s.coupler, ds.output_rocker, ds.frame, lang),
                 "lo": f(s.check.swing_range[0] * DEG, 2), "hi": f(s.check.swing_range[1] * DEG, 2),

@@ -94,7 +94,7 @@ def _builders(results: dict, brief) -> list[tuple[str, Callable[[TitleInfo, str]
         def gear_builder(info, lang):
             from .gear_sheet import gear_sheet
 
-            return gear_sheet(gear.pair, info, lang)
+            return gear_sheet(gear.drawing, info, lang)
 
         out.append(("gear", gear_builder))
     return out
