@@ -4,8 +4,10 @@ bytes stay bytes and text keeps its encoding."""
 from __future__ import annotations
 
 import os
+import re
 import stat
 import threading
+from pathlib import Path
 
 import pytest
 
@@ -170,3 +172,41 @@ def test_bad_modes_are_refused(tmp_path):
             with atomic_open(tmp_path / "f", mode):
                 pass
     assert list(tmp_path.iterdir()) == []
+
+
+# Writes that are not output files: scratch inputs for pandoc/typst in temporary folders,
+# pandoc's captured stderr, and the run's publish step (staging folder → output folder,
+# which moves finished files; issue 17 leaves it as it is).
+_NOT_OUTPUT = {
+    "render/pdf.py": ('(tmp / "metadata.json").write_text', '(tmp / "typst-literal.lua").write_text',
+                      '(tmp / "in.md").write_text', 'open(self._err, "wb")',
+                      'os.fdopen(fd, "w", encoding="utf-8")'),
+    "render/docx.py": ("meta_file.write_text",),
+    "render/report.py": ("os.replace(folder, trash / folder.name)", "os.replace(item, target)"),
+}
+_WRITE = re.compile(r"\.write_text\(|\.write_bytes\(|\bopen\([^)]*[\"'][wax]b?t?[\"']|"
+                    r"\.savefig\(|\.saveas\(|\.save\(|os\.replace\(|os\.rename\(|shutil\.(copy|move)")
+# a library writing to the temporary path that fileio.atomic_path yields
+_TO_ATOMIC_TMP = re.compile(r"\.(savefig|saveas|save)\(tmp\b")
+
+
+def test_every_output_write_goes_through_fileio():
+    """No module writes an output file by itself: every write in the package is a call of
+    mechdesign.fileio, a library writing to the path atomic_path gave, or a listed
+    scratch/publish step."""
+    import mechdesign
+
+    root = Path(mechdesign.__file__).parent
+    stray = []
+    for path in sorted(root.rglob("*.py")):
+        rel = path.relative_to(root).as_posix()
+        if rel == "fileio.py":
+            continue
+        for no, line in enumerate(path.read_text(encoding="utf-8").splitlines(), 1):
+            code = line.split("#")[0]
+            if not _WRITE.search(code) or _TO_ATOMIC_TMP.search(code):
+                continue
+            if any(allowed in code for allowed in _NOT_OUTPUT.get(rel, ())):
+                continue
+            stray.append(f"{rel}:{no}: {line.strip()}")
+    assert not stray, "write output files through mechdesign.fileio:\n" + "\n".join(stray)
