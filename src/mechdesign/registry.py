@@ -12,7 +12,7 @@ from __future__ import annotations
 
 import importlib
 import math
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from typing import Any
 
 _MM, _DEG = 1000.0, 180.0 / math.pi

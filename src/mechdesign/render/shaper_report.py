@@ -91,7 +91,6 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
     mm = 1e3
     K, H = p.time_ratio_K, p.stroke * mm
     theta = syn.extreme_angle * DEG
-    half = theta / 2
     lk, ms, ld = brief.linkage, brief.masses, brief.loads
 
     data_rows = [
@@ -111,30 +110,10 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
         ["$z_1, z_2$", "齿轮齿数 / gear teeth", f"{p.z1}, {p.z2}", "—"],
         ["$[\\delta]$", "许用速度不均匀系数 / speed fluctuation", f"1/{1 / p.fluctuation:.4g}", "—"],
     ]
-    sin_half = np.sin(np.radians(half))
-    eq = {
-        "theta": (rf"\theta = 180° \times \frac{{K-1}}{{K+1}} = 180° \times "
-                  rf"\frac{{{f(K, 2)}-1}}{{{f(K, 2)}+1}} = {f(theta, 2)}°"),
-        "bar": (rf"L_{{O_3B}} = \frac{{H}}{{2\sin(\psi/2)}} = \frac{{{f(H, 0)}}}"
-                rf"{{2\sin {f(half, 3)}°}} = {f(d.guide_bar * mm, 2)}\ \text{{mm}}"),
-        "crank": (rf"L_{{O_2A}} = L_{{O_2O_3}} \sin(\psi/2) = {f(d.frame * mm, 0)} \times "
-                  rf"{f(sin_half, 5)} = {f(d.crank * mm, 2)}\ \text{{mm}}"),
-        "rod": (rf"L_{{BF}} = {f(p.rod_ratio, 2)}\, L_{{O_3B}} = {f(p.rod_ratio, 2)} \times "
-                rf"{f(d.guide_bar * mm, 2)} = {f(d.rod * mm, 2)}\ \text{{mm}}"),
-        "guide": (rf"L_{{O_3M}} = L_{{O_3B}}\,\frac{{1+\cos(\psi/2)}}{{2}} = "
-                  rf"{f(d.guide_bar * mm, 2)} \times \frac{{1+{f(np.cos(np.radians(half)), 5)}}}{{2}}"
-                  rf" = {f(d.guide_height * mm, 2)}\ \text{{mm}}"),
-        "com": (rf"L_{{O_3S_4}} = {f(p.com_ratio, 2)}\, L_{{O_3B}} = {f(d.bar_com * mm, 2)}\ \text{{mm}}"),
-    }
-    syn_rows = [
-        ["$\\theta = \\psi$", "极位夹角 = 导杆摆角 / extreme angle = swing", f(theta, 3), "°"],
-        ["$L_{O_2A}$", "曲柄 / crank", f(d.crank * mm, 2), "mm"],
-        ["$L_{O_3B}$", "导杆 / guide bar", f(d.guide_bar * mm, 2), "mm"],
-        ["$L_{BF}$", "连杆 / rod", f(d.rod * mm, 2), "mm"],
-        ["$L_{O_3M}$", "导路至 O3 / guide line above O3", f(d.guide_height * mm, 2), "mm"],
-        ["$L_{O_2M}$", "导路至 O2 / guide line above O2", f(syn.guide_height_above_O2 * mm, 2), "mm"],
-        ["$L_{O_3S_4}$", "导杆质心 / bar CoM", f(d.bar_com * mm, 2), "mm"],
-    ]
+    from .guide_bar_report import guide_bar_context
+
+    guide_bar = guide_bar_context(syn, p, "BF", "刨头", [
+        ["$L_{O_2M}$", "导路至 O2 / guide line above O2", f(syn.guide_height_above_O2 * mm, 2), "mm"]])
     # Course typography: primes, not apostrophes (8′).
     labels = [lab.replace("'", "′") for lab in k.positions.labels]
     kin_rows, load_rows, reaction_rows = [], [], []
@@ -210,8 +189,7 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
         "cam": cam,
         "fig": figures,
         "data_rows": data_rows,
-        "syn_rows": syn_rows,
-        "eq": eq,
+        "guide_bar": guide_bar,
         "kin_rows": kin_rows,
         "load_rows": load_rows,
         "reaction_rows": reaction_rows,

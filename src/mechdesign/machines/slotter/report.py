@@ -7,6 +7,7 @@ from pathlib import Path
 import numpy as np
 
 from ...render.fmt import f, md_meta, md_text
+from ...render.guide_bar_report import guide_bar_context
 from ...render.linkage_report import linkage_context, make_linkage_figures, verification_rows
 
 DEG = 180.0 / np.pi
@@ -43,11 +44,8 @@ def animate(r: dict, path: Path, lang: str) -> Path:
 def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
     zh = lang == "zh"
     p, syn, k, v = r["params"], r["synthesis"], r["linkage"], r["linkage_verification"]
-    d = syn.design
     mm = 1e3
     K, H = p.time_ratio_K, p.stroke * mm
-    theta = syn.extreme_angle * DEG
-    half = theta / 2
     lk, ms, ld = brief.linkage, brief.masses, brief.loads
     data_rows = [
         ["$H$", "插刀行程 / ram stroke", f(lk.stroke_H_mm, 0), "mm"],
@@ -66,27 +64,7 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
         ["$z_1, z_2$", "齿轮齿数 / gear teeth", f"{p.z1}, {p.z2}", "—"],
         ["$[\\delta]$", "许用速度不均匀系数 / speed fluctuation", f"1/{1 / p.fluctuation:.4g}", "—"],
     ]
-    sin_half = np.sin(np.radians(half))
-    eq = {
-        "theta": (rf"\theta = 180° \times \frac{{K-1}}{{K+1}} = 180° \times "
-                  rf"\frac{{{f(K, 2)}-1}}{{{f(K, 2)}+1}} = {f(theta, 2)}°"),
-        "bar": (rf"L_{{O_3B}} = \frac{{H}}{{2\sin(\psi/2)}} = \frac{{{f(H, 0)}}}"
-                rf"{{2\sin {f(half, 3)}°}} = {f(d.guide_bar * mm, 2)}\ \text{{mm}}"),
-        "crank": (rf"L_{{O_2A}} = L_{{O_2O_3}} \sin(\psi/2) = {f(d.frame * mm, 0)} \times "
-                  rf"{f(sin_half, 5)} = {f(d.crank * mm, 2)}\ \text{{mm}}"),
-        "rod": (rf"L_{{BC}} = {f(p.rod_ratio, 2)}\, L_{{O_3B}} = {f(d.rod * mm, 2)}\ \text{{mm}}"),
-        "guide": (rf"L_{{O_3M}} = L_{{O_3B}}\,\frac{{1+\cos(\psi/2)}}{{2}} = "
-                  rf"{f(d.guide_bar * mm, 2)} \times \frac{{1+{f(np.cos(np.radians(half)), 5)}}}{{2}}"
-                  rf" = {f(d.guide_height * mm, 2)}\ \text{{mm}}"),
-    }
-    syn_rows = [
-        ["$\\theta = \\psi$", "极位夹角 = 导杆摆角 / extreme angle = swing", f(theta, 3), "°"],
-        ["$L_{O_2A}$", "曲柄 / crank", f(d.crank * mm, 2), "mm"],
-        ["$L_{O_3B}$", "导杆 / guide bar", f(d.guide_bar * mm, 2), "mm"],
-        ["$L_{BC}$", "连杆 / rod", f(d.rod * mm, 2), "mm"],
-        ["$L_{O_3M}$", "导路至 O3 / guide line from O3", f(d.guide_height * mm, 2), "mm"],
-        ["$L_{O_3S_4}$", "导杆质心 / bar CoM", f(d.bar_com * mm, 2), "mm"],
-    ]
+    guide_bar = guide_bar_context(syn, p, "BC", "滑枕")
     lkc = linkage_context(r["model"], k, r["linkage_forces"], r["linkage_flywheel"], v, figures,
                           lang, title="插床导杆机构分析" if zh else "Guide-bar linkage analysis")
     cam = gear = drive = None
@@ -108,8 +86,7 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
     findings = [md_text(w.text(lang)) for key in ("linkage_verification", "linkage_flywheel")
                 for w in (getattr(r[key], "warnings", ()) or ())]
     return {
-        "meta": md_meta(brief.report), "data_rows": data_rows, "syn_rows": syn_rows, "eq": eq,
-        "theta": f(theta, 2), "K": f(K, 2), "H": f(H, 0),
+        "meta": md_meta(brief.report), "data_rows": data_rows, "guide_bar": guide_bar,
         "n2": f(p.crank_speed_rpm, 0), "sense_zh": "顺时针" if p.crank_omega < 0 else "逆时针",
         "sense_en": "clockwise" if p.crank_omega < 0 else "counter-clockwise",
         "idle_mm": f(p.idle_travel_ratio * H, 1), "cut_to": f((1 - p.idle_travel_ratio) * H, 1),
