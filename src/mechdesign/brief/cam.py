@@ -10,7 +10,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Annotated, Literal, Optional, Union
 
-import numpy as np
+from ..lazy import np
 from pydantic import Field, model_validator
 
 from .common import ReportMeta, StrictModel

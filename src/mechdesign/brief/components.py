@@ -18,7 +18,7 @@ from dataclasses import dataclass
 from math import prod
 from typing import Literal, Optional
 
-import numpy as np
+from ..lazy import np
 from pydantic import Field, model_validator
 
 from .common import StrictModel

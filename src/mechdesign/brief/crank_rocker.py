@@ -10,10 +10,9 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Literal, Optional
 
-import numpy as np
+from ..lazy import np
 from pydantic import Field, field_validator, model_validator
 
-from ..core.synthesis import extreme_angle
 from .common import ReportMeta, StrictModel
 
 _DEFAULT_THETAS = [0.0, 5.0, 10.0, 15.0, 20.0, 25.0, 30.0]
@@ -136,6 +135,8 @@ class CrankRockerBrief(StrictModel):
     def theta_rad(self) -> float:
         if self.extreme_angle_deg is not None:
             return float(np.radians(self.extreme_angle_deg))
+        from ..core.synthesis import extreme_angle
+
         return float(extreme_angle(self.time_ratio_K))
 
 
@@ -183,7 +184,7 @@ def crank_rocker_to_si(b: CrankRockerBrief) -> CrankRockerParams:
     K = b.time_ratio_K if b.time_ratio_K is not None else float((np.pi + theta) / (np.pi - theta))
     sc = b.slider_crank
     slider = None if sc is None else SliderParams(
-        sc.time_ratio_K, float(extreme_angle(sc.time_ratio_K)), sc.stroke_H_mm * mm,
+        sc.time_ratio_K, float(_extreme_angle(sc.time_ratio_K)), sc.stroke_H_mm * mm,
         sc.offset_e_mm * mm)
     speed = b.crank_speed_rpm
     return CrankRockerParams(
@@ -201,3 +202,9 @@ def crank_rocker_to_si(b: CrankRockerBrief) -> CrankRockerParams:
             c.frame_mm * mm)) for c in b.compare),
         grid_points=b.simulation_points,
     )
+
+
+def _extreme_angle(K: float) -> float:
+    from ..core.synthesis import extreme_angle
+
+    return extreme_angle(K)

@@ -18,7 +18,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Annotated, Literal, Optional, Union
 
-import numpy as np
+from ..lazy import np
 from pydantic import BeforeValidator, Field, model_validator
 
 from .cam import CamParams, CamSection, cam_to_si

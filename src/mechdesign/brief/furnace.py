@@ -11,7 +11,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Annotated, Literal, Optional, Union
 
-import numpy as np
+from ..lazy import np
 from pydantic import Field
 
 from .common import AnalysisSettings, ReportMeta, StrictModel

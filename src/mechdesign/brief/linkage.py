@@ -14,7 +14,7 @@ from __future__ import annotations
 import re
 from typing import Annotated, Literal, Optional, Union
 
-import numpy as np
+from ..lazy import np
 from pydantic import BeforeValidator, Field, model_validator
 
 from .common import AnalysisSettings, ReportMeta, StrictModel, parse_fraction

@@ -21,7 +21,7 @@ from dataclasses import dataclass
 from fractions import Fraction
 from typing import Annotated, Literal, Optional, Union
 
-import numpy as np
+from ..lazy import np
 from pydantic import Field, model_validator
 
 from .cam import CamParams, CamSection, cam_to_si

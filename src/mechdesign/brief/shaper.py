@@ -7,7 +7,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Literal, Optional
 
-import numpy as np
+from ..lazy import np
 from pydantic import Field, field_validator, model_validator
 
 from .cam import CamParams, CamSection, cam_to_si

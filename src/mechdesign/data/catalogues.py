@@ -12,7 +12,7 @@ from dataclasses import dataclass
 from functools import lru_cache
 from types import MappingProxyType
 
-import numpy as np
+from ..lazy import np  # numpy on first use: validation reads names only
 
 from . import load_yaml
 

@@ -7,7 +7,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Literal
 
-import numpy as np
+from ...lazy import np
 from pydantic import Field
 
 from ...brief.cam import CamParams, cam_to_si
