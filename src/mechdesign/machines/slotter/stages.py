@@ -39,9 +39,9 @@ def build_mechanism(d: GuideBarDesign, p: SlotterParams) -> Mechanism:
     m.add(RPR("guide bar (RPR)", "3", "4", "A", "O3", branch=+1))
     m.add(LinkPoint("B", "4", "O3", d.guide_bar))
     m.add(LinkPoint("S4", "4", "O3", d.bar_com))
-    # The ram C above B on the vertical guide (the shaper's layout turned by −90°).
+    # The ram C below B on the vertical guide (its tool at the lower end).
     m.add(RRP("ram (RRP)", "5", "6", "B", "C", d.rod, s * d.guide_height + 0j, np.pi / 2,
-              branch=-1 if s > 0 else +1, frame=FRAME))
+              branch=-1, frame=FRAME))
     m.add(LinkPoint("S6", "6", "C", abs(p.ram_com), 0.0 if p.ram_com >= 0 else np.pi))
     # P on the cutting-force line, beside C (the ram translates, the line is vertical).
     xp = s * p.cutting_offset

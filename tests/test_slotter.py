@@ -1,0 +1,102 @@
+"""The slotting machine (插床), the proof of the one-engine design (issue 17 point 7),
+against independent references: the guide-bar closed forms (stroke H = 2·L_O3B·sin(ψ/2),
+K = (180° + θ)/(180° − θ), ω4 = L2·ω2·cos(φ2 − φ4)/S), the work of the cutting force per
+revolution (the only load doing net work: weights and inertia forces do none over a
+cycle), the power balance, and the mirror image of the machine (counter-clockwise crank)."""
+from __future__ import annotations
+
+import dataclasses
+from pathlib import Path
+
+import numpy as np
+import pytest
+from typer.testing import CliRunner
+
+from mechdesign.cli import app
+from mechdesign.machines import get_machine, stages_for
+from mechdesign.pipeline import run_stages
+
+ROOT = Path(__file__).parents[1]
+
+
+@pytest.fixture(scope="module")
+def r(example_results):
+    return example_results("slotter")
+
+
+def test_stroke_and_time_ratio_from_the_simulated_linkage(r):
+    p, syn, k, v = r["params"], r["synthesis"], r["linkage"], r["linkage_verification"]
+    d = syn.design
+    theta = np.pi * (p.time_ratio_K - 1) / (p.time_ratio_K + 1)
+    assert d.guide_bar == pytest.approx(p.stroke / (2 * np.sin(theta / 2)), rel=1e-12)
+    assert d.crank == pytest.approx(p.frame * np.sin(theta / 2), rel=1e-12)
+    assert v.stroke == pytest.approx(p.stroke, abs=1e-9)       # bounded search, not the formulas
+    assert k.stroke == pytest.approx(p.stroke, abs=1e-9)       # zeros of the velocity
+    assert v.time_ratio == pytest.approx(p.time_ratio_K, abs=1e-6)
+    assert k.time_ratio == pytest.approx(p.time_ratio_K, abs=1e-9)
+
+
+def test_the_slow_stroke_cuts_downwards(r):
+    k, f, raw = r["linkage"], r["linkage_forces"], r["linkage_raw"]
+    n = k.grid_size
+    working = k.phase[:n] < k.working_span
+    vy = raw.points["C"].vel.imag[:n]
+    assert np.all(vy[working][1:-1] < 0)                      # the ram goes down …
+    assert np.all(vy[~working][1:-1] > 0)                     # … and comes back up
+    fy = -f.resistance["R1"][:n]     # R1 is signed along DOWN = −π/2: its y component is −R1
+    cutting = np.abs(fy) > 0
+    assert cutting.any() and np.all(fy[cutting] > 0)          # the cut pushes the tool up
+    assert np.all(working[cutting])                           # only on the working stroke
+
+
+def test_guide_bar_angular_velocity_closed_form(r):
+    p, raw, model = r["params"], r["linkage_raw"], r["model"]
+    a, o3 = raw.points["A"].pos, raw.points["O3"].pos
+    phi2 = np.angle(a - raw.points["O2"].pos)
+    phi4 = raw.links["4"].angle
+    S = np.abs(a - o3)
+    w4 = model.crank.length * p.crank_omega * np.cos(phi2 - phi4) / S
+    np.testing.assert_allclose(raw.links["4"].omega, w4, rtol=0, atol=1e-10 * np.max(np.abs(w4)))
+
+
+def test_mean_power_is_the_cutting_work_per_revolution(r):
+    p, f = r["params"], r["linkage_forces"]
+    cut = p.cutting_force * p.stroke * (1 - 2 * p.idle_travel_ratio)   # J per revolution
+    per_second = cut * p.crank_speed_rpm / 60.0
+    # The force switches on and off inside grid steps: the grid mean carries O(h) of it.
+    assert f.mean_power == pytest.approx(per_second, rel=2e-3)
+    assert r["linkage_verification"].power_balance_residual < 1e-9
+    fl = r["linkage_flywheel"]
+    assert fl.mean_power == pytest.approx(f.mean_power, rel=1e-12)
+    assert fl.inertia == pytest.approx(900 * fl.max_energy_swing /
+                                       (np.pi ** 2 * fl.shaft_speed_rpm ** 2 * p.fluctuation))
+
+
+def test_counter_clockwise_crank_mirrors_the_machine(r):
+    """O2 on the other side of O3 and the crank turning the other way: the mirror image,
+    the same motion of the ram and the same balancing torque at every phase."""
+    p = r["params"]
+    q = dataclasses.replace(p, crank_omega=-p.crank_omega, grid_points=720, cam=None,
+                            drive=None, gear=None)
+    pc = dataclasses.replace(p, grid_points=720, cam=None, drive=None, gear=None)
+    m = get_machine("slotter")
+    out = [run_stages(stages_for(m, x), {"params": x, "brief": r["brief"]})[0] for x in (pc, q)]
+    (a, b) = out
+    assert b["linkage"].time_ratio == pytest.approx(a["linkage"].time_ratio, abs=1e-9)
+    np.testing.assert_allclose(b["linkage"].s, a["linkage"].s, atol=1e-12)
+    np.testing.assert_allclose(b["linkage_raw"].points["C"].pos, -np.conj(a["linkage_raw"].points["C"].pos),
+                               atol=1e-12)
+    mb = a["linkage_forces"].balancing_torque
+    np.testing.assert_allclose(b["linkage_forces"].balancing_torque, mb, atol=1e-9 * np.max(np.abs(mb)))
+
+
+def test_a_rod_too_short_to_reach_the_guide_names_its_field(tmp_path):
+    text = (ROOT / "designs" / "slotter.yaml").read_text(encoding="utf-8")
+    bad = tmp_path / "slotter.yaml"
+    bad.write_text(text.replace("rod_ratio_BC_O3B: 0.8", "rod_ratio_BC_O3B: 0.01"), encoding="utf-8")
+    res = CliRunner().invoke(app, ["run", str(bad), "--out", str(tmp_path / "out"), "--format", "md",
+                                   "--lang", "en"])
+    assert res.exit_code == 2, res.output
+    assert "linkage.rod_ratio_BC_O3B" in res.output and "0.01" in res.output
+    assert "Traceback" not in res.output
+    assert not (tmp_path / "out" / "report.md").exists()
