@@ -359,11 +359,11 @@ def _mechanism(s: Sheet, model, k, lab: dict, box, chosen: list[str], lang: str)
                 ang = guide if not isinstance(guide, str) else float(k.link_angle[guide][n + i])
                 slider_block(v, P[point][i], ang, 10.0, 5.0)
                 placer.block(v.p(P[point][i]), 5.0)
-            for name in joints - set(mech.frame_points):
+            for name in sorted(joints - set(mech.frame_points)):
                 if name in P:
                     pin(v, P[name][i])
                     placer.block(v.p(P[name][i]), 1.5)
-            for name in coms:
+            for name in sorted(coms):
                 if name in P:
                     s.circle(v.p(P[name][i]), 0.8, "OUTLINE", 0.25)
     tip = P[crank.tip]
