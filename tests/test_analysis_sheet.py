@@ -16,12 +16,13 @@ import numpy as np
 import pytest
 
 from mechdesign.core.mechanism import RPR, Crank
-from mechdesign.core.polygons import kinematic_polygon
-from mechdesign.render.analysis_sheet import analysis_sheet, default_positions, entry, polygons
+from mechdesign.core.polygons import image_name, kinematic_polygon
+from mechdesign.render.analysis_sheet import analysis_sheet
 from mechdesign.render.sheet import (SIZES, Arc, Circle, Dimension, Fill, Line, Polyline, Text,
                                      TitleInfo, boxes_overlap, text_width)
+from mechdesign.stages.polygons import chosen_positions, default_positions, entry, polygons
 
-MACHINES = ["linkage_sixbar", "furnace_pusher", "die_cutter", "lockbeam"]
+MACHINES = ["linkage_sixbar", "furnace_pusher", "die_cutter", "lockbeam", "shaper", "slotter"]
 INFO = TitleInfo("机构运动及动力分析图", "课程设计", "张三", "2023001", "机械 1", "李老师",
                  "2026-11-22", number="MD-01", sheet_no=1, sheets=1)
 
@@ -31,7 +32,7 @@ def run(request):
     from mechdesign.brief.loader import load_brief
     from mechdesign.machines import get_machine, stages_for
     from mechdesign.pipeline import run_stages
-    from mechdesign.render.sheets import _builders, linkage_results
+    from mechdesign.render.sheets import LINKAGE_KEYS, _builders, linkage_results
 
     b = load_brief(f"designs/{request.param}.yaml")
     m = get_machine(b.machine)
@@ -40,7 +41,11 @@ def run(request):
     found = linkage_results(results)
     assert found is not None
     assert "analysis" in [name for name, _ in _builders(results, b)]
-    return request.param, found
+    prefix = next(px for key, px in LINKAGE_KEYS if results.get(key) is found.model)
+    raw = results[f"{prefix}_raw"]
+    # the polygons stage stored the polygons of the brief's (or the default) positions
+    assert list(found.polygons.positions) == chosen_positions(found.motion, b)
+    return request.param, (found.model, found.motion, raw, found.forces, found.flywheel), found
 
 
 def _labels(k):
@@ -56,6 +61,12 @@ def _fd(model, phi, h, name, what):
     return (getattr(ahead.points[name], what)[0] - getattr(back.points[name], what)[0]) / (2 * dt)
 
 
+def _points_of(mech, raw, prime=""):
+    """Polygon point name → mechanism point, for the moving points (the pole, image of
+    every frame point, is left out)."""
+    return {image_name(pt, prime): pt for pt in raw.points if pt not in mech.frame_points}
+
+
 def _check_closure(pg, scale):
     for v in pg.vectors:
         assert abs(pg.points[v.head] - pg.points[v.tail] - v.value) <= 1e-9 * scale, v.name
@@ -67,7 +78,7 @@ def _check_closure(pg, scale):
 
 
 def test_velocity_polygons_close_and_match_finite_differences(run):
-    name, (model, k, raw, forces, fly) = run
+    name, (model, k, raw, forces, fly), found = run
     mech = model.mechanism
     for label in _labels(k)[::2]:
         i = entry(k, label)
@@ -79,16 +90,17 @@ def test_velocity_polygons_close_and_match_finite_differences(run):
             if point in mech.frame_points:
                 continue
             fd = _fd(model, k.crank_angle[i], 1e-6, point, "pos")
-            assert abs(pg.points[point.lower()] - fd) <= 1e-6 * scale, (name, label, point)
+            assert abs(pg.points[image_name(point)] - fd) <= 1e-6 * scale, (name, label, point)
+        point_of = _points_of(mech, raw)
         for v in pg.vectors:                  # relative velocities ⊥ the line joining the points
-            a, b = v.tail.upper(), v.head.upper()
+            a, b = point_of.get(v.tail), point_of.get(v.head)
             if v.role == "relative" and a in raw.points and b in raw.points and abs(v.value) > 0:
                 r = raw.points[b].pos[i] - raw.points[a].pos[i]
                 assert abs((np.conj(v.value) * r).real) <= 1e-9 * abs(v.value) * abs(r)
 
 
 def test_acceleration_polygons_close_and_match_finite_differences(run):
-    name, (model, k, raw, forces, fly) = run
+    name, (model, k, raw, forces, fly), found = run
     mech = model.mechanism
     for label in _labels(k)[1::3]:
         i = entry(k, label)
@@ -99,15 +111,16 @@ def test_acceleration_polygons_close_and_match_finite_differences(run):
             if point in mech.frame_points:
                 continue
             fd = _fd(model, k.crank_angle[i], 1e-5, point, "vel")
-            assert abs(pg.points[point.lower() + "'"] - fd) <= 1e-5 * scale, (name, label, point)
+            assert abs(pg.points[image_name(point, "'")] - fd) <= 1e-5 * scale, (name, label, point)
         # a normal component points from the moving point back along the link, the
         # tangential one is perpendicular to it
+        point_of = _points_of(mech, raw, "'")
         for v in pg.vectors:
-            tail = v.tail.rstrip("'").upper()
+            tail = point_of.get(v.tail)
             if v.role != "normal" or tail not in raw.points:
                 continue
             t = next((x for x in pg.vectors if x.tail == v.head and x.role == "tangential"), None)
-            head = (t.head if t is not None else v.head).rstrip("'").upper()
+            head = point_of.get(t.head if t is not None else v.head)
             if head not in raw.points:
                 continue
             r = raw.points[head].pos[i] - raw.points[tail].pos[i]
@@ -119,7 +132,7 @@ def test_acceleration_polygons_close_and_match_finite_differences(run):
 
 
 def test_coriolis_term_of_the_guide_bar(run):
-    name, (model, k, raw, forces, fly) = run
+    name, (model, k, raw, forces, fly), found = run
     mech = model.mechanism
     bars = [g for g in mech.groups if isinstance(g, RPR)]
     if not bars:
@@ -176,7 +189,7 @@ def _power_torque(model, raw, forces, i):
 
 
 def test_force_polygons_close_and_the_crank_balances_the_power(run):
-    name, (model, k, raw, forces, fly) = run
+    name, (model, k, raw, forces, fly), found = run
     groups = [g for g in model.mechanism.groups if g.links]
     for label in _labels(k):
         i = entry(k, label)
@@ -219,11 +232,11 @@ def test_sheet_has_no_overlaps_and_the_dxf_the_same_entities(run, tmp_path):
     ezdxf = pytest.importorskip("ezdxf")
     from mechdesign.render.sheet_dxf import write_dxf
 
-    name, (model, k, raw, forces, fly) = run
-    s, scales = analysis_sheet(model, k, raw, forces, fly, INFO, "zh")
+    name, (model, k, raw, forces, fly), found = run
+    s, scales = analysis_sheet(found, INFO, "zh")
     assert scales["length"] >= 1
-    chosen = default_positions(k)
-    assert len(chosen) == 2
+    chosen = list(found.polygons.positions)
+    assert len(chosen) == 2 and chosen == default_positions(k)   # shaper's brief: [4, 10]
     n_groups = sum(1 for g in model.mechanism.groups if g.links)
     assert sum(1 for key in scales if key.startswith("force_")) == 2 * n_groups
     # everything inside the sheet, everything but the frame inside the border
@@ -263,7 +276,9 @@ def test_sheet_has_no_overlaps_and_the_dxf_the_same_entities(run, tmp_path):
     # the velocity polygon at the first position is drawn at the μv written above it
     mu = scales[f"velocity_{chosen[0]}"]
     assert any(f"μv = {mu:g} (m/s)/mm" == t for t in texts)
-    vel = polygons(model, k, raw, forces, chosen[0])[0]
+    vel = found.polygons.at(chosen[0])[0]
+    fresh = polygons(model, k, raw, forces, chosen[0])[0]      # the stage stored these
+    assert [(v.name, v.value) for v in vel.vectors] == [(v.name, v.value) for v in fresh.vectors]
     vecs = np.array([complex(e.dxf.end.x - e.dxf.start.x, e.dxf.end.y - e.dxf.start.y)
                      for e in msp.query("LINE[layer=='VECTORS']")])
     for v in vel.vectors:

@@ -61,10 +61,6 @@ RENDER_MAY_IMPORT = {
     ("mechdesign.machines.gear", "GearDrawing"): "result type (annotations)",
     ("mechdesign.core.polygons", "Polygon"): "result type (annotations)",
     ("mechdesign.machines.linkage", "LinkageModel"): "model type (isinstance)",
-    # Pending (issue 17 point 2, in progress): the polygons move into a stage of the linkage
-    # engine; the sheet will then read them from the results.
-    ("mechdesign.core.polygons", "kinematic_polygon"): "pending: polygons stored by a stage",
-    ("mechdesign.core.polygons", "linkage_force_polygons"): "pending: polygons stored by a stage",
     # Which points each link carries, read off the model's groups for the drawings (no
     # physics). machines/linkage.py is being rewritten by the lead (issue 17 point 2: the
     # group types own their members); the lead removes this entry then.

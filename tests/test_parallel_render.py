@@ -131,7 +131,7 @@ def test_parallel_and_serial_runs_write_the_same_bytes(tmp_path):
         assert proc.returncode == 0, proc.stderr
         outs[mode] = _tree_digest(out)
     assert outs["parallel"] == outs["serial"]
-    assert "report.pdf" in outs["serial"] and "sheets/linkage_A1.pdf" in outs["serial"]
+    assert "report.pdf" in outs["serial"] and "sheets/analysis_A1.pdf" in outs["serial"]
     assert not any(".tmp" in name or ".typ" in name for name in outs["parallel"])
 
 

@@ -20,7 +20,7 @@ LAYERS = {"OUTLINE", "CENTER", "CONSTRUCTION", "DIMENSIONS", "TEXT", "FRAME"}
 
 # brief → the sheets it must give (by the stages it has)
 EXPECTED = {
-    "shaper": ["linkage_A1", "cam_A2", "gear_A2"],
+    "shaper": ["analysis_A1", "cam_A2", "gear_A2"],
     "cam_7_3": ["cam_A2"],
     "lockbeam_cam": ["cam_A2"],
     # the feed linkage's analysis sheet and the positioning cam (the bending cam is drawn in

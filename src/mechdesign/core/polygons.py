@@ -14,7 +14,7 @@ built from (two paths of vector names with the same start and end). The group cl
 ``force_polygon``); nothing here draws.
 
 Names follow the textbook: the image of point B is ``b`` (``b'`` in the acceleration
-polygon), the pole ``p`` (``p'``); the image of the point of a guide bar 4 that coincides
+polygon), the pole ``p`` (``p'``; a mechanism point P is written ``p(P)``); the image of the point of a guide bar 4 that coincides
 with the slider's pin A is ``a4``; the intermediate point of a normal + tangential pair on
 link 3 is ``n3'``; the Coriolis point ``k'``. Force polygons number their vertices 0, 1, …
 """
@@ -71,6 +71,14 @@ class Polygon:
         return next(v for v in self.vectors if v.name == name)
 
 
+def image_name(point: str, prime: str = "") -> str:
+    """The polygon name of moving point ``point``: its name in lower case (``b``, ``b'``);
+    a point whose lower-case name is the pole's (``P``) is written ``p(P)`` so that it
+    does not take the pole's place."""
+    low = point.lower()
+    return (f"p({point})" if low == "p" else low) + prime
+
+
 class Builder:
     """Collects the points, vectors and equations of a velocity or acceleration polygon.
 
@@ -86,7 +94,7 @@ class Builder:
 
     def img(self, point: str) -> str:
         """The polygon point of mechanism point ``point`` (the pole for a frame point)."""
-        return self.pole if point in self.frame else point.lower() + self.prime
+        return self.pole if point in self.frame else image_name(point, self.prime)
 
     def value(self, point_motion) -> complex:
         """A mechanism point's velocity or acceleration at this entry."""

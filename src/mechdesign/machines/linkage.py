@@ -25,6 +25,7 @@ from ..core.mechanism import RPR, RRP, RRR, Crank, LinkPoint, Mechanism, Motion
 from ..pipeline import Stage
 from ..stages.flywheel import Flywheel, FlywheelSpec, design_flywheel
 from ..core.fields import q
+from ..stages.polygons import polygon_stage
 from .findings import Finding
 from .positions import Positions, textbook_positions
 
@@ -463,9 +464,9 @@ def quality_findings(model: LinkageModel, k: LinkageMotion) -> list[Finding]:
 # ---------------------------------------------------------------- stages and results
 
 def linkage_stages(model_key: str = "model", prefix: str = "linkage") -> list[Stage]:
-    """The four stages on the model found at ``results[model_key]``; results are stored as
-    ``{prefix}``, ``{prefix}_motion``, ``{prefix}_forces``, ``{prefix}_flywheel`` and
-    ``{prefix}_verification``."""
+    """The stages on the model found at ``results[model_key]``; results are stored as
+    ``{prefix}``, ``{prefix}_raw``, ``{prefix}_forces``, ``{prefix}_flywheel``,
+    ``{prefix}_verification`` and ``{prefix}_polygons`` (the analysis sheet's polygons)."""
     return [
         Stage((prefix, f"{prefix}_raw"), "机构运动分析 / kinematics",
               lambda r: motion(r[model_key])),
@@ -476,6 +477,7 @@ def linkage_stages(model_key: str = "model", prefix: str = "linkage") -> list[St
         Stage(f"{prefix}_verification", "校核 / verification",
               lambda r: verify(r[model_key], r[prefix], r[f"{prefix}_raw"],
                                r[f"{prefix}_forces"])),
+        polygon_stage(model_key, prefix),
     ]
 
 

@@ -21,6 +21,7 @@ from ..core.mechanism import RPR, RRP, AssemblyError, Crank, LinkPoint, Mechanis
 from ..core.synthesis import GuideBarDesign, guide_bar_quick_return
 from ..pipeline import Stage
 from ..stages.flywheel import Flywheel, FlywheelSpec, RimSpec
+from ..stages.polygons import polygon_stage
 from . import linkage as lk
 from .cam import cam_document
 from .drive import drive_document
@@ -137,7 +138,9 @@ def model(syn: Synthesis, p: ShaperParams) -> lk.LinkageModel:
         grid_points=p.grid_points, position_step=p.position_step, gravity=p.gravity,
         flywheel=FlywheelSpec(p.fluctuation, ratio, p.flywheel_shaft,
                               RimSpec(p.rim_diameter, p.rim_height_to_width, p.specific_weight)),
-        special_crank_angles=(np.pi / 2, 3 * np.pi / 2))
+        special_crank_angles=(np.pi / 2, 3 * np.pi / 2),
+        names={"2": ("曲柄 O2A", "crank O2A"), "3": ("滑块 A", "slider A"),
+               "4": ("导杆 O3B", "guide bar O3B"), "5": ("连杆 BF", "rod BF"), "6": ("刨头", "ram")})
 
 
 def _assembly_hint(exc: AssemblyError, d: GuideBarDesign, p: ShaperParams) -> AssemblyError:
@@ -263,6 +266,7 @@ STAGES = [
     Stage(("linkage_forces", "forces"), "动态静力分析 / kinetostatics", _forces_stage),
     Stage(("linkage_flywheel", "flywheel"), "飞轮设计 / flywheel", _flywheel_stage),
     Stage(("linkage_verification", "verification"), "校核 / verification", _verify_stage),
+    polygon_stage("model", "linkage"),
 ]
 
 

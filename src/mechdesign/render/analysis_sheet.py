@@ -5,19 +5,21 @@ acceleration polygons at the chosen positions, the force polygon of every Assur 
 energy curve with ΔW_max when there is a flywheel, a table of the positions and the title
 block.
 
-The polygons come from the group types themselves (:mod:`mechdesign.core.polygons`, built
-from the computed motion and reactions); the sheet only places and draws them, each to a
-scale written above it. :func:`analysis_sheet` takes the model, the motion, the raw
-motion, the forces and the flywheel, so it does not care which machine it draws.
+The polygons are computed by the polygons stage (:mod:`mechdesign.stages.polygons`, from
+the group types of :mod:`mechdesign.core.polygons`) and stored with the results; the sheet
+only places and draws them, each to a scale written above it. :func:`analysis_sheet` takes
+the run's :class:`~mechdesign.render.sheets.LinkageResults` (model, motion, forces,
+flywheel, polygons), so it does not care which machine it draws; the model's link names
+(``names``) are written on the skeleton.
 """
 from __future__ import annotations
 
 import numpy as np
 
-from ..core.polygons import Polygon, kinematic_polygon, linkage_force_polygons
-from .sheet import (LabelPlacer, Series, Sheet, TitleInfo, chart, fit_height, format_number, frame,
-                    ground, heading, length_scale, nice_scale, pin, scale_text, slider_block, table,
-                    title_block_box)
+from ..core.polygons import Polygon
+from .sheet import (Dimension, LabelPlacer, Series, Sheet, TitleInfo, chart, fit_height,
+                    format_number, frame, ground, heading, length_scale, nice_scale, pin,
+                    scale_text, slider_block, table, text_width, title_block_box)
 
 DEG = 180.0 / np.pi
 TWO_PI = 2.0 * np.pi
@@ -31,7 +33,7 @@ LABELS = {
            "md": "等效驱动力矩 Md = {v} N·m", "mean": "平均 Mb = {v} N·m", "table": "各位置运动与力分析结果",
            "pos": "位置", "dw": "ΔWmax = {v} J", "jf": "飞轮转动惯量 JF = {v} kg·m²",
            "scales": "作图比例", "each": "μv、μa、μF 注在各多边形上方", "noforce": "该位置无载荷（各反力为零）",
-           "nofly": "未设飞轮"},
+           "nofly": "未设飞轮", "links": "构件：", "guide": "{n}导路", "guide_plain": "导路"},
     "en": {"mechanism": "Skeleton at the positions", "velocity": "Velocity polygon, position {p}",
            "acceleration": "Acceleration polygon, position {p}", "force": "Force polygon, {g}, pos. {p}",
            "crank_group": "driver {l}", "group": "group {l}",
@@ -41,69 +43,30 @@ LABELS = {
            "md": "driving torque Md = {v} N·m", "mean": "mean Mb = {v} N·m", "table": "Results at the positions",
            "pos": "Pos.", "dw": "ΔWmax = {v} J", "jf": "flywheel inertia JF = {v} kg·m²",
            "scales": "Drawing scales", "each": "μv, μa, μF above each polygon",
-           "noforce": "no load at this position (all reactions zero)", "nofly": "no flywheel"},
+           "noforce": "no load at this position (all reactions zero)", "nofly": "no flywheel",
+           "links": "Links: ", "guide": "{n} guide", "guide_plain": "guide"},
 }
 
 UNITS = {"velocity": ("μv", "(m/s)/mm", "m/s"), "acceleration": ("μa", "(m/s²)/mm", "m/s²"),
          "force": ("μF", "N/mm", "N")}
 
 
-# ------------------------------------------------------------------ polygons (data)
-
-def entry(k, label: str) -> int:
-    """Index of position ``label`` in the motion arrays (the grid comes first)."""
-    return k.grid_size + list(k.positions.labels).index(label)
-
-
-def polygons(model, k, raw, forces, label: str) -> list[Polygon]:
-    """Velocity polygon, acceleration polygon and the force polygons (one per group with
-    links, the crank first) at position ``label``."""
-    i = entry(k, label)
-    mech = model.mechanism
-    out = [kinematic_polygon(mech, raw, i, label, "velocity"),
-           kinematic_polygon(mech, raw, i, label, "acceleration")]
-    if forces is None:
-        return out
-    multi = len(model.resistances) > 1
-    external = [(r.link, f"Fr{j + 1}" if multi else "Fr",
-                 complex(forces.resistance[f"R{j + 1}"][i] * np.exp(1j * r.direction)))
-                for j, r in enumerate(model.resistances)]
-    out += linkage_force_polygons(
-        mech, raw, i, label, model.bodies, model.gravity, external,
-        {name: complex(v[i]) for name, v in forces.reactions.items()},
-        {link: complex(v[i]) for link, v in forces.inertia_force.items()},
-        {link: float(v[i]) for link, v in forces.inertia_couple.items()},
-        float(k.sense * forces.balancing_torque[i]))
-    return out
-
-
-def default_positions(k) -> list[str]:
-    """Regular positions nearest the middle of the working and of the return stroke."""
-    regular = [(lab, ph) for lab, ph, sp in zip(k.positions.labels, k.positions.phase,
-                                                 k.positions.special) if not sp]
-    w = k.working_span
-    out = []
-    for target in (w / 2, (w + TWO_PI) / 2):
-        best = min(regular, key=lambda e: abs(e[1] - target))[0]
-        if best not in out:
-            out.append(best)
-    return out
-
-
 # ------------------------------------------------------------------ the sheet
 
-def analysis_sheet(model, k, raw, forces, flywheel, info: TitleInfo, lang: str,
-                   chosen: list[str] | None = None, labels: dict | None = None
+def analysis_sheet(found, info: TitleInfo, lang: str, labels: dict | None = None
                    ) -> tuple[Sheet, dict]:
-    """The A1 sheet of a linkage and the scales used ({"length": n (1:n), "velocity_4":
-    μv, …}). ``labels`` overrides texts of :data:`LABELS` (e.g. the output's name)."""
+    """The A1 sheet of a linkage (``found``: model, motion, forces, flywheel, polygons of the
+    run) and the scales used ({"length": n (1:n), "velocity_4": μv, …}). ``labels``
+    overrides texts of :data:`LABELS` (e.g. the output's name)."""
+    model, k, forces, flywheel = found.model, found.motion, found.forces, found.flywheel
     lab = {**LABELS[lang], **(labels or {})}
-    chosen = [str(c) for c in (chosen or default_positions(k))]
-    polys = {c: polygons(model, k, raw, forces, c) for c in chosen}
+    chosen = [str(c) for c in found.polygons.positions]
+    polys = {c: found.polygons.at(c) for c in chosen}
     s = Sheet("A1")
     x0, y0, x1, y1 = s.inner
     table_top = y0 + 8 + _table_height(k)
-    n_len = _mechanism(s, model, k, lab, (x0 + 8, table_top + 10.0, 300.0, y1 - 6), chosen)
+    n_len = _mechanism(s, model, k, lab, (x0 + 8, table_top + 10.0, 300.0, y1 - 6), chosen,
+                       lang)
     scales = {"length": n_len}
     info = TitleInfo(**{**info.__dict__, "scale": scale_text(n_len)})
     frame(s, info)
@@ -196,17 +159,21 @@ def _cell(s: Sheet, pg: Polygon, cell, title: str, lab: dict) -> float:
     mu = nice_scale(extent, 1.0)
     text = f"{sym} = {format_number(mu)} {unit}"
     s.text((cx0 + cx1) / 2 + 1j * (cy1 - 2.0 - head_h - 1.0), text, 2.5, "TEXT", "center", "top")
-    _draw_polygon(s, pg, mu, pbox)
+    # labels keep clear of the heading and scale above and the vector list below
+    _draw_polygon(s, pg, mu, pbox, [(cx0, pbox[3] + 2.0, cx1, cy1), (cx0, cy0, cx1, pbox[1] - 2.0)])
     return mu
 
 
-def _draw_polygon(s: Sheet, pg: Polygon, mu: float, box) -> None:
-    """The polygon centred in ``box`` at μ (units per paper mm), labels kept clear."""
+def _draw_polygon(s: Sheet, pg: Polygon, mu: float, box, keep_out=()) -> None:
+    """The polygon centred in ``box`` at μ (units per paper mm), labels kept clear of each
+    other, of the vectors and of the ``keep_out`` boxes."""
     pts = np.array(list(pg.points.values())) / mu
     bx0, by0, bx1, by1 = box
     centre = (pts.real.min() + pts.real.max()) / 2 + 1j * (pts.imag.min() + pts.imag.max()) / 2
     v = s.view((bx0 + bx1) / 2 + 1j * (by0 + by1) / 2 - centre, 1.0 / mu)
     placer = LabelPlacer(s)
+    for b in keep_out:
+        placer.block_box(b)
     for vec in pg.vectors:
         a, b = pg.points[vec.tail], pg.points[vec.head]
         if abs(b - a) / mu < 1e-6:
@@ -260,7 +227,70 @@ def _link_outline(zs: list) -> list:
     return sorted(zs, key=lambda z: np.angle(z - c)) + [sorted(zs, key=lambda z: np.angle(z - c))[0]]
 
 
-def _mechanism(s: Sheet, model, k, lab: dict, box, chosen: list[str]) -> float:
+def _block_dimension(placer: LabelPlacer, d: Dimension) -> None:
+    """Mark a dimension's line and text as obstacles for the labels."""
+    if abs(d.p1 - d.p0) < 1e-9:
+        return
+    u = (d.p1 - d.p0) / abs(d.p1 - d.p0)
+    shift = 1j * u * (d.offset if d.kind == "aligned" else 0.0)
+    placer.block_segment(d.p0 + shift, d.p1 + shift, 1.0)
+    text = d.text or ("R" if d.kind == "radius" else "") + format_number(d.measurement, 5)
+    mid = (d.p0 + d.p1) / 2 + shift + 1j * u * (1.0 + d.height / 2)
+    half = text_width(text, d.height) / 2 + 0.5
+    for t in np.linspace(-half, half, max(2, int(2 * half / 1.5) + 1)):
+        placer.block(mid + u * t, d.height / 2 + 0.3)
+
+
+def _name(model, link: str, lang: str) -> str | None:
+    names = getattr(model, "names", None) or {}
+    if link not in names:
+        return None
+    zh, en = names[link]
+    return zh if lang == "zh" else en
+
+
+def _fixed_guides(P: dict, sliders: list, mm: float) -> list:
+    """(slider link, point, guide point [mm], unit direction, t0, t1) of every slider on a
+    fixed guide: the centre line runs a quarter of the travel beyond each end."""
+    out = []
+    for slider, point, guide, gpoint in sliders:
+        if isinstance(guide, str):
+            continue
+        u = np.exp(1j * guide)
+        t = (np.conj(u) * (P[point] - gpoint * mm)).real
+        span = max(np.ptp(t), 1.0)
+        out.append((slider, point, gpoint * mm, u, t.min() - 0.25 * span, t.max() + 0.25 * span))
+    return out
+
+
+def _pivot_arcs(members: dict, mech, crank, grid: dict, joints: set) -> list:
+    """(pivot, radius, start, end) [mm, rad] of the arcs traced by the joints of the links
+    turning about a frame point (the crank's circle is drawn apart)."""
+    out = []
+    for link, names in members.items():
+        if link == crank.link:
+            continue
+        for pivot in (n for n in names if n in mech.frame_points):
+            o = grid[pivot][0]
+            for name in names:
+                if name == pivot or name not in joints or name not in grid:
+                    continue
+                d = grid[name] - o
+                radius = np.abs(d)
+                if radius.max() < 1e-9 or np.ptp(radius) > 1e-9 * radius.max():
+                    continue           # not at a fixed distance (a slider on the link)
+                base = np.mean(d / radius)
+                base = base / abs(base) if abs(base) > 1e-9 else 1.0
+                rel = np.angle(d / radius * np.conj(base))
+                lo, hi = float(rel.min()), float(rel.max())
+                if hi - lo > 2 * np.pi - 0.2:
+                    continue           # a full turn: a crank of its own
+                a0 = float(np.angle(base))
+                out.append((o, float(radius[0]), a0 + lo - 0.05, a0 + hi + 0.05))
+    return out
+
+
+def _mechanism(s: Sheet, model, k, lab: dict, box, chosen: list[str], lang: str) -> float:
     from ..machines.linkage import link_members
 
     mech = model.mechanism
@@ -269,40 +299,50 @@ def _mechanism(s: Sheet, model, k, lab: dict, box, chosen: list[str]) -> float:
     labels = list(k.positions.labels)
     mm = 1e3
     P = {name: np.asarray(z[n:]) * mm for name, z in k.points.items()}
+    grid = {name: np.asarray(z[:n]) * mm for name, z in k.points.items()}
     joints = _joint_points(mech) | set(mech.frame_points)
     coms = {b.com for b in model.bodies if b.com is not None} - joints
-    drawn = {name: z for name, z in P.items() if name not in coms}
+    # points that only carry a load (a cutting-force line) are not drawn
+    loads = {r.point for r in model.resistances} - joints - coms
+    drawn = {name: z for name, z in P.items() if name not in coms | loads}
     allpts = np.concatenate([z for z in drawn.values()])
-    guides = []                              # fixed guides: (point, angle, lo, hi) in mm
-    for slider, point, guide, gpoint in sliders:
-        if isinstance(guide, str):
-            continue
-        u = np.exp(1j * guide)
-        t = (np.conj(u) * (P[point] - gpoint * mm)).real
-        span = max(np.ptp(t), 1.0)
-        guides.append((gpoint * mm, u, t.min() - 0.25 * span, t.max() + 0.25 * span))
-        allpts = np.concatenate([allpts, [gpoint * mm + u * (t.min() - 0.25 * span),
-                                          gpoint * mm + u * (t.max() + 0.25 * span)]])
+    guides = _fixed_guides(P, sliders, mm)
+    for _, _, g0, u, t0, t1 in guides:
+        allpts = np.concatenate([allpts, [g0 + u * t0, g0 + u * t1]])
+    arcs = _pivot_arcs(members, mech, model.crank, grid, joints)
+    for o, r, a0, a1 in arcs:
+        allpts = np.concatenate([allpts, o + r * np.exp(1j * np.linspace(a0, a1, 9))])
     lo = complex(allpts.real.min(), allpts.imag.min())
     hi = complex(allpts.real.max(), allpts.imag.max())
     pad = 0.08 * max(hi.real - lo.real, hi.imag - lo.imag) + 20.0
     lo, hi = lo - pad * (1 + 1j), hi + pad * (1 + 1j)
     bx0, by0, bx1, by1 = box
-    avail = (bx1 - bx0) + 1j * (by1 - by0 - 16)
+    named = [(link, _name(model, link, lang)) for link in sorted(members.keys() | {
+        sl for sl, *_ in sliders}, key=lambda x: (len(x), x))]
+    legend = "  ".join(f"{link} {nm}" for link, nm in named if nm)
+    top_room = 16.0 + (7.0 if legend else 0.0)
+    avail = (bx1 - bx0) + 1j * (by1 - by0 - top_room)
     n_len = length_scale(hi - lo, avail)
     sc = 1.0 / n_len
     centre = (lo + hi) / 2
-    v = s.view((bx0 + bx1) / 2 + 1j * ((by0 + by1) / 2 - 6) - sc * centre, sc)
+    v = s.view((bx0 + bx1) / 2 + 1j * ((by0 + by1 - top_room + 16.0) / 2 - 6) - sc * centre, sc)
     title = f"{lab['mechanism']}  {scale_text(n_len)}  (μL = {format_number(n_len / 1000)} m/mm)"
     heading(s, (bx0 + bx1) / 2 + 1j * (by1 - 6), title, min(5.0, fit_height(title, bx1 - bx0, 5.0)))
+    placer = LabelPlacer(s)
+    if legend:
+        text = lab["links"] + legend
+        h = min(3.0, fit_height(text, bx1 - bx0, 3.0))
+        placer.text((bx0 + bx1) / 2 + 1j * (by1 - 14.0), text, h, "center", "middle")
     crank = model.crank
     v.circle(P[crank.pivot][0], crank.length * mm, "CENTER")
-    for g0, u, t0, t1 in guides:
+    for o, r, a0, a1 in arcs:
+        v.arc(o, r, a0, a1, "CENTER")
+    for _, _, g0, u, t0, t1 in guides:
         v.line(g0 + u * t0, g0 + u * t1, "CENTER")
+        placer.block_segment(v.p(g0 + u * t0), v.p(g0 + u * t1), 1.0)
     out = model.output
     order = [i for i in range(len(labels)) if labels[i] not in chosen] + \
             [labels.index(c) for c in chosen if c in labels]
-    placer = LabelPlacer(s)
     for i in order:
         bold = labels[i] in chosen
         layer, w = ("OUTLINE", None) if bold else ("CONSTRUCTION", 0.25)
@@ -319,31 +359,18 @@ def _mechanism(s: Sheet, model, k, lab: dict, box, chosen: list[str]) -> float:
                 ang = guide if not isinstance(guide, str) else float(k.link_angle[guide][n + i])
                 slider_block(v, P[point][i], ang, 10.0, 5.0)
                 placer.block(v.p(P[point][i]), 5.0)
-            for name in joints - set(mech.frame_points):
+            for name in sorted(joints - set(mech.frame_points)):
                 if name in P:
                     pin(v, P[name][i])
                     placer.block(v.p(P[name][i]), 1.5)
-            for name in coms:
+            for name in sorted(coms):
                 if name in P:
                     s.circle(v.p(P[name][i]), 0.8, "OUTLINE", 0.25)
-    for name, z in mech.frame_points.items():
-        ground(v, z * mm, 6.0)
-        placer.block(v.p(z * mm), 4.0)
-        placer.place(v.p(z * mm), name, 3.5, prefer=1 + 0.3j, gap=2.5)
     tip = P[crank.tip]
     piv = P[crank.pivot][0]
-    for i in range(len(labels)):
-        u = (tip[i] - piv) / abs(tip[i] - piv)
-        placer.place(v.p(tip[i]), labels[i], 3.5 if labels[i] in chosen else 2.5, prefer=u, gap=1.5)
-    if chosen and chosen[0] in labels:
-        i0 = labels.index(chosen[0])
-        mid = np.mean([P[nm][i0] for nm in drawn])
-        for name in sorted(joints - set(mech.frame_points)):
-            if name in P:
-                d = P[name][i0] - mid
-                placer.place(v.p(P[name][i0]), name, 3.5, prefer=d if abs(d) > 1e-9 else 1j,
-                             gap=2.0)
-    # Dimensions: the crank, the frame, the output's stroke.
+    n_before = len(s.entities)
+    # Dimensions: the crank, the frame, the output's stroke, each fixed guide's distance
+    # from the first frame point off it.
     v.dimension(piv, piv + crank.length * mm * np.exp(-0.75j * np.pi), 0.0, kind="radius",
                 measurement=crank.length * mm)
     frames = list(mech.frame_points.values())
@@ -355,6 +382,63 @@ def _mechanism(s: Sheet, model, k, lab: dict, box, chosen: list[str]) -> float:
         a, b = P[out.name][0], P[out.name][j]
         if abs(b - a) > 1e-9:
             v.dimension(a, b, -14.0, measurement=k.stroke * mm)
+    for _, _, g0, u, t0, t1 in guides:
+        # from the first frame point off the guide line to the line
+        off = [(f * mm, g0 + u * (np.conj(u) * (f * mm - g0)).real) for f in frames]
+        off = [(f, foot) for f, foot in off if abs(foot - f) >= 1e-6]
+        if off:
+            f0, foot = off[0]
+            dist = abs(foot - f0)
+            # beside the drawing, on the side of the guide's direction nearer to f0
+            proj = (np.conj(u) * (allpts - f0)).real
+            edge = min((proj.max(), 1.0), (proj.min(), -1.0), key=lambda e: abs(e[0]))
+            shift = edge[0] * sc + edge[1] * 6.0           # paper mm along u
+            side = (np.conj((foot - f0) / dist) * u).imag  # +1: u is to the left of f0 → foot
+            v.dimension(f0, foot, float(shift * np.sign(side)), measurement=dist)
+    for e in s.entities[n_before:]:          # labels keep clear of the dimensions
+        if isinstance(e, Dimension):
+            _block_dimension(placer, e)
+    for name, z in mech.frame_points.items():
+        ground(v, z * mm, 6.0)
+        placer.block(v.p(z * mm), 4.0)
+        placer.place(v.p(z * mm), name, 3.5, prefer=1 + 0.3j, gap=2.5)
+    for i in range(len(labels)):
+        u = (tip[i] - piv) / abs(tip[i] - piv)
+        bold = labels[i] in chosen            # clear of the slider block drawn there
+        placer.place(v.p(tip[i]), labels[i], 3.5 if bold else 2.5, prefer=u,
+                     gap=5.5 if bold and sliders else 1.5)
+    if chosen and chosen[0] in labels:
+        i0 = labels.index(chosen[0])
+        mid = np.mean([P[nm][i0] for nm in drawn])
+        for name in sorted(joints - set(mech.frame_points)):
+            if name in P:
+                d = P[name][i0] - mid
+                placer.place(v.p(P[name][i0]), name, 3.5, prefer=d if abs(d) > 1e-9 else 1j,
+                             gap=2.0)
+        # the link numbers at the first chosen position: beside each link (a third of the
+        # way from its frame pivot, if it has one), a slider's number beside its block
+        numbered = set()
+        for link, names in members.items():
+            outline = _link_outline([P[p][i0] for p in names if p in drawn])
+            if len(outline) < 2:
+                continue
+            a, b = outline[0], outline[1]
+            fixed = [P[p][i0] for p in names if p in mech.frame_points]
+            if fixed and abs(b - fixed[0]) < abs(a - fixed[0]):
+                a, b = b, a
+            d = (b - a) / abs(b - a) if abs(b - a) > 1e-9 else 1.0
+            at = a + (b - a) * (0.3 if fixed else 0.5)
+            placer.place(v.p(at), link, 3.5, prefer=1j * d, gap=1.5)
+            numbered.add(link)
+        for slider, point, guide, _ in sliders:
+            if slider not in numbered:
+                ang = guide if not isinstance(guide, str) else float(k.link_angle[guide][n + i0])
+                placer.place(v.p(P[point][i0]), slider, 3.5, prefer=1j * np.exp(1j * ang), gap=4.0)
+    for slider, point, g0, u, t0, t1 in guides:
+        nm = _name(model, slider, lang)
+        text = lab["guide"].format(n=nm) if nm else lab["guide_plain"]
+        end = g0 + u * t0
+        placer.place(v.p(end), text, 3.0, prefer=-u + 0.6j * u, gap=1.5)
     return n_len
 
 
@@ -389,6 +473,14 @@ def _table_height(k) -> float:
     return 9.0 + ROW_H * (len(k.positions.labels) + 1)
 
 
+def _cell_number(x: float, column, decimals: int | None = None) -> str:
+    """A table entry: 4 significant digits (or ``decimals``), round-off noise (below 1e-9
+    of the column's largest value) written as 0."""
+    if abs(x) <= 1e-9 * float(np.max(np.abs(column))):
+        return "0"
+    return f"{x:.{decimals}f}" if decimals is not None else f"{x:.4g}"
+
+
 def _table(s: Sheet, model, k, forces, lab: dict, box) -> None:
     n = k.grid_size
     bx0, by0, bx1, by1 = box
@@ -396,14 +488,13 @@ def _table(s: Sheet, model, k, forces, lab: dict, box) -> None:
     links = _moving_links(model, k)
     head = [lab["pos"], "φ (°)", f"s ({us})", f"v ({uv})", f"a ({ua})"] + \
         [f"ω{link} (rad/s)" for link in links] + (["Mb (N·m)"] if forces is not None else [])
+    columns = [k.v, k.a] + [k.link_omega[link] for link in links] + \
+        ([forces.balancing_torque] if forces is not None else [])
     rows = []
     for j, label in enumerate(k.positions.labels):
         i = n + j
-        row = [label, f"{k.phase[i] * DEG:.1f}", f"{k.s[i] * fs:.2f}", f"{k.v[i]:.4g}",
-               f"{k.a[i]:.4g}"] + [f"{k.link_omega[link][i]:.4g}" for link in links]
-        if forces is not None:
-            row.append(f"{forces.balancing_torque[i]:.4g}")
-        rows.append(row)
+        rows.append([label, f"{k.phase[i] * DEG:.1f}", _cell_number(k.s[i] * fs, k.s[:n] * fs, 2)]
+                    + [_cell_number(c[i], c[:n]) for c in columns])
     rh = ROW_H
     weights = np.array([0.8, 1.0] + [1.2] * (len(head) - 2))
     widths = weights / weights.sum() * (bx1 - bx0)
@@ -467,6 +558,7 @@ def _curves(s: Sheet, model, k, forces, fl, lab: dict, box) -> None:
     j_d = int(0.85 * len(ph))
     s.text(m.p(ph[j_r], w_r[j_r]) + 2.0j, "Wr", 3.0, "TEXT", "center", "bottom")
     s.text(m.p(ph[j_d], w_d[j_d]) + (1.0 - 2.0j), "Wd", 3.0, "TEXT", "left", "top")
+    s.text(m.p(ph[-1], e[0]) + (1.5 + 0j), "ΔE", 3.0, "TEXT", "left", "middle")
     x_at = 0.5 * (fl.phase_at_min + fl.phase_at_max) * DEG
     p_lo, p_hi = m.p(x_at, float(e.min())), m.p(x_at, float(e.max()))
     s.dimension(p_lo, p_hi, 0.0, fl.max_energy_swing,

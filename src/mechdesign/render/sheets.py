@@ -1,12 +1,11 @@
 """The drawing sheets of a run: which sheets a machine's results give, their title
 blocks, and the files (vector PDF, DXF, PNG preview for the report).
 
-Sheets: the linkage sheet (A1) when the results have the shaper's linkage analysis, the
-generic analysis sheet (A1) for any linkage run through the shared linkage stages
-(furnace pusher, die-cutter press, lock-beam feed, ``linkage`` briefs), the
-cam sheet (A2) when they have a synthesised cam, the gear meshing sheet when they have
-a gear pair. Files go to ``sheets/`` (``NAME.pdf`` with the pdf format, ``NAME.dxf``
-with dxf); the previews to the figures folder.
+Sheets: the analysis sheet (A1) for any linkage run through the shared linkage stages
+(the shaper, the slotter, the furnace pusher, the die-cutter press, the lock-beam feed,
+``linkage`` briefs), the cam sheet (A2) when they have a synthesised cam, the gear meshing
+sheet when they have a gear pair. Files go to ``sheets/`` (``NAME.pdf`` with the pdf
+format, ``NAME.dxf`` with dxf); the previews to the figures folder.
 """
 from __future__ import annotations
 
@@ -20,7 +19,6 @@ from .fmt import plain_line
 from .sheet import Sheet, TitleInfo
 
 TITLES = {
-    "linkage": {"zh": "导杆机构运动及动力分析图", "en": "Linkage: kinematic and force analysis"},
     "analysis": {"zh": "机构运动及动力分析图", "en": "Linkage: kinematic and force analysis"},
     "cam": {"zh": "凸轮机构设计图", "en": "Cam mechanism design"},
     "gear": {"zh": "齿轮啮合图", "en": "Gear meshing drawing"},
@@ -45,42 +43,46 @@ LINKAGE_KEYS = (("model", "linkage"), ("params", "linkage"), ("press_model", "pr
                 ("feed_model", "feed"))
 
 
-def linkage_results(results: dict):
-    """(model, motion, raw motion, forces, flywheel or None) of the shared linkage stages
-    in ``results``, or None."""
+@dataclass(frozen=True)
+class LinkageResults:
+    """What the analysis sheet reads from a run: the engine's model, motion, forces (or
+    None), flywheel (or None) and the polygons stage's polygons."""
+
+    model: object
+    motion: object
+    forces: object
+    flywheel: object
+    polygons: object
+
+
+def linkage_results(results: dict) -> LinkageResults | None:
+    """The shared linkage stages' results in ``results``, or None. The flywheel is the
+    engine's ``{prefix}_flywheel``, else the machine's own ``flywheel`` (the die-cutter sizes
+    it on a drive shaft after the press stages) when it is the one flywheel result."""
     from ..machines.linkage import LinkageModel
+    from ..stages.flywheel import Flywheel
 
     for model_key, prefix in LINKAGE_KEYS:
         model = results.get(model_key)
-        if isinstance(model, LinkageModel) and f"{prefix}_raw" in results:
-            return (model, results[prefix], results[f"{prefix}_raw"],
-                    results.get(f"{prefix}_forces"), results.get(f"{prefix}_flywheel"))
+        if isinstance(model, LinkageModel) and f"{prefix}_polygons" in results:
+            fly = results.get(f"{prefix}_flywheel")
+            if fly is None and isinstance(results.get("flywheel"), Flywheel):
+                fly = results["flywheel"]
+            return LinkageResults(model, results[prefix], results.get(f"{prefix}_forces"), fly,
+                                  results[f"{prefix}_polygons"])
     return None
 
 
 def _builders(results: dict, brief) -> list[tuple[str, Callable[[TitleInfo, str], Sheet]]]:
     out = []
-    if "motion" in results and "forces" in results:
-        settings = getattr(brief, "sheets", None)
-        chosen = None
-        if settings is not None and settings.polygon_positions is not None:
-            chosen = [str(p) for p in settings.polygon_positions]
+    found = linkage_results(results)
+    if found is not None:
+        def analysis(info, lang):
+            from .analysis_sheet import analysis_sheet
 
-        def linkage(info, lang):
-            from .linkage_sheet import linkage_sheet
+            return analysis_sheet(found, info, lang)[0]
 
-            return linkage_sheet(results, info, lang, chosen)[0]
-
-        out.append(("linkage", linkage))
-    else:
-        found = linkage_results(results)
-        if found is not None:
-            def analysis(info, lang):
-                from .analysis_sheet import analysis_sheet
-
-                return analysis_sheet(*found, info, lang)[0]
-
-            out.append(("analysis", analysis))
+        out.append(("analysis", analysis))
     cam = results.get("cam")
     if cam is not None and hasattr(cam, "grid"):
         def cam_builder(info, lang):

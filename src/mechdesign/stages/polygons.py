@@ -1,0 +1,102 @@
+"""The polygons stage (作图多边形) of every linkage: the velocity, acceleration and force
+polygons at the positions the A1 analysis sheet draws, computed once and stored with the
+results so that the sheet only reads them.
+
+The positions are the brief's ``sheets.polygon_positions`` when it has them, else the
+regular positions nearest the middle of the working and of the return stroke. The polygons
+come from the group types themselves (:mod:`mechdesign.core.polygons`), built from the
+computed motion and the kinetostatic reactions. Works on any model with the engine's
+attributes (``mechanism``, ``bodies``, ``resistances``, ``gravity``) and the engine's
+motion and forces results.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..core.polygons import Polygon, kinematic_polygon, linkage_force_polygons
+from ..pipeline import Stage
+
+TWO_PI = 2.0 * np.pi
+
+
+@dataclass(frozen=True)
+class LinkagePolygons:
+    """Stage 作图多边形: ``positions`` the position labels drawn (in order); ``polygons``
+    label → (velocity polygon, acceleration polygon, the force polygon of every group with
+    links, the crank first; no force polygons without a forces stage). Values in SI (m/s,
+    m/s², N, N·m) as complex x + iy, see :class:`mechdesign.core.polygons.Polygon`."""
+
+    positions: tuple
+    polygons: dict
+
+    def at(self, label: str) -> tuple:
+        return self.polygons[str(label)]
+
+
+def entry(k, label: str) -> int:
+    """Index of position ``label`` in the motion arrays (the grid comes first)."""
+    return k.grid_size + [str(x) for x in k.positions.labels].index(str(label))
+
+
+def default_positions(k) -> list[str]:
+    """Regular positions nearest the middle of the working and of the return stroke."""
+    regular = [(lab, ph) for lab, ph, sp in zip(k.positions.labels, k.positions.phase,
+                                                 k.positions.special) if not sp]
+    w = k.working_span
+    out = []
+    for target in (w / 2, (w + TWO_PI) / 2):
+        best = str(min(regular, key=lambda e: abs(e[1] - target))[0])
+        if best not in out:
+            out.append(best)
+    return out
+
+
+def chosen_positions(k, brief=None) -> list[str]:
+    """The brief's ``sheets.polygon_positions`` (validated with the brief) or the defaults."""
+    settings = getattr(brief, "sheets", None)
+    chosen = getattr(settings, "polygon_positions", None)
+    if chosen:
+        return [str(p) for p in chosen]
+    return default_positions(k)
+
+
+def polygons(model, k, raw, forces, label: str) -> tuple[Polygon, ...]:
+    """Velocity polygon, acceleration polygon and the force polygons (one per group with
+    links, the crank first) at position ``label``."""
+    i = entry(k, label)
+    label = str(label)
+    mech = model.mechanism
+    out = [kinematic_polygon(mech, raw, i, label, "velocity"),
+           kinematic_polygon(mech, raw, i, label, "acceleration")]
+    if forces is None:
+        return tuple(out)
+    multi = len(model.resistances) > 1
+    external = [(r.link, f"Fr{j + 1}" if multi else "Fr",
+                 complex(forces.resistance[f"R{j + 1}"][i] * np.exp(1j * r.direction)))
+                for j, r in enumerate(model.resistances)]
+    out += linkage_force_polygons(
+        mech, raw, i, label, model.bodies, model.gravity, external,
+        {name: complex(v[i]) for name, v in forces.reactions.items()},
+        {link: complex(v[i]) for link, v in forces.inertia_force.items()},
+        {link: float(v[i]) for link, v in forces.inertia_couple.items()},
+        float(k.sense * forces.balancing_torque[i]))
+    return tuple(out)
+
+
+def linkage_polygons(model, k, raw, forces, positions: list[str]) -> LinkagePolygons:
+    labels = tuple(str(p) for p in positions)
+    return LinkagePolygons(labels, {p: polygons(model, k, raw, forces, p) for p in labels})
+
+
+def polygon_stage(model_key: str = "model", prefix: str = "linkage") -> Stage:
+    """The stage that stores ``{prefix}_polygons`` from the engine's results under
+    ``model_key``, ``prefix``, ``{prefix}_raw`` and ``{prefix}_forces``."""
+
+    def run(r: dict) -> LinkagePolygons:
+        k = r[prefix]
+        return linkage_polygons(r[model_key], k, r[f"{prefix}_raw"], r.get(f"{prefix}_forces"),
+                                chosen_positions(k, r.get("brief")))
+
+    return Stage(f"{prefix}_polygons", "作图多边形 / polygons", run)
