@@ -60,28 +60,12 @@ RENDER_MAY_IMPORT = {
     ("mechdesign.machines.cam", "Division"): "result type (annotations)",
     ("mechdesign.machines.gear", "GearDrawing"): "result type (annotations)",
     ("mechdesign.core.polygons", "Polygon"): "result type (annotations)",
-    ("mechdesign.machines.linkage", "LinkageModel"): "model type (isinstance)",
+    ("mechdesign.stages.flywheel", "Flywheel"): "result type (isinstance)",
+    ("mechdesign.stages.linkage", "LinkageModel"): "model type (isinstance)",
     # Which points each link carries, read off the model's groups for the drawings (no
-    # physics). machines/linkage.py is being rewritten by the lead (issue 17 point 2: the
-    # group types own their members); the lead removes this entry then.
-    ("mechdesign.machines.linkage", "link_members"): "topology of the drawing, no physics",
+    # physics): each group type states its members (core.mechanism), this collects them.
+    ("mechdesign.stages.linkage", "link_members"): "topology of the drawing, no physics",
 }
-
-# Edges of the brief validators that run the engine: another helper is removing them right
-# now (issue 17 point 4, first half); the lead deletes this list after merging.
-EDGES_BEING_REMOVED: set = set()   # the brief validators no longer import machines
-
-# NOT a validator edge, and outside this change's files: brief/linkage.py's
-# ``linkage_to_model`` builds the SI model from the dataclasses defined in
-# machines/linkage.py (LinkageModel, Output, Resistance, FlywheelSpec), while
-# machines/linkage.py imports linkage_to_model. It goes away when those model types move
-# below both packages (e.g. a module outside ``machines``) — for the lead to decide with the
-# rewrite of machines/linkage.py; listed here so that every other cycle is caught meanwhile.
-EDGES_PENDING_LEAD = {
-    ("mechdesign.brief.linkage", "mechdesign.machines"),
-    ("mechdesign.brief.linkage", "mechdesign.machines.linkage"),
-}
-
 
 def _tool():
     spec = importlib.util.spec_from_file_location("import_graph", ROOT / "tools" / "import_graph.py")
@@ -99,7 +83,7 @@ def _absolute(module: str, node: ast.ImportFrom) -> str:
 
 def _render_imports():
     """(file, line, module imported from, name) of every import in the render package that
-    reaches core or machines; name None for a whole-module import."""
+    reaches core, stages or machines; name None for a whole-module import."""
     out = []
     for path in sorted(RENDER.glob("*.py")):
         module = "mechdesign.render." + path.stem
@@ -111,11 +95,13 @@ def _render_imports():
             elif isinstance(node, ast.ImportFrom):
                 base = _absolute(module, node)
                 for alias in node.names:
-                    if base in ("mechdesign", "mechdesign.core", "mechdesign.machines"):
+                    if base in ("mechdesign", "mechdesign.core", "mechdesign.machines",
+                                "mechdesign.stages"):
                         out.append((path.name, node.lineno, f"{base}.{alias.name}", None))
                     else:
                         out.append((path.name, node.lineno, base, alias.name))
-    return [x for x in out if x[2].startswith(("mechdesign.core", "mechdesign.machines"))]
+    return [x for x in out
+            if x[2].startswith(("mechdesign.core", "mechdesign.machines", "mechdesign.stages"))]
 
 
 def test_render_imports_nothing_that_computes():
@@ -151,18 +137,15 @@ def test_import_graph_has_no_cycles():
     tool = _tool()
     graph = tool.graph(SRC)
     assert "mechdesign.render.cam_sheet" in graph and len(graph) > 50
-    present = {(a, b) for a, bs in graph.items() for b in bs}
-    allowed = EDGES_BEING_REMOVED | EDGES_PENDING_LEAD
-    # the allow-lists name real edges (drop an entry once its edge is gone)
-    assert allowed & present, "no allowed edge is left: delete the allow-lists"
-    cycles = tool.cycles(tool.without(graph, allowed))
+    # brief → machines → brief would be the classic one: the brief layer imports no machine
+    assert not any(b.startswith("mechdesign.machines") for a, bs in graph.items()
+                   if a.startswith("mechdesign.brief") for b in bs)
+    cycles = tool.cycles(graph)
     assert cycles == [], "import cycles:\n" + "\n".join(", ".join(c) for c in cycles)
 
 
 def test_import_graph_command_line():
     args = [sys.executable, str(ROOT / "tools" / "import_graph.py")]
-    for a, b in sorted(EDGES_BEING_REMOVED | EDGES_PENDING_LEAD):
-        args += ["--allow", f"{a}->{b}"]
     run = subprocess.run(args, capture_output=True, text=True, timeout=120)
     assert run.returncode == 0, run.stdout + run.stderr
     assert " 0 cycle(s)" in run.stdout

@@ -2,7 +2,7 @@
 
 The ``linkage:`` section is what ``machine: linkage`` briefs carry, and what machine
 briefs embed for a mechanism they do not synthesise (the lock-beam bender's feed).
-:func:`linkage_to_model` converts it once to the SI :class:`~mechdesign.machines.linkage.LinkageModel`.
+:func:`linkage_to_model` converts it once to the SI :class:`~mechdesign.stages.linkage.LinkageModel`.
 
 Link directions (for ``point`` groups and the ``angle_deg`` of a point on a link): the
 crank points from its pivot to its tip; an RRR group's first link from its first end
@@ -291,7 +291,8 @@ def linkage_to_model(s: LinkageSection, analysis: AnalysisSettings, names: dict 
     """The SI linkage model (m, rad, rad/s, kg, N) of the section: the only conversion."""
     from ..core.kinetostatics import Body
     from ..core.mechanism import RPR, RRP, RRR, Crank, LinkPoint, Mechanism
-    from ..machines.linkage import FlywheelSpec, LinkageModel, Output, Resistance
+    from ..stages.flywheel import FlywheelSpec
+    from ..stages.linkage import LinkageModel, Output, Resistance
 
     mm, rad = 1e-3, np.radians
     frame = FRAME_LINK

@@ -1,5 +1,5 @@
 """Shaper (牛头刨床): crank + RPR dyad (guide bar) + RRP dyad (ram) — a model on the one
-linkage engine (:mod:`mechdesign.machines.linkage`) and the one flywheel stage.
+linkage engine (:mod:`mechdesign.stages.linkage`) and the one flywheel stage.
 
 Coordinates: O3 (guide-bar pivot) at the origin, O2 (crank pivot) at (0, L_O2O3) above
 it, the ram guide horizontal at y = L_O3M. Links: 2 crank O2A, 3 slider at A, 4 guide

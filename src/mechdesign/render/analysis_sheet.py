@@ -291,7 +291,7 @@ def _pivot_arcs(members: dict, mech, crank, grid: dict, joints: set) -> list:
 
 
 def _mechanism(s: Sheet, model, k, lab: dict, box, chosen: list[str], lang: str) -> float:
-    from ..machines.linkage import link_members
+    from ..stages.linkage import link_members
 
     mech = model.mechanism
     members, sliders = link_members(mech)

@@ -392,7 +392,7 @@ def shaper_gif(results: dict, path, lang: str, **kwargs) -> Path:
 
 def linkage_animation_args(model, k, title: str = "") -> dict:
     """Arguments of :func:`write_mechanism_gif` for any linkage of the shared stages (mm)."""
-    from ..machines.linkage import link_members
+    from ..stages.linkage import link_members
 
     n = k.grid_size
     members, sliders = link_members(model.mechanism)

@@ -44,7 +44,7 @@ def _labels(k):
 def make_linkage_figures(model, k, f_, fly, fig_dir: Path, lang: str,
                          prefix: str = "linkage") -> dict[str, str]:
     """Draw the linkage figures into ``fig_dir``; return name → relative path."""
-    from ..machines.linkage import link_members
+    from ..stages.linkage import link_members
 
     t = _TXT[lang]
     n = k.grid_size

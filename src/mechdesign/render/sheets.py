@@ -59,7 +59,7 @@ def linkage_results(results: dict) -> LinkageResults | None:
     """The shared linkage stages' results in ``results``, or None. The flywheel is the
     engine's ``{prefix}_flywheel``, else the machine's own ``flywheel`` (the die-cutter sizes
     it on a drive shaft after the press stages) when it is the one flywheel result."""
-    from ..machines.linkage import LinkageModel
+    from ..stages.linkage import LinkageModel
     from ..stages.flywheel import Flywheel
 
     for model_key, prefix in LINKAGE_KEYS:

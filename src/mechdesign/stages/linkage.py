@@ -1,0 +1,595 @@
+"""The one linkage engine: any planar linkage, crank plus Assur groups, analysed by the
+shared linkage stages.
+
+This is the engine every linkage machine composes (the furnace pusher's six-bar, the
+lock-beam bender's feed, the die-cutter's toggle press and the stand-alone ``linkage``
+brief). A :class:`LinkageModel` in SI units goes through four stages:
+
+- motion (机构运动分析): the whole revolution on a fine grid plus the textbook
+  positions, numbered from the output extreme that starts the working stroke; the
+  transmission angle of every RRR group and the pressure angle of every slider;
+- forces (动态静力分析): inertia forces and couples of the bodies, their weights and the
+  resistances; joint reactions group by group and the balancing torque M_b on the crank;
+- flywheel (飞轮设计), when the model asks for one;
+- verification (校核): closure of every group, finite differences of every point and
+  link, Σ power = 0, and the output's stroke and time ratio found by a bounded search
+  between grid points (independent of the grid and of any synthesis formula).
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from ..core.kinetostatics import Body, PointLoad, power_residual, solve_forces
+from ..core.mechanism import RPR, RRP, RRR, Crank, LinkPoint, Mechanism, Motion
+from ..core.fields import q
+from ..machines.findings import Finding
+from ..machines.positions import Positions, textbook_positions
+from ..pipeline import Stage
+from .flywheel import Flywheel, FlywheelSpec, design_flywheel
+from .polygons import polygon_stage
+
+TWO_PI = 2.0 * np.pi
+
+
+@dataclass(frozen=True)
+class Output:
+    """The output whose motion defines the strokes: a point measured along ``direction``
+    [rad] (``kind`` "point") or a link's angle (``kind`` "link"). ``working`` = +1 when the
+    working stroke is the one in which the coordinate grows, −1 when it falls."""
+
+    kind: str
+    name: str
+    direction: float = 0.0
+    working: int = 1
+
+
+@dataclass(frozen=True)
+class Resistance:
+    """A force on ``link`` at ``point`` along the line of angle ``direction`` [rad],
+    opposing the point's motion along it: ``working`` [N] in the working stroke,
+    ``returning`` [N] in the return stroke. With ``active`` = (from, to) the working
+    force acts only while the output's displacement from position 1 lies in that
+    window [m or rad] (a cutting or pressing zone)."""
+
+    link: str
+    point: str
+    direction: float
+    working: float
+    returning: float = 0.0
+    active: tuple[float, float] | None = None
+
+
+@dataclass(frozen=True)
+class LinkageModel:
+    """Everything the linkage stages need, SI units. ``crank_omega`` is signed, CCW +."""
+
+    mechanism: Mechanism
+    crank_omega: float
+    output: Output
+    bodies: tuple[Body, ...] = ()
+    resistances: tuple[Resistance, ...] = ()
+    grid_points: int = 3600
+    position_step: float = np.pi / 6
+    gravity: float = 9.81
+    flywheel: FlywheelSpec | None = None
+    special_crank_angles: tuple = ()            # crank angles [rad, CCW from +x] added to
+    #                                             the textbook positions (primed labels)
+    pressure_angle_limit: float | None = None   # [rad], checked over the working stroke
+    transmission_angle_min: float | None = None  # [rad], checked over the whole cycle
+    names: dict = field(default_factory=dict)    # link id → (name_zh, name_en), optional
+    advice: dict = field(default_factory=dict)   # "pressure"/"transmission" → (zh, en): the
+    #                                              brief fields to change, added to the finding
+
+    @property
+    def crank(self) -> Crank:
+        return self.mechanism.groups[0]
+
+
+@dataclass(frozen=True)
+class QualityAngle:
+    """Transmission angle γ of an RRR group (at its middle joint) or pressure angle α of
+    an RRP slider (between the rod and the guide), over the grid and the positions."""
+
+    group: str = q("")
+    kind: str = q("", "'transmission' | 'pressure'")
+    point: str = q("", "the joint where it is measured")
+    values: np.ndarray = q("rad", "one per entry of the phase array")
+    extreme: float = q("rad", "γ_min or α_max over the cycle")
+    extreme_phase: float = q("rad")
+    working_extreme: float = q("rad", "the same over the working stroke only")
+    working_extreme_phase: float = q("rad")
+
+
+@dataclass(frozen=True)
+class LinkageMotion:
+    """Stage 机构运动分析. Arrays: the grid (``grid_size`` entries) then the positions.
+
+    ``phase`` is the crank angle from position 1 in the sense of rotation [rad]; the output
+    displacement ``s`` [m or rad] is measured from position 1 along the working direction.
+    """
+
+    positions: Positions = q("")
+    phase: np.ndarray = q("rad", "crank angle from position 1 in the sense of rotation")
+    crank_angle: np.ndarray = q("rad", "crank angle, CCW from +x")
+    s: np.ndarray = q("m or rad", "output displacement from position 1 along the working direction")
+    v: np.ndarray = q("m/s or rad/s", "output velocity")
+    a: np.ndarray = q("m/s² or rad/s²", "output acceleration")
+    output_unit: str = q("", "'m' | 'rad'")
+    stroke: float = q("m or rad", "stroke (or swing) of the output")
+    working_span: float = q("rad", "crank angle of the working stroke")
+    time_ratio: float = q("1", "K = working span / return span")
+    start_angle: float = q("rad", "crank angle of position 1")
+    sense: float = q("1", "+1 CCW, −1 CW")
+    points: dict = q("m", "name → complex positions")
+    link_angle: dict = q("rad", "link → angle")
+    link_omega: dict = q("rad/s", "link → ω  (CCW +)")
+    link_alpha: dict = q("rad/s²", "link → α")
+    quality: tuple[QualityAngle, ...] = q("")
+    grid_size: int = q("1", "entries of the uniform grid before the positions")
+
+
+@dataclass(frozen=True)
+class LinkageForces:
+    """Stage 动态静力分析 (arrays as in :class:`LinkageMotion`)."""
+
+    resistance: dict = q("N", "'R{i}' → signed force along its line")
+    reactions: dict = q("N", "R{a}{b} → complex force of link a on b")
+    couples: dict = q("N·m", "prismatic-pair couples")
+    inertia_force: dict = q("N", "link → complex −m·a_S")
+    inertia_couple: dict = q("N·m", "link → −J_S·α")
+    balancing_torque: np.ndarray = q("N·m", "M_b on the crank, in its sense of rotation")
+    power_residual: np.ndarray = q("W", "Σ power of every load incl. M_b")
+    mean_torque: float = q("N·m", "mean M_b over a revolution")
+    mean_power: float = q("W", "mean power delivered to the crank")
+    peak_torque: float = q("N·m", "max |M_b|")
+
+
+LinkageFlywheel = Flywheel   # the one flywheel result (mechdesign.stages.flywheel)
+
+
+@dataclass(frozen=True)
+class LinkageVerification:
+    """Stage 校核: self-checks of the linkage run."""
+
+    closure_residual: float = q("m", "max constraint violation")
+    velocity_fd_error: float = q("1", "max |v − Δx/Δt| / max |v| over every moving point and link")
+    acceleration_fd_error: float = q("1", "the same for accelerations")
+    power_balance_residual: float = q("1", "max |Σ P| / max |M_b ω| (0 when there is no load)")
+    stroke: float = q("m or rad", "stroke by a bounded position search")
+    time_ratio: float = q("1", "K from the searched extremes")
+    fd_step: float = q("rad")
+    warnings: tuple[Finding, ...] = q("", "quality-angle findings", default=())
+
+
+# ---------------------------------------------------------------- motion
+
+def _output_coordinate(model: LinkageModel, m: Motion, reference: float | None = None):
+    """Raw output coordinate: a point's position along the direction, or a link angle
+    relative to ``reference`` (wrapped into ±π so an oscillating link is continuous)."""
+    out = model.output
+    if out.kind == "point":
+        u = np.exp(1j * out.direction)
+        p = m.points[out.name]
+        return ((np.conj(u) * p.pos).real, (np.conj(u) * p.vel).real, (np.conj(u) * p.acc).real)
+    link = m.links[out.name]
+    ref = link.angle[0] if reference is None else reference
+    return np.angle(np.exp(1j * (link.angle - ref))), link.omega, link.alpha
+
+
+def _extremes_by_position(model: LinkageModel, angles: np.ndarray, s: np.ndarray, ref):
+    """Crank angles and values of the output's minimum and maximum, each refined by a
+    bounded scalar search on the position between the neighbouring grid points."""
+    from scipy.optimize import minimize_scalar
+
+    h = angles[1] - angles[0]
+
+    def s_at(angle: float) -> float:
+        return float(_output_coordinate(model, model.mechanism.solve(np.array([angle])), ref)[0][0])
+
+    found = []
+    for i, sign in ((int(np.argmin(s)), 1.0), (int(np.argmax(s)), -1.0)):
+        r = minimize_scalar(lambda x: sign * s_at(x), bounds=(angles[i] - h, angles[i] + h),
+                            method="bounded", options={"xatol": 1e-12})
+        found.append((float(r.x) % TWO_PI, s_at(float(r.x))))
+    return found
+
+
+def _extremes_by_velocity(model: LinkageModel, angles: np.ndarray, v: np.ndarray, ref):
+    """The same from the crank angles where the output's analytic velocity is zero
+    (Brent's method between grid points where it changes sign; precise to ~1e-14 rad)."""
+    from scipy.optimize import brentq
+
+    h = angles[1] - angles[0]
+
+    def at(angle: float):
+        s, vel, _ = _output_coordinate(model, model.mechanism.solve(np.array([angle])), ref)
+        return float(s[0]), float(vel[0])
+
+    roots = []
+    for i in np.flatnonzero(np.sign(v) != np.sign(np.roll(v, -1))):
+        a, b = angles[i], angles[i] + h
+        va, vb = at(a)[1], at(b)[1]
+        if va == 0.0:
+            roots.append(a)
+        elif va * vb < 0:
+            roots.append(brentq(lambda x: at(x)[1], a, b, xtol=1e-15, rtol=4 * np.finfo(float).eps))
+        elif min(abs(va), abs(vb)) <= 1e-9 * np.max(np.abs(v)):
+            # The zero sits on a grid point: round-off gave both ends the same sign.
+            roots.append(a if abs(va) <= abs(vb) else b)
+    if len(roots) < 2:
+        raise ValueError("the output does not reciprocate: its velocity never changes sign")
+    values = [at(x)[0] for x in roots]
+    lo, hi = int(np.argmin(values)), int(np.argmax(values))
+    return [(roots[lo] % TWO_PI, values[lo]), (roots[hi] % TWO_PI, values[hi])]
+
+
+def _strokes(model: LinkageModel, by_velocity: bool = True):
+    """(start angle, end angle, s_start, s_end, reference) of the working stroke: by the
+    velocity's zeros (motion stage) or by a position search (verification)."""
+    n = model.grid_points
+    angles = np.arange(n) * (TWO_PI / n)
+    m = model.mechanism.solve(angles)
+    ref = m.links[model.output.name].angle[0] if model.output.kind == "link" else None
+    s, v, _ = _output_coordinate(model, m, ref)
+    if by_velocity:
+        found = _extremes_by_velocity(model, angles, v, ref)
+    else:
+        found = _extremes_by_position(model, angles, s, ref)
+    (a_min, s_min), (a_max, s_max) = found
+    if model.output.working > 0:
+        return a_min, a_max, s_min, s_max, ref
+    return a_max, a_min, s_max, s_min, ref
+
+
+def _quality(model: LinkageModel, m: Motion, phase: np.ndarray, working_span: float, n: int):
+    """Each group's own quality angle (:meth:`quality` of the group types): the
+    transmission angle's minimum, the pressure angle's maximum."""
+    out = []
+    working = phase[:n] <= working_span + 1e-12
+    for g in model.mechanism.groups:
+        found = g.quality(m)
+        if found is None:
+            continue
+        kind, point, values = found
+        pick = np.argmin if kind == "transmission" else np.argmax
+        grid = values[:n]
+        i = int(pick(grid))
+        wi = np.flatnonzero(working)[int(pick(grid[working]))]
+        out.append(QualityAngle(g.name, kind, point, values, float(grid[i]), float(phase[i]),
+                                float(grid[wi]), float(phase[wi])))
+    return tuple(out)
+
+
+def motion(model: LinkageModel) -> tuple[LinkageMotion, Motion]:
+    """Solve the revolution; position 1 is the output extreme that starts the working stroke."""
+    start, end, s0, s1, ref = _strokes(model)
+    sense = float(np.sign(model.crank_omega))
+    span = (sense * (end - start)) % TWO_PI
+    specials = [(sense * (a - start)) % TWO_PI for a in model.special_crank_angles]
+    pos = textbook_positions(model.position_step, span, specials)
+    n = model.grid_points
+    grid = np.arange(n) * (TWO_PI / n)
+    phase = np.concatenate([grid, pos.phase])
+    crank_angle = start + sense * phase
+    m = model.mechanism.solve(crank_angle)
+    raw, v, a = _output_coordinate(model, m, ref)
+    w = float(model.output.working)
+    k = LinkageMotion(
+        positions=pos, phase=phase, crank_angle=crank_angle,
+        s=w * (raw - s0), v=w * v, a=w * a,
+        output_unit="m" if model.output.kind == "point" else "rad",
+        stroke=abs(s1 - s0), working_span=float(span), time_ratio=float(span / (TWO_PI - span)),
+        start_angle=float(start), sense=sense,
+        points={name: p.pos for name, p in m.points.items()},
+        link_angle={k_: v_.angle for k_, v_ in m.links.items()},
+        link_omega={k_: v_.omega for k_, v_ in m.links.items()},
+        link_alpha={k_: v_.alpha for k_, v_ in m.links.items()},
+        quality=_quality(model, m, phase, span, n), grid_size=n)
+    return k, m
+
+
+# ---------------------------------------------------------------- forces
+
+def resistance_loads(model: LinkageModel, k: LinkageMotion, m: Motion) -> list[PointLoad]:
+    """The resistances as point loads over the phase array (zero where the point is at rest
+    along the line)."""
+    loads = []
+    working = k.phase <= k.working_span + 1e-12
+    for r in model.resistances:
+        u = np.exp(1j * r.direction)
+        along = (np.conj(u) * m.points[r.point].vel).real
+        # At rest the force opposes the motion of the stroke it belongs to (one-sided
+        # limit): the motion about to start (the acceleration's sign) — except at the end
+        # of the working stroke, where it is the working motion just ending (the opposite).
+        ahead = (np.conj(u) * m.points[r.point].acc).real
+        ending = np.abs(k.phase - k.working_span) <= 1e-12
+        ahead = np.where(ending, -ahead, ahead)
+        scale = np.max(np.abs(along[:k.grid_size])) or 1.0
+        moving = np.where(np.abs(along) > 1e-12 * scale, np.sign(along), np.sign(ahead))
+        magnitude = np.where(working, r.working, r.returning)
+        if r.active is not None:
+            lo, hi = r.active
+            tol = 1e-9 * max(k.stroke, 1e-12)
+            inside = (k.s >= lo - tol) & (k.s <= hi + tol)
+            magnitude = np.where(working & ~inside, 0.0, magnitude)
+        loads.append(PointLoad(r.link, r.point, -moving * magnitude * u))
+    return loads
+
+
+def forces(model: LinkageModel, k: LinkageMotion, m: Motion) -> LinkageForces:
+    loads = resistance_loads(model, k, m)
+    bodies = list(model.bodies)
+    fa = solve_forces(model.mechanism, m, bodies, loads, model.gravity)
+    mb = k.sense * fa.driving_torque
+    residual = power_residual(model.mechanism, m, bodies, loads, fa.driving_torque, model.gravity)
+    n = k.grid_size
+    mean = float(np.mean(mb[:n]))
+    return LinkageForces(
+        resistance={f"R{i + 1}": (np.conj(np.exp(1j * r.direction)) * ld.force).real
+                    for i, (r, ld) in enumerate(zip(model.resistances, loads))},
+        reactions={name: r.force for name, r in fa.reactions.items()},
+        couples={name: r.couple for name, r in fa.reactions.items() if r.couple is not None},
+        inertia_force=fa.inertia_force, inertia_couple=fa.inertia_couple,
+        balancing_torque=mb, power_residual=residual, mean_torque=mean,
+        mean_power=mean * abs(model.crank_omega), peak_torque=float(np.max(np.abs(mb[:n]))))
+
+
+def flywheel(model: LinkageModel, k: LinkageMotion, f: LinkageForces) -> Flywheel | None:
+    """The one flywheel stage on M_b over the grid, when the model asks for a flywheel."""
+    if model.flywheel is None:
+        return None
+    n = k.grid_size
+    return design_flywheel(model.flywheel, k.phase[:n], f.balancing_torque[:n],
+                           model.crank_omega, model.gravity)
+
+
+# ---------------------------------------------------------------- verification
+
+def closure_residual(mech: Mechanism, m: Motion, n: int | None = None) -> float:
+    """Largest violation of any group's constraints [m] (lengths, points on guides), each
+    group's own closure equations (:meth:`residual` of the group types)."""
+    P = {name: p.pos[:n] for name, p in m.points.items()}
+    res = [0.0]
+    for g in mech.groups:
+        res.extend(float(np.max(np.abs(x))) for x in g.residual(P, m, n))
+    return max(res)
+
+
+def _fd_errors(m: Motion, n: int, omega: float) -> tuple[float, float]:
+    """Central differences on the periodic grid against the analytic velocities and
+    accelerations of every moving point and link (relative to each one's maximum)."""
+    dt = (TWO_PI / n) / abs(omega)
+    vel_err, acc_err = 0.0, 0.0
+
+    def rel(x, ref):
+        scale = np.max(np.abs(ref))
+        return 0.0 if scale < 1e-12 else float(np.max(np.abs(x)) / scale)
+
+    for p in m.points.values():
+        pos, vel, acc = p.pos[:n], p.vel[:n], p.acc[:n]
+        if np.max(np.abs(vel)) < 1e-12:
+            continue
+        vel_err = max(vel_err, rel(vel - (np.roll(pos, -1) - np.roll(pos, 1)) / (2 * dt), vel))
+        acc_err = max(acc_err, rel(acc - (np.roll(vel, -1) - np.roll(vel, 1)) / (2 * dt), acc))
+    for link in m.links.values():
+        th, w, al = link.angle[:n], link.omega[:n], link.alpha[:n]
+        if np.max(np.abs(w)) < 1e-12:
+            continue
+        dth = np.angle(np.exp(1j * (np.roll(th, -1) - np.roll(th, 1))))
+        vel_err = max(vel_err, rel(w - dth / (2 * dt), w))
+        acc_err = max(acc_err, rel(al - (np.roll(w, -1) - np.roll(w, 1)) / (2 * dt), al))
+    return vel_err, acc_err
+
+
+def verify(model: LinkageModel, k: LinkageMotion, m: Motion, f: LinkageForces | None
+           ) -> LinkageVerification:
+    n = k.grid_size
+    vel_err, acc_err = _fd_errors(m, n, model.crank_omega)
+    power = 0.0
+    if f is not None:
+        scale = np.max(np.abs(f.balancing_torque[:n] * model.crank_omega))
+        power = float(np.max(np.abs(f.power_residual[:n])) / scale) if scale > 0 else 0.0
+    start, end, s0, s1, _ = _strokes(model, by_velocity=False)
+    span = (k.sense * (end - start)) % TWO_PI
+    stroke, ratio = abs(s1 - s0), float(span / (TWO_PI - span))
+    return LinkageVerification(
+        closure_residual=closure_residual(model.mechanism, m, n),
+        velocity_fd_error=vel_err, acceleration_fd_error=acc_err,
+        power_balance_residual=power, stroke=stroke, time_ratio=ratio, fd_step=TWO_PI / n,
+        warnings=tuple(quality_findings(model, k)))
+
+
+def _four_bar_of(model: LinkageModel, group_name: str):
+    """(a, b, c, d) [m] when the RRR group ``group_name`` closes a four-bar with the crank
+    (one end on the crank pin, the other on the frame), else None."""
+    mech = model.mechanism
+    crank = mech.groups[0] if mech.groups and isinstance(mech.groups[0], Crank) else None
+    for g in mech.groups:
+        if crank is None or not isinstance(g, RRR) or g.name != group_name:
+            continue
+        for tip, fixed, b, c in ((g.b, g.d, g.l1, g.l2), (g.d, g.b, g.l2, g.l1)):
+            if tip == crank.tip and fixed in mech.frame_points:
+                d = abs(mech.frame_points[fixed] - mech.frame_points[crank.pivot])
+                return crank.length, b, c, d
+    return None
+
+
+def quality_findings(model: LinkageModel, k: LinkageMotion) -> list[Finding]:
+    """Pressure angle over the working stroke and transmission angle over the cycle
+    against the model's limits, each saying what to change (``model.advice`` adds the
+    brief's fields)."""
+    found = []
+    deg = 180.0 / np.pi
+
+    def extra(kind):
+        zh, en = model.advice.get(kind, ("", ""))
+        return (f"（{zh}）" if zh else ""), (f" ({en})" if en else "")
+
+    for q in k.quality:
+        if q.kind == "pressure" and model.pressure_angle_limit is not None \
+                and q.working_extreme > model.pressure_angle_limit + 1e-9:
+            zh, en = extra("pressure")
+            found.append(Finding(
+                "pressure_angle",
+                f"{q.group}：工作行程最大压力角 {q.working_extreme * deg:.2f}° 超过许用值 "
+                f"{model.pressure_angle_limit * deg:.1f}°；应加长连杆或调整导路位置{zh}",
+                f"{q.group}: the largest pressure angle in the working stroke, "
+                f"{q.working_extreme * deg:.2f}°, exceeds the allowed "
+                f"{model.pressure_angle_limit * deg:.1f}°; lengthen the rod or move the guide{en}"))
+        if q.kind == "transmission" and model.transmission_angle_min is not None \
+                and q.extreme < model.transmission_angle_min - 1e-9:
+            zh, en = extra("transmission")
+            fix_zh, fix_en = "应调整杆长", "change the link lengths"
+            four = _four_bar_of(model, q.group)
+            if four is not None:
+                # γ at the two crank–frame collinear positions is balanced (γmin largest for
+                # these a, d) when b² + c² = a² + d²; a shorter crank raises both.
+                a, b, c, d = (x * 1e3 for x in four)
+                fix_zh = (f"应缩短曲柄（a = {a:.6g} mm），并使 b² + c² 接近 a² + d²"
+                          f"（现为 {b * b + c * c:.6g} 与 {a * a + d * d:.6g} mm²，相等时两个极限位置的"
+                          "传动角相同）")
+                fix_en = (f"shorten the crank (a = {a:.6g} mm) and bring b² + c² close to a² + d² "
+                          f"(now {b * b + c * c:.6g} and {a * a + d * d:.6g} mm²; when equal, the "
+                          "transmission angles at the two crank–frame collinear positions are the same)")
+            found.append(Finding(
+                "transmission_angle",
+                f"{q.group}：最小传动角 {q.extreme * deg:.2f}° 小于许用值 "
+                f"{model.transmission_angle_min * deg:.1f}°；{fix_zh}{zh}",
+                f"{q.group}: the minimum transmission angle {q.extreme * deg:.2f}° is below "
+                f"the allowed {model.transmission_angle_min * deg:.1f}°; {fix_en}{en}"))
+    return found
+
+
+# ---------------------------------------------------------------- stages and results
+
+def linkage_stages(model_key: str = "model", prefix: str = "linkage") -> list[Stage]:
+    """The stages on the model found at ``results[model_key]``; results are stored as
+    ``{prefix}``, ``{prefix}_raw``, ``{prefix}_forces``, ``{prefix}_flywheel``,
+    ``{prefix}_verification`` and ``{prefix}_polygons`` (the analysis sheet's polygons)."""
+    return [
+        Stage((prefix, f"{prefix}_raw"), "机构运动分析 / kinematics",
+              lambda r: motion(r[model_key])),
+        Stage(f"{prefix}_forces", "动态静力分析 / kinetostatics",
+              lambda r: forces(r[model_key], r[prefix], r[f"{prefix}_raw"])),
+        Stage(f"{prefix}_flywheel", "飞轮设计 / flywheel",
+              lambda r: flywheel(r[model_key], r[prefix], r[f"{prefix}_forces"])),
+        Stage(f"{prefix}_verification", "校核 / verification",
+              lambda r: verify(r[model_key], r[prefix], r[f"{prefix}_raw"],
+                               r[f"{prefix}_forces"])),
+        polygon_stage(model_key, prefix),
+    ]
+
+
+@dataclass(frozen=True)
+class OutputDoc:
+    """The output whose motion defines the strokes."""
+
+    kind: str = q("", "'point' (a point along a direction) or 'link' (a link's angle)")
+    name: str = q("", "the point's or the link's name")
+    unit: str = q("", "'m' or 'rad': the unit of s, v, a and the stroke")
+    stroke: float = q("m or rad", "stroke (or swing) of the output")
+
+
+@dataclass(frozen=True)
+class QualityDoc:
+    group: str = q("", "the Assur group")
+    kind: str = q("", "'transmission' (γ of an RRR group) or 'pressure' (α of a slider)")
+    point: str = q("", "the joint where it is measured")
+    extreme: float = q("rad", "γ_min or α_max over the cycle")
+    extreme_phase: float = q("rad", "crank phase where it occurs")
+    working_extreme: float = q("rad", "the same over the working stroke only")
+
+
+@dataclass(frozen=True)
+class LinkagePosition:
+    """One textbook position (机构位置)."""
+
+    label: str = q("", "1, 2, …; primed labels are special positions (the other extreme, 4′ …)")
+    phase: float = q("rad", "crank angle from position 1 in the sense of rotation")
+    crank_angle: float = q("rad", "crank angle, CCW from +x")
+    s: float = q("m or rad", "output displacement from position 1 along the working direction")
+    v: float = q("m/s or rad/s", "output velocity")
+    a: float = q("m/s² or rad/s²", "output acceleration")
+    points: dict[str, complex] = q("m", "every named point, [x, y]")
+    link_omega: dict[str, float] = q("rad/s", "angular velocity of every link (CCW +)")
+    link_alpha: dict[str, float] = q("rad/s²", "angular acceleration of every link")
+    quality: dict[str, float] = q("rad", "transmission/pressure angle of each group")
+    reactions: dict[str, complex] = q("N", "R{a}{b}: force of link a on link b, [x, y]")
+    balancing_torque: float = q("N·m", "M_b on the crank, in its sense of rotation")
+
+
+@dataclass(frozen=True)
+class LinkageGrid:
+    """Arrays over one revolution on the uniform grid (phase from 0)."""
+
+    phase: np.ndarray = q("rad", "crank phase from position 1")
+    s: np.ndarray = q("m or rad", "output displacement")
+    v: np.ndarray = q("m/s or rad/s", "output velocity")
+    a: np.ndarray = q("m/s² or rad/s²", "output acceleration")
+    balancing_torque: np.ndarray = q("N·m", "M_b")
+
+
+@dataclass(frozen=True)
+class LinkageDocument:
+    """The linkage engine's results: motion at the positions and over the grid, quality
+    angles, kinetostatics, flywheel and self-checks."""
+
+    crank_omega: float = q("rad/s", "crank angular velocity, CCW +")
+    output: OutputDoc = q("", "the output")
+    working_stroke_crank_angle: float = q("rad", "crank rotation of the working stroke")
+    time_ratio: float = q("1", "K = working span / return span (from the velocity zeros)")
+    start_crank_angle: float = q("rad", "crank angle of position 1")
+    quality: tuple[QualityDoc, ...] = q("", "transmission and pressure angles")
+    positions: tuple[LinkagePosition, ...] = q("", "the textbook positions in crank order")
+    grid: LinkageGrid = q("", "one revolution")
+    mean_torque: float = q("N·m", "mean M_b")
+    mean_power: float = q("W", "mean power delivered to the crank")
+    peak_torque: float = q("N·m", "max |M_b|")
+    flywheel: Flywheel | None = q("", "the flywheel (the one flywheel stage), if any")
+    verification: LinkageVerification = q("", "self-checks")
+
+
+def linkage_document(model: LinkageModel, k: LinkageMotion, f: LinkageForces,
+                     fly: Flywheel | None, v: LinkageVerification) -> LinkageDocument:
+    """The linkage part of results.json (SI)."""
+    n = k.grid_size
+    per_position = []
+    for i, label in enumerate(k.positions.labels):
+        j = n + i
+        per_position.append(LinkagePosition(
+            label=label, phase=k.phase[j], crank_angle=k.crank_angle[j] % TWO_PI,
+            s=k.s[j], v=k.v[j], a=k.a[j],
+            points={p: z[j] for p, z in k.points.items()},
+            link_omega={l_: w[j] for l_, w in k.link_omega.items()},
+            link_alpha={l_: a[j] for l_, a in k.link_alpha.items()},
+            quality={q_.group: q_.values[j] for q_ in k.quality},
+            reactions={name: r[j] for name, r in f.reactions.items()},
+            balancing_torque=f.balancing_torque[j]))
+    return LinkageDocument(
+        crank_omega=model.crank_omega,
+        output=OutputDoc(model.output.kind, model.output.name, k.output_unit, k.stroke),
+        working_stroke_crank_angle=k.working_span, time_ratio=k.time_ratio,
+        start_crank_angle=k.start_angle,
+        quality=tuple(QualityDoc(q_.group, q_.kind, q_.point, q_.extreme, q_.extreme_phase,
+                                 q_.working_extreme) for q_ in k.quality),
+        positions=tuple(per_position),
+        grid=LinkageGrid(k.phase[:n], k.s[:n], k.v[:n], k.a[:n], f.balancing_torque[:n]),
+        mean_torque=f.mean_torque, mean_power=f.mean_power, peak_torque=f.peak_torque,
+        flywheel=fly, verification=v)
+
+
+def link_members(mech: Mechanism) -> tuple[dict, list]:
+    """For drawings: the points each moving link carries, and the sliders as
+    (slider link, point, guide: link id or fixed angle [rad], guide point or None), from
+    each group's :meth:`members`."""
+    members: dict[str, list[str]] = {}
+    sliders = []
+    for g in mech.groups:
+        carried, slides = g.members()
+        for link, pts in carried:
+            lst = members.setdefault(link, [])
+            lst.extend(p for p in pts if p not in lst)
+        sliders.extend(slides)
+    return members, sliders
