@@ -92,7 +92,8 @@ _ENTRIES: dict[str, Entry | str] = {
     "crank_rocker": Entry(
         "crank_rocker", _B + "crank_rocker:CrankRockerBrief",
         _B + "crank_rocker:crank_rocker_to_si", _M + "crank_rocker:stages",
-        _M + "crank_rocker:results_document", _R + "crank_rocker_report", "crank_rocker.yaml", (
+        _M + "crank_rocker:results_document", _R + "crank_rocker_report", "crank_rocker.yaml",
+        results=_M + "crank_rocker:CrankRockerResults", summary=(
             ("曲柄", "crank", "mm", "optimum.crank", _MM),
             ("连杆", "coupler", "mm", "optimum.coupler", _MM),
             ("机架", "frame", "mm", "optimum.frame", _MM),
@@ -108,7 +109,8 @@ _ENTRIES: dict[str, Entry | str] = {
             ("飞轮 J_F", "flywheel J_F", "kg·m²", "linkage.flywheel.inertia", 1.0))),
     "cam": Entry(
         "cam", _B + "cam:CamBrief", _B + "cam:cam_brief_to_si", _M + "cam:CAM_STAGES",
-        _M + "cam:cam_results_document", _R + "cam_report", "cam_7_3.yaml", (
+        _M + "cam:cam_results_document", _R + "cam_report", "cam_7_3.yaml",
+        results=_M + "cam:CamResults", summary=(
             ("基圆半径 r0", "base radius r0", "mm", "cam.base_radius", _MM),
             ("最小基圆", "least base radius", "mm", "cam.min_base_radius", _MM),
             ("滚子半径", "roller radius", "mm", "cam.roller_radius", _MM),
@@ -117,7 +119,7 @@ _ENTRIES: dict[str, Entry | str] = {
     "eccentric_cam": Entry(
         "eccentric_cam", _B + "cam:EccentricCamBrief", _B + "cam:eccentric_to_si",
         _M + "cam:DISC_STAGES", _M + "cam:disc_results_document", _R + "disc_report",
-        "cam_7_1.yaml", (
+        "cam_7_1.yaml", results=_M + "cam:EccentricCamResults", summary=(
             ("圆盘半径", "disc radius", "mm", "radius", _MM),
             ("偏心距", "eccentricity", "mm", "eccentricity", _MM))),
     "drive": Entry(

@@ -29,6 +29,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from .errors import DesignError
+from .fields import q
 from .motion_laws import LAWS
 
 TWO_PI = 2.0 * np.pi
@@ -75,10 +76,10 @@ class FollowerMotion:
 class Boundary:
     """The joint between two segments at cam angle ``delta``, with what jumps there."""
 
-    delta: float
-    velocity_jump: float       # jump of ds/dδ
-    acceleration_jump: float   # jump of d²s/dδ²
-    impact: str                # none | soft | rigid
+    delta: float = q("rad", "cam angle δ of the joint")
+    velocity_jump: float = q("m/rad or rad/rad", "jump of ds/dδ (per radian of cam angle)")
+    acceleration_jump: float = q("m/rad² or rad/rad²", "jump of d²s/dδ²")
+    impact: str = q("", "'none' | 'soft' | 'rigid'")
 
 
 class Programme:
@@ -418,14 +419,18 @@ def _flat(follower, r0, sigma, m, rot) -> CamProfile:
 class Corner:
     """A corner of the pitch curve: a joint where the follower's velocity jumps (刚性冲击)."""
 
-    delta: float     # cam angle of the joint [rad]
-    point: complex   # the corner P of the pitch curve (cam frame) [m]
-    turn: float      # signed angle through which the profile normal turns at P [rad]
-    kind: str        # "arc": the actual profile follows the roller circle about P (a concave
-                     # arc of radius r_r); "edge": the two offset branches cross, the loop
-                     # between them is cut away and the profile has a sharp edge
-    stand_off: float = 0.0   # edge: how far the designed roller centre stands off the edge
-                             # beyond r_r, at most [m] (the follower cannot follow exactly)
+    delta: float = q("rad", "cam angle of the joint")
+    point: complex = q("m", "the corner P of the pitch curve (cam frame), [x, y]")
+    turn: float = q("rad", "signed angle through which the profile normal turns at P")
+    # "arc": the actual profile follows the roller circle about P (a concave arc of radius
+    # r_r); "edge": the two offset branches cross, the loop between them is cut away and
+    # the profile has a sharp edge
+    kind: str = q("",
+        "'arc' (the roller circle about P) | 'edge' (the loop cut away: a sharp edge)")
+    # edge: how far the designed roller centre stands off the edge beyond r_r, at most
+    # (the follower cannot follow exactly)
+    stand_off: float = q("m", "edge: largest stand-off of the roller centre beyond r_r",
+                         default=0.0)
 
 
 @dataclass(frozen=True)

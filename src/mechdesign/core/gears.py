@@ -10,6 +10,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from .fields import q
+
 
 def inv(alpha):
     """Involute function inv α = tan α − α."""
@@ -39,42 +41,46 @@ def inv_inverse(value: float) -> float:
 
 @dataclass(frozen=True)
 class GearDims:
-    z: int
-    x: float          # profile-shift coefficient
-    d: float          # pitch (reference) diameter
-    db: float         # base diameter
-    da: float         # tip diameter
-    df: float         # root diameter
-    ha: float         # addendum
-    hf: float         # dedendum
-    s: float          # tooth thickness on the pitch circle
-    e: float          # space width on the pitch circle
-    sa: float         # tooth thickness on the tip circle
-    alpha_a: float    # pressure angle at the tip
+    """One gear of a spur pair (lengths in the pair's length unit: m in results)."""
+
+    z: int = q("1", "number of teeth z")
+    x: float = q("1", "profile-shift coefficient x")
+    d: float = q("m", "pitch (reference) diameter d = m z")
+    db: float = q("m", "base diameter d_b = d cos α")
+    da: float = q("m", "tip diameter d_a")
+    df: float = q("m", "root diameter d_f")
+    ha: float = q("m", "addendum h_a")
+    hf: float = q("m", "dedendum h_f")
+    s: float = q("m", "tooth thickness on the pitch circle s")
+    e: float = q("m", "space width on the pitch circle e")
+    sa: float = q("m", "tooth thickness on the tip circle s_a")
+    alpha_a: float = q("rad", "pressure angle at the tip α_a")
 
 
 @dataclass(frozen=True)
 class SpurPair:
-    m: float
-    alpha: float
-    ha_star: float
-    c_star: float
-    g1: GearDims
-    g2: GearDims
-    p: float            # circular pitch π m
-    pb: float           # base pitch p cos α
-    a: float            # standard centre distance
-    a_work: float       # working centre distance a'
-    alpha_work: float   # working pressure angle α'
-    y: float            # centre distance modification coefficient (a' − a)/m
-    dy: float           # tip reduction coefficient Δy = x1 + x2 − y
-    clearance: float    # radial clearance at the working centre distance
-    ratio: float        # z2 / z1
-    contact_ratio: float
-    action_length: float  # B1B2, the actual line of action
-    z_min: float        # smallest tooth number without undercut (standard, this α, ha*)
-    x_min1: float       # smallest shift avoiding undercut, gear 1
-    x_min2: float
+    """An external spur pair without backlash (lengths in the pair's length unit: m in results)."""
+
+    m: float = q("m", "module m")
+    alpha: float = q("rad", "pressure angle α of the reference circle")
+    ha_star: float = q("1", "addendum coefficient h_a*")
+    c_star: float = q("1", "clearance coefficient c*")
+    g1: GearDims = q("", "gear 1 (the pinion z1)")
+    g2: GearDims = q("", "gear 2 (the wheel z2)")
+    p: float = q("m", "circular pitch p = π m")
+    pb: float = q("m", "base pitch p_b = p cos α")
+    a: float = q("m", "standard centre distance a")
+    a_work: float = q("m", "working centre distance a′")
+    alpha_work: float = q("rad", "working pressure angle α′")
+    y: float = q("1", "centre distance modification coefficient y = (a′ − a)/m")
+    dy: float = q("1", "tip reduction coefficient Δy = x1 + x2 − y")
+    clearance: float = q("m", "radial clearance at the working centre distance")
+    ratio: float = q("1", "gear ratio u = z2/z1")
+    contact_ratio: float = q("1", "contact ratio ε")
+    action_length: float = q("m", "B1B2, the actual line of action")
+    z_min: float = q("1", "smallest tooth number without undercut (standard, this α, h_a*)")
+    x_min1: float = q("1", "smallest shift avoiding undercut, gear 1")
+    x_min2: float = q("1", "smallest shift avoiding undercut, gear 2")
 
 
 def _gear(m, z, x, alpha, ha, hf) -> GearDims:

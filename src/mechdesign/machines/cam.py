@@ -14,6 +14,7 @@ from dataclasses import dataclass, field, replace
 import numpy as np
 
 from ..core import cam as core
+from ..core.fields import q
 from ..pipeline import Stage
 from .findings import Finding
 
@@ -22,16 +23,19 @@ GRID_POINTS = 3600
 
 @dataclass(frozen=True)
 class SegmentCheck:
-    kind: str
-    law: str | None
-    start: float                 # [rad]
-    span: float                  # [rad]
-    lift: float                  # signed [m] or [rad]
-    impact: str
-    max_pressure_angle: float    # [rad]
-    at: float                    # cam angle of the maximum [rad]
-    limit: float | None          # [rad], None for dwells
-    ok: bool
+    """One segment of the follower programme with its pressure-angle check."""
+
+    kind: str = q("", "'rise' | 'dwell' | 'return'")
+    law: str | None = q("", "motion law (null for a dwell)")
+    start: float = q("rad", "cam angle where the segment starts")
+    span: float = q("rad", "cam angle of the segment (Φ, Φs, Φ′, Φs′)")
+    lift: float = q("m or rad", "signed follower travel in the segment")
+    impact: str = q("",
+        "worst impact of the motion (its ends and interior): 'none' | 'soft' (柔性) | 'rigid' (刚性)")
+    max_pressure_angle: float = q("rad", "α_max in the segment")
+    at: float = q("rad", "cam angle of α_max")
+    limit: float | None = q("rad", "allowed pressure angle [α] (null for a dwell)")
+    ok: bool = q("", "α_max ≤ [α]")
 
 
 DEG = 180.0 / np.pi
@@ -621,63 +625,199 @@ DISC_STAGES = [Stage("disc", "偏心圆盘凸轮分析 / eccentric disc analysis
                      lambda r: verify_disc(r["disc"]))]
 
 
-def _c(z):
-    return [float(np.real(z)), float(np.imag(z))]
+# --------------------------------------------------------------------------- results
+
+CAM_UNITS = "SI: m, rad; derivatives per radian of cam angle; complex points as [x, y]"
+DISC_UNITS = "SI: m, rad"
 
 
-def cam_document(c: CamResult) -> dict:
+@dataclass(frozen=True)
+class BestOffset:
+    """The smallest base circle with the best offset (translating knife or roller follower)."""
+
+    base_radius: float = q("m", "r0 with the best offset")
+    offset: float = q("m", "the best offset e, signed x of the follower's axis")
+
+
+@dataclass(frozen=True)
+class CamTable:
+    """The cam at the brief's table step (cam frame: cam centre at the origin; at δ = 0 the
+    frame and the cam coincide). s and its derivatives are in m for a translating follower,
+    in rad for an oscillating one (the arm angle φ); derivatives per radian of cam angle."""
+
+    delta: np.ndarray = q("rad", "cam angle δ")
+    s: np.ndarray = q("m or rad", "follower displacement from its lowest position")
+    ds: np.ndarray = q("m/rad or rad/rad", "ds/dδ")
+    d2s: np.ndarray = q("m/rad² or rad/rad²", "d²s/dδ²")
+    d3s: np.ndarray = q("m/rad³ or rad/rad³", "d³s/dδ³")
+    pitch: np.ndarray = q("m", "pitch curve (theoretical profile), [x, y]")
+    actual: np.ndarray = q("m", "actual profile point the follower touches, [x, y]")
+    pressure_angle: np.ndarray = q("rad", "pressure angle α")
+    rho_pitch: np.ndarray = q("m", "radius of curvature of the pitch curve ρ (+ convex)")
+    rho_actual: np.ndarray = q("m", "radius of curvature of the actual profile ρ_a (+ convex)")
+
+
+@dataclass(frozen=True)
+class CamDocument:
+    """The cam stage (凸轮机构设计): a disc cam designed for its follower programme."""
+
+    base_radius: float = q("m",
+        "base radius r0 used (of the pitch curve; of the profile for a flat face)")
+    base_radius_designed: bool = q("", "true when r0 was chosen by the program ('auto')")
+    min_base_radius: float | None = q("m",
+        "smallest r0 for [α] (convexity for a flat face) with this follower")
+    best_offset: BestOffset | None = q("",
+        "r0 and e with the best offset (translating knife/roller)")
+    offset: float = q("m", "signed x of the translating follower's axis (0 otherwise)")
+    roller_radius: float = q("m", "roller radius r_r (0 without a roller)")
+    rotation: int = q("1", "+1 counter-clockwise, −1 clockwise")
+    initial: float = q("m or rad", "s0 = √(r0² − e²) [m] (translating) or φ0 [rad] (oscillating)")
+    segments: tuple[SegmentCheck, ...] = q("", "the programme's segments with their checks")
+    boundaries: tuple[core.Boundary, ...] = q("", "the joints between segments")
+    rho_pitch_min_convex: float = q("m", "smallest convex ρ of the pitch curve (null if none)")
+    rho_actual_min_convex: float = q("m",
+        "smallest convex ρ_a of the actual profile (null if none)")
+    face_extent: tuple[float, float] | None = q(
+        "m", "flat face: (min, max) contact position along the face")
+    warnings: tuple[str, ...] = q("", "codes of the design findings")
+    outline: np.ndarray | None = q("m", "the actual profile as cut, closed polyline, [x, y]")
+    corners: tuple[core.Corner, ...] = q("", "roller: corners of the pitch curve (velocity jumps)")
+    stand_off: float | None = q("m", "roller: largest stand-off of the roller centre at an edge")
+    table: CamTable = q("", "the cam at the brief's table step")
+
+
+def cam_document(c: CamResult) -> CamDocument:
     """The cam stage in ``results.json`` (SI: m, rad; derivatives per radian of cam angle)."""
     t = c.table
-    return {
-        "base_radius": c.base_radius, "base_radius_designed": c.base_radius_designed,
-        "min_base_radius": c.min_base_radius,
-        "best_offset": None if c.best_offset is None else {"base_radius": c.best_offset[0],
-                                                             "offset": c.best_offset[1]},
-        "offset": c.offset, "roller_radius": c.grid.roller_radius, "rotation": c.grid.rotation,
-        "initial": c.grid.initial_angle,
-        "segments": [s.__dict__ for s in c.segments],
-        "boundaries": [b.__dict__ for b in c.boundaries],
-        "rho_pitch_min_convex": c.rho_pitch_min_convex,
-        "rho_actual_min_convex": c.rho_actual_min_convex,
-        "face_extent": c.face_extent,
-        "warnings": [w.code for w in c.warnings],
-        "outline": c.outline,
-        "corners": [] if c.envelope is None else [k.__dict__ for k in c.envelope.corners],
-        "stand_off": None if c.envelope is None else c.envelope.stand_off,
-        "table": {"delta": t.delta, "s": t.motion.s, "ds": t.motion.ds, "d2s": t.motion.d2s,
-                  "d3s": t.motion.d3s, "pitch": t.pitch, "actual": t.actual,
-                  "pressure_angle": t.pressure_angle, "rho_pitch": t.rho_pitch,
-                  "rho_actual": t.rho_actual},
-    }
+    return CamDocument(
+        base_radius=c.base_radius, base_radius_designed=c.base_radius_designed,
+        min_base_radius=c.min_base_radius,
+        best_offset=None if c.best_offset is None else BestOffset(*c.best_offset),
+        offset=c.offset, roller_radius=c.grid.roller_radius, rotation=c.grid.rotation,
+        initial=c.grid.initial_angle,
+        segments=tuple(c.segments), boundaries=tuple(c.boundaries),
+        rho_pitch_min_convex=c.rho_pitch_min_convex,
+        rho_actual_min_convex=c.rho_actual_min_convex,
+        face_extent=c.face_extent,
+        warnings=tuple(w.code for w in c.warnings),
+        outline=c.outline,
+        corners=() if c.envelope is None else tuple(c.envelope.corners),
+        stand_off=None if c.envelope is None else c.envelope.stand_off,
+        table=CamTable(t.delta, t.motion.s, t.motion.ds, t.motion.d2s, t.motion.d3s, t.pitch,
+                       t.actual, t.pressure_angle, t.rho_pitch, t.rho_actual))
 
 
-def cam_results_document(r: dict) -> dict:
-    return {"schema": "mechdesign.results/1", "machine": "cam",
-            "units": "SI: m, rad; derivatives per radian of cam angle; complex points as [x, y]",
-            "cam": cam_document(r["cam"]),
-            "verification": (None if r.get("cam_verification") is None
-                             else verification_document(r["cam_verification"]))}
+@dataclass(frozen=True)
+class CheckDoc:
+    """One self-check: a number computed by a route independent of the design formulas,
+    with its limit and verdict."""
+
+    key: str = q("", "what is checked (e.g. 'velocity_fd', 'envelope', 'disc_s')")
+    value: float = q("m, rad or 1",
+        "the check's value: a length, an angle or a relative error/margin")
+    limit: float | None = q("m, rad or 1", "its limit (null: reported only)")
+    sense: str = q("", "'le': passes when value ≤ limit; 'ge': value ≥ limit; 'info': no verdict")
+    reference: float | None = q("m, rad, W or 1",
+        "the value it is compared with, where there is one")
+    passed: bool | None = q("", "the verdict (null for 'info')")
+    requirement: bool = q("",
+        "a design requirement (e.g. a strength margin), not a check of the computation")
+    detail: dict = q("",
+        "what the row is about (follower label, grid step [rad], cam angle [rad] …)")
 
 
-def verification_document(v) -> dict:
+@dataclass(frozen=True)
+class VerificationDocument:
+    """Self-checks (计算校核) of a stage: value, limit and verdict of each."""
+
+    checks: tuple[CheckDoc, ...] = q("", "every self-check")
+    failed: tuple[str, ...] = q("", "the failed checks of the computation, as findings (en)")
+
+
+def verification_document(v) -> VerificationDocument:
     """Self-checks in ``results.json``: value, limit and verdict of each (SI)."""
-    return {"checks": [{"key": c.key, "value": c.value, "limit": c.limit, "sense": c.sense,
-                        "reference": c.reference, "passed": c.passed, "requirement": c.requirement,
-                        "detail": c.detail}
-                       for c in v.checks],
-            "failed": [w.en for w in v.warnings]}
+    return VerificationDocument(
+        checks=tuple(CheckDoc(c.key, c.value, c.limit, c.sense, c.reference, c.passed,
+                              c.requirement, c.detail) for c in v.checks),
+        failed=tuple(w.en for w in v.warnings))
 
 
-def disc_results_document(r: dict) -> dict:
+@dataclass(frozen=True)
+class CamResults:
+    """Disc cam (凸轮机构设计): the follower programme, the base circle (given or the smallest
+    for the allowed pressure angles), the pitch curve and the actual profile, their pressure
+    angle and curvature checks, and the self-checks. Cam frame: cam centre at the origin, the
+    follower above it (a translating follower's axis at x = offset); at δ = 0 the frame and
+    the cam coincide. The follower's displacement s is in m (translating) or rad (the
+    oscillating arm's angle); derivatives are per radian of cam angle."""
+
+    schema: str = q("", "'mechdesign.results/2'")
+    machine: str = q("", "'cam'")
+    units: str = q("", "reminder of the unit system")
+    cam: CamDocument = q("", "the cam")
+    verification: VerificationDocument | None = q("", "self-checks")
+
+
+def cam_results_document(r: dict) -> CamResults:
+    from ..results import SCHEMA
+
+    return CamResults(
+        schema=SCHEMA, machine="cam", units=CAM_UNITS, cam=cam_document(r["cam"]),
+        verification=(None if r.get("cam_verification") is None
+                      else verification_document(r["cam_verification"])))
+
+
+@dataclass(frozen=True)
+class DiscTable:
+    """A follower's motion at a set of cam angles."""
+
+    delta: np.ndarray = q("rad", "cam angle δ")
+    s: np.ndarray = q("m", "displacement from the lowest position")
+    pressure_angle: np.ndarray = q("rad", "pressure angle α")
+
+
+@dataclass(frozen=True)
+class DiscFollower:
+    """One follower on the eccentric disc."""
+
+    label: str = q("", "the follower's label in the brief")
+    kind: str = q("", "'knife' | 'roller' | 'flat'")
+    offset: float = q("m", "signed x of the follower's axis (+ right of the disc's pivot)")
+    roller_radius: float = q("m", "roller radius r_r (0 without a roller)")
+    y_min: float = q("m", "lowest height of the follower point")
+    y_max: float = q("m", "highest height of the follower point")
+    stroke: float = q("m", "stroke h = y_max − y_min")
+    table: DiscTable = q("", "at the brief's table step, 0 … 360° inclusive")
+    queries: DiscTable = q("", "at the brief's query angles")
+
+
+@dataclass(frozen=True)
+class EccentricCamResults:
+    """Eccentric disc cam (偏心圆盘凸轮): a circular disc of radius R turning about a pivot
+    at eccentricity ε from its centre, analysed for one or more translating followers.
+    Frame: the disc's pivot at the origin, the followers above it; at δ = 0 the disc's
+    centre lies at (0, −ε)."""
+
+    schema: str = q("", "'mechdesign.results/2'")
+    machine: str = q("", "'eccentric_cam'")
+    units: str = q("", "reminder of the unit system")
+    radius: float = q("m", "disc radius R")
+    eccentricity: float = q("m", "eccentricity ε")
+    followers: tuple[DiscFollower, ...] = q("", "one per follower of the brief")
+    verification: VerificationDocument | None = q("", "self-checks")
+
+
+def disc_results_document(r: dict) -> EccentricCamResults:
+    from ..results import SCHEMA
+
     d = r["disc"]
-    return {"schema": "mechdesign.results/1", "machine": "eccentric_cam",
-            "units": "SI: m, rad", "radius": d.params.radius, "eccentricity": d.params.eccentricity,
-            "followers": [{"label": label, "kind": f.kind, "offset": f.offset,
-                           "roller_radius": f.roller_radius, "y_min": m.y_min, "y_max": m.y_max,
-                           "stroke": m.stroke, "table": {"delta": t.delta, "s": t.s,
-                                                         "pressure_angle": t.pressure_angle},
-                           "queries": {"delta": q.delta, "s": q.s, "pressure_angle": q.pressure_angle}}
-                          for (label, f), m, t, q in zip(d.params.followers, d.motions, d.tables,
-                                                         d.queries)],
-            "verification": (None if r.get("disc_verification") is None
-                             else verification_document(r["disc_verification"]))}
+    return EccentricCamResults(
+        schema=SCHEMA, machine="eccentric_cam", units=DISC_UNITS, radius=d.params.radius,
+        eccentricity=d.params.eccentricity,
+        followers=tuple(
+            DiscFollower(label, f.kind, f.offset, f.roller_radius, m.y_min, m.y_max, m.stroke,
+                         DiscTable(t.delta, t.s, t.pressure_angle),
+                         DiscTable(qm.delta, qm.s, qm.pressure_angle))
+            for (label, f), m, t, qm in zip(d.params.followers, d.motions, d.tables, d.queries)),
+        verification=(None if r.get("disc_verification") is None
+                      else verification_document(r["disc_verification"])))

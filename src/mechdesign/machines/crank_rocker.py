@@ -15,6 +15,7 @@ import numpy as np
 from scipy.optimize import brentq, minimize_scalar
 
 from ..core import fourbar as fb
+from ..core.fields import q
 from ..core.mechanism import RRP, RRR, Crank, Mechanism
 from ..pipeline import Stage
 from .findings import Finding
@@ -415,52 +416,164 @@ def stages(params) -> list[Stage]:
 
 # ------------------------------------------------------------------------------ results
 
-def _c(z):
-    return [float(np.real(z)), float(np.imag(z))]
+UNITS = "SI: m, rad; complex points as [x, y], rocker pivot D at the origin"
 
 
-def _design_doc(d: Design) -> dict:
-    return {"label": d.label, "crank": d.design.crank, "coupler": d.design.coupler,
-            "rocker": d.design.rocker, "frame": d.design.frame, "crank_pivot": _c(d.a_pivot),
-            "arc_position": d.position, "gamma_min": d.gamma_min, "gamma_max": d.gamma_max,
-            "theta": d.theta, "swing": d.swing, "classification": d.grashof,
-            "warnings": [w.code for w in d.warnings]}
+@dataclass(frozen=True)
+class SpecDoc:
+    """The design data of the brief (SI)."""
+
+    K: float = q("1", "time ratio K")
+    theta: float = q("rad", "extreme-position angle θ = π(K − 1)/(K + 1)")
+    swing: float = q("rad", "rocker swing ψ")
+    rocker: float = q("m", "rocker length L_CD")
+    frame: float | None = q("m", "given frame L_AD (null: none given)")
+    gamma_allowed: float = q("rad", "allowed transmission angle [γ]")
 
 
-def _sim_doc(s: Simulation) -> dict:
-    return {"label": s.label, "K": s.K, "theta": s.theta, "swing": s.swing,
-            "gamma_min": s.gamma_min, "crank_angle_at_gamma_min": s.phi_gamma_min,
-            "crank_angles_at_extremes": list(s.phi_extremes), "closure_residual": s.closure}
+@dataclass(frozen=True)
+class ConstructionDoc:
+    """The θ-circle construction: the crank pivot A lies on the circle through C1 and C2."""
+
+    C1: complex = q("m", "rocker tip at the folded extreme (AC1 = b − a)")
+    C2: complex = q("m", "rocker tip at the extended extreme (AC2 = b + a)")
+    centre: complex | None = q("m", "centre O of the θ-circle (null for θ = 0: the line C1C2)")
+    radius: float = q("m", "R = C1C2 / (2 sin θ) (null for θ = 0)")
+    arc: tuple[float, float] = q("rad", "allowed arc (p_lo, p_hi) of the crank pivot's parameter p")
 
 
-def results_document(r: dict) -> dict:
+@dataclass(frozen=True)
+class DesignDoc:
+    """A crank-rocker (closed forms)."""
+
+    label: str = q("", "'zh / en' name of the design")
+    crank: float = q("m", "L_AB (a)")
+    coupler: float = q("m", "L_BC (b)")
+    rocker: float = q("m", "L_CD (c)")
+    frame: float = q("m", "L_AD (d)")
+    crank_pivot: complex = q("m", "crank pivot A")
+    arc_position: float | None = q("rad", "arc parameter p of A (null for a compared design)")
+    gamma_min: float = q("rad", "γ_min")
+    gamma_max: float = q("rad", "γ_max")
+    theta: float = q("rad", "extreme-position angle θ (null unless a crank-rocker)")
+    swing: float = q("rad", "rocker swing ψ (null unless a crank-rocker)")
+    classification: str = q("", "Grashof type, e.g. 'crank-rocker'")
+    warnings: tuple[str, ...] = q("", "codes of the design findings")
+
+
+@dataclass(frozen=True)
+class ChartDoc:
+    """The design chart: the optimum over the swing ψ, one curve per θ."""
+
+    theta: tuple[float, ...] = q("rad", "θ of each curve")
+    swing: np.ndarray = q("rad", "ψ along the curves")
+    rocker_over_frame: np.ndarray = q("1", "l3/l4 at the optimum, one row per θ (null: none)")
+    gamma_min: np.ndarray = q("rad", "γ_min at the optimum, one row per θ (null: none)")
+
+
+@dataclass(frozen=True)
+class SimulationDoc:
+    """A design simulated over one revolution (crank + RRR group)."""
+
+    label: str = q("", "the design's name")
+    K: float = q("1", "simulated K")
+    theta: float = q("rad", "simulated θ")
+    swing: float = q("rad", "simulated ψ")
+    gamma_min: float = q("rad", "simulated γ_min")
+    crank_angle_at_gamma_min: float = q("rad", "crank angle of γ_min, from the frame line A→D")
+    crank_angles_at_extremes: tuple[float, float] = q("rad",
+        "crank angles of the rocker's extremes, from A→D")
+    closure_residual: float = q("m", "largest |loop closure| residual")
+
+
+@dataclass(frozen=True)
+class SliderSimulated:
+    """The offset slider-crank simulated over one revolution (crank + RRP group)."""
+
+    stroke: float = q("m", "simulated stroke H")
+    K: float = q("1", "simulated K")
+    theta: float = q("rad", "simulated θ")
+    pressure_angle_slow: float = q("rad", "largest α of the slow (working) stroke")
+    pressure_angle_fast: float = q("rad", "largest α of the fast stroke")
+    closure_residual: float = q("m", "largest |loop closure| residual")
+
+
+@dataclass(frozen=True)
+class SliderCrankDoc:
+    """The offset slider-crank from K, H and e (closed forms)."""
+
+    K: float = q("1", "time ratio K")
+    theta: float = q("rad", "extreme-position angle θ")
+    stroke: float = q("m", "stroke H")
+    offset: float = q("m", "offset e")
+    crank: float = q("m", "crank L_AB")
+    rod: float = q("m", "connecting rod L_BC")
+    pressure_angle_slow: float = q("rad", "largest α of the slow (working) stroke")
+    pressure_angle_fast: float = q("rad", "largest α of the fast stroke")
+    simulated: SliderSimulated = q("", "the same by simulation")
+
+
+@dataclass(frozen=True)
+class CrankRockerResults:
+    """Crank-rocker synthesis (曲柄摇杆机构设计) from the time ratio K, the swing ψ and the
+    rocker length: the crank-rocker with the largest minimum transmission angle (the crank
+    pivot A searched over the allowed arc of the θ-circle), the textbook design with a given
+    frame, the designs to compare, the design chart, optionally an offset slider-crank from
+    K, H and e, and every design simulated. Frame: the rocker pivot D at the origin; crank
+    AB, coupler BC, rocker CD, frame AD."""
+
+    schema: str = q("", "'mechdesign.results/2'")
+    machine: str = q("", "'crank_rocker'")
+    units: str = q("", "reminder of the unit system")
+    spec: SpecDoc = q("", "the design data")
+    construction: ConstructionDoc = q("", "the θ-circle construction")
+    optimum: DesignDoc = q("", "the crank-rocker with the largest γ_min")
+    optimum_far_circle_gamma_min: float | None = q(
+        "rad", "best γ_min with A on the mirror circle (beyond the chord); null if none")
+    textbook: DesignDoc | None = q("", "the design with the given frame, if any")
+    compare: tuple[DesignDoc, ...] = q("", "the brief's designs to compare")
+    chart: ChartDoc = q("", "the design chart")
+    simulation: tuple[SimulationDoc, ...] = q("", "optimum, textbook, compared designs simulated")
+    slider_crank: SliderCrankDoc | None = q("", "the offset slider-crank, if the brief has one")
+
+
+def _design_doc(d: Design) -> DesignDoc:
+    return DesignDoc(d.label, d.design.crank, d.design.coupler, d.design.rocker, d.design.frame,
+                     complex(d.a_pivot), d.position, d.gamma_min, d.gamma_max, d.theta, d.swing,
+                     d.grashof, tuple(w.code for w in d.warnings))
+
+
+def _sim_doc(s: Simulation) -> SimulationDoc:
+    return SimulationDoc(s.label, s.K, s.theta, s.swing, s.gamma_min, s.phi_gamma_min,
+                         tuple(s.phi_extremes), s.closure)
+
+
+def results_document(r: dict) -> CrankRockerResults:
+    from ..results import SCHEMA
+
     p = r["params"]
     opt: OptimumResult = r["optimum"]
     cons = opt.construction
-    doc = {"schema": "mechdesign.results/1", "machine": "crank_rocker",
-           "units": "SI: m, rad; complex points as [x, y], rocker pivot D at the origin",
-           "spec": {"K": p.K, "theta": p.theta, "swing": p.swing, "rocker": p.rocker,
-                    "frame": p.frame, "gamma_allowed": p.gamma_allowed},
-           "construction": {"C1": _c(cons.c1), "C2": _c(cons.c2),
-                            "centre": None if cons.centre is None else _c(cons.centre),
-                            "radius": cons.radius, "arc": [cons.p_lo, cons.p_hi]},
-           "optimum": _design_doc(opt.best), "optimum_far_circle_gamma_min": opt.far_side_gamma,
-           "textbook": None if r.get("textbook") is None else _design_doc(r["textbook"]),
-           "compare": [_design_doc(d) for d in r["compare"]],
-           "chart": {"theta": list(r["chart"].thetas), "swing": r["chart"].swings,
-                     "rocker_over_frame": r["chart"].ratio, "gamma_min": r["chart"].gamma},
-           "simulation": [_sim_doc(s) for s in r["verify"].sims]}
+    slider = None
     if r.get("slider") is not None:
         sl: SliderResult = r["slider"]
         ss = r["verify"].slider
-        doc["slider_crank"] = {
-            "K": sl.K, "theta": sl.theta, "stroke": sl.stroke, "offset": sl.offset,
-            "crank": sl.crank, "rod": sl.rod, "pressure_angle_slow": sl.alpha_slow,
-            "pressure_angle_fast": sl.alpha_fast,
-            "simulated": {"stroke": ss.stroke, "K": ss.K, "theta": ss.theta,
-                          "pressure_angle_slow": ss.alpha_slow,
-                          "pressure_angle_fast": ss.alpha_fast, "closure_residual": ss.closure}}
-    return doc
+        slider = SliderCrankDoc(
+            sl.K, sl.theta, sl.stroke, sl.offset, sl.crank, sl.rod, sl.alpha_slow, sl.alpha_fast,
+            SliderSimulated(ss.stroke, ss.K, ss.theta, ss.alpha_slow, ss.alpha_fast, ss.closure))
+    return CrankRockerResults(
+        schema=SCHEMA, machine="crank_rocker", units=UNITS,
+        spec=SpecDoc(p.K, p.theta, p.swing, p.rocker, p.frame, p.gamma_allowed),
+        construction=ConstructionDoc(complex(cons.c1), complex(cons.c2),
+                                     None if cons.centre is None else complex(cons.centre),
+                                     cons.radius, (cons.p_lo, cons.p_hi)),
+        optimum=_design_doc(opt.best), optimum_far_circle_gamma_min=opt.far_side_gamma,
+        textbook=None if r.get("textbook") is None else _design_doc(r["textbook"]),
+        compare=tuple(_design_doc(d) for d in r["compare"]),
+        chart=ChartDoc(tuple(r["chart"].thetas), r["chart"].swings, r["chart"].ratio,
+                       r["chart"].gamma),
+        simulation=tuple(_sim_doc(s) for s in r["verify"].sims),
+        slider_crank=slider)
 
 
 __all__ = ["stages", "results_document", "simulate_four_bar", "simulate_slider", "folded_branch"]

@@ -9,6 +9,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from ..core import gears
+from ..core.fields import q
 from ..pipeline import Stage
 from .findings import Finding
 
@@ -95,5 +96,15 @@ def gear_stage() -> Stage:
     return Stage("gear", "齿轮设计 / gear pair", lambda r: design_gear(r["params"].gear))
 
 
-def gear_document(g: GearResult) -> dict:
-    return {"pair": g.pair, "warnings": [w.en for w in g.warnings]}
+@dataclass(frozen=True)
+class GearDocument:
+    """The gear stage (齿轮设计): an external involute spur pair, standard or profile-shifted,
+    without backlash (孙桓《机械原理》). Gear 1 is the pinion z1."""
+
+    pair: gears.SpurPair = q("", "the pair's geometry")
+    warnings: tuple[str, ...] = q("",
+        "the pair's findings (en): undercut, pointed tooth, ε, clearance")
+
+
+def gear_document(g: GearResult) -> GearDocument:
+    return GearDocument(g.pair, tuple(w.en for w in g.warnings))

@@ -23,9 +23,9 @@ from ..pipeline import Stage
 from ..stages.flywheel import Flywheel, FlywheelSpec, RimSpec
 from ..stages.polygons import polygon_stage
 from . import linkage as lk
-from .cam import cam_document
+from .cam import CamDocument, cam_document
 from .drive import drive_document
-from .gear import gear_document
+from .gear import GearDocument, gear_document
 from .positions import Positions
 from ..core.fields import q
 
@@ -378,8 +378,8 @@ class ShaperResults:
     working_stroke_crank_angle: float = q("rad", "crank rotation of the working stroke (π + θ)")
     flywheel: Flywheel = q("", "the flywheel (the one flywheel stage) on the pinion or crank shaft")
     verification: Verification = q("", "self-checks")
-    cam: dict | None = q("", "the cam on the crank shaft, when the brief has one")
-    gear: dict | None = q("", "the gear pair z1/z2, when the brief gives its module")
+    cam: CamDocument | None = q("", "the cam on the crank shaft, when the brief has one")
+    gear: GearDocument | None = q("", "the gear pair z1/z2, when the brief gives its module")
     drive: dict | None = q("", "the drive, when the brief has one")
 
 
