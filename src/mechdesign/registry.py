@@ -71,7 +71,7 @@ _ENTRIES: dict[str, Entry | str] = {
     "lockbeam": Entry(
         "lockbeam", _B + "lockbeam:LockbeamBrief", _B + "lockbeam:lockbeam_to_si",
         _M + "lockbeam:stages", _M + "lockbeam:results_document", _R + "lockbeam_report",
-        "lockbeam.yaml", (
+        "lockbeam.yaml", results=_M + "lockbeam:LockbeamResults", summary=(
             ("总传动比", "total ratio", "", "transmission.ratio", 1.0),
             ("送料行程", "feed stroke", "mm", "feed.output.stroke", _MM),
             ("送料 K", "feed K", "", "feed.time_ratio", 1.0),

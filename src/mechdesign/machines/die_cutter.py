@@ -697,7 +697,8 @@ class FeedDoc:
     """The incomplete gear placed on the shaft, and the gripper chain it drives."""
 
     gear: IntermittentDocument = q("", "the incomplete gear")
-    start_auto: bool = q("", "its start placed automatically (in the platen's clear span)")
+    start_auto: bool = q("", "the gear's meshing start placed automatically (centred in "
+                                  "the platen's clear span)")
     sprocket_radius: float = q("m", "R_s = p / (2 sin(π/z_s))")
     feed: float = q("m", "chain travel per cycle Δφ2/2π·z_s·p")
     chain_speed: float = q("m/s", "mean chain speed while it moves")
