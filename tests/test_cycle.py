@@ -286,6 +286,6 @@ def test_section_errors_name_the_place():
 def test_document():
     c = lockbeam([cy.Constraint("before", ("feed", "rise"), ("pin", "rise"), R(5))])
     doc = cy.cycle_document(c)
-    assert doc["period"] == pytest.approx(6.0)
-    assert doc["actuators"][1]["phases"][1]["duration"] == pytest.approx(1.0)
-    assert doc["constraints"][0]["a"] == "feed.rise" and doc["constraints"][0]["ok"] is True
+    assert doc.period == pytest.approx(6.0)
+    assert doc.actuators[1].phases[1].duration == pytest.approx(1.0)
+    assert doc.constraints[0].a == "feed.rise" and doc.constraints[0].ok is True

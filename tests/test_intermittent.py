@@ -166,9 +166,9 @@ def test_cycle_phases_feed_a_cycle_diagram():
 
 def test_document():
     doc = im.intermittent_document(example(driver_speed=1.0))
-    assert doc["teeth"] == 10 and doc["stations"] == 3
-    assert doc["advance"] == pytest.approx(R(120))
-    assert doc["times"]["motion"] == pytest.approx(R(100))
+    assert doc.teeth == 10 and doc.stations == 3
+    assert doc.advance == pytest.approx(R(120))
+    assert doc.times.motion == pytest.approx(R(100))
 
 
 # --------------------------------------------------------------------------- brief section

@@ -71,7 +71,7 @@ _ENTRIES: dict[str, Entry | str] = {
     "lockbeam": Entry(
         "lockbeam", _B + "lockbeam:LockbeamBrief", _B + "lockbeam:lockbeam_to_si",
         _M + "lockbeam:stages", _M + "lockbeam:results_document", _R + "lockbeam_report",
-        "lockbeam.yaml", (
+        "lockbeam.yaml", results=_M + "lockbeam:LockbeamResults", summary=(
             ("总传动比", "total ratio", "", "transmission.ratio", 1.0),
             ("送料行程", "feed stroke", "mm", "feed.output.stroke", _MM),
             ("送料 K", "feed K", "", "feed.time_ratio", 1.0),
@@ -81,7 +81,7 @@ _ENTRIES: dict[str, Entry | str] = {
     "die_cutter": Entry(
         "die_cutter", _B + "die_cutter:DieCutterBrief", _B + "die_cutter:die_cutter_to_si",
         _M + "die_cutter:stages", _M + "die_cutter:results_document", _R + "die_cutter_report",
-        "die_cutter.yaml", (
+        "die_cutter.yaml", results=_M + "die_cutter:DieCutterResults", summary=(
             ("曲柄", "crank", "mm", "toggle.crank", _MM),
             ("行程", "stroke", "mm", "press.output.stroke", _MM),
             ("K", "K", "", "press.time_ratio", 1.0),

@@ -206,13 +206,6 @@ class Morphology:
         """Index (from 0) of the chosen option of each function."""
         return tuple(f.chosen for f in self.functions)
 
-    def document(self) -> dict:
-        """For ``results.json``."""
-        return {"functions": [{"name_zh": f.name_zh, "name_en": f.name_en,
-                               "options": [list(o) for o in f.options], "chosen": f.chosen}
-                              for f in self.functions],
-                "counts": list(self.counts), "scheme_count": self.scheme_count}
-
 
 def morphology_to_si(m: MorphologySection) -> Morphology:
     return Morphology(tuple(MorphFunctionData(f.name_zh, f.name_en,

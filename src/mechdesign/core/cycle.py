@@ -28,6 +28,7 @@ from typing import Iterable, NamedTuple, Sequence
 import numpy as np
 
 from .errors import DesignError
+from .fields import q
 
 TWO_PI = 2.0 * np.pi
 #: Angles this close to a phase boundary count as lying on it [rad].
@@ -478,17 +479,62 @@ def timing_disagreement(a: Actuator, b: Actuator, by: str = "state") -> float:
 # --------------------------------------------------------------------------- results.json
 
 
-def cycle_document(cycle: CycleDiagram, checks: Sequence[ConstraintCheck] | None = None) -> dict:
-    """The cycle diagram for ``results.json`` (SI: rad, s)."""
+@dataclass(frozen=True)
+class PhaseDoc:
+    """One phase of an actuator in ``results.json``."""
+
+    state: str = q("", "rise, dwell_high, return, dwell_low (a reciprocating output); move, dwell")
+    start: float = q("rad", "shaft angle φ where the phase begins, in [0, 2π)")
+    span: float = q("rad", "shaft angle Δφ the phase lasts")
+    duration: float = q("s", "Δφ/ω")
+    label_zh: str = q("", "label shown instead of the state's name (zh), or empty")
+    label_en: str = q("", "the same in English")
+
+
+@dataclass(frozen=True)
+class ActuatorDoc:
+    """An actuator (执行构件) of the cycle diagram and its consecutive phases."""
+
+    key: str = q("", "the actuator's key")
+    name_zh: str = q("", "its name (zh)")
+    name_en: str = q("", "its name (en)")
+    phases: tuple[PhaseDoc, ...] = q("", "consecutive phases covering one revolution")
+
+
+@dataclass(frozen=True)
+class ConstraintDoc:
+    """A timing requirement between two phases and whether the diagram meets it."""
+
+    kind: str = q("", "'before' (a ends ≥ margin before b starts) or 'during' (a inside b)")
+    a: str = q("", "phase a as actuator.state[#occurrence]")
+    b: str = q("", "phase b, the same way")
+    margin: float = q("rad", "required margin")
+    ok: bool = q("", "met")
+    slack: float = q("rad", "≥ 0: how far the timing may shift before it fails; < 0: the miss")
+
+
+@dataclass(frozen=True)
+class CycleDocument:
+    """The motion cycle diagram (运动循环图) in ``results.json`` (SI: rad, s)."""
+
+    shaft_speed: float = q("rad/s", "ω of the distribution shaft")
+    period: float = q("s", "cycle time T = 2π/ω")
+    origin: float = q("rad", "shaft angle where the diagram starts")
+    actuators: tuple[ActuatorDoc, ...] = q("", "the actuators and their phases")
+    constraints: tuple[ConstraintDoc, ...] = q("", "the timing requirements checked")
+
+
+def cycle_document(cycle: CycleDiagram, checks: Sequence[ConstraintCheck] | None = None,
+                   cls: type = CycleDocument, **extra) -> CycleDocument:
+    """The cycle diagram for ``results.json`` (SI: rad, s). A machine that adds its own
+    fields passes a subclass of :class:`CycleDocument` as ``cls`` and their values."""
     checks = check_constraints(cycle) if checks is None else checks
-    return {
-        "shaft_speed": cycle.shaft_speed, "period": cycle.period, "origin": cycle.origin,
-        "actuators": [{"key": a.key, "name_zh": a.name_zh, "name_en": a.name_en,
-                       "phases": [{"state": p.state, "start": p.start, "span": p.span,
-                                   "duration": p.span / cycle.shaft_speed,
-                                   "label_zh": p.label_zh, "label_en": p.label_en}
-                                  for p in a.phases]} for a in cycle.actuators],
-        "constraints": [{"kind": c.constraint.kind, "a": str(c.constraint.a),
-                         "b": str(c.constraint.b), "margin": c.constraint.margin,
-                         "ok": c.ok, "slack": c.slack} for c in checks],
-    }
+    return cls(
+        shaft_speed=cycle.shaft_speed, period=cycle.period, origin=cycle.origin,
+        actuators=tuple(ActuatorDoc(a.key, a.name_zh, a.name_en, tuple(
+            PhaseDoc(p.state, p.start, p.span, p.span / cycle.shaft_speed, p.label_zh,
+                     p.label_en) for p in a.phases)) for a in cycle.actuators),
+        constraints=tuple(ConstraintDoc(c.constraint.kind, str(c.constraint.a),
+                                        str(c.constraint.b), c.constraint.margin, c.ok, c.slack)
+                          for c in checks),
+        **extra)

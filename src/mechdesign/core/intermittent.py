@@ -35,6 +35,7 @@ from math import gcd
 import numpy as np
 
 from .errors import DesignError
+from .fields import q
 
 TWO_PI = 2.0 * np.pi
 DEG = 180.0 / np.pi
@@ -447,22 +448,67 @@ def design_incomplete_gear(module: float, z1: int | None = None, z2: int | None 
                           None if advance is None else float(advance), tuple(notes))
 
 
-def intermittent_document(g: IncompleteGear) -> dict:
+@dataclass(frozen=True)
+class IntermittentTimes:
+    """Times at the driver speed."""
+
+    period: float = q("s", "cycle time T = 2π/ω1")
+    motion: float = q("s", "t_m = φ_m/ω1")
+    dwell: float = q("s", "t_d = φ_d/ω1")
+
+
+@dataclass(frozen=True)
+class EngagementJumpDoc:
+    """The speed jump at engagement (per radian of driver angle without a driver speed)."""
+
+    omega2: float = q("rad/s or 1", "Δω2 = ω1·z1/z2 (dφ2/dθ without a driver speed)")
+    pitch_speed: float = q("m/s or m", "pitch-line speed ω1·r1 reached at once")
+    chain_speed: float | None = q("m/s or m", "chain speed jump R_s·Δω2, with a sprocket")
+    per_radian: bool = q("", "true: no driver speed, the values are per radian of driver angle")
+
+
+@dataclass(frozen=True)
+class IntermittentDocument:
+    """An incomplete gear (不完全齿轮) drive in ``results.json`` (SI: m, rad, rad/s, s)."""
+
+    module: float = q("m", "module m")
+    z1: int = q("1", "teeth the driver would have if complete")
+    z2: int = q("1", "teeth of the driven wheel")
+    teeth: int = q("1", "teeth present on the driver z1'")
+    r1: float = q("m", "driver's pitch radius m·z1/2")
+    r2: float = q("m", "driven wheel's pitch radius m·z2/2")
+    ra1: float = q("m", "driver's tip radius")
+    ra2: float = q("m", "driven wheel's tip radius")
+    centre_distance: float = q("m", "a = m(z1 + z2)/2")
+    locking_radius: float = q("m", "radius R_L of the locking arcs")
+    motion_start: float = q("rad", "shaft angle where meshing begins")
+    motion_angle: float = q("rad", "φ_m = 2π·z1'/z1")
+    dwell_angle: float = q("rad", "φ_d = 2π − φ_m")
+    advance: float = q("rad", "Δφ2 = 2π·z1'/z2 per cycle")
+    feed: float | None = q("m", "chain feed per cycle R_s·Δφ2, with a sprocket")
+    sprocket_radius: float | None = q("m", "R_s, with a sprocket")
+    speed_ratio: float = q("1", "ω2/ω1 = z1/z2 while meshing")
+    motion_dwell_ratio: float = q("1", "k = t_m/t_d (动停比)")
+    tau: float = q("1", "τ = t_m/T (运动系数)")
+    stations: int | None = q("1", "dwell positions per driven revolution z2/z1' (null: not whole)")
+    driver_speed: float | None = q("rad/s", "ω1, when known")
+    times: IntermittentTimes | None = q("", "times at the driver speed, when known")
+    engagement_jump: EngagementJumpDoc = q("", "speed jump at engagement")
+    notes: tuple[str, ...] = q("", "codes of the design notes (undercut, stations)")
+
+
+def intermittent_document(g: IncompleteGear) -> IntermittentDocument:
     """The incomplete gear for ``results.json`` (SI: m, rad, rad/s, s)."""
     jump = g.engagement_jump()
     times = g.times()
-    return {
-        "module": g.module, "z1": g.z1, "z2": g.z2, "teeth": g.teeth,
-        "r1": g.r1, "r2": g.r2, "ra1": g.ra1, "ra2": g.ra2, "centre_distance": g.centre_distance,
-        "locking_radius": g.locking_radius, "motion_start": g.motion_start,
-        "motion_angle": g.motion_angle, "dwell_angle": g.dwell_angle, "advance": g.advance,
-        "feed": g.feed, "sprocket_radius": g.sprocket_radius, "speed_ratio": g.speed_ratio,
-        "motion_dwell_ratio": g.motion_dwell_ratio, "tau": g.tau, "stations": g.stations,
-        "driver_speed": g.driver_speed,
-        "times": None if times is None else {"period": times[0], "motion": times[1],
-                                             "dwell": times[2]},
-        "engagement_jump": {"omega2": jump.omega2, "pitch_speed": jump.pitch_speed,
-                            "chain_speed": jump.chain_speed,
-                            "per_radian": g.driver_speed is None},
-        "notes": [n.code for n in g.notes],
-    }
+    return IntermittentDocument(
+        module=g.module, z1=g.z1, z2=g.z2, teeth=g.teeth, r1=g.r1, r2=g.r2, ra1=g.ra1,
+        ra2=g.ra2, centre_distance=g.centre_distance, locking_radius=g.locking_radius,
+        motion_start=g.motion_start, motion_angle=g.motion_angle, dwell_angle=g.dwell_angle,
+        advance=g.advance, feed=g.feed, sprocket_radius=g.sprocket_radius,
+        speed_ratio=g.speed_ratio, motion_dwell_ratio=g.motion_dwell_ratio, tau=g.tau,
+        stations=g.stations, driver_speed=g.driver_speed,
+        times=None if times is None else IntermittentTimes(*times),
+        engagement_jump=EngagementJumpDoc(jump.omega2, jump.pitch_speed, jump.chain_speed,
+                                          g.driver_speed is None),
+        notes=tuple(n.code for n in g.notes))

@@ -42,7 +42,10 @@ from ..core.synthesis import extreme_angle
 from ..pipeline import Stage
 from .findings import Finding
 from ..stages.flywheel import Flywheel, FlywheelSpec, RimSpec, design_flywheel
-from .linkage import LinkageModel, Output, Resistance, linkage_stages
+from ..core.cycle import CycleDocument
+from ..core.fields import q
+from ..core.intermittent import IntermittentDocument
+from .linkage import LinkageDocument, LinkageModel, Output, Resistance, linkage_stages
 
 TWO_PI = 2.0 * np.pi
 DEG = 180.0 / np.pi
@@ -241,11 +244,11 @@ class PlatenTiming:
     """Crank phases (from position 1, the platen's bottom) where the platen crosses the
     clearance level H − c and the pressing level H − t, rising and falling [rad]."""
 
-    clear_up: float
-    press_up: float
-    top: float
-    press_down: float
-    clear_down: float
+    clear_up: float = q("rad", "rising, the platen reaches the clearance level H − c")
+    press_up: float = q("rad", "rising, it reaches the pressing level H − t (the cut begins)")
+    top: float = q("rad", "its top (end of the rise)")
+    press_down: float = q("rad", "falling, it leaves the pressing level")
+    clear_down: float = q("rad", "falling, it is back below the clearance level")
 
     @property
     def clear_span(self) -> float:
@@ -362,7 +365,19 @@ def _drive(r: dict):
                         j if j < shafts else None)
 
 
-def peak_shafts(drive) -> tuple:
+@dataclass(frozen=True)
+class PeakShaft:
+    """A drive shaft after the flywheel, which carries the peak of M_b."""
+
+    index: int = q("1", "drive shaft index (0 the motor shaft)")
+    speed_rpm: float = q("rpm", "its speed")
+    torque: float = q("N·m", "its torque from the mean power (the drive stage's)")
+    peak_torque: float = q("N·m", "the same × the peak factor max|M_b| / mean M_b")
+    d_seat: float = q("m", "seat diameter the drive design chose")
+    d_peak: float = q("m", "torsion estimate A0·∛(P/n) with the peak power")
+
+
+def peak_shafts(drive) -> tuple[PeakShaft, ...]:
     """The shafts after the flywheel carry the peak of M_b: their torsion estimate
     d ≥ A0 ∛(P/n) (the drive stage's, from the mean power) against the same estimate with the
     peak power T_peak·ω."""
@@ -379,7 +394,7 @@ def peak_shafts(drive) -> tuple:
         sh = drive.shafts[sd.index]
         peak = sh.torque * drive.peak_factor
         d_peak = shaft_min_diameter(peak * sh.speed_rpm * np.pi / 30.0, sh.speed_rpm, A0, KEYWAY)
-        out.append((sd.index, sh.speed_rpm, sh.torque, peak, sd.d_seat, d_peak))
+        out.append(PeakShaft(sd.index, sh.speed_rpm, sh.torque, peak, sd.d_seat, d_peak))
     return tuple(out)
 
 
@@ -523,21 +538,26 @@ def cycle(amp: Amplification, fd: Feed, cam, p: DieCutterParams) -> CycleResult:
 class DieVerification:
     """The machine's own checks (the shared linkage checks are in ``press_verification``)."""
 
-    stroke_simulated: float     # by the linkage engine's position search [m]
-    stroke_error: float         # simulated − H [m]
-    K_position_search: float    # K from the position search (limited by the flat top, see K_search_tol)
-    top_toggle_angle: float     # angle of CB from the guide at the simulated top [rad]
-    amplification_error: float  # kinetostatics vs virtual-work closed form (relative)
-    energy_ratio: float         # ∮ M_b dφ / (F_c t)
-    platen_mismatch: float      # shaft angle where the diagram's platen row disagrees with s(φ) [rad]
-    gripper_mismatch: float     # … its gripper row with the cam's lift
-    chain_mismatch: float       # … its chain row with the incomplete gear's motion
-    feed_error: float           # chain feed − bar spacing [m]
-    grid_step: float            # [rad]
-    top_order: float            # n in H − s ≈ c Δφⁿ near the top (4: toggle straight at the dead centre)
-    search_angle_tol: float     # how closely a position search can place such a top [rad]
-    K_search_tol: float         # the time ratio's resulting uncertainty
-    K_velocity_tol: float       # the same for the zeros of v_D ∝ Δφⁿ⁻¹ (the motion stage's K)
+    stroke_simulated: float = q("m", "stroke by the linkage engine's position search")
+    stroke_error: float = q("m", "simulated stroke − H")
+    K_position_search: float = q("1", "K from the position search (limited by the flat top, "
+                                      "see K_search_tol)")
+    top_toggle_angle: float = q("rad", "angle of CB from the guide at the simulated top")
+    amplification_error: float = q("1", "max |kinetostatics − virtual-work closed form| / "
+                                        "max |closed form| of M/F over the rise")
+    energy_ratio: float = q("1", "∮ M_b dφ / (F_c·t)")
+    platen_mismatch: float = q("rad", "shaft angle where the diagram's platen row disagrees "
+                                      "with the simulated s(φ)")
+    gripper_mismatch: float = q("rad", "… where its gripper row disagrees with the cam's lift")
+    chain_mismatch: float = q("rad", "… where its chain row disagrees with the incomplete "
+                                     "gear's motion")
+    feed_error: float = q("m", "chain feed − bar spacing")
+    grid_step: float = q("rad", "crank-angle step of the grid")
+    top_order: float = q("1", "n in H − s ≈ c·Δφⁿ near the top (4: the toggle straight at the "
+                              "dead centre)")
+    search_angle_tol: float = q("rad", "how closely a position search can place such a top")
+    K_search_tol: float = q("1", "the resulting uncertainty of K_position_search")
+    K_velocity_tol: float = q("1", "the same for the zeros of v_D ∝ Δφⁿ⁻¹ (press.time_ratio)")
 
 
 def verify(model: LinkageModel, d: ToggleDesign, k, v_link, amp: Amplification, fd: Feed,
@@ -621,9 +641,111 @@ def stages(params: DieCutterParams) -> list[Stage]:
     ]
 
 
-def results_document(r: dict) -> dict:
+@dataclass(frozen=True)
+class ToggleDoc:
+    """The toggle press's dimensions and placement (C at the origin, y up)."""
+
+    swing: float = q("rad", "ψ of the toggle CB (the four-bar's rocker)")
+    theta: float = q("rad", "extreme-position angle θ = π(K − 1)/(K + 1)")
+    crank: float = q("m", "L_O1A")
+    coupler: float = q("m", "L_AB")
+    toggle_CB: float = q("m", "L_CB")
+    toggle_BD: float = q("m", "L_BD")
+    frame_O1C: float = q("m", "L_O1C")
+    O1: complex = q("m", "crank pivot O1")
+    B_top: complex = q("m", "B with the platen at its top")
+    B_bottom: complex = q("m", "B with the platen at its bottom")
+    crank_top: float = q("rad", "crank angle at the platen's top, CCW from +x")
+    crank_bottom: float = q("rad", "crank angle at the platen's bottom")
+    branch: int = q("1", "assembly branch (±1) of the RRR group A, C → B")
+    mirrored: bool = q("", "the θ-circle drawing mirrored so that the rise is the slow stroke")
+    gamma_min: float = q("rad", "γ_min of the four-bar O1ABC (closed form)")
+    top_height: float = q("m", "platen D above C at the top")
+    bottom_height: float = q("m", "platen D above C at the bottom")
+    top_position: str = q("", "'extended' or 'folded': the crank-rocker extreme at the top")
+
+
+@dataclass(frozen=True)
+class AmplificationRow:
+    """The force amplification at a gap to the top."""
+
+    gap: float = q("m", "platen's gap to its top")
+    phase: float = q("rad", "crank phase from position 1 where the gap is reached")
+    torque_per_force: float = q("m", "M/F, crank torque per newton on the platen")
+    force_per_torque: float = q("1/m", "F/M")
+    ratio: float = q("1", "Π = L_O1A·F/M")
+
+
+@dataclass(frozen=True)
+class AmplificationDoc:
+    """Force amplification (增力特性): the pressing force per unit crank torque."""
+
+    platen_timing: PlatenTiming = q("", "crank phases from position 1 (the platen's bottom) "
+                                        "of the platen's level crossings")
+    unit_torque_grid: np.ndarray = q("m", "M/F by kinetostatics (links massless) over the grid")
+    required_torque_grid: np.ndarray = q("N·m", "F_c·M/F where the cutting force acts, 0 elsewhere")
+    peak_required_torque: float = q("N·m", "max of required_torque_grid")
+    peak_phase: float = q("rad", "crank phase of that peak")
+    table: tuple[AmplificationRow, ...] = q("", "from the start of pressing to 0.01 mm below the top")
+    cut_work: float = q("J", "F_c·t")
+    cycle_work: float = q("J", "∮ M_b dφ")
+    press_time: float = q("s", "time the cutting force acts")
+
+
+@dataclass(frozen=True)
+class FeedDoc:
+    """The incomplete gear placed on the shaft, and the gripper chain it drives."""
+
+    gear: IntermittentDocument = q("", "the incomplete gear")
+    start_auto: bool = q("", "the gear's meshing start placed automatically (centred in "
+                                  "the platen's clear span)")
+    sprocket_radius: float = q("m", "R_s = p / (2 sin(π/z_s))")
+    feed: float = q("m", "chain travel per cycle Δφ2/2π·z_s·p")
+    chain_speed: float = q("m/s", "mean chain speed while it moves")
+    chain_jump: float = q("m/s", "chain speed reached at once at engagement R_s·Δω2")
+
+
+@dataclass(frozen=True)
+class DieCutterCycle(CycleDocument):
+    """The motion cycle diagram of the platen, the grippers and the chain."""
+
+    gripper_start: float = q("rad", "shaft angle where the gripper cam's rise begins")
+    gripper_auto: bool = q("", "that angle placed automatically (mid-dwell of the chain)")
+
+
+@dataclass(frozen=True)
+class DieCutterResults:
+    """Semi-automatic flat die-cutter (半自动平压模切机). One distribution shaft drives the
+    toggle press (crank O1A 2, coupler AB 3, toggle links CB 4 and BD 5, lower platen D 6 on
+    a vertical guide through C), the gripper cam and the incomplete gear of the gripper
+    chain. Frame: C at the origin, y up; crank phases from position 1, the platen's bottom;
+    `press` is the linkage engine's result of the press with the platen rising (+y) as the
+    working stroke."""
+
+    schema: str = q("", "'mechdesign.results/2'")
+    machine: str = q("", "'die_cutter'")
+    units: str = q("", "reminder of the unit system")
+    shaft_speed_rpm: float = q("rpm", "distribution shaft speed (one turn per sheet)")
+    cutting_force: float = q("N", "die-cutting resistance F_c")
+    pressing_travel: float = q("m", "last part t of the rise over which F_c acts")
+    clearance: float = q("m", "gap c below the top the platen must reach before the sheet moves")
+    toggle: ToggleDoc = q("", "the toggle press's synthesis")
+    press: LinkageDocument = q("", "the press on the linkage engine (no flywheel here: see flywheel)")
+    amplification: AmplificationDoc = q("", "force amplification")
+    flywheel: Flywheel = q("", "the flywheel (the one flywheel stage) on the drive shaft chosen")
+    peak_shafts: tuple[PeakShaft, ...] = q("", "shafts after the flywheel carrying the peak of M_b")
+    drive: dict = q("", "the drive (motor → … → distribution shaft)")
+    cam: dict = q("", "the gripper-opening cam")
+    feed: FeedDoc = q("", "the incomplete-gear chain feed")
+    cycle: DieCutterCycle = q("", "the motion cycle diagram")
+    verification: DieVerification = q("", "the machine's own self-checks (the press's are in "
+                                          "press.verification)")
+
+
+def results_document(r: dict) -> DieCutterResults:
     """Everything computed, in SI units, for ``results.json``."""
     from ..core.intermittent import intermittent_document
+    from ..results import SCHEMA, UNITS_NOTE
     from .cam import cam_document
     from .drive import drive_document
     from .linkage import linkage_document
@@ -633,45 +755,24 @@ def results_document(r: dict) -> dict:
     p = r["params"]
     fb = d.four
     n = r["press"].grid_size
-    return {
-        "schema": "mechdesign.results/1",
-        "machine": "die_cutter",
-        "units": "SI: m, s, rad, kg, N, N·m, J, W; complex vectors as [x, y]",
-        "shaft_speed_rpm": p.shaft_rpm,
-        "cutting_force": p.cutting_force, "pressing_travel": p.pressing_travel,
-        "clearance": p.clearance,
-        "toggle": {
-            "swing": d.swing, "theta": d.theta, "crank": fb.crank, "coupler": fb.coupler,
-            "toggle_CB": fb.rocker, "toggle_BD": d.geometry.toggle_BD, "frame_O1C": fb.frame,
-            "O1": d.O1, "B_top": d.B_top, "B_bottom": d.B_bottom, "crank_top": d.crank_top,
-            "crank_bottom": d.crank_bottom, "branch": d.branch, "mirrored": d.mirrored,
-            "gamma_min": d.gamma_min, "top_height": d.top_height,
-            "bottom_height": d.bottom_height, "top_position": d.geometry.top_position,
-        },
-        "press": linkage_document(r["press_model"], r["press"], r["press_forces"], None,
-                                  r["press_verification"]),
-        "amplification": {
-            "platen_timing": {key: getattr(amp.timing, key) for key in (
-                "clear_up", "press_up", "top", "press_down", "clear_down")},
-            "unit_torque_grid": amp.unit_torque[:n], "required_torque_grid": amp.required_torque[:n],
-            "peak_required_torque": amp.peak_required, "peak_phase": amp.peak_phase,
-            "table": [{"gap": g, "phase": ph, "torque_per_force": u, "force_per_torque": fpt,
-                       "ratio": rt} for g, ph, u, fpt, rt in amp.table],
-            "cut_work": amp.cut_work, "cycle_work": amp.cycle_work, "press_time": amp.press_time,
-        },
-        "flywheel": {
-            "shaft": fl.shaft, "speed_ratio": fl.speed_ratio, "shaft_speed_rpm": fl.shaft_speed_rpm,
-            "mean_torque": fl.mean_torque, "max_energy_swing": fl.max_energy_swing,
-            "fluctuation": fl.fluctuation, "inertia": fl.inertia,
-            "inertia_on_crank": fl.inertia_on_crank, "rim": fl.rim,
-            "phase_at_min": fl.phase_at_min, "phase_at_max": fl.phase_at_max,
-        },
-        "drive": drive_document(r["drive"]),
-        "cam": cam_document(r["cam"]),
-        "feed": {"gear": intermittent_document(fd.gear), "start_auto": fd.start_auto,
-                 "sprocket_radius": fd.sprocket_radius, "feed": fd.feed,
-                 "chain_speed": fd.chain_speed, "chain_jump": fd.chain_jump},
-        "cycle": cy.cycle_document(cyc.diagram, cyc.checks) | {
-            "gripper_start": cyc.gripper_start, "gripper_auto": cyc.gripper_auto},
-        "verification": v,
-    }
+    return DieCutterResults(
+        schema=SCHEMA, machine="die_cutter", units=UNITS_NOTE,
+        shaft_speed_rpm=p.shaft_rpm, cutting_force=p.cutting_force,
+        pressing_travel=p.pressing_travel, clearance=p.clearance,
+        toggle=ToggleDoc(d.swing, d.theta, fb.crank, fb.coupler, fb.rocker, d.geometry.toggle_BD,
+                         fb.frame, d.O1, d.B_top, d.B_bottom, d.crank_top, d.crank_bottom,
+                         d.branch, d.mirrored, d.gamma_min, d.top_height, d.bottom_height,
+                         d.geometry.top_position),
+        press=linkage_document(r["press_model"], r["press"], r["press_forces"], None,
+                               r["press_verification"]),
+        amplification=AmplificationDoc(
+            amp.timing, amp.unit_torque[:n], amp.required_torque[:n], amp.peak_required,
+            amp.peak_phase, tuple(AmplificationRow(*row) for row in amp.table), amp.cut_work,
+            amp.cycle_work, amp.press_time),
+        flywheel=fl, peak_shafts=r["peak_shafts"],
+        drive=drive_document(r["drive"]), cam=cam_document(r["cam"]),
+        feed=FeedDoc(intermittent_document(fd.gear), fd.start_auto, fd.sprocket_radius, fd.feed,
+                     fd.chain_speed, fd.chain_jump),
+        cycle=cy.cycle_document(cyc.diagram, cyc.checks, DieCutterCycle,
+                                gripper_start=cyc.gripper_start, gripper_auto=cyc.gripper_auto),
+        verification=v)

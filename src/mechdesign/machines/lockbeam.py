@@ -32,7 +32,9 @@ from ..core.mechanism import RPR, RRP, RRR, Crank, LinkPoint, Mechanism
 from ..pipeline import Stage
 from .cam import cam_document, cam_stage, design as design_cam
 from .findings import Finding
-from .linkage import closure_residual, linkage_document, linkage_stages
+from ..core.cycle import CycleDocument
+from ..core.fields import q
+from .linkage import LinkageDocument, closure_residual, linkage_document, linkage_stages
 
 TWO_PI = 2.0 * np.pi
 DEG = 180.0 / np.pi
@@ -55,10 +57,12 @@ class TrainStage:
 
 @dataclass(frozen=True)
 class Shaft:
-    index: int                  # 0 the motor shaft
-    speed_rpm: float
-    power: float | None         # [W]
-    torque: float | None        # [N·m]
+    """A shaft of the transmission (powers and torques only with the motor power given)."""
+
+    index: int = q("1", "0 the motor shaft, then one per stage")
+    speed_rpm: float = q("rpm", "its speed")
+    power: float | None = q("W", "power on it, when the brief gives the motor power")
+    torque: float | None = q("N·m", "torque on it, the same")
 
 
 @dataclass(frozen=True)
@@ -662,64 +666,249 @@ def stages(params: LockbeamParams) -> list[Stage]:
     ]
 
 
-def _c(z) -> list[float]:
-    return [float(np.real(z)), float(np.imag(z))]
+@dataclass(frozen=True)
+class TrainStageDoc:
+    """One stage of the transmission."""
+
+    kind: str = q("", "'belt' or 'gear'")
+    driver: float = q("m or 1", "driving pulley diameter (belt) or pinion teeth z1 (gear)")
+    driven: float = q("m or 1", "driven pulley diameter or wheel teeth z2")
+    ratio: float = q("1", "nominal n_in / n_out")
+    speed_in_rpm: float = q("rpm", "input speed")
+    speed_out_rpm: float = q("rpm", "output speed (no slip)")
+    centre_distance: float | None = q("m", "a of a gear pair (null for a belt)")
+    contact_ratio: float | None = q("1", "ε_α of a gear pair (null for a belt)")
 
 
-def results_document(r: dict) -> dict:
+@dataclass(frozen=True)
+class TransmissionDoc:
+    """The transmission (传动系统): motor → belt → spur gears → main shaft."""
+
+    stages: tuple[TrainStageDoc, ...] = q("", "the stages from the motor")
+    ratio: float = q("1", "total ratio (product of the stage ratios)")
+    ratio_exact: str = q("", "the same as an exact fraction")
+    output_rpm: float = q("rpm", "main-shaft speed (no slip)")
+    output_rpm_with_slip: float = q("rpm", "main-shaft speed with the belt's elastic slip")
+    shafts: tuple[Shaft, ...] = q("", "the shafts from the motor's")
+
+
+@dataclass(frozen=True)
+class PinDoc:
+    """The positioning pin's lift against the groove depth."""
+
+    lift: float = q("m", "the pin's lift (the positioning cam's stroke)")
+    required: float = q("m", "groove depth (d1 − d2)/2 it must exceed")
+
+
+@dataclass(frozen=True)
+class RangeDoc:
+    min: float = q("1", "least value")
+    max: float = q("1", "largest value")
+
+
+@dataclass(frozen=True)
+class RoundedDoc:
+    """The design with its lengths rounded as drawn, assembled at the same input start."""
+
+    input_rocker: float = q("m", "L_A0A rounded")
+    coupler: float = q("m", "L_AB rounded")
+    output_start: float = q("rad", "β1 of the rounded linkage")
+    swing: float = q("rad", "|Δβ| the cam's swing then gives")
+    bend: float = q("rad", "the bending angle that gives")
+    gamma_min: float = q("rad", "γ_min over the swing")
+    input_swing_needed: float | None = q("rad", "cam swing for exactly the required Δβ")
+
+
+@dataclass(frozen=True)
+class CandidateDoc:
+    """A synthesis candidate, one per output sense."""
+
+    sense: str = q("", "'same' or 'opposite': the output turns the input's way or not")
+    gamma_min: float = q("rad", "its γ_min (0 without a design)")
+    message: str = q("", "why there is no design, or empty")
+    input_rocker: float | None = q("m", "L_A0A")
+    coupler: float | None = q("m", "L_AB")
+
+
+@dataclass(frozen=True)
+class SeedStartDoc:
+    input_start: float = q("rad", "α1 of a start giving the required swing")
+    output_start: float = q("rad", "β1 there")
+    gamma_min: float = q("rad", "γ_min over the swing from that start")
+
+
+@dataclass(frozen=True)
+class SeedDoc:
+    """The seed's graphical lengths checked over the swing."""
+
+    input_rocker: float = q("m", "the seed's L_A0A")
+    coupler: float = q("m", "the seed's L_AB")
+    grashof: str = q("", "Grashof type of the seed's four-bar")
+    swing_range: tuple[float, float] = q("rad", "least and largest |Δβ| over every start that "
+                                                "moves through the whole input swing")
+    starts: tuple[SeedStartDoc, ...] = q("", "starts giving exactly the required swing")
+
+
+@dataclass(frozen=True)
+class BendingCycleDoc:
+    """The bending wheel over the main-shaft cycle (uniform grid)."""
+
+    shaft_angle: np.ndarray = q("rad", "main-shaft angle φ")
+    wheel_angle: np.ndarray = q("rad", "bending wheel from its start, in the bending sense")
+    wheel_omega: np.ndarray = q("rad/s", "its angular velocity")
+    wheel_alpha: np.ndarray = q("rad/s²", "its angular acceleration")
+
+
+@dataclass(frozen=True)
+class BendingDoc:
+    """The bending double rocker (扳弯机构): input rocker A0A (cam-driven) 2, coupler AB 3,
+    output rocker B0B 4 (chained to the bending wheel); A0 at the origin, B0 on +x."""
+
+    frame: float = q("m", "L_A0B0")
+    input_rocker: float = q("m", "L_A0A")
+    coupler: float = q("m", "L_AB")
+    output_rocker: float = q("m", "L_B0B")
+    input_start: float = q("rad", "α1, input rocker at the start")
+    input_swing: float = q("rad", "Δα, the bending cam's swing")
+    output_start: float = q("rad", "β1")
+    output_swing: float = q("rad", "Δβ, signed (negative: clockwise)")
+    branch: int = q("1", "assembly branch (±1)")
+    sense: str = q("", "'same' or 'opposite': the chosen output sense")
+    chain_ratio: float = q("1", "i = D_driving / D_bending")
+    swing_simulated: float = q("rad", "Δβ simulated over the input swing, signed")
+    bend_simulated: float = q("rad", "largest bending-wheel angle over the main-shaft cycle")
+    gamma_min: float = q("rad", "γ_min over the swing")
+    gamma_max: float = q("rad", "γ_max over the swing")
+    grashof: str = q("", "Grashof type of the four-bar")
+    velocity_ratio: RangeDoc = q("", "least and largest |dβ/dα| over the swing")
+    rounded: RoundedDoc | None = q("", "the lengths rounded as drawn, when the brief rounds")
+    candidates: tuple[CandidateDoc, ...] = q("", "the synthesis candidates")
+    seed: SeedDoc | None = q("", "the seed's lengths checked, when the brief gives them")
+    cycle: BendingCycleDoc = q("", "over the main-shaft cycle")
+
+
+@dataclass(frozen=True)
+class FeedTableDoc:
+    """The seed's table of the feed linkage: every 10° of crank angle (NaN → null where the
+    linkage has no guide bar or rod)."""
+
+    crank_angle: np.ndarray = q("rad", "crank angle CCW from +x")
+    x: np.ndarray = q("m", "slider x")
+    v: np.ndarray = q("m/s", "slider velocity along x")
+    a: np.ndarray = q("m/s²", "slider acceleration along x")
+    bar_omega: np.ndarray = q("rad/s", "guide bar ω")
+    bar_alpha: np.ndarray = q("rad/s²", "guide bar α")
+    rod_omega: np.ndarray = q("rad/s", "rod ω")
+    rod_alpha: np.ndarray = q("rad/s²", "rod α")
+
+
+@dataclass(frozen=True)
+class LockbeamCycle(CycleDocument):
+    """The brief's motion cycle diagram and its agreement with the cams and the feed."""
+
+    cam_timing_error: dict[str, float] = q("1", "actuator key → largest deviation of its cam "
+                                                "from the diagram's phases / stroke")
+    feed_span_simulated: float = q("rad", "the feed linkage's working stroke (shaft angle)")
+    pin_lift_while_bending: float = q("m", "least pin lift while the bending wheel turns")
+
+
+@dataclass(frozen=True)
+class MorphFunctionDoc:
+    name_zh: str = q("", "the function (zh)")
+    name_en: str = q("", "the function (en)")
+    options: tuple[tuple[str, str], ...] = q("", "candidate mechanisms as [zh, en]")
+    chosen: int = q("1", "index (from 0) of the chosen option")
+
+
+@dataclass(frozen=True)
+class MorphologyDoc:
+    """The morphological matrix (形态学矩阵)."""
+
+    functions: tuple[MorphFunctionDoc, ...] = q("", "the functions and their options")
+    counts: tuple[int, ...] = q("1", "options per function k_i")
+    scheme_count: int = q("1", "N = Π k_i")
+
+
+@dataclass(frozen=True)
+class LockbeamResults:
+    """Lock-beam bender (锁梁自动成型机床扳弯机构). One main shaft turns once per part: the
+    transmission drives it; on it the positioning cam (pin), the bending cam (double rocker
+    → chain → bending wheel) and the feed linkage's crank (`feed`: the linkage engine's
+    result, crank angles from its position 1). Shaft angles φ of the cycle diagram from its
+    origin; SI units, speeds in rpm where the key says so."""
+
+    schema: str = q("", "'mechdesign.results/2'")
+    machine: str = q("", "'lockbeam'")
+    units: str = q("", "reminder of the unit system")
+    main_shaft_rpm: float = q("rpm", "main-shaft speed (the production rate, parts per minute)")
+    transmission: TransmissionDoc = q("", "the transmission")
+    positioning_cam: dict = q("", "the positioning-pin cam")
+    pin: PinDoc = q("", "the pin's lift check")
+    bending_cam: dict = q("", "the bending cam (oscillating follower: the input rocker)")
+    bending: BendingDoc = q("", "the bending linkage")
+    feed: LinkageDocument = q("", "the feed linkage on the linkage engine")
+    feed_table: FeedTableDoc = q("", "the seed-format table of the feed linkage")
+    cycle: LockbeamCycle = q("", "the motion cycle diagram")
+    morphology: MorphologyDoc = q("", "the morphological matrix of the scheme")
+
+
+#: The lock-beam's units note (no energies in its results).
+UNITS = "SI: m, s, rad, kg, N, N·m, W; complex vectors as [x, y]"
+
+
+def morphology_document(m) -> MorphologyDoc:
+    """``m``: the brief's :class:`~mechdesign.brief.components.Morphology`."""
+    return MorphologyDoc(
+        tuple(MorphFunctionDoc(f.name_zh, f.name_en, tuple(tuple(o) for o in f.options),
+                               f.chosen) for f in m.functions),
+        tuple(m.counts), m.scheme_count)
+
+
+def results_document(r: dict) -> LockbeamResults:
+    from ..results import SCHEMA
+
     p: LockbeamParams = r["params"]
     tr, b, cyc, ft = r["transmission"], r["bending"], r["cycle"], r["feed_table"]
     ds = b.design
-    return {
-        "schema": "mechdesign.results/1",
-        "machine": "lockbeam",
-        "units": "SI: m, s, rad, kg, N, N·m, W; complex vectors as [x, y]",
-        "main_shaft_rpm": p.rate,
-        "transmission": {
-            "stages": [{"kind": s.kind, "driver": s.driver, "driven": s.driven, "ratio": s.ratio,
-                        "speed_in_rpm": s.speed_in, "speed_out_rpm": s.speed_out,
-                        "centre_distance": None if s.pair is None else s.pair.a,
-                        "contact_ratio": None if s.pair is None else s.pair.contact_ratio}
-                       for s in tr.stages],
-            "ratio": tr.ratio, "ratio_exact": str(tr.ratio_exact), "output_rpm": tr.output_rpm,
-            "output_rpm_with_slip": tr.output_rpm_slip,
-            "shafts": [{"index": s.index, "speed_rpm": s.speed_rpm, "power": s.power,
-                        "torque": s.torque} for s in tr.shafts]},
-        "positioning_cam": cam_document(r["cam"]),
-        "pin": {"lift": r["pin_check"].lift, "required": r["pin_check"].required},
-        "bending_cam": cam_document(r["bending_cam"]),
-        "bending": {
-            "frame": ds.frame, "input_rocker": ds.input_rocker, "coupler": ds.coupler,
-            "output_rocker": ds.output_rocker, "input_start": ds.alpha1, "input_swing": ds.dalpha,
-            "output_start": ds.beta1, "output_swing": ds.dbeta, "branch": ds.branch,
-            "sense": b.synthesis.sense, "chain_ratio": b.ratio,
-            "swing_simulated": b.swing_simulated, "bend_simulated": b.bend_simulated,
-            "gamma_min": b.gamma_min, "gamma_max": b.gamma_max, "grashof": b.grashof,
-            "velocity_ratio": {"min": float(np.min(np.abs(b.velocity_ratio))),
-                               "max": float(np.max(np.abs(b.velocity_ratio)))},
-            "rounded": None if b.rounded is None else {
-                "input_rocker": b.rounded.input_rocker, "coupler": b.rounded.coupler,
-                "output_start": b.rounded.beta1, "swing": b.rounded.swing, "bend": b.rounded.bend,
-                "gamma_min": b.rounded.gamma_min, "input_swing_needed": b.rounded.input_swing_needed},
-            "candidates": [{"sense": c[0], "gamma_min": c[2], "message": c[3],
-                            "input_rocker": None if c[1] is None else c[1].input_rocker,
-                            "coupler": None if c[1] is None else c[1].coupler}
-                           for c in b.synthesis.candidates],
-            "seed": None if b.seed is None else {
-                "input_rocker": b.seed.input_rocker, "coupler": b.seed.coupler,
-                "grashof": b.seed.grashof, "swing_range": list(b.seed.check.swing_range),
-                "starts": [{"input_start": s[0], "output_start": s[1], "gamma_min": s[2]}
-                           for s in b.seed.check.starts]},
-            "cycle": {"shaft_angle": b.shaft_angle, "wheel_angle": b.wheel_angle,
-                      "wheel_omega": b.wheel_omega, "wheel_alpha": b.wheel_alpha}},
-        "feed": linkage_document(p.feed, r["feed"], r["feed_forces"], r["feed_flywheel"],
-                                 r["feed_verification"]),
-        "feed_table": {"crank_angle": ft.crank_angle, "x": ft.x, "v": ft.v, "a": ft.a,
-                       "bar_omega": ft.bar_omega, "bar_alpha": ft.bar_alpha,
-                       "rod_omega": ft.rod_omega, "rod_alpha": ft.rod_alpha},
-        "cycle": {**cy.cycle_document(cyc.diagram, cyc.checks),
-                  "cam_timing_error": cyc.cam_timing_error,
-                  "feed_span_simulated": cyc.feed_span_simulated,
-                  "pin_lift_while_bending": cyc.pin_lift_while_bending},
-        "morphology": p.morphology.document(),
-    }
+    rd, seed = b.rounded, b.seed
+    return LockbeamResults(
+        schema=SCHEMA, machine="lockbeam", units=UNITS, main_shaft_rpm=p.rate,
+        transmission=TransmissionDoc(
+            stages=tuple(TrainStageDoc(
+                s.kind, s.driver, s.driven, s.ratio, s.speed_in, s.speed_out,
+                None if s.pair is None else s.pair.a,
+                None if s.pair is None else s.pair.contact_ratio) for s in tr.stages),
+            ratio=tr.ratio, ratio_exact=str(tr.ratio_exact), output_rpm=tr.output_rpm,
+            output_rpm_with_slip=tr.output_rpm_slip, shafts=tr.shafts),
+        positioning_cam=cam_document(r["cam"]),
+        pin=PinDoc(r["pin_check"].lift, r["pin_check"].required),
+        bending_cam=cam_document(r["bending_cam"]),
+        bending=BendingDoc(
+            frame=ds.frame, input_rocker=ds.input_rocker, coupler=ds.coupler,
+            output_rocker=ds.output_rocker, input_start=ds.alpha1, input_swing=ds.dalpha,
+            output_start=ds.beta1, output_swing=ds.dbeta, branch=ds.branch,
+            sense=b.synthesis.sense, chain_ratio=b.ratio, swing_simulated=b.swing_simulated,
+            bend_simulated=b.bend_simulated, gamma_min=b.gamma_min, gamma_max=b.gamma_max,
+            grashof=b.grashof,
+            velocity_ratio=RangeDoc(float(np.min(np.abs(b.velocity_ratio))),
+                                    float(np.max(np.abs(b.velocity_ratio)))),
+            rounded=None if rd is None else RoundedDoc(
+                rd.input_rocker, rd.coupler, rd.beta1, rd.swing, rd.bend, rd.gamma_min,
+                rd.input_swing_needed),
+            candidates=tuple(CandidateDoc(c[0], c[2], c[3],
+                                          None if c[1] is None else c[1].input_rocker,
+                                          None if c[1] is None else c[1].coupler)
+                             for c in b.synthesis.candidates),
+            seed=None if seed is None else SeedDoc(
+                seed.input_rocker, seed.coupler, seed.grashof, tuple(seed.check.swing_range),
+                tuple(SeedStartDoc(s[0], s[1], s[2]) for s in seed.check.starts)),
+            cycle=BendingCycleDoc(b.shaft_angle, b.wheel_angle, b.wheel_omega, b.wheel_alpha)),
+        feed=linkage_document(p.feed, r["feed"], r["feed_forces"], r["feed_flywheel"],
+                              r["feed_verification"]),
+        feed_table=FeedTableDoc(ft.crank_angle, ft.x, ft.v, ft.a, ft.bar_omega, ft.bar_alpha,
+                                ft.rod_omega, ft.rod_alpha),
+        cycle=cy.cycle_document(cyc.diagram, cyc.checks, LockbeamCycle,
+                                cam_timing_error=cyc.cam_timing_error,
+                                feed_span_simulated=cyc.feed_span_simulated,
+                                pin_lift_while_bending=cyc.pin_lift_while_bending),
+        morphology=morphology_document(p.morphology))

@@ -347,8 +347,9 @@ def _amplification(r, p, zh: bool) -> dict:
 def _flywheel(r, p, b, zh: bool) -> dict:
     fl = r["flywheel"]
     shaft = _shaft(fl.shaft, len(b.drive.stages), zh)
-    rows = [[_shaft(j, len(b.drive.stages), zh), f(n_, 1), f(tm, 1), f(tp, 1), f(ds * MM, 0),
-             f(dp * MM, 0)] for j, n_, tm, tp, ds, dp in r["peak_shafts"]]
+    rows = [[_shaft(s.index, len(b.drive.stages), zh), f(s.speed_rpm, 1), f(s.torque, 1),
+             f(s.peak_torque, 1), f(s.d_seat * MM, 0), f(s.d_peak * MM, 0)]
+            for s in r["peak_shafts"]]
     eq = {
         "md": (rf"M_d = \frac{{1}}{{2\pi}}\oint M_b\,d\varphi = {f(fl.mean_torque, 2)}\ \text{{N·m}}"
                rf"\ (\text{{{'分配轴' if zh else 'distribution shaft'}}})"),
