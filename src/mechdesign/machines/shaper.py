@@ -23,7 +23,7 @@ from ..pipeline import Stage
 from ..stages.flywheel import Flywheel, FlywheelSpec, RimSpec
 from . import linkage as lk
 from .cam import cam_document
-from .drive import drive_document
+from .drive import DriveDocument, drive_document
 from .gear import gear_document
 from .positions import Positions
 from ..core.fields import q
@@ -376,7 +376,7 @@ class ShaperResults:
     verification: Verification = q("", "self-checks")
     cam: dict | None = q("", "the cam on the crank shaft, when the brief has one")
     gear: dict | None = q("", "the gear pair z1/z2, when the brief gives its module")
-    drive: dict | None = q("", "the drive, when the brief has one")
+    drive: DriveDocument | None = q("", "the drive, when the brief has one")
 
 
 def results_document(r: dict) -> ShaperResults:
