@@ -59,7 +59,7 @@ _ENTRIES: dict[str, Entry | str] = {
     "furnace_pusher": Entry(
         "furnace_pusher", _B + "furnace:FurnaceBrief", _B + "furnace:furnace_to_si",
         _M + "furnace:stages", _M + "furnace:results_document", _R + "furnace_report",
-        "furnace_pusher.yaml", (
+        "furnace_pusher.yaml", results=_M + "furnace:FurnaceResults", summary=(
             ("曲柄", "crank", "mm", "synthesis.crank", _MM),
             ("连杆", "coupler", "mm", "synthesis.coupler", _MM),
             ("行程 H", "stroke H", "mm", "linkage.output.stroke", _MM),
@@ -124,7 +124,8 @@ _ENTRIES: dict[str, Entry | str] = {
             ("偏心距", "eccentricity", "mm", "eccentricity", _MM))),
     "drive": Entry(
         "drive", _B + "drive:DriveBrief", _B + "drive:drive_brief_to_si", _M + "drive:DRIVE_STAGES",
-        _M + "drive:drive_results_document", _R + "drive_report", "furnace_drive.yaml", (
+        _M + "drive:drive_results_document", _R + "drive_report", "furnace_drive.yaml",
+        results=_M + "drive:DriveResults", summary=(
             ("总传动比", "total ratio", "", "drive.total_ratio", 1.0),
             ("所需功率", "power required", "W", "drive.power_required", 1.0),
             ("电动机", "motor", "", "drive.motor.designation", 1.0),

@@ -20,6 +20,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .errors import DesignError
+from .fields import q
 
 SYNCHRONOUS_PREFERENCE = (1500, 1000, 3000, 750)   # rpm; 1500 and 1000 are the usual choice
 
@@ -30,13 +31,13 @@ class DriveDesignError(DesignError):
 
 @dataclass(frozen=True)
 class Motor:
-    designation: str
-    power: float              # rated power [W]
-    synchronous_rpm: float
-    full_load_rpm: float
-    frame_height: float       # shaft centre height [m]
-    starting_torque_ratio: float   # Tst / Tn
-    max_torque_ratio: float        # Tmax / Tn
+    designation: str = q("", "catalogue designation (Y series)")
+    power: float = q("W", "rated power P_ed")
+    synchronous_rpm: float = q("rpm", "synchronous speed")
+    full_load_rpm: float = q("rpm", "full-load speed n_m")
+    frame_height: float = q("m", "shaft centre height")
+    starting_torque_ratio: float = q("1", "T_st / T_n")
+    max_torque_ratio: float = q("1", "T_max / T_n")
 
     @property
     def rated_torque(self) -> float:
@@ -49,36 +50,40 @@ class Element:
     """One transmission element. ``ratio`` is fixed by the brief (teeth, pulleys) or
     ``None`` for the allocation to choose within ``recommended`` (lo, hi)."""
 
-    kind: str                 # belt | chain | spur | helical | open_spur | worm | coupling
-    efficiency: float
-    recommended: tuple[float, float]
-    ratio_max: float
-    ratio: float | None = None
+    kind: str = q("", "belt | chain | spur | helical | open_spur | worm | coupling")
+    efficiency: float = q("1", "η of the element")
+    recommended: tuple[float, float] = q("1", "recommended ratio range (lo, hi)")
+    ratio_max: float = q("1", "largest ratio")
+    ratio: float | None = q("1", "fixed ratio, None: free", default=None)
 
 
 @dataclass(frozen=True)
 class MotorCandidate:
-    synchronous_rpm: float
-    motor: Motor | None       # the smallest motor of that speed with P ≥ P_d
-    total_ratio: float        # n_m / n_out (nan without a motor)
-    recommended: bool         # the total ratio lies in the product of the recommended ranges
-    possible: bool            # ... of the maximum ranges
+    """The motor a synchronous speed offers and whether the chain can reach its ratio."""
+
+    synchronous_rpm: float = q("rpm", "synchronous speed tried")
+    motor: Motor | None = q("", "the smallest motor of that speed with P ≥ P_d")
+    total_ratio: float = q("1", "i = n_m / n_w (null without a motor)")
+    recommended: bool = q("", "the total ratio lies in the product of the recommended ranges")
+    possible: bool = q("", "the total ratio lies in the product of the maximum ranges")
 
 
 @dataclass(frozen=True)
 class MotorChoice:
-    motor: Motor
-    total_ratio: float
-    candidates: tuple[MotorCandidate, ...]
-    reason: str               # "given" | "recommended" | "maximum"
+    motor: Motor = q("", "the motor chosen")
+    total_ratio: float = q("1", "i = n_m / n_w")
+    candidates: tuple[MotorCandidate, ...] = q("", "one per synchronous speed tried")
+    reason: str = q("", "'given' | 'recommended' | 'maximum'")
 
 
 @dataclass(frozen=True)
 class ShaftState:
-    index: int                # 0 = motor shaft
-    speed_rpm: float
-    power: float              # [W]
-    torque: float             # [N·m]
+    """One row of the table of speed, power and torque (运动和动力参数)."""
+
+    index: int = q("1", "shaft number, 0 = motor shaft")
+    speed_rpm: float = q("rpm", "n")
+    power: float = q("W", "P")
+    torque: float = q("N·m", "T = P/ω")
 
 
 def chain_efficiency(element_eff: list[float], bearing_eff: float, machine_eff: float = 1.0) -> float:

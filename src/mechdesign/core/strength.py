@@ -19,6 +19,7 @@ from typing import Iterable, Literal
 import numpy as np
 
 from .drive import DriveDesignError
+from .fields import q
 
 Sense = Literal["le", "ge"]
 
@@ -36,16 +37,19 @@ class Check:
     diameters). ``inputs`` holds every factor used, SI, keyed by the names the formula
     renderer expects. Rename a check for the report with ``dataclasses.replace``.
     """
-    key: str
-    name_zh: str
-    name_en: str
-    symbol: str                 # LaTeX symbol of the checked quantity, e.g. r"\sigma_H"
-    value: float                # SI
-    allowable: float            # SI
-    unit: str                   # course display unit
-    sense: Sense
-    passed: bool
-    inputs: dict[str, float] = field(default_factory=dict)
+    key: str = q("", "the check's kind: gear_contact, gear_bending, shaft_bending, bearing_life, key_crushing …")
+    name_zh: str = q("", "name (中文)")
+    name_en: str = q("", "name (English)")
+    symbol: str = q("", "LaTeX symbol of the checked quantity, e.g. \\sigma_H")
+    value: float = q("Pa, s, °C or m", "the checked quantity, SI (stress Pa, life s, oil temperature °C, "
+                     "diameter m; `unit` says which)")
+    allowable: float = q("Pa, s, °C or m", "its allowable value, same unit")
+    unit: str = q("", "course display unit of value/allowable: 'MPa', 'h', '°C' or 'mm'")
+    sense: Sense = q("", "'le': value ≤ allowable passes; 'ge': value ≥ allowable passes")
+    passed: bool = q("", "the verdict")
+    inputs: dict[str, float] = q("SI", "every factor the formula used, each in its SI unit "
+                                 "(N·m, m, Pa, √Pa, W, rpm where named n_rpm; factors 1)",
+                                 default_factory=dict)
 
     @property
     def course_value(self) -> float:
@@ -386,37 +390,37 @@ class PointLoad:
     overhung loads outside). ``Fh``/``Fv``: transverse forces in the horizontal/vertical
     plane (N, signed). ``Fa``: axial force (N, +x) acting at radius ``r`` (m, signed, measured
     in the vertical plane, e.g. the pitch radius); it adds the couple Fa·r in the vertical plane."""
-    x: float
-    Fh: float = 0.0
-    Fv: float = 0.0
-    Fa: float = 0.0
-    r: float = 0.0
+    x: float = q("m", "axial position (bearing A at 0, B at the span)")
+    Fh: float = q("N", "transverse force in the horizontal plane", default=0.0)
+    Fv: float = q("N", "transverse force in the vertical plane", default=0.0)
+    Fa: float = q("N", "axial force along +x", default=0.0)
+    r: float = q("m", "radius at which Fa acts (vertical plane)", default=0.0)
 
 
 @dataclass(frozen=True)
 class ShaftSection:
     """Bending moments at one station (N·m; the side of the station with the larger M)."""
-    x: float        # m
-    Mh: float       # horizontal-plane moment
-    Mv: float       # vertical-plane moment
-    M: float        # resultant sqrt(Mh² + Mv²)
-    T: float        # torque counted at this station
-    Mca: float      # equivalent moment sqrt(M² + (αT)²)
+    x: float = q("m", "axial position of the station")
+    Mh: float = q("N·m", "horizontal-plane moment M_H")
+    Mv: float = q("N·m", "vertical-plane moment M_V")
+    M: float = q("N·m", "resultant √(M_H² + M_V²)")
+    T: float = q("N·m", "torque counted at this station")
+    Mca: float = q("N·m", "equivalent moment M_ca = √(M² + (αT)²)")
 
 
 @dataclass(frozen=True)
 class ShaftResult:
     """Reactions are the forces the bearings exert on the shaft (N, signed like the loads)."""
-    RAh: float
-    RAv: float
-    RBh: float
-    RBv: float
-    FrA: float              # resultant radial load on bearing A, N
-    FrB: float              # resultant radial load on bearing B, N
-    Fa_total: float         # net applied axial force ΣFa, N (to be taken by the bearings)
-    sections: tuple[ShaftSection, ...]
-    critical: ShaftSection  # station of the largest Mca
-    check: Check            # σ_ca at the critical station
+    RAh: float = q("N", "reaction of bearing A, horizontal plane")
+    RAv: float = q("N", "reaction of bearing A, vertical plane")
+    RBh: float = q("N", "reaction of bearing B, horizontal plane")
+    RBv: float = q("N", "reaction of bearing B, vertical plane")
+    FrA: float = q("N", "resultant radial load on bearing A")
+    FrB: float = q("N", "resultant radial load on bearing B")
+    Fa_total: float = q("N", "net applied axial force ΣF_a (taken by the bearings)")
+    sections: tuple[ShaftSection, ...] = q("", "moments at every load and bearing station")
+    critical: ShaftSection = q("", "the station of the largest M_ca")
+    check: Check = q("", "σ_ca at the critical station")
 
 
 def _as_load(item) -> PointLoad:
@@ -485,11 +489,11 @@ def bearing_equivalent_load(Fr: float, Fa: float, e: float, X: float, Y: float, 
 
 @dataclass(frozen=True)
 class TaperedAxialLoads:
-    Fd1: float      # derived axial force of bearing 1, Fr1/(2Y), N
-    Fd2: float      # derived axial force of bearing 2, N
-    Fa1: float      # axial load carried by bearing 1, N
-    Fa2: float      # axial load carried by bearing 2, N
-    pressed: int    # the bearing that is "pressed" (压紧): 1 or 2 (0: exactly balanced)
+    Fd1: float = q("N", "derived axial force of bearing 1, F_r1/(2Y)")
+    Fd2: float = q("N", "derived axial force of bearing 2")
+    Fa1: float = q("N", "axial load carried by bearing 1")
+    Fa2: float = q("N", "axial load carried by bearing 2")
+    pressed: int = q("1", "the pressed (压紧) bearing: 1 or 2 (0: exactly balanced)")
 
 
 def tapered_pair_axial_loads(Fr1: float, Fr2: float, Fae: float, Y: float | tuple[float, float],

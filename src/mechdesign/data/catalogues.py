@@ -15,6 +15,7 @@ from types import MappingProxyType
 from ..lazy import np  # numpy on first use: validation reads names only
 
 from . import load_yaml
+from ..core.fields import q
 
 MPA = 1e6
 MM = 1e-3
@@ -176,17 +177,17 @@ def tooth_factors(z: float) -> tuple[float, float]:
 
 @dataclass(frozen=True)
 class Bearing:
-    designation: str
-    kind: str                   # "deep_groove_ball" or "tapered_roller"
-    d: float                    # bore, m
-    D: float                    # outside diameter, m
-    B: float                    # (inner-ring) width, m
-    Cr: float                   # basic dynamic load rating, N
-    C0r: float                  # basic static load rating, N
-    T: float | None = None      # overall width of a tapered roller bearing, m
-    e: float | None = None      # tapered: limit of Fa/Fr
-    Y: float | None = None      # tapered: axial factor for Fa/Fr > e (X = 0.4)
-    Y0: float | None = None     # tapered: static axial factor
+    designation: str = q("", "e.g. 6205, 30206")
+    kind: str = q("", "'deep_groove_ball' or 'tapered_roller'")
+    d: float = q("m", "bore")
+    D: float = q("m", "outside diameter")
+    B: float = q("m", "(inner-ring) width")
+    Cr: float = q("N", "basic dynamic load rating C_r")
+    C0r: float = q("N", "basic static load rating C_0r")
+    T: float | None = q("m", "overall width of a tapered roller bearing", default=None)
+    e: float | None = q("1", "tapered: limit of F_a/F_r", default=None)
+    Y: float | None = q("1", "tapered: axial factor for F_a/F_r > e (X = 0.4)", default=None)
+    Y0: float | None = q("1", "tapered: static axial factor", default=None)
 
     @property
     def ball(self) -> bool:

@@ -46,6 +46,8 @@ from ..core.cycle import CycleDocument
 from ..core.fields import q
 from ..core.intermittent import IntermittentDocument
 from .linkage import LinkageDocument, LinkageModel, Output, Resistance, linkage_stages
+from .cam import CamDocument
+from .drive import DriveDocument
 
 TWO_PI = 2.0 * np.pi
 DEG = 180.0 / np.pi
@@ -734,8 +736,8 @@ class DieCutterResults:
     amplification: AmplificationDoc = q("", "force amplification")
     flywheel: Flywheel = q("", "the flywheel (the one flywheel stage) on the drive shaft chosen")
     peak_shafts: tuple[PeakShaft, ...] = q("", "shafts after the flywheel carrying the peak of M_b")
-    drive: dict = q("", "the drive (motor → … → distribution shaft)")
-    cam: dict = q("", "the gripper-opening cam")
+    drive: DriveDocument = q("", "the drive (motor → … → distribution shaft)")
+    cam: CamDocument = q("", "the gripper-opening cam")
     feed: FeedDoc = q("", "the incomplete-gear chain feed")
     cycle: DieCutterCycle = q("", "the motion cycle diagram")
     verification: DieVerification = q("", "the machine's own self-checks (the press's are in "

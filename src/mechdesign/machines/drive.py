@@ -14,55 +14,90 @@ from dataclasses import dataclass, replace
 import numpy as np
 
 from ..core import drive as core
+from ..core.fields import q
 from ..data import load_csv, load_yaml
 from ..pipeline import Stage
+from . import drive_strength as ds
+from .cam import VerificationDocument
 from .findings import Finding
 
 
 @dataclass(frozen=True)
 class StageResult:
-    index: int
-    type: str                   # coupling | belt | chain | spur | helical | worm
-    kind: str                   # key into transmissions.yaml (open_spur for open gears)
-    name_zh: str
-    name_en: str
-    ratio_allocated: float      # what the allocation asked for (or the fixed ratio)
-    ratio: float                # the realised ratio (whole teeth, standard pulleys)
-    fixed: bool                 # fixed by the brief
-    efficiency: float
-    z1: int | None = None
-    z2: int | None = None
-    d1: float | None = None     # pulley datum diameters [m]
-    d2: float | None = None
-    slip: float = 0.0
-    design: object = None       # drive_strength.StageDesign: geometry, strength design, checks
+    """One stage of the drive: its ratio as allocated and as realised, and its design."""
+
+    index: int = q("1", "stage number from the motor, 0-based (drive.stages[index] of the brief)")
+    type: str = q("", "coupling | belt | chain | spur | helical | worm")
+    kind: str = q("", "key into transmissions.yaml (open_spur for open gears)")
+    name_zh: str = q("", "name (中文)")
+    name_en: str = q("", "name (English)")
+    ratio_allocated: float = q("1", "what the allocation asked for (or the fixed ratio)")
+    ratio: float = q("1", "the realised ratio i (whole teeth, standard pulleys)")
+    fixed: bool = q("", "the brief fixes the ratio")
+    efficiency: float = q("1", "η of the stage")
+    z1: int | None = q("1", "driving teeth (worm: starts)", default=None)
+    z2: int | None = q("1", "driven teeth", default=None)
+    d1: float | None = q("m", "small pulley datum diameter", default=None)
+    d2: float | None = q("m", "large pulley datum diameter", default=None)
+    slip: float = q("1", "belt's elastic slip ε", default=0.0)
+    design: ds.StageDesign | None = q("", "geometry, strength design and checks", default=None)
 
 
 @dataclass(frozen=True)
 class DriveResult:
-    output_speed_required: float  # n_w [rpm]
-    machine_power: float        # P_w at the machine's input shaft [W]
-    power_source: str           # "mechanism" | "power" | "torque" | "stroke"
-    efficiency: float           # η of the whole chain
-    power_required: float       # P_d = P_w / η [W]
-    choice: core.MotorChoice
-    stages: tuple[StageResult, ...]
-    shafts: tuple[core.ShaftState, ...]
-    output_speed: float         # realised machine speed [rpm]
-    speed_error: float          # (n − n_w)/n_w
-    speed_tolerance: float
-    service_hours: float
-    KA: float
-    bearing_eff: float
-    machine_eff: float
-    peak_factor: float          # design torque / mean torque downstream of the flywheel
-    peak_from_shaft: int | None  # first shaft carrying the peak torque (None: none)
-    warnings: tuple[Finding, ...]
-    shaft_designs: tuple        # drive_strength.ShaftDesign per shaft after the motor
+    """Stage 传动装置设计 (the document is :class:`DriveDocument`)."""
+
+    output_speed_required: float = q("rpm", "n_w")
+    machine_power: float = q("W", "P_w at the machine's input shaft")
+    power_source: str = q("", "'mechanism' | 'power' | 'torque' | 'stroke'")
+    efficiency: float = q("1", "η of the whole chain")
+    power_required: float = q("W", "P_d = P_w / η")
+    choice: core.MotorChoice = q("", "the motor and the candidates")
+    stages: tuple[StageResult, ...] = q("", "from the motor to the machine")
+    shafts: tuple[core.ShaftState, ...] = q("", "speed, power, torque of every shaft")
+    output_speed: float = q("rpm", "realised machine speed n_w′")
+    speed_error: float = q("1", "(n_w′ − n_w)/n_w")
+    speed_tolerance: float = q("1", "allowed |speed error|")
+    service_hours: float = q("h", "service life L_h")
+    KA: float = q("1", "application factor K_A")
+    bearing_eff: float = q("1", "η of one pair of rolling bearings")
+    machine_eff: float = q("1", "η of the machine's input")
+    peak_factor: float = q("1", "design torque / mean torque downstream of the flywheel")
+    peak_from_shaft: int | None = q("1", "first shaft carrying the peak torque (None: none)")
+    warnings: tuple[Finding, ...] = q("", "speed error, stage ratios, undercut, failed checks")
+    shaft_designs: tuple[ds.ShaftDesign, ...] = q("", "one per shaft after the motor")
 
     @property
     def motor(self) -> core.Motor:
         return self.choice.motor
+
+
+@dataclass(frozen=True)
+class DriveDocument:
+    """The drive (传动装置) as results.json holds it: the power and efficiency chain, the
+    motor and its choice, the stages with their designs, the table of speed, power and
+    torque on every shaft (shaft 0 is the motor's), and the shafts' designs."""
+
+    output_speed_required_rpm: float = q("rpm", "n_w the machine needs")
+    machine_power: float = q("W", "P_w at the machine's input shaft")
+    power_source: str = q("", "where P_w comes from: 'mechanism' (the computed crank torque), "
+                          "'power', 'torque' or 'stroke' (the brief's load)")
+    efficiency: float = q("1", "η of the whole chain")
+    power_required: float = q("W", "P_d = P_w / η")
+    motor: core.Motor = q("", "the motor chosen")
+    total_ratio: float = q("1", "i = n_m / n_w")
+    motor_choice: str = q("", "'given' (the brief's synchronous speed), 'recommended' or 'maximum' "
+                          "(the ratio ranges that admitted it)")
+    motor_candidates: tuple[core.MotorCandidate, ...] = q("", "one per synchronous speed tried")
+    stages: tuple[StageResult, ...] = q("", "from the motor to the machine")
+    shafts: tuple[core.ShaftState, ...] = q("", "speed, power, torque of every shaft, 0 = motor")
+    output_speed_rpm: float = q("rpm", "realised machine speed n_w′")
+    speed_error: float = q("1", "(n_w′ − n_w)/n_w")
+    speed_tolerance: float = q("1", "allowed |speed error|")
+    service_hours: float = q("h", "service life L_h")
+    peak_factor: float = q("1", "design torque / mean torque on the shafts that carry the peak")
+    shaft_designs: tuple[ds.ShaftDesign, ...] = q("", "one per shaft after the motor")
+    warnings: tuple[str, ...] = q("", "findings (English)")
 
 
 def motor_catalogue() -> list[core.Motor]:
@@ -204,16 +239,12 @@ def design_drive(dp, machine_power: float, output_rpm: float, source: str,
 
 def _strength(dp, results, shafts, peak_factor, peak_from_shaft):
     """Geometry and strength of each stage (see :mod:`.drive_strength`)."""
-    from . import drive_strength as ds
-
     designs, worm_eff = ds.stage_designs(dp, results, shafts, peak_factor, peak_from_shaft)
     results = [replace(r, design=d) for r, d in zip(results, designs)]
     return results, worm_eff
 
 
 def _shafts(dp, results, shafts, peak_factor, peak_from_shaft):
-    from . import drive_strength as ds
-
     names = [(r.name_zh, r.name_en) for r in results]
     return ds.shaft_designs(dp, [r.design for r in results], shafts, peak_factor, peak_from_shaft, names)
 
@@ -424,25 +455,41 @@ DRIVE_STAGES = [drive_stage_standalone(),
                 Stage("drive_verification", "计算校核 / verification", lambda r: verify_drive(r["drive"]))]
 
 
-def drive_document(d: DriveResult) -> dict:
-    return {
-        "output_speed_required_rpm": d.output_speed_required, "machine_power": d.machine_power,
-        "power_source": d.power_source, "efficiency": d.efficiency, "power_required": d.power_required,
-        "motor": d.motor, "total_ratio": d.choice.total_ratio, "motor_choice": d.choice.reason,
-        "motor_candidates": d.choice.candidates, "stages": d.stages, "shafts": d.shafts,
-        "output_speed_rpm": d.output_speed, "speed_error": d.speed_error,
-        "speed_tolerance": d.speed_tolerance, "service_hours": d.service_hours,
-        "peak_factor": d.peak_factor, "shaft_designs": d.shaft_designs,
-        "warnings": [w.en for w in d.warnings],
-    }
+def drive_document(d: DriveResult) -> DriveDocument:
+    return DriveDocument(
+        output_speed_required_rpm=d.output_speed_required, machine_power=d.machine_power,
+        power_source=d.power_source, efficiency=d.efficiency, power_required=d.power_required,
+        motor=d.motor, total_ratio=d.choice.total_ratio, motor_choice=d.choice.reason,
+        motor_candidates=d.choice.candidates, stages=d.stages, shafts=d.shafts,
+        output_speed_rpm=d.output_speed, speed_error=d.speed_error,
+        speed_tolerance=d.speed_tolerance, service_hours=d.service_hours,
+        peak_factor=d.peak_factor, shaft_designs=d.shaft_designs,
+        warnings=tuple(w.en for w in d.warnings))
 
 
-def drive_results_document(r: dict) -> dict:
+DRIVE_UNITS = "SI: m, s, rad, N, N·m, W, Pa; speeds in rpm where named _rpm"
+
+
+@dataclass(frozen=True)
+class DriveResults:
+    """Drive (传动装置设计): a drive designed on its own for a machine's load at its input
+    shaft (the brief's power, torque or stroke work at the machine's speed), with the
+    self-checks of its table of speed, power and torque, its ratios and its strength
+    verdicts. Speeds are in rpm where a key ends in `_rpm`; strength checks hold SI values
+    with the course unit they are shown in."""
+
+    schema: str = q("", "'mechdesign.results/2'")
+    machine: str = q("", "'drive'")
+    units: str = q("", "reminder of the unit system")
+    drive: DriveDocument = q("", "the drive")
+    verification: VerificationDocument | None = q("", "self-checks (计算校核), as the cam's verification document")
+
+
+def drive_results_document(r: dict) -> DriveResults:
+    from ..results import SCHEMA
     from .cam import verification_document
 
-    return {"schema": "mechdesign.results/1", "machine": "drive",
-            "units": "SI: m, s, rad, N, N·m, W, Pa; speeds in rpm where named _rpm",
-            "drive": drive_document(r["drive"]),
-            "verification": (None if r.get("drive_verification") is None
-                             else verification_document(r["drive_verification"]))}
-
+    return DriveResults(
+        schema=SCHEMA, machine="drive", units=DRIVE_UNITS, drive=drive_document(r["drive"]),
+        verification=(None if r.get("drive_verification") is None
+                      else verification_document(r["drive_verification"])))

@@ -22,6 +22,7 @@ from dataclasses import dataclass, replace
 
 
 from ..core import gears, strength as st
+from ..core.fields import q
 from ..data import catalogues as cat
 
 K_V, K_BETA, S_H, S_F = 1.1, 1.1, 1.0, 1.4
@@ -34,40 +35,48 @@ M_MIN_POWER = 0.002                        # gears transmitting power: m ≥ 1.5
 
 @dataclass(frozen=True)
 class StageDesign:
-    """Strength design of one stage."""
+    """Strength design of one stage (gear pair, worm pair; belts, chains and couplings
+    carry only their torques and, for a belt, the pressure on the shafts)."""
 
-    kind: str                   # "gear" | "worm" | "belt" | "chain" | "coupling"
-    geometry: object            # gears.SpurPair | HelicalPair | WormPair | None
-    materials: tuple[str, ...]  # material keys (pinion, gear) or (worm, wheel)
-    module: float | None        # used [m]
-    module_min: float | None    # from the design formula [m] (None when given)
-    module_given: bool
-    face_width: float | None    # [m]
-    K: float
-    T1: float                   # design torque on the driving member [N·m]
-    T2: float
-    forces: dict                # Ft, Fr, Fa on the driving member [N] (worm: Ft1, Fa1, Fr)
-    allowables: dict            # [σH], [σF1], [σF2] … [Pa] and the factors that gave them
-    checks: tuple[st.Check, ...]
-    extra: dict                 # v, vs, γ, φv, η, a, b … (SI)
+    kind: str = q("", "'gear' | 'worm' | 'belt' | 'chain' | 'coupling'")
+    geometry: gears.SpurPair | gears.HelicalPair | gears.WormPair | None = q(
+        "", "the pair's geometry (as the gear section's pair); null for belts, chains, couplings")
+    materials: tuple[str, ...] = q("", "material keys (pinion, gear) or (worm, wheel)")
+    module: float | None = q("m", "module used (normal module of a helical pair)")
+    module_min: float | None = q("m", "module from the design formula (null when the brief gives it)")
+    module_given: bool = q("", "the brief gives the module")
+    face_width: float | None = q("m", "face width b = φ_d·d1 rounded up to 1 mm")
+    K: float = q("1", "load factor K = K_A·K_V·K_α·K_β (worm: K_A·1.1)")
+    T1: float = q("N·m", "design torque on the driving member")
+    T2: float = q("N·m", "design torque on the driven member")
+    forces: dict[str, float] = q("N (d1, d2: m)", "F_t, F_r, F_a on the driving member (worm: "
+                                 "F_t1, F_a1 = F_t2, F_r; belt: Q on the shafts); d1, d2 the "
+                                 "diameters they act at")
+    allowables: dict[str, float] = q("Pa (K_HN, K_FN, N: 1)", "[σ_H], [σ_F1], [σ_F2], the limits "
+                                     "σ_Hlim, σ_FE, and the life factors and stress cycles that gave them")
+    checks: tuple[st.Check, ...] = q("", "contact, bending (and the worm's thermal balance)")
+    extra: dict = q("SI", "v [m/s], φ_d, Z_E [√Pa], Z_H, Z_ε, Y_ε, ε_α, ε_β, Y_Fa, Y_Sa, β [rad]; "
+                    "worm: a [m], γ, φ_v [rad], v_s [m/s], η, area [m²], k_d [W/(m²·°C)]")
 
 
 @dataclass(frozen=True)
 class ShaftDesign:
-    index: int
-    speed_rpm: float
-    power: float                # [W]
-    torque: float               # design torque [N·m]
-    d_min: float                # A0 ∛(P/n) with keyway [m]
-    d_journal: float            # [m]
-    d_seat: float               # [m]
-    span: float                 # [m]
-    loads: tuple                # st.PointLoad …
-    names: tuple[str, ...]      # what sits at each load
-    result: st.ShaftResult
-    bearing: object             # cat.Bearing | None
-    bearing_loads: tuple        # (P_A, P_B) equivalent dynamic loads [N]
-    checks: tuple[st.Check, ...]  # diameter, bending-torsion, bearing life, keys
+    """One shaft after the motor: diameters, loads and statics, bearings, keys and checks."""
+
+    index: int = q("1", "shaft number (1 = first after the motor)")
+    speed_rpm: float = q("rpm", "n")
+    power: float = q("W", "P")
+    torque: float = q("N·m", "design torque (× the peak factor where it applies)")
+    d_min: float = q("m", "A_0·∛(P/n) with the keyway allowance")
+    d_journal: float = q("m", "bearing journal (d rounded up to 5 mm)")
+    d_seat: float = q("m", "hub seat = journal + 5 mm")
+    span: float = q("m", "bearing span")
+    loads: tuple[st.PointLoad, ...] = q("", "the loads of the elements it carries")
+    names: tuple[tuple[str, str], ...] = q("", "what sits at each load, (zh, en)")
+    result: st.ShaftResult = q("", "reactions and moments (bending–torsion check)")
+    bearing: cat.Bearing | None = q("", "the bearing chosen (null: none in the catalogue)")
+    bearing_loads: tuple[float, float] = q("N", "equivalent dynamic loads (P_A, P_B)")
+    checks: tuple[st.Check, ...] = q("", "diameter, bending–torsion, bearing life, keys")
 
 
 def _phi_d(s, is_open: bool) -> float:

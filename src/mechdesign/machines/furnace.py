@@ -30,18 +30,21 @@ CE, 5 slider E, 6 frame.
 from __future__ import annotations
 
 import re
-from dataclasses import dataclass
+from dataclasses import dataclass, fields
 
 import numpy as np
 from scipy.optimize import brentq, minimize_scalar
 
 from ..brief.furnace import FurnaceParams, PusherParams
 from ..core import fourbar as fb
+from ..core.fields import q
 from ..core.mechanism import RRP, RRR, Crank, LinkPoint, Mechanism
 from ..core.synthesis import extreme_angle
 from ..pipeline import Stage
+from .drive import DriveDocument, design_drive, drive_document
 from .findings import Finding
-from .linkage import LinkageModel, Output, Resistance, linkage_document, linkage_stages
+from .linkage import (LinkageDocument, LinkageModel, Output, Resistance, linkage_document,
+                      linkage_stages)
 
 FRAME = "6"
 CRANK, COUPLER, ROCKER, ROD, SLIDER = "1", "2", "3", "4", "5"
@@ -64,22 +67,22 @@ class SeedCheck:
     simulated (closed-form extremes) with the rocker 1150 mm and frame 505.37 mm its
     second equation uses."""
 
-    crank: float                # [m]
-    coupler: float
-    rocker: float
-    frame: float
-    chord: float                # the B1B2 it used [m]
-    theta_used: float           # the angle it put into eq. (1) [rad] (30°, not θ)
-    eq1_printed: float          # (a+b)² + (b−a)² − B1B2² − 2(a+b)(b−a)cos30° [m²]
-    eq1_correct: float          # the same with the correct θ [m²]
-    chord_printed: float        # B1B2 implied by a, b with cos 30° [m]
-    chord_correct: float        # with θ [m]
-    eq3_lhs: float              # arccos((b² + c² − (d + a)²)/(2bc)) + 30°, printed "= 180°" [rad]
-    theta: float                # simulated extreme-position angle [rad]
-    time_ratio: float           # simulated K
-    swing: float                # simulated rocker swing [rad]
-    stroke_C: float             # C's chord 2·DC·sin(ψ/2) [m] (≈ the slider's stroke)
-    gamma_min: float            # [rad]
+    crank: float = q("m", "the seed's a = O1A")
+    coupler: float = q("m", "the seed's b = AB")
+    rocker: float = q("m", "the rocker its second equation uses")
+    frame: float = q("m", "its frame O1O2")
+    chord: float = q("m", "the B1B2 it used")
+    theta_used: float = q("rad", "the angle it put into eq. (1) (30°, not θ)")
+    eq1_printed: float = q("m²", "(a+b)² + (b−a)² − B1B2² − 2(a+b)(b−a)·cos 30°")
+    eq1_correct: float = q("m²", "the same with the correct θ")
+    chord_printed: float = q("m", "B1B2 implied by a, b with cos 30°")
+    chord_correct: float = q("m", "B1B2 implied by a, b with θ")
+    eq3_lhs: float = q("rad", "arccos((b² + c² − (d + a)²)/(2bc)) + 30°, printed '= 180°'")
+    theta: float = q("rad", "simulated extreme-position angle θ")
+    time_ratio: float = q("1", "simulated K")
+    swing: float = q("rad", "simulated rocker swing ψ")
+    stroke_C: float = q("m", "C's chord 2·DC·sin(ψ/2) (≈ the slider's stroke)")
+    gamma_min: float = q("rad", "γ_min of the seed's four-bar")
 
 
 @dataclass(frozen=True)
@@ -455,23 +458,23 @@ def synthesis_stage(r: dict):
 class PusherCheck:
     """Stage 设计要求校核: the task's specification against the simulation of this run."""
 
-    stroke: float               # simulated (position search) [m]
-    stroke_error: float         # − H [m]
-    time_ratio: float           # simulated K
-    alpha_E_work: float         # simulated α_max at E over the working stroke [rad]
-    gamma_min: float            # simulated γ_min of the four-bar over the cycle [rad]
-    gamma_work: float           # over the working stroke [rad]
-    alpha_B_work: float         # 90° − gamma_work [rad]
-    mean_torque: float          # mean M_b [N·m]
-    mean_power: float           # mean M_b·ω [W]
-    resistance_power: float     # mean of F·|v_E| over the grid (the kinematics alone) [W]
-    hand_power: float           # (F_w + F_r)·H·n/60 [W]
-    peak_torque: float          # max M_b [N·m]
-    peak_factor: float          # peak / mean
-    resistance_force: np.ndarray  # |F| on E over the phase array [N]
-    virtual_work_torque: np.ndarray  # F·|v_E|/ω over the phase array [N·m]
-    virtual_work_error: float   # max |M_b − F·|v_E|/ω| / max M_b over the grid
-    warnings: tuple = ()
+    stroke: float = q("m", "simulated stroke of E (bounded position search)")
+    stroke_error: float = q("m", "simulated stroke − H")
+    time_ratio: float = q("1", "simulated K")
+    alpha_E_work: float = q("rad", "simulated α_max at E over the working stroke")
+    gamma_min: float = q("rad", "simulated γ_min of the four-bar over the cycle")
+    gamma_work: float = q("rad", "simulated γ_min of the four-bar over the working stroke")
+    alpha_B_work: float = q("rad", "pressure angle at B in the working stroke, 90° − gamma_work")
+    mean_torque: float = q("N·m", "mean M_b")
+    mean_power: float = q("W", "mean M_b·ω")
+    resistance_power: float = q("W", "mean of F·|v_E| over the grid (the kinematics alone)")
+    hand_power: float = q("W", "(F_w + F_r)·H·n/60")
+    peak_torque: float = q("N·m", "max M_b")
+    peak_factor: float = q("1", "peak / mean torque")
+    resistance_force: np.ndarray = q("N", "|F| on E over the phase array (grid, then positions)")
+    virtual_work_torque: np.ndarray = q("N·m", "F·|v_E|/ω over the phase array (virtual work)")
+    virtual_work_error: float = q("1", "max |M_b − F·|v_E|/ω| / max M_b")
+    warnings: tuple[Finding, ...] = q("", "specification misses", default=())
 
 
 def _quality(k, kind: str):
@@ -517,8 +520,6 @@ def _drive(r: dict):
     """The drive delivers the crank's mean power M̄_b·ω at the crank speed. There is no
     flywheel, so every stage carries the peak of M_b: the strength checks use the
     torques scaled by peak/mean from the first shaft on."""
-    from .drive import design_drive
-
     p, c = r["params"], r["pusher_check"]
     return design_drive(p.drive, c.mean_power, p.pusher.crank_speed_rpm, "mechanism",
                         c.peak_factor, 0)
@@ -535,28 +536,91 @@ def stages(params: FurnaceParams) -> list[Stage]:
     return out
 
 
-def results_document(r: dict) -> dict:
+@dataclass(frozen=True)
+class PusherSynthesisDoc:
+    """The six-bar's synthesis (执行机构设计), D (the rocker's pivot) at the origin."""
+
+    stroke: float = q("m", "H, the slider's stroke")
+    time_ratio: float = q("1", "K")
+    theta: float = q("rad", "θ = 180°(K − 1)/(K + 1)")
+    swing: float = q("rad", "ψ = 2·arcsin(H/(2·DC)), the rocker's swing")
+    rocker_DC: float = q("m", "L_DC")
+    link_CE: float = q("m", "L_CE")
+    rocker_DB: float = q("m", "c = L_DB")
+    crank: float = q("m", "a = L_O1A")
+    coupler: float = q("m", "b = L_AB")
+    frame: float = q("m", "d = L_O1D")
+    O1: complex = q("m", "crank pivot, [x, y]")
+    B1: complex = q("m", "B at the folded extreme (O1B1 = b − a)")
+    B2: complex = q("m", "B at the extended extreme (O1B2 = b + a)")
+    C1: complex = q("m", "C at the folded extreme")
+    C2: complex = q("m", "C at the extended extreme")
+    E1: complex = q("m", "slider at the extreme that starts the working stroke")
+    E2: complex = q("m", "slider at the other extreme")
+    A_fold: complex = q("m", "crank pin at the folded extreme")
+    A_ext: complex = q("m", "crank pin at the extended extreme")
+    crank_angle_fold: float = q("rad", "crank angle at the folded extreme, CCW from +x")
+    crank_angle_ext: float = q("rad", "crank angle at the extended extreme")
+    sense: float = q("1", "+1 CCW, −1 CW crank")
+    working_direction: float = q("1", "+1: the working stroke pushes E towards +x, −1: −x")
+    sagitta: float = q("m", "f = DC·(1 − cos(ψ/2)), the sagitta of C's arc")
+    guide_height: float = q("m", "y_g, the slider guide above D")
+    guide_offset: float = q("m", "e = y_g − (middle of the sagitta)")
+    guide_offset_max: float = q("m", "|e| allowed by [α] at E: CE·sin[α] − f/2")
+    alpha_limit: float = q("rad", "[α], the allowed pressure angle")
+    alpha_E: float = q("rad", "closed-form α_max at E over the working stroke")
+    gamma_min: float = q("rad", "closed-form γ_min of the four-bar over the cycle")
+    gamma_max: float = q("rad", "closed-form γ_max of the four-bar")
+    gamma_work: float = q("rad", "closed-form γ_min over the working stroke")
+    alpha_B: float = q("rad", "pressure angle at B in the working stroke, 90° − gamma_work")
+    gamma_limit: float = q("rad", "[γ] for the check")
+    limit_rocker: bool = q("", "the limit [α] also applies at B")
+    criterion: str = q("", "'max_gamma' (O1 placed for the largest γ_min) or 'frame' (given O1D)")
+    side: int = q("1", "θ-circle: +1 (O1 on D's side of B1B2) or −1")
+    arc_position: float = q("rad", "parameter of O1 on the θ-circle (angle at its centre)")
+    arc: tuple[float, float] = q("rad", "(p_lo, p_hi), the allowed arc")
+    constraint_active: bool = q("", "the pressure-angle limit at B bounds the optimum")
+    gamma_unconstrained: float = q("rad", "best γ_min on the chosen circle without the limit at B")
+    gamma_other_side: float = q("rad", "best feasible γ_min on the other circle (0: none)")
+    gamma_other_side_free: float = q("rad", "best γ_min on the other circle without the limit at B")
+    residuals: dict[str, float] = q("1 (theta: rad)", "the synthesis equations put back: stroke, "
+                                    "chord, eq1, folded, extended, frame (relative), theta, K")
+
+
+@dataclass(frozen=True)
+class FurnaceResults:
+    """Heating-furnace pusher (加热炉推料机): crank-rocker O1A–AB–rocker DBC and the link CE
+    to the pushing slider E (links 1 crank, 2 coupler AB, 3 rocker DBC, 4 link CE, 5 slider
+    E, 6 frame), driven through a reducer. Frame: D (the rocker's pivot) at the origin, the
+    rocker swinging symmetrically about +y with C at the top, the slider's guide horizontal
+    at y = synthesis.guide_height; the linkage's output is E along the working direction."""
+
+    schema: str = q("", "'mechdesign.results/2'")
+    machine: str = q("", "'furnace_pusher'")
+    units: str = q("", "reminder of the unit system")
+    synthesis: PusherSynthesisDoc = q("", "the six-bar's dimensions and the synthesis' residuals")
+    seed: SeedCheck = q("", "the seed's printed solution put back into its equations")
+    linkage: LinkageDocument = q("", "the linkage engine's results")
+    check: PusherCheck = q("", "the specification against the simulation")
+    drive: DriveDocument | None = q("", "the drive, when the brief has one")
+
+
+FURNACE_UNITS = "SI: m, s, rad, N, N·m, W; complex vectors as [x, y]; speeds in rpm where named _rpm"
+
+
+def results_document(r: dict) -> FurnaceResults:
     """Everything computed, SI units, for ``results.json``."""
-    from .drive import drive_document
+    from ..results import SCHEMA
 
     syn = r["synthesis"]
-    plain = {key: getattr(syn, key) for key in (
-        "stroke", "time_ratio", "theta", "swing", "rocker_DC", "link_CE", "rocker_DB", "crank",
-        "coupler", "frame", "O1", "B1", "B2", "C1", "C2", "E1", "E2", "A_fold", "A_ext",
-        "crank_angle_fold", "crank_angle_ext", "sense", "working_direction", "sagitta",
-        "guide_height", "guide_offset", "guide_offset_max", "alpha_limit", "alpha_E", "gamma_min",
-        "gamma_max", "gamma_work", "alpha_B", "gamma_limit", "limit_rocker", "criterion", "side",
-        "arc_position", "arc", "constraint_active", "gamma_unconstrained", "gamma_other_side",
-        "gamma_other_side_free")}
-    plain["residuals"] = {name: value for name, _, value in syn.residuals}
-    return {
-        "schema": "mechdesign.results/1",
-        "machine": "furnace_pusher",
-        "units": "SI: m, s, rad, N, N·m, W; complex vectors as [x, y]; speeds in rpm where named _rpm",
-        "synthesis": plain,
-        "seed": syn.seed,
-        "linkage": linkage_document(r["model"], r["linkage"], r["linkage_forces"],
-                                    r["linkage_flywheel"], r["linkage_verification"]),
-        "check": r["pusher_check"],
-        "drive": None if r.get("drive") is None else drive_document(r["drive"]),
-    }
+    plain = {f.name: getattr(syn, f.name) for f in fields(PusherSynthesisDoc)
+             if f.name != "residuals"}
+    return FurnaceResults(
+        schema=SCHEMA, machine="furnace_pusher", units=FURNACE_UNITS,
+        synthesis=PusherSynthesisDoc(**plain, residuals={name: value for name, _, value in
+                                                         syn.residuals}),
+        seed=syn.seed,
+        linkage=linkage_document(r["model"], r["linkage"], r["linkage_forces"],
+                                 r["linkage_flywheel"], r["linkage_verification"]),
+        check=r["pusher_check"],
+        drive=None if r.get("drive") is None else drive_document(r["drive"]))

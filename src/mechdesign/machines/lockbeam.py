@@ -35,6 +35,7 @@ from .findings import Finding
 from ..core.cycle import CycleDocument
 from ..core.fields import q
 from .linkage import LinkageDocument, closure_residual, linkage_document, linkage_stages
+from .cam import CamDocument
 
 TWO_PI = 2.0 * np.pi
 DEG = 180.0 / np.pi
@@ -842,9 +843,9 @@ class LockbeamResults:
     units: str = q("", "reminder of the unit system")
     main_shaft_rpm: float = q("rpm", "main-shaft speed (the production rate, parts per minute)")
     transmission: TransmissionDoc = q("", "the transmission")
-    positioning_cam: dict = q("", "the positioning-pin cam")
+    positioning_cam: CamDocument = q("", "the positioning-pin cam")
     pin: PinDoc = q("", "the pin's lift check")
-    bending_cam: dict = q("", "the bending cam (oscillating follower: the input rocker)")
+    bending_cam: CamDocument = q("", "the bending cam (oscillating follower: the input rocker)")
     bending: BendingDoc = q("", "the bending linkage")
     feed: LinkageDocument = q("", "the feed linkage on the linkage engine")
     feed_table: FeedTableDoc = q("", "the seed-format table of the feed linkage")

@@ -24,7 +24,7 @@ from ..stages.flywheel import Flywheel, FlywheelSpec, RimSpec
 from ..stages.polygons import polygon_stage
 from . import linkage as lk
 from .cam import CamDocument, cam_document
-from .drive import drive_document
+from .drive import DriveDocument, drive_document
 from .gear import GearDocument, gear_document
 from .positions import Positions
 from ..core.fields import q
@@ -380,7 +380,7 @@ class ShaperResults:
     verification: Verification = q("", "self-checks")
     cam: CamDocument | None = q("", "the cam on the crank shaft, when the brief has one")
     gear: GearDocument | None = q("", "the gear pair z1/z2, when the brief gives its module")
-    drive: dict | None = q("", "the drive, when the brief has one")
+    drive: DriveDocument | None = q("", "the drive, when the brief has one")
 
 
 def results_document(r: dict) -> ShaperResults:

@@ -9,7 +9,7 @@ _P = __name__
 ENTRY = Entry(
     name="slotter", brief=f"{_P}.brief:SlotterBrief", to_params=f"{_P}.brief:to_si",
     stages=f"{_P}.stages:stages", document=f"{_P}.stages:results_document",
-    report=f"{_P}.report", example="slotter.yaml",
+    report=f"{_P}.report", example="slotter.yaml", results=f"{_P}.stages:SlotterResults",
     summary=(("曲柄", "crank", "mm", "synthesis.crank", _MM),
              ("导杆", "guide bar", "mm", "synthesis.guide_bar", _MM),
              ("K（仿真）", "K (simulated)", "", "linkage.verification.time_ratio", 1.0),

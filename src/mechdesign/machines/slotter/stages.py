@@ -7,16 +7,22 @@ O2A, 3 slider at A, 4 guide bar O3B, 5 rod BC, 6 ram (slider C), 7 frame.
 """
 from __future__ import annotations
 
+from dataclasses import dataclass
+
 import numpy as np
 
+from ...core.fields import q
 from ...core.kinetostatics import Body
 from ...core.mechanism import RPR, RRP, AssemblyError, Crank, LinkPoint, Mechanism
 from ...core.synthesis import GuideBarDesign, guide_bar_quick_return
 from ...pipeline import Stage
-from ...stages.flywheel import FlywheelSpec, RimSpec
+from ...stages.flywheel import Flywheel, FlywheelSpec, RimSpec
 from .. import linkage as lk
+from ..drive import DriveDocument, drive_document
 from ..shaper import Synthesis
 from .brief import SlotterParams
+from ..cam import CamDocument
+from ..gear import GearDocument
 
 FRAME = "7"
 DOWN = -np.pi / 2
@@ -109,27 +115,52 @@ def stages(p: SlotterParams) -> list[Stage]:
     return out
 
 
-def results_document(r: dict) -> dict:
+@dataclass(frozen=True)
+class SlotterSynthesisDoc:
+    extreme_angle: float = q("rad", "θ = π(K − 1)/(K + 1)")
+    swing_angle: float = q("rad", "guide-bar swing ψ (= θ)")
+    crank: float = q("m", "L_O2A")
+    frame: float = q("m", "L_O2O3")
+    guide_bar: float = q("m", "L_O3B")
+    rod: float = q("m", "L_BC")
+    guide_offset: float = q("m", "L_O3M, the vertical ram guide's distance from O3")
+    bar_com: float = q("m", "L_O3S4")
+
+
+@dataclass(frozen=True)
+class SlotterResults:
+    """Slotting machine (插床): the shaper's guide-bar six-bar with a vertical ram that cuts
+    on its downward (slow) working stroke. Frame: O3 (guide-bar pivot) at the origin, O2 on
+    the x axis at ±L_O2O3 (to the right for a clockwise crank, mirrored for a
+    counter-clockwise one), the ram guide vertical at x = ±synthesis.guide_offset. Links: 2
+    crank O2A, 3 slider A, 4 guide bar O3B, 5 rod BC, 6 ram (slider C), 7 frame. The
+    linkage's output is the ram C measured downwards (along the working stroke)."""
+
+    schema: str = q("", "'mechdesign.results/2'")
+    machine: str = q("", "'slotter'")
+    units: str = q("", "reminder of the unit system")
+    synthesis: SlotterSynthesisDoc = q("", "the guide-bar mechanism's dimensions")
+    linkage: lk.LinkageDocument = q("", "the linkage engine's results")
+    flywheel: Flywheel = q("", "the flywheel (the one flywheel stage) on the pinion or crank shaft")
+    cam: CamDocument | None = q("", "the cam on the crank shaft, when the brief has one")
+    gear: GearDocument | None = q("", "the gear pair z1/z2, when the brief gives its module")
+    drive: DriveDocument | None = q("", "the drive, when the brief has one")
+
+
+def results_document(r: dict) -> SlotterResults:
+    from ...results import SCHEMA, UNITS_NOTE
     from ..cam import cam_document
-    from ..drive import drive_document
     from ..gear import gear_document
 
     syn, fl = r["synthesis"], r["linkage_flywheel"]
     d = syn.design
-    return {
-        "schema": "mechdesign.results/1",
-        "machine": "slotter",
-        "units": "SI: m, s, rad, kg, N, N·m, J, W; complex vectors as [x, y]",
-        "synthesis": {"extreme_angle": syn.extreme_angle, "swing_angle": d.swing_angle,
-                      "crank": d.crank, "frame": d.frame, "guide_bar": d.guide_bar, "rod": d.rod,
-                      "guide_offset": d.guide_height, "bar_com": d.bar_com},
-        "linkage": lk.linkage_document(r["model"], r["linkage"], r["linkage_forces"], fl,
-                                       r["linkage_verification"]),
-        "flywheel": {"shaft": fl.shaft, "ratio_to_crank": fl.speed_ratio,
-                     "shaft_speed_rpm": fl.shaft_speed_rpm, "driving_torque": fl.shaft_torque,
-                     "max_energy_swing": fl.max_energy_swing, "inertia": fl.inertia,
-                     "mean_power": fl.mean_power, "rim": fl.rim},
-        "cam": None if r.get("cam") is None else cam_document(r["cam"]),
-        "gear": None if r.get("gear") is None else gear_document(r["gear"]),
-        "drive": None if r.get("drive") is None else drive_document(r["drive"]),
-    }
+    return SlotterResults(
+        schema=SCHEMA, machine="slotter", units=UNITS_NOTE,
+        synthesis=SlotterSynthesisDoc(syn.extreme_angle, d.swing_angle, d.crank, d.frame,
+                                      d.guide_bar, d.rod, d.guide_height, d.bar_com),
+        linkage=lk.linkage_document(r["model"], r["linkage"], r["linkage_forces"], fl,
+                                    r["linkage_verification"]),
+        flywheel=fl,
+        cam=None if r.get("cam") is None else cam_document(r["cam"]),
+        gear=None if r.get("gear") is None else gear_document(r["gear"]),
+        drive=None if r.get("drive") is None else drive_document(r["drive"]))
