@@ -6,10 +6,9 @@ import numpy as np
 import pytest
 
 from mechdesign.core import gears
-from mechdesign.machines.cam import (CamDocument, CamResults, CheckDoc, EccentricCamResults,
-                                     SelfCheck, VerificationDocument, verification_document)
+from mechdesign.stages.cam import CamDocument, CamResults, CheckDoc, EccentricCamResults, SelfCheck, VerificationDocument, verification_document
 from mechdesign.machines.crank_rocker import CrankRockerResults
-from mechdesign.machines.gear import GearDocument
+from mechdesign.stages.gear import GearDocument
 from mechdesign.registry import entry, resolve
 from mechdesign.results import to_plain
 from mechdesign.results_docs import missing_units

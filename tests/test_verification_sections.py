@@ -25,8 +25,8 @@ from mechdesign.brief.loader import load_brief, parse_brief
 from mechdesign.cli import app
 from mechdesign.core import cam as core
 from mechdesign.machines import get_machine, stages_for
-from mechdesign.machines import cam as mcam
-from mechdesign.machines import drive as mdrive
+from mechdesign.stages import cam as mcam
+from mechdesign.stages import drive as mdrive
 from mechdesign.pipeline import run_stages
 from mechdesign.render import cam_report, disc_report, drive_report
 

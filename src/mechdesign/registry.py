@@ -108,9 +108,9 @@ _ENTRIES: dict[str, Entry | str] = {
             ("峰值扭矩", "peak torque", "N·m", "linkage.peak_torque", 1.0),
             ("飞轮 J_F", "flywheel J_F", "kg·m²", "linkage.flywheel.inertia", 1.0))),
     "cam": Entry(
-        "cam", _B + "cam:CamBrief", _B + "cam:cam_brief_to_si", _M + "cam:CAM_STAGES",
-        _M + "cam:cam_results_document", _R + "cam_report", "cam_7_3.yaml",
-        results=_M + "cam:CamResults", summary=(
+        "cam", _B + "cam:CamBrief", _B + "cam:cam_brief_to_si", "mechdesign.stages.cam:CAM_STAGES",
+        "mechdesign.stages.cam:cam_results_document", _R + "cam_report", "cam_7_3.yaml",
+        results="mechdesign.stages.cam:CamResults", summary=(
             ("基圆半径 r0", "base radius r0", "mm", "cam.base_radius", _MM),
             ("最小基圆", "least base radius", "mm", "cam.min_base_radius", _MM),
             ("滚子半径", "roller radius", "mm", "cam.roller_radius", _MM),
@@ -118,14 +118,14 @@ _ENTRIES: dict[str, Entry | str] = {
              "cam.rho_actual_min_convex", _MM))),
     "eccentric_cam": Entry(
         "eccentric_cam", _B + "cam:EccentricCamBrief", _B + "cam:eccentric_to_si",
-        _M + "cam:DISC_STAGES", _M + "cam:disc_results_document", _R + "disc_report",
-        "cam_7_1.yaml", results=_M + "cam:EccentricCamResults", summary=(
+        "mechdesign.stages.cam:DISC_STAGES", "mechdesign.stages.cam:disc_results_document", _R + "disc_report",
+        "cam_7_1.yaml", results="mechdesign.stages.cam:EccentricCamResults", summary=(
             ("圆盘半径", "disc radius", "mm", "radius", _MM),
             ("偏心距", "eccentricity", "mm", "eccentricity", _MM))),
     "drive": Entry(
-        "drive", _B + "drive:DriveBrief", _B + "drive:drive_brief_to_si", _M + "drive:DRIVE_STAGES",
-        _M + "drive:drive_results_document", _R + "drive_report", "furnace_drive.yaml",
-        results=_M + "drive:DriveResults", summary=(
+        "drive", _B + "drive:DriveBrief", _B + "drive:drive_brief_to_si", "mechdesign.stages.drive:DRIVE_STAGES",
+        "mechdesign.stages.drive:drive_results_document", _R + "drive_report", "furnace_drive.yaml",
+        results="mechdesign.stages.drive:DriveResults", summary=(
             ("总传动比", "total ratio", "", "drive.total_ratio", 1.0),
             ("所需功率", "power required", "W", "drive.power_required", 1.0),
             ("电动机", "motor", "", "drive.motor.designation", 1.0),

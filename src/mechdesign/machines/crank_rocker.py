@@ -18,7 +18,7 @@ from ..core import fourbar as fb
 from ..core.fields import q
 from ..core.mechanism import RRP, RRR, Crank, Mechanism
 from ..pipeline import Stage
-from .findings import Finding
+from ..stages.findings import Finding
 
 DEG = 180.0 / np.pi
 

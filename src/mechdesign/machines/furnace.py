@@ -41,8 +41,8 @@ from ..core.fields import q
 from ..core.mechanism import RRP, RRR, Crank, LinkPoint, Mechanism
 from ..core.synthesis import extreme_angle
 from ..pipeline import Stage
-from .drive import DriveDocument, design_drive, drive_document
-from .findings import Finding
+from ..stages.drive import DriveDocument, design_drive, drive_document
+from ..stages.findings import Finding
 from .linkage import (LinkageDocument, LinkageModel, Output, Resistance, linkage_document,
                       linkage_stages)
 

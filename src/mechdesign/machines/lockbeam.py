@@ -30,12 +30,12 @@ from ..core.fourbar import FourBar, SynthesisError, grashof
 from ..core.gears import SpurPair, spur_pair
 from ..core.mechanism import RPR, RRP, RRR, Crank, LinkPoint, Mechanism
 from ..pipeline import Stage
-from .cam import cam_document, cam_stage, design as design_cam
-from .findings import Finding
+from ..stages.cam import cam_document, cam_stage, design as design_cam
+from ..stages.findings import Finding
 from ..core.cycle import CycleDocument
 from ..core.fields import q
 from .linkage import LinkageDocument, closure_residual, linkage_document, linkage_stages
-from .cam import CamDocument
+from ..stages.cam import CamDocument
 
 TWO_PI = 2.0 * np.pi
 DEG = 180.0 / np.pi

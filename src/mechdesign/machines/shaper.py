@@ -23,10 +23,10 @@ from ..pipeline import Stage
 from ..stages.flywheel import Flywheel, FlywheelSpec, RimSpec
 from ..stages.polygons import polygon_stage
 from . import linkage as lk
-from .cam import CamDocument, cam_document
-from .drive import DriveDocument, drive_document
-from .gear import GearDocument, gear_document
-from .positions import Positions
+from ..stages.cam import CamDocument, cam_document
+from ..stages.drive import DriveDocument, drive_document
+from ..stages.gear import GearDocument, gear_document
+from ..stages.positions import Positions
 from ..core.fields import q
 
 FRAME = "7"
@@ -276,7 +276,7 @@ def _drive(r: dict):
     (Any guide-bar machine whose gear pair z1/z2 is the drive's last stage.)"""
     from dataclasses import replace
 
-    from .drive import design_drive
+    from ..stages.drive import design_drive
 
     p, f, fl = r["params"], r["linkage_forces"], r["linkage_flywheel"]
     n = r["linkage"].grid_size
@@ -301,13 +301,13 @@ def stages(params: ShaperParams) -> list[Stage]:
     """The shaper's stages; gear, drive and cam stages when the brief has those sections."""
     out = list(STAGES)
     if params.gear is not None:
-        from .gear import gear_stage
+        from ..stages.gear import gear_stage
 
         out.append(gear_stage())
     if params.drive is not None:
         out.append(drive_stage())
     if params.cam is not None:
-        from .cam import cam_stage
+        from ..stages.cam import cam_stage
 
         out.append(cam_stage())
     return out

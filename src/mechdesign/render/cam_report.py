@@ -427,7 +427,7 @@ def _sci(x: float, unit: str = "") -> str:
 
 def cam_verification_rows(v, c, lang: str) -> list[list[str]]:
     """The cam self-checks as [item, result, reference / limit, verdict] rows."""
-    from ..machines.cam import CAM_CHECK_NAMES, DIST_LIMIT
+    from ..stages.cam import CAM_CHECK_NAMES, DIST_LIMIT
 
     zh = lang == "zh"
     osc = c.params.oscillating

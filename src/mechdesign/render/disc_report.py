@@ -103,7 +103,7 @@ def verification_context(v, lang: str) -> dict:
     """``verify_rows``, ``findings`` and ``verify_note`` of the verification section."""
     if v is None:
         return {"verify_rows": [], "findings": [], "verify_note": ""}
-    from ..machines.cam import DISC_CHECK_NAMES
+    from ..stages.cam import DISC_CHECK_NAMES
 
     zh = lang == "zh"
     rows = []

@@ -258,7 +258,7 @@ def verification_context(d, v, lang: str) -> dict:
     """``verify_rows``, ``findings`` and ``verify_note`` of the verification section."""
     if v is None:
         return {"verify_rows": [], "findings": [], "verify_note": ""}
-    from ..machines.drive import DRIVE_CHECK_NAMES
+    from ..stages.drive import DRIVE_CHECK_NAMES
 
     zh = lang == "zh"
     last = len(d.shafts) - 1

@@ -18,11 +18,11 @@ from ...core.synthesis import GuideBarDesign, guide_bar_quick_return
 from ...pipeline import Stage
 from ...stages.flywheel import Flywheel, FlywheelSpec, RimSpec
 from .. import linkage as lk
-from ..drive import DriveDocument, drive_document
+from ...stages.drive import DriveDocument, drive_document
 from ..shaper import Synthesis
 from .brief import SlotterParams
-from ..cam import CamDocument
-from ..gear import GearDocument
+from ...stages.cam import CamDocument
+from ...stages.gear import GearDocument
 
 FRAME = "7"
 DOWN = -np.pi / 2
@@ -103,13 +103,13 @@ def stages(p: SlotterParams) -> list[Stage]:
     out = [Stage(("synthesis", "model"), "导杆机构设计 / linkage synthesis", _synthesis),
            Stage(engine[0].key, engine[0].title, _motion), *engine[1:]]
     if p.gear is not None:
-        from ..gear import gear_stage
+        from ...stages.gear import gear_stage
 
         out.append(gear_stage())
     if p.drive is not None:
         out.append(drive_stage())
     if p.cam is not None:
-        from ..cam import cam_stage
+        from ...stages.cam import cam_stage
 
         out.append(cam_stage())
     return out
@@ -149,8 +149,8 @@ class SlotterResults:
 
 def results_document(r: dict) -> SlotterResults:
     from ...results import SCHEMA, UNITS_NOTE
-    from ..cam import cam_document
-    from ..gear import gear_document
+    from ...stages.cam import cam_document
+    from ...stages.gear import gear_document
 
     syn, fl = r["synthesis"], r["linkage_flywheel"]
     d = syn.design
