@@ -24,10 +24,10 @@ import pytest
 from scipy.optimize import brentq, minimize_scalar
 
 from mechdesign.brief.loader import load_brief
-from mechdesign.brief.shaper import to_si
+from mechdesign.machines.shaper.brief import to_si
 from mechdesign.core import flywheel as fw
 from mechdesign.core.synthesis import extreme_angle, guide_bar_quick_return, time_ratio
-from mechdesign.machines import shaper as sh
+from mechdesign.machines.shaper import stages as sh
 
 DESIGN = Path(__file__).parents[1] / "designs" / "shaper.yaml"
 H, K, L_FRAME = 0.320, 1.2, 0.650   # seed 000 data [m], [-], [m]

@@ -7,7 +7,7 @@ import pytest
 
 from mechdesign.core import gears
 from mechdesign.stages.cam import CamDocument, CamResults, CheckDoc, EccentricCamResults, SelfCheck, VerificationDocument, verification_document
-from mechdesign.machines.crank_rocker import CrankRockerResults
+from mechdesign.machines.crank_rocker.stages import CrankRockerResults
 from mechdesign.stages.gear import GearDocument
 from mechdesign.registry import entry, resolve
 from mechdesign.results import to_plain

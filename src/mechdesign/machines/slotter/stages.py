@@ -19,7 +19,7 @@ from ...pipeline import Stage
 from ...stages.flywheel import Flywheel, FlywheelSpec, RimSpec
 from .. import linkage as lk
 from ...stages.drive import DriveDocument, drive_document
-from ..shaper import Synthesis
+from ..shaper.stages import Synthesis
 from .brief import SlotterParams
 from ...stages.cam import CamDocument
 from ...stages.gear import GearDocument
@@ -97,7 +97,7 @@ def _motion(r: dict):
 
 
 def stages(p: SlotterParams) -> list[Stage]:
-    from ..shaper import drive_stage
+    from ..shaper.stages import drive_stage
 
     engine = lk.linkage_stages(model_key="model", prefix="linkage")
     out = [Stage(("synthesis", "model"), "导杆机构设计 / linkage synthesis", _synthesis),
