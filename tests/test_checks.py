@@ -203,7 +203,7 @@ def test_the_toggle_synthesis_runs_once(monkeypatch):
 
 
 def test_the_lockbeam_feed_motion_and_bending_synthesis_run_once(monkeypatch):
-    from mechdesign.machines import linkage
+    from mechdesign.stages import linkage
     from mechdesign.machines.lockbeam import stages as lockbeam
 
     lockbeam.synthesise_bending.cache_clear()

@@ -126,7 +126,7 @@ def test_simulated_linkage_reproduces_H_and_K(shaper):
     assert k_sim == pytest.approx(K, abs=1e-9)     # angles known to 1e-9 rad
     # The program's own self-check agrees with this independent search.
     # (the linkage engine's verification: a bounded search on x_F between grid points)
-    from mechdesign.machines import linkage as lk
+    from mechdesign.stages import linkage as lk
 
     v = lk.verify(k.model, k.linkage, mech.solve(k.crank_angle), None)
     stroke, k_prog = v.stroke, v.time_ratio

@@ -52,39 +52,10 @@ _ENTRIES: dict[str, Entry | str] = {
     "lockbeam": "mechdesign.machines.lockbeam",
     "die_cutter": "mechdesign.machines.die_cutter",
     "crank_rocker": "mechdesign.machines.crank_rocker",
-    "linkage": Entry(
-        "linkage", _B + "linkage:LinkageBrief", _M + "linkage:linkage_params",
-        _M + "linkage:STAGES", _M + "linkage:results_document", _R + "linkage_report",
-        "linkage_sixbar.yaml", results=_M + "linkage:LinkageResults", summary=(
-            ("行程", "stroke", "mm", "linkage.output.stroke", _MM),
-            ("K", "K", "", "linkage.time_ratio", 1.0),
-            ("平均扭矩", "mean torque", "N·m", "linkage.mean_torque", 1.0),
-            ("峰值扭矩", "peak torque", "N·m", "linkage.peak_torque", 1.0),
-            ("飞轮 J_F", "flywheel J_F", "kg·m²", "linkage.flywheel.inertia", 1.0))),
-    "cam": Entry(
-        "cam", _B + "cam:CamBrief", _B + "cam:cam_brief_to_si", "mechdesign.stages.cam:CAM_STAGES",
-        "mechdesign.stages.cam:cam_results_document", _R + "cam_report", "cam_7_3.yaml",
-        results="mechdesign.stages.cam:CamResults", summary=(
-            ("基圆半径 r0", "base radius r0", "mm", "cam.base_radius", _MM),
-            ("最小基圆", "least base radius", "mm", "cam.min_base_radius", _MM),
-            ("滚子半径", "roller radius", "mm", "cam.roller_radius", _MM),
-            ("实际廓线最小曲率半径", "least profile radius of curvature", "mm",
-             "cam.rho_actual_min_convex", _MM))),
-    "eccentric_cam": Entry(
-        "eccentric_cam", _B + "cam:EccentricCamBrief", _B + "cam:eccentric_to_si",
-        "mechdesign.stages.cam:DISC_STAGES", "mechdesign.stages.cam:disc_results_document", _R + "disc_report",
-        "cam_7_1.yaml", results="mechdesign.stages.cam:EccentricCamResults", summary=(
-            ("圆盘半径", "disc radius", "mm", "radius", _MM),
-            ("偏心距", "eccentricity", "mm", "eccentricity", _MM))),
-    "drive": Entry(
-        "drive", _B + "drive:DriveBrief", _B + "drive:drive_brief_to_si", "mechdesign.stages.drive:DRIVE_STAGES",
-        "mechdesign.stages.drive:drive_results_document", _R + "drive_report", "furnace_drive.yaml",
-        results="mechdesign.stages.drive:DriveResults", summary=(
-            ("总传动比", "total ratio", "", "drive.total_ratio", 1.0),
-            ("所需功率", "power required", "W", "drive.power_required", 1.0),
-            ("电动机", "motor", "", "drive.motor.designation", 1.0),
-            ("输出转速", "output speed", "rpm", "drive.output_speed_rpm", 1.0))),
-    # Machines written as one package each:
+    "linkage": "mechdesign.machines.linkage",
+    "cam": "mechdesign.machines.cam",
+    "eccentric_cam": "mechdesign.machines.eccentric_cam",
+    "drive": "mechdesign.machines.drive",
     "slotter": "mechdesign.machines.slotter",
 }
 

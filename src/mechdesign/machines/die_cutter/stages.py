@@ -45,7 +45,7 @@ from ...stages.flywheel import Flywheel, FlywheelSpec, RimSpec, design_flywheel
 from ...core.cycle import CycleDocument
 from ...core.fields import q
 from ...core.intermittent import IntermittentDocument
-from ..linkage import LinkageDocument, LinkageModel, Output, Resistance, linkage_stages
+from ...stages.linkage import LinkageDocument, LinkageModel, Output, Resistance, linkage_stages
 from ...stages.cam import CamDocument
 from ...stages.drive import DriveDocument
 
@@ -750,7 +750,7 @@ def results_document(r: dict) -> DieCutterResults:
     from ...results import SCHEMA, UNITS_NOTE
     from ...stages.cam import cam_document
     from ...stages.drive import drive_document
-    from ..linkage import linkage_document
+    from ...stages.linkage import linkage_document
 
     d, amp, fl, fd, cyc, v = (r[key] for key in ("toggle", "amplification", "flywheel", "feed",
                                                  "cycle", "verification"))

@@ -43,7 +43,7 @@ from ...core.synthesis import extreme_angle
 from ...pipeline import Stage
 from ...stages.drive import DriveDocument, design_drive, drive_document
 from ...stages.findings import Finding
-from ..linkage import LinkageDocument, LinkageModel, Output, Resistance, linkage_document, linkage_stages
+from ...stages.linkage import LinkageDocument, LinkageModel, Output, Resistance, linkage_document, linkage_stages
 
 FRAME = "6"
 CRANK, COUPLER, ROCKER, ROD, SLIDER = "1", "2", "3", "4", "5"

@@ -34,7 +34,7 @@ from ...stages.cam import cam_document, cam_stage, design as design_cam
 from ...stages.findings import Finding
 from ...core.cycle import CycleDocument
 from ...core.fields import q
-from ..linkage import LinkageDocument, closure_residual, linkage_document, linkage_stages
+from ...stages.linkage import LinkageDocument, closure_residual, linkage_document, linkage_stages
 from ...stages.cam import CamDocument
 
 TWO_PI = 2.0 * np.pi
@@ -317,7 +317,7 @@ def checks(p: LockbeamParams, keep: dict | None = None) -> list:
     for the stages, so nothing is computed twice."""
     from ...brief.loader import BriefProblem
     from ...core.mechanism import AssemblyError
-    from ..linkage import motion
+    from ...stages.linkage import motion
 
     problems = []
     try:

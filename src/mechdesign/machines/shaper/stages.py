@@ -22,7 +22,7 @@ from ...core.synthesis import GuideBarDesign, guide_bar_quick_return
 from ...pipeline import Stage
 from ...stages.flywheel import Flywheel, FlywheelSpec, RimSpec
 from ...stages.polygons import polygon_stage
-from .. import linkage as lk
+from ...stages import linkage as lk
 from ...stages.cam import CamDocument, cam_document
 from ...stages.drive import DriveDocument, drive_document
 from ...stages.gear import GearDocument, gear_document

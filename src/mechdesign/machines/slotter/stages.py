@@ -17,7 +17,7 @@ from ...core.mechanism import RPR, RRP, AssemblyError, Crank, LinkPoint, Mechani
 from ...core.synthesis import GuideBarDesign, guide_bar_quick_return
 from ...pipeline import Stage
 from ...stages.flywheel import Flywheel, FlywheelSpec, RimSpec
-from .. import linkage as lk
+from ...stages import linkage as lk
 from ...stages.drive import DriveDocument, drive_document
 from ..shaper.stages import Synthesis
 from .brief import SlotterParams
