@@ -48,7 +48,8 @@ def _median_ms(fn, repeat: int) -> float:
 def _core(brief_path: str, grid_points: int | None = None):
     """The shaper's core pipeline for a brief, as a function to time."""
     from mechdesign.brief.loader import load_brief
-    from mechdesign.machines import get_machine, shaper
+    from mechdesign.machines import get_machine
+    from mechdesign.machines.shaper import stages as shaper
 
     brief = load_brief(brief_path)
     params = get_machine(brief.machine).to_params(brief)

@@ -15,7 +15,7 @@ import pytest
 import yaml
 
 from mechdesign.brief.loader import BriefError, load_brief, parse_brief
-from mechdesign.brief.shaper import ShaperBrief, to_si
+from mechdesign.machines.shaper.brief import ShaperBrief, to_si
 
 DESIGN = Path(__file__).parents[1] / "designs" / "shaper.yaml"
 

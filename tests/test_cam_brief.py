@@ -18,7 +18,9 @@ import pytest
 import yaml
 from pydantic import ValidationError
 
-from mechdesign.brief.cam import CamBrief, CamSection, EccentricCamBrief, cam_to_si, eccentric_to_si
+from mechdesign.machines.cam.brief import CamBrief
+from mechdesign.brief.cam import CamSection, cam_to_si
+from mechdesign.machines.eccentric_cam.brief import EccentricCamBrief, eccentric_to_si
 from mechdesign.brief.loader import BRIEF_MODELS, BriefError, load_brief, parse_brief
 from mechdesign.core.cam import OscillatingFollower, Programme, TranslatingFollower
 

@@ -13,10 +13,10 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from mechdesign.brief.drive import DriveBrief, drive_brief_to_si
+from mechdesign.machines.drive.brief import DriveBrief, drive_brief_to_si
 from mechdesign.brief.loader import BriefError, parse_brief
 from mechdesign.core import drive as core
-from mechdesign.machines.drive import design_drive, motor_catalogue
+from mechdesign.stages.drive import design_drive, motor_catalogue
 
 
 def _brief(stages, load=None, motor=None):

@@ -148,7 +148,7 @@ def test_constants_are_read_only_full_length_views():
 def test_velocity_zero_on_a_grid_point_despite_round_off():
     """The grid solve and a single-angle re-solve round the output's velocity at a grid
     point where it vanishes to opposite signs; both extremes must still be found."""
-    from mechdesign.machines.linkage import _extremes_by_velocity
+    from mechdesign.stages.linkage import _extremes_by_velocity
 
     def solve(phi):
         bias = -1e-17 if len(phi) > 1 else 1e-17     # grid vs re-solve: opposite round-off

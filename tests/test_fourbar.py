@@ -10,7 +10,7 @@ import numpy as np
 import pytest
 
 from mechdesign.core import fourbar as fb
-from mechdesign.machines.crank_rocker import folded_branch, simulate_four_bar
+from mechdesign.machines.crank_rocker.stages import folded_branch, simulate_four_bar
 
 RAD = np.pi / 180.0
 

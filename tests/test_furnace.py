@@ -18,12 +18,12 @@ import yaml
 from scipy.optimize import brentq, minimize_scalar
 from typer.testing import CliRunner
 
-from mechdesign.brief.furnace import furnace_to_si
+from mechdesign.machines.furnace_pusher.brief import furnace_to_si
 from mechdesign.brief.loader import parse_brief
 from mechdesign.cli import app
 from mechdesign.core import fourbar as fb
 from mechdesign.core.mechanism import RRR, Crank, Mechanism
-from mechdesign.machines.furnace import build_mechanism, synthesize
+from mechdesign.machines.furnace_pusher.stages import build_mechanism, synthesize
 
 ROOT = Path(__file__).resolve().parents[1]
 BRIEF = ROOT / "designs" / "furnace_pusher.yaml"

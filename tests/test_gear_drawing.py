@@ -221,7 +221,7 @@ def test_overlap_check_is_sensitive():
 
 @pytest.mark.parametrize("lang", ["zh", "en"])
 def test_meshing_drawing_writes_png(tmp_path, lang):
-    from mechdesign.machines.gear import gear_drawing
+    from mechdesign.stages.gear import gear_drawing
     from mechdesign.render.gear_figures import meshing_drawing
 
     # the gear stage's drawing data of SHAPER and SHIFTED (given in metres; drawn in mm)

@@ -22,7 +22,7 @@ from ezdxf import bbox
 from scipy.optimize import brentq
 
 from mechdesign.core.gears import spur_pair
-from mechdesign.machines.gear import gear_drawing
+from mechdesign.stages.gear import gear_drawing
 from mechdesign.render.gear_sheet import gear_sheet
 from mechdesign.render.sheet import SIZES, TitleInfo, title_block_box
 from mechdesign.render.sheet_dxf import write_dxf

@@ -19,11 +19,11 @@ import numpy as np
 import pytest
 
 from mechdesign.brief.loader import load_brief
-from mechdesign.brief.shaper import to_si
+from mechdesign.machines.shaper.brief import to_si
 from mechdesign.core.kinematics import cross
 from mechdesign.core.kinetostatics import Body, PointLoad, power_residual, solve_forces
 from mechdesign.core.mechanism import RPR, RRP, RRR, Crank, LinkPoint, Mechanism
-from mechdesign.machines import shaper as sh
+from mechdesign.machines.shaper import stages as sh
 
 from pathlib import Path
 

@@ -40,10 +40,8 @@ RENDER_MAY_IMPORT = {
     ("mechdesign.core.cycle", "resolve"): "looks a phase up in the diagram by its reference "
                                           "(actuator, state, occurrence): a look-up, no computation",
     ("mechdesign.core.strength", "COURSE_SCALE"): "a constant of the strength checks",
-    ("mechdesign.machines.cam", "CAM_CHECK_NAMES"): "names of the self-checks (zh, en)",
-    ("mechdesign.machines.cam", "DISC_CHECK_NAMES"): "names of the self-checks (zh, en)",
-    ("mechdesign.machines.cam", "DIST_LIMIT"): "a tolerance constant printed with its check",
-    ("mechdesign.machines.drive", "DRIVE_CHECK_NAMES"): "names of the self-checks (zh, en)",
+    ("mechdesign.stages.cam", "CAM_CHECK_NAMES"): "names of the self-checks (zh, en)",
+    ("mechdesign.stages.cam", "DIST_LIMIT"): "a tolerance constant printed with its check",
     # result and model types (isinstance checks and annotations)
     ("mechdesign.core.cam", "TranslatingFollower"): "follower type (isinstance)",
     ("mechdesign.core.cam", "OscillatingFollower"): "follower type (isinstance)",
@@ -57,8 +55,8 @@ RENDER_MAY_IMPORT = {
     ("mechdesign.core.mechanism", "RPR"): "Assur group type (isinstance)",
     ("mechdesign.core.mechanism", "LinkPoint"): "Assur group type (isinstance)",
     ("mechdesign.core.strength", "Check"): "result type (annotations)",
-    ("mechdesign.machines.cam", "Division"): "result type (annotations)",
-    ("mechdesign.machines.gear", "GearDrawing"): "result type (annotations)",
+    ("mechdesign.stages.cam", "Division"): "result type (annotations)",
+    ("mechdesign.stages.gear", "GearDrawing"): "result type (annotations)",
     ("mechdesign.core.polygons", "Polygon"): "result type (annotations)",
     ("mechdesign.stages.flywheel", "Flywheel"): "result type (isinstance)",
     ("mechdesign.stages.linkage", "LinkageModel"): "model type (isinstance)",

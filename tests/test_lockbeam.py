@@ -157,7 +157,7 @@ def test_torques_when_the_power_is_given():
     b = parse_brief(data)
     m = get_machine("lockbeam")
     p = m.to_params(b)
-    from mechdesign.machines.lockbeam import transmission
+    from mechdesign.machines.lockbeam.stages import transmission
 
     tr = transmission(p)
     # main shaft: P = 1500 · 0.96 · 0.97², T = P / (2π·10/60)

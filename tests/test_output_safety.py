@@ -45,7 +45,7 @@ def test_a_run_writes_only_its_output_folder(workspace):
 def _render_fails(monkeypatch, exc: BaseException) -> None:
     """Make the next render fail after its figures are drawn, for a changed brief (so a
     run that wrote into the folder directly would leave different files behind)."""
-    import mechdesign.render.crank_rocker_report as report
+    import mechdesign.machines.crank_rocker.report as report
 
     brief = Path("briefs") / BRIEF
     brief.write_text(brief.read_text(encoding="utf-8").replace("rocker_swing_deg: 40",

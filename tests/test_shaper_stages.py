@@ -26,8 +26,8 @@ import numpy as np
 import pytest
 
 from mechdesign.brief.loader import load_brief
-from mechdesign.brief.shaper import to_si
-from mechdesign.machines import shaper as sh
+from mechdesign.machines.shaper.brief import to_si
+from mechdesign.machines.shaper import stages as sh
 
 DESIGN = Path(__file__).parents[1] / "designs" / "shaper.yaml"
 LABELS = ("1", "2", "3", "4", "4'", "5", "6", "7", "8'", "8", "9", "10", "10'", "11", "12")

@@ -26,7 +26,7 @@ from mechdesign.brief.loader import load_brief
 from mechdesign.core.gears import spur_pair
 from mechdesign.core.intermittent import intermittent_curves
 from mechdesign.machines import get_machine, stages_for
-from mechdesign.machines.gear import gear_drawing
+from mechdesign.stages.gear import gear_drawing
 from mechdesign.pipeline import run_stages
 
 ROOT = Path(__file__).resolve().parents[1]

@@ -24,10 +24,10 @@ import pytest
 from scipy.optimize import brentq, minimize_scalar
 
 from mechdesign.brief.loader import load_brief
-from mechdesign.brief.shaper import to_si
+from mechdesign.machines.shaper.brief import to_si
 from mechdesign.core import flywheel as fw
 from mechdesign.core.synthesis import extreme_angle, guide_bar_quick_return, time_ratio
-from mechdesign.machines import shaper as sh
+from mechdesign.machines.shaper import stages as sh
 
 DESIGN = Path(__file__).parents[1] / "designs" / "shaper.yaml"
 H, K, L_FRAME = 0.320, 1.2, 0.650   # seed 000 data [m], [-], [m]
@@ -126,7 +126,7 @@ def test_simulated_linkage_reproduces_H_and_K(shaper):
     assert k_sim == pytest.approx(K, abs=1e-9)     # angles known to 1e-9 rad
     # The program's own self-check agrees with this independent search.
     # (the linkage engine's verification: a bounded search on x_F between grid points)
-    from mechdesign.machines import linkage as lk
+    from mechdesign.stages import linkage as lk
 
     v = lk.verify(k.model, k.linkage, mech.solve(k.crank_angle), None)
     stroke, k_prog = v.stroke, v.time_ratio

@@ -6,10 +6,11 @@ import numpy as np
 import pytest
 
 from mechdesign.core import gears
-from mechdesign.machines.cam import (CamDocument, CamResults, CheckDoc, EccentricCamResults,
-                                     SelfCheck, VerificationDocument, verification_document)
-from mechdesign.machines.crank_rocker import CrankRockerResults
-from mechdesign.machines.gear import GearDocument
+from mechdesign.stages.cam import CamDocument, CheckDoc, SelfCheck, VerificationDocument, verification_document
+from mechdesign.machines.cam.stages import CamResults
+from mechdesign.machines.eccentric_cam.stages import EccentricCamResults
+from mechdesign.machines.crank_rocker.stages import CrankRockerResults
+from mechdesign.stages.gear import GearDocument
 from mechdesign.registry import entry, resolve
 from mechdesign.results import to_plain
 from mechdesign.results_docs import missing_units

@@ -25,10 +25,13 @@ from mechdesign.brief.loader import load_brief, parse_brief
 from mechdesign.cli import app
 from mechdesign.core import cam as core
 from mechdesign.machines import get_machine, stages_for
-from mechdesign.machines import cam as mcam
-from mechdesign.machines import drive as mdrive
+from mechdesign.stages import cam as mcam
+from mechdesign.stages import drive as mdrive
 from mechdesign.pipeline import run_stages
-from mechdesign.render import cam_report, disc_report, drive_report
+from mechdesign.render import cam_report
+from mechdesign.machines.eccentric_cam import report as disc_report
+from mechdesign.machines.drive import report as drive_report
+from mechdesign.machines.eccentric_cam import stages as mdisc
 
 ROOT = Path(__file__).resolve().parents[1]
 DESIGNS = ROOT / "designs"
@@ -284,7 +287,7 @@ def test_disc_geometry_against_plane_geometry():
     params = get_machine("eccentric_cam").to_params(p)
     expect = [math.sqrt(40**2 - 20**2), math.sqrt(40**2 - 5**2), math.sqrt(60**2 - 20**2)]
     for (_, fol), y in zip(params.followers, expect):
-        got = mcam.disc_geometric(np.array([D(90)]), params.radius, params.eccentricity, fol, 1)
+        got = mdisc.disc_geometric(np.array([D(90)]), params.radius, params.eccentricity, fol, 1)
         assert got[0] / MM == pytest.approx(y, abs=1e-9)
 
 
@@ -308,7 +311,7 @@ def test_disc_checks_pass(disc):
 def test_each_disc_check_fails_on_a_perturbed_motion(disc, key, change):
     d = disc["disc"]
     bad = replace(d, motions=[change(d.motions[0])] + d.motions[1:])
-    v = mcam.verify_disc(bad)
+    v = mdisc.verify_disc(bad)
     failed = [c for c in v.checks if not c.passed]
     assert [(c.key, c.detail["label"]) for c in failed] == [(key, "(a)")]
     assert [w.code for w in v.warnings] == ["self_check"]

@@ -154,57 +154,6 @@ class CamSection(StrictModel):
         return self
 
 
-class CamBrief(StrictModel):
-    """Stand-alone cam design brief (凸轮机构设计): synthesis of a disc cam for a given
-    follower programme."""
-
-    machine: Literal["cam"] = Field(description="Machine type")
-    report: ReportMeta
-    cam: CamSection
-
-
-class DiscFollower(StrictModel):
-    """A translating follower on the eccentric disc."""
-
-    label: str = Field(min_length=1, max_length=60, description="Name shown in the report, e.g. (a)")
-    contact: Literal["knife", "roller", "flat"] = Field(description="knife (尖顶), roller (滚子) or flat (平底)")
-    offset_mm: float = Field(0.0, ge=0, le=10000, description="Offset e of the follower axis [mm]")
-    offset_side: Literal["right", "left"] = Field("right", description="Side of the axis, seen with the follower on top")
-    roller_radius_mm: float = Field(0.0, ge=0, le=1000, description="Roller radius r_r [mm] (roller only)")
-
-    @model_validator(mode="after")
-    def _roller(self):
-        _check_roller(self.contact, self.roller_radius_mm)
-        return self
-
-
-class EccentricDisc(StrictModel):
-    """The given cam: a circular disc mounted off-centre (偏心圆盘)."""
-
-    radius_R_mm: float = Field(gt=0, le=10000, description="Disc radius R [mm]")
-    eccentricity_mm: float = Field(gt=0, le=10000, description="Distance from the cam axis to the disc centre [mm]")
-    rotation: Literal["cw", "ccw"] = Field("ccw", description="Sense of rotation")
-
-    @model_validator(mode="after")
-    def _inside(self):
-        if self.eccentricity_mm >= self.radius_R_mm:
-            raise ValueError("eccentricity_mm must be smaller than radius_R_mm (the axis lies inside the disc)")
-        return self
-
-
-class EccentricCamBrief(StrictModel):
-    """Analysis of a given eccentric circular disc cam (凸轮机构分析) with one or more
-    translating followers: displacement and pressure angle at every cam angle."""
-
-    machine: Literal["eccentric_cam"] = Field(description="Machine type")
-    report: ReportMeta
-    disc: EccentricDisc
-    followers: list[DiscFollower] = Field(min_length=1, max_length=6)
-    query_angles_deg: list[Annotated[float, Field(ge=-3600, le=3600)]] = Field(default_factory=list, max_length=24, description=(
-        "Cam angles [°] at which displacement and pressure angle are tabulated (e.g. exercise 7-2)"))
-    table_step_deg: float = Field(10.0, ge=0.5, le=90, description="Step of the displacement table [°]")
-
-
 # --------------------------------------------------------------------------- to SI
 
 
@@ -269,32 +218,3 @@ def cam_to_si(c: CamSection, speed_rpm: float | None = None) -> CamParams:
         table_step=np.radians(c.table_step_deg), oscillating=osc)
 
 
-@dataclass(frozen=True)
-class StandaloneCamParams:
-    cam: CamParams
-
-
-def cam_brief_to_si(b: CamBrief) -> StandaloneCamParams:
-    return StandaloneCamParams(cam_to_si(b.cam))
-
-
-@dataclass(frozen=True)
-class DiscParams:
-    radius: float                # [m]
-    eccentricity: float          # [m]
-    rotation: int
-    followers: tuple             # ((label, core.cam.TranslatingFollower), …)
-    query_angles: np.ndarray     # [rad]
-    table_step: float            # [rad]
-
-
-def eccentric_to_si(b: EccentricCamBrief) -> DiscParams:
-    from ..core.cam import TranslatingFollower
-
-    mm = 1e-3
-    fols = tuple((f.label, TranslatingFollower(f.contact, side_sign(f.offset_side) * f.offset_mm * mm,
-                                               f.roller_radius_mm * mm)) for f in b.followers)
-    return DiscParams(b.disc.radius_R_mm * mm, b.disc.eccentricity_mm * mm,
-                      1 if b.disc.rotation == "ccw" else -1, fols,
-                      np.radians(np.array(b.query_angles_deg, dtype=float)),
-                      np.radians(b.table_step_deg))

@@ -278,15 +278,6 @@ def check_references(s: LinkageSection) -> dict[str, list[str]]:
     return members
 
 
-class LinkageBrief(StrictModel):
-    """Any planar linkage (平面连杆机构) from YAML: motion, forces and flywheel."""
-
-    machine: Literal["linkage"] = Field(description="Machine type")
-    report: ReportMeta
-    linkage: LinkageSection
-    analysis: AnalysisSettings = AnalysisSettings()
-
-
 def linkage_to_model(s: LinkageSection, analysis: AnalysisSettings, names: dict | None = None):
     """The SI linkage model (m, rad, rad/s, kg, N) of the section: the only conversion."""
     from ..core.kinetostatics import Body

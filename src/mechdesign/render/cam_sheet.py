@@ -29,7 +29,7 @@ import numpy as np
 
 from ..core.cam import DWELL, RETURN, RISE, OscillatingFollower
 from ..core.motion_laws import LAWS
-from ..machines.cam import Division
+from ..stages.cam import Division
 from .cam_report import _IMPACT, CONTACT, _segment_name, _Units
 from .sheet import (
     THIN,
@@ -132,7 +132,7 @@ GAP = 7.0                  # vertical gap between the panels of the right column
 
 
 def divisions(c) -> list:
-    """The division points (machines.cam.Division) the cam stage chose: every rise and
+    """The division points (stages.cam.Division) the cam stage chose: every rise and
     return in equal parts, the ends of every segment; numbered 0, 1, 2, … from δ = 0."""
     return list(c.drawing.divisions)
 
@@ -146,7 +146,7 @@ def _follower(c):
 
 
 def cam_sheet(c, info: TitleInfo, lang: str = "zh") -> Sheet:
-    """The A2 cam sheet (凸轮机构设计图) of the cam result ``c`` (machines.cam.CamResult).
+    """The A2 cam sheet (凸轮机构设计图) of the cam result ``c`` (stages.cam.CamResult).
 
     ``info`` fills the title block; an empty ``info.scale`` becomes the profile's scale and
     an empty ``info.drawing`` the sheet's default name. Raises ValueError if the drawing

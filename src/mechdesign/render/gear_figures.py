@@ -7,7 +7,7 @@ from pathlib import Path
 
 import numpy as np
 
-from ..machines.gear import GearDrawing
+from ..stages.gear import GearDrawing
 from .figures import figure
 
 LABELS = {

@@ -1,7 +1,7 @@
 """The gear meshing drawing sheet (齿轮啮合图) that the student hands in.
 
 The pair is drawn in the layout of :func:`mechdesign.core.gears.mesh_layout` (computed by the
-gear stage, :class:`mechdesign.machines.gear.GearDrawing`; the sheet only reads it): the line of
+gear stage, :class:`mechdesign.stages.gear.GearDrawing`; the sheet only reads it): the line of
 centres vertical, the pinion O1 below, the gear O2 above, gear 1 driving counter-clockwise.
 Several generated teeth of each gear around the pitch point (true involutes with their
 root fillets and any undercut, :func:`mechdesign.core.gears.tooth_outline`), the pitch,
@@ -22,7 +22,7 @@ from dataclasses import dataclass, replace
 import numpy as np
 
 from ..core.gears import SpurPair
-from ..machines.gear import GearDrawing
+from ..stages.gear import GearDrawing
 from .sheet import (LabelPlacer, Polyline, Sheet, TitleInfo, clip_segment, frame,
                     length_scale, sample_polyline, scale_text, table, text_width, title_block_box)
 

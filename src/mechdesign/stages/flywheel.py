@@ -15,7 +15,7 @@ import numpy as np
 
 from ..core import flywheel as fw
 from ..core.fields import q
-from ..machines.findings import Finding
+from .findings import Finding
 
 CAST_IRON_RIM_SPEED = 30.0   # [m/s] usual limit of a cast-iron rim's peripheral speed
 

@@ -24,8 +24,8 @@ import numpy as np
 from ..core.kinetostatics import Body, PointLoad, power_residual, solve_forces
 from ..core.mechanism import RPR, RRP, RRR, Crank, LinkPoint, Mechanism, Motion
 from ..core.fields import q
-from ..machines.findings import Finding
-from ..machines.positions import Positions, textbook_positions
+from .findings import Finding
+from .positions import Positions, textbook_positions
 from ..pipeline import Stage
 from .flywheel import Flywheel, FlywheelSpec, design_flywheel
 from .polygons import polygon_stage

@@ -13,7 +13,7 @@ from pydantic import Field
 from ...brief.cam import CamParams, cam_to_si
 from ...brief.common import StrictModel
 from ...brief.drive import DriveParams
-from ...brief.shaper import GearParams, ShaperBrief, _drive_to_si, _gear_to_si
+from ..shaper.brief import GearParams, ShaperBrief, _drive_to_si, _gear_to_si
 
 
 class SlotterLinkage(StrictModel):

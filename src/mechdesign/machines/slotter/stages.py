@@ -17,12 +17,12 @@ from ...core.mechanism import RPR, RRP, AssemblyError, Crank, LinkPoint, Mechani
 from ...core.synthesis import GuideBarDesign, guide_bar_quick_return
 from ...pipeline import Stage
 from ...stages.flywheel import Flywheel, FlywheelSpec, RimSpec
-from .. import linkage as lk
-from ..drive import DriveDocument, drive_document
-from ..shaper import Synthesis
+from ...stages import linkage as lk
+from ...stages.drive import DriveDocument, drive_document
+from ..shaper.stages import Synthesis
 from .brief import SlotterParams
-from ..cam import CamDocument
-from ..gear import GearDocument
+from ...stages.cam import CamDocument
+from ...stages.gear import GearDocument
 
 FRAME = "7"
 DOWN = -np.pi / 2
@@ -97,19 +97,19 @@ def _motion(r: dict):
 
 
 def stages(p: SlotterParams) -> list[Stage]:
-    from ..shaper import drive_stage
+    from ..shaper.stages import drive_stage
 
     engine = lk.linkage_stages(model_key="model", prefix="linkage")
     out = [Stage(("synthesis", "model"), "导杆机构设计 / linkage synthesis", _synthesis),
            Stage(engine[0].key, engine[0].title, _motion), *engine[1:]]
     if p.gear is not None:
-        from ..gear import gear_stage
+        from ...stages.gear import gear_stage
 
         out.append(gear_stage())
     if p.drive is not None:
         out.append(drive_stage())
     if p.cam is not None:
-        from ..cam import cam_stage
+        from ...stages.cam import cam_stage
 
         out.append(cam_stage())
     return out
@@ -149,8 +149,8 @@ class SlotterResults:
 
 def results_document(r: dict) -> SlotterResults:
     from ...results import SCHEMA, UNITS_NOTE
-    from ..cam import cam_document
-    from ..gear import gear_document
+    from ...stages.cam import cam_document
+    from ...stages.gear import gear_document
 
     syn, fl = r["synthesis"], r["linkage_flywheel"]
     d = syn.design

@@ -11,20 +11,20 @@ The drive (motor → V-belt → two-stage helical reducer → distribution shaft
 ``drive:`` section. Course units in the brief (mm, °, rpm, kg, N, m for the cut length);
 :func:`die_cutter_to_si` converts once to the SI :class:`DieCutterParams`. Validation checks
 fields and the closed-form rules between them; whether the press can be synthesised is
-asked once per run by :func:`mechdesign.machines.die_cutter.checks`.
+asked once per run by :func:`mechdesign.machines.die_cutter.stages.checks`.
 """
 from __future__ import annotations
 
 from dataclasses import dataclass
 from typing import Annotated, Literal, Optional, Union
 
-from ..lazy import np
+from ...lazy import np
 from pydantic import BeforeValidator, Field, model_validator
 
-from .cam import CamParams, CamSection, cam_to_si
-from .common import AnalysisSettings, Problems, ReportMeta, StrictModel, parse_fraction
-from .components import IncompleteGearSection
-from .drive import DriveParams, DriveSection, drive_to_si
+from ...brief.cam import CamParams, CamSection, cam_to_si
+from ...brief.common import AnalysisSettings, Problems, ReportMeta, StrictModel, parse_fraction
+from ...brief.components import IncompleteGearSection
+from ...brief.drive import DriveParams, DriveSection, drive_to_si
 
 
 def _fraction(value):
@@ -173,9 +173,9 @@ class DieCutterBrief(StrictModel):
     @model_validator(mode="after")
     def _consistent(self):
         """The rules between sections (closed form, no synthesis: whether the press can be
-        built is asked once per run by :func:`mechdesign.machines.die_cutter.checks`); every
+        built is asked once per run by :func:`mechdesign.machines.die_cutter.stages.checks`); every
         problem is reported, each at its field."""
-        from .components import incomplete_gear_to_si
+        from ...brief.components import incomplete_gear_to_si
 
         out = Problems(self)
         pr = self.press

@@ -7,10 +7,10 @@ from pathlib import Path
 
 import numpy as np
 
-from ..fileio import atomic_open
-from . import cam_figures as cf
-from .cam_report import CONTACT
-from .fmt import e, f, md_meta, md_text, mpl_text
+from ...fileio import atomic_open
+from ...render import cam_figures as cf
+from ...render.cam_report import CONTACT
+from ...render.fmt import e, f, md_meta, md_text, mpl_text
 
 DEG = 180.0 / np.pi
 MM = 1e3
@@ -103,7 +103,7 @@ def verification_context(v, lang: str) -> dict:
     """``verify_rows``, ``findings`` and ``verify_note`` of the verification section."""
     if v is None:
         return {"verify_rows": [], "findings": [], "verify_note": ""}
-    from ..machines.cam import DISC_CHECK_NAMES
+    from .stages import DISC_CHECK_NAMES
 
     zh = lang == "zh"
     rows = []

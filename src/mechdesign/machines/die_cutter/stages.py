@@ -33,21 +33,21 @@ from dataclasses import dataclass
 import numpy as np
 from scipy.optimize import brentq
 
-from ..brief.die_cutter import DieCutterParams, PressGeometry
-from ..core import cycle as cy
-from ..core import fourbar
-from ..core.kinetostatics import Body, PointLoad, solve_forces
-from ..core.mechanism import RRP, RRR, Crank, LinkPoint, Mechanism
-from ..core.synthesis import extreme_angle
-from ..pipeline import Stage
-from .findings import Finding
-from ..stages.flywheel import Flywheel, FlywheelSpec, RimSpec, design_flywheel
-from ..core.cycle import CycleDocument
-from ..core.fields import q
-from ..core.intermittent import IntermittentDocument
-from .linkage import LinkageDocument, LinkageModel, Output, Resistance, linkage_stages
-from .cam import CamDocument
-from .drive import DriveDocument
+from .brief import DieCutterParams, PressGeometry
+from ...core import cycle as cy
+from ...core import fourbar
+from ...core.kinetostatics import Body, PointLoad, solve_forces
+from ...core.mechanism import RRP, RRR, Crank, LinkPoint, Mechanism
+from ...core.synthesis import extreme_angle
+from ...pipeline import Stage
+from ...stages.findings import Finding
+from ...stages.flywheel import Flywheel, FlywheelSpec, RimSpec, design_flywheel
+from ...core.cycle import CycleDocument
+from ...core.fields import q
+from ...core.intermittent import IntermittentDocument
+from ...stages.linkage import LinkageDocument, LinkageModel, Output, Resistance, linkage_stages
+from ...stages.cam import CamDocument
+from ...stages.drive import DriveDocument
 
 TWO_PI = 2.0 * np.pi
 DEG = 180.0 / np.pi
@@ -214,7 +214,7 @@ def checks(p: DieCutterParams, keep: dict | None = None) -> list:
     """The feasibility checks of a run (after validation, once): can the toggle press be
     synthesised? Every problem as a :class:`~mechdesign.brief.loader.BriefProblem` at its
     brief field; the design is stored in ``keep["toggle"]`` for the synthesis stage."""
-    from ..brief.loader import BriefProblem
+    from ...brief.loader import BriefProblem
 
     try:
         d = toggle_synthesis(p.geometry)
@@ -357,7 +357,7 @@ def amplification(model: LinkageModel, d: ToggleDesign, k, raw, f, p: DieCutterP
 def _drive(r: dict):
     """The drive delivers the crank's mean power at the distribution shaft's speed; the
     stages after the flywheel carry the peak of M_b (peak factor = peak / mean)."""
-    from .drive import design_drive
+    from ...stages.drive import design_drive
 
     p, f = r["params"], r["press_forces"]
     peak = float(f.peak_torque / f.mean_torque)
@@ -383,8 +383,8 @@ def peak_shafts(drive) -> tuple[PeakShaft, ...]:
     """The shafts after the flywheel carry the peak of M_b: their torsion estimate
     d ≥ A0 ∛(P/n) (the drive stage's, from the mean power) against the same estimate with the
     peak power T_peak·ω."""
-    from ..core.strength import shaft_min_diameter
-    from .drive_strength import A0, KEYWAY
+    from ...core.strength import shaft_min_diameter
+    from ...stages.drive_strength import A0, KEYWAY
 
     first = drive.peak_from_shaft
     if first is None:
@@ -433,8 +433,8 @@ def _wrap(x: float) -> float:
 
 
 def feed(amp: Amplification, p: DieCutterParams) -> Feed:
-    from ..brief.components import incomplete_gear_to_si
-    from ..core.intermittent import intermittent_curves
+    from ...brief.components import incomplete_gear_to_si
+    from ...core.intermittent import intermittent_curves
 
     free = incomplete_gear_to_si(p.gear_section, p.shaft_rpm)
     auto = p.feed_start is None
@@ -619,7 +619,7 @@ def _verify(r: dict) -> DieVerification:
 
 
 def stages(params: DieCutterParams) -> list[Stage]:
-    from .cam import cam_stage
+    from ...stages.cam import cam_stage
 
     press = [s for s in linkage_stages(model_key="press_model", prefix="press")
              if s.key != "press_flywheel"]
@@ -746,11 +746,11 @@ class DieCutterResults:
 
 def results_document(r: dict) -> DieCutterResults:
     """Everything computed, in SI units, for ``results.json``."""
-    from ..core.intermittent import intermittent_document
-    from ..results import SCHEMA, UNITS_NOTE
-    from .cam import cam_document
-    from .drive import drive_document
-    from .linkage import linkage_document
+    from ...core.intermittent import intermittent_document
+    from ...results import SCHEMA, UNITS_NOTE
+    from ...stages.cam import cam_document
+    from ...stages.drive import drive_document
+    from ...stages.linkage import linkage_document
 
     d, amp, fl, fd, cyc, v = (r[key] for key in ("toggle", "amplification", "flywheel", "feed",
                                                  "cycle", "verification"))

@@ -7,12 +7,12 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Literal, Optional
 
-from ..lazy import np
+from ...lazy import np
 from pydantic import Field, field_validator, model_validator
 
-from .cam import CamParams, CamSection, cam_to_si
-from .common import AnalysisSettings, ReportMeta, SheetSettings, StrictModel, parse_fraction
-from .drive import DriveParams, DriveSection, DriveStage, check_material, drive_to_si
+from ...brief.cam import CamParams, CamSection, cam_to_si
+from ...brief.common import AnalysisSettings, ReportMeta, SheetSettings, StrictModel, parse_fraction
+from ...brief.drive import DriveParams, DriveSection, DriveStage, check_material, drive_to_si
 
 
 class ShaperLinkage(StrictModel):

@@ -7,10 +7,10 @@ from pathlib import Path
 
 import numpy as np
 
-from ..fileio import atomic_open
-from .figures import figure
-from .fmt import e as fe
-from .fmt import f, md_meta, md_text, mpl_text
+from ...fileio import atomic_open
+from ...render.figures import figure
+from ...render.fmt import e as fe
+from ...render.fmt import f, md_meta, md_text, mpl_text
 
 DEG = 180.0 / np.pi
 MM = 1e3

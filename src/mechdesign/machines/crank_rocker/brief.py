@@ -10,10 +10,10 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Literal, Optional
 
-from ..lazy import np
+from ...lazy import np
 from pydantic import Field, field_validator, model_validator
 
-from .common import ReportMeta, StrictModel
+from ...brief.common import ReportMeta, StrictModel
 
 _DEFAULT_THETAS = [0.0, 5.0, 10.0, 15.0, 20.0, 25.0, 30.0]
 
@@ -29,7 +29,7 @@ class SliderCrankSection(StrictModel):
 
     @model_validator(mode="after")
     def _feasible(self):
-        from ..core import fourbar  # lazily: it imports scipy
+        from ...core import fourbar
 
         try:
             fourbar.offset_slider_crank(self.time_ratio_K, self.stroke_H_mm * 1e-3,
@@ -107,7 +107,7 @@ class CrankRockerBrief(StrictModel):
 
     @model_validator(mode="after")
     def _complete(self):
-        from ..core import fourbar
+        from ...core import fourbar
 
         if (self.time_ratio_K is None) == (self.extreme_angle_deg is None):
             raise ValueError("give exactly one of time_ratio_K and extreme_angle_deg")
@@ -135,7 +135,7 @@ class CrankRockerBrief(StrictModel):
     def theta_rad(self) -> float:
         if self.extreme_angle_deg is not None:
             return float(np.radians(self.extreme_angle_deg))
-        from ..core.synthesis import extreme_angle
+        from ...core.synthesis import extreme_angle
 
         return float(extreme_angle(self.time_ratio_K))
 
@@ -177,7 +177,7 @@ class CrankRockerParams:
 
 def crank_rocker_to_si(b: CrankRockerBrief) -> CrankRockerParams:
     """Convert the brief's course units to SI (the only unit conversion on input)."""
-    from ..core import fourbar
+    from ...core import fourbar
 
     mm = 1e-3
     theta = b.theta_rad
@@ -205,6 +205,6 @@ def crank_rocker_to_si(b: CrankRockerBrief) -> CrankRockerParams:
 
 
 def _extreme_angle(K: float) -> float:
-    from ..core.synthesis import extreme_angle
+    from ...core.synthesis import extreme_angle
 
     return extreme_angle(K)

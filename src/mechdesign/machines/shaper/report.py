@@ -11,8 +11,8 @@ from pathlib import Path
 
 import numpy as np
 
-from . import figures as fig
-from .fmt import e, f, md_meta
+from ...render import figures as fig
+from ...render.fmt import e, f, md_meta
 
 DEG = 180.0 / np.pi
 
@@ -51,11 +51,11 @@ def make_figures(r: dict, fig_dir: Path, lang: str) -> dict[str, str]:
     fig.mechanism(out("mechanism"), lang, pts, [labels[i] for i in regular],
                   syn.design.guide_height * 1e3, syn.design.crank * 1e3)
     if r.get("cam") is not None:
-        from .cam_report import make_cam_figures
+        from ...render.cam_report import make_cam_figures
 
         paths.update(make_cam_figures(r["cam"], fig_dir, lang))
     if r.get("gear") is not None:
-        from .gear_report import make_gear_figures
+        from ...render.gear_report import make_gear_figures
 
         paths.update(make_gear_figures(r["gear"], fig_dir, lang))
     return paths
@@ -63,7 +63,7 @@ def make_figures(r: dict, fig_dir: Path, lang: str) -> dict[str, str]:
 
 def animate(r: dict, path: Path, lang: str) -> Path:
     """The GIF of the linkage turning through one revolution (format gif)."""
-    from .animation import shaper_gif
+    from ...render.animation import shaper_gif
 
     return shaper_gif(r, path, lang)
 
@@ -72,7 +72,7 @@ def write_data(r: dict, folder: Path) -> list[Path]:
     """Cam profile coordinates as CSV when the brief has a cam."""
     if r.get("cam") is None:
         return []
-    from .cam_report import write_cam_csv
+    from ...render.cam_report import write_cam_csv
 
     return write_cam_csv(r["cam"], folder)
 
@@ -110,7 +110,7 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
         ["$z_1, z_2$", "齿轮齿数 / gear teeth", f"{p.z1}, {p.z2}", "—"],
         ["$[\\delta]$", "许用速度不均匀系数 / speed fluctuation", f"1/{1 / p.fluctuation:.4g}", "—"],
     ]
-    from .guide_bar_report import guide_bar_context
+    from ...render.guide_bar_report import guide_bar_context
 
     guide_bar = guide_bar_context(syn, p, "BF", "刨头", [
         ["$L_{O_2M}$", "导路至 O2 / guide line above O2", f(syn.guide_height_above_O2 * mm, 2), "mm"]])
@@ -169,16 +169,16 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
     sense_en = "clockwise" if p.crank_omega < 0 else "counter-clockwise"
     cam = None
     if r.get("cam") is not None:
-        from .cam_report import cam_context
+        from ...render.cam_report import cam_context
 
         cam = cam_context(r["cam"], lang, figures, "cam_profile.csv")
     gear = drive = None
     if r.get("gear") is not None:
-        from .gear_report import gear_context
+        from ...render.gear_report import gear_context
 
         gear = gear_context(r["gear"], lang, figures)
     if r.get("drive") is not None:
-        from .drive_report import drive_context
+        from ...render.drive_report import drive_context
 
         pw = (rf"P_w = \bar M_b\,\omega_2 = {f(fl.mean_torque, 3)} \times "
               rf"{f(abs(p.crank_omega), 4)} = {f(fl.mean_power, 2)}\ \text{{W}}")

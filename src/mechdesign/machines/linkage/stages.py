@@ -4,50 +4,16 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from ..core.fields import q
-from ..pipeline import Stage
-from ..stages.linkage import (  # noqa: F401  (the engine's names, re-exported)
-    Flywheel,
-    FlywheelSpec,
-    LinkageDocument,
-    LinkageFlywheel,
-    LinkageForces,
-    LinkageGrid,
-    LinkageModel,
-    LinkageMotion,
-    LinkagePosition,
-    LinkageVerification,
-    Output,
-    OutputDoc,
-    QualityAngle,
-    QualityDoc,
-    Resistance,
-    TWO_PI,
-    _extremes_by_position,
-    _extremes_by_velocity,
-    _fd_errors,
-    _four_bar_of,
-    _output_coordinate,
-    _quality,
-    _strokes,
-    closure_residual,
-    flywheel,
-    forces,
-    link_members,
-    linkage_document,
-    linkage_stages,
-    motion,
-    quality_findings,
-    resistance_loads,
-    verify,
-)
+from ...core.fields import q
+from ...pipeline import Stage
+from ...stages.linkage import Flywheel, FlywheelSpec, LinkageDocument, LinkageFlywheel, LinkageForces, LinkageGrid, LinkageModel, LinkageMotion, LinkagePosition, LinkageVerification, Output, OutputDoc, QualityAngle, QualityDoc, Resistance, TWO_PI, _extremes_by_position, _extremes_by_velocity, _fd_errors, _four_bar_of, _output_coordinate, _quality, _strokes, closure_residual, flywheel, forces, link_members, linkage_document, linkage_stages, motion, quality_findings, resistance_loads, verify
 
 
 # ---------------------------------------------------------------- the `linkage` machine
 
 def linkage_params(brief):
     """The generic brief's SI model."""
-    from ..brief.linkage import linkage_to_model
+    from ...brief.linkage import linkage_to_model
 
     from dataclasses import replace
 
@@ -83,7 +49,7 @@ def brief_fields(section, group: str, code: str, prefix: str = "linkage") -> tup
 def _motion_of_brief(r: dict):
     """The motion stage of the ``linkage`` machine: an assembly failure also names the
     brief's fields to change."""
-    from ..core.mechanism import AssemblyError
+    from ...core.mechanism import AssemblyError
 
     try:
         return motion(r["params"])
@@ -110,7 +76,7 @@ class LinkageResults:
 
 
 def results_document(r: dict) -> LinkageResults:
-    from ..results import SCHEMA, UNITS_NOTE
+    from ...results import SCHEMA, UNITS_NOTE
 
     return LinkageResults(SCHEMA, "linkage", UNITS_NOTE, linkage_document(
         r["params"], r["linkage"], r["linkage_forces"], r["linkage_flywheel"],

@@ -35,16 +35,15 @@ from dataclasses import dataclass, fields
 import numpy as np
 from scipy.optimize import brentq, minimize_scalar
 
-from ..brief.furnace import FurnaceParams, PusherParams
-from ..core import fourbar as fb
-from ..core.fields import q
-from ..core.mechanism import RRP, RRR, Crank, LinkPoint, Mechanism
-from ..core.synthesis import extreme_angle
-from ..pipeline import Stage
-from .drive import DriveDocument, design_drive, drive_document
-from .findings import Finding
-from .linkage import (LinkageDocument, LinkageModel, Output, Resistance, linkage_document,
-                      linkage_stages)
+from .brief import FurnaceParams, PusherParams
+from ...core import fourbar as fb
+from ...core.fields import q
+from ...core.mechanism import RRP, RRR, Crank, LinkPoint, Mechanism
+from ...core.synthesis import extreme_angle
+from ...pipeline import Stage
+from ...stages.drive import DriveDocument, design_drive, drive_document
+from ...stages.findings import Finding
+from ...stages.linkage import LinkageDocument, LinkageModel, Output, Resistance, linkage_document, linkage_stages
 
 FRAME = "6"
 CRANK, COUPLER, ROCKER, ROD, SLIDER = "1", "2", "3", "4", "5"
@@ -435,7 +434,7 @@ def checks(p: FurnaceParams, keep: dict | None = None) -> list:
     six-bar? Every problem as a :class:`~mechdesign.brief.loader.BriefProblem` at its brief
     field (the value is filled in from the brief by the runner). The synthesis is stored
     in ``keep["synthesis"]`` for :func:`synthesis_stage`, so it is not computed twice."""
-    from ..brief.loader import BriefProblem
+    from ...brief.loader import BriefProblem
 
     try:
         syn = synthesize(p.pusher)
@@ -610,7 +609,7 @@ FURNACE_UNITS = "SI: m, s, rad, N, N·m, W; complex vectors as [x, y]; speeds in
 
 def results_document(r: dict) -> FurnaceResults:
     """Everything computed, SI units, for ``results.json``."""
-    from ..results import SCHEMA
+    from ...results import SCHEMA
 
     syn = r["synthesis"]
     plain = {f.name: getattr(syn, f.name) for f in fields(PusherSynthesisDoc)

@@ -15,19 +15,19 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..brief.shaper import ShaperParams
-from ..core.kinetostatics import Body
-from ..core.mechanism import RPR, RRP, AssemblyError, Crank, LinkPoint, Mechanism
-from ..core.synthesis import GuideBarDesign, guide_bar_quick_return
-from ..pipeline import Stage
-from ..stages.flywheel import Flywheel, FlywheelSpec, RimSpec
-from ..stages.polygons import polygon_stage
-from . import linkage as lk
-from .cam import CamDocument, cam_document
-from .drive import DriveDocument, drive_document
-from .gear import GearDocument, gear_document
-from .positions import Positions
-from ..core.fields import q
+from .brief import ShaperParams
+from ...core.kinetostatics import Body
+from ...core.mechanism import RPR, RRP, AssemblyError, Crank, LinkPoint, Mechanism
+from ...core.synthesis import GuideBarDesign, guide_bar_quick_return
+from ...pipeline import Stage
+from ...stages.flywheel import Flywheel, FlywheelSpec, RimSpec
+from ...stages.polygons import polygon_stage
+from ...stages import linkage as lk
+from ...stages.cam import CamDocument, cam_document
+from ...stages.drive import DriveDocument, drive_document
+from ...stages.gear import GearDocument, gear_document
+from ...stages.positions import Positions
+from ...core.fields import q
 
 FRAME = "7"
 
@@ -276,7 +276,7 @@ def _drive(r: dict):
     (Any guide-bar machine whose gear pair z1/z2 is the drive's last stage.)"""
     from dataclasses import replace
 
-    from .drive import design_drive
+    from ...stages.drive import design_drive
 
     p, f, fl = r["params"], r["linkage_forces"], r["linkage_flywheel"]
     n = r["linkage"].grid_size
@@ -301,13 +301,13 @@ def stages(params: ShaperParams) -> list[Stage]:
     """The shaper's stages; gear, drive and cam stages when the brief has those sections."""
     out = list(STAGES)
     if params.gear is not None:
-        from .gear import gear_stage
+        from ...stages.gear import gear_stage
 
         out.append(gear_stage())
     if params.drive is not None:
         out.append(drive_stage())
     if params.cam is not None:
-        from .cam import cam_stage
+        from ...stages.cam import cam_stage
 
         out.append(cam_stage())
     return out
@@ -385,7 +385,7 @@ class ShaperResults:
 
 def results_document(r: dict) -> ShaperResults:
     """Everything computed, in SI units, for ``results.json`` (see docs/results.md)."""
-    from ..results import SCHEMA, UNITS_NOTE
+    from ...results import SCHEMA, UNITS_NOTE
 
     syn, k, f, fl, v = (r[key] for key in ("synthesis", "kinematics", "forces", "flywheel",
                                             "verification"))

@@ -11,8 +11,8 @@ from pathlib import Path
 
 import numpy as np
 
-from . import figures as fig
-from .fmt import e, f, md_meta, md_text
+from ...render import figures as fig
+from ...render.fmt import e, f, md_meta, md_text
 
 DEG = 180.0 / np.pi
 MM = 1e3
@@ -167,9 +167,9 @@ def _seed_figure(path: Path, lang: str, b):
 
 
 def make_figures(r: dict, fig_dir: Path, lang: str) -> dict[str, str]:
-    from .cam_report import make_cam_figures
-    from .components_report import make_cycle_figures
-    from .linkage_report import make_linkage_figures
+    from ...render.cam_report import make_cam_figures
+    from ...render.components_report import make_cycle_figures
+    from ...render.linkage_report import make_linkage_figures
 
     p = r["params"]
     paths: dict[str, str] = {}
@@ -345,7 +345,7 @@ def _transmission(r: dict, lang: str) -> dict:
 
 
 def _bending(r: dict, lang: str, figures: dict) -> dict:
-    from .cam_report import cam_context
+    from ...render.cam_report import cam_context
 
     zh = lang == "zh"
     p, b = r["params"], r["bending"]
@@ -467,8 +467,8 @@ def _pin_hold(r: dict) -> float:
 def _cam_motion_text(c, lang: str) -> str:
     """'rise 30°, far dwell 6°, return 30°, 3-4-5 polynomial laws (no impact)' from the
     cam's programme and its impact check."""
-    from ..core.motion_laws import LAWS
-    from .cam_report import _segment_name
+    from ...core.motion_laws import LAWS
+    from ...render.cam_report import _segment_name
 
     zh = lang == "zh"
     prog = c.params.programme
@@ -492,7 +492,7 @@ def _cam_motion_text(c, lang: str) -> str:
 def law_choice(c, lang: str) -> str:
     """Why the positioning cam's law (the seed names none): impacts and the peak
     acceleration coefficient against the cycloidal law, from the law table."""
-    from ..core.motion_laws import LAWS
+    from ...core.motion_laws import LAWS
 
     zh = lang == "zh"
     laws = []
@@ -534,7 +534,7 @@ def _rounded(b, ds, lang: str):
 
 
 def _feed(r: dict, lang: str, figures: dict) -> dict:
-    from .linkage_report import linkage_context
+    from ...render.linkage_report import linkage_context
 
     zh = lang == "zh"
     p = r["params"]
@@ -569,7 +569,7 @@ def _feed(r: dict, lang: str, figures: dict) -> dict:
 
 
 def verification_rows(r: dict, lang: str) -> list[list[str]]:
-    from .linkage_report import verification_rows as linkage_rows
+    from ...render.linkage_report import verification_rows as linkage_rows
 
     zh = lang == "zh"
     p = r["params"]
@@ -627,8 +627,8 @@ def verification_rows(r: dict, lang: str) -> list[list[str]]:
 
 
 def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
-    from .cam_report import cam_context
-    from .components_report import cycle_context, morphology_context
+    from ...render.cam_report import cam_context
+    from ...render.components_report import cycle_context, morphology_context
 
     p, c = r["params"], r["cycle"]
     cyc_figs = {k.removeprefix("cycle_"): v for k, v in figures.items() if k.startswith("cycle_")}
@@ -667,7 +667,7 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
 
 def write_data(r: dict, folder: Path) -> list[Path]:
     """Both cams' profile coordinates as CSV."""
-    from .cam_report import write_cam_csv
+    from ...render.cam_report import write_cam_csv
 
     return write_cam_csv(r["cam"], folder) + write_cam_csv(r["bending_cam"], folder,
                                                            name="bending_cam_profile")
@@ -675,6 +675,6 @@ def write_data(r: dict, folder: Path) -> list[Path]:
 
 def animate(r: dict, path: Path, lang: str) -> Path:
     """GIF of the feed linkage over one revolution."""
-    from .animation import linkage_gif
+    from ...render.animation import linkage_gif
 
     return linkage_gif(r["params"].feed, r["feed"], path, lang)

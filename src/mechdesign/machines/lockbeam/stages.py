@@ -23,19 +23,19 @@ from functools import lru_cache
 
 import numpy as np
 
-from ..brief.lockbeam import BEND, FEED, PIN, BendingParams, LockbeamParams
-from ..core import cycle as cy
-from ..core import rocker_synthesis as rs
-from ..core.fourbar import FourBar, SynthesisError, grashof
-from ..core.gears import SpurPair, spur_pair
-from ..core.mechanism import RPR, RRP, RRR, Crank, LinkPoint, Mechanism
-from ..pipeline import Stage
-from .cam import cam_document, cam_stage, design as design_cam
-from .findings import Finding
-from ..core.cycle import CycleDocument
-from ..core.fields import q
-from .linkage import LinkageDocument, closure_residual, linkage_document, linkage_stages
-from .cam import CamDocument
+from .brief import BEND, FEED, PIN, BendingParams, LockbeamParams
+from ...core import cycle as cy
+from ...core import rocker_synthesis as rs
+from ...core.fourbar import FourBar, SynthesisError, grashof
+from ...core.gears import SpurPair, spur_pair
+from ...core.mechanism import RPR, RRP, RRR, Crank, LinkPoint, Mechanism
+from ...pipeline import Stage
+from ...stages.cam import cam_document, cam_stage, design as design_cam
+from ...stages.findings import Finding
+from ...core.cycle import CycleDocument
+from ...core.fields import q
+from ...stages.linkage import LinkageDocument, closure_residual, linkage_document, linkage_stages
+from ...stages.cam import CamDocument
 
 TWO_PI = 2.0 * np.pi
 DEG = 180.0 / np.pi
@@ -315,9 +315,9 @@ def checks(p: LockbeamParams, keep: dict | None = None) -> list:
     every problem returned as a :class:`~mechdesign.brief.loader.BriefProblem` at its brief
     field. The results are stored in ``keep`` (``feed_motion``, ``bending_synthesis``)
     for the stages, so nothing is computed twice."""
-    from ..brief.loader import BriefProblem
-    from ..core.mechanism import AssemblyError
-    from .linkage import motion
+    from ...brief.loader import BriefProblem
+    from ...core.mechanism import AssemblyError
+    from ...stages.linkage import motion
 
     problems = []
     try:
@@ -866,7 +866,7 @@ def morphology_document(m) -> MorphologyDoc:
 
 
 def results_document(r: dict) -> LockbeamResults:
-    from ..results import SCHEMA
+    from ...results import SCHEMA
 
     p: LockbeamParams = r["params"]
     tr, b, cyc, ft = r["transmission"], r["bending"], r["cycle"], r["feed_table"]

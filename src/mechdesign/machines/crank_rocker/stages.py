@@ -14,11 +14,11 @@ from dataclasses import dataclass
 import numpy as np
 from scipy.optimize import brentq, minimize_scalar
 
-from ..core import fourbar as fb
-from ..core.fields import q
-from ..core.mechanism import RRP, RRR, Crank, Mechanism
-from ..pipeline import Stage
-from .findings import Finding
+from ...core import fourbar as fb
+from ...core.fields import q
+from ...core.mechanism import RRP, RRR, Crank, Mechanism
+from ...pipeline import Stage
+from ...stages.findings import Finding
 
 DEG = 180.0 / np.pi
 
@@ -549,7 +549,7 @@ def _sim_doc(s: Simulation) -> SimulationDoc:
 
 
 def results_document(r: dict) -> CrankRockerResults:
-    from ..results import SCHEMA
+    from ...results import SCHEMA
 
     p = r["params"]
     opt: OptimumResult = r["optimum"]

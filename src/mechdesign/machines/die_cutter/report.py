@@ -11,8 +11,8 @@ from pathlib import Path
 
 import numpy as np
 
-from . import figures as fig
-from .fmt import e, f, md_meta, md_text
+from ...render import figures as fig
+from ...render.fmt import e, f, md_meta, md_text
 
 DEG = 180.0 / np.pi
 MM = 1e3
@@ -71,9 +71,9 @@ def _amplification_figure(path: Path, lang: str, k, amp, p, f_):
 
 def make_figures(r: dict, fig_dir: Path, lang: str) -> dict[str, str]:
     """Draw every figure into ``fig_dir``; return name → relative path."""
-    from .cam_report import make_cam_figures
-    from .components_report import make_cycle_figures, make_intermittent_figures
-    from .linkage_report import make_linkage_figures
+    from ...render.cam_report import make_cam_figures
+    from ...render.components_report import make_cycle_figures, make_intermittent_figures
+    from ...render.linkage_report import make_linkage_figures
 
     model, k, f_ = r["press_model"], r["press"], r["press_forces"]
     paths = make_linkage_figures(model, k, f_, None, fig_dir, lang, prefix="press")
@@ -99,14 +99,14 @@ def make_figures(r: dict, fig_dir: Path, lang: str) -> dict[str, str]:
 
 def animate(r: dict, path: Path, lang: str) -> Path:
     """GIF of the toggle press over one revolution."""
-    from .animation import linkage_gif
+    from ...render.animation import linkage_gif
 
     return linkage_gif(r["press_model"], r["press"], path, lang)
 
 
 def write_data(r: dict, folder: Path) -> list[Path]:
     """The gripper cam's profile coordinates as CSV."""
-    from .cam_report import write_cam_csv
+    from ...render.cam_report import write_cam_csv
 
     return write_cam_csv(r["cam"], folder)
 
@@ -144,7 +144,7 @@ def _data_rows(b, p, zh: bool) -> list[list[str]]:
 def _choice_rows(b, p, r, zh: bool) -> list[list[str]]:
     """Values this design chooses where the task is silent, with the reasons."""
     pr, ms, ct = b.press, b.masses, b.cutting
-    from ..core.motion_laws import LAWS
+    from ...core.motion_laws import LAWS
 
     cam = b.gripper_cam
     ig = r["feed"].gear
@@ -415,7 +415,7 @@ def _ok(zh: bool, good: bool) -> str:
 
 
 def _verify_rows(r, p, zh: bool) -> list[list[str]]:
-    from .linkage_report import verification_rows
+    from ...render.linkage_report import verification_rows
 
     v, k, amp = r["verification"], r["press"], r["amplification"]
     f_ = r["press_forces"]
@@ -498,10 +498,10 @@ def _cells(rows: list[list[str]]) -> list[list[str]]:
 
 def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
     """Strings, rows and formulas for the templates."""
-    from .cam_report import cam_context
-    from .components_report import cycle_context, intermittent_context
-    from .drive_report import drive_context
-    from .linkage_report import linkage_context
+    from ...render.cam_report import cam_context
+    from ...render.components_report import cycle_context, intermittent_context
+    from ...render.drive_report import drive_context
+    from ...render.linkage_report import linkage_context
 
     zh = lang == "zh"
     p = r["params"]

@@ -6,8 +6,8 @@ from pathlib import Path
 
 import numpy as np
 
-from . import figures as fig
-from .fmt import e, f, md_meta, md_text
+from ...render import figures as fig
+from ...render.fmt import e, f, md_meta, md_text
 
 DEG = 180.0 / np.pi
 MM = 1e3
@@ -18,7 +18,7 @@ MM = 1e3
 def _scheme(path: Path, lang: str, syn) -> None:
     """Left: the six-bar at its two extreme positions with C's arc and the slider guide.
     Right: the four-bar's θ-circle construction (B1, B2, O1 and the crank circle)."""
-    from .fonts import configure_matplotlib
+    from ...render.fonts import configure_matplotlib
 
     configure_matplotlib()
     import matplotlib
@@ -129,7 +129,7 @@ def _design_chart(path: Path, lang: str, syn) -> None:
 
 
 def make_figures(r: dict, fig_dir: Path, lang: str) -> dict[str, str]:
-    from .linkage_report import make_linkage_figures
+    from ...render.linkage_report import make_linkage_figures
 
     syn = r["synthesis"]
     paths = {}
@@ -147,7 +147,7 @@ def make_figures(r: dict, fig_dir: Path, lang: str) -> dict[str, str]:
 
 def animate(r: dict, path: Path, lang: str) -> Path:
     """GIF of the six-bar over one revolution."""
-    from .animation import linkage_gif
+    from ...render.animation import linkage_gif
 
     return linkage_gif(r["model"], r["linkage"], path, lang)
 
@@ -159,7 +159,7 @@ def _ok(flag: bool, zh: bool) -> str:
 
 
 def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
-    from .linkage_report import linkage_context, verification_rows
+    from ...render.linkage_report import linkage_context, verification_rows
 
     zh = lang == "zh"
     p, syn, chk = r["params"], r["synthesis"], r["pusher_check"]
@@ -324,7 +324,7 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
                          title="机构运动分析与曲柄驱动力矩" if zh else "Kinematics and crank driving torque")
     drive = None
     if r.get("drive") is not None:
-        from .drive_report import drive_context
+        from ...render.drive_report import drive_context
 
         pw = (rf"P_w = \bar M_b\,\omega = {f(chk.mean_torque, 4)} \times {f(abs(pp.crank_omega), 5)} = "
               rf"{f(chk.mean_power, 3)}\ \text{{W}}")

@@ -3,7 +3,7 @@ the pushing slider E through the link CE, with its drive (worm reducer + open ge
 
 Course units in the brief; :func:`furnace_to_si` converts once to SI. Validation checks
 the fields alone; whether the data admit a linkage is the synthesis's question, asked
-once per run by :func:`mechdesign.machines.furnace.checks`, which reports every problem
+once per run by :func:`mechdesign.machines.furnace_pusher.stages.checks`, which reports every problem
 by its brief field, with the value and what to change.
 """
 from __future__ import annotations
@@ -11,11 +11,11 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Annotated, Literal, Optional, Union
 
-from ..lazy import np
+from ...lazy import np
 from pydantic import Field
 
-from .common import AnalysisSettings, ReportMeta, StrictModel
-from .drive import DriveParams, DriveSection, drive_to_si
+from ...brief.common import AnalysisSettings, ReportMeta, StrictModel
+from ...brief.drive import DriveParams, DriveSection, drive_to_si
 
 
 class PusherSection(StrictModel):

@@ -13,7 +13,7 @@ Course units in the brief (mm, °, rpm, 1/min); :func:`lockbeam_to_si` converts 
 :class:`LockbeamParams` in SI units. Every cross-section rule (speeds, the cycle diagram
 against the cam programmes) is checked when the brief is loaded; whether the feed
 linkage assembles and the bending linkage can be synthesised is asked once per run by
-:func:`mechdesign.machines.lockbeam.checks` (validation never solves a linkage).
+:func:`mechdesign.machines.lockbeam.stages.checks` (validation never solves a linkage).
 """
 from __future__ import annotations
 
@@ -21,13 +21,13 @@ from dataclasses import dataclass
 from fractions import Fraction
 from typing import Annotated, Literal, Optional, Union
 
-from ..lazy import np
+from ...lazy import np
 from pydantic import Field, model_validator
 
-from .cam import CamParams, CamSection, cam_to_si
-from .common import AnalysisSettings, Problems, ReportMeta, StrictModel
-from .components import CycleSection, MorphologySection, cycle_to_si, morphology_to_si
-from .linkage import LinkageSection, linkage_to_model
+from ...brief.cam import CamParams, CamSection, cam_to_si
+from ...brief.common import AnalysisSettings, Problems, ReportMeta, StrictModel
+from ...brief.components import CycleSection, MorphologySection, cycle_to_si, morphology_to_si
+from ...brief.linkage import LinkageSection, linkage_to_model
 
 #: Keys the cycle diagram must use for the three actuators.
 FEED, PIN, BEND = "feed", "pin", "bend"
@@ -178,7 +178,7 @@ class LockbeamBrief(StrictModel):
     def _consistent(self):
         """The rules between sections (closed form: no linkage is solved here; whether the
         feed assembles and the bending linkage can be synthesised is asked once per run by
-        :func:`mechdesign.machines.lockbeam.checks`). Every problem is reported, each at
+        :func:`mechdesign.machines.lockbeam.stages.checks`). Every problem is reported, each at
         its field."""
         out = Problems(self)
         rate = self.production.rate_per_min
@@ -217,7 +217,7 @@ def _phases_text(phases) -> str:
 def _check_cycle(b: LockbeamBrief, out: Problems) -> None:
     """The cycle diagram names the three actuators, and the pin's and the bending arm's
     phases are exactly those of their cams."""
-    from ..core.cycle import actuator_from_cam_programme
+    from ...core.cycle import actuator_from_cam_programme
 
     keys = [a.key for a in b.cycle.actuators]
     missing = [k for k in (FEED, PIN, BEND) if k not in keys]

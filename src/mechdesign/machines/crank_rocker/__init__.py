@@ -1,0 +1,17 @@
+"""Crank-rocker synthesis (曲柄摇杆机构设计) from K, the swing angle and the rocker.
+
+The whole machine is this package: its brief (:mod:`.brief`), its model, stages and results
+(:mod:`.stages`) and its report (:mod:`.report`).
+"""
+from ...registry import _DEG, _MM, Entry
+
+_P = __name__
+ENTRY = Entry(
+    "crank_rocker", f"{_P}.brief:CrankRockerBrief",
+    f"{_P}.brief:crank_rocker_to_si", f"{_P}.stages:stages",
+    f"{_P}.stages:results_document", f"{_P}.report", "crank_rocker.yaml",
+    results=f"{_P}.stages:CrankRockerResults", summary=(
+        ("曲柄", "crank", "mm", "optimum.crank", _MM),
+        ("连杆", "coupler", "mm", "optimum.coupler", _MM),
+        ("机架", "frame", "mm", "optimum.frame", _MM),
+        ("γ_min", "γ_min", "°", "optimum.gamma_min", _DEG)))

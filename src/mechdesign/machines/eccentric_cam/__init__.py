@@ -1,0 +1,15 @@
+"""The `eccentric_cam` machine: analysis of a given eccentric circular disc cam with one or
+more translating followers (exercises 7-1/7-2).
+
+The whole machine is this package: its brief (:mod:`.brief`), its stages and results
+(:mod:`.stages`) and its report (:mod:`.report`).
+"""
+from ...registry import _MM, Entry
+
+_P = __name__
+ENTRY = Entry(
+    "eccentric_cam", f"{_P}.brief:EccentricCamBrief", f"{_P}.brief:eccentric_to_si",
+    f"{_P}.stages:DISC_STAGES", f"{_P}.stages:disc_results_document", f"{_P}.report",
+    "cam_7_1.yaml", results=f"{_P}.stages:EccentricCamResults", summary=(
+        ("圆盘半径", "disc radius", "mm", "radius", _MM),
+        ("偏心距", "eccentricity", "mm", "eccentricity", _MM)))

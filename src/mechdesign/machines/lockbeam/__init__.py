@@ -1,0 +1,19 @@
+"""Lock-beam bending machine (锁梁自动成型机): feed linkage, bending linkage, cam, the
+transmission train and the working cycle.
+
+The whole machine is this package: its brief (:mod:`.brief`), its model, stages and results
+(:mod:`.stages`) and its report (:mod:`.report`).
+"""
+from ...registry import _DEG, _MM, Entry
+
+_P = __name__
+ENTRY = Entry(
+    "lockbeam", f"{_P}.brief:LockbeamBrief", f"{_P}.brief:lockbeam_to_si",
+    f"{_P}.stages:stages", f"{_P}.stages:results_document", f"{_P}.report",
+    "lockbeam.yaml", results=f"{_P}.stages:LockbeamResults", summary=(
+        ("总传动比", "total ratio", "", "transmission.ratio", 1.0),
+        ("送料行程", "feed stroke", "mm", "feed.output.stroke", _MM),
+        ("送料 K", "feed K", "", "feed.time_ratio", 1.0),
+        ("扳弯角（仿真）", "bend (simulated)", "°", "bending.bend_simulated", _DEG),
+        ("扳弯 γ_min", "bending γ_min", "°", "bending.gamma_min", _DEG)),
+    checks=f"{_P}.stages:checks")
