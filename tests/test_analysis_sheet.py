@@ -32,7 +32,7 @@ def run(request):
     from mechdesign.brief.loader import load_brief
     from mechdesign.machines import get_machine, stages_for
     from mechdesign.pipeline import run_stages
-    from mechdesign.render.sheets import LINKAGE_KEYS, _builders, linkage_results
+    from mechdesign.render.sheets import _builders, linkage_results
 
     b = load_brief(f"designs/{request.param}.yaml")
     m = get_machine(b.machine)
@@ -41,7 +41,8 @@ def run(request):
     found = linkage_results(results)
     assert found is not None
     assert "analysis" in [name for name, _ in _builders(results, b)]
-    prefix = next(px for key, px in LINKAGE_KEYS if results.get(key) is found.model)
+    prefix = found.polygons.prefix
+    assert results[found.polygons.model_key] is found.model
     raw = results[f"{prefix}_raw"]
     # the polygons stage stored the polygons of the brief's (or the default) positions
     assert list(found.polygons.positions) == chosen_positions(found.motion, b)

@@ -13,7 +13,7 @@ from typing import Annotated, Literal, Optional, Union
 from ..lazy import np
 from pydantic import Field, model_validator
 
-from .common import ReportMeta, StrictModel
+from .common import StrictModel
 
 LawName = Literal["constant_velocity", "parabolic", "harmonic", "cycloidal", "poly345",
                   "poly4567", "modified_trapezoid", "modified_sine"]

@@ -11,7 +11,7 @@ from typing import Annotated, Literal, Optional, Union
 from ..lazy import np
 from pydantic import Field, field_validator, model_validator
 
-from .common import ReportMeta, StrictModel
+from .common import StrictModel
 
 StageType = Literal["coupling", "belt", "chain", "spur", "helical", "worm"]
 

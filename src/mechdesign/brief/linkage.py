@@ -17,7 +17,7 @@ from typing import Annotated, Literal, Optional, Union
 from ..lazy import np
 from pydantic import BeforeValidator, Field, model_validator
 
-from .common import AnalysisSettings, ReportMeta, StrictModel, parse_fraction
+from .common import AnalysisSettings, StrictModel, parse_fraction
 
 _NAME = re.compile(r"^[A-Za-z][A-Za-z0-9_']{0,15}$")
 

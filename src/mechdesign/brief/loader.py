@@ -18,7 +18,6 @@ composed (see ``MAX_*``), before anything walks the data.
 """
 from __future__ import annotations
 
-import importlib
 import re
 from collections.abc import Mapping
 from dataclasses import dataclass, field, replace

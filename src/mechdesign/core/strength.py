@@ -13,7 +13,7 @@ Every check returns a :class:`Check`. Sizing ("design") functions return the SI 
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from typing import Iterable, Literal
 
 import numpy as np

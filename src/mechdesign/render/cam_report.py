@@ -11,7 +11,7 @@ from ..core.cam import DWELL, RISE, TranslatingFollower
 from ..fileio import atomic_open
 from ..core.motion_laws import LAWS
 from . import cam_figures as cf
-from .fmt import e, f, md_meta, md_text
+from .fmt import e, f, md_text
 
 DEG = 180.0 / np.pi
 MM = 1e3

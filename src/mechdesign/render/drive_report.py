@@ -2,11 +2,10 @@
 allocation, the shaft table, each stage's geometry and strength checks."""
 from __future__ import annotations
 
-from pathlib import Path
 
 import numpy as np
 
-from .fmt import e, f, md_meta, md_text
+from .fmt import f, md_text
 
 MM = 1e3
 

@@ -13,7 +13,7 @@ from pathlib import Path
 import numpy as np
 
 from . import figures as fig
-from .fmt import e, f, md_meta, md_text, mpl_text, tex_name
+from .fmt import e, f, md_text, mpl_text, tex_name
 
 DEG = 180.0 / np.pi
 

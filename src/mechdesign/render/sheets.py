@@ -38,11 +38,6 @@ class SheetFiles:
     dxf: str | None
 
 
-# (model key, prefix) of the shared linkage stages, as each machine stores them
-LINKAGE_KEYS = (("model", "linkage"), ("params", "linkage"), ("press_model", "press"),
-                ("feed_model", "feed"))
-
-
 @dataclass(frozen=True)
 class LinkageResults:
     """What the analysis sheet reads from a run: the engine's model, motion, forces (or
@@ -59,12 +54,15 @@ def linkage_results(results: dict) -> LinkageResults | None:
     """The shared linkage stages' results in ``results``, or None. The flywheel is the
     engine's ``{prefix}_flywheel``, else the machine's own ``flywheel`` (the die-cutter sizes
     it on a drive shaft after the press stages) when it is the one flywheel result."""
-    from ..stages.linkage import LinkageModel
     from ..stages.flywheel import Flywheel
+    from ..stages.polygons import LinkagePolygons
 
-    for model_key, prefix in LINKAGE_KEYS:
+    for polygons in list(results.values()):
+        if not isinstance(polygons, LinkagePolygons):
+            continue
+        model_key, prefix = polygons.model_key, polygons.prefix
         model = results.get(model_key)
-        if isinstance(model, LinkageModel) and f"{prefix}_polygons" in results:
+        if model is not None:
             fly = results.get(f"{prefix}_flywheel")
             if fly is None and isinstance(results.get("flywheel"), Flywheel):
                 fly = results["flywheel"]

@@ -16,9 +16,7 @@ import numpy as np
 from ..core import drive as core
 from ..core.fields import q
 from ..data import load_csv, load_yaml
-from ..pipeline import Stage
 from . import drive_strength as ds
-from .cam import VerificationDocument
 from .findings import Finding
 
 

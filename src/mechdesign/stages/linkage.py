@@ -22,7 +22,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from ..core.kinetostatics import Body, PointLoad, power_residual, solve_forces
-from ..core.mechanism import RPR, RRP, RRR, Crank, LinkPoint, Mechanism, Motion
+from ..core.mechanism import RRR, Crank, Mechanism, Motion
 from ..core.fields import q
 from .findings import Finding
 from .positions import Positions, textbook_positions

@@ -11,7 +11,7 @@ motion and forces results.
 """
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
@@ -30,6 +30,8 @@ class LinkagePolygons:
 
     positions: tuple
     polygons: dict
+    model_key: str = "model"    # where the stage found the engine's model …
+    prefix: str = "linkage"     # … and its results (``{prefix}``, ``{prefix}_forces`` …)
 
     def at(self, label: str) -> tuple:
         return self.polygons[str(label)]
@@ -96,7 +98,8 @@ def polygon_stage(model_key: str = "model", prefix: str = "linkage") -> Stage:
 
     def run(r: dict) -> LinkagePolygons:
         k = r[prefix]
-        return linkage_polygons(r[model_key], k, r[f"{prefix}_raw"], r.get(f"{prefix}_forces"),
-                                chosen_positions(k, r.get("brief")))
+        found = linkage_polygons(r[model_key], k, r[f"{prefix}_raw"], r.get(f"{prefix}_forces"),
+                                 chosen_positions(k, r.get("brief")))
+        return replace(found, model_key=model_key, prefix=prefix)
 
     return Stage(f"{prefix}_polygons", "作图多边形 / polygons", run)

@@ -1,7 +1,6 @@
 """Report of the `cam` machine: the shared cam section (:mod:`mechdesign.render.cam_report`) and its self-checks."""
 from __future__ import annotations
 
-import csv
 from pathlib import Path
 from ...render.fmt import md_meta, md_text
 from ...render.cam_report import cam_context, cam_verification_rows, envelope_note, make_cam_figures, write_cam_csv

@@ -8,12 +8,16 @@ Data that admit no linkage are rejected here, naming the field and the range tha
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 from typing import Literal, Optional
 
 from ...lazy import np
 from pydantic import Field, field_validator, model_validator
 
 from ...brief.common import ReportMeta, StrictModel
+
+if TYPE_CHECKING:
+    from ...core import fourbar
 
 _DEFAULT_THETAS = [0.0, 5.0, 10.0, 15.0, 20.0, 25.0, 30.0]
 

@@ -6,7 +6,7 @@ from dataclasses import dataclass
 
 from ...core.fields import q
 from ...pipeline import Stage
-from ...stages.linkage import Flywheel, FlywheelSpec, LinkageDocument, LinkageFlywheel, LinkageForces, LinkageGrid, LinkageModel, LinkageMotion, LinkagePosition, LinkageVerification, Output, OutputDoc, QualityAngle, QualityDoc, Resistance, TWO_PI, _extremes_by_position, _extremes_by_velocity, _fd_errors, _four_bar_of, _output_coordinate, _quality, _strokes, closure_residual, flywheel, forces, link_members, linkage_document, linkage_stages, motion, quality_findings, resistance_loads, verify
+from ...stages.linkage import LinkageDocument, linkage_document, linkage_stages, motion
 
 
 # ---------------------------------------------------------------- the `linkage` machine

@@ -4,7 +4,7 @@ stroke, with optional gear pair, drive and cam sections.
 The whole machine is this package: its brief (:mod:`.brief`), its model, stages and results
 (:mod:`.stages`) and its report (:mod:`.report`).
 """
-from ...registry import _DEG, _MM, Entry
+from ...registry import _MM, Entry
 
 _P = __name__
 ENTRY = Entry(
