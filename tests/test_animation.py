@@ -13,6 +13,7 @@ import numpy as np
 import pytest
 from PIL import Image, ImageChops
 
+from mechdesign.machines.shaper import report as shaper_report
 from mechdesign.render import animation as an
 
 N = 360          # samples over the revolution
@@ -138,7 +139,7 @@ def shaper_results(example_results):
 
 def test_shaper_gif(shaper_results, tmp_path):
     start = time.perf_counter()
-    path = an.shaper_gif(shaper_results, tmp_path / "shaper.gif", "zh")
+    path = shaper_report.animate(shaper_results, tmp_path / "shaper.gif", "zh")
     elapsed = time.perf_counter() - start
     assert elapsed < 10.0
     assert path.stat().st_size < 1_000_000
@@ -146,7 +147,7 @@ def test_shaper_gif(shaper_results, tmp_path):
         assert im.n_frames == 72 and im.info.get("loop") == 0
         assert max(im.size) <= 520
 
-    args = an.shaper_animation_args(shaper_results, "zh")
+    args = shaper_report.animation_args(shaper_results, "zh")
     layout = an.animation_layout(**args)
     assert layout == an.mechanism_layout(args["points"], guides=args["guides"], title=args["title"])
     k = shaper_results["kinematics"]
@@ -166,7 +167,7 @@ def test_shaper_gif(shaper_results, tmp_path):
 
 
 def test_shaper_trace_is_the_ram_guide_line(shaper_results):
-    args = an.shaper_animation_args(shaper_results, "en")
+    args = shaper_report.animation_args(shaper_results, "en")
     f = args["points"][args["trace"]]
     y = float(shaper_results["synthesis"].design.guide_height) * 1e3
     assert np.allclose(f.imag, y, atol=1e-6)

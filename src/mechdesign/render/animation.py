@@ -3,7 +3,8 @@
 The drawing is generic: named points (complex positions in mm, one sample per equal
 crank-angle step over a revolution), links drawn as polylines of point names, frame
 pivots with the ground-hatch symbol, slider blocks, fixed straight guides and the
-trace of one point. :func:`shaper_gif` adapts the shaper's kinematics results.
+trace of one point. :func:`linkage_gif` adapts any linkage of the shared stages; a
+machine may give its own arguments (the shaper's report does).
 
 Rendering uses matplotlib's Agg canvas directly (no pyplot): the static parts are
 drawn once and every frame restores that background and redraws only the moving
@@ -39,9 +40,6 @@ INK = "#222222"
 GUIDE_COLOR = "#707070"
 BACKGROUND = "#ffffff"
 BAR_LW = 3.2           # [pt]
-
-TITLES = {"zh": "牛头刨床导杆机构运动", "en": "Shaper linkage in motion"}
-
 
 def _rgb(color: str) -> tuple[int, int, int]:
     from matplotlib.colors import to_rgb
@@ -363,31 +361,6 @@ def write_mechanism_gif(path, points: dict[str, np.ndarray], bars: list[tuple[st
         images[0].save(tmp, format="GIF", save_all=True, append_images=images[1:], loop=0,
                        optimize=True, duration=1000.0 / fps, disposal=2)
     return path
-
-
-def shaper_animation_args(results: dict, lang: str) -> dict:
-    """Arguments of :func:`write_mechanism_gif` for the shaper results (mm)."""
-    k = results["kinematics"]
-    d = results["synthesis"].design
-    n = k.grid_size
-    pts = {name: np.asarray(k.points[name][:n], dtype=complex) * 1e3
-           for name in ("O2", "O3", "A", "B", "F")}
-    bar_angle = np.angle(pts["B"] - pts["O3"])
-    y = float(d.guide_height) * 1e3
-    fx = pts["F"].real
-    extra = 0.3 * max(float(np.ptp(fx)), 1.0)  # the guide reaches past the ram's travel
-    guide = (complex(fx.min() - extra, y), complex(fx.max() + extra, y))
-    return dict(points=pts, bars=[("O2", "A"), ("O3", "B"), ("B", "F")], pivots=["O2", "O3"],
-                sliders=[("A", bar_angle), ("F", 0.0)], guides=[guide], trace="F",
-                title=TITLES.get(lang, TITLES["en"]))
-
-
-def shaper_gif(results: dict, path, lang: str, **kwargs) -> Path:
-    """Animate the shaper's guide-bar linkage over one crank revolution as a GIF.
-
-    ``kwargs`` (frames, fps, size_px) pass through to :func:`write_mechanism_gif`."""
-    args = shaper_animation_args(results, lang)
-    return write_mechanism_gif(path, args.pop("points"), args.pop("bars"), **args, **kwargs)
 
 
 def linkage_animation_args(model, k, title: str = "") -> dict:

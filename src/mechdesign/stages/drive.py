@@ -272,7 +272,7 @@ def undercut_findings(results) -> list[Finding]:
                         f"stage {r.index + 1} ({r.name_en}): the {who_en} (z{key} = {gd.z}) is undercut: "
                         f"z{key} < z_min = {g.z_min:.1f} and x{key} = {gd.x:g} < x_min = {x_min:.3f}; set "
                         f"{here}.x{key} ≥ {x_min:.3f} (a positive shift) or {here}.z{key} ≥ "
-                        f"{math.ceil(g.z_min - 1e-9)}."))
+                        f"{math.ceil(g.z_min - 1e-9)}.", field=here))
         elif hasattr(g, "beta"):
             z_min = 2.0 / math.sin(math.radians(20.0)) ** 2
             for key, z in (("1", r.z1), ("2", r.z2)):
@@ -287,7 +287,7 @@ def undercut_findings(results) -> list[Finding]:
                         f"< z_min = {z_min:.1f}，齿轮根切；应把 {here}.z{key} 增加到 ≥ {need}，或增大螺旋角。",
                         f"stage {r.index + 1} ({r.name_en}): z{key} = {z} has the equivalent tooth number "
                         f"z_v = z/cos³β = {zv:.2f} < z_min = {z_min:.1f}, so the gear is undercut; set "
-                        f"{here}.z{key} ≥ {need} or use a larger helix angle."))
+                        f"{here}.z{key} ≥ {need} or use a larger helix angle.", field=here))
     return out
 
 

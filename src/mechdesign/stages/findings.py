@@ -13,6 +13,7 @@ class Finding:
     code: str = q("", "the problem's name")
     zh: str = q("", "what it is and what to change (中文)")
     en: str = q("", "what it is and what to change (English)")
+    field: str = q("", "the brief field it is about, when it is about one", default="")
 
     def text(self, lang: str) -> str:
         return self.zh if lang == "zh" else self.en

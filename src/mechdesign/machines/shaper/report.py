@@ -61,11 +61,34 @@ def make_figures(r: dict, fig_dir: Path, lang: str) -> dict[str, str]:
     return paths
 
 
-def animate(r: dict, path: Path, lang: str) -> Path:
-    """The GIF of the linkage turning through one revolution (format gif)."""
-    from ...render.animation import shaper_gif
+TITLES = {"zh": "牛头刨床导杆机构运动", "en": "Shaper linkage in motion"}
 
-    return shaper_gif(r, path, lang)
+
+def animation_args(results: dict, lang: str) -> dict:
+    """Arguments of :func:`~mechdesign.render.animation.write_mechanism_gif` (mm): the crank,
+    the guide bar, the rod, the slider blocks at A and F, the ram guide, F's trace."""
+    k = results["kinematics"]
+    d = results["synthesis"].design
+    n = k.grid_size
+    pts = {name: np.asarray(k.points[name][:n], dtype=complex) * 1e3
+           for name in ("O2", "O3", "A", "B", "F")}
+    bar_angle = np.angle(pts["B"] - pts["O3"])
+    y = float(d.guide_height) * 1e3
+    fx = pts["F"].real
+    extra = 0.3 * max(float(np.ptp(fx)), 1.0)  # the guide reaches past the ram's travel
+    guide = (complex(fx.min() - extra, y), complex(fx.max() + extra, y))
+    return dict(points=pts, bars=[("O2", "A"), ("O3", "B"), ("B", "F")], pivots=["O2", "O3"],
+                sliders=[("A", bar_angle), ("F", 0.0)], guides=[guide], trace="F",
+                title=TITLES.get(lang, TITLES["en"]))
+
+
+def animate(r: dict, path: Path, lang: str, **kwargs) -> Path:
+    """The GIF of the linkage turning through one revolution (format gif); ``kwargs``
+    (frames, fps, size_px) pass through to the GIF writer."""
+    from ...render.animation import write_mechanism_gif
+
+    args = animation_args(r, lang)
+    return write_mechanism_gif(path, args.pop("points"), args.pop("bars"), **args, **kwargs)
 
 
 def write_data(r: dict, folder: Path) -> list[Path]:

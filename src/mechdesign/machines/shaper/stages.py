@@ -18,9 +18,10 @@ import numpy as np
 from .brief import ShaperParams
 from ...core.kinetostatics import Body
 from ...core.mechanism import RPR, RRP, AssemblyError, Crank, LinkPoint, Mechanism
-from ...core.synthesis import GuideBarDesign, guide_bar_quick_return
+from ...core.synthesis import GuideBarDesign
 from ...pipeline import Stage
 from ...stages.flywheel import Flywheel, FlywheelSpec, RimSpec
+from ...stages.guide_bar import Synthesis, drive_stage, synthesize
 from ...stages.polygons import polygon_stage
 from ...stages import linkage as lk
 from ...stages.cam import CamDocument, cam_document
@@ -30,15 +31,6 @@ from ...stages.positions import Positions
 from ...core.fields import q
 
 FRAME = "7"
-
-
-@dataclass(frozen=True)
-class Synthesis:
-    """Stage 导杆机构设计: the link lengths [m] and angles [rad]."""
-
-    design: GuideBarDesign = q("")
-    extreme_angle: float = q("rad", "θ")
-    guide_height_above_O2: float = q("m", "L_O2M = L_O3M − L_O2O3")
 
 
 @dataclass(frozen=True)
@@ -82,11 +74,6 @@ class Forces:
     balancing_torque: np.ndarray = q("N·m", "M_b in the sense of rotation")
     power_residual: np.ndarray = q("W", "Σ power of all loads incl. M_b")
     linkage: object = q("", "the engine's LinkageForces this view reads", default=None)
-
-
-def synthesize(p: ShaperParams) -> Synthesis:
-    d = guide_bar_quick_return(p.stroke, p.time_ratio_K, p.frame, p.rod_ratio, p.com_ratio)
-    return Synthesis(d, d.swing_angle, d.guide_height - d.frame)
 
 
 def build_mechanism(d: GuideBarDesign, p: ShaperParams) -> Mechanism:
@@ -268,33 +255,6 @@ STAGES = [
     Stage(("linkage_verification", "verification"), "校核 / verification", _verify_stage),
     polygon_stage("model", "linkage"),
 ]
-
-
-def _drive(r: dict):
-    """The drive delivers the crank's mean power at the crank speed. The flywheel evens out
-    the torque upstream of its shaft only: the stages after it carry the peak of M_b.
-    (Any guide-bar machine whose gear pair z1/z2 is the drive's last stage.)"""
-    from dataclasses import replace
-
-    from ...stages.drive import design_drive
-
-    p, f, fl = r["params"], r["linkage_forces"], r["linkage_flywheel"]
-    n = r["linkage"].grid_size
-    mb = f.balancing_torque[:n]
-    mean = float(np.mean(mb))
-    peak = float(np.max(np.abs(mb)) / mean) if mean > 0 else float("inf")  # inf: no load
-    shafts = len(p.drive.stages)          # the crank shaft's index
-    flywheel_shaft = shafts - 1 if p.flywheel_shaft == "pinion" else shafts
-    result = design_drive(p.drive, fl.mean_power, p.crank_speed_rpm, "mechanism",
-                          peak, flywheel_shaft if flywheel_shaft < shafts else None)
-    # The last stage is gear_pair, whose undercut the gear stage reports with its own fields.
-    last = f"drive.stages[{shafts - 1}]"
-    return replace(result, warnings=tuple(w for w in result.warnings
-                                          if not (w.code == "undercut" and last in w.en)))
-
-
-def drive_stage() -> Stage:
-    return Stage("drive", "传动装置设计 / drive", _drive)
 
 
 def stages(params: ShaperParams) -> list[Stage]:

@@ -13,7 +13,7 @@ from pydantic import Field
 from ...brief.cam import CamParams, cam_to_si
 from ...brief.common import StrictModel
 from ...brief.drive import DriveParams
-from ..shaper.brief import GearParams, ShaperBrief, _drive_to_si, _gear_to_si
+from ...brief.guide_bar import GearParams, GuideBarBrief, drive_to_si_with_gear, gear_to_si
 
 
 class SlotterLinkage(StrictModel):
@@ -44,7 +44,7 @@ class SlotterLoads(StrictModel):
         "Idle travel at each end of the working stroke as a fraction of H (空刀距离)"))
 
 
-class SlotterBrief(ShaperBrief):
+class SlotterBrief(GuideBarBrief):
     """Design brief of the slotting machine (插床) task."""
 
     machine: Literal["slotter"] = Field(description="Machine type")
@@ -104,4 +104,4 @@ def to_si(b: SlotterBrief) -> SlotterParams:
         specific_weight=b.flywheel.specific_weight_N_m3, grid_points=b.analysis.grid_points,
         position_step=np.radians(b.analysis.position_step_deg), gravity=b.analysis.gravity,
         cam=None if b.cam is None else cam_to_si(b.cam, lk.crank_speed_n2_rpm),
-        gear=_gear_to_si(b.gear_pair), drive=_drive_to_si(b))
+        gear=gear_to_si(b.gear_pair), drive=drive_to_si_with_gear(b))

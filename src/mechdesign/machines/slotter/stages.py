@@ -14,23 +14,18 @@ import numpy as np
 from ...core.fields import q
 from ...core.kinetostatics import Body
 from ...core.mechanism import RPR, RRP, AssemblyError, Crank, LinkPoint, Mechanism
-from ...core.synthesis import GuideBarDesign, guide_bar_quick_return
+from ...core.synthesis import GuideBarDesign
 from ...pipeline import Stage
 from ...stages.flywheel import Flywheel, FlywheelSpec, RimSpec
 from ...stages import linkage as lk
 from ...stages.drive import DriveDocument, drive_document
-from ..shaper.stages import Synthesis
+from ...stages.guide_bar import Synthesis, drive_stage, synthesize
 from .brief import SlotterParams
 from ...stages.cam import CamDocument
 from ...stages.gear import GearDocument
 
 FRAME = "7"
 DOWN = -np.pi / 2
-
-
-def synthesize(p: SlotterParams) -> Synthesis:
-    d = guide_bar_quick_return(p.stroke, p.time_ratio_K, p.frame, p.rod_ratio, p.com_ratio)
-    return Synthesis(d, d.swing_angle, d.guide_height - d.frame)
 
 
 def side(p: SlotterParams) -> float:
@@ -97,8 +92,6 @@ def _motion(r: dict):
 
 
 def stages(p: SlotterParams) -> list[Stage]:
-    from ..shaper.stages import drive_stage
-
     engine = lk.linkage_stages(model_key="model", prefix="linkage")
     out = [Stage(("synthesis", "model"), "导杆机构设计 / linkage synthesis", _synthesis),
            Stage(engine[0].key, engine[0].title, _motion), *engine[1:]]

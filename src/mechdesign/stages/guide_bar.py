@@ -1,0 +1,54 @@
+"""Stages shared by the guide-bar (quick-return) machines — the shaper and the slotter:
+the synthesis from H, K, the frame and the link ratios, and the drive whose last stage is
+the gear pair z1/z2 turning the crank."""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..core.fields import q
+from ..core.synthesis import GuideBarDesign, guide_bar_quick_return
+from ..pipeline import Stage
+
+
+@dataclass(frozen=True)
+class Synthesis:
+    """Stage 导杆机构设计: the link lengths [m] and angles [rad]."""
+
+    design: GuideBarDesign = q("")
+    extreme_angle: float = q("rad", "θ")
+    guide_height_above_O2: float = q("m", "L_O2M = L_O3M − L_O2O3")
+
+
+def synthesize(p) -> Synthesis:
+    """``p``: stroke, time_ratio_K, frame, rod_ratio, com_ratio (SI)."""
+    d = guide_bar_quick_return(p.stroke, p.time_ratio_K, p.frame, p.rod_ratio, p.com_ratio)
+    return Synthesis(d, d.swing_angle, d.guide_height - d.frame)
+
+
+def _drive(r: dict):
+    """The drive delivers the crank's mean power at the crank speed. The flywheel evens out
+    the torque upstream of its shaft only: the stages after it carry the peak of M_b.
+    (Any guide-bar machine whose gear pair z1/z2 is the drive's last stage.)"""
+    from dataclasses import replace
+
+    from .drive import design_drive
+
+    p, f, fl = r["params"], r["linkage_forces"], r["linkage_flywheel"]
+    n = r["linkage"].grid_size
+    mb = f.balancing_torque[:n]
+    mean = float(np.mean(mb))
+    peak = float(np.max(np.abs(mb)) / mean) if mean > 0 else float("inf")  # inf: no load
+    shafts = len(p.drive.stages)          # the crank shaft's index
+    flywheel_shaft = shafts - 1 if p.flywheel_shaft == "pinion" else shafts
+    result = design_drive(p.drive, fl.mean_power, p.crank_speed_rpm, "mechanism",
+                          peak, flywheel_shaft if flywheel_shaft < shafts else None)
+    # The last stage is gear_pair, whose undercut the gear stage reports with its own fields.
+    last = f"drive.stages[{shafts - 1}]"
+    return replace(result, warnings=tuple(w for w in result.warnings
+                                          if not (w.code == "undercut" and w.field == last)))
+
+
+def drive_stage() -> Stage:
+    return Stage("drive", "传动装置设计 / drive", _drive)
