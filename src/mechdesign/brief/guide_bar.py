@@ -9,7 +9,7 @@ from typing import Literal, Optional
 from pydantic import Field, field_validator, model_validator
 
 from ..lazy import np
-from .cam import CamSection
+from .cam import CamParams, CamSection, cam_to_si
 from .common import AnalysisSettings, ReportMeta, SheetSettings, StrictModel, parse_fraction
 from .drive import DriveParams, DriveSection, DriveStage, check_material, drive_to_si
 
@@ -156,3 +156,58 @@ def drive_to_si_with_gear(b: GuideBarBrief) -> DriveParams | None:
                       x1=g.x1, x2=g.x2, pinion_material=g.pinion_material,
                       gear_material=g.gear_material, face_width_factor=g.face_width_factor)
     return drive_to_si(b.drive.model_copy(update={"stages": list(b.drive.stages) + [last]}))
+
+
+@dataclass(frozen=True)
+class GuideBarParams:
+    """What every guide-bar brief gives, in SI units (m, rad, rad/s, kg, N, kg·m²),
+    converted once; each machine's parameters add their own fields."""
+
+    stroke: float              # H [m]
+    time_ratio_K: float
+    frame: float               # L_O2O3 [m]
+    rod_ratio: float           # L_rod / L_O3B
+    com_ratio: float           # L_O3S4 / L_O3B
+    crank_omega: float         # ω2, counter-clockwise positive [rad/s]
+    crank_speed_rpm: float     # n2 [rpm]
+    m4: float                  # [kg]
+    J_S4: float                # [kg·m²]
+    m6: float                  # [kg]
+    G2: float                  # [N]
+    cutting_force: float       # Fc [N]
+    idle_travel_ratio: float
+    z1: int
+    z2: int
+    fluctuation: float         # [δ]
+    flywheel_shaft: str        # "pinion" | "crank"
+    rim_diameter: float        # [m]
+    rim_height_to_width: float
+    specific_weight: float     # [N/m³]
+    grid_points: int
+    position_step: float       # [rad]
+    gravity: float             # [m/s²]
+    cam: CamParams | None = None
+    gear: GearParams | None = None
+    drive: DriveParams | None = None
+
+
+def guide_bar_si(b: GuideBarBrief, rod_ratio: float) -> dict:
+    """The :class:`GuideBarParams` fields of brief ``b`` (the rod ratio's field is named
+    after each machine's rod)."""
+    mm = 1e-3
+    lk, ms = b.linkage, b.masses
+    sense = -1.0 if lk.crank_rotation == "cw" else 1.0
+    return dict(
+        stroke=lk.stroke_H_mm * mm, time_ratio_K=lk.time_ratio_K, frame=lk.frame_O2O3_mm * mm,
+        rod_ratio=rod_ratio, com_ratio=lk.com_ratio_O3S4_O3B,
+        crank_omega=sense * lk.crank_speed_n2_rpm * 2.0 * np.pi / 60.0,
+        crank_speed_rpm=lk.crank_speed_n2_rpm, m4=ms.guide_bar_m4_kg, J_S4=ms.guide_bar_J_S4_kgm2,
+        m6=ms.ram_m6_kg, G2=ms.gear2_weight_G2_N, cutting_force=b.loads.cutting_force_Fc_N,
+        idle_travel_ratio=b.loads.idle_travel_ratio, z1=b.gear_pair.z1, z2=b.gear_pair.z2,
+        fluctuation=b.flywheel.fluctuation_delta, flywheel_shaft=b.flywheel.shaft,
+        rim_diameter=b.flywheel.rim_diameter_mm * mm,
+        rim_height_to_width=b.flywheel.rim_height_to_width,
+        specific_weight=b.flywheel.specific_weight_N_m3, grid_points=b.analysis.grid_points,
+        position_step=np.radians(b.analysis.position_step_deg), gravity=b.analysis.gravity,
+        cam=None if b.cam is None else cam_to_si(b.cam, lk.crank_speed_n2_rpm),
+        gear=gear_to_si(b.gear_pair), drive=drive_to_si_with_gear(b))

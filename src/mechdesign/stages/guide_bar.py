@@ -21,6 +21,59 @@ class Synthesis:
     guide_height_above_O2: float = q("m", "L_O2M = L_O3M − L_O2O3")
 
 
+@dataclass(frozen=True)
+class GuideBarSynthesisDoc:
+    """The guide-bar mechanism's dimensions in results.json."""
+
+    extreme_angle: float = q("rad", "θ = π(K − 1)/(K + 1)")
+    swing_angle: float = q("rad", "guide-bar swing ψ (= θ)")
+    crank: float = q("m", "L_O2A")
+    frame: float = q("m", "L_O2O3")
+    guide_bar: float = q("m", "L_O3B")
+    rod: float = q("m", "the rod from B to the ram (L_BF, L_BC)")
+    guide_height: float = q("m", "L_O3M, the ram guide line's distance from O3")
+    bar_com: float = q("m", "L_O3S4")
+    guide_height_above_O2: float = q("m", "L_O2M = L_O3M − L_O2O3, the guide line's distance from O2")
+
+
+def synthesis_doc(syn: Synthesis) -> GuideBarSynthesisDoc:
+    d = syn.design
+    return GuideBarSynthesisDoc(syn.extreme_angle, d.swing_angle, d.crank, d.frame, d.guide_bar,
+                                d.rod, d.guide_height, d.bar_com, syn.guide_height_above_O2)
+
+
+def motion(model, syn: Synthesis, rod_ratio: float, field: str):
+    """The engine's motion stage; an assembly failure names the brief's rod-ratio field: the
+    rod must bridge half the sagitta of B's arc, L_rod ≥ L_O3B(1 − cos(ψ/2))/2."""
+    from ..core.mechanism import AssemblyError
+    from .linkage import motion as engine_motion
+
+    try:
+        return engine_motion(model)
+    except AssemblyError as exc:
+        need = (1.0 - np.cos(syn.design.swing_angle / 2.0)) / 2.0
+        raise exc.with_hint(
+            f"(Brief field: {field} = {rod_ratio:g} must be at least (1 − cos(ψ/2))/2 = {need:.6g}.)",
+            f"（任务书字段：{field} = {rod_ratio:g}，须不小于 (1 − cos(ψ/2))/2 = {need:.6g}。）"
+        ) from None
+
+
+def optional_stages(p) -> list[Stage]:
+    """The gear pair, the drive and the cam, when the brief has those sections."""
+    out = []
+    if p.gear is not None:
+        from .gear import gear_stage
+
+        out.append(gear_stage())
+    if p.drive is not None:
+        out.append(drive_stage())
+    if p.cam is not None:
+        from .cam import cam_stage
+
+        out.append(cam_stage())
+    return out
+
+
 def synthesize(p) -> Synthesis:
     """``p``: stroke, time_ratio_K, frame, rod_ratio, com_ratio (SI)."""
     d = guide_bar_quick_return(p.stroke, p.time_ratio_K, p.frame, p.rod_ratio, p.com_ratio)

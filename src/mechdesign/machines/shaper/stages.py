@@ -17,11 +17,12 @@ import numpy as np
 
 from .brief import ShaperParams
 from ...core.kinetostatics import Body
-from ...core.mechanism import RPR, RRP, AssemblyError, Crank, LinkPoint, Mechanism
+from ...core.mechanism import RPR, RRP, Crank, LinkPoint, Mechanism
 from ...core.synthesis import GuideBarDesign
 from ...pipeline import Stage
 from ...stages.flywheel import Flywheel, FlywheelSpec, RimSpec
-from ...stages.guide_bar import Synthesis, drive_stage, synthesize
+from ...stages import guide_bar
+from ...stages.guide_bar import Synthesis, synthesize
 from ...stages.polygons import polygon_stage
 from ...stages import linkage as lk
 from ...stages.cam import CamDocument, cam_document
@@ -130,22 +131,9 @@ def model(syn: Synthesis, p: ShaperParams) -> lk.LinkageModel:
                "4": ("导杆 O3B", "guide bar O3B"), "5": ("连杆 BF", "rod BF"), "6": ("刨头", "ram")})
 
 
-def _assembly_hint(exc: AssemblyError, d: GuideBarDesign, p: ShaperParams) -> AssemblyError:
-    # The ram's rod must bridge half the sagitta of B's arc: L_BF ≥ L_O3B(1 − cos(ψ/2))/2.
-    need = (1.0 - np.cos(d.swing_angle / 2.0)) / 2.0
-    return exc.with_hint(
-        f"(Brief field: linkage.rod_ratio_BF_O3B = {p.rod_ratio:g} must be at least "
-        f"(1 − cos(ψ/2))/2 = {need:.6g}.)",
-        f"（任务书字段：linkage.rod_ratio_BF_O3B = {p.rod_ratio:g}，须不小于 "
-        f"(1 − cos(ψ/2))/2 = {need:.6g}。）")
-
-
 def motion(m: lk.LinkageModel, syn: Synthesis, p: ShaperParams):
     """The engine's motion stage, an assembly failure naming the brief's field."""
-    try:
-        return lk.motion(m)
-    except AssemblyError as exc:
-        raise _assembly_hint(exc, syn.design, p) from None
+    return guide_bar.motion(m, syn, p.rod_ratio, "linkage.rod_ratio_BF_O3B")
 
 
 def kinematics_view(m: lk.LinkageModel, k: lk.LinkageMotion, raw) -> Kinematics:
@@ -259,31 +247,7 @@ STAGES = [
 
 def stages(params: ShaperParams) -> list[Stage]:
     """The shaper's stages; gear, drive and cam stages when the brief has those sections."""
-    out = list(STAGES)
-    if params.gear is not None:
-        from ...stages.gear import gear_stage
-
-        out.append(gear_stage())
-    if params.drive is not None:
-        out.append(drive_stage())
-    if params.cam is not None:
-        from ...stages.cam import cam_stage
-
-        out.append(cam_stage())
-    return out
-
-
-@dataclass(frozen=True)
-class ShaperSynthesisDoc:
-    extreme_angle: float = q("rad", "θ = π(K − 1)/(K + 1)")
-    swing_angle: float = q("rad", "guide-bar swing ψ (= θ)")
-    crank: float = q("m", "L_O2A")
-    frame: float = q("m", "L_O2O3")
-    guide_bar: float = q("m", "L_O3B")
-    rod: float = q("m", "L_BF")
-    guide_height: float = q("m", "L_O3M, ram guide line above O3")
-    bar_com: float = q("m", "L_O3S4")
-    guide_height_above_O2: float = q("m", "L_O2M")
+    return list(STAGES) + guide_bar.optional_stages(params)
 
 
 @dataclass(frozen=True)
@@ -332,7 +296,7 @@ class ShaperResults:
     schema: str = q("", "'mechdesign.results/2'")
     machine: str = q("", "'shaper'")
     units: str = q("", "reminder of the unit system")
-    synthesis: ShaperSynthesisDoc = q("", "the guide-bar mechanism's dimensions")
+    synthesis: guide_bar.GuideBarSynthesisDoc = q("", "the guide-bar mechanism's dimensions")
     positions: tuple[ShaperPosition, ...] = q("", "the textbook positions in crank order")
     grid: ShaperGrid = q("", "one revolution")
     working_stroke_crank_angle: float = q("rad", "crank rotation of the working stroke (π + θ)")
@@ -362,12 +326,9 @@ def results_document(r: dict) -> ShaperResults:
             reactions={name: force[j] for name, force in f.reactions.items()},
             prismatic_couples={name: c[j] for name, c in f.couples.items()},
             balancing_torque=f.balancing_torque[j]))
-    d = syn.design
     return ShaperResults(
         schema=SCHEMA, machine="shaper", units=UNITS_NOTE,
-        synthesis=ShaperSynthesisDoc(syn.extreme_angle, d.swing_angle, d.crank, d.frame,
-                                     d.guide_bar, d.rod, d.guide_height, d.bar_com,
-                                     syn.guide_height_above_O2),
+        synthesis=guide_bar.synthesis_doc(syn),
         positions=tuple(per_position),
         grid=ShaperGrid(k.phase[:n], k.ram_s[:n], k.ram_v[:n], k.ram_a[:n], k.omega4[:n],
                         k.alpha4[:n], f.balancing_torque[:n], fl.energy),

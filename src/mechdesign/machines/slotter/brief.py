@@ -7,13 +7,10 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Literal
 
-from ...lazy import np
 from pydantic import Field
 
-from ...brief.cam import CamParams, cam_to_si
 from ...brief.common import StrictModel
-from ...brief.drive import DriveParams
-from ...brief.guide_bar import GearParams, GuideBarBrief, drive_to_si_with_gear, gear_to_si
+from ...brief.guide_bar import GuideBarBrief, GuideBarParams, guide_bar_si
 
 
 class SlotterLinkage(StrictModel):
@@ -52,56 +49,16 @@ class SlotterBrief(GuideBarBrief):
     loads: SlotterLoads
 
 
-@dataclass(frozen=True)
-class SlotterParams:
-    """The slotter brief in SI units (m, rad, rad/s, kg, N, kg·m²), converted once."""
+@dataclass(frozen=True, kw_only=True)
+class SlotterParams(GuideBarParams):
+    """The slotter brief in SI units, converted once."""
 
-    stroke: float              # H [m]
-    time_ratio_K: float
-    frame: float               # L_O2O3 [m]
-    rod_ratio: float
-    com_ratio: float
     ram_com: float             # C → S6 along the ram, + up [m]
-    crank_omega: float         # ω2, counter-clockwise positive [rad/s]
-    crank_speed_rpm: float     # n2 [rpm]
-    m4: float                  # [kg]
-    J_S4: float                # [kg·m²]
-    m6: float                  # [kg]
-    G2: float                  # [N]
-    cutting_force: float       # Fc [N]
     cutting_offset: float      # x_P from the guide, + away from O3 [m]
-    idle_travel_ratio: float
-    z1: int
-    z2: int
-    fluctuation: float         # [δ]
-    flywheel_shaft: str        # "pinion" | "crank"
-    rim_diameter: float        # [m]
-    rim_height_to_width: float
-    specific_weight: float     # [N/m³]
-    grid_points: int
-    position_step: float       # [rad]
-    gravity: float             # [m/s²]
-    cam: CamParams | None = None
-    gear: GearParams | None = None
-    drive: DriveParams | None = None
 
 
 def to_si(b: SlotterBrief) -> SlotterParams:
     mm = 1e-3
-    lk, ms, ld = b.linkage, b.masses, b.loads
-    sense = -1.0 if lk.crank_rotation == "cw" else 1.0
-    return SlotterParams(
-        stroke=lk.stroke_H_mm * mm, time_ratio_K=lk.time_ratio_K, frame=lk.frame_O2O3_mm * mm,
-        rod_ratio=lk.rod_ratio_BC_O3B, com_ratio=lk.com_ratio_O3S4_O3B,
-        ram_com=lk.ram_com_y_S6_mm * mm,
-        crank_omega=sense * lk.crank_speed_n2_rpm * 2.0 * np.pi / 60.0,
-        crank_speed_rpm=lk.crank_speed_n2_rpm, m4=ms.guide_bar_m4_kg, J_S4=ms.guide_bar_J_S4_kgm2,
-        m6=ms.ram_m6_kg, G2=ms.gear2_weight_G2_N, cutting_force=ld.cutting_force_Fc_N,
-        cutting_offset=ld.cutting_offset_xP_mm * mm, idle_travel_ratio=ld.idle_travel_ratio,
-        z1=b.gear_pair.z1, z2=b.gear_pair.z2, fluctuation=b.flywheel.fluctuation_delta,
-        flywheel_shaft=b.flywheel.shaft, rim_diameter=b.flywheel.rim_diameter_mm * mm,
-        rim_height_to_width=b.flywheel.rim_height_to_width,
-        specific_weight=b.flywheel.specific_weight_N_m3, grid_points=b.analysis.grid_points,
-        position_step=np.radians(b.analysis.position_step_deg), gravity=b.analysis.gravity,
-        cam=None if b.cam is None else cam_to_si(b.cam, lk.crank_speed_n2_rpm),
-        gear=gear_to_si(b.gear_pair), drive=drive_to_si_with_gear(b))
+    return SlotterParams(**guide_bar_si(b, b.linkage.rod_ratio_BC_O3B),
+                         ram_com=b.linkage.ram_com_y_S6_mm * mm,
+                         cutting_offset=b.loads.cutting_offset_xP_mm * mm)

@@ -13,13 +13,14 @@ import numpy as np
 
 from ...core.fields import q
 from ...core.kinetostatics import Body
-from ...core.mechanism import RPR, RRP, AssemblyError, Crank, LinkPoint, Mechanism
+from ...core.mechanism import RPR, RRP, Crank, LinkPoint, Mechanism
 from ...core.synthesis import GuideBarDesign
 from ...pipeline import Stage
 from ...stages.flywheel import Flywheel, FlywheelSpec, RimSpec
 from ...stages import linkage as lk
 from ...stages.drive import DriveDocument, drive_document
-from ...stages.guide_bar import Synthesis, drive_stage, synthesize
+from ...stages import guide_bar
+from ...stages.guide_bar import Synthesis, synthesize
 from .brief import SlotterParams
 from ...stages.cam import CamDocument
 from ...stages.gear import GearDocument
@@ -79,45 +80,15 @@ def _synthesis(r: dict):
 
 
 def _motion(r: dict):
-    p, d = r["params"], r["synthesis"].design
-    try:
-        return lk.motion(r["model"])
-    except AssemblyError as exc:
-        need = (1.0 - np.cos(d.swing_angle / 2.0)) / 2.0
-        raise exc.with_hint(
-            f"(Brief field: linkage.rod_ratio_BC_O3B = {p.rod_ratio:g} must be at least "
-            f"(1 − cos(ψ/2))/2 = {need:.6g}.)",
-            f"（任务书字段：linkage.rod_ratio_BC_O3B = {p.rod_ratio:g}，须不小于 "
-            f"(1 − cos(ψ/2))/2 = {need:.6g}。）") from None
+    p = r["params"]
+    return guide_bar.motion(r["model"], r["synthesis"], p.rod_ratio, "linkage.rod_ratio_BC_O3B")
 
 
 def stages(p: SlotterParams) -> list[Stage]:
     engine = lk.linkage_stages(model_key="model", prefix="linkage")
     out = [Stage(("synthesis", "model"), "导杆机构设计 / linkage synthesis", _synthesis),
            Stage(engine[0].key, engine[0].title, _motion), *engine[1:]]
-    if p.gear is not None:
-        from ...stages.gear import gear_stage
-
-        out.append(gear_stage())
-    if p.drive is not None:
-        out.append(drive_stage())
-    if p.cam is not None:
-        from ...stages.cam import cam_stage
-
-        out.append(cam_stage())
-    return out
-
-
-@dataclass(frozen=True)
-class SlotterSynthesisDoc:
-    extreme_angle: float = q("rad", "θ = π(K − 1)/(K + 1)")
-    swing_angle: float = q("rad", "guide-bar swing ψ (= θ)")
-    crank: float = q("m", "L_O2A")
-    frame: float = q("m", "L_O2O3")
-    guide_bar: float = q("m", "L_O3B")
-    rod: float = q("m", "L_BC")
-    guide_offset: float = q("m", "L_O3M, the vertical ram guide's distance from O3")
-    bar_com: float = q("m", "L_O3S4")
+    return out + guide_bar.optional_stages(p)
 
 
 @dataclass(frozen=True)
@@ -125,14 +96,14 @@ class SlotterResults:
     """Slotting machine (插床): the shaper's guide-bar six-bar with a vertical ram that cuts
     on its downward (slow) working stroke. Frame: O3 (guide-bar pivot) at the origin, O2 on
     the x axis at ±L_O2O3 (to the right for a clockwise crank, mirrored for a
-    counter-clockwise one), the ram guide vertical at x = ±synthesis.guide_offset. Links: 2
+    counter-clockwise one), the ram guide vertical at x = ±synthesis.guide_height. Links: 2
     crank O2A, 3 slider A, 4 guide bar O3B, 5 rod BC, 6 ram (slider C), 7 frame. The
     linkage's output is the ram C measured downwards (along the working stroke)."""
 
     schema: str = q("", "'mechdesign.results/2'")
     machine: str = q("", "'slotter'")
     units: str = q("", "reminder of the unit system")
-    synthesis: SlotterSynthesisDoc = q("", "the guide-bar mechanism's dimensions")
+    synthesis: guide_bar.GuideBarSynthesisDoc = q("", "the guide-bar mechanism's dimensions")
     linkage: lk.LinkageDocument = q("", "the linkage engine's results")
     flywheel: Flywheel = q("", "the flywheel (the one flywheel stage) on the pinion or crank shaft")
     cam: CamDocument | None = q("", "the cam on the crank shaft, when the brief has one")
@@ -146,11 +117,9 @@ def results_document(r: dict) -> SlotterResults:
     from ...stages.gear import gear_document
 
     syn, fl = r["synthesis"], r["linkage_flywheel"]
-    d = syn.design
     return SlotterResults(
         schema=SCHEMA, machine="slotter", units=UNITS_NOTE,
-        synthesis=SlotterSynthesisDoc(syn.extreme_angle, d.swing_angle, d.crank, d.frame,
-                                      d.guide_bar, d.rod, d.guide_height, d.bar_com),
+        synthesis=guide_bar.synthesis_doc(syn),
         linkage=lk.linkage_document(r["model"], r["linkage"], r["linkage_forces"], fl,
                                     r["linkage_verification"]),
         flywheel=fl,
