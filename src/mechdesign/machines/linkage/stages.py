@@ -1,5 +1,5 @@
 """The `linkage` machine: any planar linkage written in the brief, on the one linkage
-engine (:mod:`mechdesign.stages.linkage`, re-exported here for the machines that compose it)."""
+engine (:mod:`mechdesign.stages.linkage`)."""
 from __future__ import annotations
 
 from dataclasses import dataclass
