@@ -23,6 +23,7 @@ import numpy as np
 
 from ..core.kinetostatics import Body, PointLoad, power_residual, solve_forces
 from ..core.mechanism import RRR, Crank, Mechanism, Motion
+from ..core.extremes import grid_roots, refine_extreme
 from ..core.fields import q
 from .findings import Finding
 from .positions import Positions, textbook_positions
@@ -181,43 +182,24 @@ def _output_coordinate(model: LinkageModel, m: Motion, reference: float | None =
 def _extremes_by_position(model: LinkageModel, angles: np.ndarray, s: np.ndarray, ref):
     """Crank angles and values of the output's minimum and maximum, each refined by a
     bounded scalar search on the position between the neighbouring grid points."""
-    from scipy.optimize import minimize_scalar
-
-    h = angles[1] - angles[0]
-
     def s_at(angle: float) -> float:
         return float(_output_coordinate(model, model.mechanism.solve(np.array([angle])), ref)[0][0])
 
     found = []
-    for i, sign in ((int(np.argmin(s)), 1.0), (int(np.argmax(s)), -1.0)):
-        r = minimize_scalar(lambda x: sign * s_at(x), bounds=(angles[i] - h, angles[i] + h),
-                            method="bounded", options={"xatol": 1e-12})
-        found.append((float(r.x) % TWO_PI, s_at(float(r.x))))
+    for largest in (False, True):
+        x, _ = refine_extreme(s_at, angles, s, largest=largest)
+        found.append((x % TWO_PI, s_at(x)))
     return found
 
 
 def _extremes_by_velocity(model: LinkageModel, angles: np.ndarray, v: np.ndarray, ref):
     """The same from the crank angles where the output's analytic velocity is zero
     (Brent's method between grid points where it changes sign; precise to ~1e-14 rad)."""
-    from scipy.optimize import brentq
-
-    h = angles[1] - angles[0]
-
     def at(angle: float):
         s, vel, _ = _output_coordinate(model, model.mechanism.solve(np.array([angle])), ref)
         return float(s[0]), float(vel[0])
 
-    roots = []
-    for i in np.flatnonzero(np.sign(v) != np.sign(np.roll(v, -1))):
-        a, b = angles[i], angles[i] + h
-        va, vb = at(a)[1], at(b)[1]
-        if va == 0.0:
-            roots.append(a)
-        elif va * vb < 0:
-            roots.append(brentq(lambda x: at(x)[1], a, b, xtol=1e-15, rtol=4 * np.finfo(float).eps))
-        elif min(abs(va), abs(vb)) <= 1e-9 * np.max(np.abs(v)):
-            # The zero sits on a grid point: round-off gave both ends the same sign.
-            roots.append(a if abs(va) <= abs(vb) else b)
+    roots = grid_roots(lambda x: at(x)[1], angles, v)
     if len(roots) < 2:
         raise ValueError("the output does not reciprocate: its velocity never changes sign")
     values = [at(x)[0] for x in roots]

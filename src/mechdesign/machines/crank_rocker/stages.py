@@ -12,9 +12,10 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-from scipy.optimize import brentq, minimize_scalar
+from scipy.optimize import minimize_scalar
 
 from ...core import fourbar as fb
+from ...core.extremes import grid_roots, refine_extreme
 from ...core.fields import q
 from ...core.mechanism import RRP, RRR, Crank, Mechanism
 from ...pipeline import Stage
@@ -227,26 +228,11 @@ def _four_bar_mechanism(design: fb.FourBar, a_pivot: complex, branch: int, omega
 
 def _refine_roots(fun, phi, values) -> list[float]:
     """Roots of fun(φ) between grid neighbours where ``values`` changes sign (periodic)."""
-    roots = []
-    n = len(phi)
-    for k in range(n):
-        v0, v1 = values[k], values[(k + 1) % n]
-        if v0 == 0.0:
-            roots.append(float(phi[k]))
-        elif v0 * v1 < 0.0:
-            lo = phi[k]
-            hi = phi[k + 1] if k + 1 < n else phi[0] + 2.0 * np.pi
-            roots.append(float(brentq(fun, lo, hi, xtol=1e-15, rtol=1e-15)))
-    return roots
+    return grid_roots(fun, phi, values)
 
 
 def _min_refined(fun, phi, values, step) -> tuple[float, float]:
-    k = int(np.argmin(values))
-    res = minimize_scalar(fun, bounds=(phi[k] - step, phi[k] + step), method="bounded",
-                          options={"xatol": 1e-12})
-    if res.fun <= values[k]:
-        return float(res.x), float(res.fun)
-    return float(phi[k]), float(values[k])
+    return refine_extreme(fun, phi, values, keep_grid=True)
 
 
 def _transmission(m) -> np.ndarray:

@@ -564,17 +564,14 @@ class DieVerification:
 
 def verify(model: LinkageModel, d: ToggleDesign, k, v_link, amp: Amplification, fd: Feed,
            cam, cyc: CycleResult, p: DieCutterParams) -> DieVerification:
-    from scipy.optimize import minimize_scalar
+    from ...core.extremes import refine_extreme
 
     n = k.grid_size
     phase = k.phase[:n]
     step = TWO_PI / n
     # The simulated top (bounded search between grid points) and the toggle's angle there.
-    i_top = int(np.argmax(k.s[:n]))
-    res = minimize_scalar(lambda ph: -_platen_s(model, k, ph),
-                          bounds=(phase[i_top] - step, phase[i_top] + step), method="bounded",
-                          options={"xatol": 1e-12})
-    at_top = model.mechanism.solve(np.array([k.start_angle + k.sense * float(res.x)]))
+    ph_top, _ = refine_extreme(lambda ph: _platen_s(model, k, ph), phase, k.s[:n], largest=True)
+    at_top = model.mechanism.solve(np.array([k.start_angle + k.sense * ph_top]))
     b_top = at_top.points["B"].pos[0]
     top_angle = float(abs(np.angle(b_top * np.exp(-1j * np.pi / 2))))
     diagram = cyc.diagram

@@ -1,0 +1,38 @@
+"""The one extremes solver (core/extremes.py) against closed forms."""
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from mechdesign.core.extremes import grid_roots, refine_extreme
+
+
+def test_roots_of_a_shifted_sine_between_grid_points():
+    c = 0.123456789
+    phi = np.arange(360) * (2 * np.pi / 360)
+    roots = grid_roots(lambda x: np.sin(x - c), phi, np.sin(phi - c))
+    assert len(roots) == 2
+    assert roots[0] == pytest.approx(c, abs=1e-14)
+    assert roots[1] == pytest.approx(np.pi + c, abs=1e-14)
+
+
+def test_a_zero_on_a_grid_point_and_the_wrap_past_the_last_point():
+    phi = np.arange(12) * (np.pi / 6)
+    # zeros exactly at 90° and at 270°: on grid points
+    roots = grid_roots(np.cos, phi, np.cos(phi))
+    assert sorted(np.round(np.degrees(roots), 9)) == [90.0, 270.0]
+    # a zero between the last grid point (330°) and 360°: returned beyond 330°
+    c = np.radians(345.0)
+    roots = grid_roots(lambda x: np.sin(x - c), phi, np.sin(phi - c))
+    assert any(abs(r - c) < 1e-13 for r in roots)
+
+
+def test_refined_extremes_of_a_cosine():
+    c = 1.2345
+    phi = np.arange(100) * (2 * np.pi / 100)
+    f = lambda x: 3.0 + np.cos(x - c)  # noqa: E731
+    x_max, v_max = refine_extreme(f, phi, f(phi), largest=True)
+    x_min, v_min = refine_extreme(f, phi, f(phi))
+    assert v_max == pytest.approx(4.0, abs=1e-15) and v_min == pytest.approx(2.0, abs=1e-15)
+    # a flat extremum fixes its angle only to ~sqrt(ε) through the values
+    assert x_max == pytest.approx(c, abs=1e-6) and x_min == pytest.approx(c + np.pi, abs=1e-6)
