@@ -59,3 +59,15 @@ def test_docs_results_md_is_current():
     current = (ROOT / "docs" / "results.md").read_text(encoding="utf-8")
     assert current == markdown(), ("docs/results.md is stale; regenerate with: "
                                    "python -m mechdesign.results_docs > docs/results.md")
+
+
+@pytest.mark.parametrize("name", names())
+@pytest.mark.parametrize("lang", ["zh", "en"])
+def test_every_machine_template_extends_the_one_base(name, lang):
+    """Shared sections are written once (templates/*_section.*) and included by the base
+    template whenever the context carries them; every machine's template extends it."""
+    import re
+
+    text = (ROOT / "templates" / f"{entry(name).template_stem}.{lang}.md.j2").read_text(encoding="utf-8")
+    body = re.sub(r"\{##.*?##\}", "", text, flags=re.S).strip()
+    assert body.startswith('{% extends "base.' + lang + '.md.j2" %}'), name
