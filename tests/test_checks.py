@@ -227,3 +227,29 @@ def test_the_lockbeam_feed_motion_and_bending_synthesis_run_once(monkeypatch):
     r, _ = run_stages(stages_for(m, p), {"params": p, "brief": b, "checked": checked})
     assert len(bend) == 1 and len(feed) == 1
     assert r["feed"] is checked["feed_motion"][0] and r["bending"] is not None
+
+
+@pytest.mark.parametrize("machine", ["shaper", "slotter"])
+def test_guide_bar_cross_field_problems_all_at_once_in_the_brief_language(machine, tmp_path):
+    """The guide-bar briefs' cross-field rules (polygon positions, module with a drive, the
+    cam on the crank shaft) report every problem at once, each at its field with its value,
+    in Chinese for a zh brief."""
+    import yaml
+
+    d = yaml.safe_load((ROOT / "designs" / f"{machine}.yaml").read_text(encoding="utf-8"))
+    d["sheets"]["polygon_positions"] = [4, 40]
+    d["cam"]["rotation"] = "ccw"
+    d["cam"]["speed_rpm"] = 55
+    del d["gear_pair"]["module_mm"]
+    path = tmp_path / f"{machine}.yaml"
+    path.write_text(yaml.safe_dump(d, allow_unicode=True), encoding="utf-8")
+    from typer.testing import CliRunner
+
+    from mechdesign.cli import app
+
+    res = CliRunner().invoke(app, ["check", str(path), "--lang", "zh"])
+    assert res.exit_code == 2, res.output
+    for field, value in (("sheets.polygon_positions.1", "40"), ("gear_pair.module_mm", "None"),
+                         ("cam.rotation", "'ccw'"), ("cam.speed_rpm", "55")):
+        assert f"{field}：{value}" in res.output, field
+    assert "4 处问题" in res.output and "凸轮装在曲柄轴上" in res.output

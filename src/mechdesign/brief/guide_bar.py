@@ -10,7 +10,8 @@ from pydantic import Field, field_validator, model_validator
 
 from ..lazy import np
 from .cam import CamParams, CamSection, cam_to_si
-from .common import AnalysisSettings, ReportMeta, SheetSettings, StrictModel, parse_fraction
+from .common import (AnalysisSettings, Problems, ReportMeta, SheetSettings, StrictModel,
+                     parse_fraction)
 from .drive import DriveParams, DriveSection, DriveStage, check_material, drive_to_si
 
 
@@ -93,30 +94,40 @@ class GuideBarBrief(StrictModel):
     sheets: SheetSettings = SheetSettings()
 
     @model_validator(mode="after")
-    def _polygon_positions_exist(self):
+    def _cross_fields(self):
+        """Every cross-field problem at once, each at its field, in English and Chinese."""
+        out = Problems(self)
         chosen = self.sheets.polygon_positions
-        if chosen is None:
-            return self
-        count = int(round(360.0 / self.analysis.position_step_deg))
-        bad = [p for p in chosen if not 1 <= p <= count]
-        if bad:
-            raise ValueError(f"sheets.polygon_positions: {bad[0]} is not a position; with "
-                             f"analysis.position_step_deg = {self.analysis.position_step_deg:g} the "
-                             f"positions are 1 … {count}")
-        if chosen[0] == chosen[1]:
-            raise ValueError("sheets.polygon_positions: give two different positions")
-        return self
-
-    @model_validator(mode="after")
-    def _drive_needs_module(self):
+        if chosen is not None:
+            step = self.analysis.position_step_deg
+            count = int(round(360.0 / step))
+            for i, p in enumerate(chosen):
+                if not 1 <= p <= count:
+                    out.add(("sheets", "polygon_positions", i), p,
+                            f"{p} is not a position: with analysis.position_step_deg = {step:g} the "
+                            f"positions are 1 … {count}",
+                            f"{p} 不是机构位置：analysis.position_step_deg = {step:g} 时位置为 1 … {count}")
+            if len(chosen) == 2 and chosen[0] == chosen[1]:
+                out.add(("sheets", "polygon_positions"), list(chosen),
+                        "give two different positions", "应给出两个不同的位置")
         if self.drive is not None and self.gear_pair.module_mm is None:
-            raise ValueError("gear_pair.module_mm is needed with a drive section: the gear pair is its last stage")
+            out.add(("gear_pair", "module_mm"), None,
+                    "the module is needed with a drive section: the gear pair is its last stage",
+                    "有传动装置（drive）时须给出模数：齿轮副是其最后一级")
+        if self.cam is not None:
+            sense = self.linkage.crank_rotation
+            if self.cam.rotation != sense:
+                out.add(("cam", "rotation"), self.cam.rotation,
+                        f"the cam is on the crank shaft and turns with it: use {sense!r} "
+                        f"(linkage.crank_rotation)",
+                        f"凸轮装在曲柄轴上，随曲柄转动：应取 {sense!r}（linkage.crank_rotation）")
+            n2 = self.linkage.crank_speed_n2_rpm
+            if self.cam.speed_rpm is not None and self.cam.speed_rpm != n2:
+                out.add(("cam", "speed_rpm"), self.cam.speed_rpm,
+                        f"the cam turns at the crank speed {n2:g} rpm: leave speed_rpm out",
+                        f"凸轮转速即曲柄转速 {n2:g} r/min：不要给出 speed_rpm")
+        out.raise_any()
         return self
-
-    @model_validator(mode="after")
-    def _cam_on_crank_shaft(self):
-        if self.cam is None:
-            return self
         if self.cam.rotation != self.linkage.crank_rotation:
             raise ValueError(f"cam.rotation is {self.cam.rotation!r} but the cam is on the crank shaft "
                              f"and turns with it: linkage.crank_rotation is {self.linkage.crank_rotation!r}")
