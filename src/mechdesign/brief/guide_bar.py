@@ -128,13 +128,6 @@ class GuideBarBrief(StrictModel):
                         f"凸轮转速即曲柄转速 {n2:g} r/min：不要给出 speed_rpm")
         out.raise_any()
         return self
-        if self.cam.rotation != self.linkage.crank_rotation:
-            raise ValueError(f"cam.rotation is {self.cam.rotation!r} but the cam is on the crank shaft "
-                             f"and turns with it: linkage.crank_rotation is {self.linkage.crank_rotation!r}")
-        if self.cam.speed_rpm is not None and self.cam.speed_rpm != self.linkage.crank_speed_n2_rpm:
-            raise ValueError("cam.speed_rpm: the cam turns at the crank speed "
-                             f"{self.linkage.crank_speed_n2_rpm:g} rpm; leave speed_rpm out")
-        return self
 
 
 @dataclass(frozen=True)
