@@ -210,7 +210,7 @@ def test_required_torque_peaks_where_cutting_starts(shipped):
 def test_flywheel_inertia_in_si_form(shipped):
     """J = ΔW/(ω² [δ]) with ω in rad/s on the flywheel's shaft; on the distribution shaft the
     same flywheel would need i² times more."""
-    fl = shipped["flywheel"]
+    fl = shipped["press_flywheel"]
     omega = fl.shaft_speed_rpm * np.pi / 30
     assert fl.inertia == pytest.approx(fl.max_energy_swing / (omega ** 2 * fl.fluctuation))
     assert fl.inertia_on_crank == pytest.approx(fl.inertia * fl.speed_ratio ** 2)

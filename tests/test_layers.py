@@ -58,7 +58,6 @@ RENDER_MAY_IMPORT = {
     ("mechdesign.stages.cam", "Division"): "result type (annotations)",
     ("mechdesign.stages.gear", "GearDrawing"): "result type (annotations)",
     ("mechdesign.core.polygons", "Polygon"): "result type (annotations)",
-    ("mechdesign.stages.flywheel", "Flywheel"): "result type (isinstance)",
     ("mechdesign.stages.polygons", "LinkagePolygons"): "result type (isinstance)",
     # Which points each link carries, read off the model's groups for the drawings (no
     # physics): each group type states its members (core.mechanism), this collects them.

@@ -51,10 +51,10 @@ class LinkageResults:
 
 
 def linkage_results(results: dict) -> LinkageResults | None:
-    """The shared linkage stages' results in ``results``, or None. The flywheel is the
-    engine's ``{prefix}_flywheel``, else the machine's own ``flywheel`` (the die-cutter sizes
-    it on a drive shaft after the press stages) when it is the one flywheel result."""
-    from ..stages.flywheel import Flywheel
+    """The shared linkage stages' results in ``results`` (found through the polygons
+    stage, which names its model and prefix), or None. The flywheel is ``{prefix}_flywheel``
+    (a machine that sizes its flywheel elsewhere, as the die-cutter on a drive shaft, stores
+    it under that key too)."""
     from ..stages.polygons import LinkagePolygons
 
     for polygons in list(results.values()):
@@ -63,11 +63,8 @@ def linkage_results(results: dict) -> LinkageResults | None:
         model_key, prefix = polygons.model_key, polygons.prefix
         model = results.get(model_key)
         if model is not None:
-            fly = results.get(f"{prefix}_flywheel")
-            if fly is None and isinstance(results.get("flywheel"), Flywheel):
-                fly = results["flywheel"]
-            return LinkageResults(model, results[prefix], results.get(f"{prefix}_forces"), fly,
-                                  results[f"{prefix}_polygons"])
+            return LinkageResults(model, results[prefix], results.get(f"{prefix}_forces"),
+                                  results.get(f"{prefix}_flywheel"), polygons)
     return None
 
 

@@ -83,7 +83,7 @@ def make_figures(r: dict, fig_dir: Path, lang: str) -> dict[str, str]:
         return fig_dir / f"{name}.png"
 
     _amplification_figure(out("dc_amplification"), lang, k, r["amplification"], r["params"], f_)
-    fl = r["flywheel"]
+    fl = r["press_flywheel"]
     n = k.grid_size
     fig.energy(out("dc_energy"), lang, k.phase[:n] * DEG, fl.energy, fl.phase_at_min * DEG,
                fl.phase_at_max * DEG, fl.max_energy_swing, k.working_span * DEG)
@@ -345,7 +345,7 @@ def _amplification(r, p, zh: bool) -> dict:
 
 
 def _flywheel(r, p, b, zh: bool) -> dict:
-    fl = r["flywheel"]
+    fl = r["press_flywheel"]
     shaft = _shaft(fl.shaft, len(b.drive.stages), zh)
     rows = [[_shaft(s.index, len(b.drive.stages), zh), f(s.speed_rpm, 1), f(s.torque, 1),
              f(s.peak_torque, 1), f(s.d_seat * MM, 0), f(s.d_peak * MM, 0)]
@@ -468,7 +468,7 @@ def _verify_rows(r, p, zh: bool) -> list[list[str]]:
 def _findings(r, lang: str) -> list[str]:
     """Every stage's findings; the drive's (listed in its own chapter) as one summary line."""
     out = []
-    for key in ("press_verification", "flywheel", "cam", "feed", "cycle"):
+    for key in ("press_verification", "press_flywheel", "cam", "feed", "cycle"):
         for w in getattr(r.get(key), "warnings", None) or ():
             text = md_text(w.text(lang))
             if text not in out:

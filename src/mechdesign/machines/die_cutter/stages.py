@@ -628,7 +628,7 @@ def stages(params: DieCutterParams) -> list[Stage]:
               lambda r: amplification(r["press_model"], r["toggle"], r["press"], r["press_raw"],
                                       r["press_forces"], r["params"])),
         Stage("drive", "传动装置设计 / drive", _drive),
-        Stage(("flywheel", "peak_shafts"), "飞轮设计 / flywheel",
+        Stage(("press_flywheel", "peak_shafts"), "飞轮设计 / flywheel",
               lambda r: flywheel(r["press_model"], r["press"], r["press_forces"], r["drive"],
                                  r["params"])),
         cam_stage(),
@@ -749,8 +749,8 @@ def results_document(r: dict) -> DieCutterResults:
     from ...stages.drive import drive_document
     from ...stages.linkage import linkage_document
 
-    d, amp, fl, fd, cyc, v = (r[key] for key in ("toggle", "amplification", "flywheel", "feed",
-                                                 "cycle", "verification"))
+    d, amp, fl, fd, cyc, v = (r[key] for key in ("toggle", "amplification", "press_flywheel",
+                                                 "feed", "cycle", "verification"))
     p = r["params"]
     fb = d.four
     n = r["press"].grid_size

@@ -19,7 +19,7 @@ DEG = 180.0 / np.pi
 
 def make_figures(r: dict, fig_dir: Path, lang: str) -> dict[str, str]:
     """Draw every figure into ``fig_dir``; return name → relative path for the template."""
-    k, frc, fl, syn = r["kinematics"], r["forces"], r["flywheel"], r["synthesis"]
+    k, frc, fl, syn = r["kinematics"], r["forces"], r["linkage_flywheel"], r["synthesis"]
     n = k.grid_size
     ph = k.phase[:n] * DEG
     span = k.working_span * DEG
@@ -108,7 +108,7 @@ _REACTIONS = [("R72", "R72"), ("R23", "R23"), ("R43", "R43"), ("R74", "R74"),
 def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
     """Strings, rows and formulas for the templates."""
     p, syn, k, frc, fl, v = (r[key] for key in ("params", "synthesis", "kinematics", "forces",
-                                               "flywheel", "verification"))
+                                               "linkage_flywheel", "verification"))
     d = syn.design
     n = k.grid_size
     mm = 1e3
@@ -154,7 +154,7 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
     ex = labels.index("4") if "4" in labels else 1  # the course's usual worked position
     j = n + ex
     phi2 = k.crank_angle[j]
-    phi4 = r["motion"].links["4"].angle[j]
+    phi4 = r["linkage_raw"].links["4"].angle[j]
     w2 = p.crank_omega
     S = np.sqrt(d.frame**2 + d.crank**2 + 2 * d.frame * d.crank * np.sin(phi2))
     w4_formula = d.crank * w2 * np.cos(phi2 - phi4) / S

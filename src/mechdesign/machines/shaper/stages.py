@@ -23,7 +23,6 @@ from ...pipeline import Stage
 from ...stages.flywheel import Flywheel, FlywheelSpec, RimSpec
 from ...stages import guide_bar
 from ...stages.guide_bar import Synthesis, synthesize
-from ...stages.polygons import polygon_stage
 from ...stages import linkage as lk
 from ...stages.cam import CamDocument, cam_document
 from ...stages.drive import DriveDocument, drive_document
@@ -207,19 +206,14 @@ def verify(syn: Synthesis, k: Kinematics, mech: Mechanism, raw, f: Forces,
 
 
 def _motion_stage(r: dict):
-    m, syn, p = r["model"], r["synthesis"], r["params"]
-    k, raw = motion(m, syn, p)
-    return k, raw, kinematics_view(m, k, raw), m.mechanism, raw
+    m = r["model"]
+    k, raw = motion(m, r["synthesis"], r["params"])
+    return k, raw, kinematics_view(m, k, raw)
 
 
 def _forces_stage(r: dict):
     f = lk.forces(r["model"], r["linkage"], r["linkage_raw"])
     return f, forces_view(f)
-
-
-def _flywheel_stage(r: dict):
-    fl = lk.flywheel(r["model"], r["linkage"], r["linkage_forces"])
-    return fl, fl
 
 
 def _verify_stage(r: dict):
@@ -232,16 +226,17 @@ def _synthesis_stage(r: dict):
     return syn, model(syn, r["params"])
 
 
-# The engine's results under the shared keys (model, linkage, linkage_raw, linkage_forces,
-# linkage_flywheel, linkage_verification) and the shaper's views of them.
+# The engine's stages (results under model, linkage, linkage_raw, linkage_forces,
+# linkage_flywheel, linkage_verification, linkage_polygons), three of them also giving the
+# shaper's views of their results (kinematics, forces, verification).
+_ENGINE = lk.linkage_stages(model_key="model", prefix="linkage")
 STAGES = [
     Stage(("synthesis", "model"), "导杆机构设计 / linkage synthesis", _synthesis_stage),
-    Stage(("linkage", "linkage_raw", "kinematics", "mechanism", "motion"),
-          "机构运动分析 / kinematics", _motion_stage),
-    Stage(("linkage_forces", "forces"), "动态静力分析 / kinetostatics", _forces_stage),
-    Stage(("linkage_flywheel", "flywheel"), "飞轮设计 / flywheel", _flywheel_stage),
-    Stage(("linkage_verification", "verification"), "校核 / verification", _verify_stage),
-    polygon_stage("model", "linkage"),
+    Stage(("linkage", "linkage_raw", "kinematics"), _ENGINE[0].title, _motion_stage),
+    Stage(("linkage_forces", "forces"), _ENGINE[1].title, _forces_stage),
+    _ENGINE[2],                                              # the one flywheel stage
+    Stage(("linkage_verification", "verification"), _ENGINE[3].title, _verify_stage),
+    _ENGINE[4],                                              # the polygons of the A1 sheet
 ]
 
 
@@ -311,7 +306,7 @@ def results_document(r: dict) -> ShaperResults:
     """Everything computed, in SI units, for ``results.json`` (see docs/results.md)."""
     from ...results import SCHEMA, UNITS_NOTE
 
-    syn, k, f, fl, v = (r[key] for key in ("synthesis", "kinematics", "forces", "flywheel",
+    syn, k, f, fl, v = (r[key] for key in ("synthesis", "kinematics", "forces", "linkage_flywheel",
                                             "verification"))
     n = k.grid_size
     per_position = []
