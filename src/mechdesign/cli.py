@@ -17,6 +17,7 @@ from typing import Optional
 import typer
 
 from . import __version__
+from .registry import Lookup
 
 app = typer.Typer(add_completion=False, no_args_is_help=True,
                   help="Mechanism course design (机械原理课程设计): from a YAML design brief "
@@ -213,17 +214,8 @@ def batch(
     raise typer.Exit(exit_code(results))
 
 
-class _Examples(dict):
-    """Machine → the example brief its starter (`mechdesign new`) is copied from."""
-
-    def __init__(self):
-        from .registry import entry, names
-
-        super().__init__({n: entry(n).example for n in names()})
-
-
 #: The example brief each machine's starter (`mechdesign new`) is copied from (registry).
-EXAMPLES = _Examples()
+EXAMPLES = Lookup(lambda e: e.example)
 
 
 @app.command()

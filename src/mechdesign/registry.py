@@ -12,8 +12,9 @@ from __future__ import annotations
 
 import importlib
 import math
+from collections.abc import Mapping
 from dataclasses import dataclass
-from typing import Any
+from typing import Any, Callable
 
 _MM, _DEG = 1000.0, 180.0 / math.pi
 
@@ -71,3 +72,20 @@ def entry(name: str) -> Entry:
         e = importlib.import_module(e).ENTRY
         _ENTRIES[name] = e
     return e
+
+
+class Lookup(Mapping):
+    """Machine name → ``get(entry)``, each machine's package imported only when its value
+    is asked for (``mechdesign check`` of one brief imports one machine)."""
+
+    def __init__(self, get: Callable[[Entry], Any]):
+        self._get = get
+
+    def __getitem__(self, machine: str) -> Any:
+        return self._get(entry(machine))
+
+    def __iter__(self):
+        return iter(_ENTRIES)
+
+    def __len__(self) -> int:
+        return len(_ENTRIES)

@@ -27,32 +27,12 @@ from typing import Any, get_args
 import yaml
 from pydantic import BaseModel, ValidationError
 
+from ..registry import Lookup, resolve
 from .groups import GROUPS_KEY, GroupError, GroupTable, apply_group, choose, parse_groups
 
 
-class _Models(Mapping):
-    """Machine name → brief model, from the registry (:mod:`mechdesign.registry`), each
-    model's module imported when first asked for: building the pydantic models of every
-    machine costs a run that needs one of them about 0.1 s."""
-
-    def __getitem__(self, machine: str) -> type[BaseModel]:
-        from ..registry import entry, resolve
-
-        return resolve(entry(machine).brief)
-
-    def __iter__(self):
-        from ..registry import names
-
-        return iter(names())
-
-    def __len__(self) -> int:
-        from ..registry import names
-
-        return len(names())
-
-
 #: Machine name → brief model (machines register in :mod:`mechdesign.registry`).
-BRIEF_MODELS: Mapping[str, type[BaseModel]] = _Models()
+BRIEF_MODELS: Mapping[str, type[BaseModel]] = Lookup(lambda e: resolve(e.brief))
 
 
 @dataclass(frozen=True)
