@@ -627,7 +627,7 @@ def min_base_radius_translating(programme: Programme, follower: TranslatingFollo
     s0 ≥ max(|σ·ds/dδ − e| / tan[α] − s). With ``offset=None`` the offset minimising r0 is
     searched. Flat face: the profile must stay convex, r0 + s + d²s/dδ² ≥ ``min_curvature``.
     """
-    from scipy.optimize import minimize_scalar
+    from .extremes import fminbound
 
     sigma = 1 if rotation > 0 else -1
     m = programme.evaluate(np.arange(points) * (TWO_PI / points))
@@ -654,9 +654,8 @@ def min_base_radius_translating(programme: Programme, follower: TranslatingFollo
     if offset is not None:
         return r0_for(offset), float(offset)
     span = float(np.max(np.abs(x_pole))) + 1e-12
-    res = minimize_scalar(r0_for, bounds=(-span, span), method="bounded",
-                          options={"xatol": span * 1e-10})
-    return r0_for(res.x), float(res.x)
+    x, _ = fminbound(r0_for, -span, span, xatol=span * 1e-10)
+    return r0_for(x), x
 
 
 def min_base_radius_oscillating(programme: Programme, follower: OscillatingFollower,

@@ -387,7 +387,7 @@ def gamma_min_on_arc(K: float, swing: float, rocker: float, positions, *, side: 
 def optimal_position_theta(theta: float, swing: float, rocker: float = 1.0, *,
                            side: int = +1, grid: int = 721) -> tuple[float, float]:
     """(p*, γ_min*) maximising γ_min over the allowed arc: grid pre-scan, then a bounded
-    Brent search (scipy ``minimize_scalar(method='bounded')``) between the grid
+    Brent search (:func:`mechdesign.core.extremes.fminbound`) between the grid
     neighbours of the best grid point."""
     cons = circle_construction_theta(theta, swing, rocker, side=side)
     span = cons.p_hi - cons.p_lo
@@ -400,11 +400,10 @@ def optimal_position_theta(theta: float, swing: float, rocker: float = 1.0, *,
     def neg(p):
         return -float(cons.gamma_min(p))
 
-    from scipy.optimize import minimize_scalar   # here: it takes ~0.3 s to import
+    from .extremes import fminbound
 
-    res = minimize_scalar(neg, bounds=(lo, hi), method="bounded",
-                          options={"xatol": 1e-13 * max(1.0, span)})
-    p_best, g_best = float(res.x), -float(res.fun)
+    p_best, f_best = fminbound(neg, lo, hi, xatol=1e-13 * max(1.0, span))
+    g_best = -f_best
     if gs[k] > g_best:            # never worse than the grid
         p_best, g_best = float(ps[k]), float(gs[k])
     return p_best, g_best

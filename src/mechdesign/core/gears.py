@@ -156,12 +156,12 @@ def _fillet_end(gear: GearDims, m, alpha, c_star) -> float:
     k_end = h_c / np.tan(alpha)                            # the rounding's end on the line of action
     if gear.d / 2 * np.sin(alpha) >= (gear.hf - c_star * m) / np.sin(alpha):
         return k_end                                       # that point lies before N: no undercut
-    from scipy.optimize import brentq
+    from .extremes import brentq
 
     at = lambda k: _rack_fillet(gear, m, alpha, c_star, k)[0]  # noqa: E731
-    k_b = brentq(lambda k: abs(at(k)) - gear.db / 2, k_end, 0.0)
+    k_b = brentq(lambda k: abs(at(k)) - gear.db / 2, k_end, 0.0, xtol=2e-12)
     gap = lambda k: _involute_half_angle(gear, alpha, abs(at(k))) - np.angle(at(k))  # noqa: E731
-    return brentq(gap, k_end, k_b) if gap(k_b) > 0 else k_b
+    return brentq(gap, k_end, k_b, xtol=2e-12) if gap(k_b) > 0 else k_b
 
 
 def form_radius(gear: GearDims, m, alpha, c_star=0.25) -> float:

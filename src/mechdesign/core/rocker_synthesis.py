@@ -340,7 +340,7 @@ def check_lengths(frame: float, input_rocker: float, coupler: float, output_rock
     """Scan the input's start angle α1 over a revolution: the output swing |Δβ| produced by
     the input swing Δα (nan where the linkage cannot move through the whole swing one way),
     and the starts where |Δβ| equals ``target`` (Brent's method between scan points)."""
-    from scipy.optimize import brentq
+    from .extremes import brentq
 
     d, a, b, c = frame, input_rocker, coupler, output_rocker
     alpha = np.linspace(0.0, TWO_PI, n)

@@ -409,22 +409,22 @@ def quality_findings(model: LinkageModel, k: LinkageMotion) -> list[Finding]:
         zh, en = model.advice.get(kind, ("", ""))
         return (f"（{zh}）" if zh else ""), (f" ({en})" if en else "")
 
-    for q in k.quality:
-        if q.kind == "pressure" and model.pressure_angle_limit is not None \
-                and q.working_extreme > model.pressure_angle_limit + 1e-9:
+    for qa in k.quality:
+        if qa.kind == "pressure" and model.pressure_angle_limit is not None \
+                and qa.working_extreme > model.pressure_angle_limit + 1e-9:
             zh, en = extra("pressure")
             found.append(Finding(
                 "pressure_angle",
-                f"{q.group}：工作行程最大压力角 {q.working_extreme * deg:.2f}° 超过许用值 "
+                f"{qa.group}：工作行程最大压力角 {qa.working_extreme * deg:.2f}° 超过许用值 "
                 f"{model.pressure_angle_limit * deg:.1f}°；应加长连杆或调整导路位置{zh}",
-                f"{q.group}: the largest pressure angle in the working stroke, "
-                f"{q.working_extreme * deg:.2f}°, exceeds the allowed "
+                f"{qa.group}: the largest pressure angle in the working stroke, "
+                f"{qa.working_extreme * deg:.2f}°, exceeds the allowed "
                 f"{model.pressure_angle_limit * deg:.1f}°; lengthen the rod or move the guide{en}"))
-        if q.kind == "transmission" and model.transmission_angle_min is not None \
-                and q.extreme < model.transmission_angle_min - 1e-9:
+        if qa.kind == "transmission" and model.transmission_angle_min is not None \
+                and qa.extreme < model.transmission_angle_min - 1e-9:
             zh, en = extra("transmission")
             fix_zh, fix_en = "应调整杆长", "change the link lengths"
-            four = _four_bar_of(model, q.group)
+            four = _four_bar_of(model, qa.group)
             if four is not None:
                 # γ at the two crank–frame collinear positions is balanced (γmin largest for
                 # these a, d) when b² + c² = a² + d²; a shorter crank raises both.
@@ -437,9 +437,9 @@ def quality_findings(model: LinkageModel, k: LinkageMotion) -> list[Finding]:
                           "transmission angles at the two crank–frame collinear positions are the same)")
             found.append(Finding(
                 "transmission_angle",
-                f"{q.group}：最小传动角 {q.extreme * deg:.2f}° 小于许用值 "
+                f"{qa.group}：最小传动角 {qa.extreme * deg:.2f}° 小于许用值 "
                 f"{model.transmission_angle_min * deg:.1f}°；{fix_zh}{zh}",
-                f"{q.group}: the minimum transmission angle {q.extreme * deg:.2f}° is below "
+                f"{qa.group}: the minimum transmission angle {qa.extreme * deg:.2f}° is below "
                 f"the allowed {model.transmission_angle_min * deg:.1f}°; {fix_en}{en}"))
     return found
 

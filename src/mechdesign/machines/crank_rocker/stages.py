@@ -12,10 +12,9 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-from scipy.optimize import minimize_scalar
 
 from ...core import fourbar as fb
-from ...core.extremes import grid_roots, refine_extreme
+from ...core.extremes import fminbound, grid_roots, refine_extreme
 from ...core.fields import q
 from ...core.mechanism import RRP, RRR, Crank, Mechanism
 from ...pipeline import Stage
@@ -335,9 +334,8 @@ def simulate_slider(res: SliderResult, omega: float, n: int) -> SliderSimulation
         inside = u <= length
         k = int(np.argmax(np.where(inside, alpha, -np.inf)))
         lo, hi = max(0.0, u[k] - step), min(length, u[k] + step)
-        res_ = minimize_scalar(lambda v: -alpha_at(start + v), bounds=(lo, hi), method="bounded",
-                               options={"xatol": 1e-12})
-        return max(float(alpha[k]), -float(res_.fun), alpha_at(start), alpha_at(start + length))
+        _, f_min = fminbound(lambda v: -alpha_at(start + v), lo, hi, xatol=1e-12)
+        return max(float(alpha[k]), -f_min, alpha_at(start), alpha_at(start + length))
     if out_span > np.pi:
         a_slow = stroke_max(phi_min, out_span)
         a_fast = stroke_max(phi_max, 2.0 * np.pi - out_span)

@@ -31,7 +31,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-from scipy.optimize import brentq
+from ...core.extremes import brentq
 
 from .brief import DieCutterParams, PressGeometry
 from ...core import cycle as cy
@@ -92,7 +92,7 @@ def toggle_swing(g: PressGeometry) -> float:
             f"stroke_H_mm = {H * 1e3:g} 无法实现：肘杆 CB = {lt * 1e3:g} mm、BD = {ld * 1e3:g} mm "
             f"最多只能得到 {min(h_max, h_cap) * 1e3:.4g} mm 的行程；应加长 CB 或减小行程")
     return float(brentq(lambda psi: top - float(toggle_height(eps + psi, lt, ld)) - H,
-                        1e-12, psi_cap, xtol=1e-15, rtol=4 * np.finfo(float).eps))
+                        1e-12, psi_cap, xtol=1e-15))
 
 
 @dataclass(frozen=True)

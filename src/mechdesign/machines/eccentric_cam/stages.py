@@ -94,9 +94,9 @@ def verify_disc(d: DiscResult) -> DiscVerification:
         x_pole = sigma * dy
         return y, np.arctan2(np.abs(x_pole - fol.offset), y)
 
-    for (label, fol), mo, q in zip(p.followers, d.motions, d.queries):
+    for (label, fol), mo, qy in zip(p.followers, d.motions, d.queries):
         # the fine grid and the brief's query angles together
-        delta = np.concatenate([d.grid_delta, q.delta])
+        delta = np.concatenate([d.grid_delta, qy.delta])
         y, alpha = geo(delta, fol)
         # extremes over the periodic grid, refined by the parabola through the three points
         # about the grid extreme
@@ -108,12 +108,12 @@ def verify_disc(d: DiscResult) -> DiscVerification:
             den = a - 2 * b + c_
             ext.append(b - (c_ - a) ** 2 / (8 * den) if den != 0 else b)
         y_min, y_max = ext
-        s_ref = np.concatenate([mo.s, q.s])
-        a_ref = np.concatenate([mo.pressure_angle, q.pressure_angle])
+        s_ref = np.concatenate([mo.s, qy.s])
+        a_ref = np.concatenate([mo.pressure_angle, qy.pressure_angle])
         checks.append(SelfCheck("disc_s", float(np.max(np.abs((y - y_min) - s_ref))), DISC_S_LIMIT,
-                                detail={"label": label, "queries": len(q.delta)}))
+                                detail={"label": label, "queries": len(qy.delta)}))
         checks.append(SelfCheck("disc_alpha", float(np.max(np.abs(alpha - a_ref))),
-                                DISC_ALPHA_LIMIT, detail={"label": label, "queries": len(q.delta)}))
+                                DISC_ALPHA_LIMIT, detail={"label": label, "queries": len(qy.delta)}))
         checks.append(SelfCheck("disc_stroke", abs((y_max - y_min) - mo.stroke), DISC_S_LIMIT,
                                 reference=mo.stroke, detail={"label": label, "stroke": y_max - y_min}))
     return DiscVerification(tuple(checks), tuple(failed_findings(checks, DISC_CHECK_NAMES)))

@@ -33,7 +33,6 @@ import re
 from dataclasses import dataclass, fields
 
 import numpy as np
-from scipy.optimize import brentq, minimize_scalar
 
 from .brief import FurnaceParams, PusherParams
 from ...core import fourbar as fb
@@ -43,6 +42,7 @@ from ...core.synthesis import extreme_angle
 from ...pipeline import Stage
 from ...stages.drive import DriveDocument, design_drive, drive_document
 from ...stages.findings import Finding
+from ...core.extremes import brentq, fminbound
 from ...stages.linkage import LinkageDocument, LinkageModel, Output, Resistance, linkage_document, linkage_stages
 
 FRAME = "6"
@@ -204,12 +204,12 @@ def _best_on_circle(cons: fb.CircleConstruction, limit: float | None, grid: int 
     active = False
     # Shrink the bracket to the feasible side of any neighbour that breaks the limit.
     if k > 0 and not feasible[k - 1]:
-        lo, active = brentq(gw, ps[k - 1], ps[k], xtol=1e-15, rtol=4 * np.finfo(float).eps), True
+        lo, active = brentq(gw, ps[k - 1], ps[k], xtol=1e-15), True
     if k + 1 < grid and not feasible[k + 1]:
-        hi, active = brentq(gw, ps[k], ps[k + 1], xtol=1e-15, rtol=4 * np.finfo(float).eps), True
-    res = minimize_scalar(lambda x: -float(cons.gamma_min(x)), bounds=(lo, hi), method="bounded",
-                          options={"xatol": 1e-14 * max(1.0, span)})
-    cands = [(float(res.x), -float(res.fun)), (ps[k], float(g[k]))]
+        hi, active = brentq(gw, ps[k], ps[k + 1], xtol=1e-15), True
+    x_best, f_best = fminbound(lambda x: -float(cons.gamma_min(x)), lo, hi,
+                               xatol=1e-14 * max(1.0, span))
+    cands = [(x_best, -f_best), (ps[k], float(g[k]))]
     if active:
         cands += [(lo, float(cons.gamma_min(lo))), (hi, float(cons.gamma_min(hi)))]
     cands = [(x, v) for x, v in cands if limit is None or gw(x) >= -1e-12]

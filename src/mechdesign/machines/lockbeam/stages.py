@@ -200,7 +200,7 @@ class RoundedCheck:
 def rounded_check(ds: rs.RockerDesign, step: float, ratio: float) -> RoundedCheck | None:
     """Round a and b to ``step`` [m], keep α1 and the branch, and simulate (None if the
     rounded linkage cannot move through the swing)."""
-    from scipy.optimize import brentq
+    from ...core.extremes import brentq
 
     if step <= 0:
         return None
