@@ -43,3 +43,72 @@ def guide_bar_context(syn, p, rod: str = "BF", ram_zh: str = "刨头",
         ["$L_{O_3S_4}$", "导杆质心 / bar CoM", f(d.bar_com * mm, 2), "mm"],
     ]
     return {"eq": eq, "rows": rows, "ram_zh": ram_zh, "theta": f(theta, 2)}
+
+
+def data_rows(b, p, ram_zh: str, rod: str, rod_ratio: float, ram_com: list,
+              cut_zh: str, cut_line: list) -> list[list[str]]:
+    """The design-data table of a guide-bar machine's brief ``b`` (course units); the
+    machine names its ram, its rod, the ram's centre of mass and the cutting-force line."""
+    lk, ms, ld = b.linkage, b.masses, b.loads
+    return [
+        ["$H$", f"{ram_zh}行程 / ram stroke", f(lk.stroke_H_mm, 0), "mm"],
+        ["$K$", "行程速比系数 / time ratio", f(p.time_ratio_K, 2), "—"],
+        ["$L_{O_2O_3}$", "机架长 / frame", f(lk.frame_O2O3_mm, 0), "mm"],
+        [f"$L_{{{rod}}}/L_{{O_3B}}$", "连杆与导杆之比 / rod ratio", f(rod_ratio, 2), "—"],
+        ["$L_{O_3S_4}/L_{O_3B}$", "导杆质心位置 / bar CoM ratio", f(lk.com_ratio_O3S4_O3B, 2), "—"],
+        ram_com,
+        ["$n_2$", "曲柄转速 / crank speed", f(lk.crank_speed_n2_rpm, 0), "rpm"],
+        ["$m_4$", "导杆质量 / guide-bar mass", f(ms.guide_bar_m4_kg, 1), "kg"],
+        ["$J_{S_4}$", "导杆转动惯量 / guide-bar inertia", f(ms.guide_bar_J_S4_kgm2, 2), "kg·m²"],
+        ["$m_6$", f"{ram_zh}质量 / ram mass", f(ms.ram_m6_kg, 1), "kg"],
+        ["$G_2$", "齿轮2重量 / gear 2 weight", f(ms.gear2_weight_G2_N, 0), "N"],
+        ["$F_c$", f"{cut_zh} / cutting force", f(ld.cutting_force_Fc_N, 0), "N"],
+        cut_line,
+        ["$z_1, z_2$", "齿轮齿数 / gear teeth", f"{p.z1}, {p.z2}", "—"],
+        ["$[\\delta]$", "许用速度不均匀系数 / speed fluctuation", f"1/{1 / p.fluctuation:.4g}", "—"],
+    ]
+
+
+def optional_sections(r: dict, lang: str, figures: dict) -> dict:
+    """The cam, gear and drive sections' contexts (None where the brief has no such
+    section); the drive's load is the crank's mean power P_w = M̄_b ω2."""
+    out = {"cam": None, "gear": None, "drive": None}
+    if r.get("cam") is not None:
+        from .cam_report import cam_context
+
+        out["cam"] = cam_context(r["cam"], lang, figures, "cam_profile.csv")
+    if r.get("gear") is not None:
+        from .gear_report import gear_context
+
+        out["gear"] = gear_context(r["gear"], lang, figures)
+    if r.get("drive") is not None:
+        from .drive_report import drive_context
+
+        fl, p = r["linkage_flywheel"], r["params"]
+        pw = (rf"P_w = \bar M_b\,\omega_2 = {f(fl.mean_torque, 3)} \times "
+              rf"{f(abs(p.crank_omega), 4)} = {f(fl.mean_power, 2)}\ \text{{W}}")
+        out["drive"] = drive_context(r["drive"], lang, figures, pw)
+    return out
+
+
+def optional_figures(r: dict, fig_dir, lang: str) -> dict[str, str]:
+    """The cam's and the gear pair's figures, when the results have them."""
+    paths = {}
+    if r.get("cam") is not None:
+        from .cam_report import make_cam_figures
+
+        paths.update(make_cam_figures(r["cam"], fig_dir, lang))
+    if r.get("gear") is not None:
+        from .gear_report import make_gear_figures
+
+        paths.update(make_gear_figures(r["gear"], fig_dir, lang))
+    return paths
+
+
+def write_data(r: dict, folder) -> list:
+    """Cam profile coordinates as CSV when the brief has a cam."""
+    if r.get("cam") is None:
+        return []
+    from .cam_report import write_cam_csv
+
+    return write_cam_csv(r["cam"], folder)

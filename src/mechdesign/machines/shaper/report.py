@@ -12,6 +12,7 @@ from pathlib import Path
 import numpy as np
 
 from ...render import figures as fig
+from ...render import guide_bar_report as gb_report
 from ...render.fmt import e, f, md_meta
 
 DEG = 180.0 / np.pi
@@ -50,14 +51,7 @@ def make_figures(r: dict, fig_dir: Path, lang: str) -> dict[str, str]:
     pts = {name: k.points[name][n:][regular] * 1e3 for name in ("O2", "O3", "A", "B", "F")}
     fig.mechanism(out("mechanism"), lang, pts, [labels[i] for i in regular],
                   syn.design.guide_height * 1e3, syn.design.crank * 1e3)
-    if r.get("cam") is not None:
-        from ...render.cam_report import make_cam_figures
-
-        paths.update(make_cam_figures(r["cam"], fig_dir, lang))
-    if r.get("gear") is not None:
-        from ...render.gear_report import make_gear_figures
-
-        paths.update(make_gear_figures(r["gear"], fig_dir, lang))
+    paths.update(gb_report.optional_figures(r, fig_dir, lang))
     return paths
 
 
@@ -91,13 +85,7 @@ def animate(r: dict, path: Path, lang: str, **kwargs) -> Path:
     return write_mechanism_gif(path, args.pop("points"), args.pop("bars"), **args, **kwargs)
 
 
-def write_data(r: dict, folder: Path) -> list[Path]:
-    """Cam profile coordinates as CSV when the brief has a cam."""
-    if r.get("cam") is None:
-        return []
-    from ...render.cam_report import write_cam_csv
-
-    return write_cam_csv(r["cam"], folder)
+write_data = gb_report.write_data   # the cam profile as CSV
 
 
 # Reaction symbols shown in the report (force of the first link on the second).
@@ -114,28 +102,13 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
     mm = 1e3
     K, H = p.time_ratio_K, p.stroke * mm
     theta = syn.extreme_angle * DEG
-    lk, ms, ld = brief.linkage, brief.masses, brief.loads
+    lk, ld = brief.linkage, brief.loads
 
-    data_rows = [
-        ["$H$", "刨头行程 / ram stroke", f(lk.stroke_H_mm, 0), "mm"],
-        ["$K$", "行程速比系数 / time ratio", f(K, 2), "—"],
-        ["$L_{O_2O_3}$", "机架长 / frame", f(lk.frame_O2O3_mm, 0), "mm"],
-        ["$L_{BF}/L_{O_3B}$", "连杆与导杆之比 / rod ratio", f(lk.rod_ratio_BF_O3B, 2), "—"],
-        ["$L_{O_3S_4}/L_{O_3B}$", "导杆质心位置 / bar CoM ratio", f(lk.com_ratio_O3S4_O3B, 2), "—"],
-        ["$x_{S_6}$", "刨头质心至 F / ram CoM from F", f(lk.ram_com_x_S6_mm, 0), "mm"],
-        ["$n_2$", "曲柄转速 / crank speed", f(lk.crank_speed_n2_rpm, 0), "rpm"],
-        ["$m_4$", "导杆质量 / guide-bar mass", f(ms.guide_bar_m4_kg, 1), "kg"],
-        ["$J_{S_4}$", "导杆转动惯量 / guide-bar inertia", f(ms.guide_bar_J_S4_kgm2, 2), "kg·m²"],
-        ["$m_6$", "刨头质量 / ram mass", f(ms.ram_m6_kg, 1), "kg"],
-        ["$G_2$", "齿轮2重量 / gear 2 weight", f(ms.gear2_weight_G2_N, 0), "N"],
-        ["$F_c$", "切削阻力 / cutting force", f(ld.cutting_force_Fc_N, 0), "N"],
-        ["$y_P$", "切削力作用线距 O2 / cutting line above O2", f(ld.cutting_height_yP_mm, 0), "mm"],
-        ["$z_1, z_2$", "齿轮齿数 / gear teeth", f"{p.z1}, {p.z2}", "—"],
-        ["$[\\delta]$", "许用速度不均匀系数 / speed fluctuation", f"1/{1 / p.fluctuation:.4g}", "—"],
-    ]
-    from ...render.guide_bar_report import guide_bar_context
-
-    guide_bar = guide_bar_context(syn, p, "BF", "刨头", [
+    data_rows = gb_report.data_rows(
+        brief, p, "刨头", "BF", lk.rod_ratio_BF_O3B,
+        ["$x_{S_6}$", "刨头质心至 F / ram CoM from F", f(lk.ram_com_x_S6_mm, 0), "mm"], "切削阻力",
+        ["$y_P$", "切削力作用线距 O2 / cutting line above O2", f(ld.cutting_height_yP_mm, 0), "mm"])
+    guide_bar = gb_report.guide_bar_context(syn, p, "BF", "刨头", [
         ["$L_{O_2M}$", "导路至 O2 / guide line above O2", f(syn.guide_height_above_O2 * mm, 2), "mm"]])
     # Course typography: primes, not apostrophes (8′).
     labels = [lab.replace("'", "′") for lab in k.positions.labels]
@@ -190,26 +163,9 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
     }
     sense_zh = "顺时针" if p.crank_omega < 0 else "逆时针"
     sense_en = "clockwise" if p.crank_omega < 0 else "counter-clockwise"
-    cam = None
-    if r.get("cam") is not None:
-        from ...render.cam_report import cam_context
-
-        cam = cam_context(r["cam"], lang, figures, "cam_profile.csv")
-    gear = drive = None
-    if r.get("gear") is not None:
-        from ...render.gear_report import gear_context
-
-        gear = gear_context(r["gear"], lang, figures)
-    if r.get("drive") is not None:
-        from ...render.drive_report import drive_context
-
-        pw = (rf"P_w = \bar M_b\,\omega_2 = {f(fl.mean_torque, 3)} \times "
-              rf"{f(abs(p.crank_omega), 4)} = {f(fl.mean_power, 2)}\ \text{{W}}")
-        drive = drive_context(r["drive"], lang, figures, pw)
     return {
-        "gear": gear, "drive": drive,
+        **gb_report.optional_sections(r, lang, figures),
         "meta": md_meta(brief.report),
-        "cam": cam,
         "fig": figures,
         "data_rows": data_rows,
         "guide_bar": guide_bar,
