@@ -68,6 +68,6 @@ def test_every_machine_template_extends_the_one_base(name, lang):
     template whenever the context carries them; every machine's template extends it."""
     import re
 
-    text = (ROOT / "templates" / f"{entry(name).template_stem}.{lang}.md.j2").read_text(encoding="utf-8")
+    text = (ROOT / "templates" / f"{name}.{lang}.md.j2").read_text(encoding="utf-8")
     body = re.sub(r"\{##.*?##\}", "", text, flags=re.S).strip()
     assert body.startswith('{% extends "base.' + lang + '.md.j2" %}'), name

@@ -1,12 +1,11 @@
-"""The one place where machines are registered.
+"""The one place where machines are registered: one line per machine, naming its package.
 
-Each entry says where a machine's parts live, as "module:attribute" strings resolved on
-first use (so `mechdesign check` imports only the brief model it needs, never the
-engine): the brief model, the conversion to SI parameters, the stages, the results
-document, the report module (figures, template context, optional animation and data
-files), the example brief (the starter of `mechdesign new`), its template and the rows
-of the batch index. A machine written as a package (``mechdesign.machines.slotter``)
-exposes its own :class:`Entry` as ``ENTRY``; it is listed here by its package only.
+Each package's ``ENTRY`` says where the machine's parts live, as "module:attribute"
+strings resolved on first use (so `mechdesign check` imports only the brief model it
+needs, never the engine): the brief model, the conversion to SI parameters, the stages,
+the results document and its typed class, the report module (figures, template context,
+optional animation and data files), the example brief (the starter of `mechdesign new`),
+the feasibility checks and the rows of the batch index.
 """
 from __future__ import annotations
 
@@ -30,13 +29,8 @@ class Entry:
     example: str                # file name in designs/
     # (zh label, en label, unit, dotted path in the results document, factor SI → unit)
     summary: tuple = ()
-    template: str = ""          # report template stem (default: the machine's name)
     results: str = ""           # "module:Class" of the typed results document
     checks: str = ""            # "module:function" feasibility checks(params, keep), run once
-
-    @property
-    def template_stem(self) -> str:
-        return self.template or self.name
 
 
 def resolve(ref: str) -> Any:

@@ -43,13 +43,7 @@ def dumps(document: dict) -> str:
     return json.dumps(to_plain(document), ensure_ascii=False, indent=1)
 
 
-# ------------------------------------------------------------------ typed results with units
-
-from .core.fields import q  # noqa: E402,F401  (re-exported)
-
+# Every machine's document is a typed results class whose fields state their units
+# (mechdesign.core.fields.q); docs/results.md is generated from them (results_docs).
 SCHEMA = "mechdesign.results/2"
 UNITS_NOTE = "SI: m, s, rad, kg, N, N·m, J, W; complex vectors as [x, y]"
-
-
-def unit_of(field: dataclasses.Field) -> str | None:
-    return field.metadata.get("unit")

@@ -147,9 +147,6 @@ class LinkageForces:
     peak_torque: float = q("N·m", "max |M_b|")
 
 
-LinkageFlywheel = Flywheel   # the one flywheel result (mechdesign.stages.flywheel)
-
-
 @dataclass(frozen=True)
 class LinkageVerification:
     """Stage 校核: self-checks of the linkage run."""
