@@ -24,6 +24,7 @@ from mechdesign.core.kinematics import cross
 from mechdesign.core.kinetostatics import Body, PointLoad, power_residual, solve_forces
 from mechdesign.core.mechanism import RPR, RRP, RRR, Crank, LinkPoint, Mechanism
 from mechdesign.machines.shaper import stages as sh
+from mechdesign.stages import linkage as lk
 
 from pathlib import Path
 
@@ -230,7 +231,8 @@ def shaper():
     p = to_si(load_brief(DESIGN))
     syn = sh.synthesize(p)
     k, mech, mo = sh.kinematics(syn, p)
-    fc = sh.cutting_force(k, p)
+    # Fc [N] over the phase array by the engine's resistance law (the shaper's one resistance)
+    fc = np.abs(lk.resistance_loads(k.model, k.linkage, mo)[0].force)
     bodies = [Body("4", p.m4, "S4", p.J_S4), Body("6", p.m6, "S6", 0.0),
               Body("2", p.G2 / p.gravity, "O2", 0.0)]
     loads = [PointLoad("6", "P", -k.stroke_direction * fc + 0j)]

@@ -168,12 +168,6 @@ def forces_view(f: lk.LinkageForces) -> Forces:
         balancing_torque=f.balancing_torque, power_residual=f.power_residual, linkage=f)
 
 
-def cutting_force(k: Kinematics, p: ShaperParams) -> np.ndarray:
-    """Fc [N] (≥ 0) over the phase array, from the engine's resistance law."""
-    return np.abs(lk.forces(k.model, k.linkage, k.model.mechanism.solve(k.crank_angle))
-                  .resistance["R1"])
-
-
 def kinetostatics(k: Kinematics, mech: Mechanism, raw, p: ShaperParams) -> Forces:
     return forces_view(lk.forces(k.model, k.linkage, raw))
 
