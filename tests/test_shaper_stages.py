@@ -303,7 +303,7 @@ def test_flywheel_stage_from_independent_torque(run):
     assert fl.phase_at_min == pytest.approx(k.phase[np.argmin(energy)], abs=h * 1.01)
     i = p.z2 / p.z1                                   # pinion turns 60/18 times faster
     n1 = p.crank_speed_rpm * i
-    assert fl.ratio_to_crank == pytest.approx(i) and fl.shaft_speed_rpm == pytest.approx(n1)
+    assert fl.speed_ratio == pytest.approx(i) and fl.shaft_speed_rpm == pytest.approx(n1)
     J = 900 * dw / (np.pi**2 * n1**2 * p.fluctuation)
     assert fl.inertia == pytest.approx(J, rel=1e-6)
     # M_d on the crank and on the flywheel shaft (M_r there is M_b / i).

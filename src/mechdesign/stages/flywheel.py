@@ -60,10 +60,6 @@ class Flywheel:
     rim: fw.RimFlywheel | None = q("", "sized rim, when the machine asks for one")
     warnings: tuple[Finding, ...] = q("", "rim speed, rim proportions", default=())
 
-    @property
-    def ratio_to_crank(self) -> float:
-        return self.speed_ratio
-
 
 def design_flywheel(spec: FlywheelSpec, phase: np.ndarray, balancing_torque: np.ndarray,
                     crank_omega: float, gravity: float = 9.81) -> Flywheel:

@@ -145,7 +145,7 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
         "vf": (rf"v_F = {f(k.ram_v[j], 4)}\ \text{{m/s}}, \quad a_F = {f(k.ram_a[j], 4)}\ "
                rf"\text{{m/s}}^2"),
     }
-    i_ratio = fl.ratio_to_crank
+    i_ratio = fl.speed_ratio
     fly_eq = {
         "mr": (rf"M_r = \frac{{M_b}}{{i}}, \quad i = \frac{{z_2}}{{z_1}} = \frac{{{p.z2}}}{{{p.z1}}}"
                rf" = {f(i_ratio, 4)}") if fl.shaft == "pinion" else r"M_r = M_b",
