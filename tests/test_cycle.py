@@ -289,3 +289,46 @@ def test_document():
     assert doc.period == pytest.approx(6.0)
     assert doc.actuators[1].phases[1].duration == pytest.approx(1.0)
     assert doc.constraints[0].a == "feed.rise" and doc.constraints[0].ok is True
+
+
+def _cam_section(motion, segments, stroke=40.0):
+    from mechdesign.brief.cam import CamSection
+    follower = ({"motion": "translating", "contact": "roller", "stroke_h_mm": stroke,
+                 "roller_radius_mm": 5}
+                if motion == "translating" else
+                {"motion": "oscillating", "contact": "roller", "max_swing_deg": stroke,
+                 "pivot_distance_mm": 80,
+                 "arm_length_mm": 60, "roller_radius_mm": 5})
+    unit = "lift_mm" if motion == "translating" else "lift_deg"
+    prog = []
+    for kind, span, lift in segments:
+        seg = {"motion": kind, "angle_deg": span}
+        if kind != "dwell":
+            seg["law"] = "poly345"
+            if lift is not None:
+                seg[unit] = lift
+        prog.append(seg)
+    return CamSection(follower=follower, programme=prog, base_radius_mm=50, speed_rpm=60)
+
+
+@pytest.mark.parametrize("motion, segments", [
+    ("translating", [("rise", 120, None), ("dwell", 60, None), ("return", 120, None),
+                     ("dwell", 60, None)]),
+    ("oscillating", [("rise", 90, 20), ("dwell", 30, None), ("rise", 60, 20),
+                     ("dwell", 30, None), ("return", 100, None), ("dwell", 50, None)]),
+    ("translating", [("dwell", 100.5, None), ("rise", 80.25, 30), ("dwell", 20, None),
+                     ("return", 80.25, 15), ("dwell", 30, None), ("rise", 20, 25),
+                     ("return", 29, None)]),
+])
+def test_follower_phases_in_the_brief_match_the_engine(motion, segments):
+    """The validator's plain-arithmetic phases (brief.cam.follower_phases_deg) agree with the
+    engine's cycle-diagram actuator built from the cam's Programme: same states (a dwell at
+    the bottom, at the stroke, in between) and the same spans."""
+    from mechdesign.brief.cam import follower_phases_deg
+    section = _cam_section(motion, segments)
+    mine = follower_phases_deg(section)
+    act = cy.actuator_from_cam_programme("x", "", "", cam_to_si(section).programme, 0.0)
+    assert [s for s, _ in mine] == [p.state for p in act.phases]
+    assert np.allclose([w for _, w in mine], np.degrees([p.span for p in act.phases]),
+                       rtol=0, atol=1e-9)
+    assert {s for s, _ in mine} >= ({"dwell_low"} if motion == "translating" else set())

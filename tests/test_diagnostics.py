@@ -247,7 +247,8 @@ def test_offset_slider_crank_without_a_real_solution():
     """K = 1.4 → θ = 30°: e must be below H·cot θ = 100·√3 = 173.205 mm."""
     data = example("crank_rocker.yaml")
     data["slider_crank"]["offset_e_mm"] = 200
-    (p,) = brief_error(data).problems
+    (p,) = infeasible(data).problems
+    assert p.path == "slider_crank.offset_e_mm" and p.value == "200"
     limit = number(100 / math.tan(math.radians(30)))
     assert limit == "173.205"
     assert "offset_e_mm = 200" in p.allowed and f"H·cot θ = {limit} mm" in p.allowed
@@ -260,9 +261,24 @@ def test_crank_rocker_frame_outside_the_allowed_arc():
     from the rocker length 50 mm (A at C1's end of the arc: AD = DC1) upwards."""
     data = example("crank_rocker.yaml")
     data["frame_length_mm"] = 20
-    (p,) = brief_error(data).problems
+    (p,) = infeasible(data).problems
+    assert p.path == "frame_length_mm" and p.value == "20"
     assert "frame_length_mm = 20" in p.allowed and "between 50 and" in p.allowed
     assert "机架长度 20 mm 无法实现" in p.allowed_zh and "介于 50 与" in p.allowed_zh
+
+
+def test_crank_rocker_every_problem_at_its_field():
+    """A frame off the allowed arc, an offset slider-crank without a real solution and a
+    compared design that is no crank-rocker (l1 = 60 > the other links' Grashof limit) are
+    all reported at once, each at its own field, in both languages."""
+    data = example("crank_rocker.yaml")
+    data["frame_length_mm"] = 20
+    data["slider_crank"]["offset_e_mm"] = 200
+    data["compare"][0]["crank_mm"] = 60
+    probs = {p.path: p for p in infeasible(data).problems}
+    assert set(probs) == {"frame_length_mm", "slider_crank.offset_e_mm", "compare.0"}
+    assert "not a crank-rocker" in probs["compare.0"].allowed
+    assert "不是曲柄摇杆机构" in probs["compare.0"].allowed_zh
 
 
 def test_furnace_stroke_beyond_the_rocker_chord():

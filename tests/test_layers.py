@@ -172,3 +172,28 @@ def test_tool_sees_function_level_and_package_imports(toy):
     assert g["pkg.c"] == {"pkg.sub", "pkg.sub.b"}
     assert tool.cycles(g) == [["pkg.a", "pkg.sub"]]
     assert tool.cycles(tool.without(g, {("pkg.a", "pkg.sub")})) == []
+
+
+def test_check_of_every_example_runs_no_engine_and_imports_no_numpy():
+    """`mechdesign check` validates without computing (issue 17, point 4): in one fresh
+    interpreter, checking every example (every group) leaves numpy, the linkage engine and the
+    machines' stages unimported — the closed-form rules between fields are plain arithmetic.
+    (How long a check takes is measured by benchmarks/bench_check.py.)"""
+    script = r"""
+import sys
+from pathlib import Path
+from typer.testing import CliRunner
+from mechdesign.cli import app
+heavy = ("numpy", "scipy", "matplotlib", "mechdesign.core.mechanism", "mechdesign.core.cam",
+         "mechdesign.core.cycle", "mechdesign.core.fourbar", "mechdesign.pipeline")
+for path in sorted(Path(sys.argv[1]).glob("*.yaml")):
+    result = CliRunner().invoke(app, ["check", str(path)])
+    assert result.exit_code == 0, (path, result.output)
+    loaded = [m for m in heavy if m in sys.modules]
+    loaded += [m for m in sys.modules if m.startswith("mechdesign.") and m.endswith(".stages")]
+    assert not loaded, (path.name, loaded)
+print("ok")
+"""
+    out = subprocess.run([sys.executable, "-c", script, str(ROOT / "designs")],
+                         capture_output=True, text=True, timeout=120)
+    assert out.returncode == 0 and out.stdout.strip() == "ok", out.stderr[-2000:]

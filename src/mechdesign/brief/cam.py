@@ -179,6 +179,36 @@ def side_sign(side: str) -> int:
     return 1 if side == "right" else -1
 
 
+def follower_phases_deg(c: CamSection) -> list[tuple[str, float]]:
+    """The follower's phases from the cam's δ = 0, as a cycle diagram draws them: (state,
+    span [°]) with the spans scaled to 360°; rises and returns keep their names, a dwell at
+    the lowest level is ``dwell_low``, at the stroke ``dwell_high``, anywhere else ``dwell``
+    (the states of :mod:`mechdesign.core.cycle`; the levels follow
+    :class:`mechdesign.core.cam.Programme`). Plain arithmetic: validation needs no numpy."""
+    osc = c.follower.motion == "oscillating"
+    stroke = c.follower.max_swing_deg if osc else c.follower.stroke_h_mm
+    total = sum(seg.angle_deg for seg in c.programme)
+    out, level = [], 0.0
+    for seg in c.programme:
+        lift = seg.lift_deg if osc else seg.lift_mm
+        span = seg.angle_deg * 360.0 / total
+        if seg.motion == "dwell":
+            if level <= 1e-9 * stroke:
+                state = "dwell_low"
+            elif abs(level - stroke) <= 1e-9 * stroke:
+                state = "dwell_high"
+            else:
+                state = "dwell"
+        else:
+            state = seg.motion
+            if seg.motion == "rise":
+                level += stroke if lift is None else lift
+            else:
+                level -= level if lift is None else lift
+        out.append((state, span))
+    return out
+
+
 def cam_to_si(c: CamSection, speed_rpm: float | None = None) -> CamParams:
     """Convert a cam section; ``speed_rpm`` is the shaft speed a machine supplies."""
     from ..core.cam import OscillatingFollower, Programme, Segment, TranslatingFollower

@@ -14,6 +14,8 @@ that loads always converts, and a problem is reported as a brief problem naming 
 """
 from __future__ import annotations
 
+import math
+
 from dataclasses import dataclass
 from math import prod
 from typing import Literal, Optional
@@ -270,7 +272,7 @@ def _design(s: IncompleteGearSection, shaft_speed_rpm: float | None):
     from ..core.intermittent import design_incomplete_gear
 
     mm = 1e-3
-    rad = np.radians
+    rad = math.radians
     return design_incomplete_gear(
         s.module_mm * mm, s.driver_teeth_full, s.driven_teeth, teeth=s.teeth_present,
         motion_span=None if s.motion_span_deg is None else rad(s.motion_span_deg),
@@ -278,7 +280,7 @@ def _design(s: IncompleteGearSection, shaft_speed_rpm: float | None):
         feed=None if s.feed_mm is None else s.feed_mm * mm,
         sprocket_radius=None if s.sprocket_pitch_radius_mm is None else s.sprocket_pitch_radius_mm * mm,
         motion_start=rad(s.motion_start_deg),
-        driver_speed=None if shaft_speed_rpm is None else shaft_speed_rpm * 2 * np.pi / 60,
+        driver_speed=None if shaft_speed_rpm is None else shaft_speed_rpm * 2 * math.pi / 60,
         tol=max(rad(s.timing_tolerance_deg), 1e-9), alpha=rad(s.pressure_angle_deg),
         ha_star=s.addendum_coefficient, c_star=s.clearance_coefficient)
 

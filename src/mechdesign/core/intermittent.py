@@ -29,16 +29,17 @@ arc (contact ratio > 1, the shortened end teeth) is neglected. SI units: m, rad,
 """
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 from math import gcd
 
-import numpy as np
+from ..lazy import np     # the design from the timing is scalar arithmetic: validating a brief needs no numpy
 
 from .errors import DesignError
 from .fields import q
 
-TWO_PI = 2.0 * np.pi
-DEG = 180.0 / np.pi
+TWO_PI = 2.0 * math.pi
+DEG = 180.0 / math.pi
 #: Default allowed difference between a requested timing angle and the one whole teeth give [rad].
 TIMING_TOL = 1e-6
 #: Angles this close to the start or end of the meshing count as on it [rad].
@@ -244,11 +245,11 @@ def intermittent_curves(g: IncompleteGear, n: int = 3600) -> IntermittentCurves:
 
 def _z_min(alpha: float, ha_star: float) -> float:
     """Smallest tooth number of a standard gear without undercut, 2 h_a*/sin²α."""
-    return 2 * ha_star / np.sin(alpha) ** 2
+    return 2 * ha_star / math.sin(alpha) ** 2
 
 
 def _whole(value: float) -> tuple[int, int]:
-    lo = int(np.floor(value + 1e-12))
+    lo = math.floor(value + 1e-12)
     return lo, lo + 1
 
 
@@ -257,7 +258,7 @@ def design_incomplete_gear(module: float, z1: int | None = None, z2: int | None 
                            advance: float | None = None, feed: float | None = None,
                            sprocket_radius: float | None = None, motion_start: float = 0.0,
                            driver_speed: float | None = None, tol: float = TIMING_TOL,
-                           alpha: float = np.radians(20.0), ha_star: float = 1.0,
+                           alpha: float = math.radians(20.0), ha_star: float = 1.0,
                            c_star: float = 0.25, locking_radius: float | None = None
                            ) -> IncompleteGear:
     """Design an incomplete gear whose driver turns once per cycle.
@@ -275,7 +276,7 @@ def design_incomplete_gear(module: float, z1: int | None = None, z2: int | None 
     :class:`IntermittentDesignError` names the whole-teeth values nearest to it.
     ``motion_start``: shaft angle where meshing begins [rad]; ``driver_speed`` ω1 [rad/s].
     """
-    if not (np.isfinite(module) and module > 0):
+    if not (math.isfinite(module) and module > 0):
         raise IntermittentDesignError(f"the module must be positive, not {module!r}",
                                       f"模数须为正，而不是 {module!r}")
     for name, z in (("z1", z1), ("z2", z2), ("teeth", teeth)):
@@ -440,7 +441,7 @@ def design_incomplete_gear(module: float, z1: int | None = None, z2: int | None 
     if locking_radius is None:
         locking_radius = module * z1 / 2 + ha_star * module
     return IncompleteGear(float(module), z1, z2, teeth, float(alpha), float(ha_star),
-                          float(c_star), float(np.mod(motion_start, TWO_PI)),
+                          float(c_star), float(motion_start % TWO_PI),
                           None if driver_speed is None else float(driver_speed),
                           None if sprocket_radius is None else float(sprocket_radius),
                           float(locking_radius),

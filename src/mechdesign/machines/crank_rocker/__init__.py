@@ -10,7 +10,7 @@ ENTRY = Entry(
     "crank_rocker", f"{_P}.brief:CrankRockerBrief",
     f"{_P}.brief:crank_rocker_to_si", f"{_P}.stages:stages",
     f"{_P}.stages:results_document", f"{_P}.report", "crank_rocker.yaml",
-    results=f"{_P}.stages:CrankRockerResults", summary=(
+    results=f"{_P}.stages:CrankRockerResults", checks=f"{_P}.stages:checks", summary=(
         ("曲柄", "crank", "mm", "optimum.crank", _MM),
         ("连杆", "coupler", "mm", "optimum.coupler", _MM),
         ("机架", "frame", "mm", "optimum.frame", _MM),

@@ -31,17 +31,6 @@ class SliderCrankSection(StrictModel):
     offset_e_mm: float = Field(gt=0, le=10000, description=(
         "Offset e of the slider guide from the crank pivot [mm]; must be below H·cot θ"))
 
-    @model_validator(mode="after")
-    def _feasible(self):
-        from ...core import fourbar
-
-        try:
-            fourbar.offset_slider_crank(self.time_ratio_K, self.stroke_H_mm * 1e-3,
-                                        self.offset_e_mm * 1e-3)
-        except fourbar.SynthesisError as exc:
-            raise ValueError(f"offset_e_mm = {self.offset_e_mm:g}: {exc}") from None
-        return self
-
 
 class ChartSettings(StrictModel):
     """Design chart (设计线图): optimum l3/l4 and γmin against ψ, one curve per θ."""
@@ -111,28 +100,11 @@ class CrankRockerBrief(StrictModel):
 
     @model_validator(mode="after")
     def _complete(self):
-        from ...core import fourbar
-
+        """Only the brief's own rules (closed form): whether the data admit the construction,
+        the given frame, the slider-crank and the compared crank-rockers is asked once per
+        run by :func:`mechdesign.machines.crank_rocker.stages.checks`."""
         if (self.time_ratio_K is None) == (self.extreme_angle_deg is None):
             raise ValueError("give exactly one of time_ratio_K and extreme_angle_deg")
-        theta = self.theta_rad
-        swing, rocker = np.radians(self.rocker_swing_deg), self.rocker_length_mm * 1e-3
-        try:
-            cons = fourbar.circle_construction_theta(theta, swing, rocker)
-        except fourbar.SynthesisError as exc:
-            raise ValueError(f"rocker_swing_deg = {self.rocker_swing_deg:g}: {exc}") from None
-        if self.frame_length_mm is not None:
-            try:
-                fourbar.position_for_frame(cons, self.frame_length_mm * 1e-3)
-            except fourbar.SynthesisError as exc:
-                raise ValueError(f"frame_length_mm = {self.frame_length_mm:g}: {exc}") from None
-        for i, cd in enumerate(self.compare):
-            fb = fourbar.FourBar(cd.crank_mm, cd.coupler_mm, cd.rocker_mm or self.rocker_length_mm,
-                                 cd.frame_mm)
-            ok, kind = fourbar.grashof(fb)
-            if not (ok and kind == "crank-rocker"):
-                raise ValueError(f"compare.{i} ({cd.label}): the lengths make a {kind}, not a "
-                                 "crank-rocker; only crank-rockers can be compared")
         return self
 
     @property

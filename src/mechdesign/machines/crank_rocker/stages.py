@@ -384,6 +384,54 @@ def compared_designs(r: dict) -> list[Design]:
             for cd in p.compare]
 
 
+_KINDS_ZH = {"crank-rocker": "曲柄摇杆机构", "double-crank": "双曲柄机构",
+             "double-rocker": "双摇杆机构", "triple-rocker": "三摇杆机构",
+             "change-point": "变点机构", "rocker-crank": "摇杆为最短杆的曲柄机构"}
+
+
+def checks(p, keep: dict | None = None) -> list:
+    """The feasibility checks of a run (after validation, once): can the θ-circle
+    construction be made, does the given frame lie on its allowed arc, has the offset
+    slider-crank a real solution, is every compared design a crank-rocker? Every problem as
+    a :class:`~mechdesign.brief.loader.BriefProblem` at its brief field (the runner fills in
+    the value)."""
+    from ...brief.loader import BriefProblem
+
+    out = []
+
+    def problem(path: str, name: str, value: float, exc: fb.SynthesisError) -> None:
+        out.append(BriefProblem(path, "", f"{name} = {value:g}: {exc.en}",
+                                f"{name} = {value:g}：{exc.zh}"))
+
+    try:
+        cons = fb.circle_construction_theta(p.theta, p.swing, p.rocker)
+    except fb.SynthesisError as exc:
+        problem("rocker_swing_deg", "rocker_swing_deg", p.swing * DEG, exc)
+        cons = None
+    if cons is not None and p.frame is not None:
+        try:
+            fb.position_for_frame(cons, p.frame)
+        except fb.SynthesisError as exc:
+            problem("frame_length_mm", "frame_length_mm", p.frame * 1e3, exc)
+    if p.slider is not None:
+        sp = p.slider
+        try:
+            fb.offset_slider_crank(sp.K, sp.stroke, sp.offset)
+        except fb.SynthesisError as exc:
+            problem("slider_crank.offset_e_mm", "offset_e_mm", sp.offset * 1e3, exc)
+    for i, cd in enumerate(p.compare):
+        ok, kind = fb.grashof(cd.design)
+        if not (ok and kind == "crank-rocker"):
+            name = kind.split(" (", 1)[0]
+            out.append(BriefProblem(
+                f"compare.{i}", "",
+                f"compare.{i} ({cd.label}): the lengths make a {kind}, not a crank-rocker; only "
+                "crank-rockers can be compared",
+                f"compare.{i}（{cd.label}）：杆长构成{_KINDS_ZH.get(name, name)}"
+                f"（{kind}），不是曲柄摇杆机构；只能比较曲柄摇杆机构"))
+    return out
+
+
 def stages(params) -> list[Stage]:
     out = [Stage("optimum", "最小传动角最大的曲柄摇杆机构 / crank-rocker with the best transmission angle",
                  optimum_stage)]

@@ -15,6 +15,8 @@ asked once per run by :func:`mechdesign.machines.die_cutter.stages.checks`.
 """
 from __future__ import annotations
 
+import math
+
 from dataclasses import dataclass
 from typing import Annotated, Literal, Optional, Union
 
@@ -221,7 +223,7 @@ class DieCutterBrief(StrictModel):
                     "timing.feed_start_deg 给出（角度或 auto）")
         g = incomplete_gear_to_si(self.incomplete_gear)
         ch = self.chain
-        feed = g.advance / (2 * np.pi) * ch.sprocket_teeth * ch.pitch_mm
+        feed = g.advance / (2 * math.pi) * ch.sprocket_teeth * ch.pitch_mm
         if abs(feed - ch.bar_spacing_mm) > 0.01:
             links = ch.bar_spacing_mm / ch.pitch_mm
             out.add(("chain", "bar_spacing_mm"), ch.bar_spacing_mm,

@@ -17,6 +17,8 @@ linkage assembles and the bending linkage can be synthesised is asked once per r
 """
 from __future__ import annotations
 
+import math
+
 from dataclasses import dataclass
 from fractions import Fraction
 from typing import Annotated, Literal, Optional, Union
@@ -24,7 +26,7 @@ from typing import Annotated, Literal, Optional, Union
 from ...lazy import np
 from pydantic import Field, model_validator
 
-from ...brief.cam import CamParams, CamSection, cam_to_si
+from ...brief.cam import CamParams, CamSection, cam_to_si, follower_phases_deg
 from ...brief.common import AnalysisSettings, Problems, ReportMeta, StrictModel
 from ...brief.components import CycleSection, MorphologySection, cycle_to_si, morphology_to_si
 from ...brief.linkage import LinkageSection, linkage_to_model
@@ -210,15 +212,17 @@ class LockbeamBrief(StrictModel):
         return self
 
 
+#: Phase spans this close are the same (1e-9 rad, in degrees).
+_SPAN_TOL_DEG = math.degrees(1e-9)
+
+
 def _phases_text(phases) -> str:
-    return ", ".join(f"{s} {np.degrees(w):.6g}°" for s, w in phases)
+    return ", ".join(f"{s} {w:.6g}°" for s, w in phases)
 
 
 def _check_cycle(b: LockbeamBrief, out: Problems) -> None:
     """The cycle diagram names the three actuators, and the pin's and the bending arm's
     phases are exactly those of their cams."""
-    from ...core.cycle import actuator_from_cam_programme
-
     keys = [a.key for a in b.cycle.actuators]
     missing = [k for k in (FEED, PIN, BEND) if k not in keys]
     if missing:
@@ -240,12 +244,10 @@ def _check_cycle(b: LockbeamBrief, out: Problems) -> None:
             continue
         i = keys.index(key)
         act = b.cycle.actuators[i]
-        prog = cam_to_si(section).programme
-        from_cam = actuator_from_cam_programme(key, "", "", prog, 0.0)
-        want = [(p.state, p.span) for p in from_cam.phases]
-        have = [(p.state, np.radians(p.span_deg)) for p in act.phases]
+        want = follower_phases_deg(section)
+        have = [(p.state, p.span_deg) for p in act.phases]
         same = len(want) == len(have) and all(
-            sw == sh and abs(ww - wh) < 1e-9 for (sw, ww), (sh, wh) in zip(want, have))
+            sw == sh and abs(ww - wh) < _SPAN_TOL_DEG for (sw, ww), (sh, wh) in zip(want, have))
         if not same:
             out.add(("cycle", "actuators", i, "phases"), f"'{key}': {_phases_text(have)}",
                     f"not what {name}.programme makes the follower do ({_phases_text(want)}); the "
