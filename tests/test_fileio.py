@@ -176,13 +176,13 @@ def test_bad_modes_are_refused(tmp_path):
 
 # Writes that are not output files: scratch inputs for pandoc/typst in temporary folders,
 # pandoc's captured stderr, and the run's publish step (staging folder → output folder,
-# which moves finished files; issue 17 leaves it as it is).
+# which moves finished files, each move atomic; mechdesign.publish).
 _NOT_OUTPUT = {
     "render/pdf.py": ('(tmp / "metadata.json").write_text', '(tmp / "typst-literal.lua").write_text',
                       '(tmp / "in.md").write_text', 'open(self._err, "wb")',
                       'os.fdopen(fd, "w", encoding="utf-8")'),
     "render/docx.py": ("meta_file.write_text",),
-    "render/report.py": ("os.replace(folder, trash / folder.name)", "os.replace(item, target)"),
+    "publish.py": ("os.replace(staging / rel, target)",),
 }
 _WRITE = re.compile(r"\.write_text\(|\.write_bytes\(|\bopen\([^)]*[\"'][wax]b?t?[\"']|"
                     r"\.savefig\(|\.saveas\(|\.save\(|os\.replace\(|os\.rename\(|shutil\.(copy|move)")

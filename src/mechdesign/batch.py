@@ -202,25 +202,117 @@ def run_batch(jobs: list[Job], out_root: Path, *, jobs_n: int = 1, lang: str | N
             if on_result:
                 on_result(job, results[i])
     else:
-        with ProcessPoolExecutor(max_workers=min(jobs_n, len(jobs))) as pool:
-            futures = {pool.submit(_work, job, *args): i for i, job in enumerate(jobs)}
+        _pooled(jobs, args, jobs_n, results, on_result)
+    return [results[i] for i in range(len(jobs))]
+
+
+# ----------------------------------------------------------------------------- workers
+#
+# A worker process that dies (killed, out of memory, a crash in a C library) breaks a
+# ProcessPoolExecutor: every run still pending in it fails with BrokenProcessPool. So the
+# pool reports which runs started (a queue the workers write to); when it breaks, the runs
+# that had not started go into a fresh pool untouched, and each run that was running is
+# retried once alone, in a process of its own, where its death is its own: then it is
+# marked failed with the cause (the signal or exit code).
+
+_STARTED = None
+
+
+def _init_worker(queue) -> None:
+    global _STARTED
+    _STARTED = queue
+
+
+def _pool_work(i: int, job: Job, *args) -> dict:
+    if _STARTED is not None:
+        _STARTED.put(i)
+    return _work(job, *args)
+
+
+def _child(conn, job: Job, args) -> None:
+    conn.send(_work(job, *args))
+    conn.close()
+
+
+def _died(job: Job, exitcode: int | None) -> dict:
+    import signal
+
+    if exitcode is not None and exitcode < 0:
+        try:
+            cause = f"killed by {signal.Signals(-exitcode).name}"
+        except ValueError:
+            cause = f"killed by signal {-exitcode}"
+    else:
+        cause = f"exit code {exitcode}"
+    return asdict(Outcome(
+        brief=job.brief, group=job.group, status="failed", exit_code=EXIT_FAILED,
+        message=f"{job.brief}: the worker process died twice running it ({cause}; retried once "
+                "in a fresh process); the other runs are not affected"))
+
+
+def _alone(job: Job, args) -> dict:
+    """One run in a process of its own: its outcome, or how the process died."""
+    import multiprocessing as mp
+
+    recv, send = mp.Pipe(duplex=False)
+    proc = mp.Process(target=_child, args=(send, job, args), daemon=True)
+    proc.start()
+    send.close()
+    try:
+        result = recv.recv()
+    except EOFError:
+        result = None
+    proc.join()
+    if result is None:
+        from .publish import clean_dead_staging
+
+        clean_dead_staging(Path(args[0]) / job.run_id)
+        return _died(job, proc.exitcode)
+    return result
+
+
+def _pooled(jobs: list[Job], args, jobs_n: int, results: dict,
+            on_result: Callable[[Job, dict], None] | None) -> None:
+    import multiprocessing as mp
+    import queue as queue_mod
+
+    pending = list(range(len(jobs)))
+    while pending:
+        started_q = mp.SimpleQueue()
+        started: set[int] = set()
+        broken = False
+        with ProcessPoolExecutor(max_workers=min(jobs_n, len(pending)), initializer=_init_worker,
+                                 initargs=(started_q,)) as pool:
+            futures = {pool.submit(_pool_work, i, jobs[i], *args): i for i in pending}
             try:
                 for future in as_completed(futures):
                     i = futures[future]
                     try:
                         results[i] = future.result()
-                    except BrokenProcessPool as exc:  # a worker died (e.g. out of memory)
-                        results[i] = asdict(Outcome(
-                            brief=jobs[i].brief, group=jobs[i].group, status="failed",
-                            exit_code=EXIT_FAILED,
-                            message=f"{jobs[i].brief}: the worker process died: {exc}"))
+                    except BrokenProcessPool:    # a worker died: sorted out below
+                        broken = True
+                        continue
                     if on_result:
                         on_result(jobs[i], results[i])
             except KeyboardInterrupt:
                 for future in futures:
                     future.cancel()
                 raise
-    return [results[i] for i in range(len(jobs))]
+        while not started_q.empty():
+            try:
+                started.add(started_q.get())
+            except (EOFError, OSError, queue_mod.Empty):
+                break
+        left = [i for i in pending if i not in results]
+        if not broken or not left:
+            break
+        running = [i for i in left if i in started]
+        # running when the pool broke (none known: every one left, alone, so it ends)
+        for i in running or left:
+            results[i] = _alone(jobs[i], args)
+            if on_result:
+                on_result(jobs[i], results[i])
+        pending = [i for i in left if i not in results]
 
 
 def exit_code(results: list[dict]) -> int:

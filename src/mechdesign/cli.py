@@ -129,6 +129,9 @@ def run(
     def stage_progress(i: int, total: int, title: str) -> None:
         say(f"[{i}/{total}] {title}")
 
+    from .publish import journal_mark, published_since
+
+    mark = journal_mark()
     try:
         with _terminate_as_interrupt():
             outcome = run_one(brief, out_dir=out, lang=lang.value if lang else None, formats=fmt,
@@ -136,7 +139,13 @@ def run(
                               render_progress=lambda what: say(f"      rendering {what}"),
                               on_warning=lambda text: _err(f"warning: {text}"), parallel=True)
     except KeyboardInterrupt:
-        _err("\ninterrupted: nothing was written; an earlier report in the output folder is unchanged")
+        done = published_since(mark)
+        if done:    # the interrupt came after the new report was complete and in place
+            _err(f"\ninterrupted after the report was written: {done[-1]} holds the new, "
+                 "complete report")
+        else:
+            _err("\ninterrupted: nothing was written; an earlier report in the output folder "
+                 "is unchanged")
         raise typer.Exit(130)
     if outcome.status != "ok":
         if debug and outcome.traceback:

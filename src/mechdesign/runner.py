@@ -108,6 +108,7 @@ def run_one(brief: Path, *, out_dir: Path | None = None, lang: str | None = None
     a batch already keeps every core busy)."""
     from .brief.loader import BriefError, load_variant
     from .machines import get_machine, stages_for
+    from .publish import ForeignFiles, foreign
     from .pipeline import run_stages
     from .render.report import write_report
 
@@ -127,6 +128,11 @@ def run_one(brief: Path, *, out_dir: Path | None = None, lang: str | None = None
         out_dir = Path("out") / (brief.stem if group is None else f"{brief.stem}-g{safe_label(label)}")
     machine = get_machine(b.machine)
     common = dict(base, machine=machine.name, out_dir=str(out_dir))
+    fixed = ["results.json"] + [f"report.{f}" for f in formats if f in ("md", "pdf", "docx")]
+    clash = foreign(Path(out_dir), fixed)
+    if clash:   # before any computation is spent: the folder holds someone else's report
+        return Outcome(**common, status="invalid", exit_code=EXIT_INVALID,
+                       message=ForeignFiles(Path(out_dir), clash).text(language))
     try:
         params = machine.to_params(b)
     except ValueError as exc:  # a conversion found the data inconsistent
@@ -193,10 +199,14 @@ def run_one(brief: Path, *, out_dir: Path | None = None, lang: str | None = None
             animate=animate, parallel=parallel,
             write_data=(None if not hasattr(report, "write_data")
                         else lambda d: report.write_data(results, d)))
+    except ForeignFiles as exc:   # a figure or sheet name clashes with a file not ours
+        return Outcome(**common, status="invalid", exit_code=EXIT_INVALID,
+                       message=exc.text(language))
     except Exception as exc:  # noqa: BLE001 - any rendering failure gets a clean message
         return Outcome(**common, status="failed", exit_code=EXIT_FAILED,
                        message=f"{brief}: the report could not be rendered: {exc}",
-                       warnings=tuple(warnings), traceback=traceback.format_exc())
+                       warnings=tuple(warnings),
+                       traceback=traceback.format_exc() + getattr(exc, "detail", ""))
     from .machines.summary import summary_rows
 
     return Outcome(**common, status="ok", exit_code=EXIT_OK, files=tuple(str(p) for p in written),

@@ -30,7 +30,12 @@ from typing import Callable
 
 
 class BackgroundSaveError(RuntimeError):
-    """A figure could not be written by the helper process (its traceback follows)."""
+    """A figure could not be written by the helper process: the message names it and the
+    error; ``detail`` holds the helper's traceback (shown with ``--debug``)."""
+
+    def __init__(self, message: str, detail: str = ""):
+        super().__init__(message)
+        self.detail = detail
 
 
 _enabled = False
@@ -175,7 +180,7 @@ def _flush_std() -> None:
 def _reap(block: bool, only: int | None = None) -> None:
     """Collect the children that have finished (all of them, or the one ``only``, when
     ``block``); raise their errors."""
-    errors = []
+    errors, details = [], []
     for child in list(_children):
         pid, read_end, label, _ = child
         if only is not None and pid != only:
@@ -188,10 +193,12 @@ def _reap(block: bool, only: int | None = None) -> None:
             message = pipe.read().decode("utf-8", "replace")
         code = os.waitstatus_to_exitcode(status)
         if code != 0:
+            lines = [x for x in message.strip().splitlines() if x.strip()]
             errors.append(f"writing {label} failed (helper process exit {code})"
-                          + (f":\n{message}" if message else ""))
+                          + (f": {lines[-1].strip()}" if lines else ""))
+            details.append(message)
     if errors:
-        raise BackgroundSaveError("\n".join(errors))
+        raise BackgroundSaveError("\n".join(errors), "\n".join(details))
 
 
 def _kill() -> None:

@@ -1,14 +1,13 @@
 """Write a report: figures, Markdown from the Jinja2 template, results.json, PDF.
 
-Everything is written into a staging folder next to the output; only when all of it
-succeeded are the files moved into place, so a failed run leaves no half-written
-report (and an earlier report stays as it was).
+Everything is written into a staging folder inside the output folder; only when all of
+it succeeded are the files moved into place (:mod:`mechdesign.publish`: the run owns only
+the files its manifest lists), so a failed run leaves no half-written report (and an
+earlier report stays as it was).
 """
 from __future__ import annotations
 
-import os
 import shutil
-import tempfile
 from importlib import resources
 from pathlib import Path
 from typing import Callable
@@ -16,6 +15,7 @@ from typing import Callable
 import jinja2
 
 from ..fileio import write_text
+from ..publish import make_staging, publish
 from ..results import dumps
 from .fmt import md_text
 from .parallel import background_saves, pump
@@ -31,8 +31,13 @@ def template_dir(override: Path | None = None) -> Path:
 
 
 def render_markdown(template_name: str, ctx: dict, templates: Path) -> str:
+    """Render a report template in Jinja's sandbox: a user's ``--templates`` folder can
+    format the prepared values but cannot reach Python (no ``__class__``, no imports, no
+    calls of unsafe methods); what it tries is a rendering error, not code run."""
+    from jinja2.sandbox import SandboxedEnvironment
+
     # Pandoc's attribute syntax "{#fig:x}" would open a Jinja comment: comments are {## ##}.
-    env = jinja2.Environment(loader=jinja2.FileSystemLoader(str(templates)),
+    env = SandboxedEnvironment(loader=jinja2.FileSystemLoader(str(templates)),
                              undefined=jinja2.StrictUndefined, autoescape=False,
                              keep_trailing_newline=True,
                              comment_start_string="{##", comment_end_string="##}")
@@ -88,8 +93,7 @@ def write_report(out_dir: Path, *, machine: str, lang: str, formats: tuple[str, 
     say = progress or (lambda _msg: None)
     tdir = template_dir(templates)
     out_dir = Path(out_dir)
-    out_dir.mkdir(parents=True, exist_ok=True)
-    staging = Path(tempfile.mkdtemp(prefix=".mechdesign-staging-", dir=out_dir))
+    staging = make_staging(out_dir)
     try:
         fig_dir = staging / "figures"
         fig_dir.mkdir()
@@ -149,7 +153,7 @@ def write_report(out_dir: Path, *, machine: str, lang: str, formats: tuple[str, 
             animate(staging / "animation.gif")
         if "md" not in formats:
             (staging / "report.md").unlink()
-        return _publish(staging, out_dir)
+        return publish(staging, out_dir)
     finally:
         shutil.rmtree(staging, ignore_errors=True)
 
@@ -159,20 +163,3 @@ def _sheet_row(sh, lang: str) -> dict:
     files = ", ".join(f"`{x}`" for x in (sh.pdf, sh.dxf) if x) or "—"
     return {"title": sh.title, "size": sh.size, "scale": sh.scale, "preview": sh.preview,
             "files": files, "label": f"fig:sheet-{sh.name}"}
-
-
-def _publish(staging: Path, out_dir: Path) -> list[Path]:
-    """Move the staged files into ``out_dir`` (each move atomic; folders such as figures/
-    and sheets/ replace the old folder as a whole)."""
-    written = []
-    old = [out_dir / name for name in ("figures", "sheets") if (out_dir / name).is_dir()]
-    if old:
-        trash = Path(tempfile.mkdtemp(prefix=".mechdesign-old-", dir=out_dir))
-        for folder in old:
-            os.replace(folder, trash / folder.name)
-        shutil.rmtree(trash, ignore_errors=True)
-    for item in sorted(staging.iterdir()):
-        target = out_dir / item.name
-        os.replace(item, target)
-        written.append(target)
-    return written
