@@ -352,8 +352,9 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
             "l1": f(a, 4), "l2": f(b, 4), "l3": f(c, 4), "l4": f(d, 4),
             "kind": tb.grashof if tb is not None else "",
             "eq_dac": (rf"\angle DAC_1 = \arccos\frac{{(l_2 - l_1)^2 + l_4^2 - l_3^2}}{{2(l_2 - l_1)l_4}}"
-                       rf" = {f(dac1, 6)}^\circ,\quad \angle DAC_2 = \arccos\frac{{(l_2 + l_1)^2 + "
-                       rf"l_4^2 - l_3^2}}{{2(l_2 + l_1)l_4}} = {f(dac2, 6)}^\circ"),
+                       rf" = {f(dac1, 6)}^\circ"),
+            "eq_dac2": (rf"\angle DAC_2 = \arccos\frac{{(l_2 + l_1)^2 + "
+                        rf"l_4^2 - l_3^2}}{{2(l_2 + l_1)l_4}} = {f(dac2, 6)}^\circ"),
             "eq_adc": (rf"\angle ADC_1 = \arccos\frac{{l_4^2 + l_3^2 - (l_2 - l_1)^2}}{{2l_4l_3}}"
                        rf" = {f(adc1, 6)}^\circ,\quad \angle ADC_2 = {f(adc2, 6)}^\circ"),
             "eq_theta": (rf"\theta = \lvert\angle DAC_1 - \angle DAC_2\rvert = {f(th_deg, 6)}^\circ,"

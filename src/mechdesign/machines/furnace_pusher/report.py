@@ -229,10 +229,11 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
             return float(np.degrees(np.arccos(np.clip((x * x + y * y - z * z) / (2 * x * y), -1, 1))))
         given_eq = {
             "theta": (rf"\theta = \left\lvert\arccos\frac{{(b-a)^2 + d^2 - c^2}}{{2(b-a)d}} - "
-                      rf"\arccos\frac{{(b+a)^2 + d^2 - c^2}}{{2(b+a)d}}\right\rvert = "
-                      rf"\lvert {f(ang(b - a, d, c), 6)}° - {f(ang(b + a, d, c), 6)}°\rvert = {f(th, 6)}°"),
-            "psi": (rf"\psi = \arccos\frac{{d^2 + c^2 - (b+a)^2}}{{2dc}} - \arccos\frac{{d^2 + c^2 - (b-a)^2}}{{2dc}}"
-                    rf" = {f(ang(d, c, b + a), 6)}° - {f(ang(d, c, b - a), 6)}° = {f(psi, 6)}°"),
+                      rf"\arccos\frac{{(b+a)^2 + d^2 - c^2}}{{2(b+a)d}}\right\rvert"),
+            "theta_n": (rf"\theta = \lvert {f(ang(b - a, d, c), 6)}° - {f(ang(b + a, d, c), 6)}°\rvert = "
+                        rf"{f(th, 6)}°"),
+            "psi": (rf"\psi = \arccos\frac{{d^2 + c^2 - (b+a)^2}}{{2dc}} - \arccos\frac{{d^2 + c^2 - (b-a)^2}}{{2dc}}"),
+            "psi_n": rf"\psi = {f(ang(d, c, b + a), 6)}° - {f(ang(d, c, b - a), 6)}° = {f(psi, 6)}°",
             "K": rf"K = \frac{{180° + \theta}}{{180° - \theta}} = {f(pp.time_ratio_K, 6)}",
             "H": (rf"H = 2\,l_{{DC}}\sin\frac{{\psi}}{{2}} = 2 \times {f(R, 3)} \times \sin {f(psi / 2, 6)}° = "
                   rf"{f(H, 6)}\ \text{{mm}}"),
