@@ -69,6 +69,18 @@ def crank_rocker_problems(out: Problems, loc: tuple, a: float, b: float, c: floa
                 "应修改杆长或许用值")
 
 
+def raise_missing(model, names) -> None:
+    """Report fields that one form of a brief requires as pydantic's own "missing" errors
+    (each at its field; the description says which form needs it)."""
+    if not names:
+        return
+    from pydantic import ValidationError
+    from pydantic_core import InitErrorDetails
+
+    raise ValidationError.from_exception_data(type(model).__name__, [InitErrorDetails(
+        type="missing", loc=(name,), input=None) for name in names])
+
+
 class SliderDimensions(StrictModel):
     """The offset slider-crank's link lengths as a data table gives them."""
 
@@ -95,13 +107,7 @@ class SliderCrankSection(StrictModel):
     def _one_form(self):
         out = Problems(self)
         if self.dimensions is None:
-            for name in ("time_ratio_K", "stroke_H_mm"):
-                if getattr(self, name) is None:
-                    out.add((name,), None,
-                            f"{name} is missing: give time_ratio_K and stroke_H_mm (design from "
-                            "K and H), or dimensions (crank_mm, rod_mm)",
-                            f"缺少 {name}：应给出 time_ratio_K 与 stroke_H_mm（按 K、H 设计），"
-                            "或给出 dimensions（crank_mm、rod_mm）")
+            raise_missing(self, [n for n in ("time_ratio_K", "stroke_H_mm") if getattr(self, n) is None])
         else:
             for name in ("time_ratio_K", "stroke_H_mm"):
                 if getattr(self, name) is not None:
@@ -228,15 +234,7 @@ class CrankRockerBrief(StrictModel):
             return self
         if (self.time_ratio_K is None) == (self.extreme_angle_deg is None):
             raise ValueError("give exactly one of time_ratio_K and extreme_angle_deg")
-        missing = [n for n in ("rocker_swing_deg", "rocker_length_mm") if getattr(self, n) is None]
-        if missing:
-            out = Problems(self)
-            for name in missing:
-                out.add((name,), None, f"{name} is missing: give it (with K or θ), or give "
-                        "dimensions (crank_mm, coupler_mm, rocker_mm, frame_mm)",
-                        f"缺少 {name}：应给出它（与 K 或 θ 一起），或给出 dimensions"
-                        "（crank_mm、coupler_mm、rocker_mm、frame_mm）")
-            out.raise_any()
+        raise_missing(self, [n for n in ("rocker_swing_deg", "rocker_length_mm") if getattr(self, n) is None])
         return self
 
     @property

@@ -77,16 +77,11 @@ class PusherSection(StrictModel):
     def _one_form(self):
         """Either the requirements (H, K) or the dimensions; closed-form checks of the
         dimensions (Grashof, B on the rocker)."""
-        from ..crank_rocker.brief import crank_rocker_problems
+        from ..crank_rocker.brief import crank_rocker_problems, raise_missing
 
         out = Problems(self)
         if self.dimensions is None:
-            for name in ("stroke_H_mm", "time_ratio_K"):
-                if getattr(self, name) is None:
-                    out.add((name,), None, f"{name} is missing: give stroke_H_mm and time_ratio_K "
-                            "(synthesis), or dimensions (the crank-rocker's lengths)",
-                            f"缺少 {name}：应给出 stroke_H_mm 与 time_ratio_K（综合），或给出 "
-                            "dimensions（曲柄摇杆机构的杆长）")
+            raise_missing(self, [n for n in ("stroke_H_mm", "time_ratio_K") if getattr(self, n) is None])
         else:
             for name in _SYNTHESIS_ONLY:
                 if name in self.model_fields_set:
