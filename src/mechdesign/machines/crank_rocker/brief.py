@@ -7,6 +7,7 @@ Data that admit no linkage are rejected here, naming the field and the range tha
 """
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
 from typing import Literal, Optional
@@ -14,7 +15,7 @@ from typing import Literal, Optional
 from ...lazy import np
 from pydantic import Field, field_validator, model_validator
 
-from ...brief.common import ReportMeta, StrictModel
+from ...brief.common import Problems, ReportMeta, StrictModel
 
 if TYPE_CHECKING:
     from ...core import fourbar
@@ -22,14 +23,109 @@ if TYPE_CHECKING:
 _DEFAULT_THETAS = [0.0, 5.0, 10.0, 15.0, 20.0, 25.0, 30.0]
 
 
-class SliderCrankSection(StrictModel):
-    """Offset slider-crank (偏置曲柄滑块机构) designed from K, the stroke H and the offset e."""
+def crank_rocker_problems(out: Problems, loc: tuple, a: float, b: float, c: float, d: float,
+                          names: tuple[str, str, str, str], gamma_allowed_deg: float | None = None,
+                          gamma_field: str = "") -> None:
+    """Closed-form checks (plain math, no engine) of given four-bar lengths a (crank),
+    b (coupler), c (rocker), d (frame): Grashof's crank-rocker condition (the crank the
+    shortest link, shortest + longest < the other two) and, when ``gamma_allowed_deg`` is
+    given, γ_min = min(δ', 180° − δ'') ≥ [γ]. Each problem at the field that breaks it
+    (``loc`` + the field name); ``names`` are the four fields."""
+    lengths = {names[0]: a, names[1]: b, names[2]: c, names[3]: d}
+    ordered = sorted(lengths.values())
+    s, p, q, l_ = ordered
+    sums = (f"shortest + longest = {s:g} + {l_:g} = {s + l_:g} mm, the other two {p:g} + {q:g} "
+            f"= {p + q:g} mm")
+    sums_zh = f"最短杆 + 最长杆 = {s:g} + {l_:g} = {s + l_:g} mm，其余两杆之和 {p + q:g} mm"
+    if not s + l_ < p + q:
+        longest = max(lengths, key=lengths.get)
+        out.add(loc + (longest,), lengths[longest],
+                f"{longest} = {lengths[longest]:g}: these lengths are not a crank-rocker (Grashof: "
+                f"{sums}; a crank needs shortest + longest < the other two)",
+                f"{longest} = {lengths[longest]:g}：杆长不构成曲柄摇杆机构（{sums_zh}；"
+                "曲柄存在须最短杆 + 最长杆 < 其余两杆之和）")
+        return
+    if not a <= min(b, c, d):
+        out.add(loc + (names[0],), a,
+                f"{names[0]} = {a:g}: the crank must be the shortest link for a crank-rocker "
+                f"(the shortest is {s:g} mm; with another link shortest it is a double-crank, "
+                "double-rocker or a rocker that turns)",
+                f"{names[0]} = {a:g}：曲柄摇杆机构的曲柄须为最短杆（最短杆长 {s:g} mm）")
+        return
+    if gamma_allowed_deg is None:
+        return
 
-    time_ratio_K: float = Field(gt=1, lt=3, description=(
-        "Time ratio K of the slider (行程速比系数), 1 < K < 3 (dimensionless)"))
-    stroke_H_mm: float = Field(gt=0, le=10000, description="Slider stroke H [mm]")
+    def angle(x, y, z):       # angle opposite z [°]
+        return math.degrees(math.acos(max(-1.0, min(1.0, (x * x + y * y - z * z) / (2 * x * y)))))
+    d1, d2 = angle(b, c, d - a), angle(b, c, d + a)
+    g = min(d1, 180.0 - d2, 180.0 - d1, d2)
+    if g < gamma_allowed_deg:
+        out.add(loc + (gamma_field or names[1],), gamma_allowed_deg,
+                f"{gamma_field or names[1]}: the given lengths have the minimum transmission angle "
+                f"γmin = {g:.3f}° < the allowed {gamma_allowed_deg:g}° (δ' = {d1:.3f}°, δ'' = "
+                f"{d2:.3f}° with the crank along the frame); change the lengths or the allowed value",
+                f"{gamma_field or names[1]}：给定杆长的最小传动角 γmin = {g:.3f}° 小于许用值 "
+                f"{gamma_allowed_deg:g}°（曲柄与机架共线时 δ' = {d1:.3f}°、δ'' = {d2:.3f}°）；"
+                "应修改杆长或许用值")
+
+
+def raise_missing(model, names) -> None:
+    """Report fields that one form of a brief requires as pydantic's own "missing" errors
+    (each at its field; the description says which form needs it)."""
+    if not names:
+        return
+    from pydantic import ValidationError
+    from pydantic_core import InitErrorDetails
+
+    raise ValidationError.from_exception_data(type(model).__name__, [InitErrorDetails(
+        type="missing", loc=(name,), input=None) for name in names])
+
+
+class SliderDimensions(StrictModel):
+    """The offset slider-crank's link lengths as a data table gives them."""
+
+    crank_mm: float = Field(gt=0, le=10000, description="Crank AB [mm]")
+    rod_mm: float = Field(gt=0, le=100000, description="Connecting rod BC [mm]")
+
+
+class SliderCrankSection(StrictModel):
+    """Offset slider-crank (偏置曲柄滑块机构): designed from K, the stroke H and the offset e,
+    or given by its dimensions (crank, rod and e), from which H, θ and K are derived."""
+
+    time_ratio_K: Optional[float] = Field(None, gt=1, lt=3, description=(
+        "Time ratio K of the slider (行程速比系数), 1 < K < 3 (dimensionless); with stroke_H_mm, "
+        "or leave both out and give dimensions"))
+    stroke_H_mm: Optional[float] = Field(None, gt=0, le=10000, description=(
+        "Slider stroke H [mm]; with time_ratio_K, or give dimensions"))
     offset_e_mm: float = Field(gt=0, le=10000, description=(
         "Offset e of the slider guide from the crank pivot [mm]; must be below H·cot θ"))
+    dimensions: Optional[SliderDimensions] = Field(None, description=(
+        "Given dimensions (给定尺寸) instead of K and H: no synthesis; H, θ and K are computed "
+        "from them"))
+
+    @model_validator(mode="after")
+    def _one_form(self):
+        out = Problems(self)
+        if self.dimensions is None:
+            raise_missing(self, [n for n in ("time_ratio_K", "stroke_H_mm") if getattr(self, n) is None])
+        else:
+            for name in ("time_ratio_K", "stroke_H_mm"):
+                if getattr(self, name) is not None:
+                    out.add((name,), getattr(self, name),
+                            f"{name}: with dimensions given, H and K are computed from them; "
+                            f"remove {name} (or remove dimensions to design from K and H)",
+                            f"{name}：已给出 dimensions 时 H、K 由尺寸算出；应删去 {name}"
+                            "（或删去 dimensions，按 K、H 设计）")
+            dm = self.dimensions
+            if not dm.crank_mm + self.offset_e_mm < dm.rod_mm:
+                out.add(("dimensions", "rod_mm"), dm.rod_mm,
+                        f"dimensions.rod_mm = {dm.rod_mm:g}: the crank turns fully only with rod > "
+                        f"crank + e = {dm.crank_mm:g} + {self.offset_e_mm:g} = "
+                        f"{dm.crank_mm + self.offset_e_mm:g} mm",
+                        f"dimensions.rod_mm = {dm.rod_mm:g}：曲柄能整周转动须连杆 > 曲柄 + 偏距 = "
+                        f"{dm.crank_mm:g} + {self.offset_e_mm:g} = {dm.crank_mm + self.offset_e_mm:g} mm")
+        out.raise_any()
+        return self
 
 
 class ChartSettings(StrictModel):
@@ -72,6 +168,19 @@ class CompareDesign(StrictModel):
     frame_mm: float = Field(gt=0, le=100000, description="Frame l4 [mm]")
 
 
+class FourBarDimensions(StrictModel):
+    """The crank-rocker's link lengths as a data table gives them (给定尺寸)."""
+
+    crank_mm: float = Field(gt=0, le=100000, description="Crank l1 = AB [mm]")
+    coupler_mm: float = Field(gt=0, le=100000, description="Coupler l2 = BC [mm]")
+    rocker_mm: float = Field(gt=0, le=100000, description="Rocker l3 = CD [mm]")
+    frame_mm: float = Field(gt=0, le=100000, description="Frame l4 = AD [mm]")
+
+
+_REQUIREMENTS = ("time_ratio_K", "extreme_angle_deg", "rocker_swing_deg", "rocker_length_mm",
+                 "frame_length_mm")
+
+
 class CrankRockerBrief(StrictModel):
     """Crank-rocker (曲柄摇杆机构) synthesis from K and ψ, with the best transmission angle."""
 
@@ -82,8 +191,14 @@ class CrankRockerBrief(StrictModel):
         "γmin only approaches 90° − ψ/2 as the frame grows); give this or extreme_angle_deg"))
     extreme_angle_deg: Optional[float] = Field(None, gt=0, lt=90, description=(
         "Extreme-position angle θ (极位夹角) [°], 0 < θ < 90; give this or time_ratio_K"))
-    rocker_swing_deg: float = Field(gt=0, lt=180, description="Rocker swing ψ (摇杆摆角) [°]")
-    rocker_length_mm: float = Field(gt=0, le=100000, description="Rocker length l3 = CD [mm]")
+    rocker_swing_deg: Optional[float] = Field(None, gt=0, lt=180, description=(
+        "Rocker swing ψ (摇杆摆角) [°]; required unless dimensions are given"))
+    rocker_length_mm: Optional[float] = Field(None, gt=0, le=100000, description=(
+        "Rocker length l3 = CD [mm]; required unless dimensions are given"))
+    dimensions: Optional[FourBarDimensions] = Field(None, description=(
+        "Given dimensions (给定尺寸) l1 … l4 instead of K (or θ), ψ, l3 and the frame: no "
+        "synthesis of this linkage; θ, K, ψ and γmin are computed from the lengths, and the "
+        "optimum for the same θ, ψ and l3 is designed next to it"))
     frame_length_mm: Optional[float] = Field(None, gt=0, le=100000, description=(
         "Frame length l4 = AD [mm]: when given, also the textbook design with this frame"))
     crank_speed_rpm: Optional[float] = Field(None, gt=0, le=100000, description=(
@@ -103,8 +218,23 @@ class CrankRockerBrief(StrictModel):
         """Only the brief's own rules (closed form): whether the data admit the construction,
         the given frame, the slider-crank and the compared crank-rockers is asked once per
         run by :func:`mechdesign.machines.crank_rocker.stages.checks`."""
+        if self.dimensions is not None:
+            out = Problems(self)
+            for name in _REQUIREMENTS:
+                if getattr(self, name) is not None:
+                    out.add((name,), getattr(self, name),
+                            f"{name}: with dimensions given, θ, K, ψ and the lengths are computed "
+                            f"from them; remove {name} (or remove dimensions to design from K and ψ)",
+                            f"{name}：已给出 dimensions 时 θ、K、ψ 与杆长均由尺寸确定；应删去 {name}"
+                            "（或删去 dimensions，按 K、ψ 设计）")
+            dm = self.dimensions
+            crank_rocker_problems(out, ("dimensions",), dm.crank_mm, dm.coupler_mm, dm.rocker_mm,
+                                  dm.frame_mm, ("crank_mm", "coupler_mm", "rocker_mm", "frame_mm"))
+            out.raise_any()
+            return self
         if (self.time_ratio_K is None) == (self.extreme_angle_deg is None):
             raise ValueError("give exactly one of time_ratio_K and extreme_angle_deg")
+        raise_missing(self, [n for n in ("rocker_swing_deg", "rocker_length_mm") if getattr(self, n) is None])
         return self
 
     @property
@@ -122,6 +252,8 @@ class SliderParams:
     theta: float          # [rad]
     stroke: float         # [m]
     offset: float         # [m]
+    crank: float | None = None   # given dimensions [m] (None: designed from K, H, e)
+    rod: float | None = None
 
 
 @dataclass(frozen=True)
@@ -149,6 +281,7 @@ class CrankRockerParams:
     chart_points: int
     compare: tuple[CompareParams, ...]
     grid_points: int
+    given: fourbar.FourBar | None = None   # the brief's dimensions [m] (None: synthesis)
 
 
 def crank_rocker_to_si(b: CrankRockerBrief) -> CrankRockerParams:
@@ -156,17 +289,33 @@ def crank_rocker_to_si(b: CrankRockerBrief) -> CrankRockerParams:
     from ...core import fourbar
 
     mm = 1e-3
-    theta = b.theta_rad
+    given = None
+    if b.dimensions is not None:
+        dm = b.dimensions
+        given = fourbar.FourBar(dm.crank_mm * mm, dm.coupler_mm * mm, dm.rocker_mm * mm,
+                                dm.frame_mm * mm)
+        theta, swing = fourbar.crank_rocker_extremes(given)
+        rocker, frame = given.rocker, given.frame
+    else:
+        theta = b.theta_rad
+        swing = float(np.radians(b.rocker_swing_deg))
+        rocker = b.rocker_length_mm * mm
+        frame = None if b.frame_length_mm is None else b.frame_length_mm * mm
     K = b.time_ratio_K if b.time_ratio_K is not None else float((np.pi + theta) / (np.pi - theta))
     sc = b.slider_crank
-    slider = None if sc is None else SliderParams(
-        sc.time_ratio_K, float(_extreme_angle(sc.time_ratio_K)), sc.stroke_H_mm * mm,
-        sc.offset_e_mm * mm)
+    slider = None
+    if sc is not None and sc.dimensions is not None:
+        a, rod, e = sc.dimensions.crank_mm * mm, sc.dimensions.rod_mm * mm, sc.offset_e_mm * mm
+        H, th = slider_crank_extremes(a, rod, e)
+        slider = SliderParams(float((np.pi + th) / (np.pi - th)), th, H, e, a, rod)
+    elif sc is not None:
+        slider = SliderParams(sc.time_ratio_K, float(_extreme_angle(sc.time_ratio_K)),
+                              sc.stroke_H_mm * mm, sc.offset_e_mm * mm)
     speed = b.crank_speed_rpm
+    rocker_default = b.dimensions.rocker_mm if b.dimensions is not None else b.rocker_length_mm
     return CrankRockerParams(
-        theta=theta, K=float(K), K_given=b.time_ratio_K is not None,
-        swing=float(np.radians(b.rocker_swing_deg)), rocker=b.rocker_length_mm * mm,
-        frame=None if b.frame_length_mm is None else b.frame_length_mm * mm,
+        theta=float(theta), K=float(K), K_given=b.time_ratio_K is not None,
+        swing=float(swing), rocker=rocker, frame=frame,
         crank_speed_rpm=speed, omega=1.0 if speed is None else speed * 2.0 * np.pi / 60.0,
         gamma_allowed=float(np.radians(b.allowed_transmission_angle_deg)),
         slider=slider,
@@ -174,10 +323,21 @@ def crank_rocker_to_si(b: CrankRockerBrief) -> CrankRockerParams:
         chart_swing=(float(np.radians(b.chart.swing_deg[0])), float(np.radians(b.chart.swing_deg[1]))),
         chart_points=b.chart.points,
         compare=tuple(CompareParams(c.label, fourbar.FourBar(
-            c.crank_mm * mm, c.coupler_mm * mm, (c.rocker_mm or b.rocker_length_mm) * mm,
+            c.crank_mm * mm, c.coupler_mm * mm, (c.rocker_mm or rocker_default) * mm,
             c.frame_mm * mm)) for c in b.compare),
-        grid_points=b.simulation_points,
+        grid_points=b.simulation_points, given=given,
     )
+
+
+def slider_crank_extremes(crank: float, rod: float, offset: float) -> tuple[float, float]:
+    """(H, θ) of an offset slider-crank from its dimensions, closed form: the slider's
+    extremes are at the crank and rod extended (|s| = √((l+r)² − e²)) and folded
+    (√((l−r)² − e²)), so H is their difference and the crank lines make
+    θ = arcsin(e/(l − r)) − arcsin(e/(l + r))."""
+    r, l_, e = crank, rod, offset
+    H = np.sqrt((l_ + r) ** 2 - e * e) - np.sqrt((l_ - r) ** 2 - e * e)
+    theta = np.arcsin(e / (l_ - r)) - np.arcsin(e / (l_ + r))
+    return float(H), float(theta)
 
 
 def _extreme_angle(K: float) -> float:

@@ -333,14 +333,52 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
         d1, d2 = _gamma_eqs(tb.design)
         textbook = {
             "frame": _mm(p.frame, 2), "ac1": _mm(t1), "ac2": _mm(t2),
-            "t": _deg(tb.position, 3),
+            "t": "—" if tb.position is None else _deg(tb.position, 3),
             "l1": (rf"l_1 = \frac{{{_mm(t2)} - {_mm(t1)}}}{{2}} = {_mm(tb.design.crank)}\ \text{{mm}}"),
             "l2": (rf"l_2 = \frac{{{_mm(t2)} + {_mm(t1)}}}{{2}} = {_mm(tb.design.coupler)}\ \text{{mm}}"),
             "d1": d1, "d2": d2, "gamma_min": _deg(tb.gamma_min, 3),
             "kind": tb.grashof,
         }
+    given = None
+    if p.given is not None:
+        g = p.given
+        a, b, c, d = (x * MM for x in (g.crank, g.coupler, g.rocker, g.frame))
+
+        def ang(x, y, z):
+            return float(np.degrees(np.arccos(np.clip((x * x + y * y - z * z) / (2 * x * y), -1, 1))))
+        dac1, dac2 = ang(b - a, d, c), ang(b + a, d, c)
+        adc1, adc2 = ang(d, c, b - a), ang(d, c, b + a)
+        given = {
+            "l1": f(a, 4), "l2": f(b, 4), "l3": f(c, 4), "l4": f(d, 4),
+            "kind": tb.grashof if tb is not None else "",
+            "eq_dac": (rf"\angle DAC_1 = \arccos\frac{{(l_2 - l_1)^2 + l_4^2 - l_3^2}}{{2(l_2 - l_1)l_4}}"
+                       rf" = {f(dac1, 6)}^\circ"),
+            "eq_dac2": (rf"\angle DAC_2 = \arccos\frac{{(l_2 + l_1)^2 + "
+                        rf"l_4^2 - l_3^2}}{{2(l_2 + l_1)l_4}} = {f(dac2, 6)}^\circ"),
+            "eq_adc": (rf"\angle ADC_1 = \arccos\frac{{l_4^2 + l_3^2 - (l_2 - l_1)^2}}{{2l_4l_3}}"
+                       rf" = {f(adc1, 6)}^\circ,\quad \angle ADC_2 = {f(adc2, 6)}^\circ"),
+            "eq_theta": (rf"\theta = \lvert\angle DAC_1 - \angle DAC_2\rvert = {f(th_deg, 6)}^\circ,"
+                         rf"\qquad \psi = \angle ADC_2 - \angle ADC_1 = {_deg(p.swing, 6)}^\circ"),
+            "eq_K": (rf"K = \frac{{180^\circ + \theta}}{{180^\circ - \theta}} = {f(p.K, 6)}"),
+            "gamma_min": _deg(tb.gamma_min, 4) if tb is not None else "",
+        }
     # data table
-    if zh:
+    if given is not None:
+        sub = "（由尺寸导出）" if zh else " (derived)"
+        data_rows = [[s_, (n_zh if zh else n_en), v, u] for s_, n_zh, n_en, v, u in (
+            ("l1", "曲柄 AB（给定）", "crank AB (given)", given["l1"], "mm"),
+            ("l2", "连杆 BC（给定）", "coupler BC (given)", given["l2"], "mm"),
+            ("l3", "摇杆 CD（给定）", "rocker CD (given)", given["l3"], "mm"),
+            ("l4", "机架 AD（给定）", "frame AD (given)", given["l4"], "mm"),
+            ("θ", "极位夹角" + sub, "extreme-position angle" + sub, f(th_deg, 6), "°"),
+            ("K", "行程速比系数" + sub, "time ratio" + sub, f(p.K, 6), "—"),
+            ("ψ", "摇杆摆角" + sub, "rocker swing" + sub, _deg(p.swing, 6), "°"),
+            ("γmin", "最小传动角" + sub, "minimum transmission angle" + sub, given["gamma_min"], "°"),
+            ("[γ]", "许用最小传动角", "allowed minimum transmission angle", _deg(p.gamma_allowed, 0), "°"))]
+        if p.crank_speed_rpm is not None:
+            data_rows.append(["n1", "曲柄转速（仅用于运动线图）" if zh else "crank speed (motion curves only)",
+                              f(p.crank_speed_rpm, 1), "rpm"])
+    elif zh:
         data_rows = [["K", "行程速比系数", f(p.K, 4), "—"], ["θ", "极位夹角", f(th_deg, 4), "°"],
                      ["ψ", "摇杆摆角", _deg(p.swing, 2), "°"], ["l3", "摇杆长度 CD", _mm(p.rocker, 2), "mm"]]
         if p.frame is not None:
@@ -427,6 +465,12 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
             "eq_alpha_slow": (rf"\alpha_{{w}} = \max\Bigl(\arcsin\frac{{e}}{{b - a}},\ \arcsin\frac{{|a - e|}}{{b}}\Bigr)"
                               rf" = {_deg(sl.alpha_slow, 3)}^\circ"),
             "alpha_slow": _deg(sl.alpha_slow, 2), "alpha_fast": _deg(sl.alpha_fast, 2),
+            "given": p.slider.crank is not None,
+            "eq_H": (rf"H = \sqrt{{(b + a)^2 - e^2}} - \sqrt{{(b - a)^2 - e^2}} = {_mm(sl.stroke, 6)}"
+                     r"\ \text{mm}"),
+            "eq_th": (rf"\theta = \arcsin\frac{{e}}{{b - a}} - \arcsin\frac{{e}}{{b + a}} = "
+                      rf"{_deg(sl.theta, 6)}^\circ,\qquad K = \frac{{180^\circ + \theta}}{{180^\circ - \theta}}"
+                      rf" = {f(sl.K, 6)}"),
             "allowed": _deg(sl.alpha_allowed, 0),
         }
         for item_zh, item_en, val, ref, err in (
@@ -475,7 +519,7 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
                 "ac1": _mm(ac1), "ac2": _mm(ac2), "kind": best.grashof,
                 "far": None if far is None else _deg(far, 2), "where": where},
         "with_speed": p.crank_speed_rpm is not None,
-        "textbook": textbook,
+        "textbook": textbook, "given": given,
         "cmp_head": (["设计", "l1/mm", "l2/mm", "l3/mm", "l4/mm", "θ/°", "ψ/°", "K", "γmin/°"] if zh else
                      ["design", "l1/mm", "l2/mm", "l3/mm", "l4/mm", "θ/°", "ψ/°", "K", "γmin/°"]),
         "cmp_rows": cmp_rows + [spec_row], "cmp_align": "|".join([":--"] + ["--:"] * 8),

@@ -166,11 +166,34 @@ def textbook_stage(r: dict) -> Design:
     return _place("给定机架 / given frame", cons, pos, p.gamma_allowed)
 
 
+def given_stage(r: dict) -> Design:
+    """The brief's dimensions placed exactly (no synthesis) in the θ-circle construction of
+    the θ, ψ and l3 they have: D at the origin, A at the distance l4 from D and l2 − l1 from
+    C1 (law of cosines), on the side where AC2 = l2 + l1."""
+    p = r["params"]
+    g = p.given
+    cons = r["optimum"].construction
+    a, b, c, d = g.crank, g.coupler, g.rocker, g.frame
+    u = cons.c1 / abs(cons.c1)
+    cos_t = (d * d + c * c - (b - a) ** 2) / (2.0 * d * c)
+    t = np.arccos(np.clip(cos_t, -1.0, 1.0))
+    cands = [d * u * np.exp(1j * s * t) for s in (+1.0, -1.0)]
+    pivot = min(cands, key=lambda x: abs(abs(x - cons.c2) - (b + a)))
+    try:
+        pos = fb.position_for_frame(cons, d)
+    except fb.SynthesisError:
+        pos = None
+    return _describe("给定尺寸 / given dimensions", g, complex(pivot), pos, p.gamma_allowed)
+
+
 def slider_stage(r: dict) -> SliderResult:
     sp = r["params"].slider
     allowed = np.pi / 2.0 - r["params"].gamma_allowed
     cons = fb.slider_crank_construction(sp.K, sp.stroke, sp.offset)
-    a, b = fb.offset_slider_crank(sp.K, sp.stroke, sp.offset)
+    if sp.crank is not None:
+        a, b = sp.crank, sp.rod
+    else:
+        a, b = fb.offset_slider_crank(sp.K, sp.stroke, sp.offset)
     slow, fast = fb.slider_crank_pressure_angles(a, b, sp.offset)
     warnings = []
     if slow > allowed:
@@ -406,9 +429,12 @@ def checks(p, keep: dict | None = None) -> list:
     try:
         cons = fb.circle_construction_theta(p.theta, p.swing, p.rocker)
     except fb.SynthesisError as exc:
-        problem("rocker_swing_deg", "rocker_swing_deg", p.swing * DEG, exc)
+        if p.given is not None:
+            problem("dimensions", "ψ", p.swing * DEG, exc)
+        else:
+            problem("rocker_swing_deg", "rocker_swing_deg", p.swing * DEG, exc)
         cons = None
-    if cons is not None and p.frame is not None:
+    if cons is not None and p.frame is not None and p.given is None:
         try:
             fb.position_for_frame(cons, p.frame)
         except fb.SynthesisError as exc:
@@ -416,7 +442,10 @@ def checks(p, keep: dict | None = None) -> list:
     if p.slider is not None:
         sp = p.slider
         try:
-            fb.offset_slider_crank(sp.K, sp.stroke, sp.offset)
+            if sp.crank is None:
+                fb.offset_slider_crank(sp.K, sp.stroke, sp.offset)
+            else:
+                fb.slider_crank_construction(sp.K, sp.stroke, sp.offset)
         except fb.SynthesisError as exc:
             problem("slider_crank.offset_e_mm", "offset_e_mm", sp.offset * 1e3, exc)
     for i, cd in enumerate(p.compare):
@@ -435,7 +464,10 @@ def checks(p, keep: dict | None = None) -> list:
 def stages(params) -> list[Stage]:
     out = [Stage("optimum", "最小传动角最大的曲柄摇杆机构 / crank-rocker with the best transmission angle",
                  optimum_stage)]
-    if params.frame is not None:
+    if params.given is not None:
+        out.append(Stage("textbook", "给定尺寸 → 导出值 / given dimensions → derived values",
+                         given_stage))
+    elif params.frame is not None:
         out.append(Stage("textbook", "按 K 设计曲柄摇杆机构（给定机架）/ design from K with the given frame",
                          textbook_stage))
     if params.slider is not None:

@@ -12,22 +12,40 @@ from dataclasses import dataclass
 from typing import Annotated, Literal, Optional, Union
 
 from ...lazy import np
-from pydantic import Field
+from pydantic import Field, model_validator
 
-from ...brief.common import AnalysisSettings, ReportMeta, StrictModel
+from ...brief.common import AnalysisSettings, Problems, ReportMeta, StrictModel
 from ...brief.drive import DriveParams, DriveSection, drive_to_si
+
+
+class PusherDimensions(StrictModel):
+    """The crank-rocker O1A–AB–DB as a data table gives it (给定尺寸)."""
+
+    crank_O1A_mm: float = Field(gt=0, le=20000, description="Crank O1A = a [mm]")
+    coupler_AB_mm: float = Field(gt=0, le=20000, description="Coupler AB = b [mm]")
+    rocker_DB_mm: float = Field(gt=0, le=20000, description="Rocker from its pivot D to B, DB = c [mm] (≤ DC)")
+    frame_O1D_mm: float = Field(gt=0, le=20000, description="Frame O1D = d [mm]")
+
+
+_SYNTHESIS_ONLY = ("stroke_H_mm", "time_ratio_K", "rocker_ratio_DB_DC", "frame_O1D_mm")
 
 
 class PusherSection(StrictModel):
     """The pushing six-bar (执行机构): data of the task and the designer's free choices."""
 
-    stroke_H_mm: float = Field(gt=0, le=5000, description="Slider stroke H [mm]")
+    stroke_H_mm: Optional[float] = Field(None, gt=0, le=5000, description=(
+        "Slider stroke H [mm]; required unless dimensions are given"))
     strokes_per_min: float = Field(gt=0, le=600, description=(
         "Slider strokes per minute n [1/min] = crank speed [rpm] (one working and one return "
         "stroke per crank revolution)"))
-    time_ratio_K: float = Field(gt=1.0, lt=3.0, description=(
+    time_ratio_K: Optional[float] = Field(None, gt=1.0, lt=3.0, description=(
         "Time ratio K (行程速比系数) = working-stroke time / return-stroke time, 1 < K < 3 "
-        "(with K = 1 the criterion would put the crank pivot at infinity)"))
+        "(with K = 1 the criterion would put the crank pivot at infinity); required unless "
+        "dimensions are given"))
+    dimensions: Optional[PusherDimensions] = Field(None, description=(
+        "Given dimensions (给定尺寸) of the crank-rocker instead of H, K and the free choices "
+        "DB/DC and O1D: no synthesis; H = 2·DC·sin(ψ/2), K, θ, ψ and the transmission and "
+        "pressure angles are computed from them"))
     rocker_DC_mm: float = Field(gt=0, le=20000, description="Rocker length from its pivot D to C, DC [mm]")
     link_CE_mm: float = Field(gt=0, le=20000, description="Length of the link CE from the rocker to the slider [mm]")
     pressure_angle_max_deg: float = Field(gt=0, lt=90, description=(
@@ -54,6 +72,36 @@ class PusherSection(StrictModel):
         "over the working stroke, as the seed intended"))
     transmission_angle_min_deg: float = Field(40.0, gt=0, lt=90, description=(
         "Smallest acceptable transmission angle of the four-bar over the cycle [°] (textbook: 40)"))
+
+    @model_validator(mode="after")
+    def _one_form(self):
+        """Either the requirements (H, K) or the dimensions; closed-form checks of the
+        dimensions (Grashof, B on the rocker)."""
+        from ..crank_rocker.brief import crank_rocker_problems, raise_missing
+
+        out = Problems(self)
+        if self.dimensions is None:
+            raise_missing(self, [n for n in ("stroke_H_mm", "time_ratio_K") if getattr(self, n) is None])
+        else:
+            for name in _SYNTHESIS_ONLY:
+                if name in self.model_fields_set:
+                    out.add((name,), getattr(self, name),
+                            f"{name}: with dimensions given there is no synthesis, and H, K and the "
+                            f"lengths follow from the dimensions; remove {name} (or remove dimensions)",
+                            f"{name}：已给出 dimensions 时不作综合，H、K 与杆长均由尺寸确定；应删去 "
+                            f"{name}（或删去 dimensions）")
+            dm = self.dimensions
+            if dm.rocker_DB_mm > self.rocker_DC_mm:
+                out.add(("dimensions", "rocker_DB_mm"), dm.rocker_DB_mm,
+                        f"dimensions.rocker_DB_mm = {dm.rocker_DB_mm:g}: B lies on the rocker DC, so DB "
+                        f"must not exceed rocker_DC_mm = {self.rocker_DC_mm:g}",
+                        f"dimensions.rocker_DB_mm = {dm.rocker_DB_mm:g}：B 在摇杆 DC 上，DB 不能大于 "
+                        f"rocker_DC_mm = {self.rocker_DC_mm:g}")
+            crank_rocker_problems(out, ("dimensions",), dm.crank_O1A_mm, dm.coupler_AB_mm,
+                                  dm.rocker_DB_mm, dm.frame_O1D_mm,
+                                  ("crank_O1A_mm", "coupler_AB_mm", "rocker_DB_mm", "frame_O1D_mm"))
+        out.raise_any()
+        return self
 
 
 class FurnaceBrief(StrictModel):
@@ -86,6 +134,7 @@ class PusherParams:
     guide_offset: float         # [m]
     limit_rocker: bool
     transmission_angle_min: float  # [rad]
+    given: object = None        # core.fourbar.FourBar of the brief's dimensions [m] (None: synthesis)
 
 
 @dataclass(frozen=True)
@@ -100,16 +149,31 @@ class FurnaceParams:
 def pusher_to_si(s: PusherSection) -> PusherParams:
     mm = 1e-3
     sense = -1.0 if s.crank_rotation == "cw" else 1.0
+    given = None
+    if s.dimensions is not None:
+        # No synthesis: H and K are the dimensions' (law of cosines), exactly.
+        from ...core import fourbar
+
+        dm = s.dimensions
+        given = fourbar.FourBar(dm.crank_O1A_mm * mm, dm.coupler_AB_mm * mm, dm.rocker_DB_mm * mm,
+                                dm.frame_O1D_mm * mm)
+        theta, swing = fourbar.crank_rocker_extremes(given)
+        stroke = float(2.0 * s.rocker_DC_mm * mm * np.sin(swing / 2.0))
+        K = float((np.pi + theta) / (np.pi - theta))
+        ratio, frame = given.rocker / (s.rocker_DC_mm * mm), given.frame
+    else:
+        stroke, K = s.stroke_H_mm * mm, s.time_ratio_K
+        ratio = s.rocker_ratio_DB_DC
+        frame = None if s.frame_O1D_mm == "auto" else s.frame_O1D_mm * mm
     return PusherParams(
-        stroke=s.stroke_H_mm * mm, crank_speed_rpm=s.strokes_per_min,
-        crank_omega=sense * s.strokes_per_min * np.pi / 30.0, time_ratio_K=s.time_ratio_K,
+        stroke=stroke, crank_speed_rpm=s.strokes_per_min,
+        crank_omega=sense * s.strokes_per_min * np.pi / 30.0, time_ratio_K=K,
         rocker_DC=s.rocker_DC_mm * mm, link_CE=s.link_CE_mm * mm,
         pressure_angle_max=np.radians(s.pressure_angle_max_deg),
         working_force=s.working_force_N, return_force=s.return_force_N,
-        rocker_ratio=s.rocker_ratio_DB_DC,
-        frame=None if s.frame_O1D_mm == "auto" else s.frame_O1D_mm * mm,
+        rocker_ratio=ratio, frame=frame,
         guide_offset=s.guide_offset_mm * mm, limit_rocker=s.limit_rocker_pressure_angle,
-        transmission_angle_min=np.radians(s.transmission_angle_min_deg))
+        transmission_angle_min=np.radians(s.transmission_angle_min_deg), given=given)
 
 
 def furnace_to_si(b: FurnaceBrief) -> FurnaceParams:

@@ -177,11 +177,14 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
         ("clockwise" if syn.sense < 0 else "counter-clockwise")
     towards = "+x" if syn.working_direction > 0 else "−x"
 
+    given = pp.given is not None
+    sub = ("（由尺寸导出）" if zh else " (derived)") if given else ""
     data_rows = [
-        ["$H$", "滑块行程" if zh else "slider stroke", f(ps.stroke_H_mm, 0), "mm"],
+        ["$H$", ("滑块行程" if zh else "slider stroke") + sub, f(H, 6) if given else f(ps.stroke_H_mm, 0), "mm"],
         ["$n$", "滑块往复次数（曲柄转速）" if zh else "strokes per minute (crank speed)",
          f(ps.strokes_per_min, 0), "1/min"],
-        ["$K$", "行程速比系数" if zh else "time ratio", f(ps.time_ratio_K, 2), "—"],
+        ["$K$", ("行程速比系数" if zh else "time ratio") + sub,
+         f(pp.time_ratio_K, 6) if given else f(ps.time_ratio_K, 2), "—"],
         ["$l_{DC}$", "摇杆 DC" if zh else "rocker DC", f(ps.rocker_DC_mm, 0), "mm"],
         ["$l_{CE}$", "连杆 CE" if zh else "link CE", f(ps.link_CE_mm, 0), "mm"],
         ["$[\\alpha]$", "工作行程最大压力角" if zh else "largest pressure angle, working stroke",
@@ -191,6 +194,14 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
         ["$F_{r2}$", "回程阻力（含摩擦）" if zh else "return-stroke resistance (incl. friction)",
          f(ps.return_force_N, 0), "N"],
     ]
+    if given:
+        gd = ps.dimensions
+        data_rows[3:3] = [[sym, (nz if zh else ne) + ("（给定）" if zh else " (given)"), f(v, 3), "mm"]
+                          for sym, nz, ne, v in (
+                              ("$l_{O_1A}=a$", "曲柄", "crank", gd.crank_O1A_mm),
+                              ("$l_{AB}=b$", "连杆", "coupler", gd.coupler_AB_mm),
+                              ("$l_{DB}=c$", "摇杆（至 B）", "rocker (to B)", gd.rocker_DB_mm),
+                              ("$l_{O_1D}=d$", "机架", "frame", gd.frame_O1D_mm))]
     choice_rows = [
         ["曲柄转向" if zh else "crank rotation", sense,
          (f"工作行程（慢行程）推向 {towards}" if zh else f"the slow working stroke pushes towards {towards}")],
@@ -202,12 +213,31 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
          ("最大化全周期最小传动角 $\\gamma_{min}$，且工作行程中 B 点压力角不超过 $[\\alpha]$" if zh else
           "maximise $\\gamma_{min}$ over the cycle, the pressure angle at B within $[\\alpha]$ in the working stroke")
          if pp.frame is None else ("给定机架长" if zh else "frame given")],
+    ]
+    if given:
+        choice_rows = choice_rows[:1]
+    choice_rows += [
         ["$e$", f(pp.guide_offset * MM, 2) + " mm",
          ("导路相对 C 点圆弧弦高中点的偏移" if zh else "guide offset from the middle of the sagitta of C's arc")],
         ["$[\\gamma]$", f(ps.transmission_angle_min_deg, 0) + "°",
          ("全周期最小传动角的许用值" if zh else "smallest acceptable transmission angle")],
     ]
     cos_h = np.cos(syn.swing / 2)
+    given_eq = None
+    if given:
+        def ang(x, y, z):
+            return float(np.degrees(np.arccos(np.clip((x * x + y * y - z * z) / (2 * x * y), -1, 1))))
+        given_eq = {
+            "theta": (rf"\theta = \left\lvert\arccos\frac{{(b-a)^2 + d^2 - c^2}}{{2(b-a)d}} - "
+                      rf"\arccos\frac{{(b+a)^2 + d^2 - c^2}}{{2(b+a)d}}\right\rvert"),
+            "theta_n": (rf"\theta = \lvert {f(ang(b - a, d, c), 6)}° - {f(ang(b + a, d, c), 6)}°\rvert = "
+                        rf"{f(th, 6)}°"),
+            "psi": (rf"\psi = \arccos\frac{{d^2 + c^2 - (b+a)^2}}{{2dc}} - \arccos\frac{{d^2 + c^2 - (b-a)^2}}{{2dc}}"),
+            "psi_n": rf"\psi = {f(ang(d, c, b + a), 6)}° - {f(ang(d, c, b - a), 6)}° = {f(psi, 6)}°",
+            "K": rf"K = \frac{{180° + \theta}}{{180° - \theta}} = {f(pp.time_ratio_K, 6)}",
+            "H": (rf"H = 2\,l_{{DC}}\sin\frac{{\psi}}{{2}} = 2 \times {f(R, 3)} \times \sin {f(psi / 2, 6)}° = "
+                  rf"{f(H, 6)}\ \text{{mm}}"),
+        }
     eq = {
         "psi": (rf"\psi = 2\arcsin\frac{{H}}{{2\,l_{{DC}}}} = 2\arcsin\frac{{{f(H, 0)}}}{{2 \times {f(R, 0)}}}"
                 rf" = {f(psi, 4)}°"),
@@ -222,6 +252,7 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
         "band": (rf"\lvert e\rvert \le l_{{CE}}\sin[\alpha] - \frac{{f}}{{2}} = {f(L, 0)} \times \sin {f(lim, 0)}° - "
                  rf"{f(sag / 2, 3)} = {f(syn.guide_offset_max * MM, 2)}\ \text{{mm}}"),
         "db": (rf"l_{{DB}} = {f(pp.rocker_ratio, 3)}\,l_{{DC}} = {f(c, 2)}\ \text{{mm}}, \quad "
+               if not given else rf"l_{{DB}} = {f(c, 3)}\ \text{{mm}}, \quad "
                rf"B_1B_2 = 2\,l_{{DB}}\sin\frac{{\psi}}{{2}} = {f(chord, 3)}\ \text{{mm}}"),
         "radius": (rf"r_\theta = \frac{{B_1B_2}}{{2\sin\theta}} = \frac{{{f(chord, 3)}}}{{2\sin {f(th, 2)}°}}"
                    rf" = {f(chord / (2 * np.sin(syn.theta)), 3) if syn.theta > 0 else '∞'}\ \text{{mm}}"),
@@ -281,11 +312,11 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
          f(sd.eq3_lhs * DEG, 2) + "°", "180°", f((sd.eq3_lhs - np.pi) * DEG, 2) + "°"],
     ]
     seed_sim_rows = [
-        ["$K$", f(sd.time_ratio, 4), f(pp.time_ratio_K, 2)],
+        ["$K$", f(sd.time_ratio, 4), f(pp.time_ratio_K, 6 if given else 2)],
         ["$\\theta$ /°", f(sd.theta * DEG, 3), f(th, 3)],
         ["$\\psi$ /°", f(sd.swing * DEG, 3), f(psi, 3)],
         [("C 点弦长（≈ 滑块行程）/mm" if zh else "chord of C (≈ the stroke) / mm"),
-         f(sd.stroke_C * MM, 2), f(H, 0)],
+         f(sd.stroke_C * MM, 2), f(H, 6 if given else 0)],
         ["$\\gamma_{min}$ /°", f(sd.gamma_min * DEG, 2), "≥ " + f(syn.gamma_limit * DEG, 0)],
     ]
     side_txt = {
@@ -309,6 +340,14 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
                  f"On the other θ-circle the best $\\gamma_{{min}}$ is only {f(syn.gamma_other_side_free * DEG, 3)}°"
                  + (", and it cannot meet the limit at B" if syn.limit_rocker and syn.gamma_other_side == 0 else "")
                  + ".")
+    elif syn.criterion == "given":
+        crit = (f"尺寸由任务书给定，不作综合：O1 为以 D 为圆心、半径 d 与以 B1 为圆心、半径 b − a 的两圆交点，"
+                f"恰在 θ 圆上（同一 θ 圆上 $\\gamma_{{min}}$ 最大可达 {f(syn.gamma_unconstrained * DEG, 3)}°）。"
+                if zh else
+                f"the dimensions are the brief's, no synthesis: O1 is where the circle of radius d about D "
+                f"cuts the circle of radius b − a about B1, on the θ-circle (the best $\\gamma_{{min}}$ on the "
+                f"same θ-circle would be {f(syn.gamma_unconstrained * DEG, 3)}°).")
+        other = ""
     else:
         crit = ("机架长由设计任务给定，O1 为 θ 圆与以 D 为圆心、半径 d 的圆的交点。" if zh else
                 "the frame is given: O1 is where the circle of radius d about D cuts the θ-circle.")
@@ -333,9 +372,9 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
     tol = 1e-6
     verify_rows = [
         ["仿真行程（位置搜索）/mm" if zh else "simulated stroke (position search) / mm",
-         f(chk.stroke * MM, 6), f"H = {f(H, 0)}", _ok(abs(chk.stroke_error) <= tol * pp.stroke, zh)],
+         f(chk.stroke * MM, 6), f"H = {f(H, 6 if given else 0)}", _ok(abs(chk.stroke_error) <= tol * pp.stroke, zh)],
         ["仿真行程速比系数 K" if zh else "simulated time ratio K", f(chk.time_ratio, 6),
-         f(pp.time_ratio_K, 2), _ok(abs(chk.time_ratio - pp.time_ratio_K) <= tol, zh)],
+         f(pp.time_ratio_K, 6 if given else 2), _ok(abs(chk.time_ratio - pp.time_ratio_K) <= tol, zh)],
         ["工作行程 E 点最大压力角 /°" if zh else "largest pressure angle at E, working stroke / °",
          f(chk.alpha_E_work * DEG, 4), f"≤ {f(lim, 0)}（{f(syn.alpha_E * DEG, 4)}）" if zh else
          f"≤ {f(lim, 0)} ({f(syn.alpha_E * DEG, 4)})", _ok(chk.alpha_E_work <= syn.alpha_limit + 1e-9, zh)],
@@ -365,7 +404,8 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
         "seed_sim_rows": seed_sim_rows, "side": side_txt, "criterion": crit, "other_side": other,
         "sense": sense, "towards": towards, "linkage": lk, "torque_rows": torque_rows,
         "drive": drive, "verify_rows": verify_rows, "findings": findings,
-        "H": f(H, 0), "n": f(pp.crank_speed_rpm, 0), "K": f(pp.time_ratio_K, 2),
+        "H": f(H, 6 if given else 0), "n": f(pp.crank_speed_rpm, 0),
+        "K": f(pp.time_ratio_K, 6 if given else 2), "given": given_eq,
         "DC": f(R, 0), "CE": f(L, 0), "lim": f(lim, 0), "gam_lim": f(syn.gamma_limit * DEG, 0),
         "lim_B": f(90 - lim, 0), "limit_rocker": pp.limit_rocker,
         "gamma_min": f(syn.gamma_min * DEG, 3), "alpha_B": f(syn.alpha_B * DEG, 3),

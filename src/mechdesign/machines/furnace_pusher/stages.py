@@ -123,7 +123,7 @@ class PusherSynthesis:
     alpha_B: float              # 90° − gamma_work
     gamma_limit: float          # [γ] for the check
     limit_rocker: bool          # the limit also applies at B
-    criterion: str              # "max_gamma" | "frame"
+    criterion: str              # "max_gamma" | "frame" | "given" (the brief's dimensions)
     side: int                   # θ-circle: +1 (O1 on D's side of B1B2) or −1
     arc_position: float         # parameter of O1 on the θ-circle
     arc: tuple                  # (p_lo, p_hi) the allowed arc
@@ -154,7 +154,25 @@ def extremes_of(cons: fb.CircleConstruction, p):
     return o1, a, b, d, a_fold, a_ext, np.angle(-u1), np.angle(u2)
 
 
-def working_gamma(cons: fb.CircleConstruction, p) -> np.ndarray:
+def _place_given(design: fb.FourBar, circles: dict):
+    """(side, construction, extremes) of the brief's crank-rocker placed exactly: B1, B2 of
+    the construction (D at the origin), O1 at the distance d from D and b − a from B1 (law
+    of cosines), on the side where O1B2 = b + a; the extremes as :func:`extremes_of` gives
+    them, but with the given lengths."""
+    a, b, c, d = design.crank, design.coupler, design.rocker, design.frame
+    cons0 = next(cons for cons in circles.values() if cons is not None)
+    b1, b2 = cons0.c1, cons0.c2
+    t = np.arccos(np.clip((d * d + c * c - (b - a) ** 2) / (2.0 * d * c), -1.0, 1.0))
+    cands = [complex(d * b1 / abs(b1) * np.exp(1j * s * t)) for s in (+1.0, -1.0)]
+    o1 = min(cands, key=lambda x: abs(abs(x - b2) - (b + a)))
+    side = min((s for s in circles if circles[s] is not None),
+               key=lambda s: abs(abs(o1 - circles[s].centre) - circles[s].radius))
+    u1, u2 = (b1 - o1) / abs(b1 - o1), (b2 - o1) / abs(b2 - o1)
+    return side, circles[side], (o1, a, b, d, o1 - a * u1, o1 + a * u2, float(np.angle(-u1)),
+                                 float(np.angle(u2)))
+
+
+def working_gamma(cons: fb.CircleConstruction, p, exact=None) -> np.ndarray:
     """Minimum transmission angle over the working (slow) stroke [rad], closed form,
     vectorised over the arc parameter p.
 
@@ -164,7 +182,7 @@ def working_gamma(cons: fb.CircleConstruction, p) -> np.ndarray:
     between the extremes, 180° + θ whatever the sense of rotation — γ is therefore
     smallest at one of its ends or at a collinear position inside it.
     """
-    o1, a, b, d, a_fold, a_ext, ph_f, ph_e = extremes_of(cons, p)
+    o1, a, b, d, a_fold, a_ext, ph_f, ph_e = exact or extremes_of(cons, p)
     c = cons.rocker
     ccw = np.mod(ph_e - ph_f, TWO_PI)                # crank arc fold → ext, counter-clockwise
     start = np.where(ccw > np.pi, ph_f, ph_e)
@@ -250,14 +268,17 @@ def synthesize(pp: PusherParams) -> PusherSynthesis:
     """The six-bar from H, K, DC, CE and the pressure-angle limit (see the module text).
     Raises :class:`~mechdesign.core.fourbar.SynthesisError` naming the brief field to change."""
     H, R, L = pp.stroke, pp.rocker_DC, pp.link_CE
-    if not H < 2.0 * R:
+    if pp.given is not None:
+        theta, swing = fb.crank_rocker_extremes(pp.given)
+    if pp.given is None and not H < 2.0 * R:
         raise fb.SynthesisError(
             f"pusher.stroke_H_mm = {H * 1e3:g} mm needs a rocker DC longer than H/2: the chord of "
             f"C's arc cannot exceed 2·DC = {2 * R * 1e3:g} mm (pusher.rocker_DC_mm)",
             f"pusher.stroke_H_mm = {H * 1e3:g} mm 要求摇杆 DC 长于 H/2：C 点圆弧的弦长不能超过 "
             f"2·DC = {2 * R * 1e3:g} mm（pusher.rocker_DC_mm）")
-    swing = 2.0 * np.arcsin(H / (2.0 * R))
-    theta = float(extreme_angle(pp.time_ratio_K))
+    if pp.given is None:
+        swing = 2.0 * np.arcsin(H / (2.0 * R))
+        theta = float(extreme_angle(pp.time_ratio_K))
     sag = R * (1.0 - np.cos(swing / 2.0))
     off_max = L * np.sin(pp.pressure_angle_max) - sag / 2.0
     if off_max < 0.0:
@@ -276,10 +297,21 @@ def synthesize(pp: PusherParams) -> PusherSynthesis:
             f"pusher.guide_offset_mm = {pp.guide_offset * 1e3:g} mm 使 E 点压力角超过 "
             f"{np.degrees(pp.pressure_angle_max):g}°：允许 |偏距| ≤ {off_max * 1e3:.4g} mm"
             f"（CE·sin[α] − f/2，弓高 f = {sag * 1e3:.4g} mm）")
-    c = pp.rocker_ratio * R
+    c = pp.rocker_ratio * R if pp.given is None else pp.given.rocker
     limit = (np.pi / 2 - pp.pressure_angle_max) if pp.limit_rocker else None
     circles = {s: _circle(theta, swing, c, s) for s in (+1, -1)}
-    if pp.frame is not None:
+    exact = None
+    if pp.given is not None:
+        if all(cons is None for cons in circles.values()):
+            raise fb.SynthesisError(
+                f"pusher.dimensions = {pp.given}: θ = {np.degrees(theta):.6g}°, ψ = "
+                f"{np.degrees(swing):.6g}° admit no θ-circle construction",
+                f"pusher.dimensions：θ = {np.degrees(theta):.6g}°、ψ = {np.degrees(swing):.6g}° 无法作 θ 圆")
+        side, cons, exact = _place_given(pp.given, circles)
+        p = cons.position_of(exact[0])
+        criterion, active = "given", False
+        g_free = _best_on_circle(cons, None)[1]
+    elif pp.frame is not None:
         side = p = None
         ranges = []
         for s, cons in circles.items():
@@ -335,7 +367,7 @@ def synthesize(pp: PusherParams) -> PusherSynthesis:
         g_other = _best_on_circle(other, limit)[1]
         g_other_free = _best_on_circle(other, None)[1]
     o1, a, b, d, a_fold, a_ext, ph_f, ph_e = (complex(x) if np.iscomplexobj(x) else float(x)
-                                              for x in extremes_of(cons, p))
+                                              for x in (exact or extremes_of(cons, p)))
     sense = float(np.sign(pp.crank_omega))
     # Working (slow) stroke: fold → ext when that arc in the sense of rotation exceeds π.
     fold_to_ext = np.mod(sense * (ph_e - ph_f), TWO_PI) > np.pi
@@ -351,7 +383,7 @@ def synthesize(pp: PusherParams) -> PusherSynthesis:
 
     E1, E2 = slider(start_C), slider(end_C)
     g_min, g_max = fb.transmission_angle_extremes(fb.FourBar(a, b, c, d))
-    g_work = float(working_gamma(cons, p))
+    g_work = float(working_gamma(cons, p, exact))
     alpha_E = float(np.arcsin((sag / 2.0 + abs(pp.guide_offset)) / L))
     chord = abs(B2 - B1)
     residuals = (
@@ -366,6 +398,13 @@ def synthesize(pp: PusherParams) -> PusherSynthesis:
          abs(np.angle((B2 - o1) / (B1 - o1))) - theta),
         ("K", r"\frac{180°+\theta}{180°-\theta} - K",
          (np.pi + theta) / (np.pi - theta) - pp.time_ratio_K),
+    ) if pp.given is None else (
+        ("stroke", r"\lvert E_1E_2\rvert - 2\,l_{DC}\sin(\psi/2)", (abs(E2 - E1) - H) / H),
+        ("chord", r"B_1B_2 - 2\,l_{DB}\sin(\psi/2)", (chord - 2 * c * np.sin(swing / 2)) / c),
+        ("folded", r"O_1B_1 - (b-a)", (abs(B1 - o1) - (b - a)) / b),
+        ("extended", r"O_1B_2 - (b+a)", (abs(B2 - o1) - (b + a)) / b),
+        ("frame", r"O_1D - d", (abs(o1) - d) / d),
+        ("theta", r"\angle B_1O_1B_2 - \theta", abs(np.angle((B2 - o1) / (B1 - o1))) - theta),
     )
     span = cons.p_hi - cons.p_lo
     ps = cons.p_lo + span * np.linspace(0.002, 0.998, 241)
@@ -574,7 +613,8 @@ class PusherSynthesisDoc:
     alpha_B: float = q("rad", "pressure angle at B in the working stroke, 90° − gamma_work")
     gamma_limit: float = q("rad", "[γ] for the check")
     limit_rocker: bool = q("", "the limit [α] also applies at B")
-    criterion: str = q("", "'max_gamma' (O1 placed for the largest γ_min) or 'frame' (given O1D)")
+    criterion: str = q("", "'max_gamma' (O1 placed for the largest γ_min), 'frame' (given O1D) or "
+                       "'given' (the brief's dimensions, no synthesis)")
     side: int = q("1", "θ-circle: +1 (O1 on D's side of B1B2) or −1")
     arc_position: float = q("rad", "parameter of O1 on the θ-circle (angle at its centre)")
     arc: tuple[float, float] = q("rad", "(p_lo, p_hi), the allowed arc")
