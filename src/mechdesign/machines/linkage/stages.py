@@ -6,7 +6,8 @@ from dataclasses import dataclass
 
 from ...core.fields import q
 from ...pipeline import Stage
-from ...stages.linkage import LinkageDocument, linkage_document, linkage_stages, motion
+from ...stages.linkage import (LinkageDocument, linkage_document, linkage_stages, motion,
+                               requests_of)
 
 
 # ---------------------------------------------------------------- the `linkage` machine
@@ -52,7 +53,7 @@ def _motion_of_brief(r: dict):
     from ...core.mechanism import AssemblyError
 
     try:
-        return motion(r["params"])
+        return motion(r["params"], requests_of(r.get("brief")))
     except AssemblyError as exc:
         brief = r.get("brief")
         en, zh = ("", "") if brief is None else brief_fields(brief.linkage, exc.group, exc.code)
