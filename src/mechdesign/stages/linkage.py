@@ -82,7 +82,10 @@ class LinkageModel:
     transmission_angle_min: float | None = None  # [rad], checked over the whole cycle
     names: dict = field(default_factory=dict)    # link id → (name_zh, name_en), optional
     advice: dict = field(default_factory=dict)   # "pressure"/"transmission" → (zh, en): the
-    #                                              brief fields to change, added to the finding
+    #                                              brief fields to change, added to the finding;
+    #                                              "time_ratio" → (zh, en, field): K < 1 (the
+    #                                              crank turning against the quick return) is
+    #                                              then a finding saying what to change
 
     @property
     def crank(self) -> Crank:
@@ -531,6 +534,19 @@ def quality_findings(model: LinkageModel, k: LinkageMotion) -> list[Finding]:
         zh, en = model.advice.get(kind, ("", ""))
         return (f"（{zh}）" if zh else ""), (f" ({en})" if en else "")
 
+    if "time_ratio" in model.advice and k.time_ratio < 1.0 - 1e-9:
+        # The working stroke is the faster one: the crank turns against the quick return.
+        zh, en, where = model.advice["time_ratio"]
+        theta = np.pi * (k.time_ratio - 1.0) / (k.time_ratio + 1.0) * deg
+        work, back = k.working_span * deg, 360.0 - k.working_span * deg
+        found.append(Finding(
+            "crank_sense_reversed",
+            f"行程速比系数 K = {k.time_ratio:.4f} < 1（极位夹角 θ = {theta:.2f}° < 0）：工作行程只占曲柄转角 "
+            f"{work:.2f}°，空回行程占 {back:.2f}°，曲柄转向与急回方向相反；{zh}",
+            f"time ratio K = {k.time_ratio:.4f} < 1 (extreme-position angle θ = {theta:.2f}° < 0): the "
+            f"working stroke takes {work:.2f}° of crank angle and the return {back:.2f}°, so the crank "
+            f"turns against the working stroke's sense (no quick return); {en}",
+            where))
     for qa in k.quality:
         if qa.kind == "pressure" and model.pressure_angle_limit is not None \
                 and qa.working_extreme > model.pressure_angle_limit + 1e-9:
