@@ -174,7 +174,9 @@ def test_pressure_angle_limit_is_reported():
     data = slider_crank(100, 180, 30, pressure_angle_max_deg=30)
     r = run(data)
     codes = [w.code for w in r["linkage_verification"].warnings]
-    assert codes == ["pressure_angle"]
+    # the offset slider-crank turning CCW makes its working (increasing) stroke the fast one:
+    # K < 1 is named too (issue 18, point 7)
+    assert codes == ["crank_sense_reversed", "pressure_angle"]
     assert run(slider_crank(20, 400, 0, pressure_angle_max_deg=30))["linkage_verification"].warnings == ()
 
 

@@ -31,6 +31,7 @@ EXPECTED = {
     "furnace_drive": [],     # drive only
     "furnace_pusher": ["analysis_A1"],  # the six-bar's analysis sheet
     "linkage_sixbar": ["analysis_A1"],  # generic linkage: its analysis sheet
+    "textbook_guide_bar": ["analysis_A1"],  # a textbook exercise as a linkage brief
     "die_cutter": ["analysis_A1", "cam_A2"],  # the toggle press and the gripper cam
     "slotter": ["analysis_A1", "cam_A2", "gear_A2"],  # the guide-bar six-bar, its cam and gear pair
 }

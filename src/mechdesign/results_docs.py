@@ -127,6 +127,17 @@ def markdown() -> str:
             text = ' '.join(meaning.split()).replace('|', '\\|')
             lines.append(f"| `{path}` | {_unit_cell(unit)} | {text} |")
         lines.append("")
+    from .stages.linkage import AnalysisRequests
+
+    lines += ["## Every linkage machine: `analysis_requests`", "",
+              "Present when the brief's `analysis` section asks for positions by crank angle "
+              "(`positions_deg`), by event (`events`) or for named points (`points`). "
+              + " ".join((AnalysisRequests.__doc__ or "").split()), "",
+              "| key | unit | meaning |", "|---|---|---|"]
+    for path, unit, meaning, _tp in rows(AnalysisRequests, "analysis_requests."):
+        text = ' '.join(meaning.split()).replace('|', '\\|')
+        lines.append(f"| `{path}` | {_unit_cell(unit)} | {text} |")
+    lines.append("")
     return "\n".join(lines)
 
 

@@ -179,6 +179,9 @@ def run_one(brief: Path, *, out_dir: Path | None = None, lang: str | None = None
     from .results import to_plain
 
     document = _with_group(to_plain(machine.document(results)), label)
+    requested = _requests_document(results)
+    if requested is not None:
+        document["analysis_requests"] = to_plain(requested)
 
     animate = None
     if "gif" in formats:
@@ -190,8 +193,9 @@ def run_one(brief: Path, *, out_dir: Path | None = None, lang: str | None = None
     try:
         written = write_report(
             Path(out_dir), machine=machine.name, lang=language, formats=formats,
-            make_figures=lambda d: report.make_figures(results, d, language),
-            make_context=lambda figs: report.context(results, b, figs, language),
+            make_figures=lambda d: _with_requested_figures(report, results, d, language),
+            make_context=lambda figs: _with_requested(report.context(results, b, figs, language),
+                                                      results, b, figs, language),
             document=document, meta=b.report,
             templates=templates, progress=render_progress, group=label,
             make_sheets=lambda folder, figs: make_sheets(results, b, folder, figs, language,
@@ -226,6 +230,31 @@ def feasibility(machine, params, variant) -> tuple[list, dict]:
         return [], checked
     problems = machine.checks(params, checked)
     return located_problems(problems, variant.brief, variant.located), checked
+
+
+def _requests_document(results: dict):
+    """The brief's analysis requests (positions by angle and event, named points) of the
+    run's linkage, for results.json (every linkage machine), or None."""
+    from .render.sheets import linkage_results
+    from .stages.linkage import requests_document
+
+    found = linkage_results(results)
+    return None if found is None else requests_document(found.motion)
+
+
+def _with_requested_figures(report, results: dict, fig_dir, lang: str) -> dict:
+    from .render.requests_report import requests_figures
+
+    figures = report.make_figures(results, fig_dir, lang)
+    return {**figures, **requests_figures(results, fig_dir, lang)}
+
+
+def _with_requested(context: dict, results: dict, brief, figures: dict, lang: str) -> dict:
+    """A machine's template context plus ``requested`` (the shared requests section)."""
+    from .render.requests_report import requests_context
+
+    found = requests_context(results, brief, figures, lang)
+    return context if found is None else {**context, "requested": found}
 
 
 def _with_group(document: dict, label: str | None) -> dict:

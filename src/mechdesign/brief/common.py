@@ -9,7 +9,7 @@ from __future__ import annotations
 import datetime as _dt
 import re
 from fractions import Fraction
-from typing import Literal, Optional
+from typing import Annotated, Literal, Optional, Union
 
 from pydantic import BaseModel, ConfigDict, Field, field_validator
 
@@ -101,23 +101,93 @@ class ReportMeta(StrictModel):
         return value
 
 
+#: The positions a brief may name by event (``analysis.events``): code → (中文, English).
+#: ``link_vertical:<link>`` and ``link_horizontal:<link>`` name a link by its id.
+EVENTS = {
+    "work_start": ("工作阻力开始（如切削开始）",
+                   "start of the working resistance (e.g. cutting starts)"),
+    "work_end": ("工作阻力结束（如切削结束）", "end of the working resistance (e.g. cutting ends)"),
+    "max_velocity_working": ("工作行程输出速度最大", "largest output speed in the working stroke"),
+    "max_velocity_return": ("空回行程输出速度最大", "largest output speed in the return stroke"),
+    "link_vertical:<link>": ("构件 <link> 竖直", "link <link> vertical"),
+    "link_horizontal:<link>": ("构件 <link> 水平", "link <link> horizontal"),
+}
+_EVENT = re.compile(r"^(work_start|work_end|max_velocity_working|max_velocity_return|"
+                    r"link_(?:vertical|horizontal):[A-Za-z0-9_]{1,8})$")
+_POINT = re.compile(r"^[A-Za-z][A-Za-z0-9_']{0,15}$")
+
+
+def event_name(code: str, lang: str) -> str:
+    """The event's name in ``lang`` ("zh" or "en")."""
+    base, _, link = code.partition(":")
+    zh, en = EVENTS.get(base + (":<link>" if link else ""), (code, code))
+    return (zh if lang == "zh" else en).replace("<link>", link)
+
+
+def angle_label(value: float) -> str:
+    """The label of a position asked for by its crank angle (``analysis.positions_deg``)."""
+    return f"φ{value:g}"
+
+
 class AnalysisSettings(StrictModel):
-    """Numerical settings of the analysis."""
+    """Numerical settings of the analysis, and the extra positions and points to analyse."""
 
     grid_points: int = Field(3600, ge=36, le=100_000,
                              description="Crank positions per revolution on the fine grid (count)")
     position_step_deg: float = Field(30.0, gt=0, le=90,
                                      description="Spacing of the textbook positions [°]")
     gravity: float = Field(9.81, gt=0, le=20, description="Gravitational acceleration g [m/s²]")
+    positions_deg: list[Annotated[float, Field(ge=-360, le=360)]] = Field(
+        default_factory=list, max_length=24, description=(
+            "Extra positions by crank angle φ [°], each analysed like the regular ones (tables, "
+            "forces, polygons); labelled φ45 etc. φ is the report's crank angle: measured from "
+            "position 1 (the output's extreme position that starts the working stroke) in the "
+            "crank's sense of rotation; with positions_from: x_axis, the crank's direction "
+            "measured counter-clockwise from the +x axis of the frame coordinates instead"))
+    positions_from: Literal["position_1", "x_axis"] = Field("position_1", description=(
+        "What positions_deg is measured from: position_1 (the report's φ, in the sense of "
+        "rotation) or x_axis (the crank's direction, counter-clockwise from +x, as textbook "
+        "exercises give φ1)"))
+    events: list[str] = Field(default_factory=list, max_length=12, description=(
+        "Extra positions by event, found exactly (root finding) and labelled as the course "
+        "does (the regular position before it, primed: 1′, 7′): " + "; ".join(
+            f"{code} ({zh} / {en})" for code, (zh, en) in EVENTS.items())))
+    points: list[str] = Field(default_factory=list, max_length=12, description=(
+        "Named points (any point of the linkage, incl. centres of mass) whose velocity and "
+        "acceleration (magnitude and direction) the report tabulates at every position and "
+        "plots over the cycle"))
+
+    @field_validator("events")
+    @classmethod
+    def _events(cls, value):
+        for code in value:
+            if not _EVENT.match(code):
+                raise ValueError(
+                    f"unknown event {code!r}; allowed: {', '.join(EVENTS)} (e.g. link_vertical:4)")
+        if len(set(value)) != len(value):
+            raise ValueError("each event once")
+        return value
+
+    @field_validator("points")
+    @classmethod
+    def _points(cls, value):
+        for name in value:
+            if not _POINT.match(name):
+                raise ValueError(f"{name!r} is not a point name (a letter, then letters, digits, _ or ')")
+        if len(set(value)) != len(value):
+            raise ValueError("each point once")
+        return value
 
 
 class SheetSettings(StrictModel):
     """Drawing sheets (图纸) written with the report (PDF with --format pdf, DXF with dxf)."""
 
-    polygon_positions: Optional[list[int]] = Field(
+    polygon_positions: Optional[list[Union[int, str]]] = Field(
         None, min_length=2, max_length=2,
-        description=("Two regular crank positions (1, 2, …) whose velocity, acceleration and force "
-                     "polygons the A1 sheet draws; default: the positions nearest the middle of the "
-                     "working and of the return stroke"))
+        description=("Two crank positions whose velocity, acceleration and force polygons the A1 "
+                     "sheet draws: a regular position (1, 2, …), or a position label of the report "
+                     "as text ('4′' or \"4'\", 'φ45' for analysis.positions_deg: [45]) or an event "
+                     "of analysis.events ('work_start'); default: the regular positions nearest "
+                     "the middle of the working and of the return stroke"))
     drawing_number: str = Field("MD", max_length=40,
                                 description="Prefix of the drawing numbers (图号), e.g. MD → MD-01")

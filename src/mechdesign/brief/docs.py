@@ -60,7 +60,9 @@ def _rows(model: type[BaseModel], prefix: str):
             yield f"| **{path}** | {what} | | {sub.__doc__.strip().splitlines()[0]} |"
             yield from _rows(sub, path + ("[].") if many else path + ".")
         else:
-            default = "required" if info.is_required() else f"`{info.default}`"
+            default = ("required" if info.is_required() else
+                       f"`{info.default_factory()}`" if info.default_factory is not None
+                       else f"`{info.default}`")
             desc = (info.description or "").replace("|", "\\|")
             allowed = _allowed(info)
             yield f"| `{path}` | {default} | {allowed} | {desc} |"

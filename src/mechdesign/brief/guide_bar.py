@@ -102,7 +102,7 @@ class GuideBarBrief(StrictModel):
             step = self.analysis.position_step_deg
             count = int(round(360.0 / step))
             for i, p in enumerate(chosen):
-                if not 1 <= p <= count:
+                if isinstance(p, int) and not 1 <= p <= count:   # a label: checked at run time
                     out.add(("sheets", "polygon_positions", i), p,
                             f"{p} is not a position: with analysis.position_step_deg = {step:g} the "
                             f"positions are 1 … {count}",

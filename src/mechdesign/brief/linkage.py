@@ -278,6 +278,42 @@ def check_references(s: LinkageSection) -> dict[str, list[str]]:
     return members
 
 
+def point_names(s: LinkageSection) -> list[str]:
+    """Every point of the section's linkage in definition order (frame points, the crank
+    pin, the groups' new points), read from the data alone."""
+    names = list(s.frame_points_mm) + [s.crank.tip]
+    for g in s.groups:
+        names += [p for p in _group_io(g)[1] if p not in names]
+    return names
+
+
+def link_ids(s: LinkageSection) -> list[str]:
+    """The moving links' ids (the crank first)."""
+    out = [s.crank.link]
+    for g in s.groups:
+        out += [link for link, _ in _group_io(g)[2] if link not in out]
+    return out
+
+
+def check_requests(s: LinkageSection, analysis: AnalysisSettings, out, prefix: str = "analysis"
+                   ) -> None:
+    """The analysis section's named points and link events against the linkage's data:
+    each problem added to ``out`` (:class:`~.common.Problems`) at its field."""
+    points = point_names(s)
+    for i, name in enumerate(analysis.points):
+        if name not in points:
+            out.add((prefix, "points", i), name,
+                    f"{name!r} is not a point of the linkage; its points: {', '.join(points)}",
+                    f"{name!r} 不是机构上的点；机构上的点：{'、'.join(points)}")
+    links = link_ids(s)
+    for i, code in enumerate(analysis.events):
+        link = code.partition(":")[2]
+        if link and link not in links:
+            out.add((prefix, "events", i), code,
+                    f"link {link!r} is not a moving link; links: {', '.join(links)}",
+                    f"构件 {link!r} 不是活动构件；活动构件：{'、'.join(links)}")
+
+
 def linkage_to_model(s: LinkageSection, analysis: AnalysisSettings, names: dict | None = None):
     """The SI linkage model (m, rad, rad/s, kg, N) of the section: the only conversion."""
     from ..core.kinetostatics import Body

@@ -42,14 +42,14 @@ def synthesis_doc(syn: Synthesis) -> GuideBarSynthesisDoc:
                                 d.rod, d.guide_height, d.bar_com, syn.guide_height_above_O2)
 
 
-def motion(model, syn: Synthesis, rod_ratio: float, field: str):
+def motion(model, syn: Synthesis, rod_ratio: float, field: str, requests=None):
     """The engine's motion stage; an assembly failure names the brief's rod-ratio field: the
     rod must bridge half the sagitta of B's arc, L_rod ≥ L_O3B(1 − cos(ψ/2))/2."""
     from ..core.mechanism import AssemblyError
     from .linkage import motion as engine_motion
 
     try:
-        return engine_motion(model)
+        return engine_motion(model, requests)
     except AssemblyError as exc:
         need = (1.0 - np.cos(syn.design.swing_angle / 2.0)) / 2.0
         raise exc.with_hint(

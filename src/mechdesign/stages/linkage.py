@@ -23,10 +23,11 @@ import numpy as np
 
 from ..core.kinetostatics import Body, PointLoad, power_residual, solve_forces
 from ..core.mechanism import RRR, Crank, Mechanism, Motion
-from ..core.extremes import grid_roots, refine_extreme
+from ..core.errors import DesignError
+from ..core.extremes import brentq, grid_roots, refine_extreme
 from ..core.fields import q
 from .findings import Finding
-from .positions import Positions, textbook_positions
+from .positions import Positions, textbook_positions, with_requested
 from ..pipeline import Stage
 from .flywheel import Flywheel, FlywheelSpec, design_flywheel
 from .polygons import polygon_stage
@@ -81,7 +82,10 @@ class LinkageModel:
     transmission_angle_min: float | None = None  # [rad], checked over the whole cycle
     names: dict = field(default_factory=dict)    # link id → (name_zh, name_en), optional
     advice: dict = field(default_factory=dict)   # "pressure"/"transmission" → (zh, en): the
-    #                                              brief fields to change, added to the finding
+    #                                              brief fields to change, added to the finding;
+    #                                              "time_ratio" → (zh, en, field): K < 1 (the
+    #                                              crank turning against the quick return) is
+    #                                              then a finding saying what to change
 
     @property
     def crank(self) -> Crank:
@@ -129,6 +133,11 @@ class LinkageMotion:
     link_alpha: dict = q("rad/s²", "link → α")
     quality: tuple[QualityAngle, ...] = q("")
     grid_size: int = q("1", "entries of the uniform grid before the positions")
+    requested: dict = q("", "what the brief asked for (φ45, an event code) → position label",
+                        default_factory=dict)
+    point_vel: dict = q("m/s", "named point (analysis.points) → complex velocity",
+                        default_factory=dict)
+    point_acc: dict = q("m/s²", "named point → complex acceleration", default_factory=dict)
 
 
 @dataclass(frozen=True)
@@ -241,13 +250,116 @@ def _quality(model: LinkageModel, m: Motion, phase: np.ndarray, working_span: fl
     return tuple(out)
 
 
-def motion(model: LinkageModel) -> tuple[LinkageMotion, Motion]:
-    """Solve the revolution; position 1 is the output extreme that starts the working stroke."""
+@dataclass(frozen=True)
+class Requests:
+    """The extra positions and points a brief asks for (``analysis`` section): crank angles
+    [rad] with their labels (φ from position 1 in the sense of rotation, or the crank's
+    direction CCW from +x), event codes (:data:`mechdesign.brief.common.EVENTS`), points."""
+
+    angles: tuple = ()
+    labels: tuple = ()
+    from_x_axis: bool = False
+    events: tuple = ()
+    points: tuple = ()
+
+
+def requests_of(brief) -> Requests | None:
+    """The brief's requests (its ``analysis`` section), or None when it asks for nothing."""
+    a = getattr(brief, "analysis", None)
+    if a is None or not (getattr(a, "positions_deg", None) or getattr(a, "events", None)
+                         or getattr(a, "points", None)):
+        return None
+    from ..brief.common import angle_label
+
+    return Requests(tuple(float(np.radians(x)) for x in a.positions_deg),
+                    tuple(angle_label(x) for x in a.positions_deg),
+                    a.positions_from == "x_axis", tuple(a.events), tuple(a.points))
+
+
+def _roots(fun, lo: float, hi: float, count: int = 720) -> list[float]:
+    """Zeros of ``fun`` on (lo, hi): Brent's method between samples that change sign."""
+    x = np.linspace(lo, hi, count + 1)
+    y = [fun(float(t)) for t in x]
+    out = []
+    for i in range(count):
+        if y[i] == 0.0 and 0 < i:
+            out.append(float(x[i]))
+        elif y[i] * y[i + 1] < 0:
+            out.append(brentq(fun, float(x[i]), float(x[i + 1]), xtol=1e-15))
+    return out
+
+
+def event_phases(model: LinkageModel, code: str, start: float, sense: float, span: float,
+                 s0: float, ref) -> list[float]:
+    """Crank phases [rad from position 1] of the event ``code``, found exactly."""
+    w = float(model.output.working)
+
+    def at(phase: float) -> Motion:
+        return model.mechanism.solve(np.array([start + sense * phase]))
+
+    def out(phase: float):
+        raw, v, a = _output_coordinate(model, at(phase), ref)
+        return w * (float(raw[0]) - s0), w * float(v[0]), w * float(a[0])
+
+    if code in ("work_start", "work_end"):
+        window = next((r.active for r in model.resistances if r.active is not None), None)
+        if window is None:          # the resistance acts over the whole working stroke
+            return [0.0 if code == "work_start" else span]
+        target = window[0] if code == "work_start" else window[1]
+        found = _roots(lambda p: out(p)[0] - target, 0.0, span)
+        return found[:1] if code == "work_start" else found[-1:]
+    if code.startswith("max_velocity"):
+        working = code.endswith("working")
+        lo, hi = (0.0, span) if working else (span, TWO_PI)
+        found = _roots(lambda p: out(p)[2], lo, hi)
+        if not found:
+            return []
+        return [max(found, key=lambda p: abs(out(p)[1]))]
+    kind, _, link = code.partition(":")
+    links = model.mechanism.solve(np.array([start])).links
+    if link not in links:
+        raise DesignError(
+            f"analysis.events: {code!r}: link {link!r} is not a moving link; links: "
+            f"{', '.join(links)}",
+            f"analysis.events：{code!r}：构件 {link!r} 不是活动构件；活动构件：{', '.join(links)}")
+    trig = np.cos if kind == "link_vertical" else np.sin
+    return _roots(lambda p: float(trig(at(p).links[link].angle[0])), 0.0, TWO_PI)
+
+
+def _requested(model: LinkageModel, req: Requests, start: float, sense: float, span: float,
+               s0: float, ref) -> list:
+    """(phase, label or None, key) of every requested position."""
+    extra = []
+    for angle, label in zip(req.angles, req.labels):
+        phase = sense * (angle - start) if req.from_x_axis else angle
+        extra.append((phase % TWO_PI, label, label))
+    from ..brief.common import event_name
+
+    for code in req.events:
+        found = event_phases(model, code, start, sense, span, s0, ref)
+        if not found:
+            raise DesignError(
+                f"analysis.events: {code!r}: the event ({event_name(code, 'en')}) never occurs "
+                "in this linkage; remove it",
+                f"analysis.events：{code!r}：该机构中不出现此位置（{event_name(code, 'zh')}），应删去")
+        for i, phase in enumerate(found):
+            extra.append((phase, None, code if i == 0 else f"{code}#{i + 1}"))
+    return extra
+
+
+def motion(model: LinkageModel, requests: Requests | None = None) -> tuple[LinkageMotion, Motion]:
+    """Solve the revolution; position 1 is the output extreme that starts the working stroke.
+    ``requests``: extra positions (by crank angle, by event) and named points (the brief's
+    ``analysis`` section)."""
     start, end, s0, s1, ref = _strokes(model)
     sense = float(np.sign(model.crank_omega))
     span = (sense * (end - start)) % TWO_PI
     specials = [(sense * (a - start)) % TWO_PI for a in model.special_crank_angles]
     pos = textbook_positions(model.position_step, span, specials)
+    names = {}
+    if requests is not None:
+        pos, names = with_requested(pos, model.position_step,
+                                    _requested(model, requests, start, sense, span, s0, ref))
     n = model.grid_points
     grid = np.arange(n) * (TWO_PI / n)
     phase = np.concatenate([grid, pos.phase])
@@ -265,8 +377,24 @@ def motion(model: LinkageModel) -> tuple[LinkageMotion, Motion]:
         link_angle={k_: v_.angle for k_, v_ in m.links.items()},
         link_omega={k_: v_.omega for k_, v_ in m.links.items()},
         link_alpha={k_: v_.alpha for k_, v_ in m.links.items()},
-        quality=_quality(model, m, phase, span, n), grid_size=n)
+        quality=_quality(model, m, phase, span, n), grid_size=n, requested=names,
+        point_vel={p: m.points[p].vel for p in _named_points(requests, m)},
+        point_acc={p: m.points[p].acc for p in _named_points(requests, m)})
     return k, m
+
+
+def _named_points(requests: Requests | None, m: Motion) -> tuple:
+    """The brief's named points, each a point of the linkage (else a design error naming
+    the field, the value and the points there are)."""
+    if requests is None:
+        return ()
+    for name in requests.points:
+        if name not in m.points:
+            known = ", ".join(sorted(m.points))
+            raise DesignError(
+                f"analysis.points: {name!r} is not a point of the linkage; its points: {known}",
+                f"analysis.points：{name!r} 不是机构上的点；机构上的点：{known}")
+    return requests.points
 
 
 # ---------------------------------------------------------------- forces
@@ -406,6 +534,19 @@ def quality_findings(model: LinkageModel, k: LinkageMotion) -> list[Finding]:
         zh, en = model.advice.get(kind, ("", ""))
         return (f"（{zh}）" if zh else ""), (f" ({en})" if en else "")
 
+    if "time_ratio" in model.advice and k.time_ratio < 1.0 - 1e-9:
+        # The working stroke is the faster one: the crank turns against the quick return.
+        zh, en, where = model.advice["time_ratio"]
+        theta = np.pi * (k.time_ratio - 1.0) / (k.time_ratio + 1.0) * deg
+        work, back = k.working_span * deg, 360.0 - k.working_span * deg
+        found.append(Finding(
+            "crank_sense_reversed",
+            f"行程速比系数 K = {k.time_ratio:.4f} < 1（极位夹角 θ = {theta:.2f}° < 0）：工作行程只占曲柄转角 "
+            f"{work:.2f}°，空回行程占 {back:.2f}°，曲柄转向与急回方向相反；{zh}",
+            f"time ratio K = {k.time_ratio:.4f} < 1 (extreme-position angle θ = {theta:.2f}° < 0): the "
+            f"working stroke takes {work:.2f}° of crank angle and the return {back:.2f}°, so the crank "
+            f"turns against the working stroke's sense (no quick return); {en}",
+            where))
     for qa in k.quality:
         if qa.kind == "pressure" and model.pressure_angle_limit is not None \
                 and qa.working_extreme > model.pressure_angle_limit + 1e-9:
@@ -449,7 +590,7 @@ def linkage_stages(model_key: str = "model", prefix: str = "linkage") -> list[St
     ``{prefix}_verification`` and ``{prefix}_polygons`` (the analysis sheet's polygons)."""
     return [
         Stage((prefix, f"{prefix}_raw"), "机构运动分析 / kinematics",
-              lambda r: motion(r[model_key])),
+              lambda r: motion(r[model_key], requests_of(r.get("brief")))),
         Stage(f"{prefix}_forces", "动态静力分析 / kinetostatics",
               lambda r: forces(r[model_key], r[prefix], r[f"{prefix}_raw"])),
         Stage(f"{prefix}_flywheel", "飞轮设计 / flywheel",
@@ -572,3 +713,73 @@ def link_members(mech: Mechanism) -> tuple[dict, list]:
             lst.extend(p for p in pts if p not in lst)
         sliders.extend(slides)
     return members, sliders
+
+
+# ---------------------------------------------------------------- the brief's requests
+
+@dataclass(frozen=True)
+class PointAtPosition:
+    """A named point's motion at one position."""
+
+    label: str = q("", "the position's label")
+    velocity: float = q("m/s", "|v| of the point")
+    velocity_direction: float = q("rad", "direction of v, CCW from +x (0 when at rest: |v| ≤ 1e-9·max |v|)")
+    acceleration: float = q("m/s²", "|a| of the point")
+    acceleration_direction: float = q("rad", "direction of a, CCW from +x (0 when zero)")
+
+
+@dataclass(frozen=True)
+class NamedPointDoc:
+    """One point of ``analysis.points``: at every position and over the grid."""
+
+    name: str = q("", "the point's name")
+    positions: tuple[PointAtPosition, ...] = q("", "at every position, in crank order")
+    grid_velocity: np.ndarray = q("m/s", "|v| over the uniform grid (phase from position 1)")
+    grid_acceleration: np.ndarray = q("m/s²", "|a| over the uniform grid")
+
+
+@dataclass(frozen=True)
+class RequestedPosition:
+    """A position the brief asked for (``analysis.positions_deg`` or ``analysis.events``)."""
+
+    asked: str = q("", "φ45 for positions_deg: [45]; the event code (work_start …)")
+    label: str = q("", "the label of the position it is (a regular position when they coincide)")
+    phase: float = q("rad", "crank angle from position 1 in the sense of rotation")
+    crank_angle: float = q("rad", "crank angle, CCW from +x")
+
+
+@dataclass(frozen=True)
+class AnalysisRequests:
+    """What the brief's ``analysis`` section asked for, for every linkage machine: the
+    positions by angle and by event (each also in the machine's position tables) and the
+    named points' velocities and accelerations."""
+
+    positions: tuple[RequestedPosition, ...] = q("", "the positions asked for")
+    points: tuple[NamedPointDoc, ...] = q("", "the named points")
+
+
+def requests_document(k: LinkageMotion) -> AnalysisRequests | None:
+    """The ``analysis_requests`` part of results.json, or None when nothing was asked."""
+    if not k.requested and not k.point_vel:
+        return None
+    n = k.grid_size
+    labels = [str(x) for x in k.positions.labels]
+
+    def at(label):
+        return n + labels.index(label)
+
+    def direction(z, scale):
+        return float(np.angle(z)) if abs(z) > 1e-9 * scale else 0.0
+
+    asked = tuple(RequestedPosition(key, label, float(k.phase[at(label)]),
+                                    float(k.crank_angle[at(label)] % TWO_PI))
+                  for key, label in k.requested.items())
+    points = []
+    for name, vel in k.point_vel.items():
+        acc = k.point_acc[name]
+        sv, sa = float(np.max(np.abs(vel))), float(np.max(np.abs(acc)))
+        points.append(NamedPointDoc(name, tuple(
+            PointAtPosition(lab, abs(vel[n + i]), direction(vel[n + i], sv), abs(acc[n + i]),
+                            direction(acc[n + i], sa)) for i, lab in enumerate(labels)),
+            np.abs(vel[:n]), np.abs(acc[:n])))
+    return AnalysisRequests(asked, tuple(points))

@@ -60,8 +60,26 @@ def chosen_positions(k, brief=None) -> list[str]:
     settings = getattr(brief, "sheets", None)
     chosen = getattr(settings, "polygon_positions", None)
     if chosen:
-        return [str(p) for p in chosen]
+        return [resolve_label(k, p, f"sheets.polygon_positions[{i}]") for i, p in enumerate(chosen)]
     return default_positions(k)
+
+
+def resolve_label(k, asked, field: str) -> str:
+    """The position label that ``asked`` names: a label (4, "4'", "4′", "φ45") or what
+    the brief's analysis asked for (an event code, φ45); else a design error at ``field``
+    listing the labels there are."""
+    from ..core.errors import DesignError
+
+    labels = [str(x) for x in k.positions.labels]
+    text = str(asked).replace("′", "'").strip()
+    if text in labels:
+        return text
+    requested = getattr(k, "requested", {}) or {}
+    if text in requested:
+        return str(requested[text])
+    known = ", ".join(labels + [key for key in requested if key not in labels])
+    raise DesignError(f"{field}: {asked!r} is not a position of the analysis; positions: {known}",
+                      f"{field}：{asked!r} 不是分析的机构位置；位置：{known}")
 
 
 def polygons(model, k, raw, forces, label: str) -> tuple[Polygon, ...]:

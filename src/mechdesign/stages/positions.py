@@ -38,3 +38,32 @@ def textbook_positions(step: float, other_extreme: float, specials: list[float])
     entries.sort(key=lambda e: e[0])
     return Positions(tuple(e[1] for e in entries), np.array([e[0] for e in entries]),
                      tuple(e[2] for e in entries))
+
+
+def with_requested(pos: Positions, step: float, extra: list) -> tuple[Positions, dict]:
+    """``pos`` plus the positions the brief asked for: ``extra`` of (phase [rad], label or
+    None, key). A position at the phase of one already there is not repeated: its key names
+    that one. Without a label a position takes the course's primed label (the regular
+    position before it, 1′, 7′); a label in use gets one more prime. Returns the positions
+    and key → label."""
+    count = int(round(2 * np.pi / step))
+    tol = 1e-9
+    entries = list(zip(pos.labels, pos.phase, pos.special))
+    names = {}
+    for ph, label, key in extra:
+        ph = float(ph) % (2 * np.pi)
+        if ph > 2 * np.pi - tol:
+            ph = 0.0
+        hit = next((e for e in entries if abs(e[1] - ph) < tol), None)
+        if hit is not None:
+            names[key] = hit[0]
+            continue
+        if label is None:
+            label = f"{int(np.floor(ph / step + tol)) % count + 1}'"
+        while label in (e[0] for e in entries):
+            label += "'"
+        entries.append((label, ph, True))
+        names[key] = label
+    entries.sort(key=lambda e: e[1])
+    return (Positions(tuple(e[0] for e in entries), np.array([e[1] for e in entries]),
+                      tuple(e[2] for e in entries)), names)

@@ -2,9 +2,9 @@
 from __future__ import annotations
 
 from typing import Literal
-from pydantic import Field
-from ...brief.common import AnalysisSettings, ReportMeta, StrictModel
-from ...brief.linkage import LinkageSection
+from pydantic import Field, model_validator
+from ...brief.common import AnalysisSettings, Problems, ReportMeta, SheetSettings, StrictModel
+from ...brief.linkage import LinkageSection, check_requests
 
 
 class LinkageBrief(StrictModel):
@@ -14,3 +14,22 @@ class LinkageBrief(StrictModel):
     report: ReportMeta
     linkage: LinkageSection
     analysis: AnalysisSettings = AnalysisSettings()
+    sheets: SheetSettings = SheetSettings()
+
+    @model_validator(mode="after")
+    def _requests(self):
+        """Named points and link events of ``analysis`` are the linkage's; regular polygon
+        positions exist (labels such as 'φ45' or event codes are resolved at run time)."""
+        out = Problems(self)
+        check_requests(self.linkage, self.analysis, out)
+        chosen = self.sheets.polygon_positions or []
+        count = int(round(360.0 / self.analysis.position_step_deg))
+        for i, p in enumerate(chosen):
+            if isinstance(p, int) and not 1 <= p <= count:
+                out.add(("sheets", "polygon_positions", i), p,
+                        f"{p} is not a position: with analysis.position_step_deg = "
+                        f"{self.analysis.position_step_deg:g} the positions are 1 … {count}",
+                        f"{p} 不是机构位置：analysis.position_step_deg = "
+                        f"{self.analysis.position_step_deg:g} 时位置为 1 … {count}")
+        out.raise_any()
+        return self

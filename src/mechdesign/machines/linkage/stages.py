@@ -6,7 +6,8 @@ from dataclasses import dataclass
 
 from ...core.fields import q
 from ...pipeline import Stage
-from ...stages.linkage import LinkageDocument, linkage_document, linkage_stages, motion
+from ...stages.linkage import (LinkageDocument, linkage_document, linkage_stages, motion,
+                               requests_of)
 
 
 # ---------------------------------------------------------------- the `linkage` machine
@@ -18,11 +19,17 @@ def linkage_params(brief):
     from dataclasses import replace
 
     model = linkage_to_model(brief.linkage, brief.analysis)
+    now = brief.linkage.crank.rotation
+    other = "ccw" if now == "cw" else "cw"
     return replace(model, advice={
         "pressure": ("任务书字段：linkage.groups[…].length_mm、guide_point_mm",
                      "brief fields: linkage.groups[…].length_mm, guide_point_mm"),
         "transmission": ("任务书字段：linkage.crank.length_mm、linkage.groups[…].lengths_mm",
-                         "brief fields: linkage.crank.length_mm, linkage.groups[…].lengths_mm")})
+                         "brief fields: linkage.crank.length_mm, linkage.groups[…].lengths_mm"),
+        "time_ratio": (f"应把 linkage.crank.rotation 改为 {other}（现为 {now}），"
+                       "或改变 linkage.output.working",
+                       f"change linkage.crank.rotation to {other} (now {now}) or "
+                       "linkage.output.working", "linkage.crank.rotation")})
 
 
 def brief_fields(section, group: str, code: str, prefix: str = "linkage") -> tuple[str, str]:
@@ -52,7 +59,7 @@ def _motion_of_brief(r: dict):
     from ...core.mechanism import AssemblyError
 
     try:
-        return motion(r["params"])
+        return motion(r["params"], requests_of(r.get("brief")))
     except AssemblyError as exc:
         brief = r.get("brief")
         en, zh = ("", "") if brief is None else brief_fields(brief.linkage, exc.group, exc.code)

@@ -130,9 +130,9 @@ def model(syn: Synthesis, p: ShaperParams) -> lk.LinkageModel:
                "4": ("导杆 O3B", "guide bar O3B"), "5": ("连杆 BF", "rod BF"), "6": ("刨头", "ram")})
 
 
-def motion(m: lk.LinkageModel, syn: Synthesis, p: ShaperParams):
+def motion(m: lk.LinkageModel, syn: Synthesis, p: ShaperParams, requests=None):
     """The engine's motion stage, an assembly failure naming the brief's field."""
-    return guide_bar.motion(m, syn, p.rod_ratio, "linkage.rod_ratio_BF_O3B")
+    return guide_bar.motion(m, syn, p.rod_ratio, "linkage.rod_ratio_BF_O3B", requests)
 
 
 def kinematics_view(m: lk.LinkageModel, k: lk.LinkageMotion, raw) -> Kinematics:
@@ -201,7 +201,7 @@ def verify(syn: Synthesis, k: Kinematics, mech: Mechanism, raw, f: Forces,
 
 def _motion_stage(r: dict):
     m = r["model"]
-    k, raw = motion(m, r["synthesis"], r["params"])
+    k, raw = motion(m, r["synthesis"], r["params"], lk.requests_of(r.get("brief")))
     return k, raw, kinematics_view(m, k, raw)
 
 

@@ -81,7 +81,8 @@ def _synthesis(r: dict):
 
 def _motion(r: dict):
     p = r["params"]
-    return guide_bar.motion(r["model"], r["synthesis"], p.rod_ratio, "linkage.rod_ratio_BC_O3B")
+    return guide_bar.motion(r["model"], r["synthesis"], p.rod_ratio, "linkage.rod_ratio_BC_O3B",
+                             lk.requests_of(r.get("brief")))
 
 
 def stages(p: SlotterParams) -> list[Stage]:
