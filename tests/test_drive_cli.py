@@ -68,3 +68,51 @@ def test_undercut_pinion_warns_and_unknown_material_names_the_field(tmp_path):
     result = runner.invoke(app, ["run", str(path), "--out", str(tmp_path / "o2"), "--format", "md"])
     assert result.exit_code == 2
     assert "gear_pair.pinion_material" in result.output and "40Cr_QT" in result.output
+
+
+def _tip_thickness(m, z, x, alpha=np.radians(20.0), ha=1.0, c=0.25, x_other=0.0, z_other=None):
+    """s_a of a shifted spur gear by the textbook formula (孙桓《机械原理》第10章):
+    s = m(π/2 + 2x tan α), r_a = r + (h_a* + x − Δy)m with Δy from the pair, and
+    s_a = s·r_a/r − 2r_a(inv α_a − inv α)."""
+    inv = lambda a: np.tan(a) - a  # noqa: E731
+    r = m * z / 2
+    # the pair's tip reduction Δy: inv α' = 2 tan α (x1 + x2)/(z1 + z2) + inv α
+    target = 2 * np.tan(alpha) * (x + x_other) / (z + z_other) + inv(alpha)
+    lo, hi = 0.0, 1.5
+    for _ in range(200):
+        mid = 0.5 * (lo + hi)
+        lo, hi = (mid, hi) if inv(mid) < target else (lo, mid)
+    a = m * (z + z_other) / 2
+    y = (a * np.cos(alpha) / np.cos(lo) - a) / m
+    ra = r + (ha + x - (x + x_other - y)) * m
+    s = m * (np.pi / 2 + 2 * x * np.tan(alpha))
+    alpha_a = np.arccos(r * np.cos(alpha) / ra)
+    return s * ra / r - 2 * ra * (inv(alpha_a) - inv(alpha))
+
+
+@pytest.mark.parametrize("z1, x1", [(20, 1.4), (14, 1.2)])
+def test_drive_spur_stage_with_a_pointed_tooth_is_named_or_refused(tmp_path, z1, x1):
+    """furnace_drive's open spur stage: z1 = 20, x1 = 1.4 leaves s_a below 0.25 m and a
+    negative dedendum (h_f = (1.25 − 1.4) m) — named warnings at the stage's field; z1 = 14,
+    x1 = 1.2 makes s_a ≤ 0 — the tooth cannot be cut (exit 2, the field named)."""
+    brief = yaml.safe_load((ROOT / "designs/furnace_drive.yaml").read_text(encoding="utf-8"))
+    (i, stage), = [(i, s) for i, s in enumerate(brief["drive"]["stages"]) if s["type"] == "spur"]
+    stage.update(z1=z1, x1=x1)
+    path = tmp_path / "b.yaml"
+    path.write_text(yaml.safe_dump(brief, allow_unicode=True), encoding="utf-8")
+    result = runner.invoke(app, ["run", str(path), "--out", str(tmp_path / "o"), "-f", "md",
+                                 "--lang", "en"])
+    out = result.output
+    assert "Traceback" not in out
+    doc = json.loads((tmp_path / "o" / "results.json").read_text()) if result.exit_code == 0 else None
+    if z1 == 20:
+        assert result.exit_code == 0, out
+        st = doc["drive"]["stages"][i]
+        m, z2 = st["design"]["module"], st["z2"]
+        sa = _tip_thickness(m, z1, x1, z_other=z2)
+        assert 0 < sa < 0.25 * m
+        assert f"drive.stages[{i}].x1" in out and "pointed tooth" in out
+        assert "negative dedendum" in out and f"{(1.25 - x1) * m * 1e3:.2f} mm" in out
+    else:
+        assert result.exit_code == 2, out
+        assert f"drive.stages[{i}].x1 = 1.2" in out and "cannot be cut" in out

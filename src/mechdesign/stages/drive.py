@@ -222,13 +222,24 @@ def design_drive(dp, machine_power: float, output_rpm: float, source: str,
             "change the teeth or pulley diameters."))
     for st, el in zip(results, elements):
         lo, hi = el.recommended
-        if st.type != "coupling" and not lo <= st.ratio <= el.ratio_max:
+        if st.type != "coupling" and st.ratio > el.ratio_max:
             warnings.append(Finding(
                 "stage_ratio",
-                f"第 {st.index + 1} 级{st.name_zh}传动比 {st.ratio:.3f} 超出其最大值 {el.ratio_max:g}。",
+                f"第 {st.index + 1} 级{st.name_zh}传动比 {st.ratio:.3f} 超出其最大值 {el.ratio_max:g}："
+                "应减小该级传动比（增加级数或把传动比分给其他级）。",
                 f"stage {st.index + 1} ({st.name_en}) ratio {st.ratio:.3f} exceeds its maximum "
-                f"{el.ratio_max:g}."))
+                f"{el.ratio_max:g}: give it a smaller ratio (another stage, or more ratio to the others).",
+                field=f"drive.stages[{st.index}]"))
+        elif st.type != "coupling" and st.ratio < lo:
+            warnings.append(Finding(
+                "stage_ratio",
+                f"第 {st.index + 1} 级{st.name_zh}传动比 {st.ratio:.3f} 低于其推荐范围 {lo:g}–{hi:g}："
+                "该级几乎不减速，可增大其传动比或省去该级。",
+                f"stage {st.index + 1} ({st.name_en}) ratio {st.ratio:.3f} is below its recommended "
+                f"range {lo:g}–{hi:g}: it hardly reduces the speed; give it a larger ratio or leave "
+                "the stage out.", field=f"drive.stages[{st.index}]"))
     warnings.extend(undercut_findings(results))
+    warnings.extend(tooth_findings(results))
     return DriveResult(output_rpm, machine_power, source, eta, p_d, choice, tuple(results),
                        tuple(shafts), n_out, error, dp.speed_tolerance, dp.service_hours, dp.KA,
                        dp.bearing_eff, dp.machine_eff, peak_factor, peak_from_shaft,
@@ -288,6 +299,51 @@ def undercut_findings(results) -> list[Finding]:
                         f"stage {r.index + 1} ({r.name_en}): z{key} = {z} has the equivalent tooth number "
                         f"z_v = z/cos³β = {zv:.2f} < z_min = {z_min:.1f}, so the gear is undercut; set "
                         f"{here}.z{key} ≥ {need} or use a larger helix angle.", field=here))
+    return out
+
+
+def tooth_findings(results) -> list[Finding]:
+    """Spur stages whose teeth cannot be cut as given: a tip thickness s_a ≤ 0 (the flanks
+    meet below the tip circle) is an error (:class:`~mechdesign.core.drive.DriveDesignError`),
+    s_a < 0.25 m a pointed tooth, a negative dedendum h_f = (h_a* + c* − x)·m < 0 (the root
+    circle outside the pitch circle) a named warning, each at the stage's field."""
+    from ..core.drive import DriveDesignError
+    from .gear import MIN_TIP_THICKNESS
+
+    out = []
+    for r in results:
+        d = r.design
+        if d is None or d.kind != "gear" or d.geometry is None or not hasattr(d.geometry, "x_min1"):
+            continue
+        here = f"drive.stages[{r.index}]"
+        g = d.geometry
+        for key, gd in (("1", g.g1), ("2", g.g2)):
+            who_zh, who_en = ("小齿轮", "pinion") if key == "1" else ("大齿轮", "wheel")
+            head_zh = f"第 {r.index + 1} 级{r.name_zh}{who_zh}（z{key} = {gd.z}，x{key} = {gd.x:g}）"
+            head_en = f"stage {r.index + 1} ({r.name_en}): the {who_en} (z{key} = {gd.z}, x{key} = {gd.x:g})"
+            fix_zh = (f"应减小 {here}.x{key}" if gd.x > 0 else f"应增加 {here}.z{key}")
+            fix_en = (f"reduce {here}.x{key}" if gd.x > 0 else f"use more teeth ({here}.z{key})")
+            if gd.sa <= 0:
+                raise DriveDesignError(
+                    f"{here}.x{key} = {gd.x:g}: {head_en} has a tip thickness s_a = "
+                    f"{gd.sa * 1e3:.2f} mm ≤ 0: its flanks meet below the tip circle, the tooth cannot "
+                    f"be cut; {fix_en}",
+                    f"{here}.x{key} = {gd.x:g}：{head_zh}齿顶厚 s_a = {gd.sa * 1e3:.2f} mm ≤ 0："
+                    f"齿廓在齿顶圆内已相交，无法加工；{fix_zh}")
+            if gd.sa < MIN_TIP_THICKNESS * g.m:
+                out.append(Finding(
+                    "pointed",
+                    f"{head_zh}齿顶厚 s_a = {gd.sa * 1e3:.3g} mm < 0.25m = {0.25 * g.m * 1e3:.2f} mm"
+                    f"（齿顶变尖）；{fix_zh}。",
+                    f"{head_en} has a tip thickness s_a = {gd.sa * 1e3:.3g} mm < 0.25 m = "
+                    f"{0.25 * g.m * 1e3:.2f} mm (pointed tooth); {fix_en}.", field=here))
+            if gd.hf < 0:
+                out.append(Finding(
+                    "dedendum",
+                    f"{head_zh}齿根高 h_f = (h_a* + c* − x)m = {gd.hf * 1e3:.2f} mm < 0：齿根圆在分度圆"
+                    f"之外；应减小 {here}.x{key}。",
+                    f"{head_en} has a negative dedendum h_f = (h_a* + c* − x)·m = {gd.hf * 1e3:.2f} mm: "
+                    f"its root circle lies outside the pitch circle; reduce {here}.x{key}.", field=here))
     return out
 
 

@@ -70,11 +70,14 @@ def gear_findings(g: gears.SpurPair, prefix: str = "gear_pair") -> tuple[Finding
                 f"x = {gd.x:g} < x_min = h_a*(z_min − z)/z_min = {x_min:.3f}; use a positive shift "
                 f"{prefix}.x{name} ≥ {x_min:.3f} or {prefix}.z{name} ≥ {need}."))
         if gd.sa < MIN_TIP_THICKNESS * g.m:
+            fix_zh = f"减小变位系数 {prefix}.x{name}" if gd.x > 0 else f"增加齿数 {prefix}.z{name}"
+            fix_en = (f"reduce its shift {prefix}.x{name}" if gd.x > 0
+                      else f"use more teeth ({prefix}.z{name})")
             out.append(Finding(
                 "pointed",
-                f"齿轮 {name} 齿顶厚 s_a = {gd.sa * 1e3:.2f} mm < 0.25m（齿顶变尖）；减小变位系数。",
+                f"齿轮 {name} 齿顶厚 s_a = {gd.sa * 1e3:.2f} mm < 0.25m（齿顶变尖）；{fix_zh}。",
                 f"gear {name} tip thickness s_a = {gd.sa * 1e3:.2f} mm < 0.25 m (pointed tooth); "
-                "reduce its shift."))
+                f"{fix_en}."))
     if g.contact_ratio < MIN_CONTACT_RATIO:
         out.append(Finding(
             "contact_ratio",
