@@ -78,7 +78,14 @@ def problems(p: PressParams, s: PressSynthesis) -> list[tuple[str, float, str, s
     out = []
     a, b, c, d = s.crank, s.coupler, s.rocker_CD, s.frame
     mm = 1e3
-    if not (a < min(b, c, d) and a + max(b, c, d) <= sum((b, c, d)) - max(b, c, d) + 1e-12):
+    if a <= 1e-9 * max(b, c, d):
+        out.append(("linkage.pivot_y_mm", p.y * mm,
+                    f"A (x1 = {p.x1 * mm:g}, y = {p.y * mm:g} mm) is equally far from C′ and C″ "
+                    "(on the horizontal through D): the crank length (AC″ − AC′)/2 is zero; put A "
+                    "above or below D",
+                    f"A（x1 = {p.x1 * mm:g}, y = {p.y * mm:g} mm）到 C′、C″ 的距离相等（在过 D 的"
+                    "水平线上）：曲柄长 (AC″ − AC′)/2 为零；应使 A 高于或低于 D"))
+    elif not (a < min(b, c, d) and a + max(b, c, d) <= sum((b, c, d)) - max(b, c, d) + 1e-12):
         out.append(("linkage.pivot_x1_mm", p.x1 * mm,
                     f"with A at x1 = {p.x1 * mm:g}, y = {p.y * mm:g} mm the four-bar ABCD "
                     f"(a = {a * mm:.4g}, b = {b * mm:.4g}, c = {c * mm:.4g}, d = {d * mm:.4g} mm) "
