@@ -22,7 +22,7 @@ from mechdesign.render.sheet import (SIZES, Arc, Circle, Dimension, Fill, Line, 
                                      TitleInfo, boxes_overlap, text_width)
 from mechdesign.stages.polygons import chosen_positions, default_positions, entry, polygons
 
-MACHINES = ["linkage_sixbar", "furnace_pusher", "die_cutter", "lockbeam", "shaper", "slotter"]
+MACHINES = ["linkage_sixbar", "furnace_pusher", "die_cutter", "lockbeam", "shaper", "slotter", "press"]
 INFO = TitleInfo("机构运动及动力分析图", "课程设计", "张三", "2023001", "机械 1", "李老师",
                  "2026-11-22", number="MD-01", sheet_no=1, sheets=1)
 

@@ -34,6 +34,7 @@ EXPECTED = {
     "textbook_guide_bar": ["analysis_A1"],  # a textbook exercise as a linkage brief
     "die_cutter": ["analysis_A1", "cam_A2"],  # the toggle press and the gripper cam
     "slotter": ["analysis_A1", "cam_A2", "gear_A2"],  # the guide-bar six-bar, its cam and gear pair
+    "press": ["analysis_A1", "cam_A2", "gear_A2"],    # the press's six-bar, oil-pump cam, gear pair
 }
 
 

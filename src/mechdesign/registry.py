@@ -52,6 +52,7 @@ _ENTRIES: dict[str, Entry | str] = {
     "eccentric_cam": "mechdesign.machines.eccentric_cam",
     "drive": "mechdesign.machines.drive",
     "slotter": "mechdesign.machines.slotter",
+    "press": "mechdesign.machines.press",
 }
 
 

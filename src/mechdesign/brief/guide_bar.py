@@ -4,7 +4,7 @@ their briefs (cam on the crank shaft, drive ending with the gear pair, analysis,
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Literal, Optional
+from typing import ClassVar, Literal, Optional
 
 from pydantic import Field, field_validator, model_validator
 
@@ -77,7 +77,10 @@ class GuideBarFlywheel(StrictModel):
 
 class GuideBarBrief(StrictModel):
     """What every guide-bar machine's brief has; each machine sets ``machine``, ``linkage``
-    and ``loads`` to its own sections."""
+    and ``loads`` to its own sections (the press too, with its own ``masses``; its linkage
+    names the crank speed ``_crank_speed_field``)."""
+
+    _crank_speed_field: ClassVar[str] = "crank_speed_n2_rpm"
 
     machine: str = Field(description="Machine type")
     report: ReportMeta
@@ -121,7 +124,7 @@ class GuideBarBrief(StrictModel):
                         f"the cam is on the crank shaft and turns with it: use {sense!r} "
                         f"(linkage.crank_rotation)",
                         f"凸轮装在曲柄轴上，随曲柄转动：应取 {sense!r}（linkage.crank_rotation）")
-            n2 = self.linkage.crank_speed_n2_rpm
+            n2 = getattr(self.linkage, self._crank_speed_field)
             if self.cam.speed_rpm is not None and self.cam.speed_rpm != n2:
                 out.add(("cam", "speed_rpm"), self.cam.speed_rpm,
                         f"the cam turns at the crank speed {n2:g} rpm: leave speed_rpm out",
