@@ -55,6 +55,23 @@ EXPECTED: dict[str, list[tuple[str, str]]] = {
     ],
 }
 
+# Issue 21: the cam's extremes are exact (Brent on every smooth piece of the law, the
+# one-sided limits at its ends), no longer the best point of the 0.1° design grid (or of the
+# 0.05° base-circle sample): every maximum pressure angle is now ≥ (and every smallest
+# radius of curvature ≤) the sampled one, every smallest base radius ≥ it. A dwell's
+# pressure angle is constant: its cam angle is now the dwell's start (it was the grid
+# point that won by round-off).
+_CAM_EXACT = [
+    ("*cam.segments.*.max_pressure_angle", "issue 21: exact maximum (it was the grid's best point)"),
+    ("*cam.segments.*.at", "issue 21: the cam angle of the exact maximum (a dwell: its start)"),
+    ("*cam.rho_pitch_min_convex", "issue 21: exact minimum, one-sided limits at law boundaries"),
+    ("*cam.rho_actual_min_convex", "issue 21: the same (ρ_a = ρ − r_r)"),
+    ("*cam.min_base_radius", "issue 21: from the exact pressure-angle maxima (it was sampled)"),
+    ("*cam.best_offset.base_radius", "issue 21: r0 at the best offset, exact (it was sampled)"),
+]
+for _machine in ("cam", "die_cutter", "lockbeam", "shaper", "slotter", "furnace_pusher", "linkage"):
+    EXPECTED.setdefault(_machine, []).extend(_CAM_EXACT)
+
 # Self-check residuals: round-off, not results. Compared only as "still tiny".
 IGNORED = ("*closure_residual", "*stroke_error", "*power_balance_residual", "*power_residual*",
            "*self_check*residual*")

@@ -13,7 +13,7 @@ from typing import Annotated, Literal, Optional, Union
 from ..lazy import np
 from pydantic import Field, model_validator
 
-from .common import StrictModel
+from .common import Problems, StrictModel
 
 LawName = Literal["constant_velocity", "parabolic", "harmonic", "cycloidal", "poly345",
                   "poly4567", "modified_trapezoid", "modified_sine"]
@@ -151,6 +151,25 @@ class CamSection(StrictModel):
             raise ValueError(f"the programme ends at {level:g} instead of 0: returns must undo the rises")
         if not any(s.motion == "rise" for s in self.programme):
             raise ValueError("the programme needs at least one rise")
+        return self
+
+    @model_validator(mode="after")
+    def _roller_inside_base_circle(self):
+        # issue 21: the actual base radius r0 − r_r must be positive, or the cam cannot be made
+        fo, r0 = self.follower, self.base_radius_mm
+        if fo.contact == "roller" and r0 != "auto" and not r0 - fo.roller_radius_mm > 0:
+            out = Problems(self)
+            out.add(("follower", "roller_radius_mm"), fo.roller_radius_mm,
+                    f"the roller radius r_r = {fo.roller_radius_mm:g} mm is not smaller than the "
+                    f"base radius r0 = {r0:g} mm: the actual profile's base radius r0 − r_r = "
+                    f"{r0 - fo.roller_radius_mm:g} mm ≤ 0 and the cam cannot be made; use a roller "
+                    f"below {r0:g} mm (typically r_r ≤ 0.4·r0 = {0.4 * r0:g} mm) or a base radius "
+                    f"above {fo.roller_radius_mm:g} mm",
+                    f"滚子半径 r_r = {fo.roller_radius_mm:g} mm 不小于基圆半径 r0 = {r0:g} mm："
+                    f"实际廓线基圆半径 r0 − r_r = {r0 - fo.roller_radius_mm:g} mm ≤ 0，凸轮无法制造；"
+                    f"滚子半径须小于 {r0:g} mm（一般 r_r ≤ 0.4·r0 = {0.4 * r0:g} mm），"
+                    f"或基圆半径大于 {fo.roller_radius_mm:g} mm")
+            out.raise_any()
         return self
 
 

@@ -412,6 +412,160 @@ def _flat(follower, r0, sigma, m, rot) -> CamProfile:
                       foot, contact, initial, extras)
 
 
+# --------------------------------------------------------------------------- exact extremes
+
+
+@dataclass(frozen=True)
+class Extreme:
+    """An extreme value of the cam's geometry in one segment: ``value`` at cam angle
+    ``delta`` [rad]; ``side`` −1 where it is the left-hand limit at a law boundary (the end
+    of a segment or of a piece of a piecewise law), +1 the right-hand limit, 0 inside."""
+
+    value: float
+    delta: float
+    side: int = 0
+
+
+@dataclass(frozen=True)
+class SegmentExtremes:
+    """The exact extremes of one segment (``None`` where there is nothing of that kind)."""
+
+    max_pressure_angle: Extreme
+    max_curvature: Extreme | None     # largest convex curvature 1/ρ of the pitch curve [1/m]
+    min_curvature: Extreme | None     # most concave (most negative) curvature [1/m]
+    min_rho: Extreme | None           # flat face: smallest ρ = h + h'' (any sign) [m]
+
+
+def segment_pieces(programme: Programme, i: int) -> list[tuple[float, float]]:
+    """The pieces [u_a, u_b] of segment ``i`` on which its law is one smooth formula: split
+    at the law's breakpoints (e.g. the parabolic law's middle)."""
+    seg = programme.segments[i]
+    bps = () if seg.kind == DWELL else LAWS[seg.law].breakpoints
+    edges = [0.0, *bps, 1.0]
+    return list(zip(edges[:-1], edges[1:]))
+
+
+def segment_motion(programme: Programme, i: int, u) -> FollowerMotion:
+    """The follower motion of segment ``i`` at its own u ∈ [0, 1] (vectorised): u = 1 is the
+    left-hand limit at its end, u = 0 its start; the cam angle is start + u·span (not wrapped
+    to [0, 2π), so that the limit at 360° keeps its side)."""
+    u = np.atleast_1d(np.asarray(u, dtype=float))
+    seg = programme.segments[i]
+    span, start = programme.spans[i], programme.starts[i]
+    d = start + u * span
+    idx = np.full(u.shape, i)
+    if seg.kind == DWELL:
+        z = np.zeros_like(u)
+        return FollowerMotion(d, np.full_like(u, programme.levels[i]), z, z.copy(), z.copy(), idx)
+    S, S1, S2, S3 = LAWS[seg.law](u)
+    lift = programme.lifts[i]
+    return FollowerMotion(d, programme.levels[i] + lift * S, lift * S1 / span,
+                          lift * S2 / span**2, lift * S3 / span**3, idx)
+
+
+def _piece_extreme(fun, ua: float, ub: float, samples: int, largest: bool = True,
+                   where=None) -> tuple[float, float, int] | None:
+    """(u, value, side) of the largest (smallest) value of ``fun`` on the closed piece
+    [ua, ub] of one smooth formula; ``fun`` takes an array of u. The interior extremes are
+    found by Brent's bounded search between the neighbours of every local extreme of a
+    sample (the three best), the ends are evaluated as one-sided limits (u on the piece's
+    own side: the adjacent float inside the piece at a law breakpoint). ``where``: only
+    values for which where(value) holds count (None: all)."""
+    from .extremes import fminbound
+
+    sign = 1.0 if largest else -1.0
+    # one-sided ends: just inside [ua, ub] where the neighbouring piece takes over at ua
+    a = ua if ua == 0.0 else float(np.nextafter(ua, 1.0))
+    b = ub
+    u = np.linspace(a, b, samples + 1)
+    v = sign * np.asarray(fun(u), dtype=float)
+    ok = np.isfinite(v) if where is None else (np.isfinite(v) & where(sign * v))
+    if not np.any(ok):
+        return None
+    w = np.where(ok, v, -np.inf)
+    cand = [(float(u[k]), float(w[k])) for k in np.flatnonzero(ok)
+            if (k == 0 or w[k] >= w[k - 1]) and (k == len(w) - 1 or w[k] >= w[k + 1])]
+    cand.sort(key=lambda t: -t[1])
+    best = cand[0]
+    for uk, _ in cand[:3]:
+        k = int(np.searchsorted(u, uk))
+        lo, hi = float(u[max(k - 1, 0)]), float(u[min(k + 1, len(u) - 1)])
+        if hi <= lo:
+            continue
+
+        def neg(x):
+            val = sign * float(fun(np.array([x]))[0])
+            ok1 = np.isfinite(val) and (where is None or bool(where(sign * val)))
+            return -val if ok1 else np.inf
+
+        x, fx = fminbound(neg, lo, hi, xatol=1e-13 * max(b - a, 1e-300) + 1e-16)
+        if np.isfinite(fx) and -fx > best[1]:
+            best = (float(x), -fx)
+    side = -1 if best[0] == b else (1 if best[0] == a else 0)
+    return best[0], sign * best[1], side
+
+
+def _curvature(prof: CamProfile) -> np.ndarray:
+    """Signed curvature 1/ρ of the pitch curve (+ convex); smooth where ρ passes ±∞."""
+    with np.errstate(divide="ignore"):
+        return 1.0 / prof.rho_pitch
+
+
+def exact_extremes(programme: Programme, follower, base_radius: float, rotation: int = 1,
+                   points: int = 3600) -> list[SegmentExtremes]:
+    """Per segment, the exact largest pressure angle and the exact extreme curvatures of
+    the pitch curve (the largest convex and the most concave curvature; for a flat face the
+    smallest ρ of the profile), never read off a grid: every smooth piece of the segment's
+    law is searched with Brent's bounded method from a sample (``points`` per revolution,
+    at least 64 per piece) and its two ends enter as one-sided limits: a segment end, a
+    jump of the curvature inside a law (parabolic: its middle). A rise over a tiny angle
+    gets its true, nearly 90° pressure angle."""
+    sigma = 1 if rotation > 0 else -1
+    flat = follower.kind == "flat"
+    out = []
+    for i, seg in enumerate(programme.segments):
+        span = programme.spans[i]
+        found = {"alpha": [], "kmax": [], "kmin": [], "rho": []}
+        if seg.kind == DWELL:
+            # the follower stands still: the pitch curve is an arc about the cam centre, its
+            # pressure angle and curvature constant: reported at the dwell's start
+            pr = _profile(segment_motion(programme, i, 0.0), follower, base_radius, sigma)
+            at = float(programme.starts[i])
+            k = float(_curvature(pr)[0])
+            out.append(SegmentExtremes(
+                Extreme(float(pr.pressure_angle[0]), at, 1),
+                Extreme(k, at, 1) if k > 0 and not flat else None,
+                Extreme(k, at, 1) if k < 0 and not flat else None,
+                Extreme(float(pr.rho_pitch[0]), at, 1) if flat else None))
+            continue
+        for ua, ub in segment_pieces(programme, i):
+            n = max(64, int(np.ceil(points * span * (ub - ua) / TWO_PI)))
+
+            def prof(u, i=i):
+                return _profile(segment_motion(programme, i, u), follower, base_radius, sigma)
+
+            def delta_of(u, i=i):
+                return float(programme.starts[i] + u * programme.spans[i])
+
+            def keep(key, res):
+                if res is not None:
+                    found[key].append(Extreme(res[1], delta_of(res[0]), res[2]))
+
+            if not flat:
+                keep("alpha", _piece_extreme(lambda u: prof(u).pressure_angle, ua, ub, n))
+                keep("kmax", _piece_extreme(lambda u: _curvature(prof(u)), ua, ub, n,
+                                            where=lambda k: k > 0))
+                keep("kmin", _piece_extreme(lambda u: _curvature(prof(u)), ua, ub, n,
+                                            largest=False, where=lambda k: k < 0))
+            else:
+                keep("alpha", (ua, 0.0, 0))
+                keep("rho", _piece_extreme(lambda u: prof(u).rho_pitch, ua, ub, n, largest=False))
+        pick = lambda key, f: (f(found[key], key=lambda e: e.value) if found[key] else None)  # noqa: E731
+        out.append(SegmentExtremes(pick("alpha", max), pick("kmax", max), pick("kmin", min),
+                                   pick("rho", min)))
+    return out
+
+
 # --------------------------------------------------------------------------- roller envelope
 
 
@@ -632,7 +786,16 @@ def min_base_radius_translating(programme: Programme, follower: TranslatingFollo
     sigma = 1 if rotation > 0 else -1
     m = programme.evaluate(np.arange(points) * (TWO_PI / points))
     if follower.kind == "flat":
-        return float(max(np.max(min_curvature - m.s - m.d2s), 1e-9)), follower.offset
+        # r0 ≥ max(ρ_min − s − d²s/dδ²), the maximum exact per smooth piece (one-sided ends)
+        need = 1e-9
+        for i, _ in enumerate(programme.segments):
+            for ua, ub in segment_pieces(programme, i):
+                def g(u, i=i):
+                    mm_ = segment_motion(programme, i, u)
+                    return min_curvature - mm_.s - mm_.d2s
+                res = _piece_extreme(g, ua, ub, 64)
+                need = max(need, res[1])
+        return float(need), follower.offset
     # Sample every rise and return on its own closed interval [0, 1], ends included: the
     # largest pressure angle is often at an end (e.g. where a uniform return stops).
     s_parts, x_parts, tan_parts = [], [], []
@@ -651,11 +814,28 @@ def min_base_radius_translating(programme: Programme, follower: TranslatingFollo
         s0 = max(float(np.max(np.abs(x_pole - e) / tan_lim - s)), 0.0)
         return float(np.hypot(s0, e))
 
+    def r0_exact(e: float) -> float:
+        # s0 ≥ max(|σ·ds/dδ − e| / tan[α] − s) over every rise and return, the maximum
+        # exact per smooth piece of the law (its ends as one-sided limits)
+        s0 = 0.0
+        for i, seg in enumerate(programme.segments):
+            if seg.kind == DWELL:
+                continue
+            t = np.tan(alpha_rise if seg.kind == RISE else alpha_return)
+            for ua, ub in segment_pieces(programme, i):
+                def g(u, i=i, t=t):
+                    mm_ = segment_motion(programme, i, u)
+                    return np.abs(sigma * mm_.ds - e) / t - mm_.s
+                n = max(64, int(np.ceil(points * programme.spans[i] * (ub - ua) / TWO_PI)))
+                s0 = max(s0, _piece_extreme(g, ua, ub, n)[1])
+        return float(np.hypot(s0, e))
+
     if offset is not None:
-        return r0_for(offset), float(offset)
+        return r0_exact(offset), float(offset)
+    # the best offset from the sampled programme (a minimax over e), its r0 exact
     span = float(np.max(np.abs(x_pole))) + 1e-12
     x, _ = fminbound(r0_for, -span, span, xatol=span * 1e-10)
-    return r0_for(x), x
+    return r0_exact(x), x
 
 
 def min_base_radius_oscillating(programme: Programme, follower: OscillatingFollower,
@@ -702,6 +882,40 @@ def min_base_radius_oscillating(programme: Programme, follower: OscillatingFollo
             good = mid
         else:
             bad = mid
+    # The grid may miss the true largest pressure angle: continue with the exact one
+    # (per smooth piece, one-sided ends), which can only move r0 up.
+    def exact_excess(r0: float) -> float:
+        worst = -np.inf
+        for i, seg in enumerate(programme.segments):
+            if seg.kind == DWELL:
+                continue
+            lim = alpha_rise if seg.kind == RISE else alpha_return
+            for ua, ub in segment_pieces(programme, i):
+                def g(u, i=i):
+                    return _profile(segment_motion(programme, i, u), follower, r0,
+                                    sigma).pressure_angle
+                n = max(64, int(np.ceil(points * programme.spans[i] * (ub - ua) / TWO_PI)))
+                worst = max(worst, _piece_extreme(g, ua, ub, n)[1] - lim)
+        return worst
+
+    if exact_excess(good) > 0:
+        bad, step = good, 1e-9
+        while True:
+            up = min(good + step, hi * (1 - 1e-12))
+            if exact_excess(up) <= 0:
+                good = up
+                break
+            if up >= hi * (1 - 1e-12):
+                raise CamDesignError("no base radius keeps the pressure angle within the limits "
+                                     "with this pivot distance and arm length",
+                                     "在此中心距与摆杆长度下，没有任何基圆半径能使压力角不超过许用值")
+            bad, step = up, step * 4
+        while good - bad > 1e-10:
+            mid = 0.5 * (bad + good)
+            if exact_excess(mid) <= 0:
+                good = mid
+            else:
+                bad = mid
     return good
 
 

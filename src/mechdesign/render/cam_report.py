@@ -296,7 +296,7 @@ def cam_context(c, lang: str, figs: dict[str, str], csv_name: str) -> dict:
                        f"{f(c.rho_actual_min_convex * MM, 2)} mm",
                        f"≥ {f(p.min_actual_curvature * MM, 1)} mm", ok])
     if fol.kind == "flat":
-        rho_min = float(np.min(c.grid.rho_actual))
+        rho_min = c.rho_actual_min if c.rho_actual_min is not None else float(np.min(c.grid.rho_actual))
         checks.append([("廓线最小曲率半径（须处处外凸）" if zh else "smallest radius of curvature (must stay convex)"),
                        f"{f(rho_min * MM, 2)} mm", "> 0", "PASS" if rho_min > 0 else "FAIL"])
     design_rows = []

@@ -123,7 +123,10 @@ LABELS = {
 
 # Scales of the displacement diagram: μδ [°/mm] and μs [mm/mm or °/mm], preferred values.
 _MU_DELTA = (1.0, 1.5, 2.0, 2.5, 3.0, 4.0, 5.0)
-_MU_S = (0.05, 0.1, 0.2, 0.25, 0.5, 1.0, 2.0, 2.5, 5.0, 10.0)
+# μs (μφ): the preferred 1-2-2.5-5 series; the values above 10 draw the long strokes
+# (a 2000 mm stroke at μs = 50 mm/mm is 40 mm high)
+_MU_S = (0.05, 0.1, 0.2, 0.25, 0.5, 1.0, 2.0, 2.5, 5.0, 10.0,
+         20.0, 25.0, 50.0, 100.0, 200.0, 250.0, 500.0, 1000.0)
 ROW = 6.5                  # table row height [mm]
 GAP = 7.0                  # vertical gap between the panels of the right column [mm]
 
@@ -676,6 +679,13 @@ def _right_column(sheet, c, divs, g: _ProfileGeometry, mu_d, box, lab, lang):
             break
     spare = avail - height(mu_s, row, gap)
     if spare < 0:
+        # still too tall: a larger μs from the series (a lower diagram, at least 15 mm high)
+        for m in (m for m in _MU_S if m > mu_s and stroke / m >= 15.0 - 1e-9):
+            mu_s, row = m, ROW
+            spare = avail - height(mu_s, row, gap)
+            if spare >= 0:
+                break
+    if spare < 0:
         raise ValueError(f"the cam sheet's right column is {-spare:.1f} mm too tall")
     gap = min(GAP + spare / 4.0, 16.0)
     _right_draw(sheet, c, divs, g, mu_d, mu_s, row, gap, box, lab, lang)
@@ -790,7 +800,8 @@ def _data_rows(c, g: _ProfileGeometry, lab, lang):
         rows.append([lab["rho_a"], "ρa,min", f"{ra:.2f} mm",
                      f"≥ {format_number(lim)} mm  {lab['ok'] if ra >= lim else lab['fail']}"])
     elif fol.kind == "flat":
-        rho = float(np.min(c.grid.rho_actual)) * MM
+        rho = (c.rho_actual_min if c.rho_actual_min is not None
+               else float(np.min(c.grid.rho_actual))) * MM
         rows.append([lab["rho_flat"], "ρmin", f"{rho:.2f} mm",
                      f"> 0  {lab['ok'] if rho > 0 else lab['fail']}"])
         if c.face_extent is not None and not g.osc:

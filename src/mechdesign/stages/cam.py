@@ -77,14 +77,17 @@ class CamResult:
     table: core.CamProfile
     segments: list[SegmentCheck]
     boundaries: list[core.Boundary]
-    rho_pitch_min_convex: float      # [m] (inf if none convex)
-    rho_actual_min_convex: float     # [m]
+    rho_pitch_min_convex: float      # exact [m] (inf if none convex)
+    rho_actual_min_convex: float     # exact [m]
     face_extent: tuple | None        # flat face: (min, max) contact position along the face [m]
     warnings: list[Finding]
     outline: np.ndarray | None = None              # the actual profile as cut, closed polyline [m]
     envelope: core.RollerEnvelope | None = None    # roller follower: corners and cut loops
     follower: object = None                        # the follower as designed (with its offset)
     drawing: CamDrawing | None = None              # what the figures and the sheet draw
+    rho_actual_min: float | None = None            # smallest ρ of the actual profile, any sign [m]
+    rho_pitch_min_concave: float | None = None     # smallest |ρ| where the pitch curve is concave [m]
+    rho_actual_min_concave: float | None = None    # the same for the actual profile [m]
 
 
 def design(p) -> CamResult:
@@ -140,30 +143,40 @@ def design(p) -> CamResult:
         grid = replace(grid, actual=envelope.contact)
         table = replace(table, actual=core.envelope_contact(envelope, table))
     impacts = prog.impacts()
+    # Exact extremes per segment (never read off the grid): the largest pressure angle and
+    # the extreme curvatures, one-sided limits at law boundaries included.
+    ext = core.exact_extremes(prog, fol, r0, p.rotation, GRID_POINTS)
     segs = []
-    seg_of = grid.motion.segment
     for i, seg in enumerate(prog.segments):
-        mask = seg_of == i
-        alpha = grid.pressure_angle[mask]
-        j = int(np.argmax(alpha))
         limit = None if seg.kind == core.DWELL else (
             p.alpha_rise if seg.kind == core.RISE else p.alpha_return)
-        amax = float(alpha[j])
+        top = ext[i].max_pressure_angle
+        amax = float(top.value)
         segs.append(SegmentCheck(seg.kind, seg.law, float(prog.starts[i]), float(seg.span),
                                  float(prog.lifts[i]), impacts[i], amax,
-                                 float(grid.delta[mask][j]), limit,
+                                 float(top.delta % (2 * np.pi)), limit,
                                  limit is None or amax <= limit + 1e-12))
-    convex = grid.rho_pitch > 0
-    rho_p = float(np.min(grid.rho_pitch[convex])) if np.any(convex) else float("inf")
-    rho_a = float(np.min(grid.rho_actual[convex])) if np.any(convex) else float("inf")
+    rr = grid.roller_radius
+    if fol.kind == "flat":
+        rho_min = min(float(e.min_rho.value) for e in ext)
+        rho_p = rho_a = rho_min if rho_min > 0 else 0.0
+        rho_p_concave = rho_a_concave = None
+    else:
+        kmax = max((float(e.max_curvature.value) for e in ext if e.max_curvature), default=0.0)
+        kmin = min((float(e.min_curvature.value) for e in ext if e.min_curvature), default=0.0)
+        rho_p = 1.0 / kmax if kmax > 0 else float("inf")
+        rho_a = rho_p - rr
+        rho_p_concave = -1.0 / kmin if kmin < 0 else None
+        rho_a_concave = None if rho_p_concave is None else rho_p_concave + rr
+        rho_min = None
     face = None
     if fol.kind == "flat":
         along = _face_positions(grid, fol)
         face = (float(np.min(along)), float(np.max(along)))
-    warnings = _checks(p, fol, r0, segs, rho_p, rho_a, grid, min_r0, best)
+    warnings = _checks(p, fol, r0, segs, rho_p, rho_a, rho_min, min_r0, best)
     return CamResult(p, r0, offset, designed, min_r0, best, grid, table, segs,
                      prog.boundaries(), rho_p, rho_a, face, warnings, outline, envelope, fol,
-                     drawing(p, fol, r0, grid, offset))
+                     drawing(p, fol, r0, grid, offset), rho_min, rho_p_concave, rho_a_concave)
 
 
 def parts(span: float) -> int:
@@ -219,17 +232,31 @@ def _mm(x: float) -> str:
     return f"{x * 1e3:.2f} mm"
 
 
-def _checks(p, fol, r0, segs, rho_p, rho_a, grid, min_r0, best) -> list[Finding]:
+def _more(target: float | None, now: float) -> bool:
+    """``target`` [m] is a meaningful increase over ``now``: larger by at least 0.01 mm
+    (what the advice prints), so no advice reads 'at least' the value it already has."""
+    return target is not None and np.isfinite(target) and target - now >= 1e-5
+
+
+def _checks(p, fol, r0, segs, rho_p, rho_a, rho_min, min_r0, best) -> list[Finding]:
     """``min_r0``: smallest base radius for the limits (convexity for a flat face) with this
-    follower; ``best``: (r0, e) with the best offset (translating knife/roller), or None."""
+    follower; ``best``: (r0, e) with the best offset (translating knife/roller), or None;
+    ``rho_min``: flat face: the smallest ρ of the profile (any sign). Every advice says
+    which way to change a value and never asks for a change it cannot print (below 0.01 mm)
+    or for a negative size."""
     out = []
     bad = [s for s in segs if not s.ok]
     if bad:
         worst = max(bad, key=lambda s: s.max_pressure_angle - s.limit)
         which_zh = "推程" if worst.kind == core.RISE else "回程"
         which_en = worst.kind
-        fix_zh = f"把基圆半径增大到至少 {_mm(min_r0)}" if min_r0 else "增大基圆半径"
-        fix_en = f"increase the base radius to at least {_mm(min_r0)}" if min_r0 else "increase the base radius"
+        raise_r0 = _more(min_r0, r0)
+        fix_zh = f"把基圆半径增大到至少 {_mm(min_r0)}" if raise_r0 else "增大基圆半径"
+        fix_en = f"increase the base radius to at least {_mm(min_r0)}" if raise_r0 else "increase the base radius"
+        if worst.span < np.radians(5.0):
+            fix_zh += f"，或给该{which_zh}更大的凸轮转角（现为 {np.degrees(worst.span):.4g}°）"
+            fix_en += (f", or give the {which_en} a larger cam angle (now "
+                       f"{np.degrees(worst.span):.4g}°)")
         if best is not None and best[0] < r0:
             side_zh = "右" if best[1] > 0 else "左"
             side_en = "right" if best[1] > 0 else "left"
@@ -247,15 +274,22 @@ def _checks(p, fol, r0, segs, rho_p, rho_a, grid, min_r0, best) -> list[Finding]
     if fol.kind == "roller" and np.isfinite(rho_p):
         rr = fol.roller_radius
         if rr >= rho_p:
+            target = rho_p - p.min_actual_curvature        # the largest roller that would do
+            if target >= 1e-5:
+                fix_zh = f"减小滚子半径到 {_mm(target)} 以下，或增大基圆半径"
+                fix_en = f"use a roller below {_mm(target)} or a larger base circle"
+            else:                                          # no roller is small enough
+                fix_zh = (f"任何滚子都不能使实际廓线最小曲率半径达到 {_mm(p.min_actual_curvature)}："
+                          "增大基圆半径")
+                fix_en = (f"no roller keeps the actual profile's radius of curvature at "
+                          f"{_mm(p.min_actual_curvature)} or more: use a larger base circle")
             out.append(Finding(
                 "undercut",
                 f"运动失真（实际廓线根切/自交）：滚子半径 r_r = {_mm(rr)} 不小于理论廓线外凸部分的"
-                f"最小曲率半径 ρmin = {_mm(rho_p)}；减小滚子半径到 {_mm(rho_p - p.min_actual_curvature)} "
-                f"以下，或增大基圆半径。",
+                f"最小曲率半径 ρmin = {_mm(rho_p)}；{fix_zh}。",
                 f"undercut (the actual profile intersects itself, the follower motion is distorted): "
                 f"the roller radius r_r = {_mm(rr)} is not smaller than the smallest convex radius of "
-                f"curvature of the pitch curve ρmin = {_mm(rho_p)}; use a roller below "
-                f"{_mm(rho_p - p.min_actual_curvature)} or a larger base circle."))
+                f"curvature of the pitch curve ρmin = {_mm(rho_p)}; {fix_en}."))
         elif rho_a < p.min_actual_curvature:
             out.append(Finding(
                 "pointed",
@@ -265,10 +299,10 @@ def _checks(p, fol, r0, segs, rho_p, rho_a, grid, min_r0, best) -> list[Finding]
                 f"is below {_mm(p.min_actual_curvature)} and will wear quickly; use a smaller roller "
                 "or a larger base circle."))
     if fol.kind == "flat":
-        rho_min = float(np.min(grid.rho_actual))
         if rho_min <= 0:
-            fix_zh = f"基圆半径至少取 {_mm(min_r0)}" if min_r0 else "增大基圆半径"
-            fix_en = f"use a base radius of at least {_mm(min_r0)}" if min_r0 else "increase the base radius"
+            raise_r0 = _more(min_r0, r0)
+            fix_zh = f"基圆半径至少取 {_mm(min_r0)}" if raise_r0 else "增大基圆半径"
+            fix_en = f"use a base radius of at least {_mm(min_r0)}" if raise_r0 else "increase the base radius"
             out.append(Finding(
                 "concave_flat",
                 f"平底从动件要求凸轮廓线处处外凸，但最小曲率半径为 {_mm(rho_min)}（廓线内凹，运动失真）；{fix_zh}。",
