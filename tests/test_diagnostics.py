@@ -303,6 +303,9 @@ def test_lockbeam_bending_synthesis_without_a_solution():
 def test_cam_offset_not_below_the_base_radius():
     data = example("cam_7_3.yaml")
     data["cam"]["base_radius_mm"] = 10
+    # a roller below r0 (r_r ≥ r0 is refused by validation since issue 21), so that the
+    # offset is what fails
+    data["cam"]["follower"]["roller_radius_mm"] = 4
     with pytest.raises(CamDesignError) as info:
         run(data)
     zh, en = both(info.value)

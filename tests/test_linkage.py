@@ -227,3 +227,26 @@ def test_document_serialises(example_results):
     assert lk["output"]["name"] == "E" and len(lk["positions"]) >= 12
     assert lk["flywheel"]["inertia"] > 0
     assert copy.deepcopy(lk["verification"])["closure_residual"] < 1e-12
+
+
+def test_duplicate_group_names_and_every_reference_problem_at_its_field():
+    """Two groups under one name (it keyed the solver's links: a LinAlgError before), an
+    undefined point, a mass off its link and an output that is no point: all reported at
+    once, each at its exact field, in English and Chinese (issue 21, points 3 and 5)."""
+    data = four_bar(100, 400, 300, 400)
+    g = data["linkage"]["groups"]
+    g[0]["name"] = "摇杆"
+    g.append({"type": "RRP", "name": "摇杆", "links": [5, 6], "end": "B", "joint": "E",
+              "length_mm": 300, "guide_point_mm": [0, 500], "guide_angle_deg": 0})
+    g.append({"type": "point", "name": "S9", "link": 3, "origin": "Q", "distance_mm": 10})
+    data["linkage"]["masses"] = [{"link": 4, "mass_kg": 1, "com": "E"}]
+    data["linkage"]["output"] = {"point": "Z"}
+    with pytest.raises(BriefError) as exc:
+        parse_brief(data)
+    probs = {p.path: p for p in exc.value.problems}
+    assert set(probs) == {"linkage.groups.1.name", "linkage.groups.2.origin",
+                          "linkage.masses.0.com", "linkage.output.point"}, probs
+    assert "already used by groups[0]" in probs["linkage.groups.1.name"].allowed
+    assert "已被 groups[0] 使用" in probs["linkage.groups.1.name"].allowed_zh
+    assert probs["linkage.output.point"].value.strip("'") == "Z"
+    assert all(p.allowed_zh for p in probs.values())

@@ -17,7 +17,7 @@ from typing import Annotated, Literal, Optional, Union
 from ..lazy import np
 from pydantic import BeforeValidator, Field, model_validator
 
-from .common import AnalysisSettings, StrictModel, parse_fraction
+from .common import AnalysisSettings, Problems, StrictModel, parse_fraction
 
 _NAME = re.compile(r"^[A-Za-z][A-Za-z0-9_']{0,15}$")
 
@@ -190,7 +190,7 @@ class LinkageSection(StrictModel):
 
     @model_validator(mode="after")
     def _references(self):
-        check_references(self)
+        check_references(self)       # every problem at its field, at once
         return self
 
 
@@ -207,74 +207,140 @@ def _group_io(g) -> tuple[list[str], list[str], list[tuple[str, list[str]]]]:
     return [g.origin], [g.name], [(g.link, [g.origin, g.name])]
 
 
-def check_references(s: LinkageSection) -> dict[str, list[str]]:
-    """Every name used is defined before it; returns link → points it carries."""
+def _display_name(g) -> str:
+    """The name a group is shown (and kept) under: its ``name`` or its new point."""
+    if g.type == "point":
+        return g.name
+    return g.name or (g.slider_at if g.type == "RPR" else g.joint)
+
+
+def check_references(s: LinkageSection, out: Problems | None = None) -> dict[str, list[str]]:
+    """Every name used is defined before it, and no name is used twice; returns link → the
+    points it carries. Every problem goes to ``out`` (at its field, English and Chinese;
+    without ``out`` they are raised at once)."""
+    own = out is None
+    if own:
+        out = Problems(s)
     for name in s.frame_points_mm:
         _name(name)
     known = set(s.frame_points_mm)
     if s.crank.pivot not in known:
-        raise ValueError(f"crank.pivot '{s.crank.pivot}' is not a frame point; "
-                         f"frame points: {', '.join(sorted(known))}")
+        out.add(("crank", "pivot"), s.crank.pivot,
+                f"crank.pivot '{s.crank.pivot}' is not a frame point; frame points: "
+                f"{', '.join(sorted(known))}",
+                f"crank.pivot '{s.crank.pivot}' 不是机架点；机架点：{'、'.join(sorted(known))}")
     if s.crank.tip in known:
-        raise ValueError(f"crank.tip '{s.crank.tip}' is already a point")
+        out.add(("crank", "tip"), s.crank.tip,
+                f"crank.tip '{s.crank.tip}' is already a point; choose a new name",
+                f"crank.tip '{s.crank.tip}' 已是一个点；请另取新名")
     known.add(s.crank.tip)
     members: dict[str, list[str]] = {s.crank.link: [s.crank.pivot, s.crank.tip]}
+    shown: dict[str, int] = {}
     for i, g in enumerate(s.groups):
         where = f"groups[{i}] ({g.type})"
         needs, makes, links = _group_io(g)
+        label = _display_name(g)
+        if g.type != "point" and label:
+            if label in shown:
+                j = shown[label]
+                out.add(("groups", i, "name"), label,
+                        f"{where}: the name '{label}' is already used by groups[{j}]; every group "
+                        "needs its own name (it labels its links and forces)",
+                        f"{where}：名称 '{label}' 已被 groups[{j}] 使用；每个杆组须有自己的名称"
+                        "（用于标注其构件和力）")
+            else:
+                shown[label] = i
         missing = [p for p in needs if p not in known]
         if missing:
-            raise ValueError(f"{where}: point {', '.join(repr(p) for p in missing)} is not defined "
-                             f"before this group; defined so far: {', '.join(sorted(known))}")
+            field = {"RRR": "ends", "RRP": "end", "point": "origin"}.get(g.type)
+            if g.type == "RPR":
+                field = "slider_at" if g.slider_at in missing else "pivot"
+            listed = ", ".join(repr(p) for p in missing)
+            out.add(("groups", i, field), ", ".join(missing),
+                    f"{where}: point {listed} is not defined before this group; defined so far: "
+                    f"{', '.join(sorted(known))}",
+                    f"{where}：点 {listed} 在此杆组之前未定义；已定义的点：{'、'.join(sorted(known))}")
         for p in makes:
             if p in known:
-                raise ValueError(f"{where}: point '{p}' is already defined; choose a new name")
+                out.add(("groups", i, "name" if g.type == "point" else "joint"), p,
+                        f"{where}: point '{p}' is already defined; choose a new name",
+                        f"{where}：点 '{p}' 已定义；请另取新名")
         if g.type == "point":
             if g.link not in members:
-                raise ValueError(f"{where}: link '{g.link}' is not defined before this point; "
-                                 f"links so far: {', '.join(members)}")
-            if g.origin not in members[g.link]:
-                raise ValueError(f"{where}: origin '{g.origin}' is not a point of link '{g.link}' "
-                                 f"(its points: {', '.join(members[g.link])})")
+                out.add(("groups", i, "link"), g.link,
+                        f"{where}: link '{g.link}' is not defined before this point; links so "
+                        f"far: {', '.join(members)}",
+                        f"{where}：构件 '{g.link}' 在此点之前未定义；已有构件：{'、'.join(members)}")
+            elif g.origin not in members[g.link]:
+                out.add(("groups", i, "origin"), g.origin,
+                        f"{where}: origin '{g.origin}' is not a point of link '{g.link}' (its "
+                        f"points: {', '.join(members[g.link])})",
+                        f"{where}：origin '{g.origin}' 不是构件 '{g.link}' 上的点（其上的点："
+                        f"{'、'.join(members[g.link])}）")
         else:
             if len(set(g.links)) != 2:
-                raise ValueError(f"{where}: the two links need different ids")
+                out.add(("groups", i, "links"), ", ".join(g.links),
+                        f"{where}: the two links need different ids",
+                        f"{where}：两个构件须有不同的编号")
             for link in g.links:
                 if link in members:
-                    raise ValueError(f"{where}: link '{link}' is already used; each group adds "
-                                     "two new links")
-        if g.type == "RRR" and min(g.lengths_mm) <= 0:
-            raise ValueError(f"{where}: lengths_mm must both be > 0")
+                    out.add(("groups", i, "links"), ", ".join(g.links),
+                            f"{where}: link '{link}' is already used; each group adds two new links",
+                            f"{where}：构件 '{link}' 已被使用；每个杆组增加两个新构件")
+                    break
         for link, pts in links:
             lst = members.setdefault(link, [])
             lst.extend(p for p in pts if p not in lst)
         known.update(makes)
     if FRAME_LINK in members:
-        raise ValueError(f"link '{FRAME_LINK}' is the frame (the course numbers it 1); number the "
-                         "moving links from 2 (the crank) on")
-    out = s.output
-    if out.point is not None and out.point not in known:
-        raise ValueError(f"output.point '{out.point}' is not a point of the linkage")
-    if out.link is not None and out.link not in members:
-        raise ValueError(f"output.link '{out.link}' is not a moving link; links: {', '.join(members)}")
+        out.add(("crank", "link"), FRAME_LINK,
+                f"link '{FRAME_LINK}' is the frame (the course numbers it 1); number the moving "
+                "links from 2 (the crank) on",
+                f"构件 '{FRAME_LINK}' 是机架（课程中编号为 1）；活动构件从 2（曲柄）起编号")
+    o = s.output
+    if o.point is not None and o.point not in known:
+        out.add(("output", "point"), o.point,
+                f"output.point '{o.point}' is not a point of the linkage; its points: "
+                f"{', '.join(sorted(known))}",
+                f"output.point '{o.point}' 不是机构上的点；机构上的点：{'、'.join(sorted(known))}")
+    if o.link is not None and o.link not in members:
+        out.add(("output", "link"), o.link,
+                f"output.link '{o.link}' is not a moving link; links: {', '.join(members)}",
+                f"output.link '{o.link}' 不是活动构件；活动构件：{'、'.join(members)}")
     for i, m in enumerate(s.masses):
         if m.link not in members:
-            raise ValueError(f"masses[{i}].link '{m.link}' is not a moving link; links: "
-                             f"{', '.join(members)}")
-        if m.com not in members[m.link]:
-            raise ValueError(f"masses[{i}].com '{m.com}' is not a point of link '{m.link}' "
-                             f"(its points: {', '.join(members[m.link])}); add it with a `point` group")
+            out.add(("masses", i, "link"), m.link,
+                    f"masses[{i}].link '{m.link}' is not a moving link; links: {', '.join(members)}",
+                    f"masses[{i}].link '{m.link}' 不是活动构件；活动构件：{'、'.join(members)}")
+        elif m.com not in members[m.link]:
+            out.add(("masses", i, "com"), m.com,
+                    f"masses[{i}].com '{m.com}' is not a point of link '{m.link}' (its points: "
+                    f"{', '.join(members[m.link])}); add it with a `point` group",
+                    f"masses[{i}].com '{m.com}' 不是构件 '{m.link}' 上的点（其上的点："
+                    f"{'、'.join(members[m.link])}）；可用 `point` 杆组添加")
     for i, r in enumerate(s.resistances):
         if r.link not in members or r.point not in members[r.link]:
-            raise ValueError(f"resistances[{i}]: point '{r.point}' is not a point of link "
-                             f"'{r.link}'")
-        if (r.active_mm is not None and out.link is not None) or \
-                (r.active_deg is not None and out.point is not None):
-            raise ValueError(f"resistances[{i}]: use active_mm for a point output and "
-                             "active_deg for a link output")
-        window = r.active_mm or r.active_deg
-        if window is not None and not window[0] < window[1]:
-            raise ValueError(f"resistances[{i}]: the active window needs from < to")
+            field = "link" if r.link not in members else "point"
+            out.add(("resistances", i, field), r.point if field == "point" else r.link,
+                    f"resistances[{i}]: point '{r.point}' is not a point of link '{r.link}'",
+                    f"resistances[{i}]：点 '{r.point}' 不是构件 '{r.link}' 上的点")
+        if r.active_mm is not None and o.link is not None:
+            out.add(("resistances", i, "active_mm"), r.active_mm,
+                    f"resistances[{i}]: the output is a link (output.link): give its window as "
+                    "active_deg, not active_mm",
+                    f"resistances[{i}]：输出为构件（output.link）：作用区间应以 active_deg 给出，而不是 active_mm")
+        if r.active_deg is not None and o.point is not None:
+            out.add(("resistances", i, "active_deg"), r.active_deg,
+                    f"resistances[{i}]: the output is a point (output.point): give its window as "
+                    "active_mm, not active_deg",
+                    f"resistances[{i}]：输出为点（output.point）：作用区间应以 active_mm 给出，而不是 active_deg")
+        for key, window in (("active_mm", r.active_mm), ("active_deg", r.active_deg)):
+            if window is not None and not window[0] < window[1]:
+                out.add(("resistances", i, key), window,
+                        f"resistances[{i}]: the active window needs from < to",
+                        f"resistances[{i}]：作用区间须满足 起点 < 终点")
+    if own:
+        out.raise_any()
     return members
 
 
