@@ -249,20 +249,23 @@ def check(
         try:
             data = read_brief_data(path)       # read once, every group checked on it
             labels = brief_groups(path, data=data)
-            variant = load_variant(path, None, data=data)   # the default group, if any
         except BriefError as exc:
             bad += 1
             _err(exc.text(language))
             continue
-        failed = False
-        for label in labels:                   # every group, each one's problems
-            if label != variant.group:
-                try:
-                    load_variant(path, label, data=data)
-                except BriefError as exc:
-                    failed = True
-                    _err(exc.text(language))
-        if failed:
+        variant, shown = None, []
+        for label in (None, *labels):          # as run by default, then every group
+            if variant is not None and label == variant.group:
+                continue
+            try:
+                checked = load_variant(path, label, data=data)
+                variant = variant or checked
+            except BriefError as exc:          # each group's problems, each message once
+                text = exc.text(language)
+                if text not in shown:
+                    shown.append(text)
+                    _err(text)
+        if shown or variant is None:
             bad += 1
             continue
         groups = f", groups {', '.join(labels)}" if labels else ""
