@@ -6,6 +6,7 @@ against the definition of a partition, statuses against briefs known to be good 
 """
 from __future__ import annotations
 
+import csv
 import io
 import json
 from pathlib import Path
@@ -146,11 +147,17 @@ def test_run_with_a_group_states_it(tmp_path):
 # ------------------------------------------------------------------------------- batch
 def test_plan_all_groups_counts_every_variant():
     briefs = collect_briefs([DESIGNS])
-    assert briefs == sorted(DESIGNS.glob("*.yaml"))
+    assert briefs == sorted(DESIGNS.rglob("*.yaml"))    # designs/class/ included
     expected = 0
     for path in briefs:
         data = yaml.safe_load(path.read_text(encoding="utf-8"))
-        expected += len(data["groups"]["variants"]) if "groups" in data else 1
+        if "groups" not in data:
+            expected += 1
+        elif "file" in data["groups"]:                   # a class table: one group per row
+            with open(path.parent / data["groups"]["file"], encoding="utf-8", newline="") as f:
+                expected += len(list(csv.reader(f))) - 1
+        else:
+            expected += len(data["groups"]["variants"])
     jobs = plan_jobs(briefs, "all")
     assert len(jobs) == expected > len(briefs)
     assert len({j.run_id for j in jobs}) == len(jobs)
@@ -256,4 +263,5 @@ def test_index_markdown_escapes_user_text():
                            "files": (), "summary": (("r | x", "5"),)}], Path("."))
     md = index_markdown(doc, "en")
     row = md.splitlines()[-1]
-    assert row.count(" | ") == 6            # the user's | did not add a column
+    assert row.count(" | ") == 7            # the user's | did not add a column (8 columns: the
+    #                                         student's was added after the group's)

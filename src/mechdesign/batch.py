@@ -343,6 +343,7 @@ def index_document(jobs: list[Job], results: list[dict], out_root: Path,
             "machine": r.get("machine") or "", "status": r["status"], "exit_code": r["exit_code"],
             "message": r.get("message") or "", "folder": job.run_id if r["status"] == "ok" else None,
             "links": links, "summary": [list(x) for x in r.get("summary", ())],
+            "student": dict(zip(("name", "number", "class"), r.get("student") or ("", "", ""))),
             "warnings": list(r.get("warnings", ())), "seconds": round(r.get("seconds") or 0.0, 2)})
     totals = Counter(r["status"] for r in runs)
     return {"schema": "mechdesign.batch/1", "shard": list(shard_of) if shard_of else None,
@@ -356,6 +357,14 @@ def _cell(text: str) -> str:
     from .render.fmt import md_text
 
     return md_text(str(text))
+
+
+def _student_cell(run: dict) -> str:
+    student = run.get("student") or {}
+    name, number = student.get("name") or "", student.get("number") or ""
+    if not name and not number:
+        return "—"
+    return _cell(f"{name} ({number})" if number else name)
 
 
 def index_markdown(doc: dict, lang: str = "zh") -> str:
@@ -373,9 +382,10 @@ def index_markdown(doc: dict, lang: str = "zh") -> str:
         head += (f"本索引为第 {i}/{n} 分片。\n\n" if zh else f"This index is shard {i} of {n}.\n\n")
     status_text = ({"ok": "✓ 成功", "invalid": "✗ 无效", "failed": "✗ 失败"} if zh else
                    {"ok": "✓ ok", "invalid": "✗ invalid", "failed": "✗ failed"})
-    cols = (["状态", "任务书", "分组", "机器", "主要结果", "报告", "用时 [s]"] if zh else
-            ["Status", "Brief", "Group", "Machine", "Key results", "Report", "Time [s]"])
-    lines = ["| " + " | ".join(cols) + " |", "|" + "|".join([":--"] * 6 + ["--:"]) + "|"]
+    cols = (["状态", "任务书", "分组", "学生（学号）", "机器", "主要结果", "报告", "用时 [s]"] if zh else
+            ["Status", "Brief", "Group", "Student (number)", "Machine", "Key results", "Report",
+             "Time [s]"])
+    lines = ["| " + " | ".join(cols) + " |", "|" + "|".join([":--"] * 7 + ["--:"]) + "|"]
     problems = []
     for run in doc["runs"]:
         summary = "; ".join(f"{_cell(k)} = {_cell(v)}" for k, v in run["summary"]) or "—"
@@ -385,7 +395,8 @@ def index_markdown(doc: dict, lang: str = "zh") -> str:
         warn = f" ({len(run['warnings'])} ⚠)" if run["warnings"] else ""
         lines.append("| " + " | ".join([
             status_text.get(run["status"], run["status"]) + warn, _cell(run["brief"]),
-            _cell(run["group"]) if run["group"] is not None else "—", _cell(run["machine"] or "—"),
+            _cell(run["group"]) if run["group"] is not None else "—", _student_cell(run),
+            _cell(run["machine"] or "—"),
             summary, links, f"{run['seconds']:.1f}"]) + " |")
         if run["status"] != "ok":
             problems.append(f"### {_cell(run['id'])}\n\n```\n{run['message'].replace('```', '`​``')}\n```\n")
@@ -409,3 +420,67 @@ def default_jobs() -> int:
         return max(1, len(os.sched_getaffinity(0)))
     except AttributeError:  # pragma: no cover - not Linux
         return max(1, os.cpu_count() or 1)
+
+
+# ----------------------------------------------------------------------------- answers
+def answers_document(index: dict) -> dict:
+    """The teacher's answer table from a batch index: one row per run with its group, the
+    student's name, number and class, its status and the headline results (the machines'
+    registry ``summary`` rows, as the index shows them), columns in first-seen order."""
+    columns: list[str] = []
+    rows = []
+    for run in index["runs"]:
+        values = {}
+        for label, value in run["summary"]:
+            if label not in columns:
+                columns.append(label)
+            values[label] = value
+        student = run.get("student") or {}
+        rows.append({"group": run["group"], "name": student.get("name", ""),
+                     "number": student.get("number", ""), "class": student.get("class", ""),
+                     "brief": run["brief"], "status": run["status"], "results": values})
+    return {"columns": columns, "rows": rows}
+
+
+def answers_markdown(doc: dict, lang: str = "zh") -> str:
+    """answers.md: the answer table (Markdown)."""
+    zh = lang == "zh"
+    head = ["分组", "姓名", "学号", "班级", "任务书", "状态"] if zh else \
+        ["Group", "Name", "Number", "Class", "Brief", "Status"]
+    status_text = ({"ok": "✓", "invalid": "✗ 无效", "failed": "✗ 失败"} if zh else
+                   {"ok": "✓", "invalid": "✗ invalid", "failed": "✗ failed"})
+    lines = ["# 答案表 Answer table\n" if zh else "# Answer table\n",
+             ("每个分组的主要结果（与学生的计算对照）。\n" if zh else
+              "The headline results of every group, to check the students' work against.\n"),
+             "| " + " | ".join(head + [_cell(c) for c in doc["columns"]]) + " |",
+             "|" + "|".join([":--"] * len(head) + ["--:"] * len(doc["columns"])) + "|"]
+    for row in doc["rows"]:
+        cells = [row["group"] if row["group"] is not None else "—", row["name"] or "—",
+                 row["number"] or "—", row["class"] or "—", row["brief"]]
+        lines.append("| " + " | ".join([_cell(c) for c in cells]
+                                       + [status_text.get(row["status"], row["status"])]
+                                       + [_cell(row["results"].get(c, "—")) for c in doc["columns"]])
+                     + " |")
+    return "\n".join(lines) + "\n"
+
+
+def write_answers(doc: dict, out_root: Path, lang: str = "zh", stem: str = "answers") -> list[Path]:
+    """Write ``stem``.md and ``stem``.csv (UTF-8 with a BOM, so Excel reads the Chinese)
+    into ``out_root``, each atomically."""
+    import csv
+
+    from .fileio import atomic_open
+
+    md = write_text(out_root / f"{stem}.md", answers_markdown(doc, lang), encoding="utf-8")
+    path = out_root / f"{stem}.csv"
+    zh = lang == "zh"
+    head = ["分组", "姓名", "学号", "班级", "任务书", "状态"] if zh else \
+        ["group", "name", "number", "class", "brief", "status"]
+    with atomic_open(path, "w", encoding="utf-8-sig", newline="") as handle:
+        writer = csv.writer(handle)
+        writer.writerow(head + doc["columns"])
+        for row in doc["rows"]:
+            writer.writerow([row["group"] or "", row["name"], row["number"], row["class"],
+                             row["brief"], row["status"]]
+                            + [row["results"].get(c, "") for c in doc["columns"]])
+    return [md, path]

@@ -163,8 +163,12 @@ def run(
 def batch(
     paths: list[Path] = typer.Argument(..., help="Briefs and folders of briefs (*.yaml, searched "
                                        "recursively), e.g. designs/ or class/*.yaml."),
-    groups: str = typer.Option("default", "--groups", help="Which data groups to run: default "
-                               "(each brief's default), all, or labels such as 1,3,III."),
+    groups: Optional[str] = typer.Option(None, "--groups", help="Which data groups to run: "
+                                         "default (each brief's default), all, or labels such "
+                                         "as 1,3,III (default: default; all with --answers)."),
+    answers: bool = typer.Option(False, "--answers", help="Also write answers.md and answers.csv: "
+                                 "every group's headline results with the student's name and "
+                                 "number, to check students' work against."),
     jobs: Optional[int] = typer.Option(None, "--jobs", "-j", min=1,
                                        help="Runs at once, in worker processes (default: the "
                                             "number of CPUs)."),
@@ -182,19 +186,21 @@ def batch(
                                              help="Folder of report templates to use instead "
                                                   "of the shipped ones."),
 ):
-    """Run many briefs (and their groups) in parallel and write an index of the reports.
+    """Run many briefs (and their groups) in parallel and write an index of the reports
+    (and with --answers the answer table of every group).
 
     Continues past failing briefs; exit 0 when every run succeeded, 2 when a brief was
     invalid (or its design infeasible), 1 when a report failed otherwise."""
     from .allocator import prefer_heap
-    from .batch import (BatchError, Progress, collect_briefs, default_jobs, exit_code,
-                        index_document, parse_shard, plan_jobs, run_batch, shard, write_index)
+    from .batch import (BatchError, Progress, answers_document, collect_briefs, default_jobs,
+                        exit_code, index_document, parse_shard, plan_jobs, run_batch, shard,
+                        write_answers, write_index)
 
     prefer_heap()   # inherited by the forked workers
     fmt = _parse_formats(formats)
     try:
         which = parse_shard(shard_text)
-        planned = plan_jobs(collect_briefs(paths), groups)
+        planned = plan_jobs(collect_briefs(paths), groups or ("all" if answers else "default"))
     except BatchError as exc:
         _err(f"error: {exc}")
         raise typer.Exit(EXIT_INVALID)
@@ -215,6 +221,10 @@ def batch(
     stem = "index" if which is None else f"index.shard-{which[0]}-of-{which[1]}"
     index_lang = lang.value if lang else "zh"
     written = write_index(doc, out, index_lang, stem)
+    if answers:
+        written += write_answers(answers_document(doc), out, index_lang,
+                                 "answers" if which is None else
+                                 f"answers.shard-{which[0]}-of-{which[1]}")
     t = doc["totals"]
     _err(f"{t['ok']} ok, {t['invalid']} invalid, {t['failed']} failed in "
          f"{time.perf_counter() - start:.1f} s")
@@ -239,21 +249,33 @@ def check(
     per brief; exit 0 when all are valid, 2 when any is not. Only the brief is checked
     (fields and the rules between them): whether its data admit a design (a linkage
     synthesis, an assembly) is asked by `mechdesign run`."""
-    from .brief.loader import BriefError, load_variant, read_brief_data
+    from .brief.loader import BriefError, brief_groups, load_variant, read_brief_data
     from .runner import brief_language
 
     bad = 0
     for path in briefs:
+        language = brief_language(path, lang.value if lang else None)
         try:
             data = read_brief_data(path)       # read once, every group checked on it
-            variant = load_variant(path, None, data=data)   # the default group, if any
-            labels = variant.groups
-            for label in labels:
-                if label != variant.group:
-                    load_variant(path, label, data=data)
+            labels = brief_groups(path, data=data)
         except BriefError as exc:
             bad += 1
-            _err(exc.text(brief_language(path, lang.value if lang else None)))
+            _err(exc.text(language))
+            continue
+        variant, shown = None, []
+        for label in (None, *labels):          # as run by default, then every group
+            if variant is not None and label == variant.group:
+                continue
+            try:
+                checked = load_variant(path, label, data=data)
+                variant = variant or checked
+            except BriefError as exc:          # each group's problems, each message once
+                text = exc.text(language)
+                if text not in shown:
+                    shown.append(text)
+                    _err(text)
+        if shown or variant is None:
+            bad += 1
             continue
         groups = f", groups {', '.join(labels)}" if labels else ""
         typer.echo(f"ok: {path} ({variant.brief.machine}{groups})")

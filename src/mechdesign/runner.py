@@ -31,6 +31,8 @@ class Outcome:
     files: tuple[str, ...] = ()
     warnings: tuple[str, ...] = ()
     summary: tuple[tuple[str, str], ...] = ()
+    #: the student's name, number and class (the brief's ``report`` section, per group)
+    student: tuple[str, str, str] = ("", "", "")
     seconds: float = 0.0
     compute_seconds: float = 0.0
     traceback: str = ""
@@ -106,7 +108,7 @@ def run_one(brief: Path, *, out_dir: Path | None = None, lang: str | None = None
     into place only when complete, so a failure leaves an earlier report as it was.
     ``parallel``: figures and sheets may be written by a helper process (a single run;
     a batch already keeps every core busy)."""
-    from .brief.loader import BriefError, load_variant
+    from .brief.loader import BriefError, load_variant, student_of
     from .machines import get_machine, stages_for
     from .publish import ForeignFiles, foreign
     from .pipeline import run_stages
@@ -119,9 +121,11 @@ def run_one(brief: Path, *, out_dir: Path | None = None, lang: str | None = None
         variant = load_variant(brief, group)
     except BriefError as exc:
         return Outcome(**base, status="invalid", exit_code=EXIT_INVALID,
-                       message=exc.text(brief_language(brief, lang)))
+                       message=exc.text(brief_language(brief, lang)),
+                       student=student_of(brief, group))
     b, label = variant.brief, variant.group
     base["group"] = label
+    base["student"] = (b.report.student, b.report.student_id, b.report.class_name)
     language = lang or b.report.language
     if out_dir is None:
         # a group asked for by name gets its own folder; the default group keeps the brief's

@@ -11,6 +11,9 @@ carry the table as a top-level ``groups`` section::
         III:                        # labels may be numbers or text (方案 I, II, III)
           pusher: {stroke_H_mm: 240}
 
+or, for a whole class, ``groups: {file: class.csv}``: the same table as a CSV or XLSX file
+next to the brief, one row per group (see :mod:`mechdesign.brief.class_table`).
+
 A variant overrides fields of the brief: a key is a dotted path (``section.field``,
 list items by index: ``cam.programme.0.angle_deg``) or a nested mapping merged into
 the section. Overrides are applied to the YAML data *before* validation, so a wrong
@@ -19,7 +22,7 @@ value in a group is reported at ``groups.variants.LABEL.path``.
 from __future__ import annotations
 
 import copy
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import Any
 
 #: Top-level key of the groups table in a brief.
@@ -39,10 +42,18 @@ class GroupError(ValueError):
 class GroupTable:
     default: str | None
     variants: dict[str, dict]      # label (as text) → overrides
+    #: label → field path → where a class table file sets it ("class.csv line 4 (group 3),
+    #: column pusher.stroke_H_mm"); empty for an inline table (``groups.variants.…``)
+    origin: dict[str, dict[str, str]] = field(default_factory=dict)
 
     @property
     def labels(self) -> list[str]:
         return list(self.variants)
+
+    def where(self, label: str, path: str) -> str:
+        """Where group ``label`` sets the field at dotted ``path``, for messages."""
+        found = self.origin.get(label, {}).get(path)
+        return found if found is not None else f"{GROUPS_KEY}.variants.{label}.{path}"
 
 
 def _label(value: Any) -> str | None:
@@ -60,11 +71,13 @@ def parse_groups(raw: Any) -> GroupTable:
                          "a mapping with `variants` (label → overrides) and an optional `default`")
     extra = sorted(str(k) for k in raw if k not in ("default", "variants"))
     if extra:
-        raise GroupError(f"{where}.{extra[0]}", "unknown field", "allowed here: default, variants")
+        raise GroupError(f"{where}.{extra[0]}", "unknown field", "allowed here: default, variants (or file, sheet, default for a "
+                         "class table file)")
     variants = raw.get("variants")
     if not isinstance(variants, dict) or not variants:
         raise GroupError(f"{where}.variants", "missing" if variants is None else repr(variants)[:60],
-                         "a non-empty mapping: group label → mapping of overridden fields")
+                         "a non-empty mapping: group label → mapping of overridden fields "
+                         "(or `file: class.csv`, a class table next to the brief)")
     table: dict[str, dict] = {}
     for key, overrides in variants.items():
         label = _label(key)
@@ -114,22 +127,24 @@ def apply_group(data: dict, table: GroupTable, label: str) -> tuple[dict, dict[s
     base = f"{GROUPS_KEY}.variants.{label}"
     for path, value in _flatten(table.variants[label]):
         dotted = ".".join(map(str, path))
+        here = table.where(label, dotted)
         if path[0] in ("machine", GROUPS_KEY):
-            raise GroupError(f"{base}.{dotted}", repr(value)[:60],
+            raise GroupError(here, repr(value)[:60],
                              "a group cannot change the machine or the groups table")
         node: Any = result
         for i, part in enumerate(path[:-1]):
-            node = _step(node, part, where=f"{base}.{'.'.join(map(str, path[:i + 1]))}")
+            node = _step(node, part, where=here if dotted in table.origin.get(label, {})
+                         else f"{base}.{'.'.join(map(str, path[:i + 1]))}")
         last = path[-1]
         if isinstance(node, list):
-            index = _index(node, last, f"{base}.{dotted}")
+            index = _index(node, last, here)
             node[index] = copy.deepcopy(value)
         elif isinstance(node, dict):
             node[last] = copy.deepcopy(value)
         else:
-            raise GroupError(f"{base}.{dotted}", repr(node)[:60],
+            raise GroupError(here, repr(node)[:60],
                              f"{'.'.join(map(str, path[:-1]))} is a value, not a section")
-        located[dotted] = f"{base}.{dotted}"
+        located[dotted] = here
     return result, located
 
 

@@ -28,6 +28,7 @@ import yaml
 from pydantic import BaseModel, ValidationError
 
 from ..registry import Lookup, resolve
+from .class_table import TableError, read_group_file
 from .groups import GROUPS_KEY, GroupError, GroupTable, apply_group, choose, parse_groups
 
 
@@ -624,6 +625,9 @@ def _yaml_problem(exc: yaml.YAMLError, text: str) -> BriefProblem:
     return BriefProblem(where, "invalid YAML", problem, f"YAML 格式错误：{problem}")
 
 
+_MISSING = object()
+
+
 @dataclass(frozen=True)
 class Variant:
     """A validated brief, the group it was built for (None: the brief as written) and
@@ -637,18 +641,28 @@ class Variant:
 
 
 def _groups_of(data: Any, source: str) -> tuple[Any, GroupTable | None]:
+    """The brief's data without its ``groups`` section, and the groups table (read from
+    its class table file for ``groups: {file: …}``, relative to the brief at ``source``)."""
     if not isinstance(data, dict) or GROUPS_KEY not in data:
         return data, None
     data = dict(data)
+    raw = data.pop(GROUPS_KEY)
     try:
-        return data, parse_groups(data.pop(GROUPS_KEY))
+        if isinstance(raw, dict) and "file" in raw:
+            machine = data.get("machine")
+            model = BRIEF_MODELS.get(machine) if isinstance(machine, str) else None
+            return data, read_group_file(raw, source, model)
+        return data, parse_groups(raw)
     except GroupError as exc:
         raise BriefError(source, [BriefProblem(exc.path, exc.value, exc.allowed)]) from None
+    except TableError as exc:   # every problem of a class table file
+        raise BriefError(source, [BriefProblem(p.path, p.value, p.allowed) for p in exc.problems]) from None
 
 
-def brief_groups(path: str | Path) -> tuple[str, ...]:
-    """The group labels a brief carries (empty when it has no ``groups`` table)."""
-    _, table = _groups_of(read_brief_data(path), str(path))
+def brief_groups(path: str | Path, *, data: Any = _MISSING) -> tuple[str, ...]:
+    """The group labels a brief carries (empty when it has no ``groups`` table).
+    ``data``: the file's YAML data when already read."""
+    _, table = _groups_of(read_brief_data(path) if data is _MISSING else data, str(path))
     return tuple(table.labels) if table is not None else ()
 
 
@@ -666,8 +680,6 @@ def _has(data: Any, parts: list[str]) -> bool:
             return False
     return True
 
-
-_MISSING = object()
 
 
 def _with_created(original: Any, located: dict[str, str]) -> dict[str, str]:
@@ -700,6 +712,23 @@ def load_variant(path: str | Path, group: str | None = None, *, data: Any = _MIS
         raise BriefError(source, [BriefProblem(exc.path, exc.value, exc.allowed)]) from None
     brief = parse_brief(data, source, located)
     return Variant(brief, label, tuple(table.labels) if table is not None else (), located)
+
+
+def student_of(path: str | Path, group: str | None = None) -> tuple[str, str, str]:
+    """(name, number, class) from the ``report`` section of group ``group`` of a brief, read
+    without validating it (for the batch index of a brief that turned out invalid); empty
+    texts where the brief or the group cannot be read."""
+    try:
+        data, table = _groups_of(read_brief_data(path), str(path))
+        label = choose(table, group)
+        if label is not None:
+            data, _ = apply_group(data, table, label)
+    except (BriefError, GroupError):
+        return "", "", ""
+    report = data.get("report") if isinstance(data, dict) else None
+    report = report if isinstance(report, dict) else {}
+    return tuple("" if report.get(k) is None else str(report.get(k))      # type: ignore[return-value]
+                 for k in ("student", "student_id", "class"))
 
 
 def load_brief(path: str | Path, group: str | None = None) -> BaseModel:
@@ -742,5 +771,10 @@ GROUPS_SCHEMA = {
         "variants": {"type": "object", "minProperties": 1,
                      "description": "Group label → overridden fields (dotted paths such as "
                                     "pusher.stroke_H_mm, or nested sections)",
-                     "additionalProperties": {"type": ["object", "null"]}}},
-    "required": ["variants"]}
+                     "additionalProperties": {"type": ["object", "null"]}},
+        "file": {"type": "string", "pattern": "\\.(csv|xlsx|CSV|XLSX)$",
+                 "description": "A class table next to the brief (.csv or .xlsx): one row per "
+                                "group, a `group` column and dotted brief paths as columns"},
+        "sheet": {"type": "string", "description": "Sheet of the .xlsx file (default: the first)"}},
+    "oneOf": [{"required": ["variants"], "not": {"required": ["file"]}},
+              {"required": ["file"], "not": {"required": ["variants"]}}]}
