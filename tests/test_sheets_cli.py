@@ -33,6 +33,7 @@ EXPECTED = {
     "linkage_sixbar": ["analysis_A1"],  # generic linkage: its analysis sheet
     "die_cutter": ["analysis_A1", "cam_A2"],  # the toggle press and the gripper cam
     "slotter": ["analysis_A1", "cam_A2", "gear_A2"],  # the guide-bar six-bar, its cam and gear pair
+    "shaper_lengths": ["analysis_A1"],  # link-length form: no cam, no gear pair
 }
 
 

@@ -270,16 +270,22 @@ class GuideBarBrief(StrictModel):
                         "the drive ends with the gear pair z1/z2 that turns the crank: add a gear_pair section",
                         "传动装置的最后一级是驱动曲柄的齿轮副 z1/z2：请给出 gear_pair")
         elif self.drive is not None and self.gear_pair.module_mm is None:
-            out.add(("gear_pair", "module_mm"), None,
+            out.add(("gear_pair", "module_mm"), MISSING,
                     "the module is needed with a drive section: the gear pair is its last stage",
                     "有传动装置（drive）时须给出模数：齿轮副是其最后一级")
         if self.cam is not None:
             sense = self.linkage.crank_rotation
-            if self.cam.rotation != sense:
+            if self.cam.rotation != sense and "rotation" in self.cam.model_fields_set:
                 out.add(("cam", "rotation"), self.cam.rotation,
                         f"the cam is on the crank shaft and turns with it: use {sense!r} "
                         f"(linkage.crank_rotation)",
                         f"凸轮装在曲柄轴上，随曲柄转动：应取 {sense!r}（linkage.crank_rotation）")
+            elif self.cam.rotation != sense:   # the cam's default sense: say so at the cam
+                out.add(("cam",), "…",
+                        f"the cam is on the crank shaft and turns with it: set cam.rotation: "
+                        f"{sense!r} (linkage.crank_rotation)",
+                        f"凸轮装在曲柄轴上，随曲柄转动：应设 cam.rotation: {sense!r}"
+                        "（linkage.crank_rotation）")
             n2 = self.linkage.crank_speed_n2_rpm
             if self.cam.speed_rpm is not None and self.cam.speed_rpm != n2:
                 out.add(("cam", "speed_rpm"), self.cam.speed_rpm,
