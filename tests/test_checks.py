@@ -249,7 +249,7 @@ def test_guide_bar_cross_field_problems_all_at_once_in_the_brief_language(machin
 
     res = CliRunner().invoke(app, ["check", str(path), "--lang", "zh"])
     assert res.exit_code == 2, res.output
-    for field, value in (("sheets.polygon_positions.1", "40"), ("gear_pair.module_mm", "None"),
+    for field, value in (("sheets.polygon_positions.1", "40"), ("gear_pair.module_mm", "缺少"),  # a left-out field: "missing"
                          ("cam.rotation", "'ccw'"), ("cam.speed_rpm", "55")):
         assert f"{field}：{value}" in res.output, field
     assert "4 处问题" in res.output and "凸轮装在曲柄轴上" in res.output

@@ -301,4 +301,4 @@ def test_the_frame_link_cannot_be_a_moving_link(tmp_path):
     data = yaml.safe_load(text)
     data["linkage"]["crank"]["link"] = 1
     (p,) = _problems(write(tmp_path, yaml.safe_dump(data, allow_unicode=True)))
-    assert p.path == "linkage" and "link '1' is the frame" in p.allowed
+    assert p.path == "linkage.crank.link" and "link '1' is the frame" in p.allowed

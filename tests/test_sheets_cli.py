@@ -35,6 +35,7 @@ EXPECTED = {
     "die_cutter": ["analysis_A1", "cam_A2"],  # the toggle press and the gripper cam
     "slotter": ["analysis_A1", "cam_A2", "gear_A2"],  # the guide-bar six-bar, its cam and gear pair
     "press": ["analysis_A1", "cam_A2", "gear_A2"],    # the press's six-bar, oil-pump cam, gear pair
+    "shaper_lengths": ["analysis_A1"],  # link-length form: no cam, no gear pair
 }
 
 

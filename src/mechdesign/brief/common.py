@@ -33,6 +33,18 @@ def parse_fraction(value, message: str):
     return float(Fraction(num) / (Fraction(den) if den is not None else 1))
 
 
+class _Missing:
+    """The value of a problem about a field the brief leaves out (shown as "missing")."""
+
+    def __repr__(self) -> str:
+        return "missing"
+
+    __str__ = __repr__
+
+
+MISSING = _Missing()
+
+
 class Problems:
     """The cross-field problems of one brief section, collected so that a model validator
     reports every one of them at once, each at its exact field path (``loc`` relative to

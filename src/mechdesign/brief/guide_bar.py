@@ -4,26 +4,172 @@ their briefs (cam on the crank shaft, drive ending with the gear pair, analysis,
 from __future__ import annotations
 
 from dataclasses import dataclass
+import math
 from typing import ClassVar, Literal, Optional
 
 from pydantic import Field, field_validator, model_validator
 
 from ..lazy import np
 from .cam import CamParams, CamSection, cam_to_si
-from .common import (AnalysisSettings, Problems, ReportMeta, SheetSettings, StrictModel,
+from .common import (MISSING, AnalysisSettings, Problems, ReportMeta, SheetSettings, StrictModel,
                      parse_fraction)
 from .drive import DriveParams, DriveSection, DriveStage, check_material, drive_to_si
 
 
 class GuideBarMasses(StrictModel):
-    """Mass properties (质量参数); all other links are massless."""
+    """Mass properties (质量参数); all other links are massless. Each mass may be given as a
+    mass in kg or as a weight in N (the course tables give G4, G6), exactly one of the two;
+    a weight is divided by analysis.gravity."""
 
-    guide_bar_m4_kg: float = Field(ge=0, le=10000, description="Guide-bar mass m4 [kg]")
+    guide_bar_m4_kg: Optional[float] = Field(None, ge=0, le=10000, description=(
+        "Guide-bar mass m4 [kg] (or guide_bar_G4_N)"))
+    guide_bar_G4_N: Optional[float] = Field(None, ge=0, le=1e5, description=(
+        "Guide-bar weight G4 [N] (or guide_bar_m4_kg)"))
     guide_bar_J_S4_kgm2: float = Field(ge=0, le=10000,
                                        description="Guide-bar moment of inertia about S4, J_S4 [kg·m²]")
-    ram_m6_kg: float = Field(ge=0, le=100000, description="Ram mass m6 [kg]")
+    ram_m6_kg: Optional[float] = Field(None, ge=0, le=100000, description="Ram mass m6 [kg] (or ram_G6_N)")
+    ram_G6_N: Optional[float] = Field(None, ge=0, le=1e6, description="Ram weight G6 [N] (or ram_m6_kg)")
     gear2_weight_G2_N: float = Field(0.0, ge=0, le=1e6,
-                                     description="Weight of gear 2 on the crank shaft, acting at O2, G2 [N]")
+                                     description="Weight of gear 2 on the crank shaft, acting at O2, G2 [N] (or gear2_m2_kg)")
+    gear2_m2_kg: Optional[float] = Field(None, ge=0, le=1e5, description=(
+        "Mass of gear 2 on the crank shaft [kg] (or gear2_weight_G2_N)"))
+
+    @model_validator(mode="after")
+    def _mass_or_weight(self):
+        out = Problems(self)
+        for mass, weight in (("guide_bar_m4_kg", "guide_bar_G4_N"), ("ram_m6_kg", "ram_G6_N"),
+                             ("gear2_m2_kg", "gear2_weight_G2_N")):
+            given = [k for k in (mass, weight) if k in self.model_fields_set and getattr(self, k) is not None]
+            if len(given) == 2:
+                out.add(weight, getattr(self, weight), f"give either {mass} or {weight}, not both",
+                        f"{mass} 与 {weight} 只能给出其一")
+            elif not given and weight != "gear2_weight_G2_N":
+                out.add(mass, MISSING, f"give the mass {mass} [kg] or the weight {weight} [N]",
+                        f"须给出质量 {mass} [kg] 或重量 {weight} [N]")
+        out.raise_any()
+        return self
+
+    def si(self, g: float) -> tuple[float, float, float]:
+        """(m4 [kg], m6 [kg], G2 [N]) with weights divided (and a gear mass multiplied) by g."""
+        m4 = self.guide_bar_m4_kg if self.guide_bar_m4_kg is not None else self.guide_bar_G4_N / g
+        m6 = self.ram_m6_kg if self.ram_m6_kg is not None else self.ram_G6_N / g
+        g2 = self.gear2_weight_G2_N if self.gear2_m2_kg is None else self.gear2_m2_kg * g
+        return m4, m6, g2
+
+
+class GuideBarLinkage(StrictModel):
+    """Guide-bar mechanism data (导杆机构), in either of the forms the course tables use:
+    the stroke H and the time ratio K (synthesis), or the link lengths (the crank L_O2A and
+    the guide bar L_O3B; H, K, θ and ψ then follow). The frame L_O2O3 is given in both; the
+    rod as a length or as a ratio of L_O3B; the ram guide's distance L_O3M given or by the
+    rule (through the mid-point of the sagitta of B's arc). Each machine adds its rod."""
+
+    ROD: ClassVar[str] = "BF"
+
+    stroke_H_mm: Optional[float] = Field(None, gt=0, le=5000, description=(
+        "Ram stroke H [mm] (synthesis form, with time_ratio_K)"))
+    time_ratio_K: Optional[float] = Field(None, gt=1.0, lt=3.0, description=(
+        "Time ratio K (行程速比系数), 1 < K < 3 (synthesis form, with stroke_H_mm)"))
+    crank_O2A_mm: Optional[float] = Field(None, gt=0, le=10000, description=(
+        "Crank length L_O2A [mm] (link-length form, with guide_bar_O3B_mm; then H and K are derived)"))
+    guide_bar_O3B_mm: Optional[float] = Field(None, gt=0, le=20000, description=(
+        "Guide-bar length L_O3B [mm] (link-length form, with crank_O2A_mm)"))
+    guide_O3M_mm: Optional[float] = Field(None, gt=0, le=20000, description=(
+        "Distance L_O3M of the ram guide line from O3 [mm]; default: through the mid-point of "
+        "the sagitta of B's arc, L_O3B(1 + cos(ψ/2))/2"))
+
+    def rod_fields(self) -> tuple[str, str]:
+        return f"rod_ratio_{self.ROD}_O3B", f"rod_{self.ROD}_mm"
+
+    @model_validator(mode="after")
+    def _form(self):
+        """Either H and K or the link lengths; the rod as a ratio or a length; and the closed-form
+        feasibility of the lengths (crank shorter than the frame, bar long enough for the pin)."""
+        out = Problems(self)
+        hk = [k for k in ("stroke_H_mm", "time_ratio_K") if getattr(self, k) is not None]
+        ln = [k for k in ("crank_O2A_mm", "guide_bar_O3B_mm") if getattr(self, k) is not None]
+        ratio_f, rod_f = self.rod_fields()
+        d = self.frame_O2O3_mm
+        if hk and ln:
+            out.add(ln[0], getattr(self, ln[0]),
+                    "give either stroke_H_mm and time_ratio_K (synthesis) or crank_O2A_mm and "
+                    "guide_bar_O3B_mm (link lengths), not both: H and K follow from the lengths",
+                    "行程 H、行程速比系数 K（综合）与杆长 crank_O2A_mm、guide_bar_O3B_mm 只能给出一组："
+                    "H、K 由杆长算出")
+        elif len(hk) == 1 or len(ln) == 1:
+            missing = ({"stroke_H_mm", "time_ratio_K"} - set(hk)) if hk else \
+                ({"crank_O2A_mm", "guide_bar_O3B_mm"} - set(ln))
+            m = missing.pop()
+            out.add(m, MISSING, f"{m} is needed with {(hk or ln)[0]}", f"给出 {(hk or ln)[0]} 时须同时给出 {m}")
+        elif not hk and not ln:
+            out.add("stroke_H_mm", MISSING,
+                    "give stroke_H_mm and time_ratio_K, or the link lengths crank_O2A_mm and guide_bar_O3B_mm",
+                    "须给出 stroke_H_mm 与 time_ratio_K，或杆长 crank_O2A_mm 与 guide_bar_O3B_mm")
+        ratio, rod = getattr(self, ratio_f), getattr(self, rod_f)
+        if (ratio is None) == (rod is None):
+            out.add(ratio_f, MISSING if ratio is None else ratio, f"give the rod as {ratio_f} (L_{self.ROD}/L_O3B) or as {rod_f}, exactly one",
+                    f"连杆须以 {ratio_f}（L_{self.ROD}/L_O3B）或 {rod_f} 给出，且只给一个")
+        if out.items:
+            out.raise_any()
+        if ln:
+            r, bar = self.crank_O2A_mm, self.guide_bar_O3B_mm
+            if r >= d:
+                out.add("crank_O2A_mm", r,
+                        f"the crank L_O2A = {r:g} mm must be shorter than the frame L_O2O3 = {d:g} mm: "
+                        "otherwise the guide bar turns fully round and there is no quick return",
+                        f"曲柄 L_O2A = {r:g} mm 须短于机架 L_O2O3 = {d:g} mm，否则导杆整周转动，没有急回运动")
+                out.raise_any()
+            half = math.asin(r / d)
+        else:
+            theta = math.pi * (self.time_ratio_K - 1.0) / (self.time_ratio_K + 1.0)
+            half = theta / 2.0
+            r, bar = d * math.sin(half), self.stroke_H_mm / (2.0 * math.sin(half))
+        if bar < d + r:
+            if ln:
+                out.add("guide_bar_O3B_mm", bar,
+                        f"the guide bar L_O3B = {bar:g} mm is shorter than the crank pin's reach "
+                        f"L_O2O3 + L_O2A = {d + r:g} mm: the slider A would run off the bar; "
+                        f"lengthen the bar to at least {d + r:g} mm",
+                        f"导杆 L_O3B = {bar:g} mm 短于曲柄销的最远距离 L_O2O3 + L_O2A = {d + r:g} mm，"
+                        f"滑块 A 会滑出导杆：导杆至少取 {d + r:g} mm")
+            else:
+                need = 2.0 * math.sin(half) * (d + r)
+                out.add("stroke_H_mm", self.stroke_H_mm,
+                        f"with L_O2O3 = {d:g} mm and K = {self.time_ratio_K:g} the guide bar "
+                        f"L_O3B = H/(2 sin(ψ/2)) = {bar:.6g} mm is shorter than the crank pin's reach "
+                        f"L_O2O3 + L_O2A = {d + r:.6g} mm (the crank circle would leave the bar): "
+                        f"take H ≥ {need:.6g} mm or a shorter frame",
+                        f"L_O2O3 = {d:g} mm、K = {self.time_ratio_K:g} 时导杆 L_O3B = H/(2 sin(ψ/2)) = "
+                        f"{bar:.6g} mm 短于曲柄销的最远距离 L_O2O3 + L_O2A = {d + r:.6g} mm"
+                        f"（曲柄圆脱离导杆）：应取 H ≥ {need:.6g} mm 或减小机架长")
+        h = self.guide_O3M_mm
+        if h is not None and not out.items:
+            rod_len = rod if rod is not None else ratio * bar
+            low = bar * math.cos(half)
+            reach = max(abs(bar - h), abs(low - h))
+            if reach > rod_len:
+                out.add("guide_O3M_mm", h,
+                        f"the rod L_{self.ROD} = {rod_len:.6g} mm cannot reach the guide line at "
+                        f"L_O3M = {h:g} mm from B, which moves between {low:.6g} and {bar:.6g} mm from "
+                        f"O3 along the guide's normal: take L_O3M between {bar - rod_len:.6g} and "
+                        f"{low + rod_len:.6g} mm",
+                        f"连杆 L_{self.ROD} = {rod_len:.6g} mm 够不到 L_O3M = {h:g} mm 处的导路"
+                        f"（B 距 O3 在 {low:.6g}～{bar:.6g} mm 之间）：L_O3M 应在 {bar - rod_len:.6g}～"
+                        f"{low + rod_len:.6g} mm 之间")
+        out.raise_any()
+        return self
+
+    def derived(self) -> dict:
+        """H [mm], K, θ = ψ [rad], L_O2A, L_O3B [mm] in closed form (no numpy)."""
+        d = self.frame_O2O3_mm
+        if self.crank_O2A_mm is not None:
+            r, bar = self.crank_O2A_mm, self.guide_bar_O3B_mm
+            theta = 2.0 * math.asin(r / d)
+            return dict(stroke=2.0 * bar * r / d, K=(math.pi + theta) / (math.pi - theta),
+                        theta=theta, crank=r, bar=bar, given=True)
+        K = self.time_ratio_K
+        theta = math.pi * (K - 1.0) / (K + 1.0)
+        return dict(stroke=self.stroke_H_mm, K=K, theta=theta, crank=None, bar=None, given=False)
 
 
 class GearPair(StrictModel):
@@ -65,8 +211,9 @@ class GuideBarFlywheel(StrictModel):
     """Flywheel design data (飞轮设计)."""
 
     fluctuation_delta: float = Field(gt=0, lt=1, description="Allowed speed fluctuation [δ], a number or '1/25'")
-    shaft: Literal["pinion", "crank"] = Field(
-        "pinion", description="Shaft carrying the flywheel: pinion (O1, z1) or crank (O2)")
+    shaft: Optional[Literal["pinion", "crank"]] = Field(None, description=(
+        "Shaft carrying the flywheel: pinion (O1, z1) or crank (O2); default: pinion when the "
+        "brief has a gear_pair, else crank (the pinion shaft's speed needs the gear ratio)"))
     rim_diameter_mm: float = Field(500.0, gt=0, le=10000, description="Mean rim diameter D [mm]")
     rim_height_to_width: float = Field(1.5, gt=0, le=10, description="Rim height/width H/b")
     specific_weight_N_m3: float = Field(7.0e4, gt=0, le=3e5,
@@ -87,7 +234,9 @@ class GuideBarBrief(StrictModel):
     linkage: StrictModel
     masses: GuideBarMasses
     loads: StrictModel
-    gear_pair: GearPair
+    gear_pair: Optional[GearPair] = Field(None, description=(
+        "The gear pair z1/z2 driving the crank (optional; needed for a flywheel on the pinion "
+        "shaft and for a drive)"))
     flywheel: GuideBarFlywheel
     cam: Optional[CamSection] = Field(None, description=(
         "Cam on the crank shaft (设计凸轮轮廓曲线); it turns with the crank, at the crank speed"))
@@ -113,17 +262,33 @@ class GuideBarBrief(StrictModel):
             if len(chosen) == 2 and chosen[0] == chosen[1]:
                 out.add(("sheets", "polygon_positions"), list(chosen),
                         "give two different positions", "应给出两个不同的位置")
-        if self.drive is not None and self.gear_pair.module_mm is None:
-            out.add(("gear_pair", "module_mm"), None,
+        if self.gear_pair is None:
+            if self.flywheel.shaft == "pinion":
+                out.add(("flywheel", "shaft"), "pinion",
+                        "a flywheel on the pinion shaft needs the gear ratio z2/z1: add a gear_pair "
+                        "section or put the flywheel on the crank (shaft: crank)",
+                        "飞轮装在小齿轮轴上需要齿数比 z2/z1：请给出 gear_pair，或改为 shaft: crank")
+            if self.drive is not None:
+                out.add(("drive",), "…",
+                        "the drive ends with the gear pair z1/z2 that turns the crank: add a gear_pair section",
+                        "传动装置的最后一级是驱动曲柄的齿轮副 z1/z2：请给出 gear_pair")
+        elif self.drive is not None and self.gear_pair.module_mm is None:
+            out.add(("gear_pair", "module_mm"), MISSING,
                     "the module is needed with a drive section: the gear pair is its last stage",
                     "有传动装置（drive）时须给出模数：齿轮副是其最后一级")
         if self.cam is not None:
             sense = self.linkage.crank_rotation
-            if self.cam.rotation != sense:
+            if self.cam.rotation != sense and "rotation" in self.cam.model_fields_set:
                 out.add(("cam", "rotation"), self.cam.rotation,
                         f"the cam is on the crank shaft and turns with it: use {sense!r} "
                         f"(linkage.crank_rotation)",
                         f"凸轮装在曲柄轴上，随曲柄转动：应取 {sense!r}（linkage.crank_rotation）")
+            elif self.cam.rotation != sense:   # the cam's default sense: say so at the cam
+                out.add(("cam",), "…",
+                        f"the cam is on the crank shaft and turns with it: set cam.rotation: "
+                        f"{sense!r} (linkage.crank_rotation)",
+                        f"凸轮装在曲柄轴上，随曲柄转动：应设 cam.rotation: {sense!r}"
+                        "（linkage.crank_rotation）")
             n2 = getattr(self.linkage, self._crank_speed_field)
             if self.cam.speed_rpm is not None and self.cam.speed_rpm != n2:
                 out.add(("cam", "speed_rpm"), self.cam.speed_rpm,
@@ -156,7 +321,7 @@ def gear_to_si(g: GearPair) -> GearParams | None:
 
 def drive_to_si_with_gear(b: GuideBarBrief) -> DriveParams | None:
     """The drive section with the gear pair z1/z2 appended as its last stage."""
-    if b.drive is None:
+    if b.drive is None or b.gear_pair is None:
         return None
     g = b.gear_pair
     last = DriveStage(type="spur", z1=g.z1, z2=g.z2, module_mm=g.module_mm, open=g.open,
@@ -183,8 +348,8 @@ class GuideBarParams:
     G2: float                  # [N]
     cutting_force: float       # Fc [N]
     idle_travel_ratio: float
-    z1: int
-    z2: int
+    z1: int | None             # None: no gear pair
+    z2: int | None
     fluctuation: float         # [δ]
     flywheel_shaft: str        # "pinion" | "crank"
     rim_diameter: float        # [m]
@@ -196,25 +361,42 @@ class GuideBarParams:
     cam: CamParams | None = None
     gear: GearParams | None = None
     drive: DriveParams | None = None
+    crank: float | None = None         # L_O2A [m] when the brief gives the link lengths
+    guide_bar: float | None = None     # L_O3B [m], likewise
+    rod: float | None = None           # the rod's length [m] when given as a length
+    guide_height: float | None = None  # L_O3M [m] when given (else the mid-sagitta rule)
 
 
-def guide_bar_si(b: GuideBarBrief, rod_ratio: float) -> dict:
-    """The :class:`GuideBarParams` fields of brief ``b`` (the rod ratio's field is named
-    after each machine's rod)."""
+def guide_bar_si(b: GuideBarBrief) -> dict:
+    """The :class:`GuideBarParams` fields of brief ``b``: H and K as given, or derived in
+    closed form from the link lengths (which are then kept exactly, never recomputed)."""
     mm = 1e-3
     lk, ms = b.linkage, b.masses
     sense = -1.0 if lk.crank_rotation == "cw" else 1.0
+    ratio_f, rod_f = lk.rod_fields()
+    rod = getattr(lk, rod_f)
+    dv = lk.derived()
+    bar_mm = dv["bar"] if dv["given"] else dv["stroke"] / (2.0 * np.sin(dv["theta"] / 2.0))
+    rod_ratio = getattr(lk, ratio_f) if rod is None else rod / bar_mm
+    m4, m6, g2 = ms.si(b.analysis.gravity)
+    gp = b.gear_pair
+    shaft = b.flywheel.shaft or ("pinion" if gp is not None else "crank")
     return dict(
-        stroke=lk.stroke_H_mm * mm, time_ratio_K=lk.time_ratio_K, frame=lk.frame_O2O3_mm * mm,
+        stroke=dv["stroke"] * mm, time_ratio_K=dv["K"], frame=lk.frame_O2O3_mm * mm,
         rod_ratio=rod_ratio, com_ratio=lk.com_ratio_O3S4_O3B,
         crank_omega=sense * lk.crank_speed_n2_rpm * 2.0 * np.pi / 60.0,
-        crank_speed_rpm=lk.crank_speed_n2_rpm, m4=ms.guide_bar_m4_kg, J_S4=ms.guide_bar_J_S4_kgm2,
-        m6=ms.ram_m6_kg, G2=ms.gear2_weight_G2_N, cutting_force=b.loads.cutting_force_Fc_N,
-        idle_travel_ratio=b.loads.idle_travel_ratio, z1=b.gear_pair.z1, z2=b.gear_pair.z2,
-        fluctuation=b.flywheel.fluctuation_delta, flywheel_shaft=b.flywheel.shaft,
+        crank_speed_rpm=lk.crank_speed_n2_rpm, m4=m4, J_S4=ms.guide_bar_J_S4_kgm2,
+        m6=m6, G2=g2, cutting_force=b.loads.cutting_force_Fc_N,
+        idle_travel_ratio=b.loads.idle_travel_ratio, z1=None if gp is None else gp.z1,
+        z2=None if gp is None else gp.z2,
+        crank=None if dv["crank"] is None else dv["crank"] * mm,
+        guide_bar=None if dv["bar"] is None else dv["bar"] * mm,
+        rod=None if rod is None else rod * mm,
+        guide_height=None if lk.guide_O3M_mm is None else lk.guide_O3M_mm * mm,
+        fluctuation=b.flywheel.fluctuation_delta, flywheel_shaft=shaft,
         rim_diameter=b.flywheel.rim_diameter_mm * mm,
         rim_height_to_width=b.flywheel.rim_height_to_width,
         specific_weight=b.flywheel.specific_weight_N_m3, grid_points=b.analysis.grid_points,
         position_step=np.radians(b.analysis.position_step_deg), gravity=b.analysis.gravity,
         cam=None if b.cam is None else cam_to_si(b.cam, lk.crank_speed_n2_rpm),
-        gear=gear_to_si(b.gear_pair), drive=drive_to_si_with_gear(b))
+        gear=None if gp is None else gear_to_si(gp), drive=drive_to_si_with_gear(b))

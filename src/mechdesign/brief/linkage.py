@@ -293,7 +293,11 @@ def check_references(s: LinkageSection, out: Problems | None = None) -> dict[str
             lst.extend(p for p in pts if p not in lst)
         known.update(makes)
     if FRAME_LINK in members:
-        out.add(("crank", "link"), FRAME_LINK,
+        where = ("crank", "link")
+        if s.crank.link != FRAME_LINK:
+            where = next((("groups", i, "links") for i, g in enumerate(s.groups)
+                          if g.type != "point" and FRAME_LINK in g.links), where)
+        out.add(where, FRAME_LINK,
                 f"link '{FRAME_LINK}' is the frame (the course numbers it 1); number the moving "
                 "links from 2 (the crank) on",
                 f"构件 '{FRAME_LINK}' 是机架（课程中编号为 1）；活动构件从 2（曲柄）起编号")

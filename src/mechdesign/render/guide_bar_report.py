@@ -11,60 +11,120 @@ DEG = 180.0 / np.pi
 
 def guide_bar_context(syn, p, rod: str = "BF", ram_zh: str = "刨头",
                       extra_rows: list | None = None) -> dict:
-    """``syn``: the synthesis stage (design, extreme angle); ``p``: the SI parameters
-    (time ratio, stroke, rod and CoM ratios); ``rod``: the rod's joint letters."""
+    """``syn``: the synthesis stage (design, extreme angle, H, K, whether the lengths were
+    given); ``p``: the SI parameters (rod and CoM ratios); ``rod``: the rod's joint letters.
+    Synthesis from H, K: the lengths follow; given dimensions: θ = ψ, K and H follow."""
     d = syn.design
     mm = 1e3
-    K, H = p.time_ratio_K, p.stroke * mm
+    K, H = syn.time_ratio, syn.stroke * mm
     theta = syn.extreme_angle * DEG
     half = theta / 2
     sin_half = np.sin(np.radians(half))
-    eq = {
-        "theta": (rf"\theta = 180° \times \frac{{K-1}}{{K+1}} = 180° \times "
-                  rf"\frac{{{f(K, 2)}-1}}{{{f(K, 2)}+1}} = {f(theta, 2)}°"),
-        "bar": (rf"L_{{O_3B}} = \frac{{H}}{{2\sin(\psi/2)}} = \frac{{{f(H, 0)}}}"
-                rf"{{2\sin {f(half, 3)}°}} = {f(d.guide_bar * mm, 2)}\ \text{{mm}}"),
-        "crank": (rf"L_{{O_2A}} = L_{{O_2O_3}} \sin(\psi/2) = {f(d.frame * mm, 0)} \times "
-                  rf"{f(sin_half, 5)} = {f(d.crank * mm, 2)}\ \text{{mm}}"),
-        "rod": (rf"L_{{{rod}}} = {f(p.rod_ratio, 2)}\, L_{{O_3B}} = {f(p.rod_ratio, 2)} \times "
-                rf"{f(d.guide_bar * mm, 2)} = {f(d.rod * mm, 2)}\ \text{{mm}}"),
-        "guide": (rf"L_{{O_3M}} = L_{{O_3B}}\,\frac{{1+\cos(\psi/2)}}{{2}} = "
-                  rf"{f(d.guide_bar * mm, 2)} \times \frac{{1+{f(np.cos(np.radians(half)), 5)}}}{{2}}"
-                  rf" = {f(d.guide_height * mm, 2)}\ \text{{mm}}"),
-        "com": (rf"L_{{O_3S_4}} = {f(p.com_ratio, 2)}\, L_{{O_3B}} = {f(d.bar_com * mm, 2)}\ \text{{mm}}"),
-    }
+    def g(x):   # a given length [m] as the brief wrote it [mm]
+        return f"{x * mm:.10g}"
+
+    if syn.given_dimensions:
+        eq = {
+            "theta": (rf"\theta = \psi = 2\arcsin\frac{{L_{{O_2A}}}}{{L_{{O_2O_3}}}} = "
+                      rf"2\arcsin\frac{{{g(d.crank)}}}{{{g(d.frame)}}} = {f(theta, 4)}°"),
+            "K": (rf"K = \frac{{180° + \theta}}{{180° - \theta}} = \frac{{180° + {f(theta, 4)}°}}"
+                  rf"{{180° - {f(theta, 4)}°}} = {f(K, 4)}"),
+            "H": (rf"H = 2 L_{{O_3B}} \sin(\psi/2) = 2 \times {g(d.guide_bar)} \times "
+                  rf"\frac{{{g(d.crank)}}}{{{g(d.frame)}}} = {f(H, 2)}\ \text{{mm}}"),
+        }
+    else:
+        eq = {
+            "theta": (rf"\theta = 180° \times \frac{{K-1}}{{K+1}} = 180° \times "
+                      rf"\frac{{{f(K, 2)}-1}}{{{f(K, 2)}+1}} = {f(theta, 2)}°"),
+            "bar": (rf"L_{{O_3B}} = \frac{{H}}{{2\sin(\psi/2)}} = \frac{{{f(H, 0)}}}"
+                    rf"{{2\sin {f(half, 3)}°}} = {f(d.guide_bar * mm, 2)}\ \text{{mm}}"),
+            "crank": (rf"L_{{O_2A}} = L_{{O_2O_3}} \sin(\psi/2) = {f(d.frame * mm, 0)} \times "
+                      rf"{f(sin_half, 5)} = {f(d.crank * mm, 2)}\ \text{{mm}}"),
+        }
+    eq["rod"] = (rf"L_{{{rod}}} = {f(p.rod_ratio, 2)}\, L_{{O_3B}} = {f(p.rod_ratio, 2)} \times "
+                 rf"{f(d.guide_bar * mm, 2)} = {f(d.rod * mm, 2)}\ \text{{mm}}") if p.rod is None else \
+        rf"L_{{{rod}}} = {f(d.rod * mm, 2)}\ \text{{mm}}"
+    eq["guide"] = (rf"L_{{O_3M}} = L_{{O_3B}}\,\frac{{1+\cos(\psi/2)}}{{2}} = "
+                   rf"{f(d.guide_bar * mm, 2)} \times \frac{{1+{f(np.cos(np.radians(half)), 5)}}}{{2}}"
+                   rf" = {f(d.guide_height * mm, 2)}\ \text{{mm}}") if not syn.guide_given else None
+    eq["com"] = rf"L_{{O_3S_4}} = {f(p.com_ratio, 2)}\, L_{{O_3B}} = {f(d.bar_com * mm, 2)}\ \text{{mm}}"
+    # lengths the brief gives are shown as given (all their digits), derived ones to 0.01 mm
+    given = syn.given_dimensions
+
+    def length(x, exact):
+        return f"{x * mm:.10g}" if exact else f(x * mm, 2)
+
     rows = [
-        ["$\\theta = \\psi$", "极位夹角 = 导杆摆角 / extreme angle = swing", f(theta, 3), "°"],
-        ["$L_{O_2A}$", "曲柄 / crank", f(d.crank * mm, 2), "mm"],
-        ["$L_{O_3B}$", "导杆 / guide bar", f(d.guide_bar * mm, 2), "mm"],
-        [f"$L_{{{rod}}}$", "连杆 / rod", f(d.rod * mm, 2), "mm"],
-        ["$L_{O_3M}$", "导路至 O3 / guide line from O3", f(d.guide_height * mm, 2), "mm"],
+        ["$\\theta = \\psi$", "极位夹角 = 导杆摆角 / extreme angle = swing", f(theta, 3 if not given else 4), "°"],
+        *([["$K$", "行程速比系数 / time ratio", f(K, 4), "—"],
+           ["$H$", "行程 / stroke", f(H, 2), "mm"]] if given else []),
+        ["$L_{O_2A}$", "曲柄 / crank", length(d.crank, given), "mm"],
+        ["$L_{O_3B}$", "导杆 / guide bar", length(d.guide_bar, given), "mm"],
+        [f"$L_{{{rod}}}$", "连杆 / rod", length(d.rod, p.rod is not None), "mm"],
+        ["$L_{O_3M}$", "导路至 O3 / guide line from O3", length(d.guide_height, syn.guide_given), "mm"],
         *(extra_rows or []),
         ["$L_{O_3S_4}$", "导杆质心 / bar CoM", f(d.bar_com * mm, 2), "mm"],
     ]
-    return {"eq": eq, "rows": rows, "ram_zh": ram_zh, "theta": f(theta, 2)}
+    return {"eq": eq, "rows": rows, "ram_zh": ram_zh, "theta": f(theta, 2), "given": given,
+            "guide_given": syn.guide_given}
+
+
+def task_words(p, syn) -> dict:
+    """The task paragraph's words that depend on what the brief gives: the gear pair
+    driving the crank, the ram guide by the rule or given."""
+    gear = p.z1 is not None
+    return {
+        "driven_zh": "由齿轮 z2 带动，" if gear else "",
+        "driven_en": ", driven by gear z2," if gear else "",
+        "guide_zh": ("导路位置 L_O3M 由任务书给出。" if syn.guide_given else
+                     "刨头导路通过导杆端点 B 所画圆弧弦高的中点。"),
+        "guide_en": ("the ram guide's distance L_O3M is given." if syn.guide_given else
+                     "the ram guide passes through the mid-point of the sagitta of the arc "
+                     "described by the bar's end B."),
+    }
 
 
 def data_rows(b, p, ram_zh: str, rod: str, rod_ratio: float, ram_com: list,
               cut_zh: str, cut_line: list) -> list[list[str]]:
     """The design-data table of a guide-bar machine's brief ``b`` (course units); the
-    machine names its ram, its rod, the ram's centre of mass and the cutting-force line."""
+    machine names its ram, its rod, the ram's centre of mass and the cutting-force line.
+    Only what the brief gives: H and K or the link lengths, masses or weights, the rod as
+    a ratio or a length, the gear teeth when there is a gear pair."""
     lk, ms, ld = b.linkage, b.masses, b.loads
+    if lk.crank_O2A_mm is not None:
+        form = [["$L_{O_2A}$", "曲柄长 / crank", f"{lk.crank_O2A_mm:g}", "mm"],
+                ["$L_{O_3B}$", "导杆长 / guide bar", f"{lk.guide_bar_O3B_mm:g}", "mm"]]
+    else:
+        form = [["$H$", f"{ram_zh}行程 / ram stroke", f(lk.stroke_H_mm, 0), "mm"],
+                ["$K$", "行程速比系数 / time ratio", f(p.time_ratio_K, 2), "—"]]
+    rod_mm = getattr(lk, f"rod_{rod}_mm")
+    rod_row = ([f"$L_{{{rod}}}$", "连杆长 / rod", f"{rod_mm:g}", "mm"] if rod_mm is not None else
+               [f"$L_{{{rod}}}/L_{{O_3B}}$", "连杆与导杆之比 / rod ratio", f(rod_ratio, 2), "—"])
+
+    def load(mass, weight, sym, zh, en, digits=1):
+        m, w = getattr(ms, mass), getattr(ms, weight)
+        if w is not None and (m is None or weight in ms.model_fields_set):
+            return [f"$G_{{{sym}}}$", f"{zh}重量 / {en} weight", f(w, 0), "N"]
+        return [f"$m_{{{sym}}}$", f"{zh}质量 / {en} mass", f(m, digits), "kg"]
+
     return [
-        ["$H$", f"{ram_zh}行程 / ram stroke", f(lk.stroke_H_mm, 0), "mm"],
-        ["$K$", "行程速比系数 / time ratio", f(p.time_ratio_K, 2), "—"],
+        *form,
         ["$L_{O_2O_3}$", "机架长 / frame", f(lk.frame_O2O3_mm, 0), "mm"],
-        [f"$L_{{{rod}}}/L_{{O_3B}}$", "连杆与导杆之比 / rod ratio", f(rod_ratio, 2), "—"],
+        rod_row,
+        *([["$L_{O_3M}$", "导路至 O3 / guide line from O3", f"{lk.guide_O3M_mm:g}", "mm"]]
+          if lk.guide_O3M_mm is not None else []),
         ["$L_{O_3S_4}/L_{O_3B}$", "导杆质心位置 / bar CoM ratio", f(lk.com_ratio_O3S4_O3B, 2), "—"],
-        ram_com,
+        *(ram_com if ram_com and isinstance(ram_com[0], list) else [ram_com]),
         ["$n_2$", "曲柄转速 / crank speed", f(lk.crank_speed_n2_rpm, 0), "rpm"],
-        ["$m_4$", "导杆质量 / guide-bar mass", f(ms.guide_bar_m4_kg, 1), "kg"],
+        load("guide_bar_m4_kg", "guide_bar_G4_N", "4", "导杆", "guide-bar"),
         ["$J_{S_4}$", "导杆转动惯量 / guide-bar inertia", f(ms.guide_bar_J_S4_kgm2, 2), "kg·m²"],
-        ["$m_6$", f"{ram_zh}质量 / ram mass", f(ms.ram_m6_kg, 1), "kg"],
-        ["$G_2$", "齿轮2重量 / gear 2 weight", f(ms.gear2_weight_G2_N, 0), "N"],
+        load("ram_m6_kg", "ram_G6_N", "6", ram_zh, "ram"),
+        *([["$m_2$", "齿轮2质量 / gear 2 mass", f(ms.gear2_m2_kg, 1), "kg"]] if ms.gear2_m2_kg is not None
+          else [["$G_2$", "齿轮2重量 / gear 2 weight", f(ms.gear2_weight_G2_N, 0), "N"]]
+          if "gear2_weight_G2_N" in ms.model_fields_set else []),
         ["$F_c$", f"{cut_zh} / cutting force", f(ld.cutting_force_Fc_N, 0), "N"],
         cut_line,
-        ["$z_1, z_2$", "齿轮齿数 / gear teeth", f"{p.z1}, {p.z2}", "—"],
+        *([["$z_1, z_2$", "齿轮齿数 / gear teeth", f"{p.z1}, {p.z2}", "—"]] if p.z1 is not None else []),
         ["$[\\delta]$", "许用速度不均匀系数 / speed fluctuation", f"1/{1 / p.fluctuation:.4g}", "—"],
     ]
 

@@ -15,6 +15,7 @@ import numpy as np
 
 from ..core import flywheel as fw
 from ..core.fields import q
+from ..core.errors import DesignError
 from .findings import Finding
 
 CAST_IRON_RIM_SPEED = 30.0   # [m/s] usual limit of a cast-iron rim's peripheral speed
@@ -27,6 +28,8 @@ class RimSpec:
     diameter: float = q("m", "mean rim diameter D")
     height_to_width: float = q("1", "H/b")
     specific_weight: float = q("N/m³", "γ of the rim material")
+    field: str = q("", "the brief's rim-diameter field: set, an impossible rim (H ≥ D) is an "
+                   "error there and a rim higher than its radius a warning", default="")
 
 
 @dataclass(frozen=True)
@@ -73,7 +76,9 @@ def design_flywheel(spec: FlywheelSpec, phase: np.ndarray, balancing_torque: np.
     if spec.rim is not None:
         rim = fw.rim_dimensions(inertia, spec.rim.diameter, spec.rim.height_to_width,
                                 spec.rim.specific_weight, speed, gravity)
-        warnings += rim_findings(rim)
+        if spec.rim.field:
+            impossible_rim(rim, spec, inertia, speed, crank_rpm, gravity)
+        warnings += rim_findings(rim, spec.rim.field)
     return Flywheel(
         shaft=spec.shaft, speed_ratio=float(spec.speed_ratio), shaft_speed_rpm=float(speed),
         mean_torque=cycle.driving_torque, shaft_torque=cycle.driving_torque / spec.speed_ratio,
@@ -83,7 +88,40 @@ def design_flywheel(spec: FlywheelSpec, phase: np.ndarray, balancing_torque: np.
         inertia_on_crank=on_crank, rim=rim, warnings=tuple(warnings))
 
 
-def rim_findings(rim: fw.RimFlywheel) -> list[Finding]:
+class FlywheelDesignError(DesignError):
+    """No cast rim of the brief's diameter can carry the flywheel."""
+
+
+def smallest_rim_diameter(inertia: float, height_to_width: float, specific_weight: float,
+                          gravity: float) -> float:
+    """The mean diameter [m] at which the rim's height equals its radius, H = D/2:
+    H = √(4 g J_F k/(π D³ γ)) = D/2 ⇔ D⁵ = 16 g J_F k/(π γ)."""
+    return float((16.0 * gravity * inertia * height_to_width / (np.pi * specific_weight)) ** 0.2)
+
+
+def impossible_rim(rim: fw.RimFlywheel, spec: FlywheelSpec, inertia: float, speed: float,
+                   crank_rpm: float, gravity: float) -> None:
+    """Raise :class:`FlywheelDesignError` at the brief's rim field when the rim's radial
+    height reaches its mean diameter (no hole left: no rim of that diameter can carry J_F)."""
+    if rim.height < rim.diameter and np.isfinite(rim.height):
+        return
+    r = spec.rim
+    d_min = smallest_rim_diameter(inertia, r.height_to_width, r.specific_weight, gravity)
+    raise FlywheelDesignError(
+        f"{r.field} = {r.diameter * 1e3:g}: the flywheel J_F = {inertia:.4g} kg·m² at "
+        f"{speed:.4g} rpm needs a rim of height H = {rim.height * 1e3:.4g} mm and width "
+        f"b = {rim.width * 1e3:.4g} mm, not smaller than its mean diameter D = "
+        f"{r.diameter * 1e3:g} mm: no rim of this diameter can carry it. Take D ≥ "
+        f"{d_min * 1e3:.4g} mm (then H ≤ D/2), put the flywheel on a faster shaft, or check the "
+        f"crank speed n2 = {crank_rpm:.4g} rpm (J_F = 900·ΔW_max/(π²·n²·[δ]) grows as 1/n²).",
+        f"{r.field} = {r.diameter * 1e3:g}：转速 {speed:.4g} r/min 下飞轮 J_F = {inertia:.4g} kg·m² "
+        f"需要轮缘高 H = {rim.height * 1e3:.4g} mm、宽 b = {rim.width * 1e3:.4g} mm，不小于平均直径 "
+        f"D = {r.diameter * 1e3:g} mm，该直径的轮缘无法承担：应取 D ≥ {d_min * 1e3:.4g} mm"
+        f"（此时 H ≤ D/2），或把飞轮装在转速更高的轴上，或检查曲柄转速 n2 = {crank_rpm:.4g} r/min"
+        "（J_F = 900·ΔW_max/(π²·n²·[δ]) 与 n² 成反比）。")
+
+
+def rim_findings(rim: fw.RimFlywheel, field: str = "") -> list[Finding]:
     out = []
     if rim.rim_speed > CAST_IRON_RIM_SPEED:
         out.append(Finding(
@@ -99,4 +137,12 @@ def rim_findings(rim: fw.RimFlywheel) -> list[Finding]:
             f"the flywheel rim height H = {rim.height * 1e3:.1f} mm is not smaller than its mean "
             f"diameter D = {rim.diameter * 1e3:.1f} mm, so the rim cannot be made: increase the "
             "rim's mean diameter D or put the flywheel on a faster shaft."))
+    elif field and rim.height > rim.diameter / 2.0:
+        out.append(Finding(
+            "rim_proportion",
+            f"飞轮轮缘高度 H = {rim.height * 1e3:.1f} mm 超过其平均半径 D/2 = {rim.diameter * 500:.1f} mm，"
+            f"已不是薄轮缘，m = 4J_F/D² 的估算偏差大：增大 {field} 或把飞轮装在转速更高的轴上。",
+            f"the flywheel rim height H = {rim.height * 1e3:.1f} mm exceeds its mean radius D/2 = "
+            f"{rim.diameter * 500:.1f} mm: it is no longer a thin rim and m = 4J_F/D² is a poor "
+            f"estimate; increase {field} or put the flywheel on a faster shaft.", field=field))
     return out

@@ -19,6 +19,10 @@ class Synthesis:
     design: GuideBarDesign = q("")
     extreme_angle: float = q("rad", "θ")
     guide_height_above_O2: float = q("m", "L_O2M = L_O3M − L_O2O3")
+    stroke: float = q("m", "H, given or derived from the lengths", default=float("nan"))
+    time_ratio: float = q("1", "K, given or derived from the lengths", default=float("nan"))
+    given_dimensions: bool = q("", "True: the brief gave the link lengths, H and K derived", default=False)
+    guide_given: bool = q("", "True: the brief gave L_O3M", default=False)
 
 
 @dataclass(frozen=True)
@@ -34,17 +38,22 @@ class GuideBarSynthesisDoc:
     guide_height: float = q("m", "L_O3M, the ram guide line's distance from O3")
     bar_com: float = q("m", "L_O3S4")
     guide_height_above_O2: float = q("m", "L_O2M = L_O3M − L_O2O3, the guide line's distance from O2")
+    stroke: float = q("m", "ram stroke H (given, or 2·L_O3B·sin(ψ/2) from the link lengths)")
+    time_ratio: float = q("1", "time ratio K (given, or (180° + θ)/(180° − θ) from the link lengths)")
+    given_dimensions: bool = q("", "true: the brief gave the link lengths (H, K derived); false: synthesis from H, K")
 
 
 def synthesis_doc(syn: Synthesis) -> GuideBarSynthesisDoc:
     d = syn.design
     return GuideBarSynthesisDoc(syn.extreme_angle, d.swing_angle, d.crank, d.frame, d.guide_bar,
-                                d.rod, d.guide_height, d.bar_com, syn.guide_height_above_O2)
+                                d.rod, d.guide_height, d.bar_com, syn.guide_height_above_O2,
+                                syn.stroke, syn.time_ratio, syn.given_dimensions)
 
 
-def motion(model, syn: Synthesis, rod_ratio: float, field: str, requests=None):
-    """The engine's motion stage; an assembly failure names the brief's rod-ratio field: the
-    rod must bridge half the sagitta of B's arc, L_rod ≥ L_O3B(1 − cos(ψ/2))/2."""
+def motion(model, syn: Synthesis, p, rod: str, requests=None):
+    """The engine's motion stage; an assembly failure names the brief's rod field
+    (``rod``: the rod's letters, BF or BC): the rod must bridge half the sagitta of B's arc,
+    L_rod ≥ L_O3B(1 − cos(ψ/2))/2. ``requests``: the brief's analysis requests."""
     from ..core.mechanism import AssemblyError
     from .linkage import motion as engine_motion
 
@@ -52,9 +61,14 @@ def motion(model, syn: Synthesis, rod_ratio: float, field: str, requests=None):
         return engine_motion(model, requests)
     except AssemblyError as exc:
         need = (1.0 - np.cos(syn.design.swing_angle / 2.0)) / 2.0
+        if p.rod is not None:
+            field, value, need = f"linkage.rod_{rod}_mm", p.rod * 1e3, need * syn.design.guide_bar * 1e3
+        else:
+            field, value = f"linkage.rod_ratio_{rod}_O3B", p.rod_ratio
+        rule = "(1 − cos(ψ/2))/2" if p.rod is None else "L_O3B(1 − cos(ψ/2))/2"
         raise exc.with_hint(
-            f"(Brief field: {field} = {rod_ratio:g} must be at least (1 − cos(ψ/2))/2 = {need:.6g}.)",
-            f"（任务书字段：{field} = {rod_ratio:g}，须不小于 (1 − cos(ψ/2))/2 = {need:.6g}。）"
+            f"(Brief field: {field} = {value:g} must be at least {rule} = {need:.6g}.)",
+            f"（任务书字段：{field} = {value:g}，须不小于 {rule} = {need:.6g}。）"
         ) from None
 
 
@@ -75,9 +89,26 @@ def optional_stages(p) -> list[Stage]:
 
 
 def synthesize(p) -> Synthesis:
-    """``p``: stroke, time_ratio_K, frame, rod_ratio, com_ratio (SI)."""
-    d = guide_bar_quick_return(p.stroke, p.time_ratio_K, p.frame, p.rod_ratio, p.com_ratio)
-    return Synthesis(d, d.swing_angle, d.guide_height - d.frame)
+    """``p``: stroke, time_ratio_K, frame, rod_ratio, com_ratio (SI) — the synthesis from H
+    and K; or, when ``p.crank`` and ``p.guide_bar`` are given (the course table's lengths),
+    those lengths kept exactly with ψ = θ = 2·arcsin(L_O2A/L_O2O3). A given rod length or
+    guide distance L_O3M replaces the ratio or the mid-sagitta rule."""
+    from dataclasses import replace
+
+    if p.crank is not None:
+        psi = 2.0 * np.arcsin(p.crank / p.frame)
+        bar = p.guide_bar
+        d = GuideBarDesign(swing_angle=psi, crank=p.crank, frame=p.frame, guide_bar=bar,
+                           rod=p.rod_ratio * bar, guide_height=bar * (1.0 + np.cos(psi / 2.0)) / 2.0,
+                           bar_com=p.com_ratio * bar)
+    else:
+        d = guide_bar_quick_return(p.stroke, p.time_ratio_K, p.frame, p.rod_ratio, p.com_ratio)
+    if p.rod is not None:
+        d = replace(d, rod=p.rod)
+    if p.guide_height is not None:
+        d = replace(d, guide_height=p.guide_height)
+    return Synthesis(d, d.swing_angle, d.guide_height - d.frame, p.stroke, p.time_ratio_K,
+                     p.crank is not None, p.guide_height is not None)
 
 
 def _drive(r: dict):

@@ -100,13 +100,15 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
     d = syn.design
     n = k.grid_size
     mm = 1e3
-    K, H = p.time_ratio_K, p.stroke * mm
+    K, H = syn.time_ratio, syn.stroke * mm
     theta = syn.extreme_angle * DEG
     lk, ld = brief.linkage, brief.loads
 
     data_rows = gb_report.data_rows(
         brief, p, "刨头", "BF", lk.rod_ratio_BF_O3B,
-        ["$x_{S_6}$", "刨头质心至 F / ram CoM from F", f(lk.ram_com_x_S6_mm, 0), "mm"], "切削阻力",
+        [["$x_{S_6}$", "刨头质心至 F / ram CoM from F", f(lk.ram_com_x_S6_mm, 0), "mm"],
+         *([["$y_{S_6}$", "刨头质心高于 F / ram CoM above F", f(lk.ram_com_y_S6_mm, 0), "mm"]]
+           if "ram_com_y_S6_mm" in lk.model_fields_set else [])], "切削阻力",
         ["$y_P$", "切削力作用线距 O2 / cutting line above O2", f(ld.cutting_height_yP_mm, 0), "mm"])
     guide_bar = gb_report.guide_bar_context(syn, p, "BF", "刨头", [
         ["$L_{O_2M}$", "导路至 O2 / guide line above O2", f(syn.guide_height_above_O2 * mm, 2), "mm"]])
@@ -165,6 +167,7 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
     sense_en = "clockwise" if p.crank_omega < 0 else "counter-clockwise"
     return {
         **gb_report.optional_sections(r, lang, figures),
+        **gb_report.task_words(p, syn),
         "meta": md_meta(brief.report),
         "fig": figures,
         "data_rows": data_rows,
@@ -177,7 +180,8 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
         "fly_eq": fly_eq,
         "sense_zh": sense_zh, "sense_en": sense_en,
         "n2": f(p.crank_speed_rpm, 0), "omega2": f(abs(p.crank_omega), 4),
-        "theta": f(theta, 2), "K": f(K, 2), "H": f(H, 0),
+        "theta": f(theta, 2), "K": f(K, 4 if syn.given_dimensions else 2),
+        "H": f(H, 2 if syn.given_dimensions else 0),
         "working_span": f(k.working_span * DEG, 2),
         "return_span": f(360 - k.working_span * DEG, 2),
         "idle_mm": f(p.idle_travel_ratio * H, 1), "idle_ratio": f(p.idle_travel_ratio, 2),

@@ -85,7 +85,11 @@ def build_mechanism(d: GuideBarDesign, p: ShaperParams) -> Mechanism:
     m.add(LinkPoint("S4", "4", "O3", d.bar_com))
     m.add(RRP("ram (RRP)", "5", "6", "B", "F", d.rod, 1j * d.guide_height, 0.0,
               branch=-1, frame=FRAME))
-    m.add(LinkPoint("S6", "6", "F", p.ram_com_x))
+    if p.ram_com_y == 0.0:
+        m.add(LinkPoint("S6", "6", "F", p.ram_com_x))
+    else:   # S6 above (or below) F: the ram's inertia force acts on that line
+        m.add(LinkPoint("S6", "6", "F", float(np.hypot(p.ram_com_x, p.ram_com_y)),
+                        float(np.arctan2(p.ram_com_y, p.ram_com_x))))
     # Point P on the cutting-force line, vertically below F (the ram translates).
     drop = d.guide_height - (d.frame + p.cutting_height)
     m.add(LinkPoint("P", "6", "F", abs(drop), -np.pi / 2 if drop >= 0 else np.pi / 2))
@@ -114,7 +118,7 @@ def model(syn: Synthesis, p: ShaperParams) -> lk.LinkageModel:
     left, right = _extremes(d)
     working = 1 if (sense * (right - left)) % (2 * np.pi) > np.pi else -1
     idle = p.idle_travel_ratio * p.stroke
-    ratio = p.z2 / p.z1 if p.flywheel_shaft == "pinion" else 1.0
+    ratio = p.z2 / p.z1 if p.flywheel_shaft == "pinion" else 1.0   # pinion: a gear pair exists
     return lk.LinkageModel(
         mechanism=build_mechanism(d, p), crank_omega=p.crank_omega,
         output=lk.Output("point", "F", 0.0, working),
@@ -124,7 +128,8 @@ def model(syn: Synthesis, p: ShaperParams) -> lk.LinkageModel:
                                    (idle, p.stroke - idle)),),
         grid_points=p.grid_points, position_step=p.position_step, gravity=p.gravity,
         flywheel=FlywheelSpec(p.fluctuation, ratio, p.flywheel_shaft,
-                              RimSpec(p.rim_diameter, p.rim_height_to_width, p.specific_weight)),
+                              RimSpec(p.rim_diameter, p.rim_height_to_width, p.specific_weight,
+                                     "flywheel.rim_diameter_mm")),
         special_crank_angles=(np.pi / 2, 3 * np.pi / 2),
         names={"2": ("曲柄 O2A", "crank O2A"), "3": ("滑块 A", "slider A"),
                "4": ("导杆 O3B", "guide bar O3B"), "5": ("连杆 BF", "rod BF"), "6": ("刨头", "ram")})
@@ -132,7 +137,7 @@ def model(syn: Synthesis, p: ShaperParams) -> lk.LinkageModel:
 
 def motion(m: lk.LinkageModel, syn: Synthesis, p: ShaperParams, requests=None):
     """The engine's motion stage, an assembly failure naming the brief's field."""
-    return guide_bar.motion(m, syn, p.rod_ratio, "linkage.rod_ratio_BF_O3B", requests)
+    return guide_bar.motion(m, syn, p, "BF", requests)
 
 
 def kinematics_view(m: lk.LinkageModel, k: lk.LinkageMotion, raw) -> Kinematics:

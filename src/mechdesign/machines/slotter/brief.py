@@ -5,23 +5,26 @@ Course units in the brief; :func:`to_si` converts once to SI.
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Literal
+from typing import ClassVar, Literal, Optional
 
 from pydantic import Field
 
 from ...brief.common import StrictModel
-from ...brief.guide_bar import GuideBarBrief, GuideBarParams, guide_bar_si
+from ...brief.guide_bar import GuideBarBrief, GuideBarLinkage, GuideBarParams, guide_bar_si
 
 
-class SlotterLinkage(StrictModel):
-    """Guide-bar mechanism data (导杆机构); O2 level with O3, the ram guide vertical."""
+class SlotterLinkage(GuideBarLinkage):
+    """Guide-bar mechanism data (导杆机构); O2 level with O3, the ram guide vertical: H and K,
+    or the link lengths (see :class:`~mechdesign.brief.guide_bar.GuideBarLinkage`)."""
 
-    stroke_H_mm: float = Field(gt=0, le=5000, description="Ram stroke H [mm]")
-    time_ratio_K: float = Field(gt=1.0, lt=3.0, description="Time ratio K (行程速比系数), 1 < K < 3")
+    ROD: ClassVar[str] = "BC"
+
     frame_O2O3_mm: float = Field(gt=0, le=10000, description=(
         "Distance from crank pivot O2 to guide-bar pivot O3 [mm] (O2 level with O3, on the side "
         "that makes the slow stroke go down)"))
-    rod_ratio_BC_O3B: float = Field(gt=0, le=2, description="Rod-to-guide-bar length ratio L_BC/L_O3B")
+    rod_ratio_BC_O3B: Optional[float] = Field(None, gt=0, le=2, description=(
+        "Rod-to-guide-bar length ratio L_BC/L_O3B (or rod_BC_mm)"))
+    rod_BC_mm: Optional[float] = Field(None, gt=0, le=20000, description="Rod length L_BC [mm] (or rod_ratio_BC_O3B)")
     com_ratio_O3S4_O3B: float = Field(0.5, ge=0, le=1,
                                       description="Guide-bar centre-of-mass position L_O3S4/L_O3B")
     ram_com_y_S6_mm: float = Field(0.0, ge=-10000, le=10000, description=(
@@ -59,6 +62,6 @@ class SlotterParams(GuideBarParams):
 
 def to_si(b: SlotterBrief) -> SlotterParams:
     mm = 1e-3
-    return SlotterParams(**guide_bar_si(b, b.linkage.rod_ratio_BC_O3B),
+    return SlotterParams(**guide_bar_si(b),
                          ram_com=b.linkage.ram_com_y_S6_mm * mm,
                          cutting_offset=b.loads.cutting_offset_xP_mm * mm)

@@ -45,6 +45,7 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
     findings = [md_text(w.text(lang)) for key in ("linkage_verification", "linkage_flywheel")
                 for w in (getattr(r[key], "warnings", ()) or ())]
     return {
+        **gb_report.task_words(p, syn),
         "meta": md_meta(brief.report), "data_rows": data_rows, "guide_bar": guide_bar,
         "n2": f(p.crank_speed_rpm, 0), "sense_zh": "顺时针" if p.crank_omega < 0 else "逆时针",
         "sense_en": "clockwise" if p.crank_omega < 0 else "counter-clockwise",

@@ -67,7 +67,8 @@ def model(syn: Synthesis, p: SlotterParams) -> lk.LinkageModel:
                                    (idle, p.stroke - idle)),),
         grid_points=p.grid_points, position_step=p.position_step, gravity=p.gravity,
         flywheel=FlywheelSpec(p.fluctuation, ratio, p.flywheel_shaft,
-                              RimSpec(p.rim_diameter, p.rim_height_to_width, p.specific_weight)),
+                              RimSpec(p.rim_diameter, p.rim_height_to_width, p.specific_weight,
+                                     "flywheel.rim_diameter_mm")),
         special_crank_angles=(0.0, np.pi),   # the crank level with O2O3: the bar at its mid-swing
         names={"2": ("曲柄 O2A", "crank O2A"), "3": ("滑块 A", "slider A"),
                "4": ("导杆 O3B", "guide bar O3B"), "5": ("连杆 BC", "rod BC"),
@@ -81,8 +82,7 @@ def _synthesis(r: dict):
 
 def _motion(r: dict):
     p = r["params"]
-    return guide_bar.motion(r["model"], r["synthesis"], p.rod_ratio, "linkage.rod_ratio_BC_O3B",
-                             lk.requests_of(r.get("brief")))
+    return guide_bar.motion(r["model"], r["synthesis"], p, "BC", lk.requests_of(r.get("brief")))
 
 
 def stages(p: SlotterParams) -> list[Stage]:
