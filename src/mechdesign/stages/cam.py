@@ -238,6 +238,10 @@ def _more(target: float | None, now: float) -> bool:
     return target is not None and np.isfinite(target) and target - now >= 1e-5
 
 
+#: A base radius more than this many times the given one is no practical advice.
+ABSURD_R0 = 20.0
+
+
 def _checks(p, fol, r0, segs, rho_p, rho_a, rho_min, min_r0, best) -> list[Finding]:
     """``min_r0``: smallest base radius for the limits (convexity for a flat face) with this
     follower; ``best``: (r0, e) with the best offset (translating knife/roller), or None;
@@ -253,7 +257,16 @@ def _checks(p, fol, r0, segs, rho_p, rho_a, rho_min, min_r0, best) -> list[Findi
         raise_r0 = _more(min_r0, r0)
         fix_zh = f"把基圆半径增大到至少 {_mm(min_r0)}" if raise_r0 else "增大基圆半径"
         fix_en = f"increase the base radius to at least {_mm(min_r0)}" if raise_r0 else "increase the base radius"
-        if worst.span < np.radians(5.0):
+        head_zh, head_en = f"基圆半径 r0 = {_mm(r0)} 太小，", f"the base radius r0 = {_mm(r0)} is too small: "
+        if worst.span < np.radians(5.0) and raise_r0 and min_r0 > ABSURD_R0 * r0:
+            head_zh, head_en = "", ""
+            # over so short an angle no practical base radius helps: the angle is the fix
+            fix_zh = (f"给该{which_zh}更大的凸轮转角（现为 {np.degrees(worst.span):.4g}°）："
+                      f"单靠基圆半径需要 r0 ≥ {_mm(min_r0)}，无法实现")
+            fix_en = (f"give the {which_en} a larger cam angle (now {np.degrees(worst.span):.4g}°): "
+                      f"the base radius alone would have to be at least {_mm(min_r0)}, which no "
+                      "cam can be")
+        elif worst.span < np.radians(5.0):
             fix_zh += f"，或给该{which_zh}更大的凸轮转角（现为 {np.degrees(worst.span):.4g}°）"
             fix_en += (f", or give the {which_en} a larger cam angle (now "
                        f"{np.degrees(worst.span):.4g}°)")
@@ -267,10 +280,10 @@ def _checks(p, fol, r0, segs, rho_p, rho_a, rho_min, min_r0, best) -> list[Findi
             "pressure_angle",
             f"压力角超限：{which_zh}最大压力角 {np.degrees(worst.max_pressure_angle):.2f}° "
             f"(δ = {np.degrees(worst.at):.1f}°) 大于许用值 {np.degrees(worst.limit):.0f}°；"
-            f"基圆半径 r0 = {_mm(r0)} 太小，{fix_zh}。",
+            f"{head_zh}{fix_zh}。",
             f"pressure angle too large: the {which_en}'s maximum {np.degrees(worst.max_pressure_angle):.2f}° "
             f"(at δ = {np.degrees(worst.at):.1f}°) exceeds the allowed {np.degrees(worst.limit):.0f}°; "
-            f"the base radius r0 = {_mm(r0)} is too small: {fix_en}."))
+            f"{head_en}{fix_en}."))
     if fol.kind == "roller" and np.isfinite(rho_p):
         rr = fol.roller_radius
         if rr >= rho_p:
@@ -373,7 +386,10 @@ def _where(c: SelfCheck, lang: str) -> str:
 # is exact to well below a micrometre.
 FD_LIMIT = 1e-3                 # relative, velocity/acceleration/curvature vs central differences
 ALPHA_LIMIT = np.radians(1e-2)  # pressure angle from the chord vs the analytic one [rad] (0.01°)
-DIST_LIMIT = 1e-6               # envelope distances [m] (1 µm)
+DIST_LIMIT = 1e-6               # envelope distances [m] (1 µm) per 100 mm of cam size: the
+#                                 chords of a 0.1° polyline grow with the cam (a 2 m cam's
+#                                 profile is compared against a 20 µm limit)
+DIST_SIZE = 0.1                 # [m] the cam size DIST_LIMIT holds for
 CLOSURE_LIMIT = 1e-9            # relative to the stroke
 DENSE_FACTOR = 20               # the reference pitch curve: 20 × the design grid
 
@@ -478,6 +494,11 @@ def verify_cam(c: CamResult) -> CamVerification:
                             detail={"step": h}))
     corners, stand_off = (), 0.0
     fol = c.follower if c.follower is not None else p.follower
+    dist_limit = DIST_LIMIT * max(1.0, float(np.max(np.abs(g.pitch))) / DIST_SIZE)
+    # An undercut cam (named by its own finding) has a self-intersecting profile: the roller
+    # then does penetrate it. The envelope checks are a design verdict there, not a sign
+    # that the computation is wrong.
+    undercut = any(w.code == "undercut" for w in (c.warnings or ()))
     if p.follower.kind == "roller":
         rr = g.roller_radius
         dense_delta = np.unique(np.concatenate([
@@ -485,24 +506,26 @@ def verify_cam(c: CamResult) -> CamVerification:
         dense = core.design_cam(prog, fol, c.base_radius, p.rotation, delta=dense_delta)
         outline = c.outline if c.outline is not None else g.actual
         out_dist = core.polyline_distance(outline, dense.pitch)
-        checks.append(SelfCheck("envelope", float(np.max(np.abs(out_dist - rr))), DIST_LIMIT,
-                                reference=rr, detail={"points": len(outline)}))
+        checks.append(SelfCheck("envelope", float(np.max(np.abs(out_dist - rr))), dist_limit,
+                                reference=rr, detail={"points": len(outline)},
+                                requirement=undercut))
         in_dist = core.polyline_distance(dense.pitch, outline)
-        checks.append(SelfCheck("interference", max(float(np.max(rr - in_dist)), 0.0), DIST_LIMIT,
-                                reference=rr))
+        checks.append(SelfCheck("interference", max(float(np.max(rr - in_dist)), 0.0), dist_limit,
+                                reference=rr, requirement=undercut))
         # Off the edges every roller position touches the profile: leave out the positions
         # whose nearest profile point is an edge (there the roller stands off by design).
         off_edge = np.ones_like(dense_delta, dtype=bool)
         env = c.envelope
         if env is not None:
             for _, _, x, _ in env.edges:
-                off_edge &= np.abs(dense.pitch - x) > in_dist + DIST_LIMIT
+                off_edge &= np.abs(dense.pitch - x) > in_dist + dist_limit
             corners, stand_off = env.corners, env.stand_off
         gap = float(np.max(in_dist[off_edge] - rr)) if np.any(off_edge) else 0.0
-        checks.append(SelfCheck("gap", max(gap, 0.0), DIST_LIMIT, reference=rr))
+        checks.append(SelfCheck("gap", max(gap, 0.0), dist_limit, reference=rr,
+                                requirement=undercut))
         raw = g.pitch - rr * g.normal
         raw_err = float(np.max(np.abs(core.polyline_distance(raw, dense.pitch) - rr)))
-        if raw_err > DIST_LIMIT:
+        if raw_err > dist_limit:
             checks.append(SelfCheck("offset_curve", raw_err, None, sense="info", reference=rr))
         for k in corners:
             checks.append(SelfCheck("corner", abs(k.turn), None, sense="info",
