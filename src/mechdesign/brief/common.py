@@ -17,20 +17,45 @@ from pydantic import BaseModel, ConfigDict, Field, field_validator
 _FRACTION = re.compile(r"^\s*([-+]?(?:\d+\.?\d*|\.\d+))\s*(?:/\s*(\d+\.?\d*|\.\d+)\s*)?$")
 
 
-def parse_fraction(value, message: str):
+def parse_fraction(value, message: str, message_zh: str = "须为数值或分数，如 1/25"):
     """``value`` as a number when it is text such as '1/25' or '0.04' (the course writes
     fluctuation coefficients as fractions); other values unchanged (the field checks them).
-    ``message`` is the ValueError raised for text that is no such number. Only plain
-    decimals are read (no exponents), so the text cannot ask for a huge number."""
+    ``message`` (``message_zh`` in Chinese) is the error raised for text that is no such
+    number. Only plain decimals are read (no exponents), so the text cannot ask for a huge
+    number."""
     if not isinstance(value, str):
         return value
     match = _FRACTION.match(value) if len(value) <= 40 else None
     if match is None:
-        raise ValueError(message)
+        raise invalid(message, message_zh)
     num, den = match.groups()
     if den is not None and Fraction(den) == 0:
-        raise ValueError(f"{message}; the denominator is 0")
+        raise invalid(f"{message}; the denominator is 0", f"{message_zh}；分母为 0")
     return float(Fraction(num) / (Fraction(den) if den is not None else 1))
+
+
+class _Missing:
+    """The value of a problem about a field the brief leaves out (shown as "missing")."""
+
+    def __repr__(self) -> str:
+        return "missing"
+
+    __str__ = __repr__
+
+
+MISSING = _Missing()
+
+
+class Shown:
+    """A problem's value shown as this text, without quotes (e.g. "no rise" for a whole list)."""
+
+    def __init__(self, text: str):
+        self.text = text
+
+    def __repr__(self) -> str:
+        return self.text
+
+    __str__ = __repr__
 
 
 class Problems:
@@ -61,6 +86,15 @@ class Problems:
             type=PydanticCustomError("value_error", "{msg}",
                                      {"msg": en} if zh is None else {"msg": en, "zh": zh}),
             loc=loc, input=value) for loc, value, en, zh in self.items])
+
+
+def invalid(en: str, zh: str):
+    """The error a single-field validator raises for a bad value: pydantic reports it at
+    the field, the loader shows ``en`` (or ``zh`` in a Chinese brief) as what is allowed.
+    Use: ``raise invalid("must be …", "须为 …")``."""
+    from pydantic_core import PydanticCustomError
+
+    return PydanticCustomError("value_error", "{msg}", {"msg": en, "zh": zh})
 
 
 class StrictModel(BaseModel):

@@ -373,13 +373,53 @@ _ZH = {
 }
 
 
+#: pydantic error type → English text of what is allowed, in the project's words (the
+#: others: pydantic's message with "Input should be" said as "must be").
+_EN = {
+    "int_from_float": "must be a whole number (no decimals)",
+    "finite_number": "must be a finite number (not inf or nan)",
+    "dict_type": "must be a mapping (key: value)", "mapping_type": "must be a mapping (key: value)",
+    "model_type": "must be a section: a mapping of key: value",
+    "model_attributes_type": "must be a section: a mapping of key: value",
+    "union_tag_invalid": "type {tag} does not exist; allowed: {expected_tags}",
+    "union_tag_not_found": "the field {discriminator} is needed to tell the kind",
+    "too_short": "must have at least {min_length} item(s) (it has {actual_length})",
+    "too_long": "must have at most {max_length} item(s) (it has {actual_length})",
+    "string_too_short": "must have at least {min_length} character(s)",
+    "string_too_long": "must have at most {max_length} character(s)",
+    "string_pattern_mismatch": "does not have the required form (it must match {pattern})",
+    "literal_error": "must be one of: {expected}", "enum": "must be one of: {expected}",
+    "list_type": "must be a list", "tuple_type": "must be a list",
+    "string_type": "must be text (a string)", "bool_type": "must be true or false",
+    "bool_parsing": "must be true or false",
+}
+_PYDANTIC_WORDS = (("Input should be", "must be"), ("Input should", "must"),
+                   ("String should", "must"), ("Value should", "must"), ("should be", "must be"),
+                   ("Field required", "required"), ("Input tag", "tag"))
+
+
+def _en_allowed(kind: str, err: dict, msg: str) -> str:
+    """What is allowed in English, in the project's words (never pydantic's wording or URL)."""
+    template = _EN.get(kind)
+    if template is not None:
+        try:
+            return template.format(**(err.get("ctx") or {}))
+        except (KeyError, IndexError, ValueError):
+            pass
+    msg = msg.removeprefix("Value error, ").removeprefix("Assertion failed, ")
+    for theirs, ours in _PYDANTIC_WORDS:
+        msg = msg.replace(theirs, ours)
+    msg = re.sub(r"\s*\[type=.*|\s*For further information visit \S+|https?://\S+", "", msg)
+    return msg.strip() or "not allowed here"
+
+
 def _zh_allowed(kind: str, err: dict, msg: str) -> str | None:
     """Chinese text for pydantic error ``kind`` (None when unknown)."""
     if kind in ("value_error", "assertion_error"):
         from ..core.errors import chinese_of
 
         ctx = err.get("ctx") or {}
-        if isinstance(ctx.get("zh"), str):     # a check that wrote its Chinese text (Problems)
+        if isinstance(ctx.get("zh"), str):     # a check that wrote its Chinese text (Problems, invalid)
             return ctx["zh"]
         return chinese_of(msg, ctx.get("error") if isinstance(ctx.get("error"), BaseException)
                           else None)
@@ -392,6 +432,19 @@ def _zh_allowed(kind: str, err: dict, msg: str) -> str | None:
         return None
 
 
+def _value_of(kind: str, value: Any) -> str:
+    """The value a problem line shows: as written, but never a whole section's repr (a
+    check of a section names its field; a mapping or list of sections is described)."""
+    if isinstance(value, (dict, BaseModel)) or (
+            isinstance(value, (list, tuple)) and any(isinstance(v, (dict, list, BaseModel)) for v in value)):
+        if kind in ("value_error", "assertion_error"):
+            return ""
+        if isinstance(value, (list, tuple)):
+            return f"a list of {len(value)} item{'s' if len(value) != 1 else ''}"
+        return "a mapping (section)"
+    return _show(value)
+
+
 def _problem(model: type[BaseModel], err: dict) -> BriefProblem:
     loc = tuple(err["loc"])
     path = ".".join(str(p) for p in loc) or "(top level)"
@@ -401,13 +454,14 @@ def _problem(model: type[BaseModel], err: dict) -> BriefProblem:
     unit_zh = f"（{info.description}）" if unit else ""
     if kind == "extra_forbidden":
         allowed = ", ".join((f.alias or k) for k, f in parent.model_fields.items()) if parent else ""
-        return BriefProblem(path, _show(err.get("input")), f"unknown field; allowed here: {allowed}",
+        return BriefProblem(path, _value_of(kind, err.get("input")),
+                            f"unknown field; allowed here: {allowed}",
                             f"未知字段；此处可用的字段：{allowed}")
     if kind == "missing":
         return BriefProblem(path, "missing", f"required{unit}", f"必填{unit_zh}")
     msg = err["msg"].removeprefix("Value error, ")
     zh = _zh_allowed(kind, err, msg)
-    return BriefProblem(path, _show(err.get("input")), f"{msg}{unit}",
+    return BriefProblem(path, _value_of(kind, err.get("input")), f"{_en_allowed(kind, err, msg)}{unit}",
                         None if zh is None else f"{zh}{unit_zh}")
 
 
