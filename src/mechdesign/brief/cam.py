@@ -53,7 +53,7 @@ class CamSegment(StrictModel):
 def _check_roller(out: Problems, contact: str, roller_radius_mm: float) -> None:
     """A roller follower has a roller (r_r > 0); a knife-edge or flat-faced one has none."""
     if contact == "roller" and not roller_radius_mm > 0:
-        out.add("roller_radius_mm", roller_radius_mm,
+        out.add("roller_radius_mm", roller_radius_mm if roller_radius_mm else MISSING,
                 "a roller follower needs roller_radius_mm > 0 (or choose contact: knife)",
                 "滚子从动件须给出 roller_radius_mm > 0（或改为 contact: knife 尖顶）")
     if contact != "roller" and roller_radius_mm:

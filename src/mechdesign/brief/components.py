@@ -118,6 +118,7 @@ class CycleSection(StrictModel):
                         "give each actuator its own key",
                         f"执行构件代号 '{key}' 已被 actuators.{keys.index(key)} 使用：每个执行构件须有自己的代号")
         by_key = {a.key: a for a in self.actuators}
+        known = ", ".join(by_key)
         for i, c in enumerate(self.constraints):
             for side in ("a", "b"):
                 ref = getattr(c, side)
@@ -125,8 +126,8 @@ class CycleSection(StrictModel):
                 act = by_key.get(ref.actuator)
                 if act is None:
                     out.add(where + ("actuator",), ref.actuator,
-                            f"no actuator '{ref.actuator}'; actuators: {', '.join(keys)}",
-                            f"没有此执行构件；执行构件有：{', '.join(keys)}")
+                            f"no actuator '{ref.actuator}'; actuators: {known}",
+                            f"没有此执行构件；执行构件有：{known}")
                     continue
                 count = sum(p.state == ref.state for p in act.phases)
                 have = ", ".join(p.state for p in act.phases)

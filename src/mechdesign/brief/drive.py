@@ -106,11 +106,11 @@ class DriveStage(StrictModel):
                     f"a reduction drive: the driven pulley d2 must be at least d1_mm = {self.d1_mm:g}",
                     f"减速传动：从动带轮 d2 须不小于 d1_mm = {self.d1_mm:g}")
         if self.z1 is not None and self.z2 is not None and self.z2 < self.z1:
-            what, what_zh = (("worm-wheel teeth", "蜗轮齿数") if self.type == "worm" else
-                             ("driven teeth", "从动轮齿数"))
+            what, what_zh = (("worm wheel", "蜗轮") if self.type == "worm" else
+                             ("driven wheel", "从动轮"))
             out.add("z2", self.z2, f"z2 must be at least z1 = {self.z1}: a reduction stage (the {what} "
-                    "turn slower than the driver)",
-                    f"减速级：{what_zh} z2 须不小于 z1 = {self.z1}")
+                    "turns slower than the driver)",
+                    f"减速级（{what_zh}转得比主动轮慢）：z2 须不小于 z1 = {self.z1}")
         fixes = [n for n, given in (("ratio", self.ratio is not None),
                                     ("z1/z2", self.z1 is not None and self.z2 is not None),
                                     ("d1_mm/d2_mm", self.d1_mm is not None and self.d2_mm is not None))

@@ -426,8 +426,10 @@ def _zh_allowed(kind: str, err: dict, msg: str) -> str | None:
     template = _ZH.get(kind)
     if template is None:
         return None
+    ctx = {k: (v.replace("' or '", "'、'") if isinstance(v, str) else v)
+           for k, v in (err.get("ctx") or {}).items()}
     try:
-        return template.format(**{k: v for k, v in (err.get("ctx") or {}).items()})
+        return template.format(**ctx)
     except (KeyError, IndexError, ValueError):
         return None
 
