@@ -19,7 +19,7 @@ import pytest
 import yaml
 from typer.testing import CliRunner
 
-from mechdesign.brief.loader import BriefError, load_variant
+from mechdesign.brief.loader import BriefError, load_variant, read_brief_data
 from mechdesign.cli import app
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -132,8 +132,7 @@ def _set(data, path: str, value) -> None:
 
 
 def _brief(tmp_path: Path, example: str, changes: dict, lang: str) -> Path:
-    data = yaml.safe_load((ROOT / "designs" / f"{example}.yaml").read_text(encoding="utf-8"))
-    data = copy.deepcopy(data)
+    data = copy.deepcopy(read_brief_data(ROOT / "designs" / f"{example}.yaml"))
     data.pop("groups", None)
     for path, value in changes.items():
         _set(data, path, value)

@@ -54,7 +54,8 @@ class BriefProblem:
         """The line in ``lang`` ("zh" or "en"); the value "missing" is said in Chinese too."""
         if lang != "zh":
             return str(self)
-        value = "缺少" if self.value == "missing" else self.value
+        value = {"missing": "缺少", "empty": "空（未填值）", "the whole section": "整节",
+                 "a mapping (section)": "映射（一节）"}.get(self.value, self.value)
         if not value:
             return f"{self.path}：{self.allowed_zh or self.allowed}"
         return f"{self.path}：{value} — {self.allowed_zh or self.allowed}"
@@ -439,12 +440,45 @@ def _value_of(kind: str, value: Any) -> str:
     check of a section names its field; a mapping or list of sections is described)."""
     if isinstance(value, (dict, BaseModel)) or (
             isinstance(value, (list, tuple)) and any(isinstance(v, (dict, list, BaseModel)) for v in value)):
-        if kind in ("value_error", "assertion_error"):
-            return ""
+        if kind in ("value_error", "assertion_error"):    # a check of the whole section
+            return "the whole section"
         if isinstance(value, (list, tuple)):
             return f"a list of {len(value)} item{'s' if len(value) != 1 else ''}"
         return "a mapping (section)"
+    if value is None:
+        return "empty"
     return _show(value)
+
+
+_NAMED_PATH = re.compile(r"[A-Za-z_][A-Za-z0-9_]*(?:\.[A-Za-z0-9_]+|\[\d+\])*")
+
+
+def _field_named(err: dict) -> dict:
+    """A check of a whole section (or brief) that raised a plain ValueError (no field of
+    its own): the error moved to the first field its message names that the section's data
+    hold (``crank.pivot 'Z' is not …`` → ``linkage.crank.pivot``; a name with ``_``, ``.``
+    or ``[i]``, not a plain word of the text), with that field's value.
+    Checks written with :class:`~mechdesign.brief.common.Problems` name their field."""
+    value = err.get("input")
+    if err["type"] != "value_error" or not isinstance(value, dict) \
+            or isinstance((err.get("ctx") or {}).get("zh"), str):
+        return err
+    for token in _NAMED_PATH.findall(err["msg"].removeprefix("Value error, ")):
+        if not any(c in token for c in "_.["):     # a word of the text, not a field name
+            continue
+        parts = [int(p) if p.isdigit() else p for p in re.split(r"[.\[\]]", token) if p]
+        node: Any = value
+        for part in parts:
+            if isinstance(node, dict) and part in node:
+                node = node[part]
+            elif isinstance(node, list) and isinstance(part, int) and part < len(node):
+                node = node[part]
+            else:
+                break
+        else:
+            if not isinstance(node, dict):
+                return dict(err, loc=tuple(err["loc"]) + tuple(parts), input=node)
+    return err
 
 
 def _problem(model: type[BaseModel], err: dict) -> BriefProblem:
@@ -582,7 +616,7 @@ def parse_brief(data: Any, source: str = "brief", located: dict[str, str] | None
     except ValidationError as exc:
         problems = []
         for e in exc.errors():
-            e = dict(e, loc=_data_loc(model, data, tuple(e["loc"])))
+            e = _field_named(dict(e, loc=_data_loc(model, data, tuple(e["loc"]))))
             problems.append(_unit_hint(e, _problem(model, e)))
         problems = _merge_alternatives(problems)
         if located:
