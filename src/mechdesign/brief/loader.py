@@ -445,7 +445,7 @@ def _value_of(kind: str, value: Any) -> str:
         if isinstance(value, (list, tuple)):
             return f"a list of {len(value)} item{'s' if len(value) != 1 else ''}"
         return "a mapping (section)"
-    if value is None:
+    if value is None and kind not in ("value_error", "assertion_error"):   # `key:` left empty
         return "empty"
     return _show(value)
 
