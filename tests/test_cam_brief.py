@@ -186,15 +186,16 @@ def test_programme_not_summing_to_360():
     data = brief_73()
     data["cam"]["programme"][3]["angle_deg"] = 50.0           # 350° in all
     err = only_error(CamBrief, data)
-    assert err["loc"] == ("cam",)
-    assert "350" in err["msg"] and "360" in err["msg"]
+    # at the segment to change (was: at the section)
+    assert err["loc"] == ("cam", "programme", 3, "angle_deg")
+    assert "350" in err["msg"] and "360" in err["msg"] and "make the last segment 60°" in err["msg"]
 
 
 def test_dwell_with_a_law():
     data = brief_73()
     data["cam"]["programme"][1]["law"] = "cycloidal"
     err = only_error(CamBrief, data)
-    assert err["loc"] == ("cam", "programme", 1)
+    assert err["loc"] == ("cam", "programme", 1, "law")
     assert "dwell has no motion law" in err["msg"]
 
 
@@ -202,14 +203,14 @@ def test_dwell_with_a_lift():
     data = brief_73()
     data["cam"]["programme"][1]["lift_mm"] = 5.0
     err = only_error(CamBrief, data)
-    assert err["loc"] == ("cam", "programme", 1) and "dwell has no lift" in err["msg"]
+    assert err["loc"] == ("cam", "programme", 1, "lift_mm") and "dwell has no lift" in err["msg"]
 
 
 def test_rise_without_a_law():
     data = brief_73()
     del data["cam"]["programme"][0]["law"]
     err = only_error(CamBrief, data)
-    assert err["loc"] == ("cam", "programme", 0)
+    assert err["loc"] == ("cam", "programme", 0, "law")
     assert "rise needs `law`" in err["msg"] and "cycloidal" in err["msg"]
 
 
@@ -224,57 +225,57 @@ def test_roller_without_roller_radius():
     data = brief_73()
     del data["cam"]["follower"]["roller_radius_mm"]
     err = only_error(CamBrief, data)
-    assert err["loc"] == ("cam", "follower") and "roller_radius_mm > 0" in err["msg"]
+    assert err["loc"] == ("cam", "follower", "roller_radius_mm") and "roller_radius_mm > 0" in err["msg"]
 
 
 def test_knife_with_a_roller_radius():
     data = brief_73()
     data["cam"]["follower"]["contact"] = "knife"
     err = only_error(CamBrief, data)
-    assert err["loc"] == ("cam", "follower") and "remove roller_radius_mm" in err["msg"]
+    assert err["loc"] == ("cam", "follower", "roller_radius_mm") and "remove roller_radius_mm" in err["msg"]
 
 
 def test_translating_without_stroke():
     data = brief_73()
     del data["cam"]["follower"]["stroke_h_mm"]
     err = only_error(CamBrief, data)
-    assert err["loc"] == ("cam", "follower") and "stroke_h_mm" in err["msg"]
+    assert err["loc"] == ("cam", "follower", "stroke_h_mm") and "stroke_h_mm" in err["msg"]
 
 
 def test_translating_with_oscillating_fields():
     data = brief_73()
     data["cam"]["follower"]["arm_length_mm"] = 120.0
     err = only_error(CamBrief, data)
-    assert err["loc"] == ("cam", "follower") and "arm_length_mm" in err["msg"]
+    assert err["loc"] == ("cam", "follower", "arm_length_mm") and "arm_length_mm" in err["msg"]
 
 
 def test_oscillating_without_pivot_distance():
     data = brief_shaper_cam()
     del data["cam"]["follower"]["pivot_distance_mm"]
     err = only_error(CamBrief, data)
-    assert err["loc"] == ("cam", "follower") and "pivot_distance_mm" in err["msg"]
+    assert err["loc"] == ("cam", "follower", "pivot_distance_mm") and "pivot_distance_mm" in err["msg"]
 
 
 def test_oscillating_with_stroke_or_offset():
     data = brief_shaper_cam()
     data["cam"]["follower"]["offset_mm"] = 5.0
     err = only_error(CamBrief, data)
-    assert err["loc"] == ("cam", "follower") and "offset_mm" in err["msg"]
+    assert err["loc"] == ("cam", "follower", "offset_mm") and "offset_mm" in err["msg"]
 
 
 def test_lift_deg_given_to_a_translating_follower():
     data = brief_73()
     data["cam"]["programme"][0]["lift_deg"] = 10.0
     err = only_error(CamBrief, data)
-    assert err["loc"] == ("cam",)
-    assert "programme.0" in err["msg"] and "lift_mm, not lift_deg" in err["msg"]
+    assert err["loc"] == ("cam", "programme", 0, "lift_deg")       # was: ("cam",), "programme.0" in the text
+    assert "lift_mm, not lift_deg" in err["msg"]
 
 
 def test_lift_mm_given_to_an_oscillating_follower():
     data = brief_shaper_cam()
     data["cam"]["programme"][0]["lift_mm"] = 10.0
     err = only_error(CamBrief, data)
-    assert err["loc"] == ("cam",) and "lift_deg, not lift_mm" in err["msg"]
+    assert err["loc"] == ("cam", "programme", 0, "lift_mm") and "lift_deg, not lift_mm" in err["msg"]
 
 
 def test_returns_not_closing():
@@ -282,31 +283,34 @@ def test_returns_not_closing():
     data = brief_73()
     data["cam"]["programme"][2]["lift_mm"] = 20.0
     err = only_error(CamBrief, data)
-    assert err["loc"] == ("cam",) and "returns must undo the rises" in err["msg"]
+    assert err["loc"] == ("cam", "programme", 2, "lift_mm") and "returns must undo the rises" in err["msg"]
+    assert "make this lift_mm 30" in err["msg"]
     data["cam"]["programme"][2]["lift_mm"] = 40.0            # below the start
     err = only_error(CamBrief, data)
-    assert err["loc"] == ("cam",) and "programme.2" in err["msg"] and "outside 0" in err["msg"]
+    # was: at the section, "programme.2 … outside 0 …"; now at the field, saying which side
+    assert err["loc"] == ("cam", "programme", 2, "lift_mm") and "below its lowest position 0" in err["msg"]
+    assert "at most 30" in err["msg"]
 
 
 def test_rise_beyond_the_stroke():
     data = brief_73()
     data["cam"]["programme"][0]["lift_mm"] = 35.0
     err = only_error(CamBrief, data)
-    assert err["loc"] == ("cam",) and "programme.0" in err["msg"]
+    assert err["loc"] == ("cam", "programme", 0, "lift_mm") and "at most 30" in err["msg"]
 
 
 def test_negative_offset():
     data = brief_73()
     data["cam"]["follower"]["offset_mm"] = -12.0
     err = only_error(CamBrief, data)
-    assert err["loc"] == ("cam", "follower") and "offset_mm must be ≥ 0" in err["msg"]
+    assert err["loc"] == ("cam", "follower", "offset_mm") and "offset_mm must be ≥ 0" in err["msg"]
 
 
 def test_bad_base_radius():
     data = brief_73()
     data["cam"]["base_radius_mm"] = 0.0
     err = only_error(CamBrief, data)
-    assert err["loc"] == ("cam",) and "base_radius_mm" in err["msg"]
+    assert err["loc"] == ("cam", "base_radius_mm") and "base_radius_mm" in err["msg"]
     data["cam"]["base_radius_mm"] = "automatic"
     errs = errors_of(CamBrief, data)
     assert all(e["loc"][:2] == ("cam", "base_radius_mm") for e in errs)
@@ -335,7 +339,7 @@ def test_section_validates_on_its_own():
     data = brief_73()["cam"]
     data["programme"][3]["angle_deg"] = 50.0
     err = only_error(CamSection, data)
-    assert err["loc"] == () and "360" in err["msg"]
+    assert err["loc"] == ("programme", 3, "angle_deg") and "360" in err["msg"]
 
 
 # ---------------------------------------------------------------------- eccentric disc brief
@@ -376,14 +380,14 @@ def test_eccentricity_not_below_radius_rejected(eps):
     data = brief_71()
     data["disc"]["eccentricity_mm"] = eps
     err = only_error(EccentricCamBrief, data)
-    assert err["loc"] == ("disc",) and "eccentricity_mm must be smaller than radius_R_mm" in err["msg"]
+    assert err["loc"] == ("disc", "eccentricity_mm") and "eccentricity_mm must be smaller than radius_R_mm" in err["msg"]
 
 
 def test_eccentric_roller_without_radius_and_unknown_key():
     data = brief_71()
     data["followers"][2]["roller_radius_mm"] = 0.0
     err = only_error(EccentricCamBrief, data)
-    assert err["loc"] == ("followers", 2) and "roller_radius_mm > 0" in err["msg"]
+    assert err["loc"] == ("followers", 2, "roller_radius_mm") and "roller_radius_mm > 0" in err["msg"]
     data = brief_71()
     data["disc"]["centre"] = [0, -20]
     err = only_error(EccentricCamBrief, data)
@@ -437,9 +441,11 @@ def test_parse_brief_reports_every_cam_problem_with_its_path():
     with pytest.raises(BriefError) as info:
         parse_brief(data)
     got = {pr.path: pr for pr in info.value.problems}
-    assert set(got) == {"cam.follower", "cam.programme.1", "cam.programme.2.speed"}
-    assert "offset_mm must be ≥ 0" in got["cam.follower"].allowed
-    assert "dwell has no motion law" in got["cam.programme.1"].allowed
+    # cross-field problems at the field to change (were at cam.follower, cam.programme.1)
+    assert set(got) == {"cam.follower.offset_mm", "cam.programme.1.law", "cam.programme.2.speed"}
+    assert "offset_mm must be ≥ 0" in got["cam.follower.offset_mm"].allowed
+    assert got["cam.follower.offset_mm"].value == "-12"
+    assert "dwell has no motion law" in got["cam.programme.1.law"].allowed
     assert got["cam.programme.2.speed"].value == "3"
     assert "unknown field" in got["cam.programme.2.speed"].allowed
 
@@ -493,7 +499,7 @@ def test_parse_brief_section_level_problem_is_reported_at_cam():
     with pytest.raises(BriefError) as info:
         parse_brief(data)
     (pr,) = info.value.problems
-    assert pr.path == "cam" and "returns must undo the rises" in pr.allowed
+    assert pr.path == "cam.programme.2.lift_mm" and "returns must undo the rises" in pr.allowed
 
 
 def test_parse_brief_eccentric_problem():
@@ -502,7 +508,7 @@ def test_parse_brief_eccentric_problem():
     with pytest.raises(BriefError) as info:
         parse_brief(data)
     (pr,) = info.value.problems
-    assert pr.path == "disc" and "eccentricity_mm must be smaller" in pr.allowed
+    assert pr.path == "disc.eccentricity_mm" and "eccentricity_mm must be smaller" in pr.allowed
 
 
 def shaper_with_cam() -> dict:
@@ -527,4 +533,5 @@ def test_shaper_brief_carries_a_cam_section():
     with pytest.raises(BriefError) as info:
         parse_brief(data)
     (pr,) = info.value.problems
-    assert pr.path == "cam.follower" and "arm_length_mm" in pr.allowed
+    assert pr.path == "cam.follower.arm_length_mm" and "arm_length_mm" in pr.allowed
+    assert pr.value == "missing"

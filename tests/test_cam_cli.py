@@ -187,18 +187,23 @@ def test_unreachable_base_circle_is_exit_2_with_a_message(tmp_path):
     assert not (tmp_path / "x" / "report.md").exists()
 
 
+# The cross-field problems are at the field to change (were at cam, cam.programme.1,
+# cam.follower); the texts are checked in English (--lang en: they were English-only and so
+# showed in the Chinese run too) and the Chinese run names the same field.
 @pytest.mark.parametrize("edit, path, words", [
-    (lambda d: d["cam"]["programme"][0].update(angle_deg=110), "cam", "add up to 350"),
-    (lambda d: d["cam"]["programme"][1].update(law="cycloidal"), "cam.programme.1", "dwell has no motion law"),
+    (lambda d: d["cam"]["programme"][0].update(angle_deg=110), "cam.programme.3.angle_deg", "add up to 350"),
+    (lambda d: d["cam"]["programme"][1].update(law="cycloidal"), "cam.programme.1.law", "dwell has no motion law"),
     (lambda d: d["cam"]["programme"][0].update(law="sinusoid"), "cam.programme.0.law", "cycloidal"),
-    (lambda d: d["cam"]["follower"].pop("roller_radius_mm"), "cam.follower", "roller_radius_mm"),
-    (lambda d: d["cam"].update(base_radius_mm=-5), "cam", "base_radius_mm"),
+    (lambda d: d["cam"]["follower"].pop("roller_radius_mm"), "cam.follower.roller_radius_mm", "roller_radius_mm"),
+    (lambda d: d["cam"].update(base_radius_mm=-5), "cam.base_radius_mm", "base_radius_mm"),
 ])
 def test_bad_cam_brief_names_the_field(tmp_path, edit, path, words):
-    result = run(edited(tmp_path, "cam_7_3.yaml", edit), tmp_path / "bad")
+    result = run(edited(tmp_path, "cam_7_3.yaml", edit), tmp_path / "bad", "--lang", "en")
     assert result.exit_code == 2, result.output
-    assert f"  {path}" in result.output and words in result.output
+    assert f"  {path}: " in result.output and words in result.output
     assert "Traceback" not in result.output
+    result = run(edited(tmp_path, "cam_7_3.yaml", edit), tmp_path / "bad")
+    assert result.exit_code == 2 and f"  {path}：" in result.output, result.output
 
 
 @pytest.mark.e2e

@@ -125,10 +125,11 @@ def test_speed_error_beyond_the_tolerance_is_a_finding():
 
 
 @pytest.mark.parametrize("stage, path, text", [
-    ({"type": "spur", "d1_mm": 100}, "drive.stages.0", "has no d1_mm"),
-    ({"type": "spur", "ratio": 3, "z1": 20, "z2": 60}, "drive.stages.0", "fixed twice"),
+    # cross-field problems at the field to change (were at drive.stages.0)
+    ({"type": "spur", "d1_mm": 100}, "drive.stages.0.d1_mm", "has no d1_mm"),
+    ({"type": "spur", "ratio": 3, "z1": 20, "z2": 60}, "drive.stages.0.ratio", "fixed twice"),
     ({"type": "gearbox"}, "drive.stages.0.type", "coupling"),
-    ({"type": "spur", "z1": 40, "z2": 20}, "drive.stages.0", "z2 must be at least z1"),
+    ({"type": "spur", "z1": 40, "z2": 20}, "drive.stages.0.z2", "z2 must be at least z1"),
 ])
 def test_bad_drive_stages_name_the_field(stage, path, text):
     data = {"machine": "drive", "report": {"title": "t", "student": "s"},

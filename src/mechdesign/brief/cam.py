@@ -13,7 +13,7 @@ from typing import Annotated, Literal, Optional, Union
 from ..lazy import np
 from pydantic import Field, model_validator
 
-from .common import Problems, StrictModel
+from .common import MISSING, Problems, Shown, StrictModel
 
 LawName = Literal["constant_velocity", "parabolic", "harmonic", "cycloidal", "poly345",
                   "poly4567", "modified_trapezoid", "modified_sine"]
@@ -34,20 +34,33 @@ class CamSegment(StrictModel):
 
     @model_validator(mode="after")
     def _law_only_for_motion(self):
+        out = Problems(self)
+        laws = ", ".join(LawName.__args__)
         if self.motion == "dwell" and self.law is not None:
-            raise ValueError("a dwell has no motion law; remove `law`")
-        if self.motion == "dwell" and (self.lift_mm is not None or self.lift_deg is not None):
-            raise ValueError("a dwell has no lift; remove `lift_mm`/`lift_deg`")
+            out.add("law", self.law, "a dwell has no motion law: remove `law` (or make the segment "
+                    "a rise or a return)", "休止段没有运动规律：请删去 `law`（或将该段改为推程或回程）")
+        for name in ("lift_mm", "lift_deg"):
+            if self.motion == "dwell" and getattr(self, name) is not None:
+                out.add(name, getattr(self, name), f"a dwell has no lift: remove `{name}`",
+                        f"休止段没有升程：请删去 `{name}`")
         if self.motion != "dwell" and self.law is None:
-            raise ValueError(f"a {self.motion} needs `law`: one of {', '.join(LawName.__args__)}")
+            out.add("law", MISSING, f"a {self.motion} needs `law` (its motion law): one of {laws}",
+                    f"{'推程' if self.motion == 'rise' else '回程'}须给出运动规律 law，可选：{laws}")
+        out.raise_any()
         return self
 
 
-def _check_roller(contact: str, roller_radius_mm: float) -> None:
+def _check_roller(out: Problems, contact: str, roller_radius_mm: float) -> None:
+    """A roller follower has a roller (r_r > 0); a knife-edge or flat-faced one has none."""
     if contact == "roller" and not roller_radius_mm > 0:
-        raise ValueError("a roller follower needs roller_radius_mm > 0")
+        out.add("roller_radius_mm", roller_radius_mm if roller_radius_mm else MISSING,
+                "a roller follower needs roller_radius_mm > 0 (or choose contact: knife)",
+                "滚子从动件须给出 roller_radius_mm > 0（或改为 contact: knife 尖顶）")
     if contact != "roller" and roller_radius_mm:
-        raise ValueError(f"a {contact} follower has no roller; remove roller_radius_mm")
+        name_zh = "尖顶" if contact == "knife" else "平底"
+        out.add("roller_radius_mm", roller_radius_mm,
+                f"a {contact} follower has no roller: remove roller_radius_mm (or choose contact: roller)",
+                f"{name_zh}从动件没有滚子：请删去 roller_radius_mm（或改为 contact: roller）")
 
 
 class CamFollower(StrictModel):
@@ -75,24 +88,42 @@ class CamFollower(StrictModel):
 
     @model_validator(mode="after")
     def _complete(self):
-        _check_roller(self.contact, self.roller_radius_mm)
+        out = Problems(self)
+        _check_roller(out, self.contact, self.roller_radius_mm)
         if self.offset_mm != "auto" and self.offset_mm < 0:
-            raise ValueError("offset_mm must be ≥ 0 (give the side in offset_side)")
+            out.add("offset_mm", self.offset_mm,
+                    f"offset_mm must be ≥ 0 (a distance): write {-self.offset_mm:g} and give the side "
+                    f"in offset_side (now {self.offset_side})",
+                    f"偏距是距离，须 ≥ 0：请写 {-self.offset_mm:g}，并用 offset_side 给出偏置方向"
+                    f"（现为 {self.offset_side}）")
+        oscillating_only = ("max_swing_deg", "arm_length_mm", "pivot_distance_mm")
         if self.motion == "translating":
             if self.stroke_h_mm is None:
-                raise ValueError("a translating follower needs stroke_h_mm")
-            extra = [k for k in ("max_swing_deg", "arm_length_mm", "pivot_distance_mm")
-                     if getattr(self, k) is not None]
-            if extra:
-                raise ValueError(f"{', '.join(extra)} belong to an oscillating follower")
+                out.add("stroke_h_mm", MISSING, "a translating follower needs stroke_h_mm, its stroke h [mm]",
+                        "直动从动件须给出行程 h [mm]（stroke_h_mm）")
+            for name in oscillating_only:
+                if getattr(self, name) is not None:
+                    out.add(name, getattr(self, name),
+                            f"{name} belongs to an oscillating follower: remove it (or set "
+                            "motion: oscillating)",
+                            f"{name} 属于摆动从动件：请删去（或改为 motion: oscillating）")
         else:
-            missing = [k for k in ("max_swing_deg", "pivot_distance_mm") if getattr(self, k) is None]
-            if self.contact != "flat" and self.arm_length_mm is None:
-                missing.append("arm_length_mm")
-            if missing:
-                raise ValueError(f"an oscillating follower needs {', '.join(missing)}")
-            if self.stroke_h_mm is not None or self.offset_mm not in (0.0, 0):
-                raise ValueError("stroke_h_mm and offset_mm belong to a translating follower")
+            needed = ["max_swing_deg", "pivot_distance_mm"] + (
+                ["arm_length_mm"] if self.contact != "flat" else [])
+            for name in needed:
+                if getattr(self, name) is None:
+                    out.add(name, MISSING, f"an oscillating follower needs {name}",
+                            f"摆动从动件须给出 {name}")
+            if self.stroke_h_mm is not None:
+                out.add("stroke_h_mm", self.stroke_h_mm,
+                        "stroke_h_mm belongs to a translating follower: give the swing as "
+                        "max_swing_deg instead", "stroke_h_mm 属于直动从动件：摆动从动件请用 max_swing_deg 给出摆角")
+            if self.offset_mm not in (0.0, 0):
+                out.add("offset_mm", self.offset_mm,
+                        "offset_mm belongs to a translating follower: remove it (an oscillating "
+                        "follower is placed by pivot_distance_mm)",
+                        "offset_mm 属于直动从动件：请删去（摆动从动件的位置由 pivot_distance_mm 确定）")
+        out.raise_any()
         return self
 
 
@@ -126,31 +157,86 @@ class CamSection(StrictModel):
 
     @model_validator(mode="after")
     def _programme_closes(self):
+        out = Problems(self)
         if self.base_radius_mm != "auto" and not self.base_radius_mm > 0:
-            raise ValueError("base_radius_mm must be > 0 or 'auto'")
+            out.add("base_radius_mm", self.base_radius_mm,
+                    "base_radius_mm must be > 0, or 'auto' to design the smallest one",
+                    "基圆半径须 > 0 mm，或写 'auto' 由程序设计最小基圆")
         total = sum(s.angle_deg for s in self.programme)
         if abs(total - 360.0) > 1e-6:
-            raise ValueError(f"programme angles add up to {total:g}°; they must cover 360°")
-        oscillating = self.follower.motion == "oscillating"
-        unit, wrong = ("lift_deg", "lift_mm") if oscillating else ("lift_mm", "lift_deg")
-        stroke = self.follower.max_swing_deg if oscillating else self.follower.stroke_h_mm
-        level = 0.0
-        for i, seg in enumerate(self.programme, 1):
+            last = self.programme[-1].angle_deg
+            fix = last + 360.0 - total
+            hint = (f"e.g. make the last segment {fix:g}° instead of {last:g}°" if fix > 0 else
+                    f"shorten the segments by {total - 360.0:g}° in all")
+            hint_zh = (f"例如将最后一段由 {last:g}° 改为 {fix:g}°" if fix > 0 else
+                       f"各段共须缩短 {total - 360.0:g}°")
+            out.add(("programme", len(self.programme) - 1, "angle_deg"), last,
+                    f"the programme's angles add up to {total:g}°; they must cover 360°: {hint}",
+                    f"运动规律各段转角之和为 {total:g}°，须为 360°：{hint_zh}")
+        osc = self.follower.motion == "oscillating"
+        unit, wrong = ("lift_deg", "lift_mm") if osc else ("lift_mm", "lift_deg")
+        kind, kind_zh = ("an oscillating", "摆动") if osc else ("a translating", "直动")
+        stroke_name = "follower.max_swing_deg" if osc else "follower.stroke_h_mm"
+        stroke = self.follower.max_swing_deg if osc else self.follower.stroke_h_mm
+        level, closes = 0.0, stroke is not None
+        for i, seg in enumerate(self.programme):
             if getattr(seg, wrong) is not None:
-                raise ValueError(f"programme.{i - 1}: a {self.follower.motion} follower's lift is "
-                                 f"given as {unit}, not {wrong}")
+                out.add(("programme", i, wrong), getattr(seg, wrong),
+                        f"{kind} follower's lift is given as {unit}, not {wrong}",
+                        f"{kind_zh}从动件的升程用 {unit} 给出，不是 {wrong}")
+                closes = False
+            if stroke is None or not closes:
+                continue
             lift = getattr(seg, unit)
+            before = level
             if seg.motion == "rise":
                 level += stroke if lift is None else lift
             elif seg.motion == "return":
                 level -= level if lift is None else lift
-            if level > stroke * (1 + 1e-9) or level < -1e-9 * stroke:
-                raise ValueError(f"programme.{i - 1}: the follower would reach {level:g}, outside "
-                                 f"0 … {stroke:g} (its stroke)")
-        if abs(level) > 1e-9 * stroke:
-            raise ValueError(f"the programme ends at {level:g} instead of 0: returns must undo the rises")
+            room = stroke - before if seg.motion == "rise" else before
+            if room <= 1e-9 * stroke and (level > stroke * (1 + 1e-9) or level < -1e-9 * stroke):
+                where = "its stroke" if seg.motion == "rise" else "its lowest position"
+                where_zh = "行程终点" if seg.motion == "rise" else "最低位置"
+                out.add(("programme", i, "motion"), seg.motion,
+                        f"the follower is already at {where} here: make this segment a dwell or a "
+                        f"{'return' if seg.motion == 'rise' else 'rise'}",
+                        f"从动件此时已在{where_zh}：请将本段改为休止段或"
+                        f"{'回程' if seg.motion == 'rise' else '推程'}")
+                closes = False
+            elif level > stroke * (1 + 1e-9):
+                field = ("programme", i, unit if lift is not None else "motion")
+                out.add(field, lift if lift is not None else seg.motion,
+                        f"the follower would reach {level:g}, above its stroke {stroke:g} "
+                        f"({stroke_name}): this rise may lift at most {room:g} (give {unit})",
+                        f"从动件将到达 {level:g}，超过其行程 {stroke:g}（{stroke_name}）：本段推程的升程"
+                        f"至多为 {room:g}（用 {unit} 给出）")
+                closes = False
+            elif level < -1e-9 * stroke:
+                out.add(("programme", i, unit), lift,
+                        f"the follower would reach {level:g}, below its lowest position 0: this "
+                        f"return's {unit} may be at most {room:g}",
+                        f"从动件将到达 {level:g}，低于最低位置 0：本段回程的 {unit} 至多为 {room:g}")
+                closes = False
+        if closes and abs(level) > 1e-9 * stroke:
+            returns = [i for i, s in enumerate(self.programme) if s.motion == "return"]
+            lift = getattr(self.programme[returns[-1]], unit) if returns else None
+            if lift is not None and returns[-1] > max(i for i, s in enumerate(self.programme)
+                                                       if s.motion == "rise"):
+                out.add(("programme", returns[-1], unit), lift,
+                        f"the programme ends at {level:g} instead of 0: the returns must undo the "
+                        f"rises; make this {unit} {lift + level:g} (or leave it out: back to 0)",
+                        f"运动规律结束于 {level:g} 而不是 0：回程须抵消推程；请将本段 {unit} 改为 "
+                        f"{lift + level:g}（或删去：回到 0）")
+            else:
+                n = len(self.programme) - 1
+                out.add(("programme", n, "motion"), self.programme[n].motion,
+                        f"the programme ends at {level:g} instead of 0: the follower must come "
+                        "back; add a return after the last rise",
+                        f"运动规律结束于 {level:g} 而不是 0：从动件须回到起点；请在最后一段推程之后增加回程段")
         if not any(s.motion == "rise" for s in self.programme):
-            raise ValueError("the programme needs at least one rise")
+            out.add("programme", Shown(", ".join(s.motion for s in self.programme)),
+                    "the programme needs at least one rise", "运动规律至少需要一段推程（rise）")
+        out.raise_any()
         return self
 
     @model_validator(mode="after")

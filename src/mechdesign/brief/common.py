@@ -17,19 +17,20 @@ from pydantic import BaseModel, ConfigDict, Field, field_validator
 _FRACTION = re.compile(r"^\s*([-+]?(?:\d+\.?\d*|\.\d+))\s*(?:/\s*(\d+\.?\d*|\.\d+)\s*)?$")
 
 
-def parse_fraction(value, message: str):
+def parse_fraction(value, message: str, message_zh: str = "须为数值或分数，如 1/25"):
     """``value`` as a number when it is text such as '1/25' or '0.04' (the course writes
     fluctuation coefficients as fractions); other values unchanged (the field checks them).
-    ``message`` is the ValueError raised for text that is no such number. Only plain
-    decimals are read (no exponents), so the text cannot ask for a huge number."""
+    ``message`` (``message_zh`` in Chinese) is the error raised for text that is no such
+    number. Only plain decimals are read (no exponents), so the text cannot ask for a huge
+    number."""
     if not isinstance(value, str):
         return value
     match = _FRACTION.match(value) if len(value) <= 40 else None
     if match is None:
-        raise ValueError(message)
+        raise invalid(message, message_zh)
     num, den = match.groups()
     if den is not None and Fraction(den) == 0:
-        raise ValueError(f"{message}; the denominator is 0")
+        raise invalid(f"{message}; the denominator is 0", f"{message_zh}；分母为 0")
     return float(Fraction(num) / (Fraction(den) if den is not None else 1))
 
 
@@ -43,6 +44,18 @@ class _Missing:
 
 
 MISSING = _Missing()
+
+
+class Shown:
+    """A problem's value shown as this text, without quotes (e.g. "no rise" for a whole list)."""
+
+    def __init__(self, text: str):
+        self.text = text
+
+    def __repr__(self) -> str:
+        return self.text
+
+    __str__ = __repr__
 
 
 class Problems:
@@ -73,6 +86,15 @@ class Problems:
             type=PydanticCustomError("value_error", "{msg}",
                                      {"msg": en} if zh is None else {"msg": en, "zh": zh}),
             loc=loc, input=value) for loc, value, en, zh in self.items])
+
+
+def invalid(en: str, zh: str):
+    """The error a single-field validator raises for a bad value: pydantic reports it at
+    the field, the loader shows ``en`` (or ``zh`` in a Chinese brief) as what is allowed.
+    Use: ``raise invalid("must be …", "须为 …")``."""
+    from pydantic_core import PydanticCustomError
+
+    return PydanticCustomError("value_error", "{msg}", {"msg": en, "zh": zh})
 
 
 class StrictModel(BaseModel):
@@ -174,10 +196,11 @@ class AnalysisSettings(StrictModel):
     def _events(cls, value):
         for code in value:
             if not _EVENT.match(code):
-                raise ValueError(
-                    f"unknown event {code!r}; allowed: {', '.join(EVENTS)} (e.g. link_vertical:4)")
+                raise invalid(
+                    f"unknown event {code!r}; allowed: {', '.join(EVENTS)} (e.g. link_vertical:4)",
+                    f"未知事件 {code!r}；可用：{', '.join(EVENTS)}（例如 link_vertical:4）")
         if len(set(value)) != len(value):
-            raise ValueError("each event once")
+            raise invalid("each event once: remove the repeated one", "每个事件只能出现一次：请删去重复项")
         return value
 
     @field_validator("points")
@@ -185,9 +208,10 @@ class AnalysisSettings(StrictModel):
     def _points(cls, value):
         for name in value:
             if not _POINT.match(name):
-                raise ValueError(f"{name!r} is not a point name (a letter, then letters, digits, _ or ')")
+                raise invalid(f"{name!r} is not a point name (a letter, then letters, digits, _ or ')",
+                              f"{name!r} 不是点名（字母开头，其后为字母、数字、_ 或 '）")
         if len(set(value)) != len(value):
-            raise ValueError("each point once")
+            raise invalid("each point once: remove the repeated one", "每个点只能出现一次：请删去重复项")
         return value
 
 

@@ -18,12 +18,12 @@ import math
 
 from dataclasses import dataclass
 from math import prod
-from typing import Literal, Optional
+from typing import ClassVar, Literal, Optional
 
 from ..lazy import np
 from pydantic import Field, model_validator
 
-from .common import StrictModel
+from .common import MISSING, Problems, StrictModel
 
 StateName = Literal["rise", "dwell_high", "return", "dwell_low", "move", "dwell"]
 _KEY = r"^[a-z][a-z0-9_]*$"
@@ -57,10 +57,20 @@ class CycleActuator(StrictModel):
 
     @model_validator(mode="after")
     def _covers_360(self):
+        out = Problems(self)
         total = sum(p.span_deg for p in self.phases)
         if abs(total - 360.0) > 1e-6:
-            raise ValueError(f"actuator '{self.key}': the phase spans add up to {total:g}°; "
-                             f"they must add up to 360°")
+            last = self.phases[-1].span_deg
+            fix = last + 360.0 - total
+            hint = (f"e.g. make the last phase {fix:g}° instead of {last:g}°" if fix > 0 else
+                    f"shorten the phases by {total - 360.0:g}° in all")
+            hint_zh = (f"例如将最后一个阶段由 {last:g}° 改为 {fix:g}°" if fix > 0 else
+                       f"各阶段共须缩短 {total - 360.0:g}°")
+            out.add(("phases", len(self.phases) - 1, "span_deg"), last,
+                    f"actuator '{self.key}': the phase spans add up to {total:g}°; they must add "
+                    f"up to 360°: {hint}",
+                    f"执行构件 '{self.key}'：各阶段转角之和为 {total:g}°，须为 360°：{hint_zh}")
+        out.raise_any()
         return self
 
 
@@ -99,30 +109,44 @@ class CycleSection(StrictModel):
 
     @model_validator(mode="after")
     def _references(self):
+        out = Problems(self)
         keys = [a.key for a in self.actuators]
-        dup = sorted({k for k in keys if keys.count(k) > 1})
-        if dup:
-            raise ValueError(f"actuator key(s) {', '.join(map(repr, dup))} appear more than once")
+        for i, key in enumerate(keys):
+            if key in keys[:i]:
+                out.add(("actuators", i, "key"), key,
+                        f"actuator key '{key}' appears more than once (also actuators.{keys.index(key)}.key): "
+                        "give each actuator its own key",
+                        f"执行构件代号 '{key}' 已被 actuators.{keys.index(key)} 使用：每个执行构件须有自己的代号")
         by_key = {a.key: a for a in self.actuators}
+        known = ", ".join(by_key)
         for i, c in enumerate(self.constraints):
             for side in ("a", "b"):
                 ref = getattr(c, side)
-                where = f"constraints.{i}.{side}"
+                where = ("constraints", i, side)
                 act = by_key.get(ref.actuator)
                 if act is None:
-                    raise ValueError(f"{where}: no actuator '{ref.actuator}'; actuators: "
-                                     f"{', '.join(keys)}")
+                    out.add(where + ("actuator",), ref.actuator,
+                            f"no actuator '{ref.actuator}'; actuators: {known}",
+                            f"没有此执行构件；执行构件有：{known}")
+                    continue
                 count = sum(p.state == ref.state for p in act.phases)
                 have = ", ".join(p.state for p in act.phases)
                 if count == 0:
-                    raise ValueError(f"{where}: actuator '{act.key}' has no '{ref.state}' phase; "
-                                     f"its phases: {have}")
-                if ref.occurrence is None and count > 1:
-                    raise ValueError(f"{where}: actuator '{act.key}' has {count} '{ref.state}' "
-                                     f"phases; give occurrence (1 … {count})")
-                if ref.occurrence is not None and ref.occurrence > count:
-                    raise ValueError(f"{where}: actuator '{act.key}' has {count} '{ref.state}' "
-                                     f"phase(s); occurrence {ref.occurrence} does not exist")
+                    out.add(where + ("state",), ref.state,
+                            f"actuator '{act.key}' has no '{ref.state}' phase; its phases: {have}",
+                            f"执行构件 '{act.key}' 没有 '{ref.state}' 阶段；其阶段为：{have}")
+                elif ref.occurrence is None and count > 1:
+                    out.add(where + ("occurrence",), MISSING,
+                            f"actuator '{act.key}' has {count} '{ref.state}' phases: say which "
+                            f"one with occurrence (1 … {count})",
+                            f"执行构件 '{act.key}' 有 {count} 个 '{ref.state}' 阶段：请用 occurrence"
+                            f"（1 … {count}）指明是哪一个")
+                elif ref.occurrence is not None and ref.occurrence > count:
+                    out.add(where + ("occurrence",), ref.occurrence,
+                            f"actuator '{act.key}' has {count} '{ref.state}' phase(s): occurrence "
+                            f"is 1 … {count}",
+                            f"执行构件 '{act.key}' 只有 {count} 个 '{ref.state}' 阶段：occurrence 须为 1 … {count}")
+        out.raise_any()
         return self
 
 
@@ -164,9 +188,14 @@ class MorphFunction(StrictModel):
 
     @model_validator(mode="after")
     def _chosen_exists(self):
-        if self.chosen > len(self.options):
-            raise ValueError(f"function '{self.name_en}': chosen = {self.chosen}, but it has only "
-                             f"{len(self.options)} option(s) (1 … {len(self.options)})")
+        out = Problems(self)
+        n = len(self.options)
+        if self.chosen > n:
+            out.add("chosen", self.chosen,
+                    f"function '{self.name_en}': chosen = {self.chosen}, but it has only {n} "
+                    f"option(s): chosen is 1 … {n}",
+                    f"功能“{self.name_zh}”只有 {n} 个方案：chosen 须为 1 … {n}")
+        out.raise_any()
         return self
 
 
@@ -254,18 +283,38 @@ class IncompleteGearSection(StrictModel):
 
     @model_validator(mode="after")
     def _timing_can_be_met(self):
+        out = Problems(self)
         if self.feed_mm is not None and self.advance_deg is not None:
-            raise ValueError("give the advance either as advance_deg or as feed_mm, not both")
+            out.add("feed_mm", self.feed_mm,
+                    "the advance is already given as advance_deg: give it either as advance_deg or "
+                    "as feed_mm, not both", "转角已由 advance_deg 给出：advance_deg 与 feed_mm 只能给出其一")
         if self.feed_mm is not None and self.sprocket_pitch_radius_mm is None:
-            raise ValueError("feed_mm needs sprocket_pitch_radius_mm")
-        from ..core.intermittent import IntermittentDesignError
+            out.add("sprocket_pitch_radius_mm", MISSING,
+                    "feed_mm needs sprocket_pitch_radius_mm: the sprocket's pitch radius turns the feed "
+                    "into the driven wheel's advance",
+                    "以 mm 给出送进量时须给出链轮分度圆半径，才能求出从动轮转角")
+        if not out.items:
+            from ..core.intermittent import IntermittentDesignError
 
-        try:
-            _design(self, None)
-        except IntermittentDesignError as exc:
-            raise ValueError(f"{exc} (z1 = driver_teeth_full, z2 = driven_teeth, "
-                             f"z1' = teeth_present)") from None
+            try:
+                _design(self, None)
+            except IntermittentDesignError as exc:
+                name = self._FIELDS.get(exc.field or "", "teeth_present")
+                if exc.field == "advance" and self.feed_mm is not None:
+                    name = "feed_mm"
+                value = getattr(self, name)
+                out.add(name, MISSING if value is None else value,
+                        f"{exc.en} (z1 = driver_teeth_full, z2 = driven_teeth, z1' = teeth_present)",
+                        f"{exc.zh or exc.en}（z1 = driver_teeth_full，z2 = driven_teeth，"
+                        "z1' = teeth_present）")
+        out.raise_any()
         return self
+
+    #: IntermittentDesignError.field → the brief field to change
+    _FIELDS: ClassVar[dict[str, str]] = {
+        "module": "module_mm", "z1": "driver_teeth_full", "z2": "driven_teeth",
+        "teeth": "teeth_present", "motion_span": "motion_span_deg", "advance": "advance_deg",
+        "feed": "feed_mm", "sprocket_radius": "sprocket_pitch_radius_mm"}
 
 
 def _design(s: IncompleteGearSection, shaft_speed_rpm: float | None):

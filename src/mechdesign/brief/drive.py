@@ -11,7 +11,7 @@ from typing import Annotated, Literal, Optional, Union
 from ..lazy import np
 from pydantic import Field, field_validator, model_validator
 
-from .common import StrictModel
+from .common import Problems, StrictModel, invalid
 
 StageType = Literal["coupling", "belt", "chain", "spur", "helical", "worm"]
 
@@ -39,7 +39,10 @@ def check_material(value: str | None, which: str) -> str | None:
     try:
         {"gear": cat.gear_material, "wheel": cat.worm_wheel_material}[which](value)
     except KeyError as exc:       # its message lists the allowed keys
-        raise ValueError(exc.args[0]) from None
+        allowed = str(exc.args[0]).partition("allowed: ")[2]
+        raise invalid(f"not in the shipped material catalogue; allowed: {allowed} (or the Chinese "
+                      "name, e.g. 45调质)",
+                      f"材料表中没有此材料；可用：{allowed}（或中文名，如 45调质）") from None
     return value
 
 
@@ -89,19 +92,35 @@ class DriveStage(StrictModel):
 
     @model_validator(mode="after")
     def _fields_fit_type(self):
+        out = Problems(self)
         allowed = _FIELDS_BY_TYPE[self.type]
-        extra = [n for n in _OPTIONAL if getattr(self, n) is not None and n not in allowed]
-        if extra:
-            raise ValueError(f"a {self.type} stage has no {', '.join(extra)}; "
-                             f"allowed: {', '.join(sorted(allowed)) or 'type, efficiency'}")
+        names = ", ".join(sorted(allowed | {"type", "efficiency"}))
+        for n in _OPTIONAL:
+            if getattr(self, n) is not None and n not in allowed:
+                out.add(n, getattr(self, n),
+                        f"a {self.type} stage has no {n}: remove it (fields of a {self.type} stage: "
+                        f"{names})",
+                        f"{self.type} 级没有 {n}：请删去（{self.type} 级可用的字段：{names}）")
         if self.type == "belt" and (self.d1_mm and self.d2_mm) and self.d2_mm < self.d1_mm:
-            raise ValueError("d2_mm must be at least d1_mm (a reduction drive)")
+            out.add("d2_mm", self.d2_mm,
+                    f"a reduction drive: the driven pulley d2 must be at least d1_mm = {self.d1_mm:g}",
+                    f"减速传动：从动带轮 d2 须不小于 d1_mm = {self.d1_mm:g}")
         if self.z1 is not None and self.z2 is not None and self.z2 < self.z1:
-            raise ValueError("z2 must be at least z1 (a reduction stage)")
-        fixes = [self.ratio is not None, self.z1 is not None and self.z2 is not None,
-                 self.d1_mm is not None and self.d2_mm is not None]
-        if sum(fixes) > 1:
-            raise ValueError("the ratio is fixed twice: give `ratio` or both z1/z2 (d1/d2), not both")
+            what, what_zh = (("worm wheel", "蜗轮") if self.type == "worm" else
+                             ("driven wheel", "从动轮"))
+            out.add("z2", self.z2, f"z2 must be at least z1 = {self.z1}: a reduction stage (the {what} "
+                    "turns slower than the driver)",
+                    f"减速级（{what_zh}转得比主动轮慢）：z2 须不小于 z1 = {self.z1}")
+        fixes = [n for n, given in (("ratio", self.ratio is not None),
+                                    ("z1/z2", self.z1 is not None and self.z2 is not None),
+                                    ("d1_mm/d2_mm", self.d1_mm is not None and self.d2_mm is not None))
+                 if given]
+        if len(fixes) > 1 and "ratio" in fixes:
+            other = fixes[1]
+            out.add("ratio", self.ratio,
+                    f"the ratio is fixed twice: {other} already fix it; remove `ratio` (or one of "
+                    f"{other})", f"传动比给定了两次：{other} 已确定传动比；请删去 `ratio`（或删去 {other} 之一）")
+        out.raise_any()
         return self
 
 

@@ -198,7 +198,12 @@ class GearPair(StrictModel):
     @model_validator(mode="after")
     def _reduction(self):
         if self.z2 < self.z1:
-            raise ValueError("z2 must be at least z1: gear 2 on the crank turns slower than the pinion")
+            out = Problems(self)
+            out.add(("z2",), self.z2,
+                    f"z2 must be at least z1 = {self.z1}: gear 2 on the crank turns slower than the "
+                    "pinion (a reduction); raise z2 or lower z1",
+                    f"z2 须不小于 z1 = {self.z1}：曲柄上的齿轮 2 比小齿轮转得慢（减速）；应增大 z2 或减小 z1")
+            out.raise_any()
         return self
 
 

@@ -17,15 +17,15 @@ from typing import Annotated, Literal, Optional, Union
 from ..lazy import np
 from pydantic import BeforeValidator, Field, model_validator
 
-from .common import AnalysisSettings, Problems, StrictModel, parse_fraction
+from .common import MISSING, AnalysisSettings, Problems, StrictModel, invalid, parse_fraction
 
 _NAME = re.compile(r"^[A-Za-z][A-Za-z0-9_']{0,15}$")
 
 
 def _name(value):
     if not isinstance(value, str) or not _NAME.match(value):
-        raise ValueError("a point name is a letter followed by up to 15 letters, digits, _ or ', "
-                         "e.g. A, B2, S3")
+        raise invalid("a point name is a letter followed by up to 15 letters, digits, _ or ', "
+                      "e.g. A, B2, S3", "点名为一个字母后接至多 15 个字母、数字、_ 或 '，例如 A、B2、S3")
     return value
 
 
@@ -34,7 +34,8 @@ def _link_id(value):
     if isinstance(value, int) and not isinstance(value, bool):
         value = str(value)
     if not isinstance(value, str) or not re.match(r"^[A-Za-z0-9_]{1,8}$", value):
-        raise ValueError("a link id is a number or a short name, e.g. 3")
+        raise invalid("a link id is a number or a short name, e.g. 3",
+                      "构件编号为数字或简短名称，例如 3")
     return value
 
 
@@ -129,7 +130,11 @@ class OutputSpec(StrictModel):
     @model_validator(mode="after")
     def _one(self):
         if (self.point is None) == (self.link is None):
-            raise ValueError("give exactly one of point or link")
+            out = Problems(self)
+            out.add(("point",), self.point if self.point is not None else MISSING,
+                    "give exactly one of point (a slider's point) or link (a rocker's link)",
+                    "point（滑块上的点）与 link（摇杆构件）须且只能给出一个")
+            out.raise_any()
         return self
 
 

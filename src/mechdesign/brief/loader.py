@@ -55,7 +55,8 @@ class BriefProblem:
         """The line in ``lang`` ("zh" or "en"); the value "missing" is said in Chinese too."""
         if lang != "zh":
             return str(self)
-        value = "缺少" if self.value == "missing" else self.value
+        value = {"missing": "缺少", "empty": "空（未填值）", "the whole section": "整节",
+                 "a mapping (section)": "映射（一节）"}.get(self.value, self.value)
         if not value:
             return f"{self.path}：{self.allowed_zh or self.allowed}"
         return f"{self.path}：{value} — {self.allowed_zh or self.allowed}"
@@ -374,23 +375,111 @@ _ZH = {
 }
 
 
+#: pydantic error type → English text of what is allowed, in the project's words (the
+#: others: pydantic's message with "Input should be" said as "must be").
+_EN = {
+    "int_from_float": "must be a whole number (no decimals)",
+    "finite_number": "must be a finite number (not inf or nan)",
+    "dict_type": "must be a mapping (key: value)", "mapping_type": "must be a mapping (key: value)",
+    "model_type": "must be a section: a mapping of key: value",
+    "model_attributes_type": "must be a section: a mapping of key: value",
+    "union_tag_invalid": "type {tag} does not exist; allowed: {expected_tags}",
+    "union_tag_not_found": "the field {discriminator} is needed to tell the kind",
+    "too_short": "must have at least {min_length} item(s) (it has {actual_length})",
+    "too_long": "must have at most {max_length} item(s) (it has {actual_length})",
+    "string_too_short": "must have at least {min_length} character(s)",
+    "string_too_long": "must have at most {max_length} character(s)",
+    "string_pattern_mismatch": "does not have the required form (it must match {pattern})",
+    "literal_error": "must be one of: {expected}", "enum": "must be one of: {expected}",
+    "list_type": "must be a list", "tuple_type": "must be a list",
+    "string_type": "must be text (a string)", "bool_type": "must be true or false",
+    "bool_parsing": "must be true or false",
+}
+_PYDANTIC_WORDS = (("Input should be", "must be"), ("Input should", "must"),
+                   ("String should", "must"), ("Value should", "must"), ("should be", "must be"),
+                   ("Field required", "required"), ("Input tag", "tag"))
+
+
+def _en_allowed(kind: str, err: dict, msg: str) -> str:
+    """What is allowed in English, in the project's words (never pydantic's wording or URL)."""
+    template = _EN.get(kind)
+    if template is not None:
+        try:
+            return template.format(**(err.get("ctx") or {}))
+        except (KeyError, IndexError, ValueError):
+            pass
+    msg = msg.removeprefix("Value error, ").removeprefix("Assertion failed, ")
+    for theirs, ours in _PYDANTIC_WORDS:
+        msg = msg.replace(theirs, ours)
+    msg = re.sub(r"\s*\[type=.*|\s*For further information visit \S+|https?://\S+", "", msg)
+    return msg.strip() or "not allowed here"
+
+
 def _zh_allowed(kind: str, err: dict, msg: str) -> str | None:
     """Chinese text for pydantic error ``kind`` (None when unknown)."""
     if kind in ("value_error", "assertion_error"):
         from ..core.errors import chinese_of
 
         ctx = err.get("ctx") or {}
-        if isinstance(ctx.get("zh"), str):     # a check that wrote its Chinese text (Problems)
+        if isinstance(ctx.get("zh"), str):     # a check that wrote its Chinese text (Problems, invalid)
             return ctx["zh"]
         return chinese_of(msg, ctx.get("error") if isinstance(ctx.get("error"), BaseException)
                           else None)
     template = _ZH.get(kind)
     if template is None:
         return None
+    ctx = {k: (v.replace("' or '", "'、'") if isinstance(v, str) else v)
+           for k, v in (err.get("ctx") or {}).items()}
     try:
-        return template.format(**{k: v for k, v in (err.get("ctx") or {}).items()})
+        return template.format(**ctx)
     except (KeyError, IndexError, ValueError):
         return None
+
+
+def _value_of(kind: str, value: Any) -> str:
+    """The value a problem line shows: as written, but never a whole section's repr (a
+    check of a section names its field; a mapping or list of sections is described)."""
+    if isinstance(value, (dict, BaseModel)) or (
+            isinstance(value, (list, tuple)) and any(isinstance(v, (dict, list, BaseModel)) for v in value)):
+        if kind in ("value_error", "assertion_error"):    # a check of the whole section
+            return "the whole section"
+        if isinstance(value, (list, tuple)):
+            return f"a list of {len(value)} item{'s' if len(value) != 1 else ''}"
+        return "a mapping (section)"
+    if value is None and kind not in ("value_error", "assertion_error"):   # `key:` left empty
+        return "empty"
+    return _show(value)
+
+
+_NAMED_PATH = re.compile(r"[A-Za-z_][A-Za-z0-9_]*(?:\.[A-Za-z0-9_]+|\[\d+\])*")
+
+
+def _field_named(err: dict) -> dict:
+    """A check of a whole section (or brief) that raised a plain ValueError (no field of
+    its own): the error moved to the first field its message names that the section's data
+    hold (``crank.pivot 'Z' is not …`` → ``linkage.crank.pivot``; a name with ``_``, ``.``
+    or ``[i]``, not a plain word of the text), with that field's value.
+    Checks written with :class:`~mechdesign.brief.common.Problems` name their field."""
+    value = err.get("input")
+    if err["type"] != "value_error" or not isinstance(value, dict) \
+            or isinstance((err.get("ctx") or {}).get("zh"), str):
+        return err
+    for token in _NAMED_PATH.findall(err["msg"].removeprefix("Value error, ")):
+        if not any(c in token for c in "_.["):     # a word of the text, not a field name
+            continue
+        parts = [int(p) if p.isdigit() else p for p in re.split(r"[.\[\]]", token) if p]
+        node: Any = value
+        for part in parts:
+            if isinstance(node, dict) and part in node:
+                node = node[part]
+            elif isinstance(node, list) and isinstance(part, int) and part < len(node):
+                node = node[part]
+            else:
+                break
+        else:
+            if not isinstance(node, dict):
+                return dict(err, loc=tuple(err["loc"]) + tuple(parts), input=node)
+    return err
 
 
 def _problem(model: type[BaseModel], err: dict) -> BriefProblem:
@@ -402,13 +491,14 @@ def _problem(model: type[BaseModel], err: dict) -> BriefProblem:
     unit_zh = f"（{info.description}）" if unit else ""
     if kind == "extra_forbidden":
         allowed = ", ".join((f.alias or k) for k, f in parent.model_fields.items()) if parent else ""
-        return BriefProblem(path, _show(err.get("input")), f"unknown field; allowed here: {allowed}",
+        return BriefProblem(path, _value_of(kind, err.get("input")),
+                            f"unknown field; allowed here: {allowed}",
                             f"未知字段；此处可用的字段：{allowed}")
     if kind == "missing":
         return BriefProblem(path, "missing", f"required{unit}", f"必填{unit_zh}")
     msg = err["msg"].removeprefix("Value error, ")
     zh = _zh_allowed(kind, err, msg)
-    return BriefProblem(path, _show(err.get("input")), f"{msg}{unit}",
+    return BriefProblem(path, _value_of(kind, err.get("input")), f"{_en_allowed(kind, err, msg)}{unit}",
                         None if zh is None else f"{zh}{unit_zh}")
 
 
@@ -527,7 +617,7 @@ def parse_brief(data: Any, source: str = "brief", located: dict[str, str] | None
     except ValidationError as exc:
         problems = []
         for e in exc.errors():
-            e = dict(e, loc=_data_loc(model, data, tuple(e["loc"])))
+            e = _field_named(dict(e, loc=_data_loc(model, data, tuple(e["loc"]))))
             problems.append(_unit_hint(e, _problem(model, e)))
         problems = _merge_alternatives(problems)
         if located:

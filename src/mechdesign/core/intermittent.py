@@ -48,7 +48,15 @@ BOUNDARY_TOL = 1e-9
 
 class IntermittentDesignError(DesignError):
     """An incomplete gear that cannot meet the timing with whole teeth; the message says
-    what to change."""
+    what to change. ``field`` names the input to change: module, z1, z2, teeth,
+    motion_span, advance (or the feed that gave it), feed or sprocket_radius."""
+
+    def __init__(self, en: str, zh: str | None = None, field: str | None = None):
+        super().__init__(en, zh)
+        self.field = field
+
+    def __reduce__(self):
+        return (type(self), (self.en, self.zh, self.field))
 
 
 @dataclass(frozen=True)
@@ -278,22 +286,26 @@ def design_incomplete_gear(module: float, z1: int | None = None, z2: int | None 
     """
     if not (math.isfinite(module) and module > 0):
         raise IntermittentDesignError(f"the module must be positive, not {module!r}",
-                                      f"模数须为正，而不是 {module!r}")
+                                      f"模数须为正，而不是 {module!r}",
+                                      field="module")
     for name, z in (("z1", z1), ("z2", z2), ("teeth", teeth)):
         if z is not None and (isinstance(z, bool) or int(z) != z or z < 1):
             raise IntermittentDesignError(f"{name} must be a whole number ≥ 1, not {z!r}",
-                                          f"{name} 须为 ≥ 1 的整数，而不是 {z!r}")
+                                          f"{name} 须为 ≥ 1 的整数，而不是 {z!r}",
+                                          field=name)
     z1 = None if z1 is None else int(z1)
     z2 = None if z2 is None else int(z2)
     teeth = None if teeth is None else int(teeth)
     if motion_span is not None and not 0 < motion_span < TWO_PI:
         raise IntermittentDesignError(f"the motion span must lie between 0° and 360°, not "
                                       f"{motion_span * DEG:g}°",
-                                      f"运动角须在 0° 与 360° 之间，而不是 {motion_span * DEG:g}°")
+                                      f"运动角须在 0° 与 360° 之间，而不是 {motion_span * DEG:g}°",
+                                      field="motion_span")
     if feed is not None:
         if sprocket_radius is None or not sprocket_radius > 0:
             raise IntermittentDesignError("a chain feed needs the sprocket's pitch radius",
-                                          "链条送进量需要链轮的分度圆半径")
+                                          "链条送进量需要链轮的分度圆半径",
+                                          field="sprocket_radius")
         from_feed = feed / sprocket_radius
         if advance is not None and abs(from_feed - advance) > tol:
             raise IntermittentDesignError(
@@ -301,11 +313,13 @@ def design_incomplete_gear(module: float, z1: int | None = None, z2: int | None 
                 f"{sprocket_radius * 1e3:g} mm is an advance of {from_feed * DEG:.4g}°, not the "
                 f"{advance * DEG:g}° also given: give one of them",
                 f"送进量 {feed * 1e3:g} mm 在分度圆半径 {sprocket_radius * 1e3:g} mm 的链轮上相当于转过 "
-                f"{from_feed * DEG:.4g}°，而不是同时给出的 {advance * DEG:g}°：两者只给一个")
+                f"{from_feed * DEG:.4g}°，而不是同时给出的 {advance * DEG:g}°：两者只给一个",
+                field="feed")
         advance = from_feed
     if advance is not None and not advance > 0:
         raise IntermittentDesignError(f"the advance must be positive, not {advance * DEG:g}°",
-                                      f"从动轮转角须为正，而不是 {advance * DEG:g}°")
+                                      f"从动轮转角须为正，而不是 {advance * DEG:g}°",
+                                      field="advance")
 
     def adv_text(angle: float, extra: str = "") -> str:
         """The advance in degrees, with the feed when the brief gave a feed."""
@@ -334,7 +348,8 @@ def design_incomplete_gear(module: float, z1: int | None = None, z2: int | None 
                     f"on the driver (z1 = {z1}), not a whole number; whole teeth give {options or 'no usable value'}: "
                     f"change the motion span or z1",
                     f"运动角 {motion_span * DEG:g}° 要求主动轮上有 z1·φm/360° = {exact:.4g} 个齿"
-                    f"（z1 = {z1}），不是整数；整齿数可得 {opt_zh or '无可用值'}：应改变运动角或 z1")
+                    f"（z1 = {z1}），不是整数；整齿数可得 {opt_zh or '无可用值'}：应改变运动角或 z1",
+                    field="motion_span")
         elif z2 is not None and advance is not None:
             exact = z2 * advance / TWO_PI
             teeth = int(round(exact))
@@ -349,18 +364,21 @@ def design_incomplete_gear(module: float, z1: int | None = None, z2: int | None 
                     f"driver (z2 = {z2}), not a whole number; whole teeth give {options or 'no usable value'}: change "
                     f"the advance or z2",
                     f"从动轮转角 {adv_zh(advance)} 要求主动轮上有 z2·Δφ2/360° = {exact:.4g} 个齿"
-                    f"（z2 = {z2}），不是整数；整齿数可得 {opt_zh or '无可用值'}：应改变转角或 z2")
+                    f"（z2 = {z2}），不是整数；整齿数可得 {opt_zh or '无可用值'}：应改变转角或 z2",
+                    field="advance")
         else:
             raise IntermittentDesignError(
                 "the teeth on the driver are not fixed: give them, or z1 with the motion span, "
                 "or z2 with the advance (or feed)",
-                "主动轮的齿数未确定：请直接给出，或给出 z1 与运动角，或给出 z2 与转角（或送进量）")
+                "主动轮的齿数未确定：请直接给出，或给出 z1 与运动角，或给出 z2 与转角（或送进量）",
+                field="teeth")
     # --- the driver's notional full count
     if z1 is None:
         if motion_span is None:
             raise IntermittentDesignError("give z1 (the driver's full tooth count) or the "
                                           "driver's motion span",
-                                          "请给出 z1（主动轮的完整齿数）或主动轮的运动角")
+                                          "请给出 z1（主动轮的完整齿数）或主动轮的运动角",
+                                          field="z1")
         exact = TWO_PI * teeth / motion_span
         z1 = int(round(exact))
         if z1 < 1 or abs(TWO_PI * teeth / z1 - motion_span) > tol:
@@ -374,12 +392,14 @@ def design_incomplete_gear(module: float, z1: int | None = None, z2: int | None 
                 f"z1 = 360°·z1'/φm = {exact:.4g}, not a whole number; whole z1 give {options or 'no usable value'}: "
                 f"change the motion span or the teeth",
                 f"齿数为 {teeth} 时运动角 {motion_span * DEG:g}° 要求 z1 = 360°·z1'/φm = {exact:.4g}，"
-                f"不是整数；整数 z1 可得 {opt_zh or '无可用值'}：应改变运动角或齿数")
+                f"不是整数；整数 z1 可得 {opt_zh or '无可用值'}：应改变运动角或齿数",
+                field="motion_span")
     # --- the driven wheel
     if z2 is None:
         if advance is None:
             raise IntermittentDesignError("give z2 (the driven wheel's teeth) or the advance",
-                                          "请给出 z2（从动轮齿数）或从动轮转角")
+                                          "请给出 z2（从动轮齿数）或从动轮转角",
+                                          field="z2")
         exact = TWO_PI * teeth / advance
         z2 = int(round(exact))
         if z2 < 1 or abs(TWO_PI * teeth / z2 - advance) > tol:
@@ -393,30 +413,35 @@ def design_incomplete_gear(module: float, z1: int | None = None, z2: int | None 
                 f"{exact:.4g}, not a whole number; whole z2 give {options or 'no usable value'}: change the advance "
                 f"or the teeth",
                 f"齿数为 {teeth} 时从动轮转角 {adv_zh(advance)} 要求 z2 = 360°·z1'/Δφ2 = {exact:.4g}，"
-                f"不是整数；整数 z2 可得 {opt_zh or '无可用值'}：应改变转角或齿数")
+                f"不是整数；整数 z2 可得 {opt_zh or '无可用值'}：应改变转角或齿数",
+                field="advance")
     # --- consistency of everything given
     if teeth >= z1:
         raise IntermittentDesignError(
             f"{teeth} teeth on a driver of z1 = {z1} leave no toothless arc for the dwell: "
             f"the driver needs fewer teeth than z1",
-            f"主动轮 z1 = {z1} 上有 {teeth} 个齿，没有留下停歇所需的无齿弧：齿数须少于 z1")
+            f"主动轮 z1 = {z1} 上有 {teeth} 个齿，没有留下停歇所需的无齿弧：齿数须少于 z1",
+            field="teeth")
     phi_m = TWO_PI * teeth / z1
     if motion_span is not None and abs(phi_m - motion_span) > tol:
         raise IntermittentDesignError(
             f"{teeth} teeth on a driver of z1 = {z1} mesh over 360°·{teeth}/{z1} = "
             f"{phi_m * DEG:.4g}°, not the motion span {motion_span * DEG:g}° given",
             f"主动轮 z1 = {z1} 上的 {teeth} 个齿啮合 360°·{teeth}/{z1} = {phi_m * DEG:.4g}°，"
-            f"而不是给定的运动角 {motion_span * DEG:g}°")
+            f"而不是给定的运动角 {motion_span * DEG:g}°",
+            field="motion_span")
     adv = TWO_PI * teeth / z2
     if advance is not None and abs(adv - advance) > tol:
         raise IntermittentDesignError(
             f"{teeth} teeth advance a driven wheel of z2 = {z2} by 360°·{teeth}/{z2} = "
             f"{adv_text(adv)}, not the required {adv_text(advance)}",
             f"{teeth} 个齿使 z2 = {z2} 的从动轮转过 360°·{teeth}/{z2} = {adv_zh(adv)}，"
-            f"而不是要求的 {adv_zh(advance)}")
+            f"而不是要求的 {adv_zh(advance)}",
+            field="advance")
     if z1 < 3 or z2 < 3:
         raise IntermittentDesignError(f"z1 = {z1} and z2 = {z2}: a gear needs at least 3 teeth",
-                                      f"z1 = {z1}，z2 = {z2}：齿轮至少需要 3 个齿")
+                                      f"z1 = {z1}，z2 = {z2}：齿轮至少需要 3 个齿",
+                                      field="z1" if z1 < 3 else "z2")
 
     notes = []
     zmin = _z_min(alpha, ha_star)

@@ -15,7 +15,7 @@ from typing import Literal, Optional
 from ...lazy import np
 from pydantic import Field, field_validator, model_validator
 
-from ...brief.common import Problems, ReportMeta, StrictModel
+from ...brief.common import MISSING, Problems, ReportMeta, StrictModel, invalid
 
 if TYPE_CHECKING:
     from ...core import fourbar
@@ -145,7 +145,7 @@ class ChartSettings(StrictModel):
     def _thetas(cls, value):
         bad = [x for x in value if not 0.0 <= x < 90.0]
         if bad:
-            raise ValueError(f"each θ must be in [0°, 90°); got {bad}")
+            raise invalid(f"each θ must be in [0°, 90°); got {bad}", f"每个 θ 须在 [0°, 90°) 内；现为 {bad}")
         return sorted(set(value))
 
     @field_validator("swing_deg")
@@ -153,7 +153,8 @@ class ChartSettings(StrictModel):
     def _swings(cls, value):
         lo, hi = value
         if not 0.0 < lo < hi < 180.0:
-            raise ValueError(f"swing_deg must be [from, to] with 0 < from < to < 180; got {value}")
+            raise invalid(f"swing_deg must be [from, to] with 0 < from < to < 180; got {value}",
+                          f"swing_deg 须为 [起, 止]，0 < 起 < 止 < 180；现为 {value}")
         return value
 
 
@@ -233,7 +234,14 @@ class CrankRockerBrief(StrictModel):
             out.raise_any()
             return self
         if (self.time_ratio_K is None) == (self.extreme_angle_deg is None):
-            raise ValueError("give exactly one of time_ratio_K and extreme_angle_deg")
+            out = Problems(self)
+            both = self.time_ratio_K is not None
+            out.add(("extreme_angle_deg",) if both else ("time_ratio_K",),
+                    self.extreme_angle_deg if both else MISSING,
+                    "give exactly one of time_ratio_K and extreme_angle_deg" +
+                    (": remove one" if both else ""),
+                    "time_ratio_K 与 extreme_angle_deg 须且只能给出一个" + ("：请删去其一" if both else ""))
+            out.raise_any()
         raise_missing(self, [n for n in ("rocker_swing_deg", "rocker_length_mm") if getattr(self, n) is None])
         return self
 

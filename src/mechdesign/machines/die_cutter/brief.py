@@ -31,7 +31,8 @@ from ...brief.drive import DriveParams, DriveSection, drive_to_si
 
 def _fraction(value):
     """Accept 0.1 or the course's '1/10'."""
-    return parse_fraction(value, "write the fluctuation as a number or a fraction such as 1/10")
+    return parse_fraction(value, "write the fluctuation as a number or a fraction such as 1/10",
+                          "须写作数值或分数，如 1/10")
 
 
 class Production(StrictModel):

@@ -5,7 +5,7 @@ from dataclasses import dataclass
 from typing import Literal, Optional
 from ...lazy import np
 from pydantic import Field, model_validator
-from ...brief.common import ReportMeta, StrictModel
+from ...brief.common import MISSING, Problems, ReportMeta, Shown, StrictModel
 from ...brief.drive import DriveParams, DriveSection, drive_to_si
 
 
@@ -28,10 +28,18 @@ class DriveLoad(StrictModel):
 
     @model_validator(mode="after")
     def _one_load(self):
+        out = Problems(self)
         given = [n for n in ("power_kW", "torque_Nm", "stroke") if getattr(self, n) is not None]
-        if len(given) != 1:
-            raise ValueError("give exactly one of power_kW, torque_Nm, stroke"
-                             + (f" (found {', '.join(given)})" if given else ""))
+        if not given:
+            out.add("power_kW", MISSING, "give the load: exactly one of power_kW, torque_Nm or stroke",
+                    "须给出负载：power_kW、torque_Nm、stroke 三者之一")
+        for name in given[1:]:
+            value = getattr(self, name)
+            out.add(name, Shown("a section") if isinstance(value, StrictModel) else value,
+                    f"the load is already given by {given[0]}: give exactly one of power_kW, "
+                    f"torque_Nm or stroke (remove {name})",
+                    f"负载已由 {given[0]} 给出：power_kW、torque_Nm、stroke 只能给出其一（请删去 {name}）")
+        out.raise_any()
         return self
 
 

@@ -5,7 +5,7 @@ from dataclasses import dataclass
 from typing import Annotated, Literal
 from ...lazy import np
 from pydantic import Field, model_validator
-from ...brief.common import ReportMeta, StrictModel
+from ...brief.common import Problems, ReportMeta, StrictModel
 from ...brief.cam import _check_roller, side_sign
 
 
@@ -20,7 +20,9 @@ class DiscFollower(StrictModel):
 
     @model_validator(mode="after")
     def _roller(self):
-        _check_roller(self.contact, self.roller_radius_mm)
+        out = Problems(self)
+        _check_roller(out, self.contact, self.roller_radius_mm)
+        out.raise_any()
         return self
 
 
@@ -33,8 +35,13 @@ class EccentricDisc(StrictModel):
 
     @model_validator(mode="after")
     def _inside(self):
+        out = Problems(self)
         if self.eccentricity_mm >= self.radius_R_mm:
-            raise ValueError("eccentricity_mm must be smaller than radius_R_mm (the axis lies inside the disc)")
+            out.add("eccentricity_mm", self.eccentricity_mm,
+                    f"eccentricity_mm must be smaller than radius_R_mm = {self.radius_R_mm:g} (the cam "
+                    "axis lies inside the disc)",
+                    f"凸轮轴心须在圆盘之内：偏心距须小于 radius_R_mm = {self.radius_R_mm:g}")
+        out.raise_any()
         return self
 
 
