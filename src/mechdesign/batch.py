@@ -218,6 +218,19 @@ def run_batch(jobs: list[Job], out_root: Path, *, jobs_n: int = 1, lang: str | N
 _STARTED = None
 
 
+def _context():
+    """The start method of the worker processes: a fork server where there is one (a clean,
+    single-threaded process the workers are forked from: forking a process that has run
+    typst, whose runtime keeps threads, would hang the child), else the platform's default."""
+    import multiprocessing as mp
+
+    if "forkserver" in mp.get_all_start_methods():
+        ctx = mp.get_context("forkserver")
+        ctx.set_forkserver_preload(["mechdesign.batch"])
+        return ctx
+    return mp.get_context()
+
+
 def _init_worker(queue) -> None:
     global _STARTED
     _STARTED = queue
@@ -252,10 +265,9 @@ def _died(job: Job, exitcode: int | None) -> dict:
 
 def _alone(job: Job, args) -> dict:
     """One run in a process of its own: its outcome, or how the process died."""
-    import multiprocessing as mp
-
-    recv, send = mp.Pipe(duplex=False)
-    proc = mp.Process(target=_child, args=(send, job, args), daemon=True)
+    ctx = _context()
+    recv, send = ctx.Pipe(duplex=False)
+    proc = ctx.Process(target=_child, args=(send, job, args), daemon=True)
     proc.start()
     send.close()
     try:
@@ -273,16 +285,16 @@ def _alone(job: Job, args) -> dict:
 
 def _pooled(jobs: list[Job], args, jobs_n: int, results: dict,
             on_result: Callable[[Job, dict], None] | None) -> None:
-    import multiprocessing as mp
     import queue as queue_mod
 
+    ctx = _context()
     pending = list(range(len(jobs)))
     while pending:
-        started_q = mp.SimpleQueue()
+        started_q = ctx.SimpleQueue()
         started: set[int] = set()
         broken = False
-        with ProcessPoolExecutor(max_workers=min(jobs_n, len(pending)), initializer=_init_worker,
-                                 initargs=(started_q,)) as pool:
+        with ProcessPoolExecutor(max_workers=min(jobs_n, len(pending)), mp_context=ctx,
+                                 initializer=_init_worker, initargs=(started_q,)) as pool:
             futures = {pool.submit(_pool_work, i, jobs[i], *args): i for i in pending}
             try:
                 for future in as_completed(futures):
