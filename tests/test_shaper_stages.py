@@ -24,6 +24,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from scipy.optimize import brentq
 
 from mechdesign.brief.loader import load_brief
 from mechdesign.machines.shaper.brief import to_si
@@ -285,22 +286,40 @@ def test_mean_balancing_torque_does_the_cutting_work(run):
 
 
 def test_flywheel_stage_from_independent_torque(run):
+    """ΔE(φ) = ∫(M_d − M_b)dφ from the closed-form torque, integrated by the trapezoidal
+    rule piece by piece between the exact ends of the cutting window (issue 21: M_b jumps
+    there, so a grid straddling the jumps costs up to Fc·|dx/dφ|·h of work per edge)."""
     p, syn, k, mech, motion, f, fl = run
     cf = ClosedForm(p, syn.design)
-    n = k.grid_size
-    fc, _, _ = independent_cutting_force(k, p, cf)
-    mb = cf.balancing_torque(k.crank_angle[:n], k.stroke_direction, fc[:n])
-    h = 2 * np.pi / n
-    # ΔE(φ) = ∫(M_d − M_b)dφ with M_d the mean, cumulative trapezoid on the periodic grid.
-    md = np.mean(mb)
-    energy = np.concatenate(([0.0], np.cumsum((md - (mb[1:] + mb[:-1]) / 2) * h)))
+    start, sense, wdir = k.crank_angle[0], np.sign(p.crank_omega), k.stroke_direction
+    x0 = cf.F(start).real
+
+    def s_of(ph):
+        return wdir * (cf.F(start + sense * ph).real - x0)
+
+    theta = sh.synthesize(p).extreme_angle
+    span, idle = np.pi + theta, 0.05 * p.stroke
+    e1 = brentq(lambda x: s_of(x) - idle, 1e-3, span / 2, xtol=1e-15)
+    e2 = brentq(lambda x: s_of(x) - (p.stroke - idle), span / 2, span - 1e-3, xtol=1e-15)
+    ends, forces_on = [0.0, e1, e2, span, 2 * np.pi], [0.0, p.cutting_force, 0.0, 0.0]
+    nodes, work, total = [], [], 0.0
+    for a, b, fc in zip(ends[:-1], ends[1:], forces_on):
+        ph = np.linspace(a, b, 40001)
+        mb = cf.balancing_torque(start + sense * ph, wdir, np.full(ph.size, fc))
+        w = total + np.concatenate(([0.0], np.cumsum((mb[1:] + mb[:-1]) / 2 * np.diff(ph))))
+        nodes.append(ph)
+        work.append(w)
+        total = w[-1]
+    nodes, work = np.concatenate(nodes), np.concatenate(work)
+    md = total / (2 * np.pi)
+    energy = md * nodes - work
     dw = energy.max() - energy.min()
-    # Same quadrature on torques that agree to 1e-7 relative → ΔW to ~1e-6 relative.
+    assert md == pytest.approx(p.cutting_force * 0.9 * p.stroke / (2 * np.pi), rel=1e-9)
+    # Trapezoids of 1e-5 rad on smooth pieces: ΔW to ~1e-8; the five-point derivatives ~1e-9.
     assert fl.max_energy_swing == pytest.approx(dw, rel=1e-6)
-    # Where the energy peaks and bottoms out: the same grid point (torques agree to 1e-7,
-    # so only a near-tie could move the arg-extreme; allow one grid step).
-    assert fl.phase_at_max == pytest.approx(k.phase[np.argmax(energy)], abs=h * 1.01)
-    assert fl.phase_at_min == pytest.approx(k.phase[np.argmin(energy)], abs=h * 1.01)
+    # Where the energy peaks and bottoms out: the same node (one node step ≈ 1e-4 rad).
+    assert fl.phase_at_max == pytest.approx(nodes[np.argmax(energy)], abs=2e-4)
+    assert fl.phase_at_min == pytest.approx(nodes[np.argmin(energy)], abs=2e-4)
     i = p.z2 / p.z1                                   # pinion turns 60/18 times faster
     n1 = p.crank_speed_rpm * i
     assert fl.speed_ratio == pytest.approx(i) and fl.shaft_speed_rpm == pytest.approx(n1)

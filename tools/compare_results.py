@@ -72,6 +72,35 @@ _CAM_EXACT = [
 for _machine in ("cam", "die_cutter", "lockbeam", "shaper", "slotter", "furnace_pusher", "linkage"):
     EXPECTED.setdefault(_machine, []).extend(_CAM_EXACT)
 
+# Issue 21: the mean driving torque is the resistances' work per cycle over 2π, each constant
+# piece of a resistance integrated between its exact ends (the cutting/pressing window's
+# ends, the stroke ends), no longer the mean of the 3600 grid samples of a torque that
+# jumps there (the shaper's M_d 73.3579 → 73.3386 = Fc·0.9H/2π); the energy curve ΔE is
+# exact at the grid points (kinetic + potential energy + the resistance work, piece by
+# piece) and ΔW_max is taken at its exact extremes (roots of M_b − M_d, the jumps), not
+# read off the grid. Everything computed from M_d, the mean power or ΔW_max follows.
+_WHY = "issue 21: M_d = the resistances' work per cycle / 2π, each piece between its exact ends"
+_WHY_E = "issue 21: ΔE exact at the grid points, ΔW_max at its exact extremes"
+_EXACT_WORK = [
+    ("*mean_torque", _WHY), ("*mean_power", _WHY), ("*shaft_torque", _WHY),
+    ("*peak_factor", _WHY + " (peak / mean)"),
+    ("*flywheel.driving_torque", _WHY),
+    ("*flywheel.energy.*", _WHY_E), ("*grid.energy.*", _WHY_E),
+    ("*flywheel.max_energy_swing", _WHY_E), ("*flywheel.phase_at_min", _WHY_E),
+    ("*flywheel.phase_at_max", _WHY_E), ("*flywheel.inertia", _WHY_E + " (J_F from it)"),
+    ("*flywheel.inertia_on_crank", _WHY_E), ("*flywheel.rim.*", _WHY_E + " (the rim from J_F)"),
+    ("drive.machine_power", _WHY + " (the drive delivers the mean power)"),
+    ("drive.power_required", _WHY), ("drive.shafts.*", _WHY + " (powers and torques)"),
+    ("drive.stages.*", _WHY + " (torques, forces, the checks' inputs)"),
+    ("drive.shaft_designs.*", _WHY + " (loads, checks and the diameters from them)"),
+    ("drive.warnings.*", _WHY + " (the bearing life's figures in the text)"),
+    ("peak_shafts.*", _WHY), ("amplification.cycle_work", _WHY),
+    ("verification.energy_ratio", _WHY + " (now 1 to round-off)"),
+]
+for _machine in ("shaper", "slotter", "furnace_pusher", "die_cutter", "press", "linkage",
+                 "lockbeam"):
+    EXPECTED.setdefault(_machine, []).extend(_EXACT_WORK)
+
 # Self-check residuals: round-off, not results. Compared only as "still tiny".
 IGNORED = ("*closure_residual", "*stroke_error", "*power_balance_residual", "*power_residual*",
            "*self_check*residual*")

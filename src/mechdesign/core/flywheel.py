@@ -2,7 +2,8 @@
 
 The driving torque is constant; over a cycle it does the same work as the
 resistance, so it equals the mean resistance torque. The kinetic-energy change
-ΔE(φ) = ∫(M_d − M_r)dφ; the largest swing ΔW_max = max ΔE − min ΔE (最大盈亏功).
+ΔE(φ) = ∫(M_d − M_r)dφ; the largest swing ΔW_max = max ΔE − min ΔE (最大盈亏功), at the
+exact extremes when the caller gives the exact integral and the extremes' candidates.
 Textbook (孙桓 §7): J_F = ΔW_max / (ω_m²·[δ]) = 900·ΔW_max / (π²·n²·[δ]) with n in rpm
 on the shaft carrying the flywheel; the mechanism's own inertia is neglected (course
 convention, on the safe side).
@@ -10,6 +11,7 @@ convention, on the safe side).
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import Callable
 
 import numpy as np
 from .fields import q
@@ -28,20 +30,39 @@ class EnergyCycle:
     angle_at_max: float = q("rad")
 
 
-def energy_cycle(angle: np.ndarray, resistance_torque: np.ndarray) -> EnergyCycle:
-    """Energy over one cycle sampled at ``angle`` (uniform, covering [0, period), [rad])."""
+def energy_cycle(angle: np.ndarray, resistance_torque: np.ndarray,
+                 integral: Callable[[np.ndarray], np.ndarray] | None = None,
+                 stationary: Callable[[float], np.ndarray] | None = None) -> EnergyCycle:
+    """Energy over one cycle sampled at ``angle`` (uniform, covering [0, period), [rad]).
+
+    ``integral(φ)``, when given, is the exact ∫₀^φ M_r dφ [J] at any φ in [0, period]
+    (for a piecewise load: each piece integrated between its exact ends): M_d is then
+    integral(period)/period and ΔE is exact at the samples. ``stationary(M_d)`` gives the
+    angles where ΔE may be extreme (the roots of M_r − M_d and the angles where M_r jumps);
+    ΔW_max is then the exact max − min over those and the samples. Without them: the
+    trapezoidal rule on the closed (periodic) samples and the samples' extremes."""
     angle = np.asarray(angle, float)
     mr = np.asarray(resistance_torque, float)
     step = angle[1] - angle[0]
     period = step * len(angle)
-    # Trapezoidal rule on the closed (periodic) cycle.
-    closed = np.append(mr, mr[0])
-    work_r = np.concatenate(([0.0], np.cumsum((closed[1:] + closed[:-1]) / 2.0 * step)))
-    md = work_r[-1] / period
-    energy = md * angle - work_r[:-1]
-    i_min, i_max = int(np.argmin(energy)), int(np.argmax(energy))
-    return EnergyCycle(angle, mr, float(md), energy, float(energy[i_max] - energy[i_min]),
-                       float(angle[i_min]), float(angle[i_max]))
+    if integral is None:
+        closed = np.append(mr, mr[0])
+        work_r = np.concatenate(([0.0], np.cumsum((closed[1:] + closed[:-1]) / 2.0 * step)))
+        md = work_r[-1] / period
+        energy = md * angle - work_r[:-1]
+        where, values = angle, energy
+    else:
+        md = float(integral(np.array([period]))[0]) / period
+        energy = md * angle - integral(angle)
+        where, values = angle, energy
+        if stationary is not None:
+            extra = np.asarray(stationary(md), float)
+            if len(extra):
+                where = np.concatenate((angle, extra))
+                values = np.concatenate((energy, md * extra - integral(extra)))
+    i_min, i_max = int(np.argmin(values)), int(np.argmax(values))
+    return EnergyCycle(angle, mr, float(md), energy, float(values[i_max] - values[i_min]),
+                       float(where[i_min]), float(where[i_max]))
 
 
 def flywheel_inertia(max_energy_swing: float, speed_rpm: float, fluctuation: float) -> float:

@@ -547,9 +547,8 @@ def _curves(s: Sheet, model, k, forces, fl, lab: dict, box) -> None:
     y -= h + 26.0
     e = fl.energy
     phi = np.radians(ph)
-    mb_c = closed(mb)
-    w_r = np.concatenate([[0.0], np.cumsum(0.5 * (mb_c[1:] + mb_c[:-1]) * np.diff(phi))])
     w_d = md * phi
+    w_r = w_d - np.append(e, e[0])        # ∫M_b dφ = M_d·φ − ΔE (exact, from the results)
     m = chart(s, (left, y - h, bx1, y), ph,
               [Series(w_d, weight=0.35), Series(w_r, weight=0.35), Series(np.append(e, e[0]))],
               xlabel=lab["phase"], ylabel=lab["work"], title=lab["et"], xticks=ticks,

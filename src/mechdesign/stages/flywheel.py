@@ -65,9 +65,14 @@ class Flywheel:
 
 
 def design_flywheel(spec: FlywheelSpec, phase: np.ndarray, balancing_torque: np.ndarray,
-                    crank_omega: float, gravity: float = 9.81) -> Flywheel:
-    """The flywheel for M_b [N·m] sampled on the uniform crank ``phase`` grid [rad]."""
-    cycle = fw.energy_cycle(phase, balancing_torque)
+                    crank_omega: float, gravity: float = 9.81, exact=None) -> Flywheel:
+    """The flywheel for M_b [N·m] sampled on the uniform crank ``phase`` grid [rad].
+    ``exact`` (the linkage engine's :class:`~mechdesign.stages.linkage.CycleIntegrals`):
+    M_d, ΔE and ΔW_max from the exact ∫M_b dφ at the exact extremes, not the samples."""
+    if exact is None:
+        cycle = fw.energy_cycle(phase, balancing_torque)
+    else:
+        cycle = fw.energy_cycle(phase, balancing_torque, exact.integral, exact.stationary)
     crank_rpm = abs(crank_omega) * 30.0 / np.pi
     speed = crank_rpm * spec.speed_ratio
     inertia = fw.flywheel_inertia(cycle.max_energy_swing, speed, spec.fluctuation)

@@ -122,7 +122,7 @@ def _drive(r: dict):
     p, f, fl = r["params"], r["linkage_forces"], r["linkage_flywheel"]
     n = r["linkage"].grid_size
     mb = f.balancing_torque[:n]
-    mean = float(np.mean(mb))
+    mean = float(f.mean_torque)           # exact: the resistances' work per cycle / 2π
     peak = float(np.max(np.abs(mb)) / mean) if mean > 0 else float("inf")  # inf: no load
     shafts = len(p.drive.stages)          # the crank shaft's index
     flywheel_shaft = shafts - 1 if p.flywheel_shaft == "pinion" else shafts

@@ -154,6 +154,8 @@ class LinkageForces:
     mean_torque: float = q("N·m", "mean M_b over a revolution")
     mean_power: float = q("W", "mean power delivered to the crank")
     peak_torque: float = q("N·m", "max |M_b|")
+    cycle_work: float = q("J", "work of the resistances per revolution (= 2π·mean M_b), each "
+                          "constant piece integrated between its exact ends", default=0.0)
 
 
 @dataclass(frozen=True)
@@ -426,13 +428,17 @@ def resistance_loads(model: LinkageModel, k: LinkageMotion, m: Motion) -> list[P
 
 
 def forces(model: LinkageModel, k: LinkageMotion, m: Motion) -> LinkageForces:
+    """Kinetostatics over the phase array; the mean M_b is exact: the resistances' work per
+    revolution (integrated piece by piece between exact ends, :class:`CycleIntegrals`)
+    over 2π — inertia and gravity do no net work over a cycle."""
     loads = resistance_loads(model, k, m)
     bodies = list(model.bodies)
     fa = solve_forces(model.mechanism, m, bodies, loads, model.gravity)
     mb = k.sense * fa.driving_torque
     residual = power_residual(model.mechanism, m, bodies, loads, fa.driving_torque, model.gravity)
     n = k.grid_size
-    mean = float(np.mean(mb[:n]))
+    work = CycleIntegrals(model, k).cycle_work
+    mean = work / TWO_PI
     return LinkageForces(
         resistance={f"R{i + 1}": (np.conj(np.exp(1j * r.direction)) * ld.force).real
                     for i, (r, ld) in enumerate(zip(model.resistances, loads))},
@@ -440,7 +446,8 @@ def forces(model: LinkageModel, k: LinkageMotion, m: Motion) -> LinkageForces:
         couples={name: r.couple for name, r in fa.reactions.items() if r.couple is not None},
         inertia_force=fa.inertia_force, inertia_couple=fa.inertia_couple,
         balancing_torque=mb, power_residual=residual, mean_torque=mean,
-        mean_power=mean * abs(model.crank_omega), peak_torque=float(np.max(np.abs(mb[:n]))))
+        mean_power=mean * abs(model.crank_omega), peak_torque=float(np.max(np.abs(mb[:n]))),
+        cycle_work=work)
 
 
 def flywheel(model: LinkageModel, k: LinkageMotion, f: LinkageForces) -> Flywheel | None:
@@ -449,7 +456,186 @@ def flywheel(model: LinkageModel, k: LinkageMotion, f: LinkageForces) -> Flywhee
         return None
     n = k.grid_size
     return design_flywheel(model.flywheel, k.phase[:n], f.balancing_torque[:n],
-                           model.crank_omega, model.gravity)
+                           model.crank_omega, model.gravity, exact=CycleIntegrals(model, k))
+
+
+# ---------------------------------------------------------------- exact cycle integrals
+
+_MERGE = 1e-12     # [rad] piece ends closer than this are one end
+
+
+def _sign_roots(fun, xs: np.ndarray, ys: np.ndarray) -> list[float]:
+    """Zeros of ``fun`` between consecutive samples (xs, ys = fun(xs)) that change sign
+    (Brent, to ~1e-15 rad), and samples where it is exactly zero."""
+    out = [float(x) for x, y in zip(xs, ys) if y == 0.0]
+    for i in np.flatnonzero(ys[:-1] * ys[1:] < 0):
+        a, b = float(xs[i]), float(xs[i + 1])
+        fa, fb = fun(a), fun(b)
+        if fa * fb < 0:
+            out.append(brentq(fun, a, b, xtol=1e-15))
+        else:       # a zero on a sample, its sign lost to round-off: take that sample
+            out.append(a if abs(fa) <= abs(fb) else b)
+    return out
+
+
+def _merge(anchors, others) -> np.ndarray:
+    """Sorted piece ends: every anchor, and each other point farther than _MERGE from all."""
+    ends = sorted(float(a) for a in anchors)
+    for x in sorted(others):
+        if min(abs(x - e) for e in ends) > _MERGE:
+            ends.append(float(x))
+            ends.sort()
+    return np.array(ends)
+
+
+class CycleIntegrals:
+    """Exact integrals over one revolution of the crank phase φ [rad from position 1].
+
+    Each resistance (:class:`Resistance`) is constant in magnitude on pieces of the cycle
+    whose ends are found exactly: the start and the end of the working stroke, the ends of
+    its ``active`` window (roots of s(φ) − window end, Brent) and the zeros of its point's
+    velocity along its line. On a piece its work is magnitude × |travel of the point along
+    the line| (the point is monotone there), so W_res(0→φ) is exact at any φ, and
+
+        ∫₀^φ M_b dφ = [T(φ) − T(0)] + [V(φ) − V(0)] + W_res(0→φ)
+
+    (the power balance M_b·|ω| = Σ resistance power + d(T + V)/dt with T and V the bodies'
+    kinetic and potential energy from the exact kinematics). Over a revolution T and V
+    return: the mean M_b is W_res(cycle)/2π. :meth:`torque` is M_b at any φ on a piece
+    (one-sided at its ends); :meth:`stationary` the extremes' candidates of the energy
+    curve M_d·φ − ∫M_b dφ.
+    """
+
+    def __init__(self, model: LinkageModel, k: LinkageMotion):
+        self.model, self.k = model, k
+        n = k.grid_size
+        self.span = float(k.working_span)
+        grid = np.asarray(k.phase[:n], float)
+        self.grid = grid
+        self._ref = None
+        if model.output.kind == "link":
+            self._ref = float(model.mechanism.solve(np.array([0.0])).links[model.output.name].angle[0])
+        self._raw0 = float(_output_coordinate(model, self.solve(np.zeros(1)), self._ref)[0][0])
+        mg = self.solve(grid)
+        s_grid = self._s(mg)
+        working = grid <= self.span
+        ends_per, mags_per, cum_per, x_per = [], [], [], []
+        for r in model.resistances:
+            others = []
+            if r.active is not None:
+                xs = np.append(grid[working], self.span)
+                ss = np.append(s_grid[working], self._s(self.solve(np.array([self.span])))[0])
+                for target in r.active:
+                    others += _sign_roots(lambda p, t=target: self._s(self.solve(np.array([p])))[0] - t,
+                                          xs, ss - target)
+            xs = np.append(grid, TWO_PI)
+            vg = self._along(r, mg)[1]
+            others += _sign_roots(lambda p, r=r: self._along(r, self.solve(np.array([p])))[1][0],
+                                  xs, np.append(vg, vg[0]))
+            ends = _merge((0.0, self.span, TWO_PI), [x for x in others if 0.0 < x < TWO_PI])
+            mid = 0.5 * (ends[:-1] + ends[1:])
+            mags = self._magnitude(r, mid, self._s(self.solve(mid)))
+            x = self._along(r, self.solve(ends))[0]
+            cum = np.concatenate(([0.0], np.cumsum(mags * np.abs(np.diff(x)))))
+            ends_per.append(ends)
+            mags_per.append(mags)
+            cum_per.append(cum)
+            x_per.append(x)
+        self._ends, self._mags, self._cum, self._x = ends_per, mags_per, cum_per, x_per
+        self.cycle_work = float(sum(c[-1] for c in cum_per))
+        self.ends = _merge((0.0, TWO_PI), [e for ends in ends_per for e in ends[1:-1]])
+        self._stored0 = float(self.stored_energy(self.solve(np.zeros(1)))[0])
+
+    # -- kinematics at any phase
+    def solve(self, phase: np.ndarray) -> Motion:
+        k = self.k
+        return self.model.mechanism.solve(k.start_angle + k.sense * np.asarray(phase, float))
+
+    def _s(self, m: Motion) -> np.ndarray:
+        raw = _output_coordinate(self.model, m, self._ref)[0]
+        return float(self.model.output.working) * (raw - self._raw0)
+
+    @staticmethod
+    def _along(r: Resistance, m: Motion):
+        """Position and velocity of the resistance's point along its line."""
+        u = np.exp(-1j * r.direction)
+        p = m.points[r.point]
+        return (u * p.pos).real, (u * p.vel).real
+
+    def _magnitude(self, r: Resistance, phase: np.ndarray, s: np.ndarray) -> np.ndarray:
+        """The force's magnitude inside a piece (the rule of :func:`resistance_loads`)."""
+        working = phase <= self.span + 1e-12
+        mag = np.where(working, r.working, r.returning)
+        if r.active is not None:
+            lo, hi = r.active
+            tol = 1e-9 * max(self.k.stroke, 1e-12)
+            mag = np.where(working & ~((s >= lo - tol) & (s <= hi + tol)), 0.0, mag)
+        return mag
+
+    # -- energies and work
+    def stored_energy(self, m: Motion) -> np.ndarray:
+        """T + V of the bodies [J] (kinetic from the exact velocities, potential from the
+        centres' heights)."""
+        total = np.zeros(len(m.crank_angle))
+        for b in self.model.bodies:
+            if b.mass:
+                p = m.points[b.com]
+                total = total + 0.5 * b.mass * np.abs(p.vel) ** 2 + b.mass * self.model.gravity * p.pos.imag
+            if b.inertia:
+                total = total + 0.5 * b.inertia * m.links[b.link].omega ** 2
+        return total
+
+    def resistance_work(self, phase: np.ndarray, m: Motion | None = None) -> np.ndarray:
+        """W_res(0 → φ) [J]: the resistances' work from position 1, piece by piece."""
+        phase = np.asarray(phase, float)
+        m = self.solve(phase) if m is None else m
+        total = np.zeros(len(phase))
+        for r, ends, mags, cum, x in zip(self.model.resistances, self._ends, self._mags,
+                                         self._cum, self._x):
+            j = np.clip(np.searchsorted(ends, phase, side="right") - 1, 0, len(mags) - 1)
+            total = total + cum[j] + mags[j] * np.abs(self._along(r, m)[0] - x[j])
+        return total
+
+    def integral(self, phase) -> np.ndarray:
+        """∫₀^φ M_b dφ [J] at each phase (0 ≤ φ ≤ 2π)."""
+        phase = np.atleast_1d(np.asarray(phase, float))
+        m = self.solve(phase)
+        return self.stored_energy(m) - self._stored0 + self.resistance_work(phase, m)
+
+    def torque(self, phase: np.ndarray, piece: int) -> np.ndarray:
+        """M_b [N·m] at ``phase`` with the resistances' magnitudes of ``piece`` (of
+        :attr:`ends`): the power balance M_b·|ω| = d(T + V)/dt − Σ resistance power."""
+        phase = np.atleast_1d(np.asarray(phase, float))
+        m = self.solve(phase)
+        mid = 0.5 * (self.ends[piece] + self.ends[piece + 1])
+        g = self.model.gravity
+        power = np.zeros(len(phase))
+        for b in self.model.bodies:
+            if b.mass:
+                p = m.points[b.com]
+                power = power + b.mass * ((p.acc.real * p.vel.real + p.acc.imag * p.vel.imag)
+                                          + g * p.vel.imag)
+            if b.inertia:
+                w = m.links[b.link]
+                power = power + b.inertia * w.alpha * w.omega
+        for r, ends, mags in zip(self.model.resistances, self._ends, self._mags):
+            j = int(np.clip(np.searchsorted(ends, mid, side="right") - 1, 0, len(mags) - 1))
+            power = power + mags[j] * np.abs(self._along(r, m)[1])
+        return power / abs(self.model.crank_omega)
+
+    def stationary(self, driving_torque: float) -> np.ndarray:
+        """Phases where the energy curve M_d·φ − ∫M_b dφ may be extreme: the roots of
+        M_b − M_d on every piece (sign changes between the grid's samples, Brent with M_b
+        from :meth:`torque`) and the piece ends (M_b jumps there)."""
+        found = list(self.ends[:-1])
+        for i in range(len(self.ends) - 1):
+            a, b = float(self.ends[i]), float(self.ends[i + 1])
+            inner = self.grid[(self.grid > a + _MERGE) & (self.grid < b - _MERGE)]
+            xs = np.concatenate(([a], inner, [b]))
+            ys = self.torque(xs, i) - driving_torque
+            found += _sign_roots(lambda p, i=i: float(self.torque(np.array([p]), i)[0]) - driving_torque,
+                                 xs, ys)
+        return np.array(sorted(x for x in found if 0.0 <= x < TWO_PI))
 
 
 # ---------------------------------------------------------------- verification

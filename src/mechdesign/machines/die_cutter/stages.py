@@ -45,7 +45,8 @@ from ...stages.flywheel import Flywheel, FlywheelSpec, RimSpec, design_flywheel
 from ...core.cycle import CycleDocument
 from ...core.fields import q
 from ...core.intermittent import IntermittentDocument
-from ...stages.linkage import LinkageDocument, LinkageModel, Output, Resistance, linkage_stages
+from ...stages.linkage import (CycleIntegrals, LinkageDocument, LinkageModel, Output, Resistance,
+                               linkage_stages)
 from ...stages.cam import CamDocument
 from ...stages.drive import DriveDocument
 
@@ -345,7 +346,7 @@ def amplification(model: LinkageModel, d: ToggleDesign, k, raw, f, p: DieCutterP
         table.append((gap, ph, float(u), 1.0 / float(u), a / float(u)))
     top_unit = float(abs(u_at[-1]))
     top_ratio = float("inf") if top_unit < 1e-12 * a else a / top_unit
-    cycle_work = float(np.mean(f.balancing_torque[:n]) * TWO_PI)
+    cycle_work = float(f.cycle_work)      # piece by piece between exact ends (= 2π·M̄_b)
     return Amplification(timing, unit, closed, required, float(required[i]), float(k.phase[i]),
                          tuple(table), err, p.cutting_force * p.pressing_travel, cycle_work,
                          timing.press_span / abs(p.crank_omega), top_ratio)
@@ -407,7 +408,8 @@ def flywheel(model: LinkageModel, k, f, drive, p: DieCutterParams) -> tuple[Flyw
     spec = FlywheelSpec(p.fluctuation, ratio, p.flywheel_shaft,
                         RimSpec(p.rim_diameter, p.rim_height_to_width, p.specific_weight))
     n = k.grid_size
-    fl = design_flywheel(spec, k.phase[:n], f.balancing_torque[:n], model.crank_omega, p.gravity)
+    fl = design_flywheel(spec, k.phase[:n], f.balancing_torque[:n], model.crank_omega, p.gravity,
+                         exact=CycleIntegrals(model, k))
     return fl, peak_shafts(drive)
 
 
