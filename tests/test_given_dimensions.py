@@ -225,3 +225,154 @@ def test_furnace_pusher_bad_dimensions_named(tmp_path, edit, words):
     assert result.exit_code == 2 and "Traceback" not in result.output, result.output
     for w in words:
         assert w in result.output, (w, result.output)
+
+
+# ---------------------------------------------------------------------------- die-cutter
+
+def toggle_y(beta, l_cb, l_bd):
+    """Platen D above C with CB at beta from the vertical guide: B = l_CB (sin β, cos β),
+    D on the guide at l_BD from B."""
+    return l_cb * np.cos(beta) + np.sqrt(l_bd ** 2 - (l_cb * np.sin(beta)) ** 2)
+
+
+def test_die_cutter_dimensions_derived_by_the_law_of_cosines(tmp_path):
+    doc = results(DATA / "die_cutter_dims.yaml", tmp_path / "dc")
+    # the brief's mm times the one unit conversion 1e-3 (the lengths are the brief's)
+    a, b, d, c, l_bd = (x * 1e-3 for x in (57, 158, 243, 250, 350))
+    theta, psi, K, gmin = fourbar_cosines(a, b, c, d)
+    H = toggle_y(0.0, c, l_bd) - toggle_y(psi, c, l_bd)      # ε = 0: straight at the top
+    t = doc["toggle"]
+    assert t["given"] is True
+    assert [t[k] for k in ("crank", "coupler", "toggle_CB", "frame_O1C")] == [a, b, c, d]  # exact
+    assert t["swing"] == pytest.approx(psi, rel=1e-12)
+    assert t["theta"] == pytest.approx(theta, rel=1e-12)
+    assert t["gamma_min"] == pytest.approx(gmin, rel=1e-12)
+    assert t["top_height"] - t["bottom_height"] == pytest.approx(H, rel=1e-12)
+    # placement: C at the origin, O1 at d; extended at the top (O1B = b + a), folded at the
+    # bottom (b − a); CB vertical at the top and ψ from it at the bottom
+    O1, Bt, Bb = (complex(*t[k]) for k in ("O1", "B_top", "B_bottom"))
+    assert abs(O1) == pytest.approx(d, rel=1e-14)
+    assert abs(O1 - Bt) == pytest.approx(b + a, rel=1e-14)
+    assert abs(O1 - Bb) == pytest.approx(b - a, rel=1e-14)
+    assert abs(Bt.real) < 1e-15 and Bt.imag == pytest.approx(c, rel=1e-15)
+    assert abs(np.angle(Bb / Bt)) == pytest.approx(psi, rel=1e-12)
+    # the engine's simulation meets the derived values; the rise is the slow stroke
+    assert doc["press"]["verification"]["stroke"] == pytest.approx(H, rel=1e-9)
+    assert doc["press"]["time_ratio"] == pytest.approx(K, rel=1e-6)
+    assert doc["press"]["working_stroke_crank_angle"] == pytest.approx(np.pi + theta, rel=1e-6)
+    md = (tmp_path / "dc" / "report.md").read_text(encoding="utf-8")
+    assert "给定尺寸 → 导出值" in md and "| 57.000 | mm |" in md and "| 243.000 | mm |" in md
+
+
+def test_die_cutter_round_trip(tmp_path):
+    """The example's synthesised crank-rocker fed back as dimensions: the same press,
+    stroke, K, positions, forces, amplification, flywheel, drive, feed and cycle to 1e-9."""
+    src = ROOT / "designs" / "die_cutter.yaml"
+    ref = results(src, tmp_path / "ref")
+    brief = yaml.safe_load(src.read_text(encoding="utf-8"))
+    pr = brief["press"]
+    for k in ("stroke_H_mm", "time_ratio_K"):
+        pr.pop(k)
+    t = ref["toggle"]
+    pr["dimensions"] = {"crank_O1A_mm": t["crank"] * 1e3, "coupler_AB_mm": t["coupler"] * 1e3,
+                        "frame_O1C_mm": t["frame_O1C"] * 1e3}
+    got = results(write(tmp_path, brief, "dc.yaml"), tmp_path / "got")
+    assert got["toggle"].pop("given") is True
+    assert ref["toggle"].pop("given") is False
+    # The platen's top is flat to order 4 (H − s ∝ Δφ⁴, the toggle straight at the rocker's
+    # extreme): the engine places it by the zero of v_D ∝ Δφ³ only within the tolerance its
+    # verification reports (K_velocity_tol on K, ~1e-5 rad on the phase), so a 1e-16 change
+    # of the lengths moves it by that much. What sits at the top is checked against the exact
+    # rise π + θ within that tolerance; everything else to 1e-9.
+    theta = ref["toggle"]["theta"]
+    span, K = np.pi + theta, (np.pi + theta) / (np.pi - theta)
+    for doc in (got, ref):
+        v = doc["verification"]
+        k_tol = v["K_velocity_tol"]
+        phase_tol = k_tol * (2 * np.pi - span) ** 2 / (2 * np.pi)
+        pr_, amp = doc["press"], doc["amplification"]
+        assert abs(pr_.pop("working_stroke_crank_angle") - span) <= phase_tol
+        assert abs(pr_.pop("time_ratio") - K) <= k_tol
+        top = [i for i, q in enumerate(pr_["positions"]) if abs(q["phase"] - span) <= phase_tol]
+        assert len(top) == 1
+        pr_["positions"].pop(top[0])
+        assert abs(amp["platen_timing"].pop("top") - span) <= phase_tol
+        omega = abs(pr_["crank_omega"])
+        assert abs(amp.pop("press_time") - (span - amp["platen_timing"]["press_up"]) / omega) \
+            <= phase_tol / omega
+        assert abs(pr_["verification"].pop("time_ratio") - K) <= v["K_search_tol"]
+        assert abs(v["K_position_search"] - K) <= v["K_search_tol"]
+        assert v["top_toggle_angle"] <= v["search_angle_tol"]
+    for key in ("toggle", "press", "amplification", "flywheel", "peak_shafts", "drive", "cam",
+                "feed", "cycle"):
+        assert_same(got[key], ref[key], 1e-9, key)
+    v, w = got["verification"], ref["verification"]
+    for key in ("stroke_simulated", "amplification_error", "energy_ratio", "platen_mismatch",
+                "gripper_mismatch", "chain_mismatch", "feed_error"):
+        assert_same(v[key], w[key], 1e-9, key)
+    assert v["top_order"] == pytest.approx(4, abs=0.05) and w["top_order"] == pytest.approx(4, abs=0.05)
+
+
+def _dc(tmp_path, edit):
+    data = yaml.safe_load((DATA / "die_cutter_dims.yaml").read_text(encoding="utf-8"))
+    edit(data["press"])
+    return run(write(tmp_path, data, "bad.yaml"), tmp_path / "o", "--lang", "en")
+
+
+@pytest.mark.parametrize("edit, words", [
+    # the crank not the shortest link
+    (lambda p: p["dimensions"].update(crank_O1A_mm=260), ["press.dimensions.", "crank-rocker"]),
+    # 57 + 500 > 158 + 250: no crank
+    (lambda p: p["dimensions"].update(frame_O1C_mm=500),
+     ["press.dimensions.frame_O1C_mm", "500", "not a crank-rocker"]),
+    # the rocker is press.toggle_CB_mm, named there: 57 + 400 > 158 + 243
+    (lambda p: p.update(toggle_CB_mm=400), ["press.toggle_CB_mm", "not a crank-rocker"]),
+    (lambda p: p.update(stroke_H_mm=50), ["press.stroke_H_mm", "remove"]),
+    (lambda p: p.update(time_ratio_K=1.2), ["press.time_ratio_K", "remove"]),
+    (lambda p: p.update(frame_O1C_mm=243), ["press.frame_O1C_mm", "remove"]),
+    # the derived H ≈ 49.87 mm: the clearance must stay below it
+    (lambda p: p.update(clearance_mm=49.9), ["press.clearance_mm", "49.9", "from the dimensions"]),
+    # BD < CB lies flat at asin(150/250) = 36.87°: ε + ψ = 10° + 28.1° passes it
+    (lambda p: p.update(toggle_BD_mm=150, toggle_angle_at_top_deg=10),
+     ["press.dimensions.crank_O1A_mm", "36.87", "lie flat"]),
+    (lambda p: p.pop("dimensions"), ["press.stroke_H_mm", "press.time_ratio_K", "required"]),
+])
+def test_die_cutter_bad_dimensions_named(tmp_path, edit, words):
+    result = _dc(tmp_path, edit)
+    assert result.exit_code == 2 and "Traceback" not in result.output, result.output
+    for w in words:
+        assert w in result.output, (w, result.output)
+
+
+def test_die_cutter_dimension_problems_in_chinese(tmp_path):
+    data = yaml.safe_load((DATA / "die_cutter_dims.yaml").read_text(encoding="utf-8"))
+    data["press"]["dimensions"]["frame_O1C_mm"] = 500
+    data["press"]["stroke_H_mm"] = 50
+    result = run(write(tmp_path, data, "bad.yaml"), tmp_path / "o", "--lang", "zh")
+    assert result.exit_code == 2 and "Traceback" not in result.output, result.output
+    assert "不构成曲柄摇杆机构" in result.output and "应删去 stroke_H_mm" in result.output, result.output
+
+
+def test_check_of_the_dimension_briefs_runs_no_engine_and_imports_no_numpy():
+    """The closed-form rules of the dimensions (θ, ψ, H from the law of cosines, Grashof,
+    the toggle's reach, the clearance below the derived stroke) are plain arithmetic."""
+    import subprocess
+    import sys
+
+    script = r"""
+import sys
+from pathlib import Path
+from typer.testing import CliRunner
+from mechdesign.cli import app
+heavy = ("numpy", "scipy", "matplotlib", "mechdesign.core.fourbar", "mechdesign.pipeline")
+for path in sorted(Path(sys.argv[1]).glob("*.yaml")):
+    result = CliRunner().invoke(app, ["check", str(path)])
+    assert result.exit_code == 0, (path, result.output)
+    loaded = [m for m in heavy if m in sys.modules]
+    loaded += [m for m in sys.modules if m.startswith("mechdesign.") and m.endswith(".stages")]
+    assert not loaded, (path.name, loaded)
+print("ok")
+"""
+    out = subprocess.run([sys.executable, "-c", script, str(DATA)], capture_output=True, text=True,
+                         timeout=120)
+    assert out.returncode == 0 and out.stdout.strip() == "ok", out.stderr[-2000:]

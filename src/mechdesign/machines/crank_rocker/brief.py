@@ -25,13 +25,15 @@ _DEFAULT_THETAS = [0.0, 5.0, 10.0, 15.0, 20.0, 25.0, 30.0]
 
 def crank_rocker_problems(out: Problems, loc: tuple, a: float, b: float, c: float, d: float,
                           names: tuple[str, str, str, str], gamma_allowed_deg: float | None = None,
-                          gamma_field: str = "") -> None:
+                          gamma_field: str = "", locs: dict | None = None) -> None:
     """Closed-form checks (plain math, no engine) of given four-bar lengths a (crank),
     b (coupler), c (rocker), d (frame): Grashof's crank-rocker condition (the crank the
     shortest link, shortest + longest < the other two) and, when ``gamma_allowed_deg`` is
     given, γ_min = min(δ', 180° − δ'') ≥ [γ]. Each problem at the field that breaks it
-    (``loc`` + the field name); ``names`` are the four fields."""
+    (``loc`` + the field name, or ``locs[name]`` when a field lies elsewhere in the
+    section); ``names`` are the four fields."""
     lengths = {names[0]: a, names[1]: b, names[2]: c, names[3]: d}
+    at = {n: (locs or {}).get(n, loc + (n,)) for n in names}
     ordered = sorted(lengths.values())
     s, p, q, l_ = ordered
     sums = (f"shortest + longest = {s:g} + {l_:g} = {s + l_:g} mm, the other two {p:g} + {q:g} "
@@ -39,14 +41,14 @@ def crank_rocker_problems(out: Problems, loc: tuple, a: float, b: float, c: floa
     sums_zh = f"最短杆 + 最长杆 = {s:g} + {l_:g} = {s + l_:g} mm，其余两杆之和 {p + q:g} mm"
     if not s + l_ < p + q:
         longest = max(lengths, key=lengths.get)
-        out.add(loc + (longest,), lengths[longest],
+        out.add(at[longest], lengths[longest],
                 f"{longest} = {lengths[longest]:g}: these lengths are not a crank-rocker (Grashof: "
                 f"{sums}; a crank needs shortest + longest < the other two)",
                 f"{longest} = {lengths[longest]:g}：杆长不构成曲柄摇杆机构（{sums_zh}；"
                 "曲柄存在须最短杆 + 最长杆 < 其余两杆之和）")
         return
     if not a <= min(b, c, d):
-        out.add(loc + (names[0],), a,
+        out.add(at[names[0]], a,
                 f"{names[0]} = {a:g}: the crank must be the shortest link for a crank-rocker "
                 f"(the shortest is {s:g} mm; with another link shortest it is a double-crank, "
                 "double-rocker or a rocker that turns)",

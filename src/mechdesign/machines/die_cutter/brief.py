@@ -46,14 +46,62 @@ class Production(StrictModel):
         "Largest board thickness [mm]: the platen presses the board over this last travel"))
 
 
+class PressDimensions(StrictModel):
+    """The press's crank-rocker O1ABC as a data table gives it (给定尺寸); rocker: toggle_CB_mm.
+
+    The rocker of the crank-rocker is the lower toggle CB, press.toggle_CB_mm."""
+
+    crank_O1A_mm: float = Field(gt=0, le=5000, description="Crank O1A = a [mm]")
+    coupler_AB_mm: float = Field(gt=0, le=10000, description="Coupler AB = b [mm]")
+    frame_O1C_mm: float = Field(gt=0, le=10000, description=(
+        "Frame O1C = d, from the crank pivot O1 to the toggle pivot C [mm]"))
+
+
+#: TogglePress fields of the synthesis form, absent when dimensions are given.
+_SYNTHESIS_ONLY = ("stroke_H_mm", "time_ratio_K", "frame_O1C_mm")
+
+
+def _angle(x: float, y: float, z: float) -> float:
+    """Angle opposite z in a triangle with sides x, y, z [rad] (law of cosines, plain math)."""
+    return math.acos(max(-1.0, min(1.0, (x * x + y * y - z * z) / (2.0 * x * y))))
+
+
+def toggle_reach(l_cb: float, l_bd: float) -> float:
+    """Largest angle of CB from the guide [rad]: 90°, or where BD would lie flat (BD < CB)."""
+    return math.pi / 2 if l_bd >= l_cb else math.asin(l_bd / l_cb)
+
+
+def platen_height(beta: float, l_cb: float, l_bd: float) -> float:
+    """Platen D above C with CB at beta [rad] from the guide (plain math)."""
+    return l_cb * math.cos(beta) + math.sqrt(max(0.0, l_bd * l_bd - (l_cb * math.sin(beta)) ** 2))
+
+
+def given_press(pr: "TogglePress") -> tuple[float, float, float, float]:
+    """(θ [rad], ψ [rad], H [mm], K) of the press given by its dimensions, in closed form:
+    crank and coupler folded (O1B1 = b − a) and extended (O1B2 = b + a) in the triangles
+    O1CB1, O1CB2 (C the rocker's pivot, CB = c); θ = |∠CO1B1 − ∠CO1B2|,
+    ψ = ∠O1CB2 − ∠O1CB1, K = (180° + θ)/(180° − θ), H = y_D(ε) − y_D(ε + ψ)."""
+    dm = pr.dimensions
+    a, b, c, d = dm.crank_O1A_mm, dm.coupler_AB_mm, pr.toggle_CB_mm, dm.frame_O1C_mm
+    theta = abs(_angle(b - a, d, c) - _angle(b + a, d, c))
+    psi = _angle(d, c, b + a) - _angle(d, c, b - a)
+    eps = math.radians(pr.toggle_angle_at_top_deg)
+    H = platen_height(eps, c, pr.toggle_BD_mm) - platen_height(eps + psi, c, pr.toggle_BD_mm)
+    return theta, psi, H, (math.pi + theta) / (math.pi - theta)
+
+
 class TogglePress(StrictModel):
     """Toggle press (肘杆机构) lifting the lower platen: crank O1A, coupler AB, toggles CB and BD.
 
-    C is a frame pivot vertically below the platen D, on the platen's guide line."""
+    C is a frame pivot vertically below the platen D, on the platen's guide line. Either the
+    requirements (stroke H, time ratio K: the crank-rocker O1ABC is synthesised) or the
+    crank-rocker's dimensions (a, b, d: θ, ψ, K and H follow from them)."""
 
-    stroke_H_mm: float = Field(gt=0, le=500, description="Platen stroke H [mm]")
-    time_ratio_K: float = Field(gt=1, lt=3, description=(
-        "Time ratio K of the platen: rise (working stroke) time / fall time, 1 < K < 3"))
+    stroke_H_mm: Optional[float] = Field(None, gt=0, le=500, description=(
+        "Platen stroke H [mm]; required unless dimensions are given"))
+    time_ratio_K: Optional[float] = Field(None, gt=1, lt=3, description=(
+        "Time ratio K of the platen: rise (working stroke) time / fall time, 1 < K < 3; required "
+        "unless dimensions are given"))
     toggle_CB_mm: float = Field(gt=0, le=5000, description=(
         "Lower toggle link CB [mm] (also the rocker of the crank-rocker O1ABC)"))
     toggle_BD_mm: float = Field(gt=0, le=5000, description="Upper toggle link BD to the platen [mm]")
@@ -65,7 +113,11 @@ class TogglePress(StrictModel):
         "in line, AB = b + a) or folded (AB overlapping the crank)"))
     frame_O1C_mm: Optional[float] = Field(None, gt=0, le=10000, description=(
         "Distance from the crank pivot O1 to the toggle pivot C [mm]; default: the crank-rocker "
-        "with the largest minimum transmission angle"))
+        "with the largest minimum transmission angle (not with dimensions)"))
+    dimensions: Optional[PressDimensions] = Field(None, description=(
+        "Given dimensions (给定尺寸) of the crank-rocker O1ABC instead of stroke_H_mm, "
+        "time_ratio_K and frame_O1C_mm: no synthesis; θ, ψ, K and the stroke H = y_D(ε) − "
+        "y_D(ε + ψ) are computed from them"))
     crank_rotation: Literal["cw", "ccw"] = Field("cw", description=(
         "Sense of rotation of the distribution shaft (crank) seen on the drawing: cw or ccw"))
     transmission_angle_min_deg: float = Field(40.0, gt=0, lt=90, description=(
@@ -75,6 +127,56 @@ class TogglePress(StrictModel):
     clearance_mm: float = Field(gt=0, le=500, description=(
         "The sheet and the gripper bar pass between die and platen only while the platen is at "
         "least this far below its top [mm]"))
+
+    @model_validator(mode="after")
+    def _one_form(self):
+        """Either the requirements (H, K) or the dimensions; closed-form checks of the
+        dimensions (Grashof's crank-rocker, the toggle's reach), each at its field."""
+        from ..crank_rocker.brief import crank_rocker_problems, raise_missing
+
+        if self.dimensions is None:
+            raise_missing(self, [n for n in ("stroke_H_mm", "time_ratio_K") if getattr(self, n) is None])
+            return self
+        out = Problems(self)
+        for name in _SYNTHESIS_ONLY:
+            if getattr(self, name) is not None:
+                out.add((name,), getattr(self, name),
+                        f"{name}: with dimensions given there is no synthesis, and H, K and the "
+                        f"frame follow from the dimensions; remove {name} (or remove dimensions)",
+                        f"{name}：已给出 dimensions 时不作综合，H、K 与机架长均由尺寸确定；应删去 "
+                        f"{name}（或删去 dimensions）")
+        dm = self.dimensions
+        before = len(out.items)
+        crank_rocker_problems(out, ("dimensions",), dm.crank_O1A_mm, dm.coupler_AB_mm,
+                              self.toggle_CB_mm, dm.frame_O1C_mm,
+                              ("crank_O1A_mm", "coupler_AB_mm", "toggle_CB_mm", "frame_O1C_mm"),
+                              locs={"toggle_CB_mm": ("toggle_CB_mm",)})
+        if len(out.items) == before:
+            _, psi, _, _ = given_press(self)
+            eps = math.radians(self.toggle_angle_at_top_deg)
+            reach = toggle_reach(self.toggle_CB_mm, self.toggle_BD_mm)
+            if not eps + psi < reach:
+                flat = ("BD would lie flat" if self.toggle_BD_mm < self.toggle_CB_mm else
+                        "CB would pass the horizontal")
+                flat_zh = "BD 会躺平" if self.toggle_BD_mm < self.toggle_CB_mm else "CB 会越过水平位置"
+                out.add(("dimensions", "crank_O1A_mm"), dm.crank_O1A_mm,
+                        f"dimensions.crank_O1A_mm = {dm.crank_O1A_mm:g}: the dimensions swing CB "
+                        f"through ψ = {math.degrees(psi):.4g}°, and with toggle_angle_at_top_deg = "
+                        f"{self.toggle_angle_at_top_deg:g}° the bottom is {math.degrees(eps + psi):.4g}° "
+                        f"from the guide, beyond {math.degrees(reach):.4g}° where {flat}: a shorter "
+                        "crank or a longer frame gives less swing",
+                        f"dimensions.crank_O1A_mm = {dm.crank_O1A_mm:g}：该尺寸使 CB 摆角 ψ = "
+                        f"{math.degrees(psi):.4g}°，加上 toggle_angle_at_top_deg = "
+                        f"{self.toggle_angle_at_top_deg:g}°，下止点时 CB 偏离导路 "
+                        f"{math.degrees(eps + psi):.4g}°，超过 {math.degrees(reach):.4g}°（{flat_zh}）："
+                        "应缩短曲柄或加长机架以减小摆角")
+        out.raise_any()
+        return self
+
+    @property
+    def stroke_mm(self) -> float:
+        """The platen stroke H [mm]: the brief's, or derived from the dimensions."""
+        return self.stroke_H_mm if self.dimensions is None else given_press(self)[2]
 
 
 class PressMasses(StrictModel):
@@ -190,12 +292,14 @@ class DieCutterBrief(StrictModel):
                     "platen presses while the sheet is in the die",
                     f"press.clearance_mm = {pr.clearance_mm:g} 须大于压紧行程 {travel:g} mm"
                     "（cutting.pressing_travel_mm，默认为纸板厚度）：纸板在模内时动平台才施压")
-        if not pr.clearance_mm < pr.stroke_H_mm:
+        H, name = pr.stroke_mm, "stroke_H_mm" if pr.dimensions is None else "H (from the dimensions)"
+        name_zh = "stroke_H_mm" if pr.dimensions is None else "H（由 dimensions 导出）"
+        if not pr.clearance_mm < H:
             out.add(("press", "clearance_mm"), pr.clearance_mm,
                     f"press.clearance_mm = {pr.clearance_mm:g} must be below the stroke "
-                    f"stroke_H_mm = {pr.stroke_H_mm:g}: otherwise the platen is never clear",
-                    f"press.clearance_mm = {pr.clearance_mm:g} 须小于行程 stroke_H_mm = "
-                    f"{pr.stroke_H_mm:g}：否则动平台永远让不开")
+                    f"{name} = {H:.6g}: otherwise the platen is never clear",
+                    f"press.clearance_mm = {pr.clearance_mm:g} 须小于行程 {name_zh} = "
+                    f"{H:.6g}：否则动平台永远让不开")
         c = self.gripper_cam
         if c.rotation != pr.crank_rotation:
             out.add(("gripper_cam", "rotation"), c.rotation,
@@ -273,10 +377,28 @@ class PressGeometry:
     top_position: str           # "extended" | "folded"
     frame: float | None         # O1C [m] or None (best transmission angle)
     sense: float                # +1 ccw, −1 cw
+    given: tuple | None = None  # (a, b, d) [m] of the brief's dimensions (None: synthesis);
+                                # stroke and K are then the derived ones
 
 
 def _press_geometry(b: DieCutterBrief) -> PressGeometry:
     pr, mm = b.press, 1e-3
+    if pr.dimensions is not None:
+        # No synthesis: θ, ψ from the lengths (law of cosines), H from the toggle at ε, ε + ψ.
+        from ...core import fourbar
+
+        def toggle_height(beta, l_cb, l_bd):      # = stages.toggle_height (no import cycle)
+            return l_cb * np.cos(beta) + np.sqrt(l_bd ** 2 - (l_cb * np.sin(beta)) ** 2)
+
+        dm = pr.dimensions
+        a, bb, d = dm.crank_O1A_mm * mm, dm.coupler_AB_mm * mm, dm.frame_O1C_mm * mm
+        lt, ld = pr.toggle_CB_mm * mm, pr.toggle_BD_mm * mm
+        theta, psi = fourbar.crank_rocker_extremes(fourbar.FourBar(a, bb, lt, d))
+        eps = float(np.radians(pr.toggle_angle_at_top_deg))
+        H = float(toggle_height(eps, lt, ld) - toggle_height(eps + psi, lt, ld))
+        return PressGeometry(H, float((np.pi + theta) / (np.pi - theta)), lt, ld, eps,
+                             pr.top_position, d, -1.0 if pr.crank_rotation == "cw" else 1.0,
+                             (a, bb, d))
     return PressGeometry(pr.stroke_H_mm * mm, pr.time_ratio_K, pr.toggle_CB_mm * mm,
                          pr.toggle_BD_mm * mm, float(np.radians(pr.toggle_angle_at_top_deg)),
                          pr.top_position, None if pr.frame_O1C_mm is None else pr.frame_O1C_mm * mm,

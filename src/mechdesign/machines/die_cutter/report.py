@@ -151,19 +151,34 @@ def _choice_rows(b, p, r, zh: bool) -> list[list[str]]:
     seg = cam.programme
     F_kN = f(p.cutting_force / 1e3, 0)
     t_mm = f(p.pressing_travel * MM, 1)
+    given = pr.dimensions is not None
+    g = p.geometry
+    H_mm = g.stroke * MM
+    sub = ("（由尺寸导出）" if zh else " (derived)") if given else ""
     rows = [
-        ["$H$", "下模板行程" if zh else "platen stroke", f"{f(pr.stroke_H_mm, 1)} mm",
+        ["$H$", ("下模板行程" if zh else "platen stroke") + sub,
+         f"{f(H_mm, 3) if given else f(pr.stroke_H_mm, 1)} mm",
          (f"送纸时夹爪排与纸板须从上、下模之间通过；下模板在最低位置时与上模的间隙为 H − t = "
-          f"{f(pr.stroke_H_mm - b.production.board_thickness_mm, 1)} mm" if zh else
+          f"{f(H_mm - b.production.board_thickness_mm, 1)} mm" if zh else
           f"the gripper bar and the sheet pass between die and platen; at the bottom the gap is "
-          f"H − t = {f(pr.stroke_H_mm - b.production.board_thickness_mm, 1)} mm")],
+          f"H − t = {f(H_mm - b.production.board_thickness_mm, 1)} mm")],
         ["$c$", "让开高度" if zh else "clearance level", f"{f(pr.clearance_mm, 1)} mm",
          "下模板低于上止点至少 c 时夹爪排（约 12 mm）与纸板才能通过，另留余量" if zh else
          "the platen must be at least c below its top for the gripper bar (about 12 mm) and the "
          "sheet to pass, with some margin"],
-        ["$K$", "行程速比系数" if zh else "time ratio", f(pr.time_ratio_K, 2),
+        ["$K$", ("行程速比系数" if zh else "time ratio") + sub, f(g.K, 6) if given else f(pr.time_ratio_K, 2),
          "上升（压切）行程慢、下降快：压切区占较大的曲柄转角，所需力矩峰值较小" if zh else
          "slow rise (cutting), quick fall: the cut takes more crank angle, so the torque peak is lower"],
+    ]
+    if given:
+        dm = pr.dimensions
+        rows.append(["$a, b, d$", "曲柄 O1A、连杆 AB、机架 O1C（给定）" if zh else
+                     "crank O1A, coupler AB, frame O1C (given)",
+                     f"{f(dm.crank_O1A_mm, 3)}, {f(dm.coupler_AB_mm, 3)}, {f(dm.frame_O1C_mm, 3)} mm",
+                     "任务书给定尺寸，不作综合；θ、ψ、K 与 H 由尺寸导出（见肘杆机构设计）" if zh else
+                     "the brief's dimensions, no synthesis; θ, ψ, K and H are derived from them "
+                     "(see the toggle press chapter)"])
+    rows += [
         ["$l_{CB}, l_{BD}$", "肘杆长度" if zh else "toggle links",
          f"{f(pr.toggle_CB_mm, 0)}, {f(pr.toggle_BD_mm, 0)} mm",
          "肘杆越长，同一行程所需摆角越小；BD 长于 CB，BD 不会躺平，最低位置时滑块压力角小" if zh else
@@ -244,6 +259,26 @@ def _synthesis(d, p, zh: bool) -> dict:
     fb = d.four
     K = g.K
     theta = d.theta * DEG
+    given = None
+    if g.given is not None:
+        a, b, c, d_ = fb.crank * MM, fb.coupler * MM, lt, fb.frame * MM
+
+        def ang(x, y, z):       # angle opposite z [°]
+            return float(np.degrees(np.arccos(np.clip((x * x + y * y - z * z) / (2 * x * y), -1, 1))))
+        given = {
+            "cosines": (r"\angle O_1CB_{1,2} = \arccos\frac{d^2 + c^2 - (b \mp a)^2}{2dc},\qquad "
+                        r"\angle CO_1B_{1,2} = \arccos\frac{(b \mp a)^2 + d^2 - c^2}{2(b \mp a)d}"),
+            "psi": (rf"\psi = \angle O_1CB_2 - \angle O_1CB_1 = {f(ang(d_, c, b + a), 6)}° - "
+                    rf"{f(ang(d_, c, b - a), 6)}° = {_deg(psi, 6)}°"),
+            "theta": (rf"\theta = \lvert\angle CO_1B_1 - \angle CO_1B_2\rvert = \lvert {f(ang(b - a, d_, c), 6)}° - "
+                      rf"{f(ang(b + a, d_, c), 6)}°\rvert = {f(theta, 6)}°"),
+            "K": (rf"K = \frac{{180° + \theta}}{{180° - \theta}} = \frac{{180° + {f(theta, 6)}°}}"
+                  rf"{{180° - {f(theta, 6)}°}} = {f(K, 6)}"),
+            "H": (rf"H = y_D(\varepsilon) - y_D(\varepsilon + \psi) = {f(d.top_height * MM, 6)} - "
+                  rf"{f(d.bottom_height * MM, 6)} = {f(g.stroke * MM, 6)}\ \text{{mm}}"),
+            "lengths": (rf"a = {f(a, 3)},\quad b = {f(b, 3)},\quad c = l_{{CB}} = {f(c, 3)},\quad "
+                        rf"d = {f(d_, 3)}\ \text{{mm}}"),
+        }
     eq = {
         "height": (r"y_D(\beta) = l_{CB}\cos\beta + \sqrt{l_{BD}^2 - l_{CB}^2\sin^2\beta}"),
         "stroke": (rf"H = y_D(\varepsilon) - y_D(\varepsilon + \psi) = {f(d.top_height * MM, 3)} - "
@@ -262,14 +297,17 @@ def _synthesis(d, p, zh: bool) -> dict:
                        r"\quad \frac{dy_D}{d\theta_4} = l_{CB}\cos\theta_4 + "
                        r"\frac{l_{CB}^2\sin\theta_4\cos\theta_4}{\sqrt{l_{BD}^2 - l_{CB}^2\cos^2\theta_4}}"),
     }
+    der = ("（导出）" if zh else " (derived)") if given else ""
+    giv = ("（给定）" if zh else " (given)") if given else ""
+    dig = 3 if given else 2
     rows = [
-        ["$\\psi$", "肘杆 CB 摆角" if zh else "swing of CB", _deg(psi, 3), "°"],
-        ["$\\theta$", "极位夹角" if zh else "extreme-position angle", f(theta, 3), "°"],
-        ["$a = l_{O_1A}$", "曲柄" if zh else "crank", f(fb.crank * MM, 2), "mm"],
-        ["$b = l_{AB}$", "连杆" if zh else "coupler", f(fb.coupler * MM, 2), "mm"],
+        ["$\\psi$", ("肘杆 CB 摆角" if zh else "swing of CB") + der, _deg(psi, dig), "°"],
+        ["$\\theta$", ("极位夹角" if zh else "extreme-position angle") + der, f(theta, dig), "°"],
+        ["$a = l_{O_1A}$", ("曲柄" if zh else "crank") + giv, f(fb.crank * MM, dig), "mm"],
+        ["$b = l_{AB}$", ("连杆" if zh else "coupler") + giv, f(fb.coupler * MM, dig), "mm"],
         ["$c = l_{CB}$", "肘杆（摇杆）" if zh else "toggle (rocker)", f(lt, 2), "mm"],
         ["$l_{BD}$", "肘杆" if zh else "toggle", f(ld, 2), "mm"],
-        ["$d = l_{O_1C}$", "机架" if zh else "frame", f(fb.frame * MM, 2), "mm"],
+        ["$d = l_{O_1C}$", ("机架" if zh else "frame") + giv, f(fb.frame * MM, dig), "mm"],
         ["$O_1$", "曲柄轴心（C 为原点）" if zh else "crank pivot (C at the origin)",
          f"({f(d.O1.real * MM, 2)}, {f(d.O1.imag * MM, 2)})", "mm"],
         ["$y_D$", "下模板铰点 D 的高度（上止点 / 下止点）" if zh else "height of D (top / bottom)",
@@ -279,6 +317,9 @@ def _synthesis(d, p, zh: bool) -> dict:
         ["$\\varphi_{rise}$", "上升行程曲柄转角" if zh else "crank angle of the rise",
          _deg(d.rising_span, 2), "°"],
     ]
+    if given:
+        rows[2:2] = [["$K$", ("行程速比系数" if zh else "time ratio") + der, f(K, 6), "—"],
+                     ["$H$", ("下模板行程" if zh else "platen stroke") + der, f(g.stroke * MM, 4), "mm"]]
     pivot = ("按给定机架长 O1C 取 θ 圆上的点" if zh else "the point of the θ-circle at the given frame O1C") \
         if g.frame is not None else \
         ("在 θ 圆的允许弧上搜索，使最小传动角最大" if zh else
@@ -286,7 +327,7 @@ def _synthesis(d, p, zh: bool) -> dict:
     mirrored = ("为使上升行程为慢行程（K > 1），图形按导路作了镜像。" if zh else
                 "The drawing is mirrored about the guide so that the rise is the slow stroke (K > 1).") \
         if d.mirrored else ""
-    return {"eq": eq, "rows": rows, "pivot": pivot, "mirrored": mirrored,
+    return {"eq": eq, "rows": rows, "pivot": pivot, "mirrored": mirrored, "given": given,
             "psi": _deg(psi, 3), "eps": _deg(eps, 2), "theta": f(theta, 3),
             "top": ({"extended": "拉直共线位置（AC = b + a）", "folded": "重叠共线位置（AC = b − a）"} if zh else
                     {"extended": "extended position (AC = b + a)", "folded": "folded position (AC = b − a)"}

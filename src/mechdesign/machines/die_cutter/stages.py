@@ -118,21 +118,50 @@ class ToggleDesign:
     rising_span: float          # crank angle of the rise (π + θ)
 
 
+def _place_given(g: PressGeometry) -> tuple[fourbar.FourBar, complex, complex, complex]:
+    """The brief's crank-rocker O1ABC placed as the θ-circle construction would place it
+    (C at the origin, the rocker's extremes B1 = (w, h) folded and B2 = (−w, h) extended,
+    w = c sin(ψ/2), h = c cos(ψ/2)): O1 at the distance d from C and b − a from B1, on the
+    side where O1B2 = b + a (law of cosines, no synthesis). Returns (four-bar, O1, B1, B2)."""
+    a, b, d = g.given
+    c = g.toggle_CB
+    four = fourbar.FourBar(a, b, c, d)
+    _, psi = fourbar.crank_rocker_extremes(four)
+    w, h = c * np.sin(psi / 2.0), c * np.cos(psi / 2.0)
+    b1, b2 = complex(w, h), complex(-w, h)
+    t = np.arccos(np.clip((d * d + c * c - (b - a) ** 2) / (2.0 * d * c), -1.0, 1.0))  # ∠O1CB1
+    cands = [complex(d * b1 / c * np.exp(1j * s * t)) for s in (+1.0, -1.0)]
+    o1 = min(cands, key=lambda z: abs(abs(z - b2) - (b + a)))
+    return four, o1, b1, b2
+
+
 def toggle_synthesis(g: PressGeometry) -> ToggleDesign:
     """Dimensions and placement of the toggle press (see the module docstring).
 
     Raises :class:`~mechdesign.core.fourbar.SynthesisError` naming what to change."""
     lt, ld, eps = g.toggle_CB, g.toggle_BD, g.top_angle
-    psi = toggle_swing(g)
-    theta = float(extreme_angle(g.K))
-    cons = fourbar.circle_construction(g.K, psi, lt)
-    if g.frame is None:
-        p, _ = fourbar.optimal_position(g.K, psi, lt)
+    if g.given is not None:
+        four, a_pt, c1, c2 = _place_given(g)
+        a, b, d = four.crank, four.coupler, four.frame
+        theta, psi = fourbar.crank_rocker_extremes(four)
+        if not eps + psi < _max_beta(lt, ld):
+            raise fourbar.SynthesisError(
+                f"dimensions.crank_O1A_mm = {a * 1e3:g}: the swing ψ = {psi * DEG:.4g}° of CB takes "
+                f"it beyond {_max_beta(lt, ld) * DEG:.4g}° from the guide at the bottom",
+                f"dimensions.crank_O1A_mm = {a * 1e3:g}：CB 摆角 ψ = {psi * DEG:.4g}°，下止点时偏离"
+                f"导路超过 {_max_beta(lt, ld) * DEG:.4g}°")
     else:
-        p = fourbar.position_for_frame(cons, g.frame)
-    a_pt = complex(cons.point(p))
-    a, b, d = (float(x) for x in cons.designs(p))
-    four = fourbar.FourBar(a, b, lt, d)
+        psi = toggle_swing(g)
+        theta = float(extreme_angle(g.K))
+        cons = fourbar.circle_construction(g.K, psi, lt)
+        if g.frame is None:
+            p, _ = fourbar.optimal_position(g.K, psi, lt)
+        else:
+            p = fourbar.position_for_frame(cons, g.frame)
+        a_pt = complex(cons.point(p))
+        a, b, d = (float(x) for x in cons.designs(p))
+        four = fourbar.FourBar(a, b, lt, d)
+        c1, c2 = cons.c1, cons.c2
     ok, kind = fourbar.grashof(four)
     if not (ok and kind == "crank-rocker"):
         en, zh = fourbar.grashof_sums(four)
@@ -143,7 +172,7 @@ def toggle_synthesis(g: PressGeometry) -> ToggleDesign:
             f"曲柄不能整周转动（不满足曲柄存在条件 / Grashof）：四杆机构 O1ABC 成为{kind}而不是曲柄摇杆机构"
             f"（{zh}）；应改变 K（time_ratio_K）或肘杆长度（toggle_CB_mm），或另给机架长度")
     gmin, gmax = fourbar.transmission_angle_extremes(four)
-    top, other = (cons.c2, cons.c1) if g.top_position == "extended" else (cons.c1, cons.c2)
+    top, other = (c2, c1) if g.top_position == "extended" else (c1, c2)
     rot = np.exp(1j * (np.pi / 2 - np.angle(top)))
     side = 1.0 if (other * rot).real > 0 else -1.0
     rot *= np.exp(-1j * side * eps)             # CB leans ε towards the side it swings to
@@ -203,7 +232,11 @@ def build_press(d: ToggleDesign, p: DieCutterParams) -> LinkageModel:
                              "或去掉 press.frame_O1C_mm 以取传动角最大的机架",
                              "brief fields: a smaller press.time_ratio_K, a longer press.toggle_CB_mm "
                              "(a smaller swing), or no press.frame_O1C_mm (the frame with the "
-                             "largest transmission angle)")})
+                             "largest transmission angle)") if g.given is None else
+                            ("任务书字段：修改 press.dimensions（曲柄 crank_O1A_mm、连杆 coupler_AB_mm、"
+                             "机架 frame_O1C_mm），或改按 stroke_H_mm、time_ratio_K 综合",
+                             "brief fields: other press.dimensions (crank_O1A_mm, coupler_AB_mm, "
+                             "frame_O1C_mm), or synthesise from stroke_H_mm and time_ratio_K instead")})
 
 
 #: TogglePress fields a synthesis message may start with ("stroke_H_mm = 400 …").
@@ -221,7 +254,7 @@ def checks(p: DieCutterParams, keep: dict | None = None) -> list:
         d = toggle_synthesis(p.geometry)
     except fourbar.SynthesisError as exc:
         name = exc.en.split(" = ", 1)[0] if " = " in exc.en else ""
-        if name in _PRESS_FIELDS:
+        if name in _PRESS_FIELDS or name.startswith("dimensions."):
             path = f"press.{name}"
         elif exc.en.startswith("frame length") and p.geometry.frame is not None:
             path = "press.frame_O1C_mm"
@@ -664,6 +697,8 @@ class ToggleDoc:
     top_height: float = q("m", "platen D above C at the top")
     bottom_height: float = q("m", "platen D above C at the bottom")
     top_position: str = q("", "'extended' or 'folded': the crank-rocker extreme at the top")
+    given: bool = q("", "the crank-rocker's lengths are the brief's press.dimensions (no synthesis; "
+                    "θ, ψ, K and the stroke derived from them)")
 
 
 @dataclass(frozen=True)
@@ -763,7 +798,7 @@ def results_document(r: dict) -> DieCutterResults:
         toggle=ToggleDoc(d.swing, d.theta, fb.crank, fb.coupler, fb.rocker, d.geometry.toggle_BD,
                          fb.frame, d.O1, d.B_top, d.B_bottom, d.crank_top, d.crank_bottom,
                          d.branch, d.mirrored, d.gamma_min, d.top_height, d.bottom_height,
-                         d.geometry.top_position),
+                         d.geometry.top_position, d.geometry.given is not None),
         press=linkage_document(r["press_model"], r["press"], r["press_forces"], None,
                                r["press_verification"]),
         amplification=AmplificationDoc(
