@@ -177,9 +177,9 @@ def _problems(path: Path) -> list[str]:
      ["c.csv line 2 (group 1), column linkage.stroke_H_mm: '300 mm' — a number in mm, "
       "without the unit: write 300"]),
     ("c.csv", HEAD + "1,王,1,300,1.2\n2,李,2,-5,1.2\n",
-     ["c.csv line 3 (group 2), column linkage.stroke_H_mm: -5 — Input should be greater than 0"]),
+     ["c.csv line 3 (group 2), column linkage.stroke_H_mm: -5 — must be greater than 0"]),
     ("c.csv", HEAD + '1,王,1,300,1.2\n"2\nb",李,2,310,1.2\n3,赵,3,320,0.9\n',
-     ["c.csv line 5 (group 3), column linkage.time_ratio_K: 0.9 — Input should be greater than 1"]),
+     ["c.csv line 5 (group 3), column linkage.time_ratio_K: 0.9 — must be greater than 1"]),
 ])
 def test_bad_files_columns_rows_and_cells_are_named(tmp_path, table, text, expected):
     lines = _problems(_brief(tmp_path, table, text))
@@ -205,7 +205,7 @@ def test_every_bad_cell_of_every_row_is_reported_by_check(tmp_path, default):
 def test_xlsx_problems_name_the_row_and_an_unknown_sheet(tmp_path):
     _xlsx(tmp_path / "c.xlsx", [HEAD.strip().split(","), [1, "王", 1, 300, 1.2], [2, "李", 2, 0, 1.2]])
     lines = _problems(_brief(tmp_path, "c.xlsx"))
-    assert lines == ["c.xlsx row 3 (group 2), column linkage.stroke_H_mm: 0 — Input should be "
+    assert lines == ["c.xlsx row 3 (group 2), column linkage.stroke_H_mm: 0 — must be "
                      "greater than 0 (Ram stroke H [mm] (synthesis form, with time_ratio_K))"]
     assert _problems(_brief(tmp_path, "c.xlsx", sheet="Tabelle1"))[0].startswith(
         "groups.sheet: 'Tabelle1' — one of the sheets of c.xlsx: class")

@@ -13,6 +13,9 @@ from pydantic import Field, field_validator, model_validator
 
 from .common import Problems, StrictModel, invalid
 
+#: Smallest tooth number of a roller-chain sprocket (机械设计手册: z_min = 9; z1 ≥ 17 advised).
+CHAIN_Z_MIN = 9
+
 StageType = Literal["coupling", "belt", "chain", "spur", "helical", "worm"]
 
 _FIELDS_BY_TYPE = {
@@ -111,6 +114,14 @@ class DriveStage(StrictModel):
             out.add("z2", self.z2, f"z2 must be at least z1 = {self.z1}: a reduction stage (the {what} "
                     "turns slower than the driver)",
                     f"减速级（{what_zh}转得比主动轮慢）：z2 须不小于 z1 = {self.z1}")
+        if self.type == "chain":
+            for key in ("z1", "z2"):
+                z = getattr(self, key)
+                if z is not None and z < CHAIN_Z_MIN:
+                    out.add(key, z,
+                            f"a roller-chain sprocket needs at least {CHAIN_Z_MIN} teeth (17 or more "
+                            "recommended for smooth running); give more teeth",
+                            f"滚子链链轮至少需要 {CHAIN_Z_MIN} 个齿（为运转平稳宜取 17 以上）；应增加齿数")
         fixes = [n for n, given in (("ratio", self.ratio is not None),
                                     ("z1/z2", self.z1 is not None and self.z2 is not None),
                                     ("d1_mm/d2_mm", self.d1_mm is not None and self.d2_mm is not None))

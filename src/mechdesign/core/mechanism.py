@@ -559,7 +559,7 @@ def _grashof(group, crank, fixed: str, b: float, c: float, d: float):
         why_zh = f"杆长之和条件满足，但最短杆是{zh_s}而不是曲柄或机架"
     fix_en, fix_zh = [], []
     short1 = a + d - (b + c)           # the folded/extended position: BD = d + a > b + c
-    if short1 > 0:
+    if short1 > _LENGTH_TOL:
         crank_en = f" or shorten the crank by {_mm(short1)} mm" if short1 < a else ""
         crank_zh = f"，或将曲柄缩短 {_mm(short1)} mm" if short1 < a else ""
         fix_en.append(f"make coupler + rocker at least a + d = {_mm(a + d)} mm (lengthen them by "
@@ -567,21 +567,26 @@ def _grashof(group, crank, fixed: str, b: float, c: float, d: float):
         fix_zh.append(f"使连杆 + 摇杆 ≥ a + d = {_mm(a + d)} mm（两者共加长 {_mm(short1)} mm）"
                       f"{crank_zh}")
     short2 = abs(b - c) - abs(d - a)   # BD = |d − a| < |b − c|
-    if short2 > 0:
+    if short2 > _LENGTH_TOL:
         longer_en, longer_zh = ("coupler", "连杆") if b > c else ("rocker", "摇杆")
         fix_en.append(f"make |b − c| = {_mm(abs(b - c))} mm at most |d − a| = {_mm(abs(d - a))} mm "
                       f"(shorten the {longer_en} by {_mm(short2)} mm, or lengthen the other)")
         fix_zh.append(f"使 |b − c| = {_mm(abs(b - c))} mm 不超过 |d − a| = {_mm(abs(d - a))} mm"
                       f"（将{longer_zh}缩短 {_mm(short2)} mm，或加长另一杆）")
-    if not fix_en:   # a rounding edge: the closure fails by a hair
-        fix_en.append("change the link lengths slightly")
-        fix_zh.append("略微调整杆长")
+    if not fix_en:   # a rounding edge: the closure fails by a hair (a change-point linkage)
+        fix_en.append("the lengths sit exactly at the limit (a change-point linkage): change one "
+                      "link by at least 0.01 mm")
+        fix_zh.append("杆长恰在极限上（变点机构）：将某一杆长改变至少 0.01 mm")
     en = (f"the crank cannot make a full turn (Grashof): four-bar {name} with {lens_en}: "
           f"{sums_en}; {why_en}, so {{where}}. To let the crank turn: {'; or '.join(fix_en)}")
     zh = (f"曲柄不能整周转动（不满足曲柄存在条件 / Grashof 条件）：四杆机构 {name}，{lens_zh}；"
           f"{sums_zh}；{why_zh}，因此{{where}}。要使曲柄整周转动：{'；或'.join(fix_zh)}")
     return "grashof", en, zh, {"a": a, "b": b, "c": c, "d": d, "s_plus_l": s_ + l_,
                                "p_plus_q": p_ + q_}
+
+
+#: A length change below this [m] is round-off, never advice.
+_LENGTH_TOL = 1e-8
 
 
 def _slider_crank(group, crank, e: float):
@@ -621,14 +626,17 @@ def _rrr_reach(group, dist: np.ndarray, bad: np.ndarray):
     lo, hi = float(np.min(dist)), float(np.max(dist))
     at = float(dist[bad][0])
     fix_en, fix_zh = [], []
-    if hi > l1 + l2:
+    if hi > l1 + l2 + _LENGTH_TOL:
         fix_en.append(f"make {group.b}{group.c} + {group.d}{group.c} at least {_mm(hi)} mm "
                       f"(lengthen them by {_mm(hi - l1 - l2)} mm in total)")
         fix_zh.append(f"使 {group.b}{group.c} + {group.d}{group.c} ≥ {_mm(hi)} mm"
                       f"（两杆共加长 {_mm(hi - l1 - l2)} mm）")
-    if lo < abs(l1 - l2):
+    if lo < abs(l1 - l2) - _LENGTH_TOL:
         fix_en.append(f"make their difference at most {_mm(lo)} mm (now {_mm(abs(l1 - l2))} mm)")
         fix_zh.append(f"使两杆长度差不超过 {_mm(lo)} mm（现为 {_mm(abs(l1 - l2))} mm）")
+    if not fix_en:   # closes by a hair only: round-off at a limit position
+        fix_en.append("the lengths sit exactly at the limit: change one link by at least 0.01 mm")
+        fix_zh.append("杆长恰在极限上：将某一杆长改变至少 0.01 mm")
     en = (f"{{where}}: links {group.b}{group.c} = {_mm(l1)} mm and {group.d}{group.c} = {_mm(l2)} mm "
           f"close only while |{group.b}{group.d}| lies between {_mm(abs(l1 - l2))} and "
           f"{_mm(l1 + l2)} mm, but it is {_mm(at)} mm there and ranges {_mm(lo)} … {_mm(hi)} mm "
