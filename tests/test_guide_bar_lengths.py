@@ -311,7 +311,7 @@ CASES = {
     "rim_0.001mm": (lambda d: d["flywheel"].update(rim_diameter_mm=0.001),
                     "flywheel.rim_diameter_mm = 0.001", "no rim of this diameter"),
     "1e-9_rpm": (lambda d: d["linkage"].update(crank_speed_n2_rpm=1e-9),
-                 "flywheel.rim_diameter_mm = 1000", "crank speed n2 = 1e-09 rpm"),
+                 "flywheel.rim_diameter_mm = 1000", "crank speed n = 1e-09 rpm"),
 }
 
 

@@ -75,6 +75,10 @@ CASES = [
      ["linkage.stroke_H_mm", "crank pin's reach"]),
     # 1e-9 rpm gave J_F = 3.4e23 kg·m² as a result
     ("speed-1e-9", "shaper", {"linkage.crank_speed_n2_rpm": 1e-9}, 2, ["crank speed"]),
+    ("speed-1e-9-linkage", "linkage_sixbar", {"linkage.crank.speed_rpm": 1e-9}, 0,
+     ["beyond any machine", "check the crank speed"]),
+    ("speed-1e-9-press", "press", {"linkage.crank_speed_n1_rpm": 1e-9}, 2,
+     ["flywheel.rim_diameter_mm", "crank speed n = 1e-09 rpm"]),
     # the crank turning against the quick return (K < 1) was reported silently as K = 0.5
     ("crank-reversed", "linkage_sixbar", {"linkage.crank.rotation": "ccw"}, 0,
      ["linkage.crank.rotation"]),

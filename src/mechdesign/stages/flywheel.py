@@ -64,6 +64,12 @@ class Flywheel:
     warnings: tuple[Finding, ...] = q("", "rim speed, rim proportions", default=())
 
 
+#: Crank speeds below this [rpm] or flywheels above this [kg·m²] are no course machine's:
+#: named (a rim, when sized, is checked by its proportions instead).
+SLOW_RPM = 1.0
+ABSURD_INERTIA = 1e4
+
+
 def design_flywheel(spec: FlywheelSpec, phase: np.ndarray, balancing_torque: np.ndarray,
                     crank_omega: float, gravity: float = 9.81, exact=None) -> Flywheel:
     """The flywheel for M_b [N·m] sampled on the uniform crank ``phase`` grid [rad].
@@ -84,6 +90,14 @@ def design_flywheel(spec: FlywheelSpec, phase: np.ndarray, balancing_torque: np.
         if spec.rim.field:
             impossible_rim(rim, spec, inertia, speed, crank_rpm, gravity)
         warnings += rim_findings(rim, spec.rim.field)
+    elif crank_rpm < SLOW_RPM or inertia > ABSURD_INERTIA:
+        warnings.append(Finding(
+            "flywheel_absurd",
+            f"飞轮转动惯量 J_F = {inertia:.4g} kg·m²（曲柄转速 {crank_rpm:.4g} r/min）不合常理："
+            "J_F = 900·ΔW_max/(π²·n²·[δ]) 与 n² 成反比；请检查曲柄转速，或把飞轮装在转速更高的轴上。",
+            f"the flywheel J_F = {inertia:.4g} kg·m² (crank at {crank_rpm:.4g} rpm) is beyond any "
+            "machine of the course: J_F = 900·ΔW_max/(π²·n²·[δ]) grows as 1/n²; check the crank "
+            "speed, or put the flywheel on a faster shaft."))
     return Flywheel(
         shaft=spec.shaft, speed_ratio=float(spec.speed_ratio), shaft_speed_rpm=float(speed),
         mean_torque=cycle.driving_torque, shaft_torque=cycle.driving_torque / spec.speed_ratio,
@@ -118,11 +132,11 @@ def impossible_rim(rim: fw.RimFlywheel, spec: FlywheelSpec, inertia: float, spee
         f"b = {rim.width * 1e3:.4g} mm, not smaller than its mean diameter D = "
         f"{r.diameter * 1e3:g} mm: no rim of this diameter can carry it. Take D ≥ "
         f"{d_min * 1e3:.4g} mm (then H ≤ D/2), put the flywheel on a faster shaft, or check the "
-        f"crank speed n2 = {crank_rpm:.4g} rpm (J_F = 900·ΔW_max/(π²·n²·[δ]) grows as 1/n²).",
+        f"crank speed n = {crank_rpm:.4g} rpm (J_F = 900·ΔW_max/(π²·n²·[δ]) grows as 1/n²).",
         f"{r.field} = {r.diameter * 1e3:g}：转速 {speed:.4g} r/min 下飞轮 J_F = {inertia:.4g} kg·m² "
         f"需要轮缘高 H = {rim.height * 1e3:.4g} mm、宽 b = {rim.width * 1e3:.4g} mm，不小于平均直径 "
         f"D = {r.diameter * 1e3:g} mm，该直径的轮缘无法承担：应取 D ≥ {d_min * 1e3:.4g} mm"
-        f"（此时 H ≤ D/2），或把飞轮装在转速更高的轴上，或检查曲柄转速 n2 = {crank_rpm:.4g} r/min"
+        f"（此时 H ≤ D/2），或把飞轮装在转速更高的轴上，或检查曲柄转速 n = {crank_rpm:.4g} r/min"
         "（J_F = 900·ΔW_max/(π²·n²·[δ]) 与 n² 成反比）。")
 
 

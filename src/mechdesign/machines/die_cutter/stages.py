@@ -439,7 +439,8 @@ def flywheel(model: LinkageModel, k, f, drive, p: DieCutterParams) -> tuple[Flyw
     designed drive), and the shafts after it that carry the peak torque."""
     ratio = float(np.prod([st.ratio for st in drive.stages][p.flywheel_shaft:]))
     spec = FlywheelSpec(p.fluctuation, ratio, p.flywheel_shaft,
-                        RimSpec(p.rim_diameter, p.rim_height_to_width, p.specific_weight))
+                        RimSpec(p.rim_diameter, p.rim_height_to_width, p.specific_weight,
+                                 "flywheel.rim_diameter_mm"))
     n = k.grid_size
     fl = design_flywheel(spec, k.phase[:n], f.balancing_torque[:n], model.crank_omega, p.gravity,
                          exact=CycleIntegrals(model, k))
