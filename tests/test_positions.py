@@ -181,3 +181,25 @@ def test_reversed_crank_is_a_named_finding(tmp_path):
     # the brief as written (cw) has no such finding
     ok = _run(tmp_path, "linkage_sixbar", lambda d: None)["linkage_verification"]
     assert not [w for w in ok.warnings if w.code == "crank_sense_reversed"]
+
+
+@pytest.mark.parametrize("example, chosen", [("furnace_pusher", [3, 9]), ("die_cutter", [2, 8]),
+                                             ("lockbeam", [3, "5"])])
+def test_every_linkage_machine_lets_the_brief_choose_the_polygon_positions(example, chosen):
+    """The furnace pusher, the die-cutter press and the lock-beam feed take a `sheets` section
+    too: the A1 sheet's polygons are drawn at the positions the brief chooses."""
+    import yaml
+
+    from mechdesign.brief.loader import parse_brief
+    from mechdesign.machines import get_machine, stages_for
+    from mechdesign.pipeline import run_stages
+
+    data = yaml.safe_load((DESIGNS / f"{example}.yaml").read_text(encoding="utf-8"))
+    data.pop("groups", None)
+    data["sheets"] = {"polygon_positions": chosen}
+    b = parse_brief(data)
+    m = get_machine(b.machine)
+    p = m.to_params(b)
+    r, _ = run_stages(stages_for(m, p), {"params": p, "brief": b, "checked": {}})
+    (key,) = [k for k in r if k.endswith("_polygons")]
+    assert list(r[key].positions) == [str(c) for c in chosen]

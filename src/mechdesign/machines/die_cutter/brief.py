@@ -24,7 +24,7 @@ from ...lazy import np
 from pydantic import BeforeValidator, Field, model_validator
 
 from ...brief.cam import CamParams, CamSection, cam_to_si
-from ...brief.common import AnalysisSettings, Problems, ReportMeta, StrictModel, parse_fraction
+from ...brief.common import AnalysisSettings, Problems, ReportMeta, SheetSettings, StrictModel, parse_fraction
 from ...brief.components import IncompleteGearSection
 from ...brief.drive import DriveParams, DriveSection, drive_to_si
 
@@ -274,6 +274,7 @@ class DieCutterBrief(StrictModel):
         "Drive from the motor to the distribution shaft (传动装置), e.g. V-belt and a two-stage "
         "helical reducer"))
     analysis: AnalysisSettings = AnalysisSettings()
+    sheets: SheetSettings = SheetSettings()
 
     @model_validator(mode="after")
     def _consistent(self):

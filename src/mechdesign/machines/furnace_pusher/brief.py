@@ -14,7 +14,7 @@ from typing import Annotated, Literal, Optional, Union
 from ...lazy import np
 from pydantic import Field, model_validator
 
-from ...brief.common import AnalysisSettings, Problems, ReportMeta, StrictModel
+from ...brief.common import AnalysisSettings, Problems, ReportMeta, SheetSettings, StrictModel
 from ...brief.drive import DriveParams, DriveSection, drive_to_si
 
 
@@ -113,6 +113,7 @@ class FurnaceBrief(StrictModel):
     drive: Optional[DriveSection] = Field(None, description=(
         "Drive from the motor to the crank O1A (传动装置), listed from the motor"))
     analysis: AnalysisSettings = AnalysisSettings()
+    sheets: SheetSettings = SheetSettings()
 
 
 

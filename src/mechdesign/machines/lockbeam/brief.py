@@ -27,7 +27,7 @@ from ...lazy import np
 from pydantic import Field, model_validator
 
 from ...brief.cam import CamParams, CamSection, cam_to_si, follower_phases_deg
-from ...brief.common import AnalysisSettings, Problems, ReportMeta, StrictModel
+from ...brief.common import AnalysisSettings, Problems, ReportMeta, SheetSettings, StrictModel
 from ...brief.components import CycleSection, MorphologySection, cycle_to_si, morphology_to_si
 from ...brief.linkage import LinkageSection, linkage_to_model
 
@@ -175,6 +175,7 @@ class LockbeamBrief(StrictModel):
     cycle: CycleSection
     morphology: MorphologySection
     analysis: AnalysisSettings = AnalysisSettings()
+    sheets: SheetSettings = SheetSettings()
 
     @model_validator(mode="after")
     def _consistent(self):
