@@ -188,13 +188,11 @@ def test_reversed_crank_is_a_named_finding(tmp_path):
 def test_every_linkage_machine_lets_the_brief_choose_the_polygon_positions(example, chosen):
     """The furnace pusher, the die-cutter press and the lock-beam feed take a `sheets` section
     too: the A1 sheet's polygons are drawn at the positions the brief chooses."""
-    import yaml
-
-    from mechdesign.brief.loader import parse_brief
+    from mechdesign.brief.loader import parse_brief, read_brief_data
     from mechdesign.machines import get_machine, stages_for
     from mechdesign.pipeline import run_stages
 
-    data = yaml.safe_load((DESIGNS / f"{example}.yaml").read_text(encoding="utf-8"))
+    data = read_brief_data(DESIGNS / f"{example}.yaml")
     data.pop("groups", None)
     data["sheets"] = {"polygon_positions": chosen}
     b = parse_brief(data)
