@@ -95,6 +95,8 @@ _EXACT_WORK = [
     ("drive.shaft_designs.*", _WHY + " (loads, checks and the diameters from them)"),
     ("drive.warnings.*", _WHY + " (the bearing life's figures in the text)"),
     ("peak_shafts.*", _WHY), ("amplification.cycle_work", _WHY),
+    ("*peak_torque", "max |M_b| is now the exact extreme (one-sided limits at the jumps, a "
+     "bounded search between samples), not the largest grid sample"),
     ("verification.energy_ratio", _WHY + " (now 1 to round-off)"),
 ]
 for _machine in ("shaper", "slotter", "furnace_pusher", "die_cutter", "press", "linkage",

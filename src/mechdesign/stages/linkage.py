@@ -153,7 +153,7 @@ class LinkageForces:
     power_residual: np.ndarray = q("W", "Σ power of every load incl. M_b")
     mean_torque: float = q("N·m", "mean M_b over a revolution")
     mean_power: float = q("W", "mean power delivered to the crank")
-    peak_torque: float = q("N·m", "max |M_b|")
+    peak_torque: float = q("N·m", "max |M_b| (exact: one-sided at the jumps, refined between samples)")
     cycle_work: float = q("J", "work of the resistances per revolution (= 2π·mean M_b), each "
                           "constant piece integrated between its exact ends", default=0.0)
 
@@ -437,7 +437,8 @@ def forces(model: LinkageModel, k: LinkageMotion, m: Motion) -> LinkageForces:
     mb = k.sense * fa.driving_torque
     residual = power_residual(model.mechanism, m, bodies, loads, fa.driving_torque, model.gravity)
     n = k.grid_size
-    work = CycleIntegrals(model, k).cycle_work
+    exact = CycleIntegrals(model, k)
+    work = exact.cycle_work
     mean = work / TWO_PI
     return LinkageForces(
         resistance={f"R{i + 1}": (np.conj(np.exp(1j * r.direction)) * ld.force).real
@@ -446,8 +447,7 @@ def forces(model: LinkageModel, k: LinkageMotion, m: Motion) -> LinkageForces:
         couples={name: r.couple for name, r in fa.reactions.items() if r.couple is not None},
         inertia_force=fa.inertia_force, inertia_couple=fa.inertia_couple,
         balancing_torque=mb, power_residual=residual, mean_torque=mean,
-        mean_power=mean * abs(model.crank_omega), peak_torque=float(np.max(np.abs(mb[:n]))),
-        cycle_work=work)
+        mean_power=mean * abs(model.crank_omega), peak_torque=exact.peak(), cycle_work=work)
 
 
 def flywheel(model: LinkageModel, k: LinkageMotion, f: LinkageForces) -> Flywheel | None:
@@ -622,6 +622,28 @@ class CycleIntegrals:
             j = int(np.clip(np.searchsorted(ends, mid, side="right") - 1, 0, len(mags) - 1))
             power = power + mags[j] * np.abs(self._along(r, m)[1])
         return power / abs(self.model.crank_omega)
+
+    def peak(self) -> float:
+        """max |M_b| [N·m] over the cycle, exactly: on every piece its one-sided values at
+        both ends (M_b jumps there) and each interior local maximum refined by a bounded
+        search (Brent) between the grid neighbours of the grid's local maximum."""
+        from ..core.extremes import fminbound
+
+        best = 0.0
+        for i in range(len(self.ends) - 1):
+            a, b = float(self.ends[i]), float(self.ends[i + 1])
+            inner = self.grid[(self.grid > a + _MERGE) & (self.grid < b - _MERGE)]
+            xs = np.concatenate(([a], inner, [b]))
+            ys = np.abs(self.torque(xs, i))
+            best = max(best, float(ys[0]), float(ys[-1]))
+            if len(xs) < 3:
+                continue
+            local = np.nonzero((ys[1:-1] >= ys[:-2]) & (ys[1:-1] >= ys[2:]))[0] + 1
+            for j in local:
+                _, f = fminbound(lambda p, i=i: -abs(float(self.torque(np.array([p]), i)[0])),
+                                 float(xs[j - 1]), float(xs[j + 1]))
+                best = max(best, float(ys[j]), -f)
+        return best
 
     def stationary(self, driving_torque: float) -> np.ndarray:
         """Phases where the energy curve M_d·φ − ∫M_b dφ may be extreme: the roots of
@@ -852,7 +874,7 @@ class LinkageDocument:
     grid: LinkageGrid = q("", "one revolution")
     mean_torque: float = q("N·m", "mean M_b")
     mean_power: float = q("W", "mean power delivered to the crank")
-    peak_torque: float = q("N·m", "max |M_b|")
+    peak_torque: float = q("N·m", "max |M_b| (exact: one-sided at the jumps, refined between samples)")
     flywheel: Flywheel | None = q("", "the flywheel (the one flywheel stage), if any")
     verification: LinkageVerification = q("", "self-checks")
 
