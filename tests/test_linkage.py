@@ -250,3 +250,20 @@ def test_duplicate_group_names_and_every_reference_problem_at_its_field():
     assert "已被 groups[0] 使用" in probs["linkage.groups.1.name"].allowed_zh
     assert probs["linkage.output.point"].value.strip("'") == "Z"
     assert all(p.allowed_zh for p in probs.values())
+
+
+def test_transmission_angle_minimum_is_exact_not_sampled():
+    """Four-bar a = 100, b = 400, c = 300, d = 400 on a 97-point grid (no sample near the
+    extreme): γ_min at the crank along the frame is arccos((b² + c² − (d − a)²)/(2bc)) =
+    arccos(2/3) by the cosine rule — found to 1e-9 by the search between the samples."""
+    import math
+
+    r = run(four_bar(100, 400, 300, 400))
+    assert r["linkage"].quality  # the RRR group's transmission angle
+    (qa,) = r["linkage"].quality
+    assert qa.extreme == pytest.approx(math.acos(2 / 3), abs=1e-9)
+    data = four_bar(100, 400, 300, 400)
+    data["analysis"] = {"grid_points": 97}
+    (coarse,) = run(data)["linkage"].quality
+    assert coarse.extreme == pytest.approx(math.acos(2 / 3), abs=1e-9)
+    assert min(coarse.values[:97]) > coarse.extreme + 1e-6      # the samples miss it

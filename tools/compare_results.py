@@ -99,9 +99,16 @@ _EXACT_WORK = [
      "bounded search between samples), not the largest grid sample"),
     ("verification.energy_ratio", _WHY + " (now 1 to round-off)"),
 ]
+_EXACT_QUALITY = "γ_min / α_max of each group now refined between the samples (Brent), the working stroke's ends included"
+_EXACT_WORK += [("*quality.*.extreme", _EXACT_QUALITY), ("*quality.*.extreme_phase", _EXACT_QUALITY),
+                ("*quality.*.working_extreme", _EXACT_QUALITY),
+                ("*quality.*.working_extreme_phase", _EXACT_QUALITY)]
 for _machine in ("shaper", "slotter", "furnace_pusher", "die_cutter", "press", "linkage",
                  "lockbeam"):
     EXPECTED.setdefault(_machine, []).extend(_EXACT_WORK)
+EXPECTED["furnace_pusher"] += [
+    (f"check.{key}", _EXACT_QUALITY + " (the design's 60° at B is now met exactly: "
+     "γ_work = π/3, α_B = 30°)") for key in ("gamma_min", "gamma_work", "alpha_B_work")]
 
 # Self-check residuals: round-off, not results. Compared only as "still tiny".
 IGNORED = ("*closure_residual", "*stroke_error", "*power_balance_residual", "*power_residual*",

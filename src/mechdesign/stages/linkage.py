@@ -101,7 +101,7 @@ class QualityAngle:
     kind: str = q("", "'transmission' | 'pressure'")
     point: str = q("", "the joint where it is measured")
     values: np.ndarray = q("rad", "one per entry of the phase array")
-    extreme: float = q("rad", "γ_min or α_max over the cycle")
+    extreme: float = q("rad", "γ_min or α_max over the cycle (exact: refined between samples)")
     extreme_phase: float = q("rad")
     working_extreme: float = q("rad", "the same over the working stroke only")
     working_extreme_phase: float = q("rad")
@@ -233,22 +233,41 @@ def _strokes(model: LinkageModel, by_velocity: bool = True):
     return a_max, a_min, s_max, s_min, ref
 
 
-def _quality(model: LinkageModel, m: Motion, phase: np.ndarray, working_span: float, n: int):
+def _quality(model: LinkageModel, m: Motion, phase: np.ndarray, working_span: float, n: int,
+             start: float, sense: float):
     """Each group's own quality angle (:meth:`quality` of the group types): the
-    transmission angle's minimum, the pressure angle's maximum."""
+    transmission angle's minimum, the pressure angle's maximum — exact, not sampled: a
+    bounded search (Brent) between the grid neighbours of the grid's extreme, over the
+    cycle and over the working stroke (whose ends are candidates too)."""
+    from ..core.extremes import fminbound
+
     out = []
     working = phase[:n] <= working_span + 1e-12
+    step = TWO_PI / n
     for g in model.mechanism.groups:
         found = g.quality(m)
         if found is None:
             continue
         kind, point, values = found
-        pick = np.argmin if kind == "transmission" else np.argmax
+        lowest = kind == "transmission"
+        sign = 1.0 if lowest else -1.0
+
+        def at(p: float, g=g) -> float:
+            return float(g.quality(model.mechanism.solve(np.array([start + sense * p])))[2][0])
+
+        def best(lo: float, hi: float, p0: float, v0: float, ends=()) -> tuple[float, float]:
+            x, f = fminbound(lambda p: sign * at(p), lo, hi)
+            cands = [(p0, v0), (x, sign * f)] + [(e, at(e)) for e in ends]
+            return min(cands, key=lambda c: sign * c[1])
+
         grid = values[:n]
-        i = int(pick(grid))
-        wi = np.flatnonzero(working)[int(pick(grid[working]))]
-        out.append(QualityAngle(g.name, kind, point, values, float(grid[i]), float(phase[i]),
-                                float(grid[wi]), float(phase[wi])))
+        i = int(np.argmin(sign * grid))
+        p_all, v_all = best(phase[i] - step, phase[i] + step, float(phase[i]), float(grid[i]))
+        wi = np.flatnonzero(working)[int(np.argmin(sign * grid[working]))]
+        p_w, v_w = best(max(0.0, phase[wi] - step), min(working_span, phase[wi] + step),
+                        float(phase[wi]), float(grid[wi]), ends=(0.0, working_span))
+        out.append(QualityAngle(g.name, kind, point, values, float(v_all),
+                                float(p_all % TWO_PI), float(v_w), float(p_w)))
     return tuple(out)
 
 
@@ -379,7 +398,7 @@ def motion(model: LinkageModel, requests: Requests | None = None) -> tuple[Linka
         link_angle={k_: v_.angle for k_, v_ in m.links.items()},
         link_omega={k_: v_.omega for k_, v_ in m.links.items()},
         link_alpha={k_: v_.alpha for k_, v_ in m.links.items()},
-        quality=_quality(model, m, phase, span, n), grid_size=n, requested=names,
+        quality=_quality(model, m, phase, span, n, start, sense), grid_size=n, requested=names,
         point_vel={p: m.points[p].vel for p in _named_points(requests, m)},
         point_acc={p: m.points[p].acc for p in _named_points(requests, m)})
     return k, m
@@ -825,7 +844,7 @@ class QualityDoc:
     group: str = q("", "the Assur group")
     kind: str = q("", "'transmission' (γ of an RRR group) or 'pressure' (α of a slider)")
     point: str = q("", "the joint where it is measured")
-    extreme: float = q("rad", "γ_min or α_max over the cycle")
+    extreme: float = q("rad", "γ_min or α_max over the cycle (exact: refined between samples)")
     extreme_phase: float = q("rad", "crank phase where it occurs")
     working_extreme: float = q("rad", "the same over the working stroke only")
 
