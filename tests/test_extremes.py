@@ -65,3 +65,17 @@ def test_the_transcribed_brent_methods_agree_with_scipy_to_the_last_bit():
         res = minimize_scalar(g, bounds=(a, b), method="bounded", options={"xatol": 1e-12})
         assert fminbound(g, a, b, 1e-12) == (float(res.x), float(res.fun))
     assert compared > 500
+
+
+def test_refine_extreme_largest_keeps_the_grid_only_when_the_search_is_worse():
+    """sin on a coarse grid whose samples miss its peak at π/2: the search finds 1 (the
+    largest), with keep_grid too; a function whose samples are its true extreme keeps them."""
+    import numpy as np
+
+    from mechdesign.core.extremes import refine_extreme
+
+    phi = np.linspace(0.0, 3.0, 7)            # samples at 0, 0.5, …: none at π/2
+    x, v = refine_extreme(np.sin, phi, np.sin(phi), largest=True, keep_grid=True)
+    assert v == pytest.approx(1.0, abs=1e-12) and x == pytest.approx(np.pi / 2, abs=1e-6)
+    x, v = refine_extreme(lambda t: -np.cos(t), phi, -np.cos(phi), keep_grid=True)
+    assert v == pytest.approx(-1.0, abs=1e-15) and abs(x) < 1e-9

@@ -173,6 +173,6 @@ def refine_extreme(fun: Callable[[float], float], phi: np.ndarray, values: np.nd
     h = float(phi[1] - phi[0])
     k = int(np.argmax(values) if largest else np.argmin(values))
     x, fx = fminbound(lambda x: sign * fun(x), float(phi[k] - h), float(phi[k] + h), xatol=1e-12)
-    if keep_grid and sign * fx > sign * values[k]:
+    if keep_grid and fx > sign * values[k]:      # fx is sign·fun at the search's point
         return float(phi[k]), float(values[k])
     return float(x), float(sign * fx)

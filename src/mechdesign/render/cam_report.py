@@ -331,7 +331,9 @@ def cam_context(c, lang: str, figs: dict[str, str], csv_name: str) -> dict:
                            f(tu[0][i], 3), f(t.pitch[i].real * MM, 3), f(t.pitch[i].imag * MM, 3),
                            f(t.actual[i].real * MM, 3), f(t.actual[i].imag * MM, 3),
                            f(t.pressure_angle[i] * DEG, 2)])
-    alpha_max = float(np.max(c.grid.pressure_angle))
+    # the exact largest pressure angle (each segment's, found by the cam stage), not a sample
+    alpha_max = max((sg.max_pressure_angle for sg in c.segments),
+                    default=float(np.max(c.grid.pressure_angle)))
     return {
         "follower": follower_name, "rotation": rot, "data_rows": data, "prog_rows": prog_rows,
         "joints": "、".join(joints) if zh else ", ".join(joints),

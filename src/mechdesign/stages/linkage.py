@@ -138,6 +138,10 @@ class LinkageMotion:
     point_vel: dict = q("m/s", "named point (analysis.points) → complex velocity",
                         default_factory=dict)
     point_acc: dict = q("m/s²", "named point → complex acceleration", default_factory=dict)
+    speed_peak: float = q("m/s or rad/s", "max |v| of the output over the cycle (exact: a bounded "
+                          "search between the samples)", default=0.0)
+    accel_peak: float = q("m/s² or rad/s²", "max |a| of the output over the cycle (exact)",
+                          default=0.0)
 
 
 @dataclass(frozen=True)
@@ -156,6 +160,8 @@ class LinkageForces:
     peak_torque: float = q("N·m", "max |M_b| (exact: one-sided at the jumps, refined between samples)")
     cycle_work: float = q("J", "work of the resistances per revolution (= 2π·mean M_b), each "
                           "constant piece integrated between its exact ends", default=0.0)
+    torque_max: float = q("N·m", "max M_b (exact, one-sided at the jumps)", default=0.0)
+    torque_min: float = q("N·m", "min M_b (exact, one-sided at the jumps)", default=0.0)
 
 
 @dataclass(frozen=True)
@@ -388,6 +394,7 @@ def motion(model: LinkageModel, requests: Requests | None = None) -> tuple[Linka
     m = model.mechanism.solve(crank_angle)
     raw, v, a = _output_coordinate(model, m, ref)
     w = float(model.output.working)
+    speed_peak, accel_peak = _output_peaks(model, ref, start, sense, grid, v[:n], a[:n])
     k = LinkageMotion(
         positions=pos, phase=phase, crank_angle=crank_angle,
         s=w * (raw - s0), v=w * v, a=w * a,
@@ -400,8 +407,24 @@ def motion(model: LinkageModel, requests: Requests | None = None) -> tuple[Linka
         link_alpha={k_: v_.alpha for k_, v_ in m.links.items()},
         quality=_quality(model, m, phase, span, n, start, sense), grid_size=n, requested=names,
         point_vel={p: m.points[p].vel for p in _named_points(requests, m)},
-        point_acc={p: m.points[p].acc for p in _named_points(requests, m)})
+        point_acc={p: m.points[p].acc for p in _named_points(requests, m)},
+        speed_peak=speed_peak, accel_peak=accel_peak)
     return k, m
+
+
+def _output_peaks(model: LinkageModel, ref, start: float, sense: float, grid: np.ndarray,
+                  v: np.ndarray, a: np.ndarray) -> tuple[float, float]:
+    """max |v| and max |a| of the output over the cycle: Brent's bounded search between the
+    grid neighbours of the samples' largest (the motion is smooth)."""
+    from ..core.extremes import refine_extreme
+
+    def at(p: float, which: int) -> float:
+        out = _output_coordinate(model, model.mechanism.solve(np.array([start + sense * p])), ref)
+        return abs(float(out[which][0]))
+
+    _, vmax = refine_extreme(lambda p: at(p, 1), grid, np.abs(v), largest=True, keep_grid=True)
+    _, amax = refine_extreme(lambda p: at(p, 2), grid, np.abs(a), largest=True, keep_grid=True)
+    return float(vmax), float(amax)
 
 
 def _named_points(requests: Requests | None, m: Motion) -> tuple:
@@ -457,6 +480,7 @@ def forces(model: LinkageModel, k: LinkageMotion, m: Motion) -> LinkageForces:
     residual = power_residual(model.mechanism, m, bodies, loads, fa.driving_torque, model.gravity)
     n = k.grid_size
     exact = CycleIntegrals(model, k)
+    lo, hi = exact.extremes()
     work = exact.cycle_work
     mean = work / TWO_PI
     return LinkageForces(
@@ -466,7 +490,8 @@ def forces(model: LinkageModel, k: LinkageMotion, m: Motion) -> LinkageForces:
         couples={name: r.couple for name, r in fa.reactions.items() if r.couple is not None},
         inertia_force=fa.inertia_force, inertia_couple=fa.inertia_couple,
         balancing_torque=mb, power_residual=residual, mean_torque=mean,
-        mean_power=mean * abs(model.crank_omega), peak_torque=exact.peak(), cycle_work=work)
+        mean_power=mean * abs(model.crank_omega), peak_torque=max(abs(lo), abs(hi)),
+        cycle_work=work, torque_max=hi, torque_min=lo)
 
 
 def flywheel(model: LinkageModel, k: LinkageMotion, f: LinkageForces) -> Flywheel | None:
@@ -642,27 +667,37 @@ class CycleIntegrals:
             power = power + mags[j] * np.abs(self._along(r, m)[1])
         return power / abs(self.model.crank_omega)
 
-    def peak(self) -> float:
-        """max |M_b| [N·m] over the cycle, exactly: on every piece its one-sided values at
-        both ends (M_b jumps there) and each interior local maximum refined by a bounded
-        search (Brent) between the grid neighbours of the grid's local maximum."""
+    def extremes(self) -> tuple[float, float]:
+        """(min M_b, max M_b) [N·m] over the cycle, exactly: on every piece its one-sided
+        values at both ends (M_b jumps there) and each interior local extreme refined by a
+        bounded search (Brent) between the grid neighbours of the grid's local extreme."""
         from ..core.extremes import fminbound
 
-        best = 0.0
+        lo_all, hi_all = np.inf, -np.inf
         for i in range(len(self.ends) - 1):
             a, b = float(self.ends[i]), float(self.ends[i + 1])
             inner = self.grid[(self.grid > a + _MERGE) & (self.grid < b - _MERGE)]
             xs = np.concatenate(([a], inner, [b]))
-            ys = np.abs(self.torque(xs, i))
-            best = max(best, float(ys[0]), float(ys[-1]))
+            ys = self.torque(xs, i)
+            lo_all, hi_all = min(lo_all, float(ys.min())), max(hi_all, float(ys.max()))
             if len(xs) < 3:
                 continue
-            local = np.nonzero((ys[1:-1] >= ys[:-2]) & (ys[1:-1] >= ys[2:]))[0] + 1
-            for j in local:
-                _, f = fminbound(lambda p, i=i: -abs(float(self.torque(np.array([p]), i)[0])),
-                                 float(xs[j - 1]), float(xs[j + 1]))
-                best = max(best, float(ys[j]), -f)
-        return best
+            for sign in (1.0, -1.0):          # minima, then maxima
+                z = sign * ys
+                for j in np.nonzero((z[1:-1] <= z[:-2]) & (z[1:-1] <= z[2:]))[0] + 1:
+                    _, f = fminbound(lambda p, i=i, sign=sign:
+                                     sign * float(self.torque(np.array([p]), i)[0]),
+                                     float(xs[j - 1]), float(xs[j + 1]))
+                    if sign > 0:
+                        lo_all = min(lo_all, f)
+                    else:
+                        hi_all = max(hi_all, -f)
+        return float(lo_all), float(hi_all)
+
+    def peak(self) -> float:
+        """max |M_b| [N·m] over the cycle, exactly (see :meth:`extremes`)."""
+        lo, hi = self.extremes()
+        return max(abs(lo), abs(hi))
 
     def stationary(self, driving_torque: float) -> np.ndarray:
         """Phases where the energy curve M_d·φ − ∫M_b dφ may be extreme: the roots of
