@@ -172,3 +172,22 @@ def write_data(r: dict, folder) -> list:
     from .cam_report import write_cam_csv
 
     return write_cam_csv(r["cam"], folder)
+
+
+def make_figures(r: dict, fig_dir, lang: str) -> dict[str, str]:
+    """The figures of a machine built on the linkage engine with optional cam/gear/drive
+    sections (the slotter, the press): the linkage's figures and the optional ones."""
+    from .linkage_report import make_linkage_figures
+
+    paths = make_linkage_figures(r["model"], r["linkage"], r["linkage_forces"],
+                                 r["linkage_flywheel"], fig_dir, lang)
+    paths.update(optional_figures(r, fig_dir, lang))
+    return paths
+
+
+def animate(r: dict, path, lang: str):
+    """The linkage's animation (format gif)."""
+    from .animation import linkage_gif
+
+    return linkage_gif(r["model"], r["linkage"], path, lang)
+

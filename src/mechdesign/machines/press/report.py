@@ -3,31 +3,19 @@ analytically, formulas with the numbers), plus the shared linkage, flywheel, cam
 drive, verification and sheet sections (strings only; the templates place them)."""
 from __future__ import annotations
 
-from pathlib import Path
 
 import numpy as np
 
 from ...render import guide_bar_report as gb_report
 from ...render.fmt import f, md_meta, md_text
-from ...render.linkage_report import linkage_context, make_linkage_figures, verification_rows
+from ...render.linkage_report import linkage_context, verification_rows
 
 DEG = 180.0 / np.pi
 
 
-def make_figures(r: dict, fig_dir: Path, lang: str) -> dict[str, str]:
-    paths = make_linkage_figures(r["model"], r["linkage"], r["linkage_forces"],
-                                 r["linkage_flywheel"], fig_dir, lang)
-    paths.update(gb_report.optional_figures(r, fig_dir, lang))
-    return paths
-
-
-write_data = gb_report.write_data   # the cam profile as CSV
-
-
-def animate(r: dict, path: Path, lang: str) -> Path:
-    from ...render.animation import linkage_gif
-
-    return linkage_gif(r["model"], r["linkage"], path, lang)
+make_figures = gb_report.make_figures   # the linkage's figures and the optional cam/gear ones
+write_data = gb_report.write_data       # the cam profile as CSV
+animate = gb_report.animate             # the linkage as a GIF
 
 
 def _data_rows(b, p) -> list[list[str]]:
