@@ -107,7 +107,7 @@ def _rows(rows: list[list[str]], zh: bool) -> list[list[str]]:
 
 def stage_designs(d, lang: str) -> list[dict]:
     """Per stage and per shaft: title, text, dimension rows, formulas and check rows."""
-    from .strength_tex import check_formula, check_rows
+    from .strength_tex import check_formulas, check_rows
 
     zh = lang == "zh"
     out = []
@@ -183,7 +183,7 @@ def stage_designs(d, lang: str) -> list[dict]:
                     ["$Z_\\rho$", f(e["Zrho"], 3), "—"], ["$z_{v2}, Y_{Fa2}$", f"{f(e['zv2'], 2)}, {f(e['YFa2'], 3)}", "—"],
                     ["$A$", f(e["area"], 3), "m²"]]
         out.append({"title": title, "text": text, "rows": rows,
-                    "formulas": [check_formula(c) for c in g.checks], "checks": _rows(check_rows(g.checks, lang), zh)})
+                    "formulas": [eq for c in g.checks for eq in check_formulas(c)], "checks": _rows(check_rows(g.checks, lang), zh)})
     for sh in d.shaft_designs:
         title = (f"{_shaft_name(sh.index, len(d.shafts) - 1, zh)}的设计与校核" if zh else
                  f"Design and checks of {_shaft_name(sh.index, len(d.shafts) - 1, zh)}")
@@ -207,7 +207,7 @@ def stage_designs(d, lang: str) -> list[dict]:
                         (f"Bearings {b.designation} (d = {f(b.d * MM, 0)} mm, $C_r$ = {f(b.Cr / 1e3, 1)} kN), equivalent loads "
                          f"$P_A = {f(sh.bearing_loads[0], 1)}$ N, $P_B = {f(sh.bearing_loads[1], 1)}$ N ($f_p$ = 1.2)."))
         out.append({"title": title, "text": text, "rows": [],
-                    "formulas": [check_formula(c) for c in sh.checks], "checks": _rows(check_rows(sh.checks, lang), zh)})
+                    "formulas": [eq for c in sh.checks for eq in check_formulas(c)], "checks": _rows(check_rows(sh.checks, lang), zh)})
     return out
 
 

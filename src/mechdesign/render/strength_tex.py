@@ -166,6 +166,27 @@ def check_formula(check: Check) -> str:
     return render(check)
 
 
+#: A formula longer than this (TeX source characters) is set on two lines: the formula with
+#: its numbers, then the result against the allowable (one line would pass the margin).
+ONE_LINE = 180
+
+
+def check_formulas(check: Check) -> list[str]:
+    """:func:`check_formula` as display lines: one, or — when it is long — the formula with
+    its numbers and, on a second line, ``symbol = value ≤ [symbol] = allowable``."""
+    text = check_formula(check)
+    render = _FORMULAS.get(check.key)
+    if render is None or len(text) <= ONE_LINE:
+        return [text]
+    head, _, _ = text.partition(" = ")
+    allow = text[text.rfind(_relation(check)):]
+    tail = f" = {_value(check)}\\ {_unit(check.unit)} {allow}"
+    if not text.endswith(tail[len(" = "):]) or tail in head:
+        return [text]
+    body = text[: len(text) - len(tail)]
+    return [body, head + tail]
+
+
 def verdict(check: Check, lang: str = "zh") -> str:
     if lang == "zh":
         return "合格" if check.passed else "不合格"
