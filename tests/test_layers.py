@@ -46,6 +46,8 @@ RENDER_MAY_IMPORT = {
     ("mechdesign.core.cam", "TranslatingFollower"): "follower type (isinstance)",
     ("mechdesign.core.cam", "OscillatingFollower"): "follower type (isinstance)",
     ("mechdesign.core.cycle", "CycleDiagram"): "result type (annotations)",
+    ("mechdesign.stages.graphical", "GraphicalDocument"): "result type (isinstance: finds the "
+                                                          "graphical method's results)",
     ("mechdesign.core.cycle", "PhaseRef"): "result type (annotations)",
     ("mechdesign.core.cycle", "Constraint"): "result type (annotations)",
     ("mechdesign.core.gears", "SpurPair"): "result type (annotations)",

@@ -249,15 +249,21 @@ def _requests_document(results: dict):
 def _with_requested_figures(report, results: dict, fig_dir, lang: str) -> dict:
     from .render.requests_report import requests_figures
 
+    from .render.graphical_report import graphical_figures
+
     figures = report.make_figures(results, fig_dir, lang)
-    return {**figures, **requests_figures(results, fig_dir, lang)}
+    return {**figures, **requests_figures(results, fig_dir, lang),
+            **graphical_figures(results, fig_dir, lang)}
 
 
 def _with_requested(context: dict, results: dict, brief, figures: dict, lang: str) -> dict:
-    """A machine's template context plus ``requested`` (the shared requests section)."""
+    """A machine's template context plus ``requested`` (the shared requests section) and
+    ``graphical`` (the graphical method of every linkage, see render/graphical_report)."""
+    from .render.graphical_report import graphical_context
     from .render.requests_report import requests_context
 
     found = requests_context(results, brief, figures, lang)
+    context = {**context, "graphical": graphical_context(results, figures, lang)}
     return context if found is None else {**context, "requested": found}
 
 

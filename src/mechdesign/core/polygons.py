@@ -239,7 +239,18 @@ def linkage_force_polygons(mech, motion, index: int, position: str, bodies, grav
             continue
         moments = {f"MI{link}": float(inertia_couple[link]) for link in g.links
                    if link in inertia_couple}
+        own = reactions
+        group_loads = loads
         if g.driver is not None:
             moments["Mb"] = float(driving_torque)
-        out.append(g.force_polygon(mech.joints, loads, reactions, moments, position))
+            # the balancing force P_b at the crank pin ⊥ the crank (its moment about the
+            # pivot is M_b); the frame reaction then closes the polygon with it (R' = R − P_b)
+            r = complex(motion.points[g.tip].pos[index] - motion.points[g.pivot].pos[index])
+            if abs(r) > 0 and driving_torque:
+                pb = float(driving_torque) / abs(r) * 1j * r / abs(r)
+                group_loads = {**loads, g.link: list(loads.get(g.link, [])) + [("Pb", pb)]}
+                own = dict(reactions)
+                for j in mech.joints[g.name]:
+                    own[j.name] = complex(reactions[j.name]) - pb
+        out.append(g.force_polygon(mech.joints, group_loads, own, moments, position))
     return out

@@ -30,6 +30,7 @@ from .findings import Finding
 from .positions import Positions, textbook_positions, with_requested
 from ..pipeline import Stage
 from .flywheel import Flywheel, FlywheelSpec, design_flywheel
+from .graphical import GraphicalDocument, graphical_stage
 from .polygons import polygon_stage
 
 TWO_PI = 2.0 * np.pi
@@ -861,6 +862,7 @@ def linkage_stages(model_key: str = "model", prefix: str = "linkage") -> list[St
               lambda r: verify(r[model_key], r[prefix], r[f"{prefix}_raw"],
                                r[f"{prefix}_forces"])),
         polygon_stage(model_key, prefix),
+        graphical_stage(model_key, prefix),
     ]
 
 
@@ -931,10 +933,13 @@ class LinkageDocument:
     peak_torque: float = q("N·m", "max |M_b| (exact: one-sided at the jumps, refined between samples)")
     flywheel: Flywheel | None = q("", "the flywheel (the one flywheel stage), if any")
     verification: LinkageVerification = q("", "self-checks")
+    graphical: GraphicalDocument | None = q("", "the graphical method (图解法) at the polygon "
+                                            "positions", default=None)
 
 
 def linkage_document(model: LinkageModel, k: LinkageMotion, f: LinkageForces,
-                     fly: Flywheel | None, v: LinkageVerification) -> LinkageDocument:
+                     fly: Flywheel | None, v: LinkageVerification,
+                     graphical: GraphicalDocument | None = None) -> LinkageDocument:
     """The linkage part of results.json (SI)."""
     n = k.grid_size
     per_position = []
@@ -959,7 +964,7 @@ def linkage_document(model: LinkageModel, k: LinkageMotion, f: LinkageForces,
         positions=tuple(per_position),
         grid=LinkageGrid(k.phase[:n], k.s[:n], k.v[:n], k.a[:n], f.balancing_torque[:n]),
         mean_torque=f.mean_torque, mean_power=f.mean_power, peak_torque=f.peak_torque,
-        flywheel=fly, verification=v)
+        flywheel=fly, verification=v, graphical=graphical)
 
 
 def link_members(mech: Mechanism) -> tuple[dict, list]:

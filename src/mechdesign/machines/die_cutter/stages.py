@@ -801,7 +801,7 @@ def results_document(r: dict) -> DieCutterResults:
                          d.branch, d.mirrored, d.gamma_min, d.top_height, d.bottom_height,
                          d.geometry.top_position, d.geometry.given is not None),
         press=linkage_document(r["press_model"], r["press"], r["press_forces"], None,
-                               r["press_verification"]),
+                               r["press_verification"], r.get("press_graphical")),
         amplification=AmplificationDoc(
             amp.timing, amp.unit_torque[:n], amp.required_torque[:n], amp.peak_required,
             amp.peak_phase, tuple(AmplificationRow(*row) for row in amp.table), amp.cut_work,

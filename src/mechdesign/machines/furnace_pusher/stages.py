@@ -660,6 +660,7 @@ def results_document(r: dict) -> FurnaceResults:
                                                          syn.residuals}),
         seed=syn.seed,
         linkage=linkage_document(r["model"], r["linkage"], r["linkage_forces"],
-                                 r["linkage_flywheel"], r["linkage_verification"]),
+                                 r["linkage_flywheel"], r["linkage_verification"],
+                                 r.get("linkage_graphical")),
         check=r["pusher_check"],
         drive=None if r.get("drive") is None else drive_document(r["drive"]))

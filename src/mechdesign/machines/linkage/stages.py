@@ -87,4 +87,4 @@ def results_document(r: dict) -> LinkageResults:
 
     return LinkageResults(SCHEMA, "linkage", UNITS_NOTE, linkage_document(
         r["params"], r["linkage"], r["linkage_forces"], r["linkage_flywheel"],
-        r["linkage_verification"]))
+        r["linkage_verification"], r.get("linkage_graphical")))

@@ -905,7 +905,7 @@ def results_document(r: dict) -> LockbeamResults:
                 tuple(SeedStartDoc(s[0], s[1], s[2]) for s in seed.check.starts)),
             cycle=BendingCycleDoc(b.shaft_angle, b.wheel_angle, b.wheel_omega, b.wheel_alpha)),
         feed=linkage_document(p.feed, r["feed"], r["feed_forces"], r["feed_flywheel"],
-                              r["feed_verification"]),
+                              r["feed_verification"], r.get("feed_graphical")),
         feed_table=FeedTableDoc(ft.crank_angle, ft.x, ft.v, ft.a, ft.bar_omega, ft.bar_alpha,
                                 ft.rod_omega, ft.rod_alpha),
         cycle=cy.cycle_document(cyc.diagram, cyc.checks, LockbeamCycle,

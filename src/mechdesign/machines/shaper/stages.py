@@ -236,6 +236,7 @@ STAGES = [
     _ENGINE[2],                                              # the one flywheel stage
     Stage(("linkage_verification", "verification"), _ENGINE[3].title, _verify_stage),
     _ENGINE[4],                                              # the polygons of the A1 sheet
+    _ENGINE[5],                                              # the graphical method
 ]
 
 
@@ -299,6 +300,8 @@ class ShaperResults:
     cam: CamDocument | None = q("", "the cam on the crank shaft, when the brief has one")
     gear: GearDocument | None = q("", "the gear pair z1/z2, when the brief gives its module")
     drive: DriveDocument | None = q("", "the drive, when the brief has one")
+    graphical: lk.GraphicalDocument | None = q("", "the graphical method (图解法) at the polygon "
+                                               "positions", default=None)
 
 
 def results_document(r: dict) -> ShaperResults:
@@ -329,4 +332,5 @@ def results_document(r: dict) -> ShaperResults:
         working_stroke_crank_angle=k.working_span, flywheel=fl, verification=v,
         cam=None if r.get("cam") is None else cam_document(r["cam"]),
         gear=None if r.get("gear") is None else gear_document(r["gear"]),
-        drive=None if r.get("drive") is None else drive_document(r["drive"]))
+        drive=None if r.get("drive") is None else drive_document(r["drive"]),
+        graphical=r.get("linkage_graphical"))

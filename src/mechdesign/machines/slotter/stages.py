@@ -122,7 +122,7 @@ def results_document(r: dict) -> SlotterResults:
         schema=SCHEMA, machine="slotter", units=UNITS_NOTE,
         synthesis=guide_bar.synthesis_doc(syn),
         linkage=lk.linkage_document(r["model"], r["linkage"], r["linkage_forces"], fl,
-                                    r["linkage_verification"]),
+                                    r["linkage_verification"], r.get("linkage_graphical")),
         flywheel=fl,
         cam=None if r.get("cam") is None else cam_document(r["cam"]),
         gear=None if r.get("gear") is None else gear_document(r["gear"]),

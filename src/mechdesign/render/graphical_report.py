@@ -1,0 +1,404 @@
+"""The graphical method in the report (图解法): figures and template context from the
+graphical stage's results (:mod:`mechdesign.stages.graphical`), for every linkage that runs
+through the shared linkage stages. ``templates/graphical_section.*.md.j2`` places them.
+
+:func:`graphical_figures` draws, per position, the velocity and acceleration polygons side by
+side and, per group, the free body with its loads beside its force polygon, at the scales
+the construction used; :func:`graphical_context` gives every vector equation with its
+大小/方向 table, the measured lengths and the values read, the moment equations with their
+numbers and the graphical results beside the analytic ones.
+"""
+from __future__ import annotations
+
+import math
+from pathlib import Path
+
+import numpy as np
+
+from . import figures as fig
+from .fmt import f, mpl_text
+
+_T = {
+    "zh": {"vel": "速度多边形", "acc": "加速度多边形", "fbd": "受力图", "force": "力多边形",
+           "guide": "∥导路", "bar": "∥导杆 {}", "rot": "v_r 沿 ω{} 转 90°", "known": "已求",
+           "mag": "大小", "dir": "方向", "pos": "位置", "group": "杆组", "crank": "曲柄",
+           "doc": "{}", "links": "构件"},
+    "en": {"vel": "velocity polygon", "acc": "acceleration polygon", "fbd": "free body",
+           "force": "force polygon", "guide": "∥ guide", "bar": "∥ bar {}",
+           "rot": "v_r turned 90° with ω{}", "known": "known", "mag": "magnitude",
+           "dir": "direction", "pos": "position", "group": "group", "crank": "crank",
+           "doc": "{}", "links": "links"},
+}
+
+
+def documents(results: dict) -> list[tuple[str, object]]:
+    """(prefix, GraphicalDocument) of every linkage in the results, in a stable order."""
+    from ..stages.graphical import GraphicalDocument
+
+    return [(key[: -len("_graphical")], v) for key, v in results.items()
+            if key.endswith("_graphical") and isinstance(v, GraphicalDocument) and v.positions]
+
+
+# ---------------------------------------------------------------- text helpers
+
+def sym(s: str) -> str:
+    """"a^n_CB" → "a^{n}_{CB}", "R23^t" → "F_{R23}^{t}", "FI4" → "F_{I4}", "G4" → "G_{4}"."""
+    s = str(s)
+    prime = ""
+    if s.endswith("'"):
+        s, prime = s[:-1], "'"
+    sup = ""
+    if s.startswith(("R", "FI", "Fr", "G", "Pb", "Mb", "M")) and "_" not in s:
+        if "^" in s:
+            s, sup = s.split("^", 1)
+            sup = f"^{{{sup}}}"
+        if s.startswith("R"):
+            return f"F_{{{s}}}{sup}{prime}"
+        if s.startswith("FI"):
+            return f"F_{{I{s[2:]}}}{sup}"
+        if s.startswith("Fr"):
+            return f"F_{{r{s[2:]}}}" if len(s) > 2 else "F_r"
+        if s.startswith("MI"):
+            return f"M_{{I{s[2:]}}}"
+        if s in ("Pb", "Mb"):
+            return f"{s[0]}_b"
+        if s.startswith("M"):
+            return f"M_{{{s[1:]}}}"
+        return f"{s[0]}_{{{s[1:]}}}"
+    if "_" in s:
+        head, sub = s.split("_", 1)
+        if "^" in head:
+            base, sp = head.split("^", 1)
+            return f"{base}^{{{sp}}}_{{{sub}}}{prime}"
+        return f"{head}_{{{sub}}}{prime}"
+    return s + prime
+
+
+def direction(code: str, lang: str) -> str:
+    t = _T[lang]
+    kind, _, arg = code.partition(":")
+    if kind == "perp":
+        return f"$\\perp {arg}$"
+    if kind == "to":
+        return f"${_split_to(arg)}$"
+    if kind == "guide":
+        return t["guide"]
+    if kind == "bar":
+        return t["bar"].format(arg)
+    if kind == "rot":
+        return t["rot"].format(arg)
+    return t["known"]
+
+
+def _split_to(arg: str) -> str:
+    """"CB" → "C \\to B"; "A4O3" style names: split before the last point name."""
+    import re
+
+    parts = re.findall(r"[A-Z][a-z0-9']*", arg)
+    if len(parts) == 2:
+        return f"{parts[0]} \\to {parts[1]}"
+    return arg
+
+
+def _num(x: float) -> str:
+    """A value read from a drawing: 3 significant digits (no E-notation)."""
+    if x == 0:
+        return "0"
+    d = max(0, 2 - int(math.floor(math.log10(abs(x)))))
+    return f(x, min(d, 4))
+
+
+def _mm(x: float) -> str:
+    return f"{x:.1f}"
+
+
+def _scale(x: float) -> str:
+    return f"{x:g}"
+
+
+# ---------------------------------------------------------------- figures
+
+def _arrow(ax, a: complex, b: complex, color="k", lw=1.2, label=None, ls="-"):
+    if abs(b - a) < 1e-9:
+        return
+    ax.annotate("", xy=(b.real, b.imag), xytext=(a.real, a.imag),
+                arrowprops=dict(arrowstyle="-|>", color=color, lw=lw, ls=ls,
+                                shrinkA=0, shrinkB=0, mutation_scale=9))
+    if label:
+        m = (a + b) / 2
+        n = 1j * (b - a) / abs(b - a)
+        ax.text((m + 0.04 * abs(b - a) * n).real, (m + 0.04 * abs(b - a) * n).imag,
+                f"${label}$", fontsize=7, color=color, ha="center", va="center")
+
+
+_COLORS = {"absolute": "k", "relative": "tab:blue", "normal": "tab:green",
+           "tangential": "tab:red", "sliding": "tab:purple", "coriolis": "tab:orange",
+           "known": "k", "reaction": "tab:red", "total": "tab:blue", "internal": "tab:purple",
+           "normal_f": "tab:green", "tangential_f": "tab:orange", "balancing": "tab:brown"}
+
+
+def _kin_axes(ax, poly, title: str, mu_unit: str, lang: str):
+    seen = set()
+    for eq in poly.equations:
+        for t in eq.left + eq.right:
+            key = (t.tail, t.head)
+            if key in seen or t.tail not in poly.points or t.head not in poly.points:
+                continue
+            seen.add(key)
+            _arrow(ax, poly.points[t.tail], poly.points[t.head], _COLORS.get(t.kind, "k"),
+                   lw=1.4 if t.kind == "absolute" else 1.0)
+    for name, z in poly.points.items():
+        if name.startswith("n") and name[1:2].isdigit():
+            label = name
+        else:
+            label = name
+        ax.plot([z.real], [z.imag], "k.", ms=3)
+        ax.text(z.real, z.imag, f" {mpl_text(label)}", fontsize=7, va="bottom")
+    ax.set_aspect("equal", adjustable="datalim")
+    ax.set_title(f"{title}  μ = {_scale(poly.scale)} {mu_unit}", fontsize=8)
+    ax.tick_params(labelsize=6)
+    ax.set_xlabel("mm", fontsize=6)
+    ax.grid(True, lw=0.3, alpha=0.4)
+
+
+def _kin_figure(path: Path, pos, lang: str) -> None:
+    t = _T[lang]
+    with fig.figure(path, 1, (7.0, 3.6), sharex=False) as axes:
+        import matplotlib.pyplot as plt
+
+        f_ = axes[0].figure
+        f_.clf()
+        a1, a2 = f_.add_subplot(1, 2, 1), f_.add_subplot(1, 2, 2)
+        _kin_axes(a1, pos.velocity, f"{t['pos']} {pos.label}: {t['vel']}", "(m/s)/mm", lang)
+        _kin_axes(a2, pos.acceleration, f"{t['acc']}", "(m/s²)/mm", lang)
+        del plt
+
+
+def _force_figure(path: Path, pos, fg, members: dict, lang: str) -> None:
+    """Left: the group's links at μl with their loads (arrows of a common length, named);
+    right: the force polygon at μF."""
+    t = _T[lang]
+    with fig.figure(path, 1, (7.0, 3.4), sharex=False) as axes:
+        f_ = axes[0].figure
+        f_.clf()
+        a1, a2 = f_.add_subplot(1, 2, 1), f_.add_subplot(1, 2, 2)
+        P = pos.points
+        pts = set()
+        for link in fg.links:
+            chain = members.get(link, ())
+            zs = [P[p] / pos.length_scale for p in chain if p in P]
+            if len(zs) >= 2:
+                a1.plot([z.real for z in zs], [z.imag for z in zs], "-", color="0.3", lw=2.5,
+                        solid_capstyle="round")
+            pts.update(p for p in chain if p in P)
+        for p in pts:
+            z = P[p] / pos.length_scale
+            a1.plot([z.real], [z.imag], "o", mfc="w", mec="k", ms=4)
+            a1.text(z.real, z.imag, f"  {mpl_text(p)}", fontsize=7, va="top")
+        span = max([abs(P[a] - P[b]) for a in pts for b in pts] + [1e-9]) / pos.length_scale
+        L = 0.25 * span
+        for link, loads in fg.loads.items():
+            for ld in loads:
+                if abs(ld.value) == 0:
+                    continue
+                z = ld.at / pos.length_scale
+                u = ld.value / abs(ld.value)
+                _arrow(a1, z, z + L * u, "tab:red" if ld.kind == "reaction" else "tab:blue",
+                       label=sym(ld.name))
+        for name, at in fg.reaction_points.items():
+            value = fg.reactions.get(name, 0j)
+            if abs(value) > 0:
+                z = at / pos.length_scale
+                _arrow(a1, z, z + L * value / abs(value), "tab:red", label=sym(name))
+        a1.set_aspect("equal", adjustable="datalim")
+        a1.set_title(f"{t['fbd']} ({t['links']} {', '.join(fg.links)})  "
+                     f"μl = {_scale(pos.length_scale)} m/mm", fontsize=8)
+        a1.tick_params(labelsize=6)
+        for v in fg.vectors:
+            if v.tail in fg.points and v.head in fg.points:
+                c = _COLORS.get({"normal": "normal_f", "tangential": "tangential_f"}.get(v.kind, v.kind), "k")
+                _arrow(a2, fg.points[v.tail], fg.points[v.head], c,
+                       ls="--" if v.kind in ("total", "internal") else "-", label=sym(v.symbol))
+        for name, z in fg.points.items():
+            a2.plot([z.real], [z.imag], "k.", ms=2)
+        a2.set_aspect("equal", adjustable="datalim")
+        a2.set_title(f"{t['force']}  μF = {_scale(fg.scale)} N/mm", fontsize=8)
+        a2.tick_params(labelsize=6)
+        a2.set_xlabel("mm", fontsize=6)
+        a2.grid(True, lw=0.3, alpha=0.4)
+
+
+def graphical_figures(results: dict, fig_dir: Path, lang: str) -> dict[str, str]:
+    """Every polygon figure of every linkage's graphical method; name → relative path."""
+    from ..stages.linkage import link_members
+
+    paths = {}
+    for prefix, doc in documents(results):
+        model = _model_of(results, prefix)
+        members = link_members(model.mechanism)[0] if model is not None else {}
+        for pos in doc.positions:
+            key = f"{prefix}_graph_{_safe(pos.label)}_kin"
+            _kin_figure(fig_dir / f"{key}.png", pos, lang)
+            paths[key] = f"{fig_dir.name}/{key}.png"
+            for n, fg in enumerate(pos.forces):
+                key = f"{prefix}_graph_{_safe(pos.label)}_f{n}"
+                _force_figure(fig_dir / f"{key}.png", pos, fg, members, lang)
+                paths[key] = f"{fig_dir.name}/{key}.png"
+    return paths
+
+
+def _safe(label: str) -> str:
+    return str(label).replace("'", "p").replace("′", "p")
+
+
+def _model_of(results: dict, prefix: str):
+    from ..stages.polygons import LinkagePolygons
+
+    for v in results.values():
+        if isinstance(v, LinkagePolygons) and v.prefix == prefix:
+            return results.get(v.model_key)
+    return None
+
+
+# ---------------------------------------------------------------- context
+
+def _eq_tex(eq) -> str:
+    left = " + ".join(r"\vec " + sym(t.symbol) for t in eq.left)
+    right = " + ".join(r"\vec " + sym(t.symbol) for t in eq.right)
+    return f"{left} = {right}" if left else right
+
+
+def _table(eq, lang: str, unit: str) -> dict:
+    terms = list(eq.left) + list(eq.right)
+    head = [f"${sym(t.symbol)}$" for t in terms]
+    mag = ["?" if not t.known else ("√" if t.direction == "known" else _num(t.read))
+           for t in terms]
+    dirs = [direction(t.direction, lang) if t.direction else "?" for t in terms]
+    return {"tex": _eq_tex(eq), "head": head, "mag": mag, "dir": dirs,
+            "align": "|".join([":-:"] * (len(terms) + 1))}
+
+
+def _kin(poly, lang: str, unit: str, rate_name: str) -> dict:
+    eqs, measured, seen = [], [], set()
+    for eq in poly.equations:
+        eqs.append(_table(eq, lang, unit))
+        for t in list(eq.left) + list(eq.right):
+            if (t.tail, t.head) in seen:
+                continue
+            seen.add((t.tail, t.head))
+            how = "measured" if not t.known else ("drawn" if t.direction != "known" else "")
+            if not how or (how == "drawn" and t.length == 0):
+                continue
+            measured.append([f"${sym(t.symbol)}$", f"{t.tail}{t.head}", _mm(t.length),
+                             _num(t.read), how])
+    rates = [[f"${rate_name}_{{{link}}}$", _num(v)] for link, v in poly.rates.items()]
+    coriolis = any(t.kind == "coriolis" for eq in poly.equations for t in eq.left + eq.right)
+    return {"mu": _scale(poly.scale), "eqs": eqs, "measured": measured, "rates": rates,
+            "coriolis": coriolis}
+
+
+def _moment_tex(m) -> tuple[str, float, float]:
+    """The known forces' moments "F × h" (h in mm on the drawing) as one sum, their value
+    [N·mm of the drawing] and the couples' sum [N·m]."""
+    terms = []
+    for t in m.terms:
+        if t.arm:
+            terms.append(f"{'+' if t.sign > 0 else '-'} {_num(t.force)} \\times {_mm(t.arm)}")
+    known = " ".join(terms)
+    known = known[2:] if known.startswith("+ ") else ("-" + known[2:] if known else "0")
+    total = sum(t.force * t.arm * t.sign for t in m.terms if t.arm)
+    couples = sum(t.value for t in m.terms if not t.arm)
+    return known, total, couples
+
+
+def _couple(c: float) -> str:
+    return f" {'+' if c >= 0 else '-'} {_num(abs(c))}" if c else ""
+
+
+def _forces(pos, lang: str) -> list[dict]:
+    out = []
+    mu_l = pos.length_scale
+    for n, fg in enumerate(pos.forces):
+        moments = []
+        for m in fg.moments:
+            u = sym(m.unknown)
+            lhs, total, couples = _moment_tex(m)
+            if m.unknown == "Pb":
+                moments.append((f"P_b = \\frac{{M_b}}{{l_{{{m.point}}}}} = \\frac{{{_num(fg.balancing_torque)}}}"
+                                f"{{{_mm(m.arm)} \\times {_scale(mu_l)}}}", f"P_b = {_num(m.result)}"
+                                r"\ \mathrm{N}"))
+                continue
+            where = f"\\Sigma M_{{{m.point}}}" + ("" if m.unknown == "Mb" else f"({m.link})")
+            if m.unknown == "Mb":
+                moments.append((f"{where} = 0:\\ M_b + ({lhs}) \\times {_scale(mu_l)}{_couple(couples)} = 0",
+                                f"M_b = {_num(m.result)}" r"\ \mathrm{N\cdot m}"))
+            elif m.arm:
+                cpl = f"{_couple(couples)} / {_scale(mu_l)}" if couples else ""
+                rest = f"{_num(total)}" + (f"{_couple(couples)} / {_scale(mu_l)}" if couples else "")
+                moments.append((f"{where} = 0:\\ {u} \\times {_mm(m.arm)} + ({lhs}){cpl} = 0",
+                                f"{u} = -\\frac{{{rest}}}{{{_mm(m.arm)}}} = {_num(m.result)}"
+                                r"\ \mathrm{N}"))
+            else:
+                moments.append((f"{where} = 0:\\ {u} + ({lhs}) \\times {_scale(mu_l)}{_couple(couples)} = 0",
+                                f"{u} = {_num(m.result)}" r"\ \mathrm{N\cdot m}"))
+        closing = " + ".join(r"\vec " + sym(v.symbol) for v in fg.vectors
+                             if v.kind not in ("total", "internal")) + " = 0"
+        rows = [[f"${sym(v.symbol)}$", "√" if v.known else "?", _mm(v.length), _num(v.read)]
+                for v in fg.vectors]
+        loads = [[f"${sym(ld.name)}$", link, _num(abs(ld.value))]
+                 for link, lds in fg.loads.items() for ld in lds if abs(ld.value) > 0]
+        out.append({"name": fg.group, "links": ", ".join(fg.links), "crank": fg.balancing_torque
+                    is not None, "mu": _scale(fg.scale), "moments": moments, "rows": rows,
+                    "loads": loads, "sum": closing, "n": n,
+                    "mb": None if fg.balancing_torque is None else _num(fg.balancing_torque),
+                    "pb": None if fg.balancing_force is None else _num(abs(fg.balancing_force))})
+    return out
+
+
+def _compare(pos, lang: str) -> list[list[str]]:
+    rows = []
+    for c in pos.comparison:
+        q = c.quantity
+        name = (f"$\\omega_{{{q[1:]}}}$" if q.startswith("ω") else
+                f"$\\alpha_{{{q[1:]}}}$" if q.startswith("α") else
+                f"$v_{{r{q[3:]}}}$" if q.startswith("v_r") else
+                f"${sym(q)}$")
+        ok = abs(c.graphical - c.analytic) <= c.tolerance
+        mark = ("合格" if ok else "超差") if lang == "zh" else ("PASS" if ok else "beyond")
+        diff = "—" if c.analytic == 0 and c.graphical == 0 else f(100 * c.difference, 1)
+        rows.append([name, c.unit, _num(c.graphical), _num(c.analytic), diff, _num(c.tolerance),
+                     mark])
+    return rows
+
+
+def graphical_context(results: dict, figures: dict, lang: str) -> list[dict]:
+    """The template context: one entry per linkage (most machines have one)."""
+    out = []
+    for prefix, doc in documents(results):
+        positions = []
+        for pos in doc.positions:
+            key = f"{prefix}_graph_{_safe(pos.label)}"
+            forces = _forces(pos, lang)
+            for fc in forces:
+                fc["fig"] = figures.get(f"{key}_f{fc['n']}", "")
+            crank = next((fc for fc in forces if fc["crank"]), None)
+            positions.append({
+                "label": str(pos.label).replace("'", "′"),
+                "angle": f(np.degrees(pos.crank_angle), 1),
+                "mu_l": _scale(pos.length_scale),
+                "vel": _kin(pos.velocity, lang, "m/s", r"\omega"),
+                "acc": _kin(pos.acceleration, lang, "m/s²", r"\alpha"),
+                "fig": figures.get(f"{key}_kin", ""),
+                "forces": forces, "crank": crank,
+                "mb": None if pos.balancing_torque is None else _num(pos.balancing_torque),
+                "compare": _compare(pos, lang),
+                "beyond": sum(1 for c in pos.comparison
+                              if abs(c.graphical - c.analytic) > c.tolerance),
+            })
+        out.append({"prefix": prefix, "step": _mm(doc.step), "positions": positions,
+                     "labels": "、".join(p["label"] for p in positions) if lang == "zh"
+                     else ", ".join(p["label"] for p in positions)})
+    return out
+
+
+__all__ = ["graphical_figures", "graphical_context", "documents", "sym", "direction"]

@@ -1,0 +1,173 @@
+"""The graphical method (图解法, core/graphical.py): the line-intersection construction against
+textbook closed forms, the drawn polygons against the analytic engine within the drawing's
+accuracy, and the balancing torque of the crank's force polygon against the power balance.
+
+References: crank-slider v_C = −rω·sin(φ + β)/cos β with sin β = r·sin φ / l, and the
+four-bar ω3 = ω1·a·sin(φ1 − φ2) / (c·sin(φ3 − φ2)) (ω2 of the coupler with c → b and φ3 ↔ φ2),
+孙桓《机械原理》第 8 版 §3-3 (解析法); the graphical construction §3-2.
+"""
+from __future__ import annotations
+
+import cmath
+import math
+
+import numpy as np
+import pytest
+
+from mechdesign.core import graphical as gr
+from mechdesign.core.kinetostatics import Body, PointLoad, power_residual
+from mechdesign.core.mechanism import RRP, RRR, Crank, Mechanism
+
+
+def test_intersect_meets_both_lines():
+    # y = x through 0 and x = 3: (3, 3); and a line pair written by hand
+    assert gr.intersect(0j, 1 + 1j, 3 + 0j, 1j) == pytest.approx(3 + 3j)
+    p = gr.intersect(1 + 2j, 2 - 1j, -1 + 0j, 1 + 3j)
+    # on the first line: (p − (1+2i)) ∥ (2 − i); on the second: (p + 1) ∥ (1 + 3i)
+    assert gr.cross(p - (1 + 2j), 2 - 1j) == pytest.approx(0, abs=1e-12)
+    assert gr.cross(p + 1, 1 + 3j) == pytest.approx(0, abs=1e-12)
+
+
+def test_nice_scale_and_rounding():
+    assert gr.nice_scale(0.013) == pytest.approx(0.02)
+    assert gr.nice_scale(0.021) == pytest.approx(0.025)
+    assert gr.nice_scale(3.2) == pytest.approx(5.0)
+    assert gr.rounded(12.26) == 12.5 and gr.rounded(12.24) == 12.0
+
+
+def _slider_crank(r=0.1, l=0.35, omega=10.0):
+    m = Mechanism("1", {"A": 0j})
+    m.add(Crank("crank", "2", "A", "B", r, omega))
+    m.add(RRP("RRP", "3", "4", "B", "C", l, 0j, 0.0, +1, "1"))
+    return m
+
+
+@pytest.mark.parametrize("phi_deg", [30.0, 75.0, 140.0, 250.0])
+def test_crank_slider_velocity_against_closed_form(phi_deg, monkeypatch):
+    r, l, w = 0.1, 0.35, 10.0
+    mech = _slider_crank(r, l, w)
+    phi = math.radians(phi_deg)
+    motion = mech.solve(np.array([phi]))
+    pos = {p: complex(v.pos[0]) for p, v in motion.points.items()}
+    beta = math.asin(r * math.sin(phi) / l)
+    v_closed = -r * w * math.sin(phi + beta) / math.cos(beta)
+    omega_rod = -r * w * math.cos(phi) / (l * math.cos(beta))      # dβ/dt, β measured CW
+    # at the drawing's accuracy (0.5 mm at μv = 0.02 (m/s)/mm): within 1 mm of the drawing
+    mu = 0.02
+    d = gr.kinematic_drawing(mech, pos, w, "velocity", mu)
+    v_c = d.read("c")
+    assert abs(v_c.imag) < 1e-12                                   # along the guide
+    assert abs(abs(v_c) - abs(v_closed)) <= 1.0 * mu
+    # the construction itself is exact: with an infinitely fine drawing it is the closed form
+    monkeypatch.setattr(gr, "STEP_MM", 1e-12)
+    d = gr.kinematic_drawing(mech, pos, w, "velocity", mu)
+    assert d.read("c").real == pytest.approx(v_closed, rel=1e-9)
+    assert abs(d.omega["3"]) == pytest.approx(abs(omega_rod), rel=1e-9)
+
+
+@pytest.mark.parametrize("phi_deg", [20.0, 100.0, 200.0, 310.0])
+def test_four_bar_rocker_omega_against_closed_form(phi_deg, monkeypatch):
+    a, b, c, d_ = 0.08, 0.26, 0.18, 0.24
+    w1 = 12.0
+    mech = Mechanism("1", {"A": 0j, "D": d_ + 0j})
+    mech.add(Crank("crank", "2", "A", "B", a, w1))
+    mech.add(RRR("RRR", "3", "4", "B", "D", "C", b, c, +1))
+    phi = math.radians(phi_deg)
+    m = mech.solve(np.array([phi]))
+    pos = {p: complex(v.pos[0]) for p, v in m.points.items()}
+    p2 = cmath.phase(pos["C"] - pos["B"])          # coupler
+    p3 = cmath.phase(pos["C"] - pos["D"])          # rocker
+    w3 = w1 * a * math.sin(phi - p2) / (c * math.sin(p3 - p2))
+    w2 = -w1 * a * math.sin(phi - p3) / (b * math.sin(p2 - p3))
+    mu = gr.nice_scale(abs(w1 * a) / 60.0)
+    draw = gr.kinematic_drawing(mech, pos, w1, "velocity", mu)
+    # drawing accuracy: 1 mm at μv over the rocker's length
+    assert abs(draw.omega["4"] - w3) <= 0.02 * abs(w3) + 1.0 * mu / c
+    monkeypatch.setattr(gr, "STEP_MM", 1e-12)
+    draw = gr.kinematic_drawing(mech, pos, w1, "velocity", mu)
+    assert draw.omega["4"] == pytest.approx(w3, rel=1e-9)
+    assert draw.omega["3"] == pytest.approx(w2, rel=1e-9)
+
+
+def test_shaper_graphical_agrees_with_analytic_within_drawing_accuracy(example_results):
+    """Both polygon positions of the shaper: every ω, α, |v|, |a|, reaction and M_b read
+    from the drawing lies within 2 % + 1 mm (velocities) or 2 mm (accelerations, forces)
+    at the polygon's scale of the engine's value."""
+    r = example_results("shaper")
+    doc = r["linkage_graphical"]
+    assert [p.label for p in doc.positions] == [str(x) for x in r["linkage_polygons"].positions]
+    assert len(doc.positions) == 2
+    for pos in doc.positions:
+        names = {c.quantity for c in pos.comparison}
+        assert {"ω4", "α4", "v_F", "a_F", "Mb", "R23", "R72"} <= names
+        for c in pos.comparison:
+            assert abs(c.graphical - c.analytic) <= c.tolerance, (pos.label, c)
+        # the tolerance is a drawing's, not a blank cheque: a few per cent at most
+        mb = next(c for c in pos.comparison if c.quantity == "Mb")
+        assert mb.tolerance <= 0.08 * abs(mb.analytic)
+
+
+def test_graphical_values_are_measured_not_copied(example_results):
+    """Every length of the drawing is a multiple of 0.5 mm and the values read are
+    length × μ; the values differ from the engine's (a copied value would not)."""
+    pos = example_results("shaper")["linkage_graphical"].positions[0]
+    terms = [t for eq in pos.velocity.equations for t in eq.left + eq.right]
+    assert terms and all(abs(t.length * 2 - round(t.length * 2)) < 1e-9 for t in terms)
+    assert all(t.read == pytest.approx(t.length * pos.velocity.scale) for t in terms)
+    assert any(c.graphical != c.analytic for c in pos.comparison)
+
+
+def test_balancing_torque_of_crank_polygon_against_power_balance(example_results):
+    """M_b from the crank's moment equation (the last step of the graphical force analysis)
+    against the virtual-power balance M_b·ω2 = −Σ P of every load, which never uses a
+    reaction (weights, inertia forces and couples, resistances at the engine's motion)."""
+    r = example_results("shaper")
+    model, k, raw, forces = r["model"], r["linkage"], r["linkage_raw"], r["linkage_forces"]
+    from mechdesign.stages.polygons import entry
+
+    for pos in r["linkage_graphical"].positions:
+        i = entry(k, pos.label)
+        sub = raw.__class__(raw.crank_angle[i:i + 1],
+                            {p: type(v)(*(np.atleast_1d(x[i:i + 1]) for x in
+                                          (v.pos, v.vel, v.acc))) for p, v in raw.points.items()},
+                            {l_: type(v)(*(np.atleast_1d(x[i:i + 1]) for x in
+                                           (v.angle, v.omega, v.alpha))) for l_, v in raw.links.items()},
+                            {})
+        loads = [PointLoad(res.link, res.point,
+                           np.array([forces.resistance[f"R{j + 1}"][i] * np.exp(1j * res.direction)]))
+                 for j, res in enumerate(model.resistances)]
+        bodies = [Body(b.link, b.mass, b.com, b.inertia) for b in model.bodies]
+        p_loads = power_residual(model.mechanism, sub, bodies, loads, np.zeros(1), model.gravity)
+        mb_power = float(-p_loads[0] / model.crank_omega)               # CCW +
+        crank = pos.forces[-1]
+        assert crank.balancing_torque is not None
+        tol = 0.02 * abs(mb_power) + 2 * crank.scale * abs(
+            raw.points["A"].pos[i] - raw.points["O2"].pos[i])
+        assert abs(crank.balancing_torque - mb_power) <= tol
+        # P_b at the crank pin, perpendicular to the crank, carries the same moment
+        l_ = abs(raw.points["A"].pos[i] - raw.points["O2"].pos[i])
+        assert abs(crank.balancing_force) * l_ == pytest.approx(abs(crank.balancing_torque),
+                                                               rel=0.06)
+
+
+@pytest.mark.parametrize("name, model_key, prefix", [
+    ("shaper", "model", "linkage"), ("press", "model", "linkage"),
+    ("slotter", "model", "linkage"), ("furnace_pusher", "model", "linkage"),
+    ("die_cutter", "press_model", "press"), ("linkage_sixbar", "params", "linkage"),
+    ("lockbeam", "feed_model", "feed")])
+def test_exact_drawing_reproduces_the_engine(name, model_key, prefix, example_results,
+                                             monkeypatch):
+    """With an infinitely fine drawing the construction (intersections, moment equations,
+    polygons closed) gives the engine's values to round-off: the differences in the report
+    are the drawing's rounding alone."""
+    from mechdesign.stages.graphical import graphical
+    from mechdesign.stages.polygons import chosen_positions
+
+    r = example_results(name)
+    k = r[prefix]
+    monkeypatch.setattr(gr, "STEP_MM", 1e-12)
+    doc = graphical(r[model_key], k, r[f"{prefix}_raw"], r.get(f"{prefix}_forces"),
+                    chosen_positions(k, r.get("brief")))
+    for pos in doc.positions:
+        for c in pos.comparison:
+            assert c.graphical == pytest.approx(c.analytic, rel=1e-7, abs=1e-7), (pos.label, c)
