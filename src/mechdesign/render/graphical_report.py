@@ -281,6 +281,9 @@ def _table(eq, lang: str, unit: str) -> dict:
 def _kin(poly, lang: str, unit: str, rate_name: str) -> dict:
     eqs, measured, seen = [], [], set()
     for eq in poly.equations:
+        rel = [t for t in eq.left + eq.right if t.kind != "absolute"]
+        if rel and all(t.known and t.length == 0 for t in rel):
+            continue        # a point of a link in translation: the same vector as its origin
         eqs.append(_table(eq, lang, unit))
         for t in list(eq.left) + list(eq.right):
             if (t.tail, t.head) in seen:
@@ -347,7 +350,7 @@ def _forces(pos, lang: str) -> list[dict]:
                 for v in fg.vectors]
         loads = [[f"${sym(ld.name)}$", link, _num(abs(ld.value))]
                  for link, lds in fg.loads.items() for ld in lds if abs(ld.value) > 0]
-        out.append({"name": fg.group, "links": ", ".join(fg.links), "crank": fg.balancing_torque
+        out.append({"name": "–".join(fg.links), "links": ", ".join(fg.links), "crank": fg.balancing_torque
                     is not None, "mu": _scale(fg.scale), "moments": moments, "rows": rows,
                     "loads": loads, "sum": closing, "n": n,
                     "mb": None if fg.balancing_torque is None else _num(fg.balancing_torque),
@@ -365,7 +368,8 @@ def _compare(pos, lang: str) -> list[list[str]]:
                 f"${sym(q)}$")
         ok = abs(c.graphical - c.analytic) <= c.tolerance
         mark = ("合格" if ok else "超差") if lang == "zh" else ("PASS" if ok else "beyond")
-        diff = "—" if c.analytic == 0 and c.graphical == 0 else f(100 * c.difference, 1)
+        # a value smaller than the drawing's resolution has no meaningful relative error
+        diff = "—" if abs(c.analytic) < c.tolerance else f(100 * c.difference, 1)
         rows.append([name, c.unit, _num(c.graphical), _num(c.analytic), diff, _num(c.tolerance),
                      mark])
     return rows
