@@ -55,7 +55,8 @@ def test_run_writes_report_json_and_figures(md_run):
     for name in ("mechanism", "ram_motion", "guide_bar", "balancing_torque", "energy", "reactions"):
         assert (out / "figures" / f"{name}.png").stat().st_size > 10_000
     # Stage progress is shown while it runs.
-    assert "[1/9]" in result.output and "[9/9]" in result.output  # six stages + gear, drive, cam
+    # seven stages (the graphical method the seventh) + gear, drive, cam
+    assert "[1/10]" in result.output and "[10/10]" in result.output
     assert not list(out.glob(".mechdesign-*")), "staging folders must not remain"
 
 
