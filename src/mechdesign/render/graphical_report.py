@@ -183,14 +183,14 @@ def _force_figure(path: Path, pos, fg, members: dict, lang: str) -> None:
         f_.clf()
         a1, a2 = f_.add_subplot(1, 2, 1), f_.add_subplot(1, 2, 2)
         P = pos.points
-        pts = set()
+        pts: dict = {}          # ordered (a set's order would change between processes)
         for link in fg.links:
             chain = members.get(link, ())
             zs = [P[p] / pos.length_scale for p in chain if p in P]
             if len(zs) >= 2:
                 a1.plot([z.real for z in zs], [z.imag for z in zs], "-", color="0.3", lw=2.5,
                         solid_capstyle="round")
-            pts.update(p for p in chain if p in P)
+            pts.update((p, None) for p in chain if p in P)
         for p in pts:
             z = P[p] / pos.length_scale
             a1.plot([z.real], [z.imag], "o", mfc="w", mec="k", ms=4)
