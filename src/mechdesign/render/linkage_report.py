@@ -14,6 +14,7 @@ import numpy as np
 
 from . import figures as fig
 from .fmt import e, f, md_text, mpl_text, tex_name
+from .fmt import verdict as fmt_verdict
 
 DEG = 180.0 / np.pi
 
@@ -88,7 +89,7 @@ def _quality_figure(path, lang, ph, span, k, model):
         fig._phase_axis(ax, span)
         for q in k.quality:
             sym = "γ" if q.kind == "transmission" else "α"
-            ax.plot(ph, q.values[:n] * DEG, lw=1.3, label=f"{sym} {mpl_text(q.group)}")
+            ax.plot(ph, q.values[:n] * DEG, lw=1.3, label=f"{sym} {mpl_text(_group_namer(model, lang)(q.group))}")
         if model.pressure_angle_limit is not None:
             ax.axhline(model.pressure_angle_limit * DEG, color="C3", ls="--", lw=0.9,
                        label=f"[α] = {model.pressure_angle_limit * DEG:.0f}°")
@@ -192,6 +193,7 @@ def _link_rows(model, lang: str) -> list[list[str]]:
 
     zh = lang == "zh"
     m = md_text
+    gn = _group_namer(model, lang)
 
     def ids(*links):
         # The machine's names of its links, where it gives them (e.g. 4 摇杆).
@@ -206,17 +208,17 @@ def _link_rows(model, lang: str) -> list[list[str]]:
                          f"{bar} = {f(g.length * 1e3, 2)} mm"])
         elif isinstance(g, RRR):
             bc, dc = m(f"{g.b}{g.c}"), m(f"{g.d}{g.c}")
-            rows.append([m(g.name), ids(g.link1, g.link2), f"{bc}, {dc}",
+            rows.append([m(gn(g.name)), ids(g.link1, g.link2), f"{bc}, {dc}",
                          f"{bc} = {f(g.l1 * 1e3, 2)} mm, {dc} = {f(g.l2 * 1e3, 2)} mm"])
         elif isinstance(g, RRP):
             bc = m(f"{g.b}{g.c}")
-            rows.append([m(g.name), ids(g.rod, g.slider), bc,
+            rows.append([m(gn(g.name)), ids(g.rod, g.slider), bc,
                          f"{bc} = {f(g.length * 1e3, 2)} mm; "
                          + ("导路过" if zh else "guide through ")
                          + f"({f(g.guide_point.real * 1e3, 1)}, {f(g.guide_point.imag * 1e3, 1)}) mm, "
                          + f"{f(g.guide_angle * DEG, 1)}°"])
         elif isinstance(g, RPR):
-            rows.append([m(g.name), ids(g.slider, g.bar), m(f"{g.pivot}{g.a}"),
+            rows.append([m(gn(g.name)), ids(g.slider, g.bar), m(f"{g.pivot}{g.a}"),
                          ("偏距" if zh else "offset") + f" {f(g.offset * 1e3, 2)} mm"])
         elif isinstance(g, LinkPoint):
             bar = m(f"{g.origin}{g.name}")
@@ -224,6 +226,13 @@ def _link_rows(model, lang: str) -> list[list[str]]:
                          f"{bar} = {f(g.distance * 1e3, 2)} mm, "
                          f"{f(g.offset_angle * DEG, 1)}°"])
     return rows
+
+
+def _group_namer(model, lang: str):
+    """A group's name as an ``lang`` report shows it: the brief's ``name_en`` in English
+    where it gives one (``LinkageModel.group_names_en``), else the name as written."""
+    names = getattr(model, "group_names_en", None) or {}
+    return (lambda name: names.get(name, name)) if lang == "en" else (lambda name: name)
 
 
 def linkage_context(model, k, f_, fly, v, figures: dict, lang: str,
@@ -269,7 +278,7 @@ def linkage_context(model, k, f_, fly, v, figures: dict, lang: str,
             work = f"{f(q.working_extreme * DEG, 2)}° @ φ = {f(q.working_extreme_phase * DEG, 1)}°"
             limit = "—" if model.pressure_angle_limit is None else \
                 f"≤ {f(model.pressure_angle_limit * DEG, 0)}° " + ("(工作行程)" if zh else "(working stroke)")
-        qual_rows.append([md_text(q.group), kind, md_text(q.point), extreme, work, limit])
+        qual_rows.append([md_text(_group_namer(model, lang)(q.group)), kind, md_text(q.point), extreme, work, limit])
     res_rows = []
     for i, r in enumerate(model.resistances):
         window = "—"
@@ -344,7 +353,7 @@ def verification_rows(v, lang: str, k=None) -> list[list[str]]:
     zh = lang == "zh"
 
     def verdict(x, limit):
-        return ("满足" if zh else "ok") if x <= limit else ("不满足" if zh else "fails")
+        return fmt_verdict(x <= limit, lang)
 
     rows = [
         ["封闭方程残差（最大）/m" if zh else "closure residual (max) / m", e(v.closure_residual),

@@ -10,6 +10,7 @@ import numpy as np
 from ...fileio import atomic_open
 from ...render.figures import figure
 from ...render.fmt import e as fe
+from ...render.fmt import verdict
 from ...render.fmt import f, md_meta, md_text, mpl_text
 
 DEG = 180.0 / np.pi
@@ -284,8 +285,8 @@ def _name(label: str, lang: str) -> str:
     return label
 
 
-def _verdict(ok: bool) -> str:
-    return "✓" if ok else "✗"
+def _verdict(ok: bool, lang: str) -> str:
+    return verdict(ok, lang)
 
 
 def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
@@ -427,17 +428,17 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
                 ("仿真 ψ /°", "simulated ψ /°", _deg(s.swing, 10), _deg(p.swing, 10), s.swing - p.swing),
                 ("仿真 γmin /°（参考：闭式解）", "simulated γmin /° (ref.: closed form)",
                  _deg(s.gamma_min, 10), _deg(d.gamma_min, 10), s.gamma_min - d.gamma_min)):
-            vrows.append([f"{name}：{item_zh if zh else item_en}", val, ref, _verdict(abs(err) < tol)])
+            vrows.append([f"{name}：{item_zh if zh else item_en}", val, ref, _verdict(abs(err) < tol, lang)])
         vrows.append([f"{name}：{'封闭矢量方程残差 /m' if zh else 'loop-closure residual /m'}",
-                      fe(s.closure), "0", _verdict(s.closure < 1e-12)])
+                      fe(s.closure), "0", _verdict(s.closure < 1e-12, lang)])
     n0, n1 = ver.optimum_neighbours
     vrows.append(["γmin(t* ∓ 0.001·弧长) − γmin* /°" if zh else "γmin(t* ∓ 0.001·arc) − γmin* /°",
                   f"{fe((n0 - best.gamma_min) * DEG)}, {fe((n1 - best.gamma_min) * DEG)}", "< 0",
-                  _verdict(n0 < best.gamma_min and n1 < best.gamma_min)])
+                  _verdict(n0 < best.gamma_min and n1 < best.gamma_min, lang)])
     vrows.append(["20 万点密集扫描的最大 γmin − γmin* /°" if zh else
                   "largest γmin of a 200 000-point scan − γmin* /°",
                   fe((ver.optimum_scan - best.gamma_min) * DEG), "≤ 0",
-                  _verdict(ver.optimum_scan <= best.gamma_min + 1e-12)])
+                  _verdict(ver.optimum_scan <= best.gamma_min + 1e-12, lang)])
     slider = None
     if r.get("slider") is not None:
         sl, ss = r["slider"], ver.slider
@@ -482,9 +483,9 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
                 ("仿真快行程 αmax /°（参考：闭式解）", "simulated fast-stroke αmax /° (ref.: closed form)",
                  _deg(ss.alpha_fast, 10), _deg(sl.alpha_fast, 10), ss.alpha_fast - sl.alpha_fast)):
             vrows.append([("偏置曲柄滑块：" if zh else "offset slider-crank: ") + (item_zh if zh else item_en),
-                          val, ref, _verdict(abs(err) < tol)])
+                          val, ref, _verdict(abs(err) < tol, lang)])
         vrows.append([("偏置曲柄滑块：封闭矢量方程残差 /m" if zh else "offset slider-crank: loop-closure residual /m"),
-                      fe(ss.closure), "0", _verdict(ss.closure < 1e-12)])
+                      fe(ss.closure), "0", _verdict(ss.closure < 1e-12, lang)])
     findings = []
     for key in ("optimum", "textbook", "slider"):
         v = r.get(key)
@@ -509,7 +510,7 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
                  f"has {f(max(g1, g2), 2)}°): $\\gamma_{{min}}(t)$ has a smooth maximum at the optimum, "
                  "not the kink where the two collinear angles are equal.")
     return {
-        "meta": md_meta(brief.report), "fig": figures, "data_rows": data_rows, "eq": eq,
+        "meta": md_meta(brief.report, lang), "fig": figures, "data_rows": data_rows, "eq": eq,
         "K": f(p.K, 4), "theta": f(th_deg, 4), "psi": _deg(p.swing, 2), "l3": _mm(p.rocker, 2),
         "K_given": p.K_given,
         "opt": {"l1": _mm(best.design.crank), "l2": _mm(best.design.coupler),

@@ -13,6 +13,7 @@ import numpy as np
 
 from ...render import figures as fig
 from ...render.fmt import e, f, md_meta, md_text
+from ...render.fmt import number, verdict
 
 DEG = 180.0 / np.pi
 MM = 1e3
@@ -452,7 +453,7 @@ def _feed(r, b, p, zh: bool) -> dict:
 
 
 def _ok(zh: bool, good: bool) -> str:
-    return ("满足" if zh else "ok") if good else ("不满足" if zh else "fails")
+    return verdict(good, "zh" if zh else "en")
 
 
 def _verify_rows(r, p, zh: bool) -> list[list[str]]:
@@ -562,11 +563,11 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
     drive = drive_context(r["drive"], lang, figures, pw)
     verify = _verify_rows(r, p, zh)
     for row in cycle["verify"] + ig["verify"]:
-        value = float(row[1])
+        value = number(row[1])
         verify.append([row[0], row[1], "0", _ok(zh, abs(value) < 1e-6)])
     gear = r["feed"].gear
     return {
-        "meta": md_meta(brief.report), "fig": figures,
+        "meta": md_meta(brief.report, lang), "fig": figures,
         "rpm": f(p.shaft_rpm, 2), "period": f(60 / p.shaft_rpm, 3), "omega": f(abs(p.crank_omega), 4),
         "sense": ("顺时针" if p.crank_omega < 0 else "逆时针") if zh else
                  ("clockwise" if p.crank_omega < 0 else "counter-clockwise"),

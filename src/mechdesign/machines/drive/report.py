@@ -4,6 +4,7 @@ from __future__ import annotations
 from pathlib import Path
 import numpy as np
 from ...render.fmt import e, f, md_meta, md_text
+from ...render.fmt import verdict
 from ...render.drive_report import _shaft_name, drive_context
 
 
@@ -25,7 +26,7 @@ def make_figures(r: dict, fig_dir: Path, lang: str) -> dict[str, str]:
 
 def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
     p = r["params"]
-    return {"meta": md_meta(brief.report),
+    return {"meta": md_meta(brief.report, lang),
             "drive": drive_context(r["drive"], lang, figures, _load_equation(p)),
             "load_how": p.load.how,
             **verification_context(r["drive"], r.get("drive_verification"), lang)}
@@ -57,7 +58,7 @@ def verification_context(d, v, lang: str) -> dict:
     rows = []
     for k in v.checks:
         name = DRIVE_CHECK_NAMES[k.key][0 if zh else 1]
-        ok = ("满足" if zh else "ok") if k.passed else ("不满足" if zh else "fails")
+        ok = verdict(k.passed, lang)
         if k.key == "speed_error":
             rows.append([name, f"{f(k.detail['signed'] * 100, 3)}%", f"≤ ±{f(k.limit * 100, 1)}%", ok])
         elif k.key == "motor_power":

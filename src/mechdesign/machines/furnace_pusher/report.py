@@ -8,6 +8,7 @@ import numpy as np
 
 from ...render import figures as fig
 from ...render.fmt import e, f, md_meta, md_text
+from ...render.fmt import verdict
 
 DEG = 180.0 / np.pi
 MM = 1e3
@@ -155,7 +156,7 @@ def animate(r: dict, path: Path, lang: str) -> Path:
 # ------------------------------------------------------------------------------ context
 
 def _ok(flag: bool, zh: bool) -> str:
-    return ("满足" if zh else "ok") if flag else ("不满足" if zh else "fails")
+    return verdict(flag, "zh" if zh else "en")
 
 
 def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
@@ -399,7 +400,7 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
     findings = [md_text(w.text(lang)) for key in ("synthesis", "linkage_verification", "pusher_check")
                 for w in (getattr(r[key], "warnings", ()) or ())]
     return {
-        "meta": md_meta(brief.report), "fig": figures, "data_rows": data_rows, "choice_rows": choice_rows,
+        "meta": md_meta(brief.report, lang), "fig": figures, "data_rows": data_rows, "choice_rows": choice_rows,
         "eq": eq, "syn_rows": syn_rows, "res_rows": res_rows, "seed_rows": seed_rows,
         "seed_sim_rows": seed_sim_rows, "side": side_txt, "criterion": crit, "other_side": other,
         "sense": sense, "towards": towards, "linkage": lk, "torque_rows": torque_rows,

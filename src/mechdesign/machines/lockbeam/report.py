@@ -13,6 +13,7 @@ import numpy as np
 
 from ...render import figures as fig
 from ...render.fmt import e, f, md_meta, md_text
+from ...render.fmt import verdict
 
 DEG = 180.0 / np.pi
 MM = 1e3
@@ -45,7 +46,7 @@ def grashof_sentence(a: float, b: float, c: float, d: float, lang: str) -> str:
 
 
 def _ok(x: bool, lang: str) -> str:
-    return ("满足" if x else "不满足") if lang == "zh" else ("ok" if x else "fails")
+    return verdict(x, lang)
 
 
 # --------------------------------------------------------------------------- figures
@@ -611,7 +612,7 @@ def verification_rows(r: dict, lang: str) -> list[list[str]]:
         abs(c.feed_span_cycle - c.feed_span_simulated) <= np.radians(0.5))
     n_ok = sum(1 for ch in c.checks if ch.ok)
     add("运动循环图协调要求", "cycle diagram timing requirements", f"{n_ok}/{len(c.checks)}",
-        "全部满足" if zh else "all met", n_ok == len(c.checks))
+        "全部合格" if zh else "all PASS", n_ok == len(c.checks))
     cf = r["feed_table"].closed
     k = r["feed"]
     if cf is not None:
@@ -650,7 +651,7 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
         "overlap": c.feed_span_cycle > pin_down_span + 1e-9,
     }
     return {
-        "meta": md_meta(brief.report), "fig": figures,
+        "meta": md_meta(brief.report, lang), "fig": figures,
         "data_rows": _data_rows(r, brief, lang), "seed_notes": _seed_notes(r, lang),
         "morph": morphology_context(p.morphology, lang, level=2),
         "cycle": cycle_context(c.diagram, lang, cyc_figs, c.checks, level=2),

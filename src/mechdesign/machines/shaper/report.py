@@ -13,7 +13,7 @@ import numpy as np
 
 from ...render import figures as fig
 from ...render import guide_bar_report as gb_report
-from ...render.fmt import e, f, md_meta
+from ...render.fmt import e, f, in_lang, md_meta
 
 DEG = 180.0 / np.pi
 
@@ -168,10 +168,10 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
     return {
         **gb_report.optional_sections(r, lang, figures),
         **gb_report.task_words(p, syn),
-        "meta": md_meta(brief.report),
+        "meta": md_meta(brief.report, lang),
         "fig": figures,
-        "data_rows": data_rows,
-        "guide_bar": guide_bar,
+        "data_rows": in_lang(data_rows, lang),
+        "guide_bar": {**guide_bar, "rows": in_lang(guide_bar["rows"], lang)},
         "kin_rows": kin_rows,
         "load_rows": load_rows,
         "reaction_rows": reaction_rows,
