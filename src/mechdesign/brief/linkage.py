@@ -445,5 +445,5 @@ def linkage_to_model(s: LinkageSection, analysis: AnalysisSettings, names: dict 
         transmission_angle_min=None if s.transmission_angle_min_deg is None
         else rad(s.transmission_angle_min_deg),
         names=names or {},
-        group_names_en={g.name: g.name_en for g in s.groups
-                        if g.type != "point" and g.name and g.name_en})
+        group_labels={g.name: (g.name, g.name_en) for g in s.groups
+                      if g.type != "point" and g.name and g.name_en})

@@ -305,7 +305,8 @@ def cam_context(c, lang: str, figs: dict[str, str], csv_name: str) -> dict:
                  "smallest base radius for a convex profile (ρ ≥ ρa,min)") if fol.kind == "flat" else
                 ("满足许用压力角的最小基圆半径" if zh else "smallest base radius for the allowed pressure angles"))
         design_rows.append([what
-                            + (f"（e = {f(c.offset * MM, 2)} mm）" if translating and fol.kind != "flat" else ""),
+                            + ((f"（e = {f(c.offset * MM, 2)} mm）" if zh else f" (e = {f(c.offset * MM, 2)} mm)")
+                               if translating and fol.kind != "flat" else ""),
                             f"{f(c.min_base_radius * MM, 2)} mm"])
     if c.best_offset is not None:
         r0b, eb = c.best_offset
@@ -409,15 +410,15 @@ def cam_verification_rows(v, c, lang: str) -> list[list[str]]:
     rr = f(c.grid.roller_radius * MM, 2)
     rows = []
     for k in v.checks:
-        name = CAM_CHECK_NAMES[k.key][0 if zh else 1]
+        name = CAM_CHECK_NAMES[k.key][0 if zh else 1].replace("r_r", "$r_r$")   # plain in warnings
         ok = _verdict(k.passed, lang)
         if k.key == "angle_sum":
-            rows.append([name, f"{f(k.detail['sum'] * DEG, 6)}°", "360°", ok])
+            rows.append([name, f"{f(k.detail['sum'] * DEG, 3)}°", "360°", ok])
         elif k.key == "closure":
             rows.append([name, _sci(k.value * s_scale, s_unit), f"≤ {e(k.limit * s_scale)} {s_unit}", ok])
         elif k.key == "stroke":
-            rows.append([name, f"{f(k.detail['max'] * s_scale, 6)} {s_unit}",
-                         f"{'行程' if zh else 'stroke'} {f(k.reference * s_scale, 6)} {s_unit}", ok])
+            rows.append([name, f"{f(k.detail['max'] * s_scale, 3)} {s_unit}",
+                         f"{'行程' if zh else 'stroke'} {f(k.reference * s_scale, 3)} {s_unit}", ok])
         elif k.key in ("velocity_fd", "acceleration_fd", "curvature_fd"):
             rows.append([name, e(k.value), f"≤ {e(k.limit)}（O(h²)，h = {step}°）" if zh else
                          f"≤ {e(k.limit)} (O(h²), h = {step}°)", ok])
@@ -468,7 +469,7 @@ def envelope_note(c, lang: str, csv_stem: str) -> str:
                          "此处从动件按设计运动")
         text += "；".join(parts) + "。"
         text += (f"廓线坐标表与 `{csv_stem}.csv` 中被切去的点已换成尖边点；完整的实际廓线（含圆弧）另存为 "
-                 f"`{csv_stem}_outline.csv`，图 [@fig:cam-profile] 即按此绘制。")
+                 f"`{csv_stem}_outline.csv`，[@fig:cam-profile] 即按此绘制。")
     else:
         text = ("Where the follower's velocity jumps (rigid impact) the pitch curve has a corner, and the curve offset "
                 "by $r_r$ along the normal is broken there: it is not the envelope of the roller circles. The actual "

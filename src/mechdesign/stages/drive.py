@@ -364,11 +364,24 @@ def _failed(c, where_zh: str, where_en: str) -> Finding:
     from ..core.strength import COURSE_SCALE
 
     v, a = c.value * COURSE_SCALE[c.unit], c.allowable * COURSE_SCALE[c.unit]
+    v, a = _sig4(v), _sig4(a)
     rel = ">" if c.sense == "le" else "<"
     return Finding("strength",
-                   f"{where_zh}：{c.name_zh}不合格（{v:.4g} {rel} {a:.4g} {c.unit}）：加大尺寸或改用更好的材料。",
-                   f"{where_en}: {c.name_en} fails ({v:.4g} {rel} {a:.4g} {c.unit}): "
+                   f"{where_zh}：{c.name_zh}不合格（{v} {rel} {a} {c.unit}）：加大尺寸或改用更好的材料。",
+                   f"{where_en}: {c.name_en} fails ({v} {rel} {a} {c.unit}): "
                    "enlarge it or use a better material.")
+
+
+def _sig4(x: float) -> str:
+    """4 significant digits in fixed-point notation (48000 → '48000', never '4.8e+04'),
+    the report's rule for forces, stresses and lives (render.fmt.sig, without its digit
+    grouping: a finding is also a terminal line)."""
+    from decimal import Decimal
+
+    if x == 0 or x != x:
+        return "0" if x == 0 else "nan"
+    d = Decimal(f"{x:.3e}")
+    return f"{float(d):.{max(3 - d.adjusted(), 0)}f}"
 
 
 # ------------------------------------------------------------------------------------

@@ -36,13 +36,13 @@ _NOTE = {
     "zh": "各项由本次运行按定义重算：各轴转速、功率、转矩逐级由上一轴推出（电动机轴到第一根轴不计轴承损失，"
           "其后每根轴一对滚动轴承），与设计所得的轴表比较；功率平衡检查传到工作机的功率是否正好等于其所需功率；"
           "强度裕度 = 1 − 计算值/许用值（寿命、直径为 1 − 要求值/计算值），各轴取所有校核项目中最小者；"
-          "支反力平衡对两个平面分别计入全部外载荷（轴向力以 F_a·r 的力偶计入垂直面）与支反力，对轴承 B 取矩。",
+          "支反力平衡对两个平面分别计入全部外载荷（轴向力以 $F_a r$ 的力偶计入垂直面）与支反力，对轴承 B 取矩。",
     "en": "Each item is recomputed in this run by its definition: every shaft's speed, power and torque from the shaft "
           "before it (no bearing loss between the motor and the first shaft, one pair of rolling bearings on every "
           "shaft after it) against the designed shaft table; the power balance checks that the power reaching the "
           "machine is exactly what it needs; a strength margin is 1 − value/allowable (for lives and diameters "
           "1 − required/value), the smallest over all checks of a stage or shaft; the statics of each shaft take every "
-          "load (an axial force as the couple F_a·r in the vertical plane) and both reactions, in both planes, with "
+          "load (an axial force as the couple $F_a r$ in the vertical plane) and both reactions, in both planes, with "
           "moments about bearing B.",
 }
 

@@ -116,9 +116,9 @@ def verification_context(v, lang: str) -> dict:
         elif k.key == "disc_alpha":
             rows.append([name, f"{e(k.value * DEG)}°", f"≤ {e(k.limit * DEG)}°", ok])
         elif k.key == "disc_stroke":
-            rows.append([name, f"{f(k.detail['stroke'] * MM, 6)} mm",
-                         (f"解析 h = {f(k.reference * MM, 6)} mm" if zh else
-                          f"closed form h = {f(k.reference * MM, 6)} mm"), ok])
+            rows.append([name, f"{f(k.detail['stroke'] * MM, 3)} mm",
+                         (f"解析 h = {f(k.reference * MM, 3)} mm" if zh else
+                          f"closed form h = {f(k.reference * MM, 3)} mm"), ok])
     return {"verify_rows": rows, "findings": [md_text(w.text(lang)) for w in v.warnings],
             "verify_note": _NOTE[lang]}
 

@@ -7,7 +7,7 @@ from __future__ import annotations
 import numpy as np
 
 from ...render import guide_bar_report as gb_report
-from ...render.fmt import f, md_meta, md_text
+from ...render.fmt import e, f, md_meta, md_text
 from ...render.fmt import in_lang, verdict
 from ...render.linkage_report import linkage_context, verification_rows
 
@@ -124,7 +124,7 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
         "Q": f(p.pressing_force, 0),
         "linkage": lkc, **gb_report.optional_sections(r, lang, figures),
         "verify_rows": verification_rows(v, lang, k)
-        + [["行程误差 / mm" if zh else "stroke error / mm", f((v.stroke - p.stroke) * mm, 6),
+        + [["行程误差 / mm" if zh else "stroke error / mm", e((v.stroke - p.stroke) * mm),
             "0", verdict(abs(v.stroke - p.stroke) <= 1e-9, "zh" if zh else "en")]],
         "findings": findings,
     }

@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ...render.fmt import f, md_meta, md_text
+from ...render.fmt import e, f, md_meta, md_text
 from ...render.fmt import in_lang, verdict
 from ...render import guide_bar_report as gb_report
 from ...render.linkage_report import linkage_context, verification_rows
@@ -41,7 +41,7 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
         "idle_mm": f(p.idle_travel_ratio * H, 1), "cut_to": f((1 - p.idle_travel_ratio) * H, 1),
         "linkage": lkc, **gb_report.optional_sections(r, lang, figures),
         "verify_rows": verification_rows(v, lang, k)
-        + [["行程误差 / mm" if zh else "stroke error / mm", f((v.stroke - p.stroke) * mm, 6),
+        + [["行程误差 / mm" if zh else "stroke error / mm", e((v.stroke - p.stroke) * mm),
             "0", verdict(abs(v.stroke - p.stroke) <= 1e-9, "zh" if zh else "en")]],
         "findings": findings,
     }
