@@ -146,7 +146,7 @@ def test_roller_larger_than_curvature_is_reported_as_undercut(tmp_path):
         d["cam"]["follower"]["roller_radius_mm"] = 48   # the pitch curve's convex ρmin ≈ 47.4 mm
     result = run(edited(tmp_path, "cam_7_3.yaml", big_roller), tmp_path / "u")
     assert result.exit_code == 0
-    assert "warning: 运动失真" in result.output and "滚子半径 r_r = 48.00 mm" in result.output
+    assert "警告：运动失真" in result.output and "滚子半径 r_r = 48.00 mm" in result.output
     md = (tmp_path / "u" / "report.md").read_text(encoding="utf-8")
     assert "运动失真" in md and "FAIL" in md
 

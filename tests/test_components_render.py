@@ -19,6 +19,7 @@ from mechdesign.brief.components import (CycleSection, IncompleteGearSection, Mo
 from mechdesign.core import cycle as cy
 from mechdesign.core.intermittent import intermittent_curves
 from mechdesign.render import components_report as cr
+from mechdesign.render.fmt import number
 from mechdesign.render.report import render_markdown, template_dir
 
 SECTIONS = ("cycle", "morphology", "intermittent")
@@ -93,8 +94,8 @@ def test_cycle_rows_and_checks(tmp_path, figs):
     assert "|  | 近停歇 | 295.0 – 235.0 | 300.0 | 4.917 | 5.000 |" in md
     assert "| 送料滑块 | 送进 | 0.0 – 90.0 | 90.0 | 0.000 | 1.500 |" in md
     # slacks: 170 − 90 − 5 = 75° (1.25 s); 300 − 295 − 10 = −5° (−0.083 s)
-    assert "| 1 | 送料到位后定位销才上升 | 75.00 | 1.250 | 满足 |" in md
-    assert "| 2 | 扳弯架回程在定位销回程开始前至少 10.0° 结束 | -5.00 | -0.083 | **不满足** |" in md
+    assert "| 1 | 送料到位后定位销才上升 | 75.00 | 1.250 | 合格 |" in md
+    assert "| 2 | 扳弯架回程在定位销回程开始前至少 10.0° 结束 | -5.00 | -0.083 | **不合格** |" in md
     assert "> **警告：** 不满足协调要求：扳弯架回程" in md
     assert "## 运动循环图" in md and "### 动作协调校核" in md
     assert "{#tbl:cycle-table}" in md and "{#fig:cycle-linear" in md
@@ -108,9 +109,9 @@ def test_cycle_english_level_and_label(tmp_path, figs):
     assert "### Motion cycle diagram" in md and "#### Timing checks" in md
     assert "| positioning pin | near dwell | 0.0 – 170.0 | 170.0 | 0.000 | 2.833 |" in md
     assert "bending arm return ends at least 10.0° before positioning pin return starts" in md
-    assert "**not met**" in md and "{#fig:cyc2-circular" in md
+    assert "**FAIL**" in md and "{#fig:cyc2-circular" in md
     # verification residuals are computed, and tiny
-    assert all(float(v) < 1e-9 for _, v in ctx["verify"])
+    assert all(number(v) < 1e-9 for _, v in ctx["verify"])
 
 
 def test_cycle_all_met_says_so(tmp_path):
@@ -174,7 +175,7 @@ def test_intermittent_section(tmp_path, figs):
     assert "φ = 300.0° 进入啮合，至 φ = 40.0° 脱离啮合" in md
     assert "{#fig:intermittent-motion" in md
     # the residuals are computed in the run and are rounding-small
-    assert all(abs(float(v)) < 1e-9 for _, v in ctx["verify"])
+    assert all(abs(number(v)) < 1e-9 for _, v in ctx["verify"])
 
 
 def test_intermittent_per_radian_english(tmp_path):

@@ -64,7 +64,7 @@ def test_undercut_pinion_warns_and_unknown_material_names_the_field(tmp_path):
     path.write_text(yaml.safe_dump(brief, allow_unicode=True), encoding="utf-8")
     result = runner.invoke(app, ["run", str(path), "--out", str(tmp_path / "o"), "--format", "md"])
     assert result.exit_code == 0
-    assert "warning: 齿轮 1（z = 12）根切" in result.output
+    assert "警告：齿轮 1（z = 12）根切" in result.output
     brief = yaml.safe_load((ROOT / "designs/shaper.yaml").read_text(encoding="utf-8"))
     brief["gear_pair"]["pinion_material"] = "unobtainium"
     path.write_text(yaml.safe_dump(brief, allow_unicode=True), encoding="utf-8")

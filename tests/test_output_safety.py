@@ -78,7 +78,7 @@ def test_an_interrupted_run_through_the_cli_exits_130(workspace, monkeypatch):
     before = _snapshot(out)
     _render_fails(monkeypatch, KeyboardInterrupt())
     result = runner.invoke(app, ["run", f"briefs/{BRIEF}", "-o", str(out), "-f", "md"])
-    assert result.exit_code == 130 and "interrupted" in result.output
+    assert result.exit_code == 130 and "已中断" in result.output          # a zh brief
     assert "Traceback" not in result.output
     assert _snapshot(out) == before
 

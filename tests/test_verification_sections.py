@@ -231,9 +231,9 @@ def test_each_cam_check_fails_on_a_perturbed_cam(cam73, key):
     assert only(v, key).passed is False
     assert any(w.code == "self_check" and mcam.CAM_CHECK_NAMES[key][1] in w.en for w in v.warnings)
     rows = cam_report.cam_verification_rows(v, c, "zh")
-    name = mcam.CAM_CHECK_NAMES[key][0]
-    assert [r[3] for r in rows if r[0] == name] == ["不满足"]
-    assert "fails" in [r[3] for r in cam_report.cam_verification_rows(v, c, "en")]
+    name = mcam.CAM_CHECK_NAMES[key][0].replace("r_r", "$r_r$")    # typeset in the report
+    assert [r[3] for r in rows if r[0] == name] == ["不合格"]
+    assert "FAIL" in [r[3] for r in cam_report.cam_verification_rows(v, c, "en")]
 
 
 def test_angle_sum_check_fails_on_a_broken_programme(cam73):
@@ -300,7 +300,7 @@ def test_disc_checks_pass(disc):
     assert strokes["(b)"] == pytest.approx(math.sqrt(3375) - math.sqrt(175), abs=1e-6)
     assert strokes["(c)"] == pytest.approx(40.0, abs=1e-6)
     rows = disc_report.verification_context(v, "zh")["verify_rows"]
-    assert len(rows) == 9 and {r[3] for r in rows} == {"满足"}
+    assert len(rows) == 9 and {r[3] for r in rows} == {"合格"}
 
 
 @pytest.mark.parametrize("key,change", [
@@ -316,7 +316,7 @@ def test_each_disc_check_fails_on_a_perturbed_motion(disc, key, change):
     assert [(c.key, c.detail["label"]) for c in failed] == [(key, "(a)")]
     assert [w.code for w in v.warnings] == ["self_check"]
     rows = disc_report.verification_context(v, "en")["verify_rows"]
-    assert sum(r[3] == "fails" for r in rows) == 1
+    assert sum(r[3] == "FAIL" for r in rows) == 1
 
 
 # ---------------------------------------------------------------- 5. drive
@@ -386,7 +386,7 @@ def test_each_drive_check_fails_on_a_perturbed_drive(drive, what):
     computation = {c.key for c in v.checks if c.passed is False and not c.requirement}
     assert bool(v.warnings) == bool(computation)
     rows = drive_report.verification_context(bad, v, "zh")["verify_rows"]
-    assert sum(r[3] == "不满足" for r in rows) == sum(1 for c in v.checks if c.passed is False)
+    assert sum(r[3] == "不合格" for r in rows) == sum(1 for c in v.checks if c.passed is False)
 
 
 # ---------------------------------------------------------------- 6. the reports
@@ -407,7 +407,7 @@ def test_reports_end_with_the_verification_chapter(tmp_path, name, lang):
     table = [line for line in chapter.splitlines() if line.startswith("| ")][1:]
     assert len(table) >= 9
     assert all(line.count(" | ") == 3 for line in table)           # four columns, no stray '|'
-    assert ("不满足" if lang == "zh" else "fails") not in chapter
+    assert ("不合格" if lang == "zh" else "FAIL") not in chapter
     doc = json.loads((out / "results.json").read_text(encoding="utf-8"))
     checks = doc["verification"]["checks"]
     assert checks and all(c["passed"] in (True, None) for c in checks)

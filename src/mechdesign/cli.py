@@ -60,6 +60,52 @@ def _err(msg: str) -> None:
     typer.echo(msg, err=True)
 
 
+# What `run` says on the terminal, in the report's language (the brief's report.language or
+# --lang): progress, warnings, the closing line, an interruption.
+_SAY = {
+    "zh": {"rendering": "      生成 {what}", "warning": "警告：{text}",
+           "done": "完成，用时 {total:.1f} s（计算 {compute:.2f} s）",
+           "interrupted_after": "\n已中断：新报告此前已完整写入 {path}",
+           "interrupted": "\n已中断：未写入任何文件；输出文件夹中原有的报告保持不变",
+           "nothing": "（未写入任何文件；加 --debug 运行可查看出错位置）"},
+    "en": {"rendering": "      rendering {what}", "warning": "warning: {text}",
+           "done": "done in {total:.1f} s (computation {compute:.2f} s)",
+           "interrupted_after": "\ninterrupted after the report was written: {path} holds the new, "
+                                "complete report",
+           "interrupted": "\ninterrupted: nothing was written; an earlier report in the output "
+                          "folder is unchanged",
+           "nothing": "(nothing was written; run with --debug for the traceback)"},
+}
+# the rendering steps' names (render/report.py, render/sheets.py) in Chinese
+_STEPS_ZH = {"figures": "插图", "Markdown": "Markdown 正文", "data files (CSV)": "数据文件（CSV）",
+             "figures and sheets: the last ones": "插图与图纸：最后几张",
+             "figures and sheets: all written": "插图与图纸：全部写出",
+             "PDF: Markdown → typst (pandoc, in the background)": "PDF：正文转为排版格式（后台进行）",
+             "PDF: typst → report.pdf": "PDF：排版生成 report.pdf",
+             "Word (pandoc → docx)": "Word 文档（docx）"}
+
+
+_SHEETS_ZH = {"analysis": "机构分析图", "cam": "凸轮设计图", "gear": "齿轮啮合图",
+              "kinematic": "机构运动简图", "cycle": "运动循环图"}
+
+
+def _step(what: str, lang: str) -> str:
+    """A rendering step's name in ``lang`` ('sheet 1/3: analysis' → '图纸 1/3：analysis')."""
+    if lang != "zh":
+        return what
+    if what.startswith("sheet "):
+        head, _, name = what.partition(": ")
+        return f"图纸 {head[6:]}：{_SHEETS_ZH.get(name, name)}"
+    return _STEPS_ZH.get(what, what)
+
+
+def _title(title: str, lang: str) -> str:
+    """A stage title '导杆机构设计 / linkage synthesis' in ``lang``."""
+    from .render.fmt import in_lang
+
+    return in_lang(title, lang)
+
+
 @contextmanager
 def _terminate_as_interrupt():
     """SIGTERM (a CI job cancelled, `kill`) unwinds like Ctrl-C, so the staging folder is
@@ -126,8 +172,13 @@ def run(
     def say(text: str) -> None:
         _err(f"{time.perf_counter() - started:6.2f} s  {text}" if timings else text)
 
+    from .runner import brief_language
+
+    language = brief_language(brief, lang.value if lang else None)
+    words = _SAY[language]
+
     def stage_progress(i: int, total: int, title: str) -> None:
-        say(f"[{i}/{total}] {title}")
+        say(f"[{i}/{total}] {_title(title, language)}")
 
     from .publish import journal_mark, published_since
 
@@ -136,25 +187,25 @@ def run(
         with _terminate_as_interrupt():
             outcome = run_one(brief, out_dir=out, lang=lang.value if lang else None, formats=fmt,
                               group=group, templates=templates, stage_progress=stage_progress,
-                              render_progress=lambda what: say(f"      rendering {what}"),
-                              on_warning=lambda text: _err(f"warning: {text}"), parallel=True)
+                              render_progress=lambda what: say(
+                                  words["rendering"].format(what=_step(what, language))),
+                              on_warning=lambda text: _err(words["warning"].format(text=text)),
+                              parallel=True)
     except KeyboardInterrupt:
         done = published_since(mark)
         if done:    # the interrupt came after the new report was complete and in place
-            _err(f"\ninterrupted after the report was written: {done[-1]} holds the new, "
-                 "complete report")
+            _err(words["interrupted_after"].format(path=done[-1]))
         else:
-            _err("\ninterrupted: nothing was written; an earlier report in the output folder "
-                 "is unchanged")
+            _err(words["interrupted"])
         raise typer.Exit(130)
     if outcome.status != "ok":
         if debug and outcome.traceback:
             _err(outcome.traceback.rstrip())
         _err(outcome.message)
         if outcome.status == "failed":
-            _err("(nothing was written; run with --debug for the traceback)")
+            _err(words["nothing"])
         raise typer.Exit(outcome.exit_code)
-    say(f"done in {outcome.seconds:.1f} s (computation {outcome.compute_seconds:.2f} s)")
+    say(words["done"].format(total=outcome.seconds, compute=outcome.compute_seconds))
     for path in outcome.files:
         typer.echo(path)
 

@@ -108,6 +108,10 @@ class ReportMeta(StrictModel):
 
     title: str = Field(description="Report title (设计题目)", min_length=1, max_length=200)
     subtitle: str = Field("", max_length=200, description="Optional subtitle")
+    title_en: str = Field("", max_length=200, description=(
+        "The title in an English report, when ``title`` is Chinese (default: ``title``)"))
+    subtitle_en: str = Field("", max_length=200, description=(
+        "The subtitle in an English report (default: ``subtitle``)"))
     student: str = Field(description="Student name (学生姓名)", min_length=1, max_length=100)
     student_id: str = Field("", max_length=40, description="Student number (学号); quote it in YAML")
     class_name: str = Field("", alias="class", max_length=100, description="Class (班级)")

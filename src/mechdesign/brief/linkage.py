@@ -63,6 +63,8 @@ class RRRGroup(StrictModel):
 
     type: Literal["RRR"]
     name: str = Field("", max_length=40, description="Name shown in the report (default: the joint)")
+    name_en: str = Field("", max_length=40, description=(
+        "The name in an English report, when ``name`` is Chinese (default: ``name``)"))
     links: list[LinkId] = Field(min_length=2, max_length=2, description="Link ids [first, second]")
     ends: list[PointName] = Field(min_length=2, max_length=2,
                                   description="Known points the two links are pinned at [B, D]")
@@ -77,6 +79,8 @@ class RRPGroup(StrictModel):
 
     type: Literal["RRP"]
     name: str = Field("", max_length=40, description="Name shown in the report (default: the joint)")
+    name_en: str = Field("", max_length=40, description=(
+        "The name in an English report, when ``name`` is Chinese (default: ``name``)"))
     links: list[LinkId] = Field(min_length=2, max_length=2, description="Link ids [rod, slider]")
     end: PointName = Field(description="Known point the rod is pinned at (B)")
     joint: PointName = Field(description="Slider pin (new point C)")
@@ -93,6 +97,8 @@ class RPRGroup(StrictModel):
 
     type: Literal["RPR"]
     name: str = Field("", max_length=40, description="Name shown in the report (default: the slider point)")
+    name_en: str = Field("", max_length=40, description=(
+        "The name in an English report, when ``name`` is Chinese (default: ``name``)"))
     links: list[LinkId] = Field(min_length=2, max_length=2, description="Link ids [slider, bar]")
     slider_at: PointName = Field(description="Known point the slider is pinned at (A)")
     pivot: PointName = Field(description="Known point the bar turns about")
@@ -438,4 +444,6 @@ def linkage_to_model(s: LinkageSection, analysis: AnalysisSettings, names: dict 
         pressure_angle_limit=None if s.pressure_angle_max_deg is None else rad(s.pressure_angle_max_deg),
         transmission_angle_min=None if s.transmission_angle_min_deg is None
         else rad(s.transmission_angle_min_deg),
-        names=names or {})
+        names=names or {},
+        group_labels={g.name: (g.name, g.name_en) for g in s.groups
+                      if g.type != "point" and g.name and g.name_en})

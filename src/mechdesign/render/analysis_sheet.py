@@ -478,7 +478,10 @@ def _cell_number(x: float, column, decimals: int | None = None) -> str:
     of the column's largest value) written as 0."""
     if abs(x) <= 1e-9 * float(np.max(np.abs(column))):
         return "0"
-    return f"{x:.{decimals}f}" if decimals is not None else f"{x:.4g}"
+    if decimals is None:
+        return format_number(x, 4)
+    text = f"{x:.{decimals}f}"
+    return text.lstrip("-") if float(text) == 0 else text       # never '-0.000'
 
 
 def _table(s: Sheet, model, k, forces, lab: dict, box) -> None:

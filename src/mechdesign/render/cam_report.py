@@ -11,7 +11,7 @@ from ..core.cam import DWELL, RISE, TranslatingFollower
 from ..fileio import atomic_open
 from ..core.motion_laws import LAWS
 from . import cam_figures as cf
-from .fmt import e, f, md_text
+from .fmt import e, f, md_text, verdict
 
 DEG = 180.0 / np.pi
 MM = 1e3
@@ -282,30 +282,31 @@ def cam_context(c, lang: str, figs: dict[str, str], csv_name: str) -> dict:
     for i, chk in enumerate(c.segments):
         if chk.limit is None:
             continue
-        ok = "PASS" if chk.ok else "FAIL"
+        ok = verdict(chk.ok, lang)
         name = f"{_segment_name(c, i, lang)} {i + 1}"
         checks.append([("最大压力角 " if zh else "max pressure angle, ") + name,
                        f"{f(chk.max_pressure_angle * DEG, 2)}° (δ = {f(chk.at * DEG, 1)}°)",
                        f"≤ {f(chk.limit * DEG, 0)}°", ok])
     if fol.kind == "roller":
-        ok = "PASS" if c.rho_actual_min_convex >= p.min_actual_curvature else "FAIL"
-        checks.append([("理论廓线外凸部分最小曲率半径 ρmin" if zh else "smallest convex ρ of the pitch curve"),
+        ok = verdict(c.rho_actual_min_convex >= p.min_actual_curvature, lang)
+        checks.append([("理论廓线外凸部分最小曲率半径 $\\rho_{min}$" if zh else "smallest convex radius $\\rho_{min}$ of the pitch curve"),
                        f"{f(c.rho_pitch_min_convex * MM, 2)} mm",
-                       f"> r_r = {f(fol.roller_radius * MM, 2)} mm", "PASS" if c.rho_pitch_min_convex > fol.roller_radius else "FAIL"])
-        checks.append([("实际廓线最小曲率半径 ρa = ρmin − r_r" if zh else "actual profile ρa = ρmin − r_r"),
+                       f"> $r_r$ = {f(fol.roller_radius * MM, 2)} mm", verdict(c.rho_pitch_min_convex > fol.roller_radius, lang)])
+        checks.append([("实际廓线最小曲率半径 $\\rho_a = \\rho_{min} - r_r$" if zh else "actual profile $\\rho_a = \\rho_{min} - r_r$"),
                        f"{f(c.rho_actual_min_convex * MM, 2)} mm",
                        f"≥ {f(p.min_actual_curvature * MM, 1)} mm", ok])
     if fol.kind == "flat":
         rho_min = c.rho_actual_min if c.rho_actual_min is not None else float(np.min(c.grid.rho_actual))
         checks.append([("廓线最小曲率半径（须处处外凸）" if zh else "smallest radius of curvature (must stay convex)"),
-                       f"{f(rho_min * MM, 2)} mm", "> 0", "PASS" if rho_min > 0 else "FAIL"])
+                       f"{f(rho_min * MM, 2)} mm", "> 0", verdict(rho_min > 0, lang)])
     design_rows = []
     if c.min_base_radius is not None:
         what = (("廓线处处外凸（ρ ≥ ρa,min）的最小基圆半径" if zh else
                  "smallest base radius for a convex profile (ρ ≥ ρa,min)") if fol.kind == "flat" else
                 ("满足许用压力角的最小基圆半径" if zh else "smallest base radius for the allowed pressure angles"))
         design_rows.append([what
-                            + (f"（e = {f(c.offset * MM, 2)} mm）" if translating and fol.kind != "flat" else ""),
+                            + ((f"（e = {f(c.offset * MM, 2)} mm）" if zh else f" (e = {f(c.offset * MM, 2)} mm)")
+                               if translating and fol.kind != "flat" else ""),
                             f"{f(c.min_base_radius * MM, 2)} mm"])
     if c.best_offset is not None:
         r0b, eb = c.best_offset
@@ -340,7 +341,7 @@ def cam_context(c, lang: str, figs: dict[str, str], csv_name: str) -> dict:
         "laws": laws, "geo": geo, "checks": checks, "design_rows": design_rows,
         "table_rows": table_rows, "table_step": f(p.table_step * DEG, 1),
         "table_head": ["δ/°", f"{u.s_sym}/{u.s_unit}", f"{u.syms[0]}/({u.units[0]})",
-                       "x/mm", "y/mm", "x_a/mm", "y_a/mm", "α/°"],
+                       "x/mm", "y/mm", "$x_a$/mm", "$y_a$/mm", "α/°"],
         "fig": figs, "csv": csv_name, "roller": fol.kind == "roller", "flat": fol.kind == "flat",
         "warnings": [md_text(w.text(lang)) for w in c.warnings],
         "alpha_max": f(alpha_max * DEG, 2),
@@ -391,7 +392,7 @@ def write_cam_csv(c, folder: Path, name: str = "cam_profile") -> list[Path]:
 def _verdict(ok, lang: str) -> str:
     if ok is None:
         return "—"
-    return ("满足" if lang == "zh" else "ok") if ok else ("不满足" if lang == "zh" else "fails")
+    return verdict(ok, lang)
 
 
 def _sci(x: float, unit: str = "") -> str:
@@ -409,22 +410,22 @@ def cam_verification_rows(v, c, lang: str) -> list[list[str]]:
     rr = f(c.grid.roller_radius * MM, 2)
     rows = []
     for k in v.checks:
-        name = CAM_CHECK_NAMES[k.key][0 if zh else 1]
+        name = CAM_CHECK_NAMES[k.key][0 if zh else 1].replace("r_r", "$r_r$")   # plain in warnings
         ok = _verdict(k.passed, lang)
         if k.key == "angle_sum":
-            rows.append([name, f"{f(k.detail['sum'] * DEG, 6)}°", "360°", ok])
+            rows.append([name, f"{f(k.detail['sum'] * DEG, 3)}°", "360°", ok])
         elif k.key == "closure":
             rows.append([name, _sci(k.value * s_scale, s_unit), f"≤ {e(k.limit * s_scale)} {s_unit}", ok])
         elif k.key == "stroke":
-            rows.append([name, f"{f(k.detail['max'] * s_scale, 6)} {s_unit}",
-                         f"{'行程' if zh else 'stroke'} {f(k.reference * s_scale, 6)} {s_unit}", ok])
+            rows.append([name, f"{f(k.detail['max'] * s_scale, 3)} {s_unit}",
+                         f"{'行程' if zh else 'stroke'} {f(k.reference * s_scale, 3)} {s_unit}", ok])
         elif k.key in ("velocity_fd", "acceleration_fd", "curvature_fd"):
             rows.append([name, e(k.value), f"≤ {e(k.limit)}（O(h²)，h = {step}°）" if zh else
                          f"≤ {e(k.limit)} (O(h²), h = {step}°)", ok])
         elif k.key == "pressure_angle":
             rows.append([name, f"{e(k.value * DEG)}°", f"≤ {f(k.limit * DEG, 2)}°", ok])
         elif k.key in ("envelope", "interference", "gap", "face_support"):
-            ref = f"≤ {f(k.limit * MM, 3)} mm" + (f"（r_r = {rr} mm）" if zh else f" (r_r = {rr} mm)") \
+            ref = f"≤ {f(k.limit * MM, 3)} mm" + (f"（$r_r$ = {rr} mm）" if zh else f" ($r_r$ = {rr} mm)") \
                 if k.key != "face_support" else f"≤ {f(k.limit * MM, 3)} mm"
             rows.append([name, f"{e(k.value * MM)} mm", ref, ok])
         elif k.key == "offset_curve":
@@ -438,7 +439,7 @@ def cam_verification_rows(v, c, lang: str) -> list[list[str]]:
                 ref = (f"切去等距线的自交环；滚子中心偏离设计位置 {f(k.detail['stand_off'] * MM, 3)} mm" if zh else
                        f"offset loop cut away; roller centre {f(k.detail['stand_off'] * MM, 3)} mm off its path")
             else:
-                res = f"r_r 圆弧，法线转过 {turn}°" if zh else f"r_r arc, normal turns {turn}°"
+                res = f"$r_r$ 圆弧，法线转过 {turn}°" if zh else f"$r_r$ arc, normal turns {turn}°"
                 ref = ("补齐等距线间的缺口；从动件按设计运动" if zh else
                        "fills the gap between the offset branches; motion as designed")
             rows.append([f"{name}（δ = {at}°）" if zh else f"{name} (δ = {at}°)", res, ref, "—"])
@@ -457,31 +458,31 @@ def envelope_note(c, lang: str, csv_stem: str) -> str:
     sep = "、" if zh else ", "
     deg = lambda ks: sep.join(f"{f(k.delta * DEG, 1)}°" for k in ks)  # noqa: E731
     if zh:
-        text = ("从动件速度突变（刚性冲击）处理论廓线有尖点，沿法线量取 r_r 的等距曲线在尖点两侧不连续，"
+        text = ("从动件速度突变（刚性冲击）处理论廓线有尖点，沿法线量取 $r_r$ 的等距曲线在尖点两侧不连续，"
                 "不是滚子圆族的包络。实际廓线按包络线修正：")
         parts = []
         if edges:
-            parts.append(f"δ = {deg(edges)} 处两支等距线相交成小环，环内的点到理论廓线的距离小于 r_r（会被滚子切去），"
+            parts.append(f"δ = {deg(edges)} 处两支等距线相交成小环，环内的点到理论廓线的距离小于 $r_r$（会被滚子切去），"
                          f"实际廓线取到两支的交点为止，成一尖边；此处滚子中心最多离开设计位置 {f(env.stand_off * MM, 3)} mm")
         if arcs:
-            parts.append(f"δ = {deg(arcs)} 处两支等距线之间有缺口，以滚子中心在尖点处的圆弧（半径 r_r = {rr} mm）补齐，"
+            parts.append(f"δ = {deg(arcs)} 处两支等距线之间有缺口，以滚子中心在尖点处的圆弧（半径 $r_r$ = {rr} mm）补齐，"
                          "此处从动件按设计运动")
         text += "；".join(parts) + "。"
         text += (f"廓线坐标表与 `{csv_stem}.csv` 中被切去的点已换成尖边点；完整的实际廓线（含圆弧）另存为 "
-                 f"`{csv_stem}_outline.csv`，图 [@fig:cam-profile] 即按此绘制。")
+                 f"`{csv_stem}_outline.csv`，[@fig:cam-profile] 即按此绘制。")
     else:
         text = ("Where the follower's velocity jumps (rigid impact) the pitch curve has a corner, and the curve offset "
-                "by r_r along the normal is broken there: it is not the envelope of the roller circles. The actual "
+                "by $r_r$ along the normal is broken there: it is not the envelope of the roller circles. The actual "
                 "profile is corrected to that envelope: ")
         parts = []
         if edges:
             parts.append(f"at δ = {deg(edges)} the two offset branches cross in a small loop whose points lie closer "
-                         "than r_r to the pitch curve (the roller would cut them away); the profile stops at the "
+                         "than $r_r$ to the pitch curve (the roller would cut them away); the profile stops at the "
                          f"crossing, a sharp edge, and there the roller centre leaves its designed path by at most "
                          f"{f(env.stand_off * MM, 3)} mm")
         if arcs:
             parts.append(f"at δ = {deg(arcs)} the offset branches leave a gap, filled by the arc of radius "
-                         f"r_r = {rr} mm about the corner; there the follower moves as designed")
+                         f"$r_r$ = {rr} mm about the corner; there the follower moves as designed")
         text += "; ".join(parts) + ". "
         text += (f"The cut-away points in the coordinate table and in `{csv_stem}.csv` are replaced by the edge; "
                  f"the whole actual profile (with the arcs) is written to `{csv_stem}_outline.csv` and drawn in "

@@ -109,7 +109,7 @@ LABELS = {
         "face": "Face width (at least)",
         "head_data": ("Item", "Symbol", "Value", "Requirement"),
         "head_prog": ("Segment", "Cam angle", "Span", "Motion law", "Lift", "Impact"),
-        "ok": "OK", "fail": "FAIL",
+        "ok": "PASS", "fail": "FAIL",
         "right": "right", "left": "left", "fav": "favourable", "unfav": "unfavourable",
         "translating": "translating", "oscillating": "oscillating",
         "note": ("Notes: 1. Pitch curve by inversion; actual profile = envelope of the roller circles.",

@@ -21,7 +21,7 @@ from .fmt import e, f, md_paragraphs, md_text, mpl_text
 
 DEG = 180.0 / np.pi
 MM = 1e3
-_OK = {"zh": ("满足", "不满足"), "en": ("met", "not met")}
+_OK = {"zh": ("合格", "不合格"), "en": ("PASS", "FAIL")}
 
 
 def _heads(level: int) -> tuple[str, str]:

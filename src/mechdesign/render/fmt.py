@@ -1,6 +1,24 @@
 """Formatting shared by every report context (the templates get strings only).
 
-Numbers: :func:`f` and :func:`e`.
+Numbers, as an engineer writes them (one rule for every report, table and sheet):
+
+* lengths in mm and angles in degrees: two decimals (0.01 mm, 0.01°) — :func:`f` with its
+  default ``digits=2``; speeds in rpm two decimals; teeth, gear ratios and other design data
+  as the design gives them;
+* forces, torques, powers, energies, stresses, moments of inertia, lives, cycle counts and
+  other quantities whose size varies over decades: 4 significant digits — :func:`sig`
+  (``12 700 N·m``, ``0.6599 kW``, ``48 000 h``); where a table keeps fixed decimals for
+  such a quantity (forces to 0.1 N), :func:`f` with ``group=True``;
+* dimensionless ratios (K, efficiencies, safety factors): 4 significant digits, or the
+  fixed decimals a table states;
+* residuals, relative errors and other tiny magnitudes in the verification tables: two
+  significant digits times a power of ten — :func:`e` (``2.2 × 10⁻¹⁶``), an exact zero ``0``;
+* never E-notation (``4.8e+04``), never a negative zero (``-0.00`` → ``0.00``); in text
+  and tables an integer part of five or more digits is grouped by threes with a narrow
+  no-break space (``1 000 000``), as GB 3101 / ISO 80000-1 write it; inside a formula the
+  digits stay together (``99480``).
+
+Verdicts: :func:`verdict` — 合格/不合格 in Chinese, PASS/FAIL in English, everywhere.
 
 User text (titles, names, labels from the brief) is escaped once, at the boundary where it
 enters an output format, so that it appears literally and cannot inject markup:
@@ -14,17 +32,94 @@ enters an output format, so that it appears literally and cannot inject markup:
 from __future__ import annotations
 
 import re
+from decimal import Decimal
 
 
-def f(x: float, digits: int = 2) -> str:
-    """Fixed-point number with ``digits`` decimals; a rounded zero never shows as '-0.00'."""
+GROUP = "\u202f"      # narrow no-break space between digit groups (GB 3101, ISO 80000-1)
+
+
+def _group(text: str) -> str:
+    """Digits of the integer part grouped by threes when it has five or more digits."""
+    sign = "-" if text.startswith("-") else ""
+    head, dot, tail = text[len(sign):].partition(".")
+    if len(head) >= 5 and head.isdigit():
+        head = f"{int(head):,}".replace(",", GROUP)
+    return sign + head + dot + tail
+
+
+def f(x: float, digits: int = 2, group: bool = False) -> str:
+    """Fixed-point number with ``digits`` decimals; a rounded zero never shows as '-0.00'.
+    ``group``: an integer part of five or more digits grouped by threes (``12 698.4``) —
+    for text and table cells, not inside a formula (``$…$``), where digits stay together."""
     text = f"{x:.{digits}f}"
-    return text[1:] if text.startswith("-") and float(text) == 0.0 else text
+    if text.startswith("-") and float(text) == 0.0:
+        text = text[1:]
+    return _group(text) if group else text
+
+
+def sig(x: float, n: int = 4) -> str:
+    """``x`` with ``n`` significant digits in fixed-point notation, never E-notation:
+    ``12698.4`` → ``12 700``, ``0.065999`` → ``0.06600``, ``48000`` → ``48 000``; the
+    significant trailing zeros are kept; zero is ``0``; NaN or infinite is ``—``."""
+    if x != x or abs(x) == float("inf"):
+        return "—"
+    if x == 0:
+        return "0"
+    rounded = Decimal(f"{x:.{n - 1}e}")
+    decimals = max(n - 1 - rounded.adjusted(), 0)
+    return f(float(rounded), decimals, group=True)
+
+
+_SUPERSCRIPT = str.maketrans("-0123456789", "\u207b\u2070\u00b9\u00b2\u00b3\u2074\u2075\u2076\u2077\u2078\u2079")
 
 
 def e(x: float) -> str:
-    """Small residuals in scientific notation for the verification tables."""
-    return f"{x:.1e}"
+    """A residual or other tiny magnitude for the verification tables: two significant
+    digits times a power of ten, ``2.2 × 10⁻¹⁶``; an exact zero is ``0``; a magnitude
+    between 0.001 and 10 000 is written plainly (:func:`sig`, 2 digits)."""
+    if x != x:
+        return "—"
+    if x == 0:
+        return "0"
+    if 1e-3 <= abs(x) < 1e4:
+        return sig(x, 2)
+    mant, _, exp = f"{x:.1e}".partition("e")
+    return f"{mant} × 10{str(int(exp)).translate(_SUPERSCRIPT)}"
+
+
+def number(text: str) -> float:
+    """The value of a number written by :func:`f`, :func:`sig` or :func:`e` (for rows
+    that are judged after formatting)."""
+    text = text.replace(GROUP, "").replace("\u2212", "-").strip()
+    mant, times, power = text.partition(" × 10")
+    if not times:
+        return float(mant)
+    digits = power.translate(str.maketrans("\u207b\u2070\u00b9\u00b2\u00b3\u2074\u2075\u2076\u2077\u2078\u2079",
+                                           "-0123456789"))
+    return float(mant) * 10.0 ** int(digits)
+
+
+_CJK = re.compile("[\u3000-\u303f\u3400-\u9fff\uff00-\uffef]")
+
+
+def in_lang(text, lang: str):
+    """The part of a '中文 / English' label for ``lang`` ('导杆 / guide bar' → '导杆' or
+    'guide bar'); other text as it is. Lists (table rows) are mapped cell by cell."""
+    if isinstance(text, (list, tuple)):
+        return [in_lang(t, lang) for t in text]
+    if not isinstance(text, str) or " / " not in text:
+        return text
+    zh, en = text.split(" / ", 1)
+    if not _CJK.search(zh) or _CJK.search(en):
+        return text
+    return zh if lang == "zh" else en
+
+
+def verdict(ok: bool, lang: str) -> str:
+    """The one verdict vocabulary: 合格/不合格 (zh), PASS/FAIL (en)."""
+    if lang == "zh":
+        return "合格" if ok else "不合格"
+    return "PASS" if ok else "FAIL"
 
 
 # -------------------------------------------------------------------------- user text
@@ -125,10 +220,22 @@ def dxf_text(s) -> str:
     return plain_line(s).replace("%", "%%%").replace("^", "^ ")
 
 
-def md_meta(meta) -> dict[str, str]:
+def meta_text(meta, name: str, lang: str) -> str:
+    """``meta.title`` or ``meta.subtitle`` for a report in ``lang``: the ``…_en`` variant
+    in English where the brief gives one, else the text as written."""
+    english = getattr(meta, f"{name}_en", "") if lang == "en" else ""
+    return english or getattr(meta, name, "")
+
+
+def md_meta(meta, lang: str | None = None) -> dict[str, str]:
     """The brief's ``report`` section (:class:`~mechdesign.brief.common.ReportMeta`) for a
-    template (``meta.title``, …): every text field escaped by :func:`md_text`."""
-    fields = ("title", "subtitle", "student", "student_id", "class_name", "teacher", "date")
+    template (``meta.title``, …) in ``lang`` (default: the brief's language): every text
+    field escaped by :func:`md_text`; the title and subtitle in English where the brief
+    gives ``title_en`` / ``subtitle_en`` and the report is in English."""
+    lang = lang or str(getattr(meta, "language", "zh"))
+    fields = ("student", "student_id", "class_name", "teacher", "date")
     out = {name: md_text(getattr(meta, name, "")) for name in fields}
+    out["title"] = md_text(meta_text(meta, "title", lang))
+    out["subtitle"] = md_text(meta_text(meta, "subtitle", lang))
     out["language"] = str(getattr(meta, "language", ""))
     return out

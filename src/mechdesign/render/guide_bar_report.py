@@ -76,9 +76,9 @@ def task_words(p, syn) -> dict:
     return {
         "driven_zh": "由齿轮 z2 带动，" if gear else "",
         "driven_en": ", driven by gear z2," if gear else "",
-        "guide_zh": ("导路位置 L_O3M 由任务书给出。" if syn.guide_given else
+        "guide_zh": ("导路位置 $L_{O_3M}$ 由任务书给出。" if syn.guide_given else
                      "刨头导路通过导杆端点 B 所画圆弧弦高的中点。"),
-        "guide_en": ("the ram guide's distance L_O3M is given." if syn.guide_given else
+        "guide_en": ("the ram guide's distance $L_{O_3M}$ is given." if syn.guide_given else
                      "the ram guide passes through the mid-point of the sagitta of the arc "
                      "described by the bar's end B."),
     }

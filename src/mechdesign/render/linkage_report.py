@@ -14,6 +14,7 @@ import numpy as np
 
 from . import figures as fig
 from .fmt import e, f, md_text, mpl_text, tex_name
+from .fmt import verdict as fmt_verdict
 
 DEG = 180.0 / np.pi
 
@@ -88,7 +89,7 @@ def _quality_figure(path, lang, ph, span, k, model):
         fig._phase_axis(ax, span)
         for q in k.quality:
             sym = "γ" if q.kind == "transmission" else "α"
-            ax.plot(ph, q.values[:n] * DEG, lw=1.3, label=f"{sym} {mpl_text(q.group)}")
+            ax.plot(ph, q.values[:n] * DEG, lw=1.3, label=f"{sym} {mpl_text(_group_namer(model, lang)(q.group))}")
         if model.pressure_angle_limit is not None:
             ax.axhline(model.pressure_angle_limit * DEG, color="C3", ls="--", lw=0.9,
                        label=f"[α] = {model.pressure_angle_limit * DEG:.0f}°")
@@ -192,6 +193,7 @@ def _link_rows(model, lang: str) -> list[list[str]]:
 
     zh = lang == "zh"
     m = md_text
+    gn = _group_namer(model, lang)
 
     def ids(*links):
         # The machine's names of its links, where it gives them (e.g. 4 摇杆).
@@ -206,17 +208,17 @@ def _link_rows(model, lang: str) -> list[list[str]]:
                          f"{bar} = {f(g.length * 1e3, 2)} mm"])
         elif isinstance(g, RRR):
             bc, dc = m(f"{g.b}{g.c}"), m(f"{g.d}{g.c}")
-            rows.append([m(g.name), ids(g.link1, g.link2), f"{bc}, {dc}",
+            rows.append([m(gn(g.name)), ids(g.link1, g.link2), f"{bc}, {dc}",
                          f"{bc} = {f(g.l1 * 1e3, 2)} mm, {dc} = {f(g.l2 * 1e3, 2)} mm"])
         elif isinstance(g, RRP):
             bc = m(f"{g.b}{g.c}")
-            rows.append([m(g.name), ids(g.rod, g.slider), bc,
+            rows.append([m(gn(g.name)), ids(g.rod, g.slider), bc,
                          f"{bc} = {f(g.length * 1e3, 2)} mm; "
                          + ("导路过" if zh else "guide through ")
                          + f"({f(g.guide_point.real * 1e3, 1)}, {f(g.guide_point.imag * 1e3, 1)}) mm, "
                          + f"{f(g.guide_angle * DEG, 1)}°"])
         elif isinstance(g, RPR):
-            rows.append([m(g.name), ids(g.slider, g.bar), m(f"{g.pivot}{g.a}"),
+            rows.append([m(gn(g.name)), ids(g.slider, g.bar), m(f"{g.pivot}{g.a}"),
                          ("偏距" if zh else "offset") + f" {f(g.offset * 1e3, 2)} mm"])
         elif isinstance(g, LinkPoint):
             bar = m(f"{g.origin}{g.name}")
@@ -224,6 +226,15 @@ def _link_rows(model, lang: str) -> list[list[str]]:
                          f"{bar} = {f(g.distance * 1e3, 2)} mm, "
                          f"{f(g.offset_angle * DEG, 1)}°"])
     return rows
+
+
+def _group_namer(model, lang: str):
+    """A group's name as an ``lang`` report shows it: from ``LinkageModel.group_labels``
+    (the machine's names, or the brief's ``name`` and ``name_en``) where it has one, else
+    the name as written."""
+    labels = getattr(model, "group_labels", None) or {}
+    i = 0 if lang == "zh" else 1
+    return lambda name: labels[name][i] if name in labels else name
 
 
 def linkage_context(model, k, f_, fly, v, figures: dict, lang: str,
@@ -246,8 +257,8 @@ def linkage_context(model, k, f_, fly, v, figures: dict, lang: str,
         kin_rows.append([label, f(k.phase[j] * DEG, 2), f((k.crank_angle[j] * DEG) % 360, 2),
                          f(k.s[j] * scale, 3), f(k.v[j], 4), f(k.a[j], 4)]
                         + [f(q.values[j] * DEG, 2) for q in k.quality])
-        force_rows.append([label] + [f(abs(f_.reactions[nm][j]), 1) for nm in reaction_names]
-                          + [f(f_.balancing_torque[j], 3)])
+        force_rows.append([label] + [f(abs(f_.reactions[nm][j]), 1, group=True) for nm in reaction_names]
+                          + [f(f_.balancing_torque[j], 3, group=True)])
         point_rows.append([label] + [f"({f(k.points[p][j].real * 1e3, 1)}, "
                                      f"{f(k.points[p][j].imag * 1e3, 1)})" for p in point_names])
     link_speed_rows = []
@@ -255,7 +266,7 @@ def linkage_context(model, k, f_, fly, v, figures: dict, lang: str,
         j = n + i
         link_speed_rows.append([label] + [f"{f(k.link_omega[l_][j], 3)} / {f(k.link_alpha[l_][j], 2)}"
                                           for l_ in k.link_omega])
-    qual_rows = []
+    qual_rows, gname = [], _group_namer(model, lang)
     for q in k.quality:
         kind = ("传动角 γ" if zh else "transmission angle γ") if q.kind == "transmission" \
             else ("压力角 α" if zh else "pressure angle α")
@@ -269,15 +280,15 @@ def linkage_context(model, k, f_, fly, v, figures: dict, lang: str,
             work = f"{f(q.working_extreme * DEG, 2)}° @ φ = {f(q.working_extreme_phase * DEG, 1)}°"
             limit = "—" if model.pressure_angle_limit is None else \
                 f"≤ {f(model.pressure_angle_limit * DEG, 0)}° " + ("(工作行程)" if zh else "(working stroke)")
-        qual_rows.append([md_text(q.group), kind, md_text(q.point), extreme, work, limit])
+        qual_rows.append([md_text(gname(q.group)), kind, md_text(q.point), extreme, work, limit])
     res_rows = []
     for i, r in enumerate(model.resistances):
         window = "—"
         if r.active is not None:
             window = f"{f(r.active[0] * scale, 1)} – {f(r.active[1] * scale, 1)} {units[0]}"
         res_rows.append([f"R{i + 1}", md_text(r.point), md_text(r.link), f(r.direction * DEG, 1),
-                         f(r.working, 1),
-                         f(r.returning, 1), window])
+                         f(r.working, 1, group=True),
+                         f(r.returning, 1, group=True), window])
     mass_rows = [[md_text(b.link), md_text(b.com), f(b.mass, 2), f(b.inertia, 4)]
                  for b in model.bodies]
     omega = abs(model.crank_omega)
@@ -344,11 +355,11 @@ def verification_rows(v, lang: str, k=None) -> list[list[str]]:
     zh = lang == "zh"
 
     def verdict(x, limit):
-        return ("满足" if zh else "ok") if x <= limit else ("不满足" if zh else "fails")
+        return fmt_verdict(x <= limit, lang)
 
     rows = [
         ["封闭方程残差（最大）/m" if zh else "closure residual (max) / m", e(v.closure_residual),
-         "≤ 1e-9", verdict(v.closure_residual, 1e-9)],
+         "≤ 10⁻⁹", verdict(v.closure_residual, 1e-9)],
         ["速度与位移中心差分之差（相对）" if zh else "velocity vs central difference (relative)",
          e(v.velocity_fd_error), f"O(h²), h = {f(v.fd_step * DEG, 3)}°",
          verdict(v.velocity_fd_error, 1e-3)],
@@ -356,15 +367,15 @@ def verification_rows(v, lang: str, k=None) -> list[list[str]]:
          e(v.acceleration_fd_error), "O(h²)", verdict(v.acceleration_fd_error, 1e-3)],
         [r"功率平衡残差 $\Sigma P / \max\lvert M_b\,\omega\rvert$" if zh
          else r"power balance $\Sigma P / \max\lvert M_b\,\omega\rvert$",
-         e(v.power_balance_residual), "≤ 1e-9", verdict(v.power_balance_residual, 1e-9)],
+         e(v.power_balance_residual), "≤ 10⁻⁹", verdict(v.power_balance_residual, 1e-9)],
     ]
     if k is not None:
         scale, units = _units(k)
         rows.append(["位置搜索所得行程 / " + units[0] if zh else "stroke by position search / " + units[0],
-                     f(v.stroke * scale, 6), f(k.stroke * scale, 6) + (" (速度零点)" if zh else " (velocity zeros)"),
+                     f(v.stroke * scale, 3), f(k.stroke * scale, 3) + (" (速度零点)" if zh else " (velocity zeros)"),
                      verdict(abs(v.stroke - k.stroke) / max(k.stroke, 1e-12), 1e-6)])
-        rows.append(["位置搜索所得 K" if zh else "K by position search", f(v.time_ratio, 6),
-                     f(k.time_ratio, 6), verdict(abs(v.time_ratio - k.time_ratio), 1e-6)])
+        rows.append(["位置搜索所得 K" if zh else "K by position search", f(v.time_ratio, 4),
+                     f(k.time_ratio, 4), verdict(abs(v.time_ratio - k.time_ratio), 1e-6)])
     return rows
 
 

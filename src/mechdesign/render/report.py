@@ -17,7 +17,7 @@ import jinja2
 from ..fileio import write_text
 from ..publish import make_staging, publish
 from ..results import dumps
-from .fmt import md_text
+from .fmt import md_text, meta_text
 from .parallel import background_saves, pump
 
 FORMATS = ("md", "pdf", "docx", "dxf", "gif")
@@ -49,7 +49,7 @@ def group_banner(group: str, lang: str) -> str:
     user text: escaped so that it shows as written)."""
     group = md_text(group)
     if lang == "zh":
-        return f"**分组（方案）：{group}**。本报告按任务书 `groups` 表中该组的数据计算。\n\n"
+        return f"**分组（方案）：{group}**。本报告按任务书分组数据表中该组的数据计算。\n\n"
     return f"**Data group: {group}.** This report uses that group's data from the brief's `groups` table.\n\n"
 
 
@@ -59,7 +59,8 @@ def pdf_metadata(meta, lang: str, group: str | None = None) -> dict:
     escaped (:func:`~.fmt.md_text`) so that it shows as written. The date also dates the
     PDF and the Word file (:func:`.pdf.source_timestamp`), so that a brief renders the
     same bytes every time."""
-    data = {"title": md_text(meta.title), "subtitle": md_text(meta.subtitle),
+    data = {"title": md_text(meta_text(meta, "title", lang)),
+            "subtitle": md_text(meta_text(meta, "subtitle", lang)),
             "student": md_text(meta.student), "student_id": md_text(meta.student_id),
             "class": md_text(meta.class_name), "teacher": md_text(meta.teacher),
             "date": md_text(meta.date), "lang": lang}

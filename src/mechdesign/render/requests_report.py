@@ -86,7 +86,8 @@ def requests_context(results: dict, brief, figures: dict, lang: str) -> dict | N
         j = n + labels.index(label)
         base = key.split("#")[0]
         if base.split(":")[0] in {c.split(":")[0] for c in EVENTS}:
-            what = f"{event_name(base, lang)} (`{key}`)"
+            # the brief's key (a program name) only in English; a zh report says what it means
+            what = event_name(base, lang) if lang == "zh" else f"{event_name(base, lang)} (`{key}`)"
         else:
             what = f"{t['angle']} {key} ({convention})"
         asked.append([what, shown(label), f(k.phase[j] * DEG, 2),

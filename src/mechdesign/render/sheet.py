@@ -300,13 +300,18 @@ def scale_text(n: float) -> str:
 
 
 def format_number(x: float, digits: int = 4) -> str:
-    """Up to ``digits`` significant figures without trailing zeros; '−' as the minus sign."""
-    if x == 0 or not np.isfinite(x):
+    """Up to ``digits`` significant figures in fixed-point notation, without trailing zeros
+    (the report's rule, render/fmt.py): never E-notation (12698.4 → '12700', 0.000123 →
+    '0.000123'), never a negative zero; below 10⁻⁹ (round-off in a sheet's values) '0'."""
+    if abs(x) < 1e-9 or not np.isfinite(x):     # round-off (a Coriolis term of a still slider)
         return "0"
-    text = f"{x:.{digits}g}" if abs(x) >= 1e-3 else f"{x:.2e}"
-    if "e" not in text and "." in text:
+    from decimal import Decimal
+
+    rounded = Decimal(f"{x:.{digits - 1}e}")
+    text = f"{float(rounded):.{max(digits - 1 - rounded.adjusted(), 0)}f}"
+    if "." in text:
         text = text.rstrip("0").rstrip(".")
-    return text
+    return "0" if float(text) == 0 else text
 
 
 def ground(sheet_or_view, z, size=6.0, angle=-np.pi / 2):

@@ -15,7 +15,7 @@ from pathlib import Path
 from typing import Callable
 
 from ..fileio import write_text
-from .fmt import plain_line
+from .fmt import meta_text, plain_line
 from .sheet import Sheet, TitleInfo
 
 TITLES = {
@@ -100,7 +100,7 @@ def _builders(results: dict, brief) -> list[tuple[str, Callable[[TitleInfo, str]
 def title_info(meta, drawing: str, number: str, index: int, count: int, lang: str) -> TitleInfo:
     """The title block's strings; the brief's text as one line each (a title block cell
     holds one line; the backends print the text as written)."""
-    return TitleInfo(drawing=drawing, project=plain_line(meta.title),
+    return TitleInfo(drawing=drawing, project=plain_line(meta_text(meta, "title", lang)),
                      student=plain_line(meta.student), student_id=plain_line(meta.student_id),
                      class_name=plain_line(meta.class_name), teacher=plain_line(meta.teacher),
                      date=plain_line(meta.date), number=plain_line(number), sheet_no=index,

@@ -364,28 +364,41 @@ def _failed(c, where_zh: str, where_en: str) -> Finding:
     from ..core.strength import COURSE_SCALE
 
     v, a = c.value * COURSE_SCALE[c.unit], c.allowable * COURSE_SCALE[c.unit]
+    v, a = _sig4(v), _sig4(a)
     rel = ">" if c.sense == "le" else "<"
     return Finding("strength",
-                   f"{where_zh}：{c.name_zh}不合格（{v:.4g} {rel} {a:.4g} {c.unit}）：加大尺寸或改用更好的材料。",
-                   f"{where_en}: {c.name_en} fails ({v:.4g} {rel} {a:.4g} {c.unit}): "
+                   f"{where_zh}：{c.name_zh}不合格（{v} {rel} {a} {c.unit}）：加大尺寸或改用更好的材料。",
+                   f"{where_en}: {c.name_en} fails ({v} {rel} {a} {c.unit}): "
                    "enlarge it or use a better material.")
+
+
+def _sig4(x: float) -> str:
+    """4 significant digits in fixed-point notation (48000 → '48000', never '4.8e+04'),
+    the report's rule for forces, stresses and lives (render.fmt.sig, without its digit
+    grouping: a finding is also a terminal line)."""
+    from decimal import Decimal
+
+    if x == 0 or x != x:
+        return "0" if x == 0 else "nan"
+    d = Decimal(f"{x:.3e}")
+    return f"{float(d):.{max(3 - d.adjusted(), 0)}f}"
 
 
 # ------------------------------------------------------------------------------------
 # Self-checks (计算校核)
 
 DRIVE_CHECK_NAMES = {
-    "shaft_speed": ("各轴转速 n₍ₖ₊₁₎ = nₖ / iₖ（相对误差）", "shaft speeds n₍ₖ₊₁₎ = nₖ / iₖ (relative error)"),
-    "shaft_power": ("各轴功率 P₍ₖ₊₁₎ = Pₖ ηₖ η_b（相对误差）", "shaft powers P₍ₖ₊₁₎ = Pₖ ηₖ η_b (relative error)"),
+    "shaft_speed": ("各轴转速 $n_{k+1} = n_k / i_k$（相对误差）", "shaft speeds $n_{k+1} = n_k / i_k$ (relative error)"),
+    "shaft_power": ("各轴功率 $P_{k+1} = P_k\\eta_k\\eta_b$（相对误差）", "shaft powers $P_{k+1} = P_k\\eta_k\\eta_b$ (relative error)"),
     "shaft_torque": ("各轴转矩 T = 9549.3 P/n（相对误差）", "shaft torques T = 9549.3 P/n (relative error)"),
-    "power_balance": ("功率平衡 P_末 η_b η_w = P_w（相对误差）", "power balance P_last η_b η_w = P_w (relative error)"),
-    "ratio_product": ("各级传动比之积 Π iₖ 与 n_m / n_w′（相对误差）", "product of the stage ratios Π iₖ vs n_m / n_w′ (relative error)"),
+    "power_balance": ("功率平衡 $P_{\\text{末}}\\eta_b\\eta_w = P_w$（相对误差）", "power balance $P_{last}\\eta_b\\eta_w = P_w$ (relative error)"),
+    "ratio_product": ("各级传动比之积 $\\prod i_k$ 与 $n_m / n_w'$（相对误差）", "product of the stage ratios $\\prod i_k$ vs $n_m / n_w'$ (relative error)"),
     "stage_ratio": ("各级传动比与齿数比、带轮直径比（相对误差）", "stage ratios vs teeth and pulley ratios (relative error)"),
-    "speed_error": ("工作机转速误差 (n_w′ − n_w) / n_w", "machine speed error (n_w′ − n_w) / n_w"),
-    "motor_power": ("电动机额定功率裕度 1 − P_d / P_ed", "motor rating margin 1 − P_d / P_ed"),
+    "speed_error": ("工作机转速误差 $(n_w' - n_w) / n_w$", "machine speed error $(n_w' - n_w) / n_w$"),
+    "motor_power": ("电动机额定功率裕度 $1 - P_d / P_{ed}$", "motor rating margin $1 - P_d / P_{ed}$"),
     "margin": ("强度裕度 1 − 利用率（最小）", "strength margin 1 − utilisation (smallest)"),
     "verdicts": ("强度结论与裕度不一致的项数", "strength verdicts that disagree with their margin"),
-    "reactions": ("支反力平衡 ΣF = 0、ΣM_B = 0（相对残差）", "bearing reactions ΣF = 0, ΣM_B = 0 (relative residual)"),
+    "reactions": ("支反力平衡 $\\Sigma F = 0$、$\\Sigma M_B = 0$（相对残差）", "bearing reactions $\\Sigma F = 0$, $\\Sigma M_B = 0$ (relative residual)"),
 }
 
 DRIVE_REL_LIMIT = 1e-9

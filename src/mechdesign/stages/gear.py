@@ -63,11 +63,11 @@ def gear_findings(g: gears.SpurPair, prefix: str = "gear_pair") -> tuple[Finding
             need = math.ceil(g.z_min - 1e-9)
             out.append(Finding(
                 "undercut",
-                f"齿轮 {name}（z = {gd.z}）根切：z < z_min = 2h_a*/sin²α = {g.z_min:.1f} 且 x = {gd.x:g} "
-                f"< x_min = h_a*(z_min − z)/z_min = {x_min:.3f}；应正变位 {prefix}.x{name} ≥ {x_min:.3f}，"
+                f"齿轮 {name}（z = {gd.z}）根切：z < zₘᵢₙ = 2hₐ*/sin²α = {g.z_min:.1f} 且 x = {gd.x:g} "
+                f"< xₘᵢₙ = hₐ*(zₘᵢₙ − z)/zₘᵢₙ = {x_min:.3f}；应正变位 {prefix}.x{name} ≥ {x_min:.3f}，"
                 f"或把 {prefix}.z{name} 增加到 ≥ {need}。",
-                f"gear {name} (z = {gd.z}) is undercut: z < z_min = 2h_a*/sin²α = {g.z_min:.1f} and "
-                f"x = {gd.x:g} < x_min = h_a*(z_min − z)/z_min = {x_min:.3f}; use a positive shift "
+                f"gear {name} (z = {gd.z}) is undercut: z < zₘᵢₙ = 2hₐ*/sin²α = {g.z_min:.1f} and "
+                f"x = {gd.x:g} < xₘᵢₙ = hₐ*(zₘᵢₙ − z)/zₘᵢₙ = {x_min:.3f}; use a positive shift "
                 f"{prefix}.x{name} ≥ {x_min:.3f} or {prefix}.z{name} ≥ {need}."))
         if gd.sa < MIN_TIP_THICKNESS * g.m:
             fix_zh = f"减小变位系数 {prefix}.x{name}" if gd.x > 0 else f"增加齿数 {prefix}.z{name}"

@@ -82,6 +82,8 @@ class LinkageModel:
     pressure_angle_limit: float | None = None   # [rad], checked over the working stroke
     transmission_angle_min: float | None = None  # [rad], checked over the whole cycle
     names: dict = field(default_factory=dict)    # link id → (name_zh, name_en), optional
+    group_labels: dict = field(default_factory=dict)  # group name → (name_zh, name_en) shown
+    #                                                   in the reports, optional
     advice: dict = field(default_factory=dict)   # "pressure"/"transmission" → (zh, en): the
     #                                              brief fields to change, added to the finding;
     #                                              "time_ratio" → (zh, en, field): K < 1 (the

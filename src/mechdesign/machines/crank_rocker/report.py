@@ -10,6 +10,7 @@ import numpy as np
 from ...fileio import atomic_open
 from ...render.figures import figure
 from ...render.fmt import e as fe
+from ...render.fmt import verdict
 from ...render.fmt import f, md_meta, md_text, mpl_text
 
 DEG = 180.0 / np.pi
@@ -284,8 +285,21 @@ def _name(label: str, lang: str) -> str:
     return label
 
 
-def _verdict(ok: bool) -> str:
-    return "✓" if ok else "✗"
+def _kind(grashof: str, lang: str) -> str:
+    """The Grashof type of a four-bar in the report's words (曲柄摇杆机构, crank-rocker)."""
+    from .stages import _KINDS_ZH
+
+    return _KINDS_ZH.get(grashof, grashof) if lang == "zh" else grashof
+
+
+def _with_diff(value: str, diff: float, lang: str) -> str:
+    """A simulated value to 4 decimals with its difference from the reference (the verdict
+    needs |Δ| < 10⁻⁹, which 4 decimals cannot show)."""
+    return f"{value}（差 {fe(diff)}）" if lang == "zh" else f"{value} (Δ = {fe(diff)})"
+
+
+def _verdict(ok: bool, lang: str) -> str:
+    return verdict(ok, lang)
 
 
 def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
@@ -337,7 +351,7 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
             "l1": (rf"l_1 = \frac{{{_mm(t2)} - {_mm(t1)}}}{{2}} = {_mm(tb.design.crank)}\ \text{{mm}}"),
             "l2": (rf"l_2 = \frac{{{_mm(t2)} + {_mm(t1)}}}{{2}} = {_mm(tb.design.coupler)}\ \text{{mm}}"),
             "d1": d1, "d2": d2, "gamma_min": _deg(tb.gamma_min, 3),
-            "kind": tb.grashof,
+            "kind": _kind(tb.grashof, lang),
         }
     given = None
     if p.given is not None:
@@ -350,7 +364,7 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
         adc1, adc2 = ang(d, c, b - a), ang(d, c, b + a)
         given = {
             "l1": f(a, 4), "l2": f(b, 4), "l3": f(c, 4), "l4": f(d, 4),
-            "kind": tb.grashof if tb is not None else "",
+            "kind": _kind(tb.grashof, lang) if tb is not None else "",
             "eq_dac": (rf"\angle DAC_1 = \arccos\frac{{(l_2 - l_1)^2 + l_4^2 - l_3^2}}{{2(l_2 - l_1)l_4}}"
                        rf" = {f(dac1, 6)}^\circ"),
             "eq_dac2": (rf"\angle DAC_2 = \arccos\frac{{(l_2 + l_1)^2 + "
@@ -401,7 +415,7 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
         cmp_rows.append([md_text(_name(s.label, lang)), _mm(d.design.crank), _mm(d.design.coupler), _mm(d.design.rocker),
                          _mm(d.design.frame), _deg(s.theta, 4), _deg(s.swing, 4), f(s.K, 5),
                          _deg(s.gamma_min, 3)])
-    spec_row = ["要求 specification" if zh else "specification", "", "", _mm(p.rocker, 4), "",
+    spec_row = ["设计要求" if zh else "specification", "", "", _mm(p.rocker, 4), "",
                 f(th_deg, 4), _deg(p.swing, 4), f(p.K, 5), ""]
     paper_notes = []
     missing = []
@@ -422,22 +436,23 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
             continue
         name = md_text(_name(s.label, lang))
         for item_zh, item_en, val, ref, err in (
-                ("仿真 K", "simulated K", f(s.K, 10), f(p.K, 10), s.K - p.K),
-                ("仿真 θ /°", "simulated θ /°", _deg(s.theta, 10), f(th_deg, 10), s.theta - p.theta),
-                ("仿真 ψ /°", "simulated ψ /°", _deg(s.swing, 10), _deg(p.swing, 10), s.swing - p.swing),
+                ("仿真 K", "simulated K", f(s.K, 4), f(p.K, 4), s.K - p.K),
+                ("仿真 θ /°", "simulated θ /°", _deg(s.theta, 4), f(th_deg, 4), s.theta - p.theta),
+                ("仿真 ψ /°", "simulated ψ /°", _deg(s.swing, 4), _deg(p.swing, 4), s.swing - p.swing),
                 ("仿真 γmin /°（参考：闭式解）", "simulated γmin /° (ref.: closed form)",
-                 _deg(s.gamma_min, 10), _deg(d.gamma_min, 10), s.gamma_min - d.gamma_min)):
-            vrows.append([f"{name}：{item_zh if zh else item_en}", val, ref, _verdict(abs(err) < tol)])
-        vrows.append([f"{name}：{'封闭矢量方程残差 /m' if zh else 'loop-closure residual /m'}",
-                      fe(s.closure), "0", _verdict(s.closure < 1e-12)])
+                 _deg(s.gamma_min, 4), _deg(d.gamma_min, 4), s.gamma_min - d.gamma_min)):
+            vrows.append([f"{name}：{item_zh}" if zh else f"{name}: {item_en}", _with_diff(val, err, lang), ref,
+                          _verdict(abs(err) < tol, lang)])
+        vrows.append([f"{name}：封闭矢量方程残差 /m" if zh else f"{name}: loop-closure residual /m",
+                      fe(s.closure), "0", _verdict(s.closure < 1e-12, lang)])
     n0, n1 = ver.optimum_neighbours
     vrows.append(["γmin(t* ∓ 0.001·弧长) − γmin* /°" if zh else "γmin(t* ∓ 0.001·arc) − γmin* /°",
                   f"{fe((n0 - best.gamma_min) * DEG)}, {fe((n1 - best.gamma_min) * DEG)}", "< 0",
-                  _verdict(n0 < best.gamma_min and n1 < best.gamma_min)])
+                  _verdict(n0 < best.gamma_min and n1 < best.gamma_min, lang)])
     vrows.append(["20 万点密集扫描的最大 γmin − γmin* /°" if zh else
                   "largest γmin of a 200 000-point scan − γmin* /°",
                   fe((ver.optimum_scan - best.gamma_min) * DEG), "≤ 0",
-                  _verdict(ver.optimum_scan <= best.gamma_min + 1e-12)])
+                  _verdict(ver.optimum_scan <= best.gamma_min + 1e-12, lang)])
     slider = None
     if r.get("slider") is not None:
         sl, ss = r["slider"], ver.slider
@@ -474,17 +489,17 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
             "allowed": _deg(sl.alpha_allowed, 0),
         }
         for item_zh, item_en, val, ref, err in (
-                ("仿真行程 H /mm", "simulated stroke H /mm", _mm(ss.stroke, 10), f(h_mm, 10),
+                ("仿真行程 H /mm", "simulated stroke H /mm", _mm(ss.stroke, 4), f(h_mm, 4),
                  (ss.stroke - sl.stroke) / sl.stroke),
-                ("仿真 K", "simulated K", f(ss.K, 10), f(sl.K, 10), ss.K - sl.K),
+                ("仿真 K", "simulated K", f(ss.K, 4), f(sl.K, 4), ss.K - sl.K),
                 ("仿真慢行程 αmax /°（参考：闭式解）", "simulated slow-stroke αmax /° (ref.: closed form)",
-                 _deg(ss.alpha_slow, 10), _deg(sl.alpha_slow, 10), ss.alpha_slow - sl.alpha_slow),
+                 _deg(ss.alpha_slow, 4), _deg(sl.alpha_slow, 4), ss.alpha_slow - sl.alpha_slow),
                 ("仿真快行程 αmax /°（参考：闭式解）", "simulated fast-stroke αmax /° (ref.: closed form)",
-                 _deg(ss.alpha_fast, 10), _deg(sl.alpha_fast, 10), ss.alpha_fast - sl.alpha_fast)):
+                 _deg(ss.alpha_fast, 4), _deg(sl.alpha_fast, 4), ss.alpha_fast - sl.alpha_fast)):
             vrows.append([("偏置曲柄滑块：" if zh else "offset slider-crank: ") + (item_zh if zh else item_en),
-                          val, ref, _verdict(abs(err) < tol)])
+                          _with_diff(val, err, lang), ref, _verdict(abs(err) < tol, lang)])
         vrows.append([("偏置曲柄滑块：封闭矢量方程残差 /m" if zh else "offset slider-crank: loop-closure residual /m"),
-                      fe(ss.closure), "0", _verdict(ss.closure < 1e-12)])
+                      fe(ss.closure), "0", _verdict(ss.closure < 1e-12, lang)])
     findings = []
     for key in ("optimum", "textbook", "slider"):
         v = r.get(key)
@@ -509,14 +524,14 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
                  f"has {f(max(g1, g2), 2)}°): $\\gamma_{{min}}(t)$ has a smooth maximum at the optimum, "
                  "not the kink where the two collinear angles are equal.")
     return {
-        "meta": md_meta(brief.report), "fig": figures, "data_rows": data_rows, "eq": eq,
+        "meta": md_meta(brief.report, lang), "fig": figures, "data_rows": data_rows, "eq": eq,
         "K": f(p.K, 4), "theta": f(th_deg, 4), "psi": _deg(p.swing, 2), "l3": _mm(p.rocker, 2),
         "K_given": p.K_given,
         "opt": {"l1": _mm(best.design.crank), "l2": _mm(best.design.coupler),
                 "l3": _mm(best.design.rocker), "l4": _mm(best.design.frame),
                 "ratio": f(best.design.rocker / best.design.frame, 4),
                 "gamma_min": _deg(best.gamma_min, 3), "t": _deg(best.position, 4),
-                "ac1": _mm(ac1), "ac2": _mm(ac2), "kind": best.grashof,
+                "ac1": _mm(ac1), "ac2": _mm(ac2), "kind": _kind(best.grashof, lang),
                 "far": None if far is None else _deg(far, 2), "where": where},
         "with_speed": p.crank_speed_rpm is not None,
         "textbook": textbook, "given": given,

@@ -13,6 +13,7 @@ import numpy as np
 
 from ...render import figures as fig
 from ...render.fmt import e, f, md_meta, md_text
+from ...render.fmt import number, verdict
 
 DEG = 180.0 / np.pi
 MM = 1e3
@@ -377,7 +378,9 @@ def _amplification(r, p, zh: bool) -> dict:
         "clear_up": _deg(tm.clear_up, 2), "clear_down": _deg(tm.clear_down, 2),
         "clear_span": _deg(tm.clear_span, 2), "press_down": _deg(tm.press_down, 2),
         "peak_req": f(amp.peak_required, 1), "peak_phase": _deg(amp.peak_phase, 2),
-        "mb_peak": f(f_.balancing_torque[i_peak], 1), "mb_peak_phase": _deg(k.phase[i_peak], 2),
+        # the exact peak (refined between the samples; the factor below uses it too), at about
+        # the phase of the largest sample
+        "mb_peak": f(f_.peak_torque, 1, group=True), "mb_peak_phase": _deg(k.phase[i_peak], 1),
         "mb_mean": f(f_.mean_torque, 2), "peak_factor": f(f_.peak_torque / f_.mean_torque, 2),
         "f_motor": f(f_motor / 1e3, 1), "t_motor": f(t_motor, 1), "motor": motor.designation,
         "F": f(p.cutting_force / 1e3, 1), "t": f(p.pressing_travel * MM, 2),
@@ -388,8 +391,8 @@ def _amplification(r, p, zh: bool) -> dict:
 def _flywheel(r, p, b, zh: bool) -> dict:
     fl = r["press_flywheel"]
     shaft = _shaft(fl.shaft, len(b.drive.stages), zh)
-    rows = [[_shaft(s.index, len(b.drive.stages), zh), f(s.speed_rpm, 1), f(s.torque, 1),
-             f(s.peak_torque, 1), f(s.d_seat * MM, 0), f(s.d_peak * MM, 0)]
+    rows = [[_shaft(s.index, len(b.drive.stages), zh), f(s.speed_rpm, 1), f(s.torque, 1, group=True),
+             f(s.peak_torque, 1, group=True), f(s.d_seat * MM, 0), f(s.d_peak * MM, 0)]
             for s in r["peak_shafts"]]
     eq = {
         "md": (rf"M_d = \frac{{1}}{{2\pi}}\oint M_b\,d\varphi = {f(fl.mean_torque, 2)}\ \text{{N·m}}"
@@ -452,7 +455,7 @@ def _feed(r, b, p, zh: bool) -> dict:
 
 
 def _ok(zh: bool, good: bool) -> str:
-    return ("满足" if zh else "ok") if good else ("不满足" if zh else "fails")
+    return verdict(good, "zh" if zh else "en")
 
 
 def _verify_rows(r, p, zh: bool) -> list[list[str]]:
@@ -468,9 +471,9 @@ def _verify_rows(r, p, zh: bool) -> list[list[str]]:
     vk = r["press_verification"]
     for row in rows:
         if row[0] in ("位置搜索所得 K", "K by position search"):
-            row[2] = (f"{f(k.time_ratio, 6)} ± {e(v.K_search_tol)}（顶部 $H - s \\propto \\Delta\\varphi^n$，n = {f(v.top_order, 2)}，"
+            row[2] = (f"{f(k.time_ratio, 4)} ± {e(v.K_search_tol)}（顶部 $H - s \\propto \\Delta\\varphi^n$，n = {f(v.top_order, 2)}，"
                       f"位置搜索的角度分辨率约 {e(v.search_angle_tol)} rad）" if zh else
-                      f"{f(k.time_ratio, 6)} ± {e(v.K_search_tol)} (top flat as $H - s \\propto \\Delta\\varphi^n$, n = {f(v.top_order, 2)}: "
+                      f"{f(k.time_ratio, 4)} ± {e(v.K_search_tol)} (top flat as $H - s \\propto \\Delta\\varphi^n$, n = {f(v.top_order, 2)}: "
                       f"a position search resolves about {e(v.search_angle_tol)} rad)")
             row[3] = _ok(zh, abs(vk.time_ratio - k.time_ratio) <= v.K_search_tol + 1e-6)
     # the switch-on of F_c falls between grid points: the mean of M_b is off by at most
@@ -480,7 +483,7 @@ def _verify_rows(r, p, zh: bool) -> list[list[str]]:
         ["仿真行程 − 设计行程 H /mm" if zh else "simulated stroke − H /mm", e(v.stroke_error * MM),
          f"H = {f(g.stroke * MM, 2)} mm", _ok(zh, abs(v.stroke_error) < 1e-9)],
         ["仿真所得 K（输出速度零点）" if zh else "simulated K (zeros of the output speed)",
-         f(k.time_ratio, 9), f"K = {f(g.K, 6)} ± {e(v.K_velocity_tol)}",
+         f(k.time_ratio, 4), f"K = {f(g.K, 4)} ± {e(v.K_velocity_tol)}",
          _ok(zh, abs(k.time_ratio - g.K) <= v.K_velocity_tol)],
         ["仿真上止点处 CB 偏离导路的角度 /°" if zh else "toggle angle at the simulated top /°",
          e(v.top_toggle_angle * DEG), f"ε = {f(g.top_angle * DEG, 2)}°",
@@ -490,9 +493,9 @@ def _verify_rows(r, p, zh: bool) -> list[list[str]]:
          "4 (ε = 0) / 2 (ε > 0)", _ok(zh, abs(v.top_order - (4 if g.top_angle == 0 else 2)) < 0.05)],
         ["增力特性：动态静力分析与虚功闭式解之差（相对）" if zh else
          "force amplification: kinetostatics vs virtual-work closed form (relative)",
-         e(v.amplification_error), "≤ 1e-9", _ok(zh, v.amplification_error < 1e-9)],
+         e(v.amplification_error), "≤ 10⁻⁹", _ok(zh, v.amplification_error < 1e-9)],
         ["能量平衡 $\\oint M_b d\\varphi / (F_c t)$" if zh else "energy balance $\\oint M_b d\\varphi / (F_c t)$",
-         f(v.energy_ratio, 5), f"1 ± {f(bound, 4)}", _ok(zh, abs(v.energy_ratio - 1) <= bound)],
+         f(v.energy_ratio, 4), f"1 ± {f(bound, 4)}", _ok(zh, abs(v.energy_ratio - 1) <= bound)],
         ["循环图下模板行与仿真位移不符的转角 /°" if zh else "platen row vs simulated s: disagreeing angle /°",
          f(v.platen_mismatch * DEG, 2), f"≤ {f(2 * step * DEG, 2)}", _ok(zh, v.platen_mismatch <= 2 * step + 1e-12)],
         ["循环图夹爪行与凸轮升程不符的转角 /°" if zh else "gripper row vs cam lift: disagreeing angle /°",
@@ -562,11 +565,11 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
     drive = drive_context(r["drive"], lang, figures, pw)
     verify = _verify_rows(r, p, zh)
     for row in cycle["verify"] + ig["verify"]:
-        value = float(row[1])
+        value = number(row[1])
         verify.append([row[0], row[1], "0", _ok(zh, abs(value) < 1e-6)])
     gear = r["feed"].gear
     return {
-        "meta": md_meta(brief.report), "fig": figures,
+        "meta": md_meta(brief.report, lang), "fig": figures,
         "rpm": f(p.shaft_rpm, 2), "period": f(60 / p.shaft_rpm, 3), "omega": f(abs(p.crank_omega), 4),
         "sense": ("顺时针" if p.crank_omega < 0 else "逆时针") if zh else
                  ("clockwise" if p.crank_omega < 0 else "counter-clockwise"),

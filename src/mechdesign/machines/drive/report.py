@@ -4,6 +4,7 @@ from __future__ import annotations
 from pathlib import Path
 import numpy as np
 from ...render.fmt import e, f, md_meta, md_text
+from ...render.fmt import verdict
 from ...render.drive_report import _shaft_name, drive_context
 
 
@@ -25,7 +26,7 @@ def make_figures(r: dict, fig_dir: Path, lang: str) -> dict[str, str]:
 
 def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
     p = r["params"]
-    return {"meta": md_meta(brief.report),
+    return {"meta": md_meta(brief.report, lang),
             "drive": drive_context(r["drive"], lang, figures, _load_equation(p)),
             "load_how": p.load.how,
             **verification_context(r["drive"], r.get("drive_verification"), lang)}
@@ -35,13 +36,13 @@ _NOTE = {
     "zh": "各项由本次运行按定义重算：各轴转速、功率、转矩逐级由上一轴推出（电动机轴到第一根轴不计轴承损失，"
           "其后每根轴一对滚动轴承），与设计所得的轴表比较；功率平衡检查传到工作机的功率是否正好等于其所需功率；"
           "强度裕度 = 1 − 计算值/许用值（寿命、直径为 1 − 要求值/计算值），各轴取所有校核项目中最小者；"
-          "支反力平衡对两个平面分别计入全部外载荷（轴向力以 F_a·r 的力偶计入垂直面）与支反力，对轴承 B 取矩。",
+          "支反力平衡对两个平面分别计入全部外载荷（轴向力以 $F_a r$ 的力偶计入垂直面）与支反力，对轴承 B 取矩。",
     "en": "Each item is recomputed in this run by its definition: every shaft's speed, power and torque from the shaft "
           "before it (no bearing loss between the motor and the first shaft, one pair of rolling bearings on every "
           "shaft after it) against the designed shaft table; the power balance checks that the power reaching the "
           "machine is exactly what it needs; a strength margin is 1 − value/allowable (for lives and diameters "
           "1 − required/value), the smallest over all checks of a stage or shaft; the statics of each shaft take every "
-          "load (an axial force as the couple F_a·r in the vertical plane) and both reactions, in both planes, with "
+          "load (an axial force as the couple $F_a r$ in the vertical plane) and both reactions, in both planes, with "
           "moments about bearing B.",
 }
 
@@ -57,7 +58,7 @@ def verification_context(d, v, lang: str) -> dict:
     rows = []
     for k in v.checks:
         name = DRIVE_CHECK_NAMES[k.key][0 if zh else 1]
-        ok = ("满足" if zh else "ok") if k.passed else ("不满足" if zh else "fails")
+        ok = verdict(k.passed, lang)
         if k.key == "speed_error":
             rows.append([name, f"{f(k.detail['signed'] * 100, 3)}%", f"≤ ±{f(k.limit * 100, 1)}%", ok])
         elif k.key == "motor_power":

@@ -11,6 +11,7 @@ from ...fileio import atomic_open
 from ...render import cam_figures as cf
 from ...render.cam_report import CONTACT
 from ...render.fmt import e, f, md_meta, md_text, mpl_text
+from ...render.fmt import verdict
 
 DEG = 180.0 / np.pi
 MM = 1e3
@@ -34,7 +35,7 @@ def _describe(fol, lang):
                  else f"offset e = {f(abs(fol.offset) * MM, 1)} mm ({side})")
     extra = ""
     if fol.kind == "roller":
-        extra = f"，r_r = {f(fol.roller_radius * MM, 1)} mm" if zh else f", r_r = {f(fol.roller_radius * MM, 1)} mm"
+        extra = f"，$r_r$ = {f(fol.roller_radius * MM, 1)} mm" if zh else f", $r_r$ = {f(fol.roller_radius * MM, 1)} mm"
     return f"{where}{contact}从动件{extra}" if zh else f"{where} {contact} follower{extra}"
 
 
@@ -72,7 +73,7 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
         qrows.append([f(delta * DEG, 1)] + [f"{f(q.s[i] * MM, 3)} / {f(q.pressure_angle[i] * DEG, 2)}°"
                                             for q in d.queries])
     return {
-        "meta": md_meta(brief.report), "fig": figures, "R": f(R, 1), "ecc": f(ecc, 1),
+        "meta": md_meta(brief.report, lang), "fig": figures, "R": f(R, 1), "ecc": f(ecc, 1),
         "rotation": ("逆时针" if p.rotation > 0 else "顺时针") if zh else
                     ("counter-clockwise" if p.rotation > 0 else "clockwise"),
         "followers": followers, "table_head": head, "table_rows": rows,
@@ -86,12 +87,12 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
 
 
 _NOTE = {
-    "zh": "校核不用解析式：位移由反转法作图求得——凸轮不动，推杆导路反向转过 δ，导路与圆盘轮廓（滚子从动件为半径 R + r_r "
+    "zh": "校核不用解析式：位移由反转法作图求得——凸轮不动，推杆导路反向转过 δ，导路与圆盘轮廓（滚子从动件为半径 $R + r_r$ "
           "的滚子中心轨迹圆）的交点即推杆位置；压力角由三心定理求得——凸轮与推杆的相对速度瞬心 P 在过 O 垂直于导路的直线上，"
           "OP = dy/dδ（由作图所得位移的中心差分求得），公法线过 P；行程由位移曲线的极值（三点抛物线插值）求得。"
           "比较范围为 0.1° 网格上的全部位置及指定位置。",
     "en": "The checks do not use the closed forms: the displacement by inversion — the cam held still, the follower's "
-          "line turned back through δ and intersected with the disc (for a roller, the circle of radius R + r_r on which "
+          "line turned back through δ and intersected with the disc (for a roller, the circle of radius $R + r_r$ on which "
           "its centre rolls); the pressure angle by the three-centre theorem — the relative pole P of cam and follower "
           "lies on the line through O perpendicular to the follower's line, OP = dy/dδ (central differences of the "
           "geometric displacement), and the common normal passes through P; the stroke from the extremes of the "
@@ -109,15 +110,15 @@ def verification_context(v, lang: str) -> dict:
     rows = []
     for k in v.checks:
         name = f"{md_text(k.detail.get('label', ''))} " + DISC_CHECK_NAMES[k.key][0 if zh else 1]
-        ok = ("满足" if zh else "ok") if k.passed else ("不满足" if zh else "fails")
+        ok = verdict(k.passed, lang)
         if k.key == "disc_s":
             rows.append([name, f"{e(k.value * MM)} mm", f"≤ {e(k.limit * MM)} mm", ok])
         elif k.key == "disc_alpha":
             rows.append([name, f"{e(k.value * DEG)}°", f"≤ {e(k.limit * DEG)}°", ok])
         elif k.key == "disc_stroke":
-            rows.append([name, f"{f(k.detail['stroke'] * MM, 6)} mm",
-                         (f"解析 h = {f(k.reference * MM, 6)} mm" if zh else
-                          f"closed form h = {f(k.reference * MM, 6)} mm"), ok])
+            rows.append([name, f"{f(k.detail['stroke'] * MM, 3)} mm",
+                         (f"解析 h = {f(k.reference * MM, 3)} mm" if zh else
+                          f"closed form h = {f(k.reference * MM, 3)} mm"), ok])
     return {"verify_rows": rows, "findings": [md_text(w.text(lang)) for w in v.warnings],
             "verify_note": _NOTE[lang]}
 

@@ -8,6 +8,7 @@ import numpy as np
 
 from ...render import figures as fig
 from ...render.fmt import e, f, md_meta, md_text
+from ...render.fmt import verdict
 
 DEG = 180.0 / np.pi
 MM = 1e3
@@ -155,7 +156,7 @@ def animate(r: dict, path: Path, lang: str) -> Path:
 # ------------------------------------------------------------------------------ context
 
 def _ok(flag: bool, zh: bool) -> str:
-    return ("满足" if zh else "ok") if flag else ("不满足" if zh else "fails")
+    return verdict(flag, "zh" if zh else "en")
 
 
 def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
@@ -208,7 +209,7 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
         ["$l_{DB}/l_{DC}$", f(ps.rocker_ratio_DB_DC, 3),
          ("B 在摇杆上的位置，只决定四杆机构的大小，不影响其角度" if zh else
           "where B sits on the rocker: sets the four-bar's size, not its angles")],
-        ["$l_{O_1D}$", ("auto（按准则优化）" if zh else "auto (optimised)") if pp.frame is None
+        ["$l_{O_1D}$", ("自动（按准则优化）" if zh else "auto (optimised)") if pp.frame is None
          else f(pp.frame * MM, 2) + " mm",
          ("最大化全周期最小传动角 $\\gamma_{min}$，且工作行程中 B 点压力角不超过 $[\\alpha]$" if zh else
           "maximise $\\gamma_{min}$ over the cycle, the pressure angle at B within $[\\alpha]$ in the working stroke")
@@ -372,8 +373,8 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
     tol = 1e-6
     verify_rows = [
         ["仿真行程（位置搜索）/mm" if zh else "simulated stroke (position search) / mm",
-         f(chk.stroke * MM, 6), f"H = {f(H, 6 if given else 0)}", _ok(abs(chk.stroke_error) <= tol * pp.stroke, zh)],
-        ["仿真行程速比系数 K" if zh else "simulated time ratio K", f(chk.time_ratio, 6),
+         f(chk.stroke * MM, 4), f"H = {f(H, 6 if given else 0)}", _ok(abs(chk.stroke_error) <= tol * pp.stroke, zh)],
+        ["仿真行程速比系数 K" if zh else "simulated time ratio K", f(chk.time_ratio, 4),
          f(pp.time_ratio_K, 6 if given else 2), _ok(abs(chk.time_ratio - pp.time_ratio_K) <= tol, zh)],
         ["工作行程 E 点最大压力角 /°" if zh else "largest pressure angle at E, working stroke / °",
          f(chk.alpha_E_work * DEG, 4), f"≤ {f(lim, 0)}（{f(syn.alpha_E * DEG, 4)}）" if zh else
@@ -392,14 +393,14 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
          _ok(abs(chk.mean_power - chk.hand_power) <= 1e-4 * chk.hand_power, zh)],
         ["$M_b$ 与虚功原理 $F_r\\lvert v_E\\rvert/\\omega$ 之差（相对）" if zh else
          "$M_b$ vs virtual work $F_r\\lvert v_E\\rvert/\\omega$ (relative)",
-         e(chk.virtual_work_error), "≤ 1e-9", _ok(chk.virtual_work_error <= 1e-9, zh)],
+         e(chk.virtual_work_error), "≤ 10⁻⁹", _ok(chk.virtual_work_error <= 1e-9, zh)],
     ] + verification_rows(v, lang, k)
     # A bare "|" would split a pipe-table cell: escape it (math uses \lvert … \rvert).
     verify_rows = [[cell.replace("|", "\\|") for cell in row] for row in verify_rows]
     findings = [md_text(w.text(lang)) for key in ("synthesis", "linkage_verification", "pusher_check")
                 for w in (getattr(r[key], "warnings", ()) or ())]
     return {
-        "meta": md_meta(brief.report), "fig": figures, "data_rows": data_rows, "choice_rows": choice_rows,
+        "meta": md_meta(brief.report, lang), "fig": figures, "data_rows": data_rows, "choice_rows": choice_rows,
         "eq": eq, "syn_rows": syn_rows, "res_rows": res_rows, "seed_rows": seed_rows,
         "seed_sim_rows": seed_sim_rows, "side": side_txt, "criterion": crit, "other_side": other,
         "sense": sense, "towards": towards, "linkage": lk, "torque_rows": torque_rows,

@@ -16,7 +16,7 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
     lk = linkage_context(r["params"], k, r["linkage_forces"], r["linkage_flywheel"], v,
                          figures, lang, title="机构分析" if lang == "zh" else "Linkage analysis")
     warnings = [md_text(w.text(lang)) for w in v.warnings]
-    return {"meta": md_meta(brief.report), "linkage": lk, "verify_rows": verification_rows(v, lang, k),
+    return {"meta": md_meta(brief.report, lang), "linkage": lk, "verify_rows": verification_rows(v, lang, k),
             "findings": warnings}
 
 

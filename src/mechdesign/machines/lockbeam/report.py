@@ -13,6 +13,7 @@ import numpy as np
 
 from ...render import figures as fig
 from ...render.fmt import e, f, md_meta, md_text
+from ...render.fmt import verdict
 
 DEG = 180.0 / np.pi
 MM = 1e3
@@ -45,7 +46,7 @@ def grashof_sentence(a: float, b: float, c: float, d: float, lang: str) -> str:
 
 
 def _ok(x: bool, lang: str) -> str:
-    return ("满足" if x else "不满足") if lang == "zh" else ("ok" if x else "fails")
+    return verdict(x, lang)
 
 
 # --------------------------------------------------------------------------- figures
@@ -434,7 +435,7 @@ def _bending(r: dict, lang: str, figures: dict) -> dict:
         "gmin_at": f(b.gamma_min_at * DEG, 2), "glim": f(bp.gamma_allowed * DEG, 0),
         "lo": f(bp.length_bounds[0] * MM, 0), "hi": f(bp.length_bounds[1] * MM, 0),
         "auto": bp.start is None,
-        "swing_sim": f(b.swing_simulated * DEG, 6), "bend_sim": f(b.bend_simulated * DEG, 6),
+        "swing_sim": f(b.swing_simulated * DEG, 4), "bend_sim": f(b.bend_simulated * DEG, 4),
         "bend": f(bp.bending_angle * DEG, 0),
         "wheel_w": f(float(np.max(np.abs(b.wheel_omega))), 3),
         "wheel_a": f(float(np.max(np.abs(b.wheel_alpha))), 2),
@@ -565,7 +566,7 @@ def _feed(r: dict, lang: str, figures: dict) -> dict:
         }
     bad = 0 if ft.seed_x is None else int(np.sum(np.abs(ft.seed_x - ft.x) > 1e-9))
     return {"lk": lk, "rows": rows, "closed": closed, "n_bad": str(bad), "n_rows": str(len(rows)),
-            "stroke": f(k.stroke * MM, 4), "K": f(k.time_ratio, 6)}
+            "stroke": f(k.stroke * MM, 4), "K": f(k.time_ratio, 4)}
 
 
 def verification_rows(r: dict, lang: str) -> list[list[str]]:
@@ -581,17 +582,17 @@ def verification_rows(r: dict, lang: str) -> list[list[str]]:
 
     add("传动比（精确分数）", "train ratio (exact fraction)", str(tr.ratio_exact),
         f"$n_m/n$ = {f(tr.required_ratio, 4)}", abs(tr.ratio - tr.required_ratio) < 1e-12)
-    add("主轴转速 /(r/min)", "main-shaft speed / rpm", f(tr.output_rpm, 6),
+    add("主轴转速 /(r/min)", "main-shaft speed / rpm", f(tr.output_rpm, 4),
         f"{f(p.rate, 0)}（生产率）" if zh else f"{f(p.rate, 0)} (production rate)",
         abs(tr.output_rpm - p.rate) < 1e-9 * p.rate)
     add("定位销升程 /mm", "pin lift / mm", f(pin.lift * MM, 3), f"> (d1 − d2)/2 = {f(pin.required * MM, 2)}",
         pin.lift > pin.required)
-    add("仿真：大链轮摆角 /°", "simulation: large wheel swing / °", f(abs(b.swing_simulated) * DEG, 9),
-        f(b.output_swing * DEG, 6), abs(abs(b.swing_simulated) - b.output_swing) < 1e-9)
+    add("仿真：大链轮摆角 /°", "simulation: large wheel swing / °", f(abs(b.swing_simulated) * DEG, 4),
+        f(b.output_swing * DEG, 4), abs(abs(b.swing_simulated) - b.output_swing) < 1e-9)
     add("仿真：扳弯轮转角（凸轮→摆杆→四杆→链）/°", "simulation: bending wheel (cam → rocker → four-bar → chain) / °",
-        f(b.bend_simulated * DEG, 9), f(p.bending.bending_angle * DEG, 6),
+        f(b.bend_simulated * DEG, 4), f(p.bending.bending_angle * DEG, 4),
         abs(b.bend_simulated - p.bending.bending_angle) < 1e-9)
-    add("扳弯四杆机构封闭方程残差 /m", "bending four-bar closure residual / m", e(b.closure), "≤ 1e-9",
+    add("扳弯四杆机构封闭方程残差 /m", "bending four-bar closure residual / m", e(b.closure), "≤ 10⁻⁹",
         b.closure <= 1e-9)
     add("扳弯四杆机构最小传动角 /°", "bending four-bar least transmission angle / °", f(b.gamma_min * DEG, 3),
         f"≥ {f(p.bending.gamma_allowed * DEG, 0)}", b.gamma_min >= p.bending.gamma_allowed)
@@ -604,23 +605,23 @@ def verification_rows(r: dict, lang: str) -> list[list[str]]:
         add(f"循环图与{zh_n}的一致性（最大偏差 / 行程）", f"cycle diagram vs the {en_n} (largest deviation / stroke)",
             e(err), "0", err < 1e-9)
     add("扳弯轮转动时定位销的最低升程 /mm", "least pin lift while the bending wheel turns / mm",
-        f(c.pin_lift_while_bending * MM, 6), f"h = {f(c.pin_stroke * MM, 3)}",
+        f(c.pin_lift_while_bending * MM, 4), f"h = {f(c.pin_stroke * MM, 3)}",
         abs(c.pin_lift_while_bending - c.pin_stroke) < 1e-12)
     add("送料工作行程对应的主轴转角：循环图 / 仿真 /°", "feed stroke in shaft angle: diagram / simulation / °",
-        f"{f(c.feed_span_cycle * DEG, 3)} / {f(c.feed_span_simulated * DEG, 6)}", "±0.5",
+        f"{f(c.feed_span_cycle * DEG, 3)} / {f(c.feed_span_simulated * DEG, 4)}", "±0.5",
         abs(c.feed_span_cycle - c.feed_span_simulated) <= np.radians(0.5))
     n_ok = sum(1 for ch in c.checks if ch.ok)
     add("运动循环图协调要求", "cycle diagram timing requirements", f"{n_ok}/{len(c.checks)}",
-        "全部满足" if zh else "all met", n_ok == len(c.checks))
+        "全部合格" if zh else "all PASS", n_ok == len(c.checks))
     cf = r["feed_table"].closed
     k = r["feed"]
     if cf is not None:
         kk = k.time_ratio if k.time_ratio >= 1 else 1 / k.time_ratio
-        add("送料 K：仿真 / 闭式解", "feed K: simulation / closed form", f(kk, 9), f(cf.K, 9),
+        add("送料 K：仿真 / 闭式解", "feed K: simulation / closed form", f(kk, 4), f(cf.K, 4),
             abs(kk - cf.K) < 1e-9)
         if cf.stroke is not None:
-            add("送料行程：仿真 / 闭式解 /mm", "feed stroke: simulation / closed form / mm", f(k.stroke * MM, 9),
-                f(cf.stroke * MM, 9), abs(k.stroke - cf.stroke) < 1e-12)
+            add("送料行程：仿真 / 闭式解 /mm", "feed stroke: simulation / closed form / mm", f(k.stroke * MM, 4),
+                f(cf.stroke * MM, 4), abs(k.stroke - cf.stroke) < 1e-12)
     rows.extend(linkage_rows(r["feed_verification"], lang, k))
     # A bare "|" inside a cell (e.g. max|M_b ω|) would split the pipe table.
     return [[cell.replace("\\|", "|").replace("|", "\\|") for cell in row] for row in rows]
@@ -650,7 +651,7 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
         "overlap": c.feed_span_cycle > pin_down_span + 1e-9,
     }
     return {
-        "meta": md_meta(brief.report), "fig": figures,
+        "meta": md_meta(brief.report, lang), "fig": figures,
         "data_rows": _data_rows(r, brief, lang), "seed_notes": _seed_notes(r, lang),
         "morph": morphology_context(p.morphology, lang, level=2),
         "cycle": cycle_context(c.diagram, lang, cyc_figs, c.checks, level=2),

@@ -7,7 +7,8 @@ from __future__ import annotations
 import numpy as np
 
 from ...render import guide_bar_report as gb_report
-from ...render.fmt import f, md_meta, md_text
+from ...render.fmt import e, f, md_meta, md_text
+from ...render.fmt import in_lang, verdict
 from ...render.linkage_report import linkage_context, verification_rows
 
 DEG = 180.0 / np.pi
@@ -114,8 +115,8 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
                 for w in (getattr(r[key], "warnings", ()) or ())]
     slow = k.time_ratio >= 1.0
     return {
-        "meta": md_meta(brief.report), "data_rows": _data_rows(brief, p),
-        "press": synthesis_context(s, p),
+        "meta": md_meta(brief.report, lang), "data_rows": in_lang(_data_rows(brief, p), lang),
+        "press": (lambda c: {**c, "rows": in_lang(c["rows"], lang)})(synthesis_context(s, p)),
         "n1": f(p.crank_speed_rpm, 0), "sense_zh": "顺时针" if p.crank_omega < 0 else "逆时针",
         "sense_en": "clockwise" if p.crank_omega < 0 else "counter-clockwise",
         "slow_zh": "慢" if slow else "快", "slow_en": "slow" if slow else "fast",
@@ -123,8 +124,7 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
         "Q": f(p.pressing_force, 0),
         "linkage": lkc, **gb_report.optional_sections(r, lang, figures),
         "verify_rows": verification_rows(v, lang, k)
-        + [["行程误差 / mm" if zh else "stroke error / mm", f((v.stroke - p.stroke) * mm, 6),
-            "0", ("满足" if zh else "ok") if abs(v.stroke - p.stroke) <= 1e-9 else
-            ("不满足" if zh else "fails")]],
+        + [["行程误差 / mm" if zh else "stroke error / mm", e((v.stroke - p.stroke) * mm),
+            "0", verdict(abs(v.stroke - p.stroke) <= 1e-9, "zh" if zh else "en")]],
         "findings": findings,
     }

@@ -177,7 +177,9 @@ def model(s: PressSynthesis, p: PressParams) -> lk.LinkageModel:
                 "transmission": (f"任务书字段 {pivots}", f"brief fields {pivots}")},
         names={"1": ("曲柄 AB", "crank AB"), "2": ("连杆 BC", "coupler BC"),
                "3": ("摇杆 DE", "rocker DE"), "4": ("连杆 EF", "rod EF"),
-               "5": ("滑块（冲头）", "ram")})
+               "5": ("滑块（冲头）", "ram")},
+        group_labels={"coupler–rocker (RRR)": ("连杆–摇杆组 (RRR)", "coupler–rocker (RRR)"),
+                      "rod–ram (RRP)": ("连杆–滑块组 (RRP)", "rod–ram (RRP)")})
 
 
 def _synthesis(r: dict):

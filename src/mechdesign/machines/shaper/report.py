@@ -13,7 +13,7 @@ import numpy as np
 
 from ...render import figures as fig
 from ...render import guide_bar_report as gb_report
-from ...render.fmt import e, f, md_meta
+from ...render.fmt import e, f, in_lang, md_meta
 
 DEG = 180.0 / np.pi
 
@@ -168,10 +168,10 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
     return {
         **gb_report.optional_sections(r, lang, figures),
         **gb_report.task_words(p, syn),
-        "meta": md_meta(brief.report),
+        "meta": md_meta(brief.report, lang),
         "fig": figures,
-        "data_rows": data_rows,
-        "guide_bar": guide_bar,
+        "data_rows": in_lang(data_rows, lang),
+        "guide_bar": {**guide_bar, "rows": in_lang(guide_bar["rows"], lang)},
         "kin_rows": kin_rows,
         "load_rows": load_rows,
         "reaction_rows": reaction_rows,
@@ -197,6 +197,14 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
             "shaft_zh": "小齿轮 z1 所在的 O1 轴" if fl.shaft == "pinion" else "曲柄轴 O2",
             "shaft_en": "the pinion shaft O1 (z1)" if fl.shaft == "pinion" else "the crank shaft O2",
             "n": f(fl.shaft_speed_rpm, 2), "md": f(fl.shaft_torque, 3),
+            # the flywheel is designed for the nominal speed; the drive's shafts turn at the
+            # speeds its motor and chosen ratios give: say which is which where both appear
+            "n_note": ("" if r.get("drive") is None else
+                       ("，名义转速：曲柄转速按齿数比折算；传动装置一章中各轴转速是电动机转速除以所选传动比得到的实际转速，"
+                        "与之相差传动比误差" if lang == "zh" else
+                        ", the nominal speed: the crank speed times the gear ratio; the drive chapter's shaft "
+                        "speeds are the realised ones, the motor speed divided by the chosen ratios, and differ "
+                        "from it by the ratio error")),
             "dw": f(fl.max_energy_swing, 2), "jf": f(fl.inertia, 3),
             "at_min": f(fl.phase_at_min * DEG, 1), "at_max": f(fl.phase_at_max * DEG, 1),
             "D": f(fl.rim.diameter * mm, 0), "b": f(fl.rim.width * mm, 1),
@@ -206,7 +214,7 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
         "ver": {
             "closure": e(v.closure_residual), "vel": e(v.velocity_fd_error),
             "acc": e(v.acceleration_fd_error), "stroke": e(v.stroke_error * mm),
-            "k_sim": f(v.time_ratio_simulated, 6), "power": e(v.power_balance_residual),
+            "k_sim": f(v.time_ratio_simulated, 4), "power": e(v.power_balance_residual),
             "step": f(v.fd_step * DEG, 3),
         },
     }

@@ -132,7 +132,9 @@ def model(syn: Synthesis, p: ShaperParams) -> lk.LinkageModel:
                                      "flywheel.rim_diameter_mm")),
         special_crank_angles=(np.pi / 2, 3 * np.pi / 2),
         names={"2": ("曲柄 O2A", "crank O2A"), "3": ("滑块 A", "slider A"),
-               "4": ("导杆 O3B", "guide bar O3B"), "5": ("连杆 BF", "rod BF"), "6": ("刨头", "ram")})
+               "4": ("导杆 O3B", "guide bar O3B"), "5": ("连杆 BF", "rod BF"), "6": ("刨头", "ram")},
+        group_labels={"guide bar (RPR)": ("导杆组 (RPR)", "guide bar (RPR)"),
+                      "ram (RRP)": ("刨头组 (RRP)", "ram (RRP)")})
 
 
 def motion(m: lk.LinkageModel, syn: Synthesis, p: ShaperParams, requests=None):

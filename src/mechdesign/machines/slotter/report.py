@@ -5,7 +5,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from ...render.fmt import f, md_meta, md_text
+from ...render.fmt import e, f, md_meta, md_text
+from ...render.fmt import in_lang, verdict
 from ...render import guide_bar_report as gb_report
 from ...render.linkage_report import linkage_context, verification_rows
 
@@ -34,14 +35,13 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
                 for w in (getattr(r[key], "warnings", ()) or ())]
     return {
         **gb_report.task_words(p, syn),
-        "meta": md_meta(brief.report), "data_rows": data_rows, "guide_bar": guide_bar,
+        "meta": md_meta(brief.report, lang), "data_rows": in_lang(data_rows, lang), "guide_bar": {**guide_bar, "rows": in_lang(guide_bar["rows"], lang)},
         "n2": f(p.crank_speed_rpm, 0), "sense_zh": "顺时针" if p.crank_omega < 0 else "逆时针",
         "sense_en": "clockwise" if p.crank_omega < 0 else "counter-clockwise",
         "idle_mm": f(p.idle_travel_ratio * H, 1), "cut_to": f((1 - p.idle_travel_ratio) * H, 1),
         "linkage": lkc, **gb_report.optional_sections(r, lang, figures),
         "verify_rows": verification_rows(v, lang, k)
-        + [["行程误差 / mm" if zh else "stroke error / mm", f((v.stroke - p.stroke) * mm, 6),
-            "0", ("满足" if zh else "ok") if abs(v.stroke - p.stroke) <= 1e-9 else
-            ("不满足" if zh else "fails")]],
+        + [["行程误差 / mm" if zh else "stroke error / mm", e((v.stroke - p.stroke) * mm),
+            "0", verdict(abs(v.stroke - p.stroke) <= 1e-9, "zh" if zh else "en")]],
         "findings": findings,
     }

@@ -72,7 +72,9 @@ def model(syn: Synthesis, p: SlotterParams) -> lk.LinkageModel:
         special_crank_angles=(0.0, np.pi),   # the crank level with O2O3: the bar at its mid-swing
         names={"2": ("曲柄 O2A", "crank O2A"), "3": ("滑块 A", "slider A"),
                "4": ("导杆 O3B", "guide bar O3B"), "5": ("连杆 BC", "rod BC"),
-               "6": ("插刀滑枕", "ram")})
+               "6": ("插刀滑枕", "ram")},
+        group_labels={"guide bar (RPR)": ("导杆组 (RPR)", "guide bar (RPR)"),
+                      "ram (RRP)": ("滑枕组 (RRP)", "ram (RRP)")})
 
 
 def _synthesis(r: dict):

@@ -1,0 +1,225 @@
+"""The words and numbers of every report (issue 19, points 3–5).
+
+* :mod:`mechdesign.render.fmt`'s number rule: no E-notation for ordinary magnitudes, no
+  negative zero, large numbers grouped by threes, residuals as powers of ten, one verdict
+  vocabulary per language;
+* the Markdown of every example brief in both languages (built from the computed results
+  and the templates, without figures or PDF: the figure paths are placeholders) is scanned
+  for Chinese in an English report outside the user's text, English prose in a Chinese
+  report (a whitelist of units, symbols, file and program names), raw subscript markup
+  outside math, E-notation, negative zeros, verdict words of the other language and doubled
+  cross-reference words.
+"""
+from __future__ import annotations
+
+import importlib
+import re
+
+import pytest
+
+from mechdesign.render import fmt
+from tests.conftest import DESIGNS
+
+EXAMPLES = sorted(p.stem for p in DESIGNS.glob("*.yaml"))
+
+# ------------------------------------------------------------------------------ fmt rules
+
+
+@pytest.mark.parametrize("x, text", [
+    (-0.0004, "0.00"), (-0.0, "0.00"), (-0.004999, "0.00"), (-0.005001, "-0.01"),
+    (12.345, "12.35"), (1e6, "1000000.00"),
+])
+def test_f_never_writes_a_negative_zero(x, text):
+    assert fmt.f(x) == text
+
+
+def test_f_groups_large_numbers_only_when_asked():
+    # GB 3101 / ISO 80000-1: groups of three digits separated by a (narrow) space
+    assert fmt.f(1e6, 1, group=True) == "1\u202f000\u202f000.0"
+    assert fmt.f(12698.4, 1, group=True) == "12\u202f698.4"
+    assert fmt.f(9999.5, 1, group=True) == "9999.5"           # four digits stay together
+    assert fmt.f(-12345.6, 0, group=True) == "-12\u202f346"
+    assert fmt.f(99480, 0) == "99480"                          # inside a formula: no spaces
+
+
+@pytest.mark.parametrize("x, text", [
+    (48000.0, "48\u202f000"), (12698.4, "12\u202f700"), (0.065999, "0.06600"),
+    (266.666, "266.7"), (9.99996, "10.00"), (1.0, "1.000"), (0.00012345, "0.0001234"),
+    (-255.66, "-255.7"), (0.0, "0"), (float("nan"), "—"),
+])
+def test_sig_four_significant_digits_in_fixed_point(x, text):
+    assert fmt.sig(x) == text
+
+
+@pytest.mark.parametrize("x", [1e-12, 3.7e-6, 0.5, 4.8e4, 1e6, 1.23456e9, -2.2e-16])
+def test_no_e_notation_from_sig_or_e(x):
+    for text in (fmt.sig(x), fmt.e(x)):
+        assert not re.search(r"\d[eE][-+]?\d", text), text
+
+
+@pytest.mark.parametrize("x, text", [
+    (2.2e-16, "2.2 × 10⁻¹⁶"), (-1.1e-13, "-1.1 × 10⁻¹³"), (1e-9, "1.0 × 10⁻⁹"),
+    (0.0, "0"), (0.5, "0.50"), (3.7e-6, "3.7 × 10⁻⁶"),
+])
+def test_e_writes_residuals_as_powers_of_ten(x, text):
+    assert fmt.e(x) == text
+
+
+@pytest.mark.parametrize("x", [2.2e-16, -1.1e-13, 0.0, 12345.6, 0.5, 3.7e-6])
+def test_number_reads_back_what_the_formatters_wrote(x):
+    assert fmt.number(fmt.e(x)) == pytest.approx(x, rel=0.05, abs=0.0)
+    assert fmt.number(fmt.sig(x)) == pytest.approx(x, rel=1e-3, abs=0.0)
+
+
+def test_verdicts_and_bilingual_labels():
+    assert [fmt.verdict(ok, "zh") for ok in (True, False)] == ["合格", "不合格"]
+    assert [fmt.verdict(ok, "en") for ok in (True, False)] == ["PASS", "FAIL"]
+    assert fmt.in_lang("导杆 / guide bar", "zh") == "导杆"
+    assert fmt.in_lang("导杆 / guide bar", "en") == "guide bar"
+    assert fmt.in_lang("n / rpm", "zh") == "n / rpm"            # not a 中文 / English label
+    assert fmt.in_lang(["$H$", "行程 / stroke"], "en") == ["$H$", "stroke"]
+
+
+# ------------------------------------------------------------------------ the reports
+
+
+_CAM_FIGURES = sorted(set(re.findall(r"cam\.fig\.(\w+)", (DESIGNS.parent / "templates" /
+                                                        "cam_section.en.md.j2").read_text("utf-8"))))
+
+
+class _Figures(dict):
+    """Figure paths for a context without drawing the figures: any key is a placeholder
+    (the cycle diagrams listed, as a context may pick them out by their prefix)."""
+
+    def __init__(self):
+        keys = ["cycle_linear", "cycle_circular"] + [f"bcam_{k}" for k in _CAM_FIGURES]
+        super().__init__({k: f"figures/{k}.png" for k in keys})
+
+    def __missing__(self, key):
+        return f"figures/{key}.png"
+
+    def get(self, key, default=None):
+        return self[key]
+
+
+_CACHE: dict = {}
+
+
+def _markdown(example_results, name: str, lang: str) -> tuple[str, object]:
+    """The report.md of designs/<name>.yaml in ``lang`` (no figures, no sheets), and its brief."""
+    if (name, lang) not in _CACHE:
+        from mechdesign.machines import get_machine
+        from mechdesign.render.report import render_markdown, template_dir
+        from mechdesign.runner import _with_requested
+
+        r = example_results(name)
+        brief = r["brief"]
+        machine = get_machine(brief.machine)
+        report = importlib.import_module(machine.report_module)
+        figs = _Figures()
+        ctx = _with_requested(report.context(r, brief, figs, lang), r, brief, figs, lang)
+        ctx["sheets"] = []
+        _CACHE[name, lang] = (render_markdown(f"{machine.name}.{lang}.md.j2", ctx, template_dir(None)),
+                              brief)
+    return _CACHE[name, lang]
+
+
+def _prose(md: str) -> str:
+    """The Markdown without math, code, figure paths and attributes (what the reader sees
+    as words)."""
+    md = re.sub(r"\$\$.*?\$\$", " ", md, flags=re.S)
+    md = re.sub(r"(?<!\\)\$[^$\n]*?(?<!\\)\$", " ", md)
+    md = re.sub(r"`[^`\n]*`", " ", md)
+    md = re.sub(r"!\[([^\]]*)\]\([^)]*\)", r"\1", md)
+    md = re.sub(r"\{[#.][^}]*\}|\{width=[^}]*\}", " ", md)
+    md = re.sub(r"\[@[^\]]*\]", " ", md)
+    return md
+
+
+def _user_text(brief) -> list[str]:
+    """Every string the user wrote in the brief (names, titles, labels): may be any language."""
+    out = []
+
+    def walk(x):
+        if isinstance(x, str):
+            out.append(x)
+        elif isinstance(x, dict):
+            for v in x.values():
+                walk(v)
+        elif isinstance(x, (list, tuple)):
+            for v in x:
+                walk(v)
+        elif hasattr(x, "model_dump"):
+            walk(x.model_dump())
+
+    walk(brief)
+    return sorted({s for s in out if s.strip()}, key=len, reverse=True)
+
+
+_CJK = re.compile(r"[\u3000-\u303f\u3400-\u9fff\uff00-\uffef]")
+# Words an engineer writes in a Chinese report as they are: units, program and file
+# formats, standard and drawing-layer names, Greek/Latin symbols' names are not words.
+_ZH_ALLOWED = {
+    "rpm", "min", "max", "mm", "kW", "kg", "MPa", "Markdown", "PDF", "DXF", "CSV", "PNG", "GIF",
+    "Word", "AutoCAD", "CAXA", "OUTLINE", "CENTER", "CONSTRUCTION", "DIMENSIONS", "TEXT",
+    "VECTORS", "CURVES", "FRAME", "HIDDEN", "HATCH", "Grashof", "Coriolis", "ISO", "GB", "JB", "HT", "ZG", "HBW", "HRC", "SI", "II", "III", "IV", "cos", "sin",
+    "tan", "arccos", "arcsin", "arctan", "sqrt", "log", "exp",
+}
+
+
+def _zh_words(text: str) -> set[str]:
+    """Latin words of four letters or more, less the allowed ones, point labels (ABCD) and
+    the brief's field names a warning names so that the user can change them
+    (``gear_pair.x1``: a field path is one token, not prose)."""
+    words = set(re.findall(r"(?<![\w\\._])[A-Za-z]{4,}(?![\w\\._])", text)) - _ZH_ALLOWED
+    return {w for w in words if not (w.isupper() and len(w) <= 5)}
+
+
+@pytest.mark.parametrize("name", EXAMPLES)
+def test_english_reports_have_no_chinese_outside_the_users_text(example_results, name):
+    md, brief = _markdown(example_results, name, "en")
+    text = _prose(md)
+    for s in _user_text(brief):          # the user's text may be Chinese: take it out first
+        text = text.replace(fmt.md_text(s), " ").replace(s, " ")
+    bad = [line.strip() for line in text.splitlines() if _CJK.search(line)]
+    assert not bad, "\n".join(bad[:10])
+
+
+@pytest.mark.parametrize("name", EXAMPLES)
+def test_chinese_reports_have_no_english_prose(example_results, name):
+    md, brief = _markdown(example_results, name, "zh")
+    text = _prose(md)
+    for s in _user_text(brief):
+        text = text.replace(fmt.md_text(s), " ").replace(s, " ")
+    bad = [(sorted(_zh_words(line)), line.strip()[:120]) for line in text.splitlines()
+           if _zh_words(line)]
+    assert not bad, "\n".join(map(str, bad[:10]))
+    for word in ("crank-rocker", "minimize_scalar", "scipy", "YAML"):
+        assert word not in md
+
+
+@pytest.mark.parametrize("lang", ["zh", "en"])
+@pytest.mark.parametrize("name", EXAMPLES)
+def test_numbers_symbols_and_verdicts(example_results, name, lang):
+    md, _ = _markdown(example_results, name, lang)
+    text = _prose(md)
+    lines = text.splitlines()
+    # no E-notation (4.8e+04, 2.2e-16) in prose or tables
+    assert not [ln for ln in lines if re.search(r"\d[eE][-+]?\d", ln)]
+    # no negative zero: -0, -0.0, −0.000 (a number that rounds to zero is written 0)
+    assert not [ln for ln in lines if re.search(r"(?<![\w.])[-−]0(\.0+)?(?![.\d])", ln)]
+    # subscripts are typeset: no r_r, J_S, P_末, M_b outside math (escaped \_ is user text)
+    assert not [ln for ln in lines if re.search(r"(?<![\\\w])[A-Za-zα-ωΔΣ]_[A-Za-z0-9{\u4e00-\u9fff]", ln)]
+    # verification tables: no 6–10 decimals
+    assert not [ln for ln in lines if ln.startswith("|") and re.search(r"\d\.\d{7,}", ln)]
+    # one verdict vocabulary
+    table_cells = {c.strip().strip("*") for ln in lines if ln.startswith("|") for c in ln.split("|")}
+    other = {"zh": {"PASS", "FAIL", "ok", "fails", "met", "not met", "满足", "不满足", "✓", "✗"},
+             "en": {"合格", "不合格", "满足", "不满足", "ok", "fails", "met", "not met", "✓", "✗"}}[lang]
+    assert not table_cells & other, table_cells & other
+    # a cross-reference appears once: "图 图 2" / "Fig. Fig. 2" from a word before [@fig:…]
+    assert not re.search(r"(图|表|式)\s*\[@(fig|tbl|eq):", md)
+    assert not re.search(r"(Fig\.|Figure|Table|Eq\.)\s*\[@(fig|tbl|eq):", md)
+    if lang == "en":    # no full-width punctuation in English text
+        assert not [ln for ln in lines if not re.search("[\u3400-\u9fff]", ln)
+                    and re.search("[（）：；，、]", ln)]
