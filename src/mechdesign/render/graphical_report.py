@@ -20,12 +20,12 @@ from .fmt import f, mpl_text
 
 _T = {
     "zh": {"vel": "速度多边形", "acc": "加速度多边形", "fbd": "受力图", "force": "力多边形",
-           "guide": "∥导路", "bar": "∥导杆 {}", "rot": "v_r 沿 ω{} 转 90°", "known": "已求",
+           "guide": "∥导路", "bar": "∥导杆 {}", "rot": "$v_r$ 沿 ω{} 转 90°", "known": "已求",
            "mag": "大小", "dir": "方向", "pos": "位置", "group": "杆组", "crank": "曲柄",
            "doc": "{}", "links": "构件"},
     "en": {"vel": "velocity polygon", "acc": "acceleration polygon", "fbd": "free body",
            "force": "force polygon", "guide": "∥ guide", "bar": "∥ bar {}",
-           "rot": "v_r turned 90° with ω{}", "known": "known", "mag": "magnitude",
+           "rot": "$v_r$ turned 90° with ω{}", "known": "known", "mag": "magnitude",
            "dir": "direction", "pos": "position", "group": "group", "crank": "crank",
            "doc": "{}", "links": "links"},
 }
