@@ -182,3 +182,36 @@ def test_briefs_without_sheets_before_now_write_pdf_and_dxf(name, tmp_path):
     for f in files:
         assert (tmp_path / f.pdf).read_bytes().startswith(b"%PDF")
         assert (tmp_path / f.dxf).stat().st_size > 1000
+
+
+def test_a_run_without_sheets_says_so_when_dxf_is_asked(tmp_path, capsys):
+    from mechdesign.render.sheets import make_sheets
+
+    collect = make_sheets({}, None, tmp_path, tmp_path, "en", ("md", "dxf"))
+    assert collect() == []
+    assert "no drawing sheet" in capsys.readouterr().err
+    make_sheets({}, None, tmp_path, tmp_path, "zh", ("md", "dxf"))
+    assert "没有可绘制的图纸" in capsys.readouterr().err
+    make_sheets({}, None, tmp_path, tmp_path, "zh", ("md", "pdf"))
+    assert capsys.readouterr().err == ""
+
+
+def test_a_diagram_that_cannot_be_drawn_is_left_out_with_a_line(tmp_path, capsys):
+    """A new diagram that fails for a user's geometry: the other sheets are written, the
+    run says which sheet is missing and why; the existing sheets still raise."""
+    from types import SimpleNamespace
+
+    from mechdesign.render.sheets import write_all
+
+    def bad(info, lang):
+        raise ValueError("the layout does not fit")
+
+    meta = SimpleNamespace(title="t", student="", student_id="", class_name="", teacher="", date="")
+    brief = SimpleNamespace(report=meta, sheets=None)
+    (tmp_path / "f").mkdir()
+    files = write_all([("kinematic", bad)], brief, tmp_path, tmp_path / "f", "en", ("dxf",))
+    assert files == []
+    err = capsys.readouterr().err
+    assert "Kinematic diagram could not be drawn (the layout does not fit)" in err
+    with pytest.raises(ValueError):
+        write_all([("analysis", bad)], brief, tmp_path, tmp_path / "f", "en", ("dxf",))
