@@ -271,7 +271,7 @@ def test_brief_without_gear_cam_drive_renders(tmp_path):
     assert doc["gear"] is None and doc["cam"] is None and doc["drive"] is None
     assert doc["synthesis"]["crank"] == 0.09 and doc["synthesis"]["guide_bar"] == 0.58
     sheets = sorted(p.name for p in (out / "sheets").iterdir())
-    assert sheets == ["analysis_A1.dxf"]
+    assert sheets == ["analysis_A1.dxf", "kinematic_A3.dxf"]   # no cam, gear or drive sheet
 
 
 # --------------------------------------------------------------------- errors at the field

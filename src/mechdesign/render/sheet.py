@@ -824,3 +824,39 @@ class LabelPlacer:
         self.sheet.fill(anchor + 0.6 * np.exp(1j * np.linspace(0, 2 * np.pi, 9)[:-1]), layer)
         self.sheet.text(complex((b[0] + b[2]) / 2, elbow.imag + 0.8), text, height,
                         "TEXT" if layer == "CONSTRUCTION" else layer, "center", "bottom")
+
+
+# -- more GB/T 4460 symbols for the kinematic diagrams (机构运动简图) ----------------------
+
+def hatched_line(sheet_or_view, z0, z1, side: complex = -1j, step: float = 3.0,
+                 length: float = 2.5, weight: float = 0.5) -> None:
+    """A frame line z0 → z1 (e.g. a fixed slider guide) with short 45° hatch strokes on
+    ``side`` (a direction relative to z0 → z1: −1j to the right of it), paper mm."""
+    s = sheet_or_view.sheet if isinstance(sheet_or_view, View) else sheet_or_view
+    p0 = sheet_or_view.p(z0) if isinstance(sheet_or_view, View) else complex(z0)
+    p1 = sheet_or_view.p(z1) if isinstance(sheet_or_view, View) else complex(z1)
+    s.line(p0, p1, "OUTLINE", weight)
+    span = abs(p1 - p0)
+    if span < 1e-9:
+        return
+    u = (p1 - p0) / span
+    n = u * side / abs(side)
+    count = max(int(span / step), 1)
+    for t in np.linspace(0.0, span, count + 1)[:-1] + 0.5 * span / (count + 1):
+        q = p0 + u * t
+        s.line(q, q + length * (n - u) / np.sqrt(2.0), "CONSTRUCTION")
+
+
+def turn_arrow(sheet: Sheet, centre: complex, radius: float, ccw: bool, start: float = 0.25 * np.pi,
+               sweep: float = 0.6 * np.pi, layer: str = "OUTLINE", head: float = 2.5) -> complex:
+    """A turning-direction arrow (ω) about ``centre`` [paper mm]: an arc of ``sweep`` from
+    ``start`` with a filled head at its end in the turning sense. Returns the arc's middle."""
+    a0, a1 = (start, start + sweep) if ccw else (start + sweep, start)
+    lo, hi = min(a0, a1), max(a0, a1)
+    sheet.arc(centre, radius, lo, hi, layer, 0.35)
+    tip = centre + radius * np.exp(1j * a1)
+    tangent = 1j * np.exp(1j * a1) * (1 if ccw else -1)
+    base = tip - head * tangent
+    w = 0.35 * head
+    sheet.fill([tip, base + 1j * tangent * w, base - 1j * tangent * w], layer)
+    return centre + radius * np.exp(1j * (lo + hi) / 2)

@@ -1,7 +1,10 @@
 """The drawing sheets of a run: which sheets a machine's results give, their title
 blocks, and the files (vector PDF, DXF, PNG preview for the report).
 
-Sheets: the analysis sheet (A1) for any linkage run through the shared linkage stages
+Sheets: the kinematic diagram (A3, :mod:`.kinematic_sheet`) of every machine with a
+mechanism (a linkage, the crank-rocker brief, a cam, the eccentric disc), the
+transmission schematic (A3) of a drive, the motion cycle diagram (A3, :mod:`.cycle_sheet`)
+of a cycle result, the analysis sheet (A1) for any linkage run through the shared linkage stages
 (the shaper, the slotter, the furnace pusher, the die-cutter press, the lock-beam feed,
 ``linkage`` briefs), the cam sheet (A2) when they have a synthesised cam, the gear meshing
 sheet when they have a gear pair. Files go to ``sheets/`` (``NAME.pdf`` with the pdf
@@ -19,10 +22,26 @@ from .fmt import meta_text, plain_line
 from .sheet import Sheet, TitleInfo
 
 TITLES = {
+    "kinematic": {"zh": "机构运动简图", "en": "Kinematic diagram"},
+    "transmission": {"zh": "传动系统示意图", "en": "Transmission schematic"},
+    "cycle": {"zh": "运动循环图", "en": "Motion cycle diagram"},
     "analysis": {"zh": "机构运动及动力分析图", "en": "Linkage: kinematic and force analysis"},
     "cam": {"zh": "凸轮机构设计图", "en": "Cam mechanism design"},
     "gear": {"zh": "齿轮啮合图", "en": "Gear meshing drawing"},
 }
+
+
+NO_SHEETS = {"zh": "提示：该设计没有可绘制的图纸（无机构、凸轮、传动或运动循环结果），未写出 DXF 文件",
+             "en": "note: this design has no drawing sheet (no mechanism, cam, drive or cycle "
+                   "results), so no DXF file is written"}
+
+
+# sheets added to the hand-in by the diagrams (issue 19): one that cannot be drawn for a
+# user's brief (a geometry the layout does not handle) is left out with a printed line,
+# the report and the other sheets are still written
+OPTIONAL = {"kinematic", "transmission", "cycle"}
+NOT_DRAWN = {"zh": "提示：{t}无法绘制（{e}），未写出该图的 PDF/DXF 文件",
+             "en": "note: the {t} could not be drawn ({e}); no PDF/DXF written for it"}
 
 
 @dataclass(frozen=True)
@@ -71,6 +90,7 @@ def linkage_results(results: dict) -> LinkageResults | None:
 def _builders(results: dict, brief) -> list[tuple[str, Callable[[TitleInfo, str], Sheet]]]:
     out = []
     found = linkage_results(results)
+    out.extend(_diagram_builders(results, found))
     if found is not None:
         def analysis(info, lang):
             from .analysis_sheet import analysis_sheet
@@ -97,6 +117,37 @@ def _builders(results: dict, brief) -> list[tuple[str, Callable[[TitleInfo, str]
     return out
 
 
+def _diagram_builders(results: dict, found) -> list:
+    """The kinematic diagram (linkage, crank-rocker, cam or eccentric disc), the
+    transmission schematic (a drive) and the cycle diagram (a cycle result) of ``results``."""
+    from . import kinematic_sheet as ks
+
+    out = []
+    cam = results.get("cam")
+    if found is not None:
+        out.append(("kinematic", lambda info, lang: ks.linkage_diagram(found, info, lang)))
+    elif results.get("optimum") is not None and hasattr(results["optimum"], "best"):
+        opt, slider = results["optimum"], results.get("slider")
+        out.append(("kinematic", lambda info, lang: ks.crank_rocker_diagram(opt, slider, info, lang)))
+    elif cam is not None and hasattr(cam, "grid"):
+        out.append(("kinematic", lambda info, lang: ks.cam_diagram(cam, info, lang)))
+    elif results.get("disc") is not None:
+        disc = results["disc"]
+        out.append(("kinematic", lambda info, lang: ks.disc_diagram(disc, info, lang)))
+    drive = results.get("drive")
+    if drive is not None and getattr(drive, "stages", None):
+        out.append(("transmission", lambda info, lang: ks.drive_schematic(drive, info, lang)))
+    cycle = results.get("cycle")
+    if cycle is not None and hasattr(cycle, "diagram"):
+        def cycle_builder(info, lang):
+            from .cycle_sheet import cycle_sheet
+
+            return cycle_sheet(cycle.diagram, info, lang)
+
+        out.append(("cycle", cycle_builder))
+    return out
+
+
 def title_info(meta, drawing: str, number: str, index: int, count: int, lang: str) -> TitleInfo:
     """The title block's strings; the brief's text as one line each (a title block cell
     holds one line; the backends print the text as written)."""
@@ -118,6 +169,10 @@ def make_sheets(results: dict, brief, folder: Path, fig_dir: Path, lang: str,
 
     builders = _builders(results, brief)
     if not builders:
+        if "dxf" in formats:
+            import sys
+
+            print(NO_SHEETS[lang], file=sys.stderr)
         return lambda: []
     manifest = Path(folder) / ".sheets.json"
 
@@ -155,7 +210,15 @@ def write_all(builders: list, brief, folder: Path, fig_dir: Path, lang: str,
         say(f"sheet {k}/{len(builders)}: {name}")
         info = title_info(brief.report, TITLES[name][lang], f"{prefix}-{k:02d}" if prefix else "",
                           k, len(builders), lang)
-        sheet = build(info, lang)
+        try:
+            sheet = build(info, lang)
+        except (ValueError, ArithmeticError) as exc:
+            if name not in OPTIONAL:
+                raise
+            import sys
+
+            print(NOT_DRAWN[lang].format(t=TITLES[name][lang], e=exc), file=sys.stderr)
+            continue
         preview = Path(fig_dir) / f"sheet_{name}.png"
         pdf = dxf = None
         if "pdf" in formats or "dxf" in formats:

@@ -1,0 +1,143 @@
+"""The motion cycle diagram sheet (运动循环图, A3): the linear (rectangular) diagram of a
+machine's :class:`~mechdesign.core.cycle.CycleDiagram` against the main-shaft angle φ —
+one bar per actuator, each phase a box from its start to its end with its name, the
+phase boundaries' angles written under the bar, φ from the diagram's origin over one
+turn at a stated scale μφ (°/mm) — and a table of the phases. Only reads the result."""
+from __future__ import annotations
+
+from dataclasses import replace
+
+import numpy as np
+
+from .sheet import (LabelPlacer, Sheet, TitleInfo, fit_height, format_number, frame, heading,
+                    table, text_width, title_block_box)
+
+DEG = 180.0 / np.pi
+MU_PHI = (1.0, 1.25, 1.5, 2.0)          # angle scales [°/mm], preferred first
+STATE_NAMES = {
+    "zh": {"rise": "升", "return": "回", "dwell_high": "远休", "dwell_low": "近休", "move": "运动",
+           "dwell": "停歇"},
+    "en": {"rise": "rise", "return": "return", "dwell_high": "dwell (high)",
+           "dwell_low": "dwell (low)", "move": "move", "dwell": "dwell"},
+}
+LABELS = {
+    "zh": {"title": "运动循环图（直线式）", "phi": "主轴转角 φ (°)", "scale": "角度比例 μφ = {m} °/mm",
+           "table": "各执行构件的运动阶段", "actuator": "执行构件", "phase": "阶段",
+           "start": "起始 φ (°)", "end": "终止 φ (°)", "span": "转角 Δφ (°)", "period": "周期 T = {t} s"},
+    "en": {"title": "Motion cycle diagram (linear)", "phi": "main-shaft angle φ (°)",
+           "scale": "angle scale μφ = {m} °/mm", "table": "Phases of the actuators",
+           "actuator": "Actuator", "phase": "Phase", "start": "start φ (°)", "end": "end φ (°)",
+           "span": "span Δφ (°)", "period": "period T = {t} s"},
+}
+
+
+def pieces(start: float, span: float, origin: float) -> list[tuple[float, float]]:
+    """A phase [start, start + span) [°] as pieces inside [origin, origin + 360)."""
+    s = origin + np.mod(start - origin, 360.0)
+    if s >= origin + 360.0 - 1e-9:
+        s -= 360.0
+    end = s + span
+    if end <= origin + 360.0 + 1e-9:
+        return [(s, end)]
+    return [(s, origin + 360.0), (origin, end - 360.0)]
+
+
+def phase_name(ph, lang: str) -> str:
+    text = ph.label_zh if lang == "zh" else ph.label_en
+    return text or STATE_NAMES[lang].get(ph.state, ph.state)
+
+
+def _phase_label(s: Sheet, text: str, state: str, xa: float, xb: float, yb: float,
+                 yt: float) -> None:
+    """A phase's name inside its box: a dwell's centred; a rise's (return's) in the upper
+    left (right) corner, clear of the diagonal — as large as fits (3 mm down to 1.8 mm),
+    left out when it does not fit (the table under the diagram names every phase)."""
+    width, bar_h = xb - xa, yt - yb
+    for h in (3.0, 2.5, 2.0, 1.8):
+        w = text_width(text, h)
+        if state in ("rise", "move", "return"):
+            # the diagonal at the text's bottom edge is (1 + h)/bar_h of the width in from
+            # the corner opposite the text
+            room = width * (1.0 - (1.0 + h) / bar_h) - 1.5
+            if w <= room:
+                if state == "return":
+                    s.text(complex(xb - 1.0, yt - 1.0), text, h, "TEXT", "right", "top")
+                else:
+                    s.text(complex(xa + 1.0, yt - 1.0), text, h, "TEXT", "left", "top")
+                return
+        elif w <= width - 2.0:
+            s.text(complex((xa + xb) / 2, (yt + yb) / 2), text, h, "TEXT", "center", "middle")
+            return
+
+
+def cycle_sheet(diagram, info: TitleInfo, lang: str) -> Sheet:
+    """The A3 cycle sheet of ``diagram`` (core.cycle.CycleDiagram) at the smallest angle
+    scale μφ of 1, 1.25, 1.5, 2 °/mm whose 360° fit the sheet beside the actuators' names."""
+    lab = LABELS[lang]
+    s = Sheet("A3")
+    x0, y0, x1, y1 = s.inner
+    acts = list(diagram.actuators)
+    names = [a.name_zh if lang == "zh" else a.name_en for a in acts]
+    name_w = max(text_width(nm, 3.5) for nm in names) + 8.0
+    left = x0 + 8.0 + name_w
+    mu = next((m for m in MU_PHI if 360.0 / m <= x1 - 14.0 - left), MU_PHI[-1])
+    frame(s, replace(info, scale=f"μφ = {format_number(mu)} °/mm"))
+    tb = title_block_box(s)
+    origin = float(diagram.origin) * DEG
+    width = 360.0 / mu
+    right = left + width
+    heading(s, complex((left + right) / 2, y1 - 12.0), lab["title"], 5.0)
+    bar_h, gap = 10.0, 9.0
+    top = y1 - 22.0
+    placer = LabelPlacer(s)
+    for r, (act, nm) in enumerate(zip(acts, names)):
+        yt = top - r * (bar_h + gap)
+        yb = yt - bar_h
+        s.text(complex(left - 4.0, (yt + yb) / 2), nm, fit_height(nm, name_w - 6, 3.5), "TEXT",
+               "right", "middle")
+        s.polyline([complex(left, yb), complex(right, yb), complex(right, yt), complex(left, yt)],
+                   "OUTLINE", closed=True, weight=0.5)
+        marks = set()
+        for ph in act.phases:
+            a, span = float(ph.start) * DEG, float(ph.span) * DEG
+            for p0, p1 in pieces(a, span, origin):
+                xa, xb = left + (p0 - origin) / mu, left + (p1 - origin) / mu
+                for xv, val in ((xa, p0), (xb, p1)):
+                    if left + 1e-6 < xv < right - 1e-6:
+                        s.line(complex(xv, yb), complex(xv, yt), "OUTLINE", 0.5)
+                        marks.add(round(val % 360.0, 6))
+                if ph.state in ("rise", "move"):
+                    s.line(complex(xa, yb), complex(xb, yt), "CONSTRUCTION")
+                elif ph.state == "return":
+                    s.line(complex(xa, yt), complex(xb, yb), "CONSTRUCTION")
+                _phase_label(s, phase_name(ph, lang), ph.state, xa, xb, yb, yt)
+        for val in sorted(marks):
+            xv = left + ((val - origin) % 360.0) / mu
+            s.text(complex(xv, yb - 1.0), format_number(val, 4), 2.5, "TEXT", "center", "top")
+    # the φ axis under the bars
+    ybar = top - len(acts) * (bar_h + gap) + gap - 8.0
+    s.line(complex(left, ybar), complex(right + 6.0, ybar), "OUTLINE", 0.35)
+    s.fill([complex(right + 8.0, ybar), complex(right + 5.0, ybar + 1.0), complex(right + 5.0, ybar - 1.0)])
+    for t in np.arange(0.0, 361.0, 30.0):
+        xv = left + t / mu
+        s.line(complex(xv, ybar), complex(xv, ybar + 1.5), "OUTLINE", 0.35)
+        s.text(complex(xv, ybar - 1.5), format_number((origin + t) % 360.0 if t < 360 else (origin % 360.0 or 360.0), 4),
+               2.5, "TEXT", "center", "top")
+    s.text(complex((left + right) / 2, ybar - 7.0), lab["phi"], 3.5, "TEXT", "center", "top")
+    # the phases as a table, under the diagram, left of the title block
+    rows = []
+    for act, nm in zip(acts, names):
+        for ph in act.phases:
+            a = float(ph.start) * DEG
+            rows.append([nm, phase_name(ph, lang), format_number(a % 360.0, 4),
+                         format_number((a + float(ph.span) * DEG) % 360.0, 4),
+                         format_number(float(ph.span) * DEG, 4)])
+    ytable = ybar - 15.0
+    row_h = min(6.0, (ytable - y0 - 6.0) / (len(rows) + 2))
+    table(s, x0 + 8.0, ytable, [40, 40, 30, 30, 30], rows,
+          head=[lab["actuator"], lab["phase"], lab["start"], lab["end"], lab["span"]],
+          title=lab["table"], title_height=3.5, height=min(3.0, row_h * 0.55), row_h=row_h)
+    period = 2 * np.pi / float(diagram.shaft_speed)
+    s.text(complex(tb[0], tb[3] + 8.0), lab["scale"].format(m=format_number(mu)) + "   "
+           + lab["period"].format(t=format_number(period, 4)), 3.5, "TEXT")
+    return s

@@ -1,0 +1,665 @@
+"""The kinematic diagram sheets (机构运动简图, A3): every machine's mechanism at one position
+drawn to a GB length scale with the GB/T 4460 symbols — frame pivots (circle on a hatched
+base), revolute pins (small circles), sliders (blocks; on a fixed guide the guide is a
+hatched frame line), cams (the actual profile) with their followers, the links numbered,
+the crank's turning direction, the scale μL in the heading and the title block — and the
+transmission schematic (传动系统示意图) of a drive: motor, belt, gear pairs (pitch circles),
+worm, the shafts numbered with their speed, power and torque.
+
+Each builder only reads results: :func:`linkage_diagram` (any linkage run through the shared
+linkage stages, at position 1), :func:`crank_rocker_diagram` (the crank-rocker brief's
+optimum, at its first extreme position, and its offset slider-crank), :func:`cam_diagram`
+(a synthesised cam at δ = 0), :func:`disc_diagram` (the eccentric disc cam at δ = 0) and
+:func:`drive_schematic`.
+"""
+from __future__ import annotations
+
+from dataclasses import replace
+
+import numpy as np
+
+from .sheet import (LabelPlacer, Sheet, TitleInfo, fit_height, format_number, frame, ground,
+                    hatched_line, heading, length_scale, pin, scale_text, slider_block, table,
+                    text_width, title_block_box, turn_arrow)
+
+MM = 1e3
+SIZE = "A3"
+
+LABELS = {
+    "zh": {"diagram": "机构运动简图", "drive": "传动系统示意图", "position": "位置 {p}",
+           "scale": "长度比例 μL = {mu} m/mm（{s}）", "links": "构件：", "frame": "机架",
+           "crank_rocker": "曲柄摇杆机构（最优设计，摇杆在左极限位置 C1）",
+           "slider_crank": "偏置曲柄滑块机构（滑块在右极限位置）",
+           "cam": "凸轮机构（δ = 0，从动件在最低位置）", "disc": "偏心圆盘凸轮（δ = 0）",
+           "not_scale": "示意图，不按比例；圆为节圆（带轮为基准圆）",
+           "shaft": "轴", "n": "n (r/min)", "P": "P (kW)", "T": "T (N·m)",
+           "stage": "传动", "ratio": "传动比 i", "data": "参数", "motor": "电动机 {m}",
+           "shafts": "各轴运动和动力参数", "stages": "各级传动",
+           "omega": "ω", "guide": "导路"},
+    "en": {"diagram": "Kinematic diagram", "drive": "Transmission schematic", "position": "position {p}",
+           "scale": "length scale μL = {mu} m/mm ({s})", "links": "Links: ", "frame": "frame",
+           "crank_rocker": "Crank-rocker (optimum design, rocker at its first extreme C1)",
+           "slider_crank": "Offset slider-crank (slider at its right extreme)",
+           "cam": "Cam mechanism (δ = 0, follower at its lowest)", "disc": "Eccentric disc cam (δ = 0)",
+           "not_scale": "schematic, not to scale; circles are pitch circles (pulleys: datum circles)",
+           "shaft": "Shaft", "n": "n (rpm)", "P": "P (kW)", "T": "T (N·m)",
+           "stage": "Stage", "ratio": "ratio i", "data": "data", "motor": "motor {m}",
+           "shafts": "Speed, power and torque of the shafts", "stages": "Stages",
+           "omega": "ω", "guide": "guide"},
+}
+
+ROMAN = ("0", "I", "II", "III", "IV", "V", "VI", "VII", "VIII")
+
+
+# ------------------------------------------------------------------ the common frame
+
+def _area(s: Sheet) -> tuple[float, float, float, float]:
+    """The drawing area: inside the border, above the title block's top, headed."""
+    x0, y0, x1, y1 = s.inner
+    tb = title_block_box(s)
+    return x0 + 10.0, tb[3] + 14.0, x1 - 10.0, y1 - 16.0
+
+
+def _fit(s: Sheet, pts_mm: np.ndarray, area, pad_paper: float = 18.0):
+    """(view, n) drawing the model points ``pts_mm`` [mm] at the largest GB reduction 1:n
+    that fits ``area`` less ``pad_paper`` on every side, centred."""
+    pts = np.asarray(pts_mm, dtype=complex)
+    lo = complex(pts.real.min(), pts.imag.min())
+    hi = complex(pts.real.max(), pts.imag.max())
+    ax0, ay0, ax1, ay1 = area
+    box = complex(ax1 - ax0 - 2 * pad_paper, ay1 - ay0 - 2 * pad_paper)
+    ext = complex(max(hi.real - lo.real, 1e-6), max(hi.imag - lo.imag, 1e-6))
+    n = length_scale(ext, box)
+    sc = 1.0 / n
+    centre = (lo + hi) / 2
+    return s.view(complex((ax0 + ax1) / 2, (ay0 + ay1) / 2) - sc * centre, sc), n
+
+
+def _start(info: TitleInfo, lab: dict, n: float | None) -> tuple[Sheet, TitleInfo]:
+    s = Sheet(SIZE)
+    info = replace(info, scale=scale_text(n) if n is not None else "—")
+    frame(s, info)
+    return s, info
+
+
+def _title(s: Sheet, text: str, area) -> None:
+    ax0, _, ax1, ay1 = area
+    heading(s, complex((ax0 + ax1) / 2, ay1 + 4.0), text, fit_height(text, ax1 - ax0, 5.0))
+
+
+def _notes(s: Sheet, lines: list[str]) -> None:
+    """Notes left of the title block, top line first."""
+    x0, y0, _, _ = s.inner
+    tb = title_block_box(s)
+    width = tb[0] - x0 - 14.0
+    for j, text in enumerate(lines):
+        s.text(complex(x0 + 6.0, tb[3] - 6.0 - 6.0 * j), text, fit_height(text, width, 3.5), "TEXT")
+
+
+def _scale_note(lab: dict, n: float) -> str:
+    return lab["scale"].format(mu=format_number(n / 1000.0), s=scale_text(n))
+
+
+def _omega_arrow(s: Sheet, view, pivot_mm: complex, radius_mm: float, ccw: bool,
+                 placer: LabelPlacer, lab: dict) -> None:
+    """The crank's turning arrow about its pivot, a little outside the crank circle, where
+    it crosses the fewest lines and labels already placed (eight places tried)."""
+    r = radius_mm * view.scale + 5.0
+    c = view.p(pivot_mm)
+    sweep = 0.45 * np.pi
+    best = None
+    for j in range(8):
+        start = 0.15 * np.pi + j * np.pi / 4
+        arc = c + (r + np.array([-1.5, 0.0, 1.5]))[:, None] * np.exp(1j * np.linspace(start, start + sweep, 12))
+        hits = sum(not placer.free((z.real - 0.8, z.imag - 0.8, z.real + 0.8, z.imag + 0.8))
+                   for z in arc.ravel())
+        if best is None or hits < best[0]:
+            best = (hits, start)
+    start = best[1]
+    mid = turn_arrow(s, c, r, ccw, start=start, sweep=sweep)
+    for t in np.linspace(start, start + sweep, 10):
+        placer.block(c + r * np.exp(1j * t), 1.0)
+    placer.place(mid, lab["omega"], 3.5, prefer=(mid - c), gap=1.5)
+
+
+# ------------------------------------------------------------------ linkages
+
+def _link_outline(zs: list) -> list:
+    """The points to join for one link: the two farthest apart when they are in line, else
+    all of them around their centre (a ternary link, closed)."""
+    zs = list(dict.fromkeys(complex(z) for z in zs))
+    if len(zs) <= 2:
+        return zs
+    _, a, b = max(((abs(p - q), p, q) for p in zs for q in zs), key=lambda t: t[0])
+    u = (b - a) / abs(b - a)
+    if all(abs((np.conj(u) * (z - a)).imag) < 1e-6 * abs(b - a) for z in zs):
+        return [a, b]
+    c = np.mean(zs)
+    ring = sorted(zs, key=lambda z: np.angle(z - c))
+    return ring + ring[:1]
+
+
+def linkage_positions(found, label: str = "1") -> int:
+    """Index of the drawn position among the textbook positions (position 1)."""
+    labels = [str(x) for x in found.motion.positions.labels]
+    return labels.index(label) if label in labels else 0
+
+
+def linkage_diagram(found, info: TitleInfo, lang: str) -> Sheet:
+    """The kinematic diagram of a linkage (``found``: sheets.LinkageResults) at position 1."""
+    from ..stages.linkage import link_members
+
+    lab = LABELS[lang]
+    model, k = found.model, found.motion
+    mech = model.mechanism
+    members, sliders = link_members(mech)
+    n_grid = k.grid_size
+    i = linkage_positions(found)
+    label = str(list(k.positions.labels)[i])
+    P = {name: complex(np.asarray(z)[n_grid + i]) * MM for name, z in k.points.items()}
+    joints = {j.point for js in mech.joints.values() for j in js} | set(mech.frame_points)
+    coms = {b.com for b in model.bodies if b.com is not None} - joints
+    loads = {r.point for r in model.resistances} - joints - coms
+    drawn = {nm: z for nm, z in P.items() if nm not in coms | loads}
+    crank = model.crank
+    pts = list(drawn.values())
+    piv = complex(mech.frame_points[crank.pivot]) * MM
+    pts += list(piv + crank.length * MM * np.exp(1j * np.linspace(0, 2 * np.pi, 13)))
+    guides = []
+    for slider, point, guide, gpoint in sliders:
+        if isinstance(guide, str):
+            continue
+        # the fixed guide over the slider's travel and a little beyond
+        u = np.exp(1j * guide)
+        g0 = complex(gpoint) * MM
+        t = (np.conj(u) * (np.asarray(k.points[point])[:n_grid] * MM - g0)).real
+        lo, hi = float(t.min()), float(t.max())
+        extra = max(0.12 * (hi - lo), 15.0)
+        a, b = g0 + u * (lo - extra), g0 + u * (hi + extra)
+        guides.append((slider, point, a, b, u))
+        pts += [a, b]
+    s = Sheet(SIZE)
+    area = _area(s)
+    view, n = _fit(s, np.array(pts), area)
+    info = replace(info, scale=scale_text(n))
+    frame(s, info)
+    placer = LabelPlacer(s, area=(s.inner[0] + 2, s.inner[1] + 2, s.inner[2] - 2, s.inner[3] - 2))
+    tb = title_block_box(s)
+    placer.block_box((tb[0] - 2, tb[1], tb[2], tb[3] + 2))
+    _title(s, f"{lab['diagram']}  {lab['position'].format(p=label)}  {scale_text(n)}", area)
+    # links (thick lines; a ternary link as a closed outline)
+    for link, names in members.items():
+        outline = _link_outline([P[p] for p in names if p in drawn])
+        if len(outline) >= 2:
+            view.polyline(np.array(outline), "OUTLINE")
+            for a, b in zip(outline[:-1], outline[1:]):
+                placer.block_segment(view.p(a), view.p(b), 1.5)
+    # fixed guides: hatched frame lines offset by half the block; sliders as blocks
+    for slider, point, a, b, u in guides:
+        side = -1j
+        hatched_line(view, a - 1j * u * 3.5 / view.scale, b - 1j * u * 3.5 / view.scale,
+                     side=side)
+        for off in (0.0, 3.5, 6.0):
+            placer.block_segment(view.p(a - 1j * u * off / view.scale),
+                                 view.p(b - 1j * u * off / view.scale), 1.0)
+    for slider, point, guide, _ in sliders:
+        ang = guide if not isinstance(guide, str) else float(np.asarray(k.link_angle[guide])[n_grid + i])
+        slider_block(view, P[point], ang, 10.0, 6.0 if not isinstance(guide, str) else 5.0)
+        placer.block(view.p(P[point]), 5.5)
+    for name in sorted(joints - set(mech.frame_points)):
+        if name in P:
+            pin(view, P[name])
+            placer.block(view.p(P[name]), 1.5)
+    for name, z in mech.frame_points.items():
+        ground(view, complex(z) * MM, 7.0)
+        placer.block(view.p(complex(z) * MM) - 3.5j, 5.0)
+    view.circle(piv, crank.length * MM, "CENTER")
+    _omega_arrow(s, view, piv, crank.length * MM, model.crank_omega > 0, placer, lab)
+    # names of the points, then the link numbers
+    mid = np.mean(list(drawn.values()))
+    for name in sorted(set(mech.frame_points) | (joints & set(P))):
+        d = P[name] - mid
+        placer.place(view.p(P[name]), name, 3.5, prefer=d if abs(d) > 1e-9 else 1j, gap=2.5)
+    numbered = []
+    for link, names in members.items():
+        outline = _link_outline([P[p] for p in names if p in drawn])
+        if len(outline) < 2:
+            continue
+        a, b = outline[0], outline[1]
+        d = (b - a) / abs(b - a) if abs(b - a) > 1e-9 else 1.0
+        placer.place(view.p(a + 0.45 * (b - a)), link, 3.5, prefer=1j * d, gap=2.0)
+        numbered.append(link)
+    for slider, point, guide, _ in sliders:
+        if slider not in numbered:
+            ang = guide if not isinstance(guide, str) else float(np.asarray(k.link_angle[guide])[n_grid + i])
+            placer.place(view.p(P[point]), slider, 3.5, prefer=1j * np.exp(1j * ang), gap=5.0)
+            numbered.append(slider)
+    names = getattr(model, "names", None) or {}
+    legend = "  ".join(f"{lk} {names[lk][0 if lang == 'zh' else 1]}" for lk in
+                       sorted(set(numbered), key=lambda x: (len(x), x)) if lk in names)
+    notes = [_scale_note(lab, n)]
+    if legend:
+        notes.append(lab["links"] + legend)
+    _notes(s, notes)
+    return s
+
+
+# ------------------------------------------------------------------ crank-rocker brief
+
+def crank_rocker_points(a: float, b: float, c: float, d: float) -> dict:
+    """Joint positions [same units] of the crank-rocker A B C D with A at the origin and D
+    on +x, at the rocker's first extreme C1 (crank and coupler folded: AC1 = b − a)."""
+    ac = b - a
+    cos_a = (ac ** 2 + d ** 2 - c ** 2) / (2 * ac * d)
+    C = ac * np.exp(1j * np.arccos(np.clip(cos_a, -1, 1)))
+    B = -a * C / abs(C)
+    return {"A": 0j, "B": complex(B), "C": complex(C), "D": complex(d)}
+
+
+def slider_crank_points(a: float, b: float, e: float) -> dict:
+    """The offset slider-crank at the slider's far extreme (crank and rod in line): A at the
+    origin, the guide at y = −e, C = ((a + b)² − e²)^½ − i e."""
+    x = np.sqrt((a + b) ** 2 - e ** 2)
+    C = complex(x, -e)
+    return {"A": 0j, "B": a * C / abs(C), "C": C}
+
+
+def crank_rocker_diagram(opt, slider, info: TitleInfo, lang: str) -> Sheet:
+    """The crank-rocker brief's optimum four-bar and (when given) its offset slider-crank."""
+    lab = LABELS[lang]
+    fb = opt.best.design
+    four = {k: v * MM for k, v in crank_rocker_points(fb.crank, fb.coupler, fb.rocker, fb.frame).items()}
+    shift = 0j
+    pts = list(four.values()) + list(fb.crank * MM * np.exp(1j * np.linspace(0, 2 * np.pi, 13)))
+    sc_pts = {}
+    if slider is not None:
+        raw = slider_crank_points(slider.crank, slider.rod, slider.offset)
+        span4 = max(p.real for p in pts) - min(p.real for p in pts)
+        shift = complex(max(p.real for p in pts) + 0.35 * span4 + slider.crank * MM, 0)
+        sc_pts = {k: v * MM + shift for k, v in raw.items()}
+        pts += list(sc_pts.values()) + [shift + slider.crank * MM * np.exp(1j * t) for t in np.linspace(0, 2 * np.pi, 13)]
+        pts += [sc_pts["C"] - slider.stroke * MM - 10.0, sc_pts["C"] + 15.0]
+    s = Sheet(SIZE)
+    area = _area(s)
+    view, n = _fit(s, np.array(pts), area)
+    frame(s, replace(info, scale=scale_text(n)))
+    placer = LabelPlacer(s)
+    tb = title_block_box(s)
+    placer.block_box((tb[0] - 2, tb[1], tb[2], tb[3] + 2))
+    _title(s, f"{lab['diagram']}  {scale_text(n)}", area)
+
+    def mechanism(P, sliding: bool, caption: str, crank_len: float):
+        links = [("1", P["A"], P["B"]), ("2", P["B"], P["C"])]
+        if not sliding:
+            links.append(("3", P["C"], P["D"]))
+        for _, a, b in links:
+            view.line(a, b, "OUTLINE")
+            placer.block_segment(view.p(a), view.p(b), 1.5)
+        view.circle(P["A"], crank_len, "CENTER")
+        ground(view, P["A"], 7.0)
+        placer.block(view.p(P["A"]) - 3.5j, 5.0)
+        if sliding:
+            u = 1.0
+            lo = P["C"] - slider.stroke * MM - 10.0
+            hi = P["C"] + 15.0
+            hatched_line(view, lo - 3.5j / view.scale, hi - 3.5j / view.scale)
+            slider_block(view, P["C"], 0.0, 10.0, 6.0)
+            placer.block(view.p(P["C"]), 5.5)
+            placer.block_segment(view.p(lo - 5j / view.scale), view.p(hi - 5j / view.scale), 2.0)
+        else:
+            ground(view, P["D"], 7.0)
+            placer.block(view.p(P["D"]) - 3.5j, 5.0)
+        for name, z in P.items():
+            if name != "A" and not (not sliding and name == "D"):
+                pin(view, z)
+            placer.block(view.p(z), 1.5)
+        _omega_arrow(s, view, P["A"], crank_len, True, placer, lab)
+        mid = np.mean(list(P.values()))
+        for name, z in P.items():
+            d = z - mid
+            placer.place(view.p(z), name, 3.5, prefer=d if abs(d) > 1e-9 else 1j, gap=2.5)
+        for num, a, b in links:
+            d = (b - a) / abs(b - a)
+            placer.place(view.p((a + b) / 2), num, 3.5, prefer=1j * d, gap=2.0)
+        if sliding:
+            placer.place(view.p(P["C"]), "3", 3.5, prefer=1j, gap=4.5)
+        low = min(min(view.p(z).imag for z in P.values()) - 8.0,
+                  view.p(P["A"]).imag - crank_len * view.scale - 4.0)
+        cx = float(np.mean([view.p(z).real for z in P.values()]))
+        placer.text(complex(cx, max(low, area[1] - 4.0)), caption, fit_height(caption, 180.0, 3.5),
+                    "center", "top")
+
+    mechanism(four, False, lab["crank_rocker"], fb.crank * MM)
+    if sc_pts:
+        mechanism(sc_pts, True, lab["slider_crank"], slider.crank * MM)
+    notes = [_scale_note(lab, n),
+             f"ABCD: a = {format_number(fb.crank * MM)}  b = {format_number(fb.coupler * MM)}  "
+             f"c = {format_number(fb.rocker * MM)}  d = {format_number(fb.frame * MM)} mm"]
+    if slider is not None:
+        notes.append(f"ABC: a = {format_number(slider.crank * MM)}  b = {format_number(slider.rod * MM)}  "
+                     f"e = {format_number(slider.offset * MM)}  H = {format_number(slider.stroke * MM)} mm")
+    _notes(s, notes)
+    return s
+
+
+# ------------------------------------------------------------------ cams
+
+def cam_diagram(c, info: TitleInfo, lang: str) -> Sheet:
+    """A synthesised cam (stages.cam.CamResult) with its follower at δ = 0."""
+    from .cam_sheet import _ProfileGeometry, divisions
+
+    lab = LABELS[lang]
+    g = _ProfileGeometry(c, divisions(c))
+    pts = list(g.actual)
+    B0 = g.B0
+    if g.osc:
+        A = complex(g.a)
+        pts += [A, B0, A - 10.0j]
+    else:
+        top = g.outer + 35.0
+        pts += [B0, complex(g.e, top)]
+    s = Sheet(SIZE)
+    area = _area(s)
+    view, n = _fit(s, np.array(pts), area, pad_paper=22.0)
+    frame(s, replace(info, scale=scale_text(n)))
+    placer = LabelPlacer(s)
+    _title(s, f"{lab['diagram']}  {scale_text(n)}", area)
+    view.polyline(np.append(g.actual, g.actual[:1]), "OUTLINE")
+    view.circle(0j, g.r0, "CENTER")
+    ground(view, 0j, 7.0)
+    pin(view, 0j)
+    placer.block(view.p(0j), 6.0)
+    for z in g.actual[:: max(len(g.actual) // 120, 1)]:
+        placer.block(view.p(complex(z)), 0.6)
+    if g.osc:
+        ground(view, A, 7.0)
+        pin(view, A)
+        u = (B0 - A) / abs(B0 - A)
+        view.line(A + u * 1.2 / view.scale, B0, "OUTLINE")
+        placer.block_segment(view.p(A), view.p(B0), 1.5)
+        placer.place(view.p(A), "A", 3.5, prefer=1 + 1j, gap=3.0)
+        stem_top = B0
+    else:
+        stem_top = complex(g.e, g.outer + 35.0)
+        view.line(B0, stem_top, "OUTLINE")
+        placer.block_segment(view.p(B0), view.p(stem_top), 1.5)
+        yc = g.outer + 22.0
+        half = 7.0
+        for side in (-1, 1):
+            xw = g.e + side * 2.5 / view.scale
+            hatched_line(view, complex(xw, yc - half), complex(xw, yc + half),
+                         side=(-1j if side < 0 else 1j))
+            placer.block_box((view.p(complex(xw, yc)).real - 4, view.p(complex(xw, yc - half)).imag,
+                              view.p(complex(xw, yc)).real + 4, view.p(complex(xw, yc + half)).imag))
+        placer.place(view.p(complex(g.e, yc)), lab["guide"], 3.0, prefer=1, gap=6.0)
+    if g.kind == "roller":
+        view.circle(B0, g.rr, "OUTLINE")
+        pin(view, B0)
+    placer.block(view.p(B0), max(g.rr * view.scale, 1.5))
+    placer.place(view.p(B0), "B", 3.5, prefer=(-1 + 0.3j) if not g.osc else -1j, gap=3.0)
+    placer.place(view.p(0j), "O", 3.5, prefer=-1 - 1j, gap=3.0)
+    _omega_arrow(s, view, 0j, float(np.max(np.abs(g.actual))), g.sigma > 0, placer, lab)
+    # link numbers: cam 1, follower 2
+    placer.place(view.p(complex(g.actual[len(g.actual) // 2])), "1", 3.5,
+                 prefer=complex(g.actual[len(g.actual) // 2]), gap=2.5)
+    mid_f = (B0 + stem_top) / 2 if not g.osc else (A + B0) / 2
+    placer.place(view.p(mid_f), "2", 3.5, prefer=1, gap=3.0)
+    kind = {"zh": {"roller": "滚子", "knife": "尖顶", "flat": "平底"},
+            "en": {"roller": "roller", "knife": "knife-edge", "flat": "flat-face"}}[lang].get(g.kind, g.kind)
+    legend = (f"1 凸轮  2 {'摆动' if g.osc else '直动'}{kind}从动件" if lang == "zh" else
+              f"1 cam  2 {'oscillating' if g.osc else 'translating'} {kind} follower")
+    _notes(s, [_scale_note(lab, n), lab["links"] + legend,
+               f"r0 = {format_number(g.r0)} mm" + (f"  rr = {format_number(g.rr)} mm" if g.rr else "")
+               + (f"  e = {format_number(g.e)} mm" if g.e else "")])
+    return s
+
+
+def disc_diagram(disc, info: TitleInfo, lang: str) -> Sheet:
+    """The eccentric disc cam (eccentric_cam brief) at δ = 0, once per follower, side by
+    side: disc, pivot O, centre C, the follower in its guide."""
+    lab = LABELS[lang]
+    p = disc.params
+    R = p.radius * MM
+    cases = []
+    pitch = 0.0
+    for j, (label, fol) in enumerate(p.followers):
+        m = disc.motions[j]
+        centre = complex(np.asarray(m.centre)[0]) * MM
+        x, y = fol.offset * MM, float(np.asarray(m.y)[0]) * MM
+        top = y + R + 10.0
+        cases.append((label, fol, centre, x, y, top))
+    width = 2.0 * (R + abs(p.eccentricity * MM)) + 30.0
+    pts = []
+    for j, (label, fol, centre, x, y, top) in enumerate(cases):
+        sh = j * width
+        pts += [sh + centre + R * np.exp(1j * t) for t in np.linspace(0, 2 * np.pi, 37)]
+        pts += [sh + complex(x, top), sh - 10.0j]
+    s = Sheet(SIZE)
+    area = _area(s)
+    view, n = _fit(s, np.array(pts), area, pad_paper=22.0)
+    frame(s, replace(info, scale=scale_text(n)))
+    placer = LabelPlacer(s)
+    _title(s, f"{lab['diagram']}  {scale_text(n)}", area)
+    ccw = getattr(p, "rotation", 1) > 0
+    for j, (label, fol, centre, x, y, top) in enumerate(cases):
+        sh = j * width
+        c = sh + centre
+        view.circle(c, R, "OUTLINE")
+        view.line(sh, c, "OUTLINE")
+        ground(view, sh + 0j, 7.0)
+        pin(view, sh + 0j)
+        pin(view, c)
+        placer.block(view.p(sh + 0j), 6.0)
+        for t in np.linspace(0, 2 * np.pi, 60)[:-1]:
+            placer.block(view.p(c + R * np.exp(1j * t)), 0.6)
+        placer.block_segment(view.p(sh + 0j), view.p(c), 1.5)
+        base = sh + complex(x, y)
+        rr = fol.roller_radius * MM
+        if fol.kind == "roller":
+            view.circle(base, rr, "OUTLINE")
+            pin(view, base)
+        elif fol.kind == "flat":
+            view.line(base - 0.5 * R, base + 0.5 * R, "OUTLINE")
+        else:
+            view.polyline([base + complex(-1.8, 5.0) / view.scale, base, base + complex(1.8, 5.0) / view.scale], "OUTLINE")
+        view.line(base + 1j * (rr if fol.kind == "roller" else 0.0), sh + complex(x, top), "OUTLINE")
+        placer.block_segment(view.p(base), view.p(sh + complex(x, top)), 1.5)
+        yc = top - 8.0
+        for side in (-1, 1):
+            xw = sh + x + side * 2.5 / view.scale
+            hatched_line(view, complex(xw, yc - 6.0), complex(xw, yc + 6.0), side=(-1j if side < 0 else 1j))
+            placer.block_box((view.p(complex(xw, yc)).real - 4.0, view.p(complex(xw, yc - 6)).imag,
+                              view.p(complex(xw, yc)).real + 4.0, view.p(complex(xw, yc + 6)).imag))
+        placer.place(view.p(sh + 0j), "O", 3.5, prefer=-1 - 0.2j, gap=4.0)
+        placer.place(view.p(c), "C", 3.5, prefer=-1 + 0.3j, gap=2.0)
+        placer.place(view.p(sh + complex(x, top)), str(label), 3.5, prefer=1j, gap=2.0)
+        _omega_arrow(s, view, c, R, ccw, placer, lab)
+    _notes(s, [_scale_note(lab, n), f"R = {format_number(R)} mm  OC = {format_number(p.eccentricity * MM)} mm"])
+    return s
+
+
+# ------------------------------------------------------------------ the drive
+
+def _schematic_radius(stage, which: int) -> float:
+    """Relative size of a stage's wheel (pulley datum diameter; gear teeth count)."""
+    if stage.type in ("belt", "chain") and stage.d1:
+        return (stage.d1 if which == 1 else stage.d2) * MM / 10.0
+    z = stage.z1 if which == 1 else stage.z2
+    return float(z or 20)
+
+
+def _layout_drive(stages, r) -> tuple[list, list]:
+    """Shaft centres (schematic units) and the items to draw: each stage's next shaft is
+    put where its wheel overlaps the wheels already placed least (directions tried from
+    straight right, turning up and down in steps of 30°); a worm's wheel sits above the
+    worm, a belt's pulleys 1.5 (r1 + r2) + 16 apart."""
+    centres = [0j]
+    items = []
+    placed: list[tuple[complex, float]] = []          # circles already drawn (centre, radius)
+    z = 0j
+    for j, st in enumerate(stages):
+        r1, r2 = r[j]
+        if st.type == "coupling":
+            items.append(("coupling", z, z, 0.0, 0.0, j))
+            centres.append(z)
+            continue
+        if st.type == "worm":
+            nxt = z + 1j * (r1 + r2)
+            items.append(("worm", z, nxt, r1, r2, j))
+            placed += [(z, 1.3 * r1), (nxt, r2)]
+            z = nxt
+            centres.append(z)
+            continue
+        dist = (r1 + r2) * 1.5 + 16.0 if st.type in ("belt", "chain") else r1 + r2
+        best = None
+        for rank, deg in enumerate((0, 30, -30, 60, -60, 90, -90, 120, -120)):
+            cand = z + dist * np.exp(1j * np.radians(deg))
+            over = sum(max(0.0, r2 + R + 3.0 - abs(cand - c)) for c, R in placed
+                       if abs(c - z) > 1e-9)
+            cost = over + 0.01 * rank
+            if best is None or cost < best[0]:
+                best = (cost, cand)
+        nxt = best[1]
+        items.append(("belt" if st.type in ("belt", "chain") else "gear", z, nxt, r1, r2, j))
+        placed += [(z, r1), (nxt, r2)]
+        z = nxt
+        centres.append(z)
+    return centres, items
+
+
+def drive_schematic(drive, info: TitleInfo, lang: str) -> Sheet:
+    """The drive's transmission schematic: the shafts seen end-on (front view), a motor,
+    each belt or chain as its two wheels and the belt's straight runs, each gear pair as
+    tangent pitch circles (and tip circles), a worm as a rectangle tangent to its wheel on
+    the worm's axis (the worm's shaft then a line, the motor beside it seen from the side);
+    the shafts numbered 0 (motor), I, II, …, the stages 1, 2, … by leaders; a table of n, P,
+    T and one of the stages with their ratios, teeth and diameters."""
+    lab = LABELS[lang]
+    s = Sheet(SIZE)
+    area = _area(s)
+    frame(s, replace(info, scale="—"))
+    tb = title_block_box(s)
+    ax0, ay0, ax1, ay1 = area
+    _title(s, lab["drive"], area)
+    stages = list(drive.stages)
+    # each stage's two wheels in proportion; the largest wheel of the drive 34 units
+    r = [(_schematic_radius(st, 1), _schematic_radius(st, 2)) for st in stages]
+    biggest = max([max(a, b) for a, b in r] + [1.0])
+    k = 34.0 / biggest
+    r = [(max(a * k, 4.0 if st.type == "worm" else 6.0), max(b * k, 8.0)) for (a, b), st in zip(r, stages)]
+    centres, items = _layout_drive(stages, r)
+    side_motor = bool(items) and items[0][0] in ("coupling", "worm")
+    pts = list(centres)
+    for kind, a, b, r1, r2, _ in items:
+        if kind == "coupling":
+            continue
+        for c0, rr in ((a, r1), (b, r2)):
+            pts += [c0 + (rr + 2.0) * (1 + 1j), c0 - (rr + 2.0) * (1 + 1j)]
+        if kind == "worm":
+            pts += [a + 2.0 * r1]
+    pts = np.array(pts)
+    lo = complex(pts.real.min(), pts.imag.min())
+    hi = complex(pts.real.max(), pts.imag.max())
+    table_w = 175.0
+    motor_room = 62.0
+    dx0, dx1 = ax0 + 8.0 + motor_room, ax1 - table_w - 14.0
+    dy0, dy1 = tb[3] + 10.0, ay1 - 10.0
+    sc = min((dx1 - dx0) / max(hi.real - lo.real, 1.0), (dy1 - dy0) / max(hi.imag - lo.imag, 1.0), 2.5)
+    view = s.view(complex((dx0 + dx1) / 2, (dy0 + dy1) / 2) - sc * (lo + hi) / 2, sc)
+    placer = LabelPlacer(s, area=(ax0, tb[3] + 4, dx1 + 6, ay1))
+    placer.block_box((tb[0] - 2, tb[1], tb[2], tb[3] + 2))
+
+    def ring(c0, rr, size=1.2):
+        for t in np.linspace(0, 2 * np.pi, 48)[:-1]:
+            placer.block(view.p(c0 + rr * np.exp(1j * t)), size)
+
+    # the motor: seen from the side on the worm's (or coupling's) axis, else end-on
+    p0 = view.p(centres[0])
+    if side_motor:
+        worm = next((it for it in items if it[0] == "worm"), None)
+        left = p0 - ((worm[3] * 1.3 * sc + 6.0) if worm is not None else 0.0)
+        box = [left - 50.0 - 11.0j, left - 20.0 - 11.0j, left - 20.0 + 11.0j, left - 50.0 + 11.0j]
+        s.polyline(box, "OUTLINE", closed=True, weight=0.5)
+        s.line(left - 20.0, p0 if worm is None else left, "OUTLINE")
+        s.text(left - 35.0, "M", 5.0, "TEXT", "center", "middle")
+        hatched_line(s, left - 52.0 - 12.5j, left - 18.0 - 12.5j)
+        placer.block_box((left.real - 54.0, left.imag - 16.0, left.real, left.imag + 11.0))
+        for dx in (-14.0, -11.0):                       # the coupling: two short bars
+            s.line(left + dx - 5.0j, left + dx + 5.0j, "OUTLINE", 0.5)
+        motor_at = left - 35.0 + 13.0j
+    else:
+        c = p0 - 32.0
+        s.polyline([c - 12 - 12j, c + 12 - 12j, c + 12 + 12j, c - 12 + 12j], "OUTLINE", closed=True,
+                   weight=0.5)
+        s.text(c, "M", 5.0, "TEXT", "center", "middle")
+        s.line(c + 12.0, p0, "OUTLINE", 0.35)
+        hatched_line(s, c - 14 - 13.5j, c + 14 - 13.5j)
+        placer.block_box((c.real - 14.0, c.imag - 17.0, p0.real, c.imag + 12.0))
+        motor_at = c + 14.0j
+    text = lab["motor"].format(m=drive.motor.designation)
+    placer.text(motor_at, text, 3.0, "center", "bottom")
+    for kind, a, b, r1, r2, j in items:
+        st = stages[j]
+        if kind == "coupling":
+            continue
+        if kind == "belt":
+            view.circle(a, r1, "OUTLINE", 0.5)
+            view.circle(b, r2, "OUTLINE", 0.5)
+            d = b - a
+            ang = np.arcsin((r2 - r1) / abs(d))
+            u = d / abs(d)
+            for sgn in (1, -1):
+                nrm = 1j * u * np.exp(-1j * sgn * ang) * sgn
+                view.line(a + r1 * nrm, b + r2 * nrm, "OUTLINE", 0.35)
+                placer.block_segment(view.p(a + r1 * nrm), view.p(b + r2 * nrm), 1.5)
+            ring(a, r1)
+            ring(b, r2)
+            anchor = view.p((a + b) / 2 + 1j * u * (r1 + r2) / 2)
+        elif kind == "gear":
+            for c0, rr in ((a, r1), (b, r2)):
+                view.circle(c0, rr, "CENTER")
+                view.circle(c0, rr + 1.5 / sc, "OUTLINE", 0.35)
+                ring(c0, rr + 0.75 / sc, 1.4)
+            anchor = view.p(a + (b - a) * r1 / (r1 + r2))
+        else:                                    # worm: rectangle on its axis, wheel above
+            p = view.p(a)
+            w, h = 2.6 * r1 * sc, 2.0 * r1 * sc
+            s.polyline([p - w / 2 - h / 2 * 1j, p + w / 2 - h / 2 * 1j, p + w / 2 + h / 2 * 1j,
+                        p - w / 2 + h / 2 * 1j], "OUTLINE", closed=True, weight=0.5)
+            for t in np.linspace(-w / 2 + 0.2 * w, w / 2 - 0.3 * w, 4):
+                s.line(p + t - h / 2 * 1j, p + t + 0.1 * w + h / 2 * 1j, "CONSTRUCTION")
+            s.line(p - w / 2 - 8.0, p + w / 2 + 6.0, "CENTER")
+            placer.block_box((p.real - w / 2 - 8, p.imag - h / 2 - 1, p.real + w / 2 + 6, p.imag + h / 2 + 1))
+            view.circle(b, r2, "CENTER")
+            view.circle(b, r2 + 1.5 / sc, "OUTLINE", 0.35)
+            ring(b, r2 + 0.75 / sc, 1.4)
+            anchor = p + w / 2 - 0.5 * h * 1j
+        placer.leader(anchor, str(j + 1), 3.5, prefer=-1 + 1j if kind != "worm" else 1 - 1j)
+    # shafts: a small circle (end view) and the shaft's number
+    for idx, c0 in enumerate(centres):
+        if idx == 0 and side_motor:
+            continue
+        if idx > 0 and stages[idx - 1].type == "coupling":
+            continue                               # the coupled shaft is the next one's
+        p = view.p(c0)
+        s.circle(p, 1.6, "OUTLINE", 0.35)
+        placer.block(p, 2.0)
+        placer.place_best(p, ROMAN[idx] if idx < len(ROMAN) else str(idx), 3.5, prefer=1 + 1j,
+                          gaps=(1.5, 3.0, 5.0))
+    # tables right of the drawing
+    tx = ax1 - table_w
+    rows = [[ROMAN[sh.index] if sh.index < len(ROMAN) else str(sh.index), format_number(sh.speed_rpm, 4),
+             format_number(sh.power / 1e3, 3), format_number(sh.torque, 4)] for sh in drive.shafts]
+    ybot = table(s, tx, ay1 - 6.0, [25, 50, 50, 50], rows, head=[lab["shaft"], lab["n"], lab["P"], lab["T"]],
+                 title=lab["shafts"], title_height=3.5, height=3.0, row_h=6.0)
+    srows = []
+    for j, st in enumerate(stages):
+        data = (f"d1={format_number(st.d1 * MM)}, d2={format_number(st.d2 * MM)} mm" if st.d1
+                else (f"z1={st.z1}, z2={st.z2}" if st.z1 else "—"))
+        srows.append([str(j + 1), st.name_zh if lang == "zh" else st.name_en, format_number(st.ratio, 4), data])
+    table(s, tx, ybot - 8.0, [12, 58, 25, 80], srows, head=["No." if lang == "en" else "序号", lab["stage"],
+                                                             lab["ratio"], lab["data"]],
+          title=lab["stages"], title_height=3.5, height=3.0, row_h=6.0)
+    _notes(s, [lab["not_scale"], lab["motor"].format(m=drive.motor.designation)
+               + f"  P = {format_number(drive.motor.power / 1e3, 3)} kW  n = {format_number(drive.motor.full_load_rpm, 4)} r/min"])
+    return s

@@ -1,0 +1,217 @@
+"""The kinematic diagram, transmission schematic and cycle diagram sheets (issue 19, point 8),
+checked against references written out here: the joints of the shaper (link-length brief)
+at position 1 and of the crank-rocker at its first extreme position from closed forms,
+scaled by μL; the cycle sheet's phase boundaries from the brief's phases; everything inside
+the drawing frame."""
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+import pytest
+import yaml
+
+from mechdesign.render.sheet import (Arc, Circle, Dimension, Fill, Line, Polyline, Text, TitleInfo,
+                                     text_box)
+
+ROOT = Path(__file__).resolve().parents[1]
+INFO = TitleInfo("机构运动简图", "test", number="T-01")
+
+NEW = {"kinematic", "transmission", "cycle"}
+
+
+def _sheets(results, lang="zh"):
+    from mechdesign.render.sheets import _builders
+
+    return {name: build(INFO, lang) for name, build in _builders(results, None) if name in NEW}
+
+
+def _circles(sheet, radius):
+    return np.array([e.center for e in sheet.entities
+                     if isinstance(e, Circle) and abs(e.radius - radius) < 1e-9])
+
+
+def _near(points, z, tol=1e-6):
+    return len(points) and np.min(np.abs(points - z)) < tol
+
+
+def _scale(sheet) -> float:
+    """n of the title block's 1:n."""
+    return float(sheet.info.scale.split(":")[1])
+
+
+def test_shaper_pins_at_position_1_from_the_brief_lengths(example_results):
+    """designs/shaper_lengths.yaml: O3 at the origin, O2 = (0, 350) mm, crank 90, guide bar
+    580, BF = 0.3·580. Position 1 is the extreme position: the guide bar tangent to the
+    crank circle (O3A ⊥ O2A), so the angle at O3 between O3O2 and O3A is asin(90/350) and
+    |O3A| = √(350² − 90²); B on O3A at 580 from O3. The drawn pins (radius 1.2 mm) sit at
+    O3 + z/n on paper (n from the title block), the frame pivots' circles give O3, O2."""
+    s = _sheets(example_results("shaper_lengths"))["kinematic"]
+    n = _scale(s)
+    d, r, L = 350.0, 90.0, 580.0
+    psi = np.arcsin(r / d)
+    ground = _circles(s, 0.22 * 7.0)
+    assert len(ground) == 2
+    o3 = min(ground, key=lambda z: z.imag)          # O3 below O2
+    o2 = max(ground, key=lambda z: z.imag)
+    assert abs((o2 - o3) - 1j * d / n) < 1e-9
+    pins = _circles(s, 1.2)
+    ok = []
+    for side in (1, -1):                             # either extreme (the sense of turning)
+        u = 1j * np.exp(1j * side * psi)             # direction O3 → A
+        A = u * np.sqrt(d ** 2 - r ** 2)
+        B = u * L
+        ok.append(_near(pins, o3 + A / n) and _near(pins, o3 + B / n))
+        if ok[-1]:
+            # F: a pin at BF = 0.3 L from B, on the ram's horizontal guide (a slider there)
+            others = pins[np.abs(pins - (o3 + A / n)) > 1e-6]
+            dist = np.abs(others - (o3 + B / n)) * n
+            assert np.any(np.abs(dist - 0.3 * L) < 1e-6)
+    assert any(ok)
+
+
+def _circle_intersections(c0, r0, c1, r1):
+    """The two intersections of two circles (textbook formula)."""
+    d = abs(c1 - c0)
+    a = (r0 ** 2 - r1 ** 2 + d ** 2) / (2 * d)
+    h = np.sqrt(r0 ** 2 - a ** 2)
+    u = (c1 - c0) / d
+    m = c0 + a * u
+    return m + 1j * u * h, m - 1j * u * h
+
+
+def test_crank_rocker_joints_at_the_first_extreme(example_results):
+    """The optimum a, b, c, d: A at the origin, D = (d, 0); at the extreme C1 the crank and
+    the coupler are folded, so C1 is where the circle of radius b − a about A meets the
+    circle of radius c about D (the upper one), and B = −a·C1/|C1|."""
+    r = example_results("crank_rocker")
+    fb = r["optimum"].best.design
+    a, b, c, d = (x * 1e3 for x in (fb.crank, fb.coupler, fb.rocker, fb.frame))
+    s = _sheets(r)["kinematic"]
+    n = _scale(s)
+    ground = _circles(s, 0.22 * 7.0)
+    A = min(ground, key=lambda z: z.real)            # the four-bar is drawn left
+    D = A + d / n
+    assert _near(ground, D)
+    C1 = max(_circle_intersections(0j, b - a, d + 0j, c), key=lambda z: z.imag)
+    B1 = -a * C1 / abs(C1)
+    pins = _circles(s, 1.2)
+    assert _near(pins, A + C1 / n) and _near(pins, A + B1 / n)
+    # the offset slider-crank at its far extreme: crank and rod in line, C on y = −e
+    sl = r["slider"]
+    a2, b2, e = sl.crank * 1e3, sl.rod * 1e3, sl.offset * 1e3
+    C = complex(np.sqrt((a2 + b2) ** 2 - e ** 2), -e)
+    A2 = [g for g in ground if abs(g - A) > 1e-6 and abs(g - D) > 1e-6]
+    assert len(A2) == 1
+    assert _near(pins, A2[0] + C / n) and _near(pins, A2[0] + a2 * C / abs(C) / n)
+
+
+def test_cycle_sheet_boundaries_are_the_brief_phases(example_results):
+    """designs/lockbeam.yaml: each actuator's phase boundaries start + Σspan (mod 360) are
+    the vertical lines inside its bar, at x = left + (φ − origin)/μφ."""
+    brief = yaml.safe_load((ROOT / "designs" / "lockbeam.yaml").read_text(encoding="utf-8"))
+    cyc = brief["cycle"]
+    s = _sheets(example_results("lockbeam"))["cycle"]
+    bars = sorted([e for e in s.entities if isinstance(e, Polyline) and e.closed and e.weight == 0.5
+                   and e.layer == "OUTLINE"], key=lambda e: -e.points[0].imag)
+    assert len(bars) == len(cyc["actuators"])
+    for bar, act in zip(bars, cyc["actuators"]):
+        xs = [p.real for p in bar.points]
+        ys = [p.imag for p in bar.points]
+        left, right, lo, hi = min(xs), max(xs), min(ys), max(ys)
+        mu = 360.0 / (right - left)
+        want, phi = set(), float(act["start_deg"])
+        for ph in act["phases"]:
+            want.add(round((phi - cyc["origin_deg"]) % 360.0, 6))
+            phi += ph["span_deg"]
+        want.discard(0.0)
+        got = {round((e.p0.real - left) * mu, 6) for e in s.entities
+               if isinstance(e, Line) and e.layer == "OUTLINE" and abs(e.p0.real - e.p1.real) < 1e-9
+               and abs(min(e.p0.imag, e.p1.imag) - lo) < 1e-9 and abs(max(e.p0.imag, e.p1.imag) - hi) < 1e-9}
+        assert got == want, act["key"]
+
+
+def _extent(e):
+    if isinstance(e, Line):
+        return [e.p0, e.p1]
+    if isinstance(e, (Polyline, Fill)):
+        return list(e.points)
+    if isinstance(e, Circle):
+        return [e.center + e.radius * z for z in (1, 1j, -1, -1j)]
+    if isinstance(e, Arc):
+        return list(e.center + e.radius * np.exp(1j * np.linspace(e.start, e.end, 17)))
+    if isinstance(e, Dimension):
+        return [e.p0, e.p1]
+    if isinstance(e, Text) and abs(e.angle) < 1e-12:
+        b = text_box(e.position, e.text, e.height, e.halign, e.valign)
+        return [complex(b[0], b[1]), complex(b[2], b[3])]
+    return []
+
+
+@pytest.mark.parametrize("name", ["shaper", "crank_rocker", "cam_7_3", "cam_7_1", "lockbeam",
+                                  "furnace_drive", "die_cutter", "furnace_pusher", "linkage_sixbar",
+                                  "textbook_guide_bar", "press", "lockbeam_cam", "slotter"])
+@pytest.mark.parametrize("lang", ["zh", "en"])
+def test_new_sheets_lie_inside_the_frame(example_results, name, lang):
+    sheets = _sheets(example_results(name), lang)
+    assert sheets, name
+    for kind, s in sheets.items():
+        x0, y0, x1, y1 = s.inner
+        border = {id(e) for e in s.entities[:2]}          # the trimmed edge and the border
+        for e in s.entities:
+            if id(e) in border:
+                continue
+            for p in _extent(e):
+                assert x0 - 1e-6 <= p.real <= x1 + 1e-6 and y0 - 1e-6 <= p.imag <= y1 + 1e-6, \
+                    (name, kind, type(e).__name__, getattr(e, "text", ""), p)
+
+
+@pytest.mark.e2e
+@pytest.mark.parametrize("name", ["crank_rocker", "cam_7_1", "furnace_drive"])
+def test_briefs_without_sheets_before_now_write_pdf_and_dxf(name, tmp_path):
+    """The three briefs whose --format dxf wrote nothing: every sheet as PDF and DXF."""
+    from mechdesign.render.sheets import _builders, write_all
+    from mechdesign.brief.loader import load_brief
+    from conftest import compute_example
+
+    r = compute_example(name)
+    brief = load_brief(ROOT / "designs" / f"{name}.yaml")
+    (tmp_path / "f").mkdir()
+    files = write_all(_builders(r, brief), brief, tmp_path, tmp_path / "f", "zh", ("pdf", "dxf"))
+    assert files
+    for f in files:
+        assert (tmp_path / f.pdf).read_bytes().startswith(b"%PDF")
+        assert (tmp_path / f.dxf).stat().st_size > 1000
+
+
+def test_a_run_without_sheets_says_so_when_dxf_is_asked(tmp_path, capsys):
+    from mechdesign.render.sheets import make_sheets
+
+    collect = make_sheets({}, None, tmp_path, tmp_path, "en", ("md", "dxf"))
+    assert collect() == []
+    assert "no drawing sheet" in capsys.readouterr().err
+    make_sheets({}, None, tmp_path, tmp_path, "zh", ("md", "dxf"))
+    assert "没有可绘制的图纸" in capsys.readouterr().err
+    make_sheets({}, None, tmp_path, tmp_path, "zh", ("md", "pdf"))
+    assert capsys.readouterr().err == ""
+
+
+def test_a_diagram_that_cannot_be_drawn_is_left_out_with_a_line(tmp_path, capsys):
+    """A new diagram that fails for a user's geometry: the other sheets are written, the
+    run says which sheet is missing and why; the existing sheets still raise."""
+    from types import SimpleNamespace
+
+    from mechdesign.render.sheets import write_all
+
+    def bad(info, lang):
+        raise ValueError("the layout does not fit")
+
+    meta = SimpleNamespace(title="t", student="", student_id="", class_name="", teacher="", date="")
+    brief = SimpleNamespace(report=meta, sheets=None)
+    (tmp_path / "f").mkdir()
+    files = write_all([("kinematic", bad)], brief, tmp_path, tmp_path / "f", "en", ("dxf",))
+    assert files == []
+    err = capsys.readouterr().err
+    assert "Kinematic diagram could not be drawn (the layout does not fit)" in err
+    with pytest.raises(ValueError):
+        write_all([("analysis", bad)], brief, tmp_path, tmp_path / "f", "en", ("dxf",))
