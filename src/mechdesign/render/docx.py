@@ -35,6 +35,7 @@ from contextlib import contextmanager
 from pathlib import Path
 
 from ..fileio import atomic_path
+from .mathbreak import break_display_math
 from .pdf import DEFAULT_LABELS, MARKDOWN_FORMAT, source_timestamp
 
 REFERENCE_DOCX = "reference.docx"
@@ -121,7 +122,7 @@ def render_docx(md_path: Path, docx_path: Path, metadata: dict, template_dir: Pa
         if not needed.is_file():
             raise DocxRenderError(f"template file not found: {needed}")
     try:
-        md_text = md_path.read_text(encoding="utf-8")
+        md_text = break_display_math(md_path.read_text(encoding="utf-8"))
     except OSError as exc:
         raise DocxRenderError(f"cannot read {md_path}: {exc}") from exc
 
