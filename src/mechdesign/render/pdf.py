@@ -268,6 +268,8 @@ KEEP_ROWS = 3
 
 def _mend_table(match: re.Match) -> str:
     """A pandoc table made ready to break across pages (templates/report.typ):
+    * the header's cells passed through ``table-head`` (the header font: the header is
+      now the table's second row);
     * a first header row spanning all columns whose content is ``#table-continued()``
       (nothing on the table's first page, "续表 N" / "Table N (continued)" on later ones;
       the header repeats on every page);
@@ -296,7 +298,7 @@ def _mend_table(match: re.Match) -> str:
             lines[n] = f"{am.group(1)}align: ({am.group(2).rstrip(',')},left,),"
     hm = _HEADER.match(lines[head_at])
     lines[head_at] = (f"{hm.group(1)}table.header(table.cell(colspan: {ncols + 1}, inset: 0pt)"
-                      f"[#table-continued()], {hm.group(2).rstrip(',')}, [],),")
+                      f"[#table-continued()], ..table-head({hm.group(2)}), [],),")
     groups = ([(0, len(rows))] if len(rows) <= UNBREAKABLE_ROWS
               else [(0, KEEP_ROWS), (len(rows) - KEEP_ROWS, KEEP_ROWS)])
     starts = {first: span for first, span in groups}
