@@ -177,3 +177,28 @@ def test_word_has_toc_header_page_field_and_author(tmp_path):
     assert "<dc:subject>Shaper &amp; co design — course project</dc:subject>" in core
     # the long equation reached Word broken over lines (an equation array), not clipped
     assert "m:eqArr" in document
+
+
+# ---- tables prepared for page breaks -------------------------------------------------------
+
+def _pipe_table(rows: int) -> str:
+    lines = ["| a | b |", "|---|--:|"] + [f"| r{k} | {k} |" for k in range(rows)]
+    return "\n".join(lines) + "\n\n: Caption {#tbl:t}\n"
+
+
+@pytest.mark.parametrize("rows, groups", [(4, ["rowspan: 4"]), (10, ["rowspan: 3", "rowspan: 3"])])
+def test_tables_get_a_continued_header_and_unbreakable_row_groups(rows, groups):
+    from mechdesign.render.pdf import markdown_to_typst
+    from mechdesign.render.report import template_dir
+
+    source = markdown_to_typst("# T\n\n" + _pipe_table(rows), template_dir() / "report.typ",
+                               {"title": "t", "lang": "en"}, ROOT)
+    table = source[source.index("#table("):]
+    table = table[:table.index("\n  )")]
+    # a zero-width extra column, the continued label spanning all three columns
+    assert "columns: (auto, auto, 0pt)," in table
+    assert "table.header(table.cell(colspan: 3, inset: 0pt)[#table-continued()]" in table
+    assert re.findall(r"rowspan: \d+", table) == groups
+    # every row line carries its cell of the extra column or is covered by a group
+    row_lines = [line for line in table.splitlines() if line.strip().startswith("[r")]
+    assert len(row_lines) == rows
