@@ -19,8 +19,8 @@ and patches it with :mod:`zipfile` and :mod:`xml.etree` (no python-docx):
   equation layout tables; paragraph styles used by
   ``templates/docx-numbering.lua`` (Equation, Equation Number, Title Info,
   Table Text);
-* page: A4, 2.5 cm margins, page number centred in the footer (not on the
-  title page).
+* page: A4, 2.5 cm margins, page number centred in the footer and the report's
+  title (a TITLE field) right-aligned in the header (neither on the title page).
 
 The output is byte-for-byte reproducible for a given pandoc version (fixed
 zip timestamps and member order).  Students may edit the produced file in
@@ -274,6 +274,7 @@ def patch_document(xml: str) -> str:
     """A4 page, 2.5 cm margins, footer with the page number (pandoc copies the sectPr)."""
     sect = (
         "<w:sectPr>"
+        '<w:headerReference w:type="default" r:id="rIdMdHeader1" />'
         '<w:footerReference w:type="default" r:id="rIdMdFooter1" />'
         '<w:footnotePr><w:numRestart w:val="eachSect" /></w:footnotePr>'
         f'<w:pgSz w:w="{PAGE_W}" w:h="{PAGE_H}" />'
@@ -301,15 +302,35 @@ FOOTER_XML = (
     "</w:p></w:ftr>")
 
 
+#: Running header: the report's title, right-aligned over a thin rule, as a TITLE field
+#: (the document property pandoc sets from the metadata); render/docx.py writes the
+#: title into the field's shown result, so it reads right before Word updates fields.
+HEADER_XML = (
+    '<?xml version="1.0" encoding="UTF-8" standalone="yes"?>\n'
+    f'<w:hdr xmlns:w="{W_NS}" xmlns:r="{R_NS}">'
+    '<w:p><w:pPr><w:pStyle w:val="Header" /><w:pBdr><w:bottom w:val="single" w:sz="4" '
+    'w:space="1" w:color="808080" /></w:pBdr><w:jc w:val="right" /></w:pPr>'
+    '<w:r><w:rPr><w:sz w:val="18" /></w:rPr><w:fldChar w:fldCharType="begin" /></w:r>'
+    '<w:r><w:rPr><w:sz w:val="18" /></w:rPr><w:instrText xml:space="preserve"> TITLE </w:instrText></w:r>'
+    '<w:r><w:rPr><w:sz w:val="18" /></w:rPr><w:fldChar w:fldCharType="separate" /></w:r>'
+    '<w:r><w:rPr><w:sz w:val="18" /></w:rPr><w:t>REPORT-TITLE</w:t></w:r>'
+    '<w:r><w:rPr><w:sz w:val="18" /></w:rPr><w:fldChar w:fldCharType="end" /></w:r>'
+    "</w:p></w:hdr>")
+
+
 def patch_rels(xml: str) -> str:
     rel = ('<Relationship Type="http://schemas.openxmlformats.org/officeDocument/2006/'
-           'relationships/footer" Id="rIdMdFooter1" Target="footer1.xml" />')
+           'relationships/footer" Id="rIdMdFooter1" Target="footer1.xml" />'
+           '<Relationship Type="http://schemas.openxmlformats.org/officeDocument/2006/'
+           'relationships/header" Id="rIdMdHeader1" Target="header1.xml" />')
     return xml.replace("</Relationships>", rel + "</Relationships>")
 
 
 def patch_content_types(xml: str) -> str:
     override = ('<Override PartName="/word/footer1.xml" ContentType="application/'
-                'vnd.openxmlformats-officedocument.wordprocessingml.footer+xml" />')
+                'vnd.openxmlformats-officedocument.wordprocessingml.footer+xml" />'
+                '<Override PartName="/word/header1.xml" ContentType="application/'
+                'vnd.openxmlformats-officedocument.wordprocessingml.header+xml" />')
     return xml.replace("</Types>", override + "</Types>")
 
 
@@ -388,6 +409,7 @@ def build(source: bytes) -> dict[str, bytes]:
     edit("word/fontTable.xml", patch_font_table)
     edit("word/settings.xml", patch_settings)
     members["word/footer1.xml"] = FOOTER_XML.encode("utf-8")
+    members["word/header1.xml"] = HEADER_XML.encode("utf-8")
     return members
 
 

@@ -35,6 +35,7 @@ from contextlib import contextmanager
 from pathlib import Path
 
 from ..fileio import atomic_path
+from .mathbreak import break_display_math
 from .pdf import DEFAULT_LABELS, MARKDOWN_FORMAT, source_timestamp
 
 REFERENCE_DOCX = "reference.docx"
@@ -63,6 +64,7 @@ def _docx_metadata(metadata: dict, text_width: int) -> dict:
     base = DEFAULT_LABELS["zh" if is_zh else "en"]
     meta["labels"] = {**base, **(meta.get("labels") or {})}
     meta["docx-text-width"] = text_width
+    meta["toc-title"] = meta["labels"]["contents"]
     return meta
 
 
@@ -121,7 +123,7 @@ def render_docx(md_path: Path, docx_path: Path, metadata: dict, template_dir: Pa
         if not needed.is_file():
             raise DocxRenderError(f"template file not found: {needed}")
     try:
-        md_text = md_path.read_text(encoding="utf-8")
+        md_text = break_display_math(md_path.read_text(encoding="utf-8"))
     except OSError as exc:
         raise DocxRenderError(f"cannot read {md_path}: {exc}") from exc
 
@@ -145,6 +147,8 @@ def render_docx(md_path: Path, docx_path: Path, metadata: dict, template_dir: Pa
                             f"--metadata-file={meta_file}",
                             f"--resource-path={md_path.parent}",
                             "--number-sections",
+                            # a table of contents (a TOC field Word fills on opening)
+                            "--toc", "--toc-depth=3",
                             # no relative column widths from long pipe-table rows (as for the PDF)
                             "--columns=10000",
                         ],
@@ -154,3 +158,42 @@ def render_docx(md_path: Path, docx_path: Path, metadata: dict, template_dir: Pa
                     f"pandoc failed to convert {md_path.name} to .docx: {exc}") from exc
         if not tmp_docx.is_file() or tmp_docx.stat().st_size == 0:
             raise DocxRenderError(f"pandoc wrote no output for {md_path.name}")
+        _finish(tmp_docx, title=_plain(metadata.get("title")), author=_plain(metadata.get("student")),
+                subject=_plain(metadata.get("description") or metadata.get("title")))
+
+
+def _plain(markdown: object) -> str:
+    """Plain text of a metadata value (pandoc Markdown escaped by ``md_text``)."""
+    return re.sub(r"\\(.)", r"\1", str(markdown or "")).strip()
+
+
+def _xml_text(text: str) -> str:
+    return text.replace("&", "&amp;").replace("<", "&lt;").replace(">", "&gt;")
+
+
+def _finish(docx: Path, *, title: str, author: str, subject: str) -> None:
+    """The running header shows the title (the TITLE field's shown result, filled in
+    here so that it reads right before Word updates fields); the document properties
+    name the student as author and the report as subject. The archive keeps its member
+    order and dates (reproducible)."""
+    with zipfile.ZipFile(docx) as zin:
+        items = [(info, zin.read(info.filename)) for info in zin.infolist()]
+    out: list[tuple[zipfile.ZipInfo, bytes]] = []
+    for info, data in items:
+        name = info.filename
+        if name.startswith("word/header") and name.endswith(".xml"):
+            data = data.replace(b"REPORT-TITLE", _xml_text(title).encode("utf-8"))
+        elif name == "docProps/core.xml":
+            xml = data.decode("utf-8")
+            for tag, value in (("dc:creator", author), ("dc:subject", subject)):
+                if not value:
+                    continue
+                element = f"<{tag}>{_xml_text(value)}</{tag}>"
+                xml, n = re.subn(rf"<{tag}>.*?</{tag}>|<{tag}\s*/>", lambda _m: element, xml, flags=re.DOTALL)
+                if n == 0:
+                    xml = xml.replace("</cp:coreProperties>", element + "</cp:coreProperties>")
+            data = xml.encode("utf-8")
+        out.append((info, data))
+    with zipfile.ZipFile(docx, "w") as zout:
+        for info, data in out:
+            zout.writestr(info, data)

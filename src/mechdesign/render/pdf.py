@@ -26,6 +26,7 @@ from pathlib import Path
 
 from ..fileio import write_bytes
 from .fonts import cjk_families, font_dirs
+from .mathbreak import break_display_math
 
 MARKDOWN_FORMAT = (
     "markdown+pipe_tables+tex_math_dollars+implicit_figures"
@@ -192,7 +193,8 @@ class PendingTypst:
         (tmp / "metadata.json").write_text(json.dumps(self._meta, ensure_ascii=False, default=str),
                                            encoding="utf-8")
         (tmp / "typst-literal.lua").write_text(_TYPST_FILTER, encoding="utf-8")
-        (tmp / "in.md").write_text(md_text, encoding="utf-8")
+        # long display formulas set on several aligned lines (mathbreak)
+        (tmp / "in.md").write_text(break_display_math(md_text), encoding="utf-8")
         self._out, self._err = tmp / "out.typ", tmp / "pandoc.err"
         args = [pypandoc.get_pandoc_path(), f"--from={MARKDOWN_FORMAT}", "--to=typst",
                 str(tmp / "in.md"), f"--output={self._out}",
@@ -247,7 +249,67 @@ def _typst_references(source: str, meta: dict) -> str:
     source = re.sub(r"(?<=\[)(=+ )", r"\\\1", source)
     source = _PROSE_CITE.sub(to_ref, source)
     source = _SPACE_BEFORE_REF.sub("", source)
-    return _SPACE_AFTER_REF.sub(r"\1", source)
+    source = _SPACE_AFTER_REF.sub(r"\1", source)
+    return _TABLE.sub(_mend_table, source)
+
+
+# A table as pandoc's typst writer prints it: one line per argument, one line per row.
+_TABLE = re.compile(r"^(?P<indent>[ \t]*)(?P<open>(?:align\(center\)\[)?#table\(\n)"
+                    r"(?P<body>(?:(?!(?P=indent)\)).*\n)*?)(?P=indent)\)", re.MULTILINE)
+_COLUMNS = re.compile(r"^(\s*)columns: (?:(\d+)|\(([^()]*)\)),$")
+_ALIGN = re.compile(r"^(\s*)align: \(([^()]*)\),$")
+_HEADER = re.compile(r"^(\s*)table\.header\((.*)\),$")
+
+#: A table of at most this many rows is never split across pages; a longer one keeps at
+#: least :data:`KEEP_ROWS` rows on each side of a page break.
+UNBREAKABLE_ROWS = 6
+KEEP_ROWS = 3
+
+
+def _mend_table(match: re.Match) -> str:
+    """A pandoc table made ready to break across pages (templates/report.typ):
+    * the header's cells passed through ``table-head`` (the header font: the header is
+      now the table's second row);
+    * a first header row spanning all columns whose content is ``#table-continued()``
+      (nothing on the table's first page, "续表 N" / "Table N (continued)" on later ones;
+      the header repeats on every page);
+    * rows never split so that fewer than KEEP_ROWS rows stand on a page: an extra column
+      of zero width holds one unbreakable cell spanning the first KEEP_ROWS rows and one
+      spanning the last KEEP_ROWS rows (typst moves such a group to the next page whole);
+      a table of UNBREAKABLE_ROWS rows or fewer is one unbreakable group.
+    Tables not in the expected shape are left as they are."""
+    lines = match.group("body").splitlines()
+    cols_at = next((n for n, line in enumerate(lines) if _COLUMNS.match(line)), None)
+    head_at = next((n for n, line in enumerate(lines) if _HEADER.match(line)), None)
+    if cols_at is None or head_at is None:
+        return match.group(0)
+    cm = _COLUMNS.match(lines[cols_at])
+    rows = [n for n in range(head_at + 1, len(lines)) if lines[n].lstrip().startswith("[")]
+    others = [n for n in range(head_at + 1, len(lines))
+              if n not in rows and lines[n].strip() not in ("table.hline(),", "")]
+    if others or not rows:
+        return match.group(0)
+    ncols = int(cm.group(2)) if cm.group(2) else len([c for c in cm.group(3).split(",") if c.strip()])
+    widths = ["auto"] * ncols if cm.group(2) else [c.strip() for c in cm.group(3).split(",") if c.strip()]
+    lines[cols_at] = f"{cm.group(1)}columns: ({', '.join(widths + ['0pt'])}),"
+    for n, line in enumerate(lines):
+        am = _ALIGN.match(line)
+        if am:
+            lines[n] = f"{am.group(1)}align: ({am.group(2).rstrip(',')},left,),"
+    hm = _HEADER.match(lines[head_at])
+    lines[head_at] = (f"{hm.group(1)}table.header(table.cell(colspan: {ncols + 1}, inset: 0pt)"
+                      f"[#table-continued()], ..table-head({hm.group(2)}), [],),")
+    groups = ([(0, len(rows))] if len(rows) <= UNBREAKABLE_ROWS
+              else [(0, KEEP_ROWS), (len(rows) - KEEP_ROWS, KEEP_ROWS)])
+    starts = {first: span for first, span in groups}
+    covered = {k for first, span in groups for k in range(first + 1, first + span)}
+    for k, n in enumerate(rows):
+        if k in starts:
+            lines[n] += f" table.cell(rowspan: {starts[k]}, inset: 0pt, breakable: false)[],"
+        elif k not in covered:
+            lines[n] += " table.cell(inset: 0pt)[],"
+    body = "\n".join(lines) + "\n"
+    return match.group("indent") + match.group("open") + body + match.group("indent") + ")"
 
 
 def _typst_message(exc: Exception) -> str:

@@ -63,7 +63,10 @@ def pdf_metadata(meta, lang: str, group: str | None = None) -> dict:
             "subtitle": md_text(meta_text(meta, "subtitle", lang)),
             "student": md_text(meta.student), "student_id": md_text(meta.student_id),
             "class": md_text(meta.class_name), "teacher": md_text(meta.teacher),
-            "date": md_text(meta.date), "lang": lang}
+            "date": md_text(meta.date), "lang": lang,
+            # PDF/Word document properties: subject = the report's title (and subtitle);
+            # the author is the student (templates/report.typ, render/docx.py)
+            "description": md_text(" — ".join(t for t in (meta.title, meta.subtitle) if t))}
     if group is not None:
         data["group"] = md_text(group)
     if lang == "en":

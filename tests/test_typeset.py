@@ -1,0 +1,204 @@
+"""Typesetting of the report (issue 19, points 1-2 and 7): long formulas broken over lines,
+nothing outside the text block, no equation number over a formula, Word's TOC, header,
+footer page number and author.
+
+The word-position test renders EVERY example brief (designs/*.yaml) in zh and en to PDF and
+reads the characters' boxes with PyMuPDF (a PyPI wheel; pdftotext is a system package CI
+does not have). Text block of A4 with 2.5 cm margins: x from 70.87 to 524.41 pt.
+Tolerance 1 pt: typst places glyphs at fractional positions and a justified line ends at
+the block's edge to within rounding; the fonts' boxes overshoot their advance by a fraction
+of a point. Full-width CJK punctuation is measured by its inked half: typst sets "，" at a
+line end (and "（" at a line start) at half width — its box reaches half an em past the
+edge, its ink does not.
+"""
+from __future__ import annotations
+
+import re
+import zipfile
+from pathlib import Path
+
+import pytest
+
+from mechdesign.render.mathbreak import BUDGET_EM, break_display_math, break_formula, tex_width
+
+ROOT = Path(__file__).resolve().parents[1]
+LEFT, RIGHT, TOL = 70.87, 524.41, 1.0
+_CLOSING = set("，。、；：？！）」』】》〉”’")
+_OPENING = set("（「『【《〈“‘")
+
+
+# ---- formula breaking ------------------------------------------------------------------
+
+LONG = (r"h = \sqrt{(R + r_r + \varepsilon)^2 - e^2} - \sqrt{(R + r_r - \varepsilon)^2 - e^2}"
+        r" = \sqrt{60.0^2 - 15.0^2} - \sqrt{20.0^2 - 15.0^2} = 44.8660\ \text{mm}")
+
+
+def _lines(aligned: str) -> list[str]:
+    inner = aligned.removeprefix(r"\begin{aligned}").removesuffix(r"\end{aligned}")
+    return [line.strip() for line in inner.split(r"\\")]
+
+
+def test_long_formula_is_split_at_its_top_level_equals_and_each_line_fits():
+    out = break_formula(LONG)
+    assert out.startswith(r"\begin{aligned}") and out.endswith(r"\end{aligned}")
+    lines = _lines(out)
+    # the left-hand side and the alignment point come first, continuation lines start at "="
+    assert lines[0].startswith("h &= ") or lines[0].startswith("h & = ")
+    assert all(line.startswith("& =") or line.startswith("&=") for line in lines[1:])
+    # nothing lost: the lines, with the markers removed, are the formula
+    joined = " ".join(line.replace("&", "") for line in lines)
+    assert re.sub(r"\s+", "", joined) == re.sub(r"\s+", "", LONG)
+    # every line fits the budget (the left-hand side counts on the first line)
+    assert all(tex_width(line.replace("&", "")) <= BUDGET_EM for line in lines)
+    # the '=' inside the square roots' arguments is never a break point: no line ends
+    # inside braces
+    assert all(line.count("{") == line.count("}") for line in lines)
+
+
+def test_short_formula_is_untouched():
+    short = r"a = \frac{b}{c} = 2.5\ \text{mm}"
+    assert break_formula(short) == short
+    md = f"text\n\n$$ {short} $$\n\nmore $x = 1$\n"
+    assert break_display_math(md) == md
+
+
+def test_list_of_formulas_starts_each_on_its_own_line():
+    tex = (r"a = \frac{AC_2 - AC_1}{2} = 57.041\ \text{mm},\quad b = \frac{AC_2 + AC_1}{2}"
+           r" = 157.966\ \text{mm},\quad d = 242.746\ \text{mm}")
+    lines = _lines(break_formula(tex))
+    assert [line.split("&")[0].strip() for line in lines] == ["a", "b", "d"]
+
+
+def test_braces_are_never_split():
+    inner = " + ".join(f"x_{{{k}}} = y_{{{k}}}" for k in range(30))
+    tex = rf"z = \sqrt{{{inner}}}"
+    # one top-level relation only and no top-level operator: stays one line (the PDF
+    # template scales it instead)
+    assert break_formula(tex) == tex
+
+
+# ---- word positions in every example PDF -------------------------------------------------
+
+def _chars(page):
+    for block in page.get_text("rawdict")["blocks"]:
+        for line in block.get("lines", []):
+            for span in line["spans"]:
+                for ch in span["chars"]:
+                    yield ch, span["size"]
+
+
+def outside_text_block(pdf: Path) -> list[tuple[int, float, float, str]]:
+    """(page, x0, x1, char) of every inked character outside the text block."""
+    import pymupdf
+
+    bad = []
+    with pymupdf.open(pdf) as doc:
+        for number, page in enumerate(doc, 1):
+            for ch, size in _chars(page):
+                c = ch["c"]
+                if c.isspace():
+                    continue
+                x0, x1 = ch["bbox"][0], ch["bbox"][2]
+                if c in _CLOSING:
+                    x1 = min(x1, x0 + size / 2)
+                elif c in _OPENING:
+                    x0 = max(x0, x1 - size / 2)
+                if x0 < LEFT - TOL or x1 > RIGHT + TOL:
+                    bad.append((number, round(x0, 1), round(x1, 1), c))
+    return bad
+
+
+def numbers_over_words(pdf: Path) -> list[tuple[int, str, str]]:
+    """(page, "(N)", word) where an equation number's box overlaps another word."""
+    import pymupdf
+
+    bad = []
+    with pymupdf.open(pdf) as doc:
+        for number, page in enumerate(doc, 1):
+            words = page.get_text("words")
+            for w in words:
+                if not re.fullmatch(r"\(\d+\)", w[4]):
+                    continue
+                for o in words:
+                    if o is w:
+                        continue
+                    dx = min(w[2], o[2]) - max(w[0], o[0])
+                    dy = min(w[3], o[3]) - max(w[1], o[1])
+                    if dx > 0.5 and dy > 0.5:
+                        bad.append((number, w[4], o[4]))
+    return bad
+
+
+BRIEFS = sorted(p.stem for p in (ROOT / "designs").glob("*.yaml"))
+
+
+@pytest.mark.e2e
+@pytest.mark.parametrize("lang", ["zh", "en"])
+@pytest.mark.parametrize("brief", BRIEFS)
+def test_every_report_stays_in_the_text_block(brief, lang, tmp_path):
+    from typer.testing import CliRunner
+
+    from mechdesign.cli import app as cli_app
+
+    out = tmp_path / f"{brief}-{lang}"
+    result = CliRunner().invoke(cli_app, ["run", str(ROOT / "designs" / f"{brief}.yaml"),
+                                          "--lang", lang, "--format", "pdf", "--out", str(out)])
+    assert result.exit_code == 0, result.output
+    pdf = out / "report.pdf"
+    assert outside_text_block(pdf) == []
+    assert numbers_over_words(pdf) == []
+
+
+# ---- Word: table of contents, running header, page numbers, author ------------------------
+
+@pytest.mark.e2e
+def test_word_has_toc_header_page_field_and_author(tmp_path):
+    from mechdesign.render.docx import render_docx
+    from mechdesign.render.report import template_dir
+
+    md = tmp_path / "report.md"
+    md.write_text("# One\n\nText.\n\n$$ " + LONG + " $$\n\n## Two\n\nMore.\n", encoding="utf-8")
+    meta = {"title": "Shaper & co design", "student": "Zhang San", "lang": "en",
+            "description": "Shaper & co design — course project"}
+    out = tmp_path / "report.docx"
+    render_docx(md, out, meta, template_dir())
+    with zipfile.ZipFile(out) as docx:
+        document = docx.read("word/document.xml").decode("utf-8")
+        headers = [docx.read(n).decode("utf-8") for n in docx.namelist()
+                   if re.fullmatch(r"word/header\d+\.xml", n)]
+        footers = [docx.read(n).decode("utf-8") for n in docx.namelist()
+                   if re.fullmatch(r"word/footer\d+\.xml", n)]
+        core = docx.read("docProps/core.xml").decode("utf-8")
+    assert re.search(r"<w:instrText[^>]*>\s*TOC \\o", document)
+    assert "headerReference" in document and "footerReference" in document
+    assert any("Shaper &amp; co design" in h and " TITLE " in h for h in headers)
+    assert any(re.search(r"<w:instrText[^>]*>\s*PAGE\s*<", f) for f in footers)
+    assert "<dc:creator>Zhang San</dc:creator>" in core
+    assert "<dc:subject>Shaper &amp; co design — course project</dc:subject>" in core
+    # the long equation reached Word broken over lines (an equation array), not clipped
+    assert "m:eqArr" in document
+
+
+# ---- tables prepared for page breaks -------------------------------------------------------
+
+def _pipe_table(rows: int) -> str:
+    lines = ["| a | b |", "|---|--:|"] + [f"| r{k} | {k} |" for k in range(rows)]
+    return "\n".join(lines) + "\n\n: Caption {#tbl:t}\n"
+
+
+@pytest.mark.parametrize("rows, groups", [(4, ["rowspan: 4"]), (10, ["rowspan: 3", "rowspan: 3"])])
+def test_tables_get_a_continued_header_and_unbreakable_row_groups(rows, groups):
+    from mechdesign.render.pdf import markdown_to_typst
+    from mechdesign.render.report import template_dir
+
+    source = markdown_to_typst("# T\n\n" + _pipe_table(rows), template_dir() / "report.typ",
+                               {"title": "t", "lang": "en"}, ROOT)
+    table = source[source.index("#table("):]
+    table = table[:table.index("\n  )")]
+    # a zero-width extra column, the continued label spanning all three columns
+    assert "columns: (auto, auto, 0pt)," in table
+    assert "table.header(table.cell(colspan: 3, inset: 0pt)[#table-continued()]" in table
+    assert re.findall(r"rowspan: \d+", table) == groups
+    # every row line carries its cell of the extra column or is covered by a group
+    row_lines = [line for line in table.splitlines() if line.strip().startswith("[r")]
+    assert len(row_lines) == rows
