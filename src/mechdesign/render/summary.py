@@ -237,16 +237,16 @@ def check_groups(document: dict, ctx: dict, lang: str) -> list[dict]:
 # machine's registry summary does not already give the same quantity.
 _PROBES = (
     ("stroke", "行程", "stroke", "mm", 1e3),
-    ("time_ratio", "行程速比系数 K", "time ratio K", "", 1.0),
-    ("extreme_angle", "极位夹角 θ", "extreme-position angle θ", "°", 180 / math.pi),
-    ("gamma_min", "最小传动角 γmin", "minimum transmission angle γmin", "°", 180 / math.pi),
+    ("time_ratio", "行程速比系数 $K$", "time ratio $K$", "", 1.0),
+    ("extreme_angle", "极位夹角 $\\theta$", "extreme-position angle $\\theta$", "°", 180 / math.pi),
+    ("gamma_min", "最小传动角 $\\gamma_{min}$", "minimum transmission angle $\\gamma_{min}$", "°", 180 / math.pi),
     ("peak_torque", "峰值扭矩", "peak torque", "N·m", 1.0),
-    ("max_energy_swing", "最大盈亏功 ΔWmax", "largest energy swing ΔWmax", "J", 1.0),
-    ("inertia", "飞轮转动惯量 J_F", "flywheel J_F", "kg·m²", 1.0),
-    ("base_radius", "凸轮基圆半径 r0", "cam base radius r0", "mm", 1e3),
-    ("roller_radius", "滚子半径 rr", "roller radius rr", "mm", 1e3),
-    ("module", "齿轮模数 m", "gear module m", "mm", 1e3),
-    ("contact_ratio", "重合度 εα", "contact ratio εα", "", 1.0),
+    ("max_energy_swing", "最大盈亏功 $\\Delta W_{max}$", "largest energy swing $\\Delta W_{max}$", "J", 1.0),
+    ("inertia", "飞轮转动惯量 $J_F$", "flywheel $J_F$", "kg·m²", 1.0),
+    ("base_radius", "凸轮基圆半径 $r_0$", "cam base radius $r_0$", "mm", 1e3),
+    ("roller_radius", "滚子半径 $r_r$", "roller radius $r_r$", "mm", 1e3),
+    ("module", "齿轮模数 $m$", "gear module $m$", "mm", 1e3),
+    ("contact_ratio", "重合度 $\\varepsilon_\\alpha$", "contact ratio $\\varepsilon_\\alpha$", "", 1.0),
     ("designation", "电动机", "motor", "", 1.0),
     ("total_ratio", "总传动比", "total ratio", "", 1.0),
 )
@@ -297,6 +297,18 @@ def _get(document: Any, path: str) -> Any:
     return node
 
 
+# symbols in the registry's plain-text labels (also shown in the terminal) → typeset
+_LABEL_MATH = ((re.compile(r"\bJ_F\b"), r"$J_F$"), (re.compile(r"γ_?min"), r"$\gamma_{min}$"),
+               (re.compile(r"\bK\b"), r"$K$"), (re.compile(r"\br0\b"), r"$r_0$"))
+
+
+def _label(text: str) -> str:
+    text = md_text(text)
+    for pattern, math_ in _LABEL_MATH:
+        text = pattern.sub(lambda _m: math_, text)
+    return text.replace("γ\\_min", r"$\gamma_{min}$").replace("J\\_F", "$J_F$")
+
+
 def key_rows(machine: str, document: dict, lang: str) -> list[list[str]]:
     """[quantity, value, unit]: the machine's registry summary, then the probed quantities
     it does not give."""
@@ -312,7 +324,7 @@ def key_rows(machine: str, document: dict, lang: str) -> list[list[str]]:
         text = _show(_get(document, path), factor)
         if text is None:
             continue
-        rows.append([lzh if zh else len_, text, unit or "—"])
+        rows.append([_label(lzh if zh else len_), text, unit or "—"])
         leaf = path.rsplit(".", 1)[-1]
         paths.add(_SAME.get(leaf, leaf))
     for leaf, lzh, len_, unit, factor in _PROBES:
@@ -325,6 +337,11 @@ def key_rows(machine: str, document: dict, lang: str) -> list[list[str]]:
         if text is not None:
             rows.append([lzh if zh else len_, text, unit or "—"])
             paths.add(leaf)
+    for fol in document.get("followers") or ():        # the disc cam's followers
+        text = _show(fol.get("stroke"), 1e3)
+        if text is not None:
+            label = md_text(str(fol.get("label", "")))
+            rows.append([f"{label} 推杆行程" if zh else f"{label} follower stroke", text, "mm"])
     return rows
 
 
@@ -389,26 +406,51 @@ def summary_context(machine: str, document: dict, ctx: dict, lang: str, title: s
 
 # --------------------------------------------------------------------------- the appendix
 
-LISTING_WIDTH = 86   # characters of a code line on the A4 text block (monospace, code size)
+LISTING_WIDTH = 80   # display columns of a code line on the A4 text block (CJK count 2)
+
+
+def display_width(text: str) -> int:
+    """Columns a line takes in the monospace listing: wide (CJK) characters count 2."""
+    import unicodedata
+
+    return sum(2 if unicodedata.east_asian_width(ch) in "WF" else 1 for ch in text)
+
+
+def _cut(text: str, columns: int) -> tuple[str, str]:
+    """The longest head of ``text`` within ``columns`` (at a space when there is one in its
+    second half), and the rest."""
+    used, end = 0, 0
+    for i, ch in enumerate(text):
+        used += display_width(ch)
+        if used > columns:
+            break
+        end = i + 1
+    else:
+        return text, ""
+    space = text.rfind(" ", 0, end)
+    if space > end // 2:
+        end = space + 1
+    return text[:end].rstrip(), text[end:].lstrip()
 
 
 def program_listing(module_name: str, width: int = LISTING_WIDTH) -> str:
     """The source of ``module_name`` (read now, from the installed package), long lines
-    wrapped with a continuation mark so that the listing fits the page."""
+    wrapped with a continuation mark (↪, at the line's indent) so that the listing fits the
+    page."""
     import importlib
 
     source = inspect.getsource(importlib.import_module(module_name))
     lines = []
     for line in source.splitlines():
-        if len(line) <= width:
+        if display_width(line) <= width:
             lines.append(line)
             continue
-        indent = len(line) - len(line.lstrip())
-        pieces = textwrap.wrap(line.strip(), width=width - indent - 2, break_long_words=True,
-                               break_on_hyphens=False, drop_whitespace=False)
-        for j, piece in enumerate(pieces):
-            lead = " " * indent if j == 0 else " " * indent + "↪ "
-            lines.append((lead + piece.rstrip()) if j == 0 else (lead + piece.strip()))
+        indent = " " * (len(line) - len(line.lstrip()))
+        head, rest = _cut(line, width)
+        lines.append(head)
+        while rest:
+            piece, rest = _cut(rest, width - len(indent) - 2)
+            lines.append(f"{indent}↪ {piece}")
     return "\n".join(lines)
 
 
