@@ -476,11 +476,11 @@ def flow_chart(path: Path, titles: list[str], lang: str) -> Path:
     configure_matplotlib()
     zh = lang == "zh"
     boxes = ([("开始", "term"), ("读入任务书（YAML）并校验数据", "io"), ("换算为 SI 单位，可行性检查", "proc")]
-             if zh else [("start", "term"), ("read and validate the brief (YAML)", "io"),
-                         ("convert to SI units; feasibility checks", "proc")])
+             if zh else [("start", "term"), ("read and check the brief (YAML)", "io"),
+                         ("SI units; feasibility checks", "proc")])
     boxes += [(stage_title(t, lang), "proc") for t in titles]
     boxes += ([("写出 results.json、报告与图纸", "io"), ("结束", "term")] if zh else
-              [("write results.json, the report and the sheets", "io"), ("end", "term")])
+              [("write results, report and sheets", "io"), ("end", "term")])
     n = len(boxes)
     step, h, w = 0.8, 0.5, 5.6
     fig, ax = plt.subplots(figsize=(4.6, 0.34 * n + 0.3))
