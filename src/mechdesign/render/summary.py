@@ -401,6 +401,7 @@ def summary_context(machine: str, document: dict, ctx: dict, lang: str, title: s
     return {"title": md_text(title) if title else "", "parts": _designed(document, lang),
             "key_rows": key_rows(machine, document, lang), "check_rows": groups,
             "checks_total": total, "checks_failed": failed, "all_passed": failed == 0,
+            "has_checks": bool(groups),
             "watch": watch}
 
 
