@@ -500,7 +500,10 @@ def flow_chart(path: Path, titles: list[str], lang: str) -> Path:
     ax.set_ylim(-(n - 1) * step - h, h)      # the whole chart, terminals included
     ax.set_aspect("equal")
     ax.axis("off")
-    fig.savefig(path, dpi=200, bbox_inches="tight")
+    from ..fileio import atomic_path
+
+    with atomic_path(path) as tmp:
+        fig.savefig(tmp, dpi=200, bbox_inches="tight", format="png")
     plt.close(fig)
     return path
 
