@@ -41,6 +41,8 @@ RENDER_MAY_IMPORT = {
                                           "(actuator, state, occurrence): a look-up, no computation",
     ("mechdesign.core.strength", "COURSE_SCALE"): "a constant of the strength checks",
     ("mechdesign.stages.cam", "CAM_CHECK_NAMES"): "names of the self-checks (zh, en)",
+    ("mechdesign.stages.drive", "DRIVE_CHECK_NAMES"): "names of the self-checks (zh, en)",
+    ("mechdesign.machines.eccentric_cam.stages", "DISC_CHECK_NAMES"): "names of the self-checks (zh, en)",
     ("mechdesign.stages.cam", "DIST_LIMIT"): "a tolerance constant printed with its check",
     # result and model types (isinstance checks and annotations)
     ("mechdesign.core.cam", "TranslatingFollower"): "follower type (isinstance)",

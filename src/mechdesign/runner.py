@@ -158,9 +158,13 @@ def run_one(brief: Path, *, out_dir: Path | None = None, lang: str | None = None
         return Outcome(**common, status="invalid", exit_code=EXIT_INVALID,
                        message=FeasibilityError(source, problems).text(language))
     try:
-        results, _ = run_stages(stages_for(machine, params),
+        stage_list = stages_for(machine, params)
+        results, _ = run_stages(stage_list,
                                 {"params": params, "brief": b, "checked": checked},
                                 stage_progress)
+        # (title, result name) of every stage, in the order they ran
+        ran = [(st.title, st.key if isinstance(st.key, str) else ", ".join(st.key))
+               for st in stage_list]
     except Exception as exc:  # noqa: BLE001 - classified below; never a bare traceback
         message = describe_design_error(exc, language)
         if message is not None:
@@ -187,6 +191,12 @@ def run_one(brief: Path, *, out_dir: Path | None = None, lang: str | None = None
     if requested is not None:
         document["analysis_requests"] = to_plain(requested)
 
+    # the seed hands in its analysis program: the appendix shows the stages that ran
+    program = None
+    if getattr(report, "PROGRAM_APPENDIX", False):
+        from .registry import entry
+
+        program = {"stages": ran, "module": entry(machine.name).stages.partition(":")[0]}
     animate = None
     if "gif" in formats:
         if hasattr(report, "animate"):
@@ -204,7 +214,7 @@ def run_one(brief: Path, *, out_dir: Path | None = None, lang: str | None = None
             templates=templates, progress=render_progress, group=label,
             make_sheets=lambda folder, figs: make_sheets(results, b, folder, figs, language,
                                                          formats, render_progress),
-            animate=animate, parallel=parallel,
+            animate=animate, parallel=parallel, program=program,
             write_data=(None if not hasattr(report, "write_data")
                         else lambda d: report.write_data(results, d)))
     except ForeignFiles as exc:   # a figure or sheet name clashes with a file not ours

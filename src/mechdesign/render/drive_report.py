@@ -124,7 +124,8 @@ def stage_designs(d, lang: str) -> list[dict]:
             rows = [["$d_1$", f(r.d1 * MM, 0), "mm"], ["$d_2$", f(r.d2 * MM, 0), "mm"],
                     ["$\\varepsilon$", f(r.slip, 3), "—"], ["$v$", f(g.extra["v"], 2), "m/s"],
                     ["$F_Q$", f(g.forces["Q"], 1), "N"]]
-            out.append({"title": title, "text": text, "rows": rows, "formulas": [], "checks": []})
+            out.append({"title": title, "text": text, "rows": rows, "formulas": [], "checks": [],
+                        "refs": ("gb13575",)})
             continue
         m_text = (f"{f(g.module * MM, 2)} mm" + ("" if g.module_given else
                   (f"（设计公式得 {f(g.module_min * MM, 3)} mm，取标准值）" if zh else
@@ -183,7 +184,9 @@ def stage_designs(d, lang: str) -> list[dict]:
                     ["$Z_\\rho$", f(e["Zrho"], 3), "—"], ["$z_{v2}, Y_{Fa2}$", f"{f(e['zv2'], 2)}, {f(e['YFa2'], 3)}", "—"],
                     ["$A$", f(e["area"], 3), "m²"]]
         out.append({"title": title, "text": text, "rows": rows,
-                    "formulas": [eq for c in g.checks for eq in check_formulas(c)], "checks": _rows(check_rows(g.checks, lang), zh)})
+                    "formulas": [eq for c in g.checks for eq in check_formulas(c)], "checks": _rows(check_rows(g.checks, lang), zh),
+                    # the sources of the method and tables (data/references.yaml)
+                    "refs": ("pu8", "gb1357") if g.kind == "gear" else ("pu9",)})
     for sh in d.shaft_designs:
         title = (f"{_shaft_name(sh.index, len(d.shafts) - 1, zh)}的设计与校核" if zh else
                  f"Design and checks of {_shaft_name(sh.index, len(d.shafts) - 1, zh)}")
@@ -206,8 +209,11 @@ def stage_designs(d, lang: str) -> list[dict]:
                         if zh else
                         (f"Bearings {b.designation} (d = {f(b.d * MM, 0)} mm, $C_r$ = {f(b.Cr / 1e3, 1)} kN), equivalent loads "
                          f"$P_A = {f(sh.bearing_loads[0], 1)}$ N, $P_B = {f(sh.bearing_loads[1], 1)}$ N ($f_p$ = 1.2)."))
+        bearing_std = () if sh.bearing is None else (
+            ("gb297",) if sh.bearing.designation.startswith("3") else ("gb276",))
         out.append({"title": title, "text": text, "rows": [],
-                    "formulas": [eq for c in sh.checks for eq in check_formulas(c)], "checks": _rows(check_rows(sh.checks, lang), zh)})
+                    "formulas": [eq for c in sh.checks for eq in check_formulas(c)], "checks": _rows(check_rows(sh.checks, lang), zh),
+                    "refs": ("pu8", "gb1096", *bearing_std)})
     return out
 
 

@@ -41,6 +41,10 @@ def render_markdown(template_name: str, ctx: dict, templates: Path) -> str:
                              undefined=jinja2.StrictUndefined, autoescape=False,
                              keep_trailing_newline=True,
                              comment_start_string="{##", comment_end_string="##}")
+    if "cite" not in ctx:      # the citation counter (render/summary.py), one per report
+        from .summary import Citations
+
+        ctx = {**ctx, "cite": Citations("zh" if ".zh." in template_name else "en")}
     return env.get_template(template_name).render(**ctx)
 
 
@@ -85,7 +89,8 @@ def write_report(out_dir: Path, *, machine: str, lang: str, formats: tuple[str, 
                  write_data: Callable[[Path], list] | None = None,
                  make_sheets: Callable[[Path, Path], Callable[[], list]] | None = None,
                  animate: Callable[[Path], Path] | None = None,
-                 group: str | None = None, parallel: bool = False) -> list[Path]:
+                 group: str | None = None, parallel: bool = False,
+                 program: dict | None = None) -> list[Path]:
     """Render into a staging folder, then move the finished files into ``out_dir``.
 
     ``write_data`` may add machine-specific data files (e.g. CSV coordinates) to the folder;
@@ -93,7 +98,9 @@ def write_report(out_dir: Path, *, machine: str, lang: str, formats: tuple[str, 
     giving their :class:`~.sheets.SheetFiles`; ``animate(path)`` writes the GIF (format gif);
     ``group`` (a data group of the brief) is stated on the title page and atop the report;
     ``parallel`` lets figures and sheets be written by a helper process while the next one
-    is drawn (:mod:`.parallel`: a single run on a machine of two cores or more)."""
+    is drawn (:mod:`.parallel`: a single run on a machine of two cores or more);
+    ``program`` ({stages: titles of the stages that ran, module: the stages module}) adds
+    the appendix with the analysis program's flow chart and listing (:mod:`.summary`)."""
     say = progress or (lambda _msg: None)
     tdir = template_dir(templates)
     out_dir = Path(out_dir)
@@ -117,6 +124,10 @@ def write_report(out_dir: Path, *, machine: str, lang: str, formats: tuple[str, 
                 sheets = collect_sheets()
                 ctx = make_context(figures)
                 ctx["sheets"] = [_sheet_row(sh, lang) for sh in sheets]
+                from .summary import Citations, handin_context
+
+                ctx.update(handin_context(machine, document, ctx, lang, meta.title, program, fig_dir),
+                           cite=Citations(lang))
                 say("Markdown")
                 md = render_markdown(f"{machine}.{lang}.md.j2", ctx, tdir)
                 if group is not None:

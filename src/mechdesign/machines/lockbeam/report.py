@@ -18,6 +18,10 @@ from ...render.fmt import verdict
 DEG = 180.0 / np.pi
 MM = 1e3
 
+#: The seed (002) hands in its analysis program: the report ends with an appendix holding
+#: the program's flow chart and the listing of this machine's stages module.
+PROGRAM_APPENDIX = True
+
 
 def grashof_sentence(a: float, b: float, c: float, d: float, lang: str) -> str:
     """Grashof's rule for the bending four-bar (a input rocker, b coupler, c arm on the

@@ -1,0 +1,531 @@
+"""The hand-in's closing chapters: 设计小结 / Summary, 参考文献 / References and, where the
+machine's report asks for it (``PROGRAM_APPENDIX`` in its report module: the lock-beam,
+whose seed hands in its analysis program), the appendix with the program's flow chart and
+listing.
+
+Everything here reads a finished run: the results document (what results.json holds),
+the report context the machine prepared (its verification rows and findings) and, for the
+appendix, the titles of the stages the run executed. The templates
+(``summary_section``, ``references_section``, ``appendix_section``) only place the rows.
+
+Citations: a template writes ``{{ cite("sun") }}`` where a method or table of a source is
+used; :class:`Citations` numbers the sources in order of first citation and the references
+chapter, rendered last, lists exactly the cited ones (data/references.yaml), so that every
+marker has its entry and every entry is cited.
+"""
+from __future__ import annotations
+
+import inspect
+import math
+import re
+import textwrap
+from functools import lru_cache
+from importlib import resources
+from pathlib import Path
+from typing import Any
+
+from .fmt import md_text
+
+# --------------------------------------------------------------------------- references
+
+
+@lru_cache(maxsize=1)
+def references() -> dict[str, dict]:
+    """data/references.yaml: key → {zh, en, source, unconfirmed}."""
+    import yaml
+
+    text = resources.files("mechdesign.data").joinpath("references.yaml").read_text(encoding="utf-8")
+    return yaml.safe_load(text)
+
+
+class Citations:
+    """``cite("a", "b")`` → ``[1, 2]``: numbers in order of first citation; ``entries()`` the
+    cited sources in that order (the references chapter, rendered after every citation)."""
+
+    def __init__(self, lang: str):
+        self.lang = lang
+        self.order: list[str] = []
+
+    def __call__(self, *keys: str) -> str:
+        known = references()
+        nums = []
+        for key in keys:
+            if key not in known:
+                raise KeyError(f"unknown reference {key!r}: add it to mechdesign/data/references.yaml")
+            if key not in self.order:
+                self.order.append(key)
+            nums.append(self.order.index(key) + 1)
+        # escaped brackets: pandoc must not read "[1]" before a parenthesis as a link
+        return "\\[" + ", ".join(str(n) for n in sorted(set(nums))) + "\\]" if nums else ""
+
+    def entries(self) -> list[dict]:
+        known = references()
+        lang = "zh" if self.lang == "zh" else "en"
+        return [{"n": i, "key": key, "text": md_text(known[key][lang])}
+                for i, key in enumerate(self.order, 1)]
+
+
+# --------------------------------------------------------------------------- checks
+
+_PASS = {"满足", "合格", "通过", "ok", "met", "pass", "passed", "✓", "√", "全部满足", "all met"}
+_FAIL = {"不满足", "不合格", "未通过", "fails", "fail", "failed", "not met", "✗", "×"}
+
+
+def verdict_word(ok: bool, lang: str) -> str:
+    """The one verdict vocabulary of the summary: 合格/不合格, PASS/FAIL."""
+    if lang == "zh":
+        return "合格" if ok else "不合格"
+    return "PASS" if ok else "FAIL"
+
+
+def read_verdict(cell: str) -> bool | None:
+    """A verification table's verdict cell as True/False, None when it is no verdict
+    (an explanation, a dash)."""
+    word = re.sub(r"[*_`]", "", str(cell)).strip().lower()
+    if word in _PASS:
+        return True
+    if word in _FAIL:
+        return False
+    return None
+
+
+def _check_names() -> dict[str, tuple[str, str]]:
+    """key → (zh, en) of the self-checks that carry only a key."""
+    from ..machines.eccentric_cam.stages import DISC_CHECK_NAMES
+    from ..stages.cam import CAM_CHECK_NAMES
+    from ..stages.drive import DRIVE_CHECK_NAMES
+
+    return {**DRIVE_CHECK_NAMES, **CAM_CHECK_NAMES, **DISC_CHECK_NAMES}
+
+
+_CAM_OWNERS = {"cam": ("凸轮", "cam"), "positioning_cam": ("定位凸轮", "positioning cam"),
+               "bending_cam": ("扳弯凸轮", "bending cam")}
+_SEGMENT = {"rise": ("推程", "rise"), "return": ("回程", "return")}
+
+
+def document_checks(document: dict) -> list[dict]:
+    """Every check the run's results record with a verdict (a dict with a boolean ``passed``
+    or ``ok``), in document order: {path, group (zh, en), name (zh, en), ok}."""
+    names = _check_names()
+    out: list[dict] = []
+
+    def actuator(doc_cycle: dict, ref: str, zh: bool) -> str:
+        key = ref.split(".")[0]
+        for a in doc_cycle.get("actuators", ()):
+            if a.get("key") == key:
+                return a.get("name_zh" if zh else "name_en") or key
+        return key
+
+    def walk(node: Any, path: tuple, parents: tuple) -> None:
+        if isinstance(node, dict):
+            flag = node.get("passed", node.get("ok"))
+            if isinstance(flag, bool):
+                out.append({"path": ".".join(str(p) for p in path), "ok": flag,
+                            "_id": repr(sorted((k, repr(v)) for k, v in node.items())),
+                            **_describe(node, path, parents, names, actuator)})
+            for k, v in node.items():
+                walk(v, path + (k,), parents + (node,))
+        elif isinstance(node, list):
+            for i, v in enumerate(node):
+                walk(v, path + (i,), parents + (node,))
+
+    walk(document, (), ())
+    # a check recorded twice (a shaft's governing check is also in its list) counts once
+    seen, unique = set(), []
+    for c in out:
+        mark = (c["group"], c["name"], c["ok"], c.pop("_id"))
+        if mark not in seen:
+            seen.add(mark)
+            unique.append(c)
+    return unique
+
+
+def _describe(node: dict, path: tuple, parents: tuple, names: dict, actuator) -> dict:
+    """(group, name) of one check, both as (zh, en)."""
+    keys = [p for p in path if isinstance(p, str)]
+    if "stages" in keys and "drive" in keys:              # a transmission stage's strength check
+        stage = _owner(parents, path, "stages")
+        group = (f"第 {stage.get('index', 0) + 1} 级：{stage.get('name_zh', '')}",
+                 f"stage {stage.get('index', 0) + 1}: {stage.get('name_en', '')}")
+    elif "shaft_designs" in keys:                         # a shaft's strength, bearing, key checks
+        from .drive_report import _shaft_name
+
+        shaft = _owner(parents, path, "shaft_designs")
+        last = len(_field(parents, path, "shafts") or ()) - 1
+        group = (_shaft_name(shaft.get("index", 0), last, True),
+                 _shaft_name(shaft.get("index", 0), last, False))
+    elif "segments" in keys:                              # a cam segment's pressure angle
+        owner = keys[keys.index("segments") - 1] if keys.index("segments") else "cam"
+        zh, en = _CAM_OWNERS.get(owner, ("凸轮", "cam"))
+        group = (f"{zh}压力角", f"{en} pressure angle")
+        seg = _SEGMENT.get(node.get("kind"), (node.get("kind", ""), node.get("kind", "")))
+        return {"group": group, "name": (f"{seg[0]}最大压力角", f"largest pressure angle of the {seg[1]}")}
+    elif "constraints" in keys and "cycle" in keys:        # a timing rule of the cycle diagram
+        cyc = _field(parents, path, "cycle", whole=True) or {}
+        group = ("运动循环协调", "motion-cycle timing")
+        return {"group": group,
+                "name": (f"{actuator(cyc, node.get('a', ''), True)}—{actuator(cyc, node.get('b', ''), True)}",
+                         f"{actuator(cyc, node.get('a', ''), False)}–{actuator(cyc, node.get('b', ''), False)}")}
+    elif "verification" in keys or "checks" in keys:
+        group = ("计算自检", "self-checks")
+    else:
+        group = (keys[0] if keys else "", keys[0] if keys else "")
+    if node.get("name_zh") or node.get("name_en"):
+        name = (node.get("name_zh") or node.get("name_en"), node.get("name_en") or node.get("name_zh"))
+    else:
+        key = node.get("key", "")
+        name = names.get(key, (key, key))
+        label = (node.get("detail") or {}).get("label")
+        if label:
+            name = (f"{label} {name[0]}", f"{label} {name[1]}")
+    return {"group": group, "name": name}
+
+
+def _owner(parents: tuple, path: tuple, key: str) -> dict:
+    """The list item under ``key`` that holds the check."""
+    i = path.index(key)       # parents[j] holds path[j]; parents[i + 2] is the list's item
+    item = parents[i + 2] if i + 2 < len(parents) else {}
+    return item if isinstance(item, dict) else {}
+
+
+def _field(parents: tuple, path: tuple, key: str, whole: bool = False) -> Any:
+    """The value of ``key`` in the dict that holds it on the way to the check."""
+    i = path.index(key) if key in path else None
+    if i is not None:
+        return parents[i + 1] if whole and i + 1 < len(parents) else parents[i].get(key)
+    for p in reversed(parents):
+        if isinstance(p, dict) and key in p:
+            return p[key]
+    return None
+
+
+def check_groups(document: dict, ctx: dict, lang: str) -> list[dict]:
+    """The summary's verdict rows: one per group of checks, {group, count, failed names,
+    verdict}; the report's verification table is one group when the results hold no
+    self-checks of their own (it then carries verdicts the machine judged)."""
+    zh = lang == "zh"
+    i = 0 if zh else 1
+    groups: dict[str, dict] = {}
+    checks = document_checks(document)
+    for c in checks:
+        g = groups.setdefault(c["group"][i], {"group": c["group"][i], "count": 0, "failed": []})
+        g["count"] += 1
+        if not c["ok"]:
+            g["failed"].append(c["name"][i])
+    if not any(c["group"][0] == "计算自检" for c in checks):
+        rows = [(r[0], read_verdict(r[-1])) for r in (ctx.get("verify_rows") or ()) if len(r) >= 2]
+        rows = [(name, ok) for name, ok in rows if ok is not None]
+        if rows:
+            g = {"group": "计算校核" if zh else "verification", "count": len(rows),
+                 "failed": [name for name, ok in rows if not ok]}
+            groups = {g["group"]: g, **groups}
+    out = []
+    for g in groups.values():
+        failed = list(dict.fromkeys(g["failed"]))
+        word = verdict_word(not failed, lang)
+        if failed:
+            word += ("：" if zh else ": ") + ("、" if zh else ", ").join(failed)
+        out.append({"group": g["group"], "count": str(g["count"]), "failed": failed,
+                    "verdict": word, "ok": not failed})
+    return out
+
+
+# --------------------------------------------------------------------------- key numbers
+
+# (leaf key, zh label, en label, unit, factor SI → unit): found anywhere in the results
+# document (first occurrence outside the verification and comparison parts), shown when the
+# machine's registry summary does not already give the same quantity.
+_PROBES = (
+    ("stroke", "行程", "stroke", "mm", 1e3),
+    ("time_ratio", "行程速比系数 $K$", "time ratio $K$", "", 1.0),
+    ("extreme_angle", "极位夹角 $\\theta$", "extreme-position angle $\\theta$", "°", 180 / math.pi),
+    ("gamma_min", "最小传动角 $\\gamma_{min}$", "minimum transmission angle $\\gamma_{min}$", "°", 180 / math.pi),
+    ("peak_torque", "峰值扭矩", "peak torque", "N·m", 1.0),
+    ("max_energy_swing", "最大盈亏功 $\\Delta W_{max}$", "largest energy swing $\\Delta W_{max}$", "J", 1.0),
+    ("inertia", "飞轮转动惯量 $J_F$", "flywheel $J_F$", "kg·m²", 1.0),
+    ("base_radius", "凸轮基圆半径 $r_0$", "cam base radius $r_0$", "mm", 1e3),
+    ("roller_radius", "滚子半径 $r_r$", "roller radius $r_r$", "mm", 1e3),
+    ("module", "齿轮模数 $m$", "gear module $m$", "mm", 1e3),
+    ("contact_ratio", "重合度 $\\varepsilon_\\alpha$", "contact ratio $\\varepsilon_\\alpha$", "", 1.0),
+    ("designation", "电动机", "motor", "", 1.0),
+    ("total_ratio", "总传动比", "total ratio", "", 1.0),
+)
+_SAME = {"time_ratio_simulated": "time_ratio"}   # registry quantity → the probe it covers
+_SKIP = ("verification", "seed", "textbook", "compare", "best_offset", "residuals", "simulated",
+         "check", "candidates", "motor_candidates", "positions", "table", "stages", "shaft_designs",
+         "rounded", "quality", "boundaries", "segments", "outline", "energy", "followers")
+
+
+def _find(document: Any, leaf: str) -> tuple[str, Any] | None:
+    """(dotted path, value) of the first scalar ``leaf`` breadth-first outside _SKIP."""
+    queue = [("", document)]
+    while queue:
+        path, node = queue.pop(0)
+        if not isinstance(node, dict):
+            continue
+        value = node.get(leaf)
+        if value is not None and not isinstance(value, (dict, list, bool)):
+            return (f"{path}.{leaf}" if path else leaf), value
+        for k, v in node.items():
+            if isinstance(v, dict) and k not in _SKIP:
+                queue.append((f"{path}.{k}" if path else k, v))
+    return None
+
+
+def _show(value: Any, factor: float) -> str | None:
+    if isinstance(value, bool) or value is None:
+        return None
+    if isinstance(value, str):
+        return md_text(value)
+    try:
+        x = float(value) * factor
+    except (TypeError, ValueError):
+        return None
+    if not math.isfinite(x):
+        return None
+    text = f"{x:.4g}" if abs(x) < 1e4 else f"{x:.0f}"
+    return "0" if text in ("-0", "0") else text
+
+
+def _get(document: Any, path: str) -> Any:
+    """The value at a dotted path of the results document (None when absent)."""
+    node = document
+    for part in path.split("."):
+        node = node.get(part) if isinstance(node, dict) else None
+        if node is None:
+            return None
+    return node
+
+
+# symbols in the registry's plain-text labels (also shown in the terminal) → typeset
+_LABEL_MATH = ((re.compile(r"\bJ_F\b"), r"$J_F$"), (re.compile(r"γ_?min"), r"$\gamma_{min}$"),
+               (re.compile(r"\bK\b"), r"$K$"), (re.compile(r"\br0\b"), r"$r_0$"))
+
+
+def _label(text: str) -> str:
+    text = md_text(text)
+    for pattern, math_ in _LABEL_MATH:
+        text = pattern.sub(lambda _m: math_, text)
+    return text.replace("γ\\_min", r"$\gamma_{min}$").replace("J\\_F", "$J_F$")
+
+
+def key_rows(machine: str, document: dict, lang: str) -> list[list[str]]:
+    """[quantity, value, unit]: the machine's registry summary, then the probed quantities
+    it does not give."""
+    from ..registry import entry
+
+    zh = lang == "zh"
+    rows, paths = [], set()
+    try:
+        listed = entry(machine).summary
+    except KeyError:
+        listed = ()
+    for lzh, len_, unit, path, factor in listed:
+        text = _show(_get(document, path), factor)
+        if text is None:
+            continue
+        rows.append([_label(lzh if zh else len_), text, unit or "—"])
+        leaf = path.rsplit(".", 1)[-1]
+        paths.add(_SAME.get(leaf, leaf))
+    for leaf, lzh, len_, unit, factor in _PROBES:
+        if leaf in paths or (leaf == "inertia" and "flywheel" not in str(_find(document, leaf))):
+            continue
+        found = _find(document, leaf)
+        if found is None:
+            continue
+        text = _show(found[1], factor)
+        if text is not None:
+            rows.append([lzh if zh else len_, text, unit or "—"])
+            paths.add(leaf)
+    for fol in document.get("followers") or ():        # the disc cam's followers
+        text = _show(fol.get("stroke"), 1e3)
+        if text is not None:
+            label = md_text(str(fol.get("label", "")))
+            rows.append([f"{label} 推杆行程" if zh else f"{label} follower stroke", text, "mm"])
+    return rows
+
+
+# --------------------------------------------------------------------------- the summary
+
+_PARTS = (  # (document key, zh, en): what a results document shows was designed
+    ("synthesis", "机构尺度综合", "dimensional synthesis of the linkage"),
+    ("toggle", "肘杆机构设计", "toggle linkage design"),
+    ("optimum", "曲柄摇杆机构设计", "crank-rocker design"),
+    ("positions", "机构运动分析与动态静力分析", "kinematic and kinetostatic analysis"),
+    ("linkage", "机构运动分析与动态静力分析", "kinematic and kinetostatic analysis"),
+    ("feed", "送料机构运动分析", "kinematic analysis of the feed linkage"),
+    ("bending", "扳弯机构设计", "bending linkage design"),
+    ("flywheel", "飞轮设计", "flywheel design"),
+    ("followers", "凸轮机构从动件运动分析", "follower motion of the disc cam"),
+    ("cam", "凸轮机构设计", "cam design"),
+    ("positioning_cam", "凸轮机构设计", "cam design"),
+    ("gear", "齿轮机构设计", "gear pair design"),
+    ("transmission", "传动系统设计", "transmission design"),
+    ("drive", "传动装置设计与强度校核", "drive design and strength checks"),
+    ("cycle", "运动循环图", "motion cycle diagram"),
+    ("morphology", "运动方案（形态学矩阵）", "concept selection (morphological matrix)"),
+)
+
+
+def _designed(document: dict, lang: str) -> list[str]:
+    i = 1 if lang == "zh" else 2
+    return list(dict.fromkeys(p[i] for p in _PARTS if document.get(p[0]) is not None))
+
+
+def _findings(ctx: Any, out: list[str]) -> list[str]:
+    """The texts of every ``findings``/``warnings`` list the machine put in the context."""
+    if isinstance(ctx, dict):
+        for k, v in ctx.items():
+            if k in ("findings", "warnings") and isinstance(v, (list, tuple)):
+                out.extend(w for w in v if isinstance(w, str) and w.strip())
+            elif isinstance(v, dict):
+                _findings(v, out)
+    return out
+
+
+def summary_context(machine: str, document: dict, ctx: dict, lang: str, title: str) -> dict:
+    """What the summary template places: designed parts, key numbers, check verdicts and
+    what to watch (failed checks named, then the run's findings)."""
+    zh = lang == "zh"
+    groups = check_groups(document, ctx, lang)
+    findings = list(dict.fromkeys(_findings(ctx, [])))
+    watch = []
+    for g in groups:
+        for name in g["failed"]:
+            # a failed check is named here unless a finding of the run already names it
+            if not any(name in w for w in findings):
+                watch.append(f"{g['group']}：{name}不合格。" if zh else f"{g['group']}: {name} FAILS.")
+    watch += findings
+    total = sum(int(g["count"]) for g in groups)
+    failed = sum(len(g["failed"]) for g in groups)
+    return {"title": md_text(title) if title else "", "parts": _designed(document, lang),
+            "key_rows": key_rows(machine, document, lang), "check_rows": groups,
+            "checks_total": total, "checks_failed": failed, "all_passed": failed == 0,
+            "has_checks": bool(groups),
+            "watch": watch}
+
+
+# --------------------------------------------------------------------------- the appendix
+
+LISTING_WIDTH = 80   # display columns of a code line on the A4 text block (CJK count 2)
+
+
+def display_width(text: str) -> int:
+    """Columns a line takes in the monospace listing: wide (CJK) characters count 2."""
+    import unicodedata
+
+    return sum(2 if unicodedata.east_asian_width(ch) in "WF" else 1 for ch in text)
+
+
+def _cut(text: str, columns: int) -> tuple[str, str]:
+    """The longest head of ``text`` within ``columns`` (at a space when there is one in its
+    second half), and the rest."""
+    used, end = 0, 0
+    for i, ch in enumerate(text):
+        used += display_width(ch)
+        if used > columns:
+            break
+        end = i + 1
+    else:
+        return text, ""
+    space = text.rfind(" ", 0, end)
+    if space > end // 2:
+        end = space + 1
+    return text[:end].rstrip(), text[end:].lstrip()
+
+
+def program_listing(module_name: str, width: int = LISTING_WIDTH) -> str:
+    """The source of ``module_name`` (read now, from the installed package), long lines
+    wrapped with a continuation mark (↪, at the line's indent) so that the listing fits the
+    page."""
+    import importlib
+
+    source = inspect.getsource(importlib.import_module(module_name))
+    lines = []
+    for line in source.splitlines():
+        if display_width(line) <= width:
+            lines.append(line)
+            continue
+        indent = " " * (len(line) - len(line.lstrip()))
+        head, rest = _cut(line, width)
+        lines.append(head)
+        while rest:
+            piece, rest = _cut(rest, width - len(indent) - 2)
+            lines.append(f"{indent}↪ {piece}")
+    return "\n".join(lines)
+
+
+def stage_title(title: str, lang: str) -> str:
+    """A stage's title ("中文 / English") in the report's language."""
+    if " / " in title:
+        zh, en = title.split(" / ", 1)
+        return zh.strip() if lang == "zh" else en.strip()
+    return title
+
+
+def flow_chart(path: Path, titles: list[str], lang: str) -> Path:
+    """The analysis program's flow chart: boxes and arrows of the stages the run executed,
+    between reading the brief and writing the report."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    from matplotlib.patches import FancyBboxPatch
+
+    from .fonts import configure_matplotlib
+
+    configure_matplotlib()
+    zh = lang == "zh"
+    boxes = ([("开始", "term"), ("读入任务书（YAML）并校验数据", "io"), ("换算为 SI 单位，可行性检查", "proc")]
+             if zh else [("start", "term"), ("read and check the brief (YAML)", "io"),
+                         ("SI units; feasibility checks", "proc")])
+    boxes += [(stage_title(t, lang), "proc") for t in titles]
+    boxes += ([("写出 results.json、报告与图纸", "io"), ("结束", "term")] if zh else
+              [("write results, report and sheets", "io"), ("end", "term")])
+    n = len(boxes)
+    step, h, w = 0.8, 0.5, 5.6
+    fig, ax = plt.subplots(figsize=(4.6, 0.34 * n + 0.3))
+    for k, (text, kind) in enumerate(boxes):
+        y = -k * step
+        style = {"term": "round,pad=0.02,rounding_size=0.3", "io": "round,pad=0.02,rounding_size=0.05",
+                 "proc": "square,pad=0.02"}[kind]
+        face = {"term": "#e8e8e8", "io": "#eef4fb", "proc": "white"}[kind]
+        ax.add_patch(FancyBboxPatch((-w / 2, y - h / 2), w, h, boxstyle=style, fc=face, ec="black", lw=0.8))
+        label = text if kind == "term" or k < 3 or k >= n - 2 else f"{k - 2}. {text}"
+        ax.text(0, y, label, ha="center", va="center", fontsize=8)
+        if k < n - 1:
+            ax.annotate("", xy=(0, y - step + h / 2), xytext=(0, y - h / 2),
+                        arrowprops={"arrowstyle": "-|>", "lw": 0.8, "color": "black"})
+    ax.set_xlim(-w / 2 - 0.2, w / 2 + 0.2)
+    ax.set_ylim(-(n - 1) * step - h, h)      # the whole chart, terminals included
+    ax.set_aspect("equal")
+    ax.axis("off")
+    from ..fileio import atomic_path
+
+    with atomic_path(path) as tmp:
+        fig.savefig(tmp, dpi=200, bbox_inches="tight", format="png")
+    plt.close(fig)
+    return path
+
+
+def appendix_context(program: dict, fig_dir: Path, lang: str) -> dict:
+    """{chart, stages, module, listing} for the appendix template; ``program`` is what the
+    runner recorded: (title, result name) of the stages that ran and the stages module."""
+    titles = [t for t, _ in program["stages"]]
+    chart = flow_chart(Path(fig_dir) / "program_flow.png", titles, lang)
+    return {"chart": f"{Path(fig_dir).name}/{chart.name}",
+            "stages": [[str(i), md_text(stage_title(t, lang)), f"`{key}`"]
+                       for i, (t, key) in enumerate(program["stages"], 1)],
+            "module": program["module"], "file": program["module"].replace(".", "/") + ".py",
+            "listing": program_listing(program["module"])}
+
+
+def handin_context(machine: str, document: dict, ctx: dict, lang: str, title: str,
+                   program: dict | None = None, fig_dir: Path | None = None) -> dict:
+    """The context keys of the closing chapters: ``cite`` (the citation counter),
+    ``summary`` and ``appendix`` (None when the machine hands in no program)."""
+    out = {"summary": summary_context(machine, document, ctx, lang, title),
+           "appendix": None}
+    if program is not None and fig_dir is not None:
+        out["appendix"] = appendix_context(program, fig_dir, lang)
+    return out

@@ -1,0 +1,273 @@
+"""The hand-in's closing chapters (issue 19, point 7): every report ends with its 设计小结 /
+Summary and 参考文献 / References; the lock-beam's with the appendix of its analysis
+program.
+
+The Markdown of every example brief is rendered in both languages from the session's
+computed results (figures replaced by placeholder names: the text does not depend on the
+pictures). The references are checked against the report's own citation markers (every
+marker has its entry, every entry is cited, numbered in order of first citation); the
+failed checks are found here, independently, by reading the results document, and each
+must appear in the summary as failed; the lock-beam appendix must list the stages the
+pipeline runs, in order. One end-to-end run checks the wiring through ``mechdesign run``.
+"""
+from __future__ import annotations
+
+import collections
+import json
+import re
+import unicodedata
+from pathlib import Path
+
+import jinja2
+import pytest
+
+from mechdesign.brief.loader import load_brief
+from mechdesign.machines import get_machine, stages_for
+from mechdesign.registry import entry
+from mechdesign.render.report import render_markdown, template_dir
+from mechdesign.render.summary import Citations, handin_context, references
+from mechdesign.results import to_plain
+
+ROOT = Path(__file__).resolve().parents[1]
+DESIGNS = ROOT / "designs"
+EXAMPLES = sorted(p.stem for p in DESIGNS.glob("*.yaml"))
+LANGS = ("zh", "en")
+TITLES = {"zh": ("设计小结", "参考文献", "附录"), "en": ("Summary", "References", "Appendix")}
+
+
+def render(name: str, lang: str, results: dict, tmp: Path) -> tuple[str, dict]:
+    """(Markdown, results document) of example ``name`` as ``mechdesign run`` writes them,
+    with placeholder figure names and no sheets."""
+    import importlib
+
+    from mechdesign.runner import _with_requested
+
+    brief = load_brief(DESIGNS / f"{name}.yaml")
+    machine = get_machine(brief.machine)
+    report = importlib.import_module(machine.report_module)
+    document = to_plain(machine.document(results))
+    tmp.mkdir(parents=True, exist_ok=True)
+    figs = collections.defaultdict(lambda: "figures/placeholder.png")
+    try:
+        ctx = _with_requested(report.context(results, brief, figs, lang), results, brief, figs, lang)
+        ctx["sheets"] = []
+        render_markdown(f"{machine.name}.{lang}.md.j2", dict(ctx), template_dir())
+    except (jinja2.UndefinedError, KeyError):
+        # a report that picks its figures by name prefix: draw them
+        from mechdesign.runner import _with_requested_figures
+
+        figs = _with_requested_figures(report, results, tmp, lang)
+        ctx = _with_requested(report.context(results, brief, figs, lang), results, brief, figs, lang)
+    ctx["sheets"] = []
+    program = None
+    if getattr(report, "PROGRAM_APPENDIX", False):
+        program = {"stages": [(s.title, s.key if isinstance(s.key, str) else ", ".join(s.key))
+                              for s in stages_for(machine, results["params"])],
+                   "module": entry(machine.name).stages.partition(":")[0]}
+    ctx.update(handin_context(machine.name, document, ctx, lang, brief.report.title, program, tmp),
+               cite=Citations(lang))
+    md = render_markdown(f"{machine.name}.{lang}.md.j2", ctx, template_dir())
+    return md, document
+
+
+@pytest.fixture(scope="module")
+def reports(example_results, tmp_path_factory):
+    """(name, lang) → (Markdown, results document), rendered on first use."""
+    cache: dict = {}
+
+    def get(name: str, lang: str):
+        if (name, lang) not in cache:
+            tmp = tmp_path_factory.mktemp(f"{name}-{lang}") / "figures"
+            cache[name, lang] = render(name, lang, example_results(name), tmp)
+        return cache[name, lang]
+
+    return get
+
+
+def headings(md: str) -> list[str]:
+    """Level-1 headings outside fenced code (a listing holds Python comments)."""
+    out, fenced = [], False
+    for line in md.splitlines():
+        if line.startswith("```"):
+            fenced = not fenced
+        elif not fenced and line.startswith("# "):
+            out.append(line[2:].replace("{-}", "").strip())
+    return out
+
+
+def section(md: str, title: str) -> str:
+    """The text of the level-1 section whose heading starts with ``title``."""
+    lines, inside, fenced = [], False, False
+    for line in md.splitlines():
+        if line.startswith("```"):
+            fenced = not fenced
+        elif not fenced and line.startswith("# "):
+            inside = line[2:].startswith(title)
+            continue
+        if inside:
+            lines.append(line)
+    return "\n".join(lines)
+
+
+def failed_checks(document) -> list[dict]:
+    """Every check of the results with a verdict that failed: a dict with ``passed`` or
+    ``ok`` False (read here independently of render/summary.py)."""
+    found = []
+
+    def walk(node):
+        if isinstance(node, dict):
+            if node.get("passed") is False or node.get("ok") is False:
+                found.append(node)
+            for v in node.values():
+                walk(v)
+        elif isinstance(node, list):
+            for v in node:
+                walk(v)
+
+    walk(json.loads(json.dumps(document)))
+    # the same check recorded twice (a shaft's governing check is also in its list) is one
+    return list({json.dumps(c, sort_keys=True): c for c in found}.values())
+
+
+def all_checks(document) -> int:
+    """The number of distinct checks with a verdict in the results."""
+    seen = set()
+
+    def walk(node):
+        if isinstance(node, dict):
+            if isinstance(node.get("passed"), bool) or isinstance(node.get("ok"), bool):
+                seen.add(json.dumps(node, sort_keys=True))
+            for v in node.values():
+                walk(v)
+        elif isinstance(node, list):
+            for v in node:
+                walk(v)
+
+    walk(json.loads(json.dumps(document)))
+    return len(seen)
+
+
+@pytest.mark.parametrize("lang", LANGS)
+@pytest.mark.parametrize("name", EXAMPLES)
+def test_every_report_ends_with_summary_then_references(reports, name, lang):
+    md, _ = reports(name, lang)
+    heads = headings(md)
+    summary, refs, appendix = TITLES[lang]
+    tail = heads[-3:] if heads[-1].startswith(appendix) else heads[-2:] + [None]
+    assert tail[0] == summary and tail[1] == refs, heads[-4:]
+    assert heads.count(summary) == 1 and heads.count(refs) == 1
+    # the appendix only where the machine's seed hands in its program (the lock-beam)
+    assert (tail[2] is not None) == (get_machine(load_brief(DESIGNS / f"{name}.yaml").machine).name
+                                     == "lockbeam")
+
+
+@pytest.mark.parametrize("lang", LANGS)
+@pytest.mark.parametrize("name", EXAMPLES)
+def test_every_failed_check_is_named_failed_in_the_summary(reports, name, lang):
+    md, document = reports(name, lang)
+    text = section(md, TITLES[lang][0])
+    fail_word, pass_word = ("不合格", "合格") if lang == "zh" else ("FAIL", "PASS")
+    rows = [r for r in text.splitlines() if r.startswith("| ") and (fail_word in r or pass_word in r)]
+    failed_rows = [r for r in rows if fail_word in r]
+    failed = failed_checks(document)
+    # every verdict of the results is counted in the summary's table
+    assert sum(int(r.split("|")[2]) for r in rows) >= all_checks(document)
+    for c in failed:
+        name_ = c.get("name_zh" if lang == "zh" else "name_en")
+        if name_:
+            assert any(name_ in r for r in failed_rows), (name_, failed_rows)
+    assert len(failed_rows) >= (1 if failed else 0)
+    # the count stated in the text is the number of failed names in the table
+    listed = sum(len(re.split("、|, ", r.split(fail_word, 1)[1].lstrip("：: ").rstrip(" |")))
+                 for r in failed_rows)
+    stated = re.search(r"(\d+) 项不合格" if lang == "zh" else r"of which (\d+) failed", text)
+    if failed_rows:
+        assert int(stated.group(1)) == listed >= len(failed)
+    elif rows:
+        assert stated is None and ("项校核，全部合格" in text or "checks; all passed" in text)
+    else:   # no check with a verdict in the results (the shaper's self-checks are values)
+        assert all_checks(document) == 0
+        assert "没有给出合格/不合格结论" in text or "no check with a verdict" in text
+    if failed_rows:
+        assert ("设计者应注意" in text) or ("should watch" in text)
+    # one verdict vocabulary: no other verdict words in the summary's table
+    for word in ("满足", "✓", "fails", " ok "):
+        assert not any(word in r for r in rows)
+
+
+@pytest.mark.parametrize("lang", LANGS)
+@pytest.mark.parametrize("name", EXAMPLES)
+def test_every_citation_has_its_entry_and_every_entry_is_cited(reports, name, lang):
+    md, _ = reports(name, lang)
+    refs_title = TITLES[lang][1]
+    body, _, rest = md.partition(f"# {refs_title} {{-}}")
+    listing = rest.split("\n# ", 1)[0]
+    entries = re.findall(r"^\\\[(\d+)\\\] (.+)$", listing, flags=re.M)
+    numbers = [int(n) for n, _ in entries]
+    assert numbers == list(range(1, len(numbers) + 1)) and numbers, listing
+    cited = []
+    for group in re.findall(r"\\\[(\d+(?:, \d+)*)\\\]", body):
+        cited += [int(n) for n in group.split(", ")]
+    assert set(cited) == set(numbers)
+    # numbered in order of first citation
+    first = list(dict.fromkeys(cited))
+    assert first == sorted(first)
+    # every entry is a source of the data file, in the report's language, and a textbook
+    # (孙桓 for every mechanism, 濮良贵 for a drive) is among them
+    known = {v["zh" if lang == "zh" else "en"] for v in references().values()}
+    texts = [t.replace("\\[", "[").replace("\\]", "]") for _, t in entries]
+    assert all(t in known for t in texts), texts
+    assert any("[M]" in t for t in texts)
+
+
+@pytest.mark.parametrize("lang", LANGS)
+def test_lockbeam_appendix_lists_the_stages_that_ran(reports, example_results, lang):
+    md, _ = reports("lockbeam", lang)
+    text = section(md, TITLES[lang][2])
+    brief = load_brief(DESIGNS / "lockbeam.yaml")
+    machine = get_machine(brief.machine)
+    stages = stages_for(machine, example_results("lockbeam")["params"])
+    rows = [r for r in text.split("```")[0].splitlines() if re.match(r"^\| \d+ \|", r)]
+    assert len(rows) == len(stages) >= 10
+    for i, (row, st) in enumerate(zip(rows, stages), 1):
+        zh, _, en = st.title.partition(" / ")
+        cells = [c.strip() for c in row.strip("|").split("|")]
+        assert cells[0] == str(i) and cells[1] == (zh if lang == "zh" else en).strip()
+        keys = st.key if isinstance(st.key, tuple) else (st.key,)
+        assert cells[2] == "`" + ", ".join(keys) + "`"
+    # the flow chart and the listing of the stages module, read at run time
+    assert "program_flow.png" in text
+    source = (ROOT / "src/mechdesign/machines/lockbeam/stages.py").read_text(encoding="utf-8")
+    listing = text.split("```python\n", 1)[1].rsplit("```", 1)[0]
+    assert "def stages(params: LockbeamParams)" in listing
+    # fits the page: at most 80 columns, a CJK character taking two
+    width = [sum(2 if unicodedata.east_asian_width(ch) in "WF" else 1 for ch in line)
+             for line in listing.splitlines()]
+    assert max(width) <= 80
+    # the listing is the source: joining the continued lines (after ↪) gives it back
+    # (a line may be cut inside a word: compare without white space)
+    joined = re.sub(r"\n *↪ ", "", listing)
+    assert re.sub(r"\s+", "", joined) == re.sub(r"\s+", "", source)
+
+
+def test_summary_key_numbers_of_the_shaper(reports):
+    """The shaper's key numbers: θ = 180°(K − 1)/(K + 1) by hand from the brief's K = 1.2,
+    the stroke as given (320 mm)."""
+    md, _ = reports("shaper", "zh")
+    text = section(md, "设计小结")
+    theta = 180 * (1.2 - 1) / (1.2 + 1)
+    assert f"| 极位夹角 $\\theta$ | {theta:.4g} | ° |" in text
+    assert "| 行程 | 320 | mm |" in text
+
+
+@pytest.mark.e2e
+def test_run_writes_summary_and_references(tmp_path):
+    """The wiring through ``mechdesign run``: the written report ends with both chapters and
+    cites the course's textbook."""
+    from mechdesign.runner import run_one
+
+    out = run_one(DESIGNS / "cam_7_1.yaml", out_dir=tmp_path / "r", lang="en", formats=("md",))
+    assert out.exit_code == 0, out.message
+    md = (tmp_path / "r" / "report.md").read_text(encoding="utf-8")
+    assert headings(md)[-2:] == ["Summary", "References"]
+    assert "SUN Huan, CHEN Zuomo, GE Wenjie" in md
