@@ -24,6 +24,7 @@ import pytest
 from mechdesign.brief.loader import load_brief
 from mechdesign.machines import get_machine, stages_for
 from mechdesign.registry import entry
+from mechdesign.render.fmt import meta_text
 from mechdesign.render.report import render_markdown, template_dir
 from mechdesign.render.summary import Citations, handin_context, references
 from mechdesign.results import to_plain
@@ -51,7 +52,10 @@ def render(name: str, lang: str, results: dict, tmp: Path) -> tuple[str, dict]:
     try:
         ctx = _with_requested(report.context(results, brief, figs, lang), results, brief, figs, lang)
         ctx["sheets"] = []
-        render_markdown(f"{machine.name}.{lang}.md.j2", dict(ctx), template_dir())
+        trial = dict(ctx)
+        trial.update(handin_context(machine.name, document, trial, lang, brief.report.title),
+                     cite=Citations(lang))
+        render_markdown(f"{machine.name}.{lang}.md.j2", trial, template_dir())
     except (jinja2.UndefinedError, KeyError):
         # a report that picks its figures by name prefix: draw them
         from mechdesign.runner import _with_requested_figures
@@ -64,7 +68,8 @@ def render(name: str, lang: str, results: dict, tmp: Path) -> tuple[str, dict]:
         program = {"stages": [(s.title, s.key if isinstance(s.key, str) else ", ".join(s.key))
                               for s in stages_for(machine, results["params"])],
                    "module": entry(machine.name).stages.partition(":")[0]}
-    ctx.update(handin_context(machine.name, document, ctx, lang, brief.report.title, program, tmp),
+    ctx.update(handin_context(machine.name, document, ctx, lang,
+                              meta_text(brief.report, "title", lang), program, tmp),
                cite=Citations(lang))
     md = render_markdown(f"{machine.name}.{lang}.md.j2", ctx, template_dir())
     return md, document

@@ -119,6 +119,14 @@ def _markdown(example_results, name: str, lang: str) -> tuple[str, object]:
         figs = _Figures()
         ctx = _with_requested(report.context(r, brief, figs, lang), r, brief, figs, lang)
         ctx["sheets"] = []
+        # the closing chapters (summary, references), as render/report.py adds them
+        from mechdesign.render.fmt import meta_text
+        from mechdesign.render.summary import Citations, handin_context
+        from mechdesign.results import to_plain
+
+        document = to_plain(machine.document(r))
+        ctx.update(handin_context(machine.name, document, ctx, lang,
+                                  meta_text(brief.report, "title", lang)), cite=Citations(lang))
         _CACHE[name, lang] = (render_markdown(f"{machine.name}.{lang}.md.j2", ctx, template_dir(None)),
                               brief)
     return _CACHE[name, lang]

@@ -70,7 +70,8 @@ def pdf_metadata(meta, lang: str, group: str | None = None) -> dict:
             "date": md_text(meta.date), "lang": lang,
             # PDF/Word document properties: subject = the report's title (and subtitle);
             # the author is the student (templates/report.typ, render/docx.py)
-            "description": md_text(" — ".join(t for t in (meta.title, meta.subtitle) if t))}
+            "description": md_text(" — ".join(t for t in (meta_text(meta, "title", lang),
+                                                          meta_text(meta, "subtitle", lang)) if t))}
     if group is not None:
         data["group"] = md_text(group)
     if lang == "en":
@@ -126,7 +127,8 @@ def write_report(out_dir: Path, *, machine: str, lang: str, formats: tuple[str, 
                 ctx["sheets"] = [_sheet_row(sh, lang) for sh in sheets]
                 from .summary import Citations, handin_context
 
-                ctx.update(handin_context(machine, document, ctx, lang, meta.title, program, fig_dir),
+                ctx.update(handin_context(machine, document, ctx, lang, meta_text(meta, "title", lang),
+                                           program, fig_dir),
                            cite=Citations(lang))
                 say("Markdown")
                 md = render_markdown(f"{machine}.{lang}.md.j2", ctx, tdir)
