@@ -137,7 +137,7 @@ def test_poor_design_warns(tmp_path):
         d.pop("frame_length_mm")
     result = run(edited(tmp_path, edit), tmp_path / "o", "--format", "md")
     assert result.exit_code == 0, result.output
-    assert "warning:" in result.output and "[γ] = 40°" in result.output
+    assert "警告：" in result.output and "[γ] = 40°" in result.output   # zh brief: terminal lines in Chinese
 
 
 @pytest.mark.parametrize("edit, words", [

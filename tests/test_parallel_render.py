@@ -180,7 +180,9 @@ def test_timings_prefix_every_progress_line_with_a_growing_time(tmp_path):
     import re
 
     times = [float(m.group(1)) for m in re.finditer(r"^\s*(\d+\.\d+) s  ", result.output, re.M)]
-    lines = [ln for ln in result.output.splitlines() if "rendering" in ln or ln.lstrip().startswith("[")]
+    # progress lines: stages "[i/n] …" and rendering steps (the zh brief says 生成 …)
+    lines = [ln for ln in result.output.splitlines()
+             if re.search(r"\[\d+/\d+\]|rendering|生成", ln)]
     assert len(times) >= len(lines) >= 3
     assert times == sorted(times) and times[0] > 0
 

@@ -191,6 +191,7 @@ def test_an_interrupt_while_the_files_move_is_held_until_all_are_in_place(tmp_pa
         return real(src, dst)
 
     monkeypatch.setattr(publish.os, "replace", replace_then_interrupt)
+    handler_before = signal.getsignal(signal.SIGINT)   # SIG_IGN in a background job
     mark = publish.journal_mark()
     with pytest.raises(publish.InterruptedAfterPublish):
         publish.publish(staging, out)
@@ -202,7 +203,7 @@ def test_an_interrupt_while_the_files_move_is_held_until_all_are_in_place(tmp_pa
                    "figures/b.png": b"new figures/b.png"}
     assert publish.read_manifest(out) == {"report.md", "results.json", "figures/a.png",
                                           "figures/b.png"}
-    assert signal.getsignal(signal.SIGINT) is signal.default_int_handler
+    assert signal.getsignal(signal.SIGINT) is handler_before     # restored
 
 
 @pytest.mark.e2e

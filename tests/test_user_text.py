@@ -364,7 +364,9 @@ def hostile_linkage_brief(tmp_path: Path) -> tuple[Path, dict]:
     groups = data["linkage"]["groups"]
     names = ["- rocker *O4B* | " + BAD[:12], "1. slider $E$ @x <i>"]
     groups[0]["name"], groups[4]["name"] = names
-    data["report"]["title"] = "Linkage `code` [x](y) " + BAD
+    # the English names and title too: the example gives them, and en reports use them
+    groups[0]["name_en"], groups[4]["name_en"] = names
+    data["report"]["title"] = data["report"]["title_en"] = "Linkage `code` [x](y) " + BAD
     data["analysis"]["grid_points"] = 360
     path = tmp_path / "linkage.yaml"
     path.write_text(yaml.safe_dump(data, allow_unicode=True, sort_keys=False), encoding="utf-8")
