@@ -63,7 +63,12 @@ def test_new_writes_a_commented_starter_that_checks(tmp_path):
         result = runner.invoke(app, ["new", machine, "-o", str(target)])
         assert result.exit_code == 0, result.output
         text = target.read_text(encoding="utf-8")
-        assert text == (ROOT / "designs" / example).read_text(encoding="utf-8")
+        shipped = (ROOT / "designs" / example).read_text(encoding="utf-8")
+        # the shipped example, its comments' commands naming the file written (issue 22)
+        assert text == shipped.replace(f"designs/{example}", str(target)).replace(
+            f"mechdesign run {example}", f"mechdesign run {target}")
+        assert f"designs/{example}" not in text
+        assert f"{target}`" in text or example not in shipped   # the next-step hint names it
         assert text.lstrip().startswith("#")
         assert yaml.safe_load(text)["machine"] == machine
     result = runner.invoke(app, ["check", *map(str, sorted(tmp_path.glob("*.yaml")))])
@@ -79,3 +84,75 @@ def test_new_never_overwrites_and_rejects_unknown_machines(tmp_path):
     result = runner.invoke(app, ["new", "lathe", "-o", str(tmp_path / "x.yaml")])
     assert result.exit_code == 2 and "furnace_pusher" in result.output
     assert not (tmp_path / "x.yaml").exists()
+
+
+def test_new_prints_the_path_it_wrote_and_names_it_in_the_next_step(tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    result = runner.invoke(app, ["new", "shaper"])
+    assert result.exit_code == 0, result.output
+    assert result.stdout.strip() == "shaper.yaml"
+    assert "mechdesign run shaper.yaml" in result.output          # the hint on stderr
+    text = (tmp_path / "shaper.yaml").read_text(encoding="utf-8")
+    assert "`mechdesign run shaper.yaml` renders the report" in text
+    assert "designs/shaper.yaml" not in text
+
+
+def test_choices_are_case_insensitive_everywhere(tmp_path):
+    """--lang EN and --format PDF are both accepted (by check, run, batch, watch alike)."""
+    shaper = str(ROOT / "designs" / "shaper.yaml")
+    assert runner.invoke(app, ["check", shaper, "--lang", "EN"]).exit_code == 0
+    assert runner.invoke(app, ["check", shaper, "--lang", "En"]).exit_code == 0
+    bad = runner.invoke(app, ["check", shaper, "--lang", "fr"])
+    assert bad.exit_code == 2 and "zh" in bad.output and "en" in bad.output
+    from mechdesign.cli import _parse_formats
+
+    assert _parse_formats("MD,Pdf") == ("md", "pdf")
+
+
+def test_help_is_written_for_people():
+    """Metavars BRIEF, DIR, N, i/n, LANG, FORMATS; no Python types; an Examples epilogue per
+    command; shell completion offered."""
+    import re
+
+    top = runner.invoke(app, ["--help"], terminal_width=100)
+    assert top.exit_code == 0
+    assert "--install-completion" in top.output and "--show-completion" in top.output
+    for command in ("run", "batch", "merge", "watch", "check", "schema", "new"):
+        result = runner.invoke(app, [command, "--help"], terminal_width=100)
+        assert result.exit_code == 0, command
+        text = result.output
+        assert "Examples:" in text and f"mechdesign {command}" in text.split("Examples:")[1], command
+        for python_type in ("<list[Path]>", "<bool>", "<int", "<str>", "<file>", "<dir>",
+                            "<path>", "{brief}", "{BRIEF}", "<zh|en>", "range]"):
+            assert python_type not in text, (command, python_type)
+        # the summary is one line in the command list
+        line = next(ln for ln in top.output.splitlines() if re.search(rf"│ {command}\s", ln))
+        assert line.rstrip("│ ").strip() != command
+    run = runner.invoke(app, ["run", "--help"], terminal_width=100).output
+    assert "BRIEF" in run and "DIR" in run and "LANG" in run and "FORMATS" in run
+    batch = runner.invoke(app, ["batch", "--help"], terminal_width=100).output
+    assert " N " in batch and "i/n" in batch
+    completion = runner.invoke(app, ["--show-completion", "bash"])
+    assert completion.exit_code == 0 and "complete" in completion.output
+
+
+def test_an_unexpected_error_is_one_line_without_debug(monkeypatch, capsys):
+    import mechdesign.cli as cli
+
+    def boom(*args, **kwargs):
+        raise RuntimeError("disk on fire")
+
+    monkeypatch.setattr(cli, "app", boom)
+    monkeypatch.setattr("sys.argv", ["mechdesign", "run", "x.yaml"])
+    monkeypatch.delenv("MECHDESIGN_DEBUG", raising=False)
+    import pytest
+
+    with pytest.raises(SystemExit) as exit_info:
+        cli.entry()
+    assert exit_info.value.code == 1
+    err = capsys.readouterr().err
+    assert "internal error: RuntimeError: disk on fire" in err and "--debug" in err
+    assert "Traceback" not in err
+    monkeypatch.setattr("sys.argv", ["mechdesign", "run", "x.yaml", "--debug"])
+    with pytest.raises(RuntimeError):
+        cli.entry()

@@ -153,13 +153,30 @@ def _work(job: Job, out_root: str, lang: str | None, formats: tuple[str, ...],
 
 
 class Progress:
-    """A progress bar on a terminal; one plain line per finished run otherwise (CI logs)."""
+    """Progress of a batch: on a terminal a live rich bar (runs done of all, elapsed time,
+    failures, the last run) with every failed run printed above it; one plain line per
+    finished run otherwise (CI logs), ``[i/n] status run-id (s)`` and the first lines of a
+    failure's message indented."""
 
     def __init__(self, total: int, stream=None, tty: bool | None = None):
+        from .console import Terminal
+
         self.total, self.done, self.failed = total, 0, 0
-        self.stream = stream or sys.stderr
-        self.tty = self.stream.isatty() if tty is None else tty
+        self.terminal = Terminal(stream, rich=tty)
+        self.stream = self.terminal.stream
+        self.tty = self.terminal.rich
         self.start = time.perf_counter()
+        self._live = None
+        if self.tty and total:
+            from rich.progress import (BarColumn, MofNCompleteColumn, Progress as Bar,
+                                       TextColumn, TimeElapsedColumn)
+
+            self._live = Bar(TextColumn("{task.description}"), BarColumn(), MofNCompleteColumn(),
+                             TimeElapsedColumn(), TextColumn("{task.fields[status]}"),
+                             console=self.terminal.console, auto_refresh=False,
+                             redirect_stdout=False, redirect_stderr=False)
+            self._task = self._live.add_task("batch", total=total, status="")
+            self._live.start()
 
     def update(self, job: Job, result: dict) -> None:
         self.done += 1
@@ -167,24 +184,30 @@ class Progress:
         self.failed += not ok
         secs = result.get("seconds") or 0.0
         line = f"{'ok    ' if ok else result['status']:6s} {job.run_id} ({secs:.1f} s)"
-        if self.tty:
-            width = 30
-            filled = round(width * self.done / max(self.total, 1))
-            bar = "█" * filled + "░" * (width - filled)
-            elapsed = time.perf_counter() - self.start
+        first = [] if ok else (result.get("message") or "").strip().splitlines()[:6]
+        if self._live is not None:
             if not ok:
-                self.stream.write("\r\033[K" + line + "\n")
-            self.stream.write(f"\r\033[K[{bar}] {self.done}/{self.total}  {elapsed:.0f} s  "
-                              f"{self.failed} failed  last: {job.run_id}")
-            if self.done == self.total:
-                self.stream.write("\n")
-        else:
-            self.stream.write(f"[{self.done}/{self.total}] {line}\n")
-        if not ok:
-            first = (result.get("message") or "").strip().splitlines()
-            for text in first[:6]:
-                self.stream.write(f"    {text}\n")
+                from rich.text import Text
+
+                self._live.console.print(Text(line, style="bold red"))
+                for text in first:
+                    self._live.console.print(Text(f"    {text}"))
+            self._live.update(self._task, completed=self.done,
+                              status=f"{self.failed} failed  last: {job.run_id}")
+            self._live.refresh()
+            if self.done >= self.total:
+                self.close()
+            return
+        self.stream.write(f"[{self.done}/{self.total}] {line}\n")
+        for text in first:
+            self.stream.write(f"    {text}\n")
         self.stream.flush()
+
+    def close(self) -> None:
+        """Stop the live bar (it stays on the screen at its last state)."""
+        if self._live is not None:
+            self._live.stop()
+            self._live = None
 
 
 def run_batch(jobs: list[Job], out_root: Path, *, jobs_n: int = 1, lang: str | None = None,
@@ -496,3 +519,63 @@ def write_answers(doc: dict, out_root: Path, lang: str = "zh", stem: str = "answ
                              row["brief"], row["status"]]
                             + [row["results"].get(c, "") for c in doc["columns"]])
     return [md, path]
+
+
+# ----------------------------------------------------------------------------- merge
+def _shard_indexes(folder: Path) -> tuple[int, dict[int, dict]]:
+    """The shard indexes ``index.shard-i-of-n.json`` in ``folder``: n and {i: index}."""
+    import re
+
+    found: dict[int, dict[int, Path]] = {}
+    for path in sorted(Path(folder).glob("index.shard-*-of-*.json")):
+        match = re.fullmatch(r"index\.shard-(\d+)-of-(\d+)\.json", path.name)
+        if match:
+            found.setdefault(int(match.group(2)), {})[int(match.group(1))] = path
+    if not found:
+        raise BatchError(f"{folder}: no shard indexes (index.shard-i-of-n.json) to merge")
+    if len(found) > 1:
+        raise BatchError(f"{folder}: shard indexes of different counts n ({', '.join(map(str, sorted(found)))}); "
+                         "keep the shards of one batch only")
+    (n, paths), = found.items()
+    missing = [i for i in range(1, n + 1) if i not in paths]
+    if missing:
+        raise BatchError(f"{folder}: shard{'s' if len(missing) > 1 else ''} "
+                         f"{', '.join(f'{i}/{n}' for i in missing)} missing "
+                         f"(index.shard-{missing[0]}-of-{n}.json); run them or copy their output here")
+    docs = {}
+    for i, path in paths.items():
+        try:
+            docs[i] = json.loads(path.read_text(encoding="utf-8"))
+        except (OSError, ValueError) as exc:
+            raise BatchError(f"{path}: cannot be read as a batch index: {exc}") from None
+        if docs[i].get("schema") != "mechdesign.batch/1" or docs[i].get("shard") != [i, n]:
+            raise BatchError(f"{path}: not the index of shard {i}/{n} of a mechdesign batch")
+    return n, docs
+
+
+def merge_index(docs: dict[int, dict], n: int) -> dict:
+    """The index an unsharded batch writes, from its n shards' indexes: shard i holds the
+    runs i, i + n, i + 2n, … of the plan (:func:`shard`), so the plan's order is rebuilt by
+    taking the k-th run of every shard in turn."""
+    runs = []
+    for k in range(max(len(d["runs"]) for d in docs.values())):
+        for i in range(1, n + 1):
+            if k < len(docs[i]["runs"]):
+                runs.append(docs[i]["runs"][k])
+    totals = Counter(r["status"] for r in runs)
+    return {"schema": "mechdesign.batch/1", "shard": None, "runs": runs,
+            "totals": {"runs": len(runs), "ok": totals.get("ok", 0),
+                       "invalid": totals.get("invalid", 0), "failed": totals.get("failed", 0)}}
+
+
+def merge_shards(folder: Path, lang: str = "zh") -> tuple[list[Path], dict, int]:
+    """Merge ``folder``'s shard indexes into index.json/index.md (and, when the shards
+    wrote answers, answers.md/answers.csv); return the files written, the totals and the
+    exit code the unsharded batch would have had."""
+    folder = Path(folder)
+    n, docs = _shard_indexes(folder)
+    doc = merge_index(docs, n)
+    written = write_index(doc, folder, lang, "index")
+    if any((folder / f"answers.shard-{i}-of-{n}.md").exists() for i in docs):
+        written += write_answers(answers_document(doc), folder, lang, "answers")
+    return written, doc["totals"], exit_code(doc["runs"])

@@ -1,0 +1,238 @@
+"""``mechdesign watch BRIEF``: re-run a brief on every save, with the program kept loaded.
+
+The watcher polls the modification times (and sizes) of the brief, its class table
+(``groups: {file: class.csv}``) and every file under ``--templates`` five times a second
+(plain ``os.stat``: no dependency, works on every file system, including network and
+container mounts where inotify events do not arrive). A change that has settled (two polls
+alike) starts a run.
+
+Every run happens in a child forked from this process (Linux): the imports, done once here
+before the first run, are inherited, and this process never runs typst itself, so each run
+may fork its figure helpers as ``mechdesign run`` does (typst's threads do not survive a
+fork; see render/parallel.py). Off Linux the runs happen in this process. A run writes
+exactly as ``run`` does (staging folder, moved into place when complete: a failed or
+interrupted run leaves the previous report as it was). After a run the watcher prints the
+headline results (the machine's summary rows) that changed, old → new; an invalid brief or an
+infeasible design prints its messages and the watch goes on. Ctrl-C ends the watch (exit 0).
+"""
+from __future__ import annotations
+
+import os
+import sys
+import time
+from pathlib import Path
+from typing import Callable
+
+POLL_SECONDS = 0.2
+
+_SAY = {
+    "zh": {"watching": "监视 {files}（保存即重新计算；Ctrl-C 结束）",
+           "changed": "{name} 已修改，重新计算 …",
+           "done": "报告已更新，用时 {seconds:.1f} s",
+           "same": "主要结果未变",
+           "first": "主要结果：",
+           "changes": "主要结果的变化：",
+           "failed": "未更新报告（原有报告保持不变）；修改后保存即重试",
+           "missing": "{name} 不存在，等待它出现 …",
+           "end": "监视结束"},
+    "en": {"watching": "watching {files} (save to re-run; Ctrl-C ends)",
+           "changed": "{name} changed, re-running …",
+           "done": "report updated in {seconds:.1f} s",
+           "same": "no headline result changed",
+           "first": "headline results:",
+           "changes": "headline results changed:",
+           "failed": "report not updated (the previous one is unchanged); save a fix to retry",
+           "missing": "{name} is missing; waiting for it …",
+           "end": "watch ended"},
+}
+
+
+def watched_files(brief: Path, templates: Path | None) -> list[Path]:
+    """The brief, its class table (if it names one) and every file under ``templates``."""
+    files = [brief]
+    try:
+        from .brief.loader import read_brief_data
+
+        data = read_brief_data(brief)
+        groups = data.get("groups") if isinstance(data, dict) else None
+        if isinstance(groups, dict) and isinstance(groups.get("file"), str):
+            files.append(brief.parent / groups["file"].strip())
+    except Exception:  # noqa: BLE001 - an unreadable brief is watched alone; its run says why
+        pass
+    if templates is not None and templates.is_dir():
+        files += sorted(p for p in templates.rglob("*") if p.is_file())
+    return files
+
+
+def snapshot(files: list[Path]) -> dict[Path, tuple[int, int] | None]:
+    """(mtime in ns, size) of each file, None for a missing one."""
+    state = {}
+    for path in files:
+        try:
+            st = path.stat()
+            state[path] = (st.st_mtime_ns, st.st_size)
+        except OSError:
+            state[path] = None
+    return state
+
+
+def summary_changes(before: dict[str, str], after: dict[str, str]) -> list[str]:
+    """``label: old → new`` for every headline result that changed, appeared or went."""
+    lines = []
+    for label, value in after.items():
+        old = before.get(label)
+        if old != value:
+            lines.append(f"  {label}: {old if old is not None else '—'} → {value}")
+    for label, old in before.items():
+        if label not in after:
+            lines.append(f"  {label}: {old} → —")
+    return lines
+
+
+def _preload(brief: Path, group: str | None) -> None:
+    """Import what a run of this brief needs, once, before the first run (the children
+    inherit it). Never runs typst."""
+    import importlib
+
+    try:
+        import matplotlib
+
+        matplotlib.use("Agg")
+        import matplotlib.pyplot  # noqa: F401
+
+        from . import runner  # noqa: F401
+        from .brief.loader import load_variant
+        from .machines import get_machine
+        from .render import report, sheets  # noqa: F401
+
+        machine = get_machine(load_variant(brief, group).brief.machine)
+        importlib.import_module(machine.report_module)
+    except Exception:  # noqa: BLE001 - a brief invalid for now: its run reports it
+        pass
+
+
+def _can_fork() -> bool:
+    return sys.platform.startswith("linux") and hasattr(os, "fork")
+
+
+def _run_in_child(kwargs: dict):
+    """One run in a forked child; its Outcome (None if the child died)."""
+    import multiprocessing as mp
+
+    from .runner import run_one
+
+    ctx = mp.get_context("fork")
+    recv, send = ctx.Pipe(duplex=False)
+
+    def child():
+        try:
+            outcome = run_one(**kwargs)
+        except KeyboardInterrupt:
+            os._exit(130)
+        send.send(outcome)
+        send.close()
+        sys.stdout.flush()
+        sys.stderr.flush()
+        os._exit(0)
+
+    proc = ctx.Process(target=child, daemon=True)
+    proc.start()
+    send.close()
+    try:
+        outcome = recv.recv()
+    except EOFError:
+        outcome = None
+    finally:
+        proc.join()
+    return outcome
+
+
+def watch_brief(brief: Path, *, out: Path | None = None, group: str | None = None,
+                lang: str | None = None, formats: tuple[str, ...] = ("md", "pdf"),
+                templates: Path | None = None, terminal=None,
+                echo: Callable[[str], None] = print, max_runs: int | None = None,
+                poll: float = POLL_SECONDS) -> int:
+    """Watch ``brief`` and re-run it on every change until Ctrl-C (or ``max_runs`` runs,
+    for tests); return the exit code (0)."""
+    from .console import Terminal
+    from .runner import brief_language, run_one
+
+    term = terminal or Terminal()
+    brief = Path(brief)
+    kwargs = dict(brief=brief, out_dir=out, lang=lang, formats=formats, group=group,
+                  templates=templates, parallel=True)
+    runs = 0
+    summary: dict[str, str] | None = None
+    language = brief_language(brief, lang)
+    words = _SAY[language]
+    try:
+        _preload(brief, group)
+        files = watched_files(brief, templates)
+        shown = [str(p) for p in files[:2]] + ([f"{templates}/"] if templates else [])
+        term.line(words["watching"].format(files=", ".join(shown)))
+        state = snapshot(files)
+        reason = None
+        while True:
+            if state.get(brief) is None:
+                term.warning(words["missing"].format(name=brief))
+            else:
+                if reason is not None:
+                    term.line(words["changed"].format(name=reason.name))
+                language = brief_language(brief, lang)
+                words = _SAY[language]
+                start = time.perf_counter()
+                outcome = _run_in_child(kwargs) if _can_fork() else run_one(**kwargs)
+                runs += 1
+                summary = _report(outcome, summary, term, echo, words,
+                                  time.perf_counter() - start)
+                if max_runs is not None and runs >= max_runs:
+                    return 0
+            # wait for the next settled change
+            files = watched_files(brief, templates)
+            state = {**snapshot(files), **{p: v for p, v in state.items() if p in files}}
+            while True:
+                time.sleep(poll)
+                now = snapshot(files)
+                if now != state:
+                    time.sleep(poll / 2)     # an editor may write in several steps
+                    if snapshot(files) == now:
+                        changed = [p for p in files if now.get(p) != state.get(p)]
+                        reason = changed[0] if changed else brief
+                        state = now
+                        break
+    except KeyboardInterrupt:
+        term.line("\n" + words["end"])
+        return 0
+
+
+def _report(outcome, summary, term, echo, words, seconds) -> dict[str, str] | None:
+    """Print what a run did: the messages of a failed one, else the files and the headline
+    results (all after the first run, then only those that changed)."""
+    if outcome is None:
+        term.error("the run's process died; save again to retry")
+        term.warning(words["failed"])
+        return summary
+    for text in outcome.warnings:
+        term.warning(text)
+    if outcome.status != "ok":
+        term.error(outcome.message)
+        term.warning(words["failed"])
+        return summary
+    now = {label: value for label, value in outcome.summary}
+    term.success(words["done"].format(seconds=seconds))
+    if summary is None:
+        if now:
+            term.line(words["first"])
+            for label, value in now.items():
+                term.line(f"  {label}: {value}")
+        for path in outcome.files:
+            echo(path)
+    else:
+        lines = summary_changes(summary, now)
+        if lines:
+            term.line(words["changes"])
+            for text in lines:
+                term.line(text, "bold")
+        else:
+            term.line(words["same"])
+    return now
