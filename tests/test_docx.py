@@ -195,3 +195,26 @@ def test_real_cam_report(tmp_path):
     assert f"({n_display})" in texts
     assert document.count('w:tblStyle w:val="Table"') >= 2
     assert any(t.startswith("表 1 ") for t in texts) and any(t.startswith("图 1 ") for t in texts)
+
+
+def test_running_header_names_title_and_student_and_properties_author_and_subject(tmp_path):
+    """Issue 22 (5): the header shows the title and the student (TITLE and AUTHOR fields with
+    their results filled in); without a student, the title alone (no dangling separator)."""
+    md = _write_sample(tmp_path, MARKDOWN_EN)
+    out = tmp_path / "report.docx"
+    render_docx(md, out, {"title": "Course design", "student": "Zhang San", "lang": "en",
+                          "description": "Course design — shaper"}, TEMPLATES)
+    header = _part(out, "word/header1.xml")
+    shown = "".join(re.findall(r"<w:t(?: [^>]*)?>([^<]*)</w:t>", header))
+    assert shown == "Course design\u2003Zhang San"
+    assert " TITLE " in header and " AUTHOR " in header and "REPORT-" not in header
+    core = _part(out, "docProps/core.xml")
+    assert "<dc:creator>Zhang San</dc:creator>" in core
+    assert "<dc:subject>Course design — shaper</dc:subject>" in core
+    document = _part(out, "word/document.xml")
+    assert re.search(r"<w:instrText[^>]*>\s*TOC \\o", document)       # table of contents
+    assert re.search(r"<w:instrText[^>]*>\s*PAGE\s*<", _part(out, "word/footer1.xml"))
+    alone = tmp_path / "alone.docx"
+    render_docx(md, alone, {"title": "Course design", "lang": "en"}, TEMPLATES)
+    header = _part(alone, "word/header1.xml")
+    assert "".join(re.findall(r"<w:t(?: [^>]*)?>([^<]*)</w:t>", header)) == "Course design"

@@ -20,7 +20,8 @@ and patches it with :mod:`zipfile` and :mod:`xml.etree` (no python-docx):
   ``templates/docx-numbering.lua`` (Equation, Equation Number, Title Info,
   Table Text);
 * page: A4, 2.5 cm margins, page number centred in the footer and the report's
-  title (a TITLE field) right-aligned in the header (neither on the title page).
+  title and the student (TITLE and AUTHOR fields) right-aligned in the header
+  (neither on the title page).
 
 The output is byte-for-byte reproducible for a given pandoc version (fixed
 zip timestamps and member order).  Students may edit the produced file in
@@ -302,9 +303,10 @@ FOOTER_XML = (
     "</w:p></w:ftr>")
 
 
-#: Running header: the report's title, right-aligned over a thin rule, as a TITLE field
-#: (the document property pandoc sets from the metadata); render/docx.py writes the
-#: title into the field's shown result, so it reads right before Word updates fields.
+#: Running header: the report's title and the student, right-aligned over a thin rule, as
+#: TITLE and AUTHOR fields (the document properties); render/docx.py writes the title, the
+#: separator and the student into the fields' shown results, so it reads right before Word
+#: updates fields (and drops the separator when the brief names no student).
 HEADER_XML = (
     '<?xml version="1.0" encoding="UTF-8" standalone="yes"?>\n'
     f'<w:hdr xmlns:w="{W_NS}" xmlns:r="{R_NS}">'
@@ -314,6 +316,12 @@ HEADER_XML = (
     '<w:r><w:rPr><w:sz w:val="18" /></w:rPr><w:instrText xml:space="preserve"> TITLE </w:instrText></w:r>'
     '<w:r><w:rPr><w:sz w:val="18" /></w:rPr><w:fldChar w:fldCharType="separate" /></w:r>'
     '<w:r><w:rPr><w:sz w:val="18" /></w:rPr><w:t>REPORT-TITLE</w:t></w:r>'
+    '<w:r><w:rPr><w:sz w:val="18" /></w:rPr><w:fldChar w:fldCharType="end" /></w:r>'
+    '<w:r><w:rPr><w:sz w:val="18" /></w:rPr><w:t xml:space="preserve">REPORT-SEPARATOR</w:t></w:r>'
+    '<w:r><w:rPr><w:sz w:val="18" /></w:rPr><w:fldChar w:fldCharType="begin" /></w:r>'
+    '<w:r><w:rPr><w:sz w:val="18" /></w:rPr><w:instrText xml:space="preserve"> AUTHOR </w:instrText></w:r>'
+    '<w:r><w:rPr><w:sz w:val="18" /></w:rPr><w:fldChar w:fldCharType="separate" /></w:r>'
+    '<w:r><w:rPr><w:sz w:val="18" /></w:rPr><w:t>REPORT-AUTHOR</w:t></w:r>'
     '<w:r><w:rPr><w:sz w:val="18" /></w:rPr><w:fldChar w:fldCharType="end" /></w:r>'
     "</w:p></w:hdr>")
 

@@ -172,8 +172,9 @@ def _xml_text(text: str) -> str:
 
 
 def _finish(docx: Path, *, title: str, author: str, subject: str) -> None:
-    """The running header shows the title (the TITLE field's shown result, filled in
-    here so that it reads right before Word updates fields); the document properties
+    """The running header shows the title and the student (the TITLE and AUTHOR fields'
+    shown results, filled in here so that they read right before Word updates fields;
+    a reference.docx from before the AUTHOR field shows the title alone); the properties
     name the student as author and the report as subject. The archive keeps its member
     order and dates (reproducible)."""
     with zipfile.ZipFile(docx) as zin:
@@ -183,6 +184,8 @@ def _finish(docx: Path, *, title: str, author: str, subject: str) -> None:
         name = info.filename
         if name.startswith("word/header") and name.endswith(".xml"):
             data = data.replace(b"REPORT-TITLE", _xml_text(title).encode("utf-8"))
+            data = data.replace(b"REPORT-SEPARATOR", "\u2003".encode("utf-8") if author else b"")
+            data = data.replace(b"REPORT-AUTHOR", _xml_text(author).encode("utf-8"))
         elif name == "docProps/core.xml":
             xml = data.decode("utf-8")
             for tag, value in (("dc:creator", author), ("dc:subject", subject)):
