@@ -169,7 +169,8 @@ _STEPS_ZH = {"figures": "插图", "Markdown": "Markdown 正文", "data files (CS
 
 
 _SHEETS_ZH = {"analysis": "机构分析图", "cam": "凸轮设计图", "gear": "齿轮啮合图",
-              "kinematic": "机构运动简图", "cycle": "运动循环图"}
+              "kinematic": "机构运动简图", "cycle": "运动循环图",
+              "transmission": "传动示意图"}
 
 
 def _step(what: str, lang: str) -> str:
@@ -602,7 +603,7 @@ def entry() -> None:
     """The `mechdesign` console script: the app, with an unexpected error shown as one line
     (its type and text; the traceback with --debug or MECHDESIGN_DEBUG=1), exit 1."""
     try:
-        app()
+        app(prog_name="mechdesign")
     except SystemExit:
         raise
     except KeyboardInterrupt:
