@@ -140,6 +140,10 @@ def _bearing_life(c: Check) -> str:
 
 def _key_crushing(c: Check) -> str:
     i = c.inputs
+    if i.get("keys") == 2:      # two keys at 180°, counted as 1.5 keys
+        numbers = (rf"\frac{{2 \times {num(i['T'] * N_MM)}}}{{1.5 \times "
+                   rf"{_prod(0.5 * i['h'] * MM, i['l'] * MM, i['d'] * MM)}}}")
+        return rf"\sigma_p = \frac{{2 T}}{{1.5 k l d}} = {numbers}" + _tail(c, r"[\sigma_p]")
     numbers = (rf"\frac{{2 \times {num(i['T'] * N_MM)}}}{{{_prod(0.5 * i['h'] * MM, i['l'] * MM, i['d'] * MM)}}}")
     return rf"\sigma_p = \frac{{2 T}}{{k l d}} = {numbers}" + _tail(c, r"[\sigma_p]")
 
