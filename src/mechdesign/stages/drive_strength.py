@@ -532,8 +532,7 @@ def shaft_designs(dp, designs, shafts, peak_factor, peak_from_shaft, names,
                 bad_end, bad_in = ev["bad_end"], ev["bad_in"]
                 if bad_end and free_end:
                     new = st.standard_diameter(d_end * (1 + 1e-6) + 1e-6, series_d)
-                    steps.append((f"外伸端不合格（{_why(ev, 'zh')}）：d_end {_mmf(d_end)} → {_mmf(new)} mm",
-                                  f"the overhung end fails ({_why(ev, 'en')}): d_end {_mmf(d_end)} → {_mmf(new)} mm"))
+                    steps.append(("end", d_end, new, _kinds(ev)))
                     d_end = new
                     seal = st.standard_diameter(1.14 * d_end, series_d)
                     if free_j and dj < seal:
@@ -546,10 +545,7 @@ def shaft_designs(dp, designs, shafts, peak_factor, peak_from_shaft, names,
                         dj = round(dj + 0.005, 6)
                     if free_s:
                         ds = round(max(dj + 0.005, ds + 0.005 if not free_j else dj + 0.005), 6)
-                    steps.append((f"不合格（{_why(ev, 'zh')}）：轴颈/装配段 {_mmf(old[0])}/{_mmf(old[1])} → "
-                                  f"{_mmf(dj)}/{_mmf(ds)} mm",
-                                  f"fails ({_why(ev, 'en')}): journal/seat {_mmf(old[0])}/{_mmf(old[1])} → "
-                                  f"{_mmf(dj)}/{_mmf(ds)} mm"))
+                    steps.append(("in", old, (dj, ds), _kinds(ev)))
                     if dj > 0.130 + 1e-9:
                         break
                     continue
@@ -575,7 +571,8 @@ def shaft_designs(dp, designs, shafts, peak_factor, peak_from_shaft, names,
         if ev["static"] is not None:
             checks.append(ev["static"])
         checks += [k.check for k in ev["keys"]]
-        steps = _steps(sh, mat, a0, d_min, dims, shoulder, T, peak, peak_factor, lf, ev, span, dp) + loop_steps
+        head, tail = _steps(sh, mat, a0, d_min, dims, shoulder, T, peak, peak_factor, lf, ev, span, dp)
+        steps = head + _loop_text(loop_steps) + tail
         out.append(ShaftDesign(j, sh.speed_rpm, sh.power, T, d_min, dj, ds, span, tuple(loads),
                                tuple(i["name"] for i in _load_order(info)), res, ev["bearing"], ev["pl"], tuple(checks),
                                mat.key, a0, d_end, shoulder, (lf / peak_factor) if peak else 1.0,
@@ -583,12 +580,46 @@ def shaft_designs(dp, designs, shafts, peak_factor, peak_from_shaft, names,
     return tuple(out)
 
 
-def _why(ev, lang):
-    bad = [c for c in [ev["bend"], ev["life"], ev["static"], *(k.check for k in ev["keys"])]
-           if c is not None and not c.passed]
+_KIND_TEXT = {"shaft_bending": ("弯扭合成强度", "bending–torsion"), "bearing_life": ("轴承寿命", "bearing life"),
+              "bearing_static": ("轴承静强度", "bearing statics"), "key_crushing": ("键的挤压", "key crushing"),
+              "none": ("无此内径的轴承", "no bearing of that bore")}
+
+
+def _kinds(ev) -> tuple[str, ...]:
+    """The kinds of check that fail (in a fixed order)."""
+    bad = {c.key for c in [ev["bend"], ev["life"], ev["static"], *(k.check for k in ev["keys"])]
+           if c is not None and not c.passed}
     if ev["bearing"] is None:
-        return "无合适轴承" if lang == "zh" else "no bearing of this bore"
-    return "、".join(c.name_zh for c in bad) if lang == "zh" else ", ".join(c.name_en for c in bad)
+        bad.add("none")
+    return tuple(k for k in _KIND_TEXT if k in bad)
+
+
+def _loop_text(log) -> list[tuple[str, str]]:
+    """The upsizing steps, runs of the same section merged: from → to, the number of 5 mm /
+    standard steps and the checks that failed on the way."""
+    out, k = [], 0
+    while k < len(log):
+        kind = log[k][0]
+        j = k
+        while j + 1 < len(log) and log[j + 1][0] == kind:
+            j += 1
+        first, last = log[k], log[j]
+        kinds = [x for x in _KIND_TEXT if any(x in e[3] for e in log[k:j + 1])]
+        why_zh = "、".join(_KIND_TEXT[x][0] for x in kinds)
+        why_en = ", ".join(_KIND_TEXT[x][1] for x in kinds)
+        n = j - k + 1
+        if kind == "end":
+            out.append((f"外伸端加大：{_mmf(first[1])} → {_mmf(last[2])} mm（{n} 档标准尺寸；较小时不合格：{why_zh}）",
+                        f"overhung end enlarged: {_mmf(first[1])} → {_mmf(last[2])} mm ({n} standard sizes; "
+                        f"the smaller ones fail: {why_en})"))
+        else:
+            a, b = first[1], last[2]
+            out.append((f"轴颈/装配段加大：{_mmf(a[0])}/{_mmf(a[1])} → {_mmf(b[0])}/{_mmf(b[1])} mm（{n} 次，每次 5 mm；"
+                        f"较小时不合格：{why_zh}）",
+                        f"journal/seat enlarged: {_mmf(a[0])}/{_mmf(a[1])} → {_mmf(b[0])}/{_mmf(b[1])} mm ({n} steps of "
+                        f"5 mm; the smaller ones fail: {why_en})"))
+        k = j + 1
+    return out
 
 
 def _advice(ch, ev, dims, free_ev, free_dims):
@@ -621,28 +652,37 @@ def _advice(ch, ev, dims, free_ev, free_dims):
     return tuple(out)
 
 
+def _sig(x: float, digits: int) -> str:
+    """``digits`` significant digits in fixed-point notation (12807 → '12810', not 1.281e+04)."""
+    if x == 0 or x != x:
+        return "0"
+    e = math.floor(math.log10(abs(x)))
+    return f"{round(x, digits - 1 - e):.{max(digits - 1 - e, 0)}f}"
+
+
 def _steps(sh, mat, a0, d_min, dims, shoulder, T, peak, peak_factor, lf, ev, span, dp):
     """The design steps of one shaft, each rule with its formula and numbers (zh, en)."""
     d_end, dj, ds = dims
     P, n = sh.power / 1e3, sh.speed_rpm
     raw = a0 * (P / n) ** (1 / 3)
     out = [(f"材料 {mat.name_zh}，$[\\sigma_{{-1b}}]$ = {mat.sigma_minus1b_allow / 1e6:g} MPa（表15-1）；"
-            f"$d_{{min}} = A_0\\sqrt[3]{{P/n}}(1 + 5\\%) = {a0:g}\\sqrt[3]{{{P:.4g}/{n:.4g}}} \\times 1.05 = "
+            f"$d_{{min}} = A_0\\sqrt[3]{{P/n}}(1 + 5\\%) = {a0:g}\\sqrt[3]{{{_sig(P, 4)}/{_sig(n, 4)}}} \\times 1.05 = "
             f"{raw * 1.05:.2f}$ mm（表15-3，一个键槽加大 5%）",
             f"material {mat.name_en}, $[\\sigma_{{-1b}}]$ = {mat.sigma_minus1b_allow / 1e6:g} MPa (table 15-1); "
-            f"$d_{{min}} = A_0\\sqrt[3]{{P/n}}(1 + 5\\%) = {a0:g}\\sqrt[3]{{{P:.4g}/{n:.4g}}} \\times 1.05 = "
+            f"$d_{{min}} = A_0\\sqrt[3]{{P/n}}(1 + 5\\%) = {a0:g}\\sqrt[3]{{{_sig(P, 4)}/{_sig(n, 4)}}} \\times 1.05 = "
             f"{raw * 1.05:.2f}$ mm (table 15-3, +5 % for one keyway)")]
     if peak:
-        out.append((f"飞轮之后的轴承受工作机的峰值转矩：强度计算用 $T = {peak_factor:.3g} \\times {sh.torque:.4g} = "
-                    f"{T:.4g}$ N·m（峰值/平均）；轴承寿命按疲劳取循环的当量载荷（转矩立方平均 = "
-                    f"{lf:.3g} × 平均），静强度取峰值",
+        out.append((f"飞轮之后的轴承受工作机的峰值转矩：强度计算用 $T = {_sig(peak_factor, 3)} \\times {_sig(sh.torque, 4)} = "
+                    f"{_sig(T, 4)}$ N·m（峰值/平均）；轴承寿命按疲劳取循环的当量载荷（转矩立方平均 = "
+                    f"{_sig(lf, 3)} × 平均），静强度取峰值",
                     f"after the flywheel the shaft carries the machine's peak torque: the strength checks use "
-                    f"$T = {peak_factor:.3g} \\times {sh.torque:.4g} = {T:.4g}$ N·m (peak/mean); the bearing life, "
-                    f"a fatigue quantity, takes the cycle's equivalent load (cube-mean torque = {lf:.3g} × the "
+                    f"$T = {_sig(peak_factor, 3)} \\times {_sig(sh.torque, 4)} = {_sig(T, 4)}$ N·m (peak/mean); the bearing life, "
+                    f"a fatigue quantity, takes the cycle's equivalent load (cube-mean torque = {_sig(lf, 3)} × the "
                     f"mean), the static strength the peak"))
     else:
-        out.append((f"设计转矩 T = 9549 P/n = {T:.4g} N·m（轴承寿命用同一载荷 × $f_p$ = {FP:g}）",
-                    f"design torque T = 9549 P/n = {T:.4g} N·m (bearing life: the same load × $f_p$ = {FP:g})"))
+        out.append((f"设计转矩 T = 9549 P/n = {_sig(T, 4)} N·m（轴承寿命用同一载荷 × $f_p$ = {FP:g}）",
+                    f"design torque T = 9549 P/n = {_sig(T, 4)} N·m (bearing life: the same load × $f_p$ = {FP:g})"))
+    head, out = out, []
     lay_zh, lay_en = [], []
     if d_end is not None:
         lay_zh.append(f"外伸端 {_mmf(d_end)}（≥ $d_{{min}}$ 的标准值）")
@@ -651,8 +691,8 @@ def _steps(sh, mat, a0, d_min, dims, shoulder, T, peak, peak_factor, lf, ev, spa
                f"轴环 {_mmf(shoulder)}（h ≈ 0.07d）"]
     lay_en += [f"journals {_mmf(dj)} (bearing bore, a multiple of 5)", f"seat {_mmf(ds)} (journal + 5)",
                f"collar {_mmf(shoulder)} (h ≈ 0.07 d)"]
-    out.append(("各段直径（mm）：" + "，".join(lay_zh) + f"；支承跨距 {_mmf(span, 0)} mm",
-                "sections (mm): " + ", ".join(lay_en) + f"; bearing span {_mmf(span, 0)} mm"))
+    out.append(("结果，各段直径（mm）：" + "，".join(lay_zh) + f"；支承跨距 {_mmf(span, 0)} mm",
+                "result, the sections (mm): " + ", ".join(lay_en) + f"; bearing span {_mmf(span, 0)} mm"))
     b = ev["bearing"]
     if b is not None:
         conf_zh = "" if cat.bearing_confirmed(b.designation) else "（额定载荷按手册表抄录，未与公开副本核对）"
@@ -669,4 +709,4 @@ def _steps(sh, mat, a0, d_min, dims, shoulder, T, peak, peak_factor, lf, ev, spa
         out.append(("平键（GB/T 1096，A 型，L ≤ 轮毂 − 8 mm，不足时加长轮毂至 1.5d，再用双键）：" + zh,
                     "keys (GB/T 1096, form A, L ≤ hub − 8 mm; a longer hub up to 1.5 d, then two keys "
                     "when one fails): " + en))
-    return out
+    return head, out
