@@ -223,7 +223,7 @@ def stage_designs(d, lang: str) -> list[dict]:
                  [("装配段" if zh else "hub seat") + " $d_s$", f(sh.d_seat * MM, 0), unit_mm],
                  [("轴环" if zh else "collar") + " $d_c$", f(sh.d_shoulder * MM, 0), unit_mm],
                  [("支承跨距" if zh else "bearing span") + " $L$", f(sh.span * MM, 0), unit_mm],
-                 [("设计转矩" if zh else "design torque") + " $T$", f(sh.torque, 4), "N·m"]]
+                 [("设计转矩" if zh else "design torque") + " $T$", f(sh.torque, 1), "N·m"]]
         if sh.bearing is not None:
             rows.append([("轴承" if zh else "bearing"), sh.bearing.designation, "—"])
         for k in getattr(sh, "keys", ()) or ():

@@ -8,12 +8,18 @@ width factors and spans):
   K_β = 1.1 (8-grade gears, moderate speed); worm K = K_A · 1.1;
 - S_H = 1.0, S_F = 1.4; open gears: module by bending × 1.15 for wear, no contact check;
   a designed module is at least 2 mm (gears that transmit power);
-- shafts of 45 steel (调质), A0 = 112, +5 % for a keyway; journal = d rounded up to 5 mm
-  (bearing bore), gear seat = journal + 5 mm; reducer gears between the bearings,
-  belt pulleys, couplings and open gears overhung by 80 mm;
-- bearings: tapered roller 302xx on worm-reducer shafts, deep-groove 62xx (63xx if
-  62xx is too short-lived) elsewhere, f_p = 1.2; flat keys form A, steel hubs
-  (cast-iron for pulleys), [σp] of light shocks.
+- shafts of 45 steel (调质; ``drive.shafts[].material`` overrides), A0 = 112, +5 % for a
+  keyway; overhung end = the standard size ≥ d_min, journal = the bearing bore ≥ the seal
+  section 1.14·d_end, seat = journal + 5 mm, collar ≈ 1.14·seat; reducer gears between the
+  bearings, belt pulleys, sprockets, couplings and open gears overhung by 80 mm; σ_ca
+  checked at every station with the diameter there; any failure upsizes that section;
+- torques: after the flywheel the machine's peak torque for the strength checks (shaft,
+  keys, bearing statics, S0 = 1.5), the cycle's cube-mean torque for the bearing life (a
+  fatigue quantity); before it the motor side's torque (K_A enters the gear stages only);
+- bearings: tapered roller 302xx → 303xx on worm-reducer shafts, deep-groove 62xx → 63xx
+  elsewhere, the lightest series whose life reaches the service life at the journal, else
+  a larger bore; f_p = 1.2; flat keys form A, steel hubs (cast-iron for pulleys), [σp] of
+  light shocks, L ≤ hub − 8 mm, a longer hub (1.5 d), then two keys at 180° (1.5 keys).
 """
 from __future__ import annotations
 
