@@ -615,13 +615,13 @@ def _loop_text(log) -> list[tuple[str, str]]:
         why_en = ", ".join(_KIND_TEXT[x][1] for x in kinds)
         n = j - k + 1
         if kind == "end":
-            out.append((f"外伸端加大：{_mmf(first[1])} → {_mmf(last[2])} mm（{n} 档标准尺寸；较小时不合格：{why_zh}）",
+            out.append((f"外伸端加大：{_mmf(first[1])} → {_mmf(last[2])} mm（{n} 档标准尺寸；较小时未通过：{why_zh}）",
                         f"overhung end enlarged: {_mmf(first[1])} → {_mmf(last[2])} mm ({n} standard sizes; "
                         f"the smaller ones fail: {why_en})"))
         else:
             a, b = first[1], last[2]
             out.append((f"轴颈/装配段加大：{_mmf(a[0])}/{_mmf(a[1])} → {_mmf(b[0])}/{_mmf(b[1])} mm（{n} 次，每次 5 mm；"
-                        f"较小时不合格：{why_zh}）",
+                        f"较小时未通过：{why_zh}）",
                         f"journal/seat enlarged: {_mmf(a[0])}/{_mmf(a[1])} → {_mmf(b[0])}/{_mmf(b[1])} mm ({n} steps of "
                         f"5 mm; the smaller ones fail: {why_en})"))
         k = j + 1
