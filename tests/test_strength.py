@@ -419,21 +419,27 @@ def test_equivalent_load_and_tapered_pair():
 def test_bearing_catalogue():
     b = cat.bearing("32006")
     assert (b.d, b.D, b.Cr) == pytest.approx((30 * mm, 55 * mm, 35.8e3)) and not b.ball
-    for des in cat.bearing_designations("302") + cat.bearing_designations("320"):
+    for des in (cat.bearing_designations("302") + cat.bearing_designations("303")
+                + cat.bearing_designations("320")):
         t = cat.bearing(des)
         assert t.e * t.Y == pytest.approx(0.6, abs=0.03), des      # e = 1.5 tan α, Y = 0.4 cot α
         assert t.T >= t.B
-    for k in range(4, 13):
+    # issue 20: the 62/63 series reach 130 mm (6222, 6224, 6226), 302 and 303 go on to 100/80 mm
+    for k in list(range(4, 23)) + [24, 26]:
         b62, b63 = cat.bearing(f"62{k:02d}"), cat.bearing(f"63{k:02d}")
         assert b62.d == b63.d == 5 * k * mm and b63.D > b62.D and b63.Cr > b62.Cr and b62.ball
+        assert b62.C0r < b62.Cr and b63.C0r <= b63.Cr * 1.0 + 1e-9
+    for k in range(5, 17):          # the 303 (medium) series is heavier than 302 at every bore
+        if f"302{k:02d}" in cat.bearing_designations("302"):
+            assert cat.bearing(f"303{k:02d}").Cr > cat.bearing(f"302{k:02d}").Cr
     assert cat.smallest_bearing("62", 32 * mm).designation == "6207"
     assert cat.smallest_bearing("302", 30 * mm).designation == "30206"
     with pytest.raises(ValueError):
-        cat.smallest_bearing("63", 70 * mm)
+        cat.smallest_bearing("63", 140 * mm)
     with pytest.raises(KeyError, match="320"):
         cat.smallest_bearing("72", 30 * mm)
     with pytest.raises(KeyError, match="6204"):
-        cat.bearing("6213")
+        cat.bearing("6223")
     e, X, Y = cat.deep_groove_factors(0.056 * 15.2e3, 15.2e3)      # table point
     assert (e, X, Y) == pytest.approx((0.26, 0.56, 1.71))
     assert cat.temperature_factor(100) == 1.0 and cat.temperature_factor(150) == pytest.approx(0.9)

@@ -110,6 +110,27 @@ EXPECTED["furnace_pusher"] += [
     (f"check.{key}", _EXACT_QUALITY + " (the design's 60° at B is now met exactly: "
      "γ_work = π/3, α_B = 30°)") for key in ("gamma_min", "gamma_work", "alpha_B_work")]
 
+# Issue 20: the drive's shafts, bearings and keys are designed, not only checked. Each
+# shaft's sections are laid out from the parts it carries (overhung end = the standard size
+# ≥ A0∛(P/n)·1.05, journal = the bearing bore ≥ the seal section 1.14·d_end, seat = journal
+# + 5 mm), σ_ca is checked at every station with the diameter there (it was the seat's
+# diameter everywhere), the bearing is the lightest series whose life reaches the service
+# life under the cycle's equivalent load (cube-mean torque after a flywheel; it was the
+# peak), the bearing statics are checked at the peak, keys are chosen by the diameter under
+# their hub (a longer hub, then two keys at 180°; no key under a worm cut on its shaft) and
+# any failure upsizes the section. The furnace drive (44 W) therefore gets thinner ends
+# (10–16 mm) and smaller keys; its strength margins in the verification chapter follow.
+_SHAFTS20 = ("issue 20: shafts designed by the handbook procedure (sections from the parts, σ_ca at "
+             "every station with its diameter, bearings for the life, keys by the hub's diameter, "
+             "upsized until they pass)")
+for _machine in ("drive", "shaper", "slotter", "furnace_pusher", "die_cutter", "press", "linkage",
+                 "lockbeam"):
+    EXPECTED.setdefault(_machine, []).append(("drive.shaft_designs.*", _SHAFTS20))
+EXPECTED["drive"] += [
+    (f"verification.checks.{i}.{leaf}", _SHAFTS20 + ": the strength margin of shaft "
+     f"{i - 9} (smallest 1 − utilisation) and the check that gives it")
+    for i in (10, 11, 12) for leaf in ("value", "detail.*")]
+
 # Self-check residuals: round-off, not results. Compared only as "still tiny".
 IGNORED = ("*closure_residual", "*stroke_error", "*power_balance_residual", "*power_residual*",
            "*self_check*residual*")

@@ -162,6 +162,101 @@ class DriveEfficiencies(StrictModel):
         "The machine's own mechanism η_w (1 when its crank torque is computed without friction)"))
 
 
+class ShaftOverride(StrictModel):
+    """Choices for one shaft that override the design (轴、轴承、键的指定); each is checked
+    and a failing one is reported with what to change."""
+
+    shaft: int = Field(ge=1, le=8, description=(
+        "Shaft number Ⅰ, Ⅱ, … (1 = the first after the motor; the last drives the machine)"))
+    material: Optional[str] = Field(None, max_length=40, description=(
+        "Shaft material key (default 45_QT, 45 steel quenched and tempered; [σ-1b] from 表15-1)"))
+    end_mm: Optional[float] = Field(None, ge=10, le=300, description=(
+        "Diameter at the overhung hub (pulley, sprocket, coupling) [mm] (default: A0∛(P/n) "
+        "with the keyway, rounded up to the standard series and upsized until it passes)"))
+    journal_mm: Optional[float] = Field(None, ge=10, le=300, description=(
+        "Bearing journal diameter [mm], a multiple of 5 (the bearing bore) (default: designed)"))
+    seat_mm: Optional[float] = Field(None, ge=10, le=300, description=(
+        "Diameter of the hub seat between the bearings [mm] (default: journal + 5 mm)"))
+    bearing: Optional[str] = Field(None, max_length=10, description=(
+        "Bearing designation from the catalogue, e.g. 6207 or 30207 (default: the lightest "
+        "series whose life reaches the service life)"))
+    key_length_mm: Optional[float] = Field(None, ge=6, le=500, description=(
+        "Length of the flat keys on this shaft [mm], a standard length of GB/T 1096 (default: "
+        "the longest standard length ≤ hub − 8 mm)"))
+
+    @field_validator("material")
+    @classmethod
+    def _material(cls, v):
+        from ..data import catalogues as cat
+
+        if v is None:
+            return v
+        try:
+            cat.shaft_material(v)
+        except KeyError as exc:
+            allowed = str(exc.args[0]).partition("allowed: ")[2]
+            raise invalid(f"not in the shipped shaft-material catalogue; allowed: {allowed}",
+                          f"轴材料表中没有此材料；可用：{allowed}") from None
+        return v
+
+    @model_validator(mode="after")
+    def _consistent(self):
+        from ..data import catalogues as cat
+
+        out = Problems(self)
+        if self.journal_mm is not None and abs(self.journal_mm / 5 - round(self.journal_mm / 5)) > 1e-9:
+            out.add("journal_mm", self.journal_mm,
+                    "a bearing bore is a multiple of 5 mm (20, 25, 30, …): give the journal as one",
+                    "轴承内径为 5 mm 的倍数（20、25、30……）：轴颈应取其一")
+        if self.journal_mm is not None and self.seat_mm is not None and self.seat_mm < self.journal_mm:
+            out.add("seat_mm", self.seat_mm,
+                    f"the hub seat must be at least the journal_mm = {self.journal_mm:g} (the hub "
+                    "slides over the journal when it is mounted)",
+                    f"轮毂装配段直径须不小于轴颈 journal_mm = {self.journal_mm:g}（装配时轮毂要经过轴颈）")
+        if self.end_mm is not None and self.journal_mm is not None and self.end_mm > self.journal_mm:
+            out.add("end_mm", self.end_mm,
+                    f"the overhung end must not exceed the journal_mm = {self.journal_mm:g} (the "
+                    "bearing is mounted over the end)",
+                    f"外伸端直径不得大于轴颈 journal_mm = {self.journal_mm:g}（轴承从外伸端装入）")
+        if self.bearing is not None:
+            try:
+                b = cat.bearing(self.bearing)
+            except KeyError:
+                allowed = ", ".join(cat.bearing_designations())
+                out.add("bearing", self.bearing, f"not in the bearing catalogue; allowed: {allowed}",
+                        f"轴承表中没有此型号；可用：{allowed}")
+            else:
+                bore = b.d * 1e3
+                if self.journal_mm is not None and abs(bore - self.journal_mm) > 1e-6:
+                    out.add("bearing", self.bearing,
+                            f"its bore is {bore:g} mm, the journal_mm is {self.journal_mm:g}: give a "
+                            f"bearing of bore {self.journal_mm:g} mm or change journal_mm",
+                            f"其内径为 {bore:g} mm，而轴颈 journal_mm 为 {self.journal_mm:g}：应选内径 "
+                            f"{self.journal_mm:g} mm 的轴承或修改 journal_mm")
+        if self.key_length_mm is not None:
+            series = cat.key_length_series()
+            if not any(abs(L * 1e3 - self.key_length_mm) < 1e-6 for L in series):
+                allowed = ", ".join(f"{L * 1e3:g}" for L in series)
+                out.add("key_length_mm", self.key_length_mm,
+                        f"not a standard key length (GB/T 1096); allowed: {allowed}",
+                        f"不是标准键长（GB/T 1096）；可用：{allowed}")
+        out.raise_any()
+        return self
+
+
+class DriveFactors(StrictModel):
+    """Factors of the gear-stage strength design (齿轮强度计算的系数); K_A is in ``service``."""
+
+    K_V: Optional[float] = Field(None, ge=1, le=2, description=(
+        "Dynamic factor K_V (default 1.1: 8-grade gears at moderate speed, 图10-8)"))
+    K_beta: Optional[float] = Field(None, ge=1, le=2, description=(
+        "Face load factor K_β (default 1.1: gears between the bearings, 表10-4)"))
+    S_F: Optional[float] = Field(None, ge=1, le=3, description=(
+        "Safety factor of bending fatigue S_F (default 1.4, 例题10-1)"))
+    S_H: Optional[float] = Field(None, ge=0.8, le=2, description=(
+        "Safety factor of contact fatigue S_H (default 1.0)"))
+
+
 class DriveSection(StrictModel):
     """The drive from the motor to the machine (传动装置)."""
 
@@ -170,6 +265,26 @@ class DriveSection(StrictModel):
     motor: MotorSpec = MotorSpec()
     service: ServiceConditions = ServiceConditions()
     efficiencies: DriveEfficiencies = DriveEfficiencies()
+    shafts: list[ShaftOverride] = Field(default_factory=list, max_length=8, description=(
+        "Overrides of the shaft, bearing and key design, by shaft (default: all designed)"))
+    factors: DriveFactors = DriveFactors()
+
+    @model_validator(mode="after")
+    def _shafts_exist(self):
+        out = Problems(self)
+        seen = set()
+        n = len(self.stages)
+        for i, o in enumerate(self.shafts):
+            if o.shaft > n:
+                out.add(("shafts", i, "shaft"), o.shaft,
+                        f"the drive has shafts 1–{n} after the motor (one per stage)",
+                        f"传动装置在电动机之后只有 1–{n} 轴（每级一根）")
+            if o.shaft in seen:
+                out.add(("shafts", i, "shaft"), o.shaft, "this shaft is given twice: merge the entries",
+                        "此轴给出了两次：请合并")
+            seen.add(o.shaft)
+        out.raise_any()
+        return self
 
 
 # --------------------------------------------------------------------------------------
@@ -208,6 +323,21 @@ class DriveParams:
     KA: float
     bearing_eff: float
     machine_eff: float
+    shafts: tuple = ()          # ShaftChoice, by shaft number
+    factors: tuple = ()         # (name, value) of the given gear factors (K_V, K_beta, S_F, S_H)
+
+
+@dataclass(frozen=True)
+class ShaftChoice:
+    """A shaft override in SI (m); None = designed."""
+    shaft: int
+    material: str | None
+    end: float | None
+    journal: float | None
+    seat: float | None
+    bearing: str | None
+    key_length: float | None
+    index: int                  # position in drive.shafts (for messages)
 
 
 def _stage_to_si(s: DriveStage, index: int) -> StageParams:
@@ -235,6 +365,13 @@ def drive_to_si(d: DriveSection) -> DriveParams:
         stages=tuple(_stage_to_si(s, i) for i, s in enumerate(d.stages)),
         synchronous_rpm=sync, speed_tolerance=d.motor.speed_tolerance_pct / 100.0,
         service_hours=sv.life_years * sv.days_per_year * sv.hours_per_day, KA=sv.application_factor_KA,
-        bearing_eff=d.efficiencies.bearing_pair, machine_eff=d.efficiencies.machine)
+        bearing_eff=d.efficiencies.bearing_pair, machine_eff=d.efficiencies.machine,
+        shafts=tuple(ShaftChoice(o.shaft, o.material, _mm(o.end_mm), _mm(o.journal_mm), _mm(o.seat_mm),
+                                 o.bearing, _mm(o.key_length_mm), i) for i, o in enumerate(d.shafts)),
+        factors=tuple((k, v) for k, v in d.factors.model_dump().items() if v is not None))
+
+
+def _mm(v: float | None) -> float | None:
+    return None if v is None else v * 1e-3
 
 

@@ -24,7 +24,7 @@ from .fields import q
 Sense = Literal["le", "ge"]
 
 #: Factor from the SI value of a :class:`Check` to its course display unit.
-COURSE_SCALE: dict[str, float] = {"MPa": 1e-6, "h": 1.0 / 3600.0, "°C": 1.0, "mm": 1e3}
+COURSE_SCALE: dict[str, float] = {"MPa": 1e-6, "h": 1.0 / 3600.0, "°C": 1.0, "mm": 1e3, "1": 1.0}
 
 
 @dataclass(frozen=True)
@@ -475,6 +475,58 @@ def shaft_check(span: float, loads: Iterable, torque: float, d: float, allowable
                        sum(p.Fa for p in loads), tuple(sections), crit, check)
 
 
+def shaft_stepped_check(result: ShaftResult, diameter_at, allowable_bending: float,
+                        alpha: float = 0.6, torque_at=None) -> tuple[Check, ShaftSection, float]:
+    """The bending–torsion check of a stepped shaft: σ_ca = √(M² + (αT)²)/(0.1 d³) at every
+    station of ``result`` (see :func:`shaft_check`) with the diameter ``diameter_at(x)`` (m)
+    of the section there; the critical section is the one of the largest σ_ca (not always
+    the largest M_ca: a bearing journal is thinner than the hub seat). Returns (the check,
+    the critical station, its diameter). ``torque_at(x, T)``: the torque at a station where
+    it differs from the one ``result`` counted there (e.g. the motor side of a flywheel)."""
+    worst, worst_d, worst_s = None, None, -1.0
+    for sec in result.sections:
+        if torque_at is not None and sec.T > 0:
+            t = torque_at(sec.x, sec.T)
+            sec = ShaftSection(sec.x, sec.Mh, sec.Mv, sec.M, t, math.hypot(sec.M, alpha * t))
+        d = diameter_at(sec.x)
+        s = sec.Mca / (0.1 * d ** 3)
+        if s > worst_s + 1e-12 * max(abs(worst_s), 1.0):
+            worst, worst_d, worst_s = sec, d, s
+    check = _check("shaft_bending", "轴的弯扭合成强度", "Shaft bending–torsion strength", r"\sigma_{ca}",
+                   worst_s, allowable_bending, "MPa", M=worst.M, T=worst.T, alpha=alpha, d=worst_d,
+                   x=worst.x)
+    return check, worst, worst_d
+
+
+def standard_diameter(d_min: float, series) -> float:
+    """The smallest value of ``series`` (m, ascending) that is ≥ d_min (m); ValueError above
+    the series."""
+    for v in series:
+        if v >= d_min * (1 - 1e-9):
+            return float(v)
+    raise ValueError(f"no standard diameter ≥ {d_min * 1e3:.1f} mm (series up to {series[-1] * 1e3:g} mm)")
+
+
+def cube_mean_factor(torque) -> float:
+    """(mean |T|³)^(1/3) / mean T of a torque sampled uniformly over one cycle: the factor
+    that turns the mean-torque bearing load into the equivalent constant load of the same
+    rating life when the load is proportional to the torque (P_m = (∫P³dφ/2π)^(1/3), the
+    textbook's mean equivalent load of a varying load with ε = 3)."""
+    t = np.asarray(torque, dtype=float)
+    mean = float(np.mean(t))
+    if not mean > 0:
+        raise ValueError("the cycle's mean torque must be positive")
+    return float(np.mean(np.abs(t) ** 3) ** (1 / 3) / mean)
+
+
+def double_key_check(T: float, d: float, h: float, l_working: float, allowable=None) -> Check:
+    """Two flat keys at 180°: the load is shared unevenly, the textbook counts 1.5 keys:
+    σ_p = 4T/(1.5 d h l) ≤ [σ_p]."""
+    s = 4 * T / (1.5 * d * h * l_working)
+    return _check("key_crushing", "平键联接挤压强度（双键）", "Key joint crushing strength (two keys)", r"\sigma_p",
+                  s, allowable, "MPa", T=T, d=d, h=h, l=l_working, keys=2)
+
+
 # ---------------------------------------------------------------------------------------
 # Rolling bearings
 # ---------------------------------------------------------------------------------------
@@ -540,6 +592,19 @@ def bearing_life_check(C, P, n_rpm, required_hours, ball: bool, ft=1.0) -> Check
     life = bearing_life_hours(C, P, n_rpm, ball, ft)
     return _check("bearing_life", "轴承寿命", "Bearing rating life", r"L_{10h}", life * 3600.0, required_hours * 3600.0,
                   "h", "ge", C=C, P=P, n_rpm=n_rpm, ft=ft, epsilon=3.0 if ball else 10.0 / 3.0)
+
+
+def bearing_static_load(Fr: float, Fa: float, X0: float, Y0: float) -> float:
+    """Equivalent static load P0 = max(X0 F_r + Y0 F_a, F_r) (N); deep-groove ball X0 = 0.6,
+    Y0 = 0.5; tapered roller X0 = 0.5 and the bearing's Y0."""
+    return max(X0 * Fr + Y0 * Fa, Fr)
+
+
+def bearing_static_check(C0: float, P0: float, S0: float) -> Check:
+    """Static strength of a rolling bearing under the peak load: C0/P0 ≥ S0 (sense "ge";
+    S0 of rotating bearings 0.8–1.2 normal, 1.2–2.5 with shocks)."""
+    return _check("bearing_static", "轴承静强度", "Bearing static strength", r"C_0/P_0", C0 / P0, S0, "1", "ge",
+                  C0=C0, P0=P0)
 
 
 # ---------------------------------------------------------------------------------------

@@ -156,6 +156,17 @@ def shaft_material(key: str) -> ShaftMaterial:
                          r["tau_T_allow_MPa_range"][0] * MPA, r["tau_T_allow_MPa_range"][1] * MPA)
 
 
+def shaft_diameter_series() -> tuple[float, ...]:
+    """Standard shaft diameters (GB/T 2822 as printed in the course handbook), m."""
+    return tuple(v * MM for v in load_yaml("materials.yaml")["shaft_diameter_series_mm"])
+
+
+def bearing_confirmed(designation: str) -> bool:
+    """True when the bearing's ratings were confirmed against a public copy of the table
+    (bearings.yaml ``confirmed``); the others are transcribed and named as an assumption."""
+    return str(designation) in load_yaml("bearings.yaml").get("confirmed", ())
+
+
 # ----------------------------------------------------------------------------- gear factors
 
 def tooth_factors(z: float) -> tuple[float, float]:

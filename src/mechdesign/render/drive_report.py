@@ -192,26 +192,46 @@ def stage_designs(d, lang: str) -> list[dict]:
                  f"Design and checks of {_shaft_name(sh.index, len(d.shafts) - 1, zh)}")
         res = sh.result
         where = "、".join(n[0] for n in sh.names) if zh else ", ".join(n[1] for n in sh.names)
-        text = [(f"45 钢调质；轴上零件：{where}。最小直径 $d_{{min}} = {f(sh.d_min * MM, 2)}$ mm，取轴承处 {f(sh.d_journal * MM, 0)} mm，"
-                 f"装配段 {f(sh.d_seat * MM, 0)} mm；支承跨距 {f(sh.span * MM, 0)} mm。设计转矩 T = {f(sh.torque, 3)} N·m。"
-                 f"支反力：$R_{{AH}} = {f(res.RAh, 1)}$ N，$R_{{AV}} = {f(res.RAv, 1)}$ N，$R_{{BH}} = {f(res.RBh, 1)}$ N，"
-                 f"$R_{{BV}} = {f(res.RBv, 1)}$ N；危险截面 x = {f(res.critical.x * MM, 0)} mm，M = {f(res.critical.M, 2)} N·m。")
-                if zh else
-                (f"45 steel, quenched and tempered; on the shaft: {where}. Minimum diameter $d_{{min}} = {f(sh.d_min * MM, 2)}$ mm; "
-                 f"journals {f(sh.d_journal * MM, 0)} mm, seats {f(sh.d_seat * MM, 0)} mm; bearing span {f(sh.span * MM, 0)} mm. "
-                 f"Design torque T = {f(sh.torque, 3)} N·m. Reactions: $R_{{AH}} = {f(res.RAh, 1)}$ N, $R_{{AV}} = {f(res.RAv, 1)}$ N, "
-                 f"$R_{{BH}} = {f(res.RBh, 1)}$ N, $R_{{BV}} = {f(res.RBv, 1)}$ N; critical section x = "
-                 f"{f(res.critical.x * MM, 0)} mm, M = {f(res.critical.M, 2)} N·m.")]
+        text = [(f"轴上零件：{where}。按《机械设计》第 15 章的步骤设计（每步的规则与数值如下），"
+                 "任一校核未通过即加大该段直径并重新校核。") if zh else
+                (f"On the shaft: {where}. Designed by the procedure of 《机械设计》 ch. 15 (each step's rule "
+                 "and numbers below); any failed check enlarges that section and everything is checked again.")]
+        for k, (szh, sen) in enumerate(getattr(sh, "steps", ()) or (), 1):
+            text.append(f"第 {k} 步：{szh}。" if zh else f"Step {k}: {sen}.")
+        text.append((f"支反力（强度计算）：$R_{{AH}} = {f(res.RAh, 1)}$ N，$R_{{AV}} = {f(res.RAv, 1)}$ N，"
+                     f"$R_{{BH}} = {f(res.RBh, 1)}$ N，$R_{{BV}} = {f(res.RBv, 1)}$ N；危险截面 x = "
+                     f"{f(res.critical.x * MM, 0)} mm，M = {f(res.critical.M, 2)} N·m。")
+                    if zh else
+                    (f"Reactions (strength case): $R_{{AH}} = {f(res.RAh, 1)}$ N, $R_{{AV}} = {f(res.RAv, 1)}$ N, "
+                     f"$R_{{BH}} = {f(res.RBh, 1)}$ N, $R_{{BV}} = {f(res.RBv, 1)}$ N; largest equivalent moment "
+                     f"at x = {f(res.critical.x * MM, 0)} mm, M = {f(res.critical.M, 2)} N·m."))
         if sh.bearing is not None:
             b = sh.bearing
-            text.append((f"轴承 {b.designation}（d = {f(b.d * MM, 0)} mm，$C_r$ = {f(b.Cr / 1e3, 1)} kN），当量动载荷 "
-                         f"$P_A = {f(sh.bearing_loads[0], 1)}$ N，$P_B = {f(sh.bearing_loads[1], 1)}$ N（$f_p$ = 1.2）。")
+            text.append((f"轴承 {b.designation}（d = {f(b.d * MM, 0)} mm，$C_r$ = {f(b.Cr / 1e3, 1)} kN），寿命按疲劳载荷："
+                         f"当量动载荷 $P_A = {f(sh.bearing_loads[0], 1)}$ N，$P_B = {f(sh.bearing_loads[1], 1)}$ N"
+                         f"（$f_p$ = 1.2，载荷为强度计算的 {f(sh.life_torque_factor, 3)} 倍）；静强度按峰值载荷。")
                         if zh else
-                        (f"Bearings {b.designation} (d = {f(b.d * MM, 0)} mm, $C_r$ = {f(b.Cr / 1e3, 1)} kN), equivalent loads "
-                         f"$P_A = {f(sh.bearing_loads[0], 1)}$ N, $P_B = {f(sh.bearing_loads[1], 1)}$ N ($f_p$ = 1.2)."))
+                        (f"Bearings {b.designation} (d = {f(b.d * MM, 0)} mm, $C_r$ = {f(b.Cr / 1e3, 1)} kN); the life "
+                         f"takes the fatigue load: equivalent loads $P_A = {f(sh.bearing_loads[0], 1)}$ N, "
+                         f"$P_B = {f(sh.bearing_loads[1], 1)}$ N ($f_p$ = 1.2, the loads {f(sh.life_torque_factor, 3)} × "
+                         "those of the strength case); the static strength the peak."))
+        unit_mm = "mm"
+        rows = [["$d_{min}$", f(sh.d_min * MM, 2), unit_mm]]
+        if getattr(sh, "d_end", None) is not None:
+            rows.append([("外伸端" if zh else "overhung end") + " $d_1$", f(sh.d_end * MM, 0), unit_mm])
+        rows += [[("轴颈" if zh else "journal") + " $d_j$", f(sh.d_journal * MM, 0), unit_mm],
+                 [("装配段" if zh else "hub seat") + " $d_s$", f(sh.d_seat * MM, 0), unit_mm],
+                 [("轴环" if zh else "collar") + " $d_c$", f(sh.d_shoulder * MM, 0), unit_mm],
+                 [("支承跨距" if zh else "bearing span") + " $L$", f(sh.span * MM, 0), unit_mm],
+                 [("设计转矩" if zh else "design torque") + " $T$", f(sh.torque, 1), "N·m"]]
+        if sh.bearing is not None:
+            rows.append([("轴承" if zh else "bearing"), sh.bearing.designation, "—"])
+        for k in getattr(sh, "keys", ()) or ():
+            lab = f"{f(k.b * MM, 0)}×{f(k.h * MM, 0)}×{f(k.L * MM, 0)}" + (" ×2" if k.count == 2 else "")
+            rows.append([("平键" if zh else "key") + f" ({k.names[0] if zh else k.names[1]})", lab, unit_mm])
         bearing_std = () if sh.bearing is None else (
             ("gb297",) if sh.bearing.designation.startswith("3") else ("gb276",))
-        out.append({"title": title, "text": text, "rows": [],
+        out.append({"title": title, "text": text, "rows": rows,
                     "formulas": [eq for c in sh.checks for eq in check_formulas(c)], "checks": _rows(check_rows(sh.checks, lang), zh),
                     "refs": ("pu8", "gb1096", *bearing_std)})
     return out

@@ -50,7 +50,7 @@ def _allowable(check: Check) -> str:
 
 
 def _unit(unit: str) -> str:
-    return rf"\text{{{unit}}}"
+    return "" if unit == "1" else rf"\text{{{unit}}}"
 
 
 def _relation(check: Check) -> str:
@@ -140,11 +140,21 @@ def _bearing_life(c: Check) -> str:
 
 def _key_crushing(c: Check) -> str:
     i = c.inputs
+    if i.get("keys") == 2:      # two keys at 180°, counted as 1.5 keys
+        numbers = (rf"\frac{{2 \times {num(i['T'] * N_MM)}}}{{1.5 \times "
+                   rf"{_prod(0.5 * i['h'] * MM, i['l'] * MM, i['d'] * MM)}}}")
+        return rf"\sigma_p = \frac{{2 T}}{{1.5 k l d}} = {numbers}" + _tail(c, r"[\sigma_p]")
     numbers = (rf"\frac{{2 \times {num(i['T'] * N_MM)}}}{{{_prod(0.5 * i['h'] * MM, i['l'] * MM, i['d'] * MM)}}}")
     return rf"\sigma_p = \frac{{2 T}}{{k l d}} = {numbers}" + _tail(c, r"[\sigma_p]")
 
 
+def _bearing_static(c: Check) -> str:
+    i = c.inputs
+    return (rf"\frac{{C_0}}{{P_0}} = \frac{{{num(i['C0'])}}}{{{num(i['P0'])}}}" + _tail(c, r"S_0"))
+
+
 _FORMULAS = {
+    "bearing_static": _bearing_static,
     "gear_contact": _gear_contact,
     "gear_bending": _gear_bending,
     "worm_contact": _worm_contact,
@@ -195,8 +205,10 @@ def verdict(check: Check, lang: str = "zh") -> str:
 
 def check_rows(checks: Iterable[Check], lang: str = "zh") -> list[list[str]]:
     """Summary rows ``[item_zh, item_en, value, allowable, unit, verdict]`` (course units;
-    the allowable is a minimum for lives and diameters, a maximum otherwise)."""
-    return [[c.name_zh, c.name_en, _value(c), _allowable(c), c.unit, verdict(c, lang)] for c in checks]
+    the allowable is a minimum for lives and diameters, a maximum otherwise; a ratio's unit "1"
+    shows as "—")."""
+    return [[c.name_zh, c.name_en, _value(c), _allowable(c), "—" if c.unit == "1" else c.unit, verdict(c, lang)]
+            for c in checks]
 
 
 __all__ = ["check_formula", "check_rows", "verdict", "num", "COURSE_SCALE"]

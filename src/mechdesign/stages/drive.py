@@ -174,8 +174,13 @@ def _names(kind: str) -> tuple[str, str]:
 
 
 def design_drive(dp, machine_power: float, output_rpm: float, source: str,
-                 peak_factor: float = 1.0, peak_from_shaft: int | None = None) -> DriveResult:
-    """The whole drive for a machine needing ``machine_power`` [W] at ``output_rpm``."""
+                 peak_factor: float = 1.0, peak_from_shaft: int | None = None,
+                 life_factor: float | None = None) -> DriveResult:
+    """The whole drive for a machine needing ``machine_power`` [W] at ``output_rpm``.
+    ``peak_factor``: the machine's peak torque / its mean, carried by the shafts from
+    ``peak_from_shaft`` on (after the flywheel; None: none); ``life_factor``: the cycle's
+    cube-mean torque / its mean, the equivalent load of the bearing life there (None: the
+    mean)."""
     # A machine without working resistance takes (almost) no mean power: its torque only
     # swings about zero, the peak factor peak/mean is unbounded and nothing sizes the drive.
     if not (machine_power > 0 and np.isfinite(machine_power) and 0 < peak_factor < 1e6):
@@ -210,7 +215,7 @@ def design_drive(dp, machine_power: float, output_rpm: float, source: str,
         if not changed:
             break
         worm_eff.update(changed)
-    shaft_designs = _shafts(dp, results, shafts, peak_factor, peak_from_shaft)
+    shaft_designs = _shafts(dp, results, shafts, peak_factor, peak_from_shaft, life_factor)
     n_out = shafts[-1].speed_rpm
     error = (n_out - output_rpm) / output_rpm
     warnings = []
@@ -253,9 +258,10 @@ def _strength(dp, results, shafts, peak_factor, peak_from_shaft):
     return results, worm_eff
 
 
-def _shafts(dp, results, shafts, peak_factor, peak_from_shaft):
+def _shafts(dp, results, shafts, peak_factor, peak_from_shaft, life_factor=None):
     names = [(r.name_zh, r.name_en) for r in results]
-    return ds.shaft_designs(dp, [r.design for r in results], shafts, peak_factor, peak_from_shaft, names)
+    return ds.shaft_designs(dp, [r.design for r in results], shafts, peak_factor, peak_from_shaft, names,
+                            life_factor)
 
 
 def undercut_findings(results) -> list[Finding]:
@@ -353,22 +359,34 @@ def _strength_warnings(results, shaft_designs) -> tuple[Finding, ...]:
         for c in r.design.checks if r.design else ():
             if not c.passed:
                 out.append(_failed(c, f"第 {r.index + 1} 级{r.name_zh}", f"stage {r.index + 1} ({r.name_en})"))
+    roman = "0 Ⅰ Ⅱ Ⅲ Ⅳ Ⅴ Ⅵ Ⅶ Ⅷ Ⅸ".split()
     for s in shaft_designs:
+        name = roman[s.index] if s.index < len(roman) else str(s.index)
+        advice = {a[0]: a[1:] for a in getattr(s, "advice", ())}
         for c in s.checks:
             if not c.passed:
-                out.append(_failed(c, f"{s.index} 轴", f"shaft {s.index}"))
+                out.append(_failed(c, f"{name} 轴", f"shaft {name}", advice.get(c.name_en)))
     return tuple(out)
 
 
-def _failed(c, where_zh: str, where_en: str) -> Finding:
+def _failed(c, where_zh: str, where_en: str, advice=None) -> Finding:
+    """A failed check as a named finding; ``advice`` = (field, zh, en): the override that
+    fails and what to change (else the generic advice)."""
     from ..core.strength import COURSE_SCALE
 
     v, a = c.value * COURSE_SCALE[c.unit], c.allowable * COURSE_SCALE[c.unit]
     v, a = _sig4(v), _sig4(a)
     rel = ">" if c.sense == "le" else "<"
+    unit = "" if c.unit == "1" else f" {c.unit}"
+    if advice is not None:
+        field, zh, en = advice
+        return Finding("strength",
+                       f"{where_zh}：{c.name_zh}不合格（{v} {rel} {a}{unit}），由指定值 {field} 造成：{zh}。",
+                       f"{where_en}: {c.name_en} fails ({v} {rel} {a}{unit}) with the brief's {field}: {en}.",
+                       field=field)
     return Finding("strength",
-                   f"{where_zh}：{c.name_zh}不合格（{v} {rel} {a} {c.unit}）：加大尺寸或改用更好的材料。",
-                   f"{where_en}: {c.name_en} fails ({v} {rel} {a} {c.unit}): "
+                   f"{where_zh}：{c.name_zh}不合格（{v} {rel} {a}{unit}）：加大尺寸或改用更好的材料。",
+                   f"{where_en}: {c.name_en} fails ({v} {rel} {a}{unit}): "
                    "enlarge it or use a better material.")
 
 

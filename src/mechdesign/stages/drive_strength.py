@@ -8,12 +8,18 @@ width factors and spans):
   K_β = 1.1 (8-grade gears, moderate speed); worm K = K_A · 1.1;
 - S_H = 1.0, S_F = 1.4; open gears: module by bending × 1.15 for wear, no contact check;
   a designed module is at least 2 mm (gears that transmit power);
-- shafts of 45 steel (调质), A0 = 112, +5 % for a keyway; journal = d rounded up to 5 mm
-  (bearing bore), gear seat = journal + 5 mm; reducer gears between the bearings,
-  belt pulleys, couplings and open gears overhung by 80 mm;
-- bearings: tapered roller 302xx on worm-reducer shafts, deep-groove 62xx (63xx if
-  62xx is too short-lived) elsewhere, f_p = 1.2; flat keys form A, steel hubs
-  (cast-iron for pulleys), [σp] of light shocks.
+- shafts of 45 steel (调质; ``drive.shafts[].material`` overrides), A0 = 112, +5 % for a
+  keyway; overhung end = the standard size ≥ d_min, journal = the bearing bore ≥ the seal
+  section 1.14·d_end, seat = journal + 5 mm, collar ≈ 1.14·seat; reducer gears between the
+  bearings, belt pulleys, sprockets, couplings and open gears overhung by 80 mm; σ_ca
+  checked at every station with the diameter there; any failure upsizes that section;
+- torques: after the flywheel the machine's peak torque for the strength checks (shaft,
+  keys, bearing statics, S0 = 1.5), the cycle's cube-mean torque for the bearing life (a
+  fatigue quantity); before it the motor side's torque (K_A enters the gear stages only);
+- bearings: tapered roller 302xx → 303xx on worm-reducer shafts, deep-groove 62xx → 63xx
+  elsewhere, the lightest series whose life reaches the service life at the journal, else
+  a larger bore; f_p = 1.2; flat keys form A, steel hubs (cast-iron for pulleys), [σp] of
+  light shocks, L ≤ hub − 8 mm, a longer hub (1.5 d), then two keys at 180° (1.5 keys).
 """
 from __future__ import annotations
 
@@ -60,6 +66,22 @@ class StageDesign:
 
 
 @dataclass(frozen=True)
+class KeyDesign:
+    """One flat-key joint (GB/T 1096, form A) at a hub on the shaft."""
+
+    names: tuple[str, str] = q("", "the element on the hub, (zh, en)")
+    d: float = q("m", "shaft diameter under the hub")
+    b: float = q("m", "key width")
+    h: float = q("m", "key height")
+    L: float = q("m", "key length (standard, ≤ hub − 8 mm)")
+    l: float = q("m", "working length l = L − b")
+    hub: float = q("m", "hub length")
+    count: int = q("1", "keys at the hub (2: two keys at 180°, counted as 1.5)")
+    torque: float = q("N·m", "torque through the hub (the peak after a flywheel)")
+    check: st.Check = q("", "crushing check σ_p = 4T/(d h l) (÷ 1.5 for two keys)")
+
+
+@dataclass(frozen=True)
 class ShaftDesign:
     """One shaft after the motor: diameters, loads and statics, bearings, keys and checks."""
 
@@ -68,22 +90,41 @@ class ShaftDesign:
     power: float = q("W", "P")
     torque: float = q("N·m", "design torque (× the peak factor where it applies)")
     d_min: float = q("m", "A_0·∛(P/n) with the keyway allowance")
-    d_journal: float = q("m", "bearing journal (d rounded up to 5 mm)")
-    d_seat: float = q("m", "hub seat = journal + 5 mm")
+    d_journal: float = q("m", "bearing journal (the bearing bore)")
+    d_seat: float = q("m", "hub seat between the bearings (journal + 5 mm)")
     span: float = q("m", "bearing span")
-    loads: tuple[st.PointLoad, ...] = q("", "the loads of the elements it carries")
+    loads: tuple[st.PointLoad, ...] = q("", "the loads of the elements it carries (strength case)")
     names: tuple[tuple[str, str], ...] = q("", "what sits at each load, (zh, en)")
     result: st.ShaftResult = q("", "reactions and moments (bending–torsion check)")
     bearing: cat.Bearing | None = q("", "the bearing chosen (null: none in the catalogue)")
-    bearing_loads: tuple[float, float] = q("N", "equivalent dynamic loads (P_A, P_B)")
-    checks: tuple[st.Check, ...] = q("", "diameter, bending–torsion, bearing life, keys")
+    bearing_loads: tuple[float, float] = q("N", "equivalent dynamic loads for the life (P_A, P_B)")
+    checks: tuple[st.Check, ...] = q("", "diameter, bending–torsion, bearing life and statics, keys")
+    material: str = q("", "shaft material key", default="45_QT")
+    A0: float = q("1", "A_0 of the torsion estimate (mm, kW, rpm form)", default=A0)
+    d_end: float | None = q("m", "overhung end under a pulley, sprocket or coupling (null: none)",
+                            default=None)
+    d_shoulder: float = q("m", "collar locating the hub: seat × 1.14 rounded up (h ≈ 0.07 d)",
+                          default=0.0)
+    life_torque_factor: float = q("1", "bearing life load / strength load of the elements after "
+                                  "the flywheel (cube mean / peak of the cycle's torque)", default=1.0)
+    life_reactions: tuple[float, float] = q("N", "radial bearing loads of the life case (F_rA, F_rB)",
+                                            default=(0.0, 0.0))
+    keys: tuple[KeyDesign, ...] = q("", "the key joints", default=())
+    steps: tuple[tuple[str, str], ...] = q("", "the design steps, each rule with its numbers (zh, en)",
+                                           default=())
+    advice: tuple[tuple[str, str, str, str], ...] = q(
+        "", "what to change when an override fails: (check name_en, field, zh, en)", default=())
 
 
 def _phi_d(s, is_open: bool) -> float:
     return s.face_width_factor if s.face_width_factor else (0.5 if is_open else 1.0)
 
 
-def _gear_stage(s, n1: float, T1: float, T2: float, hours: float, KA: float) -> StageDesign:
+def _gear_stage(s, n1: float, T1: float, T2: float, hours: float, KA: float,
+                factors: dict | None = None) -> StageDesign:
+    f_ = factors or {}
+    K_V, K_BETA = f_.get("K_V", globals()["K_V"]), f_.get("K_beta", globals()["K_BETA"])
+    S_H, S_F = f_.get("S_H", globals()["S_H"]), f_.get("S_F", globals()["S_F"])
     helical = s.type == "helical"
     is_open = s.type == "spur" and s.open
     z1, z2 = s.z1, s.z2
@@ -211,7 +252,8 @@ def stage_designs(dp, results, shafts, peak_factor, peak_from_shaft) -> tuple[li
         T1, T2 = shafts[k].torque * boost, shafts[k + 1].torque * boost
         s = replace(s, z1=r.z1, z2=r.z2)
         if s.type in ("spur", "helical"):
-            out.append(_gear_stage(s, shafts[k].speed_rpm, T1, T2, dp.service_hours, dp.KA))
+            out.append(_gear_stage(s, shafts[k].speed_rpm, T1, T2, dp.service_hours, dp.KA,
+                                   dict(getattr(dp, "factors", ()))))
         elif s.type == "worm":
             d = _worm_stage(s, shafts[k].speed_rpm, shafts[k].power, T1, T2, dp.service_hours, dp.KA)
             if s.efficiency is None:
@@ -244,85 +286,433 @@ def _element_loads(design: StageDesign, driving: bool):
         return True, dict(Fh=f["Ft2"], Fv=f["Fr"], Fa=f["Ft"], r=f["d2"] / 2), None, "steel"
     if design.kind == "belt":
         return False, dict(Fh=f["Q"]), None, "cast_iron"
+    if design.kind == "chain" and "Q" in f:       # the chain's pull on the sprocket, overhung
+        return False, dict(Fh=f["Q"]), None, "steel"
     return False, {}, None, "steel"
 
 
-def shaft_designs(dp, designs, shafts, peak_factor, peak_from_shaft, names) -> tuple[ShaftDesign, ...]:
-    mat = cat.shaft_material("45_QT")
+
+STATIC_S0 = 1.5            # 表13-8: rotating bearings under shock loads 1.2–2.5
+HUB_MAX = 1.5              # hub length up to 1.5 d (gears, pulleys: 1.2–1.5 d usual, 2 d at most)
+KEY_GAP = 0.008            # key length ≤ hub − 5…10 mm
+
+
+def _mmf(x: float, digits: int = 1) -> str:
+    return f"{x * 1e3:.{digits}f}".rstrip("0").rstrip(".") if digits else f"{x * 1e3:.0f}"
+
+
+def _life_scale(designs, peak_factor, peak_from_shaft, life_factor):
+    """Scale of each element's forces from the strength case to the life case: the
+    elements after the flywheel carry the peak in the strength case and the cycle's cube-mean
+    torque (life_factor × the mean; 1 = the mean) in the life case."""
+    out = []
+    for k, _ in enumerate(designs):
+        boosted = peak_from_shaft is not None and k >= peak_from_shaft
+        out.append((life_factor / peak_factor) if boosted and peak_factor > 0 else 1.0)
+    return out
+
+
+def _place(dp, j, designs, names):
+    """The elements on shaft j and where they sit: those inside the housing evenly between
+    the bearings, the overhung ones 80 mm outside (first left, then right)."""
+    elems = [(j - 1, designs[j - 1], False, names[j - 1])]
+    if j < len(designs):
+        elems.append((j, designs[j], True, names[j]))
+    info = []
+    for k, d, drv, nm in elems:
+        inside, fields, width, hub_mat = _element_loads(d, drv)
+        info.append(dict(k=k, design=d, driving=drv, name=nm, inside=inside, fields=fields,
+                         width=width or (0.06 if d.kind == "worm" else 0.0), hub_mat=hub_mat))
+    inside_width = sum(i["width"] for i in info if i["inside"]) or 0.05
+    span = dp.stages[j - 1].span or inside_width + 2 * CLEARANCE
+    ins = [i for i in info if i["inside"]]
+    for n, i in enumerate(ins):
+        i["x"] = span * (n + 1) / (len(ins) + 1)
+    side = [-OVERHANG, span + OVERHANG]
+    for i in info:
+        if not i["inside"]:
+            i["x"] = side.pop(0) if side else span + OVERHANG
+    return info, span
+
+
+def _statics(span, info, T, scale=None):
+    loads = []
+    for i in _load_order(info):
+        f = dict(i["fields"])
+        if scale is not None:
+            c = scale[i["k"]]
+            f = {k: (v * c if k != "r" else v) for k, v in f.items()}
+        loads.append(st.PointLoad(i["x"], **f))
+    xs = [p.x for p in loads] or [0.0, span]
+    res = st.shaft_check(span, loads, T, 1.0, 1.0, 0.6, (min(xs), max(xs)) if len(xs) > 1 else None)
+    return loads, res
+
+
+def _load_order(info):
+    """The elements inside the housing first, then the overhung ones (the loads' order)."""
+    return [i for i in info if i["inside"]] + [i for i in info if not i["inside"]]
+
+
+def _bearing_life(b, res, life_res, n_rpm, hours, peak):
+    """(equivalent loads for the life, life check, static check) of bearing b: the life from
+    the life case's reactions × f_p, the static strength from the strength case (the peak)."""
+    Fa, Fa_l = abs(res.Fa_total), abs(life_res.Fa_total)
+    if b.ball:
+        e, X, Y = cat.deep_groove_factors(Fa_l, b.C0r)
+        pA = st.bearing_equivalent_load(max(life_res.FrA, 1e-9), Fa_l, e, X, Y, FP)  # A takes Fa
+        pB = FP * max(life_res.FrB, 1e-9)
+        p0 = max(st.bearing_static_load(res.FrA, Fa, 0.6, 0.5), res.FrB)
+    else:
+        ax = st.tapered_pair_axial_loads(max(life_res.FrA, 1e-9), max(life_res.FrB, 1e-9), life_res.Fa_total, b.Y)
+        pA = st.bearing_equivalent_load(max(life_res.FrA, 1e-9), ax.Fa1, b.e, 0.4, b.Y, FP)
+        pB = st.bearing_equivalent_load(max(life_res.FrB, 1e-9), ax.Fa2, b.e, 0.4, b.Y, FP)
+        ax0 = st.tapered_pair_axial_loads(max(res.FrA, 1e-9), max(res.FrB, 1e-9), res.Fa_total, b.Y)
+        p0 = max(st.bearing_static_load(res.FrA, ax0.Fa1, 0.5, b.Y0),
+                 st.bearing_static_load(res.FrB, ax0.Fa2, 0.5, b.Y0))
+    life = st.bearing_life_check(b.Cr, max(pA, pB), n_rpm, hours, b.ball)
+    life = replace(life, name_zh=f"轴承 {b.designation} 寿命", name_en=f"Bearing {b.designation} life")
+    static = None
+    if peak:
+        static = replace(st.bearing_static_check(b.C0r, max(p0, 1e-9), STATIC_S0),
+                         name_zh=f"轴承 {b.designation} 静强度（峰值载荷）",
+                         name_en=f"Bearing {b.designation} static strength (peak load)")
+    return (pA, pB), life, static
+
+
+def _keys(info, d_end, d_seat, T_of, allow_of, key_length=None):
+    """Flat keys at every hub: b × h by the diameter, L the longest standard ≤ hub − 8 mm;
+    if the crushing check fails, a longer hub (up to 1.5 d), then two keys at 180°."""
+    out = []
+    for i in info:
+        d = i["design"]
+        if d.kind == "worm" and i["driving"]:
+            continue                      # the worm is cut on its shaft: no key
+        dk = d_seat if i["inside"] or d_end is None else d_end
+        key = cat.key_for_shaft(dk)
+        base = max(i["width"], 1.2 * dk, 1.5 * dk if d.kind in ("belt", "coupling", "chain") else 0.0)
+        T, allow = T_of(i), allow_of(i)
+        choice = None
+        if key_length is not None:
+            hub = max(base, key_length + KEY_GAP)
+            L = key_length
+            lw = st.key_working_length(L, key.b, "A")
+            c = st.key_check(T, dk, key.h, lw, allow)
+            choice = (hub, L, lw, 1, c)
+        else:
+            for hub, count in ((base, 1), (max(base, HUB_MAX * dk), 1), (max(base, HUB_MAX * dk), 2)):
+                try:
+                    L = cat.standard_key_length(hub - KEY_GAP, key)
+                except ValueError:
+                    continue
+                lw = st.key_working_length(L, key.b, "A")
+                c = (st.key_check if count == 1 else st.double_key_check)(T, dk, key.h, lw, allow)
+                choice = (hub, L, lw, count, c)
+                if c.passed:
+                    break
+        if choice is None:
+            continue
+        hub, L, lw, count, c = choice
+        nm = i["name"]
+        lab = f"{key.label}×{L * 1e3:g}" + (" ×2" if count == 2 else "")
+        c = replace(c, name_zh=f"平键 {lab}（{nm[0]}）", name_en=f"Key {lab} ({nm[1]})")
+        out.append((KeyDesign(nm, dk, key.b, key.h, L, lw, hub, count, T, c),
+                    i["inside"] or d_end is None))
+    return out
+
+
+def _evaluate(dp, j, sh, info, span, T, res, life_res, mat, dims, bearing_fixed, series, peak,
+              T_of, allow_of, key_length):
+    """Every check of shaft j with the diameters ``dims`` = (d_end, journal, seat)."""
+    d_end, dj, ds = dims
+    xs_bear = (0.0, span)
+
+    def diameter_at(x):
+        if any(abs(x - xb) < 1e-12 for xb in xs_bear):
+            return dj
+        if x < 0 or x > span:
+            return d_end if d_end is not None else dj
+        return ds
+
+    pre = [i["x"] for i in info if T_of(i) < T]     # hubs on the motor side of the flywheel
+
+    def torque_at(x, t):
+        return min(t, sh.torque) if any(abs(x - xp) < 1e-12 for xp in pre) else t
+
+    bend, crit, dcrit = st.shaft_stepped_check(res, diameter_at, mat.sigma_minus1b_allow, 0.6, torque_at)
+    bearing = life = static = None
+    pl = (0.0, 0.0)
+    if bearing_fixed is not None:
+        bearing = cat.bearing(bearing_fixed)
+        pl, life, static = _bearing_life(bearing, res, life_res, sh.speed_rpm, dp.service_hours, peak)
+    else:
+        for ser in series:
+            try:
+                b = cat.smallest_bearing(ser, dj)
+            except ValueError:
+                continue
+            if abs(b.d - dj) > 1e-9:
+                continue
+            pl_, life_, static_ = _bearing_life(b, res, life_res, sh.speed_rpm, dp.service_hours, peak)
+            bearing, pl, life, static = b, pl_, life_, static_
+            if life_.passed and (static_ is None or static_.passed):
+                break
+    flagged = _keys(info, d_end, ds, T_of, allow_of, key_length)
+    keys = [k for k, _ in flagged]
+    end_keys_ok = all(k.check.passed for k, inside in flagged if not inside)
+    in_keys_ok = all(k.check.passed for k, inside in flagged if inside)
+    outside = crit.x < 0 or crit.x > span
+    return dict(bend=bend, crit=crit, dcrit=dcrit, bearing=bearing, pl=pl, life=life, static=static, keys=keys,
+                bad_end=d_end is not None and ((not bend.passed and outside) or not end_keys_ok),
+                bad_in=((not bend.passed and not outside) or bearing is None or not in_keys_ok
+                        or (life is not None and not life.passed) or (static is not None and not static.passed)))
+
+
+def shaft_designs(dp, designs, shafts, peak_factor, peak_from_shaft, names,
+                  life_factor: float | None = None) -> tuple[ShaftDesign, ...]:
+    """Each shaft designed by the handbook's procedure (濮良贵《机械设计》 ch.15, 《机械设计课程
+    设计》): d_min = A0∛(P/n) (+5 % keyway); the sections laid out from the parts (overhung end
+    → journal → seat → shoulder), each rounded up to the standard series; the bending–torsion
+    check σ_ca = √(M² + (αT)²)/(0.1 d³) ≤ [σ_-1b] at every station with the diameter there;
+    the bearing of the lightest series whose life reaches the service life at the journal;
+    the keys by the diameter and the hub; any failure → the section grows (overhung end: the
+    next standard size; journal and seat: +5 mm) and everything is re-checked.
+
+    Torques: the shafts after the flywheel (``peak_from_shaft``) carry the machine's peak
+    torque (mean × ``peak_factor``) for the strength checks (shaft, keys, bearing statics);
+    the bearing life, a fatigue quantity, takes the cycle's equivalent load: the elements'
+    forces at the cube-mean torque (``life_factor`` × the mean; None: the mean) × f_p."""
+    choices = {c.shaft: c for c in getattr(dp, "shafts", ())}
     worm_shafts = {k for k, d in enumerate(designs) if d.kind == "worm"} | \
                   {k + 1 for k, d in enumerate(designs) if d.kind == "worm"}
-    sp_lo, _ = cat.key_allowable_stress("steel", "light_shock")
-    ci_lo, _ = cat.key_allowable_stress("cast_iron", "light_shock")
+    lf = 1.0 if life_factor is None else life_factor
+    scale = _life_scale(designs, peak_factor, peak_from_shaft, lf)
+    series_d = cat.shaft_diameter_series()
     out = []
     for j in range(1, len(shafts)):
         sh = shafts[j]
-        boost = peak_factor if peak_from_shaft is not None and j >= peak_from_shaft else 1.0
+        ch = choices.get(j)
+        peak = peak_from_shaft is not None and j >= peak_from_shaft
+        boost = peak_factor if peak else 1.0
         T = sh.torque * boost
-        d_min = st.shaft_min_diameter(sh.power, sh.speed_rpm, A0, KEYWAY)
-        d_j = max(_round_up(d_min + 0.003, 0.005), 0.020)
-        d_seat = d_j + 0.005
-        elems = [(designs[j - 1], False, names[j - 1])]
-        if j < len(designs):
-            elems.append((designs[j], True, names[j]))
-        info = [(_element_loads(d, drv), nm, d) for d, drv, nm in elems]
-        widths = [i[0][2] or (0.06 if i[2].kind == "worm" else 0.0) for i in info]
-        inside = [i for i in info if i[0][0]]
-        inside_width = sum(w for i, w in zip(info, widths) if i[0][0]) or 0.05
-        span = dp.stages[j - 1].span or inside_width + 2 * CLEARANCE
-        loads, where = [], []
-        for n, i in enumerate(inside):
-            x = span * (n + 1) / (len(inside) + 1)
-            loads.append(st.PointLoad(x, **i[0][1]))
-            where.append(i[1])
-        side = [-OVERHANG, span + OVERHANG]
-        for i in info:
-            if not i[0][0]:
-                x = side.pop(0) if side else span + OVERHANG
-                loads.append(st.PointLoad(x, **i[0][1]))
-                where.append(i[1])
-        xs = [p.x for p in loads] or [0.0, span]
-        res = st.shaft_check(span, loads, T, d_seat, mat.sigma_minus1b_allow, 0.6,
-                             (min(xs), max(xs)) if len(xs) > 1 else None)
-        checks = [st.shaft_diameter_check(d_seat, sh.power, sh.speed_rpm, A0, KEYWAY), res.check]
-        # Bearings
-        bearing, pl = None, (0.0, 0.0)
-        Fa = abs(res.Fa_total)
-        series = ("302",) if j in worm_shafts else ("62", "63")
-        for ser in series:
-            try:
-                bearing = cat.smallest_bearing(ser, d_j)
-            except ValueError:
-                bearing = None
-                continue
-            if bearing.ball:
-                FrA, FrB = max(res.FrA, 1e-9), max(res.FrB, 1e-9)
-                e, X, Y = cat.deep_groove_factors(Fa, bearing.C0r)
-                pA = st.bearing_equivalent_load(FrA, Fa, e, X, Y, FP)   # A takes the axial load
-                pB = FP * FrB
+        mat_key = (ch.material if ch and ch.material else "45_QT")
+        mat = cat.shaft_material(mat_key)
+        a0 = A0 if mat_key.startswith("45") else 0.5 * (mat.A0_min + mat.A0_max)
+        d_min = st.shaft_min_diameter(sh.power, sh.speed_rpm, a0, KEYWAY)
+        info, span = _place(dp, j, designs, names)
+        loads, res = _statics(span, info, T)
+        _, life_res = _statics(span, info, T * lf / boost if peak else T, scale)
+        overhung = any(not i["inside"] for i in info)
+        series = ("302", "303") if j in worm_shafts else ("62", "63")
+        sp_lo, _ = cat.key_allowable_stress("steel", "light_shock")
+        ci_lo, _ = cat.key_allowable_stress("cast_iron", "light_shock")
+
+        def T_of(i, j=j, sh=sh, T=T):
+            # the element before the flywheel sees the motor side's mean torque
+            return sh.torque if (peak_from_shaft is not None and i["k"] < peak_from_shaft) else T
+
+        def allow_of(i):
+            return ci_lo if i["hub_mat"] == "cast_iron" else sp_lo
+
+        def design(fixed):
+            """The loop; ``fixed`` the overrides of this shaft (None: free)."""
+            steps = []
+            d_end = None
+            if overhung:
+                d_end = fixed.end if fixed and fixed.end else st.standard_diameter(d_min, series_d)
+            seal = st.standard_diameter(1.14 * d_end, series_d) if d_end is not None else 0.0
+            if fixed and fixed.bearing and not fixed.journal:
+                dj = cat.bearing(fixed.bearing).d
+            elif fixed and fixed.journal:
+                dj = fixed.journal
             else:
-                ax = st.tapered_pair_axial_loads(max(res.FrA, 1e-9), max(res.FrB, 1e-9), res.Fa_total, bearing.Y)
-                pA = st.bearing_equivalent_load(max(res.FrA, 1e-9), ax.Fa1, bearing.e, 0.4, bearing.Y, FP)
-                pB = st.bearing_equivalent_load(max(res.FrB, 1e-9), ax.Fa2, bearing.e, 0.4, bearing.Y, FP)
-            pl = (pA, pB)
-            life = st.bearing_life_check(bearing.Cr, max(pA, pB), sh.speed_rpm, dp.service_hours, bearing.ball)
-            if life.passed or ser == series[-1]:
-                checks.append(replace(life, name_zh=f"轴承 {bearing.designation} 寿命",
-                                      name_en=f"Bearing {bearing.designation} life"))
+                dj = round(max(_round_up(max(seal, d_min + 0.003), 0.005), 0.020), 6)
+            ds = fixed.seat if fixed and fixed.seat else round(dj + 0.005, 6)
+            free_end = not (fixed and fixed.end)
+            free_j = not (fixed and (fixed.journal or fixed.bearing))
+            free_s = not (fixed and fixed.seat)
+            kl = fixed.key_length if fixed else None
+            ev = None
+            for it in range(60):
+                ev = _evaluate(dp, j, sh, info, span, T, res, life_res, mat, (d_end, dj, ds),
+                               fixed.bearing if fixed else None, series, peak, T_of, allow_of, kl)
+                bad_end, bad_in = ev["bad_end"], ev["bad_in"]
+                if bad_end and free_end:
+                    new = st.standard_diameter(d_end * (1 + 1e-6) + 1e-6, series_d)
+                    steps.append(("end", d_end, new, _kinds(ev)))
+                    d_end = new
+                    seal = st.standard_diameter(1.14 * d_end, series_d)
+                    if free_j and dj < seal:
+                        dj = round(_round_up(seal, 0.005), 6)
+                        ds = round(dj + 0.005, 6) if free_s else max(ds, dj)
+                    continue
+                if bad_in and (free_j or free_s):
+                    old = (dj, ds)
+                    if free_j:
+                        dj = round(dj + 0.005, 6)
+                    if free_s:
+                        ds = round(max(dj + 0.005, ds + 0.005 if not free_j else dj + 0.005), 6)
+                    steps.append(("in", old, (dj, ds), _kinds(ev)))
+                    if dj > 0.130 + 1e-9:
+                        break
+                    continue
                 break
-        # Keys at every hub on the shaft
-        for (ld, nm, d), w in zip(info, widths):
-            key = cat.key_for_shaft(d_seat)
-            hub = max(w or 0.0, 1.2 * d_seat, 1.5 * d_seat if d.kind in ("belt", "coupling") else 0.0)
-            try:
-                L = cat.standard_key_length(hub - 0.008, key)
-            except ValueError:
-                continue
-            allow = ci_lo if ld[3] == "cast_iron" else sp_lo
-            # On the flywheel's shaft the incoming element sees the mean torque only.
-            t_key = sh.torque if (j == peak_from_shaft and d is designs[j - 1]) else T
-            c = st.key_check(t_key, d_seat, key.h, st.key_working_length(L, key.b, "A"), allow)
-            checks.append(replace(c, name_zh=f"平键 {key.label}×{L * 1e3:g}（{nm[0]}）",
-                                  name_en=f"Key {key.label}×{L * 1e3:g} ({nm[1]})"))
-        out.append(ShaftDesign(j, sh.speed_rpm, sh.power, T, d_min, d_j, d_seat, span, tuple(loads),
-                               tuple(where), res, bearing, pl, tuple(checks)))
+            return ev, (d_end, dj, ds), steps
+
+        ev, dims, loop_steps = design(ch)
+        advice = ()
+        if ch is not None:
+            free_ev, free_dims, _ = design(None)
+            advice = _advice(ch, ev, dims, free_ev, free_dims)
+        d_end, dj, ds = dims
+        res = replace(res, check=ev["bend"])
+        shoulder = st.standard_diameter(1.14 * ds, series_d) if ds * 1.14 <= series_d[-1] else ds * 1.14
+        checks = [st.shaft_diameter_check(min(d for d in (d_end, dj) if d is not None), sh.power, sh.speed_rpm,
+                                          a0, KEYWAY), ev["bend"]]
+        if ch is not None and not checks[0].passed:
+            fld = f"drive.shafts[{ch.index}].{'end_mm' if d_end is not None else 'journal_mm'}"
+            need = st.standard_diameter(d_min, series_d)
+            advice = advice + ((checks[0].name_en, fld, f"{fld} ≥ {_mmf(need)}", f"{fld} ≥ {_mmf(need)}"),)
+        if ev["life"] is not None:
+            checks.append(ev["life"])
+        if ev["static"] is not None:
+            checks.append(ev["static"])
+        checks += [k.check for k in ev["keys"]]
+        head, tail = _steps(sh, mat, a0, d_min, dims, shoulder, T, peak, peak_factor, lf, ev, span, dp)
+        steps = head + _loop_text(loop_steps) + tail
+        out.append(ShaftDesign(j, sh.speed_rpm, sh.power, T, d_min, dj, ds, span, tuple(loads),
+                               tuple(i["name"] for i in _load_order(info)), res, ev["bearing"], ev["pl"], tuple(checks),
+                               mat.key, a0, d_end, shoulder, (lf / peak_factor) if peak else 1.0,
+                               (life_res.FrA, life_res.FrB), tuple(ev["keys"]), tuple(steps), advice))
     return tuple(out)
+
+
+_KIND_TEXT = {"shaft_bending": ("弯扭合成强度", "bending–torsion"), "bearing_life": ("轴承寿命", "bearing life"),
+              "bearing_static": ("轴承静强度", "bearing statics"), "key_crushing": ("键的挤压", "key crushing"),
+              "none": ("无此内径的轴承", "no bearing of that bore")}
+
+
+def _kinds(ev) -> tuple[str, ...]:
+    """The kinds of check that fail (in a fixed order)."""
+    bad = {c.key for c in [ev["bend"], ev["life"], ev["static"], *(k.check for k in ev["keys"])]
+           if c is not None and not c.passed}
+    if ev["bearing"] is None:
+        bad.add("none")
+    return tuple(k for k in _KIND_TEXT if k in bad)
+
+
+def _loop_text(log) -> list[tuple[str, str]]:
+    """The upsizing steps, runs of the same section merged: from → to, the number of 5 mm /
+    standard steps and the checks that failed on the way."""
+    out, k = [], 0
+    while k < len(log):
+        kind = log[k][0]
+        j = k
+        while j + 1 < len(log) and log[j + 1][0] == kind:
+            j += 1
+        first, last = log[k], log[j]
+        kinds = [x for x in _KIND_TEXT if any(x in e[3] for e in log[k:j + 1])]
+        why_zh = "、".join(_KIND_TEXT[x][0] for x in kinds)
+        why_en = ", ".join(_KIND_TEXT[x][1] for x in kinds)
+        n = j - k + 1
+        if kind == "end":
+            out.append((f"外伸端加大：{_mmf(first[1])} → {_mmf(last[2])} mm（{n} 档标准尺寸；较小时未通过：{why_zh}）",
+                        f"overhung end enlarged: {_mmf(first[1])} → {_mmf(last[2])} mm ({n} standard sizes; "
+                        f"the smaller ones fail: {why_en})"))
+        else:
+            a, b = first[1], last[2]
+            out.append((f"轴颈/装配段加大：{_mmf(a[0])}/{_mmf(a[1])} → {_mmf(b[0])}/{_mmf(b[1])} mm（{n} 次，每次 5 mm；"
+                        f"较小时未通过：{why_zh}）",
+                        f"journal/seat enlarged: {_mmf(a[0])}/{_mmf(a[1])} → {_mmf(b[0])}/{_mmf(b[1])} mm ({n} steps of "
+                        f"5 mm; the smaller ones fail: {why_en})"))
+        k = j + 1
+    return out
+
+
+def _advice(ch, ev, dims, free_ev, free_dims):
+    """For each failing check of an overridden shaft: the field to change and the value the
+    design would take."""
+    out = []
+    here = f"drive.shafts[{ch.index}]"
+    fe, fj, fs = free_dims
+    for c in [ev["bend"], ev["life"], ev["static"], *(k.check for k in ev["keys"])]:
+        if c is None or c.passed:
+            continue
+        if c.key == "shaft_bending":
+            parts = [(f"{here}.{n}", v) for n, v, given in (("end_mm", fe, ch.end), ("journal_mm", fj, ch.journal),
+                                                              ("seat_mm", fs, ch.seat)) if given and v is not None]
+            fix_en = "; ".join(f"{f} ≥ {_mmf(v)}" for f, v in parts) or "a stronger material"
+            fix_zh = "；".join(f"{f} ≥ {_mmf(v)}" for f, v in parts) or "更好的材料"
+            field = parts[0][0] if parts else f"{here}.material"
+        elif c.key in ("bearing_life", "bearing_static"):
+            b = free_ev["bearing"]
+            field = f"{here}.bearing" if ch.bearing else f"{here}.journal_mm"
+            fix_en = (f"{field}: the design takes {b.designation}" if ch.bearing and b else
+                      f"{field} ≥ {_mmf(fj)}")
+            fix_zh = (f"{field}：设计选用 {b.designation}" if ch.bearing and b else f"{field} ≥ {_mmf(fj)}")
+        else:
+            field = f"{here}.key_length_mm" if ch.key_length else f"{here}.seat_mm"
+            fix_en = (f"remove {field} (the design takes the longest key the hub allows, or two keys)"
+                      if ch.key_length else f"{field} ≥ {_mmf(fs)}")
+            fix_zh = (f"删去 {field}（设计取轮毂允许的最长键或双键）" if ch.key_length else f"{field} ≥ {_mmf(fs)}")
+        out.append((c.name_en, field, fix_zh, fix_en))
+    return tuple(out)
+
+
+def _sig(x: float, digits: int) -> str:
+    """``digits`` significant digits in fixed-point notation (12807 → '12810', not 1.281e+04)."""
+    if x == 0 or x != x:
+        return "0"
+    e = math.floor(math.log10(abs(x)))
+    return f"{round(x, digits - 1 - e):.{max(digits - 1 - e, 0)}f}"
+
+
+def _steps(sh, mat, a0, d_min, dims, shoulder, T, peak, peak_factor, lf, ev, span, dp):
+    """The design steps of one shaft, each rule with its formula and numbers (zh, en)."""
+    d_end, dj, ds = dims
+    P, n = sh.power / 1e3, sh.speed_rpm
+    raw = a0 * (P / n) ** (1 / 3)
+    out = [(f"材料 {mat.name_zh}，$[\\sigma_{{-1b}}]$ = {mat.sigma_minus1b_allow / 1e6:g} MPa（表15-1）；"
+            f"$d_{{min}} = A_0\\sqrt[3]{{P/n}}(1 + 5\\%) = {a0:g}\\sqrt[3]{{{_sig(P, 4)}/{_sig(n, 4)}}} \\times 1.05 = "
+            f"{raw * 1.05:.2f}$ mm（表15-3，一个键槽加大 5%）",
+            f"material {mat.name_en}, $[\\sigma_{{-1b}}]$ = {mat.sigma_minus1b_allow / 1e6:g} MPa (table 15-1); "
+            f"$d_{{min}} = A_0\\sqrt[3]{{P/n}}(1 + 5\\%) = {a0:g}\\sqrt[3]{{{_sig(P, 4)}/{_sig(n, 4)}}} \\times 1.05 = "
+            f"{raw * 1.05:.2f}$ mm (table 15-3, +5 % for one keyway)")]
+    if peak:
+        out.append((f"飞轮之后的轴承受工作机的峰值转矩：强度计算用 $T = {_sig(peak_factor, 3)} \\times {_sig(sh.torque, 4)} = "
+                    f"{_sig(T, 4)}$ N·m（峰值/平均）；轴承寿命按疲劳取循环的当量载荷（转矩立方平均 = "
+                    f"{_sig(lf, 3)} × 平均），静强度取峰值",
+                    f"after the flywheel the shaft carries the machine's peak torque: the strength checks use "
+                    f"$T = {_sig(peak_factor, 3)} \\times {_sig(sh.torque, 4)} = {_sig(T, 4)}$ N·m (peak/mean); the bearing life, "
+                    f"a fatigue quantity, takes the cycle's equivalent load (cube-mean torque = {_sig(lf, 3)} × the "
+                    f"mean), the static strength the peak"))
+    else:
+        out.append((f"设计转矩 T = 9549 P/n = {_sig(T, 4)} N·m（轴承寿命用同一载荷 × $f_p$ = {FP:g}）",
+                    f"design torque T = 9549 P/n = {_sig(T, 4)} N·m (bearing life: the same load × $f_p$ = {FP:g})"))
+    head, out = out, []
+    lay_zh, lay_en = [], []
+    if d_end is not None:
+        lay_zh.append(f"外伸端 {_mmf(d_end)}（≥ $d_{{min}}$ 的标准值）")
+        lay_en.append(f"overhung end {_mmf(d_end)} (the standard size ≥ $d_{{min}}$)")
+    lay_zh += [f"轴颈 {_mmf(dj)}（轴承内径，5 的倍数）", f"装配段 {_mmf(ds)}（轴颈 + 5）",
+               f"轴环 {_mmf(shoulder)}（h ≈ 0.07d）"]
+    lay_en += [f"journals {_mmf(dj)} (bearing bore, a multiple of 5)", f"seat {_mmf(ds)} (journal + 5)",
+               f"collar {_mmf(shoulder)} (h ≈ 0.07 d)"]
+    out.append(("结果，各段直径（mm）：" + "，".join(lay_zh) + f"；支承跨距 {_mmf(span, 0)} mm",
+                "result, the sections (mm): " + ", ".join(lay_en) + f"; bearing span {_mmf(span, 0)} mm"))
+    b = ev["bearing"]
+    if b is not None:
+        conf_zh = "" if cat.bearing_confirmed(b.designation) else "（额定载荷按手册表抄录，未与公开副本核对）"
+        conf_en = "" if cat.bearing_confirmed(b.designation) else " (rating transcribed from the handbook table, not confirmed against a public copy)"
+        out.append((f"轴承：按轴颈选最轻系列中寿命 ≥ {dp.service_hours:g} h 者 → {b.designation}，$C_r$ = "
+                    f"{b.Cr / 1e3:g} kN，$C_{{0r}}$ = {b.C0r / 1e3:g} kN{conf_zh}",
+                    f"bearings: at the journal, the lightest series whose life reaches {dp.service_hours:g} h → "
+                    f"{b.designation}, $C_r$ = {b.Cr / 1e3:g} kN, $C_{{0r}}$ = {b.C0r / 1e3:g} kN{conf_en}"))
+    if ev["keys"]:
+        zh = "；".join(f"{k.names[0]}：d = {_mmf(k.d)}，键 {_mmf(k.b)}×{_mmf(k.h)}，轮毂 {_mmf(k.hub, 0)}，"
+                      f"L = {_mmf(k.L)}{'，双键 180°' if k.count == 2 else ''}" for k in ev["keys"])
+        en = "; ".join(f"{k.names[1]}: d = {_mmf(k.d)}, key {_mmf(k.b)}×{_mmf(k.h)}, hub {_mmf(k.hub, 0)}, "
+                       f"L = {_mmf(k.L)}{', two keys at 180°' if k.count == 2 else ''}" for k in ev["keys"])
+        out.append(("平键（GB/T 1096，A 型，L ≤ 轮毂 − 8 mm，不足时加长轮毂至 1.5d，再用双键）：" + zh,
+                    "keys (GB/T 1096, form A, L ≤ hub − 8 mm; a longer hub up to 1.5 d, then two keys "
+                    "when one fails): " + en))
+    return head, out

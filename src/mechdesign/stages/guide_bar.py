@@ -126,8 +126,10 @@ def _drive(r: dict):
     peak = float(np.max(np.abs(mb)) / mean) if mean > 0 else float("inf")  # inf: no load
     shafts = len(p.drive.stages)          # the crank shaft's index
     flywheel_shaft = shafts - 1 if p.flywheel_shaft == "pinion" else shafts
+    # the bearing life's equivalent load: the cycle's cube-mean torque (see design_drive)
+    life = float(np.mean(np.abs(mb) ** 3) ** (1 / 3) / mean) if mean > 0 else None
     result = design_drive(p.drive, fl.mean_power, p.crank_speed_rpm, "mechanism",
-                          peak, flywheel_shaft if flywheel_shaft < shafts else None)
+                          peak, flywheel_shaft if flywheel_shaft < shafts else None, life)
     # The last stage is gear_pair, whose undercut the gear stage reports with its own fields.
     last = f"drive.stages[{shafts - 1}]"
     return replace(result, warnings=tuple(w for w in result.warnings

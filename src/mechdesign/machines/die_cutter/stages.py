@@ -397,8 +397,11 @@ def _drive(r: dict):
     peak = float(f.peak_torque / f.mean_torque)
     shafts = len(p.drive.stages)
     j = p.flywheel_shaft
+    # the bearing life's equivalent load after the flywheel: the cycle's cube-mean torque
+    mb = f.balancing_torque[:r["press"].grid_size]
+    life = float(np.mean(np.abs(mb) ** 3) ** (1 / 3) / f.mean_torque)
     return design_drive(p.drive, f.mean_power, p.shaft_rpm, "mechanism", peak,
-                        j if j < shafts else None)
+                        j if j < shafts else None, life)
 
 
 @dataclass(frozen=True)

@@ -559,8 +559,11 @@ def _drive(r: dict):
     flywheel, so every stage carries the peak of M_b: the strength checks use the
     torques scaled by peak/mean from the first shaft on."""
     p, c = r["params"], r["pusher_check"]
+    # the bearing life's equivalent load: the cycle's cube-mean torque (see design_drive)
+    mb = r["linkage_forces"].balancing_torque[:r["linkage"].grid_size]
+    life = float(np.mean(np.abs(mb) ** 3) ** (1 / 3) / c.mean_torque)
     return design_drive(p.drive, c.mean_power, p.pusher.crank_speed_rpm, "mechanism",
-                        c.peak_factor, 0)
+                        c.peak_factor, 0, life)
 
 
 def stages(params: FurnaceParams) -> list[Stage]:
