@@ -115,3 +115,52 @@ def test_dxf_of_a_100000_point_sheet_in_bulk(tmp_path):
     check_dxf_tables(doc)
     text = next(iter(doc.modelspace().query("TEXT")))
     assert "ω" in text.dxf.text and "机构" in text.dxf.text
+
+
+# ------------------------------------------------------------------ the process's end
+
+def _run_main(tmp_path, env_extra: dict, args: list[str]):
+    """``mechdesign.__main__.main`` in a fresh interpreter with an atexit handler that
+    writes a marker file: the handler runs only with the ordinary interpreter shutdown."""
+    import os
+    import subprocess
+    import sys
+
+    marker = tmp_path / "atexit-ran"
+    code = ("import atexit, pathlib, sys\n"
+            f"atexit.register(lambda: pathlib.Path({str(marker)!r}).write_text('x'))\n"
+            f"sys.argv = ['mechdesign'] + {args!r}\n"
+            "from mechdesign.__main__ import main\nmain()\n")
+    env = {k: v for k, v in os.environ.items() if k != "MECHDESIGN_CLEAN_EXIT"}
+    env.update(env_extra)
+    proc = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, env=env)
+    return proc, marker.exists()
+
+
+def test_cli_process_ends_without_interpreter_shutdown(tmp_path):
+    from pathlib import Path
+
+    brief = str(Path(__file__).resolve().parents[1] / "designs" / "shaper.yaml")
+    proc, ran = _run_main(tmp_path, {}, ["check", brief])
+    assert proc.returncode == 0 and "ok:" in proc.stdout      # output flushed before leaving
+    assert not ran                                            # os._exit: no shutdown
+    proc, ran = _run_main(tmp_path, {}, ["check", str(tmp_path / "missing.yaml")])
+    assert proc.returncode == 2 and "missing.yaml" in proc.stdout + proc.stderr
+    proc, ran = _run_main(tmp_path, {"MECHDESIGN_CLEAN_EXIT": "1"}, ["check", brief])
+    assert proc.returncode == 0 and ran                       # the ordinary shutdown on request
+
+
+def test_typst_is_given_the_shipped_fonts_only():
+    from mechdesign.render.fonts import _package_fonts
+    from mechdesign.render.pdf import typst_fonts
+
+    fonts = typst_fonts()
+    assert typst_fonts() is fonts                             # found once per process
+    families = set(fonts.families())
+    if _package_fonts():               # (else the CJK fonts' system folders are given)
+        shipped = {"New Computer Modern", "New Computer Modern Math", "DejaVu Sans Mono",
+                   "Libertinus Serif"}              # typst's embedded fonts
+        from mechdesign.render.fonts import cjk_families
+
+        shipped |= set(cjk_families().values())
+        assert families <= shipped | {"Noto Sans SC", "Noto Serif SC"}, families - shipped
