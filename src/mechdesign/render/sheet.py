@@ -257,7 +257,7 @@ def thin(points, tolerance: float = CHORD_TOLERANCE) -> np.ndarray:
     original polyline (the distance to a segment is convex along a straight piece)."""
     z = np.asarray(points, dtype=complex).ravel()
     n = len(z)
-    if n <= 2:
+    if n <= 2 or not np.all(np.isfinite(z)):       # (a gap or an undefined point: as given)
         return z
     x, y = z.real, z.imag
     fixed = sorted({0, n - 1, int(np.argmin(x)), int(np.argmax(x)), int(np.argmin(y)),
