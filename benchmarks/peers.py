@@ -685,9 +685,11 @@ def alone(label, fourbar, name, n, rounds):
 
 def _alone_child(linkage, name, n, rounds):
     fourbar = linkage == "four-bar"
-    solvers = [ours_solver(fourbar), hand_solver(fourbar), *pylinkage_solvers(fourbar),
-               mechanism_solver(fourbar), kinepy_solver(fourbar)]
-    s = next(x for x in solvers if x.name == name and x.available)
+    build = {OURS: ours_solver, PLAIN: hand_solver, "kinepy": kinepy_solver,
+             "mechanism (fsolve)": mechanism_solver,
+             "pylinkage (numba)": lambda f: pylinkage_solvers(f)[0],
+             "pylinkage (pure Python)": lambda f: pylinkage_solvers(f)[1]}[name]
+    s = build(fourbar)                   # only this solver's library is imported
     phi = crank_angles(n)
     got = interleaved([(name, s.full)], phi, rounds)
     print(json.dumps(spread(got[name][0])))
