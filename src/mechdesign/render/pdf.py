@@ -315,15 +315,15 @@ def _mend_table(match: re.Match) -> str:
 
 @lru_cache(maxsize=1)
 def typst_fonts():
-    """The fonts typst is given, found once per process: the shipped CJK fonts (render/fonts.py)
-    and typst's embedded ones (New Computer Modern, its math font, DejaVu Sans Mono), never
-    the system's (typst would otherwise scan every system font directory on each of a run's
-    ~7 compilations, ~40 ms each). Only when no CJK font is found at all are the system
-    fonts searched, as before."""
+    """The fonts typst is given, found once per process: the shipped CJK fonts (render/fonts.py),
+    typst's embedded ones (New Computer Modern, its math font, DejaVu Sans Mono) and the
+    system's, scanned once here instead of on each of a run's ~7 compilations (~40 ms
+    each). The system fonts stay for the glyphs the shipped ones lack (an emoji in a
+    student's name: tests/test_user_text.py renders user text literally)."""
     import typst
 
     dirs = [str(d) for d in font_dirs()]
-    return typst.Fonts(include_system_fonts=not dirs, include_embedded_fonts=True,
+    return typst.Fonts(include_system_fonts=True, include_embedded_fonts=True,
                        font_paths=dirs)
 
 
