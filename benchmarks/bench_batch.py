@@ -1,19 +1,23 @@
 """Batch throughput: `mechdesign batch` against the same briefs run one by one.
 
-Run:  python benchmarks/bench_batch.py [--briefs 40] [--jobs 2] [--format md,pdf]
+Run:  python benchmarks/bench_batch.py [--briefs 40] [--jobs 2] [--format md,pdf] [--rounds 2]
 
 Target (issue 7, 2-core machine): 40 briefs through `mechdesign batch --jobs 2` in at
 most 0.6 x the time of 40 sequential `mechdesign run` commands (each a new process, as a
 teacher's shell loop would do). The 40 briefs are the shipped examples and their data
 groups, repeated in order until there are 40, each written as its own brief file (a
-group applied as `default`), so both sides do exactly the same work. Prints the figures;
-it is not a test and never fails on time.
+group applied as `default`), so both sides do exactly the same work. The two are alternated
+(round 1: sequential then batch, round 2: batch then sequential, …) so a change in the
+shared machine's load does not favour one; each is timed to the exit of its last process.
+Prints every round, the medians and the load average; it is not a test and never fails on
+time.
 """
 from __future__ import annotations
 
 import argparse
 import os
 import shutil
+import statistics
 import subprocess
 import sys
 import tempfile
@@ -51,6 +55,7 @@ def main() -> int:
     ap.add_argument("--briefs", type=int, default=40)
     ap.add_argument("--jobs", type=int, default=2)
     ap.add_argument("--format", default="md,pdf")
+    ap.add_argument("--rounds", type=int, default=2, help="alternated rounds")
     args = ap.parse_args()
     env = dict(os.environ, PYTHONWARNINGS="ignore")
     with tempfile.TemporaryDirectory(prefix="mechdesign-bench-") as tmp:
@@ -60,31 +65,42 @@ def main() -> int:
         print(f"{len(briefs)} briefs, formats {args.format}, {os.cpu_count()} CPUs "
               f"(usable: {len(os.sched_getaffinity(0))})")
 
-        start = time.perf_counter()
-        per_run = []
-        for brief in briefs:
-            t0 = time.perf_counter()
-            subprocess.run([sys.executable, "-m", "mechdesign", "run", str(brief), "-o",
-                            str(tmp / "seq" / brief.stem), "-f", args.format],
-                           check=True, capture_output=True, env=env)
-            per_run.append(time.perf_counter() - t0)
-        sequential = time.perf_counter() - start
-        print(f"sequential: {len(briefs)} x `mechdesign run`: {sequential:7.1f} s "
-              f"(mean {sequential / len(briefs):.2f} s, slowest {max(per_run):.2f} s)")
+        def sequential(out: Path) -> float:
+            start = time.perf_counter()
+            for brief in briefs:
+                subprocess.run([sys.executable, "-m", "mechdesign", "run", str(brief), "-o",
+                                str(out / brief.stem), "-f", args.format],
+                               check=True, capture_output=True, env=env)
+            return time.perf_counter() - start
 
-        start = time.perf_counter()
-        done = subprocess.run([sys.executable, "-m", "mechdesign", "batch", str(tmp / "briefs"),
-                               "--jobs", str(args.jobs), "-o", str(tmp / "batch"), "-f", args.format],
-                              capture_output=True, text=True, env=env)
-        batch = time.perf_counter() - start
-        if done.returncode != 0:
-            print(done.stderr[-2000:])
-            return 1
-        ratio = batch / sequential
-        print(f"batch --jobs {args.jobs}:          {batch:7.1f} s")
-        print(f"ratio batch / sequential: {ratio:.2f} (target <= 0.60: "
+        def batch(out: Path) -> float:
+            start = time.perf_counter()
+            done = subprocess.run([sys.executable, "-m", "mechdesign", "batch",
+                                   str(tmp / "briefs"), "--jobs", str(args.jobs), "-o", str(out),
+                                   "-f", args.format], capture_output=True, text=True, env=env)
+            if done.returncode != 0:
+                raise SystemExit(done.stderr[-2000:])
+            return time.perf_counter() - start
+
+        seq, bat = [], []
+        for r in range(args.rounds):
+            order = [("sequential", sequential, seq), ("batch", batch, bat)]
+            if r % 2:
+                order.reverse()
+            for name, fn, into in order:
+                into.append(fn(tmp / f"{name}-{r}"))
+                shutil.rmtree(tmp / f"{name}-{r}", ignore_errors=True)
+            print(f"round {r + 1}: sequential {seq[-1]:6.1f} s, batch --jobs {args.jobs} "
+                  f"{bat[-1]:6.1f} s, ratio {bat[-1] / seq[-1]:.2f} "
+                  f"(load average {os.getloadavg()[0]:.2f})", flush=True)
+        ratios = [b / q for b, q in zip(bat, seq)]
+        ratio = statistics.median(ratios)
+        print(f"sequential: median {statistics.median(seq):.1f} s "
+              f"({statistics.median(seq) / len(briefs):.2f} s a brief); batch: median "
+              f"{statistics.median(bat):.1f} s")
+        print(f"ratio batch / sequential: median {ratio:.2f} (rounds: "
+              f"{', '.join(f'{x:.2f}' for x in ratios)}; target <= 0.60: "
               f"{'met' if ratio <= 0.6 else 'MISSED'})")
-        shutil.rmtree(tmp / "seq", ignore_errors=True)
     return 0
 
 

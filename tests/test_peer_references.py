@@ -145,5 +145,29 @@ def test_script_runs_without_peers(peers, monkeypatch, capsys):
     out = capsys.readouterr().out
     assert "| four-bar | pylinkage (numba) | 24 |" in out
     assert out.count("not installed") >= 6
-    hand_rows = [ln for ln in out.splitlines() if "agreement hand closed form" in ln]
+    hand_rows = [ln for ln in out.splitlines() if "agreement plain closed form" in ln]
     assert len(hand_rows) == 2 and all("PASS" in ln for ln in hand_rows)
+    # every solver measured also alone in a fresh process, with its spread
+    assert "pos+vel+acc alone [ms]" in out and "interleaved" in out
+
+
+def test_plain_closed_forms_match_freudenstein_and_ours(peers):
+    """The timing reference (real arithmetic, circle intersection) against the two other
+    formulations: Freudenstein's quadratic with complex exponentials, and our engine."""
+    p = peers.FOURBAR
+    th3, th4, w3, w4, al3, al4, cx, cy, vx, vy, ax, ay = peers.fourbar_plain(PHI, **p)
+    ref = peers.fourbar_closed_form(PHI, **p)
+    ang = lambda a, b: np.max(np.abs(np.angle(np.exp(1j * (a - b)))))   # noqa: E731
+    assert ang(th3, ref["th3"]) < EXACT and ang(th4, ref["th4"]) < EXACT
+    assert rel(ref["C"], cx + 1j * cy) < EXACT
+    assert rel(ref["vC"], vx + 1j * vy) < EXACT and rel(ref["aC"], ax + 1j * ay) < EXACT
+    assert rel(ref["w3"], w3) < EXACT and rel(ref["al4"], al4) < EXACT
+    mo = peers.ours_fourbar().solve(PHI)
+    assert rel(mo.points["C"].acc, ax + 1j * ay) < EXACT
+    t3, t4, px, py = peers.fourbar_plain_positions(PHI, **p)
+    assert rel(ref["C"], px + 1j * py) < EXACT and ang(t4, ref["th4"]) < EXACT
+    s = peers.SLIDER
+    th3, w3, al3, x, v, acc = peers.slider_plain(PHI, **s)
+    sref = peers.slider_closed_form(PHI, **s)
+    assert ang(th3, sref["th3"]) < EXACT and rel(sref["C"].real, x) < EXACT
+    assert rel(sref["vC"].real, v) < EXACT and rel(sref["aC"].real, acc) < EXACT

@@ -12,6 +12,7 @@ import pytest
 from typer.testing import CliRunner
 
 from mechdesign.cli import app
+from test_sheet_dxf import check_dxf_tables
 
 ezdxf = pytest.importorskip("ezdxf")
 
@@ -68,6 +69,7 @@ def test_sheets_for_each_example_brief(name, tmp_path):
         need = LAYERS if stem.split("_")[0] in ("analysis", "cam", "gear") else {"OUTLINE", "TEXT", "FRAME"}
         assert need <= used, (stem, need - used)
         assert doc.units == 4                                     # millimetres
+        check_dxf_tables(doc)          # extents ⊇ every entity, only the styles used
         kind = stem.split("_")[0]
         preview = out / "figures" / f"sheet_{kind}.png"
         assert preview.exists() and f"figures/sheet_{kind}.png" in md

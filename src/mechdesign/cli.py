@@ -180,6 +180,8 @@ def _step(what: str, lang: str) -> str:
     if what.startswith("sheet "):
         head, _, name = what.partition(": ")
         return f"图纸 {head[6:]}：{_SHEETS_ZH.get(name, name)}"
+    if what.startswith("figures: "):            # a long figures step: the figure at hand
+        return f"插图：{what[9:]}"
     return _STEPS_ZH.get(what, what)
 
 

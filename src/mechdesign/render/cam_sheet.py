@@ -340,8 +340,8 @@ def _profile(sheet: Sheet, c, g: _ProfileGeometry, divs, n: float, box, lab):
         view.circle(0, g.a, "CENTER")
         view.line(g.a - 10j * n, g.a + 10j * n, "CENTER")
     if g.kind == "roller":
-        view.polyline(g.pitch, "CENTER", closed=True)
-    view.polyline(g.actual, "OUTLINE", closed=True)
+        view.polyline(g.pitch, "CENTER", closed=True, tolerance=None)     # every point: the
+    view.polyline(g.actual, "OUTLINE", closed=True, tolerance=None)       # cam's geometry
 
     # -- division labels 0′, 1′, …; 0′ beside the follower, which stands on its own ray
     gap_c, _ = _largest_gap([np.angle(z) for z in label_pos])

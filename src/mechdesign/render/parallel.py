@@ -64,20 +64,25 @@ def can_fork() -> bool:
             and os.environ.get("MECHDESIGN_SERIAL", "") not in ("1", "true", "yes"))
 
 
+_on_save: Callable[[str], None] | None = None     # told each figure's name (progress)
+
+
 @contextmanager
-def background_saves(enabled: bool = True):
+def background_saves(enabled: bool = True, on_save: Callable[[str], None] | None = None):
     """Within the block, :func:`save` may run in a child process, or a little later; on
-    leaving, every save has finished (or its error is raised)."""
-    global _enabled
-    previous = _enabled
+    leaving, every save has finished (or its error is raised). ``on_save(label)`` is called
+    as each figure is handed over (for progress lines)."""
+    global _enabled, _on_save
+    previous, previous_hook = _enabled, _on_save
     _enabled = bool(enabled) and can_fork()
+    _on_save = on_save
     try:
         yield
         drain()
     finally:
         _kill()
         _held.clear()
-        _enabled = previous
+        _enabled, _on_save = previous, previous_hook
         if gc.get_freeze_count():
             gc.unfreeze()
 
@@ -90,6 +95,8 @@ def save(action: Callable[[], None], label: str) -> None:
     back the newest figure and, when the child is busy, saves the one it held before, so
     the last figure of a report is written while the Markdown is made and pandoc runs
     (:func:`pump`, :func:`drain`), not before."""
+    if _on_save is not None:
+        _on_save(label)
     if not _enabled:
         action()
         return

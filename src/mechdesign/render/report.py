@@ -8,6 +8,7 @@ earlier report stays as it was).
 from __future__ import annotations
 
 import shutil
+import time
 from importlib import resources
 from pathlib import Path
 from typing import Callable
@@ -83,6 +84,9 @@ def pdf_metadata(meta, lang: str, group: str | None = None) -> dict:
     return data
 
 
+PROGRESS_EVERY = 1.5     # [s] the longest a rendering step goes without a progress line
+
+
 def write_report(out_dir: Path, *, machine: str, lang: str, formats: tuple[str, ...],
                  make_figures: Callable[[Path], dict], make_context: Callable[[dict], dict],
                  document: dict, meta, templates: Path | None = None,
@@ -102,7 +106,19 @@ def write_report(out_dir: Path, *, machine: str, lang: str, formats: tuple[str, 
     is drawn (:mod:`.parallel`: a single run on a machine of two cores or more);
     ``program`` ({stages: titles of the stages that ran, module: the stages module}) adds
     the appendix with the analysis program's flow chart and listing (:mod:`.summary`)."""
-    say = progress or (lambda _msg: None)
+    told = [time.monotonic()]
+
+    def say(msg: str) -> None:
+        told[0] = time.monotonic()
+        if progress is not None:
+            progress(msg)
+
+    def figure_drawn(label: str) -> None:
+        # a step that runs long (the figures of a large run) still shows progress: a line
+        # naming the figure at hand once PROGRESS_EVERY seconds have passed without one
+        if time.monotonic() - told[0] >= PROGRESS_EVERY:
+            say(f"figures: {label}")
+
     tdir = template_dir(templates)
     out_dir = Path(out_dir)
     staging = make_staging(out_dir)
@@ -116,7 +132,7 @@ def write_report(out_dir: Path, *, machine: str, lang: str, formats: tuple[str, 
         # busy while the other waits.
         pending = None
         try:
-            with background_saves(parallel):
+            with background_saves(parallel, on_save=figure_drawn):
                 collect_sheets = (make_sheets(staging, fig_dir) if make_sheets is not None
                                   else (lambda: []))
                 say("figures")

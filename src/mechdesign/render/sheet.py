@@ -51,6 +51,9 @@ SIZES = {"A0": (1189.0, 841.0), "A1": (841.0, 594.0), "A2": (594.0, 420.0),
 MARGIN_C = {"A0": 10.0, "A1": 10.0, "A2": 10.0, "A3": 5.0, "A4": 5.0}
 MARGIN_A = 25.0
 THIN = 0.25
+# Chord error allowed when a polyline is thinned to what paper shows [mm]: a tenth of the
+# thin line width and below one dot of a 1200 dpi printer (0.021 mm).
+CHORD_TOLERANCE = 0.02
 TEXT_HEIGHTS = (2.5, 3.5, 5.0, 7.0, 10.0)
 
 
@@ -153,8 +156,14 @@ class Sheet:
     def line(self, p0, p1, layer="OUTLINE", weight=None):
         self.add(Line(complex(p0), complex(p1), layer, weight))
 
-    def polyline(self, points, layer="OUTLINE", closed=False, weight=None):
-        pts = tuple(complex(p) for p in np.asarray(points).ravel())
+    def polyline(self, points, layer="OUTLINE", closed=False, weight=None,
+                 tolerance: float | None = CHORD_TOLERANCE):
+        """A polyline through ``points``, thinned to ``tolerance`` [paper mm] (:func:`thin`);
+        ``tolerance=None`` keeps every point (a cam profile, which a CAM program reads)."""
+        pts = np.asarray(points, dtype=complex).ravel()
+        if tolerance is not None:
+            pts = thin(pts, tolerance)
+        pts = tuple(complex(p) for p in pts)
         if len(pts) >= 2:
             self.add(Polyline(pts, layer, closed, weight))
 
@@ -212,8 +221,9 @@ class View:
     def line(self, z0, z1, layer="OUTLINE", weight=None):
         self.sheet.line(self.p(z0), self.p(z1), layer, weight)
 
-    def polyline(self, zs, layer="OUTLINE", closed=False, weight=None):
-        self.sheet.polyline(self.p(zs), layer, closed, weight)
+    def polyline(self, zs, layer="OUTLINE", closed=False, weight=None,
+                 tolerance: float | None = CHORD_TOLERANCE):
+        self.sheet.polyline(self.p(zs), layer, closed, weight, tolerance)
 
     def circle(self, z, r, layer="OUTLINE", weight=None):
         self.sheet.circle(self.p(z), r * self.scale, layer, weight)
@@ -236,6 +246,46 @@ class View:
         """Aligned dimension in model units; ``offset`` in paper mm; writes the true length."""
         m = abs(complex(z1) - complex(z0)) if measurement is None else measurement
         self.sheet.dimension(self.p(z0), self.p(z1), offset, m, text, kind, height)
+
+
+def thin(points, tolerance: float = CHORD_TOLERANCE) -> np.ndarray:
+    """The points of a polyline that a sheet needs: a subset whose polyline stays within
+    ``tolerance`` (paper mm) of every given point (Ramer–Douglas–Peucker on each stretch
+    between the kept extremes), keeping both ends and the points of least and greatest x
+    and y exactly, so a curve's peaks are drawn where they are. Distances are to the
+    kept *segment* (not its line), so the error bound holds for every point of the
+    original polyline (the distance to a segment is convex along a straight piece)."""
+    z = np.asarray(points, dtype=complex).ravel()
+    n = len(z)
+    if n <= 2 or not np.all(np.isfinite(z)):       # (a gap or an undefined point: as given)
+        return z
+    x, y = z.real, z.imag
+    fixed = sorted({0, n - 1, int(np.argmin(x)), int(np.argmax(x)), int(np.argmin(y)),
+                    int(np.argmax(y))})
+    keep = np.zeros(n, dtype=bool)
+    keep[fixed] = True
+    stack = list(zip(fixed[:-1], fixed[1:]))
+    while stack:
+        i, j = stack.pop()
+        if j - i < 2:
+            continue
+        a, b = z[i], z[j]
+        inner = z[i + 1:j]
+        ab = b - a
+        len2 = ab.real * ab.real + ab.imag * ab.imag
+        if len2 > 0.0:
+            d = inner - a
+            t = np.clip((d.real * ab.real + d.imag * ab.imag) / len2, 0.0, 1.0)
+            dist = np.abs(d - t * ab)
+        else:
+            dist = np.abs(inner - a)
+        k = int(np.argmax(dist))
+        if dist[k] > tolerance:
+            m = i + 1 + k
+            keep[m] = True
+            stack.append((i, m))
+            stack.append((m, j))
+    return z[keep]
 
 
 # -- helpers shared by every sheet --------------------------------------------------------

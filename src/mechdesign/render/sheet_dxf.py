@@ -1,7 +1,11 @@
 """Write a :class:`~.sheet.Sheet` as DXF with ezdxf: paper millimetres 1:1 on named layers
 (line weight, line type and colour set per layer, so the drawing prints by layer in
 AutoCAD or CAXA); dimensions are real DIMENSION entities that measure the true (model)
-length through DIMLFAC, texts use the GB fonts gbenor.shx + gbcbig.shx."""
+length through DIMLFAC. Texts use one style, STANDARD, set to the shipped Noto Sans SC
+(render/fonts.py), which has the Chinese, Greek and symbol glyphs the drawings use; the
+other text and dimension styles ezdxf's setup adds are removed, and $EXTMIN/$EXTMAX hold
+the drawing's extents so a viewer opens on the drawing. Polylines are thinned to the
+paper's resolution when they are drawn (sheet.thin) and written in bulk."""
 from __future__ import annotations
 
 from pathlib import Path
@@ -12,7 +16,8 @@ from ..fileio import atomic_path
 from .fmt import dxf_text, plain_line
 from .sheet import LAYERS, Arc, Circle, Dimension, Fill, Line, Polyline, Sheet, Text
 
-TEXT_STYLE = "GB"
+TEXT_STYLE = "Standard"          # the one text style (DXF requires it to exist anyway)
+TEXT_FONT = "NotoSansSC-Regular.otf", "Noto Sans SC"    # file and family (render/fonts.py)
 _ALIGN = {("left", "bottom"): "BOTTOM_LEFT", ("center", "bottom"): "BOTTOM_CENTER",
           ("right", "bottom"): "BOTTOM_RIGHT", ("left", "middle"): "MIDDLE_LEFT",
           ("center", "middle"): "MIDDLE_CENTER", ("right", "middle"): "MIDDLE_RIGHT",
@@ -38,15 +43,18 @@ def build_document(sheet: Sheet, title: str = ""):
     doc.header["$LIMMAX"] = (sheet.width, sheet.height)
     if title:
         doc.header["$PROJECTNAME"] = plain_line(title)[:255]
-    style = doc.styles.add(TEXT_STYLE, font="gbenor.shx")
-    style.dxf.bigfont = "gbcbig.shx"
+    style = doc.styles.get(TEXT_STYLE)
+    font_file, family = _text_font()
+    style.dxf.font = font_file
+    style.dxf.discard("bigfont")
     style.dxf.width = 0.7
+    style.set_extended_font_data(family)
     for lay in LAYERS.values():
         layer = doc.layers.add(lay.name, color=lay.color, linetype=lay.linetype,
                                lineweight=_lineweight(lay.weight))
         layer.description = lay.description
-    dimstyle = doc.dimstyles.get("EZDXF")
-    dimstyle.dxf.dimtxsty = TEXT_STYLE
+    for name in USED_DIMSTYLES:              # before any dimension is rendered
+        doc.dimstyles.get(name).dxf.dimtxsty = TEXT_STYLE
     msp = doc.modelspace()
 
     def attribs(e):
@@ -60,8 +68,11 @@ def build_document(sheet: Sheet, title: str = ""):
         if isinstance(e, Line):
             msp.add_line((e.p0.real, e.p0.imag), (e.p1.real, e.p1.imag), dxfattribs=attribs(e))
         elif isinstance(e, Polyline):
-            msp.add_lwpolyline([(p.real, p.imag) for p in e.points], close=e.closed,
-                               dxfattribs=attribs(e))
+            # in bulk: ezdxf's add_lwpolyline/set_points append vertex by vertex, copying
+            # the whole array each time (quadratic in the number of points)
+            pl = msp.add_lwpolyline([], close=e.closed, dxfattribs=attribs(e))
+            z = np.asarray(e.points, dtype=complex)
+            pl.lwpoints.set(np.column_stack((z.real, z.imag, np.zeros((len(z), 3)))))
         elif isinstance(e, Circle):
             msp.add_circle((e.center.real, e.center.imag), e.radius, dxfattribs=attribs(e))
         elif isinstance(e, Arc):
@@ -78,7 +89,50 @@ def build_document(sheet: Sheet, title: str = ""):
                             align=TextEntityAlignment[_ALIGN[(e.halign, e.valign)]])
         elif isinstance(e, Dimension):
             _dimension(msp, e)
+    _keep_used_styles(doc)
+    _set_extents(doc)
     return doc
+
+
+def _text_font() -> tuple[str, str]:
+    """File name and family of the shipped CJK sans font (Noto Sans SC)."""
+    try:
+        from .fonts import _font_files, cjk_families
+
+        path = _font_files().get("sans")
+        if path is not None:
+            return path.name, cjk_families()["sans"]
+    except Exception:        # no font found: name the shipped one anyway
+        pass
+    return TEXT_FONT
+
+
+USED_DIMSTYLES = ("Standard", "EZDXF", "EZ_RADIUS_INSIDE")
+
+
+def _keep_used_styles(doc) -> None:
+    """Remove the text and dimension styles ezdxf's setup adds that the drawing does not
+    use; the dimension styles kept write their texts in :data:`TEXT_STYLE`."""
+    for name in [d.dxf.name for d in doc.dimstyles]:
+        if name not in USED_DIMSTYLES:
+            doc.dimstyles.remove(name)
+    # (the line types ezdxf's setup adds are all simple ones: none refers to a text style)
+    for name in [s.dxf.name for s in doc.styles]:
+        if name.lower() != TEXT_STYLE.lower():
+            doc.styles.remove(name)
+
+
+def _set_extents(doc) -> None:
+    """$EXTMIN/$EXTMAX: the bounding box of every model-space entity (dimension blocks
+    included), so a viewer's "zoom extents" and first view show the drawing."""
+    from ezdxf import bbox
+
+    msp = doc.modelspace()
+    box = bbox.extents(msp, fast=False)
+    if box.has_data:
+        lo, hi = (box.extmin.x, box.extmin.y, 0.0), (box.extmax.x, box.extmax.y, 0.0)
+        msp.reset_extents(lo, hi)        # saving copies the layout's extents to the header
+        doc.header["$EXTMIN"], doc.header["$EXTMAX"] = lo, hi
 
 
 def _xy(z: complex) -> tuple[float, float]:

@@ -19,7 +19,7 @@ from pathlib import Path
 
 import numpy as np
 
-from .fonts import cjk_families, font_dirs
+from .fonts import cjk_families
 from .sheet import LAYERS, Arc, Circle, Dimension, Fill, Line, Polyline, Sheet, Text, format_number
 
 # Dash patterns in paper mm (GB/T 17450: long dash 15–20, gap 3, dot ≤ 0.5); as the
@@ -214,10 +214,10 @@ def write_sheets(jobs) -> None:
 
     from .parallel import note_typst_used
     from ..fileio import write_bytes
-    from .pdf import PdfRenderError, _typst_message, source_timestamp
+    from .pdf import PdfRenderError, _typst_message, source_timestamp, typst_fonts
 
     note_typst_used()
-    fonts = [str(d) for d in font_dirs()]
+    fonts = typst_fonts()          # the shipped fonts only, found once
     for sheet, pdf, png, width in jobs:
         if pdf is None and png is None:
             continue
