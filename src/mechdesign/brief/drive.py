@@ -20,7 +20,7 @@ StageType = Literal["coupling", "belt", "chain", "spur", "helical", "worm"]
 
 _FIELDS_BY_TYPE = {
     "coupling": set(),
-    "belt": {"ratio", "d1_mm", "d2_mm", "slip"},
+    "belt": {"ratio", "d1_mm", "d2_mm", "slip", "section", "center_distance_mm", "application_factor_KA"},
     "chain": {"ratio", "z1", "z2"},
     "spur": {"ratio", "z1", "z2", "module_mm", "open", "face_width_factor", "pinion_material",
              "gear_material", "x1", "x2", "span_mm"},
@@ -30,7 +30,7 @@ _FIELDS_BY_TYPE = {
 }
 _OPTIONAL = ("ratio", "d1_mm", "d2_mm", "slip", "z1", "z2", "module_mm", "open", "face_width_factor",
              "pinion_material", "gear_material", "x1", "x2", "helix_angle_deg", "q",
-             "wheel_material", "span_mm")
+             "wheel_material", "span_mm", "section", "center_distance_mm", "application_factor_KA")
 
 
 def check_material(value: str | None, which: str) -> str | None:
@@ -78,6 +78,14 @@ class DriveStage(StrictModel):
     d1_mm: Optional[float] = Field(None, gt=20, le=2000, description="Small pulley datum diameter d1 [mm] (default 100)")
     d2_mm: Optional[float] = Field(None, gt=20, le=5000, description="Large pulley datum diameter d2 [mm]")
     slip: Optional[float] = Field(None, ge=0, le=0.05, description="Belt elastic slip ε (default 0.015)")
+    section: Optional[Literal["Z", "A", "B"]] = Field(None, description=(
+        "V-belt section (带型), default from the selection chart (濮良贵 fig. 8-11) by P_ca and n1"))
+    center_distance_mm: Optional[float] = Field(None, gt=50, le=5000, description=(
+        "V-belt initial centre distance a0 [mm] (default d1 + d2 rounded up to 10 mm; "
+        "0.7 (d1 + d2) … 2 (d1 + d2))"))
+    application_factor_KA: Optional[float] = Field(None, ge=1, le=2, description=(
+        "V-belt application factor K_A (工况系数, 濮良贵 table 8-8); default from the drive's "
+        "load class and hours per day"))
     span_mm: Optional[float] = Field(None, gt=20, le=3000, description=(
         "Bearing span of the stage's output shaft [mm] (default: face width + 2 × 60 mm)"))
     efficiency: Optional[float] = Field(None, gt=0.3, le=1, description=(
@@ -108,6 +116,13 @@ class DriveStage(StrictModel):
             out.add("d2_mm", self.d2_mm,
                     f"a reduction drive: the driven pulley d2 must be at least d1_mm = {self.d1_mm:g}",
                     f"减速传动：从动带轮 d2 须不小于 d1_mm = {self.d1_mm:g}")
+        if self.type == "belt" and self.center_distance_mm is not None and self.d1_mm and self.d2_mm:
+            lo, hi = 0.7 * (self.d1_mm + self.d2_mm), 2 * (self.d1_mm + self.d2_mm)
+            if not lo <= self.center_distance_mm <= hi:
+                out.add("center_distance_mm", self.center_distance_mm,
+                        f"the initial centre distance must lie in 0.7 (d1 + d2) … 2 (d1 + d2) = "
+                        f"{lo:g} … {hi:g} mm",
+                        f"初定中心距须在 0.7(d1 + d2) … 2(d1 + d2) = {lo:g} … {hi:g} mm 之内")
         if self.z1 is not None and self.z2 is not None and self.z2 < self.z1:
             what, what_zh = (("worm wheel", "蜗轮") if self.type == "worm" else
                              ("driven wheel", "从动轮"))
@@ -197,6 +212,9 @@ class StageParams:
     span: float | None          # [m]
     efficiency: float | None
     index: int                  # position in the brief's list (for messages)
+    section: str | None = None          # V-belt section; None = from the selection chart
+    center_distance: float | None = None  # [m] V-belt a0; None = default
+    belt_KA: float | None = None        # V-belt K_A; None = table 8-8
 
 
 @dataclass(frozen=True)
@@ -208,6 +226,7 @@ class DriveParams:
     KA: float
     bearing_eff: float
     machine_eff: float
+    hours_per_day: float = 16.0  # [h] (the belt's K_A, table 8-8)
 
 
 def _stage_to_si(s: DriveStage, index: int) -> StageParams:
@@ -225,7 +244,9 @@ def _stage_to_si(s: DriveStage, index: int) -> StageParams:
         d1=None if s.d1_mm is None else s.d1_mm * mm, d2=None if s.d2_mm is None else s.d2_mm * mm,
         slip=s.slip if s.slip is not None else 0.015,
         span=None if s.span_mm is None else s.span_mm * mm,
-        efficiency=s.efficiency, index=index)
+        efficiency=s.efficiency, index=index, section=s.section,
+        center_distance=None if s.center_distance_mm is None else s.center_distance_mm * mm,
+        belt_KA=s.application_factor_KA)
 
 
 def drive_to_si(d: DriveSection) -> DriveParams:
@@ -235,6 +256,7 @@ def drive_to_si(d: DriveSection) -> DriveParams:
         stages=tuple(_stage_to_si(s, i) for i, s in enumerate(d.stages)),
         synchronous_rpm=sync, speed_tolerance=d.motor.speed_tolerance_pct / 100.0,
         service_hours=sv.life_years * sv.days_per_year * sv.hours_per_day, KA=sv.application_factor_KA,
-        bearing_eff=d.efficiencies.bearing_pair, machine_eff=d.efficiencies.machine)
+        bearing_eff=d.efficiencies.bearing_pair, machine_eff=d.efficiencies.machine,
+        hours_per_day=sv.hours_per_day)
 
 

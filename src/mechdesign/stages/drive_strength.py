@@ -21,9 +21,10 @@ import math
 from dataclasses import dataclass, replace
 
 
-from ..core import gears, strength as st
+from ..core import belts, gears, strength as st
 from ..core.fields import q
 from ..data import catalogues as cat
+from . import drive_elements as de
 
 K_V, K_BETA, S_H, S_F = 1.1, 1.1, 1.0, 1.4
 A0, KEYWAY = 112.0, 0.05
@@ -39,8 +40,9 @@ class StageDesign:
     carry only their torques and, for a belt, the pressure on the shafts)."""
 
     kind: str = q("", "'gear' | 'worm' | 'belt' | 'chain' | 'coupling'")
-    geometry: gears.SpurPair | gears.HelicalPair | gears.WormPair | None = q(
-        "", "the pair's geometry (as the gear section's pair); null for belts, chains, couplings")
+    geometry: gears.SpurPair | gears.HelicalPair | gears.WormPair | belts.VBeltDesign | None = q(
+        "", "the pair's geometry (as the gear section's pair); a belt's design (濮良贵 ch.8); "
+        "null for chains, couplings")
     materials: tuple[str, ...] = q("", "material keys (pinion, gear) or (worm, wheel)")
     module: float | None = q("m", "module used (normal module of a helical pair)")
     module_min: float | None = q("m", "module from the design formula (null when the brief gives it)")
@@ -211,19 +213,24 @@ def stage_designs(dp, results, shafts, peak_factor, peak_from_shaft) -> tuple[li
         T1, T2 = shafts[k].torque * boost, shafts[k + 1].torque * boost
         s = replace(s, z1=r.z1, z2=r.z2)
         if s.type in ("spur", "helical"):
-            out.append(_gear_stage(s, shafts[k].speed_rpm, T1, T2, dp.service_hours, dp.KA))
+            d = _gear_stage(s, shafts[k].speed_rpm, T1, T2, dp.service_hours, dp.KA)
+            out.append(replace(d, checks=d.checks + de.gear_geometry_checks(d, s)))
         elif s.type == "worm":
             d = _worm_stage(s, shafts[k].speed_rpm, shafts[k].power, T1, T2, dp.service_hours, dp.KA)
+            d = replace(d, checks=d.checks + (de.worm_deflection_check(d, dp.stages[k - 1].span if k else None),))
             if s.efficiency is None:
                 worm_eff[s.index] = d.extra["eta"]
             out.append(d)
+        elif s.type == "belt":    # 濮良贵 ch.8: the load on the shafts is F_p = 2 z F0 sin(α1/2)
+            try:
+                b = de.belt_design(s, r, shafts[k], dp)
+            except belts.BeltDesignError as e:
+                from ..core.drive import DriveDesignError
+                raise DriveDesignError(f"drive.stages[{s.index}]: {e.en}", f"drive.stages[{s.index}]：{e.zh}") from None
+            out.append(StageDesign("belt", b, (), None, None, False, None, b.KA, T1, T2, {"Q": b.Fp}, {},
+                                   b.checks, {"v": b.v}))
         else:
-            forces = {}
-            if s.type == "belt":
-                # Pressure on the shafts ≈ 1.5 × the effective pull 2T/d1 (no belt selection here).
-                forces = {"Q": 1.5 * 2 * T1 / r.d1}
-            out.append(StageDesign(s.type, None, (), None, None, False, None, 1.0, T1, T2, forces, {}, (),
-                                   {"v": math.pi * r.d1 * shafts[k].speed_rpm / 60} if s.type == "belt" else {}))
+            out.append(StageDesign(s.type, None, (), None, None, False, None, 1.0, T1, T2, {}, {}, (), {}))
     return out, worm_eff
 
 

@@ -1,0 +1,191 @@
+"""Issue 20: V-belts by 濮良贵《机械设计》ch.8, the geometric checks of every drive gear stage
+and the worm shaft's deflection (core/belts.py, stages/drive_elements.py).
+
+Worked examples (printed numbers, stored pages found with the search tool):
+- [V1] a course design's V-belt by 濮良贵 ch.8 (https://m.qiqiwenku.com/zip/721484.html):
+  P_ca = 3.35 kW, n_m = 1430 r/min, A section, d_d1 = 75 mm, d_d2 = 180 mm, a0 = 500 mm →
+  L_d0 ≈ 1406 mm, L_d = 1430 mm (its table 8-2 is the GB/T 11544-1997 series), a ≈ 512 mm,
+  α1 ≈ 168.2°, P0 = 0.67 kW, ΔP0 = 0.17 kW, Kα = 0.97, K_L = 0.96, z = 4.29 → 5,
+  q = 0.105 kg/m, F0 = 97.49 N, F_p = 969.66 N, v = 5.61 m/s.
+- [V2] a course design (https://m.qiqiwenku.com/doc/173029.html): P_ca = 6.6 kW at
+  1440 r/min → A section; d_d1 = 112 mm → v = 8.445 m/s.
+"""
+from __future__ import annotations
+
+import copy
+import math
+from types import SimpleNamespace
+
+import pytest
+
+from mechdesign.core import belts, gears
+from mechdesign.stages import drive_elements as de
+
+MM = 1e-3
+
+
+def _tables_of_v1():
+    """The shipped tables with the A lengths of the example's edition (GB/T 11544-1997:
+    …, 1250 → 0.93, 1430 → 0.96, 1550 → 0.98, …)."""
+    t = copy.deepcopy(de.belt_tables())
+    t["datum_lengths"]["A"] = {"L_d_mm": [1100, 1250, 1430, 1550, 1640], "K_L": [0.91, 0.93, 0.96, 0.98, 0.99]}
+    return t
+
+
+def test_v1_closed_forms_with_the_printed_inputs():
+    v = belts.belt_speed(75 * MM, 1430)
+    assert v == pytest.approx(5.61, abs=0.006)
+    L_d0 = belts.datum_length(500, 75, 180)
+    assert L_d0 == pytest.approx(1406, abs=0.5)
+    a = belts.center_distance(500, 1430, L_d0)
+    assert a == pytest.approx(512, abs=0.5)
+    # the printed α1 uses a = 512 mm: 180° − 105 × 57.3°/512
+    assert math.degrees(belts.wrap_angle(75, 180, 512)) == pytest.approx(168.2, abs=0.05)
+    # F0 with the printed (rounded) Kα = 0.97, z = 5, v = 5.61 m/s: 97.49 N
+    assert belts.initial_tension(3.35e3, 0.97, 5, 5.61, 0.105) == pytest.approx(97.49, abs=0.01)
+    # F_p = 2 z F0 sin(α1/2): 969.74 N with the printed F0 and α1; the page prints 969.66 N
+    # (its unrounded intermediate values): agreement to 1e-4
+    assert belts.shaft_load(5, 97.49, math.radians(168.2)) == pytest.approx(969.66, rel=1e-4)
+    # z = P_ca / ((P0 + ΔP0) Kα K_L) = 3.35 / 0.78 = 4.29
+    assert 3.35 / ((0.67 + 0.17) * 0.97 * 0.96) == pytest.approx(4.29, abs=0.01)
+
+
+def test_v1_table_lookups():
+    t = de.belt_tables()
+    assert belts.choose_section(t, 3.35e3, 1430) == "A"
+    assert belts.rated_power(t, "A", 75 * MM, 1430) / 1e3 == pytest.approx(0.67, abs=0.005)
+    assert belts.power_increment(t, "A", 2.5, 1430) / 1e3 == pytest.approx(0.17, abs=0.005)
+    assert belts.wrap_factor(t, math.radians(168.2)) == pytest.approx(0.97, abs=0.005)
+    assert t["sections"]["A"]["q_kg_per_m"] == 0.105
+
+
+def test_v1_whole_procedure():
+    b = belts.design_vbelt(_tables_of_v1(), 3.35e3, 1430, 1.0, 75 * MM, 180 * MM, 0.0, None, 500 * MM)
+    assert b.section == "A"
+    assert b.L_d == pytest.approx(1.430)
+    assert b.K_L == 0.96
+    assert b.a * 1e3 == pytest.approx(512, abs=0.5)
+    assert math.degrees(b.alpha1) == pytest.approx(168.2, abs=0.1)
+    assert b.z_exact == pytest.approx(4.29, abs=0.02)
+    assert b.z == 5
+    # Kα interpolated (0.9727) instead of the printed 0.97: F0 and F_p within 0.6 %
+    assert b.F0 == pytest.approx(97.49, rel=6e-3)
+    assert b.Fp == pytest.approx(969.66, rel=6e-3)
+    assert all(c.passed for c in b.checks)
+
+
+def test_v2_section_and_speed():
+    t = de.belt_tables()
+    assert belts.choose_section(t, 6.6e3, 1440) == "A"
+    assert belts.belt_speed(112 * MM, 1440) == pytest.approx(8.445, abs=0.001)
+
+
+def test_bilinear_p0_between_the_rows():
+    t = de.belt_tables()
+    # halfway between d = 90 and 100 mm and between 1200 and 1460 rpm: the mean of four entries
+    p = belts.rated_power(t, "A", 95 * MM, 1330) / 1e3
+    assert p == pytest.approx((0.93 + 1.07 + 1.14 + 1.32) / 4, abs=1e-12)
+
+
+def test_small_diameter_default_and_speed_rule():
+    s = SimpleNamespace(section=None)
+    # 0.825 kW at 910 rpm: section Z; 100 mm gives v = 4.76 m/s < 5 → the next datum diameter 106 mm
+    assert de.belt_small_diameter(s, 0.6875e3, 910, 1.2) == pytest.approx(0.106)
+    assert belts.belt_speed(0.106, 910) >= 5
+    # 1440 rpm: 100 mm suffices (v = 7.5 m/s)
+    assert de.belt_small_diameter(s, 3e3, 1440, 1.2) == pytest.approx(0.100)
+    # section B (d_dmin = 125 mm) forced: 125 mm
+    assert de.belt_small_diameter(SimpleNamespace(section="B"), 3e3, 1440, 1.2) == pytest.approx(0.125)
+
+
+def test_belt_application_factor_table_8_8():
+    assert de.belt_application_factor(1.25, 16)[0] == 1.2      # load varies little, two shifts
+    assert de.belt_application_factor(1.0, 8)[0] == 1.0
+    assert de.belt_application_factor(1.5, 24)[0] == 1.4
+
+
+def test_too_much_power_for_the_shipped_sections():
+    with pytest.raises(belts.BeltDesignError, match="larger than B"):
+        belts.design_vbelt(de.belt_tables(), 60e3, 1440, 1.2, 0.2, 0.4)
+
+
+# ------------------------------------------------------------------ gear-stage geometry
+
+
+def _design(pair, eps, materials=("45_QT", "45_QT")):
+    return SimpleNamespace(kind="gear", geometry=pair, materials=materials, extra={"eps_alpha": eps})
+
+
+def test_tip_undercut_contact_ratio_closed_forms():
+    pair = gears.spur_pair(2 * MM, 20, 60)
+    # standard pair: s_a = d_a (π/(2z) + inv α − inv α_a), d_a = m(z + 2)
+    inv = lambda a: math.tan(a) - a
+    al = math.radians(20)
+    da = 2 * MM * 22
+    aa = math.acos(2 * MM * 20 * math.cos(al) / da)
+    assert pair.g1.sa == pytest.approx(da * (math.pi / 40 + inv(al) - inv(aa)), rel=1e-9)
+    # contact ratio ε = [z1(tan α_a1 − tan α) + z2(tan α_a2 − tan α)]/(2π)
+    aa2 = math.acos(60 * math.cos(al) / 62)
+    eps = (20 * (math.tan(aa) - math.tan(al)) + 60 * (math.tan(aa2) - math.tan(al))) / (2 * math.pi)
+    assert pair.contact_ratio == pytest.approx(eps, rel=1e-9)
+    checks = {c.name_en: c for c in de.gear_geometry_checks(_design(pair, pair.contact_ratio), None)}
+    assert all(c.passed for c in checks.values())
+    assert checks["Pinion tip thickness s_a ≥ 0.25 m"].allowable == pytest.approx(0.5 * MM)
+
+
+def test_undercut_x_min():
+    pair = gears.spur_pair(2 * MM, 14, 40)            # z = 14 < 17, no shift: undercut
+    c = [c for c in de.gear_geometry_checks(_design(pair, pair.contact_ratio), None) if c.key == "undercut"]
+    assert not c[0].passed and c[1].passed
+    assert c[0].inputs["x_min"] == pytest.approx((17 - 14) / 17, rel=1e-9)   # x_min = (17 − z)/17
+    shifted = gears.spur_pair(2 * MM, 14, 40, x1=3 / 17, x2=-3 / 17)
+    c = [c for c in de.gear_geometry_checks(_design(shifted, shifted.contact_ratio), None) if c.key == "undercut"]
+    assert c[0].passed
+
+
+def test_x1_1_5_on_z1_20_fails_by_name():
+    """Issue 20: x1 = 1.5 on z1 = 20 gets a pointed tooth: a named failure (tip thickness
+    and contact ratio), not a silent pass."""
+    pair = gears.spur_pair(2 * MM, 20, 60, x1=1.5)
+    failed = {c.key for c in de.gear_geometry_checks(_design(pair, pair.contact_ratio), None) if not c.passed}
+    assert {"tooth_tip", "contact_ratio"} <= failed
+
+
+def test_hardened_tips_need_0_4_m():
+    pair = gears.spur_pair(2 * MM, 20, 60)
+    c = de.gear_geometry_checks(_design(pair, 1.6, ("40Cr_surface_hardened", "45_QT")), None)
+    assert c[0].allowable == pytest.approx(0.4 * 2 * MM)
+    assert c[2].allowable == pytest.approx(0.25 * 2 * MM)
+
+
+def test_helical_stage_uses_the_equivalent_teeth():
+    beta = math.radians(14)
+    pair = gears.helical_pair(2 * MM, 15, 60, beta)
+    c = [c for c in de.gear_geometry_checks(_design(pair, 1.6), SimpleNamespace(z1=15, z2=60))
+         if c.key == "undercut"]
+    zv = 15 / math.cos(beta) ** 3                       # 16.4 < 17: undercut
+    assert c[0].value == pytest.approx(zv)
+    assert not c[0].passed
+
+
+# ------------------------------------------------------------------ worm shaft deflection
+
+
+def test_worm_deflection_by_hand():
+    """y = √(Ft1² + Fr1²) L³ / (48 E I), I = π d_f1⁴/64, [y] = d1/1000 (濮良贵 ch.11).
+    m = 5 mm, q = 10 (d1 = 50 mm, d_f1 = 50 − 2.4·5 = 38 mm), z2 = 40 (d2 = 200 mm),
+    Ft1 = 1000 N, Fr1 = 2000 N, L = 0.9 d2 = 180 mm:
+    I = π·38⁴/64 = 102 353.9 mm⁴; y = 2236.07 × 180³ / (48 × 206 000 × 102 353.9)
+    = 0.012 885 mm ≤ 0.05 mm."""
+    g = gears.worm_pair(5 * MM, 10, 2, 40)
+    d = SimpleNamespace(geometry=g, forces={"Ft": 1000.0, "Fr": 2000.0})
+    c = de.worm_deflection_check(d, None)
+    I_mm4 = math.pi * 38 ** 4 / 64
+    assert I_mm4 == pytest.approx(102353.9, abs=0.1)
+    y_mm = math.hypot(1000, 2000) * 180 ** 3 / (48 * 206000 * I_mm4)
+    assert y_mm == pytest.approx(0.012885, abs=1e-6)
+    assert c.value * 1e3 == pytest.approx(y_mm, rel=1e-9)
+    assert c.allowable == pytest.approx(0.050 * MM)
+    assert c.passed
+    # a span given in the brief replaces 0.9 d2
+    assert de.worm_deflection_check(d, 0.360).value == pytest.approx(8 * c.value, rel=1e-12)
