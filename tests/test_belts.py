@@ -189,3 +189,101 @@ def test_worm_deflection_by_hand():
     assert c.passed
     # a span given in the brief replaces 0.9 d2
     assert de.worm_deflection_check(d, 0.360).value == pytest.approx(8 * c.value, rel=1e-12)
+
+
+# ------------------------------------------------------------------ roller chains (濮良贵 ch.9)
+
+
+def test_chain_by_hand():
+    """No printed chain example with all its numbers was found by the search tool; this is a
+    hand calculation of the ch.9 procedure (P = 5 kW, n1 = 720 rpm, i = 3, K_A = 1):
+    z1 = 29 − 2i = 23, z2 = 69; K_z = (19/23)^1.08 = 0.8135, P_ca = 4.067 kW.
+    Ratings at z1 = 19 (ANSI, hp, p in inches): 08A (p = 0.5): 0.004·19^1.08·720^0.9·0.5^2.965
+    = 4.59 hp = 3.42 kW < P_ca; 10A (p = 0.625): 0.004·24.03·372.9·0.625^2.956 = 8.93 hp
+    = 6.66 kW (roller-bushing limit 1000·17·19^1.5·0.625^0.8/720^1.5 = 50.0 hp) → 10A.
+    a0 = 40p: L_p0 = 80 + 46 + (1/40)(46/2π)² = 127.34 → 128 links;
+    a = (15.875/4)[82 + √(82² − 8·(46/2π)²)] = 640.33 mm; v = 23·720·15.875/60000 = 4.3815 m/s;
+    F_Q = 1.2 · 5000/4.3815 = 1369.4 N."""
+    from mechdesign.core import chains
+
+    t = de.chain_tables()
+    c = chains.design_chain(t, 5e3, 720, 1.0, 23, 69)
+    assert c.Kz == pytest.approx(0.8135, abs=1e-4)
+    assert c.power_design == pytest.approx(4067, abs=1)
+    assert chains.rated_power_one_strand(0.0127, 720) == pytest.approx(3424, rel=2e-3)
+    assert c.chain == "10A" and c.rated_power == pytest.approx(6660, rel=2e-3)
+    assert c.L_p0 == pytest.approx(127.34, abs=0.01) and c.L_p == 128
+    assert c.a * 1e3 == pytest.approx(640.33, abs=0.01)
+    # the centre distance is the exact inverse of the link count
+    assert chains.links(c.a, c.pitch, 23, 69) == pytest.approx(128, rel=1e-12)
+    assert c.v == pytest.approx(4.381, abs=1e-3)
+    assert c.FQ == pytest.approx(1369.4, abs=0.1)
+    assert c.S is None and all(ch.passed for ch in c.checks)
+
+
+def test_chain_refusals_and_static_safety():
+    from mechdesign.core import chains
+
+    t = de.chain_tables()
+    with pytest.raises(chains.ChainDesignError, match="no shipped roller chain"):
+        chains.design_chain(t, 500e3, 1500, 1.0, 19, 57)
+    slow = chains.design_chain(t, 2e3, 50, 1.4, 17, 51)      # v < 0.6 m/s: static safety checked
+    assert slow.v < 0.6 and slow.S is not None
+    F1 = slow.Fe + t["chains"][slow.chain]["q_kg_per_m"] * slow.v ** 2
+    assert slow.S == pytest.approx(t["chains"][slow.chain]["Q_kN"] * 1e3 / (1.4 * F1))
+
+
+# ------------------------------------------------------------------ through the drive
+
+
+def _run_furnace_drive(tmp_path, **stage):
+    import yaml
+    from mechdesign.brief.loader import load_variant
+    from mechdesign.machines import get_machine, stages_for
+    from mechdesign.pipeline import run_stages
+
+    d = yaml.safe_load(open("designs/furnace_drive.yaml", encoding="utf-8"))
+    k = next(i for i, s in enumerate(d["drive"]["stages"]) if s["type"] == "spur")
+    d["drive"]["stages"][k] = stage
+    path = tmp_path / "brief.yaml"
+    path.write_text(yaml.safe_dump(d, allow_unicode=True), encoding="utf-8")
+    v = load_variant(path, None)
+    m = get_machine(v.brief.machine)
+    p = m.to_params(v.brief)
+    res, _ = run_stages(stages_for(m, p), {"params": p, "brief": v.brief})
+    doc = m.document(res)
+    return doc.drive, k
+
+
+def test_drive_spur_stage_x1_1_5_on_z1_20_is_a_named_failure(tmp_path):
+    doc, k = _run_furnace_drive(tmp_path, type="spur", open=True, z1=20, x1=1.5)
+    checks = {c.key: c for c in doc.stages[k].design.checks if not c.passed}
+    assert {"tooth_tip", "contact_ratio"} <= set(checks)
+    text = " ".join(doc.warnings)
+    assert "Pinion tip thickness" in text and f"drive.stages[{k}].x1" in text
+
+
+def test_drive_chain_stage_is_designed_and_loads_its_shafts(tmp_path):
+    doc, k = _run_furnace_drive(tmp_path, type="chain", ratio=5)
+    c = doc.stages[k].design
+    assert c.kind == "chain" and c.forces["Q"] == pytest.approx(c.geometry.FQ)
+    assert c.geometry.z1 == 19                            # z1 = 29 − 2i, odd, ≥ 17
+    # F_Q acts on both of the chain's shafts (k and k + 1)
+    loads = [[ld.Fh for ld in sh.loads] for sh in doc.shaft_designs]
+    assert any(f == pytest.approx(c.geometry.FQ) for f in loads[k - 1])
+    assert any(f == pytest.approx(c.geometry.FQ) for f in loads[k])
+
+
+def test_belt_fields_validated():
+    from pydantic import ValidationError
+
+    from mechdesign.brief.drive import DriveStage
+
+    s = DriveStage(type="belt", d1_mm=125, d2_mm=250, section="B", center_distance_mm=400)
+    assert s.section == "B"
+    with pytest.raises(ValidationError, match="0.7"):
+        DriveStage(type="belt", d1_mm=125, d2_mm=250, center_distance_mm=100)
+    with pytest.raises(ValidationError, match="has no section"):
+        DriveStage(type="spur", section="A")
+    with pytest.raises(ValidationError):
+        DriveStage(type="belt", section="C")                 # C and larger: not in the tables

@@ -21,7 +21,7 @@ StageType = Literal["coupling", "belt", "chain", "spur", "helical", "worm"]
 _FIELDS_BY_TYPE = {
     "coupling": set(),
     "belt": {"ratio", "d1_mm", "d2_mm", "slip", "section", "center_distance_mm", "application_factor_KA"},
-    "chain": {"ratio", "z1", "z2"},
+    "chain": {"ratio", "z1", "z2", "chain", "rows", "center_distance_mm", "application_factor_KA"},
     "spur": {"ratio", "z1", "z2", "module_mm", "open", "face_width_factor", "pinion_material",
              "gear_material", "x1", "x2", "span_mm"},
     "helical": {"ratio", "z1", "z2", "module_mm", "helix_angle_deg", "face_width_factor",
@@ -30,7 +30,8 @@ _FIELDS_BY_TYPE = {
 }
 _OPTIONAL = ("ratio", "d1_mm", "d2_mm", "slip", "z1", "z2", "module_mm", "open", "face_width_factor",
              "pinion_material", "gear_material", "x1", "x2", "helix_angle_deg", "q",
-             "wheel_material", "span_mm", "section", "center_distance_mm", "application_factor_KA")
+             "wheel_material", "span_mm", "section", "center_distance_mm", "application_factor_KA",
+             "chain", "rows")
 
 
 def check_material(value: str | None, which: str) -> str | None:
@@ -80,12 +81,15 @@ class DriveStage(StrictModel):
     slip: Optional[float] = Field(None, ge=0, le=0.05, description="Belt elastic slip ε (default 0.015)")
     section: Optional[Literal["Z", "A", "B"]] = Field(None, description=(
         "V-belt section (带型), default from the selection chart (濮良贵 fig. 8-11) by P_ca and n1"))
+    chain: Optional[Literal["08A", "10A", "12A", "16A", "20A", "24A", "28A", "32A"]] = Field(None, description=(
+        "Roller chain number (链号, A series); default the smallest whose rated power carries P_ca"))
+    rows: Optional[int] = Field(None, ge=1, le=3, description="Roller chain rows (排数, default 1)")
     center_distance_mm: Optional[float] = Field(None, gt=50, le=5000, description=(
-        "V-belt initial centre distance a0 [mm] (default d1 + d2 rounded up to 10 mm; "
-        "0.7 (d1 + d2) … 2 (d1 + d2))"))
-    application_factor_KA: Optional[float] = Field(None, ge=1, le=2, description=(
-        "V-belt application factor K_A (工况系数, 濮良贵 table 8-8); default from the drive's "
-        "load class and hours per day"))
+        "Initial centre distance a0 [mm]: V-belt default d1 + d2 rounded up to 10 mm "
+        "(0.7 (d1 + d2) … 2 (d1 + d2)); chain default 40 p (30 … 50 p)"))
+    application_factor_KA: Optional[float] = Field(None, ge=1, le=2.5, description=(
+        "Application factor K_A of the belt (工况系数, 濮良贵 table 8-8) or the chain (table 9-6); "
+        "default from the drive's load class (and, for belts, the hours per day)"))
     span_mm: Optional[float] = Field(None, gt=20, le=3000, description=(
         "Bearing span of the stage's output shaft [mm] (default: face width + 2 × 60 mm)"))
     efficiency: Optional[float] = Field(None, gt=0.3, le=1, description=(
@@ -214,7 +218,9 @@ class StageParams:
     index: int                  # position in the brief's list (for messages)
     section: str | None = None          # V-belt section; None = from the selection chart
     center_distance: float | None = None  # [m] V-belt a0; None = default
-    belt_KA: float | None = None        # V-belt K_A; None = table 8-8
+    belt_KA: float | None = None        # V-belt / chain K_A; None = table 8-8 / 9-6
+    chain: str | None = None            # chain number; None = from the rated power
+    rows: int = 1                       # chain rows
 
 
 @dataclass(frozen=True)
@@ -246,7 +252,7 @@ def _stage_to_si(s: DriveStage, index: int) -> StageParams:
         span=None if s.span_mm is None else s.span_mm * mm,
         efficiency=s.efficiency, index=index, section=s.section,
         center_distance=None if s.center_distance_mm is None else s.center_distance_mm * mm,
-        belt_KA=s.application_factor_KA)
+        belt_KA=s.application_factor_KA, chain=s.chain, rows=s.rows or 1)
 
 
 def drive_to_si(d: DriveSection) -> DriveParams:

@@ -113,12 +113,15 @@ def stage_designs(d, lang: str) -> list[dict]:
     out = []
     for r in d.stages:
         g = r.design
-        if g is None or g.kind not in ("gear", "worm", "belt"):
+        if g is None or g.kind not in ("gear", "worm", "belt", "chain"):
             continue
         title = (f"第 {r.index + 1} 级：{r.name_zh}" if zh else f"Stage {r.index + 1}: {r.name_en}")
         text, rows = [], []
         if g.kind == "belt":
             out.append(_belt_design(r, g, title, zh))
+            continue
+        if g.kind == "chain":
+            out.append(_chain_design(g, title, zh))
             continue
         m_text = (f"{f(g.module * MM, 2)} mm" + ("" if g.module_given else
                   (f"（设计公式得 {f(g.module_min * MM, 3)} mm，取标准值）" if zh else
@@ -274,6 +277,53 @@ def _belt_design(r, g, title: str, zh: bool) -> dict:
     ]
     return {"title": title, "text": text, "rows": rows, "formulas": formulas,
             "checks": _rows(check_rows(g.checks, "zh" if zh else "en"), zh), "refs": ("pu9", "gb13575")}
+
+
+def _chain_design(g, title: str, zh: bool) -> dict:
+    """The roller-chain subsection: each step of 濮良贵 ch.9 §9-5 with its numbers."""
+    from .strength_tex import check_rows, num
+
+    c = g.geometry
+    p = c.pitch * MM
+    P, Pca = c.power / 1e3, c.power_design / 1e3
+    how = ((("链号由设计任务给定" if zh else "the chain given in the brief")) if c.chain_given else
+           ("取额定功率不小于 $P_{ca}$ 的最小链号" if zh else "the smallest chain whose rated power carries $P_{ca}$"))
+    if zh:
+        text = [f"按濮良贵《机械设计》第 9 章设计滚子链（A 系列，{c.rows} 排）：工况系数 $K_A = {f(c.KA, 2)}$（表 9-6），"
+                f"小链轮齿数系数 $K_z = (19/z_1)^{{1.08}} = {f(c.Kz, 3)}$，多排链系数 $K_p = {f(c.Kp, 2)}$；"
+                f"{how}：{c.chain}（p = {f(p, 3)} mm），单排额定功率 {f(c.rated_power / 1e3, 3)} kW。",
+                "图 9-11 的额定功率曲线未能按原图录入，以 ANSI B29.1 的额定功率公式（Shigley 式 17-32、17-33，"
+                "$z_1 = 19$）代替（假设，见 data/chains.yaml）；中心距按链节数精确反算，"
+                f"压轴力 $F_Q = {f(c.FQ_factor, 1)} F_e$。"]
+    else:
+        text = [f"Roller chain (A series, {c.rows} row(s)) designed by 濮良贵 (Machine Design) ch.9: application factor "
+                f"$K_A = {f(c.KA, 2)}$ (table 9-6), tooth factor $K_z = (19/z_1)^{{1.08}} = {f(c.Kz, 3)}$, row factor "
+                f"$K_p = {f(c.Kp, 2)}$; {how}: {c.chain} (p = {f(p, 3)} mm), rated power of one strand "
+                f"{f(c.rated_power / 1e3, 3)} kW.",
+                "The rated-power chart (fig. 9-11) could not be typed from the book: the ANSI B29.1 rating formulas "
+                "(Shigley eqs. 17-32, 17-33, at $z_1 = 19$) stand in for it (an assumption, see data/chains.yaml); "
+                f"the centre distance is the exact inverse of the link count; the load on the shafts $F_Q = "
+                f"{f(c.FQ_factor, 1)} F_e$."]
+    rows = [[("链号" if zh else "Chain"), c.chain, "—"], ["$z_1 / z_2$", f"{c.z1} / {c.z2}", "—"],
+            ["$p$", f(p, 3), "mm"], ["$L_p$", str(c.L_p), "—"], ["$a$", f(c.a * MM, 1), "mm"],
+            ["$v$", f(c.v, 3), "m/s"], ["$F_e$", f(c.Fe, 1), "N"], ["$F_Q$", f(c.FQ, 1), "N"]]
+    formulas = [
+        rf"P_{{ca}} = \frac{{K_A K_z P}}{{K_p}} = \frac{{{num(c.KA)} \times {num(c.Kz)} \times {num(P)}}}"
+        rf"{{{num(c.Kp)}}} = {num(Pca)}\ \text{{kW}}",
+        rf"L_{{p0}} = \frac{{2a_0}}{{p}} + \frac{{z_1 + z_2}}{{2}} + \frac{{p}}{{a_0}}\left(\frac{{z_2 - z_1}}"
+        rf"{{2\pi}}\right)^2 = \frac{{2 \times {num(c.a0 * MM)}}}{{{num(p)}}} + \frac{{{c.z1 + c.z2}}}{{2}} + "
+        rf"\frac{{{num(p)}}}{{{num(c.a0 * MM)}}}\left(\frac{{{c.z2 - c.z1}}}{{2\pi}}\right)^2 = {num(c.L_p0)}"
+        rf" \rightarrow L_p = {c.L_p}",
+        rf"a = \frac{{p}}{{4}}\left[\left(L_p - \frac{{z_1 + z_2}}{{2}}\right) + \sqrt{{\left(L_p - "
+        rf"\frac{{z_1 + z_2}}{{2}}\right)^2 - 8\left(\frac{{z_2 - z_1}}{{2\pi}}\right)^2}}\right] = "
+        rf"{num(c.a * MM)}\ \text{{mm}}",
+        rf"v = \frac{{z_1 n_1 p}}{{60 \times 1000}} = \frac{{{c.z1} \times {num(c.n1_rpm)} \times {num(p)}}}"
+        rf"{{60000}} = {num(c.v)}\ \text{{m/s}}",
+        rf"F_Q = {num(c.FQ_factor)} F_e = {num(c.FQ_factor)} \times \frac{{1000 P}}{{v}} = {num(c.FQ_factor)} "
+        rf"\times \frac{{1000 \times {num(P)}}}{{{num(c.v)}}} = {num(c.FQ)}\ \text{{N}}",
+    ]
+    return {"title": title, "text": text, "rows": rows, "formulas": formulas,
+            "checks": _rows(check_rows(g.checks, "zh" if zh else "en"), zh), "refs": ("pu9",)}
 
 
 # --------------------------------------------------------------------------- machine: drive

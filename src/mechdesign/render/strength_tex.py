@@ -14,7 +14,7 @@ from ..core.strength import COURSE_SCALE, Check
 from .fmt import f
 
 #: Decimals of the value and allowable columns per course unit.
-DIGITS = {"MPa": 1, "h": 0, "°C": 1, "mm": 2, "m/s": 2, "°": 1, "1": 2}
+DIGITS = {"MPa": 1, "h": 0, "°C": 1, "mm": 2, "m/s": 2, "°": 1, "1": 2, "kW": 3}
 
 N_MM = 1e3      # N·m → N·mm
 MM = 1e3        # m → mm

@@ -25,7 +25,7 @@ from __future__ import annotations
 import math
 from functools import lru_cache
 
-from ..core import belts, gears
+from ..core import belts, chains, gears
 from ..core.drive import PULLEY_DIAMETERS_MM
 from ..core.strength import Check
 from ..data import load_yaml
@@ -50,6 +50,12 @@ FIXES = {
                  "取正变位 drive.stages[{i}].x1/x2 ≥ x_min 或增加齿数"),
     "contact_ratio": ("use more teeth (a smaller module) or smaller shifts",
                       "增加齿数（减小模数）或减小变位系数"),
+    "chain_z1": ("give more teeth drive.stages[{i}].z1 (≥ 17)", "增加小链轮齿数 drive.stages[{i}].z1（≥ 17）"),
+    "chain_z2": ("give the chain a smaller ratio or fewer teeth z1", "减小链传动的传动比或小链轮齿数"),
+    "chain_power": ("give a larger chain (drive.stages[{i}].chain) or more rows (rows)",
+                    "选更大的链号（drive.stages[{i}].chain）或增加排数（rows）"),
+    "chain_speed": ("give a smaller chain or fewer teeth z1", "选较小的链号或减少小链轮齿数"),
+    "chain_static": ("give a larger chain or more rows", "选更大的链号或增加排数"),
     "worm_deflection": ("give a shorter bearing span or a larger worm diameter factor q",
                         "缩短支承跨距或增大蜗杆直径系数 q"),
 }
@@ -100,6 +106,22 @@ def belt_design(s, r, shaft, dp) -> belts.VBeltDesign:
     KA = belt_KA(s, dp)
     return belts.design_vbelt(belt_tables(), shaft.power, shaft.speed_rpm, KA, r.d1, r.d2, r.slip,
                               getattr(s, "section", None), getattr(s, "center_distance", None))
+
+
+@lru_cache(maxsize=1)
+def chain_tables() -> dict:
+    return load_yaml("chains.yaml")
+
+
+def chain_design(s, r, shaft, dp) -> chains.ChainDesign:
+    """The roller chain of stage ``s`` (realised teeth ``r.z1``, ``r.z2``) on ``shaft``."""
+    t = chain_tables()
+    if getattr(s, "belt_KA", None) is not None:
+        KA = s.belt_KA
+    else:
+        KA = float(next(row["K_A"] for row in t["application_factor"] if dp.KA <= row["drive_KA_upto"] + 1e-12))
+    return chains.design_chain(t, shaft.power, shaft.speed_rpm, KA, r.z1, r.z2, getattr(s, "chain", None),
+                               getattr(s, "rows", 1), getattr(s, "center_distance", None), shocks=dp.KA > 1.25)
 
 
 # ----------------------------------------------------------------------------- gear stages

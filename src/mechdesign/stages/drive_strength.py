@@ -21,7 +21,7 @@ import math
 from dataclasses import dataclass, replace
 
 
-from ..core import belts, gears, strength as st
+from ..core import belts, chains, gears, strength as st
 from ..core.fields import q
 from ..data import catalogues as cat
 from . import drive_elements as de
@@ -40,9 +40,10 @@ class StageDesign:
     carry only their torques and, for a belt, the pressure on the shafts)."""
 
     kind: str = q("", "'gear' | 'worm' | 'belt' | 'chain' | 'coupling'")
-    geometry: gears.SpurPair | gears.HelicalPair | gears.WormPair | belts.VBeltDesign | None = q(
-        "", "the pair's geometry (as the gear section's pair); a belt's design (濮良贵 ch.8); "
-        "null for chains, couplings")
+    geometry: (gears.SpurPair | gears.HelicalPair | gears.WormPair | belts.VBeltDesign
+               | chains.ChainDesign | None) = q(
+        "", "the pair's geometry (as the gear section's pair); a belt's or chain's design "
+        "(濮良贵 ch.8, ch.9); null for couplings")
     materials: tuple[str, ...] = q("", "material keys (pinion, gear) or (worm, wheel)")
     module: float | None = q("m", "module used (normal module of a helical pair)")
     module_min: float | None = q("m", "module from the design formula (null when the brief gives it)")
@@ -229,6 +230,14 @@ def stage_designs(dp, results, shafts, peak_factor, peak_from_shaft) -> tuple[li
                 raise DriveDesignError(f"drive.stages[{s.index}]: {e.en}", f"drive.stages[{s.index}]：{e.zh}") from None
             out.append(StageDesign("belt", b, (), None, None, False, None, b.KA, T1, T2, {"Q": b.Fp}, {},
                                    b.checks, {"v": b.v}))
+        elif s.type == "chain":   # 濮良贵 ch.9: F_Q ≈ (1.2…1.3) F_e on the shafts
+            try:
+                c = de.chain_design(s, r, shafts[k], dp)
+            except chains.ChainDesignError as e:
+                from ..core.drive import DriveDesignError
+                raise DriveDesignError(f"drive.stages[{s.index}]: {e.en}", f"drive.stages[{s.index}]：{e.zh}") from None
+            out.append(StageDesign("chain", c, (), None, None, False, None, c.KA, T1, T2, {"Q": c.FQ}, {},
+                                   c.checks, {"v": c.v}))
         else:
             out.append(StageDesign(s.type, None, (), None, None, False, None, 1.0, T1, T2, {}, {}, (), {}))
     return out, worm_eff
@@ -249,8 +258,8 @@ def _element_loads(design: StageDesign, driving: bool):
         if driving:   # the worm: its tangential force Ft1, axial force Fa1 = Ft2
             return True, dict(Fh=f["Ft"], Fv=f["Fr"], Fa=f["Fa"], r=f["d1"] / 2), None, "steel"
         return True, dict(Fh=f["Ft2"], Fv=f["Fr"], Fa=f["Ft"], r=f["d2"] / 2), None, "steel"
-    if design.kind == "belt":
-        return False, dict(Fh=f["Q"]), None, "cast_iron"
+    if design.kind in ("belt", "chain"):     # F_p of the belt, F_Q of the chain (issue 20)
+        return False, dict(Fh=f["Q"]), None, "cast_iron" if design.kind == "belt" else "steel"
     return False, {}, None, "steel"
 
 
