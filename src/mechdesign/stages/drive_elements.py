@@ -156,7 +156,7 @@ def gear_geometry_checks(design, s) -> tuple[Check, ...]:
         # quantity, so the margin 1 − allowable/value is defined)
         x_min = ha_star * (z_min - zs[k]) / z_min
         z_need = z_min * (1 - gd.x / ha_star)
-        out.append(Check("undercut", f"{who_zh}不根切（x ≥ x_min）", f"{who_en} free of undercut (x ≥ x_min)",
+        out.append(Check("undercut", f"{who_zh}不根切 z ≥ z_min(1 − x)", f"{who_en} free of undercut z ≥ z_min(1 − x)",
                          "z", float(zs[k]), z_need, "1", "ge", gd.x >= x_min - 1e-9,
                          {"x": gd.x, "x_min": x_min, "z_min": z_min, "ha_star": ha_star}))
     eps = design.extra["eps_alpha"]
@@ -178,6 +178,6 @@ def worm_deflection_check(design, span: float | None) -> Check:
     inertia = math.pi * df1 ** 4 / 64
     y = math.hypot(f["Ft"], f["Fr"]) * L ** 3 / (48 * E_STEEL * inertia)
     allow = d1 / 1000
-    return Check("worm_deflection", "蜗杆轴刚度（挠度）", "Worm shaft stiffness (deflection)", "y", y, allow, "mm",
+    return Check("worm_deflection", "蜗杆轴刚度（挠度）", "Worm shaft stiffness (deflection)", "y", y, allow, "μm",
                  "le", y <= allow, {"Ft1": f["Ft"], "Fr1": f["Fr"], "L": L, "E": E_STEEL, "I": inertia,
                                     "df1": df1, "d1": d1, "span_given": 1.0 if span else 0.0})
