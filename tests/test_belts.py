@@ -287,3 +287,15 @@ def test_belt_fields_validated():
         DriveStage(type="spur", section="A")
     with pytest.raises(ValidationError):
         DriveStage(type="belt", section="C")                 # C and larger: not in the tables
+
+
+def test_chart_section_that_cannot_wrap_gives_way_to_the_next():
+    """d1 = 100, d2 = 560 mm: α1 ≥ 120° needs a ≥ 460/(π/3) = 439 mm, i.e. L_d ≈ 2·439 +
+    (π/2)·660 + 460²/(4·439) = 2035 mm, beyond Z's longest belt (1800 mm): A is used."""
+    t = de.belt_tables()
+    b = belts.design_vbelt(t, 0.5e3, 1440, 1.2, 0.100, 0.560)
+    assert b.section_chart == "Z" and b.section == "A"
+    assert math.degrees(b.alpha1) >= 120 and all(c.passed for c in b.checks)
+    # given, the section is kept (and its failure reported)
+    z = belts.design_vbelt(t, 0.5e3, 1440, 1.2, 0.100, 0.560, section="Z")
+    assert z.section == "Z" and not all(c.passed for c in z.checks)

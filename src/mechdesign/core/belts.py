@@ -31,6 +31,8 @@ class VBeltDesign:
 
     section: str = q("", "belt section (Z, A, B)")
     section_given: bool = q("", "the brief gives the section")
+    section_chart: str = q("", "the section the selection chart gives (a larger one is used when "
+                           "the chart's fails its checks)")
     KA: float = q("1", "application factor K_A (table 8-8)")
     power: float = q("W", "P transmitted by the small pulley")
     power_design: float = q("W", "P_ca = K_A·P")
@@ -146,27 +148,51 @@ def design_vbelt(tables, P: float, n1_rpm: float, KA: float, d1: float, d2: floa
                  slip: float = 0.0, section: str | None = None, a0: float | None = None) -> VBeltDesign:
     """The whole procedure for datum diameters already chosen (the drive's ratio step picks
     them: d_d1 ≥ d_dmin, d_d2 = i·d_d1·(1 − ε) rounded to the series). ``a0`` defaults to
-    d1 + d2 rounded up to 10 mm (inside 0.7…2 (d1 + d2))."""
+    d1 + d2 rounded up to 10 mm (inside 0.7…2 (d1 + d2)), raised by 10 mm steps while the
+    wrap angle α1 (after rounding L_d to the series) is below 120°."""
     P_ca = KA * P
-    given = section is not None
-    if section is None:
-        section = choose_section(tables, P_ca, n1_rpm)
-        if section is None:
-            raise BeltDesignError(
-                f"the V-belt needs a section larger than B (P_ca = {P_ca / 1e3:.3g} kW at "
-                f"{n1_rpm:.0f} rpm): the shipped tables hold Z, A and B only",
-                f"V 带需要比 B 型更大的带型（P_ca = {P_ca / 1e3:.3g} kW，n1 = {n1_rpm:.0f} r/min）："
-                "程序的表中只有 Z、A、B 型")
+    if section is not None:
+        return _design(tables, P, n1_rpm, KA, d1, d2, slip, section, True, a0, section)
+    chart = choose_section(tables, P_ca, n1_rpm)
+    if chart is None:
+        raise BeltDesignError(
+            f"the V-belt needs a section larger than B (P_ca = {P_ca / 1e3:.3g} kW at "
+            f"{n1_rpm:.0f} rpm): the shipped tables hold Z, A and B only",
+            f"V 带需要比 B 型更大的带型（P_ca = {P_ca / 1e3:.3g} kW，n1 = {n1_rpm:.0f} r/min）："
+            "程序的表中只有 Z、A、B 型")
+    # The chart's section; when it fails (the wrap angle beyond its longest belt, too many
+    # belts), the next larger section that passes (its d_dmin still met by d_d1).
+    order = [r["section"] for r in tables["selection_chart"]]
+    first = _design(tables, P, n1_rpm, KA, d1, d2, slip, chart, False, a0, chart)
+    if all(c.passed for c in first.checks):
+        return first
+    for other in order[order.index(chart) + 1:]:
+        b = _design(tables, P, n1_rpm, KA, d1, d2, slip, other, False, a0, chart)
+        if all(c.passed for c in b.checks):
+            return b
+    return first
+
+
+def _design(tables, P, n1_rpm, KA, d1, d2, slip, section: str, given: bool, a0, chart: str) -> VBeltDesign:
+    P_ca = KA * P
     sec = tables["sections"][section]
     d_min = sec["d_min_mm"] * 1e-3
     v = belt_speed(d1, n1_rpm)
     lo, hi = 0.7 * (d1 + d2), 2 * (d1 + d2)
+    lim = tables["limits"]
+    alpha_min = math.radians(lim["alpha1_min_deg"])
+    a0_given = a0 is not None
     if a0 is None:
         a0 = math.ceil((d1 + d2) * 100 - 1e-9) / 100
-    L_d0 = datum_length(a0, d1, d2)
-    L_d, K_L = standard_length(tables, section, L_d0)
-    a = center_distance(a0, L_d, L_d0)
-    alpha1 = wrap_angle(d1, d2, a)
+    while True:
+        L_d0 = datum_length(a0, d1, d2)
+        L_d, K_L = standard_length(tables, section, L_d0)
+        a = center_distance(a0, L_d, L_d0)
+        alpha1 = wrap_angle(d1, d2, a)
+        # a0 not given: raised by 10 mm steps (up to 2 (d1 + d2)) until α1 ≥ 120°
+        if a0_given or alpha1 >= alpha_min or a0 + 0.01 > hi + 1e-9:
+            break
+        a0 = round(a0 + 0.01, 6)
     ratio = d2 / (d1 * (1 - slip))
     P0 = rated_power(tables, section, d1, n1_rpm)
     dP0 = power_increment(tables, section, ratio, n1_rpm)
@@ -177,7 +203,6 @@ def design_vbelt(tables, P: float, n1_rpm: float, KA: float, d1: float, d2: floa
     qm = sec["q_kg_per_m"]
     F0 = initial_tension(P_ca, Ka, z, v, qm)
     Fp = shaft_load(z, F0, alpha1)
-    lim = tables["limits"]
     checks = (
         Check("belt_d_min", "小带轮基准直径", "Small datum diameter", "d_{d1}", d1, d_min, "mm", "ge",
               d1 >= d_min - 1e-12, {}),
@@ -191,6 +216,6 @@ def design_vbelt(tables, P: float, n1_rpm: float, KA: float, d1: float, d2: floa
         Check("belt_count", "V 带根数", "Number of belts", "z", float(z), float(lim["belts_max"]), "1",
               "le", z <= lim["belts_max"], {"z_exact": z_exact}),
     )
-    return VBeltDesign(section, given, KA, P, P_ca, n1_rpm, d1, d2, d_min, slip, v, a0, lo, hi, L_d0,
+    return VBeltDesign(section, given, chart, KA, P, P_ca, n1_rpm, d1, d2, d_min, slip, v, a0, lo, hi, L_d0,
                        L_d, a, a - 0.015 * L_d, a + 0.03 * L_d, alpha1, P0, dP0, Ka, K_L, P_r,
                        z_exact, z, qm, F0, Fp, checks)

@@ -174,6 +174,19 @@ def stage_designs(d, lang: str) -> list[dict]:
                         (f"Sliding speed $v_s = {f(e['vs'], 3)}$ m/s, equivalent friction angle $\\varphi_v = "
                          f"{f(np.degrees(e['phi_v']), 3)}°$, efficiency $\\eta = 0.95\\tan\\gamma/\\tan(\\gamma+\\varphi_v) = "
                          f"{f(e['eta'], 4)}$ (used in the efficiency chain)."))
+            for c in g.checks:
+                if c.key == "worm_deflection":    # issue 20: 濮良贵 ch.11 stiffness check
+                    i = c.inputs
+                    span = ((f"支承跨距 L = {f(i['L'] * MM, 1)} mm（设计任务给定）" if zh else
+                             f"bearing span L = {f(i['L'] * MM, 1)} mm (given in the brief)") if i["span_given"] else
+                            (f"支承跨距按 L ≈ 0.9 $d_2$ = {f(i['L'] * MM, 1)} mm 估计" if zh else
+                             f"bearing span estimated as L ≈ 0.9 $d_2$ = {f(i['L'] * MM, 1)} mm"))
+                    text.append((f"蜗杆轴刚度：把蜗杆视为简支梁，中点受 $F_{{t1}}$、$F_{{r1}}$，{span}，"
+                                 f"$I = \\pi d_{{f1}}^4/64$（$d_{{f1}} = d_1 - 2.4m = {f(i['df1'] * MM, 2)}$ mm），"
+                                 "E = 206 GPa，许用挠度 [y] = $d_1$/1000。") if zh else
+                                (f"Worm shaft stiffness: the worm as a simply supported beam loaded by $F_{{t1}}$ and "
+                                 f"$F_{{r1}}$ at mid-span, {span}, $I = \\pi d_{{f1}}^4/64$ ($d_{{f1}} = d_1 - 2.4m = "
+                                 f"{f(i['df1'] * MM, 2)}$ mm), E = 206 GPa, allowed deflection [y] = $d_1$/1000."))
             rows = [["$z_1 / z_2$", f"{r.z1} / {r.z2}", "—"], ["$m$", f(g.module * MM, 2), "mm"],
                     ["$q$", f(geo.q, 1), "—"], ["$d_1 / d_2$", f"{f(geo.d1 * MM, 2)} / {f(geo.d2 * MM, 2)}", "mm"],
                     ["$\\gamma$", f(np.degrees(geo.lead_angle), 3), "°"], ["$a$", f(e["a"] * MM, 2), "mm"],
@@ -222,8 +235,15 @@ def _belt_design(r, g, title: str, zh: bool) -> dict:
     P, Pca = b.power / 1e3, b.power_design / 1e3
     d1, d2, a0 = b.d1 * MM, b.d2 * MM, b.a0 * MM
     d2_calc = r.ratio_allocated * d1 * (1 - b.slip)
-    sec = f"{b.section}" + (("（设计任务给定）" if zh else " (given in the brief)") if b.section_given else
-                            ("（按选型图 8-11）" if zh else " (from the selection chart, fig. 8-11)"))
+    if b.section_given:
+        how = "（设计任务给定）" if zh else " (given in the brief)"
+    elif b.section_chart == b.section:
+        how = "（按选型图 8-11）" if zh else " (from the selection chart, fig. 8-11)"
+    else:
+        how = (f"（选型图 8-11 给出 {b.section_chart} 型，但其包角或根数校核不合格，改用 {b.section} 型）" if zh else
+               f" (the selection chart, fig. 8-11, gives {b.section_chart}, which fails the wrap-angle or "
+               f"belt-count check; {b.section} is used)")
+    sec = f"{b.section}{how}"
     if zh:
         text = [f"按濮良贵《机械设计》第 8 章设计普通 V 带：工况系数 $K_A = {f(b.KA, 2)}$（表 8-8），"
                 f"计算功率 $P_{{ca}} = {f(Pca, 3)}$ kW，小带轮转速 $n_1 = {f(b.n1_rpm, 0)}$ r/min，带型 {sec}；"
@@ -236,7 +256,7 @@ def _belt_design(r, g, title: str, zh: bool) -> dict:
                 "$K_\\alpha$、$K_L$ 查表 8-6、8-2；选型图边界为读图近似值，部分表值未能与原书逐一核对"
                 "（data/belts.yaml 注明）。"]
     else:
-        text = [f"Ordinary V-belts designed by 濮良贵 (Machine Design) ch.8: application factor $K_A = {f(b.KA, 2)}$ "
+        text = [f"Ordinary V-belts designed by PU Lianggui, Machine Design, ch.8: application factor $K_A = {f(b.KA, 2)}$ "
                 f"(table 8-8), design power $P_{{ca}} = {f(Pca, 3)}$ kW, small pulley speed $n_1 = {f(b.n1_rpm, 0)}$ rpm, "
                 f"section {sec}; small datum diameter $d_{{d1}} = {f(d1, 0)}$ mm ≥ $d_{{dmin}} = {f(b.d_min * MM, 0)}$ mm "
                 "(table 8-7, and a belt speed of at least 5 m/s), the large one from the datum series (table 8-9).",
@@ -296,7 +316,7 @@ def _chain_design(g, title: str, zh: bool) -> dict:
                 "$z_1 = 19$）代替（假设，见 data/chains.yaml）；中心距按链节数精确反算，"
                 f"压轴力 $F_Q = {f(c.FQ_factor, 1)} F_e$。"]
     else:
-        text = [f"Roller chain (A series, {c.rows} row(s)) designed by 濮良贵 (Machine Design) ch.9: application factor "
+        text = [f"Roller chain (A series, {c.rows} row(s)) designed by PU Lianggui, Machine Design, ch.9: application factor "
                 f"$K_A = {f(c.KA, 2)}$ (table 9-6), tooth factor $K_z = (19/z_1)^{{1.08}} = {f(c.Kz, 3)}$, row factor "
                 f"$K_p = {f(c.Kp, 2)}$; {how}: {c.chain} (p = {f(p, 3)} mm), rated power of one strand "
                 f"{f(c.rated_power / 1e3, 3)} kW.",

@@ -9,7 +9,8 @@ Assumptions stated in the report:
 - the section from the selection chart (fig. 8-11, its boundaries read off the chart),
   the brief's ``section`` overrides; d_d1 = 100 mm (the program's default), raised to the
   section's d_dmin (table 8-7, then the next datum diameter of the series) when smaller;
-- a0 = d_d1 + d_d2 rounded up to 10 mm unless the brief gives ``center_distance_mm``;
+- a0 = d_d1 + d_d2 rounded up to 10 mm (raised by 10 mm steps while α1 < 120°, at most
+  2 (d_d1 + d_d2)) unless the brief gives ``center_distance_mm``;
 - P0 interpolated bilinearly in n1 and d_d1, ΔP0 linearly in n1 (nearest row/column
   outside the tables);
 - tips: s_a ≥ 0.25 m (through-hardened), 0.4 m (surface-hardened, carburised, nitrided);
