@@ -254,7 +254,7 @@ def _belt_design(r, g, title: str, zh: bool) -> dict:
                 f"$a_{{min}} … a_{{max}} = {f(b.a_min * MM, 0)} … {f(b.a_max * MM, 0)}$ mm。"
                 f"$P_0$ 由表 8-4 按 $n_1$ 与 $d_{{d1}}$ 双线性插值，$\\Delta P_0$ 由表 8-5 按 $n_1$ 线性插值，"
                 "$K_\\alpha$、$K_L$ 查表 8-6、8-2；选型图边界为读图近似值，部分表值未能与原书逐一核对"
-                "（data/belts.yaml 注明）。"]
+                "（程序的数据文件中逐项注明）。"]
     else:
         text = [f"Ordinary V-belts designed by PU Lianggui, Machine Design, ch.8: application factor $K_A = {f(b.KA, 2)}$ "
                 f"(table 8-8), design power $P_{{ca}} = {f(Pca, 3)}$ kW, small pulley speed $n_1 = {f(b.n1_rpm, 0)}$ rpm, "
@@ -312,8 +312,8 @@ def _chain_design(g, title: str, zh: bool) -> dict:
         text = [f"按濮良贵《机械设计》第 9 章设计滚子链（A 系列，{c.rows} 排）：工况系数 $K_A = {f(c.KA, 2)}$（表 9-6），"
                 f"小链轮齿数系数 $K_z = (19/z_1)^{{1.08}} = {f(c.Kz, 3)}$，多排链系数 $K_p = {f(c.Kp, 2)}$；"
                 f"{how}：{c.chain}（p = {f(p, 3)} mm），单排额定功率 {f(c.rated_power / 1e3, 3)} kW。",
-                "图 9-11 的额定功率曲线未能按原图录入，以 ANSI B29.1 的额定功率公式（Shigley 式 17-32、17-33，"
-                "$z_1 = 19$）代替（假设，见 data/chains.yaml）；中心距按链节数精确反算，"
+                "图 9-11 的额定功率曲线未能按原图录入，以 ANSI B29.1 的额定功率公式（希格利《机械工程设计》式 17-32、"
+                "17-33，$z_1 = 19$）代替（假设，见程序的数据文件）；中心距按链节数精确反算，"
                 f"压轴力 $F_Q = {f(c.FQ_factor, 1)} F_e$。"]
     else:
         text = [f"Roller chain (A series, {c.rows} row(s)) designed by PU Lianggui, Machine Design, ch.9: application factor "

@@ -150,18 +150,18 @@ def gear_geometry_checks(design, s) -> tuple[Check, ...]:
     for k, (gd, mat) in enumerate(((pair.g1, design.materials[0]), (pair.g2, design.materials[1]))):
         who_zh, who_en = ("小齿轮", "Pinion") if k == 0 else ("大齿轮", "Gear")
         factor = 0.4 if _hardened(mat) else 0.25
-        out.append(Check("tooth_tip", f"{who_zh}齿顶厚 s_a ≥ {factor:g}m", f"{who_en} tip thickness s_a ≥ {factor:g} m",
+        out.append(Check("tooth_tip", f"{who_zh}齿顶厚", f"{who_en} tip thickness",
                          "s_a", gd.sa, factor * m, "mm", "ge", gd.sa >= factor * m - 1e-12,
                          {"m": m, "factor": factor, "z": float(gd.z), "x": gd.x}))
         # x ≥ x_min = h_a*(z_min − z)/z_min, checked as z ≥ z_min (1 − x/h_a*) (a positive
         # quantity, so the margin 1 − allowable/value is defined)
         x_min = ha_star * (z_min - zs[k]) / z_min
         z_need = z_min * (1 - gd.x / ha_star)
-        out.append(Check("undercut", f"{who_zh}不根切 z ≥ z_min(1 − x)", f"{who_en} free of undercut z ≥ z_min(1 − x)",
+        out.append(Check("undercut", f"{who_zh}不根切", f"{who_en} free of undercut",
                          "z", float(zs[k]), z_need, "1", "ge", gd.x >= x_min - 1e-9,
                          {"x": gd.x, "x_min": x_min, "z_min": z_min, "ha_star": ha_star}))
     eps = design.extra["eps_alpha"]
-    out.append(Check("contact_ratio", "重合度 ε_α ≥ 1.2", "Contact ratio ε_α ≥ 1.2", "\\varepsilon_\\alpha",
+    out.append(Check("contact_ratio", "重合度", "Contact ratio", "\\varepsilon_\\alpha",
                      eps, EPS_ALPHA_MIN, "1", "ge", eps >= EPS_ALPHA_MIN, {}))
     return tuple(out)
 
