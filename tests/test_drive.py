@@ -19,6 +19,9 @@ from mechdesign.core import drive as core
 from mechdesign.stages.drive import design_drive, motor_catalogue
 
 
+#: issue 20: every gear stage also checks its tips, undercut and contact ratio
+GEOMETRY_CHECKS = ["tooth_tip", "undercut", "tooth_tip", "undercut", "contact_ratio"]
+
 def _brief(stages, load=None, motor=None):
     data = {"machine": "drive", "report": {"title": "t", "student": "s"},
             "load": load or {"output_speed_rpm": 20, "stroke": {
@@ -171,7 +174,8 @@ def test_furnace_drive_strength_checks_by_hand():
     assert all(c.passed for sh in d.shaft_designs for c in sh.checks)
     # Open gears: no contact check, the module is designed by bending with wear, ≥ 2 mm.
     spur = d.stages[2].design
-    assert [c.key for c in spur.checks] == ["gear_bending", "gear_bending"]
+    # (issue 20: the geometric checks of the stage follow the strength checks)
+    assert [c.key for c in spur.checks] == ["gear_bending", "gear_bending"] + GEOMETRY_CHECKS
     assert spur.module >= 0.002
 
 
@@ -208,6 +212,6 @@ def test_two_stage_helical_reducer_is_designed_and_checked():
     assert fast.ratio_allocated == pytest.approx(np.sqrt(1.4 * fast.ratio_allocated * slow.ratio_allocated))
     g = fast.design.geometry
     assert g.mt == pytest.approx(g.mn / np.cos(np.radians(14.0)))
-    assert [c.key for c in fast.design.checks] == ["gear_contact", "gear_bending", "gear_bending"]
+    assert [c.key for c in fast.design.checks] == ["gear_contact", "gear_bending", "gear_bending"] + GEOMETRY_CHECKS
     assert all(c.passed for c in fast.design.checks + slow.design.checks)
     assert fast.design.forces["Fa"] == pytest.approx(fast.design.forces["Ft"] * np.tan(np.radians(14.0)))

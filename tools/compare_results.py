@@ -99,6 +99,25 @@ _EXACT_WORK = [
      "bounded search between samples), not the largest grid sample"),
     ("verification.energy_ratio", _WHY + " (now 1 to round-off)"),
 ]
+# Issue 20 (V-belts, gear-stage geometry, worm deflection): the V-belt is designed by 濮良贵
+# ch.8; without d1_mm in the brief d_d1 is raised from 100 mm to the datum diameter giving a
+# belt speed v ≥ 5 m/s (the shaper's 960/710-rpm motors: 106 mm), so d_d2 and the realised
+# ratio follow; every gear stage checks its tips, undercut and contact ratio, a worm stage
+# its shaft's deflection (more checks per stage; the smallest margin may now be one of them).
+_BELT = "issue 20: V-belt designed (濮良贵 ch.8): d_d1 raised to 106 mm for v ≥ 5 m/s; d_d2, the ratio follow"
+_GEO = "issue 20: gear stages check tips, undercut, contact ratio; worm stages the shaft deflection"
+for _machine in ("shaper", "slotter"):
+    EXPECTED.setdefault(_machine, []).extend([("drive.output_speed_rpm", _BELT), ("drive.speed_error", _BELT)])
+for _machine in ("drive", "furnace_pusher"):
+    EXPECTED.setdefault(_machine, []).extend([
+        ("drive.stages.*.design.checks.__len__", _GEO),
+        ("verification.checks.*.detail.checks", _GEO + " (checks per group)"),
+        ("verification.checks.*.detail.check_zh", _GEO + " (the check with the smallest margin)"),
+        ("verification.checks.*.detail.check_en", _GEO + " (the check with the smallest margin)"),
+        # the margins follow the eight fixed drive self-checks (indices 8 on)
+        ("verification.checks.[89].value", _GEO + " (the smallest margin of a stage)"),
+        ("verification.checks.1[0-9].value", _GEO + " (the smallest margin of a stage)")])
+
 _EXACT_QUALITY = "γ_min / α_max of each group now refined between the samples (Brent), the working stroke's ends included"
 _EXACT_WORK += [("*quality.*.extreme", _EXACT_QUALITY), ("*quality.*.extreme_phase", _EXACT_QUALITY),
                 ("*quality.*.working_extreme", _EXACT_QUALITY),

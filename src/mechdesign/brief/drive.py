@@ -20,8 +20,8 @@ StageType = Literal["coupling", "belt", "chain", "spur", "helical", "worm"]
 
 _FIELDS_BY_TYPE = {
     "coupling": set(),
-    "belt": {"ratio", "d1_mm", "d2_mm", "slip"},
-    "chain": {"ratio", "z1", "z2"},
+    "belt": {"ratio", "d1_mm", "d2_mm", "slip", "section", "center_distance_mm", "application_factor_KA"},
+    "chain": {"ratio", "z1", "z2", "chain", "rows", "center_distance_mm", "application_factor_KA"},
     "spur": {"ratio", "z1", "z2", "module_mm", "open", "face_width_factor", "pinion_material",
              "gear_material", "x1", "x2", "span_mm"},
     "helical": {"ratio", "z1", "z2", "module_mm", "helix_angle_deg", "face_width_factor",
@@ -30,7 +30,8 @@ _FIELDS_BY_TYPE = {
 }
 _OPTIONAL = ("ratio", "d1_mm", "d2_mm", "slip", "z1", "z2", "module_mm", "open", "face_width_factor",
              "pinion_material", "gear_material", "x1", "x2", "helix_angle_deg", "q",
-             "wheel_material", "span_mm")
+             "wheel_material", "span_mm", "section", "center_distance_mm", "application_factor_KA",
+             "chain", "rows")
 
 
 def check_material(value: str | None, which: str) -> str | None:
@@ -78,6 +79,17 @@ class DriveStage(StrictModel):
     d1_mm: Optional[float] = Field(None, gt=20, le=2000, description="Small pulley datum diameter d1 [mm] (default 100)")
     d2_mm: Optional[float] = Field(None, gt=20, le=5000, description="Large pulley datum diameter d2 [mm]")
     slip: Optional[float] = Field(None, ge=0, le=0.05, description="Belt elastic slip ε (default 0.015)")
+    section: Optional[Literal["Z", "A", "B"]] = Field(None, description=(
+        "V-belt section (带型), default from the selection chart (濮良贵 fig. 8-11) by P_ca and n1"))
+    chain: Optional[Literal["08A", "10A", "12A", "16A", "20A", "24A", "28A", "32A"]] = Field(None, description=(
+        "Roller chain number (链号, A series); default the smallest whose rated power carries P_ca"))
+    rows: Optional[int] = Field(None, ge=1, le=3, description="Roller chain rows (排数, default 1)")
+    center_distance_mm: Optional[float] = Field(None, gt=50, le=5000, description=(
+        "Initial centre distance a0 [mm]: V-belt default d1 + d2 rounded up to 10 mm "
+        "(0.7 (d1 + d2) … 2 (d1 + d2)); chain default 40 p (30 … 50 p)"))
+    application_factor_KA: Optional[float] = Field(None, ge=1, le=2.5, description=(
+        "Application factor K_A of the belt (工况系数, 濮良贵 table 8-8) or the chain (table 9-6); "
+        "default from the drive's load class (and, for belts, the hours per day)"))
     span_mm: Optional[float] = Field(None, gt=20, le=3000, description=(
         "Bearing span of the stage's output shaft [mm] (default: face width + 2 × 60 mm)"))
     efficiency: Optional[float] = Field(None, gt=0.3, le=1, description=(
@@ -108,6 +120,13 @@ class DriveStage(StrictModel):
             out.add("d2_mm", self.d2_mm,
                     f"a reduction drive: the driven pulley d2 must be at least d1_mm = {self.d1_mm:g}",
                     f"减速传动：从动带轮 d2 须不小于 d1_mm = {self.d1_mm:g}")
+        if self.type == "belt" and self.center_distance_mm is not None and self.d1_mm and self.d2_mm:
+            lo, hi = 0.7 * (self.d1_mm + self.d2_mm), 2 * (self.d1_mm + self.d2_mm)
+            if not lo <= self.center_distance_mm <= hi:
+                out.add("center_distance_mm", self.center_distance_mm,
+                        f"the initial centre distance must lie in 0.7 (d1 + d2) … 2 (d1 + d2) = "
+                        f"{lo:g} … {hi:g} mm",
+                        f"初定中心距须在 0.7(d1 + d2) … 2(d1 + d2) = {lo:g} … {hi:g} mm 之内")
         if self.z1 is not None and self.z2 is not None and self.z2 < self.z1:
             what, what_zh = (("worm wheel", "蜗轮") if self.type == "worm" else
                              ("driven wheel", "从动轮"))
@@ -312,6 +331,11 @@ class StageParams:
     span: float | None          # [m]
     efficiency: float | None
     index: int                  # position in the brief's list (for messages)
+    section: str | None = None          # V-belt section; None = from the selection chart
+    center_distance: float | None = None  # [m] V-belt a0; None = default
+    belt_KA: float | None = None        # V-belt / chain K_A; None = table 8-8 / 9-6
+    chain: str | None = None            # chain number; None = from the rated power
+    rows: int = 1                       # chain rows
 
 
 @dataclass(frozen=True)
@@ -325,6 +349,7 @@ class DriveParams:
     machine_eff: float
     shafts: tuple = ()          # ShaftChoice, by shaft number
     factors: tuple = ()         # (name, value) of the given gear factors (K_V, K_beta, S_F, S_H)
+    hours_per_day: float = 16.0  # [h] (the belt's K_A, table 8-8)
 
 
 @dataclass(frozen=True)
@@ -355,7 +380,9 @@ def _stage_to_si(s: DriveStage, index: int) -> StageParams:
         d1=None if s.d1_mm is None else s.d1_mm * mm, d2=None if s.d2_mm is None else s.d2_mm * mm,
         slip=s.slip if s.slip is not None else 0.015,
         span=None if s.span_mm is None else s.span_mm * mm,
-        efficiency=s.efficiency, index=index)
+        efficiency=s.efficiency, index=index, section=s.section,
+        center_distance=None if s.center_distance_mm is None else s.center_distance_mm * mm,
+        belt_KA=s.application_factor_KA, chain=s.chain, rows=s.rows or 1)
 
 
 def drive_to_si(d: DriveSection) -> DriveParams:
@@ -368,7 +395,8 @@ def drive_to_si(d: DriveSection) -> DriveParams:
         bearing_eff=d.efficiencies.bearing_pair, machine_eff=d.efficiencies.machine,
         shafts=tuple(ShaftChoice(o.shaft, o.material, _mm(o.end_mm), _mm(o.journal_mm), _mm(o.seat_mm),
                                  o.bearing, _mm(o.key_length_mm), i) for i, o in enumerate(d.shafts)),
-        factors=tuple((k, v) for k, v in d.factors.model_dump().items() if v is not None))
+        factors=tuple((k, v) for k, v in d.factors.model_dump().items() if v is not None),
+        hours_per_day=sv.hours_per_day)
 
 
 def _mm(v: float | None) -> float | None:

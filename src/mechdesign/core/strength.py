@@ -24,7 +24,9 @@ from .fields import q
 Sense = Literal["le", "ge"]
 
 #: Factor from the SI value of a :class:`Check` to its course display unit.
-COURSE_SCALE: dict[str, float] = {"MPa": 1e-6, "h": 1.0 / 3600.0, "°C": 1.0, "mm": 1e3, "1": 1.0}
+COURSE_SCALE: dict[str, float] = {"MPa": 1e-6, "h": 1.0 / 3600.0, "°C": 1.0, "mm": 1e3,
+                                  "m/s": 1.0, "°": 180.0 / math.pi, "1": 1.0, "kW": 1e-3,
+                                  "μm": 1e6}
 
 
 @dataclass(frozen=True)
@@ -44,7 +46,7 @@ class Check:
     value: float = q("Pa, s, °C or m", "the checked quantity, SI (stress Pa, life s, oil temperature °C, "
                      "diameter m; `unit` says which)")
     allowable: float = q("Pa, s, °C or m", "its allowable value, same unit")
-    unit: str = q("", "course display unit of value/allowable: 'MPa', 'h', '°C' or 'mm'")
+    unit: str = q("", "course display unit of value/allowable: 'MPa', 'h', '°C', 'mm' (issue 20 also 'm/s', '°', 'kW', 'μm', '1')")
     sense: Sense = q("", "'le': value ≤ allowable passes; 'ge': value ≥ allowable passes")
     passed: bool = q("", "the verdict")
     inputs: dict[str, float] = q("SI", "every factor the formula used, each in its SI unit "

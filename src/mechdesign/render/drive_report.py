@@ -113,19 +113,15 @@ def stage_designs(d, lang: str) -> list[dict]:
     out = []
     for r in d.stages:
         g = r.design
-        if g is None or g.kind not in ("gear", "worm", "belt"):
+        if g is None or g.kind not in ("gear", "worm", "belt", "chain"):
             continue
         title = (f"第 {r.index + 1} 级：{r.name_zh}" if zh else f"Stage {r.index + 1}: {r.name_en}")
         text, rows = [], []
         if g.kind == "belt":
-            text.append("带轮基准直径取标准系列值；V 带型号与根数的选择不在本程序范围内，作用在轴上的压力按有效拉力的 1.5 倍估计。"
-                        if zh else "Pulley datum diameters from the standard series; choosing the V-belt section "
-                        "and number is outside this program; the load on the shafts is estimated as 1.5 × the effective pull.")
-            rows = [["$d_1$", f(r.d1 * MM, 0), "mm"], ["$d_2$", f(r.d2 * MM, 0), "mm"],
-                    ["$\\varepsilon$", f(r.slip, 3), "—"], ["$v$", f(g.extra["v"], 2), "m/s"],
-                    ["$F_Q$", f(g.forces["Q"], 1), "N"]]
-            out.append({"title": title, "text": text, "rows": rows, "formulas": [], "checks": [],
-                        "refs": ("gb13575",)})
+            out.append(_belt_design(r, g, title, zh))
+            continue
+        if g.kind == "chain":
+            out.append(_chain_design(g, title, zh))
             continue
         m_text = (f"{f(g.module * MM, 2)} mm" + ("" if g.module_given else
                   (f"（设计公式得 {f(g.module_min * MM, 3)} mm，取标准值）" if zh else
@@ -178,6 +174,19 @@ def stage_designs(d, lang: str) -> list[dict]:
                         (f"Sliding speed $v_s = {f(e['vs'], 3)}$ m/s, equivalent friction angle $\\varphi_v = "
                          f"{f(np.degrees(e['phi_v']), 3)}°$, efficiency $\\eta = 0.95\\tan\\gamma/\\tan(\\gamma+\\varphi_v) = "
                          f"{f(e['eta'], 4)}$ (used in the efficiency chain)."))
+            for c in g.checks:
+                if c.key == "worm_deflection":    # issue 20: 濮良贵 ch.11 stiffness check
+                    i = c.inputs
+                    span = ((f"支承跨距 L = {f(i['L'] * MM, 1)} mm（设计任务给定）" if zh else
+                             f"bearing span L = {f(i['L'] * MM, 1)} mm (given in the brief)") if i["span_given"] else
+                            (f"支承跨距按 L ≈ 0.9 $d_2$ = {f(i['L'] * MM, 1)} mm 估计" if zh else
+                             f"bearing span estimated as L ≈ 0.9 $d_2$ = {f(i['L'] * MM, 1)} mm"))
+                    text.append((f"蜗杆轴刚度：把蜗杆视为简支梁，中点受 $F_{{t1}}$、$F_{{r1}}$，{span}，"
+                                 f"$I = \\pi d_{{f1}}^4/64$（$d_{{f1}} = d_1 - 2.4m = {f(i['df1'] * MM, 2)}$ mm），"
+                                 "E = 206 GPa，许用挠度 [y] = $d_1$/1000。") if zh else
+                                (f"Worm shaft stiffness: the worm as a simply supported beam loaded by $F_{{t1}}$ and "
+                                 f"$F_{{r1}}$ at mid-span, {span}, $I = \\pi d_{{f1}}^4/64$ ($d_{{f1}} = d_1 - 2.4m = "
+                                 f"{f(i['df1'] * MM, 2)}$ mm), E = 206 GPa, allowed deflection [y] = $d_1$/1000."))
             rows = [["$z_1 / z_2$", f"{r.z1} / {r.z2}", "—"], ["$m$", f(g.module * MM, 2), "mm"],
                     ["$q$", f(geo.q, 1), "—"], ["$d_1 / d_2$", f"{f(geo.d1 * MM, 2)} / {f(geo.d2 * MM, 2)}", "mm"],
                     ["$\\gamma$", f(np.degrees(geo.lead_angle), 3), "°"], ["$a$", f(e["a"] * MM, 2), "mm"],
@@ -235,6 +244,126 @@ def stage_designs(d, lang: str) -> list[dict]:
                     "formulas": [eq for c in sh.checks for eq in check_formulas(c)], "checks": _rows(check_rows(sh.checks, lang), zh),
                     "refs": ("pu8", "gb1096", *bearing_std)})
     return out
+
+
+def _belt_design(r, g, title: str, zh: bool) -> dict:
+    """The V-belt subsection: each step of 濮良贵 ch.8 with its rule and its numbers."""
+    from .strength_tex import check_rows, num
+
+    b = g.geometry
+    deg = np.degrees
+    P, Pca = b.power / 1e3, b.power_design / 1e3
+    d1, d2, a0 = b.d1 * MM, b.d2 * MM, b.a0 * MM
+    d2_calc = r.ratio_allocated * d1 * (1 - b.slip)
+    if b.section_given:
+        how = "（设计任务给定）" if zh else " (given in the brief)"
+    elif b.section_chart == b.section:
+        how = "（按选型图 8-11）" if zh else " (from the selection chart, fig. 8-11)"
+    else:
+        how = (f"（选型图 8-11 给出 {b.section_chart} 型，但其包角或根数校核不合格，改用 {b.section} 型）" if zh else
+               f" (the selection chart, fig. 8-11, gives {b.section_chart}, which fails the wrap-angle or "
+               f"belt-count check; {b.section} is used)")
+    sec = f"{b.section}{how}"
+    if zh:
+        text = [f"按濮良贵《机械设计》第 8 章设计普通 V 带：工况系数 $K_A = {f(b.KA, 2)}$（表 8-8），"
+                f"计算功率 $P_{{ca}} = {f(Pca, 3)}$ kW，小带轮转速 $n_1 = {f(b.n1_rpm, 0)}$ r/min，带型 {sec}；"
+                f"小带轮基准直径 $d_{{d1}} = {f(d1, 0)}$ mm ≥ $d_{{dmin}} = {f(b.d_min * MM, 0)}$ mm（表 8-7，"
+                "并使带速不低于 5 m/s），大带轮取基准直径系列值（表 8-9）。",
+                f"初定中心距 $a_0 = {f(a0, 0)}$ mm（$0.7(d_{{d1}}+d_{{d2}}) = {f(b.a0_min * MM, 0)}$ … "
+                f"$2(d_{{d1}}+d_{{d2}}) = {f(b.a0_max * MM, 0)}$ mm）；安装、张紧范围 "
+                f"$a_{{min}} … a_{{max}} = {f(b.a_min * MM, 0)} … {f(b.a_max * MM, 0)}$ mm。"
+                f"$P_0$ 由表 8-4 按 $n_1$ 与 $d_{{d1}}$ 双线性插值，$\\Delta P_0$ 由表 8-5 按 $n_1$ 线性插值，"
+                "$K_\\alpha$、$K_L$ 查表 8-6、8-2；选型图边界为读图近似值，部分表值未能与原书逐一核对"
+                "（程序的数据文件中逐项注明）。"]
+    else:
+        text = [f"Ordinary V-belts designed by PU Lianggui, Machine Design, ch.8: application factor $K_A = {f(b.KA, 2)}$ "
+                f"(table 8-8), design power $P_{{ca}} = {f(Pca, 3)}$ kW, small pulley speed $n_1 = {f(b.n1_rpm, 0)}$ rpm, "
+                f"section {sec}; small datum diameter $d_{{d1}} = {f(d1, 0)}$ mm ≥ $d_{{dmin}} = {f(b.d_min * MM, 0)}$ mm "
+                "(table 8-7, and a belt speed of at least 5 m/s), the large one from the datum series (table 8-9).",
+                f"Initial centre distance $a_0 = {f(a0, 0)}$ mm ($0.7(d_{{d1}}+d_{{d2}}) = {f(b.a0_min * MM, 0)}$ … "
+                f"$2(d_{{d1}}+d_{{d2}}) = {f(b.a0_max * MM, 0)}$ mm); fitting and take-up range "
+                f"$a_{{min}} … a_{{max}} = {f(b.a_min * MM, 0)} … {f(b.a_max * MM, 0)}$ mm. "
+                "$P_0$ interpolated bilinearly in $n_1$ and $d_{d1}$ (table 8-4), $\\Delta P_0$ linearly in $n_1$ "
+                "(table 8-5), $K_\\alpha$ and $K_L$ from tables 8-6 and 8-2; the selection chart's boundaries are "
+                "read off the figure and some table values could not be checked against the book "
+                "(stated in data/belts.yaml)."]
+    rows = [[("带型" if zh else "Section"), b.section, "—"],
+            ["$d_{d1} / d_{d2}$", f"{f(d1, 0)} / {f(d2, 0)}", "mm"], ["$v$", f(b.v, 2), "m/s"],
+            ["$L_d$", f(b.L_d * MM, 0), "mm"], ["$a$", f(b.a * MM, 1), "mm"],
+            ["$\\alpha_1$", f(deg(b.alpha1), 2), "°"], ["$z$", str(b.z), "—"],
+            ["$F_0$", f(b.F0, 1), "N"], ["$F_p$", f(b.Fp, 1), "N"]]
+    d2_eq = (rf"d_{{d2}} = i\,d_{{d1}}(1-\varepsilon) = {num(r.ratio_allocated)} \times {num(d1)} \times "
+             rf"(1-{num(b.slip)}) = {num(d2_calc)}\ \text{{mm}} \rightarrow {num(d2)}\ \text{{mm}}"
+             if not r.fixed else rf"d_{{d2}} = {num(d2)}\ \text{{mm}}")
+    formulas = [
+        rf"P_{{ca}} = K_A P = {num(b.KA)} \times {num(P)} = {num(Pca)}\ \text{{kW}}",
+        rf"v = \frac{{\pi d_{{d1}} n_1}}{{60 \times 1000}} = \frac{{\pi \times {num(d1)} \times {num(b.n1_rpm)}}}"
+        rf"{{60000}} = {num(b.v)}\ \text{{m/s}}",
+        d2_eq,
+        rf"L_{{d0}} = 2a_0 + \frac{{\pi}}{{2}}(d_{{d1}}+d_{{d2}}) + \frac{{(d_{{d2}}-d_{{d1}})^2}}{{4a_0}} = "
+        rf"2 \times {num(a0)} + \frac{{\pi}}{{2}} \times {num(d1 + d2)} + \frac{{{num(d2 - d1)}^2}}{{4 \times {num(a0)}}}"
+        rf" = {num(b.L_d0 * MM)}\ \text{{mm}} \rightarrow L_d = {num(b.L_d * MM)}\ \text{{mm}},\ K_L = {num(b.K_L)}",
+        rf"a = a_0 + \frac{{L_d - L_{{d0}}}}{{2}} = {num(a0)} + \frac{{{num(b.L_d * MM)} - {num(b.L_d0 * MM)}}}{{2}}"
+        rf" = {num(b.a * MM)}\ \text{{mm}}",
+        rf"\alpha_1 = 180^\circ - \frac{{d_{{d2}} - d_{{d1}}}}{{a}} \times \frac{{180^\circ}}{{\pi}} = 180^\circ - "
+        rf"\frac{{{num(d2 - d1)}}}{{{num(b.a * MM)}}} \times \frac{{180^\circ}}{{\pi}} = {num(deg(b.alpha1))}^\circ",
+        rf"z = \frac{{P_{{ca}}}}{{(P_0 + \Delta P_0) K_\alpha K_L}} = \frac{{{num(Pca)}}}{{({num(b.P0 / 1e3)} + "
+        rf"{num(b.dP0 / 1e3)}) \times {num(b.K_alpha)} \times {num(b.K_L)}}} = {num(b.z_exact)} \rightarrow z = {b.z}",
+        rf"F_0 = 500 \frac{{(2.5 - K_\alpha) P_{{ca}}}}{{K_\alpha z v}} + q v^2 = 500 \times \frac{{(2.5 - "
+        rf"{num(b.K_alpha)}) \times {num(Pca)}}}{{{num(b.K_alpha)} \times {b.z} \times {num(b.v)}}} + {num(b.q_mass)}"
+        rf" \times {num(b.v)}^2 = {num(b.F0)}\ \text{{N}}",
+        rf"F_p = 2 z F_0 \sin\frac{{\alpha_1}}{{2}} = 2 \times {b.z} \times {num(b.F0)} \times \sin"
+        rf"\frac{{{num(deg(b.alpha1))}^\circ}}{{2}} = {num(b.Fp)}\ \text{{N}}",
+    ]
+    return {"title": title, "text": text, "rows": rows, "formulas": formulas,
+            "checks": _rows(check_rows(g.checks, "zh" if zh else "en"), zh), "refs": ("pu9", "gb13575")}
+
+
+def _chain_design(g, title: str, zh: bool) -> dict:
+    """The roller-chain subsection: each step of 濮良贵 ch.9 §9-5 with its numbers."""
+    from .strength_tex import check_rows, num
+
+    c = g.geometry
+    p = c.pitch * MM
+    P, Pca = c.power / 1e3, c.power_design / 1e3
+    how = ((("链号由设计任务给定" if zh else "the chain given in the brief")) if c.chain_given else
+           ("取额定功率不小于 $P_{ca}$ 的最小链号" if zh else "the smallest chain whose rated power carries $P_{ca}$"))
+    if zh:
+        text = [f"按濮良贵《机械设计》第 9 章设计滚子链（A 系列，{c.rows} 排）：工况系数 $K_A = {f(c.KA, 2)}$（表 9-6），"
+                f"小链轮齿数系数 $K_z = (19/z_1)^{{1.08}} = {f(c.Kz, 3)}$，多排链系数 $K_p = {f(c.Kp, 2)}$；"
+                f"{how}：{c.chain}（p = {f(p, 3)} mm），单排额定功率 {f(c.rated_power / 1e3, 3)} kW。",
+                "图 9-11 的额定功率曲线未能按原图录入，以 ANSI B29.1 的额定功率公式（希格利《机械工程设计》式 17-32、"
+                "17-33，$z_1 = 19$）代替（假设，见程序的数据文件）；中心距按链节数精确反算，"
+                f"压轴力 $F_Q = {f(c.FQ_factor, 1)} F_e$。"]
+    else:
+        text = [f"Roller chain (A series, {c.rows} row(s)) designed by PU Lianggui, Machine Design, ch.9: application factor "
+                f"$K_A = {f(c.KA, 2)}$ (table 9-6), tooth factor $K_z = (19/z_1)^{{1.08}} = {f(c.Kz, 3)}$, row factor "
+                f"$K_p = {f(c.Kp, 2)}$; {how}: {c.chain} (p = {f(p, 3)} mm), rated power of one strand "
+                f"{f(c.rated_power / 1e3, 3)} kW.",
+                "The rated-power chart (fig. 9-11) could not be typed from the book: the ANSI B29.1 rating formulas "
+                "(Shigley eqs. 17-32, 17-33, at $z_1 = 19$) stand in for it (an assumption, see data/chains.yaml); "
+                f"the centre distance is the exact inverse of the link count; the load on the shafts $F_Q = "
+                f"{f(c.FQ_factor, 1)} F_e$."]
+    rows = [[("链号" if zh else "Chain"), c.chain, "—"], ["$z_1 / z_2$", f"{c.z1} / {c.z2}", "—"],
+            ["$p$", f(p, 3), "mm"], ["$L_p$", str(c.L_p), "—"], ["$a$", f(c.a * MM, 1), "mm"],
+            ["$v$", f(c.v, 3), "m/s"], ["$F_e$", f(c.Fe, 1), "N"], ["$F_Q$", f(c.FQ, 1), "N"]]
+    formulas = [
+        rf"P_{{ca}} = \frac{{K_A K_z P}}{{K_p}} = \frac{{{num(c.KA)} \times {num(c.Kz)} \times {num(P)}}}"
+        rf"{{{num(c.Kp)}}} = {num(Pca)}\ \text{{kW}}",
+        rf"L_{{p0}} = \frac{{2a_0}}{{p}} + \frac{{z_1 + z_2}}{{2}} + \frac{{p}}{{a_0}}\left(\frac{{z_2 - z_1}}"
+        rf"{{2\pi}}\right)^2 = \frac{{2 \times {num(c.a0 * MM)}}}{{{num(p)}}} + \frac{{{c.z1 + c.z2}}}{{2}} + "
+        rf"\frac{{{num(p)}}}{{{num(c.a0 * MM)}}}\left(\frac{{{c.z2 - c.z1}}}{{2\pi}}\right)^2 = {num(c.L_p0)}"
+        rf" \rightarrow L_p = {c.L_p}",
+        rf"a = \frac{{p}}{{4}}\left[\left(L_p - \frac{{z_1 + z_2}}{{2}}\right) + \sqrt{{\left(L_p - "
+        rf"\frac{{z_1 + z_2}}{{2}}\right)^2 - 8\left(\frac{{z_2 - z_1}}{{2\pi}}\right)^2}}\right] = "
+        rf"{num(c.a * MM)}\ \text{{mm}}",
+        rf"v = \frac{{z_1 n_1 p}}{{60 \times 1000}} = \frac{{{c.z1} \times {num(c.n1_rpm)} \times {num(p)}}}"
+        rf"{{60000}} = {num(c.v)}\ \text{{m/s}}",
+        rf"F_Q = {num(c.FQ_factor)} F_e = {num(c.FQ_factor)} \times \frac{{1000 P}}{{v}} = {num(c.FQ_factor)} "
+        rf"\times \frac{{1000 \times {num(P)}}}{{{num(c.v)}}} = {num(c.FQ)}\ \text{{N}}",
+    ]
+    return {"title": title, "text": text, "rows": rows, "formulas": formulas,
+            "checks": _rows(check_rows(g.checks, "zh" if zh else "en"), zh), "refs": ("pu9",)}
 
 
 # --------------------------------------------------------------------------- machine: drive

@@ -14,7 +14,7 @@ from ..core.strength import COURSE_SCALE, Check
 from .fmt import f
 
 #: Decimals of the value and allowable columns per course unit.
-DIGITS = {"MPa": 1, "h": 0, "°C": 1, "mm": 2}
+DIGITS = {"MPa": 1, "h": 0, "°C": 1, "mm": 2, "m/s": 2, "°": 1, "1": 2, "kW": 3, "μm": 2}
 
 N_MM = 1e3      # N·m → N·mm
 MM = 1e3        # m → mm
@@ -151,6 +151,33 @@ def _key_crushing(c: Check) -> str:
 def _bearing_static(c: Check) -> str:
     i = c.inputs
     return (rf"\frac{{C_0}}{{P_0}} = \frac{{{num(i['C0'])}}}{{{num(i['P0'])}}}" + _tail(c, r"S_0"))
+def _rel(check: Check) -> str:
+    return _relation(check)
+
+
+def _tooth_tip(c: Check) -> str:
+    i = c.inputs
+    return (rf"s_a = {num(c.value * MM)}\ \text{{mm}} {_rel(c)} {num(i['factor'])} m = {num(i['factor'])} \times "
+            rf"{num(i['m'] * MM)} = {num(c.allowable * MM)}\ \text{{mm}}")
+
+
+def _undercut(c: Check) -> str:
+    i = c.inputs
+    return (rf"x = {num(i['x'], 3) if i['x'] else '0'} {_rel(c)} x_{{min}} = \frac{{h_a^*(z_{{min}} - z)}}{{z_{{min}}}} = "
+            rf"\frac{{{num(i['ha_star'])} \times ({num(i['z_min'])} - {num(c.value)})}}{{{num(i['z_min'])}}} = "
+            rf"{num(i['x_min'], 3) if abs(i['x_min']) > 1e-12 else '0'}")
+
+
+def _contact_ratio(c: Check) -> str:
+    return rf"\varepsilon_\alpha = {num(c.value)} {_rel(c)} [\varepsilon_\alpha] = {num(c.allowable)}"
+
+
+def _worm_deflection(c: Check) -> str:
+    i = c.inputs
+    return (rf"y = \frac{{\sqrt{{F_{{t1}}^2 + F_{{r1}}^2}}\, L^3}}{{48 E I}} = \frac{{\sqrt{{{num(i['Ft1'])}^2 + "
+            rf"{num(i['Fr1'])}^2}} \times {num(i['L'] * MM)}^3}}{{48 \times {num(i['E'] * 1e-6)} \times "
+            rf"{num(i['I'] * 1e12)}}} = {num(c.value * MM)}\ \text{{mm}} {_rel(c)} [y] = \frac{{d_1}}{{1000}} = "
+            rf"{num(c.allowable * MM)}\ \text{{mm}}\ (\text{{mm}}, \text{{N}}, \text{{MPa}})")
 
 
 _FORMULAS = {
@@ -164,6 +191,10 @@ _FORMULAS = {
     "shaft_min_diameter": _shaft_min_diameter,
     "bearing_life": _bearing_life,
     "key_crushing": _key_crushing,
+    "tooth_tip": _tooth_tip,
+    "undercut": _undercut,
+    "contact_ratio": _contact_ratio,
+    "worm_deflection": _worm_deflection,
 }
 
 

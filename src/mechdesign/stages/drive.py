@@ -16,7 +16,7 @@ import numpy as np
 from ..core import drive as core
 from ..core.fields import q
 from ..data import load_csv, load_yaml
-from . import drive_strength as ds
+from . import drive_elements as de, drive_strength as ds
 from .findings import Finding
 
 
@@ -135,10 +135,10 @@ def _elements(stages, worm_eff: dict[int, float]) -> list[core.Element]:
     return out
 
 
-def _realise(s, target: float) -> dict:
+def _realise(s, target: float, d1_default: float = 0.100) -> dict:
     """Whole teeth / a standard pulley for a free stage aiming at ``target``."""
     if s.type == "belt":
-        d1 = s.d1 if s.d1 is not None else 0.100
+        d1 = s.d1 if s.d1 is not None else d1_default
         d2 = s.d2 if s.d2 is not None else core.standard_pulley(target * d1 * (1 - s.slip) * 1e3) * 1e-3
         return {"d1": d1, "d2": d2, "slip": s.slip, "ratio": core.belt_ratio(d1, d2, s.slip)}
     if s.type == "coupling":
@@ -153,15 +153,16 @@ def _realise(s, target: float) -> dict:
     return {"z1": z1, "z2": z2, "ratio": z2 / z1}
 
 
-def design_ratios(stages, elements, total: float) -> list[dict]:
+def design_ratios(stages, elements, total: float, belt_d1: dict | None = None) -> list[dict]:
     """Allocate ``total`` and realise the stages in order; each free stage aims at what is
-    left after the stages already realised, so rounding errors do not add up."""
+    left after the stages already realised, so rounding errors do not add up. ``belt_d1``:
+    small datum diameters by stage index where the belt's section needs more than 100 mm."""
     alloc = core.allocate_ratios(total, elements)
     done, out = 1.0, []
     for k, (s, el) in enumerate(zip(stages, elements)):
         ahead = float(np.prod(alloc[k + 1:]))
         target = el.ratio if el.ratio is not None else total / done / ahead
-        real = _realise(s, target)
+        real = _realise(s, target, (belt_d1 or {}).get(s.index, 0.100))
         real["allocated"] = alloc[k]
         done *= real["ratio"]
         out.append(real)
@@ -200,10 +201,18 @@ def design_drive(dp, machine_power: float, output_rpm: float, source: str,
         p_d = machine_power / eta
         choice = core.choose_motor(catalogue, p_d, output_rpm, elements, dp.synchronous_rpm,
                                     dp.speed_tolerance)
-        real = design_ratios(stages, elements, choice.total_ratio)
-        ratios = [r["ratio"] for r in real]
-        shafts = core.shaft_table(choice.motor.full_load_rpm, p_d, ratios,
-                                  [el.efficiency for el in elements], dp.bearing_eff)
+        belt_d1: dict[int, float] = {}
+        for _pass in range(2):   # a belt whose section needs d_dmin > 100 mm: once more with it
+            real = design_ratios(stages, elements, choice.total_ratio, belt_d1)
+            ratios = [r["ratio"] for r in real]
+            shafts = core.shaft_table(choice.motor.full_load_rpm, p_d, ratios,
+                                      [el.efficiency for el in elements], dp.bearing_eff)
+            need = {s.index: de.belt_small_diameter(s, shafts[k].power, shafts[k].speed_rpm, de.belt_KA(s, dp))
+                    for k, s in enumerate(stages) if s.type == "belt" and s.d1 is None}
+            need = {i: d for i, d in need.items() if d != 0.100}
+            if need == belt_d1:
+                break
+            belt_d1 = need
         results = []
         for s, el, r in zip(stages, elements, real):
             zh, en = _names(el.kind)
@@ -358,7 +367,8 @@ def _strength_warnings(results, shaft_designs) -> tuple[Finding, ...]:
     for r in results:
         for c in r.design.checks if r.design else ():
             if not c.passed:
-                out.append(_failed(c, f"第 {r.index + 1} 级{r.name_zh}", f"stage {r.index + 1} ({r.name_en})"))
+                out.append(_failed(c, f"第 {r.index + 1} 级{r.name_zh}", f"stage {r.index + 1} ({r.name_en})",
+                                   stage=r.index))
     roman = "0 Ⅰ Ⅱ Ⅲ Ⅳ Ⅴ Ⅵ Ⅶ Ⅷ Ⅸ".split()
     for s in shaft_designs:
         name = roman[s.index] if s.index < len(roman) else str(s.index)
@@ -369,9 +379,10 @@ def _strength_warnings(results, shaft_designs) -> tuple[Finding, ...]:
     return tuple(out)
 
 
-def _failed(c, where_zh: str, where_en: str, advice=None) -> Finding:
+def _failed(c, where_zh: str, where_en: str, advice=None, stage: int | None = None) -> Finding:
     """A failed check as a named finding; ``advice`` = (field, zh, en): the override that
-    fails and what to change (else the generic advice)."""
+    fails and what to change; ``stage``: the drive stage whose check it is (belts, gear
+    geometry and the worm's deflection name their own fix); else the generic advice."""
     from ..core.strength import COURSE_SCALE
 
     v, a = c.value * COURSE_SCALE[c.unit], c.allowable * COURSE_SCALE[c.unit]
@@ -384,10 +395,14 @@ def _failed(c, where_zh: str, where_en: str, advice=None) -> Finding:
                        f"{where_zh}：{c.name_zh}不合格（{v} {rel} {a}{unit}），由指定值 {field} 造成：{zh}。",
                        f"{where_en}: {c.name_en} fails ({v} {rel} {a}{unit}) with the brief's {field}: {en}.",
                        field=field)
+    fix_en, fix_zh = "enlarge it or use a better material", "加大尺寸或改用更好的材料"
+    extra = {}
+    if stage is not None and c.key in de.FIXES:      # belts, gear geometry, worm deflection
+        fix_en, fix_zh = (t.format(i=stage) for t in de.FIXES[c.key])
+        extra = {"field": f"drive.stages[{stage}]"}
     return Finding("strength",
-                   f"{where_zh}：{c.name_zh}不合格（{v} {rel} {a}{unit}）：加大尺寸或改用更好的材料。",
-                   f"{where_en}: {c.name_en} fails ({v} {rel} {a}{unit}): "
-                   "enlarge it or use a better material.")
+                   f"{where_zh}：{c.name_zh}不合格（{v} {rel} {a}{unit}）：{fix_zh}。",
+                   f"{where_en}: {c.name_en} fails ({v} {rel} {a}{unit}): {fix_en}.", **extra)
 
 
 def _sig4(x: float) -> str:

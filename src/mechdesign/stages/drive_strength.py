@@ -27,9 +27,10 @@ import math
 from dataclasses import dataclass, replace
 
 
-from ..core import gears, strength as st
+from ..core import belts, chains, gears, strength as st
 from ..core.fields import q
 from ..data import catalogues as cat
+from . import drive_elements as de
 
 K_V, K_BETA, S_H, S_F = 1.1, 1.1, 1.0, 1.4
 A0, KEYWAY = 112.0, 0.05
@@ -45,8 +46,10 @@ class StageDesign:
     carry only their torques and, for a belt, the pressure on the shafts)."""
 
     kind: str = q("", "'gear' | 'worm' | 'belt' | 'chain' | 'coupling'")
-    geometry: gears.SpurPair | gears.HelicalPair | gears.WormPair | None = q(
-        "", "the pair's geometry (as the gear section's pair); null for belts, chains, couplings")
+    geometry: (gears.SpurPair | gears.HelicalPair | gears.WormPair | belts.VBeltDesign
+               | chains.ChainDesign | None) = q(
+        "", "the pair's geometry (as the gear section's pair); a belt's or chain's design "
+        "(濮良贵 ch.8, ch.9); null for couplings")
     materials: tuple[str, ...] = q("", "material keys (pinion, gear) or (worm, wheel)")
     module: float | None = q("m", "module used (normal module of a helical pair)")
     module_min: float | None = q("m", "module from the design formula (null when the brief gives it)")
@@ -252,20 +255,33 @@ def stage_designs(dp, results, shafts, peak_factor, peak_from_shaft) -> tuple[li
         T1, T2 = shafts[k].torque * boost, shafts[k + 1].torque * boost
         s = replace(s, z1=r.z1, z2=r.z2)
         if s.type in ("spur", "helical"):
-            out.append(_gear_stage(s, shafts[k].speed_rpm, T1, T2, dp.service_hours, dp.KA,
-                                   dict(getattr(dp, "factors", ()))))
+            d = _gear_stage(s, shafts[k].speed_rpm, T1, T2, dp.service_hours, dp.KA,
+                            dict(getattr(dp, "factors", ())))
+            out.append(replace(d, checks=d.checks + de.gear_geometry_checks(d, s)))
         elif s.type == "worm":
             d = _worm_stage(s, shafts[k].speed_rpm, shafts[k].power, T1, T2, dp.service_hours, dp.KA)
+            d = replace(d, checks=d.checks + (de.worm_deflection_check(d, dp.stages[k - 1].span if k else None),))
             if s.efficiency is None:
                 worm_eff[s.index] = d.extra["eta"]
             out.append(d)
+        elif s.type == "belt":    # 濮良贵 ch.8: the load on the shafts is F_p = 2 z F0 sin(α1/2)
+            try:
+                b = de.belt_design(s, r, shafts[k], dp)
+            except belts.BeltDesignError as e:
+                from ..core.drive import DriveDesignError
+                raise DriveDesignError(f"drive.stages[{s.index}]: {e.en}", f"drive.stages[{s.index}]：{e.zh}") from None
+            out.append(StageDesign("belt", b, (), None, None, False, None, b.KA, T1, T2, {"Q": b.Fp}, {},
+                                   b.checks, {"v": b.v}))
+        elif s.type == "chain":   # 濮良贵 ch.9: F_Q ≈ (1.2…1.3) F_e on the shafts
+            try:
+                c = de.chain_design(s, r, shafts[k], dp)
+            except chains.ChainDesignError as e:
+                from ..core.drive import DriveDesignError
+                raise DriveDesignError(f"drive.stages[{s.index}]: {e.en}", f"drive.stages[{s.index}]：{e.zh}") from None
+            out.append(StageDesign("chain", c, (), None, None, False, None, c.KA, T1, T2, {"Q": c.FQ}, {},
+                                   c.checks, {"v": c.v}))
         else:
-            forces = {}
-            if s.type == "belt":
-                # Pressure on the shafts ≈ 1.5 × the effective pull 2T/d1 (no belt selection here).
-                forces = {"Q": 1.5 * 2 * T1 / r.d1}
-            out.append(StageDesign(s.type, None, (), None, None, False, None, 1.0, T1, T2, forces, {}, (),
-                                   {"v": math.pi * r.d1 * shafts[k].speed_rpm / 60} if s.type == "belt" else {}))
+            out.append(StageDesign(s.type, None, (), None, None, False, None, 1.0, T1, T2, {}, {}, (), {}))
     return out, worm_eff
 
 
@@ -284,10 +300,8 @@ def _element_loads(design: StageDesign, driving: bool):
         if driving:   # the worm: its tangential force Ft1, axial force Fa1 = Ft2
             return True, dict(Fh=f["Ft"], Fv=f["Fr"], Fa=f["Fa"], r=f["d1"] / 2), None, "steel"
         return True, dict(Fh=f["Ft2"], Fv=f["Fr"], Fa=f["Ft"], r=f["d2"] / 2), None, "steel"
-    if design.kind == "belt":
-        return False, dict(Fh=f["Q"]), None, "cast_iron"
-    if design.kind == "chain" and "Q" in f:       # the chain's pull on the sprocket, overhung
-        return False, dict(Fh=f["Q"]), None, "steel"
+    if design.kind in ("belt", "chain"):     # F_p of the belt, F_Q of the chain (issue 20)
+        return False, dict(Fh=f["Q"]), None, "cast_iron" if design.kind == "belt" else "steel"
     return False, {}, None, "steel"
 
 

@@ -1,0 +1,184 @@
+"""Drive elements designed beside the gear strength (issue 20): the V-belt by the standard
+procedure (濮良贵《机械设计》9th ed. ch.8, :mod:`mechdesign.core.belts`), the geometric checks
+of every drive gear stage (pointed tips, undercut, contact ratio) and the worm shaft's
+deflection (ch.11). Called from :mod:`.drive_strength` and :mod:`.drive`.
+
+Assumptions stated in the report:
+- the belt's K_A from table 8-8 (an electric motor, light start) by the drive's gear K_A
+  (its load class) and the hours per day; the brief's ``application_factor_KA`` overrides;
+- the section from the selection chart (fig. 8-11, its boundaries read off the chart),
+  the brief's ``section`` overrides; d_d1 = 100 mm (the program's default), raised to the
+  section's d_dmin (table 8-7, then the next datum diameter of the series) when smaller;
+- a0 = d_d1 + d_d2 rounded up to 10 mm (raised by 10 mm steps while α1 < 120°, at most
+  2 (d_d1 + d_d2)) unless the brief gives ``center_distance_mm``;
+- P0 interpolated bilinearly in n1 and d_d1, ΔP0 linearly in n1 (nearest row/column
+  outside the tables);
+- tips: s_a ≥ 0.25 m (through-hardened), 0.4 m (surface-hardened, carburised, nitrided);
+  undercut: x ≥ x_min = h_a*(z_min − z)/z_min with the textbook's whole z_min = 17 at α = 20°
+  (2h_a*/sin²α = 17.1 rounded down; helical: z_v);
+  contact ratio ε_α ≥ 1.2;
+- worm shaft: y = √(F_t1² + F_r1²) L³/(48 E I) ≤ [y] = d1/1000 with I = π d_f1⁴/64,
+  d_f1 = d1 − 2.4 m, E = 206 GPa, L the span the brief gives for the worm's shaft, else
+  L ≈ 0.9 d2 (濮良贵 ch.11).
+"""
+from __future__ import annotations
+
+import math
+from functools import lru_cache
+
+from ..core import belts, chains, gears
+from ..core.drive import PULLEY_DIAMETERS_MM
+from ..core.strength import Check
+from ..data import load_yaml
+
+E_STEEL = 206e9          # Pa
+EPS_ALPHA_MIN = 1.2
+D1_DEFAULT = 0.100       # m, the program's default small datum diameter
+
+#: What to change when one of these checks fails (English, Chinese), {f} the stage's field.
+FIXES = {
+    "belt_d_min": ("give a larger drive.stages[{i}].d1_mm", "增大 drive.stages[{i}].d1_mm"),
+    "belt_speed_min": ("give a larger drive.stages[{i}].d1_mm (v grows with d1)",
+                       "增大 drive.stages[{i}].d1_mm（带速随 d1 增大）"),
+    "belt_speed_max": ("give a smaller drive.stages[{i}].d1_mm", "减小 drive.stages[{i}].d1_mm"),
+    "belt_wrap": ("give a larger drive.stages[{i}].center_distance_mm or a smaller ratio",
+                  "增大 drive.stages[{i}].center_distance_mm 或减小传动比"),
+    "belt_count": ("use a larger section (drive.stages[{i}].section) or a larger d1_mm",
+                   "改用更大的带型（drive.stages[{i}].section）或增大 d1_mm"),
+    "tooth_tip": ("reduce the shift drive.stages[{i}].x1/x2 or use more teeth",
+                  "减小变位系数 drive.stages[{i}].x1/x2 或增加齿数"),
+    "undercut": ("give a positive shift drive.stages[{i}].x1/x2 ≥ x_min or more teeth",
+                 "取正变位 drive.stages[{i}].x1/x2 ≥ x_min 或增加齿数"),
+    "contact_ratio": ("use more teeth (a smaller module) or smaller shifts",
+                      "增加齿数（减小模数）或减小变位系数"),
+    "chain_z1": ("give more teeth drive.stages[{i}].z1 (≥ 17)", "增加小链轮齿数 drive.stages[{i}].z1（≥ 17）"),
+    "chain_z2": ("give the chain a smaller ratio or fewer teeth z1", "减小链传动的传动比或小链轮齿数"),
+    "chain_power": ("give a larger chain (drive.stages[{i}].chain) or more rows (rows)",
+                    "选更大的链号（drive.stages[{i}].chain）或增加排数（rows）"),
+    "chain_speed": ("give a smaller chain or fewer teeth z1", "选较小的链号或减少小链轮齿数"),
+    "chain_static": ("give a larger chain or more rows", "选更大的链号或增加排数"),
+    "worm_deflection": ("give a shorter bearing span or a larger worm diameter factor q",
+                        "缩短支承跨距或增大蜗杆直径系数 q"),
+}
+
+
+@lru_cache(maxsize=1)
+def belt_tables() -> dict:
+    return load_yaml("belts.yaml")
+
+
+def belt_application_factor(drive_KA: float, hours_per_day: float) -> tuple[float, dict]:
+    """K_A of table 8-8 (electric motor, light start) for the drive's load class and the
+    hours per day; returns (K_A, the table row)."""
+    t = belt_tables()["application_factor"]
+    row = next(r for r in t["rows"] if drive_KA <= r["drive_KA_upto"] + 1e-12)
+    col = sum(1 for h in t["hours_upto"] if hours_per_day > h)
+    return float(row["K_A"][col]), row
+
+
+def belt_KA(s, dp) -> float:
+    if getattr(s, "belt_KA", None) is not None:
+        return s.belt_KA
+    return belt_application_factor(dp.KA, getattr(dp, "hours_per_day", 16.0))[0]
+
+
+def belt_section(s, P: float, n1_rpm: float, KA: float) -> str | None:
+    return getattr(s, "section", None) or belts.choose_section(belt_tables(), KA * P, n1_rpm)
+
+
+def belt_small_diameter(s, P: float, n1_rpm: float, KA: float) -> float:
+    """d_d1 when the brief gives none: 100 mm, raised to the section's d_dmin (table 8-7)
+    and to the diameter giving the belt speed v ≥ 5 m/s, each rounded up to the datum
+    series (table 8-9)."""
+    section = belt_section(s, P, n1_rpm, KA)
+    t = belt_tables()
+    need = D1_DEFAULT * 1e3
+    if section is not None:
+        need = max(need, t["sections"][section]["d_min_mm"])
+    need = max(need, t["limits"]["v_min_m_s"] * 60e3 / (math.pi * n1_rpm))
+    if need <= D1_DEFAULT * 1e3:
+        return D1_DEFAULT
+    bigger = [d for d in PULLEY_DIAMETERS_MM if d >= need - 1e-9]
+    return (min(bigger) if bigger else PULLEY_DIAMETERS_MM[-1]) * 1e-3
+
+
+def belt_design(s, r, shaft, dp) -> belts.VBeltDesign:
+    """The V-belt of stage ``s`` (realised as ``r``) on ``shaft`` (its power and speed)."""
+    KA = belt_KA(s, dp)
+    return belts.design_vbelt(belt_tables(), shaft.power, shaft.speed_rpm, KA, r.d1, r.d2, r.slip,
+                              getattr(s, "section", None), getattr(s, "center_distance", None))
+
+
+@lru_cache(maxsize=1)
+def chain_tables() -> dict:
+    return load_yaml("chains.yaml")
+
+
+def chain_design(s, r, shaft, dp) -> chains.ChainDesign:
+    """The roller chain of stage ``s`` (realised teeth ``r.z1``, ``r.z2``) on ``shaft``."""
+    t = chain_tables()
+    if getattr(s, "belt_KA", None) is not None:
+        KA = s.belt_KA
+    else:
+        KA = float(next(row["K_A"] for row in t["application_factor"] if dp.KA <= row["drive_KA_upto"] + 1e-12))
+    return chains.design_chain(t, shaft.power, shaft.speed_rpm, KA, r.z1, r.z2, getattr(s, "chain", None),
+                               getattr(s, "rows", 1), getattr(s, "center_distance", None), shocks=dp.KA > 1.25)
+
+
+# ----------------------------------------------------------------------------- gear stages
+
+def _hardened(material: str) -> bool:
+    key = material.lower()
+    return any(w in key for w in ("surface", "carbur", "nitrid", "hardened", "淬火", "渗碳", "氮化"))
+
+
+def gear_geometry_checks(design, s) -> tuple[Check, ...]:
+    """Tip thickness, undercut (each gear) and the contact ratio of a spur or helical stage.
+    Helical stages: the equivalent spur gears z_v = z/cos³β in the normal section."""
+    g = design.geometry
+    if design.kind != "gear" or g is None:
+        return ()
+    if hasattr(g, "g1"):
+        pair, m, zs = g, g.m, (g.g1.z, g.g2.z)
+    else:
+        zs = tuple(z / math.cos(g.beta) ** 3 for z in (s.z1, s.z2))
+        pair, m = gears.spur_pair(g.mn, zs[0], zs[1]), g.mn
+    ha_star = pair.ha_star
+    # the textbook's whole z_min (17 at α = 20°, h_a* = 1) of 2h_a*/sin²α = 17.1
+    z_min = float(math.floor(pair.z_min + 1e-9))
+    out = []
+    for k, (gd, mat) in enumerate(((pair.g1, design.materials[0]), (pair.g2, design.materials[1]))):
+        who_zh, who_en = ("小齿轮", "Pinion") if k == 0 else ("大齿轮", "Gear")
+        factor = 0.4 if _hardened(mat) else 0.25
+        out.append(Check("tooth_tip", f"{who_zh}齿顶厚", f"{who_en} tip thickness",
+                         "s_a", gd.sa, factor * m, "mm", "ge", gd.sa >= factor * m - 1e-12,
+                         {"m": m, "factor": factor, "z": float(gd.z), "x": gd.x}))
+        # x ≥ x_min = h_a*(z_min − z)/z_min, checked as z ≥ z_min (1 − x/h_a*) (a positive
+        # quantity, so the margin 1 − allowable/value is defined)
+        x_min = ha_star * (z_min - zs[k]) / z_min
+        z_need = z_min * (1 - gd.x / ha_star)
+        out.append(Check("undercut", f"{who_zh}不根切", f"{who_en} free of undercut",
+                         "z", float(zs[k]), z_need, "1", "ge", gd.x >= x_min - 1e-9,
+                         {"x": gd.x, "x_min": x_min, "z_min": z_min, "ha_star": ha_star}))
+    eps = design.extra["eps_alpha"]
+    out.append(Check("contact_ratio", "重合度", "Contact ratio", "\\varepsilon_\\alpha",
+                     eps, EPS_ALPHA_MIN, "1", "ge", eps >= EPS_ALPHA_MIN, {}))
+    return tuple(out)
+
+
+# ----------------------------------------------------------------------------- worm shaft
+
+def worm_deflection_check(design, span: float | None) -> Check:
+    """y = √(F_t1² + F_r1²) L³/(48 E I) ≤ [y] = d1/1000 (濮良贵 ch.11, eq. 11-?: the worm
+    as a simply supported beam loaded at mid-span), I = π d_f1⁴/64."""
+    g = design.geometry
+    f = design.forces
+    d1, m = g.d1, g.m
+    df1 = d1 - 2.4 * m
+    L = span if span else 0.9 * g.d2
+    inertia = math.pi * df1 ** 4 / 64
+    y = math.hypot(f["Ft"], f["Fr"]) * L ** 3 / (48 * E_STEEL * inertia)
+    allow = d1 / 1000
+    return Check("worm_deflection", "蜗杆轴刚度（挠度）", "Worm shaft stiffness (deflection)", "y", y, allow, "μm",
+                 "le", y <= allow, {"Ft1": f["Ft"], "Fr1": f["Fr"], "L": L, "E": E_STEEL, "I": inertia,
+                                    "df1": df1, "d1": d1, "span_given": 1.0 if span else 0.0})
