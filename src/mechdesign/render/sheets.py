@@ -124,8 +124,14 @@ def _diagram_builders(results: dict, found) -> list:
 
     out = []
     cam = results.get("cam")
-    if found is not None:
-        out.append(("kinematic", lambda info, lang: ks.linkage_diagram(found, info, lang)))
+    bending = results.get("bending")
+    if (found is not None and bending is not None and hasattr(bending, "design")
+            and results.get("bending_cam") is not None and cam is not None):
+        # the lock-beam machine: the feed linkage, both cams, the bending four-bar and chain
+        out.append(("kinematic", lambda info, lang: ks.lockbeam_diagram(results, info, lang)))
+    elif found is not None:
+        label = ks.diagram_position(found, results.get("brief"))
+        out.append(("kinematic", lambda info, lang: ks.linkage_diagram(found, info, lang, label)))
     elif results.get("optimum") is not None and hasattr(results["optimum"], "best"):
         opt, slider = results["optimum"], results.get("slider")
         out.append(("kinematic", lambda info, lang: ks.crank_rocker_diagram(opt, slider, info, lang)))
