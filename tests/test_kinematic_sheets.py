@@ -288,3 +288,25 @@ def test_a_diagram_that_cannot_be_drawn_is_left_out_with_a_line(tmp_path, capsys
     assert "Kinematic diagram could not be drawn (the layout does not fit)" in err
     with pytest.raises(ValueError):
         write_all([("analysis", bad)], brief, tmp_path, tmp_path / "f", "en", ("dxf",))
+
+
+def test_sheet_notes_go_to_the_runs_warning_callback(tmp_path, capsys):
+    """With the runner's ``on_warning`` the lines are handed to it (the run collects them
+    and prints them as its warnings, in the report's language), not printed here."""
+    from types import SimpleNamespace
+
+    from mechdesign.render.sheets import make_sheets, write_all
+
+    got = []
+    make_sheets({}, None, tmp_path, tmp_path, "zh", ("md", "dxf"), on_warning=got.append)
+    assert got and "没有可绘制的图纸" in got[0] and not got[0].startswith("提示")
+
+    def bad(info, lang):
+        raise ValueError("the layout does not fit")
+
+    meta = SimpleNamespace(title="t", student="", student_id="", class_name="", teacher="", date="")
+    brief = SimpleNamespace(report=meta, sheets=None)
+    (tmp_path / "f").mkdir()
+    write_all([("kinematic", bad)], brief, tmp_path, tmp_path / "f", "en", ("dxf",), on_warning=got.append)
+    assert "Kinematic diagram could not be drawn (the layout does not fit)" in got[-1]
+    assert capsys.readouterr().err == ""
