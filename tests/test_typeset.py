@@ -129,6 +129,63 @@ def numbers_over_words(pdf: Path) -> list[tuple[int, str, str]]:
     return bad
 
 
+# the text block's height on A4 (report.typ: 2.5 cm top and bottom margins)
+TOP, BOTTOM = 70.87, 841.89 - 70.87
+
+
+def page_fill(page) -> float:
+    """How far down the text block the page's content reaches (text lines, images, vector
+    drawings such as figures and table rules), as a part of the block's height, 0 … 1: a
+    page of equations with air between them is full, one whose lower half is blank is not."""
+    bottoms = []
+    for block in page.get_text("dict")["blocks"]:
+        if block.get("type") == 1:                       # an image
+            bottoms.append(block["bbox"][3])
+            continue
+        for line in block.get("lines", []):
+            if any(sp["text"].strip() for sp in line["spans"]):
+                bottoms.append(line["bbox"][3])
+    bottoms += [info["bbox"][3] for info in page.get_image_info()]
+    bottoms += [path["rect"].y1 for path in page.get_drawings()]
+    inside = [min(y, BOTTOM) for y in bottoms if TOP < y < BOTTOM + 1]
+    return (max(inside) - TOP) / (BOTTOM - TOP) if inside else 0.0
+
+
+def half_empty_pages(pdf, limit: float = 0.5) -> list[tuple[int, float]]:
+    """(page, fill) of every page whose text and images cover less than ``limit`` of the
+    text block's height where no chapter ends: not the cover, not the last page, not a
+    page followed by one that starts with a level-1 heading (the PDF outline), not a sheet
+    (a page larger than A4 or in landscape), not the cover and contents before the first
+    chapter."""
+    import pymupdf
+
+    bad = []
+    with pymupdf.open(pdf) as doc:
+        starts = set()
+        for level, title, page_no, dest in doc.get_toc(simple=False):
+            if level != 1 or page_no < 1:
+                continue
+            to = dest.get("to")                 # the heading's anchor (top-left origin)
+            y = None if to is None else to.y + 2.0
+            # the heading opens its page when no text line stands above it
+            page = doc[page_no - 1]
+            above = [ln for b in page.get_text("dict")["blocks"] for ln in b.get("lines", [])
+                     if TOP - 1 <= ln["bbox"][1] and y is not None and ln["bbox"][3] < y - 2
+                     and any(sp["text"].strip() for sp in ln["spans"])]
+            if not above:
+                starts.add(page_no)
+        first = min(starts, default=1)                  # the cover and the contents before it
+        for number, page in enumerate(doc, 1):
+            if number < first or number == len(doc) or number + 1 in starts:
+                continue
+            if page.rect.width > 600 or page.rect.height > 850 or page.rect.width > page.rect.height:
+                continue
+            fill = page_fill(page)
+            if fill < limit:
+                bad.append((number, round(fill, 2)))
+    return bad
+
+
 BRIEFS = sorted(p.stem for p in (ROOT / "designs").glob("*.yaml"))
 
 
@@ -147,6 +204,8 @@ def test_every_report_stays_in_the_text_block(brief, lang, tmp_path):
     pdf = out / "report.pdf"
     assert outside_text_block(pdf) == []
     assert numbers_over_words(pdf) == []
+    # no page more than half empty where no chapter ends (issue 19, point 2)
+    assert half_empty_pages(pdf) == []
 
 
 # ---- Word: table of contents, running header, page numbers, author ------------------------
