@@ -186,6 +186,73 @@ def half_empty_pages(pdf, limit: float = 0.5) -> list[tuple[int, float]]:
     return bad
 
 
+# ---- Word: every display equation's width -----------------------------------------------
+# The OMML of each line estimated as render/mathbreak estimates TeX (characters × em, fractions
+# their wider part, scripts at 0.72, radicals + 1 em, delimiters + 0.8 em): it must fit the
+# equation's cell, the middle 80 % of the 453.5 pt text width, in Cambria Math at 12 pt, about
+# 1.1 × as wide as the estimate's New Computer Modern: 362.8 / 12 / 1.1 = 27.5 em.
+import xml.etree.ElementTree as ET  # noqa: E402
+
+from mechdesign.render.mathbreak import _char_width  # noqa: E402
+
+WORD_CELL_EM = 0.8 * 453.5 / 12.0 / 1.1
+
+M = "{http://schemas.openxmlformats.org/officeDocument/2006/math}"
+
+
+def _kids(e, tag):
+    return [c for c in e if c.tag == M + tag]
+
+
+def _omml_width(e, scale=1.0):
+    t = e.tag[len(M):] if e.tag.startswith(M) else None
+    if t is None:
+        return 0.0
+    if t == "r":
+        return sum(_char_width(ch) if not ch.isspace() else 0.33 for x in _kids(e, "t") for ch in (x.text or "")) * scale
+    if t == "f":
+        return max([_omml_width(c, scale) for c in _kids(e, "num") + _kids(e, "den")] + [0]) + 0.3 * scale
+    if t in ("sSub", "sSup", "sSubSup", "sPre"):
+        base = sum(_omml_width(c, scale) for c in _kids(e, "e"))
+        scr = max([_omml_width(c, 0.72 * scale) for c in _kids(e, "sub") + _kids(e, "sup")] + [0])
+        return base + scr
+    if t == "rad":
+        return sum(_omml_width(c, scale) for c in _kids(e, "e")) + 1.0 * scale
+    if t == "d":
+        inner = [_omml_width(c, scale) for c in _kids(e, "e")]
+        return sum(inner) + 0.4 * scale * (len(inner) - 1) + 0.8 * scale
+    if t == "nary":
+        return 1.2 * scale + max([_omml_width(c, 0.72 * scale) for c in _kids(e, "sub") + _kids(e, "sup")] + [0]) + sum(_omml_width(c, scale) for c in _kids(e, "e"))
+    if t == "eqArr":
+        return max([_omml_width(c, scale) for c in _kids(e, "e")] + [0])
+    if t in ("limLow", "limUpp"):
+        return max(sum(_omml_width(c, scale) for c in _kids(e, "e")), max([_omml_width(c, 0.72 * scale) for c in _kids(e, "lim")] + [0]))
+    if t == "m":
+        rows = [[_omml_width(c, scale) for c in _kids(r, "e")] for r in _kids(e, "mr")]
+        if not rows:
+            return 0.0
+        cols = max(len(r) for r in rows)
+        return sum(max(r[j] if j < len(r) else 0 for r in rows) for j in range(cols)) + 1.0 * scale * (cols - 1)
+    if t in ("rPr", "fPr", "sSubPr", "sSupPr", "radPr", "dPr", "naryPr", "eqArrPr", "ctrlPr", "deg", "oMathParaPr", "accPr", "barPr", "funcPr", "limLowPr", "limUppPr", "mPr", "groupChrPr", "boxPr", "borderBoxPr", "sSubSupPr", "sPrePr"):
+        return 0.0
+    return sum(_omml_width(c, scale) for c in e)
+
+
+def display_widths(docx) -> list[tuple[float, str]]:
+    """(estimated width [em], text) of every line of every display equation of a .docx."""
+    z = zipfile.ZipFile(docx)
+    root = ET.fromstring(z.read("word/document.xml"))
+    out = []
+    for para in root.iter(M + "oMathPara"):
+        for om in _kids(para, "oMath"):
+            arrays = list(om.iter(M + "eqArr"))
+            rows = [r for a in arrays for r in _kids(a, "e")] if arrays else [om]
+            for row in rows:
+                text = "".join(x.text or "" for x in row.iter(M + "t"))
+                out.append((_omml_width(row), text[:80]))
+    return out
+
+
 BRIEFS = sorted(p.stem for p in (ROOT / "designs").glob("*.yaml"))
 
 
@@ -199,8 +266,11 @@ def test_every_report_stays_in_the_text_block(brief, lang, tmp_path):
 
     out = tmp_path / f"{brief}-{lang}"
     result = CliRunner().invoke(cli_app, ["run", str(ROOT / "designs" / f"{brief}.yaml"),
-                                          "--lang", lang, "--format", "pdf", "--out", str(out)])
+                                          "--lang", lang, "--format", "pdf,docx", "--out", str(out)])
     assert result.exit_code == 0, result.output
+    # Word: every line of every display equation fits its cell (after render/mathbreak)
+    wide = [(round(w, 1), text) for w, text in display_widths(out / "report.docx") if w > WORD_CELL_EM]
+    assert wide == []
     pdf = out / "report.pdf"
     assert outside_text_block(pdf) == []
     assert numbers_over_words(pdf) == []
