@@ -369,7 +369,6 @@ def lockbeam_layout(results, phi: float = 0.0) -> dict:
     raw = {"A": complex(m.points["A"].pos[0]), "B": complex(m.points["B"].pos[0]),
            "A0": 0j, "B0": complex(ds.frame, 0.0)}
     four = {k: A0 + (np.conj(v) if mirror else v) * MM for k, v in raw.items()}
-    R1 = bending.synthesis.design.output_rocker  # noqa: F841 (the arm on the wheel, in four["B"])
     r_big = p.bending.driving_wheel / 2 * MM
     r_small = p.bending.bending_wheel / 2 * MM
     small = four["B0"] + 1j * CHAIN_CENTRES * 2 * r_big
