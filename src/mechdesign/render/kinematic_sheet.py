@@ -321,7 +321,7 @@ def _tangent_runs(a: complex, r1: float, b: complex, r2: float) -> list[tuple[co
 CHAIN_CENTRES = 1.6      # schematic chain centre distance, in large-wheel diameters
 
 
-def lockbeam_layout(results, phi: float = 0.0) -> dict:
+def lockbeam_layout(results, found, phi: float = 0.0) -> dict:
     """The lock-beam machine at main-shaft angle ``phi`` [rad] in model millimetres: three
     groups side by side on one horizontal through the main shaft, each drawn to scale in
     itself — the feed linkage (at its position 1, φ = 0), the positioning cam with its
@@ -335,7 +335,6 @@ def lockbeam_layout(results, phi: float = 0.0) -> dict:
 
     Returns ``{"feed": _LinkageDrawing, "pin": {...}, "bend": {...}, "pts": [...]}``."""
     p = results["params"]
-    found = _lockbeam_feed(results)
     pin_cam, bend_cam, bending = results["cam"], results["bending_cam"], results["bending"]
     feed = _LinkageDrawing(found, "1")
     fx1 = max(z.real for z in feed.pts)
@@ -390,18 +389,12 @@ def lockbeam_layout(results, phi: float = 0.0) -> dict:
             "sigma_pin": pin_cam.grid.rotation}
 
 
-def _lockbeam_feed(results):
-    from .sheets import linkage_results
-
-    return linkage_results(results)
-
-
-def lockbeam_diagram(results, info: TitleInfo, lang: str) -> Sheet:
+def lockbeam_diagram(results, found, info: TitleInfo, lang: str) -> Sheet:
     """The whole lock-beam machine (see :func:`lockbeam_layout`) at φ = 0 on one A3 sheet
     at one length scale; the main shaft's link (the feed crank and both cams, keyed to one
     shaft) is link 2."""
     lab = LABELS[lang]
-    L = lockbeam_layout(results)
+    L = lockbeam_layout(results, found)
     s = Sheet(SIZE)
     area = _area(s)
     view, n = _fit(s, np.array(L["pts"]), area, pad_paper=14.0)

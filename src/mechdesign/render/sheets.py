@@ -136,7 +136,7 @@ def _diagram_builders(results: dict, found) -> list:
     if (found is not None and bending is not None and hasattr(bending, "design")
             and results.get("bending_cam") is not None and cam is not None):
         # the lock-beam machine: the feed linkage, both cams, the bending four-bar and chain
-        out.append(("kinematic", lambda info, lang: ks.lockbeam_diagram(results, info, lang)))
+        out.append(("kinematic", lambda info, lang: ks.lockbeam_diagram(results, found, info, lang)))
     elif found is not None:
         label = ks.diagram_position(found, results.get("brief"))
         out.append(("kinematic", lambda info, lang: ks.linkage_diagram(found, info, lang, label)))
