@@ -40,13 +40,19 @@ def _scale(sheet) -> float:
     return float(sheet.info.scale.split(":")[1])
 
 
-def test_shaper_pins_at_position_1_from_the_brief_lengths(example_results):
+def test_shaper_pins_at_the_briefs_position_from_the_lengths(example_results):
     """designs/shaper_lengths.yaml: O3 at the origin, O2 = (0, 350) mm, crank 90, guide bar
-    580, BF = 0.3·580. Position 1 is the extreme position: the guide bar tangent to the
-    crank circle (O3A ⊥ O2A), so the angle at O3 between O3O2 and O3A is asin(90/350) and
-    |O3A| = √(350² − 90²); B on O3A at 580 from O3. The drawn pins (radius 1.2 mm) sit at
-    O3 + z/n on paper (n from the title block), the frame pivots' circles give O3, O2."""
+    580, BF = 0.3·580. The brief names polygon positions [4, 10], so the diagram is drawn at
+    position 4 (issue 19): 3 × 30° after position 1, the crank turning clockwise. Position 1
+    is the extreme position: the guide bar tangent to the crank circle (O3A ⊥ O2A), so the
+    angle at O3 between O3O2 and O3A is asin(90/350) and |O3A| = √(350² − 90²). At position 4
+    A = O2 + 90·e^{i(θ1 − 90°)}, the guide bar along O3A, B on it at 580 from O3. The drawn
+    pins (radius 1.2 mm) sit at O3 + z/n on paper (n from the title block), the frame
+    pivots' circles give O3, O2."""
+    brief = yaml.safe_load((ROOT / "designs" / "shaper_lengths.yaml").read_text(encoding="utf-8"))
+    assert brief["sheets"]["polygon_positions"][0] == 4
     s = _sheets(example_results("shaper_lengths"))["kinematic"]
+    assert any(isinstance(e, Text) and "位置 4" in e.text for e in s.entities)
     n = _scale(s)
     d, r, L = 350.0, 90.0, 580.0
     psi = np.arcsin(r / d)
@@ -58,9 +64,11 @@ def test_shaper_pins_at_position_1_from_the_brief_lengths(example_results):
     pins = _circles(s, 1.2)
     ok = []
     for side in (1, -1):                             # either extreme (the sense of turning)
-        u = 1j * np.exp(1j * side * psi)             # direction O3 → A
-        A = u * np.sqrt(d ** 2 - r ** 2)
-        B = u * L
+        u = 1j * np.exp(1j * side * psi)             # direction O3 → A at position 1
+        A1 = u * np.sqrt(d ** 2 - r ** 2)
+        theta = np.angle(A1 - 1j * d) - np.radians(90.0)     # 3 × 30° clockwise
+        A = 1j * d + r * np.exp(1j * theta)
+        B = A / abs(A) * L
         ok.append(_near(pins, o3 + A / n) and _near(pins, o3 + B / n))
         if ok[-1]:
             # F: a pin at BF = 0.3 L from B, on the ram's horizontal guide (a slider there)
@@ -68,6 +76,71 @@ def test_shaper_pins_at_position_1_from_the_brief_lengths(example_results):
             dist = np.abs(others - (o3 + B / n)) * n
             assert np.any(np.abs(dist - 0.3 * L) < 1e-6)
     assert any(ok)
+
+
+def test_lockbeam_diagram_draws_the_whole_machine_at_phi_0(example_results):
+    """designs/lockbeam.yaml at main-shaft angle φ = 0, every joint from a closed form:
+    - feed linkage at position 1 (the guide bar tangent to the crank circle): O2 = 0,
+      O3 = −100i, crank 50, A where O3A ⊥ O2A, D on O3A at 250, E on y = 156.7 at 80 from D;
+    - positioning cam keyed at 80°: δ = −80° = 280° lies in the far dwell (170 + 60 … 300),
+      so the roller centre is r0 + h = 40 + 10 = 50 mm straight above the cam centre;
+    - bending cam keyed at 18°: δ = 342° is 12° into the 30° 3-4-5 return, t = 0.4, so
+      ψ = Ψ (1 − (10t³ − 15t⁴ + 6t⁵)) with Ψ = 24.398°; the roller centre C is 35 mm from
+      the pivot A0 and √(80² + 35² − 2·80·35 cos(φ0 + ψ)) from the cam centre;
+    - the four-bar: A0B0 = 200 along the cam–pivot line, A = A0 + a e^{±i(α1 + ψ)} (mirrored
+      or not), B where the circles (A, b) and (B0, 40) meet;
+    - the chain wheels: pitch circles Ø144 about B0 and Ø40."""
+    import math
+
+    r = example_results("lockbeam")
+    s = _sheets(r)["kinematic"]
+    n = _scale(s)
+    ground = _circles(s, 0.22 * 7.0)
+    pins = _circles(s, 1.2)
+    # feed linkage
+    o2 = [g for g in ground if _near(ground, g - 100j / n)]
+    assert len(o2) == 1
+    o2 = o2[0]
+    ok = False
+    for side in (1, -1):
+        u = 1j * np.exp(1j * side * math.asin(50 / 100))
+        A = -100j + u * math.sqrt(100 ** 2 - 50 ** 2)
+        D = -100j + u * 250
+        E = complex(D.real + math.sqrt(80 ** 2 - (156.7 - D.imag) ** 2), 156.7)
+        ok = ok or all(_near(pins, o2 + z / n) for z in (A, D, E))
+    assert ok
+    # positioning cam: a cam centre (ground) with a pin 50 mm above and a Ø20 roller there
+    rollers = _circles(s, 10.0 / n)
+    pin_cams = [g for g in ground if _near(pins, g + 50j / n) and _near(rollers, g + 50j / n)]
+    assert len(pin_cams) == 1
+    # bending cam, lever and four-bar
+    t = 0.4
+    Psi = math.radians(24.398)
+    psi = Psi * (1 - (10 * t ** 3 - 15 * t ** 4 + 6 * t ** 5))
+    cam = r["bending_cam"]
+    phi0 = cam.grid.initial_angle
+    oc = math.sqrt(80 ** 2 + 35 ** 2 - 2 * 80 * 35 * math.cos(phi0 + psi))
+    ds = r["bending"].design
+    a, b, c, d = ds.input_rocker * 1e3, ds.coupler * 1e3, ds.output_rocker * 1e3, ds.frame * 1e3
+    found = 0
+    for o in ground:
+        a0 = o + 80 / n
+        b0 = a0 + d / n
+        if not (_near(ground, a0) and _near(ground, b0)):
+            continue
+        C = [p for p in pins if abs(abs(p - a0) * n - 35) < 1e-6 and abs(abs(p - o) * n - oc) < 1e-6]
+        assert len(C) == 1
+        for sgn in (1, -1):
+            A = a0 + a / n * np.exp(1j * sgn * (ds.alpha1 + psi))
+            if not _near(pins, A):
+                continue
+            Bs = _circle_intersections(A, b / n, b0, c / n)
+            assert any(_near(pins, B) for B in Bs)
+            found += 1
+        assert _near(_circles(s, 72.0 / n), b0)
+        assert len(_circles(s, 20.0 / n)) == 1
+    assert found == 1
+    assert any(isinstance(e, Text) and "示意" in e.text for e in s.entities)
 
 
 def _circle_intersections(c0, r0, c1, r1):
@@ -215,3 +288,25 @@ def test_a_diagram_that_cannot_be_drawn_is_left_out_with_a_line(tmp_path, capsys
     assert "Kinematic diagram could not be drawn (the layout does not fit)" in err
     with pytest.raises(ValueError):
         write_all([("analysis", bad)], brief, tmp_path, tmp_path / "f", "en", ("dxf",))
+
+
+def test_sheet_notes_go_to_the_runs_warning_callback(tmp_path, capsys):
+    """With the runner's ``on_warning`` the lines are handed to it (the run collects them
+    and prints them as its warnings, in the report's language), not printed here."""
+    from types import SimpleNamespace
+
+    from mechdesign.render.sheets import make_sheets, write_all
+
+    got = []
+    make_sheets({}, None, tmp_path, tmp_path, "zh", ("md", "dxf"), on_warning=got.append)
+    assert got and "没有可绘制的图纸" in got[0] and not got[0].startswith("提示")
+
+    def bad(info, lang):
+        raise ValueError("the layout does not fit")
+
+    meta = SimpleNamespace(title="t", student="", student_id="", class_name="", teacher="", date="")
+    brief = SimpleNamespace(report=meta, sheets=None)
+    (tmp_path / "f").mkdir()
+    write_all([("kinematic", bad)], brief, tmp_path, tmp_path / "f", "en", ("dxf",), on_warning=got.append)
+    assert "Kinematic diagram could not be drawn (the layout does not fit)" in got[-1]
+    assert capsys.readouterr().err == ""

@@ -181,6 +181,12 @@ def run_one(brief: Path, *, out_dir: Path | None = None, lang: str | None = None
             if on_warning is not None:
                 on_warning(finding.text(language))
     computed = time.perf_counter() - start
+
+    def sheet_warning(text: str) -> None:   # a sheet left out: a warning of the run
+        warnings.append(text)
+        if on_warning is not None:
+            on_warning(text)
+
     report = importlib.import_module(machine.report_module)
     from .render.sheets import make_sheets
 
@@ -213,7 +219,7 @@ def run_one(brief: Path, *, out_dir: Path | None = None, lang: str | None = None
             document=document, meta=b.report,
             templates=templates, progress=render_progress, group=label,
             make_sheets=lambda folder, figs: make_sheets(results, b, folder, figs, language,
-                                                         formats, render_progress),
+                                                         formats, render_progress, sheet_warning),
             animate=animate, parallel=parallel, program=program,
             write_data=(None if not hasattr(report, "write_data")
                         else lambda d: report.write_data(results, d)))

@@ -36,6 +36,13 @@ from pathlib import Path
 
 from ..fileio import atomic_path
 from .mathbreak import break_display_math
+
+#: Widest formula line for Word [em of the PDF's math font, as render/mathbreak estimates]:
+#: the equation sits in the middle 80 % of the 453.5 pt text width (templates/docx-numbering.lua),
+#: 362.8 pt, set in Cambria Math at the body's 12 pt, about 1.1 × as wide as the PDF's New
+#: Computer Modern: 362.8 / 12 / 1.1 = 27.5 em; 27 em leaves the estimate a little room
+#: (the PDF budget, 30 em at 11 pt, would let a line run over the cell in Word).
+WORD_BUDGET_EM = 27.0
 from .pdf import DEFAULT_LABELS, MARKDOWN_FORMAT, source_timestamp
 
 REFERENCE_DOCX = "reference.docx"
@@ -123,7 +130,7 @@ def render_docx(md_path: Path, docx_path: Path, metadata: dict, template_dir: Pa
         if not needed.is_file():
             raise DocxRenderError(f"template file not found: {needed}")
     try:
-        md_text = break_display_math(md_path.read_text(encoding="utf-8"))
+        md_text = break_display_math(md_path.read_text(encoding="utf-8"), WORD_BUDGET_EM)
     except OSError as exc:
         raise DocxRenderError(f"cannot read {md_path}: {exc}") from exc
 

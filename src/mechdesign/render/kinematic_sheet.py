@@ -7,7 +7,9 @@ transmission schematic (传动系统示意图) of a drive: motor, belt, gear pai
 worm, the shafts numbered with their speed, power and torque.
 
 Each builder only reads results: :func:`linkage_diagram` (any linkage run through the shared
-linkage stages, at position 1), :func:`crank_rocker_diagram` (the crank-rocker brief's
+linkage stages, at the brief's first polygon position, else position 1), :func:`lockbeam_diagram`
+(the whole lock-beam machine: feed linkage, both cams with their followers, the bending
+four-bar and chain, at φ = 0), :func:`crank_rocker_diagram` (the crank-rocker brief's
 optimum, at its first extreme position, and its offset slider-crank), :func:`cam_diagram`
 (a synthesised cam at δ = 0), :func:`disc_diagram` (the eccentric disc cam at δ = 0) and
 :func:`drive_schematic`.
@@ -35,7 +37,8 @@ LABELS = {
            "shaft": "轴", "n": "n (r/min)", "P": "P (kW)", "T": "T (N·m)",
            "stage": "传动", "ratio": "传动比 i", "data": "参数", "motor": "电动机 {m}",
            "shafts": "各轴运动和动力参数", "stages": "各级传动",
-           "omega": "ω", "guide": "导路"},
+           "omega": "ω", "guide": "导路",
+           "drawn_at": "；图示为位置 {p}"},
     "en": {"diagram": "Kinematic diagram", "drive": "Transmission schematic", "position": "position {p}",
            "scale": "length scale μL = {mu} m/mm ({s})", "links": "Links: ", "frame": "frame",
            "crank_rocker": "Crank-rocker (optimum design, rocker at its first extreme C1)",
@@ -45,7 +48,8 @@ LABELS = {
            "shaft": "Shaft", "n": "n (rpm)", "P": "P (kW)", "T": "T (N·m)",
            "stage": "Stage", "ratio": "ratio i", "data": "data", "motor": "motor {m}",
            "shafts": "Speed, power and torque of the shafts", "stages": "Stages",
-           "omega": "ω", "guide": "guide"},
+           "omega": "ω", "guide": "guide",
+           "drawn_at": "; drawn at position {p}"},
 }
 
 ROMAN = ("0", "I", "II", "III", "IV", "V", "VI", "VII", "VIII")
@@ -140,107 +144,354 @@ def _link_outline(zs: list) -> list:
 
 
 def linkage_positions(found, label: str = "1") -> int:
-    """Index of the drawn position among the textbook positions (position 1)."""
+    """Index of the drawn position among the textbook positions (``label``, else position 1)."""
     labels = [str(x) for x in found.motion.positions.labels]
-    return labels.index(label) if label in labels else 0
+    return labels.index(str(label)) if str(label) in labels else 0
 
 
-def linkage_diagram(found, info: TitleInfo, lang: str) -> Sheet:
-    """The kinematic diagram of a linkage (``found``: sheets.LinkageResults) at position 1."""
-    from ..stages.linkage import link_members
+def diagram_position(found, brief=None) -> str:
+    """The position a linkage's diagram is drawn at: the first of the brief's
+    ``sheets.polygon_positions`` when it names them (the position the graphical method and
+    the A1 sheet work at), else position 1."""
+    settings = getattr(brief, "sheets", None)
+    chosen = getattr(settings, "polygon_positions", None)
+    if chosen and getattr(found, "polygons", None) is not None and found.polygons.positions:
+        return str(found.polygons.positions[0])
+    return "1"
 
-    lab = LABELS[lang]
-    model, k = found.model, found.motion
-    mech = model.mechanism
-    members, sliders = link_members(mech)
-    n_grid = k.grid_size
-    i = linkage_positions(found)
-    label = str(list(k.positions.labels)[i])
-    P = {name: complex(np.asarray(z)[n_grid + i]) * MM for name, z in k.points.items()}
-    joints = {j.point for js in mech.joints.values() for j in js} | set(mech.frame_points)
-    coms = {b.com for b in model.bodies if b.com is not None} - joints
-    loads = {r.point for r in model.resistances} - joints - coms
-    drawn = {nm: z for nm, z in P.items() if nm not in coms | loads}
-    crank = model.crank
-    pts = list(drawn.values())
-    piv = complex(mech.frame_points[crank.pivot]) * MM
-    pts += list(piv + crank.length * MM * np.exp(1j * np.linspace(0, 2 * np.pi, 13)))
-    guides = []
-    for slider, point, guide, gpoint in sliders:
-        if isinstance(guide, str):
-            continue
-        # the fixed guide over the slider's travel and a little beyond
-        u = np.exp(1j * guide)
-        g0 = complex(gpoint) * MM
-        t = (np.conj(u) * (np.asarray(k.points[point])[:n_grid] * MM - g0)).real
-        lo, hi = float(t.min()), float(t.max())
-        extra = max(0.12 * (hi - lo), 15.0)
-        a, b = g0 + u * (lo - extra), g0 + u * (hi + extra)
-        guides.append((slider, point, a, b, u))
-        pts += [a, b]
-    s = Sheet(SIZE)
-    area = _area(s)
-    view, n = _fit(s, np.array(pts), area)
-    info = replace(info, scale=scale_text(n))
-    frame(s, info)
+
+class _LinkageDrawing:
+    """One linkage at one position in model millimetres (``shift`` added to every point):
+    the points to fit (:attr:`pts`) and :meth:`draw`."""
+
+    def __init__(self, found, label: str = "1", shift: complex = 0j):
+        from ..stages.linkage import link_members
+
+        model, k = found.model, found.motion
+        self.model, self.k = model, k
+        mech = self.mech = model.mechanism
+        self.members, self.sliders = link_members(mech)
+        n_grid = self.n_grid = k.grid_size
+        i = self.i = linkage_positions(found, label)
+        self.label = str(list(k.positions.labels)[i])
+        P = self.P = {name: complex(np.asarray(z)[n_grid + i]) * MM + shift for name, z in k.points.items()}
+        self.joints = {j.point for js in mech.joints.values() for j in js} | set(mech.frame_points)
+        coms = {b.com for b in model.bodies if b.com is not None} - self.joints
+        loads = {r.point for r in model.resistances} - self.joints - coms
+        self.drawn = {nm: z for nm, z in P.items() if nm not in coms | loads}
+        self.frame_pts = {nm: complex(z) * MM + shift for nm, z in mech.frame_points.items()}
+        crank = model.crank
+        self.piv = self.frame_pts[crank.pivot]
+        self.r_crank = crank.length * MM
+        pts = list(self.drawn.values())
+        pts += list(self.piv + self.r_crank * np.exp(1j * np.linspace(0, 2 * np.pi, 13)))
+        self.guides = []
+        for slider, point, guide, gpoint in self.sliders:
+            if isinstance(guide, str):
+                continue
+            # the fixed guide over the slider's travel and a little beyond
+            u = np.exp(1j * guide)
+            g0 = complex(gpoint) * MM + shift
+            t = (np.conj(u) * (np.asarray(k.points[point])[:n_grid] * MM + shift - g0)).real
+            lo, hi = float(t.min()), float(t.max())
+            extra = max(0.12 * (hi - lo), 15.0)
+            a, b = g0 + u * (lo - extra), g0 + u * (hi + extra)
+            self.guides.append((slider, point, a, b, u))
+            pts += [a, b]
+        self.pts = pts
+
+    def draw(self, s: Sheet, view, placer: LabelPlacer, lab: dict) -> list:
+        """Draw the linkage; returns the link numbers placed."""
+        P, drawn, joints, mech, k, i = self.P, self.drawn, self.joints, self.mech, self.k, self.i
+        n_grid = self.n_grid
+        # links (thick lines; a ternary link as a closed outline)
+        for link, names in self.members.items():
+            outline = _link_outline([P[p] for p in names if p in drawn])
+            if len(outline) >= 2:
+                view.polyline(np.array(outline), "OUTLINE")
+                for a, b in zip(outline[:-1], outline[1:]):
+                    placer.block_segment(view.p(a), view.p(b), 1.5)
+        # fixed guides: hatched frame lines offset by half the block; sliders as blocks
+        for slider, point, a, b, u in self.guides:
+            hatched_line(view, a - 1j * u * 3.5 / view.scale, b - 1j * u * 3.5 / view.scale,
+                         side=-1j)
+            for off in (0.0, 3.5, 6.0):
+                placer.block_segment(view.p(a - 1j * u * off / view.scale),
+                                     view.p(b - 1j * u * off / view.scale), 1.0)
+        for slider, point, guide, _ in self.sliders:
+            ang = guide if not isinstance(guide, str) else float(np.asarray(k.link_angle[guide])[n_grid + i])
+            slider_block(view, P[point], ang, 10.0, 6.0 if not isinstance(guide, str) else 5.0)
+            placer.block(view.p(P[point]), 5.5)
+        for name in sorted(joints - set(mech.frame_points)):
+            if name in P:
+                pin(view, P[name])
+                placer.block(view.p(P[name]), 1.5)
+        for name, z in self.frame_pts.items():
+            ground(view, z, 7.0)
+            placer.block(view.p(z) - 3.5j, 5.0)
+        view.circle(self.piv, self.r_crank, "CENTER")
+        _omega_arrow(s, view, self.piv, self.r_crank, self.model.crank_omega > 0, placer, lab)
+        # names of the points, then the link numbers
+        mid = np.mean(list(drawn.values()))
+        for name in sorted(set(mech.frame_points) | (joints & set(P))):
+            d = P[name] - mid
+            placer.place(view.p(P[name]), name, 3.5, prefer=d if abs(d) > 1e-9 else 1j, gap=2.5)
+        numbered = []
+        for link, names in self.members.items():
+            outline = _link_outline([P[p] for p in names if p in drawn])
+            if len(outline) < 2:
+                continue
+            a, b = outline[0], outline[1]
+            d = (b - a) / abs(b - a) if abs(b - a) > 1e-9 else 1.0
+            placer.place(view.p(a + 0.45 * (b - a)), link, 3.5, prefer=1j * d, gap=2.0)
+            numbered.append(link)
+        for slider, point, guide, _ in self.sliders:
+            if slider not in numbered:
+                ang = guide if not isinstance(guide, str) else float(np.asarray(k.link_angle[guide])[n_grid + i])
+                placer.place(view.p(P[point]), slider, 3.5, prefer=1j * np.exp(1j * ang), gap=5.0)
+                numbered.append(slider)
+        return numbered
+
+    def legend(self, numbered: list, lang: str) -> str:
+        names = getattr(self.model, "names", None) or {}
+        return "  ".join(f"{lk} {names[lk][0 if lang == 'zh' else 1]}" for lk in
+                         sorted(set(numbered), key=lambda x: (len(x), x)) if lk in names)
+
+
+def _placer(s: Sheet) -> LabelPlacer:
     placer = LabelPlacer(s, area=(s.inner[0] + 2, s.inner[1] + 2, s.inner[2] - 2, s.inner[3] - 2))
     tb = title_block_box(s)
     placer.block_box((tb[0] - 2, tb[1], tb[2], tb[3] + 2))
-    _title(s, f"{lab['diagram']}  {lab['position'].format(p=label)}  {scale_text(n)}", area)
-    # links (thick lines; a ternary link as a closed outline)
-    for link, names in members.items():
-        outline = _link_outline([P[p] for p in names if p in drawn])
-        if len(outline) >= 2:
-            view.polyline(np.array(outline), "OUTLINE")
-            for a, b in zip(outline[:-1], outline[1:]):
-                placer.block_segment(view.p(a), view.p(b), 1.5)
-    # fixed guides: hatched frame lines offset by half the block; sliders as blocks
-    for slider, point, a, b, u in guides:
-        side = -1j
-        hatched_line(view, a - 1j * u * 3.5 / view.scale, b - 1j * u * 3.5 / view.scale,
-                     side=side)
-        for off in (0.0, 3.5, 6.0):
-            placer.block_segment(view.p(a - 1j * u * off / view.scale),
-                                 view.p(b - 1j * u * off / view.scale), 1.0)
-    for slider, point, guide, _ in sliders:
-        ang = guide if not isinstance(guide, str) else float(np.asarray(k.link_angle[guide])[n_grid + i])
-        slider_block(view, P[point], ang, 10.0, 6.0 if not isinstance(guide, str) else 5.0)
-        placer.block(view.p(P[point]), 5.5)
-    for name in sorted(joints - set(mech.frame_points)):
-        if name in P:
-            pin(view, P[name])
-            placer.block(view.p(P[name]), 1.5)
-    for name, z in mech.frame_points.items():
-        ground(view, complex(z) * MM, 7.0)
-        placer.block(view.p(complex(z) * MM) - 3.5j, 5.0)
-    view.circle(piv, crank.length * MM, "CENTER")
-    _omega_arrow(s, view, piv, crank.length * MM, model.crank_omega > 0, placer, lab)
-    # names of the points, then the link numbers
-    mid = np.mean(list(drawn.values()))
-    for name in sorted(set(mech.frame_points) | (joints & set(P))):
-        d = P[name] - mid
-        placer.place(view.p(P[name]), name, 3.5, prefer=d if abs(d) > 1e-9 else 1j, gap=2.5)
-    numbered = []
-    for link, names in members.items():
-        outline = _link_outline([P[p] for p in names if p in drawn])
-        if len(outline) < 2:
-            continue
-        a, b = outline[0], outline[1]
-        d = (b - a) / abs(b - a) if abs(b - a) > 1e-9 else 1.0
-        placer.place(view.p(a + 0.45 * (b - a)), link, 3.5, prefer=1j * d, gap=2.0)
-        numbered.append(link)
-    for slider, point, guide, _ in sliders:
-        if slider not in numbered:
-            ang = guide if not isinstance(guide, str) else float(np.asarray(k.link_angle[guide])[n_grid + i])
-            placer.place(view.p(P[point]), slider, 3.5, prefer=1j * np.exp(1j * ang), gap=5.0)
-            numbered.append(slider)
-    names = getattr(model, "names", None) or {}
-    legend = "  ".join(f"{lk} {names[lk][0 if lang == 'zh' else 1]}" for lk in
-                       sorted(set(numbered), key=lambda x: (len(x), x)) if lk in names)
-    notes = [_scale_note(lab, n)]
+    return placer
+
+
+def linkage_diagram(found, info: TitleInfo, lang: str, label: str = "1") -> Sheet:
+    """The kinematic diagram of a linkage (``found``: sheets.LinkageResults) at position
+    ``label`` (see :func:`diagram_position`)."""
+    lab = LABELS[lang]
+    ld = _LinkageDrawing(found, label)
+    s = Sheet(SIZE)
+    area = _area(s)
+    view, n = _fit(s, np.array(ld.pts), area)
+    info = replace(info, scale=scale_text(n))
+    frame(s, info)
+    placer = _placer(s)
+    _title(s, f"{lab['diagram']}  {lab['position'].format(p=ld.label)}  {scale_text(n)}", area)
+    numbered = ld.draw(s, view, placer, lab)
+    legend = ld.legend(numbered, lang)
+    notes = [_scale_note(lab, n) + lab["drawn_at"].format(p=ld.label)]
     if legend:
         notes.append(lab["links"] + legend)
     _notes(s, notes)
+    return s
+
+
+# ------------------------------------------------------------------ the lock-beam machine
+
+def cam_state(c, delta: float) -> tuple[np.ndarray, complex, int]:
+    """(actual profile in the fixed frame [model mm], follower point [model mm], grid index)
+    of the synthesised cam ``c`` turned to cam angle ``delta`` [rad]: the grid angle nearest
+    ``delta``; the cam body turned by σδ (the profile is stored at δ = 0)."""
+    g = c.grid
+    n = len(g.delta)
+    step = 2 * np.pi / n
+    j = int(round(float(np.mod(delta, 2 * np.pi)) / step)) % n
+    turn = np.exp(1j * g.rotation * float(g.delta[j]))
+    return actual_profile_mm(c) * turn, complex(g.follower_point[j]) * MM, j
+
+
+def actual_profile_mm(c) -> np.ndarray:
+    from .cam_sheet import actual_profile
+
+    return np.asarray(actual_profile(c))
+
+
+def _tangent_runs(a: complex, r1: float, b: complex, r2: float) -> list[tuple[complex, complex]]:
+    """The two outer tangents of circles (a, r1) and (b, r2): an open chain's runs."""
+    d = b - a
+    u = d / abs(d)
+    ang = np.arcsin((r2 - r1) / abs(d))
+    out = []
+    for sgn in (1, -1):
+        nrm = 1j * u * np.exp(-1j * sgn * ang) * sgn
+        out.append((a + r1 * nrm, b + r2 * nrm))
+    return out
+
+
+CHAIN_CENTRES = 1.6      # schematic chain centre distance, in large-wheel diameters
+
+
+def lockbeam_layout(results, found, phi: float = 0.0) -> dict:
+    """The lock-beam machine at main-shaft angle ``phi`` [rad] in model millimetres: three
+    groups side by side on one horizontal through the main shaft, each drawn to scale in
+    itself — the feed linkage (at its position 1, φ = 0), the positioning cam with its
+    translating roller follower (the pin), and the bending cam whose oscillating follower
+    is the four-bar's input rocker (one rigid lever about A0), the four-bar A0–A–B–B0 and
+    the chain from the large wheel (on B0) to the bending wheel. What the brief does not
+    give is schematic: where the groups sit relative to each other, the angle between the
+    follower arm and the input rocker (the four-bar is mirrored if needed so that the lever
+    turns one way), the direction of the four-bar's frame line (along the cam–pivot line)
+    and the chain's centre distance (:data:`CHAIN_CENTRES` × the large wheel's diameter).
+
+    Returns ``{"feed": _LinkageDrawing, "pin": {...}, "bend": {...}, "pts": [...]}``."""
+    p = results["params"]
+    pin_cam, bend_cam, bending = results["cam"], results["bending_cam"], results["bending"]
+    feed = _LinkageDrawing(found, "1")
+    fx1 = max(z.real for z in feed.pts)
+    gap = 60.0
+    # the positioning cam: centre on the main-shaft line right of the feed linkage
+    prof, B, _ = cam_state(pin_cam, phi - p.pin_cam_start)
+    r_out = float(np.max(np.abs(prof)))
+    rr_pin = pin_cam.grid.roller_radius * MM
+    o_pin = complex(fx1 + gap + r_out, 0.0)
+    top = float(np.max(np.abs(pin_cam.grid.pitch))) * MM + rr_pin + 35.0
+    pin_d = {"O": o_pin, "profile": prof + o_pin, "B": B + o_pin, "rr": rr_pin,
+             "stem_top": o_pin + complex(B.real, top), "guide_y": top - 13.0,
+             "e": B.real}
+    # the bending cam and its lever
+    prof_b, C, j = cam_state(bend_cam, phi - p.bend_cam_start)
+    rb_out = float(np.max(np.abs(prof_b)))
+    fol = bend_cam.follower if bend_cam.follower is not None else bend_cam.params.follower
+    a_piv = fol.pivot_distance * MM
+    o_b = complex(o_pin.real + r_out + gap + rb_out, 0.0)
+    A0 = o_b + a_piv
+    ds = bending.design
+    psi = float(bend_cam.grid.motion.s[j])
+    # which way the follower arm turns as ψ grows (from the grid: the arm's angle at the
+    # far end of the rise against its angle at the lowest position)
+    fp = np.asarray(bend_cam.grid.follower_point)
+    s_all = np.asarray(bend_cam.grid.motion.s)
+    hi, lo = int(np.argmax(s_all)), int(np.argmin(s_all))
+    turn = np.angle((fp[hi] - fol.pivot_distance) / (fp[lo] - fol.pivot_distance))
+    mirror = turn < 0
+    m = bending.mechanism.solve(np.array([ds.alpha1 + psi]))
+    raw = {"A": complex(m.points["A"].pos[0]), "B": complex(m.points["B"].pos[0]),
+           "A0": 0j, "B0": complex(ds.frame, 0.0)}
+    four = {k: A0 + (np.conj(v) if mirror else v) * MM for k, v in raw.items()}
+    r_big = p.bending.driving_wheel / 2 * MM
+    r_small = p.bending.bending_wheel / 2 * MM
+    small = four["B0"] + 1j * CHAIN_CENTRES * 2 * r_big
+    # the bending wheel turns with the large wheel (open chain): its arm starts upwards
+    beta = float(np.angle(raw["B"] - raw["B0"]))
+    dbeta = float(np.angle(np.exp(1j * (beta - ds.beta1))))
+    if mirror:
+        dbeta = -dbeta
+    arm_len = 1.6 * r_small
+    arm = small + arm_len * np.exp(1j * (np.pi / 2 + bending.ratio * dbeta))
+    bend_d = {"O": o_b, "profile": prof_b + o_b, "C": C + o_b, "rr": bend_cam.grid.roller_radius * MM,
+              "four": four, "r_big": r_big, "r_small": r_small, "small": small, "arm": arm,
+              "mirror": mirror, "sigma": bend_cam.grid.rotation}
+    pts = list(feed.pts) + list(pin_d["profile"]) + [pin_d["stem_top"], o_pin - 10j]
+    pts += list(bend_d["profile"]) + list(four.values())
+    pts += [four["B0"] + r_big * np.exp(1j * t) for t in np.linspace(0, 2 * np.pi, 13)]
+    pts += [small + (r_small + 4.0) * np.exp(1j * t) for t in np.linspace(0, 2 * np.pi, 13)]
+    return {"feed": feed, "pin": pin_d, "bend": bend_d, "pts": pts, "found": found,
+            "sigma_pin": pin_cam.grid.rotation}
+
+
+def lockbeam_diagram(results, found, info: TitleInfo, lang: str) -> Sheet:
+    """The whole lock-beam machine (see :func:`lockbeam_layout`) at φ = 0 on one A3 sheet
+    at one length scale; the main shaft's link (the feed crank and both cams, keyed to one
+    shaft) is link 2."""
+    lab = LABELS[lang]
+    L = lockbeam_layout(results, found)
+    s = Sheet(SIZE)
+    area = _area(s)
+    view, n = _fit(s, np.array(L["pts"]), area, pad_paper=14.0)
+    frame(s, replace(info, scale=scale_text(n)))
+    placer = _placer(s)
+    zh = lang == "zh"
+    _title(s, f"{lab['diagram']}  φ = 0°  {scale_text(n)}", area)
+    feed = L["feed"]
+    feed.draw(s, view, placer, lab)
+    # the positioning cam: profile, centre, translating roller follower in its guide
+    pd = L["pin"]
+    o = pd["O"]
+    view.polyline(np.append(pd["profile"], pd["profile"][:1]), "OUTLINE")
+    ground(view, o, 7.0)
+    pin(view, o)
+    placer.block(view.p(o), 6.0)
+    for z in pd["profile"][:: max(len(pd["profile"]) // 120, 1)]:
+        placer.block(view.p(complex(z)), 0.6)
+    view.circle(pd["B"], pd["rr"], "OUTLINE")
+    pin(view, pd["B"])
+    view.line(pd["B"] + 1j * pd["rr"], pd["stem_top"], "OUTLINE")
+    placer.block(view.p(pd["B"]), pd["rr"] * view.scale + 0.5)
+    placer.block_segment(view.p(pd["B"]), view.p(pd["stem_top"]), 1.5)
+    yc = o.imag + pd["guide_y"]
+    for side in (-1, 1):
+        xw = pd["stem_top"].real + side * 2.5 / view.scale
+        hatched_line(view, complex(xw, yc - 7.0), complex(xw, yc + 7.0), side=(-1j if side < 0 else 1j))
+        placer.block_box((view.p(complex(xw, yc)).real - 4, view.p(complex(xw, yc - 7.0)).imag,
+                          view.p(complex(xw, yc)).real + 4, view.p(complex(xw, yc + 7.0)).imag))
+    _omega_arrow(s, view, o, float(np.max(np.abs(pd["profile"] - o))), L["sigma_pin"] > 0, placer, lab)
+    placer.place(view.p(o), "O2", 3.5, prefer=-1 - 1j, gap=3.0)
+    placer.place(view.p(pd["B"]), "B", 3.5, prefer=-1 + 0.3j, gap=3.0)
+    placer.place(view.p((pd["B"] + pd["stem_top"]) / 2), "7", 3.5, prefer=1, gap=3.0)
+    k = pd["profile"][len(pd["profile"]) // 2]
+    placer.place(view.p(k), "2", 3.5, prefer=k - o, gap=2.5)
+    # the bending cam, the lever (follower arm + input rocker), the four-bar, the chain
+    bd = L["bend"]
+    o = bd["O"]
+    f = bd["four"]
+    view.polyline(np.append(bd["profile"], bd["profile"][:1]), "OUTLINE")
+    ground(view, o, 7.0)
+    pin(view, o)
+    placer.block(view.p(o), 6.0)
+    for z in bd["profile"][:: max(len(bd["profile"]) // 120, 1)]:
+        placer.block(view.p(complex(z)), 0.6)
+    _omega_arrow(s, view, o, float(np.max(np.abs(bd["profile"] - o))), bd["sigma"] > 0, placer, lab)
+    view.circle(bd["C"], bd["rr"], "OUTLINE")
+    lever = [f["A0"], bd["C"], f["A"], f["A0"]]
+    view.polyline(np.array(lever), "OUTLINE")
+    for a, b in zip(lever[:-1], lever[1:]):
+        placer.block_segment(view.p(a), view.p(b), 1.5)
+    for a, b in ((f["A"], f["B"]), (f["B0"], f["B"])):
+        view.line(a, b, "OUTLINE")
+        placer.block_segment(view.p(a), view.p(b), 1.5)
+    for z in (f["A0"], f["B0"]):
+        ground(view, z, 7.0)
+        placer.block(view.p(z) - 3.5j, 5.0)
+    for z in (bd["C"], f["A"], f["B"]):
+        pin(view, z)
+        placer.block(view.p(z), 1.5)
+    # chain: the large wheel on B0 (one link with the arm B0B), the bending wheel and its arm
+    view.circle(f["B0"], bd["r_big"], "OUTLINE")
+    view.circle(bd["small"], bd["r_small"], "OUTLINE")
+    for a, b in _tangent_runs(f["B0"], bd["r_big"], bd["small"], bd["r_small"]):
+        view.line(a, b, "HIDDEN")
+        placer.block_segment(view.p(a), view.p(b), 1.5)
+    for c0, r in ((f["B0"], bd["r_big"]), (bd["small"], bd["r_small"])):
+        for t in np.linspace(0, 2 * np.pi, 48)[:-1]:
+            placer.block(view.p(c0 + r * np.exp(1j * t)), 0.8)
+    ground(view, bd["small"], 7.0)
+    view.line(bd["small"], bd["arm"], "OUTLINE")
+    pin(view, bd["arm"])
+    placer.block(view.p(bd["small"]) - 3.5j, 5.0)
+    placer.block_segment(view.p(bd["small"]), view.p(bd["arm"]), 1.5)
+    for name, z, d in (("O2", o, -1 - 1j), ("C", bd["C"], -1j), ("A0", f["A0"], -1 + 1j), ("A", f["A"], 1),
+                       ("B", f["B"], 1j), ("B0", f["B0"], 1 - 1j), ("E0", bd["small"], 1 - 1j)):
+        placer.place(view.p(z), name, 3.5, prefer=d, gap=2.5)
+    k = bd["profile"][len(bd["profile"]) // 2]
+    placer.place(view.p(k), "2", 3.5, prefer=k - o, gap=2.5)
+    for num, a, b in (("8", f["A0"], f["A"]), ("9", f["A"], f["B"])):
+        d = (b - a) / abs(b - a)
+        placer.place(view.p((a + b) / 2), num, 3.5, prefer=1j * d, gap=2.0)
+    placer.place(view.p(f["B0"] + bd["r_big"] * np.exp(-0.25j * np.pi)), "10", 3.5, prefer=1 - 1j, gap=2.0)
+    runs = _tangent_runs(f["B0"], bd["r_big"], bd["small"], bd["r_small"])
+    placer.place(view.p((runs[0][0] + runs[0][1]) / 2), "11", 3.5, prefer=1, gap=2.0)
+    placer.place(view.p((bd["small"] + bd["arm"]) / 2), "12", 3.5, prefer=-1, gap=2.0)
+    legend = ("2 主轴（送料曲柄、定位凸轮、扳弯凸轮同轴）  3 滑块  4 导杆  5 连杆  6 送料滑块  7 定位销",
+              "8 摆杆（凸轮从动件与输入摇杆）  9 连杆  10 大链轮  11 链  12 扳弯轮（扳弯臂）") if zh else (
+              "2 main shaft (feed crank and both cams on one shaft)  3 block  4 guide bar  5 rod  "
+              "6 feed slider  7 positioning pin",
+              "8 rocker (cam follower and input rocker)  9 coupler  10 large chain wheel  11 chain  "
+              "12 bending wheel (bending arm)")
+    note = ("各组机构分别按 μL 绘制；三组的相对位置、摆杆两臂的夹角、四杆机构机架方向和链传动中心距未给出，为示意"
+            if zh else "each group to μL; not given, so schematic: the groups' placing, the angle of "
+            "the rocker's arms, the four-bar's frame line, the chain's centre distance")
+    _notes(s, [_scale_note(lab, n) + ("；φ = 0°：送料机构位置 1" if zh else "; φ = 0°: feed linkage at position 1"),
+               note, lab["links"] + legend[0], legend[1]])
     return s
 
 

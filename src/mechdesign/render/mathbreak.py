@@ -219,6 +219,12 @@ def break_formula(tex: str, budget: float = BUDGET_EM) -> str:
         if not rels:
             rows.append("& " + lhs_text)
             continue
+        if lhs_w + _width(rels[0]) > budget:
+            left = _left_rows(lhs, rels, budget)
+            widest = max(_width(_tokens(r.replace("&", ""))) for r in left)
+            if widest <= budget or widest < 0.8 * (lhs_w + sum(_width(r) for r in rels)):
+                rows.extend(left)
+                continue
         lines: list[list[str]] = []
         cur: list[str] = []
         for piece in rels:
@@ -243,6 +249,35 @@ def break_formula(tex: str, budget: float = BUDGET_EM) -> str:
     if len(rows) < 2:
         return tex
     return "\\begin{aligned} " + " \\\\ ".join(rows) + " \\end{aligned}"
+
+
+def _left_rows(lhs: list[str], rels: list[list[str]], budget: float) -> list[str]:
+    """Rows of a formula whose left side and first relation do not fit one line: aligned
+    at the left, the left side first (broken before its top-level + − × when it alone is
+    too wide), then the relations on lines indented by a quad. (Aligning the relations
+    after a wide left side would keep every line as wide as the left side plus its
+    relation: the continuation lines start where the left side ends.)"""
+    indent = _SPACES.get(r"\quad", 1.0)
+    rows: list[str] = []
+    parts = _binary_split(lhs, budget) if _width(lhs) > budget else [lhs]
+    for n, part in enumerate(parts[:-1] if len(parts) > 1 else parts):
+        rows.append(("& " if n == 0 else "& \\quad ") + "".join(part).strip())
+    # the left side's last line (when it was broken) takes the relations that fit after it
+    cur: list[str] = list(parts[-1]) if len(parts) > 1 else []
+    for piece in rels:
+        if cur and indent + _width(cur) + _width(piece) > budget:
+            rows.append("& \\quad " + "".join(cur).strip())
+            cur = []
+        if indent + _width(piece) > budget and len(piece) > 1:
+            head, rest = piece[:1], piece[1:]
+            sub = _binary_split(rest, budget - indent - _width(head) - 1.0)
+            rows.append("& \\quad " + "".join(head + [" "] + sub[0]).strip())
+            rows.extend("& \\qquad " + "".join(part).strip() for part in sub[1:])
+            continue
+        cur += piece
+    if cur:
+        rows.append("& \\quad " + "".join(cur).strip())
+    return rows
 
 
 def break_display_math(markdown: str, budget: float = BUDGET_EM) -> str:

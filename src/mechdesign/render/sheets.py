@@ -31,8 +31,8 @@ TITLES = {
 }
 
 
-NO_SHEETS = {"zh": "提示：该设计没有可绘制的图纸（无机构、凸轮、传动或运动循环结果），未写出 DXF 文件",
-             "en": "note: this design has no drawing sheet (no mechanism, cam, drive or cycle "
+NO_SHEETS = {"zh": "该设计没有可绘制的图纸（无机构、凸轮、传动或运动循环结果），未写出 DXF 文件",
+             "en": "this design has no drawing sheet (no mechanism, cam, drive or cycle "
                    "results), so no DXF file is written"}
 
 
@@ -40,8 +40,16 @@ NO_SHEETS = {"zh": "提示：该设计没有可绘制的图纸（无机构、凸
 # user's brief (a geometry the layout does not handle) is left out with a printed line,
 # the report and the other sheets are still written
 OPTIONAL = {"kinematic", "transmission", "cycle"}
-NOT_DRAWN = {"zh": "提示：{t}无法绘制（{e}），未写出该图的 PDF/DXF 文件",
-             "en": "note: the {t} could not be drawn ({e}); no PDF/DXF written for it"}
+NOT_DRAWN = {"zh": "{t}无法绘制（{e}），未写出该图的 PDF/DXF 文件",
+             "en": "the {t} could not be drawn ({e}); no PDF/DXF written for it"}
+# the prefix of these lines when no warning callback is given (printed to stderr)
+NOTE = {"zh": "提示：", "en": "note: "}
+
+
+def _printer(lang: str) -> Callable[[str], None]:
+    import sys
+
+    return lambda text: print(NOTE[lang] + text, file=sys.stderr)
 
 
 @dataclass(frozen=True)
@@ -124,8 +132,14 @@ def _diagram_builders(results: dict, found) -> list:
 
     out = []
     cam = results.get("cam")
-    if found is not None:
-        out.append(("kinematic", lambda info, lang: ks.linkage_diagram(found, info, lang)))
+    bending = results.get("bending")
+    if (found is not None and bending is not None and hasattr(bending, "design")
+            and results.get("bending_cam") is not None and cam is not None):
+        # the lock-beam machine: the feed linkage, both cams, the bending four-bar and chain
+        out.append(("kinematic", lambda info, lang: ks.lockbeam_diagram(results, found, info, lang)))
+    elif found is not None:
+        label = ks.diagram_position(found, results.get("brief"))
+        out.append(("kinematic", lambda info, lang: ks.linkage_diagram(found, info, lang, label)))
     elif results.get("optimum") is not None and hasattr(results["optimum"], "best"):
         opt, slider = results["optimum"], results.get("slider")
         out.append(("kinematic", lambda info, lang: ks.crank_rocker_diagram(opt, slider, info, lang)))
@@ -159,27 +173,30 @@ def title_info(meta, drawing: str, number: str, index: int, count: int, lang: st
 
 
 def make_sheets(results: dict, brief, folder: Path, fig_dir: Path, lang: str,
-                formats: tuple[str, ...], progress: Callable[[str], None] | None = None
+                formats: tuple[str, ...], progress: Callable[[str], None] | None = None,
+                on_warning: Callable[[str], None] | None = None
                 ) -> Callable[[], list[SheetFiles]]:
     """Build and write every sheet of ``results``: in a helper process when the report is
     rendered with background saves (:mod:`.parallel`), the whole of it, models included,
     while this process draws the figures. Returns a function that gives what was written
-    (waiting for the helper); the helper hands the list over in a small JSON file."""
+    (waiting for the helper); the helper hands the list over in a small JSON file, with the
+    lines saying which sheet could not be drawn, given to ``on_warning`` here (the run's
+    warnings, in the report's language; printed to stderr without a callback)."""
     from .parallel import save_apart
 
+    warn = on_warning or _printer(lang)
     builders = _builders(results, brief)
     if not builders:
         if "dxf" in formats:
-            import sys
-
-            print(NO_SHEETS[lang], file=sys.stderr)
+            warn(NO_SHEETS[lang])
         return lambda: []
     manifest = Path(folder) / ".sheets.json"
 
     def work():
-        files = write_all(builders, brief, folder, fig_dir, lang, formats, progress)
-        write_text(manifest, json.dumps([asdict(f) for f in files], ensure_ascii=False),
-                   encoding="utf-8")
+        notes: list[str] = []
+        files = write_all(builders, brief, folder, fig_dir, lang, formats, progress, notes.append)
+        write_text(manifest, json.dumps({"files": [asdict(f) for f in files], "notes": notes},
+                                        ensure_ascii=False), encoding="utf-8")
 
     wait = save_apart(work, "the drawing sheets")
     done: list[SheetFiles] = []
@@ -187,18 +204,23 @@ def make_sheets(results: dict, brief, folder: Path, fig_dir: Path, lang: str,
     def collect() -> list[SheetFiles]:
         if not done:
             wait()
-            done.extend(SheetFiles(**row) for row in json.loads(manifest.read_text(encoding="utf-8")))
+            handed = json.loads(manifest.read_text(encoding="utf-8"))
+            done.extend(SheetFiles(**row) for row in handed["files"])
             manifest.unlink()
+            for text in handed["notes"]:
+                warn(text)
         return done
 
     return collect
 
 
 def write_all(builders: list, brief, folder: Path, fig_dir: Path, lang: str,
-              formats: tuple[str, ...], progress: Callable[[str], None] | None = None
-              ) -> list[SheetFiles]:
+              formats: tuple[str, ...], progress: Callable[[str], None] | None = None,
+              on_warning: Callable[[str], None] | None = None) -> list[SheetFiles]:
     """Build and write the sheets of ``builders`` (see :func:`_builders`) here and now;
-    return what was written."""
+    return what was written. A diagram that cannot be drawn is left out with a line to
+    ``on_warning`` (stderr without it)."""
+    warn = on_warning or _printer(lang)
     from .sheet_typst import write_sheets
 
     say = progress or (lambda _m: None)
@@ -215,9 +237,7 @@ def write_all(builders: list, brief, folder: Path, fig_dir: Path, lang: str,
         except (ValueError, ArithmeticError) as exc:
             if name not in OPTIONAL:
                 raise
-            import sys
-
-            print(NOT_DRAWN[lang].format(t=TITLES[name][lang], e=exc), file=sys.stderr)
+            warn(NOT_DRAWN[lang].format(t=TITLES[name][lang], e=exc))
             continue
         preview = Path(fig_dir) / f"sheet_{name}.png"
         pdf = dxf = None

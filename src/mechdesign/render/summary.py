@@ -24,7 +24,7 @@ from importlib import resources
 from pathlib import Path
 from typing import Any
 
-from .fmt import md_text
+from .fmt import md_text, verdict
 
 # --------------------------------------------------------------------------- references
 
@@ -67,25 +67,20 @@ class Citations:
 
 # --------------------------------------------------------------------------- checks
 
-_PASS = {"满足", "合格", "通过", "ok", "met", "pass", "passed", "✓", "√", "全部满足", "all met"}
-_FAIL = {"不满足", "不合格", "未通过", "fails", "fail", "failed", "not met", "✗", "×"}
-
-
 def verdict_word(ok: bool, lang: str) -> str:
-    """The one verdict vocabulary of the summary: 合格/不合格, PASS/FAIL."""
-    if lang == "zh":
-        return "合格" if ok else "不合格"
-    return "PASS" if ok else "FAIL"
+    """The one verdict vocabulary of the summary: 合格/不合格, PASS/FAIL (:func:`.fmt.verdict`)."""
+    return verdict(ok, lang)
 
 
-def read_verdict(cell: str) -> bool | None:
-    """A verification table's verdict cell as True/False, None when it is no verdict
-    (an explanation, a dash)."""
-    word = re.sub(r"[*_`]", "", str(cell)).strip().lower()
-    if word in _PASS:
-        return True
-    if word in _FAIL:
-        return False
+def read_verdict(cell: str, lang: str) -> bool | None:
+    """A verification table's verdict cell as the boolean it was made from: the cells are
+    written by :func:`.fmt.verdict` (possibly in bold), so a cell is True or False exactly
+    when it is ``verdict(True/False, lang)``; anything else (an explanation, a dash) is no
+    verdict (None). No synonym lists: a word the one vocabulary does not have is no verdict."""
+    word = re.sub(r"[*_`]", "", str(cell)).strip()
+    for ok in (True, False):
+        if word == verdict(ok, lang):
+            return ok
     return None
 
 
@@ -213,7 +208,7 @@ def check_groups(document: dict, ctx: dict, lang: str) -> list[dict]:
         if not c["ok"]:
             g["failed"].append(c["name"][i])
     if not any(c["group"][0] == "计算自检" for c in checks):
-        rows = [(r[0], read_verdict(r[-1])) for r in (ctx.get("verify_rows") or ()) if len(r) >= 2]
+        rows = [(r[0], read_verdict(r[-1], lang)) for r in (ctx.get("verify_rows") or ()) if len(r) >= 2]
         rows = [(name, ok) for name, ok in rows if ok is not None]
         if rows:
             g = {"group": "计算校核" if zh else "verification", "count": len(rows),
