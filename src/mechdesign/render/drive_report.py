@@ -203,7 +203,7 @@ def stage_designs(d, lang: str) -> list[dict]:
         where = "、".join(n[0] for n in sh.names) if zh else ", ".join(n[1] for n in sh.names)
         text = [(f"轴上零件：{where}。按《机械设计》第 15 章的步骤设计（每步的规则与数值如下），"
                  "任一校核未通过即加大该段直径并重新校核。") if zh else
-                (f"On the shaft: {where}. Designed by the procedure of 《机械设计》 ch. 15 (each step's rule "
+                (f"On the shaft: {where}. Designed by the procedure of PU Lianggui, Machine Design, ch. 15 (each step's rule "
                  "and numbers below); any failed check enlarges that section and everything is checked again.")]
         for k, (szh, sen) in enumerate(getattr(sh, "steps", ()) or (), 1):
             text.append(f"第 {k} 步：{szh}。" if zh else f"Step {k}: {sen}.")
