@@ -231,3 +231,14 @@ def test_numbers_symbols_and_verdicts(example_results, name, lang):
     if lang == "en":    # no full-width punctuation in English text
         assert not [ln for ln in lines if not re.search("[\u3400-\u9fff]", ln)
                     and re.search("[（）：；，、]", ln)]
+
+
+@pytest.mark.parametrize("lang", ["zh", "en"])
+@pytest.mark.parametrize("name", EXAMPLES)
+def test_formulas_have_no_double_superscript(example_results, name, lang):
+    """A number written with a power of ten and then squared must be in parentheses:
+    `9.701\\times10^{5}^2` is not TeX (pandoc's typst writer prints it as 10⁵¹)."""
+    md, _ = _markdown(example_results, name, lang)
+    math = re.findall(r"\$\$(.+?)\$\$|\$([^$\n]+)\$", md, flags=re.S)
+    bad = [m for pair in math for m in pair if re.search(r"\^(\{[^{}]*\}|\w)\s*\^", m)]
+    assert not bad, bad[:3]

@@ -110,9 +110,14 @@ def _worm_thermal(c: Check) -> str:
     return rf"t = t_0 + \frac{{1000 P_1 (1-\eta)}}{{\alpha_d A}} = {numbers}" + _tail(c, "[t]")
 
 
+def _sq(t: str) -> str:
+    """A number about to be squared: in parentheses when it is written with a power of ten."""
+    return f"({t})" if "^" in t else t
+
+
 def _shaft_bending(c: Check) -> str:
     i = c.inputs
-    numbers = (rf"\frac{{\sqrt{{{num(i['M'] * N_MM)}^2 + ({num(i['alpha'])} \times {num(i['T'] * N_MM)})^2}}}}"
+    numbers = (rf"\frac{{\sqrt{{{_sq(num(i['M'] * N_MM))}^2 + ({num(i['alpha'])} \times {num(i['T'] * N_MM)})^2}}}}"
                rf"{{0.1 \times {num(i['d'] * MM)}^3}}")
     return rf"\sigma_{{ca}} = \frac{{\sqrt{{M^2 + (\alpha T)^2}}}}{{0.1 d^3}} = {numbers}" + _tail(c, r"[\sigma_{-1b}]")
 
@@ -174,8 +179,8 @@ def _contact_ratio(c: Check) -> str:
 
 def _worm_deflection(c: Check) -> str:
     i = c.inputs
-    return (rf"y = \frac{{\sqrt{{F_{{t1}}^2 + F_{{r1}}^2}}\, L^3}}{{48 E I}} = \frac{{\sqrt{{{num(i['Ft1'])}^2 + "
-            rf"{num(i['Fr1'])}^2}} \times {num(i['L'] * MM)}^3}}{{48 \times {num(i['E'] * 1e-6)} \times "
+    return (rf"y = \frac{{\sqrt{{F_{{t1}}^2 + F_{{r1}}^2}}\, L^3}}{{48 E I}} = \frac{{\sqrt{{{_sq(num(i['Ft1']))}^2 + "
+            rf"{_sq(num(i['Fr1']))}^2}} \times {num(i['L'] * MM)}^3}}{{48 \times {num(i['E'] * 1e-6)} \times "
             rf"{num(i['I'] * 1e12)}}} = {num(c.value * MM)}\ \text{{mm}} {_rel(c)} [y] = \frac{{d_1}}{{1000}} = "
             rf"{num(c.allowable * MM)}\ \text{{mm}}\ (\text{{mm}}, \text{{N}}, \text{{MPa}})")
 
