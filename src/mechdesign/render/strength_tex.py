@@ -41,12 +41,18 @@ def _trim(text: str) -> str:
     return text.rstrip("0").rstrip(".") if "." in text else text
 
 
+def _counts(check: Check) -> bool:
+    """A check of counts (belts, teeth): a pure number whose value and limit are whole."""
+    return check.unit == "1" and all(float(x).is_integer()
+                                     for x in (check.course_value, check.course_allowable))
+
+
 def _value(check: Check) -> str:
-    return f(check.course_value, DIGITS.get(check.unit, 2))
+    return f(check.course_value, 0 if _counts(check) else DIGITS.get(check.unit, 2))
 
 
 def _allowable(check: Check) -> str:
-    return f(check.course_allowable, DIGITS.get(check.unit, 2))
+    return f(check.course_allowable, 0 if _counts(check) else DIGITS.get(check.unit, 2))
 
 
 def _unit(unit: str) -> str:
