@@ -42,6 +42,8 @@ RENDER_MAY_IMPORT = {
     ("mechdesign.core.strength", "COURSE_SCALE"): "a constant of the strength checks",
     ("mechdesign.stages.cam", "CAM_CHECK_NAMES"): "names of the self-checks (zh, en)",
     ("mechdesign.stages.drive", "DRIVE_CHECK_NAMES"): "names of the self-checks (zh, en)",
+    ("mechdesign.stages.drive", "shaft_numeral"): "the shafts' numbering (0, Ⅰ, Ⅱ …): a look-up "
+                                                 "shared by the tables, warnings and sheets",
     ("mechdesign.machines.eccentric_cam.stages", "DISC_CHECK_NAMES"): "names of the self-checks (zh, en)",
     ("mechdesign.stages.cam", "DIST_LIMIT"): "a tolerance constant printed with its check",
     # result and model types (isinstance checks and annotations)

@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from ..stages.drive import shaft_numeral
 from .fmt import f, md_text
 
 MM = 1e3
@@ -20,11 +21,10 @@ def _stage_label(st, zh: bool) -> str:
 
 
 def _shaft_name(i: int, last: int, zh: bool) -> str:
-    roman = "0 Ⅰ Ⅱ Ⅲ Ⅳ Ⅴ Ⅵ Ⅶ Ⅷ Ⅸ".split()
     if i == 0:
         return "电动机轴 0" if zh else "motor shaft 0"
     tail = ("（工作机输入轴）" if zh else " (machine input)") if i == last else ""
-    return (f"{roman[i]} 轴" if zh else f"shaft {roman[i]}") + tail
+    return (f"{shaft_numeral(i)} 轴" if zh else f"shaft {shaft_numeral(i)}") + tail
 
 
 def drive_context(d, lang: str, figures: dict[str, str], machine_power_eq: str | None = None) -> dict:
@@ -205,7 +205,7 @@ def stage_designs(d, lang: str) -> list[dict]:
                  "任一校核未通过即加大该段直径并重新校核。") if zh else
                 (f"On the shaft: {where}. Designed by the procedure of PU Lianggui, Machine Design, ch. 15 (each step's rule "
                  "and numbers below); any failed check enlarges that section and everything is checked again.")]
-        for k, (szh, sen) in enumerate(getattr(sh, "steps", ()) or (), 1):
+        for k, (szh, sen) in enumerate(sh.steps, 1):
             text.append(f"第 {k} 步：{szh}。" if zh else f"Step {k}: {sen}.")
         text.append((f"支反力（强度计算）：$R_{{AH}} = {f(res.RAh, 1)}$ N，$R_{{AV}} = {f(res.RAv, 1)}$ N，"
                      f"$R_{{BH}} = {f(res.RBh, 1)}$ N，$R_{{BV}} = {f(res.RBv, 1)}$ N；危险截面 x = "
@@ -226,7 +226,7 @@ def stage_designs(d, lang: str) -> list[dict]:
                          "those of the strength case); the static strength the peak."))
         unit_mm = "mm"
         rows = [["$d_{min}$", f(sh.d_min * MM, 2), unit_mm]]
-        if getattr(sh, "d_end", None) is not None:
+        if sh.d_end is not None:
             rows.append([("外伸端" if zh else "overhung end") + " $d_1$", f(sh.d_end * MM, 0), unit_mm])
         rows += [[("轴颈" if zh else "journal") + " $d_j$", f(sh.d_journal * MM, 0), unit_mm],
                  [("装配段" if zh else "hub seat") + " $d_s$", f(sh.d_seat * MM, 0), unit_mm],
@@ -235,7 +235,7 @@ def stage_designs(d, lang: str) -> list[dict]:
                  [("设计转矩" if zh else "design torque") + " $T$", f(sh.torque, 1), "N·m"]]
         if sh.bearing is not None:
             rows.append([("轴承" if zh else "bearing"), sh.bearing.designation, "—"])
-        for k in getattr(sh, "keys", ()) or ():
+        for k in sh.keys:
             lab = f"{f(k.b * MM, 0)}×{f(k.h * MM, 0)}×{f(k.L * MM, 0)}" + (" ×2" if k.count == 2 else "")
             rows.append([("平键" if zh else "key") + f" ({k.names[0] if zh else k.names[1]})", lab, unit_mm])
         bearing_std = () if sh.bearing is None else (

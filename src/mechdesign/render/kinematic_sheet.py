@@ -20,6 +20,7 @@ from dataclasses import replace
 
 import numpy as np
 
+from ..stages.drive import shaft_numeral
 from .sheet import (LabelPlacer, Sheet, TitleInfo, fit_height, format_number, frame, ground,
                     hatched_line, heading, length_scale, pin, scale_text, slider_block, table,
                     text_width, title_block_box, turn_arrow)
@@ -52,7 +53,6 @@ LABELS = {
            "drawn_at": "; drawn at position {p}"},
 }
 
-ROMAN = ("0", "I", "II", "III", "IV", "V", "VI", "VII", "VIII")
 
 
 # ------------------------------------------------------------------ the common frame
@@ -895,11 +895,11 @@ def drive_schematic(drive, info: TitleInfo, lang: str) -> Sheet:
         p = view.p(c0)
         s.circle(p, 1.6, "OUTLINE", 0.35)
         placer.block(p, 2.0)
-        placer.place_best(p, ROMAN[idx] if idx < len(ROMAN) else str(idx), 3.5, prefer=1 + 1j,
+        placer.place_best(p, shaft_numeral(idx), 3.5, prefer=1 + 1j,
                           gaps=(1.5, 3.0, 5.0))
     # tables right of the drawing
     tx = ax1 - table_w
-    rows = [[ROMAN[sh.index] if sh.index < len(ROMAN) else str(sh.index), format_number(sh.speed_rpm, 4),
+    rows = [[shaft_numeral(sh.index), format_number(sh.speed_rpm, 4),
              format_number(sh.power / 1e3, 3), format_number(sh.torque, 4)] for sh in drive.shafts]
     ybot = table(s, tx, ay1 - 6.0, [25, 50, 50, 50], rows, head=[lab["shaft"], lab["n"], lab["P"], lab["T"]],
                  title=lab["shafts"], title_height=3.5, height=3.0, row_h=6.0)

@@ -369,14 +369,21 @@ def _strength_warnings(results, shaft_designs) -> tuple[Finding, ...]:
             if not c.passed:
                 out.append(_failed(c, f"第 {r.index + 1} 级{r.name_zh}", f"stage {r.index + 1} ({r.name_en})",
                                    stage=r.index))
-    roman = "0 Ⅰ Ⅱ Ⅲ Ⅳ Ⅴ Ⅵ Ⅶ Ⅷ Ⅸ".split()
     for s in shaft_designs:
-        name = roman[s.index] if s.index < len(roman) else str(s.index)
-        advice = {a[0]: a[1:] for a in getattr(s, "advice", ())}
+        name = shaft_numeral(s.index)
+        advice = {a[0]: a[1:] for a in s.advice}
         for c in s.checks:
             if not c.passed:
                 out.append(_failed(c, f"{name} 轴", f"shaft {name}", advice.get(c.name_en)))
     return tuple(out)
+
+
+_NUMERALS = "0 Ⅰ Ⅱ Ⅲ Ⅳ Ⅴ Ⅵ Ⅶ Ⅷ Ⅸ".split()
+
+
+def shaft_numeral(index: int) -> str:
+    """The drive's shaft number as tables, warnings and sheets write it: 0 (the motor's), Ⅰ, Ⅱ, …"""
+    return _NUMERALS[index] if index < len(_NUMERALS) else str(index)
 
 
 def _failed(c, where_zh: str, where_en: str, advice=None, stage: int | None = None) -> Finding:

@@ -77,13 +77,13 @@ def belt_application_factor(drive_KA: float, hours_per_day: float) -> tuple[floa
 
 
 def belt_KA(s, dp) -> float:
-    if getattr(s, "belt_KA", None) is not None:
+    if s.belt_KA is not None:
         return s.belt_KA
-    return belt_application_factor(dp.KA, getattr(dp, "hours_per_day", 16.0))[0]
+    return belt_application_factor(dp.KA, dp.hours_per_day)[0]
 
 
 def belt_section(s, P: float, n1_rpm: float, KA: float) -> str | None:
-    return getattr(s, "section", None) or belts.choose_section(belt_tables(), KA * P, n1_rpm)
+    return s.section or belts.choose_section(belt_tables(), KA * P, n1_rpm)
 
 
 def belt_small_diameter(s, P: float, n1_rpm: float, KA: float) -> float:
@@ -106,7 +106,7 @@ def belt_design(s, r, shaft, dp) -> belts.VBeltDesign:
     """The V-belt of stage ``s`` (realised as ``r``) on ``shaft`` (its power and speed)."""
     KA = belt_KA(s, dp)
     return belts.design_vbelt(belt_tables(), shaft.power, shaft.speed_rpm, KA, r.d1, r.d2, r.slip,
-                              getattr(s, "section", None), getattr(s, "center_distance", None))
+                              s.section, s.center_distance)
 
 
 @lru_cache(maxsize=1)
@@ -117,12 +117,12 @@ def chain_tables() -> dict:
 def chain_design(s, r, shaft, dp) -> chains.ChainDesign:
     """The roller chain of stage ``s`` (realised teeth ``r.z1``, ``r.z2``) on ``shaft``."""
     t = chain_tables()
-    if getattr(s, "belt_KA", None) is not None:
+    if s.belt_KA is not None:
         KA = s.belt_KA
     else:
         KA = float(next(row["K_A"] for row in t["application_factor"] if dp.KA <= row["drive_KA_upto"] + 1e-12))
     return chains.design_chain(t, shaft.power, shaft.speed_rpm, KA, r.z1, r.z2, getattr(s, "chain", None),
-                               getattr(s, "rows", 1), getattr(s, "center_distance", None), shocks=dp.KA > 1.25)
+                               getattr(s, "rows", 1), s.center_distance, shocks=dp.KA > 1.25)
 
 
 # ----------------------------------------------------------------------------- gear stages

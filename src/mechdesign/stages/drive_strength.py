@@ -256,7 +256,7 @@ def stage_designs(dp, results, shafts, peak_factor, peak_from_shaft) -> tuple[li
         s = replace(s, z1=r.z1, z2=r.z2)
         if s.type in ("spur", "helical"):
             d = _gear_stage(s, shafts[k].speed_rpm, T1, T2, dp.service_hours, dp.KA,
-                            dict(getattr(dp, "factors", ())))
+                            dict(dp.factors))
             out.append(replace(d, checks=d.checks + de.gear_geometry_checks(d, s)))
         elif s.type == "worm":
             d = _worm_stage(s, shafts[k].speed_rpm, shafts[k].power, T1, T2, dp.service_hours, dp.KA)
@@ -495,7 +495,7 @@ def shaft_designs(dp, designs, shafts, peak_factor, peak_from_shaft, names,
     torque (mean × ``peak_factor``) for the strength checks (shaft, keys, bearing statics);
     the bearing life, a fatigue quantity, takes the cycle's equivalent load: the elements'
     forces at the cube-mean torque (``life_factor`` × the mean; None: the mean) × f_p."""
-    choices = {c.shaft: c for c in getattr(dp, "shafts", ())}
+    choices = {c.shaft: c for c in dp.shafts}
     worm_shafts = {k for k, d in enumerate(designs) if d.kind == "worm"} | \
                   {k + 1 for k, d in enumerate(designs) if d.kind == "worm"}
     lf = 1.0 if life_factor is None else life_factor

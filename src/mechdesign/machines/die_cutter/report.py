@@ -14,6 +14,7 @@ import numpy as np
 from ...render import figures as fig
 from ...render.fmt import e, f, md_meta, md_text
 from ...render.fmt import number, verdict
+from ...stages.drive import shaft_numeral
 
 DEG = 180.0 / np.pi
 MM = 1e3
@@ -245,12 +246,11 @@ def _choice_rows(b, p, r, zh: bool) -> list[list[str]]:
 
 
 def _shaft(index: int, stages: int, zh: bool) -> str:
-    roman = "0 Ⅰ Ⅱ Ⅲ Ⅳ Ⅴ Ⅵ Ⅶ Ⅷ Ⅸ".split()
     if index == 0:
         return "电动机轴" if zh else "motor shaft"
     if index == stages:
         return "分配轴" if zh else "distribution shaft"
-    return f"{roman[index]} 轴" if zh else f"shaft {roman[index]}"
+    return f"{shaft_numeral(index)} 轴" if zh else f"shaft {shaft_numeral(index)}"
 
 
 def _synthesis(d, p, zh: bool) -> dict:
