@@ -89,6 +89,15 @@ from .runner import EXIT_FAILED, EXIT_INVALID, EXIT_OK  # noqa: F401
 class Lang(str, Enum):
     zh = "zh"
     en = "en"
+    zh_TW = "zh_TW"
+
+
+def _base_lang(lang: "Lang | None") -> str:
+    """The base language (zh or en) of --lang for what the command writes itself (an
+    index); a variant such as zh_TW also sets its catalogue (:func:`mechdesign.i18n.use`)."""
+    from .i18n import use
+
+    return use(lang.value) if lang else "zh"
 
 
 def _version(value: bool):
@@ -398,7 +407,7 @@ def batch(
         progress.close()
     doc = index_document(selected, results, out, which)
     stem = "index" if which is None else f"index.shard-{which[0]}-of-{which[1]}"
-    index_lang = lang.value if lang else "zh"
+    index_lang = _base_lang(lang)
     written = write_index(doc, out, index_lang, stem)
     if answers:
         written += write_answers(answers_document(doc), out, index_lang,
@@ -431,7 +440,7 @@ def merge(
     from .batch import BatchError, merge_shards
 
     try:
-        written, totals, code = merge_shards(folder, lang.value if lang else "zh")
+        written, totals, code = merge_shards(folder, _base_lang(lang))
     except BatchError as exc:
         _err(f"error: {exc}")
         raise typer.Exit(EXIT_INVALID)

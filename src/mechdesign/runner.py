@@ -38,22 +38,23 @@ class Outcome:
     traceback: str = ""
 
 
-def design_error_kinds() -> dict[type, tuple[str, str]]:
-    """Design errors (infeasible with the brief's data) → what cannot be done (zh, en)."""
+def design_error_kinds() -> dict[type, str]:
+    """Design errors (infeasible with the brief's data) → what cannot be done (a msgid)."""
     from .core.cam import CamDesignError
     from .core.cycle import CycleError
     from .core.drive import DriveDesignError
     from .core.fourbar import SynthesisError
     from .core.intermittent import IntermittentDesignError
     from .core.mechanism import AssemblyError
+    from .i18n import N_
 
     return {
-        AssemblyError: ("机构无法装配", "the mechanism cannot be assembled"),
-        CamDesignError: ("凸轮无法设计", "the cam cannot be designed"),
-        DriveDesignError: ("传动装置无法设计", "the drive cannot be designed"),
-        SynthesisError: ("连杆机构无法综合", "the linkage cannot be synthesised"),
-        CycleError: ("运动循环图不协调", "the motion cycle diagram is inconsistent"),
-        IntermittentDesignError: ("间歇机构无法设计", "the intermittent drive cannot be designed"),
+        AssemblyError: N_("the mechanism cannot be assembled"),
+        CamDesignError: N_("the cam cannot be designed"),
+        DriveDesignError: N_("the drive cannot be designed"),
+        SynthesisError: N_("the linkage cannot be synthesised"),
+        CycleError: N_("the motion cycle diagram is inconsistent"),
+        IntermittentDesignError: N_("the intermittent drive cannot be designed"),
     }
 
 
@@ -62,27 +63,28 @@ def describe_design_error(exc: Exception, lang: str) -> str | None:
     be done, then the error's own text in ``lang`` (the problem by name, its numbers and
     what to change; see :class:`mechdesign.core.errors.DesignError`)."""
     from .core.errors import DesignError
+    from .i18n import N_, tr
 
-    kinds = design_error_kinds()
-    for kind, (zh, en) in kinds.items():
+    for kind, what in design_error_kinds().items():
         if isinstance(exc, kind):
             break
     else:
         if not isinstance(exc, DesignError):
             return None
-        zh, en = "设计不可行", "the design is infeasible"
+        what = N_("the design is infeasible")
+    _ = tr(lang)
     detail = exc.text(lang)           # every design error is a DesignError (zh + en)
-    if lang == "zh":
-        return f"按任务书数据{zh}：\n  {detail}"
-    return f"{en} with the brief's data:\n  {detail}"
+    return _("{what} with the brief's data:\n  {detail}", what=_(what), detail=detail)
 
 
 def brief_language(path: Path, lang: str | None = None) -> str:
     """The language of messages about a brief: ``lang`` (--lang) if given, else the brief's
     ``report.language`` when the file reads as YAML (even if other fields are invalid),
     else zh (the default of report.language)."""
-    if lang in ("zh", "en"):
-        return lang
+    from .i18n import canonical, use
+
+    if canonical(lang):
+        return use(canonical(lang))
     from .brief.loader import BriefError, read_brief_data
 
     try:
@@ -91,7 +93,7 @@ def brief_language(path: Path, lang: str | None = None) -> str:
         return "zh"
     report = data.get("report") if isinstance(data, dict) else None
     value = report.get("language") if isinstance(report, dict) else None
-    return value if value in ("zh", "en") else "zh"
+    return use(canonical(value) or "zh")
 
 
 def run_one(brief: Path, *, out_dir: Path | None = None, lang: str | None = None,
@@ -126,7 +128,9 @@ def run_one(brief: Path, *, out_dir: Path | None = None, lang: str | None = None
     b, label = variant.brief, variant.group
     base["group"] = label
     base["student"] = (b.report.student, b.report.student_id, b.report.class_name)
-    language = lang or b.report.language
+    from .i18n import canonical, use
+
+    language = use(canonical(lang) or b.report.language)   # zh_TW → zh, its catalogue set
     if out_dir is None:
         # a group asked for by name gets its own folder; the default group keeps the brief's
         out_dir = Path("out") / (brief.stem if group is None else f"{brief.stem}-g{safe_label(label)}")

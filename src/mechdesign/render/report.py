@@ -31,21 +31,58 @@ def template_dir(override: Path | None = None) -> Path:
     return Path(str(resources.files("mechdesign.templates")))
 
 
-def render_markdown(template_name: str, ctx: dict, templates: Path) -> str:
+class _LanguageLoader(jinja2.FileSystemLoader):
+    """Templates by name, a language's own version first: "cam_section.md.j2" is served
+    from "cam_section.<lang>.md.j2" when that exists (a template whose structure differs
+    between the languages, or a student's override for one language), else the shared
+    "cam_section.md.j2", whose words come from the catalogues (``{{ _("…") }}``)."""
+
+    def __init__(self, folder: str, lang: str):
+        super().__init__(folder)
+        self.lang = lang
+
+    def get_source(self, environment, template):
+        if template.endswith(".md.j2") and template.count(".") == 2:
+            own = template[:-len(".md.j2")] + f".{self.lang}.md.j2"
+            try:
+                return super().get_source(environment, own)
+            except jinja2.TemplateNotFound:
+                pass
+        parts = template.split(".")
+        if len(parts) == 4 and parts[1] in ("zh", "en") and template.endswith(".md.j2"):
+            try:                # an older name "x.zh.md.j2" of a shared template
+                return super().get_source(environment, template)
+            except jinja2.TemplateNotFound:
+                return super().get_source(environment, f"{parts[0]}.md.j2")
+        return super().get_source(environment, template)
+
+
+def render_markdown(template_name: str, ctx: dict, templates: Path,
+                    lang: str | None = None) -> str:
     """Render a report template in Jinja's sandbox: a user's ``--templates`` folder can
     format the prepared values but cannot reach Python (no ``__class__``, no imports, no
-    calls of unsafe methods); what it tries is a rendering error, not code run."""
+    calls of unsafe methods); what it tries is a rendering error, not code run.
+
+    ``lang`` (zh or en; by default read from a name such as "shaper.zh.md.j2") picks each
+    template's language version (:class:`_LanguageLoader`) and the catalogue of
+    ``{{ _("…") }}`` (:mod:`mechdesign.i18n`; a variant such as zh_TW set for the run
+    is used for its base language)."""
     from jinja2.sandbox import SandboxedEnvironment
 
+    from ..i18n import jinja_callables
+
+    if lang is None:
+        lang = "zh" if ".zh." in template_name else "en"
     # Pandoc's attribute syntax "{#fig:x}" would open a Jinja comment: comments are {## ##}.
-    env = SandboxedEnvironment(loader=jinja2.FileSystemLoader(str(templates)),
+    env = SandboxedEnvironment(loader=_LanguageLoader(str(templates), lang),
                              undefined=jinja2.StrictUndefined, autoescape=False,
-                             keep_trailing_newline=True,
+                             keep_trailing_newline=True, extensions=["jinja2.ext.i18n"],
                              comment_start_string="{##", comment_end_string="##}")
+    env.install_gettext_callables(**jinja_callables(lang), newstyle=True)
     if "cite" not in ctx:      # the citation counter (render/summary.py), one per report
         from .summary import Citations
 
-        ctx = {**ctx, "cite": Citations("zh" if ".zh." in template_name else "en")}
+        ctx = {**ctx, "cite": Citations(lang)}
     return env.get_template(template_name).render(**ctx)
 
 
@@ -147,7 +184,7 @@ def write_report(out_dir: Path, *, machine: str, lang: str, formats: tuple[str, 
                                            program, fig_dir),
                            cite=Citations(lang))
                 say("Markdown")
-                md = render_markdown(f"{machine}.{lang}.md.j2", ctx, tdir)
+                md = render_markdown(f"{machine}.md.j2", ctx, tdir, lang)
                 if group is not None:
                     md = group_banner(group, lang) + md
                 write_text(staging / "report.md", md, encoding="utf-8")

@@ -1,0 +1,154 @@
+"""Translations: gettext catalogues, one per language, loaded from their ``.po`` files.
+
+The program's own text is English (the msgid); ``locale/zh.po`` holds its Chinese and
+``locale/zh_TW.po`` its Traditional Chinese (generated from zh.po by conversion:
+``python tools/i18n.py tw``). A report language is ``zh``, ``en`` or a *variant* of one of
+them (``zh_TW``): the structure of a report (templates, number formats, punctuation)
+follows the base language, the words follow the variant's catalogue, and a message the
+variant's catalogue lacks falls back to the base catalogue, then to the English msgid.
+
+Usage, in the rendering layer, the machines' report modules and the command line::
+
+    from ..i18n import tr
+    _ = tr(lang)
+    _("crank length a = {a} mm", a=f(a_mm))     # → "曲柄长度 a = 12.5 mm" in zh
+    _.pgettext("link", "frame")                  # with a context (msgctxt): 机架, not 框架
+
+``N_("...")`` marks a string for the catalogue where it is defined (a module-level table)
+and translated later; ``python tools/i18n.py check`` lists every marked string that a
+catalogue lacks (tests/test_i18n.py fails on it).
+
+The catalogues are read with Babel (``babel.messages.pofile``) the first time a language
+needs them (~40 ms for a few thousand messages), once per process.
+"""
+from __future__ import annotations
+
+from functools import lru_cache
+from importlib import resources
+from typing import Callable
+
+#: Report languages: a base language or a variant (catalogue) of one.
+LANGUAGES = ("zh", "en", "zh_TW")
+#: the base language of each variant (its templates, numbers and punctuation)
+_BASE = {"zh": "zh", "en": "en", "zh_TW": "zh"}
+#: the catalogues tried, in order, for a language (English needs none: it is the msgid)
+_CHAIN = {"zh": ("zh",), "zh_TW": ("zh_TW", "zh"), "en": ()}
+
+_variant: str | None = None     # the catalogue variant of this run (set_variant)
+
+
+def canonical(lang: str | None) -> str | None:
+    """``lang`` as one of LANGUAGES, case and separator insensitive (zh-tw, ZH_TW → zh_TW);
+    None when it is none of them."""
+    if lang is None:
+        return None
+    key = str(lang).strip().replace("-", "_").lower()
+    for name in LANGUAGES:
+        if name.lower() == key:
+            return name
+    return None
+
+
+def base(lang: str) -> str:
+    """The base language (zh or en) of a report language."""
+    return _BASE.get(lang, "en" if not str(lang).startswith("zh") else "zh")
+
+
+def set_variant(lang: str | None) -> None:
+    """Make ``lang``'s catalogue the one used for its base language in this process (the
+    runner calls it with the report language: ``zh_TW`` → every ``tr("zh")`` reads
+    zh_TW.po first). ``None`` or a base language resets it."""
+    global _variant
+    _variant = lang if lang in _CHAIN and lang != base(lang) else None
+
+
+def use(lang: str) -> str:
+    """Set ``lang``'s catalogue for this process (:func:`set_variant`) and return its base
+    language, the one the rest of the program is given (templates, numbers, ``tr``)."""
+    set_variant(lang)
+    return base(lang)
+
+
+def variant() -> str | None:
+    """The catalogue variant set for this process (None: the base catalogues)."""
+    return _variant
+
+
+def N_(msgid: str) -> str:
+    """Mark ``msgid`` for the catalogues; return it unchanged (translated where used)."""
+    return msgid
+
+
+@lru_cache(maxsize=None)
+def catalogue(name: str) -> dict:
+    """The messages of ``locale/<name>.po``: {(context, msgid): msgstr}, translated ones
+    only (an empty msgstr is a missing translation: the lookup falls back)."""
+    from babel.messages.pofile import read_po
+
+    path = resources.files("mechdesign.locale") / f"{name}.po"
+    with path.open("rb") as fh:
+        cat = read_po(fh, locale=None, domain="mechdesign")
+    out = {}
+    for msg in cat:
+        if not msg.id or not msg.string or msg.fuzzy:
+            continue
+        out[(msg.context, msg.id)] = msg.string
+    return out
+
+
+def _chain(lang: str) -> tuple[str, ...]:
+    if lang in _CHAIN and lang != base(lang):
+        return _CHAIN[lang]
+    b = base(lang)
+    if _variant is not None and base(_variant) == b:
+        return _CHAIN[_variant]
+    return _CHAIN.get(b, ())
+
+
+def gettext(msgid: str, lang: str, context: str | None = None) -> str:
+    """``msgid`` in ``lang`` (the English msgid itself when no catalogue has it)."""
+    for name in _chain(lang):
+        got = catalogue(name).get((context, msgid))
+        if got is not None:
+            return got
+    return msgid
+
+
+class Translator:
+    """``_ = tr(lang)``: ``_(msgid, **fields)`` is the translation of ``msgid`` with the
+    ``{fields}`` filled in (str.format); ``_.pgettext(context, msgid, **fields)`` the same with a
+    message context. ``_.lang`` is the language, ``_.zh`` whether its base is Chinese."""
+
+    __slots__ = ("lang", "zh")
+
+    def __init__(self, lang: str):
+        self.lang = lang
+        self.zh = base(lang) == "zh"
+
+    def __call__(self, msgid: str, /, **fields) -> str:
+        text = gettext(msgid, self.lang)
+        return text.format(**fields) if fields else text
+
+    def pgettext(self, context: str, msgid: str, /, **fields) -> str:
+        text = gettext(msgid, self.lang, context)
+        return text.format(**fields) if fields else text
+
+
+def tr(lang: str) -> Translator:
+    """The translator of ``lang`` (see :class:`Translator`)."""
+    return Translator(lang)
+
+
+def jinja_callables(lang: str) -> dict[str, Callable]:
+    """gettext/ngettext/pgettext for Jinja2's i18n extension (newstyle: ``{{ _("x %(n)s",
+    n=v) }}``), in ``lang``."""
+    def _gettext(msgid: str) -> str:
+        return gettext(msgid, lang)
+
+    def _ngettext(singular: str, plural: str, n: int) -> str:
+        return gettext(singular if n == 1 else plural, lang)
+
+    def _pgettext(context: str, msgid: str) -> str:
+        return gettext(msgid, lang, context)
+
+    return {"gettext": _gettext, "ngettext": _ngettext, "pgettext": _pgettext}

@@ -1,0 +1,1 @@
+"""The translation catalogues (gettext .po, one per language; see mechdesign.i18n)."""
