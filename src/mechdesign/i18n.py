@@ -27,12 +27,21 @@ from functools import lru_cache
 from importlib import resources
 from typing import Callable
 
-#: Report languages: a base language or a variant (catalogue) of one.
-LANGUAGES = ("zh", "en", "zh_TW")
-#: the base language of each variant (its templates, numbers and punctuation)
-_BASE = {"zh": "zh", "en": "en", "zh_TW": "zh"}
-#: the catalogues tried, in order, for a language (English needs none: it is the msgid)
-_CHAIN = {"zh": ("zh",), "zh_TW": ("zh_TW", "zh"), "en": ()}
+def _discover() -> tuple[str, ...]:
+    """zh and en, then every other catalogue shipped in locale/ (a directory listing only:
+    adding a language is adding its ``<lang>.po``)."""
+    try:
+        names = sorted(p.name[:-3] for p in resources.files("mechdesign.locale").iterdir()
+                       if p.name.endswith(".po"))
+    except (ModuleNotFoundError, FileNotFoundError):      # pragma: no cover
+        names = []
+    return ("zh", "en") + tuple(n for n in names if n not in ("zh", "en"))
+
+
+#: Report languages: the two base languages, then the catalogues of other languages.
+#: A Chinese variant (zh_TW) is the zh report with its own words; any other language is
+#: the en report (its templates, numbers, punctuation) with the words of its catalogue.
+LANGUAGES = _discover()
 
 _variant: str | None = None     # the catalogue variant of this run (set_variant)
 
@@ -51,7 +60,14 @@ def canonical(lang: str | None) -> str | None:
 
 def base(lang: str) -> str:
     """The base language (zh or en) of a report language."""
-    return _BASE.get(lang, "en" if not str(lang).startswith("zh") else "zh")
+    return "zh" if str(lang).startswith("zh") else "en"
+
+
+def _catalogues(lang: str) -> tuple[str, ...]:
+    """The catalogues tried, in order, for a language: its own, then its base language's
+    (English needs none: it is the msgid)."""
+    own = () if lang == "en" else (lang,)
+    return own + (("zh",) if base(lang) == "zh" and lang != "zh" else ())
 
 
 def set_variant(lang: str | None) -> None:
@@ -59,7 +75,7 @@ def set_variant(lang: str | None) -> None:
     runner calls it with the report language: ``zh_TW`` → every ``tr("zh")`` reads
     zh_TW.po first). ``None`` or a base language resets it."""
     global _variant
-    _variant = lang if lang in _CHAIN and lang != base(lang) else None
+    _variant = lang if lang in LANGUAGES and lang not in ("zh", "en") else None
 
 
 def use(lang: str) -> str:
@@ -97,12 +113,11 @@ def catalogue(name: str) -> dict:
 
 
 def _chain(lang: str) -> tuple[str, ...]:
-    if lang in _CHAIN and lang != base(lang):
-        return _CHAIN[lang]
-    b = base(lang)
-    if _variant is not None and base(_variant) == b:
-        return _CHAIN[_variant]
-    return _CHAIN.get(b, ())
+    if lang not in ("zh", "en"):
+        return _catalogues(lang)
+    if _variant is not None and base(_variant) == lang:
+        return _catalogues(_variant)
+    return _catalogues(lang)
 
 
 def gettext(msgid: str, lang: str, context: str | None = None) -> str:
