@@ -136,11 +136,19 @@ def main(argv: list[str]) -> int:
     if cmd == "union":
         with open(args[0], "rb") as fa, open(args[1], "rb") as fb:
             a, b = read_po(fa, locale="zh"), read_po(fb, locale="zh")
+        clashes = 0
         for m in b:
-            if m.id and a.get(m.id, context=m.context) is None:
+            if not m.id:
+                continue
+            old = a.get(m.id, context=m.context)
+            if old is None:
                 a.add(m.id, m.string, context=m.context)
+            elif old.string != m.string:
+                print(f"clash: {m.id!r} [{m.context}]: {old.string!r} vs {m.string!r}",
+                      file=sys.stderr)
+                clashes += 1
         save(a, "zh")
-        return 0
+        return 1 if clashes else 0
     print(__doc__)
     return 2
 
