@@ -62,10 +62,10 @@ def render(tmp_path: Path, ctx: dict, section: str, lang: str) -> str:
     tdir = tmp_path / "tpl"
     if not tdir.exists():
         shutil.copytree(template_dir(), tdir)
-    name = f"wrap_{section}.{lang}.md.j2"
-    (tdir / name).write_text(f'# Chapter\n\n{{% include "{section}_section.{lang}.md.j2" %}}\n',
+    name = f"wrap_{section}.md.j2"
+    (tdir / name).write_text(f'# Chapter\n\n{{% include "{section}_section.md.j2" %}}\n',
                              encoding="utf-8")
-    return render_markdown(name, ctx, tdir)
+    return render_markdown(name, ctx, tdir, lang)
 
 
 @pytest.fixture

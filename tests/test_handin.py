@@ -55,7 +55,7 @@ def render(name: str, lang: str, results: dict, tmp: Path) -> tuple[str, dict]:
         trial = dict(ctx)
         trial.update(handin_context(machine.name, document, trial, lang, brief.report.title),
                      cite=Citations(lang))
-        render_markdown(f"{machine.name}.{lang}.md.j2", trial, template_dir())
+        render_markdown(f"{machine.name}.md.j2", trial, template_dir(), lang)
     except (jinja2.UndefinedError, KeyError):
         # a report that picks its figures by name prefix: draw them
         from mechdesign.runner import _with_requested_figures
@@ -71,7 +71,7 @@ def render(name: str, lang: str, results: dict, tmp: Path) -> tuple[str, dict]:
     ctx.update(handin_context(machine.name, document, ctx, lang,
                               meta_text(brief.report, "title", lang), program, tmp),
                cite=Citations(lang))
-    md = render_markdown(f"{machine.name}.{lang}.md.j2", ctx, template_dir())
+    md = render_markdown(f"{machine.name}.md.j2", ctx, template_dir(), lang)
     return md, document
 
 

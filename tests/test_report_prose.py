@@ -84,7 +84,7 @@ def test_verdicts_and_bilingual_labels():
 
 
 _CAM_FIGURES = sorted(set(re.findall(r"cam\.fig\.(\w+)", (DESIGNS.parent / "templates" /
-                                                        "cam_section.en.md.j2").read_text("utf-8"))))
+                                                        "cam_section.md.j2").read_text("utf-8"))))
 
 
 class _Figures(dict):
@@ -127,7 +127,7 @@ def _markdown(example_results, name: str, lang: str) -> tuple[str, object]:
         document = to_plain(machine.document(r))
         ctx.update(handin_context(machine.name, document, ctx, lang,
                                   meta_text(brief.report, "title", lang)), cite=Citations(lang))
-        _CACHE[name, lang] = (render_markdown(f"{machine.name}.{lang}.md.j2", ctx, template_dir(None)),
+        _CACHE[name, lang] = (render_markdown(f"{machine.name}.md.j2", ctx, template_dir(None), lang),
                               brief)
     return _CACHE[name, lang]
 
