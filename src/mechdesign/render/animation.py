@@ -21,6 +21,7 @@ from typing import Iterator, Mapping, Sequence
 import numpy as np
 
 from ..fileio import atomic_path
+from ..i18n import tr
 from .fonts import configure_matplotlib
 
 DPI = 100
@@ -388,5 +389,6 @@ def linkage_animation_args(model, k, title: str = "") -> dict:
 
 def linkage_gif(model, k, path, lang: str, **kwargs) -> Path:
     """Animate a linkage of the shared stages over one crank revolution as a GIF."""
-    args = linkage_animation_args(model, k, "连杆机构运动" if lang == "zh" else "Linkage motion")
+    _ = tr(lang)
+    args = linkage_animation_args(model, k, _("Linkage motion"))
     return write_mechanism_gif(path, args.pop("points"), args.pop("bars"), **args, **kwargs)

@@ -6,24 +6,35 @@ from pathlib import Path
 
 import numpy as np
 
+from ..i18n import N_
 from .figures import figure
+from .labels import LabelTable
 
-LABELS = {
-    "zh": {"delta": "凸轮转角 δ (°)", "alpha": "压力角 α (°)", "rho": "曲率半径 ρ (mm)",
-           "limit_rise": "推程许用值", "limit_return": "回程许用值",
-           "base": "基圆", "pitch": "理论廓线", "actual": "实际廓线", "roller": "滚子",
-           "rho_pitch": "理论廓线 ρ", "rho_actual": "实际廓线 ρa", "rr": "滚子半径",
-           "x": "x (mm)", "y": "y (mm)", "rise": "推程", "return": "回程", "dwell": "休止",
-           "s_disc": "推杆位移 s (mm)", "follower": "从动件", "pivot": "摆杆转轴 A",
-           "cw": "顺时针", "ccw": "逆时针", "convex_only": "（仅外凸部分；内凹部分不画）"},
-    "en": {"delta": "cam angle δ (°)", "alpha": "pressure angle α (°)", "rho": "radius of curvature ρ (mm)",
-           "limit_rise": "allowed (rise)", "limit_return": "allowed (return)",
-           "base": "base circle", "pitch": "pitch curve", "actual": "actual profile", "roller": "roller",
-           "rho_pitch": "pitch curve ρ", "rho_actual": "actual profile ρa", "rr": "roller radius",
-           "x": "x (mm)", "y": "y (mm)", "rise": "rise", "return": "return", "dwell": "dwell",
-           "s_disc": "follower displacement s (mm)", "follower": "follower", "pivot": "pivot A",
-           "cw": "clockwise", "ccw": "counter-clockwise", "convex_only": " (convex parts only)"},
-}
+LABELS = LabelTable({
+    "delta": N_("cam angle δ (°)"),
+    "alpha": N_("pressure angle α (°)"),
+    "rho": N_("radius of curvature ρ (mm)"),
+    "limit_rise": N_("allowed (rise)"),
+    "limit_return": N_("allowed (return)"),
+    "base": N_("base circle"),
+    "pitch": N_("pitch curve"),
+    "actual": N_("actual profile"),
+    "roller": N_("roller"),
+    "rho_pitch": N_("pitch curve ρ"),
+    "rho_actual": N_("actual profile ρa"),
+    "rr": N_("roller radius"),
+    "x": "x (mm)",
+    "y": "y (mm)",
+    "rise": N_("rise"),
+    "return": N_("return"),
+    "dwell": N_("dwell"),
+    "s_disc": N_("follower displacement s (mm)"),
+    "follower": N_("follower"),
+    "pivot": N_("pivot A"),
+    "cw": N_("clockwise"),
+    "ccw": N_("counter-clockwise"),
+    "convex_only": N_(" (convex parts only)"),
+})
 
 
 def _delta_axis(ax, segments, lab):

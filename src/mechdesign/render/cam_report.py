@@ -9,21 +9,27 @@ import numpy as np
 
 from ..core.cam import DWELL, RISE, TranslatingFollower
 from ..fileio import atomic_open
+from ..i18n import N_, tr
 from ..core.motion_laws import LAWS
 from . import cam_figures as cf
 from .fmt import e, f, md_text, verdict
+from .labels import LabelTable, pgettext
 
 DEG = 180.0 / np.pi
 MM = 1e3
 
 
-_KIND = {"zh": {"rise": "推程", "return": "回程", "far": "远休止", "near": "近休止", "dwell": "休止"},
-         "en": {"rise": "rise", "return": "return", "far": "far dwell", "near": "near dwell",
-                "dwell": "dwell"}}
-_IMPACT = {"zh": {"none": "无冲击", "soft": "柔性冲击", "rigid": "刚性冲击"},
-           "en": {"none": "none", "soft": "soft impact", "rigid": "rigid impact"}}
-CONTACT = {"zh": {"knife": "尖顶", "roller": "滚子", "flat": "平底"},
-            "en": {"knife": "knife-edge", "roller": "roller", "flat": "flat-faced"}}
+_KIND = LabelTable({"rise": N_("rise"), "return": N_("return"), "far": N_("far dwell"),
+                    "near": N_("near dwell"), "dwell": N_("dwell")})
+_IMPACT = LabelTable({"none": pgettext("impact", "none"), "soft": N_("soft impact"),
+                      "rigid": N_("rigid impact")})
+CONTACT = LabelTable({"knife": N_("knife-edge"), "roller": N_("roller"), "flat": N_("flat-faced")})
+#: the quantities of the displacement diagrams (translating, oscillating follower)
+_DIAGRAM_NAMES = LabelTable({
+    "translating": [N_("displacement"), N_("velocity"), N_("acceleration"), N_("jerk")],
+    "oscillating": [pgettext("follower motion", "swing"), N_("angular velocity"),
+                    N_("angular acceleration"), N_("angular jerk")],
+})
 
 
 def _segment_name(c, i, lang):
@@ -74,11 +80,7 @@ class _Units:
 
 
 def _ylabels(u: _Units, lang: str):
-    names = {"zh": ["位移", "速度", "加速度", "跃度"], "en": ["displacement", "velocity",
-                                                           "acceleration", "jerk"]}[lang]
-    if u.osc:
-        names = {"zh": ["角位移", "角速度", "角加速度", "角跃度"],
-                 "en": ["swing", "angular velocity", "angular acceleration", "angular jerk"]}[lang]
+    names = _DIAGRAM_NAMES[lang]["oscillating" if u.osc else "translating"]
     syms = [u.s_sym] + u.syms
     units = [u.s_unit] + u.units
     return [f"{n} {s} ({un})" for n, s, un in zip(names, syms, units)]
@@ -175,8 +177,9 @@ def _law_eqs(c, i, u: _Units, lang):
         v_eq = (rf"\frac{{d{sym}}}{{d\delta}} = {sign}\frac{{{amp}}}{{\Phi}} S'(u)")
         a_eq = (rf"\frac{{d^2{sym}}}{{d\delta^2}} = {sign}\frac{{{amp}}}{{\Phi^2}} S''(u)")
     name = law.name_zh if lang == "zh" else law.name_en
-    sep = "：" if lang == "zh" else ": "
-    return {"title": f"{_KIND[lang][seg.kind]} {f(start, 0)}°–{f(start + span, 0)}°{sep}{name}",
+    _ = tr(lang)
+    return {"title": _("{kind} {start}°–{end}°: {law}", kind=_KIND[lang][seg.kind], start=f(start, 0),
+                       end=f(start + span, 0), law=name),
             "head": head, "S": rf"S(u) = {S}", "S1": rf"S'(u) = {S1}", "S2": rf"S''(u) = {S2}",
             "s": s_eq, "v": v_eq, "a": a_eq,
             "peaks": (f"C_v = {f(law.cv, 4)}, C_a = " + (f(law.ca, 4) if np.isfinite(law.ca) else "∞")
@@ -190,44 +193,43 @@ def cam_context(c, lang: str, figs: dict[str, str], csv_name: str) -> dict:
     prog = p.programme
     u = _Units(c)
     zh = lang == "zh"
+    _ = tr(lang)
     translating = isinstance(fol, TranslatingFollower)
-    motion = ("直动" if translating else "摆动") if zh else ("translating" if translating else "oscillating")
+    motion = _("translating") if translating else _("oscillating")
     contact = CONTACT[lang][fol.kind]
-    follower_name = f"{motion}{contact}从动件" if zh else f"{motion} {contact} follower"
-    rot = ("逆时针" if p.rotation > 0 else "顺时针") if zh else ("counter-clockwise" if p.rotation > 0 else "clockwise")
+    follower_name = _("{motion} {contact} follower", motion=motion, contact=contact)
+    rot = _("counter-clockwise") if p.rotation > 0 else _("clockwise")
     data = []
 
-    def row(sym, zh_name, en_name, value, unit):
-        data.append([sym, zh_name if zh else en_name, value, unit])
+    def row(sym, name, value, unit):
+        data.append([sym, name, value, unit])
 
-    row("—", "从动件", "follower", follower_name, "—")
-    row("—", "凸轮转向", "cam rotation", rot, "—")
+    row("—", _("follower"), follower_name, "—")
+    row("—", _("cam rotation"), rot, "—")
     if p.speed_rpm:
-        row("$n$", "凸轮转速", "cam speed", f(p.speed_rpm, 2), "rpm")
+        row("$n$", _("cam speed"), f(p.speed_rpm, 2), "rpm")
     if translating:
-        row("$h$", "行程", "stroke", f(prog.stroke * MM, 2), "mm")
+        row("$h$", _("stroke"), f(prog.stroke * MM, 2), "mm")
     else:
-        row("$\\varphi_{max}$", "最大摆角", "maximum swing", f(prog.stroke * DEG, 2), "°")
-        row("$a$", "中心距 $L_{OA}$", "centre distance $L_{OA}$", f(fol.pivot_distance * MM, 2), "mm")
+        row("$\\varphi_{max}$", _("maximum swing"), f(prog.stroke * DEG, 2), "°")
+        row("$a$", _("centre distance $L_{OA}$"), f(fol.pivot_distance * MM, 2), "mm")
         if fol.kind != "flat":
-            row("$L$", "摆杆长度", "arm length", f(fol.arm_length * MM, 2), "mm")
-    row("$r_0$", "基圆半径" + ("（按许用压力角设计）" if c.base_radius_designed else ""),
-        "base radius" + (" (designed for the allowed pressure angle)" if c.base_radius_designed else ""),
-        f(c.base_radius * MM, 2), "mm")
+            row("$L$", _("arm length"), f(fol.arm_length * MM, 2), "mm")
+    row("$r_0$", _("base radius (designed for the allowed pressure angle)") if c.base_radius_designed
+        else _("base radius"), f(c.base_radius * MM, 2), "mm")
     if fol.kind == "roller":
-        row("$r_r$", "滚子半径", "roller radius", f(fol.roller_radius * MM, 2), "mm")
+        row("$r_r$", _("roller radius"), f(fol.roller_radius * MM, 2), "mm")
     if translating and fol.kind != "flat":
         fav = c.drawing.offset_favourable
-        side = ("右侧" if c.offset > 0 else "左侧") if zh else ("right" if c.offset > 0 else "left")
-        kind_zh = "正偏置" if fav else "负偏置"
-        kind_en = "favourable" if fav else "unfavourable"
+        side = _("right") if c.offset > 0 else _("left")
+        kind = _("favourable") if fav else _("unfavourable")
         value = f(abs(c.offset) * MM, 2)
         if abs(c.offset) > 0:
-            value += f"（{side}，{kind_zh}）" if zh else f" ({side}, {kind_en})"
-        row("$e$", "偏距", "offset", value, "mm")
+            value += _(" ({side}, {kind})", side=side, kind=kind)
+        row("$e$", _("offset"), value, "mm")
     limit_rise = f(p.alpha_rise * DEG, 0)
-    row("$[\\alpha]$", "推程许用压力角", "allowed pressure angle, rise", limit_rise, "°")
-    row("$[\\alpha']$", "回程许用压力角", "allowed pressure angle, return", f(p.alpha_return * DEG, 0), "°")
+    row("$[\\alpha]$", _("allowed pressure angle, rise"), limit_rise, "°")
+    row("$[\\alpha']$", _("allowed pressure angle, return"), f(p.alpha_return * DEG, 0), "°")
 
     prog_rows = []
     for i, (seg, chk) in enumerate(zip(prog.segments, c.segments)):
@@ -237,8 +239,8 @@ def cam_context(c, lang: str, figs: dict[str, str], csv_name: str) -> dict:
                           f"{f(prog.starts[i] * DEG, 1)} – {f((prog.starts[i] + prog.spans[i]) * DEG, 1)}",
                           f(prog.spans[i] * DEG, 1), law, lift,
                           "—" if seg.kind == DWELL else _IMPACT[lang][chk.impact]])
-    joints = [f"{f(b.delta * DEG, 1)}°（{_IMPACT[lang][b.impact]}）" if zh else
-              f"{f(b.delta * DEG, 1)}° ({_IMPACT[lang][b.impact]})"
+    impacts = _IMPACT[lang]
+    joints = [_("{delta}° ({impact})", delta=f(b.delta * DEG, 1), impact=impacts[b.impact])
               for b in c.boundaries if b.impact != "none"]
     laws = [_law_eqs(c, i, u, lang) for i, seg in enumerate(prog.segments) if seg.kind != DWELL]
 
@@ -284,44 +286,42 @@ def cam_context(c, lang: str, figs: dict[str, str], csv_name: str) -> dict:
             continue
         ok = verdict(chk.ok, lang)
         name = f"{_segment_name(c, i, lang)} {i + 1}"
-        checks.append([("最大压力角 " if zh else "max pressure angle, ") + name,
+        checks.append([_("max pressure angle, {segment}", segment=name),
                        f"{f(chk.max_pressure_angle * DEG, 2)}° (δ = {f(chk.at * DEG, 1)}°)",
                        f"≤ {f(chk.limit * DEG, 0)}°", ok])
     if fol.kind == "roller":
         ok = verdict(c.rho_actual_min_convex >= p.min_actual_curvature, lang)
-        checks.append([("理论廓线外凸部分最小曲率半径 $\\rho_{min}$" if zh else "smallest convex radius $\\rho_{min}$ of the pitch curve"),
+        checks.append([_("smallest convex radius $\\rho_{min}$ of the pitch curve"),
                        f"{f(c.rho_pitch_min_convex * MM, 2)} mm",
                        f"> $r_r$ = {f(fol.roller_radius * MM, 2)} mm", verdict(c.rho_pitch_min_convex > fol.roller_radius, lang)])
-        checks.append([("实际廓线最小曲率半径 $\\rho_a = \\rho_{min} - r_r$" if zh else "actual profile $\\rho_a = \\rho_{min} - r_r$"),
+        checks.append([_("actual profile $\\rho_a = \\rho_{min} - r_r$"),
                        f"{f(c.rho_actual_min_convex * MM, 2)} mm",
                        f"≥ {f(p.min_actual_curvature * MM, 1)} mm", ok])
     if fol.kind == "flat":
         rho_min = c.rho_actual_min if c.rho_actual_min is not None else float(np.min(c.grid.rho_actual))
-        checks.append([("廓线最小曲率半径（须处处外凸）" if zh else "smallest radius of curvature (must stay convex)"),
+        checks.append([_("smallest radius of curvature (must stay convex)"),
                        f"{f(rho_min * MM, 2)} mm", "> 0", verdict(rho_min > 0, lang)])
     design_rows = []
     if c.min_base_radius is not None:
-        what = (("廓线处处外凸（ρ ≥ ρa,min）的最小基圆半径" if zh else
-                 "smallest base radius for a convex profile (ρ ≥ ρa,min)") if fol.kind == "flat" else
-                ("满足许用压力角的最小基圆半径" if zh else "smallest base radius for the allowed pressure angles"))
+        what = (_("smallest base radius for a convex profile (ρ ≥ ρa,min)") if fol.kind == "flat" else
+                _("smallest base radius for the allowed pressure angles"))
         design_rows.append([what
-                            + ((f"（e = {f(c.offset * MM, 2)} mm）" if zh else f" (e = {f(c.offset * MM, 2)} mm)")
+                            + (_(" (e = {e} mm)", e=f(c.offset * MM, 2))
                                if translating and fol.kind != "flat" else ""),
                             f"{f(c.min_base_radius * MM, 2)} mm"])
     if c.best_offset is not None:
         r0b, eb = c.best_offset
-        side = ("右" if eb > 0 else "左") if zh else ("right" if eb > 0 else "left")
-        design_rows.append([("最佳偏距及其最小基圆半径" if zh else "best offset and its smallest base radius"),
+        side = _.pgettext("side, short", "right") if eb > 0 else _.pgettext("side, short", "left")
+        design_rows.append([_("best offset and its smallest base radius"),
                             f"e = {f(abs(eb) * MM, 2)} mm ({side}), r0 = {f(r0b * MM, 2)} mm"])
     if c.face_extent is not None:
         lo, hi = c.face_extent
         if translating:
             width = 2 * max(abs(lo), abs(hi)) * MM
-            design_rows.append([("平底接触点距导路最远（平底宽度至少 2×该值 + 5~7 mm）" if zh else
-                                 "farthest contact from the axis (face width ≥ 2× this + 5–7 mm)"),
+            design_rows.append([_("farthest contact from the axis (face width ≥ 2× this + 5–7 mm)"),
                                 f"{f(max(abs(lo), abs(hi)) * MM, 2)} mm → {f(width + 7, 1)} mm"])
         else:
-            design_rows.append([("平底上接触点离转轴 A 的范围" if zh else "contact along the face from the pivot"),
+            design_rows.append([_("contact along the face from the pivot"),
                                 f"{f(lo * MM, 2)} – {f(hi * MM, 2)} mm"])
 
     t = c.table
@@ -337,7 +337,7 @@ def cam_context(c, lang: str, figs: dict[str, str], csv_name: str) -> dict:
                     default=float(np.max(c.grid.pressure_angle)))
     return {
         "follower": follower_name, "rotation": rot, "data_rows": data, "prog_rows": prog_rows,
-        "joints": "、".join(joints) if zh else ", ".join(joints),
+        "joints": _.pgettext("list separator", ", ").join(joints),
         "laws": laws, "geo": geo, "checks": checks, "design_rows": design_rows,
         "table_rows": table_rows, "table_step": f(p.table_step * DEG, 1),
         "table_head": ["δ/°", f"{u.s_sym}/{u.s_unit}", f"{u.syms[0]}/({u.units[0]})",
@@ -404,6 +404,7 @@ def cam_verification_rows(v, c, lang: str) -> list[list[str]]:
     from ..stages.cam import CAM_CHECK_NAMES, DIST_LIMIT
 
     zh = lang == "zh"
+    _ = tr(lang)
     osc = c.params.oscillating
     s_scale, s_unit = (DEG, "°") if osc else (MM, "mm")
     step = f(v.fd_step * DEG, 1)
@@ -418,31 +419,30 @@ def cam_verification_rows(v, c, lang: str) -> list[list[str]]:
             rows.append([name, _sci(k.value * s_scale, s_unit), f"≤ {e(k.limit * s_scale)} {s_unit}", ok])
         elif k.key == "stroke":
             rows.append([name, f"{f(k.detail['max'] * s_scale, 3)} {s_unit}",
-                         f"{'行程' if zh else 'stroke'} {f(k.reference * s_scale, 3)} {s_unit}", ok])
+                         _("stroke {value} {unit}", value=f(k.reference * s_scale, 3), unit=s_unit), ok])
         elif k.key in ("velocity_fd", "acceleration_fd", "curvature_fd"):
-            rows.append([name, e(k.value), f"≤ {e(k.limit)}（O(h²)，h = {step}°）" if zh else
-                         f"≤ {e(k.limit)} (O(h²), h = {step}°)", ok])
+            rows.append([name, e(k.value), _("≤ {limit} (O(h²), h = {step}°)", limit=e(k.limit), step=step),
+                         ok])
         elif k.key == "pressure_angle":
             rows.append([name, f"{e(k.value * DEG)}°", f"≤ {f(k.limit * DEG, 2)}°", ok])
         elif k.key in ("envelope", "interference", "gap", "face_support"):
-            ref = f"≤ {f(k.limit * MM, 3)} mm" + (f"（$r_r$ = {rr} mm）" if zh else f" ($r_r$ = {rr} mm)") \
+            ref = f"≤ {f(k.limit * MM, 3)} mm" + _(" ($r_r$ = {rr} mm)", rr=rr) \
                 if k.key != "face_support" else f"≤ {f(k.limit * MM, 3)} mm"
             rows.append([name, f"{e(k.value * MM)} mm", ref, ok])
         elif k.key == "offset_curve":
             rows.append([name, f"{f(k.value * MM, 3)} mm", f"≤ {f(DIST_LIMIT * MM, 3)} mm",
-                         "已按包络修正" if zh else "corrected (envelope)"])
+                         _("corrected (envelope)")])
         elif k.key == "corner":
             at = f(k.detail["delta"] * DEG, 1)
             turn = f(k.value * DEG, 2)
             if k.detail["kind"] == "edge":
-                res = f"尖边，法线转过 {turn}°" if zh else f"sharp edge, normal turns {turn}°"
-                ref = (f"切去等距线的自交环；滚子中心偏离设计位置 {f(k.detail['stand_off'] * MM, 3)} mm" if zh else
-                       f"offset loop cut away; roller centre {f(k.detail['stand_off'] * MM, 3)} mm off its path")
+                res = _("sharp edge, normal turns {turn}°", turn=turn)
+                ref = _("offset loop cut away; roller centre {d} mm off its path",
+                        d=f(k.detail["stand_off"] * MM, 3))
             else:
-                res = f"$r_r$ 圆弧，法线转过 {turn}°" if zh else f"$r_r$ arc, normal turns {turn}°"
-                ref = ("补齐等距线间的缺口；从动件按设计运动" if zh else
-                       "fills the gap between the offset branches; motion as designed")
-            rows.append([f"{name}（δ = {at}°）" if zh else f"{name} (δ = {at}°)", res, ref, "—"])
+                res = _("$r_r$ arc, normal turns {turn}°", turn=turn)
+                ref = _("fills the gap between the offset branches; motion as designed")
+            rows.append([_("{name} (δ = {at}°)", name=name, at=at), res, ref, "—"])
     return rows
 
 
@@ -451,42 +451,28 @@ def envelope_note(c, lang: str, csv_stem: str) -> str:
     env = getattr(c, "envelope", None)
     if env is None or not (env.corners or env.edges):
         return ""
-    zh = lang == "zh"
+    _ = tr(lang)
     rr = f(env.roller_radius * MM, 2)
     edges = [k for k in env.corners if k.kind == "edge"]
     arcs = [k for k in env.corners if k.kind == "arc"]
-    sep = "、" if zh else ", "
+    sep = _.pgettext("list separator", ", ")
     deg = lambda ks: sep.join(f"{f(k.delta * DEG, 1)}°" for k in ks)  # noqa: E731
-    if zh:
-        text = ("从动件速度突变（刚性冲击）处理论廓线有尖点，沿法线量取 $r_r$ 的等距曲线在尖点两侧不连续，"
-                "不是滚子圆族的包络。实际廓线按包络线修正：")
-        parts = []
-        if edges:
-            parts.append(f"δ = {deg(edges)} 处两支等距线相交成小环，环内的点到理论廓线的距离小于 $r_r$（会被滚子切去），"
-                         f"实际廓线取到两支的交点为止，成一尖边；此处滚子中心最多离开设计位置 {f(env.stand_off * MM, 3)} mm")
-        if arcs:
-            parts.append(f"δ = {deg(arcs)} 处两支等距线之间有缺口，以滚子中心在尖点处的圆弧（半径 $r_r$ = {rr} mm）补齐，"
-                         "此处从动件按设计运动")
-        text += "；".join(parts) + "。"
-        text += (f"廓线坐标表与 `{csv_stem}.csv` 中被切去的点已换成尖边点；完整的实际廓线（含圆弧）另存为 "
-                 f"`{csv_stem}_outline.csv`，[@fig:cam-profile] 即按此绘制。")
-    else:
-        text = ("Where the follower's velocity jumps (rigid impact) the pitch curve has a corner, and the curve offset "
-                "by $r_r$ along the normal is broken there: it is not the envelope of the roller circles. The actual "
-                "profile is corrected to that envelope: ")
-        parts = []
-        if edges:
-            parts.append(f"at δ = {deg(edges)} the two offset branches cross in a small loop whose points lie closer "
-                         "than $r_r$ to the pitch curve (the roller would cut them away); the profile stops at the "
-                         f"crossing, a sharp edge, and there the roller centre leaves its designed path by at most "
-                         f"{f(env.stand_off * MM, 3)} mm")
-        if arcs:
-            parts.append(f"at δ = {deg(arcs)} the offset branches leave a gap, filled by the arc of radius "
-                         f"$r_r$ = {rr} mm about the corner; there the follower moves as designed")
-        text += "; ".join(parts) + ". "
-        text += (f"The cut-away points in the coordinate table and in `{csv_stem}.csv` are replaced by the edge; "
-                 f"the whole actual profile (with the arcs) is written to `{csv_stem}_outline.csv` and drawn in "
-                 "[@fig:cam-profile].")
+    text = _("Where the follower's velocity jumps (rigid impact) the pitch curve has a corner, and the curve "
+             "offset by $r_r$ along the normal is broken there: it is not the envelope of the roller circles. "
+             "The actual profile is corrected to that envelope: ")
+    parts = []
+    if edges:
+        parts.append(_("at δ = {at} the two offset branches cross in a small loop whose points lie closer "
+                       "than $r_r$ to the pitch curve (the roller would cut them away); the profile stops at "
+                       "the crossing, a sharp edge, and there the roller centre leaves its designed path by "
+                       "at most {d} mm", at=deg(edges), d=f(env.stand_off * MM, 3)))
+    if arcs:
+        parts.append(_("at δ = {at} the offset branches leave a gap, filled by the arc of radius $r_r$ = {rr} mm "
+                       "about the corner; there the follower moves as designed", at=deg(arcs), rr=rr))
+    text += _.pgettext("clause separator", "; ").join(parts) + _.pgettext("sentence end", ". ")
+    text += _("The cut-away points in the coordinate table and in `{csv}.csv` are replaced by the edge; the "
+              "whole actual profile (with the arcs) is written to `{csv}_outline.csv` and drawn in "
+              "[@fig:cam-profile].", csv=csv_stem)
     return text
 
 

@@ -29,8 +29,10 @@ import numpy as np
 
 from ..core.cam import DWELL, RETURN, RISE, OscillatingFollower
 from ..core.motion_laws import LAWS
+from ..i18n import N_, tr
 from ..stages.cam import Division
 from .cam_report import _IMPACT, CONTACT, _segment_name, _Units
+from .labels import LabelTable, pgettext
 from .sheet import (
     THIN,
     LabelPlacer,
@@ -56,70 +58,49 @@ MM = 1e3
 DEG = 180.0 / np.pi
 PRIME = "\u2032"          # ′
 
-LABELS = {
-    "zh": {
-        "drawing": "凸轮机构设计图",
-        "diagram": "从动件位移线图",
-        "profile": "凸轮轮廓曲线（反转法）",
-        "data": "设计数据",
-        "programme": "从动件运动规律",
-        "points": "等分点位移",
-        "pitch": "理论廓线",
-        "actual": "实际廓线",
-        "point": "点号",
-        "cw": "顺时针", "ccw": "逆时针",
-        "follower": "从动件", "rotation": "凸轮转向", "speed": "凸轮转速",
-        "stroke": "行程", "swing": "最大摆角",
-        "r0": "基圆半径", "rr": "滚子半径", "offset": "偏距",
-        "a": "中心距", "L": "摆杆长度", "phi0": "初始摆角",
-        "alpha_rise": "推程最大压力角", "alpha_return": "回程最大压力角",
-        "rho": "理论廓线最小曲率半径", "rho_a": "实际廓线最小曲率半径",
-        "rho_flat": "廓线最小曲率半径",
-        "face": "平底宽度（至少）",
-        "head_data": ("项目", "符号", "数值", "要求"),
-        "head_prog": ("区段", "凸轮转角", "运动角", "运动规律", "行程", "冲击"),
-        "ok": "合格", "fail": "不合格",
-        "right": "右侧", "left": "左侧", "fav": "正偏置", "unfav": "负偏置",
-        "translating": "直动", "oscillating": "摆动",
-        "note": ("注：1. 理论廓线由反转法作出，实际廓线为滚子圆族的包络线；",
-                 "2. 图中长度单位为 mm，角度单位为 (°)。"),
-        "note_flat": ("注：1. 廓线由反转法作出，为平底各反转位置的包络线；",
-                      "2. 图中长度单位为 mm，角度单位为 (°)。"),
-        "note_knife": ("注：1. 廓线由反转法作出，为尖顶各反转位置的连线；",
-                       "2. 图中长度单位为 mm，角度单位为 (°)。"),
-    },
-    "en": {
-        "drawing": "Disc cam design drawing",
-        "diagram": "Follower displacement diagram",
-        "profile": "Cam profile (inversion method)",
-        "data": "Design data",
-        "programme": "Follower programme",
-        "points": "Displacements at the division points",
-        "pitch": "pitch curve",
-        "actual": "actual profile",
-        "point": "Point",
-        "cw": "clockwise", "ccw": "counter-clockwise",
-        "follower": "Follower", "rotation": "Cam rotation", "speed": "Cam speed",
-        "stroke": "Stroke", "swing": "Max. swing",
-        "r0": "Base radius", "rr": "Roller radius", "offset": "Offset",
-        "a": "Centre distance", "L": "Arm length", "phi0": "Initial arm angle",
-        "alpha_rise": "Max. pressure angle, rise", "alpha_return": "Max. pressure angle, return",
-        "rho": "Min. radius of curvature, pitch", "rho_a": "Min. radius of curvature, actual",
-        "rho_flat": "Min. radius of curvature",
-        "face": "Face width (at least)",
-        "head_data": ("Item", "Symbol", "Value", "Requirement"),
-        "head_prog": ("Segment", "Cam angle", "Span", "Motion law", "Lift", "Impact"),
-        "ok": "PASS", "fail": "FAIL",
-        "right": "right", "left": "left", "fav": "favourable", "unfav": "unfavourable",
-        "translating": "translating", "oscillating": "oscillating",
-        "note": ("Notes: 1. Pitch curve by inversion; actual profile = envelope of the roller circles.",
-                 "2. Lengths in mm, angles in degrees."),
-        "note_flat": ("Notes: 1. Profile by inversion: envelope of the inverted face positions.",
-                      "2. Lengths in mm, angles in degrees."),
-        "note_knife": ("Notes: 1. Profile by inversion: path of the inverted knife edge.",
-                       "2. Lengths in mm, angles in degrees."),
-    },
-}
+LABELS = LabelTable({
+    "drawing": N_("Disc cam design drawing"),
+    "diagram": N_("Follower displacement diagram"),
+    "profile": N_("Cam profile (inversion method)"),
+    "data": N_("Design data"),
+    "programme": pgettext("cam sheet", "Follower programme"),
+    "points": N_("Displacements at the division points"),
+    "pitch": N_("pitch curve"),
+    "actual": N_("actual profile"),
+    "point": pgettext("cam sheet", "Point"),
+    "cw": N_("clockwise"),
+    "ccw": N_("counter-clockwise"),
+    "follower": N_("Follower"),
+    "rotation": N_("Cam rotation"),
+    "speed": N_("Cam speed"),
+    "stroke": N_("Stroke"),
+    "swing": N_("Max. swing"),
+    "r0": N_("Base radius"),
+    "rr": N_("Roller radius"),
+    "offset": N_("Offset"),
+    "a": N_("Centre distance"),
+    "L": N_("Arm length"),
+    "phi0": N_("Initial arm angle"),
+    "alpha_rise": N_("Max. pressure angle, rise"),
+    "alpha_return": N_("Max. pressure angle, return"),
+    "rho": N_("Min. radius of curvature, pitch"),
+    "rho_a": N_("Min. radius of curvature, actual"),
+    "rho_flat": N_("Min. radius of curvature"),
+    "face": N_("Face width (at least)"),
+    "head_data": (N_("Item"), N_("Symbol"), N_("Value"), pgettext("cam sheet", "Requirement")),
+    "head_prog": (N_("Segment"), N_("Cam angle"), N_("Span"), N_("Motion law"), N_("Lift"), N_("Impact")),
+    "ok": N_("PASS"),
+    "fail": N_("FAIL"),
+    "right": N_("right"),
+    "left": N_("left"),
+    "fav": N_("favourable"),
+    "unfav": N_("unfavourable"),
+    "translating": N_("translating"),
+    "oscillating": N_("oscillating"),
+    "note": (N_("Notes: 1. Pitch curve by inversion; actual profile = envelope of the roller circles."), N_("2. Lengths in mm, angles in degrees.")),
+    "note_flat": (N_("Notes: 1. Profile by inversion: envelope of the inverted face positions."), N_("2. Lengths in mm, angles in degrees.")),
+    "note_knife": (N_("Notes: 1. Profile by inversion: path of the inverted knife edge."), N_("2. Lengths in mm, angles in degrees.")),
+})
 
 # Scales of the displacement diagram: μδ [°/mm] and μs [mm/mm or °/mm], preferred values.
 _MU_DELTA = (1.0, 1.5, 2.0, 2.5, 3.0, 4.0, 5.0)
@@ -746,19 +727,18 @@ def _right_draw(sheet, c, divs, g, mu_d, mu_s, row, gap, box, lab, lang) -> floa
 def _data_rows(c, g: _ProfileGeometry, lab, lang):
     p = c.params
     fol = g.fol
-    zh = lang == "zh"
+    _ = tr(lang)
     motion = lab["oscillating" if g.osc else "translating"]
     contact = CONTACT[lang][fol.kind]
-    if zh:
-        prefix = "" if g.osc else ("偏置" if abs(g.e) > 1e-9 else "对心")
-        name = f"{prefix}{motion}{contact}从动件"
+    if g.osc:
+        name = _("{motion} {contact} follower", motion=motion, contact=contact)
+    elif abs(g.e) > 1e-9:
+        name = _("offset {motion} {contact} follower", motion=motion, contact=contact)
     else:
-        prefix = "" if g.osc else ("offset " if abs(g.e) > 1e-9 else "centred ")
-        name = f"{prefix}{motion} {contact} follower"
+        name = _("centred {motion} {contact} follower", motion=motion, contact=contact)
     rot = lab["ccw"] if p.rotation > 0 else lab["cw"]
     if p.speed_rpm:
-        rot += (f"，n = {format_number(p.speed_rpm)} r/min" if zh
-                else f", n = {format_number(p.speed_rpm)} rpm")
+        rot += _(", n = {n} rpm", n=format_number(p.speed_rpm))
     rows = [[lab["follower"], "—", name, ""], [lab["rotation"], "ω", rot, ""]]
     prog = p.programme
     if g.osc:
@@ -779,7 +759,7 @@ def _data_rows(c, g: _ProfileGeometry, lab, lang):
             fav = c.drawing.offset_favourable
             side = lab["right"] if g.e > 0 else lab["left"]
             kind = lab["fav" if fav else "unfav"]
-            value += f"（{side}，{kind}）" if zh else f" ({side}, {kind})"
+            value += _(" ({side}, {kind})", side=side, kind=kind)
         rows.append([lab["offset"], "e", value, ""])
     if fol.kind != "flat":
         for kind, key, sym, lim_sym in ((RISE, "alpha_rise", "αmax", "[α]"),

@@ -7,16 +7,17 @@ from pathlib import Path
 
 import numpy as np
 
+from ..i18n import N_
 from .figures import figure
+from .labels import LabelTable
 
-LABELS = {
-    "zh": {"phi": "分配轴转角 φ (°)", "theta": "主动轮（分配轴）转角 θ (°)",
-           "angle": r"从动轮转角 $\varphi_2$ (°)", "travel": "链条位移 (mm)",
-           "jump": "速度突变"},
-    "en": {"phi": "main-shaft angle φ (°)", "theta": "driver (main-shaft) angle θ (°)",
-           "angle": r"driven angle $\varphi_2$ (°)", "travel": "chain travel (mm)",
-           "jump": "speed jump"},
-}
+LABELS = LabelTable({
+    "phi": N_("main-shaft angle φ (°)"),
+    "theta": N_("driver (main-shaft) angle θ (°)"),
+    "angle": N_(r"driven angle $\varphi_2$ (°)"),
+    "travel": N_("chain travel (mm)"),
+    "jump": N_("speed jump"),
+})
 
 #: Fill colour of each state of mechdesign.core.cycle.STATES.
 COLOURS = {"rise": "#5B8FD0", "return": "#E8955A", "dwell_high": "#9CCB9C",

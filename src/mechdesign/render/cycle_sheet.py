@@ -9,26 +9,33 @@ from dataclasses import replace
 
 import numpy as np
 
+from ..i18n import N_
+from .labels import LabelTable, pgettext
 from .sheet import (LabelPlacer, Sheet, TitleInfo, fit_height, format_number, frame, heading,
                     table, text_width, title_block_box)
 
 DEG = 180.0 / np.pi
 MU_PHI = (1.0, 1.25, 1.5, 2.0)          # angle scales [°/mm], preferred first
-STATE_NAMES = {
-    "zh": {"rise": "升", "return": "回", "dwell_high": "远休", "dwell_low": "近休", "move": "运动",
-           "dwell": "停歇"},
-    "en": {"rise": "rise", "return": "return", "dwell_high": "dwell (high)",
-           "dwell_low": "dwell (low)", "move": "move", "dwell": "dwell"},
-}
-LABELS = {
-    "zh": {"title": "运动循环图（直线式）", "phi": "主轴转角 φ (°)", "scale": "角度比例 μφ = {m} °/mm",
-           "table": "各执行构件的运动阶段", "actuator": "执行构件", "phase": "阶段",
-           "start": "起始 φ (°)", "end": "终止 φ (°)", "span": "转角 Δφ (°)", "period": "周期 T = {t} s"},
-    "en": {"title": "Motion cycle diagram (linear)", "phi": "main-shaft angle φ (°)",
-           "scale": "angle scale μφ = {m} °/mm", "table": "Phases of the actuators",
-           "actuator": "Actuator", "phase": "Phase", "start": "start φ (°)", "end": "end φ (°)",
-           "span": "span Δφ (°)", "period": "period T = {t} s"},
-}
+STATE_NAMES = LabelTable({
+    "rise": pgettext("cycle state", "rise"),
+    "return": pgettext("cycle state", "return"),
+    "dwell_high": N_("dwell (high)"),
+    "dwell_low": N_("dwell (low)"),
+    "move": N_("move"),
+    "dwell": pgettext("cycle state", "dwell"),
+})
+LABELS = LabelTable({
+    "title": N_("Motion cycle diagram (linear)"),
+    "phi": pgettext("cycle sheet", "main-shaft angle φ (°)"),
+    "scale": N_("angle scale μφ = {m} °/mm"),
+    "table": N_("Phases of the actuators"),
+    "actuator": N_("Actuator"),
+    "phase": N_("Phase"),
+    "start": N_("start φ (°)"),
+    "end": N_("end φ (°)"),
+    "span": N_("span Δφ (°)"),
+    "period": N_("period T = {t} s"),
+})
 
 
 def pieces(start: float, span: float, origin: float) -> list[tuple[float, float]]:

@@ -11,26 +11,29 @@ from pathlib import Path
 import numpy as np
 
 from ..fileio import atomic_path
+from ..i18n import N_
 from .fonts import configure_matplotlib
+from .labels import LabelTable
 
-LABELS = {
-    "zh": {
-        "phase": "曲柄转角 φ (°)", "s": "位移 s (mm)", "v": "速度 v (m/s)",
-        "a": "加速度 a (m/s²)", "w4": r"角速度 $\omega_4$ (rad/s)", "a4": r"角加速度 $\alpha_4$ (rad/s²)",
-        "mb": r"平衡力矩 $M_b$ (N·m)", "md": "等效驱动力矩（折算到曲柄）",
-        "cut": "切削区", "energy": "动能增量 ΔE (J)", "dwmax": r"$\Delta W_{max}$",
-        "x": "x (mm)", "y": "y (mm)", "reaction": "运动副反力 (N)", "guide": "刨头导路",
-        "working": "工作行程", "return": "回程",
-    },
-    "en": {
-        "phase": "crank angle φ (°)", "s": "displacement s (mm)", "v": "velocity v (m/s)",
-        "a": "acceleration a (m/s²)", "w4": r"$\omega_4$ (rad/s)", "a4": r"$\alpha_4$ (rad/s²)",
-        "mb": r"balancing torque $M_b$ (N·m)", "md": "constant driving torque (on the crank)",
-        "cut": "cutting", "energy": "energy change ΔE (J)", "dwmax": r"$\Delta W_{max}$",
-        "x": "x (mm)", "y": "y (mm)", "reaction": "joint reaction (N)", "guide": "ram guide",
-        "working": "working stroke", "return": "return stroke",
-    },
-}
+LABELS = LabelTable({
+    "phase": N_("crank angle φ (°)"),
+    "s": N_("displacement s (mm)"),
+    "v": N_("velocity v (m/s)"),
+    "a": N_("acceleration a (m/s²)"),
+    "w4": N_(r"$\omega_4$ (rad/s)"),
+    "a4": N_(r"$\alpha_4$ (rad/s²)"),
+    "mb": N_("balancing torque $M_b$ (N·m)"),
+    "md": N_("constant driving torque (on the crank)"),
+    "cut": N_("cutting"),
+    "energy": N_("energy change ΔE (J)"),
+    "dwmax": r"$\Delta W_{max}$",
+    "x": "x (mm)",
+    "y": "y (mm)",
+    "reaction": N_("joint reaction (N)"),
+    "guide": N_("ram guide"),
+    "working": N_("working stroke"),
+    "return": N_("return stroke"),
+})
 
 
 @contextmanager

@@ -7,18 +7,24 @@ from pathlib import Path
 
 import numpy as np
 
+from ..i18n import N_
 from ..stages.gear import GearDrawing
 from .figures import figure
+from .labels import LabelTable
 
-LABELS = {
-    "zh": {"title": "齿轮啮合图", "pitch": "节圆", "ref": "分度圆", "base": "基圆", "tip": "齿顶圆",
-           "root": "齿根圆", "action": "啮合线 $N_1N_2$", "actual": "实际啮合线 $B_1B_2$",
-           "drive": r"主动 $\omega_1$", "x": "x (mm)", "y": "y (mm)"},
-    "en": {"title": "Gear meshing drawing", "pitch": "pitch circle", "ref": "reference circle",
-           "base": "base circle", "tip": "tip circle", "root": "root circle",
-           "action": "line of action $N_1N_2$", "actual": "actual contact $B_1B_2$",
-           "drive": r"driver $\omega_1$", "x": "x (mm)", "y": "y (mm)"},
-}
+LABELS = LabelTable({
+    "title": N_("Gear meshing drawing"),
+    "pitch": N_("pitch circle"),
+    "ref": N_("reference circle"),
+    "base": N_("base circle"),
+    "tip": N_("tip circle"),
+    "root": N_("root circle"),
+    "action": N_("line of action $N_1N_2$"),
+    "actual": N_("actual contact $B_1B_2$"),
+    "drive": N_(r"driver $\omega_1$"),
+    "x": "x (mm)",
+    "y": "y (mm)",
+})
 
 
 def meshing_drawing(path: Path, lang: str, drawing: GearDrawing, title: str | None = None):

@@ -6,6 +6,7 @@ from pathlib import Path
 
 import numpy as np
 
+from ..i18n import tr
 from .fmt import f, md_text
 
 DEG = 180.0 / np.pi
@@ -22,46 +23,43 @@ def make_gear_figures(g, fig_dir: Path, lang: str) -> dict[str, str]:
 def gear_context(g, lang: str, figures: dict[str, str]) -> dict:
     p = g.pair
     g1, g2 = p.g1, p.g2
-    zh = lang == "zh"
+    _ = tr(lang)
     shifted = bool(g1.x or g2.x)
 
     def both(a, b, digits=3):
         return [f(a, digits), f(b, digits)]
 
-    def name(cn, en):
-        return cn if zh else en
-
     rows = [
-        [name("齿数", "teeth"), "$z$", "—", str(g1.z), str(g2.z), "—"],
-        [name("模数", "module"), "$m$", "—", *both(p.m * MM, p.m * MM, 2), "mm"],
-        [name("压力角", "pressure angle"), "$\\alpha$", "—", *both(p.alpha * DEG, p.alpha * DEG, 1), "°"],
-        [name("变位系数", "profile shift"), "$x$", "—", *both(g1.x, g2.x, 3), "—"],
-        [name("分度圆直径", "pitch diameter"), "$d$", "$mz$", *both(g1.d * MM, g2.d * MM), "mm"],
-        [name("齿顶高", "addendum"), "$h_a$", "$(h_a^*+x-\\Delta y)m$", *both(g1.ha * MM, g2.ha * MM), "mm"],
-        [name("齿根高", "dedendum"), "$h_f$", "$(h_a^*+c^*-x)m$", *both(g1.hf * MM, g2.hf * MM), "mm"],
-        [name("齿全高", "tooth depth"), "$h$", "$h_a+h_f$", *both((g1.ha + g1.hf) * MM, (g2.ha + g2.hf) * MM), "mm"],
-        [name("齿顶圆直径", "tip diameter"), "$d_a$", "$d+2h_a$", *both(g1.da * MM, g2.da * MM), "mm"],
-        [name("齿根圆直径", "root diameter"), "$d_f$", "$d-2h_f$", *both(g1.df * MM, g2.df * MM), "mm"],
-        [name("基圆直径", "base diameter"), "$d_b$", "$d\\cos\\alpha$", *both(g1.db * MM, g2.db * MM), "mm"],
-        [name("齿距", "circular pitch"), "$p$", "$\\pi m$", *both(p.p * MM, p.p * MM), "mm"],
-        [name("基圆齿距", "base pitch"), "$p_b$", "$p\\cos\\alpha$", *both(p.pb * MM, p.pb * MM), "mm"],
-        [name("分度圆齿厚", "tooth thickness"), "$s$", "$m(\\pi/2+2x\\tan\\alpha)$", *both(g1.s * MM, g2.s * MM), "mm"],
-        [name("分度圆齿槽宽", "space width"), "$e$", "$p-s$", *both(g1.e * MM, g2.e * MM), "mm"],
-        [name("齿顶圆压力角", "tip pressure angle"), "$\\alpha_a$", "$\\arccos(d_b/d_a)$",
+        [_("teeth"), "$z$", "—", str(g1.z), str(g2.z), "—"],
+        [_("module"), "$m$", "—", *both(p.m * MM, p.m * MM, 2), "mm"],
+        [_("pressure angle"), "$\\alpha$", "—", *both(p.alpha * DEG, p.alpha * DEG, 1), "°"],
+        [_("profile shift"), "$x$", "—", *both(g1.x, g2.x, 3), "—"],
+        [_.pgettext("gear table", "pitch diameter"), "$d$", "$mz$", *both(g1.d * MM, g2.d * MM), "mm"],
+        [_("addendum"), "$h_a$", "$(h_a^*+x-\\Delta y)m$", *both(g1.ha * MM, g2.ha * MM), "mm"],
+        [_("dedendum"), "$h_f$", "$(h_a^*+c^*-x)m$", *both(g1.hf * MM, g2.hf * MM), "mm"],
+        [_("tooth depth"), "$h$", "$h_a+h_f$", *both((g1.ha + g1.hf) * MM, (g2.ha + g2.hf) * MM), "mm"],
+        [_("tip diameter"), "$d_a$", "$d+2h_a$", *both(g1.da * MM, g2.da * MM), "mm"],
+        [_("root diameter"), "$d_f$", "$d-2h_f$", *both(g1.df * MM, g2.df * MM), "mm"],
+        [_("base diameter"), "$d_b$", "$d\\cos\\alpha$", *both(g1.db * MM, g2.db * MM), "mm"],
+        [_("circular pitch"), "$p$", "$\\pi m$", *both(p.p * MM, p.p * MM), "mm"],
+        [_("base pitch"), "$p_b$", "$p\\cos\\alpha$", *both(p.pb * MM, p.pb * MM), "mm"],
+        [_("tooth thickness"), "$s$", "$m(\\pi/2+2x\\tan\\alpha)$", *both(g1.s * MM, g2.s * MM), "mm"],
+        [_("space width"), "$e$", "$p-s$", *both(g1.e * MM, g2.e * MM), "mm"],
+        [_("tip pressure angle"), "$\\alpha_a$", "$\\arccos(d_b/d_a)$",
          *both(g1.alpha_a * DEG, g2.alpha_a * DEG), "°"],
-        [name("齿顶厚", "tip thickness"), "$s_a$", "$s\\frac{r_a}{r}-2r_a(\\mathrm{inv}\\,\\alpha_a-\\mathrm{inv}\\,\\alpha)$",
+        [_("tip thickness"), "$s_a$", "$s\\frac{r_a}{r}-2r_a(\\mathrm{inv}\\,\\alpha_a-\\mathrm{inv}\\,\\alpha)$",
          *both(g1.sa * MM, g2.sa * MM), "mm"],
     ]
     pair_rows = [
-        [name("标准中心距", "standard centre distance"), "$a$", "$m(z_1+z_2)/2$", f(p.a * MM, 3), "mm"],
-        [name("啮合角", "working pressure angle"), "$\\alpha'$", "$\\mathrm{inv}\\,\\alpha' = \\frac{2(x_1+x_2)\\tan\\alpha}{z_1+z_2}+\\mathrm{inv}\\,\\alpha$",
+        [_("standard centre distance"), "$a$", "$m(z_1+z_2)/2$", f(p.a * MM, 3), "mm"],
+        [_("working pressure angle"), "$\\alpha'$", "$\\mathrm{inv}\\,\\alpha' = \\frac{2(x_1+x_2)\\tan\\alpha}{z_1+z_2}+\\mathrm{inv}\\,\\alpha$",
          f(p.alpha_work * DEG, 4), "°"],
-        [name("实际中心距", "working centre distance"), "$a'$", "$a\\cos\\alpha/\\cos\\alpha'$", f(p.a_work * MM, 3), "mm"],
-        [name("顶隙", "clearance"), "$c$", "$a'-r_{a1}-r_{f2}$", f(p.clearance * MM, 3), "mm"],
-        [name("传动比", "ratio"), "$i_{12}$", "$z_2/z_1$", f(p.ratio, 4), "—"],
-        [name("实际啮合线长", "length of action"), "$\\overline{B_1B_2}$",
+        [_("working centre distance"), "$a'$", "$a\\cos\\alpha/\\cos\\alpha'$", f(p.a_work * MM, 3), "mm"],
+        [_("clearance"), "$c$", "$a'-r_{a1}-r_{f2}$", f(p.clearance * MM, 3), "mm"],
+        [_("ratio"), "$i_{12}$", "$z_2/z_1$", f(p.ratio, 4), "—"],
+        [_("length of action"), "$\\overline{B_1B_2}$",
          "$\\varepsilon\\, p_b$", f(p.action_length * MM, 3), "mm"],
-        [name("重合度", "contact ratio"), "$\\varepsilon_\\alpha$", name("见下式", "see below"), f(p.contact_ratio, 4), "—"],
+        [_("contact ratio"), "$\\varepsilon_\\alpha$", _("see below"), f(p.contact_ratio, 4), "—"],
     ]
     tw = np.tan(p.alpha_work)
     b1b2 = g.drawing.action_length   # |B1B2| from the points on the line of action

@@ -22,7 +22,9 @@ from dataclasses import dataclass, replace
 import numpy as np
 
 from ..core.gears import SpurPair
+from ..i18n import N_
 from ..stages.gear import GearDrawing
+from .labels import LabelTable, pgettext
 from .sheet import (LabelPlacer, Polyline, Sheet, TitleInfo, clip_segment, frame,
                     length_scale, sample_polyline, scale_text, table, text_width, title_block_box)
 
@@ -34,38 +36,39 @@ MAX_PAPER_MODULE = 16.0    # enlarge small modules up to this module on paper [m
 MIN_PAPER_MODULE = 5.0     # below this, give up the whole pinion for a larger scale
 ENLARGEMENTS = (10.0, 5.0, 4.0, 2.5, 2.0, 1.0)   # GB/T 14690 n:1 (2.5:1 and 4:1 allowed)
 
-LABELS = {
-    "zh": {"drawing": "齿轮啮合图", "action": "理论啮合线 N1N2", "actual": "实际啮合线 B1B2",
-           "o2": "O2（中心距 a′ = {a}）", "table": "齿轮啮合参数",
-           "head": ("名称", "符号", "齿轮 1", "齿轮 2", "单位"),
-           "m": "模数", "alpha": "压力角", "ha": "齿顶高系数", "c": "顶隙系数", "z": "齿数",
-           "x": "变位系数", "d": "分度圆直径", "dw": "节圆直径", "da": "齿顶圆直径",
-           "df": "齿根圆直径", "db": "基圆直径", "aw": "中心距", "alw": "啮合角",
-           "pb": "基圆齿距", "b1b2": "实际啮合线长", "eps_g": "重合度（作图）",
-           "eps_f": "重合度（公式）", "notes": "说明",
-           "n_drive": "齿轮 1 主动，逆时针转动；齿轮 2 顺时针转动。",
-           "n_teeth": "齿廓为范成法切制的渐开线齿廓（含齿根过渡曲线）。",
-           "n_eps": "ε = B1B2 / pb = {g}；公式 ε = [z1(tan αa1 − tan α′) + z2(tan αa2 − tan α′)] / 2π = {f}。",
-           "n_undercut": "齿轮 {i}（z = {z}，x = {x} < xmin = {xmin}）根切。",
-           "n_interf": "实际啮合线超出 N1N2：齿廓干涉。",
-           "w1": "ω1", "w2": "ω2"},
-    "en": {"drawing": "Gear meshing drawing", "action": "theoretical line of action N1N2",
-           "actual": "actual line of action B1B2", "o2": "O2 (centre distance a′ = {a})",
-           "table": "Meshing data",
-           "head": ("Item", "Symbol", "Gear 1", "Gear 2", "Unit"),
-           "m": "module", "alpha": "pressure angle", "ha": "addendum coeff.", "c": "clearance coeff.",
-           "z": "number of teeth", "x": "profile shift coeff.", "d": "reference diameter",
-           "dw": "pitch diameter", "da": "tip diameter", "df": "root diameter", "db": "base diameter",
-           "aw": "centre distance", "alw": "working pressure angle", "pb": "base pitch",
-           "b1b2": "length of action", "eps_g": "contact ratio (drawn)",
-           "eps_f": "contact ratio (formula)", "notes": "Notes",
-           "n_drive": "Gear 1 drives, counter-clockwise; gear 2 turns clockwise.",
-           "n_teeth": "Generated involute tooth profiles with their root fillets.",
-           "n_eps": "ε = B1B2 / pb = {g}; ε = [z1(tan αa1 − tan α′) + z2(tan αa2 − tan α′)] / 2π = {f}.",
-           "n_undercut": "Gear {i} (z = {z}, x = {x} < xmin = {xmin}) is undercut.",
-           "n_interf": "B1B2 runs beyond N1N2: interference.",
-           "w1": "ω1", "w2": "ω2"},
-}
+LABELS = LabelTable({
+    "drawing": N_("Gear meshing drawing"),
+    "action": N_("theoretical line of action N1N2"),
+    "actual": N_("actual line of action B1B2"),
+    "o2": N_("O2 (centre distance a′ = {a})"),
+    "table": pgettext("gear sheet", "Meshing data"),
+    "head": (pgettext("gear sheet", "Item"), N_("Symbol"), N_("Gear 1"), pgettext("gear sheet", "Gear 2"), N_("Unit")),
+    "m": N_("module"),
+    "alpha": N_("pressure angle"),
+    "ha": N_("addendum coeff."),
+    "c": N_("clearance coeff."),
+    "z": N_("number of teeth"),
+    "x": N_("profile shift coeff."),
+    "d": N_("reference diameter"),
+    "dw": N_("pitch diameter"),
+    "da": N_("tip diameter"),
+    "df": N_("root diameter"),
+    "db": N_("base diameter"),
+    "aw": N_("centre distance"),
+    "alw": N_("working pressure angle"),
+    "pb": N_("base pitch"),
+    "b1b2": N_("length of action"),
+    "eps_g": N_("contact ratio (drawn)"),
+    "eps_f": N_("contact ratio (formula)"),
+    "notes": N_("Notes"),
+    "n_drive": N_("Gear 1 drives, counter-clockwise; gear 2 turns clockwise."),
+    "n_teeth": N_("Generated involute tooth profiles with their root fillets."),
+    "n_eps": N_("ε = B1B2 / pb = {g}; ε = [z1(tan αa1 − tan α′) + z2(tan αa2 − tan α′)] / 2π = {f}."),
+    "n_undercut": N_("Gear {i} (z = {z}, x = {x} < xmin = {xmin}) is undercut."),
+    "n_interf": N_("B1B2 runs beyond N1N2: interference."),
+    "w1": "ω1",
+    "w2": "ω2",
+})
 
 
 # -- clipping to the drawing area (paper mm) ---------------------------------------------

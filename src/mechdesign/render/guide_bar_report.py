@@ -4,16 +4,37 @@ from __future__ import annotations
 
 import numpy as np
 
+from ..i18n import N_, tr
 from .fmt import f
+from .labels import InContext, pgettext
 
 DEG = 180.0 / np.pi
 
 
-def guide_bar_context(syn, p, rod: str = "BF", ram_zh: str = "刨头",
+def _both(entry, en: str | None = None, **fields) -> str:
+    """A cell of the guide-bar tables, which show both languages in either report:
+    Chinese / English (``entry``, a msgid or ``pgettext(context, msgid)``, in Chinese from
+    the catalogue, then ``en`` or the msgid)."""
+    zh = tr("zh")
+    if isinstance(entry, InContext):
+        text, msgid = zh.pgettext(entry.context, entry.msgid, **fields), entry.msgid
+    else:
+        text, msgid = zh(entry, **fields), entry
+    return f"{text} / {msgid if en is None else en}"
+
+
+def _ram_zh() -> str:
+    """The shaper's ram (刨头) in Chinese, the default name of the ram."""
+    _ = tr("zh")
+    return _.pgettext("shaper", "ram")
+
+
+def guide_bar_context(syn, p, rod: str = "BF", ram_zh: str | None = None,
                       extra_rows: list | None = None) -> dict:
     """``syn``: the synthesis stage (design, extreme angle, H, K, whether the lengths were
     given); ``p``: the SI parameters (rod and CoM ratios); ``rod``: the rod's joint letters.
     Synthesis from H, K: the lengths follow; given dimensions: θ = ψ, K and H follow."""
+    ram_zh = _ram_zh() if ram_zh is None else ram_zh
     d = syn.design
     mm = 1e3
     K, H = syn.time_ratio, syn.stroke * mm
@@ -55,15 +76,15 @@ def guide_bar_context(syn, p, rod: str = "BF", ram_zh: str = "刨头",
         return f"{x * mm:.10g}" if exact else f(x * mm, 2)
 
     rows = [
-        ["$\\theta = \\psi$", "极位夹角 = 导杆摆角 / extreme angle = swing", f(theta, 3 if not given else 4), "°"],
-        *([["$K$", "行程速比系数 / time ratio", f(K, 4), "—"],
-           ["$H$", "行程 / stroke", f(H, 2), "mm"]] if given else []),
-        ["$L_{O_2A}$", "曲柄 / crank", length(d.crank, given), "mm"],
-        ["$L_{O_3B}$", "导杆 / guide bar", length(d.guide_bar, given), "mm"],
-        [f"$L_{{{rod}}}$", "连杆 / rod", length(d.rod, p.rod is not None), "mm"],
-        ["$L_{O_3M}$", "导路至 O3 / guide line from O3", length(d.guide_height, syn.guide_given), "mm"],
+        ["$\\theta = \\psi$", _both(N_("extreme angle = swing")), f(theta, 3 if not given else 4), "°"],
+        *([["$K$", _both(N_("time ratio")), f(K, 4), "—"],
+           ["$H$", _both(N_("stroke")), f(H, 2), "mm"]] if given else []),
+        ["$L_{O_2A}$", _both(N_("crank")), length(d.crank, given), "mm"],
+        ["$L_{O_3B}$", _both(N_("guide bar")), length(d.guide_bar, given), "mm"],
+        [f"$L_{{{rod}}}$", _both(N_("rod")), length(d.rod, p.rod is not None), "mm"],
+        ["$L_{O_3M}$", _both(N_("guide line from O3")), length(d.guide_height, syn.guide_given), "mm"],
         *(extra_rows or []),
-        ["$L_{O_3S_4}$", "导杆质心 / bar CoM", f(d.bar_com * mm, 2), "mm"],
+        ["$L_{O_3S_4}$", _both(N_("bar CoM")), f(d.bar_com * mm, 2), "mm"],
     ]
     return {"eq": eq, "rows": rows, "ram_zh": ram_zh, "theta": f(theta, 2), "given": given,
             "guide_given": syn.guide_given}
@@ -73,14 +94,16 @@ def task_words(p, syn) -> dict:
     """The task paragraph's words that depend on what the brief gives: the gear pair
     driving the crank, the ram guide by the rule or given."""
     gear = p.z1 is not None
+    driven = N_(", driven by gear z2,")
+    guide = (N_("the ram guide's distance $L_{O_3M}$ is given.") if syn.guide_given else
+             N_("the ram guide passes through the mid-point of the sagitta of the arc "
+                "described by the bar's end B."))
+    zh = tr("zh")
     return {
-        "driven_zh": "由齿轮 z2 带动，" if gear else "",
-        "driven_en": ", driven by gear z2," if gear else "",
-        "guide_zh": ("导路位置 $L_{O_3M}$ 由任务书给出。" if syn.guide_given else
-                     "刨头导路通过导杆端点 B 所画圆弧弦高的中点。"),
-        "guide_en": ("the ram guide's distance $L_{O_3M}$ is given." if syn.guide_given else
-                     "the ram guide passes through the mid-point of the sagitta of the arc "
-                     "described by the bar's end B."),
+        "driven_zh": zh(driven) if gear else "",
+        "driven_en": driven if gear else "",
+        "guide_zh": zh(guide),
+        "guide_en": guide,
     }
 
 
@@ -92,40 +115,40 @@ def data_rows(b, p, ram_zh: str, rod: str, rod_ratio: float, ram_com: list,
     a ratio or a length, the gear teeth when there is a gear pair."""
     lk, ms, ld = b.linkage, b.masses, b.loads
     if lk.crank_O2A_mm is not None:
-        form = [["$L_{O_2A}$", "曲柄长 / crank", f"{lk.crank_O2A_mm:g}", "mm"],
-                ["$L_{O_3B}$", "导杆长 / guide bar", f"{lk.guide_bar_O3B_mm:g}", "mm"]]
+        form = [["$L_{O_2A}$", _both(pgettext("length", "crank")), f"{lk.crank_O2A_mm:g}", "mm"],
+                ["$L_{O_3B}$", _both(pgettext("length", "guide bar")), f"{lk.guide_bar_O3B_mm:g}", "mm"]]
     else:
-        form = [["$H$", f"{ram_zh}行程 / ram stroke", f(lk.stroke_H_mm, 0), "mm"],
-                ["$K$", "行程速比系数 / time ratio", f(p.time_ratio_K, 2), "—"]]
+        form = [["$H$", _both(N_("{ram} stroke"), "ram stroke", ram=ram_zh), f(lk.stroke_H_mm, 0), "mm"],
+                ["$K$", _both(N_("time ratio")), f(p.time_ratio_K, 2), "—"]]
     rod_mm = getattr(lk, f"rod_{rod}_mm")
-    rod_row = ([f"$L_{{{rod}}}$", "连杆长 / rod", f"{rod_mm:g}", "mm"] if rod_mm is not None else
-               [f"$L_{{{rod}}}/L_{{O_3B}}$", "连杆与导杆之比 / rod ratio", f(rod_ratio, 2), "—"])
+    rod_row = ([f"$L_{{{rod}}}$", _both(pgettext("length", "rod")), f"{rod_mm:g}", "mm"] if rod_mm is not None else
+               [f"$L_{{{rod}}}/L_{{O_3B}}$", _both(N_("rod ratio")), f(rod_ratio, 2), "—"])
 
     def load(mass, weight, sym, zh, en, digits=1):
         m, w = getattr(ms, mass), getattr(ms, weight)
         if w is not None and (m is None or weight in ms.model_fields_set):
-            return [f"$G_{{{sym}}}$", f"{zh}重量 / {en} weight", f(w, 0), "N"]
-        return [f"$m_{{{sym}}}$", f"{zh}质量 / {en} mass", f(m, digits), "kg"]
+            return [f"$G_{{{sym}}}$", _both(N_("{name} weight"), f"{en} weight", name=zh), f(w, 0), "N"]
+        return [f"$m_{{{sym}}}$", _both(N_("{name} mass"), f"{en} mass", name=zh), f(m, digits), "kg"]
 
     return [
         *form,
-        ["$L_{O_2O_3}$", "机架长 / frame", f(lk.frame_O2O3_mm, 0), "mm"],
+        ["$L_{O_2O_3}$", _both(pgettext("length", "frame")), f(lk.frame_O2O3_mm, 0), "mm"],
         rod_row,
-        *([["$L_{O_3M}$", "导路至 O3 / guide line from O3", f"{lk.guide_O3M_mm:g}", "mm"]]
+        *([["$L_{O_3M}$", _both(N_("guide line from O3")), f"{lk.guide_O3M_mm:g}", "mm"]]
           if lk.guide_O3M_mm is not None else []),
-        ["$L_{O_3S_4}/L_{O_3B}$", "导杆质心位置 / bar CoM ratio", f(lk.com_ratio_O3S4_O3B, 2), "—"],
+        ["$L_{O_3S_4}/L_{O_3B}$", _both(N_("bar CoM ratio")), f(lk.com_ratio_O3S4_O3B, 2), "—"],
         *(ram_com if ram_com and isinstance(ram_com[0], list) else [ram_com]),
-        ["$n_2$", "曲柄转速 / crank speed", f(lk.crank_speed_n2_rpm, 0), "rpm"],
-        load("guide_bar_m4_kg", "guide_bar_G4_N", "4", "导杆", "guide-bar"),
-        ["$J_{S_4}$", "导杆转动惯量 / guide-bar inertia", f(ms.guide_bar_J_S4_kgm2, 2), "kg·m²"],
+        ["$n_2$", _both(N_("crank speed")), f(lk.crank_speed_n2_rpm, 0), "rpm"],
+        load("guide_bar_m4_kg", "guide_bar_G4_N", "4", tr("zh")(N_("guide bar")), "guide-bar"),
+        ["$J_{S_4}$", _both(N_("guide-bar inertia")), f(ms.guide_bar_J_S4_kgm2, 2), "kg·m²"],
         load("ram_m6_kg", "ram_G6_N", "6", ram_zh, "ram"),
-        *([["$m_2$", "齿轮2质量 / gear 2 mass", f(ms.gear2_m2_kg, 1), "kg"]] if ms.gear2_m2_kg is not None
-          else [["$G_2$", "齿轮2重量 / gear 2 weight", f(ms.gear2_weight_G2_N, 0), "N"]]
+        *([["$m_2$", _both(N_("gear 2 mass")), f(ms.gear2_m2_kg, 1), "kg"]] if ms.gear2_m2_kg is not None
+          else [["$G_2$", _both(N_("gear 2 weight")), f(ms.gear2_weight_G2_N, 0), "N"]]
           if "gear2_weight_G2_N" in ms.model_fields_set else []),
         ["$F_c$", f"{cut_zh} / cutting force", f(ld.cutting_force_Fc_N, 0), "N"],
         cut_line,
-        *([["$z_1, z_2$", "齿轮齿数 / gear teeth", f"{p.z1}, {p.z2}", "—"]] if p.z1 is not None else []),
-        ["$[\\delta]$", "许用速度不均匀系数 / speed fluctuation", f"1/{1 / p.fluctuation:.4g}", "—"],
+        *([["$z_1, z_2$", _both(N_("gear teeth")), f"{p.z1}, {p.z2}", "—"]] if p.z1 is not None else []),
+        ["$[\\delta]$", _both(N_("speed fluctuation")), f"1/{1 / p.fluctuation:.4g}", "—"],
     ]
 
 

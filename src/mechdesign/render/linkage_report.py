@@ -12,23 +12,31 @@ from pathlib import Path
 
 import numpy as np
 
+from ..i18n import N_, tr
 from . import figures as fig
 from .fmt import e, f, md_text, mpl_text, tex_name
 from .fmt import verdict as fmt_verdict
+from .labels import LabelTable
 
 DEG = 180.0 / np.pi
 
-_TXT = {
-    "zh": {"s": "位移 s", "v": "速度 v", "a": "加速度 a", "swing": "角位移 ψ", "w": "角速度 ω",
-           "al": "角加速度 α", "gamma": "传动角 γ", "alpha": "压力角 α", "limit": "许用值",
-           "mb": r"平衡力矩 $M_b$ (N·m)", "mean": "平均值", "resist": "阻力作用区",
-           "angle": "角度 (°)", "transmission": "传动角", "pressure": "压力角"},
-    "en": {"s": "displacement s", "v": "velocity v", "a": "acceleration a", "swing": "angle ψ",
-           "w": "angular velocity ω", "al": "angular acceleration α", "gamma": "transmission angle γ",
-           "alpha": "pressure angle α", "limit": "allowed", "mb": r"balancing torque $M_b$ (N·m)",
-           "mean": "mean", "resist": "resistance acts", "angle": "angle (°)",
-           "transmission": "transmission angle", "pressure": "pressure angle"},
-}
+_TXT = LabelTable({
+    "s": N_("displacement s"),
+    "v": N_("velocity v"),
+    "a": N_("acceleration a"),
+    "swing": N_("angle ψ"),
+    "w": N_("angular velocity ω"),
+    "al": N_("angular acceleration α"),
+    "gamma": N_("transmission angle γ"),
+    "alpha": N_("pressure angle α"),
+    "limit": N_("allowed"),
+    "mb": N_("balancing torque $M_b$ (N·m)"),
+    "mean": N_("mean"),
+    "resist": N_("resistance acts"),
+    "angle": N_("angle (°)"),
+    "transmission": N_("transmission angle"),
+    "pressure": N_("pressure angle"),
+})
 
 
 def _units(k):
@@ -192,6 +200,7 @@ def _link_rows(model, lang: str) -> list[list[str]]:
     from ..core.mechanism import RPR, RRP, RRR, Crank, LinkPoint
 
     zh = lang == "zh"
+    _ = tr(lang)
     m = md_text
     gn = _group_namer(model, lang)
 
@@ -204,7 +213,7 @@ def _link_rows(model, lang: str) -> list[list[str]]:
     for g in model.mechanism.groups:
         if isinstance(g, Crank):
             bar = m(f"{g.pivot}{g.tip}")
-            rows.append([("曲柄" if zh else "crank"), ids(g.link), bar,
+            rows.append([_("crank"), ids(g.link), bar,
                          f"{bar} = {f(g.length * 1e3, 2)} mm"])
         elif isinstance(g, RRR):
             bc, dc = m(f"{g.b}{g.c}"), m(f"{g.d}{g.c}")
@@ -214,15 +223,14 @@ def _link_rows(model, lang: str) -> list[list[str]]:
             bc = m(f"{g.b}{g.c}")
             rows.append([m(gn(g.name)), ids(g.rod, g.slider), bc,
                          f"{bc} = {f(g.length * 1e3, 2)} mm; "
-                         + ("导路过" if zh else "guide through ")
-                         + f"({f(g.guide_point.real * 1e3, 1)}, {f(g.guide_point.imag * 1e3, 1)}) mm, "
-                         + f"{f(g.guide_angle * DEG, 1)}°"])
+                         + _("guide through ({x}, {y}) mm, {angle}°", x=f(g.guide_point.real * 1e3, 1),
+                             y=f(g.guide_point.imag * 1e3, 1), angle=f(g.guide_angle * DEG, 1))])
         elif isinstance(g, RPR):
             rows.append([m(gn(g.name)), ids(g.slider, g.bar), m(f"{g.pivot}{g.a}"),
-                         ("偏距" if zh else "offset") + f" {f(g.offset * 1e3, 2)} mm"])
+                         _("offset {e} mm", e=f(g.offset * 1e3, 2))])
         elif isinstance(g, LinkPoint):
             bar = m(f"{g.origin}{g.name}")
-            rows.append([("点" if zh else "point") + f" {m(g.name)}", ids(g.link), bar,
+            rows.append([_("point {name}", name=m(g.name)), ids(g.link), bar,
                          f"{bar} = {f(g.distance * 1e3, 2)} mm, "
                          f"{f(g.offset_angle * DEG, 1)}°"])
     return rows
@@ -240,7 +248,7 @@ def _group_namer(model, lang: str):
 def linkage_context(model, k, f_, fly, v, figures: dict, lang: str,
                     prefix: str = "linkage", title: str | None = None) -> dict:
     """Strings and rows for ``linkage_section``; ``title`` is the chapter heading."""
-    zh = lang == "zh"
+    _ = tr(lang)
     n = k.grid_size
     scale, units = _units(k)
     labels = _labels(k)
@@ -268,18 +276,19 @@ def linkage_context(model, k, f_, fly, v, figures: dict, lang: str,
                                           for l_ in k.link_omega])
     qual_rows, gname = [], _group_namer(model, lang)
     for q in k.quality:
-        kind = ("传动角 γ" if zh else "transmission angle γ") if q.kind == "transmission" \
-            else ("压力角 α" if zh else "pressure angle α")
+        kind = _("transmission angle γ") if q.kind == "transmission" else _("pressure angle α")
         if q.kind == "transmission":
-            extreme = ("最小" if zh else "min") + f" {f(q.extreme * DEG, 2)}° @ φ = {f(q.extreme_phase * DEG, 1)}°"
+            extreme = _("min {angle}° @ φ = {phase}°", angle=f(q.extreme * DEG, 2),
+                        phase=f(q.extreme_phase * DEG, 1))
             work = f(q.working_extreme * DEG, 2) + "°"
             limit = "—" if model.transmission_angle_min is None else \
                 f"≥ {f(model.transmission_angle_min * DEG, 0)}°"
         else:
-            extreme = ("最大" if zh else "max") + f" {f(q.extreme * DEG, 2)}° @ φ = {f(q.extreme_phase * DEG, 1)}°"
+            extreme = _("max {angle}° @ φ = {phase}°", angle=f(q.extreme * DEG, 2),
+                        phase=f(q.extreme_phase * DEG, 1))
             work = f"{f(q.working_extreme * DEG, 2)}° @ φ = {f(q.working_extreme_phase * DEG, 1)}°"
             limit = "—" if model.pressure_angle_limit is None else \
-                f"≤ {f(model.pressure_angle_limit * DEG, 0)}° " + ("(工作行程)" if zh else "(working stroke)")
+                _("≤ {limit}° (working stroke)", limit=f(model.pressure_angle_limit * DEG, 0))
         qual_rows.append([md_text(gname(q.group)), kind, md_text(q.point), extreme, work, limit])
     res_rows = []
     for i, r in enumerate(model.resistances):
@@ -293,7 +302,7 @@ def linkage_context(model, k, f_, fly, v, figures: dict, lang: str,
                  for b in model.bodies]
     omega = abs(model.crank_omega)
     ctx = {
-        "title": title or ("连杆机构分析" if zh else "Linkage analysis"),
+        "title": title or _("Linkage analysis"),
         "fig": {"mechanism": None, "motion": None, "angles": None, "torque": None,
                 "energy": None, "reactions": None,
                 **{key.removeprefix(prefix + "_"): path for key, path in figures.items()
@@ -301,8 +310,7 @@ def linkage_context(model, k, f_, fly, v, figures: dict, lang: str,
         "frame_rows": frame_rows, "link_rows": _link_rows(model, lang),
         "mass_rows": mass_rows, "res_rows": res_rows,
         "speed": f(omega * 30 / np.pi, 2), "omega": f(omega, 4),
-        "sense": ("顺时针" if model.crank_omega < 0 else "逆时针") if zh else
-                 ("clockwise" if model.crank_omega < 0 else "counter-clockwise"),
+        "sense": _("clockwise") if model.crank_omega < 0 else _("counter-clockwise"),
         "output": md_text(model.output.name),
         "unit_s": units[0], "unit_v": units[1], "unit_a": units[2],
         "stroke": f(k.stroke * scale, 3), "K": f(k.time_ratio, 4),
@@ -352,29 +360,28 @@ def linkage_context(model, k, f_, fly, v, figures: dict, lang: str,
 
 def verification_rows(v, lang: str, k=None) -> list[list[str]]:
     """The shared linkage checks as [item, result, reference, verdict] rows."""
-    zh = lang == "zh"
+    _ = tr(lang)
 
     def verdict(x, limit):
         return fmt_verdict(x <= limit, lang)
 
     rows = [
-        ["封闭方程残差（最大）/m" if zh else "closure residual (max) / m", e(v.closure_residual),
+        [_("closure residual (max) / m"), e(v.closure_residual),
          "≤ 10⁻⁹", verdict(v.closure_residual, 1e-9)],
-        ["速度与位移中心差分之差（相对）" if zh else "velocity vs central difference (relative)",
+        [_("velocity vs central difference (relative)"),
          e(v.velocity_fd_error), f"O(h²), h = {f(v.fd_step * DEG, 3)}°",
          verdict(v.velocity_fd_error, 1e-3)],
-        ["加速度与速度中心差分之差（相对）" if zh else "acceleration vs central difference (relative)",
+        [_("acceleration vs central difference (relative)"),
          e(v.acceleration_fd_error), "O(h²)", verdict(v.acceleration_fd_error, 1e-3)],
-        [r"功率平衡残差 $\Sigma P / \max\lvert M_b\,\omega\rvert$" if zh
-         else r"power balance $\Sigma P / \max\lvert M_b\,\omega\rvert$",
+        [_(r"power balance $\Sigma P / \max\lvert M_b\,\omega\rvert$"),
          e(v.power_balance_residual), "≤ 10⁻⁹", verdict(v.power_balance_residual, 1e-9)],
     ]
     if k is not None:
         scale, units = _units(k)
-        rows.append(["位置搜索所得行程 / " + units[0] if zh else "stroke by position search / " + units[0],
-                     f(v.stroke * scale, 3), f(k.stroke * scale, 3) + (" (速度零点)" if zh else " (velocity zeros)"),
+        rows.append([_("stroke by position search / {unit}", unit=units[0]),
+                     f(v.stroke * scale, 3), f(k.stroke * scale, 3) + _(" (velocity zeros)"),
                      verdict(abs(v.stroke - k.stroke) / max(k.stroke, 1e-12), 1e-6)])
-        rows.append(["位置搜索所得 K" if zh else "K by position search", f(v.time_ratio, 4),
+        rows.append([_("K by position search"), f(v.time_ratio, 4),
                      f(k.time_ratio, 4), verdict(abs(v.time_ratio - k.time_ratio), 1e-6)])
     return rows
 

@@ -26,7 +26,9 @@ from functools import lru_cache
 from pathlib import Path
 
 from ..fileio import write_bytes
+from ..i18n import N_
 from .fonts import cjk_families, font_dirs
+from .labels import LabelTable
 from .mathbreak import break_display_math
 
 MARKDOWN_FORMAT = (
@@ -34,32 +36,22 @@ MARKDOWN_FORMAT = (
     "+yaml_metadata_block+east_asian_line_breaks"
 )
 
-DEFAULT_LABELS = {
-    "zh": {
-        "student": "姓名",
-        "student_id": "学号",
-        "class": "班级",
-        "teacher": "指导教师",
-        "date": "日期",
-        "group": "分组",
-        "contents": "目录",
-    },
-    "en": {
-        "student": "Name",
-        "student_id": "Student No.",
-        "class": "Class",
-        "teacher": "Supervisor",
-        "date": "Date",
-        "group": "Data group",
-        "contents": "Contents",
-    },
-}
+DEFAULT_LABELS = LabelTable({
+    "student": N_("Name"),
+    "student_id": N_("Student No."),
+    "class": N_("Class"),
+    "teacher": N_("Supervisor"),
+    "date": N_("Date"),
+    "group": N_("Data group"),
+    "contents": N_("Contents"),
+})
 
 
 # Pandoc turns a bare ``@label`` into a citation; typst needs a reference.
 _PROSE_CITE = re.compile(r'#cite\(<([^>]+)>, form: "prose"\)')
 # Markdown needs a space before "@label"; between CJK characters it must go.
-_CJK = "\u3000-\u303f\u3400-\u9fff\uff00-\uffef"
+# (escapes read by the regular expression engine: the module holds no CJK literal)
+_CJK = r"\u3000-\u303f\u3400-\u9fff\uff00-\uffef"
 _SPACE_BEFORE_REF = re.compile(rf"(?<=[{_CJK}]) (?=#ref\(<[^>]+>\))")
 _SPACE_AFTER_REF = re.compile(rf"(#ref\(<[^>]+>\)) (?=[{_CJK}])")
 
@@ -68,7 +60,8 @@ _SPACE_AFTER_REF = re.compile(rf"(#ref\(<[^>]+>\)) (?=[{_CJK}])")
 #: 1980-01-01 00:00 UTC, the earliest date a ZIP file (a .docx) can hold.
 FALLBACK_TIMESTAMP = 315532800
 
-_DATE = re.compile(r"^\s*(\d{4})\s*[-./年]\s*(\d{1,2})\s*[-./月]\s*(\d{1,2})")
+# separators - . / or 年 (\u5e74) and 月 (\u6708)
+_DATE = re.compile(r"^\s*(\d{4})\s*[-./\u5e74]\s*(\d{1,2})\s*[-./\u6708]\s*(\d{1,2})")
 
 
 def source_timestamp(date_text: str | None = None) -> int:

@@ -16,6 +16,7 @@ from typing import Callable
 import jinja2
 
 from ..fileio import write_text
+from ..i18n import tr
 from ..publish import make_staging, publish
 from ..results import dumps
 from .fmt import md_text, meta_text
@@ -90,9 +91,9 @@ def group_banner(group: str, lang: str) -> str:
     """The line atop a report computed for one data group of its brief (the label is
     user text: escaped so that it shows as written)."""
     group = md_text(group)
-    if lang == "zh":
-        return f"**分组（方案）：{group}**。本报告按任务书分组数据表中该组的数据计算。\n\n"
-    return f"**Data group: {group}.** This report uses that group's data from the brief's `groups` table.\n\n"
+    _ = tr(lang)
+    return _("**Data group: {group}.** This report uses that group's data from the "
+             "brief's `groups` table.", group=group) + "\n\n"
 
 
 def pdf_metadata(meta, lang: str, group: str | None = None) -> dict:

@@ -12,18 +12,20 @@ from pathlib import Path
 
 import numpy as np
 
+from ..i18n import N_
 from .fmt import f
+from .labels import LabelTable
 
 DEG = 180.0 / np.pi
 
-_TXT = {
-    "zh": {"v": "速度 |v| (m/s)", "a": "加速度 |a| (m/s²)", "phase": "曲柄转角 φ (°)",
-           "angle": "给定曲柄转角", "x_axis": "曲柄方向自 +x 轴逆时针量取",
-           "position_1": "自位置 1 按曲柄转向量取"},
-    "en": {"v": "speed |v| (m/s)", "a": "acceleration |a| (m/s²)", "phase": "crank angle φ (°)",
-           "angle": "given crank angle", "x_axis": "the crank's direction, CCW from +x",
-           "position_1": "from position 1 in the sense of rotation"},
-}
+_TXT = LabelTable({
+    "v": N_("speed |v| (m/s)"),
+    "a": N_("acceleration |a| (m/s²)"),
+    "phase": N_("crank angle φ (°)"),
+    "angle": N_("given crank angle"),
+    "x_axis": N_("the crank's direction, CCW from +x"),
+    "position_1": N_("from position 1 in the sense of rotation"),
+})
 
 
 def _found(results: dict):

@@ -18,31 +18,46 @@ from typing import Iterable
 
 import numpy as np
 
+from ..i18n import N_, tr
+from .labels import LabelTable, pgettext, translated
+
 
 @dataclass(frozen=True)
 class Layer:
     name: str
-    description: str       # shown in the CAD layer manager
+    line: object           # the line type's Chinese name, from the catalogue (pgettext)
+    use: str               # what the layer holds (English)
     weight: float          # line width [mm]
     linetype: str          # CONTINUOUS, CENTER or DASHED
     color: int             # AutoCAD colour index (7 = black/white)
     rgb: tuple             # colour in the PDF
 
+    @property
+    def description(self) -> str:
+        """Shown in the CAD layer manager: the line type in Chinese and the use in English,
+        whatever the report language (e.g. "粗实线 outlines (links, profiles)")."""
+        return f"{translated(self.line, tr('zh'))} {self.use}"
+
 
 LAYERS = {layer.name: layer for layer in (
-    Layer("OUTLINE", "粗实线 outlines (links, profiles)", 0.7, "CONTINUOUS", 7, (0, 0, 0)),
-    Layer("CONSTRUCTION", "细实线 construction and thin lines", 0.25, "CONTINUOUS", 8,
-          (0.35, 0.35, 0.35)),
-    Layer("CENTER", "点画线 centre lines, pitch circles, guides", 0.25, "CENTER", 1,
-          (0.55, 0.1, 0.1)),
-    Layer("HIDDEN", "虚线 other positions, hidden lines", 0.25, "DASHED", 8, (0.4, 0.4, 0.4)),
-    Layer("DIMENSIONS", "尺寸 dimensions", 0.25, "CONTINUOUS", 3, (0, 0.35, 0)),
-    Layer("TEXT", "文字 text and labels", 0.25, "CONTINUOUS", 7, (0, 0, 0)),
-    Layer("VECTORS", "矢量 velocity, acceleration and force polygons", 0.5, "CONTINUOUS", 5,
-          (0, 0.2, 0.65)),
-    Layer("CURVES", "曲线 motion, torque and energy curves", 0.5, "CONTINUOUS", 4,
-          (0, 0.3, 0.6)),
-    Layer("FRAME", "图框 标题栏 frame and title block", 0.7, "CONTINUOUS", 7, (0, 0, 0)),
+    Layer("OUTLINE", pgettext("DXF layer", "thick solid line"), "outlines (links, profiles)",
+          0.7, "CONTINUOUS", 7, (0, 0, 0)),
+    Layer("CONSTRUCTION", pgettext("DXF layer", "thin solid line"),
+          "construction and thin lines", 0.25, "CONTINUOUS", 8, (0.35, 0.35, 0.35)),
+    Layer("CENTER", pgettext("DXF layer", "chain line"), "centre lines, pitch circles, guides",
+          0.25, "CENTER", 1, (0.55, 0.1, 0.1)),
+    Layer("HIDDEN", pgettext("DXF layer", "dashed line"), "other positions, hidden lines",
+          0.25, "DASHED", 8, (0.4, 0.4, 0.4)),
+    Layer("DIMENSIONS", pgettext("DXF layer", "dimensions"), "dimensions", 0.25, "CONTINUOUS",
+          3, (0, 0.35, 0)),
+    Layer("TEXT", pgettext("DXF layer", "text"), "text and labels", 0.25, "CONTINUOUS", 7,
+          (0, 0, 0)),
+    Layer("VECTORS", pgettext("DXF layer", "vectors"),
+          "velocity, acceleration and force polygons", 0.5, "CONTINUOUS", 5, (0, 0.2, 0.65)),
+    Layer("CURVES", pgettext("DXF layer", "curves"), "motion, torque and energy curves", 0.5,
+          "CONTINUOUS", 4, (0, 0.3, 0.6)),
+    Layer("FRAME", pgettext("DXF layer", "frame and title block"), "frame and title block",
+          0.7, "CONTINUOUS", 7, (0, 0, 0)),
 )}
 
 SIZES = {"A0": (1189.0, 841.0), "A1": (841.0, 594.0), "A2": (594.0, 420.0),
@@ -425,15 +440,20 @@ class TitleInfo:
     lang: str = "zh"
 
 
-TITLE_LABELS = {
-    "zh": {"drawn": "设计", "id": "学号", "class": "班级", "date": "日期", "checked": "审核",
-           "teacher": "指导教师", "grade": "成绩", "scale": "比例", "size": "图幅",
-           "number": "图号", "sheet": "第 {i} 张  共 {n} 张", "course": "机械原理课程设计"},
-    "en": {"drawn": "Drawn", "id": "Student No.", "class": "Class", "date": "Date",
-           "checked": "Checked", "teacher": "Supervisor", "grade": "Grade", "scale": "Scale",
-           "size": "Size", "number": "Drg. No.", "sheet": "Sheet {i} of {n}",
-           "course": "Theory of Machines: course design"},
-}
+TITLE_LABELS = LabelTable({
+    "drawn": N_("Drawn"),
+    "id": N_("Student No."),
+    "class": N_("Class"),
+    "date": N_("Date"),
+    "checked": N_("Checked"),
+    "teacher": N_("Supervisor"),
+    "grade": N_("Grade"),
+    "scale": N_("Scale"),
+    "size": N_("Size"),
+    "number": N_("Drg. No."),
+    "sheet": N_("Sheet {i} of {n}"),
+    "course": N_("Theory of Machines: course design"),
+})
 
 TITLE_BLOCK_SIZE = (180.0, 40.0)
 

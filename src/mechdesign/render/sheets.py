@@ -18,38 +18,37 @@ from pathlib import Path
 from typing import Callable
 
 from ..fileio import write_text
+from ..i18n import N_, tr
 from .fmt import meta_text, plain_line
 from .sheet import Sheet, TitleInfo
 
 TITLES = {
-    "kinematic": {"zh": "机构运动简图", "en": "Kinematic diagram"},
-    "transmission": {"zh": "传动系统示意图", "en": "Transmission schematic"},
-    "cycle": {"zh": "运动循环图", "en": "Motion cycle diagram"},
-    "analysis": {"zh": "机构运动及动力分析图", "en": "Linkage: kinematic and force analysis"},
-    "cam": {"zh": "凸轮机构设计图", "en": "Cam mechanism design"},
-    "gear": {"zh": "齿轮啮合图", "en": "Gear meshing drawing"},
+    "kinematic": N_("Kinematic diagram"),
+    "transmission": N_("Transmission schematic"),
+    "cycle": N_("Motion cycle diagram"),
+    "analysis": N_("Linkage: kinematic and force analysis"),
+    "cam": N_("Cam mechanism design"),
+    "gear": N_("Gear meshing drawing"),
 }
 
 
-NO_SHEETS = {"zh": "该设计没有可绘制的图纸（无机构、凸轮、传动或运动循环结果），未写出 DXF 文件",
-             "en": "this design has no drawing sheet (no mechanism, cam, drive or cycle "
-                   "results), so no DXF file is written"}
+NO_SHEETS = N_("this design has no drawing sheet (no mechanism, cam, drive or cycle "
+               "results), so no DXF file is written")
 
 
 # sheets added to the hand-in by the diagrams (issue 19): one that cannot be drawn for a
 # user's brief (a geometry the layout does not handle) is left out with a printed line,
 # the report and the other sheets are still written
 OPTIONAL = {"kinematic", "transmission", "cycle"}
-NOT_DRAWN = {"zh": "{t}无法绘制（{e}），未写出该图的 PDF/DXF 文件",
-             "en": "the {t} could not be drawn ({e}); no PDF/DXF written for it"}
+NOT_DRAWN = N_("the {t} could not be drawn ({e}); no PDF/DXF written for it")
 # the prefix of these lines when no warning callback is given (printed to stderr)
-NOTE = {"zh": "提示：", "en": "note: "}
+NOTE = N_("note: ")
 
 
 def _printer(lang: str) -> Callable[[str], None]:
     import sys
 
-    return lambda text: print(NOTE[lang] + text, file=sys.stderr)
+    return lambda text: print(tr(lang)(NOTE) + text, file=sys.stderr)
 
 
 @dataclass(frozen=True)
@@ -188,7 +187,7 @@ def make_sheets(results: dict, brief, folder: Path, fig_dir: Path, lang: str,
     builders = _builders(results, brief)
     if not builders:
         if "dxf" in formats:
-            warn(NO_SHEETS[lang])
+            warn(tr(lang)(NO_SHEETS))
         return lambda: []
     manifest = Path(folder) / ".sheets.json"
 
@@ -230,14 +229,15 @@ def write_all(builders: list, brief, folder: Path, fig_dir: Path, lang: str,
     sheet_dir = Path(folder) / "sheets"
     for k, (name, build) in enumerate(builders, start=1):
         say(f"sheet {k}/{len(builders)}: {name}")
-        info = title_info(brief.report, TITLES[name][lang], f"{prefix}-{k:02d}" if prefix else "",
+        title = tr(lang)(TITLES[name])
+        info = title_info(brief.report, title, f"{prefix}-{k:02d}" if prefix else "",
                           k, len(builders), lang)
         try:
             sheet = build(info, lang)
         except (ValueError, ArithmeticError) as exc:
             if name not in OPTIONAL:
                 raise
-            warn(NOT_DRAWN[lang].format(t=TITLES[name][lang], e=exc))
+            warn(tr(lang)(NOT_DRAWN, t=title, e=exc))
             continue
         preview = Path(fig_dir) / f"sheet_{name}.png"
         pdf = dxf = None
