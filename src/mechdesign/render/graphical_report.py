@@ -400,6 +400,7 @@ def graphical_context(results: dict, figures: dict, lang: str) -> list[dict]:
                               if abs(c.graphical - c.analytic) > c.tolerance),
             })
         out.append({"prefix": prefix, "step": _mm(doc.step), "positions": positions,
+                    "forces": any(p["forces"] for p in positions),
                      "labels": "、".join(p["label"] for p in positions) if lang == "zh"
                      else ", ".join(p["label"] for p in positions)})
     return out
