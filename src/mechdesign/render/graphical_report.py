@@ -178,7 +178,7 @@ def _force_figure(path: Path, pos, fg, members: dict, lang: str) -> None:
     """Left: the group's links at μl with their loads (arrows of a common length, named);
     right: the force polygon at μF."""
     t = _T[lang]
-    with fig.figure(path, 1, (7.0, 3.4), sharex=False) as axes:
+    with fig.figure(path, 1, (6.4, 2.6), sharex=False) as axes:
         f_ = axes[0].figure
         f_.clf()
         a1, a2 = f_.add_subplot(1, 2, 1), f_.add_subplot(1, 2, 2)
@@ -268,36 +268,38 @@ def _eq_tex(eq) -> str:
     return f"{left} = {right}" if left else right
 
 
-def _table(eq, lang: str, unit: str) -> dict:
-    terms = list(eq.left) + list(eq.right)
-    head = [f"${sym(t.symbol)}$" for t in terms]
-    mag = ["?" if not t.known else ("√" if t.direction == "known" else _num(t.read))
-           for t in terms]
-    dirs = [direction(t.direction, lang) if t.direction else "?" for t in terms]
-    return {"tex": _eq_tex(eq), "head": head, "mag": mag, "dir": dirs,
-            "align": "|".join([":-:"] * (len(terms) + 1))}
-
-
 def _kin(poly, lang: str, unit: str, rate_name: str) -> dict:
-    eqs, measured, seen = [], [], set()
+    """The polygon's vector equations group by group: per group its equations and ONE table,
+    a row per vector (大小 and 方向 as the construction knows them: "?" unknown, "√" found
+    before, else the value drawn; then the polygon's segment, its length and the value read)."""
+    groups: list[dict] = []
     for eq in poly.equations:
         rel = [t for t in eq.left + eq.right if t.kind != "absolute"]
         if rel and all(t.known and t.length == 0 for t in rel):
             continue        # a point of a link in translation: the same vector as its origin
-        eqs.append(_table(eq, lang, unit))
+        # a new table for each group whose equation has unknowns; a further point of a link
+        # already solved (every magnitude known: v_B = v_BO3) joins the table before it
+        solved = all(t.known for t in eq.left + eq.right)
+        if not groups or (groups[-1]["group"] != eq.group and not solved):
+            groups.append({"group": eq.group, "eqs": [], "rows": [], "seen": set()})
+        g = groups[-1]
+        g["eqs"].append(_eq_tex(eq))
         for t in list(eq.left) + list(eq.right):
-            if (t.tail, t.head) in seen:
+            if t.symbol in g["seen"]:
                 continue
-            seen.add((t.tail, t.head))
-            how = "measured" if not t.known else ("drawn" if t.direction != "known" else "")
-            if not how or (how == "drawn" and t.length == 0):
-                continue
-            measured.append([f"${sym(t.symbol)}$", f"{t.tail}{t.head}", _mm(t.length),
-                             _num(t.read), how])
+            g["seen"].add(t.symbol)
+            mag = "?" if not t.known else ("√" if t.direction == "known" else _num(t.read))
+            dirs = direction(t.direction, lang) if t.direction else "?"
+            if t.known and (t.direction == "known" or t.length == 0):
+                seg = length = value = "—"
+            else:
+                seg, length, value = f"{t.tail}{t.head}", _mm(t.length), _num(t.read)
+            g["rows"].append([f"${sym(t.symbol)}$", mag, dirs, seg, length, value])
+    for g in groups:
+        del g["seen"]
     rates = [[f"${rate_name}_{{{link}}}$", _num(v)] for link, v in poly.rates.items()]
     coriolis = any(t.kind == "coriolis" for eq in poly.equations for t in eq.left + eq.right)
-    return {"mu": _scale(poly.scale), "eqs": eqs, "measured": measured, "rates": rates,
-            "coriolis": coriolis}
+    return {"mu": _scale(poly.scale), "groups": groups, "rates": rates, "coriolis": coriolis}
 
 
 def _moment_tex(m) -> tuple[str, float, float]:
