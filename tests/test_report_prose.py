@@ -242,3 +242,46 @@ def test_formulas_have_no_double_superscript(example_results, name, lang):
     math = re.findall(r"\$\$(.+?)\$\$|\$([^$\n]+)\$", md, flags=re.S)
     bad = [m for pair in math for m in pair if re.search(r"\^(\{[^{}]*\}|\w)\s*\^", m)]
     assert not bad, bad[:3]
+
+
+def _designations(example_results, name: str) -> set[str]:
+    """Catalogue designations in the results (bearings 30204, motors …): names, not numbers."""
+    from mechdesign.machines import get_machine
+    from mechdesign.results import to_plain
+
+    r = example_results(name)
+    out: set[str] = set()
+
+    def walk(x):
+        if isinstance(x, str):
+            out.update(re.findall(r"\d{5,}", x))
+        elif isinstance(x, dict):
+            for v in x.values():
+                walk(v)
+        elif isinstance(x, (list, tuple)):
+            for v in x:
+                walk(v)
+
+    walk(to_plain(get_machine(r["brief"].machine).document(r)))
+    return out
+
+
+@pytest.mark.parametrize("lang", ["zh", "en"])
+@pytest.mark.parametrize("name", EXAMPLES)
+def test_large_numbers_are_grouped_in_text_and_tables(example_results, name, lang):
+    """render/fmt.py's rule: outside formulas and code an integer part of five or more digits
+    is grouped by threes with a narrow no-break space (72 441 h, 12 712.2 N), four digits or
+    fewer stay together. Standard numbers (GB/T 13575.1, JB/T 10391) and catalogue
+    designations (bearing 30204) are names, not quantities; the user's own text is left out."""
+    md, brief = _markdown(example_results, name, lang)
+    text = _prose(md)
+    for s in _user_text(brief):
+        text = text.replace(fmt.md_text(s), " ").replace(s, " ")
+    text = re.sub(r"(GB|JB|GB/T|JB/T|ISO)\s*[\d.]+", " ", text)
+    names = _designations(example_results, name)
+    bad = [(m.group(), ln.strip()[:100]) for ln in text.splitlines()
+           for m in re.finditer(r"(?<![\w.\u202f,/-])\d{5,}(?:\.\d+)?(?![\w\u202f])", ln)
+           if m.group() not in names]
+    assert not bad, "\n".join(map(str, bad[:10]))
+    grouped = re.findall(r"(?<![\d\u202f])\d{1,3}(?:\u202f\d{3})+(?![\d\u202f])", text)
+    assert all(len(g.replace("\u202f", "")) >= 5 for g in grouped), grouped[:5]

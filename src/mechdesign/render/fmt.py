@@ -47,6 +47,14 @@ def _group(text: str) -> str:
     return sign + head + dot + tail
 
 
+def grouped(text: str) -> str:
+    """A number already written (``"72441"``, ``"-12698.4"``) with the rule's grouping for
+    text and table cells: an integer part of five or more digits grouped by threes with a
+    narrow no-break space, four digits or fewer left together; anything that is not a plain
+    number (a designation such as ``6204`` is never passed here) is returned unchanged."""
+    return _group(text) if re.fullmatch(r"-?\d+(\.\d+)?", text) else text
+
+
 def f(x: float, digits: int = 2, group: bool = False) -> str:
     """Fixed-point number with ``digits`` decimals; a rounded zero never shows as '-0.00'.
     ``group``: an integer part of five or more digits grouped by threes (``12 698.4``) —

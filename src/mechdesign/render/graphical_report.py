@@ -16,7 +16,7 @@ from pathlib import Path
 import numpy as np
 
 from . import figures as fig
-from .fmt import f, mpl_text
+from .fmt import f, grouped, mpl_text
 
 _T = {
     "zh": {"vel": "速度多边形", "acc": "加速度多边形", "fbd": "受力图", "force": "力多边形",
@@ -106,6 +106,12 @@ def _num(x: float) -> str:
         return "0"
     d = max(0, 2 - int(math.floor(math.log10(abs(x)))))
     return f(x, min(d, 4))
+
+
+def _numg(x: float) -> str:
+    """:func:`_num` for a table cell or running text: five or more integer digits grouped
+    (render/fmt.py's rule); inside a formula :func:`_num` keeps them together."""
+    return grouped(_num(x))
 
 
 def _mm(x: float) -> str:
@@ -288,16 +294,16 @@ def _kin(poly, lang: str, unit: str, rate_name: str) -> dict:
             if t.symbol in g["seen"]:
                 continue
             g["seen"].add(t.symbol)
-            mag = "?" if not t.known else ("√" if t.direction == "known" else _num(t.read))
+            mag = "?" if not t.known else ("√" if t.direction == "known" else _numg(t.read))
             dirs = direction(t.direction, lang) if t.direction else "?"
             if t.known and (t.direction == "known" or t.length == 0):
                 seg = length = value = "—"
             else:
-                seg, length, value = f"{t.tail}{t.head}", _mm(t.length), _num(t.read)
+                seg, length, value = f"{t.tail}{t.head}", _mm(t.length), _numg(t.read)
             g["rows"].append([f"${sym(t.symbol)}$", mag, dirs, seg, length, value])
     for g in groups:
         del g["seen"]
-    rates = [[f"${rate_name}_{{{link}}}$", _num(v)] for link, v in poly.rates.items()]
+    rates = [[f"${rate_name}_{{{link}}}$", _numg(v)] for link, v in poly.rates.items()]
     coriolis = any(t.kind == "coriolis" for eq in poly.equations for t in eq.left + eq.right)
     return {"mu": _scale(poly.scale), "groups": groups, "rates": rates, "coriolis": coriolis}
 
@@ -348,15 +354,15 @@ def _forces(pos, lang: str) -> list[dict]:
                                 f"{u} = {_num(m.result)}" r"\ \mathrm{N\cdot m}"))
         closing = " + ".join(r"\vec " + sym(v.symbol) for v in fg.vectors
                              if v.kind not in ("total", "internal")) + " = 0"
-        rows = [[f"${sym(v.symbol)}$", "√" if v.known else "?", _mm(v.length), _num(v.read)]
+        rows = [[f"${sym(v.symbol)}$", "√" if v.known else "?", _mm(v.length), _numg(v.read)]
                 for v in fg.vectors]
-        loads = [[f"${sym(ld.name)}$", link, _num(abs(ld.value))]
+        loads = [[f"${sym(ld.name)}$", link, _numg(abs(ld.value))]
                  for link, lds in fg.loads.items() for ld in lds if abs(ld.value) > 0]
         out.append({"name": "–".join(fg.links), "links": ", ".join(fg.links), "crank": fg.balancing_torque
                     is not None, "mu": _scale(fg.scale), "moments": moments, "rows": rows,
                     "loads": loads, "sum": closing, "n": n,
-                    "mb": None if fg.balancing_torque is None else _num(fg.balancing_torque),
-                    "pb": None if fg.balancing_force is None else _num(abs(fg.balancing_force))})
+                    "mb": None if fg.balancing_torque is None else _numg(fg.balancing_torque),
+                    "pb": None if fg.balancing_force is None else _numg(abs(fg.balancing_force))})
     return out
 
 
@@ -372,7 +378,7 @@ def _compare(pos, lang: str) -> list[list[str]]:
         mark = ("合格" if ok else "超差") if lang == "zh" else ("PASS" if ok else "beyond")
         # a value smaller than the drawing's resolution has no meaningful relative error
         diff = "—" if abs(c.analytic) < c.tolerance else f(100 * c.difference, 1)
-        rows.append([name, c.unit, _num(c.graphical), _num(c.analytic), diff, _num(c.tolerance),
+        rows.append([name, c.unit, _numg(c.graphical), _numg(c.analytic), diff, _numg(c.tolerance),
                      mark])
     return rows
 
@@ -396,7 +402,7 @@ def graphical_context(results: dict, figures: dict, lang: str) -> list[dict]:
                 "acc": _kin(pos.acceleration, lang, "m/s²", r"\alpha"),
                 "fig": figures.get(f"{key}_kin", ""),
                 "forces": forces, "crank": crank,
-                "mb": None if pos.balancing_torque is None else _num(pos.balancing_torque),
+                "mb": None if pos.balancing_torque is None else _numg(pos.balancing_torque),
                 "compare": _compare(pos, lang),
                 "beyond": sum(1 for c in pos.comparison
                               if abs(c.graphical - c.analytic) > c.tolerance),

@@ -24,7 +24,7 @@ from importlib import resources
 from pathlib import Path
 from typing import Any
 
-from .fmt import md_text, verdict
+from .fmt import grouped, md_text, verdict
 
 # --------------------------------------------------------------------------- references
 
@@ -279,7 +279,7 @@ def _show(value: Any, factor: float) -> str | None:
     if not math.isfinite(x):
         return None
     text = f"{x:.4g}" if abs(x) < 1e4 else f"{x:.0f}"
-    return "0" if text in ("-0", "0") else text
+    return "0" if text in ("-0", "0") else grouped(text)
 
 
 def _get(document: Any, path: str) -> Any:
