@@ -285,3 +285,31 @@ def test_large_numbers_are_grouped_in_text_and_tables(example_results, name, lan
     assert not bad, "\n".join(map(str, bad[:10]))
     grouped = re.findall(r"(?<![\d\u202f])\d{1,3}(?:\u202f\d{3})+(?![\d\u202f])", text)
     assert all(len(g.replace("\u202f", "")) >= 5 for g in grouped), grouped[:5]
+
+
+def test_summary_reads_the_verdicts_boolean_not_its_word():
+    """Issue 19: the summary takes a verification row's verdict from the boolean the cell
+    was made from (fmt.Verdict.passed), kept through escaping; a plain word is no verdict."""
+    from mechdesign.render.summary import read_verdict
+
+    assert read_verdict(fmt.verdict(True, "zh"), "zh") is True
+    assert read_verdict(fmt.verdict(False, "en").replace("|", "\\|"), "en") is False
+    assert read_verdict(fmt.verdict(False, "zh"), "en") is False       # the boolean, not the word
+    assert read_verdict("合格", "zh") is None and read_verdict("PASS", "en") is None
+
+
+@pytest.mark.parametrize("name", EXAMPLES)
+def test_every_verdict_cell_carries_its_boolean(example_results, name):
+    """Every verdict word in a machine's verification rows is a fmt.Verdict (so the summary
+    counts it from its boolean)."""
+    from mechdesign.machines import get_machine
+
+    r = example_results(name)
+    brief = r["brief"]
+    report = importlib.import_module(get_machine(brief.machine).report_module)
+    for lang in ("zh", "en"):
+        rows = report.context(r, brief, _Figures(), lang).get("verify_rows") or []
+        words = {fmt.verdict(True, lang), fmt.verdict(False, lang)}
+        plain = [row[-1] for row in rows if len(row) >= 2 and str(row[-1]).strip("*") in words
+                 and not isinstance(row[-1], fmt.Verdict)]
+        assert not plain, (lang, plain)

@@ -123,11 +123,28 @@ def in_lang(text, lang: str):
     return zh if lang == "zh" else en
 
 
-def verdict(ok: bool, lang: str) -> str:
-    """The one verdict vocabulary: 合格/不合格 (zh), PASS/FAIL (en)."""
+class Verdict(str):
+    """A verdict cell: the word of :func:`verdict` that also carries the boolean it was made
+    from (``passed``), so that a reader of the tables (the summary) takes the boolean, never
+    the word. Escaping with :meth:`replace` keeps it a Verdict."""
+
+    passed: bool
+
+    def __new__(cls, text: str, passed: bool) -> "Verdict":
+        obj = super().__new__(cls, text)
+        obj.passed = bool(passed)
+        return obj
+
+    def replace(self, *args, **kwargs) -> "Verdict":        # type: ignore[override]
+        return Verdict(str.replace(self, *args, **kwargs), self.passed)
+
+
+def verdict(ok: bool, lang: str) -> Verdict:
+    """The one verdict vocabulary: 合格/不合格 (zh), PASS/FAIL (en), as a :class:`Verdict`
+    carrying ``ok``."""
     if lang == "zh":
-        return "合格" if ok else "不合格"
-    return "PASS" if ok else "FAIL"
+        return Verdict("合格" if ok else "不合格", ok)
+    return Verdict("PASS" if ok else "FAIL", ok)
 
 
 # -------------------------------------------------------------------------- user text

@@ -73,15 +73,12 @@ def verdict_word(ok: bool, lang: str) -> str:
 
 
 def read_verdict(cell: str, lang: str) -> bool | None:
-    """A verification table's verdict cell as the boolean it was made from: the cells are
-    written by :func:`.fmt.verdict` (possibly in bold), so a cell is True or False exactly
-    when it is ``verdict(True/False, lang)``; anything else (an explanation, a dash) is no
-    verdict (None). No synonym lists: a word the one vocabulary does not have is no verdict."""
-    word = re.sub(r"[*_`]", "", str(cell)).strip()
-    for ok in (True, False):
-        if word == verdict(ok, lang):
-            return ok
-    return None
+    """A verification table's verdict cell as the boolean it was made from: a cell written
+    by :func:`.fmt.verdict` is a :class:`.fmt.Verdict` and carries its ``passed``; the
+    word is not read. Anything else (an explanation, a dash, a plain string) is no verdict
+    (None)."""
+    passed = getattr(cell, "passed", None)
+    return passed if isinstance(passed, bool) else None
 
 
 def _check_names() -> dict[str, tuple[str, str]]:
