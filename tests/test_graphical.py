@@ -154,7 +154,7 @@ def test_balancing_torque_of_crank_polygon_against_power_balance(example_results
     ("shaper", "model", "linkage"), ("press", "model", "linkage"),
     ("slotter", "model", "linkage"), ("furnace_pusher", "model", "linkage"),
     ("die_cutter", "press_model", "press"), ("linkage_sixbar", "params", "linkage"),
-    ("lockbeam", "feed_model", "feed")])
+    ("lockbeam", "feed_model", "feed"), ("crank_rocker", "linkage_model", "linkage")])
 def test_exact_drawing_reproduces_the_engine(name, model_key, prefix, example_results,
                                              monkeypatch):
     """With an infinitely fine drawing the construction (intersections, moment equations,
@@ -173,7 +173,8 @@ def test_exact_drawing_reproduces_the_engine(name, model_key, prefix, example_re
             assert c.graphical == pytest.approx(c.analytic, rel=1e-7, abs=1e-7), (pos.label, c)
 
 
-@pytest.mark.parametrize("name", ["linkage_sixbar", "shaper", "furnace_pusher", "slotter", "press"])
+@pytest.mark.parametrize("name", ["linkage_sixbar", "shaper", "furnace_pusher", "slotter", "press",
+                                  "crank_rocker"])
 def test_every_graphical_value_within_the_drawing_accuracy(example_results, name):
     """Issue 19: the graphical numbers agree with the analytic ones within the drawing's
     accuracy at every polygon position. The six-bar's position 10 did not at the usual
@@ -192,3 +193,36 @@ def test_every_graphical_value_within_the_drawing_accuracy(example_results, name
         assert p10.acceleration.scale < gr.nice_scale(
             max(abs(m.acc[found.motion.grid_size + list(map(str, found.motion.positions.labels)).index("10")])
                 for m in example_results(name)[found.polygons.prefix + "_raw"].points.values()) / 80.0)
+
+
+def test_crank_rocker_runs_the_shared_linkage_stages(example_results):
+    """Issue 19: the crank-rocker's optimum goes through the shared linkage stages. The
+    engine's motion reproduces the brief (θ = 15°: K = 195/165; ψ = 40°), and at both polygon
+    positions the rocker's ω4 and the coupler's ω3 read from the velocity polygon agree
+    within the drawing's accuracy with the four-bar's closed form (velocity loop projected
+    normal to the coupler: ω4 = ω2·a·sin(θ2 − θ3) / (c·sin(θ4 − θ3)), and normal to the
+    rocker: ω3 = ω2·a·sin(θ4 − θ2) / (b·sin(θ3 − θ4)))."""
+    import math
+
+    r = example_results("crank_rocker")
+    k, raw, model = r["linkage"], r["linkage_raw"], r["linkage_model"]
+    assert k.time_ratio == pytest.approx(195.0 / 165.0, rel=1e-6)
+    assert k.stroke == pytest.approx(math.radians(40.0), rel=1e-6)
+    assert r["linkage_forces"] is None          # the brief has no loads
+    doc = r["linkage_graphical"]
+    assert len(doc.positions) == 2 and not any(p.forces for p in doc.positions)
+    d = r["optimum"].best.design
+    w2 = model.crank_omega
+    from mechdesign.stages.polygons import entry
+
+    for pos in doc.positions:
+        i = entry(k, pos.label)
+        P = {n: complex(m.pos[i]) for n, m in raw.points.items()}
+        t2, t3, t4 = (math.atan2(z.imag, z.real) for z in
+                      (P["B"] - P["A"], P["C"] - P["B"], P["C"] - P["D"]))
+        w4 = w2 * d.crank * math.sin(t2 - t3) / (d.rocker * math.sin(t4 - t3))
+        w3 = w2 * d.crank * math.sin(t4 - t2) / (d.coupler * math.sin(t3 - t4))
+        mu = pos.velocity.scale
+        assert abs(abs(pos.velocity.rates["4"]) - abs(w4)) <= 0.02 * abs(w4) + mu / d.rocker
+        assert abs(abs(pos.velocity.rates["3"]) - abs(w3)) <= 0.02 * abs(w3) + mu / d.coupler
+        assert pos.velocity.rates["4"] == pytest.approx(w4, rel=0.05)

@@ -310,3 +310,12 @@ def test_sheet_notes_go_to_the_runs_warning_callback(tmp_path, capsys):
     write_all([("kinematic", bad)], brief, tmp_path, tmp_path / "f", "en", ("dxf",), on_warning=got.append)
     assert "Kinematic diagram could not be drawn (the layout does not fit)" in got[-1]
     assert capsys.readouterr().err == ""
+
+
+def test_lockbeam_diagram_gives_the_cam_roller_its_own_letter(example_results):
+    """Issue 19: the positioning pin's roller centre is F, not a second B (B is the bending
+    four-bar's pin, as the report names it)."""
+    r = example_results("lockbeam")
+    sheet = _sheets(r)["kinematic"]
+    texts = [getattr(e, "text", None) for e in sheet.entities]
+    assert texts.count("B") == 1 and texts.count("F") == 1

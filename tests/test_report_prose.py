@@ -242,3 +242,74 @@ def test_formulas_have_no_double_superscript(example_results, name, lang):
     math = re.findall(r"\$\$(.+?)\$\$|\$([^$\n]+)\$", md, flags=re.S)
     bad = [m for pair in math for m in pair if re.search(r"\^(\{[^{}]*\}|\w)\s*\^", m)]
     assert not bad, bad[:3]
+
+
+def _designations(example_results, name: str) -> set[str]:
+    """Catalogue designations in the results (bearings 30204, motors …): names, not numbers."""
+    from mechdesign.machines import get_machine
+    from mechdesign.results import to_plain
+
+    r = example_results(name)
+    out: set[str] = set()
+
+    def walk(x):
+        if isinstance(x, str):
+            out.update(re.findall(r"\d{5,}", x))
+        elif isinstance(x, dict):
+            for v in x.values():
+                walk(v)
+        elif isinstance(x, (list, tuple)):
+            for v in x:
+                walk(v)
+
+    walk(to_plain(get_machine(r["brief"].machine).document(r)))
+    return out
+
+
+@pytest.mark.parametrize("lang", ["zh", "en"])
+@pytest.mark.parametrize("name", EXAMPLES)
+def test_large_numbers_are_grouped_in_text_and_tables(example_results, name, lang):
+    """render/fmt.py's rule: outside formulas and code an integer part of five or more digits
+    is grouped by threes with a narrow no-break space (72 441 h, 12 712.2 N), four digits or
+    fewer stay together. Standard numbers (GB/T 13575.1, JB/T 10391) and catalogue
+    designations (bearing 30204) are names, not quantities; the user's own text is left out."""
+    md, brief = _markdown(example_results, name, lang)
+    text = _prose(md)
+    for s in _user_text(brief):
+        text = text.replace(fmt.md_text(s), " ").replace(s, " ")
+    text = re.sub(r"(GB|JB|GB/T|JB/T|ISO)\s*[\d.]+", " ", text)
+    names = _designations(example_results, name)
+    bad = [(m.group(), ln.strip()[:100]) for ln in text.splitlines()
+           for m in re.finditer(r"(?<![\w.\u202f,/-])\d{5,}(?:\.\d+)?(?![\w\u202f])", ln)
+           if m.group() not in names]
+    assert not bad, "\n".join(map(str, bad[:10]))
+    grouped = re.findall(r"(?<![\d\u202f])\d{1,3}(?:\u202f\d{3})+(?![\d\u202f])", text)
+    assert all(len(g.replace("\u202f", "")) >= 5 for g in grouped), grouped[:5]
+
+
+def test_summary_reads_the_verdicts_boolean_not_its_word():
+    """Issue 19: the summary takes a verification row's verdict from the boolean the cell
+    was made from (fmt.Verdict.passed), kept through escaping; a plain word is no verdict."""
+    from mechdesign.render.summary import read_verdict
+
+    assert read_verdict(fmt.verdict(True, "zh"), "zh") is True
+    assert read_verdict(fmt.verdict(False, "en").replace("|", "\\|"), "en") is False
+    assert read_verdict(fmt.verdict(False, "zh"), "en") is False       # the boolean, not the word
+    assert read_verdict("合格", "zh") is None and read_verdict("PASS", "en") is None
+
+
+@pytest.mark.parametrize("name", EXAMPLES)
+def test_every_verdict_cell_carries_its_boolean(example_results, name):
+    """Every verdict word in a machine's verification rows is a fmt.Verdict (so the summary
+    counts it from its boolean)."""
+    from mechdesign.machines import get_machine
+
+    r = example_results(name)
+    brief = r["brief"]
+    report = importlib.import_module(get_machine(brief.machine).report_module)
+    for lang in ("zh", "en"):
+        rows = report.context(r, brief, _Figures(), lang).get("verify_rows") or []
+        words = {fmt.verdict(True, lang), fmt.verdict(False, lang)}
+        plain = [row[-1] for row in rows if len(row) >= 2 and str(row[-1]).strip("*") in words
+                 and not isinstance(row[-1], fmt.Verdict)]
+        assert not plain, (lang, plain)

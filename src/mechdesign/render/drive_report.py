@@ -6,7 +6,7 @@ from __future__ import annotations
 import numpy as np
 
 from ..stages.drive import shaft_numeral
-from .fmt import f, md_text
+from .fmt import f, grouped, md_text
 
 MM = 1e3
 
@@ -59,7 +59,7 @@ def drive_context(d, lang: str, figures: dict[str, str], machine_power_eq: str |
         stage_rows.append([str(st.index + 1), _stage_label(st, zh), f(st.ratio_allocated, 3),
                            f(st.ratio, 3), f(st.efficiency, 3)])
     shaft_rows = [[_shaft_name(s.index, len(d.shafts) - 1, zh), f(s.speed_rpm, 2), f(s.power / 1e3, 4),
-                   f(s.torque, 3)] for s in d.shafts]
+                   f(s.torque, 3, group=True)] for s in d.shafts]
     reason = {
         "recommended": ("按同步转速 1500、1000、3000、750 rpm 的顺序，取总传动比落在各级推荐传动比范围之内的第一种",
                         "the first synchronous speed (in the order 1500, 1000, 3000, 750 rpm) whose total "
@@ -101,8 +101,9 @@ def _mat_name(key: str, zh: bool) -> str:
 
 
 def _rows(rows: list[list[str]], zh: bool) -> list[list[str]]:
-    """Keep the check name in the report's language only."""
-    return [[r[0] if zh else r[1], *r[2:]] for r in rows]
+    """Keep the check name in the report's language only; value and allowable grouped by
+    render/fmt.py's rule (a life of 72 441 h)."""
+    return [[r[0] if zh else r[1], grouped(r[2]), grouped(r[3]), *r[4:]] for r in rows]
 
 
 def stage_designs(d, lang: str) -> list[dict]:
@@ -155,7 +156,7 @@ def stage_designs(d, lang: str) -> list[dict]:
                     ["$b$", f(g.face_width * MM, 0), "mm"], ["$v$", f(e["v"], 3), "m/s"],
                     ["$\\varepsilon_\\alpha$", f(e["eps_alpha"], 3), "—"],
                     ["$Y_{Fa}, Y_{Sa}$", f"{f(e['YFa1'], 3)}, {f(e['YSa1'], 3)} / {f(e['YFa2'], 3)}, {f(e['YSa2'], 3)}", "—"],
-                    ["$F_t / F_r / F_a$", f"{f(g.forces['Ft'], 1)} / {f(g.forces['Fr'], 1)} / {f(g.forces['Fa'], 1)}", "N"]]
+                    ["$F_t / F_r / F_a$", f"{f(g.forces['Ft'], 1, group=True)} / {f(g.forces['Fr'], 1, group=True)} / {f(g.forces['Fa'], 1, group=True)}", "N"]]
         else:
             e = g.extra
             geo = g.geometry
@@ -232,7 +233,7 @@ def stage_designs(d, lang: str) -> list[dict]:
                  [("装配段" if zh else "hub seat") + " $d_s$", f(sh.d_seat * MM, 0), unit_mm],
                  [("轴环" if zh else "collar") + " $d_c$", f(sh.d_shoulder * MM, 0), unit_mm],
                  [("支承跨距" if zh else "bearing span") + " $L$", f(sh.span * MM, 0), unit_mm],
-                 [("设计转矩" if zh else "design torque") + " $T$", f(sh.torque, 1), "N·m"]]
+                 [("设计转矩" if zh else "design torque") + " $T$", f(sh.torque, 1, group=True), "N·m"]]
         if sh.bearing is not None:
             rows.append([("轴承" if zh else "bearing"), sh.bearing.designation, "—"])
         for k in sh.keys:

@@ -47,6 +47,14 @@ def _group(text: str) -> str:
     return sign + head + dot + tail
 
 
+def grouped(text: str) -> str:
+    """A number already written (``"72441"``, ``"-12698.4"``) with the rule's grouping for
+    text and table cells: an integer part of five or more digits grouped by threes with a
+    narrow no-break space, four digits or fewer left together; anything that is not a plain
+    number (a designation such as ``6204`` is never passed here) is returned unchanged."""
+    return _group(text) if re.fullmatch(r"-?\d+(\.\d+)?", text) else text
+
+
 def f(x: float, digits: int = 2, group: bool = False) -> str:
     """Fixed-point number with ``digits`` decimals; a rounded zero never shows as '-0.00'.
     ``group``: an integer part of five or more digits grouped by threes (``12 698.4``) —
@@ -115,11 +123,28 @@ def in_lang(text, lang: str):
     return zh if lang == "zh" else en
 
 
-def verdict(ok: bool, lang: str) -> str:
-    """The one verdict vocabulary: 合格/不合格 (zh), PASS/FAIL (en)."""
+class Verdict(str):
+    """A verdict cell: the word of :func:`verdict` that also carries the boolean it was made
+    from (``passed``), so that a reader of the tables (the summary) takes the boolean, never
+    the word. Escaping with :meth:`replace` keeps it a Verdict."""
+
+    passed: bool
+
+    def __new__(cls, text: str, passed: bool) -> "Verdict":
+        obj = super().__new__(cls, text)
+        obj.passed = bool(passed)
+        return obj
+
+    def replace(self, *args, **kwargs) -> "Verdict":        # type: ignore[override]
+        return Verdict(str.replace(self, *args, **kwargs), self.passed)
+
+
+def verdict(ok: bool, lang: str) -> Verdict:
+    """The one verdict vocabulary: 合格/不合格 (zh), PASS/FAIL (en), as a :class:`Verdict`
+    carrying ``ok``."""
     if lang == "zh":
-        return "合格" if ok else "不合格"
-    return "PASS" if ok else "FAIL"
+        return Verdict("合格" if ok else "不合格", ok)
+    return Verdict("PASS" if ok else "FAIL", ok)
 
 
 # -------------------------------------------------------------------------- user text

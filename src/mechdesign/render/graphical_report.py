@@ -16,7 +16,7 @@ from pathlib import Path
 import numpy as np
 
 from . import figures as fig
-from .fmt import f, mpl_text
+from .fmt import f, grouped, mpl_text
 
 _T = {
     "zh": {"vel": "速度多边形", "acc": "加速度多边形", "fbd": "受力图", "force": "力多边形",
@@ -108,6 +108,12 @@ def _num(x: float) -> str:
     return f(x, min(d, 4))
 
 
+def _numg(x: float) -> str:
+    """:func:`_num` for a table cell or running text: five or more integer digits grouped
+    (render/fmt.py's rule); inside a formula :func:`_num` keeps them together."""
+    return grouped(_num(x))
+
+
 def _mm(x: float) -> str:
     return f"{x:.1f}"
 
@@ -178,7 +184,7 @@ def _force_figure(path: Path, pos, fg, members: dict, lang: str) -> None:
     """Left: the group's links at μl with their loads (arrows of a common length, named);
     right: the force polygon at μF."""
     t = _T[lang]
-    with fig.figure(path, 1, (7.0, 3.4), sharex=False) as axes:
+    with fig.figure(path, 1, (6.4, 2.6), sharex=False) as axes:
         f_ = axes[0].figure
         f_.clf()
         a1, a2 = f_.add_subplot(1, 2, 1), f_.add_subplot(1, 2, 2)
@@ -268,36 +274,38 @@ def _eq_tex(eq) -> str:
     return f"{left} = {right}" if left else right
 
 
-def _table(eq, lang: str, unit: str) -> dict:
-    terms = list(eq.left) + list(eq.right)
-    head = [f"${sym(t.symbol)}$" for t in terms]
-    mag = ["?" if not t.known else ("√" if t.direction == "known" else _num(t.read))
-           for t in terms]
-    dirs = [direction(t.direction, lang) if t.direction else "?" for t in terms]
-    return {"tex": _eq_tex(eq), "head": head, "mag": mag, "dir": dirs,
-            "align": "|".join([":-:"] * (len(terms) + 1))}
-
-
 def _kin(poly, lang: str, unit: str, rate_name: str) -> dict:
-    eqs, measured, seen = [], [], set()
+    """The polygon's vector equations group by group: per group its equations and ONE table,
+    a row per vector (大小 and 方向 as the construction knows them: "?" unknown, "√" found
+    before, else the value drawn; then the polygon's segment, its length and the value read)."""
+    groups: list[dict] = []
     for eq in poly.equations:
         rel = [t for t in eq.left + eq.right if t.kind != "absolute"]
         if rel and all(t.known and t.length == 0 for t in rel):
             continue        # a point of a link in translation: the same vector as its origin
-        eqs.append(_table(eq, lang, unit))
+        # a new table for each group whose equation has unknowns; a further point of a link
+        # already solved (every magnitude known: v_B = v_BO3) joins the table before it
+        solved = all(t.known for t in eq.left + eq.right)
+        if not groups or (groups[-1]["group"] != eq.group and not solved):
+            groups.append({"group": eq.group, "eqs": [], "rows": [], "seen": set()})
+        g = groups[-1]
+        g["eqs"].append(_eq_tex(eq))
         for t in list(eq.left) + list(eq.right):
-            if (t.tail, t.head) in seen:
+            if t.symbol in g["seen"]:
                 continue
-            seen.add((t.tail, t.head))
-            how = "measured" if not t.known else ("drawn" if t.direction != "known" else "")
-            if not how or (how == "drawn" and t.length == 0):
-                continue
-            measured.append([f"${sym(t.symbol)}$", f"{t.tail}{t.head}", _mm(t.length),
-                             _num(t.read), how])
-    rates = [[f"${rate_name}_{{{link}}}$", _num(v)] for link, v in poly.rates.items()]
+            g["seen"].add(t.symbol)
+            mag = "?" if not t.known else ("√" if t.direction == "known" else _numg(t.read))
+            dirs = direction(t.direction, lang) if t.direction else "?"
+            if t.known and (t.direction == "known" or t.length == 0):
+                seg = length = value = "—"
+            else:
+                seg, length, value = f"{t.tail}{t.head}", _mm(t.length), _numg(t.read)
+            g["rows"].append([f"${sym(t.symbol)}$", mag, dirs, seg, length, value])
+    for g in groups:
+        del g["seen"]
+    rates = [[f"${rate_name}_{{{link}}}$", _numg(v)] for link, v in poly.rates.items()]
     coriolis = any(t.kind == "coriolis" for eq in poly.equations for t in eq.left + eq.right)
-    return {"mu": _scale(poly.scale), "eqs": eqs, "measured": measured, "rates": rates,
-            "coriolis": coriolis}
+    return {"mu": _scale(poly.scale), "groups": groups, "rates": rates, "coriolis": coriolis}
 
 
 def _moment_tex(m) -> tuple[str, float, float]:
@@ -346,15 +354,15 @@ def _forces(pos, lang: str) -> list[dict]:
                                 f"{u} = {_num(m.result)}" r"\ \mathrm{N\cdot m}"))
         closing = " + ".join(r"\vec " + sym(v.symbol) for v in fg.vectors
                              if v.kind not in ("total", "internal")) + " = 0"
-        rows = [[f"${sym(v.symbol)}$", "√" if v.known else "?", _mm(v.length), _num(v.read)]
+        rows = [[f"${sym(v.symbol)}$", "√" if v.known else "?", _mm(v.length), _numg(v.read)]
                 for v in fg.vectors]
-        loads = [[f"${sym(ld.name)}$", link, _num(abs(ld.value))]
+        loads = [[f"${sym(ld.name)}$", link, _numg(abs(ld.value))]
                  for link, lds in fg.loads.items() for ld in lds if abs(ld.value) > 0]
         out.append({"name": "–".join(fg.links), "links": ", ".join(fg.links), "crank": fg.balancing_torque
                     is not None, "mu": _scale(fg.scale), "moments": moments, "rows": rows,
                     "loads": loads, "sum": closing, "n": n,
-                    "mb": None if fg.balancing_torque is None else _num(fg.balancing_torque),
-                    "pb": None if fg.balancing_force is None else _num(abs(fg.balancing_force))})
+                    "mb": None if fg.balancing_torque is None else _numg(fg.balancing_torque),
+                    "pb": None if fg.balancing_force is None else _numg(abs(fg.balancing_force))})
     return out
 
 
@@ -370,7 +378,7 @@ def _compare(pos, lang: str) -> list[list[str]]:
         mark = ("合格" if ok else "超差") if lang == "zh" else ("PASS" if ok else "beyond")
         # a value smaller than the drawing's resolution has no meaningful relative error
         diff = "—" if abs(c.analytic) < c.tolerance else f(100 * c.difference, 1)
-        rows.append([name, c.unit, _num(c.graphical), _num(c.analytic), diff, _num(c.tolerance),
+        rows.append([name, c.unit, _numg(c.graphical), _numg(c.analytic), diff, _numg(c.tolerance),
                      mark])
     return rows
 
@@ -394,12 +402,13 @@ def graphical_context(results: dict, figures: dict, lang: str) -> list[dict]:
                 "acc": _kin(pos.acceleration, lang, "m/s²", r"\alpha"),
                 "fig": figures.get(f"{key}_kin", ""),
                 "forces": forces, "crank": crank,
-                "mb": None if pos.balancing_torque is None else _num(pos.balancing_torque),
+                "mb": None if pos.balancing_torque is None else _numg(pos.balancing_torque),
                 "compare": _compare(pos, lang),
                 "beyond": sum(1 for c in pos.comparison
                               if abs(c.graphical - c.analytic) > c.tolerance),
             })
         out.append({"prefix": prefix, "step": _mm(doc.step), "positions": positions,
+                    "forces": any(p["forces"] for p in positions),
                      "labels": "、".join(p["label"] for p in positions) if lang == "zh"
                      else ", ".join(p["label"] for p in positions)})
     return out

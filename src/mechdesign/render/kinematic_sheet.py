@@ -426,7 +426,8 @@ def lockbeam_diagram(results, found, info: TitleInfo, lang: str) -> Sheet:
                           view.p(complex(xw, yc)).real + 4, view.p(complex(xw, yc + 7.0)).imag))
     _omega_arrow(s, view, o, float(np.max(np.abs(pd["profile"] - o))), L["sigma_pin"] > 0, placer, lab)
     placer.place(view.p(o), "O2", 3.5, prefer=-1 - 1j, gap=3.0)
-    placer.place(view.p(pd["B"]), "B", 3.5, prefer=-1 + 0.3j, gap=3.0)
+    # the roller centre of the positioning pin: F (B is the bending four-bar's pin)
+    placer.place(view.p(pd["B"]), "F", 3.5, prefer=-1 + 0.3j, gap=3.0)
     placer.place(view.p((pd["B"] + pd["stem_top"]) / 2), "7", 3.5, prefer=1, gap=3.0)
     k = pd["profile"][len(pd["profile"]) // 2]
     placer.place(view.p(k), "2", 3.5, prefer=k - o, gap=2.5)

@@ -136,12 +136,13 @@ def _diagram_builders(results: dict, found) -> list:
             and results.get("bending_cam") is not None and cam is not None):
         # the lock-beam machine: the feed linkage, both cams, the bending four-bar and chain
         out.append(("kinematic", lambda info, lang: ks.lockbeam_diagram(results, found, info, lang)))
+    elif results.get("optimum") is not None and hasattr(results["optimum"], "best"):
+        # the crank-rocker (its optimum also runs through the linkage stages)
+        opt, slider = results["optimum"], results.get("slider")
+        out.append(("kinematic", lambda info, lang: ks.crank_rocker_diagram(opt, slider, info, lang)))
     elif found is not None:
         label = ks.diagram_position(found, results.get("brief"))
         out.append(("kinematic", lambda info, lang: ks.linkage_diagram(found, info, lang, label)))
-    elif results.get("optimum") is not None and hasattr(results["optimum"], "best"):
-        opt, slider = results["optimum"], results.get("slider")
-        out.append(("kinematic", lambda info, lang: ks.crank_rocker_diagram(opt, slider, info, lang)))
     elif cam is not None and hasattr(cam, "grid"):
         out.append(("kinematic", lambda info, lang: ks.cam_diagram(cam, info, lang)))
     elif results.get("disc") is not None:

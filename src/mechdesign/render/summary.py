@@ -24,7 +24,7 @@ from importlib import resources
 from pathlib import Path
 from typing import Any
 
-from .fmt import md_text, verdict
+from .fmt import grouped, md_text, verdict
 
 # --------------------------------------------------------------------------- references
 
@@ -73,15 +73,12 @@ def verdict_word(ok: bool, lang: str) -> str:
 
 
 def read_verdict(cell: str, lang: str) -> bool | None:
-    """A verification table's verdict cell as the boolean it was made from: the cells are
-    written by :func:`.fmt.verdict` (possibly in bold), so a cell is True or False exactly
-    when it is ``verdict(True/False, lang)``; anything else (an explanation, a dash) is no
-    verdict (None). No synonym lists: a word the one vocabulary does not have is no verdict."""
-    word = re.sub(r"[*_`]", "", str(cell)).strip()
-    for ok in (True, False):
-        if word == verdict(ok, lang):
-            return ok
-    return None
+    """A verification table's verdict cell as the boolean it was made from: a cell written
+    by :func:`.fmt.verdict` is a :class:`.fmt.Verdict` and carries its ``passed``; the
+    word is not read. Anything else (an explanation, a dash, a plain string) is no verdict
+    (None)."""
+    passed = getattr(cell, "passed", None)
+    return passed if isinstance(passed, bool) else None
 
 
 def _check_names() -> dict[str, tuple[str, str]]:
@@ -279,7 +276,7 @@ def _show(value: Any, factor: float) -> str | None:
     if not math.isfinite(x):
         return None
     text = f"{x:.4g}" if abs(x) < 1e4 else f"{x:.0f}"
-    return "0" if text in ("-0", "0") else text
+    return "0" if text in ("-0", "0") else grouped(text)
 
 
 def _get(document: Any, path: str) -> Any:

@@ -672,6 +672,16 @@ def _advice(ch, ev, dims, free_ev, free_dims):
     return tuple(out)
 
 
+def _text_num(x: float) -> str:
+    """A whole number for running text: five or more digits grouped by threes with a narrow
+    no-break space (48 000), as render/fmt.py's rule writes numbers outside formulas."""
+    text = f"{x:g}" if abs(x) < 1e5 else f"{x:.0f}"
+    head, dot, tail = text.partition(".")
+    if len(head.lstrip("-")) >= 5 and head.lstrip("-").isdigit():
+        head = f"{int(head):,}".replace(",", "\u202f")
+    return head + dot + tail
+
+
 def _sig(x: float, digits: int) -> str:
     """``digits`` significant digits in fixed-point notation (12807 → '12810', not 1.281e+04)."""
     if x == 0 or x != x:
@@ -717,9 +727,9 @@ def _steps(sh, mat, a0, d_min, dims, shoulder, T, peak, peak_factor, lf, ev, spa
     if b is not None:
         conf_zh = "" if cat.bearing_confirmed(b.designation) else "（额定载荷按手册表抄录，未与公开副本核对）"
         conf_en = "" if cat.bearing_confirmed(b.designation) else " (rating transcribed from the handbook table, not confirmed against a public copy)"
-        out.append((f"轴承：按轴颈选最轻系列中寿命 ≥ {dp.service_hours:g} h 者 → {b.designation}，$C_r$ = "
+        out.append((f"轴承：按轴颈选最轻系列中寿命 ≥ {_text_num(dp.service_hours)} h 者 → {b.designation}，$C_r$ = "
                     f"{b.Cr / 1e3:g} kN，$C_{{0r}}$ = {b.C0r / 1e3:g} kN{conf_zh}",
-                    f"bearings: at the journal, the lightest series whose life reaches {dp.service_hours:g} h → "
+                    f"bearings: at the journal, the lightest series whose life reaches {_text_num(dp.service_hours)} h → "
                     f"{b.designation}, $C_r$ = {b.Cr / 1e3:g} kN, $C_{{0r}}$ = {b.C0r / 1e3:g} kN{conf_en}"))
     if ev["keys"]:
         zh = "；".join(f"{k.names[0]}：d = {_mmf(k.d)}，键 {_mmf(k.b)}×{_mmf(k.h)}，轮毂 {_mmf(k.hub, 0)}，"

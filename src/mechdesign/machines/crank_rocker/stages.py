@@ -16,9 +16,11 @@ import numpy as np
 from ...core import fourbar as fb
 from ...core.extremes import fminbound, grid_roots, refine_extreme
 from ...core.fields import q
+from ...i18n import N_
 from ...core.mechanism import RRP, RRR, Crank, Mechanism
 from ...pipeline import Stage
 from ...stages.findings import Finding
+from ...stages.linkage import LinkageDocument
 
 DEG = 180.0 / np.pi
 
@@ -461,6 +463,40 @@ def checks(p, keep: dict | None = None) -> list:
     return out
 
 
+#: the links of the crank-rocker in the linkage engine (names shown on the sheets)
+_LINK_NAMES = {"2": N_("crank AB"), "3": N_("coupler BC"), "4": N_("rocker CD")}
+_MODEL_TITLE = N_("the crank-rocker as a linkage")
+
+
+def linkage_model(r: dict):
+    """The optimum crank-rocker as a model of the shared linkage engine
+    (:mod:`mechdesign.stages.linkage`): crank AB (link 2) + RRR group BC (3) / DC (4), D at
+    the origin, assembled on the branch of the simulation, the rocker's angle the output.
+    Position 1 is the rocker extreme that starts the slow stroke (the working stroke of a
+    crank-rocker with K > 1). No loads: the engine gives the kinematics, the analysis sheet's
+    velocity and acceleration polygons and the graphical method."""
+    from ...i18n import tr
+    from ...stages import linkage as lk
+
+    p = r["params"]
+    opt: OptimumResult = r["optimum"]
+    best = opt.best
+    branch = folded_branch(best.design, best.a_pivot, opt.construction.c1)
+    mech = _four_bar_mechanism(best.design, best.a_pivot, branch, p.omega)
+    zh = tr("zh")
+    names = {k: (zh(v), v) for k, v in _LINK_NAMES.items()}
+    model = lk.LinkageModel(mech, p.omega, lk.Output("link", "4", 0.0, +1),
+                            grid_points=p.grid_points,
+                            transmission_angle_min=p.gamma_allowed, names=names)
+    start, end = lk._strokes(model)[:2]
+    span = (float(np.sign(p.omega)) * (end - start)) % (2.0 * np.pi)
+    if span < np.pi:         # the rocker's angle falls in the slow stroke
+        from dataclasses import replace
+
+        model = replace(model, output=lk.Output("link", "4", 0.0, -1))
+    return model
+
+
 def stages(params) -> list[Stage]:
     out = [Stage("optimum", "最小传动角最大的曲柄摇杆机构 / crank-rocker with the best transmission angle",
                  optimum_stage)]
@@ -475,7 +511,20 @@ def stages(params) -> list[Stage]:
     out.append(Stage("chart", "设计线图 / design chart", chart_stage))
     out.append(Stage("compare", "对比设计 / designs to compare", compared_designs))
     out.append(Stage("verify", "仿真校核 / verification by simulation", verify_stage))
+    from ...i18n import tr
+    from ...stages.linkage import linkage_stages
+
+    out.append(Stage("linkage_model", f"{tr('zh')(_MODEL_TITLE)} / {_MODEL_TITLE}",
+                     linkage_model))
+    # no loads in the brief: no kinetostatics (the forces stage gives None, as the engine's
+    # verification, polygons and graphical stages accept)
+    out += [Stage(s.key, s.title, _no_forces) if s.key == "linkage_forces" else s
+            for s in linkage_stages(model_key="linkage_model", prefix="linkage")]
     return out
+
+
+def _no_forces(r: dict) -> None:
+    return None
 
 
 # ------------------------------------------------------------------------------ results
@@ -599,6 +648,11 @@ class CrankRockerResults:
     chart: ChartDoc = q("", "the design chart")
     simulation: tuple[SimulationDoc, ...] = q("", "optimum, textbook, compared designs simulated")
     slider_crank: SliderCrankDoc | None = q("", "the offset slider-crank, if the brief has one")
+    linkage: LinkageDocument | None = q(
+        "", "the optimum run through the shared linkage engine (kinematics at the textbook "
+        "positions, the graphical method at the polygon positions); the output is the rocker's "
+        "angle, position 1 the extreme that starts the slow stroke; the brief has no loads, so "
+        "the balancing torque is zero and no reactions are listed", default=None)
 
 
 def _design_doc(d: Design) -> DesignDoc:
@@ -637,7 +691,21 @@ def results_document(r: dict) -> CrankRockerResults:
         chart=ChartDoc(tuple(r["chart"].thetas), r["chart"].swings, r["chart"].ratio,
                        r["chart"].gamma),
         simulation=tuple(_sim_doc(s) for s in r["verify"].sims),
-        slider_crank=slider)
+        slider_crank=slider, linkage=_linkage_doc(r))
+
+
+def _linkage_doc(r: dict) -> LinkageDocument | None:
+    """The shared engine's document of the optimum; without loads the kinetostatics is
+    zero (no reactions, M_b = 0), written so rather than computed."""
+    from ...stages.linkage import LinkageForces, linkage_document
+
+    if r.get("linkage") is None:
+        return None
+    k = r["linkage"]
+    zero = np.zeros_like(k.phase)
+    none = LinkageForces({}, {}, {}, {}, {}, zero, zero, 0.0, 0.0, 0.0)
+    return linkage_document(r["linkage_model"], k, none, r.get("linkage_flywheel"),
+                            r["linkage_verification"], r.get("linkage_graphical"))
 
 
 __all__ = ["stages", "results_document", "simulate_four_bar", "simulate_slider", "folded_branch"]

@@ -343,12 +343,12 @@ def _amplification(r, p, zh: bool) -> dict:
     a = d.four.crank
     rows = []
     for gap, ph, u, fpt, ratio in amp.table:
-        rows.append([f(gap * MM, 3), _deg(ph, 3), f(u * MM, 4), f(fpt, 1), f(ratio, 2),
-                     f(p.cutting_force * u, 1)])
+        rows.append([f(gap * MM, 3), _deg(ph, 3), f(u * MM, 4), f(fpt, 1, group=True), f(ratio, 2),
+                     f(p.cutting_force * u, 1, group=True)])
     top = "∞" if not np.isfinite(amp.top_ratio) else f(amp.top_ratio, 2)
     rows.append([f(0.0, 3), _deg(tm.top, 3), "0" if not np.isfinite(amp.top_ratio) else
                  f(a / amp.top_ratio * MM, 4), "∞" if not np.isfinite(amp.top_ratio) else
-                 f(amp.top_ratio / a, 1), top, f(0.0, 1)])
+                 f(amp.top_ratio / a, 1, group=True), top, f(0.0, 1)])
     drive = r["drive"]
     motor = drive.motor
     # the motor alone: its rated torque brought to the distribution shaft

@@ -304,10 +304,10 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
         [("(一) 原文：$(a+b)^2+(b-a)^2-2(a+b)(b-a)\\cos 30° = B_1B_2^2$" if zh else
           "(1) as printed: $(a+b)^2+(b-a)^2-2(a+b)(b-a)\\cos 30° = B_1B_2^2$"),
          f"{f(sd.chord_printed * MM, 2)}²", f"{f(sd.chord * MM, 2)}²",
-         f(sd.eq1_printed * 1e6, 0) + " mm²"],
+         f(sd.eq1_printed * 1e6, 0, group=True) + " mm²"],
         [("(一) 改用正确的 θ = " if zh else "(1) with the correct θ = ") + f"{f(th, 0)}°",
          f"{f(sd.chord_correct * MM, 2)}²", f"{f(sd.chord * MM, 2)}²",
-         f(sd.eq1_correct * 1e6, 0) + " mm²"],
+         f(sd.eq1_correct * 1e6, 0, group=True) + " mm²"],
         [("(二) 原文：$\\arccos\\frac{b^2+1150^2-(a+505.37)^2}{2300\\,b} + 30° = 180°$" if zh else
           "(2) as printed: $\\arccos\\frac{b^2+1150^2-(a+505.37)^2}{2300\\,b} + 30° = 180°$"),
          f(sd.eq3_lhs * DEG, 2) + "°", "180°", f((sd.eq3_lhs - np.pi) * DEG, 2) + "°"],

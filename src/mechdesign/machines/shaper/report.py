@@ -124,7 +124,7 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
         load_rows.append([label, f(frc.cutting_force[j], 0), f(frc.inertia_force4[j], 1),
                           f(frc.inertia_couple4[j], 2), f(frc.inertia_force6[j], 1),
                           f(frc.balancing_torque[j], 2)])
-        reaction_rows.append([label] + [f(abs(frc.reactions[key][j]), 1) for _, key in _REACTIONS])
+        reaction_rows.append([label] + [f(abs(frc.reactions[key][j]), 1, group=True) for _, key in _REACTIONS])
     # Worked example at one position with the analytic formulas of the guide-bar group.
     ex = labels.index("4") if "4" in labels else 1  # the course's usual worked position
     j = n + ex
