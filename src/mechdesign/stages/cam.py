@@ -17,6 +17,7 @@ from ..core import cam as core
 from ..core.fields import q
 from ..pipeline import Stage
 from .findings import Finding
+from . import titles
 
 GRID_POINTS = 3600
 
@@ -326,7 +327,7 @@ def _checks(p, fol, r0, segs, rho_p, rho_a, rho_min, min_r0, best) -> list[Findi
 
 def cam_stage() -> Stage:
     """The cam stage of any machine whose parameters carry ``.cam`` (brief.cam.CamParams)."""
-    return Stage("cam", "凸轮机构设计 / cam design", lambda r: design(r["params"].cam))
+    return Stage("cam", titles.pgettext("stage", "cam design"), lambda r: design(r["params"].cam))
 
 
 # --------------------------------------------------------------------------- eccentric disc

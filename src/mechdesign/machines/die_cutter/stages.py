@@ -49,6 +49,7 @@ from ...stages.linkage import (CycleIntegrals, LinkageDocument, LinkageModel, Ou
                                linkage_stages)
 from ...stages.cam import CamDocument
 from ...stages.drive import DriveDocument
+from ...stages import titles
 
 TWO_PI = 2.0 * np.pi
 DEG = 180.0 / np.pi
@@ -660,22 +661,22 @@ def stages(params: DieCutterParams) -> list[Stage]:
     press = [s for s in linkage_stages(model_key="press_model", prefix="press")
              if s.key != "press_flywheel"]
     return [
-        Stage(("toggle", "press_model"), "肘杆机构设计 / toggle press synthesis",
+        Stage(("toggle", "press_model"), titles.pgettext("stage", "toggle press synthesis"),
               lambda r: synthesis(r["params"], r.get("checked", {}).get("toggle"))),
         *press,
-        Stage("amplification", "增力特性 / force amplification",
+        Stage("amplification", titles.pgettext("stage", "force amplification"),
               lambda r: amplification(r["press_model"], r["toggle"], r["press"], r["press_raw"],
                                       r["press_forces"], r["params"])),
-        Stage("drive", "传动装置设计 / drive", _drive),
-        Stage(("press_flywheel", "peak_shafts"), "飞轮设计 / flywheel",
+        Stage("drive", titles.pgettext("stage", "drive"), _drive),
+        Stage(("press_flywheel", "peak_shafts"), titles.pgettext("stage", "flywheel"),
               lambda r: flywheel(r["press_model"], r["press"], r["press_forces"], r["drive"],
                                  r["params"])),
         cam_stage(),
-        Stage("feed", "不完全齿轮送纸 / incomplete-gear feed",
+        Stage("feed", titles.pgettext("stage", "incomplete-gear feed"),
               lambda r: feed(r["amplification"], r["params"])),
-        Stage("cycle", "运动循环图 / motion cycle diagram",
+        Stage("cycle", titles.pgettext("stage", "motion cycle diagram"),
               lambda r: cycle(r["amplification"], r["feed"], r["cam"], r["params"])),
-        Stage("verification", "校核 / verification", _verify),
+        Stage("verification", titles.pgettext("stage", "verification"), _verify),
     ]
 
 

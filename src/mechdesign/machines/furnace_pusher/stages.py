@@ -44,6 +44,7 @@ from ...stages.drive import DriveDocument, design_drive, drive_document
 from ...stages.findings import Finding
 from ...core.extremes import brentq, fminbound
 from ...stages.linkage import LinkageDocument, LinkageModel, Output, Resistance, linkage_document, linkage_stages
+from ...stages import titles
 
 FRAME = "6"
 CRANK, COUPLER, ROCKER, ROD, SLIDER = "1", "2", "3", "4", "5"
@@ -567,13 +568,13 @@ def _drive(r: dict):
 
 
 def stages(params: FurnaceParams) -> list[Stage]:
-    out = [Stage(("synthesis", "model"), "执行机构设计 / six-bar synthesis", synthesis_stage)]
+    out = [Stage(("synthesis", "model"), titles.pgettext("stage", "six-bar synthesis"), synthesis_stage)]
     out += linkage_stages(model_key="model", prefix="linkage")
-    out.append(Stage("pusher_check", "设计要求校核 / specification check",
+    out.append(Stage("pusher_check", titles.pgettext("stage", "specification check"),
                      lambda r: check(r["params"], r["synthesis"], r["linkage"], r["linkage_forces"],
                                      r["linkage_verification"])))
     if params.drive is not None:
-        out.append(Stage("drive", "传动装置设计 / drive", _drive))
+        out.append(Stage("drive", titles.pgettext("stage", "drive"), _drive))
     return out
 
 

@@ -36,6 +36,7 @@ from ...core.cycle import CycleDocument
 from ...core.fields import q
 from ...stages.linkage import LinkageDocument, closure_residual, linkage_document, linkage_stages
 from ...stages.cam import CamDocument
+from ...stages import titles
 
 TWO_PI = 2.0 * np.pi
 DEG = 180.0 / np.pi
@@ -652,18 +653,18 @@ def _reuse(stage: Stage, key: str) -> Stage:
 def stages(params: LockbeamParams) -> list[Stage]:
     feed_kinematics, *feed_rest = linkage_stages(model_key="feed_model", prefix="feed")
     return [
-        Stage("transmission", "传动系统设计 / transmission", lambda r: transmission(r["params"])),
+        Stage("transmission", titles.pgettext("stage", "transmission"), lambda r: transmission(r["params"])),
         cam_stage(),
-        Stage("pin_check", "定位销升程校核 / pin lift", lambda r: pin_check(r["params"])),
-        Stage("bending_cam", "扳弯凸轮设计 / bending cam",
+        Stage("pin_check", titles.pgettext("stage", "pin lift"), lambda r: pin_check(r["params"])),
+        Stage("bending_cam", titles.pgettext("stage", "bending cam"),
               lambda r: design_cam(r["params"].bending_cam)),
-        Stage("bending", "扳弯机构设计 / bending linkage",
+        Stage("bending", titles.pgettext("stage", "bending linkage"),
               lambda r: bending(r["params"], r["bending_cam"],
                                 r.get("checked", {}).get("bending_synthesis"))),
-        Stage("feed_model", "送料机构 / feed linkage", lambda r: r["params"].feed),
+        Stage("feed_model", titles.pgettext("stage", "feed linkage"), lambda r: r["params"].feed),
         _reuse(feed_kinematics, "feed_motion"), *feed_rest,
-        Stage("feed_table", "送料机构位置表 / feed table", lambda r: feed_table(r["params"].feed)),
-        Stage("cycle", "运动循环图 / motion cycle", lambda r: cycle(r["params"], r)),
+        Stage("feed_table", titles.pgettext("stage", "feed table"), lambda r: feed_table(r["params"].feed)),
+        Stage("cycle", titles.pgettext("stage", "motion cycle"), lambda r: cycle(r["params"], r)),
     ]
 
 

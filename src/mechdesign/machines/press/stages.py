@@ -22,6 +22,7 @@ from ...stages.drive import DriveDocument, drive_document
 from ...stages.flywheel import Flywheel, FlywheelSpec, RimSpec
 from ...stages.gear import GearDocument
 from .brief import PressParams
+from ...stages import titles
 
 FRAME = "6"
 DOWN = -np.pi / 2
@@ -189,7 +190,7 @@ def _synthesis(r: dict):
 
 
 def stages(p: PressParams) -> list[Stage]:
-    return [Stage(("synthesis", "model"), "连杆机构设计 / linkage synthesis", _synthesis),
+    return [Stage(("synthesis", "model"), titles.pgettext("stage", "linkage synthesis"), _synthesis),
             *lk.linkage_stages(model_key="model", prefix="linkage"),
             *guide_bar.optional_stages(p)]
 
