@@ -84,9 +84,32 @@ class Pair:
         self.zh, self.en = zh, en
 
 
+class Cat:
+    """Parts (messages, pairs, text) written one after the other, e.g. a fix and the
+    alternatives appended to it."""
+
+    __slots__ = ("parts",)
+
+    def __init__(self, *parts):
+        self.parts = parts
+
+    def __add__(self, other) -> "Cat":
+        return Cat(*self.parts, other)
+
+    def text(self, t) -> str:
+        return "".join(_one(v, t) for v in self.parts)
+
+
+def _one(v, t):
+    if isinstance(v, (Msg, Cat)):
+        return v.text(t)
+    if isinstance(v, Pair):
+        return v.zh if t.zh else v.en
+    return v
+
+
 def _resolved(fields: dict, t) -> dict:
-    return {k: (v.text(t) if isinstance(v, Msg) else (v.zh if t.zh else v.en)
-                if isinstance(v, Pair) else v) for k, v in fields.items()}
+    return {k: _one(v, t) for k, v in fields.items()}
 
 
 class _ZhEn:
