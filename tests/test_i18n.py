@@ -184,7 +184,6 @@ NOT_YET_CONVERTED = {
     "render/sheets.py",
     "render/strength_tex.py",
     "render/summary.py",
-    "stages/drive.py",
     "stages/drive_elements.py",
     "stages/drive_strength.py",
     "stages/graphical.py",
