@@ -32,7 +32,7 @@ from ...core.mechanism import RPR, RRP, RRR, Crank, LinkPoint, Mechanism
 from ...pipeline import Stage
 from ...stages.cam import cam_document, cam_stage, design as design_cam
 from ...i18n import N_, tr
-from ...stages.findings import Finding, Msg, Pair, finding, zh_en
+from ...stages.findings import Msg, Pair, finding, zh_en
 from ...core.cycle import CycleDocument
 from ...core.fields import q
 from ...stages.linkage import LinkageDocument, closure_residual, linkage_document, linkage_stages
