@@ -24,7 +24,7 @@ import pytest
 from mechdesign.brief.loader import load_brief
 from mechdesign.machines import get_machine, stages_for
 from mechdesign.registry import entry
-from mechdesign.render.fmt import meta_text
+from mechdesign.render.fmt import in_lang, meta_text
 from mechdesign.render.report import render_markdown, template_dir
 from mechdesign.render.summary import Citations, handin_context, references
 from mechdesign.results import to_plain
@@ -235,9 +235,8 @@ def test_lockbeam_appendix_lists_the_stages_that_ran(reports, example_results, l
     rows = [r for r in text.split("```")[0].splitlines() if re.match(r"^\| \d+ \|", r)]
     assert len(rows) == len(stages) >= 10
     for i, (row, st) in enumerate(zip(rows, stages), 1):
-        zh, _, en = st.title.partition(" / ")
         cells = [c.strip() for c in row.strip("|").split("|")]
-        assert cells[0] == str(i) and cells[1] == (zh if lang == "zh" else en).strip()
+        assert cells[0] == str(i) and cells[1] == in_lang(st.title, lang).strip()
         keys = st.key if isinstance(st.key, tuple) else (st.key,)
         assert cells[2] == "`" + ", ".join(keys) + "`"
     # the flow chart and the listing of the stages module, read at run time

@@ -112,9 +112,15 @@ _CJK = re.compile("[\u3000-\u303f\u3400-\u9fff\uff00-\uffef]")
 
 def in_lang(text, lang: str):
     """The part of a '中文 / English' label for ``lang`` ('导杆 / guide bar' → '导杆' or
-    'guide bar'); other text as it is. Lists (table rows) are mapped cell by cell."""
+    'guide bar'); a stage title (``stages.titles.Title``: an English msgid with its context)
+    translated through the catalogue; other text as it is. Lists (table rows) are mapped
+    cell by cell."""
     if isinstance(text, (list, tuple)):
         return [in_lang(t, lang) for t in text]
+    if isinstance(text, str) and hasattr(text, "context"):      # a stage title
+        from ..i18n import gettext
+
+        return gettext(str(text), lang, text.context)
     if not isinstance(text, str) or " / " not in text:
         return text
     zh, en = text.split(" / ", 1)

@@ -24,7 +24,7 @@ from importlib import resources
 from pathlib import Path
 from typing import Any
 
-from .fmt import grouped, md_text, verdict
+from .fmt import grouped, in_lang, md_text, verdict
 
 # --------------------------------------------------------------------------- references
 
@@ -448,11 +448,11 @@ def program_listing(module_name: str, width: int = LISTING_WIDTH) -> str:
 
 
 def stage_title(title: str, lang: str) -> str:
-    """A stage's title ("中文 / English") in the report's language."""
+    """A stage's title ("中文 / English", or a stages.titles.Title) in the report's language."""
     if " / " in title:
         zh, en = title.split(" / ", 1)
         return zh.strip() if lang == "zh" else en.strip()
-    return title
+    return in_lang(title, lang)
 
 
 def flow_chart(path: Path, titles: list[str], lang: str) -> Path:

@@ -16,7 +16,9 @@ import numpy as np
 from ..core import cam as core
 from ..core.fields import q
 from ..pipeline import Stage
-from .findings import Finding
+from ..i18n import N_
+from .findings import Cat, CheckNames, Finding, Msg, Pair, en_zh, finding, zh_en
+from . import titles
 
 GRID_POINTS = 3600
 
@@ -31,7 +33,7 @@ class SegmentCheck:
     span: float = q("rad", "cam angle of the segment (Φ, Φs, Φ′, Φs′)")
     lift: float = q("m or rad", "signed follower travel in the segment")
     impact: str = q("",
-        "worst impact of the motion (its ends and interior): 'none' | 'soft' (柔性) | 'rigid' (刚性)")
+        "worst impact of the motion (its ends and interior): 'none' | 'soft' | 'rigid'")
     max_pressure_angle: float = q("rad", "α_max in the segment")
     at: float = q("rad", "cam angle of α_max")
     limit: float | None = q("rad", "allowed pressure angle [α] (null for a dwell)")
@@ -119,10 +121,9 @@ def design(p) -> CamResult:
     designed = p.base_radius is None
     if designed:
         if min_r0 is None:
-            raise core.CamDesignError("cam.base_radius_mm: 'auto' cannot be met: no base radius keeps "
-                                      "the pressure angle within the limits; give a base radius",
-                                      "cam.base_radius_mm：无法自动确定（auto）：没有任何基圆半径能使"
-                                      "压力角不超过许用值；请直接给出基圆半径")
+            raise core.CamDesignError(*en_zh(N_(
+                "cam.base_radius_mm: 'auto' cannot be met: no base radius keeps the pressure angle "
+                "within the limits; give a base radius")))
         r0 = float(np.ceil(min_r0 * 1e3 - 1e-9) / 1e3)          # whole millimetres, upwards
         if fol.kind == "roller":
             r0 = max(r0, float(np.ceil((fol.roller_radius + p.min_actual_curvature) * 1e3) / 1e3))
@@ -252,81 +253,71 @@ def _checks(p, fol, r0, segs, rho_p, rho_a, rho_min, min_r0, best) -> list[Findi
     bad = [s for s in segs if not s.ok]
     if bad:
         worst = max(bad, key=lambda s: s.max_pressure_angle - s.limit)
-        which_zh = "推程" if worst.kind == core.RISE else "回程"
-        which_en = worst.kind
+        which = Pair(*(zh_en.pgettext("cam segment", "rise") if worst.kind == core.RISE
+                       else zh_en.pgettext("cam segment", "return")))
+        which.en = worst.kind
         raise_r0 = _more(min_r0, r0)
-        fix_zh = f"把基圆半径增大到至少 {_mm(min_r0)}" if raise_r0 else "增大基圆半径"
-        fix_en = f"increase the base radius to at least {_mm(min_r0)}" if raise_r0 else "increase the base radius"
-        head_zh, head_en = f"基圆半径 r0 = {_mm(r0)} 太小，", f"the base radius r0 = {_mm(r0)} is too small: "
+        fix = Cat(Msg(N_("increase the base radius to at least {r0}"), r0=_mm(min_r0)) if raise_r0
+                  else Msg(N_("increase the base radius")))
+        head = Msg(N_("the base radius r0 = {r0} is too small: "), r0=_mm(r0))
+        span = np.degrees(worst.span)
         if worst.span < np.radians(5.0) and raise_r0 and min_r0 > ABSURD_R0 * r0:
-            head_zh, head_en = "", ""
+            head = ""
             # over so short an angle no practical base radius helps: the angle is the fix
-            fix_zh = (f"给该{which_zh}更大的凸轮转角（现为 {np.degrees(worst.span):.4g}°）："
-                      f"单靠基圆半径需要 r0 ≥ {_mm(min_r0)}，无法实现")
-            fix_en = (f"give the {which_en} a larger cam angle (now {np.degrees(worst.span):.4g}°): "
-                      f"the base radius alone would have to be at least {_mm(min_r0)}, which no "
-                      "cam can be")
+            fix = Cat(Msg(N_("give the {which} a larger cam angle (now {span:.4g}°): the base "
+                             "radius alone would have to be at least {r0}, which no cam can be"),
+                          which=which, span=span, r0=_mm(min_r0)))
         elif worst.span < np.radians(5.0):
-            fix_zh += f"，或给该{which_zh}更大的凸轮转角（现为 {np.degrees(worst.span):.4g}°）"
-            fix_en += (f", or give the {which_en} a larger cam angle (now "
-                       f"{np.degrees(worst.span):.4g}°)")
+            fix += Msg(N_(", or give the {which} a larger cam angle (now {span:.4g}°)"),
+                       which=which, span=span)
         if best is not None and best[0] < r0:
-            side_zh = "右" if best[1] > 0 else "左"
-            side_en = "right" if best[1] > 0 else "left"
-            fix_zh += f"，或把偏距改为 e = {_mm(abs(best[1]))}（{side_zh}侧，此时最小基圆半径 {_mm(best[0])}）"
-            fix_en += (f", or change the offset to e = {_mm(abs(best[1]))} on the {side_en} "
-                       f"(then the smallest base radius is {_mm(best[0])})")
-        out.append(Finding(
+            side = Pair(*(zh_en.pgettext("side", "right") if best[1] > 0
+                          else zh_en.pgettext("side", "left")))
+            fix += Msg(N_(", or change the offset to e = {e} on the {side} (then the smallest base "
+                          "radius is {r0})"), e=_mm(abs(best[1])), side=side, r0=_mm(best[0]))
+        out.append(finding(
             "pressure_angle",
-            f"压力角超限：{which_zh}最大压力角 {np.degrees(worst.max_pressure_angle):.2f}° "
-            f"(δ = {np.degrees(worst.at):.1f}°) 大于许用值 {np.degrees(worst.limit):.0f}°；"
-            f"{head_zh}{fix_zh}。",
-            f"pressure angle too large: the {which_en}'s maximum {np.degrees(worst.max_pressure_angle):.2f}° "
-            f"(at δ = {np.degrees(worst.at):.1f}°) exceeds the allowed {np.degrees(worst.limit):.0f}°; "
-            f"{head_en}{fix_en}."))
+            N_("pressure angle too large: the {which}'s maximum {alpha:.2f}° (at δ = {at:.1f}°) "
+               "exceeds the allowed {limit:.0f}°; {head}{fix}."),
+            which=which, alpha=np.degrees(worst.max_pressure_angle), at=np.degrees(worst.at),
+            limit=np.degrees(worst.limit), head=head, fix=fix))
     if fol.kind == "roller" and np.isfinite(rho_p):
         rr = fol.roller_radius
         if rr >= rho_p:
             target = rho_p - p.min_actual_curvature        # the largest roller that would do
             if target >= 1e-5:
-                fix_zh = f"减小滚子半径到 {_mm(target)} 以下，或增大基圆半径"
-                fix_en = f"use a roller below {_mm(target)} or a larger base circle"
+                fix = Msg(N_("use a roller below {r} or a larger base circle"), r=_mm(target))
             else:                                          # no roller is small enough
-                fix_zh = (f"任何滚子都不能使实际廓线最小曲率半径达到 {_mm(p.min_actual_curvature)}："
-                          "增大基圆半径")
-                fix_en = (f"no roller keeps the actual profile's radius of curvature at "
-                          f"{_mm(p.min_actual_curvature)} or more: use a larger base circle")
-            out.append(Finding(
+                fix = Msg(N_("no roller keeps the actual profile's radius of curvature at {r} or "
+                             "more: use a larger base circle"), r=_mm(p.min_actual_curvature))
+            out.append(finding(
                 "undercut",
-                f"运动失真（实际廓线根切/自交）：滚子半径 r_r = {_mm(rr)} 不小于理论廓线外凸部分的"
-                f"最小曲率半径 ρmin = {_mm(rho_p)}；{fix_zh}。",
-                f"undercut (the actual profile intersects itself, the follower motion is distorted): "
-                f"the roller radius r_r = {_mm(rr)} is not smaller than the smallest convex radius of "
-                f"curvature of the pitch curve ρmin = {_mm(rho_p)}; {fix_en}."))
+                N_("undercut (the actual profile intersects itself, the follower motion is "
+                   "distorted): the roller radius r_r = {rr} is not smaller than the smallest "
+                   "convex radius of curvature of the pitch curve ρmin = {rho}; {fix}."),
+                rr=_mm(rr), rho=_mm(rho_p), fix=fix))
         elif rho_a < p.min_actual_curvature:
-            out.append(Finding(
+            out.append(finding(
                 "pointed",
-                f"实际廓线变尖：最小曲率半径 ρa = {_mm(rho_a)} 小于 {_mm(p.min_actual_curvature)}，"
-                f"易磨损；减小滚子半径或增大基圆半径。",
-                f"pointed profile: the actual profile's smallest radius of curvature ρa = {_mm(rho_a)} "
-                f"is below {_mm(p.min_actual_curvature)} and will wear quickly; use a smaller roller "
-                "or a larger base circle."))
+                N_("pointed profile: the actual profile's smallest radius of curvature ρa = {rho} "
+                   "is below {least} and will wear quickly; use a smaller roller or a larger base "
+                   "circle."), rho=_mm(rho_a), least=_mm(p.min_actual_curvature)))
     if fol.kind == "flat":
         if rho_min <= 0:
             raise_r0 = _more(min_r0, r0)
-            fix_zh = f"基圆半径至少取 {_mm(min_r0)}" if raise_r0 else "增大基圆半径"
-            fix_en = f"use a base radius of at least {_mm(min_r0)}" if raise_r0 else "increase the base radius"
-            out.append(Finding(
+            fix = (Msg(N_("use a base radius of at least {r0}"), r0=_mm(min_r0)) if raise_r0
+                   else Msg(N_("increase the base radius")))
+            out.append(finding(
                 "concave_flat",
-                f"平底从动件要求凸轮廓线处处外凸，但最小曲率半径为 {_mm(rho_min)}（廓线内凹，运动失真）；{fix_zh}。",
-                f"a flat-faced follower needs a convex cam everywhere, but the smallest radius of "
-                f"curvature is {_mm(rho_min)} (concave: the motion is distorted); {fix_en}."))
+                N_("a flat-faced follower needs a convex cam everywhere, but the smallest radius "
+                   "of curvature is {rho} (concave: the motion is distorted); {fix}."),
+                rho=_mm(rho_min), fix=fix))
     return out
 
 
 def cam_stage() -> Stage:
     """The cam stage of any machine whose parameters carry ``.cam`` (brief.cam.CamParams)."""
-    return Stage("cam", "凸轮机构设计 / cam design", lambda r: design(r["params"].cam))
+    return Stage("cam", titles.pgettext("stage", "cam design"), lambda r: design(r["params"].cam))
 
 
 # --------------------------------------------------------------------------- eccentric disc
@@ -368,11 +359,12 @@ def failed_findings(checks, names: dict) -> list[Finding]:
     for c in checks:
         if c.passed is False and not c.requirement:
             zh, en = names.get(c.key, (c.key, c.key))
-            out.append(Finding("self_check",
-                               f"自检未通过：{zh}{_where(c, 'zh')} = {c.value:.4g}（限值 {c.limit:.4g}，SI 单位）；"
-                               "计算结果不可信，请报告此问题。",
-                               f"self-check failed: {en}{_where(c, 'en')} = {c.value:.4g} (limit "
-                               f"{c.limit:.4g}, SI units); the results cannot be trusted, please report it."))
+            out.append(finding(
+                "self_check",
+                N_("self-check failed: {name}{where} = {value:.4g} (limit {limit:.4g}, SI units); "
+                   "the results cannot be trusted, please report it."),
+                name=Pair(zh, en), where=Pair(_where(c, "zh"), _where(c, "en")), value=c.value,
+                limit=c.limit))
     return out
 
 
@@ -394,22 +386,21 @@ CLOSURE_LIMIT = 1e-9            # relative to the stroke
 DENSE_FACTOR = 20               # the reference pitch curve: 20 × the design grid
 
 
-CAM_CHECK_NAMES = {
-    "angle_sum": ("运动角之和", "sum of the programme's angles"),
-    "closure": ("位移闭合：s(360°) − s(0)", "closure: s(360°) − s(0)"),
-    "stroke": ("最大位移（应等于行程）", "largest displacement (must equal the stroke)"),
-    "velocity_fd": ("速度与位移中心差分之差（相对）", "velocity vs central difference of s (relative)"),
-    "acceleration_fd": ("加速度与速度中心差分之差（相对）", "acceleration vs central difference (relative)"),
-    "pressure_angle": ("压力角：由理论廓线切线几何求得与解析值之差",
-                       "pressure angle from the pitch-curve tangent vs analytic"),
-    "curvature_fd": ("曲率 1/ρ 与三点差分之差（相对）", "curvature 1/ρ vs three-point difference (relative)"),
-    "envelope": ("实际廓线各点到理论廓线的最短距离与 r_r 之差", "actual profile to pitch curve, distance − r_r"),
-    "interference": ("滚子侵入实际廓线的最大深度", "largest penetration of the roller into the profile"),
-    "gap": ("滚子与实际廓线的最大间隙（尖边处除外）", "largest gap between roller and profile (off the edges)"),
-    "offset_curve": ("未修正的等距曲线到理论廓线的距离与 r_r 之差", "plain offset curve to pitch curve, distance − r_r"),
-    "face_support": ("平底与廓线相切（廓线不越过平底）", "flat face tangent to the profile (profile never crosses it)"),
-    "corner": ("刚性冲击处的实际廓线", "actual profile at a velocity jump"),
-}
+CAM_CHECK_NAMES = CheckNames({
+    "angle_sum": N_("sum of the programme's angles"),
+    "closure": N_("closure: s(360°) − s(0)"),
+    "stroke": N_("largest displacement (must equal the stroke)"),
+    "velocity_fd": N_("velocity vs central difference of s (relative)"),
+    "acceleration_fd": N_("acceleration vs central difference (relative)"),
+    "pressure_angle": N_("pressure angle from the pitch-curve tangent vs analytic"),
+    "curvature_fd": N_("curvature 1/ρ vs three-point difference (relative)"),
+    "envelope": N_("actual profile to pitch curve, distance − r_r"),
+    "interference": N_("largest penetration of the roller into the profile"),
+    "gap": N_("largest gap between roller and profile (off the edges)"),
+    "offset_curve": N_("plain offset curve to pitch curve, distance − r_r"),
+    "face_support": N_("flat face tangent to the profile (profile never crosses it)"),
+    "corner": N_("actual profile at a velocity jump"),
+})
 
 
 @dataclass(frozen=True)
@@ -536,13 +527,12 @@ def verify_cam(c: CamResult) -> CamVerification:
         checks.append(SelfCheck("face_support", cut, DIST_LIMIT, requirement=True, detail={"delta": at}))
         if cut > DIST_LIMIT:
             # A flat face cannot envelope a velocity jump: the cam it would need crosses the face.
-            design_findings.append(Finding(
+            design_findings.append(finding(
                 "flat_face_cut",
-                f"平底从动件运动失真：δ = {np.degrees(at):.1f}° 处凸轮廓线越过平底 {cut * 1e3:.3f} mm，"
-                "平底不能按给定规律运动（速度突变处平底无法包络廓线）；改用无刚性冲击的运动规律或滚子从动件。",
-                f"the flat-faced follower's motion is distorted: at δ = {np.degrees(at):.1f}° the cam profile "
-                f"crosses the face by {cut * 1e3:.3f} mm, so the face cannot follow the programme (a flat face "
-                "cannot envelope a velocity jump); use a law without rigid impact or a roller follower."))
+                N_("the flat-faced follower's motion is distorted: at δ = {at:.1f}° the cam profile "
+                   "crosses the face by {cut:.3f} mm, so the face cannot follow the programme (a "
+                   "flat face cannot envelope a velocity jump); use a law without rigid impact or a "
+                   "roller follower."), at=np.degrees(at), cut=cut * 1e3))
     return CamVerification(tuple(checks), h, corners, stand_off,
                            tuple(failed_findings(checks, CAM_CHECK_NAMES) + design_findings))
 

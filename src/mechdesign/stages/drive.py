@@ -17,7 +17,8 @@ from ..core import drive as core
 from ..core.fields import q
 from ..data import load_csv, load_yaml
 from . import drive_elements as de, drive_strength as ds
-from .findings import Finding
+from ..i18n import N_, tr
+from .findings import CheckNames, Finding, Msg, Pair, en_zh, finding, zh_en
 
 
 @dataclass(frozen=True)
@@ -27,7 +28,7 @@ class StageResult:
     index: int = q("1", "stage number from the motor, 0-based (drive.stages[index] of the brief)")
     type: str = q("", "coupling | belt | chain | spur | helical | worm")
     kind: str = q("", "key into transmissions.yaml (open_spur for open gears)")
-    name_zh: str = q("", "name (中文)")
+    name_zh: str = q("", "name (Chinese)")
     name_en: str = q("", "name (English)")
     ratio_allocated: float = q("1", "what the allocation asked for (or the fixed ratio)")
     ratio: float = q("1", "the realised ratio i (whole teeth, standard pulleys)")
@@ -185,12 +186,11 @@ def design_drive(dp, machine_power: float, output_rpm: float, source: str,
     # A machine without working resistance takes (almost) no mean power: its torque only
     # swings about zero, the peak factor peak/mean is unbounded and nothing sizes the drive.
     if not (machine_power > 0 and np.isfinite(machine_power) and 0 < peak_factor < 1e6):
-        raise core.DriveDesignError(
-            f"the machine takes (almost) no mean power ({machine_power:.3g} W at its input shaft, "
-            f"peak torque {peak_factor:.3g} × the mean): without working resistance nothing sizes "
-            "the drive; give the machine a load, or leave the drive section out",
-            f"工作机的平均功率几乎为零（{machine_power:.3g} W，峰值转矩为平均值的 {peak_factor:.3g} 倍），"
-            "没有工作阻力，传动装置无从设计：应给出工作阻力，或删去 drive 一节")
+        raise core.DriveDesignError(*en_zh(
+            N_("the machine takes (almost) no mean power ({P:.3g} W at its input shaft, peak "
+               "torque {peak:.3g} × the mean): without working resistance nothing sizes the drive; "
+               "give the machine a load, or leave the drive section out"),
+            P=machine_power, peak=peak_factor))
     catalogue = motor_catalogue()
     stages = dp.stages
     worm_eff = {s.index: _WORM_EFF_BY_STARTS.get(s.z1 or 2, 0.8) for s in stages
@@ -229,29 +229,26 @@ def design_drive(dp, machine_power: float, output_rpm: float, source: str,
     error = (n_out - output_rpm) / output_rpm
     warnings = []
     if abs(error) > dp.speed_tolerance:
-        warnings.append(Finding(
+        warnings.append(finding(
             "speed_error",
-            f"工作机转速误差 {error * 100:+.2f}% 超出允许的 ±{dp.speed_tolerance * 100:g}%：调整齿数或带轮直径。",
-            f"the machine's speed error {error * 100:+.2f}% exceeds ±{dp.speed_tolerance * 100:g}%: "
-            "change the teeth or pulley diameters."))
+            N_("the machine's speed error {err:+.2f}% exceeds ±{tol:g}%: change the teeth or "
+               "pulley diameters."), err=error * 100, tol=dp.speed_tolerance * 100))
     for st, el in zip(results, elements):
         lo, hi = el.recommended
         if st.type != "coupling" and st.ratio > el.ratio_max:
-            warnings.append(Finding(
+            warnings.append(finding(
                 "stage_ratio",
-                f"第 {st.index + 1} 级{st.name_zh}传动比 {st.ratio:.3f} 超出其最大值 {el.ratio_max:g}："
-                "应减小该级传动比（增加级数或把传动比分给其他级）。",
-                f"stage {st.index + 1} ({st.name_en}) ratio {st.ratio:.3f} exceeds its maximum "
-                f"{el.ratio_max:g}: give it a smaller ratio (another stage, or more ratio to the others).",
-                field=f"drive.stages[{st.index}]"))
+                N_("stage {n} ({name}) ratio {i:.3f} exceeds its maximum {imax:g}: give it a "
+                   "smaller ratio (another stage, or more ratio to the others)."),
+                field=f"drive.stages[{st.index}]", n=st.index + 1,
+                name=Pair(st.name_zh, st.name_en), i=st.ratio, imax=el.ratio_max))
         elif st.type != "coupling" and st.ratio < lo:
-            warnings.append(Finding(
+            warnings.append(finding(
                 "stage_ratio",
-                f"第 {st.index + 1} 级{st.name_zh}传动比 {st.ratio:.3f} 低于其推荐范围 {lo:g}–{hi:g}："
-                "该级几乎不减速，可增大其传动比或省去该级。",
-                f"stage {st.index + 1} ({st.name_en}) ratio {st.ratio:.3f} is below its recommended "
-                f"range {lo:g}–{hi:g}: it hardly reduces the speed; give it a larger ratio or leave "
-                "the stage out.", field=f"drive.stages[{st.index}]"))
+                N_("stage {n} ({name}) ratio {i:.3f} is below its recommended range {lo:g}–{hi:g}: "
+                   "it hardly reduces the speed; give it a larger ratio or leave the stage out."),
+                field=f"drive.stages[{st.index}]", n=st.index + 1,
+                name=Pair(st.name_zh, st.name_en), i=st.ratio, lo=lo, hi=hi))
     warnings.extend(undercut_findings(results))
     warnings.extend(tooth_findings(results))
     return DriveResult(output_rpm, machine_power, source, eta, p_d, choice, tuple(results),
@@ -287,18 +284,17 @@ def undercut_findings(results) -> list[Finding]:
         here = f"drive.stages[{r.index}]"
         g = d.geometry
         if hasattr(g, "x_min1"):
-            for name, gd, x_min, key in (("小齿轮", g.g1, g.x_min1, "1"), ("大齿轮", g.g2, g.x_min2, "2")):
+            for gd, x_min, key in ((g.g1, g.x_min1, "1"), (g.g2, g.x_min2, "2")):
                 if gd.x < x_min - 1e-9:
-                    who_en = "pinion" if key == "1" else "wheel"
-                    out.append(Finding(
+                    out.append(finding(
                         "undercut",
-                        f"第 {r.index + 1} 级{r.name_zh}{name}（z{key} = {gd.z}）根切：z{key} < z_min = "
-                        f"{g.z_min:.1f} 且 x{key} = {gd.x:g} < x_min = {x_min:.3f}；应将 {here}.x{key} 取为 "
-                        f"≥ {x_min:.3f}（正变位）或把 {here}.z{key} 增加到 ≥ {math.ceil(g.z_min - 1e-9)}。",
-                        f"stage {r.index + 1} ({r.name_en}): the {who_en} (z{key} = {gd.z}) is undercut: "
-                        f"z{key} < z_min = {g.z_min:.1f} and x{key} = {gd.x:g} < x_min = {x_min:.3f}; set "
-                        f"{here}.x{key} ≥ {x_min:.3f} (a positive shift) or {here}.z{key} ≥ "
-                        f"{math.ceil(g.z_min - 1e-9)}.", field=here))
+                        N_("stage {n} ({name}): the {who} (z{key} = {z}) is undercut: z{key} < z_min "
+                           "= {z_min:.1f} and x{key} = {x:g} < x_min = {x_min:.3f}; set "
+                           "{here}.x{key} ≥ {x_min:.3f} (a positive shift) or {here}.z{key} ≥ "
+                           "{need}."), field=here, n=r.index + 1,
+                        name=Pair(r.name_zh, r.name_en), who=_gear(key), key=key, z=gd.z,
+                        z_min=g.z_min, x=gd.x, x_min=x_min, here=here,
+                        need=math.ceil(g.z_min - 1e-9)))
         elif hasattr(g, "beta"):
             z_min = 2.0 / math.sin(math.radians(20.0)) ** 2
             for key, z in (("1", r.z1), ("2", r.z2)):
@@ -307,13 +303,13 @@ def undercut_findings(results) -> list[Finding]:
                 zv = z / math.cos(g.beta) ** 3
                 if zv < z_min - 1e-9:
                     need = math.ceil(z_min * math.cos(g.beta) ** 3 - 1e-9)
-                    out.append(Finding(
+                    out.append(finding(
                         "undercut",
-                        f"第 {r.index + 1} 级{r.name_zh}：z{key} = {z} 的当量齿数 z_v = z/cos³β = {zv:.2f} "
-                        f"< z_min = {z_min:.1f}，齿轮根切；应把 {here}.z{key} 增加到 ≥ {need}，或增大螺旋角。",
-                        f"stage {r.index + 1} ({r.name_en}): z{key} = {z} has the equivalent tooth number "
-                        f"z_v = z/cos³β = {zv:.2f} < z_min = {z_min:.1f}, so the gear is undercut; set "
-                        f"{here}.z{key} ≥ {need} or use a larger helix angle.", field=here))
+                        N_("stage {n} ({name}): z{key} = {z} has the equivalent tooth number z_v = "
+                           "z/cos³β = {zv:.2f} < z_min = {z_min:.1f}, so the gear is undercut; set "
+                           "{here}.z{key} ≥ {need} or use a larger helix angle."), field=here,
+                        n=r.index + 1, name=Pair(r.name_zh, r.name_en), key=key, z=z, zv=zv,
+                        z_min=z_min, here=here, need=need))
     return out
 
 
@@ -333,32 +329,28 @@ def tooth_findings(results) -> list[Finding]:
         here = f"drive.stages[{r.index}]"
         g = d.geometry
         for key, gd in (("1", g.g1), ("2", g.g2)):
-            who_zh, who_en = ("小齿轮", "pinion") if key == "1" else ("大齿轮", "wheel")
-            head_zh = f"第 {r.index + 1} 级{r.name_zh}{who_zh}（z{key} = {gd.z}，x{key} = {gd.x:g}）"
-            head_en = f"stage {r.index + 1} ({r.name_en}): the {who_en} (z{key} = {gd.z}, x{key} = {gd.x:g})"
-            fix_zh = (f"应减小 {here}.x{key}" if gd.x > 0 else f"应增加 {here}.z{key}")
-            fix_en = (f"reduce {here}.x{key}" if gd.x > 0 else f"use more teeth ({here}.z{key})")
+            head = Msg(N_("stage {n} ({name}): the {who} (z{key} = {z}, x{key} = {x:g})"),
+                       n=r.index + 1, name=Pair(r.name_zh, r.name_en), who=_gear(key), key=key,
+                       z=gd.z, x=gd.x)
+            fix = (Msg(N_("reduce {here}.x{key}"), here=here, key=key) if gd.x > 0
+                   else Msg(N_("use more teeth ({here}.z{key})"), here=here, key=key))
             if gd.sa <= 0:
-                raise DriveDesignError(
-                    f"{here}.x{key} = {gd.x:g}: {head_en} has a tip thickness s_a = "
-                    f"{gd.sa * 1e3:.2f} mm ≤ 0: its flanks meet below the tip circle, the tooth cannot "
-                    f"be cut; {fix_en}",
-                    f"{here}.x{key} = {gd.x:g}：{head_zh}齿顶厚 s_a = {gd.sa * 1e3:.2f} mm ≤ 0："
-                    f"齿廓在齿顶圆内已相交，无法加工；{fix_zh}")
+                raise DriveDesignError(*en_zh(
+                    N_("{here}.x{key} = {x:g}: {head} has a tip thickness s_a = {sa:.2f} mm ≤ 0: its "
+                       "flanks meet below the tip circle, the tooth cannot be cut; {fix}"),
+                    here=here, key=key, x=gd.x, head=head, sa=gd.sa * 1e3, fix=fix))
             if gd.sa < MIN_TIP_THICKNESS * g.m:
-                out.append(Finding(
+                out.append(finding(
                     "pointed",
-                    f"{head_zh}齿顶厚 s_a = {gd.sa * 1e3:.3g} mm < 0.25m = {0.25 * g.m * 1e3:.2f} mm"
-                    f"（齿顶变尖）；{fix_zh}。",
-                    f"{head_en} has a tip thickness s_a = {gd.sa * 1e3:.3g} mm < 0.25 m = "
-                    f"{0.25 * g.m * 1e3:.2f} mm (pointed tooth); {fix_en}.", field=here))
+                    N_("{head} has a tip thickness s_a = {sa:.3g} mm < 0.25 m = {least:.2f} mm "
+                       "(pointed tooth); {fix}."), field=here, head=head, sa=gd.sa * 1e3,
+                    least=0.25 * g.m * 1e3, fix=fix))
             if gd.hf < 0:
-                out.append(Finding(
+                out.append(finding(
                     "dedendum",
-                    f"{head_zh}齿根高 h_f = (h_a* + c* − x)m = {gd.hf * 1e3:.2f} mm < 0：齿根圆在分度圆"
-                    f"之外；应减小 {here}.x{key}。",
-                    f"{head_en} has a negative dedendum h_f = (h_a* + c* − x)·m = {gd.hf * 1e3:.2f} mm: "
-                    f"its root circle lies outside the pitch circle; reduce {here}.x{key}.", field=here))
+                    N_("{head} has a negative dedendum h_f = (h_a* + c* − x)·m = {hf:.2f} mm: its "
+                       "root circle lies outside the pitch circle; reduce {here}.x{key}."),
+                    field=here, head=head, hf=gd.hf * 1e3, here=here, key=key))
     return out
 
 
@@ -367,14 +359,13 @@ def _strength_warnings(results, shaft_designs) -> tuple[Finding, ...]:
     for r in results:
         for c in r.design.checks if r.design else ():
             if not c.passed:
-                out.append(_failed(c, f"第 {r.index + 1} 级{r.name_zh}", f"stage {r.index + 1} ({r.name_en})",
-                                   stage=r.index))
+                out.append(_failed(c, _stage(r), stage=r.index))
     for s in shaft_designs:
         name = shaft_numeral(s.index)
         advice = {a[0]: a[1:] for a in s.advice}
         for c in s.checks:
             if not c.passed:
-                out.append(_failed(c, f"{name} 轴", f"shaft {name}", advice.get(c.name_en)))
+                out.append(_failed(c, Msg(N_("shaft {name}"), name=name), advice.get(c.name_en)))
     return tuple(out)
 
 
@@ -386,8 +377,19 @@ def shaft_numeral(index: int) -> str:
     return _NUMERALS[index] if index < len(_NUMERALS) else str(index)
 
 
-def _failed(c, where_zh: str, where_en: str, advice=None, stage: int | None = None) -> Finding:
-    """A failed check as a named finding; ``advice`` = (field, zh, en): the override that
+def _stage(r) -> Msg:
+    """"stage 2 (V belt)": a drive stage as findings and self-checks name it."""
+    return Msg(N_("stage {n} ({name})"), n=r.index + 1, name=Pair(r.name_zh, r.name_en))
+
+
+def _gear(key: str) -> Pair:
+    """The pinion (key "1") or the wheel of a gear stage, by name."""
+    return Pair(*(zh_en.pgettext("gear", "pinion") if key == "1" else zh_en.pgettext("gear", "wheel")))
+
+
+def _failed(c, where: Msg, advice=None, stage: int | None = None) -> Finding:
+    """A failed check of the drive stage or shaft ``where`` as a named finding; ``advice`` =
+    (field, zh, en): the override that
     fails and what to change; ``stage``: the drive stage whose check it is (belts, gear
     geometry and the worm's deflection name their own fix); else the generic advice."""
     from ..core.strength import COURSE_SCALE
@@ -398,18 +400,25 @@ def _failed(c, where_zh: str, where_en: str, advice=None, stage: int | None = No
     unit = "" if c.unit == "1" else f" {c.unit}"
     if advice is not None:
         field, zh, en = advice
-        return Finding("strength",
-                       f"{where_zh}：{c.name_zh}不合格（{v} {rel} {a}{unit}），由指定值 {field} 造成：{zh}。",
-                       f"{where_en}: {c.name_en} fails ({v} {rel} {a}{unit}) with the brief's {field}: {en}.",
-                       field=field)
-    fix_en, fix_zh = "enlarge it or use a better material", "加大尺寸或改用更好的材料"
+        return finding("strength",
+                       N_("{where}: {check} fails ({v} {rel} {a}{unit}) with the brief's {field}: "
+                          "{advice}."), field=field, where=where,
+                       check=Pair(c.name_zh, c.name_en), v=v, rel=rel, a=a, unit=unit,
+                       advice=Pair(zh, en))
+    fix = Msg(N_("enlarge it or use a better material"))
     extra = {}
     if stage is not None and c.key in de.FIXES:      # belts, gear geometry, worm deflection
         fix_en, fix_zh = (t.format(i=stage) for t in de.FIXES[c.key])
+        fix = Pair(fix_zh, fix_en)
         extra = {"field": f"drive.stages[{stage}]"}
-    return Finding("strength",
-                   f"{where_zh}：{c.name_zh}不合格（{v} {rel} {a}{unit}）：{fix_zh}。",
-                   f"{where_en}: {c.name_en} fails ({v} {rel} {a}{unit}): {fix_en}.", **extra)
+    return finding("strength", N_("{where}: {check} fails ({v} {rel} {a}{unit}): {fix}."),
+                   where=where, check=Pair(c.name_zh, c.name_en), v=v, rel=rel, a=a, unit=unit,
+                   fix=fix, **extra)
+
+
+def _zh_en(m: Msg) -> tuple[str, str]:
+    """(Chinese, English) of ``m``, as the self-checks' details hold them."""
+    return m.text(tr("zh")), m.text(tr("en"))
 
 
 def _sig4(x: float) -> str:
@@ -427,19 +436,19 @@ def _sig4(x: float) -> str:
 # ------------------------------------------------------------------------------------
 # Self-checks (计算校核)
 
-DRIVE_CHECK_NAMES = {
-    "shaft_speed": ("各轴转速 $n_{k+1} = n_k / i_k$（相对误差）", "shaft speeds $n_{k+1} = n_k / i_k$ (relative error)"),
-    "shaft_power": ("各轴功率 $P_{k+1} = P_k\\eta_k\\eta_b$（相对误差）", "shaft powers $P_{k+1} = P_k\\eta_k\\eta_b$ (relative error)"),
-    "shaft_torque": ("各轴转矩 T = 9549.3 P/n（相对误差）", "shaft torques T = 9549.3 P/n (relative error)"),
-    "power_balance": ("功率平衡 $P_{\\text{末}}\\eta_b\\eta_w = P_w$（相对误差）", "power balance $P_{last}\\eta_b\\eta_w = P_w$ (relative error)"),
-    "ratio_product": ("各级传动比之积 $\\prod i_k$ 与 $n_m / n_w'$（相对误差）", "product of the stage ratios $\\prod i_k$ vs $n_m / n_w'$ (relative error)"),
-    "stage_ratio": ("各级传动比与齿数比、带轮直径比（相对误差）", "stage ratios vs teeth and pulley ratios (relative error)"),
-    "speed_error": ("工作机转速误差 $(n_w' - n_w) / n_w$", "machine speed error $(n_w' - n_w) / n_w$"),
-    "motor_power": ("电动机额定功率裕度 $1 - P_d / P_{ed}$", "motor rating margin $1 - P_d / P_{ed}$"),
-    "margin": ("强度裕度 1 − 利用率（最小）", "strength margin 1 − utilisation (smallest)"),
-    "verdicts": ("强度结论与裕度不一致的项数", "strength verdicts that disagree with their margin"),
-    "reactions": ("支反力平衡 $\\Sigma F = 0$、$\\Sigma M_B = 0$（相对残差）", "bearing reactions $\\Sigma F = 0$, $\\Sigma M_B = 0$ (relative residual)"),
-}
+DRIVE_CHECK_NAMES = CheckNames({
+    "shaft_speed": N_("shaft speeds $n_{k+1} = n_k / i_k$ (relative error)"),
+    "shaft_power": N_("shaft powers $P_{k+1} = P_k\\eta_k\\eta_b$ (relative error)"),
+    "shaft_torque": N_("shaft torques T = 9549.3 P/n (relative error)"),
+    "power_balance": N_("power balance $P_{last}\\eta_b\\eta_w = P_w$ (relative error)"),
+    "ratio_product": N_("product of the stage ratios $\\prod i_k$ vs $n_m / n_w'$ (relative error)"),
+    "stage_ratio": N_("stage ratios vs teeth and pulley ratios (relative error)"),
+    "speed_error": N_("machine speed error $(n_w' - n_w) / n_w$"),
+    "motor_power": N_("motor rating margin $1 - P_d / P_{ed}$"),
+    "margin": N_("strength margin 1 − utilisation (smallest)"),
+    "verdicts": N_("strength verdicts that disagree with their margin"),
+    "reactions": N_("bearing reactions $\\Sigma F = 0$, $\\Sigma M_B = 0$ (relative residual)"),
+})
 
 DRIVE_REL_LIMIT = 1e-9
 
@@ -509,9 +518,9 @@ def verify_drive(d: DriveResult) -> DriveVerification:
     checks.append(SelfCheck("motor_power", 1.0 - d.power_required / d.motor.power, 0.0, sense="ge",
                             requirement=True, detail={"rated": d.motor.power, "required": d.power_required}))
     mismatches = 0
-    groups = [(f"第 {st.index + 1} 级{st.name_zh}", f"stage {st.index + 1} ({st.name_en})",
-               {"stage": st.index}, st.design.checks if st.design else ()) for st in d.stages]
-    groups += [(f"{s.index} 轴", f"shaft {s.index}", {"shaft": s.index}, s.checks)
+    groups = [(*_zh_en(_stage(st)), {"stage": st.index}, st.design.checks if st.design else ())
+              for st in d.stages]
+    groups += [(*_zh_en(Msg(N_("shaft {name}"), name=s.index)), {"shaft": s.index}, s.checks)
                for s in d.shaft_designs]
     for zh, en, which, cs in groups:
         if not cs:
@@ -525,7 +534,8 @@ def verify_drive(d: DriveResult) -> DriveVerification:
     checks.append(SelfCheck("verdicts", float(mismatches), 0.0))
     for s in d.shaft_designs:
         checks.append(SelfCheck("reactions", _statics_residual(s), DRIVE_REL_LIMIT,
-                                detail={"where_zh": f"{s.index} 轴", "where_en": f"shaft {s.index}",
+                                detail={**dict(zip(("where_zh", "where_en"),
+                                                   _zh_en(Msg(N_("shaft {name}"), name=s.index)))),
                                         "shaft": s.index}))
     return DriveVerification(tuple(checks), tuple(failed_findings(checks, DRIVE_CHECK_NAMES)))
 

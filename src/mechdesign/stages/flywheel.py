@@ -16,7 +16,8 @@ import numpy as np
 from ..core import flywheel as fw
 from ..core.fields import q
 from ..core.errors import DesignError
-from .findings import Finding
+from ..i18n import N_
+from .findings import Finding, en_zh, finding
 
 CAST_IRON_RIM_SPEED = 30.0   # [m/s] usual limit of a cast-iron rim's peripheral speed
 
@@ -91,13 +92,11 @@ def design_flywheel(spec: FlywheelSpec, phase: np.ndarray, balancing_torque: np.
             impossible_rim(rim, spec, inertia, speed, crank_rpm, gravity)
         warnings += rim_findings(rim, spec.rim.field)
     elif crank_rpm < SLOW_RPM or inertia > ABSURD_INERTIA:
-        warnings.append(Finding(
+        warnings.append(finding(
             "flywheel_absurd",
-            f"飞轮转动惯量 J_F = {inertia:.4g} kg·m²（曲柄转速 {crank_rpm:.4g} r/min）不合常理："
-            "J_F = 900·ΔW_max/(π²·n²·[δ]) 与 n² 成反比；请检查曲柄转速，或把飞轮装在转速更高的轴上。",
-            f"the flywheel J_F = {inertia:.4g} kg·m² (crank at {crank_rpm:.4g} rpm) is beyond any "
-            "machine of the course: J_F = 900·ΔW_max/(π²·n²·[δ]) grows as 1/n²; check the crank "
-            "speed, or put the flywheel on a faster shaft."))
+            N_("the flywheel J_F = {J:.4g} kg·m² (crank at {n:.4g} rpm) is beyond any machine of "
+               "the course: J_F = 900·ΔW_max/(π²·n²·[δ]) grows as 1/n²; check the crank speed, or "
+               "put the flywheel on a faster shaft."), J=inertia, n=crank_rpm))
     return Flywheel(
         shaft=spec.shaft, speed_ratio=float(spec.speed_ratio), shaft_speed_rpm=float(speed),
         mean_torque=cycle.driving_torque, shaft_torque=cycle.driving_torque / spec.speed_ratio,
@@ -126,42 +125,34 @@ def impossible_rim(rim: fw.RimFlywheel, spec: FlywheelSpec, inertia: float, spee
         return
     r = spec.rim
     d_min = smallest_rim_diameter(inertia, r.height_to_width, r.specific_weight, gravity)
-    raise FlywheelDesignError(
-        f"{r.field} = {r.diameter * 1e3:g}: the flywheel J_F = {inertia:.4g} kg·m² at "
-        f"{speed:.4g} rpm needs a rim of height H = {rim.height * 1e3:.4g} mm and width "
-        f"b = {rim.width * 1e3:.4g} mm, not smaller than its mean diameter D = "
-        f"{r.diameter * 1e3:g} mm: no rim of this diameter can carry it. Take D ≥ "
-        f"{d_min * 1e3:.4g} mm (then H ≤ D/2), put the flywheel on a faster shaft, or check the "
-        f"crank speed n = {crank_rpm:.4g} rpm (J_F = 900·ΔW_max/(π²·n²·[δ]) grows as 1/n²).",
-        f"{r.field} = {r.diameter * 1e3:g}：转速 {speed:.4g} r/min 下飞轮 J_F = {inertia:.4g} kg·m² "
-        f"需要轮缘高 H = {rim.height * 1e3:.4g} mm、宽 b = {rim.width * 1e3:.4g} mm，不小于平均直径 "
-        f"D = {r.diameter * 1e3:g} mm，该直径的轮缘无法承担：应取 D ≥ {d_min * 1e3:.4g} mm"
-        f"（此时 H ≤ D/2），或把飞轮装在转速更高的轴上，或检查曲柄转速 n = {crank_rpm:.4g} r/min"
-        "（J_F = 900·ΔW_max/(π²·n²·[δ]) 与 n² 成反比）。")
+    raise FlywheelDesignError(*en_zh(
+        N_("{field} = {D:g}: the flywheel J_F = {J:.4g} kg·m² at {speed:.4g} rpm needs a rim of "
+           "height H = {H:.4g} mm and width b = {b:.4g} mm, not smaller than its mean diameter "
+           "D = {D:g} mm: no rim of this diameter can carry it. Take D ≥ {d_min:.4g} mm (then "
+           "H ≤ D/2), put the flywheel on a faster shaft, or check the crank speed n = {n:.4g} "
+           "rpm (J_F = 900·ΔW_max/(π²·n²·[δ]) grows as 1/n²)."),
+        field=r.field, D=r.diameter * 1e3, J=inertia, speed=speed, H=rim.height * 1e3,
+        b=rim.width * 1e3, d_min=d_min * 1e3, n=crank_rpm))
 
 
 def rim_findings(rim: fw.RimFlywheel, field: str = "") -> list[Finding]:
     out = []
     if rim.rim_speed > CAST_IRON_RIM_SPEED:
-        out.append(Finding(
+        out.append(finding(
             "rim_speed",
-            f"飞轮轮缘圆周速度 {rim.rim_speed:.1f} m/s 超过铸铁飞轮的许用值约 30 m/s：减小轮缘直径或改用钢制飞轮。",
-            f"the flywheel rim speed {rim.rim_speed:.1f} m/s exceeds about 30 m/s allowed for cast "
-            "iron: reduce the rim diameter or use a steel wheel."))
+            N_("the flywheel rim speed {v:.1f} m/s exceeds about 30 m/s allowed for cast iron: "
+               "reduce the rim diameter or use a steel wheel."), v=rim.rim_speed))
     if rim.height >= rim.diameter:
-        out.append(Finding(
+        out.append(finding(
             "rim_proportion",
-            f"飞轮轮缘高度 H = {rim.height * 1e3:.1f} mm 不小于平均直径 D = {rim.diameter * 1e3:.1f} mm，"
-            "轮缘无法成形：增大轮缘平均直径 D，或把飞轮装在转速更高的轴上。",
-            f"the flywheel rim height H = {rim.height * 1e3:.1f} mm is not smaller than its mean "
-            f"diameter D = {rim.diameter * 1e3:.1f} mm, so the rim cannot be made: increase the "
-            "rim's mean diameter D or put the flywheel on a faster shaft."))
+            N_("the flywheel rim height H = {H:.1f} mm is not smaller than its mean diameter "
+               "D = {D:.1f} mm, so the rim cannot be made: increase the rim's mean diameter D or "
+               "put the flywheel on a faster shaft."), H=rim.height * 1e3, D=rim.diameter * 1e3))
     elif field and rim.height > rim.diameter / 2.0:
-        out.append(Finding(
+        out.append(finding(
             "rim_proportion",
-            f"飞轮轮缘高度 H = {rim.height * 1e3:.1f} mm 超过其平均半径 D/2 = {rim.diameter * 500:.1f} mm，"
-            f"已不是薄轮缘，m = 4J_F/D² 的估算偏差大：增大 {field} 或把飞轮装在转速更高的轴上。",
-            f"the flywheel rim height H = {rim.height * 1e3:.1f} mm exceeds its mean radius D/2 = "
-            f"{rim.diameter * 500:.1f} mm: it is no longer a thin rim and m = 4J_F/D² is a poor "
-            f"estimate; increase {field} or put the flywheel on a faster shaft.", field=field))
+            N_("the flywheel rim height H = {H:.1f} mm exceeds its mean radius D/2 = {R:.1f} mm: "
+               "it is no longer a thin rim and m = 4J_F/D² is a poor estimate; increase {field} or "
+               "put the flywheel on a faster shaft."), field=field, H=rim.height * 1e3,
+            R=rim.diameter * 500))
     return out

@@ -11,7 +11,9 @@ from dataclasses import dataclass
 from ..core import gears
 from ..core.fields import q
 from ..pipeline import Stage
-from .findings import Finding
+from ..i18n import N_
+from .findings import Finding, Msg, finding
+from . import titles
 
 MIN_CONTACT_RATIO = 1.2      # textbook: [ε] ≥ 1.1–1.4 for general machinery
 MIN_TIP_THICKNESS = 0.25     # × m: s_a ≥ (0.25–0.4) m
@@ -61,32 +63,26 @@ def gear_findings(g: gears.SpurPair, prefix: str = "gear_pair") -> tuple[Finding
     for name, gd, x_min in (("1", g.g1, g.x_min1), ("2", g.g2, g.x_min2)):
         if gd.x < x_min - 1e-9:
             need = math.ceil(g.z_min - 1e-9)
-            out.append(Finding(
+            out.append(finding(
                 "undercut",
-                f"齿轮 {name}（z = {gd.z}）根切：z < zₘᵢₙ = 2hₐ*/sin²α = {g.z_min:.1f} 且 x = {gd.x:g} "
-                f"< xₘᵢₙ = hₐ*(zₘᵢₙ − z)/zₘᵢₙ = {x_min:.3f}；应正变位 {prefix}.x{name} ≥ {x_min:.3f}，"
-                f"或把 {prefix}.z{name} 增加到 ≥ {need}。",
-                f"gear {name} (z = {gd.z}) is undercut: z < zₘᵢₙ = 2hₐ*/sin²α = {g.z_min:.1f} and "
-                f"x = {gd.x:g} < xₘᵢₙ = hₐ*(zₘᵢₙ − z)/zₘᵢₙ = {x_min:.3f}; use a positive shift "
-                f"{prefix}.x{name} ≥ {x_min:.3f} or {prefix}.z{name} ≥ {need}."))
+                N_("gear {name} (z = {z}) is undercut: z < zₘᵢₙ = 2hₐ*/sin²α = {z_min:.1f} and "
+                   "x = {x:g} < xₘᵢₙ = hₐ*(zₘᵢₙ − z)/zₘᵢₙ = {x_min:.3f}; use a positive shift "
+                   "{prefix}.x{name} ≥ {x_min:.3f} or {prefix}.z{name} ≥ {need}."),
+                name=name, z=gd.z, z_min=g.z_min, x=gd.x, x_min=x_min, prefix=prefix, need=need))
         if gd.sa < MIN_TIP_THICKNESS * g.m:
-            fix_zh = f"减小变位系数 {prefix}.x{name}" if gd.x > 0 else f"增加齿数 {prefix}.z{name}"
-            fix_en = (f"reduce its shift {prefix}.x{name}" if gd.x > 0
-                      else f"use more teeth ({prefix}.z{name})")
-            out.append(Finding(
+            fix = (Msg(N_("reduce its shift {prefix}.x{name}"), prefix=prefix, name=name) if gd.x > 0
+                   else Msg(N_("use more teeth ({prefix}.z{name})"), prefix=prefix, name=name))
+            out.append(finding(
                 "pointed",
-                f"齿轮 {name} 齿顶厚 s_a = {gd.sa * 1e3:.2f} mm < 0.25m（齿顶变尖）；{fix_zh}。",
-                f"gear {name} tip thickness s_a = {gd.sa * 1e3:.2f} mm < 0.25 m (pointed tooth); "
-                f"{fix_en}."))
+                N_("gear {name} tip thickness s_a = {sa:.2f} mm < 0.25 m (pointed tooth); {fix}."),
+                name=name, sa=gd.sa * 1e3, fix=fix))
     if g.contact_ratio < MIN_CONTACT_RATIO:
-        out.append(Finding(
+        out.append(finding(
             "contact_ratio",
-            f"重合度 ε = {g.contact_ratio:.3f} < {MIN_CONTACT_RATIO}：增加齿数或减小啮合角。",
-            f"contact ratio ε = {g.contact_ratio:.3f} < {MIN_CONTACT_RATIO}: use more teeth or a "
-            "smaller working pressure angle."))
+            N_("contact ratio ε = {eps:.3f} < {least}: use more teeth or a smaller working "
+               "pressure angle."), eps=g.contact_ratio, least=MIN_CONTACT_RATIO))
     if g.clearance < -1e-12:
-        out.append(Finding("clearance", "顶隙为负：齿顶与齿根干涉。",
-                           "negative clearance: the tips touch the other gear's root."))
+        out.append(finding("clearance", N_("negative clearance: the tips touch the other gear's root.")))
     return tuple(out)
 
 
@@ -96,7 +92,7 @@ def design_gear(gp) -> GearResult:
 
 
 def gear_stage() -> Stage:
-    return Stage("gear", "齿轮设计 / gear pair", lambda r: design_gear(r["params"].gear))
+    return Stage("gear", titles.pgettext("stage", "gear pair"), lambda r: design_gear(r["params"].gear))
 
 
 @dataclass(frozen=True)

@@ -9,7 +9,10 @@ import numpy as np
 
 from ..core.fields import q
 from ..core.synthesis import GuideBarDesign, guide_bar_quick_return
+from ..i18n import N_
 from ..pipeline import Stage
+from . import titles
+from .findings import en_zh
 
 
 @dataclass(frozen=True)
@@ -66,10 +69,9 @@ def motion(model, syn: Synthesis, p, rod: str, requests=None):
         else:
             field, value = f"linkage.rod_ratio_{rod}_O3B", p.rod_ratio
         rule = "(1 − cos(ψ/2))/2" if p.rod is None else "L_O3B(1 − cos(ψ/2))/2"
-        raise exc.with_hint(
-            f"(Brief field: {field} = {value:g} must be at least {rule} = {need:.6g}.)",
-            f"（任务书字段：{field} = {value:g}，须不小于 {rule} = {need:.6g}。）"
-        ) from None
+        raise exc.with_hint(*en_zh(
+            N_("(Brief field: {field} = {value:g} must be at least {rule} = {need:.6g}.)"),
+            field=field, value=value, rule=rule, need=need)) from None
 
 
 def optional_stages(p) -> list[Stage]:
@@ -137,4 +139,4 @@ def _drive(r: dict):
 
 
 def drive_stage() -> Stage:
-    return Stage("drive", "传动装置设计 / drive", _drive)
+    return Stage("drive", titles.pgettext("stage", "drive"), _drive)

@@ -26,12 +26,14 @@ from ..core.mechanism import RRR, Crank, Mechanism, Motion
 from ..core.errors import DesignError
 from ..core.extremes import brentq, grid_roots, refine_extreme
 from ..core.fields import q
-from .findings import Finding
+from ..i18n import N_, tr
+from .findings import Finding, Msg, Pair, en_zh, finding
 from .positions import Positions, textbook_positions, with_requested
 from ..pipeline import Stage
 from .flywheel import Flywheel, FlywheelSpec, design_flywheel
 from .graphical import GraphicalDocument, graphical_stage
 from .polygons import polygon_stage
+from . import titles
 
 TWO_PI = 2.0 * np.pi
 
@@ -348,10 +350,9 @@ def event_phases(model: LinkageModel, code: str, start: float, sense: float, spa
     kind, _, link = code.partition(":")
     links = model.mechanism.solve(np.array([start])).links
     if link not in links:
-        raise DesignError(
-            f"analysis.events: {code!r}: link {link!r} is not a moving link; links: "
-            f"{', '.join(links)}",
-            f"analysis.events：{code!r}：构件 {link!r} 不是活动构件；活动构件：{', '.join(links)}")
+        raise DesignError(*en_zh(
+            N_("analysis.events: {code!r}: link {link!r} is not a moving link; links: {links}"),
+            code=code, link=link, links=", ".join(links)))
     trig = np.cos if kind == "link_vertical" else np.sin
     return _roots(lambda p: float(trig(at(p).links[link].angle[0])), 0.0, TWO_PI)
 
@@ -368,10 +369,9 @@ def _requested(model: LinkageModel, req: Requests, start: float, sense: float, s
     for code in req.events:
         found = event_phases(model, code, start, sense, span, s0, ref)
         if not found:
-            raise DesignError(
-                f"analysis.events: {code!r}: the event ({event_name(code, 'en')}) never occurs "
-                "in this linkage; remove it",
-                f"analysis.events：{code!r}：该机构中不出现此位置（{event_name(code, 'zh')}），应删去")
+            raise DesignError(*en_zh(
+                N_("analysis.events: {code!r}: the event ({event}) never occurs in this linkage; "
+                   "remove it"), code=code, event=Pair(event_name(code, "zh"), event_name(code, "en"))))
         for i, phase in enumerate(found):
             extra.append((phase, None, code if i == 0 else f"{code}#{i + 1}"))
     return extra
@@ -438,9 +438,9 @@ def _named_points(requests: Requests | None, m: Motion) -> tuple:
     for name in requests.points:
         if name not in m.points:
             known = ", ".join(sorted(m.points))
-            raise DesignError(
-                f"analysis.points: {name!r} is not a point of the linkage; its points: {known}",
-                f"analysis.points：{name!r} 不是机构上的点；机构上的点：{known}")
+            raise DesignError(*en_zh(
+                N_("analysis.points: {name!r} is not a point of the linkage; its points: {known}"),
+                name=name, known=known))
     return requests.points
 
 
@@ -795,55 +795,48 @@ def quality_findings(model: LinkageModel, k: LinkageMotion) -> list[Finding]:
     found = []
     deg = 180.0 / np.pi
 
-    def extra(kind):
+    def extra(kind):        # the brief's fields to change, appended in parentheses
         zh, en = model.advice.get(kind, ("", ""))
-        return (f"（{zh}）" if zh else ""), (f" ({en})" if en else "")
+        return Pair(tr("zh")(N_(" ({advice})"), advice=zh) if zh else "",
+                    tr("en")(" ({advice})", advice=en) if en else "")
 
     if "time_ratio" in model.advice and k.time_ratio < 1.0 - 1e-9:
         # The working stroke is the faster one: the crank turns against the quick return.
         zh, en, where = model.advice["time_ratio"]
         theta = np.pi * (k.time_ratio - 1.0) / (k.time_ratio + 1.0) * deg
         work, back = k.working_span * deg, 360.0 - k.working_span * deg
-        found.append(Finding(
+        found.append(finding(
             "crank_sense_reversed",
-            f"行程速比系数 K = {k.time_ratio:.4f} < 1（极位夹角 θ = {theta:.2f}° < 0）：工作行程只占曲柄转角 "
-            f"{work:.2f}°，空回行程占 {back:.2f}°，曲柄转向与急回方向相反；{zh}",
-            f"time ratio K = {k.time_ratio:.4f} < 1 (extreme-position angle θ = {theta:.2f}° < 0): the "
-            f"working stroke takes {work:.2f}° of crank angle and the return {back:.2f}°, so the crank "
-            f"turns against the working stroke's sense (no quick return); {en}",
-            where))
+            N_("time ratio K = {K:.4f} < 1 (extreme-position angle θ = {theta:.2f}° < 0): the "
+               "working stroke takes {work:.2f}° of crank angle and the return {back:.2f}°, so the "
+               "crank turns against the working stroke's sense (no quick return); {advice}"),
+            field=where, K=k.time_ratio, theta=theta, work=work, back=back, advice=Pair(zh, en)))
     for qa in k.quality:
         if qa.kind == "pressure" and model.pressure_angle_limit is not None \
                 and qa.working_extreme > model.pressure_angle_limit + 1e-9:
-            zh, en = extra("pressure")
-            found.append(Finding(
+            found.append(finding(
                 "pressure_angle",
-                f"{qa.group}：工作行程最大压力角 {qa.working_extreme * deg:.2f}° 超过许用值 "
-                f"{model.pressure_angle_limit * deg:.1f}°；应加长连杆或调整导路位置{zh}",
-                f"{qa.group}: the largest pressure angle in the working stroke, "
-                f"{qa.working_extreme * deg:.2f}°, exceeds the allowed "
-                f"{model.pressure_angle_limit * deg:.1f}°; lengthen the rod or move the guide{en}"))
+                N_("{group}: the largest pressure angle in the working stroke, {alpha:.2f}°, "
+                   "exceeds the allowed {limit:.1f}°; lengthen the rod or move the guide{advice}"),
+                group=qa.group, alpha=qa.working_extreme * deg,
+                limit=model.pressure_angle_limit * deg, advice=extra("pressure")))
         if qa.kind == "transmission" and model.transmission_angle_min is not None \
                 and qa.extreme < model.transmission_angle_min - 1e-9:
-            zh, en = extra("transmission")
-            fix_zh, fix_en = "应调整杆长", "change the link lengths"
+            fix = Msg(N_("change the link lengths"))
             four = _four_bar_of(model, qa.group)
             if four is not None:
                 # γ at the two crank–frame collinear positions is balanced (γmin largest for
                 # these a, d) when b² + c² = a² + d²; a shorter crank raises both.
                 a, b, c, d = (x * 1e3 for x in four)
-                fix_zh = (f"应缩短曲柄（a = {a:.6g} mm），并使 b² + c² 接近 a² + d²"
-                          f"（现为 {b * b + c * c:.6g} 与 {a * a + d * d:.6g} mm²，相等时两个极限位置的"
-                          "传动角相同）")
-                fix_en = (f"shorten the crank (a = {a:.6g} mm) and bring b² + c² close to a² + d² "
-                          f"(now {b * b + c * c:.6g} and {a * a + d * d:.6g} mm²; when equal, the "
-                          "transmission angles at the two crank–frame collinear positions are the same)")
-            found.append(Finding(
+                fix = Msg(N_("shorten the crank (a = {a:.6g} mm) and bring b² + c² close to "
+                             "a² + d² (now {bc:.6g} and {ad:.6g} mm²; when equal, the transmission "
+                             "angles at the two crank–frame collinear positions are the same)"),
+                          a=a, bc=b * b + c * c, ad=a * a + d * d)
+            found.append(finding(
                 "transmission_angle",
-                f"{qa.group}：最小传动角 {qa.extreme * deg:.2f}° 小于许用值 "
-                f"{model.transmission_angle_min * deg:.1f}°；{fix_zh}{zh}",
-                f"{qa.group}: the minimum transmission angle {qa.extreme * deg:.2f}° is below "
-                f"the allowed {model.transmission_angle_min * deg:.1f}°; {fix_en}{en}"))
+                N_("{group}: the minimum transmission angle {gamma:.2f}° is below the allowed "
+                   "{limit:.1f}°; {fix}{advice}"), group=qa.group, gamma=qa.extreme * deg,
+                limit=model.transmission_angle_min * deg, fix=fix, advice=extra("transmission")))
     return found
 
 
@@ -854,13 +847,13 @@ def linkage_stages(model_key: str = "model", prefix: str = "linkage") -> list[St
     ``{prefix}``, ``{prefix}_raw``, ``{prefix}_forces``, ``{prefix}_flywheel``,
     ``{prefix}_verification`` and ``{prefix}_polygons`` (the analysis sheet's polygons)."""
     return [
-        Stage((prefix, f"{prefix}_raw"), "机构运动分析 / kinematics",
+        Stage((prefix, f"{prefix}_raw"), titles.pgettext("stage", "kinematics"),
               lambda r: motion(r[model_key], requests_of(r.get("brief")))),
-        Stage(f"{prefix}_forces", "动态静力分析 / kinetostatics",
+        Stage(f"{prefix}_forces", titles.pgettext("stage", "kinetostatics"),
               lambda r: forces(r[model_key], r[prefix], r[f"{prefix}_raw"])),
-        Stage(f"{prefix}_flywheel", "飞轮设计 / flywheel",
+        Stage(f"{prefix}_flywheel", titles.pgettext("stage", "flywheel"),
               lambda r: flywheel(r[model_key], r[prefix], r[f"{prefix}_forces"])),
-        Stage(f"{prefix}_verification", "校核 / verification",
+        Stage(f"{prefix}_verification", titles.pgettext("stage", "verification"),
               lambda r: verify(r[model_key], r[prefix], r[f"{prefix}_raw"],
                                r[f"{prefix}_forces"])),
         polygon_stage(model_key, prefix),
@@ -935,7 +928,7 @@ class LinkageDocument:
     peak_torque: float = q("N·m", "max |M_b| (exact: one-sided at the jumps, refined between samples)")
     flywheel: Flywheel | None = q("", "the flywheel (the one flywheel stage), if any")
     verification: LinkageVerification = q("", "self-checks")
-    graphical: GraphicalDocument | None = q("", "the graphical method (图解法) at the polygon "
+    graphical: GraphicalDocument | None = q("", "the graphical method at the polygon "
                                             "positions", default=None)
 
 

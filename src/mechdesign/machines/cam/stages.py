@@ -5,10 +5,11 @@ from dataclasses import dataclass
 from ...core.fields import q
 from ...pipeline import Stage
 from ...stages.cam import CamDocument, VerificationDocument, cam_document, cam_stage, verification_document, verify_cam
+from ...stages import titles
 
 
 CAM_STAGES = [cam_stage(),
-              Stage("cam_verification", "计算校核 / verification", lambda r: verify_cam(r["cam"]))]
+              Stage("cam_verification", titles.pgettext("stage: self-checks", "verification"), lambda r: verify_cam(r["cam"]))]
 
 
 CAM_UNITS = "SI: m, rad; derivatives per radian of cam angle; complex points as [x, y]"

@@ -40,7 +40,8 @@ from ...core.kinetostatics import Body, PointLoad, solve_forces
 from ...core.mechanism import RRP, RRR, Crank, LinkPoint, Mechanism
 from ...core.synthesis import extreme_angle
 from ...pipeline import Stage
-from ...stages.findings import Finding
+from ...i18n import N_
+from ...stages.findings import Finding, Pair, en_zh, finding, zh_en
 from ...stages.flywheel import Flywheel, FlywheelSpec, RimSpec, design_flywheel
 from ...core.cycle import CycleDocument
 from ...core.fields import q
@@ -49,6 +50,7 @@ from ...stages.linkage import (CycleIntegrals, LinkageDocument, LinkageModel, Ou
                                linkage_stages)
 from ...stages.cam import CamDocument
 from ...stages.drive import DriveDocument
+from ...stages import titles
 
 TWO_PI = 2.0 * np.pi
 DEG = 180.0 / np.pi
@@ -75,23 +77,19 @@ def toggle_swing(g: PressGeometry) -> float:
     lt, ld, eps, H = g.toggle_CB, g.toggle_BD, g.top_angle, g.stroke
     beta_max = _max_beta(lt, ld)
     if eps >= beta_max:
-        raise fourbar.SynthesisError(
-            f"toggle_angle_at_top_deg = {eps * DEG:g}° leaves no swing (the toggle lies flat at "
-            f"{beta_max * DEG:.3g}°): make it smaller than {beta_max * DEG:.3g}°",
-            f"toggle_angle_at_top_deg = {eps * DEG:g}° 使肘杆无法摆动（肘杆在 {beta_max * DEG:.3g}° "
-            f"处已躺平）：应小于 {beta_max * DEG:.3g}°")
+        raise fourbar.SynthesisError(*en_zh(
+            N_("toggle_angle_at_top_deg = {eps:g}° leaves no swing (the toggle lies flat at "
+               "{flat:.3g}°): make it smaller than {flat:.3g}°"), eps=eps * DEG, flat=beta_max * DEG))
     top = float(toggle_height(eps, lt, ld))
     h_max = top - float(toggle_height(beta_max, lt, ld))
     # the rocker must swing less than the crank-rocker allows; keep ψ below 120° in any case
     psi_cap = min(beta_max - eps, np.radians(120.0))
     h_cap = top - float(toggle_height(eps + psi_cap, lt, ld))
     if not H < min(h_max, h_cap):
-        raise fourbar.SynthesisError(
-            f"stroke_H_mm = {H * 1e3:g} cannot be reached: toggle links CB = {lt * 1e3:g} mm and "
-            f"BD = {ld * 1e3:g} mm give at most {min(h_max, h_cap) * 1e3:.4g} mm; lengthen CB or "
-            "reduce the stroke",
-            f"stroke_H_mm = {H * 1e3:g} 无法实现：肘杆 CB = {lt * 1e3:g} mm、BD = {ld * 1e3:g} mm "
-            f"最多只能得到 {min(h_max, h_cap) * 1e3:.4g} mm 的行程；应加长 CB 或减小行程")
+        raise fourbar.SynthesisError(*en_zh(
+            N_("stroke_H_mm = {H:g} cannot be reached: toggle links CB = {CB:g} mm and BD = {BD:g} "
+               "mm give at most {most:.4g} mm; lengthen CB or reduce the stroke"),
+            H=H * 1e3, CB=lt * 1e3, BD=ld * 1e3, most=min(h_max, h_cap) * 1e3))
     return float(brentq(lambda psi: top - float(toggle_height(eps + psi, lt, ld)) - H,
                         1e-12, psi_cap, xtol=1e-15))
 
@@ -145,11 +143,10 @@ def toggle_synthesis(g: PressGeometry) -> ToggleDesign:
         a, b, d = four.crank, four.coupler, four.frame
         theta, psi = fourbar.crank_rocker_extremes(four)
         if not eps + psi < _max_beta(lt, ld):
-            raise fourbar.SynthesisError(
-                f"dimensions.crank_O1A_mm = {a * 1e3:g}: the swing ψ = {psi * DEG:.4g}° of CB takes "
-                f"it beyond {_max_beta(lt, ld) * DEG:.4g}° from the guide at the bottom",
-                f"dimensions.crank_O1A_mm = {a * 1e3:g}：CB 摆角 ψ = {psi * DEG:.4g}°，下止点时偏离"
-                f"导路超过 {_max_beta(lt, ld) * DEG:.4g}°")
+            raise fourbar.SynthesisError(*en_zh(
+                N_("dimensions.crank_O1A_mm = {a:g}: the swing ψ = {psi:.4g}° of CB takes it beyond "
+                   "{beta:.4g}° from the guide at the bottom"),
+                a=a * 1e3, psi=psi * DEG, beta=_max_beta(lt, ld) * DEG))
     else:
         psi = toggle_swing(g)
         theta = float(extreme_angle(g.K))
@@ -165,12 +162,10 @@ def toggle_synthesis(g: PressGeometry) -> ToggleDesign:
     ok, kind = fourbar.grashof(four)
     if not (ok and kind == "crank-rocker"):
         en, zh = fourbar.grashof_sums(four)
-        raise fourbar.SynthesisError(
-            f"the crank cannot make a full turn (Grashof): the four-bar O1ABC comes out a {kind}, "
-            f"not a crank-rocker ({en}); change K (time_ratio_K) or the toggle lengths "
-            "(toggle_CB_mm), or give another frame",
-            f"曲柄不能整周转动（不满足曲柄存在条件 / Grashof）：四杆机构 O1ABC 成为{kind}而不是曲柄摇杆机构"
-            f"（{zh}）；应改变 K（time_ratio_K）或肘杆长度（toggle_CB_mm），或另给机架长度")
+        raise fourbar.SynthesisError(*en_zh(
+            N_("the crank cannot make a full turn (Grashof): the four-bar O1ABC comes out a {kind}, "
+               "not a crank-rocker ({sums}); change K (time_ratio_K) or the toggle lengths "
+               "(toggle_CB_mm), or give another frame"), kind=kind, sums=Pair(zh, en)))
     gmin, gmax = fourbar.transmission_angle_extremes(four)
     top, other = (c2, c1) if g.top_position == "extended" else (c1, c2)
     rot = np.exp(1j * (np.pi / 2 - np.angle(top)))
@@ -217,26 +212,23 @@ def build_press(d: ToggleDesign, p: DieCutterParams) -> LinkageModel:
             bodies.append(Body(link, mass, name, mass * length ** 2 / 12.0))
     H, t = g.stroke, p.pressing_travel
     cut = Resistance("6", "D", np.pi / 2, p.cutting_force, 0.0, (H - t, H))
-    names = {"2": ("曲柄", "crank"), "3": ("连杆 AB", "coupler AB"), "4": ("肘杆 CB", "toggle CB"),
-             "5": ("肘杆 BD", "toggle BD"), "6": ("下模板", "platen")}
+    names = {"2": zh_en.pgettext("link", "crank"), "3": zh_en.pgettext("link", "coupler AB"),
+             "4": zh_en.pgettext("link", "toggle CB"), "5": zh_en.pgettext("link", "toggle BD"),
+             "6": zh_en.pgettext("link", "platen")}
     return LinkageModel(
         mechanism=m, crank_omega=p.crank_omega, output=Output("point", "D", np.pi / 2, 1),
         bodies=tuple(bodies), resistances=(cut,), grid_points=p.grid_points,
         position_step=p.position_step, gravity=p.gravity, flywheel=None,
         pressure_angle_limit=p.pressure_angle_max, transmission_angle_min=p.transmission_angle_min,
         names=names, advice={
-            "pressure": ("任务书字段：加长 press.toggle_BD_mm，或减小 press.toggle_angle_at_top_deg",
-                         "brief fields: a longer press.toggle_BD_mm or a smaller "
-                         "press.toggle_angle_at_top_deg"),
-            "transmission": ("任务书字段：减小 press.time_ratio_K，加长 press.toggle_CB_mm（摆角更小），"
-                             "或去掉 press.frame_O1C_mm 以取传动角最大的机架",
-                             "brief fields: a smaller press.time_ratio_K, a longer press.toggle_CB_mm "
-                             "(a smaller swing), or no press.frame_O1C_mm (the frame with the "
-                             "largest transmission angle)") if g.given is None else
-                            ("任务书字段：修改 press.dimensions（曲柄 crank_O1A_mm、连杆 coupler_AB_mm、"
-                             "机架 frame_O1C_mm），或改按 stroke_H_mm、time_ratio_K 综合",
-                             "brief fields: other press.dimensions (crank_O1A_mm, coupler_AB_mm, "
-                             "frame_O1C_mm), or synthesise from stroke_H_mm and time_ratio_K instead")})
+            "pressure": zh_en.gettext("brief fields: a longer press.toggle_BD_mm or a smaller "
+                                      "press.toggle_angle_at_top_deg"),
+            "transmission": zh_en.gettext(
+                "brief fields: a smaller press.time_ratio_K, a longer press.toggle_CB_mm (a smaller "
+                "swing), or no press.frame_O1C_mm (the frame with the largest transmission angle)")
+            if g.given is None else zh_en.gettext(
+                "brief fields: other press.dimensions (crank_O1A_mm, coupler_AB_mm, frame_O1C_mm), "
+                "or synthesise from stroke_H_mm and time_ratio_K instead")})
 
 
 #: TogglePress fields a synthesis message may start with ("stroke_H_mm = 400 …").
@@ -494,8 +486,12 @@ def feed(amp: Amplification, p: DieCutterParams) -> Feed:
                 float(radius * jump.omega2), tuple(notes), intermittent_curves(g))
 
 
-_GRIPPER_LABELS = {"rise": ("张开", "opening"), "dwell_high": ("保持张开", "held open"),
-                   "return": ("闭合", "closing"), "dwell_low": ("夹紧", "closed")}
+def _gripper_labels() -> dict[str, tuple[str, str]]:
+    """The grippers' phases by cam state, (zh, en)."""
+    return {"rise": zh_en.pgettext("cycle phase", "opening"),
+            "dwell_high": zh_en.pgettext("cycle phase", "held open"),
+            "return": zh_en.pgettext("cycle phase", "closing"),
+            "dwell_low": zh_en.pgettext("cycle phase", "closed")}
 
 
 @dataclass(frozen=True)
@@ -511,37 +507,39 @@ class CycleResult:
 
 def platen_actuator(t: PlatenTiming) -> cy.Actuator:
     """The platen's phases from its simulated level crossings."""
-    return cy.make_actuator("platen", "下模板", "lower platen", t.clear_up, [
-        ("rise", t.press_up - t.clear_up, "上升", "rising"),
-        ("dwell_high", t.press_down - t.press_up, "模切", "die cutting"),
-        ("return", t.clear_down - t.press_down, "下降", "falling"),
-        ("dwell_low", t.clear_up + TWO_PI - t.clear_down, "让开", "clear")])
+    return cy.make_actuator("platen", *zh_en.pgettext("cycle", "lower platen"), t.clear_up, [
+        ("rise", t.press_up - t.clear_up, *zh_en.pgettext("cycle phase", "rising")),
+        ("dwell_high", t.press_down - t.press_up, *zh_en.pgettext("cycle phase", "die cutting")),
+        ("return", t.clear_down - t.press_down, *zh_en.pgettext("cycle phase", "falling")),
+        ("dwell_low", t.clear_up + TWO_PI - t.clear_down, *zh_en.pgettext("cycle phase", "clear"))])
 
 
 def gripper_actuator(programme, start: float) -> cy.Actuator:
-    act = cy.actuator_from_cam_programme("gripper", "夹纸爪", "grippers", programme, start)
-    return cy.make_actuator("gripper", "夹纸爪", "grippers", start,
-                            [(ph.state, ph.span) + _GRIPPER_LABELS.get(ph.state, ("", ""))
+    name = zh_en.pgettext("cycle", "grippers")
+    act = cy.actuator_from_cam_programme("gripper", *name, programme, start)
+    labels = _gripper_labels()
+    return cy.make_actuator("gripper", *name, start,
+                            [(ph.state, ph.span) + labels.get(ph.state, ("", ""))
                              for ph in act.phases])
 
 
 def chain_actuator(g) -> cy.Actuator:
-    return cy.make_actuator("chain", "链条送纸", "chain feed", g.motion_start,
-                            [("move", g.motion_angle, "送纸", "feed"),
-                             ("dwell", g.dwell_angle, "停歇", "dwell")])
+    return cy.make_actuator("chain", *zh_en.pgettext("cycle", "chain feed"), g.motion_start,
+                            [("move", g.motion_angle, *zh_en.pgettext("cycle phase", "feed")),
+                             ("dwell", g.dwell_angle, *zh_en.pgettext("cycle phase", "dwell"))])
 
 
 def timing_constraints(margin: float) -> list[cy.Constraint]:
     return [
         cy.Constraint("during", ("chain", "move"), ("platen", "dwell_low"), margin,
-                      "链条只在下模板让开（低于上止点不少于间隙 c）时送纸",
-                      "the chain moves only while the platen is clear of the die (at least c below its top)"),
+                      *zh_en.gettext("the chain moves only while the platen is clear of the die "
+                                     "(at least c below its top)")),
         cy.Constraint("during", ("platen", "dwell_high"), ("chain", "dwell"), margin,
-                      "模切时纸板与链条静止", "the sheet and the chain stand still while the die cuts"),
+                      *zh_en.gettext("the sheet and the chain stand still while the die cuts")),
         cy.Constraint("during", ("gripper", "rise"), ("chain", "dwell"), margin,
-                      "夹纸爪在链条停歇后才张开", "the grippers open only while the chain dwells"),
+                      *zh_en.gettext("the grippers open only while the chain dwells")),
         cy.Constraint("during", ("gripper", "return"), ("chain", "dwell"), margin,
-                      "夹纸爪在链条再次运动前闭合", "the grippers close before the chain moves again"),
+                      *zh_en.gettext("the grippers close before the chain moves again")),
     ]
 
 
@@ -562,13 +560,11 @@ def cycle(amp: Amplification, fd: Feed, cam, p: DieCutterParams) -> CycleResult:
     for c in checks:
         if not c.ok:
             con = c.constraint
-            warnings.append(Finding(
+            warnings.append(finding(
                 "timing",
-                f"运动循环不协调：{con.text_zh}（余量 {c.slack * DEG:.2f}°，要求 ≥ {con.margin * DEG:g}°）；"
-                "调整 timing 中的安装角或凸轮、不完全齿轮的运动角。",
-                f"timing conflict: {con.text_en} (slack {c.slack * DEG:.2f}°, needs ≥ "
-                f"{con.margin * DEG:g}°); change the placement in timing or the cam's or the "
-                "incomplete gear's motion angle."))
+                N_("timing conflict: {text} (slack {slack:.2f}°, needs ≥ {margin:g}°); change the "
+                   "placement in timing or the cam's or the incomplete gear's motion angle."),
+                text=Pair(con.text_zh, con.text_en), slack=c.slack * DEG, margin=con.margin * DEG))
     return CycleResult(diagram, checks, start, auto, tuple(warnings))
 
 
@@ -660,22 +656,22 @@ def stages(params: DieCutterParams) -> list[Stage]:
     press = [s for s in linkage_stages(model_key="press_model", prefix="press")
              if s.key != "press_flywheel"]
     return [
-        Stage(("toggle", "press_model"), "肘杆机构设计 / toggle press synthesis",
+        Stage(("toggle", "press_model"), titles.pgettext("stage", "toggle press synthesis"),
               lambda r: synthesis(r["params"], r.get("checked", {}).get("toggle"))),
         *press,
-        Stage("amplification", "增力特性 / force amplification",
+        Stage("amplification", titles.pgettext("stage", "force amplification"),
               lambda r: amplification(r["press_model"], r["toggle"], r["press"], r["press_raw"],
                                       r["press_forces"], r["params"])),
-        Stage("drive", "传动装置设计 / drive", _drive),
-        Stage(("press_flywheel", "peak_shafts"), "飞轮设计 / flywheel",
+        Stage("drive", titles.pgettext("stage", "drive"), _drive),
+        Stage(("press_flywheel", "peak_shafts"), titles.pgettext("stage", "flywheel"),
               lambda r: flywheel(r["press_model"], r["press"], r["press_forces"], r["drive"],
                                  r["params"])),
         cam_stage(),
-        Stage("feed", "不完全齿轮送纸 / incomplete-gear feed",
+        Stage("feed", titles.pgettext("stage", "incomplete-gear feed"),
               lambda r: feed(r["amplification"], r["params"])),
-        Stage("cycle", "运动循环图 / motion cycle diagram",
+        Stage("cycle", titles.pgettext("stage", "motion cycle diagram"),
               lambda r: cycle(r["amplification"], r["feed"], r["cam"], r["params"])),
-        Stage("verification", "校核 / verification", _verify),
+        Stage("verification", titles.pgettext("stage", "verification"), _verify),
     ]
 
 

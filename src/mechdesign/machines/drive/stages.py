@@ -6,17 +6,18 @@ from ...core.fields import q
 from ...pipeline import Stage
 from ...stages.cam import VerificationDocument
 from ...stages.drive import DriveDocument, design_drive, drive_document, verify_drive
+from ...stages import titles
 
 
 def drive_stage_standalone() -> Stage:
     def run(r):
         p = r["params"]
         return design_drive(p.drive, p.load.power, p.load.output_speed_rpm, p.load.how)
-    return Stage("drive", "传动装置设计 / drive", run)
+    return Stage("drive", titles.pgettext("stage", "drive"), run)
 
 
 DRIVE_STAGES = [drive_stage_standalone(),
-                Stage("drive_verification", "计算校核 / verification", lambda r: verify_drive(r["drive"]))]
+                Stage("drive_verification", titles.pgettext("stage: self-checks", "verification"), lambda r: verify_drive(r["drive"]))]
 
 
 DRIVE_UNITS = "SI: m, s, rad, N, N·m, W, Pa; speeds in rpm where named _rpm"
@@ -34,7 +35,7 @@ class DriveResults:
     machine: str = q("", "'drive'")
     units: str = q("", "reminder of the unit system")
     drive: DriveDocument = q("", "the drive")
-    verification: VerificationDocument | None = q("", "self-checks (计算校核), as the cam's verification document")
+    verification: VerificationDocument | None = q("", "self-checks, as the cam's verification document")
 
 
 def drive_results_document(r: dict) -> DriveResults:

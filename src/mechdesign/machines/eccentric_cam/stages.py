@@ -6,8 +6,10 @@ import numpy as np
 from ...core import cam as core
 from ...core.fields import q
 from ...pipeline import Stage
-from ...stages.findings import Finding
+from ...i18n import N_
+from ...stages.findings import CheckNames, Finding
 from ...stages.cam import GRID_POINTS, SelfCheck, VerificationDocument, failed_findings, verification_document
+from ...stages import titles
 
 
 @dataclass(frozen=True)
@@ -33,11 +35,11 @@ def analyse_disc(p) -> DiscResult:
     return DiscResult(p, grid, motions, tdelta, tables, queries, [])
 
 
-DISC_CHECK_NAMES = {
-    "disc_s": ("位移：作图法（导路与圆盘求交）与解析式之差", "displacement: line–disc intersection vs closed form"),
-    "disc_alpha": ("压力角：三心定理（速度瞬心）与解析式之差", "pressure angle: three-centre theorem vs closed form"),
-    "disc_stroke": ("行程（由位移曲线的极值求得）", "stroke from the extremes of the displacement"),
-}
+DISC_CHECK_NAMES = CheckNames({
+    "disc_s": N_("displacement: line–disc intersection vs closed form"),
+    "disc_alpha": N_("pressure angle: three-centre theorem vs closed form"),
+    "disc_stroke": N_("stroke from the extremes of the displacement"),
+})
 
 
 DISC_S_LIMIT = 1e-9             # [m]
@@ -119,9 +121,9 @@ def verify_disc(d: DiscResult) -> DiscVerification:
     return DiscVerification(tuple(checks), tuple(failed_findings(checks, DISC_CHECK_NAMES)))
 
 
-DISC_STAGES = [Stage("disc", "偏心圆盘凸轮分析 / eccentric disc analysis",
+DISC_STAGES = [Stage("disc", titles.pgettext("stage", "eccentric disc analysis"),
                      lambda r: analyse_disc(r["params"])),
-               Stage("disc_verification", "计算校核 / verification",
+               Stage("disc_verification", titles.pgettext("stage: self-checks", "verification"),
                      lambda r: verify_disc(r["disc"]))]
 
 

@@ -41,16 +41,22 @@ from ...core.mechanism import RRP, RRR, Crank, LinkPoint, Mechanism
 from ...core.synthesis import extreme_angle
 from ...pipeline import Stage
 from ...stages.drive import DriveDocument, design_drive, drive_document
-from ...stages.findings import Finding
+from ...i18n import N_
+from ...stages.findings import Finding, Pair, en_zh, finding, zh_en
 from ...core.extremes import brentq, fminbound
 from ...stages.linkage import LinkageDocument, LinkageModel, Output, Resistance, linkage_document, linkage_stages
+from ...stages import titles
 
 FRAME = "6"
 CRANK, COUPLER, ROCKER, ROD, SLIDER = "1", "2", "3", "4", "5"
 TWO_PI = 2.0 * np.pi
-LINK_NAMES = {CRANK: ("曲柄 O1A", "crank O1A"), COUPLER: ("连杆 AB", "coupler AB"),
-              ROCKER: ("摇杆 DBC", "rocker DBC"), ROD: ("连杆 CE", "link CE"),
-              SLIDER: ("推料滑块 E", "pusher slider E")}
+
+
+def link_names() -> dict[str, tuple[str, str]]:
+    """The links' names, (zh, en) by link."""
+    return {CRANK: zh_en.pgettext("link", "crank O1A"), COUPLER: zh_en.pgettext("link", "coupler AB"),
+            ROCKER: zh_en.pgettext("link", "rocker DBC"), ROD: zh_en.pgettext("link", "link CE"),
+            SLIDER: zh_en.pgettext("link", "pusher slider E")}
 
 # The seed's printed numbers (section 4): a, b, the chord B1B2 it used, its frame O1O2
 # and the rocker length 1150 mm its second equation uses.
@@ -271,42 +277,36 @@ def synthesize(pp: PusherParams) -> PusherSynthesis:
     if pp.given is not None:
         theta, swing = fb.crank_rocker_extremes(pp.given)
     if pp.given is None and not H < 2.0 * R:
-        raise fb.SynthesisError(
-            f"pusher.stroke_H_mm = {H * 1e3:g} mm needs a rocker DC longer than H/2: the chord of "
-            f"C's arc cannot exceed 2·DC = {2 * R * 1e3:g} mm (pusher.rocker_DC_mm)",
-            f"pusher.stroke_H_mm = {H * 1e3:g} mm 要求摇杆 DC 长于 H/2：C 点圆弧的弦长不能超过 "
-            f"2·DC = {2 * R * 1e3:g} mm（pusher.rocker_DC_mm）")
+        raise fb.SynthesisError(*en_zh(
+            N_("pusher.stroke_H_mm = {H:g} mm needs a rocker DC longer than H/2: the chord of C's "
+               "arc cannot exceed 2·DC = {chord:g} mm (pusher.rocker_DC_mm)"),
+            H=H * 1e3, chord=2 * R * 1e3))
     if pp.given is None:
         swing = 2.0 * np.arcsin(H / (2.0 * R))
         theta = float(extreme_angle(pp.time_ratio_K))
     sag = R * (1.0 - np.cos(swing / 2.0))
     off_max = L * np.sin(pp.pressure_angle_max) - sag / 2.0
     if off_max < 0.0:
-        raise fb.SynthesisError(
-            f"pusher.link_CE_mm = {L * 1e3:g} mm is too short: C's arc has a sagitta of "
-            f"{sag * 1e3:.4g} mm, so CE must be at least {sag / 2 / np.sin(pp.pressure_angle_max) * 1e3:.4g} mm "
-            f"for a pressure angle at E within {np.degrees(pp.pressure_angle_max):g}°",
-            f"pusher.link_CE_mm = {L * 1e3:g} mm 太短：C 点圆弧的弓高为 {sag * 1e3:.4g} mm，要使 E 点压力角"
-            f"不超过 {np.degrees(pp.pressure_angle_max):g}°，CE 至少须为 "
-            f"{sag / 2 / np.sin(pp.pressure_angle_max) * 1e3:.4g} mm")
+        raise fb.SynthesisError(*en_zh(
+            N_("pusher.link_CE_mm = {L:g} mm is too short: C's arc has a sagitta of {sag:.4g} mm, "
+               "so CE must be at least {need:.4g} mm for a pressure angle at E within {alpha:g}°"),
+            L=L * 1e3, sag=sag * 1e3, need=sag / 2 / np.sin(pp.pressure_angle_max) * 1e3,
+            alpha=np.degrees(pp.pressure_angle_max)))
     if abs(pp.guide_offset) > off_max:
-        raise fb.SynthesisError(
-            f"pusher.guide_offset_mm = {pp.guide_offset * 1e3:g} mm puts the pressure angle at E "
-            f"above {np.degrees(pp.pressure_angle_max):g}°: allowed |offset| ≤ {off_max * 1e3:.4g} mm "
-            f"(CE·sin[α] − f/2 with the sagitta f = {sag * 1e3:.4g} mm)",
-            f"pusher.guide_offset_mm = {pp.guide_offset * 1e3:g} mm 使 E 点压力角超过 "
-            f"{np.degrees(pp.pressure_angle_max):g}°：允许 |偏距| ≤ {off_max * 1e3:.4g} mm"
-            f"（CE·sin[α] − f/2，弓高 f = {sag * 1e3:.4g} mm）")
+        raise fb.SynthesisError(*en_zh(
+            N_("pusher.guide_offset_mm = {e:g} mm puts the pressure angle at E above {alpha:g}°: "
+               "allowed |offset| ≤ {off:.4g} mm (CE·sin[α] − f/2 with the sagitta f = {sag:.4g} mm)"),
+            e=pp.guide_offset * 1e3, alpha=np.degrees(pp.pressure_angle_max), off=off_max * 1e3,
+            sag=sag * 1e3))
     c = pp.rocker_ratio * R if pp.given is None else pp.given.rocker
     limit = (np.pi / 2 - pp.pressure_angle_max) if pp.limit_rocker else None
     circles = {s: _circle(theta, swing, c, s) for s in (+1, -1)}
     exact = None
     if pp.given is not None:
         if all(cons is None for cons in circles.values()):
-            raise fb.SynthesisError(
-                f"pusher.dimensions = {pp.given}: θ = {np.degrees(theta):.6g}°, ψ = "
-                f"{np.degrees(swing):.6g}° admit no θ-circle construction",
-                f"pusher.dimensions：θ = {np.degrees(theta):.6g}°、ψ = {np.degrees(swing):.6g}° 无法作 θ 圆")
+            raise fb.SynthesisError(*en_zh(
+                N_("pusher.dimensions = {given}: θ = {theta:.6g}°, ψ = {psi:.6g}° admit no θ-circle "
+                   "construction"), given=pp.given, theta=np.degrees(theta), psi=np.degrees(swing)))
         side, cons, exact = _place_given(pp.given, circles)
         p = cons.position_of(exact[0])
         criterion, active = "given", False
@@ -324,13 +324,13 @@ def synthesize(pp: PusherParams) -> PusherSynthesis:
                 lo, hi = fb.frame_range_theta(theta, swing, c, side=s)
                 ranges.append(f"{lo * 1e3:.5g} – {hi * 1e3:.5g} mm")
         if p is None:
-            raise fb.SynthesisError(
-                f"pusher.frame_O1D_mm = {pp.frame * 1e3:g} mm: no crank-rocker with θ = {np.degrees(theta):.4g}°, "
-                f"ψ = {np.degrees(swing):.4g}° and DB = {c * 1e3:.5g} mm has this frame; it must lie in "
-                f"{' or '.join(ranges)} (exclusive), or use auto",
-                f"pusher.frame_O1D_mm = {pp.frame * 1e3:g} mm：θ = {np.degrees(theta):.4g}°、"
-                f"ψ = {np.degrees(swing):.4g}°、DB = {c * 1e3:.5g} mm 的曲柄摇杆机构不可能有此机架长度；"
-                f"机架长度须在 {' 或 '.join(ranges)} 之内（不含端点），或用 auto")
+            sep_zh, sep_en = zh_en.pgettext("alternatives", " or ")
+            raise fb.SynthesisError(*en_zh(
+                N_("pusher.frame_O1D_mm = {frame:g} mm: no crank-rocker with θ = {theta:.4g}°, "
+                   "ψ = {psi:.4g}° and DB = {DB:.5g} mm has this frame; it must lie in {ranges} "
+                   "(exclusive), or use auto"), frame=pp.frame * 1e3, theta=np.degrees(theta),
+                psi=np.degrees(swing), DB=c * 1e3,
+                ranges=Pair(sep_zh.join(ranges), sep_en.join(ranges))))
         cons = circles[side]
         criterion, active = "frame", False
         g_free = _best_on_circle(cons, None)[1]
@@ -346,16 +346,13 @@ def synthesize(pp: PusherParams) -> PusherSynthesis:
             best_work = max(float(np.max(working_gamma(cons, cons.p_lo + (cons.p_hi - cons.p_lo)
                                                         * np.linspace(0.001, 0.999, 4001))))
                             for cons in circles.values() if cons is not None)
-            raise fb.SynthesisError(
-                f"pusher.pressure_angle_max_deg = {np.degrees(pp.pressure_angle_max):g}°: with K = "
-                f"{pp.time_ratio_K:g} (θ = {np.degrees(theta):.4g}°) and the swing ψ = {np.degrees(swing):.4g}° "
-                f"the four-bar's pressure angle at B in the working stroke cannot be below "
-                f"{90 - np.degrees(best_work):.4g}°; raise the limit or set "
-                "pusher.limit_rocker_pressure_angle: false",
-                f"pusher.pressure_angle_max_deg = {np.degrees(pp.pressure_angle_max):g}°：K = "
-                f"{pp.time_ratio_K:g}（θ = {np.degrees(theta):.4g}°）、摆角 ψ = {np.degrees(swing):.4g}° 时，"
-                f"四杆机构工作行程中 B 点的压力角不可能低于 {90 - np.degrees(best_work):.4g}°；"
-                "应提高许用值，或设 pusher.limit_rocker_pressure_angle: false")
+            raise fb.SynthesisError(*en_zh(
+                N_("pusher.pressure_angle_max_deg = {alpha:g}°: with K = {K:g} (θ = {theta:.4g}°) and "
+                   "the swing ψ = {psi:.4g}° the four-bar's pressure angle at B in the working stroke "
+                   "cannot be below {least:.4g}°; raise the limit or set "
+                   "pusher.limit_rocker_pressure_angle: false"),
+                alpha=np.degrees(pp.pressure_angle_max), K=pp.time_ratio_K, theta=np.degrees(theta),
+                psi=np.degrees(swing), least=90 - np.degrees(best_work)))
         side = max(found, key=lambda s: found[s][1])
         p, _, active, _ = found[side]
         cons = circles[side]
@@ -412,13 +409,12 @@ def synthesize(pp: PusherParams) -> PusherSynthesis:
     warnings = []
     if criterion == "max_gamma" and g_min < pp.transmission_angle_min - 1e-12:
         # The linkage check reports the shortfall itself; this says it cannot be helped here.
-        warnings.append(Finding(
+        warnings.append(finding(
             "transmission_angle_best",
-            f"最小传动角 {np.degrees(g_min):.2f}° 已是 K = {pp.time_ratio_K:g}、摆角 ψ = "
-            f"{np.degrees(swing):.3f}° 下所能达到的最大值：要提高它须减小 K 或增大摆角（增大 H/DC）",
-            f"the minimum transmission angle {np.degrees(g_min):.2f}° is already the largest "
-            f"possible for K = {pp.time_ratio_K:g} and the swing ψ = {np.degrees(swing):.3f}°: raising it "
-            "needs a smaller K or a larger swing (a larger H/DC)"))
+            N_("the minimum transmission angle {gamma:.2f}° is already the largest possible for "
+               "K = {K:g} and the swing ψ = {psi:.3f}°: raising it needs a smaller K or a larger "
+               "swing (a larger H/DC)"), gamma=np.degrees(g_min), K=pp.time_ratio_K,
+            psi=np.degrees(swing)))
     return PusherSynthesis(
         stroke=H, time_ratio=pp.time_ratio_K, theta=theta, swing=float(swing), rocker_DC=R, link_CE=L,
         rocker_DB=c, crank=a, coupler=b, frame=d, O1=o1, B1=B1, B2=B2, C1=C1, C2=C2, E1=E1, E2=E2,
@@ -458,14 +454,12 @@ def build_model(syn: PusherSynthesis, p: FurnaceParams) -> LinkageModel:
         resistances=(Resistance(SLIDER, "E", guide, pp.working_force, pp.return_force),),
         grid_points=p.grid_points, position_step=p.position_step, gravity=p.gravity,
         flywheel=None, pressure_angle_limit=pp.pressure_angle_max,
-        transmission_angle_min=pp.transmission_angle_min, names=dict(LINK_NAMES), advice={
-            "pressure": ("任务书字段：加长 pusher.link_CE_mm，或使 pusher.guide_offset_mm 接近 0",
-                         "brief fields: a longer pusher.link_CE_mm, or pusher.guide_offset_mm "
-                         "closer to 0"),
-            "transmission": ("任务书字段：减小 pusher.time_ratio_K，或增大摆角（pusher.stroke_H_mm / "
-                             "pusher.rocker_DC_mm），pusher.frame_O1D_mm 取 auto",
-                             "brief fields: a smaller pusher.time_ratio_K or a larger swing "
-                             "(pusher.stroke_H_mm / pusher.rocker_DC_mm), pusher.frame_O1D_mm: auto")})
+        transmission_angle_min=pp.transmission_angle_min, names=link_names(), advice={
+            "pressure": zh_en.gettext("brief fields: a longer pusher.link_CE_mm, or "
+                                      "pusher.guide_offset_mm closer to 0"),
+            "transmission": zh_en.gettext("brief fields: a smaller pusher.time_ratio_K or a larger "
+                                          "swing (pusher.stroke_H_mm / pusher.rocker_DC_mm), "
+                                          "pusher.frame_O1D_mm: auto")})
 
 
 def checks(p: FurnaceParams, keep: dict | None = None) -> list:
@@ -532,16 +526,15 @@ def check(p: FurnaceParams, syn: PusherSynthesis, k, f, v) -> PusherCheck:
     hand = (pp.working_force + pp.return_force) * pp.stroke * pp.crank_speed_rpm / 60.0
     warnings = []
     if abs(v.stroke - pp.stroke) > 1e-6 * pp.stroke or abs(v.time_ratio - pp.time_ratio_K) > 1e-6:
-        warnings.append(Finding(
-            "spec", f"仿真行程 {v.stroke * 1e3:.4f} mm、K = {v.time_ratio:.5f} 与要求不符",
-            f"the simulated stroke {v.stroke * 1e3:.4f} mm and K = {v.time_ratio:.5f} miss the specification"))
+        warnings.append(finding(
+            "spec", N_("the simulated stroke {H:.4f} mm and K = {K:.5f} miss the specification"),
+            H=v.stroke * 1e3, K=v.time_ratio))
     if pp.limit_rocker and np.pi / 2 - rrr.working_extreme > pp.pressure_angle_max + 1e-6:
-        warnings.append(Finding(
+        warnings.append(finding(
             "rocker_pressure_angle",
-            f"仿真：工作行程中 B 点压力角 {90 - np.degrees(rrr.working_extreme):.2f}° 超过 "
-            f"{np.degrees(pp.pressure_angle_max):g}°",
-            f"simulation: the pressure angle at B in the working stroke, "
-            f"{90 - np.degrees(rrr.working_extreme):.2f}°, exceeds {np.degrees(pp.pressure_angle_max):g}°"))
+            N_("simulation: the pressure angle at B in the working stroke, {alpha:.2f}°, exceeds "
+               "{limit:g}°"), alpha=90 - np.degrees(rrr.working_extreme),
+            limit=np.degrees(pp.pressure_angle_max)))
     return PusherCheck(
         stroke=v.stroke, stroke_error=v.stroke - pp.stroke, time_ratio=v.time_ratio,
         alpha_E_work=rrp.working_extreme, gamma_min=rrr.extreme, gamma_work=rrr.working_extreme,
@@ -567,13 +560,13 @@ def _drive(r: dict):
 
 
 def stages(params: FurnaceParams) -> list[Stage]:
-    out = [Stage(("synthesis", "model"), "执行机构设计 / six-bar synthesis", synthesis_stage)]
+    out = [Stage(("synthesis", "model"), titles.pgettext("stage", "six-bar synthesis"), synthesis_stage)]
     out += linkage_stages(model_key="model", prefix="linkage")
-    out.append(Stage("pusher_check", "设计要求校核 / specification check",
+    out.append(Stage("pusher_check", titles.pgettext("stage", "specification check"),
                      lambda r: check(r["params"], r["synthesis"], r["linkage"], r["linkage_forces"],
                                      r["linkage_verification"])))
     if params.drive is not None:
-        out.append(Stage("drive", "传动装置设计 / drive", _drive))
+        out.append(Stage("drive", titles.pgettext("stage", "drive"), _drive))
     return out
 
 

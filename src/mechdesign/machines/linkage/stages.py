@@ -5,7 +5,9 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from ...core.fields import q
+from ...i18n import N_
 from ...pipeline import Stage
+from ...stages.findings import en_zh, zh_en
 from ...stages.linkage import (LinkageDocument, linkage_document, linkage_stages, motion,
                                requests_of)
 
@@ -22,14 +24,12 @@ def linkage_params(brief):
     now = brief.linkage.crank.rotation
     other = "ccw" if now == "cw" else "cw"
     return replace(model, advice={
-        "pressure": ("任务书字段：linkage.groups[…].length_mm、guide_point_mm",
-                     "brief fields: linkage.groups[…].length_mm, guide_point_mm"),
-        "transmission": ("任务书字段：linkage.crank.length_mm、linkage.groups[…].lengths_mm",
-                         "brief fields: linkage.crank.length_mm, linkage.groups[…].lengths_mm"),
-        "time_ratio": (f"应把 linkage.crank.rotation 改为 {other}（现为 {now}），"
-                       "或改变 linkage.output.working",
-                       f"change linkage.crank.rotation to {other} (now {now}) or "
-                       "linkage.output.working", "linkage.crank.rotation")})
+        "pressure": zh_en.gettext("brief fields: linkage.groups[…].length_mm, guide_point_mm"),
+        "transmission": zh_en.gettext(
+            "brief fields: linkage.crank.length_mm, linkage.groups[…].lengths_mm"),
+        "time_ratio": (*zh_en.gettext("change linkage.crank.rotation to {other} (now {now}) or "
+                                      "linkage.output.working", other=other, now=now),
+                       "linkage.crank.rotation")})
 
 
 def brief_fields(section, group: str, code: str, prefix: str = "linkage") -> tuple[str, str]:
@@ -49,7 +49,7 @@ def brief_fields(section, group: str, code: str, prefix: str = "linkage") -> tup
             fields = {"RRR": [f"{here}.lengths_mm"], "RRP": [f"{here}.length_mm", f"{here}.guide_point_mm"],
                       "RPR": [f"{here}.offset_mm"]}.get(g.type, [here])
         names = ", ".join(fields)
-        return f"(Brief fields: {names}.)", f"（任务书字段：{names}。）"
+        return en_zh(N_("(Brief fields: {names}.)"), names=names)
     return "", ""
 
 

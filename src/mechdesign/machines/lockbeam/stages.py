@@ -31,11 +31,13 @@ from ...core.gears import SpurPair, spur_pair
 from ...core.mechanism import RPR, RRP, RRR, Crank, LinkPoint, Mechanism
 from ...pipeline import Stage
 from ...stages.cam import cam_document, cam_stage, design as design_cam
-from ...stages.findings import Finding
+from ...i18n import N_, tr
+from ...stages.findings import Msg, Pair, finding, zh_en
 from ...core.cycle import CycleDocument
 from ...core.fields import q
 from ...stages.linkage import LinkageDocument, closure_residual, linkage_document, linkage_stages
 from ...stages.cam import CamDocument
+from ...stages import titles
 
 TWO_PI = 2.0 * np.pi
 DEG = 180.0 / np.pi
@@ -96,21 +98,20 @@ def transmission(p: LockbeamParams) -> Transmission:
         stages.append(TrainStage("gear", z1, z2, z2 / z1, r, pair, n, n / float(r)))
         n = n / float(r)
         if z1 < pair.z_min - 1e-12:
-            warnings.append(Finding(
-                "undercut", f"齿轮 z1 = {z1} 少于不根切最少齿数 {pair.z_min:.1f}，标准齿轮会根切；应增加齿数或正变位",
-                f"the gear with z1 = {z1} teeth is below the least tooth number without undercut "
-                f"({pair.z_min:.1f}): a standard gear is undercut; add teeth or use a positive shift"))
+            warnings.append(finding(
+                "undercut", N_("the gear with z1 = {z1} teeth is below the least tooth number "
+                               "without undercut ({z_min:.1f}): a standard gear is undercut; add "
+                               "teeth or use a positive shift"), z1=z1, z_min=pair.z_min))
     exact = Fraction(1)
     for s in stages:
         exact *= s.ratio_exact
     out = p.motor_rpm / float(exact)
     slip = p.motor_rpm * (1.0 - t.slip) / float(exact)
     if abs(out - p.rate) > 1e-9 * p.rate:
-        warnings.append(Finding(
-            "ratio", f"传动比 {float(exact):.4f} 使主轴转速为 {out:.3f} r/min，而生产率要求 {p.rate:g} r/min"
-                     f"（需要传动比 {p.motor_rpm / p.rate:.4f}）",
-            f"the train's ratio {float(exact):.4f} turns the main shaft at {out:.3f} rpm, but the "
-            f"production rate needs {p.rate:g} rpm (a ratio of {p.motor_rpm / p.rate:.4f})"))
+        warnings.append(finding(
+            "ratio", N_("the train's ratio {i:.4f} turns the main shaft at {n:.3f} rpm, but the "
+                        "production rate needs {rate:g} rpm (a ratio of {need:.4f})"),
+            i=float(exact), n=out, rate=p.rate, need=p.motor_rpm / p.rate))
     shafts = []
     power = t.power
     speed = p.motor_rpm
@@ -166,10 +167,16 @@ def synthesise_bending(bp: BendingParams) -> BendingSynthesis:
             zh_of[sense] = exc.text("zh")
     valid = [c for c in cands if c[1] is not None]
     if not valid:
-        way = {"same": "同向", "opposite": "反向"}
-        raise SynthesisError("; ".join(f"output turning the {c[0]} way: {c[3]}" for c in cands),
-                             "；".join(f"输出摇杆{way.get(c[0], c[0])}转动时：{zh_of.get(c[0], c[3])}"
-                                      for c in cands))
+        way = {"same": zh_en.pgettext("turning", "same")[0],
+               "opposite": zh_en.pgettext("turning", "opposite")[0]}
+        parts = [Msg(N_("output turning the {way} way: {reason}"),
+                     way=Pair(way.get(c[0], c[0]), c[0]), reason=Pair(zh_of.get(c[0], c[3]), c[3]))
+                 for c in cands]
+        texts = []
+        for lang in ("en", "zh"):
+            _ = tr(lang)
+            texts.append(_.pgettext("list", "; ").join(m.text(_) for m in parts))
+        raise SynthesisError(*texts)
     best = max(valid, key=lambda c: c[2])
     return BendingSynthesis(best[1], best[2], best[0], tuple(cands))
 
@@ -389,11 +396,11 @@ def bending(p: LockbeamParams, bcam, syn: BendingSynthesis | None = None) -> Ben
     warnings = []
     g_min = float(gamma[i_min])
     if g_min < bp.gamma_allowed - 1e-12:
-        warnings.append(Finding(
+        warnings.append(finding(
             "transmission_angle",
-            f"扳弯四杆机构最小传动角 {g_min * DEG:.2f}° 小于许用值 {bp.gamma_allowed * DEG:.0f}°；应改变起始位置或杆长",
-            f"the bending four-bar's minimum transmission angle {g_min * DEG:.2f}° is below the "
-            f"allowed {bp.gamma_allowed * DEG:.0f}°; change the start position or the lengths"))
+            N_("the bending four-bar's minimum transmission angle {gamma:.2f}° is below the allowed "
+               "{limit:.0f}°; change the start position or the lengths"),
+            gamma=g_min * DEG, limit=bp.gamma_allowed * DEG))
     seed = None if bp.seed is None else seed_check(ds, bp)
     peaks = tuple(None if d_ is None else rs.sweep(d_).ratio_peak
                   for _, d_, _, _ in syn.candidates)
@@ -543,8 +550,10 @@ def _phase_error(act: cy.Actuator, phi: np.ndarray, s: np.ndarray, ds: np.ndarra
 def _requirement(c: cy.Constraint, lang: str) -> str:
     if c.text(lang):
         return c.text(lang)
-    kind = {"before": ("在…之前", "before"), "during": ("在…之内", "during")}[c.kind]
-    return f"{c.a} {kind[0] if lang == 'zh' else kind[1]} {c.b}"
+    _ = tr(lang)
+    kind = {"before": _.pgettext("timing requirement", "before"),
+            "during": _.pgettext("timing requirement", "during")}[c.kind]
+    return f"{c.a} {kind} {c.b}"
 
 
 def cycle(p: LockbeamParams, r: dict) -> CycleResult:
@@ -589,25 +598,23 @@ def cycle(p: LockbeamParams, r: dict) -> CycleResult:
     warnings = []
     for chk in checks:
         if not chk.ok:
-            warnings.append(Finding(
-                "cycle", f"运动循环图不满足协调要求：{_requirement(chk.constraint, 'zh')}"
-                         f"（差 {-chk.slack * DEG:.2f}°）",
-                f"the motion cycle diagram misses a timing requirement: "
-                f"{_requirement(chk.constraint, 'en')} (short by {-chk.slack * DEG:.2f}°)"))
+            warnings.append(finding(
+                "cycle", N_("the motion cycle diagram misses a timing requirement: {req} (short by "
+                            "{short:.2f}°)"),
+                req=Pair(_requirement(chk.constraint, "zh"), _requirement(chk.constraint, "en")),
+                short=-chk.slack * DEG))
     span_sim = k.working_span
     if abs(rise.span - span_sim) > np.radians(0.5):
-        warnings.append(Finding(
+        warnings.append(finding(
             "feed_timing",
-            f"循环图中送料推程 {rise.span * DEG:.2f}° 与送料机构实际工作行程 {span_sim * DEG:.2f}°"
-            f"（K = {k.time_ratio:.4f}）不符；应按机构修改循环图",
-            f"the cycle diagram's feed stroke {rise.span * DEG:.2f}° differs from the feed "
-            f"linkage's working stroke {span_sim * DEG:.2f}° (K = {k.time_ratio:.4f}); correct the diagram"))
+            N_("the cycle diagram's feed stroke {cyc:.2f}° differs from the feed linkage's working "
+               "stroke {sim:.2f}° (K = {K:.4f}); correct the diagram"),
+            cyc=rise.span * DEG, sim=span_sim * DEG, K=k.time_ratio))
     if np.isfinite(lift_bending) and lift_bending < pin.stroke * (1 - 1e-9):
-        warnings.append(Finding(
+        warnings.append(finding(
             "pin_not_up",
-            f"扳弯轮转动时定位销升程最低只有 {lift_bending * 1e3:.3f} mm（应为 {pin.stroke * 1e3:.3f} mm）",
-            f"while the bending wheel turns the pin is only {lift_bending * 1e3:.3f} mm up "
-            f"(it should be fully up, {pin.stroke * 1e3:.3f} mm)"))
+            N_("while the bending wheel turns the pin is only {lift:.3f} mm up (it should be fully "
+               "up, {stroke:.3f} mm)"), lift=lift_bending * 1e3, stroke=pin.stroke * 1e3))
     return CycleResult(
         diagram=diagram, checks=checks, shaft_angle=phi, feed_s=feed_s, pin_lift=pm.s,
         wheel_angle=wheel, cam_timing_error=errors, cam_disagreement=disagree,
@@ -631,10 +638,9 @@ def pin_check(p: LockbeamParams) -> PinCheck:
     h = p.cam.programme.stroke
     warnings = []
     if not h > need:
-        warnings.append(Finding(
-            "pin_lift", f"定位销升程 {h * 1e3:.2f} mm 不大于槽深 (d1 − d2)/2 = {need * 1e3:.2f} mm，插不进锁梁槽",
-            f"the pin's lift {h * 1e3:.2f} mm does not exceed the groove depth (d1 − d2)/2 = "
-            f"{need * 1e3:.2f} mm: it cannot enter the groove"))
+        warnings.append(finding(
+            "pin_lift", N_("the pin's lift {h:.2f} mm does not exceed the groove depth (d1 − d2)/2 "
+                           "= {need:.2f} mm: it cannot enter the groove"), h=h * 1e3, need=need * 1e3))
     return PinCheck(float(h), float(need), warnings)
 
 
@@ -652,18 +658,18 @@ def _reuse(stage: Stage, key: str) -> Stage:
 def stages(params: LockbeamParams) -> list[Stage]:
     feed_kinematics, *feed_rest = linkage_stages(model_key="feed_model", prefix="feed")
     return [
-        Stage("transmission", "传动系统设计 / transmission", lambda r: transmission(r["params"])),
+        Stage("transmission", titles.pgettext("stage", "transmission"), lambda r: transmission(r["params"])),
         cam_stage(),
-        Stage("pin_check", "定位销升程校核 / pin lift", lambda r: pin_check(r["params"])),
-        Stage("bending_cam", "扳弯凸轮设计 / bending cam",
+        Stage("pin_check", titles.pgettext("stage", "pin lift"), lambda r: pin_check(r["params"])),
+        Stage("bending_cam", titles.pgettext("stage", "bending cam"),
               lambda r: design_cam(r["params"].bending_cam)),
-        Stage("bending", "扳弯机构设计 / bending linkage",
+        Stage("bending", titles.pgettext("stage", "bending linkage"),
               lambda r: bending(r["params"], r["bending_cam"],
                                 r.get("checked", {}).get("bending_synthesis"))),
-        Stage("feed_model", "送料机构 / feed linkage", lambda r: r["params"].feed),
+        Stage("feed_model", titles.pgettext("stage", "feed linkage"), lambda r: r["params"].feed),
         _reuse(feed_kinematics, "feed_motion"), *feed_rest,
-        Stage("feed_table", "送料机构位置表 / feed table", lambda r: feed_table(r["params"].feed)),
-        Stage("cycle", "运动循环图 / motion cycle", lambda r: cycle(r["params"], r)),
+        Stage("feed_table", titles.pgettext("stage", "feed table"), lambda r: feed_table(r["params"].feed)),
+        Stage("cycle", titles.pgettext("stage", "motion cycle"), lambda r: cycle(r["params"], r)),
     ]
 
 

@@ -22,6 +22,9 @@ from ...stages.drive import DriveDocument, drive_document
 from ...stages.flywheel import Flywheel, FlywheelSpec, RimSpec
 from ...stages.gear import GearDocument
 from .brief import PressParams
+from ...i18n import N_
+from ...stages import titles
+from ...stages.findings import en_zh, zh_en
 
 FRAME = "6"
 DOWN = -np.pi / 2
@@ -79,31 +82,24 @@ def problems(p: PressParams, s: PressSynthesis) -> list[tuple[str, float, str, s
     a, b, c, d = s.crank, s.coupler, s.rocker_CD, s.frame
     mm = 1e3
     if a <= 1e-9 * max(b, c, d):
-        out.append(("linkage.pivot_y_mm", p.y * mm,
-                    f"A (x1 = {p.x1 * mm:g}, y = {p.y * mm:g} mm) is equally far from C′ and C″ "
-                    "(on the horizontal through D): the crank length (AC″ − AC′)/2 is zero; put A "
-                    "above or below D",
-                    f"A（x1 = {p.x1 * mm:g}, y = {p.y * mm:g} mm）到 C′、C″ 的距离相等（在过 D 的"
-                    "水平线上）：曲柄长 (AC″ − AC′)/2 为零；应使 A 高于或低于 D"))
+        out.append(("linkage.pivot_y_mm", p.y * mm, *en_zh(
+            N_("A (x1 = {x1:g}, y = {y:g} mm) is equally far from C′ and C″ (on the horizontal "
+               "through D): the crank length (AC″ − AC′)/2 is zero; put A above or below D"),
+            x1=p.x1 * mm, y=p.y * mm)))
     elif not (a < min(b, c, d) and a + max(b, c, d) <= sum((b, c, d)) - max(b, c, d) + 1e-12):
-        out.append(("linkage.pivot_x1_mm", p.x1 * mm,
-                    f"with A at x1 = {p.x1 * mm:g}, y = {p.y * mm:g} mm the four-bar ABCD "
-                    f"(a = {a * mm:.4g}, b = {b * mm:.4g}, c = {c * mm:.4g}, d = {d * mm:.4g} mm) "
-                    "is no crank-rocker: the crank must be the shortest link and a + l_max ≤ the "
-                    "sum of the other two (Grashof); move A (x1, y)",
-                    f"曲柄转动中心 A（x1 = {p.x1 * mm:g}, y = {p.y * mm:g} mm）所得四杆机构 ABCD"
-                    f"（a = {a * mm:.4g}, b = {b * mm:.4g}, c = {c * mm:.4g}, d = {d * mm:.4g} mm）"
-                    "不是曲柄摇杆机构：曲柄须最短且满足杆长条件（Grashof）；应调整 A 的位置"))
+        out.append(("linkage.pivot_x1_mm", p.x1 * mm, *en_zh(
+            N_("with A at x1 = {x1:g}, y = {y:g} mm the four-bar ABCD (a = {a:.4g}, b = {b:.4g}, "
+               "c = {c:.4g}, d = {d:.4g} mm) is no crank-rocker: the crank must be the shortest "
+               "link and a + l_max ≤ the sum of the other two (Grashof); move A (x1, y)"),
+            x1=p.x1 * mm, y=p.y * mm, a=a * mm, b=b * mm, c=c * mm, d=d * mm)))
     reach = max(abs(s.rocker * np.sin(p.psi_upper) - p.x2), abs(s.rocker - p.x2))
     if reach >= s.rod:
-        out.append(("linkage.ratio_EF_DE", p.ratio_EF_DE,
-                    f"the rod EF = {s.rod * mm:.4g} mm cannot reach the guide x2 = {p.x2 * mm:g} mm "
-                    f"from E over the rocker's swing (needs more than {reach * mm:.4g} mm): raise "
-                    f"EF/DE above {reach / s.rocker:.4g} or move the guide towards "
-                    f"{s.sagitta_guide * mm:.4g} mm (linkage.guide_x2_mm)",
-                    f"连杆 EF = {s.rod * mm:.4g} mm 在摇杆摆动范围内够不到导路 x2 = {p.x2 * mm:g} mm"
-                    f"（需大于 {reach * mm:.4g} mm）：应使 EF/DE 大于 {reach / s.rocker:.4g}，"
-                    f"或将导路移向 {s.sagitta_guide * mm:.4g} mm（linkage.guide_x2_mm）"))
+        out.append(("linkage.ratio_EF_DE", p.ratio_EF_DE, *en_zh(
+            N_("the rod EF = {rod:.4g} mm cannot reach the guide x2 = {x2:g} mm from E over the "
+               "rocker's swing (needs more than {reach:.4g} mm): raise EF/DE above {ratio:.4g} or "
+               "move the guide towards {sagitta:.4g} mm (linkage.guide_x2_mm)"),
+            rod=s.rod * mm, x2=p.x2 * mm, reach=reach * mm, ratio=reach / s.rocker,
+            sagitta=s.sagitta_guide * mm)))
     return out
 
 
@@ -173,13 +169,13 @@ def model(s: PressSynthesis, p: PressParams) -> lk.LinkageModel:
                               RimSpec(p.rim_diameter, p.rim_height_to_width, p.specific_weight,
                                      "flywheel.rim_diameter_mm")),
         pressure_angle_limit=p.pressure_angle_max, transmission_angle_min=p.transmission_angle_min,
-        advice={"pressure": (f"任务书字段 {fields}", f"brief fields {fields}"),
-                "transmission": (f"任务书字段 {pivots}", f"brief fields {pivots}")},
-        names={"1": ("曲柄 AB", "crank AB"), "2": ("连杆 BC", "coupler BC"),
-               "3": ("摇杆 DE", "rocker DE"), "4": ("连杆 EF", "rod EF"),
-               "5": ("滑块（冲头）", "ram")},
-        group_labels={"coupler–rocker (RRR)": ("连杆–摇杆组 (RRR)", "coupler–rocker (RRR)"),
-                      "rod–ram (RRP)": ("连杆–滑块组 (RRP)", "rod–ram (RRP)")})
+        advice={"pressure": zh_en.gettext("brief fields {fields}", fields=fields),
+                "transmission": zh_en.gettext("brief fields {fields}", fields=pivots)},
+        names={"1": zh_en.pgettext("link", "crank AB"), "2": zh_en.pgettext("link", "coupler BC"),
+               "3": zh_en.pgettext("link", "rocker DE"), "4": zh_en.pgettext("link", "rod EF"),
+               "5": zh_en.pgettext("link: press", "ram")},
+        group_labels={"coupler–rocker (RRR)": zh_en.pgettext("link", "coupler–rocker (RRR)"),
+                      "rod–ram (RRP)": zh_en.pgettext("link", "rod–ram (RRP)")})
 
 
 def _synthesis(r: dict):
@@ -189,7 +185,7 @@ def _synthesis(r: dict):
 
 
 def stages(p: PressParams) -> list[Stage]:
-    return [Stage(("synthesis", "model"), "连杆机构设计 / linkage synthesis", _synthesis),
+    return [Stage(("synthesis", "model"), titles.pgettext("stage", "linkage synthesis"), _synthesis),
             *lk.linkage_stages(model_key="model", prefix="linkage"),
             *guide_bar.optional_stages(p)]
 

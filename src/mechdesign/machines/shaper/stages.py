@@ -29,6 +29,8 @@ from ...stages.drive import DriveDocument, drive_document
 from ...stages.gear import GearDocument, gear_document
 from ...stages.positions import Positions
 from ...core.fields import q
+from ...stages import titles
+from ...stages.findings import zh_en
 
 FRAME = "7"
 
@@ -131,10 +133,11 @@ def model(syn: Synthesis, p: ShaperParams) -> lk.LinkageModel:
                               RimSpec(p.rim_diameter, p.rim_height_to_width, p.specific_weight,
                                      "flywheel.rim_diameter_mm")),
         special_crank_angles=(np.pi / 2, 3 * np.pi / 2),
-        names={"2": ("曲柄 O2A", "crank O2A"), "3": ("滑块 A", "slider A"),
-               "4": ("导杆 O3B", "guide bar O3B"), "5": ("连杆 BF", "rod BF"), "6": ("刨头", "ram")},
-        group_labels={"guide bar (RPR)": ("导杆组 (RPR)", "guide bar (RPR)"),
-                      "ram (RRP)": ("刨头组 (RRP)", "ram (RRP)")})
+        names={"2": zh_en.pgettext("link", "crank O2A"), "3": zh_en.pgettext("link", "slider A"),
+               "4": zh_en.pgettext("link", "guide bar O3B"), "5": zh_en.pgettext("link", "rod BF"),
+               "6": zh_en.pgettext("link: shaper", "ram")},
+        group_labels={"guide bar (RPR)": zh_en.pgettext("link", "guide bar (RPR)"),
+                      "ram (RRP)": zh_en.pgettext("link: shaper", "ram (RRP)")})
 
 
 def motion(m: lk.LinkageModel, syn: Synthesis, p: ShaperParams, requests=None):
@@ -232,7 +235,7 @@ def _synthesis_stage(r: dict):
 # shaper's views of their results (kinematics, forces, verification).
 _ENGINE = lk.linkage_stages(model_key="model", prefix="linkage")
 STAGES = [
-    Stage(("synthesis", "model"), "导杆机构设计 / linkage synthesis", _synthesis_stage),
+    Stage(("synthesis", "model"), titles.pgettext("stage: guide bar", "linkage synthesis"), _synthesis_stage),
     Stage(("linkage", "linkage_raw", "kinematics"), _ENGINE[0].title, _motion_stage),
     Stage(("linkage_forces", "forces"), _ENGINE[1].title, _forces_stage),
     _ENGINE[2],                                              # the one flywheel stage
@@ -302,7 +305,7 @@ class ShaperResults:
     cam: CamDocument | None = q("", "the cam on the crank shaft, when the brief has one")
     gear: GearDocument | None = q("", "the gear pair z1/z2, when the brief gives its module")
     drive: DriveDocument | None = q("", "the drive, when the brief has one")
-    graphical: lk.GraphicalDocument | None = q("", "the graphical method (图解法) at the polygon "
+    graphical: lk.GraphicalDocument | None = q("", "the graphical method at the polygon "
                                                "positions", default=None)
 
 

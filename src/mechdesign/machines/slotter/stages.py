@@ -24,6 +24,8 @@ from ...stages.guide_bar import Synthesis, synthesize
 from .brief import SlotterParams
 from ...stages.cam import CamDocument
 from ...stages.gear import GearDocument
+from ...stages import titles
+from ...stages.findings import zh_en
 
 FRAME = "7"
 DOWN = -np.pi / 2
@@ -70,11 +72,11 @@ def model(syn: Synthesis, p: SlotterParams) -> lk.LinkageModel:
                               RimSpec(p.rim_diameter, p.rim_height_to_width, p.specific_weight,
                                      "flywheel.rim_diameter_mm")),
         special_crank_angles=(0.0, np.pi),   # the crank level with O2O3: the bar at its mid-swing
-        names={"2": ("曲柄 O2A", "crank O2A"), "3": ("滑块 A", "slider A"),
-               "4": ("导杆 O3B", "guide bar O3B"), "5": ("连杆 BC", "rod BC"),
-               "6": ("插刀滑枕", "ram")},
-        group_labels={"guide bar (RPR)": ("导杆组 (RPR)", "guide bar (RPR)"),
-                      "ram (RRP)": ("滑枕组 (RRP)", "ram (RRP)")})
+        names={"2": zh_en.pgettext("link", "crank O2A"), "3": zh_en.pgettext("link", "slider A"),
+               "4": zh_en.pgettext("link", "guide bar O3B"), "5": zh_en.pgettext("link", "rod BC"),
+               "6": zh_en.pgettext("link: slotter", "ram")},
+        group_labels={"guide bar (RPR)": zh_en.pgettext("link", "guide bar (RPR)"),
+                      "ram (RRP)": zh_en.pgettext("link: slotter", "ram (RRP)")})
 
 
 def _synthesis(r: dict):
@@ -89,7 +91,7 @@ def _motion(r: dict):
 
 def stages(p: SlotterParams) -> list[Stage]:
     engine = lk.linkage_stages(model_key="model", prefix="linkage")
-    out = [Stage(("synthesis", "model"), "导杆机构设计 / linkage synthesis", _synthesis),
+    out = [Stage(("synthesis", "model"), titles.pgettext("stage: guide bar", "linkage synthesis"), _synthesis),
            Stage(engine[0].key, engine[0].title, _motion), *engine[1:]]
     return out + guide_bar.optional_stages(p)
 
