@@ -201,13 +201,15 @@ def chinese_of(text: str, exc: BaseException | None = None) -> str | None:
     while exc is not None and seen < 8:
         if isinstance(exc, DesignError) and exc.en and exc.en in text:
             zh = exc.zh
-            if zh:
+            if zh and zh != exc.en:
                 return text.replace(exc.en, zh)
         exc = exc.__cause__ or exc.__context__
         seen += 1
     for en in reversed(_RECENT):
         if en in text:
-            return text.replace(en, _RECENT[en].text("zh"))
+            zh = _RECENT[en].text("zh")
+            if zh != en:            # a message the catalogue does not translate quotes nothing
+                return text.replace(en, zh)
     return None
 
 
