@@ -155,6 +155,8 @@ class DesignError(ValueError):
     of raise sites outside the core still works (``zh`` None: English in every language)."""
 
     def __init__(self, msg, zh: str | None = None, /, **fields):
+        if zh is None and isinstance(msg, str) and "zh" in fields and "{zh" not in msg:
+            zh = fields.pop("zh")          # the two-language form written with a keyword
         self.message = message(msg, zh, **fields)
         en = self.message.text("en")
         super().__init__(en)
