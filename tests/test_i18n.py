@@ -111,15 +111,7 @@ NOT_YET_CONVERTED = {
     "brief/loader.py",
     "cli.py",
     "core/belts.py",
-    "core/cam.py",
     "core/chains.py",
-    "core/cycle.py",
-    "core/drive.py",
-    "core/fourbar.py",
-    "core/intermittent.py",
-    "core/mechanism.py",
-    "core/motion_laws.py",
-    "core/rocker_synthesis.py",
     "core/strength.py",
     "data/catalogues.py",
     "machines/cam/__init__.py",
@@ -193,6 +185,55 @@ def test_no_chinese_literal_outside_the_modules_not_yet_converted():
     assert not offenders, ("Chinese text in the code: put it in locale/zh.po "
                            "(_ = tr(lang); _(\"English\")):\n" +
                            "\n".join(f"{k}: {v}" for k, v in offenders.items()))
+
+
+#: The only core modules that may still hold Chinese: the handbook checks, converted by
+#: another part of issue 22 (each leaves NOT_YET_CONVERTED when it is converted).
+CORE_BEING_CONVERTED = {"core/belts.py", "core/chains.py", "core/strength.py"}
+
+
+def test_the_core_returns_codes_and_numbers_never_prose():
+    """Issue 22: the computational core holds no Chinese (its messages are English msgids
+    with fields, translated where they are shown), but for the modules still listed."""
+    listed = {m for m in NOT_YET_CONVERTED if m.startswith("core/")}
+    assert listed <= CORE_BEING_CONVERTED, sorted(listed - CORE_BEING_CONVERTED)
+    found = {p.relative_to(SRC).as_posix(): chinese_literals(p)[:3]
+             for p in sorted((SRC / "core").glob("*.py"))}
+    found = {k: v for k, v in found.items() if v and k not in listed}
+    assert not found, found
+
+
+def test_a_design_error_is_a_msgid_with_fields_translated_where_shown(monkeypatch):
+    import pickle
+
+    from mechdesign.core.errors import DesignError, Join, Msg, chinese_of, pgettext
+    from mechdesign.core.mechanism import AssemblyError
+
+    zh = {(None, "a crank of {a} mm is too short{why}"): "曲柄 {a} mm 太短{why}",
+          (None, " (at least {n})"): "（至少 {n}）", ("separator", "; or "): "；或",
+          (None, "{message} {hint}"): "{message}{hint}"}
+    monkeypatch.setattr(i18n, "catalogue", lambda name: zh if name == "zh" else {})
+    e = DesignError("a crank of {a} mm is too short{why}", a="12.5",
+                    why=Msg(" (at least {n})", n=3))
+    assert str(e) == e.en == "a crank of 12.5 mm is too short (at least 3)"
+    assert e.text("zh") == e.zh == "曲柄 12.5 mm 太短（至少 3）" and e.text("en") == str(e)
+    back = pickle.loads(pickle.dumps(e))
+    assert type(back) is DesignError and back.text("zh") == e.text("zh") and str(back) == str(e)
+    # a brief validator that quoted the English text in a plain ValueError
+    assert chinese_of(f"crank_mm = 12.5: {e}") == f"crank_mm = 12.5: {e.zh}"
+    assert Join(pgettext("separator", "; or "), ["a", Msg(" (at least {n})", n=1)]).text("zh") \
+        == "a；或（至少 1）"
+    # the two-language form of raise sites outside the core
+    legacy = DesignError("no solution", "无实解")
+    assert (str(legacy), legacy.text("zh"), legacy.text("zh_TW")) == ("no solution", "无实解", "无实解")
+    assert DesignError("only English").text("zh") == "only English"
+    # subclasses keep their attributes through pickling and hints
+    err = AssemblyError("RRR1", "RRR", 12.0, 3, code="grashof", numbers={"a": 0.1})
+    hinted = err.with_hint("(Brief field: x.)", "（任务书字段：x。）")
+    assert str(hinted).endswith(" (Brief field: x.)") and hinted.text("zh").endswith("。）")
+    back = pickle.loads(pickle.dumps(hinted))
+    assert (back.group, back.code, back.count, back.numbers, str(back)) == \
+        ("RRR1", "grashof", 3, {"a": 0.1}, str(hinted))
 
 
 def test_the_list_of_modules_not_yet_converted_only_shrinks():

@@ -28,7 +28,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from .errors import DesignError
+from .errors import DesignError, N_
 from .fields import q
 from .motion_laws import LAWS
 
@@ -90,28 +90,26 @@ class Programme:
 
     def __init__(self, segments: list[Segment], stroke: float | None = None):
         if not segments:
-            raise CamDesignError("the programme has no segments", "运动规律表中没有任何区段")
+            raise CamDesignError(N_("the programme has no segments"))
         for i, seg in enumerate(segments):
             if seg.kind not in (RISE, DWELL, RETURN):
-                raise CamDesignError(f"segment {i + 1}: kind {seg.kind!r} is not rise, dwell or return",
-                                     f"第 {i + 1} 段：类型 {seg.kind!r} 不是 rise、dwell 或 return")
+                raise CamDesignError(N_("segment {i}: kind {kind!r} is not rise, dwell or "
+                                        "return"), i=i + 1,
+                                     kind=seg.kind)
             if not seg.span > 0:
-                raise CamDesignError(f"segment {i + 1}: its angle must be positive",
-                                     f"第 {i + 1} 段：转角须为正")
+                raise CamDesignError(N_("segment {i}: its angle must be positive"), i=i + 1)
             if seg.kind != DWELL and seg.law not in LAWS:
-                raise CamDesignError(f"segment {i + 1}: motion law {seg.law!r} is not one of "
-                                     f"{', '.join(LAWS)}",
-                                     f"第 {i + 1} 段：运动规律 {seg.law!r} 不是以下之一：{', '.join(LAWS)}")
+                raise CamDesignError(N_("segment {i}: motion law {law!r} is not one of {laws}"),
+                                     i=i + 1, law=seg.law, laws=', '.join(LAWS))
         total = sum(seg.span for seg in segments)
         if abs(total - TWO_PI) > 1e-9:
-            raise CamDesignError(f"the segment angles add up to {np.degrees(total):.4g}°, not 360°",
-                                 f"各段转角之和为 {np.degrees(total):.4g}°，而不是 360°")
+            raise CamDesignError(N_("the segment angles add up to {total_deg:.4g}°, not 360°"),
+                                 total_deg=np.degrees(total))
         rises = [seg.lift for seg in segments if seg.kind == RISE]
         if stroke is None:
             stroke = max((x for x in rises if x is not None), default=None)
         if stroke is None or not stroke > 0:
-            raise CamDesignError("the programme needs a stroke (a rise with a lift)",
-                                 "运动规律须有行程（带升程的推程段）")
+            raise CamDesignError(N_("the programme needs a stroke (a rise with a lift)"))
         self.segments = tuple(segments)
         self.stroke = float(stroke)
         self.spans = np.array([seg.span for seg in segments])
@@ -127,15 +125,14 @@ class Programme:
                 lift = 0.0
             level += lift
             if level > self.stroke * (1 + 1e-9) or level < -self.stroke * 1e-9:
-                raise CamDesignError(f"segment {i + 1}: the follower would reach "
-                                     f"{level:.6g}, outside 0 … stroke {self.stroke:.6g}",
-                                     f"第 {i + 1} 段：从动件将到达 {level:.6g}，超出 0 … 行程 "
-                                     f"{self.stroke:.6g} 的范围")
+                raise CamDesignError(N_("segment {i}: the follower would reach {level:.6g}, "
+                                        "outside 0 … stroke {stroke:.6g}"),
+                                     i=i + 1, level=level, stroke=self.stroke)
             lifts.append(lift)
         if abs(level) > self.stroke * 1e-9:
-            raise CamDesignError(f"the programme ends at {level:.6g} instead of returning to "
-                                 "the start (0): the returns must undo the rises",
-                                 f"运动规律终点在 {level:.6g}，没有回到起点 (0)：回程须抵消推程")
+            raise CamDesignError(N_("the programme ends at {level:.6g} instead of returning "
+                                    "to the start (0): the returns must undo the rises"),
+                                 level=level)
         self.levels = np.array(levels)
         self.lifts = np.array(lifts)
 
@@ -271,18 +268,16 @@ def initial_arm_angle(follower: OscillatingFollower, base_radius: float) -> floa
     a, L, r0 = follower.pivot_distance, follower.arm_length, base_radius
     if follower.kind == "flat":
         if not 0 < r0 < a:
-            raise CamDesignError(f"a flat-faced oscillating follower needs base radius r0 < pivot "
-                                 f"distance a; r0 = {r0 * 1e3:.4g} mm, a = {a * 1e3:.4g} mm",
-                                 f"平底摆动从动件须基圆半径 r0 < 中心距 a；r0 = {r0 * 1e3:.4g} mm，"
-                                 f"a = {a * 1e3:.4g} mm")
+            raise CamDesignError(N_("a flat-faced oscillating follower needs base radius r0 < "
+                                    "pivot distance a; r0 = {r0_mm:.4g} mm, a = {a_mm:.4g} mm"),
+                                 r0_mm=r0 * 1e3, a_mm=a * 1e3)
         return float(np.arcsin(r0 / a))
     c = (a * a + L * L - r0 * r0) / (2 * a * L)
     if not -1.0 < c < 1.0:
         raise CamDesignError(
-            f"the roller centre cannot reach the base circle: r0 = {r0 * 1e3:.4g} mm must lie "
-            f"between |a − L| = {abs(a - L) * 1e3:.4g} mm and a + L = {(a + L) * 1e3:.4g} mm",
-            f"滚子中心到不了基圆：r0 = {r0 * 1e3:.4g} mm 须介于 |a − L| = {abs(a - L) * 1e3:.4g} mm "
-            f"与 a + L = {(a + L) * 1e3:.4g} mm 之间")
+            N_("the roller centre cannot reach the base circle: r0 = {r0_mm:.4g} mm must lie "
+               "between |a − L| = {diff_mm:.4g} mm and a + L = {sum_mm:.4g} mm"),
+            r0_mm=r0 * 1e3, diff_mm=abs(a - L) * 1e3, sum_mm=(a + L) * 1e3)
     return float(np.arccos(c))
 
 
@@ -319,7 +314,7 @@ def design_cam(programme: Programme, follower, base_radius: float, rotation: int
     if delta is None:
         delta = np.arange(points) * (TWO_PI / points)
     if not base_radius > 0:
-        raise CamDesignError("the base radius must be positive", "基圆半径须为正")
+        raise CamDesignError(N_("the base radius must be positive"))
     return _profile(programme.evaluate(delta), follower, base_radius, sigma)
 
 
@@ -333,11 +328,10 @@ def _profile(m: FollowerMotion, follower, base_radius: float, sigma: int) -> Cam
     if isinstance(follower, TranslatingFollower):
         e = follower.offset
         if abs(e) >= base_radius:
-            raise CamDesignError(f"the offset |e| = {abs(e) * 1e3:.4g} mm must be smaller than the "
-                                 f"base radius r0 = {base_radius * 1e3:.4g} mm: increase the base "
-                                 "radius or reduce the offset",
-                                 f"偏距 |e| = {abs(e) * 1e3:.4g} mm 须小于基圆半径 "
-                                 f"r0 = {base_radius * 1e3:.4g} mm：应增大基圆半径或减小偏距")
+            raise CamDesignError(N_("the offset |e| = {e_mm:.4g} mm must be smaller than the "
+                                    "base radius r0 = {base_radius_mm:.4g} mm: increase the "
+                                    "base radius or reduce the offset"),
+                                 e_mm=abs(e) * 1e3, base_radius_mm=base_radius * 1e3)
         s0 = float(np.sqrt(base_radius**2 - e * e))
         B = e + 1j * (s0 + m.s)
         B1 = 1j * m.ds
@@ -398,8 +392,8 @@ def _flat(follower, r0, sigma, m, rot) -> CamProfile:
         initial = g0
         extras = {"pivot": a}
     if np.any(np.abs(psi1) < 1e-12):
-        raise CamDesignError("the follower face turns as fast as the cam: no envelope exists",
-                             "从动件平底与凸轮转得一样快：不存在包络廓线")
+        raise CamDesignError(N_("the follower face turns as fast as the cam: no envelope "
+                                "exists"))
     hp = h1 / psi1
     hpp = (h2 * psi1 - h1 * psi2) / psi1**3
     n_out = np.exp(1j * psi)
@@ -866,9 +860,8 @@ def min_base_radius_oscillating(programme: Programme, follower: OscillatingFollo
     values = np.array([excess(r) for r in grid])
     ok = np.nonzero(values <= 0)[0]
     if len(ok) == 0:
-        raise CamDesignError("no base radius keeps the pressure angle within the limits with "
-                             "this pivot distance and arm length",
-                             "在此中心距与摆杆长度下，没有任何基圆半径能使压力角不超过许用值")
+        raise CamDesignError(N_("no base radius keeps the pressure angle within the limits "
+                                "with this pivot distance and arm length"))
     j = ok[0]
     if j == 0:
         return float(grid[0])
@@ -906,9 +899,8 @@ def min_base_radius_oscillating(programme: Programme, follower: OscillatingFollo
                 good = up
                 break
             if up >= hi * (1 - 1e-12):
-                raise CamDesignError("no base radius keeps the pressure angle within the limits "
-                                     "with this pivot distance and arm length",
-                                     "在此中心距与摆杆长度下，没有任何基圆半径能使压力角不超过许用值")
+                raise CamDesignError(N_("no base radius keeps the pressure angle within the "
+                                        "limits with this pivot distance and arm length"))
             bad, step = up, step * 4
         while good - bad > 1e-10:
             mid = 0.5 * (bad + good)
@@ -963,10 +955,9 @@ def eccentric_disc(delta, radius: float, eccentricity: float, follower: Translat
         Rp = radius + _roller(follower)
         if abs(x) + eccentricity >= Rp:
             raise CamDesignError(
-                f"the follower leaves the disc: offset |e| + eccentricity = "
-                f"{(abs(x) + eccentricity) * 1e3:.4g} mm must stay below R + r_r = {Rp * 1e3:.4g} mm",
-                f"从动件脱离圆盘：偏距 |e| + 偏心距 = {(abs(x) + eccentricity) * 1e3:.4g} mm 须小于 "
-                f"R + r_r = {Rp * 1e3:.4g} mm")
+                N_("the follower leaves the disc: offset |e| + eccentricity = {reach_mm:.4g} mm "
+                   "must stay below R + r_r = {Rp_mm:.4g} mm"),
+                reach_mm=(abs(x) + eccentricity) * 1e3, Rp_mm=Rp * 1e3)
         dx = x - C.real
         root = np.sqrt(Rp * Rp - dx * dx)
         y = C.imag + root

@@ -27,7 +27,7 @@ from typing import Iterable, NamedTuple, Sequence
 
 import numpy as np
 
-from .errors import DesignError
+from .errors import DesignError, N_, pgettext
 from .fields import q
 
 TWO_PI = 2.0 * np.pi
@@ -40,18 +40,50 @@ RISE, DWELL_HIGH, RETURN, DWELL_LOW, MOVE, DWELL = (
     "rise", "dwell_high", "return", "dwell_low", "move", "dwell")
 MOTION, REST = "motion", "rest"
 
+class _State(tuple):
+    """(Chinese name, English name, motion or rest) of a state, as the rendering layer reads
+    it; the core holds the English name (a msgid, context "cycle state") and the Chinese is
+    its translation, looked up in the catalogue when it is read."""
+
+    __slots__ = ()
+
+    def __new__(cls, name, kind: str):
+        en = getattr(name, "msgid", name)
+        return tuple.__new__(cls, (en, en, kind))
+
+    def __getnewargs__(self):
+        return (tuple.__getitem__(self, 1), tuple.__getitem__(self, 2))
+
+    def __getitem__(self, i):
+        if isinstance(i, int) and i in (0, -3):
+            return self.name("zh")
+        if isinstance(i, slice):
+            return tuple(self)[i]
+        return tuple.__getitem__(self, i)
+
+    def __iter__(self):
+        yield self.name("zh")
+        yield tuple.__getitem__(self, 1)
+        yield tuple.__getitem__(self, 2)
+
+    def name(self, lang: str) -> str:
+        """The state's name in ``lang``."""
+        return pgettext("cycle state", tuple.__getitem__(self, 1)).text(lang)
+
+
 #: state → (Chinese name, English name, motion or rest). ``rise``/``return`` are the
 #: outward and homeward strokes of a reciprocating (translating or swinging) output,
 #: ``dwell_high``/``dwell_low`` its rests at the far and near ends; ``move``/``dwell`` are
 #: for an output that advances in one direction only (an intermittently driven chain or
-#: table) or when the end does not matter.
+#: table) or when the end does not matter. The names are msgids (context "cycle state"):
+#: ``STATES[s].name(lang)`` translates; index 0 is the Chinese (looked up when read).
 STATES: dict[str, tuple[str, str, str]] = {
-    RISE: ("推程", "rise", MOTION),
-    DWELL_HIGH: ("远停歇", "far dwell", REST),
-    RETURN: ("回程", "return", MOTION),
-    DWELL_LOW: ("近停歇", "near dwell", REST),
-    MOVE: ("运动", "move", MOTION),
-    DWELL: ("停歇", "dwell", REST),
+    RISE: _State(pgettext("cycle state", "rise"), MOTION),
+    DWELL_HIGH: _State(pgettext("cycle state", "far dwell"), REST),
+    RETURN: _State(pgettext("cycle state", "return"), MOTION),
+    DWELL_LOW: _State(pgettext("cycle state", "near dwell"), REST),
+    MOVE: _State(pgettext("cycle state", "move"), MOTION),
+    DWELL: _State(pgettext("cycle state", "dwell"), REST),
 }
 
 
@@ -80,7 +112,7 @@ class Phase:
 
     def name(self, lang: str) -> str:
         label = self.label_zh if lang == "zh" else self.label_en
-        return label or STATES[self.state][0 if lang == "zh" else 1]
+        return label or STATES[self.state].name(lang)
 
     @property
     def moving(self) -> bool:
@@ -139,13 +171,13 @@ class Constraint:
 
     def __post_init__(self):
         if self.kind not in ("before", "during"):
-            raise CycleError(f"constraint kind {self.kind!r} is not 'before' or 'during'",
-                             f"约束类型 {self.kind!r} 不是 'before' 或 'during'")
+            raise CycleError(N_("constraint kind {kind!r} is not 'before' or 'during'"),
+                             kind=self.kind)
         object.__setattr__(self, "a", _ref(self.a))
         object.__setattr__(self, "b", _ref(self.b))
         if not np.isfinite(self.margin):
-            raise CycleError(f"constraint {self.a} {self.kind} {self.b}: the margin must be finite",
-                             f"约束 {self.a} {self.kind} {self.b}：裕量须为有限值")
+            raise CycleError(N_("constraint {a} {kind} {b}: the margin must be finite"), a=self.a,
+                             kind=self.kind, b=self.b)
 
     def text(self, lang: str) -> str:
         return self.text_zh if lang == "zh" else self.text_en
@@ -183,9 +215,8 @@ class CycleDiagram:
         for act in self.actuators:
             if act.key == key:
                 return act
-        raise CycleError(f"no actuator {key!r}; the diagram has: "
-                         f"{', '.join(a.key for a in self.actuators)}",
-                         f"没有执行构件 {key!r}；循环图中有：{', '.join(a.key for a in self.actuators)}")
+        raise CycleError(N_("no actuator {key!r}; the diagram has: {keys}"), key=key,
+                         keys=', '.join(a.key for a in self.actuators))
 
     def duration(self, angle) -> np.ndarray | float:
         """Time the shaft takes to turn through ``angle`` [rad] → [s]."""
@@ -212,8 +243,8 @@ def _ref(ref) -> PhaseRef:
         return ref
     if isinstance(ref, (tuple, list)) and len(ref) in (2, 3):
         return PhaseRef(*ref)
-    raise CycleError(f"a phase reference is (actuator, state[, occurrence]), not {ref!r}",
-                     f"区段引用应为 (执行构件, 状态[, 第几次])，而不是 {ref!r}")
+    raise CycleError(N_("a phase reference is (actuator, state[, occurrence]), not {ref!r}"),
+                     ref=ref)
 
 
 def make_actuator(key: str, name_zh: str, name_en: str, start: float,
@@ -232,32 +263,30 @@ def make_actuator(key: str, name_zh: str, name_en: str, start: float,
         else:
             ph = tuple(ph)
             if not 2 <= len(ph) <= 4:
-                raise CycleError(f"actuator {key!r}, phase {i + 1}: give (state, span[, label_zh, "
-                                 f"label_en]), not {ph!r}",
-                                 f"执行构件 {key!r} 第 {i + 1} 区段：应为 (状态, 转角[, 中文名, 英文名])，"
-                                 f"而不是 {ph!r}")
+                raise CycleError(N_("actuator {key!r}, phase {i}: give (state, span[, "
+                                    "label_zh, label_en]), not {ph!r}"),
+                                 key=key, i=i + 1, ph=ph)
             state, span = ph[0], ph[1]
             lzh = ph[2] if len(ph) > 2 else ""
             len_ = ph[3] if len(ph) > 3 else ""
         if state not in STATES:
-            raise CycleError(f"actuator {key!r}, phase {i + 1}: state {state!r} is not one of "
-                             f"{', '.join(STATES)}",
-                             f"执行构件 {key!r} 第 {i + 1} 区段：状态 {state!r} 不是以下之一："
-                             f"{', '.join(STATES)}")
+            raise CycleError(N_("actuator {key!r}, phase {i}: state {state!r} is not one of "
+                                "{states}"), key=key, i=i + 1,
+                             state=state, states=', '.join(STATES))
         span = float(span)
         if not (np.isfinite(span) and span > 0):
-            raise CycleError(f"actuator {key!r}, phase {i + 1}: its span must be positive, "
-                             f"not {np.degrees(span):g}°",
-                             f"执行构件 {key!r} 第 {i + 1} 区段：转角须为正，而不是 {np.degrees(span):g}°")
+            raise CycleError(N_("actuator {key!r}, phase {i}: its span must be positive, not "
+                                "{span_deg:g}°"), key=key, i=i + 1,
+                             span_deg=np.degrees(span))
         items.append((state, span, lzh, len_))
     if not items:
-        raise CycleError(f"actuator {key!r} has no phases", f"执行构件 {key!r} 没有任何区段")
+        raise CycleError(N_("actuator {key!r} has no phases"), key=key)
     total = sum(s for _, s, _, _ in items)
     if abs(total - TWO_PI) > tol:
-        raise CycleError(f"actuator {key!r} ({name_en}): the phase spans add up to "
-                         f"{np.degrees(total):.6g}°; they must cover exactly 360°",
-                         f"执行构件 {key!r}（{name_zh or name_en}）：各区段转角之和为 "
-                         f"{np.degrees(total):.6g}°，须恰为 360°")
+        raise CycleError(N_("actuator {key!r} ({name_en}): the phase spans add up to "
+                            "{total_deg:.6g}°; they must cover exactly 360°"),
+                         key=key, name_en=name_en, total_deg=np.degrees(total),
+                         name=name_zh or name_en)
     scale = TWO_PI / total
     out, at = [], float(np.mod(start, TWO_PI))
     for state, span, lzh, len_ in items:
@@ -275,23 +304,23 @@ def build_cycle(actuators: Sequence, shaft_speed: float, origin: float = 0.0,
     ``constraints``: :class:`Constraint` whose phase references must exist.
     """
     if not (np.isfinite(shaft_speed) and shaft_speed > 0):
-        raise CycleError(f"the shaft speed must be positive, not {shaft_speed!r} rad/s",
-                         f"分配轴转速须为正，而不是 {shaft_speed!r} rad/s")
+        raise CycleError(N_("the shaft speed must be positive, not {shaft_speed!r} rad/s"),
+                         shaft_speed=shaft_speed)
     acts = []
     for item in actuators:
         acts.append(item if isinstance(item, Actuator) else make_actuator(*item))
     if not acts:
-        raise CycleError("a cycle diagram needs at least one actuator", "运动循环图至少需要一个执行构件")
+        raise CycleError(N_("a cycle diagram needs at least one actuator"))
     keys = [a.key for a in acts]
     dup = sorted({k for k in keys if keys.count(k) > 1})
     if dup:
-        raise CycleError(f"actuator key(s) {', '.join(map(repr, dup))} appear more than once",
-                         f"执行构件代号 {', '.join(map(repr, dup))} 出现不止一次")
+        raise CycleError(N_("actuator key(s) {keys} appear more than once"),
+                         keys=', '.join(map(repr, dup)))
     cycle = CycleDiagram(tuple(acts), float(shaft_speed), float(np.mod(origin, TWO_PI)), ())
     cons = tuple(constraints)
     for c in cons:
         if not isinstance(c, Constraint):
-            raise CycleError(f"not a Constraint: {c!r}", f"不是约束（Constraint）：{c!r}")
+            raise CycleError(N_("not a Constraint: {c!r}"), c=c)
         resolve(cycle, c.a)
         resolve(cycle, c.b)
     return CycleDiagram(cycle.actuators, cycle.shaft_speed, cycle.origin, cons)
@@ -332,20 +361,18 @@ def interval_of(actuator: Actuator, state: str, occurrence: int | None = None) -
     found = intervals_of(actuator, state)
     have = ", ".join(p.state for p in actuator.phases)
     if not found:
-        raise CycleError(f"actuator {actuator.key!r} has no {state!r} phase; its phases: {have}",
-                         f"执行构件 {actuator.key!r} 没有 {state!r} 区段；它的区段：{have}")
+        raise CycleError(N_("actuator {key!r} has no {state!r} phase; its phases: {have}"),
+                         key=actuator.key, state=state, have=have)
     if occurrence is None:
         if len(found) > 1:
-            raise CycleError(f"actuator {actuator.key!r} has {len(found)} {state!r} phases; say "
-                             f"which (occurrence 1 … {len(found)})",
-                             f"执行构件 {actuator.key!r} 有 {len(found)} 个 {state!r} 区段；请指明第几个"
-                             f"（occurrence 1 … {len(found)}）")
+            raise CycleError(N_("actuator {key!r} has {n_found} {state!r} phases; say which "
+                                "(occurrence 1 … {n_found})"),
+                             key=actuator.key, n_found=len(found), state=state)
         return found[0]
     if not 1 <= occurrence <= len(found):
-        raise CycleError(f"actuator {actuator.key!r} has {len(found)} {state!r} phase(s); "
-                         f"occurrence {occurrence} does not exist",
-                         f"执行构件 {actuator.key!r} 只有 {len(found)} 个 {state!r} 区段；"
-                         f"不存在第 {occurrence} 个")
+        raise CycleError(N_("actuator {key!r} has {n_found} {state!r} phase(s); occurrence "
+                            "{occurrence} does not exist"),
+                         key=actuator.key, n_found=len(found), state=state, occurrence=occurrence)
     return found[occurrence - 1]
 
 
@@ -421,9 +448,9 @@ def actuator_from_cam_programme(key: str, name_zh: str, name_en: str, programme,
                 segs.append(Segment(kind, span, None if kind == CAM_DWELL else "poly345"))
         total = sum(s.span for s in segs)
         if abs(total - TWO_PI) > COVER_TOL:
-            raise CycleError(f"actuator {key!r}: the cam programme covers "
-                             f"{np.degrees(total):.6g}°, not 360°",
-                             f"执行构件 {key!r}：凸轮运动规律覆盖 {np.degrees(total):.6g}°，而不是 360°")
+            raise CycleError(N_("actuator {key!r}: the cam programme covers {total_deg:.6g}°, "
+                                "not 360°"), key=key,
+                             total_deg=np.degrees(total))
         segs = [Segment(s.kind, s.span * TWO_PI / total, s.law, s.lift) for s in segs]
         prog = Programme(segs, _stroke_of(segs))
     phases = []
@@ -462,8 +489,7 @@ def timing_disagreement(a: Actuator, b: Actuator, by: str = "state") -> float:
     same timing). ``by="motion"`` compares only moving against resting, so that e.g. a
     ``dwell`` matches a ``dwell_low``, and a ``move`` a ``rise``."""
     if by not in ("state", "motion"):
-        raise CycleError(f"compare by 'state' or 'motion', not {by!r}",
-                         f"比较方式应为 'state' 或 'motion'，而不是 {by!r}")
+        raise CycleError(N_("compare by 'state' or 'motion', not {by!r}"), by=by)
     cuts = np.sort(np.mod(np.array([p.start for p in a.phases + b.phases]), TWO_PI))
     cuts = np.concatenate([cuts, [cuts[0] + TWO_PI]])
     arcs = np.diff(cuts)

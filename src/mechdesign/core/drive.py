@@ -19,7 +19,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .errors import DesignError
+from .errors import DesignError, N_, pgettext
 from .fields import q
 
 SYNCHRONOUS_PREFERENCE = (1500, 1000, 3000, 750)   # rpm; 1500 and 1000 are the usual choice
@@ -133,20 +133,16 @@ def choose_motor(catalogue: list[Motor], power_required: float, output_rpm: floa
                                    "given" if synchronous_rpm else reason)
     largest = max((m.power for m in catalogue), default=0.0)
     if not any(c.motor for c in candidates):
+        at = pgettext("synchronous speed", " at {rpm:g} rpm", rpm=synchronous_rpm) if synchronous_rpm else ""
         raise DriveDesignError(
-            f"no motor in the catalogue gives {power_required / 1e3:.3f} kW"
-            + (f" at {synchronous_rpm:g} rpm" if synchronous_rpm else "")
-            + f" (largest: {largest / 1e3:g} kW): reduce the load or the speed, or allow "
-            "another synchronous speed",
-            f"电动机目录中没有功率达到 {power_required / 1e3:.3f} kW 的电动机"
-            + (f"（同步转速 {synchronous_rpm:g} rpm）" if synchronous_rpm else "")
-            + f"（最大 {largest / 1e3:g} kW）：应减小负载或转速，或改用其他同步转速")
+            N_("no motor in the catalogue gives {power_kw:.3f} kW{at} (largest: {largest_kw:g} "
+               "kW): reduce the load or the speed, or allow another synchronous speed"),
+            power_kw=power_required / 1e3, at=at, largest_kw=largest / 1e3)
     ratios = ", ".join(f"{c.synchronous_rpm:g} rpm → i = {c.total_ratio:.1f}" for c in candidates if c.motor)
     raise DriveDesignError(
-        f"the drive's stages give total ratios {max_lo:.3g}–{max_hi:.3g}, but the motors need "
-        f"{ratios} to reach {output_rpm:g} rpm: add a stage or change a fixed ratio",
-        f"传动各级的总传动比范围为 {max_lo:.3g}–{max_hi:.3g}，而要得到 {output_rpm:g} rpm，"
-        f"各电动机需要 {ratios}：应增加一级传动或改变某一固定传动比")
+        N_("the drive's stages give total ratios {max_lo:.3g}–{max_hi:.3g}, but the motors "
+           "need {ratios} to reach {output_rpm:g} rpm: add a stage or change a fixed ratio"),
+        max_lo=max_lo, max_hi=max_hi, ratios=ratios, output_rpm=output_rpm)
 
 
 def allocate_ratios(total: float, elements: list[Element]) -> list[float]:

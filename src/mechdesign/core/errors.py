@@ -1,42 +1,197 @@
 """The base of every design error: a design the brief's data make infeasible.
 
-A :class:`DesignError` carries its message in English (``str(exc)``, what logs and
-tests read) and in Chinese; :meth:`DesignError.text` picks the report's language. The
-message names the problem, gives the numbers and says what to change. The machines'
-errors (assembly, synthesis, cam, drive, cycle, intermittent gear) subclass it.
+The core holds no prose: a raise site gives an English message id and its fields (numbers,
+preformatted numbers, or other messages), e.g.::
+
+    raise AssemblyError(N_("group '{group}' ({kind}) cannot be assembled at crank angle "
+                           "{angle:.2f}°"), group=g, kind=k, angle=deg)
+
+``str(exc)`` is the English text (what logs and tests read); :meth:`DesignError.text` gives
+it in a report language, translated through :mod:`mechdesign.i18n` (imported when a text is
+asked for, so the core reads no catalogue at import). The message names the problem, gives
+the numbers and says what to change. The machines' errors (assembly, synthesis, cam, drive,
+cycle, intermittent gear) subclass it.
+
+A message is a :class:`Msg` (msgid + fields, a field may itself be a message), a
+:class:`Join` (messages joined by a translated separator) or, for raise sites outside the
+core that still write both languages, a :class:`Text` (an English and a Chinese text).
 """
 from __future__ import annotations
 
 from collections import OrderedDict
 
-#: English → Chinese text of the design errors raised lately in this process, so a brief
+
+def N_(msgid: str) -> str:
+    """Mark ``msgid`` for the catalogues (the same as :func:`mechdesign.i18n.N_`)."""
+    return msgid
+
+
+def _translate(msgid: str, lang: str, context: str | None = None) -> str:
+    if lang == "en":
+        return msgid
+    from ..i18n import gettext     # lazily: the core reads no catalogue unless a text is asked for
+    return gettext(msgid, lang, context)
+
+
+def pgettext(context: str, msgid: str, /, **fields) -> "Msg":
+    """A :class:`Msg` with a message context (msgctxt), for a short word that another part
+    of the program may translate differently ("link" → "crank")."""
+    msg = Msg(msgid, **fields)
+    msg.context = context
+    return msg
+
+
+def _render(value, lang: str):
+    return value.text(lang) if isinstance(value, (Msg, Join, Text)) else value
+
+
+class Msg:
+    """A message to be translated where it is shown: an English msgid (marked with ``N_``
+    where it is written) and its ``str.format`` fields, filled in after translation. A field
+    that is itself a message is translated into the same language."""
+
+    __slots__ = ("msgid", "fields", "context")
+
+    def __init__(self, msgid: str, /, **fields):
+        self.msgid = msgid
+        self.fields = fields
+        self.context = None
+
+    def text(self, lang: str = "en") -> str:
+        text = _translate(self.msgid, lang, self.context)
+        if not self.fields:
+            return text
+        return text.format(**{k: _render(v, lang) for k, v in self.fields.items()})
+
+    def __str__(self) -> str:
+        return self.text("en")
+
+    def __repr__(self) -> str:
+        return f"Msg({self.msgid!r}, **{self.fields!r})"
+
+    def __eq__(self, other) -> bool:
+        return isinstance(other, Msg) and \
+            (self.msgid, self.fields, self.context) == (other.msgid, other.fields, other.context)
+
+    def __hash__(self) -> int:
+        return hash((self.msgid, self.context, tuple(sorted(self.fields.items()))))
+
+    def __reduce__(self):
+        return (_msg, (self.msgid, self.fields, self.context))
+
+
+def _msg(msgid: str, fields: dict, context: str | None = None) -> Msg:
+    msg = Msg(msgid, **fields)
+    msg.context = context
+    return msg
+
+
+class Join:
+    """Messages (or plain strings such as numbers) joined by a separator that is itself a
+    message (``pgettext("separator", "; or ")`` → "；或")."""
+
+    __slots__ = ("sep", "items")
+
+    def __init__(self, sep: "Msg", items):
+        self.sep = sep
+        self.items = tuple(items)
+
+    def text(self, lang: str = "en") -> str:
+        return self.sep.text(lang).join(str(_render(x, lang)) for x in self.items)
+
+    def __str__(self) -> str:
+        return self.text("en")
+
+    def __bool__(self) -> bool:
+        return bool(self.items)
+
+    def __reduce__(self):
+        return (Join, (self.sep, self.items))
+
+
+class Text:
+    """A text written in both languages by its raise site (English, Chinese or None): the
+    form of messages from outside the core that have not moved to the catalogue."""
+
+    __slots__ = ("en", "zh")
+
+    def __init__(self, en: str, zh: str | None = None):
+        self.en, self.zh = en, zh
+
+    def text(self, lang: str = "en") -> str:
+        if self.zh and lang != "en":
+            from ..i18n import base
+            if base(lang) == "zh":
+                return self.zh
+        return self.en
+
+    def __str__(self) -> str:
+        return self.en
+
+    def __reduce__(self):
+        return (Text, (self.en, self.zh))
+
+
+def message(msg, zh: str | None = None, /, **fields):
+    """``msg`` as a message object: a Msg/Join/Text as it is, an English text with its
+    Chinese (the two-language form) as a :class:`Text`, else a msgid with ``fields``."""
+    if isinstance(msg, (Msg, Join, Text)):
+        return msg
+    if zh is not None:
+        return Text(msg, zh)
+    return Msg(msg, **fields)
+
+
+#: English text → message of the design errors raised lately in this process, so a brief
 #: validator that wrapped one in a plain ValueError (English) can still be shown in Chinese.
-_RECENT: "OrderedDict[str, str]" = OrderedDict()
+_RECENT: "OrderedDict[str, object]" = OrderedDict()
 _RECENT_MAX = 256
 
 
 class DesignError(ValueError):
-    """An infeasible design. ``en`` is ``str(exc)``; ``zh`` the same in Chinese (falls back
-    to the English text when a raise site has none)."""
+    """An infeasible design. ``DesignError(N_("msgid {x}"), x=…)`` (or a :class:`Msg`);
+    ``str(exc)`` and ``exc.en`` are the English text, ``exc.text(lang)`` the message in a
+    report language, ``exc.zh`` in Chinese. The two-language form ``DesignError(en, zh)``
+    of raise sites outside the core still works (``zh`` None: English in every language)."""
 
-    def __init__(self, en: str, zh: str | None = None):
+    def __init__(self, msg, zh: str | None = None, /, **fields):
+        if zh is None and isinstance(msg, str) and "zh" in fields and "{zh" not in msg:
+            zh = fields.pop("zh")          # the two-language form written with a keyword
+        self.message = message(msg, zh, **fields)
+        en = self.message.text("en")
         super().__init__(en)
-        self.en = en
-        self.zh = zh
-        if zh and en:
-            _RECENT[en] = zh
+        if en and not (isinstance(self.message, Text) and not self.message.zh):
+            _RECENT[en] = self.message
             _RECENT.move_to_end(en)
             while len(_RECENT) > _RECENT_MAX:
                 _RECENT.popitem(last=False)
 
-    def __reduce__(self):   # picklable with both texts (worker processes)
-        return (type(self), (self.en, self.zh))
+    @property
+    def en(self) -> str:
+        """The message in English (``str(exc)``)."""
+        return self.args[0] if self.args else ""
+
+    @property
+    def zh(self) -> str | None:
+        """The message in Chinese (None for a two-language raise site that gave none)."""
+        if isinstance(self.message, Text) and not self.message.zh:
+            return None
+        return self.message.text("zh")
+
+    def __reduce__(self):   # picklable (worker processes) with the message and every attribute
+        state = {k: v for k, v in self.__dict__.items()}
+        return (_restore, (type(self), self.message, state))
 
     def text(self, lang: str) -> str:
-        """The message in ``lang`` ("zh" or "en")."""
-        if lang == "zh" and self.zh:
-            return self.zh
-        return self.en
+        """The message in ``lang`` ("zh", "en" or a variant such as "zh_TW")."""
+        return self.message.text(lang)
+
+
+def _restore(cls, msg, state: dict) -> DesignError:
+    err = cls.__new__(cls)
+    DesignError.__init__(err, msg)
+    err.__dict__.update(state)
+    return err
 
 
 def chinese_of(text: str, exc: BaseException | None = None) -> str | None:
@@ -46,13 +201,17 @@ def chinese_of(text: str, exc: BaseException | None = None) -> str | None:
     first, then the design errors raised lately in this process."""
     seen = 0
     while exc is not None and seen < 8:
-        if isinstance(exc, DesignError) and exc.zh and exc.en in text:
-            return text.replace(exc.en, exc.zh)
+        if isinstance(exc, DesignError) and exc.en and exc.en in text:
+            zh = exc.zh
+            if zh and zh != exc.en:
+                return text.replace(exc.en, zh)
         exc = exc.__cause__ or exc.__context__
         seen += 1
     for en in reversed(_RECENT):
         if en in text:
-            return text.replace(en, _RECENT[en])
+            zh = _RECENT[en].text("zh")
+            if zh != en:            # a message the catalogue does not translate quotes nothing
+                return text.replace(en, zh)
     return None
 
 

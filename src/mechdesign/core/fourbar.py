@@ -29,7 +29,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .errors import DesignError
+from .errors import DesignError, Msg, N_, mm, pgettext
 from .synthesis import extreme_angle
 
 _TOL = 1e-12
@@ -87,25 +87,29 @@ def grashof(fb: FourBar) -> tuple[bool, str]:
     return False, "rocker-crank (the rocker is the shortest and turns fully)"
 
 
-def grashof_sums(fb: FourBar) -> tuple[str, str]:
-    """The Grashof check in words with its numbers [mm]: (en, zh), e.g. "shortest + longest
-    = 20 + 60 = 80 mm > 45 + 30 = 75 mm (the other two)"."""
+def grashof_sums_message(fb: FourBar) -> Msg:
+    """The Grashof check in words with its numbers [mm], as a message, e.g. "shortest +
+    longest = 20 + 60 = 80 mm > 45 + 30 = 75 mm (the other two)"."""
     lengths = {"crank": fb.crank, "coupler": fb.coupler, "rocker": fb.rocker, "frame": fb.frame}
-    zh_names = {"crank": "曲柄", "coupler": "连杆", "rocker": "摇杆", "frame": "机架"}
     order = sorted(lengths, key=lengths.get)
     s, p, q, l_ = (lengths[k] for k in order)
+    return Msg(N_("crank a = {a}, coupler b = {b}, rocker c = {c}, frame d = {d} mm: shortest "
+                  "({shortest}) + longest ({longest}) = {s} + {l} = {sl} mm {rel} {p} + {q} = "
+                  "{pq} mm (the other two)"),
+               a=mm(fb.crank), b=mm(fb.coupler), c=mm(fb.rocker), d=mm(fb.frame),
+               shortest=_LINK[order[0]], longest=_LINK[order[-1]], s=mm(s), l=mm(l_),
+               sl=mm(s + l_), rel=">" if s + l_ > p + q else "≤", p=mm(p), q=mm(q), pq=mm(p + q))
 
-    def mm(x):
-        return f"{x * 1e3:.6g}"
-    rel = ">" if s + l_ > p + q else "≤"
-    en = (f"crank a = {mm(fb.crank)}, coupler b = {mm(fb.coupler)}, rocker c = {mm(fb.rocker)}, "
-          f"frame d = {mm(fb.frame)} mm: shortest ({order[0]}) + longest ({order[-1]}) = "
-          f"{mm(s)} + {mm(l_)} = {mm(s + l_)} mm {rel} {mm(p)} + {mm(q)} = {mm(p + q)} mm "
-          "(the other two)")
-    zh = (f"曲柄 a = {mm(fb.crank)}，连杆 b = {mm(fb.coupler)}，摇杆 c = {mm(fb.rocker)}，"
-          f"机架 d = {mm(fb.frame)} mm：最短杆（{zh_names[order[0]]}）+ 最长杆（{zh_names[order[-1]]}）"
-          f"= {mm(s)} + {mm(l_)} = {mm(s + l_)} mm {rel} 其余两杆之和 {mm(p)} + {mm(q)} = {mm(p + q)} mm")
-    return en, zh
+
+#: the links of a four-bar by their role, as the messages name them (English: the code)
+_LINK = {"crank": pgettext("link", "crank"), "coupler": pgettext("link", "coupler"),
+         "rocker": pgettext("link", "rocker"), "frame": pgettext("link", "frame")}
+
+
+def grashof_sums(fb: FourBar) -> tuple[str, str]:
+    """:func:`grashof_sums_message` as its (English, Chinese) texts."""
+    msg = grashof_sums_message(fb)
+    return msg.text("en"), msg.text("zh")
 
 
 def _deviation(fb: FourBar) -> tuple[float, float]:
@@ -142,9 +146,8 @@ def crank_rocker_extremes(fb: FourBar) -> tuple[float, float]:
     a, b, c, d = fb.crank, fb.coupler, fb.rocker, fb.frame
     ok, kind = grashof(fb)
     if not (ok and kind == "crank-rocker"):
-        en, zh = grashof_sums(fb)
-        raise SynthesisError(f"not a crank-rocker ({kind}; {en}): the extreme positions are undefined",
-                             f"不是曲柄摇杆机构（{kind}；{zh}）：极位无定义")
+        raise SynthesisError(N_("not a crank-rocker ({kind}; {sums}): the extreme positions are "
+                                "undefined"), kind=kind, sums=grashof_sums_message(fb))
     r1, r2 = b - a, b + a
 
     def ang(x, y, z):  # angle opposite z in a triangle with sides x, y, z
@@ -218,23 +221,22 @@ class CircleConstruction:
 
 def _check_data(theta: float, swing: float, rocker: float) -> None:
     if not (np.isfinite(theta) and 0.0 <= theta < np.pi / 2.0):
-        raise SynthesisError(f"extreme-position angle θ = {np.degrees(theta):.6g}° must be in "
-                             "[0°, 90°) (time ratio 1 ≤ K < 3)",
-                             f"极位夹角 θ = {np.degrees(theta):.6g}° 须在 [0°, 90°) 内"
-                             "（行程速比系数 1 ≤ K < 3）")
+        raise SynthesisError(N_("extreme-position angle θ = {theta_deg:.6g}° must be in [0°, "
+                                "90°) (time ratio 1 ≤ K < 3)"),
+                             theta_deg=np.degrees(theta))
     if not (np.isfinite(swing) and 0.0 < swing < np.pi):
-        raise SynthesisError(f"rocker swing ψ = {np.degrees(swing):.6g}° must be in (0°, 180°)",
-                             f"摇杆摆角 ψ = {np.degrees(swing):.6g}° 须在 (0°, 180°) 内")
+        raise SynthesisError(N_("rocker swing ψ = {swing_deg:.6g}° must be in (0°, 180°)"),
+                             swing_deg=np.degrees(swing))
     if not (np.isfinite(rocker) and rocker > 0.0):
-        raise SynthesisError(f"rocker length {rocker} must be positive", f"摇杆长度 {rocker} 须为正")
+        raise SynthesisError(N_("rocker length {rocker} must be positive"), rocker=rocker)
 
 
 def _theta_of(K: float) -> float:
     if not np.isfinite(K) or K < 1.0:
-        raise SynthesisError(f"time ratio K = {K} must be ≥ 1", f"行程速比系数 K = {K} 须 ≥ 1")
+        raise SynthesisError(N_("time ratio K = {K} must be ≥ 1"), K=K)
     if K >= 3.0:
-        raise SynthesisError(f"time ratio K = {K} gives θ ≥ 90°; a crank-rocker needs K < 3",
-                             f"行程速比系数 K = {K} 使 θ ≥ 90°；曲柄摇杆机构须 K < 3")
+        raise SynthesisError(N_("time ratio K = {K} gives θ ≥ 90°; a crank-rocker needs K < 3"),
+                             K=K)
     return float(extreme_angle(K))
 
 
@@ -269,10 +271,9 @@ def circle_construction_theta(theta: float, swing: float, rocker: float, *, side
     mid = complex(cons.point(0.5 * (p_lo + p_hi)))
     if not _same_branch(mid, c1, c2):
         raise SynthesisError(
-            f"no crank-rocker on this θ-circle (side {side}) for θ = {np.degrees(theta):.6g}°, "
-            f"ψ = {np.degrees(swing):.6g}°: the line AD separates C1 and C2 everywhere",
-            f"θ = {np.degrees(theta):.6g}°、ψ = {np.degrees(swing):.6g}° 时该 θ 圆（第 {side} 侧）上"
-            "无曲柄摇杆机构：直线 AD 处处把 C1 与 C2 分在两侧")
+            N_("no crank-rocker on this θ-circle (side {side}) for θ = {theta_deg:.6g}°, ψ = "
+               "{swing_deg:.6g}°: the line AD separates C1 and C2 everywhere"),
+            side=side, theta_deg=np.degrees(theta), swing_deg=np.degrees(swing))
     return cons
 
 
@@ -308,10 +309,9 @@ def crank_rocker_on_circle(K: float, swing: float, rocker: float, position: floa
     cons = circle_construction(K, swing, rocker, side=side)
     if not (cons.p_lo < position < cons.p_hi):
         raise SynthesisError(
-            f"position {np.degrees(position):.6g}° is outside the allowed arc "
-            f"({np.degrees(cons.p_lo):.6g}°, {np.degrees(cons.p_hi):.6g}°)",
-            f"位置 {np.degrees(position):.6g}° 不在允许的圆弧 "
-            f"({np.degrees(cons.p_lo):.6g}°, {np.degrees(cons.p_hi):.6g}°) 内")
+            N_("position {position_deg:.6g}° is outside the allowed arc ({p_lo_deg:.6g}°, "
+               "{p_hi_deg:.6g}°)"), position_deg=np.degrees(position),
+            p_lo_deg=np.degrees(cons.p_lo), p_hi_deg=np.degrees(cons.p_hi))
     return _design_at(cons, position)
 
 
@@ -335,7 +335,7 @@ def position_for_frame(cons: CircleConstruction, frame: float) -> float:
     monotonic in t on (0, π), so there is at most one such A on the arc.
     Raises SynthesisError naming the frame range that works."""
     if not (np.isfinite(frame) and frame > 0.0):
-        raise SynthesisError(f"frame length {frame} must be positive", f"机架长度 {frame} 须为正")
+        raise SynthesisError(N_("frame length {frame} must be positive"), frame=frame)
     c = cons.rocker
     p = None
     if cons.centre is None:
@@ -347,9 +347,8 @@ def position_for_frame(cons: CircleConstruction, frame: float) -> float:
         n = -1j * cons.side
         on = (np.conj(n) * cons.centre).real              # O·n̂
         if abs(on) < 1e-15 * c:
-            raise SynthesisError("the θ-circle is centred on D: every A has the same frame "
-                                 "length, so the frame does not fix the design",
-                                 "θ 圆圆心在 D 点：所有 A 点的机架长度相同，机架长度不能确定设计")
+            raise SynthesisError(N_("the θ-circle is centred on D: every A has the same frame "
+                                    "length, so the frame does not fix the design"))
         big = abs(cons.centre) ** 2 + cons.radius ** 2
         cos_t = (frame ** 2 - big) / (2.0 * cons.radius * on)
         if abs(cos_t) <= 1.0:
@@ -359,13 +358,11 @@ def position_for_frame(cons: CircleConstruction, frame: float) -> float:
     if p is None or not (cons.p_lo < p < cons.p_hi):
         top = "∞" if not np.isfinite(hi) else f"{hi * 1e3:.6g}"
         raise SynthesisError(
-            f"frame length {frame * 1e3:.6g} mm cannot be met: with θ = "
-            f"{np.degrees(cons.theta):.6g}°, ψ = {np.degrees(cons.swing):.6g}° and rocker "
-            f"{c * 1e3:.6g} mm the crank pivot on the allowed arc gives frames between "
-            f"{lo * 1e3:.6g} and {top} mm (exclusive)",
-            f"机架长度 {frame * 1e3:.6g} mm 无法实现：θ = {np.degrees(cons.theta):.6g}°、"
-            f"ψ = {np.degrees(cons.swing):.6g}°、摇杆 {c * 1e3:.6g} mm 时，曲柄转动中心在允许圆弧上"
-            f"所得的机架长度介于 {lo * 1e3:.6g} 与 {top} mm 之间（不含端点）")
+            N_("frame length {frame_mm:.6g} mm cannot be met: with θ = {theta_deg:.6g}°, ψ = "
+               "{swing_deg:.6g}° and rocker {c_mm:.6g} mm the crank pivot on the allowed arc "
+               "gives frames between {lo_mm:.6g} and {top} mm (exclusive)"),
+            frame_mm=frame * 1e3, theta_deg=np.degrees(cons.theta),
+            swing_deg=np.degrees(cons.swing), c_mm=c * 1e3, lo_mm=lo * 1e3, top=top)
     return p
 
 
@@ -449,25 +446,23 @@ def slider_crank_construction(K: float, stroke: float, offset: float) -> SliderC
     on C1's side (x_A < −H/2, i.e. e < H·cot θ); then shifted so that A is the origin.
     """
     if not np.isfinite(K) or K <= 1.0:
-        raise SynthesisError(f"time ratio K = {K} must be > 1 for an offset slider-crank "
-                             "(K = 1 needs no offset: a centred slider-crank)",
-                             f"偏置曲柄滑块机构须 K > 1，而 K = {K}（K = 1 不需偏距：用对心曲柄滑块机构）")
+        raise SynthesisError(N_("time ratio K = {K} must be > 1 for an offset slider-crank (K "
+                                "= 1 needs no offset: a centred slider-crank)"),
+                             K=K)
     theta = extreme_angle(K)
     if not stroke > 0.0:
-        raise SynthesisError(f"stroke H = {stroke} must be positive", f"行程 H = {stroke} 须为正")
+        raise SynthesisError(N_("stroke H = {stroke} must be positive"), stroke=stroke)
     if not offset > 0.0:
-        raise SynthesisError(f"offset e = {offset} must be > 0: with e = 0 the extreme "
-                             "positions are 180° apart and K = 1",
-                             f"偏距 e = {offset} 须 > 0：e = 0 时两极位相隔 180°，K = 1")
+        raise SynthesisError(N_("offset e = {offset} must be > 0: with e = 0 the extreme "
+                                "positions are 180° apart and K = 1"),
+                             offset=offset)
     limit = stroke / np.tan(theta)
     if offset >= limit:
         raise SynthesisError(
-            f"offset e = {offset * 1e3:.6g} mm is too large for K = {K:.6g} and "
-            f"H = {stroke * 1e3:.6g} mm: it must be below H·cot θ = {limit * 1e3:.6g} mm "
-            "(reduce e or K, or increase H)",
-            f"偏置曲柄滑块机构无实解：偏距 e = {offset * 1e3:.6g} mm 对 K = {K:.6g}、"
-            f"H = {stroke * 1e3:.6g} mm 过大，须小于 H·cot θ = {limit * 1e3:.6g} mm"
-            "（减小 e 或 K，或增大 H）")
+            N_("offset e = {offset_mm:.6g} mm is too large for K = {K:.6g} and H = "
+               "{stroke_mm:.6g} mm: it must be below H·cot θ = {limit_mm:.6g} mm (reduce e or "
+               "K, or increase H)"), offset_mm=offset * 1e3, K=K,
+            stroke_mm=stroke * 1e3, limit_mm=limit * 1e3)
     radius = stroke / (2.0 * np.sin(theta))
     yc = -radius * np.cos(theta)
     xa = -np.sqrt(radius ** 2 - (yc + offset) ** 2)
@@ -493,14 +488,11 @@ def slider_crank_pressure_angle_max(crank: float, rod: float, offset: float) -> 
     """
     a, b, e = crank, rod, abs(offset)
     if not (a > 0.0 and b > 0.0):
-        raise SynthesisError(f"crank {a} and rod {b} must be positive",
-                             f"曲柄 {a} 与连杆 {b} 须为正")
+        raise SynthesisError(N_("crank {a} and rod {b} must be positive"), a=a, b=b)
     if a + e >= b:
         raise SynthesisError(
-            f"crank + offset = {(a + e) * 1e3:.6g} mm ≥ rod {b * 1e3:.6g} mm: "
-            "the crank cannot turn fully (lengthen the rod)",
-            f"曲柄 + 偏距 = {(a + e) * 1e3:.6g} mm ≥ 连杆 {b * 1e3:.6g} mm：曲柄不能整周转动"
-            "（加长连杆）")
+            N_("crank + offset = {ae_mm:.6g} mm ≥ rod {b_mm:.6g} mm: the crank cannot turn "
+               "fully (lengthen the rod)"), ae_mm=(a + e) * 1e3, b_mm=b * 1e3)
     return float(np.arcsin((a + e) / b))
 
 

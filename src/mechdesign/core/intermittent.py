@@ -35,7 +35,7 @@ from math import gcd
 
 from ..lazy import np     # the design from the timing is scalar arithmetic: validating a brief needs no numpy
 
-from .errors import DesignError
+from .errors import DesignError, Join, Msg, N_, pgettext
 from .fields import q
 
 TWO_PI = 2.0 * math.pi
@@ -51,22 +51,29 @@ class IntermittentDesignError(DesignError):
     what to change. ``field`` names the input to change: module, z1, z2, teeth,
     motion_span, advance (or the feed that gave it), feed or sprocket_radius."""
 
-    def __init__(self, en: str, zh: str | None = None, field: str | None = None):
-        super().__init__(en, zh)
+    def __init__(self, msg, zh: str | None = None, /, field: str | None = None, **fields):
+        super().__init__(msg, zh, **fields)
         self.field = field
-
-    def __reduce__(self):
-        return (type(self), (self.en, self.zh, self.field))
 
 
 @dataclass(frozen=True)
 class DesignNote:
     """A problem that leaves the design computable (a machine turns it into a Finding:
-    ``Finding(note.code, note.zh, note.en)``)."""
+    ``Finding(note.code, note.zh, note.en)``): a code and a message, translated where shown."""
 
     code: str
-    zh: str
-    en: str
+    message: Msg
+
+    @property
+    def en(self) -> str:
+        return self.message.text("en")
+
+    @property
+    def zh(self) -> str:
+        return self.message.text("zh")
+
+    def text(self, lang: str) -> str:
+        return self.message.text(lang)
 
 
 @dataclass(frozen=True)
@@ -285,52 +292,54 @@ def design_incomplete_gear(module: float, z1: int | None = None, z2: int | None 
     ``motion_start``: shaft angle where meshing begins [rad]; ``driver_speed`` ω1 [rad/s].
     """
     if not (math.isfinite(module) and module > 0):
-        raise IntermittentDesignError(f"the module must be positive, not {module!r}",
-                                      f"模数须为正，而不是 {module!r}",
+        raise IntermittentDesignError(N_("the module must be positive, not {module!r}"),
+                                      module=module,
                                       field="module")
     for name, z in (("z1", z1), ("z2", z2), ("teeth", teeth)):
         if z is not None and (isinstance(z, bool) or int(z) != z or z < 1):
-            raise IntermittentDesignError(f"{name} must be a whole number ≥ 1, not {z!r}",
-                                          f"{name} 须为 ≥ 1 的整数，而不是 {z!r}",
+            raise IntermittentDesignError(N_("{name} must be a whole number ≥ 1, not {z!r}"),
+                                          name=name, z=z,
                                           field=name)
     z1 = None if z1 is None else int(z1)
     z2 = None if z2 is None else int(z2)
     teeth = None if teeth is None else int(teeth)
     if motion_span is not None and not 0 < motion_span < TWO_PI:
-        raise IntermittentDesignError(f"the motion span must lie between 0° and 360°, not "
-                                      f"{motion_span * DEG:g}°",
-                                      f"运动角须在 0° 与 360° 之间，而不是 {motion_span * DEG:g}°",
+        raise IntermittentDesignError(N_("the motion span must lie between 0° and 360°, not "
+                                         "{motion_span_deg:g}°"),
+                                      motion_span_deg=motion_span * DEG,
                                       field="motion_span")
     if feed is not None:
         if sprocket_radius is None or not sprocket_radius > 0:
-            raise IntermittentDesignError("a chain feed needs the sprocket's pitch radius",
-                                          "链条送进量需要链轮的分度圆半径",
+            raise IntermittentDesignError(N_("a chain feed needs the sprocket's pitch radius"),
                                           field="sprocket_radius")
         from_feed = feed / sprocket_radius
         if advance is not None and abs(from_feed - advance) > tol:
             raise IntermittentDesignError(
-                f"the feed {feed * 1e3:g} mm on a sprocket of pitch radius "
-                f"{sprocket_radius * 1e3:g} mm is an advance of {from_feed * DEG:.4g}°, not the "
-                f"{advance * DEG:g}° also given: give one of them",
-                f"送进量 {feed * 1e3:g} mm 在分度圆半径 {sprocket_radius * 1e3:g} mm 的链轮上相当于转过 "
-                f"{from_feed * DEG:.4g}°，而不是同时给出的 {advance * DEG:g}°：两者只给一个",
+                N_("the feed {feed_mm:g} mm on a sprocket of pitch radius "
+                   "{sprocket_radius_mm:g} mm is an advance of {from_feed_deg:.4g}°, not the "
+                   "{advance_deg:g}° also given: give one of them"),
+                feed_mm=feed * 1e3, sprocket_radius_mm=sprocket_radius * 1e3,
+                from_feed_deg=from_feed * DEG, advance_deg=advance * DEG,
                 field="feed")
         advance = from_feed
     if advance is not None and not advance > 0:
-        raise IntermittentDesignError(f"the advance must be positive, not {advance * DEG:g}°",
-                                      f"从动轮转角须为正，而不是 {advance * DEG:g}°",
+        raise IntermittentDesignError(N_("the advance must be positive, not {advance_deg:g}°"),
+                                      advance_deg=advance * DEG,
                                       field="advance")
 
-    def adv_text(angle: float, extra: str = "") -> str:
-        """The advance in degrees, with the feed when the brief gave a feed."""
-        parts = ([f"feed {angle * sprocket_radius * 1e3:.4g} mm"] if feed is not None else []) + \
-            ([extra] if extra else [])
-        return f"{angle * DEG:.4g}°" + (f" ({', '.join(parts)})" if parts else "")
+    def adv_text(angle: float, extra=""):
+        """The advance in degrees, with the feed when the brief gave a feed (a message)."""
+        parts = ([Msg(N_("feed {feed_mm:.4g} mm"), feed_mm=angle * sprocket_radius * 1e3)]
+                 if feed is not None else []) + ([extra] if extra else [])
+        if not parts:
+            return f"{angle * DEG:.4g}°"
+        return Msg(N_("{angle:.4g}° ({details})"), angle=angle * DEG,
+                   details=Join(pgettext("separator", ", "), parts))
 
-    def adv_zh(angle: float, extra: str = "") -> str:
-        parts = ([f"送进量 {angle * sprocket_radius * 1e3:.4g} mm"] if feed is not None else []) + \
-            ([extra] if extra else [])
-        return f"{angle * DEG:.4g}°" + (f"（{'，'.join(parts)}）" if parts else "")
+    def options(items):
+        """The whole-tooth alternatives joined by "or", or "no usable value"."""
+        return Join(pgettext("separator", " or "), items) if items else \
+            Msg(N_("no usable value"))
 
     # --- the teeth present
     if teeth is None:
@@ -339,130 +348,109 @@ def design_incomplete_gear(module: float, z1: int | None = None, z2: int | None 
             teeth = int(round(exact))
             if teeth < 1 or abs(TWO_PI * teeth / z1 - motion_span) > tol:
                 lo, hi = _whole(exact)
-                options = " or ".join(f"{TWO_PI * n / z1 * DEG:.4g}° ({n} teeth)"
-                                      for n in (lo, hi) if 1 <= n < z1)
-                opt_zh = " 或 ".join(f"{TWO_PI * n / z1 * DEG:.4g}°（{n} 齿）"
-                                     for n in (lo, hi) if 1 <= n < z1)
                 raise IntermittentDesignError(
-                    f"the motion span {motion_span * DEG:g}° needs z1·φm/360° = {exact:.4g} teeth "
-                    f"on the driver (z1 = {z1}), not a whole number; whole teeth give {options or 'no usable value'}: "
-                    f"change the motion span or z1",
-                    f"运动角 {motion_span * DEG:g}° 要求主动轮上有 z1·φm/360° = {exact:.4g} 个齿"
-                    f"（z1 = {z1}），不是整数；整齿数可得 {opt_zh or '无可用值'}：应改变运动角或 z1",
+                    N_("the motion span {span_deg:g}° needs z1·φm/360° = {exact:.4g} teeth on the "
+                       "driver (z1 = {z1}), not a whole number; whole teeth give {options}: "
+                       "change the motion span or z1"),
+                    span_deg=motion_span * DEG, exact=exact, z1=z1,
+                    options=options([Msg(N_("{angle:.4g}° ({n} teeth)"),
+                                         angle=TWO_PI * n / z1 * DEG, n=n)
+                                     for n in (lo, hi) if 1 <= n < z1]),
                     field="motion_span")
         elif z2 is not None and advance is not None:
             exact = z2 * advance / TWO_PI
             teeth = int(round(exact))
             if teeth < 1 or abs(TWO_PI * teeth / z2 - advance) > tol:
                 lo, hi = _whole(exact)
-                options = " or ".join(adv_text(TWO_PI * n / z2, f"{n} teeth")
-                                      for n in (lo, hi) if n >= 1 and (z1 is None or n < z1))
-                opt_zh = " 或 ".join(adv_zh(TWO_PI * n / z2, f"{n} 齿")
-                                     for n in (lo, hi) if n >= 1 and (z1 is None or n < z1))
                 raise IntermittentDesignError(
-                    f"the advance {adv_text(advance)} needs z2·Δφ2/360° = {exact:.4g} teeth on the "
-                    f"driver (z2 = {z2}), not a whole number; whole teeth give {options or 'no usable value'}: change "
-                    f"the advance or z2",
-                    f"从动轮转角 {adv_zh(advance)} 要求主动轮上有 z2·Δφ2/360° = {exact:.4g} 个齿"
-                    f"（z2 = {z2}），不是整数；整齿数可得 {opt_zh or '无可用值'}：应改变转角或 z2",
+                    N_("the advance {advance} needs z2·Δφ2/360° = {exact:.4g} teeth on the driver "
+                       "(z2 = {z2}), not a whole number; whole teeth give {options}: change the "
+                       "advance or z2"),
+                    advance=adv_text(advance), exact=exact, z2=z2,
+                    options=options([adv_text(TWO_PI * n / z2, Msg(N_("{n} teeth"), n=n))
+                                     for n in (lo, hi) if n >= 1 and (z1 is None or n < z1)]),
                     field="advance")
         else:
             raise IntermittentDesignError(
-                "the teeth on the driver are not fixed: give them, or z1 with the motion span, "
-                "or z2 with the advance (or feed)",
-                "主动轮的齿数未确定：请直接给出，或给出 z1 与运动角，或给出 z2 与转角（或送进量）",
+                N_("the teeth on the driver are not fixed: give them, or z1 with the motion "
+                   "span, or z2 with the advance (or feed)"),
                 field="teeth")
     # --- the driver's notional full count
     if z1 is None:
         if motion_span is None:
-            raise IntermittentDesignError("give z1 (the driver's full tooth count) or the "
-                                          "driver's motion span",
-                                          "请给出 z1（主动轮的完整齿数）或主动轮的运动角",
+            raise IntermittentDesignError(N_("give z1 (the driver's full tooth count) or the "
+                                             "driver's motion span"),
                                           field="z1")
         exact = TWO_PI * teeth / motion_span
         z1 = int(round(exact))
         if z1 < 1 or abs(TWO_PI * teeth / z1 - motion_span) > tol:
             lo, hi = _whole(exact)
-            options = " or ".join(f"{TWO_PI * teeth / z * DEG:.4g}° (z1 = {z})"
-                                  for z in (lo, hi) if z > teeth)
-            opt_zh = " 或 ".join(f"{TWO_PI * teeth / z * DEG:.4g}°（z1 = {z}）"
-                                 for z in (lo, hi) if z > teeth)
             raise IntermittentDesignError(
-                f"with {teeth} teeth the motion span {motion_span * DEG:g}° needs "
-                f"z1 = 360°·z1'/φm = {exact:.4g}, not a whole number; whole z1 give {options or 'no usable value'}: "
-                f"change the motion span or the teeth",
-                f"齿数为 {teeth} 时运动角 {motion_span * DEG:g}° 要求 z1 = 360°·z1'/φm = {exact:.4g}，"
-                f"不是整数；整数 z1 可得 {opt_zh or '无可用值'}：应改变运动角或齿数",
+                N_("with {teeth} teeth the motion span {span_deg:g}° needs z1 = 360°·z1'/φm = "
+                   "{exact:.4g}, not a whole number; whole z1 give {options}: change the motion "
+                   "span or the teeth"),
+                teeth=teeth, span_deg=motion_span * DEG, exact=exact,
+                options=options([Msg(N_("{angle:.4g}° (z1 = {z})"),
+                                     angle=TWO_PI * teeth / z * DEG, z=z)
+                                 for z in (lo, hi) if z > teeth]),
                 field="motion_span")
     # --- the driven wheel
     if z2 is None:
         if advance is None:
-            raise IntermittentDesignError("give z2 (the driven wheel's teeth) or the advance",
-                                          "请给出 z2（从动轮齿数）或从动轮转角",
+            raise IntermittentDesignError(N_("give z2 (the driven wheel's teeth) or the "
+                                             "advance"),
                                           field="z2")
         exact = TWO_PI * teeth / advance
         z2 = int(round(exact))
         if z2 < 1 or abs(TWO_PI * teeth / z2 - advance) > tol:
             lo, hi = _whole(exact)
-            options = " or ".join(adv_text(TWO_PI * teeth / z, f"z2 = {z}")
-                                  for z in (lo, hi) if z >= 1)
-            opt_zh = " 或 ".join(adv_zh(TWO_PI * teeth / z, f"z2 = {z}")
-                                 for z in (lo, hi) if z >= 1)
             raise IntermittentDesignError(
-                f"with {teeth} teeth the advance {adv_text(advance)} needs z2 = 360°·z1'/Δφ2 = "
-                f"{exact:.4g}, not a whole number; whole z2 give {options or 'no usable value'}: change the advance "
-                f"or the teeth",
-                f"齿数为 {teeth} 时从动轮转角 {adv_zh(advance)} 要求 z2 = 360°·z1'/Δφ2 = {exact:.4g}，"
-                f"不是整数；整数 z2 可得 {opt_zh or '无可用值'}：应改变转角或齿数",
+                N_("with {teeth} teeth the advance {advance} needs z2 = 360°·z1'/Δφ2 = {exact:.4g}, "
+                   "not a whole number; whole z2 give {options}: change the advance or the teeth"),
+                teeth=teeth, advance=adv_text(advance), exact=exact,
+                options=options([adv_text(TWO_PI * teeth / z, f"z2 = {z}")
+                                 for z in (lo, hi) if z >= 1]),
                 field="advance")
     # --- consistency of everything given
     if teeth >= z1:
         raise IntermittentDesignError(
-            f"{teeth} teeth on a driver of z1 = {z1} leave no toothless arc for the dwell: "
-            f"the driver needs fewer teeth than z1",
-            f"主动轮 z1 = {z1} 上有 {teeth} 个齿，没有留下停歇所需的无齿弧：齿数须少于 z1",
+            N_("{teeth} teeth on a driver of z1 = {z1} leave no toothless arc for the dwell: "
+               "the driver needs fewer teeth than z1"), teeth=teeth, z1=z1,
             field="teeth")
     phi_m = TWO_PI * teeth / z1
     if motion_span is not None and abs(phi_m - motion_span) > tol:
         raise IntermittentDesignError(
-            f"{teeth} teeth on a driver of z1 = {z1} mesh over 360°·{teeth}/{z1} = "
-            f"{phi_m * DEG:.4g}°, not the motion span {motion_span * DEG:g}° given",
-            f"主动轮 z1 = {z1} 上的 {teeth} 个齿啮合 360°·{teeth}/{z1} = {phi_m * DEG:.4g}°，"
-            f"而不是给定的运动角 {motion_span * DEG:g}°",
+            N_("{teeth} teeth on a driver of z1 = {z1} mesh over 360°·{teeth}/{z1} = "
+               "{phi_m_deg:.4g}°, not the motion span {motion_span_deg:g}° given"),
+            teeth=teeth, z1=z1, phi_m_deg=phi_m * DEG, motion_span_deg=motion_span * DEG,
             field="motion_span")
     adv = TWO_PI * teeth / z2
     if advance is not None and abs(adv - advance) > tol:
         raise IntermittentDesignError(
-            f"{teeth} teeth advance a driven wheel of z2 = {z2} by 360°·{teeth}/{z2} = "
-            f"{adv_text(adv)}, not the required {adv_text(advance)}",
-            f"{teeth} 个齿使 z2 = {z2} 的从动轮转过 360°·{teeth}/{z2} = {adv_zh(adv)}，"
-            f"而不是要求的 {adv_zh(advance)}",
-            field="advance")
+            N_("{teeth} teeth advance a driven wheel of z2 = {z2} by 360°·{teeth}/{z2} = "
+               "{got}, not the required {required}"), teeth=teeth, z2=z2,
+            got=adv_text(adv), required=adv_text(advance), field="advance")
     if z1 < 3 or z2 < 3:
-        raise IntermittentDesignError(f"z1 = {z1} and z2 = {z2}: a gear needs at least 3 teeth",
-                                      f"z1 = {z1}，z2 = {z2}：齿轮至少需要 3 个齿",
+        raise IntermittentDesignError(N_("z1 = {z1} and z2 = {z2}: a gear needs at least 3 "
+                                         "teeth"), z1=z1, z2=z2,
                                       field="z1" if z1 < 3 else "z2")
 
     notes = []
     zmin = _z_min(alpha, ha_star)
     small = [f"z{i} = {z}" for i, z in ((1, z1), (2, z2)) if z < zmin - 1e-9]
     if small:
-        notes.append(DesignNote(
-            "undercut",
-            f"{'、'.join(small)} 少于不根切的最少齿数 {zmin:.1f}，标准齿轮将根切：增加齿数或采用正变位。",
-            f"{', '.join(small)} is below the smallest tooth number without undercut "
-            f"({zmin:.1f}): a standard gear is undercut; use more teeth or a positive shift."))
+        notes.append(DesignNote("undercut", Msg(
+            N_("{gears} is below the smallest tooth number without undercut ({zmin:.1f}): a "
+               "standard gear is undercut; use more teeth or a positive shift."),
+            gears=Join(pgettext("enumeration", ", "), small), zmin=zmin)))
     if z2 % teeth:
         g = gcd(z2, teeth)
-        notes.append(DesignNote(
-            "stations",
-            f"z2 = {z2} 不是 z1' = {teeth} 的整数倍：从动轮每转一周的停歇位置不重复，"
-            f"无法在固定位置制出凹锁止弧（每 {teeth // g} 个循环才回到原位）；从动轮只能做成完整齿轮并另设定位装置，"
-            f"或改 z2 为 z1' 的整数倍。",
-            f"z2 = {z2} is not a multiple of z1' = {teeth}: the driven wheel stops at different "
-            f"places in successive cycles (it repeats only every {teeth // g} cycles), so it cannot "
-            f"carry concave locking arcs at fixed places; make it a complete gear with a separate "
-            f"detent, or make z2 a multiple of z1'."))
+        notes.append(DesignNote("stations", Msg(
+            N_("z2 = {z2} is not a multiple of z1' = {teeth}: the driven wheel stops at different "
+               "places in successive cycles (it repeats only every {cycles} cycles), so it cannot "
+               "carry concave locking arcs at fixed places; make it a complete gear with a "
+               "separate detent, or make z2 a multiple of z1'."),
+            z2=z2, teeth=teeth, cycles=teeth // g)))
     if locking_radius is None:
         locking_radius = module * z1 / 2 + ha_star * module
     return IncompleteGear(float(module), z1, z2, teeth, float(alpha), float(ha_star),
@@ -514,8 +502,8 @@ class IntermittentDocument:
     feed: float | None = q("m", "chain feed per cycle R_s·Δφ2, with a sprocket")
     sprocket_radius: float | None = q("m", "R_s, with a sprocket")
     speed_ratio: float = q("1", "ω2/ω1 = z1/z2 while meshing")
-    motion_dwell_ratio: float = q("1", "k = t_m/t_d (动停比)")
-    tau: float = q("1", "τ = t_m/T (运动系数)")
+    motion_dwell_ratio: float = q("1", "k = t_m/t_d (motion–dwell ratio)")
+    tau: float = q("1", "τ = t_m/T (motion coefficient)")
     stations: int | None = q("1", "dwell positions per driven revolution z2/z1' (null: not whole)")
     driver_speed: float | None = q("rad/s", "ω1, when known")
     times: IntermittentTimes | None = q("", "times at the driver speed, when known")

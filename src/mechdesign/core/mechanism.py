@@ -18,7 +18,7 @@ import numpy as np
 
 from . import kinematics as kin
 from . import polygons as poly
-from .errors import DesignError
+from .errors import DesignError, Join, Msg, N_, _restore, message, pgettext
 from .kinematics import AngleMotion, PointMotion, SlideMotion
 
 
@@ -29,42 +29,28 @@ class AssemblyError(DesignError):
     turn), "slider_crank" (the crank of a slider-crank cannot), "guide_bar" (the slider of a
     guide bar is offset more than the crank pin's distance from the pivot) or "assembly"
     (a group further down the chain cannot close). The message gives the numbers and what to
-    change, in English (``str``) and Chinese (:meth:`text`)."""
+    change (``str``: English; :meth:`text`: a report language). ``reason`` is the diagnosis
+    as a message whose field ``{where}`` is filled with the group and the crank angle."""
 
     def __init__(self, group: str, kind: str, crank_angle_deg: float, count: int, *,
-                 code: str = "assembly", en: str | None = None, zh: str | None = None,
-                 numbers: dict | None = None):
+                 code: str = "assembly", reason: Msg | None = None, numbers: dict | None = None):
         self.group, self.kind = group, kind
         self.crank_angle_deg, self.count = crank_angle_deg, count
         self.code = code
         self.numbers = dict(numbers or {})
-        where_en = (f"group '{group}' ({kind}) cannot be assembled at crank angle "
-                    f"{crank_angle_deg:.2f}° (and {count - 1} more of the angles asked)")
-        where_zh = (f"杆组 '{group}'（{kind}）在曲柄转角 {crank_angle_deg:.2f}° 处"
-                    f"（及所给转角中另外 {count - 1} 处）无法装配")
-        if en is None:
-            en = f"{where_en}: the links are too short to close; check the lengths or the branch"
-            zh = f"{where_zh}：杆长不足以闭合，请检查杆长或装配方案"
-        else:
-            en, zh = en.replace("{where}", where_en), (zh or en).replace("{where}", where_zh)
-        super().__init__(en, zh)
+        where = Msg(N_("group '{group}' ({kind}) cannot be assembled at crank angle {angle:.2f}° "
+                       "(and {more} more of the angles asked)"),
+                    group=group, kind=kind, angle=crank_angle_deg, more=count - 1)
+        if reason is None:
+            reason = Msg(N_("{where}: the links are too short to close; check the lengths or the "
+                            "branch"))
+        super().__init__(Msg(reason.msgid, **reason.fields, where=where))
 
-    def with_hint(self, en: str, zh: str) -> "AssemblyError":
-        """The same error with a sentence appended (e.g. the brief fields to change)."""
-        return AssemblyError(self.group, self.kind, self.crank_angle_deg, self.count,
-                             code=self.code, en=f"{self.en} {en}", zh=f"{self.zh}{zh}",
-                             numbers=self.numbers)
-
-    def __reduce__(self):   # picklable (worker processes) with every attribute
-        return (_rebuild_assembly_error, (self.group, self.kind, self.crank_angle_deg, self.count,
-                                          self.code, self.en, self.zh, self.numbers))
-
-
-def _rebuild_assembly_error(group, kind, angle, count, code, en, zh, numbers) -> AssemblyError:
-    err = AssemblyError(group, kind, angle, count, code=code, en="{where}", zh="{where}",
-                        numbers=numbers)
-    err.args, err.en, err.zh = (en,), en, zh
-    return err
+    def with_hint(self, en, zh: str | None = None) -> "AssemblyError":
+        """The same error with a sentence appended (e.g. the brief fields to change): a
+        message, or its English and Chinese texts."""
+        hinted = Msg(N_("{message} {hint}"), message=self.message, hint=message(en, zh))
+        return _restore(type(self), hinted, {**self.__dict__, "message": hinted})
 
 
 @dataclass(frozen=True)
@@ -486,8 +472,8 @@ def _check_assembled(group, m: Motion, produced: dict[str, str], phi: np.ndarray
         found = None if mech is None else _diagnose(group, m, bad, mech)
         if found is None:
             raise AssemblyError(group.name, group.kind, first, count)
-        code, en, zh, numbers = found
-        raise AssemblyError(group.name, group.kind, first, count, code=code, en=en, zh=zh,
+        code, reason, numbers = found
+        raise AssemblyError(group.name, group.kind, first, count, code=code, reason=reason,
                             numbers=numbers)
 
 
@@ -496,8 +482,9 @@ def _mm(x: float) -> str:
 
 
 def _diagnose(group, m: Motion, bad: np.ndarray, mech: "Mechanism"):
-    """Why ``group`` does not close where ``bad``: (code, en, zh, numbers) with "{where}"
-    standing for the group and the crank angle, or None for a group of another kind."""
+    """Why ``group`` does not close where ``bad``: (code, message, numbers), the message's
+    field ``{where}`` standing for the group and the crank angle, or None for a group of
+    another kind."""
     crank = mech.groups[0] if mech.groups and isinstance(mech.groups[0], Crank) else None
     frame = mech.frame_points
 
@@ -527,8 +514,9 @@ def _diagnose(group, m: Motion, bad: np.ndarray, mech: "Mechanism"):
     return None
 
 
-_FOUR = {"crank": ("crank", "曲柄"), "coupler": ("coupler", "连杆"),
-         "rocker": ("rocker", "摇杆"), "frame": ("frame", "机架")}
+#: the links of a four-bar by their role, as the messages name them
+_FOUR = {"crank": pgettext("link", "crank"), "coupler": pgettext("link", "coupler"),
+         "rocker": pgettext("link", "rocker"), "frame": pgettext("link", "frame")}
 
 
 def _grashof(group, crank, fixed: str, b: float, c: float, d: float):
@@ -541,47 +529,37 @@ def _grashof(group, crank, fixed: str, b: float, c: float, d: float):
     s_, l_ = lengths[order[0]], lengths[order[-1]]
     p_, q_ = lengths[order[1]], lengths[order[2]]
     name = f"{crank.pivot}{crank.tip}{group.c}{fixed}"
-    lens_en = (f"crank a = {_mm(a)} mm, coupler b = {_mm(b)} mm, rocker c = {_mm(c)} mm, "
-               f"frame d = {_mm(d)} mm")
-    lens_zh = (f"曲柄 a = {_mm(a)} mm，连杆 b = {_mm(b)} mm，摇杆 c = {_mm(c)} mm，"
-               f"机架 d = {_mm(d)} mm")
     rel = ">" if s_ + l_ > p_ + q_ else "≤"
-    sums_en = (f"shortest + longest = {_mm(s_)} + {_mm(l_)} = {_mm(s_ + l_)} mm {rel} "
-               f"{_mm(p_)} + {_mm(q_)} = {_mm(p_ + q_)} mm (the other two)")
-    sums_zh = (f"最短杆 + 最长杆 = {_mm(s_)} + {_mm(l_)} = {_mm(s_ + l_)} mm {rel} "
-               f"其余两杆之和 {_mm(p_)} + {_mm(q_)} = {_mm(p_ + q_)} mm")
     if s_ + l_ > p_ + q_:
-        why_en, why_zh = "the Grashof condition fails", "不满足杆长之和条件"
+        why = Msg(N_("the Grashof condition fails"))
     else:
-        en_s, zh_s = _FOUR[order[0]]
-        why_en = (f"the Grashof sums hold but the shortest link is the {en_s}, not the crank "
-                  "or the frame")
-        why_zh = f"杆长之和条件满足，但最短杆是{zh_s}而不是曲柄或机架"
-    fix_en, fix_zh = [], []
+        why = Msg(N_("the Grashof sums hold but the shortest link is the {link}, not the crank "
+                     "or the frame"), link=_FOUR[order[0]])
+    fixes = []
     short1 = a + d - (b + c)           # the folded/extended position: BD = d + a > b + c
     if short1 > _LENGTH_TOL:
-        crank_en = f" or shorten the crank by {_mm(short1)} mm" if short1 < a else ""
-        crank_zh = f"，或将曲柄缩短 {_mm(short1)} mm" if short1 < a else ""
-        fix_en.append(f"make coupler + rocker at least a + d = {_mm(a + d)} mm (lengthen them by "
-                      f"{_mm(short1)} mm in total){crank_en}")
-        fix_zh.append(f"使连杆 + 摇杆 ≥ a + d = {_mm(a + d)} mm（两者共加长 {_mm(short1)} mm）"
-                      f"{crank_zh}")
+        shorter = Msg(N_(" or shorten the crank by {short} mm"), short=_mm(short1)) \
+            if short1 < a else ""
+        fixes.append(Msg(N_("make coupler + rocker at least a + d = {ad} mm (lengthen them by "
+                            "{short} mm in total){crank}"),
+                         ad=_mm(a + d), short=_mm(short1), crank=shorter))
     short2 = abs(b - c) - abs(d - a)   # BD = |d − a| < |b − c|
     if short2 > _LENGTH_TOL:
-        longer_en, longer_zh = ("coupler", "连杆") if b > c else ("rocker", "摇杆")
-        fix_en.append(f"make |b − c| = {_mm(abs(b - c))} mm at most |d − a| = {_mm(abs(d - a))} mm "
-                      f"(shorten the {longer_en} by {_mm(short2)} mm, or lengthen the other)")
-        fix_zh.append(f"使 |b − c| = {_mm(abs(b - c))} mm 不超过 |d − a| = {_mm(abs(d - a))} mm"
-                      f"（将{longer_zh}缩短 {_mm(short2)} mm，或加长另一杆）")
-    if not fix_en:   # a rounding edge: the closure fails by a hair (a change-point linkage)
-        fix_en.append("the lengths sit exactly at the limit (a change-point linkage): change one "
-                      "link by at least 0.01 mm")
-        fix_zh.append("杆长恰在极限上（变点机构）：将某一杆长改变至少 0.01 mm")
-    en = (f"the crank cannot make a full turn (Grashof): four-bar {name} with {lens_en}: "
-          f"{sums_en}; {why_en}, so {{where}}. To let the crank turn: {'; or '.join(fix_en)}")
-    zh = (f"曲柄不能整周转动（不满足曲柄存在条件 / Grashof 条件）：四杆机构 {name}，{lens_zh}；"
-          f"{sums_zh}；{why_zh}，因此{{where}}。要使曲柄整周转动：{'；或'.join(fix_zh)}")
-    return "grashof", en, zh, {"a": a, "b": b, "c": c, "d": d, "s_plus_l": s_ + l_,
+        longer = _FOUR["coupler"] if b > c else _FOUR["rocker"]
+        fixes.append(Msg(N_("make |b − c| = {bc} mm at most |d − a| = {da} mm (shorten the "
+                            "{longer} by {short} mm, or lengthen the other)"),
+                         bc=_mm(abs(b - c)), da=_mm(abs(d - a)), longer=longer, short=_mm(short2)))
+    if not fixes:   # a rounding edge: the closure fails by a hair (a change-point linkage)
+        fixes.append(Msg(N_("the lengths sit exactly at the limit (a change-point linkage): "
+                            "change one link by at least 0.01 mm")))
+    reason = Msg(N_("the crank cannot make a full turn (Grashof): four-bar {name} with crank a = "
+                    "{a} mm, coupler b = {b} mm, rocker c = {c} mm, frame d = {d} mm: shortest + "
+                    "longest = {s} + {l} = {sl} mm {rel} {p} + {q} = {pq} mm (the other two); "
+                    "{why}, so {where}. To let the crank turn: {fixes}"),
+                 name=name, a=_mm(a), b=_mm(b), c=_mm(c), d=_mm(d), s=_mm(s_), l=_mm(l_),
+                 sl=_mm(s_ + l_), rel=rel, p=_mm(p_), q=_mm(q_), pq=_mm(p_ + q_), why=why,
+                 fixes=Join(pgettext("separator", "; or "), fixes))
+    return "grashof", reason, {"a": a, "b": b, "c": c, "d": d, "s_plus_l": s_ + l_,
                                "p_plus_q": p_ + q_}
 
 
@@ -593,16 +571,13 @@ def _slider_crank(group, crank, e: float):
     """The RRP right after the crank: the crank turns fully iff rod ≥ crank + |offset|."""
     a, L = crank.length, group.length
     need = a + abs(e)
-    en = (f"the crank cannot make a full turn: slider-crank with crank a = {_mm(a)} mm, offset "
-          f"e = {_mm(abs(e))} mm (pivot {crank.pivot} from the guide) and rod b = {_mm(L)} mm needs "
-          f"b ≥ a + e = {_mm(need)} mm, so {{where}}. Lengthen the rod by at least "
-          f"{_mm(need - L)} mm (to {_mm(need)} mm), or reduce the crank and the offset by that much "
-          "together")
-    zh = (f"曲柄不能整周转动：曲柄滑块机构曲柄 a = {_mm(a)} mm，偏距 e = {_mm(abs(e))} mm"
-          f"（{crank.pivot} 到导路的距离），连杆 b = {_mm(L)} mm，须 b ≥ a + e = {_mm(need)} mm，"
-          f"因此{{where}}。应将连杆至少加长 {_mm(need - L)} mm（到 {_mm(need)} mm），"
-          "或使曲柄与偏距之和减小同样的量")
-    return "slider_crank", en, zh, {"a": a, "b": L, "e": abs(e), "needed": need}
+    reason = Msg(N_("the crank cannot make a full turn: slider-crank with crank a = {a} mm, offset "
+                    "e = {e} mm (pivot {pivot} from the guide) and rod b = {b} mm needs "
+                    "b ≥ a + e = {need} mm, so {where}. Lengthen the rod by at least {more} mm (to "
+                    "{need} mm), or reduce the crank and the offset by that much together"),
+                 a=_mm(a), e=_mm(abs(e)), pivot=crank.pivot, b=_mm(L), need=_mm(need),
+                 more=_mm(need - L))
+    return "slider_crank", reason, {"a": a, "b": L, "e": abs(e), "needed": need}
 
 
 def _guide_bar(group, crank, d: float, closest: float):
@@ -610,59 +585,50 @@ def _guide_bar(group, crank, d: float, closest: float):
     least distance from the bar's pivot, |d − a|."""
     a, off = crank.length, abs(group.offset)
     gap = abs(d - a)
-    en = (f"guide bar {group.pivot}{group.a}: the slider's path is offset {_mm(off)} mm from the "
-          f"bar's axis, but the crank pin {group.a} comes within |d − a| = {_mm(gap)} mm of the "
-          f"pivot {group.pivot} (crank a = {_mm(a)} mm, frame d = {_mm(d)} mm), so {{where}}. "
-          f"Reduce the offset to at most {_mm(gap)} mm, or make |d − a| ≥ {_mm(off)} mm")
-    zh = (f"导杆 {group.pivot}{group.a}：滑块导路相对导杆轴线偏距 {_mm(off)} mm，而曲柄销 "
-          f"{group.a} 与导杆转动中心 {group.pivot} 的最近距离只有 |d − a| = {_mm(gap)} mm"
-          f"（曲柄 a = {_mm(a)} mm，机架 d = {_mm(d)} mm），因此{{where}}。应将偏距减小到 "
-          f"{_mm(gap)} mm 以内，或使 |d − a| ≥ {_mm(off)} mm")
-    return "guide_bar", en, zh, {"a": a, "d": d, "offset": off, "closest": closest}
+    reason = Msg(N_("guide bar {pivot}{pin}: the slider's path is offset {off} mm from the bar's "
+                    "axis, but the crank pin {pin} comes within |d − a| = {gap} mm of the pivot "
+                    "{pivot} (crank a = {a} mm, frame d = {d} mm), so {where}. Reduce the offset "
+                    "to at most {gap} mm, or make |d − a| ≥ {off} mm"),
+                 pivot=group.pivot, pin=group.a, off=_mm(off), gap=_mm(gap), a=_mm(a), d=_mm(d))
+    return "guide_bar", reason, {"a": a, "d": d, "offset": off, "closest": closest}
 
 
 def _rrr_reach(group, dist: np.ndarray, bad: np.ndarray):
     l1, l2 = group.l1, group.l2
     lo, hi = float(np.min(dist)), float(np.max(dist))
     at = float(dist[bad][0])
-    fix_en, fix_zh = [], []
+    fixes = []
     if hi > l1 + l2 + _LENGTH_TOL:
-        fix_en.append(f"make {group.b}{group.c} + {group.d}{group.c} at least {_mm(hi)} mm "
-                      f"(lengthen them by {_mm(hi - l1 - l2)} mm in total)")
-        fix_zh.append(f"使 {group.b}{group.c} + {group.d}{group.c} ≥ {_mm(hi)} mm"
-                      f"（两杆共加长 {_mm(hi - l1 - l2)} mm）")
+        fixes.append(Msg(N_("make {b}{c} + {d}{c} at least {hi} mm (lengthen them by {more} mm in "
+                            "total)"), b=group.b, c=group.c, d=group.d, hi=_mm(hi),
+                         more=_mm(hi - l1 - l2)))
     if lo < abs(l1 - l2) - _LENGTH_TOL:
-        fix_en.append(f"make their difference at most {_mm(lo)} mm (now {_mm(abs(l1 - l2))} mm)")
-        fix_zh.append(f"使两杆长度差不超过 {_mm(lo)} mm（现为 {_mm(abs(l1 - l2))} mm）")
-    if not fix_en:   # closes by a hair only: round-off at a limit position
-        fix_en.append("the lengths sit exactly at the limit: change one link by at least 0.01 mm")
-        fix_zh.append("杆长恰在极限上：将某一杆长改变至少 0.01 mm")
-    en = (f"{{where}}: links {group.b}{group.c} = {_mm(l1)} mm and {group.d}{group.c} = {_mm(l2)} mm "
-          f"close only while |{group.b}{group.d}| lies between {_mm(abs(l1 - l2))} and "
-          f"{_mm(l1 + l2)} mm, but it is {_mm(at)} mm there and ranges {_mm(lo)} … {_mm(hi)} mm "
-          f"over the angles asked: {'; '.join(fix_en)}")
-    zh = (f"{{where}}：两杆 {group.b}{group.c} = {_mm(l1)} mm、{group.d}{group.c} = {_mm(l2)} mm "
-          f"只在 |{group.b}{group.d}| 介于 {_mm(abs(l1 - l2))} 与 {_mm(l1 + l2)} mm 之间时能闭合，"
-          f"而该处为 {_mm(at)} mm，所给转角内变化范围 {_mm(lo)} … {_mm(hi)} mm：{'；'.join(fix_zh)}")
-    return "assembly", en, zh, {"l1": l1, "l2": l2, "min": lo, "max": hi}
+        fixes.append(Msg(N_("make their difference at most {lo} mm (now {diff} mm)"),
+                         lo=_mm(lo), diff=_mm(abs(l1 - l2))))
+    if not fixes:   # closes by a hair only: round-off at a limit position
+        fixes.append(Msg(N_("the lengths sit exactly at the limit: change one link by at least "
+                            "0.01 mm")))
+    reason = Msg(N_("{where}: links {b}{c} = {l1} mm and {d}{c} = {l2} mm close only while "
+                    "|{b}{d}| lies between {diff} and {sum} mm, but it is {at} mm there and ranges "
+                    "{lo} … {hi} mm over the angles asked: {fixes}"),
+                 b=group.b, c=group.c, d=group.d, l1=_mm(l1), l2=_mm(l2), diff=_mm(abs(l1 - l2)),
+                 sum=_mm(l1 + l2), at=_mm(at), lo=_mm(lo), hi=_mm(hi),
+                 fixes=Join(pgettext("separator", "; "), fixes))
+    return "assembly", reason, {"l1": l1, "l2": l2, "min": lo, "max": hi}
 
 
 def _rrp_reach(group, h: np.ndarray, bad: np.ndarray):
     L, hi = group.length, float(np.max(h))
-    en = (f"{{where}}: the rod {group.b}{group.c} = {_mm(L)} mm cannot reach the guide, from which "
-          f"{group.b} is {_mm(float(h[bad][0]))} mm away there (up to {_mm(hi)} mm over the angles "
-          f"asked): lengthen the rod to at least {_mm(hi)} mm or move the guide closer")
-    zh = (f"{{where}}：连杆 {group.b}{group.c} = {_mm(L)} mm 够不到导路，该处 {group.b} 距导路 "
-          f"{_mm(float(h[bad][0]))} mm（所给转角内最大 {_mm(hi)} mm）：应将连杆加长到至少 "
-          f"{_mm(hi)} mm，或使导路靠近")
-    return "assembly", en, zh, {"length": L, "max": hi}
+    reason = Msg(N_("{where}: the rod {b}{c} = {L} mm cannot reach the guide, from which {b} is "
+                    "{at} mm away there (up to {hi} mm over the angles asked): lengthen the rod to "
+                    "at least {hi} mm or move the guide closer"),
+                 b=group.b, c=group.c, L=_mm(L), at=_mm(float(h[bad][0])), hi=_mm(hi))
+    return "assembly", reason, {"length": L, "max": hi}
 
 
 def _rpr_reach(group, dist: np.ndarray, bad: np.ndarray):
     off, lo = abs(group.offset), float(np.min(dist))
-    en = (f"{{where}}: the slider's path is offset {_mm(off)} mm from the bar's axis, but "
-          f"{group.a} comes within {_mm(lo)} mm of the pivot {group.pivot}: reduce the offset to "
-          f"at most {_mm(lo)} mm")
-    zh = (f"{{where}}：滑块导路相对导杆轴线偏距 {_mm(off)} mm，而 {group.a} 与转动中心 "
-          f"{group.pivot} 的最近距离只有 {_mm(lo)} mm：应将偏距减小到 {_mm(lo)} mm 以内")
-    return "assembly", en, zh, {"offset": off, "min": lo}
+    reason = Msg(N_("{where}: the slider's path is offset {off} mm from the bar's axis, but {a} "
+                    "comes within {lo} mm of the pivot {pivot}: reduce the offset to at most "
+                    "{lo} mm"), off=_mm(off), a=group.a, lo=_mm(lo), pivot=group.pivot)
+    return "assembly", reason, {"offset": off, "min": lo}

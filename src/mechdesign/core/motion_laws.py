@@ -30,6 +30,8 @@ from typing import Callable
 
 import numpy as np
 
+from .errors import pgettext
+
 PI = math.pi
 Quad = tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]
 
@@ -39,8 +41,7 @@ class MotionLaw:
     """One dimensionless motion law; call it with u to get (S, S', S'', S''')."""
 
     key: str
-    name_zh: str
-    name_en: str
+    name_en: str                          # a msgid (context "motion law"): see :meth:`name`
     latex: tuple[str, str, str]          # S(u), S'(u), S''(u), no $ delimiters
     internal_acceleration_jump: bool      # S'' jumps at an interior u
     breakpoints: tuple[float, ...]        # interior u where the definition changes
@@ -48,6 +49,15 @@ class MotionLaw:
     ca: float                             # max |S''| (inf for rigid impact)
     cj: float                             # max |S'''| (inf where S'' jumps)
     _func: Callable[[np.ndarray], tuple] = field(repr=False, compare=False)
+
+    def name(self, lang: str) -> str:
+        """The law's name in ``lang`` (from the catalogue)."""
+        return pgettext("motion law", self.name_en).text(lang)
+
+    @property
+    def name_zh(self) -> str:
+        """The law's name in Chinese."""
+        return self.name("zh")
 
     def __call__(self, u) -> Quad:
         """S(u), S'(u), S''(u), S'''(u) as float arrays with the shape of ``u`` (u ∈ [0, 1])."""
@@ -154,29 +164,30 @@ _T = r"\left(\frac{4\pi u}{3}-\frac{\pi}{6}\right)"
 _MS_MID = _E[1].replace(r"\le \frac{3}{8}", r"\le \frac{7}{8}")
 
 _LAWS = [
-    MotionLaw("constant_velocity", "等速运动规律", "constant velocity",
+    MotionLaw("constant_velocity", pgettext("motion law", "constant velocity").msgid,
               ("u", "1", "0"), False, (), 1.0, math.inf, math.inf, _constant_velocity),
-    MotionLaw("parabolic", "等加速等减速运动规律（抛物线）",
-              "constant acceleration and deceleration (parabolic)",
+    MotionLaw("parabolic",
+              pgettext("motion law", "constant acceleration and deceleration (parabolic)").msgid,
               (_cases(("2u^2", _H1), ("1-2(1-u)^2", _H2)),
                _cases(("4u", _H1), ("4(1-u)", _H2)),
                _cases(("4", _H1), ("-4", _H2))),
               True, (0.5,), 2.0, 4.0, math.inf, _parabolic),
-    MotionLaw("harmonic", "简谐运动规律（余弦加速度）", "simple harmonic (cosine acceleration)",
+    MotionLaw("harmonic", pgettext("motion law", "simple harmonic (cosine acceleration)").msgid,
               (r"\frac{1-\cos \pi u}{2}", r"\frac{\pi}{2}\sin \pi u",
                r"\frac{\pi^2}{2}\cos \pi u"),
               False, (), PI / 2, PI**2 / 2, math.inf, _harmonic),
-    MotionLaw("cycloidal", "摆线运动规律（正弦加速度）", "cycloidal (sine acceleration)",
+    MotionLaw("cycloidal", pgettext("motion law", "cycloidal (sine acceleration)").msgid,
               (r"u-\frac{\sin 2\pi u}{2\pi}", r"1-\cos 2\pi u", r"2\pi\sin 2\pi u"),
               False, (), 2.0, 2 * PI, 4 * PI**2, _cycloidal),
-    MotionLaw("poly345", "3-4-5 多项式运动规律", "3-4-5 polynomial",
+    MotionLaw("poly345", pgettext("motion law", "3-4-5 polynomial").msgid,
               ("10u^3-15u^4+6u^5", "30u^2-60u^3+30u^4", "60u-180u^2+120u^3"),
               False, (), 15 / 8, 10 / math.sqrt(3), 60.0, _poly345),
-    MotionLaw("poly4567", "4-5-6-7 多项式运动规律", "4-5-6-7 polynomial",
+    MotionLaw("poly4567", pgettext("motion law", "4-5-6-7 polynomial").msgid,
               ("35u^4-84u^5+70u^6-20u^7", "140u^3-420u^4+420u^5-140u^6",
                "420u^2-1680u^3+2100u^4-840u^5"),
               False, (), 35 / 16, 84 * math.sqrt(5) / 25, 52.5, _poly4567),
-    MotionLaw("modified_trapezoid", "改进梯形加速度运动规律", "modified trapezoidal acceleration",
+    MotionLaw("modified_trapezoid",
+              pgettext("motion law", "modified trapezoidal acceleration").msgid,
               (_cases((_KT + r"\left(2u-\frac{\sin 4\pi u}{2\pi}\right)", _E[0]),
                       (_KT + r"\left(4\pi u^2+(2-\pi)u+\frac{\pi}{16}-\frac{1}{2\pi}\right)", _E[1]),
                       (_KT + r"\left((2+2\pi)u-\frac{\pi}{2}+\frac{\sin 4\pi u}{2\pi}\right)", _E[2]),
@@ -192,7 +203,7 @@ _LAWS = [
                       (r"\frac{8\pi}{\pi+2}\sin 4\pi u", _E[4]))),
               False, (1 / 8, 3 / 8, 5 / 8, 7 / 8), 2.0, 8 * PI / (PI + 2),
               32 * PI**2 / (PI + 2), _modified_trapezoid),
-    MotionLaw("modified_sine", "改进正弦加速度运动规律", "modified sine acceleration",
+    MotionLaw("modified_sine", pgettext("motion law", "modified sine acceleration").msgid,
               (_cases((_MT + r"\left(\pi u-\frac{\sin 4\pi u}{4}\right)", _E[0]),
                       (_MT + r"\left(\pi u+2-\frac{9}{4}\cos" + _T + r"\right)", _MS_MID),
                       (_MT + r"\left(\pi u+4-\frac{\sin 4\pi u}{4}\right)", _E[4])),

@@ -46,6 +46,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from .errors import Msg, N_
 from .fourbar import SynthesisError
 
 TWO_PI = 2.0 * np.pi
@@ -184,14 +185,15 @@ def sweep(ds: RockerDesign, n: int = 721, alpha=None) -> Sweep:
 
 def _check_data(frame, output_rocker, dalpha, dbeta):
     if not (np.isfinite(frame) and frame > 0):
-        raise SynthesisError(f"frame length {frame} must be positive", f"机架长度 {frame} 须为正")
+        raise SynthesisError(N_("frame length {frame} must be positive"), frame=frame)
     if not (np.isfinite(output_rocker) and output_rocker > 0):
-        raise SynthesisError(f"output rocker length {output_rocker} must be positive",
-                             f"输出摇杆长度 {output_rocker} 须为正")
-    for name, zh, x in (("input swing", "输入摆角", dalpha), ("output swing", "输出摆角", dbeta)):
+        raise SynthesisError(N_("output rocker length {output_rocker} must be positive"),
+                             output_rocker=output_rocker)
+    for name, x in ((N_("input swing {x_deg:.6g}°"), dalpha),
+                    (N_("output swing {x_deg:.6g}°"), dbeta)):
         if not (np.isfinite(x) and 0.0 < abs(x) < np.pi):
-            raise SynthesisError(f"{name} {np.degrees(x):.6g}° must be between 0° and 180° "
-                                 "(a rocker)", f"{zh} {np.degrees(x):.6g}° 须在 0° 与 180° 之间（摇杆）")
+            raise SynthesisError(N_("{swing} must be between 0° and 180° (a rocker)"),
+                                 swing=Msg(name, x_deg=np.degrees(x)))
 
 
 def design_two_position(frame: float, output_rocker: float, alpha1: float, dalpha: float,
@@ -201,32 +203,27 @@ def design_two_position(frame: float, output_rocker: float, alpha1: float, dalph
     continuous one-way motion on one branch."""
     _check_data(frame, output_rocker, dalpha, dbeta)
     a, b = (float(x) for x in two_position(frame, output_rocker, alpha1, dalpha, beta1, dbeta))
-    where = (f"with the input rocker starting at {np.degrees(alpha1):.6g}° and the output "
-             f"at {np.degrees(beta1):.6g}°")
-    where_zh = f"输入摇杆起始角 {np.degrees(alpha1):.6g}°、输出摇杆起始角 {np.degrees(beta1):.6g}° 时"
+    where = Msg(N_("with the input rocker starting at {alpha1_deg:.6g}° and the output at "
+                   "{beta1_deg:.6g}°"), alpha1_deg=np.degrees(alpha1), beta1_deg=np.degrees(beta1))
     if not (np.isfinite(a) and a > 0):
-        raise SynthesisError(f"{where} the loop equations give an input rocker of "
-                             f"{a * 1e3:.6g} mm (not a positive length): choose other start angles",
-                             f"两位置综合无实解：{where_zh}，封闭方程给出输入摇杆长 {a * 1e3:.6g} mm"
-                             "（不是正的长度）：应另选起始角")
+        raise SynthesisError(N_("{where} the loop equations give an input rocker of "
+                                "{a_mm:.6g} mm (not a positive length): choose other start "
+                                "angles"), where=where, a_mm=a * 1e3)
     branch = branch_of((frame, a, output_rocker), alpha1, beta1)
     ds = RockerDesign(frame, a, b, output_rocker, float(alpha1), float(dalpha), float(beta1),
                       float(dbeta), branch)
     sw = sweep(ds, n)
     if not sw.assembled:
-        raise SynthesisError(f"{where} (a = {a * 1e3:.6g} mm, b = {b * 1e3:.6g} mm) the linkage "
-                             "cannot be assembled over the whole input swing",
-                             f"{where_zh}（a = {a * 1e3:.6g} mm，b = {b * 1e3:.6g} mm）机构在整个输入摆程内"
-                             "不能装配：应另选起始角")
+        raise SynthesisError(N_("{where} (a = {a_mm:.6g} mm, b = {b_mm:.6g} mm) the linkage "
+                                "cannot be assembled over the whole input swing"),
+                             where=where, a_mm=a * 1e3, b_mm=b * 1e3)
     if abs(sw.beta[0] - beta1) > 1e-9 or not sw.monotonic or abs(sw.swing - dbeta) > 1e-7:
         raise SynthesisError(
-            f"{where} (a = {a * 1e3:.6g} mm, b = {b * 1e3:.6g} mm) the two positions are not "
-            f"joined by a one-way motion on one assembly branch (the output turns "
-            f"{np.degrees(sw.swing):.6g}° instead of {np.degrees(dbeta):.6g}°, or reverses): "
-            "choose other start angles",
-            f"{where_zh}（a = {a * 1e3:.6g} mm，b = {b * 1e3:.6g} mm）两个位置不能在同一装配方案上"
-            f"单向连续到达（输出摆过 {np.degrees(sw.swing):.6g}° 而不是 {np.degrees(dbeta):.6g}°，"
-            "或中途反向）：应另选起始角")
+            N_("{where} (a = {a_mm:.6g} mm, b = {b_mm:.6g} mm) the two positions are not "
+               "joined by a one-way motion on one assembly branch (the output turns "
+               "{swing_deg:.6g}° instead of {dbeta_deg:.6g}°, or reverses): choose other "
+               "start angles"), where=where, a_mm=a * 1e3, b_mm=b * 1e3,
+            swing_deg=np.degrees(sw.swing), dbeta_deg=np.degrees(dbeta))
     return ds
 
 
@@ -275,8 +272,8 @@ def best_start(frame: float, output_rocker: float, dalpha: float, dbeta: float,
     _check_data(frame, output_rocker, dalpha, dbeta)
     lo, hi = length_bounds
     if not (0 < lo < hi):
-        raise SynthesisError(f"length bounds {lo * 1e3:.6g} … {hi * 1e3:.6g} mm are not an interval",
-                             f"杆长范围 {lo * 1e3:.6g} … {hi * 1e3:.6g} mm 不是一个区间")
+        raise SynthesisError(N_("length bounds {lo_mm:.6g} … {hi_mm:.6g} mm are not an "
+                                "interval"), lo_mm=lo * 1e3, hi_mm=hi * 1e3)
     grid = np.arange(0.0, TWO_PI, step)
     best = (-1.0, None)
     for a1 in np.array_split(grid, max(1, len(grid) // 30)):
@@ -288,17 +285,15 @@ def best_start(frame: float, output_rocker: float, dalpha: float, dbeta: float,
             best = (float(g[k]), (float(A1[k]), float(B1[k])))
     if best[1] is None or best[0] <= 0:
         extra = ("" if ratio_limit is None else
-                 f" and a peak velocity ratio |dβ/dα| ≤ {ratio_limit:.6g}")
+                 Msg(N_(" and a peak velocity ratio |dβ/dα| ≤ {ratio:.6g}"), ratio=ratio_limit))
         raise SynthesisError(
-            f"no start position gives a valid linkage with the input rocker and the coupler "
-            f"between {lo * 1e3:.6g} and {hi * 1e3:.6g} mm{extra} (frame {frame * 1e3:.6g} mm, "
-            f"output rocker {output_rocker * 1e3:.6g} mm, swings {np.degrees(dalpha):.6g}° and "
-            f"{np.degrees(dbeta):.6g}°): widen the length range or relax the ratio limit",
-            f"综合无实解：输入摇杆与连杆长度在 {lo * 1e3:.6g} 与 {hi * 1e3:.6g} mm 之间"
-            + ("" if ratio_limit is None else f"且最大速比 |dβ/dα| ≤ {ratio_limit:.6g}")
-            + f"时，没有任何起始位置能得到可用的机构（机架 {frame * 1e3:.6g} mm，输出摇杆 "
-            f"{output_rocker * 1e3:.6g} mm，摆角 {np.degrees(dalpha):.6g}° 与 {np.degrees(dbeta):.6g}°）："
-            "应放宽杆长范围或速比限制")
+            N_("no start position gives a valid linkage with the input rocker and the coupler "
+               "between {lo_mm:.6g} and {hi_mm:.6g} mm{extra} (frame {frame_mm:.6g} mm, output "
+               "rocker {rocker_mm:.6g} mm, swings {dalpha_deg:.6g}° and {dbeta_deg:.6g}°): widen "
+               "the length range or relax the ratio limit"),
+            lo_mm=lo * 1e3, hi_mm=hi * 1e3, extra=extra, frame_mm=frame * 1e3,
+            rocker_mm=output_rocker * 1e3, dalpha_deg=np.degrees(dalpha),
+            dbeta_deg=np.degrees(dbeta))
     g_best, x = best[0], np.array(best[1])
     h = step
     offsets = np.arange(-4, 5)

@@ -17,12 +17,12 @@ from .sheet import (LabelPlacer, Sheet, TitleInfo, fit_height, format_number, fr
 DEG = 180.0 / np.pi
 MU_PHI = (1.0, 1.25, 1.5, 2.0)          # angle scales [°/mm], preferred first
 STATE_NAMES = LabelTable({
-    "rise": pgettext("cycle state", "rise"),
-    "return": pgettext("cycle state", "return"),
+    "rise": pgettext("cycle sheet", "rise"),
+    "return": pgettext("cycle sheet", "return"),
     "dwell_high": N_("dwell (high)"),
     "dwell_low": N_("dwell (low)"),
     "move": N_("move"),
-    "dwell": pgettext("cycle state", "dwell"),
+    "dwell": pgettext("cycle sheet", "dwell"),
 })
 LABELS = LabelTable({
     "title": N_("Motion cycle diagram (linear)"),
