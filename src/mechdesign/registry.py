@@ -27,7 +27,7 @@ class Entry:
     document: str               # "module:function" results → results.json document
     report: str                 # module with make_figures(r, dir, lang) and context(r, brief, figs, lang)
     example: str                # file name in designs/
-    # (zh label, en label, unit, dotted path in the results document, factor SI → unit)
+    # (label: N_(English), unit, dotted path in the results document, factor SI → unit)
     summary: tuple = ()
     results: str = ""           # "module:Class" of the typed results document
     checks: str = ""            # "module:function" feasibility checks(params, keep), run once

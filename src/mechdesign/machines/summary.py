@@ -9,14 +9,27 @@ import math
 from typing import Any
 
 def _rows(machine: str) -> tuple:
-    """(zh label, en label, unit, dotted path in the results document, factor SI → unit),
-    as the machine's registry entry lists them."""
+    """(label (English, translated where shown), unit, dotted path in the results document,
+    factor SI → unit), as the machine's registry entry lists them."""
     from ..registry import entry
 
     try:
         return entry(machine).summary
     except KeyError:
         return ()
+
+
+def entry_row(row: tuple, lang: str) -> tuple:
+    """(label in ``lang``, unit, path, factor) of a registry summary row: (N_(English label),
+    unit, path, factor), or (zh label, en label, unit, path, factor) where a machine's entry
+    still writes both."""
+    if len(row) == 5:
+        zh, en, unit, path, factor = row
+        return (zh if lang == "zh" else en), unit, path, factor
+    from ..i18n import tr
+
+    label, unit, path, factor = row
+    return tr(lang)(label), unit, path, factor
 
 
 def _get(document: Any, path: str) -> Any:
@@ -48,11 +61,11 @@ def _show(value: Any, factor: float) -> str | None:
 def summary_rows(machine: str, document: dict, lang: str) -> list[tuple[str, str]]:
     """(label with unit, value) pairs of the machine's key results present in ``document``."""
     rows = []
-    for zh, en, unit, path, factor in _rows(machine):
+    for row in _rows(machine):
+        label, unit, path, factor = entry_row(row, lang)
         text = _show(_get(document, path), factor)
         if text is None:
             continue
-        label = zh if lang == "zh" else en
         rows.append((f"{label} [{unit}]" if unit else label, text))
     return rows
 

@@ -307,6 +307,7 @@ def _label(text: str) -> str:
 def key_rows(machine: str, document: dict, lang: str) -> list[list[str]]:
     """[quantity, value, unit]: the machine's registry summary, then the probed quantities
     it does not give."""
+    from ..machines.summary import entry_row
     from ..registry import entry
 
     zh = lang == "zh"
@@ -315,11 +316,12 @@ def key_rows(machine: str, document: dict, lang: str) -> list[list[str]]:
         listed = entry(machine).summary
     except KeyError:
         listed = ()
-    for lzh, len_, unit, path, factor in listed:
+    for row in listed:
+        label, unit, path, factor = entry_row(row, lang)
         text = _show(_get(document, path), factor)
         if text is None:
             continue
-        rows.append([_label(lzh if zh else len_), text, unit or "—"])
+        rows.append([_label(label), text, unit or "—"])
         leaf = path.rsplit(".", 1)[-1]
         paths.add(_SAME.get(leaf, leaf))
     for leaf, lzh, len_, unit, factor in _PROBES:
