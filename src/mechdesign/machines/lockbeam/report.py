@@ -156,7 +156,7 @@ def _seed_figure(path: Path, lang: str, b):
                 label=(f"{f(s.input_rocker * MM, 0)}/{f(s.coupler * MM, 0)} mm"))
         ax.axhline(b.output_swing * DEG, color="C3", ls="--", lw=0.8,
                    label=_("required") + f" {f(b.output_swing * DEG, 1)}°")
-        for a1, _, _ in s.check.starts:
+        for a1, _b1, _g in s.check.starts:
             ax.plot([a1 * DEG], [b.output_swing * DEG], "o", color="C3", ms=4)
         ax.set_xlim(0, 360)
         ax.set_xticks(np.arange(0, 361, 30))
