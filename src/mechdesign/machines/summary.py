@@ -19,19 +19,6 @@ def _rows(machine: str) -> tuple:
         return ()
 
 
-def entry_row(row: tuple, lang: str) -> tuple:
-    """(label in ``lang``, unit, path, factor) of a registry summary row: (N_(English label),
-    unit, path, factor), or (zh label, en label, unit, path, factor) where a machine's entry
-    still writes both."""
-    if len(row) == 5:
-        zh, en, unit, path, factor = row
-        return (zh if lang == "zh" else en), unit, path, factor
-    from ..i18n import tr
-
-    label, unit, path, factor = row
-    return tr(lang)(label), unit, path, factor
-
-
 def _get(document: Any, path: str) -> Any:
     node = document
     for part in path.split("."):
@@ -60,9 +47,11 @@ def _show(value: Any, factor: float) -> str | None:
 
 def summary_rows(machine: str, document: dict, lang: str) -> list[tuple[str, str]]:
     """(label with unit, value) pairs of the machine's key results present in ``document``."""
+    from ..registry import summary_row
+
     rows = []
     for row in _rows(machine):
-        label, unit, path, factor = entry_row(row, lang)
+        label, unit, path, factor = summary_row(row, lang)
         text = _show(_get(document, path), factor)
         if text is None:
             continue

@@ -307,8 +307,7 @@ def _label(text: str) -> str:
 def key_rows(machine: str, document: dict, lang: str) -> list[list[str]]:
     """[quantity, value, unit]: the machine's registry summary, then the probed quantities
     it does not give."""
-    from ..machines.summary import entry_row
-    from ..registry import entry
+    from ..registry import entry, summary_row
 
     zh = lang == "zh"
     rows, paths = [], set()
@@ -317,7 +316,7 @@ def key_rows(machine: str, document: dict, lang: str) -> list[list[str]]:
     except KeyError:
         listed = ()
     for row in listed:
-        label, unit, path, factor = entry_row(row, lang)
+        label, unit, path, factor = summary_row(row, lang)
         text = _show(_get(document, path), factor)
         if text is None:
             continue
