@@ -27,10 +27,23 @@ class Entry:
     document: str               # "module:function" results → results.json document
     report: str                 # module with make_figures(r, dir, lang) and context(r, brief, figs, lang)
     example: str                # file name in designs/
-    # (zh label, en label, unit, dotted path in the results document, factor SI → unit)
+    # (label: N_(English), unit, dotted path in the results document, factor SI → unit)
     summary: tuple = ()
     results: str = ""           # "module:Class" of the typed results document
     checks: str = ""            # "module:function" feasibility checks(params, keep), run once
+
+
+def summary_row(row: tuple, lang: str) -> tuple:
+    """(label in ``lang``, unit, path, factor) of an entry's summary row: (N_(English label),
+    unit, path, factor), or (zh label, en label, unit, path, factor) where an entry still
+    writes both."""
+    if len(row) == 5:
+        zh, en, unit, path, factor = row
+        return (zh if lang == "zh" else en), unit, path, factor
+    from .i18n import tr
+
+    label, unit, path, factor = row
+    return tr(lang)(label), unit, path, factor
 
 
 def resolve(ref: str) -> Any:

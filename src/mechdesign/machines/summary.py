@@ -9,8 +9,8 @@ import math
 from typing import Any
 
 def _rows(machine: str) -> tuple:
-    """(zh label, en label, unit, dotted path in the results document, factor SI → unit),
-    as the machine's registry entry lists them."""
+    """(label (English, translated where shown), unit, dotted path in the results document,
+    factor SI → unit), as the machine's registry entry lists them."""
     from ..registry import entry
 
     try:
@@ -47,12 +47,14 @@ def _show(value: Any, factor: float) -> str | None:
 
 def summary_rows(machine: str, document: dict, lang: str) -> list[tuple[str, str]]:
     """(label with unit, value) pairs of the machine's key results present in ``document``."""
+    from ..registry import summary_row
+
     rows = []
-    for zh, en, unit, path, factor in _rows(machine):
+    for row in _rows(machine):
+        label, unit, path, factor = summary_row(row, lang)
         text = _show(_get(document, path), factor)
         if text is None:
             continue
-        label = zh if lang == "zh" else en
         rows.append((f"{label} [{unit}]" if unit else label, text))
     return rows
 

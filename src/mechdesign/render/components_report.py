@@ -17,11 +17,12 @@ import numpy as np
 
 from ..core.cycle import STATES, TWO_PI, Constraint, CycleDiagram, PhaseRef, resolve
 from . import cycle_figures as cf
+from ..i18n import N_, tr
 from .fmt import e, f, md_paragraphs, md_text, mpl_text
 
 DEG = 180.0 / np.pi
 MM = 1e3
-_OK = {"zh": ("合格", "不合格"), "en": ("PASS", "FAIL")}
+_OK = (N_("PASS"), N_("FAIL"))
 
 
 def _heads(level: int) -> tuple[str, str]:
@@ -56,7 +57,8 @@ def _states_used(cycle: CycleDiagram, lang: str) -> dict[str, str]:
 def _ref_text(cycle: CycleDiagram, ref: PhaseRef, lang: str) -> str:
     act = cycle.actuator(ref.actuator)
     ph = resolve(cycle, ref)
-    return f"{act.name(lang)}{'' if lang == 'zh' else ' '}{ph.name(lang)}"
+    _ = tr(lang)
+    return _("{actuator} {phase}", actuator=act.name(lang), phase=ph.name(lang))
 
 
 def constraint_text(cycle: CycleDiagram, c: Constraint, lang: str) -> str:
@@ -65,11 +67,9 @@ def constraint_text(cycle: CycleDiagram, c: Constraint, lang: str) -> str:
         return c.text(lang)
     a, b = _ref_text(cycle, c.a, lang), _ref_text(cycle, c.b, lang)
     m = _deg(c.margin, 1)
-    if lang == "zh":
-        return (f"{a}在{b}开始前至少 {m}° 结束" if c.kind == "before" else
-                f"{a}全程处于{b}之内（两端余量 ≥ {m}°）")
-    return (f"{a} ends at least {m}° before {b} starts" if c.kind == "before" else
-            f"{a} lies within {b} (≥ {m}° to spare at both ends)")
+    _ = tr(lang)
+    return (_("{a} ends at least {m}° before {b} starts", a=a, b=b, m=m) if c.kind == "before" else
+            _("{a} lies within {b} (≥ {m}° to spare at both ends)", a=a, b=b, m=m))
 
 
 def _links(cycle: CycleDiagram, checks):
@@ -106,7 +106,7 @@ def cycle_context(cycle: CycleDiagram, lang: str, figs: dict[str, str], checks,
                   level: int = 2, label: str = "cycle") -> dict:
     """Strings and rows of ``cycle_section``: the phase table (degrees and seconds), the
     period formula, the stage's constraint checks with their slack, the verification rows."""
-    zh = lang == "zh"
+    _ = tr(lang)
     h, h3 = _heads(level)
     T, rpm = cycle.period, cycle.speed_rpm
     rows = []
@@ -116,7 +116,7 @@ def cycle_context(cycle: CycleDiagram, lang: str, figs: dict[str, str], checks,
             end = 360.0 if end < 1e-6 else end
             rows.append([md_text(a.name(lang)) if i == 0 else "", md_text(ph.name(lang)),
                          f"{_deg(ph.start)} – {f(end, 1)}", _deg(ph.span), f(t0, 3), f(dt, 3)])
-    ok_word, bad_word = _OK[lang]
+    ok_word, bad_word = (_(word) for word in _OK)
     check_rows, failed = [], []
     for i, chk in enumerate(checks, 1):
         text = md_text(constraint_text(cycle, chk.constraint, lang))
@@ -125,12 +125,10 @@ def cycle_context(cycle: CycleDiagram, lang: str, figs: dict[str, str], checks,
         if not chk.ok:
             failed.append(text)
     spans = [abs(sum(p.span for p in a.phases) - TWO_PI) for a in cycle.actuators]
-    durations = [abs(sum(dt for _, _, dt in cycle.phase_times(a.key)) - T) for a in cycle.actuators]
+    durations = [abs(sum(dt for _ph, _t0, dt in cycle.phase_times(a.key)) - T) for a in cycle.actuators]
     verify = [
-        [("各执行构件相位角之和 − 360°（最大）/°" if zh else
-          "sum of each actuator's phase angles − 360° (largest) /°"), e(max(spans) * DEG)],
-        [("各执行构件持续时间之和 − T（最大）/s" if zh else
-          "sum of each actuator's phase durations − T (largest) /s"), e(max(durations))],
+        [_("sum of each actuator's phase angles − 360° (largest) /°"), e(max(spans) * DEG)],
+        [_("sum of each actuator's phase durations − T (largest) /s"), e(max(durations))],
     ]
     return {
         "h": h, "h3": h3, "label": label,
@@ -151,25 +149,25 @@ def morphology_context(m, lang: str, level: int = 2, label: str = "morph") -> di
     """Strings and rows of ``morphology_section`` for a
     :class:`mechdesign.brief.components.Morphology`: the matrix (functions × options, the
     chosen one bold), the count of schemes N = Π k_i as a formula, the chosen scheme."""
-    zh = lang == "zh"
+    _ = tr(lang)
     h, h3 = _heads(level)
     width = max(m.counts)
-    head = ["分功能" if zh else "function"] + [(f"方案 {j + 1}" if zh else f"option {j + 1}")
+    head = [_("function")] + [_("option {j}", j=j + 1)
                                              for j in range(width)]
     align = "|:--|" + ":--|" * width
     rows, chosen = [], []
     for i, fn in enumerate(m.functions):
-        name = md_text(fn.name_zh if zh else fn.name_en)
+        name = md_text(fn.name_zh if _.zh else fn.name_en)
         cells = []
         for j in range(width):
             if j >= len(fn.options):
                 cells.append("—")
                 continue
-            text = md_text(fn.options[j][0 if zh else 1])
+            text = md_text(fn.options[j][0 if _.zh else 1])
             cells.append(f"**{text}** ✓" if j == fn.chosen else text)
         rows.append([f"{chr(ord('A') + i)}. {name}" if i < 26 else name] + cells)
         chosen.append([f"{chr(ord('A') + i)}{fn.chosen + 1}" if i < 26 else str(fn.chosen + 1),
-                       name, md_text(fn.options[fn.chosen][0 if zh else 1])])
+                       name, md_text(fn.options[fn.chosen][0 if _.zh else 1])])
     counts = m.counts
     product = r" \times ".join(str(k) for k in counts)
     if len(set(counts)) == 1 and len(counts) > 1:
@@ -177,7 +175,7 @@ def morphology_context(m, lang: str, level: int = 2, label: str = "morph") -> di
     else:
         eq = rf"N = \prod_i k_i = {product} = {m.scheme_count}"
     code = " + ".join(c[0] for c in chosen)
-    reasons = md_paragraphs(m.reasons_zh if zh else m.reasons_en)
+    reasons = md_paragraphs(m.reasons_zh if _.zh else m.reasons_en)
     return {"h": h, "h3": h3, "label": label, "head": head, "align": align, "rows": rows,
             "eq_count": eq, "count": str(m.scheme_count), "n_functions": str(len(counts)),
             "chosen": chosen, "code": code, "reasons": reasons}
@@ -197,11 +195,11 @@ def make_intermittent_figures(g, curves, fig_dir: Path, lang: str,
     """The driven wheel's angle and velocity against the driver angle (``curves``: the
     stage's core.intermittent.IntermittentCurves of the gear ``g``): key ``motion``."""
     theta, dm = curves.theta, curves.motion
-    zh = lang == "zh"
+    _ = tr(lang)
     jump = curves.jump
     if dm.omega is not None:
         vel = dm.omega
-        vel_label = r"从动轮角速度 $\omega_2$ (rad/s)" if zh else r"driven speed $\omega_2$ (rad/s)"
+        vel_label = _("driven speed $\\omega_2$ (rad/s)")
         jump_text = rf"$\Delta\omega_2$ = {f(jump.omega2, 3)} rad/s"
     else:
         vel, vel_label = dm.ratio, r"$d\varphi_2/d\theta$"
@@ -218,65 +216,65 @@ def intermittent_context(g, curves, lang: str, figs: dict[str, str], level: int 
     """Strings, rows and formulas (numbers substituted) of ``intermittent_section`` for a
     :class:`mechdesign.core.intermittent.IncompleteGear` and the stage's ``curves``
     (core.intermittent.IntermittentCurves)."""
-    zh = lang == "zh"
+    _ = tr(lang)
     h, h3 = _heads(level)
     m = g.module * MM
     z1, z2, n = g.z1, g.z2, g.teeth
     rows = []
 
-    def row(zh_name, en_name, sym, formula, value, unit):
-        rows.append([zh_name if zh else en_name, sym, formula, value, unit])
+    def row(name, sym, formula, value, unit):
+        rows.append([_(name), sym, formula, value, unit])
 
-    row("模数", "module", "$m$", "—", f(m, 2), "mm")
-    row("主动轮假想整齿数", "driver's notional full tooth count", "$z_1$", "—", str(z1), "—")
-    row("主动轮实有齿数", "teeth present on the driver", "$z_1'$", "—", str(n), "—")
-    row("从动轮齿数", "driven wheel teeth", "$z_2$", "—", str(z2), "—")
-    row("主动轮分度圆半径", "driver pitch radius", "$r_1$", f"$m z_1/2 = {f(m, 2)}\\times{z1}/2$",
+    row(N_("module"), "$m$", "—", f(m, 2), "mm")
+    row(N_("driver's notional full tooth count"), "$z_1$", "—", str(z1), "—")
+    row(N_("teeth present on the driver"), "$z_1'$", "—", str(n), "—")
+    row(N_("driven wheel teeth"), "$z_2$", "—", str(z2), "—")
+    row(N_("driver pitch radius"), "$r_1$", f"$m z_1/2 = {f(m, 2)}\\times{z1}/2$",
         f(g.r1 * MM, 2), "mm")
-    row("从动轮分度圆半径", "driven pitch radius", "$r_2$", f"$m z_2/2 = {f(m, 2)}\\times{z2}/2$",
+    row(N_("driven pitch radius"), "$r_2$", f"$m z_2/2 = {f(m, 2)}\\times{z2}/2$",
         f(g.r2 * MM, 2), "mm")
-    row("主动轮齿顶圆半径", "driver tip radius", "$r_{a1}$",
+    row(N_("driver tip radius"), "$r_{a1}$",
         f"$r_1 + h_a^* m = {f(g.r1 * MM, 2)} + {f(g.ha_star, 2)}\\times{f(m, 2)}$", f(g.ra1 * MM, 2), "mm")
-    row("从动轮齿顶圆半径", "driven tip radius", "$r_{a2}$",
+    row(N_("driven tip radius"), "$r_{a2}$",
         f"$r_2 + h_a^* m = {f(g.r2 * MM, 2)} + {f(g.ha_star, 2)}\\times{f(m, 2)}$", f(g.ra2 * MM, 2), "mm")
-    row("中心距", "centre distance", "$a$", f"$m(z_1 + z_2)/2 = {f(m, 2)}\\times({z1} + {z2})/2$",
+    row(N_("centre distance"), "$a$", f"$m(z_1 + z_2)/2 = {f(m, 2)}\\times({z1} + {z2})/2$",
         f(g.centre_distance * MM, 2), "mm")
-    row("锁止弧半径", "locking-arc radius", "$R_L$", "$R_L = r_{a1}$", f(g.locking_radius * MM, 2), "mm")
-    row("主动轮运动角", "driver's motion angle", "$\\varphi_m$",
+    row(N_("locking-arc radius"), "$R_L$", "$R_L = r_{a1}$", f(g.locking_radius * MM, 2), "mm")
+    row(N_("driver's motion angle"), "$\\varphi_m$",
         f"$360°\\,z_1'/z_1 = 360°\\times{n}/{z1}$", _deg(g.motion_angle, 2), "°")
-    row("主动轮停歇角", "dwell angle", "$\\varphi_d$", "$360° - \\varphi_m$", _deg(g.dwell_angle, 2), "°")
-    row("从动轮每次转角", "driven advance per cycle", "$\\Delta\\varphi_2$",
+    row(N_("dwell angle"), "$\\varphi_d$", "$360° - \\varphi_m$", _deg(g.dwell_angle, 2), "°")
+    row(N_("driven advance per cycle"), "$\\Delta\\varphi_2$",
         f"$360°\\,z_1'/z_2 = 360°\\times{n}/{z2}$", _deg(g.advance, 2), "°")
     if g.feed is not None:
-        row("链轮分度圆半径", "sprocket pitch radius", "$R_s$", "—", f(g.sprocket_radius * MM, 2), "mm")
-        row("每次送进量", "feed per cycle", "$L$",
+        row(N_("sprocket pitch radius"), "$R_s$", "—", f(g.sprocket_radius * MM, 2), "mm")
+        row(N_("feed per cycle"), "$L$",
             f"$R_s\\,\\Delta\\varphi_2 = {f(g.sprocket_radius * MM, 2)}\\times{f(g.advance, 4)}$",
             f(g.feed * MM, 2), "mm")
-    row("啮合时传动比", "ratio while meshing", "$i_{12}$", f"$z_2/z_1 = {z2}/{z1}$", f(z2 / z1, 4), "—")
-    row("动停比", "motion/dwell ratio", "$k$", "$\\varphi_m/\\varphi_d$", f(g.motion_dwell_ratio, 4), "—")
-    row("运动系数", "kinematic coefficient", "$\\tau$", "$t_m/T = \\varphi_m/360°$", f(g.tau, 4), "—")
+    row(N_("ratio while meshing"), "$i_{12}$", f"$z_2/z_1 = {z2}/{z1}$", f(z2 / z1, 4), "—")
+    row(N_("motion/dwell ratio"), "$k$", "$\\varphi_m/\\varphi_d$", f(g.motion_dwell_ratio, 4), "—")
+    row(N_("kinematic coefficient"), "$\\tau$", "$t_m/T = \\varphi_m/360°$", f(g.tau, 4), "—")
     if g.stations is not None:
-        row("从动轮每转停歇次数", "dwells per driven revolution", "$z_2/z_1'$", f"${z2}/{n}$",
+        row(N_("dwells per driven revolution"), "$z_2/z_1'$", f"${z2}/{n}$",
             str(g.stations), "—")
     times = curves.times
     if times is not None:
         T, tm, td = times
         rpm = g.driver_speed * 60 / TWO_PI
-        row("循环时间", "cycle time", "$T$", f"$60/n_1 = 60/{f(rpm, 2)}$", f(T, 3), "s")
-        row("运动时间", "motion time", "$t_m$", "$\\tau T$", f(tm, 3), "s")
-        row("停歇时间", "dwell time", "$t_d$", "$T - t_m$", f(td, 3), "s")
+        row(N_("cycle time"), "$T$", f"$60/n_1 = 60/{f(rpm, 2)}$", f(T, 3), "s")
+        row(N_("motion time"), "$t_m$", "$\\tau T$", f(tm, 3), "s")
+        row(N_("dwell time"), "$t_d$", "$T - t_m$", f(td, 3), "s")
     jump = curves.jump
     per_rad = g.driver_speed is None
     if per_rad:
-        row("啮合开始时 dφ₂/dθ 的突变", "jump of dφ₂/dθ at engagement", "$\\Delta(d\\varphi_2/d\\theta)$",
+        row(N_("jump of dφ₂/dθ at engagement"), "$\\Delta(d\\varphi_2/d\\theta)$",
             f"$z_1/z_2 = {z1}/{z2}$", f(jump.omega2, 4), "—")
     else:
-        row("啮合开始时从动轮角速度突变", "jump of the driven speed at engagement", "$\\Delta\\omega_2$",
+        row(N_("jump of the driven speed at engagement"), "$\\Delta\\omega_2$",
             f"$\\omega_1 z_1/z_2 = {f(g.driver_speed, 4)}\\times{z1}/{z2}$", f(jump.omega2, 4), "rad/s")
-        row("分度圆圆周速度突变", "jump of the pitch-line speed", "$\\Delta v$",
+        row(N_("jump of the pitch-line speed"), "$\\Delta v$",
             "$\\omega_1 r_1$", f(jump.pitch_speed * MM, 2), "mm/s")
         if jump.chain_speed is not None:
-            row("链速突变", "jump of the chain speed", "$\\Delta v_c$", "$R_s\\,\\Delta\\omega_2$",
+            row(N_("jump of the chain speed"), "$\\Delta v_c$", "$R_s\\,\\Delta\\omega_2$",
                 f(jump.chain_speed * MM, 2), "mm/s")
 
     eqs = {
@@ -298,17 +296,17 @@ def intermittent_context(g, curves, lang: str, figs: dict[str, str], level: int 
     }
     required = []
     if g.requested_motion_angle is not None:
-        required.append([("主动轮运动角" if zh else "driver's motion angle"),
+        required.append([_("driver's motion angle"),
                          _deg(g.requested_motion_angle, 2) + "°", _deg(g.motion_angle, 2) + "°",
                          e((g.motion_angle - g.requested_motion_angle) * DEG)])
     if g.requested_advance is not None:
         if g.sprocket_radius is not None and g.feed is not None:
-            required.append([("每次送进量" if zh else "feed per cycle"),
+            required.append([_("feed per cycle"),
                              f(g.requested_advance * g.sprocket_radius * MM, 2) + " mm",
                              f(g.feed * MM, 2) + " mm",
                              e((g.advance - g.requested_advance) * g.sprocket_radius * MM)])
         else:
-            required.append([("从动轮每次转角" if zh else "driven advance per cycle"),
+            required.append([_("driven advance per cycle"),
                              _deg(g.requested_advance, 2) + "°", _deg(g.advance, 2) + "°",
                              e((g.advance - g.requested_advance) * DEG)])
 
@@ -316,21 +314,17 @@ def intermittent_context(g, curves, lang: str, figs: dict[str, str], level: int 
     integral = curves.advance_integral
     arc = n * np.pi * g.module
     verify = [
-        [("主动轮分度圆滚过弧长 $r_1\\varphi_m - z_1'\\pi m$ /mm" if zh else
-          "pitch arc rolled by the driver $r_1\\varphi_m - z_1'\\pi m$ /mm"),
+        [_("pitch arc rolled by the driver $r_1\\varphi_m - z_1'\\pi m$ /mm"),
          e((g.r1 * g.motion_angle - arc) * MM)],
-        [("从动轮分度圆滚过弧长 $r_2\\Delta\\varphi_2 - z_1'\\pi m$ /mm" if zh else
-          "pitch arc rolled by the driven wheel $r_2\\Delta\\varphi_2 - z_1'\\pi m$ /mm"),
+        [_("pitch arc rolled by the driven wheel $r_2\\Delta\\varphi_2 - z_1'\\pi m$ /mm"),
          e((g.r2 * g.advance - arc) * MM)],
-        [("仿真：$\\int_0^{2\\pi} (d\\varphi_2/d\\theta)\\,d\\theta - \\Delta\\varphi_2$ /°" if zh else
-          "simulation: $\\int_0^{2\\pi} (d\\varphi_2/d\\theta)\\,d\\theta - \\Delta\\varphi_2$ /°"),
+        [_("simulation: $\\int_0^{2\\pi} (d\\varphi_2/d\\theta)\\,d\\theta - \\Delta\\varphi_2$ /°"),
          e((integral - g.advance) * DEG)],
-        [("仿真：停歇区内从动轮最大转速 /(rad/s)" if zh else
-          "simulation: largest driven speed in the dwell /(rad/s)"),
+        [_("simulation: largest driven speed in the dwell /(rad/s)"),
          e(curves.dwell_speed_max)],
     ]
     return {"h": h, "h3": h3, "label": label, "rows": rows, "eq": eqs, "required": required,
-            "fig": figs, "notes": [note.zh if zh else note.en for note in g.notes],
+            "fig": figs, "notes": [note.zh if _.zh else note.en for note in g.notes],
             "verify": verify, "z1": str(z1), "z2": str(z2), "teeth": str(n),
             "motion_start": _deg(g.motion_start, 1),
             "motion_end": f(np.mod(g.motion_start + g.motion_angle, TWO_PI) * DEG, 1),

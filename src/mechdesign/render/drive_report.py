@@ -6,13 +6,14 @@ from __future__ import annotations
 import numpy as np
 
 from ..stages.drive import shaft_numeral
+from ..i18n import N_, tr
 from .fmt import f, grouped, md_text
 
 MM = 1e3
 
 
-def _stage_label(st, zh: bool) -> str:
-    name = st.name_zh if zh else st.name_en
+def _stage_label(st, _) -> str:
+    name = st.name_zh if _.zh else st.name_en
     if st.z1 is not None:
         return f"{name} (z₁ = {st.z1}, z₂ = {st.z2})"
     if st.d1 is not None:
@@ -21,14 +22,25 @@ def _stage_label(st, zh: bool) -> str:
 
 
 def _shaft_name(i: int, last: int, zh: bool) -> str:
+    _ = tr("zh" if zh else "en")
     if i == 0:
-        return "电动机轴 0" if zh else "motor shaft 0"
-    tail = ("（工作机输入轴）" if zh else " (machine input)") if i == last else ""
-    return (f"{shaft_numeral(i)} 轴" if zh else f"shaft {shaft_numeral(i)}") + tail
+        return _("motor shaft 0")
+    tail = _(" (machine input)") if i == last else ""
+    return _("shaft {i}", i=shaft_numeral(i)) + tail
+
+
+#: why the motor's synchronous speed was chosen (DriveResults.choice.reason)
+_REASONS = {
+    "recommended": N_("the first synchronous speed (in the order 1500, 1000, 3000, 750 rpm) whose "
+                      "total ratio lies within the stages' recommended ranges"),
+    "maximum": N_("no synchronous speed fits the recommended ranges; the first that fits the "
+                  "maximum ranges"),
+    "given": N_("the synchronous speed the brief gives"),
+}
 
 
 def drive_context(d, lang: str, figures: dict[str, str], machine_power_eq: str | None = None) -> dict:
-    zh = lang == "zh"
+    _ = tr(lang)
     m = d.motor
     etas = [st.efficiency for st in d.stages]
     n_b = len(d.stages)
@@ -45,7 +57,7 @@ def drive_context(d, lang: str, figures: dict[str, str], machine_power_eq: str |
                 rf"{f(d.speed_error * 100, 2)}\%"),
         "pw": machine_power_eq,
     }
-    yes, no = ("是", "否") if zh else ("yes", "no")
+    yes, no = (_("yes"), _("no"))
     cand_rows = []
     for c in d.choice.candidates:
         if c.motor is None:
@@ -56,18 +68,11 @@ def drive_context(d, lang: str, figures: dict[str, str], machine_power_eq: str |
                           yes if c.recommended else no])
     stage_rows = []
     for st in d.stages:
-        stage_rows.append([str(st.index + 1), _stage_label(st, zh), f(st.ratio_allocated, 3),
+        stage_rows.append([str(st.index + 1), _stage_label(st, _), f(st.ratio_allocated, 3),
                            f(st.ratio, 3), f(st.efficiency, 3)])
-    shaft_rows = [[_shaft_name(s.index, len(d.shafts) - 1, zh), f(s.speed_rpm, 2), f(s.power / 1e3, 4),
+    shaft_rows = [[_shaft_name(s.index, len(d.shafts) - 1, _.zh), f(s.speed_rpm, 2), f(s.power / 1e3, 4),
                    f(s.torque, 3, group=True)] for s in d.shafts]
-    reason = {
-        "recommended": ("按同步转速 1500、1000、3000、750 rpm 的顺序，取总传动比落在各级推荐传动比范围之内的第一种",
-                        "the first synchronous speed (in the order 1500, 1000, 3000, 750 rpm) whose total "
-                        "ratio lies within the stages' recommended ranges"),
-        "maximum": ("没有一种同步转速能使总传动比落在推荐范围内，取落在最大传动比范围内的第一种",
-                    "no synchronous speed fits the recommended ranges; the first that fits the maximum ranges"),
-        "given": ("同步转速由设计任务给定", "the synchronous speed the brief gives"),
-    }[d.choice.reason][0 if zh else 1]
+    reason = _(_REASONS[d.choice.reason])
     return {
         "eq": eq, "cand_rows": cand_rows, "stage_rows": stage_rows, "shaft_rows": shaft_rows,
         "reason": reason,
@@ -81,73 +86,71 @@ def drive_context(d, lang: str, figures: dict[str, str], machine_power_eq: str |
         "speed_ok": abs(d.speed_error) <= d.speed_tolerance,
         "hours": f(d.service_hours, 0), "KA": f(d.KA, 2),
         "peak": f(d.peak_factor, 3) if d.peak_from_shaft is not None else None,
-        "peak_shaft": _shaft_name(d.peak_from_shaft, len(d.shafts) - 1, zh) if d.peak_from_shaft is not None else "",
+        "peak_shaft": _shaft_name(d.peak_from_shaft, len(d.shafts) - 1, _.zh) if d.peak_from_shaft is not None else "",
         "warnings": [md_text(w.text(lang)) for w in d.warnings],
         "stage_designs": stage_designs(d, lang),
         "fig": figures,
     }
 
 
-def _mat_name(key: str, zh: bool) -> str:
+def _mat_name(key: str, _) -> str:
     from ..data import catalogues as cat
 
     for get in (cat.gear_material, cat.worm_wheel_material):
         try:
             m = get(key)
-            return m.name_zh if zh else m.name_en
+            return m.name_zh if _.zh else m.name_en
         except KeyError:
             continue
     return key
 
 
-def _rows(rows: list[list[str]], zh: bool) -> list[list[str]]:
+def _rows(rows: list[list[str]], _) -> list[list[str]]:
     """Keep the check name in the report's language only; value and allowable grouped by
     render/fmt.py's rule (a life of 72 441 h)."""
-    return [[r[0] if zh else r[1], grouped(r[2]), grouped(r[3]), *r[4:]] for r in rows]
+    return [[r[0] if _.zh else r[1], grouped(r[2]), grouped(r[3]), *r[4:]] for r in rows]
 
 
 def stage_designs(d, lang: str) -> list[dict]:
     """Per stage and per shaft: title, text, dimension rows, formulas and check rows."""
     from .strength_tex import check_formulas, check_rows
 
-    zh = lang == "zh"
+    _ = tr(lang)
     out = []
     for r in d.stages:
         g = r.design
         if g is None or g.kind not in ("gear", "worm", "belt", "chain"):
             continue
-        title = (f"第 {r.index + 1} 级：{r.name_zh}" if zh else f"Stage {r.index + 1}: {r.name_en}")
+        title = _("Stage {index}: {name_en}", index=r.index + 1, name_en=r.name_en,
+                   name_zh=r.name_zh)
         text, rows = [], []
         if g.kind == "belt":
-            out.append(_belt_design(r, g, title, zh))
+            out.append(_belt_design(r, g, title, _))
             continue
         if g.kind == "chain":
-            out.append(_chain_design(g, title, zh))
+            out.append(_chain_design(g, title, _))
             continue
         m_text = (f"{f(g.module * MM, 2)} mm" + ("" if g.module_given else
-                  (f"（设计公式得 {f(g.module_min * MM, 3)} mm，取标准值）" if zh else
-                   f" (the design formula gives {f(g.module_min * MM, 3)} mm; next standard value)")))
+                  (_(" (the design formula gives {module_min} mm; next standard value)",
+                     module_min=f(g.module_min * MM, 3)))))
         a = g.allowables
         if g.kind == "gear":
             e = g.extra
-            mats = " / ".join(_mat_name(k, zh) for k in g.materials)
-            text.append((f"材料（小齿轮 / 大齿轮）：{mats}。载荷系数 $K = K_A K_V K_\\alpha K_\\beta = {f(g.K, 3)}$，"
-                         f"设计转矩 $T_1 = {f(g.T1, 3)}$ N·m，齿宽系数 $\\phi_d = {f(e['phi_d'], 2)}$，模数 m = {m_text}。")
-                        if zh else
-                        (f"Materials (pinion / gear): {mats}. Load factor $K = K_A K_V K_\\alpha K_\\beta = {f(g.K, 3)}$, "
-                         f"design torque $T_1 = {f(g.T1, 3)}$ N·m, face width factor $\\phi_d = {f(e['phi_d'], 2)}$, "
-                         f"module m = {m_text}."))
+            mats = " / ".join(_mat_name(k, _) for k in g.materials)
+            text.append(_("Materials (pinion / gear): {mats}. Load factor $K = K_A K_V K_\\alpha K_\\beta "
+                          "= {K}$, design torque $T_1 = {T1}$ N·m, face width factor $\\phi_d = {phi_d}$, "
+                          "module m = {m_text}.", mats=mats, K=f(g.K, 3), T1=f(g.T1, 3),
+                          phi_d=f(e['phi_d'], 2), m_text=m_text))
             if e["open"]:
-                text.append("开式齿轮以磨损为主要失效形式：按齿根弯曲疲劳强度设计，模数加大 15% 计入磨损，不校核接触强度。"
-                            if zh else "Open gears fail by wear: designed by root bending with the module raised 15 % "
-                            "for wear; no contact check.")
-            text.append((f"应力循环次数 $N_1 = {f(a['N1'] / 1e6, 1)}\\times10^6$，寿命系数 $K_{{HN}} = {f(a['KHN1'], 3)}/{f(a['KHN2'], 3)}$，"
-                         f"$K_{{FN}} = {f(a['KFN1'], 3)}/{f(a['KFN2'], 3)}$；许用应力 $[\\sigma_H] = {f(a['sigma_H'] / 1e6, 1)}$ MPa，"
-                         f"$[\\sigma_F] = {f(a['sigma_F1'] / 1e6, 1)}/{f(a['sigma_F2'] / 1e6, 1)}$ MPa（$S_H = 1$，$S_F = 1.4$）。")
-                        if zh else
-                        (f"Stress cycles $N_1 = {f(a['N1'] / 1e6, 1)}\\times10^6$, life factors $K_{{HN}} = {f(a['KHN1'], 3)}/{f(a['KHN2'], 3)}$, "
-                         f"$K_{{FN}} = {f(a['KFN1'], 3)}/{f(a['KFN2'], 3)}$; allowable $[\\sigma_H] = {f(a['sigma_H'] / 1e6, 1)}$ MPa, "
-                         f"$[\\sigma_F] = {f(a['sigma_F1'] / 1e6, 1)}/{f(a['sigma_F2'] / 1e6, 1)}$ MPa ($S_H = 1$, $S_F = 1.4$)."))
+                text.append(_("Open gears fail by wear: designed by root bending with the module raised 15 % "
+                              "for wear; no contact check."))
+            text.append(_("Stress cycles $N_1 = {N1}\\times10^6$, life factors $K_{{HN}} = "
+                          "{KHN1}/{KHN2}$, $K_{{FN}} = {KFN1}/{KFN2}$; allowable $[\\sigma_H] = "
+                          "{sigma_H}$ MPa, $[\\sigma_F] = {sigma_F1}/{sigma_F2}$ MPa ($S_H = 1$, $S_F = "
+                          "1.4$).", N1=f(a['N1'] / 1e6, 1), KHN1=f(a['KHN1'], 3),
+                          KHN2=f(a['KHN2'], 3), KFN1=f(a['KFN1'], 3), KFN2=f(a['KFN2'], 3),
+                          sigma_H=f(a['sigma_H'] / 1e6, 1), sigma_F1=f(a['sigma_F1'] / 1e6, 1),
+                          sigma_F2=f(a['sigma_F2'] / 1e6, 1)))
             geo = g.geometry
             d1 = g.forces["d1"]
             rows = [["$z_1 / z_2$", f"{r.z1} / {r.z2}", "—"], ["$m$", f(g.module * MM, 2), "mm"],
@@ -160,94 +163,84 @@ def stage_designs(d, lang: str) -> list[dict]:
         else:
             e = g.extra
             geo = g.geometry
-            text.append((f"蜗杆 45 钢表面淬火（>45 HRC），蜗轮 {_mat_name(g.materials[1], zh)}。$K = K_A \\times 1.1 = {f(g.K, 3)}$，"
-                         f"蜗轮转矩 $T_2 = {f(g.T2, 3)}$ N·m，模数 m = {m_text}，q = {f(geo.q, 0)}。"
-                         f"许用应力 $[\\sigma_H] = {f(a['sigma_H'] / 1e6, 1)}$ MPa，$[\\sigma_F] = {f(a['sigma_F'] / 1e6, 1)}$ MPa"
-                         f"（$N = {f(a['N'] / 1e6, 2)}\\times10^6$）。")
-                        if zh else
-                        (f"Worm of surface-hardened 45 steel (>45 HRC), wheel {_mat_name(g.materials[1], zh)}. "
-                         f"$K = K_A \\times 1.1 = {f(g.K, 3)}$, wheel torque $T_2 = {f(g.T2, 3)}$ N·m, module m = {m_text}, "
-                         f"q = {f(geo.q, 0)}. Allowable $[\\sigma_H] = {f(a['sigma_H'] / 1e6, 1)}$ MPa, "
-                         f"$[\\sigma_F] = {f(a['sigma_F'] / 1e6, 1)}$ MPa ($N = {f(a['N'] / 1e6, 2)}\\times10^6$)."))
-            text.append((f"滑动速度 $v_s = {f(e['vs'], 3)}$ m/s，当量摩擦角 $\\varphi_v = {f(np.degrees(e['phi_v']), 3)}°$，"
-                         f"效率 $\\eta = 0.95\\tan\\gamma/\\tan(\\gamma+\\varphi_v) = {f(e['eta'], 4)}$（用于效率链）。")
-                        if zh else
-                        (f"Sliding speed $v_s = {f(e['vs'], 3)}$ m/s, equivalent friction angle $\\varphi_v = "
-                         f"{f(np.degrees(e['phi_v']), 3)}°$, efficiency $\\eta = 0.95\\tan\\gamma/\\tan(\\gamma+\\varphi_v) = "
-                         f"{f(e['eta'], 4)}$ (used in the efficiency chain)."))
+            text.append(_("Worm of surface-hardened 45 steel (>45 HRC), wheel {materials}. $K = K_A "
+                          "\\times 1.1 = {K}$, wheel torque $T_2 = {T2}$ N·m, module m = {m_text}, q = "
+                          "{q}. Allowable $[\\sigma_H] = {sigma_H}$ MPa, $[\\sigma_F] = {sigma_F}$ MPa ($N "
+                          "= {N}\\times10^6$).", materials=_mat_name(g.materials[1], _),
+                          K=f(g.K, 3), T2=f(g.T2, 3), m_text=m_text, q=f(geo.q, 0),
+                          sigma_H=f(a['sigma_H'] / 1e6, 1), sigma_F=f(a['sigma_F'] / 1e6, 1),
+                          N=f(a['N'] / 1e6, 2)))
+            text.append(_("Sliding speed $v_s = {vs}$ m/s, equivalent friction angle $\\varphi_v = "
+                          "{phi_v}°$, efficiency $\\eta = 0.95\\tan\\gamma/\\tan(\\gamma+\\varphi_v) = {eta}$ "
+                          "(used in the efficiency chain).", vs=f(e['vs'], 3),
+                          phi_v=f(np.degrees(e['phi_v']), 3), eta=f(e['eta'], 4)))
             for c in g.checks:
                 if c.key == "worm_deflection":    # issue 20: 濮良贵 ch.11 stiffness check
                     i = c.inputs
-                    span = ((f"支承跨距 L = {f(i['L'] * MM, 1)} mm（设计任务给定）" if zh else
-                             f"bearing span L = {f(i['L'] * MM, 1)} mm (given in the brief)") if i["span_given"] else
-                            (f"支承跨距按 L ≈ 0.9 $d_2$ = {f(i['L'] * MM, 1)} mm 估计" if zh else
-                             f"bearing span estimated as L ≈ 0.9 $d_2$ = {f(i['L'] * MM, 1)} mm"))
-                    text.append((f"蜗杆轴刚度：把蜗杆视为简支梁，中点受 $F_{{t1}}$、$F_{{r1}}$，{span}，"
-                                 f"$I = \\pi d_{{f1}}^4/64$（$d_{{f1}} = d_1 - 2.4m = {f(i['df1'] * MM, 2)}$ mm），"
-                                 "E = 206 GPa，许用挠度 [y] = $d_1$/1000。") if zh else
-                                (f"Worm shaft stiffness: the worm as a simply supported beam loaded by $F_{{t1}}$ and "
-                                 f"$F_{{r1}}$ at mid-span, {span}, $I = \\pi d_{{f1}}^4/64$ ($d_{{f1}} = d_1 - 2.4m = "
-                                 f"{f(i['df1'] * MM, 2)}$ mm), E = 206 GPa, allowed deflection [y] = $d_1$/1000."))
+                    span = (_("bearing span L = {L} mm (given in the brief)", L=f(i['L'] * MM, 1)) if i["span_given"] else
+                            (_("bearing span estimated as L ≈ 0.9 $d_2$ = {L} mm",
+                               L=f(i['L'] * MM, 1))))
+                    text.append(_("Worm shaft stiffness: the worm as a simply supported beam loaded by "
+                                  "$F_{{t1}}$ and $F_{{r1}}$ at mid-span, {span}, $I = \\pi d_{{f1}}^4/64$ "
+                                  "($d_{{f1}} = d_1 - 2.4m = {df1}$ mm), E = 206 GPa, allowed deflection [y] = "
+                                  "$d_1$/1000.", span=span, df1=f(i['df1'] * MM, 2)))
             rows = [["$z_1 / z_2$", f"{r.z1} / {r.z2}", "—"], ["$m$", f(g.module * MM, 2), "mm"],
                     ["$q$", f(geo.q, 1), "—"], ["$d_1 / d_2$", f"{f(geo.d1 * MM, 2)} / {f(geo.d2 * MM, 2)}", "mm"],
                     ["$\\gamma$", f(np.degrees(geo.lead_angle), 3), "°"], ["$a$", f(e["a"] * MM, 2), "mm"],
                     ["$Z_\\rho$", f(e["Zrho"], 3), "—"], ["$z_{v2}, Y_{Fa2}$", f"{f(e['zv2'], 2)}, {f(e['YFa2'], 3)}", "—"],
                     ["$A$", f(e["area"], 3), "m²"]]
         out.append({"title": title, "text": text, "rows": rows,
-                    "formulas": [eq for c in g.checks for eq in check_formulas(c)], "checks": _rows(check_rows(g.checks, lang), zh),
+                    "formulas": [eq for c in g.checks for eq in check_formulas(c)], "checks": _rows(check_rows(g.checks, lang), _),
                     # the sources of the method and tables (data/references.yaml)
                     "refs": ("pu8", "gb1357") if g.kind == "gear" else ("pu9",)})
     for sh in d.shaft_designs:
-        title = (f"{_shaft_name(sh.index, len(d.shafts) - 1, zh)}的设计与校核" if zh else
-                 f"Design and checks of {_shaft_name(sh.index, len(d.shafts) - 1, zh)}")
+        title = _("Design and checks of {index}",
+                   index=_shaft_name(sh.index, len(d.shafts) - 1, _.zh))
         res = sh.result
-        where = "、".join(n[0] for n in sh.names) if zh else ", ".join(n[1] for n in sh.names)
-        text = [(f"轴上零件：{where}。按《机械设计》第 15 章的步骤设计（每步的规则与数值如下），"
-                 "任一校核未通过即加大该段直径并重新校核。") if zh else
-                (f"On the shaft: {where}. Designed by the procedure of PU Lianggui, Machine Design, ch. 15 (each step's rule "
-                 "and numbers below); any failed check enlarges that section and everything is checked again.")]
+        where = _.pgettext("list", ", ").join(n[0] if _.zh else n[1] for n in sh.names)
+        text = [_("On the shaft: {where}. Designed by the procedure of PU Lianggui, Machine "
+                  "Design, ch. 15 (each step's rule and numbers below); any failed check "
+                  "enlarges that section and everything is checked again.", where=where)]
         for k, (szh, sen) in enumerate(sh.steps, 1):
-            text.append(f"第 {k} 步：{szh}。" if zh else f"Step {k}: {sen}.")
-        text.append((f"支反力（强度计算）：$R_{{AH}} = {f(res.RAh, 1)}$ N，$R_{{AV}} = {f(res.RAv, 1)}$ N，"
-                     f"$R_{{BH}} = {f(res.RBh, 1)}$ N，$R_{{BV}} = {f(res.RBv, 1)}$ N；危险截面 x = "
-                     f"{f(res.critical.x * MM, 0)} mm，M = {f(res.critical.M, 2)} N·m。")
-                    if zh else
-                    (f"Reactions (strength case): $R_{{AH}} = {f(res.RAh, 1)}$ N, $R_{{AV}} = {f(res.RAv, 1)}$ N, "
-                     f"$R_{{BH}} = {f(res.RBh, 1)}$ N, $R_{{BV}} = {f(res.RBv, 1)}$ N; largest equivalent moment "
-                     f"at x = {f(res.critical.x * MM, 0)} mm, M = {f(res.critical.M, 2)} N·m."))
+            text.append(_("Step {k}: {sen}.", k=k, sen=sen, szh=szh))
+        text.append(_("Reactions (strength case): $R_{{AH}} = {RAh}$ N, $R_{{AV}} = {RAv}$ N, "
+                      "$R_{{BH}} = {RBh}$ N, $R_{{BV}} = {RBv}$ N; largest equivalent moment at x = "
+                      "{x} mm, M = {M} N·m.", RAh=f(res.RAh, 1), RAv=f(res.RAv, 1),
+                      RBh=f(res.RBh, 1), RBv=f(res.RBv, 1), x=f(res.critical.x * MM, 0),
+                      M=f(res.critical.M, 2)))
         if sh.bearing is not None:
             b = sh.bearing
-            text.append((f"轴承 {b.designation}（d = {f(b.d * MM, 0)} mm，$C_r$ = {f(b.Cr / 1e3, 1)} kN），寿命按疲劳载荷："
-                         f"当量动载荷 $P_A = {f(sh.bearing_loads[0], 1)}$ N，$P_B = {f(sh.bearing_loads[1], 1)}$ N"
-                         f"（$f_p$ = 1.2，载荷为强度计算的 {f(sh.life_torque_factor, 3)} 倍）；静强度按峰值载荷。")
-                        if zh else
-                        (f"Bearings {b.designation} (d = {f(b.d * MM, 0)} mm, $C_r$ = {f(b.Cr / 1e3, 1)} kN); the life "
-                         f"takes the fatigue load: equivalent loads $P_A = {f(sh.bearing_loads[0], 1)}$ N, "
-                         f"$P_B = {f(sh.bearing_loads[1], 1)}$ N ($f_p$ = 1.2, the loads {f(sh.life_torque_factor, 3)} × "
-                         "those of the strength case); the static strength the peak."))
+            text.append(_("Bearings {designation} (d = {d} mm, $C_r$ = {Cr} kN); the life takes the "
+                          "fatigue load: equivalent loads $P_A = {bearing_loads}$ N, $P_B = "
+                          "{bearing_loads2}$ N ($f_p$ = 1.2, the loads {life_torque_factor} × those of "
+                          "the strength case); the static strength the peak.",
+                          designation=b.designation, d=f(b.d * MM, 0), Cr=f(b.Cr / 1e3, 1),
+                          bearing_loads=f(sh.bearing_loads[0], 1),
+                          bearing_loads2=f(sh.bearing_loads[1], 1),
+                          life_torque_factor=f(sh.life_torque_factor, 3)))
         unit_mm = "mm"
         rows = [["$d_{min}$", f(sh.d_min * MM, 2), unit_mm]]
         if sh.d_end is not None:
-            rows.append([("外伸端" if zh else "overhung end") + " $d_1$", f(sh.d_end * MM, 0), unit_mm])
-        rows += [[("轴颈" if zh else "journal") + " $d_j$", f(sh.d_journal * MM, 0), unit_mm],
-                 [("装配段" if zh else "hub seat") + " $d_s$", f(sh.d_seat * MM, 0), unit_mm],
-                 [("轴环" if zh else "collar") + " $d_c$", f(sh.d_shoulder * MM, 0), unit_mm],
-                 [("支承跨距" if zh else "bearing span") + " $L$", f(sh.span * MM, 0), unit_mm],
-                 [("设计转矩" if zh else "design torque") + " $T$", f(sh.torque, 1, group=True), "N·m"]]
+            rows.append([_("overhung end") + " $d_1$", f(sh.d_end * MM, 0), unit_mm])
+        rows += [[_("journal") + " $d_j$", f(sh.d_journal * MM, 0), unit_mm],
+                 [_("hub seat") + " $d_s$", f(sh.d_seat * MM, 0), unit_mm],
+                 [_("collar") + " $d_c$", f(sh.d_shoulder * MM, 0), unit_mm],
+                 [_("bearing span") + " $L$", f(sh.span * MM, 0), unit_mm],
+                 [_("design torque") + " $T$", f(sh.torque, 1, group=True), "N·m"]]
         if sh.bearing is not None:
-            rows.append([("轴承" if zh else "bearing"), sh.bearing.designation, "—"])
+            rows.append([_("bearing"), sh.bearing.designation, "—"])
         for k in sh.keys:
             lab = f"{f(k.b * MM, 0)}×{f(k.h * MM, 0)}×{f(k.L * MM, 0)}" + (" ×2" if k.count == 2 else "")
-            rows.append([("平键" if zh else "key") + f" ({k.names[0] if zh else k.names[1]})", lab, unit_mm])
+            rows.append([_("key") + f" ({k.names[0] if _.zh else k.names[1]})", lab, unit_mm])
         bearing_std = () if sh.bearing is None else (
             ("gb297",) if sh.bearing.designation.startswith("3") else ("gb276",))
         out.append({"title": title, "text": text, "rows": rows,
-                    "formulas": [eq for c in sh.checks for eq in check_formulas(c)], "checks": _rows(check_rows(sh.checks, lang), zh),
+                    "formulas": [eq for c in sh.checks for eq in check_formulas(c)], "checks": _rows(check_rows(sh.checks, lang), _),
                     "refs": ("pu8", "gb1096", *bearing_std)})
     return out
 
 
-def _belt_design(r, g, title: str, zh: bool) -> dict:
+def _belt_design(r, g, title: str, _) -> dict:
     """The V-belt subsection: each step of 濮良贵 ch.8 with its rule and its numbers."""
     from .strength_tex import check_rows, num
 
@@ -257,38 +250,30 @@ def _belt_design(r, g, title: str, zh: bool) -> dict:
     d1, d2, a0 = b.d1 * MM, b.d2 * MM, b.a0 * MM
     d2_calc = r.ratio_allocated * d1 * (1 - b.slip)
     if b.section_given:
-        how = "（设计任务给定）" if zh else " (given in the brief)"
+        how = _(" (given in the brief)")
     elif b.section_chart == b.section:
-        how = "（按选型图 8-11）" if zh else " (from the selection chart, fig. 8-11)"
+        how = _(" (from the selection chart, fig. 8-11)")
     else:
-        how = (f"（选型图 8-11 给出 {b.section_chart} 型，但其包角或根数校核不合格，改用 {b.section} 型）" if zh else
-               f" (the selection chart, fig. 8-11, gives {b.section_chart}, which fails the wrap-angle or "
-               f"belt-count check; {b.section} is used)")
+        how = _(" (the selection chart, fig. 8-11, gives {section_chart}, which fails the "
+                 "wrap-angle or belt-count check; {section} is used)", section_chart=b.section_chart,
+                 section=b.section)
     sec = f"{b.section}{how}"
-    if zh:
-        text = [f"按濮良贵《机械设计》第 8 章设计普通 V 带：工况系数 $K_A = {f(b.KA, 2)}$（表 8-8），"
-                f"计算功率 $P_{{ca}} = {f(Pca, 3)}$ kW，小带轮转速 $n_1 = {f(b.n1_rpm, 0)}$ r/min，带型 {sec}；"
-                f"小带轮基准直径 $d_{{d1}} = {f(d1, 0)}$ mm ≥ $d_{{dmin}} = {f(b.d_min * MM, 0)}$ mm（表 8-7，"
-                "并使带速不低于 5 m/s），大带轮取基准直径系列值（表 8-9）。",
-                f"初定中心距 $a_0 = {f(a0, 0)}$ mm（$0.7(d_{{d1}}+d_{{d2}}) = {f(b.a0_min * MM, 0)}$ … "
-                f"$2(d_{{d1}}+d_{{d2}}) = {f(b.a0_max * MM, 0)}$ mm）；安装、张紧范围 "
-                f"$a_{{min}} … a_{{max}} = {f(b.a_min * MM, 0)} … {f(b.a_max * MM, 0)}$ mm。"
-                f"$P_0$ 由表 8-4 按 $n_1$ 与 $d_{{d1}}$ 双线性插值，$\\Delta P_0$ 由表 8-5 按 $n_1$ 线性插值，"
-                "$K_\\alpha$、$K_L$ 查表 8-6、8-2；选型图边界为读图近似值，部分表值未能与原书逐一核对"
-                "（程序的数据文件中逐项注明）。"]
-    else:
-        text = [f"Ordinary V-belts designed by PU Lianggui, Machine Design, ch.8: application factor $K_A = {f(b.KA, 2)}$ "
-                f"(table 8-8), design power $P_{{ca}} = {f(Pca, 3)}$ kW, small pulley speed $n_1 = {f(b.n1_rpm, 0)}$ rpm, "
-                f"section {sec}; small datum diameter $d_{{d1}} = {f(d1, 0)}$ mm ≥ $d_{{dmin}} = {f(b.d_min * MM, 0)}$ mm "
-                "(table 8-7, and a belt speed of at least 5 m/s), the large one from the datum series (table 8-9).",
-                f"Initial centre distance $a_0 = {f(a0, 0)}$ mm ($0.7(d_{{d1}}+d_{{d2}}) = {f(b.a0_min * MM, 0)}$ … "
-                f"$2(d_{{d1}}+d_{{d2}}) = {f(b.a0_max * MM, 0)}$ mm); fitting and take-up range "
-                f"$a_{{min}} … a_{{max}} = {f(b.a_min * MM, 0)} … {f(b.a_max * MM, 0)}$ mm. "
-                "$P_0$ interpolated bilinearly in $n_1$ and $d_{d1}$ (table 8-4), $\\Delta P_0$ linearly in $n_1$ "
-                "(table 8-5), $K_\\alpha$ and $K_L$ from tables 8-6 and 8-2; the selection chart's boundaries are "
-                "read off the figure and some table values could not be checked against the book "
-                "(stated in data/belts.yaml)."]
-    rows = [[("带型" if zh else "Section"), b.section, "—"],
+    text = [_("Ordinary V-belts designed by PU Lianggui, Machine Design, ch.8: application "
+              "factor $K_A = {KA}$ (table 8-8), design power $P_{{ca}} = {Pca}$ kW, small "
+              "pulley speed $n_1 = {n1_rpm}$ rpm, section {sec}; small datum diameter "
+              "$d_{{d1}} = {d1}$ mm ≥ $d_{{dmin}} = {d_min}$ mm (table 8-7, and a belt speed "
+              "of at least 5 m/s), the large one from the datum series (table 8-9).", KA=f(b.KA, 2),
+              Pca=f(Pca, 3), n1_rpm=f(b.n1_rpm, 0), sec=sec, d1=f(d1, 0), d_min=f(b.d_min * MM, 0)),
+            _("Initial centre distance $a_0 = {a0}$ mm ($0.7(d_{{d1}}+d_{{d2}}) = {a0_min}$ "
+              "… $2(d_{{d1}}+d_{{d2}}) = {a0_max}$ mm); fitting and take-up range $a_{{min}} "
+              "… a_{{max}} = {a_min} … {a_max}$ mm. $P_0$ interpolated bilinearly in $n_1$ "
+              "and $d_{{d1}}$ (table 8-4), $\\Delta P_0$ linearly in $n_1$ (table 8-5), "
+              "$K_\\alpha$ and $K_L$ from tables 8-6 and 8-2; the selection chart's "
+              "boundaries are read off the figure and some table values could not be checked "
+              "against the book (stated in data/belts.yaml).", a0=f(a0, 0),
+              a0_min=f(b.a0_min * MM, 0), a0_max=f(b.a0_max * MM, 0), a_min=f(b.a_min * MM, 0),
+              a_max=f(b.a_max * MM, 0))]
+    rows = [[_("Section"), b.section, "—"],
             ["$d_{d1} / d_{d2}$", f"{f(d1, 0)} / {f(d2, 0)}", "mm"], ["$v$", f(b.v, 2), "m/s"],
             ["$L_d$", f(b.L_d * MM, 0), "mm"], ["$a$", f(b.a * MM, 1), "mm"],
             ["$\\alpha_1$", f(deg(b.alpha1), 2), "°"], ["$z$", str(b.z), "—"],
@@ -317,35 +302,30 @@ def _belt_design(r, g, title: str, zh: bool) -> dict:
         rf"\frac{{{num(deg(b.alpha1))}^\circ}}{{2}} = {num(b.Fp)}\ \text{{N}}",
     ]
     return {"title": title, "text": text, "rows": rows, "formulas": formulas,
-            "checks": _rows(check_rows(g.checks, "zh" if zh else "en"), zh), "refs": ("pu9", "gb13575")}
+            "checks": _rows(check_rows(g.checks, _.lang), _), "refs": ("pu9", "gb13575")}
 
 
-def _chain_design(g, title: str, zh: bool) -> dict:
+def _chain_design(g, title: str, _) -> dict:
     """The roller-chain subsection: each step of 濮良贵 ch.9 §9-5 with its numbers."""
     from .strength_tex import check_rows, num
 
     c = g.geometry
     p = c.pitch * MM
     P, Pca = c.power / 1e3, c.power_design / 1e3
-    how = ((("链号由设计任务给定" if zh else "the chain given in the brief")) if c.chain_given else
-           ("取额定功率不小于 $P_{ca}$ 的最小链号" if zh else "the smallest chain whose rated power carries $P_{ca}$"))
-    if zh:
-        text = [f"按濮良贵《机械设计》第 9 章设计滚子链（A 系列，{c.rows} 排）：工况系数 $K_A = {f(c.KA, 2)}$（表 9-6），"
-                f"小链轮齿数系数 $K_z = (19/z_1)^{{1.08}} = {f(c.Kz, 3)}$，多排链系数 $K_p = {f(c.Kp, 2)}$；"
-                f"{how}：{c.chain}（p = {f(p, 3)} mm），单排额定功率 {f(c.rated_power / 1e3, 3)} kW。",
-                "图 9-11 的额定功率曲线未能按原图录入，以 ANSI B29.1 的额定功率公式（希格利《机械工程设计》式 17-32、"
-                "17-33，$z_1 = 19$）代替（假设，见程序的数据文件）；中心距按链节数精确反算，"
-                f"压轴力 $F_Q = {f(c.FQ_factor, 1)} F_e$。"]
-    else:
-        text = [f"Roller chain (A series, {c.rows} row(s)) designed by PU Lianggui, Machine Design, ch.9: application factor "
-                f"$K_A = {f(c.KA, 2)}$ (table 9-6), tooth factor $K_z = (19/z_1)^{{1.08}} = {f(c.Kz, 3)}$, row factor "
-                f"$K_p = {f(c.Kp, 2)}$; {how}: {c.chain} (p = {f(p, 3)} mm), rated power of one strand "
-                f"{f(c.rated_power / 1e3, 3)} kW.",
-                "The rated-power chart (fig. 9-11) could not be typed from the book: the ANSI B29.1 rating formulas "
-                "(Shigley eqs. 17-32, 17-33, at $z_1 = 19$) stand in for it (an assumption, see data/chains.yaml); "
-                f"the centre distance is the exact inverse of the link count; the load on the shafts $F_Q = "
-                f"{f(c.FQ_factor, 1)} F_e$."]
-    rows = [[("链号" if zh else "Chain"), c.chain, "—"], ["$z_1 / z_2$", f"{c.z1} / {c.z2}", "—"],
+    how = ((_("the chain given in the brief")) if c.chain_given else
+           (_("the smallest chain whose rated power carries $P_{ca}$")))
+    text = [_("Roller chain (A series, {rows} row(s)) designed by PU Lianggui, Machine "
+              "Design, ch.9: application factor $K_A = {KA}$ (table 9-6), tooth factor $K_z "
+              "= (19/z_1)^{{1.08}} = {Kz}$, row factor $K_p = {Kp}$; {how}: {chain} (p = {p} "
+              "mm), rated power of one strand {rated_power} kW.", rows=c.rows, KA=f(c.KA, 2),
+              Kz=f(c.Kz, 3), Kp=f(c.Kp, 2), how=how, chain=c.chain, p=f(p, 3),
+              rated_power=f(c.rated_power / 1e3, 3)),
+            _("The rated-power chart (fig. 9-11) could not be typed from the book: the ANSI "
+              "B29.1 rating formulas (Shigley eqs. 17-32, 17-33, at $z_1 = 19$) stand in for "
+              "it (an assumption, see data/chains.yaml); the centre distance is the exact "
+              "inverse of the link count; the load on the shafts $F_Q = {FQ_factor} F_e$.",
+              FQ_factor=f(c.FQ_factor, 1))]
+    rows = [[_("Chain"), c.chain, "—"], ["$z_1 / z_2$", f"{c.z1} / {c.z2}", "—"],
             ["$p$", f(p, 3), "mm"], ["$L_p$", str(c.L_p), "—"], ["$a$", f(c.a * MM, 1), "mm"],
             ["$v$", f(c.v, 3), "m/s"], ["$F_e$", f(c.Fe, 1), "N"], ["$F_Q$", f(c.FQ, 1), "N"]]
     formulas = [
@@ -364,7 +344,7 @@ def _chain_design(g, title: str, zh: bool) -> dict:
         rf"\times \frac{{1000 \times {num(P)}}}{{{num(c.v)}}} = {num(c.FQ)}\ \text{{N}}",
     ]
     return {"title": title, "text": text, "rows": rows, "formulas": formulas,
-            "checks": _rows(check_rows(g.checks, "zh" if zh else "en"), zh), "refs": ("pu9",)}
+            "checks": _rows(check_rows(g.checks, _.lang), _), "refs": ("pu9",)}
 
 
 # --------------------------------------------------------------------------- machine: drive

@@ -11,6 +11,7 @@ import math
 from typing import Iterable
 
 from ..core.strength import COURSE_SCALE, Check
+from ..i18n import tr
 from .fmt import f
 
 #: Decimals of the value and allowable columns per course unit.
@@ -240,9 +241,8 @@ def check_formulas(check: Check) -> list[str]:
 
 
 def verdict(check: Check, lang: str = "zh") -> str:
-    if lang == "zh":
-        return "合格" if check.passed else "不合格"
-    return "PASS" if check.passed else "FAIL"
+    _ = tr(lang)
+    return _("PASS") if check.passed else _("FAIL")
 
 
 def check_rows(checks: Iterable[Check], lang: str = "zh") -> list[list[str]]:

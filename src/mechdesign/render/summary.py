@@ -304,7 +304,7 @@ def _label(text: str) -> str:
 def key_rows(machine: str, document: dict, lang: str) -> list[list[str]]:
     """[quantity, value, unit]: the machine's registry summary, then the probed quantities
     it does not give."""
-    from ..registry import entry
+    from ..registry import entry, summary_row
 
     zh = lang == "zh"
     rows, paths = [], set()
@@ -312,11 +312,12 @@ def key_rows(machine: str, document: dict, lang: str) -> list[list[str]]:
         listed = entry(machine).summary
     except KeyError:
         listed = ()
-    for lzh, len_, unit, path, factor in listed:
+    for row in listed:
+        label, unit, path, factor = summary_row(row, lang)
         text = _show(_get(document, path), factor)
         if text is None:
             continue
-        rows.append([_label(lzh if zh else len_), text, unit or "—"])
+        rows.append([_label(label), text, unit or "—"])
         leaf = path.rsplit(".", 1)[-1]
         paths.add(_SAME.get(leaf, leaf))
     for leaf, lzh, len_, unit, factor in _PROBES:

@@ -4,6 +4,7 @@ intermittent feed, the cam and the working cycle.
 The whole machine is this package: its brief (:mod:`.brief`), its model, stages and results
 (:mod:`.stages`) and its report (:mod:`.report`).
 """
+from ...i18n import N_
 from ...registry import _MM, Entry
 
 _P = __name__
@@ -11,10 +12,10 @@ ENTRY = Entry(
     "die_cutter", f"{_P}.brief:DieCutterBrief", f"{_P}.brief:die_cutter_to_si",
     f"{_P}.stages:stages", f"{_P}.stages:results_document", f"{_P}.report",
     "die_cutter.yaml", results=f"{_P}.stages:DieCutterResults", summary=(
-        ("曲柄", "crank", "mm", "toggle.crank", _MM),
-        ("行程", "stroke", "mm", "press.output.stroke", _MM),
-        ("K", "K", "", "press.time_ratio", 1.0),
-        ("峰值扭矩", "peak torque", "N·m", "press.peak_torque", 1.0),
-        ("飞轮 J_F", "flywheel J_F", "kg·m²", "flywheel.inertia", 1.0),
-        ("电动机", "motor", "", "drive.motor.designation", 1.0)),
+        (N_("crank"), "mm", "toggle.crank", _MM),
+        (N_("stroke"), "mm", "press.output.stroke", _MM),
+        ("K", "", "press.time_ratio", 1.0),
+        (N_("peak torque"), "N·m", "press.peak_torque", 1.0),
+        (N_("flywheel J_F"), "kg·m²", "flywheel.inertia", 1.0),
+        (N_("motor"), "", "drive.motor.designation", 1.0)),
     checks=f"{_P}.stages:checks")

@@ -11,24 +11,27 @@ from pathlib import Path
 
 import numpy as np
 
+from ...i18n import N_, tr
 from ...render import figures as fig
 from ...render.fmt import e, f, md_meta, md_text
 from ...render.fmt import number, verdict
+from ...render.labels import pgettext, translated
 from ...stages.drive import shaft_numeral
 
 DEG = 180.0 / np.pi
 MM = 1e3
 
-_TXT = {
-    "zh": {"phase": "分配轴（曲柄）转角 φ (°)", "s": "下模板位移 s (mm)", "fm": "F/M (kN/(kN·m))",
-           "torque": "曲柄力矩 (N·m)", "mb": r"平衡力矩 $M_b$", "req": r"模切所需 $F_c\,M/F$",
-           "press": "模切区", "clear": "让开区", "level_p": "开始压切", "level_c": "让开高度",
-           "top": "上止点"},
-    "en": {"phase": "shaft (crank) angle φ (°)", "s": "platen displacement s (mm)",
-           "fm": "F/M (kN/(kN·m))", "torque": "crank torque (N·m)", "mb": r"balancing torque $M_b$",
-           "req": r"cut alone $F_c\,M/F$", "press": "cutting", "clear": "clear",
-           "level_p": "cutting starts", "level_c": "clearance level", "top": "top"},
-}
+_TXT = {"phase": N_("shaft (crank) angle φ (°)"),
+        "s": N_("platen displacement s (mm)"),
+        "fm": "F/M (kN/(kN·m))",
+        "torque": N_("crank torque (N·m)"),
+        "mb": N_("balancing torque $M_b$"),
+        "req": N_("cut alone $F_c\\,M/F$"),
+        "press": pgettext("die cutter", "cutting"),      # 模切区, not the shaper's 切削区
+        "clear": N_("clear"),
+        "level_p": N_("cutting starts"),
+        "level_c": N_("clearance level"),
+        "top": N_("top")}
 
 
 # --------------------------------------------------------------------------- figures
@@ -36,7 +39,8 @@ _TXT = {
 
 def _amplification_figure(path: Path, lang: str, k, amp, p, f_):
     """Platen near its top, the force per unit torque F/M (log) and the torque the cut needs."""
-    t = _TXT[lang]
+    _ = tr(lang)
+    t = {key: translated(text, _) for key, text in _TXT.items()}
     n = k.grid_size
     ph = k.phase[:n] * DEG
     tm = amp.timing
@@ -120,30 +124,29 @@ def _deg(x: float, digits: int = 2) -> str:
     return f(x * DEG, digits)
 
 
-def _data_rows(b, p, zh: bool) -> list[list[str]]:
+def _data_rows(b, p, _) -> list[list[str]]:
     """The task's data (seed 001b)."""
     rows = [
-        ["生产率" if zh else "output", f"{f(b.production.sheets_per_hour, 0)} " + ("张/h" if zh else "sheets/h"),
-         (f"分配轴每转一周模切一张：n = {f(p.shaft_rpm, 2)} r/min" if zh else
-          f"one sheet per turn of the distribution shaft: n = {f(p.shaft_rpm, 2)} rpm")],
-        ["电动机转速" if zh else "motor speed", "1450 r/min" if zh else "1450 rpm",
-         "4 极 Y 系列（同步转速 1500 r/min），型号由传动设计按功率选定" if zh else
-         "4-pole Y series (1500 rpm synchronous), the size chosen by the drive design from the power"],
-        ["工作台面高度" if zh else "table height", f"≈ {f(b.production.table_height_mm, 0)} mm",
-         "总体布置尺寸" if zh else "layout datum"],
-        ["纸板厚度" if zh else "board thickness", f"≤ {f(b.production.board_thickness_mm, 1)} mm",
-         "瓦楞纸板、白纸板及印刷品" if zh else "corrugated board, white board and prints"],
-        ["传动路线" if zh else "drive", "V 带 → 两级斜齿圆柱齿轮减速器 → 联轴器 → 分配轴" if zh else
-         "V-belt → two-stage helical reducer → coupling → distribution shaft", "—"],
-        ["执行机构" if zh else "actuators",
-         "上模固定，六杆肘杆机构推下模上升；凸轮张开弹簧夹爪；不完全齿轮间歇驱动链条" if zh else
-         "fixed upper die, lower platen lifted by a six-bar toggle linkage; a cam opens the spring "
-         "grippers; an incomplete gear drives the gripper chain intermittently", "—"],
+        [_("output"), f"{f(b.production.sheets_per_hour, 0)} " + _("sheets/h"),
+         _("one sheet per turn of the distribution shaft: n = {shaft_rpm} rpm",
+            shaft_rpm=f(p.shaft_rpm, 2))],
+        [_("motor speed"), _("1450 rpm"),
+         _("4-pole Y series (1500 rpm synchronous), the size chosen by the drive design "
+           "from the power")],
+        [_("table height"), f"≈ {f(b.production.table_height_mm, 0)} mm",
+         _("layout datum")],
+        [_("board thickness"), f"≤ {f(b.production.board_thickness_mm, 1)} mm",
+         _("corrugated board, white board and prints")],
+        [_("drive"), _("V-belt → two-stage helical reducer → coupling → distribution shaft"), "—"],
+        [_("actuators"),
+         _("fixed upper die, lower platen lifted by a six-bar toggle linkage; a cam opens "
+           "the spring grippers; an incomplete gear drives the gripper chain "
+           "intermittently"), "—"],
     ]
     return rows
 
 
-def _choice_rows(b, p, r, zh: bool) -> list[list[str]]:
+def _choice_rows(b, p, r, _) -> list[list[str]]:
     """Values this design chooses where the task is silent, with the reasons."""
     pr, ms, ct = b.press, b.masses, b.cutting
     from ...core.motion_laws import LAWS
@@ -156,104 +159,91 @@ def _choice_rows(b, p, r, zh: bool) -> list[list[str]]:
     given = pr.dimensions is not None
     g = p.geometry
     H_mm = g.stroke * MM
-    sub = ("（由尺寸导出）" if zh else " (derived)") if given else ""
+    sub = _(" (derived)") if given else ""
     rows = [
-        ["$H$", ("下模板行程" if zh else "platen stroke") + sub,
+        ["$H$", _("platen stroke") + sub,
          f"{f(H_mm, 3) if given else f(pr.stroke_H_mm, 1)} mm",
-         (f"送纸时夹爪排与纸板须从上、下模之间通过；下模板在最低位置时与上模的间隙为 H − t = "
-          f"{f(H_mm - b.production.board_thickness_mm, 1)} mm" if zh else
-          f"the gripper bar and the sheet pass between die and platen; at the bottom the gap is "
-          f"H − t = {f(H_mm - b.production.board_thickness_mm, 1)} mm")],
-        ["$c$", "让开高度" if zh else "clearance level", f"{f(pr.clearance_mm, 1)} mm",
-         "下模板低于上止点至少 c 时夹爪排（约 12 mm）与纸板才能通过，另留余量" if zh else
-         "the platen must be at least c below its top for the gripper bar (about 12 mm) and the "
-         "sheet to pass, with some margin"],
-        ["$K$", ("行程速比系数" if zh else "time ratio") + sub, f(g.K, 6) if given else f(pr.time_ratio_K, 2),
-         "上升（压切）行程慢、下降快：压切区占较大的曲柄转角，所需力矩峰值较小" if zh else
-         "slow rise (cutting), quick fall: the cut takes more crank angle, so the torque peak is lower"],
+         _("the gripper bar and the sheet pass between die and platen; at the bottom the "
+            "gap is H − t = {H_mm} mm", H_mm=f(H_mm - b.production.board_thickness_mm, 1))],
+        ["$c$", _("clearance level"), f"{f(pr.clearance_mm, 1)} mm",
+         _("the platen must be at least c below its top for the gripper bar (about 12 mm) "
+           "and the sheet to pass, with some margin")],
+        ["$K$", _("time ratio") + sub, f(g.K, 6) if given else f(pr.time_ratio_K, 2),
+         _("slow rise (cutting), quick fall: the cut takes more crank angle, so the "
+           "torque peak is lower")],
     ]
     if given:
         dm = pr.dimensions
-        rows.append(["$a, b, d$", "曲柄 O1A、连杆 AB、机架 O1C（给定）" if zh else
-                     "crank O1A, coupler AB, frame O1C (given)",
+        rows.append(["$a, b, d$", _("crank O1A, coupler AB, frame O1C (given)"),
                      f"{f(dm.crank_O1A_mm, 3)}, {f(dm.coupler_AB_mm, 3)}, {f(dm.frame_O1C_mm, 3)} mm",
-                     "任务书给定尺寸，不作综合；θ、ψ、K 与 H 由尺寸导出（见肘杆机构设计）" if zh else
-                     "the brief's dimensions, no synthesis; θ, ψ, K and H are derived from them "
-                     "(see the toggle press chapter)"])
+                     _("the brief's dimensions, no synthesis; θ, ψ, K and H are derived from them "
+                       "(see the toggle press chapter)")])
     rows += [
-        ["$l_{CB}, l_{BD}$", "肘杆长度" if zh else "toggle links",
+        ["$l_{CB}, l_{BD}$", _("toggle links"),
          f"{f(pr.toggle_CB_mm, 0)}, {f(pr.toggle_BD_mm, 0)} mm",
-         "肘杆越长，同一行程所需摆角越小；BD 长于 CB，BD 不会躺平，最低位置时滑块压力角小" if zh else
-         "longer toggles need less swing for the stroke; BD longer than CB never lies flat and keeps "
-         "the slider's pressure angle small at the bottom"],
-        ["$\\varepsilon$", "上止点时 CB 偏离导路的角度" if zh else "toggle angle at the top",
+         _("longer toggles need less swing for the stroke; BD longer than CB never lies "
+           "flat and keeps the slider's pressure angle small at the bottom")],
+        ["$\\varepsilon$", _("toggle angle at the top"),
          f"{f(pr.toggle_angle_at_top_deg, 1)}°",
-         "肘杆在上止点伸直，且与曲柄摇杆的极位重合：$v_D \\to 0$ 更快（上止点附近 $H - s \\propto \\Delta\\varphi^4$），模切力直接由伸直的肘杆传给机架" if zh else
-         "toggle straight at the top, which is also the crank-rocker's extreme: $v_D \\to 0$ faster "
-         "($H - s \\propto \\Delta\\varphi^4$ near the top), the cutting force goes straight through the toggle "
-         "into the frame"],
-        ["—", "上止点对应的曲柄摇杆极位" if zh else "crank-rocker extreme at the top",
-         ({"extended": "拉直共线", "folded": "重叠共线"} if zh else
-          {"extended": "extended", "folded": "folded"})[pr.top_position],
-         "摇杆在极位附近转得慢，与肘杆伸直叠加，上止点附近下模板近似停歇" if zh else
-         "the rocker is slow near its extreme; with the straight toggle the platen all but dwells "
-         "near the top"],
-        ["$F_c$", "模切力" if zh else "cutting force", f"{F_kN} kN",
-         (f"刀线总长 L = {f(ct.cut_length_m, 1)} m（估计值）× 单位长度模切阻力 q = "
-          f"{f(ct.specific_resistance_N_per_mm, 0)} N/mm（假定值）" if zh else
-          f"total rule length L = {f(ct.cut_length_m, 1)} m (estimate) × resistance per mm of rule "
-          f"q = {f(ct.specific_resistance_N_per_mm, 0)} N/mm (assumed)")],
-        ["$t$", "压切行程" if zh else "pressing travel", f"{t_mm} mm",
-         "等于纸板厚度，$F_c$ 在这段行程内取常值（偏于安全：实际压力随刀线切入逐渐增大）" if zh else
-         "the board thickness; $F_c$ is taken constant over it (on the safe side: the real force "
-         "builds up as the rule cuts in)"],
-        ["$m_6$", "下模板及滑块质量" if zh else "platen and slide mass", f"{f(ms.platen_kg, 0)} kg",
-         "铸铁下模板约 750 × 520 × 70 mm" if zh else "cast-iron platen about 750 × 520 × 70 mm"],
-        ["$m_3, m_4, m_5$", "连杆与肘杆质量（均质杆）" if zh else "coupler and toggle masses (uniform bars)",
+         _("toggle straight at the top, which is also the crank-rocker's extreme: $v_D "
+           "\\to 0$ faster ($H - s \\propto \\Delta\\varphi^4$ near the top), the cutting "
+           "force goes straight through the toggle into the frame")],
+        ["—", _("crank-rocker extreme at the top"),
+         {"extended": _("extended"), "folded": _("folded")}[pr.top_position],
+         _("the rocker is slow near its extreme; with the straight toggle the platen all "
+           "but dwells near the top")],
+        ["$F_c$", _("cutting force"), f"{F_kN} kN",
+         _("total rule length L = {cut_length_m} m (estimate) × resistance per mm of rule "
+            "q = {specific_resistance_N_per_mm} N/mm (assumed)", cut_length_m=f(ct.cut_length_m, 1),
+            specific_resistance_N_per_mm=f(ct.specific_resistance_N_per_mm, 0))],
+        ["$t$", _("pressing travel"), f"{t_mm} mm",
+         _("the board thickness; $F_c$ is taken constant over it (on the safe side: the "
+           "real force builds up as the rule cuts in)")],
+        ["$m_6$", _("platen and slide mass"), f"{f(ms.platen_kg, 0)} kg",
+         _("cast-iron platen about 750 × 520 × 70 mm")],
+        ["$m_3, m_4, m_5$", _("coupler and toggle masses (uniform bars)"),
          f"{f(ms.coupler_AB_kg, 0)}, {f(ms.toggle_CB_kg, 0)}, {f(ms.toggle_BD_kg, 0)} kg",
-         "按截面估算" if zh else "estimated from the sections"],
-        ["$[\\delta]$", "许用速度不均匀系数" if zh else "allowed speed fluctuation",
+         _("estimated from the sections")],
+        ["$[\\delta]$", _("allowed speed fluctuation"),
          f"1/{1 / p.fluctuation:.4g}",
-         "冲压类机械 1/7–1/20（教材表）；模切质量对转速波动不敏感" if zh else
-         "presses 1/7–1/20 (textbook table); die cutting is not sensitive to the speed fluctuation"],
-        ["—", "飞轮位置" if zh else "flywheel", _shaft(p.flywheel_shaft, len(b.drive.stages), zh),
-         "转速高处所需转动惯量小（J ∝ 1/n²）" if zh else "a fast shaft needs far less inertia (J ∝ 1/n²)"],
-        (["$h$", "夹爪凸轮行程" if zh else "gripper cam lift", f"{f(cam.follower.stroke_h_mm, 1)} mm",
-          "推开夹爪所需的顶杆行程" if zh else "push-rod travel that opens the grippers"]
+         _("presses 1/7–1/20 (textbook table); die cutting is not sensitive to the speed "
+           "fluctuation")],
+        ["—", _("flywheel"), _shaft(p.flywheel_shaft, len(b.drive.stages), _),
+         _("a fast shaft needs far less inertia (J ∝ 1/n²)")],
+        (["$h$", _("gripper cam lift"), f"{f(cam.follower.stroke_h_mm, 1)} mm",
+          _("push-rod travel that opens the grippers")]
          if cam.follower.motion == "translating" else
-         ["$\\varphi_{max}$", "夹爪凸轮摆杆摆角" if zh else "gripper cam lever swing",
+         ["$\\varphi_{max}$", _("gripper cam lever swing"),
           f"{f(cam.follower.max_swing_deg, 1)}°",
-          "推开夹爪所需的摆杆转角" if zh else "lever swing that opens the grippers"]),
-        ["—", "夹爪凸轮运动角" if zh else "gripper cam angles",
+          _("lever swing that opens the grippers")]),
+        ["—", _("gripper cam angles"),
          " / ".join(f"{f(s_.angle_deg, 0)}°" for s_ in seg),
-         (f"推程、回程用{LAWS[seg[0].law].name_zh}规律，起止处速度、加速度连续，无刚性和柔性冲击" if zh else
-          f"{LAWS[seg[0].law].name_en} rise and return: velocity and acceleration continuous at the "
-          "ends, neither rigid nor soft impact")],
-        ["$m; z_1, z_1', z_2$", "不完全齿轮" if zh else "incomplete gear",
+         _("{name_en} rise and return: velocity and acceleration continuous at the ends, "
+            "neither rigid nor soft impact", name_en=LAWS[seg[0].law].name_en,
+            name_zh=LAWS[seg[0].law].name_zh)],
+        ["$m; z_1, z_1', z_2$", _("incomplete gear"),
          f"{f(ig.module * MM, 1)} mm; {ig.z1}, {ig.teeth}, {ig.z2}",
-         (f"运动角 {_deg(ig.motion_angle, 0)}° 落在下模板让开区内，从动轮每循环转 $z_1'/z_2$ 周" if zh else
-          f"the motion angle {_deg(ig.motion_angle, 0)}° fits in the platen's clear arc; the driven "
-          "wheel turns $z_1'/z_2$ of a turn per cycle")],
-        ["$p, z_s$", "链条节距与链轮齿数" if zh else "chain pitch, sprocket teeth",
+         _("the motion angle {motion_angle}° fits in the platen's clear arc; the driven "
+            "wheel turns $z_1'/z_2$ of a turn per cycle", motion_angle=_deg(ig.motion_angle, 0))],
+        ["$p, z_s$", _("chain pitch, sprocket teeth"),
          f"{f(b.chain.pitch_mm, 2)} mm, {b.chain.sprocket_teeth}",
-         (f"每循环送进一个夹爪排间距 {f(b.chain.bar_spacing_mm, 1)} mm（幅面长度加夹爪排与间隙）" if zh else
-          f"one gripper-bar spacing {f(b.chain.bar_spacing_mm, 1)} mm per cycle (sheet length plus "
-          "the bar and a gap)")],
-        ["$K_A$", "使用系数" if zh else "application factor", f(b.drive.service.application_factor_KA, 2),
-         "冲击载荷" if zh else "shock load"],
+         _("one gripper-bar spacing {bar_spacing_mm} mm per cycle (sheet length plus the "
+            "bar and a gap)", bar_spacing_mm=f(b.chain.bar_spacing_mm, 1))],
+        ["$K_A$", _("application factor"), f(b.drive.service.application_factor_KA, 2),
+         _("shock load")],
     ]
     return rows
 
 
-def _shaft(index: int, stages: int, zh: bool) -> str:
+def _shaft(index: int, stages: int, _) -> str:
     if index == 0:
-        return "电动机轴" if zh else "motor shaft"
+        return _("motor shaft")
     if index == stages:
-        return "分配轴" if zh else "distribution shaft"
-    return f"{shaft_numeral(index)} 轴" if zh else f"shaft {shaft_numeral(index)}"
+        return _("distribution shaft")
+    return _("shaft {index}", index=shaft_numeral(index))
 
 
-def _synthesis(d, p, zh: bool) -> dict:
+def _synthesis(d, p, _) -> dict:
     g = d.geometry
     lt, ld = g.toggle_CB * MM, g.toggle_BD * MM
     eps, psi = g.top_angle, d.swing
@@ -298,44 +288,42 @@ def _synthesis(d, p, zh: bool) -> dict:
                        r"\quad \frac{dy_D}{d\theta_4} = l_{CB}\cos\theta_4 + "
                        r"\frac{l_{CB}^2\sin\theta_4\cos\theta_4}{\sqrt{l_{BD}^2 - l_{CB}^2\cos^2\theta_4}}"),
     }
-    der = ("（导出）" if zh else " (derived)") if given else ""
-    giv = ("（给定）" if zh else " (given)") if given else ""
+    der = _.pgettext("die_cutter", " (derived)") if given else ""
+    giv = _(" (given)") if given else ""
     dig = 3 if given else 2
     rows = [
-        ["$\\psi$", ("肘杆 CB 摆角" if zh else "swing of CB") + der, _deg(psi, dig), "°"],
-        ["$\\theta$", ("极位夹角" if zh else "extreme-position angle") + der, f(theta, dig), "°"],
-        ["$a = l_{O_1A}$", ("曲柄" if zh else "crank") + giv, f(fb.crank * MM, dig), "mm"],
-        ["$b = l_{AB}$", ("连杆" if zh else "coupler") + giv, f(fb.coupler * MM, dig), "mm"],
-        ["$c = l_{CB}$", "肘杆（摇杆）" if zh else "toggle (rocker)", f(lt, 2), "mm"],
-        ["$l_{BD}$", "肘杆" if zh else "toggle", f(ld, 2), "mm"],
-        ["$d = l_{O_1C}$", ("机架" if zh else "frame") + giv, f(fb.frame * MM, dig), "mm"],
-        ["$O_1$", "曲柄轴心（C 为原点）" if zh else "crank pivot (C at the origin)",
+        ["$\\psi$", _("swing of CB") + der, _deg(psi, dig), "°"],
+        ["$\\theta$", _("extreme-position angle") + der, f(theta, dig), "°"],
+        ["$a = l_{O_1A}$", _("crank") + giv, f(fb.crank * MM, dig), "mm"],
+        ["$b = l_{AB}$", _("coupler") + giv, f(fb.coupler * MM, dig), "mm"],
+        ["$c = l_{CB}$", _("toggle (rocker)"), f(lt, 2), "mm"],
+        ["$l_{BD}$", _("toggle"), f(ld, 2), "mm"],
+        ["$d = l_{O_1C}$", _("frame") + giv, f(fb.frame * MM, dig), "mm"],
+        ["$O_1$", _("crank pivot (C at the origin)"),
          f"({f(d.O1.real * MM, 2)}, {f(d.O1.imag * MM, 2)})", "mm"],
-        ["$y_D$", "下模板铰点 D 的高度（上止点 / 下止点）" if zh else "height of D (top / bottom)",
+        ["$y_D$", _("height of D (top / bottom)"),
          f"{f(d.top_height * MM, 2)} / {f(d.bottom_height * MM, 2)}", "mm"],
-        ["$\\gamma_{min}$", "曲柄摇杆最小传动角" if zh else "minimum transmission angle",
+        ["$\\gamma_{min}$", _("minimum transmission angle"),
          _deg(d.gamma_min, 2), "°"],
-        ["$\\varphi_{rise}$", "上升行程曲柄转角" if zh else "crank angle of the rise",
+        ["$\\varphi_{rise}$", _("crank angle of the rise"),
          _deg(d.rising_span, 2), "°"],
     ]
     if given:
-        rows[2:2] = [["$K$", ("行程速比系数" if zh else "time ratio") + der, f(K, 6), "—"],
-                     ["$H$", ("下模板行程" if zh else "platen stroke") + der, f(g.stroke * MM, 4), "mm"]]
-    pivot = ("按给定机架长 O1C 取 θ 圆上的点" if zh else "the point of the θ-circle at the given frame O1C") \
+        rows[2:2] = [["$K$", _("time ratio") + der, f(K, 6), "—"],
+                     ["$H$", _("platen stroke") + der, f(g.stroke * MM, 4), "mm"]]
+    pivot = _("the point of the θ-circle at the given frame O1C") \
         if g.frame is not None else \
-        ("在 θ 圆的允许弧上搜索，使最小传动角最大" if zh else
-         "searched along the allowed arc of the θ-circle for the largest minimum transmission angle")
-    mirrored = ("为使上升行程为慢行程（K > 1），图形按导路作了镜像。" if zh else
-                "The drawing is mirrored about the guide so that the rise is the slow stroke (K > 1).") \
+        _("searched along the allowed arc of the θ-circle for the largest minimum "
+           "transmission angle")
+    mirrored = _("The drawing is mirrored about the guide so that the rise is the slow stroke "
+                  "(K > 1).") \
         if d.mirrored else ""
     return {"eq": eq, "rows": rows, "pivot": pivot, "mirrored": mirrored, "given": given,
             "psi": _deg(psi, 3), "eps": _deg(eps, 2), "theta": f(theta, 3),
-            "top": ({"extended": "拉直共线位置（AC = b + a）", "folded": "重叠共线位置（AC = b − a）"} if zh else
-                    {"extended": "extended position (AC = b + a)", "folded": "folded position (AC = b − a)"}
-                    )[g.top_position]}
+            "top": {"extended": _("extended position (AC = b + a)"), "folded": _("folded position (AC = b − a)")}[g.top_position]}
 
 
-def _amplification(r, p, zh: bool) -> dict:
+def _amplification(r, p, _) -> dict:
     amp, k, f_ = r["amplification"], r["press"], r["press_forces"]
     d = r["toggle"]
     n = k.grid_size
@@ -388,15 +376,16 @@ def _amplification(r, p, zh: bool) -> dict:
     }
 
 
-def _flywheel(r, p, b, zh: bool) -> dict:
+def _flywheel(r, p, b, _) -> dict:
     fl = r["press_flywheel"]
-    shaft = _shaft(fl.shaft, len(b.drive.stages), zh)
-    rows = [[_shaft(s.index, len(b.drive.stages), zh), f(s.speed_rpm, 1), f(s.torque, 1, group=True),
+    crank_shaft = _("distribution shaft")
+    shaft = _shaft(fl.shaft, len(b.drive.stages), _)
+    rows = [[_shaft(s.index, len(b.drive.stages), _), f(s.speed_rpm, 1), f(s.torque, 1, group=True),
              f(s.peak_torque, 1, group=True), f(s.d_seat * MM, 0), f(s.d_peak * MM, 0)]
             for s in r["peak_shafts"]]
     eq = {
         "md": (rf"M_d = \frac{{1}}{{2\pi}}\oint M_b\,d\varphi = {f(fl.mean_torque, 2)}\ \text{{N·m}}"
-               rf"\ (\text{{{'分配轴' if zh else 'distribution shaft'}}})"),
+               rf"\ (\text{{{crank_shaft}}})"),
         "jf": (rf"J_F = \frac{{900\,\Delta W_{{max}}}}{{\pi^2 n^2 [\delta]}} = \frac{{900 \times "
                rf"{f(fl.max_energy_swing, 1)}}}{{\pi^2 \times {f(fl.shaft_speed_rpm, 2)}^2 \times "
                rf"{f(fl.fluctuation, 4)}}} = {f(fl.inertia, 3)}\ \text{{kg·m}}^2"),
@@ -419,24 +408,23 @@ def _flywheel(r, p, b, zh: bool) -> dict:
             "share": f(fl.max_energy_swing / r["amplification"].cut_work * 100, 1)}
 
 
-def _feed(r, b, p, zh: bool) -> dict:
+def _feed(r, b, p, _) -> dict:
     """The chain, and the incomplete gear's motion angle against the platen's clear arc."""
     fd = r["feed"]
     g = fd.gear
     t = g.times()
     rows = [
-        ["$p$", "链条节距" if zh else "chain pitch", f(p.chain_pitch * MM, 2), "mm"],
-        ["$z_s$", "链轮齿数" if zh else "sprocket teeth", str(p.sprocket_teeth), "—"],
-        ["$R_s$", "链轮分度圆半径 $p/(2\\sin(180°/z_s))$" if zh else "sprocket pitch radius $p/(2\\sin(180°/z_s))$",
+        ["$p$", _("chain pitch"), f(p.chain_pitch * MM, 2), "mm"],
+        ["$z_s$", _("sprocket teeth"), str(p.sprocket_teeth), "—"],
+        ["$R_s$", _("sprocket pitch radius $p/(2\\sin(180°/z_s))$"),
          f(fd.sprocket_radius * MM, 2), "mm"],
-        ["$L$", "每循环送进量 $(z_1'/z_2)\\,z_s\\,p$" if zh else "feed per cycle $(z_1'/z_2)\\,z_s\\,p$",
+        ["$L$", _("feed per cycle $(z_1'/z_2)\\,z_s\\,p$"),
          f(fd.feed * MM, 2), "mm"],
-        ["$L_0$", "夹爪排间距（要求）" if zh else "gripper-bar spacing (required)", f(p.bar_spacing * MM, 2), "mm"],
-        ["$t_m$", "送进时间" if zh else "feed time", f(t[1], 3), "s"],
-        ["$\\bar v_c$", "送进时链条平均速度 $L/t_m$" if zh else "mean chain speed while feeding $L/t_m$",
+        ["$L_0$", _("gripper-bar spacing (required)"), f(p.bar_spacing * MM, 2), "mm"],
+        ["$t_m$", _("feed time"), f(t[1], 3), "s"],
+        ["$\\bar v_c$", _("mean chain speed while feeding $L/t_m$"),
          f(fd.chain_speed, 3), "m/s"],
-        ["$\\Delta v_c$", "啮合开始时链速突变 $R_s\\,\\Delta\\omega_2$" if zh else
-         "chain speed jump at engagement $R_s\\,\\Delta\\omega_2$", f(fd.chain_jump, 3), "m/s"],
+        ["$\\Delta v_c$", _("chain speed jump at engagement $R_s\\,\\Delta\\omega_2$"), f(fd.chain_jump, 3), "m/s"],
     ]
     eq = (rf"L = \frac{{z_1'}}{{z_2}}\,z_s\,p = \frac{{{g.teeth}}}{{{g.z2}}} \times {p.sprocket_teeth} "
           rf"\times {f(p.chain_pitch * MM, 2)} = {f(fd.feed * MM, 2)}\ \text{{mm}}")
@@ -454,63 +442,61 @@ def _feed(r, b, p, zh: bool) -> dict:
             "margin": _deg(p.margin, 1)}
 
 
-def _ok(zh: bool, good: bool) -> str:
-    return verdict(good, "zh" if zh else "en")
+def _ok(_, good: bool) -> str:
+    return verdict(good, _.lang)
 
 
-def _verify_rows(r, p, zh: bool) -> list[list[str]]:
+def _verify_rows(r, p, _) -> list[list[str]]:
     from ...render.linkage_report import verification_rows
 
     v, k, amp = r["verification"], r["press"], r["amplification"]
     f_ = r["press_forces"]
     g = r["toggle"].geometry
     step = v.grid_step
-    rows = verification_rows(r["press_verification"], "zh" if zh else "en", k)
+    rows = verification_rows(r["press_verification"], _.lang, k)
     # The top is flat to order n: a position search places it only within δφ, so the
     # K it finds carries that uncertainty (the velocity zeros are exact).
     vk = r["press_verification"]
     for row in rows:
-        if row[0] in ("位置搜索所得 K", "K by position search"):
-            row[2] = (f"{f(k.time_ratio, 4)} ± {e(v.K_search_tol)}（顶部 $H - s \\propto \\Delta\\varphi^n$，n = {f(v.top_order, 2)}，"
-                      f"位置搜索的角度分辨率约 {e(v.search_angle_tol)} rad）" if zh else
-                      f"{f(k.time_ratio, 4)} ± {e(v.K_search_tol)} (top flat as $H - s \\propto \\Delta\\varphi^n$, n = {f(v.top_order, 2)}: "
-                      f"a position search resolves about {e(v.search_angle_tol)} rad)")
-            row[3] = _ok(zh, abs(vk.time_ratio - k.time_ratio) <= v.K_search_tol + 1e-6)
+        if row[0] == _("K by position search"):
+            row[2] = _("{time_ratio} ± {K_search_tol} (top flat as $H - s \\propto \\Delta\\varphi^n$, n "
+                        "= {top_order}: a position search resolves about {search_angle_tol} rad)",
+                        time_ratio=f(k.time_ratio, 4), K_search_tol=e(v.K_search_tol),
+                        top_order=f(v.top_order, 2), search_angle_tol=e(v.search_angle_tol))
+            row[3] = _ok(_, abs(vk.time_ratio - k.time_ratio) <= v.K_search_tol + 1e-6)
     # the switch-on of F_c falls between grid points: the mean of M_b is off by at most
     # one jump × one step / 2π
     bound = float(amp.peak_required * step / (2 * np.pi) / f_.mean_torque)
     rows += [
-        ["仿真行程 − 设计行程 H /mm" if zh else "simulated stroke − H /mm", e(v.stroke_error * MM),
-         f"H = {f(g.stroke * MM, 2)} mm", _ok(zh, abs(v.stroke_error) < 1e-9)],
-        ["仿真所得 K（输出速度零点）" if zh else "simulated K (zeros of the output speed)",
+        [_("simulated stroke − H /mm"), e(v.stroke_error * MM),
+         f"H = {f(g.stroke * MM, 2)} mm", _ok(_, abs(v.stroke_error) < 1e-9)],
+        [_("simulated K (zeros of the output speed)"),
          f(k.time_ratio, 4), f"K = {f(g.K, 4)} ± {e(v.K_velocity_tol)}",
-         _ok(zh, abs(k.time_ratio - g.K) <= v.K_velocity_tol)],
-        ["仿真上止点处 CB 偏离导路的角度 /°" if zh else "toggle angle at the simulated top /°",
+         _ok(_, abs(k.time_ratio - g.K) <= v.K_velocity_tol)],
+        [_("toggle angle at the simulated top /°"),
          e(v.top_toggle_angle * DEG), f"ε = {f(g.top_angle * DEG, 2)}°",
-         _ok(zh, abs(v.top_toggle_angle - g.top_angle) <= max(v.search_angle_tol, 1e-8))],
-        ["上止点附近 $H - s \\propto \\Delta\\varphi^n$ 的阶数 n" if zh else
-         "order n of $H - s \\propto \\Delta\\varphi^n$ near the top", f(v.top_order, 3),
-         "4 (ε = 0) / 2 (ε > 0)", _ok(zh, abs(v.top_order - (4 if g.top_angle == 0 else 2)) < 0.05)],
-        ["增力特性：动态静力分析与虚功闭式解之差（相对）" if zh else
-         "force amplification: kinetostatics vs virtual-work closed form (relative)",
-         e(v.amplification_error), "≤ 10⁻⁹", _ok(zh, v.amplification_error < 1e-9)],
-        ["能量平衡 $\\oint M_b d\\varphi / (F_c t)$" if zh else "energy balance $\\oint M_b d\\varphi / (F_c t)$",
-         f(v.energy_ratio, 4), f"1 ± {f(bound, 4)}", _ok(zh, abs(v.energy_ratio - 1) <= bound)],
-        ["循环图下模板行与仿真位移不符的转角 /°" if zh else "platen row vs simulated s: disagreeing angle /°",
-         f(v.platen_mismatch * DEG, 2), f"≤ {f(2 * step * DEG, 2)}", _ok(zh, v.platen_mismatch <= 2 * step + 1e-12)],
-        ["循环图夹爪行与凸轮升程不符的转角 /°" if zh else "gripper row vs cam lift: disagreeing angle /°",
-         f(v.gripper_mismatch * DEG, 2), f"≤ {f(2 * step * DEG, 2)}", _ok(zh, v.gripper_mismatch <= 2 * step + 1e-12)],
-        ["循环图链条行与不完全齿轮运动不符的转角 /°" if zh else
-         "chain row vs incomplete gear motion: disagreeing angle /°",
-         f(v.chain_mismatch * DEG, 2), f"≤ {f(2 * step * DEG, 2)}", _ok(zh, v.chain_mismatch <= 2 * step + 1e-12)],
-        ["链条送进量 − 夹爪排间距 /mm" if zh else "chain feed − gripper-bar spacing /mm",
-         e(v.feed_error * MM), "0", _ok(zh, abs(v.feed_error) < 1e-8)],
+         _ok(_, abs(v.top_toggle_angle - g.top_angle) <= max(v.search_angle_tol, 1e-8))],
+        [_("order n of $H - s \\propto \\Delta\\varphi^n$ near the top"), f(v.top_order, 3),
+         "4 (ε = 0) / 2 (ε > 0)", _ok(_, abs(v.top_order - (4 if g.top_angle == 0 else 2)) < 0.05)],
+        [_("force amplification: kinetostatics vs virtual-work closed form (relative)"),
+         e(v.amplification_error), "≤ 10⁻⁹", _ok(_, v.amplification_error < 1e-9)],
+        [_("energy balance $\\oint M_b d\\varphi / (F_c t)$"),
+         f(v.energy_ratio, 4), f"1 ± {f(bound, 4)}", _ok(_, abs(v.energy_ratio - 1) <= bound)],
+        [_("platen row vs simulated s: disagreeing angle /°"),
+         f(v.platen_mismatch * DEG, 2), f"≤ {f(2 * step * DEG, 2)}", _ok(_, v.platen_mismatch <= 2 * step + 1e-12)],
+        [_("gripper row vs cam lift: disagreeing angle /°"),
+         f(v.gripper_mismatch * DEG, 2), f"≤ {f(2 * step * DEG, 2)}", _ok(_, v.gripper_mismatch <= 2 * step + 1e-12)],
+        [_("chain row vs incomplete gear motion: disagreeing angle /°"),
+         f(v.chain_mismatch * DEG, 2), f"≤ {f(2 * step * DEG, 2)}", _ok(_, v.chain_mismatch <= 2 * step + 1e-12)],
+        [_("chain feed − gripper-bar spacing /mm"),
+         e(v.feed_error * MM), "0", _ok(_, abs(v.feed_error) < 1e-8)],
     ]
     return rows
 
 
 def _findings(r, lang: str) -> list[str]:
     """Every stage's findings; the drive's (listed in its own chapter) as one summary line."""
+    _ = tr(lang)
     out = []
     for key in ("press_verification", "press_flywheel", "cam", "feed", "cycle"):
         for w in getattr(r.get(key), "warnings", None) or ():
@@ -520,18 +506,13 @@ def _findings(r, lang: str) -> list[str]:
     drive = r["drive"].warnings
     if drive:
         peak = r["peak_shafts"]
-        if lang == "zh":
-            text = f"传动装置设计中有 {len(drive)} 项校核不合格（见传动装置设计一章的“设计中的问题”）"
-            if peak:
-                text += "：飞轮之后的轴、轴承和键按峰值转矩校核，应按“飞轮之后各轴的峰值转矩”表加大轴径后重新选择轴承和键"
-        else:
-            text = (f"{len(drive)} checks of the drive design fail (listed in the drive chapter's "
-                    "problems)")
-            if peak:
-                text += ("; the shafts, bearings and keys after the flywheel are checked with the peak "
-                         "torque: enlarge the shafts as the table \"shafts after the flywheel\" says, then "
-                         "choose bearings and keys again")
-        out.append(text + ("。" if lang == "zh" else "."))
+        text = _("{n} checks of the drive design fail (listed in the drive chapter's problems)",
+                 n=len(drive))
+        if peak:
+            text += _("; the shafts, bearings and keys after the flywheel are checked with the peak "
+                      "torque: enlarge the shafts as the table \"shafts after the flywheel\" says, "
+                      "then choose bearings and keys again")
+        out.append(text + _("."))
     return out
 
 
@@ -547,12 +528,12 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
     from ...render.drive_report import drive_context
     from ...render.linkage_report import linkage_context
 
-    zh = lang == "zh"
+    _ = tr(lang)
     p = r["params"]
     k, f_ = r["press"], r["press_forces"]
     lk = linkage_context(r["press_model"], k, f_, None, r["press_verification"], figures, lang,
                          prefix="press",
-                         title="模切机构运动与动力分析" if zh else "Toggle press: kinematics and kinetostatics")
+                         title=_("Toggle press: kinematics and kinetostatics"))
     cam = cam_context(r["cam"], lang, figures, "cam_profile.csv")
     ig = intermittent_context(r["feed"].gear, r["feed"].curves, lang, {"motion": figures["ig_motion"]}, level=2,
                               label="dc-ig")
@@ -563,19 +544,18 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
     pw = (rf"P_w = \bar M_b\,\omega = {f(f_.mean_torque, 2)} \times {f(abs(p.crank_omega), 4)} = "
           rf"{f(f_.mean_power, 1)}\ \text{{W}}")
     drive = drive_context(r["drive"], lang, figures, pw)
-    verify = _verify_rows(r, p, zh)
+    verify = _verify_rows(r, p, _)
     for row in cycle["verify"] + ig["verify"]:
         value = number(row[1])
-        verify.append([row[0], row[1], "0", _ok(zh, abs(value) < 1e-6)])
+        verify.append([row[0], row[1], "0", _ok(_, abs(value) < 1e-6)])
     gear = r["feed"].gear
     return {
         "meta": md_meta(brief.report, lang), "fig": figures,
         "rpm": f(p.shaft_rpm, 2), "period": f(60 / p.shaft_rpm, 3), "omega": f(abs(p.crank_omega), 4),
-        "sense": ("顺时针" if p.crank_omega < 0 else "逆时针") if zh else
-                 ("clockwise" if p.crank_omega < 0 else "counter-clockwise"),
-        "data_rows": _data_rows(brief, p, zh), "choice_rows": _choice_rows(brief, p, r, zh),
-        "syn": _synthesis(r["toggle"], p, zh), "amp": _amplification(r, p, zh),
-        "fly": _flywheel(r, p, brief, zh), "feed": _feed(r, brief, p, zh),
+        "sense": _("clockwise") if p.crank_omega < 0 else _("counter-clockwise"),
+        "data_rows": _data_rows(brief, p, _), "choice_rows": _choice_rows(brief, p, r, _),
+        "syn": _synthesis(r["toggle"], p, _), "amp": _amplification(r, p, _),
+        "fly": _flywheel(r, p, brief, _), "feed": _feed(r, brief, p, _),
         "linkage": lk, "cam": cam, "ig": ig, "cycle": cycle, "drive": drive,
         "gripper_start": _deg(cyc.gripper_start, 1), "gripper_auto": cyc.gripper_auto,
         "feed_start": _deg(gear.motion_start, 1),

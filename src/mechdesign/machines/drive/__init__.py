@@ -4,6 +4,7 @@ its own (the shared drive stage, :mod:`mechdesign.stages.drive`).
 The whole machine is this package: its brief (:mod:`.brief`), its stages and results
 (:mod:`.stages`) and its report (:mod:`.report`).
 """
+from ...i18n import N_
 from ...registry import Entry
 
 _P = __name__
@@ -11,7 +12,7 @@ ENTRY = Entry(
     "drive", f"{_P}.brief:DriveBrief", f"{_P}.brief:drive_brief_to_si", f"{_P}.stages:DRIVE_STAGES",
     f"{_P}.stages:drive_results_document", f"{_P}.report", "furnace_drive.yaml",
     results=f"{_P}.stages:DriveResults", summary=(
-        ("总传动比", "total ratio", "", "drive.total_ratio", 1.0),
-        ("所需功率", "power required", "W", "drive.power_required", 1.0),
-        ("电动机", "motor", "", "drive.motor.designation", 1.0),
-        ("输出转速", "output speed", "rpm", "drive.output_speed_rpm", 1.0)))
+        (N_("total ratio"), "", "drive.total_ratio", 1.0),
+        (N_("power required"), "W", "drive.power_required", 1.0),
+        (N_("motor"), "", "drive.motor.designation", 1.0),
+        (N_("output speed"), "rpm", "drive.output_speed_rpm", 1.0)))

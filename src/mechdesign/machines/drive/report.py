@@ -3,6 +3,7 @@ from __future__ import annotations
 
 from pathlib import Path
 import numpy as np
+from ...i18n import N_, tr
 from ...render.fmt import e, f, md_meta, md_text
 from ...render.fmt import verdict
 from ...render.drive_report import _shaft_name, drive_context
@@ -32,19 +33,14 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
             **verification_context(r["drive"], r.get("drive_verification"), lang)}
 
 
-_NOTE = {
-    "zh": "各项由本次运行按定义重算：各轴转速、功率、转矩逐级由上一轴推出（电动机轴到第一根轴不计轴承损失，"
-          "其后每根轴一对滚动轴承），与设计所得的轴表比较；功率平衡检查传到工作机的功率是否正好等于其所需功率；"
-          "强度裕度 = 1 − 计算值/许用值（寿命、直径为 1 − 要求值/计算值），各轴取所有校核项目中最小者；"
-          "支反力平衡对两个平面分别计入全部外载荷（轴向力以 $F_a r$ 的力偶计入垂直面）与支反力，对轴承 B 取矩。",
-    "en": "Each item is recomputed in this run by its definition: every shaft's speed, power and torque from the shaft "
-          "before it (no bearing loss between the motor and the first shaft, one pair of rolling bearings on every "
-          "shaft after it) against the designed shaft table; the power balance checks that the power reaching the "
-          "machine is exactly what it needs; a strength margin is 1 − value/allowable (for lives and diameters "
-          "1 − required/value), the smallest over all checks of a stage or shaft; the statics of each shaft take every "
-          "load (an axial force as the couple $F_a r$ in the vertical plane) and both reactions, in both planes, with "
-          "moments about bearing B.",
-}
+_NOTE = N_("Each item is recomputed in this run by its definition: every shaft's speed, power "
+           "and torque from the shaft before it (no bearing loss between the motor and the first "
+           "shaft, one pair of rolling bearings on every shaft after it) against the designed "
+           "shaft table; the power balance checks that the power reaching the machine is exactly "
+           "what it needs; a strength margin is 1 − value/allowable (for lives and diameters 1 − "
+           "required/value), the smallest over all checks of a stage or shaft; the statics of "
+           "each shaft take every load (an axial force as the couple $F_a r$ in the vertical "
+           "plane) and both reactions, in both planes, with moments about bearing B.")
 
 
 def verification_context(d, v, lang: str) -> dict:
@@ -53,35 +49,37 @@ def verification_context(d, v, lang: str) -> dict:
         return {"verify_rows": [], "findings": [], "verify_note": ""}
     from ...stages.drive import DRIVE_CHECK_NAMES
 
-    zh = lang == "zh"
+    _ = tr(lang)
     last = len(d.shafts) - 1
     rows = []
     for k in v.checks:
-        name = DRIVE_CHECK_NAMES[k.key][0 if zh else 1]
+        name = DRIVE_CHECK_NAMES[k.key][0 if _.zh else 1]
         ok = verdict(k.passed, lang)
         if k.key == "speed_error":
             rows.append([name, f"{f(k.detail['signed'] * 100, 3)}%", f"≤ ±{f(k.limit * 100, 1)}%", ok])
         elif k.key == "motor_power":
-            rows.append([name, f"{f(k.value * 100, 1)}%（{f(k.detail['required'] / 1e3, 4)} / {f(k.detail['rated'] / 1e3, 2)} kW）"
-                         if zh else f"{f(k.value * 100, 1)}% ({f(k.detail['required'] / 1e3, 4)} / {f(k.detail['rated'] / 1e3, 2)} kW)",
+            rows.append([name, _("{value}% ({detail} / {detail2} kW)", value=f(k.value * 100, 1),
+                                 detail=f(k.detail['required'] / 1e3, 4),
+                                 detail2=f(k.detail['rated'] / 1e3, 2)),
                          "≥ 0", ok])
         elif k.key == "margin":
             if "shaft" in k.detail:
-                where = _shaft_name(k.detail["shaft"], last, zh)
+                where = _shaft_name(k.detail["shaft"], last, _.zh)
             else:
                 st = d.stages[k.detail["stage"]]
-                where = f"第 {st.index + 1} 级{st.name_zh}" if zh else f"stage {st.index + 1} ({st.name_en})"
-            check = k.detail["check_zh"] if zh else k.detail["check_en"]
-            item = (f"{where}：{name}（{k.detail['checks']} 项）" if zh else
-                    f"{where}: {name} ({k.detail['checks']} checks)")
-            rows.append([item, f"{f(k.value * 100, 1)}%（{check}）" if zh else f"{f(k.value * 100, 1)}% ({check})",
+                where = _("stage {index} ({name_en})", index=st.index + 1, name_en=st.name_en,
+                          name_zh=st.name_zh)
+            check = k.detail["check_zh"] if _.zh else k.detail["check_en"]
+            item = _("{where}: {name} ({detail} checks)", where=where, name=name,
+                      detail=k.detail['checks'])
+            rows.append([item, _("{value}% ({check})", value=f(k.value * 100, 1), check=check),
                          "≥ 0", ok])
         elif k.key == "verdicts":
             rows.append([name, str(int(k.value)), "0", ok])
         elif k.key == "reactions":
-            where = _shaft_name(k.detail["shaft"], last, zh)
-            rows.append([f"{where}：{name}" if zh else f"{where}: {name}", e(k.value), f"≤ {e(k.limit)}", ok])
+            where = _shaft_name(k.detail["shaft"], last, _.zh)
+            rows.append([_("{where}: {name}", where=where, name=name), e(k.value), f"≤ {e(k.limit)}", ok])
         else:
             rows.append([name, e(k.value), f"≤ {e(k.limit)}", ok])
     return {"verify_rows": rows, "findings": [md_text(w.text(lang)) for w in v.warnings],
-            "verify_note": _NOTE[lang]}
+            "verify_note": _(_NOTE)}

@@ -10,6 +10,7 @@ import numpy as np
 from ...fileio import atomic_open
 from ...render import cam_figures as cf
 from ...render.cam_report import CONTACT
+from ...i18n import N_, tr
 from ...render.fmt import e, f, md_meta, md_text, mpl_text
 from ...render.fmt import verdict
 
@@ -25,24 +26,23 @@ def make_figures(r: dict, fig_dir: Path, lang: str) -> dict[str, str]:
 
 
 def _describe(fol, lang):
-    zh = lang == "zh"
+    _ = tr(lang)
     contact = CONTACT[lang][fol.kind]
     if fol.offset == 0:
-        where = "对心" if zh else "centred"
+        where = _("centred")
     else:
-        side = ("右" if fol.offset > 0 else "左") if zh else ("right" if fol.offset > 0 else "left")
-        where = (f"偏置 e = {f(abs(fol.offset) * MM, 1)} mm（{side}）" if zh
-                 else f"offset e = {f(abs(fol.offset) * MM, 1)} mm ({side})")
+        side = _.pgettext("offset side", "right") if fol.offset > 0 else _.pgettext("offset side", "left")
+        where = _("offset e = {offset} mm ({side})", offset=f(abs(fol.offset) * MM, 1), side=side)
     extra = ""
     if fol.kind == "roller":
-        extra = f"，$r_r$ = {f(fol.roller_radius * MM, 1)} mm" if zh else f", $r_r$ = {f(fol.roller_radius * MM, 1)} mm"
-    return f"{where}{contact}从动件{extra}" if zh else f"{where} {contact} follower{extra}"
+        extra = _(", $r_r$ = {roller_radius} mm", roller_radius=f(fol.roller_radius * MM, 1))
+    return _("{where} {contact} follower{extra}", where=where, contact=contact, extra=extra)
 
 
 def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
     d = r["disc"]
     p = d.params
-    zh = lang == "zh"
+    _ = tr(lang)
     R, ecc = p.radius * MM, p.eccentricity * MM
     followers = []
     for (label, fol), m in zip(p.followers, d.motions):
@@ -74,8 +74,7 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
                                             for q in d.queries])
     return {
         "meta": md_meta(brief.report, lang), "fig": figures, "R": f(R, 1), "ecc": f(ecc, 1),
-        "rotation": ("逆时针" if p.rotation > 0 else "顺时针") if zh else
-                    ("counter-clockwise" if p.rotation > 0 else "clockwise"),
+        "rotation": _("counter-clockwise") if p.rotation > 0 else _("clockwise"),
         "followers": followers, "table_head": head, "table_rows": rows,
         "table_align": "|".join(["--:"] * len(head)),
         "table_step": f(p.table_step * DEG, 1),
@@ -86,18 +85,14 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
     }
 
 
-_NOTE = {
-    "zh": "校核不用解析式：位移由反转法作图求得——凸轮不动，推杆导路反向转过 δ，导路与圆盘轮廓（滚子从动件为半径 $R + r_r$ "
-          "的滚子中心轨迹圆）的交点即推杆位置；压力角由三心定理求得——凸轮与推杆的相对速度瞬心 P 在过 O 垂直于导路的直线上，"
-          "OP = dy/dδ（由作图所得位移的中心差分求得），公法线过 P；行程由位移曲线的极值（三点抛物线插值）求得。"
-          "比较范围为 0.1° 网格上的全部位置及指定位置。",
-    "en": "The checks do not use the closed forms: the displacement by inversion — the cam held still, the follower's "
-          "line turned back through δ and intersected with the disc (for a roller, the circle of radius $R + r_r$ on which "
-          "its centre rolls); the pressure angle by the three-centre theorem — the relative pole P of cam and follower "
-          "lies on the line through O perpendicular to the follower's line, OP = dy/dδ (central differences of the "
-          "geometric displacement), and the common normal passes through P; the stroke from the extremes of the "
-          "displacement (three-point parabola). Compared on every position of the 0.1° grid and at the given angles.",
-}
+_NOTE = N_("The checks do not use the closed forms: the displacement by inversion — the cam held "
+           "still, the follower's line turned back through δ and intersected with the disc (for "
+           "a roller, the circle of radius $R + r_r$ on which its centre rolls); the pressure "
+           "angle by the three-centre theorem — the relative pole P of cam and follower lies on "
+           "the line through O perpendicular to the follower's line, OP = dy/dδ (central "
+           "differences of the geometric displacement), and the common normal passes through P; "
+           "the stroke from the extremes of the displacement (three-point parabola). Compared on "
+           "every position of the 0.1° grid and at the given angles.")
 
 
 def verification_context(v, lang: str) -> dict:
@@ -106,10 +101,10 @@ def verification_context(v, lang: str) -> dict:
         return {"verify_rows": [], "findings": [], "verify_note": ""}
     from .stages import DISC_CHECK_NAMES
 
-    zh = lang == "zh"
+    _ = tr(lang)
     rows = []
     for k in v.checks:
-        name = f"{md_text(k.detail.get('label', ''))} " + DISC_CHECK_NAMES[k.key][0 if zh else 1]
+        name = f"{md_text(k.detail.get('label', ''))} " + DISC_CHECK_NAMES[k.key][0 if _.zh else 1]
         ok = verdict(k.passed, lang)
         if k.key == "disc_s":
             rows.append([name, f"{e(k.value * MM)} mm", f"≤ {e(k.limit * MM)} mm", ok])
@@ -117,10 +112,9 @@ def verification_context(v, lang: str) -> dict:
             rows.append([name, f"{e(k.value * DEG)}°", f"≤ {e(k.limit * DEG)}°", ok])
         elif k.key == "disc_stroke":
             rows.append([name, f"{f(k.detail['stroke'] * MM, 3)} mm",
-                         (f"解析 h = {f(k.reference * MM, 3)} mm" if zh else
-                          f"closed form h = {f(k.reference * MM, 3)} mm"), ok])
+                         _("closed form h = {reference} mm", reference=f(k.reference * MM, 3)), ok])
     return {"verify_rows": rows, "findings": [md_text(w.text(lang)) for w in v.warnings],
-            "verify_note": _NOTE[lang]}
+            "verify_note": _(_NOTE)}
 
 
 def write_data(r: dict, folder: Path) -> list[Path]:

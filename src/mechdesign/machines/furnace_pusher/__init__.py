@@ -4,6 +4,7 @@ synthesised from the stroke, K and the pressure angle limit, with its drive.
 The whole machine is this package: its brief (:mod:`.brief`), its model, stages and results
 (:mod:`.stages`) and its report (:mod:`.report`).
 """
+from ...i18n import N_
 from ...registry import _DEG, _MM, Entry
 
 _P = __name__
@@ -11,11 +12,11 @@ ENTRY = Entry(
     "furnace_pusher", f"{_P}.brief:FurnaceBrief", f"{_P}.brief:furnace_to_si",
     f"{_P}.stages:stages", f"{_P}.stages:results_document", f"{_P}.report",
     "furnace_pusher.yaml", results=f"{_P}.stages:FurnaceResults", summary=(
-        ("曲柄", "crank", "mm", "synthesis.crank", _MM),
-        ("连杆", "coupler", "mm", "synthesis.coupler", _MM),
-        ("行程 H", "stroke H", "mm", "linkage.output.stroke", _MM),
-        ("K", "K", "", "linkage.time_ratio", 1.0),
-        ("γ_min", "γ_min", "°", "synthesis.gamma_min", _DEG),
-        ("平均功率", "mean power", "W", "linkage.mean_power", 1.0),
-        ("电动机", "motor", "", "drive.motor.designation", 1.0)),
+        (N_("crank"), "mm", "synthesis.crank", _MM),
+        (N_("coupler"), "mm", "synthesis.coupler", _MM),
+        (N_("stroke H"), "mm", "linkage.output.stroke", _MM),
+        ("K", "", "linkage.time_ratio", 1.0),
+        ("γ_min", "°", "synthesis.gamma_min", _DEG),
+        (N_("mean power"), "W", "linkage.mean_power", 1.0),
+        (N_("motor"), "", "drive.motor.designation", 1.0)),
     checks=f"{_P}.stages:checks")

@@ -6,6 +6,7 @@ from pathlib import Path
 
 import numpy as np
 
+from ...i18n import N_, tr
 from ...render import figures as fig
 from ...render.fmt import e, f, md_meta, md_text
 from ...render.fmt import verdict
@@ -27,7 +28,7 @@ def _scheme(path: Path, lang: str, syn) -> None:
     matplotlib.use("Agg", force=False)
     import matplotlib.pyplot as plt
 
-    zh = lang == "zh"
+    _ = tr(lang)
     figure, (left, right) = plt.subplots(1, 2, figsize=(7.0, 5.4), dpi=fig.DPI,
                                          gridspec_kw={"width_ratios": [1.0, 1.25]})
     try:
@@ -76,7 +77,7 @@ def _scheme(path: Path, lang: str, syn) -> None:
         left.set_xlim(xs.min() - 350, xs.max() + 200)
         left.set_ylim(-100, yg + 130)
         left.set_ylabel("y (mm)")
-        left.set_title("六杆机构的两个极限位置" if zh else "six-bar at its two extremes", fontsize=8)
+        left.set_title(_("six-bar at its two extremes"), fontsize=8)
         # Right: the θ-circle through B1, B2 on which O1 lies.
         B1, B2 = syn.B1 * MM, syn.B2 * MM
         chord = abs(B2 - B1)
@@ -88,17 +89,16 @@ def _scheme(path: Path, lang: str, syn) -> None:
             circ = centre + rad * np.exp(1j * np.linspace(0, 2 * np.pi, 300))
             right.plot(circ.real, circ.imag, color="C2", lw=0.9, ls=":")
             right.plot([centre.real], [centre.imag], "+", color="C2", ms=6)
-            right.text(centre.real + 6, centre.imag + 6, "θ 圆" if zh else "θ-circle", color="C2", fontsize=7)
-        for name, q in (("B1", B1), ("B2", B2), ("A (折叠)" if zh else "A (folded)", syn.A_fold * MM),
-                        ("A (拉直)" if zh else "A (extended)", syn.A_ext * MM)):
+            right.text(centre.real + 6, centre.imag + 6, _("θ-circle"), color="C2", fontsize=7)
+        for name, q in (("B1", B1), ("B2", B2), (_("A (folded)"), syn.A_fold * MM),
+                        (_("A (extended)"), syn.A_ext * MM)):
             right.text(q.real + 5, q.imag + 6, name, fontsize=7)
         right.text(o1.real + 6, o1.imag - 16, "O1", fontsize=8)
         pts = np.array([B1, B2, o1, syn.A_fold * MM, syn.A_ext * MM])
         pad = 0.45 * max(np.ptp(pts.real), np.ptp(pts.imag))
         right.set_xlim(pts.real.min() - pad, pts.real.max() + pad)
         right.set_ylim(pts.imag.min() - pad, pts.imag.max() + pad)
-        right.set_title(("四杆机构的 θ 圆作图（蓝：折叠极位，红：拉直极位）" if zh else
-                         "four-bar θ-circle (blue: folded, red: extended)"), fontsize=8)
+        right.set_title(_("four-bar θ-circle (blue: folded, red: extended)"), fontsize=8)
         fig.save_png(figure, path)
     finally:
         plt.close(figure)
@@ -107,13 +107,13 @@ def _scheme(path: Path, lang: str, syn) -> None:
 def _design_chart(path: Path, lang: str, syn) -> None:
     """γ_min over the cycle and over the working stroke along the allowed arc, against the
     frame length; the limits and the chosen design."""
-    zh = lang == "zh"
+    _ = tr(lang)
     ps, g, gw, d = syn.scan
     with fig.figure(path, 1, (7.0, 3.4)) as (ax,):
         ax.plot(d * MM, g * DEG, color="C0", lw=1.4,
-                label="全周期最小传动角 $\\gamma_{min}$" if zh else "$\\gamma_{min}$ over the cycle")
+                label=_("$\\gamma_{min}$ over the cycle"))
         ax.plot(d * MM, gw * DEG, color="C1", lw=1.4,
-                label="工作行程最小传动角" if zh else "$\\gamma_{min}$ over the working stroke")
+                label=_("$\\gamma_{min}$ over the working stroke"))
         ax.axhline(syn.gamma_limit * DEG, color="C2", ls=":", lw=0.9,
                    label=f"[γ] = {syn.gamma_limit * DEG:.0f}°")
         if syn.limit_rocker:
@@ -123,8 +123,8 @@ def _design_chart(path: Path, lang: str, syn) -> None:
         ax.plot([syn.frame * MM], [syn.gamma_work * DEG], "o", color="C1", ms=5)
         ax.axvline(syn.frame * MM, color="0.5", lw=0.6)
         ax.set_ylim(0, 90)
-        ax.set_xlabel("机架长 $l_{O_1D}$ (mm)" if zh else "frame $l_{O_1D}$ (mm)")
-        ax.set_ylabel("传动角 (°)" if zh else "transmission angle (°)")
+        ax.set_xlabel(_("frame $l_{O_1D}$ (mm)"))
+        ax.set_ylabel(_("transmission angle (°)"))
         ax.grid(True, lw=0.4, color="0.85")
         ax.legend(fontsize=7, loc="lower center", ncol=2)
 
@@ -155,14 +155,14 @@ def animate(r: dict, path: Path, lang: str) -> Path:
 
 # ------------------------------------------------------------------------------ context
 
-def _ok(flag: bool, zh: bool) -> str:
-    return verdict(flag, "zh" if zh else "en")
+def _ok(flag: bool, _) -> str:
+    return verdict(flag, _.lang)
 
 
 def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
     from ...render.linkage_report import linkage_context, verification_rows
 
-    zh = lang == "zh"
+    _ = tr(lang)
     p, syn, chk = r["params"], r["synthesis"], r["pusher_check"]
     pp, ps = p.pusher, brief.pusher
     k, frc, v = r["linkage"], r["linkage_forces"], r["linkage_verification"]
@@ -174,54 +174,52 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
     chord = abs(syn.B2 - syn.B1) * MM
     o1b1, o1b2 = abs(syn.B1 - syn.O1) * MM, abs(syn.B2 - syn.O1) * MM
     lim = syn.alpha_limit * DEG
-    sense = ("顺时针" if syn.sense < 0 else "逆时针") if zh else \
-        ("clockwise" if syn.sense < 0 else "counter-clockwise")
+    sense = _("clockwise") if syn.sense < 0 else _("counter-clockwise")
     towards = "+x" if syn.working_direction > 0 else "−x"
 
     given = pp.given is not None
-    sub = ("（由尺寸导出）" if zh else " (derived)") if given else ""
+    sub = _(" (derived)") if given else ""
     data_rows = [
-        ["$H$", ("滑块行程" if zh else "slider stroke") + sub, f(H, 6) if given else f(ps.stroke_H_mm, 0), "mm"],
-        ["$n$", "滑块往复次数（曲柄转速）" if zh else "strokes per minute (crank speed)",
+        ["$H$", _("slider stroke") + sub, f(H, 6) if given else f(ps.stroke_H_mm, 0), "mm"],
+        ["$n$", _("strokes per minute (crank speed)"),
          f(ps.strokes_per_min, 0), "1/min"],
-        ["$K$", ("行程速比系数" if zh else "time ratio") + sub,
+        ["$K$", _("time ratio") + sub,
          f(pp.time_ratio_K, 6) if given else f(ps.time_ratio_K, 2), "—"],
-        ["$l_{DC}$", "摇杆 DC" if zh else "rocker DC", f(ps.rocker_DC_mm, 0), "mm"],
-        ["$l_{CE}$", "连杆 CE" if zh else "link CE", f(ps.link_CE_mm, 0), "mm"],
-        ["$[\\alpha]$", "工作行程最大压力角" if zh else "largest pressure angle, working stroke",
+        ["$l_{DC}$", _("rocker DC"), f(ps.rocker_DC_mm, 0), "mm"],
+        ["$l_{CE}$", _("link CE"), f(ps.link_CE_mm, 0), "mm"],
+        ["$[\\alpha]$", _("largest pressure angle, working stroke"),
          f(ps.pressure_angle_max_deg, 0), "°"],
-        ["$F_{r1}$", "工作行程阻力（含摩擦）" if zh else "working-stroke resistance (incl. friction)",
+        ["$F_{r1}$", _("working-stroke resistance (incl. friction)"),
          f(ps.working_force_N, 0), "N"],
-        ["$F_{r2}$", "回程阻力（含摩擦）" if zh else "return-stroke resistance (incl. friction)",
+        ["$F_{r2}$", _("return-stroke resistance (incl. friction)"),
          f(ps.return_force_N, 0), "N"],
     ]
     if given:
         gd = ps.dimensions
-        data_rows[3:3] = [[sym, (nz if zh else ne) + ("（给定）" if zh else " (given)"), f(v, 3), "mm"]
-                          for sym, nz, ne, v in (
-                              ("$l_{O_1A}=a$", "曲柄", "crank", gd.crank_O1A_mm),
-                              ("$l_{AB}=b$", "连杆", "coupler", gd.coupler_AB_mm),
-                              ("$l_{DB}=c$", "摇杆（至 B）", "rocker (to B)", gd.rocker_DB_mm),
-                              ("$l_{O_1D}=d$", "机架", "frame", gd.frame_O1D_mm))]
+        data_rows[3:3] = [[sym, _(name) + _(" (given)"), f(v, 3), "mm"]
+                          for sym, name, v in (
+                              ("$l_{O_1A}=a$", N_("crank"), gd.crank_O1A_mm),
+                              ("$l_{AB}=b$", N_("coupler"), gd.coupler_AB_mm),
+                              ("$l_{DB}=c$", N_("rocker (to B)"), gd.rocker_DB_mm),
+                              ("$l_{O_1D}=d$", N_("frame"), gd.frame_O1D_mm))]
     choice_rows = [
-        ["曲柄转向" if zh else "crank rotation", sense,
-         (f"工作行程（慢行程）推向 {towards}" if zh else f"the slow working stroke pushes towards {towards}")],
+        [_("crank rotation"), sense,
+         _("the slow working stroke pushes towards {towards}", towards=towards)],
         ["$l_{DB}/l_{DC}$", f(ps.rocker_ratio_DB_DC, 3),
-         ("B 在摇杆上的位置，只决定四杆机构的大小，不影响其角度" if zh else
-          "where B sits on the rocker: sets the four-bar's size, not its angles")],
-        ["$l_{O_1D}$", ("自动（按准则优化）" if zh else "auto (optimised)") if pp.frame is None
+         _("where B sits on the rocker: sets the four-bar's size, not its angles")],
+        ["$l_{O_1D}$", _("auto (optimised)") if pp.frame is None
          else f(pp.frame * MM, 2) + " mm",
-         ("最大化全周期最小传动角 $\\gamma_{min}$，且工作行程中 B 点压力角不超过 $[\\alpha]$" if zh else
-          "maximise $\\gamma_{min}$ over the cycle, the pressure angle at B within $[\\alpha]$ in the working stroke")
-         if pp.frame is None else ("给定机架长" if zh else "frame given")],
+         _("maximise $\\gamma_{min}$ over the cycle, the pressure angle at B within "
+            "$[\\alpha]$ in the working stroke")
+         if pp.frame is None else (_("frame given"))],
     ]
     if given:
         choice_rows = choice_rows[:1]
     choice_rows += [
         ["$e$", f(pp.guide_offset * MM, 2) + " mm",
-         ("导路相对 C 点圆弧弦高中点的偏移" if zh else "guide offset from the middle of the sagitta of C's arc")],
+         _("guide offset from the middle of the sagitta of C's arc")],
         ["$[\\gamma]$", f(ps.transmission_angle_min_deg, 0) + "°",
-         ("全周期最小传动角的许用值" if zh else "smallest acceptable transmission angle")],
+         _("smallest acceptable transmission angle")],
     ]
     cos_h = np.cos(syn.swing / 2)
     given_eq = None
@@ -277,81 +275,77 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
                  rf"{f(chk.mean_power, 4)}\ \text{{W}}"),
     }
     syn_rows = [
-        ["$\\theta$", "极位夹角" if zh else "extreme-position angle", f(th, 4), "°"],
-        ["$\\psi$", "摇杆摆角" if zh else "rocker swing", f(psi, 4), "°"],
-        ["$l_{O_1A}=a$", "曲柄" if zh else "crank", f(a, 3), "mm"],
-        ["$l_{AB}=b$", "连杆" if zh else "coupler", f(b, 3), "mm"],
-        ["$l_{DB}=c$", "摇杆（至 B）" if zh else "rocker (to B)", f(c, 3), "mm"],
-        ["$l_{DC}$", "摇杆（至 C）" if zh else "rocker (to C)", f(R, 3), "mm"],
-        ["$l_{O_1D}=d$", "机架" if zh else "frame", f(d, 3), "mm"],
-        ["$O_1$", "曲柄回转中心（D 为原点）" if zh else "crank pivot (D the origin)",
+        ["$\\theta$", _("extreme-position angle"), f(th, 4), "°"],
+        ["$\\psi$", _("rocker swing"), f(psi, 4), "°"],
+        ["$l_{O_1A}=a$", _("crank"), f(a, 3), "mm"],
+        ["$l_{AB}=b$", _("coupler"), f(b, 3), "mm"],
+        ["$l_{DB}=c$", _("rocker (to B)"), f(c, 3), "mm"],
+        ["$l_{DC}$", _("rocker (to C)"), f(R, 3), "mm"],
+        ["$l_{O_1D}=d$", _("frame"), f(d, 3), "mm"],
+        ["$O_1$", _("crank pivot (D the origin)"),
          f"({f(syn.O1.real * MM, 3)}, {f(syn.O1.imag * MM, 3)})", "mm"],
-        ["$l_{CE}$", "连杆 CE" if zh else "link CE", f(L, 3), "mm"],
-        ["$y_g$", "滑块导路高度（D 之上）" if zh else "slider guide above D", f(syn.guide_height * MM, 3), "mm"],
-        ["$\\gamma_{min}$", "四杆机构最小传动角" if zh else "four-bar minimum transmission angle",
+        ["$l_{CE}$", _("link CE"), f(L, 3), "mm"],
+        ["$y_g$", _("slider guide above D"), f(syn.guide_height * MM, 3), "mm"],
+        ["$\\gamma_{min}$", _("four-bar minimum transmission angle"),
          f(syn.gamma_min * DEG, 3), "°"],
-        ["$\\alpha_B$", "工作行程 B 点最大压力角" if zh else "largest pressure angle at B, working stroke",
+        ["$\\alpha_B$", _("largest pressure angle at B, working stroke"),
          f(syn.alpha_B * DEG, 3), "°"],
-        ["$\\alpha_E$", "工作行程 E 点最大压力角" if zh else "largest pressure angle at E, working stroke",
+        ["$\\alpha_E$", _("largest pressure angle at E, working stroke"),
          f(syn.alpha_E * DEG, 3), "°"],
     ]
-    names = {"stroke": ("行程", "stroke"), "chord": ("弦长", "chord"), "eq1": ("方程 (1)", "equation (1)"),
-             "folded": ("折叠极位", "folded extreme"), "extended": ("拉直极位", "extended extreme"),
-             "frame": ("机架", "frame"), "theta": ("极位夹角", "extreme angle"), "K": ("K", "K")}
-    res_rows = [[names[nm][0 if zh else 1], f"${eqn}$", e(val)] for nm, eqn, val in syn.residuals]
+    names = {"stroke": N_("stroke"), "chord": N_("chord"), "eq1": N_("equation (1)"),
+             "folded": N_("folded extreme"), "extended": N_("extended extreme"),
+             "frame": N_("frame"), "theta": N_("extreme angle"), "K": "K"}
+    res_rows = [[_(names[nm]), f"${eqn}$", e(val)] for nm, eqn, val in syn.residuals]
     sd = syn.seed
     seed_rows = [
-        [("(一) 原文：$(a+b)^2+(b-a)^2-2(a+b)(b-a)\\cos 30° = B_1B_2^2$" if zh else
-          "(1) as printed: $(a+b)^2+(b-a)^2-2(a+b)(b-a)\\cos 30° = B_1B_2^2$"),
+        [_("(1) as printed: $(a+b)^2+(b-a)^2-2(a+b)(b-a)\\cos 30° = B_1B_2^2$"),
          f"{f(sd.chord_printed * MM, 2)}²", f"{f(sd.chord * MM, 2)}²",
          f(sd.eq1_printed * 1e6, 0, group=True) + " mm²"],
-        [("(一) 改用正确的 θ = " if zh else "(1) with the correct θ = ") + f"{f(th, 0)}°",
+        [_("(1) with the correct θ = ") + f"{f(th, 0)}°",
          f"{f(sd.chord_correct * MM, 2)}²", f"{f(sd.chord * MM, 2)}²",
          f(sd.eq1_correct * 1e6, 0, group=True) + " mm²"],
-        [("(二) 原文：$\\arccos\\frac{b^2+1150^2-(a+505.37)^2}{2300\\,b} + 30° = 180°$" if zh else
-          "(2) as printed: $\\arccos\\frac{b^2+1150^2-(a+505.37)^2}{2300\\,b} + 30° = 180°$"),
+        [_("(2) as printed: $\\arccos\\frac{b^2+1150^2-(a+505.37)^2}{2300\\,b} + 30° = 180°$"),
          f(sd.eq3_lhs * DEG, 2) + "°", "180°", f((sd.eq3_lhs - np.pi) * DEG, 2) + "°"],
     ]
     seed_sim_rows = [
         ["$K$", f(sd.time_ratio, 4), f(pp.time_ratio_K, 6 if given else 2)],
         ["$\\theta$ /°", f(sd.theta * DEG, 3), f(th, 3)],
         ["$\\psi$ /°", f(sd.swing * DEG, 3), f(psi, 3)],
-        [("C 点弦长（≈ 滑块行程）/mm" if zh else "chord of C (≈ the stroke) / mm"),
+        [_("chord of C (≈ the stroke) / mm"),
          f(sd.stroke_C * MM, 2), f(H, 6 if given else 0)],
         ["$\\gamma_{min}$ /°", f(sd.gamma_min * DEG, 2), "≥ " + f(syn.gamma_limit * DEG, 0)],
     ]
-    side_txt = {
-        1: ("O1 位于 B1B2 弦靠近 D 的一侧（教材的 θ 圆）", "O1 on D's side of the chord B1B2 (the textbook's θ-circle)"),
-        -1: ("O1 位于 B1B2 弦背离 D 的一侧（镜像 θ 圆）", "O1 beyond the chord B1B2 (the mirror θ-circle)"),
-    }[syn.side][0 if zh else 1]
+    side_txt = _({
+        1: N_("O1 on D's side of the chord B1B2 (the textbook's θ-circle)"),
+        -1: N_("O1 beyond the chord B1B2 (the mirror θ-circle)"),
+    }[syn.side])
     if syn.criterion == "max_gamma":
         if syn.constraint_active:
-            crit = (f"B 点压力角限制起作用：O1 取在工作行程最小传动角恰为 {f(90 - lim, 0)}° 处；不加此限制时最大 $\\gamma_{{min}}$ 为 "
-                    f"{f(syn.gamma_unconstrained * DEG, 3)}°。" if zh else
-                    f"the limit at B is active: O1 sits where the working-stroke transmission angle is exactly "
-                    f"{f(90 - lim, 0)}°; without it the best $\\gamma_{{min}}$ would be {f(syn.gamma_unconstrained * DEG, 3)}°.")
+            crit = _("the limit at B is active: O1 sits where the working-stroke transmission angle "
+                      "is exactly {lim}°; without it the best $\\gamma_{{min}}$ would be "
+                      "{gamma_unconstrained}°.", lim=f(90 - lim, 0),
+                      gamma_unconstrained=f(syn.gamma_unconstrained * DEG, 3))
         elif not syn.limit_rocker:
-            crit = ("B 点压力角不设限。" if zh else "the pressure angle at B is not limited.")
+            crit = _("the pressure angle at B is not limited.")
         else:
-            crit = ("最优点处 B 点压力角限制不起作用（$\\gamma_{min}$ 的无约束最大值即满足它）。" if zh else
-                    "the limit at B is not active at the optimum (the unconstrained maximum of $\\gamma_{min}$ meets it).")
-        other = (f"另一侧 θ 圆上 $\\gamma_{{min}}$ 最大只有 {f(syn.gamma_other_side_free * DEG, 3)}°"
-                 + ("，且不能满足 B 点压力角限制" if syn.limit_rocker and syn.gamma_other_side == 0 else "")
-                 + "。") if zh else (
-                 f"On the other θ-circle the best $\\gamma_{{min}}$ is only {f(syn.gamma_other_side_free * DEG, 3)}°"
-                 + (", and it cannot meet the limit at B" if syn.limit_rocker and syn.gamma_other_side == 0 else "")
-                 + ".")
+            crit = _("the limit at B is not active at the optimum (the unconstrained maximum of "
+                      "$\\gamma_{min}$ meets it).")
+        best = f(syn.gamma_other_side_free * DEG, 3)
+        other = (_("On the other θ-circle the best $\\gamma_{{min}}$ is only {best}°, and it cannot "
+                   "meet the limit at B.", best=best)
+                 if syn.limit_rocker and syn.gamma_other_side == 0 else
+                 _("On the other θ-circle the best $\\gamma_{{min}}$ is only {best}°.", best=best))
     elif syn.criterion == "given":
-        crit = (f"尺寸由任务书给定，不作综合：O1 为以 D 为圆心、半径 d 与以 B1 为圆心、半径 b − a 的两圆交点，"
-                f"恰在 θ 圆上（同一 θ 圆上 $\\gamma_{{min}}$ 最大可达 {f(syn.gamma_unconstrained * DEG, 3)}°）。"
-                if zh else
-                f"the dimensions are the brief's, no synthesis: O1 is where the circle of radius d about D "
-                f"cuts the circle of radius b − a about B1, on the θ-circle (the best $\\gamma_{{min}}$ on the "
-                f"same θ-circle would be {f(syn.gamma_unconstrained * DEG, 3)}°).")
+        crit = _("the dimensions are the brief's, no synthesis: O1 is where the circle of "
+                  "radius d about D cuts the circle of radius b − a about B1, on the θ-circle "
+                  "(the best $\\gamma_{{min}}$ on the same θ-circle would be "
+                  "{gamma_unconstrained}°).",
+                  gamma_unconstrained=f(syn.gamma_unconstrained * DEG, 3))
         other = ""
     else:
-        crit = ("机架长由设计任务给定，O1 为 θ 圆与以 D 为圆心、半径 d 的圆的交点。" if zh else
-                "the frame is given: O1 is where the circle of radius d about D cuts the θ-circle.")
+        crit = _("the frame is given: O1 is where the circle of radius d about D cuts the "
+                  "θ-circle.")
         other = ""
     # Torque: kinetostatics against virtual work at the positions.
     labels = [lab.replace("'", "′") for lab in k.positions.labels]
@@ -361,7 +355,7 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
         torque_rows.append([label, f(k.phase[j] * DEG, 2), f(k.v[j], 4), f(chk.resistance_force[j], 0),
                             f(frc.balancing_torque[j], 4), f(chk.virtual_work_torque[j], 4)])
     lk = linkage_context(r["model"], k, frc, r["linkage_flywheel"], v, figures, lang,
-                         title="机构运动分析与曲柄驱动力矩" if zh else "Kinematics and crank driving torque")
+                         title=_("Kinematics and crank driving torque"))
     drive = None
     if r.get("drive") is not None:
         from ...render.drive_report import drive_context
@@ -372,28 +366,27 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
         drive["peak"] = None        # no flywheel: the note is in this report's own text
     tol = 1e-6
     verify_rows = [
-        ["仿真行程（位置搜索）/mm" if zh else "simulated stroke (position search) / mm",
-         f(chk.stroke * MM, 4), f"H = {f(H, 6 if given else 0)}", _ok(abs(chk.stroke_error) <= tol * pp.stroke, zh)],
-        ["仿真行程速比系数 K" if zh else "simulated time ratio K", f(chk.time_ratio, 4),
-         f(pp.time_ratio_K, 6 if given else 2), _ok(abs(chk.time_ratio - pp.time_ratio_K) <= tol, zh)],
-        ["工作行程 E 点最大压力角 /°" if zh else "largest pressure angle at E, working stroke / °",
-         f(chk.alpha_E_work * DEG, 4), f"≤ {f(lim, 0)}（{f(syn.alpha_E * DEG, 4)}）" if zh else
-         f"≤ {f(lim, 0)} ({f(syn.alpha_E * DEG, 4)})", _ok(chk.alpha_E_work <= syn.alpha_limit + 1e-9, zh)],
-        ["工作行程 B 点最大压力角 /°" if zh else "largest pressure angle at B, working stroke / °",
+        [_("simulated stroke (position search) / mm"),
+         f(chk.stroke * MM, 4), f"H = {f(H, 6 if given else 0)}", _ok(abs(chk.stroke_error) <= tol * pp.stroke, _)],
+        [_("simulated time ratio K"), f(chk.time_ratio, 4),
+         f(pp.time_ratio_K, 6 if given else 2), _ok(abs(chk.time_ratio - pp.time_ratio_K) <= tol, _)],
+        [_("largest pressure angle at E, working stroke / °"),
+         f(chk.alpha_E_work * DEG, 4), _("≤ {lim} ({alpha_E})", lim=f(lim, 0),
+                                         alpha_E=f(syn.alpha_E * DEG, 4)), _ok(chk.alpha_E_work <= syn.alpha_limit + 1e-9, _)],
+        [_("largest pressure angle at B, working stroke / °"),
          f(chk.alpha_B_work * DEG, 4),
          (f"≤ {f(lim, 0)}" if pp.limit_rocker else "—") + f" ({f(syn.alpha_B * DEG, 4)})",
-         _ok(chk.alpha_B_work <= syn.alpha_limit + 1e-9, zh) if pp.limit_rocker else "—"],
-        ["四杆机构最小传动角 /°" if zh else "four-bar minimum transmission angle / °",
+         _ok(chk.alpha_B_work <= syn.alpha_limit + 1e-9, _) if pp.limit_rocker else "—"],
+        [_("four-bar minimum transmission angle / °"),
          f(chk.gamma_min * DEG, 4), f"≥ {f(syn.gamma_limit * DEG, 0)} ({f(syn.gamma_min * DEG, 4)})",
-         _ok(chk.gamma_min >= syn.gamma_limit - 1e-9, zh)],
-        ["平均驱动功率 $\\bar M_b\\,\\omega$ /W" if zh else "mean driving power $\\bar M_b\\,\\omega$ / W",
+         _ok(chk.gamma_min >= syn.gamma_limit - 1e-9, _)],
+        [_("mean driving power $\\bar M_b\\,\\omega$ / W"),
          f(chk.mean_power, 4),
-         (f"阻力功率平均 {f(chk.resistance_power, 4)}；手算 {f(chk.hand_power, 4)}" if zh else
-          f"mean resistance power {f(chk.resistance_power, 4)}; by hand {f(chk.hand_power, 4)}"),
-         _ok(abs(chk.mean_power - chk.hand_power) <= 1e-4 * chk.hand_power, zh)],
-        ["$M_b$ 与虚功原理 $F_r\\lvert v_E\\rvert/\\omega$ 之差（相对）" if zh else
-         "$M_b$ vs virtual work $F_r\\lvert v_E\\rvert/\\omega$ (relative)",
-         e(chk.virtual_work_error), "≤ 10⁻⁹", _ok(chk.virtual_work_error <= 1e-9, zh)],
+         _("mean resistance power {resistance_power}; by hand {hand_power}",
+            resistance_power=f(chk.resistance_power, 4), hand_power=f(chk.hand_power, 4)),
+         _ok(abs(chk.mean_power - chk.hand_power) <= 1e-4 * chk.hand_power, _)],
+        [_("$M_b$ vs virtual work $F_r\\lvert v_E\\rvert/\\omega$ (relative)"),
+         e(chk.virtual_work_error), "≤ 10⁻⁹", _ok(chk.virtual_work_error <= 1e-9, _)],
     ] + verification_rows(v, lang, k)
     # A bare "|" would split a pipe-table cell: escape it (math uses \lvert … \rvert).
     verify_rows = [[cell.replace("|", "\\|") for cell in row] for row in verify_rows]

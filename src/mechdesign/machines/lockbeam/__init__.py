@@ -4,6 +4,7 @@ transmission train and the working cycle.
 The whole machine is this package: its brief (:mod:`.brief`), its model, stages and results
 (:mod:`.stages`) and its report (:mod:`.report`).
 """
+from ...i18n import N_
 from ...registry import _DEG, _MM, Entry
 
 _P = __name__
@@ -11,9 +12,9 @@ ENTRY = Entry(
     "lockbeam", f"{_P}.brief:LockbeamBrief", f"{_P}.brief:lockbeam_to_si",
     f"{_P}.stages:stages", f"{_P}.stages:results_document", f"{_P}.report",
     "lockbeam.yaml", results=f"{_P}.stages:LockbeamResults", summary=(
-        ("总传动比", "total ratio", "", "transmission.ratio", 1.0),
-        ("送料行程", "feed stroke", "mm", "feed.output.stroke", _MM),
-        ("送料 K", "feed K", "", "feed.time_ratio", 1.0),
-        ("扳弯角（仿真）", "bend (simulated)", "°", "bending.bend_simulated", _DEG),
-        ("扳弯 γ_min", "bending γ_min", "°", "bending.gamma_min", _DEG)),
+        (N_("total ratio"), "", "transmission.ratio", 1.0),
+        (N_("feed stroke"), "mm", "feed.output.stroke", _MM),
+        (N_("feed K"), "", "feed.time_ratio", 1.0),
+        (N_("bend (simulated)"), "°", "bending.bend_simulated", _DEG),
+        (N_("bending γ_min"), "°", "bending.gamma_min", _DEG)),
     checks=f"{_P}.stages:checks")

@@ -11,6 +11,7 @@ from pathlib import Path
 
 import numpy as np
 
+from ...i18n import N_, tr
 from ...render import figures as fig
 from ...render.fmt import e, f, md_meta, md_text
 from ...render.fmt import verdict
@@ -26,7 +27,7 @@ PROGRAM_APPENDIX = True
 def grashof_sentence(a: float, b: float, c: float, d: float, lang: str) -> str:
     """Grashof's rule for the bending four-bar (a input rocker, b coupler, c arm on the
     wheel, d frame), with the numbers, in the report's language."""
-    zh = lang == "zh"
+    _ = tr(lang)
     names = {"a": a, "b": b, "c": c, "d": d}
     order = sorted(names, key=names.get)
     s_, l_ = order[0], order[-1]
@@ -36,17 +37,14 @@ def grashof_sentence(a: float, b: float, c: float, d: float, lang: str) -> str:
             f"p + q = {p_} + {q_} = {f(rhs * MM, 2)} mm")
     tol = 1e-9 * max(names.values())
     if abs(lhs - rhs) <= tol:
-        return (f"{nums}，相等：变点机构，存在四杆同时共线的位置（该处运动不确定）" if zh else
-                f"{nums}, equal: a change-point linkage, with a position where all four links fall "
-                "into line (the motion is uncertain there)")
+        return (_("{nums}, equal: a change-point linkage, with a position where all four links "
+                  "fall into line (the motion is uncertain there)", nums=nums))
     if lhs > rhs:
-        return (f"{nums}，s + l > p + q：没有构件能整周转动（三摇杆机构）" if zh else
-                f"{nums}; s + l > p + q: no link can turn fully (a triple rocker)")
-    link = {"a": ("输入摆杆", "the input rocker"), "b": ("连杆", "the coupler"),
-            "c": ("大链轮上的连架杆", "the arm on the wheel"), "d": ("机架", "the frame")}[s_]
-    return (f"{nums}，s + l < p + q：满足杆长条件，最短杆（{link[0]}）相对其相邻杆可整周转动" if zh else
-            f"{nums}; s + l < p + q: a Grashof linkage, whose shortest link ({link[1]}) could "
-            "turn fully relative to its neighbours")
+        return (_("{nums}; s + l > p + q: no link can turn fully (a triple rocker)", nums=nums))
+    link = {"a": N_("the input rocker"), "b": N_("the coupler"),
+            "c": N_("the arm on the wheel"), "d": N_("the frame")}[s_]
+    return _("{nums}; s + l < p + q: a Grashof linkage, whose shortest link ({link}) could "
+             "turn fully relative to its neighbours", nums=nums, link=_(link))
 
 
 def _ok(x: bool, lang: str) -> str:
@@ -60,12 +58,12 @@ def _timing_figure(path: Path, lang: str, r: dict):
     """Feed travel, pin lift and bending-wheel angle against the main-shaft angle, found by
     simulating the linkage and the two cams."""
     c = r["cycle"]
-    zh = lang == "zh"
+    _ = tr(lang)
     phi = c.shaft_angle * DEG
     order = np.argsort(phi)
-    series = [(c.feed_s * MM, "送料滑块位移 (mm)" if zh else "feed travel (mm)"),
-              (c.pin_lift * MM, "定位销升程 (mm)" if zh else "pin lift (mm)"),
-              (c.wheel_angle * DEG, "扳弯轮转角 (°)" if zh else "bending wheel (°)")]
+    series = [(c.feed_s * MM, _("feed travel (mm)")),
+              (c.pin_lift * MM, _("pin lift (mm)")),
+              (c.wheel_angle * DEG, _("bending wheel (°)"))]
     with fig.figure(path, 3, (7.2, 5.6)) as axes:
         for ax, (y, label) in zip(axes, series):
             ax.plot(np.append(phi[order], 360.0), np.append(y[order], y[order][0]), lw=1.4, color="C0")
@@ -75,13 +73,13 @@ def _timing_figure(path: Path, lang: str, r: dict):
             ax.grid(True, lw=0.4, color="0.85")
             for x in (c.pin_rise_angle * DEG, c.pin_down_angle * DEG):
                 ax.axvline(x, color="C3", lw=0.7, ls="--")
-        axes[-1].set_xlabel("主轴转角 φ (°)" if zh else "main-shaft angle φ (°)")
+        axes[-1].set_xlabel(_.pgettext("lockbeam", "main-shaft angle φ (°)"))
 
 
 def _linkage_drawing(path: Path, lang: str, b, wheel_d: float):
     """The bending four-bar at its start (bold) and end positions, with the large wheel."""
     ds, dr = b.design, b.drawing
-    zh = lang == "zh"
+    _ = tr(lang)
     A, B = dr.A * MM, dr.B * MM
     B0 = ds.frame * MM
     with fig.figure(path, 1, (6.6, 4.4), sharex=False) as (ax,):
@@ -108,26 +106,25 @@ def _linkage_drawing(path: Path, lang: str, b, wheel_d: float):
         ax.set_xlabel("x (mm)")
         ax.set_ylabel("y (mm)")
         ax.grid(True, lw=0.3, color="0.9")
-        ax.set_title("大链轮 Ø" + f(wheel_d * MM, 0) + "（虚线）" if zh else
-                     f"large chain wheel Ø{f(wheel_d * MM, 0)} (dashed)", fontsize=8)
+        ax.set_title(_("large chain wheel Ø{d} (dashed)", d=f(wheel_d * MM, 0)), fontsize=8)
 
 
 def _sweep_figure(path: Path, lang: str, b):
-    zh = lang == "zh"
+    _ = tr(lang)
     x = (b.sweep_input - b.design.alpha1) * DEG
     mean = b.output_swing / b.input_swing
     with fig.figure(path, 3, (7.0, 6.0)) as (ax1, ax2, ax3):
         ax1.plot(x, np.abs(b.sweep_output - b.design.beta1) * DEG, lw=1.4, color="C0")
         ax1.axhline(b.output_swing * DEG, color="C3", ls="--", lw=0.8)
-        ax1.set_ylabel("大链轮转角 |Δβ| (°)" if zh else "wheel angle |Δβ| (°)", fontsize=8)
+        ax1.set_ylabel(_("wheel angle |Δβ| (°)"), fontsize=8)
         ax2.plot(x, np.abs(b.velocity_ratio), lw=1.4, color="C1")
         ax2.axhline(mean, color="0.5", ls=":", lw=0.8)
-        ax2.set_ylabel("速比 |dβ/dα|" if zh else "ratio |dβ/dα|", fontsize=8)
+        ax2.set_ylabel(_("ratio |dβ/dα|"), fontsize=8)
         ax3.plot(x, b.sweep_gamma * DEG, lw=1.4, color="C2")
         ax3.axhline(40.0, color="0.5", ls=":", lw=0.8)
         ax3.set_ylim(0, 90)
-        ax3.set_ylabel("传动角 γ (°)" if zh else "transmission angle γ (°)", fontsize=8)
-        ax3.set_xlabel("输入摆杆转角 Δα (°)" if zh else "input rocker angle Δα (°)")
+        ax3.set_ylabel(_("transmission angle γ (°)"), fontsize=8)
+        ax3.set_xlabel(_("input rocker angle Δα (°)"))
         for ax in (ax1, ax2, ax3):
             ax.grid(True, lw=0.4, color="0.85")
             ax.set_xlim(0, b.input_swing * DEG)
@@ -135,38 +132,36 @@ def _sweep_figure(path: Path, lang: str, b):
 
 def _wheel_figure(path: Path, lang: str, b, start: float, span: float):
     """Bending wheel angle, speed and acceleration over the bending window of the shaft."""
-    zh = lang == "zh"
+    _ = tr(lang)
     phi = np.mod(b.shaft_angle - start, 2 * np.pi) * DEG
     keep = phi <= span * DEG
     order = np.argsort(phi[keep])
     x = phi[keep][order] + start * DEG
     with fig.figure(path, 3, (7.0, 5.4)) as axes:
         for ax, y, lab in zip(axes, (b.wheel_angle * DEG, b.wheel_omega, b.wheel_alpha),
-                              (("扳弯轮转角 θ (°)", "wheel angle θ (°)"),
-                               ("角速度 ω (rad/s)", "ω (rad/s)"),
-                               ("角加速度 ε (rad/s²)", "ε (rad/s²)"))):
+                              (N_("wheel angle θ (°)"), N_("ω (rad/s)"), N_("ε (rad/s²)"))):
             ax.plot(x, y[keep][order], lw=1.4, color="C0")
-            ax.set_ylabel(lab[0] if zh else lab[1], fontsize=8)
+            ax.set_ylabel(_(lab), fontsize=8)
             ax.grid(True, lw=0.4, color="0.85")
             ax.axhline(0, color="0.4", lw=0.5)
         axes[0].axhline(b.bend_simulated * DEG, color="C3", ls="--", lw=0.8)
-        axes[-1].set_xlabel("主轴转角 φ (°)" if zh else "main-shaft angle φ (°)")
+        axes[-1].set_xlabel(_.pgettext("lockbeam", "main-shaft angle φ (°)"))
 
 
 def _seed_figure(path: Path, lang: str, b):
     s = b.seed
-    zh = lang == "zh"
+    _ = tr(lang)
     with fig.figure(path, 1, (7.0, 3.0)) as (ax,):
         ax.plot(s.check.alpha * DEG, s.check.swing * DEG, lw=1.4, color="C0",
                 label=(f"{f(s.input_rocker * MM, 0)}/{f(s.coupler * MM, 0)} mm"))
         ax.axhline(b.output_swing * DEG, color="C3", ls="--", lw=0.8,
-                   label=("要求" if zh else "required") + f" {f(b.output_swing * DEG, 1)}°")
-        for a1, _, _ in s.check.starts:
+                   label=_("required") + f" {f(b.output_swing * DEG, 1)}°")
+        for a1, _b1, _g in s.check.starts:
             ax.plot([a1 * DEG], [b.output_swing * DEG], "o", color="C3", ms=4)
         ax.set_xlim(0, 360)
         ax.set_xticks(np.arange(0, 361, 30))
-        ax.set_xlabel("输入摆杆起始角 α1 (°)" if zh else "input rocker start angle α1 (°)")
-        ax.set_ylabel("大链轮摆角 (°)" if zh else "wheel swing (°)")
+        ax.set_xlabel(_("input rocker start angle α1 (°)"))
+        ax.set_ylabel(_("wheel swing (°)"))
         ax.grid(True, lw=0.4, color="0.85")
         ax.legend(fontsize=7)
 
@@ -213,60 +208,60 @@ def _c(z: complex, digits: int = 2) -> str:
 
 
 def _data_rows(r: dict, brief, lang: str) -> list[list[str]]:
-    zh = lang == "zh"
+    _ = tr(lang)
     pr, t, bd = brief.production, brief.transmission, brief.bending
     rows = []
 
-    def row(sym, zh_name, en_name, value, unit):
-        rows.append([sym, zh_name if zh else en_name, value, unit])
+    def row(sym, name, value, unit):
+        rows.append([sym, _(name), value, unit])
 
-    row("—", "生产率", "production rate", f(pr.rate_per_min, 0), "件/min" if zh else "parts/min")
-    row("$n_m$", "电动机转速", "motor speed", f(pr.motor_speed_rpm, 0), "r/min" if zh else "rpm")
-    row("$l$", "锁梁展开长度", "unrolled length of the blank", f(pr.part_length_mm, 0), "mm")
-    row("$d_1$", "锁梁直径", "bar diameter", f(pr.part_diameter_mm, 0), "mm")
-    row("$d_2$", "槽底直径", "groove diameter", f(pr.groove_diameter_mm, 0), "mm")
-    row("—", "扳弯角", "bending angle", f(bd.bending_angle_deg, 0), "°")
-    row("$m$", "齿轮模数", "gear module", f(t.module_mm, 0), "mm")
-    row("$d_{b1}/d_{b2}$", "带轮直径", "pulley diameters",
+    row("—", N_("production rate"), f(pr.rate_per_min, 0), _("parts/min"))
+    row("$n_m$", N_("motor speed"), f(pr.motor_speed_rpm, 0), _("rpm"))
+    row("$l$", N_("unrolled length of the blank"), f(pr.part_length_mm, 0), "mm")
+    row("$d_1$", N_("bar diameter"), f(pr.part_diameter_mm, 0), "mm")
+    row("$d_2$", N_("groove diameter"), f(pr.groove_diameter_mm, 0), "mm")
+    row("—", N_("bending angle"), f(bd.bending_angle_deg, 0), "°")
+    row("$m$", N_("gear module"), f(t.module_mm, 0), "mm")
+    row("$d_{b1}/d_{b2}$", N_("pulley diameters"),
         f"{f(t.belt.driver_diameter_mm, 0)}/{f(t.belt.driven_diameter_mm, 0)}", "mm")
-    row("$z$", "齿轮齿数", "gear teeth",
+    row("$z$", N_("gear teeth"),
         ", ".join(f"{g.driver_teeth}/{g.driven_teeth}" for g in t.gears), "—")
-    row("$D_1/D_2$", "链轮节圆直径（大/小）", "chain wheels (large/small)",
+    row("$D_1/D_2$", N_("chain wheels (large/small)"),
         f"{f(bd.driving_wheel_diameter_mm, 0)}/{f(bd.bending_wheel_diameter_mm, 0)}", "mm")
-    row("$d$", "输入摆杆转轴至大链轮中心", "input rocker pivot to wheel centre", f(bd.frame_mm, 0), "mm")
-    row("$c$", "大链轮上的连架杆", "arm on the large wheel", f(bd.output_arm_mm, 0), "mm")
+    row("$d$", N_("input rocker pivot to wheel centre"), f(bd.frame_mm, 0), "mm")
+    row("$c$", N_("arm on the large wheel"), f(bd.output_arm_mm, 0), "mm")
     c = brief.cam
-    row("$r_0,\\ h$", "定位凸轮基圆半径、升程", "pin cam base radius, lift",
+    row("$r_0,\\ h$", N_("pin cam base radius, lift"),
         f"{f(c.base_radius_mm, 0)}, {f(c.follower.stroke_h_mm, 0)}", "mm")
     prog = ", ".join(f"{f(s.angle_deg, 0)}" for s in c.programme)
-    row("—", "定位凸轮运动角（近休/推程/远休/回程）", "pin cam angles (dwell/rise/dwell/return)", prog, "°")
+    row("—", N_("pin cam angles (dwell/rise/dwell/return)"), prog, "°")
     return rows
 
 
 def _seed_notes(r: dict, lang: str) -> list[str]:
-    zh = lang == "zh"
+    _ = tr(lang)
     b, ft = r["bending"], r["feed_table"]
     notes = []
-    if zh:
-        notes.append("生产率：任务书数据为 10 件/min，原报告“设计要求”一处写 20 件/min；其传动 700 → 10 r/min 按 10 件/min 设计，本设计取 10 件/min。")
-        notes.append("原报告的形态学矩阵（表 2.5）与运动循环图（图 9.1）是图片，转载时丢失；本报告由正文重建形态学矩阵，并按凸轮数据与送料机构的仿真重新作出运动循环图。")
-        if b.seed is not None:
-            notes.append(f"扳弯四杆机构：原报告用图解法得杆长 {f(b.seed.input_rocker * MM, 0)} mm 与 {f(b.seed.coupler * MM, 0)} mm，但没有给出所取的起始位置"
-                         + ("；这组杆长是变点机构（杆件可能同时共线、运动不确定）" if _change_point(b.seed) else "")
-                         + "。本报告用解析法按两组对应位置综合，并以仿真校核原杆长（第 5 章）。")
-        if ft.seed_x is not None:
-            wrong = int(np.sum(np.abs(ft.seed_x - ft.x) > 1e-9))
-            notes.append(f"原报告 VB 程序的 RRP 子程序对滑块位置取了绝对值 (sr = abs(...))，滑块位于导路参考点 x = 0 左侧时结果被镜像到右侧；按 10° 间隔计算的 {len(ft.x)} 个位置中有 {wrong} 个因此出错。本报告取带符号的根。")
-    else:
-        notes.append("Production rate: the task data say 10 parts/min; one line of the seed's requirements says 20. Its transmission 700 → 10 rpm is for 10, and so is this design.")
-        notes.append("The seed's morphological matrix (table 2.5) and cycle diagram (figure 9.1) were images lost in the copy: the matrix is rebuilt from its text, and the cycle diagram is drawn anew from the cam data and the simulated feed linkage.")
-        if b.seed is not None:
-            notes.append(f"Bending four-bar: the seed found the lengths {f(b.seed.input_rocker * MM, 0)} mm and {f(b.seed.coupler * MM, 0)} mm graphically without stating its start position"
-                         + ("; they make a change-point linkage (all links can fall into line, and the motion becomes uncertain)" if _change_point(b.seed) else "")
-                         + ". This report synthesises the linkage analytically from two corresponding positions and checks the seed's lengths by simulation (chapter 5).")
-        if ft.seed_x is not None:
-            wrong = int(np.sum(np.abs(ft.seed_x - ft.x) > 1e-9))
-            notes.append(f"The seed's VB RRP routine takes the absolute value of the slider coordinate (sr = abs(...)), which mirrors the slider to the right whenever it is left of the guide's reference point x = 0: {wrong} of its {len(ft.x)} positions at 10° steps come out wrong. This report takes the signed root.")
+    notes.append(_("Production rate: the task data say 10 parts/min; one line of the seed's "
+                   "requirements says 20. Its transmission 700 → 10 rpm is for 10, and so is this "
+                   "design."))
+    notes.append(_("The seed's morphological matrix (table 2.5) and cycle diagram (figure 9.1) were "
+                   "images lost in the copy: the matrix is rebuilt from its text, and the cycle "
+                   "diagram is drawn anew from the cam data and the simulated feed linkage."))
+    if b.seed is not None:
+        notes.append(_("Bending four-bar: the seed found the lengths {rocker} mm and {coupler} mm "
+                       "graphically without stating its start position", rocker=f(b.seed.input_rocker * MM, 0),
+                       coupler=f(b.seed.coupler * MM, 0))
+                     + (_("; they make a change-point linkage (all links can fall into line, and "
+                          "the motion becomes uncertain)") if _change_point(b.seed) else "")
+                     + _(". This report synthesises the linkage analytically from two corresponding "
+                         "positions and checks the seed's lengths by simulation (chapter 5)."))
+    if ft.seed_x is not None:
+        wrong = int(np.sum(np.abs(ft.seed_x - ft.x) > 1e-9))
+        notes.append(_("The seed's VB RRP routine takes the absolute value of the slider coordinate "
+                       "(sr = abs(...)), which mirrors the slider to the right whenever it is left of "
+                       "the guide's reference point x = 0: {wrong} of its {n} positions at 10° steps "
+                       "come out wrong. This report takes the signed root.", wrong=wrong, n=len(ft.x)))
     return notes
 
 
@@ -275,42 +270,40 @@ def _change_point(seed) -> bool:
 
 
 def _seed_conclusion(b, lang: str) -> str:
-    zh = lang == "zh"
+    _ = tr(lang)
     s = b.seed
     a, c = f(s.input_rocker * MM, 0), f(s.coupler * MM, 0)
     if s.check.starts:
         g = max(x[2] for x in s.check.starts)
         worse = g < b.gamma_min
-        text = (f"原设计的图解结果是成立的，但只在上表的起始位置成立，此时最小传动角 {f(g * DEG, 2)}°"
-                + (f"，小于本设计的 {f(b.gamma_min * DEG, 2)}°" if worse else "") if zh else
-                f"The seed's graphical result holds, but only from the start in the table, where the "
-                f"least transmission angle is {f(g * DEG, 2)}°"
-                + (f", below this design's {f(b.gamma_min * DEG, 2)}°" if worse else ""))
+        text = (_("The seed's graphical result holds, but only from the start in the table, where "
+                  "the least transmission angle is {g}°", g=f(g * DEG, 2))
+                + (_(", below this design's {gamma_min}°", gamma_min=f(b.gamma_min * DEG, 2))
+                   if worse else ""))
     else:
-        text = (f"原设计杆长在任何起始位置都给不出 {f(b.output_swing * DEG, 2)}° 的摆角" if zh else
-                f"The seed's lengths give the required {f(b.output_swing * DEG, 2)}° from no start position")
+        text = _("The seed's lengths give the required {output_swing}° from no start position",
+                  output_swing=f(b.output_swing * DEG, 2))
     if _change_point(s):
         d = b.design
-        text += (f"；并且 {a} + {c} = {f(d.output_rocker * MM, 0)} + {f(d.frame * MM, 0)}，是变点机构，"
-                 "各杆可能同时共线，运动不确定" if zh else
-                 f"; and {a} + {c} = {f(d.output_rocker * MM, 0)} + {f(d.frame * MM, 0)} makes it a "
-                 "change-point linkage: all links can fall into line, and the motion becomes uncertain")
-    return text + ("。" if zh else ".")
+        text += _("; and {a} + {c} = {output_rocker} + {frame} makes it a change-point linkage: "
+                   "all links can fall into line, and the motion becomes uncertain", a=a, c=c,
+                   output_rocker=f(d.output_rocker * MM, 0), frame=f(d.frame * MM, 0))
+    return text + _(".")
 
 
 def _transmission(r: dict, lang: str) -> dict:
-    zh = lang == "zh"
-    tr = r["transmission"]
+    _ = tr(lang)
+    trans = r["transmission"]
     p = r["params"]
     rows, gear_rows = [], []
-    for i, s in enumerate(tr.stages, 1):
+    for i, s in enumerate(trans.stages, 1):
         if s.kind == "belt":
-            kind = "V 带传动" if zh else "V-belt"
+            kind = _("V-belt")
             drv = f"$d_1$ = {f(s.driver * MM, 0)} mm"
             dvn = f"$d_2$ = {f(s.driven * MM, 0)} mm"
             dist = "—"
         else:
-            kind = "直齿圆柱齿轮" if zh else "spur gears"
+            kind = _("spur gears")
             drv, dvn = f"$z$ = {int(s.driver)}", f"$z$ = {int(s.driven)}"
             dist = f(s.pair.a * MM, 0)
         rows.append([str(i), kind, drv, dvn, str(s.ratio_exact), f(s.speed_in, 2), f(s.speed_out, 2), dist])
@@ -319,40 +312,40 @@ def _transmission(r: dict, lang: str) -> dict:
             for g in (pr.g1, pr.g2):
                 gear_rows.append([str(g.z), f(g.d * MM, 1), f(g.da * MM, 1), f(g.df * MM, 1),
                                   f(g.db * MM, 2)])
-            gear_rows.append(["—", ("中心距 a = " if zh else "centre distance a = ") + f(pr.a * MM, 1) + " mm",
-                              ("重合度 ε = " if zh else "contact ratio ε = ") + f(pr.contact_ratio, 3),
-                              ("不根切最少齿数 " if zh else "least teeth without undercut ") + f(pr.z_min, 1), "—"])
+            gear_rows.append(["—", _("centre distance a = ") + f(pr.a * MM, 1) + " mm",
+                              _("contact ratio ε = ") + f(pr.contact_ratio, 3),
+                              _("least teeth without undercut ") + f(pr.z_min, 1), "—"])
     parts = []
-    for s in tr.stages:
+    for s in trans.stages:
         if s.kind == "belt":
             parts.append(rf"\frac{{{f(s.driven * MM, 0)}}}{{{f(s.driver * MM, 0)}}}")
         else:
             parts.append(rf"\frac{{{int(s.driven)}}}{{{int(s.driver)}}}")
-    vals = r" \times ".join(str(s.ratio_exact) for s in tr.stages)
+    vals = r" \times ".join(str(s.ratio_exact) for s in trans.stages)
     eq_ratio = (r"i = \frac{d_2}{d_1}\prod\frac{z_{driven}}{z_{driving}} = " + r" \times ".join(parts)
-                + f" = {vals} = {tr.ratio_exact}")
-    eq_speed = (rf"n = \frac{{n_m}}{{i}} = \frac{{{f(tr.motor_rpm, 0)}}}{{{tr.ratio_exact}}} = "
-                rf"{f(tr.output_rpm, 3)}\ \text{{r/min}}")
+                + f" = {vals} = {trans.ratio_exact}")
+    eq_speed = (rf"n = \frac{{n_m}}{{i}} = \frac{{{f(trans.motor_rpm, 0)}}}{{{trans.ratio_exact}}} = "
+                rf"{f(trans.output_rpm, 3)}\ \text{{r/min}}")
     slip = p.transmission.slip
     shafts = []
     if p.transmission.power is not None:
-        for s in tr.shafts:
+        for s in trans.shafts:
             shafts.append([str(s.index), f(s.speed_rpm, 2), f(s.power / 1e3, 3), f(s.torque, 2)])
     return {"rows": rows, "gear_rows": gear_rows, "eq_ratio": eq_ratio, "eq_speed": eq_speed,
-            "ratio": str(tr.ratio_exact), "required": f"{tr.required_ratio:.6g}",
-            "n_gears": str(sum(1 for s in tr.stages if s.kind == "gear")),
-            "motor": f(tr.motor_rpm, 0),
-            "rate": f(tr.required_rpm, 0), "out": f(tr.output_rpm, 3),
-            "slip": f(slip, 3), "out_slip": f(tr.output_rpm_slip, 3), "has_slip": slip > 0,
-            "shafts": shafts, "warnings": [md_text(w.text(lang)) for w in tr.warnings],
-            "eq_slip": (rf"n' = \frac{{n_m (1 - \varepsilon)}}{{i}} = \frac{{{f(tr.motor_rpm, 0)} \times "
-                        rf"0.98}}{{{tr.ratio_exact}}} = {f(tr.motor_rpm * 0.98 / tr.ratio, 2)}\ \text{{r/min}}")}
+            "ratio": str(trans.ratio_exact), "required": f"{trans.required_ratio:.6g}",
+            "n_gears": str(sum(1 for s in trans.stages if s.kind == "gear")),
+            "motor": f(trans.motor_rpm, 0),
+            "rate": f(trans.required_rpm, 0), "out": f(trans.output_rpm, 3),
+            "slip": f(slip, 3), "out_slip": f(trans.output_rpm_slip, 3), "has_slip": slip > 0,
+            "shafts": shafts, "warnings": [md_text(w.text(lang)) for w in trans.warnings],
+            "eq_slip": (rf"n' = \frac{{n_m (1 - \varepsilon)}}{{i}} = \frac{{{f(trans.motor_rpm, 0)} \times "
+                        rf"0.98}}{{{trans.ratio_exact}}} = {f(trans.motor_rpm * 0.98 / trans.ratio, 2)}\ \text{{r/min}}")}
 
 
 def _bending(r: dict, lang: str, figures: dict) -> dict:
     from ...render.cam_report import cam_context
 
-    zh = lang == "zh"
+    _ = tr(lang)
     p, b = r["params"], r["bending"]
     bp, ds = p.bending, b.design
     bcam = r["bending_cam"]
@@ -383,35 +376,34 @@ def _bending(r: dict, lang: str, figures: dict) -> dict:
         "gamma": r"\gamma = \min\left(\delta,\ 180° - \delta\right),\qquad \delta = \angle(\overrightarrow{AB},\ \overrightarrow{B_0B})",
     }
     mean_ratio = bp.output_swing / bp.input_swing
-    sense_name = {"same": ("同向", "same way"), "opposite": ("反向", "opposite way")}
+    sense_name = {"same": N_("same way"), "opposite": N_("opposite way")}
     cand_rows = []
     for (sense, d_, g, msg), peak in zip(b.synthesis.candidates, b.candidate_ratio_peaks):
-        name = sense_name[sense][0 if zh else 1]
+        name = _(sense_name[sense])
         if d_ is None:
             cand_rows.append([name, "—", "—", "—", "—", "—", "—", msg])
             continue
         chosen = d_ is ds
         mark = (" ✓" if chosen else "")
-        note = [("所选" if zh else "chosen") if chosen else ("γ 较小" if zh else "smaller γ")]
+        note = [_("chosen") if chosen else (_("smaller γ"))]
         for length, sym in ((d_.input_rocker, "a"), (d_.coupler, "b")):
             if any(abs(length - x) < 1e-6 for x in bp.length_bounds):
-                note.append(f"{sym} 达到限值" if zh else f"{sym} at its bound")
+                note.append(_("{sym} at its bound", sym=sym))
         cand_rows.append([name + mark, ad(d_.alpha1), ad(d_.beta1), f(d_.input_rocker * MM, 2),
                           f(d_.coupler * MM, 2), f(g * DEG, 2), f(peak, 4),
-                          ("；" if zh else "; ").join(note)])
+                          _("; ").join(note)])
     design_rows = [
-        ["$d$", "机架（摆杆转轴 A0 至链轮中心 B0）" if zh else "frame A0B0", f(ds.frame * MM, 2), "mm"],
-        ["$a$", "输入摆杆 A0A" if zh else "input rocker A0A", f(ds.input_rocker * MM, 2), "mm"],
-        ["$b$", "连杆 AB" if zh else "coupler AB", f(ds.coupler * MM, 2), "mm"],
-        ["$c$", "大链轮上的连架杆 B0B" if zh else "arm on the wheel B0B", f(ds.output_rocker * MM, 2), "mm"],
-        ["$\\alpha_1$", "输入摆杆起始角" if zh else "input start angle", ad(ds.alpha1), "°"],
-        ["$\\beta_1$", "连架杆起始角" if zh else "arm start angle", ad(ds.beta1), "°"],
-        ["$\\Delta\\alpha$", "输入摆杆摆角" if zh else "input swing", f(ds.dalpha * DEG, 3), "°"],
-        ["$\\Delta\\beta$", "大链轮摆角" if zh else "wheel swing", f(ds.dbeta * DEG, 3), "°"],
-        ["$\\gamma_{min}$", "最小传动角" if zh else "least transmission angle", f(b.gamma_min * DEG, 2), "°"],
-        ["$\\gamma_{max}$", "最大传动角" if zh else "largest transmission angle", f(b.gamma_max * DEG, 2), "°"],
-        ["$d\\beta/d\\alpha$", "速比范围（平均 Δβ/Δα = " + f(mean_ratio, 4) + "）" if zh else
-         f"velocity ratio range (mean Δβ/Δα = {f(mean_ratio, 4)})",
+        ["$d$", _("frame A0B0"), f(ds.frame * MM, 2), "mm"],
+        ["$a$", _("input rocker A0A"), f(ds.input_rocker * MM, 2), "mm"],
+        ["$b$", _("coupler AB"), f(ds.coupler * MM, 2), "mm"],
+        ["$c$", _("arm on the wheel B0B"), f(ds.output_rocker * MM, 2), "mm"],
+        ["$\\alpha_1$", _("input start angle"), ad(ds.alpha1), "°"],
+        ["$\\beta_1$", _("arm start angle"), ad(ds.beta1), "°"],
+        ["$\\Delta\\alpha$", _("input swing"), f(ds.dalpha * DEG, 3), "°"],
+        ["$\\Delta\\beta$", _("wheel swing"), f(ds.dbeta * DEG, 3), "°"],
+        ["$\\gamma_{min}$", _("least transmission angle"), f(b.gamma_min * DEG, 2), "°"],
+        ["$\\gamma_{max}$", _("largest transmission angle"), f(b.gamma_max * DEG, 2), "°"],
+        ["$d\\beta/d\\alpha$", _("velocity ratio range (mean Δβ/Δα = {mean})", mean=f(mean_ratio, 4)),
          f"{f(float(np.min(np.abs(b.velocity_ratio))), 4)} ~ {f(float(np.max(np.abs(b.velocity_ratio))), 4)}", "—"],
     ]
     seed = None
@@ -427,11 +419,10 @@ def _bending(r: dict, lang: str, figures: dict) -> dict:
                 "conclusion": _seed_conclusion(b, lang)}
     bfigs = {k.removeprefix("bcam_"): v for k, v in figures.items() if k.startswith("bcam_")}
     bc = cam_context(bcam, lang, bfigs, "bending_cam_profile.csv")
-    sense = {"same": ("同向", "same way as"), "opposite": ("反向", "opposite way to")}[
-        b.synthesis.sense][0 if zh else 1]
+    sense = {"same": N_("same way as"), "opposite": N_("opposite way to")}[b.synthesis.sense]
     return {
         "eq": eq, "cand_rows": cand_rows, "design_rows": design_rows, "seed": seed,
-        "sense": sense, "ratio": f(b.ratio, 3),
+        "sense": _(sense), "ratio": f(b.ratio, 3),
         "grashof": grashof_sentence(ds.input_rocker, ds.coupler, ds.output_rocker, ds.frame, lang),
         "dbeta": f(bp.output_swing * DEG, 3), "dalpha": f(b.input_swing * DEG, 3),
         "arm": f(arm * MM, 0), "h": f(h_arc * MM, 3),
@@ -448,10 +439,9 @@ def _bending(r: dict, lang: str, figures: dict) -> dict:
         "mean_ratio": f(mean_ratio, 4),
         "pin_hold": f(_pin_hold(r) * DEG, 1),
         "cam_motion": _cam_motion_text(bcam, lang),
-        "cam_r0": (("基圆半径按许用压力角设计" if bcam.base_radius_designed else "基圆半径由任务书给定")
-                   + f"（r0 = {f(bcam.base_radius * MM, 0)} mm）" if zh else
-                   ("the base radius is designed for the allowed pressure angles" if bcam.base_radius_designed
-                    else "the base radius is given in the brief") + f" (r0 = {f(bcam.base_radius * MM, 0)} mm)"),
+        "cam_r0": (_("the base radius is designed for the allowed pressure angles")
+                   if bcam.base_radius_designed else _("the base radius is given in the brief"))
+        + _(" (r0 = {r0} mm)", r0=f(bcam.base_radius * MM, 0)),
         "ratio_factor": None if bp.ratio_factor is None else f(bp.ratio_factor, 3),
         "ratio_limit": None if bp.ratio_factor is None else f(bp.ratio_factor * mean_ratio, 4),
         "ratio_lo": f(float(np.min(np.abs(b.velocity_ratio))), 4),
@@ -475,7 +465,7 @@ def _cam_motion_text(c, lang: str) -> str:
     from ...core.motion_laws import LAWS
     from ...render.cam_report import _segment_name
 
-    zh = lang == "zh"
+    _ = tr(lang)
     prog = c.params.programme
     parts, laws = [], []
     for i, seg in enumerate(prog.segments):
@@ -486,12 +476,11 @@ def _cam_motion_text(c, lang: str) -> str:
         if seg.law and seg.law not in laws:
             laws.append(seg.law)
     impacts = {s.impact for s in c.segments if s.kind != "dwell"}
-    lw = "、".join(LAWS[x].name_zh for x in laws) if zh else ", ".join(LAWS[x].name_en for x in laws)
+    sep = _.pgettext("list", ", ")
+    lw = sep.join(LAWS[x].name_zh if _.zh else LAWS[x].name_en for x in laws)
     calm = impacts <= {"none"}
-    if zh:
-        return "、".join(parts) + f"，均采用{lw}" + ("（首末速度、加速度为零，无冲击）" if calm else "")
-    return ", ".join(parts) + f", with the {lw} law" + (" (zero velocity and acceleration at both ends: no impact)"
-                                                   if calm else "")
+    return (sep.join(parts) + _(", with the {law} law", law=lw)
+            + (_(" (zero velocity and acceleration at both ends: no impact)") if calm else ""))
 
 
 def law_choice(c, lang: str) -> str:
@@ -499,32 +488,29 @@ def law_choice(c, lang: str) -> str:
     acceleration coefficient against the cycloidal law, from the law table."""
     from ...core.motion_laws import LAWS
 
-    zh = lang == "zh"
+    _ = tr(lang)
     laws = []
     for seg in c.params.programme.segments:
         if seg.law and seg.law not in laws:
             laws.append(seg.law)
     impacts = {s.impact for s in c.segments if s.kind != "dwell"}
-    names = "、".join(LAWS[x].name_zh for x in laws) if zh else ", ".join(LAWS[x].name_en for x in laws)
+    names = _.pgettext("list", ", ").join(LAWS[x].name_zh if _.zh else LAWS[x].name_en for x in laws)
     ca = max(LAWS[x].ca for x in laws)
     cyc = LAWS["cycloidal"].ca
     if impacts <= {"none"}:
-        text = (f"原报告没有给出从动件的运动规律。推程与回程都处在两段停歇之间，选用{names}：其速度与加速度在行程两端均为零，"
-                f"与停歇衔接处既无刚性冲击也无柔性冲击" if zh else
-                f"The seed names no follower motion law. Rise and return both lie between dwells; the "
-                f"{names} law is chosen: its velocity and acceleration vanish at both ends, so it joins "
-                f"the dwells with neither rigid nor soft impact")
+        text = _("The seed names no follower motion law. Rise and return both lie between "
+                  "dwells; the {names} law is chosen: its velocity and acceleration vanish at "
+                  "both ends, so it joins the dwells with neither rigid nor soft impact",
+                  names=names)
         if "cycloidal" not in laws and np.isfinite(ca):
-            text += (f"；其峰值加速度系数 $C_a$ = {f(ca, 3)}，小于同样无冲击的摆线运动规律（{f(cyc, 3)}），凸轮转速一定时最大加速度较小。"
-                     if zh else
-                     f"; its peak acceleration coefficient $C_a$ = {f(ca, 3)} is below that of the cycloidal "
-                     f"law ({f(cyc, 3)}), which is also impact-free, so the largest acceleration is lower.")
+            text += _("; its peak acceleration coefficient $C_a$ = {ca} is below that of the "
+                       "cycloidal law ({cyc}), which is also impact-free, so the largest acceleration "
+                       "is lower.", ca=f(ca, 3), cyc=f(cyc, 3))
         else:
-            text += "。" if zh else "."
+            text += _(".")
         return text
-    return (f"所选运动规律（{names}）在衔接处有冲击，见上表；宜改用 3-4-5 多项式或摆线运动规律。" if zh else
-            f"The chosen law(s) ({names}) have impacts at the joints (see the table); a 3-4-5 "
-            "polynomial or cycloidal law would avoid them.")
+    return (_("The chosen law(s) ({names}) have impacts at the joints (see the table); a "
+              "3-4-5 polynomial or cycloidal law would avoid them.", names=names))
 
 
 def _rounded(b, ds, lang: str):
@@ -541,12 +527,12 @@ def _rounded(b, ds, lang: str):
 def _feed(r: dict, lang: str, figures: dict) -> dict:
     from ...render.linkage_report import linkage_context
 
-    zh = lang == "zh"
+    _ = tr(lang)
     p = r["params"]
     k, ft = r["feed"], r["feed_table"]
     lk = linkage_context(p.feed, k, r["feed_forces"], r["feed_flywheel"], r["feed_verification"],
                          figures, lang, prefix="feed",
-                         title="送料机构运动分析" if zh else "Feed mechanism: kinematics")
+                         title=_("Feed mechanism: kinematics"))
     rows = []
     for i in range(len(ft.crank_angle)):
         seed_x = "—"
@@ -576,55 +562,50 @@ def _feed(r: dict, lang: str, figures: dict) -> dict:
 def verification_rows(r: dict, lang: str) -> list[list[str]]:
     from ...render.linkage_report import verification_rows as linkage_rows
 
-    zh = lang == "zh"
+    _ = tr(lang)
     p = r["params"]
-    tr, b, c, pin = r["transmission"], r["bending"], r["cycle"], r["pin_check"]
+    trans, b, c, pin = r["transmission"], r["bending"], r["cycle"], r["pin_check"]
     rows = []
 
-    def add(zh_t, en_t, value, ref, ok):
-        rows.append([zh_t if zh else en_t, value, ref, _ok(ok, lang)])
+    def add(item, value, ref, ok):
+        rows.append([_(item), value, ref, _ok(ok, lang)])
 
-    add("传动比（精确分数）", "train ratio (exact fraction)", str(tr.ratio_exact),
-        f"$n_m/n$ = {f(tr.required_ratio, 4)}", abs(tr.ratio - tr.required_ratio) < 1e-12)
-    add("主轴转速 /(r/min)", "main-shaft speed / rpm", f(tr.output_rpm, 4),
-        f"{f(p.rate, 0)}（生产率）" if zh else f"{f(p.rate, 0)} (production rate)",
-        abs(tr.output_rpm - p.rate) < 1e-9 * p.rate)
-    add("定位销升程 /mm", "pin lift / mm", f(pin.lift * MM, 3), f"> (d1 − d2)/2 = {f(pin.required * MM, 2)}",
+    add(N_("train ratio (exact fraction)"), str(trans.ratio_exact),
+        f"$n_m/n$ = {f(trans.required_ratio, 4)}", abs(trans.ratio - trans.required_ratio) < 1e-12)
+    add(N_("main-shaft speed / rpm"), f(trans.output_rpm, 4),
+        _("{rate} (production rate)", rate=f(p.rate, 0)),
+        abs(trans.output_rpm - p.rate) < 1e-9 * p.rate)
+    add(N_("pin lift / mm"), f(pin.lift * MM, 3), f"> (d1 − d2)/2 = {f(pin.required * MM, 2)}",
         pin.lift > pin.required)
-    add("仿真：大链轮摆角 /°", "simulation: large wheel swing / °", f(abs(b.swing_simulated) * DEG, 4),
+    add(N_("simulation: large wheel swing / °"), f(abs(b.swing_simulated) * DEG, 4),
         f(b.output_swing * DEG, 4), abs(abs(b.swing_simulated) - b.output_swing) < 1e-9)
-    add("仿真：扳弯轮转角（凸轮→摆杆→四杆→链）/°", "simulation: bending wheel (cam → rocker → four-bar → chain) / °",
-        f(b.bend_simulated * DEG, 4), f(p.bending.bending_angle * DEG, 4),
+    add(N_("simulation: bending wheel (cam → rocker → four-bar → chain) / °"), f(b.bend_simulated * DEG, 4), f(p.bending.bending_angle * DEG, 4),
         abs(b.bend_simulated - p.bending.bending_angle) < 1e-9)
-    add("扳弯四杆机构封闭方程残差 /m", "bending four-bar closure residual / m", e(b.closure), "≤ 10⁻⁹",
+    add(N_("bending four-bar closure residual / m"), e(b.closure), "≤ 10⁻⁹",
         b.closure <= 1e-9)
-    add("扳弯四杆机构最小传动角 /°", "bending four-bar least transmission angle / °", f(b.gamma_min * DEG, 3),
+    add(N_("bending four-bar least transmission angle / °"), f(b.gamma_min * DEG, 3),
         f"≥ {f(p.bending.gamma_allowed * DEG, 0)}", b.gamma_min >= p.bending.gamma_allowed)
-    add("扳弯轮角速度与中心差分之差（相对）", "bending wheel ω vs central difference (relative)",
-        e(b.fd_velocity), "O(h²)", b.fd_velocity < 1e-3)
-    add("扳弯轮角加速度与中心差分之差（相对）", "bending wheel ε vs central difference (relative)",
-        e(b.fd_acceleration), "O(h²)", b.fd_acceleration < 1e-3)
-    for key, zh_n, en_n in (("pin", "定位凸轮", "pin cam"), ("bend", "扳弯凸轮", "bending cam")):
+    add(N_("bending wheel ω vs central difference (relative)"), e(b.fd_velocity), "O(h²)", b.fd_velocity < 1e-3)
+    add(N_("bending wheel ε vs central difference (relative)"), e(b.fd_acceleration), "O(h²)", b.fd_acceleration < 1e-3)
+    for key, cam in (("pin", N_("pin cam")), ("bend", N_("bending cam"))):
         err = c.cam_timing_error[key]
-        add(f"循环图与{zh_n}的一致性（最大偏差 / 行程）", f"cycle diagram vs the {en_n} (largest deviation / stroke)",
-            e(err), "0", err < 1e-9)
-    add("扳弯轮转动时定位销的最低升程 /mm", "least pin lift while the bending wheel turns / mm",
-        f(c.pin_lift_while_bending * MM, 4), f"h = {f(c.pin_stroke * MM, 3)}",
+        rows.append([_("cycle diagram vs the {cam} (largest deviation / stroke)", cam=_(cam)),
+                     e(err), "0", _ok(err < 1e-9, lang)])
+    add(N_("least pin lift while the bending wheel turns / mm"), f(c.pin_lift_while_bending * MM, 4), f"h = {f(c.pin_stroke * MM, 3)}",
         abs(c.pin_lift_while_bending - c.pin_stroke) < 1e-12)
-    add("送料工作行程对应的主轴转角：循环图 / 仿真 /°", "feed stroke in shaft angle: diagram / simulation / °",
-        f"{f(c.feed_span_cycle * DEG, 3)} / {f(c.feed_span_simulated * DEG, 4)}", "±0.5",
+    add(N_("feed stroke in shaft angle: diagram / simulation / °"), f"{f(c.feed_span_cycle * DEG, 3)} / {f(c.feed_span_simulated * DEG, 4)}", "±0.5",
         abs(c.feed_span_cycle - c.feed_span_simulated) <= np.radians(0.5))
     n_ok = sum(1 for ch in c.checks if ch.ok)
-    add("运动循环图协调要求", "cycle diagram timing requirements", f"{n_ok}/{len(c.checks)}",
-        "全部合格" if zh else "all PASS", n_ok == len(c.checks))
+    add(N_("cycle diagram timing requirements"), f"{n_ok}/{len(c.checks)}",
+        _("all PASS"), n_ok == len(c.checks))
     cf = r["feed_table"].closed
     k = r["feed"]
     if cf is not None:
         kk = k.time_ratio if k.time_ratio >= 1 else 1 / k.time_ratio
-        add("送料 K：仿真 / 闭式解", "feed K: simulation / closed form", f(kk, 4), f(cf.K, 4),
+        add(N_("feed K: simulation / closed form"), f(kk, 4), f(cf.K, 4),
             abs(kk - cf.K) < 1e-9)
         if cf.stroke is not None:
-            add("送料行程：仿真 / 闭式解 /mm", "feed stroke: simulation / closed form / mm", f(k.stroke * MM, 4),
+            add(N_("feed stroke: simulation / closed form / mm"), f(k.stroke * MM, 4),
                 f(cf.stroke * MM, 4), abs(k.stroke - cf.stroke) < 1e-12)
     rows.extend(linkage_rows(r["feed_verification"], lang, k))
     # A bare "|" inside a cell (e.g. max|M_b ω|) would split the pipe table.

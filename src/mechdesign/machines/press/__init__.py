@@ -4,6 +4,7 @@ The whole machine is this package: its brief (:mod:`.brief`), its synthesis, mod
 stages (:mod:`.stages`) and its report (:mod:`.report`); everything else is the shared
 engine, stages and report sections.
 """
+from ...i18n import N_
 from ...registry import _DEG, _MM, Entry
 
 _P = __name__
@@ -12,9 +13,9 @@ ENTRY = Entry(
     stages=f"{_P}.stages:stages", document=f"{_P}.stages:results_document",
     report=f"{_P}.report", example="press.yaml", results=f"{_P}.stages:PressResults",
     checks=f"{_P}.stages:checks",
-    summary=(("曲柄", "crank", "mm", "synthesis.crank", _MM),
-             ("连杆 BC", "coupler BC", "mm", "synthesis.coupler", _MM),
-             ("摇杆 DE", "rocker DE", "mm", "synthesis.rocker", _MM),
-             ("K（仿真）", "K (simulated)", "", "linkage.verification.time_ratio", 1.0),
-             ("飞轮 J_F", "flywheel J_F", "kg·m²", "flywheel.inertia", 1.0),
-             ("平均功率", "mean power", "W", "linkage.mean_power", 1.0)))
+    summary=((N_("crank"), "mm", "synthesis.crank", _MM),
+             (N_("coupler BC"), "mm", "synthesis.coupler", _MM),
+             (N_("rocker DE"), "mm", "synthesis.rocker", _MM),
+             (N_("K (simulated)"), "", "linkage.verification.time_ratio", 1.0),
+             (N_("flywheel J_F"), "kg·m²", "flywheel.inertia", 1.0),
+             (N_("mean power"), "W", "linkage.mean_power", 1.0)))

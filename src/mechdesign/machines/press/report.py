@@ -6,9 +6,10 @@ from __future__ import annotations
 
 import numpy as np
 
+from ...i18n import N_, tr
 from ...render import guide_bar_report as gb_report
 from ...render.fmt import e, f, md_meta, md_text
-from ...render.fmt import in_lang, verdict
+from ...render.fmt import verdict
 from ...render.linkage_report import linkage_context, verification_rows
 
 DEG = 180.0 / np.pi
@@ -19,28 +20,28 @@ write_data = gb_report.write_data       # the cam profile as CSV
 animate = gb_report.animate             # the linkage as a GIF
 
 
-def _data_rows(b, p) -> list[list[str]]:
+def _data_rows(b, p, _) -> list[list[str]]:
     lk, ms, ld = b.linkage, b.masses, b.loads
     return [
-        ["$x_1$", "A 在 D 右侧 / A right of D", f(lk.pivot_x1_mm, 0), "mm"],
-        ["$x_2$", "导路在 D 右侧 / guide right of D", f(lk.guide_x2_mm, 0), "mm"],
-        ["$y$", "A 在 D 下方 / A below D", f(lk.pivot_y_mm, 0), "mm"],
-        ["$\\psi_3'$", "摇杆上极限角 / rocker upper extreme", f(lk.rocker_psi3_upper_deg, 1), "°"],
-        ["$\\psi_3''$", "摇杆下极限角 / rocker lower extreme", f(lk.rocker_psi3_lower_deg, 1), "°"],
-        ["$H$", "滑块行程 / ram stroke", f(lk.stroke_H_mm, 1), "mm"],
-        ["$CE/CD$", "摇杆上 C 点位置 / C on the rocker", f(lk.ratio_CE_CD, 3), "—"],
-        ["$EF/DE$", "连杆 EF 与摇杆之比 / rod ratio", f(lk.ratio_EF_DE, 3), "—"],
-        ["$BS_2/BC$", "连杆质心 / coupler CoM", f(lk.ratio_BS2_BC, 2), "—"],
-        ["$DS_3/DE$", "摇杆质心 / rocker CoM", f(lk.ratio_DS3_DE, 2), "—"],
-        ["$n_1$", "曲柄转速 / crank speed", f(lk.crank_speed_n1_rpm, 0), "rpm"],
-        ["$G_2$", "连杆重量 / coupler weight", f(ms.coupler_G2_N, 0), "N"],
-        ["$G_3$", "摇杆重量 / rocker weight", f(ms.rocker_G3_N, 0), "N"],
-        ["$G_5$", "滑块重量 / ram weight", f(ms.ram_G5_N, 0), "N"],
-        ["$J_{S_2}$", "连杆转动惯量 / coupler inertia", f(ms.coupler_J_S2_kgm2, 3), "kg·m²"],
-        ["$J_{S_3}$", "摇杆转动惯量 / rocker inertia", f(ms.rocker_J_S3_kgm2, 3), "kg·m²"],
-        ["$Q_{max}$", "最大生产阻力 / pressing force", f(ld.pressing_force_Qmax_N, 0), "N"],
-        ["$z_1, z_2$", "齿轮齿数 / gear teeth", f"{p.z1}, {p.z2}", "—"],
-        ["$[\\delta]$", "许用速度不均匀系数 / speed fluctuation", f"1/{1 / p.fluctuation:.4g}", "—"],
+        ["$x_1$", _("A right of D"), f(lk.pivot_x1_mm, 0), "mm"],
+        ["$x_2$", _("guide right of D"), f(lk.guide_x2_mm, 0), "mm"],
+        ["$y$", _("A below D"), f(lk.pivot_y_mm, 0), "mm"],
+        ["$\\psi_3'$", _("rocker upper extreme"), f(lk.rocker_psi3_upper_deg, 1), "°"],
+        ["$\\psi_3''$", _("rocker lower extreme"), f(lk.rocker_psi3_lower_deg, 1), "°"],
+        ["$H$", _("ram stroke"), f(lk.stroke_H_mm, 1), "mm"],
+        ["$CE/CD$", _("C on the rocker"), f(lk.ratio_CE_CD, 3), "—"],
+        ["$EF/DE$", _.pgettext("press", "rod ratio"), f(lk.ratio_EF_DE, 3), "—"],
+        ["$BS_2/BC$", _("coupler CoM"), f(lk.ratio_BS2_BC, 2), "—"],
+        ["$DS_3/DE$", _("rocker CoM"), f(lk.ratio_DS3_DE, 2), "—"],
+        ["$n_1$", _("crank speed"), f(lk.crank_speed_n1_rpm, 0), "rpm"],
+        ["$G_2$", _("coupler weight"), f(ms.coupler_G2_N, 0), "N"],
+        ["$G_3$", _("rocker weight"), f(ms.rocker_G3_N, 0), "N"],
+        ["$G_5$", _("ram weight"), f(ms.ram_G5_N, 0), "N"],
+        ["$J_{S_2}$", _("coupler inertia"), f(ms.coupler_J_S2_kgm2, 3), "kg·m²"],
+        ["$J_{S_3}$", _("rocker inertia"), f(ms.rocker_J_S3_kgm2, 3), "kg·m²"],
+        ["$Q_{max}$", _("pressing force"), f(ld.pressing_force_Qmax_N, 0), "N"],
+        ["$z_1, z_2$", _("gear teeth"), f"{p.z1}, {p.z2}", "—"],
+        ["$[\\delta]$", _("speed fluctuation"), f"1/{1 / p.fluctuation:.4g}", "—"],
     ]
 
 
@@ -90,41 +91,44 @@ def synthesis_context(s, p) -> dict:
                   rf"{f(s.sagitta_guide * mm, 2)}\ \text{{mm}}\quad (x_2 = {f(p.x2 * mm, 1)}\ \text{{mm}})"),
     }
     rows = [
-        ["$L_{AB}$", "曲柄 / crank", f(a, 2), "mm"],
-        ["$L_{BC}$", "连杆 / coupler", f(b, 2), "mm"],
-        ["$L_{CD}$", "摇杆 DC 段 / rocker to C", f(c, 2), "mm"],
-        ["$L_{DE}$", "摇杆 / rocker", f(de, 2), "mm"],
-        ["$L_{CE}$", "C 至 E / C to E", f(s.rocker_CE * mm, 2), "mm"],
-        ["$L_{EF}$", "连杆 EF / rod EF", f(s.rod * mm, 2), "mm"],
-        ["$L_{AD}$", "机架 / frame", f(d, 2), "mm"],
-        ["$L_{BS_2}$", "连杆质心 / coupler CoM", f(s.coupler_com * mm, 2), "mm"],
-        ["$L_{DS_3}$", "摇杆质心 / rocker CoM", f(s.rocker_com * mm, 2), "mm"],
-        ["$\\theta$", "极位夹角 / extreme-position angle", f(theta, 3), "°"],
-        ["$K$", "行程速比系数 / time ratio", f(s.time_ratio, 4), "—"],
+        ["$L_{AB}$", N_("crank"), f(a, 2), "mm"],
+        ["$L_{BC}$", N_("coupler"), f(b, 2), "mm"],
+        ["$L_{CD}$", N_("rocker to C"), f(c, 2), "mm"],
+        ["$L_{DE}$", N_("rocker"), f(de, 2), "mm"],
+        ["$L_{CE}$", N_("C to E"), f(s.rocker_CE * mm, 2), "mm"],
+        ["$L_{EF}$", N_("rod EF"), f(s.rod * mm, 2), "mm"],
+        ["$L_{AD}$", N_("frame"), f(d, 2), "mm"],
+        ["$L_{BS_2}$", N_("coupler CoM"), f(s.coupler_com * mm, 2), "mm"],
+        ["$L_{DS_3}$", N_("rocker CoM"), f(s.rocker_com * mm, 2), "mm"],
+        ["$\\theta$", N_("extreme-position angle"), f(theta, 3), "°"],
+        ["$K$", N_("time ratio"), f(s.time_ratio, 4), "—"],
     ]
     return {"eq": eq, "rows": rows, "gmin": f(min(g1, g2), 2)}
 
 
 def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
-    zh = lang == "zh"
+    _ = tr(lang)
     p, s, k, v = r["params"], r["synthesis"], r["linkage"], r["linkage_verification"]
     mm = 1e3
     lkc = linkage_context(r["model"], k, r["linkage_forces"], r["linkage_flywheel"], v, figures,
-                          lang, title="压床六杆机构分析" if zh else "Six-bar linkage analysis")
+                          lang, title=_("Six-bar linkage analysis"))
     findings = [md_text(w.text(lang)) for key in ("linkage_verification", "linkage_flywheel")
                 for w in (getattr(r[key], "warnings", ()) or ())]
     slow = k.time_ratio >= 1.0
+    speed = N_("slow") if slow else N_("fast")
+    sense = N_("clockwise") if p.crank_omega < 0 else N_("counter-clockwise")
+    zh_words = tr("zh")     # the template's Chinese words (sense_zh, slow_zh)
+    press = synthesis_context(s, p)
     return {
-        "meta": md_meta(brief.report, lang), "data_rows": in_lang(_data_rows(brief, p), lang),
-        "press": (lambda c: {**c, "rows": in_lang(c["rows"], lang)})(synthesis_context(s, p)),
-        "n1": f(p.crank_speed_rpm, 0), "sense_zh": "顺时针" if p.crank_omega < 0 else "逆时针",
-        "sense_en": "clockwise" if p.crank_omega < 0 else "counter-clockwise",
-        "slow_zh": "慢" if slow else "快", "slow_en": "slow" if slow else "fast",
+        "meta": md_meta(brief.report, lang), "data_rows": _data_rows(brief, p, _),
+        "press": {**press, "rows": [[sym, _(name), *rest] for sym, name, *rest in press["rows"]]},
+        "n1": f(p.crank_speed_rpm, 0), "sense_zh": zh_words(sense), "sense_en": sense,
+        "slow_zh": zh_words(speed), "slow_en": speed,
         "press_from": f((1 - p.pressing_ratio) * p.stroke * mm, 1), "H": f(p.stroke * mm, 1),
         "Q": f(p.pressing_force, 0),
         "linkage": lkc, **gb_report.optional_sections(r, lang, figures),
         "verify_rows": verification_rows(v, lang, k)
-        + [["行程误差 / mm" if zh else "stroke error / mm", e((v.stroke - p.stroke) * mm),
-            "0", verdict(abs(v.stroke - p.stroke) <= 1e-9, "zh" if zh else "en")]],
+        + [[_("stroke error / mm"), e((v.stroke - p.stroke) * mm),
+            "0", verdict(abs(v.stroke - p.stroke) <= 1e-9, _.lang)]],
         "findings": findings,
     }

@@ -4,15 +4,16 @@ stroke, with optional gear pair, drive and cam sections.
 The whole machine is this package: its brief (:mod:`.brief`), its model, stages and results
 (:mod:`.stages`) and its report (:mod:`.report`).
 """
+from ...i18n import N_
 from ...registry import _MM, Entry
 
 _P = __name__
 ENTRY = Entry(
     "shaper", f"{_P}.brief:ShaperBrief", f"{_P}.brief:to_si", f"{_P}.stages:stages",
     f"{_P}.stages:results_document", f"{_P}.report", "shaper.yaml", results=f"{_P}.stages:ShaperResults", summary=(
-        ("曲柄", "crank", "mm", "synthesis.crank", _MM),
-        ("导杆", "guide bar", "mm", "synthesis.guide_bar", _MM),
-        ("K（仿真）", "K (simulated)", "", "verification.time_ratio_simulated", 1.0),
-        ("飞轮 J_F", "flywheel J_F", "kg·m²", "flywheel.inertia", 1.0),
-        ("平均功率", "mean power", "W", "flywheel.mean_power", 1.0),
-        ("电动机", "motor", "", "drive.motor.designation", 1.0)))
+        (N_("crank"), "mm", "synthesis.crank", _MM),
+        (N_("guide bar"), "mm", "synthesis.guide_bar", _MM),
+        (N_("K (simulated)"), "", "verification.time_ratio_simulated", 1.0),
+        (N_("flywheel J_F"), "kg·m²", "flywheel.inertia", 1.0),
+        (N_("mean power"), "W", "flywheel.mean_power", 1.0),
+        (N_("motor"), "", "drive.motor.designation", 1.0)))

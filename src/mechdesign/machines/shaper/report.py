@@ -13,6 +13,7 @@ import numpy as np
 
 from ...render import figures as fig
 from ...render import guide_bar_report as gb_report
+from ...i18n import N_, tr
 from ...render.fmt import e, f, in_lang, md_meta
 
 DEG = 180.0 / np.pi
@@ -55,7 +56,7 @@ def make_figures(r: dict, fig_dir: Path, lang: str) -> dict[str, str]:
     return paths
 
 
-TITLES = {"zh": "牛头刨床导杆机构运动", "en": "Shaper linkage in motion"}
+TITLE = N_("Shaper linkage in motion")
 
 
 def animation_args(results: dict, lang: str) -> dict:
@@ -73,7 +74,7 @@ def animation_args(results: dict, lang: str) -> dict:
     guide = (complex(fx.min() - extra, y), complex(fx.max() + extra, y))
     return dict(points=pts, bars=[("O2", "A"), ("O3", "B"), ("B", "F")], pivots=["O2", "O3"],
                 sliders=[("A", bar_angle), ("F", 0.0)], guides=[guide], trace="F",
-                title=TITLES.get(lang, TITLES["en"]))
+                title=tr(lang)(TITLE))
 
 
 def animate(r: dict, path: Path, lang: str, **kwargs) -> Path:
@@ -97,6 +98,8 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
     """Strings, rows and formulas for the templates."""
     p, syn, k, frc, fl, v = (r[key] for key in ("params", "synthesis", "kinematics", "forces",
                                                "linkage_flywheel", "verification"))
+    _ = tr(lang)
+    zh_words = tr("zh")     # the guide-bar tables take the ram's and the load's Chinese names
     d = syn.design
     n = k.grid_size
     mm = 1e3
@@ -105,13 +108,14 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
     lk, ld = brief.linkage, brief.loads
 
     data_rows = gb_report.data_rows(
-        brief, p, "刨头", "BF", lk.rod_ratio_BF_O3B,
-        [["$x_{S_6}$", "刨头质心至 F / ram CoM from F", f(lk.ram_com_x_S6_mm, 0), "mm"],
-         *([["$y_{S_6}$", "刨头质心高于 F / ram CoM above F", f(lk.ram_com_y_S6_mm, 0), "mm"]]
-           if "ram_com_y_S6_mm" in lk.model_fields_set else [])], "切削阻力",
-        ["$y_P$", "切削力作用线距 O2 / cutting line above O2", f(ld.cutting_height_yP_mm, 0), "mm"])
-    guide_bar = gb_report.guide_bar_context(syn, p, "BF", "刨头", [
-        ["$L_{O_2M}$", "导路至 O2 / guide line above O2", f(syn.guide_height_above_O2 * mm, 2), "mm"]])
+        brief, p, zh_words.pgettext("shaper", "ram"), "BF", lk.rod_ratio_BF_O3B,
+        [["$x_{S_6}$", _.pgettext("shaper", "ram CoM from F"), f(lk.ram_com_x_S6_mm, 0), "mm"],
+         *([["$y_{S_6}$", _.pgettext("shaper", "ram CoM above F"), f(lk.ram_com_y_S6_mm, 0), "mm"]]
+           if "ram_com_y_S6_mm" in lk.model_fields_set else [])],
+        zh_words.pgettext("shaper", "cutting resistance"),
+        ["$y_P$", _("cutting line above O2"), f(ld.cutting_height_yP_mm, 0), "mm"])
+    guide_bar = gb_report.guide_bar_context(syn, p, "BF", zh_words.pgettext("shaper", "ram"), [
+        ["$L_{O_2M}$", _("guide line above O2"), f(syn.guide_height_above_O2 * mm, 2), "mm"]])
     # Course typography: primes, not apostrophes (8′).
     labels = [lab.replace("'", "′") for lab in k.positions.labels]
     kin_rows, load_rows, reaction_rows = [], [], []
@@ -124,7 +128,7 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
         load_rows.append([label, f(frc.cutting_force[j], 0), f(frc.inertia_force4[j], 1),
                           f(frc.inertia_couple4[j], 2), f(frc.inertia_force6[j], 1),
                           f(frc.balancing_torque[j], 2)])
-        reaction_rows.append([label] + [f(abs(frc.reactions[key][j]), 1, group=True) for _, key in _REACTIONS])
+        reaction_rows.append([label] + [f(abs(frc.reactions[key][j]), 1, group=True) for _name, key in _REACTIONS])
     # Worked example at one position with the analytic formulas of the guide-bar group.
     ex = labels.index("4") if "4" in labels else 1  # the course's usual worked position
     j = n + ex
@@ -163,8 +167,9 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
                   rf"{f(fl.rim.diameter, 3)}^3 \times {f(p.rim_height_to_width, 2)} \times "
                   rf"{f(p.specific_weight, 0)}}}}} = {f(fl.rim.width * mm, 1)}\ \text{{mm}}"),
     }
-    sense_zh = "顺时针" if p.crank_omega < 0 else "逆时针"
-    sense_en = "clockwise" if p.crank_omega < 0 else "counter-clockwise"
+    sense = N_("clockwise") if p.crank_omega < 0 else N_("counter-clockwise")
+    sense_zh, sense_en = zh_words(sense), sense
+    shaft = N_("the pinion shaft O1 (z1)") if fl.shaft == "pinion" else N_("the crank shaft O2")
     return {
         **gb_report.optional_sections(r, lang, figures),
         **gb_report.task_words(p, syn),
@@ -175,7 +180,7 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
         "kin_rows": kin_rows,
         "load_rows": load_rows,
         "reaction_rows": reaction_rows,
-        "reaction_names": [f"$F_{{{name}}}$" for name, _ in _REACTIONS],
+        "reaction_names": [f"$F_{{{name}}}$" for name, _key in _REACTIONS],
         "worked": worked,
         "fly_eq": fly_eq,
         "sense_zh": sense_zh, "sense_en": sense_en,
@@ -194,17 +199,14 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
         "mb_mean": f(fl.mean_torque, 2),
         "power": f(fl.mean_power, 1),
         "fly": {
-            "shaft_zh": "小齿轮 z1 所在的 O1 轴" if fl.shaft == "pinion" else "曲柄轴 O2",
-            "shaft_en": "the pinion shaft O1 (z1)" if fl.shaft == "pinion" else "the crank shaft O2",
+            "shaft_zh": zh_words(shaft), "shaft_en": shaft,
             "n": f(fl.shaft_speed_rpm, 2), "md": f(fl.shaft_torque, 3),
             # the flywheel is designed for the nominal speed; the drive's shafts turn at the
             # speeds its motor and chosen ratios give: say which is which where both appear
             "n_note": ("" if r.get("drive") is None else
-                       ("，名义转速：曲柄转速按齿数比折算；传动装置一章中各轴转速是电动机转速除以所选传动比得到的实际转速，"
-                        "与之相差传动比误差" if lang == "zh" else
-                        ", the nominal speed: the crank speed times the gear ratio; the drive chapter's shaft "
-                        "speeds are the realised ones, the motor speed divided by the chosen ratios, and differ "
-                        "from it by the ratio error")),
+                       _(", the nominal speed: the crank speed times the gear ratio; the drive "
+                         "chapter's shaft speeds are the realised ones, the motor speed divided by the "
+                         "chosen ratios, and differ from it by the ratio error")),
             "dw": f(fl.max_energy_swing, 2), "jf": f(fl.inertia, 3),
             "at_min": f(fl.phase_at_min * DEG, 1), "at_max": f(fl.phase_at_max * DEG, 1),
             "D": f(fl.rim.diameter * mm, 0), "b": f(fl.rim.width * mm, 1),
