@@ -13,6 +13,11 @@ References
   f_p = 1.2, f_t = 1, n = 480 rpm: L_h = 10⁶/(60 n) (f_t C/(f_p P))³ = 53 400.36 h (printed).
   The same sheet quotes the 6207 ratings C = 25 500 N, C0 = 15 200 N of its table 8-28, which
   confirms the catalogue row.
+* Bearing selection: 濮良贵《机械设计》习题 13-4 with its published worked solution
+  (m.163wenku.com/p-517317.html): 6207, F_r = 1810 N, F_a = 740 N, n = 2900 r/min, f_p = 1.1,
+  X = 0.56, Y = 1.698 → P = 2497 N, C' = 25331.25 N ≤ 25.5 kN (test_bearing_selection_pu_13_4).
+* Key table: GB/T 1095/1096 rows 6–200 mm (b × h, t, t1) and the length series against stored
+  public pages (m.cadhome.net/news/jxbz/12131.html; test_key_table_is_the_printed_gb1096_table).
 * Gear strength: 濮良贵 例题 10-1 is reproduced in tests/test_strength.py
   (test_example_10_1_cycles_and_allowable_stresses, test_example_10_1_design_and_check).
 * Shaft: no printed worked example of the bending–torsion check with consistent numbers was
