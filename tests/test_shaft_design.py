@@ -13,6 +13,11 @@ References
   f_p = 1.2, f_t = 1, n = 480 rpm: L_h = 10⁶/(60 n) (f_t C/(f_p P))³ = 53 400.36 h (printed).
   The same sheet quotes the 6207 ratings C = 25 500 N, C0 = 15 200 N of its table 8-28, which
   confirms the catalogue row.
+* Bearing selection: 濮良贵《机械设计》习题 13-4 with its published worked solution
+  (m.163wenku.com/p-517317.html): 6207, F_r = 1810 N, F_a = 740 N, n = 2900 r/min, f_p = 1.1,
+  X = 0.56, Y = 1.698 → P = 2497 N, C' = 25331.25 N ≤ 25.5 kN (test_bearing_selection_pu_13_4).
+* Key table: GB/T 1095/1096 rows 6–200 mm (b × h, t, t1) and the length series against stored
+  public pages (m.cadhome.net/news/jxbz/12131.html; test_key_table_is_the_printed_gb1096_table).
 * Gear strength: 濮良贵 例题 10-1 is reproduced in tests/test_strength.py
   (test_example_10_1_cycles_and_allowable_stresses, test_example_10_1_design_and_check).
 * Shaft: no printed worked example of the bending–torsion check with consistent numbers was
@@ -75,6 +80,58 @@ def test_bearing_life_course_design_example():
     assert round(life, 2) == 53400.36                                      # printed L_h
     P = s.bearing_equivalent_load(1840.97, 0.0, 0.2, 0.56, 2.0, fp=1.2)   # no axial load: P = f_p F_r
     assert P == pytest.approx(1.2 * 1840.97)
+
+
+# GB/T 1095/1096 flat keys as printed on a stored public page (https://m.cadhome.net/news/jxbz/12131.html):
+# (d over, d up to, b, h, t shaft, t1 hub), mm
+_GB1096_PAGE = [(6, 8, 2, 2, 1.2, 1.0), (8, 10, 3, 3, 1.8, 1.4), (10, 12, 4, 4, 2.5, 1.8), (12, 17, 5, 5, 3.0, 2.3),
+                (17, 22, 6, 6, 3.5, 2.8), (22, 30, 8, 7, 4.0, 3.3), (30, 38, 10, 8, 5.0, 3.3),
+                (38, 44, 12, 8, 5.0, 3.3), (44, 50, 14, 9, 5.5, 3.8), (50, 58, 16, 10, 6.0, 4.3),
+                (58, 65, 18, 11, 7.0, 4.4), (65, 75, 20, 12, 7.5, 4.9), (75, 85, 22, 14, 9.0, 5.4),
+                (85, 95, 25, 14, 9.0, 5.4), (95, 110, 28, 16, 10.0, 6.4), (110, 130, 32, 18, 11.0, 7.4),
+                (130, 150, 36, 20, 12.0, 8.4), (150, 170, 40, 22, 13.0, 9.4), (170, 200, 45, 25, 15.0, 10.4)]
+
+
+def test_key_table_is_the_printed_gb1096_table():
+    """data/keys.yaml (confirmed: flat_keys) row by row against the stored GB/T 1095/1096 table,
+    and the GB/T 1096 length series "6, 8, 10, … 450, 500" of a second stored page."""
+    from mechdesign.data import load_yaml
+
+    rows = load_yaml("keys.yaml")["flat_keys"]
+    got = [(r["d_over_mm"], r["d_upto_mm"], r["b_mm"], r["h_mm"], r["t_shaft_mm"], r["t1_hub_mm"]) for r in rows]
+    assert got == _GB1096_PAGE
+    assert load_yaml("keys.yaml")["length_series_mm"] == [
+        6, 8, 10, 12, 14, 16, 18, 20, 22, 25, 28, 32, 36, 40, 45, 50, 56, 63, 70, 80, 90, 100, 110, 125,
+        140, 160, 180, 200, 220, 250, 280, 320, 360, 400, 450, 500]
+    # a 135 mm seat (beyond the old 130 mm end of the table) gets its 36 × 20 key
+    key = cat.key_for_shaft(135 * mm)
+    assert (key.b, key.h) == pytest.approx((36 * mm, 20 * mm))
+
+
+def test_bearing_selection_pu_13_4():
+    """濮良贵《机械设计》习题 13-4 with its published worked solution (m.163wenku.com/p-517317.html,
+    "作业一 第十三章 滚动轴承 习题解答"): a farm water pump, deep-groove ball bearing, d = 35 mm,
+    n = 2900 r/min, F_r = 1810 N, F_a = 740 N, L_h' = 6000 h. Printed: 6207 with C0r = 15.2 kN,
+    Cr = 25.5 kN; f0 F_a/C0r = 0.715 → e = 0.2615 < F_a/F_r = 0.41 → X = 0.56, Y = 1.698;
+    P = 1.1 (X F_r + Y F_a) = 2497 N; C' = P (60 n L_h/10⁶)^(1/3) = 25331.25 N ≤ 25.5 kN: 6207 suffices.
+    The same sheet's 习题 13-7 prints Cr = 35.0 kN for 6210 (the catalogue row)."""
+    b = cat.bearing("6207")
+    assert (b.Cr, b.C0r) == pytest.approx((25.5e3, 15.2e3))
+    assert cat.bearing("6210").Cr == pytest.approx(35.0e3)
+    assert 740 / 1810 > 0.2615
+    P = s.bearing_equivalent_load(1810.0, 740.0, 0.2615, 0.56, 1.698, fp=1.1)
+    assert round(P) == 2497
+    # with the printed (rounded) P = 2497 N: 2497 × ∛1044 = 25331.0 N, printed 25331.25 N (the
+    # sheet's rounding of ∛1044); with the unrounded P = 2497.13 N: 25332.3 N
+    assert s.required_dynamic_load(2497.0, 2900, 6000, ball=True) == pytest.approx(25331.25, abs=0.5)
+    C_need = s.required_dynamic_load(P, 2900, 6000, ball=True)
+    assert C_need == pytest.approx(25331.25, rel=5e-5)
+    assert C_need <= b.Cr
+    assert s.bearing_life_check(b.Cr, P, 2900, 6000, ball=True).passed
+    # the shipped X/Y table is keyed by F_a/C0r (8th ed. 表13-5); the solution reads the
+    # f0·F_a/C0r form (f0 = 14.7): its e = 0.2615 lies between the table's 0.22 and 0.26
+    e, X, Y = cat.deep_groove_factors(740.0, 15.2e3)
+    assert 0.22 < e < 0.26 and X == 0.56
 
 
 # ------------------------------------------------------------------------ closed forms
@@ -141,6 +198,19 @@ def test_every_check_passes_after_the_design(peaked):
     _, d = peaked
     assert all(c.passed for sh in d.shaft_designs for c in sh.checks)
     assert not [w for w in d.warnings if w.code == "strength"]
+
+
+def test_application_factor_is_not_applied_to_the_peak(peaked):
+    """K_A scales a nominal torque for the driven machine's load variations; the stages after
+    the flywheel are designed for the cycle's own peak (6 × the mean here), which contains
+    them, so K_A = 1 there (ISO 6336-1: K_A = 1 when the actual load cycle is used). Helical:
+    K = K_A K_V K_α K_β = 1 × 1.1 × 1.2 × 1.1 = 1.452, the torque T1 = 6 × the shaft's mean."""
+    p, d = peaked
+    assert p.drive.KA == pytest.approx(1.25)          # the brief's load class
+    for k in (1, 2):
+        g = d.stages[k].design
+        assert g.K == pytest.approx(1.0 * 1.1 * 1.2 * 1.1)
+        assert g.T1 == pytest.approx(6.0 * d.shafts[k].torque)
 
 
 def test_journal_is_the_smallest_that_passes(peaked):

@@ -469,8 +469,9 @@ def test_key_selection_and_crushing():
     c = s.key_check(120.0, 35 * mm, k.h, l, lo)
     assert c.value / MPa == pytest.approx(42.857, abs=1e-3) and c.passed
     assert not s.key_check(500.0, 35 * mm, k.h, l, lo).passed          # 178.6 MPa
-    with pytest.raises(ValueError):
-        cat.key_for_shaft(150 * mm)
+    with pytest.raises(ValueError):                # the table ends at 200 mm (was 130 mm before
+        cat.key_for_shaft(250 * mm)                # i20 added the GB/T 1096 rows 130–200 mm)
+    assert cat.key_for_shaft(150 * mm).label == "36×20"
     with pytest.raises(KeyError, match="light_shock"):
         cat.key_allowable_stress("steel", "heavy")
 

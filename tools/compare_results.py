@@ -113,10 +113,12 @@ for _machine in ("drive", "furnace_pusher"):
         ("drive.stages.*.design.checks.__len__", _GEO),
         ("verification.checks.*.detail.checks", _GEO + " (checks per group)"),
         ("verification.checks.*.detail.check_zh", _GEO + " (the check with the smallest margin)"),
-        ("verification.checks.*.detail.check_en", _GEO + " (the check with the smallest margin)"),
-        # the margins follow the eight fixed drive self-checks (indices 8 on)
-        ("verification.checks.[89].value", _GEO + " (the smallest margin of a stage)"),
-        ("verification.checks.1[0-9].value", _GEO + " (the smallest margin of a stage)")])
+        ("verification.checks.*.detail.check_en", _GEO + " (the check with the smallest margin)")])
+# the one stage margin that moved: furnace_drive's open spur stage (verification check 9,
+# after the drive's fixed self-checks), whose smallest margin is now its pinion's undercut
+# check, z1 = 20 against z_min = 2h_a*/sin²α = 17.1 (0.905 → 1 − 17.1/20 = 0.145); the furnace
+# pusher's margins did not move
+EXPECTED["drive"].append(("verification.checks.9.value", _GEO + " (the smallest margin of a stage)"))
 
 _EXACT_QUALITY = "γ_min / α_max of each group now refined between the samples (Brent), the working stroke's ends included"
 _EXACT_WORK += [("*quality.*.extreme", _EXACT_QUALITY), ("*quality.*.extreme_phase", _EXACT_QUALITY),

@@ -14,7 +14,7 @@ from bisect import bisect_right
 from dataclasses import dataclass
 
 from .fields import q
-from .strength import Check, _check
+from .strength import Check, check
 
 
 class BeltDesignError(ValueError):
@@ -204,14 +204,14 @@ def _design(tables, P, n1_rpm, KA, d1, d2, slip, section: str, given: bool, a0, 
     F0 = initial_tension(P_ca, Ka, z, v, qm)
     Fp = shaft_load(z, F0, alpha1)
     checks = (
-        _check("belt_d_min", "小带轮基准直径", "Small datum diameter", "d_{d1}", d1, d_min, "mm", "ge"),
-        _check("belt_speed_min", "带速下限", "Belt speed (lower limit)", "v", v, lim["v_min_m_s"], "m/s",
+        check("belt_d_min", "小带轮基准直径", "Small datum diameter", "d_{d1}", d1, d_min, "mm", "ge"),
+        check("belt_speed_min", "带速下限", "Belt speed (lower limit)", "v", v, lim["v_min_m_s"], "m/s",
                "ge", d1=d1, n_rpm=n1_rpm),
-        _check("belt_speed_max", "带速上限", "Belt speed (upper limit)", "v", v, lim["v_max_m_s"], "m/s",
+        check("belt_speed_max", "带速上限", "Belt speed (upper limit)", "v", v, lim["v_max_m_s"], "m/s",
                "le", d1=d1, n_rpm=n1_rpm),
-        _check("belt_wrap", "小带轮包角", "Wrap angle of the small pulley", "\\alpha_1", alpha1,
+        check("belt_wrap", "小带轮包角", "Wrap angle of the small pulley", "\\alpha_1", alpha1,
                math.radians(lim["alpha1_min_deg"]), "°", "ge", d1=d1, d2=d2, a=a),
-        _check("belt_count", "V 带根数", "Number of belts", "z", z, lim["belts_max"], "1", "le",
+        check("belt_count", "V 带根数", "Number of belts", "z", z, lim["belts_max"], "1", "le",
                z_exact=z_exact),
     )
     return VBeltDesign(section, given, chart, KA, P, P_ca, n1_rpm, d1, d2, d_min, slip, v, a0, lo, hi, L_d0,

@@ -11,7 +11,7 @@ import math
 from dataclasses import dataclass
 
 from .fields import q
-from .strength import Check, _check
+from .strength import Check, check
 
 INCH = 0.0254
 
@@ -130,17 +130,17 @@ def design_chain(tables, P: float, n1_rpm: float, KA: float, z1: int, z2: int, c
     kq = lim["FQ_factor_shock"] if shocks else lim["FQ_factor"]
     FQ = kq * Fe
     checks = [
-        _check("chain_z1", "小链轮齿数", "Teeth of the small sprocket", "z_1", z1, lim["z1_min"], "1", "ge"),
-        _check("chain_z2", "大链轮齿数", "Teeth of the large sprocket", "z_2", z2, lim["z2_max"], "1", "le"),
-        _check("chain_power", "链条额定功率", "Rated power of the chain", "P_{ca}", P_ca, rated[chain], "kW",
+        check("chain_z1", "小链轮齿数", "Teeth of the small sprocket", "z_1", z1, lim["z1_min"], "1", "ge"),
+        check("chain_z2", "大链轮齿数", "Teeth of the large sprocket", "z_2", z2, lim["z2_max"], "1", "le"),
+        check("chain_power", "链条额定功率", "Rated power of the chain", "P_{ca}", P_ca, rated[chain], "kW",
                "le", Kz=Kz, Kp=Kp, KA=KA),
-        _check("chain_speed", "链速", "Chain speed", "v", v, lim["v_max_m_s"], "m/s", "le"),
+        check("chain_speed", "链速", "Chain speed", "v", v, lim["v_max_m_s"], "m/s", "le"),
     ]
     S = None
     if v < lim["v_static_m_s"]:
         F1 = Fe + c["q_kg_per_m"] * v ** 2
         S = c["Q_kN"] * 1e3 * rows / (KA * F1)
-        checks.append(_check("chain_static", "链条静强度安全系数", "Static safety of the chain", "S", S,
+        checks.append(check("chain_static", "链条静强度安全系数", "Static safety of the chain", "S", S,
                              lim["S_min"], "1", "ge", F1=F1))
     return ChainDesign(chain, given, rows, p, z1, z2, KA, Kz, Kp, P, P_ca, rated[chain], n1_rpm, a0, L_p0, L_p,
                        a, v, sprocket_diameter(p, z1), sprocket_diameter(p, z2), Fe, kq, FQ, S, tuple(checks))

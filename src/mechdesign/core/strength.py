@@ -69,7 +69,9 @@ class Check:
         return self.value / self.allowable if self.sense == "le" else self.allowable / self.value
 
 
-def _check(key, name_zh, name_en, symbol, value, allowable, unit, sense: Sense = "le", **inputs) -> Check:
+def check(key, name_zh, name_en, symbol, value, allowable, unit, sense: Sense = "le", **inputs) -> Check:
+    """A :class:`Check` whose verdict is derived from ``value``, ``allowable`` and ``sense``
+    (never written by hand); ``inputs`` are the factors the formula used (SI)."""
     if allowable is None:
         raise TypeError(f"{key}: the allowable value is required")
     value, allowable = float(value), float(allowable)
@@ -194,7 +196,7 @@ def gear_contact_check(T1, K, b, d1, u, ZE, ZH, Zeps, Zbeta=1.0, allowable=None)
     """Tooth-flank contact fatigue check σ_H ≤ [σ_H] (see :func:`gear_contact_stress`);
     ``allowable`` [σ_H] in Pa (the smaller of the pair's)."""
     s = gear_contact_stress(T1, K, b, d1, u, ZE, ZH, Zeps, Zbeta)
-    return _check("gear_contact", "齿面接触疲劳强度", "Tooth-flank contact fatigue", r"\sigma_H", s, allowable,
+    return check("gear_contact", "齿面接触疲劳强度", "Tooth-flank contact fatigue", r"\sigma_H", s, allowable,
                   "MPa", T1=T1, K=K, b=b, d1=d1, u=u, ZE=ZE, ZH=ZH, Zeps=Zeps, Zbeta=Zbeta)
 
 
@@ -203,7 +205,7 @@ def gear_bending_check(T1, K, b, d1, m, YFa, YSa, Yeps, Ybeta=1.0, allowable=Non
     (T1 N·m on the gear whose d1 is given; b, d1, m in m, m the normal module for helical
     gears; Pa). With b = φ_d d1 and d1 = m z1 it is the textbook's 2KT1YFaYSaYε/(φd m³ z1²)."""
     s = 2 * K * T1 * YFa * YSa * Yeps * Ybeta / (b * d1 * m)
-    return _check("gear_bending", "齿根弯曲疲劳强度", "Tooth-root bending fatigue", r"\sigma_F", s, allowable,
+    return check("gear_bending", "齿根弯曲疲劳强度", "Tooth-root bending fatigue", r"\sigma_F", s, allowable,
                   "MPa", T1=T1, K=K, b=b, d1=d1, m=m, YFa=YFa, YSa=YSa, Yeps=Yeps, Ybeta=Ybeta)
 
 
@@ -273,7 +275,7 @@ def worm_contact_check(T2, K, a, ZE, Zrho, allowable=None) -> Check:
     """Wheel contact check σ_H = Z_E Z_ρ sqrt(K T2 / a³) ≤ [σ_H] (T2 N·m, a m, Z_E √Pa; Pa).
     Steel worm on bronze/cast-iron wheel: Z_E = 160 √MPa."""
     s = ZE * Zrho * math.sqrt(K * T2 / a ** 3)
-    return _check("worm_contact", "蜗轮齿面接触疲劳强度", "Worm-wheel contact fatigue", r"\sigma_H", s, allowable,
+    return check("worm_contact", "蜗轮齿面接触疲劳强度", "Worm-wheel contact fatigue", r"\sigma_H", s, allowable,
                   "MPa", T2=T2, K=K, a=a, ZE=ZE, Zrho=Zrho)
 
 
@@ -292,7 +294,7 @@ def worm_bending_check(T2, K, d1, d2, m, YFa2, gamma, allowable=None) -> Check:
     (T2 N·m; d1, d2, m in m; Pa). Y_Fa2 from the chart against z_v2 = z2/cos³γ and x2."""
     yb = worm_helix_factor(gamma)
     s = 1.53 * K * T2 * YFa2 * yb / (d1 * d2 * m)
-    return _check("worm_bending", "蜗轮齿根弯曲疲劳强度", "Worm-wheel bending fatigue", r"\sigma_F", s, allowable,
+    return check("worm_bending", "蜗轮齿根弯曲疲劳强度", "Worm-wheel bending fatigue", r"\sigma_F", s, allowable,
                   "MPa", T2=T2, K=K, d1=d1, d2=d2, m=m, YFa2=YFa2, Ybeta=yb, gamma=gamma)
 
 
@@ -364,7 +366,7 @@ def worm_thermal(P1, eta, kd, area, t0=20.0, allowable=80.0) -> Check:
     """Thermal-balance check: oil temperature t (see :func:`worm_oil_temperature`) ≤ [t]
     (°C; textbook 60–70 °C usual, 80 °C at most)."""
     t = worm_oil_temperature(P1, eta, kd, area, t0)
-    return _check("worm_thermal", "热平衡油温", "Thermal balance (oil temperature)", "t", t, allowable, "°C",
+    return check("worm_thermal", "热平衡油温", "Thermal balance (oil temperature)", "t", t, allowable, "°C",
                   P1=P1, eta=eta, kd=kd, A=area, t0=t0)
 
 
@@ -382,7 +384,7 @@ def shaft_min_diameter(P_W: float, n_rpm: float, A0: float, keyway_increase: flo
 def shaft_diameter_check(d, P_W, n_rpm, A0, keyway_increase=0.0) -> Check:
     """Check a chosen diameter d (m) against :func:`shaft_min_diameter` (sense "ge", mm)."""
     dmin = shaft_min_diameter(P_W, n_rpm, A0, keyway_increase)
-    return _check("shaft_min_diameter", "轴的最小直径（按扭转估算）", "Minimum shaft diameter (torsion)", "d", d, dmin,
+    return check("shaft_min_diameter", "轴的最小直径（按扭转估算）", "Minimum shaft diameter (torsion)", "d", d, dmin,
                   "mm", "ge", P=P_W, n_rpm=n_rpm, A0=A0, keyway_increase=keyway_increase)
 
 
@@ -471,10 +473,10 @@ def shaft_check(span: float, loads: Iterable, torque: float, d: float, allowable
         sections.append(ShaftSection(float(x), mh, mv, m, t, math.hypot(m, alpha * t)))
     crit = max(sections, key=lambda s: s.Mca)
     s = crit.Mca / (0.1 * d ** 3)
-    check = _check("shaft_bending", "轴的弯扭合成强度", "Shaft bending–torsion strength", r"\sigma_{ca}", s,
-                   allowable_bending, "MPa", M=crit.M, T=crit.T, alpha=alpha, d=d, x=crit.x)
+    verdict = check("shaft_bending", "轴的弯扭合成强度", "Shaft bending–torsion strength", r"\sigma_{ca}", s,
+                    allowable_bending, "MPa", M=crit.M, T=crit.T, alpha=alpha, d=d, x=crit.x)
     return ShaftResult(RAh, RAv, RBh, RBv, math.hypot(RAh, RAv), math.hypot(RBh, RBv),
-                       sum(p.Fa for p in loads), tuple(sections), crit, check)
+                       sum(p.Fa for p in loads), tuple(sections), crit, verdict)
 
 
 def shaft_stepped_check(result: ShaftResult, diameter_at, allowable_bending: float,
@@ -494,10 +496,10 @@ def shaft_stepped_check(result: ShaftResult, diameter_at, allowable_bending: flo
         s = sec.Mca / (0.1 * d ** 3)
         if s > worst_s + 1e-12 * max(abs(worst_s), 1.0):
             worst, worst_d, worst_s = sec, d, s
-    check = _check("shaft_bending", "轴的弯扭合成强度", "Shaft bending–torsion strength", r"\sigma_{ca}",
-                   worst_s, allowable_bending, "MPa", M=worst.M, T=worst.T, alpha=alpha, d=worst_d,
-                   x=worst.x)
-    return check, worst, worst_d
+    verdict = check("shaft_bending", "轴的弯扭合成强度", "Shaft bending–torsion strength", r"\sigma_{ca}",
+                    worst_s, allowable_bending, "MPa", M=worst.M, T=worst.T, alpha=alpha, d=worst_d,
+                    x=worst.x)
+    return verdict, worst, worst_d
 
 
 def standard_diameter(d_min: float, series) -> float:
@@ -525,7 +527,7 @@ def double_key_check(T: float, d: float, h: float, l_working: float, allowable=N
     """Two flat keys at 180°: the load is shared unevenly, the textbook counts 1.5 keys:
     σ_p = 4T/(1.5 d h l) ≤ [σ_p]."""
     s = 4 * T / (1.5 * d * h * l_working)
-    return _check("key_crushing", "平键联接挤压强度（双键）", "Key joint crushing strength (two keys)", r"\sigma_p",
+    return check("key_crushing", "平键联接挤压强度（双键）", "Key joint crushing strength (two keys)", r"\sigma_p",
                   s, allowable, "MPa", T=T, d=d, h=h, l=l_working, keys=2)
 
 
@@ -592,7 +594,7 @@ def required_dynamic_load(P: float, n_rpm: float, hours: float, ball: bool, ft: 
 def bearing_life_check(C, P, n_rpm, required_hours, ball: bool, ft=1.0) -> Check:
     """Life check L10h ≥ L_h' (sense "ge"; value/allowable in s, displayed in h)."""
     life = bearing_life_hours(C, P, n_rpm, ball, ft)
-    return _check("bearing_life", "轴承寿命", "Bearing rating life", r"L_{10h}", life * 3600.0, required_hours * 3600.0,
+    return check("bearing_life", "轴承寿命", "Bearing rating life", r"L_{10h}", life * 3600.0, required_hours * 3600.0,
                   "h", "ge", C=C, P=P, n_rpm=n_rpm, ft=ft, epsilon=3.0 if ball else 10.0 / 3.0)
 
 
@@ -605,7 +607,7 @@ def bearing_static_load(Fr: float, Fa: float, X0: float, Y0: float) -> float:
 def bearing_static_check(C0: float, P0: float, S0: float) -> Check:
     """Static strength of a rolling bearing under the peak load: C0/P0 ≥ S0 (sense "ge";
     S0 of rotating bearings 0.8–1.2 normal, 1.2–2.5 with shocks)."""
-    return _check("bearing_static", "轴承静强度", "Bearing static strength", r"C_0/P_0", C0 / P0, S0, "1", "ge",
+    return check("bearing_static", "轴承静强度", "Bearing static strength", r"C_0/P_0", C0 / P0, S0, "1", "ge",
                   C0=C0, P0=P0)
 
 
@@ -626,6 +628,6 @@ def key_check(T: float, d: float, h: float, l_working: float, allowable=None) ->
     """Crushing check of a flat-key joint σ_p = 2T/(k l d) = 4T/(d h l) ≤ [σ_p], k = h/2
     (T N·m; d, h, l in m; Pa)."""
     s = 4 * T / (d * h * l_working)
-    return _check("key_crushing", "平键联接挤压强度", "Key joint crushing strength", r"\sigma_p", s, allowable,
+    return check("key_crushing", "平键联接挤压强度", "Key joint crushing strength", r"\sigma_p", s, allowable,
                   "MPa", T=T, d=d, h=h, l=l_working)
 

@@ -14,8 +14,9 @@ Assumptions stated in the report:
 - P0 interpolated bilinearly in n1 and d_d1, ΔP0 linearly in n1 (nearest row/column
   outside the tables);
 - tips: s_a ≥ 0.25 m (through-hardened), 0.4 m (surface-hardened, carburised, nitrided);
-  undercut: x ≥ x_min = h_a*(z_min − z)/z_min with the textbook's whole z_min = 17 at α = 20°
-  (2h_a*/sin²α = 17.1 rounded down; helical: z_v);
+  undercut: x ≥ x_min = h_a*(z_min − z)/z_min with z_min = 2h_a*/sin²α = 17.1 at α = 20° (the
+  number of the gear geometry and of the undercut warning, not the textbook's rounded 17;
+  helical: z_v);
   contact ratio ε_α ≥ 1.2;
 - worm shaft: y = √(F_t1² + F_r1²) L³/(48 E I) ≤ [y] = d1/1000 with I = π d_f1⁴/64,
   d_f1 = d1 − 2.4 m, E = 206 GPa, L the span the brief gives for the worm's shaft, else
@@ -28,7 +29,7 @@ from functools import lru_cache
 
 from ..core import belts, chains, gears
 from ..core.drive import PULLEY_DIAMETERS_MM
-from ..core.strength import Check
+from ..core.strength import Check, check
 from ..data import load_yaml
 
 E_STEEL = 206e9          # Pa
@@ -144,25 +145,25 @@ def gear_geometry_checks(design, s) -> tuple[Check, ...]:
         zs = tuple(z / math.cos(g.beta) ** 3 for z in (s.z1, s.z2))
         pair, m = gears.spur_pair(g.mn, zs[0], zs[1]), g.mn
     ha_star = pair.ha_star
-    # the textbook's whole z_min (17 at α = 20°, h_a* = 1) of 2h_a*/sin²α = 17.1
-    z_min = float(math.floor(pair.z_min + 1e-9))
+    # z_min = 2h_a*/sin²α (17.1 at α = 20°, h_a* = 1): the number the gear geometry and the
+    # undercut warning (stages.drive.undercut_findings) use, so check and warning agree
+    z_min = float(pair.z_min)
     out = []
     for k, (gd, mat) in enumerate(((pair.g1, design.materials[0]), (pair.g2, design.materials[1]))):
         who_zh, who_en = ("小齿轮", "Pinion") if k == 0 else ("大齿轮", "Gear")
         factor = 0.4 if _hardened(mat) else 0.25
-        out.append(Check("tooth_tip", f"{who_zh}齿顶厚", f"{who_en} tip thickness",
-                         "s_a", gd.sa, factor * m, "mm", "ge", gd.sa >= factor * m - 1e-12,
-                         {"m": m, "factor": factor, "z": float(gd.z), "x": gd.x}))
+        out.append(check("tooth_tip", f"{who_zh}齿顶厚", f"{who_en} tip thickness",
+                         "s_a", gd.sa, factor * m, "mm", "ge", m=m, factor=factor, z=float(gd.z), x=gd.x))
         # x ≥ x_min = h_a*(z_min − z)/z_min, checked as z ≥ z_min (1 − x/h_a*) (a positive
         # quantity, so the margin 1 − allowable/value is defined)
         x_min = ha_star * (z_min - zs[k]) / z_min
         z_need = z_min * (1 - gd.x / ha_star)
-        out.append(Check("undercut", f"{who_zh}不根切", f"{who_en} free of undercut",
-                         "z", float(zs[k]), z_need, "1", "ge", gd.x >= x_min - 1e-9,
-                         {"x": gd.x, "x_min": x_min, "z_min": z_min, "ha_star": ha_star}))
+        out.append(check("undercut", f"{who_zh}不根切", f"{who_en} free of undercut",
+                         "z", float(zs[k]), z_need, "1", "ge", x=gd.x, x_min=x_min, z_min=z_min,
+                         ha_star=ha_star))
     eps = design.extra["eps_alpha"]
-    out.append(Check("contact_ratio", "重合度", "Contact ratio", "\\varepsilon_\\alpha",
-                     eps, EPS_ALPHA_MIN, "1", "ge", eps >= EPS_ALPHA_MIN, {}))
+    out.append(check("contact_ratio", "重合度", "Contact ratio", "\\varepsilon_\\alpha",
+                     eps, EPS_ALPHA_MIN, "1", "ge"))
     return tuple(out)
 
 
@@ -179,6 +180,6 @@ def worm_deflection_check(design, span: float | None) -> Check:
     inertia = math.pi * df1 ** 4 / 64
     y = math.hypot(f["Ft"], f["Fr"]) * L ** 3 / (48 * E_STEEL * inertia)
     allow = d1 / 1000
-    return Check("worm_deflection", "蜗杆轴刚度（挠度）", "Worm shaft stiffness (deflection)", "y", y, allow, "μm",
-                 "le", y <= allow, {"Ft1": f["Ft"], "Fr1": f["Fr"], "L": L, "E": E_STEEL, "I": inertia,
-                                    "df1": df1, "d1": d1, "span_given": 1.0 if span else 0.0})
+    return check("worm_deflection", "蜗杆轴刚度（挠度）", "Worm shaft stiffness (deflection)", "y", y, allow, "μm",
+                 "le", Ft1=f["Ft"], Fr1=f["Fr"], L=L, E=E_STEEL, I=inertia, df1=df1, d1=d1,
+                 span_given=1.0 if span else 0.0)

@@ -15,7 +15,9 @@ width factors and spans):
   checked at every station with the diameter there; any failure upsizes that section;
 - torques: after the flywheel the machine's peak torque for the strength checks (shaft,
   keys, bearing statics, S0 = 1.5), the cycle's cube-mean torque for the bearing life (a
-  fatigue quantity); before it the motor side's torque (K_A enters the gear stages only);
+  fatigue quantity); before it the motor side's torque; K_A enters the gear stages only, and
+  only before the flywheel: after it the design torque is the cycle's peak, which contains the
+  load variations K_A stands for, so K_A = 1 there (ISO 6336-1 / GB/T 3480);
 - bearings: tapered roller 302xx → 303xx on worm-reducer shafts, deep-groove 62xx → 63xx
   elsewhere, the lightest series whose life reaches the service life at the journal, else
   a larger bore; f_p = 1.2; flat keys form A, steel hubs (cast-iron for pulleys), [σp] of
@@ -251,15 +253,20 @@ def stage_designs(dp, results, shafts, peak_factor, peak_from_shaft) -> tuple[li
     """Designs for every stage; returns (designs by position, new worm efficiencies)."""
     out, worm_eff = [], {}
     for k, (s, r) in enumerate(zip(dp.stages, results)):
-        boost = peak_factor if peak_from_shaft is not None and k >= peak_from_shaft else 1.0
+        after = peak_from_shaft is not None and k >= peak_from_shaft
+        boost = peak_factor if after else 1.0
         T1, T2 = shafts[k].torque * boost, shafts[k + 1].torque * boost
+        # K_A scales a nominal torque for the working machine's load variations; after the
+        # flywheel the design torque is the cycle's own peak, which contains them: K_A = 1
+        # there (ISO 6336-1 / GB/T 3480: K_A = 1 when the known load cycle is used)
+        KA = 1.0 if after else dp.KA
         s = replace(s, z1=r.z1, z2=r.z2)
         if s.type in ("spur", "helical"):
-            d = _gear_stage(s, shafts[k].speed_rpm, T1, T2, dp.service_hours, dp.KA,
+            d = _gear_stage(s, shafts[k].speed_rpm, T1, T2, dp.service_hours, KA,
                             dict(dp.factors))
             out.append(replace(d, checks=d.checks + de.gear_geometry_checks(d, s)))
         elif s.type == "worm":
-            d = _worm_stage(s, shafts[k].speed_rpm, shafts[k].power, T1, T2, dp.service_hours, dp.KA)
+            d = _worm_stage(s, shafts[k].speed_rpm, shafts[k].power, T1, T2, dp.service_hours, KA)
             d = replace(d, checks=d.checks + (de.worm_deflection_check(d, dp.stages[k - 1].span if k else None),))
             if s.efficiency is None:
                 worm_eff[s.index] = d.extra["eta"]
