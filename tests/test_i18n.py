@@ -101,8 +101,6 @@ def chinese_literals(path: Path) -> list[tuple[int, str]]:
 #: list only shrinks. A module that needs Chinese characters that are not prose (a regular
 #: expression of CJK punctuation, say) goes into NOT_PROSE with the reason.
 NOT_YET_CONVERTED = {
-    "batch.py",
-    "cli.py",
     "core/belts.py",
     "core/cam.py",
     "core/chains.py",
@@ -149,7 +147,6 @@ NOT_YET_CONVERTED = {
     "machines/slotter/__init__.py",
     "machines/slotter/report.py",
     "machines/slotter/stages.py",
-    "publish.py",
     "render/analysis_sheet.py",
     "render/animation.py",
     "render/cam_figures.py",
@@ -187,12 +184,14 @@ NOT_YET_CONVERTED = {
     "stages/guide_bar.py",
     "stages/linkage.py",
     "stages/polygons.py",
-    "watch.py",
 }
 
 
 #: module → why its Chinese literals are not words to translate
-NOT_PROSE: dict[str, str] = {}
+NOT_PROSE: dict[str, str] = {
+    "cli.py": "the English --help texts gloss two course terms in Chinese (机械原理课程设计, "
+              "分组), as the brief's field descriptions do; its messages are in the catalogue",
+}
 
 
 def _modules():
