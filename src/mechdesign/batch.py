@@ -22,6 +22,7 @@ from pathlib import Path
 from typing import Callable, Iterable
 
 from .fileio import write_text
+from .i18n import tr
 from .runner import EXIT_FAILED, EXIT_INVALID, EXIT_OK, Outcome, run_one, safe_label
 
 BRIEF_SUFFIXES = (".yaml", ".yml")
@@ -404,22 +405,21 @@ def _student_cell(run: dict) -> str:
 
 def index_markdown(doc: dict, lang: str = "zh") -> str:
     """index.md: a table of every run (status, brief, group, key results, links)."""
-    zh = lang == "zh"
+    _ = tr(lang)
     t = doc["totals"]
-    head = ("# 批量计算索引 Batch index\n\n"
-            f"共 {t['runs']} 次计算：成功 {t['ok']}，任务书无效或设计不可行 {t['invalid']}，"
-            f"失败 {t['failed']}。\n\n" if zh else
-            "# Batch index\n\n"
-            f"{t['runs']} runs: {t['ok']} ok, {t['invalid']} invalid brief or infeasible design, "
-            f"{t['failed']} failed.\n\n")
+    head = (_("# Batch index") + "\n\n" +
+            _("{runs} runs: {ok} ok, {invalid} invalid brief or infeasible design, {failed} failed.",
+              runs=t["runs"], ok=t["ok"], invalid=t["invalid"], failed=t["failed"]) + "\n\n")
     if doc.get("shard"):
         i, n = doc["shard"]
-        head += (f"本索引为第 {i}/{n} 分片。\n\n" if zh else f"This index is shard {i} of {n}.\n\n")
-    status_text = ({"ok": "✓ 成功", "invalid": "✗ 无效", "failed": "✗ 失败"} if zh else
-                   {"ok": "✓ ok", "invalid": "✗ invalid", "failed": "✗ failed"})
-    cols = (["状态", "任务书", "分组", "学生（学号）", "机器", "主要结果", "报告", "用时 [s]"] if zh else
-            ["Status", "Brief", "Group", "Student (number)", "Machine", "Key results", "Report",
-             "Time [s]"])
+        head += _("This index is shard {i} of {n}.", i=i, n=n) + "\n\n"
+    status_text = {"ok": _.pgettext("batch status", "✓ ok"),
+                   "invalid": _.pgettext("batch status", "✗ invalid"),
+                   "failed": _.pgettext("batch status", "✗ failed")}
+    cols = [_.pgettext("batch column", "Status"), _.pgettext("batch column", "Brief"),
+            _.pgettext("batch column", "Group"), _.pgettext("batch column", "Student (number)"),
+            _.pgettext("batch column", "Machine"), _.pgettext("batch column", "Key results"),
+            _.pgettext("batch column", "Report"), _.pgettext("batch column", "Time [s]")]
     lines = ["| " + " | ".join(cols) + " |", "|" + "|".join([":--"] * 7 + ["--:"]) + "|"]
     problems = []
     for run in doc["runs"]:
@@ -437,7 +437,7 @@ def index_markdown(doc: dict, lang: str = "zh") -> str:
             problems.append(f"### {_cell(run['id'])}\n\n```\n{run['message'].replace('```', '`​``')}\n```\n")
     body = head + "\n".join(lines) + "\n"
     if problems:
-        body += ("\n## 问题 Problems\n\n" if zh else "\n## Problems\n\n") + "\n".join(problems)
+        body += "\n" + _("## Problems") + "\n\n" + "\n".join(problems)
     return body
 
 
@@ -479,14 +479,14 @@ def answers_document(index: dict) -> dict:
 
 def answers_markdown(doc: dict, lang: str = "zh") -> str:
     """answers.md: the answer table (Markdown)."""
-    zh = lang == "zh"
-    head = ["分组", "姓名", "学号", "班级", "任务书", "状态"] if zh else \
-        ["Group", "Name", "Number", "Class", "Brief", "Status"]
-    status_text = ({"ok": "✓", "invalid": "✗ 无效", "failed": "✗ 失败"} if zh else
-                   {"ok": "✓", "invalid": "✗ invalid", "failed": "✗ failed"})
-    lines = ["# 答案表 Answer table\n" if zh else "# Answer table\n",
-             ("每个分组的主要结果（与学生的计算对照）。\n" if zh else
-              "The headline results of every group, to check the students' work against.\n"),
+    _ = tr(lang)
+    head = [_.pgettext("batch column", "Group"), _.pgettext("batch column", "Name"),
+            _.pgettext("batch column", "Number"), _.pgettext("batch column", "Class"),
+            _.pgettext("batch column", "Brief"), _.pgettext("batch column", "Status")]
+    status_text = {"ok": "✓", "invalid": _.pgettext("batch status", "✗ invalid"),
+                   "failed": _.pgettext("batch status", "✗ failed")}
+    lines = [_("# Answer table") + "\n",
+             _("The headline results of every group, to check the students' work against.") + "\n",
              "| " + " | ".join(head + [_cell(c) for c in doc["columns"]]) + " |",
              "|" + "|".join([":--"] * len(head) + ["--:"] * len(doc["columns"])) + "|"]
     for row in doc["rows"]:
@@ -508,9 +508,10 @@ def write_answers(doc: dict, out_root: Path, lang: str = "zh", stem: str = "answ
 
     md = write_text(out_root / f"{stem}.md", answers_markdown(doc, lang), encoding="utf-8")
     path = out_root / f"{stem}.csv"
-    zh = lang == "zh"
-    head = ["分组", "姓名", "学号", "班级", "任务书", "状态"] if zh else \
-        ["group", "name", "number", "class", "brief", "status"]
+    _ = tr(lang)
+    head = [_.pgettext("answers csv", "group"), _.pgettext("answers csv", "name"),
+            _.pgettext("answers csv", "number"), _.pgettext("answers csv", "class"),
+            _.pgettext("answers csv", "brief"), _.pgettext("answers csv", "status")]
     with atomic_open(path, "w", encoding="utf-8-sig", newline="") as handle:
         writer = csv.writer(handle)
         writer.writerow(head + doc["columns"])

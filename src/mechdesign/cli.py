@@ -23,6 +23,7 @@ import typer
 from typer.core import TyperCommand, TyperGroup
 
 from . import __version__
+from .i18n import N_
 from .registry import Lookup
 
 #: metavar of a flag: nothing (typer would print <bool>)
@@ -155,43 +156,54 @@ def _warn(msg: str) -> None:
 # What `run` says on the terminal, in the report's language (the brief's report.language or
 # --lang): progress, warnings, the closing line, an interruption.
 _SAY = {
-    "zh": {"rendering": "      生成 {what}", "warning": "警告：{text}",
-           "done": "完成，用时 {total:.1f} s（计算 {compute:.2f} s）",
-           "interrupted_after": "\n已中断：新报告此前已完整写入 {path}",
-           "interrupted": "\n已中断：未写入任何文件；输出文件夹中原有的报告保持不变",
-           "nothing": "（未写入任何文件；加 --debug 运行可查看出错位置）"},
-    "en": {"rendering": "      rendering {what}", "warning": "warning: {text}",
-           "done": "done in {total:.1f} s (computation {compute:.2f} s)",
-           "interrupted_after": "\ninterrupted after the report was written: {path} holds the new, "
-                                "complete report",
-           "interrupted": "\ninterrupted: nothing was written; an earlier report in the output "
-                          "folder is unchanged",
-           "nothing": "(nothing was written; run with --debug for the traceback)"},
+    "rendering": N_("      rendering {what}"), "warning": N_("warning: {text}"),
+    "done": N_("done in {total:.1f} s (computation {compute:.2f} s)"),
+    "interrupted_after": N_("\ninterrupted after the report was written: {path} holds the new, "
+                            "complete report"),
+    "interrupted": N_("\ninterrupted: nothing was written; an earlier report in the output "
+                      "folder is unchanged"),
+    "nothing": N_("(nothing was written; run with --debug for the traceback)"),
 }
-# the rendering steps' names (render/report.py, render/sheets.py) in Chinese
-_STEPS_ZH = {"figures": "插图", "Markdown": "Markdown 正文", "data files (CSV)": "数据文件（CSV）",
-             "figures and sheets: the last ones": "插图与图纸：最后几张",
-             "figures and sheets: all written": "插图与图纸：全部写出",
-             "PDF: Markdown → typst (pandoc, in the background)": "PDF：正文转为排版格式（后台进行）",
-             "PDF: typst → report.pdf": "PDF：排版生成 report.pdf",
-             "Word (pandoc → docx)": "Word 文档（docx）"}
 
 
-_SHEETS_ZH = {"analysis": "机构分析图", "cam": "凸轮设计图", "gear": "齿轮啮合图",
-              "kinematic": "机构运动简图", "cycle": "运动循环图",
-              "transmission": "传动示意图"}
+def _words(lang: str) -> dict[str, str]:
+    """_SAY in ``lang`` (templates: the caller fills in the fields)."""
+    from .i18n import tr
+
+    _ = tr(lang)
+    return {key: _(text) for key, text in _SAY.items()}
 
 
 def _step(what: str, lang: str) -> str:
-    """A rendering step's name in ``lang`` ('sheet 1/3: analysis' → '图纸 1/3：analysis')."""
-    if lang != "zh":
+    """A rendering step's name in ``lang`` ('sheet 1/3: analysis' → '图纸 1/3：机构分析图')."""
+    from .i18n import tr
+
+    _ = tr(lang)
+    if not _.zh:
         return what
     if what.startswith("sheet "):
-        head, _, name = what.partition(": ")
-        return f"图纸 {head[6:]}：{_SHEETS_ZH.get(name, name)}"
+        head, _sep, name = what.partition(": ")
+        sheets = {"analysis": _.pgettext("sheet", "analysis"), "cam": _.pgettext("sheet", "cam"),
+                  "gear": _.pgettext("sheet", "gear"), "kinematic": _.pgettext("sheet", "kinematic"),
+                  "cycle": _.pgettext("sheet", "cycle"),
+                  "transmission": _.pgettext("sheet", "transmission")}
+        return _.pgettext("rendering step", "sheet {n}: {name}", n=head[6:],
+                          name=sheets.get(name, name))
     if what.startswith("figures: "):            # a long figures step: the figure at hand
-        return f"插图：{what[9:]}"
-    return _STEPS_ZH.get(what, what)
+        return _.pgettext("rendering step", "figures: {what}", what=what[9:])
+    # the rendering steps' names (render/report.py, render/sheets.py)
+    steps = {"figures": _.pgettext("rendering step", "figures"),
+             "Markdown": _.pgettext("rendering step", "Markdown"),
+             "data files (CSV)": _.pgettext("rendering step", "data files (CSV)"),
+             "figures and sheets: the last ones":
+                 _.pgettext("rendering step", "figures and sheets: the last ones"),
+             "figures and sheets: all written":
+                 _.pgettext("rendering step", "figures and sheets: all written"),
+             "PDF: Markdown → typst (pandoc, in the background)":
+                 _.pgettext("rendering step", "PDF: Markdown → typst (pandoc, in the background)"),
+             "PDF: typst → report.pdf": _.pgettext("rendering step", "PDF: typst → report.pdf"),
+             "Word (pandoc → docx)": _.pgettext("rendering step", "Word (pandoc → docx)")}
+    return steps.get(what, what)
 
 
 def _title(title: str, lang: str) -> str:
@@ -235,7 +247,7 @@ def _parse_formats(text: str) -> tuple[str, ...]:
 # Options shared by the commands (metavars for people: BRIEF, DIR, N, i/n, LANG, FORMATS).
 def _lang_option(help_text: str):
     return typer.Option(None, "--lang", metavar="LANG", case_sensitive=False,
-                        help=f"{help_text} zh or en (any case).")
+                        help=f"{help_text} zh, en or zh_TW (any case).")
 
 
 def _format_option(default: str = "md,pdf", extra: str = ""):
@@ -291,7 +303,7 @@ def run(
     from .runner import brief_language
 
     language = brief_language(brief, lang.value if lang else None)
-    words = _SAY[language]
+    words = _words(language)
 
     from .publish import journal_mark, published_since
 

@@ -56,16 +56,21 @@ class ForeignFiles(Exception):
     def __init__(self, out_dir: Path, paths: list[str]):
         self.out_dir, self.paths = Path(out_dir), paths
         shown = ", ".join(paths[:5]) + (f" (and {len(paths) - 5} more)" if len(paths) > 5 else "")
-        self.en = (f"{out_dir}: {shown} already exist{'s' if len(paths) == 1 else ''} there and "
-                   f"{'was' if len(paths) == 1 else 'were'} not written by mechdesign (not in "
-                   f"{MANIFEST}); nothing was changed: choose another --out folder, or move "
-                   "those files away")
-        self.zh = (f"{out_dir}：其中已有 {shown}，且不是 mechdesign 写出的（不在 {MANIFEST} 中）；"
-                   "未作任何改动：请用 --out 另选输出文件夹，或先移走这些文件")
+        self._fields = dict(out_dir=out_dir, shown=shown, manifest=MANIFEST)
+        self.en = self.text("en")
         super().__init__(self.en)
 
     def text(self, lang: str) -> str:
-        return self.zh if lang == "zh" else self.en
+        from .i18n import tr
+
+        _ = tr(lang)
+        if len(self.paths) == 1:
+            return _("{out_dir}: {shown} already exists there and was not written by mechdesign "
+                     "(not in {manifest}); nothing was changed: choose another --out folder, or "
+                     "move those files away", **self._fields)
+        return _("{out_dir}: {shown} already exist there and were not written by mechdesign (not "
+                 "in {manifest}); nothing was changed: choose another --out folder, or move those "
+                 "files away", **self._fields)
 
 
 class InterruptedAfterPublish(KeyboardInterrupt):

@@ -23,28 +23,27 @@ import time
 from pathlib import Path
 from typing import Callable
 
+from .i18n import N_, tr
+
 POLL_SECONDS = 0.2
 
 _SAY = {
-    "zh": {"watching": "监视 {files}（保存即重新计算；Ctrl-C 结束）",
-           "changed": "{name} 已修改，重新计算 …",
-           "done": "报告已更新，用时 {seconds:.1f} s",
-           "same": "主要结果未变",
-           "first": "主要结果：",
-           "changes": "主要结果的变化：",
-           "failed": "未更新报告（原有报告保持不变）；修改后保存即重试",
-           "missing": "{name} 不存在，等待它出现 …",
-           "end": "监视结束"},
-    "en": {"watching": "watching {files} (save to re-run; Ctrl-C ends)",
-           "changed": "{name} changed, re-running …",
-           "done": "report updated in {seconds:.1f} s",
-           "same": "no headline result changed",
-           "first": "headline results:",
-           "changes": "headline results changed:",
-           "failed": "report not updated (the previous one is unchanged); save a fix to retry",
-           "missing": "{name} is missing; waiting for it …",
-           "end": "watch ended"},
+    "watching": N_("watching {files} (save to re-run; Ctrl-C ends)"),
+    "changed": N_("{name} changed, re-running …"),
+    "done": N_("report updated in {seconds:.1f} s"),
+    "same": N_("no headline result changed"),
+    "first": N_("headline results:"),
+    "changes": N_("headline results changed:"),
+    "failed": N_("report not updated (the previous one is unchanged); save a fix to retry"),
+    "missing": N_("{name} is missing; waiting for it …"),
+    "end": N_("watch ended"),
 }
+
+
+def _words(lang: str) -> dict[str, str]:
+    """_SAY in ``lang`` (templates: the caller fills in the fields)."""
+    _ = tr(lang)
+    return {key: _(text) for key, text in _SAY.items()}
 
 
 def watched_files(brief: Path, templates: Path | None) -> list[Path]:
@@ -164,7 +163,7 @@ def watch_brief(brief: Path, *, out: Path | None = None, group: str | None = Non
     runs = 0
     summary: dict[str, str] | None = None
     language = brief_language(brief, lang)
-    words = _SAY[language]
+    words = _words(language)
     try:
         _preload(brief, group)
         files = watched_files(brief, templates)
@@ -179,7 +178,7 @@ def watch_brief(brief: Path, *, out: Path | None = None, group: str | None = Non
                 if reason is not None:
                     term.line(words["changed"].format(name=reason.name))
                 language = brief_language(brief, lang)
-                words = _SAY[language]
+                words = _words(language)
                 start = time.perf_counter()
                 outcome = _run_in_child(kwargs) if _can_fork() else run_one(**kwargs)
                 runs += 1

@@ -13,7 +13,8 @@ from typing import Annotated, Literal, Optional, Union
 from ..lazy import np
 from pydantic import Field, model_validator
 
-from .common import MISSING, Problems, Shown, StrictModel
+from .common import MISSING, Msg, Problems, Shown, StrictModel
+from ..i18n import N_
 
 LawName = Literal["constant_velocity", "parabolic", "harmonic", "cycloidal", "poly345",
                   "poly4567", "modified_trapezoid", "modified_sine"]
@@ -37,15 +38,19 @@ class CamSegment(StrictModel):
         out = Problems(self)
         laws = ", ".join(LawName.__args__)
         if self.motion == "dwell" and self.law is not None:
-            out.add("law", self.law, "a dwell has no motion law: remove `law` (or make the segment "
-                    "a rise or a return)", "休止段没有运动规律：请删去 `law`（或将该段改为推程或回程）")
+            out.add("law", self.law, N_("a dwell has no motion law: remove `law` (or make the "
+                                        "segment a rise or a return)"))
         for name in ("lift_mm", "lift_deg"):
             if self.motion == "dwell" and getattr(self, name) is not None:
-                out.add(name, getattr(self, name), f"a dwell has no lift: remove `{name}`",
-                        f"休止段没有升程：请删去 `{name}`")
+                out.add(name, getattr(self, name), N_("a dwell has no lift: remove `{name}`"),
+                                                   name=name)
         if self.motion != "dwell" and self.law is None:
-            out.add("law", MISSING, f"a {self.motion} needs `law` (its motion law): one of {laws}",
-                    f"{'推程' if self.motion == 'rise' else '回程'}须给出运动规律 law，可选：{laws}")
+            if self.motion == "rise":
+                out.add("law", MISSING, N_("a rise needs `law` (its motion law): one of {laws}"),
+                        laws=laws)
+            else:
+                out.add("law", MISSING, N_("a {motion} needs `law` (its motion law): one of {laws}"),
+                        motion=self.motion, laws=laws)
         out.raise_any()
         return self
 
@@ -54,13 +59,13 @@ def _check_roller(out: Problems, contact: str, roller_radius_mm: float) -> None:
     """A roller follower has a roller (r_r > 0); a knife-edge or flat-faced one has none."""
     if contact == "roller" and not roller_radius_mm > 0:
         out.add("roller_radius_mm", roller_radius_mm if roller_radius_mm else MISSING,
-                "a roller follower needs roller_radius_mm > 0 (or choose contact: knife)",
-                "滚子从动件须给出 roller_radius_mm > 0（或改为 contact: knife 尖顶）")
+                N_("a roller follower needs roller_radius_mm > 0 (or choose contact: knife)"))
     if contact != "roller" and roller_radius_mm:
-        name_zh = "尖顶" if contact == "knife" else "平底"
+        name = Msg.pgettext("follower contact", "knife") if contact == "knife" else \
+            Msg.pgettext("follower contact", "flat-faced")
         out.add("roller_radius_mm", roller_radius_mm,
-                f"a {contact} follower has no roller: remove roller_radius_mm (or choose contact: roller)",
-                f"{name_zh}从动件没有滚子：请删去 roller_radius_mm（或改为 contact: roller）")
+                N_("a {contact} follower has no roller: remove roller_radius_mm (or choose "
+                   "contact: roller)"), contact=contact, name=name)
 
 
 class CamFollower(StrictModel):
@@ -92,37 +97,33 @@ class CamFollower(StrictModel):
         _check_roller(out, self.contact, self.roller_radius_mm)
         if self.offset_mm != "auto" and self.offset_mm < 0:
             out.add("offset_mm", self.offset_mm,
-                    f"offset_mm must be ≥ 0 (a distance): write {-self.offset_mm:g} and give the side "
-                    f"in offset_side (now {self.offset_side})",
-                    f"偏距是距离，须 ≥ 0：请写 {-self.offset_mm:g}，并用 offset_side 给出偏置方向"
-                    f"（现为 {self.offset_side}）")
+                    N_("offset_mm must be ≥ 0 (a distance): write {v1:g} and give the side in "
+                       "offset_side (now {offset_side})"),
+                    v1=-self.offset_mm, offset_side=self.offset_side)
         oscillating_only = ("max_swing_deg", "arm_length_mm", "pivot_distance_mm")
         if self.motion == "translating":
             if self.stroke_h_mm is None:
-                out.add("stroke_h_mm", MISSING, "a translating follower needs stroke_h_mm, its stroke h [mm]",
-                        "直动从动件须给出行程 h [mm]（stroke_h_mm）")
+                out.add("stroke_h_mm", MISSING, N_("a translating follower needs stroke_h_mm, its "
+                                                   "stroke h [mm]"))
             for name in oscillating_only:
                 if getattr(self, name) is not None:
                     out.add(name, getattr(self, name),
-                            f"{name} belongs to an oscillating follower: remove it (or set "
-                            "motion: oscillating)",
-                            f"{name} 属于摆动从动件：请删去（或改为 motion: oscillating）")
+                            N_("{name} belongs to an oscillating follower: remove it (or set "
+                               "motion: oscillating)"), name=name)
         else:
             needed = ["max_swing_deg", "pivot_distance_mm"] + (
                 ["arm_length_mm"] if self.contact != "flat" else [])
             for name in needed:
                 if getattr(self, name) is None:
-                    out.add(name, MISSING, f"an oscillating follower needs {name}",
-                            f"摆动从动件须给出 {name}")
+                    out.add(name, MISSING, N_("an oscillating follower needs {name}"), name=name)
             if self.stroke_h_mm is not None:
                 out.add("stroke_h_mm", self.stroke_h_mm,
-                        "stroke_h_mm belongs to a translating follower: give the swing as "
-                        "max_swing_deg instead", "stroke_h_mm 属于直动从动件：摆动从动件请用 max_swing_deg 给出摆角")
+                        N_("stroke_h_mm belongs to a translating follower: give the swing as "
+                           "max_swing_deg instead"))
             if self.offset_mm not in (0.0, 0):
                 out.add("offset_mm", self.offset_mm,
-                        "offset_mm belongs to a translating follower: remove it (an oscillating "
-                        "follower is placed by pivot_distance_mm)",
-                        "offset_mm 属于直动从动件：请删去（摆动从动件的位置由 pivot_distance_mm 确定）")
+                        N_("offset_mm belongs to a translating follower: remove it (an "
+                           "oscillating follower is placed by pivot_distance_mm)"))
         out.raise_any()
         return self
 
@@ -160,30 +161,30 @@ class CamSection(StrictModel):
         out = Problems(self)
         if self.base_radius_mm != "auto" and not self.base_radius_mm > 0:
             out.add("base_radius_mm", self.base_radius_mm,
-                    "base_radius_mm must be > 0, or 'auto' to design the smallest one",
-                    "基圆半径须 > 0 mm，或写 'auto' 由程序设计最小基圆")
+                    N_("base_radius_mm must be > 0, or 'auto' to design the smallest one"))
         total = sum(s.angle_deg for s in self.programme)
         if abs(total - 360.0) > 1e-6:
             last = self.programme[-1].angle_deg
             fix = last + 360.0 - total
-            hint = (f"e.g. make the last segment {fix:g}° instead of {last:g}°" if fix > 0 else
-                    f"shorten the segments by {total - 360.0:g}° in all")
-            hint_zh = (f"例如将最后一段由 {last:g}° 改为 {fix:g}°" if fix > 0 else
-                       f"各段共须缩短 {total - 360.0:g}°")
+            hint = (Msg(N_("e.g. make the last segment {fix:g}° instead of {last:g}°"), fix=fix, last=last)
+                    if fix > 0 else
+                    Msg(N_("shorten the segments by {excess:g}° in all"), excess=total - 360.0))
             out.add(("programme", len(self.programme) - 1, "angle_deg"), last,
-                    f"the programme's angles add up to {total:g}°; they must cover 360°: {hint}",
-                    f"运动规律各段转角之和为 {total:g}°，须为 360°：{hint_zh}")
+                    N_("the programme's angles add up to {total:g}°; they must cover 360°: {hint}"),
+                    total=total, hint=hint)
         osc = self.follower.motion == "oscillating"
         unit, wrong = ("lift_deg", "lift_mm") if osc else ("lift_mm", "lift_deg")
-        kind, kind_zh = ("an oscillating", "摆动") if osc else ("a translating", "直动")
+        kind = "an oscillating" if osc else "a translating"
+        kind_name = Msg.pgettext("follower motion", "oscillating") if osc else \
+            Msg.pgettext("follower motion", "translating")
         stroke_name = "follower.max_swing_deg" if osc else "follower.stroke_h_mm"
         stroke = self.follower.max_swing_deg if osc else self.follower.stroke_h_mm
         level, closes = 0.0, stroke is not None
         for i, seg in enumerate(self.programme):
             if getattr(seg, wrong) is not None:
                 out.add(("programme", i, wrong), getattr(seg, wrong),
-                        f"{kind} follower's lift is given as {unit}, not {wrong}",
-                        f"{kind_zh}从动件的升程用 {unit} 给出，不是 {wrong}")
+                        N_("{kind} follower's lift is given as {unit}, not {wrong}"),
+                        kind=kind, unit=unit, wrong=wrong, kind_name=kind_name)
                 closes = False
             if stroke is None or not closes:
                 continue
@@ -195,27 +196,27 @@ class CamSection(StrictModel):
                 level -= level if lift is None else lift
             room = stroke - before if seg.motion == "rise" else before
             if room <= 1e-9 * stroke and (level > stroke * (1 + 1e-9) or level < -1e-9 * stroke):
-                where = "its stroke" if seg.motion == "rise" else "its lowest position"
-                where_zh = "行程终点" if seg.motion == "rise" else "最低位置"
-                out.add(("programme", i, "motion"), seg.motion,
-                        f"the follower is already at {where} here: make this segment a dwell or a "
-                        f"{'return' if seg.motion == 'rise' else 'rise'}",
-                        f"从动件此时已在{where_zh}：请将本段改为休止段或"
-                        f"{'回程' if seg.motion == 'rise' else '推程'}")
+                if seg.motion == "rise":
+                    out.add(("programme", i, "motion"), seg.motion,
+                            N_("the follower is already at its stroke here: make this segment a "
+                               "dwell or a return"))
+                else:
+                    out.add(("programme", i, "motion"), seg.motion,
+                            N_("the follower is already at its lowest position here: make this "
+                               "segment a dwell or a rise"))
                 closes = False
             elif level > stroke * (1 + 1e-9):
                 field = ("programme", i, unit if lift is not None else "motion")
                 out.add(field, lift if lift is not None else seg.motion,
-                        f"the follower would reach {level:g}, above its stroke {stroke:g} "
-                        f"({stroke_name}): this rise may lift at most {room:g} (give {unit})",
-                        f"从动件将到达 {level:g}，超过其行程 {stroke:g}（{stroke_name}）：本段推程的升程"
-                        f"至多为 {room:g}（用 {unit} 给出）")
+                        N_("the follower would reach {level:g}, above its stroke {stroke:g} "
+                           "({stroke_name}): this rise may lift at most {room:g} (give {unit})"),
+                        level=level, stroke=stroke, stroke_name=stroke_name, room=room, unit=unit)
                 closes = False
             elif level < -1e-9 * stroke:
                 out.add(("programme", i, unit), lift,
-                        f"the follower would reach {level:g}, below its lowest position 0: this "
-                        f"return's {unit} may be at most {room:g}",
-                        f"从动件将到达 {level:g}，低于最低位置 0：本段回程的 {unit} 至多为 {room:g}")
+                        N_("the follower would reach {level:g}, below its lowest position 0: this "
+                           "return's {unit} may be at most {room:g}"),
+                        level=level, unit=unit, room=room)
                 closes = False
         if closes and abs(level) > 1e-9 * stroke:
             returns = [i for i, s in enumerate(self.programme) if s.motion == "return"]
@@ -223,19 +224,17 @@ class CamSection(StrictModel):
             if lift is not None and returns[-1] > max(i for i, s in enumerate(self.programme)
                                                        if s.motion == "rise"):
                 out.add(("programme", returns[-1], unit), lift,
-                        f"the programme ends at {level:g} instead of 0: the returns must undo the "
-                        f"rises; make this {unit} {lift + level:g} (or leave it out: back to 0)",
-                        f"运动规律结束于 {level:g} 而不是 0：回程须抵消推程；请将本段 {unit} 改为 "
-                        f"{lift + level:g}（或删去：回到 0）")
+                        N_("the programme ends at {level:g} instead of 0: the returns must undo "
+                           "the rises; make this {unit} {v1:g} (or leave it out: back to 0)"),
+                        level=level, unit=unit, v1=lift + level)
             else:
                 n = len(self.programme) - 1
                 out.add(("programme", n, "motion"), self.programme[n].motion,
-                        f"the programme ends at {level:g} instead of 0: the follower must come "
-                        "back; add a return after the last rise",
-                        f"运动规律结束于 {level:g} 而不是 0：从动件须回到起点；请在最后一段推程之后增加回程段")
+                        N_("the programme ends at {level:g} instead of 0: the follower must come "
+                           "back; add a return after the last rise"), level=level)
         if not any(s.motion == "rise" for s in self.programme):
             out.add("programme", Shown(", ".join(s.motion for s in self.programme)),
-                    "the programme needs at least one rise", "运动规律至少需要一段推程（rise）")
+                    N_("the programme needs at least one rise"))
         out.raise_any()
         return self
 
@@ -246,15 +245,12 @@ class CamSection(StrictModel):
         if fo.contact == "roller" and r0 != "auto" and not r0 - fo.roller_radius_mm > 0:
             out = Problems(self)
             out.add(("follower", "roller_radius_mm"), fo.roller_radius_mm,
-                    f"the roller radius r_r = {fo.roller_radius_mm:g} mm is not smaller than the "
-                    f"base radius r0 = {r0:g} mm: the actual profile's base radius r0 − r_r = "
-                    f"{r0 - fo.roller_radius_mm:g} mm ≤ 0 and the cam cannot be made; use a roller "
-                    f"below {r0:g} mm (typically r_r ≤ 0.4·r0 = {0.4 * r0:g} mm) or a base radius "
-                    f"above {fo.roller_radius_mm:g} mm",
-                    f"滚子半径 r_r = {fo.roller_radius_mm:g} mm 不小于基圆半径 r0 = {r0:g} mm："
-                    f"实际廓线基圆半径 r0 − r_r = {r0 - fo.roller_radius_mm:g} mm ≤ 0，凸轮无法制造；"
-                    f"滚子半径须小于 {r0:g} mm（一般 r_r ≤ 0.4·r0 = {0.4 * r0:g} mm），"
-                    f"或基圆半径大于 {fo.roller_radius_mm:g} mm")
+                    N_("the roller radius r_r = {roller_radius_mm:g} mm is not smaller than the "
+                       "base radius r0 = {r0:g} mm: the actual profile's base radius r0 − r_r = "
+                       "{v1:g} mm ≤ 0 and the cam cannot be made; use a roller below {r0:g} mm "
+                       "(typically r_r ≤ 0.4·r0 = {v2:g} mm) or a base radius above "
+                       "{roller_radius_mm:g} mm"),
+                    roller_radius_mm=fo.roller_radius_mm, r0=r0, v1=r0 - fo.roller_radius_mm, v2=0.4 * r0)
             out.raise_any()
         return self
 

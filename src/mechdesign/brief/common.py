@@ -13,25 +13,98 @@ from typing import Annotated, Literal, Optional, Union
 
 from pydantic import BaseModel, ConfigDict, Field, field_validator
 
+from ..i18n import N_
+
 
 _FRACTION = re.compile(r"^\s*([-+]?(?:\d+\.?\d*|\.\d+))\s*(?:/\s*(\d+\.?\d*|\.\d+)\s*)?$")
 
 
-def parse_fraction(value, message: str, message_zh: str = "须为数值或分数，如 1/25"):
+def parse_fraction(value, msgid: str, /, **fields):
     """``value`` as a number when it is text such as '1/25' or '0.04' (the course writes
     fluctuation coefficients as fractions); other values unchanged (the field checks them).
-    ``message`` (``message_zh`` in Chinese) is the error raised for text that is no such
-    number. Only plain decimals are read (no exponents), so the text cannot ask for a huge
-    number."""
+    ``msgid`` (with ``fields``) is the error raised for text that is no such number. Only
+    plain decimals are read (no exponents), so the text cannot ask for a huge number."""
     if not isinstance(value, str):
         return value
     match = _FRACTION.match(value) if len(value) <= 40 else None
     if match is None:
-        raise invalid(message, message_zh)
+        raise invalid(msgid, **fields)
     num, den = match.groups()
     if den is not None and Fraction(den) == 0:
-        raise invalid(f"{message}; the denominator is 0", f"{message_zh}；分母为 0")
+        raise invalid(N_("{message}; the denominator is 0"), message=Msg(msgid, **fields))
     return float(Fraction(num) / (Fraction(den) if den is not None else 1))
+
+
+class Msg(str):
+    """A message of the brief's checks: the English text (the string itself) that keeps its
+    catalogue msgid and fields, so that :meth:`text` shows it in any language (fields that
+    are messages themselves are translated too; other fields are shown as they are).
+
+    ``Msg(N_("take H ≥ {h} mm"), h=…)``; ``Msg.pgettext(context, msgid, **fields)`` with a
+    message context."""
+
+    def __new__(cls, msgid: str, /, **fields):
+        self = super().__new__(cls, msgid.format(**fields) if fields else msgid)
+        self.msgid, self.context, self.fields = msgid, None, fields
+        return self
+
+    @classmethod
+    def pgettext(cls, context: str, msgid: str, /, **fields) -> "Msg":
+        self = cls(msgid, **fields)
+        self.context = context
+        return self
+
+    def text(self, lang: str) -> str:
+        """The message in ``lang`` (zh, en or a variant: its catalogue, then the English)."""
+        from ..i18n import base, gettext
+
+        if base(lang) == "en":
+            return str.__str__(self)
+        text = gettext(self.msgid, lang, self.context)
+        if not self.fields:
+            return text
+        return text.format(**{k: v.text(lang) if isinstance(v, Msg) else v
+                              for k, v in self.fields.items()})
+
+    def __reduce__(self):      # picklable (worker processes): the English, then the rest
+        return (_rebuilt, (type(self), str.__str__(self), self.__dict__))
+
+
+def _rebuilt(cls, en: str, state: dict) -> "Msg":
+    self = str.__new__(cls, en)
+    self.__dict__.update(state)
+    return self
+
+
+class Listed(Msg):
+    """Names joined with ", " in English and the catalogue's separator in other languages
+    (、 in Chinese): ``Listed(sorted(points))``."""
+
+    def __new__(cls, items):
+        items = tuple(str(x) for x in items)
+        self = str.__new__(cls, ", ".join(items))
+        self.msgid, self.context, self.fields, self.items = ", ", None, {}, items
+        return self
+
+    def text(self, lang: str) -> str:
+        from ..i18n import tr
+
+        return tr(lang).pgettext("list separator", ", ").join(self.items)
+
+
+class Given(Msg):
+    """A message whose Chinese was written elsewhere (a design error's ``zh``, a message the
+    core translated): ``Given(en, zh)``; English where ``zh`` is None."""
+
+    def __new__(cls, en: str, zh: str | None = None):
+        self = str.__new__(cls, en)
+        self.msgid, self.context, self.fields, self.zh = en, None, {}, zh
+        return self
+
+    def text(self, lang: str) -> str:
+        from ..i18n import base
+
+        return self.zh if self.zh and base(lang) == "zh" else str.__str__(self)
 
 
 class _Missing:
@@ -61,19 +134,22 @@ class Shown:
 class Problems:
     """The cross-field problems of one brief section, collected so that a model validator
     reports every one of them at once, each at its exact field path (``loc`` relative to
-    the section), with the value found and what to change in English and Chinese.
+    the section), with the value found and what to change: an English msgid and its fields
+    (a :class:`Msg`, shown in the reader's language).
 
-    Use: ``out = Problems(self)``, ``out.add(("field",), value, en, zh)`` for each problem,
-    then ``out.raise_any()`` at the end of the validator."""
+    Use: ``out = Problems(self)``, ``out.add(("field",), value, N_("… {x} …"), x=…)`` for
+    each problem, then ``out.raise_any()`` at the end of the validator."""
 
     def __init__(self, model: BaseModel):
         self.title = type(model).__name__
-        self.items: list[tuple[tuple, object, str, str | None]] = []
+        self.items: list[tuple[tuple, object, Msg]] = []
 
-    def add(self, loc: tuple | str, value, en: str, zh: str | None = None) -> None:
+    def add(self, loc: tuple | str, value, msgid: str, zh: str | None = None, /, **fields) -> None:
+        """``zh``: a module not yet converted gives its Chinese text here (no fields then)."""
         if isinstance(value, float) and value.is_integer():   # as written: 3, not 3.0
             value = int(value)
-        self.items.append(((loc,) if isinstance(loc, (str, int)) else tuple(loc), value, en, zh))
+        message = _message(msgid, zh, fields)
+        self.items.append(((loc,) if isinstance(loc, (str, int)) else tuple(loc), value, message))
 
     def raise_any(self) -> None:
         """Raise one pydantic ValidationError carrying every problem (none: return)."""
@@ -83,18 +159,25 @@ class Problems:
         from pydantic_core import InitErrorDetails, PydanticCustomError
 
         raise ValidationError.from_exception_data(self.title, [InitErrorDetails(
-            type=PydanticCustomError("value_error", "{msg}",
-                                     {"msg": en} if zh is None else {"msg": en, "zh": zh}),
-            loc=loc, input=value) for loc, value, en, zh in self.items])
+            type=PydanticCustomError("value_error", "{msg}", {"msg": message}),
+            loc=loc, input=value) for loc, value, message in self.items])
 
 
-def invalid(en: str, zh: str):
+def _message(msgid: str, zh: str | None, fields: dict) -> "Msg":
+    if isinstance(msgid, Msg):
+        return msgid
+    return Given(msgid, zh) if zh is not None else Msg(msgid, **fields)
+
+
+def invalid(msgid: str, zh: str | None = None, /, **fields):
     """The error a single-field validator raises for a bad value: pydantic reports it at
-    the field, the loader shows ``en`` (or ``zh`` in a Chinese brief) as what is allowed.
-    Use: ``raise invalid("must be …", "须为 …")``."""
+    the field, the loader shows the message (msgid with its fields, in the reader's
+    language) as what is allowed. Use: ``raise invalid(N_("must be … {x}"), x=…)`` (a module
+    not yet converted: ``invalid(english, chinese)``)."""
     from pydantic_core import PydanticCustomError
 
-    return PydanticCustomError("value_error", "{msg}", {"msg": en, "zh": zh})
+    message = _message(msgid, zh, fields)
+    return PydanticCustomError("value_error", "{msg}", {"msg": message})
 
 
 class StrictModel(BaseModel):
@@ -141,16 +224,16 @@ class ReportMeta(StrictModel):
         return value
 
 
-#: The positions a brief may name by event (``analysis.events``): code → (中文, English).
+#: The positions a brief may name by event (``analysis.events``): code → English name
+#: (translated by :func:`event_name`).
 #: ``link_vertical:<link>`` and ``link_horizontal:<link>`` name a link by its id.
 EVENTS = {
-    "work_start": ("工作阻力开始（如切削开始）",
-                   "start of the working resistance (e.g. cutting starts)"),
-    "work_end": ("工作阻力结束（如切削结束）", "end of the working resistance (e.g. cutting ends)"),
-    "max_velocity_working": ("工作行程输出速度最大", "largest output speed in the working stroke"),
-    "max_velocity_return": ("空回行程输出速度最大", "largest output speed in the return stroke"),
-    "link_vertical:<link>": ("构件 <link> 竖直", "link <link> vertical"),
-    "link_horizontal:<link>": ("构件 <link> 水平", "link <link> horizontal"),
+    "work_start": N_("start of the working resistance (e.g. cutting starts)"),
+    "work_end": N_("end of the working resistance (e.g. cutting ends)"),
+    "max_velocity_working": N_("largest output speed in the working stroke"),
+    "max_velocity_return": N_("largest output speed in the return stroke"),
+    "link_vertical:<link>": N_("link <link> vertical"),
+    "link_horizontal:<link>": N_("link <link> horizontal"),
 }
 _EVENT = re.compile(r"^(work_start|work_end|max_velocity_working|max_velocity_return|"
                     r"link_(?:vertical|horizontal):[A-Za-z0-9_]{1,8})$")
@@ -158,10 +241,12 @@ _POINT = re.compile(r"^[A-Za-z][A-Za-z0-9_']{0,15}$")
 
 
 def event_name(code: str, lang: str) -> str:
-    """The event's name in ``lang`` ("zh" or "en")."""
-    base, _, link = code.partition(":")
-    zh, en = EVENTS.get(base + (":<link>" if link else ""), (code, code))
-    return (zh if lang == "zh" else en).replace("<link>", link)
+    """The event's name in ``lang``."""
+    from ..i18n import tr
+
+    head, _sep, link = code.partition(":")
+    name = EVENTS.get(head + (":<link>" if link else ""))
+    return (tr(lang)(name) if name else code).replace("<link>", link)
 
 
 def angle_label(value: float) -> str:
@@ -190,8 +275,13 @@ class AnalysisSettings(StrictModel):
         "exercises give φ1)"))
     events: list[str] = Field(default_factory=list, max_length=12, description=(
         "Extra positions by event, found exactly (root finding) and labelled as the course "
-        "does (the regular position before it, primed: 1′, 7′): " + "; ".join(
-            f"{code} ({zh} / {en})" for code, (zh, en) in EVENTS.items())))
+        "does (the regular position before it, primed: 1′, 7′): "
+        "work_start (工作阻力开始（如切削开始） / start of the working resistance (e.g. cutting starts)); "
+        "work_end (工作阻力结束（如切削结束） / end of the working resistance (e.g. cutting ends)); "
+        "max_velocity_working (工作行程输出速度最大 / largest output speed in the working stroke); "
+        "max_velocity_return (空回行程输出速度最大 / largest output speed in the return stroke); "
+        "link_vertical:<link> (构件 <link> 竖直 / link <link> vertical); "
+        "link_horizontal:<link> (构件 <link> 水平 / link <link> horizontal)"))
     points: list[str] = Field(default_factory=list, max_length=12, description=(
         "Named points (any point of the linkage, incl. centres of mass) whose velocity and "
         "acceleration (magnitude and direction) the report tabulates at every position and "
@@ -203,10 +293,10 @@ class AnalysisSettings(StrictModel):
         for code in value:
             if not _EVENT.match(code):
                 raise invalid(
-                    f"unknown event {code!r}; allowed: {', '.join(EVENTS)} (e.g. link_vertical:4)",
-                    f"未知事件 {code!r}；可用：{', '.join(EVENTS)}（例如 link_vertical:4）")
+                    N_("unknown event {code!r}; allowed: {v1} (e.g. link_vertical:4)"),
+                    code=code, v1=', '.join(EVENTS))
         if len(set(value)) != len(value):
-            raise invalid("each event once: remove the repeated one", "每个事件只能出现一次：请删去重复项")
+            raise invalid(N_("each event once: remove the repeated one"))
         return value
 
     @field_validator("points")
@@ -214,10 +304,10 @@ class AnalysisSettings(StrictModel):
     def _points(cls, value):
         for name in value:
             if not _POINT.match(name):
-                raise invalid(f"{name!r} is not a point name (a letter, then letters, digits, _ or ')",
-                              f"{name!r} 不是点名（字母开头，其后为字母、数字、_ 或 '）")
+                raise invalid(N_("{name!r} is not a point name (a letter, then letters, digits, _ "
+                                 "or ')"), name=name)
         if len(set(value)) != len(value):
-            raise invalid("each point once: remove the repeated one", "每个点只能出现一次：请删去重复项")
+            raise invalid(N_("each point once: remove the repeated one"))
         return value
 
 

@@ -23,7 +23,8 @@ from typing import ClassVar, Literal, Optional
 from ..lazy import np
 from pydantic import Field, model_validator
 
-from .common import MISSING, Problems, StrictModel
+from .common import MISSING, Msg, Problems, StrictModel
+from ..i18n import N_
 
 StateName = Literal["rise", "dwell_high", "return", "dwell_low", "move", "dwell"]
 _KEY = r"^[a-z][a-z0-9_]*$"
@@ -62,14 +63,12 @@ class CycleActuator(StrictModel):
         if abs(total - 360.0) > 1e-6:
             last = self.phases[-1].span_deg
             fix = last + 360.0 - total
-            hint = (f"e.g. make the last phase {fix:g}° instead of {last:g}°" if fix > 0 else
-                    f"shorten the phases by {total - 360.0:g}° in all")
-            hint_zh = (f"例如将最后一个阶段由 {last:g}° 改为 {fix:g}°" if fix > 0 else
-                       f"各阶段共须缩短 {total - 360.0:g}°")
+            hint = (Msg(N_("e.g. make the last phase {fix:g}° instead of {last:g}°"), fix=fix, last=last)
+                    if fix > 0 else
+                    Msg(N_("shorten the phases by {excess:g}° in all"), excess=total - 360.0))
             out.add(("phases", len(self.phases) - 1, "span_deg"), last,
-                    f"actuator '{self.key}': the phase spans add up to {total:g}°; they must add "
-                    f"up to 360°: {hint}",
-                    f"执行构件 '{self.key}'：各阶段转角之和为 {total:g}°，须为 360°：{hint_zh}")
+                    N_("actuator '{key}': the phase spans add up to {total:g}°; they must add up "
+                       "to 360°: {hint}"), key=self.key, total=total, hint=hint)
         out.raise_any()
         return self
 
@@ -114,9 +113,9 @@ class CycleSection(StrictModel):
         for i, key in enumerate(keys):
             if key in keys[:i]:
                 out.add(("actuators", i, "key"), key,
-                        f"actuator key '{key}' appears more than once (also actuators.{keys.index(key)}.key): "
-                        "give each actuator its own key",
-                        f"执行构件代号 '{key}' 已被 actuators.{keys.index(key)} 使用：每个执行构件须有自己的代号")
+                        N_("actuator key '{key}' appears more than once (also "
+                           "actuators.{v1}.key): give each actuator its own key"),
+                        key=key, v1=keys.index(key))
         by_key = {a.key: a for a in self.actuators}
         known = ", ".join(by_key)
         for i, c in enumerate(self.constraints):
@@ -126,26 +125,24 @@ class CycleSection(StrictModel):
                 act = by_key.get(ref.actuator)
                 if act is None:
                     out.add(where + ("actuator",), ref.actuator,
-                            f"no actuator '{ref.actuator}'; actuators: {known}",
-                            f"没有此执行构件；执行构件有：{known}")
+                            N_("no actuator '{actuator}'; actuators: {known}"),
+                            actuator=ref.actuator, known=known)
                     continue
                 count = sum(p.state == ref.state for p in act.phases)
                 have = ", ".join(p.state for p in act.phases)
                 if count == 0:
                     out.add(where + ("state",), ref.state,
-                            f"actuator '{act.key}' has no '{ref.state}' phase; its phases: {have}",
-                            f"执行构件 '{act.key}' 没有 '{ref.state}' 阶段；其阶段为：{have}")
+                            N_("actuator '{key}' has no '{state}' phase; its phases: {have}"),
+                            key=act.key, state=ref.state, have=have)
                 elif ref.occurrence is None and count > 1:
                     out.add(where + ("occurrence",), MISSING,
-                            f"actuator '{act.key}' has {count} '{ref.state}' phases: say which "
-                            f"one with occurrence (1 … {count})",
-                            f"执行构件 '{act.key}' 有 {count} 个 '{ref.state}' 阶段：请用 occurrence"
-                            f"（1 … {count}）指明是哪一个")
+                            N_("actuator '{key}' has {count} '{state}' phases: say which one with "
+                               "occurrence (1 … {count})"),
+                            key=act.key, count=count, state=ref.state)
                 elif ref.occurrence is not None and ref.occurrence > count:
                     out.add(where + ("occurrence",), ref.occurrence,
-                            f"actuator '{act.key}' has {count} '{ref.state}' phase(s): occurrence "
-                            f"is 1 … {count}",
-                            f"执行构件 '{act.key}' 只有 {count} 个 '{ref.state}' 阶段：occurrence 须为 1 … {count}")
+                            N_("actuator '{key}' has {count} '{state}' phase(s): occurrence is 1 "
+                               "… {count}"), key=act.key, count=count, state=ref.state)
         out.raise_any()
         return self
 
@@ -192,9 +189,9 @@ class MorphFunction(StrictModel):
         n = len(self.options)
         if self.chosen > n:
             out.add("chosen", self.chosen,
-                    f"function '{self.name_en}': chosen = {self.chosen}, but it has only {n} "
-                    f"option(s): chosen is 1 … {n}",
-                    f"功能“{self.name_zh}”只有 {n} 个方案：chosen 须为 1 … {n}")
+                    N_("function '{name_en}': chosen = {chosen}, but it has only {n} option(s): "
+                       "chosen is 1 … {n}"),
+                    name_en=self.name_en, chosen=self.chosen, n=n, name_zh=self.name_zh)
         out.raise_any()
         return self
 
@@ -286,13 +283,12 @@ class IncompleteGearSection(StrictModel):
         out = Problems(self)
         if self.feed_mm is not None and self.advance_deg is not None:
             out.add("feed_mm", self.feed_mm,
-                    "the advance is already given as advance_deg: give it either as advance_deg or "
-                    "as feed_mm, not both", "转角已由 advance_deg 给出：advance_deg 与 feed_mm 只能给出其一")
+                    N_("the advance is already given as advance_deg: give it either as "
+                       "advance_deg or as feed_mm, not both"))
         if self.feed_mm is not None and self.sprocket_pitch_radius_mm is None:
             out.add("sprocket_pitch_radius_mm", MISSING,
-                    "feed_mm needs sprocket_pitch_radius_mm: the sprocket's pitch radius turns the feed "
-                    "into the driven wheel's advance",
-                    "以 mm 给出送进量时须给出链轮分度圆半径，才能求出从动轮转角")
+                    N_("feed_mm needs sprocket_pitch_radius_mm: the sprocket's pitch radius turns "
+                       "the feed into the driven wheel's advance"))
         if not out.items:
             from ..core.intermittent import IntermittentDesignError
 
@@ -304,9 +300,8 @@ class IncompleteGearSection(StrictModel):
                     name = "feed_mm"
                 value = getattr(self, name)
                 out.add(name, MISSING if value is None else value,
-                        f"{exc.en} (z1 = driver_teeth_full, z2 = driven_teeth, z1' = teeth_present)",
-                        f"{exc.zh or exc.en}（z1 = driver_teeth_full，z2 = driven_teeth，"
-                        "z1' = teeth_present）")
+                        N_("{en} (z1 = driver_teeth_full, z2 = driven_teeth, z1' = teeth_present)"),
+                        en=exc.en, v1=exc.zh or exc.en)
         out.raise_any()
         return self
 

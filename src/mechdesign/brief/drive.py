@@ -11,7 +11,8 @@ from typing import Annotated, Literal, Optional, Union
 from ..lazy import np
 from pydantic import Field, field_validator, model_validator
 
-from .common import Problems, StrictModel, invalid
+from .common import Msg, Problems, StrictModel, invalid
+from ..i18n import N_
 
 #: Smallest tooth number of a roller-chain sprocket (机械设计手册: z_min = 9; z1 ≥ 17 advised).
 CHAIN_Z_MIN = 9
@@ -44,9 +45,9 @@ def check_material(value: str | None, which: str) -> str | None:
         {"gear": cat.gear_material, "wheel": cat.worm_wheel_material}[which](value)
     except KeyError as exc:       # its message lists the allowed keys
         allowed = str(exc.args[0]).partition("allowed: ")[2]
-        raise invalid(f"not in the shipped material catalogue; allowed: {allowed} (or the Chinese "
-                      "name, e.g. 45调质)",
-                      f"材料表中没有此材料；可用：{allowed}（或中文名，如 45调质）") from None
+        raise invalid(N_("not in the shipped material catalogue; allowed: {allowed} (or the "
+                         "Chinese name, e.g. {example})"), allowed=allowed,
+                      example=cat.gear_material("45_QT").name_zh) from None
     return value
 
 
@@ -113,34 +114,32 @@ class DriveStage(StrictModel):
         for n in _OPTIONAL:
             if getattr(self, n) is not None and n not in allowed:
                 out.add(n, getattr(self, n),
-                        f"a {self.type} stage has no {n}: remove it (fields of a {self.type} stage: "
-                        f"{names})",
-                        f"{self.type} 级没有 {n}：请删去（{self.type} 级可用的字段：{names}）")
+                        N_("a {type} stage has no {n}: remove it (fields of a {type} stage: "
+                           "{names})"), type=self.type, n=n, names=names)
         if self.type == "belt" and (self.d1_mm and self.d2_mm) and self.d2_mm < self.d1_mm:
             out.add("d2_mm", self.d2_mm,
-                    f"a reduction drive: the driven pulley d2 must be at least d1_mm = {self.d1_mm:g}",
-                    f"减速传动：从动带轮 d2 须不小于 d1_mm = {self.d1_mm:g}")
+                    N_("a reduction drive: the driven pulley d2 must be at least d1_mm = {d1_mm:g}"),
+                    d1_mm=self.d1_mm)
         if self.type == "belt" and self.center_distance_mm is not None and self.d1_mm and self.d2_mm:
             lo, hi = 0.7 * (self.d1_mm + self.d2_mm), 2 * (self.d1_mm + self.d2_mm)
             if not lo <= self.center_distance_mm <= hi:
                 out.add("center_distance_mm", self.center_distance_mm,
-                        f"the initial centre distance must lie in 0.7 (d1 + d2) … 2 (d1 + d2) = "
-                        f"{lo:g} … {hi:g} mm",
-                        f"初定中心距须在 0.7(d1 + d2) … 2(d1 + d2) = {lo:g} … {hi:g} mm 之内")
+                        N_("the initial centre distance must lie in 0.7 (d1 + d2) … 2 (d1 + d2) = "
+                           "{lo:g} … {hi:g} mm"), lo=lo, hi=hi)
         if self.z1 is not None and self.z2 is not None and self.z2 < self.z1:
-            what, what_zh = (("worm wheel", "蜗轮") if self.type == "worm" else
-                             ("driven wheel", "从动轮"))
-            out.add("z2", self.z2, f"z2 must be at least z1 = {self.z1}: a reduction stage (the {what} "
-                    "turns slower than the driver)",
-                    f"减速级（{what_zh}转得比主动轮慢）：z2 须不小于 z1 = {self.z1}")
+            what = (Msg.pgettext("drive stage", "worm wheel") if self.type == "worm" else
+                    Msg.pgettext("drive stage", "driven wheel"))
+            out.add("z2", self.z2, N_("z2 must be at least z1 = {z1}: a reduction stage (the "
+                                      "{what} turns slower than the driver)"),
+                                   z1=self.z1, what=what)
         if self.type == "chain":
             for key in ("z1", "z2"):
                 z = getattr(self, key)
                 if z is not None and z < CHAIN_Z_MIN:
                     out.add(key, z,
-                            f"a roller-chain sprocket needs at least {CHAIN_Z_MIN} teeth (17 or more "
-                            "recommended for smooth running); give more teeth",
-                            f"滚子链链轮至少需要 {CHAIN_Z_MIN} 个齿（为运转平稳宜取 17 以上）；应增加齿数")
+                            N_("a roller-chain sprocket needs at least {CHAIN_Z_MIN} teeth (17 or "
+                               "more recommended for smooth running); give more teeth"),
+                            CHAIN_Z_MIN=CHAIN_Z_MIN)
         fixes = [n for n, given in (("ratio", self.ratio is not None),
                                     ("z1/z2", self.z1 is not None and self.z2 is not None),
                                     ("d1_mm/d2_mm", self.d1_mm is not None and self.d2_mm is not None))
@@ -148,8 +147,8 @@ class DriveStage(StrictModel):
         if len(fixes) > 1 and "ratio" in fixes:
             other = fixes[1]
             out.add("ratio", self.ratio,
-                    f"the ratio is fixed twice: {other} already fix it; remove `ratio` (or one of "
-                    f"{other})", f"传动比给定了两次：{other} 已确定传动比；请删去 `ratio`（或删去 {other} 之一）")
+                    N_("the ratio is fixed twice: {other} already fix it; remove `ratio` (or one "
+                       "of {other})"), other=other)
         out.raise_any()
         return self
 
@@ -214,8 +213,8 @@ class ShaftOverride(StrictModel):
             cat.shaft_material(v)
         except KeyError as exc:
             allowed = str(exc.args[0]).partition("allowed: ")[2]
-            raise invalid(f"not in the shipped shaft-material catalogue; allowed: {allowed}",
-                          f"轴材料表中没有此材料；可用：{allowed}") from None
+            raise invalid(N_("not in the shipped shaft-material catalogue; allowed: {allowed}"),
+                          allowed=allowed) from None
         return v
 
     @model_validator(mode="after")
@@ -225,40 +224,37 @@ class ShaftOverride(StrictModel):
         out = Problems(self)
         if self.journal_mm is not None and abs(self.journal_mm / 5 - round(self.journal_mm / 5)) > 1e-9:
             out.add("journal_mm", self.journal_mm,
-                    "a bearing bore is a multiple of 5 mm (20, 25, 30, …): give the journal as one",
-                    "轴承内径为 5 mm 的倍数（20、25、30……）：轴颈应取其一")
+                    N_("a bearing bore is a multiple of 5 mm (20, 25, 30, …): give the journal as "
+                       "one"))
         if self.journal_mm is not None and self.seat_mm is not None and self.seat_mm < self.journal_mm:
             out.add("seat_mm", self.seat_mm,
-                    f"the hub seat must be at least the journal_mm = {self.journal_mm:g} (the hub "
-                    "slides over the journal when it is mounted)",
-                    f"轮毂装配段直径须不小于轴颈 journal_mm = {self.journal_mm:g}（装配时轮毂要经过轴颈）")
+                    N_("the hub seat must be at least the journal_mm = {journal_mm:g} (the hub "
+                       "slides over the journal when it is mounted)"), journal_mm=self.journal_mm)
         if self.end_mm is not None and self.journal_mm is not None and self.end_mm > self.journal_mm:
             out.add("end_mm", self.end_mm,
-                    f"the overhung end must not exceed the journal_mm = {self.journal_mm:g} (the "
-                    "bearing is mounted over the end)",
-                    f"外伸端直径不得大于轴颈 journal_mm = {self.journal_mm:g}（轴承从外伸端装入）")
+                    N_("the overhung end must not exceed the journal_mm = {journal_mm:g} (the "
+                       "bearing is mounted over the end)"), journal_mm=self.journal_mm)
         if self.bearing is not None:
             try:
                 b = cat.bearing(self.bearing)
             except KeyError:
                 allowed = ", ".join(cat.bearing_designations())
-                out.add("bearing", self.bearing, f"not in the bearing catalogue; allowed: {allowed}",
-                        f"轴承表中没有此型号；可用：{allowed}")
+                out.add("bearing", self.bearing, N_("not in the bearing catalogue; allowed: "
+                                                    "{allowed}"), allowed=allowed)
             else:
                 bore = b.d * 1e3
                 if self.journal_mm is not None and abs(bore - self.journal_mm) > 1e-6:
                     out.add("bearing", self.bearing,
-                            f"its bore is {bore:g} mm, the journal_mm is {self.journal_mm:g}: give a "
-                            f"bearing of bore {self.journal_mm:g} mm or change journal_mm",
-                            f"其内径为 {bore:g} mm，而轴颈 journal_mm 为 {self.journal_mm:g}：应选内径 "
-                            f"{self.journal_mm:g} mm 的轴承或修改 journal_mm")
+                            N_("its bore is {bore:g} mm, the journal_mm is {journal_mm:g}: give a "
+                               "bearing of bore {journal_mm:g} mm or change journal_mm"),
+                            bore=bore, journal_mm=self.journal_mm)
         if self.key_length_mm is not None:
             series = cat.key_length_series()
             if not any(abs(L * 1e3 - self.key_length_mm) < 1e-6 for L in series):
                 allowed = ", ".join(f"{L * 1e3:g}" for L in series)
                 out.add("key_length_mm", self.key_length_mm,
-                        f"not a standard key length (GB/T 1096); allowed: {allowed}",
-                        f"不是标准键长（GB/T 1096）；可用：{allowed}")
+                        N_("not a standard key length (GB/T 1096); allowed: {allowed}"),
+                        allowed=allowed)
         out.raise_any()
         return self
 
@@ -296,11 +292,10 @@ class DriveSection(StrictModel):
         for i, o in enumerate(self.shafts):
             if o.shaft > n:
                 out.add(("shafts", i, "shaft"), o.shaft,
-                        f"the drive has shafts 1–{n} after the motor (one per stage)",
-                        f"传动装置在电动机之后只有 1–{n} 轴（每级一根）")
+                        N_("the drive has shafts 1–{n} after the motor (one per stage)"), n=n)
             if o.shaft in seen:
-                out.add(("shafts", i, "shaft"), o.shaft, "this shaft is given twice: merge the entries",
-                        "此轴给出了两次：请合并")
+                out.add(("shafts", i, "shaft"), o.shaft, N_("this shaft is given twice: merge the "
+                                                            "entries"))
             seen.add(o.shaft)
         out.raise_any()
         return self

@@ -14,6 +14,7 @@ from .cam import CamParams, CamSection, cam_to_si
 from .common import (MISSING, AnalysisSettings, Problems, ReportMeta, SheetSettings, StrictModel,
                      parse_fraction)
 from .drive import DriveParams, DriveSection, DriveStage, check_material, drive_to_si
+from ..i18n import N_
 
 
 class GuideBarMasses(StrictModel):
@@ -41,11 +42,11 @@ class GuideBarMasses(StrictModel):
                              ("gear2_m2_kg", "gear2_weight_G2_N")):
             given = [k for k in (mass, weight) if k in self.model_fields_set and getattr(self, k) is not None]
             if len(given) == 2:
-                out.add(weight, getattr(self, weight), f"give either {mass} or {weight}, not both",
-                        f"{mass} 与 {weight} 只能给出其一")
+                out.add(weight, getattr(self, weight), N_("give either {mass} or {weight}, not both"),
+                                                       mass=mass, weight=weight)
             elif not given and weight != "gear2_weight_G2_N":
-                out.add(mass, MISSING, f"give the mass {mass} [kg] or the weight {weight} [N]",
-                        f"须给出质量 {mass} [kg] 或重量 {weight} [N]")
+                out.add(mass, MISSING, N_("give the mass {mass} [kg] or the weight {weight} [N]"),
+                                       mass=mass, weight=weight)
         out.raise_any()
         return self
 
@@ -92,32 +93,32 @@ class GuideBarLinkage(StrictModel):
         d = self.frame_O2O3_mm
         if hk and ln:
             out.add(ln[0], getattr(self, ln[0]),
-                    "give either stroke_H_mm and time_ratio_K (synthesis) or crank_O2A_mm and "
-                    "guide_bar_O3B_mm (link lengths), not both: H and K follow from the lengths",
-                    "行程 H、行程速比系数 K（综合）与杆长 crank_O2A_mm、guide_bar_O3B_mm 只能给出一组："
-                    "H、K 由杆长算出")
+                    N_("give either stroke_H_mm and time_ratio_K (synthesis) or crank_O2A_mm and "
+                       "guide_bar_O3B_mm (link lengths), not both: H and K follow from the lengths"))
         elif len(hk) == 1 or len(ln) == 1:
             missing = ({"stroke_H_mm", "time_ratio_K"} - set(hk)) if hk else \
                 ({"crank_O2A_mm", "guide_bar_O3B_mm"} - set(ln))
             m = missing.pop()
-            out.add(m, MISSING, f"{m} is needed with {(hk or ln)[0]}", f"给出 {(hk or ln)[0]} 时须同时给出 {m}")
+            out.add(m, MISSING, N_("{m} is needed with {v1}"), m=m, v1=(hk or ln)[0])
         elif not hk and not ln:
             out.add("stroke_H_mm", MISSING,
-                    "give stroke_H_mm and time_ratio_K, or the link lengths crank_O2A_mm and guide_bar_O3B_mm",
-                    "须给出 stroke_H_mm 与 time_ratio_K，或杆长 crank_O2A_mm 与 guide_bar_O3B_mm")
+                    N_("give stroke_H_mm and time_ratio_K, or the link lengths crank_O2A_mm and "
+                       "guide_bar_O3B_mm"))
         ratio, rod = getattr(self, ratio_f), getattr(self, rod_f)
         if (ratio is None) == (rod is None):
-            out.add(ratio_f, MISSING if ratio is None else ratio, f"give the rod as {ratio_f} (L_{self.ROD}/L_O3B) or as {rod_f}, exactly one",
-                    f"连杆须以 {ratio_f}（L_{self.ROD}/L_O3B）或 {rod_f} 给出，且只给一个")
+            out.add(ratio_f, MISSING if ratio is None else ratio, N_("give the rod as {ratio_f} "
+                                                                     "(L_{ROD}/L_O3B) or as {rod_f}, exactly "
+                                                                     "one"),
+                                                                  ratio_f=ratio_f, ROD=self.ROD, rod_f=rod_f)
         if out.items:
             out.raise_any()
         if ln:
             r, bar = self.crank_O2A_mm, self.guide_bar_O3B_mm
             if r >= d:
                 out.add("crank_O2A_mm", r,
-                        f"the crank L_O2A = {r:g} mm must be shorter than the frame L_O2O3 = {d:g} mm: "
-                        "otherwise the guide bar turns fully round and there is no quick return",
-                        f"曲柄 L_O2A = {r:g} mm 须短于机架 L_O2O3 = {d:g} mm，否则导杆整周转动，没有急回运动")
+                        N_("the crank L_O2A = {r:g} mm must be shorter than the frame L_O2O3 = "
+                           "{d:g} mm: otherwise the guide bar turns fully round and there is no "
+                           "quick return"), r=r, d=d)
                 out.raise_any()
             half = math.asin(r / d)
         else:
@@ -127,21 +128,17 @@ class GuideBarLinkage(StrictModel):
         if bar < d + r:
             if ln:
                 out.add("guide_bar_O3B_mm", bar,
-                        f"the guide bar L_O3B = {bar:g} mm is shorter than the crank pin's reach "
-                        f"L_O2O3 + L_O2A = {d + r:g} mm: the slider A would run off the bar; "
-                        f"lengthen the bar to at least {d + r:g} mm",
-                        f"导杆 L_O3B = {bar:g} mm 短于曲柄销的最远距离 L_O2O3 + L_O2A = {d + r:g} mm，"
-                        f"滑块 A 会滑出导杆：导杆至少取 {d + r:g} mm")
+                        N_("the guide bar L_O3B = {bar:g} mm is shorter than the crank pin's "
+                           "reach L_O2O3 + L_O2A = {v1:g} mm: the slider A would run off the bar; "
+                           "lengthen the bar to at least {v1:g} mm"), bar=bar, v1=d + r)
             else:
                 need = 2.0 * math.sin(half) * (d + r)
                 out.add("stroke_H_mm", self.stroke_H_mm,
-                        f"with L_O2O3 = {d:g} mm and K = {self.time_ratio_K:g} the guide bar "
-                        f"L_O3B = H/(2 sin(ψ/2)) = {bar:.6g} mm is shorter than the crank pin's reach "
-                        f"L_O2O3 + L_O2A = {d + r:.6g} mm (the crank circle would leave the bar): "
-                        f"take H ≥ {need:.6g} mm or a shorter frame",
-                        f"L_O2O3 = {d:g} mm、K = {self.time_ratio_K:g} 时导杆 L_O3B = H/(2 sin(ψ/2)) = "
-                        f"{bar:.6g} mm 短于曲柄销的最远距离 L_O2O3 + L_O2A = {d + r:.6g} mm"
-                        f"（曲柄圆脱离导杆）：应取 H ≥ {need:.6g} mm 或减小机架长")
+                        N_("with L_O2O3 = {d:g} mm and K = {time_ratio_K:g} the guide bar L_O3B = "
+                           "H/(2 sin(ψ/2)) = {bar:.6g} mm is shorter than the crank pin's reach "
+                           "L_O2O3 + L_O2A = {v1:.6g} mm (the crank circle would leave the bar): "
+                           "take H ≥ {need:.6g} mm or a shorter frame"),
+                        d=d, time_ratio_K=self.time_ratio_K, bar=bar, v1=d + r, need=need)
         h = self.guide_O3M_mm
         if h is not None and not out.items:
             rod_len = rod if rod is not None else ratio * bar
@@ -149,13 +146,11 @@ class GuideBarLinkage(StrictModel):
             reach = max(abs(bar - h), abs(low - h))
             if reach > rod_len:
                 out.add("guide_O3M_mm", h,
-                        f"the rod L_{self.ROD} = {rod_len:.6g} mm cannot reach the guide line at "
-                        f"L_O3M = {h:g} mm from B, which moves between {low:.6g} and {bar:.6g} mm from "
-                        f"O3 along the guide's normal: take L_O3M between {bar - rod_len:.6g} and "
-                        f"{low + rod_len:.6g} mm",
-                        f"连杆 L_{self.ROD} = {rod_len:.6g} mm 够不到 L_O3M = {h:g} mm 处的导路"
-                        f"（B 距 O3 在 {low:.6g}～{bar:.6g} mm 之间）：L_O3M 应在 {bar - rod_len:.6g}～"
-                        f"{low + rod_len:.6g} mm 之间")
+                        N_("the rod L_{ROD} = {rod_len:.6g} mm cannot reach the guide line at "
+                           "L_O3M = {h:g} mm from B, which moves between {low:.6g} and {bar:.6g} "
+                           "mm from O3 along the guide's normal: take L_O3M between {v1:.6g} and "
+                           "{v2:.6g} mm"),
+                        ROD=self.ROD, rod_len=rod_len, h=h, low=low, bar=bar, v1=bar - rod_len, v2=low + rod_len)
         out.raise_any()
         return self
 
@@ -200,16 +195,15 @@ class GearPair(StrictModel):
         if self.z2 < self.z1:
             out = Problems(self)
             out.add(("z2",), self.z2,
-                    f"z2 must be at least z1 = {self.z1}: gear 2 on the crank turns slower than the "
-                    "pinion (a reduction); raise z2 or lower z1",
-                    f"z2 须不小于 z1 = {self.z1}：曲柄上的齿轮 2 比小齿轮转得慢（减速）；应增大 z2 或减小 z1")
+                    N_("z2 must be at least z1 = {z1}: gear 2 on the crank turns slower than the "
+                       "pinion (a reduction); raise z2 or lower z1"), z1=self.z1)
             out.raise_any()
         return self
 
 
 def _fraction(value):
     """Accept 0.04 or the course's '1/25'."""
-    return parse_fraction(value, "must be a number or a fraction such as 1/25")
+    return parse_fraction(value, N_("must be a number or a fraction such as 1/25"))
 
 
 class GuideBarFlywheel(StrictModel):
@@ -261,44 +255,38 @@ class GuideBarBrief(StrictModel):
             for i, p in enumerate(chosen):
                 if isinstance(p, int) and not 1 <= p <= count:   # a label: checked at run time
                     out.add(("sheets", "polygon_positions", i), p,
-                            f"{p} is not a position: with analysis.position_step_deg = {step:g} the "
-                            f"positions are 1 … {count}",
-                            f"{p} 不是机构位置：analysis.position_step_deg = {step:g} 时位置为 1 … {count}")
+                            N_("{p} is not a position: with analysis.position_step_deg = {step:g} "
+                               "the positions are 1 … {count}"), p=p, step=step, count=count)
             if len(chosen) == 2 and chosen[0] == chosen[1]:
                 out.add(("sheets", "polygon_positions"), list(chosen),
-                        "give two different positions", "应给出两个不同的位置")
+                        N_("give two different positions"))
         if self.gear_pair is None:
             if self.flywheel.shaft == "pinion":
                 out.add(("flywheel", "shaft"), "pinion",
-                        "a flywheel on the pinion shaft needs the gear ratio z2/z1: add a gear_pair "
-                        "section or put the flywheel on the crank (shaft: crank)",
-                        "飞轮装在小齿轮轴上需要齿数比 z2/z1：请给出 gear_pair，或改为 shaft: crank")
+                        N_("a flywheel on the pinion shaft needs the gear ratio z2/z1: add a "
+                           "gear_pair section or put the flywheel on the crank (shaft: crank)"))
             if self.drive is not None:
                 out.add(("drive",), "…",
-                        "the drive ends with the gear pair z1/z2 that turns the crank: add a gear_pair section",
-                        "传动装置的最后一级是驱动曲柄的齿轮副 z1/z2：请给出 gear_pair")
+                        N_("the drive ends with the gear pair z1/z2 that turns the crank: add a "
+                           "gear_pair section"))
         elif self.drive is not None and self.gear_pair.module_mm is None:
             out.add(("gear_pair", "module_mm"), MISSING,
-                    "the module is needed with a drive section: the gear pair is its last stage",
-                    "有传动装置（drive）时须给出模数：齿轮副是其最后一级")
+                    N_("the module is needed with a drive section: the gear pair is its last stage"))
         if self.cam is not None:
             sense = self.linkage.crank_rotation
             if self.cam.rotation != sense and "rotation" in self.cam.model_fields_set:
                 out.add(("cam", "rotation"), self.cam.rotation,
-                        f"the cam is on the crank shaft and turns with it: use {sense!r} "
-                        f"(linkage.crank_rotation)",
-                        f"凸轮装在曲柄轴上，随曲柄转动：应取 {sense!r}（linkage.crank_rotation）")
+                        N_("the cam is on the crank shaft and turns with it: use {sense!r} "
+                           "(linkage.crank_rotation)"), sense=sense)
             elif self.cam.rotation != sense:   # the cam's default sense: say so at the cam
                 out.add(("cam",), "…",
-                        f"the cam is on the crank shaft and turns with it: set cam.rotation: "
-                        f"{sense!r} (linkage.crank_rotation)",
-                        f"凸轮装在曲柄轴上，随曲柄转动：应设 cam.rotation: {sense!r}"
-                        "（linkage.crank_rotation）")
+                        N_("the cam is on the crank shaft and turns with it: set cam.rotation: "
+                           "{sense!r} (linkage.crank_rotation)"), sense=sense)
             n2 = getattr(self.linkage, self._crank_speed_field)
             if self.cam.speed_rpm is not None and self.cam.speed_rpm != n2:
                 out.add(("cam", "speed_rpm"), self.cam.speed_rpm,
-                        f"the cam turns at the crank speed {n2:g} rpm: leave speed_rpm out",
-                        f"凸轮转速即曲柄转速 {n2:g} r/min：不要给出 speed_rpm")
+                        N_("the cam turns at the crank speed {n2:g} rpm: leave speed_rpm out"),
+                        n2=n2)
         out.raise_any()
         return self
 

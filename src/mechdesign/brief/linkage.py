@@ -17,15 +17,16 @@ from typing import Annotated, Literal, Optional, Union
 from ..lazy import np
 from pydantic import BeforeValidator, Field, model_validator
 
-from .common import MISSING, AnalysisSettings, Problems, StrictModel, invalid, parse_fraction
+from .common import MISSING, AnalysisSettings, Listed, Problems, StrictModel, invalid, parse_fraction
+from ..i18n import N_
 
 _NAME = re.compile(r"^[A-Za-z][A-Za-z0-9_']{0,15}$")
 
 
 def _name(value):
     if not isinstance(value, str) or not _NAME.match(value):
-        raise invalid("a point name is a letter followed by up to 15 letters, digits, _ or ', "
-                      "e.g. A, B2, S3", "点名为一个字母后接至多 15 个字母、数字、_ 或 '，例如 A、B2、S3")
+        raise invalid(N_("a point name is a letter followed by up to 15 letters, digits, _ or ', "
+                         "e.g. A, B2, S3"))
     return value
 
 
@@ -34,8 +35,7 @@ def _link_id(value):
     if isinstance(value, int) and not isinstance(value, bool):
         value = str(value)
     if not isinstance(value, str) or not re.match(r"^[A-Za-z0-9_]{1,8}$", value):
-        raise invalid("a link id is a number or a short name, e.g. 3",
-                      "构件编号为数字或简短名称，例如 3")
+        raise invalid(N_("a link id is a number or a short name, e.g. 3"))
     return value
 
 
@@ -138,8 +138,7 @@ class OutputSpec(StrictModel):
         if (self.point is None) == (self.link is None):
             out = Problems(self)
             out.add(("point",), self.point if self.point is not None else MISSING,
-                    "give exactly one of point (a slider's point) or link (a rocker's link)",
-                    "point（滑块上的点）与 link（摇杆构件）须且只能给出一个")
+                    N_("give exactly one of point (a slider's point) or link (a rocker's link)"))
             out.raise_any()
         return self
 
@@ -169,7 +168,7 @@ class ResistanceSpec(StrictModel):
 
 
 def _fraction(value):
-    return parse_fraction(value, "write the fluctuation as a number or a fraction such as 1/20")
+    return parse_fraction(value, N_("write the fluctuation as a number or a fraction such as 1/20"))
 
 
 class LinkageFlywheelSpec(StrictModel):
@@ -237,13 +236,11 @@ def check_references(s: LinkageSection, out: Problems | None = None) -> dict[str
     known = set(s.frame_points_mm)
     if s.crank.pivot not in known:
         out.add(("crank", "pivot"), s.crank.pivot,
-                f"crank.pivot '{s.crank.pivot}' is not a frame point; frame points: "
-                f"{', '.join(sorted(known))}",
-                f"crank.pivot '{s.crank.pivot}' 不是机架点；机架点：{'、'.join(sorted(known))}")
+                N_("crank.pivot '{pivot}' is not a frame point; frame points: {names}"),
+                pivot=s.crank.pivot, names=Listed(sorted(known)))
     if s.crank.tip in known:
         out.add(("crank", "tip"), s.crank.tip,
-                f"crank.tip '{s.crank.tip}' is already a point; choose a new name",
-                f"crank.tip '{s.crank.tip}' 已是一个点；请另取新名")
+                N_("crank.tip '{tip}' is already a point; choose a new name"), tip=s.crank.tip)
     known.add(s.crank.tip)
     members: dict[str, list[str]] = {s.crank.link: [s.crank.pivot, s.crank.tip]}
     shown: dict[str, int] = {}
@@ -255,10 +252,9 @@ def check_references(s: LinkageSection, out: Problems | None = None) -> dict[str
             if label in shown:
                 j = shown[label]
                 out.add(("groups", i, "name"), label,
-                        f"{where}: the name '{label}' is already used by groups[{j}]; every group "
-                        "needs its own name (it labels its links and forces)",
-                        f"{where}：名称 '{label}' 已被 groups[{j}] 使用；每个杆组须有自己的名称"
-                        "（用于标注其构件和力）")
+                        N_("{where}: the name '{label}' is already used by groups[{j}]; every "
+                           "group needs its own name (it labels its links and forces)"),
+                        where=where, label=label, j=j)
             else:
                 shown[label] = i
         missing = [p for p in needs if p not in known]
@@ -268,36 +264,32 @@ def check_references(s: LinkageSection, out: Problems | None = None) -> dict[str
                 field = "slider_at" if g.slider_at in missing else "pivot"
             listed = ", ".join(repr(p) for p in missing)
             out.add(("groups", i, field), ", ".join(missing),
-                    f"{where}: point {listed} is not defined before this group; defined so far: "
-                    f"{', '.join(sorted(known))}",
-                    f"{where}：点 {listed} 在此杆组之前未定义；已定义的点：{'、'.join(sorted(known))}")
+                    N_("{where}: point {listed} is not defined before this group; defined so far: "
+                       "{names}"), where=where, listed=listed, names=Listed(sorted(known)))
         for p in makes:
             if p in known:
                 out.add(("groups", i, "name" if g.type == "point" else "joint"), p,
-                        f"{where}: point '{p}' is already defined; choose a new name",
-                        f"{where}：点 '{p}' 已定义；请另取新名")
+                        N_("{where}: point '{p}' is already defined; choose a new name"),
+                        where=where, p=p)
         if g.type == "point":
             if g.link not in members:
                 out.add(("groups", i, "link"), g.link,
-                        f"{where}: link '{g.link}' is not defined before this point; links so "
-                        f"far: {', '.join(members)}",
-                        f"{where}：构件 '{g.link}' 在此点之前未定义；已有构件：{'、'.join(members)}")
+                        N_("{where}: link '{link}' is not defined before this point; links so "
+                           "far: {names}"), where=where, link=g.link, names=Listed(members))
             elif g.origin not in members[g.link]:
                 out.add(("groups", i, "origin"), g.origin,
-                        f"{where}: origin '{g.origin}' is not a point of link '{g.link}' (its "
-                        f"points: {', '.join(members[g.link])})",
-                        f"{where}：origin '{g.origin}' 不是构件 '{g.link}' 上的点（其上的点："
-                        f"{'、'.join(members[g.link])}）")
+                        N_("{where}: origin '{origin}' is not a point of link '{link}' (its "
+                           "points: {names})"),
+                        where=where, origin=g.origin, link=g.link, names=Listed(members[g.link]))
         else:
             if len(set(g.links)) != 2:
                 out.add(("groups", i, "links"), ", ".join(g.links),
-                        f"{where}: the two links need different ids",
-                        f"{where}：两个构件须有不同的编号")
+                        N_("{where}: the two links need different ids"), where=where)
             for link in g.links:
                 if link in members:
                     out.add(("groups", i, "links"), ", ".join(g.links),
-                            f"{where}: link '{link}' is already used; each group adds two new links",
-                            f"{where}：构件 '{link}' 已被使用；每个杆组增加两个新构件")
+                            N_("{where}: link '{link}' is already used; each group adds two new "
+                               "links"), where=where, link=link)
                     break
         for link, pts in links:
             lst = members.setdefault(link, [])
@@ -309,51 +301,45 @@ def check_references(s: LinkageSection, out: Problems | None = None) -> dict[str
             where = next((("groups", i, "links") for i, g in enumerate(s.groups)
                           if g.type != "point" and FRAME_LINK in g.links), where)
         out.add(where, FRAME_LINK,
-                f"link '{FRAME_LINK}' is the frame (the course numbers it 1); number the moving "
-                "links from 2 (the crank) on",
-                f"构件 '{FRAME_LINK}' 是机架（课程中编号为 1）；活动构件从 2（曲柄）起编号")
+                N_("link '{FRAME_LINK}' is the frame (the course numbers it 1); number the moving "
+                   "links from 2 (the crank) on"), FRAME_LINK=FRAME_LINK)
     o = s.output
     if o.point is not None and o.point not in known:
         out.add(("output", "point"), o.point,
-                f"output.point '{o.point}' is not a point of the linkage; its points: "
-                f"{', '.join(sorted(known))}",
-                f"output.point '{o.point}' 不是机构上的点；机构上的点：{'、'.join(sorted(known))}")
+                N_("output.point '{point}' is not a point of the linkage; its points: {names}"),
+                point=o.point, names=Listed(sorted(known)))
     if o.link is not None and o.link not in members:
         out.add(("output", "link"), o.link,
-                f"output.link '{o.link}' is not a moving link; links: {', '.join(members)}",
-                f"output.link '{o.link}' 不是活动构件；活动构件：{'、'.join(members)}")
+                N_("output.link '{link}' is not a moving link; links: {names}"),
+                link=o.link, names=Listed(members))
     for i, m in enumerate(s.masses):
         if m.link not in members:
             out.add(("masses", i, "link"), m.link,
-                    f"masses[{i}].link '{m.link}' is not a moving link; links: {', '.join(members)}",
-                    f"masses[{i}].link '{m.link}' 不是活动构件；活动构件：{'、'.join(members)}")
+                    N_("masses[{i}].link '{link}' is not a moving link; links: {names}"),
+                    i=i, link=m.link, names=Listed(members))
         elif m.com not in members[m.link]:
             out.add(("masses", i, "com"), m.com,
-                    f"masses[{i}].com '{m.com}' is not a point of link '{m.link}' (its points: "
-                    f"{', '.join(members[m.link])}); add it with a `point` group",
-                    f"masses[{i}].com '{m.com}' 不是构件 '{m.link}' 上的点（其上的点："
-                    f"{'、'.join(members[m.link])}）；可用 `point` 杆组添加")
+                    N_("masses[{i}].com '{com}' is not a point of link '{link}' (its points: "
+                       "{names}); add it with a `point` group"),
+                    i=i, com=m.com, link=m.link, names=Listed(members[m.link]))
     for i, r in enumerate(s.resistances):
         if r.link not in members or r.point not in members[r.link]:
             field = "link" if r.link not in members else "point"
             out.add(("resistances", i, field), r.point if field == "point" else r.link,
-                    f"resistances[{i}]: point '{r.point}' is not a point of link '{r.link}'",
-                    f"resistances[{i}]：点 '{r.point}' 不是构件 '{r.link}' 上的点")
+                    N_("resistances[{i}]: point '{point}' is not a point of link '{link}'"),
+                    i=i, point=r.point, link=r.link)
         if r.active_mm is not None and o.link is not None:
             out.add(("resistances", i, "active_mm"), r.active_mm,
-                    f"resistances[{i}]: the output is a link (output.link): give its window as "
-                    "active_deg, not active_mm",
-                    f"resistances[{i}]：输出为构件（output.link）：作用区间应以 active_deg 给出，而不是 active_mm")
+                    N_("resistances[{i}]: the output is a link (output.link): give its window as "
+                       "active_deg, not active_mm"), i=i)
         if r.active_deg is not None and o.point is not None:
             out.add(("resistances", i, "active_deg"), r.active_deg,
-                    f"resistances[{i}]: the output is a point (output.point): give its window as "
-                    "active_mm, not active_deg",
-                    f"resistances[{i}]：输出为点（output.point）：作用区间应以 active_mm 给出，而不是 active_deg")
+                    N_("resistances[{i}]: the output is a point (output.point): give its window "
+                       "as active_mm, not active_deg"), i=i)
         for key, window in (("active_mm", r.active_mm), ("active_deg", r.active_deg)):
             if window is not None and not window[0] < window[1]:
                 out.add(("resistances", i, key), window,
-                        f"resistances[{i}]: the active window needs from < to",
-                        f"resistances[{i}]：作用区间须满足 起点 < 终点")
+                        N_("resistances[{i}]: the active window needs from < to"), i=i)
     if own:
         out.raise_any()
     return members
@@ -384,15 +370,15 @@ def check_requests(s: LinkageSection, analysis: AnalysisSettings, out, prefix: s
     for i, name in enumerate(analysis.points):
         if name not in points:
             out.add((prefix, "points", i), name,
-                    f"{name!r} is not a point of the linkage; its points: {', '.join(points)}",
-                    f"{name!r} 不是机构上的点；机构上的点：{'、'.join(points)}")
+                    N_("{name!r} is not a point of the linkage; its points: {names}"),
+                    name=name, names=Listed(points))
     links = link_ids(s)
     for i, code in enumerate(analysis.events):
         link = code.partition(":")[2]
         if link and link not in links:
             out.add((prefix, "events", i), code,
-                    f"link {link!r} is not a moving link; links: {', '.join(links)}",
-                    f"构件 {link!r} 不是活动构件；活动构件：{'、'.join(links)}")
+                    N_("link {link!r} is not a moving link; links: {names}"),
+                    link=link, names=Listed(links))
 
 
 def linkage_to_model(s: LinkageSection, analysis: AnalysisSettings, names: dict | None = None):

@@ -27,8 +27,10 @@ from typing import Any, get_args
 import yaml
 from pydantic import BaseModel, ValidationError
 
+from ..i18n import N_, tr
 from ..registry import Lookup, resolve
 from .class_table import TableError, read_group_file
+from .common import Given, Msg
 from .groups import GROUPS_KEY, GroupError, GroupTable, apply_group, choose, parse_groups
 
 
@@ -38,28 +40,52 @@ BRIEF_MODELS: Mapping[str, type[BaseModel]] = Lookup(lambda e: resolve(e.brief))
 
 @dataclass(frozen=True)
 class BriefProblem:
-    """One problem: the field ``path``, the ``value`` found and what is ``allowed`` there
-    (English; ``allowed_zh`` the same in Chinese, when known)."""
+    """One problem: the field ``path``, the ``value`` found and what is ``allowed`` there:
+    English text, a :class:`~mechdesign.brief.common.Msg` (msgid and fields) when it can be
+    shown in other languages; ``_zh`` the Chinese text a caller wrote itself (modules not yet
+    converted to the catalogue)."""
 
     path: str
     value: str
     allowed: str
-    allowed_zh: str | None = None
+    _zh: str | None = None
+
+    @property
+    def allowed_zh(self) -> str | None:
+        """What is allowed, in Chinese (None when only English is known)."""
+        if isinstance(self.allowed, Msg):
+            return self.allowed.text("zh")
+        return self._zh
 
     def __str__(self) -> str:
-        if not self.value:
-            return f"{self.path}: {self.allowed}"
-        return f"{self.path}: {self.value} — {self.allowed}"
+        return self.text("en")
 
     def text(self, lang: str) -> str:
-        """The line in ``lang`` ("zh" or "en"); the value "missing" is said in Chinese too."""
-        if lang != "zh":
-            return str(self)
-        value = {"missing": "缺少", "empty": "空（未填值）", "the whole section": "整节",
-                 "a mapping (section)": "映射（一节）"}.get(self.value, self.value)
+        """The line in ``lang``; the values "missing", "empty" … are translated too."""
+        _ = tr(lang)
+        if not _.zh:
+            value, allowed = self.value, str.__str__(self.allowed)
+        else:
+            value = _value_word(_, self.value)
+            allowed = self.allowed.text(lang) if isinstance(self.allowed, Msg) else \
+                (self._zh or self.allowed)
         if not value:
-            return f"{self.path}：{self.allowed_zh or self.allowed}"
-        return f"{self.path}：{value} — {self.allowed_zh or self.allowed}"
+            return _("{path}: {allowed}", path=self.path, allowed=allowed)
+        return _("{path}: {value} — {allowed}", path=self.path, value=value, allowed=allowed)
+
+
+def _value_word(_, value: str) -> str:
+    """A problem's value in the reader's language: the words the loader shows for a value
+    (missing, empty …) translated, anything else as found."""
+    if value == "missing":
+        return _.pgettext("problem value", "missing")
+    if value == "empty":
+        return _.pgettext("problem value", "empty")
+    if value == "the whole section":
+        return _.pgettext("problem value", "the whole section")
+    if value == "a mapping (section)":
+        return _.pgettext("problem value", "a mapping (section)")
+    return value
 
 
 class BriefError(ValueError):
@@ -68,35 +94,33 @@ class BriefError(ValueError):
 
     def __init__(self, source: str, problems: list[BriefProblem]):
         self.source, self.problems = source, problems
-        head = f"{source}: {len(problems)} problem{'s' if len(problems) != 1 else ''} in the brief"
-        super().__init__("\n".join([head] + [f"  {p}" for p in problems]))
+        super().__init__(self.text("en"))
+
+    def _head(self, _) -> str:
+        n = len(self.problems)
+        if n == 1:
+            return _("{source}: {n} problem in the brief", source=self.source, n=n)
+        return _("{source}: {n} problems in the brief", source=self.source, n=n)
 
     def text(self, lang: str) -> str:
-        if lang != "zh":
-            return str(self)
-        head = f"{self.source}：任务书中有 {len(self.problems)} 处问题"
-        return "\n".join([head] + [f"  {p.text('zh')}" for p in self.problems])
+        _ = tr(lang)
+        return "\n".join([self._head(_)] + [f"  {p.text(lang)}" for p in self.problems])
 
 
 class FeasibilityError(BriefError):
     """The brief is valid but its data admit no design: every problem the machine's
     feasibility checks found (run once per run, after validation), each at its field."""
 
-    def __init__(self, source: str, problems: list[BriefProblem]):
-        super().__init__(source, problems)
-        n = len(problems)
-        head = (f"{source}: the design is infeasible with the brief's data "
-                f"({n} problem{'s' if n != 1 else ''})")
-        self.args = ("\n".join([head] + [f"  {p}" for p in problems]),)
+    def _head(self, _) -> str:
+        n = len(self.problems)
+        if n == 1:
+            return _("{source}: the design is infeasible with the brief's data ({n} problem)",
+                     source=self.source, n=n)
+        return _("{source}: the design is infeasible with the brief's data ({n} problems)",
+                 source=self.source, n=n)
 
     def __str__(self) -> str:
         return self.args[0]
-
-    def text(self, lang: str) -> str:
-        if lang != "zh":
-            return str(self)
-        head = f"{self.source}：按任务书数据无法完成设计（{len(self.problems)} 处问题）"
-        return "\n".join([head] + [f"  {p.text('zh')}" for p in self.problems])
 
 
 def value_at(brief: BaseModel, path: str) -> str:
@@ -146,10 +170,11 @@ MAX_DIGITS = 300           # digits of an integer; more is read as inf (beyond a
 class _LimitError(yaml.YAMLError):
     """The YAML data break one of the limits above, at field ``path``."""
 
-    def __init__(self, path: list[str], value: str, allowed: str, allowed_zh: str):
+    def __init__(self, path: list[str], value: str, msgid: str, /, **fields):
+        allowed = msgid if isinstance(msgid, Msg) else Msg(msgid, **fields)
         super().__init__(f"{value}: {allowed}")
         self.path = ".".join(path) or "(top level)"
-        self.value, self.allowed, self.allowed_zh = value, allowed, allowed_zh
+        self.value, self.allowed = value, allowed
 
 
 class _UniqueKeyLoader(yaml.SafeLoader):
@@ -165,9 +190,8 @@ class _UniqueKeyLoader(yaml.SafeLoader):
         self._values += n
         if self._values > MAX_VALUES:
             raise _LimitError(self._path, f"more than {MAX_VALUES} values",
-                              "a brief holds at most that many values (anchors/aliases counted "
-                              "each time they are used)",
-                              f"任务书至多 {MAX_VALUES} 个值（锚点/别名每用一次都计数）")
+                              N_("a brief holds at most that many values (anchors/aliases counted "
+                                 "each time they are used)"), MAX_VALUES=MAX_VALUES)
 
     def compose_node(self, parent, index):
         if self.check_event(yaml.AliasEvent):
@@ -177,15 +201,15 @@ class _UniqueKeyLoader(yaml.SafeLoader):
                 size = getattr(node, "_md_size", None)
                 if size is None:
                     raise _LimitError(self._path, f"*{anchor}",
-                                      "an alias cannot refer to the list or mapping that contains it",
-                                      "别名不能引用包含它自身的列表或映射")
+                                      N_("an alias cannot refer to the list or mapping that "
+                                         "contains it"))
                 self._count(size)
             return super().compose_node(parent, index)  # an undefined alias: YAML's error
         if self.check_event(yaml.SequenceStartEvent, yaml.MappingStartEvent) \
                 and len(self._path) >= MAX_DEPTH:
             raise _LimitError(self._path, f"lists or mappings nested more than {MAX_DEPTH} deep",
-                              "a brief nests sections a few levels deep",
-                              f"列表或映射嵌套超过 {MAX_DEPTH} 层；任务书只有几层")
+                              Msg.pgettext("nesting limit", "a brief nests sections a few levels deep",
+                                           MAX_DEPTH=MAX_DEPTH))
         self._count(1)
         return super().compose_node(parent, index)
 
@@ -194,10 +218,12 @@ class _UniqueKeyLoader(yaml.SafeLoader):
         node._md_size = 1
         return node
 
-    def _too_many(self, what: str, zh: str):
-        return _LimitError(self._path, f"a {what} of more than {MAX_ITEMS} items",
-                           f"no {what} in a brief is that long",
-                           f"{zh}超过 {MAX_ITEMS} 项；任务书中没有这么长的{zh}")
+    def _too_many(self, what: str):
+        if what == "list":
+            allowed = Msg(N_("no list in a brief is that long"), MAX_ITEMS=MAX_ITEMS)
+        else:
+            allowed = Msg(N_("no mapping in a brief is that long"), MAX_ITEMS=MAX_ITEMS)
+        return _LimitError(self._path, f"a {what} of more than {MAX_ITEMS} items", allowed)
 
     def compose_sequence_node(self, anchor):
         start = self.get_event()
@@ -211,7 +237,7 @@ class _UniqueKeyLoader(yaml.SafeLoader):
         while not self.check_event(yaml.SequenceEndEvent):
             index = len(node.value)
             if index >= MAX_ITEMS:
-                raise self._too_many("list", "列表")
+                raise self._too_many("list")
             self._path.append(str(index))
             child = self.compose_node(node, index)
             self._path.pop()
@@ -232,16 +258,16 @@ class _UniqueKeyLoader(yaml.SafeLoader):
         size = 1
         while not self.check_event(yaml.MappingEndEvent):
             if len(node.value) >= MAX_ITEMS:
-                raise self._too_many("mapping", "映射")
+                raise self._too_many("mapping")
             key = self.compose_node(node, None)
             if not isinstance(key, yaml.ScalarNode):
                 raise _LimitError(self._path, "a list or mapping used as a key",
-                                  "a key is a field name (or a group label)",
-                                  "键须为字段名（或分组标签），不能是列表或映射")
+                                  N_("a key is a field name (or a group label)"))
             if len(key.value) > MAX_KEY_CHARS:
                 raise _LimitError(self._path, f"a key of {len(key.value)} characters "
-                                  f"({key.value[:20]!r}…)", f"a key has at most {MAX_KEY_CHARS} characters",
-                                  f"键至多 {MAX_KEY_CHARS} 个字符")
+                                  f"({key.value[:20]!r}…)", N_("a key has at most {MAX_KEY_CHARS} "
+                                                                 "characters"),
+                                                              MAX_KEY_CHARS=MAX_KEY_CHARS)
             self._path.append(key.value)
             value = self.compose_node(node, key)
             self._path.pop()
@@ -349,52 +375,46 @@ def _field_info(model: type[BaseModel], loc: tuple) -> tuple[type[BaseModel] | N
     return parent, info
 
 
-#: pydantic error type → Chinese text of what is allowed ({…} from the error's context).
-_ZH = {
-    "greater_than": "须大于 {gt}", "greater_than_equal": "须不小于 {ge}",
-    "less_than": "须小于 {lt}", "less_than_equal": "须不大于 {le}",
-    "multiple_of": "须为 {multiple_of} 的整数倍",
-    "int_type": "须为整数", "int_parsing": "须为整数", "int_from_float": "须为整数（不能带小数）",
-    "float_type": "须为数值", "float_parsing": "须为数值",
-    "finite_number": "须为有限数值（不能是 inf 或 nan）",
-    "string_type": "须为文字（字符串）", "bool_type": "须为 true 或 false",
-    "bool_parsing": "须为 true 或 false",
-    "literal_error": "须为以下之一：{expected}",
-    "too_short": "至少需 {min_length} 项（现有 {actual_length} 项）",
-    "too_long": "至多 {max_length} 项（现有 {actual_length} 项）",
-    "string_too_short": "至少 {min_length} 个字符", "string_too_long": "至多 {max_length} 个字符",
-    "string_pattern_mismatch": "格式不符（须匹配 {pattern}）",
-    "dict_type": "须为映射（键: 值）", "model_type": "须为映射（键: 值）的一节",
-    "model_attributes_type": "须为映射（键: 值）的一节",
-    "list_type": "须为列表", "tuple_type": "须为列表",
-    "date_type": "须为日期（YYYY-MM-DD）", "date_parsing": "须为日期（YYYY-MM-DD）",
-    "date_from_datetime_parsing": "须为日期（YYYY-MM-DD）",
-    "union_tag_invalid": "类型 {tag} 不存在；可用：{expected_tags}",
-    "union_tag_not_found": "缺少区分字段 {discriminator}",
-    "enum": "须为以下之一：{expected}",
+#: pydantic error type → what is allowed, in the project's English words (the msgid: the
+#: catalogue gives its other languages, the {…} fields from the error's context). The kinds
+#: of _OWN_WORDS are shown in these words in English too; the others in pydantic's message
+#: with "Input should be" said as "must be" (the msgid then only names it for translation).
+_ALLOWED = {
+    "greater_than": N_("must be greater than {gt}"),
+    "greater_than_equal": N_("must be greater than or equal to {ge}"),
+    "less_than": N_("must be less than {lt}"),
+    "less_than_equal": N_("must be less than or equal to {le}"),
+    "multiple_of": N_("must be a multiple of {multiple_of}"),
+    "int_type": N_("must be a valid integer"),
+    "int_parsing": N_("must be a valid integer, unable to parse string as an integer"),
+    "int_from_float": N_("must be a whole number (no decimals)"),
+    "float_type": N_("must be a valid number"),
+    "float_parsing": N_("must be a valid number, unable to parse string as a number"),
+    "finite_number": N_("must be a finite number (not inf or nan)"),
+    "string_type": N_("must be text (a string)"), "bool_type": N_("must be true or false"),
+    "bool_parsing": N_("must be true or false"),
+    "literal_error": N_("must be one of: {expected}"),
+    "too_short": N_("must have at least {min_length} item(s) (it has {actual_length})"),
+    "too_long": N_("must have at most {max_length} item(s) (it has {actual_length})"),
+    "string_too_short": N_("must have at least {min_length} character(s)"),
+    "string_too_long": N_("must have at most {max_length} character(s)"),
+    "string_pattern_mismatch": N_("does not have the required form (it must match {pattern})"),
+    "dict_type": N_("must be a mapping (key: value)"),
+    "model_type": N_("must be a section: a mapping of key: value"),
+    "model_attributes_type": N_("must be a section: a mapping of key: value"),
+    "list_type": N_("must be a list"), "tuple_type": N_("must be a list"),
+    "date_type": N_("must be a valid date"), "date_parsing": N_("must be a valid date"),
+    "date_from_datetime_parsing": N_("must be a valid date"),
+    "union_tag_invalid": N_("type {tag} does not exist; allowed: {expected_tags}"),
+    "union_tag_not_found": N_("the field {discriminator} is needed to tell the kind"),
+    "enum": N_("must be one of: {expected}"),
 }
-
-
-#: pydantic error type → English text of what is allowed, in the project's words (the
-#: others: pydantic's message with "Input should be" said as "must be").
-_EN = {
-    "int_from_float": "must be a whole number (no decimals)",
-    "finite_number": "must be a finite number (not inf or nan)",
-    "dict_type": "must be a mapping (key: value)", "mapping_type": "must be a mapping (key: value)",
-    "model_type": "must be a section: a mapping of key: value",
-    "model_attributes_type": "must be a section: a mapping of key: value",
-    "union_tag_invalid": "type {tag} does not exist; allowed: {expected_tags}",
-    "union_tag_not_found": "the field {discriminator} is needed to tell the kind",
-    "too_short": "must have at least {min_length} item(s) (it has {actual_length})",
-    "too_long": "must have at most {max_length} item(s) (it has {actual_length})",
-    "string_too_short": "must have at least {min_length} character(s)",
-    "string_too_long": "must have at most {max_length} character(s)",
-    "string_pattern_mismatch": "does not have the required form (it must match {pattern})",
-    "literal_error": "must be one of: {expected}", "enum": "must be one of: {expected}",
-    "list_type": "must be a list", "tuple_type": "must be a list",
-    "string_type": "must be text (a string)", "bool_type": "must be true or false",
-    "bool_parsing": "must be true or false",
-}
+#: the kinds shown in the words of _ALLOWED in English too (and one without a translation)
+_OWN_WORDS = {"int_from_float", "finite_number", "dict_type", "model_type", "model_attributes_type",
+              "union_tag_invalid", "union_tag_not_found", "too_short", "too_long",
+              "string_too_short", "string_too_long", "string_pattern_mismatch", "literal_error",
+              "enum", "list_type", "tuple_type", "string_type", "bool_type", "bool_parsing"}
+_EN_ONLY = {"mapping_type": "must be a mapping (key: value)"}
 _PYDANTIC_WORDS = (("Input should be", "must be"), ("Input should", "must"),
                    ("String should", "must"), ("Value should", "must"), ("should be", "must be"),
                    ("Field required", "required"), ("Input tag", "tag"))
@@ -402,7 +422,7 @@ _PYDANTIC_WORDS = (("Input should be", "must be"), ("Input should", "must"),
 
 def _en_allowed(kind: str, err: dict, msg: str) -> str:
     """What is allowed in English, in the project's words (never pydantic's wording or URL)."""
-    template = _EN.get(kind)
+    template = _ALLOWED.get(kind) if kind in _OWN_WORDS else _EN_ONLY.get(kind)
     if template is not None:
         try:
             return template.format(**(err.get("ctx") or {}))
@@ -415,25 +435,57 @@ def _en_allowed(kind: str, err: dict, msg: str) -> str:
     return msg.strip() or "not allowed here"
 
 
-def _zh_allowed(kind: str, err: dict, msg: str) -> str | None:
-    """Chinese text for pydantic error ``kind`` (None when unknown)."""
+class _Shown(Msg):
+    """A message shown in English as ``en`` (as the loader words it) and in other languages
+    as the message ``inner``."""
+
+    def __new__(cls, en: str, inner: Msg | None = None):
+        self = str.__new__(cls, en)
+        self.msgid, self.context, self.fields, self.inner = en, None, {}, inner
+        return self
+
+    def text(self, lang: str) -> str:
+        return self.inner.text(lang) if self.inner is not None and tr(lang).zh else str.__str__(self)
+
+
+class _Alternatives(Msg):
+    """A pydantic list of alternatives ("'a', 'b' or 'c'"): its last " or " said with the
+    catalogue's list separator in other languages ('a', 'b'、'c')."""
+
+    def __new__(cls, text: str):
+        self = str.__new__(cls, text)
+        self.msgid, self.context, self.fields = text, None, {}
+        return self
+
+    def text(self, lang: str) -> str:
+        _ = tr(lang)
+        plain = str.__str__(self)
+        return plain if not _.zh else \
+            plain.replace("' or '", "'" + _.pgettext("list separator", ", ") + "'")
+
+
+def _translatable(kind: str, err: dict, msg: str) -> Msg | None:
+    """What is allowed as a message that has its other languages (None when only the English
+    is known)."""
     if kind in ("value_error", "assertion_error"):
         from ..core.errors import chinese_of
 
         ctx = err.get("ctx") or {}
-        if isinstance(ctx.get("zh"), str):     # a check that wrote its Chinese text (Problems, invalid)
-            return ctx["zh"]
-        return chinese_of(msg, ctx.get("error") if isinstance(ctx.get("error"), BaseException)
-                          else None)
-    template = _ZH.get(kind)
+        if isinstance(ctx.get("msg"), Msg):     # a check that wrote a message (Problems, invalid)
+            return ctx["msg"]
+        zh = chinese_of(msg, ctx.get("error") if isinstance(ctx.get("error"), BaseException)
+                        else None)
+        return None if zh is None else Given(msg, zh)
+    template = _ALLOWED.get(kind)
     if template is None:
         return None
-    ctx = {k: (v.replace("' or '", "'、'") if isinstance(v, str) else v)
+    ctx = {k: (_Alternatives(v) if isinstance(v, str) else v)
            for k, v in (err.get("ctx") or {}).items()}
     try:
-        return template.format(**ctx)
+        template.format(**ctx)
     except (KeyError, IndexError, ValueError):
         return None
+    return Msg(template, **ctx)
 
 
 def _value_of(kind: str, value: Any) -> str:
@@ -462,7 +514,7 @@ def _field_named(err: dict) -> dict:
     Checks written with :class:`~mechdesign.brief.common.Problems` name their field."""
     value = err.get("input")
     if err["type"] != "value_error" or not isinstance(value, dict) \
-            or isinstance((err.get("ctx") or {}).get("zh"), str):
+            or isinstance((err.get("ctx") or {}).get("msg"), Msg):
         return err
     for token in _NAMED_PATH.findall(err["msg"].removeprefix("Value error, ")):
         if not any(c in token for c in "_.["):     # a word of the text, not a field name
@@ -487,19 +539,26 @@ def _problem(model: type[BaseModel], err: dict) -> BriefProblem:
     path = ".".join(str(p) for p in loc) or "(top level)"
     kind = err["type"]
     parent, info = _field_info(model, loc)
-    unit = f" ({info.description})" if info is not None and info.description else ""
-    unit_zh = f"（{info.description}）" if unit else ""
+    description = info.description if info is not None and info.description else ""
     if kind == "extra_forbidden":
         allowed = ", ".join((f.alias or k) for k, f in parent.model_fields.items()) if parent else ""
         return BriefProblem(path, _value_of(kind, err.get("input")),
-                            f"unknown field; allowed here: {allowed}",
-                            f"未知字段；此处可用的字段：{allowed}")
+                            Msg(N_("unknown field; allowed here: {allowed}"), allowed=allowed))
     if kind == "missing":
-        return BriefProblem(path, "missing", f"required{unit}", f"必填{unit_zh}")
+        return BriefProblem(path, "missing",
+                            Msg(N_("required ({description})"), description=description)
+                            if description else Msg.pgettext("brief field", "required"))
     msg = err["msg"].removeprefix("Value error, ")
-    zh = _zh_allowed(kind, err, msg)
-    return BriefProblem(path, _value_of(kind, err.get("input")), f"{_en_allowed(kind, err, msg)}{unit}",
-                        None if zh is None else f"{zh}{unit_zh}")
+    en = _en_allowed(kind, err, msg)
+    message = _translatable(kind, err, msg)
+    if message is None:
+        return BriefProblem(path, _value_of(kind, err.get("input")),
+                            f"{en} ({description})" if description else en)
+    if str.__str__(message) != en:
+        message = _Shown(en, message)
+    if description:
+        message = Msg(N_("{allowed} ({description})"), allowed=message, description=description)
+    return BriefProblem(path, _value_of(kind, err.get("input")), message)
 
 
 def _models_in(annotation: Any) -> list[type[BaseModel]]:
@@ -550,21 +609,24 @@ def _unit_hint(err: dict, problem: BriefProblem) -> BriefProblem:
     number, written = match.groups()
     name = next((p for p in reversed(err["loc"]) if isinstance(p, str)), "")
     unit = next((u for suffix, u in _UNITS if name.endswith(suffix)), None)
-    kind = "a whole number" if err["type"].startswith("int") else "a number"
-    kind_zh = "整数" if err["type"].startswith("int") else "数值"
+    whole = err["type"].startswith("int")
     if not written:
-        return replace(problem, allowed=f"{kind}, not text: write {number} without quotes",
-                       allowed_zh=f"须为{kind_zh}而非文字：写作 {number}，不加引号")
-    if unit is None:
-        return replace(problem, allowed=f"{kind} without a unit: write {number}",
-                       allowed_zh=f"须为{kind_zh}，不带单位：写作 {number}")
-    if written == unit:
-        return replace(problem, allowed=f"{kind} in {unit}, without the unit: write {number}",
-                       allowed_zh=f"须为以 {unit} 计的{kind_zh}，不带单位：写作 {number}")
-    return replace(problem, allowed=f"{kind} in {unit}, without the unit: convert {value.strip()!r} "
-                                    f"to {unit} and write the number alone",
-                   allowed_zh=f"须为以 {unit} 计的{kind_zh}，不带单位：请将 {value.strip()!r} 换算为 "
-                              f"{unit} 后只写数字")
+        allowed = Msg(N_("a whole number, not text: write {number} without quotes"), number=number) \
+            if whole else Msg(N_("a number, not text: write {number} without quotes"), number=number)
+    elif unit is None:
+        allowed = Msg(N_("a whole number without a unit: write {number}"), number=number) if whole \
+            else Msg(N_("a number without a unit: write {number}"), number=number)
+    elif written == unit:
+        allowed = Msg(N_("a whole number in {unit}, without the unit: write {number}"),
+                      unit=unit, number=number) if whole else \
+            Msg(N_("a number in {unit}, without the unit: write {number}"), unit=unit, number=number)
+    else:
+        given = value.strip()
+        allowed = Msg(N_("a whole number in {unit}, without the unit: convert {given!r} to {unit} "
+                         "and write the number alone"), unit=unit, given=given) if whole else \
+            Msg(N_("a number in {unit}, without the unit: convert {given!r} to {unit} and write the "
+                   "number alone"), unit=unit, given=given)
+    return replace(problem, allowed=allowed, _zh=None)
 
 
 def _merge_alternatives(problems: list[BriefProblem]) -> list[BriefProblem]:
@@ -575,17 +637,19 @@ def _merge_alternatives(problems: list[BriefProblem]) -> list[BriefProblem]:
         key = (p.path, p.value)
         if key in merged:
             first = merged[key]
-            zh = None if first.allowed_zh is None and p.allowed_zh is None else \
-                f"{first.allowed_zh or first.allowed}；或：{p.allowed_zh or p.allowed}"
-            merged[key] = replace(first, allowed=f"{first.allowed}; or: {p.allowed}", allowed_zh=zh)
+            if isinstance(first.allowed, Msg) or isinstance(p.allowed, Msg):
+                allowed = Msg(N_("{first}; or: {other}"), first=first.allowed, other=p.allowed)
+            else:
+                allowed = f"{first.allowed}; or: {p.allowed}"
+            merged[key] = replace(first, allowed=allowed)
         else:
             merged[key] = p
     return list(merged.values())
 
 
 def _top_level_problem(data: Any) -> BriefProblem:
-    allowed = "a brief is a YAML mapping of sections: machine: …, report: …, then the machine's data"
-    zh = "任务书须为由各节组成的 YAML 映射：machine: …、report: …，然后是机器的数据"
+    allowed = Msg(N_("a brief is a YAML mapping of sections: machine: …, report: …, then the "
+                     "machine's data"))
     name = type(data).__name__
     if data is None:
         shown = f"an empty file ({name})"
@@ -593,7 +657,7 @@ def _top_level_problem(data: Any) -> BriefProblem:
         shown = f"a {name}"
     else:
         shown = f"{'text' if isinstance(data, str) else 'a value'} ({name}) {_show(data)}"
-    return BriefProblem("(top level)", shown, allowed, zh)
+    return BriefProblem("(top level)", shown, allowed)
 
 
 def parse_brief(data: Any, source: str = "brief", located: dict[str, str] | None = None) -> BaseModel:
@@ -611,7 +675,7 @@ def parse_brief(data: Any, source: str = "brief", located: dict[str, str] | None
         names = ", ".join(sorted(BRIEF_MODELS))
         raise BriefError(source, [BriefProblem(
             "machine", _show(machine) if "machine" in data else "missing",
-            f"one of: {names}", f"须为以下之一：{names}")])
+            Msg(N_("one of: {names}"), names=names))])
     try:
         return model.model_validate(data)
     except ValidationError as exc:
@@ -632,8 +696,9 @@ def _relocate(problem: BriefProblem, located: dict[str, str]) -> BriefProblem:
     return problem
 
 
-def _file_problem(source: str, value: str, allowed: str, allowed_zh: str) -> BriefError:
-    return BriefError(source, [BriefProblem("(file)", value, allowed, allowed_zh)])
+def _file_problem(source: str, value: str, msgid: str, /, **fields) -> BriefError:
+    allowed = msgid if isinstance(msgid, Msg) else Msg(msgid, **fields)
+    return BriefError(source, [BriefProblem("(file)", value, allowed)])
 
 
 def _line_col(text: str | bytes, index: int) -> str:
@@ -651,68 +716,61 @@ def read_brief_data(path: str | Path) -> Any:
         kind = "folder" if path.is_dir() else "file" if path.is_file() else \
             "other" if path.exists() else "missing"
     except (OSError, ValueError):  # e.g. a NUL character in the path
-        raise _file_problem(source, repr(source)[:60], "not a valid file path",
-                            "不是有效的文件路径") from None
+        raise _file_problem(source, repr(source)[:60], N_("not a valid file path")) from None
     if kind == "folder":
-        raise _file_problem(source, "a folder", "give a brief file (.yaml), not a folder",
-                            "这是文件夹；请给出任务书文件（.yaml）")
+        raise _file_problem(source, "a folder", N_("give a brief file (.yaml), not a folder"))
     if kind == "missing":
-        raise _file_problem(source, "no such file", "give the path of an existing brief file",
-                            "文件不存在；请给出已有任务书文件的路径")
+        raise _file_problem(source, "no such file", N_("give the path of an existing brief file"))
     if kind == "other":   # a pipe or a device would block or never end
-        raise _file_problem(source, "not a regular file", "a brief is a text file (.yaml)",
-                            "不是普通文件；任务书是文本文件（.yaml）")
+        raise _file_problem(source, "not a regular file", N_("a brief is a text file (.yaml)"))
     try:
         with path.open("rb") as f:
             raw = f.read(MAX_BYTES + 1)
     except OSError as exc:
-        raise _file_problem(source, source, f"cannot be read: {exc.strerror}",
-                            f"无法读取：{exc.strerror}") from None
+        raise _file_problem(source, source, N_("cannot be read: {strerror}"),
+                                            strerror=exc.strerror) from None
     if len(raw) > MAX_BYTES:
         raise _file_problem(source, f"more than {MAX_BYTES} bytes",
-                            f"a brief is at most {MAX_BYTES} bytes (the examples have about 10 kB); "
-                            "is this the right file?",
-                            f"任务书至多 {MAX_BYTES} 字节（示例约 10 kB）；文件是否选错？")
+                            N_("a brief is at most {MAX_BYTES} bytes (the examples have about 10 "
+                               "kB); is this the right file?"), MAX_BYTES=MAX_BYTES)
     if raw.startswith((b"\xff\xfe", b"\xfe\xff")):
-        raise _file_problem(source, "UTF-16 text", "save the brief as UTF-8 text",
-                            "请将任务书另存为 UTF-8 文本")
+        raise _file_problem(source, "UTF-16 text", N_("save the brief as UTF-8 text"))
     raw = raw.removeprefix(b"\xef\xbb\xbf")   # a byte-order mark some editors write
     nul = raw.find(b"\x00")
     if nul >= 0:
         raise _file_problem(source, f"a NUL byte at {_line_col(raw, nul)}",
-                            "a brief is YAML text; this looks like a binary file",
-                            "任务书是 YAML 文本；此文件像是二进制文件")
+                            N_("a brief is YAML text; this looks like a binary file"))
     try:
         text = raw.decode("utf-8")
     except UnicodeDecodeError as exc:
         raise _file_problem(source, f"byte 0x{raw[exc.start]:02x} at {_line_col(raw, exc.start)}",
-                            "a brief is UTF-8 text; save it as UTF-8",
-                            "任务书须为 UTF-8 文本；请另存为 UTF-8") from None
+                            N_("a brief is UTF-8 text; save it as UTF-8")) from None
     try:
         return yaml.load(text, Loader=_UniqueKeyLoader)  # noqa: S506 - a SafeLoader subclass
     except _LimitError as exc:
-        raise BriefError(source, [BriefProblem(exc.path, exc.value, exc.allowed, exc.allowed_zh)]) from None
+        raise BriefError(source, [BriefProblem(exc.path, exc.value, exc.allowed)]) from None
     except yaml.YAMLError as exc:
         raise BriefError(source, [_yaml_problem(exc, text)]) from None
     except RecursionError:  # not reached within MAX_DEPTH; kept as a last guard
-        raise _file_problem(source, "nested too deeply", "a brief nests sections a few levels deep",
-                            "嵌套过深；任务书只有几层") from None
+        raise _file_problem(source, "nested too deeply",
+                            N_("a brief nests sections a few levels deep")) from None
 
 
 def _yaml_problem(exc: yaml.YAMLError, text: str) -> BriefProblem:
     if isinstance(exc, yaml.reader.ReaderError):   # a control character
         return BriefProblem(_line_col(text, exc.position), f"character #x{exc.character:04x}"
                             if isinstance(exc.character, int) else "a control character",
-                            "a brief is YAML text; control characters are not allowed",
-                            "任务书是 YAML 文本，不能含控制字符")
+                            Msg(N_("a brief is YAML text; control characters are not allowed")))
     mark = getattr(exc, "problem_mark", None) or getattr(exc, "context_mark", None)
     where = f"line {mark.line + 1}, column {mark.column + 1}" if mark else "(file)"
     problem = getattr(exc, "problem", None) or str(exc)
     if "another document" in problem:
         return BriefProblem(where, "a second YAML document",
-                            "a brief is one YAML document: remove the `---` line and what follows",
-                            "任务书只能是一个 YAML 文档：请删去 `---` 行及其后的内容")
-    return BriefProblem(where, "invalid YAML", problem, f"YAML 格式错误：{problem}")
+                            Msg(N_("a brief is one YAML document: remove the `---` line and "
+                                   "what follows")))
+    # the Chinese names the kind of problem before PyYAML's English text
+    return BriefProblem(where, "invalid YAML",
+                        Msg.pgettext("invalid YAML", "{problem}", problem=problem))
 
 
 _MISSING = object()
@@ -853,8 +911,8 @@ def brief_schema(machine: str | None = None) -> dict:
 #: JSON Schema of the ``groups`` section (brief/groups.py).
 GROUPS_SCHEMA = {
     "title": "Groups", "type": "object", "additionalProperties": False,
-    "description": "Data groups (分组/方案): the brief's fields each group overrides; "
-                   "`mechdesign run BRIEF --group LABEL`, `mechdesign batch --groups all`",
+    **dict(description="Data groups (分组/方案): the brief's fields each group overrides; "
+                       "`mechdesign run BRIEF --group LABEL`, `mechdesign batch --groups all`"),
     "properties": {
         "default": {"type": ["integer", "string"],
                     "description": "Group used when --group is not given"},

@@ -24,15 +24,16 @@ from ...lazy import np
 from pydantic import BeforeValidator, Field, model_validator
 
 from ...brief.cam import CamParams, CamSection, cam_to_si
-from ...brief.common import AnalysisSettings, Problems, ReportMeta, SheetSettings, StrictModel, parse_fraction
+from ...brief.common import (AnalysisSettings, Msg, Problems, ReportMeta, SheetSettings, StrictModel,
+                             parse_fraction)
 from ...brief.components import IncompleteGearSection
 from ...brief.drive import DriveParams, DriveSection, drive_to_si
+from ...i18n import N_
 
 
 def _fraction(value):
     """Accept 0.1 or the course's '1/10'."""
-    return parse_fraction(value, "write the fluctuation as a number or a fraction such as 1/10",
-                          "须写作数值或分数，如 1/10")
+    return parse_fraction(value, N_("write the fluctuation as a number or a fraction such as 1/10"))
 
 
 class Production(StrictModel):
@@ -141,10 +142,9 @@ class TogglePress(StrictModel):
         for name in _SYNTHESIS_ONLY:
             if getattr(self, name) is not None:
                 out.add((name,), getattr(self, name),
-                        f"{name}: with dimensions given there is no synthesis, and H, K and the "
-                        f"frame follow from the dimensions; remove {name} (or remove dimensions)",
-                        f"{name}：已给出 dimensions 时不作综合，H、K 与机架长均由尺寸确定；应删去 "
-                        f"{name}（或删去 dimensions）")
+                        N_("{name}: with dimensions given there is no synthesis, and H, K and the "
+                           "frame follow from the dimensions; remove {name} (or remove dimensions)"),
+                        name=name)
         dm = self.dimensions
         before = len(out.items)
         crank_rocker_problems(out, ("dimensions",), dm.crank_O1A_mm, dm.coupler_AB_mm,
@@ -156,20 +156,17 @@ class TogglePress(StrictModel):
             eps = math.radians(self.toggle_angle_at_top_deg)
             reach = toggle_reach(self.toggle_CB_mm, self.toggle_BD_mm)
             if not eps + psi < reach:
-                flat = ("BD would lie flat" if self.toggle_BD_mm < self.toggle_CB_mm else
-                        "CB would pass the horizontal")
-                flat_zh = "BD 会躺平" if self.toggle_BD_mm < self.toggle_CB_mm else "CB 会越过水平位置"
+                flat = (Msg(N_("BD would lie flat")) if self.toggle_BD_mm < self.toggle_CB_mm else
+                        Msg(N_("CB would pass the horizontal")))
                 out.add(("dimensions", "crank_O1A_mm"), dm.crank_O1A_mm,
-                        f"dimensions.crank_O1A_mm = {dm.crank_O1A_mm:g}: the dimensions swing CB "
-                        f"through ψ = {math.degrees(psi):.4g}°, and with toggle_angle_at_top_deg = "
-                        f"{self.toggle_angle_at_top_deg:g}° the bottom is {math.degrees(eps + psi):.4g}° "
-                        f"from the guide, beyond {math.degrees(reach):.4g}° where {flat}: a shorter "
-                        "crank or a longer frame gives less swing",
-                        f"dimensions.crank_O1A_mm = {dm.crank_O1A_mm:g}：该尺寸使 CB 摆角 ψ = "
-                        f"{math.degrees(psi):.4g}°，加上 toggle_angle_at_top_deg = "
-                        f"{self.toggle_angle_at_top_deg:g}°，下止点时 CB 偏离导路 "
-                        f"{math.degrees(eps + psi):.4g}°，超过 {math.degrees(reach):.4g}°（{flat_zh}）："
-                        "应缩短曲柄或加长机架以减小摆角")
+                        N_("dimensions.crank_O1A_mm = {crank_O1A_mm:g}: the dimensions swing CB "
+                           "through ψ = {v1:.4g}°, and with toggle_angle_at_top_deg = "
+                           "{toggle_angle_at_top_deg:g}° the bottom is {v2:.4g}° from the guide, "
+                           "beyond {v3:.4g}° where {flat}: a shorter crank or a longer frame "
+                           "gives less swing"),
+                        crank_O1A_mm=dm.crank_O1A_mm, v1=math.degrees(psi),
+                        toggle_angle_at_top_deg=self.toggle_angle_at_top_deg,
+                        v2=math.degrees(eps + psi), v3=math.degrees(reach), flat=flat)
         out.raise_any()
         return self
 
@@ -246,8 +243,8 @@ class Timing(StrictModel):
         for name in ("feed_start_deg", "gripper_open_deg"):
             v = getattr(self, name)
             if v != "auto" and not 0.0 <= v < 360.0:
-                out.add(name, v, f"{name} = {v:g}: give an angle 0 ≤ value < 360 or 'auto'",
-                        f"{name} = {v:g}：应给出 0 ≤ 值 < 360 的角度，或 'auto'")
+                out.add(name, v, N_("{name} = {v1:g}: give an angle 0 ≤ value < 360 or 'auto'"),
+                                 name=name, v1=v)
         out.raise_any()
         return self
 
@@ -288,67 +285,55 @@ class DieCutterBrief(StrictModel):
         travel = self.pressing_travel_mm
         if not travel < pr.clearance_mm:
             out.add(("press", "clearance_mm"), pr.clearance_mm,
-                    f"press.clearance_mm = {pr.clearance_mm:g} must exceed the pressing travel "
-                    f"{travel:g} mm (cutting.pressing_travel_mm, default the board thickness): the "
-                    "platen presses while the sheet is in the die",
-                    f"press.clearance_mm = {pr.clearance_mm:g} 须大于压紧行程 {travel:g} mm"
-                    "（cutting.pressing_travel_mm，默认为纸板厚度）：纸板在模内时动平台才施压")
-        H, name = pr.stroke_mm, "stroke_H_mm" if pr.dimensions is None else "H (from the dimensions)"
-        name_zh = "stroke_H_mm" if pr.dimensions is None else "H（由 dimensions 导出）"
+                    N_("press.clearance_mm = {clearance_mm:g} must exceed the pressing travel "
+                       "{travel:g} mm (cutting.pressing_travel_mm, default the board thickness): "
+                       "the platen presses while the sheet is in the die"),
+                    clearance_mm=pr.clearance_mm, travel=travel)
+        H = pr.stroke_mm
+        name = "stroke_H_mm" if pr.dimensions is None else Msg(N_("H (from the dimensions)"))
         if not pr.clearance_mm < H:
             out.add(("press", "clearance_mm"), pr.clearance_mm,
-                    f"press.clearance_mm = {pr.clearance_mm:g} must be below the stroke "
-                    f"{name} = {H:.6g}: otherwise the platen is never clear",
-                    f"press.clearance_mm = {pr.clearance_mm:g} 须小于行程 {name_zh} = "
-                    f"{H:.6g}：否则动平台永远让不开")
+                    N_("press.clearance_mm = {clearance_mm:g} must be below the stroke {name} = "
+                       "{H:.6g}: otherwise the platen is never clear"),
+                    clearance_mm=pr.clearance_mm, name=name, H=H)
         c = self.gripper_cam
         if c.rotation != pr.crank_rotation:
             out.add(("gripper_cam", "rotation"), c.rotation,
-                    f"gripper_cam.rotation is {c.rotation!r} but the cam turns with the "
-                    f"distribution shaft: press.crank_rotation is {pr.crank_rotation!r}",
-                    f"gripper_cam.rotation 为 {c.rotation!r}，但凸轮随分配轴转动："
-                    f"press.crank_rotation 为 {pr.crank_rotation!r}")
+                    N_("gripper_cam.rotation is {rotation!r} but the cam turns with the "
+                       "distribution shaft: press.crank_rotation is {crank_rotation!r}"),
+                    rotation=c.rotation, crank_rotation=pr.crank_rotation)
         if c.speed_rpm is not None:
             out.add(("gripper_cam", "speed_rpm"), c.speed_rpm,
-                    "gripper_cam.speed_rpm: the cam turns with the distribution shaft "
-                    f"({self.shaft_rpm:g} rpm from production.sheets_per_hour); leave it out",
-                    "gripper_cam.speed_rpm：凸轮随分配轴转动（由 production.sheets_per_hour 得 "
-                    f"{self.shaft_rpm:g} rpm）；请删去此项")
+                    N_("gripper_cam.speed_rpm: the cam turns with the distribution shaft "
+                       "({shaft_rpm:g} rpm from production.sheets_per_hour); leave it out"),
+                    shaft_rpm=self.shaft_rpm)
         kinds = [s.motion for s in c.programme]
         if kinds != ["rise", "dwell", "return", "dwell"]:
             out.add(("gripper_cam", "programme"), ", ".join(kinds),
-                    "gripper_cam.programme: the gripper cam opens, holds, closes and rests: give "
-                    f"the segments rise, dwell, return, dwell (found {', '.join(kinds)})",
-                    "gripper_cam.programme：夹爪凸轮依次张开、保持、闭合、停歇：区段须为 rise, dwell, "
-                    f"return, dwell（现为 {', '.join(kinds)}）")
+                    N_("gripper_cam.programme: the gripper cam opens, holds, closes and rests: "
+                       "give the segments rise, dwell, return, dwell (found {v1})"),
+                    v1=', '.join(kinds))
         if "motion_start_deg" in self.incomplete_gear.model_fields_set:
             out.add(("incomplete_gear", "motion_start_deg"), self.incomplete_gear.motion_start_deg,
-                    "incomplete_gear.motion_start_deg: place the incomplete gear with "
-                    "timing.feed_start_deg (an angle or auto) instead",
-                    "incomplete_gear.motion_start_deg：不完全齿轮的安装角请用 "
-                    "timing.feed_start_deg 给出（角度或 auto）")
+                    N_("incomplete_gear.motion_start_deg: place the incomplete gear with "
+                       "timing.feed_start_deg (an angle or auto) instead"))
         g = incomplete_gear_to_si(self.incomplete_gear)
         ch = self.chain
         feed = g.advance / (2 * math.pi) * ch.sprocket_teeth * ch.pitch_mm
         if abs(feed - ch.bar_spacing_mm) > 0.01:
             links = ch.bar_spacing_mm / ch.pitch_mm
             out.add(("chain", "bar_spacing_mm"), ch.bar_spacing_mm,
-                    f"chain.bar_spacing_mm = {ch.bar_spacing_mm:g}: the incomplete gear turns the "
-                    f"sprocket by z1'/z2 = {g.teeth}/{g.z2} of a turn per cycle, which moves the "
-                    f"chain {g.teeth}/{g.z2} × {ch.sprocket_teeth} × {ch.pitch_mm:g} = {feed:.2f} mm; "
-                    f"the bar spacing ({links:.3g} pitches) must equal it: change the teeth, the "
-                    "sprocket or the spacing",
-                    f"chain.bar_spacing_mm = {ch.bar_spacing_mm:g}：不完全齿轮每个循环使链轮转过 "
-                    f"z1'/z2 = {g.teeth}/{g.z2} 圈，链条移动 {g.teeth}/{g.z2} × {ch.sprocket_teeth} × "
-                    f"{ch.pitch_mm:g} = {feed:.2f} mm；夹爪杆间距（{links:.3g} 个节距）须与之相等："
-                    "应改变齿数、链轮齿数或间距")
+                    N_("chain.bar_spacing_mm = {bar_spacing_mm:g}: the incomplete gear turns the "
+                       "sprocket by z1'/z2 = {teeth}/{z2} of a turn per cycle, which moves the "
+                       "chain {teeth}/{z2} × {sprocket_teeth} × {pitch_mm:g} = {feed:.2f} mm; the "
+                       "bar spacing ({links:.3g} pitches) must equal it: change the teeth, the "
+                       "sprocket or the spacing"),
+                    bar_spacing_mm=ch.bar_spacing_mm, teeth=g.teeth, z2=g.z2, sprocket_teeth=ch.sprocket_teeth, pitch_mm=ch.pitch_mm, feed=feed, links=links)
         n = len(self.drive.stages)
         if self.flywheel.shaft > n:
             out.add(("flywheel", "shaft"), self.flywheel.shaft,
-                    f"flywheel.shaft = {self.flywheel.shaft}: the drive has {n} stage(s), so its "
-                    f"shafts are 0 (motor) … {n} (distribution shaft)",
-                    f"flywheel.shaft = {self.flywheel.shaft}：传动装置有 {n} 级，其轴为 0（电动机）… "
-                    f"{n}（分配轴）")
+                    N_("flywheel.shaft = {shaft}: the drive has {n} stage(s), so its shafts are 0 "
+                       "(motor) … {n} (distribution shaft)"), shaft=self.flywheel.shaft, n=n)
         out.raise_any()
         return self
 

@@ -7,6 +7,7 @@ from ...lazy import np
 from pydantic import Field, model_validator
 from ...brief.common import MISSING, Problems, ReportMeta, Shown, StrictModel
 from ...brief.drive import DriveParams, DriveSection, drive_to_si
+from ...i18n import N_
 
 
 class StrokeLoad(StrictModel):
@@ -31,14 +32,13 @@ class DriveLoad(StrictModel):
         out = Problems(self)
         given = [n for n in ("power_kW", "torque_Nm", "stroke") if getattr(self, n) is not None]
         if not given:
-            out.add("power_kW", MISSING, "give the load: exactly one of power_kW, torque_Nm or stroke",
-                    "须给出负载：power_kW、torque_Nm、stroke 三者之一")
+            out.add("power_kW", MISSING, N_("give the load: exactly one of power_kW, torque_Nm or "
+                                            "stroke"))
         for name in given[1:]:
             value = getattr(self, name)
             out.add(name, Shown("a section") if isinstance(value, StrictModel) else value,
-                    f"the load is already given by {given[0]}: give exactly one of power_kW, "
-                    f"torque_Nm or stroke (remove {name})",
-                    f"负载已由 {given[0]} 给出：power_kW、torque_Nm、stroke 只能给出其一（请删去 {name}）")
+                    N_("the load is already given by {v1}: give exactly one of power_kW, "
+                       "torque_Nm or stroke (remove {name})"), v1=given[0], name=name)
         out.raise_any()
         return self
 

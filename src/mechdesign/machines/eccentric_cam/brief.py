@@ -7,6 +7,7 @@ from ...lazy import np
 from pydantic import Field, model_validator
 from ...brief.common import Problems, ReportMeta, StrictModel
 from ...brief.cam import _check_roller, side_sign
+from ...i18n import N_
 
 
 class DiscFollower(StrictModel):
@@ -38,9 +39,8 @@ class EccentricDisc(StrictModel):
         out = Problems(self)
         if self.eccentricity_mm >= self.radius_R_mm:
             out.add("eccentricity_mm", self.eccentricity_mm,
-                    f"eccentricity_mm must be smaller than radius_R_mm = {self.radius_R_mm:g} (the cam "
-                    "axis lies inside the disc)",
-                    f"凸轮轴心须在圆盘之内：偏心距须小于 radius_R_mm = {self.radius_R_mm:g}")
+                    N_("eccentricity_mm must be smaller than radius_R_mm = {radius_R_mm:g} (the "
+                       "cam axis lies inside the disc)"), radius_R_mm=self.radius_R_mm)
         out.raise_any()
         return self
 

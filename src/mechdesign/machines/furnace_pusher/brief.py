@@ -16,6 +16,7 @@ from pydantic import Field, model_validator
 
 from ...brief.common import AnalysisSettings, Problems, ReportMeta, SheetSettings, StrictModel
 from ...brief.drive import DriveParams, DriveSection, drive_to_si
+from ...i18n import N_
 
 
 class PusherDimensions(StrictModel):
@@ -86,17 +87,15 @@ class PusherSection(StrictModel):
             for name in _SYNTHESIS_ONLY:
                 if name in self.model_fields_set:
                     out.add((name,), getattr(self, name),
-                            f"{name}: with dimensions given there is no synthesis, and H, K and the "
-                            f"lengths follow from the dimensions; remove {name} (or remove dimensions)",
-                            f"{name}：已给出 dimensions 时不作综合，H、K 与杆长均由尺寸确定；应删去 "
-                            f"{name}（或删去 dimensions）")
+                            N_("{name}: with dimensions given there is no synthesis, and H, K and "
+                               "the lengths follow from the dimensions; remove {name} (or remove "
+                               "dimensions)"), name=name)
             dm = self.dimensions
             if dm.rocker_DB_mm > self.rocker_DC_mm:
                 out.add(("dimensions", "rocker_DB_mm"), dm.rocker_DB_mm,
-                        f"dimensions.rocker_DB_mm = {dm.rocker_DB_mm:g}: B lies on the rocker DC, so DB "
-                        f"must not exceed rocker_DC_mm = {self.rocker_DC_mm:g}",
-                        f"dimensions.rocker_DB_mm = {dm.rocker_DB_mm:g}：B 在摇杆 DC 上，DB 不能大于 "
-                        f"rocker_DC_mm = {self.rocker_DC_mm:g}")
+                        N_("dimensions.rocker_DB_mm = {rocker_DB_mm:g}: B lies on the rocker DC, "
+                           "so DB must not exceed rocker_DC_mm = {rocker_DC_mm:g}"),
+                        rocker_DB_mm=dm.rocker_DB_mm, rocker_DC_mm=self.rocker_DC_mm)
             crank_rocker_problems(out, ("dimensions",), dm.crank_O1A_mm, dm.coupler_AB_mm,
                                   dm.rocker_DB_mm, dm.frame_O1D_mm,
                                   ("crank_O1A_mm", "coupler_AB_mm", "rocker_DB_mm", "frame_O1D_mm"))

@@ -5,6 +5,7 @@ from typing import Literal
 from pydantic import Field, model_validator
 from ...brief.common import AnalysisSettings, Problems, ReportMeta, SheetSettings, StrictModel
 from ...brief.linkage import LinkageSection, check_requests
+from ...i18n import N_
 
 
 class LinkageBrief(StrictModel):
@@ -27,9 +28,8 @@ class LinkageBrief(StrictModel):
         for i, p in enumerate(chosen):
             if isinstance(p, int) and not 1 <= p <= count:
                 out.add(("sheets", "polygon_positions", i), p,
-                        f"{p} is not a position: with analysis.position_step_deg = "
-                        f"{self.analysis.position_step_deg:g} the positions are 1 … {count}",
-                        f"{p} 不是机构位置：analysis.position_step_deg = "
-                        f"{self.analysis.position_step_deg:g} 时位置为 1 … {count}")
+                        N_("{p} is not a position: with analysis.position_step_deg = "
+                           "{position_step_deg:g} the positions are 1 … {count}"),
+                        p=p, position_step_deg=self.analysis.position_step_deg, count=count)
         out.raise_any()
         return self

@@ -30,6 +30,7 @@ from ...brief.cam import CamParams, CamSection, cam_to_si, follower_phases_deg
 from ...brief.common import AnalysisSettings, Problems, ReportMeta, SheetSettings, StrictModel
 from ...brief.components import CycleSection, MorphologySection, cycle_to_si, morphology_to_si
 from ...brief.linkage import LinkageSection, linkage_to_model
+from ...i18n import N_, tr
 
 #: Keys the cycle diagram must use for the three actuators.
 FEED, PIN, BEND = "feed", "pin", "bend"
@@ -52,10 +53,9 @@ class ProductionData(StrictModel):
         out = Problems(self)
         if self.groove_diameter_mm >= self.part_diameter_mm:
             out.add("groove_diameter_mm", self.groove_diameter_mm,
-                    f"groove_diameter_mm = {self.groove_diameter_mm:g} must be smaller than "
-                    f"part_diameter_mm = {self.part_diameter_mm:g}",
-                    f"groove_diameter_mm = {self.groove_diameter_mm:g} 须小于 part_diameter_mm = "
-                    f"{self.part_diameter_mm:g}")
+                    N_("groove_diameter_mm = {groove_diameter_mm:g} must be smaller than "
+                       "part_diameter_mm = {part_diameter_mm:g}"),
+                    groove_diameter_mm=self.groove_diameter_mm, part_diameter_mm=self.part_diameter_mm)
         out.raise_any()
         return self
 
@@ -145,16 +145,14 @@ class BendingSection(StrictModel):
         swing = self.bending_angle_deg * self.bending_wheel_diameter_mm / self.driving_wheel_diameter_mm
         if not swing < 180.0:
             out.add("driving_wheel_diameter_mm", self.driving_wheel_diameter_mm,
-                    f"the large wheel would have to turn {swing:.6g}° "
-                    "(= bending_angle_deg × bending_wheel_diameter_mm / driving_wheel_diameter_mm); "
-                    "a rocker swings less than 180°: use a larger driving wheel",
-                    f"大链轮须转过 {swing:.6g}°（= bending_angle_deg × bending_wheel_diameter_mm / "
-                    "driving_wheel_diameter_mm）；摇杆的摆角小于 180°：应加大主动链轮")
+                    N_("the large wheel would have to turn {swing:.6g}° (= bending_angle_deg × "
+                       "bending_wheel_diameter_mm / driving_wheel_diameter_mm); a rocker swings "
+                       "less than 180°: use a larger driving wheel"), swing=swing)
         lo, hi = self.link_length_range_mm
         if not 0 < lo < hi:
             out.add("link_length_range_mm", f"[{lo:g}, {hi:g}]",
-                    f"link_length_range_mm = [{lo:g}, {hi:g}] must be [min, max] with 0 < min < max",
-                    f"link_length_range_mm = [{lo:g}, {hi:g}] 须为 [最小, 最大]，且 0 < 最小 < 最大")
+                    N_("link_length_range_mm = [{lo:g}, {hi:g}] must be [min, max] with 0 < min < "
+                       "max"), lo=lo, hi=hi)
         out.raise_any()
         return self
 
@@ -187,27 +185,25 @@ class LockbeamBrief(StrictModel):
         rate = self.production.rate_per_min
         if self.cam.follower.motion != "translating":
             out.add(("cam", "follower", "motion"), self.cam.follower.motion,
-                    "the positioning pin moves straight up and down: use a translating follower",
-                    "定位销上下直线移动：应采用直动从动件（translating）")
+                    N_("the positioning pin moves straight up and down: use a translating follower"))
         if self.bending_cam.follower.motion != "oscillating":
             out.add(("bending_cam", "follower", "motion"), self.bending_cam.follower.motion,
-                    "the bending cam swings the four-bar's input rocker: use an oscillating follower",
-                    "扳弯凸轮驱动四杆机构的输入摇杆摆动：应采用摆动从动件（oscillating）")
+                    N_("the bending cam swings the four-bar's input rocker: use an oscillating "
+                       "follower"))
         for loc, value in ((("cam", "speed_rpm"), self.cam.speed_rpm),
                            (("bending_cam", "speed_rpm"), self.bending_cam.speed_rpm),
                            (("cycle", "shaft_speed_rpm"), self.cycle.shaft_speed_rpm),
                            (("feed_linkage", "crank", "speed_rpm"), self.feed_linkage.crank.speed_rpm)):
             if value is not None and abs(value - rate) > 1e-9 * rate:
                 out.add(loc, value,
-                        f"{value:g} rpm, but it turns with the main shaft, once per part: it must "
-                        f"be production.rate_per_min = {rate:g} (or be left out)",
-                        f"{value:g} rpm，但它随主轴转动、每件一转：须等于 production.rate_per_min = "
-                        f"{rate:g}（或不写）")
+                        N_("{value:g} rpm, but it turns with the main shaft, once per part: it "
+                           "must be production.rate_per_min = {rate:g} (or be left out)"),
+                        value=value, rate=rate)
         out_point = self.feed_linkage.output
         if out_point.point is None:
             out.add(("feed_linkage", "output", "link"), out_point.link,
-                    "the feed's output is the feed slider: give output.point (its pin), not a link",
-                    "送料机构的输出是送料滑块：应给出 output.point（其铰点），而不是构件")
+                    N_("the feed's output is the feed slider: give output.point (its pin), not a "
+                       "link"))
         _check_cycle(self, out)
         out.raise_any()
         return self
@@ -230,16 +226,16 @@ def _check_cycle(b: LockbeamBrief, out: Problems) -> None:
         need = ", ".join(repr(k) for k in (FEED, PIN, BEND))
         lack = ", ".join(repr(k) for k in missing)
         out.add(("cycle", "actuators"), ", ".join(keys),
-                f"the lock-beam bender's diagram needs the actuators {need}; missing {lack}",
-                f"锁梁扳弯机的运动循环图须有执行构件 {need}；缺少 {lack}")
+                N_("the lock-beam bender's diagram needs the actuators {need}; missing {lack}"),
+                need=need, lack=lack)
     if FEED in keys:
         feed = keys.index(FEED)
         states = [p.state for p in b.cycle.actuators[feed].phases]
         if sorted(states) != ["return", "rise"]:
             out.add(("cycle", "actuators", feed, "phases"), ", ".join(states),
-                    "the feed slider reciprocates without dwelling: give a rise (送料) and a "
-                    "return (退回)",
-                    "送料滑块往复运动、没有停歇：应给出一个 rise（送料）和一个 return（退回）")
+                    N_("the feed slider reciprocates without dwelling: give a rise ({feed}) and a "
+                       "return ({back})"), feed=tr("zh").pgettext("lock-beam phase", "feed"),
+                    back=tr("zh").pgettext("lock-beam phase", "return"))
     for key, section, name in ((PIN, b.cam, "cam"), (BEND, b.bending_cam, "bending_cam")):
         if key not in keys:
             continue
@@ -251,10 +247,9 @@ def _check_cycle(b: LockbeamBrief, out: Problems) -> None:
             sw == sh and abs(ww - wh) < _SPAN_TOL_DEG for (sw, ww), (sh, wh) in zip(want, have))
         if not same:
             out.add(("cycle", "actuators", i, "phases"), f"'{key}': {_phases_text(have)}",
-                    f"not what {name}.programme makes the follower do ({_phases_text(want)}); the "
-                    "cycle diagram must show the cam's programme from its δ = 0, placed at start_deg",
-                    f"与 {name}.programme 给出的从动件运动（{_phases_text(want)}）不符；运动循环图须"
-                    "从凸轮的 δ = 0 起画出其运动规律，并置于 start_deg 处")
+                    N_("not what {name}.programme makes the follower do ({v1}); the cycle diagram "
+                       "must show the cam's programme from its δ = 0, placed at start_deg"),
+                    name=name, v1=_phases_text(want))
 
 
 # --------------------------------------------------------------------------- to SI
@@ -339,8 +334,14 @@ def bending_params(b: LockbeamBrief) -> BendingParams:
         ratio_factor=s.velocity_ratio_peak_factor, rounding=s.length_rounding_mm * mm)
 
 
-FEED_NAMES = {"2": ("曲柄", "crank"), "3": ("滑块", "slider block"), "4": ("导杆", "guide bar"),
-              "5": ("连杆", "rod"), "6": ("送料滑块", "feed slider")}
+def feed_names() -> dict[str, tuple[str, str]]:
+    """The feed linkage's links: id → (Chinese name, English name)."""
+    zh = tr("zh")
+    return {"2": (zh.pgettext("link", "crank"), "crank"),
+            "3": (zh.pgettext("link", "slider block"), "slider block"),
+            "4": (zh.pgettext("link", "guide bar"), "guide bar"),
+            "5": (zh.pgettext("link", "rod"), "rod"),
+            "6": (zh.pgettext("link", "feed slider"), "feed slider")}
 
 
 def lockbeam_to_si(b: LockbeamBrief) -> LockbeamParams:
@@ -362,7 +363,7 @@ def lockbeam_to_si(b: LockbeamBrief) -> LockbeamParams:
         groove_diameter=p.groove_diameter_mm * mm, transmission=tr,
         cam=cam_to_si(b.cam, rate), bending_cam=cam_to_si(b.bending_cam, rate),
         bending=bending_params(b),
-        feed=linkage_to_model(b.feed_linkage, b.analysis, FEED_NAMES),
+        feed=linkage_to_model(b.feed_linkage, b.analysis, feed_names()),
         cycle=cycle_to_si(b.cycle, rate),
         pin_cam_start=float(np.radians(acts[PIN].start_deg)),
         bend_cam_start=float(np.radians(acts[BEND].start_deg)),

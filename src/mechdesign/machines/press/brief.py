@@ -21,6 +21,7 @@ from ...brief.cam import CamParams, cam_to_si
 from ...brief.drive import DriveParams
 from ...brief.guide_bar import GearParams
 from ...lazy import np
+from ...i18n import N_
 
 
 class PressLinkage(StrictModel):
@@ -51,13 +52,11 @@ class PressLinkage(StrictModel):
         u, lo = self.rocker_psi3_upper_deg, self.rocker_psi3_lower_deg
         if not u < lo:
             out.add(("rocker_psi3_lower_deg",), lo,
-                    f"must exceed ψ3′ = {u:g}° (the lower extreme is further clockwise)",
-                    f"须大于 ψ3′ = {u:g}°（下极限位置顺时针在后）")
+                    N_("must exceed ψ3′ = {u:g}° (the lower extreme is further clockwise)"), u=u)
         elif abs(u + lo - 180.0) > 1e-9:
             out.add(("rocker_psi3_lower_deg",), lo,
-                    f"must be 180° − ψ3′ = {180 - u:g}°: the extremes are symmetric about the "
-                    "horizontal through D, so E′E″ is parallel to the ram guide",
-                    f"须为 180° − ψ3′ = {180 - u:g}°：两极限位置对称于过 D 的水平线，E′E″ 与导路平行")
+                    N_("must be 180° − ψ3′ = {v1:g}°: the extremes are symmetric about the "
+                       "horizontal through D, so E′E″ is parallel to the ram guide"), v1=180 - u)
         out.raise_any()
         return self
 
