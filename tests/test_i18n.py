@@ -201,3 +201,63 @@ def test_the_list_of_modules_not_yet_converted_only_shrinks():
     done = sorted(rel for rel in NOT_YET_CONVERTED
                   if not (SRC / rel).exists() or not chinese_literals(SRC / rel))
     assert not done, f"converted (take them off NOT_YET_CONVERTED): {done}"
+
+
+def test_adding_a_language_is_adding_its_catalogue(tmp_path, monkeypatch):
+    """A de.po beside the shipped catalogues makes "de" a report language (the en report's
+    structure, the words of its catalogue): nothing else to register."""
+    import shutil
+    from importlib import resources
+
+    shipped = Path(str(resources.files("mechdesign.locale")))
+    for po in shipped.glob("*.po"):
+        shutil.copy(po, tmp_path / po.name)
+    (tmp_path / "de.po").write_text('msgid ""\nmsgstr ""\n"Content-Type: text/plain; charset=utf-8\\n"\n\n'
+                                    'msgid "the cam cannot be designed"\n'
+                                    'msgstr "die Kurvenscheibe ist nicht auslegbar"\n', encoding="utf-8")
+    monkeypatch.setattr(i18n.resources, "files", lambda pkg: tmp_path)
+    i18n.catalogue.cache_clear()
+    try:
+        langs = i18n._discover()
+        assert langs[:2] == ("zh", "en") and {"zh_TW", "de"} <= set(langs)
+        assert i18n.base("de") == "en" and i18n.base("zh_TW") == "zh"
+        assert i18n.tr("de")("the cam cannot be designed") == "die Kurvenscheibe ist nicht auslegbar"
+        assert i18n.tr("de")("the drive cannot be designed") == "the drive cannot be designed"
+    finally:
+        i18n.catalogue.cache_clear()
+
+
+@pytest.mark.e2e
+def test_a_traditional_chinese_report_renders(tmp_path):
+    """`--lang zh_TW` renders the zh report with the words of zh_TW.po: the catalogue's
+    texts that the zh report shows appear converted, and the numbers are the same."""
+    opencc = pytest.importorskip("opencc")
+    import json
+    import subprocess
+    import sys
+
+    brief = ROOT / "designs" / "cam_7_1.yaml"
+    out = {}
+    for lang in ("zh", "zh_TW"):
+        folder = tmp_path / lang
+        run = subprocess.run([sys.executable, "-m", "mechdesign", "run", str(brief), "--lang", lang,
+                              "--format", "md", "-o", str(folder)], capture_output=True, text=True)
+        assert run.returncode == 0, run.stderr
+        out[lang] = ((folder / "report.md").read_text(encoding="utf-8"),
+                     json.loads((folder / "results.json").read_text(encoding="utf-8")))
+    (zh_md, zh_res), (tw_md, tw_res) = out["zh"], out["zh_TW"]
+    conv = opencc.OpenCC("s2twp")
+    shown = [s for s in i18n.catalogue("zh").values()
+             if len(s) >= 4 and "{" not in s and "%" not in s and s in zh_md and conv.convert(s) != s]
+    assert len(shown) >= 20
+    converted = [s for s in shown if conv.convert(s) in tw_md]
+    assert len(converted) >= 0.9 * len(shown), [s for s in shown if s not in converted][:10]
+    assert tw_md != zh_md
+
+    def numbers(doc):
+        if isinstance(doc, dict):
+            return {k: numbers(v) for k, v in doc.items() if not isinstance(v, str)}
+        if isinstance(doc, list):
+            return [numbers(v) for v in doc if not isinstance(v, str)]
+        return doc
+    assert numbers(tw_res) == numbers(zh_res)

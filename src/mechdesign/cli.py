@@ -23,7 +23,7 @@ import typer
 from typer.core import TyperCommand, TyperGroup
 
 from . import __version__
-from .i18n import N_
+from .i18n import LANGUAGES, N_
 from .registry import Lookup
 
 #: metavar of a flag: nothing (typer would print <bool>)
@@ -87,10 +87,8 @@ app = typer.Typer(cls=_Group, add_completion=True, no_args_is_help=True,
 from .runner import EXIT_FAILED, EXIT_INVALID, EXIT_OK  # noqa: F401
 
 
-class Lang(str, Enum):
-    zh = "zh"
-    en = "en"
-    zh_TW = "zh_TW"
+#: --lang: zh, en and every shipped catalogue (src/mechdesign/locale/<lang>.po)
+Lang = Enum("Lang", {name: name for name in LANGUAGES}, type=str)
 
 
 def _base_lang(lang: "Lang | None") -> str:
@@ -247,7 +245,7 @@ def _parse_formats(text: str) -> tuple[str, ...]:
 # Options shared by the commands (metavars for people: BRIEF, DIR, N, i/n, LANG, FORMATS).
 def _lang_option(help_text: str):
     return typer.Option(None, "--lang", metavar="LANG", case_sensitive=False,
-                        help=f"{help_text} zh, en or zh_TW (any case).")
+                        help=f"{help_text} {', '.join(LANGUAGES)} (any case).")
 
 
 def _format_option(default: str = "md,pdf", extra: str = ""):

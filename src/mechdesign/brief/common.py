@@ -13,7 +13,7 @@ from typing import Annotated, Literal, Optional, Union
 
 from pydantic import BaseModel, ConfigDict, Field, field_validator
 
-from ..i18n import N_
+from ..i18n import LANGUAGES, N_
 
 
 _FRACTION = re.compile(r"^\s*([-+]?(?:\d+\.?\d*|\.\d+))\s*(?:/\s*(\d+\.?\d*|\.\d+)\s*)?$")
@@ -200,9 +200,10 @@ class ReportMeta(StrictModel):
     class_name: str = Field("", alias="class", max_length=100, description="Class (班级)")
     teacher: str = Field("", max_length=100, description="Teacher (指导教师)")
     date: str = Field("", max_length=40, description="Date shown on the title page, e.g. 2026-11-22")
-    language: Literal["zh", "en", "zh_TW"] = Field(
-        "zh", description="Report language: zh (中文), en, or zh_TW (繁體中文: the zh report "
-                          "with the words of the Traditional Chinese catalogue)")
+    language: Literal[LANGUAGES] = Field(       # zh, en and every shipped catalogue
+        "zh", description="Report language: zh (中文), en, or the name of another shipped "
+                          "catalogue (src/mechdesign/locale/<lang>.po), e.g. zh_TW (繁體中文: the "
+                          "zh report with the words of the Traditional Chinese catalogue)")
 
     model_config = ConfigDict(extra="forbid", strict=True, frozen=True, populate_by_name=True,
                               allow_inf_nan=False)
