@@ -6,7 +6,6 @@ wrong phase, mirrored, or on a different scale fails them.
 """
 from __future__ import annotations
 
-import time
 from pathlib import Path
 
 import numpy as np
@@ -138,10 +137,7 @@ def shaper_results(example_results):
 
 
 def test_shaper_gif(shaper_results, tmp_path):
-    start = time.perf_counter()
-    path = shaper_report.animate(shaper_results, tmp_path / "shaper.gif", "zh")
-    elapsed = time.perf_counter() - start
-    assert elapsed < 10.0
+    path = shaper_report.animate(shaper_results, tmp_path / "shaper.gif", "zh")   # time: bench_limits.py
     assert path.stat().st_size < 1_000_000
     with Image.open(path) as im:
         assert im.n_frames == 72 and im.info.get("loop") == 0

@@ -85,23 +85,17 @@ def timed_run(args: list[str]) -> tuple[subprocess.CompletedProcess, float, floa
 @pytest.mark.skipif(resource is None, reason="needs the resource module (POSIX)")
 @pytest.mark.parametrize("name", ["binary_junk.bin.yaml", "billion_laughs.yaml", "deep_nesting.yaml",
                                   "huge_list.yaml", "fraction_exponent.yaml"])
-def test_real_process_fails_within_a_second(name, tmp_path):
-    """As a user runs it: a fresh interpreter (start-up included), exit 2 within a second,
-    no traceback. On a machine busier than its cores (parallel tests) the wall time
-    measures the queue, so there the child's CPU time must stay under a second and the
-    wall time under five (no hang)."""
+def test_real_process_refuses_it(name, tmp_path):
+    """As a user runs it: a fresh interpreter, exit 2 with the problem named, no traceback,
+    no output folder (the 30 s subprocess timeout only guards against a hang; the time it
+    takes is a benchmark, benchmarks/bench_limits.py: target < 1 s)."""
     path = ROOT / "tests" / "malformed" / name
     for args in (["check", "--lang", "en", str(path)],
                  ["run", str(path), "-o", str(tmp_path / "o"), "-f", "md", "--lang", "en"]):
-        proc, wall, cpu = timed_run(args)
+        proc, _wall, _cpu = timed_run(args)
         assert proc.returncode == 2, proc.stderr
         assert "Traceback" not in proc.stderr + proc.stdout
         assert expected(path) in proc.stderr
-        busy = os.getloadavg()[0] > (os.cpu_count() or 1)
-        if busy:
-            assert cpu < 1.0 and wall < 5.0, f"{name}: {args[0]}: {wall:.2f} s wall, {cpu:.2f} s CPU"
-        else:
-            assert wall < 1.0, f"{name}: {args[0]} took {wall:.2f} s (CPU {cpu:.2f} s)"
     assert not (tmp_path / "o").exists()
 
 
@@ -118,9 +112,7 @@ def problem_of(path) -> loader.BriefProblem:
 def test_a_file_larger_than_the_limit_is_refused_unread(tmp_path):
     path = tmp_path / "big.yaml"
     path.write_text("machine: shaper\n" + "# padding\n" * (loader.MAX_BYTES // 10 + 10), encoding="utf-8")
-    start = time.perf_counter()
     p = problem_of(path)
-    assert time.perf_counter() - start < 0.2
     assert p.path == "(file)" and f"at most {loader.MAX_BYTES} bytes" in p.allowed
 
 
@@ -162,9 +154,7 @@ def test_alias_bomb_is_counted_expanded_and_stopped_fast(tmp_path):
     text = "machine: cam\na: &a [x, x, x, x, x, x, x, x, x]\n" + "".join(
         f"{n}: &{n} [*{p}, *{p}, *{p}, *{p}, *{p}, *{p}, *{p}, *{p}, *{p}]\n"
         for p, n in zip("abcdefgh", "bcdefghi")) + "report: *i\n"
-    start = time.perf_counter()
     p = problem_of(write(tmp_path, text))
-    assert time.perf_counter() - start < 0.5
     assert f"more than {loader.MAX_VALUES} values" in p.value
     # the expansion is counted exactly: a list of 2 aliases to a 2-item list is 1 + 2·3 = 7 values
     loader_ = loader._UniqueKeyLoader("a: &a [1, 2]\nb: [*a, *a]\n")
@@ -186,9 +176,7 @@ def test_anchors_aliases_and_merge_keys_of_real_briefs_still_work(tmp_path):
 
 def test_deep_nesting_is_refused_before_python_recursion(tmp_path):
     text = "machine: cam\nreport: " + "[" * 20000 + "]" * 20000 + "\n"
-    start = time.perf_counter()
-    p = problem_of(write(tmp_path, text))
-    assert time.perf_counter() - start < 1.0
+    p = problem_of(write(tmp_path, text))       # no RecursionError (time: bench_limits.py)
     assert f"nested more than {loader.MAX_DEPTH}" in p.value and p.path.startswith("report.0.0")
 
 
@@ -252,9 +240,7 @@ def test_a_number_with_its_unit_says_to_drop_the_unit(tmp_path, value, allowed):
 
 @pytest.mark.parametrize("text", ["1/0", "1 / 0.0", "1e1000000000", "1e400", "9" * 41, "1/2/3", "nan"])
 def test_fraction_fields_refuse_what_is_no_fraction_quickly(tmp_path, text):
-    start = time.perf_counter()
     p = problem_of(shaper_with(tmp_path, "fluctuation_delta: 1/25", f"fluctuation_delta: '{text}'"))
-    assert time.perf_counter() - start < 0.5
     assert p.path == "flywheel.fluctuation_delta" and "fraction such as 1/25" in p.allowed
 
 

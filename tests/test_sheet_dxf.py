@@ -52,16 +52,12 @@ def test_thinned_curve_within_chord_error_and_extremes_kept(name, tolerance):
         assert part(w).max() == part(z).max() and part(w).min() == part(z).min()
 
 
-def test_thinning_100000_points_is_fast_and_small():
-    import time
-
+def test_thinning_100000_points_is_small():
+    # its time is a benchmark (benchmarks/bench_limits.py)
     t = np.linspace(0, 2 * np.pi, 100_000)
     z = CURVES["sine"](t)
-    t0 = time.perf_counter()
     w = thin(z)
-    elapsed = time.perf_counter() - t0
     assert len(w) < 2000
-    assert elapsed < 2.0          # ~15 ms on the 2-core machine; generous for a loaded one
 
 
 def check_dxf_tables(doc) -> None:
@@ -90,8 +86,8 @@ def check_dxf_tables(doc) -> None:
 
 
 def test_dxf_of_a_100000_point_sheet_in_bulk(tmp_path):
-    import time
-
+    # its time (was quadratic: ~350 s for a 100 000-point run's sheets) is a benchmark,
+    # benchmarks/bench_limits.py
     from mechdesign.render.sheet_dxf import write_dxf
 
     s = Sheet("A3")
@@ -100,10 +96,7 @@ def test_dxf_of_a_100000_point_sheet_in_bulk(tmp_path):
     s.polyline(200 + CURVES["loop"](t) + 150j, "OUTLINE", closed=True, tolerance=None)
     s.text(30 + 20j, "机构 ω₂ α β φ θ μ", 5.0)
     s.dimension(30 + 40j, 130 + 40j, 8.0, 0.2)
-    t0 = time.perf_counter()
     path = write_dxf(s, tmp_path / "big.dxf")
-    elapsed = time.perf_counter() - t0
-    assert elapsed < 10.0     # was quadratic: ~350 s for a 100 000-point run's sheets
     doc = ezdxf.readfile(path)
     polys = list(doc.modelspace().query("LWPOLYLINE"))
     sizes = sorted(len(p) for p in polys)
