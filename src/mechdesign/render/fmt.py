@@ -34,6 +34,8 @@ from __future__ import annotations
 import re
 from decimal import Decimal
 
+from ..i18n import tr
+
 
 GROUP = "\u202f"      # narrow no-break space between digit groups (GB 3101, ISO 80000-1)
 
@@ -107,7 +109,7 @@ def number(text: str) -> float:
     return float(mant) * 10.0 ** int(digits)
 
 
-_CJK = re.compile("[\u3000-\u303f\u3400-\u9fff\uff00-\uffef]")
+_CJK = re.compile(r"[\u3000-\u303f\u3400-\u9fff\uff00-\uffef]")
 
 
 def in_lang(text, lang: str):
@@ -148,9 +150,8 @@ class Verdict(str):
 def verdict(ok: bool, lang: str) -> Verdict:
     """The one verdict vocabulary: 合格/不合格 (zh), PASS/FAIL (en), as a :class:`Verdict`
     carrying ``ok``."""
-    if lang == "zh":
-        return Verdict("合格" if ok else "不合格", ok)
-    return Verdict("PASS" if ok else "FAIL", ok)
+    _ = tr(lang)
+    return Verdict(_("PASS") if ok else _("FAIL"), ok)
 
 
 # -------------------------------------------------------------------------- user text

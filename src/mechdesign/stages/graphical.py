@@ -16,6 +16,7 @@ import numpy as np
 from ..core import graphical as gr
 from ..core.fields import q
 from ..pipeline import Stage
+from . import titles
 from .polygons import chosen_positions, entry
 
 #: Target length of the largest vector of a polygon [mm] and of the kinematic diagram.
@@ -221,4 +222,4 @@ def graphical_stage(model_key: str = "model", prefix: str = "linkage") -> Stage:
         return graphical(r[model_key], k, r[f"{prefix}_raw"], r.get(f"{prefix}_forces"),
                          chosen_positions(k, r.get("brief")))
 
-    return Stage(f"{prefix}_graphical", "图解法 / graphical method", run)
+    return Stage(f"{prefix}_graphical", titles.pgettext("stage", "graphical method"), run)

@@ -16,7 +16,9 @@ from dataclasses import dataclass, replace
 import numpy as np
 
 from ..core.polygons import Polygon, kinematic_polygon, linkage_force_polygons
+from ..i18n import N_
 from ..pipeline import Stage
+from . import titles
 
 TWO_PI = 2.0 * np.pi
 
@@ -78,8 +80,8 @@ def resolve_label(k, asked, field: str) -> str:
     if text in requested:
         return str(requested[text])
     known = ", ".join(labels + [key for key in requested if key not in labels])
-    raise DesignError(f"{field}: {asked!r} is not a position of the analysis; positions: {known}",
-                      f"{field}：{asked!r} 不是分析的机构位置；位置：{known}")
+    raise DesignError(N_("{field}: {asked!r} is not a position of the analysis; positions: {known}"),
+                      field=field, asked=asked, known=known)
 
 
 def polygons(model, k, raw, forces, label: str) -> tuple[Polygon, ...]:
@@ -120,4 +122,4 @@ def polygon_stage(model_key: str = "model", prefix: str = "linkage") -> Stage:
                                  chosen_positions(k, r.get("brief")))
         return replace(found, model_key=model_key, prefix=prefix)
 
-    return Stage(f"{prefix}_polygons", "作图多边形 / polygons", run)
+    return Stage(f"{prefix}_polygons", titles.pgettext("stage", "polygons"), run)
