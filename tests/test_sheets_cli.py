@@ -28,7 +28,9 @@ EXPECTED = {
     # the feed linkage's analysis sheet and the positioning cam (the bending cam is drawn in
     # the report only); the brief's motion cycle diagram
     "lockbeam": ["kinematic_A3", "cycle_A3", "analysis_A1", "cam_A2"],
-    "crank_rocker": ["kinematic_A3"],      # the optimum four-bar and the slider-crank
+    # the optimum four-bar and the slider-crank; the four-bar's analysis sheet (it runs the
+    # shared linkage stages)
+    "crank_rocker": ["kinematic_A3", "analysis_A1"],
     "cam_7_1": ["kinematic_A3"],           # the eccentric disc with each follower
     "furnace_drive": ["transmission_A3"],  # drive only
     "furnace_pusher": ["kinematic_A3", "transmission_A3", "analysis_A1"],  # the six-bar's analysis sheet
