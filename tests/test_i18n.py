@@ -108,7 +108,6 @@ NOT_YET_CONVERTED = {
     "machines/crank_rocker/report.py",
     "machines/crank_rocker/stages.py",
     "render/analysis_sheet.py",
-    "render/graphical_report.py",
     "render/kinematic_sheet.py",
     "render/summary.py",
     "stages/drive_elements.py",

@@ -16,19 +16,18 @@ from pathlib import Path
 import numpy as np
 
 from . import figures as fig
+from ..i18n import N_, tr
 from .fmt import f, grouped, mpl_text
+from .labels import LabelTable, pgettext
 
-_T = {
-    "zh": {"vel": "速度多边形", "acc": "加速度多边形", "fbd": "受力图", "force": "力多边形",
-           "guide": "∥导路", "bar": "∥导杆 {}", "rot": "$v_r$ 沿 ω{} 转 90°", "known": "已求",
-           "mag": "大小", "dir": "方向", "pos": "位置", "group": "杆组", "crank": "曲柄",
-           "doc": "{}", "links": "构件"},
-    "en": {"vel": "velocity polygon", "acc": "acceleration polygon", "fbd": "free body",
-           "force": "force polygon", "guide": "∥ guide", "bar": "∥ bar {}",
-           "rot": "$v_r$ turned 90° with ω{}", "known": "known", "mag": "magnitude",
-           "dir": "direction", "pos": "position", "group": "group", "crank": "crank",
-           "doc": "{}", "links": "links"},
-}
+_T = LabelTable({
+    "vel": N_("velocity polygon"), "acc": N_("acceleration polygon"), "fbd": N_("free body"),
+    "force": N_("force polygon"), "guide": N_("∥ guide"), "bar": N_("∥ bar {}"),
+    "rot": N_("$v_r$ turned 90° with ω{}"), "known": pgettext("graphical", "known"),
+    "mag": pgettext("graphical", "magnitude"), "dir": pgettext("graphical", "direction"),
+    "pos": pgettext("graphical", "position"), "group": pgettext("graphical", "group"),
+    "crank": N_("crank"), "doc": "{}", "links": pgettext("graphical", "links"),
+})
 
 
 def documents(results: dict) -> list[tuple[str, object]]:
@@ -375,7 +374,8 @@ def _compare(pos, lang: str) -> list[list[str]]:
                 f"$v_{{r{q[3:]}}}$" if q.startswith("v_r") else
                 f"${sym(q)}$")
         ok = abs(c.graphical - c.analytic) <= c.tolerance
-        mark = ("合格" if ok else "超差") if lang == "zh" else ("PASS" if ok else "beyond")
+        _ = tr(lang)
+        mark = _("PASS") if ok else _.pgettext("graphical", "beyond")
         # a value smaller than the drawing's resolution has no meaningful relative error
         diff = "—" if abs(c.analytic) < c.tolerance else f(100 * c.difference, 1)
         rows.append([name, c.unit, _numg(c.graphical), _numg(c.analytic), diff, _numg(c.tolerance),
@@ -409,8 +409,7 @@ def graphical_context(results: dict, figures: dict, lang: str) -> list[dict]:
             })
         out.append({"prefix": prefix, "step": _mm(doc.step), "positions": positions,
                     "forces": any(p["forces"] for p in positions),
-                     "labels": "、".join(p["label"] for p in positions) if lang == "zh"
-                     else ", ".join(p["label"] for p in positions)})
+                     "labels": tr(lang).pgettext("list", ", ").join(p["label"] for p in positions)})
     return out
 
 
