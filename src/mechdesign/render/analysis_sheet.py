@@ -17,6 +17,7 @@ from __future__ import annotations
 import numpy as np
 
 from ..core.polygons import Polygon
+from .labels import LabelTable, pgettext
 from .sheet import (Dimension, LabelPlacer, Series, Sheet, TitleInfo, chart, fit_height,
                     format_number, frame, ground, heading, length_scale, nice_scale, pin,
                     scale_text, slider_block, table, text_width, title_block_box)
@@ -24,28 +25,36 @@ from .sheet import (Dimension, LabelPlacer, Series, Sheet, TitleInfo, chart, fit
 DEG = 180.0 / np.pi
 TWO_PI = 2.0 * np.pi
 
-LABELS = {
-    "zh": {"mechanism": "机构运动简图", "velocity": "位置 {p} 速度多边形", "acceleration": "位置 {p} 加速度多边形",
-           "force": "位置 {p} {g} 力多边形", "crank_group": "原动件 {l}", "group": "杆组 {l}",
-           "s": "输出位移 s ({u})", "v": "输出速度 v ({u})", "a": "输出加速度 a ({u})",
-           "mb": "平衡力矩 Mb (N·m)", "work": "功 W、动能增量 ΔE (J)", "phase": "曲柄转角 φ (°)",
-           "curves": "输出构件运动线图", "mbt": "平衡力矩线图", "et": "飞轮能量线图",
-           "md": "等效驱动力矩 Md = {v} N·m", "mean": "平均 Mb = {v} N·m", "table": "各位置运动与力分析结果",
-           "pos": "位置", "dw": "ΔWmax = {v} J", "jf": "飞轮转动惯量 JF = {v} kg·m²",
-           "scales": "作图比例", "each": "μv、μa、μF 注在各多边形上方", "noforce": "该位置无载荷（各反力为零）",
-           "nofly": "未设飞轮", "links": "构件：", "guide": "{n}导路", "guide_plain": "导路"},
-    "en": {"mechanism": "Skeleton at the positions", "velocity": "Velocity polygon, position {p}",
-           "acceleration": "Acceleration polygon, position {p}", "force": "Force polygon, {g}, pos. {p}",
-           "crank_group": "driver {l}", "group": "group {l}",
-           "s": "output displacement s ({u})", "v": "output velocity v ({u})", "a": "output acceleration a ({u})",
-           "mb": "balancing torque Mb (N·m)", "work": "work W, energy change ΔE (J)", "phase": "crank angle φ (°)",
-           "curves": "Output motion curves", "mbt": "Balancing torque", "et": "Flywheel energy",
-           "md": "driving torque Md = {v} N·m", "mean": "mean Mb = {v} N·m", "table": "Results at the positions",
-           "pos": "Pos.", "dw": "ΔWmax = {v} J", "jf": "flywheel inertia JF = {v} kg·m²",
-           "scales": "Drawing scales", "each": "μv, μa, μF above each polygon",
-           "noforce": "no load at this position (all reactions zero)", "nofly": "no flywheel",
-           "links": "Links: ", "guide": "{n} guide", "guide_plain": "guide"},
-}
+LABELS = LabelTable({
+    "mechanism": pgettext("analysis sheet", "Skeleton at the positions"),
+    "velocity": pgettext("analysis sheet", "Velocity polygon, position {p}"),
+    "acceleration": pgettext("analysis sheet", "Acceleration polygon, position {p}"),
+    "force": pgettext("analysis sheet", "Force polygon, {g}, pos. {p}"),
+    "crank_group": pgettext("analysis sheet", "driver {l}"),
+    "group": pgettext("analysis sheet", "group {l}"),
+    "s": pgettext("analysis sheet", "output displacement s ({u})"),
+    "v": pgettext("analysis sheet", "output velocity v ({u})"),
+    "a": pgettext("analysis sheet", "output acceleration a ({u})"),
+    "mb": pgettext("analysis sheet", "balancing torque Mb (N·m)"),
+    "work": pgettext("analysis sheet", "work W, energy change ΔE (J)"),
+    "phase": pgettext("analysis sheet", "crank angle φ (°)"),
+    "curves": pgettext("analysis sheet", "Output motion curves"),
+    "mbt": pgettext("analysis sheet", "Balancing torque"),
+    "et": pgettext("analysis sheet", "Flywheel energy"),
+    "md": pgettext("analysis sheet", "driving torque Md = {v} N·m"),
+    "mean": pgettext("analysis sheet", "mean Mb = {v} N·m"),
+    "table": pgettext("analysis sheet", "Results at the positions"),
+    "pos": pgettext("analysis sheet", "Pos."),
+    "dw": "ΔWmax = {v} J",
+    "jf": pgettext("analysis sheet", "flywheel inertia JF = {v} kg·m²"),
+    "scales": pgettext("analysis sheet", "Drawing scales"),
+    "each": pgettext("analysis sheet", "μv, μa, μF above each polygon"),
+    "noforce": pgettext("analysis sheet", "no load at this position (all reactions zero)"),
+    "nofly": pgettext("analysis sheet", "no flywheel"),
+    "links": pgettext("analysis sheet", "Links: "),
+    "guide": pgettext("analysis sheet", "{n} guide"),
+    "guide_plain": pgettext("analysis sheet", "guide"),
+})
 
 UNITS = {"velocity": ("μv", "(m/s)/mm", "m/s"), "acceleration": ("μa", "(m/s²)/mm", "m/s²"),
          "force": ("μF", "N/mm", "N")}
