@@ -107,7 +107,6 @@ NOT_YET_CONVERTED = {
     "machines/crank_rocker/brief.py",
     "machines/crank_rocker/report.py",
     "machines/crank_rocker/stages.py",
-    "render/kinematic_sheet.py",
     "render/summary.py",
     "stages/drive_elements.py",
     "stages/drive_strength.py",

@@ -20,7 +20,9 @@ from dataclasses import replace
 
 import numpy as np
 
+from ..i18n import tr
 from ..stages.drive import shaft_numeral
+from .labels import LabelTable, pgettext, translated
 from .sheet import (LabelPlacer, Sheet, TitleInfo, fit_height, format_number, frame, ground,
                     hatched_line, heading, length_scale, pin, scale_text, slider_block, table,
                     text_width, title_block_box, turn_arrow)
@@ -28,30 +30,32 @@ from .sheet import (LabelPlacer, Sheet, TitleInfo, fit_height, format_number, fr
 MM = 1e3
 SIZE = "A3"
 
-LABELS = {
-    "zh": {"diagram": "机构运动简图", "drive": "传动系统示意图", "position": "位置 {p}",
-           "scale": "长度比例 μL = {mu} m/mm（{s}）", "links": "构件：", "frame": "机架",
-           "crank_rocker": "曲柄摇杆机构（最优设计，摇杆在左极限位置 C1）",
-           "slider_crank": "偏置曲柄滑块机构（滑块在右极限位置）",
-           "cam": "凸轮机构（δ = 0，从动件在最低位置）", "disc": "偏心圆盘凸轮（δ = 0）",
-           "not_scale": "示意图，不按比例；圆为节圆（带轮为基准圆）",
-           "shaft": "轴", "n": "n (r/min)", "P": "P (kW)", "T": "T (N·m)",
-           "stage": "传动", "ratio": "传动比 i", "data": "参数", "motor": "电动机 {m}",
-           "shafts": "各轴运动和动力参数", "stages": "各级传动",
-           "omega": "ω", "guide": "导路",
-           "drawn_at": "；图示为位置 {p}"},
-    "en": {"diagram": "Kinematic diagram", "drive": "Transmission schematic", "position": "position {p}",
-           "scale": "length scale μL = {mu} m/mm ({s})", "links": "Links: ", "frame": "frame",
-           "crank_rocker": "Crank-rocker (optimum design, rocker at its first extreme C1)",
-           "slider_crank": "Offset slider-crank (slider at its right extreme)",
-           "cam": "Cam mechanism (δ = 0, follower at its lowest)", "disc": "Eccentric disc cam (δ = 0)",
-           "not_scale": "schematic, not to scale; circles are pitch circles (pulleys: datum circles)",
-           "shaft": "Shaft", "n": "n (rpm)", "P": "P (kW)", "T": "T (N·m)",
-           "stage": "Stage", "ratio": "ratio i", "data": "data", "motor": "motor {m}",
-           "shafts": "Speed, power and torque of the shafts", "stages": "Stages",
-           "omega": "ω", "guide": "guide",
-           "drawn_at": "; drawn at position {p}"},
-}
+LABELS = LabelTable({
+    "diagram": pgettext("kinematic sheet", "Kinematic diagram"),
+    "drive": pgettext("kinematic sheet", "Transmission schematic"),
+    "position": pgettext("kinematic sheet", "position {p}"),
+    "scale": pgettext("kinematic sheet", "length scale μL = {mu} m/mm ({s})"),
+    "links": pgettext("kinematic sheet", "Links: "),
+    "frame": pgettext("kinematic sheet", "frame"),
+    "crank_rocker": pgettext("kinematic sheet", "Crank-rocker (optimum design, rocker at its first extreme C1)"),
+    "slider_crank": pgettext("kinematic sheet", "Offset slider-crank (slider at its right extreme)"),
+    "cam": pgettext("kinematic sheet", "Cam mechanism (δ = 0, follower at its lowest)"),
+    "disc": pgettext("kinematic sheet", "Eccentric disc cam (δ = 0)"),
+    "not_scale": pgettext("kinematic sheet", "schematic, not to scale; circles are pitch circles (pulleys: datum circles)"),
+    "shaft": pgettext("kinematic sheet", "Shaft"),
+    "n": pgettext("kinematic sheet", "n (rpm)"),
+    "P": "P (kW)",
+    "T": "T (N·m)",
+    "stage": pgettext("kinematic sheet", "Stage"),
+    "ratio": pgettext("kinematic sheet", "ratio i"),
+    "data": pgettext("kinematic sheet", "data"),
+    "motor": pgettext("kinematic sheet", "motor {m}"),
+    "shafts": pgettext("kinematic sheet", "Speed, power and torque of the shafts"),
+    "stages": pgettext("kinematic sheet", "Stages"),
+    "omega": "ω",
+    "guide": pgettext("kinematic sheet", "guide"),
+    "drawn_at": pgettext("kinematic sheet", "; drawn at position {p}"),
+})
 
 
 
@@ -400,7 +404,6 @@ def lockbeam_diagram(results, found, info: TitleInfo, lang: str) -> Sheet:
     view, n = _fit(s, np.array(L["pts"]), area, pad_paper=14.0)
     frame(s, replace(info, scale=scale_text(n)))
     placer = _placer(s)
-    zh = lang == "zh"
     _title(s, f"{lab['diagram']}  φ = 0°  {scale_text(n)}", area)
     feed = L["feed"]
     feed.draw(s, view, placer, lab)
@@ -482,16 +485,14 @@ def lockbeam_diagram(results, found, info: TitleInfo, lang: str) -> Sheet:
     runs = _tangent_runs(f["B0"], bd["r_big"], bd["small"], bd["r_small"])
     placer.place(view.p((runs[0][0] + runs[0][1]) / 2), "11", 3.5, prefer=1, gap=2.0)
     placer.place(view.p((bd["small"] + bd["arm"]) / 2), "12", 3.5, prefer=-1, gap=2.0)
-    legend = ("2 主轴（送料曲柄、定位凸轮、扳弯凸轮同轴）  3 滑块  4 导杆  5 连杆  6 送料滑块  7 定位销",
-              "8 摆杆（凸轮从动件与输入摇杆）  9 连杆  10 大链轮  11 链  12 扳弯轮（扳弯臂）") if zh else (
-              "2 main shaft (feed crank and both cams on one shaft)  3 block  4 guide bar  5 rod  "
-              "6 feed slider  7 positioning pin",
-              "8 rocker (cam follower and input rocker)  9 coupler  10 large chain wheel  11 chain  "
-              "12 bending wheel (bending arm)")
-    note = ("各组机构分别按 μL 绘制；三组的相对位置、摆杆两臂的夹角、四杆机构机架方向和链传动中心距未给出，为示意"
-            if zh else "each group to μL; not given, so schematic: the groups' placing, the angle of "
-            "the rocker's arms, the four-bar's frame line, the chain's centre distance")
-    _notes(s, [_scale_note(lab, n) + ("；φ = 0°：送料机构位置 1" if zh else "; φ = 0°: feed linkage at position 1"),
+    _ = tr(lang)
+    legend = (_.pgettext("kinematic sheet", "2 main shaft (feed crank and both cams on one shaft)  3 block  "
+                         "4 guide bar  5 rod  6 feed slider  7 positioning pin"),
+              _.pgettext("kinematic sheet", "8 rocker (cam follower and input rocker)  9 coupler  "
+                         "10 large chain wheel  11 chain  12 bending wheel (bending arm)"))
+    note = _.pgettext("kinematic sheet", "each group to μL; not given, so schematic: the groups' placing, "
+                      "the angle of the rocker's arms, the four-bar's frame line, the chain's centre distance")
+    _notes(s, [_scale_note(lab, n) + _.pgettext("kinematic sheet", "; φ = 0°: feed linkage at position 1"),
                note, lab["links"] + legend[0], legend[1]])
     return s
 
@@ -656,10 +657,14 @@ def cam_diagram(c, info: TitleInfo, lang: str) -> Sheet:
                  prefer=complex(g.actual[len(g.actual) // 2]), gap=2.5)
     mid_f = (B0 + stem_top) / 2 if not g.osc else (A + B0) / 2
     placer.place(view.p(mid_f), "2", 3.5, prefer=1, gap=3.0)
-    kind = {"zh": {"roller": "滚子", "knife": "尖顶", "flat": "平底"},
-            "en": {"roller": "roller", "knife": "knife-edge", "flat": "flat-face"}}[lang].get(g.kind, g.kind)
-    legend = (f"1 凸轮  2 {'摆动' if g.osc else '直动'}{kind}从动件" if lang == "zh" else
-              f"1 cam  2 {'oscillating' if g.osc else 'translating'} {kind} follower")
+    _ = tr(lang)
+    kinds = {"roller": pgettext("kinematic sheet", "roller"),
+             "knife": pgettext("kinematic sheet", "knife-edge"),
+             "flat": pgettext("kinematic sheet", "flat-face")}
+    kind = translated(kinds[g.kind], _) if g.kind in kinds else g.kind
+    motion = (_.pgettext("kinematic sheet", "oscillating") if g.osc
+              else _.pgettext("kinematic sheet", "translating"))
+    legend = _.pgettext("kinematic sheet", "1 cam  2 {motion} {kind} follower", motion=motion, kind=kind)
     _notes(s, [_scale_note(lab, n), lab["links"] + legend,
                f"r0 = {format_number(g.r0)} mm" + (f"  rr = {format_number(g.rr)} mm" if g.rr else "")
                + (f"  e = {format_number(g.e)} mm" if g.e else "")])
@@ -909,7 +914,7 @@ def drive_schematic(drive, info: TitleInfo, lang: str) -> Sheet:
         data = (f"d1={format_number(st.d1 * MM)}, d2={format_number(st.d2 * MM)} mm" if st.d1
                 else (f"z1={st.z1}, z2={st.z2}" if st.z1 else "—"))
         srows.append([str(j + 1), st.name_zh if lang == "zh" else st.name_en, format_number(st.ratio, 4), data])
-    table(s, tx, ybot - 8.0, [12, 58, 25, 80], srows, head=["No." if lang == "en" else "序号", lab["stage"],
+    table(s, tx, ybot - 8.0, [12, 58, 25, 80], srows, head=[tr(lang).pgettext("kinematic sheet", "No."), lab["stage"],
                                                              lab["ratio"], lab["data"]],
           title=lab["stages"], title_height=3.5, height=3.0, row_h=6.0)
     _notes(s, [lab["not_scale"], lab["motor"].format(m=drive.motor.designation)
