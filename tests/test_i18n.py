@@ -203,11 +203,16 @@ def test_adding_a_language_is_adding_its_catalogue(tmp_path, monkeypatch):
     from importlib import resources
 
     shipped = Path(str(resources.files("mechdesign.locale")))
-    for po in shipped.glob("*.po"):
+    for po in shipped.glob("*.mo"):
         shutil.copy(po, tmp_path / po.name)
     (tmp_path / "de.po").write_text('msgid ""\nmsgstr ""\n"Content-Type: text/plain; charset=utf-8\\n"\n\n'
                                     'msgid "the cam cannot be designed"\n'
                                     'msgstr "die Kurvenscheibe ist nicht auslegbar"\n', encoding="utf-8")
+    from babel.messages.mofile import write_mo
+    from babel.messages.pofile import read_po
+
+    with open(tmp_path / "de.po", "rb") as src, open(tmp_path / "de.mo", "wb") as dst:
+        write_mo(dst, read_po(src))          # what tools/i18n.py does for a shipped catalogue
     monkeypatch.setattr(i18n.resources, "files", lambda pkg: tmp_path)
     i18n.catalogue.cache_clear()
     try:
@@ -254,3 +259,16 @@ def test_a_traditional_chinese_report_renders(tmp_path):
             return [numbers(v) for v in doc if not isinstance(v, str)]
         return doc
     assert numbers(tw_res) == numbers(zh_res)
+
+
+def test_the_compiled_catalogues_are_current():
+    """The program reads locale/<lang>.mo (standard-library gettext, no Babel at run time);
+    each must be its .po compiled (python tools/i18n.py writes both)."""
+    tool = _tool()
+    for name in ("zh", "zh_TW"):
+        path = SRC / "locale" / f"{name}.mo"
+        shipped = path.read_bytes()
+        try:
+            assert tool.compile_mo(name) == shipped, f"{name}.mo is stale: python tools/i18n.py check"
+        finally:
+            path.write_bytes(shipped)

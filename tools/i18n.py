@@ -21,6 +21,7 @@ from pathlib import Path
 
 from babel.messages.catalog import Catalog
 from babel.messages.extract import extract_from_dir
+from babel.messages.mofile import write_mo
 from babel.messages.pofile import read_po, write_po
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -58,6 +59,16 @@ def save(cat: Catalog, name: str) -> None:
     write_po(buf, cat, width=0, no_location=True, omit_header=False, sort_output=True,
              ignore_obsolete=True)
     (LOCALE / f"{name}.po").write_bytes(buf.getvalue())
+    compile_mo(name)
+
+
+def compile_mo(name: str) -> bytes:
+    """Compile ``<name>.po`` into ``<name>.mo`` (what the program reads at run time, with
+    the standard library's gettext: no Babel needed to run); return its bytes."""
+    buf = BytesIO()
+    write_mo(buf, load(name), use_fuzzy=False)
+    (LOCALE / f"{name}.mo").write_bytes(buf.getvalue())
+    return buf.getvalue()
 
 
 def problems() -> tuple[list[str], list[str]]:

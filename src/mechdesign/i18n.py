@@ -18,8 +18,9 @@ Usage, in the rendering layer, the machines' report modules and the command line
 and translated later; ``python tools/i18n.py check`` lists every marked string that a
 catalogue lacks (tests/test_i18n.py fails on it).
 
-The catalogues are read with Babel (``babel.messages.pofile``) the first time a language
-needs them (~40 ms for a few thousand messages), once per process.
+The program reads the compiled catalogues (``<lang>.mo``, written beside each .po by
+tools/i18n.py with Babel) with the standard library's gettext, the first time a language
+needs them, once per process; Babel is a development tool only.
 """
 from __future__ import annotations
 
@@ -29,10 +30,10 @@ from typing import Callable
 
 def _discover() -> tuple[str, ...]:
     """zh and en, then every other catalogue shipped in locale/ (a directory listing only:
-    adding a language is adding its ``<lang>.po``)."""
+    adding a language is adding its ``<lang>.po``, compiled to ``<lang>.mo``)."""
     try:
         names = sorted(p.name[:-3] for p in resources.files("mechdesign.locale").iterdir()
-                       if p.name.endswith(".po"))
+                       if p.name.endswith(".mo"))
     except (ModuleNotFoundError, FileNotFoundError):      # pragma: no cover
         names = []
     return ("zh", "en") + tuple(n for n in names if n not in ("zh", "en"))
@@ -97,18 +98,20 @@ def N_(msgid: str) -> str:
 
 @lru_cache(maxsize=None)
 def catalogue(name: str) -> dict:
-    """The messages of ``locale/<name>.po``: {(context, msgid): msgstr}, translated ones
-    only (an empty msgstr is a missing translation: the lookup falls back)."""
-    from babel.messages.pofile import read_po
+    """The messages of ``locale/<name>.mo`` (compiled from ``<name>.po`` by Babel when the
+    catalogue is written: tools/i18n.py; the standard library reads it, ~1 ms):
+    {(context, msgid): msgstr}, translated ones only (a missing one falls back)."""
+    import gettext as _gettext
 
-    path = resources.files("mechdesign.locale") / f"{name}.po"
+    path = resources.files("mechdesign.locale") / f"{name}.mo"
     with path.open("rb") as fh:
-        cat = read_po(fh, locale=None, domain="mechdesign")
+        raw = _gettext.GNUTranslations(fh)._catalog
     out = {}
-    for msg in cat:
-        if not msg.id or not msg.string or msg.fuzzy:
-            continue
-        out[(msg.context, msg.id)] = msg.string
+    for key, text in raw.items():
+        if not isinstance(key, str) or not key:
+            continue                                   # the header, plural entries
+        context, sep, msgid = key.partition("\x04")
+        out[(context, msgid) if sep else (None, key)] = text
     return out
 
 
