@@ -57,3 +57,25 @@ def example_results() -> Callable[[str], dict[str, Any]]:
         return dict(cache[name])
 
     return get
+
+
+def read_pdf_text(path: Path, first: int | None = None, last: int | None = None) -> str:
+    """The text of a PDF's pages ``first``..``last`` (1-based, inclusive), in content-stream
+    order, read with PyMuPDF (a test dependency from PyPI, so the tests that read a PDF's text
+    run on a bare machine too; pdftotext is a system package). Runs of spaces of any kind
+    (no-break, em space) become one space, as pdftotext writes them."""
+    import re
+
+    import pymupdf
+
+    with pymupdf.open(path) as doc:
+        lo = (first or 1) - 1
+        hi = last or doc.page_count
+        text = "\n".join(doc[i].get_text("text", sort=False) for i in range(lo, hi))
+    return re.sub(r"[^\S\n]+", " ", text)
+
+
+@pytest.fixture
+def pdf_text() -> Callable[..., str]:
+    """:func:`read_pdf_text`, for tests that check words in a rendered PDF."""
+    return read_pdf_text

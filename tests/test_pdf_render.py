@@ -2,8 +2,6 @@
 
 from __future__ import annotations
 
-import shutil
-import subprocess
 import warnings
 from pathlib import Path
 
@@ -16,6 +14,7 @@ matplotlib.use("Agg")
 
 from mechdesign.render.fonts import cjk_families, configure_matplotlib  # noqa: E402
 from mechdesign.render.pdf import PdfRenderError, markdown_to_typst, render_pdf  # noqa: E402
+from conftest import read_pdf_text
 
 TEMPLATE = Path(__file__).parents[1] / "templates" / "report.typ"
 METADATA = {
@@ -101,13 +100,9 @@ def test_render_pdf_embeds_chinese_fonts(tmp_path):
     assert data.startswith(b"%PDF")
     assert not list(tmp_path.glob(".*.typ")), "temporary typst source left behind"
     assert not list(pdf_path.parent.glob(".*.tmp*")), "temporary PDF left behind"
-    if shutil.which("pdftotext"):
-        text = subprocess.run(
-            ["pdftotext", "-enc", "UTF-8", str(pdf_path), "-"],
-            capture_output=True, text=True, check=True,
-        ).stdout
-        for phrase in ("机械原理课程设计说明书", "指导教师", "运动分析", "表 1", "图 1"):
-            assert phrase in text, phrase
+    text = read_pdf_text(pdf_path)
+    for phrase in ("机械原理课程设计说明书", "指导教师", "运动分析", "表 1", "图 1"):
+        assert phrase in text, phrase
     if cjk_families()["serif"] == "Noto Serif SC":  # fonts from pylopdf_fonts_zh_cn
         assert b"NotoSerifSC" in data and b"NotoSansSC" in data
 

@@ -4,7 +4,7 @@ matplotlib figures, formulas (point names), DXF.
 
 The references are independent of the escaping code: pandoc's own reading of the
 Markdown (its JSON AST must hold nothing but the text), the text extracted from the PDF
-(pdftotext), the Word XML, matplotlib's mathtext decision, ezdxf's decoding of DXF text.
+(PyMuPDF), the Word XML, matplotlib's mathtext decision, ezdxf's decoding of DXF text.
 Each helper is also shown to matter: the same text unescaped does become markup.
 """
 from __future__ import annotations
@@ -13,8 +13,6 @@ import html
 import importlib.util
 import json
 import re
-import shutil
-import subprocess
 import zipfile
 from pathlib import Path
 
@@ -27,14 +25,14 @@ from typer.testing import CliRunner
 from mechdesign.cli import app
 from mechdesign.render.fmt import (dxf_text, md_meta, md_paragraphs, md_text, mpl_text,
                                    plain_line, tex_name)
+from conftest import read_pdf_text
 
 ROOT = Path(__file__).resolve().parents[1]
 HAVE_PANDOC = importlib.util.find_spec("pypandoc") is not None
 HAVE_TYPST = importlib.util.find_spec("typst") is not None
-PDFTOTEXT = shutil.which("pdftotext")
 needs_pandoc = pytest.mark.skipif(not HAVE_PANDOC, reason="pypandoc is needed")
-needs_pdf = pytest.mark.skipif(not (HAVE_PANDOC and HAVE_TYPST and PDFTOTEXT),
-                               reason="pypandoc, typst and pdftotext are needed")
+needs_pdf = pytest.mark.skipif(not (HAVE_PANDOC and HAVE_TYPST),
+                               reason="pypandoc and typst are needed")
 
 CORE = "#$x$*_<>\\@\"'|[]~^&😀"
 # Hostile text: every character pandoc, typst, matplotlib or LaTeX give a meaning, block
@@ -270,13 +268,7 @@ def test_dxf_text_decodes_to_the_literal_text():
 
 
 def pdf_text(path: Path, first: int | None = None, last: int | None = None) -> str:
-    args = [PDFTOTEXT, "-raw"]
-    if first:
-        args += ["-f", str(first)]
-    if last:
-        args += ["-l", str(last)]
-    out = subprocess.run([*args, str(path), "-"], capture_output=True, text=True, check=True)
-    return re.sub(r"\s+", "", out.stdout)
+    return re.sub(r"\s+", "", read_pdf_text(path, first, last))
 
 
 def squeeze(text: str) -> str:
