@@ -114,23 +114,28 @@ def test_v3_table_lookups_against_the_print():
     # Kα(151.9°): the textbook table 8-6 interpolated gives 0.924; the print takes the 155° row
     # (0.93) without interpolating — within the table's step, ours is the rule the textbook states.
     assert belts.wrap_factor(t, math.radians(151.9)) == pytest.approx(0.924, abs=0.001)
-    # P0(B, 140 mm, 720 r/min): ours 1.67 kW (濮良贵 表8-4, between 400 and 730 r/min), the print
-    # 1.75 kW from 《机械基础》 表9-3 (another book's table); ΔP0 (i = 2.93): ours 0.217 kW, the
-    # print 0.23 kW. Not resolved: no stored copy of GB/T 13575.1 shows this row; belts.yaml
-    # keeps the 濮良贵 values and lists them as unconfirmed.
-    assert belts.rated_power(t, "B", 140 * MM, 720) / 1e3 == pytest.approx(1.67, abs=0.005)
-    assert belts.power_increment(t, "B", 410 / 140, 720) / 1e3 == pytest.approx(0.217, abs=0.001)
+    # ΔP0 (i = 410/140 = 2.93, the ≥ 2 column): 0.22 kW at 700 and 0.25 kW at 800 r/min → 0.226,
+    # the print's 0.23 kW.
+    assert belts.power_increment(t, "B", 410 / 140, 720) / 1e3 == pytest.approx(0.226, abs=1e-9)
+    assert round(belts.power_increment(t, "B", 410 / 140, 720) / 1e3, 2) == 0.23
+    # P0(B, 140 mm, 720 r/min): 1.64 kW at 700 and 1.82 kW at 800 r/min in the 9th-ed. table
+    # (GB/T 13575.1-2008 values, two public transcriptions agree, see belts.yaml) → 1.676 kW.
+    # The print's 1.75 kW (《机械基础》 表9-3) is not the standard's value at 720 r/min (it would
+    # be at ≈ 760 r/min): the print is wrong here, by 4 %; its z (3.66 → 4) is not affected.
+    assert belts.rated_power(t, "B", 140 * MM, 720) / 1e3 == pytest.approx(1.676, abs=1e-9)
 
 
 def test_v3_whole_procedure():
     """The procedure with section B and a0 = 500 mm given: the geometry is the print's; z is the
-    same 4; F0 and F_p differ from the print only through Kα and P0 (findings above)."""
+    same 4 (z_exact 3.83: P0 1.676, ΔP0 0.226, Kα 0.924, K_L 0.98); F0 and F_p differ from the
+    print only through Kα (the finding above)."""
     b = belts.design_vbelt(de.belt_tables(), V3["P_c"], V3["n1"], 1.0, V3["d1"], V3["d2"], 0.0, "B", V3["a0"])
     assert (b.a0_min, b.a0_max) == (pytest.approx(0.385), pytest.approx(1.100))
     assert round(b.L_d0 * 1e3, 2) == 1900.39
     assert b.L_d == pytest.approx(2.000) and b.K_L == 0.98
     assert round(b.a * 1e3, 2) == 549.81
     assert round(math.degrees(b.alpha1), 1) == 151.9
+    assert b.z_exact == pytest.approx(6.6 / ((1.676 + 0.226) * 0.9237 * 0.98), rel=1e-4)
     assert b.z == 4
     # with Kα = 0.924 (not 0.93): F0 = 156.3 × (2.5/0.924 − 1) + 4.74 = 271.3 N, 1.0 % above the print
     assert b.F0 == pytest.approx(268.6, rel=0.011)
