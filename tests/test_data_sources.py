@@ -73,3 +73,112 @@ def test_belt_table_status_is_stated():
     assert b["unconfirmed"] == ["selection_chart"]
     assert set(b["confirmed"]) == {"rated_power", "power_increment", "sections", "wrap_factor",
                                    "datum_lengths", "application_factor"}
+
+
+# ------------------------------------------------------------------ other tables (session 28)
+
+# RHD Bearings' 6200/6300 pages as transcribed in public code: designation → (d, D, B, Cr, C0r)
+_RHD = {"6204": (20, 47, 14, 12.8, 6.65), "6206": (30, 62, 16, 19.5, 11.5), "6207": (35, 72, 17, 25.5, 15.2),
+        "6208": (40, 80, 18, 29.5, 18.0), "6209": (45, 85, 19, 31.5, 20.5), "6210": (50, 90, 20, 35.0, 23.2),
+        "6211": (55, 100, 21, 43.2, 29.2), "6212": (60, 110, 22, 47.8, 32.8), "6304": (20, 52, 15, 15.8, 7.88),
+        "6306": (30, 72, 19, 27.0, 15.2), "6308": (40, 90, 23, 40.8, 24.0), "6309": (45, 100, 25, 52.8, 31.8),
+        "6310": (50, 110, 27, 61.8, 38.0), "6311": (55, 120, 29, 71.5, 44.8), "6312": (60, 130, 31, 81.8, 51.8)}
+
+
+def test_confirmed_bearings_are_the_public_table():
+    b = load_yaml("bearings.yaml")
+    rows = {r["designation"]: r for r in b["deep_groove_ball"]}
+    assert set(b["confirmed"]) == set(_RHD)
+    for des, (d, D, B, Cr, C0r) in _RHD.items():
+        r = rows[des]
+        assert (r["d_mm"], r["D_mm"], r["B_mm"], r["Cr_kN"], r["C0r_kN"]) == (d, D, B, Cr, C0r), des
+    # the maker's 6307 (Cr 33.4 kN) differs from the handbook's 33.2 kN kept here: not confirmed
+    assert rows["6307"]["Cr_kN"] == 33.2 and "6307" not in b["confirmed"]
+
+
+def test_tooth_form_factors_are_the_public_table():
+    """A public transcription of 表10-5 (a TypeScript course-design tool): z, YF, YS strings."""
+    z = [17, 18, 19, 20, 21, 22, 23, 24, 25, 26, 27, 28, 29, 30, 35, 40, 45, 50, 60, 70, 80, 90, 100, 150, 200]
+    yf = [2.97, 2.91, 2.85, 2.8, 2.76, 2.72, 2.69, 2.65, 2.62, 2.6, 2.57, 2.55, 2.53, 2.52, 2.45, 2.4, 2.35,
+          2.32, 2.28, 2.24, 2.22, 2.2, 2.18, 2.14, 2.12]
+    ys = [1.52, 1.53, 1.54, 1.55, 1.56, 1.57, 1.575, 1.58, 1.59, 1.595, 1.6, 1.61, 1.62, 1.625, 1.65, 1.67,
+          1.68, 1.7, 1.73, 1.75, 1.77, 1.78, 1.79, 1.83, 1.865]
+    t = load_yaml("gear_factors.yaml")["tooth_form"]
+    assert (t["z"], t["YFa"], t["YSa"]) == (z, yf, ys)
+
+
+def test_efficiencies_and_shaft_allowables_are_the_public_tables():
+    t = load_yaml("transmissions.yaml")
+    # 机械传动效率表: V-belt 0.96, roller chain 0.96, 8-grade closed gears 0.97, machined open gears
+    # 0.94–0.96, flexible coupling 0.99–0.995, ball bearings 0.99
+    assert (t["belt"]["efficiency"], t["chain"]["efficiency"], t["spur"]["efficiency"],
+            t["helical"]["efficiency"], t["bearing_pair"]["efficiency"]) == (0.96, 0.96, 0.97, 0.97, 0.99)
+    assert 0.94 <= t["open_spur"]["efficiency"] <= 0.96 and 0.99 <= t["coupling"]["efficiency"] <= 0.995
+    # 许用弯曲应力 by σB (carbon steel 400/500/600/700 → 40/45/55/65 MPa), linear between the columns,
+    # rounded to 5 MPa as the handbook rounds: Q235 (400) 40, 45 normalized (590) 55, 45 QT (640) 60
+    s = load_yaml("materials.yaml")["shaft"]
+    table = [(400, 40), (500, 45), (600, 55), (700, 65)]
+
+    def allow(sb):
+        for (x0, y0), (x1, y1) in zip(table, table[1:]):
+            if x0 <= sb <= x1:
+                return y0 + (sb - x0) / (x1 - x0) * (y1 - y0)
+
+    for key in ("Q235", "45_normalized", "45_QT"):
+        assert s[key]["sigma_minus1b_allow_MPa"] == 5 * round(allow(s[key]["sigma_B_MPa"]) / 5), key
+
+
+def test_every_data_file_states_its_source_and_status():
+    from importlib import resources
+
+    for name in ("belts.yaml", "chains.yaml", "bearings.yaml", "keys.yaml", "materials.yaml",
+                 "gear_factors.yaml", "transmissions.yaml"):
+        text = resources.files("mechdesign.data").joinpath(name).read_text(encoding="utf-8")
+        assert "confirmed:" in text, name
+        head = text.split("\n\n")[0]
+        assert any(w in head for w in ("濮良贵", "GB/T", "《机械设计课程设计》", "handbook")), name
+    csv = resources.files("mechdesign.data").joinpath("motors.csv").read_text(encoding="utf-8")
+    assert "# confirmed:" in csv and "JB/T 10391" in csv
+
+
+# ------------------------------------------------------------------ the report's list
+
+def test_data_assumptions_name_exactly_the_unconfirmed_entries_used():
+    from types import SimpleNamespace as NS
+
+    from mechdesign.core import strength as s
+    from mechdesign.stages.drive import data_assumptions
+
+    def key(allow):
+        return NS(check=s.check("key_crushing", "k", "k", "s", 10e6, allow, "MPa"))
+
+    belt_chart = NS(design=NS(kind="belt", geometry=NS(section_given=False), materials=()))
+    belt_given = NS(design=NS(kind="belt", geometry=NS(section_given=True), materials=()))
+    gear = NS(design=NS(kind="gear", geometry=None, materials=("40Cr_QT", "HT300")))
+    worm = NS(design=NS(kind="worm", geometry=None, materials=("45_surface_hardened", "ZCuSn10P1_metal")))
+    confirmed_bearing = NS(designation="6311")
+    shafts = [NS(material="45_QT", bearing=confirmed_bearing, keys=(key(100e6),)),
+              NS(material="40Cr_QT", bearing=NS(designation="6219"), keys=(key(50e6),))]
+    codes = data_assumptions(NS(designation="Y132S-4"), [belt_given, gear, worm], shafts)
+    # confirmed: motor Y132S-4, the given belt section, 40Cr_QT, ZCuSn10P1 metal mould, 6311,
+    # [σ-1b] of 45_QT, steel keys
+    # the worm's own material does not enter a limit (the wheel's tables govern)
+    assert codes == ("ratio_ranges", "gear_material:HT300", "worm_Zrho",
+                     "shaft_A0", "shaft_series", "key_lengths", "shaft_material:40Cr_QT", "bearing:6219",
+                     "key_cast_iron")
+    codes = data_assumptions(NS(designation="Y90L-4"), [belt_chart], [])
+    assert codes == ("motor:Y90L-4", "ratio_ranges", "belt_chart")
+
+
+def test_data_assumption_rows_are_translated():
+    from mechdesign.render.drive_report import _ASSUMED, data_assumption_rows
+
+    codes = ["motor:Y90L-4", "gear_material:HT300", "worm_wheel:HT150", "shaft_material:40Cr_QT",
+             "bearing:6219"] + [k for k in _ASSUMED if k not in ("motor", "gear_material", "worm_wheel",
+                                                                  "shaft_material", "bearing")]
+    en, zh = data_assumption_rows(codes, "en"), data_assumption_rows(codes, "zh")
+    assert len(en) == len(zh) == len(_ASSUMED)
+    assert en[0] == "motor Y90L-4: the rated data of the handbook's Y-series table"
+    assert "6219" in en[4] and "$C_{0r}$" in en[4] and "{" not in en[0]
+    assert all(a != b for a, b in zip(en, zh))          # every line has its Chinese text
+    assert all(not any("\u4e00" <= ch <= "\u9fff" for ch in line) for line in en)
