@@ -182,3 +182,21 @@ def test_data_assumption_rows_are_translated():
     assert "6219" in en[4] and "$C_{0r}$" in en[4] and "{" not in en[0]
     assert all(a != b for a, b in zip(en, zh))          # every line has its Chinese text
     assert all(not any("\u4e00" <= ch <= "\u9fff" for ch in line) for line in en)
+
+
+def test_bearing_dimensions_above_60_mm_are_iso_15():
+    """d × D × B of the 62xx and 63xx rows above 60 mm against a public ISO 15 dimension table;
+    the 6213 … 6220 ratings against another maker's public table (plausibility, ≤ 3 %)."""
+    iso = {"6213": (65, 120, 23), "6214": (70, 125, 24), "6215": (75, 130, 25), "6216": (80, 140, 26),
+           "6217": (85, 150, 28), "6218": (90, 160, 30), "6219": (95, 170, 32), "6220": (100, 180, 34),
+           "6221": (105, 190, 36), "6222": (110, 200, 38), "6224": (120, 215, 40), "6226": (130, 230, 40),
+           "6313": (65, 140, 33), "6314": (70, 150, 35), "6315": (75, 160, 37), "6316": (80, 170, 39),
+           "6317": (85, 180, 41), "6318": (90, 190, 43), "6319": (95, 200, 45), "6320": (100, 215, 47),
+           "6321": (105, 225, 49), "6322": (110, 240, 50), "6324": (120, 260, 55), "6326": (130, 280, 58)}
+    rows = {r["designation"]: r for r in load_yaml("bearings.yaml")["deep_groove_ball"]}
+    for des, dims in iso.items():
+        assert (rows[des]["d_mm"], rows[des]["D_mm"], rows[des]["B_mm"]) == dims, des
+    maker = {"6213": 57.2, "6214": 61.8, "6215": 66.3, "6216": 72.8, "6217": 83.2, "6218": 95.6,
+             "6219": 108, "6220": 124}
+    for des, cr in maker.items():
+        assert rows[des]["Cr_kN"] == pytest.approx(cr, rel=0.03), des
