@@ -200,3 +200,30 @@ def test_bearing_dimensions_above_60_mm_are_iso_15():
              "6219": 108, "6220": 124}
     for des, cr in maker.items():
         assert rows[des]["Cr_kN"] == pytest.approx(cr, rel=0.03), des
+
+
+def test_tapered_bearing_dimensions_are_the_public_table():
+    dims = {"30204": (20, 47, 15.25), "30205": (25, 52, 16.25), "30206": (30, 62, 17.25),
+            "30207": (35, 72, 18.25), "30208": (40, 80, 19.75), "30209": (45, 85, 20.75),
+            "30210": (50, 90, 21.75), "30211": (55, 100, 22.75), "30212": (60, 110, 23.75),
+            "30213": (65, 120, 24.75)}
+    rows = {r["designation"]: r for r in load_yaml("bearings.yaml")["tapered_roller"]}
+    for des, (d, D, T) in dims.items():
+        assert (rows[des]["d_mm"], rows[des]["D_mm"], rows[des]["T_mm"]) == (d, D, T), des
+
+
+def test_drive_procedures_build_no_check_by_hand():
+    """Issue 20: every check of the drive procedures comes from core.strength.check (the verdict
+    derived from value, limit and sense); no module constructs Check(...) with a verdict."""
+    import ast
+    from pathlib import Path
+
+    import mechdesign
+
+    root = Path(mechdesign.__file__).parent
+    for rel in ("stages/drive.py", "stages/drive_strength.py", "stages/drive_elements.py",
+                "core/belts.py", "core/chains.py"):
+        tree = ast.parse((root / rel).read_text(encoding="utf-8"))
+        calls = [n for n in ast.walk(tree) if isinstance(n, ast.Call)
+                 and getattr(n.func, "id", getattr(n.func, "attr", None)) == "Check"]
+        assert not calls, f"{rel}: Check(...) built by hand at line {calls[0].lineno}"
