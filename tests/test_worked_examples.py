@@ -14,7 +14,7 @@ Where the examples for the other procedures live:
 * gear strength: tests/test_strength.py (濮良贵 例题 10-1, and the 9th-ed. worm example);
 * V-belt: tests/test_belts.py ([V1], A section, F0 = 97.49 N, F_p = 969.66 N) and [V3], [V4] below;
 * roller chain: [C1], [C2] below (test_belts.py::test_chain_by_hand is a hand calculation);
-* shaft: [S1] below.
+* shaft: [S1] and [S2] below.
 
 Sources
 -------
@@ -40,6 +40,11 @@ Sources
 [S1] 材料力学, 弯扭组合 example (传动轴 AD, 第三强度理论), stored page
      https://m.docduoduo.com/p-6521458.html: at the critical section C (left) M_z = 1.06 kN·m,
      M_y = 4.24 kN·m → M = 4.37 kN·m, T = 0.8 kN·m, [σ] = 50 MPa → d ≥ 96.7 mm, d = 100 mm.
+[S2] A course design's chain-drive shaft (45 steel 调质, σB = 650 MPa, [σ-1b] = 60 MPa), stored
+     page https://www.xiaomilidoc.com/p-10973576.html: M_aV = 122.09 N·m, M_aH = 165.58 N·m →
+     M_a = 205.72 N·m; T = 264.47 N·m, α = 0.6 → M_e = √(M_a² + (αT)²) = 260 N·m;
+     d ≥ ∛(M_e/(0.1[σ-1b])) printed 26.4 mm (× 1.05 = 27.72 mm, so the 32 mm shaft "符合要求").
+     The printed 26.4 mm is wrong: ∛(260×10³/(0.1 × 60)) = 35.1 mm; at 32 mm σ_ca = 79.3 MPa > 60.
 [K1] 材料力学 例 6-3 (gear on a shaft by a flat key), stored page
      https://www.daxuesoutijiang.com/questions-13d6e46a8f87d3c8ddc1ed6827f2d8ca: d = 70 mm,
      b × h × l = 20 × 12 × 100 mm, T = 2 kN·m, [τ] = 60 MPa, [σ_jy] = 100 MPa →
@@ -209,6 +214,23 @@ def test_s1_bending_torsion_example():
     assert r_exact.check.value * M_print == pytest.approx(50e6 * (math.pi / 32) / 0.1, rel=1e-12)
     # d = 100 mm (the print's choice) passes [σ] = 50 MPa
     assert r.check.passed and r.check.value == pytest.approx(math.hypot(M, T) / (0.1 * 0.1 ** 3))
+
+
+def test_s2_course_design_shaft_and_its_error():
+    Ma = math.hypot(122.09, 165.58)
+    assert round(Ma, 2) == 205.72
+    Me = math.hypot(205.72, 0.6 * 264.47)
+    assert round(Me) == 260
+    # the same through core.strength.shaft_check: the two planes' moments at mid-span of a 1 m
+    # span (M = F L/4), T = 264.47 N·m, α = 0.6
+    r = s.shaft_check(1.0, [s.PointLoad(0.5, 4 * 165.58, 4 * 122.09)], 264.47, 32 * MM, 60e6, alpha=0.6)
+    assert r.critical.M == pytest.approx(Ma, rel=1e-9)
+    assert r.critical.Mca == pytest.approx(Me, rel=1e-3)
+    # PRINT ERROR: d ≥ ∛(M_e/(0.1 [σ-1b])) is 35.1 mm, not the printed 26.4 mm
+    d_need = (260e3 / (0.1 * 60)) ** (1 / 3)
+    assert round(d_need, 1) == 35.1 and d_need > 26.4 * 1.3
+    # so the 32 mm shaft the print accepts fails the check: σ_ca = 260 N·m/(0.1 × 0.032³) = 79.3 MPa
+    assert round(r.check.value / 1e6, 1) == 79.3 and not r.check.passed
 
 
 # ------------------------------------------------------------------------------- [K1] key
