@@ -120,6 +120,18 @@ for _machine in ("drive", "furnace_pusher"):
 # pusher's margins did not move
 EXPECTED["drive"].append(("verification.checks.9.value", _GEO + " (the smallest margin of a stage)"))
 
+# Issue 20 point 4 (session 28): the V-belt tables 8-4/8-5 are now the 9th edition's (columns
+# 700, 950, 1450 r/min plus 1600, 2000, 2400; the old table called the first three 730, 980,
+# 1460 and held B values of another tabulation), confirmed against two public transcriptions
+# (data/belts.yaml). P0, ΔP0, the rated power of one belt and z_exact move by ≤ 4 %; the
+# number of belts z, F0, F_p and everything downstream are unchanged in every example.
+_BELT_TABLES = "issue 20: V-belt P0/ΔP0 from the confirmed 9th-ed. tables 8-4/8-5 (z, F0, F_p unchanged)"
+for _machine in ("shaper", "slotter", "die_cutter", "lockbeam"):
+    EXPECTED.setdefault(_machine, []).extend([
+        (f"drive.stages.*.design.geometry.{leaf}", _BELT_TABLES) for leaf in ("P0", "dP0", "P_r", "z_exact")] + [
+        ("drive.stages.*.design.geometry.checks.*.inputs.z_exact", _BELT_TABLES),
+        ("drive.stages.*.design.checks.*.inputs.z_exact", _BELT_TABLES)])
+
 _EXACT_QUALITY = "γ_min / α_max of each group now refined between the samples (Brent), the working stroke's ends included"
 _EXACT_WORK += [("*quality.*.extreme", _EXACT_QUALITY), ("*quality.*.extreme_phase", _EXACT_QUALITY),
                 ("*quality.*.working_extreme", _EXACT_QUALITY),

@@ -161,6 +161,23 @@ def shaft_diameter_series() -> tuple[float, ...]:
     return tuple(v * MM for v in load_yaml("materials.yaml")["shaft_diameter_series_mm"])
 
 
+def unconfirmed(name: str) -> frozenset[str]:
+    """The entries of the shipped data file ``name`` (e.g. ``"belts.yaml"``) that could not be
+    confirmed against a public copy of their source (the file's ``unconfirmed`` list; each
+    file's header says what the others were checked against)."""
+    return frozenset(load_yaml(name).get("unconfirmed", ()))
+
+
+def motor_confirmed(designation: str) -> bool:
+    """True when the motor's row of motors.csv was confirmed against a public copy (its
+    ``# confirmed:`` comment line)."""
+    from importlib import resources
+
+    text = resources.files("mechdesign.data").joinpath("motors.csv").read_text(encoding="utf-8")
+    names = [ln.split(":", 1)[1].split() for ln in text.splitlines() if ln.startswith("# confirmed:")]
+    return any(designation in n for n in names)
+
+
 def bearing_confirmed(designation: str) -> bool:
     """True when the bearing's ratings were confirmed against a public copy of the table
     (bearings.yaml ``confirmed``); the others are transcribed and named as an assumption."""

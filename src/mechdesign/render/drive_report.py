@@ -89,8 +89,49 @@ def drive_context(d, lang: str, figures: dict[str, str], machine_power_eq: str |
         "peak_shaft": _shaft_name(d.peak_from_shaft, len(d.shafts) - 1, _.zh) if d.peak_from_shaft is not None else "",
         "warnings": [md_text(w.text(lang)) for w in d.warnings],
         "stage_designs": stage_designs(d, lang),
+        "assumptions": data_assumption_rows(getattr(d, "data_assumptions", ()), lang),
         "fig": figures,
     }
+
+
+# The catalogue entries a design used without a confirmed source (DriveResult.data_assumptions):
+# code (before ':') → what is assumed; {x} the key after ':' (a material, bearing or motor).
+_ASSUMED = {
+    "motor": N_("motor {x}: the rated data of the handbook's Y-series table"),
+    "ratio_ranges": N_("the recommended and largest ratio of each kind of stage (the ratio allocation)"),
+    "belt_chart": N_("the V-belt section from the selection chart (fig. 8-11, its boundaries read as "
+                     "straight lines)"),
+    "chain_rating": N_("the roller chain's rated power (the ANSI formulas stand in for the chart, "
+                       "fig. 9-11)"),
+    "chain_table": N_("the chain's mass per metre and tensile load (table 9-1, static safety)"),
+    "gear_material": N_("the limits $\\sigma_{{Hlim}}$ and $\\sigma_{{FE}}$ of {x} (read off the textbook's charts, ±5 %)"),
+    "worm_wheel": N_("the allowable stresses of the worm wheel's {x}"),
+    "worm_Zrho": N_("the worm's contact coefficient $Z_\\rho$ (a quadratic fit of fig. 11-18)"),
+    "shaft_A0": N_("$A_0$ and $[\\tau_T]$ of the shaft materials (table 15-3)"),
+    "shaft_series": N_("the standard diameters the shaft sections are rounded up to (GB/T 2822)"),
+    "shaft_material": N_("the allowable bending stress $[\\sigma_{{-1b}}]$ of {x}"),
+    "bearing": N_("bearing {x}: $C_r$ and $C_{{0r}}$ of the handbook table"),
+    "key_lengths": N_("the length range of each flat key (GB/T 1096)"),
+    "key_cast_iron": N_("the allowable crushing stress of keys in cast-iron hubs (table 6-2)"),
+}
+
+
+def data_assumption_rows(codes, lang: str) -> list[str]:
+    """One line per unconfirmed catalogue entry the design used, in the report's language."""
+    from ..data import catalogues as cat
+
+    _ = tr(lang)
+    out = []
+    for code in codes:
+        kind, _sep, key = code.partition(":")
+        x = key
+        if kind in ("gear_material", "worm_wheel"):
+            x = _mat_name(key, _)
+        elif kind == "shaft_material":
+            m = cat.shaft_material(key)
+            x = m.name_zh if _.zh else m.name_en
+        out.append(_(_ASSUMED[kind], x=md_text(x)) if kind in _ASSUMED else md_text(code))
+    return out
 
 
 def _mat_name(key: str, _) -> str:

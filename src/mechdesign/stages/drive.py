@@ -65,6 +65,8 @@ class DriveResult:
     peak_from_shaft: int | None = q("1", "first shaft carrying the peak torque (None: none)")
     warnings: tuple[Finding, ...] = q("", "speed error, stage ratios, undercut, failed checks")
     shaft_designs: tuple[ds.ShaftDesign, ...] = q("", "one per shaft after the motor")
+    data_assumptions: tuple[str, ...] = q("", "the unconfirmed catalogue entries the design used "
+                                          "(see data_assumptions())", default=())
 
     @property
     def motor(self) -> core.Motor:
@@ -97,6 +99,10 @@ class DriveDocument:
     peak_factor: float = q("1", "design torque / mean torque on the shafts that carry the peak")
     shaft_designs: tuple[ds.ShaftDesign, ...] = q("", "one per shaft after the motor")
     warnings: tuple[str, ...] = q("", "findings (English)")
+    data_assumptions: tuple[str, ...] = q("", "catalogue entries the design used that could not be "
+                                          "confirmed against a public copy of their source: 'kind' "
+                                          "or 'kind:key' (e.g. 'bearing:6219', 'gear_material:HT300')",
+                                          default=())
 
 
 def motor_catalogue() -> list[core.Motor]:
@@ -254,7 +260,71 @@ def design_drive(dp, machine_power: float, output_rpm: float, source: str,
     return DriveResult(output_rpm, machine_power, source, eta, p_d, choice, tuple(results),
                        tuple(shafts), n_out, error, dp.speed_tolerance, dp.service_hours, dp.KA,
                        dp.bearing_eff, dp.machine_eff, peak_factor, peak_from_shaft,
-                       tuple(warnings) + _strength_warnings(results, shaft_designs), shaft_designs)
+                       tuple(warnings) + _strength_warnings(results, shaft_designs), shaft_designs,
+                       data_assumptions(choice.motor, results, shaft_designs))
+
+
+def data_assumptions(motor, stages, shaft_designs) -> tuple[str, ...]:
+    """The catalogue entries this drive used that could not be confirmed against a public copy
+    of their source (each data file's ``unconfirmed`` list, bearings.yaml's and motors.csv's
+    ``confirmed``), in the order the design uses them: 'motor:<designation>', 'ratio_ranges',
+    'belt_chart' (section from the chart), 'chain_rating', 'chain_table' (q, Q: static
+    safety), 'gear_material:<key>', 'worm_wheel:<key>', 'worm_Zrho' (the fitted Z_ρ curve),
+    'shaft_A0', 'shaft_series', 'shaft_material:<key>', 'bearing:<designation>',
+    'key_lengths', 'key_cast_iron'."""
+    from ..data import catalogues as cat
+
+    out: list[str] = []
+
+    def add(code):
+        if code not in out:
+            out.append(code)
+
+    mats, belts_u, chains_u = cat.unconfirmed("materials.yaml"), cat.unconfirmed("belts.yaml"), \
+        cat.unconfirmed("chains.yaml")
+    if motor is not None and not cat.motor_confirmed(motor.designation):
+        add(f"motor:{motor.designation}")
+    if {"ratio_recommended", "ratio_max"} & cat.unconfirmed("transmissions.yaml"):
+        add("ratio_ranges")
+    for st in stages:
+        d = st.design
+        if d is None:
+            continue
+        g = d.geometry
+        if d.kind == "belt" and g is not None and not g.section_given and "selection_chart" in belts_u:
+            add("belt_chart")
+        elif d.kind == "chain" and g is not None:
+            if "rated_power_formula" in chains_u:
+                add("chain_rating")
+            if g.S is not None and "chains.q_Q" in chains_u:
+                add("chain_table")
+        elif d.kind == "gear":
+            for m in d.materials:
+                if f"gear.{m}" in mats:
+                    add(f"gear_material:{m}")
+        elif d.kind == "worm":
+            # the wheel's allowable stresses govern (the worm's material enters only through the
+            # wheel tables' "worm flank > 45 HRC" column)
+            for m in d.materials[1:]:
+                if f"worm_wheel.{m}" in mats:
+                    add(f"worm_wheel:{m}")
+            add("worm_Zrho")
+    keys_u = cat.unconfirmed("keys.yaml")
+    steel_lo, _hi = cat.key_allowable_stress("steel", "light_shock")
+    for sd in shaft_designs:
+        if "shaft.A0_tauT" in mats:
+            add("shaft_A0")
+        if "shaft_diameter_series_mm" in mats:
+            add("shaft_series")
+        if f"shaft.{sd.material}.allowable_bending" in mats:
+            add(f"shaft_material:{sd.material}")
+        if sd.bearing is not None and not cat.bearing_confirmed(sd.bearing.designation):
+            add(f"bearing:{sd.bearing.designation}")
+        if sd.keys and "L_range" in keys_u:
+            add("key_lengths")
+        if any(k.check.allowable < steel_lo for k in sd.keys) and "allowable_crushing_MPa.cast_iron" in keys_u:
+            add("key_cast_iron")
+    return tuple(out)
 
 
 def _strength(dp, results, shafts, peak_factor, peak_from_shaft):
@@ -571,6 +641,6 @@ def drive_document(d: DriveResult) -> DriveDocument:
         output_speed_rpm=d.output_speed, speed_error=d.speed_error,
         speed_tolerance=d.speed_tolerance, service_hours=d.service_hours,
         peak_factor=d.peak_factor, shaft_designs=d.shaft_designs,
-        warnings=tuple(w.en for w in d.warnings))
+        warnings=tuple(w.en for w in d.warnings), data_assumptions=d.data_assumptions)
 
 
