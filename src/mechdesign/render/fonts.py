@@ -76,6 +76,19 @@ def _package_fonts() -> dict[str, Path] | None:
     return None
 
 
+def register_ezdxf_fonts() -> None:
+    """Let ezdxf measure texts (the DXF extents) in the shipped CJK fonts: its font manager
+    knows only the system's fonts, and a bare machine has none, so every text would be
+    measured in a fallback font. Adds the package's font files once, when missing."""
+    pkg = _package_fonts()
+    if not pkg:
+        return
+    from ezdxf.fonts import fonts
+
+    if not all(fonts.font_manager.has_font(f.name) for f in pkg.values()):
+        fonts.font_manager.scan_folder(pkg["sans"].parent)
+
+
 def font_dirs() -> list[Path]:
     """Directories holding the CJK fonts, to pass to typst's ``font_paths``.
 

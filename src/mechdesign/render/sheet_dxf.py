@@ -127,6 +127,9 @@ def _set_extents(doc) -> None:
     included), so a viewer's "zoom extents" and first view show the drawing."""
     from ezdxf import bbox
 
+    from .fonts import register_ezdxf_fonts
+
+    register_ezdxf_fonts()
     msp = doc.modelspace()
     box = bbox.extents(msp, fast=False)
     if box.has_data:
