@@ -25,6 +25,7 @@ from pathlib import Path
 from typing import Any
 
 from .fmt import grouped, in_lang, md_text, verdict
+from ..i18n import tr
 
 # --------------------------------------------------------------------------- references
 
@@ -162,7 +163,10 @@ def _describe(node: dict, path: tuple, parents: tuple, names: dict, actuator) ->
         group = ("计算自检", "self-checks")
     else:
         group = (keys[0] if keys else "", keys[0] if keys else "")
-    if node.get("name_zh") or node.get("name_en"):
+    if isinstance(node.get("name_args"), dict) and node.get("name"):     # a strength check (msgid)
+        args = node["name_args"]
+        name = (tr("zh")(node["name"], **args), tr("en")(node["name"], **args))
+    elif node.get("name_zh") or node.get("name_en"):
         name = (node.get("name_zh") or node.get("name_en"), node.get("name_en") or node.get("name_zh"))
     else:
         key = node.get("key", "")

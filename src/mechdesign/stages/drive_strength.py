@@ -32,6 +32,7 @@ from dataclasses import dataclass, replace
 from ..core import belts, chains, gears, strength as st
 from ..core.fields import q
 from ..data import catalogues as cat
+from ..i18n import N_, tr
 from . import drive_elements as de
 
 K_V, K_BETA, S_H, S_F = 1.1, 1.1, 1.0, 1.4
@@ -183,11 +184,11 @@ def _gear_stage(s, n1: float, T1: float, T2: float, hours: float, KA: float,
     checks = []
     if not is_open:
         c = st.gear_contact_check(T1, K, b, d1, u, ZE, ZH, Ze, Zb, sH)
-        checks.append(replace(c, name_zh="齿面接触疲劳强度", name_en="Contact fatigue (flanks)"))
-    for i, who in enumerate(("小齿轮", "大齿轮")):
+        checks.append(replace(c, name=N_("Contact fatigue (flanks)")))
+    for i in range(2):
         c = st.gear_bending_check(T1, K, b, d1, m, yf[i][0], yf[i][1], Ye, Yb, sF[i])
-        checks.append(replace(c, name_zh=f"{who}齿根弯曲疲劳强度",
-                              name_en=f"{'Pinion' if i == 0 else 'Gear'} root bending fatigue"))
+        checks.append(replace(c, name=N_("Pinion root bending fatigue") if i == 0
+                              else N_("Gear root bending fatigue")))
     Ft = 2 * T1 / d1
     forces = {"Ft": Ft, "Fr": Ft * math.tan(math.radians(20)) / math.cos(beta), "Fa": Ft * math.tan(beta),
               "d1": d1, "d2": d1 * u}
@@ -232,10 +233,9 @@ def _worm_stage(s, n1: float, P1: float, T1: float, T2: float, hours: float, KA:
     YFa2 = cat.tooth_factors(max(zv2, 17.0))[0]
     area = st.worm_housing_area(a)
     checks = (
-        replace(st.worm_contact_check(T2, K, a, wheel.ZE, zr, sH), name_zh="蜗轮齿面接触疲劳强度",
-                name_en="Worm-wheel contact fatigue"),
-        replace(st.worm_bending_check(T2, K, geo.d1, geo.d2, m, YFa2, gamma, sF), name_zh="蜗轮齿根弯曲疲劳强度",
-                name_en="Worm-wheel root bending fatigue"),
+        st.worm_contact_check(T2, K, a, wheel.ZE, zr, sH),
+        replace(st.worm_bending_check(T2, K, geo.d1, geo.d2, m, YFa2, gamma, sF),
+                name=N_("Worm-wheel root bending fatigue")),
         st.worm_thermal(P1, eta, KD_WORM, area),
     )
     Ft1 = 2 * T1 / geo.d1
@@ -275,21 +275,27 @@ def stage_designs(dp, results, shafts, peak_factor, peak_from_shaft) -> tuple[li
             try:
                 b = de.belt_design(s, r, shafts[k], dp)
             except belts.BeltDesignError as e:
-                from ..core.drive import DriveDesignError
-                raise DriveDesignError(f"drive.stages[{s.index}]: {e.en}", f"drive.stages[{s.index}]：{e.zh}") from None
+                raise _stage_error(s.index, e) from None
             out.append(StageDesign("belt", b, (), None, None, False, None, b.KA, T1, T2, {"Q": b.Fp}, {},
                                    b.checks, {"v": b.v}))
         elif s.type == "chain":   # 濮良贵 ch.9: F_Q ≈ (1.2…1.3) F_e on the shafts
             try:
                 c = de.chain_design(s, r, shafts[k], dp)
             except chains.ChainDesignError as e:
-                from ..core.drive import DriveDesignError
-                raise DriveDesignError(f"drive.stages[{s.index}]: {e.en}", f"drive.stages[{s.index}]：{e.zh}") from None
+                raise _stage_error(s.index, e) from None
             out.append(StageDesign("chain", c, (), None, None, False, None, c.KA, T1, T2, {"Q": c.FQ}, {},
                                    c.checks, {"v": c.v}))
         else:
             out.append(StageDesign(s.type, None, (), None, None, False, None, 1.0, T1, T2, {}, {}, (), {}))
     return out, worm_eff
+
+
+def _stage_error(index: int, e):
+    """The design error of a belt or chain stage, prefixed with the stage's brief field."""
+    from ..core.drive import DriveDesignError
+    from ..core.errors import Msg
+
+    return DriveDesignError(Msg(N_("drive.stages[{i}]: {error}"), i=index, error=e.message))
 
 
 def _round_up(x: float, step: float) -> float:
@@ -391,12 +397,12 @@ def _bearing_life(b, res, life_res, n_rpm, hours, peak):
         p0 = max(st.bearing_static_load(res.FrA, ax0.Fa1, 0.5, b.Y0),
                  st.bearing_static_load(res.FrB, ax0.Fa2, 0.5, b.Y0))
     life = st.bearing_life_check(b.Cr, max(pA, pB), n_rpm, hours, b.ball)
-    life = replace(life, name_zh=f"轴承 {b.designation} 寿命", name_en=f"Bearing {b.designation} life")
+    life = replace(life, name=N_("Bearing {designation} life"), name_args={"designation": b.designation})
     static = None
     if peak:
         static = replace(st.bearing_static_check(b.C0r, max(p0, 1e-9), STATIC_S0),
-                         name_zh=f"轴承 {b.designation} 静强度（峰值载荷）",
-                         name_en=f"Bearing {b.designation} static strength (peak load)")
+                         name=N_("Bearing {designation} static strength (peak load)"),
+                         name_args={"designation": b.designation})
     return (pA, pB), life, static
 
 
@@ -435,7 +441,8 @@ def _keys(info, d_end, d_seat, T_of, allow_of, key_length=None):
         hub, L, lw, count, c = choice
         nm = i["name"]
         lab = f"{key.label}×{L * 1e3:g}" + (" ×2" if count == 2 else "")
-        c = replace(c, name_zh=f"平键 {lab}（{nm[0]}）", name_en=f"Key {lab} ({nm[1]})")
+        c = replace(c, name=N_("Key {label} ({element_en})"),
+                    name_args={"label": lab, "element_zh": nm[0], "element_en": nm[1]})
         out.append((KeyDesign(nm, dk, key.b, key.h, L, lw, hub, count, T, c),
                     i["inside"] or d_end is None))
     return out
@@ -592,7 +599,7 @@ def shaft_designs(dp, designs, shafts, peak_factor, peak_from_shaft, names,
         if ch is not None and not checks[0].passed:
             fld = f"drive.shafts[{ch.index}].{'end_mm' if d_end is not None else 'journal_mm'}"
             need = st.standard_diameter(d_min, series_d)
-            advice = advice + ((checks[0].name_en, fld, f"{fld} ≥ {_mmf(need)}", f"{fld} ≥ {_mmf(need)}"),)
+            advice = advice + ((tr("en")(checks[0].name, **checks[0].name_args), fld, f"{fld} ≥ {_mmf(need)}", f"{fld} ≥ {_mmf(need)}"),)
         if ev["life"] is not None:
             checks.append(ev["life"])
         if ev["static"] is not None:
@@ -675,7 +682,7 @@ def _advice(ch, ev, dims, free_ev, free_dims):
             fix_en = (f"remove {field} (the design takes the longest key the hub allows, or two keys)"
                       if ch.key_length else f"{field} ≥ {_mmf(fs)}")
             fix_zh = (f"删去 {field}（设计取轮毂允许的最长键或双键）" if ch.key_length else f"{field} ≥ {_mmf(fs)}")
-        out.append((c.name_en, field, fix_zh, fix_en))
+        out.append((tr("en")(c.name, **c.name_args), field, fix_zh, fix_en))
     return tuple(out)
 
 
