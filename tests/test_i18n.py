@@ -264,3 +264,19 @@ def test_the_compiled_catalogues_are_current():
             assert tool.compile_mo(name) == shipped, f"{name}.mo is stale: python tools/i18n.py check"
         finally:
             path.write_bytes(shipped)
+
+
+@pytest.mark.parametrize("given, want", [("zh-tw", "zh_TW"), ("zh-TW", "zh_TW"), ("ZH_TW", "zh_TW"),
+                                         ("zh_tw", "zh_TW"), ("en", "en"), ("EN", "en"), ("Zh", "zh")])
+def test_lang_option_is_case_and_separator_insensitive(given, want):
+    """`--lang zh-tw` / `zh-TW` / `EN` are accepted as zh_TW / en by every command (issue 22);
+    an unknown language is refused with exit 2 and the allowed ones listed."""
+    from typer.testing import CliRunner
+
+    from mechdesign.cli import _parse_lang, app
+
+    assert _parse_lang(given).value == want
+    brief = str(ROOT / "designs" / "cam_7_1.yaml")
+    assert CliRunner().invoke(app, ["check", brief, "--lang", given]).exit_code == 0
+    bad = CliRunner().invoke(app, ["check", brief, "--lang", given + "x"])
+    assert bad.exit_code == 2 and "zh_TW" in bad.output

@@ -243,9 +243,24 @@ def _parse_formats(text: str) -> tuple[str, ...]:
 
 
 # Options shared by the commands (metavars for people: BRIEF, DIR, N, i/n, LANG, FORMATS).
+def _parse_lang(text) -> "Lang":
+    """--lang as a :data:`Lang`, case- and separator-insensitive (zh-tw, ZH_TW → zh_TW; EN → en)."""
+    from .i18n import canonical
+
+    if isinstance(text, Lang):
+        return text
+    name = canonical(text)
+    if name is None:
+        raise typer.BadParameter(f"{text!r}: allowed languages are {', '.join(LANGUAGES)} "
+                                 "(any case, - or _)", param_hint="--lang")
+    return Lang(name)
+
+
 def _lang_option(help_text: str):
-    return typer.Option(None, "--lang", metavar="LANG", case_sensitive=False,
-                        help=f"{help_text} {', '.join(LANGUAGES)} (any case).")
+    return typer.Option(None, "--lang", metavar="LANG", parser=_parse_lang,
+                        autocompletion=lambda incomplete: [n for n in LANGUAGES if n.lower().startswith(
+                            incomplete.replace("-", "_").lower())],
+                        help=f"{help_text} {', '.join(LANGUAGES)} (any case, - or _).")
 
 
 def _format_option(default: str = "md,pdf", extra: str = ""):
