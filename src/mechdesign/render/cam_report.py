@@ -176,7 +176,7 @@ def _law_eqs(c, i, u: _Units, lang):
     else:
         v_eq = (rf"\frac{{d{sym}}}{{d\delta}} = {sign}\frac{{{amp}}}{{\Phi}} S'(u)")
         a_eq = (rf"\frac{{d^2{sym}}}{{d\delta^2}} = {sign}\frac{{{amp}}}{{\Phi^2}} S''(u)")
-    name = law.name_zh if lang == "zh" else law.name_en
+    name = law.name(lang)
     _ = tr(lang)
     return {"title": _("{kind} {start}°–{end}°: {law}", kind=_KIND[lang][seg.kind], start=f(start, 0),
                        end=f(start + span, 0), law=name),
@@ -192,7 +192,6 @@ def cam_context(c, lang: str, figs: dict[str, str], csv_name: str) -> dict:
     fol = p.follower
     prog = p.programme
     u = _Units(c)
-    zh = lang == "zh"
     _ = tr(lang)
     translating = isinstance(fol, TranslatingFollower)
     motion = _("translating") if translating else _("oscillating")
@@ -233,7 +232,7 @@ def cam_context(c, lang: str, figs: dict[str, str], csv_name: str) -> dict:
 
     prog_rows = []
     for i, (seg, chk) in enumerate(zip(prog.segments, c.segments)):
-        law = "—" if seg.law is None else (LAWS[seg.law].name_zh if zh else LAWS[seg.law].name_en)
+        law = "—" if seg.law is None else LAWS[seg.law].name(lang)
         lift = "—" if seg.kind == DWELL else f(abs(prog.lifts[i]) * u.s_scale, 2)
         prog_rows.append([str(i + 1), _segment_name(c, i, lang),
                           f"{f(prog.starts[i] * DEG, 1)} – {f((prog.starts[i] + prog.spans[i]) * DEG, 1)}",
@@ -403,7 +402,6 @@ def cam_verification_rows(v, c, lang: str) -> list[list[str]]:
     """The cam self-checks as [item, result, reference / limit, verdict] rows."""
     from ..stages.cam import CAM_CHECK_NAMES, DIST_LIMIT
 
-    zh = lang == "zh"
     _ = tr(lang)
     osc = c.params.oscillating
     s_scale, s_unit = (DEG, "°") if osc else (MM, "mm")
@@ -411,7 +409,7 @@ def cam_verification_rows(v, c, lang: str) -> list[list[str]]:
     rr = f(c.grid.roller_radius * MM, 2)
     rows = []
     for k in v.checks:
-        name = CAM_CHECK_NAMES[k.key][0 if zh else 1].replace("r_r", "$r_r$")   # plain in warnings
+        name = _(CAM_CHECK_NAMES[k.key][1]).replace("r_r", "$r_r$")   # English msgid; plain in warnings
         ok = _verdict(k.passed, lang)
         if k.key == "angle_sum":
             rows.append([name, f"{f(k.detail['sum'] * DEG, 3)}°", "360°", ok])
