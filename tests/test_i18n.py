@@ -278,3 +278,23 @@ def test_lang_option_is_case_and_separator_insensitive(given, want):
     assert CliRunner().invoke(app, ["check", brief, "--lang", given]).exit_code == 0
     bad = CliRunner().invoke(app, ["check", brief, "--lang", given + "x"])
     assert bad.exit_code == 2 and "zh_TW" in bad.output
+
+
+def test_batch_index_is_in_the_language_the_briefs_share(tmp_path):
+    """A batch's index.md and answer table follow --lang, else the report.language every
+    brief gives (English briefs: an English index), else Chinese (issue 22 point 3)."""
+    from types import SimpleNamespace
+
+    from mechdesign.cli import Lang, _index_lang
+
+    def brief(name, lang):
+        path = tmp_path / f"{name}.yaml"
+        path.write_text(f"machine: shaper\nreport:\n  language: {lang}\n", encoding="utf-8")
+        return SimpleNamespace(brief=path)
+
+    english = [brief("a", "en"), brief("b", "en")]
+    assert _index_lang(None, english) == "en"
+    assert _index_lang(None, english + [brief("c", "zh")]) == "zh"
+    assert _index_lang(Lang("zh"), english) == "zh"
+    assert _index_lang(None, [brief("d", "zh_TW")]) == "zh" and i18n.variant() == "zh_TW"
+    i18n.set_variant(None)

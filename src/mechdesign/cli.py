@@ -91,6 +91,18 @@ from .runner import EXIT_FAILED, EXIT_INVALID, EXIT_OK  # noqa: F401
 Lang = Enum("Lang", {name: name for name in LANGUAGES}, type=str)
 
 
+def _index_lang(lang: "Lang | None", jobs) -> str:
+    """The language of a batch's index and answer table: --lang, else the report.language the
+    briefs share (each brief's language when they all agree), else zh."""
+    if lang or not jobs:
+        return _base_lang(lang)
+    from .i18n import use
+    from .runner import brief_language
+
+    found = {brief_language(Path(b)) for b in dict.fromkeys(str(j.brief) for j in jobs)}
+    return found.pop() if len(found) == 1 else use("zh")
+
+
 def _base_lang(lang: "Lang | None") -> str:
     """The base language (zh or en) of --lang for what the command writes itself (an
     index); a variant such as zh_TW also sets its catalogue (:func:`mechdesign.i18n.use`)."""
@@ -432,7 +444,7 @@ def batch(
         progress.close()
     doc = index_document(selected, results, out, which)
     stem = "index" if which is None else f"index.shard-{which[0]}-of-{which[1]}"
-    index_lang = _base_lang(lang)
+    index_lang = _index_lang(lang, selected)
     written = write_index(doc, out, index_lang, stem)
     if answers:
         written += write_answers(answers_document(doc), out, index_lang,
