@@ -48,7 +48,7 @@ class Listed(Msg):
     def text(self, lang: str) -> str:
         from ..i18n import tr
 
-        return tr(lang).pgettext("list separator", ", ").join(self.items)
+        return tr(lang).pgettext("list", ", ").join(self.items)
 
 
 class _Missing:

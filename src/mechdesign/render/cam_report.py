@@ -336,7 +336,7 @@ def cam_context(c, lang: str, figs: dict[str, str], csv_name: str) -> dict:
                     default=float(np.max(c.grid.pressure_angle)))
     return {
         "follower": follower_name, "rotation": rot, "data_rows": data, "prog_rows": prog_rows,
-        "joints": _.pgettext("list separator", ", ").join(joints),
+        "joints": _.pgettext("list", ", ").join(joints),
         "laws": laws, "geo": geo, "checks": checks, "design_rows": design_rows,
         "table_rows": table_rows, "table_step": f(p.table_step * DEG, 1),
         "table_head": ["δ/°", f"{u.s_sym}/{u.s_unit}", f"{u.syms[0]}/({u.units[0]})",
@@ -453,7 +453,7 @@ def envelope_note(c, lang: str, csv_stem: str) -> str:
     rr = f(env.roller_radius * MM, 2)
     edges = [k for k in env.corners if k.kind == "edge"]
     arcs = [k for k in env.corners if k.kind == "arc"]
-    sep = _.pgettext("list separator", ", ")
+    sep = _.pgettext("list", ", ")
     deg = lambda ks: sep.join(f"{f(k.delta * DEG, 1)}°" for k in ks)  # noqa: E731
     text = _("Where the follower's velocity jumps (rigid impact) the pitch curve has a corner, and the curve "
              "offset by $r_r$ along the normal is broken there: it is not the envelope of the roller circles. "
