@@ -131,7 +131,7 @@ def test_tip_undercut_contact_ratio_closed_forms():
     aa2 = math.acos(60 * math.cos(al) / 62)
     eps = (20 * (math.tan(aa) - math.tan(al)) + 60 * (math.tan(aa2) - math.tan(al))) / (2 * math.pi)
     assert pair.contact_ratio == pytest.approx(eps, rel=1e-9)
-    checks = {c.name_en: c for c in de.gear_geometry_checks(_design(pair, pair.contact_ratio), None)}
+    checks = {c.name: c for c in de.gear_geometry_checks(_design(pair, pair.contact_ratio), None)}
     assert all(c.passed for c in checks.values())
     assert checks["Pinion tip thickness"].allowable == pytest.approx(0.5 * MM)
 

@@ -546,8 +546,11 @@ def test_rows_bilingual():
     assert "不合格" in [r[5] for r in zh] and "合格" in [r[5] for r in zh]
     life = en[7]
     assert life[4] == "h" and life[3] == "20000"
-    renamed = replace(checks[0], name_zh="小齿轮接触", name_en="Pinion contact")
-    assert tex.check_rows([renamed], "en")[0][:2] == ["小齿轮接触", "Pinion contact"]
+    renamed = replace(checks[0], name="Contact fatigue (flanks)")      # a name of the catalogue
+    assert tex.check_rows([renamed], "en")[0][:2] == ["齿面接触疲劳强度", "Contact fatigue (flanks)"]
+    keyed = replace(checks[0], name="Key {label} ({element_en})",
+                    name_args={"label": "8×7×40", "element_zh": "弹性联轴器", "element_en": "flexible coupling"})
+    assert tex.check_rows([keyed], "zh")[0][:2] == ["平键 8×7×40（弹性联轴器）", "Key 8×7×40 (flexible coupling)"]
 
 
 def test_formulas_convert_with_pandoc():

@@ -91,6 +91,18 @@ from .runner import EXIT_FAILED, EXIT_INVALID, EXIT_OK  # noqa: F401
 Lang = Enum("Lang", {name: name for name in LANGUAGES}, type=str)
 
 
+def _index_lang(lang: "Lang | None", jobs) -> str:
+    """The language of a batch's index and answer table: --lang, else the report.language the
+    briefs share (each brief's language when they all agree), else zh."""
+    if lang or not jobs:
+        return _base_lang(lang)
+    from .i18n import use
+    from .runner import brief_language
+
+    found = {brief_language(Path(b)) for b in dict.fromkeys(str(j.brief) for j in jobs)}
+    return found.pop() if len(found) == 1 else use("zh")
+
+
 def _base_lang(lang: "Lang | None") -> str:
     """The base language (zh or en) of --lang for what the command writes itself (an
     index); a variant such as zh_TW also sets its catalogue (:func:`mechdesign.i18n.use`)."""
@@ -243,9 +255,24 @@ def _parse_formats(text: str) -> tuple[str, ...]:
 
 
 # Options shared by the commands (metavars for people: BRIEF, DIR, N, i/n, LANG, FORMATS).
+def _parse_lang(text) -> "Lang":
+    """--lang as a :data:`Lang`, case- and separator-insensitive (zh-tw, ZH_TW → zh_TW; EN → en)."""
+    from .i18n import canonical
+
+    if isinstance(text, Lang):
+        return text
+    name = canonical(text)
+    if name is None:
+        raise typer.BadParameter(f"{text!r}: allowed languages are {', '.join(LANGUAGES)} "
+                                 "(any case, - or _)", param_hint="--lang")
+    return Lang(name)
+
+
 def _lang_option(help_text: str):
-    return typer.Option(None, "--lang", metavar="LANG", case_sensitive=False,
-                        help=f"{help_text} {', '.join(LANGUAGES)} (any case).")
+    return typer.Option(None, "--lang", metavar="LANG", parser=_parse_lang,
+                        autocompletion=lambda incomplete: [n for n in LANGUAGES if n.lower().startswith(
+                            incomplete.replace("-", "_").lower())],
+                        help=f"{help_text} {', '.join(LANGUAGES)} (any case, - or _).")
 
 
 def _format_option(default: str = "md,pdf", extra: str = ""):
@@ -417,7 +444,7 @@ def batch(
         progress.close()
     doc = index_document(selected, results, out, which)
     stem = "index" if which is None else f"index.shard-{which[0]}-of-{which[1]}"
-    index_lang = _base_lang(lang)
+    index_lang = _index_lang(lang, selected)
     written = write_index(doc, out, index_lang, stem)
     if answers:
         written += write_answers(answers_document(doc), out, index_lang,

@@ -170,3 +170,110 @@ def jinja_callables(lang: str) -> dict[str, Callable]:
         return gettext(msgid, lang, context)
 
     return {"gettext": _gettext, "ngettext": _ngettext, "pgettext": _pgettext}
+
+
+# ------------------------------------------------------------------------------ messages
+
+def _field_text(value, lang: str):
+    """A message field in ``lang``: a message (anything with ``text(lang)``: :class:`Msg`,
+    :class:`Pair`, a join of messages …) translated, any other value as it is."""
+    text = getattr(value, "text", None)
+    return text(lang) if callable(text) else value
+
+
+class Msg(str):
+    """A message translated where it is shown — the one message class of the program (the
+    core's design errors, the brief's checks, the stages' findings): an English msgid (marked
+    with ``N_`` where it is written), its ``str.format`` fields, filled in after translation,
+    and an optional message context. A field that is a message itself (or a :class:`Pair`)
+    is shown in the same language.
+
+    The string itself is the English text (what logs, tests and pydantic read);
+    :meth:`text` gives it in a report language::
+
+        Msg(N_("take H ≥ {h} mm"), h=12)          # "take H ≥ 12 mm"
+        Msg.pgettext("link", "crank").text("zh")   # "曲柄"
+
+    Pure Python, no numpy and no catalogue read until a text is asked for: the core may
+    import it."""
+
+    def __new__(cls, msgid: str, /, context: str | None = None, **fields):
+        en = msgid
+        if fields:
+            try:
+                en = msgid.format(**{k: _field_text(v, "en") for k, v in fields.items()})
+            except (KeyError, IndexError):   # a template whose other fields come later (the
+                pass                         # core's "{where}" filled by the error): its msgid
+        self = super().__new__(cls, en)
+        self.msgid, self.context, self.fields = msgid, context, fields
+        return self
+
+    @classmethod
+    def pgettext(cls, context: str, msgid: str, /, **fields) -> "Msg":
+        """The message ``msgid`` with the message context ``context``."""
+        return cls(msgid, context, **fields)
+
+    def text(self, lang="en") -> str:
+        """The message in ``lang`` (zh, en, a variant such as zh_TW, or a :class:`Translator`):
+        its catalogue, then the base language's, then the English msgid."""
+        if isinstance(lang, Translator):
+            lang = lang.lang
+        if lang == "en":
+            return str.__str__(self)
+        text = gettext(self.msgid, lang, self.context)
+        if not self.fields:
+            return text
+        return text.format(**{k: _field_text(v, lang) for k, v in self.fields.items()})
+
+    def __str__(self) -> str:
+        return str.__str__(self)
+
+    def __repr__(self) -> str:
+        return f"{type(self).__name__}({self.msgid!r}, context={self.context!r}, **{self.fields!r})"
+
+    def __reduce__(self):      # picklable (worker processes): the English, then the rest
+        return (_rebuilt, (type(self), str.__str__(self), self.__dict__))
+
+
+def _rebuilt(cls, en: str, state: dict) -> "Msg":
+    self = str.__new__(cls, en)
+    self.__dict__.update(state)
+    return self
+
+
+class Given(Msg):
+    """A message whose texts were written elsewhere (a design error raised with its English
+    and Chinese, a message translated already): ``Given(en, zh)``; English where ``zh`` is
+    None."""
+
+    def __new__(cls, en: str, zh: str | None = None):
+        self = str.__new__(cls, en)
+        self.msgid, self.context, self.fields, self.zh = en, None, {}, zh
+        return self
+
+    @property
+    def en(self) -> str:
+        return str.__str__(self)
+
+    def text(self, lang="en") -> str:
+        if isinstance(lang, Translator):
+            lang = lang.lang
+        return self.zh if self.zh and base(lang) == "zh" else str.__str__(self)
+
+
+class Pair:
+    """A message field whose value differs by language (a name the data give in both, e.g. a
+    drive stage's name_zh / name_en): ``Pair(zh, en)``."""
+
+    __slots__ = ("zh", "en")
+
+    def __init__(self, zh, en):
+        self.zh, self.en = zh, en
+
+    def text(self, lang="en"):
+        if isinstance(lang, Translator):
+            lang = lang.lang
+        return self.zh if base(lang) == "zh" else self.en
+
+    def __reduce__(self):
+        return (Pair, (self.zh, self.en))

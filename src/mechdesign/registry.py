@@ -35,11 +35,7 @@ class Entry:
 
 def summary_row(row: tuple, lang: str) -> tuple:
     """(label in ``lang``, unit, path, factor) of an entry's summary row: (N_(English label),
-    unit, path, factor), or (zh label, en label, unit, path, factor) where an entry still
-    writes both."""
-    if len(row) == 5:
-        zh, en, unit, path, factor = row
-        return (zh if lang == "zh" else en), unit, path, factor
+    unit, path, factor)."""
     from .i18n import tr
 
     label, unit, path, factor = row

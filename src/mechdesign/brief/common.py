@@ -13,7 +13,7 @@ from typing import Annotated, Literal, Optional, Union
 
 from pydantic import BaseModel, ConfigDict, Field, field_validator
 
-from ..i18n import LANGUAGES, N_
+from ..i18n import LANGUAGES, N_, Given, Msg  # noqa: F401  (Msg, Given: the program's message class)
 
 
 _FRACTION = re.compile(r"^\s*([-+]?(?:\d+\.?\d*|\.\d+))\s*(?:/\s*(\d+\.?\d*|\.\d+)\s*)?$")
@@ -35,47 +35,6 @@ def parse_fraction(value, msgid: str, /, **fields):
     return float(Fraction(num) / (Fraction(den) if den is not None else 1))
 
 
-class Msg(str):
-    """A message of the brief's checks: the English text (the string itself) that keeps its
-    catalogue msgid and fields, so that :meth:`text` shows it in any language (fields that
-    are messages themselves are translated too; other fields are shown as they are).
-
-    ``Msg(N_("take H ≥ {h} mm"), h=…)``; ``Msg.pgettext(context, msgid, **fields)`` with a
-    message context."""
-
-    def __new__(cls, msgid: str, /, **fields):
-        self = super().__new__(cls, msgid.format(**fields) if fields else msgid)
-        self.msgid, self.context, self.fields = msgid, None, fields
-        return self
-
-    @classmethod
-    def pgettext(cls, context: str, msgid: str, /, **fields) -> "Msg":
-        self = cls(msgid, **fields)
-        self.context = context
-        return self
-
-    def text(self, lang: str) -> str:
-        """The message in ``lang`` (zh, en or a variant: its catalogue, then the English)."""
-        from ..i18n import base, gettext
-
-        if base(lang) == "en":
-            return str.__str__(self)
-        text = gettext(self.msgid, lang, self.context)
-        if not self.fields:
-            return text
-        return text.format(**{k: v.text(lang) if isinstance(v, Msg) else v
-                              for k, v in self.fields.items()})
-
-    def __reduce__(self):      # picklable (worker processes): the English, then the rest
-        return (_rebuilt, (type(self), str.__str__(self), self.__dict__))
-
-
-def _rebuilt(cls, en: str, state: dict) -> "Msg":
-    self = str.__new__(cls, en)
-    self.__dict__.update(state)
-    return self
-
-
 class Listed(Msg):
     """Names joined with ", " in English and the catalogue's separator in other languages
     (、 in Chinese): ``Listed(sorted(points))``."""
@@ -89,22 +48,7 @@ class Listed(Msg):
     def text(self, lang: str) -> str:
         from ..i18n import tr
 
-        return tr(lang).pgettext("list separator", ", ").join(self.items)
-
-
-class Given(Msg):
-    """A message whose Chinese was written elsewhere (a design error's ``zh``, a message the
-    core translated): ``Given(en, zh)``; English where ``zh`` is None."""
-
-    def __new__(cls, en: str, zh: str | None = None):
-        self = str.__new__(cls, en)
-        self.msgid, self.context, self.fields, self.zh = en, None, {}, zh
-        return self
-
-    def text(self, lang: str) -> str:
-        from ..i18n import base
-
-        return self.zh if self.zh and base(lang) == "zh" else str.__str__(self)
+        return tr(lang).pgettext("list", ", ").join(self.items)
 
 
 class _Missing:

@@ -461,7 +461,7 @@ class _Alternatives(Msg):
         _ = tr(lang)
         plain = str.__str__(self)
         return plain if not _.zh else \
-            plain.replace("' or '", "'" + _.pgettext("list separator", ", ") + "'")
+            plain.replace("' or '", "'" + _.pgettext("list", ", ") + "'")
 
 
 def _translatable(kind: str, err: dict, msg: str) -> Msg | None:

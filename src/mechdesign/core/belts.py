@@ -13,16 +13,13 @@ import math
 from bisect import bisect_right
 from dataclasses import dataclass
 
+from .errors import N_, DesignError
 from .fields import q
 from .strength import Check, check
 
 
-class BeltDesignError(ValueError):
-    """The belt cannot be designed with the shipped tables (message in English and Chinese)."""
-
-    def __init__(self, en: str, zh: str):
-        super().__init__(en)
-        self.en, self.zh = en, zh
+class BeltDesignError(DesignError):
+    """The belt cannot be designed with the shipped tables (a catalogue message: ``.en``, ``.zh``, ``.text(lang)``)."""
 
 
 @dataclass(frozen=True)
@@ -156,10 +153,8 @@ def design_vbelt(tables, P: float, n1_rpm: float, KA: float, d1: float, d2: floa
     chart = choose_section(tables, P_ca, n1_rpm)
     if chart is None:
         raise BeltDesignError(
-            f"the V-belt needs a section larger than B (P_ca = {P_ca / 1e3:.3g} kW at "
-            f"{n1_rpm:.0f} rpm): the shipped tables hold Z, A and B only",
-            f"V 带需要比 B 型更大的带型（P_ca = {P_ca / 1e3:.3g} kW，n1 = {n1_rpm:.0f} r/min）："
-            "程序的表中只有 Z、A、B 型")
+            N_("the V-belt needs a section larger than B (P_ca = {p_kw:.3g} kW at "
+               "{n1:.0f} rpm): the shipped tables hold Z, A and B only"), p_kw=P_ca / 1e3, n1=n1_rpm)
     # The chart's section; when it fails (the wrap angle beyond its longest belt, too many
     # belts), the next larger section that passes (its d_dmin still met by d_d1).
     order = [r["section"] for r in tables["selection_chart"]]
@@ -204,14 +199,14 @@ def _design(tables, P, n1_rpm, KA, d1, d2, slip, section: str, given: bool, a0, 
     F0 = initial_tension(P_ca, Ka, z, v, qm)
     Fp = shaft_load(z, F0, alpha1)
     checks = (
-        check("belt_d_min", "小带轮基准直径", "Small datum diameter", "d_{d1}", d1, d_min, "mm", "ge"),
-        check("belt_speed_min", "带速下限", "Belt speed (lower limit)", "v", v, lim["v_min_m_s"], "m/s",
+        check("belt_d_min", N_("Small datum diameter"), "d_{d1}", d1, d_min, "mm", "ge"),
+        check("belt_speed_min", N_("Belt speed (lower limit)"), "v", v, lim["v_min_m_s"], "m/s",
                "ge", d1=d1, n_rpm=n1_rpm),
-        check("belt_speed_max", "带速上限", "Belt speed (upper limit)", "v", v, lim["v_max_m_s"], "m/s",
+        check("belt_speed_max", N_("Belt speed (upper limit)"), "v", v, lim["v_max_m_s"], "m/s",
                "le", d1=d1, n_rpm=n1_rpm),
-        check("belt_wrap", "小带轮包角", "Wrap angle of the small pulley", "\\alpha_1", alpha1,
+        check("belt_wrap", N_("Wrap angle of the small pulley"), "\\alpha_1", alpha1,
                math.radians(lim["alpha1_min_deg"]), "°", "ge", d1=d1, d2=d2, a=a),
-        check("belt_count", "V 带根数", "Number of belts", "z", z, lim["belts_max"], "1", "le",
+        check("belt_count", N_("Number of belts"), "z", z, lim["belts_max"], "1", "le",
                z_exact=z_exact),
     )
     return VBeltDesign(section, given, chart, KA, P, P_ca, n1_rpm, d1, d2, d_min, slip, v, a0, lo, hi, L_d0,

@@ -10,18 +10,15 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
+from .errors import N_, DesignError
 from .fields import q
 from .strength import Check, check
 
 INCH = 0.0254
 
 
-class ChainDesignError(ValueError):
-    """No shipped chain carries the power (message in English and Chinese)."""
-
-    def __init__(self, en: str, zh: str):
-        super().__init__(en)
-        self.en, self.zh = en, zh
+class ChainDesignError(DesignError):
+    """No shipped chain carries the power (a catalogue message: ``.en``, ``.zh``, ``.text(lang)``)."""
 
 
 @dataclass(frozen=True)
@@ -113,10 +110,8 @@ def design_chain(tables, P: float, n1_rpm: float, KA: float, z1: int, z2: int, c
         fit = [k for k in tables["chains"] if rated[k] >= P_ca]
         if not fit:
             raise ChainDesignError(
-                f"no shipped roller chain (08A … 32A, {rows} row(s)) carries P_ca = {P_ca / 1e3:.3g} kW at "
-                f"{n1_rpm:.0f} rpm; use more rows or another drive",
-                f"程序的滚子链（08A … 32A，{rows} 排）都不能传递 P_ca = {P_ca / 1e3:.3g} kW（n1 = "
-                f"{n1_rpm:.0f} r/min）：应增加排数或改用其他传动")
+                N_("no shipped roller chain (08A … 32A, {rows} row(s)) carries P_ca = {p_kw:.3g} kW at "
+                   "{n1:.0f} rpm; use more rows or another drive"), rows=rows, p_kw=P_ca / 1e3, n1=n1_rpm)
         chain = fit[0]
     c = tables["chains"][chain]
     p = c["p_mm"] * 1e-3
@@ -130,17 +125,17 @@ def design_chain(tables, P: float, n1_rpm: float, KA: float, z1: int, z2: int, c
     kq = lim["FQ_factor_shock"] if shocks else lim["FQ_factor"]
     FQ = kq * Fe
     checks = [
-        check("chain_z1", "小链轮齿数", "Teeth of the small sprocket", "z_1", z1, lim["z1_min"], "1", "ge"),
-        check("chain_z2", "大链轮齿数", "Teeth of the large sprocket", "z_2", z2, lim["z2_max"], "1", "le"),
-        check("chain_power", "链条额定功率", "Rated power of the chain", "P_{ca}", P_ca, rated[chain], "kW",
+        check("chain_z1", N_("Teeth of the small sprocket"), "z_1", z1, lim["z1_min"], "1", "ge"),
+        check("chain_z2", N_("Teeth of the large sprocket"), "z_2", z2, lim["z2_max"], "1", "le"),
+        check("chain_power", N_("Rated power of the chain"), "P_{ca}", P_ca, rated[chain], "kW",
                "le", Kz=Kz, Kp=Kp, KA=KA),
-        check("chain_speed", "链速", "Chain speed", "v", v, lim["v_max_m_s"], "m/s", "le"),
+        check("chain_speed", N_("Chain speed"), "v", v, lim["v_max_m_s"], "m/s", "le"),
     ]
     S = None
     if v < lim["v_static_m_s"]:
         F1 = Fe + c["q_kg_per_m"] * v ** 2
         S = c["Q_kN"] * 1e3 * rows / (KA * F1)
-        checks.append(check("chain_static", "链条静强度安全系数", "Static safety of the chain", "S", S,
+        checks.append(check("chain_static", N_("Static safety of the chain"), "S", S,
                              lim["S_min"], "1", "ge", F1=F1))
     return ChainDesign(chain, given, rows, p, z1, z2, KA, Kz, Kp, P, P_ca, rated[chain], n1_rpm, a0, L_p0, L_p,
                        a, v, sprocket_diameter(p, z1), sprocket_diameter(p, z2), Fe, kq, FQ, S, tuple(checks))

@@ -12,78 +12,27 @@ asked for, so the core reads no catalogue at import). The message names the prob
 the numbers and says what to change. The machines' errors (assembly, synthesis, cam, drive,
 cycle, intermittent gear) subclass it.
 
-A message is a :class:`Msg` (msgid + fields, a field may itself be a message), a
-:class:`Join` (messages joined by a translated separator) or, for raise sites outside the
-core that still write both languages, a :class:`Text` (an English and a Chinese text).
+A message is a :class:`mechdesign.i18n.Msg` (msgid + fields, a field may itself be a
+message: the program's one message class, numpy-free, reading no catalogue until a text is
+asked for), a :class:`Join` (messages joined by a translated separator) or, for raise sites
+outside the core that still write both languages, a :class:`Text` (``i18n.Given``: an English
+and a Chinese text).
 """
 from __future__ import annotations
 
 from collections import OrderedDict
 
-
-def N_(msgid: str) -> str:
-    """Mark ``msgid`` for the catalogues (the same as :func:`mechdesign.i18n.N_`)."""
-    return msgid
+from ..i18n import N_, Given, Msg  # noqa: F401  (N_ and Msg are imported from here too)
 
 
-def _translate(msgid: str, lang: str, context: str | None = None) -> str:
-    if lang == "en":
-        return msgid
-    from ..i18n import gettext     # lazily: the core reads no catalogue unless a text is asked for
-    return gettext(msgid, lang, context)
-
-
-def pgettext(context: str, msgid: str, /, **fields) -> "Msg":
+def pgettext(context: str, msgid: str, /, **fields) -> Msg:
     """A :class:`Msg` with a message context (msgctxt), for a short word that another part
     of the program may translate differently ("link" → "crank")."""
-    msg = Msg(msgid, **fields)
-    msg.context = context
-    return msg
+    return Msg(msgid, context, **fields)
 
 
 def _render(value, lang: str):
-    return value.text(lang) if isinstance(value, (Msg, Join, Text)) else value
-
-
-class Msg:
-    """A message to be translated where it is shown: an English msgid (marked with ``N_``
-    where it is written) and its ``str.format`` fields, filled in after translation. A field
-    that is itself a message is translated into the same language."""
-
-    __slots__ = ("msgid", "fields", "context")
-
-    def __init__(self, msgid: str, /, **fields):
-        self.msgid = msgid
-        self.fields = fields
-        self.context = None
-
-    def text(self, lang: str = "en") -> str:
-        text = _translate(self.msgid, lang, self.context)
-        if not self.fields:
-            return text
-        return text.format(**{k: _render(v, lang) for k, v in self.fields.items()})
-
-    def __str__(self) -> str:
-        return self.text("en")
-
-    def __repr__(self) -> str:
-        return f"Msg({self.msgid!r}, **{self.fields!r})"
-
-    def __eq__(self, other) -> bool:
-        return isinstance(other, Msg) and \
-            (self.msgid, self.fields, self.context) == (other.msgid, other.fields, other.context)
-
-    def __hash__(self) -> int:
-        return hash((self.msgid, self.context, tuple(sorted(self.fields.items()))))
-
-    def __reduce__(self):
-        return (_msg, (self.msgid, self.fields, self.context))
-
-
-def _msg(msgid: str, fields: dict, context: str | None = None) -> Msg:
-    msg = Msg(msgid, **fields)
-    msg.context = context
-    return msg
+    return value.text(lang) if isinstance(value, (Msg, Join)) else value
 
 
 class Join:
@@ -92,7 +41,7 @@ class Join:
 
     __slots__ = ("sep", "items")
 
-    def __init__(self, sep: "Msg", items):
+    def __init__(self, sep: Msg, items):
         self.sep = sep
         self.items = tuple(items)
 
@@ -109,33 +58,14 @@ class Join:
         return (Join, (self.sep, self.items))
 
 
-class Text:
-    """A text written in both languages by its raise site (English, Chinese or None): the
-    form of messages from outside the core that have not moved to the catalogue."""
-
-    __slots__ = ("en", "zh")
-
-    def __init__(self, en: str, zh: str | None = None):
-        self.en, self.zh = en, zh
-
-    def text(self, lang: str = "en") -> str:
-        if self.zh and lang != "en":
-            from ..i18n import base
-            if base(lang) == "zh":
-                return self.zh
-        return self.en
-
-    def __str__(self) -> str:
-        return self.en
-
-    def __reduce__(self):
-        return (Text, (self.en, self.zh))
+#: the two-language form of raise sites outside the core: ``Text(en, zh)``
+Text = Given
 
 
 def message(msg, zh: str | None = None, /, **fields):
     """``msg`` as a message object: a Msg/Join/Text as it is, an English text with its
     Chinese (the two-language form) as a :class:`Text`, else a msgid with ``fields``."""
-    if isinstance(msg, (Msg, Join, Text)):
+    if isinstance(msg, (Msg, Join)):
         return msg
     if zh is not None:
         return Text(msg, zh)

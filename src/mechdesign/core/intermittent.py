@@ -442,7 +442,7 @@ def design_incomplete_gear(module: float, z1: int | None = None, z2: int | None 
         notes.append(DesignNote("undercut", Msg(
             N_("{gears} is below the smallest tooth number without undercut ({zmin:.1f}): a "
                "standard gear is undercut; use more teeth or a positive shift."),
-            gears=Join(pgettext("enumeration", ", "), small), zmin=zmin)))
+            gears=Join(pgettext("list", ", "), small), zmin=zmin)))
     if z2 % teeth:
         g = gcd(z2, teeth)
         notes.append(DesignNote("stations", Msg(

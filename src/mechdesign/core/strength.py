@@ -19,6 +19,7 @@ from typing import Iterable, Literal
 import numpy as np
 
 from .drive import DriveDesignError
+from .errors import N_
 from .fields import q
 
 Sense = Literal["le", "ge"]
@@ -37,11 +38,13 @@ class Check:
     ("MPa", "h", "°C", "mm"), see :data:`COURSE_SCALE`. ``sense`` "le" means value ≤
     allowable passes (stresses, temperatures); "ge" means value ≥ allowable passes (lives,
     diameters). ``inputs`` holds every factor used, SI, keyed by the names the formula
-    renderer expects. Rename a check for the report with ``dataclasses.replace``.
+    renderer expects. ``name`` is an English msgid of the catalogues (no prose in the core:
+    the report translates it, ``_(c.name, **c.name_args)``); rename a check for the report
+    with ``dataclasses.replace(c, name=N_("…{designation}…"), name_args={...})``.
     """
     key: str = q("", "the check's kind: gear_contact, gear_bending, shaft_bending, bearing_life, key_crushing …")
-    name_zh: str = q("", "name (中文)")
-    name_en: str = q("", "name (English)")
+    name: str = q("", "its name: an English msgid of the catalogues (locale/*.po), translated where "
+                  "shown with its {fields} filled in from name_args")
     symbol: str = q("", "LaTeX symbol of the checked quantity, e.g. \\sigma_H")
     value: float = q("Pa, s, °C or m", "the checked quantity, SI (stress Pa, life s, oil temperature °C, "
                      "diameter m; `unit` says which)")
@@ -52,6 +55,10 @@ class Check:
     inputs: dict[str, float] = q("SI", "every factor the formula used, each in its SI unit "
                                  "(N·m, m, Pa, √Pa, W, rpm where named n_rpm; factors 1)",
                                  default_factory=dict)
+    name_args: dict[str, str] = q("", "the fields of name, e.g. a bearing's designation; a name "
+                                  "given by the data in both languages is two fields, <x>_en "
+                                  "(the msgid's) and <x>_zh (the Chinese text's)",
+                                  default_factory=dict)
 
     @property
     def course_value(self) -> float:
@@ -69,14 +76,15 @@ class Check:
         return self.value / self.allowable if self.sense == "le" else self.allowable / self.value
 
 
-def check(key, name_zh, name_en, symbol, value, allowable, unit, sense: Sense = "le", **inputs) -> Check:
+def check(key, name, symbol, value, allowable, unit, sense: Sense = "le", **inputs) -> Check:
     """A :class:`Check` whose verdict is derived from ``value``, ``allowable`` and ``sense``
-    (never written by hand); ``inputs`` are the factors the formula used (SI)."""
+    (never written by hand); ``name`` is an English msgid (marked with N_), ``inputs`` are
+    the factors the formula used (SI)."""
     if allowable is None:
         raise TypeError(f"{key}: the allowable value is required")
     value, allowable = float(value), float(allowable)
     passed = value <= allowable if sense == "le" else value >= allowable
-    return Check(key, name_zh, name_en, symbol, value, allowable, unit, sense, bool(passed),
+    return Check(key, name, symbol, value, allowable, unit, sense, bool(passed),
                  {k: float(v) for k, v in inputs.items()})
 
 
@@ -196,7 +204,7 @@ def gear_contact_check(T1, K, b, d1, u, ZE, ZH, Zeps, Zbeta=1.0, allowable=None)
     """Tooth-flank contact fatigue check σ_H ≤ [σ_H] (see :func:`gear_contact_stress`);
     ``allowable`` [σ_H] in Pa (the smaller of the pair's)."""
     s = gear_contact_stress(T1, K, b, d1, u, ZE, ZH, Zeps, Zbeta)
-    return check("gear_contact", "齿面接触疲劳强度", "Tooth-flank contact fatigue", r"\sigma_H", s, allowable,
+    return check("gear_contact", N_("Tooth-flank contact fatigue"), r"\sigma_H", s, allowable,
                   "MPa", T1=T1, K=K, b=b, d1=d1, u=u, ZE=ZE, ZH=ZH, Zeps=Zeps, Zbeta=Zbeta)
 
 
@@ -205,7 +213,7 @@ def gear_bending_check(T1, K, b, d1, m, YFa, YSa, Yeps, Ybeta=1.0, allowable=Non
     (T1 N·m on the gear whose d1 is given; b, d1, m in m, m the normal module for helical
     gears; Pa). With b = φ_d d1 and d1 = m z1 it is the textbook's 2KT1YFaYSaYε/(φd m³ z1²)."""
     s = 2 * K * T1 * YFa * YSa * Yeps * Ybeta / (b * d1 * m)
-    return check("gear_bending", "齿根弯曲疲劳强度", "Tooth-root bending fatigue", r"\sigma_F", s, allowable,
+    return check("gear_bending", N_("Tooth-root bending fatigue"), r"\sigma_F", s, allowable,
                   "MPa", T1=T1, K=K, b=b, d1=d1, m=m, YFa=YFa, YSa=YSa, Yeps=Yeps, Ybeta=Ybeta)
 
 
@@ -252,11 +260,9 @@ def worm_contact_coefficient(d1_over_a: float) -> float:
     x = d1_over_a
     if not 0.2 <= x <= 0.55:
         raise DriveDesignError(
-            f"worm pair: d1/a = {x:.3f} is outside the contact-coefficient chart (0.2–0.55); "
-            "change the diameter factor q or the wheel's teeth z2 (d1/a = q/(q + z2) for x = 0), "
-            "or the stage's ratio",
-            f"蜗杆传动：d1/a = {x:.3f} 超出接触系数线图范围（0.2–0.55）；应改变直径系数 q 或蜗轮齿数 z2"
-            "（x = 0 时 d1/a = q/(q + z2)），或该级传动比")
+            N_("worm pair: d1/a = {x:.3f} is outside the contact-coefficient chart (0.2–0.55); "
+               "change the diameter factor q or the wheel's teeth z2 (d1/a = q/(q + z2) for x = 0), "
+               "or the stage's ratio"), x=x)
     return 8.809524 * x * x - 9.583333 * x + 5.177143
 
 
@@ -275,7 +281,7 @@ def worm_contact_check(T2, K, a, ZE, Zrho, allowable=None) -> Check:
     """Wheel contact check σ_H = Z_E Z_ρ sqrt(K T2 / a³) ≤ [σ_H] (T2 N·m, a m, Z_E √Pa; Pa).
     Steel worm on bronze/cast-iron wheel: Z_E = 160 √MPa."""
     s = ZE * Zrho * math.sqrt(K * T2 / a ** 3)
-    return check("worm_contact", "蜗轮齿面接触疲劳强度", "Worm-wheel contact fatigue", r"\sigma_H", s, allowable,
+    return check("worm_contact", N_("Worm-wheel contact fatigue"), r"\sigma_H", s, allowable,
                   "MPa", T2=T2, K=K, a=a, ZE=ZE, Zrho=Zrho)
 
 
@@ -294,7 +300,7 @@ def worm_bending_check(T2, K, d1, d2, m, YFa2, gamma, allowable=None) -> Check:
     (T2 N·m; d1, d2, m in m; Pa). Y_Fa2 from the chart against z_v2 = z2/cos³γ and x2."""
     yb = worm_helix_factor(gamma)
     s = 1.53 * K * T2 * YFa2 * yb / (d1 * d2 * m)
-    return check("worm_bending", "蜗轮齿根弯曲疲劳强度", "Worm-wheel bending fatigue", r"\sigma_F", s, allowable,
+    return check("worm_bending", N_("Worm-wheel bending fatigue"), r"\sigma_F", s, allowable,
                   "MPa", T2=T2, K=K, d1=d1, d2=d2, m=m, YFa2=YFa2, Ybeta=yb, gamma=gamma)
 
 
@@ -366,7 +372,7 @@ def worm_thermal(P1, eta, kd, area, t0=20.0, allowable=80.0) -> Check:
     """Thermal-balance check: oil temperature t (see :func:`worm_oil_temperature`) ≤ [t]
     (°C; textbook 60–70 °C usual, 80 °C at most)."""
     t = worm_oil_temperature(P1, eta, kd, area, t0)
-    return check("worm_thermal", "热平衡油温", "Thermal balance (oil temperature)", "t", t, allowable, "°C",
+    return check("worm_thermal", N_("Thermal balance (oil temperature)"), "t", t, allowable, "°C",
                   P1=P1, eta=eta, kd=kd, A=area, t0=t0)
 
 
@@ -384,7 +390,7 @@ def shaft_min_diameter(P_W: float, n_rpm: float, A0: float, keyway_increase: flo
 def shaft_diameter_check(d, P_W, n_rpm, A0, keyway_increase=0.0) -> Check:
     """Check a chosen diameter d (m) against :func:`shaft_min_diameter` (sense "ge", mm)."""
     dmin = shaft_min_diameter(P_W, n_rpm, A0, keyway_increase)
-    return check("shaft_min_diameter", "轴的最小直径（按扭转估算）", "Minimum shaft diameter (torsion)", "d", d, dmin,
+    return check("shaft_min_diameter", N_("Minimum shaft diameter (torsion)"), "d", d, dmin,
                   "mm", "ge", P=P_W, n_rpm=n_rpm, A0=A0, keyway_increase=keyway_increase)
 
 
@@ -473,7 +479,7 @@ def shaft_check(span: float, loads: Iterable, torque: float, d: float, allowable
         sections.append(ShaftSection(float(x), mh, mv, m, t, math.hypot(m, alpha * t)))
     crit = max(sections, key=lambda s: s.Mca)
     s = crit.Mca / (0.1 * d ** 3)
-    verdict = check("shaft_bending", "轴的弯扭合成强度", "Shaft bending–torsion strength", r"\sigma_{ca}", s,
+    verdict = check("shaft_bending", N_("Shaft bending–torsion strength"), r"\sigma_{ca}", s,
                     allowable_bending, "MPa", M=crit.M, T=crit.T, alpha=alpha, d=d, x=crit.x)
     return ShaftResult(RAh, RAv, RBh, RBv, math.hypot(RAh, RAv), math.hypot(RBh, RBv),
                        sum(p.Fa for p in loads), tuple(sections), crit, verdict)
@@ -496,7 +502,7 @@ def shaft_stepped_check(result: ShaftResult, diameter_at, allowable_bending: flo
         s = sec.Mca / (0.1 * d ** 3)
         if s > worst_s + 1e-12 * max(abs(worst_s), 1.0):
             worst, worst_d, worst_s = sec, d, s
-    verdict = check("shaft_bending", "轴的弯扭合成强度", "Shaft bending–torsion strength", r"\sigma_{ca}",
+    verdict = check("shaft_bending", N_("Shaft bending–torsion strength"), r"\sigma_{ca}",
                     worst_s, allowable_bending, "MPa", M=worst.M, T=worst.T, alpha=alpha, d=worst_d,
                     x=worst.x)
     return verdict, worst, worst_d
@@ -527,7 +533,7 @@ def double_key_check(T: float, d: float, h: float, l_working: float, allowable=N
     """Two flat keys at 180°: the load is shared unevenly, the textbook counts 1.5 keys:
     σ_p = 4T/(1.5 d h l) ≤ [σ_p]."""
     s = 4 * T / (1.5 * d * h * l_working)
-    return check("key_crushing", "平键联接挤压强度（双键）", "Key joint crushing strength (two keys)", r"\sigma_p",
+    return check("key_crushing", N_("Key joint crushing strength (two keys)"), r"\sigma_p",
                   s, allowable, "MPa", T=T, d=d, h=h, l=l_working, keys=2)
 
 
@@ -549,7 +555,7 @@ class TaperedAxialLoads:
     Fd2: float = q("N", "derived axial force of bearing 2")
     Fa1: float = q("N", "axial load carried by bearing 1")
     Fa2: float = q("N", "axial load carried by bearing 2")
-    pressed: int = q("1", "the pressed (压紧) bearing: 1 or 2 (0: exactly balanced)")
+    pressed: int = q("1", "the pressed (clamped) bearing: 1 or 2 (0: exactly balanced)")
 
 
 def tapered_pair_axial_loads(Fr1: float, Fr2: float, Fae: float, Y: float | tuple[float, float],
@@ -569,7 +575,7 @@ def tapered_pair_axial_loads(Fr1: float, Fr2: float, Fae: float, Y: float | tupl
     elif arrangement == "back_to_back":
         s1, s2 = +1, -1
     else:
-        raise ValueError("arrangement must be 'face_to_face' (正装) or 'back_to_back' (反装)")
+        raise ValueError("arrangement must be 'face_to_face' (X) or 'back_to_back' (O)")
     # net force on the shaft along +x if both bearings carried only their derived forces
     push = Fae - s1 * fd1 - s2 * fd2
     if push * s2 > 0:        # the shaft is pushed the way bearing 2 resists: 2 is pressed
@@ -594,7 +600,7 @@ def required_dynamic_load(P: float, n_rpm: float, hours: float, ball: bool, ft: 
 def bearing_life_check(C, P, n_rpm, required_hours, ball: bool, ft=1.0) -> Check:
     """Life check L10h ≥ L_h' (sense "ge"; value/allowable in s, displayed in h)."""
     life = bearing_life_hours(C, P, n_rpm, ball, ft)
-    return check("bearing_life", "轴承寿命", "Bearing rating life", r"L_{10h}", life * 3600.0, required_hours * 3600.0,
+    return check("bearing_life", N_("Bearing rating life"), r"L_{10h}", life * 3600.0, required_hours * 3600.0,
                   "h", "ge", C=C, P=P, n_rpm=n_rpm, ft=ft, epsilon=3.0 if ball else 10.0 / 3.0)
 
 
@@ -607,7 +613,7 @@ def bearing_static_load(Fr: float, Fa: float, X0: float, Y0: float) -> float:
 def bearing_static_check(C0: float, P0: float, S0: float) -> Check:
     """Static strength of a rolling bearing under the peak load: C0/P0 ≥ S0 (sense "ge";
     S0 of rotating bearings 0.8–1.2 normal, 1.2–2.5 with shocks)."""
-    return check("bearing_static", "轴承静强度", "Bearing static strength", r"C_0/P_0", C0 / P0, S0, "1", "ge",
+    return check("bearing_static", N_("Bearing static strength"), r"C_0/P_0", C0 / P0, S0, "1", "ge",
                   C0=C0, P0=P0)
 
 
@@ -628,6 +634,6 @@ def key_check(T: float, d: float, h: float, l_working: float, allowable=None) ->
     """Crushing check of a flat-key joint σ_p = 2T/(k l d) = 4T/(d h l) ≤ [σ_p], k = h/2
     (T N·m; d, h, l in m; Pa)."""
     s = 4 * T / (d * h * l_working)
-    return check("key_crushing", "平键联接挤压强度", "Key joint crushing strength", r"\sigma_p", s, allowable,
+    return check("key_crushing", N_("Key joint crushing strength"), r"\sigma_p", s, allowable,
                   "MPa", T=T, d=d, h=h, l=l_working)
 

@@ -176,7 +176,7 @@ def _law_eqs(c, i, u: _Units, lang):
     else:
         v_eq = (rf"\frac{{d{sym}}}{{d\delta}} = {sign}\frac{{{amp}}}{{\Phi}} S'(u)")
         a_eq = (rf"\frac{{d^2{sym}}}{{d\delta^2}} = {sign}\frac{{{amp}}}{{\Phi^2}} S''(u)")
-    name = law.name_zh if lang == "zh" else law.name_en
+    name = law.name(lang)
     _ = tr(lang)
     return {"title": _("{kind} {start}°–{end}°: {law}", kind=_KIND[lang][seg.kind], start=f(start, 0),
                        end=f(start + span, 0), law=name),
@@ -192,7 +192,6 @@ def cam_context(c, lang: str, figs: dict[str, str], csv_name: str) -> dict:
     fol = p.follower
     prog = p.programme
     u = _Units(c)
-    zh = lang == "zh"
     _ = tr(lang)
     translating = isinstance(fol, TranslatingFollower)
     motion = _("translating") if translating else _("oscillating")
@@ -233,7 +232,7 @@ def cam_context(c, lang: str, figs: dict[str, str], csv_name: str) -> dict:
 
     prog_rows = []
     for i, (seg, chk) in enumerate(zip(prog.segments, c.segments)):
-        law = "—" if seg.law is None else (LAWS[seg.law].name_zh if zh else LAWS[seg.law].name_en)
+        law = "—" if seg.law is None else LAWS[seg.law].name(lang)
         lift = "—" if seg.kind == DWELL else f(abs(prog.lifts[i]) * u.s_scale, 2)
         prog_rows.append([str(i + 1), _segment_name(c, i, lang),
                           f"{f(prog.starts[i] * DEG, 1)} – {f((prog.starts[i] + prog.spans[i]) * DEG, 1)}",
@@ -337,7 +336,7 @@ def cam_context(c, lang: str, figs: dict[str, str], csv_name: str) -> dict:
                     default=float(np.max(c.grid.pressure_angle)))
     return {
         "follower": follower_name, "rotation": rot, "data_rows": data, "prog_rows": prog_rows,
-        "joints": _.pgettext("list separator", ", ").join(joints),
+        "joints": _.pgettext("list", ", ").join(joints),
         "laws": laws, "geo": geo, "checks": checks, "design_rows": design_rows,
         "table_rows": table_rows, "table_step": f(p.table_step * DEG, 1),
         "table_head": ["δ/°", f"{u.s_sym}/{u.s_unit}", f"{u.syms[0]}/({u.units[0]})",
@@ -403,7 +402,6 @@ def cam_verification_rows(v, c, lang: str) -> list[list[str]]:
     """The cam self-checks as [item, result, reference / limit, verdict] rows."""
     from ..stages.cam import CAM_CHECK_NAMES, DIST_LIMIT
 
-    zh = lang == "zh"
     _ = tr(lang)
     osc = c.params.oscillating
     s_scale, s_unit = (DEG, "°") if osc else (MM, "mm")
@@ -411,7 +409,7 @@ def cam_verification_rows(v, c, lang: str) -> list[list[str]]:
     rr = f(c.grid.roller_radius * MM, 2)
     rows = []
     for k in v.checks:
-        name = CAM_CHECK_NAMES[k.key][0 if zh else 1].replace("r_r", "$r_r$")   # plain in warnings
+        name = _(CAM_CHECK_NAMES[k.key][1]).replace("r_r", "$r_r$")   # English msgid; plain in warnings
         ok = _verdict(k.passed, lang)
         if k.key == "angle_sum":
             rows.append([name, f"{f(k.detail['sum'] * DEG, 3)}°", "360°", ok])
@@ -455,7 +453,7 @@ def envelope_note(c, lang: str, csv_stem: str) -> str:
     rr = f(env.roller_radius * MM, 2)
     edges = [k for k in env.corners if k.kind == "edge"]
     arcs = [k for k in env.corners if k.kind == "arc"]
-    sep = _.pgettext("list separator", ", ")
+    sep = _.pgettext("list", ", ")
     deg = lambda ks: sep.join(f"{f(k.delta * DEG, 1)}°" for k in ks)  # noqa: E731
     text = _("Where the follower's velocity jumps (rigid impact) the pitch curve has a corner, and the curve "
              "offset by $r_r$ along the normal is broken there: it is not the envelope of the roller circles. "

@@ -707,7 +707,7 @@ def _right_draw(sheet, c, divs, g, mu_d, mu_s, row, gap, box, lab, lang) -> floa
     rows = []
     for i, seg in enumerate(prog.segments):
         a, b = prog.starts[i] * DEG, (prog.starts[i] + prog.spans[i]) * DEG
-        law = "—" if seg.law is None else (LAWS[seg.law].name_zh if lang == "zh" else LAWS[seg.law].name_en)
+        law = "—" if seg.law is None else LAWS[seg.law].name(lang)
         lift = "—" if seg.kind == DWELL else (
             f"{format_number(abs(prog.lifts[i]) * u.s_scale)}{'°' if u.osc else ' mm'}")
         impact = "—" if seg.kind == DWELL else _IMPACT[lang][c.segments[i].impact]

@@ -51,7 +51,7 @@ def _states_used(cycle: CycleDiagram, lang: str) -> dict[str, str]:
         for p in a.phases:
             if p.state not in used:
                 used.append(p.state)
-    return {s: STATES[s][0 if lang == "zh" else 1] for s in STATES if s in used}
+    return {s: STATES[s].name(lang) for s in STATES if s in used}
 
 
 def _ref_text(cycle: CycleDiagram, ref: PhaseRef, lang: str) -> str:

@@ -249,8 +249,9 @@ def check_rows(checks: Iterable[Check], lang: str = "zh") -> list[list[str]]:
     """Summary rows ``[item_zh, item_en, value, allowable, unit, verdict]`` (course units;
     the allowable is a minimum for lives and diameters, a maximum otherwise; a ratio's unit "1"
     shows as "—")."""
-    return [[c.name_zh, c.name_en, _value(c), _allowable(c), "—" if c.unit == "1" else c.unit, verdict(c, lang)]
-            for c in checks]
+    zh, en = tr("zh"), tr("en")
+    return [[zh(c.name, **c.name_args), en(c.name, **c.name_args), _value(c), _allowable(c),
+             "—" if c.unit == "1" else c.unit, verdict(c, lang)] for c in checks]
 
 
 __all__ = ["check_formula", "check_rows", "verdict", "num", "COURSE_SCALE"]

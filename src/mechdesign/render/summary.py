@@ -25,6 +25,8 @@ from pathlib import Path
 from typing import Any
 
 from .fmt import grouped, in_lang, md_text, verdict
+from ..i18n import N_, tr
+from .labels import pgettext, translated
 
 # --------------------------------------------------------------------------- references
 
@@ -90,9 +92,18 @@ def _check_names() -> dict[str, tuple[str, str]]:
     return {**DRIVE_CHECK_NAMES, **CAM_CHECK_NAMES, **DISC_CHECK_NAMES}
 
 
-_CAM_OWNERS = {"cam": ("凸轮", "cam"), "positioning_cam": ("定位凸轮", "positioning cam"),
-               "bending_cam": ("扳弯凸轮", "bending cam")}
-_SEGMENT = {"rise": ("推程", "rise"), "return": ("回程", "return")}
+_CAM_OWNERS = {"cam": N_("cam pressure angle"), "positioning_cam": N_("positioning cam pressure angle"),
+               "bending_cam": N_("bending cam pressure angle")}
+_SEGMENT = {"rise": N_("largest pressure angle of the rise"),
+            "return": N_("largest pressure angle of the return")}
+
+
+def _both(msgid: str, /, context: str | None = None, **fields) -> tuple[str, str]:
+    """(Chinese, English) of a catalogue message, as the check rows hold names."""
+    zh, en = tr("zh"), tr("en")
+    if context is None:
+        return zh(msgid, **fields), en(msgid, **fields)
+    return zh.pgettext(context, msgid, **fields), en.pgettext(context, msgid, **fields)
 
 
 def document_checks(document: dict) -> list[dict]:
@@ -137,8 +148,8 @@ def _describe(node: dict, path: tuple, parents: tuple, names: dict, actuator) ->
     keys = [p for p in path if isinstance(p, str)]
     if "stages" in keys and "drive" in keys:              # a transmission stage's strength check
         stage = _owner(parents, path, "stages")
-        group = (f"第 {stage.get('index', 0) + 1} 级：{stage.get('name_zh', '')}",
-                 f"stage {stage.get('index', 0) + 1}: {stage.get('name_en', '')}")
+        group = _both(N_("stage {n}: {name_en}"), n=stage.get("index", 0) + 1,
+                      name_zh=stage.get("name_zh", ""), name_en=stage.get("name_en", ""))
     elif "shaft_designs" in keys:                         # a shaft's strength, bearing, key checks
         from .drive_report import _shaft_name
 
@@ -148,21 +159,25 @@ def _describe(node: dict, path: tuple, parents: tuple, names: dict, actuator) ->
                  _shaft_name(shaft.get("index", 0), last, False))
     elif "segments" in keys:                              # a cam segment's pressure angle
         owner = keys[keys.index("segments") - 1] if keys.index("segments") else "cam"
-        zh, en = _CAM_OWNERS.get(owner, ("凸轮", "cam"))
-        group = (f"{zh}压力角", f"{en} pressure angle")
-        seg = _SEGMENT.get(node.get("kind"), (node.get("kind", ""), node.get("kind", "")))
-        return {"group": group, "name": (f"{seg[0]}最大压力角", f"largest pressure angle of the {seg[1]}")}
+        group = _both(_CAM_OWNERS.get(owner, _CAM_OWNERS["cam"]))
+        kind = node.get("kind", "")
+        name = _both(_SEGMENT[kind]) if kind in _SEGMENT else \
+            _both(N_("largest pressure angle of the {kind}"), kind=kind)
+        return {"group": group, "name": name}
     elif "constraints" in keys and "cycle" in keys:        # a timing rule of the cycle diagram
         cyc = _field(parents, path, "cycle", whole=True) or {}
-        group = ("运动循环协调", "motion-cycle timing")
+        group = _both(N_("motion-cycle timing"))
         return {"group": group,
                 "name": (f"{actuator(cyc, node.get('a', ''), True)}—{actuator(cyc, node.get('b', ''), True)}",
                          f"{actuator(cyc, node.get('a', ''), False)}–{actuator(cyc, node.get('b', ''), False)}")}
     elif "verification" in keys or "checks" in keys:
-        group = ("计算自检", "self-checks")
+        group = _both(_SELF_CHECKS)
     else:
         group = (keys[0] if keys else "", keys[0] if keys else "")
-    if node.get("name_zh") or node.get("name_en"):
+    if isinstance(node.get("name_args"), dict) and node.get("name"):     # a strength check (msgid)
+        args = node["name_args"]
+        name = (tr("zh")(node["name"], **args), tr("en")(node["name"], **args))
+    elif node.get("name_zh") or node.get("name_en"):
         name = (node.get("name_zh") or node.get("name_en"), node.get("name_en") or node.get("name_zh"))
     else:
         key = node.get("key", "")
@@ -191,12 +206,15 @@ def _field(parents: tuple, path: tuple, key: str, whole: bool = False) -> Any:
     return None
 
 
+_SELF_CHECKS = N_("self-checks")
+
+
 def check_groups(document: dict, ctx: dict, lang: str) -> list[dict]:
     """The summary's verdict rows: one per group of checks, {group, count, failed names,
     verdict}; the report's verification table is one group when the results hold no
     self-checks of their own (it then carries verdicts the machine judged)."""
-    zh = lang == "zh"
-    i = 0 if zh else 1
+    _ = tr(lang)
+    i = 0 if _.zh else 1
     groups: dict[str, dict] = {}
     checks = document_checks(document)
     for c in checks:
@@ -204,11 +222,11 @@ def check_groups(document: dict, ctx: dict, lang: str) -> list[dict]:
         g["count"] += 1
         if not c["ok"]:
             g["failed"].append(c["name"][i])
-    if not any(c["group"][0] == "计算自检" for c in checks):
+    if not any(c["group"][1] == _SELF_CHECKS for c in checks):
         rows = [(r[0], read_verdict(r[-1], lang)) for r in (ctx.get("verify_rows") or ()) if len(r) >= 2]
         rows = [(name, ok) for name, ok in rows if ok is not None]
         if rows:
-            g = {"group": "计算校核" if zh else "verification", "count": len(rows),
+            g = {"group": _.pgettext("check group", "verification"), "count": len(rows),
                  "failed": [name for name, ok in rows if not ok]}
             groups = {g["group"]: g, **groups}
     out = []
@@ -216,7 +234,7 @@ def check_groups(document: dict, ctx: dict, lang: str) -> list[dict]:
         failed = list(dict.fromkeys(g["failed"]))
         word = verdict_word(not failed, lang)
         if failed:
-            word += ("：" if zh else ": ") + ("、" if zh else ", ").join(failed)
+            word = _("{verdict}: {names}", verdict=word, names=_.pgettext("list", ", ").join(failed))
         out.append({"group": g["group"], "count": str(g["count"]), "failed": failed,
                     "verdict": word, "ok": not failed})
     return out
@@ -224,23 +242,23 @@ def check_groups(document: dict, ctx: dict, lang: str) -> list[dict]:
 
 # --------------------------------------------------------------------------- key numbers
 
-# (leaf key, zh label, en label, unit, factor SI → unit): found anywhere in the results
+# (leaf key, label (msgid), unit, factor SI → unit): found anywhere in the results
 # document (first occurrence outside the verification and comparison parts), shown when the
 # machine's registry summary does not already give the same quantity.
 _PROBES = (
-    ("stroke", "行程", "stroke", "mm", 1e3),
-    ("time_ratio", "行程速比系数 $K$", "time ratio $K$", "", 1.0),
-    ("extreme_angle", "极位夹角 $\\theta$", "extreme-position angle $\\theta$", "°", 180 / math.pi),
-    ("gamma_min", "最小传动角 $\\gamma_{min}$", "minimum transmission angle $\\gamma_{min}$", "°", 180 / math.pi),
-    ("peak_torque", "峰值扭矩", "peak torque", "N·m", 1.0),
-    ("max_energy_swing", "最大盈亏功 $\\Delta W_{max}$", "largest energy swing $\\Delta W_{max}$", "J", 1.0),
-    ("inertia", "飞轮转动惯量 $J_F$", "flywheel $J_F$", "kg·m²", 1.0),
-    ("base_radius", "凸轮基圆半径 $r_0$", "cam base radius $r_0$", "mm", 1e3),
-    ("roller_radius", "滚子半径 $r_r$", "roller radius $r_r$", "mm", 1e3),
-    ("module", "齿轮模数 $m$", "gear module $m$", "mm", 1e3),
-    ("contact_ratio", "重合度 $\\varepsilon_\\alpha$", "contact ratio $\\varepsilon_\\alpha$", "", 1.0),
-    ("designation", "电动机", "motor", "", 1.0),
-    ("total_ratio", "总传动比", "total ratio", "", 1.0),
+    ("stroke", N_("stroke"), "mm", 1e3),
+    ("time_ratio", N_("time ratio $K$"), "", 1.0),
+    ("extreme_angle", N_("extreme-position angle $\\theta$"), "°", 180 / math.pi),
+    ("gamma_min", N_("minimum transmission angle $\\gamma_{min}$"), "°", 180 / math.pi),
+    ("peak_torque", N_("peak torque"), "N·m", 1.0),
+    ("max_energy_swing", N_("largest energy swing $\\Delta W_{max}$"), "J", 1.0),
+    ("inertia", N_("flywheel $J_F$"), "kg·m²", 1.0),
+    ("base_radius", N_("cam base radius $r_0$"), "mm", 1e3),
+    ("roller_radius", N_("roller radius $r_r$"), "mm", 1e3),
+    ("module", N_("gear module $m$"), "mm", 1e3),
+    ("contact_ratio", N_("contact ratio $\\varepsilon_\\alpha$"), "", 1.0),
+    ("designation", pgettext("key number", "motor"), "", 1.0),
+    ("total_ratio", N_("total ratio"), "", 1.0),
 )
 _SAME = {"time_ratio_simulated": "time_ratio"}   # registry quantity → the probe it covers
 _SKIP = ("verification", "seed", "textbook", "compare", "best_offset", "residuals", "simulated",
@@ -306,7 +324,7 @@ def key_rows(machine: str, document: dict, lang: str) -> list[list[str]]:
     it does not give."""
     from ..registry import entry, summary_row
 
-    zh = lang == "zh"
+    _ = tr(lang)
     rows, paths = [], set()
     try:
         listed = entry(machine).summary
@@ -320,7 +338,7 @@ def key_rows(machine: str, document: dict, lang: str) -> list[list[str]]:
         rows.append([_label(label), text, unit or "—"])
         leaf = path.rsplit(".", 1)[-1]
         paths.add(_SAME.get(leaf, leaf))
-    for leaf, lzh, len_, unit, factor in _PROBES:
+    for leaf, label, unit, factor in _PROBES:
         if leaf in paths or (leaf == "inertia" and "flywheel" not in str(_find(document, leaf))):
             continue
         found = _find(document, leaf)
@@ -328,41 +346,41 @@ def key_rows(machine: str, document: dict, lang: str) -> list[list[str]]:
             continue
         text = _show(found[1], factor)
         if text is not None:
-            rows.append([lzh if zh else len_, text, unit or "—"])
+            rows.append([translated(label, _), text, unit or "—"])
             paths.add(leaf)
     for fol in document.get("followers") or ():        # the disc cam's followers
         text = _show(fol.get("stroke"), 1e3)
         if text is not None:
             label = md_text(str(fol.get("label", "")))
-            rows.append([f"{label} 推杆行程" if zh else f"{label} follower stroke", text, "mm"])
+            rows.append([_("{label} follower stroke", label=label), text, "mm"])
     return rows
 
 
 # --------------------------------------------------------------------------- the summary
 
-_PARTS = (  # (document key, zh, en): what a results document shows was designed
-    ("synthesis", "机构尺度综合", "dimensional synthesis of the linkage"),
-    ("toggle", "肘杆机构设计", "toggle linkage design"),
-    ("optimum", "曲柄摇杆机构设计", "crank-rocker design"),
-    ("positions", "机构运动分析与动态静力分析", "kinematic and kinetostatic analysis"),
-    ("linkage", "机构运动分析与动态静力分析", "kinematic and kinetostatic analysis"),
-    ("feed", "送料机构运动分析", "kinematic analysis of the feed linkage"),
-    ("bending", "扳弯机构设计", "bending linkage design"),
-    ("flywheel", "飞轮设计", "flywheel design"),
-    ("followers", "凸轮机构从动件运动分析", "follower motion of the disc cam"),
-    ("cam", "凸轮机构设计", "cam design"),
-    ("positioning_cam", "凸轮机构设计", "cam design"),
-    ("gear", "齿轮机构设计", "gear pair design"),
-    ("transmission", "传动系统设计", "transmission design"),
-    ("drive", "传动装置设计与强度校核", "drive design and strength checks"),
-    ("cycle", "运动循环图", "motion cycle diagram"),
-    ("morphology", "运动方案（形态学矩阵）", "concept selection (morphological matrix)"),
+_PARTS = (  # (document key, msgid): what a results document shows was designed
+    ("synthesis", N_("dimensional synthesis of the linkage")),
+    ("toggle", N_("toggle linkage design")),
+    ("optimum", N_("crank-rocker design")),
+    ("positions", N_("kinematic and kinetostatic analysis")),
+    ("linkage", N_("kinematic and kinetostatic analysis")),
+    ("feed", N_("kinematic analysis of the feed linkage")),
+    ("bending", N_("bending linkage design")),
+    ("flywheel", N_("flywheel design")),
+    ("followers", N_("follower motion of the disc cam")),
+    ("cam", N_("cam design")),
+    ("positioning_cam", N_("cam design")),
+    ("gear", N_("gear pair design")),
+    ("transmission", N_("transmission design")),
+    ("drive", N_("drive design and strength checks")),
+    ("cycle", N_("motion cycle diagram")),
+    ("morphology", N_("concept selection (morphological matrix)")),
 )
 
 
 def _designed(document: dict, lang: str) -> list[str]:
-    i = 1 if lang == "zh" else 2
-    return list(dict.fromkeys(p[i] for p in _PARTS if document.get(p[0]) is not None))
+    _ = tr(lang)
+    return list(dict.fromkeys(_(p[1]) for p in _PARTS if document.get(p[0]) is not None))
 
 
 def _findings(ctx: Any, out: list[str]) -> list[str]:
@@ -379,7 +397,7 @@ def _findings(ctx: Any, out: list[str]) -> list[str]:
 def summary_context(machine: str, document: dict, ctx: dict, lang: str, title: str) -> dict:
     """What the summary template places: designed parts, key numbers, check verdicts and
     what to watch (failed checks named, then the run's findings)."""
-    zh = lang == "zh"
+    _ = tr(lang)
     groups = check_groups(document, ctx, lang)
     findings = list(dict.fromkeys(_findings(ctx, [])))
     watch = []
@@ -387,7 +405,7 @@ def summary_context(machine: str, document: dict, ctx: dict, lang: str, title: s
         for name in g["failed"]:
             # a failed check is named here unless a finding of the run already names it
             if not any(name in w for w in findings):
-                watch.append(f"{g['group']}：{name}不合格。" if zh else f"{g['group']}: {name} FAILS.")
+                watch.append(_("{group}: {name} FAILS.", group=g["group"], name=name))
     watch += findings
     total = sum(int(g["count"]) for g in groups)
     failed = sum(len(g["failed"]) for g in groups)
@@ -468,13 +486,11 @@ def flow_chart(path: Path, titles: list[str], lang: str) -> Path:
     from .fonts import configure_matplotlib
 
     configure_matplotlib()
-    zh = lang == "zh"
-    boxes = ([("开始", "term"), ("读入任务书（YAML）并校验数据", "io"), ("换算为 SI 单位，可行性检查", "proc")]
-             if zh else [("start", "term"), ("read and check the brief (YAML)", "io"),
-                         ("SI units; feasibility checks", "proc")])
+    _ = tr(lang)
+    boxes = [(_.pgettext("flow chart", "start"), "term"), (_("read and check the brief (YAML)"), "io"),
+             (_("SI units; feasibility checks"), "proc")]
     boxes += [(stage_title(t, lang), "proc") for t in titles]
-    boxes += ([("写出 results.json、报告与图纸", "io"), ("结束", "term")] if zh else
-              [("write results, report and sheets", "io"), ("end", "term")])
+    boxes += [(_("write results, report and sheets"), "io"), (_.pgettext("flow chart", "end"), "term")]
     n = len(boxes)
     step, h, w = 0.8, 0.5, 5.6
     fig, ax = plt.subplots(figsize=(4.6, 0.34 * n + 0.3))

@@ -435,7 +435,8 @@ def _strength_warnings(results, shaft_designs) -> tuple[Finding, ...]:
         advice = {a[0]: a[1:] for a in s.advice}
         for c in s.checks:
             if not c.passed:
-                out.append(_failed(c, Msg(N_("shaft {name}"), name=name), advice.get(c.name_en)))
+                out.append(_failed(c, Msg(N_("shaft {name}"), name=name),
+                                   advice.get(tr("en")(c.name, **c.name_args))))
     return tuple(out)
 
 
@@ -473,16 +474,15 @@ def _failed(c, where: Msg, advice=None, stage: int | None = None) -> Finding:
         return finding("strength",
                        N_("{where}: {check} fails ({v} {rel} {a}{unit}) with the brief's {field}: "
                           "{advice}."), field=field, where=where,
-                       check=Pair(c.name_zh, c.name_en), v=v, rel=rel, a=a, unit=unit,
+                       check=Msg(c.name, **c.name_args), v=v, rel=rel, a=a, unit=unit,
                        advice=Pair(zh, en))
     fix = Msg(N_("enlarge it or use a better material"))
     extra = {}
     if stage is not None and c.key in de.FIXES:      # belts, gear geometry, worm deflection
-        fix_en, fix_zh = (t.format(i=stage) for t in de.FIXES[c.key])
-        fix = Pair(fix_zh, fix_en)
+        fix = Msg(de.FIXES[c.key], i=stage)
         extra = {"field": f"drive.stages[{stage}]"}
     return finding("strength", N_("{where}: {check} fails ({v} {rel} {a}{unit}): {fix}."),
-                   where=where, check=Pair(c.name_zh, c.name_en), v=v, rel=rel, a=a, unit=unit,
+                   where=where, check=Msg(c.name, **c.name_args), v=v, rel=rel, a=a, unit=unit,
                    fix=fix, **extra)
 
 
@@ -600,7 +600,8 @@ def verify_drive(d: DriveResult) -> DriveVerification:
         mismatches += sum(1 for c, m in zip(cs, margins) if c.passed != (m >= 0))
         checks.append(SelfCheck("margin", float(margins[k]), 0.0, sense="ge", requirement=True,
                                 detail={"where_zh": zh, "where_en": en, **which, "checks": len(cs),
-                                        "check_zh": cs[k].name_zh, "check_en": cs[k].name_en}))
+                                        **dict(zip(("check_zh", "check_en"),
+                                                   _zh_en(Msg(cs[k].name, **cs[k].name_args))))}))
     checks.append(SelfCheck("verdicts", float(mismatches), 0.0))
     for s in d.shaft_designs:
         checks.append(SelfCheck("reactions", _statics_residual(s), DRIVE_REL_LIMIT,

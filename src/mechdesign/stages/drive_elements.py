@@ -31,35 +31,28 @@ from ..core import belts, chains, gears
 from ..core.drive import PULLEY_DIAMETERS_MM
 from ..core.strength import Check, check
 from ..data import load_yaml
+from ..i18n import N_
 
 E_STEEL = 206e9          # Pa
 EPS_ALPHA_MIN = 1.2
 D1_DEFAULT = 0.100       # m, the program's default small datum diameter
 
-#: What to change when one of these checks fails (English, Chinese), {f} the stage's field.
+#: What to change when one of these checks fails (catalogue msgids), {i} the stage's index.
 FIXES = {
-    "belt_d_min": ("give a larger drive.stages[{i}].d1_mm", "增大 drive.stages[{i}].d1_mm"),
-    "belt_speed_min": ("give a larger drive.stages[{i}].d1_mm (v grows with d1)",
-                       "增大 drive.stages[{i}].d1_mm（带速随 d1 增大）"),
-    "belt_speed_max": ("give a smaller drive.stages[{i}].d1_mm", "减小 drive.stages[{i}].d1_mm"),
-    "belt_wrap": ("give a larger drive.stages[{i}].center_distance_mm or a smaller ratio",
-                  "增大 drive.stages[{i}].center_distance_mm 或减小传动比"),
-    "belt_count": ("use a larger section (drive.stages[{i}].section) or a larger d1_mm",
-                   "改用更大的带型（drive.stages[{i}].section）或增大 d1_mm"),
-    "tooth_tip": ("reduce the shift drive.stages[{i}].x1/x2 or use more teeth",
-                  "减小变位系数 drive.stages[{i}].x1/x2 或增加齿数"),
-    "undercut": ("give a positive shift drive.stages[{i}].x1/x2 ≥ x_min or more teeth",
-                 "取正变位 drive.stages[{i}].x1/x2 ≥ x_min 或增加齿数"),
-    "contact_ratio": ("use more teeth (a smaller module) or smaller shifts",
-                      "增加齿数（减小模数）或减小变位系数"),
-    "chain_z1": ("give more teeth drive.stages[{i}].z1 (≥ 17)", "增加小链轮齿数 drive.stages[{i}].z1（≥ 17）"),
-    "chain_z2": ("give the chain a smaller ratio or fewer teeth z1", "减小链传动的传动比或小链轮齿数"),
-    "chain_power": ("give a larger chain (drive.stages[{i}].chain) or more rows (rows)",
-                    "选更大的链号（drive.stages[{i}].chain）或增加排数（rows）"),
-    "chain_speed": ("give a smaller chain or fewer teeth z1", "选较小的链号或减少小链轮齿数"),
-    "chain_static": ("give a larger chain or more rows", "选更大的链号或增加排数"),
-    "worm_deflection": ("give a shorter bearing span or a larger worm diameter factor q",
-                        "缩短支承跨距或增大蜗杆直径系数 q"),
+    "belt_d_min": N_("give a larger drive.stages[{i}].d1_mm"),
+    "belt_speed_min": N_("give a larger drive.stages[{i}].d1_mm (v grows with d1)"),
+    "belt_speed_max": N_("give a smaller drive.stages[{i}].d1_mm"),
+    "belt_wrap": N_("give a larger drive.stages[{i}].center_distance_mm or a smaller ratio"),
+    "belt_count": N_("use a larger section (drive.stages[{i}].section) or a larger d1_mm"),
+    "tooth_tip": N_("reduce the shift drive.stages[{i}].x1/x2 or use more teeth"),
+    "undercut": N_("give a positive shift drive.stages[{i}].x1/x2 ≥ x_min or more teeth"),
+    "contact_ratio": N_("use more teeth (a smaller module) or smaller shifts"),
+    "chain_z1": N_("give more teeth drive.stages[{i}].z1 (≥ 17)"),
+    "chain_z2": N_("give the chain a smaller ratio or fewer teeth z1"),
+    "chain_power": N_("give a larger chain (drive.stages[{i}].chain) or more rows (rows)"),
+    "chain_speed": N_("give a smaller chain or fewer teeth z1"),
+    "chain_static": N_("give a larger chain or more rows"),
+    "worm_deflection": N_("give a shorter bearing span or a larger worm diameter factor q"),
 }
 
 
@@ -130,7 +123,7 @@ def chain_design(s, r, shaft, dp) -> chains.ChainDesign:
 
 def _hardened(material: str) -> bool:
     key = material.lower()
-    return any(w in key for w in ("surface", "carbur", "nitrid", "hardened", "淬火", "渗碳", "氮化"))
+    return any(w in key for w in ("surface", "carbur", "nitrid", "hardened"))   # keys are English
 
 
 def gear_geometry_checks(design, s) -> tuple[Check, ...]:
@@ -150,19 +143,18 @@ def gear_geometry_checks(design, s) -> tuple[Check, ...]:
     z_min = float(pair.z_min)
     out = []
     for k, (gd, mat) in enumerate(((pair.g1, design.materials[0]), (pair.g2, design.materials[1]))):
-        who_zh, who_en = ("小齿轮", "Pinion") if k == 0 else ("大齿轮", "Gear")
         factor = 0.4 if _hardened(mat) else 0.25
-        out.append(check("tooth_tip", f"{who_zh}齿顶厚", f"{who_en} tip thickness",
+        out.append(check("tooth_tip", N_("Pinion tip thickness") if k == 0 else N_("Gear tip thickness"),
                          "s_a", gd.sa, factor * m, "mm", "ge", m=m, factor=factor, z=float(gd.z), x=gd.x))
         # x ≥ x_min = h_a*(z_min − z)/z_min, checked as z ≥ z_min (1 − x/h_a*) (a positive
         # quantity, so the margin 1 − allowable/value is defined)
         x_min = ha_star * (z_min - zs[k]) / z_min
         z_need = z_min * (1 - gd.x / ha_star)
-        out.append(check("undercut", f"{who_zh}不根切", f"{who_en} free of undercut",
+        out.append(check("undercut", N_("Pinion free of undercut") if k == 0 else N_("Gear free of undercut"),
                          "z", float(zs[k]), z_need, "1", "ge", x=gd.x, x_min=x_min, z_min=z_min,
                          ha_star=ha_star))
     eps = design.extra["eps_alpha"]
-    out.append(check("contact_ratio", "重合度", "Contact ratio", "\\varepsilon_\\alpha",
+    out.append(check("contact_ratio", N_("Contact ratio"), "\\varepsilon_\\alpha",
                      eps, EPS_ALPHA_MIN, "1", "ge"))
     return tuple(out)
 
@@ -180,6 +172,6 @@ def worm_deflection_check(design, span: float | None) -> Check:
     inertia = math.pi * df1 ** 4 / 64
     y = math.hypot(f["Ft"], f["Fr"]) * L ** 3 / (48 * E_STEEL * inertia)
     allow = d1 / 1000
-    return check("worm_deflection", "蜗杆轴刚度（挠度）", "Worm shaft stiffness (deflection)", "y", y, allow, "μm",
+    return check("worm_deflection", N_("Worm shaft stiffness (deflection)"), "y", y, allow, "μm",
                  "le", Ft1=f["Ft"], Fr1=f["Fr"], L=L, E=E_STEEL, I=inertia, df1=df1, d1=d1,
                  span_given=1.0 if span else 0.0)

@@ -32,6 +32,7 @@ from dataclasses import dataclass, replace
 from ..core import belts, chains, gears, strength as st
 from ..core.fields import q
 from ..data import catalogues as cat
+from ..i18n import N_, Msg, Pair, tr
 from . import drive_elements as de
 
 K_V, K_BETA, S_H, S_F = 1.1, 1.1, 1.0, 1.4
@@ -51,7 +52,7 @@ class StageDesign:
     geometry: (gears.SpurPair | gears.HelicalPair | gears.WormPair | belts.VBeltDesign
                | chains.ChainDesign | None) = q(
         "", "the pair's geometry (as the gear section's pair); a belt's or chain's design "
-        "(濮良贵 ch.8, ch.9); null for couplings")
+        "(Pu Lianggui, ch.8, ch.9); null for couplings")
     materials: tuple[str, ...] = q("", "material keys (pinion, gear) or (worm, wheel)")
     module: float | None = q("m", "module used (normal module of a helical pair)")
     module_min: float | None = q("m", "module from the design formula (null when the brief gives it)")
@@ -183,11 +184,11 @@ def _gear_stage(s, n1: float, T1: float, T2: float, hours: float, KA: float,
     checks = []
     if not is_open:
         c = st.gear_contact_check(T1, K, b, d1, u, ZE, ZH, Ze, Zb, sH)
-        checks.append(replace(c, name_zh="齿面接触疲劳强度", name_en="Contact fatigue (flanks)"))
-    for i, who in enumerate(("小齿轮", "大齿轮")):
+        checks.append(replace(c, name=N_("Contact fatigue (flanks)")))
+    for i in range(2):
         c = st.gear_bending_check(T1, K, b, d1, m, yf[i][0], yf[i][1], Ye, Yb, sF[i])
-        checks.append(replace(c, name_zh=f"{who}齿根弯曲疲劳强度",
-                              name_en=f"{'Pinion' if i == 0 else 'Gear'} root bending fatigue"))
+        checks.append(replace(c, name=N_("Pinion root bending fatigue") if i == 0
+                              else N_("Gear root bending fatigue")))
     Ft = 2 * T1 / d1
     forces = {"Ft": Ft, "Fr": Ft * math.tan(math.radians(20)) / math.cos(beta), "Fa": Ft * math.tan(beta),
               "d1": d1, "d2": d1 * u}
@@ -232,10 +233,9 @@ def _worm_stage(s, n1: float, P1: float, T1: float, T2: float, hours: float, KA:
     YFa2 = cat.tooth_factors(max(zv2, 17.0))[0]
     area = st.worm_housing_area(a)
     checks = (
-        replace(st.worm_contact_check(T2, K, a, wheel.ZE, zr, sH), name_zh="蜗轮齿面接触疲劳强度",
-                name_en="Worm-wheel contact fatigue"),
-        replace(st.worm_bending_check(T2, K, geo.d1, geo.d2, m, YFa2, gamma, sF), name_zh="蜗轮齿根弯曲疲劳强度",
-                name_en="Worm-wheel root bending fatigue"),
+        st.worm_contact_check(T2, K, a, wheel.ZE, zr, sH),
+        replace(st.worm_bending_check(T2, K, geo.d1, geo.d2, m, YFa2, gamma, sF),
+                name=N_("Worm-wheel root bending fatigue")),
         st.worm_thermal(P1, eta, KD_WORM, area),
     )
     Ft1 = 2 * T1 / geo.d1
@@ -275,21 +275,33 @@ def stage_designs(dp, results, shafts, peak_factor, peak_from_shaft) -> tuple[li
             try:
                 b = de.belt_design(s, r, shafts[k], dp)
             except belts.BeltDesignError as e:
-                from ..core.drive import DriveDesignError
-                raise DriveDesignError(f"drive.stages[{s.index}]: {e.en}", f"drive.stages[{s.index}]：{e.zh}") from None
+                raise _stage_error(s.index, e) from None
             out.append(StageDesign("belt", b, (), None, None, False, None, b.KA, T1, T2, {"Q": b.Fp}, {},
                                    b.checks, {"v": b.v}))
         elif s.type == "chain":   # 濮良贵 ch.9: F_Q ≈ (1.2…1.3) F_e on the shafts
             try:
                 c = de.chain_design(s, r, shafts[k], dp)
             except chains.ChainDesignError as e:
-                from ..core.drive import DriveDesignError
-                raise DriveDesignError(f"drive.stages[{s.index}]: {e.en}", f"drive.stages[{s.index}]：{e.zh}") from None
+                raise _stage_error(s.index, e) from None
             out.append(StageDesign("chain", c, (), None, None, False, None, c.KA, T1, T2, {"Q": c.FQ}, {},
                                    c.checks, {"v": c.v}))
         else:
             out.append(StageDesign(s.type, None, (), None, None, False, None, 1.0, T1, T2, {}, {}, (), {}))
     return out, worm_eff
+
+
+def _zh_en(msgid: str, /, **fields) -> tuple[str, str]:
+    """(Chinese, English) of a catalogue message, as the design steps and advice hold them."""
+    msg = Msg(msgid, **fields)
+    return msg.text("zh"), msg.text("en")
+
+
+def _stage_error(index: int, e):
+    """The design error of a belt or chain stage, prefixed with the stage's brief field."""
+    from ..core.drive import DriveDesignError
+    from ..core.errors import Msg
+
+    return DriveDesignError(Msg(N_("drive.stages[{i}]: {error}"), i=index, error=e.message))
 
 
 def _round_up(x: float, step: float) -> float:
@@ -391,12 +403,12 @@ def _bearing_life(b, res, life_res, n_rpm, hours, peak):
         p0 = max(st.bearing_static_load(res.FrA, ax0.Fa1, 0.5, b.Y0),
                  st.bearing_static_load(res.FrB, ax0.Fa2, 0.5, b.Y0))
     life = st.bearing_life_check(b.Cr, max(pA, pB), n_rpm, hours, b.ball)
-    life = replace(life, name_zh=f"轴承 {b.designation} 寿命", name_en=f"Bearing {b.designation} life")
+    life = replace(life, name=N_("Bearing {designation} life"), name_args={"designation": b.designation})
     static = None
     if peak:
         static = replace(st.bearing_static_check(b.C0r, max(p0, 1e-9), STATIC_S0),
-                         name_zh=f"轴承 {b.designation} 静强度（峰值载荷）",
-                         name_en=f"Bearing {b.designation} static strength (peak load)")
+                         name=N_("Bearing {designation} static strength (peak load)"),
+                         name_args={"designation": b.designation})
     return (pA, pB), life, static
 
 
@@ -435,7 +447,8 @@ def _keys(info, d_end, d_seat, T_of, allow_of, key_length=None):
         hub, L, lw, count, c = choice
         nm = i["name"]
         lab = f"{key.label}×{L * 1e3:g}" + (" ×2" if count == 2 else "")
-        c = replace(c, name_zh=f"平键 {lab}（{nm[0]}）", name_en=f"Key {lab} ({nm[1]})")
+        c = replace(c, name=N_("Key {label} ({element_en})"),
+                    name_args={"label": lab, "element_zh": nm[0], "element_en": nm[1]})
         out.append((KeyDesign(nm, dk, key.b, key.h, L, lw, hub, count, T, c),
                     i["inside"] or d_end is None))
     return out
@@ -592,7 +605,7 @@ def shaft_designs(dp, designs, shafts, peak_factor, peak_from_shaft, names,
         if ch is not None and not checks[0].passed:
             fld = f"drive.shafts[{ch.index}].{'end_mm' if d_end is not None else 'journal_mm'}"
             need = st.standard_diameter(d_min, series_d)
-            advice = advice + ((checks[0].name_en, fld, f"{fld} ≥ {_mmf(need)}", f"{fld} ≥ {_mmf(need)}"),)
+            advice = advice + ((tr("en")(checks[0].name, **checks[0].name_args), fld, f"{fld} ≥ {_mmf(need)}", f"{fld} ≥ {_mmf(need)}"),)
         if ev["life"] is not None:
             checks.append(ev["life"])
         if ev["static"] is not None:
@@ -607,9 +620,9 @@ def shaft_designs(dp, designs, shafts, peak_factor, peak_from_shaft, names,
     return tuple(out)
 
 
-_KIND_TEXT = {"shaft_bending": ("弯扭合成强度", "bending–torsion"), "bearing_life": ("轴承寿命", "bearing life"),
-              "bearing_static": ("轴承静强度", "bearing statics"), "key_crushing": ("键的挤压", "key crushing"),
-              "none": ("无此内径的轴承", "no bearing of that bore")}
+_KIND_TEXT = {"shaft_bending": N_("bending–torsion"), "bearing_life": N_("bearing life"),
+              "bearing_static": N_("bearing statics"), "key_crushing": N_("key crushing"),
+              "none": N_("no bearing of that bore")}
 
 
 def _kinds(ev) -> tuple[str, ...]:
@@ -632,19 +645,16 @@ def _loop_text(log) -> list[tuple[str, str]]:
             j += 1
         first, last = log[k], log[j]
         kinds = [x for x in _KIND_TEXT if any(x in e[3] for e in log[k:j + 1])]
-        why_zh = "、".join(_KIND_TEXT[x][0] for x in kinds)
-        why_en = ", ".join(_KIND_TEXT[x][1] for x in kinds)
+        why = Pair(*(t.pgettext("list", ", ").join(t(_KIND_TEXT[x]) for x in kinds) for t in (tr("zh"), tr("en"))))
         n = j - k + 1
         if kind == "end":
-            out.append((f"外伸端加大：{_mmf(first[1])} → {_mmf(last[2])} mm（{n} 档标准尺寸；较小时未通过：{why_zh}）",
-                        f"overhung end enlarged: {_mmf(first[1])} → {_mmf(last[2])} mm ({n} standard sizes; "
-                        f"the smaller ones fail: {why_en})"))
+            out.append(_zh_en(N_("overhung end enlarged: {a} → {b} mm ({n} standard sizes; the smaller ones "
+                                 "fail: {why})"), a=_mmf(first[1]), b=_mmf(last[2]), n=n, why=why))
         else:
             a, b = first[1], last[2]
-            out.append((f"轴颈/装配段加大：{_mmf(a[0])}/{_mmf(a[1])} → {_mmf(b[0])}/{_mmf(b[1])} mm（{n} 次，每次 5 mm；"
-                        f"较小时未通过：{why_zh}）",
-                        f"journal/seat enlarged: {_mmf(a[0])}/{_mmf(a[1])} → {_mmf(b[0])}/{_mmf(b[1])} mm ({n} steps of "
-                        f"5 mm; the smaller ones fail: {why_en})"))
+            out.append(_zh_en(N_("journal/seat enlarged: {a0}/{a1} → {b0}/{b1} mm ({n} steps of 5 mm; the "
+                                 "smaller ones fail: {why})"), a0=_mmf(a[0]), a1=_mmf(a[1]), b0=_mmf(b[0]),
+                              b1=_mmf(b[1]), n=n, why=why))
         k = j + 1
     return out
 
@@ -661,21 +671,21 @@ def _advice(ch, ev, dims, free_ev, free_dims):
         if c.key == "shaft_bending":
             parts = [(f"{here}.{n}", v) for n, v, given in (("end_mm", fe, ch.end), ("journal_mm", fj, ch.journal),
                                                               ("seat_mm", fs, ch.seat)) if given and v is not None]
-            fix_en = "; ".join(f"{f} ≥ {_mmf(v)}" for f, v in parts) or "a stronger material"
-            fix_zh = "；".join(f"{f} ≥ {_mmf(v)}" for f, v in parts) or "更好的材料"
+            fix_zh, fix_en = (t.pgettext("list", "; ").join(f"{f} ≥ {_mmf(v)}" for f, v in parts)
+                              or t(N_("a stronger material")) for t in (tr("zh"), tr("en")))
             field = parts[0][0] if parts else f"{here}.material"
         elif c.key in ("bearing_life", "bearing_static"):
             b = free_ev["bearing"]
             field = f"{here}.bearing" if ch.bearing else f"{here}.journal_mm"
-            fix_en = (f"{field}: the design takes {b.designation}" if ch.bearing and b else
-                      f"{field} ≥ {_mmf(fj)}")
-            fix_zh = (f"{field}：设计选用 {b.designation}" if ch.bearing and b else f"{field} ≥ {_mmf(fj)}")
+            fix_zh, fix_en = (_zh_en(N_("{field}: the design takes {designation}"), field=field,
+                                     designation=b.designation) if ch.bearing and b else
+                              (f"{field} ≥ {_mmf(fj)}",) * 2)
         else:
             field = f"{here}.key_length_mm" if ch.key_length else f"{here}.seat_mm"
-            fix_en = (f"remove {field} (the design takes the longest key the hub allows, or two keys)"
-                      if ch.key_length else f"{field} ≥ {_mmf(fs)}")
-            fix_zh = (f"删去 {field}（设计取轮毂允许的最长键或双键）" if ch.key_length else f"{field} ≥ {_mmf(fs)}")
-        out.append((c.name_en, field, fix_zh, fix_en))
+            fix_zh, fix_en = (_zh_en(N_("remove {field} (the design takes the longest key the hub allows, or "
+                                        "two keys)"), field=field) if ch.key_length else
+                              (f"{field} ≥ {_mmf(fs)}",) * 2)
+        out.append((tr("en")(c.name, **c.name_args), field, fix_zh, fix_en))
     return tuple(out)
 
 
@@ -702,48 +712,44 @@ def _steps(sh, mat, a0, d_min, dims, shoulder, T, peak, peak_factor, lf, ev, spa
     d_end, dj, ds = dims
     P, n = sh.power / 1e3, sh.speed_rpm
     raw = a0 * (P / n) ** (1 / 3)
-    out = [(f"材料 {mat.name_zh}，$[\\sigma_{{-1b}}]$ = {mat.sigma_minus1b_allow / 1e6:g} MPa（表15-1）；"
-            f"$d_{{min}} = A_0\\sqrt[3]{{P/n}}(1 + 5\\%) = {a0:g}\\sqrt[3]{{{_sig(P, 4)}/{_sig(n, 4)}}} \\times 1.05 = "
-            f"{raw * 1.05:.2f}$ mm（表15-3，一个键槽加大 5%）",
-            f"material {mat.name_en}, $[\\sigma_{{-1b}}]$ = {mat.sigma_minus1b_allow / 1e6:g} MPa (table 15-1); "
-            f"$d_{{min}} = A_0\\sqrt[3]{{P/n}}(1 + 5\\%) = {a0:g}\\sqrt[3]{{{_sig(P, 4)}/{_sig(n, 4)}}} \\times 1.05 = "
-            f"{raw * 1.05:.2f}$ mm (table 15-3, +5 % for one keyway)")]
+    dmin = (f"$d_{{min}} = A_0\\sqrt[3]{{P/n}}(1 + 5\\%) = {a0:g}\\sqrt[3]{{{_sig(P, 4)}/{_sig(n, 4)}}} \\times 1.05 = "
+            f"{raw * 1.05:.2f}$")
+    out = [_zh_en(N_("material {material_en}, {sigma} = {allow} MPa (table 15-1); {dmin} mm (table 15-3, "
+                     "+5 % for one keyway)"), material_zh=mat.name_zh, material_en=mat.name_en,
+                  sigma="$[\\sigma_{-1b}]$", allow=f"{mat.sigma_minus1b_allow / 1e6:g}", dmin=dmin)]
     if peak:
-        out.append((f"飞轮之后的轴承受工作机的峰值转矩：强度计算用 $T = {_sig(peak_factor, 3)} \\times {_sig(sh.torque, 4)} = "
-                    f"{_sig(T, 4)}$ N·m（峰值/平均）；轴承寿命按疲劳取循环的当量载荷（转矩立方平均 = "
-                    f"{_sig(lf, 3)} × 平均），静强度取峰值",
-                    f"after the flywheel the shaft carries the machine's peak torque: the strength checks use "
-                    f"$T = {_sig(peak_factor, 3)} \\times {_sig(sh.torque, 4)} = {_sig(T, 4)}$ N·m (peak/mean); the bearing life, "
-                    f"a fatigue quantity, takes the cycle's equivalent load (cube-mean torque = {_sig(lf, 3)} × the "
-                    f"mean), the static strength the peak"))
+        out.append(_zh_en(N_("after the flywheel the shaft carries the machine's peak torque: the strength checks "
+                             "use {torque} N·m (peak/mean); the bearing life, a fatigue quantity, takes the "
+                             "cycle's equivalent load (cube-mean torque = {lf} × the mean), the static strength "
+                             "the peak"),
+                          torque=f"$T = {_sig(peak_factor, 3)} \\times {_sig(sh.torque, 4)} = {_sig(T, 4)}$",
+                          lf=_sig(lf, 3)))
     else:
-        out.append((f"设计转矩 T = 9549 P/n = {_sig(T, 4)} N·m（轴承寿命用同一载荷 × $f_p$ = {FP:g}）",
-                    f"design torque T = 9549 P/n = {_sig(T, 4)} N·m (bearing life: the same load × $f_p$ = {FP:g})"))
+        out.append(_zh_en(N_("design torque T = 9549 P/n = {T} N·m (bearing life: the same load × $f_p$ = {fp})"),
+                          T=_sig(T, 4), fp=f"{FP:g}"))
     head, out = out, []
-    lay_zh, lay_en = [], []
+    lay = []
     if d_end is not None:
-        lay_zh.append(f"外伸端 {_mmf(d_end)}（≥ $d_{{min}}$ 的标准值）")
-        lay_en.append(f"overhung end {_mmf(d_end)} (the standard size ≥ $d_{{min}}$)")
-    lay_zh += [f"轴颈 {_mmf(dj)}（轴承内径，5 的倍数）", f"装配段 {_mmf(ds)}（轴颈 + 5）",
-               f"轴环 {_mmf(shoulder)}（h ≈ 0.07d）"]
-    lay_en += [f"journals {_mmf(dj)} (bearing bore, a multiple of 5)", f"seat {_mmf(ds)} (journal + 5)",
-               f"collar {_mmf(shoulder)} (h ≈ 0.07 d)"]
-    out.append(("结果，各段直径（mm）：" + "，".join(lay_zh) + f"；支承跨距 {_mmf(span, 0)} mm",
-                "result, the sections (mm): " + ", ".join(lay_en) + f"; bearing span {_mmf(span, 0)} mm"))
+        lay.append(Msg(N_("overhung end {d} (the standard size ≥ {dmin})"), d=_mmf(d_end), dmin="$d_{min}$"))
+    lay += [Msg(N_("journals {d} (bearing bore, a multiple of 5)"), d=_mmf(dj)),
+            Msg(N_("seat {d} (journal + 5)"), d=_mmf(ds)), Msg(N_("collar {d} (h ≈ 0.07 d)"), d=_mmf(shoulder))]
+    sections = Pair(*(tr(lang).pgettext("separator", ", ").join(m.text(lang) for m in lay) for lang in ("zh", "en")))
+    out.append(_zh_en(N_("result, the sections (mm): {sections}; bearing span {span} mm"), sections=sections,
+                      span=_mmf(span, 0)))
     b = ev["bearing"]
     if b is not None:
-        conf_zh = "" if cat.bearing_confirmed(b.designation) else "（额定载荷按手册表抄录，未与公开副本核对）"
-        conf_en = "" if cat.bearing_confirmed(b.designation) else " (rating transcribed from the handbook table, not confirmed against a public copy)"
-        out.append((f"轴承：按轴颈选最轻系列中寿命 ≥ {_text_num(dp.service_hours)} h 者 → {b.designation}，$C_r$ = "
-                    f"{b.Cr / 1e3:g} kN，$C_{{0r}}$ = {b.C0r / 1e3:g} kN{conf_zh}",
-                    f"bearings: at the journal, the lightest series whose life reaches {_text_num(dp.service_hours)} h → "
-                    f"{b.designation}, $C_r$ = {b.Cr / 1e3:g} kN, $C_{{0r}}$ = {b.C0r / 1e3:g} kN{conf_en}"))
+        conf = "" if cat.bearing_confirmed(b.designation) else \
+            Msg(N_(" (rating transcribed from the handbook table, not confirmed against a public copy)"))
+        out.append(_zh_en(N_("bearings: at the journal, the lightest series whose life reaches {hours} h → "
+                             "{designation}, $C_r$ = {cr} kN, {c0r} = {c0} kN{conf}"),
+                          hours=_text_num(dp.service_hours), designation=b.designation, cr=f"{b.Cr / 1e3:g}",
+                          c0r="$C_{0r}$", c0=f"{b.C0r / 1e3:g}", conf=conf))
     if ev["keys"]:
-        zh = "；".join(f"{k.names[0]}：d = {_mmf(k.d)}，键 {_mmf(k.b)}×{_mmf(k.h)}，轮毂 {_mmf(k.hub, 0)}，"
-                      f"L = {_mmf(k.L)}{'，双键 180°' if k.count == 2 else ''}" for k in ev["keys"])
-        en = "; ".join(f"{k.names[1]}: d = {_mmf(k.d)}, key {_mmf(k.b)}×{_mmf(k.h)}, hub {_mmf(k.hub, 0)}, "
-                       f"L = {_mmf(k.L)}{', two keys at 180°' if k.count == 2 else ''}" for k in ev["keys"])
-        out.append(("平键（GB/T 1096，A 型，L ≤ 轮毂 − 8 mm，不足时加长轮毂至 1.5d，再用双键）：" + zh,
-                    "keys (GB/T 1096, form A, L ≤ hub − 8 mm; a longer hub up to 1.5 d, then two keys "
-                    "when one fails): " + en))
+        keys = [Msg(N_("{name_en}: d = {d}, key {b}×{h}, hub {hub}, L = {L}, two keys at 180°") if k.count == 2
+                    else N_("{name_en}: d = {d}, key {b}×{h}, hub {hub}, L = {L}"), name_zh=k.names[0],
+                    name_en=k.names[1], d=_mmf(k.d), b=_mmf(k.b), h=_mmf(k.h), hub=_mmf(k.hub, 0), L=_mmf(k.L))
+                for k in ev["keys"]]
+        listed = Pair(*(tr(lang).pgettext("list", "; ").join(m.text(lang) for m in keys) for lang in ("zh", "en")))
+        out.append(_zh_en(N_("keys (GB/T 1096, form A, L ≤ hub − 8 mm; a longer hub up to 1.5 d, then two keys "
+                             "when one fails): {keys}"), keys=listed))
     return head, out

@@ -9,7 +9,7 @@ from collections.abc import Mapping
 from dataclasses import dataclass
 
 from ..core.fields import q
-from ..i18n import base, tr
+from ..i18n import Msg, Pair, _field_text, base, tr  # noqa: F401  (Msg, Pair: i18n's message)
 
 
 @dataclass(frozen=True)
@@ -28,8 +28,10 @@ class Finding:
 def en_zh(msgid: str, /, context: str | None = None, **fields) -> tuple[str, str]:
     """(English, Chinese) of the catalogue message ``msgid`` with its ``{fields}`` filled in
     (the Chinese of the run's catalogue variant, see :func:`mechdesign.i18n.set_variant`); a
-    field may be a :class:`Msg` (translated too) or a :class:`Pair` (a value per language)."""
-    return tuple(Msg(msgid, context, **fields).text(tr(lang)) for lang in ("en", "zh"))
+    field may be a :class:`~mechdesign.i18n.Msg` (translated too) or a
+    :class:`~mechdesign.i18n.Pair` (a value per language)."""
+    msg = Msg(msgid, context, **fields)
+    return msg.text("en"), msg.text("zh")
 
 
 def finding(code: str, msgid: str, /, field: str = "", **fields) -> Finding:
@@ -57,33 +59,6 @@ class CheckNames(Mapping):
         return len(self._names)
 
 
-class Msg:
-    """A catalogue message used as a field of another one, translated in each language:
-    ``finding("pointed", N_("…; {fix}."), fix=Msg(N_("reduce {field}"), field=f))``."""
-
-    __slots__ = ("msgid", "context", "fields")
-
-    def __init__(self, msgid: str, /, context: str | None = None, **fields):
-        self.msgid, self.context, self.fields = msgid, context, fields
-
-    def text(self, t) -> str:
-        """The message in the language of the translator ``t`` (``tr(lang)``)."""
-        fields = _resolved(self.fields, t)
-        if self.context is None:
-            return t(self.msgid, **fields)
-        return t.pgettext(self.context, self.msgid, **fields)
-
-
-class Pair:
-    """A field whose value differs by language (a name the data give in both, e.g. a drive
-    stage's name_zh / name_en)."""
-
-    __slots__ = ("zh", "en")
-
-    def __init__(self, zh, en):
-        self.zh, self.en = zh, en
-
-
 class Cat:
     """Parts (messages, pairs, text) written one after the other, e.g. a fix and the
     alternatives appended to it."""
@@ -96,20 +71,9 @@ class Cat:
     def __add__(self, other) -> "Cat":
         return Cat(*self.parts, other)
 
-    def text(self, t) -> str:
-        return "".join(_one(v, t) for v in self.parts)
-
-
-def _one(v, t):
-    if isinstance(v, (Msg, Cat)):
-        return v.text(t)
-    if isinstance(v, Pair):
-        return v.zh if t.zh else v.en
-    return v
-
-
-def _resolved(fields: dict, t) -> dict:
-    return {k: _one(v, t) for k, v in fields.items()}
+    def text(self, lang) -> str:
+        """The parts in ``lang`` (a language or a :class:`~mechdesign.i18n.Translator`)."""
+        return "".join(str(_field_text(v, lang)) for v in self.parts)
 
 
 class _ZhEn:

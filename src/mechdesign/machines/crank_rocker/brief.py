@@ -15,7 +15,8 @@ from typing import Literal, Optional
 from ...lazy import np
 from pydantic import Field, field_validator, model_validator
 
-from ...brief.common import MISSING, Problems, ReportMeta, StrictModel, invalid
+from ...brief.common import MISSING, Msg, Problems, ReportMeta, StrictModel, invalid
+from ...i18n import N_
 
 if TYPE_CHECKING:
     from ...core import fourbar
@@ -36,23 +37,20 @@ def crank_rocker_problems(out: Problems, loc: tuple, a: float, b: float, c: floa
     at = {n: (locs or {}).get(n, loc + (n,)) for n in names}
     ordered = sorted(lengths.values())
     s, p, q, l_ = ordered
-    sums = (f"shortest + longest = {s:g} + {l_:g} = {s + l_:g} mm, the other two {p:g} + {q:g} "
-            f"= {p + q:g} mm")
-    sums_zh = f"最短杆 + 最长杆 = {s:g} + {l_:g} = {s + l_:g} mm，其余两杆之和 {p + q:g} mm"
+    sums = Msg(N_("shortest + longest = {s:g} + {l:g} = {sl:g} mm, the other two {p:g} + {q:g} "
+                  "= {pq:g} mm"), s=s, l=l_, sl=s + l_, p=p, q=q, pq=p + q)
     if not s + l_ < p + q:
         longest = max(lengths, key=lengths.get)
         out.add(at[longest], lengths[longest],
-                f"{longest} = {lengths[longest]:g}: these lengths are not a crank-rocker (Grashof: "
-                f"{sums}; a crank needs shortest + longest < the other two)",
-                f"{longest} = {lengths[longest]:g}：杆长不构成曲柄摇杆机构（{sums_zh}；"
-                "曲柄存在须最短杆 + 最长杆 < 其余两杆之和）")
+                N_("{field} = {value:g}: these lengths are not a crank-rocker (Grashof: "
+                   "{sums}; a crank needs shortest + longest < the other two)"),
+                field=longest, value=lengths[longest], sums=sums)
         return
     if not a <= min(b, c, d):
         out.add(at[names[0]], a,
-                f"{names[0]} = {a:g}: the crank must be the shortest link for a crank-rocker "
-                f"(the shortest is {s:g} mm; with another link shortest it is a double-crank, "
-                "double-rocker or a rocker that turns)",
-                f"{names[0]} = {a:g}：曲柄摇杆机构的曲柄须为最短杆（最短杆长 {s:g} mm）")
+                N_("{field} = {value:g}: the crank must be the shortest link for a crank-rocker "
+                   "(the shortest is {s:g} mm; with another link shortest it is a double-crank, "
+                   "double-rocker or a rocker that turns)"), field=names[0], value=a, s=s)
         return
     if gamma_allowed_deg is None:
         return
@@ -63,12 +61,10 @@ def crank_rocker_problems(out: Problems, loc: tuple, a: float, b: float, c: floa
     g = min(d1, 180.0 - d2, 180.0 - d1, d2)
     if g < gamma_allowed_deg:
         out.add(loc + (gamma_field or names[1],), gamma_allowed_deg,
-                f"{gamma_field or names[1]}: the given lengths have the minimum transmission angle "
-                f"γmin = {g:.3f}° < the allowed {gamma_allowed_deg:g}° (δ' = {d1:.3f}°, δ'' = "
-                f"{d2:.3f}° with the crank along the frame); change the lengths or the allowed value",
-                f"{gamma_field or names[1]}：给定杆长的最小传动角 γmin = {g:.3f}° 小于许用值 "
-                f"{gamma_allowed_deg:g}°（曲柄与机架共线时 δ' = {d1:.3f}°、δ'' = {d2:.3f}°）；"
-                "应修改杆长或许用值")
+                N_("{field}: the given lengths have the minimum transmission angle "
+                   "γmin = {g:.3f}° < the allowed {allowed:g}° (δ' = {d1:.3f}°, δ'' = "
+                   "{d2:.3f}° with the crank along the frame); change the lengths or the allowed value"),
+                field=gamma_field or names[1], g=g, allowed=gamma_allowed_deg, d1=d1, d2=d2)
 
 
 def raise_missing(model, names) -> None:
@@ -114,18 +110,14 @@ class SliderCrankSection(StrictModel):
             for name in ("time_ratio_K", "stroke_H_mm"):
                 if getattr(self, name) is not None:
                     out.add((name,), getattr(self, name),
-                            f"{name}: with dimensions given, H and K are computed from them; "
-                            f"remove {name} (or remove dimensions to design from K and H)",
-                            f"{name}：已给出 dimensions 时 H、K 由尺寸算出；应删去 {name}"
-                            "（或删去 dimensions，按 K、H 设计）")
+                            N_("{name}: with dimensions given, H and K are computed from them; "
+                               "remove {name} (or remove dimensions to design from K and H)"), name=name)
             dm = self.dimensions
             if not dm.crank_mm + self.offset_e_mm < dm.rod_mm:
                 out.add(("dimensions", "rod_mm"), dm.rod_mm,
-                        f"dimensions.rod_mm = {dm.rod_mm:g}: the crank turns fully only with rod > "
-                        f"crank + e = {dm.crank_mm:g} + {self.offset_e_mm:g} = "
-                        f"{dm.crank_mm + self.offset_e_mm:g} mm",
-                        f"dimensions.rod_mm = {dm.rod_mm:g}：曲柄能整周转动须连杆 > 曲柄 + 偏距 = "
-                        f"{dm.crank_mm:g} + {self.offset_e_mm:g} = {dm.crank_mm + self.offset_e_mm:g} mm")
+                        N_("dimensions.rod_mm = {rod:g}: the crank turns fully only with rod > "
+                           "crank + e = {crank:g} + {e:g} = {sum:g} mm"),
+                        rod=dm.rod_mm, crank=dm.crank_mm, e=self.offset_e_mm, sum=dm.crank_mm + self.offset_e_mm)
         out.raise_any()
         return self
 
@@ -147,7 +139,7 @@ class ChartSettings(StrictModel):
     def _thetas(cls, value):
         bad = [x for x in value if not 0.0 <= x < 90.0]
         if bad:
-            raise invalid(f"each θ must be in [0°, 90°); got {bad}", f"每个 θ 须在 [0°, 90°) 内；现为 {bad}")
+            raise invalid(N_("each θ must be in [0°, 90°); got {bad}"), bad=bad)
         return sorted(set(value))
 
     @field_validator("swing_deg")
@@ -155,8 +147,8 @@ class ChartSettings(StrictModel):
     def _swings(cls, value):
         lo, hi = value
         if not 0.0 < lo < hi < 180.0:
-            raise invalid(f"swing_deg must be [from, to] with 0 < from < to < 180; got {value}",
-                          f"swing_deg 须为 [起, 止]，0 < 起 < 止 < 180；现为 {value}")
+            raise invalid(N_("swing_deg must be [from, to] with 0 < from < to < 180; got {value}"),
+                          value=value)
         return value
 
 
@@ -226,10 +218,9 @@ class CrankRockerBrief(StrictModel):
             for name in _REQUIREMENTS:
                 if getattr(self, name) is not None:
                     out.add((name,), getattr(self, name),
-                            f"{name}: with dimensions given, θ, K, ψ and the lengths are computed "
-                            f"from them; remove {name} (or remove dimensions to design from K and ψ)",
-                            f"{name}：已给出 dimensions 时 θ、K、ψ 与杆长均由尺寸确定；应删去 {name}"
-                            "（或删去 dimensions，按 K、ψ 设计）")
+                            N_("{name}: with dimensions given, θ, K, ψ and the lengths are computed "
+                               "from them; remove {name} (or remove dimensions to design from K and ψ)"),
+                            name=name)
             dm = self.dimensions
             crank_rocker_problems(out, ("dimensions",), dm.crank_mm, dm.coupler_mm, dm.rocker_mm,
                                   dm.frame_mm, ("crank_mm", "coupler_mm", "rocker_mm", "frame_mm"))
@@ -240,9 +231,8 @@ class CrankRockerBrief(StrictModel):
             both = self.time_ratio_K is not None
             out.add(("extreme_angle_deg",) if both else ("time_ratio_K",),
                     self.extreme_angle_deg if both else MISSING,
-                    "give exactly one of time_ratio_K and extreme_angle_deg" +
-                    (": remove one" if both else ""),
-                    "time_ratio_K 与 extreme_angle_deg 须且只能给出一个" + ("：请删去其一" if both else ""))
+                    N_("give exactly one of time_ratio_K and extreme_angle_deg: remove one") if both
+                    else N_("give exactly one of time_ratio_K and extreme_angle_deg"))
             out.raise_any()
         raise_missing(self, [n for n in ("rocker_swing_deg", "rocker_length_mm") if getattr(self, n) is None])
         return self

@@ -12,30 +12,38 @@ from ...render.figures import figure
 from ...render.fmt import e as fe
 from ...render.fmt import verdict
 from ...render.fmt import f, md_meta, md_text, mpl_text
+from ...render.labels import LabelTable
+from ...i18n import N_, tr
 
 DEG = 180.0 / np.pi
 MM = 1e3
 
-LABELS = {
-    "zh": {"psi": "摇杆摆角 ψ (°)", "ratio": r"$l_3/l_4$（最优）", "gamma_opt": r"最大的 $\gamma_{min}$ (°)",
-           "theta": "θ", "ours": "本设计", "allowed": "许用值 [γ]", "phi": "曲柄转角 φ，由机架线 AD 量起 (°)", "phi_s": "曲柄转角 φ，由导路方向量起 (°)",
-           "gamma": "传动角 γ (°)", "rocker": "摇杆角位移 (°)", "w4": r"摇杆角速度 $\omega_4$ (rad/s)",
-           "a4": r"摇杆角加速度 $\alpha_4$ (rad/s²)", "x": "x (mm)", "y": "y (mm)",
-           "circle": "θ 圆", "arc": "A 的允许弧", "frame_arc": r"以 D 为圆心、$l_4$ 为半径的圆弧",
-           "textbook": "给定机架的设计 A′", "limit": r"$\theta = 0$ 为极限（A 在无穷远）",
-           "alpha": "压力角 α (°)", "slow": "慢行程（工作行程）", "fast": "快行程（回程）",
-           "guide": "滑块导路", "optimum": "最优设计"},
-    "en": {"psi": "rocker swing ψ (°)", "ratio": r"$l_3/l_4$ (optimum)", "gamma_opt": r"largest $\gamma_{min}$ (°)",
-           "theta": "θ", "ours": "this design", "allowed": "allowed [γ]", "phi": "crank angle φ from the frame line AD (°)",
-           "phi_s": "crank angle φ from the guide direction (°)",
-           "gamma": "transmission angle γ (°)", "rocker": "rocker angle (°)",
-           "w4": r"rocker $\omega_4$ (rad/s)", "a4": r"rocker $\alpha_4$ (rad/s²)",
-           "x": "x (mm)", "y": "y (mm)", "circle": "θ-circle", "arc": "allowed arc for A",
-           "frame_arc": r"arc about D of radius $l_4$", "textbook": "given-frame design A′",
-           "limit": r"$\theta = 0$ is a limit (A at infinity)", "alpha": "pressure angle α (°)",
-           "slow": "slow (working) stroke", "fast": "fast (return) stroke", "guide": "slider guide",
-           "optimum": "optimum"},
-}
+LABELS = LabelTable({
+    "psi": N_("rocker swing ψ (°)"),
+    "ratio": N_(r"$l_3/l_4$ (optimum)"),
+    "gamma_opt": N_(r"largest $\gamma_{min}$ (°)"),
+    "theta": "θ",
+    "ours": N_("this design"),
+    "allowed": N_("allowed [γ]"),
+    "phi": N_("crank angle φ from the frame line AD (°)"),
+    "phi_s": N_("crank angle φ from the guide direction (°)"),
+    "gamma": N_("transmission angle γ (°)"),
+    "rocker": N_("rocker angle (°)"),
+    "w4": N_(r"rocker $\omega_4$ (rad/s)"),
+    "a4": N_(r"rocker $\alpha_4$ (rad/s²)"),
+    "x": "x (mm)",
+    "y": "y (mm)",
+    "circle": N_("θ-circle"),
+    "arc": N_("allowed arc for A"),
+    "frame_arc": N_(r"arc about D of radius $l_4$"),
+    "textbook": N_("given-frame design A′"),
+    "limit": N_(r"$\theta = 0$ is a limit (A at infinity)"),
+    "alpha": N_("pressure angle α (°)"),
+    "slow": N_("slow (working) stroke"),
+    "fast": N_("fast (return) stroke"),
+    "guide": N_("slider guide"),
+    "optimum": N_("optimum"),
+})
 
 
 # ------------------------------------------------------------------------------ figures
@@ -287,15 +295,17 @@ def _name(label: str, lang: str) -> str:
 
 def _kind(grashof: str, lang: str) -> str:
     """The Grashof type of a four-bar in the report's words (曲柄摇杆机构, crank-rocker)."""
-    from .stages import _KINDS_ZH
+    from .stages import _kinds
 
-    return _KINDS_ZH.get(grashof, grashof) if lang == "zh" else grashof
+    kind = _kinds().get(grashof)
+    return grashof if kind is None else kind.text(lang)
 
 
 def _with_diff(value: str, diff: float, lang: str) -> str:
     """A simulated value to 4 decimals with its difference from the reference (the verdict
     needs |Δ| < 10⁻⁹, which 4 decimals cannot show)."""
-    return f"{value}（差 {fe(diff)}）" if lang == "zh" else f"{value} (Δ = {fe(diff)})"
+    _ = tr(lang)
+    return _("{value} (Δ = {diff})", value=value, diff=fe(diff))
 
 
 def _verdict(ok: bool, lang: str) -> str:
@@ -303,7 +313,7 @@ def _verdict(ok: bool, lang: str) -> str:
 
 
 def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
-    zh = lang == "zh"
+    _ = tr(lang)
     p = r["params"]
     opt = r["optimum"]
     cons = opt.construction
@@ -378,36 +388,24 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
         }
     # data table
     if given is not None:
-        sub = "（由尺寸导出）" if zh else " (derived)"
-        data_rows = [[s_, (n_zh if zh else n_en), v, u] for s_, n_zh, n_en, v, u in (
-            ("l1", "曲柄 AB（给定）", "crank AB (given)", given["l1"], "mm"),
-            ("l2", "连杆 BC（给定）", "coupler BC (given)", given["l2"], "mm"),
-            ("l3", "摇杆 CD（给定）", "rocker CD (given)", given["l3"], "mm"),
-            ("l4", "机架 AD（给定）", "frame AD (given)", given["l4"], "mm"),
-            ("θ", "极位夹角" + sub, "extreme-position angle" + sub, f(th_deg, 6), "°"),
-            ("K", "行程速比系数" + sub, "time ratio" + sub, f(p.K, 6), "—"),
-            ("ψ", "摇杆摆角" + sub, "rocker swing" + sub, _deg(p.swing, 6), "°"),
-            ("γmin", "最小传动角" + sub, "minimum transmission angle" + sub, given["gamma_min"], "°"),
-            ("[γ]", "许用最小传动角", "allowed minimum transmission angle", _deg(p.gamma_allowed, 0), "°"))]
-        if p.crank_speed_rpm is not None:
-            data_rows.append(["n1", "曲柄转速（仅用于运动线图）" if zh else "crank speed (motion curves only)",
-                              f(p.crank_speed_rpm, 1), "rpm"])
-    elif zh:
-        data_rows = [["K", "行程速比系数", f(p.K, 4), "—"], ["θ", "极位夹角", f(th_deg, 4), "°"],
-                     ["ψ", "摇杆摆角", _deg(p.swing, 2), "°"], ["l3", "摇杆长度 CD", _mm(p.rocker, 2), "mm"]]
-        if p.frame is not None:
-            data_rows.append(["l4", "给定机架长度 AD（教材作图法）", _mm(p.frame, 2), "mm"])
-        data_rows.append(["[γ]", "许用最小传动角", _deg(p.gamma_allowed, 0), "°"])
-        if p.crank_speed_rpm is not None:
-            data_rows.append(["n1", "曲柄转速（仅用于运动线图）", f(p.crank_speed_rpm, 1), "rpm"])
+        data_rows = [[s_, _(n), v, u] for s_, n, v, u in (
+            ("l1", N_("crank AB (given)"), given["l1"], "mm"),
+            ("l2", N_("coupler BC (given)"), given["l2"], "mm"),
+            ("l3", N_("rocker CD (given)"), given["l3"], "mm"),
+            ("l4", N_("frame AD (given)"), given["l4"], "mm"),
+            ("θ", N_("extreme-position angle (derived)"), f(th_deg, 6), "°"),
+            ("K", N_("time ratio (derived)"), f(p.K, 6), "—"),
+            ("ψ", N_("rocker swing (derived)"), _deg(p.swing, 6), "°"),
+            ("γmin", N_("minimum transmission angle (derived)"), given["gamma_min"], "°"),
+            ("[γ]", N_("allowed minimum transmission angle"), _deg(p.gamma_allowed, 0), "°"))]
     else:
-        data_rows = [["K", "time ratio", f(p.K, 4), "—"], ["θ", "extreme-position angle", f(th_deg, 4), "°"],
-                     ["ψ", "rocker swing", _deg(p.swing, 2), "°"], ["l3", "rocker CD", _mm(p.rocker, 2), "mm"]]
+        data_rows = [["K", _("time ratio"), f(p.K, 4), "—"], ["θ", _("extreme-position angle"), f(th_deg, 4), "°"],
+                     ["ψ", _("rocker swing"), _deg(p.swing, 2), "°"], ["l3", _.pgettext("given length", "rocker CD"), _mm(p.rocker, 2), "mm"]]
         if p.frame is not None:
-            data_rows.append(["l4", "given frame AD (textbook method)", _mm(p.frame, 2), "mm"])
-        data_rows.append(["[γ]", "allowed minimum transmission angle", _deg(p.gamma_allowed, 0), "°"])
-        if p.crank_speed_rpm is not None:
-            data_rows.append(["n1", "crank speed (motion curves only)", f(p.crank_speed_rpm, 1), "rpm"])
+            data_rows.append(["l4", _("given frame AD (textbook method)"), _mm(p.frame, 2), "mm"])
+        data_rows.append(["[γ]", _("allowed minimum transmission angle"), _deg(p.gamma_allowed, 0), "°"])
+    if p.crank_speed_rpm is not None:
+        data_rows.append(["n1", _("crank speed (motion curves only)"), f(p.crank_speed_rpm, 1), "rpm"])
     # comparison of designs: lengths and simulated θ, ψ, K, γmin
     designs = [best] + ([tb] if tb is not None else []) + list(r["compare"])
     cmp_rows = []
@@ -415,7 +413,7 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
         cmp_rows.append([md_text(_name(s.label, lang)), _mm(d.design.crank), _mm(d.design.coupler), _mm(d.design.rocker),
                          _mm(d.design.frame), _deg(s.theta, 4), _deg(s.swing, 4), f(s.K, 5),
                          _deg(s.gamma_min, 3)])
-    spec_row = ["设计要求" if zh else "specification", "", "", _mm(p.rocker, 4), "",
+    spec_row = [_("specification"), "", "", _mm(p.rocker, 4), "",
                 f(th_deg, 4), _deg(p.swing, 4), f(p.K, 5), ""]
     paper_notes = []
     missing = []
@@ -424,10 +422,8 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
         dg = (best.gamma_min - s.gamma_min) * DEG
         if abs(dth) > 1e-6 or abs(dpsi) > 1e-6:
             missing.append(md_text(_name(s.label, lang)))
-        paper_notes.append(
-            f"{md_text(_name(s.label, lang))}：θ 偏差 {f(dth, 3)}°，ψ 偏差 {f(dpsi, 3)}°，γmin 比最优设计低 {f(dg, 3)}°"
-            if zh else
-            f"{md_text(_name(s.label, lang))}: θ off by {f(dth, 3)}°, ψ off by {f(dpsi, 3)}°, γmin {f(dg, 3)}° below the optimum")
+        paper_notes.append(_("{name}: θ off by {dth}°, ψ off by {dpsi}°, γmin {dg}° below the optimum",
+                             name=md_text(_name(s.label, lang)), dth=f(dth, 3), dpsi=f(dpsi, 3), dg=f(dg, 3)))
     # verification rows: [item, result, reference, verdict]
     tol = 1e-9
     vrows = []
@@ -435,22 +431,21 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
         if d is not best and d is not tb:
             continue
         name = md_text(_name(s.label, lang))
-        for item_zh, item_en, val, ref, err in (
-                ("仿真 K", "simulated K", f(s.K, 4), f(p.K, 4), s.K - p.K),
-                ("仿真 θ /°", "simulated θ /°", _deg(s.theta, 4), f(th_deg, 4), s.theta - p.theta),
-                ("仿真 ψ /°", "simulated ψ /°", _deg(s.swing, 4), _deg(p.swing, 4), s.swing - p.swing),
-                ("仿真 γmin /°（参考：闭式解）", "simulated γmin /° (ref.: closed form)",
+        for item, val, ref, err in (
+                (N_("simulated K"), f(s.K, 4), f(p.K, 4), s.K - p.K),
+                (N_("simulated θ /°"), _deg(s.theta, 4), f(th_deg, 4), s.theta - p.theta),
+                (N_("simulated ψ /°"), _deg(s.swing, 4), _deg(p.swing, 4), s.swing - p.swing),
+                (N_("simulated γmin /° (ref.: closed form)"),
                  _deg(s.gamma_min, 4), _deg(d.gamma_min, 4), s.gamma_min - d.gamma_min)):
-            vrows.append([f"{name}：{item_zh}" if zh else f"{name}: {item_en}", _with_diff(val, err, lang), ref,
+            vrows.append([_("{name}: {item}", name=name, item=_(item)), _with_diff(val, err, lang), ref,
                           _verdict(abs(err) < tol, lang)])
-        vrows.append([f"{name}：封闭矢量方程残差 /m" if zh else f"{name}: loop-closure residual /m",
+        vrows.append([_("{name}: {item}", name=name, item=_("loop-closure residual /m")),
                       fe(s.closure), "0", _verdict(s.closure < 1e-12, lang)])
     n0, n1 = ver.optimum_neighbours
-    vrows.append(["γmin(t* ∓ 0.001·弧长) − γmin* /°" if zh else "γmin(t* ∓ 0.001·arc) − γmin* /°",
+    vrows.append([_("γmin(t* ∓ 0.001·arc) − γmin* /°"),
                   f"{fe((n0 - best.gamma_min) * DEG)}, {fe((n1 - best.gamma_min) * DEG)}", "< 0",
                   _verdict(n0 < best.gamma_min and n1 < best.gamma_min, lang)])
-    vrows.append(["20 万点密集扫描的最大 γmin − γmin* /°" if zh else
-                  "largest γmin of a 200 000-point scan − γmin* /°",
+    vrows.append([_("largest γmin of a 200 000-point scan − γmin* /°"),
                   fe((ver.optimum_scan - best.gamma_min) * DEG), "≤ 0",
                   _verdict(ver.optimum_scan <= best.gamma_min + 1e-12, lang)])
     slider = None
@@ -488,17 +483,18 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
                       rf" = {f(sl.K, 6)}"),
             "allowed": _deg(sl.alpha_allowed, 0),
         }
-        for item_zh, item_en, val, ref, err in (
-                ("仿真行程 H /mm", "simulated stroke H /mm", _mm(ss.stroke, 4), f(h_mm, 4),
+        slider_name = _.pgettext("verification item", "offset slider-crank")
+        for item, val, ref, err in (
+                (N_("simulated stroke H /mm"), _mm(ss.stroke, 4), f(h_mm, 4),
                  (ss.stroke - sl.stroke) / sl.stroke),
-                ("仿真 K", "simulated K", f(ss.K, 4), f(sl.K, 4), ss.K - sl.K),
-                ("仿真慢行程 αmax /°（参考：闭式解）", "simulated slow-stroke αmax /° (ref.: closed form)",
+                (N_("simulated K"), f(ss.K, 4), f(sl.K, 4), ss.K - sl.K),
+                (N_("simulated slow-stroke αmax /° (ref.: closed form)"),
                  _deg(ss.alpha_slow, 4), _deg(sl.alpha_slow, 4), ss.alpha_slow - sl.alpha_slow),
-                ("仿真快行程 αmax /°（参考：闭式解）", "simulated fast-stroke αmax /° (ref.: closed form)",
+                (N_("simulated fast-stroke αmax /° (ref.: closed form)"),
                  _deg(ss.alpha_fast, 4), _deg(sl.alpha_fast, 4), ss.alpha_fast - sl.alpha_fast)):
-            vrows.append([("偏置曲柄滑块：" if zh else "offset slider-crank: ") + (item_zh if zh else item_en),
+            vrows.append([_("{name}: {item}", name=slider_name, item=_(item)),
                           _with_diff(val, err, lang), ref, _verdict(abs(err) < tol, lang)])
-        vrows.append([("偏置曲柄滑块：封闭矢量方程残差 /m" if zh else "offset slider-crank: loop-closure residual /m"),
+        vrows.append([_("{name}: {item}", name=slider_name, item=_("loop-closure residual /m")),
                       fe(ss.closure), "0", _verdict(ss.closure < 1e-12, lang)])
     findings = []
     for key in ("optimum", "textbook", "slider"):
@@ -512,17 +508,16 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
     d1, d2 = (np.degrees(x) for x in (np.arccos(np.clip(c, -1, 1)) for c in _cosines(best.design)))
     g1, g2 = min(d1, 180 - d1), min(d2, 180 - d2)
     if abs(g1 - g2) < 1e-6:
-        where = ("两个共线位置的传动角相等（$\\gamma_{min}(t)$ 的最大值在两条曲线的交点，即折点处）。" if zh else
-                 "The transmission angles of both collinear positions are equal (the maximum of "
-                 "$\\gamma_{min}(t)$ is the kink where the two curves cross).")
+        where = _("The transmission angles of both collinear positions are equal (the maximum of "
+                  "$\\gamma_{min}(t)$ is the kink where the two curves cross).")
     else:
-        pos_zh = "重叠共线" if g1 < g2 else "拉直共线"
-        pos_en = "overlaps" if g1 < g2 else "extends"
-        where = (f"最小传动角出现在曲柄与机架{pos_zh}的位置（另一位置的传动角为 {f(max(g1, g2), 2)}°），"
-                 "$\\gamma_{min}(t)$ 在最优点是光滑的极大值，而不是两个共线位置传动角相等的折点。" if zh else
-                 f"The minimum occurs where the crank {pos_en} the frame (the other collinear position "
-                 f"has {f(max(g1, g2), 2)}°): $\\gamma_{{min}}(t)$ has a smooth maximum at the optimum, "
-                 "not the kink where the two collinear angles are equal.")
+        where = (_("The minimum occurs where the crank overlaps the frame (the other collinear position "
+                   "has {other}°): {gamma} has a smooth maximum at the optimum, not the kink where the "
+                   "two collinear angles are equal.", other=f(max(g1, g2), 2), gamma="$\\gamma_{min}(t)$")
+                 if g1 < g2 else
+                 _("The minimum occurs where the crank extends the frame (the other collinear position "
+                   "has {other}°): {gamma} has a smooth maximum at the optimum, not the kink where the "
+                   "two collinear angles are equal.", other=f(max(g1, g2), 2), gamma="$\\gamma_{min}(t)$"))
     return {
         "meta": md_meta(brief.report, lang), "fig": figures, "data_rows": data_rows, "eq": eq,
         "K": f(p.K, 4), "theta": f(th_deg, 4), "psi": _deg(p.swing, 2), "l3": _mm(p.rocker, 2),
@@ -535,10 +530,10 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
                 "far": None if far is None else _deg(far, 2), "where": where},
         "with_speed": p.crank_speed_rpm is not None,
         "textbook": textbook, "given": given,
-        "cmp_head": (["设计", "l1/mm", "l2/mm", "l3/mm", "l4/mm", "θ/°", "ψ/°", "K", "γmin/°"] if zh else
-                     ["design", "l1/mm", "l2/mm", "l3/mm", "l4/mm", "θ/°", "ψ/°", "K", "γmin/°"]),
+        "cmp_head": [_.pgettext("table head", "design"), "l1/mm", "l2/mm", "l3/mm", "l4/mm", "θ/°", "ψ/°", "K",
+                     "γmin/°"],
         "cmp_rows": cmp_rows + [spec_row], "cmp_align": "|".join([":--"] + ["--:"] * 8),
-        "paper_notes": paper_notes, "compare_miss": ("、" if zh else ", ").join(missing), "has_compare": bool(r["compare"]),
+        "paper_notes": paper_notes, "compare_miss": _.pgettext("list", ", ").join(missing), "has_compare": bool(r["compare"]),
         "chart": {"thetas": ", ".join(f"{t * DEG:g}°" for t in ch.thetas),
                   "from": f(ch.swings[0] * DEG, 0), "to": f(ch.swings[-1] * DEG, 0),
                   "n": str(len(ch.swings))},

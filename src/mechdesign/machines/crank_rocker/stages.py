@@ -19,7 +19,7 @@ from ...core.fields import q
 from ...i18n import N_
 from ...core.mechanism import RRP, RRR, Crank, Mechanism
 from ...pipeline import Stage
-from ...stages.findings import Finding
+from ...stages.findings import Finding, Pair, finding
 from ...stages.linkage import LinkageDocument
 
 DEG = 180.0 / np.pi
@@ -118,6 +118,14 @@ class VerifyResult:
 
 # ------------------------------------------------------------------------------- stages
 
+def _both(msgid: str, form: str = "{zh} / {en}") -> str:
+    """'最优设计 / optimum': a name as the stages and results hold it, both languages (the
+    Chinese of the run's catalogue)."""
+    from ...i18n import tr
+
+    return form.format(zh=tr("zh")(msgid), en=msgid)
+
+
 def _place(label: str, cons: fb.CircleConstruction, p: float, gamma_allowed: float) -> Design:
     design = fb.design_at(cons, p)
     return _describe(label, design, complex(cons.point(p)), p, gamma_allowed)
@@ -131,21 +139,17 @@ def _describe(label, design, a_pivot, p, gamma_allowed) -> Design:
     zh, en = label.split(" / ", 1) if " / " in label else (label, label)
     if not (ok and kind == "crank-rocker"):
         sums_en, sums_zh = fb.grashof_sums(design)
-        warnings.append(Finding(
-            "grashof", f"{zh}：杆长不满足曲柄存在条件（{kind}；{sums_zh}），曲柄不能整周转动；"
-            "应使最短杆为曲柄且最短杆 + 最长杆 ≤ 其余两杆之和。",
-            f"{en}: the lengths fail Grashof's crank condition ({kind}; {sums_en}); the crank "
-            "cannot turn fully: the crank must be the shortest link and shortest + longest ≤ the "
-            "other two."))
+        warnings.append(finding(
+            "grashof", N_("{label}: the lengths fail Grashof's crank condition ({kind}; {sums}); the crank "
+                          "cannot turn fully: the crank must be the shortest link and shortest + longest ≤ "
+                          "the other two."), label=Pair(zh, en), kind=kind, sums=Pair(sums_zh, sums_en)))
     if gmin < gamma_allowed:
-        warnings.append(Finding(
+        warnings.append(finding(
             "transmission_angle",
-            f"{zh}：最小传动角 γmin = {gmin * DEG:.2f}° 小于许用值 [γ] = {gamma_allowed * DEG:.0f}°；"
-            "减小摇杆摆角 ψ（rocker_swing_deg）或行程速比系数 K（time_ratio_K 或 extreme_angle_deg）"
-            "可提高 γmin（见设计线图）。",
-            f"{en}: the minimum transmission angle γmin = {gmin * DEG:.2f}° is below the allowed "
-            f"[γ] = {gamma_allowed * DEG:.0f}°; a smaller swing ψ (rocker_swing_deg) or time ratio "
-            "K (time_ratio_K or extreme_angle_deg) raises γmin (see the design chart)."))
+            N_("{label}: the minimum transmission angle γmin = {g:.2f}° is below the allowed "
+               "[γ] = {allowed:.0f}°; a smaller swing ψ (rocker_swing_deg) or time ratio "
+               "K (time_ratio_K or extreme_angle_deg) raises γmin (see the design chart)."),
+            label=Pair(zh, en), g=gmin * DEG, allowed=gamma_allowed * DEG))
     return Design(label, design, a_pivot, p, gmin, gmax, theta, swing, kind, warnings)
 
 
@@ -153,7 +157,7 @@ def optimum_stage(r: dict) -> OptimumResult:
     p = r["params"]
     cons = fb.circle_construction_theta(p.theta, p.swing, p.rocker)
     pos, _ = fb.optimal_position_theta(p.theta, p.swing, p.rocker)
-    best = _place("最优设计 / optimum", cons, pos, p.gamma_allowed)
+    best = _place(_both(N_("optimum")), cons, pos, p.gamma_allowed)
     try:
         far = fb.optimal_position_theta(p.theta, p.swing, p.rocker, side=-1)[1]
     except fb.SynthesisError:
@@ -165,7 +169,7 @@ def textbook_stage(r: dict) -> Design:
     p = r["params"]
     cons = r["optimum"].construction
     pos = fb.position_for_frame(cons, p.frame)
-    return _place("给定机架 / given frame", cons, pos, p.gamma_allowed)
+    return _place(_both(N_("given frame")), cons, pos, p.gamma_allowed)
 
 
 def given_stage(r: dict) -> Design:
@@ -185,7 +189,7 @@ def given_stage(r: dict) -> Design:
         pos = fb.position_for_frame(cons, d)
     except fb.SynthesisError:
         pos = None
-    return _describe("给定尺寸 / given dimensions", g, complex(pivot), pos, p.gamma_allowed)
+    return _describe(_both(N_("given dimensions")), g, complex(pivot), pos, p.gamma_allowed)
 
 
 def slider_stage(r: dict) -> SliderResult:
@@ -199,14 +203,12 @@ def slider_stage(r: dict) -> SliderResult:
     slow, fast = fb.slider_crank_pressure_angles(a, b, sp.offset)
     warnings = []
     if slow > allowed:
-        warnings.append(Finding(
+        warnings.append(finding(
             "pressure_angle",
-            f"偏置曲柄滑块机构：工作行程（慢行程）最大压力角 {slow * DEG:.2f}° 大于许用值 "
-            f"{allowed * DEG:.0f}°；改变偏距 e（slider_crank.offset_e_mm）或减小 K"
-            "（slider_crank.time_ratio_K）。",
-            f"offset slider-crank: the largest pressure angle of the working (slow) stroke, "
-            f"{slow * DEG:.2f}°, exceeds the allowed {allowed * DEG:.0f}°; change the offset e "
-            "(slider_crank.offset_e_mm) or reduce K (slider_crank.time_ratio_K)."))
+            N_("offset slider-crank: the largest pressure angle of the working (slow) stroke, "
+               "{slow:.2f}°, exceeds the allowed {allowed:.0f}°; change the offset e "
+               "(slider_crank.offset_e_mm) or reduce K (slider_crank.time_ratio_K)."),
+            slow=slow * DEG, allowed=allowed * DEG))
     return SliderResult(cons, a, b, sp.offset, sp.stroke, sp.K, sp.theta, slow, fast, allowed,
                         warnings)
 
@@ -287,10 +289,8 @@ def simulate_four_bar(label: str, design: fb.FourBar, a_pivot: complex, branch: 
         return float(mech.solve(np.array([x])).links["4"].omega[0])
     roots = _refine_roots(w_at, phi, w4)
     if len(roots) != 2:
-        raise fb.SynthesisError(f"{label}: the simulated rocker has {len(roots)} extreme positions "
-                                "per revolution, not 2: it is not a crank-rocker",
-                                f"{label}：仿真得到摇杆每转有 {len(roots)} 个极位而不是 2 个："
-                                "它不是曲柄摇杆机构")
+        raise fb.SynthesisError(N_("{label}: the simulated rocker has {n} extreme positions "
+                                   "per revolution, not 2: it is not a crank-rocker"), label=label, n=len(roots))
     ends = mech.solve(np.array(roots))
     ang = rel(ends.links["4"].angle)
     i_max = int(np.argmax(ang))
@@ -331,8 +331,7 @@ def simulate_slider(res: SliderResult, omega: float, n: int) -> SliderSimulation
         return float(mech.solve(np.array([x])).slides["4"].ds[0])
     roots = _refine_roots(ds_at, phi, ds)
     if len(roots) != 2:
-        raise fb.SynthesisError(f"the simulated slider has {len(roots)} dead centres, not 2",
-                                f"仿真得到滑块有 {len(roots)} 个死点而不是 2 个")
+        raise fb.SynthesisError(N_("the simulated slider has {n} dead centres, not 2"), n=len(roots))
     ends = mech.solve(np.array(roots)).slides["4"].s
     i_max = int(np.argmax(ends))
     phi_max, phi_min = roots[i_max], roots[1 - i_max]
@@ -409,9 +408,16 @@ def compared_designs(r: dict) -> list[Design]:
             for cd in p.compare]
 
 
-_KINDS_ZH = {"crank-rocker": "曲柄摇杆机构", "double-crank": "双曲柄机构",
-             "double-rocker": "双摇杆机构", "triple-rocker": "三摇杆机构",
-             "change-point": "变点机构", "rocker-crank": "摇杆为最短杆的曲柄机构"}
+def _kinds() -> dict:
+    """Grashof's kinds of four-bar by name (fb.grashof), as messages."""
+    from ...brief.common import Msg
+
+    return {"crank-rocker": Msg.pgettext("linkage kind", "crank-rocker"),
+            "double-crank": Msg.pgettext("linkage kind", "double-crank"),
+            "double-rocker": Msg.pgettext("linkage kind", "double-rocker"),
+            "triple-rocker": Msg.pgettext("linkage kind", "triple-rocker"),
+            "change-point": Msg.pgettext("linkage kind", "change-point"),
+            "rocker-crank": Msg.pgettext("linkage kind", "rocker-crank")}
 
 
 def checks(p, keep: dict | None = None) -> list:
@@ -420,13 +426,14 @@ def checks(p, keep: dict | None = None) -> list:
     slider-crank a real solution, is every compared design a crank-rocker? Every problem as
     a :class:`~mechdesign.brief.loader.BriefProblem` at its brief field (the runner fills in
     the value)."""
+    from ...brief.common import Given, Msg
     from ...brief.loader import BriefProblem
 
     out = []
 
     def problem(path: str, name: str, value: float, exc: fb.SynthesisError) -> None:
-        out.append(BriefProblem(path, "", f"{name} = {value:g}: {exc.en}",
-                                f"{name} = {value:g}：{exc.zh}"))
+        out.append(BriefProblem(path, "", Msg(N_("{name} = {value:g}: {error}"), name=name, value=value,
+                                              error=Given(exc.en, exc.zh))))
 
     try:
         cons = fb.circle_construction_theta(p.theta, p.swing, p.rocker)
@@ -456,10 +463,9 @@ def checks(p, keep: dict | None = None) -> list:
             name = kind.split(" (", 1)[0]
             out.append(BriefProblem(
                 f"compare.{i}", "",
-                f"compare.{i} ({cd.label}): the lengths make a {kind}, not a crank-rocker; only "
-                "crank-rockers can be compared",
-                f"compare.{i}（{cd.label}）：杆长构成{_KINDS_ZH.get(name, name)}"
-                f"（{kind}），不是曲柄摇杆机构；只能比较曲柄摇杆机构"))
+                Msg(N_("compare.{i} ({label}): the lengths make a {kind}, not a crank-rocker; only "
+                       "crank-rockers can be compared"), i=i, label=cd.label, kind=kind,
+                    kind_name=_kinds().get(name, name))))
     return out
 
 
@@ -498,24 +504,20 @@ def linkage_model(r: dict):
 
 
 def stages(params) -> list[Stage]:
-    out = [Stage("optimum", "最小传动角最大的曲柄摇杆机构 / crank-rocker with the best transmission angle",
-                 optimum_stage)]
+    out = [Stage("optimum", _both(N_("crank-rocker with the best transmission angle")), optimum_stage)]
     if params.given is not None:
-        out.append(Stage("textbook", "给定尺寸 → 导出值 / given dimensions → derived values",
-                         given_stage))
+        out.append(Stage("textbook", _both(N_("given dimensions → derived values")), given_stage))
     elif params.frame is not None:
-        out.append(Stage("textbook", "按 K 设计曲柄摇杆机构（给定机架）/ design from K with the given frame",
+        out.append(Stage("textbook", _both(N_("design from K with the given frame"), "{zh}/ {en}"),
                          textbook_stage))
     if params.slider is not None:
-        out.append(Stage("slider", "偏置曲柄滑块机构设计 / offset slider-crank", slider_stage))
-    out.append(Stage("chart", "设计线图 / design chart", chart_stage))
-    out.append(Stage("compare", "对比设计 / designs to compare", compared_designs))
-    out.append(Stage("verify", "仿真校核 / verification by simulation", verify_stage))
-    from ...i18n import tr
+        out.append(Stage("slider", _both(N_("offset slider-crank")), slider_stage))
+    out.append(Stage("chart", _both(N_("design chart")), chart_stage))
+    out.append(Stage("compare", _both(N_("designs to compare")), compared_designs))
+    out.append(Stage("verify", _both(N_("verification by simulation")), verify_stage))
     from ...stages.linkage import linkage_stages
 
-    out.append(Stage("linkage_model", f"{tr('zh')(_MODEL_TITLE)} / {_MODEL_TITLE}",
-                     linkage_model))
+    out.append(Stage("linkage_model", _both(_MODEL_TITLE), linkage_model))
     # no loads in the brief: no kinetostatics (the forces stage gives None, as the engine's
     # verification, polygons and graphical stages accept)
     out += [Stage(s.key, s.title, _no_forces) if s.key == "linkage_forces" else s

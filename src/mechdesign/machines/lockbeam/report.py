@@ -477,7 +477,7 @@ def _cam_motion_text(c, lang: str) -> str:
             laws.append(seg.law)
     impacts = {s.impact for s in c.segments if s.kind != "dwell"}
     sep = _.pgettext("list", ", ")
-    lw = sep.join(LAWS[x].name_zh if _.zh else LAWS[x].name_en for x in laws)
+    lw = sep.join(LAWS[x].name(_.lang) for x in laws)
     calm = impacts <= {"none"}
     return (sep.join(parts) + _(", with the {law} law", law=lw)
             + (_(" (zero velocity and acceleration at both ends: no impact)") if calm else ""))
@@ -494,7 +494,7 @@ def law_choice(c, lang: str) -> str:
         if seg.law and seg.law not in laws:
             laws.append(seg.law)
     impacts = {s.impact for s in c.segments if s.kind != "dwell"}
-    names = _.pgettext("list", ", ").join(LAWS[x].name_zh if _.zh else LAWS[x].name_en for x in laws)
+    names = _.pgettext("list", ", ").join(LAWS[x].name(_.lang) for x in laws)
     ca = max(LAWS[x].ca for x in laws)
     cyc = LAWS["cycloidal"].ca
     if impacts <= {"none"}:
