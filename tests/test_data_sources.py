@@ -150,7 +150,7 @@ def test_data_assumptions_name_exactly_the_unconfirmed_entries_used():
     from mechdesign.stages.drive import data_assumptions
 
     def key(allow):
-        return NS(check=s.check("key_crushing", "k", "k", "s", 10e6, allow, "MPa"))
+        return NS(check=s.check("key_crushing", "k", "s", 10e6, allow, "MPa"))
 
     belt_chart = NS(design=NS(kind="belt", geometry=NS(section_given=False), materials=()))
     belt_given = NS(design=NS(kind="belt", geometry=NS(section_given=True), materials=()))
