@@ -159,9 +159,11 @@ class Progress:
     finished run otherwise (CI logs), ``[i/n] status run-id (s)`` and the first lines of a
     failure's message indented."""
 
-    def __init__(self, total: int, stream=None, tty: bool | None = None):
+    def __init__(self, total: int, stream=None, tty: bool | None = None, lang: str = "en"):
         from .console import Terminal
+        from .i18n import tr
 
+        self._ = tr(lang)
         self.total, self.done, self.failed = total, 0, 0
         self.terminal = Terminal(stream, rich=tty)
         self.stream = self.terminal.stream
@@ -184,7 +186,11 @@ class Progress:
         ok = result["status"] == "ok"
         self.failed += not ok
         secs = result.get("seconds") or 0.0
-        line = f"{'ok    ' if ok else result['status']:6s} {job.run_id} ({secs:.1f} s)"
+        _ = self._
+        word = {"ok": _.pgettext("batch terminal", "ok"),
+                "invalid": _.pgettext("batch terminal", "invalid"),
+                "failed": _.pgettext("batch terminal", "failed")}.get(result["status"], result["status"])
+        line = f"{word:{6 if word.isascii() else 3}s} {job.run_id} ({secs:.1f} s)"
         first = [] if ok else (result.get("message") or "").strip().splitlines()[:6]
         if self._live is not None:
             if not ok:
@@ -194,7 +200,8 @@ class Progress:
                 for text in first:
                     self._live.console.print(Text(f"    {text}"))
             self._live.update(self._task, completed=self.done,
-                              status=f"{self.failed} failed  last: {job.run_id}")
+                              status=_("{failed} failed  last: {run}", failed=self.failed,
+                                       run=job.run_id))
             self._live.refresh()
             if self.done >= self.total:
                 self.close()

@@ -412,6 +412,7 @@ def batch(
     exit 0 when every run succeeded, 2 when a brief was invalid (or its design
     infeasible), 1 when a report failed otherwise."""
     from .allocator import prefer_heap
+    from .i18n import tr
     from .batch import (BatchError, Progress, answers_document, collect_briefs, default_jobs,
                         exit_code, index_document, parse_shard, plan_jobs, run_batch, shard,
                         write_answers, write_index)
@@ -428,31 +429,36 @@ def batch(
         raise typer.Exit(EXIT_INVALID)
     selected = shard(planned, which)
     n_jobs = jobs or default_jobs()
-    where = f" (shard {which[0]}/{which[1]} of {len(planned)})" if which else ""
-    _info(f"{len(selected)} run{'s' if len(selected) != 1 else ''}{where}, "
-          f"{min(n_jobs, max(len(selected), 1))} at a time → {out}/")
-    progress = Progress(len(selected), sys.stderr)
+    index_lang = _index_lang(lang, selected)
+    _ = tr(index_lang)
+    where = _(" (shard {i}/{n} of {total})", i=which[0], n=which[1],
+              total=len(planned)) if which else ""
+    fields = dict(n=len(selected), where=where, k=min(n_jobs, max(len(selected), 1)), out=out)
+    if len(selected) == 1:
+        _info(_("{n} run{where}, {k} at a time → {out}/", **fields))
+    else:
+        _info(_("{n} runs{where}, {k} at a time → {out}/", **fields))
+    progress = Progress(len(selected), sys.stderr, lang=index_lang)
     start = time.perf_counter()
     try:
         results = run_batch(selected, out, jobs_n=n_jobs, lang=lang.value if lang else None,
                             formats=fmt, templates=templates, on_result=progress.update)
     except KeyboardInterrupt:
         progress.close()
-        _err("\ninterrupted: finished reports are in place; unfinished ones were not written")
+        _err(_("\ninterrupted: finished reports are in place; unfinished ones were not written"))
         raise typer.Exit(130)
     finally:
         progress.close()
     doc = index_document(selected, results, out, which)
     stem = "index" if which is None else f"index.shard-{which[0]}-of-{which[1]}"
-    index_lang = _index_lang(lang, selected)
     written = write_index(doc, out, index_lang, stem)
     if answers:
         written += write_answers(answers_document(doc), out, index_lang,
                                  "answers" if which is None else
                                  f"answers.shard-{which[0]}-of-{which[1]}")
     t = doc["totals"]
-    summary = (f"{t['ok']} ok, {t['invalid']} invalid, {t['failed']} failed in "
-               f"{time.perf_counter() - start:.1f} s")
+    summary = _("{ok} ok, {invalid} invalid, {failed} failed in {seconds:.1f} s", ok=t["ok"],
+                invalid=t["invalid"], failed=t["failed"], seconds=time.perf_counter() - start)
     (_terminal().success if t["ok"] == t["runs"] else _err)(summary)
     for path in written:
         typer.echo(str(path))
