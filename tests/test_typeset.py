@@ -255,14 +255,6 @@ def display_widths(docx) -> list[tuple[float, str]]:
 
 BRIEFS = sorted(p.stem for p in (ROOT / "designs").glob("*.yaml"))
 
-# Pages the figure rule of templates/report.typ does not yet fill (a figure taller than
-# twice the room left, or a layout typst does not settle in its iterations): slotter zh
-# p.22 (47 %, the cam profile figure); since the graphical section was made compact (issue
-# 19), shaper zh p.21 (46 %) and die-cutter en p.36 (39 %), the cam's s-v-a-j figure. Listed
-# so the check guards every other report; to be fixed, not kept.
-HALF_EMPTY_LEFT = {("slotter", "zh"), ("shaper", "zh"), ("die_cutter", "en")}
-
-
 @pytest.mark.e2e
 @pytest.mark.parametrize("lang", ["zh", "en"])
 @pytest.mark.parametrize("brief", BRIEFS)
@@ -282,10 +274,7 @@ def test_every_report_stays_in_the_text_block(brief, lang, tmp_path):
     assert outside_text_block(pdf) == []
     assert numbers_over_words(pdf) == []
     # no page more than half empty where no chapter ends (issue 19, point 2)
-    half = half_empty_pages(pdf)
-    if half and (brief, lang) in HALF_EMPTY_LEFT:
-        pytest.xfail(f"known: a tall figure still floats past a half page: {half}")
-    assert half == []
+    assert half_empty_pages(pdf) == []
 
 
 # ---- Word: table of contents, running header, page numbers, author ------------------------
