@@ -69,15 +69,16 @@ def _area(s: Sheet) -> tuple[float, float, float, float]:
 
 
 def _fit(s: Sheet, pts_mm: np.ndarray, area, pad_paper: float = 18.0):
-    """(view, n) drawing the model points ``pts_mm`` [mm] at the largest GB reduction 1:n
-    that fits ``area`` less ``pad_paper`` on every side, centred."""
+    """(view, n) drawing the model points ``pts_mm`` [mm] at the GB scale that fits
+    ``area`` less ``pad_paper`` on every side, centred: the largest reduction 1:n, or for a
+    small model the largest enlargement m:1 (n = 1/m, see sheet.length_scale)."""
     pts = np.asarray(pts_mm, dtype=complex)
     lo = complex(pts.real.min(), pts.imag.min())
     hi = complex(pts.real.max(), pts.imag.max())
     ax0, ay0, ax1, ay1 = area
     box = complex(ax1 - ax0 - 2 * pad_paper, ay1 - ay0 - 2 * pad_paper)
     ext = complex(max(hi.real - lo.real, 1e-6), max(hi.imag - lo.imag, 1e-6))
-    n = length_scale(ext, box)
+    n = length_scale(ext, box, enlarge=True)
     sc = 1.0 / n
     centre = (lo + hi) / 2
     return s.view(complex((ax0 + ax1) / 2, (ay0 + ay1) / 2) - sc * centre, sc), n
@@ -522,24 +523,37 @@ def crank_rocker_diagram(opt, slider, info: TitleInfo, lang: str) -> Sheet:
     lab = LABELS[lang]
     fb = opt.best.design
     four = {k: v * MM for k, v in crank_rocker_points(fb.crank, fb.coupler, fb.rocker, fb.frame).items()}
-    shift = 0j
-    pts = list(four.values()) + list(fb.crank * MM * np.exp(1j * np.linspace(0, 2 * np.pi, 13)))
+    pts4 = list(four.values()) + list(fb.crank * MM * np.exp(1j * np.linspace(0, 2 * np.pi, 13)))
     sc_pts = {}
     if slider is not None:
         raw = slider_crank_points(slider.crank, slider.rod, slider.offset)
-        span4 = max(p.real for p in pts) - min(p.real for p in pts)
-        shift = complex(max(p.real for p in pts) + 0.35 * span4 + slider.crank * MM, 0)
-        sc_pts = {k: v * MM + shift for k, v in raw.items()}
-        pts += list(sc_pts.values()) + [shift + slider.crank * MM * np.exp(1j * t) for t in np.linspace(0, 2 * np.pi, 13)]
-        pts += [sc_pts["C"] - slider.stroke * MM - 10.0, sc_pts["C"] + 15.0]
+        sc_pts = {k: v * MM for k, v in raw.items()}
+        pts_s = list(sc_pts.values()) + [slider.crank * MM * np.exp(1j * t) for t in np.linspace(0, 2 * np.pi, 13)]
+        pts_s += [sc_pts["C"] - slider.stroke * MM - 10.0, sc_pts["C"] + 15.0]
     s = Sheet(SIZE)
     area = _area(s)
-    view, n = _fit(s, np.array(pts), area)
-    frame(s, replace(info, scale=scale_text(n)))
+    if sc_pts:
+        # two views side by side, each at its own GB scale (the ~70 mm four-bar enlarged,
+        # the longer slider-crank as it fits): the split of the width that gives the
+        # largest product of the two scales
+        ax0, ay0, ax1, ay1 = area
+        best = None
+        for k in range(30, 71):
+            xm = ax0 + (ax1 - ax0) * k / 100.0
+            v4, n4 = _fit(s, np.array(pts4), (ax0, ay0, xm, ay1), pad_paper=14.0)
+            vs, ns = _fit(s, np.array(pts_s), (xm, ay0, ax1, ay1), pad_paper=14.0)
+            if best is None or 1.0 / (n4 * ns) > best[0] * (1 + 1e-9):
+                best = (1.0 / (n4 * ns), (v4, n4), (vs, ns))
+        views = [best[1], best[2]]
+    else:
+        views = [_fit(s, np.array(pts4), area)]
+    scales = list(dict.fromkeys(scale_text(n) for _, n in views))
+    frame(s, replace(info, scale=", ".join(scales)))
     placer = LabelPlacer(s)
     tb = title_block_box(s)
     placer.block_box((tb[0] - 2, tb[1], tb[2], tb[3] + 2))
-    _title(s, f"{lab['diagram']}  {scale_text(n)}", area)
+    _title(s, f"{lab['diagram']}  {', '.join(scales)}", area)
+    view = views[0][0]
 
     def mechanism(P, sliding: bool, caption: str, crank_len: float):
         links = [("1", P["A"], P["B"]), ("2", P["B"], P["C"])]
@@ -582,10 +596,13 @@ def crank_rocker_diagram(opt, slider, info: TitleInfo, lang: str) -> Sheet:
         placer.text(complex(cx, max(low, area[1] - 4.0)), caption, fit_height(caption, 180.0, 3.5),
                     "center", "top")
 
-    mechanism(four, False, lab["crank_rocker"], fb.crank * MM)
+    mechanism(four, False, f"{lab['crank_rocker']}  {scale_text(views[0][1])}", fb.crank * MM)
+    scale_notes = "ABCD: " + _scale_note(lab, views[0][1])
     if sc_pts:
-        mechanism(sc_pts, True, lab["slider_crank"], slider.crank * MM)
-    notes = [_scale_note(lab, n),
+        view = views[1][0]
+        mechanism(sc_pts, True, f"{lab['slider_crank']}  {scale_text(views[1][1])}", slider.crank * MM)
+        scale_notes += ";  ABC: " + _scale_note(lab, views[1][1])
+    notes = [scale_notes,
              f"ABCD: a = {format_number(fb.crank * MM)}  b = {format_number(fb.coupler * MM)}  "
              f"c = {format_number(fb.rocker * MM)}  d = {format_number(fb.frame * MM)} mm"]
     if slider is not None:
