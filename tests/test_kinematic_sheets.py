@@ -96,9 +96,9 @@ def test_lockbeam_diagram_draws_the_whole_machine_at_phi_0(example_results):
       so the roller centre is r0 + h = 40 + 10 = 50 mm straight above the cam centre;
     - bending cam keyed at 18°: δ = 342° is 12° into the 30° 3-4-5 return, t = 0.4, so
       ψ = Ψ (1 − (10t³ − 15t⁴ + 6t⁵)) with Ψ = 24.398°; the roller centre C is 35 mm from
-      the pivot A0 and √(80² + 35² − 2·80·35 cos(φ0 + ψ)) from the cam centre;
-    - the four-bar: A0B0 = 200 along the cam–pivot line, A = A0 + a e^{±i(α1 + ψ)} (mirrored
-      or not), B where the circles (A, b) and (B0, 40) meet;
+      the pivot G0 and √(80² + 35² − 2·80·35 cos(φ0 + ψ)) from the cam centre;
+    - the four-bar: G0B0 = 200 along the cam–pivot line, G = G0 + a e^{±i(α1 + ψ)} (mirrored
+      or not), B where the circles (G, b) and (B0, 40) meet;
     - the chain wheels: pitch circles Ø144 about B0 and Ø40."""
     import math
 
@@ -329,6 +329,27 @@ def test_lockbeam_diagram_gives_the_cam_roller_its_own_letter(example_results):
     sheet = _sheets(r)["kinematic"]
     texts = [getattr(e, "text", None) for e in sheet.entities]
     assert texts.count("B") == 1 and texts.count("F") == 1
+
+
+def test_lockbeam_diagram_gives_every_point_its_own_letter(example_results):
+    """Issue 19: every point letter on the lock-beam diagram is written once; the feed
+    crank's pin is A (the brief's feed_linkage.crank.tip) and the bending four-bar is
+    G0 G B B0, as the report's bending section names it (not a second A); the main shaft O2
+    carries the feed crank and both cams and is named O2 wherever it is drawn."""
+    import re
+
+    brief = yaml.safe_load((ROOT / "designs" / "lockbeam.yaml").read_text(encoding="utf-8"))
+    assert brief["feed_linkage"]["crank"]["tip"] == "A"
+    r = example_results("lockbeam")
+    sheet = _sheets(r)["kinematic"]
+    letters = [e.text for e in sheet.entities if isinstance(e, Text)
+               and re.fullmatch(r"[A-Z][0-9]?", e.text) and e.text != "A3"]   # A3: the sheet size
+    # O2 is the one main shaft, drawn under each of the three groups it drives
+    assert letters.count("O2") == 3
+    others = [t for t in letters if t != "O2"]
+    assert len(others) == len(set(others)), sorted(letters)
+    assert {"A", "G0", "G", "B", "B0", "C", "F"} <= set(letters)
+    assert "A0" not in letters
 
 
 # GB/T 14690: reductions 1:1.5, 1:2, 1:2.5, 1:3, 1:4, 1:5, 1:6 (×10ⁿ); enlargements 2:1, 5:1

@@ -370,8 +370,8 @@ def lockbeam_layout(results, found, phi: float = 0.0) -> dict:
     turn = np.angle((fp[hi] - fol.pivot_distance) / (fp[lo] - fol.pivot_distance))
     mirror = turn < 0
     m = bending.mechanism.solve(np.array([ds.alpha1 + psi]))
-    raw = {"A": complex(m.points["A"].pos[0]), "B": complex(m.points["B"].pos[0]),
-           "A0": 0j, "B0": complex(ds.frame, 0.0)}
+    raw = {"G": complex(m.points["G"].pos[0]), "B": complex(m.points["B"].pos[0]),
+           "G0": 0j, "B0": complex(ds.frame, 0.0)}
     four = {k: A0 + (np.conj(v) if mirror else v) * MM for k, v in raw.items()}
     r_big = p.bending.driving_wheel / 2 * MM
     r_small = p.bending.bending_wheel / 2 * MM
@@ -447,17 +447,17 @@ def lockbeam_diagram(results, found, info: TitleInfo, lang: str) -> Sheet:
         placer.block(view.p(complex(z)), 0.6)
     _omega_arrow(s, view, o, float(np.max(np.abs(bd["profile"] - o))), bd["sigma"] > 0, placer, lab)
     view.circle(bd["C"], bd["rr"], "OUTLINE")
-    lever = [f["A0"], bd["C"], f["A"], f["A0"]]
+    lever = [f["G0"], bd["C"], f["G"], f["G0"]]
     view.polyline(np.array(lever), "OUTLINE")
     for a, b in zip(lever[:-1], lever[1:]):
         placer.block_segment(view.p(a), view.p(b), 1.5)
-    for a, b in ((f["A"], f["B"]), (f["B0"], f["B"])):
+    for a, b in ((f["G"], f["B"]), (f["B0"], f["B"])):
         view.line(a, b, "OUTLINE")
         placer.block_segment(view.p(a), view.p(b), 1.5)
-    for z in (f["A0"], f["B0"]):
+    for z in (f["G0"], f["B0"]):
         ground(view, z, 7.0)
         placer.block(view.p(z) - 3.5j, 5.0)
-    for z in (bd["C"], f["A"], f["B"]):
+    for z in (bd["C"], f["G"], f["B"]):
         pin(view, z)
         placer.block(view.p(z), 1.5)
     # chain: the large wheel on B0 (one link with the arm B0B), the bending wheel and its arm
@@ -474,12 +474,13 @@ def lockbeam_diagram(results, found, info: TitleInfo, lang: str) -> Sheet:
     pin(view, bd["arm"])
     placer.block(view.p(bd["small"]) - 3.5j, 5.0)
     placer.block_segment(view.p(bd["small"]), view.p(bd["arm"]), 1.5)
-    for name, z, d in (("O2", o, -1 - 1j), ("C", bd["C"], -1j), ("A0", f["A0"], -1 + 1j), ("A", f["A"], 1),
+    # the four-bar as the report names it: G0 G B B0 (A is the feed crank's pin)
+    for name, z, d in (("O2", o, -1 - 1j), ("C", bd["C"], -1j), ("G0", f["G0"], -1 + 1j), ("G", f["G"], 1),
                        ("B", f["B"], 1j), ("B0", f["B0"], 1 - 1j), ("E0", bd["small"], 1 - 1j)):
         placer.place(view.p(z), name, 3.5, prefer=d, gap=2.5)
     k = bd["profile"][len(bd["profile"]) // 2]
     placer.place(view.p(k), "2", 3.5, prefer=k - o, gap=2.5)
-    for num, a, b in (("8", f["A0"], f["A"]), ("9", f["A"], f["B"])):
+    for num, a, b in (("8", f["G0"], f["G"]), ("9", f["G"], f["B"])):
         d = (b - a) / abs(b - a)
         placer.place(view.p((a + b) / 2), num, 3.5, prefer=1j * d, gap=2.0)
     placer.place(view.p(f["B0"] + bd["r_big"] * np.exp(-0.25j * np.pi)), "10", 3.5, prefer=1 - 1j, gap=2.0)
