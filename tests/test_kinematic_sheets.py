@@ -36,8 +36,18 @@ def _near(points, z, tol=1e-6):
 
 
 def _scale(sheet) -> float:
-    """n of the title block's 1:n."""
-    return float(sheet.info.scale.split(":")[1])
+    """Model mm per paper mm of the title block's scale: n of a reduction 1:n, 1/m of an
+    enlargement m:1."""
+    return _scales(sheet)[0]
+
+
+def _scales(sheet) -> list[float]:
+    """The same for every view's scale in the title block ("2:1, 1:1.5")."""
+    out = []
+    for text in sheet.info.scale.split(","):
+        left, right = (float(x) for x in text.split(":"))
+        out.append(right / left)
+    return out
 
 
 def test_shaper_pins_at_the_briefs_position_from_the_lengths(example_results):
@@ -86,9 +96,9 @@ def test_lockbeam_diagram_draws_the_whole_machine_at_phi_0(example_results):
       so the roller centre is r0 + h = 40 + 10 = 50 mm straight above the cam centre;
     - bending cam keyed at 18°: δ = 342° is 12° into the 30° 3-4-5 return, t = 0.4, so
       ψ = Ψ (1 − (10t³ − 15t⁴ + 6t⁵)) with Ψ = 24.398°; the roller centre C is 35 mm from
-      the pivot A0 and √(80² + 35² − 2·80·35 cos(φ0 + ψ)) from the cam centre;
-    - the four-bar: A0B0 = 200 along the cam–pivot line, A = A0 + a e^{±i(α1 + ψ)} (mirrored
-      or not), B where the circles (A, b) and (B0, 40) meet;
+      the pivot G0 and √(80² + 35² − 2·80·35 cos(φ0 + ψ)) from the cam centre;
+    - the four-bar: G0B0 = 200 along the cam–pivot line, G = G0 + a e^{±i(α1 + ψ)} (mirrored
+      or not), B where the circles (G, b) and (B0, 40) meet;
     - the chain wheels: pitch circles Ø144 about B0 and Ø40."""
     import math
 
@@ -161,7 +171,7 @@ def test_crank_rocker_joints_at_the_first_extreme(example_results):
     fb = r["optimum"].best.design
     a, b, c, d = (x * 1e3 for x in (fb.crank, fb.coupler, fb.rocker, fb.frame))
     s = _sheets(r)["kinematic"]
-    n = _scale(s)
+    n, n_slider = _scales(s)                         # each view at its own scale
     ground = _circles(s, 0.22 * 7.0)
     A = min(ground, key=lambda z: z.real)            # the four-bar is drawn left
     D = A + d / n
@@ -176,7 +186,7 @@ def test_crank_rocker_joints_at_the_first_extreme(example_results):
     C = complex(np.sqrt((a2 + b2) ** 2 - e ** 2), -e)
     A2 = [g for g in ground if abs(g - A) > 1e-6 and abs(g - D) > 1e-6]
     assert len(A2) == 1
-    assert _near(pins, A2[0] + C / n) and _near(pins, A2[0] + a2 * C / abs(C) / n)
+    assert _near(pins, A2[0] + C / n_slider) and _near(pins, A2[0] + a2 * C / abs(C) / n_slider)
 
 
 def test_cycle_sheet_boundaries_are_the_brief_phases(example_results):
@@ -319,3 +329,60 @@ def test_lockbeam_diagram_gives_the_cam_roller_its_own_letter(example_results):
     sheet = _sheets(r)["kinematic"]
     texts = [getattr(e, "text", None) for e in sheet.entities]
     assert texts.count("B") == 1 and texts.count("F") == 1
+
+
+def test_lockbeam_diagram_gives_every_point_its_own_letter(example_results):
+    """Issue 19: every point letter on the lock-beam diagram is written once; the feed
+    crank's pin is A (the brief's feed_linkage.crank.tip) and the bending four-bar is
+    G0 G B B0, as the report's bending section names it (not a second A); the main shaft O2
+    carries the feed crank and both cams and is named O2 wherever it is drawn."""
+    import re
+
+    brief = yaml.safe_load((ROOT / "designs" / "lockbeam.yaml").read_text(encoding="utf-8"))
+    assert brief["feed_linkage"]["crank"]["tip"] == "A"
+    r = example_results("lockbeam")
+    sheet = _sheets(r)["kinematic"]
+    letters = [e.text for e in sheet.entities if isinstance(e, Text)
+               and re.fullmatch(r"[A-Z][0-9]?", e.text) and e.text != "A3"]   # A3: the sheet size
+    # O2 is the one main shaft, drawn under each of the three groups it drives
+    assert letters.count("O2") == 3
+    others = [t for t in letters if t != "O2"]
+    assert len(others) == len(set(others)), sorted(letters)
+    assert {"A", "G0", "G", "B", "B0", "C", "F"} <= set(letters)
+    assert "A0" not in letters
+
+
+# GB/T 14690: reductions 1:1.5, 1:2, 1:2.5, 1:3, 1:4, 1:5, 1:6 (×10ⁿ); enlargements 2:1, 5:1
+# (preferred), 2.5:1, 4:1 (allowed), 10:1 (×10ⁿ). The largest scale whose drawing fits.
+@pytest.mark.parametrize("extent,box,enlarge,want", [
+    (70 + 40j, 300 + 200j, True, "4:1"),        # 70·4 = 280 ≤ 300, 70·5 = 350 > 300
+    (140 + 40j, 300 + 200j, True, "2:1"),       # 280 fits, 2.5·140 = 350 does not
+    (110 + 40j, 300 + 200j, True, "2.5:1"),     # 275 fits, 4·110 = 440 does not
+    (28 + 10j, 300 + 200j, True, "10:1"),       # 280 fits, 20·28 = 560 does not
+    (5 + 5j, 300 + 200j, True, "40:1"),         # 40·5 = 200 fits the height, 50·5 = 250 not
+    (200 + 40j, 300 + 200j, True, "1:1"),       # 2·200 = 400 > 300: no enlargement fits
+    (70 + 40j, 300 + 200j, False, "1:1"),       # enlargement only where asked
+    (450 + 40j, 300 + 200j, True, "1:1.5"),
+    (1300 + 40j, 300 + 200j, True, "1:5"),      # 1300/300 = 4.33: 1:5
+    (1300 + 40j, 300 + 200j, False, "1:5"),
+])
+def test_length_scale_is_the_largest_gb_scale_that_fits(extent, box, enlarge, want):
+    from mechdesign.render.sheet import length_scale, scale_text
+
+    n = length_scale(extent, box, enlarge=enlarge)
+    assert scale_text(n) == want
+    assert extent.real / n <= box.real + 1e-9 and extent.imag / n <= box.imag + 1e-9
+
+
+def test_crank_rocker_sheets_enlarge_the_small_mechanism(example_results):
+    """designs/crank_rocker.yaml: the four-bar is about 70 mm across, so its kinematic
+    diagram (its first view; the slider-crank beside it has its own) and its analysis sheet
+    draw it enlarged (m:1, m ≥ 2), not at 1:1; the shaper (about 600 mm) stays a reduction."""
+    from mechdesign.render.sheets import _builders
+
+    r = example_results("crank_rocker")
+    built = {name: build(INFO, "zh") for name, build in _builders(r, None)}
+    for name in ("kinematic", "analysis"):
+        left, right = (float(x) for x in built[name].info.scale.split(",")[0].split(":"))
+        assert right == 1 and left >= 2, (name, built[name].info.scale)
+    assert _scale(_sheets(example_results("shaper"))["kinematic"]) > 1

@@ -313,3 +313,33 @@ def test_every_verdict_cell_carries_its_boolean(example_results, name):
         plain = [row[-1] for row in rows if len(row) >= 2 and str(row[-1]).strip("*") in words
                  and not isinstance(row[-1], fmt.Verdict)]
         assert not plain, (lang, plain)
+
+
+@pytest.mark.parametrize("lang", ["zh", "en"])
+@pytest.mark.parametrize("name", ["shaper", "crank_rocker"])
+def test_every_table_of_the_graphical_section_has_its_own_caption(example_results, name, lang):
+    """Issue 19: in the graphical method every group's table of vector equations is numbered
+    with its own caption naming the position and the group (曲柄 2, 杆组 3–4 …), not only
+    the position's last one; no two captions of the section are the same."""
+    md, _ = _markdown(example_results, name, lang)
+    head = "# 图解法" if lang == "zh" else "# Graphical method"
+    start = md.index(head)
+    end = md.find("\n# ", start + 1)
+    lines = md[start:end if end > 0 else len(md)].split("\n")
+    captions, tables = [], 0
+    k = 0
+    while k < len(lines):
+        if lines[k].startswith("|") and k + 1 < len(lines) and lines[k + 1].startswith("|:"):
+            tables += 1
+            k += 2
+            while k < len(lines) and lines[k].startswith("|"):
+                k += 1
+            while k < len(lines) and not lines[k].strip():
+                k += 1
+            assert k < len(lines) and lines[k].startswith(": "), (tables, lines[k - 3:k + 1])
+            captions.append(lines[k])
+        k += 1
+    assert tables >= 6 and len(captions) == tables
+    assert len(set(captions)) == len(captions), captions
+    group = "杆组" if lang == "zh" else "group"
+    assert sum(group in c for c in captions) >= 2

@@ -331,7 +331,7 @@ def _mechanism(s: Sheet, model, k, lab: dict, box, chosen: list[str], lang: str)
     legend = "  ".join(f"{link} {nm}" for link, nm in named if nm)
     top_room = 16.0 + (7.0 if legend else 0.0)
     avail = (bx1 - bx0) + 1j * (by1 - by0 - top_room)
-    n_len = length_scale(hi - lo, avail)
+    n_len = length_scale(hi - lo, avail, enlarge=True)
     sc = 1.0 / n_len
     centre = (lo + hi) / 2
     v = s.view((bx0 + bx1) / 2 + 1j * ((by0 + by1 - top_room + 16.0) / 2 - 6) - sc * centre, sc)

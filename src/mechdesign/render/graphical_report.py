@@ -273,10 +273,22 @@ def _eq_tex(eq) -> str:
     return f"{left} = {right}" if left else right
 
 
-def _kin(poly, lang: str, unit: str, rate_name: str) -> dict:
+def _group_title(name: str, links: dict, lang: str) -> str:
+    """"crank 2" / "group 3–4" (曲柄 2 / 杆组 3–4) of a mechanism group, by its links."""
+    _ = tr(lang)
+    ids = links.get(name)
+    if not ids:
+        return name
+    if ids.get("crank"):
+        return _("crank {links}", links="–".join(ids["links"]))
+    return _("group {links}", links="–".join(ids["links"]))
+
+
+def _kin(poly, lang: str, unit: str, rate_name: str, links: dict | None = None) -> dict:
     """The polygon's vector equations group by group: per group its equations and ONE table,
     a row per vector (大小 and 方向 as the construction knows them: "?" unknown, "√" found
-    before, else the value drawn; then the polygon's segment, its length and the value read)."""
+    before, else the value drawn; then the polygon's segment, its length and the value read);
+    each table is titled by its group (``links``: group name → its link ids)."""
     groups: list[dict] = []
     for eq in poly.equations:
         rel = [t for t in eq.left + eq.right if t.kind != "absolute"]
@@ -286,7 +298,8 @@ def _kin(poly, lang: str, unit: str, rate_name: str) -> dict:
         # already solved (every magnitude known: v_B = v_BO3) joins the table before it
         solved = all(t.known for t in eq.left + eq.right)
         if not groups or (groups[-1]["group"] != eq.group and not solved):
-            groups.append({"group": eq.group, "eqs": [], "rows": [], "seen": set()})
+            groups.append({"group": eq.group, "eqs": [], "rows": [], "seen": set(),
+                           "title": _group_title(eq.group, links or {}, lang)})
         g = groups[-1]
         g["eqs"].append(_eq_tex(eq))
         for t in list(eq.left) + list(eq.right):
@@ -387,6 +400,14 @@ def graphical_context(results: dict, figures: dict, lang: str) -> list[dict]:
     """The template context: one entry per linkage (most machines have one)."""
     out = []
     for prefix, doc in documents(results):
+        model = _model_of(results, prefix)
+        links = {}
+        if model is not None:
+            mech = model.mechanism
+            for n, g in enumerate(mech.groups):
+                ids = tuple(g.links) or ((g.link,) if getattr(g, "link", None) else ())
+                if ids:
+                    links[g.name] = {"links": ids, "crank": n == 0}
         positions = []
         for pos in doc.positions:
             key = f"{prefix}_graph_{_safe(pos.label)}"
@@ -398,8 +419,8 @@ def graphical_context(results: dict, figures: dict, lang: str) -> list[dict]:
                 "label": str(pos.label).replace("'", "′"),
                 "angle": f(np.degrees(pos.crank_angle), 1),
                 "mu_l": _scale(pos.length_scale),
-                "vel": _kin(pos.velocity, lang, "m/s", r"\omega"),
-                "acc": _kin(pos.acceleration, lang, "m/s²", r"\alpha"),
+                "vel": _kin(pos.velocity, lang, "m/s", r"\omega", links),
+                "acc": _kin(pos.acceleration, lang, "m/s²", r"\alpha", links),
                 "fig": figures.get(f"{key}_kin", ""),
                 "forces": forces, "crank": crank,
                 "mb": None if pos.balancing_torque is None else _numg(pos.balancing_torque),

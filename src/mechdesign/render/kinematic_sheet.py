@@ -69,15 +69,16 @@ def _area(s: Sheet) -> tuple[float, float, float, float]:
 
 
 def _fit(s: Sheet, pts_mm: np.ndarray, area, pad_paper: float = 18.0):
-    """(view, n) drawing the model points ``pts_mm`` [mm] at the largest GB reduction 1:n
-    that fits ``area`` less ``pad_paper`` on every side, centred."""
+    """(view, n) drawing the model points ``pts_mm`` [mm] at the GB scale that fits
+    ``area`` less ``pad_paper`` on every side, centred: the largest reduction 1:n, or for a
+    small model the largest enlargement m:1 (n = 1/m, see sheet.length_scale)."""
     pts = np.asarray(pts_mm, dtype=complex)
     lo = complex(pts.real.min(), pts.imag.min())
     hi = complex(pts.real.max(), pts.imag.max())
     ax0, ay0, ax1, ay1 = area
     box = complex(ax1 - ax0 - 2 * pad_paper, ay1 - ay0 - 2 * pad_paper)
     ext = complex(max(hi.real - lo.real, 1e-6), max(hi.imag - lo.imag, 1e-6))
-    n = length_scale(ext, box)
+    n = length_scale(ext, box, enlarge=True)
     sc = 1.0 / n
     centre = (lo + hi) / 2
     return s.view(complex((ax0 + ax1) / 2, (ay0 + ay1) / 2) - sc * centre, sc), n
@@ -369,8 +370,8 @@ def lockbeam_layout(results, found, phi: float = 0.0) -> dict:
     turn = np.angle((fp[hi] - fol.pivot_distance) / (fp[lo] - fol.pivot_distance))
     mirror = turn < 0
     m = bending.mechanism.solve(np.array([ds.alpha1 + psi]))
-    raw = {"A": complex(m.points["A"].pos[0]), "B": complex(m.points["B"].pos[0]),
-           "A0": 0j, "B0": complex(ds.frame, 0.0)}
+    raw = {"G": complex(m.points["G"].pos[0]), "B": complex(m.points["B"].pos[0]),
+           "G0": 0j, "B0": complex(ds.frame, 0.0)}
     four = {k: A0 + (np.conj(v) if mirror else v) * MM for k, v in raw.items()}
     r_big = p.bending.driving_wheel / 2 * MM
     r_small = p.bending.bending_wheel / 2 * MM
@@ -446,17 +447,17 @@ def lockbeam_diagram(results, found, info: TitleInfo, lang: str) -> Sheet:
         placer.block(view.p(complex(z)), 0.6)
     _omega_arrow(s, view, o, float(np.max(np.abs(bd["profile"] - o))), bd["sigma"] > 0, placer, lab)
     view.circle(bd["C"], bd["rr"], "OUTLINE")
-    lever = [f["A0"], bd["C"], f["A"], f["A0"]]
+    lever = [f["G0"], bd["C"], f["G"], f["G0"]]
     view.polyline(np.array(lever), "OUTLINE")
     for a, b in zip(lever[:-1], lever[1:]):
         placer.block_segment(view.p(a), view.p(b), 1.5)
-    for a, b in ((f["A"], f["B"]), (f["B0"], f["B"])):
+    for a, b in ((f["G"], f["B"]), (f["B0"], f["B"])):
         view.line(a, b, "OUTLINE")
         placer.block_segment(view.p(a), view.p(b), 1.5)
-    for z in (f["A0"], f["B0"]):
+    for z in (f["G0"], f["B0"]):
         ground(view, z, 7.0)
         placer.block(view.p(z) - 3.5j, 5.0)
-    for z in (bd["C"], f["A"], f["B"]):
+    for z in (bd["C"], f["G"], f["B"]):
         pin(view, z)
         placer.block(view.p(z), 1.5)
     # chain: the large wheel on B0 (one link with the arm B0B), the bending wheel and its arm
@@ -473,12 +474,13 @@ def lockbeam_diagram(results, found, info: TitleInfo, lang: str) -> Sheet:
     pin(view, bd["arm"])
     placer.block(view.p(bd["small"]) - 3.5j, 5.0)
     placer.block_segment(view.p(bd["small"]), view.p(bd["arm"]), 1.5)
-    for name, z, d in (("O2", o, -1 - 1j), ("C", bd["C"], -1j), ("A0", f["A0"], -1 + 1j), ("A", f["A"], 1),
+    # the four-bar as the report names it: G0 G B B0 (A is the feed crank's pin)
+    for name, z, d in (("O2", o, -1 - 1j), ("C", bd["C"], -1j), ("G0", f["G0"], -1 + 1j), ("G", f["G"], 1),
                        ("B", f["B"], 1j), ("B0", f["B0"], 1 - 1j), ("E0", bd["small"], 1 - 1j)):
         placer.place(view.p(z), name, 3.5, prefer=d, gap=2.5)
     k = bd["profile"][len(bd["profile"]) // 2]
     placer.place(view.p(k), "2", 3.5, prefer=k - o, gap=2.5)
-    for num, a, b in (("8", f["A0"], f["A"]), ("9", f["A"], f["B"])):
+    for num, a, b in (("8", f["G0"], f["G"]), ("9", f["G"], f["B"])):
         d = (b - a) / abs(b - a)
         placer.place(view.p((a + b) / 2), num, 3.5, prefer=1j * d, gap=2.0)
     placer.place(view.p(f["B0"] + bd["r_big"] * np.exp(-0.25j * np.pi)), "10", 3.5, prefer=1 - 1j, gap=2.0)
@@ -522,24 +524,37 @@ def crank_rocker_diagram(opt, slider, info: TitleInfo, lang: str) -> Sheet:
     lab = LABELS[lang]
     fb = opt.best.design
     four = {k: v * MM for k, v in crank_rocker_points(fb.crank, fb.coupler, fb.rocker, fb.frame).items()}
-    shift = 0j
-    pts = list(four.values()) + list(fb.crank * MM * np.exp(1j * np.linspace(0, 2 * np.pi, 13)))
+    pts4 = list(four.values()) + list(fb.crank * MM * np.exp(1j * np.linspace(0, 2 * np.pi, 13)))
     sc_pts = {}
     if slider is not None:
         raw = slider_crank_points(slider.crank, slider.rod, slider.offset)
-        span4 = max(p.real for p in pts) - min(p.real for p in pts)
-        shift = complex(max(p.real for p in pts) + 0.35 * span4 + slider.crank * MM, 0)
-        sc_pts = {k: v * MM + shift for k, v in raw.items()}
-        pts += list(sc_pts.values()) + [shift + slider.crank * MM * np.exp(1j * t) for t in np.linspace(0, 2 * np.pi, 13)]
-        pts += [sc_pts["C"] - slider.stroke * MM - 10.0, sc_pts["C"] + 15.0]
+        sc_pts = {k: v * MM for k, v in raw.items()}
+        pts_s = list(sc_pts.values()) + [slider.crank * MM * np.exp(1j * t) for t in np.linspace(0, 2 * np.pi, 13)]
+        pts_s += [sc_pts["C"] - slider.stroke * MM - 10.0, sc_pts["C"] + 15.0]
     s = Sheet(SIZE)
     area = _area(s)
-    view, n = _fit(s, np.array(pts), area)
-    frame(s, replace(info, scale=scale_text(n)))
+    if sc_pts:
+        # two views side by side, each at its own GB scale (the ~70 mm four-bar enlarged,
+        # the longer slider-crank as it fits): the split of the width that gives the
+        # largest product of the two scales
+        ax0, ay0, ax1, ay1 = area
+        best = None
+        for k in range(30, 71):
+            xm = ax0 + (ax1 - ax0) * k / 100.0
+            v4, n4 = _fit(s, np.array(pts4), (ax0, ay0, xm, ay1), pad_paper=14.0)
+            vs, ns = _fit(s, np.array(pts_s), (xm, ay0, ax1, ay1), pad_paper=14.0)
+            if best is None or 1.0 / (n4 * ns) > best[0] * (1 + 1e-9):
+                best = (1.0 / (n4 * ns), (v4, n4), (vs, ns))
+        views = [best[1], best[2]]
+    else:
+        views = [_fit(s, np.array(pts4), area)]
+    scales = list(dict.fromkeys(scale_text(n) for _, n in views))
+    frame(s, replace(info, scale=", ".join(scales)))
     placer = LabelPlacer(s)
     tb = title_block_box(s)
     placer.block_box((tb[0] - 2, tb[1], tb[2], tb[3] + 2))
-    _title(s, f"{lab['diagram']}  {scale_text(n)}", area)
+    _title(s, f"{lab['diagram']}  {', '.join(scales)}", area)
+    view = views[0][0]
 
     def mechanism(P, sliding: bool, caption: str, crank_len: float):
         links = [("1", P["A"], P["B"]), ("2", P["B"], P["C"])]
@@ -582,10 +597,13 @@ def crank_rocker_diagram(opt, slider, info: TitleInfo, lang: str) -> Sheet:
         placer.text(complex(cx, max(low, area[1] - 4.0)), caption, fit_height(caption, 180.0, 3.5),
                     "center", "top")
 
-    mechanism(four, False, lab["crank_rocker"], fb.crank * MM)
+    mechanism(four, False, f"{lab['crank_rocker']}  {scale_text(views[0][1])}", fb.crank * MM)
+    scale_notes = "ABCD: " + _scale_note(lab, views[0][1])
     if sc_pts:
-        mechanism(sc_pts, True, lab["slider_crank"], slider.crank * MM)
-    notes = [_scale_note(lab, n),
+        view = views[1][0]
+        mechanism(sc_pts, True, f"{lab['slider_crank']}  {scale_text(views[1][1])}", slider.crank * MM)
+        scale_notes += ";  ABC: " + _scale_note(lab, views[1][1])
+    notes = [scale_notes,
              f"ABCD: a = {format_number(fb.crank * MM)}  b = {format_number(fb.coupler * MM)}  "
              f"c = {format_number(fb.rocker * MM)}  d = {format_number(fb.frame * MM)} mm"]
     if slider is not None:

@@ -345,12 +345,31 @@ def nice_scale(value: float, available: float) -> float:
 
 # GB/T 14690 reduction scales 1:n, preferred first within each decade.
 _REDUCTIONS = (1, 1.5, 2, 2.5, 3, 4, 5, 6)
+# GB/T 14690 enlargement scales m:1 within each decade, largest first: 5:1 and 2:1 preferred,
+# 4:1 and 2.5:1 allowed, then 10:1 (and ×10ⁿ: 50:1, 40:1, 25:1, 20:1, 100:1 …).
+_ENLARGEMENTS = (5, 4, 2.5, 2)
 
 
-def length_scale(extent_mm: complex, box_mm: complex) -> float:
-    """The largest GB reduction 1:n (returned as n ≥ 1) that fits a model of size
-    ``extent_mm`` (width + i·height) into ``box_mm``."""
-    need = max(extent_mm.real / box_mm.real, extent_mm.imag / box_mm.imag, 1.0)
+def length_scale(extent_mm: complex, box_mm: complex, enlarge: bool = False) -> float:
+    """The GB/T 14690 length scale that fits a model of size ``extent_mm`` (width +
+    i·height) into ``box_mm``, as n model mm per paper mm: the largest reduction 1:n
+    (n ≥ 1) when the model is larger than the box; with ``enlarge``, a model that fits
+    the box at 1:1 with room to spare is drawn at the largest enlargement m:1 that still
+    fits (returned as n = 1/m < 1), so that a small mechanism fills its view."""
+    ratio = max(extent_mm.real / box_mm.real, extent_mm.imag / box_mm.imag)
+    if enlarge and 0 < ratio <= 0.5 * (1 + 1e-12):
+        best = 1.0
+        decade = 1.0
+        while ratio * 10.0 * decade <= 1 + 1e-12:
+            decade *= 10.0                      # 10:1, 100:1 … fit
+        for m in _ENLARGEMENTS:
+            if ratio * m * decade <= 1 + 1e-12:
+                best = m * decade
+                break
+        else:
+            best = decade
+        return 1.0 / best
+    need = max(ratio, 1.0)
     decade = 1.0
     while True:
         for m in _REDUCTIONS:
@@ -360,7 +379,9 @@ def length_scale(extent_mm: complex, box_mm: complex) -> float:
 
 
 def scale_text(n: float) -> str:
-    """'1:5', '1:2.5', '1:1'."""
+    """'1:5', '1:2.5', '1:1'; an enlargement (n < 1, see :func:`length_scale`) '2:1', '2.5:1'."""
+    if n < 1 - 1e-9:
+        return f"{round(1.0 / n, 6):g}:1"
     return f"1:{n:g}"
 
 

@@ -96,11 +96,11 @@ def _linkage_drawing(path: Path, lang: str, b, wheel_d: float):
             lw = 1.8 if bold else 0.6
             ax.plot([0, A[j].real, B[j].real, B0], [0, A[j].imag, B[j].imag, 0], color=col, lw=lw,
                     marker="o", ms=3 if bold else 1.5)
-        for z, name in ((0j, "A0"), (complex(B0, 0), "B0")):
+        for z, name in ((0j, "G0"), (complex(B0, 0), "B0")):
             ax.plot([z.real], [z.imag], "^", color="k", ms=7)
             ax.text(z.real, z.imag - 12, name, ha="center", va="top", fontsize=8)
         for j, tag in ((0, "1"), (len(A) - 1, "2")):
-            ax.text(A[j].real, A[j].imag + 5, f"A{tag}", fontsize=8, color="C0" if j == 0 else "C3")
+            ax.text(A[j].real, A[j].imag + 5, f"G{tag}", fontsize=8, color="C0" if j == 0 else "C3")
             ax.text(B[j].real + 3, B[j].imag + 3, f"B{tag}", fontsize=8, color="C0" if j == 0 else "C3")
         ax.set_aspect("equal")
         ax.set_xlabel("x (mm)")
@@ -373,7 +373,7 @@ def _bending(r: dict, lang: str, figures: dict) -> dict:
         "a": (rf"a = \frac{{{f(num * MM * MM, 2)}}}{{{f(den * MM, 3)}}} = {f(ds.input_rocker * MM, 3)}\ "
               r"\text{mm}"),
         "b": (rf"b = \left|{_c(A1)} - {_c(B1)}\right| = {f(ds.coupler * MM, 3)}\ \text{{mm}}"),
-        "gamma": r"\gamma = \min\left(\delta,\ 180° - \delta\right),\qquad \delta = \angle(\overrightarrow{AB},\ \overrightarrow{B_0B})",
+        "gamma": r"\gamma = \min\left(\delta,\ 180° - \delta\right),\qquad \delta = \angle(\overrightarrow{GB},\ \overrightarrow{B_0B})",
     }
     mean_ratio = bp.output_swing / bp.input_swing
     sense_name = {"same": N_("same way"), "opposite": N_("opposite way")}
@@ -393,9 +393,9 @@ def _bending(r: dict, lang: str, figures: dict) -> dict:
                           f(d_.coupler * MM, 2), f(g * DEG, 2), f(peak, 4),
                           _("; ").join(note)])
     design_rows = [
-        ["$d$", _("frame A0B0"), f(ds.frame * MM, 2), "mm"],
-        ["$a$", _("input rocker A0A"), f(ds.input_rocker * MM, 2), "mm"],
-        ["$b$", _("coupler AB"), f(ds.coupler * MM, 2), "mm"],
+        ["$d$", _("frame G0B0"), f(ds.frame * MM, 2), "mm"],
+        ["$a$", _("input rocker G0G"), f(ds.input_rocker * MM, 2), "mm"],
+        ["$b$", _("coupler GB"), f(ds.coupler * MM, 2), "mm"],
         ["$c$", _("arm on the wheel B0B"), f(ds.output_rocker * MM, 2), "mm"],
         ["$\\alpha_1$", _("input start angle"), ad(ds.alpha1), "°"],
         ["$\\beta_1$", _("arm start angle"), ad(ds.beta1), "°"],

@@ -184,9 +184,9 @@ def synthesise_bending(bp: BendingParams) -> BendingSynthesis:
 def bending_mechanism(ds: rs.RockerDesign) -> Mechanism:
     """The four-bar as Assur groups: the input rocker 2 (driven like a crank, ω = 1 so that
     the links' ω and α are dβ/dα and d²β/dα²), then the RRR dyad coupler 3 – output 4."""
-    m = Mechanism("1", {"A0": 0j, "B0": complex(ds.frame, 0.0)})
-    m.add(Crank("input rocker A0A", "2", "A0", "A", ds.input_rocker, 1.0))
-    m.add(RRR("coupler AB – wheel arm B0B", "3", "4", "A", "B0", "B", ds.coupler,
+    m = Mechanism("1", {"G0": 0j, "B0": complex(ds.frame, 0.0)})
+    m.add(Crank("input rocker G0G", "2", "G0", "G", ds.input_rocker, 1.0))
+    m.add(RRR("coupler GB – wheel arm B0B", "3", "4", "G", "B0", "B", ds.coupler,
               ds.output_rocker, ds.branch))
     return m
 
@@ -250,16 +250,16 @@ class SeedCheck:
 class BendingDrawing:
     """The bending four-bar as the report draws it (positions solved by the stage)."""
 
-    A: np.ndarray               # joint A at 5 equal steps of the input swing, start to end [m]
+    A: np.ndarray               # joint G at 5 equal steps of the input swing, start to end [m]
     B: np.ndarray               # joint B at the same input angles [m]
-    path_A: np.ndarray          # A over the swing, 60 points [m]
+    path_A: np.ndarray          # G over the swing, 60 points [m]
     path_B: np.ndarray          # B over the swing, 60 points [m]
 
 
 def bending_drawing(ds: rs.RockerDesign, mech: Mechanism) -> BendingDrawing:
     m = mech.solve(ds.alpha1 + ds.dalpha * np.linspace(0.0, 1.0, 5))
     arc = mech.solve(ds.alpha1 + ds.dalpha * np.linspace(0, 1, 60))
-    return BendingDrawing(m.points["A"].pos, m.points["B"].pos, arc.points["A"].pos,
+    return BendingDrawing(m.points["G"].pos, m.points["B"].pos, arc.points["G"].pos,
                           arc.points["B"].pos)
 
 
@@ -717,8 +717,8 @@ class RangeDoc:
 class RoundedDoc:
     """The design with its lengths rounded as drawn, assembled at the same input start."""
 
-    input_rocker: float = q("m", "L_A0A rounded")
-    coupler: float = q("m", "L_AB rounded")
+    input_rocker: float = q("m", "L_G0G rounded")
+    coupler: float = q("m", "L_GB rounded")
     output_start: float = q("rad", "β1 of the rounded linkage")
     swing: float = q("rad", "|Δβ| the cam's swing then gives")
     bend: float = q("rad", "the bending angle that gives")
@@ -733,8 +733,8 @@ class CandidateDoc:
     sense: str = q("", "'same' or 'opposite': the output turns the input's way or not")
     gamma_min: float = q("rad", "its γ_min (0 without a design)")
     message: str = q("", "why there is no design, or empty")
-    input_rocker: float | None = q("m", "L_A0A")
-    coupler: float | None = q("m", "L_AB")
+    input_rocker: float | None = q("m", "L_G0G")
+    coupler: float | None = q("m", "L_GB")
 
 
 @dataclass(frozen=True)
@@ -748,8 +748,8 @@ class SeedStartDoc:
 class SeedDoc:
     """The seed's graphical lengths checked over the swing."""
 
-    input_rocker: float = q("m", "the seed's L_A0A")
-    coupler: float = q("m", "the seed's L_AB")
+    input_rocker: float = q("m", "the seed's L_G0G")
+    coupler: float = q("m", "the seed's L_GB")
     grashof: str = q("", "Grashof type of the seed's four-bar")
     swing_range: tuple[float, float] = q("rad", "least and largest |Δβ| over every start that "
                                                 "moves through the whole input swing")
@@ -768,12 +768,13 @@ class BendingCycleDoc:
 
 @dataclass(frozen=True)
 class BendingDoc:
-    """The bending double rocker (扳弯机构): input rocker A0A (cam-driven) 2, coupler AB 3,
-    output rocker B0B 4 (chained to the bending wheel); A0 at the origin, B0 on +x."""
+    """The bending double rocker (扳弯机构): input rocker G0G (cam-driven) 2, coupler GB 3,
+    output rocker B0B 4 (chained to the bending wheel); G0 at the origin, B0 on +x (G, not
+    A: A is the feed crank's pin)."""
 
-    frame: float = q("m", "L_A0B0")
-    input_rocker: float = q("m", "L_A0A")
-    coupler: float = q("m", "L_AB")
+    frame: float = q("m", "L_G0B0")
+    input_rocker: float = q("m", "L_G0G")
+    coupler: float = q("m", "L_GB")
     output_rocker: float = q("m", "L_B0B")
     input_start: float = q("rad", "α1, input rocker at the start")
     input_swing: float = q("rad", "Δα, the bending cam's swing")
