@@ -1,6 +1,6 @@
 """Report of the crank-rocker synthesis (``machine: crank_rocker``): the design chart,
 the θ-circle construction, γ(φ) from the simulation, the offset slider-crank, and the
-context strings for ``templates/crank_rocker.*.md.j2``."""
+context strings for ``templates/crank_rocker.md.j2``."""
 from __future__ import annotations
 
 from pathlib import Path
