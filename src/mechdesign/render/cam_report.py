@@ -154,7 +154,8 @@ def _law_eqs(c, i, u: _Units, lang):
     S, S1, S2 = law.latex
     sym = "\\varphi" if u.osc else "s"
     unit = "°" if u.osc else "\\text{mm}"
-    head = (rf"u = \frac{{\delta - {f(start, 1)}°}}{{\Phi}},\quad \Phi = {f(span, 1)}°"
+    numerator = r"\delta" if f(start, 1) == f(0.0, 1) else rf"\delta - {f(start, 1)}°"
+    head = (rf"u = \frac{{{numerator}}}{{\Phi}},\quad \Phi = {f(span, 1)}°"
             rf" = {f(np.radians(span), 4)}\ \text{{rad}}")
     if seg.kind == RISE and level > 1e-9:
         s_eq = rf"{sym} = {f(level, 2)} + {f(abs(lift), 2)}\,S(u)"

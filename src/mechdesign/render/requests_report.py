@@ -12,7 +12,7 @@ from pathlib import Path
 
 import numpy as np
 
-from ..i18n import N_
+from ..i18n import N_, tr
 from .fmt import f
 from .labels import LabelTable
 
@@ -48,6 +48,7 @@ def requests_figures(results: dict, fig_dir: Path, lang: str) -> dict[str, str]:
     from . import figures as fig
 
     k, t = found.motion, _TXT[lang]
+    _ = tr(lang)
     n = k.grid_size
     ph = k.phase[:n] * DEG
     path = fig_dir / "named_points.png"
@@ -75,6 +76,7 @@ def requests_context(results: dict, brief, figures: dict, lang: str) -> dict | N
     from ..brief.common import EVENTS, event_name
 
     k, t = found.motion, _TXT[lang]
+    _ = tr(lang)
     n = k.grid_size
     labels = [str(x) for x in k.positions.labels]
     analysis = getattr(brief, "analysis", None)
@@ -91,7 +93,8 @@ def requests_context(results: dict, brief, figures: dict, lang: str) -> dict | N
             # the brief's key (a program name) only in English; a zh report says what it means
             what = event_name(base, lang) if lang == "zh" else f"{event_name(base, lang)} (`{key}`)"
         else:
-            what = f"{t['angle']} {key} ({convention})"
+            what = _("{angle} {key} ({convention})", angle=t["angle"], key=key,
+                     convention=convention)
         asked.append([what, shown(label), f(k.phase[j] * DEG, 2),
                       f((k.crank_angle[j] % (2 * np.pi)) * DEG, 2)])
     tables = []
