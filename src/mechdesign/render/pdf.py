@@ -320,6 +320,25 @@ def typst_fonts():
                        font_paths=dirs)
 
 
+def cached_compile(source: bytes, **options):
+    """``typst.compile(source, **options)`` of a self-contained source (it reads no file),
+    from the cache when compiled before (render/cache.py; ``font_paths`` is not part of
+    the key: the fonts' identity is)."""
+    import typst
+
+    from . import cache
+
+    key = cache.typst_key(source, None, **{k: v for k, v in options.items()
+                                            if k != "font_paths"})
+    stored = cache.fetch_bytes(key)
+    if stored is not None:
+        return stored
+    out = typst.compile(source, **options)
+    if isinstance(out, bytes):
+        cache.store(key, out)
+    return out
+
+
 def _typst_message(exc: Exception) -> str:
     """Readable text of a typst.TypstError (message, diagnostic and hints)."""
     parts = [getattr(exc, "diagnostic", "") or getattr(exc, "message", "") or str(exc)]
@@ -372,24 +391,38 @@ def compile_pdf(source: str, root: Path, pdf_path: Path, metadata: dict,
     root, pdf_path = Path(root).resolve(), Path(pdf_path).resolve()
     source = _use_vector_images(source, {k: v for k, v in (substitutes or {}).items()
                                          if (root / v).is_file()})
+    from . import cache
+
     note_typst_used()
+    timestamp = source_timestamp(metadata.get("date"))
     fd, typ_name = tempfile.mkstemp(prefix=f".{stem}-", suffix=".typ", dir=root)
     try:
         with os.fdopen(fd, "w", encoding="utf-8") as handle:
             handle.write(source)
-        try:
-            pdf_bytes, typst_warnings = typst.compile_with_warnings(
-                typ_name,
-                root=str(root),
-                font_paths=typst_fonts(),
-                timestamp=source_timestamp(metadata.get("date")),
-            )
-        except typst.TypstError as exc:
-            raise PdfRenderError(f"typst failed to compile {stem}.md:\n{_typst_message(exc)}") from exc
+        # the same source, images and options compiled before: the PDF from the cache
+        # (render/cache.py; the typst warnings are stored with it)
+        key = cache.typst_key(source, root, skip=Path(typ_name), timestamp=timestamp,
+                              format="pdf")
+        stored = cache.fetch_bytes(key)
+        if stored is not None:
+            head, pdf_bytes = stored.split(b"\n", 1)
+            typst_warnings = json.loads(head.decode("utf-8"))
+        else:
+            try:
+                pdf_bytes, found = typst.compile_with_warnings(
+                    typ_name,
+                    root=str(root),
+                    font_paths=typst_fonts(),
+                    timestamp=timestamp,
+                )
+            except typst.TypstError as exc:
+                raise PdfRenderError(f"typst failed to compile {stem}.md:\n{_typst_message(exc)}") from exc
+            typst_warnings = [_typst_message(w) for w in found]
+            cache.store(key, json.dumps(typst_warnings).encode("utf-8") + b"\n" + pdf_bytes)
     finally:
         Path(typ_name).unlink(missing_ok=True)
 
-    for warning in typst_warnings:
-        warnings.warn(f"typst: {_typst_message(warning)}", stacklevel=3)
+    for text in typst_warnings:
+        warnings.warn(f"typst: {text}", stacklevel=3)
 
     write_bytes(pdf_path, pdf_bytes)
