@@ -101,3 +101,50 @@ def test_a_cached_run_writes_the_same_files(tmp_path):
         for rel in files:
             assert (other / rel).read_bytes() == (outs[0] / rel).read_bytes(), rel
     assert any((tmp_path / "cache").rglob("*"))
+
+
+_SERVICE = r"""
+import sys
+from pathlib import Path
+from mechdesign.render import parallel, pdf
+
+tmp = Path(sys.argv[1])
+src = "#set page(width: 50mm, height: 30mm)\nHello $x^2$"
+stop = pdf.start_service()
+try:
+    assert pdf._service_address is not None
+    pdf.compile_pdf(src, tmp, tmp / "served.pdf", {"date": "1970-01-01"})
+    assert not parallel.typst_used()
+    try:
+        pdf.compile_pdf("#let x = (", tmp, tmp / "bad.pdf", {})
+    except pdf.PdfRenderError as exc:
+        assert "typst failed" in str(exc)
+    else:
+        raise AssertionError("no error")
+    assert not (tmp / "bad.pdf").exists()
+finally:
+    stop()
+assert pdf._service_address is None
+pdf.compile_pdf(src, tmp, tmp / "here.pdf", {"date": "1970-01-01"})
+assert parallel.typst_used()
+assert pdf.start_service()() is None      # after typst ran here: no service, a no-op stop
+assert pdf._service_address is None
+print("ok")
+"""
+
+
+def test_the_warm_typst_process_compiles_for_this_one(tmp_path):
+    """mechdesign watch's compiling process (render/pdf.py start_service), in a fresh
+    interpreter (a process that has run typst must not fork one): the PDF is the one
+    typst makes in the process itself, an error in the source comes back as
+    PdfRenderError, the process is not marked as having run typst (it may still fork);
+    after stop() it compiles itself, and then starts no service."""
+    import os
+
+    if not sys.platform.startswith("linux"):
+        pytest.skip("the compiling process is forked (Linux)")
+    env = dict(os.environ, MECHDESIGN_CACHE="off")
+    out = subprocess.run([sys.executable, "-c", _SERVICE, str(tmp_path)], env=env, cwd=ROOT,
+                         capture_output=True, text=True, timeout=300)
+    assert out.returncode == 0 and out.stdout.strip() == "ok", out.stderr
+    assert (tmp_path / "served.pdf").read_bytes() == (tmp_path / "here.pdf").read_bytes()

@@ -10,6 +10,10 @@ stored file instead of drawing it again:
   matplotlib Figure: artists, data, text, font properties, sizes), matplotlib's rcParams,
   the versions of matplotlib, Pillow and FreeType, the registered font files and the save
   settings (:func:`figure_key`);
+- a figure drawn by a function marked :func:`mechdesign.render.figures.cached`: also, before
+  anything is drawn, the function's name and arguments (its data, the language) with the
+  source of the rendering code and the catalogues (:func:`call_key`) — a hit then skips
+  building the figure too;
 - a typst output: the typst source, every file under the compilation's root folder (the
   images it may place), the options (format, resolution, timestamp), typst's version and
   the font files given to it (:func:`typst_key`).
@@ -210,6 +214,9 @@ def _figure_environment() -> str:
     import PIL
     from matplotlib import font_manager, ft2font
 
+    from .fonts import configure_matplotlib
+
+    configure_matplotlib()       # the CJK font registered before the fonts are listed
     fonts = sorted(_file_identity(Path(f.fname)) for f in font_manager.fontManager.ttflist)
     return "|".join([FORMAT, matplotlib.__version__, PIL.__version__,
                      getattr(ft2font, "__freetype_version__", "?"), *fonts])
@@ -228,6 +235,44 @@ def figure_key(fig, save: str) -> str | None:
     except Exception:  # noqa: BLE001 - an object pickle refuses: the figure is drawn
         return None
     return _digest("figure", save, _figure_environment(), buf.getvalue())
+
+
+@lru_cache(maxsize=1)
+def _code_fingerprint() -> str:
+    """The source of everything that draws a figure: the package's rendering and machine
+    report modules, and the catalogues (labels)."""
+    package = Path(__file__).resolve().parents[1]
+    h = hashlib.sha256()
+    for sub in ("render", "machines", "locale", "i18n.py"):
+        base = package / sub
+        files = [base] if base.is_file() else sorted(
+            p for p in base.rglob("*") if p.suffix in (".py", ".mo"))
+        for path in files:
+            h.update(path.relative_to(package).as_posix().encode())
+            h.update(hashlib.sha256(path.read_bytes()).digest())
+    return h.hexdigest()
+
+
+def call_key(function, args: tuple, kwargs: dict) -> str | None:
+    """The cache key of ``function(path, *args, **kwargs)`` drawing one figure: its name,
+    its arguments but the path, the language variant in use, the rendering code and
+    catalogues, matplotlib's set-up;
+    None if an argument cannot be hashed."""
+    if folder() is None:
+        return None
+    import matplotlib
+
+    from ..i18n import variant
+
+    try:
+        buf = io.BytesIO()
+        # the language variant set for the run (zh_TW: zh with its own catalogue)
+        _FigurePickler(buf, protocol=5).dump((variant(), args, sorted(kwargs.items())))
+    except Exception:  # noqa: BLE001 - an argument pickle refuses: no call key
+        return None
+    return _digest("call", f"{function.__module__}.{function.__qualname__}",
+                   _code_fingerprint(), _figure_environment(),
+                   _file_identity(Path(matplotlib.matplotlib_fname())), buf.getvalue())
 
 
 # --- typst ---------------------------------------------------------------------------
