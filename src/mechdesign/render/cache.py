@@ -12,7 +12,7 @@ stored file instead of drawing it again:
   settings (:func:`figure_key`);
 - a figure drawn by a function marked :func:`mechdesign.render.figures.cached`: also, before
   anything is drawn, the function's name and arguments (its data, the language) with the
-  source of the rendering code and the catalogues (:func:`call_key`) — a hit then skips
+  source of the whole package and the catalogues (:func:`call_key`) — a hit then skips
   building the figure too;
 - a typst output: the typst source, every file under the compilation's root folder (the
   images it may place), the options (format, resolution, timestamp), typst's version and
@@ -110,12 +110,10 @@ def store(key: str | None, data: bytes) -> None:
     where = folder()
     if key is None or where is None:
         return
+    from ..fileio import write_bytes
+
     try:
-        sub = where / key[:2]
-        sub.mkdir(parents=True, exist_ok=True)
-        tmp = sub / f".{key}.{os.getpid()}.{os.urandom(4).hex()}.tmp"
-        tmp.write_bytes(data)
-        os.replace(tmp, sub / key)
+        write_bytes(where / key[:2] / key, data, fsync=False)     # atomic, parents made
     except OSError:
         return
     _trim_once(where)
@@ -239,23 +237,19 @@ def figure_key(fig, save: str) -> str | None:
 
 @lru_cache(maxsize=1)
 def _code_fingerprint() -> str:
-    """The source of everything that draws a figure: the package's rendering and machine
-    report modules, and the catalogues (labels)."""
+    """The source of everything a figure function may run: every module of the package
+    and the catalogues (labels) — an edited program never gets an old figure."""
     package = Path(__file__).resolve().parents[1]
     h = hashlib.sha256()
-    for sub in ("render", "machines", "locale", "i18n.py"):
-        base = package / sub
-        files = [base] if base.is_file() else sorted(
-            p for p in base.rglob("*") if p.suffix in (".py", ".mo"))
-        for path in files:
-            h.update(path.relative_to(package).as_posix().encode())
-            h.update(hashlib.sha256(path.read_bytes()).digest())
+    for path in sorted([*package.rglob("*.py"), *package.rglob("*.mo")]):
+        h.update(path.relative_to(package).as_posix().encode())
+        h.update(hashlib.sha256(path.read_bytes()).digest())
     return h.hexdigest()
 
 
 def call_key(function, args: tuple, kwargs: dict) -> str | None:
     """The cache key of ``function(path, *args, **kwargs)`` drawing one figure: its name,
-    its arguments but the path, the language variant in use, the rendering code and
+    its arguments but the path, the language variant in use, the package's code and
     catalogues, matplotlib's set-up;
     None if an argument cannot be hashed."""
     if folder() is None:

@@ -404,8 +404,9 @@ def _serve(address: str, ready_fd: int) -> None:
     fonts = typst_fonts()
     try:      # the CJK fonts parsed once, before the first report asks for them
         families = cjk_families()
+        sample = "x " + chr(0x4E2D)            # a Latin and a CJK glyph
         typst.compile(f'#set text(font: ("{families["serif"]}", "{families["sans"]}"))\n'
-                      f'x \u4e2d'.encode("utf-8"), font_paths=fonts)
+                      f'{sample}'.encode("utf-8"), font_paths=fonts)
     except Exception:  # noqa: BLE001 - a warm-up only
         pass
     os.write(ready_fd, b"1")
