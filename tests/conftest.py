@@ -20,10 +20,16 @@ batch run. ``python -m pytest -m "not e2e"`` runs the fast suite alone.
 """
 from __future__ import annotations
 
+import os
 from pathlib import Path
 from typing import Any, Callable
 
 import pytest
+
+# Every test draws and compiles for itself: the render cache (mechdesign/render/cache.py)
+# would otherwise serve files drawn by an earlier run, and a test that breaks drawing
+# would pass. tests/test_render_cache.py turns it on in a folder of its own.
+os.environ.setdefault("MECHDESIGN_CACHE", "off")
 
 ROOT = Path(__file__).resolve().parents[1]
 DESIGNS = ROOT / "designs"

@@ -1,7 +1,7 @@
 """``mechdesign watch BRIEF``: re-run a brief on every save, with the program kept loaded.
 
 The watcher polls the modification times (and sizes) of the brief, its class table
-(``groups: {file: class.csv}``) and every file under ``--templates`` five times a second
+(``groups: {file: class.csv}``) and every file under ``--templates`` ten times a second
 (plain ``os.stat``: no dependency, works on every file system, including network and
 container mounts where inotify events do not arrive). A change that has settled (two polls
 alike) starts a run.
@@ -9,7 +9,10 @@ alike) starts a run.
 Every run happens in a child forked from this process (Linux): the imports, done once here
 before the first run, are inherited, and this process never runs typst itself, so each run
 may fork its figure helpers as ``mechdesign run`` does (typst's threads do not survive a
-fork; see render/parallel.py). Off Linux the runs happen in this process. A run writes
+fork; see render/parallel.py): typst runs in one compiling process started before the
+first run and kept warm (render/pdf.py ``start_service``), so a re-run's PDF lays out only
+what changed, and every figure and sheet unchanged by the edit is copied from the render
+cache (render/cache.py). Off Linux the runs happen in this process. A run writes
 exactly as ``run`` does (staging folder, moved into place when complete: a failed or
 interrupted run leaves the previous report as it was). After a run the watcher prints the
 headline results (the machine's summary rows) that changed, old → new; an invalid brief or an
@@ -25,7 +28,7 @@ from typing import Callable
 
 from .i18n import N_, tr
 
-POLL_SECONDS = 0.2
+POLL_SECONDS = 0.1
 
 _SAY = {
     "watching": N_("watching {files} (save to re-run; Ctrl-C ends)"),
@@ -164,8 +167,15 @@ def watch_brief(brief: Path, *, out: Path | None = None, group: str | None = Non
     summary: dict[str, str] | None = None
     language = brief_language(brief, lang)
     words = _words(language)
+    stop_typst = None
     try:
         _preload(brief, group)
+        if _can_fork():
+            # one warm typst process for every run (render/pdf.py): a re-run lays out
+            # only what changed; started before any run, so this process stays fork-safe
+            from .render.pdf import start_service
+
+            stop_typst = start_service()
         files = watched_files(brief, templates)
         shown = [str(p) for p in files[:2]] + ([f"{templates}/"] if templates else [])
         term.line(words["watching"].format(files=", ".join(shown)))
@@ -202,6 +212,9 @@ def watch_brief(brief: Path, *, out: Path | None = None, group: str | None = Non
     except KeyboardInterrupt:
         term.line("\n" + words["end"])
         return 0
+    finally:
+        if stop_typst is not None:
+            stop_typst()
 
 
 def _report(outcome, summary, term, echo, words, seconds) -> dict[str, str] | None:

@@ -7,7 +7,7 @@ from pathlib import Path
 import numpy as np
 
 from ..i18n import N_
-from .figures import figure
+from .figures import cached, figure
 from .labels import LabelTable
 
 LABELS = LabelTable({
@@ -50,6 +50,7 @@ def _delta_axis(ax, segments, lab):
         ax.axvline(start, color="0.6", lw=0.5, ls=":")
 
 
+@cached
 def svaj(path: Path, lang: str, delta_deg, series, ylabels, segments, impulses=()):
     """Stacked displacement, velocity, acceleration and jerk against the cam angle.
     ``impulses`` = (δ [°], panel, sign): an infinite value there, drawn as an arrow "∞"."""
@@ -84,6 +85,7 @@ def svaj(path: Path, lang: str, delta_deg, series, ylabels, segments, impulses=(
         axes[-1].set_xlabel(lab["delta"])
 
 
+@cached
 def pressure_and_curvature(path: Path, lang: str, delta_deg, alpha_deg, limits, segments,
                            rho_pitch=None, rho_actual=None, roller=0.0, clip=None):
     """Pressure angle with the allowed values per segment; below it the radii of curvature
@@ -127,6 +129,7 @@ def pressure_and_curvature(path: Path, lang: str, delta_deg, alpha_deg, limits, 
         axes[-1].set_xlabel(lab["delta"])
 
 
+@cached
 def profile(path: Path, lang: str, pitch, actual, base_radius, roller, marks, rotation,
             follower=None, pivot=None, flat=False):
     """The cam drawn in its own frame (mm): base circle, pitch curve, actual profile, the
@@ -179,6 +182,7 @@ def profile(path: Path, lang: str, pitch, actual, base_radius, roller, marks, ro
         ax.legend(fontsize=7, loc="lower right", framealpha=0.9)
 
 
+@cached
 def disc_curves(path: Path, lang: str, delta_deg, named):
     """Eccentric disc: displacement and pressure angle of every follower on one chart each.
     ``named`` = list of (label, s [mm], α [°])."""

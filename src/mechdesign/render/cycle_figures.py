@@ -8,7 +8,7 @@ from pathlib import Path
 import numpy as np
 
 from ..i18n import N_
-from .figures import figure
+from .figures import cached, figure
 from .labels import LabelTable
 
 LABELS = LabelTable({
@@ -43,6 +43,7 @@ def _angle_axis(ax, origin: float):
     ax.set_xticklabels([f"{t % 360:g}" for t in ticks[:-1]] + [f"{last:g}"], fontsize=7)
 
 
+@cached
 def linear(path: Path, lang: str, actuators, origin: float = 0.0, links=(), states=None):
     """Linear (rectangular) cycle diagram: one bar per actuator.
 
@@ -90,6 +91,7 @@ def linear(path: Path, lang: str, actuators, origin: float = 0.0, links=(), stat
                       bbox_to_anchor=(0.5, 1.0), frameon=False)
 
 
+@cached
 def circular(path: Path, lang: str, actuators, origin: float = 0.0, states=None):
     """Circular cycle diagram: concentric rings, the first actuator innermost; φ = 0 at the
     top, increasing clockwise."""
@@ -141,6 +143,7 @@ def circular(path: Path, lang: str, actuators, origin: float = 0.0, states=None)
                   frameon=False, handlelength=1.0)
 
 
+@cached
 def intermittent_motion(path: Path, lang: str, theta_deg, angle_deg, velocity, vel_label: str,
                         motion_arcs, jump_text: str, travel_mm=None):
     """Driven-wheel angle (and chain travel) and velocity against the driver angle; the

@@ -5,7 +5,9 @@ the figure; plot functions take prepared arrays in course units and return nothi
 """
 from __future__ import annotations
 
+import functools
 from contextlib import contextmanager
+from contextvars import ContextVar
 from pathlib import Path
 
 import numpy as np
@@ -57,17 +59,49 @@ def figure(path: Path, nrows: int = 1, size: tuple[float, float] = (7.0, 3.2), s
 
 DPI = 150
 
+# the call key (render/cache.py) of the cached figure function being run, if any
+_call_key: ContextVar[str | None] = ContextVar("figure_call_key", default=None)
+
+
+def cached(function):
+    """Mark a function that draws one figure into ``path`` (its first argument) with
+    :func:`figure` and returns nothing: when the cache holds the figure of the same call
+    (the same arguments, rendering code and matplotlib set-up: :func:`.cache.call_key`),
+    its PNG is copied and nothing is built or drawn."""
+    from . import cache
+
+    @functools.wraps(function)
+    def run(path, *args, **kwargs):
+        key = cache.call_key(function, args, kwargs)
+        if key is not None and cache.fetch(key, Path(path)):
+            return None
+        token = _call_key.set(key)
+        try:
+            return function(path, *args, **kwargs)
+        finally:
+            _call_key.reset(token)
+
+    return run
+
 
 def save_png(fig, path: Path) -> None:
     """Lay out and write a finished figure as PNG, in a helper process when the report
     is rendered with background saves (:mod:`.parallel`)."""
+    from . import cache
     from .parallel import save
 
+    call = _call_key.get()
+
     def write():
-        fig.tight_layout()
-        # zlib level 3 instead of 6: a third less time, files ~8 % larger
-        with atomic_path(path) as tmp:
-            fig.savefig(tmp, dpi=DPI, pil_kwargs={"compress_level": 3})
+        # a figure drawn before with the same state is copied from the cache (render/cache.py)
+        key = cache.figure_key(fig, f"tight_layout; png dpi={DPI} zlib=3")
+        if not cache.fetch(key, Path(path)):
+            fig.tight_layout()
+            # zlib level 3 instead of 6: a third less time, files ~8 % larger
+            with atomic_path(path) as tmp:
+                fig.savefig(tmp, dpi=DPI, pil_kwargs={"compress_level": 3})
+            cache.store_file(key, Path(path))
+        cache.store_file(call, Path(path))
 
     save(write, Path(path).name)
 
@@ -84,6 +118,7 @@ def _phase_axis(ax, working_span_deg: float, positions=None):
         ax.plot(ph, values, "o", ms=3, color="C3", zorder=3)
 
 
+@cached
 def curves_vs_phase(path: Path, lang: str, phase_deg, series, ylabels, working_span_deg,
                     position_marks=None, size=(7.0, 6.0)):
     """Stacked curves sharing the crank-angle axis; ``series`` is a list of arrays."""
@@ -110,6 +145,7 @@ def curves_vs_phase(path: Path, lang: str, phase_deg, series, ylabels, working_s
         axes[-1].set_xlabel(lab["phase"])
 
 
+@cached
 def balancing_torque(path: Path, lang: str, phase_deg, mb, mean_mb, cutting, working_span_deg,
                      position_marks):
     lab = LABELS[lang]
@@ -126,6 +162,7 @@ def balancing_torque(path: Path, lang: str, phase_deg, mb, mean_mb, cutting, wor
         ax.legend(fontsize=7, loc="lower left")
 
 
+@cached
 def energy(path: Path, lang: str, phase_deg, energy_j, at_min_deg, at_max_deg, swing,
            working_span_deg):
     lab = LABELS[lang]
@@ -144,6 +181,7 @@ def energy(path: Path, lang: str, phase_deg, energy_j, at_min_deg, at_max_deg, s
         ax.set_ylabel(lab["energy"])
 
 
+@cached
 def reactions(path: Path, lang: str, phase_deg, named, working_span_deg):
     lab = LABELS[lang]
     with figure(path, 1, (7.0, 3.6)) as (ax,):
@@ -155,6 +193,7 @@ def reactions(path: Path, lang: str, phase_deg, named, working_span_deg):
         ax.legend(fontsize=7, ncol=4, loc="upper right")
 
 
+@cached
 def mechanism(path: Path, lang: str, pts: dict, labels, guide_y_mm: float, crank_mm: float):
     """Skeleton of the mechanism at the textbook positions (all in mm).
 

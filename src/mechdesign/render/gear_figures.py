@@ -9,7 +9,7 @@ import numpy as np
 
 from ..i18n import N_
 from ..stages.gear import GearDrawing
-from .figures import figure
+from .figures import cached, figure
 from .labels import LabelTable
 
 LABELS = LabelTable({
@@ -27,6 +27,7 @@ LABELS = LabelTable({
 })
 
 
+@cached
 def meshing_drawing(path: Path, lang: str, drawing: GearDrawing, title: str | None = None):
     """Both gears with their generated involute teeth around the mesh, their pitch, base,
     tip and root circles, the centres and the line of centres (O2, far above, is marked by

@@ -166,6 +166,7 @@ def _kin_axes(ax, poly, title: str, mu_unit: str, lang: str):
     ax.grid(True, lw=0.3, alpha=0.4)
 
 
+@fig.cached
 def _kin_figure(path: Path, pos, lang: str) -> None:
     t = _T[lang]
     with fig.figure(path, 1, (7.0, 3.6), sharex=False) as axes:
@@ -179,6 +180,7 @@ def _kin_figure(path: Path, pos, lang: str) -> None:
         del plt
 
 
+@fig.cached
 def _force_figure(path: Path, pos, fg, members: dict, lang: str) -> None:
     """Left: the group's links at μl with their loads (arrows of a common length, named);
     right: the force polygon at μF."""

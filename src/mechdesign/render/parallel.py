@@ -51,6 +51,11 @@ def note_typst_used() -> None:
     _typst_used = True
 
 
+def typst_used() -> bool:
+    """Whether this process has run typst (and so must not fork a process that will)."""
+    return _typst_used
+
+
 def usable_cpus() -> int:
     try:
         return len(os.sched_getaffinity(0))

@@ -320,6 +320,165 @@ def typst_fonts():
                        font_paths=dirs)
 
 
+# --- a warm typst process (mechdesign watch) -------------------------------------------
+#
+# typst lays out a 60-page report in ~2 s the first time and in a fraction of that when
+# it compiled a similar document before in the same process (its memoised layout and the
+# fonts it parsed stay in memory). A long-lived process (the watch) starts one compiling
+# process with :func:`start_service` before it runs anything; this process and the
+# children it forks then send their compilations there (:func:`_service_compile`) and
+# stay free of typst's threads, so they may go on forking.
+
+_service_address: str | None = None
+
+
+def start_service():
+    """Start the compiling process (Linux: forked; it never forks itself). Returns a
+    function that stops it. Compilations fall back to this process if it is gone; a
+    process that has already run typst starts none (it cannot fork one safely)."""
+    global _service_address
+    import select
+    import shutil
+    import signal
+
+    from .parallel import typst_used
+
+    if typst_used() or not hasattr(os, "fork"):
+        # typst's threads do not survive a fork: a process that has compiled keeps
+        # compiling itself
+        return lambda: None
+    folder = tempfile.mkdtemp(prefix="mechdesign-typst-")
+    address = os.path.join(folder, "socket")
+    read_end, write_end = os.pipe()
+    pid = os.fork()
+    if pid == 0:                         # the compiling process
+        code = 0
+        try:
+            os.close(read_end)
+            signal.signal(signal.SIGINT, signal.SIG_IGN)   # the watch's Ctrl-C stops it
+            signal.signal(signal.SIGTERM, signal.SIG_DFL)
+            _end_with_parent()
+            _serve(address, write_end)
+        except BaseException:  # noqa: BLE001 - a dead service only means local compiles
+            code = 1
+        finally:
+            os._exit(code)
+    os.close(write_end)
+    with os.fdopen(read_end, "rb") as ready:
+        ok = bool(select.select([ready], [], [], 120)[0]) and ready.read(1) == b"1"
+    _service_address = address if ok else None
+
+    def stop() -> None:
+        global _service_address
+        _service_address = None
+        try:
+            os.kill(pid, signal.SIGTERM)
+            os.waitpid(pid, 0)
+        except (ProcessLookupError, ChildProcessError):
+            pass
+        shutil.rmtree(folder, ignore_errors=True)
+
+    if not ok:          # it did not start: compile here
+        stop()
+        return lambda: None
+    return stop
+
+
+def _end_with_parent() -> None:
+    """Linux: this process gets SIGKILL when its parent ends, however it ends."""
+    try:
+        import ctypes
+        import signal
+
+        ctypes.CDLL(None, use_errno=True).prctl(1, int(signal.SIGKILL))  # PR_SET_PDEATHSIG
+    except Exception:  # noqa: BLE001 - without it, the parent's stop() still ends it
+        pass
+
+
+def _serve(address: str, ready_fd: int) -> None:
+    from multiprocessing.connection import Listener
+
+    import typst
+
+    listener = Listener(address, family="AF_UNIX")
+    fonts = typst_fonts()
+    try:      # the CJK fonts parsed once, before the first report asks for them
+        families = cjk_families()
+        sample = "x " + chr(0x4E2D)            # a Latin and a CJK glyph
+        typst.compile(f'#set text(font: ("{families["serif"]}", "{families["sans"]}"))\n'
+                      f'{sample}'.encode("utf-8"), font_paths=fonts)
+    except Exception:  # noqa: BLE001 - a warm-up only
+        pass
+    os.write(ready_fd, b"1")
+    os.close(ready_fd)
+    while True:
+        with listener.accept() as conn:
+            try:
+                kind, args, options = conn.recv()
+            except EOFError:
+                continue
+            try:
+                if kind == "file":
+                    out, found = typst.compile_with_warnings(*args, font_paths=fonts, **options)
+                    conn.send(("ok", out, [_typst_message(w) for w in found]))
+                else:
+                    conn.send(("ok", typst.compile(*args, font_paths=fonts, **options), []))
+            except typst.TypstError as exc:
+                conn.send(("error", _typst_message(exc), []))
+            except Exception as exc:  # noqa: BLE001 - the client compiles itself
+                conn.send(("failed", repr(exc), []))
+
+
+class _TypstFailed(Exception):
+    def __init__(self, message: str):
+        super().__init__(message)
+        self.message = message
+
+
+def _service_compile(kind: str, args: tuple, options: dict):
+    """(output, warnings) from the compiling process, or None (no service, or it failed:
+    compile here). Raises _TypstFailed with typst's message for an error in the source."""
+    if _service_address is None:
+        return None
+    from multiprocessing.connection import Client
+
+    try:
+        with Client(_service_address, family="AF_UNIX") as conn:
+            conn.send((kind, args, options))
+            status, out, found = conn.recv()
+    except (OSError, EOFError):
+        return None
+    if status == "error":
+        raise _TypstFailed(out)
+    if status != "ok":
+        return None
+    return out, found
+
+
+def cached_compile(source: bytes, **options):
+    """``typst.compile(source, **options)`` of a self-contained source (it reads no file),
+    from the cache when compiled before (render/cache.py; ``font_paths`` is not part of
+    the key: the fonts' identity is)."""
+    import typst
+
+    from . import cache
+
+    key = cache.typst_key(source, None, **{k: v for k, v in options.items()
+                                            if k != "font_paths"})
+    stored = cache.fetch_bytes(key)
+    if stored is not None:
+        return stored
+    try:
+        served = _service_compile("bytes", (source,), {k: v for k, v in options.items()
+                                                        if k != "font_paths"})
+    except _TypstFailed as exc:
+        raise typst.TypstError(exc.message) from None
+    out = typst.compile(source, **options) if served is None else served[0]
+    if isinstance(out, bytes):
+        cache.store(key, out)
+    return out
+
+
 def _typst_message(exc: Exception) -> str:
     """Readable text of a typst.TypstError (message, diagnostic and hints)."""
     parts = [getattr(exc, "diagnostic", "") or getattr(exc, "message", "") or str(exc)]
@@ -372,24 +531,46 @@ def compile_pdf(source: str, root: Path, pdf_path: Path, metadata: dict,
     root, pdf_path = Path(root).resolve(), Path(pdf_path).resolve()
     source = _use_vector_images(source, {k: v for k, v in (substitutes or {}).items()
                                          if (root / v).is_file()})
-    note_typst_used()
+    from . import cache
+
+    timestamp = source_timestamp(metadata.get("date"))
     fd, typ_name = tempfile.mkstemp(prefix=f".{stem}-", suffix=".typ", dir=root)
     try:
         with os.fdopen(fd, "w", encoding="utf-8") as handle:
             handle.write(source)
-        try:
-            pdf_bytes, typst_warnings = typst.compile_with_warnings(
-                typ_name,
-                root=str(root),
-                font_paths=typst_fonts(),
-                timestamp=source_timestamp(metadata.get("date")),
-            )
-        except typst.TypstError as exc:
-            raise PdfRenderError(f"typst failed to compile {stem}.md:\n{_typst_message(exc)}") from exc
+        # the same source, images and options compiled before: the PDF from the cache
+        # (render/cache.py; the typst warnings are stored with it)
+        key = cache.typst_key(source, root, skip=Path(typ_name), timestamp=timestamp,
+                              format="pdf")
+        stored = cache.fetch_bytes(key)
+        if stored is not None:
+            head, pdf_bytes = stored.split(b"\n", 1)
+            typst_warnings = json.loads(head.decode("utf-8"))
+        else:
+            try:
+                served = _service_compile("file", (typ_name,),
+                                          {"root": str(root), "timestamp": timestamp})
+            except _TypstFailed as exc:
+                raise PdfRenderError(f"typst failed to compile {stem}.md:\n{exc.message}") from None
+            if served is not None:
+                pdf_bytes, typst_warnings = served
+            else:
+                note_typst_used()
+                try:
+                    pdf_bytes, found = typst.compile_with_warnings(
+                        typ_name,
+                        root=str(root),
+                        font_paths=typst_fonts(),
+                        timestamp=timestamp,
+                    )
+                except typst.TypstError as exc:
+                    raise PdfRenderError(f"typst failed to compile {stem}.md:\n{_typst_message(exc)}") from exc
+                typst_warnings = [_typst_message(w) for w in found]
+            cache.store(key, json.dumps(typst_warnings).encode("utf-8") + b"\n" + pdf_bytes)
     finally:
         Path(typ_name).unlink(missing_ok=True)
 
-    for warning in typst_warnings:
-        warnings.warn(f"typst: {_typst_message(warning)}", stacklevel=3)
+    for text in typst_warnings:
+        warnings.warn(f"typst: {text}", stacklevel=3)
 
     write_bytes(pdf_path, pdf_bytes)

@@ -78,13 +78,29 @@ def render_markdown(template_name: str, ctx: dict, templates: Path,
     env = SandboxedEnvironment(loader=_LanguageLoader(str(templates), lang),
                              undefined=jinja2.StrictUndefined, autoescape=False,
                              keep_trailing_newline=True, extensions=["jinja2.ext.i18n"],
-                             comment_start_string="{##", comment_end_string="##}")
+                             comment_start_string="{##", comment_end_string="##}",
+                             bytecode_cache=_bytecode_cache())
     env.install_gettext_callables(**jinja_callables(lang), newstyle=True)
     if "cite" not in ctx:      # the citation counter (render/summary.py), one per report
         from .summary import Citations
 
         ctx = {**ctx, "cite": Citations(lang)}
     return env.get_template(template_name).render(**ctx)
+
+
+def _bytecode_cache():
+    """The templates compiled once, kept in the render cache's folder (render/cache.py;
+    Jinja keys each by its name and a checksum of its source); None when caching is off."""
+    from . import cache
+
+    where = cache.folder()
+    if where is None:
+        return None
+    try:
+        (where / "jinja").mkdir(parents=True, exist_ok=True)
+    except OSError:
+        return None
+    return jinja2.FileSystemBytecodeCache(str(where / "jinja"))
 
 
 def group_banner(group: str, lang: str) -> str:

@@ -214,7 +214,7 @@ def write_sheets(jobs) -> None:
 
     from .parallel import note_typst_used
     from ..fileio import write_bytes
-    from .pdf import PdfRenderError, _typst_message, source_timestamp, typst_fonts
+    from .pdf import PdfRenderError, _typst_message, cached_compile, source_timestamp, typst_fonts
 
     note_typst_used()
     fonts = typst_fonts()          # the shipped fonts only, found once
@@ -225,11 +225,11 @@ def write_sheets(jobs) -> None:
         date = sheet.info.date if sheet.info is not None else None
         try:
             if pdf is not None:
-                write_bytes(Path(pdf), typst.compile(
+                write_bytes(Path(pdf), cached_compile(
                     source, font_paths=fonts, timestamp=source_timestamp(date)))
             if png is not None:
-                image = typst.compile(source, font_paths=fonts, format="png",
-                                      ppi=width / (sheet.width / 25.4))
+                image = cached_compile(source, font_paths=fonts, format="png",
+                                       ppi=width / (sheet.width / 25.4))
                 write_bytes(Path(png), image if isinstance(image, bytes) else image[0])
         except typst.TypstError as exc:
             raise PdfRenderError(f"typst failed to draw the sheet "

@@ -1,0 +1,150 @@
+"""The render cache (mechdesign/render/cache.py): a figure's key is its state, the same
+in every process and under every hash seed, changes with the figure's data and text, and
+a run served from the cache writes the same bytes as a run that draws everything."""
+from __future__ import annotations
+
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+ROOT = Path(__file__).resolve().parents[1]
+
+_KEY = r"""
+import sys
+import matplotlib
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt
+import numpy as np
+from matplotlib.ticker import FuncFormatter
+from mechdesign.render import cache
+from mechdesign.render.fonts import configure_matplotlib
+
+configure_matplotlib()
+scale = float(sys.argv[1])
+fig, axes = plt.subplots(2, 1, figsize=(7, 4), sharex=True, dpi=150)
+x = np.linspace(0, 360, 361)
+for ax in axes:
+    ax.plot(x, scale * np.sin(np.radians(x)))
+    ax.axvspan(0, 200, color="0.93")
+    ax.set_ylabel(sys.argv[2])
+top = axes[0].secondary_xaxis("top")
+top.set_xticks([30, 90])
+axes[1].yaxis.set_major_formatter(FuncFormatter(lambda v, _: f"{v * scale:.1f}"))
+axes[1].annotate("", xy=(10, 0.5), xytext=(90, 0.2), arrowprops=dict(arrowstyle="<->"))
+plt.close(fig)        # as a background save sees it: no longer held by pyplot
+print(cache.figure_key(fig, "test"))
+"""
+
+
+def _key(tmp_path, scale="1.0", label="速度 v (m/s)", seed="0") -> str:
+    env = {"MECHDESIGN_CACHE": str(tmp_path / "c"), "PYTHONHASHSEED": seed,
+           "MPLBACKEND": "Agg", "PATH": "/usr/bin:/bin"}
+    out = subprocess.run([sys.executable, "-c", _KEY, scale, label], env=env, cwd=ROOT,
+                         capture_output=True, text=True, check=True)
+    return out.stdout.strip()
+
+
+def test_figure_key_is_the_same_in_every_process(tmp_path):
+    first = _key(tmp_path, seed="1")
+    assert len(first) == 64
+    assert _key(tmp_path, seed="2") == first
+
+
+def test_figure_key_changes_with_data_text_and_closure(tmp_path):
+    base = _key(tmp_path)
+    assert _key(tmp_path, scale="1.001") != base          # data and the formatter's closure
+    assert _key(tmp_path, label="velocity v (m/s)") != base
+
+
+def test_off_means_no_key(monkeypatch):
+    from mechdesign.render import cache
+
+    monkeypatch.setenv("MECHDESIGN_CACHE", "off")
+    assert cache.folder() is None
+    assert cache.figure_key(object(), "x") is None
+    assert cache.typst_key("x", None) is None
+
+
+def test_typst_key_covers_the_files_under_root(tmp_path, monkeypatch):
+    from mechdesign.render import cache
+
+    monkeypatch.setenv("MECHDESIGN_CACHE", str(tmp_path / "c"))
+    root = tmp_path / "root"
+    (root / "figures").mkdir(parents=True)
+    (root / "figures" / "a.png").write_bytes(b"one")
+    key = cache.typst_key("#image(\"figures/a.png\")", root, timestamp=0)
+    assert cache.typst_key("#image(\"figures/a.png\")", root, timestamp=0) == key
+    assert cache.typst_key("#image(\"figures/a.png\")", root, timestamp=1) != key
+    (root / "figures" / "a.png").write_bytes(b"two")
+    assert cache.typst_key("#image(\"figures/a.png\")", root, timestamp=0) != key
+
+
+@pytest.mark.e2e
+def test_a_cached_run_writes_the_same_files(tmp_path):
+    """Cold (cache off), then twice with the cache (filling it, then served from it):
+    every file of the three outputs is byte-identical."""
+    import os
+
+    outs = []
+    for k, setting in enumerate(("off", str(tmp_path / "cache"), str(tmp_path / "cache"))):
+        env = dict(os.environ, MECHDESIGN_CACHE=setting, MPLBACKEND="Agg")
+        out = tmp_path / f"out{k}"
+        subprocess.run([sys.executable, "-m", "mechdesign", "run", "designs/cam_7_1.yaml",
+                        "-o", str(out)], env=env, cwd=ROOT, check=True, capture_output=True)
+        outs.append(out)
+    files = sorted(p.relative_to(outs[0]) for p in outs[0].rglob("*") if p.is_file())
+    assert any(p.suffix == ".png" for p in files) and any(p.suffix == ".pdf" for p in files)
+    for other in outs[1:]:
+        assert sorted(p.relative_to(other) for p in other.rglob("*") if p.is_file()) == files
+        for rel in files:
+            assert (other / rel).read_bytes() == (outs[0] / rel).read_bytes(), rel
+    assert any((tmp_path / "cache").rglob("*"))
+
+
+_SERVICE = r"""
+import sys
+from pathlib import Path
+from mechdesign.render import parallel, pdf
+
+tmp = Path(sys.argv[1])
+src = "#set page(width: 50mm, height: 30mm)\nHello $x^2$"
+stop = pdf.start_service()
+try:
+    assert pdf._service_address is not None
+    pdf.compile_pdf(src, tmp, tmp / "served.pdf", {"date": "1970-01-01"})
+    assert not parallel.typst_used()
+    try:
+        pdf.compile_pdf("#let x = (", tmp, tmp / "bad.pdf", {})
+    except pdf.PdfRenderError as exc:
+        assert "typst failed" in str(exc)
+    else:
+        raise AssertionError("no error")
+    assert not (tmp / "bad.pdf").exists()
+finally:
+    stop()
+assert pdf._service_address is None
+pdf.compile_pdf(src, tmp, tmp / "here.pdf", {"date": "1970-01-01"})
+assert parallel.typst_used()
+assert pdf.start_service()() is None      # after typst ran here: no service, a no-op stop
+assert pdf._service_address is None
+print("ok")
+"""
+
+
+def test_the_warm_typst_process_compiles_for_this_one(tmp_path):
+    """mechdesign watch's compiling process (render/pdf.py start_service), in a fresh
+    interpreter (a process that has run typst must not fork one): the PDF is the one
+    typst makes in the process itself, an error in the source comes back as
+    PdfRenderError, the process is not marked as having run typst (it may still fork);
+    after stop() it compiles itself, and then starts no service."""
+    import os
+
+    if not sys.platform.startswith("linux"):
+        pytest.skip("the compiling process is forked (Linux)")
+    env = dict(os.environ, MECHDESIGN_CACHE="off")
+    out = subprocess.run([sys.executable, "-c", _SERVICE, str(tmp_path)], env=env, cwd=ROOT,
+                         capture_output=True, text=True, timeout=300)
+    assert out.returncode == 0 and out.stdout.strip() == "ok", out.stderr
+    assert (tmp_path / "served.pdf").read_bytes() == (tmp_path / "here.pdf").read_bytes()
