@@ -148,3 +148,26 @@ def test_the_warm_typst_process_compiles_for_this_one(tmp_path):
                          capture_output=True, text=True, timeout=300)
     assert out.returncode == 0 and out.stdout.strip() == "ok", out.stderr
     assert (tmp_path / "served.pdf").read_bytes() == (tmp_path / "here.pdf").read_bytes()
+
+
+def test_trimming_removes_only_the_caches_own_entries(tmp_path, monkeypatch):
+    """A cache folder set to a folder that holds other files: trimming (here to 0 bytes)
+    removes the entries the cache wrote and nothing else (a run never deletes a file it did
+    not write)."""
+    from mechdesign.render import cache
+
+    theirs = [tmp_path / "notes.txt", tmp_path / "ab" / "thesis.docx", tmp_path / "photos" / "a.png",
+              tmp_path / "ab" / ("ab" + "0" * 61)]          # 63 hex digits: not an entry name
+    for path in theirs:
+        path.parent.mkdir(parents=True, exist_ok=True)
+        path.write_bytes(b"x" * 1000)
+    monkeypatch.setenv("MECHDESIGN_CACHE", str(tmp_path))
+    monkeypatch.setattr(cache, "LIMIT_BYTES", 0)
+    monkeypatch.setattr(cache, "_trimmed", True)         # no trim while storing
+    key = "ab" + "1" * 62
+    cache.store(key, b"entry")
+    assert (tmp_path / "ab" / key).read_bytes() == b"entry"
+    monkeypatch.setattr(cache, "_trimmed", False)
+    cache._trim_once(tmp_path)
+    assert not (tmp_path / "ab" / key).exists()
+    assert all(path.read_bytes() == b"x" * 1000 for path in theirs)

@@ -34,6 +34,7 @@ from __future__ import annotations
 import hashlib
 import io
 import os
+import re
 import pickle
 import types
 from functools import lru_cache
@@ -45,6 +46,8 @@ LIMIT_BYTES = 300 * 2**20
 FORMAT = "1"
 
 _trimmed = False
+_ENTRY_DIR = re.compile(r"[0-9a-f]{2}")
+_ENTRY = re.compile(r"[0-9a-f]{64}")
 _stats = {"hit": 0, "miss": 0}
 
 
@@ -136,10 +139,13 @@ def _trim_once(where: Path) -> None:
     try:
         entries = []
         for sub in where.iterdir():
-            if sub.is_dir():
+            if sub.is_dir() and _ENTRY_DIR.fullmatch(sub.name):
                 for f in sub.iterdir():
-                    st = f.stat()
-                    entries.append((st.st_mtime, st.st_size, f))
+                    # only the entries the cache wrote (<2 hex>/<that prefix + 62 hex>): a
+                    # cache pointed at a folder holding other files never removes them
+                    if _ENTRY.fullmatch(f.name) and f.name[:2] == sub.name and f.is_file():
+                        st = f.stat()
+                        entries.append((st.st_mtime, st.st_size, f))
         total = sum(size for _, size, _ in entries)
         for _, size, f in sorted(entries):
             if total <= LIMIT_BYTES:
