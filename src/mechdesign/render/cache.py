@@ -69,23 +69,12 @@ def stats() -> dict[str, int]:
 
 def fetch(key: str | None, target: Path) -> bool:
     """Copy the entry ``key`` to ``target`` (atomically); False if there is none."""
+    data = fetch_bytes(key)
+    if data is None:
+        return False
     from ..fileio import write_bytes
 
-    where = folder()
-    if key is None or where is None:
-        return False
-    entry = where / key[:2] / key
-    try:
-        data = entry.read_bytes()
-    except OSError:
-        _stats["miss"] += 1
-        return False
-    try:
-        os.utime(entry)             # recently used: trimmed last
-    except OSError:
-        pass
     write_bytes(target, data, fsync=False)
-    _stats["hit"] += 1
     return True
 
 
@@ -101,7 +90,7 @@ def fetch_bytes(key: str | None) -> bytes | None:
         _stats["miss"] += 1
         return None
     try:
-        os.utime(entry)
+        os.utime(entry)             # recently used: trimmed last
     except OSError:
         pass
     _stats["hit"] += 1
