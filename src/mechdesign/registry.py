@@ -33,13 +33,21 @@ class Entry:
     checks: str = ""            # "module:function" feasibility checks(params, keep), run once
 
 
-def summary_row(row: tuple, lang: str) -> tuple:
+def summary_row(row: tuple, lang: str, document: dict | None = None) -> tuple:
     """(label in ``lang``, unit, path, factor) of an entry's summary row: (N_(English label),
-    unit, path, factor)."""
+    unit, path, factor). With the results ``document``: a stroke whose output is a rocker
+    (the output's ``unit`` is rad) is its swing in degrees."""
     from .i18n import tr
 
     label, unit, path, factor = row
-    return tr(lang)(label), unit, path, factor
+    _ = tr(lang)
+    if document is not None and path.endswith(".stroke"):
+        node = document
+        for part in path.split(".")[:-1]:
+            node = node.get(part) if isinstance(node, dict) else None
+        if isinstance(node, dict) and node.get("unit") == "rad":
+            return _("swing of the output"), "°", path, 180 / 3.141592653589793
+    return _(label), unit, path, factor
 
 
 def resolve(ref: str) -> Any:

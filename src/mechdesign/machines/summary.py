@@ -51,8 +51,11 @@ def summary_rows(machine: str, document: dict, lang: str) -> list[tuple[str, str
 
     rows = []
     for row in _rows(machine):
-        label, unit, path, factor = summary_row(row, lang)
-        text = _show(_get(document, path), factor)
+        label, unit, path, factor = summary_row(row, lang, document)
+        value = _get(document, path)
+        if path.endswith(".peak_torque") and not value:
+            continue        # no loads given: no driving torque was computed
+        text = _show(value, factor)
         if text is None:
             continue
         rows.append((f"{label} [{unit}]" if unit else label, text))

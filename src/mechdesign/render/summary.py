@@ -18,7 +18,6 @@ from __future__ import annotations
 import inspect
 import math
 import re
-import textwrap
 from functools import lru_cache
 from importlib import resources
 from pathlib import Path
@@ -331,8 +330,11 @@ def key_rows(machine: str, document: dict, lang: str) -> list[list[str]]:
     except KeyError:
         listed = ()
     for row in listed:
-        label, unit, path, factor = summary_row(row, lang)
-        text = _show(_get(document, path), factor)
+        label, unit, path, factor = summary_row(row, lang, document)
+        value = _get(document, path)
+        if path.endswith(".peak_torque") and not value:
+            continue        # no loads given: no driving torque was computed
+        text = _show(value, factor)
         if text is None:
             continue
         rows.append([_label(label), text, unit or "—"])
@@ -344,9 +346,16 @@ def key_rows(machine: str, document: dict, lang: str) -> list[list[str]]:
         found = _find(document, leaf)
         if found is None:
             continue
-        text = _show(found[1], factor)
+        if leaf == "peak_torque" and not found[1]:
+            continue        # no loads given: no driving torque was computed
+        shown_label, shown_unit, shown_factor = translated(label, _), unit, factor
+        if leaf == "stroke":        # a rocker's stroke is its swing (rad → °)
+            swing = summary_row((label, unit, found[0], factor), lang, document)
+            if swing[1] != unit:
+                shown_label, shown_unit, _path, shown_factor = swing
+        text = _show(found[1], shown_factor)
         if text is not None:
-            rows.append([translated(label, _), text, unit or "—"])
+            rows.append([shown_label, text, shown_unit or "—"])
             paths.add(leaf)
     for fol in document.get("followers") or ():        # the disc cam's followers
         text = _show(fol.get("stroke"), 1e3)
