@@ -278,3 +278,25 @@ def test_run_writes_summary_and_references(tmp_path):
     md = (tmp_path / "r" / "report.md").read_text(encoding="utf-8")
     assert headings(md)[-2:] == ["Summary", "References"]
     assert "SUN Huan, CHEN Zuomo, GE Wenjie" in md
+
+
+def test_a_rocking_outputs_stroke_is_summarised_as_its_swing_in_degrees():
+    """The summary's stroke row: metres → mm for a slider, rad → ° (labelled as the swing)
+    for a rocker; a peak torque of 0 (no load given) is not listed."""
+    import math
+
+    from mechdesign.machines.summary import summary_rows
+    from mechdesign.registry import summary_row
+
+    row = ("stroke", "mm", "linkage.output.stroke", 1e3)
+    rocker = {"linkage": {"output": {"unit": "rad", "stroke": math.radians(30.0)}}}
+    slider = {"linkage": {"output": {"unit": "m", "stroke": 0.25}}}
+    label, unit, _path, factor = summary_row(row, "en", rocker)
+    assert (label, unit) == ("swing of the output", "°")
+    assert math.radians(30.0) * factor == pytest.approx(30.0)
+    assert summary_row(row, "en", slider) == ("stroke", "mm", "linkage.output.stroke", 1e3)
+    assert summary_row(row, "zh", rocker)[0] == "输出构件摆角"
+    rows = dict(summary_rows("linkage", {"linkage": {**rocker["linkage"], "peak_torque": 0.0,
+                                                     "mean_torque": 12.5}}, "en"))
+    assert rows["swing of the output [°]"] == "30"
+    assert "peak torque [N·m]" not in rows and rows["mean torque [N·m]"] == "12.5"
