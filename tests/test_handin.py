@@ -286,16 +286,16 @@ def test_a_rocking_outputs_stroke_is_summarised_as_its_swing_in_degrees():
     import math
 
     from mechdesign.machines.summary import summary_rows
-    from mechdesign.registry import summary_row
+    from mechdesign.registry import shown_row
 
     row = ("stroke", "mm", "linkage.output.stroke", 1e3)
     rocker = {"linkage": {"output": {"unit": "rad", "stroke": math.radians(30.0)}}}
     slider = {"linkage": {"output": {"unit": "m", "stroke": 0.25}}}
-    label, unit, _path, factor = summary_row(row, "en", rocker)
+    label, unit, factor, value = shown_row(row, "en", rocker)
     assert (label, unit) == ("swing of the output", "°")
-    assert math.radians(30.0) * factor == pytest.approx(30.0)
-    assert summary_row(row, "en", slider) == ("stroke", "mm", "linkage.output.stroke", 1e3)
-    assert summary_row(row, "zh", rocker)[0] == "输出构件摆角"
+    assert value * factor == pytest.approx(30.0)
+    assert shown_row(row, "en", slider) == ("stroke", "mm", 1e3, 0.25)
+    assert shown_row(row, "zh", rocker)[0] == "输出构件摆角"
     rows = dict(summary_rows("linkage", {"linkage": {**rocker["linkage"], "peak_torque": 0.0,
                                                      "mean_torque": 12.5}}, "en"))
     assert rows["swing of the output [°]"] == "30"

@@ -33,21 +33,40 @@ class Entry:
     checks: str = ""            # "module:function" feasibility checks(params, keep), run once
 
 
-def summary_row(row: tuple, lang: str, document: dict | None = None) -> tuple:
+def summary_row(row: tuple, lang: str) -> tuple:
     """(label in ``lang``, unit, path, factor) of an entry's summary row: (N_(English label),
-    unit, path, factor). With the results ``document``: a stroke whose output is a rocker
-    (the output's ``unit`` is rad) is its swing in degrees."""
+    unit, path, factor)."""
     from .i18n import tr
 
     label, unit, path, factor = row
-    _ = tr(lang)
-    if document is not None and path.endswith(".stroke"):
-        node = document
-        for part in path.split(".")[:-1]:
-            node = node.get(part) if isinstance(node, dict) else None
-        if isinstance(node, dict) and node.get("unit") == "rad":
-            return _("swing of the output"), "°", path, 180 / 3.141592653589793
-    return _(label), unit, path, factor
+    return tr(lang)(label), unit, path, factor
+
+
+def lookup(document: Any, path: str) -> Any:
+    """The value at a dotted ``path`` of a results document (dicts or objects), or None."""
+    node = document
+    for part in path.split("."):
+        node = node.get(part) if isinstance(node, dict) else getattr(node, part, None)
+        if node is None:
+            return None
+    return node
+
+
+def shown_row(row: tuple, lang: str, document: Any) -> tuple | None:
+    """(label in ``lang``, unit, factor, value) of a summary row (:func:`summary_row`) as the
+    results ``document`` gives it, or None when it has no value to show. A stroke whose
+    output is a rocker (the output's ``unit`` is rad) is its swing in degrees; a peak torque
+    of 0 means no load was given (no driving torque computed) and is not shown."""
+    from .i18n import tr
+
+    label, unit, path, factor = summary_row(row, lang)
+    value = lookup(document, path)
+    if value is None or (path.endswith(".peak_torque") and not value):
+        return None
+    if path.endswith(".stroke") and lookup(document, path.rsplit(".", 1)[0] + ".unit") == "rad":
+        _ = tr(lang)
+        return _("swing of the output"), "°", 180 / math.pi, value
+    return label, unit, factor, value
 
 
 def resolve(ref: str) -> Any:

@@ -19,18 +19,6 @@ def _rows(machine: str) -> tuple:
         return ()
 
 
-def _get(document: Any, path: str) -> Any:
-    node = document
-    for part in path.split("."):
-        if isinstance(node, dict):
-            node = node.get(part)
-        else:
-            node = getattr(node, part, None)
-        if node is None:
-            return None
-    return node
-
-
 def _show(value: Any, factor: float) -> str | None:
     if isinstance(value, bool) or value is None:
         return None
@@ -47,14 +35,14 @@ def _show(value: Any, factor: float) -> str | None:
 
 def summary_rows(machine: str, document: dict, lang: str) -> list[tuple[str, str]]:
     """(label with unit, value) pairs of the machine's key results present in ``document``."""
-    from ..registry import summary_row
+    from ..registry import shown_row
 
     rows = []
     for row in _rows(machine):
-        label, unit, path, factor = summary_row(row, lang, document)
-        value = _get(document, path)
-        if path.endswith(".peak_torque") and not value:
-            continue        # no loads given: no driving torque was computed
+        shown = shown_row(row, lang, document)
+        if shown is None:
+            continue
+        label, unit, factor, value = shown
         text = _show(value, factor)
         if text is None:
             continue

@@ -296,16 +296,6 @@ def _show(value: Any, factor: float) -> str | None:
     return "0" if text in ("-0", "0") else grouped(text)
 
 
-def _get(document: Any, path: str) -> Any:
-    """The value at a dotted path of the results document (None when absent)."""
-    node = document
-    for part in path.split("."):
-        node = node.get(part) if isinstance(node, dict) else None
-        if node is None:
-            return None
-    return node
-
-
 # symbols in the registry's plain-text labels (also shown in the terminal) → typeset
 _LABEL_MATH = ((re.compile(r"\bJ_F\b"), r"$J_F$"), (re.compile(r"γ_?min"), r"$\gamma_{min}$"),
                (re.compile(r"\bK\b"), r"$K$"), (re.compile(r"\br0\b"), r"$r_0$"))
@@ -321,7 +311,7 @@ def _label(text: str) -> str:
 def key_rows(machine: str, document: dict, lang: str) -> list[list[str]]:
     """[quantity, value, unit]: the machine's registry summary, then the probed quantities
     it does not give."""
-    from ..registry import entry, summary_row
+    from ..registry import entry, shown_row
 
     _ = tr(lang)
     rows, paths = [], set()
@@ -330,10 +320,11 @@ def key_rows(machine: str, document: dict, lang: str) -> list[list[str]]:
     except KeyError:
         listed = ()
     for row in listed:
-        label, unit, path, factor = summary_row(row, lang, document)
-        value = _get(document, path)
-        if path.endswith(".peak_torque") and not value:
-            continue        # no loads given: no driving torque was computed
+        shown = shown_row(row, lang, document)
+        if shown is None:
+            continue
+        label, unit, factor, value = shown
+        path = row[2]
         text = _show(value, factor)
         if text is None:
             continue
@@ -350,9 +341,8 @@ def key_rows(machine: str, document: dict, lang: str) -> list[list[str]]:
             continue        # no loads given: no driving torque was computed
         shown_label, shown_unit, shown_factor = translated(label, _), unit, factor
         if leaf == "stroke":        # a rocker's stroke is its swing (rad → °)
-            swing = summary_row((label, unit, found[0], factor), lang, document)
-            if swing[1] != unit:
-                shown_label, shown_unit, _path, shown_factor = swing
+            shown_label, shown_unit, shown_factor, _value = shown_row(
+                (label, unit, found[0], factor), lang, document)
         text = _show(found[1], shown_factor)
         if text is not None:
             rows.append([shown_label, text, shown_unit or "—"])
