@@ -132,7 +132,7 @@ def replacement_styles() -> dict[str, str]:
     styles: dict[str, str] = {}
     styles["Normal"] = (
         '<w:style w:type="paragraph" w:default="1" w:styleId="Normal"><w:name w:val="Normal" />'
-        f'<w:qFormat /><w:pPr><w:widowControl />{SINGLE}</w:pPr>'
+        f'<w:qFormat /><w:pPr><w:widowControl /><w:overflowPunct w:val="0" />{SINGLE}</w:pPr>'
         f"<w:rPr>{rfonts(SERIF)}</w:rPr></w:style>")
     body_ppr = BODY_SPACING + '<w:ind w:firstLine="480" /><w:jc w:val="both" />'
     styles["BodyText"] = _pstyle("BodyText", "Body Text", ppr=body_ppr,
@@ -253,6 +253,9 @@ def patch_styles(xml: str) -> str:
     ppr = root.find(f"{W}docDefaults/{W}pPrDefault/{W}pPr")
     for child in list(ppr):
         ppr.remove(child)
+    # no punctuation hanging past the right margin (Word and LibreOffice let a line-end "，" or "、"
+    # overhang a justified CJK line by default; the report keeps every glyph inside the text block)
+    ppr.append(ET.fromstring(f'<w:overflowPunct xmlns:w="{W_NS}" w:val="0" />'))
     ppr.append(ET.fromstring(f'<w:spacing xmlns:w="{W_NS}" w:after="0" w:line="240" w:lineRule="auto" />'))
 
     new = replacement_styles()
