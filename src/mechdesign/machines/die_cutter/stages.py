@@ -41,7 +41,7 @@ from ...core.mechanism import RRP, RRR, Crank, LinkPoint, Mechanism
 from ...core.synthesis import extreme_angle
 from ...pipeline import Stage
 from ...i18n import N_
-from ...stages.findings import Finding, Pair, en_zh, finding, zh_en
+from ...stages.findings import Finding, Msg, Pair, en_zh, finding, finding_of, zh_en
 from ...stages.flywheel import Flywheel, FlywheelSpec, RimSpec, design_flywheel
 from ...core.cycle import CycleDocument
 from ...core.fields import q
@@ -221,14 +221,14 @@ def build_press(d: ToggleDesign, p: DieCutterParams) -> LinkageModel:
         position_step=p.position_step, gravity=p.gravity, flywheel=None,
         pressure_angle_limit=p.pressure_angle_max, transmission_angle_min=p.transmission_angle_min,
         names=names, advice={
-            "pressure": zh_en.gettext("brief fields: a longer press.toggle_BD_mm or a smaller "
-                                      "press.toggle_angle_at_top_deg"),
-            "transmission": zh_en.gettext(
+            "pressure": Msg(N_("brief fields: a longer press.toggle_BD_mm or a smaller "
+                               "press.toggle_angle_at_top_deg")),
+            "transmission": Msg(N_(
                 "brief fields: a smaller press.time_ratio_K, a longer press.toggle_CB_mm (a smaller "
-                "swing), or no press.frame_O1C_mm (the frame with the largest transmission angle)")
-            if g.given is None else zh_en.gettext(
+                "swing), or no press.frame_O1C_mm (the frame with the largest transmission angle)"))
+            if g.given is None else Msg(N_(
                 "brief fields: other press.dimensions (crank_O1A_mm, coupler_AB_mm, frame_O1C_mm), "
-                "or synthesise from stroke_H_mm and time_ratio_K instead")})
+                "or synthesise from stroke_H_mm and time_ratio_K instead"))})
 
 
 #: TogglePress fields a synthesis message may start with ("stroke_H_mm = 400 …").
@@ -481,7 +481,7 @@ def feed(amp: Amplification, p: DieCutterParams) -> Feed:
     travel = g.advance / TWO_PI * p.sprocket_teeth * p.chain_pitch
     times = g.times()
     jump = g.engagement_jump()
-    notes = [Finding(n.code, n.zh, n.en) for n in g.notes]
+    notes = [finding_of(n.code, n.message) for n in g.notes]
     return Feed(g, auto, float(radius), float(travel), float(travel / times[1]),
                 float(radius * jump.omega2), tuple(notes), intermittent_curves(g))
 

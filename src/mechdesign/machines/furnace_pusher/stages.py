@@ -42,7 +42,7 @@ from ...core.synthesis import extreme_angle
 from ...pipeline import Stage
 from ...stages.drive import DriveDocument, design_drive, drive_document
 from ...i18n import N_
-from ...stages.findings import Finding, Pair, en_zh, finding, zh_en
+from ...stages.findings import Finding, Msg, Pair, en_zh, finding, zh_en
 from ...core.extremes import brentq, fminbound
 from ...stages.linkage import LinkageDocument, LinkageModel, Output, Resistance, linkage_document, linkage_stages
 from ...stages import titles
@@ -455,11 +455,11 @@ def build_model(syn: PusherSynthesis, p: FurnaceParams) -> LinkageModel:
         grid_points=p.grid_points, position_step=p.position_step, gravity=p.gravity,
         flywheel=None, pressure_angle_limit=pp.pressure_angle_max,
         transmission_angle_min=pp.transmission_angle_min, names=link_names(), advice={
-            "pressure": zh_en.gettext("brief fields: a longer pusher.link_CE_mm, or "
-                                      "pusher.guide_offset_mm closer to 0"),
-            "transmission": zh_en.gettext("brief fields: a smaller pusher.time_ratio_K or a larger "
-                                          "swing (pusher.stroke_H_mm / pusher.rocker_DC_mm), "
-                                          "pusher.frame_O1D_mm: auto")})
+            "pressure": Msg(N_("brief fields: a longer pusher.link_CE_mm, or "
+                               "pusher.guide_offset_mm closer to 0")),
+            "transmission": Msg(N_("brief fields: a smaller pusher.time_ratio_K or a larger "
+                                   "swing (pusher.stroke_H_mm / pusher.rocker_DC_mm), "
+                                   "pusher.frame_O1D_mm: auto"))})
 
 
 def checks(p: FurnaceParams, keep: dict | None = None) -> list:
