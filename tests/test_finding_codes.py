@@ -134,3 +134,15 @@ def test_results_json_holds_codes_and_numbers_in_its_findings(make, codes):
         f = Finding(**stored)
         assert f.text("en") == entry["text"] and CJK.search(f.text("zh"))
         assert any(f.text("zh") == w.text("zh") for w in shown)
+
+
+def test_a_failed_self_check_names_its_shaft_by_message():
+    from mechdesign.stages.cam import SelfCheck, failed_findings
+    from mechdesign.stages.drive import DRIVE_CHECK_NAMES
+
+    shaft = i18n.catalogue("zh")[(None, "shaft {name}")]
+    detail = {"where_zh": shaft.format(name=2), "where_en": "shaft 2", "shaft": 2}
+    (f,) = failed_findings([SelfCheck("reactions", 1e-3, 1e-9, detail=detail)], DRIVE_CHECK_NAMES)
+    assert f.code == "self_check" and not CJK.search(json.dumps(f.args, ensure_ascii=False))
+    assert f" ({shaft.format(name=2)}) = 0.001" in f.text("zh")
+    assert f.text("en").startswith("self-check failed: bearing reactions") and "(shaft 2) = 0.001" in f.text("en")

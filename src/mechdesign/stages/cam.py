@@ -17,7 +17,7 @@ from ..core import cam as core
 from ..core.fields import q
 from ..pipeline import Stage
 from ..i18n import N_
-from .findings import Cat, CheckNames, Finding, Msg, Pair, en_zh, finding, zh_en
+from .findings import Cat, CheckNames, Finding, Msg, Pair, finding, zh_en
 from . import titles
 
 GRID_POINTS = 3600
@@ -121,7 +121,7 @@ def design(p) -> CamResult:
     designed = p.base_radius is None
     if designed:
         if min_r0 is None:
-            raise core.CamDesignError(*en_zh(N_(
+            raise core.CamDesignError(Msg(N_(
                 "cam.base_radius_mm: 'auto' cannot be met: no base radius keeps the pressure angle "
                 "within the limits; give a base radius")))
         r0 = float(np.ceil(min_r0 * 1e3 - 1e-9) / 1e3)          # whole millimetres, upwards
@@ -361,9 +361,19 @@ def failed_findings(checks, names: dict) -> list[Finding]:
                 "self_check",
                 N_("self-check failed: {name}{where} = {value:.4g} (limit {limit:.4g}, SI units); "
                    "the results cannot be trusted, please report it."),
-                name=Pair(zh, en), where=Pair(_where(c, "zh"), _where(c, "en")), value=c.value,
-                limit=c.limit))
+                name=Pair(zh, en), where=_where_message(c), value=c.value, limit=c.limit))
     return out
+
+
+def _where_message(c: SelfCheck):
+    """:func:`_where` as a message field: a drive shaft's name as its message (when it gives
+    the texts the check holds), else the two texts."""
+    zh, en = _where(c, "zh"), _where(c, "en")
+    if "shaft" in c.detail and "label" not in c.detail:
+        msg = Msg(N_("shaft {name}"), name=c.detail["shaft"])
+        if (f" ({msg.text('zh')})", f" ({msg.text('en')})") == (zh, en):
+            return Cat(" (", msg, ")")
+    return Pair(zh, en)
 
 
 def _where(c: SelfCheck, lang: str) -> str:

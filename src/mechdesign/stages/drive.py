@@ -18,7 +18,7 @@ from ..core.fields import q
 from ..data import load_csv, load_yaml
 from . import drive_elements as de, drive_strength as ds
 from ..i18n import N_, tr
-from .findings import CheckNames, Finding, Msg, Named, Pair, en_zh, finding, zh_en
+from .findings import CheckNames, Finding, Msg, Named, Pair, finding, zh_en
 
 
 @dataclass(frozen=True)
@@ -192,7 +192,7 @@ def design_drive(dp, machine_power: float, output_rpm: float, source: str,
     # A machine without working resistance takes (almost) no mean power: its torque only
     # swings about zero, the peak factor peak/mean is unbounded and nothing sizes the drive.
     if not (machine_power > 0 and np.isfinite(machine_power) and 0 < peak_factor < 1e6):
-        raise core.DriveDesignError(*en_zh(
+        raise core.DriveDesignError(Msg(
             N_("the machine takes (almost) no mean power ({P:.3g} W at its input shaft, peak "
                "torque {peak:.3g} × the mean): without working resistance nothing sizes the drive; "
                "give the machine a load, or leave the drive section out"),
@@ -405,7 +405,7 @@ def tooth_findings(results) -> list[Finding]:
             fix = (Msg(N_("reduce {here}.x{key}"), here=here, key=key) if gd.x > 0
                    else Msg(N_("use more teeth ({here}.z{key})"), here=here, key=key))
             if gd.sa <= 0:
-                raise DriveDesignError(*en_zh(
+                raise DriveDesignError(Msg(
                     N_("{here}.x{key} = {x:g}: {head} has a tip thickness s_a = {sa:.2f} mm ≤ 0: its "
                        "flanks meet below the tip circle, the tooth cannot be cut; {fix}"),
                     here=here, key=key, x=gd.x, head=head, sa=gd.sa * 1e3, fix=fix))

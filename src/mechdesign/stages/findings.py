@@ -10,9 +10,12 @@ brief field paths, nested messages as ``{"msgid", "context", "args"}``) and the 
 :class:`~mechdesign.i18n.Msg`, a :class:`Cat`, a :class:`~mechdesign.core.errors.Join`, a
 :class:`Named` (a name from a data table) or a :class:`~mechdesign.i18n.Pair` (a text the
 data give in both languages; one whose English is a catalogue msgid with that Chinese is
-stored as the msgid). :func:`en_zh` gives the (English, Chinese) texts of a message for the
-raise sites of design errors that still take both (a design error never reaches
-results.json: it ends the run with a message in the run's language)."""
+stored as the msgid).
+
+Design errors raised by the stages take the same kind of message (``DesignError(Msg(msgid,
+**fields))``: translated when shown, see :mod:`mechdesign.core.errors`); :func:`en_zh`
+still gives the (English, Chinese) texts of a message for the few callers that hold both
+(a brief check's problem rows)."""
 from __future__ import annotations
 
 import json

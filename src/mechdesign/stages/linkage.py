@@ -27,7 +27,7 @@ from ..core.errors import DesignError
 from ..core.extremes import brentq, grid_roots, refine_extreme
 from ..core.fields import q
 from ..i18n import N_, tr
-from .findings import Finding, Msg, Pair, en_zh, finding
+from .findings import Finding, Msg, Pair, finding
 from .positions import Positions, textbook_positions, with_requested
 from ..pipeline import Stage
 from .flywheel import Flywheel, FlywheelSpec, design_flywheel
@@ -350,7 +350,7 @@ def event_phases(model: LinkageModel, code: str, start: float, sense: float, spa
     kind, _, link = code.partition(":")
     links = model.mechanism.solve(np.array([start])).links
     if link not in links:
-        raise DesignError(*en_zh(
+        raise DesignError(Msg(
             N_("analysis.events: {code!r}: link {link!r} is not a moving link; links: {links}"),
             code=code, link=link, links=", ".join(links)))
     trig = np.cos if kind == "link_vertical" else np.sin
@@ -369,7 +369,7 @@ def _requested(model: LinkageModel, req: Requests, start: float, sense: float, s
     for code in req.events:
         found = event_phases(model, code, start, sense, span, s0, ref)
         if not found:
-            raise DesignError(*en_zh(
+            raise DesignError(Msg(
                 N_("analysis.events: {code!r}: the event ({event}) never occurs in this linkage; "
                    "remove it"), code=code, event=Pair(event_name(code, "zh"), event_name(code, "en"))))
         for i, phase in enumerate(found):
@@ -438,7 +438,7 @@ def _named_points(requests: Requests | None, m: Motion) -> tuple:
     for name in requests.points:
         if name not in m.points:
             known = ", ".join(sorted(m.points))
-            raise DesignError(*en_zh(
+            raise DesignError(Msg(
                 N_("analysis.points: {name!r} is not a point of the linkage; its points: {known}"),
                 name=name, known=known))
     return requests.points
