@@ -146,3 +146,26 @@ def test_a_failed_self_check_names_its_shaft_by_message():
     assert f.code == "self_check" and not CJK.search(json.dumps(f.args, ensure_ascii=False))
     assert f" ({shaft.format(name=2)}) = 0.001" in f.text("zh")
     assert f.text("en").startswith("self-check failed: bearing reactions") and "(shaft 2) = 0.001" in f.text("en")
+
+
+def test_old_results_with_finding_texts_still_compare():
+    """tools/compare_results.py: a finding saved as its English string, or as {code, zh, en,
+    field}, compares with the new finding's text and its rendering through zh.po."""
+    import importlib.util
+
+    root = Path(__file__).parents[1]
+    spec = importlib.util.spec_from_file_location("compare_results", root / "tools" / "compare_results.py")
+    cr = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(cr)
+    plain = json.loads(dumps(_finding()))
+    old = {"machine": "x", "gear": {"warnings": [_expected("en")]},
+           "flywheel": {"warnings": [{"code": "undercut", "zh": _expected("zh"), "en": _expected("en"),
+                                      "field": "drive.stages[1]"}]}}
+    new = {"machine": "x", "gear": {"warnings": [plain]}, "flywheel": {"warnings": [plain]}}
+    assert cr.compare(old, new) == []
+    changed = json.loads(json.dumps(old))
+    changed["flywheel"]["warnings"][0]["zh"] += "。"
+    assert cr.compare(changed, new)
+    changed = json.loads(json.dumps(old))
+    changed["gear"]["warnings"][0] = "other"
+    assert cr.compare(changed, new)
