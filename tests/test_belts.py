@@ -276,7 +276,7 @@ def test_drive_spur_stage_x1_1_5_on_z1_20_is_a_named_failure(tmp_path):
     doc, k = _run_furnace_drive(tmp_path, type="spur", open=True, z1=20, x1=1.5)
     checks = {c.key: c for c in doc.stages[k].design.checks if not c.passed}
     assert {"tooth_tip", "contact_ratio"} <= set(checks)
-    text = " ".join(doc.warnings)
+    text = " ".join(w.text("en") for w in doc.warnings)   # findings: their English text
     assert "Pinion tip thickness" in text and f"drive.stages[{k}].x1" in text
 
 

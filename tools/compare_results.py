@@ -250,6 +250,8 @@ def compare(old: dict, new: dict, rtol: float = 1e-9, expected: bool = True) -> 
             if isinstance(got, (int, float)) and abs(got) > TINY:
                 problems.append(f"{path}: self-check residual {got!r} is no longer tiny")
             continue
+        if target not in b and f"{target}.text" in b:
+            target += ".text"    # an old finding held as its English text: the new one's text
         if target not in b:
             problems.append(f"{path}: missing in the new document (looked for {target})")
             continue
@@ -273,9 +275,13 @@ def _with_check_names(doc):
     """``doc`` with each strength check's name — an English msgid and its ``name_args`` since
     session 28 (issue 22: the core holds no prose) — also given as the ``name_zh``/``name_en``
     texts older documents hold (zh.po's Chinese, the msgid's English), so that the names are
-    compared too."""
+    compared too; likewise each finding (``code``, ``msgid``, ``args`` … since session 29)
+    also as the ``zh``/``en`` texts older documents hold (rendered through zh.po; the English
+    is its ``text``). An old finding held as a plain English string is compared with the new
+    one's ``text`` (see :func:`compare`)."""
     try:
         from mechdesign.i18n import catalogue
+        from mechdesign.stages.findings import Finding
     except ImportError:          # pragma: no cover - the tool run outside the package
         return doc
     zh = catalogue("zh")
@@ -290,6 +296,14 @@ def _with_check_names(doc):
         if isinstance(name, str) and isinstance(args, dict) and "symbol" in node:
             out.setdefault("name_zh", zh.get((None, name), name).format(**args))
             out.setdefault("name_en", name.format(**args))
+        if {"code", "msgid", "args"} <= node.keys() and isinstance(node["args"], dict):
+            found = Finding(node["code"], node["msgid"], node["args"], node.get("context"),
+                            node.get("field") or "")
+            try:
+                out.setdefault("en", node.get("text") or found.text("en"))
+                out.setdefault("zh", found.text("zh"))
+            except (KeyError, ValueError, TypeError):    # a field lost in JSON (NaN → null)
+                pass
         return out
 
     return walk(doc)

@@ -1,6 +1,7 @@
 """Serialise frozen result dataclasses to plain JSON (SI units throughout).
 
-numpy arrays become lists, complex numbers ``[x, y]`` pairs, dataclasses objects.
+numpy arrays become lists, complex numbers ``[x, y]`` pairs, dataclasses objects (a
+dataclass with a ``__plain__`` method gives its own: a finding adds its English text).
 """
 from __future__ import annotations
 
@@ -15,6 +16,8 @@ import numpy as np
 def to_plain(value: Any) -> Any:
     """Plain Python data (dict/list/float/str) for JSON."""
     if dataclasses.is_dataclass(value) and not isinstance(value, type):
+        if hasattr(type(value), "__plain__"):    # its own form (a finding adds its text)
+            return to_plain(value.__plain__())
         return {f.name: to_plain(getattr(value, f.name)) for f in dataclasses.fields(value)}
     if isinstance(value, dict):
         return {str(k): to_plain(v) for k, v in value.items()}

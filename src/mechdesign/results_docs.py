@@ -78,6 +78,8 @@ def rows(cls, prefix: str = "", seen: tuple = ()) -> list[tuple[str, str, str, A
             out += rows(_strip_optional(_item(tp)), path + ".‹name›.", seen)
         else:
             out.append((path, unit, doc, tp))
+    for name, unit, doc in getattr(cls, "PLAIN_EXTRA", ()):   # keys its __plain__ adds
+        out.append((f"{prefix}{name}", unit, doc, str))
     return out
 
 
@@ -110,7 +112,14 @@ def markdown() -> str:
              "not be computed. Arrays over the crank angle hold the uniform grid over one "
              "revolution unless the key says otherwise.", "",
              "Every document starts with `schema`, `machine`, `units` and, for a data group, "
-             "`data_group`.", ""]
+             "`data_group`.", "",
+             "A finding (the `warnings[]` entries, a verification's `failed[]`) holds codes and "
+             "data, not prose: its `code`, the catalogue message `msgid` (the English text of "
+             "`locale/*.po`, a `str.format` template) with its `context`, the message's fields "
+             "`args` and the brief `field`; `text` is the message rendered in English. The file "
+             "is the same whatever the report's language; "
+             "`mechdesign.stages.findings.Finding(**{k: v for k, v in entry.items() if k != "
+             "\"text\"}).text(\"zh\")` renders an entry in another language (zh, en, zh_TW).", ""]
     for name in names():
         e = entry(name)
         if not e.results:

@@ -59,7 +59,7 @@ class IntermittentDesignError(DesignError):
 @dataclass(frozen=True)
 class DesignNote:
     """A problem that leaves the design computable (a machine turns it into a Finding:
-    ``Finding(note.code, note.zh, note.en)``): a code and a message, translated where shown."""
+    ``finding_of(note.code, note.message)``): a code and a message, translated where shown."""
 
     code: str
     message: Msg

@@ -17,7 +17,7 @@ from ..core import cam as core
 from ..core.fields import q
 from ..pipeline import Stage
 from ..i18n import N_
-from .findings import Cat, CheckNames, Finding, Msg, Pair, en_zh, finding, zh_en
+from .findings import Cat, CheckNames, Finding, Msg, Pair, finding, zh_en
 from . import titles
 
 GRID_POINTS = 3600
@@ -121,7 +121,7 @@ def design(p) -> CamResult:
     designed = p.base_radius is None
     if designed:
         if min_r0 is None:
-            raise core.CamDesignError(*en_zh(N_(
+            raise core.CamDesignError(Msg(N_(
                 "cam.base_radius_mm: 'auto' cannot be met: no base radius keeps the pressure angle "
                 "within the limits; give a base radius")))
         r0 = float(np.ceil(min_r0 * 1e3 - 1e-9) / 1e3)          # whole millimetres, upwards
@@ -253,9 +253,8 @@ def _checks(p, fol, r0, segs, rho_p, rho_a, rho_min, min_r0, best) -> list[Findi
     bad = [s for s in segs if not s.ok]
     if bad:
         worst = max(bad, key=lambda s: s.max_pressure_angle - s.limit)
-        which = Pair(*(zh_en.pgettext("cam segment", "rise") if worst.kind == core.RISE
-                       else zh_en.pgettext("cam segment", "return")))
-        which.en = worst.kind
+        which = (Msg.pgettext("cam segment", "rise") if worst.kind == core.RISE
+                 else Msg.pgettext("cam segment", "return"))
         raise_r0 = _more(min_r0, r0)
         fix = Cat(Msg(N_("increase the base radius to at least {r0}"), r0=_mm(min_r0)) if raise_r0
                   else Msg(N_("increase the base radius")))
@@ -271,8 +270,7 @@ def _checks(p, fol, r0, segs, rho_p, rho_a, rho_min, min_r0, best) -> list[Findi
             fix += Msg(N_(", or give the {which} a larger cam angle (now {span:.4g}°)"),
                        which=which, span=span)
         if best is not None and best[0] < r0:
-            side = Pair(*(zh_en.pgettext("side", "right") if best[1] > 0
-                          else zh_en.pgettext("side", "left")))
+            side = Msg.pgettext("side", "right") if best[1] > 0 else Msg.pgettext("side", "left")
             fix += Msg(N_(", or change the offset to e = {e} on the {side} (then the smallest base "
                           "radius is {r0})"), e=_mm(abs(best[1])), side=side, r0=_mm(best[0]))
         out.append(finding(
@@ -363,9 +361,19 @@ def failed_findings(checks, names: dict) -> list[Finding]:
                 "self_check",
                 N_("self-check failed: {name}{where} = {value:.4g} (limit {limit:.4g}, SI units); "
                    "the results cannot be trusted, please report it."),
-                name=Pair(zh, en), where=Pair(_where(c, "zh"), _where(c, "en")), value=c.value,
-                limit=c.limit))
+                name=Pair(zh, en), where=_where_message(c), value=c.value, limit=c.limit))
     return out
+
+
+def _where_message(c: SelfCheck):
+    """:func:`_where` as a message field: a drive shaft's name as its message (when it gives
+    the texts the check holds), else the two texts."""
+    zh, en = _where(c, "zh"), _where(c, "en")
+    if "shaft" in c.detail and "label" not in c.detail:
+        msg = Msg(N_("shaft {name}"), name=c.detail["shaft"])
+        if (f" ({msg.text('zh')})", f" ({msg.text('en')})") == (zh, en):
+            return Cat(" (", msg, ")")
+    return Pair(zh, en)
 
 
 def _where(c: SelfCheck, lang: str) -> str:
@@ -663,7 +671,7 @@ class VerificationDocument:
     """Self-checks (计算校核) of a stage: value, limit and verdict of each."""
 
     checks: tuple[CheckDoc, ...] = q("", "every self-check")
-    failed: tuple[str, ...] = q("", "the failed checks of the computation, as findings (en)")
+    failed: tuple[Finding, ...] = q("", "the failed checks of the computation, as findings")
 
 
 def verification_document(v) -> VerificationDocument:
@@ -671,6 +679,6 @@ def verification_document(v) -> VerificationDocument:
     return VerificationDocument(
         checks=tuple(CheckDoc(c.key, c.value, c.limit, c.sense, c.reference, c.passed,
                               c.requirement, c.detail) for c in v.checks),
-        failed=tuple(w.en for w in v.warnings))
+        failed=tuple(v.warnings))
 
 

@@ -18,7 +18,7 @@ from ..core.fields import q
 from ..data import load_csv, load_yaml
 from . import drive_elements as de, drive_strength as ds
 from ..i18n import N_, tr
-from .findings import CheckNames, Finding, Msg, Pair, en_zh, finding, zh_en
+from .findings import CheckNames, Finding, Msg, Named, Pair, finding, zh_en
 
 
 @dataclass(frozen=True)
@@ -98,7 +98,7 @@ class DriveDocument:
     service_hours: float = q("h", "service life L_h")
     peak_factor: float = q("1", "design torque / mean torque on the shafts that carry the peak")
     shaft_designs: tuple[ds.ShaftDesign, ...] = q("", "one per shaft after the motor")
-    warnings: tuple[str, ...] = q("", "findings (English)")
+    warnings: tuple[Finding, ...] = q("", "findings: speed error, stage ratios, undercut, failed checks")
     data_assumptions: tuple[str, ...] = q("", "catalogue entries the design used that could not be "
                                           "confirmed against a public copy of their source: 'kind' "
                                           "or 'kind:key' (e.g. 'bearing:6219', 'gear_material:HT300')",
@@ -192,7 +192,7 @@ def design_drive(dp, machine_power: float, output_rpm: float, source: str,
     # A machine without working resistance takes (almost) no mean power: its torque only
     # swings about zero, the peak factor peak/mean is unbounded and nothing sizes the drive.
     if not (machine_power > 0 and np.isfinite(machine_power) and 0 < peak_factor < 1e6):
-        raise core.DriveDesignError(*en_zh(
+        raise core.DriveDesignError(Msg(
             N_("the machine takes (almost) no mean power ({P:.3g} W at its input shaft, peak "
                "torque {peak:.3g} × the mean): without working resistance nothing sizes the drive; "
                "give the machine a load, or leave the drive section out"),
@@ -247,14 +247,14 @@ def design_drive(dp, machine_power: float, output_rpm: float, source: str,
                 N_("stage {n} ({name}) ratio {i:.3f} exceeds its maximum {imax:g}: give it a "
                    "smaller ratio (another stage, or more ratio to the others)."),
                 field=f"drive.stages[{st.index}]", n=st.index + 1,
-                name=Pair(st.name_zh, st.name_en), i=st.ratio, imax=el.ratio_max))
+                name=Named("transmissions", st.kind), i=st.ratio, imax=el.ratio_max))
         elif st.type != "coupling" and st.ratio < lo:
             warnings.append(finding(
                 "stage_ratio",
                 N_("stage {n} ({name}) ratio {i:.3f} is below its recommended range {lo:g}–{hi:g}: "
                    "it hardly reduces the speed; give it a larger ratio or leave the stage out."),
                 field=f"drive.stages[{st.index}]", n=st.index + 1,
-                name=Pair(st.name_zh, st.name_en), i=st.ratio, lo=lo, hi=hi))
+                name=Named("transmissions", st.kind), i=st.ratio, lo=lo, hi=hi))
     warnings.extend(undercut_findings(results))
     warnings.extend(tooth_findings(results))
     return DriveResult(output_rpm, machine_power, source, eta, p_d, choice, tuple(results),
@@ -362,7 +362,7 @@ def undercut_findings(results) -> list[Finding]:
                            "= {z_min:.1f} and x{key} = {x:g} < x_min = {x_min:.3f}; set "
                            "{here}.x{key} ≥ {x_min:.3f} (a positive shift) or {here}.z{key} ≥ "
                            "{need}."), field=here, n=r.index + 1,
-                        name=Pair(r.name_zh, r.name_en), who=_gear(key), key=key, z=gd.z,
+                        name=Named("transmissions", r.kind), who=_gear(key), key=key, z=gd.z,
                         z_min=g.z_min, x=gd.x, x_min=x_min, here=here,
                         need=math.ceil(g.z_min - 1e-9)))
         elif hasattr(g, "beta"):
@@ -378,7 +378,7 @@ def undercut_findings(results) -> list[Finding]:
                         N_("stage {n} ({name}): z{key} = {z} has the equivalent tooth number z_v = "
                            "z/cos³β = {zv:.2f} < z_min = {z_min:.1f}, so the gear is undercut; set "
                            "{here}.z{key} ≥ {need} or use a larger helix angle."), field=here,
-                        n=r.index + 1, name=Pair(r.name_zh, r.name_en), key=key, z=z, zv=zv,
+                        n=r.index + 1, name=Named("transmissions", r.kind), key=key, z=z, zv=zv,
                         z_min=z_min, here=here, need=need))
     return out
 
@@ -400,12 +400,12 @@ def tooth_findings(results) -> list[Finding]:
         g = d.geometry
         for key, gd in (("1", g.g1), ("2", g.g2)):
             head = Msg(N_("stage {n} ({name}): the {who} (z{key} = {z}, x{key} = {x:g})"),
-                       n=r.index + 1, name=Pair(r.name_zh, r.name_en), who=_gear(key), key=key,
+                       n=r.index + 1, name=Named("transmissions", r.kind), who=_gear(key), key=key,
                        z=gd.z, x=gd.x)
             fix = (Msg(N_("reduce {here}.x{key}"), here=here, key=key) if gd.x > 0
                    else Msg(N_("use more teeth ({here}.z{key})"), here=here, key=key))
             if gd.sa <= 0:
-                raise DriveDesignError(*en_zh(
+                raise DriveDesignError(Msg(
                     N_("{here}.x{key} = {x:g}: {head} has a tip thickness s_a = {sa:.2f} mm ≤ 0: its "
                        "flanks meet below the tip circle, the tooth cannot be cut; {fix}"),
                     here=here, key=key, x=gd.x, head=head, sa=gd.sa * 1e3, fix=fix))
@@ -450,12 +450,12 @@ def shaft_numeral(index: int) -> str:
 
 def _stage(r) -> Msg:
     """"stage 2 (V belt)": a drive stage as findings and self-checks name it."""
-    return Msg(N_("stage {n} ({name})"), n=r.index + 1, name=Pair(r.name_zh, r.name_en))
+    return Msg(N_("stage {n} ({name})"), n=r.index + 1, name=Named("transmissions", r.kind))
 
 
-def _gear(key: str) -> Pair:
+def _gear(key: str) -> Msg:
     """The pinion (key "1") or the wheel of a gear stage, by name."""
-    return Pair(*(zh_en.pgettext("gear", "pinion") if key == "1" else zh_en.pgettext("gear", "wheel")))
+    return Msg.pgettext("gear", "pinion") if key == "1" else Msg.pgettext("gear", "wheel")
 
 
 def _failed(c, where: Msg, advice=None, stage: int | None = None) -> Finding:
@@ -475,7 +475,7 @@ def _failed(c, where: Msg, advice=None, stage: int | None = None) -> Finding:
                        N_("{where}: {check} fails ({v} {rel} {a}{unit}) with the brief's {field}: "
                           "{advice}."), field=field, where=where,
                        check=Msg(c.name, **c.name_args), v=v, rel=rel, a=a, unit=unit,
-                       advice=Pair(zh, en))
+                       advice=en if isinstance(en, Msg) else Pair(zh, en))
     fix = Msg(N_("enlarge it or use a better material"))
     extra = {}
     if stage is not None and c.key in de.FIXES:      # belts, gear geometry, worm deflection
@@ -642,6 +642,6 @@ def drive_document(d: DriveResult) -> DriveDocument:
         output_speed_rpm=d.output_speed, speed_error=d.speed_error,
         speed_tolerance=d.speed_tolerance, service_hours=d.service_hours,
         peak_factor=d.peak_factor, shaft_designs=d.shaft_designs,
-        warnings=tuple(w.en for w in d.warnings), data_assumptions=d.data_assumptions)
+        warnings=tuple(d.warnings), data_assumptions=d.data_assumptions)
 
 

@@ -32,6 +32,7 @@ from dataclasses import dataclass, replace
 from ..core import belts, chains, gears, strength as st
 from ..core.fields import q
 from ..data import catalogues as cat
+from ..core.errors import Join
 from ..i18n import N_, Msg, Pair, tr
 from . import drive_elements as de
 
@@ -671,21 +672,21 @@ def _advice(ch, ev, dims, free_ev, free_dims):
         if c.key == "shaft_bending":
             parts = [(f"{here}.{n}", v) for n, v, given in (("end_mm", fe, ch.end), ("journal_mm", fj, ch.journal),
                                                               ("seat_mm", fs, ch.seat)) if given and v is not None]
-            fix_zh, fix_en = (t.pgettext("list", "; ").join(f"{f} ≥ {_mmf(v)}" for f, v in parts)
-                              or t(N_("a stronger material")) for t in (tr("zh"), tr("en")))
+            fix = (Msg("{fix}", fix=Join(Msg.pgettext("list", "; "), [f"{f} ≥ {_mmf(v)}" for f, v in parts]))
+                   if parts else Msg(N_("a stronger material")))
             field = parts[0][0] if parts else f"{here}.material"
         elif c.key in ("bearing_life", "bearing_static"):
             b = free_ev["bearing"]
             field = f"{here}.bearing" if ch.bearing else f"{here}.journal_mm"
-            fix_zh, fix_en = (_zh_en(N_("{field}: the design takes {designation}"), field=field,
-                                     designation=b.designation) if ch.bearing and b else
-                              (f"{field} ≥ {_mmf(fj)}",) * 2)
+            fix = (Msg(N_("{field}: the design takes {designation}"), field=field,
+                       designation=b.designation) if ch.bearing and b else f"{field} ≥ {_mmf(fj)}")
         else:
             field = f"{here}.key_length_mm" if ch.key_length else f"{here}.seat_mm"
-            fix_zh, fix_en = (_zh_en(N_("remove {field} (the design takes the longest key the hub allows, or "
-                                        "two keys)"), field=field) if ch.key_length else
-                              (f"{field} ≥ {_mmf(fs)}",) * 2)
-        out.append((tr("en")(c.name, **c.name_args), field, fix_zh, fix_en))
+            fix = (Msg(N_("remove {field} (the design takes the longest key the hub allows, or "
+                          "two keys)"), field=field) if ch.key_length else f"{field} ≥ {_mmf(fs)}")
+        # the English as a message (a str: results.json holds its text), so that a finding can
+        # hold the message, not the two texts
+        out.append((tr("en")(c.name, **c.name_args), field, fix.text("zh") if isinstance(fix, Msg) else fix, fix))
     return tuple(out)
 
 

@@ -17,7 +17,7 @@ from ..core import flywheel as fw
 from ..core.fields import q
 from ..core.errors import DesignError
 from ..i18n import N_
-from .findings import Finding, en_zh, finding
+from .findings import Finding, Msg, finding
 
 CAST_IRON_RIM_SPEED = 30.0   # [m/s] usual limit of a cast-iron rim's peripheral speed
 
@@ -125,7 +125,7 @@ def impossible_rim(rim: fw.RimFlywheel, spec: FlywheelSpec, inertia: float, spee
         return
     r = spec.rim
     d_min = smallest_rim_diameter(inertia, r.height_to_width, r.specific_weight, gravity)
-    raise FlywheelDesignError(*en_zh(
+    raise FlywheelDesignError(Msg(
         N_("{field} = {D:g}: the flywheel J_F = {J:.4g} kg·m² at {speed:.4g} rpm needs a rim of "
            "height H = {H:.4g} mm and width b = {b:.4g} mm, not smaller than its mean diameter "
            "D = {D:g} mm: no rim of this diameter can carry it. Take D ≥ {d_min:.4g} mm (then "

@@ -101,9 +101,9 @@ class GearDocument:
     without backlash (孙桓《机械原理》). Gear 1 is the pinion z1."""
 
     pair: gears.SpurPair = q("", "the pair's geometry")
-    warnings: tuple[str, ...] = q("",
-        "the pair's findings (en): undercut, pointed tooth, ε, clearance")
+    warnings: tuple[Finding, ...] = q("",
+        "the pair's findings: undercut, pointed tooth, ε, clearance")
 
 
 def gear_document(g: GearResult) -> GearDocument:
-    return GearDocument(g.pair, tuple(w.en for w in g.warnings))
+    return GearDocument(g.pair, tuple(g.warnings))

@@ -12,7 +12,7 @@ from ..core.synthesis import GuideBarDesign, guide_bar_quick_return
 from ..i18n import N_
 from ..pipeline import Stage
 from . import titles
-from .findings import en_zh
+from .findings import Msg
 
 
 @dataclass(frozen=True)
@@ -69,7 +69,7 @@ def motion(model, syn: Synthesis, p, rod: str, requests=None):
         else:
             field, value = f"linkage.rod_ratio_{rod}_O3B", p.rod_ratio
         rule = "(1 − cos(ψ/2))/2" if p.rod is None else "L_O3B(1 − cos(ψ/2))/2"
-        raise exc.with_hint(*en_zh(
+        raise exc.with_hint(Msg(
             N_("(Brief field: {field} = {value:g} must be at least {rule} = {need:.6g}.)"),
             field=field, value=value, rule=rule, need=need)) from None
 

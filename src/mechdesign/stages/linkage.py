@@ -27,7 +27,7 @@ from ..core.errors import DesignError
 from ..core.extremes import brentq, grid_roots, refine_extreme
 from ..core.fields import q
 from ..i18n import N_, tr
-from .findings import Finding, Msg, Pair, en_zh, finding
+from .findings import Finding, Msg, Pair, finding
 from .positions import Positions, textbook_positions, with_requested
 from ..pipeline import Stage
 from .flywheel import Flywheel, FlywheelSpec, design_flywheel
@@ -86,7 +86,7 @@ class LinkageModel:
     names: dict = field(default_factory=dict)    # link id → (name_zh, name_en), optional
     group_labels: dict = field(default_factory=dict)  # group name → (name_zh, name_en) shown
     #                                                   in the reports, optional
-    advice: dict = field(default_factory=dict)   # "pressure"/"transmission" → (zh, en): the
+    advice: dict = field(default_factory=dict)   # "pressure"/"transmission" → a Msg (or (zh, en)): the
     #                                              brief fields to change, added to the finding;
     #                                              "time_ratio" → (zh, en, field): K < 1 (the
     #                                              crank turning against the quick return) is
@@ -350,7 +350,7 @@ def event_phases(model: LinkageModel, code: str, start: float, sense: float, spa
     kind, _, link = code.partition(":")
     links = model.mechanism.solve(np.array([start])).links
     if link not in links:
-        raise DesignError(*en_zh(
+        raise DesignError(Msg(
             N_("analysis.events: {code!r}: link {link!r} is not a moving link; links: {links}"),
             code=code, link=link, links=", ".join(links)))
     trig = np.cos if kind == "link_vertical" else np.sin
@@ -369,7 +369,7 @@ def _requested(model: LinkageModel, req: Requests, start: float, sense: float, s
     for code in req.events:
         found = event_phases(model, code, start, sense, span, s0, ref)
         if not found:
-            raise DesignError(*en_zh(
+            raise DesignError(Msg(
                 N_("analysis.events: {code!r}: the event ({event}) never occurs in this linkage; "
                    "remove it"), code=code, event=Pair(event_name(code, "zh"), event_name(code, "en"))))
         for i, phase in enumerate(found):
@@ -438,7 +438,7 @@ def _named_points(requests: Requests | None, m: Motion) -> tuple:
     for name in requests.points:
         if name not in m.points:
             known = ", ".join(sorted(m.points))
-            raise DesignError(*en_zh(
+            raise DesignError(Msg(
                 N_("analysis.points: {name!r} is not a point of the linkage; its points: {known}"),
                 name=name, known=known))
     return requests.points
@@ -788,6 +788,15 @@ def _four_bar_of(model: LinkageModel, group_name: str):
     return None
 
 
+def _advice(value):
+    """An entry of ``LinkageModel.advice`` as a message: a :class:`Msg`, or the (zh, en)
+    texts a caller gave (a :class:`Pair`); None when there is none."""
+    if value is None or isinstance(value, Msg):
+        return value or None
+    zh, en = value[:2]
+    return Pair(zh, en) if (zh or en) else None
+
+
 def quality_findings(model: LinkageModel, k: LinkageMotion) -> list[Finding]:
     """Pressure angle over the working stroke and transmission angle over the cycle
     against the model's limits, each saying what to change (``model.advice`` adds the
@@ -796,13 +805,12 @@ def quality_findings(model: LinkageModel, k: LinkageMotion) -> list[Finding]:
     deg = 180.0 / np.pi
 
     def extra(kind):        # the brief's fields to change, appended in parentheses
-        zh, en = model.advice.get(kind, ("", ""))
-        return Pair(tr("zh")(N_(" ({advice})"), advice=zh) if zh else "",
-                    tr("en")(" ({advice})", advice=en) if en else "")
+        advice = _advice(model.advice.get(kind))
+        return Msg(N_(" ({advice})"), advice=advice) if advice else ""
 
     if "time_ratio" in model.advice and k.time_ratio < 1.0 - 1e-9:
         # The working stroke is the faster one: the crank turns against the quick return.
-        zh, en, where = model.advice["time_ratio"]
+        *said, where = model.advice["time_ratio"]
         theta = np.pi * (k.time_ratio - 1.0) / (k.time_ratio + 1.0) * deg
         work, back = k.working_span * deg, 360.0 - k.working_span * deg
         found.append(finding(
@@ -810,7 +818,8 @@ def quality_findings(model: LinkageModel, k: LinkageMotion) -> list[Finding]:
             N_("time ratio K = {K:.4f} < 1 (extreme-position angle θ = {theta:.2f}° < 0): the "
                "working stroke takes {work:.2f}° of crank angle and the return {back:.2f}°, so the "
                "crank turns against the working stroke's sense (no quick return); {advice}"),
-            field=where, K=k.time_ratio, theta=theta, work=work, back=back, advice=Pair(zh, en)))
+            field=where, K=k.time_ratio, theta=theta, work=work, back=back,
+            advice=_advice(said[0] if len(said) == 1 else said)))
     for qa in k.quality:
         if qa.kind == "pressure" and model.pressure_angle_limit is not None \
                 and qa.working_extreme > model.pressure_angle_limit + 1e-9:

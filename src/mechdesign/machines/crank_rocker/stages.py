@@ -138,11 +138,10 @@ def _describe(label, design, a_pivot, p, gamma_allowed) -> Design:
     warnings = []
     zh, en = label.split(" / ", 1) if " / " in label else (label, label)
     if not (ok and kind == "crank-rocker"):
-        sums_en, sums_zh = fb.grashof_sums(design)
         warnings.append(finding(
             "grashof", N_("{label}: the lengths fail Grashof's crank condition ({kind}; {sums}); the crank "
                           "cannot turn fully: the crank must be the shortest link and shortest + longest ≤ "
-                          "the other two."), label=Pair(zh, en), kind=kind, sums=Pair(sums_zh, sums_en)))
+                          "the other two."), label=Pair(zh, en), kind=kind, sums=fb.grashof_sums_message(design)))
     if gmin < gamma_allowed:
         warnings.append(finding(
             "transmission_angle",

@@ -41,7 +41,7 @@ from ...core.mechanism import RRP, RRR, Crank, LinkPoint, Mechanism
 from ...core.synthesis import extreme_angle
 from ...pipeline import Stage
 from ...i18n import N_
-from ...stages.findings import Finding, Pair, en_zh, finding, zh_en
+from ...stages.findings import Finding, Msg, Pair, finding, finding_of, zh_en
 from ...stages.flywheel import Flywheel, FlywheelSpec, RimSpec, design_flywheel
 from ...core.cycle import CycleDocument
 from ...core.fields import q
@@ -77,7 +77,7 @@ def toggle_swing(g: PressGeometry) -> float:
     lt, ld, eps, H = g.toggle_CB, g.toggle_BD, g.top_angle, g.stroke
     beta_max = _max_beta(lt, ld)
     if eps >= beta_max:
-        raise fourbar.SynthesisError(*en_zh(
+        raise fourbar.SynthesisError(Msg(
             N_("toggle_angle_at_top_deg = {eps:g}° leaves no swing (the toggle lies flat at "
                "{flat:.3g}°): make it smaller than {flat:.3g}°"), eps=eps * DEG, flat=beta_max * DEG))
     top = float(toggle_height(eps, lt, ld))
@@ -86,7 +86,7 @@ def toggle_swing(g: PressGeometry) -> float:
     psi_cap = min(beta_max - eps, np.radians(120.0))
     h_cap = top - float(toggle_height(eps + psi_cap, lt, ld))
     if not H < min(h_max, h_cap):
-        raise fourbar.SynthesisError(*en_zh(
+        raise fourbar.SynthesisError(Msg(
             N_("stroke_H_mm = {H:g} cannot be reached: toggle links CB = {CB:g} mm and BD = {BD:g} "
                "mm give at most {most:.4g} mm; lengthen CB or reduce the stroke"),
             H=H * 1e3, CB=lt * 1e3, BD=ld * 1e3, most=min(h_max, h_cap) * 1e3))
@@ -143,7 +143,7 @@ def toggle_synthesis(g: PressGeometry) -> ToggleDesign:
         a, b, d = four.crank, four.coupler, four.frame
         theta, psi = fourbar.crank_rocker_extremes(four)
         if not eps + psi < _max_beta(lt, ld):
-            raise fourbar.SynthesisError(*en_zh(
+            raise fourbar.SynthesisError(Msg(
                 N_("dimensions.crank_O1A_mm = {a:g}: the swing ψ = {psi:.4g}° of CB takes it beyond "
                    "{beta:.4g}° from the guide at the bottom"),
                 a=a * 1e3, psi=psi * DEG, beta=_max_beta(lt, ld) * DEG))
@@ -162,7 +162,7 @@ def toggle_synthesis(g: PressGeometry) -> ToggleDesign:
     ok, kind = fourbar.grashof(four)
     if not (ok and kind == "crank-rocker"):
         en, zh = fourbar.grashof_sums(four)
-        raise fourbar.SynthesisError(*en_zh(
+        raise fourbar.SynthesisError(Msg(
             N_("the crank cannot make a full turn (Grashof): the four-bar O1ABC comes out a {kind}, "
                "not a crank-rocker ({sums}); change K (time_ratio_K) or the toggle lengths "
                "(toggle_CB_mm), or give another frame"), kind=kind, sums=Pair(zh, en)))
@@ -221,14 +221,14 @@ def build_press(d: ToggleDesign, p: DieCutterParams) -> LinkageModel:
         position_step=p.position_step, gravity=p.gravity, flywheel=None,
         pressure_angle_limit=p.pressure_angle_max, transmission_angle_min=p.transmission_angle_min,
         names=names, advice={
-            "pressure": zh_en.gettext("brief fields: a longer press.toggle_BD_mm or a smaller "
-                                      "press.toggle_angle_at_top_deg"),
-            "transmission": zh_en.gettext(
+            "pressure": Msg(N_("brief fields: a longer press.toggle_BD_mm or a smaller "
+                               "press.toggle_angle_at_top_deg")),
+            "transmission": Msg(N_(
                 "brief fields: a smaller press.time_ratio_K, a longer press.toggle_CB_mm (a smaller "
-                "swing), or no press.frame_O1C_mm (the frame with the largest transmission angle)")
-            if g.given is None else zh_en.gettext(
+                "swing), or no press.frame_O1C_mm (the frame with the largest transmission angle)"))
+            if g.given is None else Msg(N_(
                 "brief fields: other press.dimensions (crank_O1A_mm, coupler_AB_mm, frame_O1C_mm), "
-                "or synthesise from stroke_H_mm and time_ratio_K instead")})
+                "or synthesise from stroke_H_mm and time_ratio_K instead"))})
 
 
 #: TogglePress fields a synthesis message may start with ("stroke_H_mm = 400 …").
@@ -481,7 +481,7 @@ def feed(amp: Amplification, p: DieCutterParams) -> Feed:
     travel = g.advance / TWO_PI * p.sprocket_teeth * p.chain_pitch
     times = g.times()
     jump = g.engagement_jump()
-    notes = [Finding(n.code, n.zh, n.en) for n in g.notes]
+    notes = [finding_of(n.code, n.message) for n in g.notes]
     return Feed(g, auto, float(radius), float(travel), float(travel / times[1]),
                 float(radius * jump.omega2), tuple(notes), intermittent_curves(g))
 

@@ -42,7 +42,7 @@ from ...core.synthesis import extreme_angle
 from ...pipeline import Stage
 from ...stages.drive import DriveDocument, design_drive, drive_document
 from ...i18n import N_
-from ...stages.findings import Finding, Pair, en_zh, finding, zh_en
+from ...stages.findings import Finding, Msg, Pair, finding, zh_en
 from ...core.extremes import brentq, fminbound
 from ...stages.linkage import LinkageDocument, LinkageModel, Output, Resistance, linkage_document, linkage_stages
 from ...stages import titles
@@ -277,7 +277,7 @@ def synthesize(pp: PusherParams) -> PusherSynthesis:
     if pp.given is not None:
         theta, swing = fb.crank_rocker_extremes(pp.given)
     if pp.given is None and not H < 2.0 * R:
-        raise fb.SynthesisError(*en_zh(
+        raise fb.SynthesisError(Msg(
             N_("pusher.stroke_H_mm = {H:g} mm needs a rocker DC longer than H/2: the chord of C's "
                "arc cannot exceed 2·DC = {chord:g} mm (pusher.rocker_DC_mm)"),
             H=H * 1e3, chord=2 * R * 1e3))
@@ -287,13 +287,13 @@ def synthesize(pp: PusherParams) -> PusherSynthesis:
     sag = R * (1.0 - np.cos(swing / 2.0))
     off_max = L * np.sin(pp.pressure_angle_max) - sag / 2.0
     if off_max < 0.0:
-        raise fb.SynthesisError(*en_zh(
+        raise fb.SynthesisError(Msg(
             N_("pusher.link_CE_mm = {L:g} mm is too short: C's arc has a sagitta of {sag:.4g} mm, "
                "so CE must be at least {need:.4g} mm for a pressure angle at E within {alpha:g}°"),
             L=L * 1e3, sag=sag * 1e3, need=sag / 2 / np.sin(pp.pressure_angle_max) * 1e3,
             alpha=np.degrees(pp.pressure_angle_max)))
     if abs(pp.guide_offset) > off_max:
-        raise fb.SynthesisError(*en_zh(
+        raise fb.SynthesisError(Msg(
             N_("pusher.guide_offset_mm = {e:g} mm puts the pressure angle at E above {alpha:g}°: "
                "allowed |offset| ≤ {off:.4g} mm (CE·sin[α] − f/2 with the sagitta f = {sag:.4g} mm)"),
             e=pp.guide_offset * 1e3, alpha=np.degrees(pp.pressure_angle_max), off=off_max * 1e3,
@@ -304,7 +304,7 @@ def synthesize(pp: PusherParams) -> PusherSynthesis:
     exact = None
     if pp.given is not None:
         if all(cons is None for cons in circles.values()):
-            raise fb.SynthesisError(*en_zh(
+            raise fb.SynthesisError(Msg(
                 N_("pusher.dimensions = {given}: θ = {theta:.6g}°, ψ = {psi:.6g}° admit no θ-circle "
                    "construction"), given=pp.given, theta=np.degrees(theta), psi=np.degrees(swing)))
         side, cons, exact = _place_given(pp.given, circles)
@@ -325,7 +325,7 @@ def synthesize(pp: PusherParams) -> PusherSynthesis:
                 ranges.append(f"{lo * 1e3:.5g} – {hi * 1e3:.5g} mm")
         if p is None:
             sep_zh, sep_en = zh_en.pgettext("alternatives", " or ")
-            raise fb.SynthesisError(*en_zh(
+            raise fb.SynthesisError(Msg(
                 N_("pusher.frame_O1D_mm = {frame:g} mm: no crank-rocker with θ = {theta:.4g}°, "
                    "ψ = {psi:.4g}° and DB = {DB:.5g} mm has this frame; it must lie in {ranges} "
                    "(exclusive), or use auto"), frame=pp.frame * 1e3, theta=np.degrees(theta),
@@ -346,7 +346,7 @@ def synthesize(pp: PusherParams) -> PusherSynthesis:
             best_work = max(float(np.max(working_gamma(cons, cons.p_lo + (cons.p_hi - cons.p_lo)
                                                         * np.linspace(0.001, 0.999, 4001))))
                             for cons in circles.values() if cons is not None)
-            raise fb.SynthesisError(*en_zh(
+            raise fb.SynthesisError(Msg(
                 N_("pusher.pressure_angle_max_deg = {alpha:g}°: with K = {K:g} (θ = {theta:.4g}°) and "
                    "the swing ψ = {psi:.4g}° the four-bar's pressure angle at B in the working stroke "
                    "cannot be below {least:.4g}°; raise the limit or set "
@@ -455,11 +455,11 @@ def build_model(syn: PusherSynthesis, p: FurnaceParams) -> LinkageModel:
         grid_points=p.grid_points, position_step=p.position_step, gravity=p.gravity,
         flywheel=None, pressure_angle_limit=pp.pressure_angle_max,
         transmission_angle_min=pp.transmission_angle_min, names=link_names(), advice={
-            "pressure": zh_en.gettext("brief fields: a longer pusher.link_CE_mm, or "
-                                      "pusher.guide_offset_mm closer to 0"),
-            "transmission": zh_en.gettext("brief fields: a smaller pusher.time_ratio_K or a larger "
-                                          "swing (pusher.stroke_H_mm / pusher.rocker_DC_mm), "
-                                          "pusher.frame_O1D_mm: auto")})
+            "pressure": Msg(N_("brief fields: a longer pusher.link_CE_mm, or "
+                               "pusher.guide_offset_mm closer to 0")),
+            "transmission": Msg(N_("brief fields: a smaller pusher.time_ratio_K or a larger "
+                                   "swing (pusher.stroke_H_mm / pusher.rocker_DC_mm), "
+                                   "pusher.frame_O1D_mm: auto"))})
 
 
 def checks(p: FurnaceParams, keep: dict | None = None) -> list:

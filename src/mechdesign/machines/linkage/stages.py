@@ -7,7 +7,7 @@ from dataclasses import dataclass
 from ...core.fields import q
 from ...i18n import N_
 from ...pipeline import Stage
-from ...stages.findings import en_zh, zh_en
+from ...stages.findings import Msg, en_zh, zh_en
 from ...stages.linkage import (LinkageDocument, linkage_document, linkage_stages, motion,
                                requests_of)
 
@@ -24,11 +24,11 @@ def linkage_params(brief):
     now = brief.linkage.crank.rotation
     other = "ccw" if now == "cw" else "cw"
     return replace(model, advice={
-        "pressure": zh_en.gettext("brief fields: linkage.groups[…].length_mm, guide_point_mm"),
-        "transmission": zh_en.gettext(
-            "brief fields: linkage.crank.length_mm, linkage.groups[…].lengths_mm"),
-        "time_ratio": (*zh_en.gettext("change linkage.crank.rotation to {other} (now {now}) or "
-                                      "linkage.output.working", other=other, now=now),
+        "pressure": Msg(N_("brief fields: linkage.groups[…].length_mm, guide_point_mm")),
+        "transmission": Msg(N_(
+            "brief fields: linkage.crank.length_mm, linkage.groups[…].lengths_mm")),
+        "time_ratio": (Msg(N_("change linkage.crank.rotation to {other} (now {now}) or "
+                              "linkage.output.working"), other=other, now=now),
                        "linkage.crank.rotation")})
 
 

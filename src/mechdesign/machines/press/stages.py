@@ -24,7 +24,7 @@ from ...stages.gear import GearDocument
 from .brief import PressParams
 from ...i18n import N_
 from ...stages import titles
-from ...stages.findings import en_zh, zh_en
+from ...stages.findings import Msg, en_zh, zh_en
 
 FRAME = "6"
 DOWN = -np.pi / 2
@@ -169,8 +169,8 @@ def model(s: PressSynthesis, p: PressParams) -> lk.LinkageModel:
                               RimSpec(p.rim_diameter, p.rim_height_to_width, p.specific_weight,
                                      "flywheel.rim_diameter_mm")),
         pressure_angle_limit=p.pressure_angle_max, transmission_angle_min=p.transmission_angle_min,
-        advice={"pressure": zh_en.gettext("brief fields {fields}", fields=fields),
-                "transmission": zh_en.gettext("brief fields {fields}", fields=pivots)},
+        advice={"pressure": Msg(N_("brief fields {fields}"), fields=fields),
+                "transmission": Msg(N_("brief fields {fields}"), fields=pivots)},
         names={"1": zh_en.pgettext("link", "crank AB"), "2": zh_en.pgettext("link", "coupler BC"),
                "3": zh_en.pgettext("link", "rocker DE"), "4": zh_en.pgettext("link", "rod EF"),
                "5": zh_en.pgettext("link: press", "ram")},
