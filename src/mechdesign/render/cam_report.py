@@ -12,7 +12,7 @@ from ..fileio import atomic_open
 from ..i18n import N_, tr
 from ..core.motion_laws import LAWS
 from . import cam_figures as cf
-from .fmt import e, f, md_text, verdict
+from .fmt import e, f, md_text, sig, verdict
 from .labels import LabelTable, pgettext
 
 DEG = 180.0 / np.pi
@@ -165,7 +165,7 @@ def _law_eqs(c, i, u: _Units, lang):
         s_eq = rf"{sym} = {f(level, 2)} - {f(abs(lift), 2)}\,S(u)"
     s_eq += rf"\quad ({unit.strip()})"
     # Derivatives in SI: rad for an oscillating follower, mm for a translating one.
-    amp = f(abs(prog.lifts[i]), 5) if u.osc else f(abs(prog.lifts[i]) * MM, 2)
+    amp = sig(abs(prog.lifts[i]), 4, group=False) if u.osc else f(abs(prog.lifts[i]) * MM, 2)
     sign = "" if seg.kind == RISE else "-"
     phi_rad = prog.spans[i]
     if u.omega:

@@ -32,6 +32,7 @@ LABELS = LabelTable({
     "x": "x (mm)",
     "y": "y (mm)",
     "reaction": N_("joint reaction (N)"),
+    "reaction_kn": N_("joint reaction (kN)"),
     "guide": N_("ram guide"),
     "working": N_("working stroke"),
     "return": N_("return stroke"),
@@ -183,13 +184,20 @@ def energy(path: Path, lang: str, phase_deg, energy_j, at_min_deg, at_max_deg, s
 
 @cached
 def reactions(path: Path, lang: str, phase_deg, named, working_span_deg):
+    """The joint reactions [N] against the crank angle; in kN when they reach a million
+    newtons (render/fmt.py's :func:`~mechdesign.render.fmt.force_unit`), so that the axis
+    has no "1e6" offset."""
+    from .fmt import force_unit
+
     lab = LABELS[lang]
+    peak = max((float(np.max(np.abs(v))) for v in named.values() if len(v)), default=0.0)
+    scale, unit = force_unit(peak)
     with figure(path, 1, (7.0, 3.6)) as (ax,):
         _phase_axis(ax, working_span_deg)
         for name, values in named.items():
-            ax.plot(phase_deg, values, lw=1.1, label=name)
+            ax.plot(phase_deg, np.asarray(values) / scale, lw=1.1, label=name)
         ax.set_xlabel(lab["phase"])
-        ax.set_ylabel(lab["reaction"])
+        ax.set_ylabel(lab["reaction_kn" if unit == "kN" else "reaction"])
         ax.legend(fontsize=7, ncol=4, loc="upper right")
 
 

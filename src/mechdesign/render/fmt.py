@@ -11,6 +11,10 @@ Numbers, as an engineer writes them (one rule for every report, table and sheet)
   such a quantity (forces to 0.1 N), :func:`f` with ``group=True``;
 * dimensionless ratios (K, efficiencies, safety factors): 4 significant digits, or the
   fixed decimals a table states;
+* a magnitude of a million or more (seven digits: a bearing life of 40 680 894 h) with a power
+  of ten, 4 significant digits — :func:`sci` (``4.068 × 10⁷ h``; in a formula
+  ``4.068\\times10^{7}``) — unless a larger unit (kN for a press load of 1 000 000 N, the
+  forces' table and plot then in kN) keeps it below a million;
 * residuals, relative errors and other tiny magnitudes in the verification tables: two
   significant digits times a power of ten — :func:`e` (``2.2 × 10⁻¹⁶``), an exact zero ``0``;
 * never E-notation (``4.8e+04``), never a negative zero (``-0.00`` → ``0.00``); in text
@@ -67,17 +71,18 @@ def f(x: float, digits: int = 2, group: bool = False) -> str:
     return _group(text) if group else text
 
 
-def sig(x: float, n: int = 4) -> str:
+def sig(x: float, n: int = 4, group: bool = True) -> str:
     """``x`` with ``n`` significant digits in fixed-point notation, never E-notation:
     ``12698.4`` → ``12 700``, ``0.065999`` → ``0.06600``, ``48000`` → ``48 000``; the
-    significant trailing zeros are kept; zero is ``0``; NaN or infinite is ``—``."""
+    significant trailing zeros are kept; zero is ``0``; NaN or infinite is ``—``.
+    ``group=False`` inside a formula (digits together)."""
     if x != x or abs(x) == float("inf"):
         return "—"
     if x == 0:
         return "0"
     rounded = Decimal(f"{x:.{n - 1}e}")
     decimals = max(n - 1 - rounded.adjusted(), 0)
-    return f(float(rounded), decimals, group=True)
+    return f(float(rounded), decimals, group=group)
 
 
 _SUPERSCRIPT = str.maketrans("-0123456789", "\u207b\u2070\u00b9\u00b2\u00b3\u2074\u2075\u2076\u2077\u2078\u2079")
@@ -95,6 +100,25 @@ def e(x: float) -> str:
         return sig(x, 2)
     mant, _, exp = f"{x:.1e}".partition("e")
     return f"{mant} × 10{str(int(exp)).translate(_SUPERSCRIPT)}"
+
+
+def sci(x: float, n: int = 4) -> str:
+    """A magnitude of a million or more (a bearing life of 40 680 894 h) with ``n``
+    significant digits times a power of ten, ``4.068 × 10⁷``, never seven digits or more;
+    smaller magnitudes as :func:`sig`."""
+    if x != x or abs(x) == float("inf"):
+        return "—"
+    if abs(x) < 1e6:
+        return sig(x, n)
+    mant, _, exp = f"{x:.{n - 1}e}".partition("e")
+    return f"{mant} × 10{str(int(exp)).translate(_SUPERSCRIPT)}"
+
+
+def force_unit(peak: float) -> tuple[float, str]:
+    """The unit of a table or plot of forces whose largest magnitude is ``peak`` [N]: kN
+    (divisor 1000) from a million newtons on (a press load of 1 000 000 N is 1000 kN, no
+    seven-digit numbers and no "1e6" axis offset), else N."""
+    return (1e3, "kN") if abs(peak) >= 1e6 else (1.0, "N")
 
 
 def number(text: str) -> float:

@@ -66,8 +66,8 @@ def gear_context(g, lang: str, figures: dict[str, str]) -> dict:
     eq = {
         # the general form and the numbers on two lines: one line runs past the margin
         "eps": rf"\varepsilon_\alpha = \frac{{z_1(\tan\alpha_{{a1}}-\tan\alpha')+z_2(\tan\alpha_{{a2}}-\tan\alpha')}}{{2\pi}}",
-        "eps_num": (rf"\varepsilon_\alpha = \frac{{{g1.z}\times({f(np.tan(g1.alpha_a), 5)}-{f(tw, 5)})+{g2.z}\times"
-                    rf"({f(np.tan(g2.alpha_a), 5)}-{f(tw, 5)})}}{{2\pi}} = {f(p.contact_ratio, 4)}"),
+        "eps_num": (rf"\varepsilon_\alpha = \frac{{{g1.z}\times({f(np.tan(g1.alpha_a), 4)}-{f(tw, 4)})+{g2.z}\times"
+                    rf"({f(np.tan(g2.alpha_a), 4)}-{f(tw, 4)})}}{{2\pi}} = {f(p.contact_ratio, 3)}"),
         "b1b2": (rf"\overline{{B_1B_2}} = \sqrt{{r_{{a1}}^2-r_{{b1}}^2}}+\sqrt{{r_{{a2}}^2-r_{{b2}}^2}}-a'\sin\alpha'"
                  rf" = {f(b1b2 * MM, 3)}\ \text{{mm}}, \quad \frac{{\overline{{B_1B_2}}}}{{p_b}} = "
                  rf"\frac{{{f(b1b2 * MM, 3)}}}{{{f(p.pb * MM, 3)}}} = {f(b1b2 / p.pb, 4)}"),

@@ -17,7 +17,8 @@ import numpy as np
 
 from . import figures as fig
 from ..i18n import N_, tr
-from .fmt import f, grouped, mpl_text
+from .fmt import f, grouped, mpl_text, sci
+from .label_layout import Label, place
 from .labels import LabelTable, pgettext
 
 _T = LabelTable({
@@ -100,9 +101,13 @@ def _split_to(arg: str) -> str:
 
 
 def _num(x: float) -> str:
-    """A value read from a drawing: 3 significant digits (no E-notation)."""
+    """A value read from a drawing: 3 significant digits (no E-notation); a million or more
+    (a moment in N·mm) with a power of ten, 4 significant digits (render/fmt.py's rule)."""
     if x == 0:
         return "0"
+    if abs(x) >= 1e6:
+        mant, _e, power = f"{x:.3e}".partition("e")
+        return f"{mant}\\times10^{{{int(power)}}}"
     d = max(0, 2 - int(math.floor(math.log10(abs(x)))))
     return f(x, min(d, 4))
 
@@ -110,7 +115,7 @@ def _num(x: float) -> str:
 def _numg(x: float) -> str:
     """:func:`_num` for a table cell or running text: five or more integer digits grouped
     (render/fmt.py's rule); inside a formula :func:`_num` keeps them together."""
-    return grouped(_num(x))
+    return sci(x) if abs(x) >= 1e6 else grouped(_num(x))
 
 
 def _mm(x: float) -> str:
@@ -123,13 +128,24 @@ def _scale(x: float) -> str:
 
 # ---------------------------------------------------------------- figures
 
-def _arrow(ax, a: complex, b: complex, color="k", lw=1.2, label=None, ls="-"):
+#: Font size of the labels of the free-body diagrams and force polygons [pt].
+LABEL_SIZE = 8.5
+
+
+def _arrow(ax, a: complex, b: complex, color="k", lw=1.2, label=None, ls="-", labels=None):
+    """An arrow a → b; its label beside the middle — drawn at once, or, when ``labels`` is a
+    list, collected there for :func:`.label_layout.place` (offered the arrow's normal on
+    either side first)."""
     if abs(b - a) < 1e-9:
         return
     ax.annotate("", xy=(b.real, b.imag), xytext=(a.real, a.imag),
                 arrowprops=dict(arrowstyle="-|>", color=color, lw=lw, ls=ls,
                                 shrinkA=0, shrinkB=0, mutation_scale=9))
-    if label:
+    if label and labels is not None:
+        n = 1j * (b - a) / abs(b - a)
+        labels.append(Label(f"${label}$", (a + b) / 2, (n, -n),
+                            {"fontsize": LABEL_SIZE, "color": color}))
+    elif label:
         m = (a + b) / 2
         n = 1j * (b - a) / abs(b - a)
         ax.text((m + 0.04 * abs(b - a) * n).real, (m + 0.04 * abs(b - a) * n).imag,
@@ -191,17 +207,23 @@ def _force_figure(path: Path, pos, fg, members: dict, lang: str) -> None:
         a1, a2 = f_.add_subplot(1, 2, 1), f_.add_subplot(1, 2, 2)
         P = pos.points
         pts: dict = {}          # ordered (a set's order would change between processes)
+        labels1: list[Label] = []
+        lines1: list[tuple[complex, complex]] = []      # what a label must not lie on
         for link in fg.links:
             chain = members.get(link, ())
             zs = [P[p] / pos.length_scale for p in chain if p in P]
             if len(zs) >= 2:
                 a1.plot([z.real for z in zs], [z.imag for z in zs], "-", color="0.3", lw=2.5,
                         solid_capstyle="round")
+                lines1 += list(zip(zs[:-1], zs[1:]))
             pts.update((p, None) for p in chain if p in P)
+        centre = np.mean([P[p] for p in pts]) / pos.length_scale if pts else 0j
         for p in pts:
             z = P[p] / pos.length_scale
             a1.plot([z.real], [z.imag], "o", mfc="w", mec="k", ms=4)
-            a1.text(z.real, z.imag, f"  {mpl_text(p)}", fontsize=7, va="top")
+            lines1.append((z, z))
+            away = (z - centre) / abs(z - centre) if abs(z - centre) > 1e-12 else 1
+            labels1.append(Label(mpl_text(p), z, (away,), {"fontsize": LABEL_SIZE}))
         span = max([abs(P[a] - P[b]) for a in pts for b in pts] + [1e-9]) / pos.length_scale
         L = 0.25 * span
         for link, loads in fg.loads.items():
@@ -211,21 +233,28 @@ def _force_figure(path: Path, pos, fg, members: dict, lang: str) -> None:
                 z = ld.at / pos.length_scale
                 u = ld.value / abs(ld.value)
                 _arrow(a1, z, z + L * u, "tab:red" if ld.kind == "reaction" else "tab:blue",
-                       label=sym(ld.name))
+                       label=sym(ld.name), labels=labels1)
+                lines1.append((z, z + L * u))
         for name, at in fg.reaction_points.items():
             value = fg.reactions.get(name, 0j)
             if abs(value) > 0:
                 z = at / pos.length_scale
-                _arrow(a1, z, z + L * value / abs(value), "tab:red", label=sym(name))
+                _arrow(a1, z, z + L * value / abs(value), "tab:red", label=sym(name),
+                       labels=labels1)
+                lines1.append((z, z + L * value / abs(value)))
         a1.set_aspect("equal", adjustable="datalim")
         a1.set_title(f"{t['fbd']} ({t['links']} {', '.join(fg.links)})  "
                      f"μl = {_scale(pos.length_scale)} m/mm", fontsize=8)
         a1.tick_params(labelsize=6)
+        labels2: list[Label] = []
+        lines2: list[tuple[complex, complex]] = []
         for v in fg.vectors:
             if v.tail in fg.points and v.head in fg.points:
                 c = _COLORS.get({"normal": "normal_f", "tangential": "tangential_f"}.get(v.kind, v.kind), "k")
                 _arrow(a2, fg.points[v.tail], fg.points[v.head], c,
-                       ls="--" if v.kind in ("total", "internal") else "-", label=sym(v.symbol))
+                       ls="--" if v.kind in ("total", "internal") else "-", label=sym(v.symbol),
+                       labels=labels2)
+                lines2.append((fg.points[v.tail], fg.points[v.head]))
         for name, z in fg.points.items():
             a2.plot([z.real], [z.imag], "k.", ms=2)
         a2.set_aspect("equal", adjustable="datalim")
@@ -233,6 +262,9 @@ def _force_figure(path: Path, pos, fg, members: dict, lang: str) -> None:
         a2.tick_params(labelsize=6)
         a2.set_xlabel("mm", fontsize=6)
         a2.grid(True, lw=0.3, alpha=0.4)
+        # labels last, clear of each other and of the links and vectors (issue 19)
+        place(a1, labels1, lines1)
+        place(a2, labels2, lines2)
 
 
 def graphical_figures(results: dict, fig_dir: Path, lang: str) -> dict[str, str]:

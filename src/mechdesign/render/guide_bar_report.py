@@ -5,7 +5,7 @@ from __future__ import annotations
 import numpy as np
 
 from ..i18n import N_, tr
-from .fmt import f
+from .fmt import f, sig
 from .labels import InContext, pgettext
 
 DEG = 180.0 / np.pi
@@ -47,9 +47,9 @@ def guide_bar_context(syn, p, rod: str = "BF", ram_zh: str | None = None,
     if syn.given_dimensions:
         eq = {
             "theta": (rf"\theta = \psi = 2\arcsin\frac{{L_{{O_2A}}}}{{L_{{O_2O_3}}}} = "
-                      rf"2\arcsin\frac{{{g(d.crank)}}}{{{g(d.frame)}}} = {f(theta, 4)}°"),
-            "K": (rf"K = \frac{{180° + \theta}}{{180° - \theta}} = \frac{{180° + {f(theta, 4)}°}}"
-                  rf"{{180° - {f(theta, 4)}°}} = {f(K, 4)}"),
+                      rf"2\arcsin\frac{{{g(d.crank)}}}{{{g(d.frame)}}} = {f(theta, 2)}°"),
+            "K": (rf"K = \frac{{180° + \theta}}{{180° - \theta}} = \frac{{180° + {f(theta, 2)}°}}"
+                  rf"{{180° - {f(theta, 2)}°}} = {f(K, 4)}"),
             "H": (rf"H = 2 L_{{O_3B}} \sin(\psi/2) = 2 \times {g(d.guide_bar)} \times "
                   rf"\frac{{{g(d.crank)}}}{{{g(d.frame)}}} = {f(H, 2)}\ \text{{mm}}"),
         }
@@ -60,13 +60,17 @@ def guide_bar_context(syn, p, rod: str = "BF", ram_zh: str | None = None,
             "bar": (rf"L_{{O_3B}} = \frac{{H}}{{2\sin(\psi/2)}} = \frac{{{f(H, 0)}}}"
                     rf"{{2\sin {f(half, 3)}°}} = {f(d.guide_bar * mm, 2)}\ \text{{mm}}"),
             "crank": (rf"L_{{O_2A}} = L_{{O_2O_3}} \sin(\psi/2) = {f(d.frame * mm, 0)} \times "
-                      rf"{f(sin_half, 5)} = {f(d.crank * mm, 2)}\ \text{{mm}}"),
+                      rf"{sig(sin_half, 4, group=False)} = {f(d.crank * mm, 2)}\ \text{{mm}}"),
         }
     eq["rod"] = (rf"L_{{{rod}}} = {f(p.rod_ratio, 2)}\, L_{{O_3B}} = {f(p.rod_ratio, 2)} \times "
                  rf"{f(d.guide_bar * mm, 2)} = {f(d.rod * mm, 2)}\ \text{{mm}}") if p.rod is None else \
         rf"L_{{{rod}}} = {f(d.rod * mm, 2)}\ \text{{mm}}"
-    eq["guide"] = (rf"L_{{O_3M}} = L_{{O_3B}}\,\frac{{1+\cos(\psi/2)}}{{2}} = "
-                   rf"{f(d.guide_bar * mm, 2)} \times \frac{{1+{f(np.cos(np.radians(half)), 5)}}}{{2}}"
+    # (1 + cos)/2 = 1 - (1 - cos)/2: 1 - cos(ψ/2) to 4 significant digits carries the
+    # result to 0.01 mm, where cos(ψ/2) itself would need five or six decimals
+    bar_mm = f(d.guide_bar * mm, 2)
+    eq["guide"] = (rf"L_{{O_3M}} = L_{{O_3B}}\,\frac{{1+\cos(\psi/2)}}{{2}} = L_{{O_3B}} - "
+                   rf"\frac{{L_{{O_3B}}\,(1-\cos(\psi/2))}}{{2}} = {bar_mm} - \frac{{{bar_mm} \times "
+                   rf"{sig(1 - np.cos(np.radians(half)), 4, group=False)}}}{{2}}"
                    rf" = {f(d.guide_height * mm, 2)}\ \text{{mm}}") if not syn.guide_given else None
     eq["com"] = rf"L_{{O_3S_4}} = {f(p.com_ratio, 2)}\, L_{{O_3B}} = {f(d.bar_com * mm, 2)}\ \text{{mm}}"
     # lengths the brief gives are shown as given (all their digits), derived ones to 0.01 mm

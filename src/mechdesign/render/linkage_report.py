@@ -14,8 +14,9 @@ import numpy as np
 
 from ..i18n import N_, tr
 from . import figures as fig
-from .fmt import e, f, md_text, mpl_text, tex_name
+from .fmt import e, f, force_unit, md_text, mpl_text, tex_name
 from .fmt import verdict as fmt_verdict
+from .label_layout import Label, place
 from .labels import LabelTable
 
 DEG = 180.0 / np.pi
@@ -141,6 +142,8 @@ def skeleton(path: Path, lang: str, model, k, members: dict, sliders: list):
     allpts = np.concatenate([P[p][:n] for p in P])
     span = max(np.ptp(allpts.real), np.ptp(allpts.imag), 1e-9)
     block = 0.025 * span
+    lines: list[tuple[complex, complex]] = []       # what a point's name must not lie on
+    numbers = []                                    # the position numbers at the crank pin
     with fig.figure(path, 1, (6.4, 5.6), sharex=False) as (ax,):
         # Paths of every moving point over the cycle.
         for name, z in P.items():
@@ -167,8 +170,19 @@ def skeleton(path: Path, lang: str, model, k, members: dict, sliders: list):
             tip = P[crank.tip][j]
             o = complex(frame[crank.pivot]) * 1e3
             u = (tip - o) / abs(tip - o)
-            ax.text((tip + 1.8 * block * u).real, (tip + 1.8 * block * u).imag, labels[rank],
-                    fontsize=6.5, ha="center", va="center")
+            numbers.append(ax.text((tip + 1.8 * block * u).real, (tip + 1.8 * block * u).imag,
+                                   labels[rank], fontsize=6.5, ha="center", va="center"))
+            if bold:        # the links of position 1: a point's name must not lie on them
+                for link, pts in members.items():
+                    zs = [P[p][j] for p in pts]
+                    zs = zs + [zs[0]] if len(zs) >= 3 else zs
+                    lines += list(zip(zs[:-1], zs[1:]))
+                for slider, p, guide, _gp in sliders:
+                    ang = guide if isinstance(guide, float) else k.link_angle[guide][j]
+                    u = np.exp(1j * ang) * block
+                    corners = P[p][j] + np.array([-u - 0.6j * u, u - 0.6j * u, u + 0.6j * u,
+                                                  -u + 0.6j * u, -u - 0.6j * u])
+                    lines += list(zip(corners[:-1], corners[1:]))
         for slider, p, guide, gp in sliders:
             if isinstance(guide, float):
                 z = P[p][:n]
@@ -177,21 +191,38 @@ def skeleton(path: Path, lang: str, model, k, members: dict, sliders: list):
                 a, b = along.min() - 2 * block, along.max() + 2 * block
                 ends = gp * 1e3 + np.array([a, b]) * u
                 ax.plot(ends.real, ends.imag, color="0.4", lw=0.8, ls="-.")
+        names: list[Label] = []
         for name, z in frame.items():
             z = complex(z) * 1e3
             ax.plot([z.real], [z.imag], "^", color="k", ms=6, zorder=4)
-            ax.text(z.real + 0.6 * block, z.imag - 1.6 * block, mpl_text(name), fontsize=8)
+            lines.append((z, z))
+            names.append(Label(mpl_text(name), z, (1 - 1j,), {"fontsize": 8.5}))
         j0 = regular[0]
         for name in P:
             if name not in frame:
                 z = P[name][j0]
                 ax.plot([z.real], [z.imag], "o", color="C0", ms=2.5, zorder=4)
-                ax.text(z.real + 0.5 * block, z.imag + 0.5 * block, mpl_text(name), fontsize=8,
-                        color="C0")
+                lines.append((z, z))
+                names.append(Label(mpl_text(name), z, _away_from_links(z, lines),
+                                   {"fontsize": 8.5, "color": "C0"}))
         ax.set_aspect("equal")
         ax.set_xlabel("x (mm)")
         ax.set_ylabel("y (mm)")
         ax.grid(True, lw=0.3, color="0.88")
+        # the point names clear of the links of position 1 and of each other (issue 19)
+        place(ax, names, lines, fixed=numbers)
+
+
+def _away_from_links(z: complex, lines) -> tuple:
+    """Directions for a point's name: the bisector of the widest gap between the links that
+    meet at ``z`` (so the name sits between them, off both), then the other gaps."""
+    angles = sorted({float(np.angle(b - a if abs(a - z) < 1e-9 else a - b))
+                     for a, b in lines if abs(a - b) > 1e-9 and (abs(a - z) < 1e-9 or abs(b - z) < 1e-9)})
+    if not angles:
+        return (1 + 1j,)
+    gaps = [(angles[(i + 1) % len(angles)] - a) % (2 * np.pi) or 2 * np.pi for i, a in enumerate(angles)]
+    order = sorted(range(len(angles)), key=lambda i: -gaps[i])
+    return tuple(np.exp(1j * (angles[i] + gaps[i] / 2)) for i in order)
 
 
 def _link_rows(model, lang: str) -> list[list[str]]:
@@ -260,12 +291,18 @@ def linkage_context(model, k, f_, fly, v, figures: dict, lang: str,
                  for q in k.quality]
     kin_rows, force_rows, point_rows = [], [], []
     reaction_names = list(f_.reactions)
+    # forces in kN when they reach a million newtons (render/fmt.py's force_unit)
+    peak = max([float(np.max(np.abs(vals))) for vals in f_.reactions.values() if len(vals)]
+               + [max(abs(r.working), abs(r.returning)) for r in model.resistances], default=0.0)
+    kilo, force_unit_ = force_unit(peak)
+    force_digits = 2 if force_unit_ == "kN" else 1
     for i, label in enumerate(labels):
         j = n + i
         kin_rows.append([label, f(k.phase[j] * DEG, 2), f((k.crank_angle[j] * DEG) % 360, 2),
                          f(k.s[j] * scale, 3), f(k.v[j], 4), f(k.a[j], 4)]
                         + [f(q.values[j] * DEG, 2) for q in k.quality])
-        force_rows.append([label] + [f(abs(f_.reactions[nm][j]), 1, group=True) for nm in reaction_names]
+        force_rows.append([label] + [f(abs(f_.reactions[nm][j]) / kilo, force_digits, group=True)
+                                     for nm in reaction_names]
                           + [f(f_.balancing_torque[j], 3, group=True)])
         point_rows.append([label] + [f"({f(k.points[p][j].real * 1e3, 1)}, "
                                      f"{f(k.points[p][j].imag * 1e3, 1)})" for p in point_names])
@@ -296,8 +333,8 @@ def linkage_context(model, k, f_, fly, v, figures: dict, lang: str,
         if r.active is not None:
             window = f"{f(r.active[0] * scale, 1)} – {f(r.active[1] * scale, 1)} {units[0]}"
         res_rows.append([f"R{i + 1}", md_text(r.point), md_text(r.link), f(r.direction * DEG, 1),
-                         f(r.working, 1, group=True),
-                         f(r.returning, 1, group=True), window])
+                         f(r.working / kilo, force_digits, group=True),
+                         f(r.returning / kilo, force_digits, group=True), window])
     mass_rows = [[md_text(b.link), md_text(b.com), f(b.mass, 2), f(b.inertia, 4)]
                  for b in model.bodies]
     omega = abs(model.crank_omega)
@@ -324,7 +361,7 @@ def linkage_context(model, k, f_, fly, v, figures: dict, lang: str,
         "link_ids": [md_text(l_) for l_ in k.link_omega], "link_speed_rows": link_speed_rows,
         "qual_rows": qual_rows,
         "reaction_names": [f"$F_{{{tex_name(nm)}}}$" for nm in reaction_names],
-        "force_rows": force_rows,
+        "force_rows": force_rows, "force_unit": force_unit_,
         "mb_max": f(f_.torque_max, 3, group=True),
         "mb_min": f(f_.torque_min, 3, group=True),
         "mb_mean": f(f_.mean_torque, 3, group=True), "mb_peak": f(f_.peak_torque, 3, group=True),

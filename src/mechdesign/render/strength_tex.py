@@ -12,7 +12,7 @@ from typing import Iterable
 
 from ..core.strength import COURSE_SCALE, Check
 from ..i18n import tr
-from .fmt import f
+from .fmt import f, sci
 
 #: Decimals of the value and allowable columns per course unit.
 DIGITS = {"MPa": 1, "h": 0, "°C": 1, "mm": 2, "m/s": 2, "°": 1, "1": 2, "kW": 3, "μm": 2}
@@ -48,12 +48,29 @@ def _counts(check: Check) -> bool:
                                      for x in (check.course_value, check.course_allowable))
 
 
+#: From this magnitude on a value is written with a power of ten (render/fmt.py's rule: no
+#: seven-digit numbers; a bearing life of 40 680 894 h is 4.068 × 10⁷ h).
+BIG = 1e6
+
+
+def _fixed(x: float, check: Check) -> str:
+    return f(x, 0 if _counts(check) else DIGITS.get(check.unit, 2))
+
+
 def _value(check: Check) -> str:
-    return f(check.course_value, 0 if _counts(check) else DIGITS.get(check.unit, 2))
+    x = check.course_value
+    return num(x) if abs(x) >= BIG else _fixed(x, check)
 
 
 def _allowable(check: Check) -> str:
-    return f(check.course_allowable, 0 if _counts(check) else DIGITS.get(check.unit, 2))
+    x = check.course_allowable
+    return num(x) if abs(x) >= BIG else _fixed(x, check)
+
+
+def _cell(x: float, check: Check) -> str:
+    """A value or allowable for the check table: as in the formula, a power of ten as
+    ``4.068 × 10⁷`` (render/fmt.py's :func:`~mechdesign.render.fmt.sci`)."""
+    return sci(x) if abs(x) >= BIG else _fixed(x, check)
 
 
 def _unit(unit: str) -> str:
@@ -250,7 +267,8 @@ def check_rows(checks: Iterable[Check], lang: str = "zh") -> list[list[str]]:
     the allowable is a minimum for lives and diameters, a maximum otherwise; a ratio's unit "1"
     shows as "—")."""
     zh, en = tr("zh"), tr("en")
-    return [[zh(c.name, **c.name_args), en(c.name, **c.name_args), _value(c), _allowable(c),
+    return [[zh(c.name, **c.name_args), en(c.name, **c.name_args), _cell(c.course_value, c),
+             _cell(c.course_allowable, c),
              "—" if c.unit == "1" else c.unit, verdict(c, lang)] for c in checks]
 
 

@@ -274,9 +274,9 @@ def _gamma_eqs(d) -> tuple[str, str]:
     c1 = (b * b + c * c - (l4 - a) ** 2) / (2 * b * c)
     c2 = (b * b + c * c - (l4 + a) ** 2) / (2 * b * c)
     e1 = (rf"\cos\delta' = \frac{{{f(b, 4)}^2 + {f(c, 4)}^2 - ({f(l4, 4)} - {f(a, 4)})^2}}{{2 \times {f(b, 4)} "
-          rf"\times {f(c, 4)}}} = {f(c1, 6)},\quad \delta' = {f(np.degrees(np.arccos(c1)), 4)}^\circ")
+          rf"\times {f(c, 4)}}} = {f(c1, 4)},\quad \delta' = {f(np.degrees(np.arccos(c1)), 4)}^\circ")
     e2 = (rf"\cos\delta'' = \frac{{{f(b, 4)}^2 + {f(c, 4)}^2 - ({f(l4, 4)} + {f(a, 4)})^2}}{{2 \times {f(b, 4)} "
-          rf"\times {f(c, 4)}}} = {f(c2, 6)},\quad \delta'' = {f(np.degrees(np.arccos(c2)), 4)}^\circ")
+          rf"\times {f(c, 4)}}} = {f(c2, 4)},\quad \delta'' = {f(np.degrees(np.arccos(c2)), 4)}^\circ")
     return e1, e2
 
 
@@ -329,7 +329,7 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
     else:
         eq["theta"] = (rf"K = \frac{{180^\circ + \theta}}{{180^\circ - \theta}} = "
                        rf"\frac{{180^\circ + {f(th_deg, 4)}^\circ}}{{180^\circ - {f(th_deg, 4)}^\circ}}"
-                       rf" = {f(p.K, 6)}")
+                       rf" = {f(p.K, 4)}")
     eq["chord"] = (rf"\overline{{C_1C_2}} = 2 l_3 \sin\frac{{\psi}}{{2}} = 2 \times {_mm(p.rocker, 2)}"
                    rf" \times \sin {f(p.swing * DEG / 2, 4)}^\circ = {_mm(chord)}\ \text{{mm}}")
     eq["radius"] = (rf"R = \frac{{\overline{{C_1C_2}}}}{{2\sin\theta}} = \frac{{{_mm(chord)}}}"
@@ -376,14 +376,14 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
             "l1": f(a, 4), "l2": f(b, 4), "l3": f(c, 4), "l4": f(d, 4),
             "kind": _kind(tb.grashof, lang) if tb is not None else "",
             "eq_dac": (rf"\angle DAC_1 = \arccos\frac{{(l_2 - l_1)^2 + l_4^2 - l_3^2}}{{2(l_2 - l_1)l_4}}"
-                       rf" = {f(dac1, 6)}^\circ"),
+                       rf" = {f(dac1, 4)}^\circ"),
             "eq_dac2": (rf"\angle DAC_2 = \arccos\frac{{(l_2 + l_1)^2 + "
-                        rf"l_4^2 - l_3^2}}{{2(l_2 + l_1)l_4}} = {f(dac2, 6)}^\circ"),
+                        rf"l_4^2 - l_3^2}}{{2(l_2 + l_1)l_4}} = {f(dac2, 4)}^\circ"),
             "eq_adc": (rf"\angle ADC_1 = \arccos\frac{{l_4^2 + l_3^2 - (l_2 - l_1)^2}}{{2l_4l_3}}"
-                       rf" = {f(adc1, 6)}^\circ,\quad \angle ADC_2 = {f(adc2, 6)}^\circ"),
-            "eq_theta": (rf"\theta = \lvert\angle DAC_1 - \angle DAC_2\rvert = {f(th_deg, 6)}^\circ,"
-                         rf"\qquad \psi = \angle ADC_2 - \angle ADC_1 = {_deg(p.swing, 6)}^\circ"),
-            "eq_K": (rf"K = \frac{{180^\circ + \theta}}{{180^\circ - \theta}} = {f(p.K, 6)}"),
+                       rf" = {f(adc1, 4)}^\circ,\quad \angle ADC_2 = {f(adc2, 4)}^\circ"),
+            "eq_theta": (rf"\theta = \lvert\angle DAC_1 - \angle DAC_2\rvert = {f(th_deg, 4)}^\circ,"
+                         rf"\qquad \psi = \angle ADC_2 - \angle ADC_1 = {_deg(p.swing, 4)}^\circ"),
+            "eq_K": (rf"K = \frac{{180^\circ + \theta}}{{180^\circ - \theta}} = {f(p.K, 4)}"),
             "gamma_min": _deg(tb.gamma_min, 4) if tb is not None else "",
         }
     # data table
@@ -393,9 +393,9 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
             ("l2", N_("coupler BC (given)"), given["l2"], "mm"),
             ("l3", N_("rocker CD (given)"), given["l3"], "mm"),
             ("l4", N_("frame AD (given)"), given["l4"], "mm"),
-            ("θ", N_("extreme-position angle (derived)"), f(th_deg, 6), "°"),
-            ("K", N_("time ratio (derived)"), f(p.K, 6), "—"),
-            ("ψ", N_("rocker swing (derived)"), _deg(p.swing, 6), "°"),
+            ("θ", N_("extreme-position angle (derived)"), f(th_deg, 4), "°"),
+            ("K", N_("time ratio (derived)"), f(p.K, 4), "—"),
+            ("ψ", N_("rocker swing (derived)"), _deg(p.swing, 4), "°"),
             ("γmin", N_("minimum transmission angle (derived)"), given["gamma_min"], "°"),
             ("[γ]", N_("allowed minimum transmission angle"), _deg(p.gamma_allowed, 0), "°"))]
     else:
@@ -411,10 +411,10 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
     cmp_rows = []
     for d, s in zip(designs, ver.sims):
         cmp_rows.append([md_text(_name(s.label, lang)), _mm(d.design.crank), _mm(d.design.coupler), _mm(d.design.rocker),
-                         _mm(d.design.frame), _deg(s.theta, 4), _deg(s.swing, 4), f(s.K, 5),
+                         _mm(d.design.frame), _deg(s.theta, 4), _deg(s.swing, 4), f(s.K, 4),
                          _deg(s.gamma_min, 3)])
     spec_row = [_("specification"), "", "", _mm(p.rocker, 4), "",
-                f(th_deg, 4), _deg(p.swing, 4), f(p.K, 5), ""]
+                f(th_deg, 4), _deg(p.swing, 4), f(p.K, 4), ""]
     paper_notes = []
     missing = []
     for d, s in zip(designs[len(designs) - len(r["compare"]):], ver.sims[len(designs) - len(r["compare"]):]):
@@ -476,11 +476,11 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
                               rf" = {_deg(sl.alpha_slow, 3)}^\circ"),
             "alpha_slow": _deg(sl.alpha_slow, 2), "alpha_fast": _deg(sl.alpha_fast, 2),
             "given": p.slider.crank is not None,
-            "eq_H": (rf"H = \sqrt{{(b + a)^2 - e^2}} - \sqrt{{(b - a)^2 - e^2}} = {_mm(sl.stroke, 6)}"
+            "eq_H": (rf"H = \sqrt{{(b + a)^2 - e^2}} - \sqrt{{(b - a)^2 - e^2}} = {_mm(sl.stroke, 4)}"
                      r"\ \text{mm}"),
             "eq_th": (rf"\theta = \arcsin\frac{{e}}{{b - a}} - \arcsin\frac{{e}}{{b + a}} = "
-                      rf"{_deg(sl.theta, 6)}^\circ,\qquad K = \frac{{180^\circ + \theta}}{{180^\circ - \theta}}"
-                      rf" = {f(sl.K, 6)}"),
+                      rf"{_deg(sl.theta, 4)}^\circ,\qquad K = \frac{{180^\circ + \theta}}{{180^\circ - \theta}}"
+                      rf" = {f(sl.K, 4)}"),
             "allowed": _deg(sl.alpha_allowed, 0),
         }
         slider_name = _.pgettext("verification item", "offset slider-crank")

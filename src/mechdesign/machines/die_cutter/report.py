@@ -274,9 +274,9 @@ def _synthesis(d, p, _) -> dict:
         "height": (r"y_D(\beta) = l_{CB}\cos\beta + \sqrt{l_{BD}^2 - l_{CB}^2\sin^2\beta}"),
         "stroke": (rf"H = y_D(\varepsilon) - y_D(\varepsilon + \psi) = {f(d.top_height * MM, 3)} - "
                    rf"{f(d.bottom_height * MM, 3)} = {f(g.stroke * MM, 3)}\ \text{{mm}}"
-                   rf"\ \Rightarrow\ \psi = {_deg(psi, 4)}°"),
+                   rf"\ \Rightarrow\ \psi = {_deg(psi, 2)}°"),
         "theta": (rf"\theta = 180° \times \frac{{K-1}}{{K+1}} = 180° \times \frac{{{f(K, 3)}-1}}"
-                  rf"{{{f(K, 3)}+1}} = {f(theta, 4)}°"),
+                  rf"{{{f(K, 3)}+1}} = {f(theta, 2)}°"),
         "links": (rf"a = \frac{{AC_2 - AC_1}}{{2}} = {f(fb.crank * MM, 3)}\ \text{{mm}},\quad "
                   rf"b = \frac{{AC_2 + AC_1}}{{2}} = {f(fb.coupler * MM, 3)}\ \text{{mm}},\quad "
                   rf"d = {f(fb.frame * MM, 3)}\ \text{{mm}}"),
@@ -353,7 +353,7 @@ def _amplification(r, p, _) -> dict:
                   rf" = {f(amp.cut_work * p.shaft_rpm / 60, 1)}\ \text{{W}},\qquad \bar M_b\,\omega = "
                   rf"{f(f_.mean_torque, 2)} \times {f(abs(p.crank_omega), 4)} = {f(f_.mean_power, 1)}\ \text{{W}}"),
         "required": (rf"M_{{req}} = F_c\,\frac{{v_D}}{{\omega}} = {f(p.cutting_force / 1e3, 1)}\ "
-                     rf"\text{{kN}} \times {f(u0 * MM, 4)}\ \text{{mm}} = {f(p.cutting_force * u0, 1)}"
+                     rf"\text{{kN}} \times {f(u0 * MM, 3)}\ \text{{mm}} = {f(p.cutting_force * u0, 0)}"
                      rf"\ \text{{N·m}}"),
         "motor": (rf"T = \frac{{P_{{ed}}\,\eta}}{{\omega}} = \frac{{{f(motor.power, 0)} \times "
                   rf"{f(drive.efficiency, 4)}}}{{{f(abs(p.crank_omega), 4)}}} = {f(t_motor, 1)}\ "

@@ -56,11 +56,11 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
             y_eq = rf"y = C_y + \sqrt{{(R + r_r)^2 - (e - C_x)^2}}"
             h_eq = (rf"h = \sqrt{{(R + r_r + \varepsilon)^2 - e^2}} - \sqrt{{(R + r_r - \varepsilon)^2 - e^2}}"
                     rf" = \sqrt{{{f(Rp + ecc, 1)}^2 - {f(x, 1)}^2}} - \sqrt{{{f(Rp - ecc, 1)}^2 - "
-                    rf"{f(x, 1)}^2}} = {f(m.stroke * MM, 4)}\ \text{{mm}}")
+                    rf"{f(x, 1)}^2}} = {f(m.stroke * MM, 2)}\ \text{{mm}}")
             a_eq = rf"\sin\alpha = \frac{{|e - C_x|}}{{R + r_r}},\quad R + r_r = {f(Rp, 1)}\ \text{{mm}}"
         followers.append({"label": md_text(label), "desc": _describe(fol, lang), "y": y_eq, "h": h_eq, "alpha": a_eq,
-                          "stroke": f(m.stroke * MM, 4), "ymin": f(m.y_min * MM, 4),
-                          "ymax": f(m.y_max * MM, 4),
+                          "stroke": f(m.stroke * MM, 2), "ymin": f(m.y_min * MM, 2),
+                          "ymax": f(m.y_max * MM, 2),
                           "alpha_max": f(float(np.max(m.pressure_angle)) * DEG, 2)})
     head = ["δ/°"] + [f"{md_text(label)} s/mm" for label, _ in p.followers] + \
         [f"{md_text(label)} α/°" for label, _ in p.followers]

@@ -8,7 +8,7 @@ import numpy as np
 
 from ...i18n import N_, tr
 from ...render import figures as fig
-from ...render.fmt import e, f, md_meta, md_text
+from ...render.fmt import e, f, md_meta, md_text, sig
 from ...render.fmt import verdict
 
 DEG = 180.0 / np.pi
@@ -239,15 +239,17 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
         }
     eq = {
         "psi": (rf"\psi = 2\arcsin\frac{{H}}{{2\,l_{{DC}}}} = 2\arcsin\frac{{{f(H, 0)}}}{{2 \times {f(R, 0)}}}"
-                rf" = {f(psi, 4)}°"),
+                rf" = {f(psi, 2)}°"),
         "theta": (rf"\theta = 180° \times \frac{{K-1}}{{K+1}} = 180° \times \frac{{{f(pp.time_ratio_K, 2)}-1}}"
-                  rf"{{{f(pp.time_ratio_K, 2)}+1}} = {f(th, 4)}°"),
-        "sagitta": (rf"f = l_{{DC}}\left(1-\cos\frac{{\psi}}{{2}}\right) = {f(R, 0)} \times (1 - {f(cos_h, 6)})"
-                    rf" = {f(sag, 3)}\ \text{{mm}}"),
-        "guide": (rf"y_g = l_{{DC}}\,\frac{{1+\cos(\psi/2)}}{{2}} + e = {f(R, 0)} \times \frac{{1+{f(cos_h, 6)}}}{{2}}"
-                  rf" + {f(syn.guide_offset * MM, 2)} = {f(syn.guide_height * MM, 3)}\ \text{{mm}}"),
+                  rf"{{{f(pp.time_ratio_K, 2)}+1}} = {f(th, 2)}°"),
+        # 1 - cos(ψ/2) itself to 4 significant digits (the difference of two numbers near 1
+        # would need six decimals); y_g through f: (1 + cos)/2 = 1 - (1 - cos)/2
+        "sagitta": (rf"f = l_{{DC}}\left(1-\cos\frac{{\psi}}{{2}}\right) = {f(R, 0)} \times (1 - \cos {f(psi / 2, 2)}°)"
+                    rf" = {f(R, 0)} \times {sig(1 - cos_h, 4, group=False)} = {f(sag, 3)}\ \text{{mm}}"),
+        "guide": (rf"y_g = l_{{DC}}\,\frac{{1+\cos(\psi/2)}}{{2}} + e = l_{{DC}} - \frac{{f}}{{2}} + e = {f(R, 0)} - "
+                  rf"\frac{{{f(sag, 3)}}}{{2}} + {f(syn.guide_offset * MM, 2)} = {f(syn.guide_height * MM, 3)}\ \text{{mm}}"),
         "alphaE": (rf"\alpha_{{E,max}} = \arcsin\frac{{f/2 + \lvert e\rvert}}{{l_{{CE}}}} = \arcsin\frac{{{f(sag / 2, 3)} + "
-                   rf"{f(abs(syn.guide_offset) * MM, 2)}}}{{{f(L, 0)}}} = {f(syn.alpha_E * DEG, 4)}°"),
+                   rf"{f(abs(syn.guide_offset) * MM, 2)}}}{{{f(L, 0)}}} = {f(syn.alpha_E * DEG, 2)}°"),
         "band": (rf"\lvert e\rvert \le l_{{CE}}\sin[\alpha] - \frac{{f}}{{2}} = {f(L, 0)} \times \sin {f(lim, 0)}° - "
                  rf"{f(sag / 2, 3)} = {f(syn.guide_offset_max * MM, 2)}\ \text{{mm}}"),
         "db": (rf"l_{{DB}} = {f(pp.rocker_ratio, 3)}\,l_{{DC}} = {f(c, 2)}\ \text{{mm}}, \quad "
@@ -271,8 +273,8 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
         "hand": (rf"\bar P = \frac{{(F_{{r1}} + F_{{r2}})\,H\,n}}{{60}} = \frac{{({f(pp.working_force, 0)} + "
                  rf"{f(pp.return_force, 0)}) \times {f(pp.stroke, 3)} \times {f(pp.crank_speed_rpm, 0)}}}{{60}}"
                  rf" = {f(chk.hand_power, 3)}\ \text{{W}}"),
-        "mean": (rf"\bar P = \bar M_b\,\omega = {f(chk.mean_torque, 4)} \times {f(abs(pp.crank_omega), 5)} = "
-                 rf"{f(chk.mean_power, 4)}\ \text{{W}}"),
+        "mean": (rf"\bar P = \bar M_b\,\omega = {sig(chk.mean_torque, 4, group=False)} \times "
+                 rf"{sig(abs(pp.crank_omega), 4, group=False)} = {sig(chk.mean_power, 4, group=False)}\ \text{{W}}"),
     }
     syn_rows = [
         ["$\\theta$", _("extreme-position angle"), f(th, 4), "°"],
@@ -360,8 +362,8 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
     if r.get("drive") is not None:
         from ...render.drive_report import drive_context
 
-        pw = (rf"P_w = \bar M_b\,\omega = {f(chk.mean_torque, 4)} \times {f(abs(pp.crank_omega), 5)} = "
-              rf"{f(chk.mean_power, 3)}\ \text{{W}}")
+        pw = (rf"P_w = \bar M_b\,\omega = {sig(chk.mean_torque, 4, group=False)} \times "
+              rf"{sig(abs(pp.crank_omega), 4, group=False)} = {sig(chk.mean_power, 4, group=False)}\ \text{{W}}")
         drive = drive_context(r["drive"], lang, figures, pw)
         drive["peak"] = None        # no flywheel: the note is in this report's own text
     tol = 1e-6

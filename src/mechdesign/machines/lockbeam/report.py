@@ -13,7 +13,7 @@ import numpy as np
 
 from ...i18n import N_, tr
 from ...render import figures as fig
-from ...render.fmt import e, f, md_meta, md_text
+from ...render.fmt import e, f, md_meta, md_text, sig
 from ...render.fmt import verdict
 
 DEG = 180.0 / np.pi
@@ -364,7 +364,7 @@ def _bending(r: dict, lang: str, figures: dict) -> dict:
                   rf"\frac{{{f(bp.bending_wheel * MM, 0)}}}{{{f(bp.driving_wheel * MM, 0)}}} = "
                   rf"{f(bp.output_swing * DEG, 3)}°"),
         "dalpha": (rf"\Delta\alpha = \frac{{h}}{{L}} = \frac{{{f(h_arc * MM, 3)}}}{{{f(arm * MM, 0)}}} = "
-                   rf"{f(b.input_swing, 5)}\ \text{{rad}} = {f(b.input_swing * DEG, 3)}°"),
+                   rf"{sig(b.input_swing, 4, group=False)}\ \text{{rad}} = {f(b.input_swing * DEG, 3)}°"),
         "loop": (r"\left| a\,e^{i\alpha_k} - \left(d + c\,e^{i\beta_k}\right) \right| = b,\qquad "
                  r"k = 1, 2"),
         "lin": (r"a = \frac{|B_1|^2 - |B_2|^2}{2\,\mathrm{Re}\left(e^{i\alpha_1}\bar B_1 - "
@@ -424,13 +424,13 @@ def _bending(r: dict, lang: str, figures: dict) -> dict:
         "eq": eq, "cand_rows": cand_rows, "design_rows": design_rows, "seed": seed,
         "sense": _(sense), "ratio": f(b.ratio, 3),
         "grashof": grashof_sentence(ds.input_rocker, ds.coupler, ds.output_rocker, ds.frame, lang),
-        "dbeta": f(bp.output_swing * DEG, 3), "dalpha": f(b.input_swing * DEG, 3),
+        "dbeta": f(bp.output_swing * DEG, 2), "dalpha": f(b.input_swing * DEG, 3),
         "arm": f(arm * MM, 0), "h": f(h_arc * MM, 3),
         "gmin": f(b.gamma_min * DEG, 2), "gmax": f(b.gamma_max * DEG, 2),
         "gmin_at": f(b.gamma_min_at * DEG, 2), "glim": f(bp.gamma_allowed * DEG, 0),
         "lo": f(bp.length_bounds[0] * MM, 0), "hi": f(bp.length_bounds[1] * MM, 0),
         "auto": bp.start is None,
-        "swing_sim": f(b.swing_simulated * DEG, 4), "bend_sim": f(b.bend_simulated * DEG, 4),
+        "swing_sim": f(b.swing_simulated * DEG, 2), "bend_sim": f(b.bend_simulated * DEG, 2),
         "bend": f(bp.bending_angle * DEG, 0),
         "wheel_w": f(float(np.max(np.abs(b.wheel_omega))), 3),
         "wheel_a": f(float(np.max(np.abs(b.wheel_alpha))), 2),
@@ -547,16 +547,16 @@ def _feed(r: dict, lang: str, figures: dict) -> dict:
     if cf is not None:
         closed = {
             "theta": (rf"\theta = 2\arcsin\frac{{r}}{{d}} = 2\arcsin\frac{{{f(cf.crank * MM, 0)}}}"
-                      rf"{{{f(cf.centres * MM, 0)}}} = {f(cf.theta * DEG, 4)}°"),
-            "K": (rf"K = \frac{{180° + \theta}}{{180° - \theta}} = \frac{{{f(180 + cf.theta * DEG, 4)}}}"
-                  rf"{{{f(180 - cf.theta * DEG, 4)}}} = {f(cf.K, 6)}"),
+                      rf"{{{f(cf.centres * MM, 0)}}} = {f(cf.theta * DEG, 2)}°"),
+            "K": (rf"K = \frac{{180° + \theta}}{{180° - \theta}} = \frac{{{f(180 + cf.theta * DEG, 2)}}}"
+                  rf"{{{f(180 - cf.theta * DEG, 2)}}} = {sig(cf.K, 4, group=False)}"),
             "H": None if cf.stroke is None else (
                 rf"H = 2L\sin\frac{{\theta}}{{2}} = \frac{{2 L r}}{{d}} = \frac{{2 \times {f(cf.bar_point * MM, 0)} "
-                rf"\times {f(cf.crank * MM, 0)}}}{{{f(cf.centres * MM, 0)}}} = {f(cf.stroke * MM, 4)}\ \text{{mm}}"),
+                rf"\times {f(cf.crank * MM, 0)}}}{{{f(cf.centres * MM, 0)}}} = {f(cf.stroke * MM, 2)}\ \text{{mm}}"),
         }
     bad = 0 if ft.seed_x is None else int(np.sum(np.abs(ft.seed_x - ft.x) > 1e-9))
     return {"lk": lk, "rows": rows, "closed": closed, "n_bad": str(bad), "n_rows": str(len(rows)),
-            "stroke": f(k.stroke * MM, 4), "K": f(k.time_ratio, 4)}
+            "stroke": f(k.stroke * MM, 2), "K": f(k.time_ratio, 4)}
 
 
 def verification_rows(r: dict, lang: str) -> list[list[str]]:

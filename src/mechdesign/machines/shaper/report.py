@@ -14,7 +14,7 @@ import numpy as np
 from ...render import figures as fig
 from ...render import guide_bar_report as gb_report
 from ...i18n import N_, tr
-from ...render.fmt import e, f, in_lang, md_meta
+from ...render.fmt import e, f, in_lang, md_meta, verdict
 
 DEG = 180.0 / np.pi
 
@@ -92,6 +92,42 @@ write_data = gb_report.write_data   # the cam profile as CSV
 # Reaction symbols shown in the report (force of the first link on the second).
 _REACTIONS = [("R72", "R72"), ("R23", "R23"), ("R43", "R43"), ("R74", "R74"),
               ("R45", "R45"), ("R56", "R56"), ("R76", "R76")]
+
+
+def _verify_rows(v, syn, lang: str) -> list[list[str]]:
+    """The verification table: [check, result, limit, verdict]; every verdict is the
+    ``passed`` of a check of :func:`~mechdesign.machines.shaper.stages.self_checks`."""
+    from ...render.fmt import e as fmt_e
+    from .stages import self_checks
+
+    _ = tr(lang)
+    c = {chk.key: chk for chk in self_checks(v, syn)}
+    mm = 1e3
+
+    def e(x: float) -> str:      # a limit that is a power of ten as 10⁻⁹ (the linkage table's form)
+        power = round(np.log10(x)) if x > 0 else None
+        if power is not None and abs(x - 10.0 ** power) < 1e-12 * x:
+            return "10" + str(power).translate(str.maketrans("-0123456789", "⁻⁰¹²³⁴⁵⁶⁷⁸⁹"))
+        return fmt_e(x)
+
+    def row(name, result, limit, key):
+        return [name, result, limit, verdict(c[key].passed, lang)]
+
+    return [
+        row(_("Vector-loop closure residual (max) /m"), fmt_e(v.closure_residual),
+            f"≤ {e(c['closure'].limit)}", "closure"),
+        row(_("Velocity vs. central differences of position (relative, step %(step)s°)")
+            % {"step": f(v.fd_step * DEG, 3)}, fmt_e(v.velocity_fd_error),
+            f"≤ {e(c['velocity_fd'].limit)}", "velocity_fd"),
+        row(_("Acceleration vs. central differences of velocity (relative)"),
+            fmt_e(v.acceleration_fd_error), f"≤ {e(c['acceleration_fd'].limit)}", "acceleration_fd"),
+        row(_("Simulated stroke − H /mm"), fmt_e(v.stroke_error * mm),
+            f"± {e(c['stroke'].limit * mm)}", "stroke"),
+        row(_("Time ratio K of the simulated linkage"), f(v.time_ratio_simulated, 4),
+            f"{f(c['time_ratio'].reference, 4)} ± {e(c['time_ratio'].limit)}", "time_ratio"),
+        row(_("Power balance residual $\\Sigma P / \\max\\lvert M_b\\,\\omega\\rvert$"),
+            fmt_e(v.power_balance_residual), f"≤ {e(c['power_balance'].limit)}", "power_balance"),
+    ]
 
 
 def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
@@ -213,10 +249,5 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
             "Hr": f(fl.rim.height * mm, 1), "m": f(fl.rim.rim_mass, 2),
             "speed": f(fl.rim.rim_speed, 2), "delta": f"1/{1 / p.fluctuation:.4g}",
         },
-        "ver": {
-            "closure": e(v.closure_residual), "vel": e(v.velocity_fd_error),
-            "acc": e(v.acceleration_fd_error), "stroke": e(v.stroke_error * mm),
-            "k_sim": f(v.time_ratio_simulated, 4), "power": e(v.power_balance_residual),
-            "step": f(v.fd_step * DEG, 3),
-        },
+        "verify_rows": _verify_rows(v, syn, lang),
     }

@@ -24,7 +24,7 @@ from ...stages.flywheel import Flywheel, FlywheelSpec, RimSpec
 from ...stages import guide_bar
 from ...stages.guide_bar import Synthesis, synthesize
 from ...stages import linkage as lk
-from ...stages.cam import CamDocument, cam_document
+from ...stages.cam import CamDocument, SelfCheck, cam_document
 from ...stages.drive import DriveDocument, drive_document
 from ...stages.gear import GearDocument, gear_document
 from ...stages.positions import Positions
@@ -202,6 +202,31 @@ class Verification:
 def verification_view(v: lk.LinkageVerification, p: ShaperParams) -> Verification:
     return Verification(v.closure_residual, v.velocity_fd_error, v.acceleration_fd_error,
                         v.stroke - p.stroke, v.time_ratio, v.power_balance_residual, v.fd_step)
+
+
+#: Limits of the self-checks, as the generic linkage's verification table
+#: (render/linkage_report.verification_rows) states them: round-off level for the closure,
+#: the stroke, K and the power balance; O(h²) truncation for the central differences.
+CLOSURE_LIMIT = 1e-9            # m
+DIFFERENCE_LIMIT = 1e-3         # relative
+POWER_LIMIT = 1e-9              # relative
+STROKE_LIMIT = 1e-6             # relative to H
+TIME_RATIO_LIMIT = 1e-6         # absolute
+
+
+def self_checks(v: Verification, syn: Synthesis) -> tuple[SelfCheck, ...]:
+    """The verification's residuals as checks with their limits (the report's verification
+    table takes the verdicts from these, never writes one): stroke and K against the
+    synthesis' H and K."""
+    return (
+        SelfCheck("closure", v.closure_residual, CLOSURE_LIMIT),
+        SelfCheck("velocity_fd", v.velocity_fd_error, DIFFERENCE_LIMIT),
+        SelfCheck("acceleration_fd", v.acceleration_fd_error, DIFFERENCE_LIMIT),
+        SelfCheck("stroke", abs(v.stroke_error), STROKE_LIMIT * syn.stroke, reference=syn.stroke),
+        SelfCheck("time_ratio", abs(v.time_ratio_simulated - syn.time_ratio), TIME_RATIO_LIMIT,
+                  reference=syn.time_ratio),
+        SelfCheck("power_balance", v.power_balance_residual, POWER_LIMIT),
+    )
 
 
 def verify(syn: Synthesis, k: Kinematics, mech: Mechanism, raw, f: Forces,

@@ -1,0 +1,162 @@
+"""Placing the point and vector labels of a drawn figure so that they overlap neither each
+other nor the lines they name (issue 19: labels F_R36/F_R43 printed over each other in the
+force polygon, "D" and "B" lying on the links of the die-cutter's skeleton).
+
+A label is anchored at a point (a joint, the middle of a vector) and offered positions at
+growing distances along preferred directions — the normal of its vector or link first, on
+either side, then the other directions round the point; it takes the first whose text box
+(measured by matplotlib at the figure's final resolution, padded) meets no label placed
+before it and no obstacle segment (links, vectors), inside the axes. Offsets are in points, so the text keeps
+its distance from the anchor whatever the data scale. When no candidate is free, the one
+with the least overlap is taken.
+
+:func:`overlaps` is the measure the tests use: the pairs of overlapping label boxes and the
+labels that cross an obstacle segment, after the figure's final layout.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+
+#: Distances from the anchor tried in turn [pt] and the padding round a text box [pt].
+DISTANCES = (5.0, 8.0, 12.0, 17.0, 23.0, 30.0)
+PAD = 1.5
+#: Directions tried after the preferred ones: the eight compass directions.
+COMPASS = tuple(np.exp(1j * np.pi * k / 4) for k in (0, 2, 4, 6, 1, 3, 5, 7))
+
+
+@dataclass
+class Label:
+    """A text to place: its anchor (data coordinates, complex), the preferred directions
+    (unit complex numbers in screen orientation: +x right, +y up) and matplotlib text
+    keyword arguments."""
+
+    text: str
+    anchor: complex
+    directions: tuple = ()
+    kwargs: dict = field(default_factory=dict)
+    artist: object = None
+
+
+def _renderer(fig):
+    canvas = fig.canvas
+    if not hasattr(canvas, "get_renderer"):
+        from matplotlib.backends.backend_agg import FigureCanvasAgg
+
+        canvas = FigureCanvasAgg(fig)
+    return canvas.get_renderer()
+
+
+def _box(artist, renderer, pad_px: float):
+    bb = artist.get_window_extent(renderer)
+    return (bb.x0 - pad_px, bb.y0 - pad_px, bb.x1 + pad_px, bb.y1 + pad_px)
+
+
+def _box_overlap(a, b) -> float:
+    """Area of the intersection of two boxes (x0, y0, x1, y1)."""
+    w = min(a[2], b[2]) - max(a[0], b[0])
+    h = min(a[3], b[3]) - max(a[1], b[1])
+    return w * h if w > 0 and h > 0 else 0.0
+
+
+def _segment_hits_box(p0, p1, box) -> bool:
+    """Whether the segment p0–p1 (display coordinates) meets the box (Liang–Barsky)."""
+    x0, y0 = p0
+    dx, dy = p1[0] - x0, p1[1] - y0
+    t0, t1 = 0.0, 1.0
+    for p, q in ((-dx, x0 - box[0]), (dx, box[2] - x0), (-dy, y0 - box[1]), (dy, box[3] - y0)):
+        if p == 0:
+            if q < 0:
+                return False
+            continue
+        t = q / p
+        if p < 0:
+            t0 = max(t0, t)
+        else:
+            t1 = min(t1, t)
+        if t0 > t1:
+            return False
+    return True
+
+
+def _screen_segments(ax, segments) -> list:
+    out = []
+    for a, b in segments:
+        (p, q) = ax.transData.transform([(a.real, a.imag), (b.real, b.imag)])
+        out.append((tuple(p), tuple(q)))
+    return out
+
+
+def place(ax, labels: list[Label], obstacles=(), fixed=()) -> list:
+    """Draw ``labels`` in ``ax`` clear of each other and of the ``obstacles`` (segments as
+    pairs of complex data points; a point is a segment of zero length) and of the ``fixed``
+    text artists already drawn. Call it after
+    everything else is drawn and the axes limits are set; it lays the figure out
+    (tight_layout) first so that the data-to-screen scale is the final one. Returns the
+    text artists."""
+    from matplotlib.transforms import offset_copy
+
+    fig = ax.figure
+    ax.autoscale_view()
+    ax.apply_aspect()
+    fig.tight_layout()
+    ax.apply_aspect()
+    renderer = _renderer(fig)
+    px = fig.dpi / 72.0
+    segments = _screen_segments(ax, obstacles)
+    bb = ax.get_window_extent(renderer)
+    frame = (bb.x0, bb.y0, bb.x1, bb.y1)
+    placed: list = [_box(t, renderer, PAD * px) for t in fixed]
+    artists = []
+    for lab in labels:
+        kwargs = {"ha": "center", "va": "center", **lab.kwargs}
+        best = None
+        tried = [d / abs(d) for d in lab.directions if abs(d) > 0] + list(COMPASS)
+        for dist in DISTANCES:
+            for d in tried:
+                dx, dy = dist * d.real, dist * d.imag
+                t = ax.text(lab.anchor.real, lab.anchor.imag, lab.text,
+                            transform=offset_copy(ax.transData, fig=fig, x=dx, y=dy,
+                                                  units="points"), **kwargs)
+                box = _box(t, renderer, PAD * px)
+                # a label over another is worst after one on a line, then one over the edge
+                cost = sum(5e3 + a for a in (_box_overlap(box, other) for other in placed) if a > 0)
+                cost += sum(1e4 for p, q in segments if _segment_hits_box(p, q, box))
+                area = (box[2] - box[0]) * (box[3] - box[1])
+                outside = area - _box_overlap(box, frame)
+                cost += 2e3 + outside if outside > 1e-6 else 0.0     # over the axes' edge
+                if best is None or cost < best[0]:
+                    if best is not None:
+                        best[1].remove()
+                    best = (cost, t, box)
+                else:
+                    t.remove()
+                if cost == 0:
+                    break
+            if best is not None and best[0] == 0:
+                break
+        placed.append(best[2])
+        lab.artist = best[1]
+        artists.append(best[1])
+    return artists
+
+
+def overlaps(ax, artists, obstacles=()) -> list[str]:
+    """What a reader would see as clashes, measured after the figure's final layout: pairs
+    of label texts whose boxes overlap, and labels whose box an obstacle segment crosses."""
+    fig = ax.figure
+    fig.tight_layout()          # as the figure is saved (render/figures.save_png)
+    ax.apply_aspect()
+    renderer = _renderer(fig)
+    boxes = [(a.get_text(), _box(a, renderer, 0.0)) for a in artists]
+    out = []
+    for i, (ta, ba) in enumerate(boxes):
+        for tb, bb in boxes[i + 1:]:
+            if _box_overlap(ba, bb) > 0:
+                out.append(f"{ta} over {tb}")
+    for p, q in _screen_segments(ax, obstacles):
+        for t, b in boxes:
+            if _segment_hits_box(p, q, b):
+                out.append(f"{t} on a line")
+    return out
