@@ -36,7 +36,12 @@ Crank angles φ_k = 2πk/N, k = 0..N−1 (one revolution, no repeated end point)
 What each solver does
 * ours: mechdesign.core.mechanism.Mechanism.solve (closed-form Assur groups, vectorised numpy).
   There is no positions-only API, so both the "pos" and "pos+vel+acc" columns time the same
-  full m.solve call.
+  full m.solve call. It returns more than the plain closed form: position, velocity and
+  acceleration of every point (B and C, complex arrays) and of every link and slider, checked
+  for assembly (one pass per group); the slider-crank's plain form returns six real arrays.
+  At N = 100 000 the time is mostly memory: every new array of that size is fresh pages to
+  fault in, so the solver's cost follows the number of temporaries it makes (kin.rrp was
+  rewritten with ~20 fewer, bit for bit the same, issue 22).
 * plain closed form: written below (C as the intersection of two circles, one sqrt; θ3, θ4 by
   arctan2 of the unit vectors; sinθ3 from the guide and cosθ3 by sqrt for the slider-crank;
   velocities and accelerations from the differentiated loop equations by Cramer's rule), real

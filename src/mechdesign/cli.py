@@ -554,9 +554,14 @@ def check(
 
     bad = 0
     for path in briefs:
-        language = brief_language(path, lang.value if lang else None)
         try:
-            data = read_brief_data(path)       # read once, every group checked on it
+            data = read_brief_data(path)       # read once: its language, every group checked on it
+        except BriefError as exc:
+            bad += 1
+            _err(exc.text(brief_language(path, lang.value if lang else None)))
+            continue
+        language = brief_language(path, lang.value if lang else None, data=data)
+        try:
             labels = brief_groups(path, data=data)
         except BriefError as exc:
             bad += 1

@@ -10,7 +10,7 @@ import time
 import traceback
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Callable
+from typing import Any, Callable
 
 #: Exit codes shared by the commands.
 EXIT_OK, EXIT_FAILED, EXIT_INVALID = 0, 1, 2
@@ -77,10 +77,11 @@ def describe_design_error(exc: Exception, lang: str) -> str | None:
     return _("{what} with the brief's data:\n  {detail}", what=_(what), detail=detail)
 
 
-def brief_language(path: Path, lang: str | None = None) -> str:
+def brief_language(path: Path, lang: str | None = None, *, data: Any = ...) -> str:
     """The language of messages about a brief: ``lang`` (--lang) if given, else the brief's
     ``report.language`` when the file reads as YAML (even if other fields are invalid),
-    else zh (the default of report.language)."""
+    else zh (the default of report.language). ``data``: the file's YAML data when already
+    read."""
     from .i18n import canonical, use
 
     if canonical(lang):
@@ -88,7 +89,7 @@ def brief_language(path: Path, lang: str | None = None) -> str:
     from .brief.loader import BriefError, read_brief_data
 
     try:
-        data = read_brief_data(path)
+        data = read_brief_data(path) if data is ... else data
     except BriefError:
         return "zh"
     report = data.get("report") if isinstance(data, dict) else None

@@ -177,14 +177,14 @@ class _LimitError(yaml.YAMLError):
         self.value, self.allowed = value, allowed
 
 
-class _UniqueKeyLoader(yaml.SafeLoader):
-    """Safe loader that rejects a key given twice in one mapping (YAML keeps the last) and
-    enforces the limits above while the file is composed, naming the field path."""
+class _Limits:
+    """Composition and construction of a safe loader that rejects a key given twice in one
+    mapping (YAML keeps the last) and enforces the limits above while the file is
+    composed, naming the field path (mixed into :class:`_UniqueKeyLoader` and
+    :class:`_FastLoader`)."""
 
-    def __init__(self, stream):
-        super().__init__(stream)
-        self._path: list[str] = []
-        self._values = 0
+    _path: list[str]
+    _values: int
 
     def _count(self, n: int) -> None:
         self._values += n
@@ -309,7 +309,7 @@ class _UniqueKeyLoader(yaml.SafeLoader):
 _MERGE_TAG = "tag:yaml.org,2002:merge"
 
 
-def _construct_mapping(loader: _UniqueKeyLoader, node: yaml.MappingNode, deep: bool = False):
+def _construct_mapping(loader: _Limits, node: yaml.MappingNode, deep: bool = False):
     seen: dict[Any, int] = {}
     for key_node, _ in node.value:
         if key_node.tag == _MERGE_TAG:    # `<<: *base` merges a mapping (its keys may repeat)
@@ -329,15 +329,61 @@ def _construct_mapping(loader: _UniqueKeyLoader, node: yaml.MappingNode, deep: b
     return loader.construct_mapping(node, deep=deep)
 
 
-_UniqueKeyLoader.add_constructor(yaml.resolver.BaseResolver.DEFAULT_MAPPING_TAG, _construct_mapping)
-_UniqueKeyLoader.add_constructor("tag:yaml.org,2002:int", _UniqueKeyLoader.construct_yaml_int)
-_UniqueKeyLoader.add_constructor("tag:yaml.org,2002:timestamp",
-                                 _UniqueKeyLoader.construct_yaml_timestamp)
-# YAML 1.1 (PyYAML) reads 7.0e4 or 1e5 as strings; read them as numbers, as YAML 1.2 does.
-_UniqueKeyLoader.add_implicit_resolver(
-    "tag:yaml.org,2002:float",
-    re.compile(r"^[-+]?(?:[0-9][0-9_]*)(?:\.[0-9_]*)?[eE][-+]?[0-9]+$"),
-    list("-+0123456789"))
+class _UniqueKeyLoader(_Limits, yaml.SafeLoader):
+    """The brief's loader (:class:`_Limits`), in pure Python: the reference, and the one
+    whose errors the user sees."""
+
+    def __init__(self, stream):
+        super().__init__(stream)
+        self._path, self._values = [], 0
+
+
+try:
+    from yaml._yaml import CParser as _CParser
+except ImportError:      # PyYAML built without libyaml
+    _CParser = None
+
+#: Text libyaml reads where PyYAML refuses it (found by tests/test_brief_yaml_fast.py's
+#: differential fuzzing): a tab (PyYAML refuses it where libyaml takes it as a space), a
+#: ``?`` (PyYAML refuses it inside a flow collection's plain scalar), a byte-order mark
+#: after the start and the control characters (both refuse them, in other words): such a
+#: file is read by PyYAML alone.
+_PYYAML_ONLY = re.compile("[\t?\ufeff]|" + yaml.reader.Reader.NON_PRINTABLE.pattern)
+
+if _CParser is not None:
+    class _FastLoader(_Limits, yaml.composer.Composer, _CParser, yaml.constructor.SafeConstructor,
+                      yaml.resolver.Resolver):
+        """:class:`_UniqueKeyLoader` with libyaml's scanner and parser (C) in place of
+        PyYAML's (Python; ~85 % of the time a brief takes to read): composition (the
+        limits), resolution and construction are the same Python code, so a file both
+        read gives the same data. Used for files that read without error; any error is
+        reported by :class:`_UniqueKeyLoader` reading the file again (its messages)."""
+
+        def __init__(self, stream):
+            _CParser.__init__(self, stream)
+            yaml.composer.Composer.__init__(self)
+            yaml.constructor.SafeConstructor.__init__(self)
+            yaml.resolver.Resolver.__init__(self)
+            self._path, self._values = [], 0
+
+        # the Python composer's, not libyaml's (which would skip the limits)
+        check_node = yaml.composer.Composer.check_node
+        get_node = yaml.composer.Composer.get_node
+        get_single_node = yaml.composer.Composer.get_single_node
+else:
+    _FastLoader = None
+
+for _loader in (_UniqueKeyLoader, _FastLoader):
+    if _loader is None:
+        continue
+    _loader.add_constructor(yaml.resolver.BaseResolver.DEFAULT_MAPPING_TAG, _construct_mapping)
+    _loader.add_constructor("tag:yaml.org,2002:int", _Limits.construct_yaml_int)
+    _loader.add_constructor("tag:yaml.org,2002:timestamp", _Limits.construct_yaml_timestamp)
+    # YAML 1.1 (PyYAML) reads 7.0e4 or 1e5 as strings; read them as numbers, as YAML 1.2 does.
+    _loader.add_implicit_resolver(
+        "tag:yaml.org,2002:float",
+        re.compile(r"^[-+]?(?:[0-9][0-9_]*)(?:\.[0-9_]*)?[eE][-+]?[0-9]+$"),
+        list("-+0123456789"))
 
 
 def _show(value: Any) -> str:
@@ -745,6 +791,13 @@ def read_brief_data(path: str | Path) -> Any:
     except UnicodeDecodeError as exc:
         raise _file_problem(source, f"byte 0x{raw[exc.start]:02x} at {_line_col(raw, exc.start)}",
                             N_("a brief is UTF-8 text; save it as UTF-8")) from None
+    if _FastLoader is not None and not _PYYAML_ONLY.search(text):
+        # libyaml's scanner where it reads as PyYAML's does; an error is reported as
+        # PyYAML's reader states it
+        try:
+            return yaml.load(text, Loader=_FastLoader)  # noqa: S506 - a safe loader
+        except Exception:  # noqa: BLE001,S110 - read again below, which says what is wrong
+            pass
     try:
         return yaml.load(text, Loader=_UniqueKeyLoader)  # noqa: S506 - a SafeLoader subclass
     except _LimitError as exc:

@@ -95,14 +95,26 @@ def fixed_point(xy: complex, n: int) -> PointMotion:
     return PointMotion(constant(complex(xy), n), zero, zero)
 
 
-def _carried(origin: PointMotion, u: np.ndarray, omega, alpha) -> PointMotion:
-    """The point at ``origin + u`` on a link turning at ω, α (u rigid on the link):
-    v = v_O + iω·u,  a = a_O + (iα − ω²)·u."""
+def _moving(origin: PointMotion, u: np.ndarray, omega, alpha) -> tuple[np.ndarray, np.ndarray]:
+    """Velocity and acceleration of the point at ``origin + u`` on a link turning at ω, α
+    (u rigid on the link): v = v_O + iω·u,  a = a_O + (iα − ω²)·u."""
     vel = 1j * u
     vel *= omega
     vel += origin.vel
     acc = (1j * alpha - omega * omega) * u
     acc += origin.acc
+    return vel, acc
+
+
+def _carried(origin: PointMotion, u: np.ndarray, omega, alpha, *, own: bool = False
+             ) -> PointMotion:
+    """The point at ``origin + u`` on a link turning at ω, α (see :func:`_moving`); with
+    ``own`` the caller's temporary ``u`` becomes the position (added to in place: one array
+    fewer)."""
+    vel, acc = _moving(origin, u, omega, alpha)
+    if own:
+        u += origin.pos
+        return PointMotion(u, vel, acc)
     return PointMotion(origin.pos + u, vel, acc)
 
 
@@ -115,7 +127,7 @@ def point_on_link(origin: PointMotion, link: AngleMotion, distance: float,
     """
     u = unit(link.angle + offset_angle if offset_angle else link.angle)
     u *= distance
-    return _carried(origin, u, link.omega, link.alpha)
+    return _carried(origin, u, link.omega, link.alpha, own=True)
 
 
 def crank(pivot: PointMotion, length: float, angle: np.ndarray, omega: float
@@ -130,7 +142,7 @@ def crank(pivot: PointMotion, length: float, angle: np.ndarray, omega: float
     motion = AngleMotion(angle, constant(float(omega), n), constant(0.0, n))
     u = unit(angle)
     u *= length
-    return motion, _carried(pivot, u, float(omega), 0.0)
+    return motion, _carried(pivot, u, float(omega), 0.0, own=True)
 
 
 def rrr(b: PointMotion, d: PointMotion, l1: float, l2: float, branch: int
@@ -172,8 +184,8 @@ def rrr(b: PointMotion, d: PointMotion, l1: float, l2: float, branch: int
     a1, a2 = _cramer(col1, col2, rhs, det)
     link1 = AngleMotion(th1, w1, a1)
     link2 = AngleMotion(th2, w2, a2)
-    c = _carried(b, u1, w1, a1)
-    return link1, link2, PointMotion(c_pos, c.vel, c.acc)
+    vel, acc = _moving(b, u1, w1, a1)
+    return link1, link2, PointMotion(c_pos, vel, acc)
 
 
 def rrp(b: PointMotion, length: float, guide_point: complex, guide_angle: float,
@@ -186,22 +198,57 @@ def rrp(b: PointMotion, length: float, guide_point: complex, guide_angle: float,
     position along the guide measured from ``guide_point``, and C.
     """
     e = np.exp(1j * guide_angle)
-    local = (b.pos - guide_point) * np.conj(e)   # B in guide coordinates
+    # The closure equation's complex products written out in real arithmetic where that
+    # gives the same bits (fewer passes over the arrays, fewer temporaries: issue 22's peer
+    # figure); the products numpy rounds its own way (a complex array times a complex
+    # number) are kept as they were.
+    er, ei = e.real, e.imag
+    local = (b.pos - guide_point) * np.conj(e)   # B in guide coordinates (numpy's complex
+                                                 # product, as its rounding is)
+    s = local.real.copy()
     h = local.imag
-    root = length**2 - h**2
+    root = h * h                                 # l² − h², in place
+    del local, h
+    np.subtract(length**2, root, out=root)
     root[~(root >= 0.0)] = np.nan                # the rod cannot reach the guide there
-    s = local.real + branch * np.sqrt(root, out=root)
-    del local, root                              # (temporaries freed early: less memory)
-    c_pos = guide_point + s * e
+    np.sqrt(root, out=root)
+    if branch != 1:
+        root *= branch
+    s += root
+    del root
+    c_pos = s * e
+    c_pos += guide_point
     u = c_pos - b.pos
-    th = np.arctan2(u.imag, u.real)
-    # vB + iω·u = ṡ·e  →  iω·u − ṡ·e = −vB
-    a = 1j * u
-    det = cross(a, -e)
-    w_rod, ds = _cramer(a, -e, -b.vel, det)
-    rhs = w_rod * w_rod * u
-    rhs -= b.acc
-    a_rod, dds = _cramer(a, -e, rhs, det)
+    ux, uy = u.real, u.imag
+    th = np.arctan2(uy, ux)
+    # vB + iω·u = ṡ·e  →  iω·u − ṡ·e = −vB (Cramer's rule on its real and imaginary parts;
+    # det = (iu) × (−e) = u·e)
+    det = ux * er
+    det += uy * ei
+    vb, ab = b.vel, b.acc
+    with np.errstate(divide="ignore", invalid="ignore"):
+        w_rod = vb.real * ei
+        w_rod -= vb.imag * er
+        w_rod /= det
+        ds = ux * vb.real
+        ds += uy * vb.imag
+        ds /= det
+        # Twice: iα·u − s̈·e = ω²·u − aB
+        w2 = w_rod * w_rod
+        rx = w2 * ux
+        rx -= ab.real
+        ry = w2 * uy
+        ry -= ab.imag
+        del w2
+        a_rod = ry * er
+        a_rod -= rx * ei
+        a_rod /= det
+        rx *= ux
+        ry *= uy
+        rx += ry
+        dds = np.negative(rx, out=rx)
+        dds /= det
+    del ry
     rod = AngleMotion(th, w_rod, a_rod)
     slide = SlideMotion(s, ds, dds)
     c = PointMotion(c_pos, ds * e, dds * e)

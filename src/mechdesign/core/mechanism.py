@@ -461,7 +461,9 @@ class Mechanism:
 def _check_assembled(group, m: Motion, produced: dict[str, str], phi: np.ndarray,
                      mech: "Mechanism | None" = None) -> None:
     arrays = [m.links[link].angle for link in group.links] + [m.points[p].pos for p in produced]
-    if all(np.isfinite(a).all() for a in arrays):
+    # A finite sum has no NaN or infinity in it (one pass, no temporary); only a sum that is
+    # not finite (a NaN, or an overflow of finite values) is looked at element by element.
+    if all(np.isfinite(np.add.reduce(a)) for a in arrays):
         return
     bad = np.zeros(len(phi), dtype=bool)
     for a in arrays:
