@@ -93,6 +93,8 @@ REFERENCES = {
     "validation floor (+ pydantic, yaml)": [
         "-c", "import os, mechdesign.cli, typer._adapters, yaml, importlib.metadata; os._exit(0)"],
 }
+#: the references issue 22's target ("≤ 1.5× interpreter start-up") is judged against
+START_UP = ("interpreter (python -c pass)", "CLI start-up (mechdesign --version)")
 
 
 def main() -> None:
@@ -137,8 +139,11 @@ def main() -> None:
           f"{os.cpu_count()} CPUs)")
     for name in REFERENCES:
         ratio = worst[1] / max(_stats(cpus[name])[0], 1e-3)
-        print(f"  = {ratio:4.1f}× {name} in CPU time (issue 22's target ≤ 1.5× start-up: "
-              f"{'met' if ratio <= 1.5 else 'missed'})")
+        if name in START_UP:
+            verdict = f"issue 22's target ≤ 1.5× start-up: {'met' if ratio <= 1.5 else 'missed'}"
+        else:
+            verdict = "for information: what any validating command imports, not the target's reference"
+        print(f"  = {ratio:4.1f}× {name} in CPU time ({verdict})")
 
 
 if __name__ == "__main__":
