@@ -124,6 +124,37 @@ def save_apart(action: Callable[[], None], label: str) -> Callable[[], None]:
     return lambda: _reap(block=True, only=pid)
 
 
+def start_apart(action: Callable[[], None], label: str) -> Callable[..., None]:
+    """Run ``action`` in a child of its own now, also outside :func:`background_saves`,
+    when this process may fork (:func:`can_fork`: it has not run typst itself), else here
+    and now. Returns ``finish(kill=False)``: waits for the child (raising its error), or
+    with ``kill`` stops it. For the work that may run while this process compiles the
+    report's PDF (the sheets' previews)."""
+    if not can_fork():
+        action()
+        return lambda kill=False: None
+    pid = _fork(action, label, apart=True)
+
+    def finish(kill: bool = False) -> None:
+        try:
+            if kill:
+                for child in [c for c in _children if c[0] == pid]:
+                    _children.remove(child)
+                    try:
+                        os.kill(pid, signal.SIGKILL)
+                        os.waitpid(pid, 0)
+                    except (ProcessLookupError, ChildProcessError):
+                        pass
+                    os.close(child[1])
+            else:
+                _reap(block=True, only=pid)
+        finally:
+            if not _children and gc.get_freeze_count():
+                gc.unfreeze()
+
+    return finish
+
+
 def pump() -> None:
     """Hand the oldest figure held back to the helper if it is free (also to call when
     drawing is over and other work follows)."""
