@@ -17,7 +17,7 @@ from dataclasses import asdict, dataclass
 from pathlib import Path
 from typing import Callable
 
-from ..fileio import write_text
+from ..fileio import write_bytes, write_text
 from ..i18n import N_, tr
 from .fmt import meta_text, plain_line
 from .sheet import Sheet, TitleInfo
@@ -203,7 +203,7 @@ def make_sheets(results: dict, brief, folder: Path, fig_dir: Path, lang: str,
         if later is not None:
             import pickle
 
-            handover.write_bytes(pickle.dumps(later))
+            write_bytes(handover, pickle.dumps(later), fsync=False)
         write_text(manifest, json.dumps({"files": [asdict(f) for f in files], "notes": notes},
                                         ensure_ascii=False), encoding="utf-8")
 
@@ -256,9 +256,9 @@ def make_sheets(results: dict, brief, folder: Path, fig_dir: Path, lang: str,
         def finish(kill: bool = False) -> None:
             try:
                 stop(kill)
-                if not kill:
+                if not kill:      # into the report's figures (atomic, as every output)
                     for _, png, _ in items:
-                        shutil.move(str(aside / Path(png).name), png)
+                        write_bytes(png, (aside / Path(png).name).read_bytes())
             finally:
                 shutil.rmtree(aside, ignore_errors=True)
 
