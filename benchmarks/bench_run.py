@@ -27,6 +27,10 @@ medians and the spread (first–third quartile) of the rounds, with the load ave
   big grid                     the same brief at analysis.grid_points = --big (a 100,000-point
                                run): md and md+pdf+dxf, and their ratio
 
+Bytecode: the runs are started without PYTHONDONTWRITEBYTECODE (set in some CI and agent
+shells), so that mechdesign's modules load from their compiled bytecode as they do after an
+installation (the warm-up run writes it).
+
 Targets (issue 22, 2-core machine): the shaper's md+pdf run ≤ 2.0 s to process exit; the
 --big run with every output ≤ 2× its md-only run. Prints a table; never fails on time.
 """
@@ -54,6 +58,10 @@ def _one_run(brief: Path, out: Path, formats: str, cache: str = "off") -> dict[s
     the process and its helpers) and its --timings marks. ``cache``: MECHDESIGN_CACHE."""
     env = dict(os.environ, MPLBACKEND="Agg", MECHDESIGN_CACHE=cache)
     env.pop("MECHDESIGN_SERIAL", None)
+    # An installed package has its bytecode (pip compiles it at install; an editable
+    # install writes it on the first import): a shell that forbids writing it would make
+    # every run compile mechdesign's ~80 modules from source (~0.1 s), which no user's does.
+    env.pop("PYTHONDONTWRITEBYTECODE", None)
     before = resource.getrusage(resource.RUSAGE_CHILDREN)
     t0 = time.perf_counter()
     proc = subprocess.run([sys.executable, "-m", "mechdesign", "run", str(brief), "-o", str(out),

@@ -4,9 +4,10 @@ Drawing a report is mostly matplotlib laying out text and encoding images, one f
 after another on one core. Inside :func:`background_saves`, :func:`save` hands a
 finished figure to a forked child process (it inherits the figure as it is, nothing is
 pickled), so this process goes on building the next one; while the child is busy this
-process saves the figure it held back and holds the new one, so the last figure of a
-report is written while the Markdown is rendered and pandoc runs. Work that uses typst
-(the drawing sheets) gets a child of its own (:func:`save_apart`). Two cores are then
+process holds the figures back and saves them once the Markdown is rendered and pandoc
+runs (or while it waits for the sheets), so pandoc's conversion overlaps the figures'
+saving. Work that uses typst (the drawing sheets) gets a child of its own
+(:func:`save_apart`; the sheets' previews: :func:`start_apart`). Two cores are then
 both at work, whatever a machine's report module draws, and every figure is drawn once.
 
 A child never returns into the caller's stack: it saves, reports a failure through a
@@ -71,6 +72,9 @@ def can_fork() -> bool:
 
 _on_save: Callable[[str], None] | None = None     # told each figure's name (progress)
 
+#: figures held back, drawn but not yet saved, before this process saves one itself
+MAX_HELD = 64
+
 
 @contextmanager
 def background_saves(enabled: bool = True, on_save: Callable[[str], None] | None = None):
@@ -96,10 +100,11 @@ def save(action: Callable[[], None], label: str) -> None:
     """Run ``action`` (which writes the files of a figure that is complete) now, in the
     background, or a little later. ``label`` names the figure in an error message.
 
-    One child at a time takes these saves; this process is the other worker. It holds
-    back the newest figure and, when the child is busy, saves the one it held before, so
-    the last figure of a report is written while the Markdown is made and pandoc runs
-    (:func:`pump`, :func:`drain`), not before."""
+    One child at a time takes these saves; this process is the other worker. While it
+    draws, it only holds the figures back (up to :data:`MAX_HELD`): the helper takes the
+    oldest whenever it is free, and this process saves the rest once the Markdown is
+    made and pandoc runs (:func:`pump`, :func:`drain`), so pandoc's conversion overlaps
+    the figures instead of following them."""
     if _on_save is not None:
         _on_save(label)
     if not _enabled:
@@ -107,7 +112,7 @@ def save(action: Callable[[], None], label: str) -> None:
         return
     _held.append((action, label))
     pump()                          # a free helper takes the oldest figure
-    if len(_held) > 1:              # else this process saves it
+    if len(_held) > MAX_HELD:       # else this process saves it
         _held.pop(0)[0]()
 
 
@@ -121,7 +126,49 @@ def save_apart(action: Callable[[], None], label: str) -> Callable[[], None]:
         action()
         return lambda: None
     pid = _fork(action, label, apart=True)
-    return lambda: _reap(block=True, only=pid)
+
+    def wait() -> None:
+        # while the child works, this process saves the figures it holds back
+        while any(c[0] == pid for c in _children):
+            pump()
+            if not _held:
+                _reap(block=True, only=pid)
+                return
+            _held.pop(0)[0]()
+            _reap(block=False)
+
+    return wait
+
+
+def start_apart(action: Callable[[], None], label: str) -> Callable[..., None]:
+    """Run ``action`` in a child of its own now, also outside :func:`background_saves`,
+    when this process may fork (:func:`can_fork`: it has not run typst itself), else here
+    and now. Returns ``finish(kill=False)``: waits for the child (raising its error), or
+    with ``kill`` stops it. For the work that may run while this process compiles the
+    report's PDF (the sheets' previews)."""
+    if not can_fork():
+        action()
+        return lambda kill=False: None
+    pid = _fork(action, label, apart=True)
+
+    def finish(kill: bool = False) -> None:
+        try:
+            if kill:
+                for child in [c for c in _children if c[0] == pid]:
+                    _children.remove(child)
+                    try:
+                        os.kill(pid, signal.SIGKILL)
+                        os.waitpid(pid, 0)
+                    except (ProcessLookupError, ChildProcessError):
+                        pass
+                    os.close(child[1])
+            else:
+                _reap(block=True, only=pid)
+        finally:
+            if not _children and gc.get_freeze_count():
+                gc.unfreeze()
+
+    return finish
 
 
 def pump() -> None:

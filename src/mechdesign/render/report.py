@@ -217,15 +217,25 @@ def write_report(out_dir: Path, *, machine: str, lang: str, formats: tuple[str, 
                     write_data(staging)
                 say("figures and sheets: the last ones")
             say("figures and sheets: all written")
-            if pending is not None:
-                from .pdf import compile_pdf
+            # the sheets' previews (PNG) left for now: drawn while typst lays out the report
+            start_previews = getattr(collect_sheets, "previews", None)
+            finish_previews = start_previews() if start_previews is not None else None
+            try:
+                if pending is not None:
+                    from .pdf import compile_pdf
 
-                source = pending.result()
-                say("PDF: typst → report.pdf")
-                # the PDF places each drawing sheet as vector graphics (its own PDF)
-                vector = {sh.preview: sh.pdf for sh in sheets if sh.pdf}
-                compile_pdf(source, staging, staging / "report.pdf",
-                            pdf_metadata(meta, lang, group), vector)
+                    source = pending.result()
+                    say("PDF: typst → report.pdf")
+                    # the PDF places each drawing sheet as vector graphics (its own PDF)
+                    vector = {sh.preview: sh.pdf for sh in sheets if sh.pdf}
+                    compile_pdf(source, staging, staging / "report.pdf",
+                                pdf_metadata(meta, lang, group), vector)
+            except BaseException:
+                if finish_previews is not None:
+                    finish_previews(kill=True)
+                raise
+            if finish_previews is not None:
+                finish_previews()
         finally:
             if pending is not None:
                 pending.cancel()
