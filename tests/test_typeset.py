@@ -174,7 +174,7 @@ def half_empty_pages(pdf, limit: float = 0.5) -> list[tuple[int, float]]:
                      and any(sp["text"].strip() for sp in ln["spans"])]
             if not above:
                 starts.add(page_no)
-        first = min(starts, default=1)                  # the cover and the contents before it
+        first = body_start(doc)                         # the cover and the contents before it
         for number, page in enumerate(doc, 1):
             if number < first or number == len(doc) or number + 1 in starts:
                 continue
@@ -516,3 +516,69 @@ def test_tables_get_a_continued_header_and_unbreakable_row_groups(rows, groups):
     # every row line carries its cell of the extra column or is covered by a group
     row_lines = [line for line in table.splitlines() if line.strip().startswith("[r")]
     assert len(row_lines) == rows
+
+
+# ---- the page rules of templates/report.typ on small documents ------------------------------
+
+def _render(tmp_path, md: str, lang: str = "en") -> Path:
+    from mechdesign.render.pdf import render_pdf
+    from mechdesign.render.report import template_dir
+
+    (tmp_path / "doc.md").write_text(md, encoding="utf-8")
+    pdf = tmp_path / "doc.pdf"
+    render_pdf(tmp_path / "doc.md", pdf, {"title": "T", "lang": lang}, template_dir() / "report.typ")
+    return pdf
+
+
+_FILLER = ("The crank turns at a constant speed and the rocker swings between its two limit "
+           "positions; the transmission angle is checked at every position of the cycle. ")
+
+
+def test_a_long_table_repeats_its_header_under_a_continued_label(tmp_path):
+    import pymupdf
+
+    rows = "\n".join(f"| r{k} | {k} |" for k in range(90))
+    md = f"# One\n\n{_FILLER * 3}\n\n| Name | Value |\n|---|--:|\n{rows}\n\n: Long table {{#tbl:long}}\n"
+    pdf = _render(tmp_path, md)
+    assert continued_missing(pdf) == []
+    with pymupdf.open(pdf) as doc:
+        pages = [page_rows(p) for p in doc]
+    later = [rows for rows in pages if rows and rows[0][2] == "Table 1 (continued)"]
+    assert len(later) >= 1
+    # under the label the repeated header, then at least KEEP_ROWS rows of the table
+    for rows in later:
+        assert rows[1][2] == "Name Value"
+        assert len([r for r in rows[2:] if re.fullmatch(r"r\d+ \d+", r[2])]) >= 3
+
+
+def test_a_lead_in_never_ends_a_page(tmp_path):
+    # forty lead-ins ("… as follows:") before a formula, a list or a table, after texts of
+    # growing length: without the rule several of them end a page
+    parts = ["# One\n"]
+    for k in range(40):
+        parts.append(_FILLER * (1 + k % 4))
+        parts.append(f"The values of case {k} are as follows:")
+        if k % 3 == 0:
+            parts.append(f"$$ x_{{{k}}} = \\frac{{a + b}}{{2}} = {k}.5 $$")
+        elif k % 3 == 1:
+            parts.append("- first item\n- second item\n- third item")
+        else:
+            parts.append("| a | b |\n|---|---|\n| 1 | 2 |\n| 3 | 4 |\n\n: Case table")
+    pdf = _render(tmp_path, "\n\n".join(parts) + "\n")
+    assert colon_at_page_foot(pdf) == []
+
+
+def test_figures_float_in_order_and_pages_stay_full(tmp_path):
+    from PIL import Image
+
+    parts = ["# One\n"]
+    for k in range(12):
+        Image.new("RGB", (800, 300 + 90 * (k % 5)), (200, 220, 240)).save(tmp_path / f"f{k}.png")
+        parts.append(_FILLER * (2 + k % 3))
+        parts.append(f"![Figure number {k + 1}](f{k}.png){{#fig:f{k} width=90%}}")
+    parts.append("# Two\n\n" + _FILLER * 4)
+    parts.append("# References {-}\n\n" + "\n\n".join(f"[{k}] Author. Book {k}." for k in range(1, 6)))
+    pdf = _render(tmp_path, "\n\n".join(parts) + "\n")
+    assert figure_order(pdf) == []
+    assert half_empty_pages(pdf) == []
+    assert short_last_pages(pdf) == []
