@@ -174,7 +174,7 @@ def half_empty_pages(pdf, limit: float = 0.5) -> list[tuple[int, float]]:
                      and any(sp["text"].strip() for sp in ln["spans"])]
             if not above:
                 starts.add(page_no)
-        first = min(starts, default=1)                  # the cover and the contents before it
+        first = body_start(doc)                         # the cover and the contents before it
         for number, page in enumerate(doc, 1):
             if number < first or number == len(doc) or number + 1 in starts:
                 continue
@@ -183,6 +183,184 @@ def half_empty_pages(pdf, limit: float = 0.5) -> list[tuple[int, float]]:
             fill = page_fill(page)
             if fill < limit:
                 bad.append((number, round(fill, 2)))
+    return bad
+
+
+# ---- pages: split tables, lead-ins, short last pages, figure order -------------------------
+
+def page_rows(page, code: bool = True) -> list[tuple[float, float, str]]:
+    """(top, bottom, text) of every text row inside the text block (the running header and
+    the page number outside it), top to bottom: the lines whose tops lie within 3 pt form a
+    row, their text joined left to right (a table row, a line of prose). ``code=False``
+    leaves out the lines set wholly in a monospaced font (a program listing)."""
+    lines = []
+    for block in page.get_text("dict")["blocks"]:
+        for line in block.get("lines", []):
+            spans = [sp for sp in line["spans"] if sp["text"].strip()]
+            text = "".join(sp["text"] for sp in line["spans"]).strip()
+            x0, y0, _, y1 = line["bbox"]
+            if not code and spans and all("Mono" in sp["font"] for sp in spans):
+                continue
+            if text and TOP - 6 <= y0 <= BOTTOM:
+                lines.append((y0, y1, x0, text))
+    lines.sort()
+    rows: list[list] = []
+    for y0, y1, x0, text in lines:
+        if rows and y0 - rows[-1][0] < 3.0:
+            rows[-1][1] = max(rows[-1][1], y1)
+            rows[-1][2].append((x0, text))
+        else:
+            rows.append([y0, y1, [(x0, text)]])
+    return [(r[0], r[1], " ".join(t for _, t in sorted(r[2]))) for r in rows]
+
+
+def _is_sheet(page) -> bool:
+    return page.rect.width > 600 or page.rect.height > 850 or page.rect.width > page.rect.height
+
+
+_TABLE_CAPTION = re.compile(r"^(?:表\s*(\d+)|Table\s+(\d+)\s*:)")
+_FIGURE_CAPTION = re.compile(r"^(?:图\s*(\d+)\s|Figure\s+(\d+)\s*:)")
+_CONTINUED = re.compile(r"^(?:续表\s*(\d+)|Table\s+(\d+)\s+\(continued\))")
+
+
+def continued_missing(pdf) -> list[tuple[int, int]]:
+    """(page, table) of every page on which a table goes on from an earlier page without
+    "续表 N" / "Table N (continued)" (N its number) as its first row. A table goes on where
+    a page's first row is the header row of the last table whose caption stood on an earlier
+    page (one of the three rows after the caption's first line: the caption may take two)."""
+    import pymupdf
+
+    bad = []
+    last = None                        # (table number, rows after its caption, caption page)
+    with pymupdf.open(pdf) as doc:
+        for number, page in enumerate(doc, 1):
+            if _is_sheet(page):
+                continue
+            rows = page_rows(page)
+            if rows and last is not None and last[2] < number:
+                cont = _CONTINUED.match(rows[0][2])
+                if cont and int(cont.group(1) or cont.group(2)) != last[0]:
+                    bad.append((number, last[0]))
+                elif not cont and rows[0][2] in last[1]:
+                    bad.append((number, last[0]))
+            for k, (_, _, text) in enumerate(rows):
+                m = _TABLE_CAPTION.match(text)
+                if m:
+                    last = (int(m.group(1) or m.group(2)), [r[2] for r in rows[k + 1:k + 4]], number)
+    return bad
+
+
+def colon_at_page_foot(pdf) -> list[tuple[int, str]]:
+    """(page, row) of every page whose last text row ends in "：" or ":" (a lead-in
+    sentence parted from the list or table it introduces)."""
+    import pymupdf
+
+    bad = []
+    with pymupdf.open(pdf) as doc:
+        for number, page in enumerate(doc, 1):
+            rows = page_rows(page, code=False)
+            if rows and not _is_sheet(page) and rows[-1][2].endswith(("：", ":")):
+                bad.append((number, rows[-1][2][-40:]))
+    return bad
+
+
+def body_start(doc) -> int:
+    """The page of the first level-1 heading (the cover and the contents come before)."""
+    return min((page_no for level, _, page_no in doc.get_toc() if level == 1 and page_no >= 1),
+               default=1)
+
+
+def chapter_starts(doc) -> set[int]:
+    """The pages on which a level-1 heading (the PDF outline) is the first row."""
+    starts = set()
+    for level, title, page_no, dest in doc.get_toc(simple=False):
+        if level != 1 or page_no < 1:
+            continue
+        to = dest.get("to")
+        y = None if to is None else to.y + 2.0
+        rows = page_rows(doc[page_no - 1])
+        if y is None or not [r for r in rows if r[1] < y - 2]:
+            starts.add(page_no)
+    return starts
+
+
+MIN_ROWS = 3
+
+
+def short_last_pages(pdf) -> list[tuple[int, int]]:
+    """(page, rows) of every page that ends a chapter (the last page, or a page followed by
+    one that a level-1 heading opens) with fewer than MIN_ROWS text rows and no figure: a
+    reference or two, a line of a table, a heading alone. The rule: a chapter's last page
+    holds at least three rows of text or an image (a figure or a sheet's page counts as
+    full). Pages before the first chapter (the cover, the contents) are not checked."""
+    import pymupdf
+
+    bad = []
+    with pymupdf.open(pdf) as doc:
+        starts = chapter_starts(doc)
+        first = body_start(doc)
+        for number, page in enumerate(doc, 1):
+            if number < first or _is_sheet(page):
+                continue
+            if number != len(doc) and number + 1 not in starts:
+                continue
+            if page.get_image_info() or any(b.get("type") == 1 for b in page.get_text("dict")["blocks"]):
+                continue
+            rows = page_rows(page)
+            if len(rows) < MIN_ROWS:
+                bad.append((number, len(rows)))
+    return bad
+
+
+def figure_order(pdf) -> list[tuple[int, str]]:
+    """Figures out of order or far from their text: (page, what) for every figure whose
+    number is not one more than the figure before it (typst's floats keep the order), and
+    for every figure placed more than one page after the first reference to it (a link in
+    the text whose words are "图 N" / "Figure N")."""
+    import pymupdf
+
+    bad = []
+    captions, refs = {}, {}
+    with pymupdf.open(pdf) as doc:
+        first = body_start(doc)                         # not the contents
+        for number, page in enumerate(doc, 1):
+            if number < first:
+                continue
+            for top, _, text in page_rows(page):
+                m = _FIGURE_CAPTION.match(text)
+                if m:
+                    captions.setdefault(int(m.group(1) or m.group(2)), (number, top))
+            for link in page.get_links():
+                words = page.get_textbox(link["from"]).strip()
+                r = re.fullmatch(r"(?:图|Figure|Fig\.)\s*(\d+)", words)
+                if r:
+                    refs.setdefault(int(r.group(1)), number)
+    previous = 0
+    for n, (page, _) in sorted(captions.items(), key=lambda kv: kv[1]):
+        if n != previous + 1:
+            bad.append((page, f"figure {n} after figure {previous}"))
+        previous = n
+        if n in refs and page - refs[n] > 1:
+            bad.append((page, f"figure {n} on p.{page}, first referred to on p.{refs[n]}"))
+    return bad
+
+
+def heading_at_page_foot(pdf) -> list[tuple[int, str]]:
+    """(page, heading) of every heading (the PDF outline, all levels) with fewer than
+    MIN_ROWS rows of text below it on its page: a heading left at the foot of a page."""
+    import pymupdf
+
+    bad = []
+    with pymupdf.open(pdf) as doc:
+        for level, title, page_no, dest in doc.get_toc(simple=False):
+            to = dest.get("to")
+            if page_no < body_start(doc) or to is None:
+                continue
+            rows = page_rows(doc[page_no - 1])
+            below = [r for r in rows if r[0] > to.y + 4]
+            # the heading's own row (a title over two rows counts as one)
+            if len(below) < MIN_ROWS + (1 if len(title) > 40 else 0):
+                bad.append((page_no, title[:40]))
     return bad
 
 
@@ -255,16 +433,6 @@ def display_widths(docx) -> list[tuple[float, str]]:
 
 BRIEFS = sorted(p.stem for p in (ROOT / "designs").glob("*.yaml"))
 
-# Reports where the figure rule of templates/report.typ still leaves a page under half
-# full. The layout now settles in every report (the figures' choices are kept from typst's
-# fourth pass on), but a choice made in the third pass can be stale for the final
-# positions: a figure set "smaller, filling the rest of the page" that would have fitted
-# as it is, with blank space under it (die-cutter en p.13 and p.47, furnace-pusher en
-# p.32, lock-beam zh p.19, shaper zh p.22 on 2026-11-26). Listed so the check guards every
-# other report.
-HALF_EMPTY_LEFT = {("die_cutter", "en"), ("furnace_pusher", "en"), ("lockbeam", "zh"), ("shaper", "zh")}
-
-
 @pytest.mark.e2e
 @pytest.mark.parametrize("lang", ["zh", "en"])
 @pytest.mark.parametrize("brief", BRIEFS)
@@ -283,11 +451,16 @@ def test_every_report_stays_in_the_text_block(brief, lang, tmp_path):
     pdf = out / "report.pdf"
     assert outside_text_block(pdf) == []
     assert numbers_over_words(pdf) == []
-    # no page more than half empty where no chapter ends (issue 19, point 2)
-    half = half_empty_pages(pdf)
-    if half and (brief, lang) in HALF_EMPTY_LEFT:
-        pytest.xfail(f"known: a stale figure choice: {half}")
-    assert half == []
+    # issue 19, point 2 (templates/report.typ): no page more than half empty where no
+    # chapter ends; "续表 N" / "Table N (continued)" atop every page a table goes on to; no
+    # page ending in a lead-in ("…：" / "…:"); no chapter ending on a page of one or two
+    # rows; no heading without three rows under it; figures in order, near their text
+    assert half_empty_pages(pdf) == []
+    assert continued_missing(pdf) == []
+    assert colon_at_page_foot(pdf) == []
+    assert short_last_pages(pdf) == []
+    assert heading_at_page_foot(pdf) == []
+    assert figure_order(pdf) == []
 
 
 # ---- Word: table of contents, running header, page numbers, author ------------------------
@@ -343,3 +516,69 @@ def test_tables_get_a_continued_header_and_unbreakable_row_groups(rows, groups):
     # every row line carries its cell of the extra column or is covered by a group
     row_lines = [line for line in table.splitlines() if line.strip().startswith("[r")]
     assert len(row_lines) == rows
+
+
+# ---- the page rules of templates/report.typ on small documents ------------------------------
+
+def _render(tmp_path, md: str, lang: str = "en") -> Path:
+    from mechdesign.render.pdf import render_pdf
+    from mechdesign.render.report import template_dir
+
+    (tmp_path / "doc.md").write_text(md, encoding="utf-8")
+    pdf = tmp_path / "doc.pdf"
+    render_pdf(tmp_path / "doc.md", pdf, {"title": "T", "lang": lang}, template_dir() / "report.typ")
+    return pdf
+
+
+_FILLER = ("The crank turns at a constant speed and the rocker swings between its two limit "
+           "positions; the transmission angle is checked at every position of the cycle. ")
+
+
+def test_a_long_table_repeats_its_header_under_a_continued_label(tmp_path):
+    import pymupdf
+
+    rows = "\n".join(f"| r{k} | {k} |" for k in range(90))
+    md = f"# One\n\n{_FILLER * 3}\n\n| Name | Value |\n|---|--:|\n{rows}\n\n: Long table {{#tbl:long}}\n"
+    pdf = _render(tmp_path, md)
+    assert continued_missing(pdf) == []
+    with pymupdf.open(pdf) as doc:
+        pages = [page_rows(p) for p in doc]
+    later = [rows for rows in pages if rows and rows[0][2] == "Table 1 (continued)"]
+    assert len(later) >= 1
+    # under the label the repeated header, then at least KEEP_ROWS rows of the table
+    for rows in later:
+        assert rows[1][2] == "Name Value"
+        assert len([r for r in rows[2:] if re.fullmatch(r"r\d+ \d+", r[2])]) >= 3
+
+
+def test_a_lead_in_never_ends_a_page(tmp_path):
+    # forty lead-ins ("… as follows:") before a formula, a list or a table, after texts of
+    # growing length: without the rule several of them end a page
+    parts = ["# One\n"]
+    for k in range(40):
+        parts.append(_FILLER * (1 + k % 4))
+        parts.append(f"The values of case {k} are as follows:")
+        if k % 3 == 0:
+            parts.append(f"$$ x_{{{k}}} = \\frac{{a + b}}{{2}} = {k}.5 $$")
+        elif k % 3 == 1:
+            parts.append("- first item\n- second item\n- third item")
+        else:
+            parts.append("| a | b |\n|---|---|\n| 1 | 2 |\n| 3 | 4 |\n\n: Case table")
+    pdf = _render(tmp_path, "\n\n".join(parts) + "\n")
+    assert colon_at_page_foot(pdf) == []
+
+
+def test_figures_float_in_order_and_pages_stay_full(tmp_path):
+    from PIL import Image
+
+    parts = ["# One\n"]
+    for k in range(12):
+        Image.new("RGB", (800, 300 + 90 * (k % 5)), (200, 220, 240)).save(tmp_path / f"f{k}.png")
+        parts.append(_FILLER * (2 + k % 3))
+        parts.append(f"![Figure number {k + 1}](f{k}.png){{#fig:f{k} width=90%}}")
+    parts.append("# Two\n\n" + _FILLER * 4)
+    parts.append("# References {-}\n\n" + "\n\n".join(f"[{k}] Author. Book {k}." for k in range(1, 6)))
+    pdf = _render(tmp_path, "\n\n".join(parts) + "\n")
+    assert figure_order(pdf) == []
+    assert half_empty_pages(pdf) == []
+    assert short_last_pages(pdf) == []
