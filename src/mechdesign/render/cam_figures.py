@@ -107,7 +107,7 @@ def pressure_and_curvature(path: Path, lang: str, delta_deg, alpha_deg, limits, 
             shown.add(name)
         j = int(np.argmax(alpha_deg))
         ax.plot([delta_deg[j]], [alpha_deg[j]], "o", color="C3", ms=4)
-        ax.annotate(f"αmax = {alpha_deg[j]:.2f}°", (delta_deg[j], alpha_deg[j]),
+        ax.annotate(f"$\\alpha_{{max}}$ = {alpha_deg[j]:.2f}°", (delta_deg[j], alpha_deg[j]),
                     xytext=(6, -12), textcoords="offset points", fontsize=7.5)
         top = max(float(np.max(alpha_deg)), max((x for x in limits if x is not None), default=0))
         ax.set_ylim(0, top * 1.18 + 1)
