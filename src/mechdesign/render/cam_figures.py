@@ -141,7 +141,7 @@ def profile(path: Path, lang: str, pitch, actual, base_radius, roller, marks, ro
         t = np.linspace(0, 2 * np.pi, 361)
         circ = np.exp(1j * t)
         ax.plot((base_radius * circ).real, (base_radius * circ).imag, color="0.45", lw=0.8, ls="--",
-                label=f"{lab['base']} r0 = {base_radius:.1f} mm")
+                label=f"{lab['base']} $r_0$ = {base_radius:.1f} mm")
         closed = lambda z: np.append(z, z[:1])  # noqa: E731
         if not flat and roller > 0:
             ax.plot(closed(pitch).real, closed(pitch).imag, color="C0", lw=0.9, ls="-.",
