@@ -12,9 +12,9 @@ One main (distribution) shaft turns once per part. Stages:
   bending wheel), the seed's graphical lengths checked the same way;
 - feed linkage: the shared linkage stages (prefix ``feed``) on the brief's
   Assur-group description, plus the seed-format table and the guide-bar closed forms;
-- cycle (motion cycle diagram): the brief's diagram, its timing constraints, and its
-  agreement with what the cams and the feed linkage actually do, found by simulation along
-  the main shaft.
+- cycle (motion cycle diagram): the brief's diagram, its timing constraints,
+  and its agreement with what the cams and the feed linkage actually do, found
+  by simulation along the main shaft.
 """
 from __future__ import annotations
 
@@ -71,7 +71,7 @@ class Shaft:
 
 @dataclass(frozen=True)
 class Transmission:
-    """Stage: transmission design."""
+    """Stage 'transmission design'."""
 
     stages: tuple[TrainStage, ...]
     ratio: float
@@ -280,7 +280,7 @@ def seed_check(ds: rs.RockerDesign, bp: BendingParams) -> SeedCheck:
 
 @dataclass(frozen=True)
 class BendingResult:
-    """Stage: bending linkage design, its synthesis and its simulation."""
+    """Stage 'bending linkage design': synthesis and its simulation."""
 
     synthesis: BendingSynthesis
     design: rs.RockerDesign
@@ -511,7 +511,7 @@ def feed_table(model, step: float = np.radians(10.0)) -> FeedTable:
 
 @dataclass(frozen=True)
 class CycleResult:
-    """Stage: motion cycle diagram, the brief's diagram, its checks, and the motions along the main shaft."""
+    """Stage 'motion cycle diagram': the brief's diagram, its checks, and the motions along the main shaft."""
 
     diagram: cy.CycleDiagram
     checks: list
