@@ -179,12 +179,25 @@ def test_en_heading_apostrophe_is_the_latin_one(tmp_path):
 def test_fraction_in_a_table_cell_is_set_at_the_cell_size(tmp_path):
     """Inline math in a cell set its fraction's numerator and denominator in script size
     (about 6 pt in a 9 pt table): the press/shaper/slotter α′ row, the furnace pusher's
-    check of the seed's equations. They are the cell's 9 pt now."""
+    check of the seed's equations. They are the cell's 9 pt now, and the row grows to hold
+    the fraction: nothing of it runs into the rows above and below."""
     md = ("| Quantity | Formula |\n|:--|:--|\n"
+          "| standard centre distance | $m(z_1+z_2)/2$ |\n"
           "| working pressure angle | $\\mathrm{inv}\\,\\alpha' = "
-          "\\frac{2(x_1+x_2)\\tan\\alpha}{z_1+z_2}+\\mathrm{inv}\\,\\alpha$ |\n\n: Meshing data\n")
+          "\\frac{2(x_1+x_2)\\tan\\alpha}{z_1+z_2}+\\mathrm{inv}\\,\\alpha$ |\n"
+          "| working centre distance | $a\\cos\\alpha/\\cos\\alpha'$ |\n\n: Meshing data\n")
     pdf = _render(tmp_path, md, "en")
-    tan = [s["size"] for s in _spans(pdf) if "tan" in s["text"]]
-    inv = [s["size"] for s in _spans(pdf) if "inv" in s["text"]]
-    assert tan and inv
-    assert min(tan) == pytest.approx(max(inv), abs=0.05), (tan, inv)
+    spans = list(_spans(pdf))
+    num = [s for s in spans if "tan 𝛼" in s["text"]]          # the numerator's last part
+    inv = [s for s in spans if s["text"].startswith("inv")]    # at the cell's size
+    assert num and inv
+    assert num[0]["size"] == pytest.approx(inv[0]["size"], abs=0.05), (num, inv)
+    # the fraction lies between the rows around it: the numerator below the formula of the
+    # row above, the denominator above the row below
+    col = inv[0]["bbox"][0] - 1
+    prev = [s for s in spans if s["bbox"][0] >= col and "𝑚(𝑧" in s["text"]]
+    nxt = [s for s in spans if "working centre" in s["text"]]
+    den = [s for s in spans if "𝑧" in s["text"] and s["bbox"][1] >= num[0]["bbox"][3] - 1]
+    assert prev and nxt and den
+    assert prev[0]["bbox"][3] <= num[0]["bbox"][1] + 0.5, (prev, num)
+    assert max(s["bbox"][3] for s in den) <= nxt[0]["bbox"][1] + 0.5, (den, nxt)
