@@ -107,7 +107,7 @@ def pressure_and_curvature(path: Path, lang: str, delta_deg, alpha_deg, limits, 
             shown.add(name)
         j = int(np.argmax(alpha_deg))
         ax.plot([delta_deg[j]], [alpha_deg[j]], "o", color="C3", ms=4)
-        ax.annotate(f"αmax = {alpha_deg[j]:.2f}°", (delta_deg[j], alpha_deg[j]),
+        ax.annotate(f"$\\alpha_{{max}}$ = {alpha_deg[j]:.2f}°", (delta_deg[j], alpha_deg[j]),
                     xytext=(6, -12), textcoords="offset points", fontsize=7.5)
         top = max(float(np.max(alpha_deg)), max((x for x in limits if x is not None), default=0))
         ax.set_ylim(0, top * 1.18 + 1)
@@ -141,7 +141,7 @@ def profile(path: Path, lang: str, pitch, actual, base_radius, roller, marks, ro
         t = np.linspace(0, 2 * np.pi, 361)
         circ = np.exp(1j * t)
         ax.plot((base_radius * circ).real, (base_radius * circ).imag, color="0.45", lw=0.8, ls="--",
-                label=f"{lab['base']} r0 = {base_radius:.1f} mm")
+                label=f"{lab['base']} $r_0$ = {base_radius:.1f} mm")
         closed = lambda z: np.append(z, z[:1])  # noqa: E731
         if not flat and roller > 0:
             ax.plot(closed(pitch).real, closed(pitch).imag, color="C0", lw=0.9, ls="-.",

@@ -64,7 +64,7 @@ LABELS = LabelTable({
     "n_drive": N_("Gear 1 drives, counter-clockwise; gear 2 turns clockwise."),
     "n_teeth": N_("Generated involute tooth profiles with their root fillets."),
     "n_eps": N_("ε = B1B2 / pb = {g}; ε = [z1(tan αa1 − tan α′) + z2(tan αa2 − tan α′)] / 2π = {f}."),
-    "n_undercut": N_("Gear {i} (z = {z}, x = {x} < xmin = {xmin}) is undercut."),
+    "n_undercut": N_("Gear {i} (z = {z}, x = {x} < xₘᵢₙ = {xmin}) is undercut."),
     "n_interf": N_("B1B2 runs beyond N1N2: interference."),
     "w1": "ω1",
     "w2": "ω2",

@@ -11,6 +11,7 @@ numbers and the graphical results beside the analytic ones.
 from __future__ import annotations
 
 import math
+import re
 from pathlib import Path
 
 import numpy as np
@@ -24,7 +25,7 @@ from .labels import LabelTable, pgettext
 _T = LabelTable({
     "vel": N_("velocity polygon"), "acc": N_("acceleration polygon"), "fbd": N_("free body"),
     "force": N_("force polygon"), "guide": N_("∥ guide"), "bar": N_("∥ bar {}"),
-    "rot": N_("$v_r$ turned 90° with ω{}"), "known": pgettext("graphical", "known"),
+    "rot": N_("$v_r$ turned 90° with $\\omega_{{{}}}$"), "known": pgettext("graphical", "known"),
     "mag": pgettext("graphical", "magnitude"), "dir": pgettext("graphical", "direction"),
     "pos": pgettext("graphical", "position"), "group": pgettext("graphical", "group"),
     "crank": N_("crank"), "doc": "{}", "links": pgettext("graphical", "links"),
@@ -72,6 +73,33 @@ def sym(s: str) -> str:
             return f"{base}^{{{sp}}}_{{{sub}}}{prime}"
         return f"{head}_{{{sub}}}{prime}"
     return s + prime
+
+
+_VERTEX = re.compile(r"([A-Za-z])([A-Za-z0-9]*)('*)")
+
+
+def vertex(name: str) -> str | None:
+    """A polygon vertex in TeX (LaTeX, pandoc and mathtext), its digits and the letters after
+    the first one a subscript: "n4'" → "n_{4}'", "ns3'" → "n_{s3}'", "a4" → "a_{4}",
+    "p'" → "p'"; None for a name of another form (drawn as written)."""
+    m = _VERTEX.fullmatch(str(name))
+    if m is None:
+        return None
+    base, sub, prime = m.groups()
+    return f"{base}_{{{sub}}}{prime}" if sub else base + prime
+
+
+def segment(tail: str, head: str) -> str:
+    """A polygon's segment as a table cell, typeset: "$p'n_{4}'$" (p'n4' as written when a
+    vertex has another form)."""
+    a, b = vertex(tail), vertex(head)
+    return f"{tail}{head}" if a is None or b is None else f"${a}{b}$"
+
+
+def vertex_label(name: str) -> str:
+    """A polygon vertex as a matplotlib label (mathtext when :func:`vertex` typesets it)."""
+    tex = vertex(name)
+    return mpl_text(name) if tex is None else f"${tex}$"
 
 
 def direction(code: str, lang: str) -> str:
@@ -169,12 +197,8 @@ def _kin_axes(ax, poly, title: str, mu_unit: str, lang: str):
             _arrow(ax, poly.points[t.tail], poly.points[t.head], _COLORS.get(t.kind, "k"),
                    lw=1.4 if t.kind == "absolute" else 1.0)
     for name, z in poly.points.items():
-        if name.startswith("n") and name[1:2].isdigit():
-            label = name
-        else:
-            label = name
         ax.plot([z.real], [z.imag], "k.", ms=3)
-        ax.text(z.real, z.imag, f" {mpl_text(label)}", fontsize=7, va="bottom")
+        ax.text(z.real, z.imag, f" {vertex_label(name)}", fontsize=7, va="bottom")
     ax.set_aspect("equal", adjustable="datalim")
     ax.set_title(f"{title}  μ = {_scale(poly.scale)} {mu_unit}", fontsize=8)
     ax.tick_params(labelsize=6)
@@ -244,7 +268,7 @@ def _force_figure(path: Path, pos, fg, members: dict, lang: str) -> None:
                 lines1.append((z, z + L * value / abs(value)))
         a1.set_aspect("equal", adjustable="datalim")
         a1.set_title(f"{t['fbd']} ({t['links']} {', '.join(fg.links)})  "
-                     f"μl = {_scale(pos.length_scale)} m/mm", fontsize=8)
+                     f"$\\mu_l$ = {_scale(pos.length_scale)} m/mm", fontsize=8)
         a1.tick_params(labelsize=6)
         labels2: list[Label] = []
         lines2: list[tuple[complex, complex]] = []
@@ -258,7 +282,7 @@ def _force_figure(path: Path, pos, fg, members: dict, lang: str) -> None:
         for name, z in fg.points.items():
             a2.plot([z.real], [z.imag], "k.", ms=2)
         a2.set_aspect("equal", adjustable="datalim")
-        a2.set_title(f"{t['force']}  μF = {_scale(fg.scale)} N/mm", fontsize=8)
+        a2.set_title(f"{t['force']}  $\\mu_F$ = {_scale(fg.scale)} N/mm", fontsize=8)
         a2.tick_params(labelsize=6)
         a2.set_xlabel("mm", fontsize=6)
         a2.grid(True, lw=0.3, alpha=0.4)
@@ -345,7 +369,7 @@ def _kin(poly, lang: str, unit: str, rate_name: str, links: dict | None = None) 
             if t.known and (t.direction == "known" or t.length == 0):
                 seg = length = value = "—"
             else:
-                seg, length, value = f"{t.tail}{t.head}", _mm(t.length), _numg(t.read)
+                seg, length, value = segment(t.tail, t.head), _mm(t.length), _numg(t.read)
             g["rows"].append([f"${sym(t.symbol)}$", mag, dirs, seg, length, value])
     for g in groups:
         del g["seen"]

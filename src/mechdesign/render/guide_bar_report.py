@@ -98,7 +98,7 @@ def task_words(p, syn) -> dict:
     """The task paragraph's words that depend on what the brief gives: the gear pair
     driving the crank, the ram guide by the rule or given."""
     gear = p.z1 is not None
-    driven = N_(", driven by gear z2,")
+    driven = N_(", driven by gear $z_2$,")
     guide = (N_("the ram guide's distance $L_{O_3M}$ is given.") if syn.guide_given else
              N_("the ram guide passes through the mid-point of the sagitta of the arc "
                 "described by the bar's end B."))

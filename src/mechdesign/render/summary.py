@@ -428,8 +428,10 @@ def display_width(text: str) -> int:
 
 
 def _cut(text: str, columns: int) -> tuple[str, str]:
-    """The longest head of ``text`` within ``columns`` (at a space when there is one in its
-    second half), and the rest."""
+    """The longest head of ``text`` within ``columns``, and the rest: cut at a space when
+    there is one in the head's second half, else after a comma, an opening bracket or "=",
+    else before a "." — never inside a name (the listing's last line read
+    "pin_lift_while_bendin" ↪ "g)," at a page foot) unless the head has no such place."""
     used, end = 0, 0
     for i, ch in enumerate(text):
         used += display_width(ch)
@@ -441,6 +443,11 @@ def _cut(text: str, columns: int) -> tuple[str, str]:
     space = text.rfind(" ", 0, end)
     if space > end // 2:
         end = space + 1
+    else:
+        for cut in (max(text.rfind(c, 0, end) for c in ",([{=") + 1, text.rfind(".", 0, end)):
+            if cut > end // 2:
+                end = cut
+                break
     return text[:end].rstrip(), text[end:].lstrip()
 
 

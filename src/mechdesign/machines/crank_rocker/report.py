@@ -169,7 +169,7 @@ def _motion(path: Path, lang: str, sims, allowed_deg, with_speed: bool):
             ax.plot(x, y, lw=1.6 if i == 0 else 0.9, color=f"C{i}", label=mpl_text(_name(s.label, lang)))
         xg = float(_wrap([opt.phi_gamma_min])[0][0])
         ax.plot(xg, opt.gamma_min * DEG, "o", color="C3", ms=5)
-        ax.annotate(f"γmin = {opt.gamma_min * DEG:.2f}°", (xg, opt.gamma_min * DEG),
+        ax.annotate(f"$\\gamma_{{min}}$ = {opt.gamma_min * DEG:.2f}°", (xg, opt.gamma_min * DEG),
                     xytext=(8, -14), textcoords="offset points", fontsize=8, color="C3")
         ax.axhline(allowed_deg, color="C3", lw=0.8, ls="--")
         ax.set_ylabel(lab["gamma"])
@@ -389,23 +389,23 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
     # data table
     if given is not None:
         data_rows = [[s_, _(n), v, u] for s_, n, v, u in (
-            ("l1", N_("crank AB (given)"), given["l1"], "mm"),
-            ("l2", N_("coupler BC (given)"), given["l2"], "mm"),
-            ("l3", N_("rocker CD (given)"), given["l3"], "mm"),
-            ("l4", N_("frame AD (given)"), given["l4"], "mm"),
+            ("$l_1$", N_("crank AB (given)"), given["l1"], "mm"),
+            ("$l_2$", N_("coupler BC (given)"), given["l2"], "mm"),
+            ("$l_3$", N_("rocker CD (given)"), given["l3"], "mm"),
+            ("$l_4$", N_("frame AD (given)"), given["l4"], "mm"),
             ("θ", N_("extreme-position angle (derived)"), f(th_deg, 4), "°"),
             ("K", N_("time ratio (derived)"), f(p.K, 4), "—"),
             ("ψ", N_("rocker swing (derived)"), _deg(p.swing, 4), "°"),
-            ("γmin", N_("minimum transmission angle (derived)"), given["gamma_min"], "°"),
+            ("$\\gamma_{min}$", N_("minimum transmission angle (derived)"), given["gamma_min"], "°"),
             ("[γ]", N_("allowed minimum transmission angle"), _deg(p.gamma_allowed, 0), "°"))]
     else:
         data_rows = [["K", _("time ratio"), f(p.K, 4), "—"], ["θ", _("extreme-position angle"), f(th_deg, 4), "°"],
-                     ["ψ", _("rocker swing"), _deg(p.swing, 2), "°"], ["l3", _.pgettext("given length", "rocker CD"), _mm(p.rocker, 2), "mm"]]
+                     ["ψ", _("rocker swing"), _deg(p.swing, 2), "°"], ["$l_3$", _.pgettext("given length", "rocker CD"), _mm(p.rocker, 2), "mm"]]
         if p.frame is not None:
-            data_rows.append(["l4", _("given frame AD (textbook method)"), _mm(p.frame, 2), "mm"])
+            data_rows.append(["$l_4$", _("given frame AD (textbook method)"), _mm(p.frame, 2), "mm"])
         data_rows.append(["[γ]", _("allowed minimum transmission angle"), _deg(p.gamma_allowed, 0), "°"])
     if p.crank_speed_rpm is not None:
-        data_rows.append(["n1", _("crank speed (motion curves only)"), f(p.crank_speed_rpm, 1), "rpm"])
+        data_rows.append(["$n_1$", _("crank speed (motion curves only)"), f(p.crank_speed_rpm, 1), "rpm"])
     # comparison of designs: lengths and simulated θ, ψ, K, γmin
     designs = [best] + ([tb] if tb is not None else []) + list(r["compare"])
     cmp_rows = []
@@ -422,7 +422,7 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
         dg = (best.gamma_min - s.gamma_min) * DEG
         if abs(dth) > 1e-6 or abs(dpsi) > 1e-6:
             missing.append(md_text(_name(s.label, lang)))
-        paper_notes.append(_("{name}: θ off by {dth}°, ψ off by {dpsi}°, γmin {dg}° below the optimum",
+        paper_notes.append(_("{name}: θ off by {dth}°, ψ off by {dpsi}°, $\\gamma_{{min}}$ {dg}° below the optimum",
                              name=md_text(_name(s.label, lang)), dth=f(dth, 3), dpsi=f(dpsi, 3), dg=f(dg, 3)))
     # verification rows: [item, result, reference, verdict]
     tol = 1e-9
@@ -435,17 +435,17 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
                 (N_("simulated K"), f(s.K, 4), f(p.K, 4), s.K - p.K),
                 (N_("simulated θ /°"), _deg(s.theta, 4), f(th_deg, 4), s.theta - p.theta),
                 (N_("simulated ψ /°"), _deg(s.swing, 4), _deg(p.swing, 4), s.swing - p.swing),
-                (N_("simulated γmin /° (ref.: closed form)"),
+                (N_("simulated $\\gamma_{min}$ /° (ref.: closed form)"),
                  _deg(s.gamma_min, 4), _deg(d.gamma_min, 4), s.gamma_min - d.gamma_min)):
             vrows.append([_("{name}: {item}", name=name, item=_(item)), _with_diff(val, err, lang), ref,
                           _verdict(abs(err) < tol, lang)])
         vrows.append([_("{name}: {item}", name=name, item=_("loop-closure residual /m")),
                       fe(s.closure), "0", _verdict(s.closure < 1e-12, lang)])
     n0, n1 = ver.optimum_neighbours
-    vrows.append([_("γmin(t* ∓ 0.001·arc) − γmin* /°"),
+    vrows.append([_("$\\gamma_{min}$(t* ∓ 0.001·arc) − $\\gamma_{min}^*$ /°"),
                   f"{fe((n0 - best.gamma_min) * DEG)}, {fe((n1 - best.gamma_min) * DEG)}", "< 0",
                   _verdict(n0 < best.gamma_min and n1 < best.gamma_min, lang)])
-    vrows.append([_("largest γmin of a 200 000-point scan − γmin* /°"),
+    vrows.append([_("largest $\\gamma_{min}$ of a 200 000-point scan − $\\gamma_{min}^*$ /°"),
                   fe((ver.optimum_scan - best.gamma_min) * DEG), "≤ 0",
                   _verdict(ver.optimum_scan <= best.gamma_min + 1e-12, lang)])
     slider = None
@@ -488,9 +488,9 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
                 (N_("simulated stroke H /mm"), _mm(ss.stroke, 4), f(h_mm, 4),
                  (ss.stroke - sl.stroke) / sl.stroke),
                 (N_("simulated K"), f(ss.K, 4), f(sl.K, 4), ss.K - sl.K),
-                (N_("simulated slow-stroke αmax /° (ref.: closed form)"),
+                (N_("simulated slow-stroke $\\alpha_{max}$ /° (ref.: closed form)"),
                  _deg(ss.alpha_slow, 4), _deg(sl.alpha_slow, 4), ss.alpha_slow - sl.alpha_slow),
-                (N_("simulated fast-stroke αmax /° (ref.: closed form)"),
+                (N_("simulated fast-stroke $\\alpha_{max}$ /° (ref.: closed form)"),
                  _deg(ss.alpha_fast, 4), _deg(sl.alpha_fast, 4), ss.alpha_fast - sl.alpha_fast)):
             vrows.append([_("{name}: {item}", name=slider_name, item=_(item)),
                           _with_diff(val, err, lang), ref, _verdict(abs(err) < tol, lang)])
@@ -530,8 +530,8 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
                 "far": None if far is None else _deg(far, 2), "where": where},
         "with_speed": p.crank_speed_rpm is not None,
         "textbook": textbook, "given": given,
-        "cmp_head": [_.pgettext("table head", "design"), "l1/mm", "l2/mm", "l3/mm", "l4/mm", "θ/°", "ψ/°", "K",
-                     "γmin/°"],
+        "cmp_head": [_.pgettext("table head", "design"), "$l_1$/mm", "$l_2$/mm", "$l_3$/mm", "$l_4$/mm", "θ/°", "ψ/°",
+                     "K", "$\\gamma_{min}$/°"],
         "cmp_rows": cmp_rows + [spec_row], "cmp_align": "|".join([":--"] + ["--:"] * 8),
         "paper_notes": paper_notes, "compare_miss": _.pgettext("list", ", ").join(missing), "has_compare": bool(r["compare"]),
         "chart": {"thetas": ", ".join(f"{t * DEG:g}°" for t in ch.thetas),

@@ -160,7 +160,7 @@ def _seed_figure(path: Path, lang: str, b):
             ax.plot([a1 * DEG], [b.output_swing * DEG], "o", color="C3", ms=4)
         ax.set_xlim(0, 360)
         ax.set_xticks(np.arange(0, 361, 30))
-        ax.set_xlabel(_("input rocker start angle α1 (°)"))
+        ax.set_xlabel(_("input rocker start angle $\\alpha_1$ (°)"))
         ax.set_ylabel(_("wheel swing (°)"))
         ax.grid(True, lw=0.4, color="0.85")
         ax.legend(fontsize=7)
@@ -441,7 +441,7 @@ def _bending(r: dict, lang: str, figures: dict) -> dict:
         "cam_motion": _cam_motion_text(bcam, lang),
         "cam_r0": (_("the base radius is designed for the allowed pressure angles")
                    if bcam.base_radius_designed else _("the base radius is given in the brief"))
-        + _(" (r0 = {r0} mm)", r0=f(bcam.base_radius * MM, 0)),
+        + _(" ($r_0$ = {r0} mm)", r0=f(bcam.base_radius * MM, 0)),
         "ratio_factor": None if bp.ratio_factor is None else f(bp.ratio_factor, 3),
         "ratio_limit": None if bp.ratio_factor is None else f(bp.ratio_factor * mean_ratio, 4),
         "ratio_lo": f(float(np.min(np.abs(b.velocity_ratio))), 4),
@@ -575,7 +575,7 @@ def verification_rows(r: dict, lang: str) -> list[list[str]]:
     add(N_("main-shaft speed / rpm"), f(trans.output_rpm, 4),
         _("{rate} (production rate)", rate=f(p.rate, 0)),
         abs(trans.output_rpm - p.rate) < 1e-9 * p.rate)
-    add(N_("pin lift / mm"), f(pin.lift * MM, 3), f"> (d1 − d2)/2 = {f(pin.required * MM, 2)}",
+    add(N_("pin lift / mm"), f(pin.lift * MM, 3), f"> $(d_1 - d_2)/2$ = {f(pin.required * MM, 2)}",
         pin.lift > pin.required)
     add(N_("simulation: large wheel swing / °"), f(abs(b.swing_simulated) * DEG, 4),
         f(b.output_swing * DEG, 4), abs(abs(b.swing_simulated) - b.output_swing) < 1e-9)

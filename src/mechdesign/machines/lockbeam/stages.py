@@ -1,19 +1,20 @@
-"""Lock-beam bender (锁梁自动成型机床扳弯机构, seed 002), composed from shared stages.
+"""Lock-beam bender (seed 002), composed from shared stages.
 
 One main (distribution) shaft turns once per part. Stages:
 
-- transmission (传动系统): motor → belt → spur gears → main shaft; exact ratio, shaft
+- transmission: motor → belt → spur gears → main shaft; exact ratio, shaft
   speeds (powers and torques only when the brief gives the motor power: the seed does not);
-- positioning cam (定位凸轮): the shared cam stage on ``params.cam`` (result ``cam``);
-- bending cam (扳弯凸轮): the shared cam design on ``params.bending_cam``;
-- bending linkage (扳弯机构): two-position synthesis of the double rocker
+- positioning cam: the shared cam stage on ``params.cam`` (result ``cam``);
+- bending cam: the shared cam design on ``params.bending_cam``;
+- bending linkage: two-position synthesis of the double rocker
   (:mod:`mechdesign.core.rocker_synthesis`), simulated with :mod:`mechdesign.core.mechanism`
   over the input swing and over the main-shaft cycle (cam → rocker → four-bar → chain →
   bending wheel), the seed's graphical lengths checked the same way;
-- feed linkage (送料机构): the shared linkage stages (prefix ``feed``) on the brief's
+- feed linkage: the shared linkage stages (prefix ``feed``) on the brief's
   Assur-group description, plus the seed-format table and the guide-bar closed forms;
-- cycle (运动循环图): the brief's diagram, its timing constraints, and its agreement with
-  what the cams and the feed linkage actually do, found by simulation along the main shaft.
+- cycle (motion cycle diagram): the brief's diagram, its timing constraints,
+  and its agreement with what the cams and the feed linkage actually do, found
+  by simulation along the main shaft.
 """
 from __future__ import annotations
 
@@ -70,7 +71,7 @@ class Shaft:
 
 @dataclass(frozen=True)
 class Transmission:
-    """Stage 传动系统设计."""
+    """Stage 'transmission design'."""
 
     stages: tuple[TrainStage, ...]
     ratio: float
@@ -279,7 +280,7 @@ def seed_check(ds: rs.RockerDesign, bp: BendingParams) -> SeedCheck:
 
 @dataclass(frozen=True)
 class BendingResult:
-    """Stage 扳弯机构设计: synthesis and its simulation."""
+    """Stage 'bending linkage design': synthesis and its simulation."""
 
     synthesis: BendingSynthesis
     design: rs.RockerDesign
@@ -424,7 +425,7 @@ def bending(p: LockbeamParams, bcam, syn: BendingSynthesis | None = None) -> Ben
 
 @dataclass(frozen=True)
 class GuideBarClosedForm:
-    """Closed forms of a guide-bar (摆动导杆) drive with the crank pin on the bar's slider:
+    """Closed forms of a guide-bar (oscillating guide bar) drive with the crank pin on the bar's slider:
     swing θ = 2 arcsin(r/d) (the bar is perpendicular to the crank at both extremes, and the
     slider's extremes are the bar's), K = (180° + θ)/(180° − θ); with the slider guide
     perpendicular to O2O3 the two extremes are mirror images, so H = 2 L sin(θ/2) = 2Lr/d."""
@@ -510,7 +511,7 @@ def feed_table(model, step: float = np.radians(10.0)) -> FeedTable:
 
 @dataclass(frozen=True)
 class CycleResult:
-    """Stage 运动循环图: the brief's diagram, its checks, and the motions along the main shaft."""
+    """Stage 'motion cycle diagram': the brief's diagram, its checks, and the motions along the main shaft."""
 
     diagram: cy.CycleDiagram
     checks: list
@@ -689,7 +690,7 @@ class TrainStageDoc:
 
 @dataclass(frozen=True)
 class TransmissionDoc:
-    """The transmission (传动系统): motor → belt → spur gears → main shaft."""
+    """The transmission: motor → belt → spur gears → main shaft."""
 
     stages: tuple[TrainStageDoc, ...] = q("", "the stages from the motor")
     ratio: float = q("1", "total ratio (product of the stage ratios)")
@@ -768,7 +769,7 @@ class BendingCycleDoc:
 
 @dataclass(frozen=True)
 class BendingDoc:
-    """The bending double rocker (扳弯机构): input rocker G0G (cam-driven) 2, coupler GB 3,
+    """The bending double rocker: input rocker G0G (cam-driven) 2, coupler GB 3,
     output rocker B0B 4 (chained to the bending wheel); G0 at the origin, B0 on +x (G, not
     A: A is the feed crank's pin)."""
 
@@ -830,7 +831,7 @@ class MorphFunctionDoc:
 
 @dataclass(frozen=True)
 class MorphologyDoc:
-    """The morphological matrix (形态学矩阵)."""
+    """The morphological matrix."""
 
     functions: tuple[MorphFunctionDoc, ...] = q("", "the functions and their options")
     counts: tuple[int, ...] = q("1", "options per function k_i")
@@ -839,7 +840,7 @@ class MorphologyDoc:
 
 @dataclass(frozen=True)
 class LockbeamResults:
-    """Lock-beam bender (锁梁自动成型机床扳弯机构). One main shaft turns once per part: the
+    """Lock-beam bender. One main shaft turns once per part: the
     transmission drives it; on it the positioning cam (pin), the bending cam (double rocker
     → chain → bending wheel) and the feed linkage's crank (`feed`: the linkage engine's
     result, crank angles from its position 1). Shaft angles φ of the cycle diagram from its

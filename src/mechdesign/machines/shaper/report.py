@@ -205,7 +205,7 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
     }
     sense = N_("clockwise") if p.crank_omega < 0 else N_("counter-clockwise")
     sense_zh, sense_en = zh_words(sense), sense
-    shaft = N_("the pinion shaft O1 (z1)") if fl.shaft == "pinion" else N_("the crank shaft O2")
+    shaft = N_("the pinion shaft O1 ($z_1$)") if fl.shaft == "pinion" else N_("the crank shaft O2")
     return {
         **gb_report.optional_sections(r, lang, figures),
         **gb_report.task_words(p, syn),
