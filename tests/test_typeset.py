@@ -252,14 +252,18 @@ def continued_missing(pdf) -> list[tuple[int, int]]:
 
 def colon_at_page_foot(pdf) -> list[tuple[int, str]]:
     """(page, row) of every page whose last text row ends in "：" or ":" (a lead-in
-    sentence parted from the list or table it introduces)."""
+    sentence parted from the list or table it introduces). A program listing's own rows
+    (``def f():``) are not lead-ins, and a lead-in followed on its page by the listing's
+    first rows is not at the foot."""
     import pymupdf
 
     bad = []
     with pymupdf.open(pdf) as doc:
         for number, page in enumerate(doc, 1):
-            rows = page_rows(page, code=False)
-            if rows and not _is_sheet(page) and rows[-1][2].endswith(("：", ":")):
+            rows = page_rows(page)
+            prose = page_rows(page, code=False)
+            if (rows and prose and not _is_sheet(page) and rows[-1][0] == prose[-1][0]
+                    and rows[-1][2].endswith(("：", ":"))):
                 bad.append((number, rows[-1][2][-40:]))
     return bad
 
