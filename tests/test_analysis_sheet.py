@@ -231,7 +231,7 @@ def _text_boxes(sheet):
 
 def test_sheet_has_no_overlaps_and_the_dxf_the_same_entities(run, tmp_path):
     ezdxf = pytest.importorskip("ezdxf")
-    from mechdesign.render.sheet_dxf import write_dxf
+    from mechdesign.render.sheet_dxf import plain_text, write_dxf
 
     name, (model, k, raw, forces, fly), found = run
     s, scales = analysis_sheet(found, INFO, "zh")
@@ -270,9 +270,9 @@ def test_sheet_has_no_overlaps_and_the_dxf_the_same_entities(run, tmp_path):
     assert dxf["CIRCLE"] == kinds[Circle.__name__]
     assert dxf["ARC"] == kinds[Arc.__name__]
     assert dxf["HATCH"] == kinds[Fill.__name__]
-    assert dxf["TEXT"] == kinds[Text.__name__]
+    assert dxf["TEXT"] + dxf["MTEXT"] == kinds[Text.__name__]     # MTEXT: with subscripts
     assert dxf["DIMENSION"] == kinds[Dimension.__name__]
-    texts = {e.dxf.text for e in msp.query("TEXT")}
+    texts = {plain_text(e) for e in msp.query("TEXT MTEXT")}
     assert "张三" in texts and INFO.drawing in texts
     # the velocity polygon at the first position is drawn at the μv written above it
     mu = scales[f"velocity_{chosen[0]}"]

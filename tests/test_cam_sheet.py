@@ -31,7 +31,7 @@ from scipy.spatial import cKDTree  # noqa: E402
 from mechdesign.core.cam import OscillatingFollower  # noqa: E402
 from mechdesign.render.cam_sheet import cam_sheet  # noqa: E402
 from mechdesign.render.sheet import Text, TitleInfo, text_width, title_block_box  # noqa: E402
-from mechdesign.render.sheet_dxf import write_dxf  # noqa: E402
+from mechdesign.render.sheet_dxf import plain_text, write_dxf  # noqa: E402
 from mechdesign.render.sheet_typst import write_sheet  # noqa: E402
 
 DESIGNS = ["cam_7_3", "lockbeam_cam", "shaper"]
@@ -65,11 +65,13 @@ def drawn(request, tmp_path_factory, example_results):
 
 
 def _texts(msp):
-    """(text, alignment, point) of every TEXT."""
+    """(text, alignment, point) of every TEXT (and MTEXT: alignment None)."""
     out = []
     for t in msp.query("TEXT"):
         align, p1, _ = t.get_placement()
         out.append((t.dxf.text, align, complex(p1.x, p1.y)))
+    for t in msp.query("MTEXT"):              # a text with subscripts, read as plain letters
+        out.append((plain_text(t), None, complex(t.dxf.insert.x, t.dxf.insert.y)))
     return out
 
 
@@ -316,7 +318,7 @@ def test_dimensions_measure_the_design(drawn):
     mu_d = float(re.search(r"μδ = ([\d.]+)", joined).group(1))
     seen, angles = {}, []
     for dim in msp.query("DIMENSION"):
-        text = dim.dxf.text
+        text = plain_text(dim)                # r0 with its subscript, as plain letters
         if m := re.fullmatch(r"(\w+)=([\d.]+)", text):
             key, value = m.group(1), float(m.group(2))
             assert abs(dim.get_measurement() * n - value) < 1e-6, text

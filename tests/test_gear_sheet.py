@@ -25,7 +25,7 @@ from mechdesign.core.gears import spur_pair
 from mechdesign.stages.gear import gear_drawing
 from mechdesign.render.gear_sheet import gear_sheet
 from mechdesign.render.sheet import SIZES, TitleInfo, title_block_box
-from mechdesign.render.sheet_dxf import write_dxf
+from mechdesign.render.sheet_dxf import plain_text, write_dxf
 from mechdesign.render.sheet_typst import write_sheet
 
 pytestmark = pytest.mark.e2e     # renders drawing sheets (see tests/conftest.py)
@@ -69,7 +69,10 @@ def xy(p) -> complex:
 
 
 def text_point(t) -> complex:
-    """Where a TEXT entity is anchored (its alignment point unless left/baseline)."""
+    """Where a TEXT entity is anchored (its alignment point unless left/baseline); an MTEXT
+    (a text with subscripts) at its insertion point."""
+    if t.dxftype() == "MTEXT":
+        return xy(t.dxf.insert)
     if t.dxf.halign == 0 and t.dxf.valign == 0:
         return xy(t.dxf.insert)
     return xy(t.dxf.align_point)
@@ -118,8 +121,8 @@ def drawn(request, tmp_path_factory):
         assert hits, f"no pitch circle of gear {i} with r = m z{i} / 2 × scale"
         centre[i] = hits[0]
     texts = {}
-    for t in msp.query("TEXT"):
-        texts.setdefault(t.dxf.text, []).append(text_point(t))
+    for t in msp.query("TEXT MTEXT"):            # subscripts as plain letters: "N1", "rb1"
+        texts.setdefault(plain_text(t), []).append(text_point(t))
     return dict(name=name, lang=lang, size=size, pair=pair, sheet=sheet, doc=doc, msp=msp,
                 ref=ref, k=k, o1=centre[1], o2=centre[2], texts=texts)
 
@@ -223,7 +226,7 @@ def test_dimensions_write_the_true_radii(drawn):
     ref, k = drawn["ref"], drawn["k"]
     seen = set()
     for dim in drawn["msp"].query("DIMENSION"):
-        hit = re.fullmatch(r"(r|rb|ra|rf)([12]) = ([\d.]+)", dim.dxf.text)
+        hit = re.fullmatch(r"(r|rb|ra|rf)([12]) = ([\d.]+)", plain_text(dim))
         if not hit:
             continue
         key = hit.group(1) + hit.group(2)
@@ -234,7 +237,7 @@ def test_dimensions_write_the_true_radii(drawn):
     assert {"r1", "rb1", "ra1", "rf1"} <= seen
     assert len(seen & {"r2", "rb2", "ra2", "rf2"}) >= 3
     a_text = f"a′ = {ref['a_w']:.2f}".rstrip("0").rstrip(".")
-    assert any(t.dxf.text == a_text for t in drawn["msp"].query("TEXT DIMENSION"))
+    assert any(plain_text(t) == a_text for t in drawn["msp"].query("TEXT DIMENSION"))
     assert any(t.startswith("α′ = ") for t in drawn["texts"])
 
 

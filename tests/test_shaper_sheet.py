@@ -15,8 +15,8 @@ import pytest
 ezdxf = pytest.importorskip("ezdxf")
 
 from mechdesign.render.analysis_sheet import analysis_sheet  # noqa: E402
-from mechdesign.render.sheet import SIZES, Dimension, Text, TitleInfo, text_width  # noqa: E402
-from mechdesign.render.sheet_dxf import write_dxf  # noqa: E402
+from mechdesign.render.sheet import SIZES, Dimension, Text, TitleInfo, plain, text_width  # noqa: E402
+from mechdesign.render.sheet_dxf import plain_text, write_dxf  # noqa: E402
 from mechdesign.render.sheets import linkage_results  # noqa: E402
 from mechdesign.stages.polygons import default_positions  # noqa: E402
 
@@ -166,7 +166,7 @@ def test_dxf_reopens_with_layers_vectors_and_dimensions(sheet, shaper_results, t
     for layer in ("OUTLINE", "CENTER", "CONSTRUCTION", "DIMENSIONS", "TEXT", "VECTORS",
                   "CURVES", "FRAME"):
         assert count.get(layer, 0) > 0, layer
-    texts = [e.dxf.text for e in msp.query("TEXT")]
+    texts = [plain_text(e) for e in msp.query("TEXT MTEXT")]      # MTEXT: with subscripts
     assert "张三" in texts and "李老师" in texts and "1:4" in texts
     lines = [(complex(e.dxf.start.x, e.dxf.start.y), complex(e.dxf.end.x, e.dxf.end.y))
              for e in msp.query("LINE[layer=='VECTORS']")]
@@ -284,7 +284,7 @@ def test_energy_chart_uses_the_work_curves(sheet, shaper_results):
     dimension states ΔW_max of the energy cycle, found here from M_b by the trapezoid rule
     (independent of the flywheel stage)."""
     s, _ = sheet
-    texts = [t.text for t in s.entities if isinstance(t, Text)]
+    texts = [plain(t.text) for t in s.entities if isinstance(t, Text)]     # W_d, W_r
     assert {"Wd", "Wr", "ΔE"} <= set(texts)
     k, f = shaper_results["linkage"], shaper_results["linkage_forces"]
     n = k.grid_size
@@ -293,5 +293,5 @@ def test_energy_chart_uses_the_work_curves(sheet, shaper_results):
     w_r = np.concatenate([[0.0], np.cumsum(0.5 * (mb[1:] + mb[:-1]) * np.diff(phi))])
     e = w_r[-1] / (2 * np.pi) * phi - w_r
     swing = e.max() - e.min()
-    dims = [d for d in s.entities if isinstance(d, Dimension) and d.text.startswith("ΔWmax")]
+    dims = [d for d in s.entities if isinstance(d, Dimension) and plain(d.text).startswith("ΔWmax")]
     assert len(dims) == 1 and dims[0].measurement == pytest.approx(swing, rel=1e-3)

@@ -20,7 +20,8 @@ from ..core.polygons import Polygon
 from .labels import LabelTable, pgettext
 from .sheet import (Dimension, LabelPlacer, Series, Sheet, TitleInfo, chart, fit_height,
                     format_number, frame, ground, heading, length_scale, nice_scale, pin,
-                    scale_text, slider_block, table, text_width, title_block_box)
+                    scale_text, slider_block, sub, table, text_width, title_block_box,
+                    with_subscripts)
 
 DEG = 180.0 / np.pi
 TWO_PI = 2.0 * np.pi
@@ -56,8 +57,10 @@ LABELS = LabelTable({
     "guide_plain": pgettext("analysis sheet", "guide"),
 })
 
-UNITS = {"velocity": ("μv", "(m/s)/mm", "m/s"), "acceleration": ("μa", "(m/s²)/mm", "m/s²"),
-         "force": ("μF", "N/mm", "N")}
+# symbols written with a subscript wherever they stand in this sheet's texts
+SYMBOLS = ("M_b", "M_d", "J_F", "ΔW_max", "μ_v", "μ_a", "μ_F")
+UNITS = {"velocity": (sub("μ", "v"), "(m/s)/mm", "m/s"),
+         "acceleration": (sub("μ", "a"), "(m/s²)/mm", "m/s²"), "force": (sub("μ", "F"), "N/mm", "N")}
 
 
 # ------------------------------------------------------------------ the sheet
@@ -68,7 +71,8 @@ def analysis_sheet(found, info: TitleInfo, lang: str, labels: dict | None = None
     run) and the scales used ({"length": n (1:n), "velocity_4": μv, …}). ``labels``
     overrides texts of :data:`LABELS` (e.g. the output's name)."""
     model, k, forces, flywheel = found.model, found.motion, found.forces, found.flywheel
-    lab = {**LABELS[lang], **(labels or {})}
+    lab = {key: with_subscripts(v, *SYMBOLS) if isinstance(v, str) else v
+           for key, v in {**LABELS[lang], **(labels or {})}.items()}
     chosen = [str(c) for c in found.polygons.positions]
     polys = {c: found.polygons.at(c) for c in chosen}
     s = Sheet("A1")
@@ -83,7 +87,7 @@ def analysis_sheet(found, info: TitleInfo, lang: str, labels: dict | None = None
     _polygon_grid(s, model, polys, chosen, lab, (310.0, y0 + 8, 602.0, y1 - 4), scales)
     _curves(s, model, k, forces, flywheel, lab, (622.0, 72.0, x1 - 8, y1 - 6))
     tb_x0, _, _, tb_y1 = title_block_box(s)
-    notes = [lab["scales"] + f":  μL = {format_number(n_len / 1000)} m/mm ({scale_text(n_len)}); "
+    notes = [lab["scales"] + f":  {sub('μ', 'L')} = {format_number(n_len / 1000)} m/mm ({scale_text(n_len)}); "
              + lab["each"]]
     if flywheel is not None:
         notes.append(lab["dw"].format(v=format_number(flywheel.max_energy_swing, 5)) + ",  "
@@ -131,10 +135,27 @@ def _polygon_grid(s: Sheet, model, polys: dict, chosen: list[str], lab: dict, bo
         top -= h + gap
 
 
+def force_symbol(name: str) -> str:
+    """A force polygon's vector or moment name with its subscript, as the report writes it
+    (render/graphical_report.sym): "R12" → F with R12, "FI4" → F with I4, "G4", "Pb", "Mb",
+    "MI3", "Fr" → G₄, P_b, M_b, M_I3, F_r; other names (with ^ or _) as written. Not used yet:
+    the longer labels clash in the press's force polygons (the placer needs another pass)."""
+    prime = "'" if name.endswith("'") else ""
+    s = name[:-1] if prime else name
+    if "^" in s or "_" in s or len(s) < 2 or not s.startswith(("R", "FI", "Fr", "G", "Pb", "Mb", "M")):
+        return name
+    if s.startswith("R"):
+        return sub("F", s) + prime
+    if s.startswith(("FI", "Fr")):
+        return sub("F", s[1:]) + prime
+    return sub(s[0], s[1:]) + prime
+
+
 def _items(pg: Polygon) -> list[str]:
     unit = UNITS[pg.kind][2]
-    out = [f"{v.name} = {format_number(abs(v.value), 4)} {unit}" for v in pg.vectors]
-    out += [f"{name} = {format_number(value, 4)} N·m" for name, value in pg.moments.items()]
+    name = str          # force names as written (force_symbol: not yet, see its docstring)
+    out = [f"{name(v.name)} = {format_number(abs(v.value), 4)} {unit}" for v in pg.vectors]
+    out += [f"{name(key)} = {format_number(value, 4)} N·m" for key, value in pg.moments.items()]
     return out
 
 
@@ -335,7 +356,7 @@ def _mechanism(s: Sheet, model, k, lab: dict, box, chosen: list[str], lang: str)
     sc = 1.0 / n_len
     centre = (lo + hi) / 2
     v = s.view((bx0 + bx1) / 2 + 1j * ((by0 + by1 - top_room + 16.0) / 2 - 6) - sc * centre, sc)
-    title = f"{lab['mechanism']}  {scale_text(n_len)}  (μL = {format_number(n_len / 1000)} m/mm)"
+    title = f"{lab['mechanism']}  {scale_text(n_len)}  ({sub('μ', 'L')} = {format_number(n_len / 1000)} m/mm)"
     heading(s, (bx0 + bx1) / 2 + 1j * (by1 - 6), title, min(5.0, fit_height(title, bx1 - bx0, 5.0)))
     placer = LabelPlacer(s)
     if legend:
@@ -499,7 +520,7 @@ def _table(s: Sheet, model, k, forces, lab: dict, box) -> None:
     fs, us, uv, ua = _output_units(k)
     links = _moving_links(model, k)
     head = [lab["pos"], "φ (°)", f"s ({us})", f"v ({uv})", f"a ({ua})"] + \
-        [f"ω{link} (rad/s)" for link in links] + (["Mb (N·m)"] if forces is not None else [])
+        [sub("ω", str(link)) + " (rad/s)" for link in links] + ([sub("M", "b") + " (N·m)"] if forces is not None else [])
     columns = [k.v, k.a] + [k.link_omega[link] for link in links] + \
         ([forces.balancing_torque] if forces is not None else [])
     rows = []
@@ -567,8 +588,8 @@ def _curves(s: Sheet, model, k, forces, fl, lab: dict, box) -> None:
               hlines=[(float(e.min()), ""), (float(e.max()), "")])
     j_r = int(np.argmax(w_r))
     j_d = int(0.85 * len(ph))
-    s.text(m.p(ph[j_r], w_r[j_r]) + 2.0j, "Wr", 3.0, "TEXT", "center", "bottom")
-    s.text(m.p(ph[j_d], w_d[j_d]) + (1.0 - 2.0j), "Wd", 3.0, "TEXT", "left", "top")
+    s.text(m.p(ph[j_r], w_r[j_r]) + 2.0j, sub("W", "r"), 3.0, "TEXT", "center", "bottom")
+    s.text(m.p(ph[j_d], w_d[j_d]) + (1.0 - 2.0j), sub("W", "d"), 3.0, "TEXT", "left", "top")
     s.text(m.p(ph[-1], e[0]) + (1.5 + 0j), "ΔE", 3.0, "TEXT", "left", "middle")
     x_at = 0.5 * (fl.phase_at_min + fl.phase_at_max) * DEG
     p_lo, p_hi = m.p(x_at, float(e.min())), m.p(x_at, float(e.max()))

@@ -12,7 +12,7 @@ method of 孙桓《机械原理》 (chapter on cam mechanisms) draws them:
   the offset circle (offset translating follower) or the circle of the pivot's inverted
   positions (oscillating follower), the follower's inverted positions at the division
   points numbered 0′, 1′, 2′, … (measured against the cam's rotation), the roller there,
-  the pitch curve (点画线), the actual profile (粗实线), the follower in its start position,
+  the pitch curve (细点画线), the actual profile (粗实线), the follower in its start position,
   the cam centre, ω and the key dimensions;
 * the design data, the programme and the displacements at the division points as tables;
 * the border and the title block.
@@ -34,6 +34,7 @@ from ..stages.cam import Division
 from .cam_report import _IMPACT, CONTACT, _segment_name, _Units
 from .labels import LabelTable, pgettext
 from .sheet import (
+    sub,
     THIN,
     LabelPlacer,
     segment_hits_box,
@@ -364,7 +365,7 @@ def _profile(sheet: Sheet, c, g: _ProfileGeometry, divs, n: float, box, lab):
     for f in np.linspace(0.3, 1.0, 8):
         taken += _crossings(rays, f * g.r0)
     rc, _ = _largest_gap(taken)
-    view.dimension(0, g.r0 * np.exp(1j * rc), 0.0, text=f"r0={format_number(g.r0)}", kind="radius",
+    view.dimension(0, g.r0 * np.exp(1j * rc), 0.0, text=f"{sub('r', '0')}={format_number(g.r0)}", kind="radius",
                    height=3.5)
     if g.kind == "roller":
         _roller_dimension(sheet, view, g, n, gap_c, labels)
@@ -515,7 +516,7 @@ def _roller_dimension(sheet, view, g: _ProfileGeometry, n, gap_c, labels: LabelP
         if best is None or score > best[0]:
             best = (score, c_)
     u = np.exp(1j * best[1])
-    text = f"rr={format_number(g.rr)}"
+    text = f"{sub('r', 'r')}={format_number(g.rr)}"
     h = 3.5
     tip = P(B0 + g.rr * u)
     tail = tip + 7.0 * u
@@ -626,9 +627,9 @@ def _diagram(sheet, c, divs, mu_d, mu_s, xo, ytop, lab, lang) -> float:
         name = _segment_name(c, i, lang)
         sheet.text(complex((pa + pb) / 2, yd - 8.0), name, fit_height(name, pb - pa - 1.0, 3.5),
                    "TEXT", "center", "top")
-    mu_sym = "μφ" if u.osc else "μs"
+    mu_sym = sub("μ", "φ") if u.osc else sub("μ", "s")
     scale_txt = (f"{mu_sym} = {format_number(mu_s)} {'(°)/mm' if u.osc else 'mm/mm'}    "
-                 f"μδ = {format_number(mu_d)} (°)/mm")
+                 f"{sub('μ', 'δ')} = {format_number(mu_d)} (°)/mm")
     y_scale = yd - 8.0 - 3.5 - 3.5
     sheet.text(complex(xo, y_scale), scale_txt, 3.5, "TEXT", "left", "top")
     return y_scale - 3.5
@@ -742,17 +743,17 @@ def _data_rows(c, g: _ProfileGeometry, lab, lang):
     rows = [[lab["follower"], "—", name, ""], [lab["rotation"], "ω", rot, ""]]
     prog = p.programme
     if g.osc:
-        rows.append([lab["swing"], "φmax", f"{format_number(prog.stroke * DEG)}°", ""])
+        rows.append([lab["swing"], sub("φ", "max"), f"{format_number(prog.stroke * DEG)}°", ""])
     else:
         rows.append([lab["stroke"], "h", f"{format_number(prog.stroke * MM)} mm", ""])
-    rows.append([lab["r0"], "r0", f"{format_number(g.r0)} mm", ""])
+    rows.append([lab["r0"], sub("r", "0"), f"{format_number(g.r0)} mm", ""])
     if fol.kind == "roller":
-        rows.append([lab["rr"], "rr", f"{format_number(g.rr)} mm", ""])
+        rows.append([lab["rr"], sub("r", "r"), f"{format_number(g.rr)} mm", ""])
     if g.osc:
         rows.append([lab["a"], "a", f"{format_number(g.a)} mm", ""])
         if fol.kind != "flat":
             rows.append([lab["L"], "L", f"{format_number(g.L)} mm", ""])
-        rows.append([lab["phi0"], "φ0", f"{c.grid.initial_angle * DEG:.2f}°", ""])
+        rows.append([lab["phi0"], sub("φ", "0"), f"{c.grid.initial_angle * DEG:.2f}°", ""])
     elif fol.kind != "flat":
         value = f"{format_number(abs(g.e))} mm"
         if abs(g.e) > 1e-9:
@@ -762,8 +763,8 @@ def _data_rows(c, g: _ProfileGeometry, lab, lang):
             value += _(" ({side}, {kind})", side=side, kind=kind)
         rows.append([lab["offset"], "e", value, ""])
     if fol.kind != "flat":
-        for kind, key, sym, lim_sym in ((RISE, "alpha_rise", "αmax", "[α]"),
-                                        (RETURN, "alpha_return", "α′max", "[α′]")):
+        for kind, key, sym, lim_sym in ((RISE, "alpha_rise", sub("α", "max"), "[α]"),
+                                        (RETURN, "alpha_return", sub("α′", "max"), "[α′]")):
             segs = [s for s in c.segments if s.kind == kind]
             if not segs:
                 continue
@@ -774,19 +775,19 @@ def _data_rows(c, g: _ProfileGeometry, lab, lang):
                          f"{lab['ok'] if ok else lab['fail']}"])
     if fol.kind == "roller":
         rp, ra = c.rho_pitch_min_convex * MM, c.rho_actual_min_convex * MM
-        rows.append([lab["rho"], "ρmin", f"{rp:.2f} mm",
-                     f"> rr = {format_number(g.rr)} mm  {lab['ok'] if rp > g.rr else lab['fail']}"])
+        rows.append([lab["rho"], sub("ρ", "min"), f"{rp:.2f} mm",
+                     f"> {sub('r', 'r')} = {format_number(g.rr)} mm  {lab['ok'] if rp > g.rr else lab['fail']}"])
         lim = p.min_actual_curvature * MM
-        rows.append([lab["rho_a"], "ρa,min", f"{ra:.2f} mm",
+        rows.append([lab["rho_a"], sub("ρ", "a,min"), f"{ra:.2f} mm",
                      f"≥ {format_number(lim)} mm  {lab['ok'] if ra >= lim else lab['fail']}"])
     elif fol.kind == "flat":
         rho = (c.rho_actual_min if c.rho_actual_min is not None
                else float(np.min(c.grid.rho_actual))) * MM
-        rows.append([lab["rho_flat"], "ρmin", f"{rho:.2f} mm",
+        rows.append([lab["rho_flat"], sub("ρ", "min"), f"{rho:.2f} mm",
                      f"> 0  {lab['ok'] if rho > 0 else lab['fail']}"])
         if c.face_extent is not None and not g.osc:
             lo, hi = c.face_extent
             rows.append([lab["face"], "b", f"{2 * max(abs(lo), abs(hi)) * MM + 7:.1f} mm", ""])
     else:
-        rows.append([lab["rho"], "ρmin", f"{c.rho_pitch_min_convex * MM:.2f} mm", ""])
+        rows.append([lab["rho"], sub("ρ", "min"), f"{c.rho_pitch_min_convex * MM:.2f} mm", ""])
     return rows

@@ -12,7 +12,7 @@ import numpy as np
 from ..i18n import N_
 from .labels import LabelTable, pgettext
 from .sheet import (LabelPlacer, Sheet, TitleInfo, fit_height, format_number, frame, heading,
-                    table, text_width, title_block_box)
+                    sub, table, text_width, title_block_box, with_subscripts)
 
 DEG = 180.0 / np.pi
 MU_PHI = (1.0, 1.25, 1.5, 2.0)          # angle scales [°/mm], preferred first
@@ -88,7 +88,7 @@ def cycle_sheet(diagram, info: TitleInfo, lang: str) -> Sheet:
     name_w = max(text_width(nm, 3.5) for nm in names) + 8.0
     left = x0 + 8.0 + name_w
     mu = next((m for m in MU_PHI if 360.0 / m <= x1 - 14.0 - left), MU_PHI[-1])
-    frame(s, replace(info, scale=f"μφ = {format_number(mu)} °/mm"))
+    frame(s, replace(info, scale=f"{sub('μ', 'φ')} = {format_number(mu)} °/mm"))
     tb = title_block_box(s)
     origin = float(diagram.origin) * DEG
     width = 360.0 / mu
@@ -145,6 +145,6 @@ def cycle_sheet(diagram, info: TitleInfo, lang: str) -> Sheet:
           head=[lab["actuator"], lab["phase"], lab["start"], lab["end"], lab["span"]],
           title=lab["table"], title_height=3.5, height=min(3.0, row_h * 0.55), row_h=row_h)
     period = 2 * np.pi / float(diagram.shaft_speed)
-    s.text(complex(tb[0], tb[3] + 8.0), lab["scale"].format(m=format_number(mu)) + "   "
+    s.text(complex(tb[0], tb[3] + 8.0), with_subscripts(lab["scale"], "μ_φ").format(m=format_number(mu)) + "   "
            + lab["period"].format(t=format_number(period, 4)), 3.5, "TEXT")
     return s

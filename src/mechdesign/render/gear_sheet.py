@@ -25,8 +25,9 @@ from ..core.gears import SpurPair
 from ..i18n import N_
 from ..stages.gear import GearDrawing
 from .labels import LabelTable, pgettext
-from .sheet import (LabelPlacer, Polyline, Sheet, TitleInfo, clip_segment, frame,
-                    length_scale, sample_polyline, scale_text, table, text_width, title_block_box)
+from .sheet import (SUB_ON, SUB_OFF, LabelPlacer, Polyline, Sheet, TitleInfo, clip_segment, frame,
+                    length_scale, plain, sample_polyline, scale_text, sub, table, text_width,
+                    title_block_box, with_subscripts)
 
 MM = 1e3
 DEG = 180.0 / np.pi
@@ -66,9 +67,14 @@ LABELS = LabelTable({
     "n_eps": N_("ε = B1B2 / pb = {g}; ε = [z1(tan αa1 − tan α′) + z2(tan αa2 − tan α′)] / 2π = {f}."),
     "n_undercut": N_("Gear {i} (z = {z}, x = {x} < xₘᵢₙ = {xmin}) is undercut."),
     "n_interf": N_("B1B2 runs beyond N1N2: interference."),
-    "w1": "ω1",
-    "w2": "ω2",
 })
+
+
+def _points(text: str) -> str:
+    """``text`` with the point pairs N1N2, B1B2 written with subscripts (N₁N₂, B₁B₂)."""
+    for a in ("N", "B"):
+        text = text.replace(f"{a}1{a}2", sub(a, "1") + sub(a, "2"))
+    return text
 
 
 # -- clipping to the drawing area (paper mm) ---------------------------------------------
@@ -325,10 +331,10 @@ def gear_sheet(drawing: GearDrawing, info: TitleInfo, lang: str, size: str | Non
         sheet.fill([tip, base + 0.75j * tang, base - 0.75j * tang], "DIMENSIONS")
 
     # driving directions
-    _turn(sheet, box, o1, 0.5 * k * g1.df / 2, np.radians(118), np.radians(168), lab["w1"])
+    _turn(sheet, box, o1, 0.5 * k * g1.df / 2, np.radians(118), np.radians(168), sub("ω", "1"))
     w2r = max((o2.imag - box[3] + 24.0) / np.sin(np.radians(70)), 0.45 * k * g2.df / 2)
     if w2r < 0.8 * k * g2.df / 2:
-        _turn(sheet, box, o2, w2r, np.radians(-70), np.radians(-84), lab["w2"])
+        _turn(sheet, box, o2, w2r, np.radians(-70), np.radians(-84), sub("ω", "2"))
 
     _dimensions(sheet, drawing, plan, o2_in)
 
@@ -338,18 +344,18 @@ def gear_sheet(drawing: GearDrawing, info: TitleInfo, lang: str, size: str | Non
     labels.absorb([Polyline(tuple(sample_polyline([p - 3 + 3j, p + 3 + 3j], 0.5)), "TEXT")])
     for name, q, prefer in (("P", p, 1 + 1.2j), ("N1", n1, -u + 1j * u), ("N2", n2, 1j * u),
                             ("B2", b2, -1j * u), ("B1", b1, 1j * u - 0.3 * u), ("O1", o1, 1 + 1j)):
-        labels.place_best(q, name, 5.0, prefer)
+        labels.place_best(q, name if len(name) == 1 else sub(name[0], name[1:]), 5.0, prefer)
     if o2_in:
-        labels.place_best(o2, "O2", 5.0, 1 + 1j)
+        labels.place_best(o2, sub("O", "2"), 5.0, 1 + 1j)
     else:                   # the line of centres leaves the area towards O2
         sheet.arrow(top - 14.0j, top, "CONSTRUCTION", 4.0, 0.35)
-        note = lab["o2"].format(a=_num(mm.a_work))
+        note = with_subscripts(lab["o2"], "O_2").format(a=_num(mm.a_work))
         sheet.text(top + 2.5 - 5.0j, note, 3.5, "TEXT", "left", "top")
         labels.block_box((top.real, top.imag - 10.0, top.real + text_width(note, 3.5) + 4, top.imag))
     labels.leader(p + r_ang * np.exp(1j * (a0 + a1) / 2), f"α′ = {_num(mm.alpha_work * DEG, 3)}°",
                   3.5, np.exp(1j * (a0 + a1) / 2), layer="DIMENSIONS")
-    labels.leader(b2 + 0.35 * (p - b2), lab["actual"], 3.5, -1j * u + 0.7)
-    labels.leader(n2 + 0.3 * (b1 - n2), lab["action"], 3.5, -1j * u - 0.5)
+    labels.leader(b2 + 0.35 * (p - b2), _points(lab["actual"]), 3.5, -1j * u + 0.7)
+    labels.leader(n2 + 0.3 * (b1 - n2), _points(lab["action"]), 3.5, -1j * u - 0.5)
     _table(sheet, mm, lay, lab, drawing.interference)
     return sheet
 
@@ -394,7 +400,7 @@ def _dimensions(sheet: Sheet, drawing: GearDrawing, plan: _Plan, o2_in: bool) ->
         centre, or (``length`` mm, centre off the area) from a point on the way to it. CAD
         writes a radius's text outside the circle: that end must have room for it too."""
         text = f"{name} = {_num(r)}"
-        outside = 1.05 * 3.5 * len(text) + 2.0           # as ezdxf renders it
+        outside = 1.05 * 3.5 * len(plain(text)) + 2.0           # as ezdxf renders it
         for ang in angles:
             d = np.exp(1j * np.radians(ang))
             end = centre + k * r * d
@@ -404,11 +410,13 @@ def _dimensions(sheet: Sheet, drawing: GearDrawing, plan: _Plan, o2_in: bool) ->
                 sheet.dimension(start, end, 0.0, r, text, "radius")
                 return
 
-    r1 = [("rf1", g1.df / 2), ("rb1", g1.db / 2), ("r1", g1.d / 2), ("ra1", g1.da / 2)]
-    r2 = [("rf2", g2.df / 2), ("rb2", g2.db / 2), ("r2", g2.d / 2), ("ra2", g2.da / 2)]
+    r1 = [(sub("r", "f1"), g1.df / 2), (sub("r", "b1"), g1.db / 2), (sub("r", "1"), g1.d / 2),
+          (sub("r", "a1"), g1.da / 2)]
+    r2 = [(sub("r", "f2"), g2.df / 2), (sub("r", "b2"), g2.db / 2), (sub("r", "2"), g2.d / 2),
+          (sub("r", "a2"), g2.da / 2)]
     if shifted:
-        r1.insert(3, ("r1′", lay.r1w))
-        r2.insert(3, ("r2′", lay.r2w))
+        r1.insert(3, (sub("r", "1") + "′", lay.r1w))
+        r2.insert(3, (sub("r", "2") + "′", lay.r2w))
     # the pinion: a fan to the lower right of O1, the largest radius the most level
     # (upper right when the pinion's lower half is cut off)
     for i, (name, r) in enumerate(r1[::-1]):
@@ -438,7 +446,7 @@ def _table(sheet: Sheet, mm: SpurPair, lay, lab: dict, interference: bool) -> No
     rows = [
         (lab["m"], "m", _num(mm.m, 3), None, "mm"),
         (lab["alpha"], "α", deg(mm.alpha), None, "°"),
-        (lab["ha"], "ha*", _num(mm.ha_star, 3), None, "—"),
+        (lab["ha"], sub("h", "a") + "*", _num(mm.ha_star, 3), None, "—"),
         (lab["c"], "c*", _num(mm.c_star, 3), None, "—"),
         (lab["z"], "z", str(g1.z), str(g2.z), "—"),
         (lab["x"], "x", _num(g1.x, 3), _num(g2.x, 3), "—"),
@@ -447,14 +455,14 @@ def _table(sheet: Sheet, mm: SpurPair, lay, lab: dict, interference: bool) -> No
     if abs(lay.r1w - g1.d / 2) > 1e-9 * mm.m:
         rows.append((lab["dw"], "d′", _num(2 * lay.r1w, 3), _num(2 * lay.r2w, 3), "mm"))
     rows += [
-        (lab["da"], "da", _num(g1.da, 3), _num(g2.da, 3), "mm"),
-        (lab["df"], "df", _num(g1.df, 3), _num(g2.df, 3), "mm"),
-        (lab["db"], "db", _num(g1.db, 3), _num(g2.db, 3), "mm"),
+        (lab["da"], sub("d", "a"), _num(g1.da, 3), _num(g2.da, 3), "mm"),
+        (lab["df"], sub("d", "f"), _num(g1.df, 3), _num(g2.df, 3), "mm"),
+        (lab["db"], sub("d", "b"), _num(g1.db, 3), _num(g2.db, 3), "mm"),
         (lab["aw"], "a′", _num(mm.a_work, 3), None, "mm"),
         (lab["alw"], "α′", deg(mm.alpha_work), None, "°"),
-        (lab["pb"], "pb", _num(mm.pb, 3), None, "mm"),
-        (lab["b1b2"], "B1B2", _num(lay.action_length, 3), None, "mm"),
-        (lab["eps_g"], "B1B2/pb", _num(lay.contact_ratio, 4), None, "—"),
+        (lab["pb"], sub("p", "b"), _num(mm.pb, 3), None, "mm"),
+        (lab["b1b2"], sub("B", "1") + sub("B", "2"), _num(lay.action_length, 3), None, "mm"),
+        (lab["eps_g"], sub("B", "1") + sub("B", "2") + "/" + sub("p", "b"), _num(lay.contact_ratio, 4), None, "—"),
         (lab["eps_f"], "ε", _num(eps_f, 4), None, "—"),
     ]
 
@@ -463,12 +471,13 @@ def _table(sheet: Sheet, mm: SpurPair, lay, lab: dict, interference: bool) -> No
                    title=lab["table"], margin=1.0, outer=None, inner=0.25)
 
     notes = [lab["n_drive"], lab["n_teeth"],
-             lab["n_eps"].format(g=_num(lay.contact_ratio, 4), f=_num(eps_f, 4))]
+             _points(with_subscripts(lab["n_eps"], "p_b", "z_1", "z_2", "α_a1", "α_a2")
+                     .format(g=_num(lay.contact_ratio, 4), f=_num(eps_f, 4)))]
     for i, g, xmin in ((1, g1, mm.x_min1), (2, g2, mm.x_min2)):
         if g.x < xmin - 1e-9:
             notes.append(lab["n_undercut"].format(i=i, z=g.z, x=_num(g.x, 3), xmin=_num(xmin, 3)))
     if interference:
-        notes.append(lab["n_interf"])
+        notes.append(_points(lab["n_interf"]))
     ty1 = title_block_box(sheet)[3]
     y = bottom - 9.0
     sheet.text(tx0 + 1j * y, lab["notes"], 5.0, "TEXT", "left", "bottom")
@@ -497,7 +506,7 @@ def _wrap(text: str, width: float, height: float) -> list[str]:
 def _tokens(text: str) -> list[str]:
     out, word = [], ""
     for ch in text:
-        if ord(ch) > 0x2E80:
+        if ord(ch) > 0x2E80 and ch not in (SUB_ON, SUB_OFF):   # a subscript stays in its word
             if word:
                 out.append(word)
                 word = ""

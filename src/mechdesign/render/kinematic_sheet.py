@@ -25,7 +25,7 @@ from ..stages.drive import shaft_numeral
 from .labels import LabelTable, pgettext, translated
 from .sheet import (LabelPlacer, Sheet, TitleInfo, fit_height, format_number, frame, ground,
                     hatched_line, heading, length_scale, pin, scale_text, slider_block, table,
-                    text_width, title_block_box, turn_arrow)
+                    sub, text_width, title_block_box, turn_arrow, with_subscripts)
 
 MM = 1e3
 SIZE = "A3"
@@ -106,7 +106,7 @@ def _notes(s: Sheet, lines: list[str]) -> None:
 
 
 def _scale_note(lab: dict, n: float) -> str:
-    return lab["scale"].format(mu=format_number(n / 1000.0), s=scale_text(n))
+    return with_subscripts(lab["scale"], "μ_L").format(mu=format_number(n / 1000.0), s=scale_text(n))
 
 
 def _omega_arrow(s: Sheet, view, pivot_mm: complex, radius_mm: float, ccw: bool,
@@ -495,7 +495,7 @@ def lockbeam_diagram(results, found, info: TitleInfo, lang: str) -> Sheet:
     note = _.pgettext("kinematic sheet", "each group to μL; not given, so schematic: the groups' placing, "
                       "the angle of the rocker's arms, the four-bar's frame line, the chain's centre distance")
     _notes(s, [_scale_note(lab, n) + _.pgettext("kinematic sheet", "; φ = 0°: feed linkage at position 1"),
-               note, lab["links"] + legend[0], legend[1]])
+               with_subscripts(note, "μ_L"), lab["links"] + legend[0], legend[1]])
     return s
 
 
@@ -684,7 +684,8 @@ def cam_diagram(c, info: TitleInfo, lang: str) -> Sheet:
               else _.pgettext("kinematic sheet", "translating"))
     legend = _.pgettext("kinematic sheet", "1 cam  2 {motion} {kind} follower", motion=motion, kind=kind)
     _notes(s, [_scale_note(lab, n), lab["links"] + legend,
-               f"r0 = {format_number(g.r0)} mm" + (f"  rr = {format_number(g.rr)} mm" if g.rr else "")
+               f"{sub('r', '0')} = {format_number(g.r0)} mm"
+               + (f"  {sub('r', 'r')} = {format_number(g.rr)} mm" if g.rr else "")
                + (f"  e = {format_number(g.e)} mm" if g.e else "")])
     return s
 
@@ -929,8 +930,8 @@ def drive_schematic(drive, info: TitleInfo, lang: str) -> Sheet:
                  title=lab["shafts"], title_height=3.5, height=3.0, row_h=6.0)
     srows = []
     for j, st in enumerate(stages):
-        data = (f"d1={format_number(st.d1 * MM)}, d2={format_number(st.d2 * MM)} mm" if st.d1
-                else (f"z1={st.z1}, z2={st.z2}" if st.z1 else "—"))
+        data = (f"{sub('d', '1')}={format_number(st.d1 * MM)}, {sub('d', '2')}={format_number(st.d2 * MM)} mm"
+                if st.d1 else (f"{sub('z', '1')}={st.z1}, {sub('z', '2')}={st.z2}" if st.z1 else "—"))
         srows.append([str(j + 1), st.name_zh if lang == "zh" else st.name_en, format_number(st.ratio, 4), data])
     table(s, tx, ybot - 8.0, [12, 58, 25, 80], srows, head=[tr(lang).pgettext("kinematic sheet", "No."), lab["stage"],
                                                              lab["ratio"], lab["data"]],

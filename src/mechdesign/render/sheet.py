@@ -44,9 +44,9 @@ LAYERS = {layer.name: layer for layer in (
           0.7, "CONTINUOUS", 7, (0, 0, 0)),
     Layer("CONSTRUCTION", pgettext("DXF layer", "thin solid line"),
           "construction and thin lines", 0.25, "CONTINUOUS", 8, (0.35, 0.35, 0.35)),
-    Layer("CENTER", pgettext("DXF layer", "chain line"), "centre lines, pitch circles, guides",
+    Layer("CENTER", pgettext("DXF layer", "thin chain line"), "centre lines, pitch circles, guides",
           0.25, "CENTER", 1, (0.55, 0.1, 0.1)),
-    Layer("HIDDEN", pgettext("DXF layer", "dashed line"), "other positions, hidden lines",
+    Layer("HIDDEN", pgettext("DXF layer", "thin dashed line"), "other positions, hidden lines",
           0.25, "DASHED", 8, (0.4, 0.4, 0.4)),
     Layer("DIMENSIONS", pgettext("DXF layer", "dimensions"), "dimensions", 0.25, "CONTINUOUS",
           3, (0, 0.35, 0)),
@@ -305,8 +305,54 @@ def thin(points, tolerance: float = CHORD_TOLERANCE) -> np.ndarray:
 
 # -- helpers shared by every sheet --------------------------------------------------------
 
+# -- subscripts in sheet texts ------------------------------------------------------------
+# A sheet text marks a subscript with two private-use characters (never in user text):
+# "μ" + SUB_ON + "v" + SUB_OFF is μ with the subscript v. The typst back end draws it with
+# ``sub``, the DXF back end as an MTEXT with a stacked subscript (``\\S^ v;``); the DXF
+# text font, Noto Sans SC, has none of the Unicode subscript characters (ₘᵢₙ, ₐ, ₁ …).
+SUB_ON, SUB_OFF = "\ue000", "\ue001"
+
+
+def sub(base: str, index: str) -> str:
+    """``base`` with the subscript ``index`` (e.g. ``sub("φ", "max")``) for a sheet text."""
+    return f"{base}{SUB_ON}{index}{SUB_OFF}"
+
+
+def with_subscripts(text: str, *symbols: str) -> str:
+    """``text`` with each of ``symbols`` (written "base_index", e.g. "μ_v", "ΔW_max") marked as
+    a subscript where it stands as a word ("μv" in "μv = 0.01", not in "μvx")."""
+    import re
+
+    for symbol in symbols:
+        base, index = symbol.split("_", 1)
+        text = re.sub(rf"(?<![A-Za-z0-9]){re.escape(base + index)}(?![A-Za-z0-9])",
+                      lambda _m: sub(base, index), text)
+    return text
+
+
+def split_subscripts(text: str) -> list[tuple[str, bool]]:
+    """The runs of ``text``: (characters, is a subscript), empty runs left out."""
+    out = []
+    rest = text
+    while SUB_ON in rest:
+        head, _, tail = rest.partition(SUB_ON)
+        index, _, rest = tail.partition(SUB_OFF)
+        out += [(head, False), (index, True)]
+    out.append((rest, False))
+    return [(t, s) for t, s in out if t]
+
+
+def plain(text: str) -> str:
+    """``text`` with its subscripts written as plain letters ("μv", as the sheets used to)."""
+    return text.replace(SUB_ON, "").replace(SUB_OFF, "")
+
+
 def text_width(text: str, height: float) -> float:
-    """Estimated width of ``text`` [mm]: CJK characters are square, Latin ~0.6 h."""
+    """Estimated width of ``text`` [mm]: CJK characters are square, Latin ~0.6 h; a
+    subscript ~0.7 of that (typst draws it at 0.6 em)."""
+    if SUB_ON in text:
+        return sum((0.7 if is_sub else 1.0) * text_width(t, height)
+                   for t, is_sub in split_subscripts(text))
     wide = sum(1 for ch in text if ord(ch) > 0x2E80)
     return height * (wide + 0.62 * (len(text) - wide))
 

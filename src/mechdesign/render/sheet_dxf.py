@@ -14,7 +14,8 @@ import numpy as np
 
 from ..fileio import atomic_path
 from .fmt import dxf_text, plain_line
-from .sheet import LAYERS, Arc, Circle, Dimension, Fill, Line, Polyline, Sheet, Text
+from .sheet import (LAYERS, SUB_ON, Arc, Circle, Dimension, Fill, Line, Polyline, Sheet, Text,
+                    split_subscripts, text_width)
 
 TEXT_STYLE = "Standard"          # the one text style (DXF requires it to exist anyway)
 TEXT_FONT = "NotoSansSC-Regular.otf", "Noto Sans SC"    # file and family (render/fonts.py)
@@ -23,6 +24,65 @@ _ALIGN = {("left", "bottom"): "BOTTOM_LEFT", ("center", "bottom"): "BOTTOM_CENTE
           ("center", "middle"): "MIDDLE_CENTER", ("right", "middle"): "MIDDLE_RIGHT",
           ("left", "top"): "TOP_LEFT", ("center", "top"): "TOP_CENTER",
           ("right", "top"): "TOP_RIGHT"}
+
+
+# MTEXT attachment points (1 top left … 9 bottom right)
+_ATTACH = {(h, v): 1 + i + 3 * j for j, v in enumerate(("top", "middle", "bottom"))
+           for i, h in enumerate(("left", "center", "right"))}
+
+
+def mtext(text: str) -> str:
+    """A sheet text as MTEXT content (also a dimension's text, which ezdxf writes as MTEXT):
+    as written when it has no subscript, else with ``\\``, ``{``, ``}`` escaped and each
+    subscript stacked below an empty top (``\\S^ v;``: AutoCAD's subscript; the caret is
+    followed by a space, as AutoCAD writes it, since "^v" would be a control character)."""
+    runs = split_subscripts(plain_line(text))
+    if not any(is_sub for _, is_sub in runs):
+        return text
+
+    def escape(t: str) -> str:      # as dxf_text, and MTEXT's own codes
+        return (t.replace("%", "%%%").replace("^", "^ ").replace("\\", "\\\\")
+                .replace("{", "\\{").replace("}", "\\}"))
+
+    return "".join(f"\\S^ {escape(t).replace(';', '')};" if is_sub else escape(t)
+                   for t, is_sub in runs)
+
+
+def _column(t: Text, sheet: Sheet) -> float:
+    """The column width of a text's MTEXT [mm]: wider than the text (an estimate with room
+    to spare, so that CAD does not wrap it; ezdxf measures an MTEXT of no width as a narrow
+    wrapped column), but not past the frame (the sheet's edge for a text outside it)
+    in the text's direction."""
+    want = 1.3 * text_width(t.text, t.height) + t.height
+    u = complex(np.cos(t.angle), np.sin(t.angle))
+    f = {"left": 0.0, "center": 0.5, "right": 1.0}[t.halign]
+    room = want
+    x0, y0, x1, y1 = sheet.inner
+    if not (x0 <= t.position.real <= x1 and y0 <= t.position.imag <= y1):
+        x0, y0, x1, y1 = 0.0, 0.0, sheet.width, sheet.height
+    for share, sign in ((f, -1.0), (1.0 - f, 1.0)):      # the start and the end of the line
+        if share == 0.0:
+            continue
+        for d, lo, hi, p in ((u.real, x0, x1, t.position.real), (u.imag, y0, y1, t.position.imag)):
+            step = sign * share * d                    # how far this end moves per mm of width
+            if step > 1e-12:
+                room = min(room, (hi - p) / step)
+            elif step < -1e-12:
+                room = min(room, (lo - p) / step)
+    return max(room, text_width(t.text, t.height))
+
+
+def plain_text(entity) -> str:
+    """The text of a TEXT, MTEXT or DIMENSION entity this module wrote, subscripts as plain
+    letters ("μ\\S^ v; = 1" → "μv = 1"): what the sheet's text reads as (for tests and tools)."""
+    import re
+
+    text = entity.text if entity.dxftype() == "MTEXT" else entity.dxf.get("text", "")
+    if entity.dxftype() == "TEXT" or "\\S^ " not in text:
+        return text
+    text = re.sub(r"\\S\^ ([^;]*);", r"\1", text)
+    return (text.replace("\\{", "{").replace("\\}", "}").replace("\\\\", "\\")
+            .replace("%%%", "%").replace("^ ", "^"))
 
 
 def _lineweight(mm: float) -> int:
@@ -81,6 +141,13 @@ def build_document(sheet: Sheet, title: str = ""):
         elif isinstance(e, Fill):
             hatch = msp.add_hatch(color=256, dxfattribs={"layer": e.layer})
             hatch.paths.add_polyline_path([(p.real, p.imag) for p in e.points], is_closed=True)
+        elif isinstance(e, Text) and SUB_ON in e.text:
+            # a subscript: an MTEXT with stacked subscripts, placed and turned as the TEXT
+            msp.add_mtext(mtext(e.text), dxfattribs={
+                "layer": e.layer, "style": TEXT_STYLE, "char_height": e.height,
+                "insert": (e.position.real, e.position.imag), "rotation": np.degrees(e.angle),
+                "attachment_point": _ATTACH[(e.halign, e.valign)],
+                "width": _column(e, sheet)})
         elif isinstance(e, Text):
             # as written: "%%d", "^J" … are control codes in DXF text (dxf_text escapes them)
             t = msp.add_text(dxf_text(e.text), height=e.height, rotation=np.degrees(e.angle),
@@ -150,14 +217,14 @@ def _dimension(msp, d: Dimension) -> None:
     attrs = {"layer": d.layer}
     if d.kind == "aligned":
         dim = msp.add_aligned_dim(p1=(d.p0.real, d.p0.imag), p2=(d.p1.real, d.p1.imag),
-                                  distance=d.offset, text=d.text or "<>", dimstyle="EZDXF",
+                                  distance=d.offset, text=mtext(d.text) or "<>", dimstyle="EZDXF",
                                   override=override, dxfattribs=attrs)
     elif d.kind == "radius":
         # text in the middle of the leader, as the PDF draws it
         mid = (d.p0 + d.p1) / 2
         dim = msp.add_radius_dim(center=(d.p0.real, d.p0.imag), radius=abs(d.p1 - d.p0),
                                  angle=float(np.degrees(np.angle(d.p1 - d.p0))),
-                                 location=(mid.real, mid.imag), text=d.text or "<>",
+                                 location=(mid.real, mid.imag), text=mtext(d.text) or "<>",
                                  dimstyle="EZ_RADIUS_INSIDE", override=override, dxfattribs=attrs)
     else:
         centre = (d.p0 + d.p1) / 2          # p0, p1: the ends of the diameter
@@ -165,7 +232,7 @@ def _dimension(msp, d: Dimension) -> None:
                                    radius=abs(d.p1 - d.p0) / 2,
                                    angle=float(np.degrees(np.angle(d.p1 - d.p0))),
                                    location=_xy(centre + 1e-3 * (d.p1 - centre)),
-                                   text=d.text or "<>",
+                                   text=mtext(d.text) or "<>",
                                    dimstyle="EZ_RADIUS_INSIDE", override=override, dxfattribs=attrs)
     dim.render()
 

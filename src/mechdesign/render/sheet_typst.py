@@ -20,7 +20,8 @@ from pathlib import Path
 import numpy as np
 
 from .fonts import cjk_families
-from .sheet import LAYERS, Arc, Circle, Dimension, Fill, Line, Polyline, Sheet, Text, format_number
+from .sheet import (LAYERS, Arc, Circle, Dimension, Fill, Line, Polyline, Sheet, Text, format_number,
+                    split_subscripts)
 
 # Dash patterns in paper mm (GB/T 17450: long dash 15–20, gap 3, dot ≤ 0.5); as the
 # DXF line types CENTER and DASHED.
@@ -81,6 +82,17 @@ def typst_string(text: str) -> str:
         else:
             out.append(ch)
     return '"' + "".join(out) + '"'
+
+
+def typst_body(text: str) -> str:
+    """The typst expression of a sheet text: a string literal, or with subscripts (see
+    :func:`.sheet.sub`) the strings joined with ``sub(...)`` (drawn smaller and lowered,
+    not with the font's subscript glyphs, which the CJK font lacks)."""
+    runs = split_subscripts(text)
+    if not any(is_sub for _, is_sub in runs):
+        return typst_string(text)
+    return "(" + " + ".join(f"sub(typographic: false, {typst_string(t)})" if is_sub
+                            else typst_string(t) for t, is_sub in runs) + ")"
 
 
 def _num(x: float) -> str:
@@ -148,7 +160,7 @@ class _Writer:
         self.lines.append(
             f"#T({_num(pos.real)}mm, {_num(self.h - pos.imag)}mm, {_HALIGN[halign]}, "
             f"{_VALIGN[valign]}, {_num(-math.degrees(angle))}deg, {_num(height)}mm, "
-            f"rgb({r}, {g}, {b}), {typst_string(text)})")
+            f"rgb({r}, {g}, {b}), {typst_body(text)})")
 
 
 def sheet_source(sheet: Sheet) -> str:

@@ -20,7 +20,7 @@ from typing import Callable
 from ..fileio import write_bytes, write_text
 from ..i18n import N_, tr
 from .fmt import meta_text, plain_line
-from .sheet import Sheet, TitleInfo
+from .sheet import Sheet, TitleInfo, plain
 
 TITLES = {
     "kinematic": N_("Kinematic diagram"),
@@ -311,7 +311,7 @@ def write_all(builders: list, brief, folder: Path, fig_dir: Path, lang: str,
             dxf = write_dxf(sheet, sheet_dir / f"{stem}.dxf", info.drawing)
         rel = Path(folder)
         out.append(SheetFiles(name, info.drawing, sheet.size,
-                              sheet.info.scale if sheet.info is not None else "",
+                              plain(sheet.info.scale) if sheet.info is not None else "",
                               preview.relative_to(rel).as_posix(),
                               None if pdf is None else pdf.relative_to(rel).as_posix(),
                               None if dxf is None else dxf.relative_to(rel).as_posix()))
