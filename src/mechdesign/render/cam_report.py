@@ -183,8 +183,9 @@ def _law_eqs(c, i, u: _Units, lang):
                        end=f(start + span, 0), law=name),
             "head": head, "S": rf"S(u) = {S}", "S1": rf"S'(u) = {S1}", "S2": rf"S''(u) = {S2}",
             "s": s_eq, "v": v_eq, "a": a_eq,
-            "peaks": (f"C_v = {f(law.cv, 4)}, C_a = " + (f(law.ca, 4) if np.isfinite(law.ca) else "∞")
-                      + ", C_j = " + (f(law.cj, 3) if np.isfinite(law.cj) else "∞"))}
+            "peaks": (f"C_v = {sig(law.cv, group=False)}, C_a = "
+                      + (sig(law.ca, group=False) if np.isfinite(law.ca) else "∞")
+                      + ", C_j = " + (sig(law.cj, group=False) if np.isfinite(law.cj) else "∞"))}
 
 
 def cam_context(c, lang: str, figs: dict[str, str], csv_name: str) -> dict:

@@ -7,7 +7,7 @@ import numpy as np
 
 from ..stages.drive import shaft_numeral
 from ..i18n import N_, tr
-from .fmt import f, grouped, md_text
+from .fmt import f, grouped, md_text, sig
 
 MM = 1e3
 
@@ -48,8 +48,8 @@ def drive_context(d, lang: str, figures: dict[str, str], machine_power_eq: str |
     eq = {
         "eta": (rf"\eta = \prod \eta_i \cdot \eta_b^{{{n_b}}} \cdot \eta_w = {eta_terms} \times "
                 rf"{f(d.bearing_eff, 3)}^{{{n_b}}} \times {f(d.machine_eff, 3)} = {f(d.efficiency, 4)}"),
-        "pd": (rf"P_d = \frac{{P_w}}{{\eta}} = \frac{{{f(d.machine_power / 1e3, 4)}}}{{{f(d.efficiency, 4)}}}"
-               rf" = {f(d.power_required / 1e3, 4)}\ \text{{kW}}"),
+        "pd": (rf"P_d = \frac{{P_w}}{{\eta}} = \frac{{{sig(d.machine_power / 1e3, group=False)}}}{{{f(d.efficiency, 4)}}}"
+               rf" = {sig(d.power_required / 1e3, group=False)}\ \text{{kW}}"),
         "i": (rf"i = \frac{{n_m}}{{n_w}} = \frac{{{f(m.full_load_rpm, 0)}}}{{{f(d.output_speed_required, 3)}}}"
               rf" = {f(d.choice.total_ratio, 3)}"),
         "err": (rf"\Delta n = \frac{{n_w' - n_w}}{{n_w}} = \frac{{{f(d.output_speed, 3)} - "
@@ -79,13 +79,13 @@ def drive_context(d, lang: str, figures: dict[str, str], machine_power_eq: str |
         "motor": {"name": m.designation, "P": f(m.power / 1e3, 2), "sync": f(m.synchronous_rpm, 0),
                   "n": f(m.full_load_rpm, 0), "H": f(m.frame_height * MM, 0),
                   "tst": f(m.starting_torque_ratio, 1), "tmax": f(m.max_torque_ratio, 1)},
-        "pw": f(d.machine_power / 1e3, 4), "pd": f(d.power_required / 1e3, 4),
+        "pw": sig(d.machine_power / 1e3), "pd": sig(d.power_required / 1e3),
         "eta": f(d.efficiency, 4), "i": f(d.choice.total_ratio, 3),
         "nw": f(d.output_speed_required, 3), "nw_real": f(d.output_speed, 3),
         "err": f(d.speed_error * 100, 2), "tol": f(d.speed_tolerance * 100, 1),
         "speed_ok": abs(d.speed_error) <= d.speed_tolerance,
         "hours": f(d.service_hours, 0), "KA": f(d.KA, 2),
-        "peak": f(d.peak_factor, 3) if d.peak_from_shaft is not None else None,
+        "peak": sig(d.peak_factor) if d.peak_from_shaft is not None else None,
         "peak_shaft": _shaft_name(d.peak_from_shaft, len(d.shafts) - 1, _.zh) if d.peak_from_shaft is not None else "",
         "warnings": [md_text(w.text(lang)) for w in d.warnings],
         "stage_designs": stage_designs(d, lang),
@@ -180,7 +180,7 @@ def stage_designs(d, lang: str) -> list[dict]:
             mats = " / ".join(_mat_name(k, _) for k in g.materials)
             text.append(_("Materials (pinion / gear): {mats}. Load factor $K = K_A K_V K_\\alpha K_\\beta "
                           "= {K}$, design torque $T_1 = {T1}$ N·m, face width factor $\\phi_d = {phi_d}$, "
-                          "module m = {m_text}.", mats=mats, K=f(g.K, 3), T1=f(g.T1, 3),
+                          "module m = {m_text}.", mats=mats, K=f(g.K, 3), T1=sig(g.T1, group=False),
                           phi_d=f(e['phi_d'], 2), m_text=m_text))
             if e["open"]:
                 text.append(_("Open gears fail by wear: designed by root bending with the module raised 15 % "
@@ -208,7 +208,7 @@ def stage_designs(d, lang: str) -> list[dict]:
                           "\\times 1.1 = {K}$, wheel torque $T_2 = {T2}$ N·m, module m = {m_text}, q = "
                           "{q}. Allowable $[\\sigma_H] = {sigma_H}$ MPa, $[\\sigma_F] = {sigma_F}$ MPa ($N "
                           "= {N}\\times10^6$).", materials=_mat_name(g.materials[1], _),
-                          K=f(g.K, 3), T2=f(g.T2, 3), m_text=m_text, q=f(geo.q, 0),
+                          K=f(g.K, 3), T2=sig(g.T2, group=False), m_text=m_text, q=f(geo.q, 0),
                           sigma_H=f(a['sigma_H'] / 1e6, 1), sigma_F=f(a['sigma_F'] / 1e6, 1),
                           N=f(a['N'] / 1e6, 2)))
             text.append(_("Sliding speed $v_s = {vs}$ m/s, equivalent friction angle $\\varphi_v = "
@@ -248,7 +248,7 @@ def stage_designs(d, lang: str) -> list[dict]:
                       "$R_{{BH}} = {RBh}$ N, $R_{{BV}} = {RBv}$ N; largest equivalent moment at x = "
                       "{x} mm, M = {M} N·m.", RAh=f(res.RAh, 1), RAv=f(res.RAv, 1),
                       RBh=f(res.RBh, 1), RBv=f(res.RBv, 1), x=f(res.critical.x * MM, 0),
-                      M=f(res.critical.M, 2)))
+                      M=sig(res.critical.M)))
         if sh.bearing is not None:
             b = sh.bearing
             text.append(_("Bearings {designation} (d = {d} mm, $C_r$ = {Cr} kN); the life takes the "

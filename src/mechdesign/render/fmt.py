@@ -8,7 +8,16 @@ Numbers, as an engineer writes them (one rule for every report, table and sheet)
 * forces, torques, powers, energies, stresses, moments of inertia, lives, cycle counts and
   other quantities whose size varies over decades: 4 significant digits — :func:`sig`
   (``12 700 N·m``, ``0.6599 kW``, ``48 000 h``); where a table keeps fixed decimals for
-  such a quantity (forces to 0.1 N), :func:`f` with ``group=True``;
+  such a quantity (forces to 0.1 N), :func:`f` with ``group=True``; in running text and
+  formulas such a value never has more digits than both allow — ``12 740 N·m`` or
+  ``12 738.2 N·m``, ``636.6 N·m``, ``3333 W``, ``3.803 kW``, ``190.3 J``, never
+  ``12 738.160 N·m``, ``636.620 N·m`` or ``3333.33 W``;
+* derived values of given dimensions (the given-dimensions path: H, K, θ, ψ from the brief's
+  lengths) as any other length, angle or K (``θ = |111.37° − 91.40°| = 19.97°``,
+  ``K = 1.2496``), a sine or cosine of a formula to 4 significant digits; the verification
+  tables keep the decimals of their columns;
+* numbers in finding and error messages (``{x:.2f}`` in the msgid) by the same rule; three
+  decimals only where a value is compared with a limit it may miss by less than 0.01;
 * dimensionless ratios (K, efficiencies, safety factors): 4 significant digits, or the
   fixed decimals a table states;
 * a magnitude of a million or more (seven digits: a bearing life of 40 680 894 h) with a power
@@ -71,14 +80,16 @@ def f(x: float, digits: int = 2, group: bool = False) -> str:
     return _group(text) if group else text
 
 
-def sig(x: float, n: int = 4, group: bool = True) -> str:
+def sig(x: float, n: int = 4, group: bool = True, ref: float = 0.0) -> str:
     """``x`` with ``n`` significant digits in fixed-point notation, never E-notation:
     ``12698.4`` → ``12 700``, ``0.065999`` → ``0.06600``, ``48000`` → ``48 000``; the
     significant trailing zeros are kept; zero is ``0``; NaN or infinite is ``—``.
-    ``group=False`` inside a formula (digits together)."""
+    ``group=False`` inside a formula (digits together). ``ref``: the largest magnitude of
+    the values written with ``x`` (a range, a mean); an ``x`` within 10⁻⁹ of it of zero is
+    a rounding residue of zero and written ``0`` (not ``0.0000000000000007194``)."""
     if x != x or abs(x) == float("inf"):
         return "—"
-    if x == 0:
+    if x == 0 or abs(x) <= 1e-9 * abs(ref):
         return "0"
     rounded = Decimal(f"{x:.{n - 1}e}")
     decimals = max(n - 1 - rounded.adjusted(), 0)

@@ -172,8 +172,8 @@ def optional_sections(r: dict, lang: str, figures: dict) -> dict:
         from .drive_report import drive_context
 
         fl, p = r["linkage_flywheel"], r["params"]
-        pw = (rf"P_w = \bar M_b\,\omega_2 = {f(fl.mean_torque, 3)} \times "
-              rf"{f(abs(p.crank_omega), 4)} = {f(fl.mean_power, 2)}\ \text{{W}}")
+        pw = (rf"P_w = \bar M_b\,\omega_2 = {sig(fl.mean_torque, group=False)} \times "
+              rf"{f(abs(p.crank_omega), 4)} = {sig(fl.mean_power, group=False)}\ \text{{W}}")
         out["drive"] = drive_context(r["drive"], lang, figures, pw)
     return out
 

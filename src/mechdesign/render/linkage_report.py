@@ -14,7 +14,7 @@ import numpy as np
 
 from ..i18n import N_, tr
 from . import figures as fig
-from .fmt import e, f, force_unit, md_text, mpl_text, tex_name
+from .fmt import e, f, force_unit, md_text, mpl_text, sig, tex_name
 from .fmt import verdict as fmt_verdict
 from .label_layout import Label, place
 from .labels import LabelTable
@@ -350,8 +350,8 @@ def linkage_context(model, k, f_, fly, v, figures: dict, lang: str,
         "sense": _("clockwise") if model.crank_omega < 0 else _("counter-clockwise"),
         "output": md_text(model.output.name),
         "unit_s": units[0], "unit_v": units[1], "unit_a": units[2],
-        "stroke": f(k.stroke * scale, 3), "K": f(k.time_ratio, 4),
-        "theta": f(180 * (k.time_ratio - 1) / (k.time_ratio + 1), 3),
+        "stroke": f(k.stroke * scale, 2), "K": f(k.time_ratio, 4),
+        "theta": f(180 * (k.time_ratio - 1) / (k.time_ratio + 1), 2),
         "working_span": f(k.working_span * DEG, 2),
         "return_span": f(360 - k.working_span * DEG, 2),
         "start_angle": f((k.start_angle * DEG) % 360, 3),
@@ -362,23 +362,23 @@ def linkage_context(model, k, f_, fly, v, figures: dict, lang: str,
         "qual_rows": qual_rows,
         "reaction_names": [f"$F_{{{tex_name(nm)}}}$" for nm in reaction_names],
         "force_rows": force_rows, "force_unit": force_unit_,
-        "mb_max": f(f_.torque_max, 3, group=True),
-        "mb_min": f(f_.torque_min, 3, group=True),
-        "mb_mean": f(f_.mean_torque, 3, group=True), "mb_peak": f(f_.peak_torque, 3, group=True),
-        "power": f(f_.mean_power, 2),
-        "eq_power": (rf"P = \bar M_b\,\omega = {f(f_.mean_torque, 3)} \times {f(omega, 4)} = "
-                     rf"{f(f_.mean_power, 2)}\ \text{{W}}"),
+        "mb_max": sig(f_.torque_max, ref=f_.peak_torque),
+        "mb_min": sig(f_.torque_min, ref=f_.peak_torque),
+        "mb_mean": sig(f_.mean_torque), "mb_peak": sig(f_.peak_torque),
+        "power": sig(f_.mean_power),
+        "eq_power": (rf"P = \bar M_b\,\omega = {sig(f_.mean_torque, group=False)} \times {f(omega, 4)} = "
+                     rf"{sig(f_.mean_power, group=False)}\ \text{{W}}"),
         "has_forces": bool(model.bodies or model.resistances),
         "fly": None,
     }
     if fly is not None:
         ctx["fly"] = {
-            "n": f(fly.shaft_speed_rpm, 2), "dw": f(fly.max_energy_swing, 3),
+            "n": f(fly.shaft_speed_rpm, 2), "dw": sig(fly.max_energy_swing),
             "at_min": f(fly.phase_at_min * DEG, 1), "at_max": f(fly.phase_at_max * DEG, 1),
-            "delta": f"1/{1 / fly.fluctuation:.4g}", "jf": f(fly.inertia, 4),
+            "delta": f"1/{1 / fly.fluctuation:.4g}", "jf": sig(fly.inertia),
             "eq": (rf"J_F = \frac{{900\,\Delta W_{{max}}}}{{\pi^2 n^2 [\delta]}} = \frac{{900 \times "
-                   rf"{f(fly.max_energy_swing, 3)}}}{{\pi^2 \times {f(fly.shaft_speed_rpm, 2)}^2 \times "
-                   rf"{f(fly.fluctuation, 4)}}} = {f(fly.inertia, 4)}\ \text{{kg·m}}^2"),
+                   rf"{sig(fly.max_energy_swing, group=False)}}}{{\pi^2 \times {f(fly.shaft_speed_rpm, 2)}^2 \times "
+                   rf"{f(fly.fluctuation, 4)}}} = {sig(fly.inertia, group=False)}\ \text{{kg·m}}^2"),
             "rim": None,
         }
         if fly.rim is not None:
@@ -387,7 +387,7 @@ def linkage_context(model, k, f_, fly, v, figures: dict, lang: str,
                 "D": f(rim.diameter * 1e3, 0), "b": f(rim.width * 1e3, 1),
                 "Hr": f(rim.height * 1e3, 1), "m": f(rim.rim_mass, 2), "speed": f(rim.rim_speed, 2),
                 "hb": f(spec.height_to_width, 2),
-                "mass": (rf"m = \frac{{4 J_F}}{{D^2}} = \frac{{4 \times {f(fly.inertia, 3)}}}"
+                "mass": (rf"m = \frac{{4 J_F}}{{D^2}} = \frac{{4 \times {sig(fly.inertia, group=False)}}}"
                          rf"{{{f(rim.diameter, 3)}^2}} = {f(rim.rim_mass, 2)}\ \text{{kg}}"),
                 "width": (rf"b = \sqrt{{\frac{{4 g J_F}}{{\pi D^3 (H/b) \gamma}}}} = "
                           rf"{f(rim.width * 1e3, 1)}\ \text{{mm}}"),

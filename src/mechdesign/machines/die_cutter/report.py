@@ -13,7 +13,7 @@ import numpy as np
 
 from ...i18n import N_, tr
 from ...render import figures as fig
-from ...render.fmt import e, f, md_meta, md_text
+from ...render.fmt import e, f, md_meta, md_text, sig
 from ...render.fmt import number, verdict
 from ...render.labels import pgettext, translated
 from ...stages.drive import shaft_numeral
@@ -162,13 +162,13 @@ def _choice_rows(b, p, r, _) -> list[list[str]]:
     sub = _(" (derived)") if given else ""
     rows = [
         ["$H$", _("platen stroke") + sub,
-         f"{f(H_mm, 3) if given else f(pr.stroke_H_mm, 1)} mm",
+         f"{f(H_mm, 2) if given else f(pr.stroke_H_mm, 1)} mm",
          _("the gripper bar and the sheet pass between die and platen; at the bottom the "
             "gap is H − t = {H_mm} mm", H_mm=f(H_mm - b.production.board_thickness_mm, 1))],
         ["$c$", _("clearance level"), f"{f(pr.clearance_mm, 1)} mm",
          _("the platen must be at least c below its top for the gripper bar (about 12 mm) "
            "and the sheet to pass, with some margin")],
-        ["$K$", _("time ratio") + sub, f(g.K, 6) if given else f(pr.time_ratio_K, 2),
+        ["$K$", _("time ratio") + sub, f(g.K, 4) if given else f(pr.time_ratio_K, 2),
          _("slow rise (cutting), quick fall: the cut takes more crank angle, so the "
            "torque peak is lower")],
     ]
@@ -259,16 +259,16 @@ def _synthesis(d, p, _) -> dict:
         given = {
             "cosines": (r"\angle O_1CB_{1,2} = \arccos\frac{d^2 + c^2 - (b \mp a)^2}{2dc},\qquad "
                         r"\angle CO_1B_{1,2} = \arccos\frac{(b \mp a)^2 + d^2 - c^2}{2(b \mp a)d}"),
-            "psi": (rf"\psi = \angle O_1CB_2 - \angle O_1CB_1 = {f(ang(d_, c, b + a), 6)}° - "
-                    rf"{f(ang(d_, c, b - a), 6)}° = {_deg(psi, 6)}°"),
-            "theta": (rf"\theta = \lvert\angle CO_1B_1 - \angle CO_1B_2\rvert = \lvert {f(ang(b - a, d_, c), 6)}° - "
-                      rf"{f(ang(b + a, d_, c), 6)}°\rvert = {f(theta, 6)}°"),
-            "K": (rf"K = \frac{{180° + \theta}}{{180° - \theta}} = \frac{{180° + {f(theta, 6)}°}}"
-                  rf"{{180° - {f(theta, 6)}°}} = {f(K, 6)}"),
-            "H": (rf"H = y_D(\varepsilon) - y_D(\varepsilon + \psi) = {f(d.top_height * MM, 6)} - "
-                  rf"{f(d.bottom_height * MM, 6)} = {f(g.stroke * MM, 6)}\ \text{{mm}}"),
-            "lengths": (rf"a = {f(a, 3)},\quad b = {f(b, 3)},\quad c = l_{{CB}} = {f(c, 3)},\quad "
-                        rf"d = {f(d_, 3)}\ \text{{mm}}"),
+            "psi": (rf"\psi = \angle O_1CB_2 - \angle O_1CB_1 = {f(ang(d_, c, b + a), 2)}° - "
+                    rf"{f(ang(d_, c, b - a), 2)}° = {_deg(psi, 2)}°"),
+            "theta": (rf"\theta = \lvert\angle CO_1B_1 - \angle CO_1B_2\rvert = \lvert {f(ang(b - a, d_, c), 2)}° - "
+                      rf"{f(ang(b + a, d_, c), 2)}°\rvert = {f(theta, 2)}°"),
+            "K": (rf"K = \frac{{180° + \theta}}{{180° - \theta}} = \frac{{180° + {f(theta, 2)}°}}"
+                  rf"{{180° - {f(theta, 2)}°}} = {f(K, 4)}"),
+            "H": (rf"H = y_D(\varepsilon) - y_D(\varepsilon + \psi) = {f(d.top_height * MM, 2)} - "
+                  rf"{f(d.bottom_height * MM, 2)} = {f(g.stroke * MM, 2)}\ \text{{mm}}"),
+            "lengths": (rf"a = {f(a, 2)},\quad b = {f(b, 2)},\quad c = l_{{CB}} = {f(c, 2)},\quad "
+                        rf"d = {f(d_, 2)}\ \text{{mm}}"),
         }
     eq = {
         "height": (r"y_D(\beta) = l_{CB}\cos\beta + \sqrt{l_{BD}^2 - l_{CB}^2\sin^2\beta}"),
@@ -309,7 +309,7 @@ def _synthesis(d, p, _) -> dict:
          _deg(d.rising_span, 2), "°"],
     ]
     if given:
-        rows[2:2] = [["$K$", _("time ratio") + der, f(K, 6), "—"],
+        rows[2:2] = [["$K$", _("time ratio") + der, f(K, 4), "—"],
                      ["$H$", _("platen stroke") + der, f(g.stroke * MM, 4), "mm"]]
     pivot = _("the point of the θ-circle at the given frame O1C") \
         if g.frame is not None else \
@@ -351,7 +351,7 @@ def _amplification(r, p, _) -> dict:
                  rf"{f(p.pressing_travel * MM, 2)}\ \text{{mm}} = {f(amp.cut_work, 1)}\ \text{{J}}"),
         "power": (rf"\bar P = \frac{{W_c}}{{T}} = \frac{{{f(amp.cut_work, 1)}}}{{{f(60 / p.shaft_rpm, 3)}}}"
                   rf" = {f(amp.cut_work * p.shaft_rpm / 60, 1)}\ \text{{W}},\qquad \bar M_b\,\omega = "
-                  rf"{f(f_.mean_torque, 2)} \times {f(abs(p.crank_omega), 4)} = {f(f_.mean_power, 1)}\ \text{{W}}"),
+                  rf"{sig(f_.mean_torque, group=False)} \times {f(abs(p.crank_omega), 4)} = {f(f_.mean_power, 1)}\ \text{{W}}"),
         "required": (rf"M_{{req}} = F_c\,\frac{{v_D}}{{\omega}} = {f(p.cutting_force / 1e3, 1)}\ "
                      rf"\text{{kN}} \times {f(u0 * MM, 3)}\ \text{{mm}} = {f(p.cutting_force * u0, 0)}"
                      rf"\ \text{{N·m}}"),
@@ -369,7 +369,7 @@ def _amplification(r, p, _) -> dict:
         # the exact peak (refined between the samples; the factor below uses it too), at about
         # the phase of the largest sample
         "mb_peak": f(f_.peak_torque, 1, group=True), "mb_peak_phase": _deg(k.phase[i_peak], 1),
-        "mb_mean": f(f_.mean_torque, 2), "peak_factor": f(f_.peak_torque / f_.mean_torque, 2),
+        "mb_mean": sig(f_.mean_torque), "peak_factor": f(f_.peak_torque / f_.mean_torque, 2),
         "f_motor": f(f_motor / 1e3, 1), "t_motor": f(t_motor, 1), "motor": motor.designation,
         "F": f(p.cutting_force / 1e3, 1), "t": f(p.pressing_travel * MM, 2),
         "c": f(p.clearance * MM, 1), "ratio_start": f(amp.table[0][4], 2),
@@ -384,7 +384,7 @@ def _flywheel(r, p, b, _) -> dict:
              f(s.peak_torque, 1, group=True), f(s.d_seat * MM, 0), f(s.d_peak * MM, 0)]
             for s in r["peak_shafts"]]
     eq = {
-        "md": (rf"M_d = \frac{{1}}{{2\pi}}\oint M_b\,d\varphi = {f(fl.mean_torque, 2)}\ \text{{N·m}}"
+        "md": (rf"M_d = \frac{{1}}{{2\pi}}\oint M_b\,d\varphi = {sig(fl.mean_torque, group=False)}\ \text{{N·m}}"
                rf"\ (\text{{{crank_shaft}}})"),
         "jf": (rf"J_F = \frac{{900\,\Delta W_{{max}}}}{{\pi^2 n^2 [\delta]}} = \frac{{900 \times "
                rf"{f(fl.max_energy_swing, 1)}}}{{\pi^2 \times {f(fl.shaft_speed_rpm, 2)}^2 \times "
@@ -541,7 +541,7 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
     cycle = cycle_context(cyc.diagram, lang, {"linear": figures["cycle_linear"],
                                              "circular": figures["cycle_circular"]},
                           cyc.checks, level=2, label="dc-cycle")
-    pw = (rf"P_w = \bar M_b\,\omega = {f(f_.mean_torque, 2)} \times {f(abs(p.crank_omega), 4)} = "
+    pw = (rf"P_w = \bar M_b\,\omega = {sig(f_.mean_torque, group=False)} \times {f(abs(p.crank_omega), 4)} = "
           rf"{f(f_.mean_power, 1)}\ \text{{W}}")
     drive = drive_context(r["drive"], lang, figures, pw)
     verify = _verify_rows(r, p, _)

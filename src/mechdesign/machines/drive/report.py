@@ -4,7 +4,7 @@ from __future__ import annotations
 from pathlib import Path
 import numpy as np
 from ...i18n import N_, tr
-from ...render.fmt import e, f, md_meta, md_text
+from ...render.fmt import e, f, md_meta, md_text, sig
 from ...render.fmt import verdict
 from ...render.drive_report import _shaft_name, drive_context
 
@@ -16,9 +16,9 @@ def _load_equation(p) -> str:
                 rf"{f(ld.return_force, 0)}) \times {f(ld.stroke, 3)} \times {f(ld.output_speed_rpm, 2)}}}{{60}}"
                 rf" = {f(ld.power, 2)}\ \text{{W}}")
     if ld.how == "torque":
-        return (rf"P_w = T_w \frac{{\pi n_w}}{{30}} = {f(ld.power * 30 / (np.pi * ld.output_speed_rpm), 3)}"
+        return (rf"P_w = T_w \frac{{\pi n_w}}{{30}} = {sig(ld.power * 30 / (np.pi * ld.output_speed_rpm), group=False)}"
                 rf" \times \frac{{\pi \times {f(ld.output_speed_rpm, 2)}}}{{30}} = {f(ld.power, 2)}\ \text{{W}}")
-    return rf"P_w = {f(ld.power / 1e3, 4)}\ \text{{kW}}"
+    return rf"P_w = {sig(ld.power / 1e3, group=False)}\ \text{{kW}}"
 
 
 def make_figures(r: dict, fig_dir: Path, lang: str) -> dict[str, str]:

@@ -180,11 +180,11 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
     given = pp.given is not None
     sub = _(" (derived)") if given else ""
     data_rows = [
-        ["$H$", _("slider stroke") + sub, f(H, 6) if given else f(ps.stroke_H_mm, 0), "mm"],
+        ["$H$", _("slider stroke") + sub, f(H, 2) if given else f(ps.stroke_H_mm, 0), "mm"],
         ["$n$", _("strokes per minute (crank speed)"),
          f(ps.strokes_per_min, 0), "1/min"],
         ["$K$", _("time ratio") + sub,
-         f(pp.time_ratio_K, 6) if given else f(ps.time_ratio_K, 2), "—"],
+         f(pp.time_ratio_K, 4) if given else f(ps.time_ratio_K, 2), "—"],
         ["$l_{DC}$", _("rocker DC"), f(ps.rocker_DC_mm, 0), "mm"],
         ["$l_{CE}$", _("link CE"), f(ps.link_CE_mm, 0), "mm"],
         ["$[\\alpha]$", _("largest pressure angle, working stroke"),
@@ -224,18 +224,20 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
     cos_h = np.cos(syn.swing / 2)
     given_eq = None
     if given:
+        l_dc = f(R, 0) if abs(R - round(R)) < 1e-9 else f(R, 2)      # as the brief gives it
+
         def ang(x, y, z):
             return float(np.degrees(np.arccos(np.clip((x * x + y * y - z * z) / (2 * x * y), -1, 1))))
         given_eq = {
             "theta": (rf"\theta = \left\lvert\arccos\frac{{(b-a)^2 + d^2 - c^2}}{{2(b-a)d}} - "
                       rf"\arccos\frac{{(b+a)^2 + d^2 - c^2}}{{2(b+a)d}}\right\rvert"),
-            "theta_n": (rf"\theta = \lvert {f(ang(b - a, d, c), 6)}° - {f(ang(b + a, d, c), 6)}°\rvert = "
-                        rf"{f(th, 6)}°"),
+            "theta_n": (rf"\theta = \lvert {f(ang(b - a, d, c), 2)}° - {f(ang(b + a, d, c), 2)}°\rvert = "
+                        rf"{f(th, 2)}°"),
             "psi": (rf"\psi = \arccos\frac{{d^2 + c^2 - (b+a)^2}}{{2dc}} - \arccos\frac{{d^2 + c^2 - (b-a)^2}}{{2dc}}"),
-            "psi_n": rf"\psi = {f(ang(d, c, b + a), 6)}° - {f(ang(d, c, b - a), 6)}° = {f(psi, 6)}°",
-            "K": rf"K = \frac{{180° + \theta}}{{180° - \theta}} = {f(pp.time_ratio_K, 6)}",
-            "H": (rf"H = 2\,l_{{DC}}\sin\frac{{\psi}}{{2}} = 2 \times {f(R, 3)} \times \sin {f(psi / 2, 6)}° = "
-                  rf"{f(H, 6)}\ \text{{mm}}"),
+            "psi_n": rf"\psi = {f(ang(d, c, b + a), 2)}° - {f(ang(d, c, b - a), 2)}° = {f(psi, 2)}°",
+            "K": rf"K = \frac{{180° + \theta}}{{180° - \theta}} = {f(pp.time_ratio_K, 4)}",
+            "H": (rf"H = 2\,l_{{DC}}\sin\frac{{\psi}}{{2}} = 2 \times {l_dc} \times \sin {f(psi / 2, 2)}° = "
+                  rf"2 \times {l_dc} \times {sig(np.sin(syn.swing / 2), 4, group=False)} = {f(H, 2)}\ \text{{mm}}"),
         }
     eq = {
         "psi": (rf"\psi = 2\arcsin\frac{{H}}{{2\,l_{{DC}}}} = 2\arcsin\frac{{{f(H, 0)}}}{{2 \times {f(R, 0)}}}"
@@ -272,7 +274,7 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
         "torque": r"M_b\,\omega = F_r\,\lvert v_E\rvert \quad\Rightarrow\quad M_b = \frac{F_r\,\lvert v_E\rvert}{\omega}",
         "hand": (rf"\bar P = \frac{{(F_{{r1}} + F_{{r2}})\,H\,n}}{{60}} = \frac{{({f(pp.working_force, 0)} + "
                  rf"{f(pp.return_force, 0)}) \times {f(pp.stroke, 3)} \times {f(pp.crank_speed_rpm, 0)}}}{{60}}"
-                 rf" = {f(chk.hand_power, 3)}\ \text{{W}}"),
+                 rf" = {sig(chk.hand_power, group=False)}\ \text{{W}}"),
         "mean": (rf"\bar P = \bar M_b\,\omega = {sig(chk.mean_torque, 4, group=False)} \times "
                  rf"{sig(abs(pp.crank_omega), 4, group=False)} = {sig(chk.mean_power, 4, group=False)}\ \text{{W}}"),
     }
@@ -311,11 +313,11 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
          f(sd.eq3_lhs * DEG, 2) + "°", "180°", f((sd.eq3_lhs - np.pi) * DEG, 2) + "°"],
     ]
     seed_sim_rows = [
-        ["$K$", f(sd.time_ratio, 4), f(pp.time_ratio_K, 6 if given else 2)],
+        ["$K$", f(sd.time_ratio, 4), f(pp.time_ratio_K, 4 if given else 2)],
         ["$\\theta$ /°", f(sd.theta * DEG, 3), f(th, 3)],
         ["$\\psi$ /°", f(sd.swing * DEG, 3), f(psi, 3)],
         [_("chord of C (≈ the stroke) / mm"),
-         f(sd.stroke_C * MM, 2), f(H, 6 if given else 0)],
+         f(sd.stroke_C * MM, 2), f(H, 2 if given else 0)],
         ["$\\gamma_{min}$ /°", f(sd.gamma_min * DEG, 2), "≥ " + f(syn.gamma_limit * DEG, 0)],
     ]
     side_txt = _({
@@ -327,13 +329,13 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
             crit = _("the limit at B is active: O1 sits where the working-stroke transmission angle "
                       "is exactly {lim}°; without it the best $\\gamma_{{min}}$ would be "
                       "{gamma_unconstrained}°.", lim=f(90 - lim, 0),
-                      gamma_unconstrained=f(syn.gamma_unconstrained * DEG, 3))
+                      gamma_unconstrained=f(syn.gamma_unconstrained * DEG, 2))
         elif not syn.limit_rocker:
             crit = _("the pressure angle at B is not limited.")
         else:
             crit = _("the limit at B is not active at the optimum (the unconstrained maximum of "
                       "$\\gamma_{min}$ meets it).")
-        best = f(syn.gamma_other_side_free * DEG, 3)
+        best = f(syn.gamma_other_side_free * DEG, 2)
         other = (_("On the other θ-circle the best $\\gamma_{{min}}$ is only {best}°, and it cannot "
                    "meet the limit at B.", best=best)
                  if syn.limit_rocker and syn.gamma_other_side == 0 else
@@ -343,7 +345,7 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
                   "radius d about D cuts the circle of radius b − a about B1, on the θ-circle "
                   "(the best $\\gamma_{{min}}$ on the same θ-circle would be "
                   "{gamma_unconstrained}°).",
-                  gamma_unconstrained=f(syn.gamma_unconstrained * DEG, 3))
+                  gamma_unconstrained=f(syn.gamma_unconstrained * DEG, 2))
         other = ""
     else:
         crit = _("the frame is given: O1 is where the circle of radius d about D cuts the "
@@ -369,9 +371,9 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
     tol = 1e-6
     verify_rows = [
         [_("simulated stroke (position search) / mm"),
-         f(chk.stroke * MM, 4), f"H = {f(H, 6 if given else 0)}", _ok(abs(chk.stroke_error) <= tol * pp.stroke, _)],
+         f(chk.stroke * MM, 4), f"H = {f(H, 4 if given else 0)}", _ok(abs(chk.stroke_error) <= tol * pp.stroke, _)],
         [_("simulated time ratio K"), f(chk.time_ratio, 4),
-         f(pp.time_ratio_K, 6 if given else 2), _ok(abs(chk.time_ratio - pp.time_ratio_K) <= tol, _)],
+         f(pp.time_ratio_K, 4 if given else 2), _ok(abs(chk.time_ratio - pp.time_ratio_K) <= tol, _)],
         [_("largest pressure angle at E, working stroke / °"),
          f(chk.alpha_E_work * DEG, 4), _("≤ {lim} ({alpha_E})", lim=f(lim, 0),
                                          alpha_E=f(syn.alpha_E * DEG, 4)), _ok(chk.alpha_E_work <= syn.alpha_limit + 1e-9, _)],
@@ -400,16 +402,16 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
         "seed_sim_rows": seed_sim_rows, "side": side_txt, "criterion": crit, "other_side": other,
         "sense": sense, "towards": towards, "linkage": lk, "torque_rows": torque_rows,
         "drive": drive, "verify_rows": verify_rows, "findings": findings,
-        "H": f(H, 6 if given else 0), "n": f(pp.crank_speed_rpm, 0),
-        "K": f(pp.time_ratio_K, 6 if given else 2), "given": given_eq,
+        "H": f(H, 2 if given else 0), "n": f(pp.crank_speed_rpm, 0),
+        "K": f(pp.time_ratio_K, 4 if given else 2), "given": given_eq,
         "DC": f(R, 0), "CE": f(L, 0), "lim": f(lim, 0), "gam_lim": f(syn.gamma_limit * DEG, 0),
         "lim_B": f(90 - lim, 0), "limit_rocker": pp.limit_rocker,
         "gamma_min": f(syn.gamma_min * DEG, 3), "alpha_B": f(syn.alpha_B * DEG, 3),
         "alpha_E": f(syn.alpha_E * DEG, 4),
         "seed_a": f(sd.crank * MM, 2), "seed_b": f(sd.coupler * MM, 2),
         "seed_d": f(sd.frame * MM, 2), "seed_c": f(sd.rocker * MM, 0), "seed_chord": f(sd.chord * MM, 2),
-        "mean_torque": f(chk.mean_torque, 4), "mean_power": f(chk.mean_power, 4),
-        "peak_torque": f(chk.peak_torque, 3), "peak_factor": f(chk.peak_factor, 3),
-        "hand_power": f(chk.hand_power, 3), "seed_power": f(2 * pp.working_force * pp.stroke
-                                                            * pp.crank_speed_rpm / 60.0, 3),
+        "mean_torque": sig(chk.mean_torque), "mean_power": sig(chk.mean_power),
+        "peak_torque": sig(chk.peak_torque), "peak_factor": sig(chk.peak_factor),
+        "hand_power": sig(chk.hand_power), "seed_power": sig(2 * pp.working_force * pp.stroke
+                                                              * pp.crank_speed_rpm / 60.0),
     }

@@ -412,7 +412,7 @@ def synthesize(pp: PusherParams) -> PusherSynthesis:
         warnings.append(finding(
             "transmission_angle_best",
             N_("the minimum transmission angle {gamma:.2f}° is already the largest possible for "
-               "K = {K:g} and the swing ψ = {psi:.3f}°: raising it needs a smaller K or a larger "
+               "K = {K:g} and the swing ψ = {psi:.2f}°: raising it needs a smaller K or a larger "
                "swing (a larger H/DC)"), gamma=np.degrees(g_min), K=pp.time_ratio_K,
             psi=np.degrees(swing)))
     return PusherSynthesis(
@@ -527,7 +527,8 @@ def check(p: FurnaceParams, syn: PusherSynthesis, k, f, v) -> PusherCheck:
     warnings = []
     if abs(v.stroke - pp.stroke) > 1e-6 * pp.stroke or abs(v.time_ratio - pp.time_ratio_K) > 1e-6:
         warnings.append(finding(
-            "spec", N_("the simulated stroke {H:.4f} mm and K = {K:.5f} miss the specification"),
+            "spec", N_("the simulated stroke {H:.2f} mm and K = {K:.4f} miss the specification (the check allows "
+                        "a relative 10⁻⁶)"),
             H=v.stroke * 1e3, K=v.time_ratio))
     if pp.limit_rocker and np.pi / 2 - rrr.working_extreme > pp.pressure_angle_max + 1e-6:
         warnings.append(finding(

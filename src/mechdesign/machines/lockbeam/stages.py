@@ -110,8 +110,8 @@ def transmission(p: LockbeamParams) -> Transmission:
     slip = p.motor_rpm * (1.0 - t.slip) / float(exact)
     if abs(out - p.rate) > 1e-9 * p.rate:
         warnings.append(finding(
-            "ratio", N_("the train's ratio {i:.4f} turns the main shaft at {n:.3f} rpm, but the "
-                        "production rate needs {rate:g} rpm (a ratio of {need:.4f})"),
+            "ratio", N_("the train's ratio {i:.4g} turns the main shaft at {n:.2f} rpm, but the "
+                        "production rate needs {rate:g} rpm (a ratio of {need:.4g})"),
             i=float(exact), n=out, rate=p.rate, need=p.motor_rpm / p.rate))
     shafts = []
     power = t.power

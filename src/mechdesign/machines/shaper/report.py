@@ -14,7 +14,7 @@ import numpy as np
 from ...render import figures as fig
 from ...render import guide_bar_report as gb_report
 from ...i18n import N_, tr
-from ...render.fmt import e, f, in_lang, md_meta, verdict
+from ...render.fmt import e, f, in_lang, md_meta, sig, verdict
 
 DEG = 180.0 / np.pi
 
@@ -191,15 +191,15 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
     fly_eq = {
         "mr": (rf"M_r = \frac{{M_b}}{{i}}, \quad i = \frac{{z_2}}{{z_1}} = \frac{{{p.z2}}}{{{p.z1}}}"
                rf" = {f(i_ratio, 4)}") if fl.shaft == "pinion" else r"M_r = M_b",
-        "md": (rf"M_d = \frac{{1}}{{2\pi}}\int_0^{{2\pi}} M_r\,d\varphi = {f(fl.shaft_torque, 3)}"
+        "md": (rf"M_d = \frac{{1}}{{2\pi}}\int_0^{{2\pi}} M_r\,d\varphi = {sig(fl.shaft_torque, group=False)}"
                rf"\ \text{{N·m}}"),
         "jf": (rf"J_F = \frac{{900\,\Delta W_{{max}}}}{{\pi^2 n^2 [\delta]}} = \frac{{900 \times "
-               rf"{f(fl.max_energy_swing, 2)}}}{{\pi^2 \times {f(fl.shaft_speed_rpm, 2)}^2 \times "
-               rf"{f(p.fluctuation, 4)}}} = {f(fl.inertia, 3)}\ \text{{kg·m}}^2"),
-        "mass": (rf"m = \frac{{4 J_F}}{{D^2}} = \frac{{4 \times {f(fl.inertia, 3)}}}"
+               rf"{sig(fl.max_energy_swing, group=False)}}}{{\pi^2 \times {f(fl.shaft_speed_rpm, 2)}^2 \times "
+               rf"{f(p.fluctuation, 4)}}} = {sig(fl.inertia, group=False)}\ \text{{kg·m}}^2"),
+        "mass": (rf"m = \frac{{4 J_F}}{{D^2}} = \frac{{4 \times {sig(fl.inertia, group=False)}}}"
                  rf"{{{f(fl.rim.diameter, 3)}^2}} = {f(fl.rim.rim_mass, 2)}\ \text{{kg}}"),
         "width": (rf"b = \sqrt{{\frac{{4 g J_F}}{{\pi D^3 (H/b) \gamma}}}} = \sqrt{{\frac{{4 \times "
-                  rf"{f(p.gravity, 2)} \times {f(fl.inertia, 3)}}}{{\pi \times "
+                  rf"{f(p.gravity, 2)} \times {sig(fl.inertia, group=False)}}}{{\pi \times "
                   rf"{f(fl.rim.diameter, 3)}^3 \times {f(p.rim_height_to_width, 2)} \times "
                   rf"{f(p.specific_weight, 0)}}}}} = {f(fl.rim.width * mm, 1)}\ \text{{mm}}"),
     }
@@ -230,20 +230,20 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
         "grid_points": str(n),
         "max_v": f(k.linkage.speed_peak, 3),
         "max_a": f(k.linkage.accel_peak, 3),
-        "mb_max": f(r["linkage_forces"].torque_max, 2),
-        "mb_min": f(r["linkage_forces"].torque_min, 2),
-        "mb_mean": f(fl.mean_torque, 2),
+        "mb_max": sig(r["linkage_forces"].torque_max, ref=r["linkage_forces"].peak_torque),
+        "mb_min": sig(r["linkage_forces"].torque_min, ref=r["linkage_forces"].peak_torque),
+        "mb_mean": sig(fl.mean_torque),
         "power": f(fl.mean_power, 1),
         "fly": {
             "shaft_zh": zh_words(shaft), "shaft_en": shaft,
-            "n": f(fl.shaft_speed_rpm, 2), "md": f(fl.shaft_torque, 3),
+            "n": f(fl.shaft_speed_rpm, 2), "md": sig(fl.shaft_torque),
             # the flywheel is designed for the nominal speed; the drive's shafts turn at the
             # speeds its motor and chosen ratios give: say which is which where both appear
             "n_note": ("" if r.get("drive") is None else
                        _(", the nominal speed: the crank speed times the gear ratio; the drive "
                          "chapter's shaft speeds are the realised ones, the motor speed divided by the "
                          "chosen ratios, and differ from it by the ratio error")),
-            "dw": f(fl.max_energy_swing, 2), "jf": f(fl.inertia, 3),
+            "dw": sig(fl.max_energy_swing), "jf": sig(fl.inertia),
             "at_min": f(fl.phase_at_min * DEG, 1), "at_max": f(fl.phase_at_max * DEG, 1),
             "D": f(fl.rim.diameter * mm, 0), "b": f(fl.rim.width * mm, 1),
             "Hr": f(fl.rim.height * mm, 1), "m": f(fl.rim.rim_mass, 2),
