@@ -61,23 +61,10 @@ def _box_overlap(a, b) -> float:
 
 
 def _segment_hits_box(p0, p1, box) -> bool:
-    """Whether the segment p0–p1 (display coordinates) meets the box (Liang–Barsky)."""
-    x0, y0 = p0
-    dx, dy = p1[0] - x0, p1[1] - y0
-    t0, t1 = 0.0, 1.0
-    for p, q in ((-dx, x0 - box[0]), (dx, box[2] - x0), (-dy, y0 - box[1]), (dy, box[3] - y0)):
-        if p == 0:
-            if q < 0:
-                return False
-            continue
-        t = q / p
-        if p < 0:
-            t0 = max(t0, t)
-        else:
-            t1 = min(t1, t)
-        if t0 > t1:
-            return False
-    return True
+    """Whether the segment p0–p1 (display coordinates) meets the box."""
+    from .sheet import clip_segment
+
+    return clip_segment(complex(*p0), complex(*p1), box) is not None
 
 
 def _screen_segments(ax, segments) -> list:
