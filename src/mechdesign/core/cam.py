@@ -605,24 +605,102 @@ class RollerEnvelope:
     roller_radius: float             # [m]
 
 
-def polyline_distance(points, polyline, k: int = 6) -> np.ndarray:
-    """Shortest distance from each point (complex) to the closed polyline (complex vertices),
-    measured to its segments (the segments next to the ``k`` nearest vertices)."""
-    from scipy.spatial import cKDTree
+def _segment_distance(p, a, d):
+    """Distance from the points ``p`` to the segments from ``a`` along ``d`` (complex,
+    broadcast)."""
+    t = np.real(np.conj(d) * (p - a)) / np.maximum(np.abs(d) ** 2, 1e-300)
+    return np.abs(p - (a + np.clip(t, 0.0, 1.0) * d))
 
+
+def _lower_bound_by_owner(owner, dist, slack, bound, tol):
+    """For pairs sorted by ``owner``: lower each owner's ``bound`` (in place) to its smallest
+    ``dist + slack``, and return the mask of the pairs with ``dist - slack <= bound``."""
+    if len(owner) == 0:
+        return np.zeros(0, dtype=bool)
+    first = np.flatnonzero(np.r_[True, owner[1:] != owner[:-1]])
+    who = owner[first]
+    bound[who] = np.minimum(bound[who], np.minimum.reduceat(dist + slack, first))
+    return dist - slack <= bound[owner] + tol
+
+
+_LEAF, _FAN, _TOP, _BATCH = 8, 8, 64, 65536
+
+
+def polyline_distance(points, polyline) -> np.ndarray:
+    """Shortest distance from each point (complex) to the closed polyline (complex vertices,
+    the last joined to the first): exactly the minimum over all its segments, for any points.
+
+    Pure numpy, no spatial index to import: the segments are grouped along the polyline
+    into runs of 8, 64, 512, … consecutive segments; a run lies inside the capsule of
+    radius ``dev`` (the largest distance of its vertices from it) around its chord, so its
+    distance from a point is at least chord distance − dev and at most chord distance + dev.
+    Walking down from the longest runs, a run is dropped where its lower bound exceeds the
+    smallest upper bound found for the point; the segments of the runs of 8 that are left
+    are measured. The points are taken in blocks of consecutive points inside a disk (the
+    disk's radius widens both bounds), which is fast when they lie along a curve as the
+    cam's do; any order gives the same result."""
     pts = np.atleast_1d(np.asarray(points, dtype=complex))
     poly = np.asarray(polyline, dtype=complex)
-    n = len(poly)
-    k = min(k, n)
-    _, idx = cKDTree(np.column_stack([poly.real, poly.imag])).query(
-        np.column_stack([pts.real, pts.imag]), k=k)
-    idx = idx.reshape(len(pts), k)
-    a = poly[np.concatenate([idx, (idx - 1) % n], axis=1)]
-    b = poly[np.concatenate([(idx + 1) % n, idx], axis=1)]
-    ab = b - a
-    p = pts[:, None]
-    t = np.real(np.conj(ab) * (p - a)) / np.maximum(np.abs(ab) ** 2, 1e-300)
-    return np.min(np.abs(p - (a + np.clip(t, 0.0, 1.0) * ab)), axis=1)
+    m, n = len(poly), len(pts)
+    out = np.full(n, np.nan)                        # stays NaN for a point that is not finite
+    if n == 0 or m == 0:
+        return out
+    # runs of segments: run j of a level holds the segments [j·size, (j+1)·size)
+    sizes = [_LEAF]
+    while -(-m // sizes[-1]) > _TOP:
+        sizes.append(sizes[-1] * _FAN)
+    levels = []
+    for size in sizes:
+        start = np.arange(-(-m // size)) * size
+        c0 = poly[start]
+        cd = poly[np.minimum(start + size, m) % m] - c0
+        verts = poly[np.minimum(start[:, None] + np.arange(size + 1), m) % m]
+        levels.append((c0, cd, np.max(_segment_distance(verts, c0[:, None], cd[:, None]), axis=1)))
+    seg = np.minimum(np.arange(len(levels[0][0]) * _LEAF), m - 1).reshape(-1, _LEAF)
+    a = poly[seg]                                   # the last run padded with its last segment
+    d = poly[(seg + 1) % m] - a
+    size = np.abs(np.concatenate([poly, pts]))
+    tol = 1e-10 * 2 * np.max(size[np.isfinite(size)], initial=1.0)     # rounding of the bounds
+    # a block of points spans about as much of a curve as a run of 8 segments
+    q = int(np.clip(round(_LEAF * n / m), 1, 32))
+    for s0 in range(0, n, _BATCH):
+        p = pts[s0:s0 + _BATCH]
+        k = len(p)
+        nb = -(-k // q)
+        grp = p[np.minimum(np.arange(nb * q), k - 1)].reshape(nb, q)
+        centre = (0.5 * (grp.real.min(axis=1) + grp.real.max(axis=1))
+                  + 0.5j * (grp.imag.min(axis=1) + grp.imag.max(axis=1)))
+        radius = np.max(np.abs(grp - centre[:, None]), axis=1)
+        top = len(levels[-1][0])
+        blk, run = np.repeat(np.arange(nb), top), np.tile(np.arange(top), nb)
+        bound = np.full(nb, np.inf)
+        for level in range(len(levels) - 1, -1, -1):
+            c0, cd, dev = levels[level]
+            if level < len(levels) - 1:             # the sub-runs of the runs left
+                blk = np.repeat(blk, _FAN)
+                run = (run[:, None] * _FAN + np.arange(_FAN)).ravel()
+                ok = run < len(c0)
+                blk, run = blk[ok], run[ok]
+            dist = _segment_distance(centre[blk], c0[run], cd[run])
+            keep = _lower_bound_by_owner(blk, dist, dev[run] + radius[blk], bound, tol)
+            blk, run = blk[keep], run[keep]
+        # each point of a block against the block's runs of 8, then their segments
+        c0, cd, dev = levels[0]
+        i = (blk[:, None] * q + np.arange(q)).ravel()
+        run = np.repeat(run, q)
+        ok = i < k
+        i, run = i[ok], run[ok]
+        order = np.argsort(i, kind="stable")
+        i, run = i[order], run[order]
+        dist = _segment_distance(p[i], c0[run], cd[run])
+        keep = _lower_bound_by_owner(i, dist, dev[run], np.full(k, np.inf), tol)
+        i, run = i[keep], run[keep]
+        if len(i) == 0:                             # no finite point in this batch
+            continue
+        best = np.min(_segment_distance(p[i, None], a[run], d[run]), axis=1)
+        first = np.flatnonzero(np.r_[True, i[1:] != i[:-1]])
+        out[s0 + i[first]] = np.minimum.reduceat(best, first)
+    return out
 
 
 def _crossing(p0, p1, q0, q1, lines: bool = False):
