@@ -133,7 +133,7 @@ class TogglePress(StrictModel):
     def _one_form(self):
         """Either the requirements (H, K) or the dimensions; closed-form checks of the
         dimensions (Grashof's crank-rocker, the toggle's reach), each at its field."""
-        from ..crank_rocker.brief import crank_rocker_problems, raise_missing
+        from ...brief.rules import crank_rocker_problems, raise_missing
 
         if self.dimensions is None:
             raise_missing(self, [n for n in ("stroke_H_mm", "time_ratio_K") if getattr(self, n) is None])

@@ -78,7 +78,7 @@ class PusherSection(StrictModel):
     def _one_form(self):
         """Either the requirements (H, K) or the dimensions; closed-form checks of the
         dimensions (Grashof, B on the rocker)."""
-        from ..crank_rocker.brief import crank_rocker_problems, raise_missing
+        from ...brief.rules import crank_rocker_problems, raise_missing
 
         out = Problems(self)
         if self.dimensions is None:
