@@ -6,17 +6,25 @@ Rerun from a clean clone (the peers are an optional extra, never a run-time depe
         && .venv-peers/bin/python benchmarks/peers.py            # add --markdown for the README
 
 Options: --sizes 360,3600,100000  --rounds 9  --quick (sizes 360,3600, 3 rounds: smoke run)
---no-fresh  --markdown. A full run takes a few minutes (mechanism's fsolve dominates).
+--no-fresh  --clock cpu|wall  --markdown. A full run takes a few minutes (mechanism's fsolve
+and the fresh processes dominate).
 
 How it is timed (issue 22: figures a sceptic accepts)
 * every solver is timed on exactly the work asked of it, returning its own natural output;
   turning that into the comparison's arrays (complex C, angles) happens outside the clock;
+* the clock (--clock): cpu (default) times a sample by time.process_time, the process's own
+  user + system CPU time, which other work on a shared machine disturbs far less than the
+  wall clock (it still slows every CPU-bound program somewhat: caches, memory bandwidth);
+  wall times it by time.perf_counter;
 * interleaved rounds: round r times every solver once, the order rotated by r, so none is
   always first and a disturbance of the shared machine hits all alike; a sample loops the
   call to ≥ 20 ms; medians with the first and third quartiles;
-* each fast solver is also timed alone in a fresh process (a subprocess per solver and
-  size): in a shared process another library's freed arrays spare the next one its page
-  faults, which flatters whoever runs second;
+* each fast solver is also timed alone in fresh processes: in a shared process another
+  library's freed arrays spare the next one its page faults, which flatters whoever runs
+  second. Round r starts one fresh process per solver (the order rotated by r; it imports
+  only that solver's library, makes one warm-up call and times one sample), so the "alone"
+  column is also a median [quartiles] over interleaved rounds; the kernel's resource usage
+  of each child (its whole CPU time: start-up, imports, warm-up, sample) is printed too;
 * the reference is the strongest plain closed form we could write (real arithmetic, one
   sqrt and two arctan2 for the four-bar, no complex exponentials), not a slow one.
 A peer that is not installed is reported as "not installed"; the script also runs in the plain
@@ -85,6 +93,11 @@ import statistics
 import subprocess
 import sys
 import time
+
+try:
+    import resource                  # the children's CPU time (POSIX)
+except ImportError:                  # pragma: no cover - Windows
+    resource = None
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -635,20 +648,27 @@ def hand_solver(fourbar):
 
 
 # ---------------------------------------------------------------- timing and comparison
+#: the clock of every sample: "cpu" (time.process_time: this process's user + system CPU time,
+#: every thread; what other work on a shared machine disturbs least) or "wall"
+#: (time.perf_counter); --clock sets it (default cpu)
+CLOCKS = {"cpu": time.process_time, "wall": time.perf_counter}
+clock = CLOCKS["cpu"]
+
+
 def _calibrate(fn, phi):
     """One warm-up call (its output is kept for the comparison) and the number of calls per
     sample so that a sample lasts ≥ 20 ms."""
-    t = time.perf_counter()
+    t = clock()
     out = fn(phi)
-    first = time.perf_counter() - t
+    first = clock() - t
     return out, max(1, int(0.02 / max(first, 1e-7)))
 
 
 def _sample(fn, phi, loops):
-    t = time.perf_counter()
+    t = clock()
     for _ in range(loops):
         fn(phi)
-    return (time.perf_counter() - t) / loops
+    return (clock() - t) / loops
 
 
 def spread(samples):
@@ -677,18 +697,40 @@ def interleaved(jobs, phi, rounds):
     return {key: (samples[key], out) for key, _, _, out in prepared}
 
 
-def alone(label, fourbar, name, n, rounds):
-    """``name``'s pos+vel+acc at ``n`` crank angles, timed alone in a fresh process (no other
-    library's arrays freed before it): (median, q1, q3) [s], or None if it failed."""
-    out = subprocess.run([sys.executable, __file__, "--alone", name, "--linkage",
-                          "four-bar" if fourbar else "slider-crank", "--n", str(n),
-                          "--rounds", str(rounds)], capture_output=True, text=True)
-    if out.returncode != 0:
-        return None
-    return tuple(json.loads(out.stdout.strip().splitlines()[-1]))
+def alone(fourbar, names, n, rounds, clock_name):
+    """Each solver of ``names`` timed alone in fresh processes, in interleaved rounds: round r
+    starts one fresh process per solver (the order rotated by r), which imports only that
+    solver's library, makes one warm-up call and times one sample (calls looped to ≥ 20 ms)
+    of pos+vel+acc at ``n`` crank angles with ``clock_name``. Returns name → (median, q1,
+    q3) [s per call] over the rounds, and name → the children's own CPU time [s] (user +
+    system from the kernel's resource usage: imports, warm-up and sample), or None where a
+    child failed."""
+    samples = {name: [] for name in names}
+    child_cpu = {name: [] for name in names}
+    failed = set()
+    for r in range(rounds):
+        for i in range(len(names)):
+            name = names[(r + i) % len(names)]
+            if name in failed:
+                continue
+            before = resource.getrusage(resource.RUSAGE_CHILDREN) if resource else None
+            out = subprocess.run([sys.executable, __file__, "--alone", name, "--linkage",
+                                  "four-bar" if fourbar else "slider-crank", "--n", str(n),
+                                  "--clock", clock_name], capture_output=True, text=True)
+            if resource:
+                after = resource.getrusage(resource.RUSAGE_CHILDREN)
+                child_cpu[name].append(after.ru_utime + after.ru_stime
+                                       - before.ru_utime - before.ru_stime)
+            if out.returncode != 0:
+                failed.add(name)
+                continue
+            samples[name].append(json.loads(out.stdout.strip().splitlines()[-1]))
+    return ({name: spread(v) if v and name not in failed else None for name, v in samples.items()},
+            {name: statistics.median(v) if v and name not in failed else None
+             for name, v in child_cpu.items()})
 
 
-def _alone_child(linkage, name, n, rounds):
+def _alone_child(linkage, name, n):
     fourbar = linkage == "four-bar"
     build = {OURS: ours_solver, PLAIN: hand_solver, "kinepy": kinepy_solver,
              "mechanism (fsolve)": mechanism_solver,
@@ -696,8 +738,8 @@ def _alone_child(linkage, name, n, rounds):
              "pylinkage (pure Python)": lambda f: pylinkage_solvers(f)[1]}[name]
     s = build(fourbar)                   # only this solver's library is imported
     phi = crank_angles(n)
-    got = interleaved([(name, s.full)], phi, rounds)
-    print(json.dumps(spread(got[name][0])))
+    _, loops = _calibrate(s.full, phi)
+    print(json.dumps(_sample(s.full, phi, loops)))
 
 
 def deviation(res, ref):
@@ -731,9 +773,10 @@ class Row:
     pos_spread: tuple | None = None     # (median, q1, q3)
     full_spread: tuple | None = None
     full_alone: tuple | None = None     # pos+vel+acc alone in a fresh process
+    alone_process_cpu: float | None = None   # median CPU [s] of its whole fresh process
 
 
-def run_linkage(label, fourbar, sizes, rounds, log, fresh=True):
+def run_linkage(label, fourbar, sizes, rounds, log, fresh=True, clock_name="cpu"):
     solvers = [ours_solver(fourbar), hand_solver(fourbar), *pylinkage_solvers(fourbar),
                mechanism_solver(fourbar), kinepy_solver(fourbar)]
     rows, compile_notes = [], []
@@ -749,6 +792,8 @@ def run_linkage(label, fourbar, sizes, rounds, log, fresh=True):
         jobs = [((s.name, "pos"), s.pos) for s in fast] + [((s.name, "full"), s.full) for s in fast]
         got = interleaved(jobs, phi, rounds)
         ref = solvers[0].convert_full(got[(solvers[0].name, "full")][1])
+        lone, lone_cpu = (alone(fourbar, [s.name for s in fast], n, rounds, clock_name)
+                          if fresh else ({}, {}))
         for s in solvers:
             if not s.available:
                 rows.append(Row(label, s.name, n, note=s.missing))
@@ -774,10 +819,9 @@ def run_linkage(label, fourbar, sizes, rounds, log, fresh=True):
                 out = got[(s.name, "full")][1]
             res = s.check(phi) if s.check is not None else s.convert_full(out)
             measured[s.name] = (n, ps[0], fs[0])
-            lone = alone(label, fourbar, s.name, n, rounds) if fresh and not s.slow else None
             rows.append(Row(label, s.name, n, ps[0], fs[0], dev=deviation(res, ref),
                             note="; ".join(s.notes), pos_spread=ps, full_spread=fs,
-                            full_alone=lone))
+                            full_alone=lone.get(s.name), alone_process_cpu=lone_cpu.get(s.name)))
     return rows, compile_notes, solvers
 
 
@@ -886,16 +930,23 @@ def main(argv=None):
     ap.add_argument("--no-fresh", action="store_true",
                     help="skip the timings of each solver alone in a fresh process")
     ap.add_argument("--markdown", action="store_true", help="print the tables as Markdown")
+    ap.add_argument("--clock", choices=sorted(CLOCKS), default="cpu",
+                    help="what a sample measures: cpu = time.process_time (user + system CPU "
+                         "of the process; default: least disturbed by other work on a shared "
+                         "machine) or wall = time.perf_counter")
     ap.add_argument("--alone", help=argparse.SUPPRESS)       # child: one solver, fresh process
     ap.add_argument("--linkage", help=argparse.SUPPRESS)
     ap.add_argument("--n", type=int, help=argparse.SUPPRESS)
     args = ap.parse_args(argv)
+    global clock
+    clock = CLOCKS[args.clock]
     if args.alone:
-        _alone_child(args.linkage, args.alone, args.n, args.rounds)
+        _alone_child(args.linkage, args.alone, args.n)
         return 0
     sizes = [360, 3600] if args.quick else [int(x) for x in args.sizes.split(",") if x.strip()]
     rounds = 3 if args.quick else max(1, args.rounds)
     t_start = time.perf_counter()
+    load_start = os.getloadavg()[0] if hasattr(os, "getloadavg") else float("nan")
 
     def log(msg):
         print(msg, file=sys.stderr, flush=True)
@@ -911,7 +962,7 @@ def main(argv=None):
     all_rows, notes, targets = [], [], []
     for label, fourbar in (("four-bar", True), ("slider-crank", False)):
         rows, cn, solvers = run_linkage(label, fourbar, sizes, rounds, log,
-                                        fresh=not args.no_fresh)
+                                        fresh=not args.no_fresh, clock_name=args.clock)
         all_rows += rows
         notes += cn
         n = max(sizes)
@@ -977,13 +1028,16 @@ def main(argv=None):
     print(("## " if md else "") + "Peer benchmark: planar linkage kinematics")
     print()
     print("Versions: " + ", ".join(versions) + f"; Python {sys.version.split()[0]}; "
-          f"{os.cpu_count()} CPUs, load average {load:.2f} at the end; {rounds} interleaved "
-          f"rounds per size (each solver once per round, the order rotating), sizes "
-          f"{', '.join(map(str, sizes))}")
+          f"{os.cpu_count()} CPUs, load average {load_start:.2f} at the start, {load:.2f} at "
+          f"the end; {rounds} interleaved rounds per size (each solver once per round, the "
+          f"order rotating), sizes {', '.join(map(str, sizes))}; clock: {args.clock} ("
+          + ("time.process_time: CPU time of the process, user + system"
+             if args.clock == "cpu" else "time.perf_counter: wall time") + ")")
     print()
-    head = ["linkage", "solver", "N", "pos only [ms]", "pos+vel+acc [ms]",
-            "pos+vel+acc alone [ms]", "max|ΔC|/max|C|", "max|Δθ| [rad]", "rel Δvel C",
-            "rel Δacc C", "notes"]
+    unit = "ms CPU" if args.clock == "cpu" else "ms"
+    head = ["linkage", "solver", "N", f"pos only [{unit}]", f"pos+vel+acc [{unit}]",
+            f"pos+vel+acc alone [{unit}]", "alone: process CPU [s]", "max|ΔC|/max|C|",
+            "max|Δθ| [rad]", "rel Δvel C", "rel Δacc C", "notes"]
     body = []
     for r in all_rows:
         d = r.dev or {}
@@ -1007,7 +1061,9 @@ def main(argv=None):
         pos = r.pos_spread or ((r.t_pos,) * 3 if r.t_pos is not None else None)
         full = r.full_spread or ((r.t_full,) * 3 if r.t_full is not None else None)
         body.append([r.linkage, r.solver, f"{r.n:,}", fmt_ms(pos, r.est), fmt_ms(full, r.est),
-                     fmt_ms(r.full_alone), fmt_e(d.get("pos")), fmt_e(d.get("ang")),
+                     fmt_ms(r.full_alone),
+                     "—" if r.alone_process_cpu is None else f"{r.alone_process_cpu:.2f}",
+                     fmt_e(d.get("pos")), fmt_e(d.get("ang")),
                      fmt_e(d.get("vel")), fmt_e(d.get("acc")), note])
     print(table(head, body, md))
     print()
@@ -1015,9 +1071,13 @@ def main(argv=None):
             "the call to ≥ 20 ms. Each solver returns its own natural output (ours a Motion, "
             "pylinkage its arrays or lists, kinepy its point array); turning it into the "
             "comparison's arrays happens outside the clock.",
-            "\"alone\": the same pos+vel+acc call timed in a fresh process that runs only "
-            "that solver (no other library's freed arrays to reuse); the interleaved columns "
-            "share one process.",
+            "\"alone\": the same pos+vel+acc call timed in fresh processes that run only "
+            "that solver (no other library's freed arrays to reuse): one process per solver "
+            "and round, the rounds interleaved (the order rotating), each timing one sample "
+            "after a warm-up call; median [quartiles] over the rounds. \"process CPU\": the "
+            "median CPU time (user + system, the kernel's resource usage of the child) of such "
+            "a whole process: interpreter, imports, warm-up and the sample. The interleaved "
+            "columns share one process.",
             "~ extrapolated from the largest measured size at constant throughput (the slow "
             "path would take minutes); its deviations are those of the measured row.",
             "Deviations are against ours: output point C relative to max|C|, angles θ3 (and θ4) "
@@ -1032,7 +1092,7 @@ def main(argv=None):
     print()
     kbody = [[name, f"{n:,}", "—" if t is None else f"{t * 1e3:.3g}",
               fmt_e(dev), note or ""] for name, n, t, dev, note in kin_rows]
-    print(table(["solver", "N", "median ms per call", "max|ΔM_b| / max|M_b| vs power balance",
+    print(table(["solver", "N", f"median {unit} per call", "max|ΔM_b| / max|M_b| vs power balance",
                  "notes"], kbody, md))
     print()
     print("Masses: crank 1 kg, coupler 2 kg, rocker 3 kg at mid-link, J = m·l²/12, "
