@@ -1034,7 +1034,7 @@ def main(argv=None):
           + ("time.process_time: CPU time of the process, user + system"
              if args.clock == "cpu" else "time.perf_counter: wall time") + ")")
     print()
-    unit = "ms CPU" if args.clock == "cpu" else "ms"
+    unit = "ms"         # of the clock named above (CPU time by default)
     head = ["linkage", "solver", "N", f"pos only [{unit}]", f"pos+vel+acc [{unit}]",
             f"pos+vel+acc alone [{unit}]", "alone: process CPU [s]", "max|ΔC|/max|C|",
             "max|Δθ| [rad]", "rel Δvel C", "rel Δacc C", "notes"]
@@ -1067,7 +1067,8 @@ def main(argv=None):
                      fmt_e(d.get("vel")), fmt_e(d.get("acc")), note])
     print(table(head, body, md))
     print()
-    foot = ["Times are per call: median [first–third quartile] of the rounds; a sample loops "
+    foot = [f"Times are {'CPU time (time.process_time)' if args.clock == 'cpu' else 'wall time'} "
+            "per call: median [first–third quartile] of the rounds; a sample loops "
             "the call to ≥ 20 ms. Each solver returns its own natural output (ours a Motion, "
             "pylinkage its arrays or lists, kinepy its point array); turning it into the "
             "comparison's arrays happens outside the clock.",
