@@ -198,6 +198,10 @@ def test_every_failed_check_is_named_failed_in_the_summary(reports, name, lang):
         assert "没有给出合格/不合格结论" in text or "no check with a verdict" in text
     if failed_rows:
         assert ("设计者应注意" in text) or ("should watch" in text)
+    elif rows and (("设计者应注意" in text) or ("should watch" in text)):
+        # every check passed, yet the run found problems no check covers (the press's gear 1,
+        # z = 17 < z_min = 2/sin²20° = 17.1, undercuts): "all passed" must not stand alone
+        assert "不在这些校核之内" in text or "outside these checks" in text, text
     # one verdict vocabulary: no other verdict words in the summary's table
     for word in ("满足", "✓", "fails", " ok "):
         assert not any(word in r for r in rows)
@@ -300,3 +304,25 @@ def test_a_rocking_outputs_stroke_is_summarised_as_its_swing_in_degrees():
                                                      "mean_torque": 12.5}}, "en"))
     assert rows["swing of the output [°]"] == "30"
     assert "peak torque [N·m]" not in rows and rows["mean torque [N·m]"] == "12.5"
+
+
+@pytest.mark.parametrize("lang", LANGS)
+@pytest.mark.parametrize("name", EXAMPLES)
+def test_every_verdict_cell_is_pass_or_fail(reports, name, lang):
+    """Issue 19 point 4: one verdict vocabulary. A table with a verdict column holds only
+    合格/不合格 (PASS/FAIL) in it; an item without a verdict belongs in the text, not in the
+    table (cam 7-3's plain offset curve was "0.110 mm | ≤ 0.001 mm | 已按包络修正")."""
+    md, _ = reports(name, lang)
+    allowed = {"合格", "不合格"} if lang == "zh" else {"PASS", "FAIL"}
+    header, bad = None, []
+    for line in md.splitlines():
+        if not line.startswith("|"):
+            header = None
+            continue
+        cells = [c.strip() for c in line.strip().strip("|").split("|")]
+        if header is None:
+            header = cells
+        elif not set(line) <= set("|:- ") and header[-1] in ("结论", "Verdict"):
+            if cells[-1] not in allowed:
+                bad.append(line)
+    assert not bad, bad

@@ -411,6 +411,9 @@ def summary_context(machine: str, document: dict, ctx: dict, lang: str, title: s
     return {"title": md_text(title) if title else "", "parts": _designed(document, lang),
             "key_rows": key_rows(machine, document, lang), "check_rows": groups,
             "checks_total": total, "checks_failed": failed, "all_passed": failed == 0,
+            # all checks passed, yet the run found design problems no check covers (an
+            # undercut gear): the verdict sentence must not read as a clean bill
+            "passed_with_findings": failed == 0 and bool(findings),
             "has_checks": bool(groups),
             "watch": watch}
 
