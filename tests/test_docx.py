@@ -218,3 +218,22 @@ def test_running_header_names_title_and_student_and_properties_author_and_subjec
     render_docx(md, alone, {"title": "Course design", "lang": "en"}, TEMPLATES)
     header = _part(alone, "word/header1.xml")
     assert "".join(re.findall(r"<w:t(?: [^>]*)?>([^<]*)</w:t>", header)) == "Course design"
+
+
+# CT_Settings children in schema order (ECMA-376 Part 1, §17.15.1.78), the part of the
+# sequence around w:updateFields that pandoc's settings.xml uses
+_SETTINGS_ORDER = ("zoom", "embedSystemFonts", "proofState", "defaultTabStop", "characterSpacingControl",
+                   "updateFields", "hdrShapeDefaults", "footnotePr", "endnotePr", "compat", "docVars",
+                   "rsids", "mathPr", "themeFontLang", "clrSchemeMapping", "shapeDefaults",
+                   "decimalSymbol", "listSeparator")
+
+
+def test_the_table_of_contents_is_filled_when_word_opens_the_file(zh_docx):
+    """Review finding: the TOC field pandoc writes is empty until the user updates fields.
+    ``w:updateFields`` makes Word fill it on opening; it must stand in schema order, or Word
+    calls the file corrupt."""
+    settings = _part(zh_docx, "word/settings.xml")
+    assert settings.count('<w:updateFields w:val="true"/>') == 1
+    children = [t for t in re.findall(r"<(?:w|m):(\w+)", settings) if t in _SETTINGS_ORDER]
+    tops = list(dict.fromkeys(children))
+    assert tops == sorted(tops, key=_SETTINGS_ORDER.index), tops

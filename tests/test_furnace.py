@@ -1,6 +1,6 @@
 """Heating-furnace pusher (加热炉推料机): the six-bar synthesised from H, K, DC, CE and the
 pressure-angle limit must do what the task asks when simulated, its criterion must really be
-an optimum, the seed's numbers must fail, and the crank torque must balance the power.
+an optimum, the original report's numbers must fail, and the crank torque must balance the power.
 
 References are independent of the synthesis formulas: the mechanism is simulated through
 the crank angle here (extremes by Brent's method on the output's velocity, extremes of the
@@ -312,7 +312,7 @@ def test_cli_writes_report_pdf_and_results_with_the_motor(tmp_path):
     result = runner.invoke(app, ["run", str(BRIEF), "-o", str(en), "-f", "md", "--lang", "en"])
     assert result.exit_code == 0, result.output
     md = (en / "report.md").read_text(encoding="utf-8")
-    assert "Synthesis of the six-bar" in md and "The seed solution checked" in md
+    assert "Synthesis of the six-bar" in md and "The original report's solution checked" in md
 
 
 @pytest.mark.parametrize("change, words", [

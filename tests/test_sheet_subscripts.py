@@ -152,3 +152,30 @@ def test_sheet_pdfs_have_no_plain_letter_subscripts(example_results, name, lang,
         if kind == "gear":
             assert {"d_a", "d_b", "d_f", "p_b", "ω_1", "ω_2", "h_a"} <= subs, (name, subs)
 
+
+
+def test_sheet_pdf_names_drawing_student_and_project(tmp_path):
+    """Review finding: the sheet PDFs carried no metadata (pdfinfo: only "Creator: Typst").
+    Like the report, a sheet's PDF names its drawing (title), the student (author) and the
+    project (subject), read back from the PDF's Info dictionary (parsed here, no PDF library)."""
+    from mechdesign.render.sheet import TitleInfo, frame
+    from mechdesign.render.sheet_typst import write_sheet
+
+    s = Sheet("A3")
+    frame(s, TitleInfo("机构运动简图", "牛头刨床设计", "张三", "2023001", "机械 1", "李老师", "2026-11-26"))
+    pdf = tmp_path / "k.pdf"
+    write_sheet(s, pdf)
+    raw = pdf.read_bytes()
+    # typst writes the Info strings as UTF-16BE hex or literal strings; decode both
+    texts = []
+    for m in re.finditer(rb"/(Title|Author|Subject)\s*(<[0-9A-Fa-f]+>|\((?:\\.|[^)])*\))", raw):
+        v = m.group(2)
+        if v.startswith(b"<"):
+            b = bytes.fromhex(v[1:-1].decode())
+            texts.append((m.group(1).decode(), b[2:].decode("utf-16-be") if b[:2] == b"\xfe\xff" else b.decode("latin-1")))
+        else:
+            b = re.sub(rb"\\(.)", rb"\1", v[1:-1])
+            texts.append((m.group(1).decode(), b[2:].decode("utf-16-be") if b[:2] == b"\xfe\xff" else b.decode("utf-8")))
+    found = dict(texts)
+    assert found.get("Title") == "机构运动简图" and found.get("Author") == "张三", found
+    assert found.get("Subject") == "牛头刨床设计", found

@@ -429,25 +429,14 @@ def cam_verification_rows(v, c, lang: str) -> list[list[str]]:
             ref = f"≤ {f(k.limit * MM, 3)} mm" + _(" ($r_r$ = {rr} mm)", rr=rr) \
                 if k.key != "face_support" else f"≤ {f(k.limit * MM, 3)} mm"
             rows.append([name, f"{e(k.value * MM)} mm", ref, ok])
-        elif k.key == "offset_curve":
-            rows.append([name, f"{f(k.value * MM, 3)} mm", f"≤ {f(DIST_LIMIT * MM, 3)} mm",
-                         _("corrected (envelope)")])
-        elif k.key == "corner":
-            at = f(k.detail["delta"] * DEG, 1)
-            turn = f(k.value * DEG, 2)
-            if k.detail["kind"] == "edge":
-                res = _("sharp edge, normal turns {turn}°", turn=turn)
-                ref = _("offset loop cut away; roller centre {d} mm off its path",
-                        d=f(k.detail["stand_off"] * MM, 3))
-            else:
-                res = _("$r_r$ arc, normal turns {turn}°", turn=turn)
-                ref = _("fills the gap between the offset branches; motion as designed")
-            rows.append([_("{name} (δ = {at}°)", name=name, at=at), res, ref, "—"])
+        # "offset_curve" and "corner" carry no verdict: they say why the actual profile is the
+        # envelope, not the plain offset curve; envelope_note states them in its paragraph
     return rows
 
 
-def envelope_note(c, lang: str, csv_stem: str) -> str:
-    """A paragraph on the actual profile at the pitch curve's corners ('' when there are none)."""
+def envelope_note(c, lang: str, csv_stem: str, verification=None) -> str:
+    """A paragraph on the actual profile at the pitch curve's corners ('' when there are none);
+    with the cam ``verification``, it also states how far the plain offset curve is off."""
     env = getattr(c, "envelope", None)
     if env is None or not (env.corners or env.edges):
         return ""
@@ -470,6 +459,14 @@ def envelope_note(c, lang: str, csv_stem: str) -> str:
         parts.append(_("at δ = {at} the offset branches leave a gap, filled by the arc of radius $r_r$ = {rr} mm "
                        "about the corner; there the follower moves as designed", at=deg(arcs), rr=rr))
     text += _.pgettext("clause separator", "; ").join(parts) + _.pgettext("sentence end", ". ")
+    off = [k for k in getattr(verification, "checks", ()) if k.key == "offset_curve"]
+    if off:
+        from ..stages.cam import DIST_LIMIT
+
+        held = [k.limit for k in verification.checks if k.key == "envelope"]
+        text += _("The plain offset curve departs from the distance $r_r$ to the pitch curve by up to {d} mm, "
+                  "where the actual profile is held to {limit} mm; it is therefore not used. ",
+                  d=f(off[0].value * MM, 3), limit=f((held[0] if held else DIST_LIMIT) * MM, 3))
     text += _("The cut-away points in the coordinate table and in `{csv}.csv` are replaced by the edge; the "
               "whole actual profile (with the arcs) is written to `{csv}_outline.csv` and drawn in "
               "[@fig:cam-profile].", csv=csv_stem)

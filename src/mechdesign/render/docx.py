@@ -178,6 +178,31 @@ def _xml_text(text: str) -> str:
     return text.replace("&", "&amp;").replace("<", "&lt;").replace(">", "&gt;")
 
 
+# the elements that follow w:updateFields in CT_Settings (ECMA-376 Part 1, §17.15.1.78):
+# Word rejects a settings part whose children are out of schema order
+_AFTER_UPDATE_FIELDS = ("hdrShapeDefaults", "footnotePr", "endnotePr", "compat", "docVars", "rsids",
+                        "mathPr", "attachedSchema", "themeFontLang", "clrSchemeMapping",
+                        "doNotIncludeSubdocsInStats", "doNotAutoCompressPictures", "forceUpgrade",
+                        "captions", "readModeInkLockDown", "smartTagType", "schemaLibrary",
+                        "shapeDefaults", "doNotEmbedSmartTags", "decimalSymbol", "listSeparator")
+
+
+def _update_fields_on_open(settings: bytes) -> bytes:
+    """``<w:updateFields w:val="true"/>`` in word/settings.xml: Word fills the table of
+    contents (a field pandoc writes empty) when the document is opened, after asking the
+    user; without it the contents page stays empty until the user updates fields."""
+    xml = settings.decode("utf-8")
+    if "<w:updateFields" in xml:
+        return settings
+    tag = '<w:updateFields w:val="true"/>'
+    first = re.search(r"<(?:w|m):(%s)\b" % "|".join(_AFTER_UPDATE_FIELDS), xml)
+    if first is not None:
+        xml = xml[:first.start()] + tag + xml[first.start():]
+    else:
+        xml = xml.replace("</w:settings>", tag + "</w:settings>")
+    return xml.encode("utf-8")
+
+
 def _finish(docx: Path, *, title: str, author: str, subject: str) -> None:
     """The running header shows the title and the student (the TITLE and AUTHOR fields'
     shown results, filled in here so that they read right before Word updates fields;
@@ -193,6 +218,8 @@ def _finish(docx: Path, *, title: str, author: str, subject: str) -> None:
             data = data.replace(b"REPORT-TITLE", _xml_text(title).encode("utf-8"))
             data = data.replace(b"REPORT-SEPARATOR", "\u2003".encode("utf-8") if author else b"")
             data = data.replace(b"REPORT-AUTHOR", _xml_text(author).encode("utf-8"))
+        elif name == "word/settings.xml":
+            data = _update_fields_on_open(data)
         elif name == "docProps/core.xml":
             xml = data.decode("utf-8")
             for tag, value in (("dc:creator", author), ("dc:subject", subject)):

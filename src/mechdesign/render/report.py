@@ -109,7 +109,7 @@ def group_banner(group: str, lang: str) -> str:
     group = md_text(group)
     _ = tr(lang)
     return _("**Data group: {group}.** This report uses that group's data from the "
-             "brief's `groups` table.", group=group) + "\n\n"
+             "design brief's table of data groups.", group=group) + "\n\n"
 
 
 def pdf_metadata(meta, lang: str, group: str | None = None) -> dict:

@@ -90,8 +90,8 @@ def requests_context(results: dict, brief, figures: dict, lang: str) -> dict | N
         j = n + labels.index(label)
         base = key.split("#")[0]
         if base.split(":")[0] in {c.split(":")[0] for c in EVENTS}:
-            # the brief's key (a program name) only in English; a zh report says what it means
-            what = event_name(base, lang) if lang == "zh" else f"{event_name(base, lang)} (`{key}`)"
+            # what the event means, in both languages (the brief's key is a program name)
+            what = event_name(base, lang)
         else:
             what = _("{angle} {key} ({convention})", angle=t["angle"], key=key,
                      convention=convention)

@@ -179,6 +179,15 @@ def sheet_source(sheet: Sheet) -> str:
         "origin: top + left, reflow: false, context { let t = text(size: size, fill: col, body); "
         "let m = measure(t); place(dx: -ha * m.width, dy: -va * m.height, t) }))",
     ]
+    info = sheet.info
+    if info is not None:
+        # the PDF's metadata, as the report's: the drawing's name, the student, the project
+        meta = [f"title: {typst_string(info.drawing)}"]
+        if info.student:
+            meta.append(f"author: {typst_string(info.student)}")
+        if info.project:
+            meta.append(f"description: {typst_string(info.project)}")
+        head.insert(0, f"#set document({', '.join(meta)})")
     segments: dict = {}
     for e in sheet.entities:
         if isinstance(e, Line):

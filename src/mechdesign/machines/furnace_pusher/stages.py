@@ -58,7 +58,7 @@ def link_names() -> dict[str, tuple[str, str]]:
             ROCKER: zh_en.pgettext("link", "rocker DBC"), ROD: zh_en.pgettext("link", "link CE"),
             SLIDER: zh_en.pgettext("link", "pusher slider E")}
 
-# The seed's printed numbers (section 4): a, b, the chord B1B2 it used, its frame O1O2
+# The original report's printed numbers (section 4): a, b, the chord B1B2 it used, its frame O1O2
 # and the rocker length 1150 mm its second equation uses.
 SEED = {"crank": 0.09192, "coupler": 1.17547, "chord": 0.19462, "frame": 0.50537,
         "rocker": 1.150, "theta_used_deg": 30.0}
@@ -68,12 +68,12 @@ SEED = {"crank": 0.09192, "coupler": 1.17547, "chord": 0.19462, "frame": 0.50537
 
 @dataclass(frozen=True)
 class SeedCheck:
-    """The seed's solution a = 91.92, b = 1175.47 mm put back into its own equations and
+    """The original report's solution a = 91.92, b = 1175.47 mm put back into its own equations and
     simulated (closed-form extremes) with the rocker 1150 mm and frame 505.37 mm its
     second equation uses."""
 
-    crank: float = q("m", "the seed's a = O1A")
-    coupler: float = q("m", "the seed's b = AB")
+    crank: float = q("m", "the original report's a = O1A")
+    coupler: float = q("m", "the original report's b = AB")
     rocker: float = q("m", "the rocker its second equation uses")
     frame: float = q("m", "its frame O1O2")
     chord: float = q("m", "the B1B2 it used")
@@ -87,7 +87,7 @@ class SeedCheck:
     time_ratio: float = q("1", "simulated K")
     swing: float = q("rad", "simulated rocker swing ψ")
     stroke_C: float = q("m", "C's chord 2·DC·sin(ψ/2) (≈ the slider's stroke)")
-    gamma_min: float = q("rad", "γ_min of the seed's four-bar")
+    gamma_min: float = q("rad", "γ_min of the original report's four-bar")
 
 
 @dataclass(frozen=True)
@@ -635,7 +635,7 @@ class FurnaceResults:
     machine: str = q("", "'furnace_pusher'")
     units: str = q("", "reminder of the unit system")
     synthesis: PusherSynthesisDoc = q("", "the six-bar's dimensions and the synthesis' residuals")
-    seed: SeedCheck = q("", "the seed's printed solution put back into its equations")
+    seed: SeedCheck = q("", "the original report's printed solution put back into its equations")
     linkage: LinkageDocument = q("", "the linkage engine's results")
     check: PusherCheck = q("", "the specification against the simulation")
     drive: DriveDocument | None = q("", "the drive, when the brief has one")

@@ -101,7 +101,7 @@ class BendingStart(StrictModel):
 
 
 class SeedLengths(StrictModel):
-    """Link lengths of a design to check by simulation (e.g. the seed's graphical solution)."""
+    """Link lengths of a design to check by simulation (e.g. the original report's graphical solution)."""
 
     input_rocker_mm: float = Field(gt=0, le=10000, description="Input rocker length [mm]")
     coupler_mm: float = Field(gt=0, le=10000, description="Coupler length [mm]")
@@ -137,7 +137,7 @@ class BendingSection(StrictModel):
     length_rounding_mm: float = Field(1.0, ge=0, le=100, description=(
         "The synthesised lengths are also checked rounded to this step, as drawn [mm]; 0: no check"))
     seed_check: Optional[SeedLengths] = Field(None, description=(
-        "Lengths of another design to check by simulation (the seed's graphical solution)"))
+        "Lengths of another design to check by simulation (the original report's graphical solution)"))
 
     @model_validator(mode="after")
     def _swing(self):

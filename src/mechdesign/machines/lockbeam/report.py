@@ -242,23 +242,23 @@ def _seed_notes(r: dict, lang: str) -> list[str]:
     _ = tr(lang)
     b, ft = r["bending"], r["feed_table"]
     notes = []
-    notes.append(_("Production rate: the task data say 10 parts/min; one line of the seed's "
+    notes.append(_("Production rate: the task data say 10 parts/min; one line of the original report's "
                    "requirements says 20. Its transmission 700 → 10 rpm is for 10, and so is this "
                    "design."))
-    notes.append(_("The seed's morphological matrix (table 2.5) and cycle diagram (figure 9.1) were "
+    notes.append(_("The original report's morphological matrix (table 2.5) and cycle diagram (figure 9.1) were "
                    "images lost in the copy: the matrix is rebuilt from its text, and the cycle "
                    "diagram is drawn anew from the cam data and the simulated feed linkage."))
     if b.seed is not None:
-        notes.append(_("Bending four-bar: the seed found the lengths {rocker} mm and {coupler} mm "
+        notes.append(_("Bending four-bar: the original report found the lengths {rocker} mm and {coupler} mm "
                        "graphically without stating its start position", rocker=f(b.seed.input_rocker * MM, 0),
                        coupler=f(b.seed.coupler * MM, 0))
                      + (_("; they make a change-point linkage (all links can fall into line, and "
                           "the motion becomes uncertain)") if _change_point(b.seed) else "")
                      + _(". This report synthesises the linkage analytically from two corresponding "
-                         "positions and checks the seed's lengths by simulation (chapter 5)."))
+                         "positions and checks the original report's lengths by simulation (chapter 5)."))
     if ft.seed_x is not None:
         wrong = int(np.sum(np.abs(ft.seed_x - ft.x) > 1e-9))
-        notes.append(_("The seed's VB RRP routine takes the absolute value of the slider coordinate "
+        notes.append(_("The original report's VB RRP routine takes the absolute value of the slider coordinate "
                        "(sr = abs(...)), which mirrors the slider to the right whenever it is left of "
                        "the guide's reference point x = 0: {wrong} of its {n} positions at 10° steps "
                        "come out wrong. This report takes the signed root.", wrong=wrong, n=len(ft.x)))
@@ -276,12 +276,12 @@ def _seed_conclusion(b, lang: str) -> str:
     if s.check.starts:
         g = max(x[2] for x in s.check.starts)
         worse = g < b.gamma_min
-        text = (_("The seed's graphical result holds, but only from the start in the table, where "
+        text = (_("The original report's graphical result holds, but only from the start in the table, where "
                   "the least transmission angle is {g}°", g=f(g * DEG, 2))
                 + (_(", below this design's {gamma_min}°", gamma_min=f(b.gamma_min * DEG, 2))
                    if worse else ""))
     else:
-        text = _("The seed's lengths give the required {output_swing}° from no start position",
+        text = _("The original report's lengths give the required {output_swing}° from no start position",
                   output_swing=f(b.output_swing * DEG, 2))
     if _change_point(s):
         d = b.design
@@ -498,7 +498,7 @@ def law_choice(c, lang: str) -> str:
     ca = max(LAWS[x].ca for x in laws)
     cyc = LAWS["cycloidal"].ca
     if impacts <= {"none"}:
-        text = _("The seed names no follower motion law. Rise and return both lie between "
+        text = _("The original report names no follower motion law. Rise and return both lie between "
                   "dwells; the {names} law is chosen: its velocity and acceleration vanish at "
                   "both ends, so it joins the dwells with neither rigid nor soft impact",
                   names=names)

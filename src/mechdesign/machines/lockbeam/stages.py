@@ -9,7 +9,7 @@ One main (distribution) shaft turns once per part. Stages:
 - bending linkage: two-position synthesis of the double rocker
   (:mod:`mechdesign.core.rocker_synthesis`), simulated with :mod:`mechdesign.core.mechanism`
   over the input swing and over the main-shaft cycle (cam → rocker → four-bar → chain →
-  bending wheel), the seed's graphical lengths checked the same way;
+  bending wheel), the original report's graphical lengths checked the same way;
 - feed linkage: the shared linkage stages (prefix ``feed``) on the brief's
   Assur-group description, plus the seed-format table and the guide-bar closed forms;
 - cycle (motion cycle diagram): the brief's diagram, its timing constraints,
@@ -265,7 +265,7 @@ def bending_drawing(ds: rs.RockerDesign, mech: Mechanism) -> BendingDrawing:
 
 
 def seed_check(ds: rs.RockerDesign, bp: BendingParams) -> SeedCheck:
-    """The seed's graphical lengths checked over the swing, with the velocity ratio range of
+    """The original report's graphical lengths checked over the swing, with the velocity ratio range of
     every start the check tried."""
     sa, sb = bp.seed
     check = rs.check_lengths(ds.frame, sa, sb, ds.output_rocker, ds.dalpha, bp.output_swing)
@@ -472,7 +472,7 @@ def guide_bar_closed_form(model) -> GuideBarClosedForm | None:
 
 @dataclass(frozen=True)
 class FeedTable:
-    """The seed's VB output: every 10° of crank angle from +x (counter-clockwise)."""
+    """The original report's VB output: every 10° of crank angle from +x (counter-clockwise)."""
 
     crank_angle: np.ndarray     # [rad]
     x: np.ndarray               # slider x [m]
@@ -482,7 +482,7 @@ class FeedTable:
     bar_alpha: np.ndarray
     rod_omega: np.ndarray
     rod_alpha: np.ndarray
-    seed_x: np.ndarray | None   # the seed's RRP routine: x_P + |x − x_P| (its abs())
+    seed_x: np.ndarray | None   # the original report's RRP routine: x_P + |x − x_P| (its abs())
     closed: GuideBarClosedForm | None
 
 
@@ -747,11 +747,11 @@ class SeedStartDoc:
 
 @dataclass(frozen=True)
 class SeedDoc:
-    """The seed's graphical lengths checked over the swing."""
+    """The original report's graphical lengths checked over the swing."""
 
-    input_rocker: float = q("m", "the seed's L_G0G")
-    coupler: float = q("m", "the seed's L_GB")
-    grashof: str = q("", "Grashof type of the seed's four-bar")
+    input_rocker: float = q("m", "the original report's L_G0G")
+    coupler: float = q("m", "the original report's L_GB")
+    grashof: str = q("", "Grashof type of the original report's four-bar")
     swing_range: tuple[float, float] = q("rad", "least and largest |Δβ| over every start that "
                                                 "moves through the whole input swing")
     starts: tuple[SeedStartDoc, ...] = q("", "starts giving exactly the required swing")
@@ -792,13 +792,13 @@ class BendingDoc:
     velocity_ratio: RangeDoc = q("", "least and largest |dβ/dα| over the swing")
     rounded: RoundedDoc | None = q("", "the lengths rounded as drawn, when the brief rounds")
     candidates: tuple[CandidateDoc, ...] = q("", "the synthesis candidates")
-    seed: SeedDoc | None = q("", "the seed's lengths checked, when the brief gives them")
+    seed: SeedDoc | None = q("", "the original report's lengths checked, when the brief gives them")
     cycle: BendingCycleDoc = q("", "over the main-shaft cycle")
 
 
 @dataclass(frozen=True)
 class FeedTableDoc:
-    """The seed's table of the feed linkage: every 10° of crank angle (NaN → null where the
+    """The original report's table of the feed linkage: every 10° of crank angle (NaN → null where the
     linkage has no guide bar or rod)."""
 
     crank_angle: np.ndarray = q("rad", "crank angle CCW from +x")
