@@ -194,32 +194,94 @@ def _imports(brief: Path) -> None:
 
 
 def _profile(brief: Path) -> None:
+    """Each figure's CPU time by kind in one in-process, serial run (md only, render cache
+    off): drawn and saved (inside render.figures.figure), of it the label placement
+    (render/label_layout.py) and the save (tight_layout, draw, PNG); then a cProfile
+    (CPU-time clock, so the machine's load does not enter) of a second such run in the
+    same process (imports and font loading already done)."""
+    import collections
     import cProfile
     import pstats
+    from contextlib import contextmanager
 
     os.environ["MECHDESIGN_SERIAL"] = "1"
+    os.environ["MECHDESIGN_CACHE"] = "off"
+    from mechdesign.render import (cam_figures, cycle_figures, figures, gear_figures,
+                                   graphical_report, label_layout, linkage_report)
     from mechdesign.runner import run_one
 
+    rows: dict[str, list[float]] = {}
+    now: dict[str, float] = {}
+    figure, save_png, place = figures.figure, figures.save_png, label_layout.place
+
+    @contextmanager
+    def timed_figure(path, *args, **kwargs):
+        t0 = time.process_time()
+        now.update(place=0.0, save=0.0)
+        with figure(path, *args, **kwargs) as axes:
+            yield axes
+        rows[Path(path).name] = [time.process_time() - t0, now["place"], now["save"]]
+
+    def timed_save(fig, path):
+        t0 = time.process_time()
+        save_png(fig, path)
+        now["save"] = now.get("save", 0.0) + time.process_time() - t0
+
+    def timed_place(*args, **kwargs):
+        t0 = time.process_time()
+        out = place(*args, **kwargs)
+        now["place"] = now.get("place", 0.0) + time.process_time() - t0
+        return out
+
+    figures.figure, figures.save_png = timed_figure, timed_save
+    for module in (cam_figures, cycle_figures, gear_figures):
+        module.figure = timed_figure
+    graphical_report.place = linkage_report.place = timed_place
     with tempfile.TemporaryDirectory() as tmp:
-        prof = cProfile.Profile()
+        t0 = time.process_time()
+        run_one(brief, out_dir=Path(tmp) / "timed", formats=("md",))
+        total = time.process_time() - t0
+        timed = dict(rows)
+        prof = cProfile.Profile(time.process_time)
         prof.enable()
-        run_one(brief, out_dir=Path(tmp))
+        run_one(brief, out_dir=Path(tmp) / "profiled", formats=("md",))
         prof.disable()
-    print("\ncProfile of one in-process run (serial), top 25 by own time\n")
-    pstats.Stats(prof).sort_stats("tottime").print_stats(25)
+    kinds: dict[str, list[float]] = collections.defaultdict(lambda: [0, 0.0, 0.0, 0.0])
+    for name, (cpu, placing, saving) in timed.items():
+        stem = name.removesuffix(".png")
+        kind = ("polygons: force" if re.search(r"_graph_.*_f\d+$", stem) else
+                "polygons: kinematic" if re.search(r"_graph_.*_kin$", stem) else
+                re.sub(r"_\d+$", "", stem))
+        k = kinds[kind]
+        k[0] += 1
+        k[1] += cpu
+        k[2] += placing
+        k[3] += saving
+    print("\nCPU time [s] of each figure kind, one serial md run (the first figure also"
+          " loads the fonts)\n")
+    print(f"  {'figure kind':28s}  n  drawn+saved  label placement  save (tight_layout, PNG)")
+    for kind, (n, cpu, placing, saving) in sorted(kinds.items(), key=lambda x: -x[1][1]):
+        print(f"  {kind:28s} {n:2d}  {cpu:11.3f}  {placing:15.3f}  {saving:10.3f}")
+    drawn = sum(r[0] for r in timed.values())
+    print(f"  all figures: {drawn:.2f} s CPU of the run's {total:.2f} s\n")
+    print("cProfile of a second run in the same process, top 25 by cumulative CPU time\n")
+    pstats.Stats(prof).sort_stats("cumulative").print_stats(25)
 
 
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--brief", default=str(ROOT / "designs" / "shaper.yaml"))
-    parser.add_argument("--repeat", type=int, default=5, help="interleaved rounds")
+    parser.add_argument("--repeat", type=int, default=5,
+                        help="interleaved rounds (0: none, e.g. with --profile alone)")
     parser.add_argument("--big", type=int, default=100_000,
                         help="grid points of the large run (0: skip it)")
     parser.add_argument("--imports", action="store_true", help="list the slowest imports")
-    parser.add_argument("--profile", action="store_true", help="cProfile one in-process run")
+    parser.add_argument("--profile", action="store_true",
+                        help="cProfile one in-process run; CPU time of each figure kind")
     args = parser.parse_args()
     brief = Path(args.brief).resolve()
-    measure(brief, args.repeat, args.big)
+    if args.repeat > 0:
+        measure(brief, args.repeat, args.big)
     if args.imports:
         _imports(brief)
     if args.profile:

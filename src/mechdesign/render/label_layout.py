@@ -8,7 +8,9 @@ either side, then the other directions round the point; it takes the first whose
 (measured by matplotlib at the figure's final resolution, padded) meets no label placed
 before it and no obstacle segment (links, vectors), inside the axes. Offsets are in points, so the text keeps
 its distance from the anchor whatever the data scale. When no candidate is free, the one
-with the least overlap is taken.
+with the least overlap is taken. The text is measured once, at its anchor (a candidate's
+box is that box shifted by its offset), and a candidate is scored only against the segments
+and labels that reach the region all candidates lie in; only the chosen place is drawn.
 
 :func:`overlaps` is the measure the tests use: the pairs of overlapping label boxes and the
 labels that cross an obstacle segment, after the figure's final layout.
@@ -98,34 +100,43 @@ def place(ax, labels: list[Label], obstacles=(), fixed=()) -> list:
     artists = []
     for lab in labels:
         kwargs = {"ha": "center", "va": "center", **lab.kwargs}
+        # The text is measured once, at the anchor: an offset in points only translates
+        # its box (by the offset × dpi/72 px), so each candidate is its box shifted.
+        probe = ax.text(lab.anchor.real, lab.anchor.imag, lab.text,
+                        transform=offset_copy(ax.transData, fig=fig, x=0.0, y=0.0,
+                                              units="points"), **kwargs)
+        x0, y0, x1, y1 = _box(probe, renderer, PAD * px)
+        probe.remove()
+        # only the segments and labels that reach the region every candidate lies in
+        reach = max(DISTANCES) * px + 1.0
+        region = (x0 - reach, y0 - reach, x1 + reach, y1 + reach)
+        near = [(p, q) for p, q in segments if _segment_hits_box(p, q, region)]
+        others = [b for b in placed if _box_overlap(b, region) > 0]
         best = None
         tried = [d / abs(d) for d in lab.directions if abs(d) > 0] + list(COMPASS)
         for dist in DISTANCES:
             for d in tried:
                 dx, dy = dist * d.real, dist * d.imag
-                t = ax.text(lab.anchor.real, lab.anchor.imag, lab.text,
-                            transform=offset_copy(ax.transData, fig=fig, x=dx, y=dy,
-                                                  units="points"), **kwargs)
-                box = _box(t, renderer, PAD * px)
+                box = (x0 + dx * px, y0 + dy * px, x1 + dx * px, y1 + dy * px)
                 # a label over another is worst after one on a line, then one over the edge
-                cost = sum(5e3 + a for a in (_box_overlap(box, other) for other in placed) if a > 0)
-                cost += sum(1e4 for p, q in segments if _segment_hits_box(p, q, box))
+                cost = sum(5e3 + a for a in (_box_overlap(box, other) for other in others) if a > 0)
+                cost += sum(1e4 for p, q in near if _segment_hits_box(p, q, box))
                 area = (box[2] - box[0]) * (box[3] - box[1])
                 outside = area - _box_overlap(box, frame)
                 cost += 2e3 + outside if outside > 1e-6 else 0.0     # over the axes' edge
                 if best is None or cost < best[0]:
-                    if best is not None:
-                        best[1].remove()
-                    best = (cost, t, box)
-                else:
-                    t.remove()
+                    best = (cost, (dx, dy), box)
                 if cost == 0:
                     break
             if best is not None and best[0] == 0:
                 break
+        dx, dy = best[1]
+        t = ax.text(lab.anchor.real, lab.anchor.imag, lab.text,
+                    transform=offset_copy(ax.transData, fig=fig, x=dx, y=dy, units="points"),
+                    **kwargs)
         placed.append(best[2])
-        lab.artist = best[1]
-        artists.append(best[1])
+        lab.artist = t
+        artists.append(t)
     return artists
 
 
