@@ -94,6 +94,12 @@ def _share_mathtext_parses() -> None:
 
     cls._parse_cached = parse_cached
     cls._mechdesign_shared = True
+    # a parse holds FT2Font objects, whose open font file (and its offset) a forked figure
+    # worker would share with this process: matplotlib clears its own font cache in a
+    # forked child for that reason (font_manager._get_font), so this cache is cleared too
+    import os
+
+    os.register_at_fork(after_in_child=_MATHTEXT_CACHE.clear)
 
 # the call key (render/cache.py) of the cached figure function being run, if any
 _call_key: ContextVar[str | None] = ContextVar("figure_call_key", default=None)
