@@ -24,7 +24,7 @@ EXAMPLES = ["shaper", "crank_rocker", "cam_7_3", "cam_7_1", "lockbeam", "furnace
             "lockbeam_cam", "slotter"]
 # the labels the sheets used to write with plain-letter subscripts (a word of its own);
 # "pb" is left out: in a velocity polygon it is the segment p→b, not p with subscript b;
-# the force polygons' names (R12, FI3, MI3, Mb …) are not converted yet
+# the force polygons' names (R12, FI3, MI3, Mb …) and the point names: tests/test_point_names.py
 OLD = re.compile(r"(?<![A-Za-z0-9])(φmax|αmax|α′max|ρmin|ρa,min|μ[vaFLsφδ]|ω\d|ΔWmax|Md|JF|"
                  r"d[abf]|r[0r]|r[abf]\d|ha\*|B1B2|N1N2)(?![A-Za-z0-9])")
 

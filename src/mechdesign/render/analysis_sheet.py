@@ -17,7 +17,7 @@ from __future__ import annotations
 import numpy as np
 
 from ..core.polygons import Polygon
-from .labels import LabelTable, pgettext
+from .labels import LabelTable, pgettext, sheet_names, sheet_point
 from .sheet import (Dimension, LabelPlacer, Series, Sheet, TitleInfo, chart, fit_height,
                     format_number, frame, ground, heading, length_scale, nice_scale, pin,
                     scale_text, slider_block, sub, table, text_width, title_block_box,
@@ -138,8 +138,7 @@ def _polygon_grid(s: Sheet, model, polys: dict, chosen: list[str], lab: dict, bo
 def force_symbol(name: str) -> str:
     """A force polygon's vector or moment name with its subscript, as the report writes it
     (render/graphical_report.sym): "R12" → F with R12, "FI4" → F with I4, "G4", "Pb", "Mb",
-    "MI3", "Fr" → G₄, P_b, M_b, M_I3, F_r; other names (with ^ or _) as written. Not used yet:
-    the longer labels clash in the press's force polygons (the placer needs another pass)."""
+    "MI3", "Fr" → G₄, P_b, M_b, M_I3, F_r; other names (with ^ or _) as written."""
     prime = "'" if name.endswith("'") else ""
     s = name[:-1] if prime else name
     if "^" in s or "_" in s or len(s) < 2 or not s.startswith(("R", "FI", "Fr", "G", "Pb", "Mb", "M")):
@@ -153,7 +152,7 @@ def force_symbol(name: str) -> str:
 
 def _items(pg: Polygon) -> list[str]:
     unit = UNITS[pg.kind][2]
-    name = str          # force names as written (force_symbol: not yet, see its docstring)
+    name = force_symbol if pg.kind == "force" else str
     out = [f"{name(v.name)} = {format_number(abs(v.value), 4)} {unit}" for v in pg.vectors]
     out += [f"{name(key)} = {format_number(value, 4)} N·m" for key, value in pg.moments.items()]
     return out
@@ -217,7 +216,11 @@ def _draw_polygon(s: Sheet, pg: Polygon, mu: float, box, keep_out=()) -> None:
     if pg.kind == "force":
         for vec in pg.vectors:
             mid = (pg.points[vec.tail] + pg.points[vec.head]) / 2
-            placer.place(v.p(mid), vec.name, 2.5, prefer=1j * vec.value, gap=1.2)
+            text = force_symbol(vec.name)
+            # beside its vector where there is room, else on a leader (the subscripted names,
+            # F_R12, are longer than R12 and crowd a small polygon)
+            if placer.place(v.p(mid), text, 2.5, prefer=1j * vec.value, gap=1.2, crowded=False) is None:
+                placer.leader(v.p(mid), text, 2.5, prefer=1j * vec.value, lengths=(4.0, 6.0, 9.0, 13.0, 18.0))
         placer.place(v.p(0j), "o", 2.5, prefer=-1 - 1j, gap=1.2)
         return
     values = list(pg.points.values())
@@ -276,7 +279,7 @@ def _name(model, link: str, lang: str) -> str | None:
     if link not in names:
         return None
     zh, en = names[link]
-    return zh if lang == "zh" else en
+    return sheet_names(zh if lang == "zh" else en)      # "导杆 O3B": O₃B
 
 
 def _fixed_guides(P: dict, sliders: list, mm: float) -> list:
@@ -431,7 +434,7 @@ def _mechanism(s: Sheet, model, k, lab: dict, box, chosen: list[str], lang: str)
     for name, z in mech.frame_points.items():
         ground(v, z * mm, 6.0)
         placer.block(v.p(z * mm), 4.0)
-        placer.place(v.p(z * mm), name, 3.5, prefer=1 + 0.3j, gap=2.5)
+        placer.place(v.p(z * mm), sheet_point(name), 3.5, prefer=1 + 0.3j, gap=2.5)
     for i in range(len(labels)):
         u = (tip[i] - piv) / abs(tip[i] - piv)
         bold = labels[i] in chosen            # clear of the slider block drawn there
@@ -443,7 +446,7 @@ def _mechanism(s: Sheet, model, k, lab: dict, box, chosen: list[str], lang: str)
         for name in sorted(joints - set(mech.frame_points)):
             if name in P:
                 d = P[name][i0] - mid
-                placer.place(v.p(P[name][i0]), name, 3.5, prefer=d if abs(d) > 1e-9 else 1j,
+                placer.place(v.p(P[name][i0]), sheet_point(name), 3.5, prefer=d if abs(d) > 1e-9 else 1j,
                              gap=2.0)
         # the link numbers at the first chosen position: beside each link (a third of the
         # way from its frame pivot, if it has one), a slider's number beside its block

@@ -15,7 +15,7 @@ import numpy as np
 from ..fileio import atomic_path
 from ..i18n import N_
 from .fonts import configure_matplotlib
-from .labels import LabelTable
+from .labels import LabelTable, mpl_point
 
 LABELS = LabelTable({
     "phase": N_("crank angle φ (°)"),
@@ -274,7 +274,7 @@ def mechanism(path: Path, lang: str, pts: dict, labels, guide_y_mm: float, crank
             ax.text((a + 18 * u).real, (a + 18 * u).imag, name, fontsize=6.5, ha="center", va="center")
         for name, p in (("O2", o2), ("O3", o3)):
             ax.plot([p.real], [p.imag], "^", color="k", ms=6)
-            ax.text(p.real + 15, p.imag - 25, name, fontsize=8)
+            ax.text(p.real + 15, p.imag - 25, mpl_point(name), fontsize=8)
         for name in ("B", "F"):
             p = pts[name][0]
             ax.text(p.real + 10, p.imag + 15, name, fontsize=8, color="C0")

@@ -65,7 +65,7 @@ LABELS = LabelTable({
     "n_drive": N_("Gear 1 drives, counter-clockwise; gear 2 turns clockwise."),
     "n_teeth": N_("Generated involute tooth profiles with their root fillets."),
     "n_eps": N_("ε = B1B2 / pb = {g}; ε = [z1(tan αa1 − tan α′) + z2(tan αa2 − tan α′)] / 2π = {f}."),
-    "n_undercut": N_("Gear {i} (z = {z}, x = {x} < xₘᵢₙ = {xmin}) is undercut."),
+    "n_undercut": N_("Gear {i} (z = {z}, x = {x} < xmin = {xmin}) is undercut."),
     "n_interf": N_("B1B2 runs beyond N1N2: interference."),
 })
 
@@ -475,7 +475,8 @@ def _table(sheet: Sheet, mm: SpurPair, lay, lab: dict, interference: bool) -> No
                      .format(g=_num(lay.contact_ratio, 4), f=_num(eps_f, 4)))]
     for i, g, xmin in ((1, g1, mm.x_min1), (2, g2, mm.x_min2)):
         if g.x < xmin - 1e-9:
-            notes.append(lab["n_undercut"].format(i=i, z=g.z, x=_num(g.x, 3), xmin=_num(xmin, 3)))
+            notes.append(with_subscripts(lab["n_undercut"].format(i=i, z=g.z, x=_num(g.x, 3),
+                                                              xmin=_num(xmin, 3)), "x_min"))
     if interference:
         notes.append(_points(lab["n_interf"]))
     ty1 = title_block_box(sheet)[3]

@@ -20,7 +20,7 @@ from . import figures as fig
 from ..i18n import N_, tr
 from .fmt import f, grouped, mpl_text, sci
 from .label_layout import Label, place
-from .labels import LabelTable, pgettext
+from .labels import LabelTable, mpl_point, pgettext, point_tex, tex_names
 
 _T = LabelTable({
     "vel": N_("velocity polygon"), "acc": N_("acceleration polygon"), "fbd": N_("free body"),
@@ -106,7 +106,7 @@ def direction(code: str, lang: str) -> str:
     t = _T[lang]
     kind, _, arg = code.partition(":")
     if kind == "perp":
-        return f"$\\perp {arg}$"
+        return f"$\\perp {tex_names(arg)}$"
     if kind == "to":
         return f"${_split_to(arg)}$"
     if kind == "guide":
@@ -124,8 +124,8 @@ def _split_to(arg: str) -> str:
 
     parts = re.findall(r"[A-Z][a-z0-9']*", arg)
     if len(parts) == 2:
-        return f"{parts[0]} \\to {parts[1]}"
-    return arg
+        return f"{point_tex(parts[0])} \\to {point_tex(parts[1])}"
+    return tex_names(arg)
 
 
 def _num(x: float) -> str:
@@ -247,7 +247,7 @@ def _force_figure(path: Path, pos, fg, members: dict, lang: str) -> None:
             a1.plot([z.real], [z.imag], "o", mfc="w", mec="k", ms=4)
             lines1.append((z, z))
             away = (z - centre) / abs(z - centre) if abs(z - centre) > 1e-12 else 1
-            labels1.append(Label(mpl_text(p), z, (away,), {"fontsize": LABEL_SIZE}))
+            labels1.append(Label(mpl_point(p), z, (away,), {"fontsize": LABEL_SIZE}))
         span = max([abs(P[a] - P[b]) for a in pts for b in pts] + [1e-9]) / pos.length_scale
         L = 0.25 * span
         for link, loads in fg.loads.items():

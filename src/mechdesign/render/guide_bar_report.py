@@ -86,7 +86,7 @@ def guide_bar_context(syn, p, rod: str = "BF", ram_zh: str | None = None,
         ["$L_{O_2A}$", _both(N_("crank")), length(d.crank, given), "mm"],
         ["$L_{O_3B}$", _both(N_("guide bar")), length(d.guide_bar, given), "mm"],
         [f"$L_{{{rod}}}$", _both(N_("rod")), length(d.rod, p.rod is not None), "mm"],
-        ["$L_{O_3M}$", _both(N_("guide line from O3")), length(d.guide_height, syn.guide_given), "mm"],
+        ["$L_{O_3M}$", _both(N_("guide line from $O_3$")), length(d.guide_height, syn.guide_given), "mm"],
         *(extra_rows or []),
         ["$L_{O_3S_4}$", _both(N_("bar CoM")), f(d.bar_com * mm, 2), "mm"],
     ]
@@ -138,7 +138,7 @@ def data_rows(b, p, ram_zh: str, rod: str, rod_ratio: float, ram_com: list,
         *form,
         ["$L_{O_2O_3}$", _both(pgettext("length", "frame")), f(lk.frame_O2O3_mm, 0), "mm"],
         rod_row,
-        *([["$L_{O_3M}$", _both(N_("guide line from O3")), f"{lk.guide_O3M_mm:g}", "mm"]]
+        *([["$L_{O_3M}$", _both(N_("guide line from $O_3$")), f"{lk.guide_O3M_mm:g}", "mm"]]
           if lk.guide_O3M_mm is not None else []),
         ["$L_{O_3S_4}/L_{O_3B}$", _both(N_("bar CoM ratio")), f(lk.com_ratio_O3S4_O3B, 2), "—"],
         *(ram_com if ram_com and isinstance(ram_com[0], list) else [ram_com]),

@@ -22,7 +22,7 @@ import numpy as np
 
 from ..i18n import tr
 from ..stages.drive import shaft_numeral
-from .labels import LabelTable, pgettext, translated
+from .labels import LabelTable, pgettext, sheet_names, sheet_point, translated
 from .sheet import (LabelPlacer, Sheet, TitleInfo, fit_height, format_number, frame, ground,
                     hatched_line, heading, length_scale, pin, scale_text, slider_block, table,
                     sub, text_width, title_block_box, turn_arrow, with_subscripts)
@@ -240,7 +240,7 @@ class _LinkageDrawing:
         mid = np.mean(list(drawn.values()))
         for name in sorted(set(mech.frame_points) | (joints & set(P))):
             d = P[name] - mid
-            placer.place(view.p(P[name]), name, 3.5, prefer=d if abs(d) > 1e-9 else 1j, gap=2.5)
+            placer.place(view.p(P[name]), sheet_point(name), 3.5, prefer=d if abs(d) > 1e-9 else 1j, gap=2.5)
         numbered = []
         for link, names in self.members.items():
             outline = _link_outline([P[p] for p in names if p in drawn])
@@ -259,7 +259,7 @@ class _LinkageDrawing:
 
     def legend(self, numbered: list, lang: str) -> str:
         names = getattr(self.model, "names", None) or {}
-        return "  ".join(f"{lk} {names[lk][0 if lang == 'zh' else 1]}" for lk in
+        return "  ".join(f"{lk} {sheet_names(names[lk][0 if lang == 'zh' else 1])}" for lk in
                          sorted(set(numbered), key=lambda x: (len(x), x)) if lk in names)
 
 
@@ -429,7 +429,7 @@ def lockbeam_diagram(results, found, info: TitleInfo, lang: str) -> Sheet:
         placer.block_box((view.p(complex(xw, yc)).real - 4, view.p(complex(xw, yc - 7.0)).imag,
                           view.p(complex(xw, yc)).real + 4, view.p(complex(xw, yc + 7.0)).imag))
     _omega_arrow(s, view, o, float(np.max(np.abs(pd["profile"] - o))), L["sigma_pin"] > 0, placer, lab)
-    placer.place(view.p(o), "O2", 3.5, prefer=-1 - 1j, gap=3.0)
+    placer.place(view.p(o), sheet_point("O2"), 3.5, prefer=-1 - 1j, gap=3.0)
     # the roller centre of the positioning pin: F (B is the bending four-bar's pin)
     placer.place(view.p(pd["B"]), "F", 3.5, prefer=-1 + 0.3j, gap=3.0)
     placer.place(view.p((pd["B"] + pd["stem_top"]) / 2), "7", 3.5, prefer=1, gap=3.0)
@@ -477,7 +477,7 @@ def lockbeam_diagram(results, found, info: TitleInfo, lang: str) -> Sheet:
     # the four-bar as the report names it: G0 G B B0 (A is the feed crank's pin)
     for name, z, d in (("O2", o, -1 - 1j), ("C", bd["C"], -1j), ("G0", f["G0"], -1 + 1j), ("G", f["G"], 1),
                        ("B", f["B"], 1j), ("B0", f["B0"], 1 - 1j), ("E0", bd["small"], 1 - 1j)):
-        placer.place(view.p(z), name, 3.5, prefer=d, gap=2.5)
+        placer.place(view.p(z), sheet_point(name), 3.5, prefer=d, gap=2.5)
     k = bd["profile"][len(bd["profile"]) // 2]
     placer.place(view.p(k), "2", 3.5, prefer=k - o, gap=2.5)
     for num, a, b in (("8", f["G0"], f["G"]), ("9", f["G"], f["B"])):
@@ -585,7 +585,7 @@ def crank_rocker_diagram(opt, slider, info: TitleInfo, lang: str) -> Sheet:
         mid = np.mean(list(P.values()))
         for name, z in P.items():
             d = z - mid
-            placer.place(view.p(z), name, 3.5, prefer=d if abs(d) > 1e-9 else 1j, gap=2.5)
+            placer.place(view.p(z), sheet_point(name), 3.5, prefer=d if abs(d) > 1e-9 else 1j, gap=2.5)
         for num, a, b in links:
             d = (b - a) / abs(b - a)
             placer.place(view.p((a + b) / 2), num, 3.5, prefer=1j * d, gap=2.0)
@@ -594,6 +594,7 @@ def crank_rocker_diagram(opt, slider, info: TitleInfo, lang: str) -> Sheet:
         low = min(min(view.p(z).imag for z in P.values()) - 8.0,
                   view.p(P["A"]).imag - crank_len * view.scale - 4.0)
         cx = float(np.mean([view.p(z).real for z in P.values()]))
+        caption = sheet_names(caption)          # "… its first extreme C1" → C₁
         placer.text(complex(cx, max(low, area[1] - 4.0)), caption, fit_height(caption, 180.0, 3.5),
                     "center", "top")
 

@@ -4,6 +4,7 @@ is written once in English and read as ``LABELS[lang]["x"]`` — the table in ``
 entries and tuples of them are translated, anything else is passed through)."""
 from __future__ import annotations
 
+import re
 from collections.abc import Mapping
 from typing import NamedTuple
 
@@ -54,3 +55,96 @@ class LabelTable(Mapping):
 
     def __contains__(self, lang) -> bool:
         return isinstance(lang, str)
+
+
+# -- point names typeset -------------------------------------------------------------------
+# The textbook writes a point name's digits as a subscript: O₁, S₃, B₁B₂, A₄O₃ (letters and
+# primes as they are). A name becomes text in one of three media — Markdown (pandoc math
+# ``$O_1$``), a matplotlib figure (mathtext ``$O_1$``) or a drawing sheet (the sheet's
+# subscript markers, :func:`~mechdesign.render.sheet.sub`) — and each has one function here
+# for a name (or a run of names such as "O1A") and one for a text holding names ("crank O1A",
+# "导杆 O3D"). A name inside a subscript (``v_{S4}``, ``F_{R12}``, ``l_{O2A}``) is already
+# lowered and stays as written.
+
+_NAMES = re.compile(r"(?:[A-Z][0-9]*'*)+")
+_DIGITS = re.compile(r"([A-Z])([0-9]+)")
+# a run of point names with a digit standing as a word (not inside "Y90S-6"-like codes:
+# callers pass only texts that hold point names)
+_NAME_WORD = re.compile(r"(?<![A-Za-z0-9_\\$'{])((?:[A-Z][0-9]*'*)*[A-Z][0-9]+'*(?:[A-Z][0-9]*'*)*)"
+                        r"(?![A-Za-z0-9_$}]|'(?![a-z]))")
+
+
+def subscripted(name: str) -> bool:
+    """True when ``name`` is a point name (or a run of them, "O1A") with a digit to lower."""
+    name = str(name)
+    return bool(_NAMES.fullmatch(name)) and any(ch.isdigit() for ch in name)
+
+
+def point_tex(name: str) -> str:
+    r"""A point name, or a run of them, in TeX (LaTeX, pandoc, mathtext) with its digits a
+    subscript: "O1" → "O_1", "O1A" → "O_1A", "A4O3" → "A_4O_3", "S12'" → "S_{12}'"; another
+    form as :func:`~mechdesign.render.fmt.tex_name` writes it."""
+    from .fmt import tex_name
+
+    name = str(name)
+    if not _NAMES.fullmatch(name):
+        return tex_name(name)
+    return _DIGITS.sub(lambda m: f"{m[1]}_{m[2]}" if len(m[2]) == 1 else f"{m[1]}_{{{m[2]}}}", name)
+
+
+def md_point(name: str) -> str:
+    """A point name (or a run of them) for Markdown: "$O_1$" where it has a digit, else escaped
+    as written."""
+    from .fmt import md_text
+
+    return f"${point_tex(name)}$" if subscripted(name) else md_text(name)
+
+
+def _mpl_math(name: str) -> str:
+    # \mathregular: the figure's text font, upright, like the names without a digit beside it
+    return f"$\\mathregular{{{point_tex(name)}}}$"
+
+
+def mpl_point(name: str) -> str:
+    """A point name (or a run of them) for a matplotlib text: mathtext "$\\mathregular{O_1}$"
+    (upright, in the text font) where it has a digit, else as written."""
+    from .fmt import mpl_text
+
+    return _mpl_math(name) if subscripted(name) else mpl_text(name)
+
+
+def sheet_point(name: str) -> str:
+    """A point name (or a run of them) for a sheet text: its digits marked as subscripts."""
+    from .sheet import sub
+
+    name = str(name)
+    if not subscripted(name):
+        return name
+    return _DIGITS.sub(lambda m: sub(m[1], m[2]), name)
+
+
+def md_names(text: str) -> str:
+    """A text holding point names ("crank O1A", "导杆 O3D") for Markdown: escaped, each run of
+    names with a digit as math ("crank $O_1A$")."""
+    from .fmt import md_text
+
+    return _NAME_WORD.sub(lambda m: f"${point_tex(m[1])}$", md_text(text))
+
+
+def mpl_names(text: str) -> str:
+    """A text holding point names for a matplotlib text: each run of names with a digit as
+    mathtext, the rest drawn as written."""
+    from .fmt import mpl_text
+
+    return _NAME_WORD.sub(lambda m: _mpl_math(m[1]), mpl_text(text))
+
+
+def sheet_names(text: str) -> str:
+    """A text holding point names for a sheet: each name's digits marked as subscripts."""
+    return _NAME_WORD.sub(lambda m: sheet_point(m[1]), str(text))
+
+
+def tex_names(text: str) -> str:
+    """A TeX fragment holding point names at the baseline ("\\perp O2A", "S4 \\to O3"): each
+    run of names with a digit lowered ("\\perp O_2A")."""
+    return _NAME_WORD.sub(lambda m: point_tex(m[1]), str(text))

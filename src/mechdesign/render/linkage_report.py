@@ -14,10 +14,10 @@ import numpy as np
 
 from ..i18n import N_, tr
 from . import figures as fig
-from .fmt import e, f, force_unit, md_text, mpl_text, sig, tex_name
+from .fmt import e, f, force_unit, md_text, sig, tex_name
 from .fmt import verdict as fmt_verdict
 from .label_layout import Label, place
-from .labels import LabelTable
+from .labels import LabelTable, md_names, md_point, mpl_names, mpl_point
 
 DEG = 180.0 / np.pi
 
@@ -98,7 +98,7 @@ def _quality_figure(path, lang, ph, span, k, model):
         fig._phase_axis(ax, span)
         for q in k.quality:
             sym = "γ" if q.kind == "transmission" else "α"
-            ax.plot(ph, q.values[:n] * DEG, lw=1.3, label=f"{sym} {mpl_text(_group_namer(model, lang)(q.group))}")
+            ax.plot(ph, q.values[:n] * DEG, lw=1.3, label=f"{sym} {mpl_names(_group_namer(model, lang)(q.group))}")
         if model.pressure_angle_limit is not None:
             ax.axhline(model.pressure_angle_limit * DEG, color="C3", ls="--", lw=0.9,
                        label=f"[α] = {model.pressure_angle_limit * DEG:.0f}°")
@@ -196,14 +196,14 @@ def skeleton(path: Path, lang: str, model, k, members: dict, sliders: list):
             z = complex(z) * 1e3
             ax.plot([z.real], [z.imag], "^", color="k", ms=6, zorder=4)
             lines.append((z, z))
-            names.append(Label(mpl_text(name), z, (1 - 1j,), {"fontsize": 8.5}))
+            names.append(Label(mpl_point(name), z, (1 - 1j,), {"fontsize": 8.5}))
         j0 = regular[0]
         for name in P:
             if name not in frame:
                 z = P[name][j0]
                 ax.plot([z.real], [z.imag], "o", color="C0", ms=2.5, zorder=4)
                 lines.append((z, z))
-                names.append(Label(mpl_text(name), z, _away_from_links(z, lines),
+                names.append(Label(mpl_point(name), z, _away_from_links(z, lines),
                                    {"fontsize": 8.5, "color": "C0"}))
         ax.set_aspect("equal")
         ax.set_xlabel("x (mm)")
@@ -232,12 +232,12 @@ def _link_rows(model, lang: str) -> list[list[str]]:
 
     zh = lang == "zh"
     _ = tr(lang)
-    m = md_text
+    m = md_point            # a point name or a run of them ("O1A"), its digits lowered
     gn = _group_namer(model, lang)
 
     def ids(*links):
         # The machine's names of its links, where it gives them (e.g. 4 摇杆).
-        return ", ".join(m(f"{l_} {model.names[l_][0 if zh else 1]}" if l_ in model.names else l_)
+        return ", ".join(md_names(f"{l_} {model.names[l_][0 if zh else 1]}" if l_ in model.names else l_)
                          for l_ in links)
 
     rows = []
@@ -248,16 +248,16 @@ def _link_rows(model, lang: str) -> list[list[str]]:
                          f"{bar} = {f(g.length * 1e3, 2)} mm"])
         elif isinstance(g, RRR):
             bc, dc = m(f"{g.b}{g.c}"), m(f"{g.d}{g.c}")
-            rows.append([m(gn(g.name)), ids(g.link1, g.link2), f"{bc}, {dc}",
+            rows.append([md_names(gn(g.name)), ids(g.link1, g.link2), f"{bc}, {dc}",
                          f"{bc} = {f(g.l1 * 1e3, 2)} mm, {dc} = {f(g.l2 * 1e3, 2)} mm"])
         elif isinstance(g, RRP):
             bc = m(f"{g.b}{g.c}")
-            rows.append([m(gn(g.name)), ids(g.rod, g.slider), bc,
+            rows.append([md_names(gn(g.name)), ids(g.rod, g.slider), bc,
                          f"{bc} = {f(g.length * 1e3, 2)} mm; "
                          + _("guide through ({x}, {y}) mm, {angle}°", x=f(g.guide_point.real * 1e3, 1),
                              y=f(g.guide_point.imag * 1e3, 1), angle=f(g.guide_angle * DEG, 1))])
         elif isinstance(g, RPR):
-            rows.append([m(gn(g.name)), ids(g.slider, g.bar), m(f"{g.pivot}{g.a}"),
+            rows.append([md_names(gn(g.name)), ids(g.slider, g.bar), m(f"{g.pivot}{g.a}"),
                          _("offset {e} mm", e=f(g.offset * 1e3, 2))])
         elif isinstance(g, LinkPoint):
             bar = m(f"{g.origin}{g.name}")
@@ -284,10 +284,10 @@ def linkage_context(model, k, f_, fly, v, figures: dict, lang: str,
     scale, units = _units(k)
     labels = _labels(k)
     frame = model.mechanism.frame_points
-    frame_rows = [[md_text(name), f(complex(z).real * 1e3, 2), f(complex(z).imag * 1e3, 2)]
+    frame_rows = [[md_point(name), f(complex(z).real * 1e3, 2), f(complex(z).imag * 1e3, 2)]
                   for name, z in frame.items()]
     point_names = [p for p in k.points if p not in frame]
-    qual_head = [("$\\gamma$ " if q.kind == "transmission" else "$\\alpha$ ") + md_text(q.point)
+    qual_head = [("$\\gamma$ " if q.kind == "transmission" else "$\\alpha$ ") + md_point(q.point)
                  for q in k.quality]
     kin_rows, force_rows, point_rows = [], [], []
     reaction_names = list(f_.reactions)
@@ -326,16 +326,16 @@ def linkage_context(model, k, f_, fly, v, figures: dict, lang: str,
             work = f"{f(q.working_extreme * DEG, 2)}° @ φ = {f(q.working_extreme_phase * DEG, 1)}°"
             limit = "—" if model.pressure_angle_limit is None else \
                 _("≤ {limit}° (working stroke)", limit=f(model.pressure_angle_limit * DEG, 0))
-        qual_rows.append([md_text(gname(q.group)), kind, md_text(q.point), extreme, work, limit])
+        qual_rows.append([md_names(gname(q.group)), kind, md_point(q.point), extreme, work, limit])
     res_rows = []
     for i, r in enumerate(model.resistances):
         window = "—"
         if r.active is not None:
             window = f"{f(r.active[0] * scale, 1)} – {f(r.active[1] * scale, 1)} {units[0]}"
-        res_rows.append([f"R{i + 1}", md_text(r.point), md_text(r.link), f(r.direction * DEG, 1),
+        res_rows.append([f"R{i + 1}", md_point(r.point), md_text(r.link), f(r.direction * DEG, 1),
                          f(r.working / kilo, force_digits, group=True),
                          f(r.returning / kilo, force_digits, group=True), window])
-    mass_rows = [[md_text(b.link), md_text(b.com), f(b.mass, 2), f(b.inertia, 4)]
+    mass_rows = [[md_text(b.link), md_point(b.com), f(b.mass, 2), f(b.inertia, 4)]
                  for b in model.bodies]
     omega = abs(model.crank_omega)
     ctx = {
@@ -348,7 +348,7 @@ def linkage_context(model, k, f_, fly, v, figures: dict, lang: str,
         "mass_rows": mass_rows, "res_rows": res_rows,
         "speed": f(omega * 30 / np.pi, 2), "omega": f(omega, 4),
         "sense": _("clockwise") if model.crank_omega < 0 else _("counter-clockwise"),
-        "output": md_text(model.output.name),
+        "output": md_names(model.output.name),
         "unit_s": units[0], "unit_v": units[1], "unit_a": units[2],
         "stroke": f(k.stroke * scale, 2), "K": f(k.time_ratio, 4),
         "theta": f(180 * (k.time_ratio - 1) / (k.time_ratio + 1), 2),
@@ -357,7 +357,7 @@ def linkage_context(model, k, f_, fly, v, figures: dict, lang: str,
         "start_angle": f((k.start_angle * DEG) % 360, 3),
         "grid_points": str(n),
         "kin_head": qual_head, "kin_rows": kin_rows,
-        "point_names": [md_text(p) for p in point_names], "point_rows": point_rows,
+        "point_names": [md_point(p) for p in point_names], "point_rows": point_rows,
         "link_ids": [md_text(l_) for l_ in k.link_omega], "link_speed_rows": link_speed_rows,
         "qual_rows": qual_rows,
         "reaction_names": [f"$F_{{{tex_name(nm)}}}$" for nm in reaction_names],

@@ -14,7 +14,7 @@ import numpy as np
 
 from ..i18n import N_, tr
 from .fmt import f
-from .labels import LabelTable
+from .labels import LabelTable, md_point
 
 DEG = 180.0 / np.pi
 
@@ -108,5 +108,5 @@ def requests_context(results: dict, brief, figures: dict, lang: str) -> dict | N
             rows.append([shown(label), f(k.phase[j] * DEG, 2), f(abs(v), 4),
                          f(np.degrees(np.angle(v)) if abs(v) > 1e-9 * sv else 0.0, 2), f(abs(a), 4),
                          f(np.degrees(np.angle(a)) if abs(a) > 1e-9 * sa else 0.0, 2)])
-        tables.append({"name": name, "rows": rows})
+        tables.append({"name": name, "label": md_point(name), "rows": rows})
     return {"asked": asked, "tables": tables, "fig": figures.get("named_points")}

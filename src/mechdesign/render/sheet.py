@@ -886,7 +886,10 @@ class LabelPlacer:
         self.boxes.append(text_box(complex(p), text, h, halign, valign))
 
     def place(self, anchor: complex, text: str, height: float = 3.5,
-              prefer: complex = 1j, gap: float = 2.5, layer: str = "TEXT") -> complex:
+              prefer: complex = 1j, gap: float = 2.5, layer: str = "TEXT",
+              crowded: bool = True) -> complex | None:
+        """A point label at the first free spot; where there is none, beside the anchor over
+        whatever is there — or, with ``crowded=False``, nothing drawn and None returned."""
         w, h = text_width(text, height), height
         u = prefer / abs(prefer) if abs(prefer) > 1e-12 else 1j
         turns = [0, 1, -1, 2, -2, 3, -3, 4]
@@ -903,6 +906,8 @@ class LabelPlacer:
             if best is not None:
                 break
         if best is None:
+            if not crowded:
+                return None
             c = anchor + u * (gap + 0.5 * w)
             best = (c, (c.real - w / 2, c.imag - h / 2, c.real + w / 2, c.imag + h / 2))
         c, box = best

@@ -12,7 +12,7 @@ from ...render.figures import figure
 from ...render.fmt import e as fe
 from ...render.fmt import verdict
 from ...render.fmt import f, md_meta, md_text, mpl_text
-from ...render.labels import LabelTable
+from ...render.labels import LabelTable, mpl_point, subscripted
 from ...i18n import N_, tr
 
 DEG = 180.0 / np.pi
@@ -80,6 +80,7 @@ def _arc(ax, centre, radius, a0, a1, **kw):
 
 
 def _label(ax, z, text, dx=0.0, dy=0.0, **kw):
+    text = mpl_point(text) if subscripted(text) else text       # B1 → B₁ (mathtext)
     ax.text(z.real * MM + dx, z.imag * MM + dy, text, fontsize=8, **kw)
 
 

@@ -174,7 +174,7 @@ def _choice_rows(b, p, r, _) -> list[list[str]]:
     ]
     if given:
         dm = pr.dimensions
-        rows.append(["$a, b, d$", _("crank O1A, coupler AB, frame O1C (given)"),
+        rows.append(["$a, b, d$", _("crank $O_1A$, coupler AB, frame $O_1C$ (given)"),
                      f"{f(dm.crank_O1A_mm, 3)}, {f(dm.coupler_AB_mm, 3)}, {f(dm.frame_O1C_mm, 3)} mm",
                      _("the brief's dimensions, no synthesis; θ, ψ, K and H are derived from them "
                        "(see the toggle press chapter)")])
@@ -311,7 +311,7 @@ def _synthesis(d, p, _) -> dict:
     if given:
         rows[2:2] = [["$K$", _("time ratio") + der, f(K, 4), "—"],
                      ["$H$", _("platen stroke") + der, f(g.stroke * MM, 4), "mm"]]
-    pivot = _("the point of the θ-circle at the given frame O1C") \
+    pivot = _("the point of the θ-circle at the given frame $O_1C$") \
         if g.frame is not None else \
         _("searched along the allowed arc of the θ-circle for the largest minimum "
            "transmission angle")

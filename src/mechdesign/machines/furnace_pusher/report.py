@@ -10,6 +10,7 @@ from ...i18n import N_, tr
 from ...render import figures as fig
 from ...render.fmt import e, f, md_meta, md_text, sig
 from ...render.fmt import verdict
+from ...render.labels import mpl_names, mpl_point
 
 DEG = 180.0 / np.pi
 MM = 1e3
@@ -71,9 +72,9 @@ def _scheme(path: Path, lang: str, syn) -> None:
                   color="C2")
         for name, q, dy in (("C1", c_start, -60), ("C2", c_end, -60), ("E1", syn.E1, 22),
                             ("E2", syn.E2, 22)):
-            left.text(q.real * MM, q.imag * MM + dy, name, fontsize=7, ha="center")
+            left.text(q.real * MM, q.imag * MM + dy, mpl_point(name), fontsize=7, ha="center")
         left.text(20, -50, "D", fontsize=8)
-        left.text(o1.real + 20, o1.imag - 50, "O1", fontsize=8)
+        left.text(o1.real + 20, o1.imag - 50, mpl_point("O1"), fontsize=8)
         left.set_xlim(xs.min() - 350, xs.max() + 200)
         left.set_ylim(-100, yg + 130)
         left.set_ylabel("y (mm)")
@@ -92,8 +93,8 @@ def _scheme(path: Path, lang: str, syn) -> None:
             right.text(centre.real + 6, centre.imag + 6, _("θ-circle"), color="C2", fontsize=7)
         for name, q in (("B1", B1), ("B2", B2), (_("A (folded)"), syn.A_fold * MM),
                         (_("A (extended)"), syn.A_ext * MM)):
-            right.text(q.real + 5, q.imag + 6, name, fontsize=7)
-        right.text(o1.real + 6, o1.imag - 16, "O1", fontsize=8)
+            right.text(q.real + 5, q.imag + 6, mpl_names(name), fontsize=7)
+        right.text(o1.real + 6, o1.imag - 16, mpl_point("O1"), fontsize=8)
         pts = np.array([B1, B2, o1, syn.A_fold * MM, syn.A_ext * MM])
         pad = 0.45 * max(np.ptp(pts.real), np.ptp(pts.imag))
         right.set_xlim(pts.real.min() - pad, pts.real.max() + pad)
@@ -321,12 +322,12 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
         ["$\\gamma_{min}$ /°", f(sd.gamma_min * DEG, 2), "≥ " + f(syn.gamma_limit * DEG, 0)],
     ]
     side_txt = _({
-        1: N_("O1 on D's side of the chord B1B2 (the textbook's θ-circle)"),
-        -1: N_("O1 beyond the chord B1B2 (the mirror θ-circle)"),
+        1: N_("$O_1$ on D's side of the chord $B_1B_2$ (the textbook's θ-circle)"),
+        -1: N_("$O_1$ beyond the chord $B_1B_2$ (the mirror θ-circle)"),
     }[syn.side])
     if syn.criterion == "max_gamma":
         if syn.constraint_active:
-            crit = _("the limit at B is active: O1 sits where the working-stroke transmission angle "
+            crit = _("the limit at B is active: $O_1$ sits where the working-stroke transmission angle "
                       "is exactly {lim}°; without it the best $\\gamma_{{min}}$ would be "
                       "{gamma_unconstrained}°.", lim=f(90 - lim, 0),
                       gamma_unconstrained=f(syn.gamma_unconstrained * DEG, 2))
@@ -341,14 +342,14 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
                  if syn.limit_rocker and syn.gamma_other_side == 0 else
                  _("On the other θ-circle the best $\\gamma_{{min}}$ is only {best}°.", best=best))
     elif syn.criterion == "given":
-        crit = _("the dimensions are the brief's, no synthesis: O1 is where the circle of "
-                  "radius d about D cuts the circle of radius b − a about B1, on the θ-circle "
+        crit = _("the dimensions are the brief's, no synthesis: $O_1$ is where the circle of "
+                  "radius d about D cuts the circle of radius b − a about $B_1$, on the θ-circle "
                   "(the best $\\gamma_{{min}}$ on the same θ-circle would be "
                   "{gamma_unconstrained}°).",
                   gamma_unconstrained=f(syn.gamma_unconstrained * DEG, 2))
         other = ""
     else:
-        crit = _("the frame is given: O1 is where the circle of radius d about D cuts the "
+        crit = _("the frame is given: $O_1$ is where the circle of radius d about D cuts the "
                   "θ-circle.")
         other = ""
     # Torque: kinetostatics against virtual work at the positions.

@@ -15,6 +15,7 @@ from ...i18n import N_, tr
 from ...render import figures as fig
 from ...render.fmt import e, f, md_meta, md_text, sig
 from ...render.fmt import verdict
+from ...render.labels import mpl_point
 
 DEG = 180.0 / np.pi
 MM = 1e3
@@ -98,10 +99,10 @@ def _linkage_drawing(path: Path, lang: str, b, wheel_d: float):
                     marker="o", ms=3 if bold else 1.5)
         for z, name in ((0j, "G0"), (complex(B0, 0), "B0")):
             ax.plot([z.real], [z.imag], "^", color="k", ms=7)
-            ax.text(z.real, z.imag - 12, name, ha="center", va="top", fontsize=8)
+            ax.text(z.real, z.imag - 12, mpl_point(name), ha="center", va="top", fontsize=8)
         for j, tag in ((0, "1"), (len(A) - 1, "2")):
-            ax.text(A[j].real, A[j].imag + 5, f"G{tag}", fontsize=8, color="C0" if j == 0 else "C3")
-            ax.text(B[j].real + 3, B[j].imag + 3, f"B{tag}", fontsize=8, color="C0" if j == 0 else "C3")
+            ax.text(A[j].real, A[j].imag + 5, mpl_point(f"G{tag}"), fontsize=8, color="C0" if j == 0 else "C3")
+            ax.text(B[j].real + 3, B[j].imag + 3, mpl_point(f"B{tag}"), fontsize=8, color="C0" if j == 0 else "C3")
         ax.set_aspect("equal")
         ax.set_xlabel("x (mm)")
         ax.set_ylabel("y (mm)")
@@ -393,10 +394,10 @@ def _bending(r: dict, lang: str, figures: dict) -> dict:
                           f(d_.coupler * MM, 2), f(g * DEG, 2), f(peak, 4),
                           _("; ").join(note)])
     design_rows = [
-        ["$d$", _("frame G0B0"), f(ds.frame * MM, 2), "mm"],
-        ["$a$", _("input rocker G0G"), f(ds.input_rocker * MM, 2), "mm"],
+        ["$d$", _("frame $G_0B_0$"), f(ds.frame * MM, 2), "mm"],
+        ["$a$", _("input rocker $G_0G$"), f(ds.input_rocker * MM, 2), "mm"],
         ["$b$", _("coupler GB"), f(ds.coupler * MM, 2), "mm"],
-        ["$c$", _("arm on the wheel B0B"), f(ds.output_rocker * MM, 2), "mm"],
+        ["$c$", _("arm on the wheel $B_0B$"), f(ds.output_rocker * MM, 2), "mm"],
         ["$\\alpha_1$", _("input start angle"), ad(ds.alpha1), "°"],
         ["$\\beta_1$", _("arm start angle"), ad(ds.beta1), "°"],
         ["$\\Delta\\alpha$", _("input swing"), f(ds.dalpha * DEG, 3), "°"],

@@ -149,9 +149,9 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
          *([["$y_{S_6}$", _.pgettext("shaper", "ram CoM above F"), f(lk.ram_com_y_S6_mm, 0), "mm"]]
            if "ram_com_y_S6_mm" in lk.model_fields_set else [])],
         zh_words.pgettext("shaper", "cutting resistance"),
-        ["$y_P$", _("cutting line above O2"), f(ld.cutting_height_yP_mm, 0), "mm"])
+        ["$y_P$", _("cutting line above $O_2$"), f(ld.cutting_height_yP_mm, 0), "mm"])
     guide_bar = gb_report.guide_bar_context(syn, p, "BF", zh_words.pgettext("shaper", "ram"), [
-        ["$L_{O_2M}$", _("guide line above O2"), f(syn.guide_height_above_O2 * mm, 2), "mm"]])
+        ["$L_{O_2M}$", _("guide line above $O_2$"), f(syn.guide_height_above_O2 * mm, 2), "mm"]])
     # Course typography: primes, not apostrophes (8′).
     labels = [lab.replace("'", "′") for lab in k.positions.labels]
     kin_rows, load_rows, reaction_rows = [], [], []
@@ -205,7 +205,7 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
     }
     sense = N_("clockwise") if p.crank_omega < 0 else N_("counter-clockwise")
     sense_zh, sense_en = zh_words(sense), sense
-    shaft = N_("the pinion shaft O1 ($z_1$)") if fl.shaft == "pinion" else N_("the crank shaft O2")
+    shaft = N_("the pinion shaft $O_1$ ($z_1$)") if fl.shaft == "pinion" else N_("the crank shaft $O_2$")
     return {
         **gb_report.optional_sections(r, lang, figures),
         **gb_report.task_words(p, syn),
