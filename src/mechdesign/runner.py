@@ -182,9 +182,13 @@ def run_one(brief: Path, *, out_dir: Path | None = None, lang: str | None = None
     warnings = []
     for value in results.values():
         for finding in getattr(value, "warnings", None) or ():
-            warnings.append(finding.text(language))
+            text = finding.text(language)
+            field = getattr(finding, "field", "")
+            if field and field not in text:     # the terminal names the brief field to change
+                text = f"{field}: {text}"
+            warnings.append(text)
             if on_warning is not None:
-                on_warning(finding.text(language))
+                on_warning(text)
     computed = time.perf_counter() - start
 
     def sheet_warning(text: str) -> None:   # a sheet left out: a warning of the run

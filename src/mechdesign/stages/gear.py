@@ -63,12 +63,15 @@ def gear_findings(g: gears.SpurPair, prefix: str = "gear_pair") -> tuple[Finding
     for name, gd, x_min in (("1", g.g1, g.x_min1), ("2", g.g2, g.x_min2)):
         if gd.x < x_min - 1e-9:
             need = math.ceil(g.z_min - 1e-9)
+            # the report's text names no brief field (the terminal shows ``field``) and
+            # writes the limits in words: the formulas stand in the report above it
             out.append(finding(
                 "undercut",
-                N_("gear {name} (z = {z}) is undercut: z < zₘᵢₙ = 2hₐ*/sin²α = {z_min:.1f} and "
-                   "x = {x:g} < xₘᵢₙ = hₐ*(zₘᵢₙ − z)/zₘᵢₙ = {x_min:.3f}; use a positive shift "
-                   "{prefix}.x{name} ≥ {x_min:.3f} or {prefix}.z{name} ≥ {need}."),
-                name=name, z=gd.z, z_min=g.z_min, x=gd.x, x_min=x_min, prefix=prefix, need=need))
+                N_("gear {name} (z = {z}) is undercut: it has fewer teeth than the least number "
+                   "without undercut, {z_min:.1f}, and its shift x = {x:g} is below the least "
+                   "shift {x_min:.3f}; use a positive shift x ≥ {x_min:.3f} or at least {need} teeth."),
+                field=f"{prefix}.x{name}", name=name, z=gd.z, z_min=g.z_min, x=gd.x, x_min=x_min,
+                need=need))
         if gd.sa < MIN_TIP_THICKNESS * g.m:
             fix = (Msg(N_("reduce its shift {prefix}.x{name}"), prefix=prefix, name=name) if gd.x > 0
                    else Msg(N_("use more teeth ({prefix}.z{name})"), prefix=prefix, name=name))
