@@ -7,7 +7,7 @@ import numpy as np
 
 from ..stages.drive import shaft_numeral
 from ..i18n import N_, tr
-from .fmt import f, grouped, md_text, percent, sig
+from .fmt import f, grouped, md_text, percent, rpm, sig
 
 MM = 1e3
 
@@ -50,10 +50,10 @@ def drive_context(d, lang: str, figures: dict[str, str], machine_power_eq: str |
                 rf"{f(d.bearing_eff, 3)}^{{{n_b}}} \times {f(d.machine_eff, 3)} = {f(d.efficiency, 4)}"),
         "pd": (rf"P_d = \frac{{P_w}}{{\eta}} = \frac{{{sig(d.machine_power / 1e3, group=False)}}}{{{f(d.efficiency, 4)}}}"
                rf" = {sig(d.power_required / 1e3, group=False)}\ \text{{kW}}"),
-        "i": (rf"i = \frac{{n_m}}{{n_w}} = \frac{{{f(m.full_load_rpm, 0)}}}{{{f(d.output_speed_required, 2)}}}"
+        "i": (rf"i = \frac{{n_m}}{{n_w}} = \frac{{{f(m.full_load_rpm, 0)}}}{{{rpm(d.output_speed_required)}}}"
               rf" = {sig(d.choice.total_ratio, group=False)}"),
-        "err": (rf"\Delta n = \frac{{n_w' - n_w}}{{n_w}} = \frac{{{f(d.output_speed, 2)} - "
-                rf"{f(d.output_speed_required, 2)}}}{{{f(d.output_speed_required, 2)}}} = "
+        "err": (rf"\Delta n = \frac{{n_w' - n_w}}{{n_w}} = \frac{{{rpm(d.output_speed)} - "
+                rf"{rpm(d.output_speed_required)}}}{{{rpm(d.output_speed_required)}}} = "
                 rf"{percent(d.speed_error * 100)}\%"),
         "pw": machine_power_eq,
     }
@@ -81,7 +81,7 @@ def drive_context(d, lang: str, figures: dict[str, str], machine_power_eq: str |
                   "tst": f(m.starting_torque_ratio, 1), "tmax": f(m.max_torque_ratio, 1)},
         "pw": sig(d.machine_power / 1e3), "pd": sig(d.power_required / 1e3),
         "eta": f(d.efficiency, 4), "i": sig(d.choice.total_ratio),
-        "nw": f(d.output_speed_required, 2), "nw_real": f(d.output_speed, 2),
+        "nw": rpm(d.output_speed_required), "nw_real": rpm(d.output_speed),
         "err": f(d.speed_error * 100, 2), "tol": f(d.speed_tolerance * 100, 1),
         "speed_ok": abs(d.speed_error) <= d.speed_tolerance,
         "hours": f(d.service_hours, 0), "KA": f(d.KA, 2),

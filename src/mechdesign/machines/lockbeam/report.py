@@ -13,7 +13,7 @@ import numpy as np
 
 from ...i18n import N_, tr
 from ...render import figures as fig
-from ...render.fmt import e, f, md_meta, md_text, sig, time_ratio
+from ...render.fmt import e, f, md_meta, md_text, rpm, sig, time_ratio
 from ...render.fmt import verdict
 
 DEG = 180.0 / np.pi
@@ -325,7 +325,7 @@ def _transmission(r: dict, lang: str) -> dict:
     eq_ratio = (r"i = \frac{d_2}{d_1}\prod\frac{z_{driven}}{z_{driving}} = " + r" \times ".join(parts)
                 + f" = {vals} = {trans.ratio_exact}")
     eq_speed = (rf"n = \frac{{n_m}}{{i}} = \frac{{{f(trans.motor_rpm, 0)}}}{{{trans.ratio_exact}}} = "
-                rf"{f(trans.output_rpm, 2)}\ \text{{r/min}}")
+                rf"{rpm(trans.output_rpm)}\ \text{{r/min}}")
     slip = p.transmission.slip
     shafts = []
     if p.transmission.power is not None:
@@ -335,8 +335,8 @@ def _transmission(r: dict, lang: str) -> dict:
             "ratio": str(trans.ratio_exact), "required": f"{trans.required_ratio:.6g}",
             "n_gears": str(sum(1 for s in trans.stages if s.kind == "gear")),
             "motor": f(trans.motor_rpm, 0),
-            "rate": f(trans.required_rpm, 0), "out": f(trans.output_rpm, 2),
-            "slip": f(slip, 3), "out_slip": f(trans.output_rpm_slip, 2), "has_slip": slip > 0,
+            "rate": f(trans.required_rpm, 0), "out": rpm(trans.output_rpm),
+            "slip": f(slip, 3), "out_slip": rpm(trans.output_rpm_slip), "has_slip": slip > 0,
             "shafts": shafts, "warnings": [md_text(w.text(lang)) for w in trans.warnings],
             "eq_slip": (rf"n' = \frac{{n_m (1 - \varepsilon)}}{{i}} = \frac{{{f(trans.motor_rpm, 0)} \times "
                         rf"0.98}}{{{trans.ratio_exact}}} = {f(trans.motor_rpm * 0.98 / trans.ratio, 2)}\ \text{{r/min}}")}
