@@ -156,7 +156,7 @@ def _law_eqs(c, i, u: _Units, lang):
     unit = "°" if u.osc else "\\text{mm}"
     numerator = r"\delta" if f(start, 1) == f(0.0, 1) else rf"\delta - {f(start, 1)}°"
     head = (rf"u = \frac{{{numerator}}}{{\Phi}},\quad \Phi = {f(span, 1)}°"
-            rf" = {f(np.radians(span), 4)}\ \text{{rad}}")
+            rf" = {sig(np.radians(span), group=False)}\ \text{{rad}}")
     if seg.kind == RISE and level > 1e-9:
         s_eq = rf"{sym} = {f(level, 2)} + {f(abs(lift), 2)}\,S(u)"
     elif seg.kind == RISE:
@@ -169,11 +169,11 @@ def _law_eqs(c, i, u: _Units, lang):
     sign = "" if seg.kind == RISE else "-"
     phi_rad = prog.spans[i]
     if u.omega:
-        w = f(u.omega, 4)
+        w = sig(u.omega, group=False)
         v_eq = (rf"{u.tex[0]} = {sign}\frac{{{amp}\,\omega}}{{\Phi}} S'(u) = {sign}"
-                rf"\frac{{{amp} \times {w}}}{{{f(phi_rad, 4)}}} S'(u)")
+                rf"\frac{{{amp} \times {w}}}{{{sig(phi_rad, group=False)}}} S'(u)")
         a_eq = (rf"{u.tex[1]} = {sign}\frac{{{amp}\,\omega^2}}{{\Phi^2}} S''(u) = {sign}"
-                rf"\frac{{{amp} \times {w}^2}}{{{f(phi_rad, 4)}^2}} S''(u)")
+                rf"\frac{{{amp} \times {w}^2}}{{{sig(phi_rad, group=False)}^2}} S''(u)")
     else:
         v_eq = (rf"\frac{{d{sym}}}{{d\delta}} = {sign}\frac{{{amp}}}{{\Phi}} S'(u)")
         a_eq = (rf"\frac{{d^2{sym}}}{{d\delta^2}} = {sign}\frac{{{amp}}}{{\Phi^2}} S''(u)")
@@ -250,7 +250,7 @@ def cam_context(c, lang: str, figs: dict[str, str], csv_name: str) -> dict:
         s0 = c.grid.initial_angle
         geo = {
             "s0": (rf"s_0 = \sqrt{{r_0^2 - e^2}} = \sqrt{{{f(c.base_radius * MM, 2)}^2 - "
-                   rf"{f(abs(c.offset) * MM, 2)}^2}} = {f(s0 * MM, 3)}\ \text{{mm}}"),
+                   rf"{f(abs(c.offset) * MM, 2)}^2}} = {f(s0 * MM, 2)}\ \text{{mm}}"),
             "pitch": (rf"\mathbf{{B}}(\delta) = e^{{{'-' if p.rotation > 0 else ''}i\delta}}"
                       rf"\left[e + i\,(s_0 + s)\right],\quad e = {f(c.offset * MM, 2)}\ \text{{mm}}"),
             "alpha": (rf"\tan\alpha = \frac{{\left|{'' if p.rotation > 0 else '-'}\,ds/d\delta - e\right|}}"
@@ -266,8 +266,8 @@ def cam_context(c, lang: str, figs: dict[str, str], csv_name: str) -> dict:
         geo = {
             "s0": (rf"\varphi_0 = \arccos\frac{{a^2 + L^2 - r_0^2}}{{2aL}} = \arccos\frac{{{f(a, 1)}^2 + "
                    rf"{f(L, 1)}^2 - {f(r0, 1)}^2}}{{2 \times {f(a, 1)} \times {f(L, 1)}}} = "
-                   rf"{f(phi0 * DEG, 3)}°") if fol.kind != "flat" else
-                  (rf"\varphi_0 = \arcsin\frac{{r_0}}{{a}} = {f(phi0 * DEG, 3)}°"),
+                   rf"{f(phi0 * DEG, 2)}°") if fol.kind != "flat" else
+                  (rf"\varphi_0 = \arcsin\frac{{r_0}}{{a}} = {f(phi0 * DEG, 2)}°"),
             "pitch": (rf"x = a\cos\delta - L\cos(\delta - \varphi - \varphi_0),\quad "
                       rf"y = a\sin\delta - L\sin(\delta - \varphi - \varphi_0)")
             if (p.rotation < 0 and fol.rise_sense == "same") else
@@ -348,7 +348,7 @@ def cam_context(c, lang: str, figs: dict[str, str], csv_name: str) -> dict:
         "alpha_max": f(alpha_max * DEG, 2),
         "rr": f(c.grid.roller_radius * MM, 2), "r0": f(c.base_radius * MM, 2),
         "time_derivs": bool(p.omega),
-        "omega": f(p.omega, 4) if p.omega else "",
+        "omega": sig(p.omega) if p.omega else "",
     }
 
 

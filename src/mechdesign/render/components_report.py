@@ -18,7 +18,7 @@ import numpy as np
 from ..core.cycle import STATES, TWO_PI, Constraint, CycleDiagram, PhaseRef, resolve
 from . import cycle_figures as cf
 from ..i18n import N_, tr
-from .fmt import e, f, md_paragraphs, md_text, mpl_text
+from .fmt import e, f, md_paragraphs, md_text, mpl_text, sig
 
 DEG = 180.0 / np.pi
 MM = 1e3
@@ -290,9 +290,9 @@ def intermittent_context(g, curves, lang: str, figs: dict[str, str], level: int 
         "centre": (rf"a = \frac{{m (z_1 + z_2)}}{{2}} = \frac{{{f(m, 2)} \times ({z1} + {z2})}}{{2}} = "
                    rf"{f(g.centre_distance * MM, 2)}\ \text{{mm}}"),
         "jump": ((rf"\Delta\left(\frac{{d\varphi_2}}{{d\theta}}\right) = \frac{{z_1}}{{z_2}} = "
-                  rf"\frac{{{z1}}}{{{z2}}} = {f(jump.omega2, 4)}") if per_rad else
-                 (rf"\Delta\omega_2 = \omega_1 \frac{{z_1}}{{z_2}} = {f(g.driver_speed, 4)} \times "
-                  rf"\frac{{{z1}}}{{{z2}}} = {f(jump.omega2, 4)}\ \text{{rad/s}}")),
+                  rf"\frac{{{z1}}}{{{z2}}} = {sig(jump.omega2, group=False)}") if per_rad else
+                 (rf"\Delta\omega_2 = \omega_1 \frac{{z_1}}{{z_2}} = {sig(g.driver_speed, group=False)} \times "
+                  rf"\frac{{{z1}}}{{{z2}}} = {sig(jump.omega2, group=False)}\ \text{{rad/s}}")),
     }
     required = []
     if g.requested_motion_angle is not None:

@@ -7,7 +7,7 @@ import numpy as np
 
 from ..stages.drive import shaft_numeral
 from ..i18n import N_, tr
-from .fmt import f, grouped, md_text, sig
+from .fmt import f, grouped, md_text, percent, rpm, sig
 
 MM = 1e3
 
@@ -50,11 +50,11 @@ def drive_context(d, lang: str, figures: dict[str, str], machine_power_eq: str |
                 rf"{f(d.bearing_eff, 3)}^{{{n_b}}} \times {f(d.machine_eff, 3)} = {f(d.efficiency, 4)}"),
         "pd": (rf"P_d = \frac{{P_w}}{{\eta}} = \frac{{{sig(d.machine_power / 1e3, group=False)}}}{{{f(d.efficiency, 4)}}}"
                rf" = {sig(d.power_required / 1e3, group=False)}\ \text{{kW}}"),
-        "i": (rf"i = \frac{{n_m}}{{n_w}} = \frac{{{f(m.full_load_rpm, 0)}}}{{{f(d.output_speed_required, 3)}}}"
-              rf" = {f(d.choice.total_ratio, 3)}"),
-        "err": (rf"\Delta n = \frac{{n_w' - n_w}}{{n_w}} = \frac{{{f(d.output_speed, 3)} - "
-                rf"{f(d.output_speed_required, 3)}}}{{{f(d.output_speed_required, 3)}}} = "
-                rf"{f(d.speed_error * 100, 2)}\%"),
+        "i": (rf"i = \frac{{n_m}}{{n_w}} = \frac{{{f(m.full_load_rpm, 0)}}}{{{rpm(d.output_speed_required)}}}"
+              rf" = {sig(d.choice.total_ratio, group=False)}"),
+        "err": (rf"\Delta n = \frac{{n_w' - n_w}}{{n_w}} = \frac{{{rpm(d.output_speed)} - "
+                rf"{rpm(d.output_speed_required)}}}{{{rpm(d.output_speed_required)}}} = "
+                rf"{percent(d.speed_error * 100)}\%"),
         "pw": machine_power_eq,
     }
     yes, no = (_("yes"), _("no"))
@@ -80,8 +80,8 @@ def drive_context(d, lang: str, figures: dict[str, str], machine_power_eq: str |
                   "n": f(m.full_load_rpm, 0), "H": f(m.frame_height * MM, 0),
                   "tst": f(m.starting_torque_ratio, 1), "tmax": f(m.max_torque_ratio, 1)},
         "pw": sig(d.machine_power / 1e3), "pd": sig(d.power_required / 1e3),
-        "eta": f(d.efficiency, 4), "i": f(d.choice.total_ratio, 3),
-        "nw": f(d.output_speed_required, 3), "nw_real": f(d.output_speed, 3),
+        "eta": f(d.efficiency, 4), "i": sig(d.choice.total_ratio),
+        "nw": rpm(d.output_speed_required), "nw_real": rpm(d.output_speed),
         "err": f(d.speed_error * 100, 2), "tol": f(d.speed_tolerance * 100, 1),
         "speed_ok": abs(d.speed_error) <= d.speed_tolerance,
         "hours": f(d.service_hours, 0), "KA": f(d.KA, 2),
@@ -173,7 +173,7 @@ def stage_designs(d, lang: str) -> list[dict]:
             continue
         m_text = (f"{f(g.module * MM, 2)} mm" + ("" if g.module_given else
                   (_(" (the design formula gives {module_min} mm; next standard value)",
-                     module_min=f(g.module_min * MM, 3)))))
+                     module_min=f(g.module_min * MM, 2)))))
         a = g.allowables
         if g.kind == "gear":
             e = g.extra
@@ -214,7 +214,7 @@ def stage_designs(d, lang: str) -> list[dict]:
             text.append(_("Sliding speed $v_s = {vs}$ m/s, equivalent friction angle $\\varphi_v = "
                           "{phi_v}°$, efficiency $\\eta = 0.95\\tan\\gamma/\\tan(\\gamma+\\varphi_v) = {eta}$ "
                           "(used in the efficiency chain).", vs=f(e['vs'], 3),
-                          phi_v=f(np.degrees(e['phi_v']), 3), eta=f(e['eta'], 4)))
+                          phi_v=f(np.degrees(e['phi_v']), 2), eta=f(e['eta'], 4)))
             for c in g.checks:
                 if c.key == "worm_deflection":    # issue 20: 濮良贵 ch.11 stiffness check
                     i = c.inputs

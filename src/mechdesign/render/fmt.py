@@ -3,23 +3,35 @@
 Numbers, as an engineer writes them (one rule for every report, table and sheet):
 
 * lengths in mm and angles in degrees: two decimals (0.01 mm, 0.01°) — :func:`f` with its
-  default ``digits=2``; speeds in rpm two decimals; teeth, gear ratios and other design data
-  as the design gives them;
-* forces, torques, powers, energies, stresses, moments of inertia, lives, cycle counts and
-  other quantities whose size varies over decades: 4 significant digits — :func:`sig`
-  (``12 700 N·m``, ``0.6599 kW``, ``48 000 h``); where a table keeps fixed decimals for
-  such a quantity (forces to 0.1 N), :func:`f` with ``group=True``; in running text and
-  formulas such a value never has more digits than both allow — ``12 740 N·m`` or
-  ``12 738.2 N·m``, ``636.6 N·m``, ``3333 W``, ``3.803 kW``, ``190.3 J``, never
-  ``12 738.160 N·m``, ``636.620 N·m`` or ``3333.33 W``;
+  default ``digits=2`` — in running text and in the synthesis formulas alike (``a = 57.04 mm``,
+  never ``57.041 mm``), a length below 0.1 mm (a deflection limit, a cam's stand-off) with two
+  significant digits (``0.025 mm``), a value quoted from a source as the source writes it
+  (the lock-beam seed's lift ``h = 14.904 mm``); speeds in rpm to 0.01 rpm — :func:`rpm` (``n_w = 50.00 rpm``, never
+  ``50.000``); teeth and other design data as the design gives them;
+* the time-ratio coefficient K to 0.001 — :func:`time_ratio` (``K = 1.250``; the textbook
+  writes K = 1.4, K = 1.25);
+* forces, torques, powers, energies, stresses, moments of inertia, lives, cycle counts, angular
+  velocities and accelerations (``ω = 5.236 rad/s``, ``12.29 m/s²``, ``73.26 rad/s²``), angles
+  in radians, gear ratios of a formula (``i = 28.80``) and other quantities whose size varies
+  over decades: 4 significant digits — :func:`sig` (``636.6 N·m``, ``0.6599 kW``,
+  ``48 000 h``); a value with five or more integer digits keeps all of them, rounded to a
+  unit (``12 738 N·m``, never ``12 740 N·m``); where a table keeps fixed decimals for such a
+  quantity (forces to 0.1 N), :func:`f` with ``group=True``; in running text and formulas such
+  a value never has more digits than both allow — ``12 738 N·m`` or ``12 738.2 N·m``,
+  ``636.6 N·m``, ``3333 W``, ``3.803 kW``, ``190.3 J``, never ``12 738.160 N·m``,
+  ``636.620 N·m`` or ``3333.33 W``;
+* percentages to 0.1 %, below 1 % two significant digits — :func:`percent` (``2.6 %``,
+  ``0.54 %``);
+* outside the tables no number has five or more significant digits and three or more
+  decimals (``5.2360``, ``50.000``, ``1.2000``, ``12.290``): no quantity of this rule has both;
 * derived values of given dimensions (the given-dimensions path: H, K, θ, ψ from the brief's
   lengths) as any other length, angle or K (``θ = |111.37° − 91.40°| = 19.97°``,
-  ``K = 1.2496``), a sine or cosine of a formula to 4 significant digits; the verification
+  ``K = 1.250``), a sine or cosine of a formula to 4 significant digits; the verification
   tables keep the decimals of their columns;
 * numbers in finding and error messages (``{x:.2f}`` in the msgid) by the same rule; three
   decimals only where a value is compared with a limit it may miss by less than 0.01;
-* dimensionless ratios (K, efficiencies, safety factors): 4 significant digits, or the
-  fixed decimals a table states;
+* other dimensionless ratios (efficiencies, safety factors, velocity ratios): 4 significant
+  digits, or the fixed decimals a table states;
 * a magnitude of a million or more (seven digits: a bearing life of 40 680 894 h) with a power
   of ten, 4 significant digits — :func:`sci` (``4.068 × 10⁷ h``; in a formula
   ``4.068\\times10^{7}``) — unless a larger unit (kN for a press load of 1 000 000 N, the
@@ -82,8 +94,10 @@ def f(x: float, digits: int = 2, group: bool = False) -> str:
 
 def sig(x: float, n: int = 4, group: bool = True, ref: float = 0.0) -> str:
     """``x`` with ``n`` significant digits in fixed-point notation, never E-notation:
-    ``12698.4`` → ``12 700``, ``0.065999`` → ``0.06600``, ``48000`` → ``48 000``; the
-    significant trailing zeros are kept; zero is ``0``; NaN or infinite is ``—``.
+    ``0.065999`` → ``0.06600``, ``9999.5`` → ``10 000``, ``48000`` → ``48 000``; a value
+    with more than ``n`` integer digits keeps all of them, rounded to a unit (``12738.16`` →
+    ``12 738``, never ``12 740``: an engineer does not write a torque's units digit as a
+    zero); the significant trailing zeros are kept; zero is ``0``; NaN or infinite is ``—``.
     ``group=False`` inside a formula (digits together). ``ref``: the largest magnitude of
     the values written with ``x`` (a range, a mean); an ``x`` within 10⁻⁹ of it of zero is
     a rounding residue of zero and written ``0`` (not ``0.0000000000000007194``)."""
@@ -91,9 +105,28 @@ def sig(x: float, n: int = 4, group: bool = True, ref: float = 0.0) -> str:
         return "—"
     if x == 0 or abs(x) <= 1e-9 * abs(ref):
         return "0"
+    if abs(x) >= 10 ** n:                   # more integer digits than n: all of them kept
+        return f(x, 0, group=group)
     rounded = Decimal(f"{x:.{n - 1}e}")
     decimals = max(n - 1 - rounded.adjusted(), 0)
     return f(float(rounded), decimals, group=group)
+
+
+def time_ratio(K: float) -> str:
+    """The time-ratio coefficient K (行程速比系数) to 0.001, as the textbook writes it
+    (K = 1.4, K = 1.25): ``1.2496`` → ``1.250``."""
+    return f(K, 3)
+
+
+def rpm(n: float) -> str:
+    """A rotational speed in rpm to 0.01 rpm (``50.00``, ``705.90``), never ``50.000``."""
+    return f(n, 2)
+
+
+def percent(x: float) -> str:
+    """A percentage (``x`` in per cent, without the sign) to 0.1 %, below 1 % with two
+    significant digits: ``2.634`` → ``2.6``, ``0.5419`` → ``0.54``, ``87.46`` → ``87.5``."""
+    return sig(x, 2) if abs(x) < 1 else f(x, 1)
 
 
 _SUPERSCRIPT = str.maketrans("-0123456789", "\u207b\u2070\u00b9\u00b2\u00b3\u2074\u2075\u2076\u2077\u2078\u2079")

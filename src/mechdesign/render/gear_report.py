@@ -7,7 +7,7 @@ from pathlib import Path
 import numpy as np
 
 from ..i18n import tr
-from .fmt import f, md_text
+from .fmt import f, md_text, sig
 
 DEG = 180.0 / np.pi
 MM = 1e3
@@ -69,8 +69,8 @@ def gear_context(g, lang: str, figures: dict[str, str]) -> dict:
         "eps_num": (rf"\varepsilon_\alpha = \frac{{{g1.z}\times({f(np.tan(g1.alpha_a), 4)}-{f(tw, 4)})+{g2.z}\times"
                     rf"({f(np.tan(g2.alpha_a), 4)}-{f(tw, 4)})}}{{2\pi}} = {f(p.contact_ratio, 3)}"),
         "b1b2": (rf"\overline{{B_1B_2}} = \sqrt{{r_{{a1}}^2-r_{{b1}}^2}}+\sqrt{{r_{{a2}}^2-r_{{b2}}^2}}-a'\sin\alpha'"
-                 rf" = {f(b1b2 * MM, 3)}\ \text{{mm}}, \quad \frac{{\overline{{B_1B_2}}}}{{p_b}} = "
-                 rf"\frac{{{f(b1b2 * MM, 3)}}}{{{f(p.pb * MM, 3)}}} = {f(b1b2 / p.pb, 4)}"),
+                 rf" = {f(b1b2 * MM, 2)}\ \text{{mm}}, \quad \frac{{\overline{{B_1B_2}}}}{{p_b}} = "
+                 rf"\frac{{{f(b1b2 * MM, 2)}}}{{{f(p.pb * MM, 2)}}} = {sig(b1b2 / p.pb, group=False)}"),
         "zmin": (rf"z_{{min}} = \frac{{2h_a^*}}{{\sin^2\alpha}} = \frac{{2\times{f(p.ha_star, 2)}}}"
                  rf"{{\sin^2 {f(p.alpha * DEG, 1)}°}} = {f(p.z_min, 2)}, \quad x_{{min}} = "
                  rf"h_a^*\frac{{z_{{min}}-z}}{{z_{{min}}}}: \ x_{{min,1}} = {f(p.x_min1, 3)},\ "

@@ -5,7 +5,7 @@ from __future__ import annotations
 import numpy as np
 
 from ..i18n import N_, tr
-from .fmt import f, sig
+from .fmt import f, sig, time_ratio
 from .labels import InContext, pgettext
 
 DEG = 180.0 / np.pi
@@ -49,7 +49,7 @@ def guide_bar_context(syn, p, rod: str = "BF", ram_zh: str | None = None,
             "theta": (rf"\theta = \psi = 2\arcsin\frac{{L_{{O_2A}}}}{{L_{{O_2O_3}}}} = "
                       rf"2\arcsin\frac{{{g(d.crank)}}}{{{g(d.frame)}}} = {f(theta, 2)}°"),
             "K": (rf"K = \frac{{180° + \theta}}{{180° - \theta}} = \frac{{180° + {f(theta, 2)}°}}"
-                  rf"{{180° - {f(theta, 2)}°}} = {f(K, 4)}"),
+                  rf"{{180° - {f(theta, 2)}°}} = {time_ratio(K)}"),
             "H": (rf"H = 2 L_{{O_3B}} \sin(\psi/2) = 2 \times {g(d.guide_bar)} \times "
                   rf"\frac{{{g(d.crank)}}}{{{g(d.frame)}}} = {f(H, 2)}\ \text{{mm}}"),
         }
@@ -58,7 +58,7 @@ def guide_bar_context(syn, p, rod: str = "BF", ram_zh: str | None = None,
             "theta": (rf"\theta = 180° \times \frac{{K-1}}{{K+1}} = 180° \times "
                       rf"\frac{{{f(K, 2)}-1}}{{{f(K, 2)}+1}} = {f(theta, 2)}°"),
             "bar": (rf"L_{{O_3B}} = \frac{{H}}{{2\sin(\psi/2)}} = \frac{{{f(H, 0)}}}"
-                    rf"{{2\sin {f(half, 3)}°}} = {f(d.guide_bar * mm, 2)}\ \text{{mm}}"),
+                    rf"{{2\sin {f(half, 2)}°}} = {f(d.guide_bar * mm, 2)}\ \text{{mm}}"),
             "crank": (rf"L_{{O_2A}} = L_{{O_2O_3}} \sin(\psi/2) = {f(d.frame * mm, 0)} \times "
                       rf"{sig(sin_half, 4, group=False)} = {f(d.crank * mm, 2)}\ \text{{mm}}"),
         }
@@ -173,7 +173,7 @@ def optional_sections(r: dict, lang: str, figures: dict) -> dict:
 
         fl, p = r["linkage_flywheel"], r["params"]
         pw = (rf"P_w = \bar M_b\,\omega_2 = {sig(fl.mean_torque, group=False)} \times "
-              rf"{f(abs(p.crank_omega), 4)} = {sig(fl.mean_power, group=False)}\ \text{{W}}")
+              rf"{sig(abs(p.crank_omega), group=False)} = {sig(fl.mean_power, group=False)}\ \text{{W}}")
         out["drive"] = drive_context(r["drive"], lang, figures, pw)
     return out
 

@@ -14,7 +14,7 @@ import numpy as np
 
 from ..i18n import N_, tr
 from . import figures as fig
-from .fmt import e, f, force_unit, md_text, sig, tex_name
+from .fmt import e, f, force_unit, md_text, mpl_text, sig, tex_name, time_ratio
 from .fmt import verdict as fmt_verdict
 from .label_layout import Label, place
 from .labels import LabelTable, md_names, md_point, mpl_names, mpl_point
@@ -346,15 +346,15 @@ def linkage_context(model, k, f_, fly, v, figures: dict, lang: str,
                    if key.startswith(prefix + "_")}},
         "frame_rows": frame_rows, "link_rows": _link_rows(model, lang),
         "mass_rows": mass_rows, "res_rows": res_rows,
-        "speed": f(omega * 30 / np.pi, 2), "omega": f(omega, 4),
+        "speed": f(omega * 30 / np.pi, 2), "omega": sig(omega, group=False),
         "sense": _("clockwise") if model.crank_omega < 0 else _("counter-clockwise"),
         "output": md_names(model.output.name),
         "unit_s": units[0], "unit_v": units[1], "unit_a": units[2],
-        "stroke": f(k.stroke * scale, 2), "K": f(k.time_ratio, 4),
+        "stroke": f(k.stroke * scale, 2), "K": time_ratio(k.time_ratio),
         "theta": f(180 * (k.time_ratio - 1) / (k.time_ratio + 1), 2),
         "working_span": f(k.working_span * DEG, 2),
         "return_span": f(360 - k.working_span * DEG, 2),
-        "start_angle": f((k.start_angle * DEG) % 360, 3),
+        "start_angle": f((k.start_angle * DEG) % 360, 2),
         "grid_points": str(n),
         "kin_head": qual_head, "kin_rows": kin_rows,
         "point_names": [md_point(p) for p in point_names], "point_rows": point_rows,
@@ -366,7 +366,7 @@ def linkage_context(model, k, f_, fly, v, figures: dict, lang: str,
         "mb_min": sig(f_.torque_min, ref=f_.peak_torque),
         "mb_mean": sig(f_.mean_torque), "mb_peak": sig(f_.peak_torque),
         "power": sig(f_.mean_power),
-        "eq_power": (rf"P = \bar M_b\,\omega = {sig(f_.mean_torque, group=False)} \times {f(omega, 4)} = "
+        "eq_power": (rf"P = \bar M_b\,\omega = {sig(f_.mean_torque, group=False)} \times {sig(omega, group=False)} = "
                      rf"{sig(f_.mean_power, group=False)}\ \text{{W}}"),
         "has_forces": bool(model.bodies or model.resistances),
         "fly": None,

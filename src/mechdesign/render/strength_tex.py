@@ -186,7 +186,7 @@ def _rel(check: Check) -> str:
 
 def _tooth_tip(c: Check) -> str:
     i = c.inputs
-    return (rf"s_a = {num(c.value * MM)}\ \text{{mm}} {_rel(c)} {num(i['factor'])} m = {num(i['factor'])} \times "
+    return (rf"s_a = {f(c.value * MM, 2)}\ \text{{mm}} {_rel(c)} {num(i['factor'])} m = {num(i['factor'])} \times "
             rf"{num(i['m'] * MM)} = {num(c.allowable * MM)}\ \text{{mm}}")
 
 

@@ -11,7 +11,7 @@ from ...fileio import atomic_open
 from ...render.figures import figure
 from ...render.fmt import e as fe
 from ...render.fmt import verdict
-from ...render.fmt import f, md_meta, md_text, mpl_text
+from ...render.fmt import f, md_meta, md_text, mpl_text, time_ratio
 from ...render.labels import LabelTable, mpl_point, subscripted
 from ...i18n import N_, tr
 
@@ -455,11 +455,11 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
         sc = sl.construction
         e_mm, h_mm = sl.offset * MM, sl.stroke * MM
         slider = {
-            "K": f(sl.K, 4), "theta": _deg(sl.theta, 4), "H": f(h_mm, 2), "e": f(e_mm, 2),
+            "K": time_ratio(sl.K), "theta": _deg(sl.theta, 4), "H": f(h_mm, 2), "e": f(e_mm, 2),
             "R": _mm(sc.radius), "ac1": _mm(abs(sc.c1)), "ac2": _mm(abs(sc.c2)),
             "a": _mm(sl.crank), "b": _mm(sl.rod),
             "eq_theta": (rf"\theta = 180^\circ\frac{{K - 1}}{{K + 1}} = 180^\circ \times "
-                         rf"\frac{{{f(sl.K, 4)} - 1}}{{{f(sl.K, 4)} + 1}} = {_deg(sl.theta, 4)}^\circ"),
+                         rf"\frac{{{time_ratio(sl.K)} - 1}}{{{time_ratio(sl.K)} + 1}} = {_deg(sl.theta, 4)}^\circ"),
             "eq_R": (rf"R = \frac{{H}}{{2\sin\theta}} = \frac{{{f(h_mm, 2)}}}{{2\sin {_deg(sl.theta, 4)}^\circ}}"
                      rf" = {_mm(sc.radius)}\ \text{{mm}}"),
             "eq_x": (rf"x_A = -\sqrt{{R^2 - (R\cos\theta - e)^2}} = -\sqrt{{{_mm(sc.radius)}^2 - "
@@ -481,7 +481,7 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
                      r"\ \text{mm}"),
             "eq_th": (rf"\theta = \arcsin\frac{{e}}{{b - a}} - \arcsin\frac{{e}}{{b + a}} = "
                       rf"{_deg(sl.theta, 4)}^\circ,\qquad K = \frac{{180^\circ + \theta}}{{180^\circ - \theta}}"
-                      rf" = {f(sl.K, 4)}"),
+                      rf" = {time_ratio(sl.K)}"),
             "allowed": _deg(sl.alpha_allowed, 0),
         }
         slider_name = _.pgettext("verification item", "offset slider-crank")

@@ -14,7 +14,7 @@ import numpy as np
 from ...i18n import N_, tr
 from ...render import figures as fig
 from ...render.fmt import e, f, md_meta, md_text, sig
-from ...render.fmt import number, verdict
+from ...render.fmt import number, time_ratio, verdict
 from ...render.labels import pgettext, translated
 from ...stages.drive import shaft_numeral
 
@@ -175,7 +175,7 @@ def _choice_rows(b, p, r, _) -> list[list[str]]:
     if given:
         dm = pr.dimensions
         rows.append(["$a, b, d$", _("crank $O_1A$, coupler AB, frame $O_1C$ (given)"),
-                     f"{f(dm.crank_O1A_mm, 3)}, {f(dm.coupler_AB_mm, 3)}, {f(dm.frame_O1C_mm, 3)} mm",
+                     f"{f(dm.crank_O1A_mm, 2)}, {f(dm.coupler_AB_mm, 2)}, {f(dm.frame_O1C_mm, 2)} mm",
                      _("the brief's dimensions, no synthesis; θ, ψ, K and H are derived from them "
                        "(see the toggle press chapter)")])
     rows += [
@@ -264,7 +264,7 @@ def _synthesis(d, p, _) -> dict:
             "theta": (rf"\theta = \lvert\angle CO_1B_1 - \angle CO_1B_2\rvert = \lvert {f(ang(b - a, d_, c), 2)}° - "
                       rf"{f(ang(b + a, d_, c), 2)}°\rvert = {f(theta, 2)}°"),
             "K": (rf"K = \frac{{180° + \theta}}{{180° - \theta}} = \frac{{180° + {f(theta, 2)}°}}"
-                  rf"{{180° - {f(theta, 2)}°}} = {f(K, 4)}"),
+                  rf"{{180° - {f(theta, 2)}°}} = {time_ratio(K)}"),
             "H": (rf"H = y_D(\varepsilon) - y_D(\varepsilon + \psi) = {f(d.top_height * MM, 2)} - "
                   rf"{f(d.bottom_height * MM, 2)} = {f(g.stroke * MM, 2)}\ \text{{mm}}"),
             "lengths": (rf"a = {f(a, 2)},\quad b = {f(b, 2)},\quad c = l_{{CB}} = {f(c, 2)},\quad "
@@ -272,16 +272,16 @@ def _synthesis(d, p, _) -> dict:
         }
     eq = {
         "height": (r"y_D(\beta) = l_{CB}\cos\beta + \sqrt{l_{BD}^2 - l_{CB}^2\sin^2\beta}"),
-        "stroke": (rf"H = y_D(\varepsilon) - y_D(\varepsilon + \psi) = {f(d.top_height * MM, 3)} - "
-                   rf"{f(d.bottom_height * MM, 3)} = {f(g.stroke * MM, 3)}\ \text{{mm}}"
+        "stroke": (rf"H = y_D(\varepsilon) - y_D(\varepsilon + \psi) = {f(d.top_height * MM, 2)} - "
+                   rf"{f(d.bottom_height * MM, 2)} = {f(g.stroke * MM, 2)}\ \text{{mm}}"
                    rf"\ \Rightarrow\ \psi = {_deg(psi, 2)}°"),
         "theta": (rf"\theta = 180° \times \frac{{K-1}}{{K+1}} = 180° \times \frac{{{f(K, 3)}-1}}"
                   rf"{{{f(K, 3)}+1}} = {f(theta, 2)}°"),
-        "links": (rf"a = \frac{{AC_2 - AC_1}}{{2}} = {f(fb.crank * MM, 3)}\ \text{{mm}},\quad "
-                  rf"b = \frac{{AC_2 + AC_1}}{{2}} = {f(fb.coupler * MM, 3)}\ \text{{mm}},\quad "
-                  rf"d = {f(fb.frame * MM, 3)}\ \text{{mm}}"),
+        "links": (rf"a = \frac{{AC_2 - AC_1}}{{2}} = {f(fb.crank * MM, 2)}\ \text{{mm}},\quad "
+                  rf"b = \frac{{AC_2 + AC_1}}{{2}} = {f(fb.coupler * MM, 2)}\ \text{{mm}},\quad "
+                  rf"d = {f(fb.frame * MM, 2)}\ \text{{mm}}"),
         "gamma": (rf"\cos\delta = \frac{{b^2 + c^2 - (d \mp a)^2}}{{2bc}}\ \Rightarrow\ "
-                  rf"\gamma_{{min}} = {_deg(d.gamma_min, 3)}°"),
+                  rf"\gamma_{{min}} = {_deg(d.gamma_min, 2)}°"),
         "virtual": r"M\,\omega = F\,v_D\ \Rightarrow\ F = \frac{M\,\omega}{v_D} = \frac{M}{dy_D/d\varphi}",
         "chain_rule": (r"\frac{dy_D}{d\varphi} = \frac{dy_D}{d\theta_4}\,\frac{\omega_4}{\omega_2},\quad "
                        r"\frac{\omega_4}{\omega_2} = \frac{a\sin(\theta_2 - \theta_3)}{c\sin(\theta_4 - \theta_3)},"
@@ -319,7 +319,7 @@ def _synthesis(d, p, _) -> dict:
                   "(K > 1).") \
         if d.mirrored else ""
     return {"eq": eq, "rows": rows, "pivot": pivot, "mirrored": mirrored, "given": given,
-            "psi": _deg(psi, 3), "eps": _deg(eps, 2), "theta": f(theta, 3),
+            "psi": _deg(psi, 2), "eps": _deg(eps, 2), "theta": f(theta, 2),
             "top": {"extended": _("extended position (AC = b + a)"), "folded": _("folded position (AC = b − a)")}[g.top_position]}
 
 
@@ -351,12 +351,12 @@ def _amplification(r, p, _) -> dict:
                  rf"{f(p.pressing_travel * MM, 2)}\ \text{{mm}} = {f(amp.cut_work, 1)}\ \text{{J}}"),
         "power": (rf"\bar P = \frac{{W_c}}{{T}} = \frac{{{f(amp.cut_work, 1)}}}{{{f(60 / p.shaft_rpm, 3)}}}"
                   rf" = {f(amp.cut_work * p.shaft_rpm / 60, 1)}\ \text{{W}},\qquad \bar M_b\,\omega = "
-                  rf"{sig(f_.mean_torque, group=False)} \times {f(abs(p.crank_omega), 4)} = {f(f_.mean_power, 1)}\ \text{{W}}"),
+                  rf"{sig(f_.mean_torque, group=False)} \times {sig(abs(p.crank_omega), group=False)} = {f(f_.mean_power, 1)}\ \text{{W}}"),
         "required": (rf"M_{{req}} = F_c\,\frac{{v_D}}{{\omega}} = {f(p.cutting_force / 1e3, 1)}\ "
-                     rf"\text{{kN}} \times {f(u0 * MM, 3)}\ \text{{mm}} = {f(p.cutting_force * u0, 0)}"
+                     rf"\text{{kN}} \times {f(u0 * MM, 2)}\ \text{{mm}} = {f(p.cutting_force * u0, 0)}"
                      rf"\ \text{{N·m}}"),
         "motor": (rf"T = \frac{{P_{{ed}}\,\eta}}{{\omega}} = \frac{{{f(motor.power, 0)} \times "
-                  rf"{f(drive.efficiency, 4)}}}{{{f(abs(p.crank_omega), 4)}}} = {f(t_motor, 1)}\ "
+                  rf"{f(drive.efficiency, 4)}}}{{{sig(abs(p.crank_omega), group=False)}}} = {f(t_motor, 1)}\ "
                   rf"\text{{N·m}},\qquad F = \frac{{T}}{{M/F}} = {f(f_motor / 1e3, 1)}\ \text{{kN}}"),
     }
     return {
@@ -368,7 +368,7 @@ def _amplification(r, p, _) -> dict:
         "peak_req": f(amp.peak_required, 1), "peak_phase": _deg(amp.peak_phase, 2),
         # the exact peak (refined between the samples; the factor below uses it too), at about
         # the phase of the largest sample
-        "mb_peak": f(f_.peak_torque, 1, group=True), "mb_peak_phase": _deg(k.phase[i_peak], 1),
+        "mb_peak": sig(f_.peak_torque), "mb_peak_phase": _deg(k.phase[i_peak], 1),
         "mb_mean": sig(f_.mean_torque), "peak_factor": f(f_.peak_torque / f_.mean_torque, 2),
         "f_motor": f(f_motor / 1e3, 1), "t_motor": f(t_motor, 1), "motor": motor.designation,
         "F": f(p.cutting_force / 1e3, 1), "t": f(p.pressing_travel * MM, 2),
@@ -389,7 +389,7 @@ def _flywheel(r, p, b, _) -> dict:
         "jf": (rf"J_F = \frac{{900\,\Delta W_{{max}}}}{{\pi^2 n^2 [\delta]}} = \frac{{900 \times "
                rf"{f(fl.max_energy_swing, 1)}}}{{\pi^2 \times {f(fl.shaft_speed_rpm, 2)}^2 \times "
                rf"{f(fl.fluctuation, 4)}}} = {f(fl.inertia, 3)}\ \text{{kg·m}}^2"),
-        "crank": (rf"J_F' = J_F\,i^2 = {f(fl.inertia, 3)} \times {f(fl.speed_ratio, 3)}^2 = "
+        "crank": (rf"J_F' = J_F\,i^2 = {f(fl.inertia, 3)} \times {sig(fl.speed_ratio, group=False)}^2 = "
                   rf"{f(fl.inertia_on_crank, 1)}\ \text{{kg·m}}^2"),
         "mass": (rf"m = \frac{{4 J_F}}{{D^2}} = \frac{{4 \times {f(fl.inertia, 3)}}}"
                  rf"{{{f(fl.rim.diameter, 3)}^2}} = {f(fl.rim.rim_mass, 2)}\ \text{{kg}}"),
@@ -398,7 +398,7 @@ def _flywheel(r, p, b, _) -> dict:
                   rf"{f(fl.rim.diameter, 3)}^3 \times {f(p.rim_height_to_width, 2)} \times "
                   rf"{f(p.specific_weight, 0)}}}}} = {f(fl.rim.width * MM, 1)}\ \text{{mm}}"),
     }
-    return {"eq": eq, "shaft": shaft, "n": f(fl.shaft_speed_rpm, 2), "ratio": f(fl.speed_ratio, 3),
+    return {"eq": eq, "shaft": shaft, "n": f(fl.shaft_speed_rpm, 2), "ratio": sig(fl.speed_ratio),
             "dw": f(fl.max_energy_swing, 1), "at_min": _deg(fl.phase_at_min, 1),
             "at_max": _deg(fl.phase_at_max, 1), "delta": f"1/{1 / fl.fluctuation:.4g}",
             "jf": f(fl.inertia, 3), "jf_crank": f(fl.inertia_on_crank, 1),
@@ -541,7 +541,7 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
     cycle = cycle_context(cyc.diagram, lang, {"linear": figures["cycle_linear"],
                                              "circular": figures["cycle_circular"]},
                           cyc.checks, level=2, label="dc-cycle")
-    pw = (rf"P_w = \bar M_b\,\omega = {sig(f_.mean_torque, group=False)} \times {f(abs(p.crank_omega), 4)} = "
+    pw = (rf"P_w = \bar M_b\,\omega = {sig(f_.mean_torque, group=False)} \times {sig(abs(p.crank_omega), group=False)} = "
           rf"{f(f_.mean_power, 1)}\ \text{{W}}")
     drive = drive_context(r["drive"], lang, figures, pw)
     verify = _verify_rows(r, p, _)
@@ -551,7 +551,7 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
     gear = r["feed"].gear
     return {
         "meta": md_meta(brief.report, lang), "fig": figures,
-        "rpm": f(p.shaft_rpm, 2), "period": f(60 / p.shaft_rpm, 3), "omega": f(abs(p.crank_omega), 4),
+        "rpm": f(p.shaft_rpm, 2), "period": f(60 / p.shaft_rpm, 3), "omega": sig(abs(p.crank_omega)),
         "sense": _("clockwise") if p.crank_omega < 0 else _("counter-clockwise"),
         "data_rows": _data_rows(brief, p, _), "choice_rows": _choice_rows(brief, p, r, _),
         "syn": _synthesis(r["toggle"], p, _), "amp": _amplification(r, p, _),

@@ -50,7 +50,7 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
         x = fol.offset * MM
         if fol.kind == "flat":
             y_eq = r"y = C_y + R"
-            h_eq = rf"h = 2\varepsilon = {f(2 * ecc, 3)}\ \text{{mm}}"
+            h_eq = rf"h = 2\varepsilon = {f(2 * ecc, 2)}\ \text{{mm}}"
             a_eq = r"\alpha = 0"
         else:
             y_eq = rf"y = C_y + \sqrt{{(R + r_r)^2 - (e - C_x)^2}}"

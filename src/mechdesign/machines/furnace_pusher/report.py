@@ -8,7 +8,7 @@ import numpy as np
 
 from ...i18n import N_, tr
 from ...render import figures as fig
-from ...render.fmt import e, f, md_meta, md_text, sig
+from ...render.fmt import e, f, md_meta, md_text, sig, time_ratio
 from ...render.fmt import verdict
 from ...render.labels import mpl_names, mpl_point
 
@@ -236,7 +236,7 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
                         rf"{f(th, 2)}°"),
             "psi": (rf"\psi = \arccos\frac{{d^2 + c^2 - (b+a)^2}}{{2dc}} - \arccos\frac{{d^2 + c^2 - (b-a)^2}}{{2dc}}"),
             "psi_n": rf"\psi = {f(ang(d, c, b + a), 2)}° - {f(ang(d, c, b - a), 2)}° = {f(psi, 2)}°",
-            "K": rf"K = \frac{{180° + \theta}}{{180° - \theta}} = {f(pp.time_ratio_K, 4)}",
+            "K": rf"K = \frac{{180° + \theta}}{{180° - \theta}} = {time_ratio(pp.time_ratio_K)}",
             "H": (rf"H = 2\,l_{{DC}}\sin\frac{{\psi}}{{2}} = 2 \times {l_dc} \times \sin {f(psi / 2, 2)}° = "
                   rf"2 \times {l_dc} \times {sig(np.sin(syn.swing / 2), 4, group=False)} = {f(H, 2)}\ \text{{mm}}"),
         }
@@ -248,30 +248,30 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
         # 1 - cos(ψ/2) itself to 4 significant digits (the difference of two numbers near 1
         # would need six decimals); y_g through f: (1 + cos)/2 = 1 - (1 - cos)/2
         "sagitta": (rf"f = l_{{DC}}\left(1-\cos\frac{{\psi}}{{2}}\right) = {f(R, 0)} \times (1 - \cos {f(psi / 2, 2)}°)"
-                    rf" = {f(R, 0)} \times {sig(1 - cos_h, 4, group=False)} = {f(sag, 3)}\ \text{{mm}}"),
+                    rf" = {f(R, 0)} \times {sig(1 - cos_h, 4, group=False)} = {f(sag, 2)}\ \text{{mm}}"),
         "guide": (rf"y_g = l_{{DC}}\,\frac{{1+\cos(\psi/2)}}{{2}} + e = l_{{DC}} - \frac{{f}}{{2}} + e = {f(R, 0)} - "
-                  rf"\frac{{{f(sag, 3)}}}{{2}} + {f(syn.guide_offset * MM, 2)} = {f(syn.guide_height * MM, 3)}\ \text{{mm}}"),
-        "alphaE": (rf"\alpha_{{E,max}} = \arcsin\frac{{f/2 + \lvert e\rvert}}{{l_{{CE}}}} = \arcsin\frac{{{f(sag / 2, 3)} + "
+                  rf"\frac{{{f(sag, 2)}}}{{2}} + {f(syn.guide_offset * MM, 2)} = {f(syn.guide_height * MM, 2)}\ \text{{mm}}"),
+        "alphaE": (rf"\alpha_{{E,max}} = \arcsin\frac{{f/2 + \lvert e\rvert}}{{l_{{CE}}}} = \arcsin\frac{{{f(sag / 2, 2)} + "
                    rf"{f(abs(syn.guide_offset) * MM, 2)}}}{{{f(L, 0)}}} = {f(syn.alpha_E * DEG, 2)}°"),
         "band": (rf"\lvert e\rvert \le l_{{CE}}\sin[\alpha] - \frac{{f}}{{2}} = {f(L, 0)} \times \sin {f(lim, 0)}° - "
-                 rf"{f(sag / 2, 3)} = {f(syn.guide_offset_max * MM, 2)}\ \text{{mm}}"),
+                 rf"{f(sag / 2, 2)} = {f(syn.guide_offset_max * MM, 2)}\ \text{{mm}}"),
         "db": (rf"l_{{DB}} = {f(pp.rocker_ratio, 3)}\,l_{{DC}} = {f(c, 2)}\ \text{{mm}}, \quad "
-               if not given else rf"l_{{DB}} = {f(c, 3)}\ \text{{mm}}, \quad "
-               rf"B_1B_2 = 2\,l_{{DB}}\sin\frac{{\psi}}{{2}} = {f(chord, 3)}\ \text{{mm}}"),
-        "radius": (rf"r_\theta = \frac{{B_1B_2}}{{2\sin\theta}} = \frac{{{f(chord, 3)}}}{{2\sin {f(th, 2)}°}}"
-                   rf" = {f(chord / (2 * np.sin(syn.theta)), 3) if syn.theta > 0 else '∞'}\ \text{{mm}}"),
-        "a": (rf"a = \frac{{O_1B_2 - O_1B_1}}{{2}} = \frac{{{f(o1b2, 3)} - {f(o1b1, 3)}}}{{2}} = {f(a, 3)}\ "
+               if not given else rf"l_{{DB}} = {f(c, 2)}\ \text{{mm}}, \quad "
+               rf"B_1B_2 = 2\,l_{{DB}}\sin\frac{{\psi}}{{2}} = {f(chord, 2)}\ \text{{mm}}"),
+        "radius": (rf"r_\theta = \frac{{B_1B_2}}{{2\sin\theta}} = \frac{{{f(chord, 2)}}}{{2\sin {f(th, 2)}°}}"
+                   rf" = {f(chord / (2 * np.sin(syn.theta)), 2) if syn.theta > 0 else '∞'}\ \text{{mm}}"),
+        "a": (rf"a = \frac{{O_1B_2 - O_1B_1}}{{2}} = \frac{{{f(o1b2, 2)} - {f(o1b1, 2)}}}{{2}} = {f(a, 2)}\ "
               rf"\text{{mm}}"),
-        "b": (rf"b = \frac{{O_1B_2 + O_1B_1}}{{2}} = \frac{{{f(o1b2, 3)} + {f(o1b1, 3)}}}{{2}} = {f(b, 3)}\ "
-              rf"\text{{mm}}, \quad d = O_1D = {f(d, 3)}\ \text{{mm}}"),
+        "b": (rf"b = \frac{{O_1B_2 + O_1B_1}}{{2}} = \frac{{{f(o1b2, 2)} + {f(o1b1, 2)}}}{{2}} = {f(b, 2)}\ "
+              rf"\text{{mm}}, \quad d = O_1D = {f(d, 2)}\ \text{{mm}}"),
         "eq1": r"B_1B_2^2 = (b-a)^2 + (b+a)^2 - 2(b-a)(b+a)\cos\theta",
-        "eq1n": (rf"{f(o1b1, 3)}^2 + {f(o1b2, 3)}^2 - 2 \times {f(o1b1, 3)} \times {f(o1b2, 3)} "
-                 rf"\cos {f(th, 2)}° = {f(chord ** 2, 3)} = {f(chord, 3)}^2"),
+        "eq1n": (rf"{f(o1b1, 2)}^2 + {f(o1b2, 2)}^2 - 2 \times {f(o1b1, 2)} \times {f(o1b2, 2)} "
+                 rf"\cos {f(th, 2)}° = {sig(chord ** 2, group=False)} = {f(chord, 2)}^2"),
         "delta": r"\cos\delta = \frac{b^2 + c^2 - (d \mp a)^2}{2bc}, \quad \gamma = \min(\delta,\ 180° - \delta)",
-        "gamma": (rf"\gamma_{{min}} = {f(syn.gamma_min * DEG, 3)}°, \quad "
-                  rf"\gamma_{{max}} = {f(syn.gamma_max * DEG, 3)}°"),
-        "gwork": (rf"\alpha_B = 90° - \gamma_{{work,min}} = 90° - {f(syn.gamma_work * DEG, 3)}° = "
-                  rf"{f(syn.alpha_B * DEG, 3)}°"),
+        "gamma": (rf"\gamma_{{min}} = {f(syn.gamma_min * DEG, 2)}°, \quad "
+                  rf"\gamma_{{max}} = {f(syn.gamma_max * DEG, 2)}°"),
+        "gwork": (rf"\alpha_B = 90° - \gamma_{{work,min}} = 90° - {f(syn.gamma_work * DEG, 2)}° = "
+                  rf"{f(syn.alpha_B * DEG, 2)}°"),
         "torque": r"M_b\,\omega = F_r\,\lvert v_E\rvert \quad\Rightarrow\quad M_b = \frac{F_r\,\lvert v_E\rvert}{\omega}",
         "hand": (rf"\bar P = \frac{{(F_{{r1}} + F_{{r2}})\,H\,n}}{{60}} = \frac{{({f(pp.working_force, 0)} + "
                  rf"{f(pp.return_force, 0)}) \times {f(pp.stroke, 3)} \times {f(pp.crank_speed_rpm, 0)}}}{{60}}"
@@ -404,11 +404,11 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
         "sense": sense, "towards": towards, "linkage": lk, "torque_rows": torque_rows,
         "drive": drive, "verify_rows": verify_rows, "findings": findings,
         "H": f(H, 2 if given else 0), "n": f(pp.crank_speed_rpm, 0),
-        "K": f(pp.time_ratio_K, 4 if given else 2), "given": given_eq,
+        "K": time_ratio(pp.time_ratio_K) if given else f(pp.time_ratio_K, 2), "given": given_eq,
         "DC": f(R, 0), "CE": f(L, 0), "lim": f(lim, 0), "gam_lim": f(syn.gamma_limit * DEG, 0),
         "lim_B": f(90 - lim, 0), "limit_rocker": pp.limit_rocker,
-        "gamma_min": f(syn.gamma_min * DEG, 3), "alpha_B": f(syn.alpha_B * DEG, 3),
-        "alpha_E": f(syn.alpha_E * DEG, 4),
+        "gamma_min": f(syn.gamma_min * DEG, 2), "alpha_B": f(syn.alpha_B * DEG, 2),
+        "alpha_E": f(syn.alpha_E * DEG, 2),
         "seed_a": f(sd.crank * MM, 2), "seed_b": f(sd.coupler * MM, 2),
         "seed_d": f(sd.frame * MM, 2), "seed_c": f(sd.rocker * MM, 0), "seed_chord": f(sd.chord * MM, 2),
         "mean_torque": sig(chk.mean_torque), "mean_power": sig(chk.mean_power),

@@ -13,7 +13,7 @@ import numpy as np
 
 from ...i18n import N_, tr
 from ...render import figures as fig
-from ...render.fmt import e, f, md_meta, md_text, sig
+from ...render.fmt import e, f, md_meta, md_text, rpm, sig, time_ratio
 from ...render.fmt import verdict
 from ...render.labels import mpl_point
 
@@ -326,7 +326,7 @@ def _transmission(r: dict, lang: str) -> dict:
     eq_ratio = (r"i = \frac{d_2}{d_1}\prod\frac{z_{driven}}{z_{driving}} = " + r" \times ".join(parts)
                 + f" = {vals} = {trans.ratio_exact}")
     eq_speed = (rf"n = \frac{{n_m}}{{i}} = \frac{{{f(trans.motor_rpm, 0)}}}{{{trans.ratio_exact}}} = "
-                rf"{f(trans.output_rpm, 3)}\ \text{{r/min}}")
+                rf"{rpm(trans.output_rpm)}\ \text{{r/min}}")
     slip = p.transmission.slip
     shafts = []
     if p.transmission.power is not None:
@@ -336,8 +336,8 @@ def _transmission(r: dict, lang: str) -> dict:
             "ratio": str(trans.ratio_exact), "required": f"{trans.required_ratio:.6g}",
             "n_gears": str(sum(1 for s in trans.stages if s.kind == "gear")),
             "motor": f(trans.motor_rpm, 0),
-            "rate": f(trans.required_rpm, 0), "out": f(trans.output_rpm, 3),
-            "slip": f(slip, 3), "out_slip": f(trans.output_rpm_slip, 3), "has_slip": slip > 0,
+            "rate": f(trans.required_rpm, 0), "out": rpm(trans.output_rpm),
+            "slip": f(slip, 3), "out_slip": rpm(trans.output_rpm_slip), "has_slip": slip > 0,
             "shafts": shafts, "warnings": [md_text(w.text(lang)) for w in trans.warnings],
             "eq_slip": (rf"n' = \frac{{n_m (1 - \varepsilon)}}{{i}} = \frac{{{f(trans.motor_rpm, 0)} \times "
                         rf"0.98}}{{{trans.ratio_exact}}} = {f(trans.motor_rpm * 0.98 / trans.ratio, 2)}\ \text{{r/min}}")}
@@ -363,17 +363,17 @@ def _bending(r: dict, lang: str, figures: dict) -> dict:
     eq = {
         "dbeta": (rf"\Delta\beta = \theta_b \frac{{D_2}}{{D_1}} = {f(bp.bending_angle * DEG, 0)}° \times "
                   rf"\frac{{{f(bp.bending_wheel * MM, 0)}}}{{{f(bp.driving_wheel * MM, 0)}}} = "
-                  rf"{f(bp.output_swing * DEG, 3)}°"),
-        "dalpha": (rf"\Delta\alpha = \frac{{h}}{{L}} = \frac{{{f(h_arc * MM, 3)}}}{{{f(arm * MM, 0)}}} = "
-                   rf"{sig(b.input_swing, 4, group=False)}\ \text{{rad}} = {f(b.input_swing * DEG, 3)}°"),
+                  rf"{f(bp.output_swing * DEG, 2)}°"),
+        "dalpha": (rf"\Delta\alpha = \frac{{h}}{{L}} = \frac{{{f(h_arc * MM, 2)}}}{{{f(arm * MM, 0)}}} = "
+                   rf"{sig(b.input_swing, 4, group=False)}\ \text{{rad}} = {f(b.input_swing * DEG, 2)}°"),
         "loop": (r"\left| a\,e^{i\alpha_k} - \left(d + c\,e^{i\beta_k}\right) \right| = b,\qquad "
                  r"k = 1, 2"),
         "lin": (r"a = \frac{|B_1|^2 - |B_2|^2}{2\,\mathrm{Re}\left(e^{i\alpha_1}\bar B_1 - "
                 r"e^{i\alpha_2}\bar B_2\right)},\qquad b = \left|a\,e^{i\alpha_1} - B_1\right|"),
         "B": (rf"B_1 = {_c(B1)}\ \text{{mm}},\quad B_2 = {_c(B2)}\ \text{{mm}}"),
-        "a": (rf"a = \frac{{{f(num * MM * MM, 2)}}}{{{f(den * MM, 3)}}} = {f(ds.input_rocker * MM, 3)}\ "
+        "a": (rf"a = \frac{{{f(num * MM * MM, 2)}}}{{{f(den * MM, 2)}}} = {f(ds.input_rocker * MM, 2)}\ "
               r"\text{mm}"),
-        "b": (rf"b = \left|{_c(A1)} - {_c(B1)}\right| = {f(ds.coupler * MM, 3)}\ \text{{mm}}"),
+        "b": (rf"b = \left|{_c(A1)} - {_c(B1)}\right| = {f(ds.coupler * MM, 2)}\ \text{{mm}}"),
         "gamma": r"\gamma = \min\left(\delta,\ 180° - \delta\right),\qquad \delta = \angle(\overrightarrow{GB},\ \overrightarrow{B_0B})",
     }
     mean_ratio = bp.output_swing / bp.input_swing
@@ -425,28 +425,28 @@ def _bending(r: dict, lang: str, figures: dict) -> dict:
         "eq": eq, "cand_rows": cand_rows, "design_rows": design_rows, "seed": seed,
         "sense": _(sense), "ratio": f(b.ratio, 3),
         "grashof": grashof_sentence(ds.input_rocker, ds.coupler, ds.output_rocker, ds.frame, lang),
-        "dbeta": f(bp.output_swing * DEG, 2), "dalpha": f(b.input_swing * DEG, 3),
-        "arm": f(arm * MM, 0), "h": f(h_arc * MM, 3),
+        "dbeta": f(bp.output_swing * DEG, 2), "dalpha": f(b.input_swing * DEG, 2),
+        "arm": f(arm * MM, 0), "h": f(h_arc * MM, 2),
         "gmin": f(b.gamma_min * DEG, 2), "gmax": f(b.gamma_max * DEG, 2),
         "gmin_at": f(b.gamma_min_at * DEG, 2), "glim": f(bp.gamma_allowed * DEG, 0),
         "lo": f(bp.length_bounds[0] * MM, 0), "hi": f(bp.length_bounds[1] * MM, 0),
         "auto": bp.start is None,
         "swing_sim": f(b.swing_simulated * DEG, 2), "bend_sim": f(b.bend_simulated * DEG, 2),
         "bend": f(bp.bending_angle * DEG, 0),
-        "wheel_w": f(float(np.max(np.abs(b.wheel_omega))), 3),
-        "wheel_a": f(float(np.max(np.abs(b.wheel_alpha))), 2),
-        "rocker_w": f(float(np.max(np.abs(b.rocker_omega))), 3),
+        "wheel_w": sig(float(np.max(np.abs(b.wheel_omega)))),
+        "wheel_a": sig(float(np.max(np.abs(b.wheel_alpha)))),
+        "rocker_w": sig(float(np.max(np.abs(b.rocker_omega)))),
         "cam": bc, "warnings": [md_text(w.text(lang)) for w in b.warnings],
-        "mean_ratio": f(mean_ratio, 4),
+        "mean_ratio": sig(mean_ratio),
         "pin_hold": f(_pin_hold(r) * DEG, 1),
         "cam_motion": _cam_motion_text(bcam, lang),
         "cam_r0": (_("the base radius is designed for the allowed pressure angles")
                    if bcam.base_radius_designed else _("the base radius is given in the brief"))
         + _(" ($r_0$ = {r0} mm)", r0=f(bcam.base_radius * MM, 0)),
         "ratio_factor": None if bp.ratio_factor is None else f(bp.ratio_factor, 3),
-        "ratio_limit": None if bp.ratio_factor is None else f(bp.ratio_factor * mean_ratio, 4),
-        "ratio_lo": f(float(np.min(np.abs(b.velocity_ratio))), 4),
-        "ratio_hi": f(float(np.max(np.abs(b.velocity_ratio))), 4),
+        "ratio_limit": None if bp.ratio_factor is None else sig(bp.ratio_factor * mean_ratio),
+        "ratio_lo": sig(float(np.min(np.abs(b.velocity_ratio)))),
+        "ratio_hi": sig(float(np.max(np.abs(b.velocity_ratio)))),
         "rounded": _rounded(b, ds, lang),
         "fig": {"linkage": figures.get("bend_linkage"), "sweep": figures.get("bend_sweep"),
                 "wheel": figures.get("bend_wheel"), "seed": figures.get("bend_seed")},
@@ -519,9 +519,9 @@ def _rounded(b, ds, lang: str):
     if rc is None:
         return None
     return {"a": f(rc.input_rocker * MM, 2), "b": f(rc.coupler * MM, 2),
-            "beta1": f(np.mod(rc.beta1, 2 * np.pi) * DEG, 3), "swing": f(rc.swing * DEG, 3),
-            "bend": f(rc.bend * DEG, 3), "gmin": f(rc.gamma_min * DEG, 2),
-            "needed": None if rc.input_swing_needed is None else f(rc.input_swing_needed * DEG, 3),
+            "beta1": f(np.mod(rc.beta1, 2 * np.pi) * DEG, 2), "swing": f(rc.swing * DEG, 2),
+            "bend": f(rc.bend * DEG, 2), "gmin": f(rc.gamma_min * DEG, 2),
+            "needed": None if rc.input_swing_needed is None else f(rc.input_swing_needed * DEG, 2),
             "grashof": grashof_sentence(rc.input_rocker, rc.coupler, ds.output_rocker, ds.frame, lang)}
 
 
@@ -557,7 +557,7 @@ def _feed(r: dict, lang: str, figures: dict) -> dict:
         }
     bad = 0 if ft.seed_x is None else int(np.sum(np.abs(ft.seed_x - ft.x) > 1e-9))
     return {"lk": lk, "rows": rows, "closed": closed, "n_bad": str(bad), "n_rows": str(len(rows)),
-            "stroke": f(k.stroke * MM, 2), "K": f(k.time_ratio, 4)}
+            "stroke": f(k.stroke * MM, 2), "K": time_ratio(k.time_ratio)}
 
 
 def verification_rows(r: dict, lang: str) -> list[list[str]]:

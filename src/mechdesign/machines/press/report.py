@@ -8,7 +8,7 @@ import numpy as np
 
 from ...i18n import N_, tr
 from ...render import guide_bar_report as gb_report
-from ...render.fmt import e, f, md_meta, md_text
+from ...render.fmt import e, f, md_meta, md_text, time_ratio
 from ...render.fmt import verdict
 from ...render.linkage_report import linkage_context, verification_rows
 
@@ -83,8 +83,8 @@ def synthesis_context(s, p) -> dict:
         "ad": rf"L_{{AD}} = \sqrt{{x_1^2 + y^2}} = {f(d, 2)}\ \text{{mm}}",
         "grashof": (rf"L_{{AB}} + l_{{\max}} = {f(a, 2)} + {f(lmax, 2)} = {f(a + lmax, 2)} "
                     rf"\le {f(others, 2)}\ \text{{mm}}"),
-        "theta": (rf"\theta = \angle C'AC'' = {f(theta, 3)}°,\quad K = \frac{{180° + \theta}}"
-                  rf"{{180° - \theta}} = {f(s.time_ratio, 4)}"),
+        "theta": (rf"\theta = \angle C'AC'' = {f(theta, 2)}°,\quad K = \frac{{180° + \theta}}"
+                  rf"{{180° - \theta}} = {time_ratio(s.time_ratio)}"),
         "gamma": (rf"\cos\gamma = \frac{{b^2 + c^2 - (d \mp a)^2}}{{2bc}}:\quad "
                   rf"\gamma_1 = {f(g1, 2)}°,\ \gamma_2 = {f(g2, 2)}°"),
         "guide": (rf"x_M = L_{{DE}}\,\frac{{1 + \cos\frac{{\psi_3''-\psi_3'}}{{2}}}}{{2}} = "

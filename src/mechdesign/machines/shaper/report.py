@@ -14,7 +14,7 @@ import numpy as np
 from ...render import figures as fig
 from ...render import guide_bar_report as gb_report
 from ...i18n import N_, tr
-from ...render.fmt import e, f, in_lang, md_meta, sig, verdict
+from ...render.fmt import e, f, in_lang, md_meta, sig, time_ratio, verdict
 
 DEG = 180.0 / np.pi
 
@@ -179,18 +179,18 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
         "S": (rf"S = \sqrt{{{f(d.frame, 4)}^2 + {f(d.crank, 4)}^2 + 2 \times {f(d.frame, 4)} \times "
               rf"{f(d.crank, 4)} \sin {f(phi2 * DEG % 360, 2)}°}} = {f(S, 4)}\ \text{{m}}"),
         "w4": (rf"\omega_4 = \frac{{L_2\,\omega_2\cos(\varphi_2-\varphi_4)}}{{S}} = "
-               rf"\frac{{{f(d.crank, 4)} \times ({f(w2, 4)}) \cos({f(phi2 * DEG % 360, 2)}° - "
-               rf"{f(phi4 * DEG, 2)}°)}}{{{f(S, 4)}}} = {f(w4_formula, 4)}\ \text{{rad/s}}"),
-        "vr": (rf"v_{{A_4A_3}} = -L_2\,\omega_2\sin(\varphi_2-\varphi_4) = {f(vr_formula, 4)}\ "
+               rf"\frac{{{f(d.crank, 4)} \times ({sig(w2, group=False)}) \cos({f(phi2 * DEG % 360, 2)}° - "
+               rf"{f(phi4 * DEG, 2)}°)}}{{{f(S, 4)}}} = {sig(w4_formula, group=False)}\ \text{{rad/s}}"),
+        "vr": (rf"v_{{A_4A_3}} = -L_2\,\omega_2\sin(\varphi_2-\varphi_4) = {sig(vr_formula, group=False)}\ "
                rf"\text{{m/s}}, \quad a^k_{{A_4A_3}} = 2\,\omega_4\, v_{{A_4A_3}} = "
-               rf"{f(2 * w4_formula * vr_formula, 4)}\ \text{{m/s}}^2"),
-        "vf": (rf"v_F = {f(k.ram_v[j], 4)}\ \text{{m/s}}, \quad a_F = {f(k.ram_a[j], 4)}\ "
+               rf"{sig(2 * w4_formula * vr_formula, group=False)}\ \text{{m/s}}^2"),
+        "vf": (rf"v_F = {sig(k.ram_v[j], group=False)}\ \text{{m/s}}, \quad a_F = {sig(k.ram_a[j], group=False)}\ "
                rf"\text{{m/s}}^2"),
     }
     i_ratio = fl.speed_ratio
     fly_eq = {
         "mr": (rf"M_r = \frac{{M_b}}{{i}}, \quad i = \frac{{z_2}}{{z_1}} = \frac{{{p.z2}}}{{{p.z1}}}"
-               rf" = {f(i_ratio, 4)}") if fl.shaft == "pinion" else r"M_r = M_b",
+               rf" = {sig(i_ratio, group=False)}") if fl.shaft == "pinion" else r"M_r = M_b",
         "md": (rf"M_d = \frac{{1}}{{2\pi}}\int_0^{{2\pi}} M_r\,d\varphi = {sig(fl.shaft_torque, group=False)}"
                rf"\ \text{{N·m}}"),
         "jf": (rf"J_F = \frac{{900\,\Delta W_{{max}}}}{{\pi^2 n^2 [\delta]}} = \frac{{900 \times "
@@ -220,16 +220,16 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
         "worked": worked,
         "fly_eq": fly_eq,
         "sense_zh": sense_zh, "sense_en": sense_en,
-        "n2": f(p.crank_speed_rpm, 0), "omega2": f(abs(p.crank_omega), 4),
-        "theta": f(theta, 2), "K": f(K, 4 if syn.given_dimensions else 2),
+        "n2": f(p.crank_speed_rpm, 0), "omega2": sig(abs(p.crank_omega)),
+        "theta": f(theta, 2), "K": time_ratio(K) if syn.given_dimensions else f(K, 2),
         "H": f(H, 2 if syn.given_dimensions else 0),
         "working_span": f(k.working_span * DEG, 2),
         "return_span": f(360 - k.working_span * DEG, 2),
         "idle_mm": f(p.idle_travel_ratio * H, 1), "idle_ratio": f(p.idle_travel_ratio, 2),
         "cut_from": f(p.idle_travel_ratio * H, 1), "cut_to": f((1 - p.idle_travel_ratio) * H, 1),
         "grid_points": str(n),
-        "max_v": f(k.linkage.speed_peak, 3),
-        "max_a": f(k.linkage.accel_peak, 3),
+        "max_v": sig(k.linkage.speed_peak),
+        "max_a": sig(k.linkage.accel_peak),
         "mb_max": sig(r["linkage_forces"].torque_max, ref=r["linkage_forces"].peak_torque),
         "mb_min": sig(r["linkage_forces"].torque_min, ref=r["linkage_forces"].peak_torque),
         "mb_mean": sig(fl.mean_torque),
