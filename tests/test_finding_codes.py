@@ -141,7 +141,7 @@ def test_a_failed_self_check_names_its_shaft_by_message():
     from mechdesign.stages.drive import DRIVE_CHECK_NAMES
 
     shaft = i18n.catalogue("zh")[(None, "shaft {name}")]
-    detail = {"where_zh": shaft.format(name=2), "where_en": "shaft 2", "shaft": 2}
+    detail = {"shaft": 2}
     (f,) = failed_findings([SelfCheck("reactions", 1e-3, 1e-9, detail=detail)], DRIVE_CHECK_NAMES)
     assert f.code == "self_check" and not CJK.search(json.dumps(f.args, ensure_ascii=False))
     assert f" ({shaft.format(name=2)}) = 0.001" in f.text("zh")

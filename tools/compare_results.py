@@ -278,13 +278,37 @@ def _with_check_names(doc):
     compared too; likewise each finding (``code``, ``msgid``, ``args`` … since session 29)
     also as the ``zh``/``en`` texts older documents hold (rendered through zh.po; the English
     is its ``text``). An old finding held as a plain English string is compared with the new
-    one's ``text`` (see :func:`compare`)."""
+    one's ``text`` (see :func:`compare`).
+
+    Session 30 (issue 22 point 3, names as codes): a drive stage's ``name_zh``/``name_en``
+    are its ``kind``'s row of data/transmissions.yaml; a drive self-check's ``detail``
+    names its stage or shaft by index (``stage``/``shaft``) and its governing check by
+    ``check``/``check_args`` (msgid and fields), no longer as ``where_zh``/``where_en`` and
+    ``check_zh``/``check_en`` texts; those texts are made here again."""
     try:
-        from mechdesign.i18n import catalogue
-        from mechdesign.stages.findings import Finding
+        from mechdesign.data import load_yaml
+        from mechdesign.i18n import Msg, catalogue
+        from mechdesign.stages.findings import Finding, Named
     except ImportError:          # pragma: no cover - the tool run outside the package
         return doc
     zh = catalogue("zh")
+    transmissions = load_yaml("transmissions.yaml")
+    stage_kinds: dict = {}
+
+    def kinds(node):            # drive stage index → its kind (transmissions.yaml key)
+        if isinstance(node, list):
+            for v in node:
+                kinds(v)
+        elif isinstance(node, dict):
+            if {"index", "kind", "ratio_allocated"} <= node.keys():
+                stage_kinds[node["index"]] = node["kind"]
+            for v in node.values():
+                kinds(v)
+
+    kinds(doc)
+
+    def both(msg) -> dict:
+        return {"zh": msg.text("zh"), "en": msg.text("en")}
 
     def walk(node):
         if isinstance(node, list):
@@ -292,6 +316,25 @@ def _with_check_names(doc):
         if not isinstance(node, dict):
             return node
         out = {k: walk(v) for k, v in node.items()}
+        if {"index", "kind", "ratio_allocated"} <= node.keys() and node["kind"] in transmissions:
+            out.setdefault("name_zh", transmissions[node["kind"]]["name_zh"])
+            out.setdefault("name_en", transmissions[node["kind"]]["name_en"])
+        detail = node.get("detail")
+        if node.get("key") in ("margin", "reactions") and isinstance(detail, dict):
+            detail = out["detail"] = dict(out["detail"])
+            where = None
+            if "shaft" in detail:
+                where = both(Msg("shaft {name}", name=detail["shaft"]))
+            elif detail.get("stage") in stage_kinds:
+                where = both(Msg("stage {n} ({name})", n=detail["stage"] + 1,
+                                 name=Named("transmissions", stage_kinds[detail["stage"]])))
+            if where:
+                detail.setdefault("where_zh", where["zh"])
+                detail.setdefault("where_en", where["en"])
+            if isinstance(detail.get("check"), str) and isinstance(detail.get("check_args"), dict):
+                check = both(Msg(detail["check"], **detail["check_args"]))
+                detail.setdefault("check_zh", check["zh"])
+                detail.setdefault("check_en", check["en"])
         name, args = node.get("name"), node.get("name_args")
         if isinstance(name, str) and isinstance(args, dict) and "symbol" in node:
             out.setdefault("name_zh", zh.get((None, name), name).format(**args))

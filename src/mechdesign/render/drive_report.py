@@ -13,7 +13,7 @@ MM = 1e3
 
 
 def _stage_label(st, _) -> str:
-    name = st.name_zh if _.zh else st.name_en
+    name = st.name(_)
     if st.z1 is not None:
         return f"{name} (z₁ = {st.z1}, z₂ = {st.z2})"
     if st.d1 is not None:
@@ -162,8 +162,8 @@ def stage_designs(d, lang: str) -> list[dict]:
         g = r.design
         if g is None or g.kind not in ("gear", "worm", "belt", "chain"):
             continue
-        title = _("Stage {index}: {name_en}", index=r.index + 1, name_en=r.name_en,
-                   name_zh=r.name_zh)
+        title = _("Stage {index}: {name_en}", index=r.index + 1, name_en=r.name("en"),
+                   name_zh=r.name("zh"))
         text, rows = [], []
         if g.kind == "belt":
             out.append(_belt_design(r, g, title, _))

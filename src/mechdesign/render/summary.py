@@ -147,8 +147,11 @@ def _describe(node: dict, path: tuple, parents: tuple, names: dict, actuator) ->
     keys = [p for p in path if isinstance(p, str)]
     if "stages" in keys and "drive" in keys:              # a transmission stage's strength check
         stage = _owner(parents, path, "stages")
+        from ..data import load_yaml
+
+        row = load_yaml("transmissions.yaml").get(stage.get("kind"), {})   # the stage's names
         group = _both(N_("stage {n}: {name_en}"), n=stage.get("index", 0) + 1,
-                      name_zh=stage.get("name_zh", ""), name_en=stage.get("name_en", ""))
+                      name_zh=row.get("name_zh", ""), name_en=row.get("name_en", ""))
     elif "shaft_designs" in keys:                         # a shaft's strength, bearing, key checks
         from .drive_report import _shaft_name
 
