@@ -284,11 +284,15 @@ def _with_check_names(doc):
     are its ``kind``'s row of data/transmissions.yaml; a drive self-check's ``detail``
     names its stage or shaft by index (``stage``/``shaft``) and its governing check by
     ``check``/``check_args`` (msgid and fields), no longer as ``where_zh``/``where_en`` and
-    ``check_zh``/``check_en`` texts; those texts are made here again."""
+    ``check_zh``/``check_en`` texts; a shaft design names its elements (``elements``) and a
+    key its element (``element``) by their stages' kinds, no longer as (zh, en) ``names``; a
+    shaft's design ``steps`` are messages ({msgid, args}), no longer (zh, en) texts; those
+    texts are made here again; a crank-rocker design the program names (optimum, given frame,
+    given dimensions) holds its name as a message ``{msgid}``, no longer as 'zh / en'."""
     try:
         from mechdesign.data import load_yaml
         from mechdesign.i18n import Msg, catalogue
-        from mechdesign.stages.findings import Finding, Named
+        from mechdesign.stages.findings import Finding, Named, check_name, decode
     except ImportError:          # pragma: no cover - the tool run outside the package
         return doc
     zh = catalogue("zh")
@@ -332,13 +336,31 @@ def _with_check_names(doc):
                 detail.setdefault("where_zh", where["zh"])
                 detail.setdefault("where_en", where["en"])
             if isinstance(detail.get("check"), str) and isinstance(detail.get("check_args"), dict):
-                check = both(Msg(detail["check"], **detail["check_args"]))
+                check = both(check_name(detail["check"], detail["check_args"]))
                 detail.setdefault("check_zh", check["zh"])
                 detail.setdefault("check_en", check["en"])
         name, args = node.get("name"), node.get("name_args")
         if isinstance(name, str) and isinstance(args, dict) and "symbol" in node:
-            out.setdefault("name_zh", zh.get((None, name), name).format(**args))
-            out.setdefault("name_en", name.format(**args))
+            out.setdefault("name_zh", check_name(name, args).text("zh"))
+            out.setdefault("name_en", check_name(name, args).text("en"))
+            if isinstance(args.get("element_en"), dict):     # a key's element (session 30)
+                element = decode(args["element_en"])
+                out["name_args"] = {**out["name_args"], "element_zh": element.text("zh"),
+                                    "element_en": element.text("en")}
+        # a shaft design's elements and a key's element: drive stage kinds (session 30), were
+        # their (zh, en) names; its design steps: messages as data, were (zh, en) texts
+        if isinstance(node.get("elements"), list) and "span" in node:
+            out.setdefault("names", [[transmissions[k]["name_zh"], transmissions[k]["name_en"]]
+                                     for k in node["elements"]])
+        if isinstance(node.get("element"), str) and "hub" in node:
+            row = transmissions[node["element"]]
+            out.setdefault("names", [row["name_zh"], row["name_en"]])
+        # a crank-rocker design named by the program: a catalogue message, was its 'zh / en' text
+        if isinstance(node.get("label"), dict) and "msgid" in node["label"]:
+            label = decode(node["label"])
+            out["label"] = f"{label.text('zh')} / {label.text('en')}"
+        if isinstance(node.get("steps"), list) and all(isinstance(s, dict) for s in node["steps"]):
+            out["steps"] = [[decode(s).text("zh"), decode(s).text("en")] for s in node["steps"]]
         if {"code", "msgid", "args"} <= node.keys() and isinstance(node["args"], dict):
             found = Finding(node["code"], node["msgid"], node["args"], node.get("context"),
                             node.get("field") or "")

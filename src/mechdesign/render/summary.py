@@ -177,8 +177,10 @@ def _describe(node: dict, path: tuple, parents: tuple, names: dict, actuator) ->
     else:
         group = (keys[0] if keys else "", keys[0] if keys else "")
     if isinstance(node.get("name_args"), dict) and node.get("name"):     # a strength check (msgid)
-        args = node["name_args"]
-        name = (tr("zh")(node["name"], **args), tr("en")(node["name"], **args))
+        from ..stages.findings import check_name
+
+        msg = check_name(node)
+        name = (msg.text("zh"), msg.text("en"))
     elif node.get("name_zh") or node.get("name_en"):
         name = (node.get("name_zh") or node.get("name_en"), node.get("name_en") or node.get("name_zh"))
     else:

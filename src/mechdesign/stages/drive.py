@@ -18,7 +18,7 @@ from ..core.fields import q
 from ..data import load_csv, load_yaml
 from . import drive_elements as de, drive_strength as ds
 from ..i18n import N_, tr
-from .findings import CheckNames, Finding, Msg, Named, Pair, finding, zh_en
+from .findings import CheckNames, Finding, Msg, Named, Pair, check_name, finding, zh_en
 
 
 @dataclass(frozen=True)
@@ -333,8 +333,8 @@ def _strength(dp, results, shafts, peak_factor, peak_from_shaft):
 
 
 def _shafts(dp, results, shafts, peak_factor, peak_from_shaft, life_factor=None):
-    names = [(r.name("zh"), r.name("en")) for r in results]
-    return ds.shaft_designs(dp, [r.design for r in results], shafts, peak_factor, peak_from_shaft, names,
+    kinds = [r.kind for r in results]
+    return ds.shaft_designs(dp, [r.design for r in results], shafts, peak_factor, peak_from_shaft, kinds,
                             life_factor)
 
 
@@ -434,7 +434,7 @@ def _strength_warnings(results, shaft_designs) -> tuple[Finding, ...]:
         for c in s.checks:
             if not c.passed:
                 out.append(_failed(c, Msg(N_("shaft {name}"), name=name),
-                                   advice.get(tr("en")(c.name, **c.name_args))))
+                                   advice.get(check_name(c).text("en"))))
     return tuple(out)
 
 
@@ -472,7 +472,7 @@ def _failed(c, where: Msg, advice=None, stage: int | None = None) -> Finding:
         return finding("strength",
                        N_("{where}: {check} fails ({v} {rel} {a}{unit}) with the brief's {field}: "
                           "{advice}."), field=field, where=where,
-                       check=Msg(c.name, **c.name_args), v=v, rel=rel, a=a, unit=unit,
+                       check=check_name(c), v=v, rel=rel, a=a, unit=unit,
                        advice=en if isinstance(en, Msg) else Pair(zh, en))
     fix = Msg(N_("enlarge it or use a better material"))
     extra = {}
@@ -480,7 +480,7 @@ def _failed(c, where: Msg, advice=None, stage: int | None = None) -> Finding:
         fix = Msg(de.FIXES[c.key], i=stage)
         extra = {"field": f"drive.stages[{stage}]"}
     return finding("strength", N_("{where}: {check} fails ({v} {rel} {a}{unit}): {fix}."),
-                   where=where, check=Msg(c.name, **c.name_args), v=v, rel=rel, a=a, unit=unit,
+                   where=where, check=check_name(c), v=v, rel=rel, a=a, unit=unit,
                    fix=fix, **extra)
 
 

@@ -3,7 +3,8 @@ from __future__ import annotations
 
 from pathlib import Path
 import numpy as np
-from ...i18n import Msg, N_, tr
+from ...i18n import N_, tr
+from ...stages.findings import check_name
 from ...render.fmt import e, f, md_meta, md_text, sig
 from ...render.fmt import verdict
 from ...render.drive_report import _shaft_name, drive_context
@@ -69,7 +70,7 @@ def verification_context(d, v, lang: str) -> dict:
                 st = d.stages[k.detail["stage"]]
                 where = _("stage {index} ({name_en})", index=st.index + 1, name_en=st.name("en"),
                           name_zh=st.name("zh"))
-            check = Msg(k.detail["check"], **k.detail["check_args"]).text(_)   # its governing check
+            check = check_name(k.detail["check"], k.detail["check_args"]).text(_)   # its governing check
             item = _("{where}: {name} ({detail} checks)", where=where, name=name,
                       detail=k.detail['checks'])
             rows.append([item, _("{value}% ({check})", value=f(k.value * 100, 1), check=check),
