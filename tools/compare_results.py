@@ -288,7 +288,8 @@ def _with_check_names(doc):
     key its element (``element``) by their stages' kinds, no longer as (zh, en) ``names``; a
     shaft's design ``steps`` are messages ({msgid, args}), no longer (zh, en) texts; those
     texts are made here again; a crank-rocker design the program names (optimum, given frame,
-    given dimensions) holds its name as a message ``{msgid}``, no longer as 'zh / en'."""
+    given dimensions) holds its name as a message ``{msgid}``, no longer as 'zh / en'; a cycle
+    actuator (phase) the program names holds it as ``name`` (``label``) = {msgid, context}."""
     try:
         from mechdesign.data import load_yaml
         from mechdesign.i18n import Msg, catalogue
@@ -355,6 +356,12 @@ def _with_check_names(doc):
         if isinstance(node.get("element"), str) and "hub" in node:
             row = transmissions[node["element"]]
             out.setdefault("names", [row["name_zh"], row["name_en"]])
+        # a cycle actuator or phase named by the program: a catalogue message (name, label),
+        # its name_zh/name_en (label_zh/label_en) empty; they held the texts
+        for msg_key, zh_key, en_key in (("name", "name_zh", "name_en"), ("label", "label_zh", "label_en")):
+            if isinstance(node.get(msg_key), dict) and "msgid" in node[msg_key] and zh_key in node:
+                m = decode(node[msg_key])
+                out[zh_key], out[en_key] = m.text("zh"), m.text("en")
         # a crank-rocker design named by the program: a catalogue message, was its 'zh / en' text
         if isinstance(node.get("label"), dict) and "msgid" in node["label"]:
             label = decode(node["label"])

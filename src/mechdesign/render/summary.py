@@ -115,6 +115,10 @@ def document_checks(document: dict) -> list[dict]:
         key = ref.split(".")[0]
         for a in doc_cycle.get("actuators", ()):
             if a.get("key") == key:
+                if isinstance(a.get("name"), dict):            # a name the program gives
+                    from ..stages.findings import decode
+
+                    return decode(a["name"]).text("zh" if zh else "en")
                 return a.get("name_zh" if zh else "name_en") or key
         return key
 
