@@ -272,11 +272,9 @@ def _block_dimension(placer: LabelPlacer, d: Dimension) -> None:
 
 
 def _name(model, link: str, lang: str) -> str | None:
-    names = getattr(model, "names", None) or {}
-    if link not in names:
-        return None
-    zh, en = names[link]
-    return zh if lang == "zh" else en
+    from ..stages.linkage import link_name
+
+    return link_name(getattr(model, "names", None), link, lang)
 
 
 def _fixed_guides(P: dict, sliders: list, mm: float) -> list:

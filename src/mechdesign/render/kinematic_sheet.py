@@ -258,8 +258,10 @@ class _LinkageDrawing:
         return numbered
 
     def legend(self, numbered: list, lang: str) -> str:
+        from ..stages.linkage import link_name
+
         names = getattr(self.model, "names", None) or {}
-        return "  ".join(f"{lk} {names[lk][0 if lang == 'zh' else 1]}" for lk in
+        return "  ".join(f"{lk} {link_name(names, lk, lang)}" for lk in
                          sorted(set(numbered), key=lambda x: (len(x), x)) if lk in names)
 
 

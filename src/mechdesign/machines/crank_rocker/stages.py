@@ -489,8 +489,7 @@ def linkage_model(r: dict):
     best = opt.best
     branch = folded_branch(best.design, best.a_pivot, opt.construction.c1)
     mech = _four_bar_mechanism(best.design, best.a_pivot, branch, p.omega)
-    zh = tr("zh")
-    names = {k: (zh(v), v) for k, v in _LINK_NAMES.items()}
+    names = {k: Msg(v) for k, v in _LINK_NAMES.items()}      # translated where shown
     model = lk.LinkageModel(mech, p.omega, lk.Output("link", "4", 0.0, +1),
                             grid_points=p.grid_points,
                             transmission_angle_min=p.gamma_allowed, names=names)

@@ -212,9 +212,9 @@ def build_press(d: ToggleDesign, p: DieCutterParams) -> LinkageModel:
             bodies.append(Body(link, mass, name, mass * length ** 2 / 12.0))
     H, t = g.stroke, p.pressing_travel
     cut = Resistance("6", "D", np.pi / 2, p.cutting_force, 0.0, (H - t, H))
-    names = {"2": zh_en.pgettext("link", "crank"), "3": zh_en.pgettext("link", "coupler AB"),
-             "4": zh_en.pgettext("link", "toggle CB"), "5": zh_en.pgettext("link", "toggle BD"),
-             "6": zh_en.pgettext("link", "platen")}
+    names = {"2": Msg.pgettext("link", "crank"), "3": Msg.pgettext("link", "coupler AB"),
+             "4": Msg.pgettext("link", "toggle CB"), "5": Msg.pgettext("link", "toggle BD"),
+             "6": Msg.pgettext("link", "platen")}
     return LinkageModel(
         mechanism=m, crank_omega=p.crank_omega, output=Output("point", "D", np.pi / 2, 1),
         bodies=tuple(bodies), resistances=(cut,), grid_points=p.grid_points,
