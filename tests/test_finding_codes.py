@@ -169,3 +169,20 @@ def test_old_results_with_finding_texts_still_compare():
     changed = json.loads(json.dumps(old))
     changed["gear"]["warnings"][0] = "other"
     assert cr.compare(changed, new)
+
+
+def test_a_missed_timing_requirement_names_it_by_codes():
+    """The lock-beam's cycle finding: a requirement the brief does not word is "a before b"
+    with the catalogue's word (no text stored); one the brief words stays the user's text."""
+    from mechdesign.core import cycle as cy
+    from mechdesign.machines.lockbeam.stages import _requirement
+
+    plain = cy.Constraint("before", ("pin", "rise"), ("bend", "move"), 0.1)
+    f = finding("cycle", "{req}", req=_requirement(plain))
+    assert not CJK.search(json.dumps(f.args, ensure_ascii=False))
+    assert f.text("en") == "pin.rise before bend.move"
+    word = i18n.catalogue("zh")[("timing requirement", "before")]
+    assert f.text("zh") == f"pin.rise {word} bend.move"
+    worded = cy.Constraint("before", ("pin", "rise"), ("bend", "move"), 0.1, "销先升", "pin first")
+    g = finding("cycle", "{req}", req=_requirement(worded))
+    assert (g.text("zh"), g.text("en")) == ("销先升", "pin first")
