@@ -141,7 +141,7 @@ def test_a_failed_self_check_names_its_shaft_by_message():
     from mechdesign.stages.drive import DRIVE_CHECK_NAMES
 
     shaft = i18n.catalogue("zh")[(None, "shaft {name}")]
-    detail = {"where_zh": shaft.format(name=2), "where_en": "shaft 2", "shaft": 2}
+    detail = {"shaft": 2}
     (f,) = failed_findings([SelfCheck("reactions", 1e-3, 1e-9, detail=detail)], DRIVE_CHECK_NAMES)
     assert f.code == "self_check" and not CJK.search(json.dumps(f.args, ensure_ascii=False))
     assert f" ({shaft.format(name=2)}) = 0.001" in f.text("zh")
@@ -169,3 +169,20 @@ def test_old_results_with_finding_texts_still_compare():
     changed = json.loads(json.dumps(old))
     changed["gear"]["warnings"][0] = "other"
     assert cr.compare(changed, new)
+
+
+def test_a_missed_timing_requirement_names_it_by_codes():
+    """The lock-beam's cycle finding: a requirement the brief does not word is "a before b"
+    with the catalogue's word (no text stored); one the brief words stays the user's text."""
+    from mechdesign.core import cycle as cy
+    from mechdesign.machines.lockbeam.stages import _requirement
+
+    plain = cy.Constraint("before", ("pin", "rise"), ("bend", "move"), 0.1)
+    f = finding("cycle", "{req}", req=_requirement(plain))
+    assert not CJK.search(json.dumps(f.args, ensure_ascii=False))
+    assert f.text("en") == "pin.rise before bend.move"
+    word = i18n.catalogue("zh")[("timing requirement", "before")]
+    assert f.text("zh") == f"pin.rise {word} bend.move"
+    worded = cy.Constraint("before", ("pin", "rise"), ("bend", "move"), 0.1, "销先升", "pin first")
+    g = finding("cycle", "{req}", req=_requirement(worded))
+    assert (g.text("zh"), g.text("en")) == ("销先升", "pin first")

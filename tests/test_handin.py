@@ -181,7 +181,9 @@ def test_every_failed_check_is_named_failed_in_the_summary(reports, name, lang):
     for c in failed:
         name_ = c.get("name_zh" if lang == "zh" else "name_en")
         if "name_args" in c:                 # a strength check: an English msgid and its fields
-            name_ = tr(lang)(c["name"], **c["name_args"])
+            from mechdesign.stages.findings import check_name   # (a data-table name as {table, key})
+
+            name_ = check_name(c).text(lang)
         if name_:
             assert any(name_ in r for r in failed_rows), (name_, failed_rows)
     assert len(failed_rows) >= (1 if failed else 0)

@@ -46,6 +46,13 @@ RENDER_MAY_IMPORT = {
                                                  "shared by the tables, warnings and sheets",
     ("mechdesign.machines.eccentric_cam.stages", "DISC_CHECK_NAMES"): "names of the self-checks (zh, en)",
     ("mechdesign.stages.cam", "DIST_LIMIT"): "a tolerance constant printed with its check",
+    # names and messages stored as codes (issue 22 point 3), made into text where shown
+    ("mechdesign.stages.findings", "Named"): "a name looked up in a data table by its row key",
+    ("mechdesign.stages.findings", "decode"): "a message stored as data ({msgid, args}) as a message",
+    ("mechdesign.stages.linkage", "link_name"): "a link's or group's name: the machine's catalogue "
+                                               "message translated, or the brief's (zh, en) pair",
+    ("mechdesign.stages.findings", "check_name"): "a strength check's name: its msgid and stored fields "
+                                                  "as a message",
     # result and model types (isinstance checks and annotations)
     ("mechdesign.core.cam", "TranslatingFollower"): "follower type (isinstance)",
     ("mechdesign.core.cam", "OscillatingFollower"): "follower type (isinstance)",

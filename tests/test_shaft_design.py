@@ -261,7 +261,10 @@ def test_life_uses_the_equivalent_load_and_statics_the_peak(peaked):
 def test_keys_take_the_mean_torque_before_the_flywheel(peaked):
     _, d = peaked
     sd = d.shaft_designs[0]
-    pulley = next(k for k in sd.keys if "belt" in k.names[1].lower() or "V" in k.names[1])
+    from mechdesign.stages.findings import Named
+
+    names = {k.element: Named("transmissions", k.element).text("en") for k in sd.keys}  # the key's element
+    pulley = next(k for k in sd.keys if "belt" in names[k.element].lower() or "V" in names[k.element])
     assert pulley.torque == pytest.approx(d.shafts[1].torque)
     gear = next(k for k in sd.keys if k is not pulley)
     assert gear.torque == pytest.approx(6.0 * d.shafts[1].torque)
@@ -271,7 +274,9 @@ def test_keys_take_the_mean_torque_before_the_flywheel(peaked):
 def test_steps_print_rule_and_numbers(peaked):
     _, d = peaked
     sd = d.shaft_designs[0]
-    zh, en = zip(*sd.steps)
+    from mechdesign.stages.findings import decode
+
+    zh, en = zip(*((decode(s).text("zh"), decode(s).text("en")) for s in sd.steps))   # messages as data
     assert "A_0" in en[0] and "table 15-3" in en[0] and "表15-3" in zh[0]
     assert any("peak torque" in t for t in en) and any("立方平均" in t for t in zh)
     assert any(sd.bearing.designation in t for t in en)

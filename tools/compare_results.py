@@ -278,13 +278,42 @@ def _with_check_names(doc):
     compared too; likewise each finding (``code``, ``msgid``, ``args`` … since session 29)
     also as the ``zh``/``en`` texts older documents hold (rendered through zh.po; the English
     is its ``text``). An old finding held as a plain English string is compared with the new
-    one's ``text`` (see :func:`compare`)."""
+    one's ``text`` (see :func:`compare`).
+
+    Session 30 (issue 22 point 3, names as codes): a drive stage's ``name_zh``/``name_en``
+    are its ``kind``'s row of data/transmissions.yaml; a drive self-check's ``detail``
+    names its stage or shaft by index (``stage``/``shaft``) and its governing check by
+    ``check``/``check_args`` (msgid and fields), no longer as ``where_zh``/``where_en`` and
+    ``check_zh``/``check_en`` texts; a shaft design names its elements (``elements``) and a
+    key its element (``element``) by their stages' kinds, no longer as (zh, en) ``names``; a
+    shaft's design ``steps`` are messages ({msgid, args}), no longer (zh, en) texts; those
+    texts are made here again; a crank-rocker design the program names (optimum, given frame,
+    given dimensions) holds its name as a message ``{msgid}``, no longer as 'zh / en'; a cycle
+    actuator (phase) the program names holds it as ``name`` (``label``) = {msgid, context}."""
     try:
-        from mechdesign.i18n import catalogue
-        from mechdesign.stages.findings import Finding
+        from mechdesign.data import load_yaml
+        from mechdesign.i18n import Msg, catalogue
+        from mechdesign.stages.findings import Finding, Named, check_name, decode
     except ImportError:          # pragma: no cover - the tool run outside the package
         return doc
     zh = catalogue("zh")
+    transmissions = load_yaml("transmissions.yaml")
+    stage_kinds: dict = {}
+
+    def kinds(node):            # drive stage index → its kind (transmissions.yaml key)
+        if isinstance(node, list):
+            for v in node:
+                kinds(v)
+        elif isinstance(node, dict):
+            if {"index", "kind", "ratio_allocated"} <= node.keys():
+                stage_kinds[node["index"]] = node["kind"]
+            for v in node.values():
+                kinds(v)
+
+    kinds(doc)
+
+    def both(msg) -> dict:
+        return {"zh": msg.text("zh"), "en": msg.text("en")}
 
     def walk(node):
         if isinstance(node, list):
@@ -292,10 +321,53 @@ def _with_check_names(doc):
         if not isinstance(node, dict):
             return node
         out = {k: walk(v) for k, v in node.items()}
+        if {"index", "kind", "ratio_allocated"} <= node.keys() and node["kind"] in transmissions:
+            out.setdefault("name_zh", transmissions[node["kind"]]["name_zh"])
+            out.setdefault("name_en", transmissions[node["kind"]]["name_en"])
+        detail = node.get("detail")
+        if node.get("key") in ("margin", "reactions") and isinstance(detail, dict):
+            detail = out["detail"] = dict(out["detail"])
+            where = None
+            if "shaft" in detail:
+                where = both(Msg("shaft {name}", name=detail["shaft"]))
+            elif detail.get("stage") in stage_kinds:
+                where = both(Msg("stage {n} ({name})", n=detail["stage"] + 1,
+                                 name=Named("transmissions", stage_kinds[detail["stage"]])))
+            if where:
+                detail.setdefault("where_zh", where["zh"])
+                detail.setdefault("where_en", where["en"])
+            if isinstance(detail.get("check"), str) and isinstance(detail.get("check_args"), dict):
+                check = both(check_name(detail["check"], detail["check_args"]))
+                detail.setdefault("check_zh", check["zh"])
+                detail.setdefault("check_en", check["en"])
         name, args = node.get("name"), node.get("name_args")
         if isinstance(name, str) and isinstance(args, dict) and "symbol" in node:
-            out.setdefault("name_zh", zh.get((None, name), name).format(**args))
-            out.setdefault("name_en", name.format(**args))
+            out.setdefault("name_zh", check_name(name, args).text("zh"))
+            out.setdefault("name_en", check_name(name, args).text("en"))
+            if isinstance(args.get("element_en"), dict):     # a key's element (session 30)
+                element = decode(args["element_en"])
+                out["name_args"] = {**out["name_args"], "element_zh": element.text("zh"),
+                                    "element_en": element.text("en")}
+        # a shaft design's elements and a key's element: drive stage kinds (session 30), were
+        # their (zh, en) names; its design steps: messages as data, were (zh, en) texts
+        if isinstance(node.get("elements"), list) and "span" in node:
+            out.setdefault("names", [[transmissions[k]["name_zh"], transmissions[k]["name_en"]]
+                                     for k in node["elements"]])
+        if isinstance(node.get("element"), str) and "hub" in node:
+            row = transmissions[node["element"]]
+            out.setdefault("names", [row["name_zh"], row["name_en"]])
+        # a cycle actuator or phase named by the program: a catalogue message (name, label),
+        # its name_zh/name_en (label_zh/label_en) empty; they held the texts
+        for msg_key, zh_key, en_key in (("name", "name_zh", "name_en"), ("label", "label_zh", "label_en")):
+            if isinstance(node.get(msg_key), dict) and "msgid" in node[msg_key] and zh_key in node:
+                m = decode(node[msg_key])
+                out[zh_key], out[en_key] = m.text("zh"), m.text("en")
+        # a crank-rocker design named by the program: a catalogue message, was its 'zh / en' text
+        if isinstance(node.get("label"), dict) and "msgid" in node["label"]:
+            label = decode(node["label"])
+            out["label"] = f"{label.text('zh')} / {label.text('en')}"
+        if isinstance(node.get("steps"), list) and all(isinstance(s, dict) for s in node["steps"]):
+            out["steps"] = [[decode(s).text("zh"), decode(s).text("en")] for s in node["steps"]]
         if {"code", "msgid", "args"} <= node.keys() and isinstance(node["args"], dict):
             found = Finding(node["code"], node["msgid"], node["args"], node.get("context"),
                             node.get("field") or "")

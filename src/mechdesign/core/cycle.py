@@ -28,6 +28,7 @@ from typing import Iterable, NamedTuple, Sequence
 import numpy as np
 
 from .errors import DesignError, N_, pgettext
+from ..i18n import Msg
 from .fields import q
 
 TWO_PI = 2.0 * np.pi
@@ -97,13 +98,15 @@ class CycleError(DesignError):
 @dataclass(frozen=True)
 class Phase:
     """One phase of an actuator: ``state`` from :data:`STATES`, ``start`` ∈ [0, 2π) and
-    ``span`` > 0 [rad]; optional display labels override the state's name."""
+    ``span`` > 0 [rad]; optional display labels override the state's name: the brief's
+    (label_zh, label_en), or the program's as a catalogue message (label_msg)."""
 
     state: str
     start: float
     span: float
     label_zh: str = ""
     label_en: str = ""
+    label_msg: Msg | None = None
 
     @property
     def end(self) -> float:
@@ -111,6 +114,8 @@ class Phase:
         return self.start + self.span
 
     def name(self, lang: str) -> str:
+        if self.label_msg is not None:
+            return self.label_msg.text(lang)
         label = self.label_zh if lang == "zh" else self.label_en
         return label or STATES[self.state].name(lang)
 
@@ -121,18 +126,22 @@ class Phase:
 
 @dataclass(frozen=True)
 class Actuator:
-    """An actuator (执行构件) and its phases, consecutive from ``phases[0].start``."""
+    """An actuator (执行构件) and its phases, consecutive from ``phases[0].start``; named by
+    the brief (name_zh, name_en) or by the program (name_msg, a catalogue message)."""
 
     key: str
     name_zh: str
     name_en: str
     phases: tuple[Phase, ...]
+    name_msg: Msg | None = None
 
     @property
     def start(self) -> float:
         return self.phases[0].start
 
     def name(self, lang: str) -> str:
+        if self.name_msg is not None:
+            return self.name_msg.text(lang)
         return self.name_zh if lang == "zh" else self.name_en
 
 
@@ -254,12 +263,18 @@ def make_actuator(key: str, name_zh: str, name_en: str, start: float,
     ``phases``: items (state, span[, label_zh[, label_en]]) or :class:`Phase` (only its
     state, span and labels are used). The spans [rad] must add up to 2π within ``tol``;
     they are then scaled to exactly 2π (degrees converted to radians add up to 2π only
-    within rounding).
+    within rounding). A name the program gives (not the brief) is a catalogue message
+    (:class:`~mechdesign.i18n.Msg`) in place of ``name_zh`` (``name_en`` then empty), of
+    a phase's ``label_zh`` (no ``label_en``).
     """
-    items = []
+    msg = None
+    if isinstance(name_zh, Msg):
+        msg, name_zh, name_en = name_zh, "", ""
+    items, msgs = [], []
     for i, ph in enumerate(phases):
         if isinstance(ph, Phase):
             state, span, lzh, len_ = ph.state, ph.span, ph.label_zh, ph.label_en
+            lmsg = ph.label_msg
         else:
             ph = tuple(ph)
             if not 2 <= len(ph) <= 4:
@@ -269,6 +284,9 @@ def make_actuator(key: str, name_zh: str, name_en: str, start: float,
             state, span = ph[0], ph[1]
             lzh = ph[2] if len(ph) > 2 else ""
             len_ = ph[3] if len(ph) > 3 else ""
+            lmsg = None
+            if isinstance(lzh, Msg):
+                lmsg, lzh, len_ = lzh, "", ""
         if state not in STATES:
             raise CycleError(N_("actuator {key!r}, phase {i}: state {state!r} is not one of "
                                 "{states}"), key=key, i=i + 1,
@@ -279,20 +297,21 @@ def make_actuator(key: str, name_zh: str, name_en: str, start: float,
                                 "{span_deg:g}°"), key=key, i=i + 1,
                              span_deg=np.degrees(span))
         items.append((state, span, lzh, len_))
+        msgs.append(lmsg)
     if not items:
         raise CycleError(N_("actuator {key!r} has no phases"), key=key)
     total = sum(s for _, s, _, _ in items)
     if abs(total - TWO_PI) > tol:
         raise CycleError(N_("actuator {key!r} ({name_en}): the phase spans add up to "
                             "{total_deg:.6g}°; they must cover exactly 360°"),
-                         key=key, name_en=name_en, total_deg=np.degrees(total),
-                         name=name_zh or name_en)
+                         key=key, name_en=msg or name_en, total_deg=np.degrees(total),
+                         name=msg or name_zh or name_en)
     scale = TWO_PI / total
     out, at = [], float(np.mod(start, TWO_PI))
-    for state, span, lzh, len_ in items:
-        out.append(Phase(state, float(np.mod(at, TWO_PI)), span * scale, lzh, len_))
+    for (state, span, lzh, len_), lmsg in zip(items, msgs):
+        out.append(Phase(state, float(np.mod(at, TWO_PI)), span * scale, lzh, len_, lmsg))
         at += span * scale
-    return Actuator(key, name_zh, name_en, tuple(out))
+    return Actuator(key, name_zh, name_en, tuple(out), msg)
 
 
 def build_cycle(actuators: Sequence, shaft_speed: float, origin: float = 0.0,
@@ -515,6 +534,8 @@ class PhaseDoc:
     duration: float = q("s", "Δφ/ω")
     label_zh: str = q("", "label shown instead of the state's name (zh), or empty")
     label_en: str = q("", "the same in English")
+    label: dict | None = q("", "the label when the program gives it: a catalogue message {msgid, "
+                           "context}, translated where shown (null: label_zh/label_en)", default=None)
 
 
 @dataclass(frozen=True)
@@ -525,6 +546,9 @@ class ActuatorDoc:
     name_zh: str = q("", "its name (zh)")
     name_en: str = q("", "its name (en)")
     phases: tuple[PhaseDoc, ...] = q("", "consecutive phases covering one revolution")
+    name: dict | None = q("", "its name when the program gives it (not the brief): a catalogue "
+                          "message {msgid, context}, translated where shown (null: name_zh/name_en)",
+                          default=None)
 
 
 @dataclass(frozen=True)
@@ -550,6 +574,11 @@ class CycleDocument:
     constraints: tuple[ConstraintDoc, ...] = q("", "the timing requirements checked")
 
 
+def _msg_data(msg: Msg | None) -> dict | None:
+    """A name the program gives, as results.json holds it: {msgid, context}."""
+    return None if msg is None else {"msgid": msg.msgid, "context": msg.context}
+
+
 def cycle_document(cycle: CycleDiagram, checks: Sequence[ConstraintCheck] | None = None,
                    cls: type = CycleDocument, **extra) -> CycleDocument:
     """The cycle diagram for ``results.json`` (SI: rad, s). A machine that adds its own
@@ -559,7 +588,8 @@ def cycle_document(cycle: CycleDiagram, checks: Sequence[ConstraintCheck] | None
         shaft_speed=cycle.shaft_speed, period=cycle.period, origin=cycle.origin,
         actuators=tuple(ActuatorDoc(a.key, a.name_zh, a.name_en, tuple(
             PhaseDoc(p.state, p.start, p.span, p.span / cycle.shaft_speed, p.label_zh,
-                     p.label_en) for p in a.phases)) for a in cycle.actuators),
+                     p.label_en, _msg_data(p.label_msg)) for p in a.phases), _msg_data(a.name_msg))
+            for a in cycle.actuators),
         constraints=tuple(ConstraintDoc(c.constraint.kind, str(c.constraint.a),
                                         str(c.constraint.b), c.constraint.margin, c.ok, c.slack)
                           for c in checks),

@@ -275,11 +275,10 @@ def _block_dimension(placer: LabelPlacer, d: Dimension) -> None:
 
 
 def _name(model, link: str, lang: str) -> str | None:
-    names = getattr(model, "names", None) or {}
-    if link not in names:
-        return None
-    zh, en = names[link]
-    return sheet_names(zh if lang == "zh" else en)      # "导杆 O3B": O₃B
+    from ..stages.linkage import link_name
+
+    name = link_name(getattr(model, "names", None), link, lang)
+    return None if name is None else sheet_names(name)      # "导杆 O3B": O₃B
 
 
 def _fixed_guides(P: dict, sliders: list, mm: float) -> list:

@@ -50,6 +50,8 @@ def pieces(start: float, span: float, origin: float) -> list[tuple[float, float]
 
 
 def phase_name(ph, lang: str) -> str:
+    if getattr(ph, "label_msg", None) is not None:       # a label the program gives
+        return ph.label_msg.text(lang)
     text = ph.label_zh if lang == "zh" else ph.label_en
     return text or STATE_NAMES[lang].get(ph.state, ph.state)
 
@@ -84,7 +86,7 @@ def cycle_sheet(diagram, info: TitleInfo, lang: str) -> Sheet:
     s = Sheet("A3")
     x0, y0, x1, y1 = s.inner
     acts = list(diagram.actuators)
-    names = [a.name_zh if lang == "zh" else a.name_en for a in acts]
+    names = [a.name(lang) for a in acts]
     name_w = max(text_width(nm, 3.5) for nm in names) + 8.0
     left = x0 + 8.0 + name_w
     mu = next((m for m in MU_PHI if 360.0 / m <= x1 - 14.0 - left), MU_PHI[-1])

@@ -7,18 +7,24 @@ import numpy as np
 
 from ..stages.drive import shaft_numeral
 from ..i18n import N_, tr
+from ..stages.findings import Named, decode
 from .fmt import f, grouped, md_text, percent, rpm, sig
 
 MM = 1e3
 
 
 def _stage_label(st, _) -> str:
-    name = st.name_zh if _.zh else st.name_en
+    name = st.name(_)
     if st.z1 is not None:
         return f"{name} (z₁ = {st.z1}, z₂ = {st.z2})"
     if st.d1 is not None:
         return f"{name} (d₁ = {f(st.d1 * MM, 0)}, d₂ = {f(st.d2 * MM, 0)} mm)"
     return name
+
+
+def _stage_name(kind: str, lang) -> str:
+    """A drive stage's name (of its kind: a row of data/transmissions.yaml) in ``lang``."""
+    return Named("transmissions", kind).text(lang)
 
 
 def _shaft_name(i: int, last: int, zh: bool) -> str:
@@ -162,8 +168,8 @@ def stage_designs(d, lang: str) -> list[dict]:
         g = r.design
         if g is None or g.kind not in ("gear", "worm", "belt", "chain"):
             continue
-        title = _("Stage {index}: {name_en}", index=r.index + 1, name_en=r.name_en,
-                   name_zh=r.name_zh)
+        title = _("Stage {index}: {name_en}", index=r.index + 1, name_en=r.name("en"),
+                   name_zh=r.name("zh"))
         text, rows = [], []
         if g.kind == "belt":
             out.append(_belt_design(r, g, title, _))
@@ -238,12 +244,13 @@ def stage_designs(d, lang: str) -> list[dict]:
         title = _("Design and checks of {index}",
                    index=_shaft_name(sh.index, len(d.shafts) - 1, _.zh))
         res = sh.result
-        where = _.pgettext("list", ", ").join(n[0] if _.zh else n[1] for n in sh.names)
+        where = _.pgettext("list", ", ").join(_stage_name(kind, _) for kind in sh.elements)
         text = [_("On the shaft: {where}. Designed by the procedure of PU Lianggui, Machine "
                   "Design, ch. 15 (each step's rule and numbers below); any failed check "
                   "enlarges that section and everything is checked again.", where=where)]
-        for k, (szh, sen) in enumerate(sh.steps, 1):
-            text.append(_("Step {k}: {sen}.", k=k, sen=sen, szh=szh))
+        for k, step in enumerate(sh.steps, 1):
+            said = decode(step).text(_)
+            text.append(_("Step {k}: {sen}.", k=k, sen=said, szh=said))
         text.append(_("Reactions (strength case): $R_{{AH}} = {RAh}$ N, $R_{{AV}} = {RAv}$ N, "
                       "$R_{{BH}} = {RBh}$ N, $R_{{BV}} = {RBv}$ N; largest equivalent moment at x = "
                       "{x} mm, M = {M} N·m.", RAh=f(res.RAh, 1), RAv=f(res.RAv, 1),
@@ -272,7 +279,7 @@ def stage_designs(d, lang: str) -> list[dict]:
             rows.append([_("bearing"), sh.bearing.designation, "—"])
         for k in sh.keys:
             lab = f"{f(k.b * MM, 0)}×{f(k.h * MM, 0)}×{f(k.L * MM, 0)}" + (" ×2" if k.count == 2 else "")
-            rows.append([_("key") + f" ({k.names[0] if _.zh else k.names[1]})", lab, unit_mm])
+            rows.append([_("key") + f" ({_stage_name(k.element, _)})", lab, unit_mm])
         bearing_std = () if sh.bearing is None else (
             ("gb297",) if sh.bearing.designation.startswith("3") else ("gb276",))
         out.append({"title": title, "text": text, "rows": rows,

@@ -258,8 +258,10 @@ class _LinkageDrawing:
         return numbered
 
     def legend(self, numbered: list, lang: str) -> str:
+        from ..stages.linkage import link_name
+
         names = getattr(self.model, "names", None) or {}
-        return "  ".join(f"{lk} {sheet_names(names[lk][0 if lang == 'zh' else 1])}" for lk in
+        return "  ".join(f"{lk} {sheet_names(link_name(names, lk, lang))}" for lk in
                          sorted(set(numbered), key=lambda x: (len(x), x)) if lk in names)
 
 
@@ -933,7 +935,7 @@ def drive_schematic(drive, info: TitleInfo, lang: str) -> Sheet:
     for j, st in enumerate(stages):
         data = (f"{sub('d', '1')}={format_number(st.d1 * MM)}, {sub('d', '2')}={format_number(st.d2 * MM)} mm"
                 if st.d1 else (f"{sub('z', '1')}={st.z1}, {sub('z', '2')}={st.z2}" if st.z1 else "—"))
-        srows.append([str(j + 1), st.name_zh if lang == "zh" else st.name_en, format_number(st.ratio, 4), data])
+        srows.append([str(j + 1), st.name(lang), format_number(st.ratio, 4), data])
     table(s, tx, ybot - 8.0, [12, 58, 25, 80], srows, head=[tr(lang).pgettext("kinematic sheet", "No."), lab["stage"],
                                                              lab["ratio"], lab["data"]],
           title=lab["stages"], title_height=3.5, height=3.0, row_h=6.0)

@@ -229,6 +229,7 @@ def _link_rows(model, lang: str) -> list[list[str]]:
     """Groups of the linkage with their dimensions, for the data table (names, point
     names and link ids come from the brief: escaped)."""
     from ..core.mechanism import RPR, RRP, RRR, Crank, LinkPoint
+    from ..stages.linkage import link_name
 
     zh = lang == "zh"
     _ = tr(lang)
@@ -237,7 +238,7 @@ def _link_rows(model, lang: str) -> list[list[str]]:
 
     def ids(*links):
         # The machine's names of its links, where it gives them (e.g. 4 摇杆).
-        return ", ".join(md_names(f"{l_} {model.names[l_][0 if zh else 1]}" if l_ in model.names else l_)
+        return ", ".join(md_names(f"{l_} {link_name(model.names, l_, lang)}" if l_ in model.names else l_)
                          for l_ in links)
 
     rows = []
@@ -271,9 +272,10 @@ def _group_namer(model, lang: str):
     """A group's name as an ``lang`` report shows it: from ``LinkageModel.group_labels``
     (the machine's names, or the brief's ``name`` and ``name_en``) where it has one, else
     the name as written."""
+    from ..stages.linkage import link_name
+
     labels = getattr(model, "group_labels", None) or {}
-    i = 0 if lang == "zh" else 1
-    return lambda name: labels[name][i] if name in labels else name
+    return lambda name: link_name(labels, name, lang) if name in labels else name
 
 
 def linkage_context(model, k, f_, fly, v, figures: dict, lang: str,

@@ -266,8 +266,10 @@ def check_rows(checks: Iterable[Check], lang: str = "zh") -> list[list[str]]:
     """Summary rows ``[item_zh, item_en, value, allowable, unit, verdict]`` (course units;
     the allowable is a minimum for lives and diameters, a maximum otherwise; a ratio's unit "1"
     shows as "—")."""
+    from ..stages.findings import check_name
+
     zh, en = tr("zh"), tr("en")
-    return [[zh(c.name, **c.name_args), en(c.name, **c.name_args), _cell(c.course_value, c),
+    return [[check_name(c).text(zh), check_name(c).text(en), _cell(c.course_value, c),
              _cell(c.course_allowable, c),
              "—" if c.unit == "1" else c.unit, verdict(c, lang)] for c in checks]
 

@@ -115,6 +115,10 @@ def document_checks(document: dict) -> list[dict]:
         key = ref.split(".")[0]
         for a in doc_cycle.get("actuators", ()):
             if a.get("key") == key:
+                if isinstance(a.get("name"), dict):            # a name the program gives
+                    from ..stages.findings import decode
+
+                    return decode(a["name"]).text("zh" if zh else "en")
                 return a.get("name_zh" if zh else "name_en") or key
         return key
 
@@ -147,8 +151,11 @@ def _describe(node: dict, path: tuple, parents: tuple, names: dict, actuator) ->
     keys = [p for p in path if isinstance(p, str)]
     if "stages" in keys and "drive" in keys:              # a transmission stage's strength check
         stage = _owner(parents, path, "stages")
+        from ..data import load_yaml
+
+        row = load_yaml("transmissions.yaml").get(stage.get("kind"), {})   # the stage's names
         group = _both(N_("stage {n}: {name_en}"), n=stage.get("index", 0) + 1,
-                      name_zh=stage.get("name_zh", ""), name_en=stage.get("name_en", ""))
+                      name_zh=row.get("name_zh", ""), name_en=row.get("name_en", ""))
     elif "shaft_designs" in keys:                         # a shaft's strength, bearing, key checks
         from .drive_report import _shaft_name
 
@@ -174,8 +181,10 @@ def _describe(node: dict, path: tuple, parents: tuple, names: dict, actuator) ->
     else:
         group = (keys[0] if keys else "", keys[0] if keys else "")
     if isinstance(node.get("name_args"), dict) and node.get("name"):     # a strength check (msgid)
-        args = node["name_args"]
-        name = (tr("zh")(node["name"], **args), tr("en")(node["name"], **args))
+        from ..stages.findings import check_name
+
+        msg = check_name(node)
+        name = (msg.text("zh"), msg.text("en"))
     elif node.get("name_zh") or node.get("name_en"):
         name = (node.get("name_zh") or node.get("name_en"), node.get("name_en") or node.get("name_zh"))
     else:

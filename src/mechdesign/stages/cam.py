@@ -366,18 +366,12 @@ def failed_findings(checks, names: dict) -> list[Finding]:
 
 
 def _where_message(c: SelfCheck):
-    """:func:`_where` as a message field: a drive shaft's name as its message (when it gives
-    the texts the check holds), else the two texts."""
-    zh, en = _where(c, "zh"), _where(c, "en")
+    """What the check is about, as a message field: a drive shaft by its message (the
+    detail's ``shaft`` index), else the detail's ``label`` (a text the data give), else
+    nothing."""
     if "shaft" in c.detail and "label" not in c.detail:
-        msg = Msg(N_("shaft {name}"), name=c.detail["shaft"])
-        if (f" ({msg.text('zh')})", f" ({msg.text('en')})") == (zh, en):
-            return Cat(" (", msg, ")")
-    return Pair(zh, en)
-
-
-def _where(c: SelfCheck, lang: str) -> str:
-    label = c.detail.get("label") or c.detail.get(f"where_{lang}")
+        return Cat(" (", Msg(N_("shaft {name}"), name=c.detail["shaft"]), ")")
+    label = c.detail.get("label")
     return f" ({label})" if label else ""
 
 
@@ -663,7 +657,9 @@ class CheckDoc:
     requirement: bool = q("",
         "a design requirement (e.g. a strength margin), not a check of the computation")
     detail: dict = q("",
-        "what the row is about (follower label, grid step [rad], cam angle [rad] …)")
+        "what the row is about (follower label, grid step [rad], cam angle [rad] …; a drive "
+        "strength margin: the stage or shaft index and its governing check as check, a msgid, "
+        "with check_args)")
 
 
 @dataclass(frozen=True)

@@ -18,7 +18,7 @@ from ..core.fields import q
 from ..data import load_csv, load_yaml
 from . import drive_elements as de, drive_strength as ds
 from ..i18n import N_, tr
-from .findings import CheckNames, Finding, Msg, Named, Pair, finding, zh_en
+from .findings import CheckNames, Finding, Msg, Named, Pair, check_name, finding, zh_en
 
 
 @dataclass(frozen=True)
@@ -27,9 +27,8 @@ class StageResult:
 
     index: int = q("1", "stage number from the motor, 0-based (drive.stages[index] of the brief)")
     type: str = q("", "coupling | belt | chain | spur | helical | worm")
-    kind: str = q("", "key into transmissions.yaml (open_spur for open gears)")
-    name_zh: str = q("", "name (Chinese)")
-    name_en: str = q("", "name (English)")
+    kind: str = q("", "key into transmissions.yaml (open_spur for open gears): its row's name_zh/"
+                  "name_en name the stage in the report's language")
     ratio_allocated: float = q("1", "what the allocation asked for (or the fixed ratio)")
     ratio: float = q("1", "the realised ratio i (whole teeth, standard pulleys)")
     fixed: bool = q("", "the brief fixes the ratio")
@@ -40,6 +39,11 @@ class StageResult:
     d2: float | None = q("m", "large pulley datum diameter", default=None)
     slip: float = q("1", "belt's elastic slip ε", default=0.0)
     design: ds.StageDesign | None = q("", "geometry, strength design and checks", default=None)
+
+    def name(self, lang) -> str:
+        """The stage's name in ``lang`` (zh, en, a variant, or a translator): the row
+        ``kind`` of data/transmissions.yaml."""
+        return Named("transmissions", self.kind).text(lang)
 
 
 @dataclass(frozen=True)
@@ -176,11 +180,6 @@ def design_ratios(stages, elements, total: float, belt_d1: dict | None = None) -
     return out
 
 
-def _names(kind: str) -> tuple[str, str]:
-    row = load_yaml("transmissions.yaml")[kind]
-    return row["name_zh"], row["name_en"]
-
-
 def design_drive(dp, machine_power: float, output_rpm: float, source: str,
                  peak_factor: float = 1.0, peak_from_shaft: int | None = None,
                  life_factor: float | None = None) -> DriveResult:
@@ -221,9 +220,8 @@ def design_drive(dp, machine_power: float, output_rpm: float, source: str,
             belt_d1 = need
         results = []
         for s, el, r in zip(stages, elements, real):
-            zh, en = _names(el.kind)
             results.append(StageResult(
-                s.index, s.type, el.kind, zh, en, r["allocated"], r["ratio"], el.ratio is not None,
+                s.index, s.type, el.kind, r["allocated"], r["ratio"], el.ratio is not None,
                 el.efficiency, r.get("z1"), r.get("z2"), r.get("d1"), r.get("d2"), r.get("slip", 0.0)))
         results, new_eff = _strength(dp, results, shafts, peak_factor, peak_from_shaft)
         changed = {k: v for k, v in new_eff.items() if abs(v - worm_eff.get(k, v)) > 1e-4}
@@ -335,8 +333,8 @@ def _strength(dp, results, shafts, peak_factor, peak_from_shaft):
 
 
 def _shafts(dp, results, shafts, peak_factor, peak_from_shaft, life_factor=None):
-    names = [(r.name_zh, r.name_en) for r in results]
-    return ds.shaft_designs(dp, [r.design for r in results], shafts, peak_factor, peak_from_shaft, names,
+    kinds = [r.kind for r in results]
+    return ds.shaft_designs(dp, [r.design for r in results], shafts, peak_factor, peak_from_shaft, kinds,
                             life_factor)
 
 
@@ -436,7 +434,7 @@ def _strength_warnings(results, shaft_designs) -> tuple[Finding, ...]:
         for c in s.checks:
             if not c.passed:
                 out.append(_failed(c, Msg(N_("shaft {name}"), name=name),
-                                   advice.get(tr("en")(c.name, **c.name_args))))
+                                   advice.get(check_name(c).text("en"))))
     return tuple(out)
 
 
@@ -474,7 +472,7 @@ def _failed(c, where: Msg, advice=None, stage: int | None = None) -> Finding:
         return finding("strength",
                        N_("{where}: {check} fails ({v} {rel} {a}{unit}) with the brief's {field}: "
                           "{advice}."), field=field, where=where,
-                       check=Msg(c.name, **c.name_args), v=v, rel=rel, a=a, unit=unit,
+                       check=check_name(c), v=v, rel=rel, a=a, unit=unit,
                        advice=en if isinstance(en, Msg) else Pair(zh, en))
     fix = Msg(N_("enlarge it or use a better material"))
     extra = {}
@@ -482,13 +480,8 @@ def _failed(c, where: Msg, advice=None, stage: int | None = None) -> Finding:
         fix = Msg(de.FIXES[c.key], i=stage)
         extra = {"field": f"drive.stages[{stage}]"}
     return finding("strength", N_("{where}: {check} fails ({v} {rel} {a}{unit}): {fix}."),
-                   where=where, check=Msg(c.name, **c.name_args), v=v, rel=rel, a=a, unit=unit,
+                   where=where, check=check_name(c), v=v, rel=rel, a=a, unit=unit,
                    fix=fix, **extra)
-
-
-def _zh_en(m: Msg) -> tuple[str, str]:
-    """(Chinese, English) of ``m``, as the self-checks' details hold them."""
-    return m.text(tr("zh")), m.text(tr("en"))
 
 
 def _sig4(x: float) -> str:
@@ -588,26 +581,21 @@ def verify_drive(d: DriveResult) -> DriveVerification:
     checks.append(SelfCheck("motor_power", 1.0 - d.power_required / d.motor.power, 0.0, sense="ge",
                             requirement=True, detail={"rated": d.motor.power, "required": d.power_required}))
     mismatches = 0
-    groups = [(*_zh_en(_stage(st)), {"stage": st.index}, st.design.checks if st.design else ())
-              for st in d.stages]
-    groups += [(*_zh_en(Msg(N_("shaft {name}"), name=s.index)), {"shaft": s.index}, s.checks)
-               for s in d.shaft_designs]
-    for zh, en, which, cs in groups:
+    groups = [({"stage": st.index}, st.design.checks if st.design else ()) for st in d.stages]
+    groups += [({"shaft": s.index}, s.checks) for s in d.shaft_designs]
+    for which, cs in groups:
         if not cs:
             continue
         margins = [_margin(c) for c in cs]
         k = int(np.argmin(margins))
         mismatches += sum(1 for c, m in zip(cs, margins) if c.passed != (m >= 0))
         checks.append(SelfCheck("margin", float(margins[k]), 0.0, sense="ge", requirement=True,
-                                detail={"where_zh": zh, "where_en": en, **which, "checks": len(cs),
-                                        **dict(zip(("check_zh", "check_en"),
-                                                   _zh_en(Msg(cs[k].name, **cs[k].name_args))))}))
+                                detail={**which, "checks": len(cs), "check": cs[k].name,
+                                        "check_args": dict(cs[k].name_args)}))
     checks.append(SelfCheck("verdicts", float(mismatches), 0.0))
     for s in d.shaft_designs:
         checks.append(SelfCheck("reactions", _statics_residual(s), DRIVE_REL_LIMIT,
-                                detail={**dict(zip(("where_zh", "where_en"),
-                                                   _zh_en(Msg(N_("shaft {name}"), name=s.index)))),
-                                        "shaft": s.index}))
+                                detail={"shaft": s.index}))
     return DriveVerification(tuple(checks), tuple(failed_findings(checks, DRIVE_CHECK_NAMES)))
 
 

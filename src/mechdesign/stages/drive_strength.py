@@ -33,8 +33,9 @@ from ..core import belts, chains, gears, strength as st
 from ..core.fields import q
 from ..data import catalogues as cat
 from ..core.errors import Join
-from ..i18n import N_, Msg, Pair, tr
+from ..i18n import N_, Msg, tr
 from . import drive_elements as de
+from .findings import Named, check_name, encode
 
 K_V, K_BETA, S_H, S_F = 1.1, 1.1, 1.0, 1.4
 A0, KEYWAY = 112.0, 0.05
@@ -76,7 +77,8 @@ class StageDesign:
 class KeyDesign:
     """One flat-key joint (GB/T 1096, form A) at a hub on the shaft."""
 
-    names: tuple[str, str] = q("", "the element on the hub, (zh, en)")
+    element: str = q("", "the element on the hub: its drive stage's kind (a row of "
+                     "transmissions.yaml, which names it)")
     d: float = q("m", "shaft diameter under the hub")
     b: float = q("m", "key width")
     h: float = q("m", "key height")
@@ -101,7 +103,8 @@ class ShaftDesign:
     d_seat: float = q("m", "hub seat between the bearings (journal + 5 mm)")
     span: float = q("m", "bearing span")
     loads: tuple[st.PointLoad, ...] = q("", "the loads of the elements it carries (strength case)")
-    names: tuple[tuple[str, str], ...] = q("", "what sits at each load, (zh, en)")
+    elements: tuple[str, ...] = q("", "what sits at each load: its drive stage's kind (a row of "
+                                  "transmissions.yaml, which names it)")
     result: st.ShaftResult = q("", "reactions and moments (bending–torsion check)")
     bearing: cat.Bearing | None = q("", "the bearing chosen (null: none in the catalogue)")
     bearing_loads: tuple[float, float] = q("N", "equivalent dynamic loads for the life (P_A, P_B)")
@@ -117,8 +120,9 @@ class ShaftDesign:
     life_reactions: tuple[float, float] = q("N", "radial bearing loads of the life case (F_rA, F_rB)",
                                             default=(0.0, 0.0))
     keys: tuple[KeyDesign, ...] = q("", "the key joints", default=())
-    steps: tuple[tuple[str, str], ...] = q("", "the design steps, each rule with its numbers (zh, en)",
-                                           default=())
+    steps: tuple[dict, ...] = q("", "the design steps, each rule with its numbers: a catalogue "
+                                "message {msgid, args} (see Finding.args), translated where shown",
+                                default=())
     advice: tuple[tuple[str, str, str, str], ...] = q(
         "", "what to change when an override fails: (check name_en, field, zh, en)", default=())
 
@@ -291,10 +295,9 @@ def stage_designs(dp, results, shafts, peak_factor, peak_from_shaft) -> tuple[li
     return out, worm_eff
 
 
-def _zh_en(msgid: str, /, **fields) -> tuple[str, str]:
-    """(Chinese, English) of a catalogue message, as the design steps and advice hold them."""
-    msg = Msg(msgid, **fields)
-    return msg.text("zh"), msg.text("en")
+def _step(msgid: str, /, **fields) -> dict:
+    """A design step: the catalogue message ``msgid`` with its fields, as data."""
+    return encode(Msg(msgid, **fields))
 
 
 def _stage_error(index: int, e):
@@ -346,12 +349,13 @@ def _life_scale(designs, peak_factor, peak_from_shaft, life_factor):
     return out
 
 
-def _place(dp, j, designs, names):
+def _place(dp, j, designs, kinds):
     """The elements on shaft j and where they sit: those inside the housing evenly between
-    the bearings, the overhung ones 80 mm outside (first left, then right)."""
-    elems = [(j - 1, designs[j - 1], False, names[j - 1])]
+    the bearings, the overhung ones 80 mm outside (first left, then right). ``kinds``: the
+    stages' kinds (transmissions.yaml keys), which name the elements."""
+    elems = [(j - 1, designs[j - 1], False, kinds[j - 1])]
     if j < len(designs):
-        elems.append((j, designs[j], True, names[j]))
+        elems.append((j, designs[j], True, kinds[j]))
     info = []
     for k, d, drv, nm in elems:
         inside, fields, width, hub_mat = _element_loads(d, drv)
@@ -448,8 +452,9 @@ def _keys(info, d_end, d_seat, T_of, allow_of, key_length=None):
         hub, L, lw, count, c = choice
         nm = i["name"]
         lab = f"{key.label}×{L * 1e3:g}" + (" ×2" if count == 2 else "")
+        element = encode(Named("transmissions", nm))     # named in the report's language
         c = replace(c, name=N_("Key {label} ({element_en})"),
-                    name_args={"label": lab, "element_zh": nm[0], "element_en": nm[1]})
+                    name_args={"label": lab, "element_zh": element, "element_en": element})
         out.append((KeyDesign(nm, dk, key.b, key.h, L, lw, hub, count, T, c),
                     i["inside"] or d_end is None))
     return out
@@ -502,7 +507,7 @@ def _evaluate(dp, j, sh, info, span, T, res, life_res, mat, dims, bearing_fixed,
                         or (life is not None and not life.passed) or (static is not None and not static.passed)))
 
 
-def shaft_designs(dp, designs, shafts, peak_factor, peak_from_shaft, names,
+def shaft_designs(dp, designs, shafts, peak_factor, peak_from_shaft, kinds,
                   life_factor: float | None = None) -> tuple[ShaftDesign, ...]:
     """Each shaft designed by the handbook's procedure (濮良贵《机械设计》 ch.15, 《机械设计课程
     设计》): d_min = A0∛(P/n) (+5 % keyway); the sections laid out from the parts (overhung end
@@ -533,7 +538,7 @@ def shaft_designs(dp, designs, shafts, peak_factor, peak_from_shaft, names,
         mat = cat.shaft_material(mat_key)
         a0 = A0 if mat_key.startswith("45") else 0.5 * (mat.A0_min + mat.A0_max)
         d_min = st.shaft_min_diameter(sh.power, sh.speed_rpm, a0, KEYWAY)
-        info, span = _place(dp, j, designs, names)
+        info, span = _place(dp, j, designs, kinds)
         loads, res = _statics(span, info, T)
         _, life_res = _statics(span, info, T * lf / boost if peak else T, scale)
         overhung = any(not i["inside"] for i in info)
@@ -606,7 +611,7 @@ def shaft_designs(dp, designs, shafts, peak_factor, peak_from_shaft, names,
         if ch is not None and not checks[0].passed:
             fld = f"drive.shafts[{ch.index}].{'end_mm' if d_end is not None else 'journal_mm'}"
             need = st.standard_diameter(d_min, series_d)
-            advice = advice + ((tr("en")(checks[0].name, **checks[0].name_args), fld, f"{fld} ≥ {_mmf(need)}", f"{fld} ≥ {_mmf(need)}"),)
+            advice = advice + ((check_name(checks[0]).text("en"), fld, f"{fld} ≥ {_mmf(need)}", f"{fld} ≥ {_mmf(need)}"),)
         if ev["life"] is not None:
             checks.append(ev["life"])
         if ev["static"] is not None:
@@ -635,7 +640,7 @@ def _kinds(ev) -> tuple[str, ...]:
     return tuple(k for k in _KIND_TEXT if k in bad)
 
 
-def _loop_text(log) -> list[tuple[str, str]]:
+def _loop_text(log) -> list[dict]:
     """The upsizing steps, runs of the same section merged: from → to, the number of 5 mm /
     standard steps and the checks that failed on the way."""
     out, k = [], 0
@@ -646,16 +651,16 @@ def _loop_text(log) -> list[tuple[str, str]]:
             j += 1
         first, last = log[k], log[j]
         kinds = [x for x in _KIND_TEXT if any(x in e[3] for e in log[k:j + 1])]
-        why = Pair(*(t.pgettext("list", ", ").join(t(_KIND_TEXT[x]) for x in kinds) for t in (tr("zh"), tr("en"))))
+        why = Join(Msg.pgettext("list", ", "), [Msg(_KIND_TEXT[x]) for x in kinds])
         n = j - k + 1
         if kind == "end":
-            out.append(_zh_en(N_("overhung end enlarged: {a} → {b} mm ({n} standard sizes; the smaller ones "
+            out.append(_step(N_("overhung end enlarged: {a} → {b} mm ({n} standard sizes; the smaller ones "
                                  "fail: {why})"), a=_mmf(first[1]), b=_mmf(last[2]), n=n, why=why))
         else:
             a, b = first[1], last[2]
-            out.append(_zh_en(N_("journal/seat enlarged: {a0}/{a1} → {b0}/{b1} mm ({n} steps of 5 mm; the "
+            out.append(_step(N_("journal/seat enlarged: {a0}/{a1} → {b0}/{b1} mm ({n} steps of 5 mm; the "
                                  "smaller ones fail: {why})"), a0=_mmf(a[0]), a1=_mmf(a[1]), b0=_mmf(b[0]),
-                              b1=_mmf(b[1]), n=n, why=why))
+                             b1=_mmf(b[1]), n=n, why=why))
         k = j + 1
     return out
 
@@ -686,7 +691,7 @@ def _advice(ch, ev, dims, free_ev, free_dims):
                           "two keys)"), field=field) if ch.key_length else f"{field} ≥ {_mmf(fs)}")
         # the English as a message (a str: results.json holds its text), so that a finding can
         # hold the message, not the two texts
-        out.append((tr("en")(c.name, **c.name_args), field, fix.text("zh") if isinstance(fix, Msg) else fix, fix))
+        out.append((check_name(c).text("en"), field, fix.text("zh") if isinstance(fix, Msg) else fix, fix))
     return tuple(out)
 
 
@@ -709,24 +714,25 @@ def _sig(x: float, digits: int) -> str:
 
 
 def _steps(sh, mat, a0, d_min, dims, shoulder, T, peak, peak_factor, lf, ev, span, dp):
-    """The design steps of one shaft, each rule with its formula and numbers (zh, en)."""
+    """The design steps of one shaft, each rule with its formula and numbers (messages as data)."""
     d_end, dj, ds = dims
     P, n = sh.power / 1e3, sh.speed_rpm
     raw = a0 * (P / n) ** (1 / 3)
     dmin = (f"$d_{{min}} = A_0\\sqrt[3]{{P/n}}(1 + 5\\%) = {a0:g}\\sqrt[3]{{{_sig(P, 4)}/{_sig(n, 4)}}} \\times 1.05 = "
             f"{raw * 1.05:.2f}$")
-    out = [_zh_en(N_("material {material_en}, {sigma} = {allow} MPa (table 15-1); {dmin} mm (table 15-3, "
-                     "+5 % for one keyway)"), material_zh=mat.name_zh, material_en=mat.name_en,
+    material = Named("materials.shaft", mat.key)      # named in the report's language
+    out = [_step(N_("material {material_en}, {sigma} = {allow} MPa (table 15-1); {dmin} mm (table 15-3, "
+                     "+5 % for one keyway)"), material_zh=material, material_en=material,
                   sigma="$[\\sigma_{-1b}]$", allow=f"{mat.sigma_minus1b_allow / 1e6:g}", dmin=dmin)]
     if peak:
-        out.append(_zh_en(N_("after the flywheel the shaft carries the machine's peak torque: the strength checks "
+        out.append(_step(N_("after the flywheel the shaft carries the machine's peak torque: the strength checks "
                              "use {torque} N·m (peak/mean); the bearing life, a fatigue quantity, takes the "
                              "cycle's equivalent load (cube-mean torque = {lf} × the mean), the static strength "
                              "the peak"),
                           torque=f"$T = {_sig(peak_factor, 3)} \\times {_sig(sh.torque, 4)} = {_sig(T, 4)}$",
                           lf=_sig(lf, 3)))
     else:
-        out.append(_zh_en(N_("design torque T = 9549 P/n = {T} N·m (bearing life: the same load × $f_p$ = {fp})"),
+        out.append(_step(N_("design torque T = 9549 P/n = {T} N·m (bearing life: the same load × $f_p$ = {fp})"),
                           T=_sig(T, 4), fp=f"{FP:g}"))
     head, out = out, []
     lay = []
@@ -734,23 +740,23 @@ def _steps(sh, mat, a0, d_min, dims, shoulder, T, peak, peak_factor, lf, ev, spa
         lay.append(Msg(N_("overhung end {d} (the standard size ≥ {dmin})"), d=_mmf(d_end), dmin="$d_{min}$"))
     lay += [Msg(N_("journals {d} (bearing bore, a multiple of 5)"), d=_mmf(dj)),
             Msg(N_("seat {d} (journal + 5)"), d=_mmf(ds)), Msg(N_("collar {d} (h ≈ 0.07 d)"), d=_mmf(shoulder))]
-    sections = Pair(*(tr(lang).pgettext("separator", ", ").join(m.text(lang) for m in lay) for lang in ("zh", "en")))
-    out.append(_zh_en(N_("result, the sections (mm): {sections}; bearing span {span} mm"), sections=sections,
+    sections = Join(Msg.pgettext("separator", ", "), lay)
+    out.append(_step(N_("result, the sections (mm): {sections}; bearing span {span} mm"), sections=sections,
                       span=_mmf(span, 0)))
     b = ev["bearing"]
     if b is not None:
         conf = "" if cat.bearing_confirmed(b.designation) else \
             Msg(N_(" (rating transcribed from the handbook table, not confirmed against a public copy)"))
-        out.append(_zh_en(N_("bearings: at the journal, the lightest series whose life reaches {hours} h → "
+        out.append(_step(N_("bearings: at the journal, the lightest series whose life reaches {hours} h → "
                              "{designation}, $C_r$ = {cr} kN, {c0r} = {c0} kN{conf}"),
                           hours=_text_num(dp.service_hours), designation=b.designation, cr=f"{b.Cr / 1e3:g}",
                           c0r="$C_{0r}$", c0=f"{b.C0r / 1e3:g}", conf=conf))
     if ev["keys"]:
         keys = [Msg(N_("{name_en}: d = {d}, key {b}×{h}, hub {hub}, L = {L}, two keys at 180°") if k.count == 2
-                    else N_("{name_en}: d = {d}, key {b}×{h}, hub {hub}, L = {L}"), name_zh=k.names[0],
-                    name_en=k.names[1], d=_mmf(k.d), b=_mmf(k.b), h=_mmf(k.h), hub=_mmf(k.hub, 0), L=_mmf(k.L))
+                    else N_("{name_en}: d = {d}, key {b}×{h}, hub {hub}, L = {L}"),
+                    name_zh=Named("transmissions", k.element), name_en=Named("transmissions", k.element), d=_mmf(k.d), b=_mmf(k.b), h=_mmf(k.h), hub=_mmf(k.hub, 0), L=_mmf(k.L))
                 for k in ev["keys"]]
-        listed = Pair(*(tr(lang).pgettext("list", "; ").join(m.text(lang) for m in keys) for lang in ("zh", "en")))
-        out.append(_zh_en(N_("keys (GB/T 1096, form A, L ≤ hub − 8 mm; a longer hub up to 1.5 d, then two keys "
+        listed = Join(Msg.pgettext("list", "; "), keys)
+        out.append(_step(N_("keys (GB/T 1096, form A, L ≤ hub − 8 mm; a longer hub up to 1.5 d, then two keys "
                              "when one fails): {keys}"), keys=listed))
     return head, out

@@ -75,7 +75,8 @@ class Finding:
 
 class Named:
     """A name a data table gives in both languages (``name_zh``/``name_en`` of a row of
-    ``data/<table>.yaml``), stored as the table and the row's key."""
+    ``data/<table>.yaml``; ``<file>.<section>`` for a row of one section of a file, e.g.
+    ``materials.shaft``), stored as the table and the row's key."""
 
     __slots__ = ("table", "key")
 
@@ -86,7 +87,9 @@ class Named:
         from ..data import load_yaml
 
         lang = getattr(lang, "lang", lang)
-        row = load_yaml(f"{self.table}.yaml")[self.key]
+        file, _, section = self.table.partition(".")
+        rows = load_yaml(f"{file}.yaml")
+        row = (rows[section] if section else rows)[self.key]
         return row["name_zh"] if base(lang) == "zh" else row["name_en"]
 
     def __reduce__(self):
@@ -169,6 +172,16 @@ def decode(value):
     if "en" in value:
         return Pair(decode(value.get("zh")), decode(value["en"]))
     return value
+
+
+def check_name(name: str, args: Mapping | None = None) -> Msg:
+    """A strength check's name as a message: its msgid ``name`` (core.strength.Check.name)
+    with its fields ``args`` (``name_args``: texts, or a name from a data table stored as
+    ``{table, key}``); pass a Check, or a check's plain dict from results.json, alone."""
+    if not isinstance(name, str):
+        name, args = ((name["name"], name.get("name_args")) if isinstance(name, Mapping)
+                      else (name.name, name.name_args))
+    return Msg(name, **{k: decode(v) for k, v in (args or {}).items()})
 
 
 def en_zh(msgid: str, /, context: str | None = None, **fields) -> tuple[str, str]:

@@ -66,6 +66,18 @@ class Resistance:
     active: tuple[float, float] | None = None
 
 
+def link_name(names: dict, key: str, lang) -> str | None:
+    """A link's (or group's) name from ``LinkageModel.names`` (``group_labels``) in ``lang``:
+    the machine's (a catalogue message, translated here) or the brief's (name_zh, name_en);
+    None when it has none."""
+    value = (names or {}).get(key)
+    if value is None:
+        return None
+    if isinstance(value, Msg):
+        return value.text(lang)
+    return value[0 if lang == "zh" else 1]
+
+
 @dataclass(frozen=True)
 class LinkageModel:
     """Everything the linkage stages need, SI units. ``crank_omega`` is signed, CCW +."""
@@ -83,9 +95,11 @@ class LinkageModel:
     #                                             the textbook positions (primed labels)
     pressure_angle_limit: float | None = None   # [rad], checked over the working stroke
     transmission_angle_min: float | None = None  # [rad], checked over the whole cycle
-    names: dict = field(default_factory=dict)    # link id → (name_zh, name_en), optional
-    group_labels: dict = field(default_factory=dict)  # group name → (name_zh, name_en) shown
-    #                                                   in the reports, optional
+    names: dict = field(default_factory=dict)    # link id → its name, optional: the machine's
+    #                                              a catalogue message (Msg), the brief's a
+    #                                              (name_zh, name_en) pair; see link_name
+    group_labels: dict = field(default_factory=dict)  # group name → its name shown in the
+    #                                                   reports, optional, the same way
     advice: dict = field(default_factory=dict)   # "pressure"/"transmission" → a Msg (or (zh, en)): the
     #                                              brief fields to change, added to the finding;
     #                                              "time_ratio" → (zh, en, field): K < 1 (the

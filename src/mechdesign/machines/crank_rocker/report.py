@@ -13,7 +13,7 @@ from ...render.fmt import e as fe
 from ...render.fmt import verdict
 from ...render.fmt import f, md_meta, md_text, mpl_text, time_ratio
 from ...render.labels import LabelTable, mpl_point, subscripted
-from ...i18n import N_, tr
+from ...i18n import N_, Msg, tr
 
 DEG = 180.0 / np.pi
 MM = 1e3
@@ -287,7 +287,10 @@ def _cosines(d) -> tuple[float, float]:
 
 
 def _name(label: str, lang: str) -> str:
-    """'中文 / english' labels: the part for the report's language."""
+    """A design's name in the report's language: the program's (a catalogue message), or the
+    part of the brief's '中文 / english' label."""
+    if isinstance(label, Msg):
+        return label.text(lang)
     if " / " in label:
         zh, en = label.split(" / ", 1)
         return zh if lang == "zh" else en

@@ -16,10 +16,10 @@ import numpy as np
 from ...core import fourbar as fb
 from ...core.extremes import fminbound, grid_roots, refine_extreme
 from ...core.fields import q
-from ...i18n import N_
+from ...i18n import N_, Msg
 from ...core.mechanism import RRP, RRR, Crank, Mechanism
 from ...pipeline import Stage
-from ...stages.findings import Finding, Pair, finding
+from ...stages.findings import Finding, Pair, encode, finding
 from ...stages.linkage import LinkageDocument
 
 DEG = 180.0 / np.pi
@@ -31,7 +31,7 @@ DEG = 180.0 / np.pi
 class Design:
     """A crank-rocker placed in the construction's coordinates (D at the origin) [m]."""
 
-    label: str
+    label: str                     # the brief's name ('zh / en'), or the program's as a Msg
     design: fb.FourBar
     a_pivot: complex               # crank pivot A
     position: float | None         # arc parameter of A (None for a compared design)
@@ -136,19 +136,20 @@ def _describe(label, design, a_pivot, p, gamma_allowed) -> Design:
     gmin, gmax = fb.transmission_angle_extremes(design)
     theta, swing = fb.crank_rocker_extremes(design) if ok and kind == "crank-rocker" else (np.nan, np.nan)
     warnings = []
-    zh, en = label.split(" / ", 1) if " / " in label else (label, label)
+    # the program's name (a catalogue message) or the brief's 'zh / en' text
+    name = label if isinstance(label, Msg) else Pair(*(label.split(" / ", 1) if " / " in label else (label, label)))
     if not (ok and kind == "crank-rocker"):
         warnings.append(finding(
             "grashof", N_("{label}: the lengths fail Grashof's crank condition ({kind}; {sums}); the crank "
                           "cannot turn fully: the crank must be the shortest link and shortest + longest ≤ "
-                          "the other two."), label=Pair(zh, en), kind=kind, sums=fb.grashof_sums_message(design)))
+                          "the other two."), label=name, kind=kind, sums=fb.grashof_sums_message(design)))
     if gmin < gamma_allowed:
         warnings.append(finding(
             "transmission_angle",
             N_("{label}: the minimum transmission angle γmin = {g:.2f}° is below the allowed "
                "[γ] = {allowed:.0f}°; a smaller swing ψ (rocker_swing_deg) or time ratio "
                "K (time_ratio_K or extreme_angle_deg) raises γmin (see the design chart)."),
-            label=Pair(zh, en), g=gmin * DEG, allowed=gamma_allowed * DEG))
+            label=name, g=gmin * DEG, allowed=gamma_allowed * DEG))
     return Design(label, design, a_pivot, p, gmin, gmax, theta, swing, kind, warnings)
 
 
@@ -156,7 +157,7 @@ def optimum_stage(r: dict) -> OptimumResult:
     p = r["params"]
     cons = fb.circle_construction_theta(p.theta, p.swing, p.rocker)
     pos, _ = fb.optimal_position_theta(p.theta, p.swing, p.rocker)
-    best = _place(_both(N_("optimum")), cons, pos, p.gamma_allowed)
+    best = _place(Msg(N_("optimum")), cons, pos, p.gamma_allowed)
     try:
         far = fb.optimal_position_theta(p.theta, p.swing, p.rocker, side=-1)[1]
     except fb.SynthesisError:
@@ -168,7 +169,7 @@ def textbook_stage(r: dict) -> Design:
     p = r["params"]
     cons = r["optimum"].construction
     pos = fb.position_for_frame(cons, p.frame)
-    return _place(_both(N_("given frame")), cons, pos, p.gamma_allowed)
+    return _place(Msg(N_("given frame")), cons, pos, p.gamma_allowed)
 
 
 def given_stage(r: dict) -> Design:
@@ -188,7 +189,7 @@ def given_stage(r: dict) -> Design:
         pos = fb.position_for_frame(cons, d)
     except fb.SynthesisError:
         pos = None
-    return _describe(_both(N_("given dimensions")), g, complex(pivot), pos, p.gamma_allowed)
+    return _describe(Msg(N_("given dimensions")), g, complex(pivot), pos, p.gamma_allowed)
 
 
 def slider_stage(r: dict) -> SliderResult:
@@ -488,8 +489,7 @@ def linkage_model(r: dict):
     best = opt.best
     branch = folded_branch(best.design, best.a_pivot, opt.construction.c1)
     mech = _four_bar_mechanism(best.design, best.a_pivot, branch, p.omega)
-    zh = tr("zh")
-    names = {k: (zh(v), v) for k, v in _LINK_NAMES.items()}
+    names = {k: Msg(v) for k, v in _LINK_NAMES.items()}      # translated where shown
     model = lk.LinkageModel(mech, p.omega, lk.Output("link", "4", 0.0, +1),
                             grid_points=p.grid_points,
                             transmission_angle_min=p.gamma_allowed, names=names)
@@ -560,7 +560,8 @@ class ConstructionDoc:
 class DesignDoc:
     """A crank-rocker (closed forms)."""
 
-    label: str = q("", "'zh / en' name of the design")
+    label: str | dict = q("", "the design's name: the brief's text ('zh / en'), or the program's as a "
+                          "catalogue message {msgid} (translated where shown)")
     crank: float = q("m", "L_AB (a)")
     coupler: float = q("m", "L_BC (b)")
     rocker: float = q("m", "L_CD (c)")
@@ -589,7 +590,7 @@ class ChartDoc:
 class SimulationDoc:
     """A design simulated over one revolution (crank + RRR group)."""
 
-    label: str = q("", "the design's name")
+    label: str | dict = q("", "the design's name (as DesignDoc.label)")
     K: float = q("1", "simulated K")
     theta: float = q("rad", "simulated θ")
     swing: float = q("rad", "simulated ψ")
@@ -657,13 +658,13 @@ class CrankRockerResults:
 
 
 def _design_doc(d: Design) -> DesignDoc:
-    return DesignDoc(d.label, d.design.crank, d.design.coupler, d.design.rocker, d.design.frame,
+    return DesignDoc(encode(d.label), d.design.crank, d.design.coupler, d.design.rocker, d.design.frame,
                      complex(d.a_pivot), d.position, d.gamma_min, d.gamma_max, d.theta, d.swing,
                      d.grashof, tuple(w.code for w in d.warnings))
 
 
 def _sim_doc(s: Simulation) -> SimulationDoc:
-    return SimulationDoc(s.label, s.K, s.theta, s.swing, s.gamma_min, s.phi_gamma_min,
+    return SimulationDoc(encode(s.label), s.K, s.theta, s.swing, s.gamma_min, s.phi_gamma_min,
                          tuple(s.phi_extremes), s.closure)
 
 

@@ -212,9 +212,9 @@ def build_press(d: ToggleDesign, p: DieCutterParams) -> LinkageModel:
             bodies.append(Body(link, mass, name, mass * length ** 2 / 12.0))
     H, t = g.stroke, p.pressing_travel
     cut = Resistance("6", "D", np.pi / 2, p.cutting_force, 0.0, (H - t, H))
-    names = {"2": zh_en.pgettext("link", "crank"), "3": zh_en.pgettext("link", "coupler AB"),
-             "4": zh_en.pgettext("link", "toggle CB"), "5": zh_en.pgettext("link", "toggle BD"),
-             "6": zh_en.pgettext("link", "platen")}
+    names = {"2": Msg.pgettext("link", "crank"), "3": Msg.pgettext("link", "coupler AB"),
+             "4": Msg.pgettext("link", "toggle CB"), "5": Msg.pgettext("link", "toggle BD"),
+             "6": Msg.pgettext("link", "platen")}
     return LinkageModel(
         mechanism=m, crank_omega=p.crank_omega, output=Output("point", "D", np.pi / 2, 1),
         bodies=tuple(bodies), resistances=(cut,), grid_points=p.grid_points,
@@ -486,12 +486,12 @@ def feed(amp: Amplification, p: DieCutterParams) -> Feed:
                 float(radius * jump.omega2), tuple(notes), intermittent_curves(g))
 
 
-def _gripper_labels() -> dict[str, tuple[str, str]]:
-    """The grippers' phases by cam state, (zh, en)."""
-    return {"rise": zh_en.pgettext("cycle phase", "opening"),
-            "dwell_high": zh_en.pgettext("cycle phase", "held open"),
-            "return": zh_en.pgettext("cycle phase", "closing"),
-            "dwell_low": zh_en.pgettext("cycle phase", "closed")}
+def _gripper_labels() -> dict[str, Msg]:
+    """The grippers' phases by cam state (catalogue messages)."""
+    return {"rise": Msg.pgettext("cycle phase", "opening"),
+            "dwell_high": Msg.pgettext("cycle phase", "held open"),
+            "return": Msg.pgettext("cycle phase", "closing"),
+            "dwell_low": Msg.pgettext("cycle phase", "closed")}
 
 
 @dataclass(frozen=True)
@@ -507,26 +507,26 @@ class CycleResult:
 
 def platen_actuator(t: PlatenTiming) -> cy.Actuator:
     """The platen's phases from its simulated level crossings."""
-    return cy.make_actuator("platen", *zh_en.pgettext("cycle", "lower platen"), t.clear_up, [
-        ("rise", t.press_up - t.clear_up, *zh_en.pgettext("cycle phase", "rising")),
-        ("dwell_high", t.press_down - t.press_up, *zh_en.pgettext("cycle phase", "die cutting")),
-        ("return", t.clear_down - t.press_down, *zh_en.pgettext("cycle phase", "falling")),
-        ("dwell_low", t.clear_up + TWO_PI - t.clear_down, *zh_en.pgettext("cycle phase", "clear"))])
+    return cy.make_actuator("platen", Msg.pgettext("cycle", "lower platen"), "", t.clear_up, [
+        ("rise", t.press_up - t.clear_up, Msg.pgettext("cycle phase", "rising")),
+        ("dwell_high", t.press_down - t.press_up, Msg.pgettext("cycle phase", "die cutting")),
+        ("return", t.clear_down - t.press_down, Msg.pgettext("cycle phase", "falling")),
+        ("dwell_low", t.clear_up + TWO_PI - t.clear_down, Msg.pgettext("cycle phase", "clear"))])
 
 
 def gripper_actuator(programme, start: float) -> cy.Actuator:
-    name = zh_en.pgettext("cycle", "grippers")
-    act = cy.actuator_from_cam_programme("gripper", *name, programme, start)
+    name = Msg.pgettext("cycle", "grippers")
+    act = cy.actuator_from_cam_programme("gripper", name, "", programme, start)
     labels = _gripper_labels()
-    return cy.make_actuator("gripper", *name, start,
-                            [(ph.state, ph.span) + labels.get(ph.state, ("", ""))
+    return cy.make_actuator("gripper", name, "", start,
+                            [(ph.state, ph.span) + ((labels[ph.state],) if ph.state in labels else ())
                              for ph in act.phases])
 
 
 def chain_actuator(g) -> cy.Actuator:
-    return cy.make_actuator("chain", *zh_en.pgettext("cycle", "chain feed"), g.motion_start,
-                            [("move", g.motion_angle, *zh_en.pgettext("cycle phase", "feed")),
-                             ("dwell", g.dwell_angle, *zh_en.pgettext("cycle phase", "dwell"))])
+    return cy.make_actuator("chain", Msg.pgettext("cycle", "chain feed"), "", g.motion_start,
+                            [("move", g.motion_angle, Msg.pgettext("cycle phase", "feed")),
+                             ("dwell", g.dwell_angle, Msg.pgettext("cycle phase", "dwell"))])
 
 
 def timing_constraints(margin: float) -> list[cy.Constraint]:

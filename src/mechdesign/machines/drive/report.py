@@ -4,6 +4,7 @@ from __future__ import annotations
 from pathlib import Path
 import numpy as np
 from ...i18n import N_, tr
+from ...stages.findings import check_name
 from ...render.fmt import e, f, md_meta, md_text, sig
 from ...render.fmt import verdict
 from ...render.drive_report import _shaft_name, drive_context
@@ -67,9 +68,9 @@ def verification_context(d, v, lang: str) -> dict:
                 where = _shaft_name(k.detail["shaft"], last, _.zh)
             else:
                 st = d.stages[k.detail["stage"]]
-                where = _("stage {index} ({name_en})", index=st.index + 1, name_en=st.name_en,
-                          name_zh=st.name_zh)
-            check = k.detail["check_zh"] if _.zh else k.detail["check_en"]
+                where = _("stage {index} ({name_en})", index=st.index + 1, name_en=st.name("en"),
+                          name_zh=st.name("zh"))
+            check = check_name(k.detail["check"], k.detail["check_args"]).text(_)   # its governing check
             item = _("{where}: {name} ({detail} checks)", where=where, name=name,
                       detail=k.detail['checks'])
             rows.append([item, _("{value}% ({check})", value=f(k.value * 100, 1), check=check),

@@ -52,11 +52,11 @@ CRANK, COUPLER, ROCKER, ROD, SLIDER = "1", "2", "3", "4", "5"
 TWO_PI = 2.0 * np.pi
 
 
-def link_names() -> dict[str, tuple[str, str]]:
-    """The links' names, (zh, en) by link."""
-    return {CRANK: zh_en.pgettext("link", "crank O1A"), COUPLER: zh_en.pgettext("link", "coupler AB"),
-            ROCKER: zh_en.pgettext("link", "rocker DBC"), ROD: zh_en.pgettext("link", "link CE"),
-            SLIDER: zh_en.pgettext("link", "pusher slider E")}
+def link_names() -> dict:
+    """The links' names by link (catalogue messages)."""
+    return {CRANK: Msg.pgettext("link", "crank O1A"), COUPLER: Msg.pgettext("link", "coupler AB"),
+            ROCKER: Msg.pgettext("link", "rocker DBC"), ROD: Msg.pgettext("link", "link CE"),
+            SLIDER: Msg.pgettext("link", "pusher slider E")}
 
 # The original report's printed numbers (section 4): a, b, the chord B1B2 it used, its frame O1O2
 # and the rocker length 1150 mm its second equation uses.

@@ -33,7 +33,7 @@ from ...core.mechanism import RPR, RRP, RRR, Crank, LinkPoint, Mechanism
 from ...pipeline import Stage
 from ...stages.cam import cam_document, cam_stage, design as design_cam
 from ...i18n import N_, tr
-from ...stages.findings import Msg, Pair, finding, zh_en
+from ...stages.findings import Cat, Msg, Pair, finding, zh_en
 from ...core.cycle import CycleDocument
 from ...core.fields import q
 from ...stages.linkage import LinkageDocument, closure_residual, linkage_document, linkage_stages
@@ -548,13 +548,15 @@ def _phase_error(act: cy.Actuator, phi: np.ndarray, s: np.ndarray, ds: np.ndarra
     return float(np.max(err) / stroke)
 
 
-def _requirement(c: cy.Constraint, lang: str) -> str:
-    if c.text(lang):
-        return c.text(lang)
-    _ = tr(lang)
-    kind = {"before": _.pgettext("timing requirement", "before"),
-            "during": _.pgettext("timing requirement", "during")}[c.kind]
-    return f"{c.a} {kind} {c.b}"
+def _requirement(c: cy.Constraint):
+    """A timing requirement as a finding's field: the brief's text (both languages, the
+    user's), else "a before b" with the catalogue's word for the kind."""
+    kind = {"before": Msg.pgettext("timing requirement", "before"),
+            "during": Msg.pgettext("timing requirement", "during")}[c.kind]
+    said = Cat(str(c.a), " ", kind, " ", str(c.b))
+    if not (c.text("zh") or c.text("en")):
+        return said
+    return Pair(c.text("zh") or said.text("zh"), c.text("en") or said.text("en"))
 
 
 def cycle(p: LockbeamParams, r: dict) -> CycleResult:
@@ -602,7 +604,7 @@ def cycle(p: LockbeamParams, r: dict) -> CycleResult:
             warnings.append(finding(
                 "cycle", N_("the motion cycle diagram misses a timing requirement: {req} (short by "
                             "{short:.2f}°)"),
-                req=Pair(_requirement(chk.constraint, "zh"), _requirement(chk.constraint, "en")),
+                req=_requirement(chk.constraint),
                 short=-chk.slack * DEG))
     span_sim = k.working_span
     if abs(rise.span - span_sim) > np.radians(0.5):

@@ -171,11 +171,11 @@ def model(s: PressSynthesis, p: PressParams) -> lk.LinkageModel:
         pressure_angle_limit=p.pressure_angle_max, transmission_angle_min=p.transmission_angle_min,
         advice={"pressure": Msg(N_("brief fields {fields}"), fields=fields),
                 "transmission": Msg(N_("brief fields {fields}"), fields=pivots)},
-        names={"1": zh_en.pgettext("link", "crank AB"), "2": zh_en.pgettext("link", "coupler BC"),
-               "3": zh_en.pgettext("link", "rocker DE"), "4": zh_en.pgettext("link", "rod EF"),
-               "5": zh_en.pgettext("link: press", "ram")},
-        group_labels={"coupler–rocker (RRR)": zh_en.pgettext("link", "coupler–rocker (RRR)"),
-                      "rod–ram (RRP)": zh_en.pgettext("link", "rod–ram (RRP)")})
+        names={"1": Msg.pgettext("link", "crank AB"), "2": Msg.pgettext("link", "coupler BC"),
+               "3": Msg.pgettext("link", "rocker DE"), "4": Msg.pgettext("link", "rod EF"),
+               "5": Msg.pgettext("link: press", "ram")},
+        group_labels={"coupler–rocker (RRR)": Msg.pgettext("link", "coupler–rocker (RRR)"),
+                      "rod–ram (RRP)": Msg.pgettext("link", "rod–ram (RRP)")})
 
 
 def _synthesis(r: dict):

@@ -30,7 +30,7 @@ from ...stages.gear import GearDocument, gear_document
 from ...stages.positions import Positions
 from ...core.fields import q
 from ...stages import titles
-from ...stages.findings import zh_en
+from ...stages.findings import Msg
 
 FRAME = "7"
 
@@ -133,11 +133,11 @@ def model(syn: Synthesis, p: ShaperParams) -> lk.LinkageModel:
                               RimSpec(p.rim_diameter, p.rim_height_to_width, p.specific_weight,
                                      "flywheel.rim_diameter_mm")),
         special_crank_angles=(np.pi / 2, 3 * np.pi / 2),
-        names={"2": zh_en.pgettext("link", "crank O2A"), "3": zh_en.pgettext("link", "slider A"),
-               "4": zh_en.pgettext("link", "guide bar O3B"), "5": zh_en.pgettext("link", "rod BF"),
-               "6": zh_en.pgettext("link: shaper", "ram")},
-        group_labels={"guide bar (RPR)": zh_en.pgettext("link", "guide bar (RPR)"),
-                      "ram (RRP)": zh_en.pgettext("link: shaper", "ram (RRP)")})
+        names={"2": Msg.pgettext("link", "crank O2A"), "3": Msg.pgettext("link", "slider A"),
+               "4": Msg.pgettext("link", "guide bar O3B"), "5": Msg.pgettext("link", "rod BF"),
+               "6": Msg.pgettext("link: shaper", "ram")},
+        group_labels={"guide bar (RPR)": Msg.pgettext("link", "guide bar (RPR)"),
+                      "ram (RRP)": Msg.pgettext("link: shaper", "ram (RRP)")})
 
 
 def motion(m: lk.LinkageModel, syn: Synthesis, p: ShaperParams, requests=None):

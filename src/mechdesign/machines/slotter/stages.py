@@ -25,7 +25,7 @@ from .brief import SlotterParams
 from ...stages.cam import CamDocument
 from ...stages.gear import GearDocument
 from ...stages import titles
-from ...stages.findings import zh_en
+from ...stages.findings import Msg
 
 FRAME = "7"
 DOWN = -np.pi / 2
@@ -72,11 +72,11 @@ def model(syn: Synthesis, p: SlotterParams) -> lk.LinkageModel:
                               RimSpec(p.rim_diameter, p.rim_height_to_width, p.specific_weight,
                                      "flywheel.rim_diameter_mm")),
         special_crank_angles=(0.0, np.pi),   # the crank level with O2O3: the bar at its mid-swing
-        names={"2": zh_en.pgettext("link", "crank O2A"), "3": zh_en.pgettext("link", "slider A"),
-               "4": zh_en.pgettext("link", "guide bar O3B"), "5": zh_en.pgettext("link", "rod BC"),
-               "6": zh_en.pgettext("link: slotter", "ram")},
-        group_labels={"guide bar (RPR)": zh_en.pgettext("link", "guide bar (RPR)"),
-                      "ram (RRP)": zh_en.pgettext("link: slotter", "ram (RRP)")})
+        names={"2": Msg.pgettext("link", "crank O2A"), "3": Msg.pgettext("link", "slider A"),
+               "4": Msg.pgettext("link", "guide bar O3B"), "5": Msg.pgettext("link", "rod BC"),
+               "6": Msg.pgettext("link: slotter", "ram")},
+        group_labels={"guide bar (RPR)": Msg.pgettext("link", "guide bar (RPR)"),
+                      "ram (RRP)": Msg.pgettext("link: slotter", "ram (RRP)")})
 
 
 def _synthesis(r: dict):
