@@ -706,10 +706,12 @@ def _text_num(x: float) -> str:
 
 
 def _sig(x: float, digits: int) -> str:
-    """``digits`` significant digits in fixed-point notation (12807 → '12810', not 1.281e+04)."""
+    """``digits`` significant digits in fixed-point notation, never fewer than the integer
+    digits (12807.6 → '12808', not '12810' or 1.281e+04: the report's number rule)."""
     if x == 0 or x != x:
         return "0"
     e = math.floor(math.log10(abs(x)))
+    digits = max(digits, e + 1)
     return f"{round(x, digits - 1 - e):.{max(digits - 1 - e, 0)}f}"
 
 
@@ -729,7 +731,7 @@ def _steps(sh, mat, a0, d_min, dims, shoulder, T, peak, peak_factor, lf, ev, spa
                              "use {torque} N·m (peak/mean); the bearing life, a fatigue quantity, takes the "
                              "cycle's equivalent load (cube-mean torque = {lf} × the mean), the static strength "
                              "the peak"),
-                          torque=f"$T = {_sig(peak_factor, 3)} \\times {_sig(sh.torque, 4)} = {_sig(T, 4)}$",
+                          torque=f"$T = {_sig(peak_factor, 4)} \\times {_sig(sh.torque, 4)} = {_sig(T, 4)}$",
                           lf=_sig(lf, 3)))
     else:
         out.append(_step(N_("design torque T = 9549 P/n = {T} N·m (bearing life: the same load × $f_p$ = {fp})"),
