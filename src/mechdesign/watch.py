@@ -10,9 +10,12 @@ Every run happens in a child forked from this process (Linux): the imports, done
 before the first run, are inherited, and this process never runs typst itself, so each run
 may fork its figure helpers as ``mechdesign run`` does (typst's threads do not survive a
 fork; see render/parallel.py): typst runs in one compiling process started before the
-first run and kept warm (render/pdf.py ``start_service``), so a re-run's PDF lays out only
-what changed, and every figure and sheet unchanged by the edit is copied from the render
-cache (render/cache.py). Off Linux the runs happen in this process. A run writes
+first run and kept warm (render/pdf.py ``start_service``), so a re-run's PDF re-uses the
+layout of what the edit did not move (an edit that moves page content, or the title and
+the student, which every page's set rules hold, is laid out whole again), and every figure
+and sheet unchanged by the edit is copied from the render cache (render/cache.py). The
+modules a run imported are imported here after it, so the next run inherits them too.
+Off Linux the runs happen in this process. A run writes
 exactly as ``run`` does (staging folder, moved into place when complete: a failed or
 interrupted run leaves the previous report as it was). After a run the watcher prints the
 headline results (the machine's summary rows) that changed, old → new; an invalid brief or an
