@@ -119,7 +119,7 @@ def _phase_axis(ax, working_span_deg: float, positions=None):
         ax.plot(ph, values, "o", ms=3, color="C3", zorder=3)
 
 
-def _staggered(phases_deg, gap_deg: float = 12.0) -> list[int]:
+def _staggered(phases_deg, gap_deg: float = 9.0) -> list[int]:
     """The indices of the position labels to lift one row on the top axis: a label closer
     than ``gap_deg`` to the one before it on the lower row, so that "4′" and "5" do not print
     into each other as "4′5" (issue 19)."""
