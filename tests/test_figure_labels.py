@@ -104,3 +104,155 @@ def test_die_cutter_skeleton_names_are_off_the_links(example_results, monkeypatc
     assert {t.get_text() for t in names} >= {"B", "D", "C", r"$\mathregular{O_1}$"}
     clashes = LL.overlaps(ax, names, _obstacles(ax, 1.5))
     assert not clashes, clashes
+
+
+# ---- the polygons of the graphical method (issue 19 point 6, page review of session 30):
+# shaper Fig. 6, slotter Fig. 7, press Fig. 7 (velocity-tip labels "b", "f(P)", "b₅" on one
+# spot, "b′₅/b′" overprinted), slotter Fig. 9 (a force polygon on one line, its labels stacked)
+
+_KIN = [("shaper", "linkage_graph_4_kin.png"), ("shaper", "linkage_graph_10_kin.png"),
+        ("slotter", "linkage_graph_5_kin.png"), ("press", "linkage_graph_4_kin.png")]
+
+
+def _segments_of(ax) -> list:
+    from matplotlib.text import Annotation
+
+    return [(complex(*t.xyann), complex(*t.xy)) for t in ax.texts
+            if isinstance(t, Annotation) and t.arrow_patch is not None]
+
+
+def _vertices(ax) -> list:
+    """The polygon's vertices as drawn: the ends of its vectors."""
+    out: list = []
+    for a, b in _segments_of(ax):
+        out += [a, b]
+    return out
+
+
+@pytest.mark.parametrize("brief,name", _KIN)
+@pytest.mark.parametrize("lang", ["zh", "en"])
+def test_polygon_vertex_labels_are_readable(example_results, monkeypatch, tmp_path, brief,
+                                            name, lang):
+    """No two vertex labels print over each other or over a vector; every vertex drawn has
+    a label within a few points of it (coincident vertices share one label); the axes hold
+    the polygon and little else (equal aspect, no ±30 mm box round a flat sliver)."""
+    from mechdesign.render import graphical_report as G
+
+    figs = _captured(monkeypatch)
+    G.graphical_figures(example_results(brief), tmp_path, lang)
+    fig = figs[name]
+    fig.tight_layout()
+    for ax in fig.axes:
+        labels = _labels(ax)
+        clashes = [s for s in LL.overlaps(ax, labels, _segments_of(ax))]
+        assert not clashes, (name, clashes)
+        # each vertex has a label box near it (within 35 pt of the box's centre)
+        renderer = LL._renderer(fig)
+        px = fig.dpi / 72
+        boxes = [t.get_window_extent(renderer) for t in labels]
+        for z in _vertices(ax):
+            x, y = ax.transData.transform((z.real, z.imag))
+            near = min(math_hypot(x - (b.x0 + b.x1) / 2, y - (b.y0 + b.y1) / 2) for b in boxes)
+            assert near < 35 * px + max(b.width for b in boxes) / 2, (name, z)
+        # the axes fit the polygon: in each direction no more than 1.5 × the larger of the
+        # polygon's extent there and half its longest extent
+        zs = _vertices(ax)
+        dx = max(z.real for z in zs) - min(z.real for z in zs)
+        dy = max(z.imag for z in zs) - min(z.imag for z in zs)
+        span = max(dx, dy)
+        (x0, x1), (y0, y1) = ax.get_xlim(), ax.get_ylim()
+        assert x1 - x0 <= 1.5 * max(dx, 0.5 * span), (name, ax.get_xlim(), dx)
+        assert y1 - y0 <= 1.5 * max(dy, 0.5 * span), (name, ax.get_ylim(), dy)
+        assert ax.get_aspect() == 1.0, (name, ax.get_aspect())
+
+
+def math_hypot(a, b):
+    import math
+
+    return math.hypot(a, b)
+
+
+def test_flat_force_polygon_says_so_and_names_one_segment_once(example_results, monkeypatch,
+                                                               tmp_path):
+    """Slotter position 5, group 3–4 (zh Fig. 9): the polygon is nearly one line; the
+    figure says so, and the forces drawn on one segment (F_R23, F_R34, F_R43) share one
+    label instead of three stacked ones."""
+    from mechdesign.render import graphical_report as G
+
+    figs = _captured(monkeypatch)
+    G.graphical_figures(example_results("slotter"), tmp_path, "en")
+    fig = figs["linkage_graph_5_f1.png"]
+    ax = fig.axes[1]
+    texts = [t.get_text() for t in _labels(ax)]
+    segs = {frozenset((round(a.real, 6) + 1j * round(a.imag, 6), round(b.real, 6) + 1j * round(b.imag, 6)))
+            for a, b in _segments_of(ax)}
+    assert len(texts) <= len(segs), texts                     # one label per segment at most
+    shared = [t for t in texts if "R23" in t]
+    assert shared and "R34" in shared[0] and "R43" in shared[0], texts
+    assert "nearly flat" in ax.get_xlabel()
+    assert not [s for s in LL.overlaps(ax, _labels(ax), []) if "over" in s]
+    # the note where, and only where, the polygon is flat: narrower than 8 % of its length
+    # across its principal direction (measured here on the arrows drawn)
+    import numpy as np
+
+    for name in ("linkage_graph_5_f0.png", "linkage_graph_5_f1.png", "linkage_graph_5_f2.png",
+                 "linkage_graph_11_f0.png", "linkage_graph_11_f1.png", "linkage_graph_11_f2.png"):
+        ax = figs[name].axes[1]
+        pts = np.array([[z.real, z.imag] for seg in _segments_of(ax) for z in seg])
+        pts = pts - pts.mean(axis=0)
+        vt = np.linalg.svd(pts, full_matrices=False)[2]
+        flat = np.ptp(pts @ vt[1]) < 0.08 * np.ptp(pts @ vt[0])
+        assert ("nearly flat" in ax.get_xlabel()) == flat, name
+
+
+def test_position_labels_on_the_top_axis_do_not_run_together(example_results, monkeypatch,
+                                                             tmp_path):
+    """Slotter Fig. 2: positions 4′ and 5, 9′ and 9, 10′ and 11 lie a few degrees apart;
+    their labels on the top axis must not touch ("4′5", "9′9", "1011")."""
+    import importlib
+
+    from mechdesign.machines import get_machine
+
+    figs = _captured(monkeypatch)
+    r = example_results("slotter")
+    report = importlib.import_module(get_machine(r["brief"].machine).report_module)
+    report.make_figures(r, tmp_path, "zh")
+    fig = figs["linkage_motion.png"]
+    fig.tight_layout()
+    renderer = LL._renderer(fig)
+    top = fig.axes[0].child_axes[0]
+    labels = [t for t in top.xaxis.get_ticklabels() if t.get_visible() and t.get_text()]
+    assert len(labels) >= 14
+    gap = fig.dpi / 72 * 0.75                  # half the gap of 1.5 pt they must keep
+    boxes = [(t.get_text(), t.get_window_extent(renderer)) for t in labels]
+    boxes = [(t, (b.x0 - gap, b.y0 - gap, b.x1 + gap, b.y1 + gap)) for t, b in boxes]
+    clashes = [f"{a} over {b}" for i, (a, ba) in enumerate(boxes) for b, bb in boxes[i + 1:]
+               if LL._box_overlap(ba, bb) > 0]
+    assert not clashes, clashes
+
+
+def test_angle_figure_fits_its_curves_and_caption_names_them(example_results, monkeypatch,
+                                                             tmp_path):
+    """Slotter Fig. 3: one pressure-angle curve of 0–4° was drawn on a 0–90° axis under a
+    caption naming transmission and pressure angles."""
+    import importlib
+
+    import numpy as np
+
+    from mechdesign.machines import get_machine
+
+    figs = _captured(monkeypatch)
+    r = example_results("slotter")
+    report = importlib.import_module(get_machine(r["brief"].machine).report_module)
+    report.make_figures(r, tmp_path, "en")
+    (ax,) = figs["linkage_angles.png"].axes
+    peak = max(float(np.max(line.get_ydata())) for line in ax.lines if len(line.get_ydata()) > 2)
+    lo, hi = ax.get_ylim()
+    assert peak <= hi <= 2 * peak, (peak, ax.get_ylim())
+    from mechdesign.render.linkage_report import _angles_caption
+
+    k = next(v for v in r.values() if getattr(v, "quality", None))
+    kinds = {q.kind for q in k.quality}
+    assert kinds == {"pressure"}
+    assert _angles_caption(k, "en") == "Pressure angle against the crank angle"
+    assert _angles_caption(k, "zh") == "压力角随曲柄转角的变化"

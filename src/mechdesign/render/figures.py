@@ -164,6 +164,19 @@ def _phase_axis(ax, working_span_deg: float, positions=None):
         ax.plot(ph, values, "o", ms=3, color="C3", zorder=3)
 
 
+def _staggered(phases_deg, gap_deg: float = 9.0) -> list[int]:
+    """The indices of the position labels to lift one row on the top axis: a label closer
+    than ``gap_deg`` to the one before it on the lower row, so that "4′" and "5" do not print
+    into each other as "4′5" (issue 19)."""
+    up, last = [], None
+    for i in sorted(range(len(phases_deg)), key=lambda i: phases_deg[i]):
+        if last is not None and phases_deg[i] - last < gap_deg:
+            up.append(i)
+        else:
+            last = phases_deg[i]
+    return up
+
+
 @cached
 def curves_vs_phase(path: Path, lang: str, phase_deg, series, ylabels, working_span_deg,
                     position_marks=None, size=(7.0, 6.0)):
@@ -188,6 +201,9 @@ def curves_vs_phase(path: Path, lang: str, phase_deg, series, ylabels, working_s
             top.set_xticks(position_marks[1])
             top.set_xticklabels(position_marks[0], fontsize=6)
             top.tick_params(length=2, pad=8)
+            ticks = top.xaxis.get_major_ticks()
+            for i in _staggered(position_marks[1]):
+                ticks[i].set_pad(18)
         axes[-1].set_xlabel(lab["phase"])
 
 

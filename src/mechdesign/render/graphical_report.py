@@ -18,7 +18,7 @@ import numpy as np
 
 from . import figures as fig
 from ..i18n import N_, tr
-from .fmt import f, grouped, mpl_text, sci
+from .fmt import f, grouped, mpl_text, sci, tex_name
 from .label_layout import Label, place
 from .labels import LabelTable, mpl_point, pgettext, point_tex, tex_names
 
@@ -29,6 +29,7 @@ _T = LabelTable({
     "mag": pgettext("graphical", "magnitude"), "dir": pgettext("graphical", "direction"),
     "pos": pgettext("graphical", "position"), "group": pgettext("graphical", "group"),
     "crank": N_("crank"), "doc": "{}", "links": pgettext("graphical", "links"),
+    "flat": N_("nearly flat polygon (width {w} mm): the forces are almost collinear"),
 })
 
 
@@ -186,38 +187,86 @@ _COLORS = {"absolute": "k", "relative": "tab:blue", "normal": "tab:green",
            "normal_f": "tab:green", "tangential_f": "tab:orange", "balancing": "tab:brown"}
 
 
+#: Vertices (or vectors) closer than this fraction of the polygon's extent are one spot on
+#: the drawing: they get one label naming them all ("b, b₅"), not labels printed over each
+#: other (issue 19).
+COINCIDENT = 0.012
+
+
+def _coincident(points: dict, span: float) -> list[tuple[complex, list[str]]]:
+    """The polygon's vertices grouped by the spot they are drawn on: (spot, names) in the
+    order of the first name of each group."""
+    groups: list[tuple[complex, list[str]]] = []
+    for name, z in points.items():
+        for spot, names in groups:
+            if abs(z - spot) <= COINCIDENT * span:
+                names.append(name)
+                break
+        else:
+            groups.append((z, [name]))
+    return groups
+
+
+def _extent(ax, zs, minor: float = 0.3, pad: float = 0.12) -> float:
+    """Set the axes to the extent of the points ``zs`` at equal aspect (the axes box, not
+    the data limits, takes the aspect: no empty panel round a flat polygon); a flat extent is
+    widened to ``minor`` of the long one so that its labels have room. Returns the span."""
+    xs, ys = [z.real for z in zs], [z.imag for z in zs]
+    dx, dy = max(xs) - min(xs), max(ys) - min(ys)
+    span = max(dx, dy, 1e-9)
+    cx, cy = (max(xs) + min(xs)) / 2, (max(ys) + min(ys)) / 2
+    hx, hy = max(dx, minor * span) / 2 + pad * span, max(dy, minor * span) / 2 + pad * span
+    ax.set_xlim(cx - hx, cx + hx)
+    ax.set_ylim(cy - hy, cy + hy)
+    ax.set_aspect("equal", adjustable="box")
+    return span
+
+
 def _kin_axes(ax, poly, title: str, mu_unit: str, lang: str):
+    """One polygon; returns its vertex labels (coincident vertices named together) and the
+    segments they must keep clear of, for :func:`.label_layout.place`."""
     seen = set()
+    lines: list[tuple[complex, complex]] = []
     for eq in poly.equations:
         for t in eq.left + eq.right:
             key = (t.tail, t.head)
             if key in seen or t.tail not in poly.points or t.head not in poly.points:
                 continue
             seen.add(key)
-            _arrow(ax, poly.points[t.tail], poly.points[t.head], _COLORS.get(t.kind, "k"),
-                   lw=1.4 if t.kind == "absolute" else 1.0)
-    for name, z in poly.points.items():
-        ax.plot([z.real], [z.imag], "k.", ms=3)
-        ax.text(z.real, z.imag, f" {vertex_label(name)}", fontsize=7, va="bottom")
-    ax.set_aspect("equal", adjustable="datalim")
+            a, b = poly.points[t.tail], poly.points[t.head]
+            _arrow(ax, a, b, _COLORS.get(t.kind, "k"), lw=1.4 if t.kind == "absolute" else 1.0)
+            if abs(b - a) > 1e-9:
+                lines.append((a, b))
+    zs = list(poly.points.values()) or [0j]
+    span = _extent(ax, zs)
+    centre = complex(np.mean([z.real for z in zs]), np.mean([z.imag for z in zs]))
+    labels: list[Label] = []
+    for spot, names in _coincident(poly.points, span):
+        ax.plot([spot.real], [spot.imag], "k.", ms=3)
+        lines.append((spot, spot))
+        away = spot - centre
+        prefer = (away / abs(away),) if abs(away) > 1e-9 * span else ()
+        labels.append(Label(", ".join(vertex_label(n) for n in names), spot, prefer,
+                            {"fontsize": 7}))
     ax.set_title(f"{title}  μ = {_scale(poly.scale)} {mu_unit}", fontsize=8)
     ax.tick_params(labelsize=6)
     ax.set_xlabel("mm", fontsize=6)
     ax.grid(True, lw=0.3, alpha=0.4)
+    return labels, lines
 
 
 @fig.cached
 def _kin_figure(path: Path, pos, lang: str) -> None:
     t = _T[lang]
     with fig.figure(path, 1, (7.0, 3.6), sharex=False) as axes:
-        import matplotlib.pyplot as plt
-
         f_ = axes[0].figure
         f_.clf()
         a1, a2 = f_.add_subplot(1, 2, 1), f_.add_subplot(1, 2, 2)
-        _kin_axes(a1, pos.velocity, f"{t['pos']} {pos.label}: {t['vel']}", "(m/s)/mm", lang)
-        _kin_axes(a2, pos.acceleration, f"{t['acc']}", "(m/s²)/mm", lang)
-        del plt
+        l1 = _kin_axes(a1, pos.velocity, f"{t['pos']} {pos.label}: {t['vel']}", "(m/s)/mm", lang)
+        l2 = _kin_axes(a2, pos.acceleration, f"{t['acc']}", "(m/s²)/mm", lang)
+        # labels last, clear of each other and of the polygon's vectors (issue 19)
+        place(a1, *l1)
+        place(a2, *l2)
 
 
 @fig.cached
@@ -270,25 +319,61 @@ def _force_figure(path: Path, pos, fg, members: dict, lang: str) -> None:
         a1.set_title(f"{t['fbd']} ({t['links']} {', '.join(fg.links)})  "
                      f"$\\mu_l$ = {_scale(pos.length_scale)} m/mm", fontsize=8)
         a1.tick_params(labelsize=6)
-        labels2: list[Label] = []
         lines2: list[tuple[complex, complex]] = []
+        zs2 = list(fg.points.values()) or [0j]
+        span2 = max([abs(a - b) for a in zs2 for b in zs2] + [1e-9])
+        drawn: list[tuple[complex, complex, list[str], str]] = []   # one label per segment
         for v in fg.vectors:
             if v.tail in fg.points and v.head in fg.points:
                 c = _COLORS.get({"normal": "normal_f", "tangential": "tangential_f"}.get(v.kind, v.kind), "k")
-                _arrow(a2, fg.points[v.tail], fg.points[v.head], c,
-                       ls="--" if v.kind in ("total", "internal") else "-", label=sym(v.symbol),
-                       labels=labels2)
-                lines2.append((fg.points[v.tail], fg.points[v.head]))
+                a, b = fg.points[v.tail], fg.points[v.head]
+                _arrow(a2, a, b, c, ls="--" if v.kind in ("total", "internal") else "-")
+                if abs(b - a) < 1e-9:
+                    continue
+                lines2.append((a, b))
+                for seg in drawn:       # the same segment either way: one label naming all
+                    if (abs(seg[0] - a) + abs(seg[1] - b) <= COINCIDENT * span2
+                            or abs(seg[0] - b) + abs(seg[1] - a) <= COINCIDENT * span2):
+                        seg[2].append(sym(v.symbol))
+                        break
+                else:
+                    drawn.append((a, b, [sym(v.symbol)], c))
+        labels2 = []
+        for a, b, names, c in drawn:
+            n = 1j * (b - a) / abs(b - a)
+            labels2.append(Label(", ".join(f"${s}$" for s in names), (a + b) / 2, (n, -n),
+                                 {"fontsize": LABEL_SIZE, "color": c}))
         for name, z in fg.points.items():
             a2.plot([z.real], [z.imag], "k.", ms=2)
-        a2.set_aspect("equal", adjustable="datalim")
+        _extent(a2, zs2)
+        flat = _flatness(zs2)
         a2.set_title(f"{t['force']}  $\\mu_F$ = {_scale(fg.scale)} N/mm", fontsize=8)
         a2.tick_params(labelsize=6)
-        a2.set_xlabel("mm", fontsize=6)
+        # a polygon whose forces are almost collinear closes on a line: say so (issue 19)
+        note = "" if flat is None else "\n" + re.sub(r"([:\uff1a])\s*", "\\1\n",
+                                                      t["flat"].format(w=_mm(flat)), count=1)
+        a2.set_xlabel("mm" + note, fontsize=6)
         a2.grid(True, lw=0.3, alpha=0.4)
         # labels last, clear of each other and of the links and vectors (issue 19)
         place(a1, labels1, lines1)
         place(a2, labels2, lines2)
+
+
+#: A force polygon narrower than this fraction of its length is called nearly flat in its
+#: figure (its forces almost collinear; the directions read from it are uncertain).
+FLAT = 0.08
+
+
+def _flatness(zs) -> float | None:
+    """The width [mm] of a nearly flat polygon (across its longest direction), else None."""
+    if len(zs) < 3:
+        return None
+    pts = np.array([[z.real, z.imag] for z in zs])
+    pts = pts - pts.mean(axis=0)
+    _u, sv, vt = np.linalg.svd(pts, full_matrices=False)
+    along, across = pts @ vt[0], pts @ vt[1]
+    length, width = np.ptp(along), np.ptp(across)
+    return float(width) if length > 0 and width < FLAT * length else None
 
 
 def graphical_figures(results: dict, fig_dir: Path, lang: str) -> dict[str, str]:
@@ -407,21 +492,29 @@ def _forces(pos, lang: str) -> list[dict]:
             if m.unknown == "Pb":
                 moments.append((f"P_b = \\frac{{M_b}}{{l_{{{m.point}}}}} = \\frac{{{_num(fg.balancing_torque)}}}"
                                 f"{{{_mm(m.arm)} \\times {_scale(mu_l)}}}", f"P_b = {_num(m.result)}"
-                                r"\ \mathrm{N}"))
+                                r"\ \mathrm{N}", None))
                 continue
             where = f"\\Sigma M_{{{m.point}}}" + ("" if m.unknown == "Mb" else f"({m.link})")
             if m.unknown == "Mb":
                 moments.append((f"{where} = 0:\\ M_b + ({lhs}) \\times {_scale(mu_l)}{_couple(couples)} = 0",
-                                f"M_b = {_num(m.result)}" r"\ \mathrm{N\cdot m}"))
+                                f"M_b = {_num(m.result)}" r"\ \mathrm{N\cdot m}", None))
+            elif not any(t.arm for t in m.terms) and not couples and m.result == 0:
+                # no known force has a moment about the point: no equation of zeros (issue 19)
+                _ = tr(lang)
+                point = "$" + tex_name(m.point) + "$"
+                result = "$" + u + " = 0$"
+                note = _("No known force on link {link} has a moment about {point}: {result}.",
+                         link=m.link, point=point, result=result)
+                moments.append((None, f"{u} = 0", note))
             elif m.arm:
                 cpl = f"{_couple(couples)} / {_scale(mu_l)}" if couples else ""
                 rest = f"{_num(total)}" + (f"{_couple(couples)} / {_scale(mu_l)}" if couples else "")
                 moments.append((f"{where} = 0:\\ {u} \\times {_mm(m.arm)} + ({lhs}){cpl} = 0",
                                 f"{u} = -\\frac{{{rest}}}{{{_mm(m.arm)}}} = {_num(m.result)}"
-                                r"\ \mathrm{N}"))
+                                r"\ \mathrm{N}", None))
             else:
                 moments.append((f"{where} = 0:\\ {u} + ({lhs}) \\times {_scale(mu_l)}{_couple(couples)} = 0",
-                                f"{u} = {_num(m.result)}" r"\ \mathrm{N\cdot m}"))
+                                f"{u} = {_num(m.result)}" r"\ \mathrm{N\cdot m}", None))
         closing = " + ".join(r"\vec " + sym(v.symbol) for v in fg.vectors
                              if v.kind not in ("total", "internal")) + " = 0"
         rows = [[f"${sym(v.symbol)}$", "√" if v.known else "?", _mm(v.length), _numg(v.read)]

@@ -105,10 +105,22 @@ def _quality_figure(path, lang, ph, span, k, model):
         if model.transmission_angle_min is not None:
             ax.axhline(model.transmission_angle_min * DEG, color="C2", ls=":", lw=0.9,
                        label=f"[γ] = {model.transmission_angle_min * DEG:.0f}°")
-        ax.set_ylim(0, 90)
+        # the axis to the curves (a 0–4° pressure angle is not drawn on a 0–90° axis, issue 19)
+        hi = max([float(np.max(q.values[:n])) * DEG for q in k.quality]
+                 + [x * DEG for x in (model.pressure_angle_limit, model.transmission_angle_min)
+                    if x is not None])
+        ax.set_ylim(0, 90 if hi > 50 else _nice_ceiling(1.25 * hi))
         ax.set_ylabel(t["angle"])
         ax.set_xlabel(fig.LABELS[lang]["phase"])
         ax.legend(fontsize=7, loc="upper right", ncol=2)
+
+
+def _nice_ceiling(x: float) -> float:
+    """The smallest of 1, 2, 2.5, 5 × 10^k not below x (x > 0)."""
+    if x <= 0:
+        return 1.0
+    e = 10.0 ** np.floor(np.log10(x))
+    return float(next(m * e for m in (1, 2, 2.5, 5, 10) if m * e >= x))
 
 
 def _torque_figure(path, lang, ph, span, mb, mean, resistance, n, marks):
@@ -278,6 +290,17 @@ def _group_namer(model, lang: str):
     return lambda name: link_name(labels, name, lang) if name in labels else name
 
 
+def _angles_caption(k, lang: str) -> str:
+    """The caption of the angle figure, naming only the angles drawn (issue 19)."""
+    _ = tr(lang)
+    kinds = {q.kind for q in k.quality}
+    if kinds == {"transmission"}:
+        return _("Transmission angle against the crank angle")
+    if kinds == {"pressure"}:
+        return _("Pressure angle against the crank angle")
+    return _("Transmission and pressure angles against the crank angle")
+
+
 def linkage_context(model, k, f_, fly, v, figures: dict, lang: str,
                     prefix: str = "linkage", title: str | None = None) -> dict:
     """Strings and rows for ``linkage_section``; ``title`` is the chapter heading."""
@@ -359,6 +382,7 @@ def linkage_context(model, k, f_, fly, v, figures: dict, lang: str,
         "start_angle": f((k.start_angle * DEG) % 360, 2),
         "grid_points": str(n),
         "kin_head": qual_head, "kin_rows": kin_rows,
+        "angles_caption": _angles_caption(k, lang),
         "point_names": [md_point(p) for p in point_names], "point_rows": point_rows,
         "link_ids": [md_text(l_) for l_ in k.link_omega], "link_speed_rows": link_speed_rows,
         "qual_rows": qual_rows,
