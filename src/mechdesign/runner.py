@@ -185,7 +185,7 @@ def run_one(brief: Path, *, out_dir: Path | None = None, lang: str | None = None
             text = finding.text(language)
             field = getattr(finding, "field", "")
             if field and field not in text:     # the terminal names the brief field to change
-                text = f"{field}: {text}"
+                text = f"{text} [{field}]"
             warnings.append(text)
             if on_warning is not None:
                 on_warning(text)

@@ -434,6 +434,12 @@ def cam_verification_rows(v, c, lang: str) -> list[list[str]]:
     return rows
 
 
+def _mm_small(x: float) -> str:
+    """A length in mm by the number rule (render/fmt.py): 0.01 mm, below 0.1 mm two
+    significant digits, no trailing zero (0.11 mm, 0.028 mm, 0.001 mm)."""
+    return f(x, 2) if abs(x) >= 0.1 else (f"{x:.2g}" if abs(x) >= 1e-4 else e(x))
+
+
 def envelope_note(c, lang: str, csv_stem: str, verification=None) -> str:
     """A paragraph on the actual profile at the pitch curve's corners ('' when there are none);
     with the cam ``verification``, it also states how far the plain offset curve is off."""
@@ -466,7 +472,7 @@ def envelope_note(c, lang: str, csv_stem: str, verification=None) -> str:
         held = [k.limit for k in verification.checks if k.key == "envelope"]
         text += _("The plain offset curve departs from the distance $r_r$ to the pitch curve by up to {d} mm, "
                   "where the actual profile is held to {limit} mm; it is therefore not used. ",
-                  d=f(off[0].value * MM, 3), limit=f((held[0] if held else DIST_LIMIT) * MM, 3))
+                  d=_mm_small(off[0].value * MM), limit=_mm_small((held[0] if held else DIST_LIMIT) * MM))
     text += _("The cut-away points in the coordinate table and in `{csv}.csv` are replaced by the edge; the "
               "whole actual profile (with the arcs) is written to `{csv}_outline.csv` and drawn in "
               "[@fig:cam-profile].", csv=csv_stem)

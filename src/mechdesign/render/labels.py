@@ -113,10 +113,18 @@ def mpl_point(name: str) -> str:
     return _mpl_math(name) if subscripted(name) else mpl_text(name)
 
 
+# A sheet text marks a subscript with two private-use characters (never in user text):
+# "μ" + SUB_ON + "v" + SUB_OFF is μ with the subscript v (render/sheet.py draws them).
+SUB_ON, SUB_OFF = "\ue000", "\ue001"
+
+
+def sub(base: str, index: str) -> str:
+    """``base`` with the subscript ``index`` (e.g. ``sub("φ", "max")``) for a sheet text."""
+    return f"{base}{SUB_ON}{index}{SUB_OFF}"
+
+
 def sheet_point(name: str) -> str:
     """A point name (or a run of them) for a sheet text: its digits marked as subscripts."""
-    from .sheet import sub
-
     name = str(name)
     if not subscripted(name):
         return name

@@ -310,12 +310,9 @@ def thin(points, tolerance: float = CHORD_TOLERANCE) -> np.ndarray:
 # "μ" + SUB_ON + "v" + SUB_OFF is μ with the subscript v. The typst back end draws it with
 # ``sub``, the DXF back end as an MTEXT with a stacked subscript (``\\S^ v;``); the DXF
 # text font, Noto Sans SC, has none of the Unicode subscript characters (ₘᵢₙ, ₐ, ₁ …).
-SUB_ON, SUB_OFF = "\ue000", "\ue001"
-
-
-def sub(base: str, index: str) -> str:
-    """``base`` with the subscript ``index`` (e.g. ``sub("φ", "max")``) for a sheet text."""
-    return f"{base}{SUB_ON}{index}{SUB_OFF}"
+# The markers and ``sub`` live in render/labels.py (which names points for every medium:
+# a sheet's point names need them, and labels may not import this module); re-exported here.
+from .labels import SUB_OFF, SUB_ON, sub  # noqa: E402
 
 
 def with_subscripts(text: str, *symbols: str) -> str:
