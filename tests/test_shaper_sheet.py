@@ -271,7 +271,8 @@ def test_guide_height_dimension_and_link_names(sheet, shaper_results):
     hit = [d for d in dims if abs(d.measurement - guide) < 1e-6]
     assert hit and abs(abs(hit[0].p1 - hit[0].p0) * scales["length"] - guide) < 1e-6
     texts = [t.text for t in s.entities if isinstance(t, Text)]
-    legend = next(t for t in texts if t.startswith("构件："))
+    # point names carry subscript markers on the sheet (O₂A): compare the plain text
+    legend = plain(next(t for t in texts if t.startswith("构件：")))
     for link, name in (("2", "曲柄 O2A"), ("3", "滑块 A"), ("4", "导杆 O3B"), ("5", "连杆 BF"),
                        ("6", "刨头")):
         assert f"{link} {name}" in legend
