@@ -263,9 +263,34 @@ def colon_at_page_foot(pdf) -> list[tuple[int, str]]:
             rows = page_rows(page)
             prose = page_rows(page, code=False)
             if (rows and prose and not _is_sheet(page) and rows[-1][0] == prose[-1][0]
-                    and rows[-1][2].endswith(("：", ":"))):
+                    and rows[-1][2].endswith(("：", ":"))
+                    and not (number < len(doc) and _continues_paragraph(doc[number]))):
                 bad.append((number, rows[-1][2][-40:]))
     return bad
+
+
+def _continues_paragraph(page) -> bool:
+    """The page's first text line carries on a paragraph of prose: it starts at the text
+    block's left edge (a zh paragraph's first line is indented 2em, a display formula or a
+    table caption is centred) and not with a list's mark. A colon that ends a line inside
+    a sentence ("取整后的杆长条件：s + l = …") is not a lead-in parted from its block."""
+    lines = []
+    for block in page.get_text("dict")["blocks"]:
+        for line in block.get("lines", []):
+            text = "".join(sp["text"] for sp in line["spans"]).strip()
+            x0, y0 = line["bbox"][0], line["bbox"][1]
+            if text and TOP - 6 <= y0 <= BOTTOM:
+                lines.append((y0, x0, text))
+    # a figure floated to the page's top comes first: its caption is not the text flow
+    lines.sort()
+    while lines and re.match(r"^(图|Figure)\s*\d", lines[0][2]):
+        lines = [ln for ln in lines if ln[0] > lines[0][0] + 3.0]
+    if not lines:
+        return False
+    y0, x0, text = min(lines)
+    first = [(x, t) for y, x, t in lines if y - y0 < 3.0]
+    x0, text = min(first)
+    return abs(x0 - LEFT) < 1.5 and not text.startswith(("•", "–", "-", "‣"))
 
 
 def body_start(doc) -> int:
