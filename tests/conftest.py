@@ -85,3 +85,17 @@ def read_pdf_text(path: Path, first: int | None = None, last: int | None = None)
 def pdf_text() -> Callable[..., str]:
     """:func:`read_pdf_text`, for tests that check words in a rendered PDF."""
     return read_pdf_text
+
+
+def wait_until(predicate: Callable[[], Any], timeout: float, proc, step: float = 0.05) -> None:
+    """Poll ``predicate`` until it holds, failing when ``proc`` (a watch) ends or after
+    ``timeout`` seconds (the watch tests)."""
+    import time
+
+    end = time.monotonic() + timeout
+    while time.monotonic() < end:
+        if predicate():
+            return
+        assert proc.poll() is None, "the watch ended"
+        time.sleep(step)
+    raise AssertionError("timed out")

@@ -8,10 +8,10 @@ import os
 import signal
 import subprocess
 import sys
-import time
 from pathlib import Path
 
 import pytest
+from conftest import wait_until
 
 from mechdesign.watch import snapshot, summary_changes, watched_files
 
@@ -43,13 +43,7 @@ def test_watched_files_are_the_brief_its_class_table_and_the_templates(tmp_path)
 
 
 def _wait(predicate, timeout: float, proc) -> None:
-    end = time.monotonic() + timeout
-    while time.monotonic() < end:
-        if predicate():
-            return
-        assert proc.poll() is None, "the watch ended"
-        time.sleep(0.1)
-    raise AssertionError("timed out")
+    wait_until(predicate, timeout, proc, step=0.1)
 
 
 def _base_radius(results: Path):

@@ -8,10 +8,10 @@ import os
 import signal
 import subprocess
 import sys
-import time
 from pathlib import Path
 
 import pytest
+from conftest import wait_until
 
 from mechdesign.render.pdf import _source_file
 
@@ -33,13 +33,7 @@ def test_the_typst_source_keeps_its_name_from_run_to_run(tmp_path):
 
 
 def _wait(predicate, timeout: float, proc) -> None:
-    end = time.monotonic() + timeout
-    while time.monotonic() < end:
-        if predicate():
-            return
-        assert proc.poll() is None, "the watch ended"
-        time.sleep(0.05)
-    raise AssertionError("timed out")
+    wait_until(predicate, timeout, proc, step=0.05)
 
 
 def _stamp(path: Path):
