@@ -97,7 +97,8 @@ def headings(md: str) -> list[str]:
         if line.startswith("```"):
             fenced = not fenced
         elif not fenced and line.startswith("# "):
-            out.append(line[2:].replace("{-}", "").strip())
+            # without the heading's attributes ({-}, {#summary})
+            out.append(re.sub(r"\s*\{[^}]*\}\s*$", "", line[2:]).strip())
     return out
 
 
