@@ -12,7 +12,7 @@ from ..fileio import atomic_open
 from ..i18n import N_, tr
 from ..core.motion_laws import LAWS
 from . import cam_figures as cf
-from .fmt import e, f, md_text, sig, verdict
+from .fmt import e, f, length, md_text, sig, verdict
 from .labels import LabelTable, pgettext
 
 DEG = 180.0 / np.pi
@@ -402,7 +402,7 @@ def _sci(x: float, unit: str = "") -> str:
 
 def cam_verification_rows(v, c, lang: str) -> list[list[str]]:
     """The cam self-checks as [item, result, reference / limit, verdict] rows."""
-    from ..stages.cam import CAM_CHECK_NAMES, DIST_LIMIT
+    from ..stages.cam import CAM_CHECK_NAMES
 
     _ = tr(lang)
     osc = c.params.oscillating
@@ -432,12 +432,6 @@ def cam_verification_rows(v, c, lang: str) -> list[list[str]]:
         # "offset_curve" and "corner" carry no verdict: they say why the actual profile is the
         # envelope, not the plain offset curve; envelope_note states them in its paragraph
     return rows
-
-
-def _mm_small(x: float) -> str:
-    """A length in mm by the number rule (render/fmt.py): 0.01 mm, below 0.1 mm two
-    significant digits, no trailing zero (0.11 mm, 0.028 mm, 0.001 mm)."""
-    return f(x, 2) if abs(x) >= 0.1 else (f"{x:.2g}" if abs(x) >= 1e-4 else e(x))
 
 
 def envelope_note(c, lang: str, csv_stem: str, verification=None) -> str:
@@ -472,7 +466,7 @@ def envelope_note(c, lang: str, csv_stem: str, verification=None) -> str:
         held = [k.limit for k in verification.checks if k.key == "envelope"]
         text += _("The plain offset curve departs from the distance $r_r$ to the pitch curve by up to {d} mm, "
                   "where the actual profile is held to {limit} mm; it is therefore not used. ",
-                  d=_mm_small(off[0].value * MM), limit=_mm_small((held[0] if held else DIST_LIMIT) * MM))
+                  d=length(off[0].value * MM), limit=length((held[0] if held else DIST_LIMIT) * MM))
     text += _("The cut-away points in the coordinate table and in `{csv}.csv` are replaced by the edge; the "
               "whole actual profile (with the arcs) is written to `{csv}_outline.csv` and drawn in "
               "[@fig:cam-profile].", csv=csv_stem)

@@ -123,6 +123,14 @@ def rpm(n: float) -> str:
     return f(n, 2)
 
 
+def length(x: float) -> str:
+    """A length in mm by the rule above: 0.01 mm, below 0.1 mm two significant digits
+    without a trailing zero (``0.11``, ``0.028``, ``0.001``)."""
+    if abs(x) >= 0.1:
+        return f(x, 2)
+    return f"{x:.2g}" if abs(x) >= 1e-4 else e(x)
+
+
 def percent(x: float) -> str:
     """A percentage (``x`` in per cent, without the sign) to 0.1 %, below 1 % with two
     significant digits: ``2.634`` → ``2.6``, ``0.5419`` → ``0.54``, ``87.46`` → ``87.5``."""
