@@ -24,6 +24,9 @@ References, measured in the same rounds:
                    reads the brief), leaving as the CLI does (os._exit, no interpreter
                    shutdown). What a check adds above it is the brief models of its machine,
                    reading and validating.
+  reading a brief  `import yaml` and loading the die-cutter's brief (PyYAML's C loader), nothing
+                   else: what any program that reads a YAML brief costs, without a CLI and
+                   without validation.
   CLI framework    `import typer`, validation library `import pydantic` (each leaving with
                    os._exit): the two libraries every check imports, alone.
   (`python -c "import mechdesign.cli"` pays the interpreter's shutdown, which the CLI skips.)
@@ -100,6 +103,9 @@ REFERENCES = {
     "interpreter (python -c pass)": ["-c", "pass"],
     "CLI framework (import typer)": ["-c", "import os, typer; os._exit(0)"],
     "validation library (import pydantic)": ["-c", "import os, pydantic; os._exit(0)"],
+    "reading a brief, no validation (yaml)": [
+        "-c", "import os, yaml; yaml.load(open('designs/die_cutter.yaml', encoding='utf-8'), "
+              "Loader=getattr(yaml, 'CSafeLoader', yaml.SafeLoader)); os._exit(0)"],
     "CLI start-up (mechdesign --version)": ["-m", "mechdesign", "--version"],
     "CLI import (import mechdesign.cli)": ["-c", "import mechdesign.cli"],
     "validation floor (+ pydantic, yaml)": [
@@ -160,12 +166,15 @@ def main() -> None:
     floor = _stats(cpus["validation floor (+ pydantic, yaml)"])[0]
     typer_alone = _stats(cpus["CLI framework (import typer)"])[0]
     pyd = _stats(cpus["validation library (import pydantic)"])[0]
+    read = _stats(cpus["reading a brief, no validation (yaml)"])[0]
     print(f"floor with pydantic validation: {floor:.3f} s CPU = {floor / interp:.1f}× the "
           f"interpreter before a brief is read (typer alone {typer_alone / interp:.1f}×, "
           f"pydantic alone {pyd / interp:.1f}×); the slowest check is {worst[1] - floor:.3f} s "
           f"above it (its machine's brief models and the validation). Issue 22's ≤ 1.5× "
           f"start-up is below the import of typer alone: not reachable while the CLI is typer "
-          f"and the brief is validated by pydantic (the project's design).")
+          f"and the brief is validated by pydantic (the project's design). Reading the "
+          f"die-cutter's brief with PyYAML alone, with no CLI and no validation, is already "
+          f"{read / interp:.2f}× the interpreter.")
 
 
 if __name__ == "__main__":
