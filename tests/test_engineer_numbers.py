@@ -63,8 +63,9 @@ FIVE_SIG_3DEC = re.compile(r"(?<![\d.\u202f])(?:[1-9]\d*\.\d{3,}|0\.0*[1-9]\d{4,
 # significant digits
 LENGTH_3 = re.compile(r"(?<![\d.])(?:[1-9]\d*\.\d{3}|0\.[1-9]\d{2})(?!\d)(?:\\ |\s)*(?:\\text\{\s*)?"
                       r"(?:mm\b|°)")
-# numbers a report quotes from its source as the source writes them (the lock-beam seed's lift)
-QUOTED = {"lockbeam": ("h = 14.904 mm",)}
+# numbers a report quotes from its source as the source writes them, said to be the source's
+# (the lock-beam seed's lift, beside this design's h to 0.01 mm)
+QUOTED = {"lockbeam": ("the original report prints 14.904 mm", "原报告印作 14.904 mm")}
 # the time-ratio K to four decimals (the textbook writes K = 1.4, K = 1.25: 3 decimals)
 K_4 = re.compile(r"(?<![\w\\{])K\s*=\s*\d+\.\d{4,}")
 # a percentage finer than 0.1 % or than two significant digits (``0.542%``, ``33.21 %``)
@@ -177,6 +178,23 @@ def test_die_cutter_peak_torque_reads_as_one_value(example_results, lang):
     near = [x for x in written if abs(x - peak) < 5.0]          # the peak, however rounded
     assert near, "the report writes its peak torque"
     assert all(round(x) == round(peak) for x in near), (peak, near)
+
+
+@pytest.mark.parametrize("lang", ["zh", "en"])
+def test_lockbeam_lift_is_one_value(example_results, lang):
+    """The lock-beam's lift h where the cam touches the input rocker is one quantity: the
+    text and the swing formula write it with the same value, by the rule (0.01 mm), computed
+    as the arm times the swing; the original report's 14.904 mm appears only as a quotation
+    that says whose number it is."""
+    r = example_results("lockbeam")
+    h = r["bending_cam"].params.follower.arm_length * r["bending"].input_swing * 1e3
+    md, _ = _markdown(example_results, "lockbeam", lang)
+    start = md.index("## " + ("Swing of the input rocker" if lang == "en" else "输入摆杆的摆角"))
+    section = md[start:md.index("\n## ", start + 3)]
+    values = set(re.findall(r"h = (\d+\.\d+)", section)) | set(re.findall(r"\\frac\{h\}\{L\} = \\frac\{(\d+\.\d+)\}", section))
+    assert values == {f"{h:.2f}"}, values
+    quoted = "the original report prints 14.904 mm" if lang == "en" else "原报告印作 14.904 mm"
+    assert section.count("14.904") == section.count(quoted) == 1
 
 
 def _given_dimensions_briefs(tmp_path: Path) -> dict[str, Path]:
