@@ -41,6 +41,8 @@ def _expected(lang: str) -> str:
     po = {"zh": "zh", "zh_TW": "zh_TW", "en": None}[lang]
     msg = UNDERCUT if po is None else i18n.catalogue(po)[(None, UNDERCUT)]
     name = load_yaml("transmissions.yaml")["helical"]["name_en" if lang == "en" else "name_zh"]
+    if lang == "zh_TW":          # the data table's name converted with the catalogue (zh_TW.data.json)
+        name = i18n.data_names("zh_TW")[name]
     who = "pinion" if po is None else i18n.catalogue(po)[("gear", "pinion")]
     return msg.format(n=2, name=name, who=who, z=14, zv=17.0123, z_min=17.1, need=15)
 
