@@ -124,3 +124,17 @@ def test_the_report_names_no_field_and_the_terminal_does(tmp_path):
         md = re.sub(r"^```.*?^```", "", md, flags=re.S | re.M)      # the program listing
         assert "根切" in md if lang == "zh" else "undercut" in md
         assert not brief_paths(md), brief_paths(md)[:5]
+
+
+def test_the_flywheel_rim_finding_names_its_field_outside_the_text():
+    """The thick-rim finding (H > D/2 at a rim diameter the brief gives) says "the rim's mean
+    diameter D" in words; the brief field is the finding's."""
+    from mechdesign.core.flywheel import RimFlywheel
+    from mechdesign.stages.flywheel import rim_findings
+
+    rim = RimFlywheel(diameter=0.300, width=0.100, height=0.200, rim_mass=50.0, rim_speed=10.0)
+    (f,) = [w for w in rim_findings(rim, "flywheel.rim_diameter_mm") if w.code == "rim_proportion"]
+    assert f.field == "flywheel.rim_diameter_mm"
+    for lang in ("en", "zh"):
+        assert "flywheel." not in f.text(lang) and not brief_paths(f.text(lang))
+    assert "mean diameter D" in f.text("en") and "平均直径 D" in f.text("zh")
