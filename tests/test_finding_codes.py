@@ -23,9 +23,9 @@ DESIGNS = Path(__file__).parents[1] / "designs"
 CJK = re.compile(r"[\u3000-\u303f\u3400-\u9fff\uff00-\uffef]")
 
 # one of the drive's undercut messages, with a data-table name and a nested message
-UNDERCUT = ("stage {n} ({name}): z{key} = {z} has the equivalent tooth number z_v = z/cos³β = "
-            "{zv:.2f} < z_min = {z_min:.1f}, so the gear is undercut; set {here}.z{key} ≥ {need} "
-            "or use a larger helix angle.")
+UNDERCUT = ("stage {n} ({name}): the {who} (z = {z}) is undercut: its equivalent tooth number z_v = "
+            "z/cos³β = {zv:.2f} is below the least number without undercut, {z_min:.1f}; give it at "
+            "least {need} teeth or use a larger helix angle.")
 STAGE = "stage {n} ({name})"
 
 
@@ -41,18 +41,20 @@ def _expected(lang: str) -> str:
     po = {"zh": "zh", "zh_TW": "zh_TW", "en": None}[lang]
     msg = UNDERCUT if po is None else i18n.catalogue(po)[(None, UNDERCUT)]
     name = load_yaml("transmissions.yaml")["helical"]["name_en" if lang == "en" else "name_zh"]
-    return msg.format(n=2, name=name, key="1", z=14, zv=17.0123, z_min=17.1, here="drive.stages[1]",
-                      need=15)
+    if lang == "zh_TW":          # the data table's name converted with the catalogue (zh_TW.data.json)
+        name = i18n.data_names("zh_TW")[name]
+    who = "pinion" if po is None else i18n.catalogue(po)[("gear", "pinion")]
+    return msg.format(n=2, name=name, who=who, z=14, zv=17.0123, z_min=17.1, need=15)
 
 
 def _finding() -> Finding:
-    return finding("undercut", UNDERCUT, field="drive.stages[1]", n=2, name=Named("transmissions", "helical"),
-                   key="1", z=14, zv=17.0123, z_min=17.1, here="drive.stages[1]", need=15)
+    return finding("undercut", UNDERCUT, field="drive.stages[1].z1", n=2, name=Named("transmissions", "helical"),
+                   who=Msg.pgettext("gear", "pinion"), z=14, zv=17.0123, z_min=17.1, need=15)
 
 
 def test_a_finding_is_rendered_in_the_language_it_is_shown_in(variant_reset):
     f = _finding()
-    assert f.code == "undercut" and f.msgid == UNDERCUT and f.field == "drive.stages[1]"
+    assert f.code == "undercut" and f.msgid == UNDERCUT and f.field == "drive.stages[1].z1"
     assert f.text("en") == _expected("en") and f.en == f.text("en")
     assert f.text("zh") == _expected("zh") and CJK.search(f.text("zh"))
     # the zh_TW catalogue, asked for after the finding was made: its words, not zh.po's
@@ -160,7 +162,7 @@ def test_old_results_with_finding_texts_still_compare():
     plain = json.loads(dumps(_finding()))
     old = {"machine": "x", "gear": {"warnings": [_expected("en")]},
            "flywheel": {"warnings": [{"code": "undercut", "zh": _expected("zh"), "en": _expected("en"),
-                                      "field": "drive.stages[1]"}]}}
+                                      "field": "drive.stages[1].z1"}]}}
     new = {"machine": "x", "gear": {"warnings": [plain]}, "flywheel": {"warnings": [plain]}}
     assert cr.compare(old, new) == []
     changed = json.loads(json.dumps(old))
@@ -186,3 +188,38 @@ def test_a_missed_timing_requirement_names_it_by_codes():
     worded = cy.Constraint("before", ("pin", "rise"), ("bend", "move"), 0.1, "销先升", "pin first")
     g = finding("cycle", "{req}", req=_requirement(worded))
     assert (g.text("zh"), g.text("en")) == ("销先升", "pin first")
+
+
+def test_old_shaft_advice_compares_with_the_new_codes():
+    """tools/compare_results.py: a shaft's advice saved as [check name, field, zh, en] (before
+    session 31) compares with the new {check, field, fix: {msgid, args}}, whose texts are made
+    from the catalogue; another field or fix text is a difference."""
+    import importlib.util
+
+    root = Path(__file__).parents[1]
+    spec = importlib.util.spec_from_file_location("compare_results", root / "tools" / "compare_results.py")
+    cr = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(cr)
+    _, new = _run(_overridden_shaft())
+    shafts = new["drive"]["shaft_designs"]
+    given = next(s for s in shafts if s["advice"])
+    zh = i18n.catalogue("zh")
+    # an old document with the advice alone (compare reads the reference's paths)
+    old = {"machine": "drive", "drive": {"shaft_designs": [{} for _ in shafts]}}
+    old_shaft = old["drive"]["shaft_designs"][shafts.index(given)]
+    names = {c["key"]: c["name"] for c in given["checks"]}      # an English msgid, no fields here
+
+    def texts(fix):               # the fix by hand: msgid (or a list of them) and its numbers
+        if fix["msgid"] == "{fix}":
+            parts = fix["args"]["fix"]["items"]
+            return ("；".join(zh[(None, p["msgid"])].format(**p["args"]) for p in parts),
+                    "; ".join(p["msgid"].format(**p["args"]) for p in parts))
+        args = fix.get("args", {})
+        return zh[(None, fix["msgid"])].format(**args), fix["msgid"].format(**args)
+
+    old_shaft["advice"] = [[names[a["check"]], a["field"], *texts(a["fix"])] for a in given["advice"]]
+    assert all("drive.shafts" not in x for a in old_shaft["advice"] for x in a[2:])
+    assert cr.compare(old, new, expected=False) == []
+    old_shaft["advice"][0][1] = "drive.shafts[0].seat_mm" if old_shaft["advice"][0][1] != \
+        "drive.shafts[0].seat_mm" else "drive.shafts[0].journal_mm"
+    assert cr.compare(old, new, expected=False)

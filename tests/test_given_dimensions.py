@@ -106,7 +106,7 @@ def test_crank_rocker_dimensions_derived_by_the_law_of_cosines(tmp_path):
     assert sc["K"] == pytest.approx((np.pi + th) / (np.pi - th), rel=1e-12)
     assert sc["simulated"]["stroke"] == pytest.approx(H, rel=1e-9)
     md = (tmp_path / "cr" / "report.md").read_text(encoding="utf-8")
-    assert "给定尺寸 → 导出值" in md and "| 16.0000 | mm |" in md and "| 53.7600 | mm |" in md
+    assert "给定尺寸 → 导出值" in md and "| 16.00 | mm |" in md and "| 53.76 | mm |" in md
 
 
 def test_crank_rocker_round_trip(tmp_path):

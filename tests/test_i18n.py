@@ -310,3 +310,47 @@ def test_batch_index_is_in_the_language_the_briefs_share(tmp_path):
     assert _index_lang(Lang("zh"), english) == "zh"
     assert _index_lang(None, [brief("d", "zh_TW")]) == "zh" and i18n.variant() == "zh_TW"
     i18n.set_variant(None)
+
+
+def test_traditional_data_names_are_the_conversion_of_the_data_tables():
+    """locale/zh_TW.data.json holds every Chinese text of the data tables (materials,
+    transmissions, load classes: the ``*_zh`` fields) that the zh_TW conversion changes,
+    converted the way zh_TW.po is (OpenCC s2twp, python tools/i18n.py tw)."""
+    opencc = pytest.importorskip("opencc")
+    conv = opencc.OpenCC("s2twp")
+    texts = _tool().data_texts()
+    assert {"45钢 调质", "V带传动", "开式直齿圆柱齿轮传动"} <= texts
+    i18n.data_names.cache_clear()
+    want = {t: conv.convert(t) for t in texts if conv.convert(t) != t}
+    assert i18n.data_names("zh_TW") == want
+    assert i18n.data_names("zh") == {}
+
+
+def test_data_text_converts_in_a_traditional_run_only(monkeypatch):
+    assert i18n.data_text("45钢 调质", "zh") == "45钢 调质"
+    assert i18n.data_text("45钢 调质", "zh_TW") == "45鋼 調質"
+    assert i18n.data_text("not in the tables", "zh_TW") == "not in the tables"
+    monkeypatch.setattr(i18n, "_variant", "zh_TW")        # a zh_TW run asks for "zh"
+    assert i18n.data_text("45钢 调质", "zh") == "45鋼 調質"
+    assert i18n.data_text("45钢 调质", "en") == "45钢 调质"
+
+
+@pytest.mark.e2e
+def test_a_traditional_report_writes_the_data_tables_names_converted(tmp_path):
+    """The shaper's drive names its stages and materials from the data tables: in the zh_TW
+    report none of them is left in Simplified characters, each is in its converted form."""
+    import subprocess
+    import sys
+
+    md = {}
+    for lang in ("zh", "zh_TW"):
+        run = subprocess.run([sys.executable, "-m", "mechdesign", "run", str(ROOT / "designs" / "shaper.yaml"),
+                              "--lang", lang, "--format", "md", "-o", str(tmp_path / lang)],
+                             capture_output=True, text=True)
+        assert run.returncode == 0, run.stderr
+        md[lang] = (tmp_path / lang / "report.md").read_text(encoding="utf-8")
+    names = i18n.data_names("zh_TW")
+    shown = [s for s in names if s in md["zh"]]
+    assert len(shown) >= 4, shown                  # stages and materials of the shaper's drive
+    assert not [s for s in shown if s in md["zh_TW"]]
+    assert all(names[s] in md["zh_TW"] for s in shown), [names[s] for s in shown if names[s] not in md["zh_TW"]]

@@ -62,7 +62,8 @@ CASES = [
     ("pointed-drive-tooth", "furnace_drive", {"drive.stages.{spur}.z1": 14, "drive.stages.{spur}.x1": 1.2},
      2, ["drive.stages[{spur}].x1", "cannot be cut"]),
     ("negative-dedendum", "furnace_drive", {"drive.stages.{spur}.x1": 1.4}, 0,
-     ["negative dedendum", "pointed tooth", "reduce drive.stages[{spur}].x1"]),
+     # the fix in words, the brief field after the text on the terminal (not in the report)
+     ["negative dedendum", "pointed tooth", "reduce its shift", "[drive.stages[{spur}].x1]"]),
     # a chain stage with z1 = 1 was accepted
     ("chain-one-tooth", "furnace_drive", {"drive.stages.{spur}": {"type": "chain", "z1": 1, "z2": 40}},
      2, ["drive.stages.{spur}.z1", "at least 9 teeth"]),

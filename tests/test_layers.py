@@ -154,6 +154,29 @@ def test_import_graph_has_no_cycles():
     assert cycles == [], "import cycles:\n" + "\n".join(", ".join(c) for c in cycles)
 
 
+def test_computation_imports_no_render():
+    """core, stages, machines' stage modules and mechdesign.numbers (the number rule's digits,
+    shared with render) reach no render module, directly or through another module."""
+    tool = _tool()
+    graph = tool.graph(SRC)
+    assert "mechdesign.numbers" in graph["mechdesign.render.fmt"]
+    assert "mechdesign.numbers" in graph["mechdesign.stages.drive_strength"]
+    start = [m for m in graph if m.startswith(("mechdesign.core", "mechdesign.stages"))
+             or m == "mechdesign.numbers" or m.endswith(".stages")]
+    bad = []
+    for m in start:
+        seen, todo = set(), [m]
+        while todo:
+            x = todo.pop()
+            for y in graph.get(x, ()):
+                if y.startswith("mechdesign.render"):
+                    bad.append(f"{m} → … {x} → {y}")
+                elif y not in seen:
+                    seen.add(y)
+                    todo.append(y)
+    assert not bad, "\n".join(sorted(set(bad))[:20])
+
+
 def test_import_graph_command_line():
     args = [sys.executable, str(ROOT / "tools" / "import_graph.py")]
     run = subprocess.run(args, capture_output=True, text=True, timeout=120)

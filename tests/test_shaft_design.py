@@ -302,7 +302,14 @@ def test_a_failing_override_is_a_named_failure():
     assert failing and all(w.field.startswith("drive.shafts[0].") for w in failing)
     free = _run(_brief(stages, load={"output_speed_rpm": 300, "power_kW": 4.0}))
     sd = free.shaft_designs[1]
-    assert any(f"≥ {sd.d_journal * 1e3:.0f}" in w.en or f"≥ {sd.d_seat * 1e3:.0f}" in w.en for w in failing)
+    assert any(f"at least {sd.d_journal * 1e3:.0f} mm" in w.en or f"at least {sd.d_seat * 1e3:.0f} mm" in w.en
+               for w in failing)
+    # the shaft's advice: codes and a message as data, no text of either language
+    given = _run(_brief(stages, load={"output_speed_rpm": 300, "power_kW": 4.0},
+                        shafts=[{"shaft": 2, "journal_mm": 20, "seat_mm": 22}])).shaft_designs[1]
+    assert given.advice and all(set(a) == {"check", "field", "fix"} and "msgid" in a["fix"]
+                                for a in given.advice)
+    assert {a["check"] for a in given.advice} <= {c.key for c in given.checks if not c.passed}
     # Ⅱ, as in the tables
     assert all(w.en.startswith("shaft Ⅱ") and w.zh.startswith("Ⅱ 轴") for w in failing)
 

@@ -289,7 +289,12 @@ def _with_check_names(doc):
     shaft's design ``steps`` are messages ({msgid, args}), no longer (zh, en) texts; those
     texts are made here again; a crank-rocker design the program names (optimum, given frame,
     given dimensions) holds its name as a message ``{msgid}``, no longer as 'zh / en'; a cycle
-    actuator (phase) the program names holds it as ``name`` (``label``) = {msgid, context}."""
+    actuator (phase) the program names holds it as ``name`` (``label``) = {msgid, context}.
+
+    Session 31: a drive shaft's ``advice`` (what to change when a given size fails) is
+    ``{check, field, fix}`` — the failing check's key, the brief field and the fix as a
+    message {msgid, args} — no longer [check name, field, zh, en]; the old shape is made here
+    (the fix's texts now say it in words, without the field path)."""
     try:
         from mechdesign.data import load_yaml
         from mechdesign.i18n import Msg, catalogue
@@ -368,6 +373,13 @@ def _with_check_names(doc):
             out["label"] = f"{label.text('zh')} / {label.text('en')}"
         if isinstance(node.get("steps"), list) and all(isinstance(s, dict) for s in node["steps"]):
             out["steps"] = [[decode(s).text("zh"), decode(s).text("en")] for s in node["steps"]]
+        # a shaft's advice (session 31): {check: key, field, fix: message as data}, was
+        # [check name (English), field, zh, en]
+        if isinstance(node.get("advice"), list) and all(isinstance(a, dict) for a in node["advice"]):
+            names = {c.get("key"): check_name(c).text("en") for c in node.get("checks") or ()
+                     if isinstance(c, dict) and "name" in c}
+            out["advice"] = [[names.get(a["check"], a["check"]), a["field"], decode(a["fix"]).text("zh"),
+                              decode(a["fix"]).text("en")] for a in node["advice"]]
         if {"code", "msgid", "args"} <= node.keys() and isinstance(node["args"], dict):
             found = Finding(node["code"], node["msgid"], node["args"], node.get("context"),
                             node.get("field") or "")

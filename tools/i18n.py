@@ -4,7 +4,8 @@
     python tools/i18n.py add MSGID MSGSTR [--context C]
     python tools/i18n.py add-json pairs.json   # [[msgid, msgstr] or [msgid, msgstr, context], ...]
     python tools/i18n.py prune            # drop entries no code or template uses any more
-    python tools/i18n.py tw               # regenerate zh_TW.po from zh.po (OpenCC s2twp)
+    python tools/i18n.py tw               # regenerate zh_TW.po from zh.po (OpenCC s2twp), and
+                                          # zh_TW.data.json: the data tables' *_zh texts converted
     python tools/i18n.py union A.po B.po  # after a merge conflict: the union of two versions → zh.po
 
 The msgid is the program's English text. Strings are found by Babel's extractors in
@@ -102,6 +103,37 @@ def add(pairs: list[list[str]]) -> int:
     return 1 if clashes else 0
 
 
+def data_texts() -> set[str]:
+    """The Chinese texts of the shipped data tables that a report shows: every value of a
+    ``*_zh`` key of ``src/mechdesign/data/*.yaml`` and of a ``*_zh`` column of its CSV files
+    (names of materials, transmissions, load classes …; the references keep the titles as
+    published). Converted for zh_TW into ``locale/zh_TW.data.json`` by ``tw``."""
+    import csv
+
+    import yaml
+
+    out: set[str] = set()
+
+    def walk(node, key=""):
+        if isinstance(node, dict):
+            for k, v in node.items():
+                walk(v, str(k))
+        elif isinstance(node, list):
+            for v in node:
+                walk(v, key)
+        elif isinstance(node, str) and key.endswith("_zh") and node:
+            out.add(node)
+
+    data = ROOT / "src" / "mechdesign" / "data"
+    for path in sorted(data.glob("*.yaml")):
+        walk(yaml.safe_load(path.read_text(encoding="utf-8")))
+    for path in sorted(data.glob("*.csv")):
+        lines = [x for x in path.read_text(encoding="utf-8").splitlines() if not x.startswith("#")]
+        for row in csv.DictReader(lines):
+            out.update(v for k, v in row.items() if k and k.endswith("_zh") and v)
+    return out
+
+
 def main(argv: list[str]) -> int:
     if not argv:
         print(__doc__)
@@ -143,6 +175,9 @@ def main(argv: list[str]) -> int:
             if m.id and m.string:
                 out.add(m.id, conv.convert(m.string), context=m.context)
         save(out, "zh_TW")
+        names = {t: conv.convert(t) for t in data_texts() if conv.convert(t) != t}
+        (LOCALE / "zh_TW.data.json").write_text(
+            json.dumps(dict(sorted(names.items())), ensure_ascii=False, indent=1) + "\n", encoding="utf-8")
         return 0
     if cmd == "union":
         with open(args[0], "rb") as fa, open(args[1], "rb") as fb:

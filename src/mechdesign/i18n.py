@@ -91,6 +91,32 @@ def variant() -> str | None:
     return _variant
 
 
+@lru_cache(maxsize=None)
+def data_names(name: str) -> dict:
+    """The Chinese texts of the shipped data tables (``*_zh`` fields of ``data/*.yaml``:
+    materials, transmissions …) in the Chinese variant ``name`` (``zh_TW``):
+    ``locale/<name>.data.json``, written with the variant's catalogue by the same conversion
+    (``python tools/i18n.py tw``); {} when the variant has none."""
+    import json
+
+    path = resources.files("mechdesign.locale") / f"{name}.data.json"
+    try:
+        return json.loads(path.read_text(encoding="utf-8"))
+    except (FileNotFoundError, OSError):
+        return {}
+
+
+def data_text(text: str, lang: str = "zh") -> str:
+    """A Chinese text of a data table (a material's or a stage's ``name_zh``) in ``lang``:
+    in a Chinese variant (``zh_TW``, or ``zh`` in a zh_TW run) its converted form, else the
+    text itself (a text the conversion does not know is returned unchanged)."""
+    lang = getattr(lang, "lang", lang)
+    name = lang if lang not in ("zh", "en") else (_variant if lang == "zh" else None)
+    if not name or base(name) != "zh" or not isinstance(text, str):
+        return text
+    return data_names(name).get(text, text)
+
+
 def N_(msgid: str) -> str:
     """Mark ``msgid`` for the catalogues; return it unchanged (translated where used)."""
     return msgid

@@ -6,7 +6,7 @@ from __future__ import annotations
 import numpy as np
 
 from ..stages.drive import shaft_numeral
-from ..i18n import N_, tr
+from ..i18n import N_, data_text, tr
 from ..stages.findings import Named, decode
 from .fmt import f, grouped, md_text, percent, rpm, sig
 
@@ -135,7 +135,7 @@ def data_assumption_rows(codes, lang: str) -> list[str]:
             x = _mat_name(key, _)
         elif kind == "shaft_material":
             m = cat.shaft_material(key)
-            x = m.name_zh if _.zh else m.name_en
+            x = data_text(m.name_zh) if _.zh else m.name_en
         out.append(_(_ASSUMED[kind], x=md_text(x)) if kind in _ASSUMED else md_text(code))
     return out
 
@@ -146,7 +146,7 @@ def _mat_name(key: str, _) -> str:
     for get in (cat.gear_material, cat.worm_wheel_material):
         try:
             m = get(key)
-            return m.name_zh if _.zh else m.name_en
+            return data_text(m.name_zh) if _.zh else m.name_en
         except KeyError:
             continue
     return key

@@ -57,21 +57,9 @@ enters an output format, so that it appears literally and cannot inject markup:
 from __future__ import annotations
 
 import re
-from decimal import Decimal
 
 from ..i18n import tr
-
-
-GROUP = "\u202f"      # narrow no-break space between digit groups (GB 3101, ISO 80000-1)
-
-
-def _group(text: str) -> str:
-    """Digits of the integer part grouped by threes when it has five or more digits."""
-    sign = "-" if text.startswith("-") else ""
-    head, dot, tail = text[len(sign):].partition(".")
-    if len(head) >= 5 and head.isdigit():
-        head = f"{int(head):,}".replace(",", GROUP)
-    return sign + head + dot + tail
+from ..numbers import GROUP, fixed as f, grouped_digits as _group, sig  # noqa: F401  (the rule's digits: mechdesign/numbers.py)
 
 
 def grouped(text: str) -> str:
@@ -80,36 +68,6 @@ def grouped(text: str) -> str:
     narrow no-break space, four digits or fewer left together; anything that is not a plain
     number (a designation such as ``6204`` is never passed here) is returned unchanged."""
     return _group(text) if re.fullmatch(r"-?\d+(\.\d+)?", text) else text
-
-
-def f(x: float, digits: int = 2, group: bool = False) -> str:
-    """Fixed-point number with ``digits`` decimals; a rounded zero never shows as '-0.00'.
-    ``group``: an integer part of five or more digits grouped by threes (``12 698.4``) —
-    for text and table cells, not inside a formula (``$…$``), where digits stay together."""
-    text = f"{x:.{digits}f}"
-    if text.startswith("-") and float(text) == 0.0:
-        text = text[1:]
-    return _group(text) if group else text
-
-
-def sig(x: float, n: int = 4, group: bool = True, ref: float = 0.0) -> str:
-    """``x`` with ``n`` significant digits in fixed-point notation, never E-notation:
-    ``0.065999`` → ``0.06600``, ``9999.5`` → ``10 000``, ``48000`` → ``48 000``; a value
-    with more than ``n`` integer digits keeps all of them, rounded to a unit (``12738.16`` →
-    ``12 738``, never ``12 740``: an engineer does not write a torque's units digit as a
-    zero); the significant trailing zeros are kept; zero is ``0``; NaN or infinite is ``—``.
-    ``group=False`` inside a formula (digits together). ``ref``: the largest magnitude of
-    the values written with ``x`` (a range, a mean); an ``x`` within 10⁻⁹ of it of zero is
-    a rounding residue of zero and written ``0`` (not ``0.0000000000000007194``)."""
-    if x != x or abs(x) == float("inf"):
-        return "—"
-    if x == 0 or abs(x) <= 1e-9 * abs(ref):
-        return "0"
-    if abs(x) >= 10 ** n:                   # more integer digits than n: all of them kept
-        return f(x, 0, group=group)
-    rounded = Decimal(f"{x:.{n - 1}e}")
-    decimals = max(n - 1 - rounded.adjusted(), 0)
-    return f(float(rounded), decimals, group=group)
 
 
 def time_ratio(K: float) -> str:

@@ -24,7 +24,7 @@ from pathlib import Path
 from typing import Any
 
 from .fmt import grouped, in_lang, md_text, verdict
-from ..i18n import N_, tr
+from ..i18n import N_, data_text, tr
 from .labels import pgettext, translated
 
 # --------------------------------------------------------------------------- references
@@ -155,7 +155,7 @@ def _describe(node: dict, path: tuple, parents: tuple, names: dict, actuator) ->
 
         row = load_yaml("transmissions.yaml").get(stage.get("kind"), {})   # the stage's names
         group = _both(N_("stage {n}: {name_en}"), n=stage.get("index", 0) + 1,
-                      name_zh=row.get("name_zh", ""), name_en=row.get("name_en", ""))
+                      name_zh=data_text(row.get("name_zh", "")), name_en=row.get("name_en", ""))
     elif "shaft_designs" in keys:                         # a shaft's strength, bearing, key checks
         from .drive_report import _shaft_name
 

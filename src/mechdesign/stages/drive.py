@@ -18,7 +18,7 @@ from ..core.fields import q
 from ..data import load_csv, load_yaml
 from . import drive_elements as de, drive_strength as ds
 from ..i18n import N_, tr
-from .findings import CheckNames, Finding, Msg, Named, Pair, check_name, finding, zh_en
+from .findings import CheckNames, Finding, Msg, Named, check_name, decode, finding, zh_en
 
 
 @dataclass(frozen=True)
@@ -354,15 +354,16 @@ def undercut_findings(results) -> list[Finding]:
         if hasattr(g, "x_min1"):
             for gd, x_min, key in ((g.g1, g.x_min1, "1"), (g.g2, g.x_min2, "2")):
                 if gd.x < x_min - 1e-9:
+                    # the limits in words, no brief field in the text: the finding's field
+                    # (the terminal prints it after the text)
                     out.append(finding(
                         "undercut",
-                        N_("stage {n} ({name}): the {who} (z{key} = {z}) is undercut: z{key} < z_min "
-                           "= {z_min:.1f} and x{key} = {x:g} < x_min = {x_min:.3f}; set "
-                           "{here}.x{key} ≥ {x_min:.3f} (a positive shift) or {here}.z{key} ≥ "
-                           "{need}."), field=here, n=r.index + 1,
-                        name=Named("transmissions", r.kind), who=_gear(key), key=key, z=gd.z,
-                        z_min=g.z_min, x=gd.x, x_min=x_min, here=here,
-                        need=math.ceil(g.z_min - 1e-9)))
+                        N_("stage {n} ({name}): the {who} (z = {z}) is undercut: it has fewer teeth "
+                           "than the least number without undercut, {z_min:.1f}, and its shift x = "
+                           "{x:g} is below the least shift {x_min:.3f}; use a positive shift x ≥ "
+                           "{x_min:.3f} or at least {need} teeth."), field=f"{here}.x{key}",
+                        n=r.index + 1, name=Named("transmissions", r.kind), who=_gear(key), z=gd.z,
+                        z_min=g.z_min, x=gd.x, x_min=x_min, need=math.ceil(g.z_min - 1e-9)))
         elif hasattr(g, "beta"):
             z_min = 2.0 / math.sin(math.radians(20.0)) ** 2
             for key, z in (("1", r.z1), ("2", r.z2)):
@@ -373,11 +374,12 @@ def undercut_findings(results) -> list[Finding]:
                     need = math.ceil(z_min * math.cos(g.beta) ** 3 - 1e-9)
                     out.append(finding(
                         "undercut",
-                        N_("stage {n} ({name}): z{key} = {z} has the equivalent tooth number z_v = "
-                           "z/cos³β = {zv:.2f} < z_min = {z_min:.1f}, so the gear is undercut; set "
-                           "{here}.z{key} ≥ {need} or use a larger helix angle."), field=here,
-                        n=r.index + 1, name=Named("transmissions", r.kind), key=key, z=z, zv=zv,
-                        z_min=z_min, here=here, need=need))
+                        N_("stage {n} ({name}): the {who} (z = {z}) is undercut: its equivalent tooth "
+                           "number z_v = z/cos³β = {zv:.2f} is below the least number without "
+                           "undercut, {z_min:.1f}; give it at least {need} teeth or use a larger "
+                           "helix angle."), field=f"{here}.z{key}",
+                        n=r.index + 1, name=Named("transmissions", r.kind), who=_gear(key), z=z,
+                        zv=zv, z_min=z_min, need=need))
     return out
 
 
@@ -400,8 +402,9 @@ def tooth_findings(results) -> list[Finding]:
             head = Msg(N_("stage {n} ({name}): the {who} (z{key} = {z}, x{key} = {x:g})"),
                        n=r.index + 1, name=Named("transmissions", r.kind), who=_gear(key), key=key,
                        z=gd.z, x=gd.x)
-            fix = (Msg(N_("reduce {here}.x{key}"), here=here, key=key) if gd.x > 0
-                   else Msg(N_("use more teeth ({here}.z{key})"), here=here, key=key))
+            # the fix in words; the brief field is the finding's (the error names it first)
+            fix, fld = ((Msg(N_("reduce its shift")), f"{here}.x{key}") if gd.x > 0
+                        else (Msg(N_("use more teeth")), f"{here}.z{key}"))
             if gd.sa <= 0:
                 raise DriveDesignError(Msg(
                     N_("{here}.x{key} = {x:g}: {head} has a tip thickness s_a = {sa:.2f} mm ≤ 0: its "
@@ -411,14 +414,14 @@ def tooth_findings(results) -> list[Finding]:
                 out.append(finding(
                     "pointed",
                     N_("{head} has a tip thickness s_a = {sa:.3g} mm < 0.25 m = {least:.2f} mm "
-                       "(pointed tooth); {fix}."), field=here, head=head, sa=gd.sa * 1e3,
+                       "(pointed tooth); {fix}."), field=fld, head=head, sa=gd.sa * 1e3,
                     least=0.25 * g.m * 1e3, fix=fix))
             if gd.hf < 0:
                 out.append(finding(
                     "dedendum",
                     N_("{head} has a negative dedendum h_f = (h_a* + c* − x)·m = {hf:.2f} mm: its "
-                       "root circle lies outside the pitch circle; reduce {here}.x{key}."),
-                    field=here, head=head, hf=gd.hf * 1e3, here=here, key=key))
+                       "root circle lies outside the pitch circle; reduce its shift."),
+                    field=f"{here}.x{key}", head=head, hf=gd.hf * 1e3))
     return out
 
 
@@ -427,14 +430,13 @@ def _strength_warnings(results, shaft_designs) -> tuple[Finding, ...]:
     for r in results:
         for c in r.design.checks if r.design else ():
             if not c.passed:
-                out.append(_failed(c, _stage(r), stage=r.index))
+                out.append(_failed(c, _stage(r), stage=r.index, stage_type=r.type))
     for s in shaft_designs:
         name = shaft_numeral(s.index)
-        advice = {a[0]: a[1:] for a in s.advice}
+        advice = {a["check"]: a for a in s.advice}
         for c in s.checks:
             if not c.passed:
-                out.append(_failed(c, Msg(N_("shaft {name}"), name=name),
-                                   advice.get(check_name(c).text("en"))))
+                out.append(_failed(c, Msg(N_("shaft {name}"), name=name), advice.get(c.key)))
     return tuple(out)
 
 
@@ -456,11 +458,13 @@ def _gear(key: str) -> Msg:
     return Msg.pgettext("gear", "pinion") if key == "1" else Msg.pgettext("gear", "wheel")
 
 
-def _failed(c, where: Msg, advice=None, stage: int | None = None) -> Finding:
-    """A failed check of the drive stage or shaft ``where`` as a named finding; ``advice`` =
-    (field, zh, en): the override that
-    fails and what to change; ``stage``: the drive stage whose check it is (belts, gear
-    geometry and the worm's deflection name their own fix); else the generic advice."""
+def _failed(c, where: Msg, advice=None, stage: int | None = None, stage_type: str = "") -> Finding:
+    """A failed check of the drive stage or shaft ``where`` as a named finding; ``advice``:
+    an entry of :attr:`~.drive_strength.ShaftDesign.advice` ({check, field, fix}: the
+    override that fails and what to change, as a catalogue message); ``stage``: the drive
+    stage whose check it is (belts, gear geometry and the worm's deflection name their own
+    fix); else the generic advice. The text names no brief field: the finding's ``field``
+    does (the terminal prints it after the text)."""
     from ..core.strength import COURSE_SCALE
 
     v, a = c.value * COURSE_SCALE[c.unit], c.allowable * COURSE_SCALE[c.unit]
@@ -468,32 +472,29 @@ def _failed(c, where: Msg, advice=None, stage: int | None = None) -> Finding:
     rel = ">" if c.sense == "le" else "<"
     unit = "" if c.unit == "1" else f" {c.unit}"
     if advice is not None:
-        field, zh, en = advice
         return finding("strength",
-                       N_("{where}: {check} fails ({v} {rel} {a}{unit}) with the brief's {field}: "
-                          "{advice}."), field=field, where=where,
+                       N_("{where}: {check} fails ({v} {rel} {a}{unit}) with the size the brief "
+                          "gives: {advice}."), field=advice["field"], where=where,
                        check=check_name(c), v=v, rel=rel, a=a, unit=unit,
-                       advice=en if isinstance(en, Msg) else Pair(zh, en))
+                       advice=decode(advice["fix"]))
     fix = Msg(N_("enlarge it or use a better material"))
     extra = {}
     if stage is not None and c.key in de.FIXES:      # belts, gear geometry, worm deflection
-        fix = Msg(de.FIXES[c.key], i=stage)
-        extra = {"field": f"drive.stages[{stage}]"}
+        fixes = de.FIXES[c.key]
+        msgid, name = fixes.get(stage_type, next(iter(fixes.values()))) if isinstance(fixes, dict) else fixes
+        fix = Msg(msgid)
+        extra = {"field": f"drive.stages[{stage}]" + (f".{name}" if name else "")}
     return finding("strength", N_("{where}: {check} fails ({v} {rel} {a}{unit}): {fix}."),
                    where=where, check=check_name(c), v=v, rel=rel, a=a, unit=unit,
                    fix=fix, **extra)
 
 
 def _sig4(x: float) -> str:
-    """4 significant digits in fixed-point notation (48000 → '48000', never '4.8e+04'),
-    the report's rule for forces, stresses and lives (render.fmt.sig, without its digit
-    grouping: a finding is also a terminal line)."""
-    from decimal import Decimal
+    """4 significant digits, the number rule's (:func:`mechdesign.numbers.sig`) for forces,
+    stresses and lives, without its digit grouping: a finding is also a terminal line."""
+    from ..numbers import sig
 
-    if x == 0 or x != x:
-        return "0" if x == 0 else "nan"
-    d = Decimal(f"{x:.3e}")
-    return f"{float(d):.{max(3 - d.adjusted(), 0)}f}"
+    return sig(x, 4, group=False)
 
 
 # ------------------------------------------------------------------------------------

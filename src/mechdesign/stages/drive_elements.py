@@ -37,22 +37,26 @@ E_STEEL = 206e9          # Pa
 EPS_ALPHA_MIN = 1.2
 D1_DEFAULT = 0.100       # m, the program's default small datum diameter
 
-#: What to change when one of these checks fails (catalogue msgids), {i} the stage's index.
+#: What to change when one of these checks fails: (catalogue msgid, the brief field of the
+#: stage it is about, "" for the stage itself), or such pairs by the stage's type. The text
+#: says it in words; the finding holds the field (``drive.stages[i].<field>``), which the
+#: terminal prints after the text.
 FIXES = {
-    "belt_d_min": N_("give a larger drive.stages[{i}].d1_mm"),
-    "belt_speed_min": N_("give a larger drive.stages[{i}].d1_mm (v grows with d1)"),
-    "belt_speed_max": N_("give a smaller drive.stages[{i}].d1_mm"),
-    "belt_wrap": N_("give a larger drive.stages[{i}].center_distance_mm or a smaller ratio"),
-    "belt_count": N_("use a larger section (drive.stages[{i}].section) or a larger d1_mm"),
-    "tooth_tip": N_("reduce the shift drive.stages[{i}].x1/x2 or use more teeth"),
-    "undercut": N_("give a positive shift drive.stages[{i}].x1/x2 ≥ x_min or more teeth"),
-    "contact_ratio": N_("use more teeth (a smaller module) or smaller shifts"),
-    "chain_z1": N_("give more teeth drive.stages[{i}].z1 (≥ 17)"),
-    "chain_z2": N_("give the chain a smaller ratio or fewer teeth z1"),
-    "chain_power": N_("give a larger chain (drive.stages[{i}].chain) or more rows (rows)"),
-    "chain_speed": N_("give a smaller chain or fewer teeth z1"),
-    "chain_static": N_("give a larger chain or more rows"),
-    "worm_deflection": N_("give a shorter bearing span or a larger worm diameter factor q"),
+    "belt_d_min": (N_("give a larger small pulley diameter d1"), "d1_mm"),
+    "belt_speed_min": (N_("give a larger small pulley diameter d1 (v grows with d1)"), "d1_mm"),
+    "belt_speed_max": (N_("give a smaller small pulley diameter d1"), "d1_mm"),
+    "belt_wrap": (N_("give a larger centre distance or a smaller ratio"), "center_distance_mm"),
+    "belt_count": (N_("use a larger belt section or a larger small pulley diameter d1"), "section"),
+    "tooth_tip": (N_("reduce the shifts x1, x2 or use more teeth"), "x1"),
+    "undercut": {"spur": (N_("give a positive shift x1, x2 at least the least shift, or more teeth"), "x1"),
+                 "helical": (N_("give more teeth or a larger helix angle"), "z1")},
+    "contact_ratio": (N_("use more teeth (a smaller module) or smaller shifts"), ""),
+    "chain_z1": (N_("give the small sprocket more teeth z1 (at least 17)"), "z1"),
+    "chain_z2": (N_("give the chain a smaller ratio or fewer teeth z1"), ""),
+    "chain_power": (N_("give a larger chain or more rows"), "chain"),
+    "chain_speed": (N_("give a smaller chain or fewer teeth z1"), ""),
+    "chain_static": (N_("give a larger chain or more rows"), "chain"),
+    "worm_deflection": (N_("give a shorter bearing span or a larger worm diameter factor q"), ""),
 }
 
 

@@ -34,8 +34,9 @@ from ..core.fields import q
 from ..data import catalogues as cat
 from ..core.errors import Join
 from ..i18n import N_, Msg, tr
+from ..numbers import grouped_digits, sig
 from . import drive_elements as de
-from .findings import Named, check_name, encode
+from .findings import Named, encode
 
 K_V, K_BETA, S_H, S_F = 1.1, 1.1, 1.0, 1.4
 A0, KEYWAY = 112.0, 0.05
@@ -123,8 +124,10 @@ class ShaftDesign:
     steps: tuple[dict, ...] = q("", "the design steps, each rule with its numbers: a catalogue "
                                 "message {msgid, args} (see Finding.args), translated where shown",
                                 default=())
-    advice: tuple[tuple[str, str, str, str], ...] = q(
-        "", "what to change when an override fails: (check name_en, field, zh, en)", default=())
+    advice: tuple[dict, ...] = q(
+        "", "what to change when an override fails, as codes: {check: the failing check's key, "
+        "field: the brief field, fix: a catalogue message {msgid, args} (see Finding.args), "
+        "translated where shown}", default=())
 
 
 def _phi_d(s, is_open: bool) -> float:
@@ -609,9 +612,10 @@ def shaft_designs(dp, designs, shafts, peak_factor, peak_from_shaft, kinds,
         checks = [st.shaft_diameter_check(min(d for d in (d_end, dj) if d is not None), sh.power, sh.speed_rpm,
                                           a0, KEYWAY), ev["bend"]]
         if ch is not None and not checks[0].passed:
-            fld = f"drive.shafts[{ch.index}].{'end_mm' if d_end is not None else 'journal_mm'}"
+            name = "end_mm" if d_end is not None else "journal_mm"
             need = st.standard_diameter(d_min, series_d)
-            advice = advice + ((check_name(checks[0]).text("en"), fld, f"{fld} ≥ {_mmf(need)}", f"{fld} ≥ {_mmf(need)}"),)
+            advice = advice + (_advice_entry(checks[0].key, f"drive.shafts[{ch.index}].{name}",
+                                             Msg(_AT_LEAST[name], d=_mmf(need))),)
         if ev["life"] is not None:
             checks.append(ev["life"])
         if ev["static"] is not None:
@@ -665,9 +669,21 @@ def _loop_text(log) -> list[dict]:
     return out
 
 
+#: A shaft section the brief may give, and the fix that asks for at least a diameter.
+_AT_LEAST = {"end_mm": N_("give the overhung end at least {d} mm"),
+             "journal_mm": N_("give the journal at least {d} mm"),
+             "seat_mm": N_("give the seat at least {d} mm")}
+
+
+def _advice_entry(check: str, field: str, fix: Msg) -> dict:
+    """An entry of :attr:`ShaftDesign.advice`: the failing check's key, the brief field and
+    the fix as a catalogue message stored as data."""
+    return {"check": check, "field": field, "fix": encode(fix)}
+
+
 def _advice(ch, ev, dims, free_ev, free_dims):
-    """For each failing check of an overridden shaft: the field to change and the value the
-    design would take."""
+    """For each failing check of an overridden shaft: the field to change and what the design
+    would take there, in words (the field is not written in the text)."""
     out = []
     here = f"drive.shafts[{ch.index}]"
     fe, fj, fs = free_dims
@@ -675,44 +691,37 @@ def _advice(ch, ev, dims, free_ev, free_dims):
         if c is None or c.passed:
             continue
         if c.key == "shaft_bending":
-            parts = [(f"{here}.{n}", v) for n, v, given in (("end_mm", fe, ch.end), ("journal_mm", fj, ch.journal),
-                                                              ("seat_mm", fs, ch.seat)) if given and v is not None]
-            fix = (Msg("{fix}", fix=Join(Msg.pgettext("list", "; "), [f"{f} ≥ {_mmf(v)}" for f, v in parts]))
-                   if parts else Msg(N_("a stronger material")))
-            field = parts[0][0] if parts else f"{here}.material"
+            parts = [(n, v) for n, v, given in (("end_mm", fe, ch.end), ("journal_mm", fj, ch.journal),
+                                                ("seat_mm", fs, ch.seat)) if given and v is not None]
+            fix = (Join(Msg.pgettext("list", "; "), [Msg(_AT_LEAST[n], d=_mmf(v)) for n, v in parts])
+                   if parts else Msg(N_("use a stronger material")))
+            field = f"{here}.{parts[0][0]}" if parts else f"{here}.material"
+            if parts:
+                fix = Msg("{fix}", fix=fix)
         elif c.key in ("bearing_life", "bearing_static"):
             b = free_ev["bearing"]
             field = f"{here}.bearing" if ch.bearing else f"{here}.journal_mm"
-            fix = (Msg(N_("{field}: the design takes {designation}"), field=field,
-                       designation=b.designation) if ch.bearing and b else f"{field} ≥ {_mmf(fj)}")
+            fix = (Msg(N_("give bearing {designation}, the design's choice"), designation=b.designation)
+                   if ch.bearing and b else Msg(_AT_LEAST["journal_mm"], d=_mmf(fj)))
         else:
             field = f"{here}.key_length_mm" if ch.key_length else f"{here}.seat_mm"
-            fix = (Msg(N_("remove {field} (the design takes the longest key the hub allows, or "
-                          "two keys)"), field=field) if ch.key_length else f"{field} ≥ {_mmf(fs)}")
-        # the English as a message (a str: results.json holds its text), so that a finding can
-        # hold the message, not the two texts
-        out.append((check_name(c).text("en"), field, fix.text("zh") if isinstance(fix, Msg) else fix, fix))
+            fix = (Msg(N_("leave the key length to the design (it takes the longest key the hub "
+                          "allows, or two keys)")) if ch.key_length
+                   else Msg(_AT_LEAST["seat_mm"], d=_mmf(fs)))
+        out.append(_advice_entry(c.key, field, fix))
     return tuple(out)
 
 
 def _text_num(x: float) -> str:
     """A whole number for running text: five or more digits grouped by threes with a narrow
-    no-break space (48 000), as render/fmt.py's rule writes numbers outside formulas."""
-    text = f"{x:g}" if abs(x) < 1e5 else f"{x:.0f}"
-    head, dot, tail = text.partition(".")
-    if len(head.lstrip("-")) >= 5 and head.lstrip("-").isdigit():
-        head = f"{int(head):,}".replace(",", "\u202f")
-    return head + dot + tail
+    no-break space (48 000), as the number rule writes numbers outside formulas."""
+    return grouped_digits(f"{x:g}" if abs(x) < 1e5 else f"{x:.0f}")
 
 
 def _sig(x: float, digits: int) -> str:
-    """``digits`` significant digits in fixed-point notation, never fewer than the integer
-    digits (12807.6 → '12808', not '12810' or 1.281e+04: the report's number rule)."""
-    if x == 0 or x != x:
-        return "0"
-    e = math.floor(math.log10(abs(x)))
-    digits = max(digits, e + 1)
-    return f"{round(x, digits - 1 - e):.{max(digits - 1 - e, 0)}f}"
+    """``digits`` significant digits, digits together (the design steps' formulas): the
+    number rule's :func:`mechdesign.numbers.sig`."""
+    return sig(x, digits, group=False)
 
 
 def _steps(sh, mat, a0, d_min, dims, shoulder, T, peak, peak_factor, lf, ev, span, dp):

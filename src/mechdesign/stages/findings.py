@@ -24,7 +24,7 @@ from dataclasses import dataclass
 from functools import lru_cache
 
 from ..core.fields import q
-from ..i18n import Given, Msg, Pair, _field_text, base, catalogue, gettext, tr  # noqa: F401
+from ..i18n import Given, Msg, Pair, _field_text, base, catalogue, data_text, gettext, tr  # noqa: F401
 
 
 @dataclass(frozen=True)
@@ -90,7 +90,7 @@ class Named:
         file, _, section = self.table.partition(".")
         rows = load_yaml(f"{file}.yaml")
         row = (rows[section] if section else rows)[self.key]
-        return row["name_zh"] if base(lang) == "zh" else row["name_en"]
+        return data_text(row["name_zh"], lang) if base(lang) == "zh" else row["name_en"]
 
     def __reduce__(self):
         return (Named, (self.table, self.key))

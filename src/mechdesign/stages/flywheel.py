@@ -152,7 +152,7 @@ def rim_findings(rim: fw.RimFlywheel, field: str = "") -> list[Finding]:
         out.append(finding(
             "rim_proportion",
             N_("the flywheel rim height H = {H:.1f} mm exceeds its mean radius D/2 = {R:.1f} mm: "
-               "it is no longer a thin rim and m = 4J_F/D² is a poor estimate; increase {field} or "
-               "put the flywheel on a faster shaft."), field=field, H=rim.height * 1e3,
+               "it is no longer a thin rim and m = 4J_F/D² is a poor estimate; increase the rim's "
+               "mean diameter D or put the flywheel on a faster shaft."), field=field, H=rim.height * 1e3,
             R=rim.diameter * 500))
     return out

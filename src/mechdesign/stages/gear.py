@@ -73,12 +73,12 @@ def gear_findings(g: gears.SpurPair, prefix: str = "gear_pair") -> tuple[Finding
                 field=f"{prefix}.x{name}", name=name, z=gd.z, z_min=g.z_min, x=gd.x, x_min=x_min,
                 need=need))
         if gd.sa < MIN_TIP_THICKNESS * g.m:
-            fix = (Msg(N_("reduce its shift {prefix}.x{name}"), prefix=prefix, name=name) if gd.x > 0
-                   else Msg(N_("use more teeth ({prefix}.z{name})"), prefix=prefix, name=name))
+            fix, field = ((Msg(N_("reduce its shift")), f"{prefix}.x{name}") if gd.x > 0
+                          else (Msg(N_("use more teeth")), f"{prefix}.z{name}"))
             out.append(finding(
                 "pointed",
                 N_("gear {name} tip thickness s_a = {sa:.2f} mm < 0.25 m (pointed tooth); {fix}."),
-                name=name, sa=gd.sa * 1e3, fix=fix))
+                field=field, name=name, sa=gd.sa * 1e3, fix=fix))
     if g.contact_ratio < MIN_CONTACT_RATIO:
         out.append(finding(
             "contact_ratio",

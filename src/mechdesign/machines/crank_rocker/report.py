@@ -11,7 +11,7 @@ from ...fileio import atomic_open
 from ...render.figures import figure
 from ...render.fmt import e as fe
 from ...render.fmt import verdict
-from ...render.fmt import f, md_meta, md_text, mpl_text, time_ratio
+from ...render.fmt import f, md_meta, md_text, mpl_text, sig, time_ratio
 from ...render.labels import LabelTable, mpl_point, subscripted
 from ...i18n import N_, Msg, tr
 
@@ -261,12 +261,20 @@ def make_figures(r: dict, fig_dir: Path, lang: str) -> dict[str, str]:
 
 # ------------------------------------------------------------------------------ context
 
-def _mm(x: float, d: int = 4) -> str:
+def _mm(x: float, d: int = 2) -> str:
+    """A length in mm by the number rule (0.01 mm); the verification table's simulated values
+    ask for 4 decimals (checked against a closed form with their difference)."""
     return f(x * MM, d)
 
 
-def _deg(x: float, d: int = 4) -> str:
+def _deg(x: float, d: int = 2) -> str:
+    """An angle in degrees by the number rule (0.01°)."""
     return f(x * DEG, d)
+
+
+def _cos(x: float) -> str:
+    """A cosine in a formula: 4 significant digits (the rule's intermediate values)."""
+    return sig(x, 4, group=False)
 
 
 def _gamma_eqs(d) -> tuple[str, str]:
@@ -274,10 +282,10 @@ def _gamma_eqs(d) -> tuple[str, str]:
     a, b, c, l4 = (x * MM for x in (d.crank, d.coupler, d.rocker, d.frame))
     c1 = (b * b + c * c - (l4 - a) ** 2) / (2 * b * c)
     c2 = (b * b + c * c - (l4 + a) ** 2) / (2 * b * c)
-    e1 = (rf"\cos\delta' = \frac{{{f(b, 4)}^2 + {f(c, 4)}^2 - ({f(l4, 4)} - {f(a, 4)})^2}}{{2 \times {f(b, 4)} "
-          rf"\times {f(c, 4)}}} = {f(c1, 4)},\quad \delta' = {f(np.degrees(np.arccos(c1)), 4)}^\circ")
-    e2 = (rf"\cos\delta'' = \frac{{{f(b, 4)}^2 + {f(c, 4)}^2 - ({f(l4, 4)} + {f(a, 4)})^2}}{{2 \times {f(b, 4)} "
-          rf"\times {f(c, 4)}}} = {f(c2, 4)},\quad \delta'' = {f(np.degrees(np.arccos(c2)), 4)}^\circ")
+    e1 = (rf"\cos\delta' = \frac{{{f(b, 2)}^2 + {f(c, 2)}^2 - ({f(l4, 2)} - {f(a, 2)})^2}}{{2 \times {f(b, 2)} "
+          rf"\times {f(c, 2)}}} = {_cos(c1)},\quad \delta' = {f(np.degrees(np.arccos(c1)), 2)}^\circ")
+    e2 = (rf"\cos\delta'' = \frac{{{f(b, 2)}^2 + {f(c, 2)}^2 - ({f(l4, 2)} + {f(a, 2)})^2}}{{2 \times {f(b, 2)} "
+          rf"\times {f(c, 2)}}} = {_cos(c2)},\quad \delta'' = {f(np.degrees(np.arccos(c2)), 2)}^\circ")
     return e1, e2
 
 
@@ -305,6 +313,14 @@ def _kind(grashof: str, lang: str) -> str:
     return grashof if kind is None else kind.text(lang)
 
 
+def _printed(design) -> dict | None:
+    """A compared design's lengths as its source prints them (the brief's digits, ``16.2227``)
+    when they have more decimals than the rule's 0.01 mm, else None."""
+    out = {k: f"{getattr(design, a) * MM:.6g}" for k, a in (("l1", "crank"), ("l2", "coupler"),
+                                                            ("l4", "frame"))}
+    return out if any(len(v.partition(".")[2]) > 2 for v in out.values()) else None
+
+
 def _with_diff(value: str, diff: float, lang: str) -> str:
     """A simulated value to 4 decimals with its difference from the reference (the verdict
     needs |Δ| < 10⁻⁹, which 4 decimals cannot show)."""
@@ -329,23 +345,23 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
     eq = {}
     if p.K_given:
         eq["theta"] = (rf"\theta = 180^\circ\frac{{K - 1}}{{K + 1}} = 180^\circ \times "
-                       rf"\frac{{{f(p.K, 4)} - 1}}{{{f(p.K, 4)} + 1}} = {f(th_deg, 4)}^\circ")
+                       rf"\frac{{{time_ratio(p.K)} - 1}}{{{time_ratio(p.K)} + 1}} = {f(th_deg, 2)}^\circ")
     else:
         eq["theta"] = (rf"K = \frac{{180^\circ + \theta}}{{180^\circ - \theta}} = "
-                       rf"\frac{{180^\circ + {f(th_deg, 4)}^\circ}}{{180^\circ - {f(th_deg, 4)}^\circ}}"
-                       rf" = {f(p.K, 4)}")
+                       rf"\frac{{180^\circ + {f(th_deg, 2)}^\circ}}{{180^\circ - {f(th_deg, 2)}^\circ}}"
+                       rf" = {time_ratio(p.K)}")
     eq["chord"] = (rf"\overline{{C_1C_2}} = 2 l_3 \sin\frac{{\psi}}{{2}} = 2 \times {_mm(p.rocker, 2)}"
-                   rf" \times \sin {f(p.swing * DEG / 2, 4)}^\circ = {_mm(chord)}\ \text{{mm}}")
+                   rf" \times \sin {f(p.swing * DEG / 2, 2)}^\circ = {_mm(chord)}\ \text{{mm}}")
     eq["radius"] = (rf"R = \frac{{\overline{{C_1C_2}}}}{{2\sin\theta}} = \frac{{{_mm(chord)}}}"
-                    rf"{{2 \sin {f(th_deg, 4)}^\circ}} = {_mm(cons.radius)}\ \text{{mm}}")
+                    rf"{{2 \sin {f(th_deg, 2)}^\circ}} = {_mm(cons.radius)}\ \text{{mm}}")
     eq["centre"] = (rf"\overline{{OM}} = R\cos\theta = {_mm(cons.radius * np.cos(p.theta))}\ \text{{mm}}")
     eq["lengths"] = (r"l_1 = \frac{\overline{AC_2} - \overline{AC_1}}{2},\qquad "
                      r"l_2 = \frac{\overline{AC_2} + \overline{AC_1}}{2},\qquad l_4 = \overline{AD}")
     eq["gamma_min"] = r"\gamma_{min} = \min(\delta',\ 180^\circ - \delta'')"
     eq["gamma"] = (r"\cos\delta' = \frac{l_2^2 + l_3^2 - (l_4 - l_1)^2}{2 l_2 l_3},\quad "
                    r"\cos\delta'' = \frac{l_2^2 + l_3^2 - (l_4 + l_1)^2}{2 l_2 l_3}")
-    eq["arc"] = (rf"A(t) = O + R\,(\sin t,\ -\cos t),\qquad t_G = {_deg(cons.p_lo, 3)}^\circ < t"
-                 rf" < 180^\circ - \theta = {_deg(cons.p_hi, 3)}^\circ")
+    eq["arc"] = (rf"A(t) = O + R\,(\sin t,\ -\cos t),\qquad t_G = {_deg(cons.p_lo)}^\circ < t"
+                 rf" < 180^\circ - \theta = {_deg(cons.p_hi)}^\circ")
     eq["problem"] = (r"\max_{t_G < t < 180^\circ - \theta}\ \gamma_{min}(t) = "
                      r"\max_t\ \min\bigl(\delta'(t),\ 180^\circ - \delta''(t)\bigr)")
     g1, g2 = _gamma_eqs(best.design)
@@ -361,10 +377,10 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
         d1, d2 = _gamma_eqs(tb.design)
         textbook = {
             "frame": _mm(p.frame, 2), "ac1": _mm(t1), "ac2": _mm(t2),
-            "t": "—" if tb.position is None else _deg(tb.position, 3),
+            "t": "—" if tb.position is None else _deg(tb.position),
             "l1": (rf"l_1 = \frac{{{_mm(t2)} - {_mm(t1)}}}{{2}} = {_mm(tb.design.crank)}\ \text{{mm}}"),
             "l2": (rf"l_2 = \frac{{{_mm(t2)} + {_mm(t1)}}}{{2}} = {_mm(tb.design.coupler)}\ \text{{mm}}"),
-            "d1": d1, "d2": d2, "gamma_min": _deg(tb.gamma_min, 3),
+            "d1": d1, "d2": d2, "gamma_min": _deg(tb.gamma_min),
             "kind": _kind(tb.grashof, lang),
         }
     given = None
@@ -377,18 +393,18 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
         dac1, dac2 = ang(b - a, d, c), ang(b + a, d, c)
         adc1, adc2 = ang(d, c, b - a), ang(d, c, b + a)
         given = {
-            "l1": f(a, 4), "l2": f(b, 4), "l3": f(c, 4), "l4": f(d, 4),
+            "l1": f(a, 2), "l2": f(b, 2), "l3": f(c, 2), "l4": f(d, 2),
             "kind": _kind(tb.grashof, lang) if tb is not None else "",
             "eq_dac": (rf"\angle DAC_1 = \arccos\frac{{(l_2 - l_1)^2 + l_4^2 - l_3^2}}{{2(l_2 - l_1)l_4}}"
-                       rf" = {f(dac1, 4)}^\circ"),
+                       rf" = {f(dac1, 2)}^\circ"),
             "eq_dac2": (rf"\angle DAC_2 = \arccos\frac{{(l_2 + l_1)^2 + "
-                        rf"l_4^2 - l_3^2}}{{2(l_2 + l_1)l_4}} = {f(dac2, 4)}^\circ"),
+                        rf"l_4^2 - l_3^2}}{{2(l_2 + l_1)l_4}} = {f(dac2, 2)}^\circ"),
             "eq_adc": (rf"\angle ADC_1 = \arccos\frac{{l_4^2 + l_3^2 - (l_2 - l_1)^2}}{{2l_4l_3}}"
-                       rf" = {f(adc1, 4)}^\circ,\quad \angle ADC_2 = {f(adc2, 4)}^\circ"),
-            "eq_theta": (rf"\theta = \lvert\angle DAC_1 - \angle DAC_2\rvert = {f(th_deg, 4)}^\circ,"
-                         rf"\qquad \psi = \angle ADC_2 - \angle ADC_1 = {_deg(p.swing, 4)}^\circ"),
-            "eq_K": (rf"K = \frac{{180^\circ + \theta}}{{180^\circ - \theta}} = {f(p.K, 4)}"),
-            "gamma_min": _deg(tb.gamma_min, 4) if tb is not None else "",
+                       rf" = {f(adc1, 2)}^\circ,\quad \angle ADC_2 = {f(adc2, 2)}^\circ"),
+            "eq_theta": (rf"\theta = \lvert\angle DAC_1 - \angle DAC_2\rvert = {f(th_deg, 2)}^\circ,"
+                         rf"\qquad \psi = \angle ADC_2 - \angle ADC_1 = {_deg(p.swing)}^\circ"),
+            "eq_K": (rf"K = \frac{{180^\circ + \theta}}{{180^\circ - \theta}} = {time_ratio(p.K)}"),
+            "gamma_min": _deg(tb.gamma_min) if tb is not None else "",
         }
     # data table
     if given is not None:
@@ -397,13 +413,13 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
             ("$l_2$", N_("coupler BC (given)"), given["l2"], "mm"),
             ("$l_3$", N_("rocker CD (given)"), given["l3"], "mm"),
             ("$l_4$", N_("frame AD (given)"), given["l4"], "mm"),
-            ("θ", N_("extreme-position angle (derived)"), f(th_deg, 4), "°"),
-            ("K", N_("time ratio (derived)"), f(p.K, 4), "—"),
-            ("ψ", N_("rocker swing (derived)"), _deg(p.swing, 4), "°"),
+            ("θ", N_("extreme-position angle (derived)"), f(th_deg, 2), "°"),
+            ("K", N_("time ratio (derived)"), time_ratio(p.K), "—"),
+            ("ψ", N_("rocker swing (derived)"), _deg(p.swing), "°"),
             ("$\\gamma_{min}$", N_("minimum transmission angle (derived)"), given["gamma_min"], "°"),
             ("[γ]", N_("allowed minimum transmission angle"), _deg(p.gamma_allowed, 0), "°"))]
     else:
-        data_rows = [["K", _("time ratio"), f(p.K, 4), "—"], ["θ", _("extreme-position angle"), f(th_deg, 4), "°"],
+        data_rows = [["K", _("time ratio"), time_ratio(p.K), "—"], ["θ", _("extreme-position angle"), f(th_deg, 2), "°"],
                      ["ψ", _("rocker swing"), _deg(p.swing, 2), "°"], ["$l_3$", _.pgettext("given length", "rocker CD"), _mm(p.rocker, 2), "mm"]]
         if p.frame is not None:
             data_rows.append(["$l_4$", _("given frame AD (textbook method)"), _mm(p.frame, 2), "mm"])
@@ -415,19 +431,24 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
     cmp_rows = []
     for d, s in zip(designs, ver.sims):
         cmp_rows.append([md_text(_name(s.label, lang)), _mm(d.design.crank), _mm(d.design.coupler), _mm(d.design.rocker),
-                         _mm(d.design.frame), _deg(s.theta, 4), _deg(s.swing, 4), f(s.K, 4),
-                         _deg(s.gamma_min, 3)])
-    spec_row = [_("specification"), "", "", _mm(p.rocker, 4), "",
-                f(th_deg, 4), _deg(p.swing, 4), f(p.K, 4), ""]
+                         _mm(d.design.frame), _deg(s.theta), _deg(s.swing), time_ratio(s.K),
+                         _deg(s.gamma_min)])
+    spec_row = [_("specification"), "", "", _mm(p.rocker), "",
+                f(th_deg, 2), _deg(p.swing), time_ratio(p.K), ""]
     paper_notes = []
     missing = []
-    for d, s in zip(designs[len(designs) - len(r["compare"]):], ver.sims[len(designs) - len(r["compare"]):]):
+    n_cmp = len(r["compare"])
+    for cd, s in zip(p.compare, ver.sims[len(designs) - n_cmp:]):
         dth, dpsi = (s.theta - p.theta) * DEG, (s.swing - p.swing) * DEG
         dg = (best.gamma_min - s.gamma_min) * DEG
         if abs(dth) > 1e-6 or abs(dpsi) > 1e-6:
             missing.append(md_text(_name(s.label, lang)))
+        name = md_text(_name(s.label, lang))
+        printed = _printed(cd.design)
+        if printed is not None:      # the table rounds the lengths to 0.01 mm: say what was printed
+            name += _(" (the paper prints $l_1$ = {l1} mm, $l_2$ = {l2} mm, $l_4$ = {l4} mm)", **printed)
         paper_notes.append(_("{name}: θ off by {dth}°, ψ off by {dpsi}°, $\\gamma_{{min}}$ {dg}° below the optimum",
-                             name=md_text(_name(s.label, lang)), dth=f(dth, 3), dpsi=f(dpsi, 3), dg=f(dg, 3)))
+                             name=name, dth=f(dth, 2), dpsi=f(dpsi, 2), dg=f(dg, 2)))
     # verification rows: [item, result, reference, verdict]
     tol = 1e-9
     vrows = []
@@ -458,32 +479,32 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
         sc = sl.construction
         e_mm, h_mm = sl.offset * MM, sl.stroke * MM
         slider = {
-            "K": time_ratio(sl.K), "theta": _deg(sl.theta, 4), "H": f(h_mm, 2), "e": f(e_mm, 2),
+            "K": time_ratio(sl.K), "theta": _deg(sl.theta), "H": f(h_mm, 2), "e": f(e_mm, 2),
             "R": _mm(sc.radius), "ac1": _mm(abs(sc.c1)), "ac2": _mm(abs(sc.c2)),
             "a": _mm(sl.crank), "b": _mm(sl.rod),
             "eq_theta": (rf"\theta = 180^\circ\frac{{K - 1}}{{K + 1}} = 180^\circ \times "
-                         rf"\frac{{{time_ratio(sl.K)} - 1}}{{{time_ratio(sl.K)} + 1}} = {_deg(sl.theta, 4)}^\circ"),
-            "eq_R": (rf"R = \frac{{H}}{{2\sin\theta}} = \frac{{{f(h_mm, 2)}}}{{2\sin {_deg(sl.theta, 4)}^\circ}}"
+                         rf"\frac{{{time_ratio(sl.K)} - 1}}{{{time_ratio(sl.K)} + 1}} = {_deg(sl.theta)}^\circ"),
+            "eq_R": (rf"R = \frac{{H}}{{2\sin\theta}} = \frac{{{f(h_mm, 2)}}}{{2\sin {_deg(sl.theta)}^\circ}}"
                      rf" = {_mm(sc.radius)}\ \text{{mm}}"),
             "eq_x": (rf"x_A = -\sqrt{{R^2 - (R\cos\theta - e)^2}} = -\sqrt{{{_mm(sc.radius)}^2 - "
                      rf"({_mm(sc.radius * np.cos(sl.theta))} - {f(e_mm, 2)})^2}} = "
-                     rf"{f(-np.sqrt(sc.radius ** 2 - (sc.radius * np.cos(sl.theta) - sl.offset) ** 2) * MM, 4)}"
+                     rf"{f(-np.sqrt(sc.radius ** 2 - (sc.radius * np.cos(sl.theta) - sl.offset) ** 2) * MM, 2)}"
                      r"\ \text{mm}"),
-            "eq_limit": (rf"e < H\cot\theta = {f(h_mm / np.tan(sl.theta), 3)}\ \text{{mm}}"),
+            "eq_limit": (rf"e < H\cot\theta = {f(h_mm / np.tan(sl.theta), 2)}\ \text{{mm}}"),
             "eq_a": (rf"a = \frac{{\overline{{AC_2}} - \overline{{AC_1}}}}{{2}} = \frac{{{_mm(abs(sc.c2))} - "
                      rf"{_mm(abs(sc.c1))}}}{{2}} = {_mm(sl.crank)}\ \text{{mm}}"),
             "eq_b": (rf"b = \frac{{\overline{{AC_2}} + \overline{{AC_1}}}}{{2}} = "
                       rf"\frac{{{_mm(abs(sc.c2))} + {_mm(abs(sc.c1))}}}{{2}} = {_mm(sl.rod)}\ \text{{mm}}"),
             "eq_alpha_fast": (rf"\alpha_{{max}} = \arcsin\frac{{a + e}}{{b}} = \arcsin\frac{{{_mm(sl.crank)} + "
-                              rf"{f(e_mm, 2)}}}{{{_mm(sl.rod)}}} = {_deg(sl.alpha_fast, 3)}^\circ"),
+                              rf"{f(e_mm, 2)}}}{{{_mm(sl.rod)}}} = {_deg(sl.alpha_fast)}^\circ"),
             "eq_alpha_slow": (rf"\alpha_{{w}} = \max\Bigl(\arcsin\frac{{e}}{{b - a}},\ \arcsin\frac{{|a - e|}}{{b}}\Bigr)"
-                              rf" = {_deg(sl.alpha_slow, 3)}^\circ"),
+                              rf" = {_deg(sl.alpha_slow)}^\circ"),
             "alpha_slow": _deg(sl.alpha_slow, 2), "alpha_fast": _deg(sl.alpha_fast, 2),
             "given": p.slider.crank is not None,
-            "eq_H": (rf"H = \sqrt{{(b + a)^2 - e^2}} - \sqrt{{(b - a)^2 - e^2}} = {_mm(sl.stroke, 4)}"
+            "eq_H": (rf"H = \sqrt{{(b + a)^2 - e^2}} - \sqrt{{(b - a)^2 - e^2}} = {_mm(sl.stroke)}"
                      r"\ \text{mm}"),
             "eq_th": (rf"\theta = \arcsin\frac{{e}}{{b - a}} - \arcsin\frac{{e}}{{b + a}} = "
-                      rf"{_deg(sl.theta, 4)}^\circ,\qquad K = \frac{{180^\circ + \theta}}{{180^\circ - \theta}}"
+                      rf"{_deg(sl.theta)}^\circ,\qquad K = \frac{{180^\circ + \theta}}{{180^\circ - \theta}}"
                       rf" = {time_ratio(sl.K)}"),
             "allowed": _deg(sl.alpha_allowed, 0),
         }
@@ -524,12 +545,12 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
                    "two collinear angles are equal.", other=f(max(g1, g2), 2), gamma="$\\gamma_{min}(t)$"))
     return {
         "meta": md_meta(brief.report, lang), "fig": figures, "data_rows": data_rows, "eq": eq,
-        "K": f(p.K, 4), "theta": f(th_deg, 4), "psi": _deg(p.swing, 2), "l3": _mm(p.rocker, 2),
+        "K": time_ratio(p.K), "theta": f(th_deg, 2), "psi": _deg(p.swing, 2), "l3": _mm(p.rocker, 2),
         "K_given": p.K_given,
         "opt": {"l1": _mm(best.design.crank), "l2": _mm(best.design.coupler),
                 "l3": _mm(best.design.rocker), "l4": _mm(best.design.frame),
-                "ratio": f(best.design.rocker / best.design.frame, 4),
-                "gamma_min": _deg(best.gamma_min, 3), "t": _deg(best.position, 4),
+                "ratio": sig(best.design.rocker / best.design.frame, 4),
+                "gamma_min": _deg(best.gamma_min), "t": _deg(best.position),
                 "ac1": _mm(ac1), "ac2": _mm(ac2), "kind": _kind(best.grashof, lang),
                 "far": None if far is None else _deg(far, 2), "where": where},
         "with_speed": p.crank_speed_rpm is not None,

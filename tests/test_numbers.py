@@ -1,0 +1,70 @@
+"""The number rule's digits have one home (issue 19 point 4): ``mechdesign/numbers.py``,
+outside render and with no prose, so that the stages (design steps, findings) and render
+(``render/fmt.py``) write a number the same way without the stages importing render.
+
+The expected strings are the README's rule written out by hand ("Conventions": forces,
+torques and the like to 4 significant digits, a value of five or more integer digits with
+all of them, never E-notation, grouped by threes outside a formula)."""
+from __future__ import annotations
+
+import ast
+import random
+from pathlib import Path
+
+import pytest
+
+from mechdesign import numbers
+from mechdesign.render import fmt
+from mechdesign.stages import drive, drive_strength
+
+SRC = Path(__file__).resolve().parents[1] / "src" / "mechdesign"
+
+
+@pytest.mark.parametrize("x,n,group,text", [
+    (636.6198, 4, True, "636.6"),
+    (0.065999, 4, True, "0.06600"),
+    (48000.0, 4, True, "48\u202f000"),
+    (48000.0, 4, False, "48000"),
+    (12738.16, 4, True, "12\u202f738"),          # never 12 740
+    (12738.16, 4, False, "12738"),
+    (12807.6, 4, False, "12808"),
+    (9999.5, 4, True, "10\u202f000"),
+    (5.2359878, 4, True, "5.236"),
+    (-0.0000001, 4, True, "-0.0000001000"),
+    (0.0, 4, True, "0"),
+    (1.0, 3, True, "1.00"),
+])
+def test_sig_writes_the_rule(x, n, group, text):
+    assert numbers.sig(x, n, group=group) == text
+
+
+def test_render_and_stages_write_numbers_with_the_one_rule():
+    assert fmt.sig is numbers.sig and fmt.f is numbers.fixed
+    rng = random.Random(31)
+    values = [12738.16, 12807.6, 99995.0, 0.00012345] + [
+        rng.choice([-1, 1]) * 10 ** rng.uniform(-4, 6) for _ in range(2000)]
+    for x in values:
+        want = numbers.sig(x, 4, group=False)
+        assert drive._sig4(x) == want, x                 # a finding's numbers (terminal line)
+        assert drive_strength._sig(x, 4) == want, x      # the shaft design steps' formulas
+        assert drive_strength._sig(x, 3) == numbers.sig(x, 3, group=False), x
+
+
+def _defines_digits(path: Path) -> list[str]:
+    """Functions of a module that write digits themselves: they call log10 or Decimal, or
+    format with a precision taken from a computation (the rule's own work)."""
+    tree = ast.parse(path.read_text(encoding="utf-8"))
+    out = []
+    for node in ast.walk(tree):
+        if isinstance(node, ast.FunctionDef):
+            names = {n.attr if isinstance(n, ast.Attribute) else getattr(n, "id", "")
+                     for n in ast.walk(node) if isinstance(n, (ast.Attribute, ast.Name))}
+            if {"log10", "Decimal"} & names:
+                out.append(f"{path.name}:{node.lineno} {node.name}")
+    return out
+
+
+def test_no_stage_or_render_module_repeats_the_significant_digits_rule():
+    found = [x for p in [*sorted((SRC / "stages").glob("*.py")), SRC / "render" / "fmt.py"]
+             for x in _defines_digits(p)]
+    assert not found, found
