@@ -75,6 +75,12 @@ CASES = {
                        {"output_speed_rpm": 50, "power_kW": 2.0}, {}, "drive.stages[2].z1"),
     "given shaft": ([{"type": "coupling"}, {"type": "spur", "z1": 24}], _POWER,
                     {"shafts": [{"shaft": 2, "journal_mm": 20, "seat_mm": 22}]}, "drive.shafts[0].journal_mm"),
+    # a given bearing far too small for the load: the free seat grew by 5 mm a step without
+    # bound (to 205 mm, beyond the flat-key table: "internal error … ValueError"); it stops
+    # at the journal's limit and the finding names the bearing
+    "given small bearing": ([{"type": "coupling"}, {"type": "spur", "z1": 24}],
+                            {"output_speed_rpm": 300, "power_kW": 15.0},
+                            {"shafts": [{"shaft": 2, "bearing": "6204"}]}, "drive.shafts[0].bearing"),
 }
 
 
