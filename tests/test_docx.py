@@ -5,6 +5,7 @@ from __future__ import annotations
 import re
 import shutil
 import zipfile
+from xml.etree import ElementTree
 from pathlib import Path
 
 import pytest
@@ -237,3 +238,68 @@ def test_the_table_of_contents_is_filled_when_word_opens_the_file(zh_docx):
     children = [t for t in re.findall(r"<(?:w|m):(\w+)", settings) if t in _SETTINGS_ORDER]
     tops = list(dict.fromkeys(children))
     assert tops == sorted(tops, key=_SETTINGS_ORDER.index), tops
+
+
+# A formula far wider than a line: render/mathbreak sets it as `aligned` (rows at "=").
+LONG_FORMULA = ("L_{O_3M} = L_{O_3B}\\,\\frac{1+\\cos(\\psi/2)}{2} = L_{O_3B} - "
+                "\\frac{L_{O_3B}\\,(1-\\cos(\\psi/2))}{2} = 1124.27 - "
+                "\\frac{1124.27 \\times 0.01018}{2} = 1118.55\\ \\text{mm}")
+
+
+def _math_paragraphs(document_xml: str) -> list[str]:
+    return re.findall(r"<m:oMathPara>.*?</m:oMathPara>", document_xml, flags=re.DOTALL)
+
+
+def test_broken_equation_is_aligned_lines_without_ampersands(tmp_path):
+    """Issue 19 (1): LibreOffice drew "∧¿" at the alignment marks of broken equations (the
+    literal "&" of an m:eqArr is StarMath's logical and). Each line is an m:oMath of its own,
+    separated by a line break run, aligned by m:aln (Word's form for aligned equations of a
+    math paragraph); a line that starts with "=" has an empty operand before it."""
+    from mechdesign.render.docx import WORD_BUDGET_EM
+    from mechdesign.render.mathbreak import break_formula
+
+    broken = break_formula(LONG_FORMULA, WORD_BUDGET_EM)
+    n_rows = broken.count("\\\\") + 1
+    assert n_rows >= 2                       # the sample is broken at all
+    md = _write_sample(tmp_path, f"# Kinematics\n\n$$ {LONG_FORMULA} $$\n")
+    out = tmp_path / "report.docx"
+    render_docx(md, out, {"title": "Course design", "lang": "en"}, TEMPLATES)
+    document = _part(out, "word/document.xml")
+    ElementTree.fromstring(document)         # well-formed
+    assert "<m:t>&amp;</m:t>" not in document and "<m:eqArr>" not in document
+    [para] = _math_paragraphs(document)
+    lines = re.findall(r"<m:oMath>(.*?)</m:oMath>", para, flags=re.DOTALL)
+    assert len(lines) == n_rows
+    assert all(line.endswith("<m:r><w:br /></m:r>") for line in lines[:-1])
+    assert "<w:br" not in lines[-1]
+    assert '<m:jc m:val="centerGroup" />' in para
+    # one alignment point per line, the last property of its run (CT_RPR order)
+    for line in lines:
+        assert line.count("<m:aln />") == 1
+        assert re.search(r"<m:rPr>(?:<m:(?:lit|nor|scr|sty|brk)\b[^>]*/>)*<m:aln /></m:rPr>", line)
+    # continuation lines start with "=": an empty normal-text run stands before it
+    continued = [line for line in lines[1:] if "<m:t>=</m:t>" in line[:200]]
+    assert continued and all(line.startswith("<m:r><m:rPr><m:nor /></m:rPr><m:t></m:t></m:r>")
+                             for line in continued)
+    # the first line keeps its left side before the alignment point
+    assert lines[0].index("<m:aln />") > lines[0].index("<m:t>L</m:t>")
+
+
+def test_alignment_point_before_a_structure_is_an_operator_emulator_box():
+    """A line whose alignment point precedes a structure (not a run) marks it on a box
+    (ISO/IEC 29500-1 §22.1.2.3: m:aln on an operator-emulator box)."""
+    from mechdesign.render.docx_math import align_broken_equations
+
+    amp = "<m:r><m:t>&amp;</m:t></m:r>"
+    sub = "<m:sSub><m:e><m:r><m:t>x</m:t></m:r></m:e><m:sub><m:r><m:t>1</m:t></m:r></m:sub></m:sSub>"
+    xml = ('<w:p><m:oMathPara><m:oMathParaPr><m:jc m:val="center" /></m:oMathParaPr>'
+           f"<m:oMath><m:eqArr><m:e>{amp}{sub}</m:e><m:e>{amp}<m:r><m:t>y</m:t></m:r></m:e>"
+           "</m:eqArr></m:oMath></m:oMathPara></w:p>")
+    out = align_broken_equations(xml)
+    lines = re.findall(r"<m:oMath>(.*?)</m:oMath>", out)
+    assert lines[0] == ('<m:box><m:boxPr><m:opEmu m:val="1" /><m:aln m:val="1" /></m:boxPr>'
+                        f"<m:e>{sub}</m:e></m:box><m:r><w:br /></m:r>")
+    assert lines[1] == "<m:r><m:rPr><m:aln /></m:rPr><m:t>y</m:t></m:r>"
+    # an equation array inside a formula (not the whole display) is left alone
+    inner = xml.replace("<m:oMath><m:eqArr>", "<m:oMath><m:r><m:t>a</m:t></m:r><m:eqArr>")
+    assert align_broken_equations(inner) == inner

@@ -35,6 +35,7 @@ from contextlib import contextmanager
 from pathlib import Path
 
 from ..fileio import atomic_path
+from .docx_math import align_broken_equations
 from .mathbreak import break_display_math
 
 #: Widest formula line for Word [em of the PDF's math font, as render/mathbreak estimates]:
@@ -207,8 +208,9 @@ def _finish(docx: Path, *, title: str, author: str, subject: str) -> None:
     """The running header shows the title and the student (the TITLE and AUTHOR fields'
     shown results, filled in here so that they read right before Word updates fields;
     a reference.docx from before the AUTHOR field shows the title alone); the properties
-    name the student as author and the report as subject. The archive keeps its member
-    order and dates (reproducible)."""
+    name the student as author and the report as subject; broken display formulas become
+    aligned lines that Word and LibreOffice both read (:mod:`.docx_math`). The archive keeps
+    its member order and dates (reproducible)."""
     with zipfile.ZipFile(docx) as zin:
         items = [(info, zin.read(info.filename)) for info in zin.infolist()]
     out: list[tuple[zipfile.ZipInfo, bytes]] = []
@@ -218,6 +220,8 @@ def _finish(docx: Path, *, title: str, author: str, subject: str) -> None:
             data = data.replace(b"REPORT-TITLE", _xml_text(title).encode("utf-8"))
             data = data.replace(b"REPORT-SEPARATOR", "\u2003".encode("utf-8") if author else b"")
             data = data.replace(b"REPORT-AUTHOR", _xml_text(author).encode("utf-8"))
+        elif name == "word/document.xml":
+            data = align_broken_equations(data.decode("utf-8")).encode("utf-8")
         elif name == "word/settings.xml":
             data = _update_fields_on_open(data)
         elif name == "docProps/core.xml":

@@ -1,0 +1,149 @@
+"""Broken display formulas of the Word report as aligned lines that Word and LibreOffice read.
+
+A formula too wide for a line is set by render/mathbreak as ``\\begin{aligned} … \\end{aligned}``,
+one ``&`` per line. pandoc (texmath) writes it as an equation array ``m:eqArr`` whose
+alignment marks are literal ``&`` characters in the math text: Word's own form (ISO/IEC 29500-1
+§22.1.2.34; MS-OE376 on eqArr: odd ``&`` are alignment points). LibreOffice's OMML import turns
+``m:eqArr`` into a StarMath ``stack`` and the text ``&`` into StarMath's logical-and operator,
+drawn "∧" with an error mark "¿" for its missing operand (starmath/source/ooxmlimport.cxx).
+
+:func:`align_broken_equations` rewrites each such math paragraph as the other form Word has
+for aligned lines: one ``m:oMath`` per line in the same ``m:oMathPara``, each line but the last
+ended by a line break ``<m:r><w:br/></m:r>`` (Word merges adjacent equations that no ``w:br``
+separates, MS-OE376 §7.1.2.77), the alignment point marked by ``m:aln`` in the run properties
+of the run that followed the ``&`` (Word applies ``aln`` to math runs, MS-OI29500 §22.1.2.3; a
+line that starts with a structure rather than a run gets it on an operator-emulator box,
+the standard's form), and the paragraph justified ``centerGroup`` (the lines centred as a
+group). LibreOffice reads each ``m:oMath`` as a line of its own and ignores ``m:aln`` and the
+break run; a line that starts with a relation or operator (``= 1124.27 − …``) gets an empty
+normal-text run before it, which Word draws as nothing and which gives StarMath's binary
+operator the left operand it needs (else "¿").
+"""
+from __future__ import annotations
+
+import re
+
+#: The alignment mark texmath writes between the columns of an ``aligned`` row.
+_AMPERSAND = "<m:r><m:t>&amp;</m:t></m:r>"
+#: Line break between the equations of a math paragraph (Word's form).
+_LINE_BREAK = "<m:r><w:br /></m:r>"
+#: An empty normal-text run: LibreOffice's operand before a line that starts with an operator.
+_EMPTY_OPERAND = "<m:r><m:rPr><m:nor /></m:rPr><m:t></m:t></m:r>"
+#: Characters that need a left operand in StarMath (relations, arrows, binary operators
+#: other than the unary-capable + − ±).
+_NEEDS_LEFT = set("=<>≤≥≈≠≡∼≃⇒⇐⇔→×⋅·∕/")
+
+_PARA = re.compile(r"<m:oMathPara>.*?</m:oMathPara>", re.DOTALL)
+_ONLY_ARRAY = re.compile(r"<m:oMath><m:eqArr>(.*)</m:eqArr></m:oMath>", re.DOTALL)
+_ARG_TAG = re.compile(r"<(/?)m:e>")
+_RUN_START = re.compile(r"<m:r>(?:<m:rPr>(.*?)</m:rPr>)?", re.DOTALL)
+_RUN_TEXTS = re.compile(r"<m:r>(?:<m:rPr>.*?</m:rPr>)?<m:t(?: [^>]*)?>([^<]*)</m:t></m:r>", re.DOTALL)
+
+
+def _array_rows(inner: str) -> list[str] | None:
+    """Contents of the top-level ``m:e`` arguments of an ``m:eqArr`` body, or None if the body
+    holds anything else at the top (``m:eqArrPr``)."""
+    rows: list[str] = []
+    depth = 0
+    start = 0
+    last_end = 0
+    for tag in _ARG_TAG.finditer(inner):
+        if tag.group(1) == "":
+            if depth == 0:
+                if inner[last_end:tag.start()].strip():
+                    return None
+                start = tag.end()
+            depth += 1
+        else:
+            depth -= 1
+            if depth == 0:
+                rows.append(inner[start:tag.start()])
+                last_end = tag.end()
+    if depth != 0 or inner[last_end:].strip() or not rows:
+        return None
+    return rows
+
+
+def _with_alignment_point(rest: str) -> str:
+    """``rest`` (a line after its ``&``) with its first element marked as the alignment point."""
+    run = _RUN_START.match(rest)
+    if run is not None:
+        props = run.group(1) or ""
+        # m:aln is the last child of m:rPr (CT_RPR: lit?, (nor | scr?, sty?), brk?, aln?)
+        return f"<m:r><m:rPr>{props}<m:aln /></m:rPr>" + rest[run.end():]
+    first = _first_element(rest)
+    if first is None:
+        return f"<m:r><m:rPr><m:aln /></m:rPr><m:t></m:t></m:r>{rest}"
+    box = ("<m:box><m:boxPr><m:opEmu m:val=\"1\" /><m:aln m:val=\"1\" /></m:boxPr><m:e>"
+           f"{rest[:first]}</m:e></m:box>")
+    return box + rest[first:]
+
+
+def _first_element(xml: str) -> int | None:
+    """End offset of the first complete element of ``xml`` (None if ``xml`` starts with none)."""
+    head = re.match(r"<(m:\w+)[ >]", xml)
+    if head is None:
+        return None
+    name = head.group(1)
+    depth = 0
+    for tag in re.finditer(rf"<(/?){name}(?=[ >/])[^>]*?(/?)>", xml):
+        if tag.group(2):
+            if depth == 0:
+                return tag.end()
+            continue
+        depth += 1 if tag.group(1) == "" else -1
+        if depth == 0:
+            return tag.end()
+    return None
+
+
+def _starts_with_operator(line: str) -> bool:
+    """Whether the first visible text of ``line`` is a run whose text begins with an operator
+    that needs a left operand (space-only runs skipped)."""
+    pos = 0
+    while True:
+        run = _RUN_TEXTS.match(line, pos)
+        if run is None:
+            return False
+        text = run.group(1).strip()
+        if text:
+            return text[0] in _NEEDS_LEFT
+        pos = run.end()
+
+
+def _line(row: str) -> str:
+    """One ``aligned`` row (an ``m:e`` body) as the content of an ``m:oMath``."""
+    mark = row.find(_AMPERSAND)
+    if mark < 0:
+        line = row
+    else:
+        head, rest = row[:mark], row[mark + len(_AMPERSAND):].replace(_AMPERSAND, "")
+        line = head + (_with_alignment_point(rest) if rest else "")
+    if _starts_with_operator(line):
+        line = _EMPTY_OPERAND + line
+    return line
+
+
+def _paragraph(match: re.Match) -> str:
+    para = match.group(0)
+    array = _ONLY_ARRAY.search(para)
+    rows = _array_rows(array.group(1)) if array is not None else None
+    if rows is None or _AMPERSAND not in array.group(1):
+        return para
+    lines = [_line(row) for row in rows]
+    maths = "".join(f"<m:oMath>{line}{_LINE_BREAK if n < len(lines) - 1 else ''}</m:oMath>"
+                    for n, line in enumerate(lines))
+    head = para[:array.start()].replace('<m:jc m:val="center" />', '<m:jc m:val="centerGroup" />')
+    return head + maths + para[array.end():]
+
+
+def align_broken_equations(document_xml: str) -> str:
+    """``word/document.xml`` with every math paragraph that consists of one aligned equation
+    array (``m:eqArr`` with ``&`` marks, as pandoc writes ``aligned``) rewritten as aligned
+    lines (see the module docstring); everything else unchanged."""
+    if _AMPERSAND not in document_xml:
+        return document_xml
+    return _PARA.sub(_paragraph, document_xml)
+
+
+__all__ = ["align_broken_equations"]
