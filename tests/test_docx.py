@@ -285,9 +285,9 @@ def test_broken_equation_is_aligned_lines_without_ampersands(tmp_path):
     assert lines[0].index("<m:aln />") > lines[0].index("<m:t>L</m:t>")
 
 
-def test_alignment_point_before_a_structure_is_an_operator_emulator_box():
-    """A line whose alignment point precedes a structure (not a run) marks it on a box
-    (ISO/IEC 29500-1 §22.1.2.3: m:aln on an operator-emulator box)."""
+def test_alignment_point_before_a_structure_is_an_empty_run():
+    """A line whose alignment point precedes a structure (not a run): an empty run carries
+    m:aln (an operator-emulator box would space the structure as an operator)."""
     from mechdesign.render.docx_math import align_broken_equations
 
     amp = "<m:r><m:t>&amp;</m:t></m:r>"
@@ -297,9 +297,73 @@ def test_alignment_point_before_a_structure_is_an_operator_emulator_box():
            "</m:eqArr></m:oMath></m:oMathPara></w:p>")
     out = align_broken_equations(xml)
     lines = re.findall(r"<m:oMath>(.*?)</m:oMath>", out)
-    assert lines[0] == ('<m:box><m:boxPr><m:opEmu m:val="1" /><m:aln m:val="1" /></m:boxPr>'
-                        f"<m:e>{sub}</m:e></m:box><m:r><w:br /></m:r>")
+    assert lines[0] == f"<m:r><m:rPr><m:aln /></m:rPr><m:t></m:t></m:r>{sub}<m:r><w:br /></m:r>"
     assert lines[1] == "<m:r><m:rPr><m:aln /></m:rPr><m:t>y</m:t></m:r>"
     # an equation array inside a formula (not the whole display) is left alone
     inner = xml.replace("<m:oMath><m:eqArr>", "<m:oMath><m:r><m:t>a</m:t></m:r><m:eqArr>")
     assert align_broken_equations(inner) == inner
+
+
+def test_a_bracket_pair_split_over_two_lines_is_normal_text():
+    """LibreOffice reads each line as a formula of its own: a bracket without its partner on
+    the line would be an error mark "¿" there; as normal text (m:nor) it is drawn as is."""
+    from mechdesign.render.docx_math import align_broken_equations
+
+    amp = "<m:r><m:t>&amp;</m:t></m:r>"
+
+    def run(text, props=""):
+        return f"<m:r><m:rPr>{props}</m:rPr><m:t>{text}</m:t></m:r>" if props else f"<m:r><m:t>{text}</m:t></m:r>"
+
+    p = '<m:sty m:val="p" />'
+    row1 = run("a") + amp + run("=", p) + run("(", p) + run("b") + run("+", p) + run("(", p) + run("c") + run(")", p)
+    row2 = amp + run("+", p) + run("d") + run(")", p) + run("[", p) + run("e") + run("]", p)
+    xml = (f"<m:oMathPara><m:oMath><m:eqArr><m:e>{row1}</m:e><m:e>{row2}</m:e></m:eqArr>"
+           "</m:oMath></m:oMathPara>")
+    lines = re.findall(r"<m:oMath>(.*?)</m:oMath>", align_broken_equations(xml))
+    nor = "<m:r><m:rPr><m:nor /></m:rPr><m:t>{}</m:t></m:r>"
+    # line 1: the first "(" is open at the line's end; "(c)" is a pair
+    assert lines[0].count(nor.format("(")) == 1 and lines[0].count(run("(", p)) == 1
+    assert run(")", p) in lines[0]
+    # line 2: its ")" closes a bracket of line 1; "[e]" is a pair
+    assert lines[1].count(nor.format(")")) == 1
+    assert run("[", p) in lines[1] and run("]", p) in lines[1]
+
+
+# Advance widths of Times (Adobe AFM, 1/1000 em): the digits, "." and "-" of the numbers below.
+_TIMES_WIDTH = {**{d: 500 for d in "0123456789"}, ".": 250, "-": 333}
+_TEXT_WIDTH = 11906 - 2 * 1418            # twips between the margins of reference.docx
+_CELL_MARGINS = 2 * 108                   # left + right cell margins of the Table style
+
+
+def _number_twips(number: str, half_points: int) -> float:
+    return sum(_TIMES_WIDTH[c] for c in number) / 1000 * half_points / 2 * 20
+
+
+def test_numbers_fit_their_columns_in_a_wide_table(tmp_path):
+    """Issue 19 (7) / 22: numbers broke inside narrow cells ("188." | "18"). Every column is
+    at least as wide as its widest number (Times metrics) plus the cell margins; a table too
+    wide for that at 10.5 pt is set in the 9 pt table style."""
+    numbers = [f"-{1000 + 37 * r + c}.{(7 * r + c) % 100:02d}" for r in range(4) for c in range(10)]
+    header = "| " + " | ".join(f"$F_{{R{c}}}$/kN" for c in range(10)) + " |"
+    rows = ["| " + " | ".join(numbers[10 * r:10 * r + 10]) + " |" for r in range(4)]
+    narrow = "| a | b |\n|--:|--:|\n| 12.5 | 3.25 |"
+    md = _write_sample(tmp_path, "# Forces\n\n" + "\n".join([header, "|" + "--:|" * 10, *rows])
+                       + "\n\n: Reactions\n\n" + narrow + "\n")
+    out = tmp_path / "report.docx"
+    render_docx(md, out, {"title": "Course design", "lang": "en"}, TEMPLATES)
+    document = _part(out, "word/document.xml")
+    styles = _part(out, "word/styles.xml")
+    wide, small = [t for t in re.findall(r"<w:tbl>.*?</w:tbl>", document, flags=re.DOTALL)
+                   if 'w:tblStyle w:val="Table"' in t]
+    style = re.search(r'<w:pStyle w:val="(TableText\w*)"', wide).group(1)
+    assert style == "TableTextSmall"
+    assert re.search(r'<w:pStyle w:val="TableText"', small)     # a narrow table keeps 10.5 pt
+    definition = re.search(rf'<w:style [^>]*w:styleId="{style}".*?</w:style>', styles, re.DOTALL)
+    half_points = int(re.search(r'<w:sz w:val="(\d+)"', definition.group(0)).group(1))
+    assert half_points == 18
+    grid = [int(w) for w in re.findall(r'<w:gridCol w:w="(\d+)"', wide)]
+    assert len(grid) == 10
+    for c, col in enumerate(grid):
+        width = col / sum(grid) * _TEXT_WIDTH
+        widest = max(_number_twips(numbers[10 * r + c], half_points) for r in range(4))
+        assert width >= widest + _CELL_MARGINS, (c, width, widest)

@@ -8,16 +8,19 @@ alignment marks are literal ``&`` characters in the math text: Word's own form (
 drawn "∧" with an error mark "¿" for its missing operand (starmath/source/ooxmlimport.cxx).
 
 :func:`align_broken_equations` rewrites each such math paragraph as the other form Word has
-for aligned lines: one ``m:oMath`` per line in the same ``m:oMathPara``, each line but the last
-ended by a line break ``<m:r><w:br/></m:r>`` (Word merges adjacent equations that no ``w:br``
-separates, MS-OE376 §7.1.2.77), the alignment point marked by ``m:aln`` in the run properties
-of the run that followed the ``&`` (Word applies ``aln`` to math runs, MS-OI29500 §22.1.2.3; a
-line that starts with a structure rather than a run gets it on an operator-emulator box,
-the standard's form), and the paragraph justified ``centerGroup`` (the lines centred as a
-group). LibreOffice reads each ``m:oMath`` as a line of its own and ignores ``m:aln`` and the
-break run; a line that starts with a relation or operator (``= 1124.27 − …``) gets an empty
+for aligned lines: one ``m:oMath`` per line in the same ``m:oMathPara``, each line but the
+last ended by a line break ``<m:r><w:br/></m:r>`` (Word merges adjacent equations that no
+``w:br`` separates, MS-OE376 §7.1.2.77), the alignment point marked by ``m:aln`` in the run
+properties of the run that followed the ``&`` (Word applies ``aln`` to math runs,
+MS-OI29500 §22.1.2.3; a structure after the ``&`` gets an empty run before it that carries
+the mark), and the math paragraph justified ``centerGroup`` (the lines centred as a group).
+
+LibreOffice reads each ``m:oMath`` as an inline formula of its own and ignores ``m:aln`` and
+the break run: it wraps the lines at the cell's width, so two short lines may share a row
+there. A line that starts with a relation or operator (``= 1124.27 − …``) gets an empty
 normal-text run before it, which Word draws as nothing and which gives StarMath's binary
-operator the left operand it needs (else "¿").
+operator the left operand it needs (else "¿"); a bracket whose partner is on another line is
+set as normal text (else "¿" too).
 """
 from __future__ import annotations
 
@@ -36,8 +39,11 @@ _NEEDS_LEFT = set("=<>≤≥≈≠≡∼≃⇒⇐⇔→×⋅·∕/")
 _PARA = re.compile(r"<m:oMathPara>.*?</m:oMathPara>", re.DOTALL)
 _ONLY_ARRAY = re.compile(r"<m:oMath><m:eqArr>(.*)</m:eqArr></m:oMath>", re.DOTALL)
 _ARG_TAG = re.compile(r"<(/?)m:e>")
-_RUN_START = re.compile(r"<m:r>(?:<m:rPr>(.*?)</m:rPr>)?", re.DOTALL)
-_RUN_TEXTS = re.compile(r"<m:r>(?:<m:rPr>.*?</m:rPr>)?<m:t(?: [^>]*)?>([^<]*)</m:t></m:r>", re.DOTALL)
+#: a math run's properties: empty elements only (m:sty, m:nor, m:aln …), so that a match
+#: never runs on into the next run
+_PROPS = r"(?:<m:rPr>((?:<m:\w+[^>]*/>)*)</m:rPr>)?"
+_RUN_START = re.compile(r"<m:r>" + _PROPS)
+_RUN_TEXTS = re.compile(r"<m:r>" + _PROPS + r"<m:t(?: [^>]*)?>([^<]*)</m:t></m:r>")
 
 
 def _array_rows(inner: str) -> list[str] | None:
@@ -65,36 +71,16 @@ def _array_rows(inner: str) -> list[str] | None:
 
 
 def _with_alignment_point(rest: str) -> str:
-    """``rest`` (a line after its ``&``) with its first element marked as the alignment point."""
+    """``rest`` (a line after its ``&``) with its first element marked as the alignment point:
+    a run carries ``m:aln`` itself; before a structure (``F⃗ᵗ₂₃ + …``) stands an empty run
+    that carries it (the standard's other carrier, an operator-emulator box, would give the
+    structure an operator's spacing)."""
     run = _RUN_START.match(rest)
     if run is not None:
         props = run.group(1) or ""
         # m:aln is the last child of m:rPr (CT_RPR: lit?, (nor | scr?, sty?), brk?, aln?)
         return f"<m:r><m:rPr>{props}<m:aln /></m:rPr>" + rest[run.end():]
-    first = _first_element(rest)
-    if first is None:
-        return f"<m:r><m:rPr><m:aln /></m:rPr><m:t></m:t></m:r>{rest}"
-    box = ("<m:box><m:boxPr><m:opEmu m:val=\"1\" /><m:aln m:val=\"1\" /></m:boxPr><m:e>"
-           f"{rest[:first]}</m:e></m:box>")
-    return box + rest[first:]
-
-
-def _first_element(xml: str) -> int | None:
-    """End offset of the first complete element of ``xml`` (None if ``xml`` starts with none)."""
-    head = re.match(r"<(m:\w+)[ >]", xml)
-    if head is None:
-        return None
-    name = head.group(1)
-    depth = 0
-    for tag in re.finditer(rf"<(/?){name}(?=[ >/])[^>]*?(/?)>", xml):
-        if tag.group(2):
-            if depth == 0:
-                return tag.end()
-            continue
-        depth += 1 if tag.group(1) == "" else -1
-        if depth == 0:
-            return tag.end()
-    return None
+    return "<m:r><m:rPr><m:aln /></m:rPr><m:t></m:t></m:r>" + rest
 
 
 def _starts_with_operator(line: str) -> bool:
@@ -105,10 +91,39 @@ def _starts_with_operator(line: str) -> bool:
         run = _RUN_TEXTS.match(line, pos)
         if run is None:
             return False
-        text = run.group(1).strip()
+        text = run.group(2).strip()
         if text:
             return text[0] in _NEEDS_LEFT
         pos = run.end()
+
+
+_BRACKET_RUN = re.compile(r"<m:r>" + _PROPS + r"<m:t>([()\[\]])</m:t></m:r>")
+_OPENING = {")": "(", "]": "["}
+
+
+def _unmatched_brackets_as_text(line: str) -> str:
+    """``line`` with the bracket runs that have no partner in it (a bracket pair the break
+    split over two lines) set as normal text (``m:nor``): LibreOffice reads each line as a
+    formula of its own and draws an error mark "¿" at an unbalanced bracket, but quotes
+    normal text; Word draws either the same bracket."""
+    runs = list(_BRACKET_RUN.finditer(line))
+    stack: list[int] = []
+    unmatched: set[int] = set()
+    for n, run in enumerate(runs):
+        char = run.group(2)
+        if char in "([":
+            stack.append(n)
+        elif stack and runs[stack[-1]].group(2) == _OPENING[char]:
+            stack.pop()
+        else:
+            unmatched.add(n)
+    unmatched.update(stack)
+    for n in sorted(unmatched, reverse=True):
+        run = runs[n]
+        aln = "<m:aln />" if "<m:aln />" in (run.group(1) or "") else ""
+        text = f"<m:r><m:rPr><m:nor />{aln}</m:rPr><m:t>{run.group(2)}</m:t></m:r>"
+        line = line[:run.start()] + text + line[run.end():]
+    return line
 
 
 def _line(row: str) -> str:
@@ -121,7 +136,7 @@ def _line(row: str) -> str:
         line = head + (_with_alignment_point(rest) if rest else "")
     if _starts_with_operator(line):
         line = _EMPTY_OPERAND + line
-    return line
+    return _unmatched_brackets_as_text(line)
 
 
 def _paragraph(match: re.Match) -> str:
