@@ -14,10 +14,11 @@ Used by mechdesign.render.docx (pandoc 3 AST).  It
     borderless three-column table  | | equation | (N) |;
   * converts image widths given in percent to centimetres of the text width;
   * puts a title block (student, student no., class, supervisor, date) under
-    the title and subtitle, followed by a page break.
+    the title and subtitle, followed by a page break, then the table of contents
+    (an empty TOC field; Word fills it on opening) on a page of its own.
 
 Metadata read: report-lang (else lang), labels.{student,student_id,class,teacher,date},
-student, student_id, class, teacher, date, docx-text-width (twips).
+student, student_id, class, teacher, date, docx-text-width (twips), toc-title.
 Styles used (defined in reference.docx; Word falls back to Normal if a
 style is missing): Equation, Equation Number, Equation Table, Title Info,
 Table Text (Table Text Small, Table Text Smaller: a table too wide for its numbers).
@@ -498,6 +499,29 @@ local function title_block(meta)
 end
 
 ---------------------------------------------------------------------------
+-- table of contents: after the title page, on a page of its own (pandoc's --toc would put
+-- it between the subtitle and the title block); an empty TOC field, as pandoc writes it,
+-- that Word fills on opening and render/docx_toc.py fills for other readers
+
+local function contents_blocks(meta)
+  local title = meta["toc-title"] and stringify(meta["toc-title"]) or ""
+  local heading = ""
+  if title ~= "" then
+    heading = '<w:p><w:pPr><w:pStyle w:val="TOCHeading" /></w:pPr>' .. run_xml(title) .. "</w:p>"
+  end
+  local field = '<w:p><w:r><w:fldChar w:fldCharType="begin" w:dirty="true" />'
+    .. '<w:instrText xml:space="preserve">TOC \\o &quot;1-3&quot; \\h \\z \\u</w:instrText>'
+    .. '<w:fldChar w:fldCharType="separate" /><w:fldChar w:fldCharType="end" /></w:r></w:p>'
+  return {
+    pandoc.RawBlock("openxml", "<w:sdt><w:sdtPr><w:docPartObj>"
+      .. '<w:docPartGallery w:val="Table of Contents" /><w:docPartUnique />'
+      .. "</w:docPartObj></w:sdtPr><w:sdtContent>" .. heading .. field
+      .. "</w:sdtContent></w:sdt>"),
+    pandoc.RawBlock("openxml", '<w:p><w:r><w:br w:type="page" /></w:r></w:p>'),
+  }
+end
+
+---------------------------------------------------------------------------
 
 function Pandoc(doc)
   local meta = doc.meta
@@ -512,10 +536,9 @@ function Pandoc(doc)
   doc = doc:walk { Inlines = resolve_references }
 
   local front = title_block(meta)
-  if #front > 0 then
-    front:extend(doc.blocks)
-    doc.blocks = front
-  end
+  front:extend(contents_blocks(meta))
+  front:extend(doc.blocks)
+  doc.blocks = front
   -- the date is shown in the title block, not as pandoc's "Date" paragraph
   doc.meta.date = nil
   return doc

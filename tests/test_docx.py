@@ -367,3 +367,36 @@ def test_numbers_fit_their_columns_in_a_wide_table(tmp_path):
         width = col / sum(grid) * _TEXT_WIDTH
         widest = max(_number_twips(numbers[10 * r + c], half_points) for r in range(4))
         assert width >= widest + _CELL_MARGINS, (c, width, widest)
+
+
+def test_table_of_contents_after_the_title_page_with_an_entry_per_heading(tmp_path):
+    """Issue 22 (5): the contents page. Its TOC field stores an entry per heading (levels 1-3)
+    so that a reader that does not update fields (LibreOffice; Word when the user declines)
+    shows it, each a link to a bookmark around its heading; it stands on a page of its own
+    after the title block, not between the subtitle and the student's name."""
+    md = _write_sample(tmp_path, "# Kinematics\n\nText.\n\n## Velocities\n\nText.\n\n"
+                                 "### Polygon & scale\n\nText.\n\n#### Too deep\n\nText.\n\n"
+                                 "# Summary {-}\n\nText.\n")
+    out = tmp_path / "report.docx"
+    render_docx(md, out, {"title": "Course design", "student": "Zhang San", "lang": "en"}, TEMPLATES)
+    document = _part(out, "word/document.xml")
+    ElementTree.fromstring(document)
+    toc = re.search(r"<w:sdt>.*?</w:sdt>", document, flags=re.DOTALL).group(0)
+    entries = re.findall(r'<w:pStyle w:val="TOC(\d)" />.*?<w:hyperlink w:anchor="(\w+)"[^>]*>(.*?)</w:hyperlink>',
+                         toc, flags=re.DOTALL)
+    texts = ["".join(re.findall(r"<w:t[^>]*>([^<]*)</w:t>", body)) for _, _, body in entries]
+    assert [int(level) for level, _, _ in entries] == [1, 2, 3, 1]
+    assert texts == ["1 Kinematics", "1.1 Velocities", "1.1.1 Polygon &amp; scale", "Summary"]
+    for _, anchor, _ in entries:
+        heading = re.search(rf'<w:p><w:pPr><w:pStyle w:val="Heading\d" />(?:(?!</w:p>).)*'
+                            rf'w:name="{anchor}"', document, flags=re.DOTALL)
+        assert heading is not None, anchor
+    # the field: begin in the first entry, end after the last
+    assert re.search(r'<w:fldChar w:fldCharType="begin"[^>]*/></w:r><w:r><w:instrText[^>]*>TOC \\o', toc)
+    assert toc.count('w:fldCharType="end"') == 1
+    # order: title block, page break, contents, page break, body
+    name, toc_at = document.index("Name: Zhang San"), document.index("<w:sdt>")
+    body = document.index("Kinematics</w:t>", document.index("</w:sdt>"))
+    assert name < toc_at < body
+    assert '<w:br w:type="page" />' in document[name:toc_at]
+    assert '<w:br w:type="page" />' in document[document.index("</w:sdt>"):body]
