@@ -400,3 +400,23 @@ def test_table_of_contents_after_the_title_page_with_an_entry_per_heading(tmp_pa
     assert name < toc_at < body
     assert '<w:br w:type="page" />' in document[name:toc_at]
     assert '<w:br w:type="page" />' in document[document.index("</w:sdt>"):body]
+
+
+def test_a_bracket_closed_in_a_superscript_base_becomes_a_delimiter(tmp_path):
+    """texmath writes (a+b)^2 as "(" a + b and a superscript whose base is ")" alone:
+    LibreOffice draws each unbalanced bracket "¿". The bracketed runs become the base of the
+    superscript as a delimiter object (m:d), Word's form of (a+b)²."""
+    md = _write_sample(tmp_path, "# A\n\n$$ \\sigma = \\sqrt{M^2 + (\\alpha T)^2} + (C/P)^{3} $$\n")
+    out = tmp_path / "report.docx"
+    render_docx(md, out, {"title": "T", "lang": "en"}, TEMPLATES)
+    document = _part(out, "word/document.xml")
+    ElementTree.fromstring(document)
+    [para] = _math_paragraphs(document)
+    # no script has a lone bracket as its base any more
+    assert not re.search(r"<m:sSup><m:e><m:r>(?:<m:rPr>(?:<[^>]*/>)*</m:rPr>)?<m:t>[)\]]</m:t></m:r></m:e>", para)
+    bases = re.findall(r'<m:sSup><m:e><m:d><m:dPr><m:begChr m:val="\(" /><m:endChr m:val="\)" />'
+                       r"</m:dPr><m:e>(.*?)</m:e></m:d></m:e><m:sup>", para)
+    texts = ["".join(re.findall(r"<m:t>([^<]*)</m:t>", b)) for b in bases]
+    assert texts == ["αT", "C/P"]
+    # no bracket run left over outside them
+    assert not re.search(r"<m:t>[()]</m:t>", para)

@@ -35,7 +35,7 @@ from contextlib import contextmanager
 from pathlib import Path
 
 from ..fileio import atomic_path
-from .docx_math import align_broken_equations
+from .docx_math import align_broken_equations, group_scripted_brackets
 from .docx_toc import fill_table_of_contents
 from .mathbreak import break_display_math
 
@@ -208,7 +208,8 @@ def _finish(docx: Path, *, title: str, author: str, subject: str) -> None:
     shown results, filled in here so that they read right before Word updates fields;
     a reference.docx from before the AUTHOR field shows the title alone); the properties
     name the student as author and the report as subject; broken display formulas become
-    aligned lines that Word and LibreOffice both read (:mod:`.docx_math`); the table of
+    aligned lines that Word and LibreOffice both read, and a bracket closed in a script's
+    base a delimiter (:mod:`.docx_math`); the table of
     contents holds its entries before Word updates it (:mod:`.docx_toc`). The archive keeps
     its member order and dates (reproducible)."""
     with zipfile.ZipFile(docx) as zin:
@@ -221,7 +222,8 @@ def _finish(docx: Path, *, title: str, author: str, subject: str) -> None:
             data = data.replace(b"REPORT-SEPARATOR", "\u2003".encode("utf-8") if author else b"")
             data = data.replace(b"REPORT-AUTHOR", _xml_text(author).encode("utf-8"))
         elif name == "word/document.xml":
-            xml = fill_table_of_contents(align_broken_equations(data.decode("utf-8")))
+            xml = align_broken_equations(data.decode("utf-8"))
+            xml = fill_table_of_contents(group_scripted_brackets(xml))
             data = xml.encode("utf-8")
         elif name == "word/settings.xml":
             data = _update_fields_on_open(data)

@@ -1,4 +1,6 @@
-"""Broken display formulas of the Word report as aligned lines that Word and LibreOffice read.
+"""Formulas of the Word report in forms that Word and LibreOffice both read: broken display
+formulas as aligned lines (:func:`align_broken_equations`), a bracket closed in a script's
+base as a delimiter (:func:`group_scripted_brackets`, below).
 
 A formula too wide for a line is set by render/mathbreak as ``\\begin{aligned} … \\end{aligned}``,
 one ``&`` per line. pandoc (texmath) writes it as an equation array ``m:eqArr`` whose
@@ -161,4 +163,109 @@ def align_broken_equations(document_xml: str) -> str:
     return _PARA.sub(_paragraph, document_xml)
 
 
-__all__ = ["align_broken_equations"]
+
+
+# ---- a bracket closed in a script's base: (a + b)² ------------------------------------------
+#
+# texmath writes (a + b)² as the runs "(", a, +, b followed by a superscript whose base is the
+# run ")" alone. Word draws that as it reads; LibreOffice converts every argument to a StarMath
+# group of its own, so the "(" outside and the ")" inside the superscript's group are each
+# unbalanced and drawn "¿". :func:`group_scripted_brackets` makes the bracketed run the
+# script's base as a delimiter object (m:d), Word's own form of (a + b)², which LibreOffice
+# imports as "left( a + b right)^2".
+
+_M = "http://schemas.openxmlformats.org/officeDocument/2006/math"
+_W = "http://schemas.openxmlformats.org/wordprocessingml/2006/main"
+_SCRIPTS = {f"{{{_M}}}sSup", f"{{{_M}}}sSub", f"{{{_M}}}sSubSup"}
+_CLOSING = {")": "(", "]": "["}
+_OMATH = re.compile(r"<m:oMath>.*?</m:oMath>", re.DOTALL)
+
+
+def _bracket(element) -> str | None:
+    """The text of a math run that is one bracket and nothing else, else None."""
+    if element.tag != f"{{{_M}}}r":
+        return None
+    texts = [t.text or "" for t in element.iter(f"{{{_M}}}t")]
+    text = "".join(texts).strip()
+    return text if len(texts) == 1 and text in ("(", ")", "[", "]") else None
+
+
+def _closing_base(element) -> str | None:
+    """The bracket that is the whole base of a script element (its m:e), else None."""
+    if element.tag not in _SCRIPTS:
+        return None
+    base = element.find(f"{{{_M}}}e")
+    if base is None or len(base) != 1:
+        return None
+    char = _bracket(base[0])
+    return char if char in _CLOSING else None
+
+
+def _group(parent) -> bool:
+    """Rewrites ``parent``'s children (and theirs); True if anything changed."""
+    from xml.etree import ElementTree as ET
+
+    changed = False
+    for child in list(parent):
+        changed |= _group(child)
+    children = list(parent)
+    k = 0
+    while k < len(children):
+        closing = _closing_base(children[k])
+        if closing is None:
+            k += 1
+            continue
+        depth, j = 0, k - 1
+        while j >= 0:
+            char = _bracket(children[j])
+            if char == closing:
+                depth += 1
+            elif char == _CLOSING[closing]:
+                if depth == 0:
+                    break
+                depth -= 1
+            j -= 1
+        if j < 0:
+            k += 1
+            continue
+        script = children[k]
+        base = script.find(f"{{{_M}}}e")
+        delimiter = ET.Element(f"{{{_M}}}d")
+        props = ET.SubElement(delimiter, f"{{{_M}}}dPr")
+        ET.SubElement(props, f"{{{_M}}}begChr", {f"{{{_M}}}val": _CLOSING[closing]})
+        ET.SubElement(props, f"{{{_M}}}endChr", {f"{{{_M}}}val": closing})
+        inner = ET.SubElement(delimiter, f"{{{_M}}}e")
+        for element in children[j + 1:k]:
+            parent.remove(element)
+            inner.append(element)
+        parent.remove(children[j])
+        base[:] = [delimiter]
+        children = list(parent)
+        k = children.index(script) + 1
+        changed = True
+    return changed
+
+
+def group_scripted_brackets(document_xml: str) -> str:
+    """``word/document.xml`` with every ``(…)ⁿ`` that texmath wrote as a bracket run and a
+    script whose base is the closing bracket rewritten as a script of a delimiter object."""
+    from xml.etree import ElementTree as ET
+
+    ET.register_namespace("m", _M)
+    ET.register_namespace("w", _W)
+    head = f'<root xmlns:m="{_M}" xmlns:w="{_W}">'
+
+    def one(match: re.Match) -> str:
+        fragment = match.group(0)
+        if "<m:sSu" not in fragment:
+            return fragment
+        root = ET.fromstring(head + fragment + "</root>")
+        if not _group(root):
+            return fragment
+        text = ET.tostring(root, encoding="unicode")
+        return text[text.index(">") + 1:text.rindex("</root>")]
+
+    return _OMATH.sub(one, document_xml)
+
+
+__all__ = ["align_broken_equations", "group_scripted_brackets"]
