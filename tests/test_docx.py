@@ -420,3 +420,24 @@ def test_a_bracket_closed_in_a_superscript_base_becomes_a_delimiter(tmp_path):
     assert texts == ["αT", "C/P"]
     # no bracket run left over outside them
     assert not re.search(r"<m:t>[()]</m:t>", para)
+
+
+def test_bars_in_pairs_become_absolute_values():
+    """A bare "|" is StarMath's logical or ("∨" in LibreOffice): bars in pairs become a
+    delimiter |x| (m:d); a single bar (a conditional, a divisor) stays a run. A superscript
+    "*" (an operator to StarMath, drawn "¿") becomes U+2217."""
+    from mechdesign.render.docx_math import group_scripted_brackets
+
+    def r(t):
+        return f"<m:r><m:t>{t}</m:t></m:r>"
+
+    pair = f'<w:p xmlns:w="w"><m:oMath>{r("max")}{r("|")}{r("M")}{r("ω")}{r("|")}</m:oMath></w:p>'
+    out = group_scripted_brackets(pair)
+    assert out == ('<w:p xmlns:w="w"><m:oMath>' + r("max")
+                   + '<m:d><m:dPr><m:begChr m:val="|" /><m:endChr m:val="|" /></m:dPr>'
+                   + f"<m:e>{r('M')}{r('ω')}</m:e></m:d></m:oMath></w:p>")
+    single = f'<w:p xmlns:w="w"><m:oMath>{r("P")}{r("(")}{r("A")}{r("|")}{r("B")}{r(")")}</m:oMath></w:p>'
+    assert group_scripted_brackets(single) == single
+    # a superscript asterisk (h_a^*) is the asterisk operator, a symbol to StarMath
+    star = f"<m:oMath><m:sSup><m:e>{r('h')}</m:e><m:sup>{r('*')}</m:sup></m:sSup></m:oMath>"
+    assert group_scripted_brackets(star) == star.replace("<m:t>*</m:t>", "<m:t>\u2217</m:t>")

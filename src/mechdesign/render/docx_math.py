@@ -172,7 +172,8 @@ def align_broken_equations(document_xml: str) -> str:
 # group of its own, so the "(" outside and the ")" inside the superscript's group are each
 # unbalanced and drawn "¿". :func:`group_scripted_brackets` makes the bracketed run the
 # script's base as a delimiter object (m:d), Word's own form of (a + b)², which LibreOffice
-# imports as "left( a + b right)^2".
+# imports as "left( a + b right)^2". Bars "|" in pairs become absolute values the same way,
+# and a superscript asterisk (h_a^*) the asterisk operator U+2217.
 
 _M = "http://schemas.openxmlformats.org/officeDocument/2006/math"
 _W = "http://schemas.openxmlformats.org/wordprocessingml/2006/main"
@@ -182,12 +183,41 @@ _OMATH = re.compile(r"<m:oMath>.*?</m:oMath>", re.DOTALL)
 
 
 def _bracket(element) -> str | None:
-    """The text of a math run that is one bracket and nothing else, else None."""
+    """The text of a math run that is one bracket (or bar) and nothing else, else None."""
     if element.tag != f"{{{_M}}}r":
         return None
     texts = [t.text or "" for t in element.iter(f"{{{_M}}}t")]
     text = "".join(texts).strip()
-    return text if len(texts) == 1 and text in ("(", ")", "[", "]") else None
+    return text if len(texts) == 1 and text in ("(", ")", "[", "]", "|") else None
+
+
+def _delimited(children, begin: str, end: str):
+    """A delimiter object (m:d) with ``begin`` and ``end`` around ``children``."""
+    from xml.etree import ElementTree as ET
+
+    delimiter = ET.Element(f"{{{_M}}}d")
+    props = ET.SubElement(delimiter, f"{{{_M}}}dPr")
+    ET.SubElement(props, f"{{{_M}}}begChr", {f"{{{_M}}}val": begin})
+    ET.SubElement(props, f"{{{_M}}}endChr", {f"{{{_M}}}val": end})
+    inner = ET.SubElement(delimiter, f"{{{_M}}}e")
+    inner.extend(children)
+    return delimiter
+
+
+def _pair_bars(parent) -> bool:
+    """Bar runs "|" of ``parent``, when there is an even number of them, taken in pairs as
+    absolute values |x| (m:d): StarMath reads a bare "|" as the logical or "∨"."""
+    children = list(parent)
+    bars = [n for n, child in enumerate(children) if _bracket(child) == "|"]
+    if not bars or len(bars) % 2:
+        return False
+    for start, end in reversed(list(zip(bars[::2], bars[1::2]))):
+        inside = children[start + 1:end]
+        for element in children[start:end + 1]:
+            parent.remove(element)
+        parent.insert(start, _delimited(inside, "|", "|"))
+        children = list(parent)
+    return True
 
 
 def _closing_base(element) -> str | None:
@@ -203,8 +233,6 @@ def _closing_base(element) -> str | None:
 
 def _group(parent) -> bool:
     """Rewrites ``parent``'s children (and theirs); True if anything changed."""
-    from xml.etree import ElementTree as ET
-
     changed = False
     for child in list(parent):
         changed |= _group(child)
@@ -230,20 +258,19 @@ def _group(parent) -> bool:
             continue
         script = children[k]
         base = script.find(f"{{{_M}}}e")
-        delimiter = ET.Element(f"{{{_M}}}d")
-        props = ET.SubElement(delimiter, f"{{{_M}}}dPr")
-        ET.SubElement(props, f"{{{_M}}}begChr", {f"{{{_M}}}val": _CLOSING[closing]})
-        ET.SubElement(props, f"{{{_M}}}endChr", {f"{{{_M}}}val": closing})
-        inner = ET.SubElement(delimiter, f"{{{_M}}}e")
-        for element in children[j + 1:k]:
+        inside = children[j + 1:k]
+        for element in children[j:k]:
             parent.remove(element)
-            inner.append(element)
-        parent.remove(children[j])
-        base[:] = [delimiter]
+        base[:] = [_delimited(inside, _CLOSING[closing], closing)]
         children = list(parent)
         k = children.index(script) + 1
         changed = True
-    return changed
+    return _pair_bars(parent) or changed
+
+
+#: a superscript that is an asterisk alone (h_a^*, c^*): StarMath reads "*" as an operator
+#: and draws "¿" for its operands; U+2217 (asterisk operator) is a symbol to both readers
+_STAR_SUPERSCRIPT = re.compile(r"(<m:sup><m:r>(?:<m:rPr>(?:<m:\w+[^>]*/>)*</m:rPr>)?<m:t>)\*(</m:t></m:r></m:sup>)")
 
 
 def group_scripted_brackets(document_xml: str) -> str:
@@ -257,7 +284,7 @@ def group_scripted_brackets(document_xml: str) -> str:
 
     def one(match: re.Match) -> str:
         fragment = match.group(0)
-        if "<m:sSu" not in fragment:
+        if "<m:sSu" not in fragment and "<m:t>|</m:t>" not in fragment:
             return fragment
         root = ET.fromstring(head + fragment + "</root>")
         if not _group(root):
@@ -265,7 +292,8 @@ def group_scripted_brackets(document_xml: str) -> str:
         text = ET.tostring(root, encoding="unicode")
         return text[text.index(">") + 1:text.rindex("</root>")]
 
-    return _OMATH.sub(one, document_xml)
+    grouped = _OMATH.sub(one, document_xml)
+    return _STAR_SUPERSCRIPT.sub(lambda m: m.group(1) + "\u2217" + m.group(2), grouped)
 
 
 __all__ = ["align_broken_equations", "group_scripted_brackets"]
