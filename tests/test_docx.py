@@ -438,6 +438,13 @@ def test_bars_in_pairs_become_absolute_values():
                    + f"<m:e>{r('M')}{r('ω')}</m:e></m:d></m:oMath></w:p>")
     single = f'<w:p xmlns:w="w"><m:oMath>{r("P")}{r("(")}{r("A")}{r("|")}{r("B")}{r(")")}</m:oMath></w:p>'
     assert group_scripted_brackets(single) == single
+    # |B|^3: the closing bar is the superscript's base
+    cubed = (f'<w:p xmlns:w="w"><m:oMath>{r("|")}{r("B")}<m:sSup><m:e>{r("|")}</m:e>'
+             f"<m:sup>{r('3')}</m:sup></m:sSup></m:oMath></w:p>")
+    assert group_scripted_brackets(cubed) == (
+        '<w:p xmlns:w="w"><m:oMath><m:sSup><m:e><m:d><m:dPr><m:begChr m:val="|" />'
+        f'<m:endChr m:val="|" /></m:dPr><m:e>{r("B")}</m:e></m:d></m:e>'
+        f"<m:sup>{r('3')}</m:sup></m:sSup></m:oMath></w:p>")
     # a superscript asterisk (h_a^*) is the asterisk operator, a symbol to StarMath
     star = f"<m:oMath><m:sSup><m:e>{r('h')}</m:e><m:sup>{r('*')}</m:sup></m:sSup></m:oMath>"
     assert group_scripted_brackets(star) == star.replace("<m:t>*</m:t>", "<m:t>\u2217</m:t>")

@@ -228,7 +228,7 @@ def _closing_base(element) -> str | None:
     if base is None or len(base) != 1:
         return None
     char = _bracket(base[0])
-    return char if char in _CLOSING else None
+    return char if char in _CLOSING or char == "|" else None
 
 
 def _group(parent) -> bool:
@@ -246,7 +246,10 @@ def _group(parent) -> bool:
         depth, j = 0, k - 1
         while j >= 0:
             char = _bracket(children[j])
-            if char == closing:
+            if closing == "|":
+                if char == "|":
+                    break
+            elif char == closing:
                 depth += 1
             elif char == _CLOSING[closing]:
                 if depth == 0:
@@ -261,7 +264,7 @@ def _group(parent) -> bool:
         inside = children[j + 1:k]
         for element in children[j:k]:
             parent.remove(element)
-        base[:] = [_delimited(inside, _CLOSING[closing], closing)]
+        base[:] = [_delimited(inside, _CLOSING.get(closing, closing), closing)]
         children = list(parent)
         k = children.index(script) + 1
         changed = True
