@@ -14,13 +14,14 @@ Used by mechdesign.render.docx (pandoc 3 AST).  It
     borderless three-column table  | | equation | (N) |;
   * converts image widths given in percent to centimetres of the text width;
   * puts a title block (student, student no., class, supervisor, date) under
-    the title and subtitle, followed by a page break.
+    the title and subtitle, followed by a page break, then the table of contents
+    (an empty TOC field; Word fills it on opening) on a page of its own.
 
 Metadata read: report-lang (else lang), labels.{student,student_id,class,teacher,date},
-student, student_id, class, teacher, date, docx-text-width (twips).
+student, student_id, class, teacher, date, docx-text-width (twips), toc-title.
 Styles used (defined in reference.docx; Word falls back to Normal if a
 style is missing): Equation, Equation Number, Equation Table, Title Info,
-Table Text.
+Table Text (Table Text Small, Table Text Smaller: a table too wide for its numbers).
 --]]
 
 local stringify = pandoc.utils.stringify
@@ -207,8 +208,9 @@ local function figure_id(fig)
   return id
 end
 
-local function wrap_cells(tbl)
-  -- table text: its own paragraph style (small, single-spaced, no indent).
+local function wrap_cells(tbl, style)
+  -- table text: its own paragraph style (small, single-spaced, no indent; smaller for a
+  -- table too wide for its numbers at 10.5 pt, see set_widths).
   -- Properties of pandoc objects return copies: modify, then assign back.
   local function wrap_rows(rows)
     for r, row in ipairs(rows) do
@@ -219,7 +221,7 @@ local function wrap_cells(tbl)
           local blocks = pandoc.Blocks(cell.contents):walk {
             Plain = function(plain) return pandoc.Para(plain.content) end,
           }
-          cell.contents = { pandoc.Div(blocks, { ["custom-style"] = "Table Text" }) }
+          cell.contents = { pandoc.Div(blocks, { ["custom-style"] = style }) }
           cells[c] = cell
         end
       end
@@ -247,33 +249,81 @@ end
 -- Column widths from the cells' contents (pandoc leaves "natural" widths to the reader:
 -- Word autofits, LibreOffice and WPS squeeze the columns). Half-width characters count 1,
 -- CJK and full-width 2; TeX math counts about half its source length.
+local function is_wide(c) return c >= 0x2E80 and c <= 0xFFEF end
+
 local function text_len(s)
   local n = 0
   for _, c in utf8.codes(s) do
-    n = n + ((c >= 0x2E80 and c <= 0xFFEF) and 2 or 1)
+    n = n + (is_wide(c) and 2 or 1)
   end
   return n
 end
 
-local function cell_len(cell)
-  local n = 0
-  pandoc.Blocks(cell.contents):walk {
-    Str = function(el) n = n + text_len(el.text) end,
-    Space = function() n = n + 1 end,
-    Math = function(el) n = n + math.ceil(text_len(el.text) / 2) end,
-  }
-  return n
+-- Width (twips at 10.5 pt, 1 em = 210 twips) of one character of table text, after the
+-- advance widths of Times (AFM, 1/1000 em; Liberation Serif has the same): CJK 1 em,
+-- digits 0.5 em, "." "," ":" 0.25 em, "-" 0.33 em, capitals and m/w about 0.7–0.8 em.
+local function char_twips(c)
+  if is_wide(c) then return 212 end
+  if c >= 0x30 and c <= 0x39 then return 106 end
+  if c == 0x2E or c == 0x2C or c == 0x3A or c == 0x3B or c == 0x27 or c == 0x69
+      or c == 0x6C or c == 0x7C or c == 0x21 then return 56 end
+  if c == 0x2D or c == 0x2F or c == 0x28 or c == 0x29 then return 72 end
+  if c == 0x6D or c == 0x77 or c == 0x4D or c == 0x57 then return 190 end
+  if c >= 0x41 and c <= 0x5A then return 152 end
+  return 112
 end
 
+-- Length (characters, as text_len) of a cell's text, and width (twips at 10.5 pt) of its
+-- widest piece that no line may break: a number or word (a Str up to a space; a line may
+-- break after "/" and around CJK characters) or an inline formula (one object).
+local function cell_measure(cell)
+  local n, piece, widest = 0, 0, 0
+  local function flush()
+    widest = math.max(widest, piece)
+    piece = 0
+  end
+  pandoc.Blocks(cell.contents):walk {
+    Str = function(el)
+      n = n + text_len(el.text)
+      for _, c in utf8.codes(el.text) do
+        if is_wide(c) then
+          flush(); piece = char_twips(c); flush()
+        else
+          piece = piece + char_twips(c)
+          if c == 0x2F then flush() end
+        end
+      end
+    end,
+    Space = function() n = n + 1; flush() end,
+    SoftBreak = flush,
+    LineBreak = flush,
+    Math = function(el)
+      local len = math.ceil(text_len(el.text) / 2)
+      n = n + len
+      piece = piece + len * 112
+    end,
+  }
+  flush()
+  return n, widest
+end
+
+-- Table text sizes (half-points) and their paragraph styles (reference.docx): a table whose
+-- numbers do not fit their columns at 10.5 pt is set at 9 pt, or 7.5 pt.
+local TABLE_SIZES = { { 21, "Table Text" }, { 18, "Table Text Small" }, { 15, "Table Text Smaller" } }
+local CELL_MARGINS = 216 + 30     -- left + right cell margins of the Table style, and a little
+
+-- Sets the relative column widths; returns the paragraph style of the table's text.
 local function set_widths(tbl)
   local ncol = #tbl.colspecs
-  local longest = {}
-  for c = 1, ncol do longest[c] = 2 end
+  local longest, widest = {}, {}
+  for c = 1, ncol do longest[c] = 2; widest[c] = 0 end
   local function scan(rows)
     for _, row in ipairs(rows) do
       for c, cell in ipairs(row.cells) do
         if c <= ncol and cell.col_span == 1 then
-          longest[c] = math.max(longest[c], cell_len(cell))
+          local n, w = cell_measure(cell)
+          longest[c] = math.max(longest[c], n)
+          widest[c] = math.max(widest[c], w)
         end
       end
     end
@@ -281,18 +331,42 @@ local function set_widths(tbl)
   scan(tbl.head.rows)
   for _, body in ipairs(tbl.bodies) do scan(body.head); scan(body.body) end
   local char, pad = 118, 300          -- twips per half-width character at 10.5 pt; cell margins
-  local natural, total = {}, 0
-  for c = 1, ncol do
-    natural[c] = math.min(longest[c], 40) * char + pad
-    total = total + natural[c]
+  local natural, least, style
+  for _, size in ipairs(TABLE_SIZES) do
+    local scale = size[1] / 21
+    natural, least = {}, {}
+    local sum_least = 0
+    for c = 1, ncol do
+      least[c] = widest[c] * scale + CELL_MARGINS
+      natural[c] = math.max(math.min(longest[c], 40) * char * scale + pad, least[c])
+      sum_least = sum_least + least[c]
+    end
+    style = size[2]
+    if sum_least <= TEXT_WIDTH then break end
   end
-  local scale = total > TEXT_WIDTH and TEXT_WIDTH / total or 1
+  local sum_natural, sum_least = 0, 0
+  for c = 1, ncol do
+    sum_natural = sum_natural + natural[c]
+    sum_least = sum_least + least[c]
+  end
+  local width = {}
+  for c = 1, ncol do
+    if sum_natural <= TEXT_WIDTH then
+      width[c] = natural[c]
+    elseif sum_least < TEXT_WIDTH then
+      -- every column keeps its widest number; the rest of the width goes by natural width
+      local k = (TEXT_WIDTH - sum_least) / (sum_natural - sum_least)
+      width[c] = least[c] + (natural[c] - least[c]) * k
+    else
+      width[c] = least[c] * TEXT_WIDTH / sum_least
+    end
+  end
   local specs = tbl.colspecs
   for c = 1, ncol do
-    specs[c] = { specs[c][1], natural[c] * scale / TEXT_WIDTH }
+    specs[c] = { specs[c][1], width[c] / TEXT_WIDTH }
   end
   tbl.colspecs = specs
-  return tbl
+  return tbl, style
 end
 
 local number_pass = {
@@ -313,7 +387,8 @@ local number_pass = {
       tbl.caption = number_caption(tbl.caption, "table", counters.table)
     end
     -- display math inside table cells stays unnumbered (no nested tables)
-    return wrap_cells(set_widths(tbl:walk { Image = fix_image })), false
+    local sized, style = set_widths(tbl:walk { Image = fix_image })
+    return wrap_cells(sized, style), false
   end,
   Para = split_display_math,
   Plain = split_display_math,
@@ -424,6 +499,29 @@ local function title_block(meta)
 end
 
 ---------------------------------------------------------------------------
+-- table of contents: after the title page, on a page of its own (pandoc's --toc would put
+-- it between the subtitle and the title block); an empty TOC field, as pandoc writes it,
+-- that Word fills on opening and render/docx_toc.py fills for other readers
+
+local function contents_blocks(meta)
+  local title = meta["toc-title"] and stringify(meta["toc-title"]) or ""
+  local heading = ""
+  if title ~= "" then
+    heading = '<w:p><w:pPr><w:pStyle w:val="TOCHeading" /></w:pPr>' .. run_xml(title) .. "</w:p>"
+  end
+  local field = '<w:p><w:r><w:fldChar w:fldCharType="begin" w:dirty="true" />'
+    .. '<w:instrText xml:space="preserve">TOC \\o &quot;1-3&quot; \\h \\z \\u</w:instrText>'
+    .. '<w:fldChar w:fldCharType="separate" /><w:fldChar w:fldCharType="end" /></w:r></w:p>'
+  return {
+    pandoc.RawBlock("openxml", "<w:sdt><w:sdtPr><w:docPartObj>"
+      .. '<w:docPartGallery w:val="Table of Contents" /><w:docPartUnique />'
+      .. "</w:docPartObj></w:sdtPr><w:sdtContent>" .. heading .. field
+      .. "</w:sdtContent></w:sdt>"),
+    pandoc.RawBlock("openxml", '<w:p><w:r><w:br w:type="page" /></w:r></w:p>'),
+  }
+end
+
+---------------------------------------------------------------------------
 
 function Pandoc(doc)
   local meta = doc.meta
@@ -438,10 +536,9 @@ function Pandoc(doc)
   doc = doc:walk { Inlines = resolve_references }
 
   local front = title_block(meta)
-  if #front > 0 then
-    front:extend(doc.blocks)
-    doc.blocks = front
-  end
+  front:extend(contents_blocks(meta))
+  front:extend(doc.blocks)
+  doc.blocks = front
   -- the date is shown in the title block, not as pandoc's "Date" paragraph
   doc.meta.date = nil
   return doc

@@ -5,6 +5,7 @@ from __future__ import annotations
 import re
 import shutil
 import zipfile
+from xml.etree import ElementTree
 from pathlib import Path
 
 import pytest
@@ -237,3 +238,213 @@ def test_the_table_of_contents_is_filled_when_word_opens_the_file(zh_docx):
     children = [t for t in re.findall(r"<(?:w|m):(\w+)", settings) if t in _SETTINGS_ORDER]
     tops = list(dict.fromkeys(children))
     assert tops == sorted(tops, key=_SETTINGS_ORDER.index), tops
+
+
+# A formula far wider than a line: render/mathbreak sets it as `aligned` (rows at "=").
+LONG_FORMULA = ("L_{O_3M} = L_{O_3B}\\,\\frac{1+\\cos(\\psi/2)}{2} = L_{O_3B} - "
+                "\\frac{L_{O_3B}\\,(1-\\cos(\\psi/2))}{2} = 1124.27 - "
+                "\\frac{1124.27 \\times 0.01018}{2} = 1118.55\\ \\text{mm}")
+
+
+def _math_paragraphs(document_xml: str) -> list[str]:
+    return re.findall(r"<m:oMathPara>.*?</m:oMathPara>", document_xml, flags=re.DOTALL)
+
+
+def test_broken_equation_is_aligned_lines_without_ampersands(tmp_path):
+    """Issue 19 (1): LibreOffice drew "∧¿" at the alignment marks of broken equations (the
+    literal "&" of an m:eqArr is StarMath's logical and). Each line is an m:oMath of its own,
+    separated by a line break run, aligned by m:aln (Word's form for aligned equations of a
+    math paragraph); a line that starts with "=" has an empty operand before it."""
+    from mechdesign.render.docx import WORD_BUDGET_EM
+    from mechdesign.render.mathbreak import break_formula
+
+    broken = break_formula(LONG_FORMULA, WORD_BUDGET_EM)
+    n_rows = broken.count("\\\\") + 1
+    assert n_rows >= 2                       # the sample is broken at all
+    md = _write_sample(tmp_path, f"# Kinematics\n\n$$ {LONG_FORMULA} $$\n")
+    out = tmp_path / "report.docx"
+    render_docx(md, out, {"title": "Course design", "lang": "en"}, TEMPLATES)
+    document = _part(out, "word/document.xml")
+    ElementTree.fromstring(document)         # well-formed
+    assert "<m:t>&amp;</m:t>" not in document and "<m:eqArr>" not in document
+    [para] = _math_paragraphs(document)
+    lines = re.findall(r"<m:oMath>(.*?)</m:oMath>", para, flags=re.DOTALL)
+    assert len(lines) == n_rows
+    assert all(line.endswith("<m:r><w:br /></m:r>") for line in lines[:-1])
+    assert "<w:br" not in lines[-1]
+    assert '<m:jc m:val="centerGroup" />' in para
+    # one alignment point per line, the last property of its run (CT_RPR order)
+    for line in lines:
+        assert line.count("<m:aln />") == 1
+        assert re.search(r"<m:rPr>(?:<m:(?:lit|nor|scr|sty|brk)\b[^>]*/>)*<m:aln /></m:rPr>", line)
+    # continuation lines start with "=": an empty normal-text run stands before it
+    continued = [line for line in lines[1:] if "<m:t>=</m:t>" in line[:200]]
+    assert continued and all(line.startswith("<m:r><m:rPr><m:nor /></m:rPr><m:t></m:t></m:r>")
+                             for line in continued)
+    # the first line keeps its left side before the alignment point
+    assert lines[0].index("<m:aln />") > lines[0].index("<m:t>L</m:t>")
+
+
+def test_alignment_point_before_a_structure_is_an_empty_run():
+    """A line whose alignment point precedes a structure (not a run): an empty run carries
+    m:aln (an operator-emulator box would space the structure as an operator)."""
+    from mechdesign.render.docx_math import align_broken_equations
+
+    amp = "<m:r><m:t>&amp;</m:t></m:r>"
+    sub = "<m:sSub><m:e><m:r><m:t>x</m:t></m:r></m:e><m:sub><m:r><m:t>1</m:t></m:r></m:sub></m:sSub>"
+    xml = ('<w:p><m:oMathPara><m:oMathParaPr><m:jc m:val="center" /></m:oMathParaPr>'
+           f"<m:oMath><m:eqArr><m:e>{amp}{sub}</m:e><m:e>{amp}<m:r><m:t>y</m:t></m:r></m:e>"
+           "</m:eqArr></m:oMath></m:oMathPara></w:p>")
+    out = align_broken_equations(xml)
+    lines = re.findall(r"<m:oMath>(.*?)</m:oMath>", out)
+    assert lines[0] == f"<m:r><m:rPr><m:aln /></m:rPr><m:t></m:t></m:r>{sub}<m:r><w:br /></m:r>"
+    assert lines[1] == "<m:r><m:rPr><m:aln /></m:rPr><m:t>y</m:t></m:r>"
+    # an equation array inside a formula (not the whole display) is left alone
+    inner = xml.replace("<m:oMath><m:eqArr>", "<m:oMath><m:r><m:t>a</m:t></m:r><m:eqArr>")
+    assert align_broken_equations(inner) == inner
+
+
+def test_a_bracket_pair_split_over_two_lines_is_normal_text():
+    """LibreOffice reads each line as a formula of its own: a bracket without its partner on
+    the line would be an error mark "¿" there; as normal text (m:nor) it is drawn as is."""
+    from mechdesign.render.docx_math import align_broken_equations
+
+    amp = "<m:r><m:t>&amp;</m:t></m:r>"
+
+    def run(text, props=""):
+        return f"<m:r><m:rPr>{props}</m:rPr><m:t>{text}</m:t></m:r>" if props else f"<m:r><m:t>{text}</m:t></m:r>"
+
+    p = '<m:sty m:val="p" />'
+    row1 = run("a") + amp + run("=", p) + run("(", p) + run("b") + run("+", p) + run("(", p) + run("c") + run(")", p)
+    row2 = amp + run("+", p) + run("d") + run(")", p) + run("[", p) + run("e") + run("]", p)
+    xml = (f"<m:oMathPara><m:oMath><m:eqArr><m:e>{row1}</m:e><m:e>{row2}</m:e></m:eqArr>"
+           "</m:oMath></m:oMathPara>")
+    lines = re.findall(r"<m:oMath>(.*?)</m:oMath>", align_broken_equations(xml))
+    nor = "<m:r><m:rPr><m:nor /></m:rPr><m:t>{}</m:t></m:r>"
+    # line 1: the first "(" is open at the line's end; "(c)" is a pair
+    assert lines[0].count(nor.format("(")) == 1 and lines[0].count(run("(", p)) == 1
+    assert run(")", p) in lines[0]
+    # line 2: its ")" closes a bracket of line 1; "[e]" is a pair
+    assert lines[1].count(nor.format(")")) == 1
+    assert run("[", p) in lines[1] and run("]", p) in lines[1]
+
+
+# Advance widths of Times (Adobe AFM, 1/1000 em): the digits, "." and "-" of the numbers below.
+_TIMES_WIDTH = {**{d: 500 for d in "0123456789"}, ".": 250, "-": 333}
+_TEXT_WIDTH = 11906 - 2 * 1418            # twips between the margins of reference.docx
+_CELL_MARGINS = 2 * 108                   # left + right cell margins of the Table style
+
+
+def _number_twips(number: str, half_points: int) -> float:
+    return sum(_TIMES_WIDTH[c] for c in number) / 1000 * half_points / 2 * 20
+
+
+def test_numbers_fit_their_columns_in_a_wide_table(tmp_path):
+    """Issue 19 (7) / 22: numbers broke inside narrow cells ("188." | "18"). Every column is
+    at least as wide as its widest number (Times metrics) plus the cell margins; a table too
+    wide for that at 10.5 pt is set in the 9 pt table style."""
+    numbers = [f"-{1000 + 37 * r + c}.{(7 * r + c) % 100:02d}" for r in range(4) for c in range(10)]
+    header = "| " + " | ".join(f"$F_{{R{c}}}$/kN" for c in range(10)) + " |"
+    rows = ["| " + " | ".join(numbers[10 * r:10 * r + 10]) + " |" for r in range(4)]
+    narrow = "| a | b |\n|--:|--:|\n| 12.5 | 3.25 |"
+    md = _write_sample(tmp_path, "# Forces\n\n" + "\n".join([header, "|" + "--:|" * 10, *rows])
+                       + "\n\n: Reactions\n\n" + narrow + "\n")
+    out = tmp_path / "report.docx"
+    render_docx(md, out, {"title": "Course design", "lang": "en"}, TEMPLATES)
+    document = _part(out, "word/document.xml")
+    styles = _part(out, "word/styles.xml")
+    wide, small = [t for t in re.findall(r"<w:tbl>.*?</w:tbl>", document, flags=re.DOTALL)
+                   if 'w:tblStyle w:val="Table"' in t]
+    style = re.search(r'<w:pStyle w:val="(TableText\w*)"', wide).group(1)
+    assert style == "TableTextSmall"
+    assert re.search(r'<w:pStyle w:val="TableText"', small)     # a narrow table keeps 10.5 pt
+    definition = re.search(rf'<w:style [^>]*w:styleId="{style}".*?</w:style>', styles, re.DOTALL)
+    half_points = int(re.search(r'<w:sz w:val="(\d+)"', definition.group(0)).group(1))
+    assert half_points == 18
+    grid = [int(w) for w in re.findall(r'<w:gridCol w:w="(\d+)"', wide)]
+    assert len(grid) == 10
+    for c, col in enumerate(grid):
+        width = col / sum(grid) * _TEXT_WIDTH
+        widest = max(_number_twips(numbers[10 * r + c], half_points) for r in range(4))
+        assert width >= widest + _CELL_MARGINS, (c, width, widest)
+
+
+def test_table_of_contents_after_the_title_page_with_an_entry_per_heading(tmp_path):
+    """Issue 22 (5): the contents page. Its TOC field stores an entry per heading (levels 1-3)
+    so that a reader that does not update fields (LibreOffice; Word when the user declines)
+    shows it, each a link to a bookmark around its heading; it stands on a page of its own
+    after the title block, not between the subtitle and the student's name."""
+    md = _write_sample(tmp_path, "# Kinematics\n\nText.\n\n## Velocities\n\nText.\n\n"
+                                 "### Polygon & scale\n\nText.\n\n#### Too deep\n\nText.\n\n"
+                                 "# Summary {-}\n\nText.\n")
+    out = tmp_path / "report.docx"
+    render_docx(md, out, {"title": "Course design", "student": "Zhang San", "lang": "en"}, TEMPLATES)
+    document = _part(out, "word/document.xml")
+    ElementTree.fromstring(document)
+    toc = re.search(r"<w:sdt>.*?</w:sdt>", document, flags=re.DOTALL).group(0)
+    entries = re.findall(r'<w:pStyle w:val="TOC(\d)" />.*?<w:hyperlink w:anchor="(\w+)"[^>]*>(.*?)</w:hyperlink>',
+                         toc, flags=re.DOTALL)
+    texts = ["".join(re.findall(r"<w:t[^>]*>([^<]*)</w:t>", body)) for _, _, body in entries]
+    assert [int(level) for level, _, _ in entries] == [1, 2, 3, 1]
+    assert texts == ["1 Kinematics", "1.1 Velocities", "1.1.1 Polygon &amp; scale", "Summary"]
+    for _, anchor, _ in entries:
+        heading = re.search(rf'<w:p><w:pPr><w:pStyle w:val="Heading\d" />(?:(?!</w:p>).)*'
+                            rf'w:name="{anchor}"', document, flags=re.DOTALL)
+        assert heading is not None, anchor
+    # the field: begin in the first entry, end after the last
+    assert re.search(r'<w:fldChar w:fldCharType="begin"[^>]*/></w:r><w:r><w:instrText[^>]*>TOC \\o', toc)
+    assert toc.count('w:fldCharType="end"') == 1
+    # order: title block, page break, contents, page break, body
+    name, toc_at = document.index("Name: Zhang San"), document.index("<w:sdt>")
+    body = document.index("Kinematics</w:t>", document.index("</w:sdt>"))
+    assert name < toc_at < body
+    assert '<w:br w:type="page" />' in document[name:toc_at]
+    assert '<w:br w:type="page" />' in document[document.index("</w:sdt>"):body]
+
+
+def test_a_bracket_closed_in_a_superscript_base_becomes_a_delimiter(tmp_path):
+    """texmath writes (a+b)^2 as "(" a + b and a superscript whose base is ")" alone:
+    LibreOffice draws each unbalanced bracket "¿". The bracketed runs become the base of the
+    superscript as a delimiter object (m:d), Word's form of (a+b)²."""
+    md = _write_sample(tmp_path, "# A\n\n$$ \\sigma = \\sqrt{M^2 + (\\alpha T)^2} + (C/P)^{3} $$\n")
+    out = tmp_path / "report.docx"
+    render_docx(md, out, {"title": "T", "lang": "en"}, TEMPLATES)
+    document = _part(out, "word/document.xml")
+    ElementTree.fromstring(document)
+    [para] = _math_paragraphs(document)
+    # no script has a lone bracket as its base any more
+    assert not re.search(r"<m:sSup><m:e><m:r>(?:<m:rPr>(?:<[^>]*/>)*</m:rPr>)?<m:t>[)\]]</m:t></m:r></m:e>", para)
+    bases = re.findall(r'<m:sSup><m:e><m:d><m:dPr><m:begChr m:val="\(" /><m:endChr m:val="\)" />'
+                       r"</m:dPr><m:e>(.*?)</m:e></m:d></m:e><m:sup>", para)
+    texts = ["".join(re.findall(r"<m:t>([^<]*)</m:t>", b)) for b in bases]
+    assert texts == ["αT", "C/P"]
+    # no bracket run left over outside them
+    assert not re.search(r"<m:t>[()]</m:t>", para)
+
+
+def test_bars_in_pairs_become_absolute_values():
+    """A bare "|" is StarMath's logical or ("∨" in LibreOffice): bars in pairs become a
+    delimiter |x| (m:d); a single bar (a conditional, a divisor) stays a run. A superscript
+    "*" (an operator to StarMath, drawn "¿") becomes U+2217."""
+    from mechdesign.render.docx_math import group_scripted_brackets
+
+    def r(t):
+        return f"<m:r><m:t>{t}</m:t></m:r>"
+
+    pair = f'<w:p xmlns:w="w"><m:oMath>{r("max")}{r("|")}{r("M")}{r("ω")}{r("|")}</m:oMath></w:p>'
+    out = group_scripted_brackets(pair)
+    assert out == ('<w:p xmlns:w="w"><m:oMath>' + r("max")
+                   + '<m:d><m:dPr><m:begChr m:val="|" /><m:endChr m:val="|" /></m:dPr>'
+                   + f"<m:e>{r('M')}{r('ω')}</m:e></m:d></m:oMath></w:p>")
+    single = f'<w:p xmlns:w="w"><m:oMath>{r("P")}{r("(")}{r("A")}{r("|")}{r("B")}{r(")")}</m:oMath></w:p>'
+    assert group_scripted_brackets(single) == single
+    # |B|^3: the closing bar is the superscript's base
+    cubed = (f'<w:p xmlns:w="w"><m:oMath>{r("|")}{r("B")}<m:sSup><m:e>{r("|")}</m:e>'
+             f"<m:sup>{r('3')}</m:sup></m:sSup></m:oMath></w:p>")
+    assert group_scripted_brackets(cubed) == (
+        '<w:p xmlns:w="w"><m:oMath><m:sSup><m:e><m:d><m:dPr><m:begChr m:val="|" />'
+        f'<m:endChr m:val="|" /></m:dPr><m:e>{r("B")}</m:e></m:d></m:e>'
+        f"<m:sup>{r('3')}</m:sup></m:sSup></m:oMath></w:p>")
+    # a superscript asterisk (h_a^*) is the asterisk operator, a symbol to StarMath
+    star = f"<m:oMath><m:sSup><m:e>{r('h')}</m:e><m:sup>{r('*')}</m:sup></m:sSup></m:oMath>"
+    assert group_scripted_brackets(star) == star.replace("<m:t>*</m:t>", "<m:t>\u2217</m:t>")

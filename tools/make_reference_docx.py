@@ -18,7 +18,8 @@ and patches it with :mod:`zipfile` and :mod:`xml.etree` (no python-docx):
   header row, header bold), centred; borderless styles for figure and
   equation layout tables; paragraph styles used by
   ``templates/docx-numbering.lua`` (Equation, Equation Number, Title Info,
-  Table Text);
+  Table Text, and Table Text Small / Smaller at 9 / 7.5 pt for wide tables) and by
+  ``render/docx_toc.py`` (toc 1-3);
 * page: A4, 2.5 cm margins, page number centred in the footer and the report's
   title and the student (TITLE and AUTHOR fields) right-aligned in the header
   (neither on the title page).
@@ -195,6 +196,18 @@ def replacement_styles() -> dict[str, str]:
     styles["TableText"] = _pstyle("TableText", "Table Text", custom=True, ppr=(
         '<w:spacing w:before="20" w:after="20" w:line="240" w:lineRule="auto" />'
         '<w:ind w:firstLine="0" />'), rpr=_size(21))
+    # table of contents entries (render/docx_toc.py; Word's built-in "toc 1"-"toc 3"):
+    # no first-line indent, each level two characters further in
+    for level in (1, 2, 3):
+        styles[f"TOC{level}"] = _pstyle(f"TOC{level}", f"toc {level}", next_="Normal", ppr=(
+            '<w:spacing w:before="0" w:after="0" />'
+            f'<w:ind w:left="{(level - 1) * 480}" w:firstLine="0" />'))
+    # wide tables whose numbers would not fit their columns at 10.5 pt (docx-numbering.lua):
+    # 小五 9 pt, then 7.5 pt
+    for style_id, name, size in (("TableTextSmall", "Table Text Small", 18),
+                                 ("TableTextSmaller", "Table Text Smaller", 15)):
+        styles[style_id] = _pstyle(style_id, name, based_on="TableText", custom=True,
+                                   rpr=_size(size))
     # three-line table: 1.5 pt rules at top and bottom, 0.75 pt under the header row
     styles["Table"] = (
         '<w:style w:type="table" w:default="1" w:styleId="Table"><w:name w:val="Table" />'

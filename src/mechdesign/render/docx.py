@@ -35,6 +35,8 @@ from contextlib import contextmanager
 from pathlib import Path
 
 from ..fileio import atomic_path
+from .docx_math import align_broken_equations, group_scripted_brackets
+from .docx_toc import fill_table_of_contents
 from .mathbreak import break_display_math
 
 #: Widest formula line for Word [em of the PDF's math font, as render/mathbreak estimates]:
@@ -154,8 +156,6 @@ def render_docx(md_path: Path, docx_path: Path, metadata: dict, template_dir: Pa
                             f"--metadata-file={meta_file}",
                             f"--resource-path={md_path.parent}",
                             "--number-sections",
-                            # a table of contents (a TOC field Word fills on opening)
-                            "--toc", "--toc-depth=3",
                             # no relative column widths from long pipe-table rows (as for the PDF)
                             "--columns=10000",
                         ],
@@ -207,8 +207,11 @@ def _finish(docx: Path, *, title: str, author: str, subject: str) -> None:
     """The running header shows the title and the student (the TITLE and AUTHOR fields'
     shown results, filled in here so that they read right before Word updates fields;
     a reference.docx from before the AUTHOR field shows the title alone); the properties
-    name the student as author and the report as subject. The archive keeps its member
-    order and dates (reproducible)."""
+    name the student as author and the report as subject; broken display formulas become
+    aligned lines that Word and LibreOffice both read, and a bracket closed in a script's
+    base a delimiter (:mod:`.docx_math`); the table of
+    contents holds its entries before Word updates it (:mod:`.docx_toc`). The archive keeps
+    its member order and dates (reproducible)."""
     with zipfile.ZipFile(docx) as zin:
         items = [(info, zin.read(info.filename)) for info in zin.infolist()]
     out: list[tuple[zipfile.ZipInfo, bytes]] = []
@@ -218,6 +221,10 @@ def _finish(docx: Path, *, title: str, author: str, subject: str) -> None:
             data = data.replace(b"REPORT-TITLE", _xml_text(title).encode("utf-8"))
             data = data.replace(b"REPORT-SEPARATOR", "\u2003".encode("utf-8") if author else b"")
             data = data.replace(b"REPORT-AUTHOR", _xml_text(author).encode("utf-8"))
+        elif name == "word/document.xml":
+            xml = align_broken_equations(data.decode("utf-8"))
+            xml = fill_table_of_contents(group_scripted_brackets(xml))
+            data = xml.encode("utf-8")
         elif name == "word/settings.xml":
             data = _update_fields_on_open(data)
         elif name == "docProps/core.xml":
