@@ -409,7 +409,7 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
             data_rows.append(["$l_4$", _("given frame AD (textbook method)"), _mm(p.frame, 2), "mm"])
         data_rows.append(["[γ]", _("allowed minimum transmission angle"), _deg(p.gamma_allowed, 0), "°"])
     if p.crank_speed_rpm is not None:
-        data_rows.append(["$n_1$", _("crank speed (motion curves only)"), f(p.crank_speed_rpm, 1), "rpm"])
+        data_rows.append(["$n_1$", _("crank speed (motion curves only)"), f(p.crank_speed_rpm, 1), _("rpm")])
     # comparison of designs: lengths and simulated θ, ψ, K, γmin
     designs = [best] + ([tb] if tb is not None else []) + list(r["compare"])
     cmp_rows = []

@@ -33,7 +33,7 @@ def _data_rows(b, p, _) -> list[list[str]]:
         ["$EF/DE$", _.pgettext("press", "rod ratio"), f(lk.ratio_EF_DE, 3), "—"],
         ["$BS_2/BC$", _("coupler CoM"), f(lk.ratio_BS2_BC, 2), "—"],
         ["$DS_3/DE$", _("rocker CoM"), f(lk.ratio_DS3_DE, 2), "—"],
-        ["$n_1$", _("crank speed"), f(lk.crank_speed_n1_rpm, 0), "rpm"],
+        ["$n_1$", _("crank speed"), f(lk.crank_speed_n1_rpm, 0), _("rpm")],
         ["$G_2$", _("coupler weight"), f(ms.coupler_G2_N, 0), "N"],
         ["$G_3$", _("rocker weight"), f(ms.rocker_G3_N, 0), "N"],
         ["$G_5$", _("ram weight"), f(ms.ram_G5_N, 0), "N"],
