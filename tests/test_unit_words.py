@@ -156,7 +156,7 @@ def test_the_filter_joins_numbers_units_and_relations(tmp_path):
     (tmp_path / "f.lua").write_text(LUA_FILTER, encoding="utf-8")
     (tmp_path / "in.md").write_text(
         "$\\alpha_5$ = -4.27 rad/s², 5 steps, $h = 14.9$ mm, 1.4 × 10⁻¹⁴ mm, "
-        "转速 n = 60.00 r/min，循环 2 crank\n\n```\nx = 5 mm\n```\n", encoding="utf-8")
+        "转速 n = 60.00 r/min，循环 2 crank，$G_6$（构件 6）= 1962 N\n\n```\nx = 5 mm\n```\n", encoding="utf-8")
     typ = subprocess.run([pypandoc.get_pandoc_path(), "--from=markdown+tex_math_dollars",
                           "--to=typst", "--wrap=none", f"--lua-filter={tmp_path / 'f.lua'}",
                           str(tmp_path / "in.md")], capture_output=True, check=True).stdout.decode()
@@ -165,4 +165,5 @@ def test_the_filter_joins_numbers_units_and_relations(tmp_path):
     assert "#box($h = 14.9$);~mm" in typ
     assert "1.4~×~10⁻¹⁴~mm" in typ
     assert "n =~60.00~r/min" in typ
+    assert "（构件 6）=~1962~N" in typ         # a relation ending a word
     assert "x = 5 mm" in typ                 # a code block as written

@@ -30,8 +30,7 @@ def _lua_list(words) -> str:
 
 LUA_FILTER = r"""
 local UNITS = @UNITS@
-local RELATIONS = {}
-for _, r in ipairs(@RELATIONS@) do RELATIONS[r] = true end
+local RELATIONS = @RELATIONS@
 local NBSP = utf8.char(0x00A0)
 -- superscript digits and minus (10⁻¹⁴), as UTF-8 byte strings
 local SUPERSCRIPTS = {"⁰", "¹", "²", "³", "⁴", "⁵", "⁶", "⁷", "⁸", "⁹", "⁻"}
@@ -72,7 +71,12 @@ end
 local function joined(a, b)
   if a == nil or b == nil then return false end
   if ends_with_number(a) and starts_with_unit(b) then return true end
-  if RELATIONS[a] and starts_with_number(b) then return true end
+  if starts_with_number(b) then
+    -- "=" alone, or ending a word ("（构件 6）=")
+    for _, r in ipairs(RELATIONS) do
+      if #a >= #r and a:sub(-#r) == r then return true end
+    end
+  end
   return false
 end
 

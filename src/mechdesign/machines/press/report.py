@@ -93,10 +93,10 @@ def synthesis_context(s, p) -> dict:
     rows = [
         ["$L_{AB}$", N_("crank"), f(a, 2), "mm"],
         ["$L_{BC}$", N_("coupler"), f(b, 2), "mm"],
-        ["$L_{CD}$", N_("rocker to C"), f(c, 2), "mm"],
+        ["$L_{CD}$", N_("rocker to $C$"), f(c, 2), "mm"],
         ["$L_{DE}$", N_("rocker"), f(de, 2), "mm"],
-        ["$L_{CE}$", N_("C to E"), f(s.rocker_CE * mm, 2), "mm"],
-        ["$L_{EF}$", N_("rod EF"), f(s.rod * mm, 2), "mm"],
+        ["$L_{CE}$", N_("$C$ to $E$"), f(s.rocker_CE * mm, 2), "mm"],
+        ["$L_{EF}$", N_("rod $EF$"), f(s.rod * mm, 2), "mm"],
         ["$L_{AD}$", N_("frame"), f(d, 2), "mm"],
         ["$L_{BS_2}$", N_("coupler CoM"), f(s.coupler_com * mm, 2), "mm"],
         ["$L_{DS_3}$", N_("rocker CoM"), f(s.rocker_com * mm, 2), "mm"],
