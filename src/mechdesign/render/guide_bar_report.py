@@ -101,7 +101,7 @@ def task_words(p, syn) -> dict:
     driven = N_(", driven by gear $z_2$,")
     guide = (N_("the ram guide's distance $L_{O_3M}$ is given.") if syn.guide_given else
              N_("the ram guide passes through the mid-point of the sagitta of the arc "
-                "described by the bar's end B."))
+                "described by the bar's end $B$."))
     zh = tr("zh")
     return {
         "driven_zh": zh(driven) if gear else "",

@@ -23,13 +23,13 @@ animate = gb_report.animate             # the linkage as a GIF
 def _data_rows(b, p, _) -> list[list[str]]:
     lk, ms, ld = b.linkage, b.masses, b.loads
     return [
-        ["$x_1$", _("A right of D"), f(lk.pivot_x1_mm, 0), "mm"],
-        ["$x_2$", _("guide right of D"), f(lk.guide_x2_mm, 0), "mm"],
-        ["$y$", _("A below D"), f(lk.pivot_y_mm, 0), "mm"],
+        ["$x_1$", _("$A$ right of $D$"), f(lk.pivot_x1_mm, 0), "mm"],
+        ["$x_2$", _("guide right of $D$"), f(lk.guide_x2_mm, 0), "mm"],
+        ["$y$", _("$A$ below $D$"), f(lk.pivot_y_mm, 0), "mm"],
         ["$\\psi_3'$", _("rocker upper extreme"), f(lk.rocker_psi3_upper_deg, 1), "°"],
         ["$\\psi_3''$", _("rocker lower extreme"), f(lk.rocker_psi3_lower_deg, 1), "°"],
         ["$H$", _("ram stroke"), f(lk.stroke_H_mm, 1), "mm"],
-        ["$CE/CD$", _("C on the rocker"), f(lk.ratio_CE_CD, 3), "—"],
+        ["$CE/CD$", _("$C$ on the rocker"), f(lk.ratio_CE_CD, 3), "—"],
         ["$EF/DE$", _.pgettext("press", "rod ratio"), f(lk.ratio_EF_DE, 3), "—"],
         ["$BS_2/BC$", _("coupler CoM"), f(lk.ratio_BS2_BC, 2), "—"],
         ["$DS_3/DE$", _("rocker CoM"), f(lk.ratio_DS3_DE, 2), "—"],
