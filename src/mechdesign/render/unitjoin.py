@@ -15,7 +15,8 @@ tree, so formulas, code blocks and file names are never touched; the Markdown it
 from __future__ import annotations
 
 #: The unit words a number may be followed by (a word starting with one of them and going
-#: on with no letter or digit: "mm/s²", "r/min，" and "kN·m" count, "steps" does not).
+#: on with no letter or digit: "mm/s²", "kN·m" and "r/min" before a full-width comma count,
+#: "steps" does not).
 UNITS = ("mm", "m", "μm", "s", "min", "h", "N", "kN", "MN", "W", "kW", "J", "kJ", "kg", "g",
          "t", "rad", "rpm", "r/min", "°", "%", "Pa", "kPa", "MPa", "GPa", "Hz")
 
@@ -72,7 +73,7 @@ local function joined(a, b)
   if a == nil or b == nil then return false end
   if ends_with_number(a) and starts_with_unit(b) then return true end
   if starts_with_number(b) then
-    -- "=" alone, or ending a word ("（构件 6）=")
+    -- "=" alone, or ending a word (a closing full-width parenthesis and "=")
     for _, r in ipairs(RELATIONS) do
       if #a >= #r and a:sub(-#r) == r then return true end
     end
