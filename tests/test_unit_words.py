@@ -69,6 +69,23 @@ def test_a_terminal_message_of_the_drive_in_chinese():
     assert "1500 r/min → i = 14.2" in zh and not _RPM.search(zh)
 
 
+def test_a_speed_written_with_its_unit_is_answered_in_the_language_of_the_message(tmp_path):
+    """A brief's "80 rpm" or "80 r/min" in an _rpm field: drop the unit, which the Chinese
+    message calls r/min."""
+    from mechdesign.brief.loader import BriefError, load_variant
+
+    text = (ROOT / "designs" / "shaper.yaml").read_text(encoding="utf-8")
+    for written in ("80 rpm", "80 r/min"):
+        brief = tmp_path / "b.yaml"
+        brief.write_text(text.replace("crank_speed_n2_rpm: 80", f"crank_speed_n2_rpm: {written}"),
+                         encoding="utf-8")
+        with pytest.raises(BriefError) as info:
+            load_variant(brief)
+        (p,) = [p for p in info.value.problems if p.path == "linkage.crank_speed_n2_rpm"]
+        assert "a number in rpm, without the unit: write 80" in p.allowed
+        assert "r/min" in p.allowed_zh and not _RPM.search(p.allowed_zh), p.allowed_zh
+
+
 # ------------------------------------------------------------------------------ line ends
 
 # the unit words the reports write after a number (a word beginning with one of them and going
