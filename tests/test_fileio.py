@@ -179,9 +179,10 @@ def test_bad_modes_are_refused(tmp_path):
 # which moves finished files, each move atomic; mechdesign.publish).
 _NOT_OUTPUT = {
     "render/pdf.py": ('(tmp / "metadata.json").write_text', '(tmp / "typst-literal.lua").write_text',
+                      '(tmp / "unit-join.lua").write_text',
                       '(tmp / "in.md").write_text', 'open(self._err, "wb")',
                       'os.fdopen(fd, "w", encoding="utf-8")'),
-    "render/docx.py": ("meta_file.write_text",),
+    "render/docx.py": ("meta_file.write_text", "unit_filter.write_text"),
     "publish.py": ("os.replace(staging / rel, target)",),
 }
 _WRITE = re.compile(r"\.write_text\(|\.write_bytes\(|\bopen\([^)]*[\"'][wax]b?t?[\"']|"

@@ -8,6 +8,13 @@ standing bare — outside a formula, or inside one at the baseline (``$\\perp O2
 inside a subscript (``v_{S4}``, ``F_{R12}``, ``l_{O2A}``) is already lowered and stays — and
 the analysis and kinematic sheets' PDFs for force names (R12, FI3, Pb, Mb) and point names
 (O2, B1) drawn without a subscript. The base commit (a469fe1) failed both scans.
+
+Names without a digit ("AB", "DBC", "BC") were upright text beside the italic names with a
+digit, sometimes in one sentence: in the Markdown every point and link name is math italic
+now (``md_point``, ``md_names`` and the catalogue's prose), and the scan finds a run of name
+letters without a digit outside math (the base commit 6d985f2 failed it: furnace_pusher,
+die_cutter, press, crank_rocker, lockbeam, slotter …). Figures and sheets keep their names
+upright (the text font), names with a digit and without alike.
 """
 from __future__ import annotations
 
@@ -35,13 +42,18 @@ def test_point_tex(name, tex):
 
 
 def test_one_function_per_medium():
-    assert md_point("O2") == "$O_2$" and md_point("AB") == "AB" and md_point("C'") == "C\\'"
+    # Markdown: every point name in math italic, with a digit or without (issue 19 point 3)
+    assert md_point("O2") == "$O_2$" and md_point("AB") == "$AB$" and md_point("C'") == "$C'$"
+    assert md_point("x-y") == "x-y"
     assert mpl_point("O2") == r"$\mathregular{O_2}$" and mpl_point("A") == "A"
     assert split_subscripts(sheet_point("O3B")) == [("O", False), ("3", True), ("B", False)]
     assert sheet_point("DE") == "DE" and not subscripted("Y90S-6") and subscripted("O1A")
-    # texts holding names: only the runs of names with a digit change
+    # texts holding names: for a figure or a sheet only the runs of names with a digit change
     assert md_names("2 crank O1A") == "2 crank $O_1A$"
-    assert md_names("导杆 O3D") == "导杆 $O_3D$" and md_names("rod BF") == "rod BF"
+    assert md_names("导杆 O3D") == "导杆 $O_3D$" and md_names("rod BF") == "rod $BF$"
+    # an Assur group's code is no point name
+    assert md_names("RRR ABD") == "RRR $ABD$" and md_names("guide bar (RPR)") == "guide bar (RPR)"
+    assert md_names("feed slider E") == "feed slider $E$"
     assert md_names("crank-rocker O1ABC's crank") == "crank-rocker $O_1ABC$\\'s crank"
     assert mpl_names("A (folded)") == "A (folded)"
     assert sheet_names("rocker at its first extreme C1") == "rocker at its first extreme " + sub("C", "1")
@@ -71,8 +83,17 @@ def _scripts_removed(tex: str) -> str:
     return re.sub(r"\\(?:text|mathrm|operatorname)\{[^{}]*\}", "", tex).replace("$", " ")
 
 
+# a point or link name without a digit written as a word ("AB", "DBC", "DE′"), beside names with a
+# digit set in math italic (issue 19 point 3: the textbook sets every point name in italic): a
+# run of two to four of the letters the course's mechanisms name their points with; the words
+# of that form that are no point names are listed
+_PLAIN_NAMES = re.compile(r"(?<![A-Za-z0-9_\\{/.-])([A-HMOPS]{2,4})(?=[′″']*(?![A-Za-z0-9_}/-]))")
+NOT_NAMES = {"PASS", "GB", "GE", "PDF", "CAD", "HB", "SS"}
+
+
 def bare_names(md: str) -> list[tuple[str, str]]:
-    """(name, line) of every run of point names with a digit not typeset as a subscript."""
+    """(name, line) of every run of point names with a digit not typeset as a subscript, and
+    of every run of point names without a digit outside math."""
     md = re.sub(r"^```.*?^```", "", md, flags=re.S | re.M)
     out = []
     for line in md.splitlines():
@@ -83,6 +104,7 @@ def bare_names(md: str) -> list[tuple[str, str]]:
         for pattern in NOT_POINTS:
             text = pattern.sub(" ", text)
         out += [(m[1], line[:120]) for m in _NAMES.finditer(text)]
+        out += [(m[1], line[:120]) for m in _PLAIN_NAMES.finditer(text) if m[1] not in NOT_NAMES]
     return out
 
 
@@ -92,13 +114,19 @@ def test_the_scan_finds_the_old_forms():
     old = ["guide bar 4 swings about O3 and drives ram 6", "| crank | 2 crank O1A | O1A | O1A = 57.04 mm |",
            "| $v_{A}$ | 0.770 | $\\perp O2A$ | $pa$ | 38.5 | 0.770 |", "| $a_{S4}$ | 1.80 | $S4 \\to O3$ |",
            "![Meshing drawing: the line of action N1N2 and the segment B1B2](figures/gear_mesh.png)",
-           "曲柄摇杆机构 O1ABC 的曲柄", "the crank-rocker O1ABC's crank a", "| 3 | S3 | 12.00 | 0.0250 |"]
+           "曲柄摇杆机构 O1ABC 的曲柄", "the crank-rocker O1ABC's crank a", "| 3 | S3 | 12.00 | 0.0250 |",
+           # names without a digit, upright beside italic ones (the base commit 6d985f2)
+           "| RRR ABD | 2 coupler AB, 3 rocker DBC | AB, DB | AB = 130.66 mm, DB = 575.00 mm |",
+           "the crank-rocker $O_1A$–AB–rocker DBC (D the rocker's pivot)",
+           "The rocker's extreme positions DE′ and DE″ are symmetric", "| $l_3$ | 摇杆长度 CD | 50.00 | mm |"]
     assert len({line for _, line in bare_names("\n".join(old))}) == len(old)
     ok = ["guide bar 4 swings about $O_3$", "| $v_{A4A3}$ | ? | ∥ bar 4 | $aa_{4}$ |",
           "$$ \\Sigma M_{O2} = 0:\\ M_b + F_{R32} \\times 9.0 = 0 $$", "| $L_{O_3M}$ | guide line |",
           "| Kinematic diagram | A3 | 1:10 | — |", "![机构运动简图（A3，预览）](figures/sheet_kinematic.png)",
           "**Y90S-6**, 0.75 kW", "| R1 | D | 6 | 90.0 |", "scheme A1 + B2 + C1 + D1 + E1 of the 243",
           "- A1 speed reduction: belt", "JB/T 10391-2008 Y series (IP44) motors",
+          "| RRR $ABD$ | 2 coupler $AB$, 3 rocker $DBC$ | $AB$, $DB$ |", "guide bar (RPR), PASS",
+          "GB/T 14689-2008", "a PDF and a DXF", "crank $l_1 = AB$, 217–255 HB",
           "```\nm.add(Crank(\"input rocker G0G\", \"2\", \"G0\"))\n```"]
     assert not bare_names("\n".join(ok))
 

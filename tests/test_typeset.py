@@ -20,6 +20,7 @@ from pathlib import Path
 import pytest
 
 from mechdesign.render.mathbreak import BUDGET_EM, break_display_math, break_formula, tex_width
+from tests.test_unit_words import parted_at_line_ends
 
 ROOT = Path(__file__).resolve().parents[1]
 LEFT, RIGHT, TOL = 70.87, 524.41, 1.0
@@ -539,6 +540,8 @@ def test_every_report_stays_in_the_text_block(brief, lang, tmp_path):
     pdf = out / "report.pdf"
     assert outside_text_block(pdf) == []
     assert numbers_over_words(pdf) == []
+    # issue 19, point 5: no number parted from its unit (or from its "=") at a line end
+    assert parted_at_line_ends(pdf) == []
     # issue 19, point 2 (templates/report.typ): no page more than half empty where no
     # chapter ends; "续表 N" / "Table N (continued)" atop every page a table goes on to; no
     # page ending in a lead-in ("…：" / "…:"); no chapter ending on a page of one or two

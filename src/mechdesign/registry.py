@@ -66,6 +66,8 @@ def shown_row(row: tuple, lang: str, document: Any) -> tuple | None:
     if path.endswith(".stroke") and lookup(document, path.rsplit(".", 1)[0] + ".unit") == "rad":
         _ = tr(lang)
         return _("swing of the output"), "°", 180 / math.pi, value
+    if unit == "rpm":                   # the course's unit word: r/min in Chinese
+        unit = tr(lang)("rpm")
     return label, unit, factor, value
 
 

@@ -655,6 +655,8 @@ def _unit_hint(err: dict, problem: BriefProblem) -> BriefProblem:
     number, written = match.groups()
     name = next((p for p in reversed(err["loc"]) if isinstance(p, str)), "")
     unit = next((u for suffix, u in _UNITS if name.endswith(suffix)), None)
+    # the unit as the message's language writes it: rpm is r/min in Chinese (GB 3102)
+    words = (unit, "r/min") if unit == "rpm" else (unit,)
     whole = err["type"].startswith("int")
     if not written:
         allowed = Msg(N_("a whole number, not text: write {number} without quotes"), number=number) \
@@ -662,11 +664,13 @@ def _unit_hint(err: dict, problem: BriefProblem) -> BriefProblem:
     elif unit is None:
         allowed = Msg(N_("a whole number without a unit: write {number}"), number=number) if whole \
             else Msg(N_("a number without a unit: write {number}"), number=number)
-    elif written == unit:
+    elif written in words:
+        unit = Msg(N_("rpm")) if unit == "rpm" else unit
         allowed = Msg(N_("a whole number in {unit}, without the unit: write {number}"),
                       unit=unit, number=number) if whole else \
             Msg(N_("a number in {unit}, without the unit: write {number}"), unit=unit, number=number)
     else:
+        unit = Msg(N_("rpm")) if unit == "rpm" else unit
         given = value.strip()
         allowed = Msg(N_("a whole number in {unit}, without the unit: convert {given!r} to {unit} "
                          "and write the number alone"), unit=unit, given=given) if whole else \

@@ -19,7 +19,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .errors import DesignError, N_, pgettext
+from .errors import DesignError, Msg, N_, pgettext
 from .fields import q
 
 SYNCHRONOUS_PREFERENCE = (1500, 1000, 3000, 750)   # rpm; 1500 and 1000 are the usual choice
@@ -138,7 +138,12 @@ def choose_motor(catalogue: list[Motor], power_required: float, output_rpm: floa
             N_("no motor in the catalogue gives {power_kw:.3f} kW{at} (largest: {largest_kw:g} "
                "kW): reduce the load or the speed, or allow another synchronous speed"),
             power_kw=power_required / 1e3, at=at, largest_kw=largest / 1e3)
-    ratios = ", ".join(f"{c.synchronous_rpm:g} rpm → i = {c.total_ratio:.1f}" for c in candidates if c.motor)
+    # each "1500 rpm → i = 12.3" a message of its own (the unit is "r/min" in Chinese), joined
+    # by a message without words
+    tried = [pgettext("synchronous speed", "{rpm:g} rpm → i = {i:.1f}", rpm=c.synchronous_rpm,
+                      i=c.total_ratio) for c in candidates if c.motor]
+    ratios = Msg(", ".join(f"{{r{k}}}" for k in range(len(tried))),
+                 **{f"r{k}": m for k, m in enumerate(tried)})
     raise DriveDesignError(
         N_("the drive's stages give total ratios {max_lo:.3g}–{max_hi:.3g}, but the motors "
            "need {ratios} to reach {output_rpm:g} rpm: add a stage or change a fixed ratio"),

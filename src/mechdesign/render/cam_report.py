@@ -208,7 +208,7 @@ def cam_context(c, lang: str, figs: dict[str, str], csv_name: str) -> dict:
     row("—", _("follower"), follower_name, "—")
     row("—", _("cam rotation"), rot, "—")
     if p.speed_rpm:
-        row("$n$", _("cam speed"), f(p.speed_rpm, 2), "rpm")
+        row("$n$", _("cam speed"), f(p.speed_rpm, 2), _("rpm"))
     if translating:
         row("$h$", _("stroke"), f(prog.stroke * MM, 2), "mm")
     else:

@@ -46,6 +46,7 @@ from .mathbreak import break_display_math
 #: (the PDF budget, 30 em at 11 pt, would let a line run over the cell in Word).
 WORD_BUDGET_EM = 27.0
 from .pdf import DEFAULT_LABELS, MARKDOWN_FORMAT, source_timestamp
+from .unitjoin import LUA_FILTER as UNIT_FILTER
 
 REFERENCE_DOCX = "reference.docx"
 LUA_FILTER = "docx-numbering.lua"
@@ -140,6 +141,8 @@ def render_docx(md_path: Path, docx_path: Path, metadata: dict, template_dir: Pa
     with atomic_path(docx_path) as tmp_docx:
         with tempfile.TemporaryDirectory(prefix="mechdesign-pandoc-") as tmp:
             meta_file = Path(tmp) / "metadata.json"
+            unit_filter = Path(tmp) / "unit-join.lua"       # a number kept with its unit
+            unit_filter.write_text(UNIT_FILTER, encoding="utf-8")
             # JSON is valid YAML, which is what --metadata-file expects.
             meta_file.write_text(json.dumps(meta, ensure_ascii=False, default=str),
                                  encoding="utf-8")
@@ -152,6 +155,7 @@ def render_docx(md_path: Path, docx_path: Path, metadata: dict, template_dir: Pa
                         outputfile=str(tmp_docx),
                         extra_args=[
                             f"--reference-doc={reference.resolve()}",
+                            f"--lua-filter={unit_filter}",
                             f"--lua-filter={lua_filter.resolve()}",
                             f"--metadata-file={meta_file}",
                             f"--resource-path={md_path.parent}",

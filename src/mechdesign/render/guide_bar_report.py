@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..i18n import N_, tr
+from ..i18n import N_, Msg, tr
 from .fmt import f, sig, time_ratio
 from .labels import InContext, pgettext
 
@@ -101,7 +101,7 @@ def task_words(p, syn) -> dict:
     driven = N_(", driven by gear $z_2$,")
     guide = (N_("the ram guide's distance $L_{O_3M}$ is given.") if syn.guide_given else
              N_("the ram guide passes through the mid-point of the sagitta of the arc "
-                "described by the bar's end B."))
+                "described by the bar's end $B$."))
     zh = tr("zh")
     return {
         "driven_zh": zh(driven) if gear else "",
@@ -142,7 +142,7 @@ def data_rows(b, p, ram_zh: str, rod: str, rod_ratio: float, ram_com: list,
           if lk.guide_O3M_mm is not None else []),
         ["$L_{O_3S_4}/L_{O_3B}$", _both(N_("bar CoM ratio")), f(lk.com_ratio_O3S4_O3B, 2), "—"],
         *(ram_com if ram_com and isinstance(ram_com[0], list) else [ram_com]),
-        ["$n_2$", _both(N_("crank speed")), f(lk.crank_speed_n2_rpm, 0), "rpm"],
+        ["$n_2$", _both(N_("crank speed")), f(lk.crank_speed_n2_rpm, 0), Msg(N_("rpm"))],   # r/min in zh (fmt.in_lang)
         load("guide_bar_m4_kg", "guide_bar_G4_N", "4", tr("zh")(N_("guide bar")), "guide-bar"),
         ["$J_{S_4}$", _both(N_("guide-bar inertia")), f(ms.guide_bar_J_S4_kgm2, 2), "kg·m²"],
         load("ram_m6_kg", "ram_G6_N", "6", ram_zh, "ram"),

@@ -93,11 +93,12 @@ def point_tex(name: str) -> str:
 
 
 def md_point(name: str) -> str:
-    """A point name (or a run of them) for Markdown: "$O_1$" where it has a digit, else escaped
-    as written."""
+    """A point name (or a run of them) for Markdown, in math italic as the textbook sets
+    point names, with or without a digit: "$O_1$", "$O_1A$", "$AB$", "$C'$"; anything else
+    escaped as written."""
     from .fmt import md_text
 
-    return f"${point_tex(name)}$" if subscripted(name) else md_text(name)
+    return f"${point_tex(name)}$" if _NAMES.fullmatch(str(name)) else md_text(name)
 
 
 def _mpl_math(name: str) -> str:
@@ -131,12 +132,21 @@ def sheet_point(name: str) -> str:
     return _DIGITS.sub(lambda m: sub(m[1], m[2]), name)
 
 
+# a run of point names standing as a word, with or without a digit ("O1A", "DBC", "E"), for
+# Markdown, where every point name is math italic; an Assur group's code (RRR, RRP, RPR)
+# names no point
+_ANY_NAME_WORD = re.compile(r"(?<![A-Za-z0-9_\\$'{])((?:[A-Z][0-9]*'*)+)(?![A-Za-z0-9_$}]|'(?![a-z]))")
+_GROUP_CODE = re.compile(r"[RP]{3}")
+
+
 def md_names(text: str) -> str:
-    """A text holding point names ("crank O1A", "导杆 O3D") for Markdown: escaped, each run of
-    names with a digit as math ("crank $O_1A$")."""
+    """A text holding point names ("crank O1A", "导杆 O3D", "rocker DBC", "RRR ABD") for
+    Markdown: escaped, each run of names as math ("crank $O_1A$", "rocker $DBC$"; the group
+    code RRR stays a word)."""
     from .fmt import md_text
 
-    return _NAME_WORD.sub(lambda m: f"${point_tex(m[1])}$", md_text(text))
+    return _ANY_NAME_WORD.sub(lambda m: m[1] if _GROUP_CODE.fullmatch(m[1]) else f"${point_tex(m[1])}$",
+                              md_text(text))
 
 
 def mpl_names(text: str) -> str:

@@ -30,6 +30,7 @@ from ..i18n import N_
 from .fonts import cjk_families, font_dirs
 from .labels import LabelTable
 from .mathbreak import break_display_math
+from .unitjoin import LUA_FILTER as _UNIT_FILTER
 
 MARKDOWN_FORMAT = (
     "markdown+pipe_tables+tex_math_dollars+implicit_figures"
@@ -187,6 +188,8 @@ class PendingTypst:
         (tmp / "metadata.json").write_text(json.dumps(self._meta, ensure_ascii=False, default=str),
                                            encoding="utf-8")
         (tmp / "typst-literal.lua").write_text(_TYPST_FILTER, encoding="utf-8")
+        # a number and its unit kept on one line (render/unitjoin.py)
+        (tmp / "unit-join.lua").write_text(_UNIT_FILTER, encoding="utf-8")
         # long display formulas set on several aligned lines (mathbreak)
         (tmp / "in.md").write_text(break_display_math(md_text), encoding="utf-8")
         self._out, self._err = tmp / "out.typ", tmp / "pandoc.err"
@@ -195,6 +198,7 @@ class PendingTypst:
                 "--standalone",
                 f"--template={Path(template).resolve()}",
                 f"--metadata-file={tmp / 'metadata.json'}",
+                f"--lua-filter={tmp / 'unit-join.lua'}",
                 f"--lua-filter={tmp / 'typst-literal.lua'}",
                 f"--resource-path={Path(resource_dir).resolve()}",
                 "--wrap=none",

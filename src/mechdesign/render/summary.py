@@ -310,8 +310,12 @@ _LABEL_MATH = ((re.compile(r"\bJ_F\b"), r"$J_F$"), (re.compile(r"γ_?min"), r"$\
                (re.compile(r"\bK\b"), r"$K$"), (re.compile(r"\br0\b"), r"$r_0$"))
 
 
+# a link named by its points ("coupler BC", "摇杆 DE"): math italic, as every point name
+_LINK_NAME = re.compile(r"(?<![\w\\$])([A-H]{2,4})(?![\w$])")
+
+
 def _label(text: str) -> str:
-    text = md_text(text)
+    text = _LINK_NAME.sub(lambda m: f"${m[1]}$", md_text(text))
     for pattern, math_ in _LABEL_MATH:
         text = pattern.sub(lambda _m: math_, text)
     return text.replace("γ\\_min", r"$\gamma_{min}$").replace("J\\_F", "$J_F$")

@@ -409,10 +409,10 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
     # data table
     if given is not None:
         data_rows = [[s_, _(n), v, u] for s_, n, v, u in (
-            ("$l_1$", N_("crank AB (given)"), given["l1"], "mm"),
-            ("$l_2$", N_("coupler BC (given)"), given["l2"], "mm"),
-            ("$l_3$", N_("rocker CD (given)"), given["l3"], "mm"),
-            ("$l_4$", N_("frame AD (given)"), given["l4"], "mm"),
+            ("$l_1$", N_("crank $AB$ (given)"), given["l1"], "mm"),
+            ("$l_2$", N_("coupler $BC$ (given)"), given["l2"], "mm"),
+            ("$l_3$", N_("rocker $CD$ (given)"), given["l3"], "mm"),
+            ("$l_4$", N_("frame $AD$ (given)"), given["l4"], "mm"),
             ("θ", N_("extreme-position angle (derived)"), f(th_deg, 2), "°"),
             ("K", N_("time ratio (derived)"), time_ratio(p.K), "—"),
             ("ψ", N_("rocker swing (derived)"), _deg(p.swing), "°"),
@@ -420,12 +420,12 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
             ("[γ]", N_("allowed minimum transmission angle"), _deg(p.gamma_allowed, 0), "°"))]
     else:
         data_rows = [["K", _("time ratio"), time_ratio(p.K), "—"], ["θ", _("extreme-position angle"), f(th_deg, 2), "°"],
-                     ["ψ", _("rocker swing"), _deg(p.swing, 2), "°"], ["$l_3$", _.pgettext("given length", "rocker CD"), _mm(p.rocker, 2), "mm"]]
+                     ["ψ", _("rocker swing"), _deg(p.swing, 2), "°"], ["$l_3$", _.pgettext("given length", "rocker $CD$"), _mm(p.rocker, 2), "mm"]]
         if p.frame is not None:
-            data_rows.append(["$l_4$", _("given frame AD (textbook method)"), _mm(p.frame, 2), "mm"])
+            data_rows.append(["$l_4$", _("given frame $AD$ (textbook method)"), _mm(p.frame, 2), "mm"])
         data_rows.append(["[γ]", _("allowed minimum transmission angle"), _deg(p.gamma_allowed, 0), "°"])
     if p.crank_speed_rpm is not None:
-        data_rows.append(["$n_1$", _("crank speed (motion curves only)"), f(p.crank_speed_rpm, 1), "rpm"])
+        data_rows.append(["$n_1$", _("crank speed (motion curves only)"), f(p.crank_speed_rpm, 1), _("rpm")])
     # comparison of designs: lengths and simulated θ, ψ, K, γmin
     designs = [best] + ([tb] if tb is not None else []) + list(r["compare"])
     cmp_rows = []

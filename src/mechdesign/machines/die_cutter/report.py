@@ -174,14 +174,14 @@ def _choice_rows(b, p, r, _) -> list[list[str]]:
     ]
     if given:
         dm = pr.dimensions
-        rows.append(["$a, b, d$", _("crank $O_1A$, coupler AB, frame $O_1C$ (given)"),
+        rows.append(["$a, b, d$", _("crank $O_1A$, coupler $AB$, frame $O_1C$ (given)"),
                      f"{f(dm.crank_O1A_mm, 2)}, {f(dm.coupler_AB_mm, 2)}, {f(dm.frame_O1C_mm, 2)} mm",
                      _("the brief's dimensions, no synthesis; θ, ψ, K and H are derived from them "
                        "(see the toggle press chapter)")])
     rows += [
         ["$l_{CB}, l_{BD}$", _("toggle links"),
          f"{f(pr.toggle_CB_mm, 0)}, {f(pr.toggle_BD_mm, 0)} mm",
-         _("longer toggles need less swing for the stroke; BD longer than CB never lies "
+         _("longer toggles need less swing for the stroke; $BD$ longer than $CB$ never lies "
            "flat and keeps the slider's pressure angle small at the bottom")],
         ["$\\varepsilon$", _("toggle angle at the top"),
          f"{f(pr.toggle_angle_at_top_deg, 1)}°",
@@ -292,16 +292,16 @@ def _synthesis(d, p, _) -> dict:
     giv = _(" (given)") if given else ""
     dig = 3 if given else 2
     rows = [
-        ["$\\psi$", _("swing of CB") + der, _deg(psi, dig), "°"],
+        ["$\\psi$", _("swing of $CB$") + der, _deg(psi, dig), "°"],
         ["$\\theta$", _("extreme-position angle") + der, f(theta, dig), "°"],
         ["$a = l_{O_1A}$", _("crank") + giv, f(fb.crank * MM, dig), "mm"],
         ["$b = l_{AB}$", _("coupler") + giv, f(fb.coupler * MM, dig), "mm"],
         ["$c = l_{CB}$", _("toggle (rocker)"), f(lt, 2), "mm"],
         ["$l_{BD}$", _("toggle"), f(ld, 2), "mm"],
         ["$d = l_{O_1C}$", _("frame") + giv, f(fb.frame * MM, dig), "mm"],
-        ["$O_1$", _("crank pivot (C at the origin)"),
+        ["$O_1$", _("crank pivot ($C$ at the origin)"),
          f"({f(d.O1.real * MM, 2)}, {f(d.O1.imag * MM, 2)})", "mm"],
-        ["$y_D$", _("height of D (top / bottom)"),
+        ["$y_D$", _("height of $D$ (top / bottom)"),
          f"{f(d.top_height * MM, 2)} / {f(d.bottom_height * MM, 2)}", "mm"],
         ["$\\gamma_{min}$", _("minimum transmission angle"),
          _deg(d.gamma_min, 2), "°"],
@@ -320,7 +320,7 @@ def _synthesis(d, p, _) -> dict:
         if d.mirrored else ""
     return {"eq": eq, "rows": rows, "pivot": pivot, "mirrored": mirrored, "given": given,
             "psi": _deg(psi, 2), "eps": _deg(eps, 2), "theta": f(theta, 2),
-            "top": {"extended": _("extended position (AC = b + a)"), "folded": _("folded position (AC = b − a)")}[g.top_position]}
+            "top": {"extended": _("extended position ($AC = b + a$)"), "folded": _("folded position ($AC = b - a$)")}[g.top_position]}
 
 
 def _amplification(r, p, _) -> dict:

@@ -88,9 +88,9 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
 _NOTE = N_("The checks do not use the closed forms: the displacement by inversion — the cam held "
            "still, the follower's line turned back through δ and intersected with the disc (for "
            "a roller, the circle of radius $R + r_r$ on which its centre rolls); the pressure "
-           "angle by the three-centre theorem — the relative pole P of cam and follower lies on "
-           "the line through O perpendicular to the follower's line, OP = dy/dδ (central "
-           "differences of the geometric displacement), and the common normal passes through P; "
+           "angle by the three-centre theorem — the relative pole $P$ of cam and follower lies on "
+           "the line through $O$ perpendicular to the follower's line, $OP$ = dy/dδ (central "
+           "differences of the geometric displacement), and the common normal passes through $P$; "
            "the stroke from the extremes of the displacement (three-point parabola). Compared on "
            "every position of the 0.1° grid and at the given angles.")
 

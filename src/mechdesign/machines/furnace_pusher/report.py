@@ -186,8 +186,8 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
          f(ps.strokes_per_min, 0), "1/min"],
         ["$K$", _("time ratio") + sub,
          f(pp.time_ratio_K, 4) if given else f(ps.time_ratio_K, 2), "—"],
-        ["$l_{DC}$", _("rocker DC"), f(ps.rocker_DC_mm, 0), "mm"],
-        ["$l_{CE}$", _("link CE"), f(ps.link_CE_mm, 0), "mm"],
+        ["$l_{DC}$", _("rocker $DC$"), f(ps.rocker_DC_mm, 0), "mm"],
+        ["$l_{CE}$", _("link $CE$"), f(ps.link_CE_mm, 0), "mm"],
         ["$[\\alpha]$", _("largest pressure angle, working stroke"),
          f(ps.pressure_angle_max_deg, 0), "°"],
         ["$F_{r1}$", _("working-stroke resistance (incl. friction)"),
@@ -201,16 +201,16 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
                           for sym, name, v in (
                               ("$l_{O_1A}=a$", N_("crank"), gd.crank_O1A_mm),
                               ("$l_{AB}=b$", N_("coupler"), gd.coupler_AB_mm),
-                              ("$l_{DB}=c$", N_("rocker (to B)"), gd.rocker_DB_mm),
+                              ("$l_{DB}=c$", N_("rocker (to $B$)"), gd.rocker_DB_mm),
                               ("$l_{O_1D}=d$", N_("frame"), gd.frame_O1D_mm))]
     choice_rows = [
         [_("crank rotation"), sense,
          _("the slow working stroke pushes towards {towards}", towards=towards)],
         ["$l_{DB}/l_{DC}$", f(ps.rocker_ratio_DB_DC, 3),
-         _("where B sits on the rocker: sets the four-bar's size, not its angles")],
+         _("where $B$ sits on the rocker: sets the four-bar's size, not its angles")],
         ["$l_{O_1D}$", _("auto (optimised)") if pp.frame is None
          else f(pp.frame * MM, 2) + " mm",
-         _("maximise $\\gamma_{min}$ over the cycle, the pressure angle at B within "
+         _("maximise $\\gamma_{min}$ over the cycle, the pressure angle at $B$ within "
             "$[\\alpha]$ in the working stroke")
          if pp.frame is None else (_("frame given"))],
     ]
@@ -218,7 +218,7 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
         choice_rows = choice_rows[:1]
     choice_rows += [
         ["$e$", f(pp.guide_offset * MM, 2) + " mm",
-         _("guide offset from the middle of the sagitta of C's arc")],
+         _("guide offset from the middle of the sagitta of $C$'s arc")],
         ["$[\\gamma]$", f(ps.transmission_angle_min_deg, 0) + "°",
          _("smallest acceptable transmission angle")],
     ]
@@ -284,18 +284,18 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
         ["$\\psi$", _("rocker swing"), f(psi, 4), "°"],
         ["$l_{O_1A}=a$", _("crank"), f(a, 3), "mm"],
         ["$l_{AB}=b$", _("coupler"), f(b, 3), "mm"],
-        ["$l_{DB}=c$", _("rocker (to B)"), f(c, 3), "mm"],
-        ["$l_{DC}$", _("rocker (to C)"), f(R, 3), "mm"],
+        ["$l_{DB}=c$", _("rocker (to $B$)"), f(c, 3), "mm"],
+        ["$l_{DC}$", _("rocker (to $C$)"), f(R, 3), "mm"],
         ["$l_{O_1D}=d$", _("frame"), f(d, 3), "mm"],
-        ["$O_1$", _("crank pivot (D the origin)"),
+        ["$O_1$", _("crank pivot ($D$ the origin)"),
          f"({f(syn.O1.real * MM, 3)}, {f(syn.O1.imag * MM, 3)})", "mm"],
-        ["$l_{CE}$", _("link CE"), f(L, 3), "mm"],
-        ["$y_g$", _("slider guide above D"), f(syn.guide_height * MM, 3), "mm"],
+        ["$l_{CE}$", _("link $CE$"), f(L, 3), "mm"],
+        ["$y_g$", _("slider guide above $D$"), f(syn.guide_height * MM, 3), "mm"],
         ["$\\gamma_{min}$", _("four-bar minimum transmission angle"),
          f(syn.gamma_min * DEG, 3), "°"],
-        ["$\\alpha_B$", _("largest pressure angle at B, working stroke"),
+        ["$\\alpha_B$", _("largest pressure angle at $B$, working stroke"),
          f(syn.alpha_B * DEG, 3), "°"],
-        ["$\\alpha_E$", _("largest pressure angle at E, working stroke"),
+        ["$\\alpha_E$", _("largest pressure angle at $E$, working stroke"),
          f(syn.alpha_E * DEG, 3), "°"],
     ]
     names = {"stroke": N_("stroke"), "chord": N_("chord"), "eq1": N_("equation (1)"),
@@ -317,28 +317,28 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
         ["$K$", f(sd.time_ratio, 4), f(pp.time_ratio_K, 4 if given else 2)],
         ["$\\theta$ /°", f(sd.theta * DEG, 3), f(th, 3)],
         ["$\\psi$ /°", f(sd.swing * DEG, 3), f(psi, 3)],
-        [_("chord of C (≈ the stroke) / mm"),
+        [_("chord of $C$ (≈ the stroke) / mm"),
          f(sd.stroke_C * MM, 2), f(H, 2 if given else 0)],
         ["$\\gamma_{min}$ /°", f(sd.gamma_min * DEG, 2), "≥ " + f(syn.gamma_limit * DEG, 0)],
     ]
     side_txt = _({
-        1: N_("$O_1$ on D's side of the chord $B_1B_2$ (the textbook's θ-circle)"),
+        1: N_("$O_1$ on $D$'s side of the chord $B_1B_2$ (the textbook's θ-circle)"),
         -1: N_("$O_1$ beyond the chord $B_1B_2$ (the mirror θ-circle)"),
     }[syn.side])
     if syn.criterion == "max_gamma":
         if syn.constraint_active:
-            crit = _("the limit at B is active: $O_1$ sits where the working-stroke transmission angle "
+            crit = _("the limit at $B$ is active: $O_1$ sits where the working-stroke transmission angle "
                       "is exactly {lim}°; without it the best $\\gamma_{{min}}$ would be "
                       "{gamma_unconstrained}°.", lim=f(90 - lim, 0),
                       gamma_unconstrained=f(syn.gamma_unconstrained * DEG, 2))
         elif not syn.limit_rocker:
-            crit = _("the pressure angle at B is not limited.")
+            crit = _("the pressure angle at $B$ is not limited.")
         else:
-            crit = _("the limit at B is not active at the optimum (the unconstrained maximum of "
+            crit = _("the limit at $B$ is not active at the optimum (the unconstrained maximum of "
                       "$\\gamma_{min}$ meets it).")
         best = f(syn.gamma_other_side_free * DEG, 2)
         other = (_("On the other θ-circle the best $\\gamma_{{min}}$ is only {best}°, and it cannot "
-                   "meet the limit at B.", best=best)
+                   "meet the limit at $B$.", best=best)
                  if syn.limit_rocker and syn.gamma_other_side == 0 else
                  _("On the other θ-circle the best $\\gamma_{{min}}$ is only {best}°.", best=best))
     elif syn.criterion == "given":
@@ -375,10 +375,10 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
          f(chk.stroke * MM, 4), f"H = {f(H, 4 if given else 0)}", _ok(abs(chk.stroke_error) <= tol * pp.stroke, _)],
         [_("simulated time ratio K"), f(chk.time_ratio, 4),
          f(pp.time_ratio_K, 4 if given else 2), _ok(abs(chk.time_ratio - pp.time_ratio_K) <= tol, _)],
-        [_("largest pressure angle at E, working stroke / °"),
+        [_("largest pressure angle at $E$, working stroke / °"),
          f(chk.alpha_E_work * DEG, 4), _("≤ {lim} ({alpha_E})", lim=f(lim, 0),
                                          alpha_E=f(syn.alpha_E * DEG, 4)), _ok(chk.alpha_E_work <= syn.alpha_limit + 1e-9, _)],
-        [_("largest pressure angle at B, working stroke / °"),
+        [_("largest pressure angle at $B$, working stroke / °"),
          f(chk.alpha_B_work * DEG, 4),
          (f"≤ {f(lim, 0)}" if pp.limit_rocker else "—") + f" ({f(syn.alpha_B * DEG, 4)})",
          _ok(chk.alpha_B_work <= syn.alpha_limit + 1e-9, _) if pp.limit_rocker else "—"],

@@ -145,8 +145,8 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
 
     data_rows = gb_report.data_rows(
         brief, p, zh_words.pgettext("shaper", "ram"), "BF", lk.rod_ratio_BF_O3B,
-        [["$x_{S_6}$", _.pgettext("shaper", "ram CoM from F"), f(lk.ram_com_x_S6_mm, 0), "mm"],
-         *([["$y_{S_6}$", _.pgettext("shaper", "ram CoM above F"), f(lk.ram_com_y_S6_mm, 0), "mm"]]
+        [["$x_{S_6}$", _.pgettext("shaper", "ram CoM from $F$"), f(lk.ram_com_x_S6_mm, 0), "mm"],
+         *([["$y_{S_6}$", _.pgettext("shaper", "ram CoM above $F$"), f(lk.ram_com_y_S6_mm, 0), "mm"]]
            if "ram_com_y_S6_mm" in lk.model_fields_set else [])],
         zh_words.pgettext("shaper", "cutting resistance"),
         ["$y_P$", _("cutting line above $O_2$"), f(ld.cutting_height_yP_mm, 0), "mm"])

@@ -28,7 +28,7 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
     lk, ld = brief.linkage, brief.loads
     data_rows = gb_report.data_rows(
         brief, p, zh_words.pgettext("slotter", "ram"), "BC", lk.rod_ratio_BC_O3B,
-        ["$y_{S_6}$", _.pgettext("slotter", "ram CoM above C"), f(lk.ram_com_y_S6_mm, 0), "mm"],
+        ["$y_{S_6}$", _.pgettext("slotter", "ram CoM above $C$"), f(lk.ram_com_y_S6_mm, 0), "mm"],
         zh_words.pgettext("slotter", "cutting resistance"),
         ["$x_P$", _("cutting line from the guide"), f(ld.cutting_offset_xP_mm, 0), "mm"])
     guide_bar = gb_report.guide_bar_context(syn, p, "BC", zh_words.pgettext("slotter", "ram"))

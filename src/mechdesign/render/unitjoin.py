@@ -1,0 +1,134 @@
+"""A number never parted from its unit at a line end, in the PDF and in Word.
+
+The report's Markdown writes a value with its unit as words ("α5 = -4.27 rad/s²",
+"n = 1450 r/min"); a line may break at either space. :data:`LUA_FILTER` is a pandoc Lua
+filter, run by both conversions (Markdown → typst, :mod:`.pdf`; Markdown → docx,
+:mod:`.docx`), that turns the space between a number and the unit word after it into a
+no-break space (U+00A0: pandoc's typst writer writes it as ``~``, Word keeps the character),
+and likewise the space after a relation sign ("=", "≈", "≤", "≥") before a number and the
+spaces around "×" between two numbers ("1.4 × 10⁻¹⁴ mm"). For typst, which breaks an inline
+formula after its relation ("$R_{BV} = -1978.4$ N" as "R_BV =" | "−1978.4 N"), a short
+inline formula holding a relation is set in a box (``#box($…$);``), unbroken. It works on pandoc's document
+tree, so formulas, code blocks and file names are never touched; the Markdown itself
+(report.md) stays as written.
+"""
+from __future__ import annotations
+
+#: The unit words a number may be followed by (a word starting with one of them and going
+#: on with no letter or digit: "mm/s²", "kN·m" and "r/min" before a full-width comma count,
+#: "steps" does not).
+UNITS = ("mm", "m", "μm", "s", "min", "h", "N", "kN", "MN", "W", "kW", "J", "kJ", "kg", "g",
+         "t", "rad", "rpm", "r/min", "°", "%", "Pa", "kPa", "MPa", "GPa", "Hz")
+
+#: Signs after which the number stays on the same line.
+RELATIONS = ("=", "≈", "≤", "≥", "<", ">", "→")
+
+
+def _lua_list(words) -> str:
+    return "{" + ", ".join('"' + w.replace("\\", "\\\\").replace('"', '\\"') + '"'
+                           for w in words) + "}"
+
+
+LUA_FILTER = r"""
+local UNITS = @UNITS@
+local RELATIONS = @RELATIONS@
+local NBSP = utf8.char(0x00A0)
+-- superscript digits and minus (10⁻¹⁴), as UTF-8 byte strings
+local SUPERSCRIPTS = {"⁰", "¹", "²", "³", "⁴", "⁵", "⁶", "⁷", "⁸", "⁹", "⁻"}
+
+local function ends_with_number(t)
+  if t:match("%d$") then return true end
+  for _, s in ipairs(SUPERSCRIPTS) do
+    if #t > #s and t:sub(-#s) == s then
+      local head = t:sub(1, -#s - 1)
+      return ends_with_number(head)
+    end
+  end
+  return false
+end
+
+local function starts_with_number(t)
+  -- "5", "-4.27", "−4.27" (U+2212), "+3", "(12"
+  return t:match("^[-+(]?%d") ~= nil or t:match("^\226\136\146%d") ~= nil
+end
+
+local function starts_with_unit(t)
+  for _, u in ipairs(UNITS) do
+    if t:sub(1, #u) == u then
+      local rest = t:sub(#u + 1)
+      if rest == "" or not rest:match("^[%w_]") then return true end
+    end
+  end
+  return false
+end
+
+local function text_of(el)
+  if el == nil then return nil end
+  if el.t == "Str" then return el.text end
+  if el.t == "Math" and el.mathtype == "InlineMath" then return el.text end
+  return nil
+end
+
+local function joined(a, b)
+  if a == nil or b == nil then return false end
+  if ends_with_number(a) and starts_with_unit(b) then return true end
+  if starts_with_number(b) then
+    -- "=" alone, or ending a word (a closing full-width parenthesis and "=")
+    for _, r in ipairs(RELATIONS) do
+      if #a >= #r and a:sub(-#r) == r then return true end
+    end
+  end
+  return false
+end
+
+local function times(inlines, i)
+  -- the spaces around "×" between two numbers: 1.4 × 10⁻¹⁴
+  local a, b, c = text_of(inlines[i - 1]), text_of(inlines[i + 1]), text_of(inlines[i + 3])
+  return b == "×" and a ~= nil and ends_with_number(a) and c ~= nil and starts_with_number(c)
+         and inlines[i + 2] ~= nil and inlines[i + 2].t == "Space"
+end
+
+local function Inlines(inlines)
+  local changed = false
+  for i = 2, #inlines - 1 do
+    local el = inlines[i]
+    if el.t == "Space" then
+      local prev, next = inlines[i - 1], inlines[i + 1]
+      local a, b = text_of(prev), text_of(next)
+      -- a relation sign or unit written as text; a number may end a formula ($h = 14.9$ mm)
+      if (prev.t == "Str" or next.t == "Str") and joined(a, b) then
+        inlines[i] = pandoc.Str(NBSP)
+        changed = true
+      elseif times(inlines, i) then
+        inlines[i] = pandoc.Str(NBSP)
+        inlines[i + 2] = pandoc.Str(NBSP)
+        changed = true
+      end
+    end
+  end
+  if changed then return inlines end
+  return nil
+end
+
+-- typst breaks an inline formula after a relation ("R_BV =" | "-1978.4"): in the PDF a
+-- short one with a relation is set in a box, unbroken (";" ends the embedded code, so a
+-- "(" or "[" after it stays text)
+local RELATION_TEX = {"=", "<", ">", "\\approx", "\\le", "\\ge", "\\ne"}
+
+local function boxed(el)
+  if not FORMAT:match("typst") or el.mathtype ~= "InlineMath" or #el.text > 80 then
+    return nil
+  end
+  for _, r in ipairs(RELATION_TEX) do
+    if el.text:find(r, 1, true) then
+      return {pandoc.RawInline("typst", "#box("), el, pandoc.RawInline("typst", ");")}
+    end
+  end
+  return nil
+end
+
+return {
+  { Inlines = Inlines },
+  { Math = boxed },
+}
+""".replace("@UNITS@", _lua_list(UNITS)).replace("@RELATIONS@", _lua_list(RELATIONS))

@@ -1,0 +1,186 @@
+"""Issue 19, points 4 and 5: one unit word per language, and a number never parted from its
+unit.
+
+* Chinese reports write a rotational speed in r/min (GB 3102 and the textbook), English ones
+  in rpm (the course's table unit): every zh report's Markdown holds no "rpm" outside the
+  program listings, and no Chinese catalogue entry (report text, figures, sheets, terminal
+  messages) uses the word.
+* A value's number and its unit stay on one line in the PDF and in Word ("−4.27" | "rad/s²"
+  and "n =" | "1450" were parted at line ends): render/unitjoin.py's pandoc filter joins
+  them with no-break spaces and keeps a short inline formula with a relation in one box.
+  :func:`parted_at_line_ends` finds such a break in a PDF; the e2e test of every report
+  (tests/test_typeset.py) asserts it finds none. The base commit (6d985f2) failed both.
+"""
+from __future__ import annotations
+
+import re
+import subprocess
+from pathlib import Path
+
+import pytest
+
+from tests.test_report_prose import EXAMPLES, _markdown
+
+ROOT = Path(__file__).resolve().parents[1]
+
+# ------------------------------------------------------------------------------ rpm, r/min
+
+_RPM = re.compile(r"(?<![A-Za-z_])rpm(?![A-Za-z_])")
+
+
+def _prose(md: str) -> str:
+    """The Markdown without its code blocks (the appendix's program listing)."""
+    return re.sub(r"^```.*?^```", "", md, flags=re.S | re.M)
+
+
+@pytest.mark.parametrize("name", EXAMPLES)
+def test_chinese_reports_write_r_per_min(example_results, name):
+    md, _ = _markdown(example_results, name, "zh")
+    found = [line[:120] for line in _prose(md).splitlines() if _RPM.search(line)]
+    assert not found, "\n".join(found[:8])
+
+
+def test_english_keeps_rpm_and_the_catalogue_has_no_rpm_in_chinese(example_results):
+    md, _ = _markdown(example_results, "shaper", "en")
+    assert _RPM.search(_prose(md)) and "r/min" not in _prose(md)
+    from babel.messages.pofile import read_po
+
+    for name in ("zh.po", "zh_TW.po"):
+        with open(ROOT / "src" / "mechdesign" / "locale" / name, "rb") as fh:
+            catalogue = read_po(fh)
+        words = [m.id for m in catalogue if m.id and isinstance(m.string, str)
+                 # a placeholder's name ({rpm:g}, %(rpm)s, speed_rpm) is no word of the text
+                 and _RPM.search(re.sub(r"\{[^{}]*\}|%\([^)]*\)s", "", m.string))]
+        assert not words, (name, words[:5])
+
+
+def test_a_terminal_message_of_the_drive_in_chinese():
+    """The drive's "the stages cannot reach the ratio" message lists the synchronous speeds
+    it tried, each with its unit: r/min in Chinese, rpm in English."""
+    from mechdesign.core.drive import Element, Motor, choose_motor
+    from mechdesign.core.errors import DesignError
+
+    motors = [Motor(f"M{s}", 1000.0, s, s * 0.95, 0.1, 2.0, 2.2) for s in (1000.0, 1500.0)]
+    fixed = [Element("spur", 0.97, (3.0, 5.0), 8.0, 2.0)]           # i = 2 only
+    with pytest.raises(DesignError) as err:
+        choose_motor(motors, 500.0, 100.0, fixed)
+    en, zh = err.value.message.text("en"), err.value.message.text("zh")
+    assert "1500 rpm → i = 14.2" in en and "1000 rpm → i = 9.5" in en
+    assert "1500 r/min → i = 14.2" in zh and not _RPM.search(zh)
+
+
+def test_a_speed_written_with_its_unit_is_answered_in_the_language_of_the_message(tmp_path):
+    """A brief's "80 rpm" or "80 r/min" in an _rpm field: drop the unit, which the Chinese
+    message calls r/min."""
+    from mechdesign.brief.loader import BriefError, load_variant
+
+    text = (ROOT / "designs" / "shaper.yaml").read_text(encoding="utf-8")
+    for written in ("80 rpm", "80 r/min"):
+        brief = tmp_path / "b.yaml"
+        brief.write_text(text.replace("crank_speed_n2_rpm: 80", f"crank_speed_n2_rpm: {written}"),
+                         encoding="utf-8")
+        with pytest.raises(BriefError) as info:
+            load_variant(brief)
+        (p,) = [p for p in info.value.problems if p.path == "linkage.crank_speed_n2_rpm"]
+        assert "a number in rpm, without the unit: write 80" in p.allowed
+        assert "r/min" in p.allowed_zh and not _RPM.search(p.allowed_zh), p.allowed_zh
+
+
+# ------------------------------------------------------------------------------ line ends
+
+# the unit words the reports write after a number (a word beginning with one of them and going
+# on with no letter or digit: "rad/s²", "N·m", "r/min，")
+_UNITS = ("mm", "m", "μm", "s", "min", "h", "N", "kN", "W", "kW", "J", "kg", "rad", "rpm",
+          "r/min", "°", "%", "Pa", "MPa", "Hz")
+_NUMBER_END = re.compile(r"(?<![A-Za-z_])[-−+]?\d+(?:\.\d+)?[⁰¹²³⁴⁵⁶⁷⁸⁹⁻]*$")
+_UNIT_START = re.compile(r"^(?:%s)(?![A-Za-z0-9_])"
+                         % "|".join(re.escape(u) for u in sorted(_UNITS, key=len, reverse=True)))
+_RELATION_END = re.compile(r"[=≈≤≥]$")
+_NUMBER_START = re.compile(r"^[-−+]?\d")
+
+
+def parted_at_line_ends(pdf: Path) -> list[tuple[int, str, str]]:
+    """(page, end of a line, start of the next) wherever a line of a paragraph or table cell
+    ends with a number whose unit starts the next line, or with a relation sign ("=") whose
+    number starts the next line. The next line is the one PyMuPDF reads after it that stands
+    right under it (overlapping it across, less than a line's height below); a program
+    listing (monospaced) is not prose."""
+    import pymupdf
+
+    out = []
+    with pymupdf.open(pdf) as doc:
+        for pno, page in enumerate(doc, 1):
+            lines = [(line["bbox"], "".join(s["text"] for s in line["spans"]).strip())
+                     for block in page.get_text("dict")["blocks"] for line in block.get("lines", [])
+                     # not a program listing's line (a monospaced font)
+                     if not any("Mono" in s["font"] for s in line["spans"])]
+            lines = [(box, text) for box, text in lines if text]
+            for (a_box, a), (b_box, b) in zip(lines, lines[1:]):
+                height = a_box[3] - a_box[1]
+                under = a_box[3] - 2 <= b_box[1] < a_box[3] + 0.9 * height
+                if not (under and b_box[0] < a_box[2] and a_box[0] < b_box[2]):
+                    continue
+                if (_NUMBER_END.search(a) and _UNIT_START.match(b)) or \
+                        (_RELATION_END.search(a) and _NUMBER_START.match(b)):
+                    out.append((pno, a[-24:], b[:24]))
+    return out
+
+
+def test_the_scan_finds_a_parted_value(tmp_path):
+    """Typeset without the filter (pandoc and typst alone), a paragraph whose line ends at
+    "4.27" or at "=" is found; the same with the filter is not."""
+    from mechdesign.render.pdf import render_pdf
+    from mechdesign.render.report import template_dir
+
+    md = _line_end_trials()
+    (tmp_path / "doc.md").write_text(md, encoding="utf-8")
+    render_pdf(tmp_path / "doc.md", tmp_path / "doc.pdf", {"title": "T", "lang": "en"},
+               template_dir() / "report.typ")
+    assert parted_at_line_ends(tmp_path / "doc.pdf") == []
+    # the same text through pandoc and typst without the filter parts some of them
+    import pypandoc
+    import typst
+
+    plain = tmp_path / "plain.typ"
+    subprocess.run([pypandoc.get_pandoc_path(), "--from=markdown+tex_math_dollars",
+                    "--to=typst", "--wrap=none", str(tmp_path / "doc.md"), "-o", str(plain)],
+                   check=True)
+    (tmp_path / "plain.pdf").write_bytes(typst.compile(str(plain)))
+    found = parted_at_line_ends(tmp_path / "plain.pdf")
+    assert any(re.search(r"\d$", a) for _, a, _ in found), found
+    assert any(a.endswith("=") for _, a, _ in found), found
+
+
+def _line_end_trials() -> str:
+    """Paragraphs whose value falls at every place of a line: the same sentence after a
+    growing number of words."""
+    paras = []
+    for k in range(40):
+        lead = " ".join(["word"] * k)
+        paras.append(f"{lead} the slider's angular acceleration $\\alpha_5$ = -4.27 rad/s² and "
+                     f"the reaction $R_{{BV}} = -1978.4$ N at n = 1450 rpm.")
+    return "\n\n".join(paras) + "\n"
+
+
+def test_the_filter_joins_numbers_units_and_relations(tmp_path):
+    """The filter's rule, on pandoc's typst output: "~" (no-break) between a number and its
+    unit word, after a relation before a number, around × between numbers; ordinary words,
+    formulas and code untouched; a short inline formula with a relation boxed."""
+    import pypandoc
+
+    from mechdesign.render.unitjoin import LUA_FILTER
+
+    (tmp_path / "f.lua").write_text(LUA_FILTER, encoding="utf-8")
+    (tmp_path / "in.md").write_text(
+        "$\\alpha_5$ = -4.27 rad/s², 5 steps, $h = 14.9$ mm, 1.4 × 10⁻¹⁴ mm, "
+        "转速 n = 60.00 r/min，循环 2 crank，$G_6$（构件 6）= 1962 N\n\n```\nx = 5 mm\n```\n", encoding="utf-8")
+    typ = subprocess.run([pypandoc.get_pandoc_path(), "--from=markdown+tex_math_dollars",
+                          "--to=typst", "--wrap=none", f"--lua-filter={tmp_path / 'f.lua'}",
+                          str(tmp_path / "in.md")], capture_output=True, check=True).stdout.decode()
+    assert "$alpha_5$ =~-4.27~rad/s²" in typ
+    assert "5 steps" in typ and "2 crank" in typ
+    assert "#box($h = 14.9$);~mm" in typ
+    assert "1.4~×~10⁻¹⁴~mm" in typ
+    assert "n =~60.00~r/min" in typ
+    assert "（构件 6）=~1962~N" in typ         # a relation ending a word
+    assert "x = 5 mm" in typ                 # a code block as written
