@@ -533,14 +533,6 @@ def display_widths(docx) -> list[tuple[float, str]]:
 
 BRIEFS = sorted(p.stem for p in (ROOT / "designs").glob("*.yaml"))
 
-# Reports where report.typ's figure plan (a page model made before layout) still puts one
-# figure two pages after its text: open in issue 19 point 2, listed so that it is not hidden
-KNOWN_FAR = {
-    ("press", "zh"): "figure 16 on p.23, its text on p.21 (after the label and number merges "
-                     "moved the text; the plan's text-spread factor misjudges this report)",
-}
-
-
 @pytest.mark.e2e
 @pytest.mark.parametrize("lang", ["zh", "en"])
 @pytest.mark.parametrize("brief", BRIEFS)
@@ -573,12 +565,7 @@ def test_every_report_stays_in_the_text_block(brief, lang, tmp_path):
     assert figure_order(pdf) == []
     # no figure above its own chapter's heading, none more than a page after its text
     assert figures_above_their_chapter(pdf) == []
-    far = figures_far_from_anchor(pdf)
-    if (brief, lang) in KNOWN_FAR:
-        # a known miss of the figure plan, stated in KNOWN_FAR: at most that one figure
-        assert len(far) <= 1, far
-    else:
-        assert far == []
+    assert figures_far_from_anchor(pdf) == []
 
 
 # ---- Word: table of contents, running header, page numbers, author ------------------------
