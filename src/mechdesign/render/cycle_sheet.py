@@ -10,8 +10,9 @@ from dataclasses import replace
 import numpy as np
 
 from ..i18n import N_
+from . import fmt
 from .labels import LabelTable, pgettext
-from .sheet import (LabelPlacer, Sheet, TitleInfo, fit_height, format_number, frame, heading,
+from .sheet import (LabelPlacer, Sheet, TitleInfo, fit_height, frame, heading,
                     sub, table, text_width, title_block_box, with_subscripts)
 
 DEG = 180.0 / np.pi
@@ -90,7 +91,7 @@ def cycle_sheet(diagram, info: TitleInfo, lang: str) -> Sheet:
     name_w = max(text_width(nm, 3.5) for nm in names) + 8.0
     left = x0 + 8.0 + name_w
     mu = next((m for m in MU_PHI if 360.0 / m <= x1 - 14.0 - left), MU_PHI[-1])
-    frame(s, replace(info, scale=f"{sub('μ', 'φ')} = {format_number(mu)} °/mm"))
+    frame(s, replace(info, scale=f"{sub('μ', 'φ')} = {fmt.exact(mu)} °/mm"))
     tb = title_block_box(s)
     origin = float(diagram.origin) * DEG
     width = 360.0 / mu
@@ -122,7 +123,7 @@ def cycle_sheet(diagram, info: TitleInfo, lang: str) -> Sheet:
                 _phase_label(s, phase_name(ph, lang), ph.state, xa, xb, yb, yt)
         for val in sorted(marks):
             xv = left + ((val - origin) % 360.0) / mu
-            s.text(complex(xv, yb - 1.0), format_number(val, 4), 2.5, "TEXT", "center", "top")
+            s.text(complex(xv, yb - 1.0), fmt.f(val, 1), 2.5, "TEXT", "center", "top")
     # the φ axis under the bars
     ybar = top - len(acts) * (bar_h + gap) + gap - 8.0
     s.line(complex(left, ybar), complex(right + 6.0, ybar), "OUTLINE", 0.35)
@@ -130,7 +131,7 @@ def cycle_sheet(diagram, info: TitleInfo, lang: str) -> Sheet:
     for t in np.arange(0.0, 361.0, 30.0):
         xv = left + t / mu
         s.line(complex(xv, ybar), complex(xv, ybar + 1.5), "OUTLINE", 0.35)
-        s.text(complex(xv, ybar - 1.5), format_number((origin + t) % 360.0 if t < 360 else (origin % 360.0 or 360.0), 4),
+        s.text(complex(xv, ybar - 1.5), fmt.exact((origin + t) % 360.0 if t < 360 else (origin % 360.0 or 360.0), decimals=2),
                2.5, "TEXT", "center", "top")
     s.text(complex((left + right) / 2, ybar - 7.0), lab["phi"], 3.5, "TEXT", "center", "top")
     # the phases as a table, under the diagram, left of the title block
@@ -138,15 +139,15 @@ def cycle_sheet(diagram, info: TitleInfo, lang: str) -> Sheet:
     for act, nm in zip(acts, names):
         for ph in act.phases:
             a = float(ph.start) * DEG
-            rows.append([nm, phase_name(ph, lang), format_number(a % 360.0, 4),
-                         format_number((a + float(ph.span) * DEG) % 360.0, 4),
-                         format_number(float(ph.span) * DEG, 4)])
+            rows.append([nm, phase_name(ph, lang), fmt.f(a % 360.0, 1),
+                         fmt.f((a + float(ph.span) * DEG) % 360.0, 1),
+                         fmt.f(float(ph.span) * DEG, 1)])
     ytable = ybar - 15.0
     row_h = min(6.0, (ytable - y0 - 6.0) / (len(rows) + 2))
     table(s, x0 + 8.0, ytable, [40, 40, 30, 30, 30], rows,
           head=[lab["actuator"], lab["phase"], lab["start"], lab["end"], lab["span"]],
           title=lab["table"], title_height=3.5, height=min(3.0, row_h * 0.55), row_h=row_h)
     period = 2 * np.pi / float(diagram.shaft_speed)
-    s.text(complex(tb[0], tb[3] + 8.0), with_subscripts(lab["scale"], "μ_φ").format(m=format_number(mu)) + "   "
-           + lab["period"].format(t=format_number(period, 4)), 3.5, "TEXT")
+    s.text(complex(tb[0], tb[3] + 8.0), with_subscripts(lab["scale"], "μ_φ").format(m=fmt.exact(mu)) + "   "
+           + lab["period"].format(t=fmt.sig(period)), 3.5, "TEXT")
     return s

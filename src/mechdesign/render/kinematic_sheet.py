@@ -22,8 +22,9 @@ import numpy as np
 
 from ..i18n import tr
 from ..stages.drive import shaft_numeral
+from . import fmt
 from .labels import LabelTable, pgettext, sheet_names, sheet_point, translated
-from .sheet import (LabelPlacer, Sheet, TitleInfo, fit_height, format_number, frame, ground,
+from .sheet import (LabelPlacer, Sheet, TitleInfo, fit_height, frame, ground,
                     hatched_line, heading, length_scale, pin, scale_text, slider_block, table,
                     sub, text_width, title_block_box, turn_arrow, with_subscripts)
 
@@ -106,7 +107,7 @@ def _notes(s: Sheet, lines: list[str]) -> None:
 
 
 def _scale_note(lab: dict, n: float) -> str:
-    return with_subscripts(lab["scale"], "μ_L").format(mu=format_number(n / 1000.0), s=scale_text(n))
+    return with_subscripts(lab["scale"], "μ_L").format(mu=fmt.exact(n / 1000.0), s=scale_text(n))
 
 
 def _omega_arrow(s: Sheet, view, pivot_mm: complex, radius_mm: float, ccw: bool,
@@ -607,11 +608,11 @@ def crank_rocker_diagram(opt, slider, info: TitleInfo, lang: str) -> Sheet:
         mechanism(sc_pts, True, f"{lab['slider_crank']}  {scale_text(views[1][1])}", slider.crank * MM)
         scale_notes += ";  ABC: " + _scale_note(lab, views[1][1])
     notes = [scale_notes,
-             f"ABCD: a = {format_number(fb.crank * MM)}  b = {format_number(fb.coupler * MM)}  "
-             f"c = {format_number(fb.rocker * MM)}  d = {format_number(fb.frame * MM)} mm"]
+             f"ABCD: a = {fmt.length(fb.crank * MM)}  b = {fmt.length(fb.coupler * MM)}  "
+             f"c = {fmt.length(fb.rocker * MM)}  d = {fmt.length(fb.frame * MM)} mm"]
     if slider is not None:
-        notes.append(f"ABC: a = {format_number(slider.crank * MM)}  b = {format_number(slider.rod * MM)}  "
-                     f"e = {format_number(slider.offset * MM)}  H = {format_number(slider.stroke * MM)} mm")
+        notes.append(f"ABC: a = {fmt.length(slider.crank * MM)}  b = {fmt.length(slider.rod * MM)}  "
+                     f"e = {fmt.minus(fmt.length(slider.offset * MM))}  H = {fmt.length(slider.stroke * MM)} mm")
     _notes(s, notes)
     return s
 
@@ -687,9 +688,9 @@ def cam_diagram(c, info: TitleInfo, lang: str) -> Sheet:
               else _.pgettext("kinematic sheet", "translating"))
     legend = _.pgettext("kinematic sheet", "1 cam  2 {motion} {kind} follower", motion=motion, kind=kind)
     _notes(s, [_scale_note(lab, n), lab["links"] + legend,
-               f"{sub('r', '0')} = {format_number(g.r0)} mm"
-               + (f"  {sub('r', 'r')} = {format_number(g.rr)} mm" if g.rr else "")
-               + (f"  e = {format_number(g.e)} mm" if g.e else "")])
+               f"{sub('r', '0')} = {fmt.length(g.r0)} mm"
+               + (f"  {sub('r', 'r')} = {fmt.length(g.rr)} mm" if g.rr else "")
+               + (f"  e = {fmt.minus(fmt.length(g.e))} mm" if g.e else "")])
     return s
 
 
@@ -753,7 +754,7 @@ def disc_diagram(disc, info: TitleInfo, lang: str) -> Sheet:
         placer.place(view.p(c), "C", 3.5, prefer=-1 + 0.3j, gap=2.0)
         placer.place(view.p(sh + complex(x, top)), str(label), 3.5, prefer=1j, gap=2.0)
         _omega_arrow(s, view, c, R, ccw, placer, lab)
-    _notes(s, [_scale_note(lab, n), f"R = {format_number(R)} mm  OC = {format_number(p.eccentricity * MM)} mm"])
+    _notes(s, [_scale_note(lab, n), f"R = {fmt.length(R)} mm  OC = {fmt.length(p.eccentricity * MM)} mm"])
     return s
 
 
@@ -927,18 +928,18 @@ def drive_schematic(drive, info: TitleInfo, lang: str) -> Sheet:
                           gaps=(1.5, 3.0, 5.0))
     # tables right of the drawing
     tx = ax1 - table_w
-    rows = [[shaft_numeral(sh.index), format_number(sh.speed_rpm, 4),
-             format_number(sh.power / 1e3, 3), format_number(sh.torque, 4)] for sh in drive.shafts]
+    rows = [[shaft_numeral(sh.index), fmt.rpm(sh.speed_rpm), fmt.sig(sh.power / 1e3),
+             fmt.sig(sh.torque)] for sh in drive.shafts]
     ybot = table(s, tx, ay1 - 6.0, [25, 50, 50, 50], rows, head=[lab["shaft"], lab["n"], lab["P"], lab["T"]],
                  title=lab["shafts"], title_height=3.5, height=3.0, row_h=6.0)
     srows = []
     for j, st in enumerate(stages):
-        data = (f"{sub('d', '1')}={format_number(st.d1 * MM)}, {sub('d', '2')}={format_number(st.d2 * MM)} mm"
+        data = (f"{sub('d', '1')}={fmt.f(st.d1 * MM, 0)}, {sub('d', '2')}={fmt.f(st.d2 * MM, 0)} mm"
                 if st.d1 else (f"{sub('z', '1')}={st.z1}, {sub('z', '2')}={st.z2}" if st.z1 else "—"))
-        srows.append([str(j + 1), st.name(lang), format_number(st.ratio, 4), data])
+        srows.append([str(j + 1), st.name(lang), fmt.sig(st.ratio), data])
     table(s, tx, ybot - 8.0, [12, 58, 25, 80], srows, head=[tr(lang).pgettext("kinematic sheet", "No."), lab["stage"],
                                                              lab["ratio"], lab["data"]],
           title=lab["stages"], title_height=3.5, height=3.0, row_h=6.0)
     _notes(s, [lab["not_scale"], lab["motor"].format(m=drive.motor.designation)
-               + f"  P = {format_number(drive.motor.power / 1e3, 3)} kW  n = {format_number(drive.motor.full_load_rpm, 4)} r/min"])
+               + f"  P = {fmt.f(drive.motor.power / 1e3, 2)} kW  n = {fmt.f(drive.motor.full_load_rpm, 0)} r/min"])
     return s
