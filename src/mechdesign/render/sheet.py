@@ -425,6 +425,26 @@ def length_scale(extent_mm: complex, box_mm: complex, enlarge: bool = False) -> 
         decade *= 10.0
 
 
+# GB/T 14690 preferred scales within each decade: 1:1, 1:2, 1:2.5, 1:4, 1:5 (then 1:10 …)
+# and the enlargements 2:1, 2.5:1, 4:1, 5:1 (then 10:1 …).
+PREFERRED = (1.0, 2.0, 2.5, 4.0, 5.0)
+
+
+# as n model mm per paper mm, smallest (largest drawing) first: 1/(m·10ᵏ) the enlargements,
+# m·10ᵏ the reductions
+_PREFERRED_N = sorted({m * 10.0 ** k for m in PREFERRED for k in range(9)}
+                      | {1.0 / (m * 10.0 ** k) for m in PREFERRED for k in range(5)})
+
+
+def preferred_scale(limit: float) -> float:
+    """The largest GB/T 14690 preferred scale that draws at most ``limit`` paper mm per
+    model mm, as n model mm per paper mm (n < 1: the enlargement 1/n:1)."""
+    if not limit > 0:
+        return _PREFERRED_N[-1]
+    need = 1.0 / limit
+    return next((n for n in _PREFERRED_N if n >= need * (1 - 1e-12)), _PREFERRED_N[-1])
+
+
 def scale_text(n: float) -> str:
     """'1:5', '1:2.5', '1:1'; an enlargement (n < 1, see :func:`length_scale`) '2:1', '2.5:1'."""
     if n < 1 - 1e-9:
