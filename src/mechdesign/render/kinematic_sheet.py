@@ -26,7 +26,7 @@ from . import fmt
 from .labels import LabelTable, pgettext, sheet_names, sheet_point, translated
 from .sheet import (Arc, Circle, Fill, LabelPlacer, Line, Polyline, Sheet, Text, TitleInfo, fit_height, frame, ground,
                     hatched_line, heading, pin, preferred_scale, scale_text, slider_block, table,
-                    sub, text_width, title_block_box, turn_arrow, with_subscripts)
+                    sub, text_box, text_width, title_block_box, turn_arrow, with_subscripts)
 
 MM = 1e3
 SIZE = "A3"
@@ -132,10 +132,8 @@ def _tries(pts_mm, pad: float = LABEL_MIN, count: int = 8):
 def _box(e) -> tuple[float, float, float, float] | None:
     """The box an entity covers on the paper (a text's estimated from its width)."""
     if isinstance(e, Text):
-        w, h = text_width(e.text, e.height), e.height
-        x = -{"left": 0.0, "center": 0.5, "right": 1.0}[e.halign] * w
-        y = -{"bottom": 0.0, "middle": 0.5, "top": 1.0}[e.valign] * h
-        zs = [e.position + complex(x + a, y + b) * np.exp(1j * e.angle) for a in (0, w) for b in (0, h)]
+        b = text_box(0j, e.text, e.height, e.halign, e.valign)
+        zs = [e.position + complex(x, y) * np.exp(1j * e.angle) for x in b[::2] for y in b[1::2]]
     elif isinstance(e, Line):
         zs = [e.p0, e.p1]
     elif isinstance(e, (Polyline, Fill)):
