@@ -154,8 +154,11 @@ def force_symbol(name: str) -> str:
 def _items(pg: Polygon) -> list[str]:
     unit = UNITS[pg.kind][2]
     name = force_symbol if pg.kind == "force" else str
-    out = [f"{name(v.name)} = {fmt.sig(abs(v.value))} {unit}" for v in pg.vectors]
-    out += [f"{name(key)} = {fmt.minus(fmt.sig(value))} N·m" for key, value in pg.moments.items()]
+    # a magnitude within 10⁻⁹ of the polygon's largest is a round-off of zero (fmt.sig's ref)
+    ref = max([abs(v.value) for v in pg.vectors], default=0.0)
+    out = [f"{name(v.name)} = {fmt.sig(abs(v.value), ref=ref)} {unit}" for v in pg.vectors]
+    ref = max([abs(m) for m in pg.moments.values()], default=0.0)
+    out += [f"{name(key)} = {fmt.minus(fmt.sig(value, ref=ref))} N·m" for key, value in pg.moments.items()]
     return out
 
 
@@ -507,13 +510,13 @@ def _table_height(k) -> float:
 
 
 def _cell_number(x: float, column, decimals: int | None = None) -> str:
-    """A table entry by the number rule (render/fmt.py): 4 significant digits (or the
-    column's ``decimals``), round-off noise (below 1e-9 of the column's largest value)
-    written as 0, the true minus sign."""
-    if abs(x) <= 1e-9 * float(np.max(np.abs(column))):
-        return "0"
+    """A table entry by the number rule (render/fmt.py): the decimals that give the
+    column's largest value 4 significant digits, as a table keeps fixed decimals (or the
+    column's ``decimals``), so a value near zero (the die-cutter's platen at its top) is
+    written 0.0000, not 0.000005898; the true minus sign."""
     if decimals is None:
-        return fmt.minus(fmt.sig(x))
+        peak = float(np.max(np.abs(column)))
+        decimals = max(0, 3 - int(np.floor(np.log10(peak)))) if peak > 0 else 0
     return fmt.minus(fmt.f(x, decimals, group=True))
 
 
