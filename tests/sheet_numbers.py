@@ -3,12 +3,11 @@
 :func:`rule_breaks` lists every number in a line of text that the rule forbids, whatever
 the quantity (E-notation, a hyphen-minus before a digit, a negative zero, five or more
 significant digits with three or more decimals, an integer part of five or more digits
-not grouped by threes, a magnitude below 10⁻⁵ written plainly: a round-off of zero is
-0), and, where the unit printed after the number names the quantity,
-what the rule says of it: lengths in mm and angles in degrees to 0.01 (a length below
-0.1 mm with two significant digits), forces, torques, powers, energies, speeds,
-accelerations and moments of inertia with at most 4 significant digits (all integer
-digits, no decimals, from five integer digits on).
+not grouped by threes, a round-off below 10⁻⁹ written out: it is 0), and, where the unit
+printed after the number names the quantity, what the rule says of it: lengths in mm and
+angles in degrees to 0.01 (a length below 0.1 mm with two significant digits), forces,
+torques, powers, energies, speeds, accelerations and moments of inertia with at most 4
+significant digits (all integer digits, no decimals, from five integer digits on).
 """
 from __future__ import annotations
 
@@ -52,8 +51,8 @@ def rule_breaks(text: str) -> list[str]:
             out.append(f"negative zero: {where}")
         if significant(num) >= 5 and len(tail) >= 3:
             out.append(f"five significant digits and three decimals: {where}")
-        if re.fullmatch(r"0\.00000\d*", num.replace("\u00a0", "")) and value:
-            out.append(f"a tiny magnitude written plainly (a round-off is 0): {where}")
+        if re.fullmatch(r"0\.000000000\d*", num) and value:
+            out.append(f"a round-off below 10⁻⁹ written out (it is 0): {where}")
         if len(head) >= 5 and not re.search(_GROUP, num):
             out.append(f"five integer digits not grouped: {where}")
         if _LENGTH.match(rest):

@@ -151,14 +151,21 @@ def force_symbol(name: str) -> str:
     return sub(s[0], s[1:]) + prime
 
 
+def _value(x: float, ref: float) -> str:
+    """A polygon's value by the rule (render/fmt.py): 4 significant digits (fmt.sig); a
+    magnitude within 10⁻⁹ of the polygon's largest ``ref`` is a round-off of zero, ``0``
+    (a still slider's Coriolis term). A power of ten (fmt.e) is not used here: the sheet
+    font has no superscript minus or digits 0, 5–9."""
+    return fmt.minus(fmt.sig(x, ref=ref))
+
+
 def _items(pg: Polygon) -> list[str]:
     unit = UNITS[pg.kind][2]
     name = force_symbol if pg.kind == "force" else str
-    # a magnitude within 10⁻⁹ of the polygon's largest is a round-off of zero (fmt.sig's ref)
     ref = max([abs(v.value) for v in pg.vectors], default=0.0)
-    out = [f"{name(v.name)} = {fmt.sig(abs(v.value), ref=ref)} {unit}" for v in pg.vectors]
+    out = [f"{name(v.name)} = {_value(abs(v.value), ref)} {unit}" for v in pg.vectors]
     ref = max([abs(m) for m in pg.moments.values()], default=0.0)
-    out += [f"{name(key)} = {fmt.minus(fmt.sig(value, ref=ref))} N·m" for key, value in pg.moments.items()]
+    out += [f"{name(key)} = {_value(value, ref)} N·m" for key, value in pg.moments.items()]
     return out
 
 
