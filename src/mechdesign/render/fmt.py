@@ -199,8 +199,7 @@ def exact(x: float, digits: int = 6, decimals: int | None = None, group: bool = 
         x = round(x, decimals)
     if abs(x) < 1e-9:
         return "0"
-    rounded = Decimal(f"{x:.{digits - 1}e}")
-    text = f(float(rounded), max(digits - 1 - rounded.adjusted(), 0))
+    text = sig(x, digits, group=False)
     if "." in text:
         text = text.rstrip("0").rstrip(".")
     if float(text) == 0:
