@@ -17,9 +17,10 @@ from __future__ import annotations
 import numpy as np
 
 from ..core.polygons import Polygon
+from . import fmt
 from .labels import LabelTable, pgettext, sheet_names, sheet_point
 from .sheet import (Dimension, LabelPlacer, Series, Sheet, TitleInfo, chart, fit_height,
-                    format_number, frame, ground, heading, length_scale, nice_scale, pin,
+                    frame, ground, heading, length_scale, nice_scale, pin,
                     scale_text, slider_block, sub, table, text_width, title_block_box,
                     with_subscripts)
 
@@ -87,11 +88,11 @@ def analysis_sheet(found, info: TitleInfo, lang: str, labels: dict | None = None
     _polygon_grid(s, model, polys, chosen, lab, (310.0, y0 + 8, 602.0, y1 - 4), scales)
     _curves(s, model, k, forces, flywheel, lab, (622.0, 72.0, x1 - 8, y1 - 6))
     tb_x0, _, _, tb_y1 = title_block_box(s)
-    notes = [lab["scales"] + f":  {sub('μ', 'L')} = {format_number(n_len / 1000)} m/mm ({scale_text(n_len)}); "
+    notes = [lab["scales"] + f":  {sub('μ', 'L')} = {fmt.exact(n_len / 1000)} m/mm ({scale_text(n_len)}); "
              + lab["each"]]
     if flywheel is not None:
-        notes.append(lab["dw"].format(v=format_number(flywheel.max_energy_swing, 5)) + ",  "
-                     + lab["jf"].format(v=format_number(flywheel.inertia, 4)))
+        notes.append(lab["dw"].format(v=fmt.sig(flywheel.max_energy_swing)) + ",  "
+                     + lab["jf"].format(v=fmt.sig(flywheel.inertia)))
     for j, text in enumerate(notes):
         s.text(tb_x0 - 30.0 + 1j * (tb_y1 + 10.0 - 5.5 * j), text,
                fit_height(text, 205.0, 3.0), "TEXT")
@@ -150,11 +151,21 @@ def force_symbol(name: str) -> str:
     return sub(s[0], s[1:]) + prime
 
 
+def _value(x: float, ref: float) -> str:
+    """A polygon's value by the rule (render/fmt.py): 4 significant digits (fmt.sig); a
+    magnitude within 10⁻⁹ of the polygon's largest ``ref`` is a round-off of zero, ``0``
+    (a still slider's Coriolis term). A power of ten (fmt.e) is not used here: the sheet
+    font has no superscript minus or digits 0, 5–9."""
+    return fmt.minus(fmt.sig(x, ref=ref))
+
+
 def _items(pg: Polygon) -> list[str]:
     unit = UNITS[pg.kind][2]
     name = force_symbol if pg.kind == "force" else str
-    out = [f"{name(v.name)} = {format_number(abs(v.value), 4)} {unit}" for v in pg.vectors]
-    out += [f"{name(key)} = {format_number(value, 4)} N·m" for key, value in pg.moments.items()]
+    ref = max([abs(v.value) for v in pg.vectors], default=0.0)
+    out = [f"{name(v.name)} = {_value(abs(v.value), ref)} {unit}" for v in pg.vectors]
+    ref = max([abs(m) for m in pg.moments.values()], default=0.0)
+    out += [f"{name(key)} = {_value(value, ref)} N·m" for key, value in pg.moments.items()]
     return out
 
 
@@ -186,7 +197,7 @@ def _cell(s: Sheet, pg: Polygon, cell, title: str, lab: dict) -> float:
     extent = max(np.ptp(pts.real) / (pbox[2] - pbox[0]), np.ptp(pts.imag) / (pbox[3] - pbox[1]),
                  1e-12)
     mu = nice_scale(extent, 1.0)
-    text = f"{sym} = {format_number(mu)} {unit}"
+    text = f"{sym} = {fmt.exact(mu)} {unit}"
     s.text((cx0 + cx1) / 2 + 1j * (cy1 - 2.0 - head_h - 1.0), text, 2.5, "TEXT", "center", "top")
     # labels keep clear of the heading and scale above and the vector list below
     _draw_polygon(s, pg, mu, pbox, [(cx0, pbox[3] + 2.0, cx1, cy1), (cx0, cy0, cx1, pbox[1] - 2.0)])
@@ -267,7 +278,7 @@ def _block_dimension(placer: LabelPlacer, d: Dimension) -> None:
     u = (d.p1 - d.p0) / abs(d.p1 - d.p0)
     shift = 1j * u * (d.offset if d.kind == "aligned" else 0.0)
     placer.block_segment(d.p0 + shift, d.p1 + shift, 1.0)
-    text = d.text or ("R" if d.kind == "radius" else "") + format_number(d.measurement, 5)
+    text = d.text or ("R" if d.kind == "radius" else "") + fmt.length(d.measurement)
     mid = (d.p0 + d.p1) / 2 + shift + 1j * u * (1.0 + d.height / 2)
     half = text_width(text, d.height) / 2 + 0.5
     for t in np.linspace(-half, half, max(2, int(2 * half / 1.5) + 1)):
@@ -358,7 +369,7 @@ def _mechanism(s: Sheet, model, k, lab: dict, box, chosen: list[str], lang: str)
     sc = 1.0 / n_len
     centre = (lo + hi) / 2
     v = s.view((bx0 + bx1) / 2 + 1j * ((by0 + by1 - top_room + 16.0) / 2 - 6) - sc * centre, sc)
-    title = f"{lab['mechanism']}  {scale_text(n_len)}  ({sub('μ', 'L')} = {format_number(n_len / 1000)} m/mm)"
+    title = f"{lab['mechanism']}  {scale_text(n_len)}  ({sub('μ', 'L')} = {fmt.exact(n_len / 1000)} m/mm)"
     heading(s, (bx0 + bx1) / 2 + 1j * (by1 - 6), title, min(5.0, fit_height(title, bx1 - bx0, 5.0)))
     placer = LabelPlacer(s)
     if legend:
@@ -506,14 +517,14 @@ def _table_height(k) -> float:
 
 
 def _cell_number(x: float, column, decimals: int | None = None) -> str:
-    """A table entry: 4 significant digits (or ``decimals``), round-off noise (below 1e-9
-    of the column's largest value) written as 0."""
-    if abs(x) <= 1e-9 * float(np.max(np.abs(column))):
-        return "0"
+    """A table entry by the number rule (render/fmt.py): the decimals that give the
+    column's largest value 4 significant digits, as a table keeps fixed decimals (or the
+    column's ``decimals``), so a value near zero (the die-cutter's platen at its top) is
+    written 0.0000, not 0.000005898; the true minus sign."""
     if decimals is None:
-        return format_number(x, 4)
-    text = f"{x:.{decimals}f}"
-    return text.lstrip("-") if float(text) == 0 else text       # never '-0.000'
+        peak = float(np.max(np.abs(column)))
+        decimals = max(0, 3 - int(np.floor(np.log10(peak)))) if peak > 0 else 0
+    return fmt.minus(fmt.f(x, decimals, group=True))
 
 
 def _table(s: Sheet, model, k, forces, lab: dict, box) -> None:
@@ -528,7 +539,7 @@ def _table(s: Sheet, model, k, forces, lab: dict, box) -> None:
     rows = []
     for j, label in enumerate(k.positions.labels):
         i = n + j
-        rows.append([label, f"{k.phase[i] * DEG:.1f}", _cell_number(k.s[i] * fs, k.s[:n] * fs, 2)]
+        rows.append([label, fmt.f(k.phase[i] * DEG, 1), _cell_number(k.s[i] * fs, k.s[:n] * fs, 2)]
                     + [_cell_number(c[i], c[:n]) for c in columns])
     rh = ROW_H
     weights = np.array([0.8, 1.0] + [1.2] * (len(head) - 2))
@@ -575,7 +586,7 @@ def _curves(s: Sheet, model, k, forces, fl, lab: dict, box) -> None:
     text = lab["md"] if fl is not None else lab["mean"]
     chart(s, (left, y - h, bx1, y), ph, [Series(closed(mb))], xlabel=lab["phase"],
           ylabel=lab["mb"], title=lab["mbt"], xticks=ticks, shade=[(0, span)],
-          hlines=[(md, text.format(v=format_number(md, 4)))],
+          hlines=[(md, text.format(v=fmt.minus(fmt.sig(md))))],
           marks=[(pos_ph[q], mb[n + q], "") for q in regular])
     if fl is None:
         return
@@ -596,5 +607,5 @@ def _curves(s: Sheet, model, k, forces, fl, lab: dict, box) -> None:
     x_at = 0.5 * (fl.phase_at_min + fl.phase_at_max) * DEG
     p_lo, p_hi = m.p(x_at, float(e.min())), m.p(x_at, float(e.max()))
     s.dimension(p_lo, p_hi, 0.0, fl.max_energy_swing,
-                text=lab["dw"].format(v=format_number(fl.max_energy_swing, 5)), height=2.5)
+                text=lab["dw"].format(v=fmt.sig(fl.max_energy_swing)), height=2.5)
 

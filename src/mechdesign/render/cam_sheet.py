@@ -32,6 +32,7 @@ from ..core.motion_laws import LAWS
 from ..i18n import N_, tr
 from ..stages.cam import Division
 from .cam_report import _IMPACT, CONTACT, _segment_name, _Units
+from . import fmt
 from .labels import LabelTable, pgettext
 from .sheet import (
     sub,
@@ -43,7 +44,6 @@ from .sheet import (
     Sheet,
     TitleInfo,
     fit_height,
-    format_number,
     frame,
     ground,
     heading,
@@ -365,7 +365,7 @@ def _profile(sheet: Sheet, c, g: _ProfileGeometry, divs, n: float, box, lab):
     for f in np.linspace(0.3, 1.0, 8):
         taken += _crossings(rays, f * g.r0)
     rc, _ = _largest_gap(taken)
-    view.dimension(0, g.r0 * np.exp(1j * rc), 0.0, text=f"{sub('r', '0')}={format_number(g.r0)}", kind="radius",
+    view.dimension(0, g.r0 * np.exp(1j * rc), 0.0, text=f"{sub('r', '0')}={fmt.length(g.r0)}", kind="radius",
                    height=3.5)
     if g.kind == "roller":
         _roller_dimension(sheet, view, g, n, gap_c, labels)
@@ -444,13 +444,13 @@ def _follower_start(sheet, view, g: _ProfileGeometry, n, labels: LabelPlacer) ->
             side = -1.0 if np.imag(np.conj(u) * (0 - A)) > 0 else 1.0
             z0, z1 = (A, B0) if u.real >= 0 else (B0, A)        # text reads left to right
             view.dimension(z0, z1, side * 7.0 * (1 if u.real >= 0 else -1),
-                           text=f"L={format_number(g.L)}", height=3.5)
+                           text=f"L={fmt.length(g.L)}", height=3.5)
         # centre distance a under the drawing; extension lines start below the pivots' frames
         ink = np.concatenate([g.actual, g.pitch, g.B - 1j * g.rr, [-g.r0 * 1j]])
         near = ink[(ink.real > -5.0 * n) & (ink.real < g.a + 5.0 * n)]
         y = -float(np.min(near.imag)) + 10.0 * n
         drop = 12.0 * n
-        view.dimension(-1j * drop, A - 1j * drop, -(y - drop) * k, text=f"a={format_number(g.a)}",
+        view.dimension(-1j * drop, A - 1j * drop, -(y - drop) * k, text=f"a={fmt.length(g.a)}",
                        height=3.5, measurement=g.a)
         for z in np.linspace(0, g.a, 9):
             angles.append(float(np.angle(z - 1j * y)))
@@ -486,7 +486,7 @@ def _follower_start(sheet, view, g: _ProfileGeometry, n, labels: LabelPlacer) ->
         y = g.ring(n) + 8.0 * n
         view.line(0, 1j * (y + 3.0 * n), "CENTER")
         z0, z1 = (1j * y, x + 1j * y) if x > 0 else (x + 1j * y, 1j * y)
-        view.dimension(z0, z1, 0.0, text=f"e={format_number(abs(x))}", height=3.5)
+        view.dimension(z0, z1, 0.0, text=f"e={fmt.length(abs(x))}", height=3.5)
         labels.boxes.append((min(P(0).real, P(x).real) - 6.0, P(1j * y).imag - 1.0,
                              max(P(0).real, P(x).real) + 6.0, P(1j * y).imag + 5.5))
         angles += [float(np.angle(1j * y)), float(np.angle(x + 1j * y))]
@@ -516,7 +516,7 @@ def _roller_dimension(sheet, view, g: _ProfileGeometry, n, gap_c, labels: LabelP
         if best is None or score > best[0]:
             best = (score, c_)
     u = np.exp(1j * best[1])
-    text = f"{sub('r', 'r')}={format_number(g.rr)}"
+    text = f"{sub('r', 'r')}={fmt.length(g.rr)}"
     h = 3.5
     tip = P(B0 + g.rr * u)
     tail = tip + 7.0 * u
@@ -599,7 +599,7 @@ def _diagram(sheet, c, divs, mu_d, mu_s, xo, ytop, lab, lang) -> float:
     for v in np.arange(0.0, stroke + 1e-9, step):
         p = P(0, v)
         sheet.line(p, p - 1.5, "OUTLINE", 0.35)
-        sheet.text(p - 2.5, format_number(v), 2.5, "TEXT", "right", "middle")
+        sheet.text(p - 2.5, fmt.minus(fmt.exact(v)), 2.5, "TEXT", "right", "middle")
     sheet.line(P(0, stroke), P(360, stroke), "HIDDEN")
 
     # ordinates at the division points (thin), numbered under the axis
@@ -621,15 +621,15 @@ def _diagram(sheet, c, divs, mu_d, mu_s, xo, ytop, lab, lang) -> float:
     for i in range(len(prog.segments)):
         a, b = bounds[i], bounds[i + 1]
         pa, pb = P(a, 0).real, P(b, 0).real
-        span_txt = f"{format_number(b - a)}°"
+        span_txt = f"{fmt.exact(b - a, decimals=2)}°"
         h = 3.5 if text_width(span_txt, 3.5) + 6.0 <= pb - pa else 2.5
         sheet.dimension(complex(pa, yd), complex(pb, yd), -6.0, b - a, span_txt, "aligned", h)
         name = _segment_name(c, i, lang)
         sheet.text(complex((pa + pb) / 2, yd - 8.0), name, fit_height(name, pb - pa - 1.0, 3.5),
                    "TEXT", "center", "top")
     mu_sym = sub("μ", "φ") if u.osc else sub("μ", "s")
-    scale_txt = (f"{mu_sym} = {format_number(mu_s)} {'(°)/mm' if u.osc else 'mm/mm'}    "
-                 f"{sub('μ', 'δ')} = {format_number(mu_d)} (°)/mm")
+    scale_txt = (f"{mu_sym} = {fmt.exact(mu_s)} {'(°)/mm' if u.osc else 'mm/mm'}    "
+                 f"{sub('μ', 'δ')} = {fmt.exact(mu_d)} (°)/mm")
     y_scale = yd - 8.0 - 3.5 - 3.5
     sheet.text(complex(xo, y_scale), scale_txt, 3.5, "TEXT", "left", "top")
     return y_scale - 3.5
@@ -696,8 +696,8 @@ def _right_draw(sheet, c, divs, g, mu_d, mu_s, row, gap, box, lab, lang) -> floa
     for i in range(0, len(divs), per_row):
         chunk = divs[i:i + per_row]
         rows = [[lab["point"]] + [f"{d.number}" for d in chunk],
-                ["δ/(°)"] + [format_number(round(d.delta * DEG, 2)) for d in chunk],
-                [f"{u.s_sym}/{'(°)' if u.osc else 'mm'}"] + [f"{d.s * u.s_scale:.2f}" for d in chunk]]
+                ["δ/(°)"] + [fmt.exact(d.delta * DEG, decimals=2) for d in chunk],
+                [f"{u.s_sym}/{'(°)' if u.osc else 'mm'}"] + [fmt.minus(fmt.f(d.s * u.s_scale, 2)) for d in chunk]]
         y = table(sheet, tx, y, [first] + [colw] * len(chunk), rows, row_h=row) - 2.0
     y -= gap - 2.0
 
@@ -710,10 +710,11 @@ def _right_draw(sheet, c, divs, g, mu_d, mu_s, row, gap, box, lab, lang) -> floa
         a, b = prog.starts[i] * DEG, (prog.starts[i] + prog.spans[i]) * DEG
         law = "—" if seg.law is None else LAWS[seg.law].name(lang)
         lift = "—" if seg.kind == DWELL else (
-            f"{format_number(abs(prog.lifts[i]) * u.s_scale)}{'°' if u.osc else ' mm'}")
+            f"{fmt.f(abs(prog.lifts[i]) * u.s_scale, 2) if u.osc else fmt.length(abs(prog.lifts[i]) * u.s_scale)}"
+            f"{'°' if u.osc else ' mm'}")
         impact = "—" if seg.kind == DWELL else _IMPACT[lang][c.segments[i].impact]
-        rows.append([_segment_name(c, i, lang), f"{format_number(a)}°–{format_number(b)}°",
-                     f"{format_number(b - a)}°", law, lift, impact])
+        rows.append([_segment_name(c, i, lang), f"{fmt.exact(a, decimals=2)}°–{fmt.exact(b, decimals=2)}°",
+                     f"{fmt.exact(b - a, decimals=2)}°", law, lift, impact])
     y = table(sheet, xl, y, fit_widths([20, 30, 18, 78, 24, 24], width), rows, lab["head_prog"],
                row_h=row) - gap
 
@@ -739,23 +740,23 @@ def _data_rows(c, g: _ProfileGeometry, lab, lang):
         name = _("centred {motion} {contact} follower", motion=motion, contact=contact)
     rot = lab["ccw"] if p.rotation > 0 else lab["cw"]
     if p.speed_rpm:
-        rot += _(", n = {n} rpm", n=format_number(p.speed_rpm))
+        rot += _(", n = {n} rpm", n=fmt.rpm(p.speed_rpm))
     rows = [[lab["follower"], "—", name, ""], [lab["rotation"], "ω", rot, ""]]
     prog = p.programme
     if g.osc:
-        rows.append([lab["swing"], sub("φ", "max"), f"{format_number(prog.stroke * DEG)}°", ""])
+        rows.append([lab["swing"], sub("φ", "max"), f"{fmt.f(prog.stroke * DEG, 2)}°", ""])
     else:
-        rows.append([lab["stroke"], "h", f"{format_number(prog.stroke * MM)} mm", ""])
-    rows.append([lab["r0"], sub("r", "0"), f"{format_number(g.r0)} mm", ""])
+        rows.append([lab["stroke"], "h", f"{fmt.length(prog.stroke * MM)} mm", ""])
+    rows.append([lab["r0"], sub("r", "0"), f"{fmt.length(g.r0)} mm", ""])
     if fol.kind == "roller":
-        rows.append([lab["rr"], sub("r", "r"), f"{format_number(g.rr)} mm", ""])
+        rows.append([lab["rr"], sub("r", "r"), f"{fmt.length(g.rr)} mm", ""])
     if g.osc:
-        rows.append([lab["a"], "a", f"{format_number(g.a)} mm", ""])
+        rows.append([lab["a"], "a", f"{fmt.length(g.a)} mm", ""])
         if fol.kind != "flat":
-            rows.append([lab["L"], "L", f"{format_number(g.L)} mm", ""])
-        rows.append([lab["phi0"], sub("φ", "0"), f"{c.grid.initial_angle * DEG:.2f}°", ""])
+            rows.append([lab["L"], "L", f"{fmt.length(g.L)} mm", ""])
+        rows.append([lab["phi0"], sub("φ", "0"), f"{fmt.minus(fmt.f(c.grid.initial_angle * DEG, 2))}°", ""])
     elif fol.kind != "flat":
-        value = f"{format_number(abs(g.e))} mm"
+        value = f"{fmt.length(abs(g.e))} mm"
         if abs(g.e) > 1e-9:
             fav = c.drawing.offset_favourable
             side = lab["right"] if g.e > 0 else lab["left"]
@@ -770,24 +771,24 @@ def _data_rows(c, g: _ProfileGeometry, lab, lang):
                 continue
             worst = max(segs, key=lambda s: s.max_pressure_angle)
             ok = all(s.ok for s in segs)
-            rows.append([lab[key], sym, f"{worst.max_pressure_angle * DEG:.2f}°",
-                         f"≤ {lim_sym} = {format_number(worst.limit * DEG)}°  "
+            rows.append([lab[key], sym, f"{fmt.f(worst.max_pressure_angle * DEG, 2)}°",
+                         f"≤ {lim_sym} = {fmt.exact(worst.limit * DEG, decimals=2)}°  "
                          f"{lab['ok'] if ok else lab['fail']}"])
     if fol.kind == "roller":
         rp, ra = c.rho_pitch_min_convex * MM, c.rho_actual_min_convex * MM
-        rows.append([lab["rho"], sub("ρ", "min"), f"{rp:.2f} mm",
-                     f"> {sub('r', 'r')} = {format_number(g.rr)} mm  {lab['ok'] if rp > g.rr else lab['fail']}"])
+        rows.append([lab["rho"], sub("ρ", "min"), f"{fmt.minus(fmt.length(rp))} mm",
+                     f"> {sub('r', 'r')} = {fmt.length(g.rr)} mm  {lab['ok'] if rp > g.rr else lab['fail']}"])
         lim = p.min_actual_curvature * MM
-        rows.append([lab["rho_a"], sub("ρ", "a,min"), f"{ra:.2f} mm",
-                     f"≥ {format_number(lim)} mm  {lab['ok'] if ra >= lim else lab['fail']}"])
+        rows.append([lab["rho_a"], sub("ρ", "a,min"), f"{fmt.minus(fmt.length(ra))} mm",
+                     f"≥ {fmt.length(lim)} mm  {lab['ok'] if ra >= lim else lab['fail']}"])
     elif fol.kind == "flat":
         rho = (c.rho_actual_min if c.rho_actual_min is not None
                else float(np.min(c.grid.rho_actual))) * MM
-        rows.append([lab["rho_flat"], sub("ρ", "min"), f"{rho:.2f} mm",
+        rows.append([lab["rho_flat"], sub("ρ", "min"), f"{fmt.minus(fmt.length(rho))} mm",
                      f"> 0  {lab['ok'] if rho > 0 else lab['fail']}"])
         if c.face_extent is not None and not g.osc:
             lo, hi = c.face_extent
-            rows.append([lab["face"], "b", f"{2 * max(abs(lo), abs(hi)) * MM + 7:.1f} mm", ""])
+            rows.append([lab["face"], "b", f"{fmt.length(2 * max(abs(lo), abs(hi)) * MM + 7)} mm", ""])
     else:
-        rows.append([lab["rho"], sub("ρ", "min"), f"{c.rho_pitch_min_convex * MM:.2f} mm", ""])
+        rows.append([lab["rho"], sub("ρ", "min"), f"{fmt.minus(fmt.length(c.rho_pitch_min_convex * MM))} mm", ""])
     return rows

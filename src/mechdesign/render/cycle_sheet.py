@@ -10,8 +10,9 @@ from dataclasses import replace
 import numpy as np
 
 from ..i18n import N_
+from . import fmt
 from .labels import LabelTable, pgettext
-from .sheet import (LabelPlacer, Sheet, TitleInfo, fit_height, format_number, frame, heading,
+from .sheet import (LabelPlacer, Sheet, TitleInfo, fit_height, frame, heading,
                     sub, table, text_width, title_block_box, with_subscripts)
 
 DEG = 180.0 / np.pi
@@ -56,26 +57,64 @@ def phase_name(ph, lang: str) -> str:
     return text or STATE_NAMES[lang].get(ph.state, ph.state)
 
 
+# clear space between a phase's name and the lines of its bar (the transition lines, the
+# outline, a rise's or return's diagonal) [mm]
+GAP = 1.5
+# the height a name takes, ascender to descender, in text heights (a CJK glyph reaches
+# below the baseline; the sheet's text box is ascender to baseline)
+_EXTENT = 1.2
+# the width a name takes, in estimated widths (sheet.text_width is ~5 % short for some
+# Latin words: "down" in Noto Sans)
+_WIDTH = 1.1
+
+
+def label_box(text: str, state: str, h: float, xa: float, xb: float, yb: float, yt: float
+              ) -> tuple[float, float, float, float]:
+    """(x0, y0, x1, y1) of a phase's name of height ``h`` in its box [xa, xb] × [yb, yt]: a
+    dwell's centred; a rise's (return's) in the upper left (right) corner, :data:`GAP` from
+    the transition line and the outline."""
+    w, th = _WIDTH * text_width(text, h), _EXTENT * h
+    if state in ("rise", "move"):
+        return xa + GAP, yt - GAP - th, xa + GAP + w, yt - GAP
+    if state == "return":
+        return xb - GAP - w, yt - GAP - th, xb - GAP, yt - GAP
+    xm, ym = (xa + xb) / 2, (yt + yb) / 2
+    return xm - w / 2, ym - th / 2, xm + w / 2, ym + th / 2
+
+
+def _clear(box, state: str, xa: float, xb: float, yb: float, yt: float) -> bool:
+    """``box`` lies inside the phase's box, :data:`GAP` from its lines, and (a rise or a
+    return) :data:`GAP` from its diagonal (measured square to it, from the box's corner
+    nearest to it)."""
+    x0, y0, x1, y1 = box
+    if x0 < xa + GAP - 1e-9 or x1 > xb - GAP + 1e-9 or y0 < yb + GAP - 1e-9 or y1 > yt - GAP + 1e-9:
+        return False
+    if state in ("rise", "move"):        # the diagonal (xa, yb) → (xb, yt); the box above it
+        a, b, corner = complex(xa, yb), complex(xb, yt), complex(x1, y0)
+    elif state == "return":              # the diagonal (xa, yt) → (xb, yb); the box above it
+        a, b, corner = complex(xa, yt), complex(xb, yb), complex(x0, y0)
+    else:
+        return True
+    u = (b - a) / abs(b - a)
+    return (np.conj(u) * (corner - a)).imag >= GAP       # left of a → b, at least GAP
+
+
 def _phase_label(s: Sheet, text: str, state: str, xa: float, xb: float, yb: float,
                  yt: float) -> None:
-    """A phase's name inside its box: a dwell's centred; a rise's (return's) in the upper
-    left (right) corner, clear of the diagonal — as large as fits (3 mm down to 1.8 mm),
+    """A phase's name inside its box (see :func:`label_box`), :data:`GAP` clear of the
+    transition lines, the outline and the diagonal — as large as fits (3 mm down to 1.8 mm),
     left out when it does not fit (the table under the diagram names every phase)."""
-    width, bar_h = xb - xa, yt - yb
     for h in (3.0, 2.5, 2.0, 1.8):
-        w = text_width(text, h)
-        if state in ("rise", "move", "return"):
-            # the diagonal at the text's bottom edge is (1 + h)/bar_h of the width in from
-            # the corner opposite the text
-            room = width * (1.0 - (1.0 + h) / bar_h) - 1.5
-            if w <= room:
-                if state == "return":
-                    s.text(complex(xb - 1.0, yt - 1.0), text, h, "TEXT", "right", "top")
-                else:
-                    s.text(complex(xa + 1.0, yt - 1.0), text, h, "TEXT", "left", "top")
-                return
-        elif w <= width - 2.0:
-            s.text(complex((xa + xb) / 2, (yt + yb) / 2), text, h, "TEXT", "center", "middle")
+        box = label_box(text, state, h, xa, xb, yb, yt)
+        if _clear(box, state, xa, xb, yb, yt):
+            # anchored on the side of the transition line (the back end measures the real
+            # width); the sheet's text box is ascender to baseline, the descent below it
+            if state == "return":
+                s.text(complex(box[2], box[3]), text, h, "TEXT", "right", "top")
+            elif state in ("rise", "move"):
+                s.text(complex(box[0], box[3]), text, h, "TEXT", "left", "top")
+            else:
+                s.text(complex((box[0] + box[2]) / 2, box[3]), text, h, "TEXT", "center", "top")
             return
 
 
@@ -90,7 +129,7 @@ def cycle_sheet(diagram, info: TitleInfo, lang: str) -> Sheet:
     name_w = max(text_width(nm, 3.5) for nm in names) + 8.0
     left = x0 + 8.0 + name_w
     mu = next((m for m in MU_PHI if 360.0 / m <= x1 - 14.0 - left), MU_PHI[-1])
-    frame(s, replace(info, scale=f"{sub('μ', 'φ')} = {format_number(mu)} °/mm"))
+    frame(s, replace(info, scale=f"{sub('μ', 'φ')} = {fmt.exact(mu)} °/mm"))
     tb = title_block_box(s)
     origin = float(diagram.origin) * DEG
     width = 360.0 / mu
@@ -99,6 +138,7 @@ def cycle_sheet(diagram, info: TitleInfo, lang: str) -> Sheet:
     bar_h, gap = 10.0, 9.0
     top = y1 - 22.0
     placer = LabelPlacer(s)
+    lowest = np.inf                       # the lowest angle written under a bar
     for r, (act, nm) in enumerate(zip(acts, names)):
         yt = top - r * (bar_h + gap)
         yb = yt - bar_h
@@ -120,17 +160,25 @@ def cycle_sheet(diagram, info: TitleInfo, lang: str) -> Sheet:
                 elif ph.state == "return":
                     s.line(complex(xa, yt), complex(xb, yb), "CONSTRUCTION")
                 _phase_label(s, phase_name(ph, lang), ph.state, xa, xb, yb, yt)
-        for val in sorted(marks):
+        # the boundaries' angles under the bar to 0.1° (as the table), one that would run
+        # into the one before it a line lower
+        right_end = [-np.inf, -np.inf]
+        for val in sorted(marks, key=lambda v: (v - origin) % 360.0):
             xv = left + ((val - origin) % 360.0) / mu
-            s.text(complex(xv, yb - 1.0), format_number(val, 4), 2.5, "TEXT", "center", "top")
-    # the φ axis under the bars
-    ybar = top - len(acts) * (bar_h + gap) + gap - 8.0
+            text = fmt.f(val, 1)
+            half = text_width(text, 2.5) / 2
+            row = 0 if xv - half > right_end[0] + 1.0 else 1
+            right_end[row] = xv + half
+            s.text(complex(xv, yb - 1.0 - 3.0 * row), text, 2.5, "TEXT", "center", "top")
+            lowest = min(lowest, yb - 1.0 - 3.0 * row - 2.5)
+    # the φ axis under the bars (and under their angles)
+    ybar = min(top - len(acts) * (bar_h + gap) + gap - 8.0, lowest - 3.0)
     s.line(complex(left, ybar), complex(right + 6.0, ybar), "OUTLINE", 0.35)
     s.fill([complex(right + 8.0, ybar), complex(right + 5.0, ybar + 1.0), complex(right + 5.0, ybar - 1.0)])
     for t in np.arange(0.0, 361.0, 30.0):
         xv = left + t / mu
         s.line(complex(xv, ybar), complex(xv, ybar + 1.5), "OUTLINE", 0.35)
-        s.text(complex(xv, ybar - 1.5), format_number((origin + t) % 360.0 if t < 360 else (origin % 360.0 or 360.0), 4),
+        s.text(complex(xv, ybar - 1.5), fmt.exact((origin + t) % 360.0 if t < 360 else (origin % 360.0 or 360.0), decimals=2),
                2.5, "TEXT", "center", "top")
     s.text(complex((left + right) / 2, ybar - 7.0), lab["phi"], 3.5, "TEXT", "center", "top")
     # the phases as a table, under the diagram, left of the title block
@@ -138,15 +186,15 @@ def cycle_sheet(diagram, info: TitleInfo, lang: str) -> Sheet:
     for act, nm in zip(acts, names):
         for ph in act.phases:
             a = float(ph.start) * DEG
-            rows.append([nm, phase_name(ph, lang), format_number(a % 360.0, 4),
-                         format_number((a + float(ph.span) * DEG) % 360.0, 4),
-                         format_number(float(ph.span) * DEG, 4)])
+            rows.append([nm, phase_name(ph, lang), fmt.f(a % 360.0, 1),
+                         fmt.f((a + float(ph.span) * DEG) % 360.0, 1),
+                         fmt.f(float(ph.span) * DEG, 1)])
     ytable = ybar - 15.0
     row_h = min(6.0, (ytable - y0 - 6.0) / (len(rows) + 2))
     table(s, x0 + 8.0, ytable, [40, 40, 30, 30, 30], rows,
           head=[lab["actuator"], lab["phase"], lab["start"], lab["end"], lab["span"]],
           title=lab["table"], title_height=3.5, height=min(3.0, row_h * 0.55), row_h=row_h)
     period = 2 * np.pi / float(diagram.shaft_speed)
-    s.text(complex(tb[0], tb[3] + 8.0), with_subscripts(lab["scale"], "μ_φ").format(m=format_number(mu)) + "   "
-           + lab["period"].format(t=format_number(period, 4)), 3.5, "TEXT")
+    s.text(complex(tb[0], tb[3] + 8.0), with_subscripts(lab["scale"], "μ_φ").format(m=fmt.exact(mu)) + "   "
+           + lab["period"].format(t=fmt.sig(period)), 3.5, "TEXT")
     return s

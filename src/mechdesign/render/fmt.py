@@ -43,6 +43,12 @@ Numbers, as an engineer writes them (one rule for every report, table and sheet)
   no-break space (``1 000 000``), as GB 3101 / ISO 80000-1 write it; inside a formula the
   digits stay together (``99480``).
 
+On the drawing sheets the same functions write every number (:mod:`.sheet` and the sheet
+modules call them, nothing else), with the true minus sign ``−`` (:func:`minus`: the sheets
+print their text as written, the report gets its minus from typst and Word) and, where
+the rule groups digits, a no-break space (the sheet font has no narrow one); a value the
+design chose (a scale, a chart's graduation, a programme angle) as :func:`exact` writes it.
+
 Verdicts: :func:`verdict` — 合格/不合格 in Chinese, PASS/FAIL in English, everywhere.
 
 User text (titles, names, labels from the brief) is escaped once, at the boundary where it
@@ -122,6 +128,41 @@ def sci(x: float, n: int = 4) -> str:
         return sig(x, n)
     mant, _, exp = f"{x:.{n - 1}e}".partition("e")
     return f"{mant} × 10{str(int(exp)).translate(_SUPERSCRIPT)}"
+
+
+MINUS = "\u2212"     # the minus sign (GB 3102.11, ISO 80000-2), not the hyphen-minus "-"
+_HYPHEN_MINUS = re.compile(r"(?<![\w.])-(?=\.?\d)")
+
+
+def minus(text: str) -> str:
+    """A text holding numbers written by this module with the true minus sign (U+2212) for
+    the hyphen-minus before a digit (``-4.086`` → ``−4.086``), for a medium that prints the
+    characters as written: the drawing sheets (typst strings, DXF text; the sheet font,
+    Noto Sans SC, has the glyph). A hyphen after a letter or digit (``Y90S-6``,
+    ``2026-11-26``) stays. The report's Markdown keeps "-": typst and Word set its minus."""
+    return _HYPHEN_MINUS.sub(MINUS, text)
+
+
+def exact(x: float, digits: int = 6, decimals: int | None = None, group: bool = True) -> str:
+    """A value the design chose rather than computed, written as it is (the rule's "design
+    data as the design gives them"): a drawing's scale (``μL = 0.005 m/mm``, ``1:2.5``), a
+    chart's graduation (``-30``, ``0.25``), a cam programme's angle (``120``), a module:
+    at most ``digits`` significant digits, no trailing zeros, never E-notation (``1e-05`` →
+    ``0.00001``), a negative zero or a rounding residue below 10⁻⁹ as ``0``; ``decimals``:
+    at most that many (a programme angle to 0.01°, as :func:`f` would write it); an integer
+    part of five or more digits grouped (``15 000``) unless ``group=False``."""
+    if x != x or abs(x) == float("inf"):
+        return "—"
+    if decimals is not None:
+        x = round(x, decimals)
+    if abs(x) < 1e-9:
+        return "0"
+    text = sig(x, digits, group=False)
+    if "." in text:
+        text = text.rstrip("0").rstrip(".")
+    if float(text) == 0:
+        return "0"
+    return _group(text) if group else text
 
 
 def force_unit(peak: float) -> tuple[float, str]:

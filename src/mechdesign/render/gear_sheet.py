@@ -24,6 +24,7 @@ import numpy as np
 from ..core.gears import SpurPair
 from ..i18n import N_
 from ..stages.gear import GearDrawing
+from . import fmt
 from .labels import LabelTable, pgettext
 from .sheet import (SUB_ON, SUB_OFF, LabelPlacer, Polyline, Sheet, TitleInfo, clip_segment, frame,
                     length_scale, plain, sample_polyline, scale_text, sub, table, text_width,
@@ -248,15 +249,18 @@ def _plan(drawing: GearDrawing, size: str | None) -> _Plan:
 
 def _scale_label(k: float) -> str:
     if k >= 1 - 1e-12:
-        return f"{k:g}:1"
+        return f"{fmt.exact(k)}:1"
     return scale_text(1.0 / k)
 
 
-def _num(x: float, decimals: int = 2) -> str:
-    text = f"{x:.{decimals}f}"
-    if "." in text:
-        text = text.rstrip("0").rstrip(".")
-    return "0" if text in ("-0", "") else text.replace("-", "−")
+def _num(x: float, decimals: int) -> str:
+    """A table value to ``decimals`` (render/fmt.py's rule), the true minus sign."""
+    return fmt.minus(fmt.f(x, decimals))
+
+
+def _mm(x: float) -> str:
+    """A length of the table [mm] by the rule: 0.01 mm."""
+    return fmt.length(x)
 
 
 # -- the sheet ----------------------------------------------------------------------------
@@ -349,10 +353,10 @@ def gear_sheet(drawing: GearDrawing, info: TitleInfo, lang: str, size: str | Non
         labels.place_best(o2, sub("O", "2"), 5.0, 1 + 1j)
     else:                   # the line of centres leaves the area towards O2
         sheet.arrow(top - 14.0j, top, "CONSTRUCTION", 4.0, 0.35)
-        note = with_subscripts(lab["o2"], "O_2").format(a=_num(mm.a_work))
+        note = with_subscripts(lab["o2"], "O_2").format(a=fmt.length(mm.a_work))
         sheet.text(top + 2.5 - 5.0j, note, 3.5, "TEXT", "left", "top")
         labels.block_box((top.real, top.imag - 10.0, top.real + text_width(note, 3.5) + 4, top.imag))
-    labels.leader(p + r_ang * np.exp(1j * (a0 + a1) / 2), f"α′ = {_num(mm.alpha_work * DEG, 3)}°",
+    labels.leader(p + r_ang * np.exp(1j * (a0 + a1) / 2), f"α′ = {fmt.f(mm.alpha_work * DEG, 2)}°",
                   3.5, np.exp(1j * (a0 + a1) / 2), layer="DIMENSIONS")
     labels.leader(b2 + 0.35 * (p - b2), _points(lab["actual"]), 3.5, -1j * u + 0.7)
     labels.leader(n2 + 0.3 * (b1 - n2), _points(lab["action"]), 3.5, -1j * u - 0.5)
@@ -386,20 +390,20 @@ def _dimensions(sheet: Sheet, drawing: GearDrawing, plan: _Plan, o2_in: bool) ->
     n2x = o1.real + k * lay.n2.real
     x_dim = max(min(o1.real - k * g1.da / 2, n2x) - 14.0, box[0] + 8.0)
     if o2_in:
-        sheet.dimension(o1, o2, o1.real - x_dim, mm.a_work, f"a′ = {_num(mm.a_work)}")
+        sheet.dimension(o1, o2, o1.real - x_dim, mm.a_work, f"a′ = {fmt.length(mm.a_work)}")
     else:                   # the far end is off the sheet: one arrow, the line up to the border
         a, top = complex(x_dim, o1.imag), complex(x_dim, box[3])
         sheet.line(o1 - 1.5, a - 1.5, "DIMENSIONS")
         sheet.line(a, top, "DIMENSIONS")
         sheet.fill([a, a + 2.5j + 0.75, a + 2.5j - 0.75], "DIMENSIONS")
-        sheet.text(complex(x_dim - 1.0, o1.imag + 0.45 * (box[3] - o1.imag)), f"a′ = {_num(mm.a_work)}",
+        sheet.text(complex(x_dim - 1.0, o1.imag + 0.45 * (box[3] - o1.imag)), f"a′ = {fmt.length(mm.a_work)}",
                    3.5, "DIMENSIONS", "center", "bottom", np.pi / 2)
 
     def radial(centre, name, r, angles, length=None):
         """A radius dimension at the first angle [deg] whose ends lie in the area: from the
         centre, or (``length`` mm, centre off the area) from a point on the way to it. CAD
         writes a radius's text outside the circle: that end must have room for it too."""
-        text = f"{name} = {_num(r)}"
+        text = f"{name} = {fmt.length(r)}"
         outside = 1.05 * 3.5 * len(plain(text)) + 2.0           # as ezdxf renders it
         for ang in angles:
             d = np.exp(1j * np.radians(ang))
@@ -440,30 +444,29 @@ def _table(sheet: Sheet, mm: SpurPair, lay, lab: dict, interference: bool) -> No
     _, _, x1, y1 = sheet.inner
     g1, g2 = mm.g1, mm.g2
     tx0 = x1 - TABLE_W
-    deg = lambda a: _num(a * DEG, 4)  # noqa: E731
     tw = np.tan(mm.alpha_work)
     eps_f = (g1.z * (np.tan(g1.alpha_a) - tw) + g2.z * (np.tan(g2.alpha_a) - tw)) / (2 * np.pi)
     rows = [
-        (lab["m"], "m", _num(mm.m, 3), None, "mm"),
-        (lab["alpha"], "α", deg(mm.alpha), None, "°"),
-        (lab["ha"], sub("h", "a") + "*", _num(mm.ha_star, 3), None, "—"),
-        (lab["c"], "c*", _num(mm.c_star, 3), None, "—"),
+        (lab["m"], "m", _num(mm.m, 2), None, "mm"),
+        (lab["alpha"], "α", _num(mm.alpha * DEG, 1), None, "°"),
+        (lab["ha"], sub("h", "a") + "*", fmt.exact(mm.ha_star), None, "—"),
+        (lab["c"], "c*", fmt.exact(mm.c_star), None, "—"),
         (lab["z"], "z", str(g1.z), str(g2.z), "—"),
         (lab["x"], "x", _num(g1.x, 3), _num(g2.x, 3), "—"),
-        (lab["d"], "d", _num(g1.d, 3), _num(g2.d, 3), "mm"),
+        (lab["d"], "d", _mm(g1.d), _mm(g2.d), "mm"),
     ]
     if abs(lay.r1w - g1.d / 2) > 1e-9 * mm.m:
-        rows.append((lab["dw"], "d′", _num(2 * lay.r1w, 3), _num(2 * lay.r2w, 3), "mm"))
+        rows.append((lab["dw"], "d′", _mm(2 * lay.r1w), _mm(2 * lay.r2w), "mm"))
     rows += [
-        (lab["da"], sub("d", "a"), _num(g1.da, 3), _num(g2.da, 3), "mm"),
-        (lab["df"], sub("d", "f"), _num(g1.df, 3), _num(g2.df, 3), "mm"),
-        (lab["db"], sub("d", "b"), _num(g1.db, 3), _num(g2.db, 3), "mm"),
-        (lab["aw"], "a′", _num(mm.a_work, 3), None, "mm"),
-        (lab["alw"], "α′", deg(mm.alpha_work), None, "°"),
-        (lab["pb"], sub("p", "b"), _num(mm.pb, 3), None, "mm"),
-        (lab["b1b2"], sub("B", "1") + sub("B", "2"), _num(lay.action_length, 3), None, "mm"),
-        (lab["eps_g"], sub("B", "1") + sub("B", "2") + "/" + sub("p", "b"), _num(lay.contact_ratio, 4), None, "—"),
-        (lab["eps_f"], "ε", _num(eps_f, 4), None, "—"),
+        (lab["da"], sub("d", "a"), _mm(g1.da), _mm(g2.da), "mm"),
+        (lab["df"], sub("d", "f"), _mm(g1.df), _mm(g2.df), "mm"),
+        (lab["db"], sub("d", "b"), _mm(g1.db), _mm(g2.db), "mm"),
+        (lab["aw"], "a′", _mm(mm.a_work), None, "mm"),
+        (lab["alw"], "α′", _num(mm.alpha_work * DEG, 2), None, "°"),
+        (lab["pb"], sub("p", "b"), _mm(mm.pb), None, "mm"),
+        (lab["b1b2"], sub("B", "1") + sub("B", "2"), _mm(lay.action_length), None, "mm"),
+        (lab["eps_g"], sub("B", "1") + sub("B", "2") + "/" + sub("p", "b"), _num(lay.contact_ratio, 3), None, "—"),
+        (lab["eps_f"], "ε", _num(eps_f, 3), None, "—"),
     ]
 
     # v2 = None: one value for the pair, the two gear columns merged
@@ -472,11 +475,11 @@ def _table(sheet: Sheet, mm: SpurPair, lay, lab: dict, interference: bool) -> No
 
     notes = [lab["n_drive"], lab["n_teeth"],
              _points(with_subscripts(lab["n_eps"], "p_b", "z_1", "z_2", "α_a1", "α_a2")
-                     .format(g=_num(lay.contact_ratio, 4), f=_num(eps_f, 4)))]
+                     .format(g=fmt.f(lay.contact_ratio, 3), f=fmt.f(eps_f, 3)))]
     for i, g, xmin in ((1, g1, mm.x_min1), (2, g2, mm.x_min2)):
         if g.x < xmin - 1e-9:
-            notes.append(with_subscripts(lab["n_undercut"].format(i=i, z=g.z, x=_num(g.x, 3),
-                                                              xmin=_num(xmin, 3)), "x_min"))
+            notes.append(with_subscripts(lab["n_undercut"].format(i=i, z=g.z, x=fmt.minus(fmt.f(g.x, 3)),
+                                                              xmin=fmt.minus(fmt.f(xmin, 3))), "x_min"))
     if interference:
         notes.append(_points(lab["n_interf"]))
     ty1 = title_block_box(sheet)[3]

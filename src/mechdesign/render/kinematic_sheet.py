@@ -22,10 +22,11 @@ import numpy as np
 
 from ..i18n import tr
 from ..stages.drive import shaft_numeral
+from . import fmt
 from .labels import LabelTable, pgettext, sheet_names, sheet_point, translated
-from .sheet import (LabelPlacer, Sheet, TitleInfo, fit_height, format_number, frame, ground,
-                    hatched_line, heading, length_scale, pin, scale_text, slider_block, table,
-                    sub, text_width, title_block_box, turn_arrow, with_subscripts)
+from .sheet import (Arc, Circle, Fill, LabelPlacer, Line, Polyline, Sheet, Text, TitleInfo, fit_height, frame, ground,
+                    hatched_line, heading, pin, preferred_scale, scale_text, slider_block, table,
+                    sub, text_box, text_width, title_block_box, turn_arrow, with_subscripts)
 
 MM = 1e3
 SIZE = "A3"
@@ -62,33 +63,97 @@ LABELS = LabelTable({
 # ------------------------------------------------------------------ the common frame
 
 def _area(s: Sheet) -> tuple[float, float, float, float]:
-    """The drawing area: inside the border, above the title block's top, headed."""
+    """The area under the heading and above the title block (the heading is centred on it)."""
     x0, y0, x1, y1 = s.inner
     tb = title_block_box(s)
     return x0 + 10.0, tb[3] + 14.0, x1 - 10.0, y1 - 16.0
 
 
-def _fit(s: Sheet, pts_mm: np.ndarray, area, pad_paper: float = 18.0):
-    """(view, n) drawing the model points ``pts_mm`` [mm] at the GB scale that fits
-    ``area`` less ``pad_paper`` on every side, centred: the largest reduction 1:n, or for a
-    small model the largest enlargement m:1 (n = 1/m, see sheet.length_scale)."""
+# paper mm kept around a mechanism's points for its labels, ground symbols and ω arrow:
+# the first guess (a label and its gap), and for the two views of the crank-rocker brief
+LABEL_MIN = 5.0
+LABEL_ROOM = 10.0
+HEADING = 16.0          # the heading's strip under the border [mm]
+
+
+def regions(s: Sheet) -> dict[str, tuple[float, float, float, float]]:
+    """Where a mechanism may be drawn, labels included: the whole width above the title
+    block (the notes then stand left of the title block), or the whole height left of it
+    (the notes then stand above the title block)."""
+    x0, y0, x1, y1 = s.inner
+    tb = title_block_box(s)
+    return {"above": (x0 + 4.0, tb[3] + 4.0, x1 - 4.0, y1 - HEADING),
+            "left": (x0 + 4.0, y0 + 4.0, tb[0] - 4.0, y1 - HEADING)}
+
+
+def _fit(s: Sheet, pts_mm: np.ndarray, area, pad_paper: float = LABEL_ROOM):
+    """(view, n) drawing the model points ``pts_mm`` [mm] centred in ``area`` at the
+    largest GB/T 14690 preferred scale (sheet.preferred_scale) at which they keep
+    ``pad_paper`` mm from its sides."""
     pts = np.asarray(pts_mm, dtype=complex)
-    lo = complex(pts.real.min(), pts.imag.min())
-    hi = complex(pts.real.max(), pts.imag.max())
+    n = preferred_scale(_limit(pts, area, pad_paper))
+    return _view(s, pts, n, area), n
+
+
+def _limit(pts: np.ndarray, area, pad: float) -> float:
+    """The largest paper mm per model mm at which ``pts`` keep ``pad`` mm inside ``area``."""
+    ext = complex(max(np.ptp(pts.real), 1e-6), max(np.ptp(pts.imag), 1e-6))
     ax0, ay0, ax1, ay1 = area
-    box = complex(ax1 - ax0 - 2 * pad_paper, ay1 - ay0 - 2 * pad_paper)
-    ext = complex(max(hi.real - lo.real, 1e-6), max(hi.imag - lo.imag, 1e-6))
-    n = length_scale(ext, box, enlarge=True)
-    sc = 1.0 / n
-    centre = (lo + hi) / 2
-    return s.view(complex((ax0 + ax1) / 2, (ay0 + ay1) / 2) - sc * centre, sc), n
+    return min((ax1 - ax0 - 2 * pad) / ext.real, (ay1 - ay0 - 2 * pad) / ext.imag)
 
 
-def _start(info: TitleInfo, lab: dict, n: float | None) -> tuple[Sheet, TitleInfo]:
-    s = Sheet(SIZE)
-    info = replace(info, scale=scale_text(n) if n is not None else "—")
-    frame(s, info)
-    return s, info
+def _view(s: Sheet, pts: np.ndarray, n: float, area):
+    """The view drawing ``pts`` at 1:n centred in ``area``."""
+    ax0, ay0, ax1, ay1 = area
+    centre = complex(pts.real.min() + pts.real.max(), pts.imag.min() + pts.imag.max()) / 2
+    return s.view(complex((ax0 + ax1) / 2, (ay0 + ay1) / 2) - centre / n, 1.0 / n)
+
+
+def _tries(pts_mm, pad: float = LABEL_MIN, count: int = 8):
+    """The sheets to draw a mechanism on, largest scale first, as (sheet, view, n, where):
+    in each of the :func:`regions` the largest GB/T 14690 preferred scale at which the
+    model points ``pts_mm`` keep ``pad`` mm from its sides, then the smaller ones; at one
+    scale the region above the title block first. The caller draws on each until its
+    drawing, labels included, lies in the region (:func:`drawing_fits`); the last is kept."""
+    pts = np.asarray(pts_mm, dtype=complex)
+    areas = regions(Sheet(SIZE))
+    order = list(areas)
+    cands = set()
+    for where, area in areas.items():
+        n = preferred_scale(_limit(pts, area, pad))
+        for _ in range(count):
+            cands.add((n, order.index(where), where))
+            n = preferred_scale((1 - 1e-9) / n)
+    for n, _, where in sorted(cands)[:count]:
+        s = Sheet(SIZE)
+        yield s, _view(s, pts, n, areas[where]), n, where
+
+
+def _box(e) -> tuple[float, float, float, float] | None:
+    """The box an entity covers on the paper (a text's estimated from its width)."""
+    if isinstance(e, Text):
+        b = text_box(0j, e.text, e.height, e.halign, e.valign)
+        zs = [e.position + complex(x, y) * np.exp(1j * e.angle) for x in b[::2] for y in b[1::2]]
+    elif isinstance(e, Line):
+        zs = [e.p0, e.p1]
+    elif isinstance(e, (Polyline, Fill)):
+        zs = list(e.points)
+    elif isinstance(e, (Circle, Arc)):
+        zs = [e.center + e.radius * d for d in (1, 1j, -1, -1j)]
+    else:
+        return None
+    zs = np.asarray(zs, dtype=complex)
+    return zs.real.min(), zs.imag.min(), zs.real.max(), zs.imag.max()
+
+
+def drawing_fits(entities, area, tol: float = 0.5) -> bool:
+    """Every one of ``entities`` (a mechanism's lines, symbols and labels) lies in ``area``."""
+    for e in entities:
+        b = _box(e)
+        if b is not None and (b[0] < area[0] - tol or b[1] < area[1] - tol
+                              or b[2] > area[2] + tol or b[3] > area[3] + tol):
+            return False
+    return True
 
 
 def _title(s: Sheet, text: str, area) -> None:
@@ -96,17 +161,24 @@ def _title(s: Sheet, text: str, area) -> None:
     heading(s, complex((ax0 + ax1) / 2, ay1 + 4.0), text, fit_height(text, ax1 - ax0, 5.0))
 
 
-def _notes(s: Sheet, lines: list[str]) -> None:
-    """Notes left of the title block, top line first."""
+def _notes(s: Sheet, lines: list[str], where: str = "above") -> None:
+    """Notes, top line first: left of the title block, or above it when the drawing
+    takes the height left of it (``where`` = "left", see :func:`regions`)."""
     x0, y0, _, _ = s.inner
     tb = title_block_box(s)
+    if where == "left":
+        width = tb[2] - tb[0] - 4.0
+        for j, text in enumerate(lines):
+            s.text(complex(tb[0] + 2.0, tb[3] + 4.0 + 6.0 * (len(lines) - 1 - j)), text,
+                   fit_height(text, width, 3.5), "TEXT")
+        return
     width = tb[0] - x0 - 14.0
     for j, text in enumerate(lines):
         s.text(complex(x0 + 6.0, tb[3] - 6.0 - 6.0 * j), text, fit_height(text, width, 3.5), "TEXT")
 
 
 def _scale_note(lab: dict, n: float) -> str:
-    return with_subscripts(lab["scale"], "μ_L").format(mu=format_number(n / 1000.0), s=scale_text(n))
+    return with_subscripts(lab["scale"], "μ_L").format(mu=fmt.exact(n / 1000.0), s=scale_text(n))
 
 
 def _omega_arrow(s: Sheet, view, pivot_mm: complex, radius_mm: float, ccw: bool,
@@ -274,22 +346,23 @@ def _placer(s: Sheet) -> LabelPlacer:
 
 def linkage_diagram(found, info: TitleInfo, lang: str, label: str = "1") -> Sheet:
     """The kinematic diagram of a linkage (``found``: sheets.LinkageResults) at position
-    ``label`` (see :func:`diagram_position`)."""
+    ``label`` (see :func:`diagram_position`), at the largest preferred scale it fits."""
     lab = LABELS[lang]
     ld = _LinkageDrawing(found, label)
-    s = Sheet(SIZE)
-    area = _area(s)
-    view, n = _fit(s, np.array(ld.pts), area)
-    info = replace(info, scale=scale_text(n))
-    frame(s, info)
-    placer = _placer(s)
-    _title(s, f"{lab['diagram']}  {lab['position'].format(p=ld.label)}  {scale_text(n)}", area)
-    numbered = ld.draw(s, view, placer, lab)
+    for s, view, n, where in _tries(np.array(ld.pts)):
+        area = _area(s)
+        frame(s, replace(info, scale=scale_text(n)))
+        placer = _placer(s)
+        _title(s, f"{lab['diagram']}  {lab['position'].format(p=ld.label)}  {scale_text(n)}", area)
+        first = len(s.entities)
+        numbered = ld.draw(s, view, placer, lab)
+        if drawing_fits(s.entities[first:], regions(s)[where]):
+            break
     legend = ld.legend(numbered, lang)
     notes = [_scale_note(lab, n) + lab["drawn_at"].format(p=ld.label)]
     if legend:
         notes.append(lab["links"] + legend)
-    _notes(s, notes)
+    _notes(s, notes, where)
     return s
 
 
@@ -402,102 +475,104 @@ def lockbeam_diagram(results, found, info: TitleInfo, lang: str) -> Sheet:
     shaft) is link 2."""
     lab = LABELS[lang]
     L = lockbeam_layout(results, found)
-    s = Sheet(SIZE)
-    area = _area(s)
-    view, n = _fit(s, np.array(L["pts"]), area, pad_paper=14.0)
-    frame(s, replace(info, scale=scale_text(n)))
-    placer = _placer(s)
-    _title(s, f"{lab['diagram']}  φ = 0°  {scale_text(n)}", area)
-    feed = L["feed"]
-    feed.draw(s, view, placer, lab)
-    # the positioning cam: profile, centre, translating roller follower in its guide
-    pd = L["pin"]
-    o = pd["O"]
-    view.polyline(np.append(pd["profile"], pd["profile"][:1]), "OUTLINE")
-    ground(view, o, 7.0)
-    pin(view, o)
-    placer.block(view.p(o), 6.0)
-    for z in pd["profile"][:: max(len(pd["profile"]) // 120, 1)]:
-        placer.block(view.p(complex(z)), 0.6)
-    view.circle(pd["B"], pd["rr"], "OUTLINE")
-    pin(view, pd["B"])
-    view.line(pd["B"] + 1j * pd["rr"], pd["stem_top"], "OUTLINE")
-    placer.block(view.p(pd["B"]), pd["rr"] * view.scale + 0.5)
-    placer.block_segment(view.p(pd["B"]), view.p(pd["stem_top"]), 1.5)
-    yc = o.imag + pd["guide_y"]
-    for side in (-1, 1):
-        xw = pd["stem_top"].real + side * 2.5 / view.scale
-        hatched_line(view, complex(xw, yc - 7.0), complex(xw, yc + 7.0), side=(-1j if side < 0 else 1j))
-        placer.block_box((view.p(complex(xw, yc)).real - 4, view.p(complex(xw, yc - 7.0)).imag,
-                          view.p(complex(xw, yc)).real + 4, view.p(complex(xw, yc + 7.0)).imag))
-    _omega_arrow(s, view, o, float(np.max(np.abs(pd["profile"] - o))), L["sigma_pin"] > 0, placer, lab)
-    placer.place(view.p(o), sheet_point("O2"), 3.5, prefer=-1 - 1j, gap=3.0)
-    # the roller centre of the positioning pin: F (B is the bending four-bar's pin)
-    placer.place(view.p(pd["B"]), "F", 3.5, prefer=-1 + 0.3j, gap=3.0)
-    placer.place(view.p((pd["B"] + pd["stem_top"]) / 2), "7", 3.5, prefer=1, gap=3.0)
-    k = pd["profile"][len(pd["profile"]) // 2]
-    placer.place(view.p(k), "2", 3.5, prefer=k - o, gap=2.5)
-    # the bending cam, the lever (follower arm + input rocker), the four-bar, the chain
-    bd = L["bend"]
-    o = bd["O"]
-    f = bd["four"]
-    view.polyline(np.append(bd["profile"], bd["profile"][:1]), "OUTLINE")
-    ground(view, o, 7.0)
-    pin(view, o)
-    placer.block(view.p(o), 6.0)
-    for z in bd["profile"][:: max(len(bd["profile"]) // 120, 1)]:
-        placer.block(view.p(complex(z)), 0.6)
-    _omega_arrow(s, view, o, float(np.max(np.abs(bd["profile"] - o))), bd["sigma"] > 0, placer, lab)
-    view.circle(bd["C"], bd["rr"], "OUTLINE")
-    lever = [f["G0"], bd["C"], f["G"], f["G0"]]
-    view.polyline(np.array(lever), "OUTLINE")
-    for a, b in zip(lever[:-1], lever[1:]):
-        placer.block_segment(view.p(a), view.p(b), 1.5)
-    for a, b in ((f["G"], f["B"]), (f["B0"], f["B"])):
-        view.line(a, b, "OUTLINE")
-        placer.block_segment(view.p(a), view.p(b), 1.5)
-    for z in (f["G0"], f["B0"]):
-        ground(view, z, 7.0)
-        placer.block(view.p(z) - 3.5j, 5.0)
-    for z in (bd["C"], f["G"], f["B"]):
-        pin(view, z)
-        placer.block(view.p(z), 1.5)
-    # chain: the large wheel on B0 (one link with the arm B0B), the bending wheel and its arm
-    view.circle(f["B0"], bd["r_big"], "OUTLINE")
-    view.circle(bd["small"], bd["r_small"], "OUTLINE")
-    for a, b in _tangent_runs(f["B0"], bd["r_big"], bd["small"], bd["r_small"]):
-        view.line(a, b, "HIDDEN")
-        placer.block_segment(view.p(a), view.p(b), 1.5)
-    for c0, r in ((f["B0"], bd["r_big"]), (bd["small"], bd["r_small"])):
-        for t in np.linspace(0, 2 * np.pi, 48)[:-1]:
-            placer.block(view.p(c0 + r * np.exp(1j * t)), 0.8)
-    ground(view, bd["small"], 7.0)
-    view.line(bd["small"], bd["arm"], "OUTLINE")
-    pin(view, bd["arm"])
-    placer.block(view.p(bd["small"]) - 3.5j, 5.0)
-    placer.block_segment(view.p(bd["small"]), view.p(bd["arm"]), 1.5)
-    # the four-bar as the report names it: G0 G B B0 (A is the feed crank's pin)
-    for name, z, d in (("O2", o, -1 - 1j), ("C", bd["C"], -1j), ("G0", f["G0"], -1 + 1j), ("G", f["G"], 1),
-                       ("B", f["B"], 1j), ("B0", f["B0"], 1 - 1j), ("E0", bd["small"], 1 - 1j)):
-        placer.place(view.p(z), sheet_point(name), 3.5, prefer=d, gap=2.5)
-    k = bd["profile"][len(bd["profile"]) // 2]
-    placer.place(view.p(k), "2", 3.5, prefer=k - o, gap=2.5)
-    for num, a, b in (("8", f["G0"], f["G"]), ("9", f["G"], f["B"])):
-        d = (b - a) / abs(b - a)
-        placer.place(view.p((a + b) / 2), num, 3.5, prefer=1j * d, gap=2.0)
-    placer.place(view.p(f["B0"] + bd["r_big"] * np.exp(-0.25j * np.pi)), "10", 3.5, prefer=1 - 1j, gap=2.0)
-    runs = _tangent_runs(f["B0"], bd["r_big"], bd["small"], bd["r_small"])
-    placer.place(view.p((runs[0][0] + runs[0][1]) / 2), "11", 3.5, prefer=1, gap=2.0)
-    placer.place(view.p((bd["small"] + bd["arm"]) / 2), "12", 3.5, prefer=-1, gap=2.0)
-    _ = tr(lang)
-    legend = (_.pgettext("kinematic sheet", "2 main shaft (feed crank and both cams on one shaft)  3 block  "
-                         "4 guide bar  5 rod  6 feed slider  7 positioning pin"),
-              _.pgettext("kinematic sheet", "8 rocker (cam follower and input rocker)  9 coupler  "
-                         "10 large chain wheel  11 chain  12 bending wheel (bending arm)"))
-    note = _.pgettext("kinematic sheet", "each group to μL; not given, so schematic: the groups' placing, "
-                      "the angle of the rocker's arms, the four-bar's frame line, the chain's centre distance")
+    for s, view, n, where in _tries(np.array(L["pts"])):
+        area = _area(s)
+        frame(s, replace(info, scale=scale_text(n)))
+        placer = _placer(s)
+        _title(s, f"{lab['diagram']}  φ = 0°  {scale_text(n)}", area)
+        first = len(s.entities)
+        feed = L["feed"]
+        feed.draw(s, view, placer, lab)
+        # the positioning cam: profile, centre, translating roller follower in its guide
+        pd = L["pin"]
+        o = pd["O"]
+        view.polyline(np.append(pd["profile"], pd["profile"][:1]), "OUTLINE")
+        ground(view, o, 7.0)
+        pin(view, o)
+        placer.block(view.p(o), 6.0)
+        for z in pd["profile"][:: max(len(pd["profile"]) // 120, 1)]:
+            placer.block(view.p(complex(z)), 0.6)
+        view.circle(pd["B"], pd["rr"], "OUTLINE")
+        pin(view, pd["B"])
+        view.line(pd["B"] + 1j * pd["rr"], pd["stem_top"], "OUTLINE")
+        placer.block(view.p(pd["B"]), pd["rr"] * view.scale + 0.5)
+        placer.block_segment(view.p(pd["B"]), view.p(pd["stem_top"]), 1.5)
+        yc = o.imag + pd["guide_y"]
+        for side in (-1, 1):
+            xw = pd["stem_top"].real + side * 2.5 / view.scale
+            hatched_line(view, complex(xw, yc - 7.0), complex(xw, yc + 7.0), side=(-1j if side < 0 else 1j))
+            placer.block_box((view.p(complex(xw, yc)).real - 4, view.p(complex(xw, yc - 7.0)).imag,
+                              view.p(complex(xw, yc)).real + 4, view.p(complex(xw, yc + 7.0)).imag))
+        _omega_arrow(s, view, o, float(np.max(np.abs(pd["profile"] - o))), L["sigma_pin"] > 0, placer, lab)
+        placer.place(view.p(o), sheet_point("O2"), 3.5, prefer=-1 - 1j, gap=3.0)
+        # the roller centre of the positioning pin: F (B is the bending four-bar's pin)
+        placer.place(view.p(pd["B"]), "F", 3.5, prefer=-1 + 0.3j, gap=3.0)
+        placer.place(view.p((pd["B"] + pd["stem_top"]) / 2), "7", 3.5, prefer=1, gap=3.0)
+        k = pd["profile"][len(pd["profile"]) // 2]
+        placer.place(view.p(k), "2", 3.5, prefer=k - o, gap=2.5)
+        # the bending cam, the lever (follower arm + input rocker), the four-bar, the chain
+        bd = L["bend"]
+        o = bd["O"]
+        f = bd["four"]
+        view.polyline(np.append(bd["profile"], bd["profile"][:1]), "OUTLINE")
+        ground(view, o, 7.0)
+        pin(view, o)
+        placer.block(view.p(o), 6.0)
+        for z in bd["profile"][:: max(len(bd["profile"]) // 120, 1)]:
+            placer.block(view.p(complex(z)), 0.6)
+        _omega_arrow(s, view, o, float(np.max(np.abs(bd["profile"] - o))), bd["sigma"] > 0, placer, lab)
+        view.circle(bd["C"], bd["rr"], "OUTLINE")
+        lever = [f["G0"], bd["C"], f["G"], f["G0"]]
+        view.polyline(np.array(lever), "OUTLINE")
+        for a, b in zip(lever[:-1], lever[1:]):
+            placer.block_segment(view.p(a), view.p(b), 1.5)
+        for a, b in ((f["G"], f["B"]), (f["B0"], f["B"])):
+            view.line(a, b, "OUTLINE")
+            placer.block_segment(view.p(a), view.p(b), 1.5)
+        for z in (f["G0"], f["B0"]):
+            ground(view, z, 7.0)
+            placer.block(view.p(z) - 3.5j, 5.0)
+        for z in (bd["C"], f["G"], f["B"]):
+            pin(view, z)
+            placer.block(view.p(z), 1.5)
+        # chain: the large wheel on B0 (one link with the arm B0B), the bending wheel and its arm
+        view.circle(f["B0"], bd["r_big"], "OUTLINE")
+        view.circle(bd["small"], bd["r_small"], "OUTLINE")
+        for a, b in _tangent_runs(f["B0"], bd["r_big"], bd["small"], bd["r_small"]):
+            view.line(a, b, "HIDDEN")
+            placer.block_segment(view.p(a), view.p(b), 1.5)
+        for c0, r in ((f["B0"], bd["r_big"]), (bd["small"], bd["r_small"])):
+            for t in np.linspace(0, 2 * np.pi, 48)[:-1]:
+                placer.block(view.p(c0 + r * np.exp(1j * t)), 0.8)
+        ground(view, bd["small"], 7.0)
+        view.line(bd["small"], bd["arm"], "OUTLINE")
+        pin(view, bd["arm"])
+        placer.block(view.p(bd["small"]) - 3.5j, 5.0)
+        placer.block_segment(view.p(bd["small"]), view.p(bd["arm"]), 1.5)
+        # the four-bar as the report names it: G0 G B B0 (A is the feed crank's pin)
+        for name, z, d in (("O2", o, -1 - 1j), ("C", bd["C"], -1j), ("G0", f["G0"], -1 + 1j), ("G", f["G"], 1),
+                           ("B", f["B"], 1j), ("B0", f["B0"], 1 - 1j), ("E0", bd["small"], 1 - 1j)):
+            placer.place(view.p(z), sheet_point(name), 3.5, prefer=d, gap=2.5)
+        k = bd["profile"][len(bd["profile"]) // 2]
+        placer.place(view.p(k), "2", 3.5, prefer=k - o, gap=2.5)
+        for num, a, b in (("8", f["G0"], f["G"]), ("9", f["G"], f["B"])):
+            d = (b - a) / abs(b - a)
+            placer.place(view.p((a + b) / 2), num, 3.5, prefer=1j * d, gap=2.0)
+        placer.place(view.p(f["B0"] + bd["r_big"] * np.exp(-0.25j * np.pi)), "10", 3.5, prefer=1 - 1j, gap=2.0)
+        runs = _tangent_runs(f["B0"], bd["r_big"], bd["small"], bd["r_small"])
+        placer.place(view.p((runs[0][0] + runs[0][1]) / 2), "11", 3.5, prefer=1, gap=2.0)
+        placer.place(view.p((bd["small"] + bd["arm"]) / 2), "12", 3.5, prefer=-1, gap=2.0)
+        _ = tr(lang)
+        legend = (_.pgettext("kinematic sheet", "2 main shaft (feed crank and both cams on one shaft)  3 block  "
+                             "4 guide bar  5 rod  6 feed slider  7 positioning pin"),
+                  _.pgettext("kinematic sheet", "8 rocker (cam follower and input rocker)  9 coupler  "
+                             "10 large chain wheel  11 chain  12 bending wheel (bending arm)"))
+        note = _.pgettext("kinematic sheet", "each group to μL; not given, so schematic: the groups' placing, "
+                          "the angle of the rocker's arms, the four-bar's frame line, the chain's centre distance")
+        if drawing_fits(s.entities[first:], regions(s)[where]):
+            break
     _notes(s, [_scale_note(lab, n) + _.pgettext("kinematic sheet", "; φ = 0°: feed linkage at position 1"),
-               with_subscripts(note, "μ_L"), lab["links"] + legend[0], legend[1]])
+               with_subscripts(note, "μ_L"), lab["links"] + legend[0], legend[1]], where)
     return s
 
 
@@ -539,7 +614,7 @@ def crank_rocker_diagram(opt, slider, info: TitleInfo, lang: str) -> Sheet:
         # two views side by side, each at its own GB scale (the ~70 mm four-bar enlarged,
         # the longer slider-crank as it fits): the split of the width that gives the
         # largest product of the two scales
-        ax0, ay0, ax1, ay1 = area
+        ax0, ay0, ax1, ay1 = regions(s)["above"]
         best = None
         for k in range(30, 71):
             xm = ax0 + (ax1 - ax0) * k / 100.0
@@ -549,7 +624,7 @@ def crank_rocker_diagram(opt, slider, info: TitleInfo, lang: str) -> Sheet:
                 best = (1.0 / (n4 * ns), (v4, n4), (vs, ns))
         views = [best[1], best[2]]
     else:
-        views = [_fit(s, np.array(pts4), area)]
+        views = [_fit(s, np.array(pts4), regions(s)["above"], pad_paper=14.0)]
     scales = list(dict.fromkeys(scale_text(n) for _, n in views))
     frame(s, replace(info, scale=", ".join(scales)))
     placer = LabelPlacer(s)
@@ -607,11 +682,11 @@ def crank_rocker_diagram(opt, slider, info: TitleInfo, lang: str) -> Sheet:
         mechanism(sc_pts, True, f"{lab['slider_crank']}  {scale_text(views[1][1])}", slider.crank * MM)
         scale_notes += ";  ABC: " + _scale_note(lab, views[1][1])
     notes = [scale_notes,
-             f"ABCD: a = {format_number(fb.crank * MM)}  b = {format_number(fb.coupler * MM)}  "
-             f"c = {format_number(fb.rocker * MM)}  d = {format_number(fb.frame * MM)} mm"]
+             f"ABCD: a = {fmt.length(fb.crank * MM)}  b = {fmt.length(fb.coupler * MM)}  "
+             f"c = {fmt.length(fb.rocker * MM)}  d = {fmt.length(fb.frame * MM)} mm"]
     if slider is not None:
-        notes.append(f"ABC: a = {format_number(slider.crank * MM)}  b = {format_number(slider.rod * MM)}  "
-                     f"e = {format_number(slider.offset * MM)}  H = {format_number(slider.stroke * MM)} mm")
+        notes.append(f"ABC: a = {fmt.length(slider.crank * MM)}  b = {fmt.length(slider.rod * MM)}  "
+                     f"e = {fmt.minus(fmt.length(slider.offset * MM))}  H = {fmt.length(slider.stroke * MM)} mm")
     _notes(s, notes)
     return s
 
@@ -632,64 +707,66 @@ def cam_diagram(c, info: TitleInfo, lang: str) -> Sheet:
     else:
         top = g.outer + 35.0
         pts += [B0, complex(g.e, top)]
-    s = Sheet(SIZE)
-    area = _area(s)
-    view, n = _fit(s, np.array(pts), area, pad_paper=22.0)
-    frame(s, replace(info, scale=scale_text(n)))
-    placer = LabelPlacer(s)
-    _title(s, f"{lab['diagram']}  {scale_text(n)}", area)
-    view.polyline(np.append(g.actual, g.actual[:1]), "OUTLINE")
-    view.circle(0j, g.r0, "CENTER")
-    ground(view, 0j, 7.0)
-    pin(view, 0j)
-    placer.block(view.p(0j), 6.0)
-    for z in g.actual[:: max(len(g.actual) // 120, 1)]:
-        placer.block(view.p(complex(z)), 0.6)
-    if g.osc:
-        ground(view, A, 7.0)
-        pin(view, A)
-        u = (B0 - A) / abs(B0 - A)
-        view.line(A + u * 1.2 / view.scale, B0, "OUTLINE")
-        placer.block_segment(view.p(A), view.p(B0), 1.5)
-        placer.place(view.p(A), "A", 3.5, prefer=1 + 1j, gap=3.0)
-        stem_top = B0
-    else:
-        stem_top = complex(g.e, g.outer + 35.0)
-        view.line(B0, stem_top, "OUTLINE")
-        placer.block_segment(view.p(B0), view.p(stem_top), 1.5)
-        yc = g.outer + 22.0
-        half = 7.0
-        for side in (-1, 1):
-            xw = g.e + side * 2.5 / view.scale
-            hatched_line(view, complex(xw, yc - half), complex(xw, yc + half),
-                         side=(-1j if side < 0 else 1j))
-            placer.block_box((view.p(complex(xw, yc)).real - 4, view.p(complex(xw, yc - half)).imag,
-                              view.p(complex(xw, yc)).real + 4, view.p(complex(xw, yc + half)).imag))
-        placer.place(view.p(complex(g.e, yc)), lab["guide"], 3.0, prefer=1, gap=6.0)
-    if g.kind == "roller":
-        view.circle(B0, g.rr, "OUTLINE")
-        pin(view, B0)
-    placer.block(view.p(B0), max(g.rr * view.scale, 1.5))
-    placer.place(view.p(B0), "B", 3.5, prefer=(-1 + 0.3j) if not g.osc else -1j, gap=3.0)
-    placer.place(view.p(0j), "O", 3.5, prefer=-1 - 1j, gap=3.0)
-    _omega_arrow(s, view, 0j, float(np.max(np.abs(g.actual))), g.sigma > 0, placer, lab)
-    # link numbers: cam 1, follower 2
-    placer.place(view.p(complex(g.actual[len(g.actual) // 2])), "1", 3.5,
-                 prefer=complex(g.actual[len(g.actual) // 2]), gap=2.5)
-    mid_f = (B0 + stem_top) / 2 if not g.osc else (A + B0) / 2
-    placer.place(view.p(mid_f), "2", 3.5, prefer=1, gap=3.0)
-    _ = tr(lang)
-    kinds = {"roller": pgettext("kinematic sheet", "roller"),
-             "knife": pgettext("kinematic sheet", "knife-edge"),
-             "flat": pgettext("kinematic sheet", "flat-face")}
-    kind = translated(kinds[g.kind], _) if g.kind in kinds else g.kind
-    motion = (_.pgettext("kinematic sheet", "oscillating") if g.osc
-              else _.pgettext("kinematic sheet", "translating"))
-    legend = _.pgettext("kinematic sheet", "1 cam  2 {motion} {kind} follower", motion=motion, kind=kind)
+    for s, view, n, where in _tries(np.array(pts)):
+        area = _area(s)
+        frame(s, replace(info, scale=scale_text(n)))
+        placer = LabelPlacer(s)
+        _title(s, f"{lab['diagram']}  {scale_text(n)}", area)
+        first = len(s.entities)
+        view.polyline(np.append(g.actual, g.actual[:1]), "OUTLINE")
+        view.circle(0j, g.r0, "CENTER")
+        ground(view, 0j, 7.0)
+        pin(view, 0j)
+        placer.block(view.p(0j), 6.0)
+        for z in g.actual[:: max(len(g.actual) // 120, 1)]:
+            placer.block(view.p(complex(z)), 0.6)
+        if g.osc:
+            ground(view, A, 7.0)
+            pin(view, A)
+            u = (B0 - A) / abs(B0 - A)
+            view.line(A + u * 1.2 / view.scale, B0, "OUTLINE")
+            placer.block_segment(view.p(A), view.p(B0), 1.5)
+            placer.place(view.p(A), "A", 3.5, prefer=1 + 1j, gap=3.0)
+            stem_top = B0
+        else:
+            stem_top = complex(g.e, g.outer + 35.0)
+            view.line(B0, stem_top, "OUTLINE")
+            placer.block_segment(view.p(B0), view.p(stem_top), 1.5)
+            yc = g.outer + 22.0
+            half = 7.0
+            for side in (-1, 1):
+                xw = g.e + side * 2.5 / view.scale
+                hatched_line(view, complex(xw, yc - half), complex(xw, yc + half),
+                             side=(-1j if side < 0 else 1j))
+                placer.block_box((view.p(complex(xw, yc)).real - 4, view.p(complex(xw, yc - half)).imag,
+                                  view.p(complex(xw, yc)).real + 4, view.p(complex(xw, yc + half)).imag))
+            placer.place(view.p(complex(g.e, yc)), lab["guide"], 3.0, prefer=1, gap=6.0)
+        if g.kind == "roller":
+            view.circle(B0, g.rr, "OUTLINE")
+            pin(view, B0)
+        placer.block(view.p(B0), max(g.rr * view.scale, 1.5))
+        placer.place(view.p(B0), "B", 3.5, prefer=(-1 + 0.3j) if not g.osc else -1j, gap=3.0)
+        placer.place(view.p(0j), "O", 3.5, prefer=-1 - 1j, gap=3.0)
+        _omega_arrow(s, view, 0j, float(np.max(np.abs(g.actual))), g.sigma > 0, placer, lab)
+        # link numbers: cam 1, follower 2
+        placer.place(view.p(complex(g.actual[len(g.actual) // 2])), "1", 3.5,
+                     prefer=complex(g.actual[len(g.actual) // 2]), gap=2.5)
+        mid_f = (B0 + stem_top) / 2 if not g.osc else (A + B0) / 2
+        placer.place(view.p(mid_f), "2", 3.5, prefer=1, gap=3.0)
+        _ = tr(lang)
+        kinds = {"roller": pgettext("kinematic sheet", "roller"),
+                 "knife": pgettext("kinematic sheet", "knife-edge"),
+                 "flat": pgettext("kinematic sheet", "flat-face")}
+        kind = translated(kinds[g.kind], _) if g.kind in kinds else g.kind
+        motion = (_.pgettext("kinematic sheet", "oscillating") if g.osc
+                  else _.pgettext("kinematic sheet", "translating"))
+        legend = _.pgettext("kinematic sheet", "1 cam  2 {motion} {kind} follower", motion=motion, kind=kind)
+        if drawing_fits(s.entities[first:], regions(s)[where]):
+            break
     _notes(s, [_scale_note(lab, n), lab["links"] + legend,
-               f"{sub('r', '0')} = {format_number(g.r0)} mm"
-               + (f"  {sub('r', 'r')} = {format_number(g.rr)} mm" if g.rr else "")
-               + (f"  e = {format_number(g.e)} mm" if g.e else "")])
+               f"{sub('r', '0')} = {fmt.length(g.r0)} mm"
+               + (f"  {sub('r', 'r')} = {fmt.length(g.rr)} mm" if g.rr else "")
+               + (f"  e = {fmt.minus(fmt.length(g.e))} mm" if g.e else "")], where)
     return s
 
 
@@ -713,47 +790,49 @@ def disc_diagram(disc, info: TitleInfo, lang: str) -> Sheet:
         sh = j * width
         pts += [sh + centre + R * np.exp(1j * t) for t in np.linspace(0, 2 * np.pi, 37)]
         pts += [sh + complex(x, top), sh - 10.0j]
-    s = Sheet(SIZE)
-    area = _area(s)
-    view, n = _fit(s, np.array(pts), area, pad_paper=22.0)
-    frame(s, replace(info, scale=scale_text(n)))
-    placer = LabelPlacer(s)
-    _title(s, f"{lab['diagram']}  {scale_text(n)}", area)
-    ccw = getattr(p, "rotation", 1) > 0
-    for j, (label, fol, centre, x, y, top) in enumerate(cases):
-        sh = j * width
-        c = sh + centre
-        view.circle(c, R, "OUTLINE")
-        view.line(sh, c, "OUTLINE")
-        ground(view, sh + 0j, 7.0)
-        pin(view, sh + 0j)
-        pin(view, c)
-        placer.block(view.p(sh + 0j), 6.0)
-        for t in np.linspace(0, 2 * np.pi, 60)[:-1]:
-            placer.block(view.p(c + R * np.exp(1j * t)), 0.6)
-        placer.block_segment(view.p(sh + 0j), view.p(c), 1.5)
-        base = sh + complex(x, y)
-        rr = fol.roller_radius * MM
-        if fol.kind == "roller":
-            view.circle(base, rr, "OUTLINE")
-            pin(view, base)
-        elif fol.kind == "flat":
-            view.line(base - 0.5 * R, base + 0.5 * R, "OUTLINE")
-        else:
-            view.polyline([base + complex(-1.8, 5.0) / view.scale, base, base + complex(1.8, 5.0) / view.scale], "OUTLINE")
-        view.line(base + 1j * (rr if fol.kind == "roller" else 0.0), sh + complex(x, top), "OUTLINE")
-        placer.block_segment(view.p(base), view.p(sh + complex(x, top)), 1.5)
-        yc = top - 8.0
-        for side in (-1, 1):
-            xw = sh + x + side * 2.5 / view.scale
-            hatched_line(view, complex(xw, yc - 6.0), complex(xw, yc + 6.0), side=(-1j if side < 0 else 1j))
-            placer.block_box((view.p(complex(xw, yc)).real - 4.0, view.p(complex(xw, yc - 6)).imag,
-                              view.p(complex(xw, yc)).real + 4.0, view.p(complex(xw, yc + 6)).imag))
-        placer.place(view.p(sh + 0j), "O", 3.5, prefer=-1 - 0.2j, gap=4.0)
-        placer.place(view.p(c), "C", 3.5, prefer=-1 + 0.3j, gap=2.0)
-        placer.place(view.p(sh + complex(x, top)), str(label), 3.5, prefer=1j, gap=2.0)
-        _omega_arrow(s, view, c, R, ccw, placer, lab)
-    _notes(s, [_scale_note(lab, n), f"R = {format_number(R)} mm  OC = {format_number(p.eccentricity * MM)} mm"])
+    for s, view, n, where in _tries(np.array(pts)):
+        area = _area(s)
+        frame(s, replace(info, scale=scale_text(n)))
+        placer = LabelPlacer(s)
+        _title(s, f"{lab['diagram']}  {scale_text(n)}", area)
+        first = len(s.entities)
+        ccw = getattr(p, "rotation", 1) > 0
+        for j, (label, fol, centre, x, y, top) in enumerate(cases):
+            sh = j * width
+            c = sh + centre
+            view.circle(c, R, "OUTLINE")
+            view.line(sh, c, "OUTLINE")
+            ground(view, sh + 0j, 7.0)
+            pin(view, sh + 0j)
+            pin(view, c)
+            placer.block(view.p(sh + 0j), 6.0)
+            for t in np.linspace(0, 2 * np.pi, 60)[:-1]:
+                placer.block(view.p(c + R * np.exp(1j * t)), 0.6)
+            placer.block_segment(view.p(sh + 0j), view.p(c), 1.5)
+            base = sh + complex(x, y)
+            rr = fol.roller_radius * MM
+            if fol.kind == "roller":
+                view.circle(base, rr, "OUTLINE")
+                pin(view, base)
+            elif fol.kind == "flat":
+                view.line(base - 0.5 * R, base + 0.5 * R, "OUTLINE")
+            else:
+                view.polyline([base + complex(-1.8, 5.0) / view.scale, base, base + complex(1.8, 5.0) / view.scale], "OUTLINE")
+            view.line(base + 1j * (rr if fol.kind == "roller" else 0.0), sh + complex(x, top), "OUTLINE")
+            placer.block_segment(view.p(base), view.p(sh + complex(x, top)), 1.5)
+            yc = top - 8.0
+            for side in (-1, 1):
+                xw = sh + x + side * 2.5 / view.scale
+                hatched_line(view, complex(xw, yc - 6.0), complex(xw, yc + 6.0), side=(-1j if side < 0 else 1j))
+                placer.block_box((view.p(complex(xw, yc)).real - 4.0, view.p(complex(xw, yc - 6)).imag,
+                                  view.p(complex(xw, yc)).real + 4.0, view.p(complex(xw, yc + 6)).imag))
+            placer.place(view.p(sh + 0j), "O", 3.5, prefer=-1 - 0.2j, gap=4.0)
+            placer.place(view.p(c), "C", 3.5, prefer=-1 + 0.3j, gap=2.0)
+            placer.place(view.p(sh + complex(x, top)), str(label), 3.5, prefer=1j, gap=2.0)
+            _omega_arrow(s, view, c, R, ccw, placer, lab)
+        if drawing_fits(s.entities[first:], regions(s)[where]):
+            break
+    _notes(s, [_scale_note(lab, n), f"R = {fmt.length(R)} mm  OC = {fmt.length(p.eccentricity * MM)} mm"], where)
     return s
 
 
@@ -927,18 +1006,18 @@ def drive_schematic(drive, info: TitleInfo, lang: str) -> Sheet:
                           gaps=(1.5, 3.0, 5.0))
     # tables right of the drawing
     tx = ax1 - table_w
-    rows = [[shaft_numeral(sh.index), format_number(sh.speed_rpm, 4),
-             format_number(sh.power / 1e3, 3), format_number(sh.torque, 4)] for sh in drive.shafts]
+    rows = [[shaft_numeral(sh.index), fmt.rpm(sh.speed_rpm), fmt.sig(sh.power / 1e3),
+             fmt.sig(sh.torque)] for sh in drive.shafts]
     ybot = table(s, tx, ay1 - 6.0, [25, 50, 50, 50], rows, head=[lab["shaft"], lab["n"], lab["P"], lab["T"]],
                  title=lab["shafts"], title_height=3.5, height=3.0, row_h=6.0)
     srows = []
     for j, st in enumerate(stages):
-        data = (f"{sub('d', '1')}={format_number(st.d1 * MM)}, {sub('d', '2')}={format_number(st.d2 * MM)} mm"
+        data = (f"{sub('d', '1')}={fmt.f(st.d1 * MM, 0)}, {sub('d', '2')}={fmt.f(st.d2 * MM, 0)} mm"
                 if st.d1 else (f"{sub('z', '1')}={st.z1}, {sub('z', '2')}={st.z2}" if st.z1 else "—"))
-        srows.append([str(j + 1), st.name(lang), format_number(st.ratio, 4), data])
+        srows.append([str(j + 1), st.name(lang), fmt.sig(st.ratio), data])
     table(s, tx, ybot - 8.0, [12, 58, 25, 80], srows, head=[tr(lang).pgettext("kinematic sheet", "No."), lab["stage"],
                                                              lab["ratio"], lab["data"]],
           title=lab["stages"], title_height=3.5, height=3.0, row_h=6.0)
     _notes(s, [lab["not_scale"], lab["motor"].format(m=drive.motor.designation)
-               + f"  P = {format_number(drive.motor.power / 1e3, 3)} kW  n = {format_number(drive.motor.full_load_rpm, 4)} r/min"])
+               + f"  P = {fmt.f(drive.motor.power / 1e3, 2)} kW  n = {fmt.f(drive.motor.full_load_rpm, 0)} r/min"])
     return s

@@ -19,6 +19,7 @@ from typing import Iterable
 import numpy as np
 
 from ..i18n import N_, tr
+from .fmt import GROUP, exact, minus
 from .labels import LabelTable, pgettext, translated
 
 
@@ -70,6 +71,9 @@ THIN = 0.25
 # thin line width and below one dot of a 1200 dpi printer (0.021 mm).
 CHORD_TOLERANCE = 0.02
 TEXT_HEIGHTS = (2.5, 3.5, 5.0, 7.0, 10.0)
+# digits are grouped (render/fmt.py's rule: 12 738 N) with a no-break space on the sheets:
+# their font (Noto Sans SC, in the PDF and named by the DXF) has no narrow no-break space
+NBSP = "\u00a0"
 
 
 # -- primitives (paper mm, complex points) ------------------------------------------------
@@ -190,8 +194,8 @@ class Sheet:
 
     def text(self, position, text, height=3.5, layer="TEXT", halign="left", valign="bottom",
              angle=0.0):
-        self.add(Text(complex(position), str(text), float(height), layer, halign, valign,
-                      float(angle)))
+        self.add(Text(complex(position), str(text).replace(GROUP, NBSP), float(height), layer,
+                      halign, valign, float(angle)))
 
     def fill(self, points, layer="OUTLINE"):
         self.add(Fill(tuple(complex(p) for p in points), layer))
@@ -209,8 +213,8 @@ class Sheet:
             self.fill([p1, base + 1j * u * w, base - 1j * u * w], layer)
 
     def dimension(self, p0, p1, offset, measurement, text="", kind="aligned", height=3.5):
-        self.add(Dimension(complex(p0), complex(p1), float(offset), float(measurement), text,
-                           kind, "DIMENSIONS", height))
+        self.add(Dimension(complex(p0), complex(p1), float(offset), float(measurement),
+                           str(text).replace(GROUP, NBSP), kind, "DIMENSIONS", height))
 
     def view(self, origin, scale: float, flip_x: bool = False) -> "View":
         """Model coordinates → sheet: ``origin + scale * z`` (scale = paper mm per unit)."""
@@ -421,26 +425,31 @@ def length_scale(extent_mm: complex, box_mm: complex, enlarge: bool = False) -> 
         decade *= 10.0
 
 
+# GB/T 14690 preferred scales within each decade: 1:1, 1:2, 1:2.5, 1:4, 1:5 (then 1:10 …)
+# and the enlargements 2:1, 2.5:1, 4:1, 5:1 (then 10:1 …).
+PREFERRED = (1.0, 2.0, 2.5, 4.0, 5.0)
+
+
+# as n model mm per paper mm, smallest (largest drawing) first: 1/(m·10ᵏ) the enlargements,
+# m·10ᵏ the reductions
+_PREFERRED_N = sorted({m * 10.0 ** k for m in PREFERRED for k in range(9)}
+                      | {1.0 / (m * 10.0 ** k) for m in PREFERRED for k in range(5)})
+
+
+def preferred_scale(limit: float) -> float:
+    """The largest GB/T 14690 preferred scale that draws at most ``limit`` paper mm per
+    model mm, as n model mm per paper mm (n < 1: the enlargement 1/n:1)."""
+    if not limit > 0:
+        return _PREFERRED_N[-1]
+    need = 1.0 / limit
+    return next((n for n in _PREFERRED_N if n >= need * (1 - 1e-12)), _PREFERRED_N[-1])
+
+
 def scale_text(n: float) -> str:
     """'1:5', '1:2.5', '1:1'; an enlargement (n < 1, see :func:`length_scale`) '2:1', '2.5:1'."""
     if n < 1 - 1e-9:
-        return f"{round(1.0 / n, 6):g}:1"
-    return f"1:{n:g}"
-
-
-def format_number(x: float, digits: int = 4) -> str:
-    """Up to ``digits`` significant figures in fixed-point notation, without trailing zeros
-    (the report's rule, render/fmt.py): never E-notation (12698.4 → '12700', 0.000123 →
-    '0.000123'), never a negative zero; below 10⁻⁹ (round-off in a sheet's values) '0'."""
-    if abs(x) < 1e-9 or not np.isfinite(x):     # round-off (a Coriolis term of a still slider)
-        return "0"
-    from decimal import Decimal
-
-    rounded = Decimal(f"{x:.{digits - 1}e}")
-    text = f"{float(rounded):.{max(digits - 1 - rounded.adjusted(), 0)}f}"
-    if "." in text:
-        text = text.rstrip("0").rstrip(".")
-    return "0" if float(text) == 0 else text
+        return f"{exact(1.0 / n, group=False)}:1"
+    return f"1:{exact(n, group=False)}"
 
 
 def ground(sheet_or_view, z, size=6.0, angle=-np.pi / 2):
@@ -704,11 +713,11 @@ def chart(sheet: Sheet, box: tuple[float, float, float, float], x: np.ndarray,
     for v in np.arange(lo, hi + step / 2, step):
         y = m.p(xlo, v).imag
         sheet.line(x0 + 1j * y, x1 + 1j * y, "CONSTRUCTION", 0.13)
-        sheet.text(x0 - 1.5 + 1j * y, format_number(v), 2.5, "TEXT", "right", "middle")
+        sheet.text(x0 - 1.5 + 1j * y, minus(exact(v)), 2.5, "TEXT", "right", "middle")
     for v in xs:
         xp = m.p(v, lo).real
         sheet.line(xp + 1j * y0, xp + 1j * y1, "CONSTRUCTION", 0.13)
-        sheet.text(xp + 1j * (y0 - 1.5), format_number(v), 2.5, "TEXT", "center", "top")
+        sheet.text(xp + 1j * (y0 - 1.5), minus(exact(v)), 2.5, "TEXT", "center", "top")
     sheet.polyline([x0 + 1j * y0, x1 + 1j * y0, x1 + 1j * y1, x0 + 1j * y1], "CONSTRUCTION",
                    closed=True, weight=0.35)
     if lo < 0 < hi:

@@ -212,7 +212,7 @@ def _xy(z: complex) -> tuple[float, float]:
 def _dimension(msp, d: Dimension) -> None:
     paper = abs(d.p1 - d.p0)
     override = {"dimtxt": d.height, "dimasz": 2.5, "dimexe": 1.5, "dimexo": 1.0,
-                "dimgap": 0.8, "dimtad": 1, "dimdec": 2, "dimzin": 8, "dimtih": 0, "dimtoh": 0,
+                "dimgap": 0.8, "dimtad": 1, "dimdec": 2, "dimzin": 0, "dimtih": 0, "dimtoh": 0,
                 "dimlfac": d.measurement / paper if paper else 1.0}
     attrs = {"layer": d.layer}
     if d.kind == "aligned":

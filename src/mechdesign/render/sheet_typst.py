@@ -19,8 +19,9 @@ from pathlib import Path
 
 import numpy as np
 
+from . import fmt
 from .fonts import cjk_families
-from .sheet import (LAYERS, Arc, Circle, Dimension, Fill, Line, Polyline, Sheet, Text, format_number,
+from .sheet import (LAYERS, Arc, Circle, Dimension, Fill, Line, Polyline, Sheet, Text,
                     split_subscripts)
 
 # Dash patterns in paper mm (GB/T 17450: long dash 15–20, gap 3, dot ≤ 0.5); as the
@@ -38,7 +39,7 @@ def dimension_geometry(d: Dimension):
     length = abs(u)
     u = u / length if length else 1.0
     n = 1j * u
-    text = d.text or format_number(d.measurement, 5)
+    text = d.text or fmt.length(d.measurement)
     lines = []
     arrows = []
     if d.kind == "aligned":
@@ -50,7 +51,7 @@ def dimension_geometry(d: Dimension):
         pos, ang = (a + b) / 2 + n * 1.0, np.angle(u)
     else:  # radius/diameter: p0 = centre side, p1 = on the circle
         prefix = "R" if d.kind == "radius" else "Φ"
-        text = d.text or prefix + format_number(d.measurement, 5)
+        text = d.text or prefix + fmt.length(d.measurement)
         lines.append((d.p0, d.p1))
         arrows.append((d.p1, d.p0))            # (tip, tail): the arrow touches the circle
         if d.kind == "diameter":
