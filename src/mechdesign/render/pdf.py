@@ -392,13 +392,6 @@ def start_service():
     return stop
 
 
-def compile_here() -> None:
-    """Compile in this process from now on, not through the compiling process (a helper
-    that compiles beside it: the sheets' previews while it lays out the report)."""
-    global _service_address
-    _service_address = None
-
-
 def _end_with_parent() -> None:
     """Linux: this process gets SIGKILL when its parent ends, however it ends."""
     try:
