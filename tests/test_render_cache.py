@@ -112,7 +112,7 @@ tmp = Path(sys.argv[1])
 src = "#set page(width: 50mm, height: 30mm)\nHello $x^2$"
 stop = pdf.start_service()
 try:
-    assert pdf._service_address is not None
+    assert set(pdf._service_address) == {"file", "bytes"}
     pdf.compile_pdf(src, tmp, tmp / "served.pdf", {"date": "1970-01-01"})
     assert not parallel.typst_used()
     try:
@@ -124,11 +124,11 @@ try:
     assert not (tmp / "bad.pdf").exists()
 finally:
     stop()
-assert pdf._service_address is None
+assert pdf._service_address == {}
 pdf.compile_pdf(src, tmp, tmp / "here.pdf", {"date": "1970-01-01"})
 assert parallel.typst_used()
 assert pdf.start_service()() is None      # after typst ran here: no service, a no-op stop
-assert pdf._service_address is None
+assert pdf._service_address == {}
 print("ok")
 """
 
@@ -148,6 +148,60 @@ def test_the_warm_typst_process_compiles_for_this_one(tmp_path):
                          capture_output=True, text=True, timeout=300)
     assert out.returncode == 0 and out.stdout.strip() == "ok", out.stderr
     assert (tmp_path / "served.pdf").read_bytes() == (tmp_path / "here.pdf").read_bytes()
+
+
+_MEMO = r"""
+import os, sys
+from pathlib import Path
+from mechdesign.render import pdf
+
+def children_cpu():           # CPU seconds of this process's children (the services)
+    total = 0
+    for task in Path(f"/proc/{os.getpid()}/task").iterdir():
+        for pid in (task / "children").read_text().split():
+            fields = Path(f"/proc/{pid}/stat").read_text().rsplit(")", 1)[1].split()
+            total += int(fields[11]) + int(fields[12])
+    return total / os.sysconf("SC_CLK_TCK")
+
+tmp = Path(sys.argv[1])
+body = "\n\n".join(f"== Section {i}\n" + " ".join(f"word{j} $x_{j}^2$" for j in range(100))
+                   for i in range(60))
+src = '#set page(height: 200mm)\n#set heading(numbering: "1.")\n#outline()\n' + body
+stop = pdf.start_service()
+try:
+    c0 = children_cpu()
+    pdf.compile_pdf(src, tmp, tmp / "a.pdf", {})
+    cold = children_cpu() - c0
+    for i in range(12):      # a run's drawing sheets: a PDF and a PNG preview of each
+        pdf.cached_compile(f"#set page(width: 40mm, height: 20mm)\nsheet {i}".encode(),
+                           format="png", ppi=30)
+    c0 = children_cpu()
+    pdf.compile_pdf(src, tmp, tmp / "b.pdf", {})
+    warm = children_cpu() - c0
+finally:
+    stop()
+print(cold, warm)
+"""
+
+
+def test_the_reports_compiling_process_keeps_its_memo_across_the_sheets(tmp_path):
+    """typst forgets what a compilation memoised once ~10 later compilations of the
+    process have not used it; a run compiles up to six sheets twice (PDF and preview)
+    between two reports. In the watch the report's compiling process does only reports,
+    so the same report compiled again after twelve sheet compilations takes a fraction of
+    its first compilation's CPU time (through one shared process: about all of it)."""
+    import os
+
+    if not sys.platform.startswith("linux"):
+        pytest.skip("the compiling processes are forked (Linux, /proc)")
+    env = dict(os.environ, MECHDESIGN_CACHE="off")
+    out = subprocess.run([sys.executable, "-c", _MEMO, str(tmp_path)], env=env, cwd=ROOT,
+                         capture_output=True, text=True, timeout=300)
+    assert out.returncode == 0, out.stderr
+    cold, warm = map(float, out.stdout.split())
+    assert cold >= 0.1, (cold, warm)           # enough to measure at the clock's 10 ms
+    assert warm < 0.5 * cold, (cold, warm)
+    assert (tmp_path / "a.pdf").read_bytes() == (tmp_path / "b.pdf").read_bytes()
 
 
 def test_trimming_removes_only_the_caches_own_entries(tmp_path, monkeypatch):
