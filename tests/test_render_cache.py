@@ -225,3 +225,45 @@ def test_trimming_removes_only_the_caches_own_entries(tmp_path, monkeypatch):
     cache._trim_once(tmp_path)
     assert not (tmp_path / "ab" / key).exists()
     assert all(path.read_bytes() == b"x" * 1000 for path in theirs)
+
+
+def test_a_load_edit_keeps_the_cache_keys_of_the_kinematic_polygon_figures(
+        example_results, tmp_path, monkeypatch):
+    """A figure is keyed by its call (render/cache.py call_key): the graphical method's
+    velocity/acceleration figures must be given what they draw only, so that a changed
+    cutting force (which changes no velocity or acceleration: the kinematics do not depend
+    on the loads) finds them in the cache instead of building them again (watch)."""
+    import re
+
+    from mechdesign.brief.loader import load_brief
+    from mechdesign.machines import get_machine, stages_for
+    from mechdesign.pipeline import run_stages
+    from mechdesign.render import cache
+    from mechdesign.render import graphical_report as G
+
+    monkeypatch.setenv("MECHDESIGN_CACHE", str(tmp_path / "cache"))
+    text = (ROOT / "designs" / "shaper.yaml").read_text(encoding="utf-8")
+    edited, n = re.subn(r"^(  cutting_force_Fc_N: )1600$", r"\g<1>1700", text, flags=re.M)
+    assert n == 1
+    (tmp_path / "shaper.yaml").write_text(edited, encoding="utf-8")
+    brief = load_brief(tmp_path / "shaper.yaml")
+    machine = get_machine(brief.machine)
+    params = machine.to_params(brief)
+    loaded, _ = run_stages(stages_for(machine, params), {"params": params, "brief": brief})
+
+    kin = G._kin_figure.__wrapped__           # the drawing function under the cache
+
+    def keys(results) -> dict[str, str]:
+        found = {}
+
+        def record(path, *args, **kwargs):
+            found[Path(path).name] = cache.call_key(kin, args, kwargs)
+
+        monkeypatch.setattr(G, "_kin_figure", record)
+        monkeypatch.setattr(G, "_force_figure", lambda *a, **k: None)
+        G.graphical_figures(results, tmp_path, "zh")
+        return found
+
+    before, after = keys(example_results("shaper")), keys(loaded)
+    assert before and all(before.values()) and before.keys() == after.keys()
+    assert before == after
