@@ -112,7 +112,7 @@ tmp = Path(sys.argv[1])
 src = "#set page(width: 50mm, height: 30mm)\nHello $x^2$"
 stop = pdf.start_service()
 try:
-    assert pdf._service_address is not None
+    assert set(pdf._service_address) == {"file", "bytes"}
     pdf.compile_pdf(src, tmp, tmp / "served.pdf", {"date": "1970-01-01"})
     assert not parallel.typst_used()
     try:
@@ -124,11 +124,11 @@ try:
     assert not (tmp / "bad.pdf").exists()
 finally:
     stop()
-assert pdf._service_address is None
+assert pdf._service_address == {}
 pdf.compile_pdf(src, tmp, tmp / "here.pdf", {"date": "1970-01-01"})
 assert parallel.typst_used()
 assert pdf.start_service()() is None      # after typst ran here: no service, a no-op stop
-assert pdf._service_address is None
+assert pdf._service_address == {}
 print("ok")
 """
 
@@ -148,6 +148,60 @@ def test_the_warm_typst_process_compiles_for_this_one(tmp_path):
                          capture_output=True, text=True, timeout=300)
     assert out.returncode == 0 and out.stdout.strip() == "ok", out.stderr
     assert (tmp_path / "served.pdf").read_bytes() == (tmp_path / "here.pdf").read_bytes()
+
+
+_MEMO = r"""
+import os, sys
+from pathlib import Path
+from mechdesign.render import pdf
+
+def children_cpu():           # CPU seconds of this process's children (the services)
+    total = 0
+    for task in Path(f"/proc/{os.getpid()}/task").iterdir():
+        for pid in (task / "children").read_text().split():
+            fields = Path(f"/proc/{pid}/stat").read_text().rsplit(")", 1)[1].split()
+            total += int(fields[11]) + int(fields[12])
+    return total / os.sysconf("SC_CLK_TCK")
+
+tmp = Path(sys.argv[1])
+body = "\n\n".join(f"== Section {i}\n" + " ".join(f"word{j} $x_{j}^2$" for j in range(100))
+                   for i in range(60))
+src = '#set page(height: 200mm)\n#set heading(numbering: "1.")\n#outline()\n' + body
+stop = pdf.start_service()
+try:
+    c0 = children_cpu()
+    pdf.compile_pdf(src, tmp, tmp / "a.pdf", {})
+    cold = children_cpu() - c0
+    for i in range(12):      # a run's drawing sheets: a PDF and a PNG preview of each
+        pdf.cached_compile(f"#set page(width: 40mm, height: 20mm)\nsheet {i}".encode(),
+                           format="png", ppi=30)
+    c0 = children_cpu()
+    pdf.compile_pdf(src, tmp, tmp / "b.pdf", {})
+    warm = children_cpu() - c0
+finally:
+    stop()
+print(cold, warm)
+"""
+
+
+def test_the_reports_compiling_process_keeps_its_memo_across_the_sheets(tmp_path):
+    """typst forgets what a compilation memoised once ~10 later compilations of the
+    process have not used it; a run compiles up to six sheets twice (PDF and preview)
+    between two reports. In the watch the report's compiling process does only reports,
+    so the same report compiled again after twelve sheet compilations takes a fraction of
+    its first compilation's CPU time (through one shared process: about all of it)."""
+    import os
+
+    if not sys.platform.startswith("linux"):
+        pytest.skip("the compiling processes are forked (Linux, /proc)")
+    env = dict(os.environ, MECHDESIGN_CACHE="off")
+    out = subprocess.run([sys.executable, "-c", _MEMO, str(tmp_path)], env=env, cwd=ROOT,
+                         capture_output=True, text=True, timeout=300)
+    assert out.returncode == 0, out.stderr
+    cold, warm = map(float, out.stdout.split())
+    assert cold >= 0.1, (cold, warm)           # enough to measure at the clock's 10 ms
+    assert warm < 0.5 * cold, (cold, warm)
+    assert (tmp_path / "a.pdf").read_bytes() == (tmp_path / "b.pdf").read_bytes()
 
 
 def test_trimming_removes_only_the_caches_own_entries(tmp_path, monkeypatch):
@@ -171,3 +225,45 @@ def test_trimming_removes_only_the_caches_own_entries(tmp_path, monkeypatch):
     cache._trim_once(tmp_path)
     assert not (tmp_path / "ab" / key).exists()
     assert all(path.read_bytes() == b"x" * 1000 for path in theirs)
+
+
+def test_a_load_edit_keeps_the_cache_keys_of_the_kinematic_polygon_figures(
+        example_results, tmp_path, monkeypatch):
+    """A figure is keyed by its call (render/cache.py call_key): the graphical method's
+    velocity/acceleration figures must be given what they draw only, so that a changed
+    cutting force (which changes no velocity or acceleration: the kinematics do not depend
+    on the loads) finds them in the cache instead of building them again (watch)."""
+    import re
+
+    from mechdesign.brief.loader import load_brief
+    from mechdesign.machines import get_machine, stages_for
+    from mechdesign.pipeline import run_stages
+    from mechdesign.render import cache
+    from mechdesign.render import graphical_report as G
+
+    monkeypatch.setenv("MECHDESIGN_CACHE", str(tmp_path / "cache"))
+    text = (ROOT / "designs" / "shaper.yaml").read_text(encoding="utf-8")
+    edited, n = re.subn(r"^(  cutting_force_Fc_N: )1600$", r"\g<1>1700", text, flags=re.M)
+    assert n == 1
+    (tmp_path / "shaper.yaml").write_text(edited, encoding="utf-8")
+    brief = load_brief(tmp_path / "shaper.yaml")
+    machine = get_machine(brief.machine)
+    params = machine.to_params(brief)
+    loaded, _ = run_stages(stages_for(machine, params), {"params": params, "brief": brief})
+
+    kin = G._kin_figure.__wrapped__           # the drawing function under the cache
+
+    def keys(results) -> dict[str, str]:
+        found = {}
+
+        def record(path, *args, **kwargs):
+            found[Path(path).name] = cache.call_key(kin, args, kwargs)
+
+        monkeypatch.setattr(G, "_kin_figure", record)
+        monkeypatch.setattr(G, "_force_figure", lambda *a, **k: None)
+        G.graphical_figures(results, tmp_path, "zh")
+        return found
+
+    before, after = keys(example_results("shaper")), keys(loaded)
+    assert before and all(before.values()) and before.keys() == after.keys()
+    assert before == after

@@ -9,9 +9,10 @@ alike) starts a run.
 Every run happens in a child forked from this process (Linux): the imports, done once here
 before the first run, are inherited, and this process never runs typst itself, so each run
 may fork its figure helpers as ``mechdesign run`` does (typst's threads do not survive a
-fork; see render/parallel.py): typst runs in one compiling process started before the
-first run and kept warm (render/pdf.py ``start_service``), so a re-run's PDF re-uses the
-layout of what the edit did not move (an edit that moves page content, or the title and
+fork; see render/parallel.py): typst runs in two compiling processes started before the
+first run and kept warm, one for the report and one for the drawing sheets (render/pdf.py
+``start_service``: typst forgets a layout once ~10 later compilations of its process have
+not used it), so a re-run's PDF re-uses the layout of what the edit did not move (an edit that moves page content, or the title and
 the student, which every page's set rules hold, is laid out whole again), and every figure
 and sheet unchanged by the edit is copied from the render cache (render/cache.py). The
 modules a run imported are imported here after it, so the next run inherits them too.
@@ -215,8 +216,8 @@ def watch_brief(brief: Path, *, out: Path | None = None, group: str | None = Non
         _preload(brief, group)
         _warm_caches()
         if _can_fork():
-            # one warm typst process for every run (render/pdf.py): a re-run lays out
-            # only what changed; started before any run, so this process stays fork-safe
+            # warm typst processes for every run (render/pdf.py): a re-run lays out only
+            # what changed; started before any run, so this process stays fork-safe
             from .render.pdf import start_service
 
             stop_typst = start_service()

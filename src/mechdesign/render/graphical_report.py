@@ -256,54 +256,60 @@ def _kin_axes(ax, poly, title: str, mu_unit: str, lang: str):
 
 
 @fig.cached
-def _kin_figure(path: Path, pos, lang: str) -> None:
+def _kin_figure(path: Path, label: str, velocity, acceleration, lang: str) -> None:
+    """The velocity and acceleration polygons of the position ``label``. It is given what
+    it draws and no more (not the whole position, whose forces change with a load): the
+    render cache keys a figure by its call (render/cache.py), so an edit that leaves
+    these polygons as they were copies the figure without building it."""
     t = _T[lang]
     with fig.figure(path, 1, (7.0, 3.6), sharex=False) as axes:
         f_ = axes[0].figure
         f_.clf()
         a1, a2 = f_.add_subplot(1, 2, 1), f_.add_subplot(1, 2, 2)
-        l1 = _kin_axes(a1, pos.velocity, f"{t['pos']} {pos.label}: {t['vel']}", "(m/s)/mm", lang)
-        l2 = _kin_axes(a2, pos.acceleration, f"{t['acc']}", "(m/s²)/mm", lang)
+        l1 = _kin_axes(a1, velocity, f"{t['pos']} {label}: {t['vel']}", "(m/s)/mm", lang)
+        l2 = _kin_axes(a2, acceleration, f"{t['acc']}", "(m/s²)/mm", lang)
         # labels last, clear of each other and of the polygon's vectors (issue 19)
         place(a1, *l1)
         place(a2, *l2)
 
 
 @fig.cached
-def _force_figure(path: Path, pos, fg, members: dict, lang: str) -> None:
+def _force_figure(path: Path, points: dict, length_scale: float, fg, members: dict,
+                  lang: str) -> None:
     """Left: the group's links at μl with their loads (arrows of a common length, named);
-    right: the force polygon at μF."""
+    right: the force polygon at μF. ``points`` and ``length_scale``: the position's joints
+    and μl (what it draws of the position, see :func:`_kin_figure`)."""
     t = _T[lang]
     with fig.figure(path, 1, (6.4, 2.6), sharex=False) as axes:
         f_ = axes[0].figure
         f_.clf()
         a1, a2 = f_.add_subplot(1, 2, 1), f_.add_subplot(1, 2, 2)
-        P = pos.points
+        P = points
         pts: dict = {}          # ordered (a set's order would change between processes)
         labels1: list[Label] = []
         lines1: list[tuple[complex, complex]] = []      # what a label must not lie on
         for link in fg.links:
             chain = members.get(link, ())
-            zs = [P[p] / pos.length_scale for p in chain if p in P]
+            zs = [P[p] / length_scale for p in chain if p in P]
             if len(zs) >= 2:
                 a1.plot([z.real for z in zs], [z.imag for z in zs], "-", color="0.3", lw=2.5,
                         solid_capstyle="round")
                 lines1 += list(zip(zs[:-1], zs[1:]))
             pts.update((p, None) for p in chain if p in P)
-        centre = np.mean([P[p] for p in pts]) / pos.length_scale if pts else 0j
+        centre = np.mean([P[p] for p in pts]) / length_scale if pts else 0j
         for p in pts:
-            z = P[p] / pos.length_scale
+            z = P[p] / length_scale
             a1.plot([z.real], [z.imag], "o", mfc="w", mec="k", ms=4)
             lines1.append((z, z))
             away = (z - centre) / abs(z - centre) if abs(z - centre) > 1e-12 else 1
             labels1.append(Label(mpl_point(p), z, (away,), {"fontsize": LABEL_SIZE}))
-        span = max([abs(P[a] - P[b]) for a in pts for b in pts] + [1e-9]) / pos.length_scale
+        span = max([abs(P[a] - P[b]) for a in pts for b in pts] + [1e-9]) / length_scale
         L = 0.25 * span
         for link, loads in fg.loads.items():
             for ld in loads:
                 if abs(ld.value) == 0:
                     continue
-                z = ld.at / pos.length_scale
+                z = ld.at / length_scale
                 u = ld.value / abs(ld.value)
                 _arrow(a1, z, z + L * u, "tab:red" if ld.kind == "reaction" else "tab:blue",
                        label=sym(ld.name), labels=labels1)
@@ -311,13 +317,13 @@ def _force_figure(path: Path, pos, fg, members: dict, lang: str) -> None:
         for name, at in fg.reaction_points.items():
             value = fg.reactions.get(name, 0j)
             if abs(value) > 0:
-                z = at / pos.length_scale
+                z = at / length_scale
                 _arrow(a1, z, z + L * value / abs(value), "tab:red", label=sym(name),
                        labels=labels1)
                 lines1.append((z, z + L * value / abs(value)))
         a1.set_aspect("equal", adjustable="datalim")
         a1.set_title(f"{t['fbd']} ({t['links']} {', '.join(fg.links)})  "
-                     f"$\\mu_l$ = {_scale(pos.length_scale)} m/mm", fontsize=8)
+                     f"$\\mu_l$ = {_scale(length_scale)} m/mm", fontsize=8)
         a1.tick_params(labelsize=6)
         lines2: list[tuple[complex, complex]] = []
         zs2 = list(fg.points.values()) or [0j]
@@ -386,11 +392,12 @@ def graphical_figures(results: dict, fig_dir: Path, lang: str) -> dict[str, str]
         members = link_members(model.mechanism)[0] if model is not None else {}
         for pos in doc.positions:
             key = f"{prefix}_graph_{_safe(pos.label)}_kin"
-            _kin_figure(fig_dir / f"{key}.png", pos, lang)
+            _kin_figure(fig_dir / f"{key}.png", pos.label, pos.velocity, pos.acceleration, lang)
             paths[key] = f"{fig_dir.name}/{key}.png"
             for n, fg in enumerate(pos.forces):
                 key = f"{prefix}_graph_{_safe(pos.label)}_f{n}"
-                _force_figure(fig_dir / f"{key}.png", pos, fg, members, lang)
+                _force_figure(fig_dir / f"{key}.png", pos.points, pos.length_scale, fg,
+                              members, lang)
                 paths[key] = f"{fig_dir.name}/{key}.png"
     return paths
 

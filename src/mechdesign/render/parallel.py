@@ -3,12 +3,10 @@
 Drawing a report is mostly matplotlib laying out text and encoding images, one figure
 after another on one core. Inside :func:`background_saves`, :func:`save` hands a
 finished figure to a forked child process (it inherits the figure as it is, nothing is
-pickled), so this process goes on building the next one; while the child is busy this
-process holds the figures back and saves them once the Markdown is rendered and pandoc
-runs (or while it waits for the sheets), so pandoc's conversion overlaps the figures'
-saving. Work that uses typst (the drawing sheets) gets a child of its own
-(:func:`save_apart`; the sheets' previews: :func:`start_apart`). Two cores are then
-both at work, whatever a machine's report module draws, and every figure is drawn once.
+pickled), so this process goes on building the next one; a figure finished while the
+child is busy is saved by this process itself. Work that uses typst (the drawing sheets)
+gets a child of its own (:func:`save_apart`). Two cores are then both at work, whatever a
+machine's report module draws, and every figure is drawn once.
 
 A child never returns into the caller's stack: it saves, reports a failure through a
 pipe and leaves with ``os._exit``, so no ``finally`` of the parent (the staging folder's
@@ -43,7 +41,6 @@ _enabled = False
 # (pid, read end of its error pipe, label, a child of its own (save_apart))
 _children: list[tuple[int, int, str, bool]] = []
 _typst_used = False
-_held: list[tuple[Callable[[], None], str]] = []   # figures held back, oldest first
 
 
 def note_typst_used() -> None:
@@ -72,48 +69,41 @@ def can_fork() -> bool:
 
 _on_save: Callable[[str], None] | None = None     # told each figure's name (progress)
 
-#: figures held back, drawn but not yet saved, before this process saves one itself
-MAX_HELD = 64
-
 
 @contextmanager
 def background_saves(enabled: bool = True, on_save: Callable[[str], None] | None = None):
-    """Within the block, :func:`save` may run in a child process, or a little later; on
-    leaving, every save has finished (or its error is raised). ``on_save(label)`` is called
-    as each figure is handed over (for progress lines)."""
+    """Within the block, :func:`save` may run in a child process; on leaving, every save
+    has finished (or its error is raised). ``on_save(label)`` is called as each figure is
+    handed over (for progress lines)."""
     global _enabled, _on_save
     previous, previous_hook = _enabled, _on_save
     _enabled = bool(enabled) and can_fork()
     _on_save = on_save
     try:
         yield
-        drain()
+        _reap(block=True)
     finally:
         _kill()
-        _held.clear()
         _enabled, _on_save = previous, previous_hook
         if gc.get_freeze_count():
             gc.unfreeze()
 
 
 def save(action: Callable[[], None], label: str) -> None:
-    """Run ``action`` (which writes the files of a figure that is complete) now, in the
-    background, or a little later. ``label`` names the figure in an error message.
+    """Run ``action`` (which writes the files of a figure that is complete) now, here or
+    in the background. ``label`` names the figure in an error message.
 
-    One child at a time takes these saves; this process is the other worker. While it
-    draws, it only holds the figures back (up to :data:`MAX_HELD`): the helper takes the
-    oldest whenever it is free, and this process saves the rest once the Markdown is
-    made and pandoc runs (:func:`pump`, :func:`drain`), so pandoc's conversion overlaps
-    the figures instead of following them."""
+    One child at a time takes these saves: a figure finished while it is free goes to a
+    new child, one finished while it is busy is saved here (this process is the other
+    worker)."""
     if _on_save is not None:
         _on_save(label)
-    if not _enabled:
-        action()
-        return
-    _held.append((action, label))
-    pump()                          # a free helper takes the oldest figure
-    if len(_held) > MAX_HELD:       # else this process saves it
-        _held.pop(0)[0]()
+    if _enabled:
+        _reap(block=False)
+        if _helper_free():
+            _fork(action, label, apart=False)
+            return
+    action()
 
 
 def save_apart(action: Callable[[], None], label: str) -> Callable[[], None]:
@@ -126,68 +116,7 @@ def save_apart(action: Callable[[], None], label: str) -> Callable[[], None]:
         action()
         return lambda: None
     pid = _fork(action, label, apart=True)
-
-    def wait() -> None:
-        # while the child works, this process saves the figures it holds back
-        while any(c[0] == pid for c in _children):
-            pump()
-            if not _held:
-                _reap(block=True, only=pid)
-                return
-            _held.pop(0)[0]()
-            _reap(block=False)
-
-    return wait
-
-
-def start_apart(action: Callable[[], None], label: str) -> Callable[..., None]:
-    """Run ``action`` in a child of its own now, also outside :func:`background_saves`,
-    when this process may fork (:func:`can_fork`: it has not run typst itself), else here
-    and now. Returns ``finish(kill=False)``: waits for the child (raising its error), or
-    with ``kill`` stops it. For the work that may run while this process compiles the
-    report's PDF (the sheets' previews)."""
-    if not can_fork():
-        action()
-        return lambda kill=False: None
-    pid = _fork(action, label, apart=True)
-
-    def finish(kill: bool = False) -> None:
-        try:
-            if kill:
-                for child in [c for c in _children if c[0] == pid]:
-                    _children.remove(child)
-                    try:
-                        os.kill(pid, signal.SIGKILL)
-                        os.waitpid(pid, 0)
-                    except (ProcessLookupError, ChildProcessError):
-                        pass
-                    os.close(child[1])
-            else:
-                _reap(block=True, only=pid)
-        finally:
-            if not _children and gc.get_freeze_count():
-                gc.unfreeze()
-
-    return finish
-
-
-def pump() -> None:
-    """Hand the oldest figure held back to the helper if it is free (also to call when
-    drawing is over and other work follows)."""
-    if _enabled and _held:
-        _reap(block=False)
-        if _helper_free():
-            _fork(*_held.pop(0), apart=False)
-
-
-def drain() -> None:
-    """Write the figures held back (the helper takes one when it is free, this process
-    the rest), then wait for every child."""
-    while _held:
-        pump()
-        if _held:
-            _held.pop(0)[0]()
-    _reap(block=True)
+    return lambda: _reap(block=True, only=pid)
 
 
 def _helper_free() -> bool:
@@ -208,7 +137,6 @@ def _fork(action: Callable[[], None], label: str, apart: bool) -> int:
         gc.disable()
         _enabled = False          # what the action saves, it saves itself
         _children.clear()         # the parent's other children are not its own
-        _held.clear()
         try:
             os.close(read_end)
             signal.signal(signal.SIGINT, signal.SIG_DFL)

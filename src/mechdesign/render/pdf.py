@@ -324,30 +324,38 @@ def typst_fonts():
                        font_paths=dirs)
 
 
-# --- a warm typst process (mechdesign watch) -------------------------------------------
+# --- warm typst processes (mechdesign watch) -------------------------------------------
 #
 # typst memoises its work in the process (parsed fonts, the layout of each paragraph,
 # table and figure) and re-uses it for a later compilation of a source of the same name
 # (:func:`_source_file`). Measured on the shaper's 38-page report (CPU seconds, typst
-# 0.15.2 binding): ~2.7 laid out cold; ~0.3 after an edit that moves nothing (one cell,
-# one formula, one paragraph); ~2.7 again after an edit that moves something (a cell grown
-# wider by a sign, a formula wrapped onto a second line: a load edit does both) or that
-# changes a set rule every page depends on (the student and the title are in
-# ``#set document`` and the running header). The binding's ``typst.Compiler`` (a world
-# kept between compilations) measured the same as ``typst.compile`` (the memo is
-# process-wide either way; the fonts are one :func:`typst_fonts` object), so it is not used.
-# A long-lived process (the watch) starts one compiling process with
+# 0.15.2 binding): ~3.1 laid out cold; ~0.1 for the same source again; ~0.8 after an edit
+# that moves nothing (one cell, one number in a paragraph); ~2.7–3.3 again after an edit
+# that moves something (a cell grown wider, a formula wrapped onto a second line: a load
+# edit does both) or that changes a set rule every page depends on (the student is in
+# ``#set document``: a changed name alone costs the whole layout).
+# The binding drops what a compilation memoised once about ten later compilations of the
+# same process have not used it (the shaper's report compiled again after 8 small
+# documents: 0.3; after 9: 1.0; after 10: 3.4 — the whole layout): a run compiles up to
+# six drawing sheets, each as a PDF and a PNG preview, so the report and the sheets get a
+# compiling process each, and the report's process compiles nothing but one report per run.
+# The binding's ``typst.Compiler`` (a world kept between compilations) is no better (the
+# memo is process-wide; it measured worse after an edit and back), so it is not used.
+# A long-lived process (the watch) starts the compiling processes with
 # :func:`start_service` before it runs anything; this process and the children it forks
 # then send their compilations there (:func:`_service_compile`) and stay free of typst's
 # threads, so they may go on forking.
 
-_service_address: str | None = None
+#: what goes where: "file" (a report, :func:`compile_pdf`) and "bytes" (a self-contained
+#: source, :func:`cached_compile`: the drawing sheets) → the socket of its compiling process
+_service_address: dict[str, str] = {}
 
 
 def start_service():
-    """Start the compiling process (Linux: forked; it never forks itself). Returns a
-    function that stops it. Compilations fall back to this process if it is gone; a
-    process that has already run typst starts none (it cannot fork one safely)."""
+    """Start the compiling processes (Linux: forked; they never fork themselves), one for
+    the reports and one for the self-contained sources (the sheets). Returns a function
+    that stops them. Compilations fall back to this process when one is gone; a process
+    that has already run typst starts none (it cannot fork one safely)."""
     global _service_address
     import select
     import shutil
@@ -360,47 +368,49 @@ def start_service():
         # compiling itself
         return lambda: None
     folder = tempfile.mkdtemp(prefix="mechdesign-typst-")
-    address = os.path.join(folder, "socket")
-    read_end, write_end = os.pipe()
-    pid = os.fork()
-    if pid == 0:                         # the compiling process
-        code = 0
-        try:
-            os.close(read_end)
-            signal.signal(signal.SIGINT, signal.SIG_IGN)   # the watch's Ctrl-C stops it
-            signal.signal(signal.SIGTERM, signal.SIG_DFL)
-            _end_with_parent()
-            _serve(address, write_end)
-        except BaseException:  # noqa: BLE001 - a dead service only means local compiles
-            code = 1
-        finally:
-            os._exit(code)
-    os.close(write_end)
-    with os.fdopen(read_end, "rb") as ready:
-        ok = bool(select.select([ready], [], [], 120)[0]) and ready.read(1) == b"1"
-    _service_address = address if ok else None
+    started = []                         # (kind, address, pid, read end of its ready pipe)
+    for kind in ("file", "bytes"):
+        address = os.path.join(folder, f"{kind}.socket")
+        read_end, write_end = os.pipe()
+        pid = os.fork()
+        if pid == 0:                     # a compiling process
+            code = 0
+            try:
+                os.close(read_end)
+                for *_, other in started:
+                    os.close(other)
+                signal.signal(signal.SIGINT, signal.SIG_IGN)   # the watch's Ctrl-C stops it
+                signal.signal(signal.SIGTERM, signal.SIG_DFL)
+                _end_with_parent()
+                _serve(address, write_end)
+            except BaseException:  # noqa: BLE001 - a dead service only means local compiles
+                code = 1
+            finally:
+                os._exit(code)
+        os.close(write_end)
+        started.append((kind, address, pid, read_end))
+    ready = {}
+    for kind, address, _pid, read_end in started:
+        with os.fdopen(read_end, "rb") as pipe:
+            if select.select([pipe], [], [], 120)[0] and pipe.read(1) == b"1":
+                ready[kind] = address
+    _service_address = ready
 
     def stop() -> None:
         global _service_address
-        _service_address = None
-        try:
-            os.kill(pid, signal.SIGTERM)
-            os.waitpid(pid, 0)
-        except (ProcessLookupError, ChildProcessError):
-            pass
+        _service_address = {}
+        for _kind, _address, pid, _ in started:
+            try:
+                os.kill(pid, signal.SIGTERM)
+                os.waitpid(pid, 0)
+            except (ProcessLookupError, ChildProcessError):
+                pass
         shutil.rmtree(folder, ignore_errors=True)
 
-    if not ok:          # it did not start: compile here
+    if not ready:       # none started: compile here
         stop()
         return lambda: None
     return stop
-
-
-def compile_here() -> None:
-    """Compile in this process from now on, not through the compiling process (a helper
-    that compiles beside it: the sheets' previews while it lays out the report)."""
-    global _service_address
-    _service_address = None
 
 
 def _end_with_parent() -> None:
@@ -455,14 +465,16 @@ class _TypstFailed(Exception):
 
 
 def _service_compile(kind: str, args: tuple, options: dict):
-    """(output, warnings) from the compiling process, or None (no service, or it failed:
-    compile here). Raises _TypstFailed with typst's message for an error in the source."""
-    if _service_address is None:
+    """(output, warnings) from the compiling process of ``kind`` ("file" or "bytes"), or
+    None (no service, or it failed: compile here). Raises _TypstFailed with typst's
+    message for an error in the source."""
+    address = _service_address.get(kind)
+    if address is None:
         return None
     from multiprocessing.connection import Client
 
     try:
-        with Client(_service_address, family="AF_UNIX") as conn:
+        with Client(address, family="AF_UNIX") as conn:
             conn.send((kind, args, options))
             status, out, found = conn.recv()
     except (OSError, EOFError):

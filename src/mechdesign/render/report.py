@@ -20,7 +20,7 @@ from ..i18n import tr
 from ..publish import make_staging, publish
 from ..results import dumps
 from .fmt import md_text, meta_text
-from .parallel import background_saves, pump
+from .parallel import background_saves
 
 FORMATS = ("md", "pdf", "docx", "dxf", "gif")
 
@@ -191,7 +191,6 @@ def write_report(out_dir: Path, *, machine: str, lang: str, formats: tuple[str, 
                                   else (lambda: []))
                 say("figures")
                 figures = make_figures(fig_dir)
-                pump()                     # the last figure, while the Markdown is made
                 sheets = collect_sheets()
                 ctx = make_context(figures)
                 ctx["sheets"] = [_sheet_row(sh, lang) for sh in sheets]
@@ -217,25 +216,15 @@ def write_report(out_dir: Path, *, machine: str, lang: str, formats: tuple[str, 
                     write_data(staging)
                 say("figures and sheets: the last ones")
             say("figures and sheets: all written")
-            # the sheets' previews (PNG) left for now: drawn while typst lays out the report
-            start_previews = getattr(collect_sheets, "previews", None)
-            finish_previews = start_previews() if start_previews is not None else None
-            try:
-                if pending is not None:
-                    from .pdf import compile_pdf
+            if pending is not None:
+                from .pdf import compile_pdf
 
-                    source = pending.result()
-                    say("PDF: typst → report.pdf")
-                    # the PDF places each drawing sheet as vector graphics (its own PDF)
-                    vector = {sh.preview: sh.pdf for sh in sheets if sh.pdf}
-                    compile_pdf(source, staging, staging / "report.pdf",
-                                pdf_metadata(meta, lang, group), vector)
-            except BaseException:
-                if finish_previews is not None:
-                    finish_previews(kill=True)
-                raise
-            if finish_previews is not None:
-                finish_previews()
+                source = pending.result()
+                say("PDF: typst → report.pdf")
+                # the PDF places each drawing sheet as vector graphics (its own PDF)
+                vector = {sh.preview: sh.pdf for sh in sheets if sh.pdf}
+                compile_pdf(source, staging, staging / "report.pdf",
+                            pdf_metadata(meta, lang, group), vector)
         finally:
             if pending is not None:
                 pending.cancel()

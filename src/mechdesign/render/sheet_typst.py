@@ -227,16 +227,11 @@ def write_sheet(sheet: Sheet, pdf: Path | None = None, png: Path | None = None,
     write_sheets([(sheet, pdf, png, png_width_px)])
 
 
-def write_sheets(jobs, previews_later: list | None = None) -> None:
+def write_sheets(jobs) -> None:
     """Write several sheets: ``jobs`` of (sheet, pdf path or None, png path or None, PNG
     width [px]), compiled by typst in this process one after the other (its fonts are
     loaded once). :func:`.sheets.make_sheets` runs this in a helper process of its own
-    when the report is rendered with background saves.
-
-    ``previews_later``: a list that receives the PNG previews as (typst source, png path,
-    ppi) instead of drawing them (:func:`write_previews` draws them later: the report's
-    PDF needs only the sheets' PDFs, so the previews are drawn while typst lays out the
-    report)."""
+    when the report is rendered with background saves."""
     import typst
 
     from .parallel import note_typst_used
@@ -254,38 +249,11 @@ def write_sheets(jobs, previews_later: list | None = None) -> None:
             if pdf is not None:
                 write_bytes(Path(pdf), cached_compile(
                     source, font_paths=fonts, timestamp=source_timestamp(date)))
-            if png is not None and previews_later is not None:
-                previews_later.append((source, str(png), width / (sheet.width / 25.4)))
-            elif png is not None:
-                _write_preview(source, Path(png), width / (sheet.width / 25.4), fonts)
+            if png is not None:
+                image = cached_compile(source, font_paths=fonts, format="png",
+                                       ppi=width / (sheet.width / 25.4))
+                write_bytes(Path(png), image if isinstance(image, bytes) else image[0])
         except typst.TypstError as exc:
             raise PdfRenderError(f"typst failed to draw the sheet "
                                  f"{Path(pdf or png).name}:\n{_typst_message(exc)}") from exc
 
-
-def _write_preview(source: bytes, png: Path, ppi: float, fonts) -> None:
-    from ..fileio import write_bytes
-    from .pdf import cached_compile
-
-    image = cached_compile(source, font_paths=fonts, format="png", ppi=ppi)
-    write_bytes(png, image if isinstance(image, bytes) else image[0])
-
-
-def write_previews(items, folder: Path | None = None) -> None:
-    """Draw the PNG previews that :func:`write_sheets` left for later: ``items`` of
-    (typst source, png path, ppi); with ``folder``, each is written there under its file
-    name instead."""
-    import typst
-
-    from .parallel import note_typst_used
-    from .pdf import PdfRenderError, _typst_message, typst_fonts
-
-    note_typst_used()
-    fonts = typst_fonts()
-    for source, png, ppi in items:
-        target = Path(png) if folder is None else Path(folder) / Path(png).name
-        try:
-            _write_preview(source, target, ppi, fonts)
-        except typst.TypstError as exc:
-            raise PdfRenderError(f"typst failed to draw the sheet "
-                                 f"{Path(png).name}:\n{_typst_message(exc)}") from exc

@@ -17,7 +17,7 @@ from dataclasses import asdict, dataclass
 from pathlib import Path
 from typing import Callable
 
-from ..fileio import write_bytes, write_text
+from ..fileio import write_text
 from ..i18n import N_, tr
 from .fmt import meta_text, plain_line
 from .sheet import Sheet, TitleInfo, plain
@@ -191,19 +191,10 @@ def make_sheets(results: dict, brief, folder: Path, fig_dir: Path, lang: str,
             warn(tr(lang)(NO_SHEETS))
         return lambda: []
     manifest = Path(folder) / ".sheets.json"
-    # With a PDF report the previews (PNG, for the Markdown) are drawn later, while typst
-    # lays out the report, which needs the sheets' PDFs only (collect.previews).
-    later: list | None = [] if "pdf" in formats else None
-    handover = Path(folder) / ".sheet-previews.pickle"
 
     def work():
         notes: list[str] = []
-        files = write_all(builders, brief, folder, fig_dir, lang, formats, progress, notes.append,
-                          previews_later=later)
-        if later is not None:
-            import pickle
-
-            write_bytes(handover, pickle.dumps(later), fsync=False)
+        files = write_all(builders, brief, folder, fig_dir, lang, formats, progress, notes.append)
         write_text(manifest, json.dumps({"files": [asdict(f) for f in files], "notes": notes},
                                         ensure_ascii=False), encoding="utf-8")
 
@@ -220,63 +211,15 @@ def make_sheets(results: dict, brief, folder: Path, fig_dir: Path, lang: str,
                 warn(text)
         return done
 
-    def previews() -> Callable[..., None]:
-        """Start drawing the previews left for later (a helper process when this one may
-        fork, else here); returns ``finish(kill=False)``, which waits for them and puts
-        them in place (or, with ``kill``, stops them)."""
-        import pickle
-        import shutil
-        import tempfile
-
-        from .parallel import start_apart
-
-        collect()
-        if not handover.exists():
-            return lambda kill=False: None
-        items = pickle.loads(handover.read_bytes())
-        handover.unlink()
-        if not items:
-            return lambda kill=False: None
-        # written outside the report's folder: typst hashes and reads that folder meanwhile
-        aside = Path(tempfile.mkdtemp(prefix="mechdesign-previews-"))
-
-        def draw() -> None:
-            from . import pdf
-            from .sheet_typst import write_previews
-
-            pdf.compile_here()       # beside the compiling process (watch), not through it
-            write_previews(items, aside)
-
-        try:
-            stop = start_apart(draw, "the drawing sheets' previews")
-        except BaseException:
-            shutil.rmtree(aside, ignore_errors=True)
-            raise
-
-        def finish(kill: bool = False) -> None:
-            try:
-                stop(kill)
-                if not kill:      # into the report's figures (atomic, as every output)
-                    for _, png, _ in items:
-                        write_bytes(png, (aside / Path(png).name).read_bytes())
-            finally:
-                shutil.rmtree(aside, ignore_errors=True)
-
-        return finish
-
-    if later is not None:
-        collect.previews = previews
     return collect
 
 
 def write_all(builders: list, brief, folder: Path, fig_dir: Path, lang: str,
               formats: tuple[str, ...], progress: Callable[[str], None] | None = None,
-              on_warning: Callable[[str], None] | None = None,
-              previews_later: list | None = None) -> list[SheetFiles]:
+              on_warning: Callable[[str], None] | None = None) -> list[SheetFiles]:
     """Build and write the sheets of ``builders`` (see :func:`_builders`) here and now;
     return what was written. A diagram that cannot be drawn is left out with a line to
-    ``on_warning`` (stderr without it). ``previews_later``: see
-    :func:`.sheet_typst.write_sheets`."""
+    ``on_warning`` (stderr without it)."""
     warn = on_warning or _printer(lang)
     from .sheet_typst import write_sheets
 
@@ -315,5 +258,5 @@ def write_all(builders: list, brief, folder: Path, fig_dir: Path, lang: str,
                               preview.relative_to(rel).as_posix(),
                               None if pdf is None else pdf.relative_to(rel).as_posix(),
                               None if dxf is None else dxf.relative_to(rel).as_posix()))
-    write_sheets(jobs, previews_later)
+    write_sheets(jobs)
     return out
