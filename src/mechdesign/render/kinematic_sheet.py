@@ -469,6 +469,17 @@ def lockbeam_layout(results, found, phi: float = 0.0) -> dict:
             "sigma_pin": pin_cam.grid.rotation}
 
 
+
+def _cam_disc(view, placer, profile, o) -> None:
+    """A disc cam on its fixed pivot o: the closed profile, the frame symbol and the pin, the
+    pivot and the profile's outline (every ~120th point) kept clear of labels."""
+    view.polyline(np.append(profile, profile[:1]), "OUTLINE")
+    ground(view, o, 7.0)
+    pin(view, o)
+    placer.block(view.p(o), 6.0)
+    for z in profile[:: max(len(profile) // 120, 1)]:
+        placer.block(view.p(complex(z)), 0.6)
+
 def lockbeam_diagram(results, found, info: TitleInfo, lang: str) -> Sheet:
     """The whole lock-beam machine (see :func:`lockbeam_layout`) at φ = 0 on one A3 sheet
     at one length scale; the main shaft's link (the feed crank and both cams, keyed to one
@@ -486,12 +497,7 @@ def lockbeam_diagram(results, found, info: TitleInfo, lang: str) -> Sheet:
         # the positioning cam: profile, centre, translating roller follower in its guide
         pd = L["pin"]
         o = pd["O"]
-        view.polyline(np.append(pd["profile"], pd["profile"][:1]), "OUTLINE")
-        ground(view, o, 7.0)
-        pin(view, o)
-        placer.block(view.p(o), 6.0)
-        for z in pd["profile"][:: max(len(pd["profile"]) // 120, 1)]:
-            placer.block(view.p(complex(z)), 0.6)
+        _cam_disc(view, placer, pd["profile"], o)
         view.circle(pd["B"], pd["rr"], "OUTLINE")
         pin(view, pd["B"])
         view.line(pd["B"] + 1j * pd["rr"], pd["stem_top"], "OUTLINE")
@@ -514,12 +520,7 @@ def lockbeam_diagram(results, found, info: TitleInfo, lang: str) -> Sheet:
         bd = L["bend"]
         o = bd["O"]
         f = bd["four"]
-        view.polyline(np.append(bd["profile"], bd["profile"][:1]), "OUTLINE")
-        ground(view, o, 7.0)
-        pin(view, o)
-        placer.block(view.p(o), 6.0)
-        for z in bd["profile"][:: max(len(bd["profile"]) // 120, 1)]:
-            placer.block(view.p(complex(z)), 0.6)
+        _cam_disc(view, placer, bd["profile"], o)
         _omega_arrow(s, view, o, float(np.max(np.abs(bd["profile"] - o))), bd["sigma"] > 0, placer, lab)
         view.circle(bd["C"], bd["rr"], "OUTLINE")
         lever = [f["G0"], bd["C"], f["G"], f["G0"]]
