@@ -375,6 +375,8 @@ def linkage_context(model, k, f_, fly, v, figures: dict, lang: str,
         "sense": _("clockwise") if model.crank_omega < 0 else _("counter-clockwise"),
         "output": md_names(model.output.name),
         "unit_s": units[0], "unit_v": units[1], "unit_a": units[2],
+        # a slider's stroke, a rocker's swing
+        "stroke_word": _("Stroke") if k.output_unit == "m" else _("Swing"),
         "stroke": f(k.stroke * scale, 2), "K": time_ratio(k.time_ratio),
         "theta": f(180 * (k.time_ratio - 1) / (k.time_ratio + 1), 2),
         "working_span": f(k.working_span * DEG, 2),
