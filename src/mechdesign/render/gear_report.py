@@ -53,13 +53,13 @@ def gear_context(g, lang: str, figures: dict[str, str]) -> dict:
     pair_rows = [
         [_("standard centre distance"), "$a$", "$m(z_1+z_2)/2$", f(p.a * MM, 3), "mm"],
         [_("working pressure angle"), "$\\alpha'$", "$\\mathrm{inv}\\,\\alpha' = \\frac{2(x_1+x_2)\\tan\\alpha}{z_1+z_2}+\\mathrm{inv}\\,\\alpha$",
-         f(p.alpha_work * DEG, 4), "°"],
+         f(p.alpha_work * DEG, 2), "°"],        # angles to 0.01° (the sheet too)
         [_("working centre distance"), "$a'$", "$a\\cos\\alpha/\\cos\\alpha'$", f(p.a_work * MM, 3), "mm"],
         [_("clearance"), "$c$", "$a'-r_{a1}-r_{f2}$", f(p.clearance * MM, 3), "mm"],
-        [_("ratio"), "$i_{12}$", "$z_2/z_1$", f(p.ratio, 4), "—"],
+        [_("ratio"), "$i_{12}$", "$z_2/z_1$", sig(p.ratio, 4), "—"],
         [_("length of action"), "$\\overline{B_1B_2}$",
          "$\\varepsilon\\, p_b$", f(p.action_length * MM, 3), "mm"],
-        [_("contact ratio"), "$\\varepsilon_\\alpha$", _("see below"), f(p.contact_ratio, 4), "—"],
+        [_("contact ratio"), "$\\varepsilon_\\alpha$", _("see below"), f(p.contact_ratio, 3), "—"],   # as eq. and sheet
     ]
     tw = np.tan(p.alpha_work)
     b1b2 = g.drawing.action_length   # |B1B2| from the points on the line of action

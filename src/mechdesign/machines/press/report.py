@@ -100,8 +100,8 @@ def synthesis_context(s, p) -> dict:
         ["$L_{AD}$", N_("frame"), f(d, 2), "mm"],
         ["$L_{BS_2}$", N_("coupler CoM"), f(s.coupler_com * mm, 2), "mm"],
         ["$L_{DS_3}$", N_("rocker CoM"), f(s.rocker_com * mm, 2), "mm"],
-        ["$\\theta$", N_("extreme-position angle"), f(theta, 3), "°"],
-        ["$K$", N_("time ratio"), f(s.time_ratio, 4), "—"],
+        ["$\\theta$", N_("extreme-position angle"), f(theta, 2), "°"],   # as in eq. and text
+        ["$K$", N_("time ratio"), time_ratio(s.time_ratio), "—"],
     ]
     return {"eq": eq, "rows": rows, "gmin": f(min(g1, g2), 2)}
 
