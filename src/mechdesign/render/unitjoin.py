@@ -5,7 +5,8 @@ The report's Markdown writes a value with its unit as words ("α5 = -4.27 rad/s�
 filter, run by both conversions (Markdown → typst, :mod:`.pdf`; Markdown → docx,
 :mod:`.docx`), that turns the space between a number and the unit word after it into a
 no-break space (U+00A0: pandoc's typst writer writes it as ``~``, Word keeps the character),
-and likewise the space after a relation sign ("=", "≈", "≤", "≥") before a number and the
+and likewise the space after a relation sign ("=", "≈", "≤", "≥") before a number, the space
+before a relation sign written alone (the symbol stays with its "="), and the
 spaces around "×" between two numbers ("1.4 × 10⁻¹⁴ mm"). For typst, which breaks an inline
 formula after its relation ("$R_{BV} = -1978.4$ N" as "R_BV =" | "−1978.4 N"), a short
 inline formula holding a relation is set in a box (``#box($…$);``), unbroken. It works on pandoc's document
@@ -72,6 +73,11 @@ end
 local function joined(a, b)
   if a == nil or b == nil then return false end
   if ends_with_number(a) and starts_with_unit(b) then return true end
+  -- a relation sign written alone stays with the symbol before it ("ω₆" | "= 0 rad/s":
+  -- lines break after a relation, never before it)
+  for _, r in ipairs(RELATIONS) do
+    if b == r then return true end
+  end
   if starts_with_number(b) then
     -- "=" alone, or ending a word (a closing full-width parenthesis and "=")
     for _, r in ipairs(RELATIONS) do
@@ -88,8 +94,33 @@ local function times(inlines, i)
          and inlines[i + 2] ~= nil and inlines[i + 2].t == "Space"
 end
 
+local WJ = utf8.char(0x2060)
+local function glued_relation(t)
+  -- "（构件 4）=" ending a word: typst may break between the closing full-width bracket
+  -- and the "=" (the value then starts its line with "="); a word joiner keeps them
+  -- together (only after "）": other text, the user's "<label>" say, is left as written)
+  for _, r in ipairs(RELATIONS) do
+    if #t > #r + 2 and t:sub(-#r) == r and t:sub(-#r - 3, -#r - 1) == "）" then
+      return t:sub(1, -#r - 1) .. WJ .. r
+    end
+  end
+  return nil
+end
+
 local function Inlines(inlines)
   local changed = false
+  if FORMAT:match("typst") then
+    for i = 1, #inlines do
+      local el = inlines[i]
+      if el.t == "Str" then
+        local g = glued_relation(el.text)
+        if g ~= nil then
+          inlines[i] = pandoc.Str(g)
+          changed = true
+        end
+      end
+    end
+  end
   for i = 2, #inlines - 1 do
     local el = inlines[i]
     if el.t == "Space" then
