@@ -256,3 +256,31 @@ def test_angle_figure_fits_its_curves_and_caption_names_them(example_results, mo
     assert kinds == {"pressure"}
     assert _angles_caption(k, "en") == "Pressure angle against the crank angle"
     assert _angles_caption(k, "zh") == "压力角随曲柄转角的变化"
+
+
+def test_tick_labels_write_the_true_minus_sign():
+    """Issue 19 point 5: a figure's negative tick labels print "−" (U+2212) like the text, not
+    the hyphen-minus; the shipped font has the glyph (no missing-glyph fallback)."""
+    import warnings
+
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    from matplotlib import font_manager
+    from matplotlib.ft2font import FT2Font
+
+    from mechdesign.render.fonts import configure_matplotlib
+
+    configure_matplotlib()
+    fig, ax = plt.subplots()
+    ax.plot([-20, 20], [-5, 5])
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")           # a missing glyph would warn
+        fig.canvas.draw()
+    labels = [t.get_text() for t in ax.get_xticklabels() if t.get_text()]
+    plt.close(fig)
+    assert any(s.startswith("\u2212") for s in labels), labels
+    assert not any(s.startswith("-") for s in labels), labels
+    family = matplotlib.rcParams["font.sans-serif"][0]
+    path = font_manager.findfont(font_manager.FontProperties(family=family))
+    assert 0x2212 in FT2Font(path).get_charmap()

@@ -157,5 +157,6 @@ def configure_matplotlib() -> None:
 
     matplotlib.rcParams["font.family"] = "sans-serif"
     matplotlib.rcParams["font.sans-serif"] = [family, "DejaVu Sans"]
-    matplotlib.rcParams["axes.unicode_minus"] = False
+    # tick labels with the true minus sign (U+2212), like the text; the shipped font has it
+    matplotlib.rcParams["axes.unicode_minus"] = True
     matplotlib.rcParams["mathtext.fontset"] = "dejavusans"
