@@ -563,3 +563,23 @@ def test_formulas_convert_with_pandoc():
     for c in _all_checks():
         out = pypandoc.convert_text(f"${tex.check_formula(c)}$", "typst", format="markdown")
         assert out.strip().startswith("$") and "\\frac" not in out and "\\sqrt" not in out, out
+
+
+def test_shaft_bending_formula_writes_a_rounding_residue_of_the_moment_as_zero():
+    """An overhung end carries the torque and no bending moment; the statics leave a residue
+    (7.1e-12 N·m) that the formula wrote as "(7.105 × 10⁻¹²)²" (slotter, shaper reviews). The
+    σ_ca formula writes it 0; a real moment stays."""
+    import math
+
+    from mechdesign.core.strength import Check
+    from mechdesign.render.strength_tex import check_formula
+
+    def formula(M):
+        T, d = 22.966, 0.014
+        s = math.sqrt(M ** 2 + (0.6 * T) ** 2) / (0.1 * d ** 3)
+        return check_formula(Check(key="shaft_bending", name="shaft", symbol="\\sigma_{ca}", value=s,
+                                   allowable=60e6, unit="MPa", sense="le", passed=s <= 60e6,
+                                   inputs={"M": M, "T": T, "alpha": 0.6, "d": d}))
+
+    assert "{0^2 +" in formula(7.105e-15) and "10^{-" not in formula(7.105e-15)
+    assert "{36.21^2 +" in formula(36.21) or "36210" in formula(36.21)

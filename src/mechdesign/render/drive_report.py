@@ -318,7 +318,7 @@ def _belt_design(r, g, title: str, _) -> dict:
               "and $d_{{d1}}$ (table 8-4), $\\Delta P_0$ linearly in $n_1$ (table 8-5), "
               "$K_\\alpha$ and $K_L$ from tables 8-6 and 8-2; the selection chart's "
               "boundaries are read off the figure and some table values could not be checked "
-              "against the book (stated in data/belts.yaml).", a0=f(a0, 0),
+              "against the book: check them in the handbook before handing in.", a0=f(a0, 0),
               a0_min=f(b.a0_min * MM, 0), a0_max=f(b.a0_max * MM, 0), a_min=f(b.a_min * MM, 0),
               a_max=f(b.a_max * MM, 0))]
     rows = [[_("Section"), b.section, "—"],

@@ -141,7 +141,10 @@ def _sq(t: str) -> str:
 
 def _shaft_bending(c: Check) -> str:
     i = c.inputs
-    numbers = (rf"\frac{{\sqrt{{{_sq(num(i['M'] * N_MM))}^2 + ({num(i['alpha'])} \times {num(i['T'] * N_MM)})^2}}}}"
+    # the section's bending moment; a rounding residue of zero beside the torque (an
+    # overhung end, where M is 0: "7.105 × 10⁻¹²") is written 0
+    M = i["M"] if abs(i["M"]) > 1e-9 * abs(i["alpha"] * i["T"]) else 0.0
+    numbers = (rf"\frac{{\sqrt{{{_sq(num(M * N_MM))}^2 + ({num(i['alpha'])} \times {num(i['T'] * N_MM)})^2}}}}"
                rf"{{0.1 \times {num(i['d'] * MM)}^3}}")
     return rf"\sigma_{{ca}} = \frac{{\sqrt{{M^2 + (\alpha T)^2}}}}{{0.1 d^3}} = {numbers}" + _tail(c, r"[\sigma_{-1b}]")
 
