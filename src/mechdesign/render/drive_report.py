@@ -79,7 +79,19 @@ def drive_context(d, lang: str, figures: dict[str, str], machine_power_eq: str |
     shaft_rows = [[_shaft_name(s.index, len(d.shafts) - 1, _.zh), f(s.speed_rpm, 2), f(s.power / 1e3, 4),
                    f(s.torque, 3, group=True)] for s in d.shafts]
     reason = _(_REASONS[d.choice.reason])
+    # the allocation's rules that apply to this drive's free stages (core.drive.allocate_ratios)
+    free = [st for st in d.stages if not st.fixed and st.type != "coupling"]
+    notes = []
+    if any(st.type == "belt" for st in free) and any(st.type in ("spur", "helical", "worm") for st in free):
+        notes.append(_("a belt below the gear stage it drives"))
+    if any(b.index == a.index + 1 and a.type in ("spur", "helical") and b.type in ("spur", "helical")
+           for a, b in zip(free, free[1:])):
+        notes.append(_("a two-stage expanded reducer splits by $i_1 = \\sqrt{1.4 i}$"))
+    alloc_notes = _(" ({notes})", notes=_("; ").join(notes)) if notes else ""
+    worm = _("; the worm's from its lead angle and friction angle") \
+        if any(st.type == "worm" for st in d.stages) else ""
     return {
+        "alloc_notes": alloc_notes, "worm_eff": worm,
         "eq": eq, "cand_rows": cand_rows, "stage_rows": stage_rows, "shaft_rows": shaft_rows,
         "reason": reason,
         "motor": {"name": m.designation, "P": f(m.power / 1e3, 2), "sync": f(m.synchronous_rpm, 0),

@@ -96,11 +96,12 @@ end
 
 local WJ = utf8.char(0x2060)
 local function glued_relation(t)
-  -- "（构件 4）=" ending a word: typst may break between the closing full-width bracket
-  -- and the "=" (the value then starts its line with "="); a word joiner keeps them
-  -- together (only after "）": other text, the user's "<label>" say, is left as written)
+  -- "(link 4)=" written with full-width brackets, ending a word: typst may break between
+  -- the closing full-width bracket (U+FF09) and the "=" (the value then starts its line
+  -- with "="); a word joiner keeps them together (only after U+FF09: other text, the
+  -- user's "<label>" say, is left as written)
   for _, r in ipairs(RELATIONS) do
-    if #t > #r + 2 and t:sub(-#r) == r and t:sub(-#r - 3, -#r - 1) == "）" then
+    if #t > #r + 2 and t:sub(-#r) == r and t:sub(-#r - 3, -#r - 1) == "\239\188\137" then
       return t:sub(1, -#r - 1) .. WJ .. r
     end
   end
