@@ -226,3 +226,25 @@ def test_crank_rocker_runs_the_shared_linkage_stages(example_results):
         assert abs(abs(pos.velocity.rates["4"]) - abs(w4)) <= 0.02 * abs(w4) + mu / d.rocker
         assert abs(abs(pos.velocity.rates["3"]) - abs(w3)) <= 0.02 * abs(w3) + mu / d.coupler
         assert pos.velocity.rates["4"] == pytest.approx(w4, rel=0.05)
+
+
+def test_force_tables_list_given_forces_with_their_given_values(tmp_path):
+    """The force polygon's table lists a given force (√) with the value the text gives, drawn
+    to the nearest 0.5 mm; it had printed the value read back from the rounded length (press:
+    'G2 26.5 662' beside 'G2 = 660 N', a teacher's review). Checked on the weights, which are
+    the same at every position."""
+    import re
+
+    from mechdesign.runner import run_one
+    from tests.test_finding_codes import DESIGNS
+
+    out = run_one(DESIGNS / "press.yaml", out_dir=tmp_path / "p", lang="en", formats=("md",))
+    assert out.exit_code == 0, out.message
+    md = (tmp_path / "p" / "report.md").read_text(encoding="utf-8")
+    number = r"([\d.]+(?:[ \u2009\u00a0]\d{3})*)"
+    given = {m[1]: float(re.sub(r"\s", "", m[2]))
+             for m in re.finditer(r"\$(G_\{\d+\})\$ \(link \d+\) = " + number + " N", md)}
+    rows = re.findall(r"^\|[^|\n]*\| \$(G_\{\d+\})\$ \| √ \| ([\d.]+) \| " + number + r" \|$", md, flags=re.M)
+    assert len(given) >= 3 and len(rows) >= 6, (given, rows)
+    for name, length, value in rows:
+        assert float(re.sub(r"\s", "", value)) == given[name], (name, length, value)

@@ -524,7 +524,11 @@ def _forces(pos, lang: str) -> list[dict]:
                                 f"{u} = {_num(m.result)}" r"\ \mathrm{N\cdot m}", None))
         closing = " + ".join(r"\vec " + sym(v.symbol) for v in fg.vectors
                              if v.kind not in ("total", "internal")) + " = 0"
-        rows = [[f"${sym(v.symbol)}$", "√" if v.known else "?", _mm(v.length), _numg(v.read)]
+        # a given force (a weight, an inertia force, the resistance) is listed with its given
+        # value, drawn to the nearest 0.5 mm; what is read off the polygon is the rest
+        given = {ld.name: abs(ld.value) for lds in fg.loads.values() for ld in lds}
+        rows = [[f"${sym(v.symbol)}$", "√" if v.known else "?", _mm(v.length),
+                 _numg(given[v.symbol] if v.known and v.symbol in given else v.read)]
                 for v in fg.vectors]
         loads = [[f"${sym(ld.name)}$", link, _numg(abs(ld.value))]
                  for link, lds in fg.loads.items() for ld in lds if abs(ld.value) > 0]
