@@ -66,11 +66,11 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
         [f"{md_text(label)} α/°" for label, _ in p.followers]
     rows = []
     for i, delta in enumerate(d.table_delta):
-        rows.append([f(delta * DEG, 1)] + [f(t.s[i] * MM, 4) for t in d.tables] +
+        rows.append([f(delta * DEG, 1)] + [f(t.s[i] * MM, 2) for t in d.tables] +    # lengths to 0.01 mm
                     [f(t.pressure_angle[i] * DEG, 2) for t in d.tables])
     qrows = []
     for i, delta in enumerate(p.query_angles):
-        qrows.append([f(delta * DEG, 1)] + [f"{f(q.s[i] * MM, 3)} / {f(q.pressure_angle[i] * DEG, 2)}°"
+        qrows.append([f(delta * DEG, 1)] + [f"{f(q.s[i] * MM, 2)} / {f(q.pressure_angle[i] * DEG, 2)}°"
                                             for q in d.queries])
     return {
         "meta": md_meta(brief.report, lang), "fig": figures, "R": f(R, 1), "ecc": f(ecc, 1),
