@@ -595,8 +595,8 @@ def shaft_designs(dp, designs, shafts, peak_factor, peak_from_shaft, kinds,
                     if free_s:
                         ds = round(max(dj + 0.005, ds + 0.005 if not free_j else dj + 0.005), 6)
                     steps.append(("in", old, (dj, ds), _kinds(ev)))
-                    if dj > 0.130 + 1e-9 or ds > 0.130 + 1e-9:
-                        break           # the given journal or seat stays: grow no further
+                    if dj > 0.130 + 1e-9 or (not free_j and ds > 0.140 + 1e-9):
+                        break           # a given journal: the seat grows no further than a free one
                     continue
                 break
             return ev, (d_end, dj, ds), steps
