@@ -68,3 +68,13 @@ def test_no_stage_or_render_module_repeats_the_significant_digits_rule():
     found = [x for p in [*sorted((SRC / "stages").glob("*.py")), SRC / "render" / "fmt.py"]
              for x in _defines_digits(p)]
     assert not found, found
+
+
+def test_speed_fluctuation_as_the_course_writes_it():
+    """[δ] as 1/N where 1/δ is whole (the course's 1/40, 1/25), else the decimal given:
+    shaper_lengths' 0.15 printed '1/6.667' (review)."""
+    from mechdesign.render.fmt import fluctuation
+
+    assert fluctuation(1 / 40) == "1/40" and fluctuation(0.025) == "1/40"
+    assert fluctuation(0.04) == "1/25" and fluctuation(0.05) == "1/20"
+    assert fluctuation(0.15) == "0.15" and fluctuation(0.012) == "0.012"

@@ -101,6 +101,16 @@ def percent(x: float) -> str:
     return sig(x, 2) if abs(x) < 1 else f(x, 1)
 
 
+def fluctuation(delta: float) -> str:
+    """The allowed speed fluctuation [δ] as the course writes it: ``1/N`` where 1/δ is a whole
+    number (0.025 → ``1/40``), else the decimal as given (0.15 → ``0.15``, never
+    ``1/6.667``)."""
+    inv = 1.0 / delta
+    if abs(inv - round(inv)) < 1e-9 * inv:
+        return f"1/{round(inv)}"
+    return f"{delta:.4g}"
+
+
 _SUPERSCRIPT = str.maketrans("-0123456789", "\u207b\u2070\u00b9\u00b2\u00b3\u2074\u2075\u2076\u2077\u2078\u2079")
 
 

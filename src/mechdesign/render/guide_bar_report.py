@@ -5,7 +5,7 @@ from __future__ import annotations
 import numpy as np
 
 from ..i18n import N_, Msg, tr
-from .fmt import f, sig, time_ratio
+from .fmt import f, fluctuation, sig, time_ratio
 from .labels import InContext, pgettext
 
 DEG = 180.0 / np.pi
@@ -152,7 +152,7 @@ def data_rows(b, p, ram_zh: str, rod: str, rod_ratio: float, ram_com: list,
         ["$F_c$", f"{cut_zh} / cutting force", f(ld.cutting_force_Fc_N, 0), "N"],
         cut_line,
         *([["$z_1, z_2$", _both(N_("gear teeth")), f"{p.z1}, {p.z2}", "—"]] if p.z1 is not None else []),
-        ["$[\\delta]$", _both(N_("speed fluctuation")), f"1/{1 / p.fluctuation:.4g}", "—"],
+        ["$[\\delta]$", _both(N_("speed fluctuation")), fluctuation(p.fluctuation), "—"],
     ]
 
 

@@ -14,7 +14,7 @@ import numpy as np
 
 from ..i18n import N_, tr
 from . import figures as fig
-from .fmt import e, f, force_unit, md_text, mpl_text, sig, tex_name, time_ratio
+from .fmt import e, f, fluctuation, force_unit, md_text, mpl_text, sig, tex_name, time_ratio
 from .fmt import verdict as fmt_verdict
 from .label_layout import Label, place
 from .labels import LabelTable, md_names, md_point, mpl_names, mpl_point
@@ -403,7 +403,7 @@ def linkage_context(model, k, f_, fly, v, figures: dict, lang: str,
         ctx["fly"] = {
             "n": f(fly.shaft_speed_rpm, 2), "dw": sig(fly.max_energy_swing),
             "at_min": f(fly.phase_at_min * DEG, 1), "at_max": f(fly.phase_at_max * DEG, 1),
-            "delta": f"1/{1 / fly.fluctuation:.4g}", "jf": sig(fly.inertia),
+            "delta": fluctuation(fly.fluctuation), "jf": sig(fly.inertia),
             "eq": (rf"J_F = \frac{{900\,\Delta W_{{max}}}}{{\pi^2 n^2 [\delta]}} = \frac{{900 \times "
                    rf"{sig(fly.max_energy_swing, group=False)}}}{{\pi^2 \times {f(fly.shaft_speed_rpm, 2)}^2 \times "
                    rf"{f(fly.fluctuation, 4)}}} = {sig(fly.inertia, group=False)}\ \text{{kg·m}}^2"),

@@ -13,7 +13,7 @@ import numpy as np
 
 from ...i18n import N_, tr
 from ...render import figures as fig
-from ...render.fmt import e, f, md_meta, md_text, sig
+from ...render.fmt import e, f, md_meta, md_text, sig, fluctuation
 from ...render.fmt import number, time_ratio, verdict
 from ...render.labels import pgettext, translated
 from ...stages.drive import shaft_numeral
@@ -205,7 +205,7 @@ def _choice_rows(b, p, r, _) -> list[list[str]]:
          f"{f(ms.coupler_AB_kg, 0)}, {f(ms.toggle_CB_kg, 0)}, {f(ms.toggle_BD_kg, 0)} kg",
          _("estimated from the sections")],
         ["$[\\delta]$", _("allowed speed fluctuation"),
-         f"1/{1 / p.fluctuation:.4g}",
+         fluctuation(p.fluctuation),
          _("presses 1/7–1/20 (textbook table); die cutting is not sensitive to the speed "
            "fluctuation")],
         ["—", _("flywheel"), _shaft(p.flywheel_shaft, len(b.drive.stages), _),
@@ -400,7 +400,7 @@ def _flywheel(r, p, b, _) -> dict:
     }
     return {"eq": eq, "shaft": shaft, "n": f(fl.shaft_speed_rpm, 2), "ratio": sig(fl.speed_ratio),
             "dw": f(fl.max_energy_swing, 1), "at_min": _deg(fl.phase_at_min, 1),
-            "at_max": _deg(fl.phase_at_max, 1), "delta": f"1/{1 / fl.fluctuation:.4g}",
+            "at_max": _deg(fl.phase_at_max, 1), "delta": fluctuation(fl.fluctuation),
             "jf": f(fl.inertia, 3), "jf_crank": f(fl.inertia_on_crank, 1),
             "D": f(fl.rim.diameter * MM, 0), "b": f(fl.rim.width * MM, 1),
             "Hr": f(fl.rim.height * MM, 1), "m": f(fl.rim.rim_mass, 1),

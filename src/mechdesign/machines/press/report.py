@@ -8,7 +8,7 @@ import numpy as np
 
 from ...i18n import N_, tr
 from ...render import guide_bar_report as gb_report
-from ...render.fmt import e, f, md_meta, md_text, time_ratio
+from ...render.fmt import e, f, md_meta, md_text, time_ratio, fluctuation
 from ...render.fmt import verdict
 from ...render.linkage_report import linkage_context, verification_rows
 
@@ -41,7 +41,7 @@ def _data_rows(b, p, _) -> list[list[str]]:
         ["$J_{S_3}$", _("rocker inertia"), f(ms.rocker_J_S3_kgm2, 3), "kg·m²"],
         ["$Q_{max}$", _("pressing force"), f(ld.pressing_force_Qmax_N, 0), "N"],
         ["$z_1, z_2$", _("gear teeth"), f"{p.z1}, {p.z2}", "—"],
-        ["$[\\delta]$", _("speed fluctuation"), f"1/{1 / p.fluctuation:.4g}", "—"],
+        ["$[\\delta]$", _("speed fluctuation"), fluctuation(p.fluctuation), "—"],
     ]
 
 

@@ -14,7 +14,7 @@ import numpy as np
 from ...render import figures as fig
 from ...render import guide_bar_report as gb_report
 from ...i18n import N_, tr
-from ...render.fmt import e, f, in_lang, md_meta, sig, time_ratio, verdict
+from ...render.fmt import e, f, in_lang, md_meta, sig, time_ratio, verdict, fluctuation
 
 DEG = 180.0 / np.pi
 
@@ -247,7 +247,7 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
             "at_min": f(fl.phase_at_min * DEG, 1), "at_max": f(fl.phase_at_max * DEG, 1),
             "D": f(fl.rim.diameter * mm, 0), "b": f(fl.rim.width * mm, 1),
             "Hr": f(fl.rim.height * mm, 1), "m": f(fl.rim.rim_mass, 2),
-            "speed": f(fl.rim.rim_speed, 2), "delta": f"1/{1 / p.fluctuation:.4g}",
+            "speed": f(fl.rim.rim_speed, 2), "delta": fluctuation(p.fluctuation),
         },
         "verify_rows": _verify_rows(v, syn, lang),
     }
