@@ -17,7 +17,7 @@ from . import figures as fig
 from .fmt import e, f, fluctuation, force_unit, md_text, mpl_text, sig, tex_name, time_ratio
 from .fmt import verdict as fmt_verdict
 from .label_layout import Label, place
-from .labels import LabelTable, md_names, md_point, mpl_names, mpl_point
+from .labels import LabelTable, md_names, md_point, mpl_names, mpl_point, point_tex
 
 DEG = 180.0 / np.pi
 
@@ -312,7 +312,8 @@ def linkage_context(model, k, f_, fly, v, figures: dict, lang: str,
     frame_rows = [[md_point(name), f(complex(z).real * 1e3, 2), f(complex(z).imag * 1e3, 2)]
                   for name, z in frame.items()]
     point_names = [p for p in k.points if p not in frame]
-    qual_head = [("$\\gamma$ " if q.kind == "transmission" else "$\\alpha$ ") + md_point(q.point)
+    # γ_B, α_D: the angle's symbol with the point as its subscript
+    qual_head = [f"$\\{'gamma' if q.kind == 'transmission' else 'alpha'}_{{{point_tex(q.point)}}}$"
                  for q in k.quality]
     kin_rows, force_rows, point_rows = [], [], []
     reaction_names = list(f_.reactions)
@@ -340,15 +341,16 @@ def linkage_context(model, k, f_, fly, v, figures: dict, lang: str,
     for q in k.quality:
         kind = _("transmission angle γ") if q.kind == "transmission" else _("pressure angle α")
         if q.kind == "transmission":
-            extreme = _("min {angle}° @ φ = {phase}°", angle=f(q.extreme * DEG, 2),
+            extreme = _("min {angle}° at φ = {phase}°", angle=f(q.extreme * DEG, 2),
                         phase=f(q.extreme_phase * DEG, 1))
             work = f(q.working_extreme * DEG, 2) + "°"
             limit = "—" if model.transmission_angle_min is None else \
                 f"≥ {f(model.transmission_angle_min * DEG, 0)}°"
         else:
-            extreme = _("max {angle}° @ φ = {phase}°", angle=f(q.extreme * DEG, 2),
+            extreme = _("max {angle}° at φ = {phase}°", angle=f(q.extreme * DEG, 2),
                         phase=f(q.extreme_phase * DEG, 1))
-            work = f"{f(q.working_extreme * DEG, 2)}° @ φ = {f(q.working_extreme_phase * DEG, 1)}°"
+            work = _("{angle}° at φ = {phase}°", angle=f(q.working_extreme * DEG, 2),
+                     phase=f(q.working_extreme_phase * DEG, 1))
             limit = "—" if model.pressure_angle_limit is None else \
                 _("≤ {limit}° (working stroke)", limit=f(model.pressure_angle_limit * DEG, 0))
         qual_rows.append([md_names(gname(q.group)), kind, md_point(q.point), extreme, work, limit])
