@@ -26,7 +26,7 @@ from . import fmt
 from .labels import LabelTable, pgettext, sheet_names, sheet_point, translated
 from .sheet import (Arc, Circle, Fill, LabelPlacer, Line, Polyline, Sheet, Text, TitleInfo, fit_height, frame, ground,
                     hatched_line, heading, pin, preferred_scale, scale_text, slider_block, table,
-                    sub, text_box, text_width, title_block_box, turn_arrow, with_subscripts)
+                    sub, text_box, title_block_box, turn_arrow, with_subscripts)
 
 MM = 1e3
 SIZE = "A3"
@@ -344,17 +344,24 @@ def _placer(s: Sheet) -> LabelPlacer:
     return placer
 
 
+def _begin(s: Sheet, info: TitleInfo, n, heading: str, placer_of=None):
+    """One try of a diagram at scale ``n``: the frame and title block with the scale, the
+    heading with the scale after it, a label placer (:func:`_placer` unless given); returns
+    (drawing area, placer, index of the first drawing entity)."""
+    area = _area(s)
+    frame(s, replace(info, scale=scale_text(n)))
+    placer = (placer_of or _placer)(s)
+    _title(s, f"{heading}  {scale_text(n)}", area)
+    return area, placer, len(s.entities)
+
+
 def linkage_diagram(found, info: TitleInfo, lang: str, label: str = "1") -> Sheet:
     """The kinematic diagram of a linkage (``found``: sheets.LinkageResults) at position
     ``label`` (see :func:`diagram_position`), at the largest preferred scale it fits."""
     lab = LABELS[lang]
     ld = _LinkageDrawing(found, label)
     for s, view, n, where in _tries(np.array(ld.pts)):
-        area = _area(s)
-        frame(s, replace(info, scale=scale_text(n)))
-        placer = _placer(s)
-        _title(s, f"{lab['diagram']}  {lab['position'].format(p=ld.label)}  {scale_text(n)}", area)
-        first = len(s.entities)
+        area, placer, first = _begin(s, info, n, f"{lab['diagram']}  {lab['position'].format(p=ld.label)}")
         numbered = ld.draw(s, view, placer, lab)
         if drawing_fits(s.entities[first:], regions(s)[where]):
             break
@@ -487,11 +494,7 @@ def lockbeam_diagram(results, found, info: TitleInfo, lang: str) -> Sheet:
     lab = LABELS[lang]
     L = lockbeam_layout(results, found)
     for s, view, n, where in _tries(np.array(L["pts"])):
-        area = _area(s)
-        frame(s, replace(info, scale=scale_text(n)))
-        placer = _placer(s)
-        _title(s, f"{lab['diagram']}  φ = 0°  {scale_text(n)}", area)
-        first = len(s.entities)
+        area, placer, first = _begin(s, info, n, f"{lab['diagram']}  φ = 0°")
         feed = L["feed"]
         feed.draw(s, view, placer, lab)
         # the positioning cam: profile, centre, translating roller follower in its guide
@@ -645,7 +648,6 @@ def crank_rocker_diagram(opt, slider, info: TitleInfo, lang: str) -> Sheet:
         ground(view, P["A"], 7.0)
         placer.block(view.p(P["A"]) - 3.5j, 5.0)
         if sliding:
-            u = 1.0
             lo = P["C"] - slider.stroke * MM - 10.0
             hi = P["C"] + 15.0
             hatched_line(view, lo - 3.5j / view.scale, hi - 3.5j / view.scale)
@@ -709,11 +711,7 @@ def cam_diagram(c, info: TitleInfo, lang: str) -> Sheet:
         top = g.outer + 35.0
         pts += [B0, complex(g.e, top)]
     for s, view, n, where in _tries(np.array(pts)):
-        area = _area(s)
-        frame(s, replace(info, scale=scale_text(n)))
-        placer = LabelPlacer(s)
-        _title(s, f"{lab['diagram']}  {scale_text(n)}", area)
-        first = len(s.entities)
+        area, placer, first = _begin(s, info, n, lab["diagram"], LabelPlacer)
         view.polyline(np.append(g.actual, g.actual[:1]), "OUTLINE")
         view.circle(0j, g.r0, "CENTER")
         ground(view, 0j, 7.0)
@@ -778,7 +776,6 @@ def disc_diagram(disc, info: TitleInfo, lang: str) -> Sheet:
     p = disc.params
     R = p.radius * MM
     cases = []
-    pitch = 0.0
     for j, (label, fol) in enumerate(p.followers):
         m = disc.motions[j]
         centre = complex(np.asarray(m.centre)[0]) * MM
@@ -792,11 +789,7 @@ def disc_diagram(disc, info: TitleInfo, lang: str) -> Sheet:
         pts += [sh + centre + R * np.exp(1j * t) for t in np.linspace(0, 2 * np.pi, 37)]
         pts += [sh + complex(x, top), sh - 10.0j]
     for s, view, n, where in _tries(np.array(pts)):
-        area = _area(s)
-        frame(s, replace(info, scale=scale_text(n)))
-        placer = LabelPlacer(s)
-        _title(s, f"{lab['diagram']}  {scale_text(n)}", area)
-        first = len(s.entities)
+        area, placer, first = _begin(s, info, n, lab["diagram"], LabelPlacer)
         ccw = getattr(p, "rotation", 1) > 0
         for j, (label, fol, centre, x, y, top) in enumerate(cases):
             sh = j * width
