@@ -14,7 +14,7 @@ import numpy as np
 
 from ..i18n import N_, tr
 from . import figures as fig
-from .fmt import e, f, fluctuation, force_unit, md_text, mpl_text, sig, tex_name, time_ratio
+from .fmt import e, f, fluctuation, force_unit, md_text, sig, tex_name, time_ratio
 from .fmt import verdict as fmt_verdict
 from .label_layout import Label, place
 from .labels import LabelTable, md_names, md_point, mpl_names, mpl_point, point_tex
@@ -243,7 +243,6 @@ def _link_rows(model, lang: str) -> list[list[str]]:
     from ..core.mechanism import RPR, RRP, RRR, Crank, LinkPoint
     from ..stages.linkage import link_name
 
-    zh = lang == "zh"
     _ = tr(lang)
     m = md_point            # a point name or a run of them ("O1A"), its digits lowered
     gn = _group_namer(model, lang)

@@ -17,8 +17,8 @@ from ..core import drive as core
 from ..core.fields import q
 from ..data import load_csv, load_yaml
 from . import drive_elements as de, drive_strength as ds
-from ..i18n import N_, tr
-from .findings import CheckNames, Finding, Msg, Named, check_name, decode, finding, zh_en
+from ..i18n import N_
+from .findings import CheckNames, Finding, Msg, Named, check_name, decode, finding
 
 
 @dataclass(frozen=True)

@@ -33,7 +33,7 @@ from ..core import belts, chains, gears, strength as st
 from ..core.fields import q
 from ..data import catalogues as cat
 from ..core.errors import Join
-from ..i18n import N_, Msg, tr
+from ..i18n import N_, Msg
 from ..numbers import grouped_digits, sig
 from . import drive_elements as de
 from .findings import Named, encode
