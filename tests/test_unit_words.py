@@ -228,5 +228,25 @@ def test_a_symbol_written_as_a_word_is_set_italic(tmp_path):
                           str(tmp_path / "in.md")], capture_output=True, check=True).stdout.decode()
     assert "系数 $K$~=~1.05" in typ and "（$phi$~=~0.0°）" in typ and "，$q$~=~10" in typ
     assert "$e$~=~0.00~mm" in typ
-    assert "μφ~=~1.25" in typ and "ab~=~3" in typ and "2z~=~4" in typ and "a b and" in typ
+    assert "μφ~=~1.25" in typ and "ab~=~3" in typ and "2z~=~4" in typ
     assert typ.count("$x$") == 1                   # a formula is not wrapped twice
+
+
+def test_a_lone_letter_in_a_sentence_is_a_symbol_but_not_a_unit(tmp_path):
+    """"刨头位移 s 由位置 1 起算": the lone letter is the displacement's symbol, italic; "5 s",
+    "residual / m" and a unit column's cell "| s |" are units, upright; "a" is the English
+    article, capitals ("A 型 V 带") belt sections."""
+    import pypandoc
+
+    from mechdesign.render.unitjoin import LUA_FILTER
+
+    (tmp_path / "f.lua").write_text(LUA_FILTER, encoding="utf-8")
+    (tmp_path / "in.md").write_text(
+        "刨头位移 s 由位置 1 起算，时间 5 s 内，选用 A 型 V 带，a b and δ 为 x\n\n"
+        "| residual / m | time | unit |\n|--|--|--|\n| 1 | 2 | s |\n", encoding="utf-8")
+    typ = subprocess.run([pypandoc.get_pandoc_path(), "--from=markdown+tex_math_dollars",
+                          "--to=typst", "--wrap=none", f"--lua-filter={tmp_path / 'f.lua'}",
+                          str(tmp_path / "in.md")], capture_output=True, check=True).stdout.decode()
+    assert "位移 $s$ 由" in typ and "$delta$ 为" in typ and "a $b$ and" in typ
+    assert "5~s 内" in typ and "A 型 V 带" in typ
+    assert "[residual / m]" in typ and "[s]" in typ

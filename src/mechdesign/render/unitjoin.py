@@ -150,6 +150,18 @@ local function italic_symbols(inlines)
         end
       end
     end
+    -- a lone lowercase or Greek letter between spaces ("刨头位移 s 由位置 1 起算"): a
+    -- symbol, unless it is a unit after a number or "/" ("5 s", "/ m") or the English
+    -- article "a"; capitals stay text ("A 型 V 带": belt sections), and so does a letter alone
+    -- in a table cell or at a line's end (a unit column's "s", "h")
+    if not done and el.t == "Str" and (el.text:match("^[b-z]$") or GREEK[el.text])
+       and inlines[i - 1] ~= nil and inlines[i - 1].t == "Space"
+       and inlines[i + 1] ~= nil and inlines[i + 1].t == "Space"
+       and not (text_of(inlines[i - 2]) ~= nil and (ends_with_number(text_of(inlines[i - 2]))
+                                                    or text_of(inlines[i - 2]):match("/$"))) then
+      out[#out + 1] = pandoc.Math("InlineMath", el.text)
+      changed, done = true, true
+    end
     if not done then out[#out + 1] = el end
   end
   if changed then return out end
