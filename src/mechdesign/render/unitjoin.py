@@ -108,8 +108,72 @@ local function glued_relation(t)
   return nil
 end
 
+-- a quantity's symbol written as a word before its relation ("K = 1.05", "（φ = 0.0°）") is
+-- set as a formula, italic as in the equations (ISO 80000-1: quantity symbols italic);
+-- a letter that ends a word ("ab", "μφ", "2z") is left alone
+local GREEK = {}
+for _, c in utf8.codes("αβγδεζηθικλμνξπρστυφχψωΓΔΘΛΞΠΣΦΨΩ") do GREEK[utf8.char(c)] = true end
+
+local function symbol_split(t)
+  local last = utf8.offset(t, -1)
+  if last == nil then return nil end
+  local letter, prefix = t:sub(last), t:sub(1, last - 1)
+  if not (letter:match("^[A-Za-z]$") or GREEK[letter]) then return nil end
+  if prefix ~= "" then
+    local p = utf8.offset(prefix, -1)
+    if p == nil then return nil end
+    local before = prefix:sub(p)
+    if before:match("^[%w_$\\%-+*/^.]$") or GREEK[before] or before == "\226\136\146" then
+      return nil
+    end
+  end
+  return prefix, letter
+end
+
+local function italic_symbols(inlines)
+  local out, changed = {}, false
+  for i = 1, #inlines do
+    local el, rel = inlines[i], inlines[i + 2]
+    local done = false
+    if el.t == "Str" and inlines[i + 1] ~= nil and inlines[i + 1].t == "Space"
+       and rel ~= nil and rel.t == "Str" then
+      local is_rel = false
+      for _, r in ipairs(RELATIONS) do
+        if rel.text == r then is_rel = true end
+      end
+      if is_rel then
+        local prefix, letter = symbol_split(el.text)
+        if letter ~= nil then
+          if prefix ~= "" then out[#out + 1] = pandoc.Str(prefix) end
+          out[#out + 1] = pandoc.Math("InlineMath", letter)
+          changed, done = true, true
+        end
+      end
+    end
+    -- a lone lowercase or Greek letter between spaces ("刨头位移 s 由位置 1 起算"): a
+    -- symbol, unless it is a unit after a number or "/" ("5 s", "/ m") or the English
+    -- article "a"; capitals stay text ("A 型 V 带": belt sections), and so does a letter alone
+    -- in a table cell or at a line's end (a unit column's "s", "h")
+    if not done and el.t == "Str" and (el.text:match("^[b-z]$") or GREEK[el.text])
+       and inlines[i - 1] ~= nil and inlines[i - 1].t == "Space"
+       and inlines[i + 1] ~= nil and inlines[i + 1].t == "Space"
+       and not (text_of(inlines[i - 2]) ~= nil and (ends_with_number(text_of(inlines[i - 2]))
+                                                    or text_of(inlines[i - 2]):match("/$"))) then
+      out[#out + 1] = pandoc.Math("InlineMath", el.text)
+      changed, done = true, true
+    end
+    if not done then out[#out + 1] = el end
+  end
+  if changed then return out end
+  return nil
+end
+
 local function Inlines(inlines)
   local changed = false
+  local italic = italic_symbols(inlines)
+  if italic ~= nil then
+    inlines, changed = italic, true
+  end
   if FORMAT:match("typst") then
     for i = 1, #inlines do
       local el = inlines[i]
@@ -159,7 +223,26 @@ local function boxed(el)
   return nil
 end
 
+-- "min" and "max" in a subscript are words, set upright as in the textbook (γ_min, s_max):
+-- "_{min}", "_{min,1}", "_{E,max}" become "\\min", which both writers set upright
+local UPRIGHT_WORDS = {"min", "max"}
+
+local function upright_subscripts(el)
+  local t, n = el.text, 0
+  for _, w in ipairs(UPRIGHT_WORDS) do
+    local c
+    t, c = t:gsub("_{" .. w .. "([},])", "_{\\" .. w .. "%1")
+    n = n + c
+    t, c = t:gsub(",(" .. w .. ")}", ",\\%1}")
+    n = n + c
+  end
+  if n == 0 then return nil end
+  el.text = t
+  return el
+end
+
 return {
+  { Math = upright_subscripts },
   { Inlines = Inlines },
   { Math = boxed },
 }

@@ -23,7 +23,7 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
     return out
 
 
-_CAM_NOTE = N_("Every item is recomputed in this run on the 0.1° design grid without the formula "
+_CAM_NOTE = N_("Every item is recomputed on the 0.1° design grid without the formula "
                "it checks: velocity and acceleration against central differences of the "
                "displacement (velocity), whose truncation error scales with the square of the "
                "step (stencils across an impact are left out); the pressure angle from the "

@@ -34,7 +34,7 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
             **verification_context(r["drive"], r.get("drive_verification"), lang)}
 
 
-_NOTE = N_("Each item is recomputed in this run by its definition: every shaft's speed, power "
+_NOTE = N_("Each item is recomputed by its definition: every shaft's speed, power "
            "and torque from the shaft before it (no bearing loss between the motor and the first "
            "shaft, one pair of rolling bearings on every shaft after it) against the designed "
            "shaft table; the power balance checks that the power reaching the machine is exactly "
