@@ -268,7 +268,7 @@ def test_cycle_rows_match_the_cam_the_gear_and_the_simulated_platen(shipped):
     moving = g.driven_motion(phase).moving
     assert np.array_equal(moving, cy.moving_at(diagram.actuator("chain"), phase))
     clear = k.s[:n] < k.stroke - p.clearance
-    assert np.sum(clear != (cy.state_at(diagram.actuator("platen"), phase) == "dwell_low")) <= 2
+    assert np.sum(clear != (cy.state_at(diagram.actuator("platen"), phase) == "clear")) <= 2
     # the chain row's motion angle is the incomplete gear's 360° z1'/z1
     move = cy.interval_of(diagram.actuator("chain"), "move")
     assert move.span == pytest.approx(TWO_PI * g.teeth / g.z1)

@@ -21,7 +21,9 @@ LABELS = LabelTable({
 
 #: Fill colour of each state of mechdesign.core.cycle.STATES.
 COLOURS = {"rise": "#5B8FD0", "return": "#E8955A", "dwell_high": "#9CCB9C",
-           "dwell_low": "#D9D9D9", "move": "#8C7BC8", "dwell": "#ECECEC"}
+           "dwell_low": "#D9D9D9", "move": "#8C7BC8", "dwell": "#ECECEC",
+           # windows of an output that moves all the time: motion colours, not a rest grey
+           "work": "#2F5F9E", "clear": "#C9B8E8"}
 
 
 def window_pieces(start: float, span: float, origin: float):

@@ -24,6 +24,8 @@ STATE_NAMES = LabelTable({
     "dwell_low": N_("dwell (low)"),
     "move": N_("move"),
     "dwell": pgettext("cycle sheet", "dwell"),
+    "work": N_("moving at the working end"),
+    "clear": N_("moving clear of the work"),
 })
 LABELS = LabelTable({
     "title": N_("Motion cycle diagram (linear)"),
@@ -99,6 +101,22 @@ def _clear(box, state: str, xa: float, xb: float, yb: float, yt: float) -> bool:
     return (np.conj(u) * (corner - a)).imag >= GAP       # left of a → b, at least GAP
 
 
+def _tent(up: bool, a: float, span: float, p0: float, p1: float, xa: float, xb: float,
+          yb: float, yt: float) -> list[complex]:
+    """The piece [p0, p1]° of a phase that moves all the time (starting at a°, span°): up to
+    the bar's top and back (``up``: at the working end) or down to its foot and back (clear
+    of the work), the turn at the phase's middle, drawn over the piece's x range xa…xb."""
+    u0 = ((p0 - a) % 360.0) / span
+    u1 = u0 + (p1 - p0) / span
+    us = [u0] + ([0.5] if u0 < 0.5 < u1 else []) + [u1]
+
+    def y(u):
+        t = 1.0 - abs(2.0 * u - 1.0)
+        return yb + (yt - yb) * t if up else yt - (yt - yb) * t
+
+    return [complex(xa + (xb - xa) * (u - u0) / (u1 - u0), y(u)) for u in us]
+
+
 def _phase_label(s: Sheet, text: str, state: str, xa: float, xb: float, yb: float,
                  yt: float) -> None:
     """A phase's name inside its box (see :func:`label_box`), :data:`GAP` clear of the
@@ -159,6 +177,9 @@ def cycle_sheet(diagram, info: TitleInfo, lang: str) -> Sheet:
                     s.line(complex(xa, yb), complex(xb, yt), "CONSTRUCTION")
                 elif ph.state == "return":
                     s.line(complex(xa, yt), complex(xb, yb), "CONSTRUCTION")
+                elif ph.state in ("work", "clear"):
+                    s.polyline(_tent(ph.state == "work", a, span, p0, p1, xa, xb, yb, yt),
+                               "CONSTRUCTION")
                 _phase_label(s, phase_name(ph, lang), ph.state, xa, xb, yb, yt)
         # the boundaries' angles under the bar to 0.1° (as the table), one that would run
         # into the one before it a line lower

@@ -509,9 +509,9 @@ def platen_actuator(t: PlatenTiming) -> cy.Actuator:
     """The platen's phases from its simulated level crossings."""
     return cy.make_actuator("platen", Msg.pgettext("cycle", "lower platen"), "", t.clear_up, [
         ("rise", t.press_up - t.clear_up, Msg.pgettext("cycle phase", "rising")),
-        ("dwell_high", t.press_down - t.press_up, Msg.pgettext("cycle phase", "die cutting")),
+        ("work", t.press_down - t.press_up, Msg.pgettext("cycle phase", "die cutting")),
         ("return", t.clear_down - t.press_down, Msg.pgettext("cycle phase", "falling")),
-        ("dwell_low", t.clear_up + TWO_PI - t.clear_down, Msg.pgettext("cycle phase", "clear"))])
+        ("clear", t.clear_up + TWO_PI - t.clear_down, Msg.pgettext("cycle phase", "clear"))])
 
 
 def gripper_actuator(programme, start: float) -> cy.Actuator:
@@ -531,10 +531,10 @@ def chain_actuator(g) -> cy.Actuator:
 
 def timing_constraints(margin: float) -> list[cy.Constraint]:
     return [
-        cy.Constraint("during", ("chain", "move"), ("platen", "dwell_low"), margin,
+        cy.Constraint("during", ("chain", "move"), ("platen", "clear"), margin,
                       *zh_en.gettext("the chain moves only while the platen is clear of the die "
                                      "(at least c below its top)")),
-        cy.Constraint("during", ("platen", "dwell_high"), ("chain", "dwell"), margin,
+        cy.Constraint("during", ("platen", "work"), ("chain", "dwell"), margin,
                       *zh_en.gettext("the sheet and the chain stand still while the die cuts")),
         cy.Constraint("during", ("gripper", "rise"), ("chain", "dwell"), margin,
                       *zh_en.gettext("the grippers open only while the chain dwells")),
@@ -611,7 +611,7 @@ def verify(model: LinkageModel, d: ToggleDesign, k, v_link, amp: Amplification, 
     top_angle = float(abs(np.angle(b_top * np.exp(-1j * np.pi / 2))))
     diagram = cyc.diagram
     clear_sim = k.s[:n] < k.stroke - p.clearance
-    clear_row = cy.state_at(diagram.actuator("platen"), phase) == "dwell_low"
+    clear_row = cy.state_at(diagram.actuator("platen"), phase) == "clear"
     prog = cam.params.programme
     open_cam = prog.evaluate(np.mod(phase - cyc.gripper_start, TWO_PI)).s > 1e-9 * prog.stroke
     open_row = cy.state_at(diagram.actuator("gripper"), phase) != "dwell_low"
