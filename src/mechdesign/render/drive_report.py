@@ -45,6 +45,54 @@ _REASONS = {
 }
 
 
+#: A motor whose rated power exceeds P_d by more than this factor is explained: which
+#: smaller motors the choice passed over and why.
+OVERSIZE = 2.0
+
+
+def _oversize(d, _) -> dict | None:
+    """Why the chosen motor is much larger than P_d: the smaller motors of the other
+    synchronous speeds, each with the ratio the free stages would need against their
+    recommended and maximum ranges (data/transmissions.yaml); the smallest one the maximum
+    ranges allow, and how to choose it. None when the motor is not oversized."""
+    from ..data import load_yaml
+
+    m = d.motor
+    if d.power_required <= 0 or m.power < OVERSIZE * d.power_required:
+        return None
+    table = load_yaml("transmissions.yaml")
+    free = [st for st in d.stages if not st.fixed and st.type != "coupling"]
+    fixed = float(np.prod([st.ratio for st in d.stages if st.fixed])) if d.stages else 1.0
+    if not free:
+        return None
+    rec = (float(np.prod([table[st.kind]["ratio_recommended"][0] for st in free])),
+           float(np.prod([table[st.kind]["ratio_recommended"][1] for st in free])))
+    top = float(np.prod([table[st.kind]["ratio_max"] for st in free]))
+    names = _("; ").join(_stage_name(st.kind, _) for st in free)
+    tried = []
+    for c in d.choice.candidates:
+        if c.motor is None or c.motor.designation == m.designation or c.motor.power >= m.power:
+            continue
+        need = c.total_ratio / fixed
+        why = (_("above the maximum {top}", top=f(top, 0)) if need > top else
+               _("below the recommended range") if need < rec[0] else
+               _("beyond the recommended {lo}–{hi}, within the maximum {top}", lo=f(rec[0], 0),
+                 hi=f(rec[1], 0), top=f(top, 0)))
+        tried.append(dict(c=c, need=need, why=why, possible=rec[0] <= need <= top * (1 + d.speed_tolerance)))
+    if not tried:
+        return None
+    items = _("; ").join(_("{motor} ({P} kW, {n} rpm): i = {i}, {names} {need}, {why}",
+                           motor=t["c"].motor.designation, P=f(t["c"].motor.power / 1e3, 2),
+                           n=f(t["c"].motor.full_load_rpm, 0), i=f(t["c"].total_ratio, 2),
+                           names=names, need=f(t["need"], 2), why=t["why"]) for t in tried)
+    alt = min((t for t in tried if t["possible"]), key=lambda t: t["c"].motor.power, default=None)
+    return {"times": f(m.power / d.power_required, 1), "tried": items, "names": names,
+            "fixed": f(fixed, 2), "lo": f(rec[0], 0), "hi": f(rec[1], 0),
+            "alt": None if alt is None else {
+                "motor": alt["c"].motor.designation, "P": f(alt["c"].motor.power / 1e3, 2),
+                "sync": f(alt["c"].synchronous_rpm, 0), "need": f(alt["need"], 2)}}
+
+
 def drive_context(d, lang: str, figures: dict[str, str], machine_power_eq: str | None = None) -> dict:
     _ = tr(lang)
     m = d.motor
@@ -93,7 +141,7 @@ def drive_context(d, lang: str, figures: dict[str, str], machine_power_eq: str |
     return {
         "alloc_notes": alloc_notes, "worm_eff": worm,
         "eq": eq, "cand_rows": cand_rows, "stage_rows": stage_rows, "shaft_rows": shaft_rows,
-        "reason": reason,
+        "reason": reason, "oversize": _oversize(d, _),
         "motor": {"name": m.designation, "P": f(m.power / 1e3, 2), "sync": f(m.synchronous_rpm, 0),
                   "n": f(m.full_load_rpm, 0), "H": f(m.frame_height * MM, 0),
                   "tst": f(m.starting_torque_ratio, 1), "tmax": f(m.max_torque_ratio, 1)},

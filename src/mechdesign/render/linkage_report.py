@@ -300,9 +300,26 @@ def _angles_caption(k, lang: str) -> str:
     return _("Transmission and pressure angles against the crank angle")
 
 
+def realised_flywheel(fly, n_real: float | None) -> dict | None:
+    """The flywheel sized at the nominal speed (the crank's, at which M_b and ΔW_max are
+    computed, × the ratio to its shaft) against the speed ``n_real`` [rpm] the drive realises
+    on its shaft: the same flywheel there gives δ = [δ](n/n′)² (J_F ∝ 1/n²); None when the
+    two agree or no drive is designed."""
+    if n_real is None or abs(n_real - fly.shaft_speed_rpm) < 5e-3:
+        return None
+    delta = fly.fluctuation * (fly.shaft_speed_rpm / n_real) ** 2
+    return {"n_real": f(n_real, 2), "n": f(fly.shaft_speed_rpm, 2),
+            "faster": f(abs(n_real / fly.shaft_speed_rpm - 1) * 100, 2),
+            "quicker": n_real > fly.shaft_speed_rpm, "delta_real": f(delta, 4),
+            "within": delta <= fly.fluctuation * (1 + 1e-12),
+            "jf_real": sig(fly.inertia * (fly.shaft_speed_rpm / n_real) ** 2)}
+
+
 def linkage_context(model, k, f_, fly, v, figures: dict, lang: str,
-                    prefix: str = "linkage", title: str | None = None) -> dict:
-    """Strings and rows for ``linkage_section``; ``title`` is the chapter heading."""
+                    prefix: str = "linkage", title: str | None = None,
+                    flywheel_realised_rpm: float | None = None) -> dict:
+    """Strings and rows for ``linkage_section``; ``title`` is the chapter heading;
+    ``flywheel_realised_rpm``: the flywheel shaft's speed as the drive realises it."""
     _ = tr(lang)
     n = k.grid_size
     scale, units = _units(k)
@@ -408,7 +425,7 @@ def linkage_context(model, k, f_, fly, v, figures: dict, lang: str,
             "eq": (rf"J_F = \frac{{900\,\Delta W_{{max}}}}{{\pi^2 n^2 [\delta]}} = \frac{{900 \times "
                    rf"{sig(fly.max_energy_swing, group=False)}}}{{\pi^2 \times {f(fly.shaft_speed_rpm, 2)}^2 \times "
                    rf"{f(fly.fluctuation, 4)}}} = {sig(fly.inertia, group=False)}\ \text{{kg·m}}^2"),
-            "rim": None,
+            "rim": None, "real": realised_flywheel(fly, flywheel_realised_rpm),
         }
         if fly.rim is not None:
             rim, spec = fly.rim, model.flywheel.rim

@@ -16,6 +16,7 @@ from ...render import figures as fig
 from ...render.fmt import e, f, md_meta, md_text, sig, fluctuation
 from ...render.fmt import number, time_ratio, verdict
 from ...render.labels import pgettext, translated
+from ...render.linkage_report import realised_flywheel
 from ...stages.drive import shaft_numeral
 
 DEG = 180.0 / np.pi
@@ -398,12 +399,8 @@ def _flywheel(r, p, b, _) -> dict:
     # ΔW_max are computed, × the realised ratios after the flywheel); the drive realises the
     # motor's full-load speed through its realised ratios: the same flywheel there gives
     # δ = [δ]·(n_nominal/n_realised)²
-    n_real = drive.shafts[fl.shaft].speed_rpm
-    delta_real = fl.fluctuation * (fl.shaft_speed_rpm / n_real) ** 2
-    speeds = {"n_real": f(n_real, 2), "n_crank": f(p.shaft_rpm, 2),
-              "n_crank_real": f(drive.output_speed, 2),
-              "faster": f((n_real / fl.shaft_speed_rpm - 1) * 100, 2),
-              "delta_real": f(delta_real, 4), "same": abs(n_real - fl.shaft_speed_rpm) < 5e-3}
+    speeds = {"real": realised_flywheel(fl, drive.shafts[fl.shaft].speed_rpm),
+              "n_crank": f(p.shaft_rpm, 2), "n_crank_real": f(drive.output_speed, 2)}
     eq = {
         "md": (rf"M_d = \frac{{1}}{{2\pi}}\oint M_b\,d\varphi = {sig(fl.mean_torque, group=False)}\ \text{{N·m}}"
                rf"\ (\text{{{crank_shaft}}})"),
