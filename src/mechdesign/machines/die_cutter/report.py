@@ -16,7 +16,7 @@ from ...render import figures as fig
 from ...render.fmt import e, f, md_meta, md_text, sig, fluctuation
 from ...render.fmt import number, time_ratio, verdict
 from ...render.labels import pgettext, translated
-from ...render.linkage_report import realised_flywheel
+from ...render.linkage_report import realised_flywheel, sentences
 from ...stages.drive import shaft_numeral
 
 DEG = 180.0 / np.pi
@@ -399,8 +399,12 @@ def _flywheel(r, p, b, _) -> dict:
     # ΔW_max are computed, × the realised ratios after the flywheel); the drive realises the
     # motor's full-load speed through its realised ratios: the same flywheel there gives
     # δ = [δ]·(n_nominal/n_realised)²
-    speeds = {"real": realised_flywheel(fl, drive.shafts[fl.shaft].speed_rpm),
-              "n_crank": f(p.shaft_rpm, 2), "n_crank_real": f(drive.output_speed, 2)}
+    real = realised_flywheel(fl, drive.shafts[fl.shaft].speed_rpm, _)
+    if real:
+        real = sentences(_, real, _("(The distribution shaft: nominal {n_crank} rpm, realised "
+                                    "{n_crank_real} rpm.)", n_crank=f(p.shaft_rpm, 2),
+                                    n_crank_real=f(drive.output_speed, 2)))
+    speeds = {"real": real, "n_crank": f(p.shaft_rpm, 2)}
     eq = {
         "md": (rf"M_d = \frac{{1}}{{2\pi}}\oint M_b\,d\varphi = {sig(fl.mean_torque, group=False)}\ \text{{N·m}}"
                rf"\ (\text{{{crank_shaft}}})"),
