@@ -8,7 +8,7 @@ import numpy as np
 from ..stages.drive import shaft_numeral
 from ..i18n import N_, data_text, tr
 from ..stages.findings import Named, decode
-from .fmt import f, grouped, md_text, percent, rpm, sig
+from .fmt import f, grouped, md_text, percent, rpm, sentences, sig
 
 MM = 1e3
 
@@ -50,7 +50,7 @@ _REASONS = {
 OVERSIZE = 2.0
 
 
-def _oversize(d, _) -> dict | None:
+def _oversize(d, _) -> str | None:
     """Why the chosen motor is much larger than P_d: the smaller motors of the other
     synchronous speeds, each with the ratio the free stages would need against their
     recommended and maximum ranges (data/transmissions.yaml); the smallest one the maximum
@@ -86,11 +86,19 @@ def _oversize(d, _) -> dict | None:
                            n=f(t["c"].motor.full_load_rpm, 0), i=f(t["c"].total_ratio, 2),
                            names=names, need=f(t["need"], 2), why=t["why"]) for t in tried)
     alt = min((t for t in tried if t["possible"]), key=lambda t: t["c"].motor.power, default=None)
-    return {"times": f(m.power / d.power_required, 1), "tried": items, "names": names,
-            "fixed": f(fixed, 2), "lo": f(rec[0], 0), "hi": f(rec[1], 0),
-            "alt": None if alt is None else {
-                "motor": alt["c"].motor.designation, "P": f(alt["c"].motor.power / 1e3, 2),
-                "sync": f(alt["c"].synchronous_rpm, 0), "need": f(alt["need"], 2)}}
+    text = _("Its rated power is {times} times $P_d$: not the power but the ratio ruled out the "
+             "smaller motors. The stages with a given ratio give {fixed}, so the other stages "
+             "({names}) must make $i/{fixed}$, recommended {lo}–{hi}: {items}.",
+             times=f(m.power / d.power_required, 1), fixed=f(fixed, 2), names=names,
+             lo=f(rec[0], 0), hi=f(rec[1], 0), items=items)
+    if alt is not None:
+        text = sentences(_, text, _(
+            "The smallest motor the maximum ranges allow is {motor} ({P} kW), with {need} for "
+            "{names}, beyond its recommended range; to design with it, set "
+            "drive.motor.synchronous_rpm: {sync} in the brief.", motor=alt["c"].motor.designation,
+            P=f(alt["c"].motor.power / 1e3, 2), need=f(alt["need"], 2), names=names,
+            sync=f(alt["c"].synchronous_rpm, 0)))
+    return text
 
 
 def drive_context(d, lang: str, figures: dict[str, str], machine_power_eq: str | None = None) -> dict:

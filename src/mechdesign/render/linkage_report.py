@@ -14,7 +14,7 @@ import numpy as np
 
 from ..i18n import N_, tr
 from . import figures as fig
-from .fmt import e, f, fluctuation, force_unit, md_text, sig, tex_name, time_ratio
+from .fmt import e, f, fluctuation, force_unit, md_text, sentences, sig, tex_name, time_ratio
 from .fmt import verdict as fmt_verdict
 from .label_layout import Label, place
 from .labels import LabelTable, md_names, md_point, mpl_names, mpl_point, point_tex
@@ -327,10 +327,6 @@ def realised_flywheel(fly, n_real: float | None, _) -> str | None:
                    jf_real=sig(fly.inertia * (fly.shaft_speed_rpm / n_real) ** 2))
     return sentences(_, first, second)
 
-
-def sentences(_, *texts: str) -> str:
-    """Sentences of one paragraph: a space between them in English, none in Chinese."""
-    return ("" if _.zh else " ").join(t for t in texts if t)
 
 
 def linkage_context(model, k, f_, fly, v, figures: dict, lang: str,

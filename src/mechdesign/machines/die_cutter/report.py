@@ -16,7 +16,8 @@ from ...render import figures as fig
 from ...render.fmt import e, f, md_meta, md_text, sig, fluctuation
 from ...render.fmt import number, time_ratio, verdict
 from ...render.labels import pgettext, translated
-from ...render.linkage_report import realised_flywheel, sentences
+from ...render.fmt import sentences
+from ...render.linkage_report import realised_flywheel
 from ...stages.drive import shaft_numeral
 
 DEG = 180.0 / np.pi
