@@ -464,3 +464,23 @@ def test_platen_phases_are_motions_not_dwells(shipped):
     assert {ph.state for ph in diagram.actuator("gripper").phases} >= {"dwell_high", "dwell_low"}
     rests = {COLOURS[s] for s in ("dwell_high", "dwell_low", "dwell")}
     assert not {COLOURS[s] for s in ("work", "clear")} & rests
+
+
+def test_balancing_force_signed_as_in_its_equation(shipped):
+    """P_b = M_b/l with M_b's sign (counter-clockwise positive) in the text as in the equation
+    (the base printed −1118 N in the equation and 1118 N in the text)."""
+    from mechdesign.render.graphical_report import _forces
+
+    doc = shipped["press_graphical"]
+    seen = 0
+    for pos in doc.positions:
+        for ctx, fg in zip(_forces(pos, "en"), pos.forces):
+            if fg.balancing_torque is None:
+                continue
+            pb = float(ctx["pb"].replace(" ", "").replace("−", "-"))
+            eq = [m for m in ctx["moments"] if m[1].startswith("P_b =")]
+            assert eq and np.sign(pb) == np.sign(fg.balancing_torque)
+            assert f"P_b = {ctx['pb'].replace(' ', '')}" in eq[0][1].replace(" ", "").replace("P_b=", "P_b = ")
+            assert abs(pb) == pytest.approx(abs(fg.balancing_force), rel=5e-3)
+            seen += 1
+    assert seen >= 2

@@ -89,8 +89,8 @@ STATES: dict[str, tuple[str, str, str]] = {
     DWELL_LOW: _State(pgettext("cycle state", "near dwell"), REST),
     MOVE: _State(pgettext("cycle state", "move"), MOTION),
     DWELL: _State(pgettext("cycle state", "dwell"), REST),
-    WORK: _State(pgettext("cycle state", "moving at the working end"), MOTION),
-    CLEAR: _State(pgettext("cycle state", "moving clear of the work"), MOTION),
+    WORK: _State(pgettext("cycle state", "moving, work zone"), MOTION),
+    CLEAR: _State(pgettext("cycle state", "moving, clear zone"), MOTION),
 }
 
 
