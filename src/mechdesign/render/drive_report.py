@@ -334,6 +334,10 @@ def stage_designs(d, lang: str) -> list[dict]:
                           bearing_loads=f(sh.bearing_loads[0], 1),
                           bearing_loads2=f(sh.bearing_loads[1], 1),
                           life_torque_factor=f(sh.life_torque_factor, 3)))
+            if "flywheel" in sh.elements:
+                w = -sum(ld.Fv for ld, nm in zip(sh.loads, sh.elements) if nm == "flywheel")
+                text.append(_("The flywheel's rim weight {W} N acts between the bearings in both "
+                              "cases, unscaled.", W=f(w, 1)))
         unit_mm = "mm"
         rows = [["$d_{min}$", f(sh.d_min * MM, 2), unit_mm]]
         if sh.d_end is not None:
