@@ -14,7 +14,7 @@ import numpy as np
 
 from ..i18n import N_, tr
 from . import figures as fig
-from .fmt import e, f, fluctuation, force_unit, md_text, sentences, sig, tex_name, time_ratio
+from .fmt import e, f, fluctuation, force_unit, md_text, percent, sentences, sig, tex_name, time_ratio
 from .fmt import verdict as fmt_verdict
 from .label_layout import Label, place
 from .labels import LabelTable, md_names, md_point, mpl_names, mpl_point, point_tex
@@ -309,7 +309,7 @@ def realised_flywheel(fly, n_real: float | None, _) -> str | None:
         return None
     delta = fly.fluctuation * (fly.shaft_speed_rpm / n_real) ** 2
     n, nr = f(fly.shaft_speed_rpm, 2), f(n_real, 2)
-    off = f(abs(n_real / fly.shaft_speed_rpm - 1) * 100, 2)
+    off = percent(abs(n_real / fly.shaft_speed_rpm - 1) * 100)
     if n_real > fly.shaft_speed_rpm:
         first = _("$J_F$ is sized at the nominal speed n = {n} rpm, at which $M_b$ and $\\Delta W_{{max}}$ "
                   "are computed; the drive (chapter \"Drive design\") realises n′ = {n_real} rpm on "
