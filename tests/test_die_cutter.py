@@ -484,3 +484,21 @@ def test_balancing_force_signed_as_in_its_equation(shipped):
             assert abs(pb) == pytest.approx(abs(fg.balancing_force), rel=5e-3)
             seen += 1
     assert seen >= 2
+
+
+def test_flywheel_on_the_distribution_shaft_leaves_that_shaft_the_peak():
+    """With the flywheel on the distribution shaft the reducer carries the mean torque, but the
+    shaft itself still carries the peak between the flywheel and the crank (the base sized it
+    for the mean); the comparison then puts the flywheel on shaft Ⅰ."""
+    r = run(edited(flywheel__shaft=3, flywheel__rim_diameter_mm=1100))
+    d = r["drive"]
+    assert d.peak_from_shaft == 3
+    torques = {sd.index: sd.torque for sd in d.shaft_designs}
+    assert torques[1] == pytest.approx(d.shafts[1].torque)
+    assert torques[2] == pytest.approx(d.shafts[2].torque)
+    assert torques[3] == pytest.approx(d.peak_factor * d.shafts[3].torque)
+    assert [s.index for s in r["peak_shafts"]] == [3]
+    cmp_ = r["flywheel_placement"]
+    assert (cmp_.chosen.shaft, cmp_.other.shaft) == (3, 1)
+    assert cmp_.chosen.inertia == pytest.approx(cmp_.other.inertia * (cmp_.other.speed_rpm
+                                                                       / cmp_.chosen.speed_rpm) ** 2)

@@ -432,6 +432,11 @@ def _flywheel(r, p, b, _) -> dict:
             "place": _placement(r, p, b, _)}
 
 
+def _inertia(J: float) -> str:
+    """J_F as the flywheel chapter writes it: three decimals, one from 100 kg·m² on."""
+    return f(J, 3 if J < 100 else 1, group=True)
+
+
 def _placement(r, p, b, _) -> dict:
     """The brief's flywheel placement against the other one, both designed (stage
     flywheel_placement): flywheel, gear stages, shafts, masses."""
@@ -439,7 +444,7 @@ def _placement(r, p, b, _) -> dict:
     stages = len(b.drive.stages)
     a, o = cmp_.chosen, cmp_.other
     rows = [[_("flywheel shaft speed n /rpm"), f(a.speed_rpm, 2), f(o.speed_rpm, 2)],
-            [_("flywheel $J_F$ /kg·m²"), f(a.inertia, 3), f(o.inertia, 1)],
+            [_("flywheel $J_F$ /kg·m²"), _inertia(a.inertia), _inertia(o.inertia)],
             [_("rim D × b × H /mm"), " × ".join(f(x * MM, 0) for x in (a.rim.diameter, a.rim.width, a.rim.height)),
              " × ".join(f(x * MM, 0) for x in (o.rim.diameter, o.rim.width, o.rim.height))],
             [_("rim mass /kg"), f(a.rim.rim_mass, 1, group=True), f(o.rim.rim_mass, 1, group=True)]]
