@@ -443,7 +443,7 @@ def _placement(r, p, b, _) -> dict:
     cmp_ = r["flywheel_placement"]
     stages = len(b.drive.stages)
     a, o = cmp_.chosen, cmp_.other
-    rows = [[_("flywheel shaft speed n /rpm"), f(a.speed_rpm, 2), f(o.speed_rpm, 2)],
+    rows = [[_("flywheel shaft speed n (nominal) /rpm"), f(a.speed_rpm, 2), f(o.speed_rpm, 2)],
             [_("flywheel $J_F$ /kg·m²"), _inertia(a.inertia), _inertia(o.inertia)],
             [_("rim D × b × H /mm"), " × ".join(f(x * MM, 0) for x in (a.rim.diameter, a.rim.width, a.rim.height)),
              " × ".join(f(x * MM, 0) for x in (o.rim.diameter, o.rim.width, o.rim.height))],
