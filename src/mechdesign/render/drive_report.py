@@ -159,6 +159,9 @@ def drive_context(d, lang: str, figures: dict[str, str], machine_power_eq: str |
         "err": f(d.speed_error * 100, 2), "tol": f(d.speed_tolerance * 100, 1),
         "speed_ok": abs(d.speed_error) <= d.speed_tolerance,
         "hours": f(d.service_hours, 0), "KA": f(d.KA, 2),
+        # a gear (or worm) stage upstream of the flywheel keeps K_A (a belt there has its own)
+        "gears_before": d.peak_from_shaft is not None and any(
+            st.index < d.peak_from_shaft and st.type in ("spur", "helical", "worm") for st in d.stages),
         "peak": sig(d.peak_factor) if d.peak_from_shaft is not None else None,
         "peak_shaft": _shaft_name(d.peak_from_shaft, len(d.shafts) - 1, _.zh) if d.peak_from_shaft is not None else "",
         "warnings": [md_text(w.text(lang)) for w in d.warnings],
