@@ -268,7 +268,7 @@ def test_cycle_rows_match_the_cam_the_gear_and_the_simulated_platen(shipped):
     moving = g.driven_motion(phase).moving
     assert np.array_equal(moving, cy.moving_at(diagram.actuator("chain"), phase))
     clear = k.s[:n] < k.stroke - p.clearance
-    assert np.sum(clear != (cy.state_at(diagram.actuator("platen"), phase) == "dwell_low")) <= 2
+    assert np.sum(clear != (cy.state_at(diagram.actuator("platen"), phase) == "clear")) <= 2
     # the chain row's motion angle is the incomplete gear's 360° z1'/z1
     move = cy.interval_of(diagram.actuator("chain"), "move")
     assert move.span == pytest.approx(TWO_PI * g.teeth / g.z1)
@@ -367,3 +367,138 @@ def test_cli_writes_the_english_report(tmp_path):
                     "## Motion cycle diagram", "# Verification"):
         assert heading in md
     assert (out / "cam_profile.csv").exists() and (out / "results.json").exists()
+
+
+# ----------------------------------------------------------------------------- issue 19: the
+# flywheel's placement, the table of the shafts after it, speeds, summary, P_b, cycle colours
+
+
+def test_both_flywheel_placements_are_designed(shipped):
+    """The other placement (the distribution shaft) by the same rules: J_F ∝ 1/n² (900ΔW/(π²n²[δ])
+    on each shaft), its reducer carries the mean torque while this design's carries the peak
+    (T2 in the ratio of the peak factor, K_A apart), the wheels' solid-disc masses ρπd²b/4."""
+    r = shipped
+    cmp_, fl, d = r["flywheel_placement"], r["press_flywheel"], r["drive"]
+    a, o = cmp_.chosen, cmp_.other
+    assert (a.shaft, o.shaft) == (1, 3)
+    assert a.inertia == pytest.approx(fl.inertia)
+    assert o.speed_rpm == pytest.approx(r["params"].shaft_rpm)
+    # the same ΔW_max and [δ]: J ∝ 1/n²
+    assert o.inertia == pytest.approx(a.inertia * (a.speed_rpm / o.speed_rpm) ** 2, rel=1e-9)
+    assert o.inertia == pytest.approx(900 * fl.max_energy_swing
+                                      / (np.pi ** 2 * o.speed_rpm ** 2 * fl.fluctuation))
+    # the other rim: a thin rim (H ≤ D/2) and m = 4J/D²
+    assert o.rim.height <= o.rim.diameter / 2 + 1e-12
+    assert o.rim.rim_mass == pytest.approx(4 * o.inertia / o.rim.diameter ** 2)
+    # the last gear stage: this design's wheel torque is the peak, the other's the mean
+    mean_T2 = d.shafts[-1].torque
+    assert a.gears[-1].torque == pytest.approx(d.peak_factor * mean_T2, rel=1e-9)
+    assert o.gears[-1].torque == pytest.approx(mean_T2, rel=1e-9)
+    for g in a.gears + o.gears:
+        assert g.wheel_mass == pytest.approx(7850 * np.pi / 4 * g.d2 ** 2 * g.face_width)
+    # smaller wheels for the mean torque
+    assert all(go.d2 < ga.d2 for ga, go in zip(a.gears, o.gears))
+    # the chosen placement is this design's drive
+    assert a.shaft_seats == tuple(sd.d_seat for sd in d.shaft_designs)
+
+
+def test_shafts_after_the_flywheel_table_holds_what_its_headers_say(shipped):
+    """Columns: the torsion estimate A0·∛(P/n)·1.05 of the mean power (≈ 20 mm for shaft Ⅰ,
+    not the enlarged seat), of the peak power, and the designed seat (≥ both)."""
+    from mechdesign.i18n import tr
+    from mechdesign.machines.die_cutter.report import _flywheel
+
+    r = shipped
+    ctx = _flywheel(r, r["params"], r["brief"], tr("en"))
+    d = r["drive"]
+    for row, sh in zip(ctx["peak_rows"], d.shaft_designs):
+        s = d.shafts[sh.index]
+        mean_est = 112 * (s.power / 1e3 / s.speed_rpm) ** (1 / 3) * 1.05
+        peak_est = 112 * (s.power * d.peak_factor / 1e3 / s.speed_rpm) ** (1 / 3) * 1.05
+        assert float(row[1]) == pytest.approx(s.speed_rpm, abs=0.005)        # realised
+        assert float(row[4]) == pytest.approx(mean_est, abs=0.05)
+        assert float(row[5]) == pytest.approx(peak_est, abs=0.05)
+        assert float(row[6]) == pytest.approx(sh.d_seat * 1e3)
+        assert float(row[6]) >= float(row[5]) > float(row[4])
+    assert float(ctx["peak_rows"][0][4]) < 25                                # shaft Ⅰ ≈ 20 mm
+
+
+def test_nominal_and_realised_flywheel_speed_named(shipped):
+    """J_F at the nominal speed (50 rpm × the ratios after shaft Ⅰ); the realised 709.2 rpm
+    keeps δ = [δ](n/n′)² (J ∝ 1/n²)."""
+    from mechdesign.i18n import tr
+    from mechdesign.render.linkage_report import realised_flywheel
+
+    r = shipped
+    fl, d = r["press_flywheel"], r["drive"]
+    n_real = d.shafts[1].speed_rpm
+    assert n_real == pytest.approx(1440 * (1 - d.stages[0].slip) * 125 / 250)
+    assert fl.shaft_speed_rpm == pytest.approx(50 * d.stages[1].ratio * d.stages[2].ratio)
+    text = realised_flywheel(fl, n_real, tr("en"))
+    assert f"n = {fl.shaft_speed_rpm:.2f} rpm" in text and f"n′ = {n_real:.2f} rpm" in text
+    assert f"{fl.fluctuation * (fl.shaft_speed_rpm / n_real) ** 2:.4f}" in text and "0.47%" in text
+    assert realised_flywheel(fl, fl.shaft_speed_rpm, tr("en")) is None
+
+
+def test_summary_names_the_press_analysis_and_the_chain_feed(shipped, example_results):
+    from mechdesign.machines.die_cutter.stages import results_document
+    from mechdesign.render.summary import _designed
+    from mechdesign.results import to_plain as to_jsonable
+
+    parts = _designed(to_jsonable(results_document(shipped)), "en")
+    assert "incomplete-gear chain feed design" in parts
+    assert "kinematic and kinetostatic analysis" in parts
+    assert "kinematic analysis of the feed linkage" not in parts
+    from mechdesign.machines.lockbeam.stages import results_document as lock_doc
+    lock = _designed(to_jsonable(lock_doc(example_results("lockbeam"))), "en")
+    assert "kinematic analysis of the feed linkage" in lock
+
+
+def test_platen_phases_are_motions_not_dwells(shipped):
+    """The platen never stops (a crank drives it): its windows near the top (cutting) and
+    clear of the die are motions, coloured as such; the grippers' dwells stay rests."""
+    from mechdesign.render.cycle_figures import COLOURS
+
+    diagram = shipped["cycle"].diagram
+    assert all(ph.moving for ph in diagram.actuator("platen").phases)
+    assert {ph.state for ph in diagram.actuator("gripper").phases} >= {"dwell_high", "dwell_low"}
+    rests = {COLOURS[s] for s in ("dwell_high", "dwell_low", "dwell")}
+    assert not {COLOURS[s] for s in ("work", "clear")} & rests
+
+
+def test_balancing_force_signed_as_in_its_equation(shipped):
+    """P_b = M_b/l with M_b's sign (counter-clockwise positive) in the text as in the equation
+    (the base printed −1118 N in the equation and 1118 N in the text)."""
+    from mechdesign.render.graphical_report import _forces
+
+    doc = shipped["press_graphical"]
+    seen = 0
+    for pos in doc.positions:
+        for ctx, fg in zip(_forces(pos, "en"), pos.forces):
+            if fg.balancing_torque is None:
+                continue
+            pb = float(ctx["pb"].replace(" ", "").replace("−", "-"))
+            eq = [m for m in ctx["moments"] if m[1].startswith("P_b =")]
+            assert eq and np.sign(pb) == np.sign(fg.balancing_torque)
+            assert f"P_b = {ctx['pb'].replace(' ', '')}" in eq[0][1].replace(" ", "").replace("P_b=", "P_b = ")
+            assert abs(pb) == pytest.approx(abs(fg.balancing_force), rel=5e-3)
+            seen += 1
+    assert seen >= 2
+
+
+def test_flywheel_on_the_distribution_shaft_leaves_that_shaft_the_peak():
+    """With the flywheel on the distribution shaft the reducer carries the mean torque, but the
+    shaft itself still carries the peak between the flywheel and the crank (the base sized it
+    for the mean); the comparison then puts the flywheel on shaft Ⅰ."""
+    r = run(edited(flywheel__shaft=3, flywheel__rim_diameter_mm=1100))
+    d = r["drive"]
+    assert d.peak_from_shaft == 3
+    torques = {sd.index: sd.torque for sd in d.shaft_designs}
+    assert torques[1] == pytest.approx(d.shafts[1].torque)
+    assert torques[2] == pytest.approx(d.shafts[2].torque)
+    assert torques[3] == pytest.approx(d.peak_factor * d.shafts[3].torque)
+    assert [s.index for s in r["peak_shafts"]] == [3]
+    cmp_ = r["flywheel_placement"]
+    assert (cmp_.chosen.shaft, cmp_.other.shaft) == (3, 1)
+    assert cmp_.chosen.inertia == pytest.approx(cmp_.other.inertia * (cmp_.other.speed_rpm
+                                                                       / cmp_.chosen.speed_rpm) ** 2)

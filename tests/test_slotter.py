@@ -100,3 +100,58 @@ def test_a_rod_too_short_to_reach_the_guide_names_its_field(tmp_path):
     assert "linkage.rod_ratio_BC_O3B" in res.output and "0.01" in res.output
     assert "Traceback" not in res.output
     assert not (tmp_path / "out" / "report.md").exists()
+
+
+# ----------------------------------------------------------------------------- issue 19: the
+# flywheel rim's weight on its shaft, the realised speed, the motor choice explained
+
+
+def test_flywheel_weight_loads_its_shaft_by_the_beam_closed_form(r):
+    """The rim (m = 4J_F/D², closed form) hangs between the bearings of shaft Ⅰ: a load −m·g in
+    the vertical plane at mid-span; the vertical reactions and the moment at the flywheel
+    from the beam's closed form R_A = Σ F_i (L − x_i)/L (B at x = L), M(a) = R_A·a + Σ_{x_i<a} F_i (a − x_i)."""
+    fl, d, p = r["linkage_flywheel"], r["drive"], r["params"]
+    m = 4 * fl.inertia / fl.rim.diameter ** 2
+    W = m * p.gravity
+    sd = d.shaft_designs[0]
+    assert sd.index == 1 and "flywheel" in sd.elements
+    fw = [ld for ld, nm in zip(sd.loads, sd.elements) if nm == "flywheel"]
+    assert len(fw) == 1
+    a, L = fw[0].x, sd.span
+    assert fw[0].Fv == pytest.approx(-W) and fw[0].Fh == 0
+    assert a == pytest.approx(L / 2)
+    # the bearing span holds the rim's width: inside elements + 2 × 60 mm clearance
+    assert L == pytest.approx(fl.rim.width + 0.12)
+    RA = -sum(ld.Fv * (L - ld.x) for ld in sd.loads) / L      # reactions balance the loads
+    RB = -sum(ld.Fv * ld.x for ld in sd.loads) / L
+    assert all(ld.Fa == 0 for ld in sd.loads)                 # spur gears, belt: no couples
+    assert sd.result.RAv == pytest.approx(RA, rel=1e-9)
+    assert sd.result.RBv == pytest.approx(RB, rel=1e-9)
+    Mv = RA * a + sum(ld.Fv * (a - ld.x) for ld in sd.loads if ld.x < a - 1e-12)
+    at = [s for s in sd.result.sections if abs(s.x - a) < 1e-12]
+    assert at and abs(at[0].Mv) == pytest.approx(abs(Mv), rel=1e-9)
+    # the weight alone would give W/2 at each bearing: the difference is that
+    assert RA + RB == pytest.approx(W - sum(ld.Fv for ld in sd.loads if ld.x != a))
+
+
+def test_flywheel_speed_note_and_the_motor_choice(r):
+    """The flywheel at the nominal 180 rpm (60 rpm × z2/z1) against the realised speed of
+    shaft Ⅰ (δ = [δ](n/n′)²); the 2.2 kW motor explained: the belt would need
+    n_m/(60·3) for the smaller motors, above its recommended 4."""
+    from mechdesign.i18n import tr
+    from mechdesign.render.drive_report import _oversize
+    from mechdesign.render.linkage_report import realised_flywheel
+
+    fl, d = r["linkage_flywheel"], r["drive"]
+    assert fl.shaft_speed_rpm == pytest.approx(60 * 54 / 18)
+    n_real = d.shafts[1].speed_rpm
+    text = realised_flywheel(fl, n_real, tr("en"))
+    assert f"{n_real:.2f}" in text and f"{fl.fluctuation * (180 / n_real) ** 2:.4f}" in text
+    assert d.motor.designation == "Y132S-8"
+    note = _oversize(d, tr("en"))
+    assert note is not None and f"{d.motor.power / d.power_required:.1f} times" in note
+    for c in d.choice.candidates:
+        if c.motor.designation != "Y132S-8":
+            assert c.motor.designation in note
+            assert f"{c.motor.full_load_rpm / 60 / 3:.2f}" in note      # the belt's ratio
+    assert "Y90S-6 (0.75 kW)" in note and "synchronous_rpm: 1000" in note

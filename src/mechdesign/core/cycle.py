@@ -39,6 +39,9 @@ COVER_TOL = 1e-6
 
 RISE, DWELL_HIGH, RETURN, DWELL_LOW, MOVE, DWELL = (
     "rise", "dwell_high", "return", "dwell_low", "move", "dwell")
+#: Windows of a reciprocating output that never stops (a crank-driven platen): near its
+#: working end (the output moves in and out of the work zone), and clear of it.
+WORK, CLEAR = "work", "clear"
 MOTION, REST = "motion", "rest"
 
 class _State(tuple):
@@ -76,7 +79,8 @@ class _State(tuple):
 #: outward and homeward strokes of a reciprocating (translating or swinging) output,
 #: ``dwell_high``/``dwell_low`` its rests at the far and near ends; ``move``/``dwell`` are
 #: for an output that advances in one direction only (an intermittently driven chain or
-#: table) or when the end does not matter. The names are msgids (context "cycle state"):
+#: table) or when the end does not matter; ``work``/``clear`` are windows of an output
+#: that moves all the time (near its working end, and clear of it). The names are msgids (context "cycle state"):
 #: ``STATES[s].name(lang)`` translates; index 0 is the Chinese (looked up when read).
 STATES: dict[str, tuple[str, str, str]] = {
     RISE: _State(pgettext("cycle state", "rise"), MOTION),
@@ -85,6 +89,8 @@ STATES: dict[str, tuple[str, str, str]] = {
     DWELL_LOW: _State(pgettext("cycle state", "near dwell"), REST),
     MOVE: _State(pgettext("cycle state", "move"), MOTION),
     DWELL: _State(pgettext("cycle state", "dwell"), REST),
+    WORK: _State(pgettext("cycle state", "moving, work zone"), MOTION),
+    CLEAR: _State(pgettext("cycle state", "moving, clear zone"), MOTION),
 }
 
 
@@ -528,7 +534,9 @@ def timing_disagreement(a: Actuator, b: Actuator, by: str = "state") -> float:
 class PhaseDoc:
     """One phase of an actuator in ``results.json``."""
 
-    state: str = q("", "rise, dwell_high, return, dwell_low (a reciprocating output); move, dwell")
+    state: str = q("", "rise, dwell_high, return, dwell_low (a reciprocating output); move, dwell; "
+                   "work, clear (windows of an output that never stops: near its working end, "
+                   "clear of it)")
     start: float = q("rad", "shaft angle φ where the phase begins, in [0, 2π)")
     span: float = q("rad", "shaft angle Δφ the phase lasts")
     duration: float = q("s", "Δφ/ω")

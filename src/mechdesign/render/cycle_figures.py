@@ -21,7 +21,9 @@ LABELS = LabelTable({
 
 #: Fill colour of each state of mechdesign.core.cycle.STATES.
 COLOURS = {"rise": "#5B8FD0", "return": "#E8955A", "dwell_high": "#9CCB9C",
-           "dwell_low": "#D9D9D9", "move": "#8C7BC8", "dwell": "#ECECEC"}
+           "dwell_low": "#D9D9D9", "move": "#8C7BC8", "dwell": "#ECECEC",
+           # windows of an output that moves all the time: motion colours, not a rest grey
+           "work": "#2F5F9E", "clear": "#C9B8E8"}
 
 
 def window_pieces(start: float, span: float, origin: float):
@@ -91,6 +93,10 @@ def linear(path: Path, lang: str, actuators, origin: float = 0.0, links=(), stat
                       bbox_to_anchor=(0.5, 1.0), frameon=False)
 
 
+#: Legend rows the circular diagram's upper-left corner takes without reaching the ring.
+LEGEND_ROWS = 9
+
+
 @cached
 def circular(path: Path, lang: str, actuators, origin: float = 0.0, states=None):
     """Circular cycle diagram: concentric rings, the first actuator innermost; φ = 0 at the
@@ -137,10 +143,16 @@ def circular(path: Path, lang: str, actuators, origin: float = 0.0, states=None)
         ax.axis("off")
         handles = [Patch(facecolor="white", edgecolor="white", label=f"{i + 1}  {name}")
                    for i, (name, _) in enumerate(actuators)]
-        if states:
-            handles += [Patch(facecolor=COLOURS[s], edgecolor="0.25", label=t) for s, t in states.items()]
-        ax.legend(handles=handles, fontsize=7, loc="upper left", bbox_to_anchor=(-0.02, 1.02),
-                  frameon=False, handlelength=1.0)
+        kinds = [Patch(facecolor=COLOURS[s], edgecolor="0.25", label=t) for s, t in (states or {}).items()]
+        if len(handles) + len(kinds) <= LEGEND_ROWS:
+            ax.legend(handles=handles + kinds, fontsize=7, loc="upper left",
+                      bbox_to_anchor=(-0.02, 1.02), frameon=False, handlelength=1.0)
+        else:       # the upper-left corner holds about nine rows before the ring's 300° label
+            first = ax.legend(handles=handles, fontsize=7, loc="upper left",
+                              bbox_to_anchor=(-0.02, 1.02), frameon=False, handlelength=1.0)
+            ax.add_artist(first)
+            ax.legend(handles=kinds, fontsize=7, loc="lower left", bbox_to_anchor=(-0.02, -0.02),
+                      frameon=False, handlelength=1.0)
 
 
 @cached

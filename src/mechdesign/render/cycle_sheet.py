@@ -24,6 +24,8 @@ STATE_NAMES = LabelTable({
     "dwell_low": N_("dwell (low)"),
     "move": N_("move"),
     "dwell": pgettext("cycle sheet", "dwell"),
+    "work": N_("moving, work zone"),
+    "clear": N_("moving, clear zone"),
 })
 LABELS = LabelTable({
     "title": N_("Motion cycle diagram (linear)"),
@@ -99,6 +101,44 @@ def _clear(box, state: str, xa: float, xb: float, yb: float, yt: float) -> bool:
     return (np.conj(u) * (corner - a)).imag >= GAP       # left of a → b, at least GAP
 
 
+def _tent(up: bool, a: float, span: float, p0: float, p1: float, xa: float, xb: float,
+          yb: float, yt: float) -> list[complex]:
+    """The piece [p0, p1]° of a phase that moves all the time (starting at a°, span°): up to
+    the bar's top and back (``up``: at the working end) or down to its foot and back (clear
+    of the work), the turn at the phase's middle, drawn over the piece's x range xa…xb."""
+    u0 = ((p0 - a) % 360.0) / span
+    u1 = u0 + (p1 - p0) / span
+    us = [u0] + ([0.5] if u0 < 0.5 < u1 else []) + [u1]
+
+    def y(u):
+        t = 1.0 - abs(2.0 * u - 1.0)
+        return yb + (yt - yb) * t if up else yt - (yt - yb) * t
+
+    return [complex(xa + (xb - xa) * (u - u0) / (u1 - u0), y(u)) for u in us]
+
+
+def _tent_label(s: Sheet, text: str, up: bool, pts: list[complex], xa: float, xb: float,
+                yb: float, yt: float) -> None:
+    """The name of a phase drawn as a tent (:func:`_tent`) where the tent leaves room: under
+    its highest point (``up``) or over its lowest, :data:`GAP` clear of the outline and of
+    the tent's lines — as large as fits (3 mm down to 1.8 mm), else left out (the table
+    names every phase)."""
+    xs = np.array([p.real for p in pts])
+    ys = np.array([p.imag for p in pts])
+    xc = float(xs[np.argmax(ys)] if up else xs[np.argmin(ys)])
+    for h in (3.0, 2.5, 2.0, 1.8):
+        w, th = _WIDTH * text_width(text, h), _EXTENT * h
+        x0 = min(max(xc - w / 2, xa + GAP), xb - GAP - w)
+        x1 = x0 + w
+        y0, y1 = (yb + GAP, yb + GAP + th) if up else (yt - GAP - th, yt - GAP)
+        if x0 < xa + GAP - 1e-9 or y1 > yt - GAP + 1e-9:
+            continue
+        line = np.interp([x0, x1], xs, ys)      # a tent's extreme over [x0, x1] is at an end
+        if (up and np.all(line >= y1 + GAP)) or (not up and np.all(line <= y0 - GAP)):
+            s.text(complex((x0 + x1) / 2, y1), text, h, "TEXT", "center", "top")
+            return
+
+
 def _phase_label(s: Sheet, text: str, state: str, xa: float, xb: float, yb: float,
                  yt: float) -> None:
     """A phase's name inside its box (see :func:`label_box`), :data:`GAP` clear of the
@@ -159,6 +199,11 @@ def cycle_sheet(diagram, info: TitleInfo, lang: str) -> Sheet:
                     s.line(complex(xa, yb), complex(xb, yt), "CONSTRUCTION")
                 elif ph.state == "return":
                     s.line(complex(xa, yt), complex(xb, yb), "CONSTRUCTION")
+                elif ph.state in ("work", "clear"):
+                    pts = _tent(ph.state == "work", a, span, p0, p1, xa, xb, yb, yt)
+                    s.polyline(pts, "CONSTRUCTION")
+                    _tent_label(s, phase_name(ph, lang), ph.state == "work", pts, xa, xb, yb, yt)
+                    continue
                 _phase_label(s, phase_name(ph, lang), ph.state, xa, xb, yb, yt)
         # the boundaries' angles under the bar to 0.1° (as the table), one that would run
         # into the one before it a line lower

@@ -8,7 +8,7 @@ import numpy as np
 from ..stages.drive import shaft_numeral
 from ..i18n import N_, data_text, tr
 from ..stages.findings import Named, decode
-from .fmt import f, grouped, md_text, percent, rpm, sig
+from .fmt import f, grouped, md_text, percent, rpm, sentences, sig
 
 MM = 1e3
 
@@ -43,6 +43,62 @@ _REASONS = {
                   "maximum ranges"),
     "given": N_("the synchronous speed the brief gives"),
 }
+
+
+#: A motor whose rated power exceeds P_d by more than this factor is explained: which
+#: smaller motors the choice passed over and why.
+OVERSIZE = 2.0
+
+
+def _oversize(d, _) -> str | None:
+    """Why the chosen motor is much larger than P_d: the smaller motors of the other
+    synchronous speeds, each with the ratio the free stages would need against their
+    recommended and maximum ranges (data/transmissions.yaml); the smallest one the maximum
+    ranges allow, and how to choose it. None when the motor is not oversized."""
+    from ..data import load_yaml
+
+    m = d.motor
+    if d.power_required <= 0 or m.power < OVERSIZE * d.power_required:
+        return None
+    table = load_yaml("transmissions.yaml")
+    free = [st for st in d.stages if not st.fixed and st.type != "coupling"]
+    fixed = float(np.prod([st.ratio for st in d.stages if st.fixed])) if d.stages else 1.0
+    if not free:
+        return None
+    rec = (float(np.prod([table[st.kind]["ratio_recommended"][0] for st in free])),
+           float(np.prod([table[st.kind]["ratio_recommended"][1] for st in free])))
+    top = float(np.prod([table[st.kind]["ratio_max"] for st in free]))
+    names = _("; ").join(_stage_name(st.kind, _) for st in free)
+    tried = []
+    for c in d.choice.candidates:
+        if c.motor is None or c.motor.designation == m.designation or c.motor.power >= m.power:
+            continue
+        need = c.total_ratio / fixed
+        why = (_("above the maximum {top}", top=f(top, 0)) if need > top else
+               _("below the recommended range") if need < rec[0] else
+               _("beyond the recommended {lo}–{hi}, within the maximum {top}", lo=f(rec[0], 0),
+                 hi=f(rec[1], 0), top=f(top, 0)))
+        tried.append(dict(c=c, need=need, why=why, possible=rec[0] <= need <= top * (1 + d.speed_tolerance)))
+    if not tried:
+        return None
+    items = _("; ").join(_("{motor} ({P} kW, {n} rpm): i = {i}, {names} {need}, {why}",
+                           motor=t["c"].motor.designation, P=f(t["c"].motor.power / 1e3, 2),
+                           n=f(t["c"].motor.full_load_rpm, 0), i=f(t["c"].total_ratio, 2),
+                           names=names, need=f(t["need"], 2), why=t["why"]) for t in tried)
+    alt = min((t for t in tried if t["possible"]), key=lambda t: t["c"].motor.power, default=None)
+    text = _("Its rated power is {times} times $P_d$: not the power but the ratio ruled out the "
+             "smaller motors. The stages with a given ratio give {fixed}, so the other stages "
+             "({names}) must make $i/{fixed}$, recommended {lo}–{hi}: {items}.",
+             times=f(m.power / d.power_required, 1), fixed=f(fixed, 2), names=names,
+             lo=f(rec[0], 0), hi=f(rec[1], 0), items=items)
+    if alt is not None:
+        text = sentences(_, text, _(
+            "The smallest motor the maximum ranges allow is {motor} ({P} kW), with {need} for "
+            "{names}, beyond its recommended range; to design with it, set "
+            "drive.motor.synchronous_rpm: {sync} in the brief.", motor=alt["c"].motor.designation,
+            P=f(alt["c"].motor.power / 1e3, 2), need=f(alt["need"], 2), names=names,
+            sync=f(alt["c"].synchronous_rpm, 0)))
+    return text
 
 
 def drive_context(d, lang: str, figures: dict[str, str], machine_power_eq: str | None = None) -> dict:
@@ -93,7 +149,7 @@ def drive_context(d, lang: str, figures: dict[str, str], machine_power_eq: str |
     return {
         "alloc_notes": alloc_notes, "worm_eff": worm,
         "eq": eq, "cand_rows": cand_rows, "stage_rows": stage_rows, "shaft_rows": shaft_rows,
-        "reason": reason,
+        "reason": reason, "oversize": _oversize(d, _),
         "motor": {"name": m.designation, "P": f(m.power / 1e3, 2), "sync": f(m.synchronous_rpm, 0),
                   "n": f(m.full_load_rpm, 0), "H": f(m.frame_height * MM, 0),
                   "tst": f(m.starting_torque_ratio, 1), "tmax": f(m.max_torque_ratio, 1)},
@@ -103,6 +159,9 @@ def drive_context(d, lang: str, figures: dict[str, str], machine_power_eq: str |
         "err": f(d.speed_error * 100, 2), "tol": f(d.speed_tolerance * 100, 1),
         "speed_ok": abs(d.speed_error) <= d.speed_tolerance,
         "hours": f(d.service_hours, 0), "KA": f(d.KA, 2),
+        # a gear (or worm) stage upstream of the flywheel keeps K_A (a belt there has its own)
+        "gears_before": d.peak_from_shaft is not None and any(
+            st.index < d.peak_from_shaft and st.type in ("spur", "helical", "worm") for st in d.stages),
         "peak": sig(d.peak_factor) if d.peak_from_shaft is not None else None,
         "peak_shaft": _shaft_name(d.peak_from_shaft, len(d.shafts) - 1, _.zh) if d.peak_from_shaft is not None else "",
         "warnings": [md_text(w.text(lang)) for w in d.warnings],
@@ -278,6 +337,10 @@ def stage_designs(d, lang: str) -> list[dict]:
                           bearing_loads=f(sh.bearing_loads[0], 1),
                           bearing_loads2=f(sh.bearing_loads[1], 1),
                           life_torque_factor=f(sh.life_torque_factor, 3)))
+            if "flywheel" in sh.elements:
+                w = -sum(ld.Fv for ld, nm in zip(sh.loads, sh.elements) if nm == "flywheel")
+                text.append(_("The flywheel's rim weight {W} N acts between the bearings in both "
+                              "cases, unscaled.", W=f(w, 1)))
         unit_mm = "mm"
         rows = [["$d_{min}$", f(sh.d_min * MM, 2), unit_mm]]
         if sh.d_end is not None:

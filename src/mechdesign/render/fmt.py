@@ -356,3 +356,8 @@ def md_meta(meta, lang: str | None = None) -> dict[str, str]:
     out["subtitle"] = md_text(meta_text(meta, "subtitle", lang))
     out["language"] = str(getattr(meta, "language", ""))
     return out
+
+
+def sentences(_, *texts: str) -> str:
+    """Sentences of one paragraph: a space between them in English, none in Chinese."""
+    return ("" if _.zh else " ").join(t for t in texts if t)

@@ -488,6 +488,15 @@ def _couple(c: float) -> str:
     return f" {'+' if c >= 0 else '-'} {_num(abs(c))}" if c else ""
 
 
+def _signed_pb(fg) -> float:
+    """P_b = M_b/l at the crank pin with M_b's sign (counter-clockwise positive): the
+    value of the P_b equation (the moment whose unknown is P_b)."""
+    found = [m.result for m in fg.moments if m.unknown == "Pb"]
+    if found:
+        return float(found[0])
+    return float(np.copysign(abs(fg.balancing_force), fg.balancing_torque or 0.0))
+
+
 def _forces(pos, lang: str) -> list[dict]:
     out = []
     mu_l = pos.length_scale
@@ -536,7 +545,10 @@ def _forces(pos, lang: str) -> list[dict]:
                     is not None, "mu": _scale(fg.scale), "moments": moments, "rows": rows,
                     "loads": loads, "sum": closing, "n": n,
                     "mb": None if fg.balancing_torque is None else _numg(fg.balancing_torque),
-                    "pb": None if fg.balancing_force is None else _numg(abs(fg.balancing_force))})
+                    # P_b = M_b/l, signed as M_b (counter-clockwise positive) in the equation and
+                    # the text alike; its magnitude is the length drawn in the polygon
+                    "pb": None if fg.balancing_force is None else _numg(_signed_pb(fg)),
+                    "pb_abs": None if fg.balancing_force is None else _numg(abs(fg.balancing_force))})
     return out
 
 

@@ -14,7 +14,7 @@ import numpy as np
 
 from ..i18n import N_, tr
 from . import figures as fig
-from .fmt import e, f, fluctuation, force_unit, md_text, sig, tex_name, time_ratio
+from .fmt import e, f, fluctuation, force_unit, md_text, percent, sentences, sig, tex_name, time_ratio
 from .fmt import verdict as fmt_verdict
 from .label_layout import Label, place
 from .labels import LabelTable, md_names, md_point, mpl_names, mpl_point, point_tex
@@ -300,9 +300,40 @@ def _angles_caption(k, lang: str) -> str:
     return _("Transmission and pressure angles against the crank angle")
 
 
+def realised_flywheel(fly, n_real: float | None, _) -> str | None:
+    """The flywheel sized at the nominal speed (the crank's, at which M_b and ΔW_max are
+    computed, × the ratio to its shaft) against the speed ``n_real`` [rpm] the drive realises
+    on its shaft: the same flywheel there gives δ = [δ](n/n′)² (J_F ∝ 1/n²); None when the
+    two agree or no drive is designed. The sentences in the language of ``_``."""
+    if n_real is None or abs(n_real - fly.shaft_speed_rpm) < 5e-3:
+        return None
+    delta = fly.fluctuation * (fly.shaft_speed_rpm / n_real) ** 2
+    n, nr = f(fly.shaft_speed_rpm, 2), f(n_real, 2)
+    off = percent(abs(n_real / fly.shaft_speed_rpm - 1) * 100)
+    if n_real > fly.shaft_speed_rpm:
+        first = _("$J_F$ is sized at the nominal speed n = {n} rpm, at which $M_b$ and $\\Delta W_{{max}}$ "
+                  "are computed; the drive (chapter \"Drive design\") realises n′ = {n_real} rpm on "
+                  "this shaft, {faster}% faster.", n=n, n_real=nr, faster=off)
+    else:
+        first = _("$J_F$ is sized at the nominal speed n = {n} rpm, at which $M_b$ and $\\Delta W_{{max}}$ "
+                  "are computed; the drive (chapter \"Drive design\") realises n′ = {n_real} rpm on "
+                  "this shaft, {faster}% slower.", n=n, n_real=nr, faster=off)
+    if delta <= fly.fluctuation * (1 + 1e-12):
+        second = _("The same flywheel there keeps the fluctuation at δ = [δ](n/n′)² = {delta_real}, "
+                   "within [δ]: the nominal speed is the safe side.", delta_real=f(delta, 4))
+    else:
+        second = _("The same flywheel there lets the fluctuation reach δ = [δ](n/n′)² = {delta_real}, "
+                   "above [δ]: at n′ it would need $J_F$ = {jf_real} kg·m².", delta_real=f(delta, 4),
+                   jf_real=sig(fly.inertia * (fly.shaft_speed_rpm / n_real) ** 2))
+    return sentences(_, first, second)
+
+
+
 def linkage_context(model, k, f_, fly, v, figures: dict, lang: str,
-                    prefix: str = "linkage", title: str | None = None) -> dict:
-    """Strings and rows for ``linkage_section``; ``title`` is the chapter heading."""
+                    prefix: str = "linkage", title: str | None = None,
+                    flywheel_realised_rpm: float | None = None) -> dict:
+    """Strings and rows for ``linkage_section``; ``title`` is the chapter heading;
+    ``flywheel_realised_rpm``: the flywheel shaft's speed as the drive realises it."""
     _ = tr(lang)
     n = k.grid_size
     scale, units = _units(k)
@@ -408,7 +439,7 @@ def linkage_context(model, k, f_, fly, v, figures: dict, lang: str,
             "eq": (rf"J_F = \frac{{900\,\Delta W_{{max}}}}{{\pi^2 n^2 [\delta]}} = \frac{{900 \times "
                    rf"{sig(fly.max_energy_swing, group=False)}}}{{\pi^2 \times {f(fly.shaft_speed_rpm, 2)}^2 \times "
                    rf"{f(fly.fluctuation, 4)}}} = {sig(fly.inertia, group=False)}\ \text{{kg·m}}^2"),
-            "rim": None,
+            "rim": None, "real": realised_flywheel(fly, flywheel_realised_rpm, _),
         }
         if fly.rim is not None:
             rim, spec = fly.rim, model.flywheel.rim

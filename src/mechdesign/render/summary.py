@@ -376,7 +376,9 @@ _PARTS = (  # (document key, msgid): what a results document shows was designed
     ("optimum", N_("crank-rocker design")),
     ("positions", N_("kinematic and kinetostatic analysis")),
     ("linkage", N_("kinematic and kinetostatic analysis")),
+    ("press", N_("kinematic and kinetostatic analysis")),       # the die-cutter's toggle press
     ("feed", N_("kinematic analysis of the feed linkage")),
+    ("feed.gear", N_("incomplete-gear chain feed design")),      # the die-cutter's feed
     ("bending", N_("bending linkage design")),
     ("flywheel", N_("flywheel design")),
     ("followers", N_("follower motion of the disc cam")),
@@ -390,9 +392,22 @@ _PARTS = (  # (document key, msgid): what a results document shows was designed
 )
 
 
+def _has_part(document: dict, key: str) -> bool:
+    """``key`` ("feed") is in the document; "feed.gear": the feed is an incomplete-gear drive
+    (a plain "feed" then names a feed linkage only when the feed has no gear)."""
+    head, _dot, sub = key.partition(".")
+    doc = document.get(head)
+    if not isinstance(doc, dict):
+        return doc is not None and not sub
+    if sub:
+        return doc.get(sub) is not None
+    return not any(k.startswith(head + ".") and doc.get(k.partition(".")[2]) is not None
+                   for k, _m in _PARTS)
+
+
 def _designed(document: dict, lang: str) -> list[str]:
     _ = tr(lang)
-    return list(dict.fromkeys(_(p[1]) for p in _PARTS if document.get(p[0]) is not None))
+    return list(dict.fromkeys(_(p[1]) for p in _PARTS if _has_part(document, p[0])))
 
 
 def _findings(ctx: Any, out: list[str]) -> list[str]:

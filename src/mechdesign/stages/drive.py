@@ -182,12 +182,14 @@ def design_ratios(stages, elements, total: float, belt_d1: dict | None = None) -
 
 def design_drive(dp, machine_power: float, output_rpm: float, source: str,
                  peak_factor: float = 1.0, peak_from_shaft: int | None = None,
-                 life_factor: float | None = None) -> DriveResult:
+                 life_factor: float | None = None,
+                 weights: dict[int, tuple[float, float]] | None = None) -> DriveResult:
     """The whole drive for a machine needing ``machine_power`` [W] at ``output_rpm``.
     ``peak_factor``: the machine's peak torque / its mean, carried by the shafts from
     ``peak_from_shaft`` on (after the flywheel; None: none); ``life_factor``: the cycle's
     cube-mean torque / its mean, the equivalent load of the bearing life there (None: the
-    mean)."""
+    mean); ``weights``: {shaft: (weight [N], width [m])} of a heavy part that carries no
+    drive stage (a flywheel), a vertical load between that shaft's bearings."""
     # A machine without working resistance takes (almost) no mean power: its torque only
     # swings about zero, the peak factor peak/mean is unbounded and nothing sizes the drive.
     if not (machine_power > 0 and np.isfinite(machine_power) and 0 < peak_factor < 1e6):
@@ -228,7 +230,7 @@ def design_drive(dp, machine_power: float, output_rpm: float, source: str,
         if not changed:
             break
         worm_eff.update(changed)
-    shaft_designs = _shafts(dp, results, shafts, peak_factor, peak_from_shaft, life_factor)
+    shaft_designs = _shafts(dp, results, shafts, peak_factor, peak_from_shaft, life_factor, weights)
     n_out = shafts[-1].speed_rpm
     error = (n_out - output_rpm) / output_rpm
     warnings = []
@@ -332,10 +334,10 @@ def _strength(dp, results, shafts, peak_factor, peak_from_shaft):
     return results, worm_eff
 
 
-def _shafts(dp, results, shafts, peak_factor, peak_from_shaft, life_factor=None):
+def _shafts(dp, results, shafts, peak_factor, peak_from_shaft, life_factor=None, weights=None):
     kinds = [r.kind for r in results]
     return ds.shaft_designs(dp, [r.design for r in results], shafts, peak_factor, peak_from_shaft, kinds,
-                            life_factor)
+                            life_factor, weights)
 
 
 def undercut_findings(results) -> list[Finding]:

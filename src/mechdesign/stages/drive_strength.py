@@ -352,10 +352,12 @@ def _life_scale(designs, peak_factor, peak_from_shaft, life_factor):
     return out
 
 
-def _place(dp, j, designs, kinds):
+def _place(dp, j, designs, kinds, weight=None):
     """The elements on shaft j and where they sit: those inside the housing evenly between
     the bearings, the overhung ones 80 mm outside (first left, then right). ``kinds``: the
-    stages' kinds (transmissions.yaml keys), which name the elements."""
+    stages' kinds (transmissions.yaml keys), which name the elements. ``weight``: (W [N],
+    width [m]) of a flywheel on the shaft: a load −W in the vertical plane between the
+    bearings, after the stages' elements (it has no drive stage: no key is designed for it)."""
     elems = [(j - 1, designs[j - 1], False, kinds[j - 1])]
     if j < len(designs):
         elems.append((j, designs[j], True, kinds[j]))
@@ -364,6 +366,10 @@ def _place(dp, j, designs, kinds):
         inside, fields, width, hub_mat = _element_loads(d, drv)
         info.append(dict(k=k, design=d, driving=drv, name=nm, inside=inside, fields=fields,
                          width=width or (0.06 if d.kind == "worm" else 0.0), hub_mat=hub_mat))
+    if weight is not None and weight[0] > 0:
+        info.append(dict(k=None, design=None, driving=False, name="flywheel", inside=True,
+                         fields=dict(Fv=-float(weight[0])), width=float(weight[1]),
+                         hub_mat="cast_iron"))
     inside_width = sum(i["width"] for i in info if i["inside"]) or 0.05
     span = dp.stages[j - 1].span or inside_width + 2 * CLEARANCE
     ins = [i for i in info if i["inside"]]
@@ -380,7 +386,7 @@ def _statics(span, info, T, scale=None):
     loads = []
     for i in _load_order(info):
         f = dict(i["fields"])
-        if scale is not None:
+        if scale is not None and i["k"] is not None:     # a weight is the same in both cases
             c = scale[i["k"]]
             f = {k: (v * c if k != "r" else v) for k, v in f.items()}
         loads.append(st.PointLoad(i["x"], **f))
@@ -426,6 +432,8 @@ def _keys(info, d_end, d_seat, T_of, allow_of, key_length=None):
     out = []
     for i in info:
         d = i["design"]
+        if d is None:
+            continue                      # a flywheel's weight: no drive stage, no key here
         if d.kind == "worm" and i["driving"]:
             continue                      # the worm is cut on its shaft: no key
         dk = d_seat if i["inside"] or d_end is None else d_end
@@ -511,7 +519,8 @@ def _evaluate(dp, j, sh, info, span, T, res, life_res, mat, dims, bearing_fixed,
 
 
 def shaft_designs(dp, designs, shafts, peak_factor, peak_from_shaft, kinds,
-                  life_factor: float | None = None) -> tuple[ShaftDesign, ...]:
+                  life_factor: float | None = None,
+                  weights: dict[int, tuple[float, float]] | None = None) -> tuple[ShaftDesign, ...]:
     """Each shaft designed by the handbook's procedure (濮良贵《机械设计》 ch.15, 《机械设计课程
     设计》): d_min = A0∛(P/n) (+5 % keyway); the sections laid out from the parts (overhung end
     → journal → seat → shoulder), each rounded up to the standard series; the bending–torsion
@@ -523,7 +532,8 @@ def shaft_designs(dp, designs, shafts, peak_factor, peak_from_shaft, kinds,
     Torques: the shafts after the flywheel (``peak_from_shaft``) carry the machine's peak
     torque (mean × ``peak_factor``) for the strength checks (shaft, keys, bearing statics);
     the bearing life, a fatigue quantity, takes the cycle's equivalent load: the elements'
-    forces at the cube-mean torque (``life_factor`` × the mean; None: the mean) × f_p."""
+    forces at the cube-mean torque (``life_factor`` × the mean; None: the mean) × f_p.
+    ``weights``: {shaft: (W [N], width [m])}, a flywheel's weight between that shaft's bearings."""
     choices = {c.shaft: c for c in dp.shafts}
     worm_shafts = {k for k, d in enumerate(designs) if d.kind == "worm"} | \
                   {k + 1 for k, d in enumerate(designs) if d.kind == "worm"}
@@ -541,7 +551,7 @@ def shaft_designs(dp, designs, shafts, peak_factor, peak_from_shaft, kinds,
         mat = cat.shaft_material(mat_key)
         a0 = A0 if mat_key.startswith("45") else 0.5 * (mat.A0_min + mat.A0_max)
         d_min = st.shaft_min_diameter(sh.power, sh.speed_rpm, a0, KEYWAY)
-        info, span = _place(dp, j, designs, kinds)
+        info, span = _place(dp, j, designs, kinds, (weights or {}).get(j))
         loads, res = _statics(span, info, T)
         _, life_res = _statics(span, info, T * lf / boost if peak else T, scale)
         overhung = any(not i["inside"] for i in info)
@@ -550,8 +560,10 @@ def shaft_designs(dp, designs, shafts, peak_factor, peak_from_shaft, kinds,
         ci_lo, _ = cat.key_allowable_stress("cast_iron", "light_shock")
 
         def T_of(i, j=j, sh=sh, T=T):
-            # the element before the flywheel sees the motor side's mean torque
-            return sh.torque if (peak_from_shaft is not None and i["k"] < peak_from_shaft) else T
+            # the element before the flywheel sees the motor side's mean torque (the flywheel
+            # itself, k None, the shaft's design torque)
+            return sh.torque if (peak_from_shaft is not None and i["k"] is not None
+                                 and i["k"] < peak_from_shaft) else T
 
         def allow_of(i):
             return ci_lo if i["hub_mat"] == "cast_iron" else sp_lo

@@ -74,15 +74,16 @@ def motion(model, syn: Synthesis, p, rod: str, requests=None):
             field=field, value=value, rule=rule, need=need)) from None
 
 
-def optional_stages(p) -> list[Stage]:
-    """The gear pair, the drive and the cam, when the brief has those sections."""
+def optional_stages(p, flywheel_weight: bool = False) -> list[Stage]:
+    """The gear pair, the drive and the cam, when the brief has those sections
+    (``flywheel_weight``: the drive's shafts carry the flywheel rim's weight)."""
     out = []
     if p.gear is not None:
         from .gear import gear_stage
 
         out.append(gear_stage())
     if p.drive is not None:
-        out.append(drive_stage())
+        out.append(drive_stage(flywheel_weight))
     if p.cam is not None:
         from .cam import cam_stage
 
@@ -113,10 +114,12 @@ def synthesize(p) -> Synthesis:
                      p.crank is not None, p.guide_height is not None)
 
 
-def _drive(r: dict):
+def _drive(r: dict, flywheel_weight: bool = False):
     """The drive delivers the crank's mean power at the crank speed. The flywheel evens out
     the torque upstream of its shaft only: the stages after it carry the peak of M_b.
-    (Any guide-bar machine whose gear pair z1/z2 is the drive's last stage.)"""
+    ``flywheel_weight``: the flywheel's cast rim (its weight m·g, its width b) is a load
+    between the bearings of its shaft. (Any guide-bar machine whose gear pair z1/z2 is the
+    drive's last stage.)"""
     from dataclasses import replace
 
     from .drive import design_drive
@@ -130,13 +133,16 @@ def _drive(r: dict):
     flywheel_shaft = shafts - 1 if p.flywheel_shaft == "pinion" else shafts
     # the bearing life's equivalent load: the cycle's cube-mean torque (see design_drive)
     life = float(np.mean(np.abs(mb) ** 3) ** (1 / 3) / mean) if mean > 0 else None
+    weights = None
+    if flywheel_weight and fl.rim is not None and flywheel_shaft >= 1:
+        weights = {flywheel_shaft: (fl.rim.rim_mass * p.gravity, fl.rim.width)}
     result = design_drive(p.drive, fl.mean_power, p.crank_speed_rpm, "mechanism",
-                          peak, flywheel_shaft if flywheel_shaft < shafts else None, life)
+                          peak, flywheel_shaft if flywheel_shaft < shafts else None, life, weights)
     # The last stage is gear_pair, whose undercut the gear stage reports with its own fields.
     last = f"drive.stages[{shafts - 1}]"
     return replace(result, warnings=tuple(w for w in result.warnings
                                           if not (w.code == "undercut" and w.field == last)))
 
 
-def drive_stage() -> Stage:
-    return Stage("drive", titles.pgettext("stage", "drive"), _drive)
+def drive_stage(flywheel_weight: bool = False) -> Stage:
+    return Stage("drive", titles.pgettext("stage", "drive"), lambda r: _drive(r, flywheel_weight))

@@ -16,6 +16,8 @@ from ...render import figures as fig
 from ...render.fmt import e, f, md_meta, md_text, sig, fluctuation
 from ...render.fmt import number, time_ratio, verdict
 from ...render.labels import pgettext, translated
+from ...render.fmt import sentences
+from ...render.linkage_report import realised_flywheel
 from ...stages.drive import shaft_numeral
 
 DEG = 180.0 / np.pi
@@ -124,15 +126,19 @@ def _deg(x: float, digits: int = 2) -> str:
     return f(x * DEG, digits)
 
 
-def _data_rows(b, p, _) -> list[list[str]]:
-    """The task's data (seed 001b)."""
+def _data_rows(b, p, r, _) -> list[list[str]]:
+    """The task's data (seed 001b); the motor speed is the task's nominal one, the drive
+    design's motor and its full-load speed named beside it."""
+    motor = r["drive"].motor
     rows = [
         [_("output"), f"{f(b.production.sheets_per_hour, 0)} " + _("sheets/h"),
          _("one sheet per turn of the distribution shaft: n = {shaft_rpm} rpm",
             shaft_rpm=f(p.shaft_rpm, 2))],
         [_("motor speed"), _("1450 rpm"),
-         _("4-pole Y series (1500 rpm synchronous), the size chosen by the drive design "
-           "from the power")],
+         _("the task's nominal speed of a 4-pole Y motor ({sync} rpm synchronous); the drive "
+           "design chooses the size from the power: {motor}, {n} rpm at full load, the speed "
+           "the drive is designed with", sync=f(motor.synchronous_rpm, 0),
+           motor=motor.designation, n=f(motor.full_load_rpm, 0))],
         [_("table height"), f"≈ {f(b.production.table_height_mm, 0)} mm",
          _("layout datum")],
         [_("board thickness"), f"≤ {f(b.production.board_thickness_mm, 1)} mm",
@@ -379,10 +385,27 @@ def _amplification(r, p, _) -> dict:
 def _flywheel(r, p, b, _) -> dict:
     fl = r["press_flywheel"]
     crank_shaft = _("distribution shaft")
-    shaft = _shaft(fl.shaft, len(b.drive.stages), _)
-    rows = [[_shaft(s.index, len(b.drive.stages), _), f(s.speed_rpm, 1), f(s.torque, 1, group=True),
-             f(s.peak_torque, 1, group=True), f(s.d_seat * MM, 0), f(s.d_peak * MM, 0)]
+    stages = len(b.drive.stages)
+    shaft = _shaft(fl.shaft, stages, _)
+    drive = r["drive"]
+    designs = {sd.index: sd for sd in drive.shaft_designs}
+    # each column what its header says: the torsion estimate A0·∛(P/n)(1 + 5 %) of the mean
+    # power (the drive stage's d_min), the same of the peak power, and the seat diameter the
+    # drive design reached with its strength checks at the peak torque
+    rows = [[_shaft(s.index, stages, _), f(s.speed_rpm, 2), f(s.torque, 1, group=True),
+             f(s.peak_torque, 1, group=True), f(designs[s.index].d_min * MM, 1),
+             f(s.d_peak * MM, 1), f(s.d_seat * MM, 0)]
             for s in r["peak_shafts"]]
+    # the flywheel is sized at the nominal speed (the distribution shaft's n, at which M_b and
+    # ΔW_max are computed, × the realised ratios after the flywheel); the drive realises the
+    # motor's full-load speed through its realised ratios: the same flywheel there gives
+    # δ = [δ]·(n_nominal/n_realised)²
+    real = realised_flywheel(fl, drive.shafts[fl.shaft].speed_rpm, _)
+    if real:
+        real = sentences(_, real, _("(The distribution shaft: nominal {n_crank} rpm, realised "
+                                    "{n_crank_real} rpm.)", n_crank=f(p.shaft_rpm, 2),
+                                    n_crank_real=f(drive.output_speed, 2)))
+    speeds = {"real": real, "n_crank": f(p.shaft_rpm, 2)}
     eq = {
         "md": (rf"M_d = \frac{{1}}{{2\pi}}\oint M_b\,d\varphi = {sig(fl.mean_torque, group=False)}\ \text{{N·m}}"
                rf"\ (\text{{{crank_shaft}}})"),
@@ -404,8 +427,46 @@ def _flywheel(r, p, b, _) -> dict:
             "jf": f(fl.inertia, 3), "jf_crank": f(fl.inertia_on_crank, 1),
             "D": f(fl.rim.diameter * MM, 0), "b": f(fl.rim.width * MM, 1),
             "Hr": f(fl.rim.height * MM, 1), "m": f(fl.rim.rim_mass, 1),
-            "speed": f(fl.rim.rim_speed, 2), "peak_rows": rows,
-            "share": f(fl.max_energy_swing / r["amplification"].cut_work * 100, 1)}
+            "speed": f(fl.rim.rim_speed, 2), "peak_rows": rows, **speeds,
+            "share": f(fl.max_energy_swing / r["amplification"].cut_work * 100, 1),
+            "place": _placement(r, p, b, _)}
+
+
+def _inertia(J: float) -> str:
+    """J_F as the flywheel chapter writes it: three decimals, one from 100 kg·m² on."""
+    return f(J, 3 if J < 100 else 1, group=True)
+
+
+def _placement(r, p, b, _) -> dict:
+    """The brief's flywheel placement against the other one, both designed (stage
+    flywheel_placement): flywheel, gear stages, shafts, masses."""
+    cmp_ = r["flywheel_placement"]
+    stages = len(b.drive.stages)
+    a, o = cmp_.chosen, cmp_.other
+    rows = [[_("flywheel shaft speed n (nominal) /rpm"), f(a.speed_rpm, 2), f(o.speed_rpm, 2)],
+            [_("flywheel $J_F$ /kg·m²"), _inertia(a.inertia), _inertia(o.inertia)],
+            [_("rim D × b × H /mm"), " × ".join(f(x * MM, 0) for x in (a.rim.diameter, a.rim.width, a.rim.height)),
+             " × ".join(f(x * MM, 0) for x in (o.rim.diameter, o.rim.width, o.rim.height))],
+            [_("rim mass /kg"), f(a.rim.rim_mass, 1, group=True), f(o.rim.rim_mass, 1, group=True)]]
+    for ga, go in zip(a.gears, o.gears):
+        rows.append([_("stage {k}: $m_n$ / $d_2$ / $b$ /mm", k=ga.index + 1),
+                     f"{f(ga.module * MM, 0)} / {f(ga.d2 * MM, 1)} / {f(ga.face_width * MM, 0)}",
+                     f"{f(go.module * MM, 0)} / {f(go.d2 * MM, 1)} / {f(go.face_width * MM, 0)}"])
+    rows.append([_("hub seats, {names} /mm",
+                   names=" / ".join(_shaft(k + 1, stages, _) for k in range(len(a.shaft_seats)))),
+                 " / ".join(f(x * MM, 0) for x in a.shaft_seats),
+                 " / ".join(f(x * MM, 0) for x in o.shaft_seats)])
+    rows.append([_("gear wheels (solid discs $\\rho\\pi d_2^2 b/4$) /kg"), f(a.gear_mass, 1, group=True),
+                 f(o.gear_mass, 1, group=True)])
+    total_a, total_o = a.rim.rim_mass + a.gear_mass, o.rim.rim_mass + o.gear_mass
+    rows.append([_("rim and gear wheels /kg"), f(total_a, 1, group=True), f(total_o, 1, group=True)])
+    return {"rows": rows, "chosen": _shaft(a.shaft, stages, _), "other": _shaft(o.shaft, stages, _),
+            "j_ratio": f(o.inertia / a.inertia, 1), "n_ratio2": f((a.speed_rpm / o.speed_rpm) ** 2, 1),
+            "gear_ratio": f(a.gear_mass / o.gear_mass, 1) if o.gear_mass > 0 else "—",
+            "lighter": total_a <= total_o, "total_a": f(total_a, 0, group=True),
+            "total_o": f(total_o, 0, group=True), "stages": stages,
+            "peak": f(r["drive"].peak_factor, 2), "KA": f(r["drive"].KA, 2),
+            "other_upstream": o.shaft > a.shaft}
 
 
 def _feed(r, b, p, _) -> dict:
@@ -553,7 +614,7 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
         "meta": md_meta(brief.report, lang), "fig": figures,
         "rpm": f(p.shaft_rpm, 2), "period": f(60 / p.shaft_rpm, 3), "omega": sig(abs(p.crank_omega)),
         "sense": _("clockwise") if p.crank_omega < 0 else _("counter-clockwise"),
-        "data_rows": _data_rows(brief, p, _), "choice_rows": _choice_rows(brief, p, r, _),
+        "data_rows": _data_rows(brief, p, r, _), "choice_rows": _choice_rows(brief, p, r, _),
         "syn": _synthesis(r["toggle"], p, _), "amp": _amplification(r, p, _),
         "fly": _flywheel(r, p, brief, _), "feed": _feed(r, brief, p, _),
         "linkage": lk, "cam": cam, "ig": ig, "cycle": cycle, "drive": drive,

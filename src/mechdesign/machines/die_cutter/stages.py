@@ -380,20 +380,20 @@ def amplification(model: LinkageModel, d: ToggleDesign, k, raw, f, p: DieCutterP
 # --------------------------------------------------------------------------- drive and flywheel
 
 
-def _drive(r: dict):
+def _drive(r: dict, flywheel_shaft: int | None = None):
     """The drive delivers the crank's mean power at the distribution shaft's speed; the
-    stages after the flywheel carry the peak of M_b (peak factor = peak / mean)."""
+    stages and shafts after the flywheel carry the peak of M_b (peak factor = peak / mean);
+    with the flywheel on the distribution shaft, that shaft itself (between the flywheel and
+    the crank). ``flywheel_shaft``: another placement than the brief's (the comparison)."""
     from ...stages.drive import design_drive
 
     p, f = r["params"], r["press_forces"]
     peak = float(f.peak_torque / f.mean_torque)
-    shafts = len(p.drive.stages)
-    j = p.flywheel_shaft
+    j = p.flywheel_shaft if flywheel_shaft is None else flywheel_shaft
     # the bearing life's equivalent load after the flywheel: the cycle's cube-mean torque
     mb = f.balancing_torque[:r["press"].grid_size]
     life = float(np.mean(np.abs(mb) ** 3) ** (1 / 3) / f.mean_torque)
-    return design_drive(p.drive, f.mean_power, p.shaft_rpm, "mechanism", peak,
-                        j if j < shafts else None, life)
+    return design_drive(p.drive, f.mean_power, p.shaft_rpm, "mechanism", peak, j, life)
 
 
 @dataclass(frozen=True)
@@ -440,6 +440,100 @@ def flywheel(model: LinkageModel, k, f, drive, p: DieCutterParams) -> tuple[Flyw
     fl = design_flywheel(spec, k.phase[:n], f.balancing_torque[:n], model.crank_omega, p.gravity,
                          exact=CycleIntegrals(model, k))
     return fl, peak_shafts(drive)
+
+
+#: Density of steel [kg/m³] for the gear wheels' solid-disc mass estimate.
+STEEL_DENSITY = 7850.0
+
+
+@dataclass(frozen=True)
+class GearStageSize:
+    """A gear stage's size in one flywheel placement."""
+
+    index: int = q("1", "drive stage index (0 from the motor)")
+    module: float = q("m", "normal module m_n")
+    d2: float = q("m", "wheel pitch diameter")
+    face_width: float = q("m", "face width b")
+    torque: float = q("N·m", "design torque on the wheel (the peak after the flywheel)")
+    wheel_mass: float = q("kg", "solid-disc estimate ρ·π/4·d2²·b (an upper bound of the wheel)")
+
+
+@dataclass(frozen=True)
+class FlywheelPlacement:
+    """The flywheel on one drive shaft: the flywheel and the drive downstream of it sized
+    for that placement (the stages after the flywheel carry the peak of M_b)."""
+
+    shaft: int = q("1", "drive shaft carrying the flywheel (the number of stages: the "
+                   "distribution shaft)")
+    speed_rpm: float = q("rpm", "flywheel shaft speed (the distribution shaft's nominal speed × "
+                         "the realised ratios after it)")
+    inertia: float = q("kg·m²", "J_F")
+    rim: object = q("", "cast rim (mechdesign.core.flywheel.RimFlywheel)")
+    gears: tuple[GearStageSize, ...] = q("", "the gear stages")
+    shaft_seats: tuple[float, ...] = q("m", "hub-seat diameter of shafts 1 … n")
+    gear_mass: float = q("kg", "the gear wheels' solid-disc estimates, summed")
+
+
+@dataclass(frozen=True)
+class PlacementComparison:
+    """The brief's flywheel placement against the other one (the distribution shaft, or
+    shaft 1 when the brief puts it there): both designed, nothing typed."""
+
+    chosen: FlywheelPlacement = q("", "the brief's placement (the design of this report)")
+    other: FlywheelPlacement = q("", "the other placement, designed the same way")
+
+
+def _placement(fl: Flywheel, drive) -> FlywheelPlacement:
+    gears = []
+    for sr in drive.stages:
+        d = sr.design
+        if d is None or d.kind != "gear":
+            continue
+        d2 = float(d.forces["d2"])
+        gears.append(GearStageSize(sr.index, float(d.module), d2, float(d.face_width), float(d.T2),
+                                   float(STEEL_DENSITY * np.pi / 4 * d2 ** 2 * d.face_width)))
+    return FlywheelPlacement(int(fl.shaft), fl.shaft_speed_rpm, fl.inertia, fl.rim, tuple(gears),
+                             tuple(float(sd.d_seat) for sd in drive.shaft_designs),
+                             float(sum(g.wheel_mass for g in gears)))
+
+
+def other_rim_diameter(inertia: float, p: DieCutterParams) -> float:
+    """The brief's rim diameter when a rim of it can carry ``inertia`` as a thin rim
+    (H ≤ D/2); else the smallest diameter that can, rounded up to 50 mm."""
+    from ...stages.flywheel import smallest_rim_diameter
+
+    rim = fw_rim(inertia, p.rim_diameter, p)
+    if rim.height <= p.rim_diameter / 2:
+        return p.rim_diameter
+    d = smallest_rim_diameter(inertia, p.rim_height_to_width, p.specific_weight, p.gravity)
+    return float(np.ceil(d / 0.05 - 1e-9) * 0.05)
+
+
+def fw_rim(inertia: float, diameter: float, p: DieCutterParams):
+    from ...core import flywheel as fw
+
+    return fw.rim_dimensions(inertia, diameter, p.rim_height_to_width, p.specific_weight,
+                             1.0, p.gravity)
+
+
+def compare_placements(r: dict) -> PlacementComparison:
+    """The flywheel on the other shaft — the distribution shaft, or shaft 1 when the brief
+    puts it on the distribution shaft — with the drive designed again for it."""
+    p, model, k, f = r["params"], r["press_model"], r["press"], r["press_forces"]
+    shafts = len(p.drive.stages)
+    other = shafts if p.flywheel_shaft < shafts else 1
+    drive = _drive(r, other)
+    ratio = float(np.prod([st.ratio for st in drive.stages][other:]))
+    n = k.grid_size
+    exact = CycleIntegrals(model, k)
+    bare = design_flywheel(FlywheelSpec(p.fluctuation, ratio, other), k.phase[:n],
+                           f.balancing_torque[:n], model.crank_omega, p.gravity, exact=exact)
+    D = other_rim_diameter(bare.inertia, p)
+    fl = design_flywheel(FlywheelSpec(p.fluctuation, ratio, other,
+                                      RimSpec(D, p.rim_height_to_width, p.specific_weight)),
+                         k.phase[:n], f.balancing_torque[:n], model.crank_omega, p.gravity,
+                         exact=exact)
+    return PlacementComparison(_placement(r["press_flywheel"], r["drive"]), _placement(fl, drive))
 
 
 # --------------------------------------------------------------------------- feed and cycle
@@ -509,9 +603,9 @@ def platen_actuator(t: PlatenTiming) -> cy.Actuator:
     """The platen's phases from its simulated level crossings."""
     return cy.make_actuator("platen", Msg.pgettext("cycle", "lower platen"), "", t.clear_up, [
         ("rise", t.press_up - t.clear_up, Msg.pgettext("cycle phase", "rising")),
-        ("dwell_high", t.press_down - t.press_up, Msg.pgettext("cycle phase", "die cutting")),
+        ("work", t.press_down - t.press_up, Msg.pgettext("cycle phase", "die cutting")),
         ("return", t.clear_down - t.press_down, Msg.pgettext("cycle phase", "falling")),
-        ("dwell_low", t.clear_up + TWO_PI - t.clear_down, Msg.pgettext("cycle phase", "clear"))])
+        ("clear", t.clear_up + TWO_PI - t.clear_down, Msg.pgettext("cycle phase", "clear"))])
 
 
 def gripper_actuator(programme, start: float) -> cy.Actuator:
@@ -531,10 +625,10 @@ def chain_actuator(g) -> cy.Actuator:
 
 def timing_constraints(margin: float) -> list[cy.Constraint]:
     return [
-        cy.Constraint("during", ("chain", "move"), ("platen", "dwell_low"), margin,
+        cy.Constraint("during", ("chain", "move"), ("platen", "clear"), margin,
                       *zh_en.gettext("the chain moves only while the platen is clear of the die "
                                      "(at least c below its top)")),
-        cy.Constraint("during", ("platen", "dwell_high"), ("chain", "dwell"), margin,
+        cy.Constraint("during", ("platen", "work"), ("chain", "dwell"), margin,
                       *zh_en.gettext("the sheet and the chain stand still while the die cuts")),
         cy.Constraint("during", ("gripper", "rise"), ("chain", "dwell"), margin,
                       *zh_en.gettext("the grippers open only while the chain dwells")),
@@ -611,7 +705,7 @@ def verify(model: LinkageModel, d: ToggleDesign, k, v_link, amp: Amplification, 
     top_angle = float(abs(np.angle(b_top * np.exp(-1j * np.pi / 2))))
     diagram = cyc.diagram
     clear_sim = k.s[:n] < k.stroke - p.clearance
-    clear_row = cy.state_at(diagram.actuator("platen"), phase) == "dwell_low"
+    clear_row = cy.state_at(diagram.actuator("platen"), phase) == "clear"
     prog = cam.params.programme
     open_cam = prog.evaluate(np.mod(phase - cyc.gripper_start, TWO_PI)).s > 1e-9 * prog.stroke
     open_row = cy.state_at(diagram.actuator("gripper"), phase) != "dwell_low"
@@ -666,6 +760,8 @@ def stages(params: DieCutterParams) -> list[Stage]:
         Stage(("press_flywheel", "peak_shafts"), titles.pgettext("stage", "flywheel"),
               lambda r: flywheel(r["press_model"], r["press"], r["press_forces"], r["drive"],
                                  r["params"])),
+        Stage("flywheel_placement", titles.pgettext("stage", "flywheel placement"),
+              compare_placements),
         cam_stage(),
         Stage("feed", titles.pgettext("stage", "incomplete-gear feed"),
               lambda r: feed(r["amplification"], r["params"])),
@@ -770,6 +866,8 @@ class DieCutterResults:
     amplification: AmplificationDoc = q("", "force amplification")
     flywheel: Flywheel = q("", "the flywheel (the one flywheel stage) on the drive shaft chosen")
     peak_shafts: tuple[PeakShaft, ...] = q("", "shafts after the flywheel carrying the peak of M_b")
+    flywheel_placement: PlacementComparison = q("", "the brief's flywheel placement against the "
+                                                "other one, both designed")
     drive: DriveDocument = q("", "the drive (motor → … → distribution shaft)")
     cam: CamDocument = q("", "the gripper-opening cam")
     feed: FeedDoc = q("", "the incomplete-gear chain feed")
@@ -805,7 +903,7 @@ def results_document(r: dict) -> DieCutterResults:
             amp.timing, amp.unit_torque[:n], amp.required_torque[:n], amp.peak_required,
             amp.peak_phase, tuple(AmplificationRow(*row) for row in amp.table), amp.cut_work,
             amp.cycle_work, amp.press_time),
-        flywheel=fl, peak_shafts=r["peak_shafts"],
+        flywheel=fl, peak_shafts=r["peak_shafts"], flywheel_placement=r["flywheel_placement"],
         drive=drive_document(r["drive"]), cam=cam_document(r["cam"]),
         feed=FeedDoc(intermittent_document(fd.gear), fd.start_auto, fd.sprocket_radius, fd.feed,
                      fd.chain_speed, fd.chain_jump),

@@ -32,8 +32,12 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
         zh_words.pgettext("slotter", "cutting resistance"),
         ["$x_P$", _("cutting line from the guide"), f(ld.cutting_offset_xP_mm, 0), "mm"])
     guide_bar = gb_report.guide_bar_context(syn, p, "BC", zh_words.pgettext("slotter", "ram"))
-    lkc = linkage_context(r["model"], k, r["linkage_forces"], r["linkage_flywheel"], v, figures,
-                          lang, title=_("Guide-bar linkage analysis"))
+    fl, drive = r["linkage_flywheel"], r.get("drive")
+    # the flywheel shaft's speed as the drive realises it (pinion: the shaft before the crank)
+    n_real = None if drive is None else drive.shafts[
+        len(drive.stages) - (1 if fl.shaft == "pinion" else 0)].speed_rpm
+    lkc = linkage_context(r["model"], k, r["linkage_forces"], fl, v, figures,
+                          lang, title=_("Guide-bar linkage analysis"), flywheel_realised_rpm=n_real)
     findings = [md_text(w.text(lang)) for key in ("linkage_verification", "linkage_flywheel")
                 for w in (getattr(r[key], "warnings", ()) or ())]
     sense = N_("clockwise") if p.crank_omega < 0 else N_("counter-clockwise")

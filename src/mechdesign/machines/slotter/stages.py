@@ -93,7 +93,8 @@ def stages(p: SlotterParams) -> list[Stage]:
     engine = lk.linkage_stages(model_key="model", prefix="linkage")
     out = [Stage(("synthesis", "model"), titles.pgettext("stage: guide bar", "linkage synthesis"), _synthesis),
            Stage(engine[0].key, engine[0].title, _motion), *engine[1:]]
-    return out + guide_bar.optional_stages(p)
+    # the flywheel rim (on the pinion or the crank shaft) loads its shaft with its weight
+    return out + guide_bar.optional_stages(p, flywheel_weight=True)
 
 
 @dataclass(frozen=True)
