@@ -374,6 +374,7 @@ _PARTS = (  # (document key, msgid): what a results document shows was designed
     ("synthesis", N_("dimensional synthesis of the linkage")),
     ("toggle", N_("toggle linkage design")),
     ("optimum", N_("crank-rocker design")),
+    ("slider_crank", N_("offset slider-crank design")),
     ("positions", N_("kinematic and kinetostatic analysis")),
     ("linkage", N_("kinematic and kinetostatic analysis")),
     ("feed", N_("kinematic analysis of the feed linkage")),
@@ -390,9 +391,24 @@ _PARTS = (  # (document key, msgid): what a results document shows was designed
 )
 
 
+def _forces_computed(document: dict, key: str) -> bool:
+    """Whether the linkage analysis under ``key`` computed forces: some position carries
+    joint reactions (a brief without loads gives none: kinematics only)."""
+    node = document.get(key)
+    positions = node if key == "positions" else (node or {}).get("positions")
+    return any(isinstance(p, dict) and p.get("reactions") for p in positions or ())
+
+
 def _designed(document: dict, lang: str) -> list[str]:
     _ = tr(lang)
-    return list(dict.fromkeys(_(p[1]) for p in _PARTS if document.get(p[0]) is not None))
+    out = []
+    for key, msgid in _PARTS:
+        if document.get(key) is None:
+            continue
+        if key in ("positions", "linkage") and not _forces_computed(document, key):
+            msgid = N_("kinematic analysis")
+        out.append(_(msgid))
+    return list(dict.fromkeys(out))
 
 
 def _findings(ctx: Any, out: list[str]) -> list[str]:
