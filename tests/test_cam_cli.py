@@ -214,3 +214,16 @@ def test_73_pdf_renders(tmp_path):
     assert result.exit_code == 0, result.output
     pdf = tmp_path / "pdf" / "report.pdf"
     assert pdf.read_bytes()[:5] == b"%PDF-" and pdf.stat().st_size > 50_000
+
+
+@pytest.mark.e2e
+def test_73_notation_keeps_the_offset_apart_from_the_exponential(run_73):
+    """The pitch curve B(δ) = exp(−iδ)[e + i(s0 + s)]: e is the offset, so the complex
+    exponential is written exp(…), never e^{…}; and the inversion paragraph of this
+    translating roller follower says nothing of knife edges or oscillating pivots."""
+    _, out = run_73
+    md = (out / "report.md").read_text(encoding="utf-8")
+    assert r"\exp(-i\delta)\left[e + i\," in md
+    assert "e^{" not in md
+    assert "滚子中心的轨迹即理论廓线" in md
+    assert "尖顶" not in md and "摆动从动件转轴" not in md

@@ -427,8 +427,8 @@ def optimal_crank_rocker(K: float, swing: float, rocker: float, *, side: int = +
 class SliderConstruction:
     """θ-circle construction of an offset slider-crank, A at the origin [m].
 
-    The slider guide is the line y = −e (offset below A); the slider's extremes are
-    C1 = (x1, −e) (folded, AC1 = b − a) and C2 = (x2, −e) (extended, AC2 = b + a).
+    The slider guide is the line y = +e (A lies e below it); the slider's extremes are
+    C1 = (x1, e) (folded, AC1 = b − a) and C2 = (x2, e) (extended, AC2 = b + a).
     """
 
     c1: complex

@@ -251,13 +251,14 @@ def cam_context(c, lang: str, figs: dict[str, str], csv_name: str) -> dict:
         geo = {
             "s0": (rf"s_0 = \sqrt{{r_0^2 - e^2}} = \sqrt{{{f(c.base_radius * MM, 2)}^2 - "
                    rf"{f(abs(c.offset) * MM, 2)}^2}} = {f(s0 * MM, 2)}\ \text{{mm}}"),
-            "pitch": (rf"\mathbf{{B}}(\delta) = e^{{{'-' if p.rotation > 0 else ''}i\delta}}"
+            # exp(), not e^{…}: e is the offset here
+            "pitch": (rf"\mathbf{{B}}(\delta) = \exp({'-' if p.rotation > 0 else ''}i\delta)"
                       rf"\left[e + i\,(s_0 + s)\right],\quad e = {f(c.offset * MM, 2)}\ \text{{mm}}"),
             "alpha": (rf"\tan\alpha = \frac{{\left|{'' if p.rotation > 0 else '-'}\,ds/d\delta - e\right|}}"
                       rf"{{s_0 + s}}") if fol.kind != "flat" else r"\alpha = 0",
         }
         if fol.kind == "flat":
-            geo["pitch"] = (rf"\mathbf{{B}}(\delta) = e^{{{'-' if p.rotation > 0 else ''}i\delta}}"
+            geo["pitch"] = (rf"\mathbf{{B}}(\delta) = \exp({'-' if p.rotation > 0 else ''}i\delta)"
                             rf"\left[{'' if p.rotation > 0 else '-'}\frac{{ds}}{{d\delta}} + i\,(r_0 + s)\right]")
             geo["s0"] = r"\rho = r_0 + s + \frac{d^2 s}{d\delta^2} > 0"
     else:
@@ -271,8 +272,8 @@ def cam_context(c, lang: str, figs: dict[str, str], csv_name: str) -> dict:
             "pitch": (rf"x = a\cos\delta - L\cos(\delta - \varphi - \varphi_0),\quad "
                       rf"y = a\sin\delta - L\sin(\delta - \varphi - \varphi_0)")
             if (p.rotation < 0 and fol.rise_sense == "same") else
-            (rf"\mathbf{{B}}(\delta) = e^{{{'-' if p.rotation > 0 else ''}i\delta}}\left[a + L\,"
-             rf"e^{{i(\pi - k(\varphi_0 + \varphi))}}\right],\quad k = {c.drawing.arm_side:+d}"),
+            (rf"\mathbf{{B}}(\delta) = \exp({'-' if p.rotation > 0 else ''}i\delta)\left[a + L\,"
+             rf"\exp\left[i(\pi - k(\varphi_0 + \varphi))\right]\right],\quad k = {c.drawing.arm_side:+d}"),
             "alpha": r"\alpha = \angle(\mathbf{n},\ \mathbf{v}_B),\quad \mathbf{v}_B \perp AB",
         }
     geo["envelope"] = (r"\mathbf{B}_a = \mathbf{B} - r_r\,\mathbf{n},\quad \mathbf{n} = "
@@ -344,6 +345,7 @@ def cam_context(c, lang: str, figs: dict[str, str], csv_name: str) -> dict:
         "table_head": ["δ/°", f"{u.s_sym}/{u.s_unit}", f"{u.syms[0]}/({u.units[0]})",
                        "x/mm", "y/mm", "$x_a$/mm", "$y_a$/mm", "α/°"],
         "fig": figs, "csv": csv_name, "roller": fol.kind == "roller", "flat": fol.kind == "flat",
+        "translating": translating,
         "warnings": [md_text(w.text(lang)) for w in c.warnings],
         "alpha_max": f(alpha_max * DEG, 2),
         "rr": f(c.grid.roller_radius * MM, 2), "r0": f(c.base_radius * MM, 2),

@@ -79,6 +79,8 @@ def gear_context(g, lang: str, figures: dict[str, str]) -> dict:
     undercut = [w for w in g.warnings if w.code == "undercut"]
     return {
         "rows": rows, "pair_rows": pair_rows, "eq": eq, "shifted": shifted,
+        # height modification (x1 + x2 = 0): standard centre distance and pressure angle kept
+        "height_mod": shifted and abs(g1.x + g2.x) < 1e-12,
         "z1": str(g1.z), "z2": str(g2.z), "m": f(p.m * MM, 2), "eps": f(p.contact_ratio, 3),
         "zmin": f(p.z_min, 1), "undercut": bool(undercut),
         "warnings": [md_text(w.text(lang)) for w in g.warnings],

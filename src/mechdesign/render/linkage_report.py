@@ -407,6 +407,10 @@ def linkage_context(model, k, f_, fly, v, figures: dict, lang: str,
         "sense": _("clockwise") if model.crank_omega < 0 else _("counter-clockwise"),
         "output": md_names(model.output.name),
         "unit_s": units[0], "unit_v": units[1], "unit_a": units[2],
+        # the table's symbols per quantity kind: a slider's s, v, a; a rocker's ψ, ω, α
+        "sym_s": "s" if k.output_unit == "m" else "ψ",
+        "sym_v": "v" if k.output_unit == "m" else "ω",
+        "sym_a": "a" if k.output_unit == "m" else "α",
         # a slider's stroke, a rocker's swing
         "stroke_word": _("Stroke") if k.output_unit == "m" else _("Swing"),
         "stroke": f(k.stroke * scale, 2), "K": time_ratio(k.time_ratio),

@@ -321,6 +321,43 @@ def _label(text: str) -> str:
     return text.replace("γ\\_min", r"$\gamma_{min}$").replace("J\\_F", "$J_F$")
 
 
+def _asked_rows(document: dict, lang: str) -> list[list[str]]:
+    """The answers at the crank angles the brief asks for (``analysis_requests``, e.g. φ45):
+    the output link's ω and α there, then the speed and acceleration of each requested point."""
+    _ = tr(lang)
+    asked = document.get("analysis_requests") or {}
+    linkage = document.get("linkage") or {}
+    output = linkage.get("output") or {}
+    by_label = {p.get("label"): p for p in linkage.get("positions") or () if isinstance(p, dict)}
+    rows = []
+    for req in asked.get("positions") or ():
+        label = req.get("label")
+        pos = by_label.get(label)
+        if pos is None or req.get("asked") != label:
+            continue            # a crank angle the brief gives (φ45), not an event it names
+        where = md_text(label)
+        if output.get("kind") == "link" and output.get("unit") == "rad":
+            name = str(output.get("name"))
+            for sym, key, unit in (("\\omega", "link_omega", "rad/s"),
+                                   ("\\alpha", "link_alpha", "rad/s²")):
+                text = _show((pos.get(key) or {}).get(name), 1.0)
+                symbol = "$" + sym + "_{" + name + "}$"
+                if text is not None:
+                    rows.append([_("{symbol} at position {label}", symbol=symbol, label=where),
+                                 text, unit])
+        for pt in asked.get("points") or ():
+            at = next((q for q in pt.get("positions") or () if q.get("label") == label), None)
+            if at is None:
+                continue
+            for sym, key, unit in (("v", "velocity", "m/s"), ("a", "acceleration", "m/s²")):
+                text = _show(at.get(key), 1.0)
+                symbol = "$" + sym + "_{" + str(pt.get("name")) + "}$"
+                if text is not None:
+                    rows.append([_("{symbol} at position {label}", symbol=symbol, label=where),
+                                 text, unit])
+    return rows
+
+
 def key_rows(machine: str, document: dict, lang: str) -> list[list[str]]:
     """[quantity, value, unit]: the machine's registry summary, then the probed quantities
     it does not give."""
@@ -360,6 +397,7 @@ def key_rows(machine: str, document: dict, lang: str) -> list[list[str]]:
         if text is not None:
             rows.append([shown_label, text, shown_unit or "—"])
             paths.add(leaf)
+    rows += _asked_rows(document, lang)
     for fol in document.get("followers") or ():        # the disc cam's followers
         text = _show(fol.get("stroke"), 1e3)
         if text is not None:
@@ -374,6 +412,7 @@ _PARTS = (  # (document key, msgid): what a results document shows was designed
     ("synthesis", N_("dimensional synthesis of the linkage")),
     ("toggle", N_("toggle linkage design")),
     ("optimum", N_("crank-rocker design")),
+    ("slider_crank", N_("offset slider-crank design")),
     ("positions", N_("kinematic and kinetostatic analysis")),
     ("linkage", N_("kinematic and kinetostatic analysis")),
     ("press", N_("kinematic and kinetostatic analysis")),       # the die-cutter's toggle press
@@ -405,9 +444,24 @@ def _has_part(document: dict, key: str) -> bool:
                    for k, _m in _PARTS)
 
 
+def _forces_computed(document: dict, key: str) -> bool:
+    """Whether the linkage analysis under ``key`` computed forces: some position carries
+    joint reactions (a brief without loads gives none: kinematics only)."""
+    node = document.get(key)
+    positions = node if key == "positions" else (node or {}).get("positions")
+    return any(isinstance(p, dict) and p.get("reactions") for p in positions or ())
+
+
 def _designed(document: dict, lang: str) -> list[str]:
     _ = tr(lang)
-    return list(dict.fromkeys(_(p[1]) for p in _PARTS if _has_part(document, p[0])))
+    out = []
+    for key, msgid in _PARTS:
+        if not _has_part(document, key):
+            continue
+        if key in ("positions", "linkage") and not _forces_computed(document, key):
+            msgid = N_("kinematic analysis")
+        out.append(_(msgid))
+    return list(dict.fromkeys(out))
 
 
 def _findings(ctx: Any, out: list[str]) -> list[str]:

@@ -197,7 +197,7 @@ def _slider(path: Path, lang: str, sl, ss, allowed_deg):
     with figure(path, 2, (7.0, 7.4), sharex=False) as (ax, ax2):
         ax.set_aspect("equal")
         a_pt = 0j
-        y_g = -sl.offset
+        y_g = cons.c1.imag         # the guide through the slider's extremes (A is e below it)
         xs = np.array([min(cons.c1.real, -sl.crank) - 0.1 * sl.stroke, cons.c2.real + 0.15 * sl.stroke])
         ax.plot(xs * MM, [y_g * MM] * 2, color="0.3", lw=0.8, ls="-.", label=lab["guide"])
         t = np.linspace(0, 2 * np.pi, 400)
@@ -221,7 +221,7 @@ def _slider(path: Path, lang: str, sl, ss, allowed_deg):
         _label(ax, a_pt, "A", dx=-6, dy=2)
         pad = 0.25 * sl.stroke
         ax.set_xlim((min(cons.c1.real, -sl.crank) - pad) * MM, (cons.c2.real + pad) * MM)
-        ax.set_ylim((min(-sl.crank, y_g) - pad) * MM, (sl.crank + pad) * MM)
+        ax.set_ylim((min(-sl.crank, y_g) - pad) * MM, (max(sl.crank, y_g) + pad) * MM)
         ax.set_xlabel(lab["x"])
         ax.set_ylabel(lab["y"])
         ax.grid(True, lw=0.3, color="0.88")
