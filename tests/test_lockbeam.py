@@ -261,6 +261,28 @@ def test_cycle_that_differs_from_the_cam_is_rejected():
     assert "cycle.actuators" in text and "cam.programme" in text
 
 
+def test_members_of_the_main_shaft_turn_one_way():
+    """The feed crank and both cams are keyed on the one main shaft: the example gives them
+    one sense, and a brief that turns any of them the other way is refused naming both fields."""
+    data = _data()
+    senses = {data["feed_linkage"]["crank"]["rotation"], data["cam"]["rotation"],
+              data["bending_cam"]["rotation"]}
+    assert len(senses) == 1
+    for section in ("cam", "bending_cam"):
+        d = _data()
+        d[section]["rotation"] = "cw" if d[section]["rotation"] == "ccw" else "ccw"
+        with pytest.raises(BriefError) as exc:
+            parse_brief(d)
+        text = str(exc.value)
+        assert f"{section}.rotation" in text and "feed_linkage.crank.rotation" in text, text
+    d = _data()
+    d["feed_linkage"]["crank"]["rotation"] = "cw"          # against both cams: two problems
+    with pytest.raises(BriefError) as exc:
+        parse_brief(d)
+    text = str(exc.value)
+    assert "cam.rotation" in text and "bending_cam.rotation" in text, text
+
+
 def test_bad_inputs_exit_2_naming_the_field(tmp_path):
     cases = []
     d = _data()
@@ -280,6 +302,9 @@ def test_bad_inputs_exit_2_naming_the_field(tmp_path):
     d["cycle"]["actuators"] = [a for a in d["cycle"]["actuators"] if a["key"] != "bend"]
     d["cycle"]["constraints"] = []
     cases.append((d, "'bend'"))
+    d = _data()
+    d["bending_cam"]["rotation"] = "cw" if d["bending_cam"]["rotation"] == "ccw" else "ccw"
+    cases.append((d, "feed_linkage.crank.rotation"))
     for i, (data, field) in enumerate(cases):
         res = _invoke(tmp_path / str(i), data)
         assert res.exit_code == 2, res.output
