@@ -46,6 +46,7 @@ LABELS = LabelTable({
     "md": pgettext("analysis sheet", "driving torque Md = {v} N·m"),
     "mean": pgettext("analysis sheet", "mean Mb = {v} N·m"),
     "table": pgettext("analysis sheet", "Results at the positions"),
+    "table_kin": pgettext("analysis sheet", "Kinematic results at the positions"),
     "pos": pgettext("analysis sheet", "Pos."),
     "dw": "ΔWmax = {v} J",
     "jf": pgettext("analysis sheet", "flywheel inertia JF = {v} kg·m²"),
@@ -559,7 +560,8 @@ def _table(s: Sheet, model, k, forces, lab: dict, box) -> None:
     weights = np.array([0.8, 1.0] + [1.2] * (len(head) - 2))
     widths = weights / weights.sum() * (bx1 - bx0)
     top = by1 - 7.0
-    heading(s, (bx0 + bx1) / 2 + 1j * (top + 1.5), lab["table"], 5.0)
+    heading(s, (bx0 + bx1) / 2 + 1j * (top + 1.5), lab["table" if forces is not None else "table_kin"],
+            5.0)
     table(s, bx0, top, widths, rows, head, row_h=rh, height=2.5, head_height=2.5, margin=1.0,
           outer=0.7, rule=0.7, inner=0.25)
 
