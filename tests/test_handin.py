@@ -258,23 +258,49 @@ def test_lockbeam_appendix_lists_the_stages_that_ran(reports, example_results, l
     width = [sum(2 if unicodedata.east_asian_width(ch) in "WF" else 1 for ch in line)
              for line in listing.splitlines()]
     assert max(width) <= 80
-    # the listing is the source's functions: joining the continued lines (after ↪) gives
-    # each of them back in full, in source order (a line may be cut inside a word: compare
-    # without white space); the result types (dataclasses) and the *_document writers are
-    # left out, which keeps the appendix to a third of the module (it was 24 pages)
-    joined = re.sub(r"\s+", "", re.sub(r"\n *↪ ", "", listing))
+    # the listing is the source's functions as they ran, without the developers' notes:
+    # joining the continued lines (after ↪) gives each function's tokens back in source order,
+    # less its comments and its docstring (compared without white space: a line may be cut
+    # inside a word); the result types (dataclasses) and the *_document writers are left out,
+    # which keeps the appendix to a third of the module (it was 24 pages)
+    # (line continuations "\" are no tokens: left out on both sides)
+    joined = re.sub(r"\s+", "", re.sub(r"\n *↪ ", "", listing)).replace("\\", "")
     import ast
+    import io
+    import tokenize
     tree = ast.parse(source)
     lines = source.splitlines()
+    skip = {tokenize.COMMENT, tokenize.NL, tokenize.NEWLINE, tokenize.INDENT, tokenize.DEDENT,
+            tokenize.ENDMARKER}
+
+    def code_of(node):
+        doc = None
+        if node.body and isinstance(node.body[0], ast.Expr) and \
+                isinstance(node.body[0].value, ast.Constant) and len(node.body) > 1:
+            doc = (node.body[0].lineno, node.body[0].end_lineno)
+        start = min([d.lineno for d in node.decorator_list] + [node.lineno])
+        text = "\n".join(lines[start - 1:node.end_lineno]) + "\n"
+        toks = []
+        for tok in tokenize.generate_tokens(io.StringIO(text).readline):
+            row = tok.start[0] + start - 1
+            if tok.type in skip or (doc and doc[0] <= row <= doc[1]):
+                continue
+            toks.append(tok.string)
+        return re.sub(r"\s+", "", "".join(toks)).replace("\\", "")
+
     at = 0
     for node in tree.body:
-        text = re.sub(r"\s+", "", "\n".join(lines[node.lineno - 1:node.end_lineno]))
         if isinstance(node, ast.FunctionDef) and not node.name.endswith("_document"):
+            text = code_of(node)
             found = joined.find(text, at)
             assert found >= 0, node.name
             at = found + len(text)
         elif isinstance(node, ast.ClassDef) or (isinstance(node, ast.FunctionDef)):
+            text = re.sub(r"\s+", "", "\n".join(lines[node.lineno - 1:node.end_lineno]))
             assert text not in joined, node.name
+    # no developers' notes: no comment, no docstring, no word of the project's own
+    assert not any(line.lstrip().startswith("#") for line in listing.splitlines())
+    assert '"""' not in listing and "seed 002" not in listing
     assert "@dataclass" not in listing
     assert len(listing.splitlines()) < 0.6 * len(lines)
 

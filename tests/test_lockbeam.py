@@ -189,6 +189,72 @@ def test_bending_wheel_turns_180_by_simulation(run):
     assert b.fd_velocity < 1e-3 and b.fd_acceleration < 1e-3
 
 
+def _swing_by_marching(d, a, b, c, alpha1, dalpha, beta_guess, n=400):
+    """|Δβ| of lengths a, b over the input swing, marching the root-finding solution from
+    the start (None when the linkage does not assemble along the way)."""
+    A = a * np.exp(1j * alpha1)
+
+    def g(beta):
+        return abs(A - (d + c * np.exp(1j * beta))) - b
+
+    grid = beta_guess + np.linspace(-np.pi, np.pi, 3601)
+    vals = np.array([g(x) for x in grid])
+    roots = [brentq(g, grid[i], grid[i + 1], xtol=1e-14)
+             for i in np.nonzero(vals[:-1] * vals[1:] < 0)[0]]
+    if not roots:
+        return None
+    try:
+        beta = min(roots, key=lambda x: abs(x - beta_guess))     # the same assembly branch
+        beta0 = beta
+        for al in alpha1 + dalpha * np.linspace(0.0, 1.0, n)[1:]:
+            beta = _output_by_root_finding(d, a, b, c, al, beta)
+    except ValueError:
+        return None
+    return abs(beta - beta0)
+
+
+@pytest.mark.parametrize("step_mm", [0.5, 1.0, 2.0, 5.0])
+def test_drawn_lengths_never_a_change_point(run, step_mm):
+    """Brute force over the four floor/ceiling roundings of a and b: the drawn pair keeps
+    s + l < p + q (the synthesis is Grashof) by at least half a step, and of those that do, it
+    misses the required wheel swing least (swing by independent root-finding)."""
+    from mechdesign.machines.lockbeam.stages import rounded_check
+
+    ds, ratio = run["bending"].design, run["bending"].ratio
+    step = step_mm * 1e-3
+    target = abs(ds.dbeta)
+
+    def margin(*lengths):
+        s_, p_, q_, l_ = sorted(lengths)
+        return (p_ + q_) - (s_ + l_)
+
+    assert margin(ds.input_rocker, ds.coupler, ds.output_rocker, ds.frame) > 0
+    best, best_err = None, np.inf
+    for a in (np.floor(ds.input_rocker / step) * step, np.ceil(ds.input_rocker / step) * step):
+        for b in (np.floor(ds.coupler / step) * step, np.ceil(ds.coupler / step) * step):
+            if margin(a, b, ds.output_rocker, ds.frame) < 0.5 * step - 1e-12:
+                continue
+            sw = _swing_by_marching(ds.frame, a, b, ds.output_rocker, ds.alpha1, ds.dalpha, ds.beta1)
+            if sw is not None and abs(sw - target) < best_err:
+                best, best_err = (a, b), abs(sw - target)
+    rc = rounded_check(ds, step, ratio)
+    assert best is not None and rc is not None
+    assert (rc.input_rocker, rc.coupler) == pytest.approx(best, abs=1e-12)
+    assert rc.margin == pytest.approx(margin(*best, ds.output_rocker, ds.frame), abs=1e-12)
+    assert rc.margin >= 0.5 * step - 1e-12
+    assert abs(rc.swing - target) == pytest.approx(best_err, abs=1e-7)
+
+
+def test_example_drawn_lengths(run):
+    """The example's synthesis has a + b only 0.38 mm over s + l = 240 mm: plain rounding to
+    80/160 mm would make s + l = p + q (a change-point linkage); the drawn lengths do not."""
+    rc = run["bending"].rounded
+    assert rc.nearest is not None
+    a0, b0, m0 = rc.nearest
+    assert (a0, b0) == pytest.approx((0.080, 0.160), abs=1e-12) and abs(m0) < 1e-12
+    assert rc.input_rocker + rc.coupler > 0.040 + 0.200 + 0.5e-3
+
+
 def test_cycle_diagram_matches_the_cams(run):
     """Sample both cams along the main shaft: near dwell ⇒ follower down, far dwell ⇒ up,
     rise ⇒ rising, return ⇒ falling, exactly where the brief's cycle diagram says."""
@@ -261,6 +327,28 @@ def test_cycle_that_differs_from_the_cam_is_rejected():
     assert "cycle.actuators" in text and "cam.programme" in text
 
 
+def test_members_of_the_main_shaft_turn_one_way():
+    """The feed crank and both cams are keyed on the one main shaft: the example gives them
+    one sense, and a brief that turns any of them the other way is refused naming both fields."""
+    data = _data()
+    senses = {data["feed_linkage"]["crank"]["rotation"], data["cam"]["rotation"],
+              data["bending_cam"]["rotation"]}
+    assert len(senses) == 1
+    for section in ("cam", "bending_cam"):
+        d = _data()
+        d[section]["rotation"] = "cw" if d[section]["rotation"] == "ccw" else "ccw"
+        with pytest.raises(BriefError) as exc:
+            parse_brief(d)
+        text = str(exc.value)
+        assert f"{section}.rotation" in text and "feed_linkage.crank.rotation" in text, text
+    d = _data()
+    d["feed_linkage"]["crank"]["rotation"] = "cw"          # against both cams: two problems
+    with pytest.raises(BriefError) as exc:
+        parse_brief(d)
+    text = str(exc.value)
+    assert "cam.rotation" in text and "bending_cam.rotation" in text, text
+
+
 def test_bad_inputs_exit_2_naming_the_field(tmp_path):
     cases = []
     d = _data()
@@ -280,6 +368,9 @@ def test_bad_inputs_exit_2_naming_the_field(tmp_path):
     d["cycle"]["actuators"] = [a for a in d["cycle"]["actuators"] if a["key"] != "bend"]
     d["cycle"]["constraints"] = []
     cases.append((d, "'bend'"))
+    d = _data()
+    d["bending_cam"]["rotation"] = "cw" if d["bending_cam"]["rotation"] == "ccw" else "ccw"
+    cases.append((d, "feed_linkage.crank.rotation"))
     for i, (data, field) in enumerate(cases):
         res = _invoke(tmp_path / str(i), data)
         assert res.exit_code == 2, res.output

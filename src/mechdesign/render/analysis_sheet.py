@@ -46,12 +46,16 @@ LABELS = LabelTable({
     "md": pgettext("analysis sheet", "driving torque Md = {v} N·m"),
     "mean": pgettext("analysis sheet", "mean Mb = {v} N·m"),
     "table": pgettext("analysis sheet", "Results at the positions"),
+    "table_kin": pgettext("analysis sheet", "Kinematic results at the positions"),
     "pos": pgettext("analysis sheet", "Pos."),
     "dw": "ΔWmax = {v} J",
     "jf": pgettext("analysis sheet", "flywheel inertia JF = {v} kg·m²"),
     "scales": pgettext("analysis sheet", "Drawing scales"),
     "each": pgettext("analysis sheet", "μv, μa, μF above each polygon"),
     "noforce": pgettext("analysis sheet", "no load at this position (all reactions zero)"),
+    "each_kin": pgettext("analysis sheet", "μv, μa above each polygon"),
+    "noload": pgettext("analysis sheet", "No load or masses given: all reactions and Mb are zero, "
+                       "so no force polygons or Mb curve are drawn"),
     "nofly": pgettext("analysis sheet", "no flywheel"),
     "links": pgettext("analysis sheet", "Links: "),
     "guide": pgettext("analysis sheet", "{n} guide"),
@@ -75,7 +79,10 @@ def analysis_sheet(found, info: TitleInfo, lang: str, labels: dict | None = None
     lab = {key: with_subscripts(v, *SYMBOLS) if isinstance(v, str) else v
            for key, v in {**LABELS[lang], **(labels or {})}.items()}
     chosen = [str(c) for c in found.polygons.positions]
-    polys = {c: found.polygons.at(c) for c in chosen}
+    unloaded = forces is not None and _unloaded(forces)
+    if unloaded:                  # only the kinematics exist: no empty force cells, no zero curve
+        forces = flywheel = None
+    polys = {c: found.polygons.at(c)[:2] if unloaded else found.polygons.at(c) for c in chosen}
     s = Sheet("A1")
     x0, y0, x1, y1 = s.inner
     table_top = y0 + 8 + _table_height(k)
@@ -89,7 +96,9 @@ def analysis_sheet(found, info: TitleInfo, lang: str, labels: dict | None = None
     _curves(s, model, k, forces, flywheel, lab, (622.0, 72.0, x1 - 8, y1 - 6))
     tb_x0, _, _, tb_y1 = title_block_box(s)
     notes = [lab["scales"] + f":  {sub('μ', 'L')} = {fmt.exact(n_len / 1000)} m/mm ({scale_text(n_len)}); "
-             + lab["each"]]
+             + lab["each_kin" if unloaded else "each"]]
+    if unloaded:
+        notes.append(lab["noload"])
     if flywheel is not None:
         notes.append(lab["dw"].format(v=fmt.sig(flywheel.max_energy_swing)) + ",  "
                      + lab["jf"].format(v=fmt.sig(flywheel.inertia)))
@@ -97,6 +106,12 @@ def analysis_sheet(found, info: TitleInfo, lang: str, labels: dict | None = None
         s.text(tb_x0 - 30.0 + 1j * (tb_y1 + 10.0 - 5.5 * j), text,
                fit_height(text, 205.0, 3.0), "TEXT")
     return s, scales
+
+
+def _unloaded(forces) -> bool:
+    """No load and no masses: every reaction and the balancing torque are exactly zero."""
+    return not np.any(forces.balancing_torque) and \
+        not any(np.any(v) for v in forces.reactions.values())
 
 
 def _group_title(model, pg: Polygon, lab: dict) -> str:
@@ -545,7 +560,8 @@ def _table(s: Sheet, model, k, forces, lab: dict, box) -> None:
     weights = np.array([0.8, 1.0] + [1.2] * (len(head) - 2))
     widths = weights / weights.sum() * (bx1 - bx0)
     top = by1 - 7.0
-    heading(s, (bx0 + bx1) / 2 + 1j * (top + 1.5), lab["table"], 5.0)
+    heading(s, (bx0 + bx1) / 2 + 1j * (top + 1.5), lab["table" if forces is not None else "table_kin"],
+            5.0)
     table(s, bx0, top, widths, rows, head, row_h=rh, height=2.5, head_height=2.5, margin=1.0,
           outer=0.7, rule=0.7, inner=0.25)
 

@@ -536,34 +536,72 @@ def _cut(text: str, columns: int) -> tuple[str, str]:
     return text[:end].rstrip(), text[end:].lstrip()
 
 
-def program_source(module_name: str) -> str:
+def program_source(module_name: str, comments: bool = True) -> str:
     """The main program of a stages module, read now from the installed package: its
     docstring and its functions, each with its decorators, in source order. Left out: the
     imports, the result types (frozen dataclasses: data, not program) and the functions that
-    only write the results document (``*_document``): the whole module was 24 pages."""
+    only write the results document (``*_document``): the whole module was 24 pages.
+    ``comments=False``: the code alone, without the docstrings and ``#`` comments (they are the
+    developers' English notes); every statement is kept as it ran, line for line."""
     import ast
     import importlib
 
     source = inspect.getsource(importlib.import_module(module_name))
     lines = source.splitlines()
     tree = ast.parse(source)
+    drop: set[int] = set()            # 0-based lines of docstrings, when comments are left out
+    cut: dict[int, int] = {}          # 0-based line → column where its comment starts
+    if not comments:
+        drop, cut = _docstrings_and_comments(source, tree)
     pieces = []
     body = tree.body
-    if body and isinstance(body[0], ast.Expr) and isinstance(getattr(body[0], "value", None), ast.Constant):
+    if comments and body and isinstance(body[0], ast.Expr) and \
+            isinstance(getattr(body[0], "value", None), ast.Constant):
         pieces.append("\n".join(lines[body[0].lineno - 1:body[0].end_lineno]))
     for node in body:
         if isinstance(node, ast.FunctionDef) and not node.name.endswith("_document"):
             start = min([d.lineno for d in node.decorator_list] + [node.lineno])
-            pieces.append("\n".join(lines[start - 1:node.end_lineno]))
+            kept = []
+            for i in range(start - 1, node.end_lineno):
+                if i in drop:
+                    continue
+                line = lines[i][:cut[i]].rstrip() if i in cut else lines[i]
+                if i in cut and not line.strip():
+                    continue                              # a comment line
+                if not line.strip() and (not kept or not kept[-1].strip()):
+                    continue                              # no blank runs
+                kept.append(line)
+            pieces.append("\n".join(kept).rstrip())
     return "\n\n\n".join(pieces)
 
 
-def program_listing(module_name: str, width: int = LISTING_WIDTH) -> str:
+def _docstrings_and_comments(source: str, tree) -> tuple[set, dict]:
+    """The lines of the functions' docstrings (0-based; a docstring that is a function's whole
+    body stays) and where each ``#`` comment starts ({0-based line: column})."""
+    import ast
+    import io
+    import tokenize
+
+    drop = set()
+    for node in ast.walk(tree):
+        if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef)) and \
+                len(node.body) > 1 and isinstance(node.body[0], ast.Expr) and \
+                isinstance(node.body[0].value, ast.Constant) and \
+                isinstance(node.body[0].value.value, str):
+            drop.update(range(node.body[0].lineno - 1, node.body[0].end_lineno))
+    cut = {}
+    for tok in tokenize.generate_tokens(io.StringIO(source).readline):
+        if tok.type == tokenize.COMMENT:
+            cut[tok.start[0] - 1] = tok.start[1]
+    return drop, cut
+
+
+def program_listing(module_name: str, width: int = LISTING_WIDTH, comments: bool = True) -> str:
     """The main program of ``module_name`` (:func:`program_source`), long lines
     wrapped with a continuation mark (↪, at the line's indent) so that the listing fits the
     page."""
     lines = []
-    for line in program_source(module_name).splitlines():
+    for line in program_source(module_name, comments).splitlines():
         if display_width(line) <= width:
             lines.append(line)
             continue
@@ -636,7 +674,7 @@ def appendix_context(program: dict, fig_dir: Path, lang: str) -> dict:
             "stages": [[str(i), md_text(stage_title(t, lang)), f"`{key}`"]
                        for i, (t, key) in enumerate(program["stages"], 1)],
             "module": program["module"], "file": program["module"].replace(".", "/") + ".py",
-            "listing": program_listing(program["module"])}
+            "listing": program_listing(program["module"], comments=False)}
 
 
 def handin_context(machine: str, document: dict, ctx: dict, lang: str, title: str,

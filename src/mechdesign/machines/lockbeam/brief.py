@@ -199,6 +199,7 @@ class LockbeamBrief(StrictModel):
                         N_("{value:g} rpm, but it turns with the main shaft, once per part: it "
                            "must be production.rate_per_min = {rate:g} (or be left out)"),
                         value=value, rate=rate)
+        _check_shaft_sense(self, out)
         out_point = self.feed_linkage.output
         if out_point.point is None:
             out.add(("feed_linkage", "output", "link"), out_point.link,
@@ -207,6 +208,30 @@ class LockbeamBrief(StrictModel):
         _check_cycle(self, out)
         out.raise_any()
         return self
+
+
+#: The members keyed on the one main shaft (field paths); the first is the reference.
+SHAFT_MEMBERS = (("feed_linkage", "crank", "rotation"), ("cam", "rotation"),
+                 ("bending_cam", "rotation"))
+
+
+def _check_shaft_sense(b: LockbeamBrief, out: Problems) -> None:
+    """The feed crank and both cams are keyed on the one main shaft: they turn the same way.
+    Every member that turns against the feed crank is reported at its field, naming both."""
+    def sense(loc):
+        obj = b
+        for key in loc:
+            obj = getattr(obj, key)
+        return obj
+
+    ref_loc = SHAFT_MEMBERS[0]
+    ref = sense(ref_loc)
+    for loc in SHAFT_MEMBERS[1:]:
+        if sense(loc) != ref:
+            out.add(loc, sense(loc),
+                    N_("{name} = {sense}, but {ref_name} = {ref}: the feed crank and both cams are "
+                       "keyed on the one main shaft, which turns one way; give them the same sense"),
+                    name=".".join(loc), sense=sense(loc), ref_name=".".join(ref_loc), ref=ref)
 
 
 #: Phase spans this close are the same (1e-9 rad, in degrees).

@@ -16,6 +16,7 @@ from ...render import figures as fig
 from ...render.fmt import e, f, md_meta, md_text, rpm, sig, time_ratio
 from ...render.fmt import verdict
 from ...render.labels import mpl_point
+from .stages import grashof_margin
 
 DEG = 180.0 / np.pi
 MM = 1e3
@@ -447,7 +448,7 @@ def _bending(r: dict, lang: str, figures: dict) -> dict:
         "ratio_limit": None if bp.ratio_factor is None else sig(bp.ratio_factor * mean_ratio),
         "ratio_lo": sig(float(np.min(np.abs(b.velocity_ratio)))),
         "ratio_hi": sig(float(np.max(np.abs(b.velocity_ratio)))),
-        "rounded": _rounded(b, ds, lang),
+        "rounded": _rounded(b, ds, bp.rounding, lang),
         "fig": {"linkage": figures.get("bend_linkage"), "sweep": figures.get("bend_sweep"),
                 "wheel": figures.get("bend_wheel"), "seed": figures.get("bend_seed")},
     }
@@ -514,7 +515,7 @@ def law_choice(c, lang: str) -> str:
               "3-4-5 polynomial or cycloidal law would avoid them.", names=names))
 
 
-def _rounded(b, ds, lang: str):
+def _rounded(b, ds, step: float, lang: str):
     rc = b.rounded
     if rc is None:
         return None
@@ -522,7 +523,16 @@ def _rounded(b, ds, lang: str):
             "beta1": f(np.mod(rc.beta1, 2 * np.pi) * DEG, 2), "swing": f(rc.swing * DEG, 2),
             "bend": f(rc.bend * DEG, 2), "gmin": f(rc.gamma_min * DEG, 2),
             "needed": None if rc.input_swing_needed is None else f(rc.input_swing_needed * DEG, 2),
-            "grashof": grashof_sentence(rc.input_rocker, rc.coupler, ds.output_rocker, ds.frame, lang)}
+            "grashof": grashof_sentence(rc.input_rocker, rc.coupler, ds.output_rocker, ds.frame, lang),
+            "step": f(step * MM, 0) if float(step * MM).is_integer() else sig(step * MM),
+            "need": f(abs(rc.margin_required) * MM, 2), "margin": f(rc.margin * MM, 2),
+            "margin0": f(grashof_margin(ds.input_rocker, ds.coupler, ds.output_rocker, ds.frame)
+                         * MM, 2),
+            "rule": "$s + l < p + q$" if rc.margin_required > 0 else "$s + l > p + q$",
+            "nearest": None if rc.nearest is None else {
+                "a": f(rc.nearest[0] * MM, 2), "b": f(rc.nearest[1] * MM, 2),
+                "margin": f(rc.nearest[2] * MM, 2),
+                "change_point": abs(rc.nearest[2]) <= 1e-9 * ds.frame}}
 
 
 def _feed(r: dict, lang: str, figures: dict) -> dict:

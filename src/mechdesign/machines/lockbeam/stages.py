@@ -18,7 +18,7 @@ One main (distribution) shaft turns once per part. Stages:
 """
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from fractions import Fraction
 from functools import lru_cache
 
@@ -192,6 +192,17 @@ def bending_mechanism(ds: rs.RockerDesign) -> Mechanism:
     return m
 
 
+#: The drawn (rounded) lengths must keep Grashof's inequality (or its reverse, when the
+#: synthesis is non-Grashof) by at least this many rounding steps: never a change-point.
+GRASHOF_MARGIN_STEPS = 0.5
+
+
+def grashof_margin(a: float, b: float, c: float, d: float) -> float:
+    """(p + q) − (s + l) of the four lengths [m]: > 0 Grashof, 0 change-point, < 0 not."""
+    s_, p_, q_, l_ = sorted((a, b, c, d))
+    return (p_ + q_) - (s_ + l_)
+
+
 @dataclass(frozen=True)
 class RoundedCheck:
     """The design with its lengths rounded as drawn, assembled at the same input start."""
@@ -203,16 +214,17 @@ class RoundedCheck:
     bend: float                 # bending angle that gives [rad]
     gamma_min: float            # [rad]
     input_swing_needed: float | None   # cam swing for exactly the required Δβ [rad]
+    margin: float = 0.0         # (p + q) − (s + l) of the drawn lengths [m]
+    margin_required: float = 0.0   # |margin| at least this, with the synthesis's sign [m]
+    nearest: tuple | None = None   # (a, b, margin) of plain rounding when that was not kept [m]
 
 
-def rounded_check(ds: rs.RockerDesign, step: float, ratio: float) -> RoundedCheck | None:
-    """Round a and b to ``step`` [m], keep α1 and the branch, and simulate (None if the
-    rounded linkage cannot move through the swing)."""
+def _rounded_candidate(ds: rs.RockerDesign, a: float, b: float, ratio: float
+                       ) -> RoundedCheck | None:
+    """Lengths a, b with α1 and the branch of ``ds``, simulated over the input swing (None if
+    that linkage cannot move through it)."""
     from ...core.extremes import brentq
 
-    if step <= 0:
-        return None
-    a, b = round(ds.input_rocker / step) * step, round(ds.coupler / step) * step
     beta1 = float(rs.output_angle(ds.frame, a, b, ds.output_rocker, ds.alpha1, ds.branch))
     if not np.isfinite(beta1):
         return None
@@ -234,7 +246,42 @@ def rounded_check(ds: rs.RockerDesign, step: float, ratio: float) -> RoundedChec
             needed = float(brentq(miss, lo, hi, xtol=1e-15))
     except ValueError:
         needed = None
-    return RoundedCheck(a, b, beta1, abs(sw.swing), ratio * abs(sw.swing), sw.gamma_min, needed)
+    return RoundedCheck(a, b, beta1, abs(sw.swing), ratio * abs(sw.swing), sw.gamma_min, needed,
+                        grashof_margin(a, b, ds.output_rocker, ds.frame))
+
+
+def rounded_check(ds: rs.RockerDesign, step: float, ratio: float) -> RoundedCheck | None:
+    """The drawn lengths: a and b each rounded down or up to ``step`` [m] (four candidates),
+    α1 and the branch kept. Of the candidates that move through the swing and keep the
+    synthesis's side of Grashof's rule by at least GRASHOF_MARGIN_STEPS × step (never a
+    change-point linkage), the one whose swing misses the required Δβ least. None when the
+    brief does not round or no candidate qualifies."""
+    if step <= 0:
+        return None
+    need = GRASHOF_MARGIN_STEPS * step
+    side = 1.0 if grashof_margin(ds.input_rocker, ds.coupler, ds.output_rocker, ds.frame) >= 0 \
+        else -1.0
+    a_opts = sorted({np.floor(ds.input_rocker / step) * step, np.ceil(ds.input_rocker / step) * step})
+    b_opts = sorted({np.floor(ds.coupler / step) * step, np.ceil(ds.coupler / step) * step})
+    target = abs(ds.dbeta)
+    best = None
+    for a in a_opts:
+        for b in b_opts:
+            if a <= 0 or b <= 0:
+                continue
+            if side * grashof_margin(a, b, ds.output_rocker, ds.frame) < need - 1e-12 * ds.frame:
+                continue
+            rc = _rounded_candidate(ds, float(a), float(b), ratio)
+            if rc is not None and (best is None or
+                                   abs(rc.swing - target) < abs(best.swing - target)):
+                best = rc
+    if best is None:
+        return None
+    a0, b0 = round(ds.input_rocker / step) * step, round(ds.coupler / step) * step
+    nearest = None
+    if abs(a0 - best.input_rocker) > 1e-12 or abs(b0 - best.coupler) > 1e-12:
+        nearest = (a0, b0, grashof_margin(a0, b0, ds.output_rocker, ds.frame))
+    return replace(best, margin_required=side * need, nearest=nearest)
 
 
 @dataclass(frozen=True)
@@ -727,6 +774,8 @@ class RoundedDoc:
     bend: float = q("rad", "the bending angle that gives")
     gamma_min: float = q("rad", "γ_min over the swing")
     input_swing_needed: float | None = q("rad", "cam swing for exactly the required Δβ")
+    grashof_margin: float = q("m", "(p + q) − (s + l) of the drawn lengths: > 0 Grashof, 0 "
+                              "change-point, < 0 non-Grashof")
 
 
 @dataclass(frozen=True)
@@ -905,7 +954,7 @@ def results_document(r: dict) -> LockbeamResults:
                                     float(np.max(np.abs(b.velocity_ratio)))),
             rounded=None if rd is None else RoundedDoc(
                 rd.input_rocker, rd.coupler, rd.beta1, rd.swing, rd.bend, rd.gamma_min,
-                rd.input_swing_needed),
+                rd.input_swing_needed, rd.margin),
             candidates=tuple(CandidateDoc(c[0], c[2], c[3],
                                           None if c[1] is None else c[1].input_rocker,
                                           None if c[1] is None else c[1].coupler)
