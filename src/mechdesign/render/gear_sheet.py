@@ -26,7 +26,7 @@ from ..i18n import N_
 from ..stages.gear import GearDrawing
 from . import fmt
 from .labels import LabelTable, pgettext
-from .sheet import (SUB_ON, SUB_OFF, LabelPlacer, Polyline, Sheet, TitleInfo, clip_segment, frame,
+from .sheet import (MARKERS, LabelPlacer, Polyline, Sheet, TitleInfo, clip_segment, frame,
                     length_scale, plain, sample_polyline, scale_text, sub, table, text_width,
                     title_block_box, with_subscripts)
 
@@ -510,7 +510,7 @@ def _wrap(text: str, width: float, height: float) -> list[str]:
 def _tokens(text: str) -> list[str]:
     out, word = [], ""
     for ch in text:
-        if ord(ch) > 0x2E80 and ch not in (SUB_ON, SUB_OFF):   # a subscript stays in its word
+        if ord(ch) > 0x2E80 and ch not in MARKERS:   # a subscript stays in its word
             if word:
                 out.append(word)
                 word = ""
