@@ -186,12 +186,15 @@ def symbol_of(vec, terms, vectors=()) -> str | None:
     normal + tangential pair matched through the tangential vector that ends at the same
     point (the two constructions name them apart: n4b' and nb'); else an absolute vector
     from the pole is the point's own (a_A4), else None (the segment's name is written)."""
+    named = {p for tail, head, *_ in terms for p in (tail, head)}
     alias = {}
     for v in vectors:
-        if v.role == "tangential":
-            for tail, head, kind, _, _ in terms:
-                if kind == "tangential" and head == v.head:
-                    alias[v.tail] = tail
+        if v.role == "tangential" and v.tail not in named:
+            found = [tail for tail, head, kind, _, _ in terms
+                     if kind == "tangential" and head == v.head and tail not in
+                     {w.tail for w in vectors}]
+            if len(found) == 1:
+                alias[v.tail] = found[0]
     key = (alias.get(vec.tail, vec.tail), alias.get(vec.head, vec.head))
     for tail, head, _, _, symbol in terms:
         if (tail, head) == key:

@@ -184,8 +184,11 @@ def mpl_names(text: str) -> str:
 
 
 def sheet_names(text: str) -> str:
-    """A text holding point names for a sheet: each name's digits marked as subscripts."""
-    return _NAME_WORD.sub(lambda m: sheet_point(m[1]), str(text))
+    """A text holding point names for a sheet, set as the report sets them (:func:`md_names`):
+    each run of names italic, its digits subscripts ("crank O1A", "rod BF"; the group code
+    RRR stays a word)."""
+    return _ANY_NAME_WORD.sub(lambda m: m[1] if _GROUP_CODE.fullmatch(m[1]) else sheet_point(m[1]),
+                              str(text))
 
 
 def tex_names(text: str) -> str:
