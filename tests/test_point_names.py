@@ -25,7 +25,7 @@ import pytest
 
 from mechdesign.render.labels import (md_names, md_point, mpl_names, mpl_point, point_tex,
                                       sheet_names, sheet_point, subscripted, tex_names)
-from mechdesign.render.sheet import plain, split_subscripts, sub
+from mechdesign.render.sheet import plain, split_subscripts
 from tests.test_report_prose import EXAMPLES, _markdown
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -48,7 +48,7 @@ def test_one_function_per_medium():
     assert mpl_point("O2") == r"$\mathregular{O_2}$" and mpl_point("A") == "A"
     # a sheet: the letters italic (as the report's math), the digits subscripts
     assert split_subscripts(sheet_point("O3B")) == [("O", "it"), ("3", True), ("B", "it")]
-    assert split_subscripts(sheet_point("DE")) == [("DE", "it")]
+    assert split_subscripts(sheet_point("DE")) == [("D", "it"), ("E", "it")]
     assert sheet_point("x-y") == "x-y" and not subscripted("Y90S-6") and subscripted("O1A")
     # texts holding names: for a figure or a sheet only the runs of names with a digit change
     assert md_names("2 crank O1A") == "2 crank $O_1A$"
@@ -60,7 +60,7 @@ def test_one_function_per_medium():
     assert mpl_names("A (folded)") == "A (folded)"
     assert sheet_names("rocker at its first extreme C1") == "rocker at its first extreme " + sheet_point("C1")
     assert plain(sheet_names("rod BF (RRR)")) == "rod BF (RRR)"
-    assert split_subscripts(sheet_names("rod BF (RRR)"))[1] == ("BF", "it")
+    assert split_subscripts(sheet_names("rod BF (RRR)"))[1:3] == [("B", "it"), ("F", "it")]
     assert tex_names(r"\perp O2A") == r"\perp O_2A"
     # a name already inside a subscript stays as it is
     assert tex_names(r"F_{R12} + v_{A4A3} + l_{O2A}") == r"F_{R12} + v_{A4A3} + l_{O2A}"

@@ -423,7 +423,10 @@ def _mechanism(s: Sheet, model, k, lab: dict, box, chosen: list[str], lang: str)
     joints = _joint_points(mech) | set(mech.frame_points)
     coms = {b.com for b in model.bodies if b.com is not None} - joints
     # points that only carry a load (a cutting-force line) are not drawn
-    loads = {r.point for r in model.resistances} - joints - coms
+    # a point the brief asks about (analysis.points: the textbook's D) is drawn and named
+    # even where a load acts on it
+    asked = (set(getattr(k, "point_vel", None) or {}) & set(P)) - joints - coms
+    loads = {r.point for r in model.resistances} - joints - coms - asked
     drawn = {name: z for name, z in P.items() if name not in coms | loads}
     allpts = np.concatenate([z for z in drawn.values()])
     guides = _fixed_guides(P, sliders, mm)
@@ -530,7 +533,7 @@ def _mechanism(s: Sheet, model, k, lab: dict, box, chosen: list[str], lang: str)
     if chosen and chosen[0] in labels:
         i0 = labels.index(chosen[0])
         mid = np.mean([P[nm][i0] for nm in drawn])
-        for name in sorted(joints - set(mech.frame_points)):
+        for name in sorted((joints - set(mech.frame_points)) | asked):
             if name in P:
                 d = P[name][i0] - mid
                 placer.place(v.p(P[name][i0]), sheet_point(name), 3.5, prefer=d if abs(d) > 1e-9 else 1j,

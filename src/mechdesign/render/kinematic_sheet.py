@@ -254,7 +254,10 @@ class _LinkageDrawing:
         P = self.P = {name: complex(np.asarray(z)[n_grid + i]) * MM + shift for name, z in k.points.items()}
         self.joints = {j.point for js in mech.joints.values() for j in js} | set(mech.frame_points)
         coms = {b.com for b in model.bodies if b.com is not None} - self.joints
-        loads = {r.point for r in model.resistances} - self.joints - coms
+        # a point the brief asks about (analysis.points: the textbook's D) is drawn and named
+        # even where a load acts on it
+        self.named = (set(getattr(k, "point_vel", None) or {}) & set(P)) - self.joints - coms
+        loads = {r.point for r in model.resistances} - self.joints - coms - self.named
         self.drawn = {nm: z for nm, z in P.items() if nm not in coms | loads}
         self.frame_pts = {nm: complex(z) * MM + shift for nm, z in mech.frame_points.items()}
         crank = model.crank
@@ -310,7 +313,7 @@ class _LinkageDrawing:
         _omega_arrow(s, view, self.piv, self.r_crank, self.model.crank_omega > 0, placer, lab)
         # names of the points, then the link numbers
         mid = np.mean(list(drawn.values()))
-        for name in sorted(set(mech.frame_points) | (joints & set(P))):
+        for name in sorted(set(mech.frame_points) | (joints & set(P)) | self.named):
             d = P[name] - mid
             placer.place(view.p(P[name]), sheet_point(name), 3.5, prefer=d if abs(d) > 1e-9 else 1j, gap=2.5)
         numbered = []
