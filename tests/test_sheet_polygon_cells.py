@@ -94,7 +94,7 @@ def test_every_polygon_fills_its_cell(written):
 
 def test_vector_list_names_the_quantities_with_their_units(written):
     """In a velocity cell every vector is v with its points as subscript, in m/s; in an
-    acceleration cell a (a^n, a^t, a^k, a^r) in m/s²; the report's symbols for the
+    acceleration cell a with its points (and n, t, k, r as superscript) in m/s²; the report's symbols for the
     segments the graphical method names (old sheets: "aa4 = 0.09666 m/s", the segment's
     name, read as an acceleration)."""
     import pymupdf
@@ -109,7 +109,7 @@ def test_vector_list_names_the_quantities_with_their_units(written):
     for t in vel:
         assert re.match(r"v[A-Z][A-Z0-9]* = ", t), (name, t)
     for t in acc:
-        assert re.match(r"a[ntkr]?[A-Z][A-Z0-9]* = ", t), (name, t)
+        assert re.match(r"a[A-Z][A-Z0-9]*[ntkr]? = ", t), (name, t)
     # the report's symbols are all there (graphical document of the same positions)
     doc = results[f"{found.polygons.prefix}_graphical"]
     want = set()
@@ -120,7 +120,8 @@ def test_vector_list_names_the_quantities_with_their_units(written):
                 for t in list(eq.left) + list(eq.right):
                     if t.tail and t.head and t.tail != t.head:
                         first.setdefault((t.tail, t.head), t.symbol)
-            want |= {s.replace("^", "").replace("_", "") for s in first.values()}
+            # "a^n_BO3" reads "aBO3n": a, its subscript, then the superscript
+            want |= {re.sub(r"^(\w)(?:\^(\w))?_?(\w*)$", r"\1\3\2", s) for s in first.values()}
     have = {t.split(" = ")[0] for t in vel + acc}
     assert want <= have, (name, sorted(want - have))
 

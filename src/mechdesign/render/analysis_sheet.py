@@ -207,11 +207,12 @@ def symbol_of(vec, terms, vectors=()) -> str | None:
 
 def vector_text(symbol: str) -> str:
     """A velocity or acceleration symbol for a sheet text: "v_A4A3" → v with the subscript
-    A4A3, "a^n_BO3" → a with the superscript n and the subscript BO3."""
+    A4A3, "a^n_BO3" → a with the subscript BO3, then the superscript n (the sheet's text
+    runs one after the other: the subscript next to its letter)."""
     head, _, index = symbol.partition("_")
     base, _, up = head.partition("^")
-    text = sup(base, up) if up else base
-    return text + (sub("", index) if index else "")
+    text = sub(base, index) if index else base
+    return sup(text, up) if up else text
 
 
 def _value(x: float, ref: float) -> str:
