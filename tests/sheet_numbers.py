@@ -80,5 +80,6 @@ def dxf_plain(text: str) -> str:
     """The characters an MTEXT shows: AutoCAD's stacked subscript ``\\S^ v;`` as ``v``,
     escaped braces as braces; ``%%%`` as %."""
     text = re.sub(r"\\S\^ ?([^;]*);", r"\1", text)
+    text = re.sub(r"\\S([^;^]*)\^ ?;", r"\1", text)          # a superscript
     text = text.replace("\\{", "{").replace("\\}", "}").replace("%%%", "%")
     return re.sub(r"\\[A-Za-z][^;\\]*;", "", text)

@@ -12,7 +12,7 @@ import pytest
 import yaml
 
 from mechdesign.render.sheet import (Arc, Circle, Dimension, Fill, Line, Polyline, Text, TitleInfo,
-                                     text_box)
+                                     plain, text_box)
 
 ROOT = Path(__file__).resolve().parents[1]
 INFO = TitleInfo("机构运动简图", "test", number="T-01")
@@ -327,7 +327,7 @@ def test_lockbeam_diagram_gives_the_cam_roller_its_own_letter(example_results):
     four-bar's pin, as the report names it)."""
     r = example_results("lockbeam")
     sheet = _sheets(r)["kinematic"]
-    texts = [getattr(e, "text", None) for e in sheet.entities]
+    texts = [plain(e.text) for e in sheet.entities if isinstance(e, Text)]
     assert texts.count("B") == 1 and texts.count("F") == 1
 
 
@@ -342,7 +342,6 @@ def test_lockbeam_diagram_gives_every_point_its_own_letter(example_results):
     assert brief["feed_linkage"]["crank"]["tip"] == "A"
     r = example_results("lockbeam")
     sheet = _sheets(r)["kinematic"]
-    from mechdesign.render.sheet import plain
 
     # the letters as read (O2 is drawn O₂: its digit a subscript, issue 19 point 3)
     letters = [plain(e.text) for e in sheet.entities if isinstance(e, Text)

@@ -25,7 +25,7 @@ import pytest
 
 from mechdesign.render.labels import (md_names, md_point, mpl_names, mpl_point, point_tex,
                                       sheet_names, sheet_point, subscripted, tex_names)
-from mechdesign.render.sheet import split_subscripts, sub
+from mechdesign.render.sheet import plain, split_subscripts
 from tests.test_report_prose import EXAMPLES, _markdown
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -46,8 +46,10 @@ def test_one_function_per_medium():
     assert md_point("O2") == "$O_2$" and md_point("AB") == "$AB$" and md_point("C'") == "$C'$"
     assert md_point("x-y") == "x-y"
     assert mpl_point("O2") == r"$\mathregular{O_2}$" and mpl_point("A") == "A"
-    assert split_subscripts(sheet_point("O3B")) == [("O", False), ("3", True), ("B", False)]
-    assert sheet_point("DE") == "DE" and not subscripted("Y90S-6") and subscripted("O1A")
+    # a sheet: the letters italic (as the report's math), the digits subscripts
+    assert split_subscripts(sheet_point("O3B")) == [("O", "it"), ("3", True), ("B", "it")]
+    assert split_subscripts(sheet_point("DE")) == [("D", "it"), ("E", "it")]
+    assert sheet_point("x-y") == "x-y" and not subscripted("Y90S-6") and subscripted("O1A")
     # texts holding names: for a figure or a sheet only the runs of names with a digit change
     assert md_names("2 crank O1A") == "2 crank $O_1A$"
     assert md_names("导杆 O3D") == "导杆 $O_3D$" and md_names("rod BF") == "rod $BF$"
@@ -56,7 +58,9 @@ def test_one_function_per_medium():
     assert md_names("feed slider E") == "feed slider $E$"
     assert md_names("crank-rocker O1ABC's crank") == "crank-rocker $O_1ABC$\\'s crank"
     assert mpl_names("A (folded)") == "A (folded)"
-    assert sheet_names("rocker at its first extreme C1") == "rocker at its first extreme " + sub("C", "1")
+    assert sheet_names("rocker at its first extreme C1") == "rocker at its first extreme " + sheet_point("C1")
+    assert plain(sheet_names("rod BF (RRR)")) == "rod BF (RRR)"
+    assert split_subscripts(sheet_names("rod BF (RRR)"))[1:3] == [("B", "it"), ("F", "it")]
     assert tex_names(r"\perp O2A") == r"\perp O_2A"
     # a name already inside a subscript stays as it is
     assert tex_names(r"F_{R12} + v_{A4A3} + l_{O2A}") == r"F_{R12} + v_{A4A3} + l_{O2A}"

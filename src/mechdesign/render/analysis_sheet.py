@@ -20,8 +20,8 @@ from ..core.polygons import Polygon
 from . import fmt
 from .labels import LabelTable, pgettext, sheet_names, sheet_point
 from .sheet import (Dimension, LabelPlacer, Series, Sheet, TitleInfo, chart, fit_height,
-                    frame, ground, heading, length_scale, nice_scale, pin,
-                    scale_text, slider_block, sub, table, text_width, title_block_box,
+                    fill_scale, frame, ground, heading, length_scale, pin,
+                    scale_text, slider_block, sub, sup, table, text_width, title_block_box,
                     with_subscripts)
 
 DEG = 180.0 / np.pi
@@ -83,6 +83,7 @@ def analysis_sheet(found, info: TitleInfo, lang: str, labels: dict | None = None
     if unloaded:                  # only the kinematics exist: no empty force cells, no zero curve
         forces = flywheel = None
     polys = {c: found.polygons.at(c)[:2] if unloaded else found.polygons.at(c) for c in chosen}
+    symbols = vector_symbols(getattr(found, "graphical", None))
     s = Sheet("A1")
     x0, y0, x1, y1 = s.inner
     table_top = y0 + 8 + _table_height(k)
@@ -92,7 +93,8 @@ def analysis_sheet(found, info: TitleInfo, lang: str, labels: dict | None = None
     info = TitleInfo(**{**info.__dict__, "scale": scale_text(n_len)})
     frame(s, info)
     _table(s, model, k, forces, lab, (x0 + 8, y0 + 8, 300.0, table_top))
-    _polygon_grid(s, model, polys, chosen, lab, (310.0, y0 + 8, 602.0, y1 - 4), scales)
+    _polygon_grid(s, model, polys, chosen, lab, (310.0, y0 + 8, 602.0, y1 - 4), scales,
+                  symbols)
     _curves(s, model, k, forces, flywheel, lab, (622.0, 72.0, x1 - 8, y1 - 6))
     tb_x0, _, _, tb_y1 = title_block_box(s)
     notes = [lab["scales"] + f":  {sub('μ', 'L')} = {fmt.exact(n_len / 1000)} m/mm ({scale_text(n_len)}); "
@@ -121,7 +123,7 @@ def _group_title(model, pg: Polygon, lab: dict) -> str:
 
 
 def _polygon_grid(s: Sheet, model, polys: dict, chosen: list[str], lab: dict, box,
-                  scales: dict) -> None:
+                  scales: dict, symbols: dict | None = None) -> None:
     """Rows: velocity, acceleration, then one row per group's force polygon; one column
     per chosen position. Row heights are shared out so that every cell fits."""
     bx0, by0, bx1, by1 = box
@@ -145,7 +147,8 @@ def _polygon_grid(s: Sheet, model, polys: dict, chosen: list[str], lab: dict, bo
             cell = (bx0 + c * width + 2.0, top - h, bx0 + (c + 1) * width - 2.0, top)
             title = (lab[pg.kind].format(p=label) if pg.kind != "force"
                      else lab["force"].format(p=label, g=_group_title(model, pg, lab)))
-            mu = _cell(s, pg, cell, title, lab)
+            mu = _cell(s, pg, cell, title, lab,
+                       (symbols or {}).get((label, pg.kind), []))
             key = pg.kind if pg.kind != "force" else f"force_{pg.group}"
             scales[f"{key}_{label}"] = mu
         top -= h + gap
@@ -166,25 +169,100 @@ def force_symbol(name: str) -> str:
     return sub(s[0], s[1:]) + prime
 
 
-def _value(x: float, ref: float) -> str:
-    """A polygon's value by the rule (render/fmt.py): 4 significant digits (fmt.sig); a
-    magnitude within 10⁻⁹ of the polygon's largest ``ref`` is a round-off of zero, ``0``
-    (a still slider's Coriolis term). A power of ten (fmt.e) is not used here: the sheet
-    font has no superscript minus or digits 0, 5–9."""
-    return fmt.minus(fmt.sig(x, ref=ref))
-
-
-def _items(pg: Polygon) -> list[str]:
-    unit = UNITS[pg.kind][2]
-    name = force_symbol if pg.kind == "force" else str
-    ref = max([abs(v.value) for v in pg.vectors], default=0.0)
-    out = [f"{name(v.name)} = {_value(abs(v.value), ref)} {unit}" for v in pg.vectors]
-    ref = max([abs(m) for m in pg.moments.values()], default=0.0)
-    out += [f"{name(key)} = {_value(value, ref)} N·m" for key, value in pg.moments.items()]
+def vector_symbols(document) -> dict:
+    """{(position label, "velocity" | "acceleration"): [(tail, head, kind, value, symbol)]}
+    from the graphical method's document (stages/graphical.py): the quantity each segment
+    of its polygons stands for, as the report's tables name it (segment aa4 is v_A4A3,
+    n4'a4' is a^t_A4O3), in the order of its equations."""
+    out: dict = {}
+    for pos in getattr(document, "positions", ()) or ():
+        for kind in ("velocity", "acceleration"):
+            out[(str(pos.label), kind)] = [
+                (t.tail, t.head, t.kind, complex(t.value), t.symbol)
+                for eq in getattr(getattr(pos, kind), "equations", ())
+                for t in list(eq.left) + list(eq.right) if t.tail and t.head and t.tail != t.head]
     return out
 
 
-def _cell(s: Sheet, pg: Polygon, cell, title: str, lab: dict) -> float:
+def _image_point(name: str) -> str | None:
+    """The mechanism point of a polygon image: "a4" → "A4", "s6'" → "S6", "p(P)'" → "P";
+    None for the pole or an intermediate point (n4', k')."""
+    name = name.rstrip("'")
+    if name.startswith("p(") and name.endswith(")"):
+        return name[2:-1]
+    if not name or name == "p" or name[0] in "nk" or not name[0].isalpha():
+        return None
+    return name.upper()
+
+
+def symbol_of(vec, terms, vectors=()) -> str | None:
+    """The symbol of polygon vector ``vec`` among the graphical method's ``terms`` (see
+    :func:`vector_symbols`): the term of the same segment, the intermediate points of a
+    normal + tangential pair matched through the tangential vector that ends at the same
+    point (the two constructions name them apart: n4b' and nb'); else an absolute vector
+    from the pole is the point's own (a_A4), else None (the segment's name is written)."""
+    named = {p for tail, head, *_ in terms for p in (tail, head)}
+    alias = {}
+    for v in vectors:
+        if v.role == "tangential" and v.tail not in named:
+            found = [tail for tail, head, kind, _, _ in terms
+                     if kind == "tangential" and head == v.head and tail not in
+                     {w.tail for w in vectors}]
+            if len(found) == 1:
+                alias[v.tail] = found[0]
+    key = (alias.get(vec.tail, vec.tail), alias.get(vec.head, vec.head))
+    for tail, head, _, _, symbol in terms:
+        if (tail, head) == key:
+            return symbol
+    point = _image_point(vec.head)
+    if vec.role == "absolute" and vec.tail.rstrip("'") == "p" and point is not None:
+        return ("a_" if vec.tail.endswith("'") else "v_") + point
+    return None
+
+
+def vector_text(symbol: str) -> str:
+    """A velocity or acceleration symbol for a sheet text: "v_A4A3" → v with the subscript
+    A4A3, "a^n_BO3" → a with the subscript BO3, then the superscript n (the sheet's text
+    runs one after the other: the subscript next to its letter)."""
+    head, _, index = symbol.partition("_")
+    base, _, up = head.partition("^")
+    text = sub(base, index) if index else base
+    return sup(text, up) if up else text
+
+
+def _value(x: float, ref: float) -> str:
+    """A polygon's value by the table rule (render/fmt.py; :func:`_cell_number`): the
+    decimals that give the polygon's largest value ``ref`` 4 significant digits, so a
+    vector far shorter than the drawing's accuracy is written 0.002 m/s², not 0.001523
+    (nor 0.00002167); the true minus sign. A power of ten (fmt.e) is not used here: the
+    sheet font has no superscript minus or digits 0, 5–9."""
+    if not ref > 0 or abs(x) <= 1e-9 * ref:
+        return "0"
+    decimals = max(0, 3 - int(np.floor(np.log10(ref))))
+    return fmt.minus(fmt.f(x, decimals, group=True))
+
+
+def _items(pg: Polygon, symbols: list | None = None) -> list[str]:
+    """The polygon's vectors as "symbol = value unit": a force by its name (F_R12), a
+    velocity or acceleration by the quantity its segment stands for (v_A4A3 = … m/s; the
+    segment's name, aa4, only where the graphical method names no quantity for it)."""
+    unit = UNITS[pg.kind][2]
+    symbols = symbols or []
+
+    def name(v) -> str:
+        if pg.kind == "force":
+            return force_symbol(v.name)
+        symbol = symbol_of(v, symbols, pg.vectors)
+        return vector_text(symbol) if symbol else v.name
+
+    ref = max([abs(v.value) for v in pg.vectors], default=0.0)
+    out = [f"{name(v)} = {_value(abs(v.value), ref)} {unit}" for v in pg.vectors]
+    ref = max([abs(m) for m in pg.moments.values()], default=0.0)
+    out += [f"{force_symbol(key)} = {_value(value, ref)} N·m" for key, value in pg.moments.items()]
+    return out
+
+
+def _cell(s: Sheet, pg: Polygon, cell, title: str, lab: dict, symbols: list | None = None) -> float:
     """One polygon with its heading, scale and the list of its vectors; returns μ."""
     cx0, cy0, cx1, cy1 = cell
     w = cx1 - cx0
@@ -192,7 +270,7 @@ def _cell(s: Sheet, pg: Polygon, cell, title: str, lab: dict) -> float:
                closed=True, weight=0.13)
     head_h = fit_height(title, w - 4.0, 3.5)
     s.text((cx0 + cx1) / 2 + 1j * (cy1 - 1.5), title, head_h, "TEXT", "center", "top")
-    items = _items(pg)
+    items = _items(pg, symbols)
     ncol = 3 if w > 110 else 2
     nrow = int(np.ceil(len(items) / ncol))
     line = 3.4
@@ -211,7 +289,7 @@ def _cell(s: Sheet, pg: Polygon, cell, title: str, lab: dict) -> float:
     pts = np.array(list(pg.points.values()))
     extent = max(np.ptp(pts.real) / (pbox[2] - pbox[0]), np.ptp(pts.imag) / (pbox[3] - pbox[1]),
                  1e-12)
-    mu = nice_scale(extent, 1.0)
+    mu = fill_scale(extent, 1.0)
     text = f"{sym} = {fmt.exact(mu)} {unit}"
     s.text((cx0 + cx1) / 2 + 1j * (cy1 - 2.0 - head_h - 1.0), text, 2.5, "TEXT", "center", "top")
     # labels keep clear of the heading and scale above and the vector list below
@@ -361,7 +439,10 @@ def _mechanism(s: Sheet, model, k, lab: dict, box, chosen: list[str], lang: str)
     joints = _joint_points(mech) | set(mech.frame_points)
     coms = {b.com for b in model.bodies if b.com is not None} - joints
     # points that only carry a load (a cutting-force line) are not drawn
-    loads = {r.point for r in model.resistances} - joints - coms
+    # a point the brief asks about (analysis.points: the textbook's D) is drawn and named
+    # even where a load acts on it
+    asked = (set(getattr(k, "point_vel", None) or {}) & set(P)) - joints - coms
+    loads = {r.point for r in model.resistances} - joints - coms - asked
     drawn = {name: z for name, z in P.items() if name not in coms | loads}
     allpts = np.concatenate([z for z in drawn.values()])
     guides = _fixed_guides(P, sliders, mm)
@@ -468,7 +549,7 @@ def _mechanism(s: Sheet, model, k, lab: dict, box, chosen: list[str], lang: str)
     if chosen and chosen[0] in labels:
         i0 = labels.index(chosen[0])
         mid = np.mean([P[nm][i0] for nm in drawn])
-        for name in sorted(joints - set(mech.frame_points)):
+        for name in sorted((joints - set(mech.frame_points)) | asked):
             if name in P:
                 d = P[name][i0] - mid
                 placer.place(v.p(P[name][i0]), sheet_point(name), 3.5, prefer=d if abs(d) > 1e-9 else 1j,
@@ -503,11 +584,17 @@ def _mechanism(s: Sheet, model, k, lab: dict, box, chosen: list[str], lang: str)
 # ------------------------------------------------------------------ table and curves
 
 def _moving_links(model, k) -> list[str]:
-    """Links whose ω varies (the crank and translating sliders left out), in order."""
+    """Links whose ω varies (the crank and translating sliders left out), in order. A
+    slider on a turning guide turns with its guide: the guide's number is written (ω4 of
+    the shaper's guide bar 4, as the report writes it, not ω3 of its slider 3)."""
+    from ..stages.linkage import link_members
+
     out = []
     n = k.grid_size
+    _, sliders = link_members(model.mechanism)
+    blocks = {slider for slider, *_ in sliders}
     for g in model.mechanism.groups:
-        for link in g.links:
+        for link in sorted(g.links, key=lambda x: x in blocks):
             if link in out or link == model.crank.link or link not in k.link_omega:
                 continue
             w = np.asarray(k.link_omega[link][:n])

@@ -33,7 +33,7 @@ from ..i18n import N_, tr
 from ..stages.cam import Division
 from .cam_report import _IMPACT, CONTACT, _segment_name, _Units
 from . import fmt
-from .labels import LabelTable, pgettext
+from .labels import LabelTable, pgettext, sheet_point
 from .sheet import (
     sub,
     THIN,
@@ -340,7 +340,7 @@ def _profile(sheet: Sheet, c, g: _ProfileGeometry, divs, n: float, box, lab):
     # -- the follower in its start position, cam centre
     outside = _follower_start(sheet, view, g, n, labels)
     ground(view, 0, 7.0, -np.pi / 2)
-    labels.text(O + complex(-3.0, -3.0), "O", 3.5, "right", "top")
+    labels.text(O + complex(-3.0, -3.0), sheet_point("O"), 3.5, "right", "top")
 
     # -- ω and r0 inside the cam, where no construction line passes: ω in the first part
     # of the widest free sector, r0 in the widest sector left (clear of the centre lines)
@@ -428,7 +428,7 @@ def _follower_start(sheet, view, g: _ProfileGeometry, n, labels: LabelPlacer) ->
     if g.osc:
         A = complex(g.a)
         ground(view, A, 7.0, -np.pi / 2)
-        labels.text(P(A) + complex(-3.0, -3.0), "A", 3.5, "right", "top")
+        labels.text(P(A) + complex(-3.0, -3.0), sheet_point("A"), 3.5, "right", "top")
         if g.kind == "flat":
             u = (B0 - A) / abs(B0 - A)
             _, hi = g.face if g.face else (0.0, g.a)

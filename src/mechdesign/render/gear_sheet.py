@@ -25,8 +25,8 @@ from ..core.gears import SpurPair
 from ..i18n import N_
 from ..stages.gear import GearDrawing
 from . import fmt
-from .labels import LabelTable, pgettext
-from .sheet import (SUB_ON, SUB_OFF, LabelPlacer, Polyline, Sheet, TitleInfo, clip_segment, frame,
+from .labels import LabelTable, pgettext, sheet_point
+from .sheet import (MARKERS, LabelPlacer, Polyline, Sheet, TitleInfo, clip_segment, frame,
                     length_scale, plain, sample_polyline, scale_text, sub, table, text_width,
                     title_block_box, with_subscripts)
 
@@ -348,9 +348,9 @@ def gear_sheet(drawing: GearDrawing, info: TitleInfo, lang: str, size: str | Non
     labels.absorb([Polyline(tuple(sample_polyline([p - 3 + 3j, p + 3 + 3j], 0.5)), "TEXT")])
     for name, q, prefer in (("P", p, 1 + 1.2j), ("N1", n1, -u + 1j * u), ("N2", n2, 1j * u),
                             ("B2", b2, -1j * u), ("B1", b1, 1j * u - 0.3 * u), ("O1", o1, 1 + 1j)):
-        labels.place_best(q, name if len(name) == 1 else sub(name[0], name[1:]), 5.0, prefer)
+        labels.place_best(q, sheet_point(name), 5.0, prefer)
     if o2_in:
-        labels.place_best(o2, sub("O", "2"), 5.0, 1 + 1j)
+        labels.place_best(o2, sheet_point("O2"), 5.0, 1 + 1j)
     else:                   # the line of centres leaves the area towards O2
         sheet.arrow(top - 14.0j, top, "CONSTRUCTION", 4.0, 0.35)
         note = with_subscripts(lab["o2"], "O_2").format(a=fmt.length(mm.a_work))
@@ -510,7 +510,7 @@ def _wrap(text: str, width: float, height: float) -> list[str]:
 def _tokens(text: str) -> list[str]:
     out, word = [], ""
     for ch in text:
-        if ord(ch) > 0x2E80 and ch not in (SUB_ON, SUB_OFF):   # a subscript stays in its word
+        if ord(ch) > 0x2E80 and ch not in MARKERS:   # a subscript stays in its word
             if word:
                 out.append(word)
                 word = ""

@@ -254,7 +254,10 @@ class _LinkageDrawing:
         P = self.P = {name: complex(np.asarray(z)[n_grid + i]) * MM + shift for name, z in k.points.items()}
         self.joints = {j.point for js in mech.joints.values() for j in js} | set(mech.frame_points)
         coms = {b.com for b in model.bodies if b.com is not None} - self.joints
-        loads = {r.point for r in model.resistances} - self.joints - coms
+        # a point the brief asks about (analysis.points: the textbook's D) is drawn and named
+        # even where a load acts on it
+        self.named = (set(getattr(k, "point_vel", None) or {}) & set(P)) - self.joints - coms
+        loads = {r.point for r in model.resistances} - self.joints - coms - self.named
         self.drawn = {nm: z for nm, z in P.items() if nm not in coms | loads}
         self.frame_pts = {nm: complex(z) * MM + shift for nm, z in mech.frame_points.items()}
         crank = model.crank
@@ -310,7 +313,7 @@ class _LinkageDrawing:
         _omega_arrow(s, view, self.piv, self.r_crank, self.model.crank_omega > 0, placer, lab)
         # names of the points, then the link numbers
         mid = np.mean(list(drawn.values()))
-        for name in sorted(set(mech.frame_points) | (joints & set(P))):
+        for name in sorted(set(mech.frame_points) | (joints & set(P)) | self.named):
             d = P[name] - mid
             placer.place(view.p(P[name]), sheet_point(name), 3.5, prefer=d if abs(d) > 1e-9 else 1j, gap=2.5)
         numbered = []
@@ -515,7 +518,7 @@ def lockbeam_diagram(results, found, info: TitleInfo, lang: str) -> Sheet:
         _omega_arrow(s, view, o, float(np.max(np.abs(pd["profile"] - o))), L["sigma_pin"] > 0, placer, lab)
         placer.place(view.p(o), sheet_point("O2"), 3.5, prefer=-1 - 1j, gap=3.0)
         # the roller centre of the positioning pin: F (B is the bending four-bar's pin)
-        placer.place(view.p(pd["B"]), "F", 3.5, prefer=-1 + 0.3j, gap=3.0)
+        placer.place(view.p(pd["B"]), sheet_point("F"), 3.5, prefer=-1 + 0.3j, gap=3.0)
         placer.place(view.p((pd["B"] + pd["stem_top"]) / 2), "7", 3.5, prefer=1, gap=3.0)
         k = pd["profile"][len(pd["profile"]) // 2]
         placer.place(view.p(k), "2", 3.5, prefer=k - o, gap=2.5)
@@ -725,7 +728,7 @@ def cam_diagram(c, info: TitleInfo, lang: str) -> Sheet:
             u = (B0 - A) / abs(B0 - A)
             view.line(A + u * 1.2 / view.scale, B0, "OUTLINE")
             placer.block_segment(view.p(A), view.p(B0), 1.5)
-            placer.place(view.p(A), "A", 3.5, prefer=1 + 1j, gap=3.0)
+            placer.place(view.p(A), sheet_point("A"), 3.5, prefer=1 + 1j, gap=3.0)
             stem_top = B0
         else:
             stem_top = complex(g.e, g.outer + 35.0)
@@ -744,8 +747,8 @@ def cam_diagram(c, info: TitleInfo, lang: str) -> Sheet:
             view.circle(B0, g.rr, "OUTLINE")
             pin(view, B0)
         placer.block(view.p(B0), max(g.rr * view.scale, 1.5))
-        placer.place(view.p(B0), "B", 3.5, prefer=(-1 + 0.3j) if not g.osc else -1j, gap=3.0)
-        placer.place(view.p(0j), "O", 3.5, prefer=-1 - 1j, gap=3.0)
+        placer.place(view.p(B0), sheet_point("B"), 3.5, prefer=(-1 + 0.3j) if not g.osc else -1j, gap=3.0)
+        placer.place(view.p(0j), sheet_point("O"), 3.5, prefer=-1 - 1j, gap=3.0)
         _omega_arrow(s, view, 0j, float(np.max(np.abs(g.actual))), g.sigma > 0, placer, lab)
         # link numbers: cam 1, follower 2
         placer.place(view.p(complex(g.actual[len(g.actual) // 2])), "1", 3.5,
@@ -820,8 +823,8 @@ def disc_diagram(disc, info: TitleInfo, lang: str) -> Sheet:
                 hatched_line(view, complex(xw, yc - 6.0), complex(xw, yc + 6.0), side=(-1j if side < 0 else 1j))
                 placer.block_box((view.p(complex(xw, yc)).real - 4.0, view.p(complex(xw, yc - 6)).imag,
                                   view.p(complex(xw, yc)).real + 4.0, view.p(complex(xw, yc + 6)).imag))
-            placer.place(view.p(sh + 0j), "O", 3.5, prefer=-1 - 0.2j, gap=4.0)
-            placer.place(view.p(c), "C", 3.5, prefer=-1 + 0.3j, gap=2.0)
+            placer.place(view.p(sh + 0j), sheet_point("O"), 3.5, prefer=-1 - 0.2j, gap=4.0)
+            placer.place(view.p(c), sheet_point("C"), 3.5, prefer=-1 + 0.3j, gap=2.0)
             placer.place(view.p(sh + complex(x, top)), str(label), 3.5, prefer=1j, gap=2.0)
             _omega_arrow(s, view, c, R, ccw, placer, lab)
         if drawing_fits(s.entities[first:], regions(s)[where]):

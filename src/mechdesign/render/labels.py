@@ -119,17 +119,43 @@ def mpl_point(name: str) -> str:
 SUB_ON, SUB_OFF = "\ue000", "\ue001"
 
 
+# a superscript (the n, t, k, r of a^n_BO3) likewise: "a" + SUP_ON + "n" + SUP_OFF
+SUP_ON, SUP_OFF = "\ue002", "\ue003"
+
+
+# italic letters (a point name, as the report sets it): IT_ON + "B" + IT_OFF; the typst back
+# end slants them (the sheet font, Noto Sans SC, has no italic), the DXF's MTEXT obliques
+# them by 15° (\\Q15;)
+IT_ON, IT_OFF = "\ue004", "\ue005"
+MARKERS = (SUB_ON, SUB_OFF, SUP_ON, SUP_OFF, IT_ON, IT_OFF)
+
+
+def italic(text: str) -> str:
+    """``text`` set in italic on a sheet."""
+    return f"{IT_ON}{text}{IT_OFF}" if text else text
+
+
+def sup(base: str, index: str) -> str:
+    """``base`` with the superscript ``index`` (e.g. ``sup("a", "n")``) for a sheet text."""
+    return f"{base}{SUP_ON}{index}{SUP_OFF}"
+
+
 def sub(base: str, index: str) -> str:
     """``base`` with the subscript ``index`` (e.g. ``sub("φ", "max")``) for a sheet text."""
     return f"{base}{SUB_ON}{index}{SUB_OFF}"
 
 
+_LETTER = re.compile(r"([A-Z]'*)([0-9]*)('*)")
+
+
 def sheet_point(name: str) -> str:
-    """A point name (or a run of them) for a sheet text: its digits marked as subscripts."""
+    """A point name (or a run of them) for a sheet text, as the report sets it: its letters
+    italic, its digits marked as subscripts ("O1A": italic O, subscript 1, italic A);
+    another text as written."""
     name = str(name)
-    if not subscripted(name):
+    if not _NAMES.fullmatch(name):
         return name
-    return _DIGITS.sub(lambda m: sub(m[1], m[2]), name)
+    return _LETTER.sub(lambda m: italic(m[1]) + (sub("", m[2]) if m[2] else "") + m[3], name)
 
 
 # a run of point names standing as a word, with or without a digit ("O1A", "DBC", "E"), for
@@ -158,8 +184,11 @@ def mpl_names(text: str) -> str:
 
 
 def sheet_names(text: str) -> str:
-    """A text holding point names for a sheet: each name's digits marked as subscripts."""
-    return _NAME_WORD.sub(lambda m: sheet_point(m[1]), str(text))
+    """A text holding point names for a sheet, set as the report sets them (:func:`md_names`):
+    each run of names italic, its digits subscripts ("crank O1A", "rod BF"; the group code
+    RRR stays a word)."""
+    return _ANY_NAME_WORD.sub(lambda m: m[1] if _GROUP_CODE.fullmatch(m[1]) else sheet_point(m[1]),
+                              str(text))
 
 
 def tex_names(text: str) -> str:

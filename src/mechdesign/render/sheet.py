@@ -316,7 +316,8 @@ def thin(points, tolerance: float = CHORD_TOLERANCE) -> np.ndarray:
 # text font, Noto Sans SC, has none of the Unicode subscript characters (ₘᵢₙ, ₐ, ₁ …).
 # The markers and ``sub`` live in render/labels.py (which names points for every medium:
 # a sheet's point names need them, and labels may not import this module); re-exported here.
-from .labels import SUB_OFF, SUB_ON, sub  # noqa: E402
+from .labels import (IT_OFF, IT_ON, MARKERS, SUB_OFF, SUB_ON, SUP_OFF, SUP_ON,  # noqa: E402,F401
+                     italic, sub, sup)
 
 
 def with_subscripts(text: str, *symbols: str) -> str:
@@ -331,28 +332,45 @@ def with_subscripts(text: str, *symbols: str) -> str:
     return text
 
 
-def split_subscripts(text: str) -> list[tuple[str, bool]]:
-    """The runs of ``text``: (characters, is a subscript), empty runs left out."""
+_KINDS = {SUB_ON: (SUB_OFF, True), SUP_ON: (SUP_OFF, "sup"), IT_ON: (IT_OFF, "it")}
+
+
+def split_subscripts(text: str) -> list[tuple[str, object]]:
+    """The runs of ``text``: (characters, kind): True for a subscript, "sup" for a
+    superscript (:func:`sup`), "it" for italic letters (:func:`italic`), False for the
+    rest; empty runs left out."""
     out = []
     rest = text
-    while SUB_ON in rest:
-        head, _, tail = rest.partition(SUB_ON)
-        index, _, rest = tail.partition(SUB_OFF)
-        out += [(head, False), (index, True)]
+    while True:
+        at = [(rest.find(on), on) for on in _KINDS if on in rest]
+        if not at:
+            break
+        i, on = min(at)
+        off, kind = _KINDS[on]
+        head, tail = rest[:i], rest[i + 1:]
+        index, _, rest = tail.partition(off)
+        out += [(head, False), (index, kind)]
     out.append((rest, False))
     return [(t, s) for t, s in out if t]
 
 
+def scripted(text: str) -> bool:
+    """Whether ``text`` has a subscript, a superscript or italic letters."""
+    return SUB_ON in text or SUP_ON in text or IT_ON in text
+
+
 def plain(text: str) -> str:
     """``text`` with its subscripts written as plain letters ("μv", as the sheets used to)."""
-    return text.replace(SUB_ON, "").replace(SUB_OFF, "")
+    for m in MARKERS:
+        text = text.replace(m, "")
+    return text
 
 
 def text_width(text: str, height: float) -> float:
     """Estimated width of ``text`` [mm]: CJK characters are square, Latin ~0.6 h; a
-    subscript ~0.7 of that (typst draws it at 0.6 em)."""
-    if SUB_ON in text:
-        return sum((0.7 if is_sub else 1.0) * text_width(t, height)
+    subscript or superscript ~0.7 of that (typst draws it at 0.6 em)."""
+    if scripted(text):
+        return sum((0.7 if is_sub in (True, "sup") else 1.0) * text_width(t, height)
                    for t, is_sub in split_subscripts(text))
     wide = sum(1 for ch in text if ord(ch) > 0x2E80)
     return height * (wide + 0.62 * (len(text) - wide))
@@ -385,6 +403,25 @@ def nice_scale(value: float, available: float) -> float:
     raw = value / available
     mag = 10.0 ** np.floor(np.log10(raw))
     for m in (1.0, 2.0, 2.5, 5.0, 10.0):
+        if m * mag >= raw * (1 - 1e-12):
+            return m * mag
+    return 10.0 * mag
+
+
+# The steps of a polygon's scale μ on a sheet within each decade (1, 1.5, 2, 2.5, 3, 4, 5,
+# 6, 8 × 10ⁿ: GB/T 14690's reductions and 8): two neighbours differ by at most 1.5×, so
+# the smallest step that fits draws the polygon over at least 2/3 of its limiting side.
+POLYGON_STEPS = (1.0, 1.5, 2.0, 2.5, 3.0, 4.0, 5.0, 6.0, 8.0)
+
+
+def fill_scale(value: float, available: float) -> float:
+    """The smallest :data:`POLYGON_STEPS` × 10ⁿ units-per-mm scale that draws ``value``
+    within ``available`` mm: the polygon then spans at least 2/3 of ``available``."""
+    if not value > 0 or not available > 0:
+        return 1.0
+    raw = value / available
+    mag = 10.0 ** np.floor(np.log10(raw))
+    for m in POLYGON_STEPS + (10.0,):
         if m * mag >= raw * (1 - 1e-12):
             return m * mag
     return 10.0 * mag

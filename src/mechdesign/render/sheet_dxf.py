@@ -14,8 +14,8 @@ import numpy as np
 
 from ..fileio import atomic_path
 from .fmt import dxf_text, plain_line
-from .sheet import (LAYERS, SUB_ON, Arc, Circle, Dimension, Fill, Line, Polyline, Sheet, Text,
-                    split_subscripts, text_width)
+from .sheet import (LAYERS, Arc, Circle, Dimension, Fill, Line, Polyline, Sheet, Text,
+                    scripted, split_subscripts, text_width)
 
 TEXT_STYLE = "Standard"          # the one text style (DXF requires it to exist anyway)
 TEXT_FONT = "NotoSansSC-Regular.otf", "Noto Sans SC"    # file and family (render/fonts.py)
@@ -44,8 +44,16 @@ def mtext(text: str) -> str:
         return (t.replace("%", "%%%").replace("^", "^ ").replace("\\", "\\\\")
                 .replace("{", "\\{").replace("}", "\\}"))
 
-    return "".join(f"\\S^ {escape(t).replace(';', '')};" if is_sub else escape(t)
-                   for t, is_sub in runs)
+    def run(t: str, kind) -> str:
+        if kind == "sup":
+            return f"\\S{escape(t).replace(';', '')}^ ;"
+        if kind == "it":        # obliqued by 15° (the font has no italic), then upright again
+            return f"\\Q15;{escape(t)}\\Q0;"
+        if kind:
+            return f"\\S^ {escape(t).replace(';', '')};"
+        return escape(t)
+
+    return "".join(run(t, kind) for t, kind in runs)
 
 
 def _column(t: Text, sheet: Sheet) -> float:
@@ -78,9 +86,11 @@ def plain_text(entity) -> str:
     import re
 
     text = entity.text if entity.dxftype() == "MTEXT" else entity.dxf.get("text", "")
-    if entity.dxftype() == "TEXT" or "\\S^ " not in text:
+    if entity.dxftype() == "TEXT" or ("\\S" not in text and "\\Q" not in text):
         return text
     text = re.sub(r"\\S\^ ([^;]*);", r"\1", text)
+    text = re.sub(r"\\S([^;^]*)\^ ;", r"\1", text)
+    text = re.sub(r"\\Q[0-9.]+;", "", text)
     return (text.replace("\\{", "{").replace("\\}", "}").replace("\\\\", "\\")
             .replace("%%%", "%").replace("^ ", "^"))
 
@@ -141,7 +151,7 @@ def build_document(sheet: Sheet, title: str = ""):
         elif isinstance(e, Fill):
             hatch = msp.add_hatch(color=256, dxfattribs={"layer": e.layer})
             hatch.paths.add_polyline_path([(p.real, p.imag) for p in e.points], is_closed=True)
-        elif isinstance(e, Text) and SUB_ON in e.text:
+        elif isinstance(e, Text) and scripted(e.text):
             # a subscript: an MTEXT with stacked subscripts, placed and turned as the TEXT
             msp.add_mtext(mtext(e.text), dxfattribs={
                 "layer": e.layer, "style": TEXT_STYLE, "char_height": e.height,

@@ -85,6 +85,10 @@ def typst_string(text: str) -> str:
     return '"' + "".join(out) + '"'
 
 
+# the slant of italic letters [°] (the DXF obliques them as much: sheet_dxf.mtext)
+ITALIC_SLANT = 15
+
+
 def typst_body(text: str) -> str:
     """The typst expression of a sheet text: a string literal, or with subscripts (see
     :func:`.sheet.sub`) the strings joined with ``sub(...)`` (drawn smaller and lowered,
@@ -92,8 +96,16 @@ def typst_body(text: str) -> str:
     runs = split_subscripts(text)
     if not any(is_sub for _, is_sub in runs):
         return typst_string(text)
-    return "(" + " + ".join(f"sub(typographic: false, {typst_string(t)})" if is_sub
-                            else typst_string(t) for t, is_sub in runs) + ")"
+    def run(t: str, kind) -> str:
+        if kind == "sup":
+            return f"super(typographic: false, {typst_string(t)})"
+        if kind == "it":       # slanted: the CJK sans has no italic
+            return f"box(skew(ax: -{ITALIC_SLANT}deg, reflow: false, {typst_string(t)}))"
+        if kind:
+            return f"sub(typographic: false, {typst_string(t)})"
+        return typst_string(t)
+
+    return "(" + " + ".join(run(t, kind) for t, kind in runs) + ")"
 
 
 def _num(x: float) -> str:

@@ -74,6 +74,7 @@ class LinkageResults:
     forces: object
     flywheel: object
     polygons: object
+    graphical: object = None       # the graphical method's document (its vector symbols)
 
 
 def linkage_results(results: dict) -> LinkageResults | None:
@@ -90,7 +91,8 @@ def linkage_results(results: dict) -> LinkageResults | None:
         model = results.get(model_key)
         if model is not None:
             return LinkageResults(model, results[prefix], results.get(f"{prefix}_forces"),
-                                  results.get(f"{prefix}_flywheel"), polygons)
+                                  results.get(f"{prefix}_flywheel"), polygons,
+                                  results.get(f"{prefix}_graphical"))
     return None
 
 
