@@ -159,6 +159,8 @@ def _scale(x: float) -> str:
 
 #: Font size of the labels of the free-body diagrams and force polygons [pt].
 LABEL_SIZE = 8.5
+#: Size of the arrow heads (matplotlib's mutation scale) [pt].
+HEAD = 9
 
 
 def _arrow(ax, a: complex, b: complex, color="k", lw=1.2, label=None, ls="-", labels=None):
@@ -167,9 +169,12 @@ def _arrow(ax, a: complex, b: complex, color="k", lw=1.2, label=None, ls="-", la
     either side first)."""
     if abs(b - a) < 1e-9:
         return
-    ax.annotate("", xy=(b.real, b.imag), xytext=(a.real, a.imag),
+    # an annotation whose head lies outside the data limits is not drawn at all (shaper
+    # Fig. 7: F_r, F_R76, F_R45 named without arrows): the arrow widens the limits
+    ax.update_datalim([(a.real, a.imag), (b.real, b.imag)])
+    ax.annotate("", xy=(b.real, b.imag), xytext=(a.real, a.imag), annotation_clip=False,
                 arrowprops=dict(arrowstyle="-|>", color=color, lw=lw, ls=ls,
-                                shrinkA=0, shrinkB=0, mutation_scale=9))
+                                shrinkA=0, shrinkB=0, mutation_scale=HEAD))
     if label and labels is not None:
         n = 1j * (b - a) / abs(b - a)
         labels.append(Label(f"${label}$", (a + b) / 2, (n, -n),
@@ -179,6 +184,14 @@ def _arrow(ax, a: complex, b: complex, color="k", lw=1.2, label=None, ls="-", la
         n = 1j * (b - a) / abs(b - a)
         ax.text((m + 0.04 * abs(b - a) * n).real, (m + 0.04 * abs(b - a) * n).imag,
                 f"${label}$", fontsize=7, color=color, ha="center", va="center")
+
+
+def _heads(ax) -> list[tuple[complex, complex]]:
+    """The arrows drawn in ``ax`` (tail, tip), whose heads a label must keep clear of."""
+    from matplotlib.text import Annotation
+
+    return [(complex(*t.xyann), complex(*t.xy)) for t in ax.texts
+            if isinstance(t, Annotation) and t.arrow_patch is not None]
 
 
 _COLORS = {"absolute": "k", "relative": "tab:blue", "normal": "tab:green",
@@ -269,8 +282,8 @@ def _kin_figure(path: Path, label: str, velocity, acceleration, lang: str) -> No
         l1 = _kin_axes(a1, velocity, f"{t['pos']} {label}: {t['vel']}", "(m/s)/mm", lang)
         l2 = _kin_axes(a2, acceleration, f"{t['acc']}", "(m/s²)/mm", lang)
         # labels last, clear of each other and of the polygon's vectors (issue 19)
-        place(a1, *l1)
-        place(a2, *l2)
+        place(a1, *l1, heads=_heads(a1), head_size=HEAD)
+        place(a2, *l2, heads=_heads(a2), head_size=HEAD)
 
 
 @fig.cached
@@ -361,8 +374,8 @@ def _force_figure(path: Path, points: dict, length_scale: float, fg, members: di
         a2.set_xlabel("mm" + note, fontsize=6)
         a2.grid(True, lw=0.3, alpha=0.4)
         # labels last, clear of each other and of the links and vectors (issue 19)
-        place(a1, labels1, lines1)
-        place(a2, labels2, lines2)
+        place(a1, labels1, lines1, heads=_heads(a1), head_size=HEAD)
+        place(a2, labels2, lines2, heads=_heads(a2), head_size=HEAD)
 
 
 #: A force polygon narrower than this fraction of its length is called nearly flat in its
