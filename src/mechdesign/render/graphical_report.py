@@ -334,6 +334,12 @@ def _force_figure(path: Path, points: dict, length_scale: float, fg, members: di
                 _arrow(a1, z, z + L * value / abs(value), "tab:red", label=sym(name),
                        labels=labels1)
                 lines1.append((z, z + L * value / abs(value)))
+        # room round the links and arrows for the names of the outermost points
+        ends = [z for seg in lines1 for z in seg] or [0j]
+        lo = complex(min(z.real for z in ends), min(z.imag for z in ends))
+        hi = complex(max(z.real for z in ends), max(z.imag for z in ends))
+        m = FBD_MARGIN * max(hi.real - lo.real, hi.imag - lo.imag, 1e-9)
+        a1.update_datalim([(lo.real - m, lo.imag - m), (hi.real + m, hi.imag + m)])
         a1.set_aspect("equal", adjustable="datalim")
         a1.set_title(f"{t['fbd']} ({t['links']} {', '.join(fg.links)})  "
                      f"$\\mu_l$ = {_scale(length_scale)} m/mm", fontsize=8)
@@ -360,11 +366,13 @@ def _force_figure(path: Path, points: dict, length_scale: float, fg, members: di
         labels2 = []
         for a, b, names, c in drawn:
             n = 1j * (b - a) / abs(b - a)
-            labels2.append(Label(", ".join(f"${s}$" for s in names), (a + b) / 2, (n, -n),
+            # the names of one segment stacked beside a steep one, in a row beside a flat one
+            sep = ",\n" if abs((b - a).imag) > abs((b - a).real) else ", "
+            labels2.append(Label(sep.join(f"${s}$" for s in names), (a + b) / 2, (n, -n),
                                  {"fontsize": LABEL_SIZE, "color": c}))
         for name, z in fg.points.items():
             a2.plot([z.real], [z.imag], "k.", ms=2)
-        _extent(a2, zs2)
+        _extent(a2, zs2, minor=FORCE_MINOR, pad=FORCE_PAD)
         flat = _flatness(zs2)
         a2.set_title(f"{t['force']}  $\\mu_F$ = {_scale(fg.scale)} N/mm", fontsize=8)
         a2.tick_params(labelsize=6)
@@ -377,6 +385,15 @@ def _force_figure(path: Path, points: dict, length_scale: float, fg, members: di
         place(a1, labels1, lines1, heads=_heads(a1), head_size=HEAD)
         place(a2, labels2, lines2, heads=_heads(a2), head_size=HEAD)
 
+
+#: Margin round the free-body diagram's links and arrows (fraction of the data extent).
+FBD_MARGIN = 0.12
+
+#: The force polygon's panel: its short extent at least this fraction of the long one, and
+#: this margin round it (of the long extent) — room for the force names, which are longer
+#: than a vertex's (a tall polygon in a narrow panel pushed "F_R34, F_R43, F_R23" over the
+#: tick labels, slotter and press, issue 19 point 6).
+FORCE_MINOR, FORCE_PAD = 0.6, 0.18
 
 #: A force polygon narrower than this fraction of its length is called nearly flat in its
 #: figure (its forces almost collinear; the directions read from it are uncertain).

@@ -22,7 +22,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 #: Distances from the anchor tried in turn [pt] and the padding round a text box [pt].
-DISTANCES = (5.0, 8.0, 12.0, 17.0, 23.0, 30.0)
+DISTANCES = (5.0, 8.0, 12.0, 17.0, 23.0, 30.0, 38.0, 48.0)
 PAD = 1.5
 #: Directions tried after the preferred ones: the eight compass directions.
 COMPASS = tuple(np.exp(1j * np.pi * k / 4) for k in (0, 2, 4, 6, 1, 3, 5, 7))
