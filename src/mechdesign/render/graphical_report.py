@@ -97,10 +97,21 @@ def segment(tail: str, head: str) -> str:
     return f"{tail}{head}" if a is None or b is None else f"${a}{b}$"
 
 
+def mpl_math(tex: str) -> str:
+    """A TeX fragment of :func:`vertex` or :func:`sym` for matplotlib's mathtext, its primes
+    written "′" (U+2032): mathtext draws "'" as a superscript \\prime that the shipped
+    fonts render as a small "0" ("p⁰", "a⁰₄" in the polygons), and a vertex's prime goes
+    before its subscript as the text writes it ("a′₄")."""
+    m = re.fullmatch(r"([A-Za-z])_\{([^{}]*)\}('+)", tex)
+    if m:
+        return f"{m[1]}{'′' * len(m[3])}_{{{m[2]}}}"
+    return tex.replace("'", "′")
+
+
 def vertex_label(name: str) -> str:
     """A polygon vertex as a matplotlib label (mathtext when :func:`vertex` typesets it)."""
     tex = vertex(name)
-    return mpl_text(name) if tex is None else f"${tex}$"
+    return mpl_text(str(name).replace("'", "′")) if tex is None else f"${mpl_math(tex)}$"
 
 
 def direction(code: str, lang: str) -> str:
@@ -177,7 +188,7 @@ def _arrow(ax, a: complex, b: complex, color="k", lw=1.2, label=None, ls="-", la
                                 shrinkA=0, shrinkB=0, mutation_scale=HEAD))
     if label and labels is not None:
         n = 1j * (b - a) / abs(b - a)
-        labels.append(Label(f"${label}$", (a + b) / 2, (n, -n),
+        labels.append(Label(f"${mpl_math(label)}$", (a + b) / 2, (n, -n),
                             {"fontsize": LABEL_SIZE, "color": color}))
     elif label:
         m = (a + b) / 2
@@ -235,6 +246,11 @@ def _extent(ax, zs, minor: float = 0.3, pad: float = 0.12) -> float:
     return span
 
 
+#: A velocity or acceleration polygon's panel: its short extent at least this fraction of
+#: the long one (room for the vertex names beside a steep sliver, slotter position 5).
+KIN_MINOR = 0.45
+
+
 def _kin_axes(ax, poly, title: str, mu_unit: str, lang: str):
     """One polygon; returns its vertex labels (coincident vertices named together) and the
     segments they must keep clear of, for :func:`.label_layout.place`."""
@@ -251,7 +267,7 @@ def _kin_axes(ax, poly, title: str, mu_unit: str, lang: str):
             if abs(b - a) > 1e-9:
                 lines.append((a, b))
     zs = list(poly.points.values()) or [0j]
-    span = _extent(ax, zs)
+    span = _extent(ax, zs, minor=KIN_MINOR)
     centre = complex(np.mean([z.real for z in zs]), np.mean([z.imag for z in zs]))
     labels: list[Label] = []
     for spot, names in _coincident(poly.points, span):
@@ -259,7 +275,10 @@ def _kin_axes(ax, poly, title: str, mu_unit: str, lang: str):
         lines.append((spot, spot))
         away = spot - centre
         prefer = (away / abs(away),) if abs(away) > 1e-9 * span else ()
-        labels.append(Label(", ".join(vertex_label(n) for n in names), spot, prefer,
+        # three or more names of one spot on two lines (a long row ran past the frame)
+        row = [vertex_label(n) for n in names]
+        text = ", ".join(row) if len(row) < 3 else (", ".join(row[:2]) + ",\n" + ", ".join(row[2:]))
+        labels.append(Label(text, spot, prefer,
                             {"fontsize": 7}))
     ax.set_title(f"{title}  μ = {_scale(poly.scale)} {mu_unit}", fontsize=8)
     ax.tick_params(labelsize=6)
@@ -368,7 +387,7 @@ def _force_figure(path: Path, points: dict, length_scale: float, fg, members: di
             n = 1j * (b - a) / abs(b - a)
             # the names of one segment stacked beside a steep one, in a row beside a flat one
             sep = ",\n" if abs((b - a).imag) > abs((b - a).real) else ", "
-            labels2.append(Label(sep.join(f"${s}$" for s in names), (a + b) / 2, (n, -n),
+            labels2.append(Label(sep.join(f"${mpl_math(s)}$" for s in names), (a + b) / 2, (n, -n),
                                  {"fontsize": LABEL_SIZE, "color": c}))
         for name, z in fg.points.items():
             a2.plot([z.real], [z.imag], "k.", ms=2)
