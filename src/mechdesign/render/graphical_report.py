@@ -97,12 +97,12 @@ def segment(tail: str, head: str) -> str:
     return f"{tail}{head}" if a is None or b is None else f"${a}{b}$"
 
 
-def mpl_math(tex: str) -> str:
+def mpl_math(tex: str, vertex: bool = False) -> str:
     """A TeX fragment of :func:`vertex` or :func:`sym` for matplotlib's mathtext, its primes
     written "′" (U+2032): mathtext draws "'" as a superscript \\prime that the shipped
-    fonts render as a small "0" ("p⁰", "a⁰₄" in the polygons), and a vertex's prime goes
-    before its subscript as the text writes it ("a′₄")."""
-    m = re.fullmatch(r"([A-Za-z])_\{([^{}]*)\}('+)", tex)
+    fonts render as a small "0" ("p⁰", "a⁰₄" in the polygons). A vertex's prime goes
+    before its subscript ("a′₄"), a force's stays where the text has it ("F_R72′")."""
+    m = re.fullmatch(r"([A-Za-z])_\{([^{}]*)\}('+)", tex) if vertex else None
     if m:
         return f"{m[1]}{'′' * len(m[3])}_{{{m[2]}}}"
     return tex.replace("'", "′")
@@ -111,7 +111,7 @@ def mpl_math(tex: str) -> str:
 def vertex_label(name: str) -> str:
     """A polygon vertex as a matplotlib label (mathtext when :func:`vertex` typesets it)."""
     tex = vertex(name)
-    return mpl_text(str(name).replace("'", "′")) if tex is None else f"${mpl_math(tex)}$"
+    return mpl_text(str(name).replace("'", "′")) if tex is None else f"${mpl_math(tex, vertex=True)}$"
 
 
 def direction(code: str, lang: str) -> str:
