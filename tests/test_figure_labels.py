@@ -286,12 +286,13 @@ def test_tick_labels_write_the_true_minus_sign():
     assert 0x2212 in FT2Font(path).get_charmap()
 
 
-# ---- every polygon figure of the examples (issue 19 point 6, page review of session 31:
+# ---- every polygon figure of every example that has them (issue 19 point 6, page review of session 31:
 # press Figs 7–13, shaper Figs 6–8, die_cutter Figs 7–13, slotter Fig. 7, linkage_sixbar
 # Figs 8–9). Measured on the drawn artists after the final layout: label text extents,
 # the arrows' shafts and their heads as matplotlib draws them (display coordinates).
 
-_BRIEFS = ["shaper", "press", "die_cutter", "slotter", "linkage_sixbar"]
+_BRIEFS = ["shaper", "press", "die_cutter", "slotter", "linkage_sixbar", "crank_rocker",
+           "furnace_pusher", "lockbeam", "shaper_lengths", "textbook_guide_bar"]
 
 
 def _drawn_heads(ax) -> list:

@@ -406,7 +406,7 @@ def _force_figure(path: Path, points: dict, length_scale: float, fg, members: di
 
 
 #: Margin round the free-body diagram's links and arrows (fraction of the data extent).
-FBD_MARGIN = 0.12
+FBD_MARGIN = 0.16
 
 #: The force polygon's panel: its short extent at least this fraction of the long one, and
 #: this margin round it (of the long extent) — room for the force names, which are longer
