@@ -89,10 +89,11 @@ def test_polygon_segments_and_vertices_are_math():
     assert segment("ns3'", "s3'") == "$n_{s3}'s_{3}'$"
     assert segment("a", "a4") == "$aa_{4}$"
     assert segment("p", "b") == "$pb$"
-    assert vertex_label("nb'") == "$n_{b}'$"
+    # the figure's prime is U+2032 before the subscript (mathtext draws "'" as a "0")
+    assert vertex_label("nb'") == "$n′_{b}$"
     # a name of another form is drawn as written (never as broken mathtext)
     assert segment("E_1", "p") == "E_1p"
-    assert vertex_label("s6(P)'") == "s6(P)'"
+    assert vertex_label("s6(P)'") == "s6(P)′"
 
 
 @pytest.mark.parametrize("lang", LANGS)

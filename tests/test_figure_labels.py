@@ -284,3 +284,111 @@ def test_tick_labels_write_the_true_minus_sign():
     family = matplotlib.rcParams["font.sans-serif"][0]
     path = font_manager.findfont(font_manager.FontProperties(family=family))
     assert 0x2212 in FT2Font(path).get_charmap()
+
+
+# ---- every polygon figure of every example that has them (issue 19 point 6, page review of session 31:
+# press Figs 7–13, shaper Figs 6–8, die_cutter Figs 7–13, slotter Fig. 7, linkage_sixbar
+# Figs 8–9). Measured on the drawn artists after the final layout: label text extents,
+# the arrows' shafts and their heads as matplotlib draws them (display coordinates).
+
+_BRIEFS = ["shaper", "press", "die_cutter", "slotter", "linkage_sixbar", "crank_rocker",
+           "furnace_pusher", "lockbeam", "shaper_lengths", "textbook_guide_bar"]
+
+
+def _drawn_heads(ax) -> list:
+    """The filled head triangles of the axes' arrows, as drawn (display coordinates)."""
+    out = []
+    for t in ax.texts:
+        if getattr(t, "arrow_patch", None) is None:
+            continue
+        paths, fillable = t.arrow_patch._get_path_in_displaycoord()
+        for path, filled in zip(paths, fillable):
+            if filled:
+                out.append([tuple(v) for v in path.vertices[:3]])
+    return out
+
+
+def _polygon_figures(example_results, monkeypatch, tmp_path, brief, lang) -> dict:
+    from mechdesign.render import graphical_report as G
+
+    figs = _captured(monkeypatch)
+    G.graphical_figures(example_results(brief), tmp_path, lang)
+    assert figs
+    return figs
+
+
+@pytest.mark.parametrize("brief", _BRIEFS)
+@pytest.mark.parametrize("lang", ["zh", "en"])
+def test_every_polygon_figure_keeps_its_labels_clear(example_results, monkeypatch, tmp_path,
+                                                      brief, lang):
+    """In every velocity/acceleration polygon, free-body diagram and force polygon: no label
+    over another, over an arrow's shaft or head, outside its panel (over the tick labels),
+    or over the axis label (the flat-polygon note, shaper Fig. 8)."""
+    figs = _polygon_figures(example_results, monkeypatch, tmp_path, brief, lang)
+    bad = []
+    for name, fig in sorted(figs.items()):
+        for ax in fig.axes:
+            labels = _labels(ax)
+            # overlaps() lays the figure out once, as save_png does; all else is measured
+            # on that layout
+            clashes = LL.overlaps(ax, labels, _segments_of(ax))
+            renderer = LL._renderer(fig)
+            boxes = [(t.get_text(), LL._box(t, renderer, 0.0)) for t in labels]
+            for tri in _drawn_heads(ax):
+                for k in range(3):
+                    clashes += [f"{s} on a head" for s, b in boxes
+                                if LL._segment_hits_box(tri[k], tri[(k + 1) % 3], b)]
+            frame = ax.get_window_extent(renderer)
+            clashes += [f"{s} outside" for s, b in boxes
+                        if b[0] < frame.x0 or b[1] < frame.y0 or b[2] > frame.x1 or b[3] > frame.y1]
+            xl = ax.xaxis.label.get_window_extent(renderer)
+            ticks = [t.get_window_extent(renderer) for t in ax.get_xticklabels() if t.get_text()]
+            clashes += ["axis label on the ticks" for tb in ticks
+                        if LL._box_overlap((xl.x0, xl.y0, xl.x1, xl.y1), (tb.x0, tb.y0, tb.x1, tb.y1)) > 0]
+            bad += [f"{name}: {c}" for c in sorted(set(clashes))]
+    assert not bad, bad
+
+
+@pytest.mark.parametrize("brief", _BRIEFS)
+def test_every_force_named_in_a_free_body_diagram_has_its_arrow(example_results, monkeypatch,
+                                                                tmp_path, brief):
+    """Shaper Fig. 7: F_r, F_R76 and F_R45 were named without an arrow (an annotation whose
+    head lies outside the axes' limits is not drawn). Every force label (coloured like its
+    arrow; the point names are black) names an arrow of its colour, anchored at its middle,
+    whose tail and head lie inside the panel."""
+    from matplotlib.colors import to_rgba
+
+    figs = _polygon_figures(example_results, monkeypatch, tmp_path, brief, "en")
+    bad = []
+    for name, fig in sorted(figs.items()):
+        if "_kin" in name:
+            continue
+        ax = fig.axes[0]                               # the free-body diagram
+        fig.tight_layout()
+        arrows = [t for t in ax.texts if getattr(t, "arrow_patch", None) is not None]
+        (x0, x1), (y0, y1) = ax.get_xlim(), ax.get_ylim()
+
+        def inside(z):
+            return x0 <= z.real <= x1 and y0 <= z.imag <= y1
+
+        forces = [t for t in _labels(ax) if to_rgba(t.get_color()) != to_rgba("k")]
+        assert forces, name
+        span = max(x1 - x0, y1 - y0)
+        for t in forces:
+            at = complex(*t.get_position())        # the label's anchor (before its offset)
+            mine = [a for a in arrows
+                    if abs((complex(*a.xyann) + complex(*a.xy)) / 2 - at) < 1e-6 * span
+                    and to_rgba(a.arrow_patch.get_edgecolor()) == to_rgba(t.get_color())
+                    and inside(complex(*a.xy)) and inside(complex(*a.xyann))]
+            if not mine:
+                bad.append(f"{name}: {t.get_text()}")
+    assert not bad, bad
+
+
+def test_polygon_labels_write_primes_that_read_as_primes(example_results, monkeypatch, tmp_path):
+    """Mathtext draws "$p'$" with a glyph the shipped fonts show as a small "0" ("p⁰",
+    "a⁰₄" in shaper Fig. 6): the labels write U+2032 and no ASCII apostrophe."""
+    figs = _polygon_figures(example_results, monkeypatch, tmp_path, "shaper", "en")
+    texts = [t.get_text() for fig in figs.values() for ax in fig.axes for t in _labels(ax)]
+    assert any("′" in s for s in texts)
+    assert not [s for s in texts if "'" in s]

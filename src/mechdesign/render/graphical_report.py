@@ -97,10 +97,21 @@ def segment(tail: str, head: str) -> str:
     return f"{tail}{head}" if a is None or b is None else f"${a}{b}$"
 
 
+def mpl_math(tex: str, vertex: bool = False) -> str:
+    """A TeX fragment of :func:`vertex` or :func:`sym` for matplotlib's mathtext, its primes
+    written "′" (U+2032): mathtext draws "'" as a superscript \\prime that the shipped
+    fonts render as a small "0" ("p⁰", "a⁰₄" in the polygons). A vertex's prime goes
+    before its subscript ("a′₄"), a force's stays where the text has it ("F_R72′")."""
+    m = re.fullmatch(r"([A-Za-z])_\{([^{}]*)\}('+)", tex) if vertex else None
+    if m:
+        return f"{m[1]}{'′' * len(m[3])}_{{{m[2]}}}"
+    return tex.replace("'", "′")
+
+
 def vertex_label(name: str) -> str:
     """A polygon vertex as a matplotlib label (mathtext when :func:`vertex` typesets it)."""
     tex = vertex(name)
-    return mpl_text(name) if tex is None else f"${tex}$"
+    return mpl_text(str(name).replace("'", "′")) if tex is None else f"${mpl_math(tex, vertex=True)}$"
 
 
 def direction(code: str, lang: str) -> str:
@@ -159,6 +170,8 @@ def _scale(x: float) -> str:
 
 #: Font size of the labels of the free-body diagrams and force polygons [pt].
 LABEL_SIZE = 8.5
+#: Size of the arrow heads (matplotlib's mutation scale) [pt].
+HEAD = 9
 
 
 def _arrow(ax, a: complex, b: complex, color="k", lw=1.2, label=None, ls="-", labels=None):
@@ -167,18 +180,29 @@ def _arrow(ax, a: complex, b: complex, color="k", lw=1.2, label=None, ls="-", la
     either side first)."""
     if abs(b - a) < 1e-9:
         return
-    ax.annotate("", xy=(b.real, b.imag), xytext=(a.real, a.imag),
+    # an annotation whose head lies outside the data limits is not drawn at all (shaper
+    # Fig. 7: F_r, F_R76, F_R45 named without arrows): the arrow widens the limits
+    ax.update_datalim([(a.real, a.imag), (b.real, b.imag)])
+    ax.annotate("", xy=(b.real, b.imag), xytext=(a.real, a.imag), annotation_clip=False,
                 arrowprops=dict(arrowstyle="-|>", color=color, lw=lw, ls=ls,
-                                shrinkA=0, shrinkB=0, mutation_scale=9))
+                                shrinkA=0, shrinkB=0, mutation_scale=HEAD))
     if label and labels is not None:
         n = 1j * (b - a) / abs(b - a)
-        labels.append(Label(f"${label}$", (a + b) / 2, (n, -n),
+        labels.append(Label(f"${mpl_math(label)}$", (a + b) / 2, (n, -n),
                             {"fontsize": LABEL_SIZE, "color": color}))
     elif label:
         m = (a + b) / 2
         n = 1j * (b - a) / abs(b - a)
         ax.text((m + 0.04 * abs(b - a) * n).real, (m + 0.04 * abs(b - a) * n).imag,
                 f"${label}$", fontsize=7, color=color, ha="center", va="center")
+
+
+def _heads(ax) -> list[tuple[complex, complex]]:
+    """The arrows drawn in ``ax`` (tail, tip), whose heads a label must keep clear of."""
+    from matplotlib.text import Annotation
+
+    return [(complex(*t.xyann), complex(*t.xy)) for t in ax.texts
+            if isinstance(t, Annotation) and t.arrow_patch is not None]
 
 
 _COLORS = {"absolute": "k", "relative": "tab:blue", "normal": "tab:green",
@@ -222,6 +246,11 @@ def _extent(ax, zs, minor: float = 0.3, pad: float = 0.12) -> float:
     return span
 
 
+#: A velocity or acceleration polygon's panel: its short extent at least this fraction of
+#: the long one (room for the vertex names beside a steep sliver, slotter position 5).
+KIN_MINOR = 0.45
+
+
 def _kin_axes(ax, poly, title: str, mu_unit: str, lang: str):
     """One polygon; returns its vertex labels (coincident vertices named together) and the
     segments they must keep clear of, for :func:`.label_layout.place`."""
@@ -238,7 +267,7 @@ def _kin_axes(ax, poly, title: str, mu_unit: str, lang: str):
             if abs(b - a) > 1e-9:
                 lines.append((a, b))
     zs = list(poly.points.values()) or [0j]
-    span = _extent(ax, zs)
+    span = _extent(ax, zs, minor=KIN_MINOR)
     centre = complex(np.mean([z.real for z in zs]), np.mean([z.imag for z in zs]))
     labels: list[Label] = []
     for spot, names in _coincident(poly.points, span):
@@ -246,7 +275,10 @@ def _kin_axes(ax, poly, title: str, mu_unit: str, lang: str):
         lines.append((spot, spot))
         away = spot - centre
         prefer = (away / abs(away),) if abs(away) > 1e-9 * span else ()
-        labels.append(Label(", ".join(vertex_label(n) for n in names), spot, prefer,
+        # three or more names of one spot on two lines (a long row ran past the frame)
+        row = [vertex_label(n) for n in names]
+        text = ", ".join(row) if len(row) < 3 else (", ".join(row[:2]) + ",\n" + ", ".join(row[2:]))
+        labels.append(Label(text, spot, prefer,
                             {"fontsize": 7}))
     ax.set_title(f"{title}  μ = {_scale(poly.scale)} {mu_unit}", fontsize=8)
     ax.tick_params(labelsize=6)
@@ -269,8 +301,8 @@ def _kin_figure(path: Path, label: str, velocity, acceleration, lang: str) -> No
         l1 = _kin_axes(a1, velocity, f"{t['pos']} {label}: {t['vel']}", "(m/s)/mm", lang)
         l2 = _kin_axes(a2, acceleration, f"{t['acc']}", "(m/s²)/mm", lang)
         # labels last, clear of each other and of the polygon's vectors (issue 19)
-        place(a1, *l1)
-        place(a2, *l2)
+        place(a1, *l1, heads=_heads(a1), head_size=HEAD)
+        place(a2, *l2, heads=_heads(a2), head_size=HEAD)
 
 
 @fig.cached
@@ -321,6 +353,12 @@ def _force_figure(path: Path, points: dict, length_scale: float, fg, members: di
                 _arrow(a1, z, z + L * value / abs(value), "tab:red", label=sym(name),
                        labels=labels1)
                 lines1.append((z, z + L * value / abs(value)))
+        # room round the links and arrows for the names of the outermost points
+        ends = [z for seg in lines1 for z in seg] or [0j]
+        lo = complex(min(z.real for z in ends), min(z.imag for z in ends))
+        hi = complex(max(z.real for z in ends), max(z.imag for z in ends))
+        m = FBD_MARGIN * max(hi.real - lo.real, hi.imag - lo.imag, 1e-9)
+        a1.update_datalim([(lo.real - m, lo.imag - m), (hi.real + m, hi.imag + m)])
         a1.set_aspect("equal", adjustable="datalim")
         a1.set_title(f"{t['fbd']} ({t['links']} {', '.join(fg.links)})  "
                      f"$\\mu_l$ = {_scale(length_scale)} m/mm", fontsize=8)
@@ -347,11 +385,13 @@ def _force_figure(path: Path, points: dict, length_scale: float, fg, members: di
         labels2 = []
         for a, b, names, c in drawn:
             n = 1j * (b - a) / abs(b - a)
-            labels2.append(Label(", ".join(f"${s}$" for s in names), (a + b) / 2, (n, -n),
+            # the names of one segment stacked beside a steep one, in a row beside a flat one
+            sep = ",\n" if abs((b - a).imag) > abs((b - a).real) else ", "
+            labels2.append(Label(sep.join(f"${mpl_math(s)}$" for s in names), (a + b) / 2, (n, -n),
                                  {"fontsize": LABEL_SIZE, "color": c}))
         for name, z in fg.points.items():
             a2.plot([z.real], [z.imag], "k.", ms=2)
-        _extent(a2, zs2)
+        _extent(a2, zs2, minor=FORCE_MINOR, pad=FORCE_PAD)
         flat = _flatness(zs2)
         a2.set_title(f"{t['force']}  $\\mu_F$ = {_scale(fg.scale)} N/mm", fontsize=8)
         a2.tick_params(labelsize=6)
@@ -361,9 +401,18 @@ def _force_figure(path: Path, points: dict, length_scale: float, fg, members: di
         a2.set_xlabel("mm" + note, fontsize=6)
         a2.grid(True, lw=0.3, alpha=0.4)
         # labels last, clear of each other and of the links and vectors (issue 19)
-        place(a1, labels1, lines1)
-        place(a2, labels2, lines2)
+        place(a1, labels1, lines1, heads=_heads(a1), head_size=HEAD)
+        place(a2, labels2, lines2, heads=_heads(a2), head_size=HEAD)
 
+
+#: Margin round the free-body diagram's links and arrows (fraction of the data extent).
+FBD_MARGIN = 0.16
+
+#: The force polygon's panel: its short extent at least this fraction of the long one, and
+#: this margin round it (of the long extent) — room for the force names, which are longer
+#: than a vertex's (a tall polygon in a narrow panel pushed "F_R34, F_R43, F_R23" over the
+#: tick labels, slotter and press, issue 19 point 6).
+FORCE_MINOR, FORCE_PAD = 0.6, 0.18
 
 #: A force polygon narrower than this fraction of its length is called nearly flat in its
 #: figure (its forces almost collinear; the directions read from it are uncertain).

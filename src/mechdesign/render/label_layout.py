@@ -22,7 +22,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 #: Distances from the anchor tried in turn [pt] and the padding round a text box [pt].
-DISTANCES = (5.0, 8.0, 12.0, 17.0, 23.0, 30.0)
+DISTANCES = (5.0, 8.0, 12.0, 17.0, 23.0, 30.0, 38.0, 48.0)
 PAD = 1.5
 #: Directions tried after the preferred ones: the eight compass directions.
 COMPASS = tuple(np.exp(1j * np.pi * k / 4) for k in (0, 2, 4, 6, 1, 3, 5, 7))
@@ -77,10 +77,30 @@ def _screen_segments(ax, segments) -> list:
     return out
 
 
-def place(ax, labels: list[Label], obstacles=(), fixed=()) -> list:
+def _head_segments(ax, heads, size_px: float) -> list:
+    """The outline of each arrow head (tail, tip in data coordinates; a filled triangle of
+    ``size_px``, matplotlib's "-|>" at that mutation scale: 0.4 long, 0.2 half-wide, here
+    taken a little larger for the line width) as display segments."""
+    out = []
+    for a, b in heads:
+        (p, q) = ax.transData.transform([(a.real, a.imag), (b.real, b.imag)])
+        tip = complex(*q)
+        d = tip - complex(*p)
+        if abs(d) < 1e-9:
+            continue
+        u = d / abs(d)
+        base = tip - 0.5 * size_px * u
+        c1, c2 = base + 0.3 * size_px * 1j * u, base - 0.3 * size_px * 1j * u
+        for z0, z1 in ((tip, c1), (c1, c2), (c2, tip)):
+            out.append(((z0.real, z0.imag), (z1.real, z1.imag)))
+    return out
+
+
+def place(ax, labels: list[Label], obstacles=(), fixed=(), heads=(), head_size=9.0) -> list:
     """Draw ``labels`` in ``ax`` clear of each other and of the ``obstacles`` (segments as
-    pairs of complex data points; a point is a segment of zero length) and of the ``fixed``
-    text artists already drawn. Call it after
+    pairs of complex data points; a point is a segment of zero length), of the arrow
+    ``heads`` (tail, tip pairs of complex data points; heads of ``head_size`` pt) and of the
+    ``fixed`` text artists already drawn. Call it after
     everything else is drawn and the axes limits are set; it lays the figure out
     (tight_layout) first so that the data-to-screen scale is the final one. Returns the
     text artists."""
@@ -93,7 +113,7 @@ def place(ax, labels: list[Label], obstacles=(), fixed=()) -> list:
     ax.apply_aspect()
     renderer = _renderer(fig)
     px = fig.dpi / 72.0
-    segments = _screen_segments(ax, obstacles)
+    segments = _screen_segments(ax, obstacles) + _head_segments(ax, heads, head_size * px)
     bb = ax.get_window_extent(renderer)
     frame = (bb.x0, bb.y0, bb.x1, bb.y1)
     placed: list = [_box(t, renderer, PAD * px) for t in fixed]
