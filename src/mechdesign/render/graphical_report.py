@@ -504,7 +504,7 @@ def _forces(pos, lang: str) -> list[dict]:
             where = f"\\Sigma M_{{{m.point}}}" + ("" if m.unknown == "Mb" else f"({m.link})")
             if m.unknown == "Mb":
                 moments.append((f"{where} = M_b + ({lhs}) \\times {_scale(mu_l)}{_couple(couples)} = 0",
-                                f"M_b = {_num(m.result)}" r"\ \mathrm{N\cdot m}", None))
+                                f"M_b = {_num(m.result)}" r"\ \text{N·m}", None))
             elif not any(t.arm for t in m.terms) and not couples and m.result == 0:
                 # no known force has a moment about the point: no equation of zeros (issue 19)
                 _ = tr(lang)
@@ -521,7 +521,7 @@ def _forces(pos, lang: str) -> list[dict]:
                                 r"\ \mathrm{N}", None))
             else:
                 moments.append((f"{where} = {u} + ({lhs}) \\times {_scale(mu_l)}{_couple(couples)} = 0",
-                                f"{u} = {_num(m.result)}" r"\ \mathrm{N\cdot m}", None))
+                                f"{u} = {_num(m.result)}" r"\ \text{N·m}", None))
         closing = " + ".join(r"\vec " + sym(v.symbol) for v in fg.vectors
                              if v.kind not in ("total", "internal")) + " = 0"
         # a given force (a weight, an inertia force, the resistance) is listed with its given
