@@ -78,3 +78,16 @@ def test_speed_fluctuation_as_the_course_writes_it():
     assert fluctuation(1 / 40) == "1/40" and fluctuation(0.025) == "1/40"
     assert fluctuation(0.04) == "1/25" and fluctuation(0.05) == "1/20"
     assert fluctuation(0.15) == "0.15" and fluctuation(0.012) == "0.012"
+
+
+def test_a_rounding_residue_is_written_zero_and_a_real_difference_is_not():
+    """Issue 19 point 5: "15.0000 (Δ = 1.7 × 10⁻¹⁶)" — a difference of a few units in the
+    last place of a double (2⁻⁵² ≈ 2.2 × 10⁻¹⁶ of 1) is written 0; one a teacher could
+    measure keeps its value."""
+    from mechdesign.render.fmt import residue
+
+    ulp = 2.0 ** -52
+    assert residue(1.7e-16) == "0" and residue(-2.8e-16) == "0" and residue(0.0) == "0"
+    assert residue(ulp * 1e3, scale=1e3) == "0"      # relative to the magnitude compared
+    assert residue(1e-9) != "0" and "10" in residue(1e-9)
+    assert residue(-3e-6) != "0"
