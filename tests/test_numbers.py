@@ -91,3 +91,16 @@ def test_a_rounding_residue_is_written_zero_and_a_real_difference_is_not():
     assert residue(ulp * 1e3, scale=1e3) == "0"      # relative to the magnitude compared
     assert residue(1e-9) != "0" and "10" in residue(1e-9)
     assert residue(-3e-6) != "0"
+
+
+def test_the_summary_table_writes_a_quantity_by_its_rule():
+    """Issue 19 point 5: the summary wrote K = 1.2 as "1.2" (``{:.4g}``) while the body writes
+    "1.200"; a length 320 mm as "320" while the body writes "320.00"."""
+    from mechdesign.render.summary import _show
+
+    assert _show(1.2, 1.0, "", "time ratio K") == "1.200"
+    assert _show(0.32, 1e3, "mm", "stroke") == "320.00"
+    assert _show(16.3623, 1.0, "°", "θ") == "16.36"
+    assert _show(80, 1.0, "rpm", "crank speed") == "80.00"
+    assert _show(614.37, 1.0, "W", "mean power") == "614.4"      # no rule: 4 digits
+    assert _show(12738.2, 1.0, "N·m", "peak torque") == "12\u202f738"
