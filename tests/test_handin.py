@@ -307,12 +307,12 @@ def test_lockbeam_appendix_lists_the_stages_that_ran(reports, example_results, l
 
 def test_summary_key_numbers_of_the_shaper(reports):
     """The shaper's key numbers: θ = 180°(K − 1)/(K + 1) by hand from the brief's K = 1.2,
-    the stroke as given (320 mm)."""
+    the stroke as given (320 mm), each by its quantity's rule (0.01°, 0.01 mm; issue 19)."""
     md, _ = reports("shaper", "zh")
     text = section(md, "设计小结")
     theta = 180 * (1.2 - 1) / (1.2 + 1)
-    assert f"| 极位夹角 $\\theta$ | {theta:.4g} | ° |" in text
-    assert "| 行程 | 320 | mm |" in text
+    assert f"| 极位夹角 $\\theta$ | {theta:.2f} | ° |" in text
+    assert "| 行程 | 320.00 | mm |" in text
 
 
 @pytest.mark.e2e

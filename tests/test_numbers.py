@@ -78,3 +78,29 @@ def test_speed_fluctuation_as_the_course_writes_it():
     assert fluctuation(1 / 40) == "1/40" and fluctuation(0.025) == "1/40"
     assert fluctuation(0.04) == "1/25" and fluctuation(0.05) == "1/20"
     assert fluctuation(0.15) == "0.15" and fluctuation(0.012) == "0.012"
+
+
+def test_a_rounding_residue_is_written_zero_and_a_real_difference_is_not():
+    """Issue 19 point 5: "15.0000 (Δ = 1.7 × 10⁻¹⁶)" — a difference of a few units in the
+    last place of a double (2⁻⁵² ≈ 2.2 × 10⁻¹⁶ of 1) is written 0; one a teacher could
+    measure keeps its value."""
+    from mechdesign.render.fmt import residue
+
+    ulp = 2.0 ** -52
+    assert residue(1.7e-16) == "0" and residue(-2.8e-16) == "0" and residue(0.0) == "0"
+    assert residue(ulp * 1e3, scale=1e3) == "0"      # relative to the magnitude compared
+    assert residue(1e-9) != "0" and "10" in residue(1e-9)
+    assert residue(-3e-6) != "0"
+
+
+def test_the_summary_table_writes_a_quantity_by_its_rule():
+    """Issue 19 point 5: the summary wrote K = 1.2 as "1.2" (``{:.4g}``) while the body writes
+    "1.200"; a length 320 mm as "320" while the body writes "320.00"."""
+    from mechdesign.render.summary import _show
+
+    assert _show(1.2, 1.0, "", "time ratio K") == "1.200"
+    assert _show(0.32, 1e3, "mm", "stroke") == "320.00"
+    assert _show(16.3623, 1.0, "°", "θ") == "16.36"
+    assert _show(80, 1.0, "rpm", "crank speed") == "80.00"
+    assert _show(614.37, 1.0, "W", "mean power") == "614.4"      # no rule: 4 digits
+    assert _show(12738.2, 1.0, "N·m", "peak torque") == "12\u202f738"

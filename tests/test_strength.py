@@ -583,3 +583,19 @@ def test_shaft_bending_formula_writes_a_rounding_residue_of_the_moment_as_zero()
 
     assert "{0^2 +" in formula(7.105e-15) and "10^{-" not in formula(7.105e-15)
     assert "{36.21^2 +" in formula(36.21) or "36210" in formula(36.21)
+
+
+def test_undercut_result_is_written_without_brackets():
+    """A negative x_min follows "=", not an operator: "= -0.537", not "= (-0.537)" (issue 19
+    point 1); the closed form x_min = h_a*(z_min − z)/z_min gives the number."""
+    from mechdesign.core.strength import Check
+    from mechdesign.render.strength_tex import check_formula
+
+    z, z_min = 26.27, 17.1
+    x_min = (z_min - z) / z_min
+    c = Check(key="undercut", name="undercut", symbol="x", value=z, allowable=x_min, unit="1",
+              sense="ge", passed=True, inputs={"x": 0.0, "x_min": x_min, "ha_star": 1.0,
+                                              "z_min": z_min})
+    out = check_formula(c)
+    assert out.rstrip().endswith(f"= {x_min:.3f}"), out
+    assert f"({x_min:.3f})" not in out

@@ -79,6 +79,47 @@ def test_braces_are_never_split():
     assert break_formula(tex) == tex
 
 
+def _top_level_balanced(line: str) -> bool:
+    """Round and square brackets of a line balanced (braces aside)."""
+    line = re.sub(r"\\(left|right)[()\[\]]", "", line)
+    return line.count("(") == line.count(")") and line.count("[") == line.count("]")
+
+
+def test_operators_inside_round_brackets_are_never_break_points():
+    # the shaper's moment equation (issue 19 point 1): the only top-level operators are the
+    # "+" before and after the bracket; the bracket's own "+ ×" must stay on one line
+    inner = " + ".join(f"{100 + k} \\times {10 + k}.5" for k in range(6))
+    tex = (rf"\Sigma M_{{O3}} = 0:\ F_{{R34}} \times 74.0 + ({inner}) + 1.29 / 0.01"
+           rf" = 0 \;\Rightarrow\; F_{{R34}} = -\frac{{187590}}{{74.0}} = -2537\ \mathrm{{N}}")
+    lines = _lines(break_formula(tex))
+    assert len(lines) >= 2
+    assert all(_top_level_balanced(line) for line in lines), lines
+    joined = " ".join(line.replace("&", "") for line in lines)
+    assert re.sub(r"\s+|\\quad|\\qquad", "", joined) == re.sub(r"\s+", "", tex)
+
+
+@pytest.mark.parametrize("tex", [
+    # die_cutter: the moment equation's result alone after "⇒ M_b"
+    r"\Sigma M_{O1} = 0:\ M_b + (1225 \times 10.5) \times 0.005 = 0 \;\Rightarrow\; M_b"
+    r" = -64.3\ \mathrm{N\cdot m}",
+    # an efficiency product: the value alone after the product of the factors
+    r"\eta = \prod \eta_i \cdot \eta_b^{3} \cdot \eta_w = 0.960 \times 0.970 \times 0.970"
+    r" \times 0.990^{3} \times 1.000 = 0.8764",
+    # a root that cannot be broken: the result joins it
+    r"S = \sqrt{0.6500^2 + 0.0925^2 + 2 \times 0.6500 \times 0.0925 \sin 98.18°}"
+    r" = 0.7417\ \text{m}",
+])
+def test_a_result_is_never_alone_on_the_last_line(tex):
+    lines = _lines(break_formula(tex))
+    last = lines[-1].replace("&", "").replace(r"\quad", "").strip()
+    # at least one term before the last "= result": the last line holds two relations
+    # or is the whole formula's single line
+    rel = re.findall(r"(?<![\\a-z])=|\\Rightarrow", last)
+    assert len(lines) == 1 or len(rel) >= 2 or not last.startswith("="), lines
+    joined = " ".join(line.replace("&", "") for line in lines)
+    assert re.sub(r"\s+|\\quad", "", joined) == re.sub(r"\s+", "", tex)
+
+
 # ---- word positions in every example PDF -------------------------------------------------
 
 def _chars(page):

@@ -561,8 +561,8 @@ def _forces(pos, lang: str) -> list[dict]:
                 continue
             where = f"\\Sigma M_{{{m.point}}}" + ("" if m.unknown == "Mb" else f"({m.link})")
             if m.unknown == "Mb":
-                moments.append((f"{where} = 0:\\ M_b + ({lhs}) \\times {_scale(mu_l)}{_couple(couples)} = 0",
-                                f"M_b = {_num(m.result)}" r"\ \mathrm{N\cdot m}", None))
+                moments.append((f"{where} = M_b + ({lhs}) \\times {_scale(mu_l)}{_couple(couples)} = 0",
+                                f"M_b = {_num(m.result)}" r"\ \text{N·m}", None))
             elif not any(t.arm for t in m.terms) and not couples and m.result == 0:
                 # no known force has a moment about the point: no equation of zeros (issue 19)
                 _ = tr(lang)
@@ -574,12 +574,12 @@ def _forces(pos, lang: str) -> list[dict]:
             elif m.arm:
                 cpl = f"{_couple(couples)} / {_scale(mu_l)}" if couples else ""
                 rest = f"{_num(total)}" + (f"{_couple(couples)} / {_scale(mu_l)}" if couples else "")
-                moments.append((f"{where} = 0:\\ {u} \\times {_mm(m.arm)} + ({lhs}){cpl} = 0",
+                moments.append((f"{where} = {u} \\times {_mm(m.arm)} + ({lhs}){cpl} = 0",
                                 f"{u} = -\\frac{{{rest}}}{{{_mm(m.arm)}}} = {_num(m.result)}"
                                 r"\ \mathrm{N}", None))
             else:
-                moments.append((f"{where} = 0:\\ {u} + ({lhs}) \\times {_scale(mu_l)}{_couple(couples)} = 0",
-                                f"{u} = {_num(m.result)}" r"\ \mathrm{N\cdot m}", None))
+                moments.append((f"{where} = {u} + ({lhs}) \\times {_scale(mu_l)}{_couple(couples)} = 0",
+                                f"{u} = {_num(m.result)}" r"\ \text{N·m}", None))
         closing = " + ".join(r"\vec " + sym(v.symbol) for v in fg.vectors
                              if v.kind not in ("total", "internal")) + " = 0"
         # a given force (a weight, an inertia force, the resistance) is listed with its given

@@ -173,13 +173,19 @@ def _binary_split(tokens: list[str], budget: float) -> list[list[str]]:
     """A piece too wide for one line broken before top-level ``+ − \\times``."""
     parts: list[list[str]] = [[]]
     depth = 0
+    paren = 0       # open ( and [ : never broken inside (clamped at 0 for intervals like [0, 1))
     for k, t in enumerate(tokens):
         if t in ("{", r"\left", r"\begin"):
             depth += 1
         elif t in ("}", r"\right", r"\end"):
             depth -= 1
+        elif depth == 0 and t in ("(", "["):
+            paren += 1
+        elif depth == 0 and t in (")", "]"):
+            paren = max(0, paren - 1)
         prev = "".join(tokens[:k]).strip()
-        if depth == 0 and t in _BINARY and prev and not prev.endswith(("(", "[", "^", "_", "=")):
+        if depth == 0 and paren == 0 and t in _BINARY and prev \
+                and not prev.endswith(("(", "[", "^", "_", "=")):
             parts.append([t])
         else:
             parts[-1].append(t)
@@ -225,27 +231,28 @@ def break_formula(tex: str, budget: float = BUDGET_EM) -> str:
             if widest <= budget or widest < 0.8 * (lhs_w + sum(_width(r) for r in rels)):
                 rows.extend(left)
                 continue
-        lines: list[list[str]] = []
-        cur: list[str] = []
+        lines: list[list[list[str]]] = []       # lines of pieces
+        cur: list[list[str]] = []
         for piece in rels:
             w = _width(piece)
-            if cur and lhs_w + _width(cur) + w > budget:
+            if cur and lhs_w + _width(_flat(cur)) + w > budget:
                 lines.append(cur)
                 cur = []
             if lhs_w + w > budget and len(piece) > 1:
                 # a piece wider than a line: break it before its top-level operators
                 head, rest = piece[:1], piece[1:]
                 sub = _binary_split(rest, budget - lhs_w - _width(head) - 1.0)
-                cur += head + [" "] + sub[0]
+                cur.append(head + [" "] + sub[0])
                 for part in sub[1:]:
                     lines.append(cur)
-                    cur = [r"\quad "] + part
+                    cur = [[r"\quad "] + part]
                 continue
-            cur += piece
+            cur.append(piece)
         if cur:
             lines.append(cur)
+        _no_lone_result(lines, lhs_w, budget)
         for n, line in enumerate(lines):
-            rows.append((lhs_text + " &" if n == 0 else "&") + " " + "".join(line).strip())
+            rows.append((lhs_text + " &" if n == 0 else "&") + " " + "".join(_flat(line)).strip())
     if len(rows) < 2:
         return tex
     return "\\begin{aligned} " + " \\\\ ".join(rows) + " \\end{aligned}"
@@ -263,21 +270,75 @@ def _left_rows(lhs: list[str], rels: list[list[str]], budget: float) -> list[str
     for n, part in enumerate(parts[:-1] if len(parts) > 1 else parts):
         rows.append(("& " if n == 0 else "& \\quad ") + "".join(part).strip())
     # the left side's last line (when it was broken) takes the relations that fit after it
-    cur: list[str] = list(parts[-1]) if len(parts) > 1 else []
+    # lines of pieces, each with its indent: the relation lines may pass a piece down
+    # (see _no_lone_result), the lines of a piece broken at its operators may not
+    lines: list[list[list[str]]] = []
+    indents: list[str] = []
+    cur: list[list[str]] = [list(parts[-1])] if len(parts) > 1 else []
     for piece in rels:
-        if cur and indent + _width(cur) + _width(piece) > budget:
-            rows.append("& \\quad " + "".join(cur).strip())
+        if cur and indent + _width(_flat(cur)) + _width(piece) > budget:
+            lines.append(cur)
+            indents.append("& \\quad ")
             cur = []
         if indent + _width(piece) > budget and len(piece) > 1:
             head, rest = piece[:1], piece[1:]
             sub = _binary_split(rest, budget - indent - _width(head) - 1.0)
-            rows.append("& \\quad " + "".join(head + [" "] + sub[0]).strip())
-            rows.extend("& \\qquad " + "".join(part).strip() for part in sub[1:])
+            lines.append([head + [" "] + sub[0]])
+            indents.append("& \\quad ")
+            for part in sub[1:]:
+                lines.append([part])
+                indents.append("& \\qquad ")
             continue
-        cur += piece
+        cur.append(piece)
     if cur:
-        rows.append("& \\quad " + "".join(cur).strip())
+        lines.append(cur)
+        indents.append("& \\quad ")
+        _no_lone_result(lines, indent, budget)
+    rows.extend(ind + "".join(_flat(line)).strip() for ind, line in zip(indents, lines) if line)
     return rows
+
+
+def _flat(pieces: list[list[str]]) -> list[str]:
+    return [t for p in pieces for t in p]
+
+
+def _one_term(piece: list[str]) -> bool:
+    """A relation piece whose right side is one term: no top-level + − × · after its sign."""
+    depth, seen = 0, False
+    for t in piece[1:]:
+        if t in ("{", r"\left", r"\begin"):
+            depth += 1
+        elif t in ("}", r"\right", r"\end"):
+            depth -= 1
+        elif t.isspace() or t in _SPACES:
+            continue
+        elif depth == 0 and t in _BINARY and seen:
+            return False
+        seen = True
+    return True
+
+
+#: A bare result joins the line before it when the two stay below this share of the budget
+#: (the budget keeps ~5 em in reserve: 30 of the 35 em the PDF leaves a numbered formula).
+SLACK = 1.12
+
+
+def _no_lone_result(lines: list[list[list[str]]], lead: float, budget: float) -> None:
+    """A last line that is one short relation piece (``= 12.3 N·m``) takes
+    the last piece of the line before it, so that the result follows at least one term
+    (a teacher's rule: the result is never left alone on a line). When the line before is a
+    single piece that cannot be broken (a root, a fraction), the result joins that line if
+    both fit :data:`SLACK` × ``budget`` em after ``lead`` em (the left side or the indent)."""
+    if len(lines) < 2 or len(lines[-1]) != 1:
+        return
+    last = lines[-1][0]
+    if not last or last[0] not in _RELATIONS or not _one_term(last):
+        return
+    if len(lines[-2]) >= 2:
+        lines[-1].insert(0, lines[-2].pop())
+    elif lead + _width(_flat(lines[-2]) + last) <= SLACK * budget:
+        # the line before is one piece that cannot be broken: the result joins it
+        lines[-2].append(lines.pop()[0])
 
 
 def break_display_math(markdown: str, budget: float = BUDGET_EM) -> str:

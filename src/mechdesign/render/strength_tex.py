@@ -38,6 +38,12 @@ def num(x: float, sig: int = 4) -> str:
     return _trim(f(x, max(0, sig - 1 - k)))
 
 
+def lone(x: float, sig: int = 4) -> str:
+    """:func:`num` for a number that follows a relation (``x_{min} = -0.537``), not an
+    operator: a negative number alone needs no parentheses."""
+    return num(x, sig) if x >= 0 or not math.isfinite(x) else "-" + num(-x, sig)
+
+
 def _trim(text: str) -> str:
     return text.rstrip("0").rstrip(".") if "." in text else text
 
@@ -195,9 +201,9 @@ def _tooth_tip(c: Check) -> str:
 
 def _undercut(c: Check) -> str:
     i = c.inputs
-    return (rf"x = {num(i['x'], 3) if i['x'] else '0'} {_rel(c)} x_{{min}} = \frac{{h_a^*(z_{{min}} - z)}}{{z_{{min}}}} = "
+    return (rf"x = {lone(i['x'], 3) if i['x'] else '0'} {_rel(c)} x_{{min}} = \frac{{h_a^*(z_{{min}} - z)}}{{z_{{min}}}} = "
             rf"\frac{{{num(i['ha_star'])} \times ({num(i['z_min'])} - {num(c.value)})}}{{{num(i['z_min'])}}} = "
-            rf"{num(i['x_min'], 3) if abs(i['x_min']) > 1e-12 else '0'}")
+            rf"{lone(i['x_min'], 3) if abs(i['x_min']) > 1e-12 else '0'}")
 
 
 def _contact_ratio(c: Check) -> str:

@@ -23,7 +23,7 @@ from importlib import resources
 from pathlib import Path
 from typing import Any
 
-from .fmt import grouped, in_lang, md_text, verdict
+from .fmt import f, grouped, in_lang, length, md_text, rpm, time_ratio, verdict
 from ..i18n import N_, data_text, tr
 from .labels import pgettext, translated
 
@@ -290,7 +290,15 @@ def _find(document: Any, leaf: str) -> tuple[str, Any] | None:
     return None
 
 
-def _show(value: Any, factor: float) -> str | None:
+#: a summary row's number by the rule of its quantity (render/fmt.py), as the report's body
+#: writes it: a length to 0.01 mm, an angle to 0.01°, a speed to 0.01 rpm, K to 0.001
+_RULES = {"mm": length, "°": lambda x: f(x, 2), "rpm": rpm, "r/min": rpm}
+
+
+def _show(value: Any, factor: float, unit: str = "", label: str = "") -> str | None:
+    """``value`` × ``factor`` for the summary table: by its unit's rule (:data:`_RULES`), the
+    time-ratio coefficient K by :func:`~.fmt.time_ratio`, anything else to 4 significant
+    digits."""
     if isinstance(value, bool) or value is None:
         return None
     if isinstance(value, str):
@@ -301,6 +309,9 @@ def _show(value: Any, factor: float) -> str | None:
         return None
     if not math.isfinite(x):
         return None
+    rule = _RULES.get(unit) or (time_ratio if re.search(r"(?<![\w\\])K\b", label) else None)
+    if rule is not None and abs(x) < 1e4:
+        return rule(0.0 if abs(x) < 5e-13 else x)
     text = f"{x:.4g}" if abs(x) < 1e4 else f"{x:.0f}"
     return "0" if text in ("-0", "0") else grouped(text)
 
@@ -375,7 +386,7 @@ def key_rows(machine: str, document: dict, lang: str) -> list[list[str]]:
             continue
         label, unit, factor, value = shown
         path = row[2]
-        text = _show(value, factor)
+        text = _show(value, factor, unit or "", label)
         if text is None:
             continue
         rows.append([_label(label), text, unit or "—"])
@@ -393,13 +404,13 @@ def key_rows(machine: str, document: dict, lang: str) -> list[list[str]]:
         if leaf == "stroke":        # a rocker's stroke is its swing (rad → °)
             shown_label, shown_unit, shown_factor, _value = shown_row(
                 (label, unit, found[0], factor), lang, document)
-        text = _show(found[1], shown_factor)
+        text = _show(found[1], shown_factor, shown_unit or "", shown_label)
         if text is not None:
             rows.append([shown_label, text, shown_unit or "—"])
             paths.add(leaf)
     rows += _asked_rows(document, lang)
     for fol in document.get("followers") or ():        # the disc cam's followers
-        text = _show(fol.get("stroke"), 1e3)
+        text = _show(fol.get("stroke"), 1e3, "mm")
         if text is not None:
             label = md_text(str(fol.get("label", "")))
             rows.append([_("{label} follower stroke", label=label), text, "mm"])

@@ -10,7 +10,7 @@ import numpy as np
 from ...fileio import atomic_open
 from ...render.figures import figure
 from ...render.fmt import e as fe
-from ...render.fmt import verdict
+from ...render.fmt import residue, verdict
 from ...render.fmt import f, md_meta, md_text, mpl_text, sig, time_ratio
 from ...render.labels import LabelTable, mpl_point, subscripted
 from ...i18n import N_, Msg, tr
@@ -325,7 +325,7 @@ def _with_diff(value: str, diff: float, lang: str) -> str:
     """A simulated value to 4 decimals with its difference from the reference (the verdict
     needs |Δ| < 10⁻⁹, which 4 decimals cannot show)."""
     _ = tr(lang)
-    return _("{value} (Δ = {diff})", value=value, diff=fe(diff))
+    return _("{value} (Δ = {diff})", value=value, diff=residue(diff))
 
 
 def _verdict(ok: bool, lang: str) -> str:
@@ -465,7 +465,7 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
             vrows.append([_("{name}: {item}", name=name, item=_(item)), _with_diff(val, err, lang), ref,
                           _verdict(abs(err) < tol, lang)])
         vrows.append([_("{name}: {item}", name=name, item=_("loop-closure residual /m")),
-                      fe(s.closure), "0", _verdict(s.closure < 1e-12, lang)])
+                      residue(s.closure), "0", _verdict(s.closure < 1e-12, lang)])
     n0, n1 = ver.optimum_neighbours
     vrows.append([_("$\\gamma_{min}$(t* ∓ 0.001·arc) − $\\gamma_{min}^*$ /°"),
                   f"{fe((n0 - best.gamma_min) * DEG)}, {fe((n1 - best.gamma_min) * DEG)}", "< 0",
@@ -520,7 +520,7 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
             vrows.append([_("{name}: {item}", name=slider_name, item=_(item)),
                           _with_diff(val, err, lang), ref, _verdict(abs(err) < tol, lang)])
         vrows.append([_("{name}: {item}", name=slider_name, item=_("loop-closure residual /m")),
-                      fe(ss.closure), "0", _verdict(ss.closure < 1e-12, lang)])
+                      residue(ss.closure), "0", _verdict(ss.closure < 1e-12, lang)])
     findings = []
     for key in ("optimum", "textbook", "slider"):
         v = r.get(key)
