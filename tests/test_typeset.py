@@ -194,7 +194,13 @@ def page_fill(page) -> float:
     return (max(inside) - TOP) / (BOTTOM - TOP) if inside else 0.0
 
 
-def half_empty_pages(pdf, limit: float = 0.5) -> list[tuple[int, float]]:
+# A page mid-chapter whose content ends above this part of the text block reads as "half
+# empty" to a teacher (issue 19 point 2: the reviewers' "~60 % empty" pages furnace_drive
+# p.11, lockbeam_cam en p.8, crank_rocker zh p.11 reached 0.54–0.57 and passed 0.5).
+FILL_LIMIT = 0.6
+
+
+def half_empty_pages(pdf, limit: float = FILL_LIMIT) -> list[tuple[int, float]]:
     """(page, fill) of every page whose text and images cover less than ``limit`` of the
     text block's height where no chapter ends: not the cover, not the last page, not a
     page followed by one that starts with a level-1 heading (the PDF outline), not a sheet
@@ -405,6 +411,48 @@ def thin_last_page(pdf) -> list[tuple[int, int]]:
         return [(last, len(rows))] if len(rows) < MIN_LAST_ROWS else []
 
 
+def references_alone(pdf, limit: float = 0.2) -> list[tuple[int, float]]:
+    """(page, fill) when the report's last page holds the heading of its last chapter (the
+    references) and fills less than ``limit`` of the text block: a short list alone on the
+    last page, or with a line of the summary (issue 19 point 2: shaper_lengths, lockbeam_cam,
+    cam_7_1). templates/report.typ takes the summary's last blocks along with such a list."""
+    import pymupdf
+
+    with pymupdf.open(pdf) as doc:
+        last = len(doc)
+        page = doc[last - 1]
+        heads = [page_no for level, _, page_no in doc.get_toc() if level == 1]
+        if last < body_start(doc) or _is_sheet(page) or not heads or heads[-1] != last:
+            return []
+        fill = page_fill(page)
+        return [(last, round(fill, 2))] if fill < limit else []
+
+
+_CJK = re.compile(r"[\u4e00-\u9fff]")
+
+
+def letter_spaced_lines(pdf, limit: float = 0.15) -> list[tuple[int, float, str]]:
+    """(page, gap, line) of every text line whose Chinese characters stand apart: the median
+    gap between two neighbouring ideographs of the line more than ``limit`` of the font size
+    (set solid, they touch). Justification stretches a zh line that ends before an
+    unbreakable Latin run or formula ("蜗 杆 45 钢 表 面 淬 火 …" before "ZCuSn10P1",
+    "回 程 80°–150° …" before an inline formula): issue 19 point 2."""
+    import pymupdf
+
+    bad = []
+    with pymupdf.open(pdf) as doc:
+        for number, page in enumerate(doc, 1):
+            for block in page.get_text("rawdict")["blocks"]:
+                for line in block.get("lines", []):
+                    chars = [(ch["c"], ch["bbox"], sp["size"]) for sp in line["spans"] for ch in sp["chars"]]
+                    gaps = sorted((b[1][0] - a[1][2]) / a[2] for a, b in zip(chars, chars[1:])
+                                  if _CJK.match(a[0]) and _CJK.match(b[0]))
+                    if len(gaps) >= 4 and gaps[len(gaps) // 2] > limit:
+                        text = "".join(c for c, _, _ in chars)
+                        bad.append((number, round(gaps[len(gaps) // 2], 2), text[:40]))
+    return bad
+
+
 def figure_order(pdf) -> list[tuple[int, str]]:
     """Figures out of order or far from their text: (page, what) for every figure whose
     number is not one more than the figure before it (typst's floats keep the order), and
@@ -576,6 +624,13 @@ def display_widths(docx) -> list[tuple[float, str]]:
 
 
 BRIEFS = sorted(p.stem for p in (ROOT / "designs").glob("*.yaml"))
+# Layout defects found by the checks above and not fixed yet (issue 19 point 2): a zh line
+# spread before an inline formula the line breaker cannot break ("蜗杆 45 钢表面淬火 …" before
+# "$K = K_A × 1.1 = 1.100$", "回程 80°–150° …（峰值系数" before "$C_v = …$", "动能增量 …"),
+# and die_cutter en's drawing-sheet chapter (p.45: its five previews do not fit under its text).
+LETTER_SPACED_OPEN = {("die_cutter", "zh"), ("furnace_drive", "zh"), ("furnace_pusher", "zh"),
+                      ("press", "zh"), ("shaper", "zh"), ("slotter", "zh")}
+HALF_EMPTY_OPEN = {("die_cutter", "en")}
 
 @pytest.mark.e2e
 @pytest.mark.parametrize("lang", ["zh", "en"])
@@ -605,12 +660,19 @@ def test_every_report_stays_in_the_text_block(brief, lang, tmp_path):
     # chapter ends; "续表 N" / "Table N (continued)" atop every page a table goes on to; no
     # page ending in a lead-in ("…：" / "…:"); no chapter ending on a page of one or two
     # rows; no heading without three rows under it; figures in order, near their text
-    assert half_empty_pages(pdf) == []
+    half = half_empty_pages(pdf)
+    assert (half != []) if (brief, lang) in HALF_EMPTY_OPEN else (half == []), half
     assert continued_missing(pdf) == []
     assert colon_at_page_foot(pdf) == []
     assert short_last_pages(pdf) == []
     # the last page holds more than a few lines, or the references chapter starts on it
     assert thin_last_page(pdf) == []
+    # nor a short references list alone on it
+    assert references_alone(pdf) == []
+    # no zh line letter-spaced by justification; the reports where the defect is still open
+    # must still show it (so that the entry goes when it is fixed)
+    spaced = letter_spaced_lines(pdf)
+    assert (spaced != []) if (brief, lang) in LETTER_SPACED_OPEN else (spaced == []), spaced
     assert heading_at_page_foot(pdf) == []
     assert figure_order(pdf) == []
     # no figure above its own chapter's heading, none more than a page after its text
@@ -762,6 +824,21 @@ def test_the_last_page_never_holds_only_the_last_references(tmp_path, count, wor
         assert thin_last_page(pdf) == [], k
         assert short_last_pages(pdf) == [], k
         assert half_empty_pages(pdf) == [], k
+
+
+def test_a_short_references_list_takes_the_summarys_last_lines_along(tmp_path):
+    # three references after a summary that ends near the page foot: moved whole to the next
+    # page, they stood there alone (shaper_lengths, lockbeam_cam, cam_7_1); the summary's
+    # last lines now go with them
+    bad = []
+    for k in range(30, 40, 3):
+        md = ("# One\n\n" + "\n\n".join(_FILLER * 2 for _ in range(10)) + "\n\n# Summary {#summary}\n\n"
+              + "\n\n".join(f"Result line {j}." for j in range(k))
+              + "\n\n# References {-}\n\n" + _references(3, 8) + "\n")
+        (tmp_path / str(k)).mkdir()
+        pdf = _render(tmp_path / str(k), md)
+        bad += [(k, r) for r in references_alone(pdf) + half_empty_pages(pdf)]
+    assert bad == []
 
 
 def test_a_chapter_figure_stays_under_its_heading(tmp_path):
