@@ -104,3 +104,24 @@ def test_the_summary_table_writes_a_quantity_by_its_rule():
     assert _show(80, 1.0, "rpm", "crank speed") == "80.00"
     assert _show(614.37, 1.0, "W", "mean power") == "614.4"      # no rule: 4 digits
     assert _show(12738.2, 1.0, "N·m", "peak torque") == "12\u202f738"
+
+
+@pytest.mark.parametrize("name", ["crank_rocker", "furnace_pusher"])
+def test_simulated_checks_are_written_by_the_number_rule(example_results, name):
+    """Issue 19 point 5: the verification rows "simulated stroke … 220.0000", "simulated θ
+    15.0000" wrote four decimals where the rule writes a length to 0.01 mm, an angle to 0.01°
+    and K to 0.001 (README "Conventions"); how closely the simulation agrees is the Δ beside
+    it and the verdict, not extra digits."""
+    import re
+
+    from tests.test_report_prose import _markdown
+
+    md, _ = _markdown(example_results, name, "en")
+    rows = [line for line in md.splitlines() if line.startswith("|") and "simulated" in line]
+    assert rows
+    for row in rows:
+        cells = row.strip("|").split("|")[1:3]       # result and reference
+        for cell in cells:
+            body = re.sub(r"\(Δ[^)]*\)|\$[^$]*\$", "", cell)
+            for number in re.findall(r"\d+\.(\d+)", body):
+                assert len(number) <= 3, row

@@ -262,8 +262,7 @@ def make_figures(r: dict, fig_dir: Path, lang: str) -> dict[str, str]:
 # ------------------------------------------------------------------------------ context
 
 def _mm(x: float, d: int = 2) -> str:
-    """A length in mm by the number rule (0.01 mm); the verification table's simulated values
-    ask for 4 decimals (checked against a closed form with their difference)."""
+    """A length in mm by the number rule (0.01 mm)."""
     return f(x * MM, d)
 
 
@@ -457,11 +456,13 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
             continue
         name = md_text(_name(s.label, lang))
         for item, val, ref, err in (
-                (N_("simulated K"), f(s.K, 4), f(p.K, 4), s.K - p.K),
-                (N_("simulated θ /°"), _deg(s.theta, 4), f(th_deg, 4), s.theta - p.theta),
-                (N_("simulated ψ /°"), _deg(s.swing, 4), _deg(p.swing, 4), s.swing - p.swing),
+                # by the number rule (K 0.001, angles 0.01°); the difference Δ beside the
+                # value says how closely they agree
+                (N_("simulated K"), f(s.K, 3), f(p.K, 3), s.K - p.K),
+                (N_("simulated θ /°"), _deg(s.theta), f(th_deg, 2), s.theta - p.theta),
+                (N_("simulated ψ /°"), _deg(s.swing), _deg(p.swing), s.swing - p.swing),
                 (N_("simulated $\\gamma_{min}$ /° (ref.: closed form)"),
-                 _deg(s.gamma_min, 4), _deg(d.gamma_min, 4), s.gamma_min - d.gamma_min)):
+                 _deg(s.gamma_min), _deg(d.gamma_min), s.gamma_min - d.gamma_min)):
             vrows.append([_("{name}: {item}", name=name, item=_(item)), _with_diff(val, err, lang), ref,
                           _verdict(abs(err) < tol, lang)])
         vrows.append([_("{name}: {item}", name=name, item=_("loop-closure residual /m")),
@@ -510,13 +511,13 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
         }
         slider_name = _.pgettext("verification item", "offset slider-crank")
         for item, val, ref, err in (
-                (N_("simulated stroke H /mm"), _mm(ss.stroke, 4), f(h_mm, 4),
+                (N_("simulated stroke H /mm"), _mm(ss.stroke), f(h_mm, 2),
                  (ss.stroke - sl.stroke) / sl.stroke),
-                (N_("simulated K"), f(ss.K, 4), f(sl.K, 4), ss.K - sl.K),
+                (N_("simulated K"), f(ss.K, 3), f(sl.K, 3), ss.K - sl.K),
                 (N_("simulated slow-stroke $\\alpha_{max}$ /° (ref.: closed form)"),
-                 _deg(ss.alpha_slow, 4), _deg(sl.alpha_slow, 4), ss.alpha_slow - sl.alpha_slow),
+                 _deg(ss.alpha_slow), _deg(sl.alpha_slow), ss.alpha_slow - sl.alpha_slow),
                 (N_("simulated fast-stroke $\\alpha_{max}$ /° (ref.: closed form)"),
-                 _deg(ss.alpha_fast, 4), _deg(sl.alpha_fast, 4), ss.alpha_fast - sl.alpha_fast)):
+                 _deg(ss.alpha_fast), _deg(sl.alpha_fast), ss.alpha_fast - sl.alpha_fast)):
             vrows.append([_("{name}: {item}", name=slider_name, item=_(item)),
                           _with_diff(val, err, lang), ref, _verdict(abs(err) < tol, lang)])
         vrows.append([_("{name}: {item}", name=slider_name, item=_("loop-closure residual /m")),

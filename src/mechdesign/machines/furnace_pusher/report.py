@@ -373,15 +373,16 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
     tol = 1e-6
     verify_rows = [
         [_("simulated stroke (position search) / mm"),
-         f(chk.stroke * MM, 4), f"H = {f(H, 4 if given else 0)}", _ok(abs(chk.stroke_error) <= tol * pp.stroke, _)],
-        [_("simulated time ratio K"), f(chk.time_ratio, 4),
-         f(pp.time_ratio_K, 4 if given else 2), _ok(abs(chk.time_ratio - pp.time_ratio_K) <= tol, _)],
+         # by the number rule (0.01 mm, K 0.001, 0.01°)
+         f(chk.stroke * MM, 2), f"H = {f(H, 2 if given else 0)}", _ok(abs(chk.stroke_error) <= tol * pp.stroke, _)],
+        [_("simulated time ratio K"), f(chk.time_ratio, 3),
+         f(pp.time_ratio_K, 3 if given else 2), _ok(abs(chk.time_ratio - pp.time_ratio_K) <= tol, _)],
         [_("largest pressure angle at $E$, working stroke / °"),
-         f(chk.alpha_E_work * DEG, 4), _("≤ {lim} ({alpha_E})", lim=f(lim, 0),
-                                         alpha_E=f(syn.alpha_E * DEG, 4)), _ok(chk.alpha_E_work <= syn.alpha_limit + 1e-9, _)],
+         f(chk.alpha_E_work * DEG, 2), _("≤ {lim} ({alpha_E})", lim=f(lim, 0),
+                                         alpha_E=f(syn.alpha_E * DEG, 2)), _ok(chk.alpha_E_work <= syn.alpha_limit + 1e-9, _)],
         [_("largest pressure angle at $B$, working stroke / °"),
-         f(chk.alpha_B_work * DEG, 4),
-         (f"≤ {f(lim, 0)}" if pp.limit_rocker else "—") + f" ({f(syn.alpha_B * DEG, 4)})",
+         f(chk.alpha_B_work * DEG, 2),
+         (f"≤ {f(lim, 0)}" if pp.limit_rocker else "—") + f" ({f(syn.alpha_B * DEG, 2)})",
          _ok(chk.alpha_B_work <= syn.alpha_limit + 1e-9, _) if pp.limit_rocker else "—"],
         [_("four-bar minimum transmission angle / °"),
          f(chk.gamma_min * DEG, 4), f"≥ {f(syn.gamma_limit * DEG, 0)} ({f(syn.gamma_min * DEG, 4)})",
