@@ -108,7 +108,7 @@ local function glued_relation(t)
   return nil
 end
 
--- a quantity's symbol written as a word before its relation ("K = 1.05", "（φ = 0.0°）") is
+-- a quantity's symbol written as a word before its relation ("K = 1.05", "(φ = 0.0°)") is
 -- set as a formula, italic as in the equations (ISO 80000-1: quantity symbols italic);
 -- a letter that ends a word ("ab", "μφ", "2z") is left alone
 local GREEK = {}
@@ -150,9 +150,10 @@ local function italic_symbols(inlines)
         end
       end
     end
-    -- a lone lowercase or Greek letter between spaces ("刨头位移 s 由位置 1 起算"): a
+    -- a lone lowercase or Greek letter between spaces (the ram's displacement "s" in a
+    -- Chinese sentence): a
     -- symbol, unless it is a unit after a number or "/" ("5 s", "/ m") or the English
-    -- article "a"; capitals stay text ("A 型 V 带": belt sections), and so does a letter alone
+    -- article "a"; capitals stay text (belt sections "A", "V"), and so does a letter alone
     -- in a table cell or at a line's end (a unit column's "s", "h")
     if not done and el.t == "Str" and (el.text:match("^[b-z]$") or GREEK[el.text])
        and inlines[i - 1] ~= nil and inlines[i - 1].t == "Space"
