@@ -250,3 +250,19 @@ def test_a_lone_letter_in_a_sentence_is_a_symbol_but_not_a_unit(tmp_path):
     assert "位移 $s$ 由" in typ and "$delta$ 为" in typ and "a $b$ and" in typ
     assert "5~s 内" in typ and "A 型 V 带" in typ
     assert "[residual / m]" in typ and "[s]" in typ
+
+
+@pytest.mark.e2e
+def test_a_run_prints_no_font_lookup_noise(tmp_path):
+    """matplotlib's mathtext (the DejaVu set) looks up its STIX and Computer Modern fallback
+    families by name; where its font list lacks them it logged "findfont: Font family
+    ['STIXGeneral'] not found. Falling back to DejaVu Sans." — 42 such lines in the middle of
+    the progress display of a lock-beam run. A run's terminal output holds none."""
+    import os
+    import sys
+
+    env = {**os.environ, "MECHDESIGN_CACHE": "off"}
+    run = subprocess.run([sys.executable, "-m", "mechdesign", "run", str(ROOT / "designs" / "lockbeam.yaml"),
+                          "-f", "md", "-o", str(tmp_path / "out")], capture_output=True, text=True, env=env)
+    assert run.returncode == 0, run.stderr[-2000:]
+    assert "findfont" not in run.stdout + run.stderr

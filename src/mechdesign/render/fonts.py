@@ -160,3 +160,10 @@ def configure_matplotlib() -> None:
     # tick labels with the true minus sign (U+2212), like the text; the shipped font has it
     matplotlib.rcParams["axes.unicode_minus"] = True
     matplotlib.rcParams["mathtext.fontset"] = "dejavusans"
+    # mathtext's DejaVu set looks up its STIX and Computer Modern fallbacks by name when it
+    # is first built; where matplotlib's font list lacks them it falls back to DejaVu Sans
+    # (every glyph the figures use is there) and logged 21 "findfont: … not found" lines
+    # on the user's terminal in the middle of the progress display
+    import logging
+
+    logging.getLogger("matplotlib.font_manager").setLevel(logging.ERROR)
