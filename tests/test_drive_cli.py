@@ -44,9 +44,9 @@ def test_shaper_gear_section_matches_hand_values(tmp_path):
                                  "--format", "md"])
     assert result.exit_code == 0, result.output
     md = (tmp_path / "report.md").read_text(encoding="utf-8")
-    assert "| 分度圆直径 | $d$ | $mz$ | 216.000 | 720.000 | mm |" in md
-    assert "| 齿顶圆直径 | $d_a$ | $d+2h_a$ | 240.000 | 744.000 | mm |" in md
-    assert "468.000" in md and "| 1.657 |" in md      # ε = 1.6572 to 0.001
+    assert "| 分度圆直径 | $d$ | $mz$ | 216.00 | 720.00 | mm |" in md
+    assert "| 齿顶圆直径 | $d_a$ | $d+2h_a$ | 240.00 | 744.00 | mm |" in md
+    assert "468.00" in md and "| 1.657 |" in md      # ε = 1.6572 to 0.001
     assert (tmp_path / "figures/gear_mesh.png").stat().st_size > 10_000
     doc = json.loads((tmp_path / "results.json").read_text(encoding="utf-8"))
     mb = np.array(doc["grid"]["balancing_torque"])

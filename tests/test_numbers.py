@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import ast
 import random
+import re
 from pathlib import Path
 
 import pytest
@@ -125,3 +126,62 @@ def test_simulated_checks_are_written_by_the_number_rule(example_results, name):
             body = re.sub(r"\(Δ[^)]*\)|\$[^$]*\$", "", cell)
             for number in re.findall(r"\d+\.(\d+)", body):
                 assert len(number) <= 3, row
+
+
+def _table_rows(md: str, first: str) -> list[list[str]]:
+    """The cells of the Markdown table rows whose first cell starts with ``first``."""
+    return [[c.strip() for c in line.strip().strip("|").split("|")]
+            for line in md.splitlines() if line.startswith("|") and line[1:].strip().startswith(first)]
+
+
+def _decimals(cell: str) -> int:
+    head, dot, tail = cell.partition(".")
+    return len(tail)
+
+
+@pytest.mark.parametrize("name", ["shaper", "slotter"])
+def test_gear_table_writes_lengths_to_the_rule(example_results, name):
+    """Issue 19 point 5: the gear geometry table wrote "pitch diameter 216.000 720.000 mm" and
+    "centre distance 216.000" where the rule (README "Conventions") writes a length to
+    0.01 mm, as the gear sheet does; the tip pressure angle, an angle, to 0.01°."""
+    from tests.test_report_prose import _markdown
+
+    md, _ = _markdown(example_results, name, "en")
+    mm_rows = [r for r in (row for row in md.splitlines()) if r.startswith("|") and r.rstrip().endswith("| mm |")]
+    lengths = [c for row in mm_rows for c in row.strip().strip("|").split("|")[3:-1]
+               if re.fullmatch(r"\s*-?\d+\.\d+\s*", c) and "module" not in row]
+    assert any(c.strip() == "216.00" for c in lengths) or name != "shaper"
+    assert lengths
+    for cell in lengths:
+        assert _decimals(cell.strip()) == 2, cell
+    tip = _table_rows(md, "tip pressure angle")
+    assert tip and all(_decimals(c) == 2 for c in tip[0][3:5]), tip
+
+
+def test_shaft_table_and_amplification_table_by_the_rule(example_results):
+    """Issue 19 point 5 (die_cutter tables 27, 31, 49): powers and torques of the shaft table
+    to 4 significant digits ("3.8033 kW", "25.221 N·m" were five), φ to 0.01° ("137.706"),
+    the angular-velocity jump to 4 significant digits ("5.2360 × 45/18", "13.0900 rad/s")."""
+    from mechdesign.numbers import sig
+    from tests.test_report_prose import _markdown
+
+    md, _ = _markdown(example_results, "die_cutter", "en")
+    lines = md.splitlines()
+    head = lines.index("| Shaft | n/rpm | P/kW | T/N·m |")
+    body = lines[head + 2:]
+    body = body[:next((i for i, line in enumerate(body) if not line.startswith("|")), len(body))]
+    shafts = [[c.strip() for c in line.strip("|").split("|")] for line in body]
+    assert len(shafts) >= 3
+    for row in shafts:
+        for cell in row[2:4]:
+            value = float(cell.replace("\u202f", ""))
+            assert cell == sig(value, 4), row           # the rule's writing of its own value
+    head = next(i for i, line in enumerate(lines) if line.startswith("| Gap to the top /mm |"))
+    body = lines[head + 2:]
+    amp = body[:next((i for i, line in enumerate(body) if not line.startswith("|")), len(body))]
+    assert amp
+    for row in amp:
+        cells = [c.strip() for c in row.strip().strip("|").split("|")]
+        assert _decimals(cells[0]) <= 2 and _decimals(cells[1]) == 2 and _decimals(cells[2]) <= 2, row
+    jump = _table_rows(md, "jump of the driven speed")
+    assert jump and "5.2360" not in jump[0][2] and _decimals(jump[0][3]) <= 3, jump

@@ -267,10 +267,10 @@ def intermittent_context(g, curves, lang: str, figs: dict[str, str], level: int 
     per_rad = g.driver_speed is None
     if per_rad:
         row(N_("jump of dφ₂/dθ at engagement"), "$\\Delta(d\\varphi_2/d\\theta)$",
-            f"$z_1/z_2 = {z1}/{z2}$", f(jump.omega2, 4), "—")
+            f"$z_1/z_2 = {z1}/{z2}$", sig(jump.omega2, 4), "—")
     else:
         row(N_("jump of the driven speed at engagement"), "$\\Delta\\omega_2$",
-            f"$\\omega_1 z_1/z_2 = {f(g.driver_speed, 4)}\\times{z1}/{z2}$", f(jump.omega2, 4), "rad/s")
+            f"$\\omega_1 z_1/z_2 = {sig(g.driver_speed, 4, group=False)}\\times{z1}/{z2}$", sig(jump.omega2, 4), "rad/s")
         row(N_("jump of the pitch-line speed"), "$\\Delta v$",
             "$\\omega_1 r_1$", f(jump.pitch_speed * MM, 2), "mm/s")
         if jump.chain_speed is not None:

@@ -132,8 +132,8 @@ def drive_context(d, lang: str, figures: dict[str, str], machine_power_eq: str |
     for st in d.stages:
         stage_rows.append([str(st.index + 1), _stage_label(st, _), f(st.ratio_allocated, 3),
                            f(st.ratio, 3), f(st.efficiency, 3)])
-    shaft_rows = [[_shaft_name(s.index, len(d.shafts) - 1, _.zh), f(s.speed_rpm, 2), f(s.power / 1e3, 4),
-                   f(s.torque, 3, group=True)] for s in d.shafts]
+    shaft_rows = [[_shaft_name(s.index, len(d.shafts) - 1, _.zh), f(s.speed_rpm, 2),
+                   sig(s.power / 1e3, 4), sig(s.torque, 4)] for s in d.shafts]   # powers, torques: 4 significant digits
     reason = _(_REASONS[d.choice.reason])
     # the allocation's rules that apply to this drive's free stages (core.drive.allocate_ratios)
     free = [st for st in d.stages if not st.fixed and st.type != "coupling"]

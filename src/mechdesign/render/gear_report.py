@@ -7,7 +7,7 @@ from pathlib import Path
 import numpy as np
 
 from ..i18n import tr
-from .fmt import f, md_text, sig
+from .fmt import f, length, md_text, sig
 
 DEG = 180.0 / np.pi
 MM = 1e3
@@ -26,8 +26,10 @@ def gear_context(g, lang: str, figures: dict[str, str]) -> dict:
     _ = tr(lang)
     shifted = bool(g1.x or g2.x)
 
-    def both(a, b, digits=3):
-        return [f(a, digits), f(b, digits)]
+    def both(a, b, digits=None):
+        """The two gears' values: a length [mm] by the rule (``digits`` None: 0.01 mm, as the
+        gear sheet), any other quantity to ``digits`` decimals."""
+        return [length(a), length(b)] if digits is None else [f(a, digits), f(b, digits)]
 
     rows = [
         [_("teeth"), "$z$", "—", str(g1.z), str(g2.z), "—"],
@@ -46,19 +48,19 @@ def gear_context(g, lang: str, figures: dict[str, str]) -> dict:
         [_("tooth thickness"), "$s$", "$m(\\pi/2+2x\\tan\\alpha)$", *both(g1.s * MM, g2.s * MM), "mm"],
         [_("space width"), "$e$", "$p-s$", *both(g1.e * MM, g2.e * MM), "mm"],
         [_("tip pressure angle"), "$\\alpha_a$", "$\\arccos(d_b/d_a)$",
-         *both(g1.alpha_a * DEG, g2.alpha_a * DEG), "°"],
+         *both(g1.alpha_a * DEG, g2.alpha_a * DEG, 2), "°"],
         [_("tip thickness"), "$s_a$", "$s\\frac{r_a}{r}-2r_a(\\mathrm{inv}\\,\\alpha_a-\\mathrm{inv}\\,\\alpha)$",
          *both(g1.sa * MM, g2.sa * MM), "mm"],
     ]
     pair_rows = [
-        [_("standard centre distance"), "$a$", "$m(z_1+z_2)/2$", f(p.a * MM, 3), "mm"],
+        [_("standard centre distance"), "$a$", "$m(z_1+z_2)/2$", length(p.a * MM), "mm"],
         [_("working pressure angle"), "$\\alpha'$", "$\\mathrm{inv}\\,\\alpha' = \\frac{2(x_1+x_2)\\tan\\alpha}{z_1+z_2}+\\mathrm{inv}\\,\\alpha$",
          f(p.alpha_work * DEG, 2), "°"],        # angles to 0.01° (the sheet too)
-        [_("working centre distance"), "$a'$", "$a\\cos\\alpha/\\cos\\alpha'$", f(p.a_work * MM, 3), "mm"],
-        [_("clearance"), "$c$", "$a'-r_{a1}-r_{f2}$", f(p.clearance * MM, 3), "mm"],
+        [_("working centre distance"), "$a'$", "$a\\cos\\alpha/\\cos\\alpha'$", length(p.a_work * MM), "mm"],
+        [_("clearance"), "$c$", "$a'-r_{a1}-r_{f2}$", length(p.clearance * MM), "mm"],
         [_("ratio"), "$i_{12}$", "$z_2/z_1$", sig(p.ratio, 4), "—"],
         [_("length of action"), "$\\overline{B_1B_2}$",
-         "$\\varepsilon\\, p_b$", f(p.action_length * MM, 3), "mm"],
+         "$\\varepsilon\\, p_b$", length(p.action_length * MM), "mm"],
         [_("contact ratio"), "$\\varepsilon_\\alpha$", _("see below"), f(p.contact_ratio, 3), "—"],   # as eq. and sheet
     ]
     tw = np.tan(p.alpha_work)

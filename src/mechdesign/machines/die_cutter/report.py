@@ -13,7 +13,7 @@ import numpy as np
 
 from ...i18n import N_, tr
 from ...render import figures as fig
-from ...render.fmt import e, f, md_meta, md_text, sig, fluctuation
+from ...render.fmt import e, f, length, md_meta, md_text, sig, fluctuation
 from ...render.fmt import number, time_ratio, verdict
 from ...render.labels import pgettext, translated
 from ...render.fmt import sentences
@@ -337,12 +337,14 @@ def _amplification(r, p, _) -> dict:
     a = d.four.crank
     rows = []
     for gap, ph, u, fpt, ratio in amp.table:
-        rows.append([f(gap * MM, 3), _deg(ph, 3), f(u * MM, 4), f(fpt, 1, group=True), f(ratio, 2),
-                     f(p.cutting_force * u, 1, group=True)])
+        # gap and M/F (v_D/ω, a length) to 0.01 mm, φ to 0.01°, the torque to 4 significant
+        # digits (README "Conventions"; M/F as in the equation of M_req below)
+        rows.append([length(gap * MM), _deg(ph, 2), f(u * MM, 2), f(fpt, 1, group=True), f(ratio, 2),
+                     sig(p.cutting_force * u, 4)])
     top = "∞" if not np.isfinite(amp.top_ratio) else f(amp.top_ratio, 2)
-    rows.append([f(0.0, 3), _deg(tm.top, 3), "0" if not np.isfinite(amp.top_ratio) else
-                 f(a / amp.top_ratio * MM, 4), "∞" if not np.isfinite(amp.top_ratio) else
-                 f(amp.top_ratio / a, 1, group=True), top, f(0.0, 1)])
+    rows.append(["0", _deg(tm.top, 2), "0" if not np.isfinite(amp.top_ratio) else
+                 f(a / amp.top_ratio * MM, 2), "∞" if not np.isfinite(amp.top_ratio) else
+                 f(amp.top_ratio / a, 1, group=True), top, "0"])
     drive = r["drive"]
     motor = drive.motor
     # the motor alone: its rated torque brought to the distribution shaft
