@@ -162,21 +162,26 @@ def _line_end_trials() -> str:
     return "\n\n".join(paras) + "\n"
 
 
-def test_the_filter_joins_numbers_units_and_relations(tmp_path):
-    """The filter's rule, on pandoc's typst output: "~" (no-break) between a number and its
-    unit word, after a relation before a number, around × between numbers; ordinary words,
-    formulas and code untouched; a short inline formula with a relation boxed."""
+def _filtered(tmp_path: Path, markdown: str) -> str:
+    """``markdown`` through pandoc's typst writer with the unit filter, as render/pdf.py runs it."""
     import pypandoc
 
     from mechdesign.render.unitjoin import LUA_FILTER
 
     (tmp_path / "f.lua").write_text(LUA_FILTER, encoding="utf-8")
-    (tmp_path / "in.md").write_text(
+    (tmp_path / "in.md").write_text(markdown, encoding="utf-8")
+    return subprocess.run([pypandoc.get_pandoc_path(), "--from=markdown+tex_math_dollars",
+                           "--to=typst", "--wrap=none", f"--lua-filter={tmp_path / 'f.lua'}",
+                           str(tmp_path / "in.md")], capture_output=True, check=True).stdout.decode()
+
+
+def test_the_filter_joins_numbers_units_and_relations(tmp_path):
+    """The filter's rule, on pandoc's typst output: "~" (no-break) between a number and its
+    unit word, after a relation before a number, around × between numbers; ordinary words,
+    formulas and code untouched; a short inline formula with a relation boxed."""
+    typ = _filtered(tmp_path,
         "$\\alpha_5$ = -4.27 rad/s², 5 steps, $h = 14.9$ mm, 1.4 × 10⁻¹⁴ mm, "
-        "转速 n = 60.00 r/min，循环 2 crank，$G_6$（构件 6）= 1962 N\n\n```\nx = 5 mm\n```\n", encoding="utf-8")
-    typ = subprocess.run([pypandoc.get_pandoc_path(), "--from=markdown+tex_math_dollars",
-                          "--to=typst", "--wrap=none", f"--lua-filter={tmp_path / 'f.lua'}",
-                          str(tmp_path / "in.md")], capture_output=True, check=True).stdout.decode()
+        "转速 n = 60.00 r/min，循环 2 crank，$G_6$（构件 6）= 1962 N\n\n```\nx = 5 mm\n```\n")
     assert "$alpha_5$~=~-4.27~rad/s²" in typ      # the symbol stays with its "=" too
     assert "5 steps" in typ and "2 crank" in typ
     assert "#box($h = 14.9$);~mm" in typ
@@ -192,17 +197,9 @@ def test_min_and_max_subscripts_are_set_upright(tmp_path):
     The Markdown writes "_{min}" (italic m·i·n as TeX reads it); the filter turns it into the
     operator \\min, which the typst writer sets as the upright word "min" and Word as a
     function name. A subscript letter that is a symbol ("_{d}") and text in \\text{} stay."""
-    import pypandoc
-
-    from mechdesign.render.unitjoin import LUA_FILTER
-
-    (tmp_path / "f.lua").write_text(LUA_FILTER, encoding="utf-8")
-    (tmp_path / "in.md").write_text(
+    typ = _filtered(tmp_path,
         "$\\gamma_{min} = 40°$, $s_{max}$, $z_{min,1}$, $F_{E,max}$, $x_{dmin}$, $y_{\\text{min}}$, "
-        "$R_{d}$, $\\gamma_{minor}$\n", encoding="utf-8")
-    typ = subprocess.run([pypandoc.get_pandoc_path(), "--from=markdown+tex_math_dollars",
-                          "--to=typst", "--wrap=none", f"--lua-filter={tmp_path / 'f.lua'}",
-                          str(tmp_path / "in.md")], capture_output=True, check=True).stdout.decode()
+        "$R_{d}$, $\\gamma_{minor}$\n")
     assert "gamma_min = 40 degree" in typ          # typst's "min": an upright operator
     assert "$s_max$" in typ and "z_(min \\, 1)" in typ and "F_(E \\, max)" in typ
     assert "$R_d$" in typ and "upright(\"min\")" in typ   # \text{min} as written
@@ -215,17 +212,9 @@ def test_a_symbol_written_as_a_word_is_set_italic(tmp_path):
     a formula, italic like the same symbol in the equations (ISO 80000-1 §7.1.1: symbols for
     quantities in italic type); a letter that ends a longer word ("ab", "μφ", "2z") and a
     letter not followed by a relation ("a b") stay text."""
-    import pypandoc
-
-    from mechdesign.render.unitjoin import LUA_FILTER
-
-    (tmp_path / "f.lua").write_text(LUA_FILTER, encoding="utf-8")
-    (tmp_path / "in.md").write_text(
+    typ = _filtered(tmp_path,
         "行程速比系数 K = 1.05，（φ = 0.0°） 取键，q = 10。 μφ = 1.25, ab = 3, 2z = 4, "
-        "$x$ = 3, a b and e = 0.00 mm\n", encoding="utf-8")
-    typ = subprocess.run([pypandoc.get_pandoc_path(), "--from=markdown+tex_math_dollars",
-                          "--to=typst", "--wrap=none", f"--lua-filter={tmp_path / 'f.lua'}",
-                          str(tmp_path / "in.md")], capture_output=True, check=True).stdout.decode()
+        "$x$ = 3, a b and e = 0.00 mm\n")
     assert "系数 $K$~=~1.05" in typ and "（$phi$~=~0.0°）" in typ and "，$q$~=~10" in typ
     assert "$e$~=~0.00~mm" in typ
     assert "μφ~=~1.25" in typ and "ab~=~3" in typ and "2z~=~4" in typ
@@ -236,17 +225,9 @@ def test_a_lone_letter_in_a_sentence_is_a_symbol_but_not_a_unit(tmp_path):
     """"刨头位移 s 由位置 1 起算": the lone letter is the displacement's symbol, italic; "5 s",
     "residual / m" and a unit column's cell "| s |" are units, upright; "a" is the English
     article, capitals ("A 型 V 带") belt sections."""
-    import pypandoc
-
-    from mechdesign.render.unitjoin import LUA_FILTER
-
-    (tmp_path / "f.lua").write_text(LUA_FILTER, encoding="utf-8")
-    (tmp_path / "in.md").write_text(
+    typ = _filtered(tmp_path,
         "刨头位移 s 由位置 1 起算，时间 5 s 内，选用 A 型 V 带，a b and δ 为 x\n\n"
-        "| residual / m | time | unit |\n|--|--|--|\n| 1 | 2 | s |\n", encoding="utf-8")
-    typ = subprocess.run([pypandoc.get_pandoc_path(), "--from=markdown+tex_math_dollars",
-                          "--to=typst", "--wrap=none", f"--lua-filter={tmp_path / 'f.lua'}",
-                          str(tmp_path / "in.md")], capture_output=True, check=True).stdout.decode()
+        "| residual / m | time | unit |\n|--|--|--|\n| 1 | 2 | s |\n")
     assert "位移 $s$ 由" in typ and "$delta$ 为" in typ and "a $b$ and" in typ
     assert "5~s 内" in typ and "A 型 V 带" in typ
     assert "[residual / m]" in typ and "[s]" in typ
