@@ -1,0 +1,141 @@
+"""The die-cutter's kinematic diagram (机构运动简图, issue 19 point 8): the whole machine, not
+the toggle press alone. Read from the written DXF and checked against the brief's numbers
+(designs/die_cutter.yaml) through closed forms written out here: the chain's sprockets
+(pitch radius R_s = p / (2 sin(180°/z_s))) with the chain's straight runs tangent to both,
+the incomplete gear pair's pitch circles m z / 2 touching, its toothed sector 360° z1'/z1,
+the driven gear coaxial with the driving sprocket, and the gripper cam's actual profile
+between r0 − r_r and r0 + h − r_r (translating roller follower without offset)."""
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+import pytest
+import yaml
+
+ROOT = Path(__file__).resolve().parents[1]
+BRIEF = yaml.safe_load((ROOT / "designs" / "die_cutter.yaml").read_text(encoding="utf-8"))
+TOL = 1e-6          # paper mm: the DXF stores the model's doubles
+
+
+@pytest.fixture(scope="module")
+def dxf_sheet(example_results, tmp_path_factory):
+    """(model space of the written kinematic DXF, model mm per paper mm) of the example."""
+    import ezdxf
+
+    from mechdesign.brief.loader import load_brief
+    from mechdesign.render.sheets import _builders, write_all
+
+    brief = load_brief(ROOT / "designs" / "die_cutter.yaml")
+    out = tmp_path_factory.mktemp("dc_sheet")
+    (out / "f").mkdir()
+    builders = [b for b in _builders(example_results("die_cutter"), brief) if b[0] == "kinematic"]
+    files = write_all(builders, brief, out, out / "f", "zh", ("dxf",))
+    assert len(files) == 1 and files[0].dxf
+    left, right = (float(x) for x in files[0].scale.split(":"))
+    return ezdxf.readfile(out / files[0].dxf).modelspace(), right / left
+
+
+def _round(e, r):
+    """Circles and arcs of radius ``r``: {centre: [sweep in degrees, …]}."""
+    out: dict[complex, list[float]] = {}
+    for c in e:
+        if c.dxftype() not in ("CIRCLE", "ARC") or abs(c.dxf.radius - r) > TOL:
+            continue
+        z = complex(round(c.dxf.center.x, 6), round(c.dxf.center.y, 6))
+        sweep = 360.0 if c.dxftype() == "CIRCLE" else (c.dxf.end_angle - c.dxf.start_angle) % 360.0
+        out.setdefault(z, []).append(sweep)
+    return out
+
+
+def test_chain_sprockets_and_tangent_runs(dxf_sheet):
+    msp, n = dxf_sheet
+    p, z = BRIEF["chain"]["pitch_mm"], BRIEF["chain"]["sprocket_teeth"]
+    rs = p / (2 * np.sin(np.pi / z)) / n
+    wheels = _round(msp, rs)
+    # two sprockets, each a whole circle (the driving one behind the gears: solid + dashed arcs)
+    assert len(wheels) == 2, wheels
+    for sweeps in wheels.values():
+        assert abs(sum(sweeps) - 360.0) < 1e-6
+    a, b = wheels
+    runs = []
+    for ln in msp.query("LINE"):
+        p0 = complex(ln.dxf.start.x, ln.dxf.start.y)
+        p1 = complex(ln.dxf.end.x, ln.dxf.end.y)
+        if abs(abs(p0 - a) - rs) < 1e-6 and abs(abs(p1 - b) - rs) < 1e-6 or \
+           abs(abs(p0 - b) - rs) < 1e-6 and abs(abs(p1 - a) - rs) < 1e-6:
+            u = (p1 - p0) / abs(p1 - p0)
+            for c in (a, b):
+                # distance of each centre from the run's line = R_s: tangent to both
+                assert abs(abs((np.conj(u) * (c - p0)).imag) - rs) < 1e-6
+            runs.append((p0, p1))
+    assert len(runs) == 2
+
+
+def test_incomplete_gear_pair_touches_and_drives_the_sprocket(dxf_sheet):
+    msp, n = dxf_sheet
+    g = BRIEF["incomplete_gear"]
+    m = g["module_mm"]
+    r1, r2 = m * g["driver_teeth_full"] / 2 / n, m * g["driven_teeth"] / 2 / n
+    pitch = [e for e in msp.query("CIRCLE") if e.dxf.layer == "CENTER"]
+    drivers = [complex(e.dxf.center.x, e.dxf.center.y) for e in pitch if abs(e.dxf.radius - r1) < TOL]
+    driven = [complex(e.dxf.center.x, e.dxf.center.y) for e in pitch if abs(e.dxf.radius - r2) < TOL]
+    pairs = [(o1, o2) for o1 in drivers for o2 in driven if abs(abs(o2 - o1) - (r1 + r2)) < 1e-6]
+    assert len(pairs) == 1
+    o1, o2 = pairs[0]
+    # the driving sprocket on the driven gear's shaft
+    rs = BRIEF["chain"]["pitch_mm"] / (2 * np.sin(np.pi / BRIEF["chain"]["sprocket_teeth"])) / n
+    assert complex(round(o2.real, 6), round(o2.imag, 6)) in _round(msp, rs)
+    # the toothed sector: tip and root arcs over 360° z1'/z1, the locking arc over the rest
+    sector = 360.0 * g["teeth_present"] / g["driver_teeth_full"]
+    root = (m * g["driver_teeth_full"] / 2 - 1.25 * m) / n
+    key = complex(round(o1.real, 6), round(o1.imag, 6))
+    assert _round(msp, root)[key] == pytest.approx([sector])
+    tip = sorted(_round(msp, (m * g["driver_teeth_full"] / 2 + m) / n)[key])
+    assert tip == pytest.approx(sorted([sector, 360.0 - sector]))
+
+
+def test_gripper_cam_profile_spans_base_to_lift(dxf_sheet):
+    msp, n = dxf_sheet
+    cam = BRIEF["gripper_cam"]
+    r0, rr, h = cam["base_radius_mm"], cam["follower"]["roller_radius_mm"], cam["follower"]["stroke_h_mm"]
+    assert cam["follower"]["offset_mm"] == 0
+    pins = [complex(e.dxf.center.x, e.dxf.center.y) for e in msp.query("CIRCLE")
+            if abs(e.dxf.radius - 1.2) < TOL]
+    found = []
+    for pl in msp.query("LWPOLYLINE"):
+        pts = np.array([complex(x, y) for x, y, *_ in pl.get_points()])
+        if len(pts) < 40:
+            continue
+        for c in pins:
+            d = np.abs(pts - c) * n
+            if abs(d.min() - (r0 - rr)) < 1e-3 and abs(d.max() - (r0 + h - rr)) < 1e-3:
+                found.append(c)
+    assert len(found) == 1
+    o = found[0]
+    # the roller (radius r_r) on the vertical through the cam centre, r0 … r0 + h above it
+    rollers = [complex(e.dxf.center.x, e.dxf.center.y) for e in msp.query("CIRCLE")
+               if abs(e.dxf.radius - rr / n) < TOL]
+    above = [z for z in rollers if abs(z.real - o.real) < 1e-6 and r0 - 1e-6 <= (z.imag - o.imag) * n <= r0 + h + 1e-6]
+    assert len(above) == 1
+
+
+def test_labels_do_not_overlap(example_results):
+    """Every label of the diagram (point names, link numbers, the drive's shaft numbers,
+    ω) keeps clear of the others."""
+    from mechdesign.render.sheet import Text, TitleInfo, plain, text_box
+    from mechdesign.render.sheets import _builders
+
+    for lang in ("zh", "en"):
+        build = dict(_builders(example_results("die_cutter"), None))["kinematic"]
+        s = build(TitleInfo("机构运动简图", "test", number="T-01"), lang)
+        boxes = [text_box(e.position, e.text, e.height, e.halign, e.valign) for e in s.entities
+                 if isinstance(e, Text) and len(plain(e.text)) <= 8 and abs(e.angle) < 1e-12
+                 and e.height <= 3.5 and e.layer == "TEXT"]
+        labels = [b for b in boxes if b[2] - b[0] < 20.0]
+        names = {plain(e.text) for e in s.entities if isinstance(e, Text)}
+        # the feed's and the cam's points and links are named
+        assert {"E", "O2", "O3", "7", "8", "9", "10"} <= names
+        for i, a in enumerate(labels):
+            for b in labels[i + 1:]:
+                assert a[2] <= b[0] or b[2] <= a[0] or a[3] <= b[1] or b[3] <= a[1], (lang, a, b)
