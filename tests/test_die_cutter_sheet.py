@@ -139,3 +139,31 @@ def test_labels_do_not_overlap(example_results):
         for i, a in enumerate(labels):
             for b in labels[i + 1:]:
                 assert a[2] <= b[0] or b[2] <= a[0] or a[3] <= b[1] or b[3] <= a[1], (lang, a, b)
+
+
+@pytest.mark.parametrize("name", ["die_cutter", "slotter", "shaper"])
+def test_transmission_sheet_draws_the_flywheel(example_results, name):
+    """The flywheel of the brief (die_cutter: on shaft I, the V-belt's large pulley; slotter,
+    shaper: on the pinion shaft, the belt's large pulley's shaft) is drawn on the transmission
+    schematic as a rim concentric with that pulley, in proportion to it: rim diameter D
+    (brief) : pulley datum diameter d2; named, and its J_F in the notes."""
+    from mechdesign.render.sheet import Circle, Text, TitleInfo, plain
+    from mechdesign.render.sheets import _builders
+    from mechdesign.stages.drive import shaft_numeral
+
+    brief = yaml.safe_load((ROOT / "designs" / f"{name}.yaml").read_text(encoding="utf-8"))
+    r = example_results(name)
+    belt = r["drive"].stages[0]
+    assert belt.type == "belt"
+    ratio = brief["flywheel"]["rim_diameter_mm"] / (belt.d2 * 1e3)
+    s = dict(_builders(r, None))["transmission"](TitleInfo("传动系统示意图", "test", number="T-01"), "zh")
+    circles = [e for e in s.entities if isinstance(e, Circle) and e.layer == "OUTLINE"]
+    pairs = [(a, b) for a in circles for b in circles if a is not b and abs(a.center - b.center) < 1e-9
+             and abs(b.radius / a.radius - ratio) < 1e-9]
+    assert len(pairs) == 1
+    texts = [plain(e.text) for e in s.entities if isinstance(e, Text)]
+    assert "飞轮" in texts
+    # shaft 1: the belt's driven shaft (die_cutter: flywheel.shaft 1; the others: the pinion
+    # of their belt + gear-pair drive)
+    assert brief["flywheel"]["shaft"] in (1, "pinion") and len(r["drive"].stages) == (3 if name == "die_cutter" else 2)
+    assert any(t.startswith(f"飞轮装在轴 {shaft_numeral(1)} 上") for t in texts), texts

@@ -1112,13 +1112,36 @@ def _layout_drive(stages, r) -> tuple[list, list]:
     return centres, items
 
 
-def drive_schematic(drive, info: TitleInfo, lang: str) -> Sheet:
+def flywheel_shaft(drive, flywheel) -> int | None:
+    """Index in ``drive.shafts`` of the shaft carrying ``flywheel`` (its ``shaft``: a drive
+    shaft's index, or "pinion" — the last stage's driving shaft, as the guide-bar stage
+    counts it — or "crank", the drive's output), None when there is none or it lies
+    outside the drive."""
+    shaft = getattr(flywheel, "shaft", None)
+    n = len(getattr(drive, "stages", ()) or ())
+    if isinstance(shaft, bool) or shaft is None:
+        return None
+    if isinstance(shaft, (int, np.integer)):
+        idx = int(shaft)
+    elif shaft == "pinion":
+        idx = n - 1
+    elif shaft == "crank":
+        idx = n
+    else:
+        return None
+    return idx if 0 <= idx <= n else None
+
+
+def drive_schematic(drive, info: TitleInfo, lang: str, flywheel=None) -> Sheet:
     """The drive's transmission schematic: the shafts seen end-on (front view), a motor,
     each belt or chain as its two wheels and the belt's straight runs, each gear pair as
     tangent pitch circles (and tip circles), a worm as a rectangle tangent to its wheel on
     the worm's axis (the worm's shaft then a line, the motor beside it seen from the side);
     the shafts numbered 0 (motor), I, II, …, the stages 1, 2, … by leaders; a table of n, P,
-    T and one of the stages with their ratios, teeth and diameters."""
+    T and one of the stages with their ratios, teeth and diameters. A ``flywheel`` (the
+    flywheel stage's result) is drawn on its shaft (:func:`flywheel_shaft`) as a rim, two
+    circles larger than the shaft's wheels, named by a leader, its J_F and rim in the notes."""
+    gt = tr(lang)
     lab = LABELS[lang]
     s = Sheet(SIZE)
     area = _area(s)
@@ -1135,6 +1158,22 @@ def drive_schematic(drive, info: TitleInfo, lang: str) -> Sheet:
     centres, items = _layout_drive(stages, r)
     side_motor = bool(items) and items[0][0] in ("coupling", "worm")
     pts = list(centres)
+    fw_idx = flywheel_shaft(drive, flywheel)
+    if fw_idx is not None and side_motor and fw_idx == 0:
+        fw_idx = None                            # the motor's shaft drawn from the side
+    if fw_idx is not None:
+        # in proportion to a pulley on its shaft (rim mean diameter : datum diameter), else
+        # a little larger than the shaft's wheels
+        on_shaft = ([(stages[fw_idx - 1], r[fw_idx - 1][1], 2)] if fw_idx >= 1 else []) + \
+                   ([(stages[fw_idx], r[fw_idx][0], 1)] if fw_idx < len(r) else [])
+        rim = getattr(flywheel, "rim", None)
+        pulleys = [(rr, st.d1 if w == 1 else st.d2) for st, rr, w in on_shaft
+                   if st.type in ("belt", "chain") and st.d1 and st.d2]
+        if rim is not None and pulleys:
+            r_fw = pulleys[0][0] * rim.diameter / pulleys[0][1]
+        else:
+            r_fw = 1.3 * max([rr for _st, rr, _w in on_shaft] + [8.0])
+        pts += [centres[fw_idx] + (r_fw + 2.0) * (1 + 1j), centres[fw_idx] - (r_fw + 2.0) * (1 + 1j)]
     for kind, a, b, r1, r2, _ in items:
         if kind == "coupling":
             continue
@@ -1220,6 +1259,14 @@ def drive_schematic(drive, info: TitleInfo, lang: str) -> Sheet:
             ring(b, r2 + 0.75 / sc, 1.4)
             anchor = p + w / 2 - 0.5 * h * 1j
         placer.leader(anchor, str(j + 1), 3.5, prefer=-1 + 1j if kind != "worm" else 1 - 1j)
+    if fw_idx is not None:
+        # the flywheel: a rim (two concentric circles) on its shaft, named by a leader
+        c_fw = centres[fw_idx]
+        view.circle(c_fw, r_fw, "OUTLINE", 0.7)
+        view.circle(c_fw, r_fw - 2.0 / sc, "OUTLINE", 0.35)
+        ring(c_fw, r_fw - 1.0 / sc, 1.6)
+        placer.leader(view.p(c_fw + r_fw * np.exp(0.75j * np.pi)), gt.pgettext("kinematic sheet", "flywheel"),
+                      3.5, prefer=-1 + 1j)
     # shafts: a small circle (end view) and the shaft's number
     for idx, c0 in enumerate(centres):
         if idx == 0 and side_motor:
@@ -1245,6 +1292,12 @@ def drive_schematic(drive, info: TitleInfo, lang: str) -> Sheet:
     table(s, tx, ybot - 8.0, [12, 58, 25, 80], srows, head=[tr(lang).pgettext("kinematic sheet", "No."), lab["stage"],
                                                              lab["ratio"], lab["data"]],
           title=lab["stages"], title_height=3.5, height=3.0, row_h=6.0)
-    _notes(s, [lab["not_scale"], lab["motor"].format(m=drive.motor.designation)
-               + f"  P = {fmt.f(drive.motor.power / 1e3, 2)} kW  n = {fmt.f(drive.motor.full_load_rpm, 0)} r/min"])
+    notes = [lab["not_scale"], lab["motor"].format(m=drive.motor.designation)
+             + f"  P = {fmt.f(drive.motor.power / 1e3, 2)} kW  n = {fmt.f(drive.motor.full_load_rpm, 0)} r/min"]
+    if fw_idx is not None:
+        rim = getattr(flywheel, "rim", None)
+        notes.append(with_subscripts(gt.pgettext("kinematic sheet", "flywheel on shaft {s}: JF = {J} kg·m²"),
+                                     "J_F").format(s=shaft_numeral(fw_idx), J=fmt.sig(flywheel.inertia))
+                     + (f", D = {fmt.length(rim.diameter * MM)} mm" if rim is not None else ""))
+    _notes(s, notes)
     return s

@@ -156,7 +156,8 @@ def _diagram_builders(results: dict, found) -> list:
         out.append(("kinematic", lambda info, lang: ks.disc_diagram(disc, info, lang)))
     drive = results.get("drive")
     if drive is not None and getattr(drive, "stages", None):
-        out.append(("transmission", lambda info, lang: ks.drive_schematic(drive, info, lang)))
+        fly = found.flywheel if found is not None else None
+        out.append(("transmission", lambda info, lang: ks.drive_schematic(drive, info, lang, fly)))
     cycle = results.get("cycle")
     if cycle is not None and hasattr(cycle, "diagram"):
         def cycle_builder(info, lang):
