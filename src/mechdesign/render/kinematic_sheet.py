@@ -9,10 +9,12 @@ worm, the shafts numbered with their speed, power and torque.
 Each builder only reads results: :func:`linkage_diagram` (any linkage run through the shared
 linkage stages, at the brief's first polygon position, else position 1), :func:`lockbeam_diagram`
 (the whole lock-beam machine: feed linkage, both cams with their followers, the bending
-four-bar and chain, at φ = 0), :func:`crank_rocker_diagram` (the crank-rocker brief's
+four-bar and chain, at φ = 0), :func:`die_cutter_diagram` (the whole die-cutter: toggle press,
+gripper cam and push rod, incomplete gear pair, gripper chain, the drive from the motor as a
+schematic), :func:`crank_rocker_diagram` (the crank-rocker brief's
 optimum, at its first extreme position, and its offset slider-crank), :func:`cam_diagram`
 (a synthesised cam at δ = 0), :func:`disc_diagram` (the eccentric disc cam at δ = 0) and
-:func:`drive_schematic`.
+:func:`drive_schematic` (with the flywheel on its shaft where the design has one).
 """
 from __future__ import annotations
 
