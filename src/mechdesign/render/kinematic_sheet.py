@@ -775,10 +775,10 @@ def die_cutter_diagram(results, found, info: TitleInfo, lang: str) -> Sheet:
         for a, b in runs:
             view.line(a, b, "HIDDEN")
             placer.block_segment(view.p(a), view.p(b), 1.5)
-        for z in (o2, gd["tail"]):
-            ground(view, z, 7.0)
+        for z, size in ((o2, 5.0), (gd["tail"], 7.0)):       # O2's inside the driven gear
+            ground(view, z, size)
             pin(view, z)
-            placer.block(view.p(z) - 3.5j, 5.0)
+            placer.block(view.p(z) - 0.5j * size, 0.7 * size)
         placer.place(view.p(og), sheet_point("O1"), 3.5, prefer=-1 - 1j, gap=3.0)
         placer.place(view.p(o2), sheet_point("O2"), 3.5, prefer=1 + 1j, gap=3.0)
         placer.place(view.p(gd["tail"]), sheet_point("O3"), 3.5, prefer=1 + 1j, gap=3.0)
