@@ -617,12 +617,19 @@ def die_cutter_layout(results, found) -> dict:
     rr = cam.grid.roller_radius * MM
     o_cam = complex(x_right + DC_GAP + r_out, y0)
     top = float(np.max(np.abs(cam.grid.pitch))) * MM + rr + 35.0
+    from ..core.cam import OscillatingFollower
+    from .cam_sheet import _follower
+
+    fol = _follower(cam)
+    # an oscillating follower: its arm about the pivot at the pivot distance on +x
+    pivot = (o_cam + fol.pivot_distance * MM) if isinstance(fol, OscillatingFollower) else None
     cam_d = {"O": o_cam, "profile": prof + o_cam, "B": B + o_cam, "rr": rr,
              "stem_top": o_cam + complex(B.real, top), "guide_y": top - 13.0,
-             "sigma": cam.grid.rotation}
+             "sigma": cam.grid.rotation, "pivot": pivot, "kind": getattr(fol, "kind", "roller")}
     g = fd.gear
     r1, r2, ra1, ra2 = (x * MM for x in (g.r1, g.r2, g.ra1, g.ra2))
-    o_g = complex(o_cam.real + r_out + DC_GAP + ra1, y0)
+    cam_right = max(o_cam.real + r_out, -np.inf if pivot is None else pivot.real + 10.0)
+    o_g = complex(cam_right + DC_GAP + ra1, y0)
     o_2 = o_g + (r1 + r2)
     sigma = cam.grid.rotation                     # the driver turns with the distribution shaft
     contact = 0.0                                 # direction O1 → O2 on the sheet
@@ -633,7 +640,8 @@ def die_cutter_layout(results, found) -> dict:
     gear_d = {"O": o_g, "O2": o_2, "r1": r1, "r2": r2, "ra1": ra1, "ra2": ra2, "rf1": g.rf1 * MM,
               "rl": g.locking_radius * MM, "sector": tuple(sector), "rs": rs, "tail": tail,
               "sigma": sigma}
-    pts = list(press.pts) + list(cam_d["profile"]) + [cam_d["stem_top"], o_cam - 10j]
+    pts = list(press.pts) + list(cam_d["profile"]) + [o_cam - 10j]
+    pts += [cam_d["stem_top"]] if pivot is None else [pivot - 10j, cam_d["B"] + rr]
     pts += [o_g + ra1 * np.exp(1j * t) for t in np.linspace(0, 2 * np.pi, 13)]
     pts += [c + (rs + 4.0) * np.exp(1j * t) for c in (o_2, tail) for t in np.linspace(0, 2 * np.pi, 13)]
     return {"press": press, "cam": cam_d, "gear": gear_d, "pts": pts, "phi": phi}
@@ -720,21 +728,34 @@ def die_cutter_diagram(results, found, info: TitleInfo, lang: str) -> Sheet:
         cd = L["cam"]
         o = cd["O"]
         _cam_disc(view, placer, cd["profile"], o)
-        view.circle(cd["B"], cd["rr"], "OUTLINE")
-        pin(view, cd["B"])
-        view.line(cd["B"] + 1j * cd["rr"], cd["stem_top"], "OUTLINE")
+        if cd["kind"] == "roller" and cd["rr"] > 0:
+            view.circle(cd["B"], cd["rr"], "OUTLINE")
+            pin(view, cd["B"])
+        elif cd["kind"] == "flat" and cd["pivot"] is None:
+            view.line(cd["B"] - 12.0 / view.scale, cd["B"] + 12.0 / view.scale, "OUTLINE")
+            placer.block_segment(view.p(cd["B"] - 12.0 / view.scale), view.p(cd["B"] + 12.0 / view.scale), 1.0)
         placer.block(view.p(cd["B"]), cd["rr"] * view.scale + 0.5)
-        placer.block_segment(view.p(cd["B"]), view.p(cd["stem_top"]), 1.5)
-        yc = o.imag + cd["guide_y"]
-        for side in (-1, 1):
-            xw = cd["stem_top"].real + side * 2.5 / view.scale
-            hatched_line(view, complex(xw, yc - 7.0), complex(xw, yc + 7.0), side=(-1j if side < 0 else 1j))
-            placer.block_box((view.p(complex(xw, yc)).real - 4, view.p(complex(xw, yc - 7.0)).imag,
-                              view.p(complex(xw, yc)).real + 4, view.p(complex(xw, yc + 7.0)).imag))
+        if cd["pivot"] is not None:              # the lever about its frame pivot
+            view.line(cd["pivot"], cd["B"], "OUTLINE")
+            placer.block_segment(view.p(cd["pivot"]), view.p(cd["B"]), 1.5)
+            ground(view, cd["pivot"], 7.0)
+            pin(view, cd["pivot"])
+            placer.block(view.p(cd["pivot"]) - 3.5j, 5.0)
+            stem = (cd["pivot"] + cd["B"]) / 2
+        else:                                    # the push rod in its guide
+            view.line(cd["B"] + 1j * (cd["rr"] if cd["kind"] == "roller" else 0.0), cd["stem_top"], "OUTLINE")
+            placer.block_segment(view.p(cd["B"]), view.p(cd["stem_top"]), 1.5)
+            yc = o.imag + cd["guide_y"]
+            for side in (-1, 1):
+                xw = cd["stem_top"].real + side * 2.5 / view.scale
+                hatched_line(view, complex(xw, yc - 7.0), complex(xw, yc + 7.0), side=(-1j if side < 0 else 1j))
+                placer.block_box((view.p(complex(xw, yc)).real - 4, view.p(complex(xw, yc - 7.0)).imag,
+                                  view.p(complex(xw, yc)).real + 4, view.p(complex(xw, yc + 7.0)).imag))
+            stem = (cd["B"] + cd["stem_top"]) / 2
         _omega_arrow(s, view, o, float(np.max(np.abs(cd["profile"] - o))), cd["sigma"] > 0, placer, lab)
         placer.place(view.p(o), sheet_point("O1"), 3.5, prefer=-1 + 1j, gap=3.0)
         placer.place(view.p(cd["B"]), sheet_point("E"), 3.5, prefer=-1 + 0.3j, gap=3.0)
-        placer.place(view.p((cd["B"] + cd["stem_top"]) / 2), "7", 3.5, prefer=1, gap=3.0)
+        placer.place(view.p(stem), "7", 3.5, prefer=1 if cd["pivot"] is None else 1j, gap=3.0)
         kz = cd["profile"][len(cd["profile"]) // 2]
         placer.place(view.p(kz), "2", 3.5, prefer=kz - o, gap=2.5)
         # the incomplete gear pair: pitch circles touching (chain line), the driver's toothed
@@ -788,8 +809,11 @@ def die_cutter_diagram(results, found, info: TitleInfo, lang: str) -> Sheet:
         top_run = max(runs, key=lambda ab: ab[0].imag)
         placer.place(view.p((top_run[0] + top_run[1]) / 2), "9", 3.5, prefer=1j, gap=2.0)
         placer.place(view.p(gd["tail"] + gd["rs"] * np.exp(-0.25j * np.pi)), "10", 3.5, prefer=1 - 1j, gap=2.0)
-        legend = _.pgettext("kinematic sheet", "2 distribution shaft (crank, gripper cam and incomplete-gear "
-                            "driver on one shaft)  7 push rod (roller follower of the gripper cam)")
+        legend = (_.pgettext("kinematic sheet", "2 distribution shaft (crank, gripper cam and incomplete-gear "
+                             "driver on one shaft)  7 push rod (follower of the gripper cam)")
+                  if cd["pivot"] is None else
+                  _.pgettext("kinematic sheet", "2 distribution shaft (crank, gripper cam and incomplete-gear "
+                             "driver on one shaft)  7 lever (follower of the gripper cam)"))
         legend2 = _.pgettext("kinematic sheet", "8 driven gear with the driving sprocket  9 gripper chain  "
                              "10 tail sprocket")
         if drawing_fits(s.entities[first:], regions(s)[where]):
@@ -800,7 +824,7 @@ def die_cutter_diagram(results, found, info: TitleInfo, lang: str) -> Sheet:
     if drive is not None and getattr(drive, "stages", None):
         reg = regions(s)[where]
         x_press = max(view.p(z).real for z in press.pts) + 12.0
-        tops = [view.p(cd["stem_top"]).imag, view.p(L["gear"]["O2"]).imag + L["gear"]["rs"] * view.scale,
+        tops = [view.p(cd["stem_top"] if cd["pivot"] is None else cd["B"]).imag + cd["rr"] * view.scale, view.p(L["gear"]["O2"]).imag + L["gear"]["rs"] * view.scale,
                 view.p(L["gear"]["O"]).imag + L["gear"]["ra1"] * view.scale]
         box = (x_press, max(tops) + 12.0, reg[2], reg[3])
         if box[2] - box[0] > 60.0 and box[3] - box[1] > 40.0:
