@@ -95,7 +95,36 @@ def test_incomplete_gear_pair_touches_and_drives_the_sprocket(dxf_sheet):
     assert tip == pytest.approx(sorted([sector, 360.0 - sector]))
 
 
-def test_gripper_cam_profile_spans_base_to_lift(dxf_sheet):
+def test_incomplete_gear_sector_turned_to_position_1(dxf_sheet, example_results):
+    """At position 1 (shaft angle φ = 0 from the platen's bottom) the driver, turning
+    clockwise (press.crank_rotation: cw) from its meshing start φ_s (the feed stage's
+    placement), has turned φ − φ_s past the contact point: the toothed sector's leading end
+    lies (φ − φ_s) mod 360° clockwise from the direction O1 → O2, its trailing end
+    360° z1'/z1 behind it."""
+    msp, n = dxf_sheet
+    g = BRIEF["incomplete_gear"]
+    assert BRIEF["press"]["crank_rotation"] == "cw"
+    start = np.degrees(example_results("die_cutter")["feed"].gear.motion_start)
+    turned = (0.0 - start) % 360.0
+    sector = 360.0 * g["teeth_present"] / g["driver_teeth_full"]
+    m = g["module_mm"]
+    r1, r2 = m * g["driver_teeth_full"] / 2 / n, m * g["driven_teeth"] / 2 / n
+    pitch = [e for e in msp.query("CIRCLE") if e.dxf.layer == "CENTER"]
+    o1 = [complex(e.dxf.center.x, e.dxf.center.y) for e in pitch if abs(e.dxf.radius - r1) < TOL]
+    o2 = [complex(e.dxf.center.x, e.dxf.center.y) for e in pitch if abs(e.dxf.radius - r2) < TOL]
+    (o1, o2), = [(a, b) for a in o1 for b in o2 if abs(abs(b - a) - (r1 + r2)) < 1e-6]
+    contact = np.degrees(np.angle(o2 - o1))
+    root = (m * g["driver_teeth_full"] / 2 - 1.25 * m) / n
+    arcs = [e for e in msp.query("ARC") if abs(e.dxf.radius - root) < TOL
+            and abs(complex(e.dxf.center.x, e.dxf.center.y) - o1) < 1e-6]
+    assert len(arcs) == 1
+    lead = (contact - turned) % 360.0                 # clockwise: the angle decreases
+    trail = (lead + sector) % 360.0
+    assert (arcs[0].dxf.start_angle - lead + 180.0) % 360.0 - 180.0 == pytest.approx(0.0, abs=1e-9)
+    assert (arcs[0].dxf.end_angle - trail + 180.0) % 360.0 - 180.0 == pytest.approx(0.0, abs=1e-9)
+
+
+def test_gripper_cam_profile_spans_base_to_lift(dxf_sheet, example_results):
     msp, n = dxf_sheet
     cam = BRIEF["gripper_cam"]
     r0, rr, h = cam["base_radius_mm"], cam["follower"]["roller_radius_mm"], cam["follower"]["stroke_h_mm"]
@@ -118,6 +147,28 @@ def test_gripper_cam_profile_spans_base_to_lift(dxf_sheet):
                if abs(e.dxf.radius - rr / n) < TOL]
     above = [z for z in rollers if abs(z.real - o.real) < 1e-6 and r0 - 1e-6 <= (z.imag - o.imag) * n <= r0 + h + 1e-6]
     assert len(above) == 1
+    # at position 1 the cam has turned φ − φ_g = −φ_g (φ_g: the cycle's gripper start) into
+    # its programme: the lift there by the programme's 3-4-5 laws, above the base circle
+    phi_g = np.degrees(example_results("die_cutter")["cycle"].gripper_start)
+    delta = (0.0 - phi_g) % 360.0
+    want = r0 + _programme_lift(cam["programme"], delta, h)
+    assert (above[0].imag - o.imag) * n == pytest.approx(want, abs=1e-6 * r0)
+
+
+def _programme_lift(programme, delta: float, h: float) -> float:
+    """Lift [mm] of a rise–dwell–return–dwell programme of 3-4-5 polynomials at cam angle
+    ``delta`` [°]: s = h (10t³ − 15t⁴ + 6t⁵) on the rise, h minus that on the return."""
+    at, s = 0.0, 0.0
+    for seg in programme:
+        span = seg["angle_deg"]
+        if at <= delta < at + span:
+            t = (delta - at) / span
+            p = 10 * t ** 3 - 15 * t ** 4 + 6 * t ** 5
+            assert seg["motion"] == "dwell" or seg.get("law") == "poly345"
+            return {"rise": h * p, "return": h * (1 - p), "dwell": s}[seg["motion"]]
+        s = {"rise": h, "return": 0.0}.get(seg["motion"], s)
+        at += span
+    raise AssertionError(delta)
 
 
 def test_labels_do_not_overlap(example_results):
