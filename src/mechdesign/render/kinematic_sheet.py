@@ -647,13 +647,15 @@ def die_cutter_layout(results, found) -> dict:
     return {"press": press, "cam": cam_d, "gear": gear_d, "pts": pts, "phi": phi}
 
 
-def _drive_group(s: Sheet, box, drive, placer: LabelPlacer, caption: str, last: str) -> bool:
+def _drive_group(s: Sheet, box, drive, placer: LabelPlacer, caption: str, last: str,
+                 flywheel=None, flywheel_text: str = "") -> bool:
     """A drive's wheels (motor end-on, belts and chains as two circles with their straight
     runs, gear pairs as touching pitch circles, GB/T 4460) laid out as on the transmission
     schematic (:func:`_layout_drive`), not to scale, fitted into the paper box ``box`` under
     ``caption``; the shafts numbered 0, I, II, … and the last one also ``last`` (the shaft it
     drives in the mechanism). Drawn only when every stage is a belt, chain, gear pair or
-    coupling and the box holds it at a readable size; returns whether it was drawn."""
+    coupling and the box holds it at a readable size; returns whether it was drawn. A
+    ``flywheel`` is drawn on its shaft as on the transmission schematic."""
     stages = list(drive.stages)
     if not stages or any(st.type == "worm" for st in stages):
         return False
@@ -663,6 +665,10 @@ def _drive_group(s: Sheet, box, drive, placer: LabelPlacer, caption: str, last: 
     centres, items = _layout_drive(stages, r)
     motor_w = 24.0                                  # schematic units left of shaft 0
     pts = [centres[0] - motor_w - 14.0]
+    fw_idx = flywheel_shaft(drive, flywheel)
+    if fw_idx is not None:
+        r_fw = _flywheel_radius(stages, r, fw_idx, flywheel)
+        pts += [centres[fw_idx] + r_fw * (1 + 1j), centres[fw_idx] - r_fw * (1 + 1j)]
     for kind, a, b, r1, r2, _ in items:
         for c0, rr in ((a, r1), (b, r2)):
             pts += [c0 + rr * (1 + 1j), c0 - rr * (1 + 1j)]
@@ -701,6 +707,8 @@ def _drive_group(s: Sheet, box, drive, placer: LabelPlacer, caption: str, last: 
         for c0, rr in ((a, r1), (b, r2)):
             for t in np.linspace(0, 2 * np.pi, 36)[:-1]:
                 placer.block(view.p(c0 + rr * np.exp(1j * t)), 1.0)
+    if fw_idx is not None:
+        _flywheel_rim(view, placer, centres[fw_idx], r_fw, flywheel_text)
     for idx, c0 in enumerate(centres):
         if idx > 0 and stages[idx - 1].type == "coupling":
             continue
@@ -830,7 +838,7 @@ def die_cutter_diagram(results, found, info: TitleInfo, lang: str) -> Sheet:
         if box[2] - box[0] > 60.0 and box[3] - box[1] > 40.0:
             _drive_group(s, box, drive, placer,
                          _.pgettext("kinematic sheet", "Drive from the motor (schematic, not to scale)"),
-                         sheet_point("O1"))
+                         sheet_point("O1"), found.flywheel, _.pgettext("kinematic sheet", "flywheel"))
     press_legend = press.legend([x for x in numbered if x != "2"], lang)
     note = _.pgettext("kinematic sheet", "each group to μL; not given, so schematic: the groups' placing, "
                       "the gear pair's centre line, the chain's centre distance")
@@ -1158,6 +1166,29 @@ def flywheel_shaft(drive, flywheel) -> int | None:
     return idx if 0 <= idx <= n else None
 
 
+def _flywheel_radius(stages, r, idx: int, flywheel) -> float:
+    """The flywheel's rim radius on a schematic whose wheels have the radii ``r`` (per stage,
+    driving and driven): in proportion to a pulley on its shaft ``idx`` (rim mean diameter :
+    datum diameter), else a little larger than the shaft's wheels."""
+    on_shaft = ([(stages[idx - 1], r[idx - 1][1], 2)] if idx >= 1 else []) + \
+               ([(stages[idx], r[idx][0], 1)] if idx < len(r) else [])
+    rim = getattr(flywheel, "rim", None)
+    pulleys = [(rr, st.d1 if w == 1 else st.d2) for st, rr, w in on_shaft
+               if st.type in ("belt", "chain") and st.d1 and st.d2]
+    if rim is not None and pulleys:
+        return pulleys[0][0] * rim.diameter / pulleys[0][1]
+    return 1.3 * max([rr for _st, rr, _w in on_shaft] + [8.0])
+
+
+def _flywheel_rim(view, placer: LabelPlacer, c, radius: float, text: str) -> None:
+    """A flywheel seen end-on: its rim as two concentric circles, named by a leader."""
+    view.circle(c, radius, "OUTLINE", 0.7)
+    view.circle(c, radius - 2.0 / view.scale, "OUTLINE", 0.35)
+    for t in np.linspace(0, 2 * np.pi, 48)[:-1]:
+        placer.block(view.p(c + (radius - 1.0 / view.scale) * np.exp(1j * t)), 1.6)
+    placer.leader(view.p(c + radius * np.exp(0.75j * np.pi)), text, 3.5, prefer=-1 + 1j)
+
+
 def drive_schematic(drive, info: TitleInfo, lang: str, flywheel=None) -> Sheet:
     """The drive's transmission schematic: the shafts seen end-on (front view), a motor,
     each belt or chain as its two wheels and the belt's straight runs, each gear pair as
@@ -1188,17 +1219,7 @@ def drive_schematic(drive, info: TitleInfo, lang: str, flywheel=None) -> Sheet:
     if fw_idx is not None and side_motor and fw_idx == 0:
         fw_idx = None                            # the motor's shaft drawn from the side
     if fw_idx is not None:
-        # in proportion to a pulley on its shaft (rim mean diameter : datum diameter), else
-        # a little larger than the shaft's wheels
-        on_shaft = ([(stages[fw_idx - 1], r[fw_idx - 1][1], 2)] if fw_idx >= 1 else []) + \
-                   ([(stages[fw_idx], r[fw_idx][0], 1)] if fw_idx < len(r) else [])
-        rim = getattr(flywheel, "rim", None)
-        pulleys = [(rr, st.d1 if w == 1 else st.d2) for st, rr, w in on_shaft
-                   if st.type in ("belt", "chain") and st.d1 and st.d2]
-        if rim is not None and pulleys:
-            r_fw = pulleys[0][0] * rim.diameter / pulleys[0][1]
-        else:
-            r_fw = 1.3 * max([rr for _st, rr, _w in on_shaft] + [8.0])
+        r_fw = _flywheel_radius(stages, r, fw_idx, flywheel)
         pts += [centres[fw_idx] + (r_fw + 2.0) * (1 + 1j), centres[fw_idx] - (r_fw + 2.0) * (1 + 1j)]
     for kind, a, b, r1, r2, _ in items:
         if kind == "coupling":
@@ -1287,12 +1308,7 @@ def drive_schematic(drive, info: TitleInfo, lang: str, flywheel=None) -> Sheet:
         placer.leader(anchor, str(j + 1), 3.5, prefer=-1 + 1j if kind != "worm" else 1 - 1j)
     if fw_idx is not None:
         # the flywheel: a rim (two concentric circles) on its shaft, named by a leader
-        c_fw = centres[fw_idx]
-        view.circle(c_fw, r_fw, "OUTLINE", 0.7)
-        view.circle(c_fw, r_fw - 2.0 / sc, "OUTLINE", 0.35)
-        ring(c_fw, r_fw - 1.0 / sc, 1.6)
-        placer.leader(view.p(c_fw + r_fw * np.exp(0.75j * np.pi)), gt.pgettext("kinematic sheet", "flywheel"),
-                      3.5, prefer=-1 + 1j)
+        _flywheel_rim(view, placer, centres[fw_idx], r_fw, gt.pgettext("kinematic sheet", "flywheel"))
     # shafts: a small circle (end view) and the shaft's number
     for idx, c0 in enumerate(centres):
         if idx == 0 and side_motor:
