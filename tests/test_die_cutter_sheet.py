@@ -187,6 +187,10 @@ def test_labels_do_not_overlap(example_results):
         names = {plain(e.text) for e in s.entities if isinstance(e, Text)}
         # the feed's and the cam's points and links are named
         assert {"E", "O2", "O3", "7", "8", "9", "10"} <= names
+        # the drive from the motor: the motor, its last shaft named as the distribution shaft
+        # O1, the flywheel (the brief's flywheel.shaft) named
+        assert "M" in names and any(t.endswith("(O1)") for t in names), names
+        assert ("飞轮" if lang == "zh" else "flywheel") in names
         for i, a in enumerate(labels):
             for b in labels[i + 1:]:
                 assert a[2] <= b[0] or b[2] <= a[0] or a[3] <= b[1] or b[3] <= a[1], (lang, a, b)
