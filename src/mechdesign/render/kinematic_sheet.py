@@ -9,10 +9,12 @@ worm, the shafts numbered with their speed, power and torque.
 Each builder only reads results: :func:`linkage_diagram` (any linkage run through the shared
 linkage stages, at the brief's first polygon position, else position 1), :func:`lockbeam_diagram`
 (the whole lock-beam machine: feed linkage, both cams with their followers, the bending
-four-bar and chain, at φ = 0), :func:`crank_rocker_diagram` (the crank-rocker brief's
+four-bar and chain, at φ = 0), :func:`die_cutter_diagram` (the whole die-cutter: toggle press,
+gripper cam and push rod, incomplete gear pair, gripper chain, the drive from the motor as a
+schematic), :func:`crank_rocker_diagram` (the crank-rocker brief's
 optimum, at its first extreme position, and its offset slider-crank), :func:`cam_diagram`
 (a synthesised cam at δ = 0), :func:`disc_diagram` (the eccentric disc cam at δ = 0) and
-:func:`drive_schematic`.
+:func:`drive_schematic` (with the flywheel on its shaft where the design has one).
 """
 from __future__ import annotations
 
@@ -583,6 +585,268 @@ def lockbeam_diagram(results, found, info: TitleInfo, lang: str) -> Sheet:
     return s
 
 
+# ------------------------------------------------------------------ the die-cutter
+
+DC_GAP = 60.0            # model mm between the groups
+DC_CHAIN_CENTRES = 2.0   # schematic chain centre distance, in sprocket pitch diameters
+
+
+def die_cutter_layout(results, found) -> dict:
+    """The die-cutter at the linkage's drawn position (shaft angle φ from position 1) in
+    model millimetres: three groups on the distribution shaft's horizontal through O1, each
+    drawn to scale in itself — the toggle press (:class:`_LinkageDrawing`), the gripper cam
+    with its translating roller follower (the push rod) at δ = φ − φ_g (φ_g: the cycle's
+    gripper start), and the incomplete gear pair (driver: the toothed sector on the tip
+    circle, turned to φ from its meshing start, and the locking arc R_L on the rest; driven
+    wheel right of it, its pitch circle touching the driver's) whose driven shaft carries
+    the chain's driving sprocket (pitch radius R_s, behind the gear pair), the chain's tail
+    sprocket right of it. What the results do not give is schematic: where the groups sit
+    relative to each other, the direction of the gear pair's centre line (horizontal) and
+    the chain's centre distance
+    (:data:`DC_CHAIN_CENTRES` × 2R_s). Returns ``{"press", "cam", "gear", "pts", "phi"}``."""
+    press = _LinkageDrawing(found, diagram_position(found, results.get("brief")))
+    k = found.motion
+    phi = float(np.asarray(k.phase)[press.n_grid + press.i])
+    y0 = press.piv.imag
+    x_right = max(z.real for z in press.pts)
+    cam, fd = results["cam"], results["feed"]
+    cyc = results.get("cycle")
+    g_start = float(getattr(cyc, "gripper_start", 0.0) or 0.0)
+    prof, B, _ = cam_state(cam, phi - g_start)
+    r_out = float(np.max(np.abs(prof)))
+    rr = cam.grid.roller_radius * MM
+    o_cam = complex(x_right + DC_GAP + r_out, y0)
+    top = float(np.max(np.abs(cam.grid.pitch))) * MM + rr + 35.0
+    from ..core.cam import OscillatingFollower
+    from .cam_sheet import _follower
+
+    fol = _follower(cam)
+    # an oscillating follower: its arm about the pivot at the pivot distance on +x
+    pivot = (o_cam + fol.pivot_distance * MM) if isinstance(fol, OscillatingFollower) else None
+    cam_d = {"O": o_cam, "profile": prof + o_cam, "B": B + o_cam, "rr": rr,
+             "stem_top": o_cam + complex(B.real, top), "guide_y": top - 13.0,
+             "sigma": cam.grid.rotation, "pivot": pivot, "kind": getattr(fol, "kind", "roller")}
+    g = fd.gear
+    r1, r2, ra1, ra2 = (x * MM for x in (g.r1, g.r2, g.ra1, g.ra2))
+    cam_right = max(o_cam.real + r_out, -np.inf if pivot is None else pivot.real + 10.0)
+    o_g = complex(cam_right + DC_GAP + ra1, y0)
+    o_2 = o_g + (r1 + r2)
+    sigma = cam.grid.rotation                     # the driver turns with the distribution shaft
+    contact = 0.0                                 # direction O1 → O2 on the sheet
+    lead = contact + sigma * (phi - g.motion_start)
+    sector = sorted((lead, lead - sigma * g.motion_angle))
+    rs = fd.sprocket_radius * MM
+    tail = o_2 + DC_CHAIN_CENTRES * 2 * rs
+    gear_d = {"O": o_g, "O2": o_2, "r1": r1, "r2": r2, "ra1": ra1, "ra2": ra2, "rf1": g.rf1 * MM,
+              "rl": g.locking_radius * MM, "sector": tuple(sector), "rs": rs, "tail": tail,
+              "sigma": sigma}
+    pts = list(press.pts) + list(cam_d["profile"]) + [o_cam - 10j]
+    pts += [cam_d["stem_top"]] if pivot is None else [pivot - 10j, cam_d["B"] + rr]
+    pts += [o_g + ra1 * np.exp(1j * t) for t in np.linspace(0, 2 * np.pi, 13)]
+    pts += [c + (rs + 4.0) * np.exp(1j * t) for c in (o_2, tail) for t in np.linspace(0, 2 * np.pi, 13)]
+    return {"press": press, "cam": cam_d, "gear": gear_d, "pts": pts, "phi": phi}
+
+
+def _drive_group(s: Sheet, box, drive, placer: LabelPlacer, caption: str, last: str,
+                 flywheel=None, flywheel_text: str = "") -> bool:
+    """A drive's wheels (motor end-on, belts and chains as two circles with their straight
+    runs, gear pairs as touching pitch circles, GB/T 4460) laid out as on the transmission
+    schematic (:func:`_layout_drive`), not to scale, fitted into the paper box ``box`` under
+    ``caption``; the shafts numbered 0, I, II, … and the last one also ``last`` (the shaft it
+    drives in the mechanism). Drawn only when every stage is a belt, chain, gear pair or
+    coupling and the box holds it at a readable size; returns whether it was drawn. A
+    ``flywheel`` is drawn on its shaft as on the transmission schematic."""
+    stages = list(drive.stages)
+    if not stages or any(st.type == "worm" for st in stages):
+        return False
+    r = [(_schematic_radius(st, 1), _schematic_radius(st, 2)) for st in stages]
+    biggest = max([max(a, b) for a, b in r] + [1.0])
+    r = [(max(a * 34.0 / biggest, 6.0), max(b * 34.0 / biggest, 8.0)) for a, b in r]
+    centres, items = _layout_drive(stages, r)
+    motor_w = 24.0                                  # schematic units left of shaft 0
+    pts = [centres[0] - motor_w - 14.0]
+    fw_idx = flywheel_shaft(drive, flywheel)
+    if fw_idx is not None:
+        r_fw = _flywheel_radius(stages, r, fw_idx, flywheel)
+        pts += [centres[fw_idx] + r_fw * (1 + 1j), centres[fw_idx] - r_fw * (1 + 1j)]
+    for kind, a, b, r1, r2, _ in items:
+        for c0, rr in ((a, r1), (b, r2)):
+            pts += [c0 + rr * (1 + 1j), c0 - rr * (1 + 1j)]
+    pts = np.array(pts + list(centres))
+    lo = complex(pts.real.min(), pts.imag.min())
+    hi = complex(pts.real.max(), pts.imag.max())
+    bx0, by0, bx1, by1 = box
+    head = 8.0                                      # the caption's strip at the top
+    sc = min((bx1 - bx0 - 8.0) / max(hi.real - lo.real, 1.0),
+             (by1 - by0 - head - 10.0) / max(hi.imag - lo.imag, 1.0), 1.0)
+    if sc < 0.45:
+        return False
+    view = s.view(complex((bx0 + bx1) / 2, (by0 + by1 - head) / 2) - sc * (lo + hi) / 2, sc)
+    placer.text(complex((bx0 + bx1) / 2, by1 - 1.0), caption, fit_height(caption, bx1 - bx0, 3.5),
+                "center", "top")
+    p0 = view.p(centres[0])
+    half = 6.0                                      # the motor's square [paper mm]
+    m = p0 - motor_w * sc - half
+    s.polyline([m - half - half * 1j, m + half - half * 1j, m + half + half * 1j, m - half + half * 1j],
+               "OUTLINE", closed=True, weight=0.5)
+    s.text(m, "M", 4.0, "TEXT", "center", "middle")
+    s.line(m + half, p0, "OUTLINE", 0.35)
+    placer.block_box((m.real - half - 1, m.imag - half - 1, p0.real, m.imag + half + 1))
+    for kind, a, b, r1, r2, j in items:
+        if kind == "coupling":
+            continue
+        if kind == "belt":
+            view.circle(a, r1, "OUTLINE", 0.5)
+            view.circle(b, r2, "OUTLINE", 0.5)
+            for u0, u1 in _tangent_runs(a, r1, b, r2):
+                view.line(u0, u1, "OUTLINE" if stages[j].type == "belt" else "HIDDEN", 0.35)
+                placer.block_segment(view.p(u0), view.p(u1), 1.5)
+        else:
+            for c0, rr in ((a, r1), (b, r2)):
+                view.circle(c0, rr, "OUTLINE", 0.5)
+        for c0, rr in ((a, r1), (b, r2)):
+            for t in np.linspace(0, 2 * np.pi, 36)[:-1]:
+                placer.block(view.p(c0 + rr * np.exp(1j * t)), 1.0)
+    if fw_idx is not None:
+        _flywheel_rim(view, placer, centres[fw_idx], r_fw, flywheel_text)
+    for idx, c0 in enumerate(centres):
+        if idx > 0 and stages[idx - 1].type == "coupling":
+            continue
+        p = view.p(c0)
+        s.circle(p, 1.2, "OUTLINE", 0.35)
+        placer.block(p, 1.8)
+        name = shaft_numeral(idx) + (f" ({last})" if idx == len(centres) - 1 else "")
+        placer.place_best(p, name, 3.0, prefer=1 + 1j, gaps=(1.5, 3.0, 5.0))
+    return True
+
+
+def die_cutter_diagram(results, found, info: TitleInfo, lang: str) -> Sheet:
+    """The die-cutter (see :func:`die_cutter_layout`) on one A3 sheet at one length scale:
+    the toggle press, the gripper cam with its push rod, the incomplete gear pair and the
+    gripper chain on its two sprockets; the distribution shaft's link (crank, cam and the
+    incomplete gear's driver, keyed to one shaft) is link 2, named O1 under each group."""
+    lab = LABELS[lang]
+    L = die_cutter_layout(results, found)
+    _ = tr(lang)
+    press = L["press"]
+    for s, view, n, where in _tries(np.array(L["pts"])):
+        area, placer, first = _begin(s, info, n, f"{lab['diagram']}  {lab['position'].format(p=press.label)}")
+        numbered = press.draw(s, view, placer, lab)
+        # the gripper cam: profile, centre, translating roller follower (push rod) in its guide
+        cd = L["cam"]
+        o = cd["O"]
+        _cam_disc(view, placer, cd["profile"], o)
+        if cd["kind"] == "roller" and cd["rr"] > 0:
+            view.circle(cd["B"], cd["rr"], "OUTLINE")
+            pin(view, cd["B"])
+        elif cd["kind"] == "flat" and cd["pivot"] is None:
+            view.line(cd["B"] - 12.0 / view.scale, cd["B"] + 12.0 / view.scale, "OUTLINE")
+            placer.block_segment(view.p(cd["B"] - 12.0 / view.scale), view.p(cd["B"] + 12.0 / view.scale), 1.0)
+        placer.block(view.p(cd["B"]), cd["rr"] * view.scale + 0.5)
+        if cd["pivot"] is not None:              # the lever about its frame pivot
+            view.line(cd["pivot"], cd["B"], "OUTLINE")
+            placer.block_segment(view.p(cd["pivot"]), view.p(cd["B"]), 1.5)
+            ground(view, cd["pivot"], 7.0)
+            pin(view, cd["pivot"])
+            placer.block(view.p(cd["pivot"]) - 3.5j, 5.0)
+            stem = (cd["pivot"] + cd["B"]) / 2
+        else:                                    # the push rod in its guide
+            view.line(cd["B"] + 1j * (cd["rr"] if cd["kind"] == "roller" else 0.0), cd["stem_top"], "OUTLINE")
+            placer.block_segment(view.p(cd["B"]), view.p(cd["stem_top"]), 1.5)
+            yc = o.imag + cd["guide_y"]
+            for side in (-1, 1):
+                xw = cd["stem_top"].real + side * 2.5 / view.scale
+                hatched_line(view, complex(xw, yc - 7.0), complex(xw, yc + 7.0), side=(-1j if side < 0 else 1j))
+                placer.block_box((view.p(complex(xw, yc)).real - 4, view.p(complex(xw, yc - 7.0)).imag,
+                                  view.p(complex(xw, yc)).real + 4, view.p(complex(xw, yc + 7.0)).imag))
+            stem = (cd["B"] + cd["stem_top"]) / 2
+        _omega_arrow(s, view, o, float(np.max(np.abs(cd["profile"] - o))), cd["sigma"] > 0, placer, lab)
+        placer.place(view.p(o), sheet_point("O1"), 3.5, prefer=-1 + 1j, gap=3.0)
+        placer.place(view.p(cd["B"]), sheet_point("E"), 3.5, prefer=-1 + 0.3j, gap=3.0)
+        placer.place(view.p(stem), "7", 3.5, prefer=1 if cd["pivot"] is None else 1j, gap=3.0)
+        kz = cd["profile"][len(cd["profile"]) // 2]
+        placer.place(view.p(kz), "2", 3.5, prefer=kz - o, gap=2.5)
+        # the incomplete gear pair: pitch circles touching (chain line), the driver's toothed
+        # sector on its tip circle, its locking arc, the driven wheel's tip circle
+        gd = L["gear"]
+        og, o2 = gd["O"], gd["O2"]
+        view.circle(og, gd["r1"], "CENTER")
+        view.circle(o2, gd["r2"], "CENTER")
+        a0, a1 = gd["sector"]
+        view.arc(og, gd["ra1"], a0, a1, "OUTLINE")
+        view.arc(og, gd["rf1"], a0, a1, "CONSTRUCTION")
+        view.arc(og, gd["rl"], a1, a0 + 2 * np.pi, "OUTLINE")
+        for a in (a0, a1):
+            view.line(og + gd["rf1"] * np.exp(1j * a), og + max(gd["ra1"], gd["rl"]) * np.exp(1j * a),
+                      "OUTLINE")
+        view.circle(o2, gd["ra2"], "OUTLINE")
+        for c0, rr in ((og, gd["ra1"]), (o2, gd["ra2"]), (o2, gd["rs"]), (gd["tail"], gd["rs"])):
+            for t in np.linspace(0, 2 * np.pi, 48)[:-1]:
+                placer.block(view.p(c0 + rr * np.exp(1j * t)), 0.8)
+        ground(view, og, 7.0)
+        pin(view, og)
+        placer.block(view.p(og) - 3.5j, 5.0)
+        _omega_arrow(s, view, og, gd["ra1"], gd["sigma"] > 0, placer, lab)
+        # the chain: the driving sprocket on the driven wheel's shaft behind the gear pair
+        # (its arc inside the driver's outline dashed), the tail sprocket
+        d = abs(o2 - og)
+        r_front = max(gd["ra1"], gd["rl"])
+        cos_b = (gd["rs"] ** 2 + d ** 2 - r_front ** 2) / (2 * gd["rs"] * d)
+        if abs(cos_b) < 1.0:
+            beta = float(np.arccos(cos_b))
+            toward = float(np.angle(og - o2))
+            view.arc(o2, gd["rs"], toward + beta, toward - beta + 2 * np.pi, "OUTLINE")
+            view.arc(o2, gd["rs"], toward - beta, toward + beta, "HIDDEN")
+        else:
+            view.circle(o2, gd["rs"], "OUTLINE")
+        view.circle(gd["tail"], gd["rs"], "OUTLINE")
+        runs = _tangent_runs(o2, gd["rs"], gd["tail"], gd["rs"])
+        for a, b in runs:
+            view.line(a, b, "HIDDEN")
+            placer.block_segment(view.p(a), view.p(b), 1.5)
+        for z, size in ((o2, 5.0), (gd["tail"], 7.0)):       # O2's inside the driven gear
+            ground(view, z, size)
+            pin(view, z)
+            placer.block(view.p(z) - 0.5j * size, 0.7 * size)
+        placer.place(view.p(og), sheet_point("O1"), 3.5, prefer=-1 - 1j, gap=3.0)
+        placer.place(view.p(o2), sheet_point("O2"), 3.5, prefer=1 + 1j, gap=3.0)
+        placer.place(view.p(gd["tail"]), sheet_point("O3"), 3.5, prefer=1 + 1j, gap=3.0)
+        mid = a1 + np.pi - (a1 - a0) / 2                # middle of the locking arc
+        placer.place(view.p(og + gd["rl"] * np.exp(1j * mid)), "2", 3.5, prefer=-np.exp(1j * mid), gap=2.0)
+        placer.place(view.p(o2 + gd["rs"] * np.exp(0.6j * np.pi)), "8", 3.5, prefer=1j, gap=2.0)
+        top_run = max(runs, key=lambda ab: ab[0].imag)
+        placer.place(view.p((top_run[0] + top_run[1]) / 2), "9", 3.5, prefer=1j, gap=2.0)
+        placer.place(view.p(gd["tail"] + gd["rs"] * np.exp(-0.25j * np.pi)), "10", 3.5, prefer=1 - 1j, gap=2.0)
+        legend = (_.pgettext("kinematic sheet", "2 distribution shaft (crank, gripper cam and incomplete-gear "
+                             "driver on one shaft)  7 push rod (follower of the gripper cam)")
+                  if cd["pivot"] is None else
+                  _.pgettext("kinematic sheet", "2 distribution shaft (crank, gripper cam and incomplete-gear "
+                             "driver on one shaft)  7 lever (follower of the gripper cam)"))
+        legend2 = _.pgettext("kinematic sheet", "8 driven gear with the driving sprocket  9 gripper chain  "
+                             "10 tail sprocket")
+        if drawing_fits(s.entities[first:], regions(s)[where]):
+            break
+    # the drive from the motor, schematic, in the room above the cam and the gears right of
+    # the press (left out where there is too little)
+    drive = results.get("drive")
+    if drive is not None and getattr(drive, "stages", None):
+        reg = regions(s)[where]
+        x_press = max(view.p(z).real for z in press.pts) + 12.0
+        tops = [view.p(cd["stem_top"] if cd["pivot"] is None else cd["B"]).imag + cd["rr"] * view.scale, view.p(L["gear"]["O2"]).imag + L["gear"]["rs"] * view.scale,
+                view.p(L["gear"]["O"]).imag + L["gear"]["ra1"] * view.scale]
+        box = (x_press, max(tops) + 12.0, reg[2], reg[3])
+        if box[2] - box[0] > 60.0 and box[3] - box[1] > 40.0:
+            _drive_group(s, box, drive, placer,
+                         _.pgettext("kinematic sheet", "Drive from the motor (schematic, not to scale)"),
+                         sheet_point("O1"), found.flywheel, _.pgettext("kinematic sheet", "flywheel"))
+    press_legend = press.legend([x for x in numbered if x != "2"], lang)
+    note = _.pgettext("kinematic sheet", "each group to μL; not given, so schematic: the groups' placing, "
+                      "the gear pair's centre line, the chain's centre distance")
+    _notes(s, [_scale_note(lab, n) + lab["drawn_at"].format(p=press.label), with_subscripts(note, "μ_L"),
+               lab["links"] + legend, press_legend + "  " + legend2], where)
+    return s
+
+
 # ------------------------------------------------------------------ crank-rocker brief
 
 def crank_rocker_points(a: float, b: float, c: float, d: float) -> dict:
@@ -882,13 +1146,59 @@ def _layout_drive(stages, r) -> tuple[list, list]:
     return centres, items
 
 
-def drive_schematic(drive, info: TitleInfo, lang: str) -> Sheet:
+def flywheel_shaft(drive, flywheel) -> int | None:
+    """Index in ``drive.shafts`` of the shaft carrying ``flywheel`` (its ``shaft``: a drive
+    shaft's index, or "pinion" — the last stage's driving shaft, as the guide-bar stage
+    counts it — or "crank", the drive's output), None when there is none or it lies
+    outside the drive."""
+    shaft = getattr(flywheel, "shaft", None)
+    n = len(getattr(drive, "stages", ()) or ())
+    if isinstance(shaft, bool) or shaft is None:
+        return None
+    if isinstance(shaft, (int, np.integer)):
+        idx = int(shaft)
+    elif shaft == "pinion":
+        idx = n - 1
+    elif shaft == "crank":
+        idx = n
+    else:
+        return None
+    return idx if 0 <= idx <= n else None
+
+
+def _flywheel_radius(stages, r, idx: int, flywheel) -> float:
+    """The flywheel's rim radius on a schematic whose wheels have the radii ``r`` (per stage,
+    driving and driven): in proportion to a pulley on its shaft ``idx`` (rim mean diameter :
+    datum diameter), else a little larger than the shaft's wheels."""
+    on_shaft = ([(stages[idx - 1], r[idx - 1][1], 2)] if idx >= 1 else []) + \
+               ([(stages[idx], r[idx][0], 1)] if idx < len(r) else [])
+    rim = getattr(flywheel, "rim", None)
+    pulleys = [(rr, st.d1 if w == 1 else st.d2) for st, rr, w in on_shaft
+               if st.type in ("belt", "chain") and st.d1 and st.d2]
+    if rim is not None and pulleys:
+        return pulleys[0][0] * rim.diameter / pulleys[0][1]
+    return 1.3 * max([rr for _st, rr, _w in on_shaft] + [8.0])
+
+
+def _flywheel_rim(view, placer: LabelPlacer, c, radius: float, text: str) -> None:
+    """A flywheel seen end-on: its rim as two concentric circles, named by a leader."""
+    view.circle(c, radius, "OUTLINE", 0.7)
+    view.circle(c, radius - 2.0 / view.scale, "OUTLINE", 0.35)
+    for t in np.linspace(0, 2 * np.pi, 48)[:-1]:
+        placer.block(view.p(c + (radius - 1.0 / view.scale) * np.exp(1j * t)), 1.6)
+    placer.leader(view.p(c + radius * np.exp(0.75j * np.pi)), text, 3.5, prefer=-1 + 1j)
+
+
+def drive_schematic(drive, info: TitleInfo, lang: str, flywheel=None) -> Sheet:
     """The drive's transmission schematic: the shafts seen end-on (front view), a motor,
     each belt or chain as its two wheels and the belt's straight runs, each gear pair as
     tangent pitch circles (and tip circles), a worm as a rectangle tangent to its wheel on
     the worm's axis (the worm's shaft then a line, the motor beside it seen from the side);
     the shafts numbered 0 (motor), I, II, …, the stages 1, 2, … by leaders; a table of n, P,
-    T and one of the stages with their ratios, teeth and diameters."""
+    T and one of the stages with their ratios, teeth and diameters. A ``flywheel`` (the
+    flywheel stage's result) is drawn on its shaft (:func:`flywheel_shaft`) as a rim, two
+    circles larger than the shaft's wheels, named by a leader, its J_F and rim in the notes."""
+    gt = tr(lang)
     lab = LABELS[lang]
     s = Sheet(SIZE)
     area = _area(s)
@@ -905,6 +1215,12 @@ def drive_schematic(drive, info: TitleInfo, lang: str) -> Sheet:
     centres, items = _layout_drive(stages, r)
     side_motor = bool(items) and items[0][0] in ("coupling", "worm")
     pts = list(centres)
+    fw_idx = flywheel_shaft(drive, flywheel)
+    if fw_idx is not None and side_motor and fw_idx == 0:
+        fw_idx = None                            # the motor's shaft drawn from the side
+    if fw_idx is not None:
+        r_fw = _flywheel_radius(stages, r, fw_idx, flywheel)
+        pts += [centres[fw_idx] + (r_fw + 2.0) * (1 + 1j), centres[fw_idx] - (r_fw + 2.0) * (1 + 1j)]
     for kind, a, b, r1, r2, _ in items:
         if kind == "coupling":
             continue
@@ -990,6 +1306,9 @@ def drive_schematic(drive, info: TitleInfo, lang: str) -> Sheet:
             ring(b, r2 + 0.75 / sc, 1.4)
             anchor = p + w / 2 - 0.5 * h * 1j
         placer.leader(anchor, str(j + 1), 3.5, prefer=-1 + 1j if kind != "worm" else 1 - 1j)
+    if fw_idx is not None:
+        # the flywheel: a rim (two concentric circles) on its shaft, named by a leader
+        _flywheel_rim(view, placer, centres[fw_idx], r_fw, gt.pgettext("kinematic sheet", "flywheel"))
     # shafts: a small circle (end view) and the shaft's number
     for idx, c0 in enumerate(centres):
         if idx == 0 and side_motor:
@@ -1015,6 +1334,12 @@ def drive_schematic(drive, info: TitleInfo, lang: str) -> Sheet:
     table(s, tx, ybot - 8.0, [12, 58, 25, 80], srows, head=[tr(lang).pgettext("kinematic sheet", "No."), lab["stage"],
                                                              lab["ratio"], lab["data"]],
           title=lab["stages"], title_height=3.5, height=3.0, row_h=6.0)
-    _notes(s, [lab["not_scale"], lab["motor"].format(m=drive.motor.designation)
-               + f"  P = {fmt.f(drive.motor.power / 1e3, 2)} kW  n = {fmt.f(drive.motor.full_load_rpm, 0)} r/min"])
+    notes = [lab["not_scale"], lab["motor"].format(m=drive.motor.designation)
+             + f"  P = {fmt.f(drive.motor.power / 1e3, 2)} kW  n = {fmt.f(drive.motor.full_load_rpm, 0)} r/min"]
+    if fw_idx is not None:
+        rim = getattr(flywheel, "rim", None)
+        notes.append(with_subscripts(gt.pgettext("kinematic sheet", "flywheel on shaft {s}: JF = {J} kg·m²"),
+                                     "J_F").format(s=shaft_numeral(fw_idx), J=fmt.sig(flywheel.inertia))
+                     + (f", D = {fmt.length(rim.diameter * MM)} mm" if rim is not None else ""))
+    _notes(s, notes)
     return s

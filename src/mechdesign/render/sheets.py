@@ -138,6 +138,10 @@ def _diagram_builders(results: dict, found) -> list:
             and results.get("bending_cam") is not None and cam is not None):
         # the lock-beam machine: the feed linkage, both cams, the bending four-bar and chain
         out.append(("kinematic", lambda info, lang: ks.lockbeam_diagram(results, found, info, lang)))
+    elif (found is not None and cam is not None and hasattr(cam, "grid")
+          and hasattr(results.get("feed"), "sprocket_radius")):
+        # the die-cutter: the toggle press, the gripper cam, the incomplete gear and the chain
+        out.append(("kinematic", lambda info, lang: ks.die_cutter_diagram(results, found, info, lang)))
     elif results.get("optimum") is not None and hasattr(results["optimum"], "best"):
         # the crank-rocker (its optimum also runs through the linkage stages)
         opt, slider = results["optimum"], results.get("slider")
@@ -152,7 +156,8 @@ def _diagram_builders(results: dict, found) -> list:
         out.append(("kinematic", lambda info, lang: ks.disc_diagram(disc, info, lang)))
     drive = results.get("drive")
     if drive is not None and getattr(drive, "stages", None):
-        out.append(("transmission", lambda info, lang: ks.drive_schematic(drive, info, lang)))
+        fly = found.flywheel if found is not None else None
+        out.append(("transmission", lambda info, lang: ks.drive_schematic(drive, info, lang, fly)))
     cycle = results.get("cycle")
     if cycle is not None and hasattr(cycle, "diagram"):
         def cycle_builder(info, lang):
