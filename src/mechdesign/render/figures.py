@@ -293,7 +293,7 @@ def mechanism(path: Path, lang: str, pts: dict, labels, guide_y_mm: float, crank
             ax.text(p.real + 15, p.imag - 25, mpl_point(name), fontsize=8)
         for name in ("B", "F"):
             p = pts[name][0]
-            ax.text(p.real + 10, p.imag + 15, name, fontsize=8, color="C0")
+            ax.text(p.real + 10, p.imag + 15, mpl_point(name), fontsize=8, color="C0")
         ax.set_aspect("equal")
         ax.set_xlabel(lab["x"])
         ax.set_ylabel(lab["y"])
