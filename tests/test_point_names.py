@@ -13,8 +13,11 @@ Names without a digit ("AB", "DBC", "BC") were upright text beside the italic na
 digit, sometimes in one sentence: in the Markdown every point and link name is math italic
 now (``md_point``, ``md_names`` and the catalogue's prose), and the scan finds a run of name
 letters without a digit outside math (the base commit 6d985f2 failed it: furnace_pusher,
-die_cutter, press, crank_rocker, lockbeam, slotter …). Figures and sheets keep their names
-upright (the text font), names with a digit and without alike.
+die_cutter, press, crank_rocker, lockbeam, slotter …). The sheets set them italic too, and so
+do the report's figures (session 33): every text of every figure of every example is scanned
+for a point name in plain text or a capital that matplotlib's mathtext draws from an upright
+font (the base commit e9f1fc2 failed it: "B", "$\\mathregular{O_1}$", and — with a font cache
+that lacks matplotlib's DejaVu Sans Display — every math letter).
 """
 from __future__ import annotations
 
