@@ -181,7 +181,7 @@ def _motion(path: Path, lang: str, sims, allowed_deg, with_speed: bool):
             ax.axvline(x, color="0.5", lw=0.6, ls=":")
         ax.set_ylabel(lab["rocker"])
         if with_speed:
-            axes[2].plot(*_wrap(opt.phi, opt.omega4), color="C0", lw=1.4)
+            axes[2].plot(*_wrap(opt.phi, opt.omega3), color="C0", lw=1.4)
             axes[2].set_ylabel(lab["w3"])
             axes[2].axhline(0, color="0.4", lw=0.6)
         for ax in axes:

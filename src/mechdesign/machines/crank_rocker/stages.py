@@ -81,8 +81,8 @@ class Simulation:
     label: str
     phi: np.ndarray                 # crank angle from the frame line A→D [rad] (grid)
     rocker_angle: np.ndarray        # [rad], relative to the mean of the extremes
-    omega4: np.ndarray              # [rad/s]
-    alpha4: np.ndarray              # [rad/s²]
+    omega3: np.ndarray              # the rocker's (link 3) [rad/s]
+    alpha3: np.ndarray              # [rad/s²]
     gamma: np.ndarray               # transmission angle [rad]
     phi_extremes: tuple[float, float]   # crank angles of the rocker's extremes [rad]
     swing: float                    # simulated ψ [rad]
