@@ -213,6 +213,25 @@ def test_math_letters_are_italic_digits_upright():
     assert [(chr(g[2]), _italic_font(g[0])) for g in glyphs] == [("O", True), ("1", False), ("A", True)]
 
 
+def test_figure_names_in_user_text_parse():
+    """A user's text (a group's name) through :func:`mpl_names`: the names become mathtext, the
+    rest stays as written ("$" escaped), and matplotlib lays every one out."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    from matplotlib.figure import Figure
+
+    from tests.test_user_text import HOSTILE, ORDINARY
+
+    fig = Figure()
+    ax = fig.add_subplot()
+    for text in HOSTILE + ORDINARY + ["A$B", "C\\", "'A' B′ $C$ D_1"]:
+        ax.text(0, 0, mpl_names(text))
+        ax.text(0, 0, mpl_label(mpl_names(text)))
+    fig.canvas.draw()
+    assert mpl_names("A$B") == "$A$\\$B" and mpl_names("摇杆 O4B") == "摇杆 $O_4B$"
+
+
 @pytest.mark.parametrize("lang", ["zh", "en"])
 @pytest.mark.parametrize("name", EXAMPLES)
 def test_point_names_italic_in_every_figure(example_results, monkeypatch, tmp_path, name, lang):
