@@ -213,6 +213,28 @@ def test_math_letters_are_italic_digits_upright():
     assert [(chr(g[2]), _italic_font(g[0])) for g in glyphs] == [("O", True), ("1", False), ("A", True)]
 
 
+def test_word_subscripts_upright_in_figures():
+    """With the math letters italic, a word subscript (γ_min, ΔW_max) is set upright in the
+    figures as in the report's text: every figure is passed through this before it is saved."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    from matplotlib.figure import Figure
+    from matplotlib.mathtext import MathTextParser
+
+    from mechdesign.render.figures import upright_subscript_words
+    from mechdesign.render.fonts import configure_matplotlib
+
+    configure_matplotlib()
+    fig = Figure()
+    t = fig.add_subplot().text(0, 0, r"$\gamma_{min}$ = 46.95°, $\Delta W_{max}$, $x_{m}$")
+    upright_subscript_words(fig)
+    assert t.get_text() == r"$\gamma_{\mathrm{min}}$ = 46.95°, $\Delta W_{\mathrm{max}}$, $x_{m}$"
+    glyphs = MathTextParser("path").parse(r"$\gamma_{\mathrm{min}}$", dpi=72).glyphs
+    assert [(chr(g[2]), _italic_font(g[0])) for g in glyphs] == [
+        ("γ", True), ("m", False), ("i", False), ("n", False)]
+
+
 def test_figure_names_in_user_text_parse():
     """A user's text (a group's name) through :func:`mpl_names`: the names become mathtext, the
     rest stays as written ("$" escaped), and matplotlib lays every one out."""
