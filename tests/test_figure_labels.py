@@ -100,8 +100,9 @@ def test_die_cutter_skeleton_names_are_off_the_links(example_results, monkeypatc
     assert fig is not None, sorted(figs)
     (ax,) = fig.axes
     names = [t for t in _labels(ax) if t.get_fontsize() >= 7]      # not the position numbers
-    # O1 typeset as O₁ (mathtext, upright in the text font; issue 19 point 3)
-    assert {t.get_text() for t in names} >= {"B", "D", "C", r"$\mathregular{O_1}$"}
+    # every point name in math italic, O1 as O₁ (issue 19 point 3: as the text and the sheets;
+    # tests/test_point_names.py checks the glyphs' fonts in every figure)
+    assert {t.get_text() for t in names} >= {"$B$", "$D$", "$C$", "$O_1$"}
     clashes = LL.overlaps(ax, names, _obstacles(ax, 1.5))
     assert not clashes, clashes
 

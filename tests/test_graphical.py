@@ -212,20 +212,20 @@ def test_crank_rocker_runs_the_shared_linkage_stages(example_results):
     doc = r["linkage_graphical"]
     assert len(doc.positions) == 2 and not any(p.forces for p in doc.positions)
     d = r["optimum"].best.design
-    w2 = model.crank_omega
+    w1 = model.crank_omega
     from mechdesign.stages.polygons import entry
 
     for pos in doc.positions:
         i = entry(k, pos.label)
         P = {n: complex(m.pos[i]) for n, m in raw.points.items()}
-        t2, t3, t4 = (math.atan2(z.imag, z.real) for z in
+        t1, t2, t3 = (math.atan2(z.imag, z.real) for z in
                       (P["B"] - P["A"], P["C"] - P["B"], P["C"] - P["D"]))
-        w4 = w2 * d.crank * math.sin(t2 - t3) / (d.rocker * math.sin(t4 - t3))
-        w3 = w2 * d.crank * math.sin(t4 - t2) / (d.coupler * math.sin(t3 - t4))
+        w3 = w1 * d.crank * math.sin(t1 - t2) / (d.rocker * math.sin(t3 - t2))
+        w2 = w1 * d.crank * math.sin(t3 - t1) / (d.coupler * math.sin(t2 - t3))
         mu = pos.velocity.scale
-        assert abs(abs(pos.velocity.rates["4"]) - abs(w4)) <= 0.02 * abs(w4) + mu / d.rocker
-        assert abs(abs(pos.velocity.rates["3"]) - abs(w3)) <= 0.02 * abs(w3) + mu / d.coupler
-        assert pos.velocity.rates["4"] == pytest.approx(w4, rel=0.05)
+        assert abs(abs(pos.velocity.rates["3"]) - abs(w3)) <= 0.02 * abs(w3) + mu / d.rocker
+        assert abs(abs(pos.velocity.rates["2"]) - abs(w2)) <= 0.02 * abs(w2) + mu / d.coupler
+        assert pos.velocity.rates["3"] == pytest.approx(w3, rel=0.05)
 
 
 def test_force_tables_list_given_forces_with_their_given_values(tmp_path):

@@ -13,8 +13,11 @@ Names without a digit ("AB", "DBC", "BC") were upright text beside the italic na
 digit, sometimes in one sentence: in the Markdown every point and link name is math italic
 now (``md_point``, ``md_names`` and the catalogue's prose), and the scan finds a run of name
 letters without a digit outside math (the base commit 6d985f2 failed it: furnace_pusher,
-die_cutter, press, crank_rocker, lockbeam, slotter …). Figures and sheets keep their names
-upright (the text font), names with a digit and without alike.
+die_cutter, press, crank_rocker, lockbeam, slotter …). The sheets set them italic too, and so
+do the report's figures (session 33): every text of every figure of every example is scanned
+for a point name in plain text or a capital that matplotlib's mathtext draws from an upright
+font (the base commit e9f1fc2 failed it: "B", "$\\mathregular{O_1}$", and — with a font cache
+that lacks matplotlib's DejaVu Sans Display — every math letter).
 """
 from __future__ import annotations
 
@@ -23,8 +26,8 @@ from pathlib import Path
 
 import pytest
 
-from mechdesign.render.labels import (md_names, md_point, mpl_names, mpl_point, point_tex,
-                                      sheet_names, sheet_point, subscripted, tex_names)
+from mechdesign.render.labels import (md_names, md_point, mpl_label, mpl_names, mpl_point,
+                                      point_tex, sheet_names, sheet_point, subscripted, tex_names)
 from mechdesign.render.sheet import plain, split_subscripts
 from tests.test_report_prose import EXAMPLES, _markdown
 
@@ -45,7 +48,10 @@ def test_one_function_per_medium():
     # Markdown: every point name in math italic, with a digit or without (issue 19 point 3)
     assert md_point("O2") == "$O_2$" and md_point("AB") == "$AB$" and md_point("C'") == "$C'$"
     assert md_point("x-y") == "x-y"
-    assert mpl_point("O2") == r"$\mathregular{O_2}$" and mpl_point("A") == "A"
+    # a figure: math italic too, with a digit or without; a prime as "′" (mathtext draws "'"
+    # as a superscript)
+    assert mpl_point("O2") == "$O_2$" and mpl_point("A") == "$A$" and mpl_point("O1A") == "$O_1A$"
+    assert mpl_point("C'") == mpl_point("C′") == "$C′$" and mpl_point("ψ") == "ψ"
     # a sheet: the letters italic (as the report's math), the digits subscripts
     assert split_subscripts(sheet_point("O3B")) == [("O", "it"), ("3", True), ("B", "it")]
     assert split_subscripts(sheet_point("DE")) == [("D", "it"), ("E", "it")]
@@ -57,7 +63,11 @@ def test_one_function_per_medium():
     assert md_names("RRR ABD") == "RRR $ABD$" and md_names("guide bar (RPR)") == "guide bar (RPR)"
     assert md_names("feed slider E") == "feed slider $E$"
     assert md_names("crank-rocker O1ABC's crank") == "crank-rocker $O_1ABC$\\'s crank"
-    assert mpl_names("A (folded)") == "A (folded)"
+    assert mpl_names("A (folded)") == "$A$ (folded)" and mpl_names("rocker O4B") == "rocker $O_4B$"
+    assert mpl_names("RRR A-B-C") == "RRR $A$-$B$-$C$" and mpl_names("II 级杆组 $") == "II 级杆组 \\$"
+    assert mpl_label(r"arc about D of radius $l_4$") == r"arc about $D$ of radius $l_4$"
+    assert mpl_label("given-frame design A′") == "given-frame design $A′$"
+    assert mpl_label(r"$\theta = 0$ is a limit (A at infinity)") == r"$\theta = 0$ is a limit ($A$ at infinity)"
     assert sheet_names("rocker at its first extreme C1") == "rocker at its first extreme " + sheet_point("C1")
     assert plain(sheet_names("rod BF (RRR)")) == "rod BF (RRR)"
     assert split_subscripts(sheet_names("rod BF (RRR)"))[1:3] == [("B", "it"), ("F", "it")]
@@ -141,6 +151,139 @@ def test_point_names_typeset_in_every_report(example_results, name, lang):
     md, _ = _markdown(example_results, name, lang)
     bad = bare_names(md)
     assert not bad, "\n".join(map(str, bad[:12]))
+
+
+# ------------------------------------------------------------------------------ the figures
+
+# a run of point names standing as a word in a figure's plain text (outside its mathtext)
+_FIG_NAMES = re.compile(r"(?<![A-Za-z0-9_\\'′{])((?:[A-Z][0-9]*['′]*)+)(?![A-Za-z0-9_}])")
+# capitals in a figure's plain text that name no point: an Assur group's code, the units N, J,
+# W ("N·m", "(J)", "50 N/mm"), and the quantity symbols of three die-cutter notes ("ΔE",
+# "H − t = 46.0 mm", "F/M (kN/(kN·m))": symbols, not point names)
+_NOT_FIG_NAMES = re.compile(r"(?<![A-Za-z])(?:[RP]{3}|[NJW](?=[·/)\s]|$))|ΔE|H − [a-z]|F/M")
+
+
+def _italic_font(font) -> bool:
+    return any(w in font.style_name for w in ("Oblique", "Italic"))
+
+
+def upright_names(text: str) -> list[str]:
+    """The point names of a figure's text drawn upright: a run of capitals in its plain text,
+    or a capital letter of its mathtext that matplotlib draws from an upright font (as it
+    lays the text out: the glyphs and their fonts)."""
+    from matplotlib.mathtext import MathTextParser
+
+    parser = MathTextParser("path")
+    bad = []
+    for k, part in enumerate(re.split(r"((?<!\\)\$[^$]*(?<!\\)\$)", text)):
+        if k % 2 == 0:
+            bad += _FIG_NAMES.findall(_NOT_FIG_NAMES.sub(" ", part))
+        else:
+            bad += [f"{chr(g[2])} in {part} ({g[0].style_name})" for g in parser.parse(part, dpi=72).glyphs
+                    if "A" <= chr(g[2]) <= "Z" and not _italic_font(g[0])]
+    return bad
+
+
+def test_the_figure_scan_finds_upright_names():
+    """As the base commit drew them (plain "B", mathtext "\\mathregular{O_1}"); the italic
+    forms, units, group codes and the die-cutter's symbols pass."""
+    from mechdesign.render.fonts import configure_matplotlib
+
+    configure_matplotlib()
+    for old in ["B", r"$\mathregular{O_1}$", "A (folded)", "pivot A", "摆杆转轴 A", "γ RRR A-B-C",
+                r"arc about D of radius $l_4$", "given-frame design A′", "P", r"rocker $\mathregular{O_4B}$",
+                r"$\mathrm{C}_2$"]:
+        assert upright_names(old), old
+    for ok in ["$B$", "$O_1$", "$A$ (folded)", "γ RRR $A$-$B$-$C$", r"arc about $D$ of radius $l_4$",
+               "$A′$", "平衡力矩 $M_b$ (N·m)", "力多边形  $\\mu_F$ = 50 N/mm", "动能增量 ΔE (J)",
+               "F/M (kN/(kN·m))", "开始压切 H − t = 46.0 mm", r"$\Delta W_{max}$ = 3499.5 J", "30°",
+               "α rod–ram (RRP)", "$p(P)′$"]:
+        assert not upright_names(ok), (ok, upright_names(ok))
+
+
+def test_math_letters_are_italic_digits_upright():
+    """The figures' mathtext draws a point name's letters from an oblique font and its digit
+    subscripts upright, whatever font list matplotlib found (render/fonts.py)."""
+    from matplotlib.mathtext import MathTextParser
+
+    from mechdesign.render.fonts import configure_matplotlib
+
+    configure_matplotlib()
+    glyphs = MathTextParser("path").parse(mpl_point("O1A"), dpi=72).glyphs
+    assert [(chr(g[2]), _italic_font(g[0])) for g in glyphs] == [("O", True), ("1", False), ("A", True)]
+
+
+def test_word_subscripts_upright_in_figures():
+    """With the math letters italic, a word subscript (γ_min, ΔW_max) is set upright in the
+    figures as in the report's text: every figure is passed through this before it is saved."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    from matplotlib.figure import Figure
+    from matplotlib.mathtext import MathTextParser
+
+    from mechdesign.render.figures import upright_subscript_words
+    from mechdesign.render.fonts import configure_matplotlib
+
+    configure_matplotlib()
+    fig = Figure()
+    t = fig.add_subplot().text(0, 0, r"$\gamma_{min}$ = 46.95°, $\Delta W_{max}$, $x_{m}$")
+    upright_subscript_words(fig)
+    assert t.get_text() == r"$\gamma_{\mathrm{min}}$ = 46.95°, $\Delta W_{\mathrm{max}}$, $x_{m}$"
+    glyphs = MathTextParser("path").parse(r"$\gamma_{\mathrm{min}}$", dpi=72).glyphs
+    assert [(chr(g[2]), _italic_font(g[0])) for g in glyphs] == [
+        ("γ", True), ("m", False), ("i", False), ("n", False)]
+
+
+def test_figure_names_in_user_text_parse():
+    """A user's text (a group's name) through :func:`mpl_names`: the names become mathtext, the
+    rest stays as written ("$" escaped), and matplotlib lays every one out."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    from matplotlib.figure import Figure
+
+    from tests.test_user_text import HOSTILE, ORDINARY
+
+    fig = Figure()
+    ax = fig.add_subplot()
+    for text in HOSTILE + ORDINARY + ["A$B", "C\\", "'A' B′ $C$ D_1"]:
+        ax.text(0, 0, mpl_names(text))
+        ax.text(0, 0, mpl_label(mpl_names(text)))
+    fig.canvas.draw()
+    assert mpl_names("A$B") == "$A$\\$B" and mpl_names("摇杆 O4B") == "摇杆 $O_4B$"
+
+
+@pytest.mark.parametrize("lang", ["zh", "en"])
+@pytest.mark.parametrize("name", EXAMPLES)
+def test_point_names_italic_in_every_figure(example_results, monkeypatch, tmp_path, name, lang):
+    """Every text of every figure of the report (the machine's, the requested and the
+    graphical method's, drawn as the report draws them, taken where they would be saved)
+    sets its point names in math italic, as the report's text and the sheets do (issue 19
+    point 3); link numbers, units and words stay upright."""
+    import importlib
+
+    from matplotlib.text import Text
+
+    from mechdesign.machines import get_machine
+    from mechdesign.render import figures as F
+    from mechdesign.runner import _with_requested_figures
+
+    found: dict = {}
+
+    def scan(fig, path):
+        for t in fig.findobj(Text):
+            if t.get_visible() and t.get_text().strip():
+                for bad in upright_names(t.get_text()):
+                    found.setdefault(Path(path).name, set()).add((t.get_text(), bad))
+
+    monkeypatch.setattr(F, "save_png", scan)
+    r = example_results(name)
+    report = importlib.import_module(get_machine(r["brief"].machine).report_module)
+    (tmp_path / "figures").mkdir()
+    figures = _with_requested_figures(report, r, tmp_path / "figures", lang)
+    assert figures or name == "furnace_drive"
+    assert not found, found
 
 
 # ------------------------------------------------------------------------------ the sheets

@@ -32,6 +32,15 @@ RENAMES: dict[str, list[tuple[str, str]]] = {
     "linkage": [("linkage.flywheel.driving_torque", "linkage.flywheel.mean_torque")],
     "shaper": [("flywheel.driving_torque", "flywheel.shaft_torque"),
                ("flywheel.ratio_to_crank", "flywheel.speed_ratio")],
+    # issue 19 (session 33): the crank-rocker's links numbered as the textbook numbers a
+    # four-bar and as its synthesis (l1 … l4) and kinematic sheet do — crank 1, coupler 2,
+    # rocker 3, frame 4 (the linkage engine had frame 1, crank 2, coupler 3, rocker 4)
+    "crank_rocker": [(f"linkage.positions.*.link_{w}.{old}", f"linkage.positions.{{1}}.link_{w}.{new}")
+                     for w in ("omega", "alpha") for old, new in (("2", "1"), ("3", "2"), ("4", "3"))]
+    + [(f"linkage.graphical.positions.*.{k}.rates.{old}", f"linkage.graphical.positions.{{1}}.{k}.rates.{new}")
+       for k in ("velocity", "acceleration") for old, new in (("2", "1"), ("3", "2"), ("4", "3"))]
+    + [(f"linkage.graphical.positions.*.acceleration.points.n{old}'.*",
+        f"linkage.graphical.positions.{{1}}.acceleration.points.n{new}'.{{2}}") for old, new in (("3", "2"), ("4", "3"))],
 }
 
 # Deliberate corrections of the redesign (issue 17), per machine: old path patterns whose
@@ -48,6 +57,15 @@ EXPECTED: dict[str, list[tuple[str, str]]] = {
         ("linkage.positions.7.reactions.*", "at the end of the working stroke (at rest) the "
          "working resistance opposes the working motion (one-sided limit); it pushed along it"),
         ("linkage.positions.7.balancing_torque", "the same position (M_b ≈ 0 there: round-off)"),
+    ],
+    "crank_rocker": [
+        ("linkage.output.name", "issue 19 (session 33): the rocker is link 3 (crank 1, coupler 2, "
+         "rocker 3, frame 4, as the textbook, the synthesis and the kinematic sheet number them); "
+         "it was link 4"),
+        ("linkage.graphical.positions.*.acceleration.equations.*.head", "the same: a normal "
+         "acceleration's vertex is named by its link (n4' → n3', n3' → n2')"),
+        ("linkage.graphical.positions.*.acceleration.equations.*.tail", "the same"),
+        ("linkage.graphical.positions.*.comparison.*.quantity", "the same (ω4 → ω3, ω3 → ω2 …)"),
     ],
     "die_cutter": [
         ("press.positions.7.reactions.*", "at the top dead centre (end of the working stroke) "
@@ -236,6 +254,13 @@ def rename(path: str, machine: str) -> str | None:
         if fnmatch.fnmatchcase(path, pattern) or path.startswith(pattern + "."):
             if not target:
                 return None
+            if "{" in target:          # "{1}" … the parts the pattern's "*"s matched
+                import re
+
+                glob = "".join("(.*)" if part == "*" else re.escape(part)
+                               for part in re.split(r"(\*)", pattern))
+                parts = re.fullmatch(glob, path).groups()
+                return re.sub(r"\{(\d+)\}", lambda m: parts[int(m[1]) - 1], target)
             rest = path[len(pattern):] if path.startswith(pattern) else ""
             return target + rest
     return path

@@ -8,7 +8,7 @@ import numpy as np
 
 from ..i18n import N_
 from .figures import cached, figure
-from .labels import LabelTable
+from .labels import LabelTable, mpl_label
 
 LABELS = LabelTable({
     "delta": N_("cam angle δ (°)"),
@@ -160,7 +160,7 @@ def profile(path: Path, lang: str, pitch, actual, base_radius, roller, marks, ro
         ax.plot([0], [0], "+", color="k", ms=10)
         if pivot is not None:
             ax.plot([pivot.real], [pivot.imag], "^", color="k", ms=6)
-            ax.text(pivot.real + 3, pivot.imag - 8, lab["pivot"], fontsize=7)
+            ax.text(pivot.real + 3, pivot.imag - 8, mpl_label(lab["pivot"]), fontsize=7)
             if follower is not None:
                 ax.plot([pivot.real, follower.real], [pivot.imag, follower.imag], color="C0", lw=2.0)
         elif follower is not None and not flat:

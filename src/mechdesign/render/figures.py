@@ -6,6 +6,7 @@ the figure; plot functions take prepared arrays in course units and return nothi
 from __future__ import annotations
 
 import functools
+import re
 from contextlib import contextmanager
 from contextvars import ContextVar
 from pathlib import Path
@@ -133,6 +134,7 @@ def save_png(fig, path: Path) -> None:
     from .parallel import save
 
     call = _call_key.get()
+    upright_subscript_words(fig)
 
     def write():
         # a figure drawn before with the same state is copied from the cache (render/cache.py)
@@ -150,6 +152,21 @@ def save_png(fig, path: Path) -> None:
         cache.store_file(call, Path(path))
 
     save(write, Path(path).name)
+
+
+_WORD_SUBSCRIPT = re.compile(r"_\{(min|max)\}")
+
+
+def upright_subscript_words(fig) -> None:
+    """Set the word subscripts of the figure's formulas upright ($\\gamma_{min}$ →
+    $\\gamma_{\\mathrm{min}}$), as the report's text sets them (γ_min: the letters of a
+    formula are math italic, a word is not)."""
+    from matplotlib.text import Text
+
+    for t in fig.findobj(Text):
+        s = t.get_text()
+        if "$" in s and "_{m" in s:
+            t.set_text(_WORD_SUBSCRIPT.sub(r"_{\\mathrm{\1}}", s))
 
 
 def _phase_axis(ax, working_span_deg: float, positions=None):
@@ -293,7 +310,7 @@ def mechanism(path: Path, lang: str, pts: dict, labels, guide_y_mm: float, crank
             ax.text(p.real + 15, p.imag - 25, mpl_point(name), fontsize=8)
         for name in ("B", "F"):
             p = pts[name][0]
-            ax.text(p.real + 10, p.imag + 15, name, fontsize=8, color="C0")
+            ax.text(p.real + 10, p.imag + 15, mpl_point(name), fontsize=8, color="C0")
         ax.set_aspect("equal")
         ax.set_xlabel(lab["x"])
         ax.set_ylabel(lab["y"])

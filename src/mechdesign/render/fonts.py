@@ -154,6 +154,7 @@ def configure_matplotlib() -> None:
             font_manager.fontManager.addfont(str(font_file))
             _registered.add(font_file)
         family = font_manager.FontProperties(fname=str(font_file)).get_name()
+    _register_display_font(font_manager)
 
     matplotlib.rcParams["font.family"] = "sans-serif"
     matplotlib.rcParams["font.sans-serif"] = [family, "DejaVu Sans"]
@@ -167,3 +168,22 @@ def configure_matplotlib() -> None:
     import logging
 
     logging.getLogger("matplotlib.font_manager").setLevel(logging.ERROR)
+
+
+def _register_display_font(font_manager) -> None:
+    """Register matplotlib's own DejaVu Sans Display when its font list lacks it (a font
+    cache written by another installation lists the system's DejaVu files only).
+
+    The "dejavusans" mathtext set takes every glyph the display font has from that font,
+    upright; without it the lookup falls back to DejaVu Sans, which has every glyph, and
+    the math italic letters (point names, symbols) came out upright — the same figure
+    italic on one machine and upright on another. The display font holds only the large
+    operators, so the letters come from DejaVu Sans Oblique as matplotlib intends."""
+    import matplotlib
+
+    if any(f.name == "DejaVu Sans Display" for f in font_manager.fontManager.ttflist):
+        return
+    path = Path(matplotlib.get_data_path()) / "fonts" / "ttf" / "DejaVuSansDisplay.ttf"
+    if path.is_file() and path not in _registered:
+        font_manager.fontManager.addfont(str(path))
+        _registered.add(path)          # (addfont clears findfont's cache)

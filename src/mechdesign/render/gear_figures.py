@@ -10,7 +10,7 @@ import numpy as np
 from ..i18n import N_
 from ..stages.gear import GearDrawing
 from .figures import cached, figure
-from .labels import LabelTable
+from .labels import LabelTable, mpl_point
 
 LABELS = LabelTable({
     "title": N_("Gear meshing drawing"),
@@ -66,7 +66,7 @@ def meshing_drawing(path: Path, lang: str, drawing: GearDrawing, title: str | No
         plot([lay.o1, 1j * top], color="0.3", lw=0.7, ls="-.")
         ax.annotate("", xy=(0, top), xytext=(0, top - 2.5 * m),
                     arrowprops=dict(arrowstyle="->", color="0.3", lw=0.8))
-        ax.annotate(f"$O_2$ ↑  (a′ = {pair.a_work:.1f} mm)", (0, top), xytext=(6, -4),
+        ax.annotate(f"{mpl_point('O2')} ↑  (a′ = {pair.a_work:.1f} mm)", (0, top), xytext=(6, -4),
                     textcoords="offset points", fontsize=8, va="top")
         plot([P - 5 * m, P + 5 * m], color="0.4", lw=0.6)
         plot([lay.n1 - 1.5 * m * u, lay.n2 + 1.5 * m * u], color="C3", lw=0.8)
@@ -76,9 +76,9 @@ def meshing_drawing(path: Path, lang: str, drawing: GearDrawing, title: str | No
         for pt in (lay.n1, lay.n2, lay.b1, lay.b2, P, lay.o1):
             plot(pt, "o", color="k", ms=3, zorder=5)
         box = dict(boxstyle="round,pad=0.12", fc="white", ec="none", alpha=0.85)
-        for name, pt, off in ((r"$O_1$", lay.o1, (9, -9)), ("P", P, (-7, 11)), (r"$N_1$", lay.n1, (10, 3)),
-                              (r"$N_2$", lay.n2, (-4, 11)), (r"$B_1$", lay.b1, (-2, 11)), (r"$B_2$", lay.b2, (3, -12))):
-            ax.annotate(name, (pt.real, pt.imag), xytext=off, textcoords="offset points", fontsize=10,
+        for name, pt, off in (("O1", lay.o1, (9, -9)), ("P", P, (-7, 11)), ("N1", lay.n1, (10, 3)),
+                              ("N2", lay.n2, (-4, 11)), ("B1", lay.b1, (-2, 11)), ("B2", lay.b2, (3, -12))):
+            ax.annotate(mpl_point(name), (pt.real, pt.imag), xytext=off, textcoords="offset points", fontsize=10,
                         ha="center", va="center", zorder=6, bbox=box)
         # α′ at P (between the common tangent and N1N2) and as the angle P O1 N1
         size = right - left

@@ -108,9 +108,15 @@ def mpl_math(tex: str, vertex: bool = False) -> str:
     return tex.replace("'", "′")
 
 
+# the image of a point named P on the polygon, "p(P)" (its lower-case letter is the pole's)
+_POLE_OF = re.compile(r"([a-z])\(([A-Z][0-9]*)\)('*)")
+
+
 def vertex_label(name: str) -> str:
     """A polygon vertex as a matplotlib label (mathtext when :func:`vertex` typesets it)."""
     tex = vertex(name)
+    if tex is None and (m := _POLE_OF.fullmatch(str(name))):      # p(P): P's image on the pole
+        return f"${m[1]}({point_tex(m[2])}){'′' * len(m[3])}$"
     return mpl_text(str(name).replace("'", "′")) if tex is None else f"${mpl_math(tex, vertex=True)}$"
 
 

@@ -938,6 +938,10 @@ def crank_rocker_diagram(opt, slider, info: TitleInfo, lang: str) -> Sheet:
             placer.place(view.p((a + b) / 2), num, 3.5, prefer=1j * d, gap=2.0)
         if sliding:
             placer.place(view.p(P["C"]), "3", 3.5, prefer=1j, gap=4.5)
+        # the frame is link 4 (crank 1, coupler 2, rocker or slider 3: the textbook's numbers,
+        # the synthesis's l1 … l4 and the report's analysis), at the fixed pivot D or the guide
+        fixed = P["C"] - 0.5 * slider.stroke * MM - 3.5j / view.scale if sliding else P["D"] - 3.5j / view.scale
+        placer.place(view.p(fixed), "4", 3.5, prefer=-1j if sliding else 1 - 1j, gap=3.5)
         low = min(min(view.p(z).imag for z in P.values()) - 8.0,
                   view.p(P["A"]).imag - crank_len * view.scale - 4.0)
         cx = float(np.mean([view.p(z).real for z in P.values()]))
@@ -952,8 +956,8 @@ def crank_rocker_diagram(opt, slider, info: TitleInfo, lang: str) -> Sheet:
         mechanism(sc_pts, True, f"{lab['slider_crank']}  {scale_text(views[1][1])}", slider.crank * MM)
         scale_notes += ";  ABC: " + _scale_note(lab, views[1][1])
     notes = [scale_notes,
-             f"ABCD: a = {fmt.length(fb.crank * MM)}  b = {fmt.length(fb.coupler * MM)}  "
-             f"c = {fmt.length(fb.rocker * MM)}  d = {fmt.length(fb.frame * MM)} mm"]
+             "ABCD: " + "  ".join(f"{sub('l', str(k))} = {fmt.length(v * MM)}" for k, v in
+                                  enumerate((fb.crank, fb.coupler, fb.rocker, fb.frame), 1)) + " mm"]
     if slider is not None:
         notes.append(f"ABC: a = {fmt.length(slider.crank * MM)}  b = {fmt.length(slider.rod * MM)}  "
                      f"e = {fmt.minus(fmt.length(slider.offset * MM))}  H = {fmt.length(slider.stroke * MM)} mm")

@@ -102,16 +102,20 @@ def md_point(name: str) -> str:
 
 
 def _mpl_math(name: str) -> str:
-    # \mathregular: the figure's text font, upright, like the names without a digit beside it
-    return f"$\\mathregular{{{point_tex(name)}}}$"
+    # mathtext as the report's math: its letters math italic (DejaVu Sans Oblique, see
+    # render/fonts.py), the digits upright subscripts; a prime "′" (U+2032), since mathtext
+    # draws "'" as a superscript \prime that the shipped fonts render as a small "0"
+    return "$" + point_tex(name).replace("'", "′") + "$"
 
 
 def mpl_point(name: str) -> str:
-    """A point name (or a run of them) for a matplotlib text: mathtext "$\\mathregular{O_1}$"
-    (upright, in the text font) where it has a digit, else as written."""
+    """A point name (or a run of them) for a matplotlib text, in math italic as the report and
+    the sheets set it, with or without a digit: "$O_1$", "$A$", "$O_1A$", "$C′$"; anything
+    else as written."""
     from .fmt import mpl_text
 
-    return _mpl_math(name) if subscripted(name) else mpl_text(name)
+    plain = str(name).replace("′", "'")
+    return _mpl_math(plain) if _NAMES.fullmatch(plain) else mpl_text(name)
 
 
 # A sheet text marks a subscript with two private-use characters (never in user text):
@@ -175,12 +179,34 @@ def md_names(text: str) -> str:
                               md_text(text))
 
 
+# a run of point names standing as a word in a figure's text, with or without a digit, primes
+# written ' or ′ ("A", "O4B", "A′"); an Assur group's code (RRR) and a Roman numeral (II) name
+# no point
+_MPL_NAME_WORD = re.compile(r"(?<![A-Za-z0-9_\\$'′{])((?:[A-Z][0-9]*['′]*)+)(?![A-Za-z0-9_$}])")
+_NOT_A_NAME = re.compile(r"[RP]{3}|[IVX]{2,}")
+
+
+def _mpl_names_outside_math(text: str) -> str:
+    return _MPL_NAME_WORD.sub(lambda m: m[1] if _NOT_A_NAME.fullmatch(m[1])
+                              else _mpl_math(m[1].replace("′", "'")), text)
+
+
 def mpl_names(text: str) -> str:
-    """A text holding point names for a matplotlib text: each run of names with a digit as
-    mathtext, the rest drawn as written."""
+    """A text holding point names (a user's or a catalogue's plain text, "rocker O4B",
+    "A (folded)", "RRR A-B-C") for a matplotlib text: escaped, each run of names as
+    :func:`mpl_point` sets it ("rocker $O_4B$", "$A$ (folded)"; the group code RRR stays a
+    word)."""
     from .fmt import mpl_text
 
-    return _NAME_WORD.sub(lambda m: _mpl_math(m[1]), mpl_text(text))
+    return _mpl_names_outside_math(mpl_text(text))
+
+
+def mpl_label(text: str) -> str:
+    """A figure's own label that may hold mathtext ("arc about D of radius $l_4$", a
+    catalogue text): each run of point names outside its formulas as :func:`mpl_point` sets
+    it, the formulas as written."""
+    parts = re.split(r"((?<!\\)\$[^$]*(?<!\\)\$)", str(text))
+    return "".join(p if k % 2 else _mpl_names_outside_math(p) for k, p in enumerate(parts))
 
 
 def sheet_names(text: str) -> str:

@@ -12,7 +12,7 @@ from ...render.figures import figure
 from ...render.fmt import e as fe
 from ...render.fmt import residue, verdict
 from ...render.fmt import f, md_meta, md_text, mpl_text, sig, time_ratio
-from ...render.labels import LabelTable, mpl_point, subscripted
+from ...render.labels import LabelTable, mpl_label, mpl_point
 from ...i18n import N_, Msg, tr
 
 DEG = 180.0 / np.pi
@@ -29,8 +29,8 @@ LABELS = LabelTable({
     "phi_s": N_("crank angle φ from the guide direction (°)"),
     "gamma": N_("transmission angle γ (°)"),
     "rocker": N_("rocker angle (°)"),
-    "w4": N_(r"rocker $\omega_4$ (rad/s)"),
-    "a4": N_(r"rocker $\alpha_4$ (rad/s²)"),
+    "w3": N_(r"rocker $\omega_3$ (rad/s)"),
+    "a3": N_(r"rocker $\alpha_3$ (rad/s²)"),
     "x": "x (mm)",
     "y": "y (mm)",
     "circle": N_("θ-circle"),
@@ -70,7 +70,7 @@ def _chart(path: Path, lang: str, ch, mark, allowed_deg):
             ax.set_xlim(psi[0], psi[-1])
         ax1.legend(fontsize=7, ncol=4, loc="lower right")
         if any(th == 0.0 for th in ch.thetas):
-            ax1.text(0.01, 0.08, lab["limit"], transform=ax1.transAxes, fontsize=7, color="0.35")
+            ax1.text(0.01, 0.08, mpl_label(lab["limit"]), transform=ax1.transAxes, fontsize=7, color="0.35")
 
 
 def _arc(ax, centre, radius, a0, a1, **kw):
@@ -80,7 +80,7 @@ def _arc(ax, centre, radius, a0, a1, **kw):
 
 
 def _label(ax, z, text, dx=0.0, dy=0.0, **kw):
-    text = mpl_point(text) if subscripted(text) else text       # B1 → B₁ (mathtext)
+    text = mpl_point(text)           # "B1" → B₁, "O" → O in math italic; "ψ" as written
     ax.text(z.real * MM + dx, z.imag * MM + dy, text, fontsize=8, **kw)
 
 
@@ -102,7 +102,7 @@ def _construction(path: Path, lang: str, opt, sim, textbook):
         ax.plot(z.real * MM, z.imag * MM, color="0.6", lw=0.8, label=lab["circle"])
         t = np.linspace(cons.p_lo, cons.p_hi, 200)
         z = cons.point(t)
-        ax.plot(z.real * MM, z.imag * MM, color="C2", lw=2.4, alpha=0.6, label=lab["arc"])
+        ax.plot(z.real * MM, z.imag * MM, color="C2", lw=2.4, alpha=0.6, label=mpl_label(lab["arc"]))
         ax.plot(cons.centre.real * MM, cons.centre.imag * MM, "+", color="0.4")
         _label(ax, cons.centre, "O", dx=1.0, dy=1.0, color="0.4")
         g = cons.point(cons.p_lo)
@@ -120,7 +120,7 @@ def _construction(path: Path, lang: str, opt, sim, textbook):
         # frame arc (textbook: arc about D of radius l4)
         ang_a = np.angle(a_pt)
         _arc(ax, d_pt, abs(a_pt), ang_a - 0.25, ang_a + 0.25, color="C4", lw=0.8, ls="-.",
-             label=lab["frame_arc"])
+             label=mpl_label(lab["frame_arc"]))
         # the linkage at its two extremes
         for k, col, suffix in ((i1, "C0", "1"), (i2, "C1", "2")):
             chain = np.array([pts["A"][k], pts["B"][k], pts["C"][k], pts["D"][k]])
@@ -145,7 +145,7 @@ def _construction(path: Path, lang: str, opt, sim, textbook):
             _label(ax, zz, name, dx=1.5, dy=-4.0)
         if textbook is not None:
             tp = textbook.a_pivot
-            ax.plot(tp.real * MM, tp.imag * MM, "^", color="C4", ms=6, label=lab["textbook"])
+            ax.plot(tp.real * MM, tp.imag * MM, "^", color="C4", ms=6, label=mpl_label(lab["textbook"]))
         ax.set_xlabel(lab["x"])
         ax.set_ylabel(lab["y"])
         ax.grid(True, lw=0.3, color="0.88")
@@ -181,14 +181,14 @@ def _motion(path: Path, lang: str, sims, allowed_deg, with_speed: bool):
             ax.axvline(x, color="0.5", lw=0.6, ls=":")
         ax.set_ylabel(lab["rocker"])
         if with_speed:
-            axes[2].plot(*_wrap(opt.phi, opt.omega4), color="C0", lw=1.4)
-            axes[2].set_ylabel(lab["w4"])
+            axes[2].plot(*_wrap(opt.phi, opt.omega3), color="C0", lw=1.4)
+            axes[2].set_ylabel(lab["w3"])
             axes[2].axhline(0, color="0.4", lw=0.6)
         for ax in axes:
             ax.set_xlim(-180, 180)
             ax.set_xticks(np.arange(-180, 181, 30))
             ax.grid(True, lw=0.4, color="0.82")
-        axes[-1].set_xlabel(lab["phi"])
+        axes[-1].set_xlabel(mpl_label(lab["phi"]))
 
 
 def _slider(path: Path, lang: str, sl, ss, allowed_deg):

@@ -81,8 +81,8 @@ class Simulation:
     label: str
     phi: np.ndarray                 # crank angle from the frame line A→D [rad] (grid)
     rocker_angle: np.ndarray        # [rad], relative to the mean of the extremes
-    omega4: np.ndarray              # [rad/s]
-    alpha4: np.ndarray              # [rad/s²]
+    omega3: np.ndarray              # the rocker's (link 3) [rad/s]
+    alpha3: np.ndarray              # [rad/s²]
     gamma: np.ndarray               # transmission angle [rad]
     phi_extremes: tuple[float, float]   # crank angles of the rocker's extremes [rad]
     swing: float                    # simulated ψ [rad]
@@ -245,10 +245,11 @@ def folded_branch(design: fb.FourBar, a_pivot: complex, c1: complex) -> int:
 
 def _four_bar_mechanism(design: fb.FourBar, a_pivot: complex, branch: int, omega: float
                         ) -> Mechanism:
-    """Crank AB (link 2) + RRR group BC (3) / DC (4); D at the origin."""
-    mech = Mechanism("1", {"A": a_pivot, "D": 0j})
-    mech.add(Crank("crank", "2", "A", "B", design.crank, omega))
-    mech.add(RRR("RRR", "3", "4", "B", "D", "C", design.coupler, design.rocker, branch))
+    """Crank AB (link 1) + RRR group BC (2) / DC (3), frame AD (4), as the textbook numbers a
+    four-bar and as the synthesis names the lengths (l1 … l4); D at the origin."""
+    mech = Mechanism("4", {"A": a_pivot, "D": 0j})
+    mech.add(Crank("crank", "1", "A", "B", design.crank, omega))
+    mech.add(RRR("RRR", "2", "3", "B", "D", "C", design.coupler, design.rocker, branch))
     return mech
 
 
@@ -271,28 +272,28 @@ def _transmission(m) -> np.ndarray:
 def simulate_four_bar(label: str, design: fb.FourBar, a_pivot: complex, branch: int,
                       omega: float, n: int) -> Simulation:
     """Simulate a crank-rocker with D at the origin and the crank pivot at ``a_pivot``: the
-    rocker's extremes are the roots of ω4(φ) (bracketed on the grid, brentq); γmin by a
+    rocker's extremes are the roots of ω3(φ) (bracketed on the grid, brentq); γmin by a
     bounded scalar search around the grid minimum. The crank angle φ is measured from the
     frame line A→D (φ = 0: crank along AD, pointing at D)."""
     mech = _four_bar_mechanism(design, a_pivot, branch, omega)
     phi = np.angle(-a_pivot) + np.arange(n) * (2.0 * np.pi / n)
     m = mech.solve(phi)
-    th4 = m.links["4"].angle
-    ref = float(th4[0])
+    th3 = m.links["3"].angle
+    ref = float(th3[0])
 
     def rel(x):
         return np.angle(np.exp(1j * (x - ref)))
 
-    w4 = m.links["4"].omega
+    w3 = m.links["3"].omega
 
     def w_at(x):
-        return float(mech.solve(np.array([x])).links["4"].omega[0])
-    roots = _refine_roots(w_at, phi, w4)
+        return float(mech.solve(np.array([x])).links["3"].omega[0])
+    roots = _refine_roots(w_at, phi, w3)
     if len(roots) != 2:
         raise fb.SynthesisError(N_("{label}: the simulated rocker has {n} extreme positions "
                                    "per revolution, not 2: it is not a crank-rocker"), label=label, n=len(roots))
     ends = mech.solve(np.array(roots))
-    ang = rel(ends.links["4"].angle)
+    ang = rel(ends.links["3"].angle)
     i_max = int(np.argmax(ang))
     phi_max, phi_min = roots[i_max], roots[1 - i_max]
     swing = float(ang[i_max] - ang[1 - i_max])
@@ -305,34 +306,35 @@ def simulate_four_bar(label: str, design: fb.FourBar, a_pivot: complex, branch: 
         return float(_transmission(mech.solve(np.array([x])))[0])
     phi_g, g_min = _min_refined(g_at, phi, gam, 2.0 * np.pi / n)
     # loop closure A + AB + BC − DC − AD = 0 with the simulated link angles
-    loop = (a_pivot + design.crank * np.exp(1j * m.links["2"].angle)
-            + design.coupler * np.exp(1j * m.links["3"].angle)
-            - design.rocker * np.exp(1j * m.links["4"].angle))
+    loop = (a_pivot + design.crank * np.exp(1j * m.links["1"].angle)
+            + design.coupler * np.exp(1j * m.links["2"].angle)
+            - design.rocker * np.exp(1j * m.links["3"].angle))
     closure = float(np.max(np.abs(loop)))
     mid = 0.5 * (ang[0] + ang[1])
     pts = {k: ends.points[k].pos for k in ("A", "B", "C", "D")}
     base = np.angle(-a_pivot)
-    return Simulation(label, phi - base, rel(th4) - mid, w4, m.links["4"].alpha, gam,
+    return Simulation(label, phi - base, rel(th3) - mid, w3, m.links["3"].alpha, gam,
                       (float(roots[0] - base) % (2 * np.pi), float(roots[1] - base) % (2 * np.pi)),
                       swing, theta, slow / fast, g_min, float(phi_g - base) % (2 * np.pi), closure, pts)
 
 
 def simulate_slider(res: SliderResult, omega: float, n: int) -> SliderSimulation:
-    """Crank AB + RRP group on the guide y = −e (A at the origin, C ahead of B's foot)."""
-    mech = Mechanism("1", {"A": 0j})
-    mech.add(Crank("crank", "2", "A", "B", res.crank, omega))
-    mech.add(RRP("RRP", "3", "4", "B", "C", res.rod, complex(0.0, -res.offset), 0.0, +1, "1"))
+    """Crank AB (1) + RRP group: rod BC (2), slider C (3) on the guide y = −e of the frame (4)
+    (A at the origin, C ahead of B's foot), numbered as the kinematic sheet numbers them."""
+    mech = Mechanism("4", {"A": 0j})
+    mech.add(Crank("crank", "1", "A", "B", res.crank, omega))
+    mech.add(RRP("RRP", "2", "3", "B", "C", res.rod, complex(0.0, -res.offset), 0.0, +1, "4"))
     phi = np.arange(n) * (2.0 * np.pi / n)
     m = mech.solve(phi)
-    s = m.slides["4"].s
-    ds = m.slides["4"].ds
+    s = m.slides["3"].s
+    ds = m.slides["3"].ds
 
     def ds_at(x):
-        return float(mech.solve(np.array([x])).slides["4"].ds[0])
+        return float(mech.solve(np.array([x])).slides["3"].ds[0])
     roots = _refine_roots(ds_at, phi, ds)
     if len(roots) != 2:
         raise fb.SynthesisError(N_("the simulated slider has {n} dead centres, not 2"), n=len(roots))
-    ends = mech.solve(np.array(roots)).slides["4"].s
+    ends = mech.solve(np.array(roots)).slides["3"].s
     i_max = int(np.argmax(ends))
     phi_max, phi_min = roots[i_max], roots[1 - i_max]
     stroke = float(ends[i_max] - ends[1 - i_max])
@@ -366,7 +368,7 @@ def simulate_slider(res: SliderResult, omega: float, n: int) -> SliderSimulation
     else:
         a_fast = stroke_max(phi_min, out_span)
         a_slow = stroke_max(phi_max, 2.0 * np.pi - out_span)
-    loop = (res.crank * np.exp(1j * m.links["2"].angle) + res.rod * np.exp(1j * m.links["3"].angle)
+    loop = (res.crank * np.exp(1j * m.links["1"].angle) + res.rod * np.exp(1j * m.links["2"].angle)
             - (complex(0.0, -res.offset) + s))
     return SliderSimulation(phi, s - ends[1 - i_max], alpha, slow, stroke, theta, K, a_slow,
                             a_fast, float(np.max(np.abs(loop))))
@@ -470,13 +472,14 @@ def checks(p, keep: dict | None = None) -> list:
 
 
 #: the links of the crank-rocker in the linkage engine (names shown on the sheets)
-_LINK_NAMES = {"2": N_("crank AB"), "3": N_("coupler BC"), "4": N_("rocker CD")}
+_LINK_NAMES = {"1": N_("crank AB"), "2": N_("coupler BC"), "3": N_("rocker CD")}
 _MODEL_TITLE = N_("the crank-rocker as a linkage")
 
 
 def linkage_model(r: dict):
     """The optimum crank-rocker as a model of the shared linkage engine
-    (:mod:`mechdesign.stages.linkage`): crank AB (link 2) + RRR group BC (3) / DC (4), D at
+    (:mod:`mechdesign.stages.linkage`): crank AB (link 1) + RRR group BC (2) / DC (3), frame 4
+    (the synthesis's l1 … l4 and the kinematic sheet's numbers), D at
     the origin, assembled on the branch of the simulation, the rocker's angle the output.
     Position 1 is the rocker extreme that starts the slow stroke (the working stroke of a
     crank-rocker with K > 1). No loads: the engine gives the kinematics, the analysis sheet's
@@ -490,7 +493,7 @@ def linkage_model(r: dict):
     branch = folded_branch(best.design, best.a_pivot, opt.construction.c1)
     mech = _four_bar_mechanism(best.design, best.a_pivot, branch, p.omega)
     names = {k: Msg(v) for k, v in _LINK_NAMES.items()}      # translated where shown
-    model = lk.LinkageModel(mech, p.omega, lk.Output("link", "4", 0.0, +1),
+    model = lk.LinkageModel(mech, p.omega, lk.Output("link", "3", 0.0, +1),
                             grid_points=p.grid_points,
                             transmission_angle_min=p.gamma_allowed, names=names)
     start, end = lk._strokes(model)[:2]
@@ -498,7 +501,7 @@ def linkage_model(r: dict):
     if span < np.pi:         # the rocker's angle falls in the slow stroke
         from dataclasses import replace
 
-        model = replace(model, output=lk.Output("link", "4", 0.0, -1))
+        model = replace(model, output=lk.Output("link", "3", 0.0, -1))
     return model
 
 

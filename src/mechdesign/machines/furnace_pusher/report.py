@@ -68,12 +68,12 @@ def _scheme(path: Path, lang: str, syn) -> None:
                       yg + 0.6 * blk * np.array([-1, -1, 1, 1, -1]), color=col, lw=1.0)
         left.annotate("", xy=(syn.E2.real * MM, yg + 45), xytext=(syn.E1.real * MM, yg + 45),
                       arrowprops=dict(arrowstyle="->", color="C2"))
-        left.text(0.5 * (syn.E1.real + syn.E2.real) * MM, yg + 60, "H", ha="center", fontsize=8,
+        left.text(0.5 * (syn.E1.real + syn.E2.real) * MM, yg + 60, "$H$", ha="center", fontsize=8,
                   color="C2")
         for name, q, dy in (("C1", c_start, -60), ("C2", c_end, -60), ("E1", syn.E1, 22),
                             ("E2", syn.E2, 22)):
             left.text(q.real * MM, q.imag * MM + dy, mpl_point(name), fontsize=7, ha="center")
-        left.text(20, -50, "D", fontsize=8)
+        left.text(20, -50, mpl_point("D"), fontsize=8)
         left.text(o1.real + 20, o1.imag - 50, mpl_point("O1"), fontsize=8)
         left.set_xlim(xs.min() - 350, xs.max() + 200)
         left.set_ylim(-100, yg + 130)
