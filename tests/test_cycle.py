@@ -285,6 +285,32 @@ def test_section_errors_name_the_place():
         CycleSection.model_validate(bad)
 
 
+def test_a_brief_may_use_the_states_work_and_clear():
+    """The die-cutter's platen (a crank-driven output that never stops) is drawn in the
+    windows work (工作区运动: near its working end) and clear (让开区运动); a user's brief may
+    name them too (issue 19: the brief offered only rise … dwell). Both are motions: a
+    "during" constraint against a dwell reads them as such, and they are named in each
+    language as the core's catalogue names them."""
+    from mechdesign.i18n import tr
+
+    d = section()
+    d["actuators"].append({"key": "platen", "name_zh": "压板", "name_en": "platen", "start_deg": 240,
+                           "phases": [{"state": "work", "span_deg": 40},
+                                      {"state": "clear", "span_deg": 320}]})
+    d["constraints"] = [{"kind": "during", "a": {"actuator": "platen", "state": "work"},
+                         "b": {"actuator": "pin", "state": "dwell_high"}, "margin_deg": 5}]
+    c = cycle_to_si(CycleSection.model_validate(d))
+    platen = c.actuator("platen")
+    assert [p.state for p in platen.phases] == ["work", "clear"]
+    assert all(p.moving for p in platen.phases)
+    # the pin holds from 170 + 60 = 230° to 300°, the work window is 240°–280°: 10° after
+    # the hold begins, 20° before it ends; less the 5° margin the slack is 5°
+    (chk,) = cy.check_constraints(c)
+    assert chk.ok and np.degrees(chk.slack) == pytest.approx(5.0)
+    assert cy.STATES["work"].name("zh") == "工作区运动" and cy.STATES["clear"].name("en") == "moving, clear zone"
+    assert tr("zh").pgettext("cycle state", "moving, clear zone") == "让开区运动"
+
+
 def test_document():
     c = lockbeam([cy.Constraint("before", ("feed", "rise"), ("pin", "rise"), R(5))])
     doc = cy.cycle_document(c)

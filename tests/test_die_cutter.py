@@ -502,3 +502,28 @@ def test_flywheel_on_the_distribution_shaft_leaves_that_shaft_the_peak():
     assert (cmp_.chosen.shaft, cmp_.other.shaft) == (3, 1)
     assert cmp_.chosen.inertia == pytest.approx(cmp_.other.inertia * (cmp_.other.speed_rpm
                                                                        / cmp_.chosen.speed_rpm) ** 2)
+
+
+def test_amplification_table_writes_f_per_m_to_four_significant_digits(shipped):
+    """Table "Force amplification near the top" (zh/en table 27): F/M, a force per torque
+    spanning two decades (79 to 5168 kN/(kN·m)), follows the number rule of forces and
+    torques (render/fmt.py): 4 significant digits, a value of five or more integer digits
+    with all of them; it was written to 0.1 (78.7, 5168.0). Its value is 1/(M/F)."""
+    import re
+
+    from mechdesign.i18n import tr
+    from mechdesign.machines.die_cutter.report import _amplification
+
+    r = shipped
+    rows = _amplification(r, r["params"], tr("en"))["rows"]
+    cells = [row[3] for row in rows if row[3] != "∞"]
+    assert len(cells) == len(r["amplification"].table)
+    for cell, (_gap, _ph, u, _fpt, _ratio) in zip(cells, r["amplification"].table):
+        plain = re.sub(r"[\u202f\u00a0 ]", "", cell)
+        integer, _, decimals = plain.partition(".")
+        if len(integer) >= 5:
+            assert not decimals, cell
+        else:
+            digits = (integer + decimals).lstrip("0")
+            assert len(digits) == 4, cell
+        assert float(plain) == pytest.approx(float(f"{1 / u:.4g}"), rel=1e-12), cell

@@ -190,7 +190,7 @@ def test_flat_force_polygon_says_so_and_names_one_segment_once(example_results, 
     assert len(texts) <= len(segs), texts                     # one label per segment at most
     shared = [t for t in texts if "R23" in t]
     assert shared and "R34" in shared[0] and "R43" in shared[0], texts
-    assert "nearly flat" in ax.get_xlabel()
+    assert "nearly flat" in _flat_note(ax)
     assert not [s for s in LL.overlaps(ax, _labels(ax), []) if "over" in s]
     # the note where, and only where, the polygon is flat: narrower than 8 % of its length
     # across its principal direction (measured here on the arrows drawn)
@@ -203,7 +203,49 @@ def test_flat_force_polygon_says_so_and_names_one_segment_once(example_results, 
         pts = pts - pts.mean(axis=0)
         vt = np.linalg.svd(pts, full_matrices=False)[2]
         flat = np.ptp(pts @ vt[1]) < 0.08 * np.ptp(pts @ vt[0])
-        assert ("nearly flat" in ax.get_xlabel()) == flat, name
+        assert ("nearly flat" in _flat_note(ax)) == flat, name
+
+
+def _flat_note(ax) -> str:
+    """The text of the force polygon's flat-polygon note (an annotation under the axis
+    label; the axis label itself when the note was written into it)."""
+    notes = [t.get_text() for t in ax.texts if t.get_gid() == "flat_note"]
+    return "\n".join(notes + [ax.get_xlabel()])
+
+
+@pytest.mark.parametrize("brief, lang, name", [("shaper", "zh", "linkage_graph_4_f1.png"),
+                                               ("shaper", "en", "linkage_graph_4_f1.png"),
+                                               ("slotter", "zh", "linkage_graph_5_f1.png"),
+                                               ("slotter", "en", "linkage_graph_5_f1.png")])
+def test_flat_polygon_note_is_clear_of_the_axis_label(example_results, monkeypatch, tmp_path,
+                                                      brief, lang, name):
+    """Shaper Fig. 8, slotter Fig. 9 (issue 19): the note "nearly flat polygon …" sat in
+    the axis label's second line and touched its "mm". Measured on the drawn texts after
+    the final layout: the axis label is "mm" alone, the note lies wholly below it with at
+    least 2 pt between their boxes, clear of the tick labels and inside the figure."""
+    from mechdesign.render import graphical_report as G
+
+    figs = _captured(monkeypatch)
+    G.graphical_figures(example_results(brief), tmp_path, lang)
+    fig = figs[name]
+    ax = fig.axes[1]
+    assert ax.get_xlabel() == "mm"
+    notes = [t for t in ax.texts if t.get_gid() == "flat_note"]
+    assert len(notes) == 1 and notes[0].get_text().strip()
+    LL.overlaps(ax, [])                     # the layout the figure is saved with
+    renderer = LL._renderer(fig)
+    note = notes[0].get_window_extent(renderer)
+    label = ax.xaxis.label.get_window_extent(renderer)
+    gap = (label.y0 - note.y1) * 72 / fig.dpi
+    assert gap >= 2.0, gap                  # below "mm", not touching it
+    assert note.x0 <= label.x1 and note.x1 >= label.x0          # under it, not beside it
+    for tick in ax.get_xticklabels() + ax.get_yticklabels():
+        if tick.get_text():
+            tb = tick.get_window_extent(renderer)
+            assert LL._box_overlap((note.x0, note.y0, note.x1, note.y1),
+                                   (tb.x0, tb.y0, tb.x1, tb.y1)) == 0, tick.get_text()
+    whole = fig.bbox
+    assert note.y0 >= whole.y0 and note.x0 >= whole.x0 and note.x1 <= whole.x1
 
 
 def test_position_labels_on_the_top_axis_do_not_run_together(example_results, monkeypatch,

@@ -347,3 +347,25 @@ def test_every_table_of_the_graphical_section_has_its_own_caption(example_result
     assert len(set(captions)) == len(captions), captions
     group = "杆组" if lang == "zh" else "group"
     assert sum(group in c for c in captions) >= 2
+
+
+# ------------------------------------------------------------------ deliverables named by words
+
+_FILE_NAME = re.compile(r"[\w.-]+\.(?:csv|pdf|dxf|png|docx)\b")
+
+
+@pytest.mark.parametrize("name", ["cam_7_3", "cam_7_1", "lockbeam", "crank_rocker"])
+@pytest.mark.parametrize("lang", ["zh", "en"])
+def test_the_cam_chapter_names_its_data_files_in_words(example_results, name, lang):
+    """The profile coordinates delivered with the report are named by what they hold ("the
+    cam profile coordinates (delivered with the report)", 凸轮轮廓坐标表（随报告附带）), not by
+    file names (`cam_profile.csv`, `bending_cam_profile_fine.csv`, `disc_displacement.csv`,
+    `cam_profile_outline.csv`; the crank-rocker's `design_chart.csv`): a reader of the
+    printed report has no folder to look in. Figure links (image paths) are not prose."""
+    md, _ = _markdown(example_results, name, lang)
+    prose = re.sub(r"^```.*?^```", "", md, flags=re.S | re.M)
+    prose = re.sub(r"!\[[^\]]*\]\([^)]*\)", "", prose)              # image links
+    found = [line[:120] for line in prose.splitlines() if _FILE_NAME.search(line)]
+    assert not found, "\n".join(found[:6])
+    words = "随报告附带" if lang == "zh" else "delivered with the report"
+    assert words in md

@@ -368,3 +368,53 @@ def test_massless_guide_bar_or_ram_is_a_valid_brief(run, massless):
     mb = cf.balancing_torque(at_positions(k, k.crank_angle), k.stroke_direction, at_positions(k, fc))
     np.testing.assert_allclose(at_positions(k, f.balancing_torque), mb, rtol=0,
                                atol=RTOL * np.max(np.abs(mb)))
+
+
+# ---------------------------------------------------------------------- issue 19: the
+# flywheel rim's weight on shaft Ⅰ (the shaper's flywheel sits on the pinion's shaft O1)
+
+
+def test_flywheel_rim_weight_loads_shaft_one_by_hand_statics(example_results):
+    """Shaft Ⅰ carries the V-belt's pulley (overhung), the pinion z1 and the flywheel rim
+    between its bearings. The loads are formed here from their own formulas — the rim's
+    weight W = m·g with m = 4J_F/D² (thin rim), the belt's pull F_p from the belt design, the
+    pinion's F_t = 2T/d1 and F_r = F_t·tan α — at the layout's stations, and the bearing
+    reactions come from the two equilibrium equations of a beam on supports A (x = 0) and
+    B (x = L) in each plane: R_B = −Σ F_i x_i / L, R_A = −Σ F_i − R_B."""
+    r = example_results("shaper")
+    fl, d, p = r["linkage_flywheel"], r["drive"], r["params"]
+    W = 4 * fl.inertia / fl.rim.diameter ** 2 * p.gravity
+    assert W == pytest.approx(fl.rim.rim_mass * p.gravity, rel=1e-9)
+    sd = next(s for s in d.shaft_designs if s.index == 1)
+    assert sorted(sd.elements) == ["belt", "flywheel", "open_spur"]
+    at = dict(zip(sd.elements, sd.loads))
+    L = sd.span
+    # the rim hangs at mid-span, its width and 60 mm each side between the bearings
+    assert at["flywheel"].x == pytest.approx(L / 2)
+    assert L == pytest.approx(fl.rim.width + 0.12)
+    belt = next(s for s in d.stages if s.type == "belt")
+    spur = next(s for s in d.stages if s.type == "spur")
+    Fp = belt.design.geometry.Fp
+    T = sd.torque
+    Ft = 2 * T / spur.design.geometry.g1.d             # d1 = m·z1
+    Fr = Ft * np.tan(spur.design.geometry.alpha)        # α = 20°, unshifted mesh (α′ = α)
+    # (x, Fh, Fv): the belt pulls horizontally, the mesh's tangential force horizontal and
+    # its radial force vertical (their senses as laid out), the rim's weight downwards
+    sg = at["open_spur"]
+    loads = [(at["belt"].x, np.sign(at["belt"].Fh) * Fp, 0.0),
+             (sg.x, np.sign(sg.Fh) * Ft, np.sign(sg.Fv) * Fr),
+             (L / 2, 0.0, -W)]
+    RBh = -sum(x * fh for x, fh, _ in loads) / L
+    RBv = -sum(x * fv for x, _, fv in loads) / L
+    RAh = -sum(fh for _, fh, _ in loads) - RBh
+    RAv = -sum(fv for _, _, fv in loads) - RBv
+    res = sd.result
+    assert (res.RAh, res.RAv, res.RBh, res.RBv) == pytest.approx((RAh, RAv, RBh, RBv), rel=1e-6)
+    assert res.FrA == pytest.approx(np.hypot(RAh, RAv), rel=1e-6)
+    assert res.FrB == pytest.approx(np.hypot(RBh, RBv), rel=1e-6)
+    # the bending moment at the rim: M_v = R_Av·L/2 + the overhung loads left of it
+    Mv = RAv * L / 2 + sum(fv * (L / 2 - x) for x, _, fv in loads if x < 0)
+    Mh = RAh * L / 2 + sum(fh * (L / 2 - x) for x, fh, _ in loads if x < 0)
+    sec = [s for s in res.sections if abs(s.x - L / 2) < 1e-12]
+    assert sec and sec[0].M == pytest.approx(np.hypot(Mh, Mv), rel=1e-6)
+

@@ -599,3 +599,29 @@ def test_undercut_result_is_written_without_brackets():
     out = check_formula(c)
     assert out.rstrip().endswith(f"= {x_min:.3f}"), out
     assert f"({x_min:.3f})" not in out
+
+
+def test_a_small_power_keeps_four_significant_digits_in_the_formula():
+    """Powers are written to 4 significant digits (render/fmt.py), in the shaft table, the
+    design step and the check's formula alike: the furnace drive's last shaft carries
+    46.30 W, whose d_min formula read "∛(0.0463/20.11)" beside the table's 0.04630 kW."""
+    from mechdesign.render.strength_tex import check_formula
+
+    c = s.shaft_diameter_check(16 * mm, 46.30, 20.11, 112, 0.05)
+    out = check_formula(c)
+    assert r"\frac{0.04630}{20.11}" in out, out
+    c = s.shaft_diameter_check(16 * mm, 659.87, 267.6, 112, 0.05)
+    assert r"\frac{0.6599}{267.6}" in check_formula(c)
+
+
+def test_the_motor_rating_margin_writes_the_power_needed_to_four_significant_digits(example_results):
+    """The drive's verification row "motor rating margin": the furnace drive's P_d, below
+    0.1 kW, to 4 significant digits as in the shaft table (0.06296 kW; it read 0.0630)."""
+    from mechdesign.machines.drive.report import verification_context
+
+    r = example_results("furnace_drive")
+    rows = verification_context(r["drive"], r["drive_verification"], "en")["verify_rows"]
+    row = next(row for row in rows if row[0].startswith("motor rating margin"))
+    need = r["drive"].power_required / 1e3
+    assert need < 0.1 and f"({need:.4g} / " in row[1], row       # 4 digits, the last one too
+    assert len(f"{need:.4g}".split(".")[1].lstrip("0")) == 4

@@ -54,3 +54,26 @@ def test_crank_rocker_key_rows_name_their_mechanism():
     k_rows = {r[2]: r[0] for r in rows if r[0].endswith("time ratio K")}
     assert k_rows["slider_crank.K"].startswith("offset slider-crank:")
     assert k_rows["linkage.time_ratio"].startswith("crank-rocker:")
+
+
+def test_the_crank_pin_is_not_a_key_answer():
+    """The textbook exercise asks for B, D, S4 at φ1 = 45°: B is the crank pin, whose speed
+    ωr and acceleration ω²r are the same at every position (given data, not results), so
+    the key results give ω4, α4 and the bar's points only. A point whose speed is constant
+    but whose acceleration is not (no uniform circular motion) stays."""
+    def point(name, v, a, grid_v, grid_a):
+        return {"name": name, "positions": [{"label": "φ45", "velocity": v, "acceleration": a}],
+                "grid_velocity": grid_v, "grid_acceleration": grid_a}
+
+    w, r = 10.0, 0.03                   # ω1 = 10 rad/s, l_AB = 30 mm: v_B = 0.3, a_B = 3
+    doc = {"linkage": _linkage({}),
+           "analysis_requests": {
+               "positions": [{"asked": "φ45", "label": "φ45"}],
+               "points": [point("B", w * r, w * w * r, [w * r] * 8, [w * w * r * (1 + 1e-15)] * 8),
+                          point("D", 0.2993, 1.397, [0.0, 0.3, 0.64, 0.2], [1.0, 1.4, 3.0, 0.9]),
+                          point("E", 0.5, 0.7, [0.5] * 4, [0.7, 0.8, 0.7, 0.6])]}}
+    rows = {r_[0]: r_[1] for r_ in key_rows("linkage", doc, "en")}
+    assert "$\\omega_{4}$ at position φ45" in rows and "$\\alpha_{4}$ at position φ45" in rows
+    assert rows["$v_{D}$ at position φ45"] == "0.2993" and rows["$a_{D}$ at position φ45"] == "1.397"
+    assert "$v_{E}$ at position φ45" in rows
+    assert not [k for k in rows if "_{B}" in k], rows

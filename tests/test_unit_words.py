@@ -247,3 +247,21 @@ def test_a_run_prints_no_font_lookup_noise(tmp_path):
                           "-f", "md", "-o", str(tmp_path / "out")], capture_output=True, text=True, env=env)
     assert run.returncode == 0, run.stderr[-2000:]
     assert "findfont" not in run.stdout + run.stderr
+
+
+# ------------------------------------------------------------------------------ the degree sign
+
+# a number, a space of any kind, then the degree sign of an angle (not °C, not a scale °/mm)
+_DEG_APART = re.compile(r"\d[ \u00a0\u202f\u2009]+°(?![C/])")
+
+
+@pytest.mark.parametrize("lang", ["zh", "en"])
+def test_the_degree_sign_follows_its_number(example_results, lang):
+    """The course writes an angle as 34.92°, the sign right after the number (GB 3102.1: no
+    space before °, ′, ″); the guide-bar exercise's linkage chapter printed "Swing 34.92 °"
+    (the output's unit after a space, as for mm)."""
+    md, _ = _markdown(example_results, "textbook_guide_bar", lang)
+    found = [line[:120] for line in _prose(md).splitlines() if _DEG_APART.search(line)]
+    assert not found, "\n".join(found[:8])
+    word = "Swing" if lang == "en" else "摆角"
+    assert re.search(word + r" \d+\.\d\d°[;；]", md)

@@ -201,6 +201,19 @@ EXPECTED["die_cutter"] += [(path, "issue 19: the platen's windows are motions (w
                            for path in ("cycle.actuators.*.phases.*.state", "cycle.constraints.*.a",
                                         "cycle.constraints.*.b")]
 
+# Issue 19 (session 33): the shaper's shaft Ⅰ carries its flywheel rim's weight (W = m·g =
+# 1399 N, 142.6 kg at D = 500 mm) between its bearings, as the slotter's since session 32
+# (tests/test_shaper_stages.py checks the reactions by hand statics): the bearing span
+# 170 → 212.1 mm (rim width + 2 × 60 mm), the pinion's station 250 → 292.1 mm, the vertical
+# reactions R_Av 121.4 → 796.8 N, R_Bv −379.3 → 344.3 N, the horizontal ones −79.3 → −119.3 N and
+# −910.1 → −870.1 N, the bearing loads 263.5 / 677.0 → 949.5 / 829.9 N, the critical section
+# moved to the rim (M 60.33 → 93.31 N·m, Mca 75.82 → 104.0 N·m), the bearing 6205's life
+# 550 686 → 199 597 h (≥ 48 000 h), its static safety 7.992 → 8.421; diameters, bearing and
+# keys unchanged (the largest σ_ca, at the journal's end, unchanged).
+EXPECTED["shaper"].append(("drive.shaft_designs.0.*", "issue 19 (session 33): the flywheel "
+                           "rim's weight on shaft Ⅰ (span, loads, reactions, moments, bearing "
+                           "loads and lives)"))
+
 # Self-check residuals: round-off, not results. Compared only as "still tiny".
 IGNORED = ("*closure_residual", "*stroke_error", "*power_balance_residual", "*power_residual*",
            "*self_check*residual*")

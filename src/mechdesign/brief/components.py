@@ -26,7 +26,7 @@ from pydantic import Field, model_validator
 from .common import MISSING, Msg, Problems, StrictModel
 from ..i18n import N_
 
-StateName = Literal["rise", "dwell_high", "return", "dwell_low", "move", "dwell"]
+StateName = Literal["rise", "dwell_high", "return", "dwell_low", "move", "dwell", "work", "clear"]
 _KEY = r"^[a-z][a-z0-9_]*$"
 
 
@@ -38,7 +38,9 @@ class CyclePhase(StrictModel):
 
     state: StateName = Field(description=(
         "rise (推程), dwell_high (远停歇), return (回程), dwell_low (近停歇) for a reciprocating "
-        "output; move (运动) or dwell (停歇) for one that advances one way (a chain, a table)"))
+        "output; move (运动) or dwell (停歇) for one that advances one way (a chain, a table); "
+        "work (工作区运动, moving, work zone) or clear (让开区运动, moving, clear zone) for one "
+        "that never stops (a crank-driven platen): near its working end, and clear of it"))
     span_deg: float = Field(gt=0, le=360, description="Main-shaft angle the phase lasts [°]")
     label_zh: str = Field("", max_length=30, description="Chinese label shown instead of the state name, e.g. 扳弯")
     label_en: str = Field("", max_length=40, description="English label shown instead of the state name")

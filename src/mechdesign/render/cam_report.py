@@ -436,7 +436,7 @@ def cam_verification_rows(v, c, lang: str) -> list[list[str]]:
     return rows
 
 
-def envelope_note(c, lang: str, csv_stem: str, verification=None) -> str:
+def envelope_note(c, lang: str, verification=None) -> str:
     """A paragraph on the actual profile at the pitch curve's corners ('' when there are none);
     with the cam ``verification``, it also states how far the plain offset curve is off."""
     env = getattr(c, "envelope", None)
@@ -469,9 +469,11 @@ def envelope_note(c, lang: str, csv_stem: str, verification=None) -> str:
         text += _("The plain offset curve departs from the distance $r_r$ to the pitch curve by up to {d} mm, "
                   "where the actual profile is held to {limit} mm; it is therefore not used. ",
                   d=length(off[0].value * MM), limit=length((held[0] if held else DIST_LIMIT) * MM))
-    text += _("The cut-away points in the coordinate table and in `{csv}.csv` are replaced by the edge; the "
-              "whole actual profile (with the arcs) is written to `{csv}_outline.csv` and drawn in "
-              "[@fig:cam-profile].", csv=csv_stem)
+    # the files by what they hold, not by their names (delivered beside the report)
+    text += _("The cut-away points in the coordinate table and in the cam profile coordinates "
+              "delivered with the report are replaced by the edge; the whole actual profile (with "
+              "the arcs) is delivered as the actual profile's outline coordinates and drawn in "
+              "[@fig:cam-profile].")
     return text
 
 

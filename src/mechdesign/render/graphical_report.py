@@ -401,10 +401,15 @@ def _force_figure(path: Path, points: dict, length_scale: float, fg, members: di
         flat = _flatness(zs2)
         a2.set_title(f"{t['force']}  $\\mu_F$ = {_scale(fg.scale)} N/mm", fontsize=8)
         a2.tick_params(labelsize=6)
-        # a polygon whose forces are almost collinear closes on a line: say so (issue 19)
-        note = "" if flat is None else "\n" + re.sub(r"([:\uff1a])\s*", "\\1\n",
-                                                      t["flat"].format(w=_mm(flat)), count=1)
-        a2.set_xlabel("mm" + note, fontsize=6)
+        a2.set_xlabel("mm", fontsize=6)
+        # a polygon whose forces are almost collinear closes on a line: say so (issue 19),
+        # in a note of its own under the axis label, NOTE_GAP clear of it (as a second
+        # line of the label it touched "mm", shaper Fig. 8, slotter Fig. 9)
+        if flat is not None:
+            note = re.sub(r"([:\uff1a])\s*", "\\1\n", t["flat"].format(w=_mm(flat)), count=1)
+            a2.annotate(note, xy=(0.5, 0.0), xycoords=a2.xaxis.label, xytext=(0, -NOTE_GAP),
+                        textcoords="offset points", ha="center", va="top", fontsize=6,
+                        gid="flat_note")
         a2.grid(True, lw=0.3, alpha=0.4)
         # labels last, clear of each other and of the links and vectors (issue 19)
         place(a1, labels1, lines1, heads=_heads(a1), head_size=HEAD)
@@ -419,6 +424,9 @@ FBD_MARGIN = 0.16
 #: than a vertex's (a tall polygon in a narrow panel pushed "F_R34, F_R43, F_R23" over the
 #: tick labels, slotter and press, issue 19 point 6).
 FORCE_MINOR, FORCE_PAD = 0.6, 0.18
+
+#: The gap [pt] between the force polygon's axis label "mm" and the flat-polygon note under it.
+NOTE_GAP = 4.0
 
 #: A force polygon narrower than this fraction of its length is called nearly flat in its
 #: figure (its forces almost collinear; the directions read from it are uncertain).

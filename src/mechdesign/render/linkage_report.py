@@ -47,6 +47,12 @@ def _units(k):
     return DEG, ("°", "rad/s", "rad/s²")
 
 
+def _with_unit(number: str, unit: str) -> str:
+    """A number and its unit: the degree sign follows the number directly (34.92°), any
+    other unit after a space (120.00 mm)."""
+    return f"{number}{unit}" if unit == "°" else f"{number} {unit}"
+
+
 def _labels(k):
     return [lab.replace("'", "′") for lab in k.positions.labels]
 
@@ -388,7 +394,7 @@ def linkage_context(model, k, f_, fly, v, figures: dict, lang: str,
     for i, r in enumerate(model.resistances):
         window = "—"
         if r.active is not None:
-            window = f"{f(r.active[0] * scale, 1)} – {f(r.active[1] * scale, 1)} {units[0]}"
+            window = f"{f(r.active[0] * scale, 1)} – {_with_unit(f(r.active[1] * scale, 1), units[0])}"
         res_rows.append([f"R{i + 1}", md_point(r.point), md_text(r.link), f(r.direction * DEG, 1),
                          f(r.working / kilo, force_digits, group=True),
                          f(r.returning / kilo, force_digits, group=True), window])
@@ -413,7 +419,7 @@ def linkage_context(model, k, f_, fly, v, figures: dict, lang: str,
         "sym_a": "a" if k.output_unit == "m" else "α",
         # a slider's stroke, a rocker's swing
         "stroke_word": _("Stroke") if k.output_unit == "m" else _("Swing"),
-        "stroke": f(k.stroke * scale, 2), "K": time_ratio(k.time_ratio),
+        "stroke": _with_unit(f(k.stroke * scale, 2), units[0]), "K": time_ratio(k.time_ratio),
         "theta": f(180 * (k.time_ratio - 1) / (k.time_ratio + 1), 2),
         "working_span": f(k.working_span * DEG, 2),
         "return_span": f(360 - k.working_span * DEG, 2),

@@ -13,6 +13,7 @@ from typing import Iterable
 from ..core.strength import COURSE_SCALE, Check
 from ..i18n import tr
 from .fmt import f, sci
+from .fmt import sig as rule_sig
 
 #: Decimals of the value and allowable columns per course unit.
 DIGITS = {"MPa": 1, "h": 0, "°C": 1, "mm": 2, "m/s": 2, "°": 1, "1": 2, "kW": 3, "μm": 2}
@@ -159,7 +160,10 @@ def _shaft_min_diameter(c: Check) -> str:
     i = c.inputs
     k = i.get("keyway_increase", 0.0)
     sym = r"A_0 \sqrt[3]{\frac{P}{n}}" + (r" (1 + k)" if k else "")
-    numbers = rf"{num(i['A0'])} \times \sqrt[3]{{\frac{{{num(i['P'] / 1e3)}}}{{{num(i['n_rpm'])}}}}}"
+    # the power to 4 significant digits as the shaft table and the design step write it
+    # (0.04630 kW, not 0.0463: the number rule's sig, trailing zeros kept)
+    numbers = (rf"{num(i['A0'])} \times \sqrt[3]{{\frac{{{rule_sig(i['P'] / 1e3, 4, group=False)}}}"
+               rf"{{{num(i['n_rpm'])}}}}}")
     numbers += rf" \times (1 + {num(k)})" if k else ""
     rel = _relation(c)
     u = _unit(c.unit)

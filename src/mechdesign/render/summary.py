@@ -332,9 +332,21 @@ def _label(text: str) -> str:
     return text.replace("γ\\_min", r"$\gamma_{min}$").replace("J\\_F", "$J_F$")
 
 
+def _uniform(point: dict) -> bool:
+    """A requested point whose speed and acceleration are the same over the whole cycle
+    (sampled on the grid): a point of a crank turning at constant speed, whose answers
+    v = ωr, a = ω²r are given data, not results (the crank pin B of the textbook exercise)."""
+    for key in ("grid_velocity", "grid_acceleration"):
+        values = [v for v in point.get(key) or () if isinstance(v, (int, float))]
+        if len(values) < 2 or max(values) - min(values) > 1e-9 * max(max(values), 1e-300):
+            return False
+    return True
+
+
 def _asked_rows(document: dict, lang: str) -> list[list[str]]:
     """The answers at the crank angles the brief asks for (``analysis_requests``, e.g. φ45):
-    the output link's ω and α there, then the speed and acceleration of each requested point."""
+    the output link's ω and α there, then the speed and acceleration of each requested point
+    but a point in uniform circular motion (:func:`_uniform`)."""
     _ = tr(lang)
     asked = document.get("analysis_requests") or {}
     linkage = document.get("linkage") or {}
@@ -357,6 +369,8 @@ def _asked_rows(document: dict, lang: str) -> list[list[str]]:
                     rows.append([_("{symbol} at position {label}", symbol=symbol, label=where),
                                  text, unit])
         for pt in asked.get("points") or ():
+            if _uniform(pt):
+                continue        # the crank pin: v = ωr, a = ω²r at every position
             at = next((q for q in pt.get("positions") or () if q.get("label") == label), None)
             if at is None:
                 continue

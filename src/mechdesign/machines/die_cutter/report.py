@@ -337,14 +337,15 @@ def _amplification(r, p, _) -> dict:
     a = d.four.crank
     rows = []
     for gap, ph, u, fpt, ratio in amp.table:
-        # gap and M/F (v_D/ω, a length) to 0.01 mm, φ to 0.01°, the torque to 4 significant
-        # digits (README "Conventions"; M/F as in the equation of M_req below)
-        rows.append([length(gap * MM), _deg(ph, 2), f(u * MM, 2), f(fpt, 1, group=True), f(ratio, 2),
+        # gap and M/F (v_D/ω, a length) to 0.01 mm, φ to 0.01°, the torque and F/M (a force
+        # per torque, over two decades) to 4 significant digits (README "Conventions"; M/F
+        # as in the equation of M_req below)
+        rows.append([length(gap * MM), _deg(ph, 2), f(u * MM, 2), sig(fpt, 4), f(ratio, 2),
                      sig(p.cutting_force * u, 4)])
     top = "∞" if not np.isfinite(amp.top_ratio) else f(amp.top_ratio, 2)
     rows.append(["0", _deg(tm.top, 2), "0" if not np.isfinite(amp.top_ratio) else
                  f(a / amp.top_ratio * MM, 2), "∞" if not np.isfinite(amp.top_ratio) else
-                 f(amp.top_ratio / a, 1, group=True), top, "0"])
+                 sig(amp.top_ratio / a, 4), top, "0"])
     drive = r["drive"]
     motor = drive.motor
     # the motor alone: its rated torque brought to the distribution shaft

@@ -60,7 +60,9 @@ def verification_context(d, v, lang: str) -> dict:
             rows.append([name, f"{f(k.detail['signed'] * 100, 3)}%", f"≤ ±{f(k.limit * 100, 1)}%", ok])
         elif k.key == "motor_power":
             rows.append([name, _("{value}% ({detail} / {detail2} kW)", value=f(k.value * 100, 1),
-                                 detail=f(k.detail['required'] / 1e3, 4),
+                                 # the power needed to 4 significant digits (the
+                                 # rule of powers: 0.06296 kW, as in the shaft table)
+                                 detail=sig(k.detail['required'] / 1e3, 4),
                                  detail2=f(k.detail['rated'] / 1e3, 2)),
                          "≥ 0", ok])
         elif k.key == "margin":

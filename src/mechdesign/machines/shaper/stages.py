@@ -271,8 +271,10 @@ STAGES = [
 
 
 def stages(params: ShaperParams) -> list[Stage]:
-    """The shaper's stages; gear, drive and cam stages when the brief has those sections."""
-    return list(STAGES) + guide_bar.optional_stages(params)
+    """The shaper's stages; gear, drive and cam stages when the brief has those sections.
+    The flywheel rim (on the pinion or the crank shaft) loads its shaft with its weight, as
+    the slotter's does."""
+    return list(STAGES) + guide_bar.optional_stages(params, flywheel_weight=True)
 
 
 @dataclass(frozen=True)
