@@ -446,7 +446,9 @@ def force_drawing(mech, pos: dict, loads: dict, couples: dict, mu_l: float, mu_f
             known = loads.get(g.link, [])
             terms, m = _moment_terms(known, O, mu_l, [(f"MI{g.link}", couples.get(g.link, 0.0))])
             mb = -m
-            l_mm = rounded(abs(pos[g.tip] - O) / mu_l)
+            # the crank's length is a known dimension, not a measured arm: P_b = M_b / l_OA
+            # with the true length (its drawn length, l_OA/mu_l, kept unrounded as the arm)
+            l_mm = abs(pos[g.tip] - O) / mu_l
             pb_mag = mb / (l_mm * mu_l)
             pb = pb_mag * 1j * unit(pos[g.tip] - O)      # its moment about O is M_b
             moments.append(MomentEquation(g.link, g.pivot, tuple(terms), "Mb", 0.0, mb))

@@ -18,7 +18,7 @@ import numpy as np
 
 from . import figures as fig
 from ..i18n import N_, tr
-from .fmt import f, grouped, mpl_text, sci, tex_name
+from .fmt import exact, f, grouped, mpl_text, sci, tex_name
 from .label_layout import Label, place
 from .labels import LabelTable, mpl_point, pgettext, point_tex, tex_names
 
@@ -555,9 +555,10 @@ def _forces(pos, lang: str) -> list[dict]:
             u = sym(m.unknown)
             lhs, total, couples = _moment_tex(m)
             if m.unknown == "Pb":
+                # a definition evaluated (no equation solved): one chain, no "=>"; the crank's
+                # length is known (m.arm x mu_l in m), not measured
                 moments.append((f"P_b = \\frac{{M_b}}{{l_{{{m.point}}}}} = \\frac{{{_num(fg.balancing_torque)}}}"
-                                f"{{{_mm(m.arm)} \\times {_scale(mu_l)}}}", f"P_b = {_num(m.result)}"
-                                r"\ \mathrm{N}", None))
+                                f"{{{exact(m.arm * mu_l, decimals=5)}}} = {_num(m.result)}" r"\ \mathrm{N}", None, None))
                 continue
             where = f"\\Sigma M_{{{m.point}}}" + ("" if m.unknown == "Mb" else f"({m.link})")
             if m.unknown == "Mb":
