@@ -347,3 +347,20 @@ def test_every_table_of_the_graphical_section_has_its_own_caption(example_result
     assert len(set(captions)) == len(captions), captions
     group = "杆组" if lang == "zh" else "group"
     assert sum(group in c for c in captions) >= 2
+
+
+_FIELD_PATH = re.compile(r"(?<![\w.\\/])[a-z_][a-z0-9_]*(?:\.[a-z_][a-z0-9_]*)+(?![\w/.(])")
+_FILE_SUFFIX = re.compile(r"\.(png|svg|pdf|csv|dxf|json|md|yaml|docx|gif)$")
+
+
+@pytest.mark.parametrize("lang", ["zh", "en"])
+@pytest.mark.parametrize("name", EXAMPLES)
+def test_reports_do_not_address_the_brief_by_its_field_paths(example_results, name, lang):
+    """Issue 19 point 4: the design report is the student's 说明书, not a program manual: no
+    brief field path ("flywheel.shaft", "drive.motor.synchronous_rpm") in its prose (the
+    appendix's program listing, fenced code, is not prose); the terminal and the validation
+    messages name the fields."""
+    md, _brief = _markdown(example_results, name, lang)
+    text = _prose(re.sub(r"^```.*?^```", " ", md, flags=re.S | re.M))
+    paths = sorted({p for p in _FIELD_PATH.findall(text) if not _FILE_SUFFIX.search(p)})
+    assert not paths, paths
