@@ -505,8 +505,11 @@ def _kin(poly, lang: str, unit: str, rate_name: str, links: dict | None = None) 
             if t.symbol in g["seen"]:
                 continue
             g["seen"].add(t.symbol)
-            mag = "?" if not t.known else ("√" if t.direction == "known" else _numg(t.read))
-            dirs = direction(t.direction, lang) if t.direction else "?"
+            # a resultant (a^n + a^t of a point about a fixed pivot) is found by the polygon:
+            # magnitude and direction "?" in the construction, its segment measured
+            resultant = t.direction == "sum"
+            mag = "?" if not t.known or resultant else ("√" if t.direction == "known" else _numg(t.read))
+            dirs = direction(t.direction, lang) if t.direction and not resultant else "?"
             if t.known and (t.direction == "known" or t.length == 0):
                 seg = length = value = "—"
             else:
