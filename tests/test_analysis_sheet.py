@@ -213,6 +213,18 @@ def test_force_polygons_close_and_the_crank_balances_the_power(run):
         ref = _power_torque(model, raw, forces, i)
         peak = max(np.max(np.abs(forces.balancing_torque)), 1e-9)
         assert abs(mb - ref) <= 1e-8 * peak, (name, label, mb, ref)
+        # with P_b at the crank pin in place of M_b the frame reaction closing the polygon is
+        # R' = R − P_b, named with its prime as the graphical method's text names it (the A1
+        # cell wrote "FR72 = 193 N" beside the report's F_R72 = 2588 N); P_b·l = M_b
+        if any(v.name == "Pb" for v in crank.vectors):
+            pb = crank.vector("Pb").value
+            tip = raw.points[groups[0].tip].pos[i] - raw.points[groups[0].pivot].pos[i]
+            assert (np.conj(tip) * pb).imag == pytest.approx(mb, rel=1e-9, abs=1e-9 * peak)
+            for v in crank.vectors:
+                if v.role == "reaction":
+                    assert v.name.endswith("'"), (name, label, v.name)
+                    r = complex(forces.reactions[v.name[:-1]][i])
+                    assert abs(v.value - (r - pb)) <= 1e-9 * max(abs(w.value) for w in crank.vectors), (name, label, v.name)
 
 
 def _text_boxes(sheet):

@@ -369,3 +369,21 @@ def test_the_cam_chapter_names_its_data_files_in_words(example_results, name, la
     assert not found, "\n".join(found[:6])
     words = "随报告附带" if lang == "zh" else "delivered with the report"
     assert words in md
+
+
+
+_FIELD_PATH = re.compile(r"(?<![\w.\\/])[a-z_][a-z0-9_]*(?:\.[a-z_][a-z0-9_]*)+(?![\w/.(])")
+_FILE_SUFFIX = re.compile(r"\.(png|svg|pdf|csv|dxf|json|md|yaml|docx|gif)$")
+
+
+@pytest.mark.parametrize("lang", ["zh", "en"])
+@pytest.mark.parametrize("name", EXAMPLES)
+def test_reports_do_not_address_the_brief_by_its_field_paths(example_results, name, lang):
+    """Issue 19 point 4: the design report is the student's 说明书, not a program manual: no
+    brief field path ("flywheel.shaft", "drive.motor.synchronous_rpm") in its prose (the
+    appendix's program listing, fenced code, is not prose); the terminal and the validation
+    messages name the fields."""
+    md, _brief = _markdown(example_results, name, lang)
+    text = _prose(re.sub(r"^```.*?^```", " ", md, flags=re.S | re.M))
+    paths = sorted({p for p in _FIELD_PATH.findall(text) if not _FILE_SUFFIX.search(p)})
+    assert not paths, paths

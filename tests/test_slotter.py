@@ -154,4 +154,6 @@ def test_flywheel_speed_note_and_the_motor_choice(r):
         if c.motor.designation != "Y132S-8":
             assert c.motor.designation in note
             assert f"{c.motor.full_load_rpm / 60 / 3:.2f}" in note      # the belt's ratio
-    assert "Y90S-6 (0.75 kW)" in note and "synchronous_rpm: 1000" in note
+    # the smallest motor the maximum ranges allow, named with its synchronous speed (910
+    # r/min full load → 1000 synchronous); the report names no brief field (issue 19 p.4)
+    assert "Y90S-6 (0.75 kW, synchronous 1000 rpm)" in note and "synchronous_rpm" not in note

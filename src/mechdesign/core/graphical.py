@@ -72,7 +72,8 @@ def intersect(p1: complex, d1: complex, p2: complex, d2: complex) -> complex:
 @dataclass(frozen=True)
 class Term:
     """One vector of a vector equation (a column of its 大小/方向 table) or of a force
-    polygon. ``direction`` codes: "perp:BC" (⊥ BC), "to:CB" (from C towards B), "guide:θ"
+    polygon. ``direction`` codes: "perp:BC" (⊥ BC), "to:CB" (from C towards B), "sum" (a
+    resultant: its direction is the polygon's segment), "guide:θ"
     (∥ the fixed guide at angle θ [rad]), "bar:4" (∥ guide bar 4), "rot:4" (v_r turned 90°
     in the sense of ω4), "known" (from the polygon drawn before)."""
 
@@ -265,8 +266,11 @@ def kinematic_drawing(mech, pos: dict, omega2: float, kind: str, scale: float,
             d.equations.append(VectorEquation(name, (left,), tuple(terms)))
         elif isinstance(g, LinkPoint):
             terms = rot(g.origin, g.name, g.link)
+            # about a fixed pivot: v ⊥ the radius, and a along it only without a tangential
+            # part; a^n + a^t is a resultant whose direction the polygon gives ("sum")
             left = _abs_term(d, x, g.name, I(g.name),
-                             direction=terms[0].direction if g.origin in frame else "")
+                             direction=("" if g.origin not in frame else
+                                        terms[0].direction if len(terms) == 1 else "sum"))
             d.equations.append(VectorEquation(name, (left,), tuple(known(g.origin) + terms)))
         elif isinstance(g, RRR):
             B, D, C, l1, l2 = g.b, g.d, g.c, g.link1, g.link2
@@ -446,7 +450,9 @@ def force_drawing(mech, pos: dict, loads: dict, couples: dict, mu_l: float, mu_f
             known = loads.get(g.link, [])
             terms, m = _moment_terms(known, O, mu_l, [(f"MI{g.link}", couples.get(g.link, 0.0))])
             mb = -m
-            l_mm = rounded(abs(pos[g.tip] - O) / mu_l)
+            # the crank's length is a known dimension, not a measured arm: P_b = M_b / l_OA
+            # with the true length (its drawn length, l_OA/mu_l, kept unrounded as the arm)
+            l_mm = abs(pos[g.tip] - O) / mu_l
             pb_mag = mb / (l_mm * mu_l)
             pb = pb_mag * 1j * unit(pos[g.tip] - O)      # its moment about O is M_b
             moments.append(MomentEquation(g.link, g.pivot, tuple(terms), "Mb", 0.0, mb))

@@ -20,7 +20,7 @@ link 3 is ``n3'``; the Coriolis point ``k'``. Force polygons number their vertic
 """
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 
 
@@ -252,5 +252,15 @@ def linkage_force_polygons(mech, motion, index: int, position: str, bodies, grav
                 own = dict(reactions)
                 for j in mech.joints[g.name]:
                     own[j.name] = complex(reactions[j.name]) - pb
-        out.append(g.force_polygon(mech.joints, group_loads, own, moments, position))
+        poly = g.force_polygon(mech.joints, group_loads, own, moments, position)
+        if group_loads is not loads:
+            # with P_b in place of M_b the frame reaction is the primed one (R' = R − P_b),
+            # as the graphical method's text names it
+            primed = {v.name: v.name + "'" for v in poly.vectors if v.role == "reaction"}
+            poly = replace(poly, vectors=tuple(replace(v, name=primed.get(v.name, v.name))
+                                               for v in poly.vectors),
+                           equations=tuple(replace(e, left=tuple(primed.get(n, n) for n in e.left),
+                                                   right=tuple(primed.get(n, n) for n in e.right))
+                                           for e in poly.equations))
+        out.append(poly)
     return out

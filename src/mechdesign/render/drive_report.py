@@ -93,9 +93,9 @@ def _oversize(d, _) -> str | None:
              lo=f(rec[0], 0), hi=f(rec[1], 0), items=items)
     if alt is not None:
         text = sentences(_, text, _(
-            "The smallest motor the maximum ranges allow is {motor} ({P} kW), with {need} for "
-            "{names}, beyond its recommended range; to design with it, set "
-            "drive.motor.synchronous_rpm: {sync} in the brief.", motor=alt["c"].motor.designation,
+            "The smallest motor the maximum ranges allow is {motor} ({P} kW, synchronous {sync} "
+            "rpm), with {need} for {names}, beyond its recommended range; this design keeps the "
+            "motor whose stage ratios lie in their recommended ranges.", motor=alt["c"].motor.designation,
             P=f(alt["c"].motor.power / 1e3, 2), need=f(alt["need"], 2), names=names,
             sync=f(alt["c"].synchronous_rpm, 0)))
     return text

@@ -18,7 +18,7 @@ import numpy as np
 
 from . import figures as fig
 from ..i18n import N_, tr
-from .fmt import f, grouped, mpl_text, sci, tex_name
+from .fmt import exact, f, grouped, mpl_text, sci, tex_name
 from .label_layout import Label, place
 from .labels import LabelTable, mpl_point, pgettext, point_tex, tex_names
 
@@ -519,8 +519,11 @@ def _kin(poly, lang: str, unit: str, rate_name: str, links: dict | None = None) 
             if t.symbol in g["seen"]:
                 continue
             g["seen"].add(t.symbol)
-            mag = "?" if not t.known else ("√" if t.direction == "known" else _numg(t.read))
-            dirs = direction(t.direction, lang) if t.direction else "?"
+            # a resultant (a^n + a^t of a point about a fixed pivot) is found by the polygon:
+            # magnitude and direction "?" in the construction, its segment measured
+            resultant = t.direction == "sum"
+            mag = "?" if not t.known or resultant else ("√" if t.direction == "known" else _numg(t.read))
+            dirs = direction(t.direction, lang) if t.direction and not resultant else "?"
             if t.known and (t.direction == "known" or t.length == 0):
                 seg = length = value = "—"
             else:
@@ -569,9 +572,10 @@ def _forces(pos, lang: str) -> list[dict]:
             u = sym(m.unknown)
             lhs, total, couples = _moment_tex(m)
             if m.unknown == "Pb":
+                # a definition evaluated (no equation solved): one chain, no "=>"; the crank's
+                # length is known (m.arm x mu_l in m), not measured
                 moments.append((f"P_b = \\frac{{M_b}}{{l_{{{m.point}}}}} = \\frac{{{_num(fg.balancing_torque)}}}"
-                                f"{{{_mm(m.arm)} \\times {_scale(mu_l)}}}", f"P_b = {_num(m.result)}"
-                                r"\ \mathrm{N}", None))
+                                f"{{{exact(m.arm * mu_l, decimals=5)}}} = {_num(m.result)}" r"\ \mathrm{N}", None, None))
                 continue
             where = f"\\Sigma M_{{{m.point}}}" + ("" if m.unknown == "Mb" else f"({m.link})")
             if m.unknown == "Mb":
