@@ -529,3 +529,32 @@ def test_amplification_table_writes_f_per_m_to_four_significant_digits(shipped):
             digits = (integer + decimals).lstrip("0")
             assert len(digits) == 4, cell
         assert float(plain) == pytest.approx(float(f"{1 / u:.4g}"), rel=1e-12), cell
+
+
+def test_two_peak_torques_of_the_distribution_shaft_are_told_apart(shipped):
+    """Issue 19 point 5: the table of the shafts after the flywheel gives the distribution
+    shaft a peak torque 0.5 % above the force analysis's max|M_b| (the drive's torque at the
+    realised speed, with the losses after that shaft, × the peak factor); the report says
+    which is which, with both values: the table's (its mean × the factor) and the largest
+    |M_b| of the analysis's own torque curve (read here from the samples: a bound the exact
+    extreme may only exceed by the grid's resolution). Torques to 4 significant digits."""
+    from mechdesign.i18n import tr
+    from mechdesign.machines.die_cutter.report import _flywheel
+    from mechdesign.numbers import sig
+
+    r = shipped
+    ctx = _flywheel(r, r["params"], r["brief"], tr("en"))
+    last = r["peak_shafts"][-1]
+    assert last.index == len(r["brief"].drive.stages)
+    assert last.peak_torque == pytest.approx(last.torque * r["drive"].peak_factor, rel=1e-12)
+    note = ctx["peak_note"]
+    assert sig(last.peak_torque) in note and sig(last.torque) in note
+    sampled = float(np.max(np.abs(r["press_forces"].balancing_torque)))
+    stated = float(note.split("is ")[-1].split(" N")[0].replace(" ", "").replace("\u202f", ""))
+    assert sampled <= stated * (1 + 1e-4) and stated <= sampled * 1.01      # exact ≥ sampled
+    assert abs(last.peak_torque / stated - 1) > 1e-3          # two values: both named
+    for row in ctx["peak_rows"]:
+        for cell in row[2:4]:
+            cell = cell.replace("\u202f", "").replace(" ", "")
+            digits = cell.replace(".", "").lstrip("0")
+            assert len(digits) <= max(4, len(cell.split(".")[0])), row

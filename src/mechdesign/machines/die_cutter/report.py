@@ -395,10 +395,22 @@ def _flywheel(r, p, b, _) -> dict:
     # each column what its header says: the torsion estimate A0·∛(P/n)(1 + 5 %) of the mean
     # power (the drive stage's d_min), the same of the peak power, and the seat diameter the
     # drive design reached with its strength checks at the peak torque
-    rows = [[_shaft(s.index, stages, _), f(s.speed_rpm, 2), f(s.torque, 1, group=True),
-             f(s.peak_torque, 1, group=True), f(designs[s.index].d_min * MM, 1),
+    rows = [[_shaft(s.index, stages, _), f(s.speed_rpm, 2), sig(s.torque),
+             sig(s.peak_torque), f(designs[s.index].d_min * MM, 1),
              f(s.d_peak * MM, 1), f(s.d_seat * MM, 0)]
             for s in r["peak_shafts"]]
+    # the distribution shaft's peak in the table is the drive's torque there (the mean power
+    # at the realised speed, through the losses after that shaft) × the peak factor; the
+    # mechanism's own max|M_b| (the analysis chapter) is at the nominal speed: say which is which
+    last = [s for s in r["peak_shafts"] if s.index == stages]
+    peak_note = (_("On the distribution shaft the table's peak torque {T} N·m is the drive's torque "
+                   "there ({Tm} N·m: the mean power at the realised {n} rpm and the losses after "
+                   "that shaft) × the peak factor {k}; the mechanism's own largest $|M_b|$ of the "
+                   "force analysis, at the nominal {n0} rpm, is {Mb} N·m.",
+                   T=sig(last[0].peak_torque), Tm=sig(last[0].torque), n=f(last[0].speed_rpm, 2),
+                   k=f(drive.peak_factor, 2), n0=f(p.shaft_rpm, 2),
+                   Mb=sig(r["press_forces"].peak_torque))
+                 if last and drive.peak_factor > 0 else "")
     # the flywheel is sized at the nominal speed (the distribution shaft's n, at which M_b and
     # ΔW_max are computed, × the realised ratios after the flywheel); the drive realises the
     # motor's full-load speed through its realised ratios: the same flywheel there gives
@@ -430,7 +442,7 @@ def _flywheel(r, p, b, _) -> dict:
             "jf": f(fl.inertia, 3), "jf_crank": f(fl.inertia_on_crank, 1),
             "D": f(fl.rim.diameter * MM, 0), "b": f(fl.rim.width * MM, 1),
             "Hr": f(fl.rim.height * MM, 1), "m": f(fl.rim.rim_mass, 1),
-            "speed": f(fl.rim.rim_speed, 2), "peak_rows": rows, **speeds,
+            "speed": f(fl.rim.rim_speed, 2), "peak_rows": rows, "peak_note": peak_note, **speeds,
             "share": f(fl.max_energy_swing / r["amplification"].cut_work * 100, 1),
             "place": _placement(r, p, b, _)}
 
