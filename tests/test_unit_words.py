@@ -162,8 +162,9 @@ def _line_end_trials() -> str:
     return "\n\n".join(paras) + "\n"
 
 
-def _filtered(tmp_path: Path, markdown: str) -> str:
-    """``markdown`` through pandoc's typst writer with the unit filter, as render/pdf.py runs it."""
+def _filtered(tmp_path: Path, markdown: str, lang: str = "en") -> str:
+    """``markdown`` through pandoc's typst writer with the unit filter, as render/pdf.py runs it
+    (``lang`` the report's language in the metadata: render/pdf.py writes zh as zh-Hans)."""
     import pypandoc
 
     from mechdesign.render.unitjoin import LUA_FILTER
@@ -172,6 +173,7 @@ def _filtered(tmp_path: Path, markdown: str) -> str:
     (tmp_path / "in.md").write_text(markdown, encoding="utf-8")
     return subprocess.run([pypandoc.get_pandoc_path(), "--from=markdown+tex_math_dollars",
                            "--to=typst", "--wrap=none", f"--lua-filter={tmp_path / 'f.lua'}",
+                           f"--metadata=lang:{'zh-Hans' if lang == 'zh' else lang}",
                            str(tmp_path / "in.md")], capture_output=True, check=True).stdout.decode()
 
 
@@ -189,6 +191,26 @@ def test_the_filter_joins_numbers_units_and_relations(tmp_path):
     assert "$n$~=~60.00~r/min" in typ   # the symbol set italic too
     assert "（构件 6）\u2060=~1962~N" in typ   # a relation ending a word: joined on both sides
     assert "x = 5 mm" in typ                 # a code block as written
+
+
+def test_a_break_before_a_long_run_is_marked_in_chinese_paragraphs(tmp_path):
+    """zh: "#run-break;" (templates/report.typ: the line before ends unjustified when the run
+    went to the next line) where a line may break before an unbreakable run of at least six
+    characters: after a space or a Chinese character, before a boxed formula, a value joined
+    by no-break spaces, a Latin word, an opening bracket before a run; never after an opening
+    bracket (no break there), before a short run, in a table's cell, or in English."""
+    md = ("动能增量 $\\Delta E = \\int M_d d\\varphi$ 的最大值即最大盈亏功 $\\Delta W_{max}$ = 3499.5 J，"
+          "在 $x$ = 1 处，拉直共线（$L_{AC} = L_{BC} + L_{AB}$），粗实线（OUTLINE）、细点画线（CENTER）\n\n"
+          "| a | b |\n|---|---|\n| 转角 $\\varphi = 120.5$ | 细实线 CONSTRUCTION |\n")
+    typ = _filtered(tmp_path, md, lang="zh")
+    para, table = typ.split("#table", 1) if "#table" in typ else (typ, "")
+    assert "动能增量 #run-break;#box($Delta E" in para            # after a space, a boxed formula
+    assert "盈亏功 #run-break;$Delta W_max$~=~3499.5~J" in para  # a value joined by no-break spaces
+    assert "在 $x$~=~1" in para                                     # "x = 1": too short
+    assert "拉直共线#run-break;（#box(" in para                     # the bracket goes with the run
+    assert "粗实线#run-break;（OUTLINE）、细点画线#run-break;（CENTER）" in para
+    assert "（#run-break;" not in typ and "run-break" not in table
+    assert "run-break" not in _filtered(tmp_path, md, lang="en")
 
 
 def test_min_and_max_subscripts_are_set_upright(tmp_path):

@@ -9,7 +9,10 @@ and likewise the space after a relation sign ("=", "≈", "≤", "≥") before a
 before a relation sign written alone (the symbol stays with its "="), and the
 spaces around "×" between two numbers ("1.4 × 10⁻¹⁴ mm"). For typst, which breaks an inline
 formula after its relation ("$R_{BV} = -1978.4$ N" as "R_BV =" | "−1978.4 N"), a short
-inline formula holding a relation is set in a box (``#box($…$);``), unbroken. It works on pandoc's document
+inline formula holding a relation is set in a box (``#box($…$);``), unbroken; in a Chinese
+report's paragraphs ``#run-break;`` marks where a line may break before an unbreakable run of
+six characters or more (templates/report.typ ends the line there unjustified when the run
+went to the next line: justified, its Chinese characters stood apart). It works on pandoc's document
 tree, so formulas, code blocks and file names are never touched; the Markdown itself
 (report.md) stays as written.
 """
@@ -242,9 +245,158 @@ local function upright_subscripts(el)
   return el
 end
 
+-- zh: a line that an unbreakable run does not fit (a boxed formula, "$ΔW$ = 3499.5 J" held
+-- together by no-break spaces, a long Latin word) ends short instead of spreading its
+-- characters apart: "#run-break;" (templates/report.typ) goes where a line may break before
+-- such a run. Only before a run of at least RUN_MIN characters: a shorter one leaves a gap
+-- too small to matter.
+local RUN_MIN = 6
+local OPENING = {"（", "“", "‘", "《", "「", "『", "【", "〈"}
+
+local function has_cjk(t)
+  for _, c in utf8.codes(t) do
+    if (c >= 0x3000 and c <= 0x9FFF) or (c >= 0xFF00 and c <= 0xFFEF) then return true end
+  end
+  return false
+end
+
+local function opened_latin(t)
+  -- a full-width opening bracket before a Latin word: "（OUTLINE）"
+  for _, o in ipairs(OPENING) do
+    if t:sub(1, #o) == o and t:sub(#o + 1):match("^[%w]") then return true end
+  end
+  return false
+end
+
+local function run_length(inlines, i)
+  -- characters of the unbreakable run from inlines[i]: up to a space or a Chinese character
+  -- (a full-width opening bracket before it counts)
+  local n = 0
+  for j = i, #inlines do
+    local el = inlines[j]
+    if el.t == "Math" then n = n + utf8.len(el.text)
+    elseif el.t == "Str" then
+      local t = el.text
+      if j == i and opened_latin(t) then
+        n = n + 2
+        t = t:sub(utf8.offset(t, 2))
+      end
+      for _, c in utf8.codes(t) do
+        if (c >= 0x3000 and c <= 0x9FFF) or (c >= 0xFF00 and c <= 0xFFEF) then return n end
+        n = n + 1
+      end
+    elseif el.t == "RawInline" then
+    else return n end
+  end
+  return n
+end
+
+local function may_break_before(prev)
+  -- a Space, or a Chinese character or closing punctuation ends the inline before
+  if prev == nil then return false end
+  if prev.t == "Space" then return true end
+  if prev.t ~= "Str" then return false end
+  local last = utf8.offset(prev.text, -1)
+  if last == nil then return false end
+  local c = prev.text:sub(last)
+  for _, o in ipairs(OPENING) do
+    if c == o then return false end
+  end
+  return has_cjk(c)
+end
+
+local function is_cjk_code(c)
+  return (c >= 0x3000 and c <= 0x9FFF) or (c >= 0xFF00 and c <= 0xFFEF)
+end
+
+local function is_opening(ch)
+  for _, o in ipairs(OPENING) do
+    if ch == o then return true end
+  end
+  return false
+end
+
+local function starts_run(el)
+  return el ~= nil and ((el.t == "Math" and el.mathtype == "InlineMath")
+    or (el.t == "RawInline" and el.text == "#box(")
+    or (el.t == "Str" and (el.text:match("^[%w%-+(]") ~= nil or opened_latin(el.text))))
+end
+
+local function cuts_in(inlines, i)
+  -- byte offsets inside the word inlines[i] where a line may break before a long run: after
+  -- a Chinese character (not an opening bracket), before a Latin run ("粗实线（OUTLINE）")
+  -- or before an opening bracket that ends the word and a run after it ("共线（$L = …$）")
+  local t, cuts = inlines[i].text, {}
+  local chars = {}
+  for pos, c in utf8.codes(t) do chars[#chars + 1] = {pos, c} end
+  for k = 2, #chars do
+    local a = utf8.char(chars[k - 1][2])
+    local pos = chars[k][1]
+    if is_cjk_code(chars[k - 1][2]) and not is_opening(a) then
+      local rest = t:sub(pos)
+      if rest:match("^[%w]") or opened_latin(rest) then
+        local n, reached = 0, true
+        local body = rest
+        if opened_latin(rest) then n = 2; body = rest:sub(utf8.offset(rest, 2)) end
+        for _, c in utf8.codes(body) do
+          if is_cjk_code(c) then reached = false; break end
+          n = n + 1
+        end
+        if reached then n = n + run_length(inlines, i + 1) end
+        if n >= RUN_MIN then cuts[#cuts + 1] = pos end
+      elseif k == #chars and is_opening(rest) and starts_run(inlines[i + 1])
+             and run_length(inlines, i + 1) + 2 >= RUN_MIN then
+        cuts[#cuts + 1] = pos
+      end
+    end
+  end
+  return cuts
+end
+
+local function run_breaks(para)
+  local inlines = para.content
+  local out, changed = {}, false
+  local MARK = function() return pandoc.RawInline("typst", "#run-break;") end
+  for i = 1, #inlines do
+    local el = inlines[i]
+    local lone_opening = el.t == "Str" and is_opening(el.text) and starts_run(inlines[i + 1])
+      and run_length(inlines, i + 1) + 2 >= RUN_MIN
+    if may_break_before(inlines[i - 1])
+       and (lone_opening or (starts_run(el) and run_length(inlines, i) >= RUN_MIN)) then
+      out[#out + 1] = MARK()
+      changed = true
+    end
+    if el.t == "Str" then
+      local cuts, from = cuts_in(inlines, i), 1
+      for _, pos in ipairs(cuts) do
+        out[#out + 1] = pandoc.Str(el.text:sub(from, pos - 1))
+        out[#out + 1] = MARK()
+        from = pos
+      end
+      if #cuts > 0 then
+        el = pandoc.Str(el.text:sub(from))
+        changed = true
+      end
+    end
+    out[#out + 1] = el
+  end
+  if changed then return pandoc.Para(out) end
+  return nil
+end
+
+local function run_breaks_in(doc)
+  -- zh reports (the lang of the metadata), paragraphs only: never in a table's cells (their
+  -- columns are measured unbroken), a caption or a heading (not justified)
+  if not FORMAT:match("typst") then return nil end
+  local lang = doc.meta.lang and pandoc.utils.stringify(doc.meta.lang) or ""
+  if not lang:match("^zh") then return nil end
+  return doc:walk({ Para = run_breaks })
+end
+
 return {
   { Math = upright_subscripts },
   { Inlines = Inlines },
   { Math = boxed },
+  { Pandoc = run_breaks_in },
 }
 """.replace("@UNITS@", _lua_list(UNITS)).replace("@RELATIONS@", _lua_list(RELATIONS))
