@@ -251,7 +251,10 @@ end
 -- such a run. Only before a run of at least RUN_MIN characters: a shorter one leaves a gap
 -- too small to matter.
 local RUN_MIN = 6
-local OPENING = {"（", "“", "‘", "《", "「", "『", "【", "〈"}
+-- the opening brackets and quotes: full-width parenthesis, curly quotes, book-title and
+-- corner brackets (as code points: no Chinese literal in the code)
+local OPENING = {utf8.char(0xFF08), utf8.char(0x201C), utf8.char(0x2018), utf8.char(0x300A),
+                 utf8.char(0x300C), utf8.char(0x300E), utf8.char(0x3010), utf8.char(0x3008)}
 
 local function has_cjk(t)
   for _, c in utf8.codes(t) do
@@ -261,7 +264,7 @@ local function has_cjk(t)
 end
 
 local function opened_latin(t)
-  -- a full-width opening bracket before a Latin word: "（OUTLINE）"
+  -- a full-width opening bracket before a Latin word: "(OUTLINE)" in full-width brackets
   for _, o in ipairs(OPENING) do
     if t:sub(1, #o) == o and t:sub(#o + 1):match("^[%w]") then return true end
   end
@@ -324,8 +327,9 @@ end
 
 local function cuts_in(inlines, i)
   -- byte offsets inside the word inlines[i] where a line may break before a long run: after
-  -- a Chinese character (not an opening bracket), before a Latin run ("粗实线（OUTLINE）")
-  -- or before an opening bracket that ends the word and a run after it ("共线（$L = …$）")
+  -- a Chinese character (not an opening bracket), before a Latin run (a Chinese word, then "(OUTLINE)" in full-width brackets)
+  -- or before an opening bracket that ends the word and a run after it (a word, then a
+  -- full-width bracket and "$L = …$")
   local t, cuts = inlines[i].text, {}
   local chars = {}
   for pos, c in utf8.codes(t) do chars[#chars + 1] = {pos, c} end
