@@ -299,6 +299,49 @@ def continued_missing(pdf) -> list[tuple[int, int]]:
     return bad
 
 
+def tables_interrupted(pdf) -> list[tuple[int, str]]:
+    """(page, what) of every table split across pages with something between its parts
+    (issue 19 point 2: lockbeam tables 12 and 14, cam_7_3 en table 4, die_cutter table 48 with
+    a figure between them). A table that goes on to page P ("续表 N" / "Table N (continued)")
+    must stand on page P − 1 down to the page's foot and go on at the top of page P: no row
+    (a figure's caption, text) and no image above the continued label on P, no figure (its
+    caption or image) below the table's start on P − 1, and no page between its parts."""
+    import pymupdf
+
+    bad = []
+    where = {}                         # table number -> (page, top) of its last part's start
+    with pymupdf.open(pdf) as doc:
+        for number, page in enumerate(doc, 1):
+            if _is_sheet(page):
+                continue
+            rows = page_rows(page)
+            images = [info["bbox"] for info in page.get_image_info()]
+            for k, (top, _, text) in enumerate(rows):
+                cont = _CONTINUED.match(text)
+                if cont:
+                    n = int(cont.group(1) or cont.group(2))
+                    start = where.get(n)
+                    if k > 0 or any(b[3] < top for b in images):
+                        above = rows[0][2] if k > 0 else "an image"
+                        bad.append((number, f"table {n} continued under {above[:30]!r}"))
+                    if start is None or start[0] != number - 1:
+                        bad.append((number, f"table {n} continued from p.{start and start[0]}"))
+                    else:
+                        before = doc[number - 2]
+                        after = [r[2] for r in page_rows(before)
+                                 if r[0] > start[1] and _FIGURE_CAPTION.match(r[2])]
+                        if after or any(b[1] > start[1] for b in
+                                        (i["bbox"] for i in before.get_image_info())):
+                            what = after[0][:30] if after else "an image"
+                            bad.append((number - 1, f"table {n} ends its page above {what!r}"))
+                    where[n] = (number, top)
+                    continue
+                m = _TABLE_CAPTION.match(text)
+                if m:
+                    where[int(m.group(1) or m.group(2))] = (number, top)
+    return bad
+
+
 def colon_at_page_foot(pdf) -> list[tuple[int, str]]:
     """(page, row) of every page whose last text row ends in "：" or ":" (a lead-in
     sentence parted from the list or table it introduces). A program listing's own rows
