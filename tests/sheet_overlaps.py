@@ -142,3 +142,26 @@ def findings(page) -> list[str]:
             if cores_overlap(a, b):
                 out.append(f"{where(a)} overlaps {where(b)}")
     return out
+
+
+def touching_labels(sheet, clearance: float = 0.3, space: float = 0.3) -> list[str]:
+    """Pairs of texts of a sheet model (render/sheet.py; the DXF writes each as one TEXT or
+    MTEXT at the same insert point) whose boxes — the insert point, the height and the
+    width estimated as the sheet does (``text_width``: a Latin character 0.62 of the height,
+    a Chinese one square) — come closer than ``clearance`` [mm]: two labels read as one
+    ("3" and "5" side by side read "35"). Turned texts (axis titles, dimension texts) are
+    left to :func:`findings`."""
+    from mechdesign.render.sheet import Text, plain, text_box
+
+    boxes = [(e.text, text_box(e.position, e.text, e.height, e.halign, e.valign))
+             for e in sheet.entities
+             if isinstance(e, Text) and abs(e.angle) < 1e-9 and plain(e.text).strip()]
+    out = []
+    for i, (ta, a) in enumerate(boxes):
+        for tb, b in boxes[i + 1:]:
+            gap = space * max(a[3] - a[1], b[3] - b[1])
+            if (a[0] < b[2] + gap and b[0] < a[2] + gap
+                    and a[1] < b[3] + clearance and b[1] < a[3] + clearance):
+                out.append(f"{plain(ta)!r} at ({a[0]:.1f}, {a[1]:.1f}) and {plain(tb)!r} at "
+                           f"({b[0]:.1f}, {b[1]:.1f}) mm")
+    return out

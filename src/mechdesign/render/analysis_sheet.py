@@ -349,7 +349,7 @@ def _draw_polygon(s: Sheet, pg: Polygon, mu: float, box, keep_out=()) -> None:
     bx0, by0, bx1, by1 = box
     centre = (pts.real.min() + pts.real.max()) / 2 + 1j * (pts.imag.min() + pts.imag.max()) / 2
     v = s.view((bx0 + bx1) / 2 + 1j * (by0 + by1) / 2 - centre, 1.0 / mu)
-    placer = LabelPlacer(s)
+    placer = LabelPlacer(s, pad=0.8)   # labels a word space apart
     for b in keep_out:
         placer.block_box(b)
     for vec in pg.vectors:
@@ -421,6 +421,26 @@ def _block_dimension(placer: LabelPlacer, d: Dimension) -> None:
     half = text_width(text, d.height) / 2 + 0.5
     for t in np.linspace(-half, half, max(2, int(2 * half / 1.5) + 1)):
         placer.block(mid + u * t, d.height / 2 + 0.3)
+
+
+def _radius_angle(s: Sheet, placer: LabelPlacer, v, centre: complex, radius: float) -> float:
+    """The direction [rad, model] of a radius dimension about ``centre`` whose text (outside
+    the circle, render/sheet.py dimension_geometry) covers the fewest points of the lines
+    drawn so far; −135° (the old place) when several tie."""
+    pts = placer._drawn_points()
+    best = None
+    for k in range(24):
+        ang = -0.75 * np.pi + k * np.pi / 12
+        d = Dimension(v.p(centre), v.p(centre + radius * np.exp(1j * ang)), 0.0, radius,
+                      kind="radius")
+        _lines, _arrows, text, pos, tang = dimension_geometry(d)
+        w = text_width(text, d.height)
+        local = (pts - pos) * np.exp(-1j * tang)      # the text's frame: x along, y up
+        hits = np.count_nonzero((np.abs(local.real) < w / 2 + 0.5) & (local.imag > -0.5)
+                                & (local.imag < d.height + 0.5))
+        if best is None or hits < best[0]:
+            best = (hits, ang)
+    return float(best[1])
 
 
 def _name(model, link: str, lang: str) -> str | None:
@@ -555,8 +575,9 @@ def _mechanism(s: Sheet, model, k, lab: dict, box, chosen: list[str], lang: str)
     n_before = len(s.entities)
     # Dimensions: the crank, the frame, the output's stroke, each fixed guide's distance
     # from the first frame point off it.
-    v.dimension(piv, piv + crank.length * mm * np.exp(-0.75j * np.pi), 0.0, kind="radius",
-                measurement=crank.length * mm)
+    # the crank's radius where its text, outside the circle, crosses the fewest lines drawn
+    v.dimension(piv, piv + crank.length * mm * np.exp(1j * _radius_angle(s, placer, v, piv, crank.length * mm)),
+                0.0, kind="radius", measurement=crank.length * mm)
     frames = list(mech.frame_points.values())
     if len(frames) >= 2:
         a, b = frames[0] * mm, frames[1] * mm

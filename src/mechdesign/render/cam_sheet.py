@@ -340,7 +340,7 @@ def _profile(sheet: Sheet, c, g: _ProfileGeometry, divs, n: float, box, lab):
     # -- the follower in its start position, cam centre
     outside = _follower_start(sheet, view, g, n, labels)
     ground(view, 0, 7.0, -np.pi / 2)
-    labels.text(O + complex(-3.0, -3.0), sheet_point("O"), 3.5, "right", "top")
+    labels.place(O, sheet_point("O"), 3.5, prefer=-1 - 1j, gap=2.5)   # between the rays
 
     # -- ω and r0 inside the cam, where no construction line passes: ω in the first part
     # of the widest free sector, r0 in the widest sector left (clear of the centre lines)
@@ -366,7 +366,7 @@ def _profile(sheet: Sheet, c, g: _ProfileGeometry, divs, n: float, box, lab):
         taken += _crossings(rays, f * g.r0)
     rc, _ = _largest_gap(taken)
     view.dimension(0, g.r0 * np.exp(1j * rc), 0.0, text=f"{sub('r', '0')}={fmt.length(g.r0)}", kind="radius",
-                   height=3.5)
+                   height=3.5, outside=0)
     if g.kind == "roller":
         _roller_dimension(sheet, view, g, n, gap_c, labels)
 

@@ -145,7 +145,9 @@ class Dimension:
     #                                  diameter (p0, p1 the ends of the diameter)
     layer: str = "DIMENSIONS"
     height: float = 3.5
-    outside: int = -1                # an aligned text too long for its line: beyond p0 (−1) or p1 (+1)
+    outside: int = -1                # an aligned text too long for its line: beyond p0 (−1) or
+    #                                  p1 (+1); a radius' text: outside the circle (≠ 0) or on
+    #                                  the line inside it (0)
 
 
 #: A dimension text's gap above its dimension line and from an extension line [mm]
@@ -171,7 +173,8 @@ def dimension_geometry(d: Dimension):
     a line. An aligned text that does not fit between the arrows goes beyond the extension
     line (``d.outside``: before p0 or after p1) on the dimension line drawn on under it;
     a radius' or diameter's text outside the circle, on the line from the centre drawn on
-    past the arrow (the lines inside the circle — crank positions, rays — stay clear of it)."""
+    past the arrow (the lines inside the circle — crank positions — stay clear of it), or on
+    the line inside with ``outside=0`` (a gear's concentric circles, a cam's rollers outside)."""
     u = d.p1 - d.p0
     length = abs(u)
     u = u / length if length else 1.0
@@ -198,8 +201,11 @@ def dimension_geometry(d: Dimension):
         arrows.append((d.p1, d.p0))            # (tip, tail): the arrow touches the circle
         if d.kind == "diameter":
             arrows.append((d.p0, d.p1))
-        centre = d.p1 + u * (DIM_GAP + 0.5 + w / 2)
-        lines.append((d.p1, d.p1 + u * (2 * DIM_GAP + 0.5 + w)))
+        if d.outside == 0:             # asked for on the line (concentric circles outside)
+            centre = (d.p0 + d.p1) / 2
+        else:
+            centre = d.p1 + u * (DIM_GAP + 0.5 + w / 2)
+            lines.append((d.p1, d.p1 + u * (2 * DIM_GAP + 0.5 + w)))
     ang = float(np.angle(u))
     up = n
     if np.cos(ang) < -1e-9:          # keep text readable (not upside down)
@@ -819,7 +825,7 @@ def chart(sheet: Sheet, box: tuple[float, float, float, float], x: np.ndarray,
     for v in xs:
         xp = m.p(v, lo).real
         sheet.line(xp + 1j * y0, xp + 1j * y1, "CONSTRUCTION", 0.13)
-        sheet.text(xp + 1j * (y0 - 1.5), minus(exact(v)), 2.5, "TEXT", "center", "top")
+        sheet.text(xp + 1j * (y0 - 2.0), minus(exact(v)), 2.5, "TEXT", "center", "top")
     sheet.polyline([x0 + 1j * y0, x1 + 1j * y0, x1 + 1j * y1, x0 + 1j * y1], "CONSTRUCTION",
                    closed=True, weight=0.35)
     if lo < 0 < hi:
@@ -830,11 +836,16 @@ def chart(sheet: Sheet, box: tuple[float, float, float, float], x: np.ndarray,
             sheet.text(m.p(xhi, value) + (-1.0 + 1.0j), label, 2.5, "TEXT", "right", "bottom")
     for s in series:
         sheet.polyline(m.p(x, np.asarray(s.y, dtype=float)), s.layer, weight=s.weight)
+    marks = list(marks)
+    for xv, yv, _label in marks:
+        sheet.circle(m.p(xv, yv), 0.8, "CURVES", 0.25)
+    # the marks' numbers beside them, clear of the curves, the grid and each other
+    placer = LabelPlacer(sheet, area=(x0, y0, x1, y1))
+    for xv, yv, _label in marks:
+        placer.block(m.p(xv, yv), 0.9)
     for xv, yv, label in marks:
-        p = m.p(xv, yv)
-        sheet.circle(p, 0.8, "CURVES", 0.25)
         if label:
-            sheet.text(p + 1.2 + 1.2j, label, 2.5, "TEXT")
+            placer.place(m.p(xv, yv), label, 2.5, prefer=1 + 1j, gap=0.8)
     sheet.text((x0 + x1) / 2 + 1j * (y0 - 6.5), xlabel, 3.5, "TEXT", "center", "top")
     sheet.text(x0 - 11.0 + 1j * (y0 + y1) / 2, ylabel, 3.5, "TEXT", "center", "bottom",
                np.pi / 2)
