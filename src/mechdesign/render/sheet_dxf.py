@@ -15,7 +15,7 @@ import numpy as np
 from ..fileio import atomic_path
 from .fmt import dxf_text, plain_line
 from .sheet import (LAYERS, Arc, Circle, Dimension, Fill, Line, Polyline, Sheet, Text,
-                    DIM_ARROW, DIM_GAP, dimension_geometry, scripted, split_subscripts,
+                    DIM_ARROW, DIM_GAP, dimension_geometry, dimension_text, scripted, split_subscripts,
                     text_width)
 
 TEXT_STYLE = "Standard"          # the one text style (DXF requires it to exist anyway)
@@ -185,7 +185,7 @@ def _text_font() -> tuple[str, str]:
     return TEXT_FONT
 
 
-USED_DIMSTYLES = ("Standard", "EZDXF", "EZ_RADIUS")
+USED_DIMSTYLES = ("Standard", "EZDXF", "EZ_RADIUS", "EZ_RADIUS_INSIDE")
 
 
 def _keep_used_styles(doc) -> None:
@@ -240,18 +240,22 @@ def _dimension(msp, d: Dimension) -> None:
         a = d.p0 + 1j * u * d.offset
         if abs((np.conj(u) * (pos - a)).real - paper / 2) > 1e-6:      # beside, not between
             dim.set_location(_xy(middle), leader=False)
-    elif d.kind == "radius":
-        dim = msp.add_radius_dim(center=(d.p0.real, d.p0.imag), radius=abs(d.p1 - d.p0),
-                                 angle=float(np.degrees(np.angle(d.p1 - d.p0))),
-                                 location=_xy(middle), text=mtext(d.text) or "<>",
-                                 dimstyle="EZ_RADIUS", override=override, dxfattribs=attrs)
     else:
-        centre = (d.p0 + d.p1) / 2          # p0, p1: the ends of the diameter
-        dim = msp.add_diameter_dim(center=(centre.real, centre.imag),
-                                   radius=abs(d.p1 - d.p0) / 2,
-                                   angle=float(np.degrees(np.angle(d.p1 - d.p0))),
-                                   location=_xy(middle), text=mtext(d.text) or "<>",
-                                   dimstyle="EZ_RADIUS", override=override, dxfattribs=attrs)
+        # the text's location on the line from the centre (ezdxf takes the dimension's
+        # direction from it): in the middle, or past the circle (EZ_RADIUS: text outside)
+        centre = d.p0 if d.kind == "radius" else (d.p0 + d.p1) / 2
+        radius = abs(d.p1 - centre)
+        u = (d.p1 - centre) / radius if radius else 1.0
+        w = text_width(dimension_text(d), d.height)
+        inside = d.outside == 0
+        at = centre + u * (radius / 2 if inside else radius + DIM_GAP + 0.5 + w / 2)
+        if d.kind == "diameter" and inside:
+            at = centre + 1e-3 * u
+        add = msp.add_radius_dim if d.kind == "radius" else msp.add_diameter_dim
+        dim = add(center=_xy(centre), radius=radius, angle=float(np.degrees(np.angle(u))),
+                  location=_xy(at), text=mtext(d.text) or "<>",
+                  dimstyle="EZ_RADIUS_INSIDE" if inside else "EZ_RADIUS", override=override,
+                  dxfattribs=attrs)
     dim.render()
 
 
