@@ -38,11 +38,11 @@ def _norm(text: str) -> str:
 # (example, sheet) → the texts still crossed by a line / touching another text (zh sheets)
 CROSSED_OPEN: dict[tuple[str, str], set[str]] = {
     ('cam_7_3', 'cam'): {'O', 'r#=##.##', 'rr=##.##'},
-    ('die_cutter', 'analysis'): {'O #', 'ΔWmax = #### J', '等效驱动力矩 Md = ###.# N·m', "n#s#'", "s#'"},
+    ('die_cutter', 'analysis'): {'G#', 'O #', "n#s#'", 'ΔWmax = #### J', '等效驱动力矩 Md = ###.# N·m'},
     ('die_cutter', 'cam'): {'#′', 'O'},
     ('die_cutter', 'transmission'): {'Ⅰ', 'Ⅱ'},
     ('furnace_drive', 'transmission'): {'# Ⅱ'},
-    ('furnace_pusher', 'analysis'): {'#', '##', 'B', 'O #', '平均 Mb = ##.## N·m'},
+    ('furnace_pusher', 'analysis'): {'#', '##', 'B', 'O #', 'o', '平均 Mb = ##.## N·m'},
     ('furnace_pusher', 'transmission'): {'# Ⅱ'},
     ('linkage_sixbar', 'analysis'): {'A', 'ΔWmax = ###.# J', '等效驱动力矩 Md = ##.## N·m'},
     ('lockbeam', 'analysis'): {'###.##', 'O #'},
@@ -51,21 +51,24 @@ CROSSED_OPEN: dict[tuple[str, str], set[str]] = {
     ('press', 'analysis'): {'###.##', 'A', 'Wd', 'Wr', 'ΔWmax = ###.# J', '等效驱动力矩 Md = ##.## N·m'},
     ('press', 'cam'): {'O'},
     ('press', 'gear'): {'N #', 'a′ = ###.##', 'r# = ###.##', 'ra# = ###.##'},
-    ('shaper', 'analysis'): {'##', 'A', 'O #', 'Wr', 'ΔWmax = ###.# J', '等效驱动力矩 Md = ##.## N·m', "#' #"},
+    ('shaper', 'analysis'): {'##', "#' #", 'A', 'O #', 'Wr', 'ΔWmax = ###.# J', '等效驱动力矩 Md = ##.## N·m'},
     ('shaper', 'cam'): {'A', 'L=###.##', 'O', 'rr=##.##'},
     ('shaper', 'gear'): {'a′ = ###.##', 'r# = ###.##', 'ra# = ###.##'},
-    ('shaper_lengths', 'analysis'): {'###.##', 'ΔWmax = #### J', '等效驱动力矩 Md = ###.# N·m', "##'"},
-    ('slotter', 'analysis'): {'##.##', 'B', 'Wr', 'ΔWmax = ##.## J', '等效驱动力矩 Md = ##.## N·m', "b', n#'"},
+    ('shaper_lengths', 'analysis'): {'###.##', "##'", 'o', 'ΔWmax = #### J', '等效驱动力矩 Md = ###.# N·m'},
+    ('slotter', 'analysis'): {'##.##', 'B', 'Wr', 'ΔWmax = ##.## J', '等效驱动力矩 Md = ##.## N·m'},
     ('slotter', 'cam'): {'A', 'O', 'rr=##.##'},
     ('slotter', 'gear'): {'B #', 'N #', 'P', 'r# = ###.##', 'ra# = ###.##'},
     ('slotter', 'transmission'): {'Ⅰ'},
     ('textbook_guide_bar', 'analysis'): {'###.##', 'C', '平均 Mb = #.### N·m'},
 }
 TOUCHING_OPEN: dict[tuple[str, str], set[str]] = {
-    ('die_cutter', 'analysis'): {'"a\'" and "n#s#\'"', '"n#\'" and "n#s#\'"', "'G#' and 'o'"},
-    ('press', 'analysis'): {'\'#\' and "#\'"'},
-    ('shaper', 'analysis'): {'"a#\'" and "s#\'"'},
-    ('slotter', 'analysis'): {'"#\'" and \'#\'', '"b\', n#\'" and "n#b\'"'},
+    ('die_cutter', 'analysis'): {'"a\'" and "n#s#\'"', "'FR##' and 'FR##'", "'G#' and 'FI#'"},
+    ('furnace_pusher', 'analysis'): {'"c\'" and "n#\'"', "'FR##' and 'FR##'", "'FR##' and 'Fr'"},
+    ('linkage_sixbar', 'analysis'): {'"a\'" and "n#\'"', "'FI#' and 'FR##'"},
+    ('press', 'analysis'): {'\'#\' and "#\'"', "'b' and 's#'"},
+    ('shaper', 'analysis'): {'"a\'" and "k\'"'},
+    ('shaper_lengths', 'analysis'): {'"b\'" and "n#\'"'},
+    ('slotter', 'analysis'): {'"#\'" and \'#\'', '"n#\'" and "n#b\'"', "'a' and 'a#'"},
 }
 
 

@@ -349,7 +349,7 @@ def _draw_polygon(s: Sheet, pg: Polygon, mu: float, box, keep_out=()) -> None:
     bx0, by0, bx1, by1 = box
     centre = (pts.real.min() + pts.real.max()) / 2 + 1j * (pts.imag.min() + pts.imag.max()) / 2
     v = s.view((bx0 + bx1) / 2 + 1j * (by0 + by1) / 2 - centre, 1.0 / mu)
-    placer = LabelPlacer(s, pad=0.8)   # labels a word space apart
+    placer = LabelPlacer(s)
     for b in keep_out:
         placer.block_box(b)
     for vec in pg.vectors:

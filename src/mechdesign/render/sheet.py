@@ -1042,16 +1042,19 @@ class LabelPlacer:
                 # centre so that the box edge, not its centre, sits ``dist`` from the anchor
                 c = anchor + d * (dist + 0.5 * abs(d.real) * w + 0.5 * abs(d.imag) * h)
                 box = (c.real - w / 2, c.imag - h / 2, c.real + w / 2, c.imag + h / 2)
-                if self.free(box):
-                    hits = self.crossed(box, drawn)
-                    if hits == 0:
-                        best = (c, box)
-                        break
-                    if fallback is None or hits < fallback[0]:
-                        fallback = (hits, c, box)
+                free = self.free(box)
+                hits = self.crossed(box, drawn)
+                if free and hits == 0:
+                    best = (c, box)
+                    break
+                # else the least bad: free of the labels, or touching the fewest, with the
+                # fewest lines across it
+                rank = (0 if free else 1 + sum(1 for b in self.boxes if boxes_overlap(box, b)), hits)
+                if fallback is None or rank < fallback[0]:
+                    fallback = (rank, c, box)
             if best is not None:
                 break
-        if best is None and fallback is not None:
+        if best is None and fallback is not None and (fallback[0][0] == 0 or crowded):
             best = fallback[1:]
         if best is None:
             if not crowded:
