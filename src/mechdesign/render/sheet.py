@@ -1035,27 +1035,29 @@ class LabelPlacer:
         turns = [0, 1, -1, 2, -2, 3, -3, 4]
         drawn = self._drawn_points()
         best = None
-        fallback = None                # free of labels, crossed by the fewest lines
-        for dist in (gap, 2.0 * gap, 3.2 * gap):
-            for t in turns:
+        # the first candidate free of labels and lines within two rings is taken; else the
+        # one touching the fewest labels, the outer ring (far from its point) only when the
+        # inner two have no free one, then the fewest line points across it
+        ranked = None
+        for ring, dist in enumerate((gap, 2.0 * gap, 3.2 * gap)):
+            for order, t in enumerate(turns):
                 d = u * np.exp(1j * t * np.pi / 4)
                 # centre so that the box edge, not its centre, sits ``dist`` from the anchor
                 c = anchor + d * (dist + 0.5 * abs(d.real) * w + 0.5 * abs(d.imag) * h)
                 box = (c.real - w / 2, c.imag - h / 2, c.real + w / 2, c.imag + h / 2)
                 free = self.free(box)
                 hits = self.crossed(box, drawn)
-                if free and hits == 0:
+                if free and hits == 0 and ring < 2:
                     best = (c, box)
                     break
-                # else the least bad: free of the labels, or touching the fewest, with the
-                # fewest lines across it
-                rank = (0 if free else 1 + sum(1 for b in self.boxes if boxes_overlap(box, b)), hits)
-                if fallback is None or rank < fallback[0]:
-                    fallback = (rank, c, box)
+                rank = (0 if free else 1 + sum(1 for b in self.boxes if boxes_overlap(box, b)),
+                        ring == 2, hits, ring, order)
+                if ranked is None or rank < ranked[0]:
+                    ranked = (rank, c, box)
             if best is not None:
                 break
-        if best is None and fallback is not None and (fallback[0][0] == 0 or crowded):
-            best = fallback[1:]
+        if best is None and ranked is not None and (ranked[0][0] == 0 or crowded):
+            best = ranked[1:]
         if best is None:
             if not crowded:
                 return None
