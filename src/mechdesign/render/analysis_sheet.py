@@ -382,6 +382,10 @@ def _draw_polygon(s: Sheet, pg: Polygon, mu: float, box, keep_out=()) -> None:
             continue
         same = [n for n, zz in pg.points.items()
                 if (round(zz.real / mu, 1), round(zz.imag / mu, 1)) == key]
+        # an intermediate point (n4d', k') on a named one: a zero component, which the
+        # graphical method leaves out (its point is not named in the report either)
+        named = [n for n in same if _image_point(n) is not None or n.rstrip("'") == "p"]
+        same = named or same
         done[key] = True
         d = z - centroid
         placer.place(v.p(z), ", ".join(same), 2.5, prefer=d if abs(d) > 1e-9 * mu else 1j,
