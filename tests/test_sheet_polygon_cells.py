@@ -19,7 +19,7 @@ import numpy as np
 import pytest
 
 ROOT = Path(__file__).resolve().parents[1]
-BRIEFS = ["shaper", "press", "slotter"]
+BRIEFS = ["shaper", "press", "slotter", "lockbeam"]
 
 
 @pytest.fixture(scope="module", params=BRIEFS)

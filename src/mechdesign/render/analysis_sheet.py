@@ -19,7 +19,7 @@ import numpy as np
 from ..core.polygons import Polygon
 from . import fmt
 from .labels import LabelTable, pgettext, sheet_names, sheet_point
-from .sheet import (Dimension, LabelPlacer, Series, Sheet, TitleInfo, chart, fit_height,
+from .sheet import (Dimension, LabelPlacer, dimension_geometry, Series, Sheet, TitleInfo, chart, fit_height,
                     fill_scale, frame, ground, heading, length_scale, pin,
                     scale_text, slider_block, sub, sup, table, text_width, title_block_box,
                     with_subscripts)
@@ -57,6 +57,9 @@ LABELS = LabelTable({
     "noload": pgettext("analysis sheet", "No load or masses given: all reactions and Mb are zero, "
                        "so no force polygons or Mb curve are drawn"),
     "nofly": pgettext("analysis sheet", "no flywheel"),
+    "flat0": pgettext("analysis sheet", "all vectors parallel: the polygon closes on a line"),
+    "flat": pgettext("analysis sheet", "nearly flat polygon (width {w} % of its length): "
+                     "its vectors are almost parallel"),
     "links": pgettext("analysis sheet", "Links: "),
     "guide": pgettext("analysis sheet", "{n} guide"),
     "guide_plain": pgettext("analysis sheet", "guide"),
@@ -214,6 +217,20 @@ def symbol_of(vec, terms, vectors=()) -> str | None:
     for tail, head, _, _, symbol in terms:
         if (tail, head) == key:
             return symbol
+    # a pair normal + tangential through an intermediate point the graphical method does not
+    # name: it left out the zero tangential term (α = 0 there) and drew the normal straight
+    # to the point (p'd' is a^n_DO3), so the pair's normal is that term and its tangential
+    # the same index with t (a^t_DO3, of zero length)
+    if vec.role in ("normal", "tangential") and (vec.head if vec.role == "normal" else vec.tail) not in named:
+        mid = vec.head if vec.role == "normal" else vec.tail
+        first = [v for v in vectors if v.role == "normal" and v.head == mid]
+        second = [v for v in vectors if v.role == "tangential" and v.tail == mid]
+        if len(first) == 1 and len(second) == 1:
+            ends = (first[0].tail, second[0].head)
+            found = [symbol for tail, head, kind, _, symbol in terms
+                     if (tail, head) == ends and kind == "normal" and symbol.startswith(("a^n_", "v^n_"))]
+            if len(found) == 1:
+                return found[0] if vec.role == "normal" else found[0].replace("^n_", "^t_", 1)
     point = _image_point(vec.head)
     if vec.role == "absolute" and vec.tail.rstrip("'") == "p" and point is not None:
         return ("a_" if vec.tail.endswith("'") else "v_") + point
@@ -287,6 +304,11 @@ def _cell(s: Sheet, pg: Polygon, cell, title: str, lab: dict, symbols: list | No
                "center", "middle")
         return 1.0
     pts = np.array(list(pg.points.values()))
+    note = _flat_note(pts, lab)
+    if note is not None:          # the note under the scale, the polygon below it
+        s.text((cx0 + cx1) / 2 + 1j * (cy1 - 2.0 - head_h - 1.0 - 2.5 - 1.5), note,
+               fit_height(note, w - 4.0, 2.5), "TEXT", "center", "top")
+        pbox = (pbox[0], pbox[1], pbox[2], pbox[3] - 4.0)
     extent = max(np.ptp(pts.real) / (pbox[2] - pbox[0]), np.ptp(pts.imag) / (pbox[3] - pbox[1]),
                  1e-12)
     mu = fill_scale(extent, 1.0)
@@ -295,6 +317,29 @@ def _cell(s: Sheet, pg: Polygon, cell, title: str, lab: dict, symbols: list | No
     # labels keep clear of the heading and scale above and the vector list below
     _draw_polygon(s, pg, mu, pbox, [(cx0, pbox[3] + 2.0, cx1, cy1), (cx0, cy0, cx1, pbox[1] - 2.0)])
     return mu
+
+
+#: A polygon narrower than this fraction of its length is called nearly flat on its cell
+#: (render/graphical_report.FLAT, the report's rule for its force polygons).
+FLAT = 0.08
+
+
+def _flat_note(pts, lab: dict) -> str | None:
+    """The note of a polygon whose vectors are (almost) parallel, so that it closes on a
+    line (the lock-beam's velocity polygons where the crank lies on the frame line: the
+    sliding velocity and ω5 are zero, every velocity is square to the bar): its width
+    across its length as a share of the length, or None for a polygon that is not flat."""
+    if len(pts) < 3:
+        return None
+    xy = np.column_stack([pts.real, pts.imag])
+    xy = xy - xy.mean(axis=0)
+    _u, _sv, vt = np.linalg.svd(xy, full_matrices=False)
+    length, width = np.ptp(xy @ vt[0]), np.ptp(xy @ vt[1])
+    if not length > 0 or width >= FLAT * length:
+        return None
+    if width < 1e-6 * length:
+        return lab["flat0"]
+    return lab["flat"].format(w=fmt.percent(100.0 * width / length))
 
 
 def _draw_polygon(s: Sheet, pg: Polygon, mu: float, box, keep_out=()) -> None:
@@ -337,6 +382,10 @@ def _draw_polygon(s: Sheet, pg: Polygon, mu: float, box, keep_out=()) -> None:
             continue
         same = [n for n, zz in pg.points.items()
                 if (round(zz.real / mu, 1), round(zz.imag / mu, 1)) == key]
+        # an intermediate point (n4d', k') on a named one: a zero component, which the
+        # graphical method leaves out (its point is not named in the report either)
+        named = [n for n in same if _image_point(n) is not None or n.rstrip("'") == "p"]
+        same = named or same
         done[key] = True
         d = z - centroid
         placer.place(v.p(z), ", ".join(same), 2.5, prefer=d if abs(d) > 1e-9 * mu else 1j,
@@ -365,17 +414,37 @@ def _link_outline(zs: list) -> list:
 
 
 def _block_dimension(placer: LabelPlacer, d: Dimension) -> None:
-    """Mark a dimension's line and text as obstacles for the labels."""
+    """Mark a dimension's lines and text as obstacles for the labels."""
     if abs(d.p1 - d.p0) < 1e-9:
         return
-    u = (d.p1 - d.p0) / abs(d.p1 - d.p0)
-    shift = 1j * u * (d.offset if d.kind == "aligned" else 0.0)
-    placer.block_segment(d.p0 + shift, d.p1 + shift, 1.0)
-    text = d.text or ("R" if d.kind == "radius" else "") + fmt.length(d.measurement)
-    mid = (d.p0 + d.p1) / 2 + shift + 1j * u * (1.0 + d.height / 2)
+    lines, _arrows, text, pos, ang = dimension_geometry(d)
+    for a, b in lines:
+        placer.block_segment(a, b, 1.0)
+    u = np.exp(1j * ang)
+    mid = pos + 1j * u * d.height / 2
     half = text_width(text, d.height) / 2 + 0.5
     for t in np.linspace(-half, half, max(2, int(2 * half / 1.5) + 1)):
         placer.block(mid + u * t, d.height / 2 + 0.3)
+
+
+def _radius_angle(s: Sheet, placer: LabelPlacer, v, centre: complex, radius: float) -> float:
+    """The direction [rad, model] of a radius dimension about ``centre`` whose text (outside
+    the circle, render/sheet.py dimension_geometry) covers the fewest points of the lines
+    drawn so far; −135° (the old place) when several tie."""
+    pts = placer._drawn_points()
+    best = None
+    for k in range(24):
+        ang = -0.75 * np.pi + k * np.pi / 12
+        d = Dimension(v.p(centre), v.p(centre + radius * np.exp(1j * ang)), 0.0, radius,
+                      kind="radius")
+        _lines, _arrows, text, pos, tang = dimension_geometry(d)
+        w = text_width(text, d.height)
+        local = (pts - pos) * np.exp(-1j * tang)      # the text's frame: x along, y up
+        hits = np.count_nonzero((np.abs(local.real) < w / 2 + 0.5) & (local.imag > -0.5)
+                                & (local.imag < d.height + 0.5))
+        if best is None or hits < best[0]:
+            best = (hits, ang)
+    return float(best[1])
 
 
 def _name(model, link: str, lang: str) -> str | None:
@@ -510,8 +579,9 @@ def _mechanism(s: Sheet, model, k, lab: dict, box, chosen: list[str], lang: str)
     n_before = len(s.entities)
     # Dimensions: the crank, the frame, the output's stroke, each fixed guide's distance
     # from the first frame point off it.
-    v.dimension(piv, piv + crank.length * mm * np.exp(-0.75j * np.pi), 0.0, kind="radius",
-                measurement=crank.length * mm)
+    # the crank's radius where its text, outside the circle, crosses the fewest lines drawn
+    v.dimension(piv, piv + crank.length * mm * np.exp(1j * _radius_angle(s, placer, v, piv, crank.length * mm)),
+                0.0, kind="radius", measurement=crank.length * mm)
     frames = list(mech.frame_points.values())
     if len(frames) >= 2:
         a, b = frames[0] * mm, frames[1] * mm

@@ -340,7 +340,7 @@ def _profile(sheet: Sheet, c, g: _ProfileGeometry, divs, n: float, box, lab):
     # -- the follower in its start position, cam centre
     outside = _follower_start(sheet, view, g, n, labels)
     ground(view, 0, 7.0, -np.pi / 2)
-    labels.text(O + complex(-3.0, -3.0), sheet_point("O"), 3.5, "right", "top")
+    labels.place(O, sheet_point("O"), 3.5, prefer=-1 - 1j, gap=2.5)   # between the rays
 
     # -- ω and r0 inside the cam, where no construction line passes: ω in the first part
     # of the widest free sector, r0 in the widest sector left (clear of the centre lines)
@@ -366,7 +366,7 @@ def _profile(sheet: Sheet, c, g: _ProfileGeometry, divs, n: float, box, lab):
         taken += _crossings(rays, f * g.r0)
     rc, _ = _largest_gap(taken)
     view.dimension(0, g.r0 * np.exp(1j * rc), 0.0, text=f"{sub('r', '0')}={fmt.length(g.r0)}", kind="radius",
-                   height=3.5)
+                   height=3.5, outside=0)
     if g.kind == "roller":
         _roller_dimension(sheet, view, g, n, gap_c, labels)
 
@@ -486,9 +486,12 @@ def _follower_start(sheet, view, g: _ProfileGeometry, n, labels: LabelPlacer) ->
         y = g.ring(n) + 8.0 * n
         view.line(0, 1j * (y + 3.0 * n), "CENTER")
         z0, z1 = (1j * y, x + 1j * y) if x > 0 else (x + 1j * y, 1j * y)
-        view.dimension(z0, z1, 0.0, text=f"e={fmt.length(abs(x))}", height=3.5)
-        labels.boxes.append((min(P(0).real, P(x).real) - 6.0, P(1j * y).imag - 1.0,
-                             max(P(0).real, P(x).real) + 6.0, P(1j * y).imag + 5.5))
+        text = f"e={fmt.length(abs(x))}"
+        # a text too long for e goes beyond the centre line, away from the stem
+        view.dimension(z0, z1, 0.0, text=text, height=3.5, outside=-1 if x > 0 else 1)
+        room = text_width(text, 3.5) + 3.0
+        labels.boxes.append((min(P(0).real, P(x).real) - (room if x > 0 else 6.0), P(1j * y).imag - 1.0,
+                             max(P(0).real, P(x).real) + (6.0 if x > 0 else room), P(1j * y).imag + 5.5))
         angles += [float(np.angle(1j * y)), float(np.angle(x + 1j * y))]
     return angles
 

@@ -411,7 +411,7 @@ def _dimensions(sheet: Sheet, drawing: GearDrawing, plan: _Plan, o2_in: bool) ->
             start = centre if length is None else end - length * d
             if (_inside(start, box, -2.0) and _inside(end, box, -2.0)
                     and _inside(end + outside * d, box, -3.0)):
-                sheet.dimension(start, end, 0.0, r, text, "radius")
+                sheet.dimension(start, end, 0.0, r, text, "radius", outside=0)
                 return
 
     r1 = [(sub("r", "f1"), g1.df / 2), (sub("r", "b1"), g1.db / 2), (sub("r", "1"), g1.d / 2),

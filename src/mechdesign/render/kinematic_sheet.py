@@ -1014,8 +1014,11 @@ def cam_diagram(c, info: TitleInfo, lang: str) -> Sheet:
         if g.kind == "roller":
             view.circle(B0, g.rr, "OUTLINE")
             pin(view, B0)
-        placer.block(view.p(B0), max(g.rr * view.scale, 1.5))
-        placer.place(view.p(B0), sheet_point("B"), 3.5, prefer=(-1 + 0.3j) if not g.osc else -1j, gap=3.0)
+        roller = max(g.rr * view.scale, 1.5)
+        placer.block(view.p(B0), roller)
+        # beside the roller, not on it
+        placer.place(view.p(B0), sheet_point("B"), 3.5, prefer=(-1 + 0.3j) if not g.osc else -1j,
+                     gap=roller + 1.5)
         placer.place(view.p(0j), sheet_point("O"), 3.5, prefer=-1 - 1j, gap=3.0)
         _omega_arrow(s, view, 0j, float(np.max(np.abs(g.actual))), g.sigma > 0, placer, lab)
         # link numbers: cam 1, follower 2

@@ -145,6 +145,74 @@ class Dimension:
     #                                  diameter (p0, p1 the ends of the diameter)
     layer: str = "DIMENSIONS"
     height: float = 3.5
+    outside: int = -1                # an aligned text too long for its line: beyond p0 (−1) or
+    #                                  p1 (+1); a radius' text: outside the circle (≠ 0) or on
+    #                                  the line inside it (0)
+
+
+#: A dimension text's gap above its dimension line and from an extension line [mm]
+#: (GB/T 4458.4: the text above the line, not crossed by it).
+DIM_GAP = 1.0
+#: The dimension arrows' length on the sheets [mm].
+DIM_ARROW = 2.5
+
+
+def dimension_text(d: Dimension) -> str:
+    from . import fmt
+
+    if d.text:
+        return d.text
+    prefix = {"radius": "R", "diameter": "Φ"}.get(d.kind, "")
+    return prefix + fmt.length(d.measurement)
+
+
+def dimension_geometry(d: Dimension):
+    """Extension lines, dimension line(s), arrows (tip, tail) and the text's baseline
+    centre and angle of a dimension [paper mm], as a draughtsman sets them (GB/T 4458.4):
+    the text above its dimension line, read from below or from the right, never crossed by
+    a line. An aligned text that does not fit between the arrows goes beyond the extension
+    line (``d.outside``: before p0 or after p1) on the dimension line drawn on under it;
+    a radius' or diameter's text outside the circle, on the line from the centre drawn on
+    past the arrow (the lines inside the circle — crank positions — stay clear of it), or on
+    the line inside with ``outside=0`` (a gear's concentric circles, a cam's rollers outside)."""
+    u = d.p1 - d.p0
+    length = abs(u)
+    u = u / length if length else 1.0
+    n = 1j * u
+    text = dimension_text(d)
+    w = text_width(text, d.height)
+    lines, arrows = [], []
+    if d.kind == "aligned":
+        a, b = d.p0 + n * d.offset, d.p1 + n * d.offset
+        ext = np.sign(d.offset) * 1.5 if d.offset else 0
+        lines += [(d.p0 + n * np.sign(d.offset) * 1.0, a + n * ext),
+                  (d.p1 + n * np.sign(d.offset) * 1.0, b + n * ext), (a, b)]
+        arrows += [(b, a), (a, b)]
+        if w + 2 * DIM_ARROW + 2 * DIM_GAP <= length:
+            centre = (a + b) / 2
+        elif d.outside >= 0:
+            centre = b + u * (DIM_GAP + 0.5 + w / 2)
+            lines.append((b, b + u * (2 * DIM_GAP + 0.5 + w)))
+        else:
+            centre = a - u * (DIM_GAP + 0.5 + w / 2)
+            lines.append((a, a - u * (2 * DIM_GAP + 0.5 + w)))
+    else:  # radius/diameter: p0 = centre side, p1 = on the circle
+        lines.append((d.p0, d.p1))
+        arrows.append((d.p1, d.p0))            # (tip, tail): the arrow touches the circle
+        if d.kind == "diameter":
+            arrows.append((d.p0, d.p1))
+        if d.outside == 0:             # asked for on the line (concentric circles outside)
+            centre = (d.p0 + d.p1) / 2
+        else:
+            centre = d.p1 + u * (DIM_GAP + 0.5 + w / 2)
+            lines.append((d.p1, d.p1 + u * (2 * DIM_GAP + 0.5 + w)))
+    ang = float(np.angle(u))
+    up = n
+    if np.cos(ang) < -1e-9:          # keep text readable (not upside down)
+        ang += np.pi
+        up = -n
+    # the text above the line: its baseline DIM_GAP over it on the reader's upper side
+    return lines, arrows, text, centre + up * DIM_GAP, ang
 
 
 # -- the sheet ----------------------------------------------------------------------------
@@ -212,9 +280,11 @@ class Sheet:
             w = 0.3 * h
             self.fill([p1, base + 1j * u * w, base - 1j * u * w], layer)
 
-    def dimension(self, p0, p1, offset, measurement, text="", kind="aligned", height=3.5):
+    def dimension(self, p0, p1, offset, measurement, text="", kind="aligned", height=3.5,
+                  outside=-1):
         self.add(Dimension(complex(p0), complex(p1), float(offset), float(measurement),
-                           str(text).replace(GROUP, NBSP), kind, "DIMENSIONS", height))
+                           str(text).replace(GROUP, NBSP), kind, "DIMENSIONS", height,
+                           int(outside)))
 
     def view(self, origin, scale: float, flip_x: bool = False) -> "View":
         """Model coordinates → sheet: ``origin + scale * z`` (scale = paper mm per unit)."""
@@ -261,10 +331,11 @@ class View:
     def fill(self, zs, layer="OUTLINE"):
         self.sheet.fill(self.p(np.asarray(zs)), layer)
 
-    def dimension(self, z0, z1, offset, text="", kind="aligned", height=3.5, measurement=None):
+    def dimension(self, z0, z1, offset, text="", kind="aligned", height=3.5, measurement=None,
+                  outside=-1):
         """Aligned dimension in model units; ``offset`` in paper mm; writes the true length."""
         m = abs(complex(z1) - complex(z0)) if measurement is None else measurement
-        self.sheet.dimension(self.p(z0), self.p(z1), offset, m, text, kind, height)
+        self.sheet.dimension(self.p(z0), self.p(z1), offset, m, text, kind, height, outside)
 
 
 def thin(points, tolerance: float = CHORD_TOLERANCE) -> np.ndarray:
@@ -754,7 +825,7 @@ def chart(sheet: Sheet, box: tuple[float, float, float, float], x: np.ndarray,
     for v in xs:
         xp = m.p(v, lo).real
         sheet.line(xp + 1j * y0, xp + 1j * y1, "CONSTRUCTION", 0.13)
-        sheet.text(xp + 1j * (y0 - 1.5), minus(exact(v)), 2.5, "TEXT", "center", "top")
+        sheet.text(xp + 1j * (y0 - 2.0), minus(exact(v)), 2.5, "TEXT", "center", "top")
     sheet.polyline([x0 + 1j * y0, x1 + 1j * y0, x1 + 1j * y1, x0 + 1j * y1], "CONSTRUCTION",
                    closed=True, weight=0.35)
     if lo < 0 < hi:
@@ -765,11 +836,16 @@ def chart(sheet: Sheet, box: tuple[float, float, float, float], x: np.ndarray,
             sheet.text(m.p(xhi, value) + (-1.0 + 1.0j), label, 2.5, "TEXT", "right", "bottom")
     for s in series:
         sheet.polyline(m.p(x, np.asarray(s.y, dtype=float)), s.layer, weight=s.weight)
+    marks = list(marks)
+    for xv, yv, _label in marks:
+        sheet.circle(m.p(xv, yv), 0.8, "CURVES", 0.25)
+    # the marks' numbers beside them, clear of the curves, the grid and each other
+    placer = LabelPlacer(sheet, area=(x0, y0, x1, y1))
+    for xv, yv, _label in marks:
+        placer.block(m.p(xv, yv), 0.9)
     for xv, yv, label in marks:
-        p = m.p(xv, yv)
-        sheet.circle(p, 0.8, "CURVES", 0.25)
         if label:
-            sheet.text(p + 1.2 + 1.2j, label, 2.5, "TEXT")
+            placer.place(m.p(xv, yv), label, 2.5, prefer=1 + 1j, gap=0.8)
     sheet.text((x0 + x1) / 2 + 1j * (y0 - 6.5), xlabel, 3.5, "TEXT", "center", "top")
     sheet.text(x0 - 11.0 + 1j * (y0 + y1) / 2, ylabel, 3.5, "TEXT", "center", "bottom",
                np.pi / 2)
@@ -863,6 +939,9 @@ class LabelPlacer:
         self.boxes: list[Box] = []
         self.segments: list[tuple[complex, complex]] = []
         self.points = np.zeros(0, dtype=complex)
+        # the sheet's lines drawn so far, sampled (see :meth:`_drawn_points`)
+        self._drawn = np.zeros(0, dtype=complex)
+        self._seen = 0
 
     # -- obstacles
     def block(self, z: complex, radius: float = 1.0) -> None:
@@ -890,15 +969,33 @@ class LabelPlacer:
                 n = max(int(e.radius * abs(a1 - a0) / step), 2)
                 out.append(e.center + e.radius * np.exp(1j * np.linspace(a0, a1, n)))
             elif isinstance(e, Dimension) and abs(e.p1 - e.p0) > 1e-9:
-                u = (e.p1 - e.p0) / abs(e.p1 - e.p0)
-                shift = 1j * u * (e.offset if e.kind == "aligned" else 0.0)
-                out.append(sample_polyline([e.p0, e.p0 + shift, e.p1 + shift, e.p1], step))
-                mid = (e.p0 + e.p1) / 2 + shift + 1j * u * (1.0 + e.height / 2)
-                w = text_width(e.text, e.height)
+                lines, _arrows, text, pos, ang = dimension_geometry(e)
+                for a, b in lines:
+                    out.append(sample_polyline([a, b], step))
+                u = np.exp(1j * ang)
+                mid = pos + 1j * u * e.height / 2
+                w = text_width(text, e.height)
                 out.append(np.repeat(sample_polyline([mid - u * w / 2, mid + u * w / 2], 0.4), 6))
         self.points = np.concatenate(out)
 
     # -- tests
+    def _drawn_points(self) -> np.ndarray:
+        """Points along every line, arc and dimension the sheet holds so far (0.5 mm apart),
+        sampled once each: a point label may not be crossed by any of them (GB/T 4458.4)."""
+        new = [e for e in self.sheet.entities[self._seen:] if not isinstance(e, (Text, Fill))]
+        self._seen = len(self.sheet.entities)
+        if new:
+            keep, self.points = self.points, np.zeros(0, dtype=complex)
+            self.absorb(new, 0.5)
+            self._drawn, self.points = np.concatenate([self._drawn, self.points]), keep
+        return self._drawn
+
+    def crossed(self, box: Box, pts: np.ndarray | None = None) -> int:
+        """How many drawn line points lie inside ``box`` (its edges 0.2 mm in)."""
+        pts = self._drawn_points() if pts is None else pts
+        return int(np.count_nonzero((pts.real > box[0] + 0.2) & (pts.real < box[2] - 0.2)
+                                    & (pts.imag > box[1] + 0.2) & (pts.imag < box[3] - 0.2)))
+
     def free(self, box: Box) -> bool:
         """No box within ``pad`` of ``box`` and no segment across it."""
         return (not any(boxes_overlap(box, b, self.pad) for b in self.boxes)
@@ -936,18 +1033,31 @@ class LabelPlacer:
         w, h = text_width(text, height), height
         u = prefer / abs(prefer) if abs(prefer) > 1e-12 else 1j
         turns = [0, 1, -1, 2, -2, 3, -3, 4]
+        drawn = self._drawn_points()
         best = None
-        for dist in (gap, 2.0 * gap, 3.2 * gap):
-            for t in turns:
+        # the first candidate free of labels and lines within two rings is taken; else the
+        # one touching the fewest labels, the outer ring (far from its point) only when the
+        # inner two have no free one, then the fewest line points across it
+        ranked = None
+        for ring, dist in enumerate((gap, 2.0 * gap, 3.2 * gap)):
+            for order, t in enumerate(turns):
                 d = u * np.exp(1j * t * np.pi / 4)
                 # centre so that the box edge, not its centre, sits ``dist`` from the anchor
                 c = anchor + d * (dist + 0.5 * abs(d.real) * w + 0.5 * abs(d.imag) * h)
                 box = (c.real - w / 2, c.imag - h / 2, c.real + w / 2, c.imag + h / 2)
-                if self.free(box):
+                free = self.free(box)
+                hits = self.crossed(box, drawn)
+                if free and hits == 0 and ring < 2:
                     best = (c, box)
                     break
+                rank = (0 if free else 1 + sum(1 for b in self.boxes if boxes_overlap(box, b)),
+                        ring == 2, hits, ring, order)
+                if ranked is None or rank < ranked[0]:
+                    ranked = (rank, c, box)
             if best is not None:
                 break
+        if best is None and ranked is not None and (ranked[0][0] == 0 or crowded):
+            best = ranked[1:]
         if best is None:
             if not crowded:
                 return None

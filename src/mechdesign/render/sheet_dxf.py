@@ -15,7 +15,8 @@ import numpy as np
 from ..fileio import atomic_path
 from .fmt import dxf_text, plain_line
 from .sheet import (LAYERS, Arc, Circle, Dimension, Fill, Line, Polyline, Sheet, Text,
-                    scripted, split_subscripts, text_width)
+                    DIM_ARROW, DIM_GAP, dimension_geometry, dimension_text, scripted, split_subscripts,
+                    text_width)
 
 TEXT_STYLE = "Standard"          # the one text style (DXF requires it to exist anyway)
 TEXT_FONT = "NotoSansSC-Regular.otf", "Noto Sans SC"    # file and family (render/fonts.py)
@@ -184,7 +185,7 @@ def _text_font() -> tuple[str, str]:
     return TEXT_FONT
 
 
-USED_DIMSTYLES = ("Standard", "EZDXF", "EZ_RADIUS_INSIDE")
+USED_DIMSTYLES = ("Standard", "EZDXF", "EZ_RADIUS", "EZ_RADIUS_INSIDE")
 
 
 def _keep_used_styles(doc) -> None:
@@ -220,30 +221,41 @@ def _xy(z: complex) -> tuple[float, float]:
 
 
 def _dimension(msp, d: Dimension) -> None:
+    """A DIMENSION entity whose text stands where the PDF prints it (render/sheet.py
+    :func:`dimension_geometry`: above the line, beyond an extension line when it does not fit
+    between the arrows, outside the circle for a radius or diameter)."""
     paper = abs(d.p1 - d.p0)
-    override = {"dimtxt": d.height, "dimasz": 2.5, "dimexe": 1.5, "dimexo": 1.0,
-                "dimgap": 0.8, "dimtad": 1, "dimdec": 2, "dimzin": 0, "dimtih": 0, "dimtoh": 0,
-                "dimlfac": d.measurement / paper if paper else 1.0}
+    override = {"dimtxt": d.height, "dimasz": DIM_ARROW, "dimexe": 1.5, "dimexo": 1.0,
+                "dimgap": DIM_GAP, "dimtad": 1, "dimdec": 2, "dimzin": 0, "dimtih": 0,
+                "dimtoh": 0, "dimlfac": d.measurement / paper if paper else 1.0}
     attrs = {"layer": d.layer}
+    _lines, _arrows, _text, pos, ang = dimension_geometry(d)
+    # the text's middle: its baseline centre raised by half its height
+    middle = pos + 1j * np.exp(1j * ang) * d.height / 2
     if d.kind == "aligned":
         dim = msp.add_aligned_dim(p1=(d.p0.real, d.p0.imag), p2=(d.p1.real, d.p1.imag),
                                   distance=d.offset, text=mtext(d.text) or "<>", dimstyle="EZDXF",
                                   override=override, dxfattribs=attrs)
-    elif d.kind == "radius":
-        # text in the middle of the leader, as the PDF draws it
-        mid = (d.p0 + d.p1) / 2
-        dim = msp.add_radius_dim(center=(d.p0.real, d.p0.imag), radius=abs(d.p1 - d.p0),
-                                 angle=float(np.degrees(np.angle(d.p1 - d.p0))),
-                                 location=(mid.real, mid.imag), text=mtext(d.text) or "<>",
-                                 dimstyle="EZ_RADIUS_INSIDE", override=override, dxfattribs=attrs)
+        u = (d.p1 - d.p0) / paper if paper else 1.0
+        a = d.p0 + 1j * u * d.offset
+        if abs((np.conj(u) * (pos - a)).real - paper / 2) > 1e-6:      # beside, not between
+            dim.set_location(_xy(middle), leader=False)
     else:
-        centre = (d.p0 + d.p1) / 2          # p0, p1: the ends of the diameter
-        dim = msp.add_diameter_dim(center=(centre.real, centre.imag),
-                                   radius=abs(d.p1 - d.p0) / 2,
-                                   angle=float(np.degrees(np.angle(d.p1 - d.p0))),
-                                   location=_xy(centre + 1e-3 * (d.p1 - centre)),
-                                   text=mtext(d.text) or "<>",
-                                   dimstyle="EZ_RADIUS_INSIDE", override=override, dxfattribs=attrs)
+        # the text's location on the line from the centre (ezdxf takes the dimension's
+        # direction from it): in the middle, or past the circle (EZ_RADIUS: text outside)
+        centre = d.p0 if d.kind == "radius" else (d.p0 + d.p1) / 2
+        radius = abs(d.p1 - centre)
+        u = (d.p1 - centre) / radius if radius else 1.0
+        w = text_width(dimension_text(d), d.height)
+        inside = d.outside == 0
+        at = centre + u * (radius / 2 if inside else radius + DIM_GAP + 0.5 + w / 2)
+        if d.kind == "diameter" and inside:
+            at = centre + 1e-3 * u
+        add = msp.add_radius_dim if d.kind == "radius" else msp.add_diameter_dim
+        dim = add(center=_xy(centre), radius=radius, angle=float(np.degrees(np.angle(u))),
+                  location=_xy(at), text=mtext(d.text) or "<>",
+                  dimstyle="EZ_RADIUS_INSIDE" if inside else "EZ_RADIUS", override=override,
+                  dxfattribs=attrs)
     dim.render()
 
 

@@ -19,9 +19,9 @@ from pathlib import Path
 
 import numpy as np
 
-from . import fmt
 from .fonts import cjk_families
 from .sheet import (LAYERS, Arc, Circle, Dimension, Fill, Line, Polyline, Sheet, Text,
+                    dimension_geometry,
                     split_subscripts)
 
 # Dash patterns in paper mm (GB/T 17450: long dash 15–20, gap 3, dot ≤ 0.5); as the
@@ -31,36 +31,6 @@ _DASHES = {"CENTER": (12.0, 2.0, 1.0, 2.0), "DASHED": (4.0, 1.5)}
 # height (ascender to baseline) from the top
 _HALIGN = {"left": 0, "center": 0.5, "right": 1}
 _VALIGN = {"bottom": 1, "middle": 0.5, "top": 0}
-
-
-def dimension_geometry(d: Dimension):
-    """Extension lines, dimension line with arrows and the text placement (paper mm)."""
-    u = d.p1 - d.p0
-    length = abs(u)
-    u = u / length if length else 1.0
-    n = 1j * u
-    text = d.text or fmt.length(d.measurement)
-    lines = []
-    arrows = []
-    if d.kind == "aligned":
-        a, b = d.p0 + n * d.offset, d.p1 + n * d.offset
-        ext = np.sign(d.offset) * 1.5 if d.offset else 0
-        lines += [(d.p0 + n * np.sign(d.offset) * 1.0, a + n * ext),
-                  (d.p1 + n * np.sign(d.offset) * 1.0, b + n * ext), (a, b)]
-        arrows += [(b, a), (a, b)]
-        pos, ang = (a + b) / 2 + n * 1.0, np.angle(u)
-    else:  # radius/diameter: p0 = centre side, p1 = on the circle
-        prefix = "R" if d.kind == "radius" else "Φ"
-        text = d.text or prefix + fmt.length(d.measurement)
-        lines.append((d.p0, d.p1))
-        arrows.append((d.p1, d.p0))            # (tip, tail): the arrow touches the circle
-        if d.kind == "diameter":
-            arrows.append((d.p0, d.p1))
-        pos, ang = (d.p0 + d.p1) / 2 + n * 1.0, np.angle(u)
-    if np.cos(ang) < -1e-9:          # keep text readable (not upside down)
-        ang += np.pi
-        pos = pos - 2 * n * 1.0
-    return lines, arrows, text, pos, ang
 
 
 def arrow_head(tip, tail, size=2.5):

@@ -1,0 +1,111 @@
+"""Issue 19 point 8: on every sheet of every example a text is not crossed by a line and does
+not touch another text, as a draughtsman writes them (GB/T 4458.4: a dimension's text above
+its dimension line, beside the extension line when it does not fit between the arrows, never
+crossed by a line; a point label beside its point, not on the roller or the hatching).
+
+Measured on what is drawn: the PDF's text lines against every path of the page
+(tests/sheet_overlaps.py ``findings``: the glyphs' core against lines, rectangles and
+curves), and the sheet model's texts against each other by their insert point, height and
+estimated width (``touching_labels``, what the DXF writes as TEXT/MTEXT). The base commit
+(e9f1fc2) failed it with 212 crossed texts in the Chinese sheets: "e=12.00" across both
+extension lines and the follower's stem (cam_7_3), "B" on the roller and "O" on the
+hatching (cam_7_3 kinematic diagram), "R16.25"/"R50.00" among the crank positions on the
+A1 sheets, the chart's position numbers on their curves, and labels "3" "5" 0.3 mm apart
+at the lock-beam's slider (read "35").
+
+What is still open is listed below (digits written #, so that a changed number does not
+hide or excuse a text): dense regions of the A1 skeleton at twelve positions, the cam
+sheets' centre and roller dimension among the rays, the gear sheet's radii among its
+concentric circles, chart legends on their curves. The test fails for a text not listed and
+for a listed one no longer found (mended: take it out)."""
+from __future__ import annotations
+
+import re
+from pathlib import Path
+
+import pytest
+
+from sheet_overlaps import cores_overlap, crossing, segments, text_cores, touching_labels
+
+ROOT = Path(__file__).resolve().parents[1]
+EXAMPLES = sorted(p.stem for p in (ROOT / "designs").glob("*.yaml") if p.stem != "__init__")
+
+
+def _norm(text: str) -> str:
+    return re.sub(r"\d", "#", text)
+
+
+# (example, sheet) → the texts still crossed by a line / touching another text (zh sheets)
+CROSSED_OPEN: dict[tuple[str, str], set[str]] = {
+    ('cam_7_3', 'cam'): {'O', 'r#=##.##', 'rr=##.##'},
+    ('die_cutter', 'analysis'): {'#', 'G#', 'O #', "n#s#'", 'ΔWmax = #### J', '等效驱动力矩 Md = ###.# N·m'},
+    ('die_cutter', 'cam'): {'#′', 'O'},
+    ('die_cutter', 'transmission'): {'Ⅰ', 'Ⅱ'},
+    ('furnace_drive', 'transmission'): {'# Ⅱ'},
+    ('furnace_pusher', 'analysis'): {'#', '##', 'B', 'O #', 'o', '平均 Mb = ##.## N·m'},
+    ('furnace_pusher', 'transmission'): {'# Ⅱ'},
+    ('linkage_sixbar', 'analysis'): {'A', 'O #', 'ΔWmax = ###.# J', '等效驱动力矩 Md = ##.## N·m'},
+    ('lockbeam', 'analysis'): {'##', '###.##', 'O #'},
+    ('lockbeam', 'cam'): {'#′', 'O'},
+    ('lockbeam_cam', 'cam'): {'#′', 'O'},
+    ('press', 'analysis'): {'###.##', 'A', 'Wd', 'Wr', 'ΔWmax = ###.# J', '等效驱动力矩 Md = ##.## N·m'},
+    ('press', 'cam'): {'O'},
+    ('press', 'gear'): {'N #', 'a′ = ###.##', 'r# = ###.##', 'ra# = ###.##'},
+    ('shaper', 'analysis'): {'##', "##'", "#' #", 'A', 'O #', 'Wr', 'ΔWmax = ###.# J', '等效驱动力矩 Md = ##.## N·m'},
+    ('shaper', 'cam'): {'A', 'L=###.##', 'O', 'rr=##.##'},
+    ('shaper', 'gear'): {'a′ = ###.##', 'r# = ###.##', 'ra# = ###.##'},
+    ('shaper_lengths', 'analysis'): {'#', '###.##', "##'", 'O #', 'o', 'ΔWmax = #### J', '等效驱动力矩 Md = ###.# N·m'},
+    ('slotter', 'analysis'): {'##.##', 'B', 'O #', 'Wr', 'ΔWmax = ##.## J', '等效驱动力矩 Md = ##.## N·m'},
+    ('slotter', 'cam'): {'A', 'O', 'rr=##.##'},
+    ('slotter', 'gear'): {'B #', 'N #', 'P', 'r# = ###.##', 'ra# = ###.##'},
+    ('slotter', 'transmission'): {'Ⅰ'},
+    ('textbook_guide_bar', 'analysis'): {'#', '###.##', "##'", 'A', 'C', 'φ##', '平均 Mb = #.### N·m'},
+}
+TOUCHING_OPEN: dict[tuple[str, str], set[str]] = {
+    ('die_cutter', 'analysis'): {'"a\'" and "n#s#\'"', "'FR##' and 'FR##'", "'G#' and 'FI#'"},
+    ('furnace_pusher', 'analysis'): {'"c\'" and "n#\'"', "'FR##' and 'FR##'", "'FR##' and 'Fr'"},
+    ('linkage_sixbar', 'analysis'): {'"a\'" and "n#\'"', "'FI#' and 'FR##'"},
+    ('press', 'analysis'): {'\'#\' and "#\'"', "'b' and 's#'"},
+    ('shaper', 'analysis'): {'"a\'" and "k\'"'},
+    ('shaper_lengths', 'analysis'): {'"b\'" and "n#\'"'},
+    ('slotter', 'analysis'): {'"#\'" and \'#\'', '"n#\'" and "n#b\'"', "'a' and 'a#'"},
+}
+
+
+def _crossed_texts(page) -> set[str]:
+    """The texts of ``page`` crossed by a line or overlapping another text (``findings``)."""
+    segs = segments(page)
+    cores = text_cores(page)
+    out = {_norm(c.text) for c in cores if len(crossing(c, segs))}
+    out |= {_norm(a.text) for i, a in enumerate(cores) for b in cores[i + 1:] if cores_overlap(a, b)}
+    return out
+
+
+@pytest.mark.e2e
+@pytest.mark.parametrize("name", EXAMPLES)
+def test_texts_clear_lines_and_each_other(example_results, name, tmp_path):
+    import pymupdf
+    from mechdesign.brief.loader import load_brief
+    from mechdesign.render.sheets import _builders, title_info, write_all
+
+    brief = load_brief(ROOT / "designs" / f"{name}.yaml")
+    results = example_results(name)
+    builders = _builders(results, brief)
+    (tmp_path / "f").mkdir()
+    files = write_all(builders, brief, tmp_path, tmp_path / "f", "zh", ("pdf",))
+    problems = []
+    for f in files:
+        stem = f.name
+        with pymupdf.open(tmp_path / f.pdf) as doc:
+            crossed = _crossed_texts(doc[0])
+        want = CROSSED_OPEN.get((name, stem), set())
+        problems += [f"{stem}: text crossed by a line: {t!r}" for t in sorted(crossed - want)]
+        problems += [f"{stem}: listed as open but clear now: {t!r}" for t in sorted(want - crossed)]
+    for k, (stem, build) in enumerate(builders, 1):
+        sheet = build(title_info(brief.report, stem, "MD-01", k, len(builders), "zh"), "zh")
+        touching = {_norm(t) for t in touching_labels(sheet)}
+        touching = {re.sub(r" at \([^)]*\)( mm)?", "", t) for t in touching}
+        want = TOUCHING_OPEN.get((name, stem), set())
+        problems += [f"{stem}: texts touching: {t}" for t in sorted(touching - want)]
+        problems += [f"{stem}: listed as open but clear now: {t}" for t in sorted(want - touching)]
+    assert not problems, f"{name}:\n" + "\n".join(problems)
