@@ -128,11 +128,12 @@ def _last_line_ok(line: str, lang: str) -> bool:
 
 def balanced_lines(text: str, lang: str, size: float, width: float = TEXT_WIDTH) -> list[str]:
     """``text`` as lines of about equal width, each at most ``FILL × width`` wide at
-    ``size``, broken at allowed points only (see the module's docstring). The fewest lines
-    that fit; among those the narrowest widest line, a weak break (after "of", inside a
-    parenthesis) costing 3 em of width (and only when nothing else fits), a break at a phrase boundary gaining 2 em (before
-    "of") or 3 em (after ":", before "("); never inside a parenthesis. Text that fits stays one line; text that cannot be
-    broken so is returned as one line (typst and Word wrap it)."""
+    ``size``, broken at allowed points only (see the module's docstring): the fewest lines
+    that fit; among those the narrowest widest line, where a break at a phrase boundary
+    gains 2 em of width (before "of") or 3 em (after ":", before "("), and a line may end
+    with a preposition (at a cost of 3 em) only when nothing else fits. Never inside a
+    parenthesis. Text that fits stays one line; text that cannot be broken so is returned
+    as one line (typst and Word wrap it)."""
     text = " ".join(str(text or "").split())
     limit = FILL * width
     if not text or text_width(text, size) <= limit:
