@@ -62,7 +62,8 @@ def _titles():
     import yaml
 
     for name in BRIEFS:
-        report = yaml.safe_load((ROOT / "designs" / f"{name}.yaml").read_text(encoding="utf-8")).get("report", {})
+        brief = yaml.safe_load((ROOT / "designs" / f"{name}.yaml").read_text(encoding="utf-8"))
+        report = brief.get("report", {})
         for key, lang, size in (("title", "zh", TITLE_SIZE), ("subtitle", "zh", SUBTITLE_SIZE),
                                 ("title_en", "en", TITLE_SIZE), ("subtitle_en", "en", SUBTITLE_SIZE)):
             if report.get(key):
