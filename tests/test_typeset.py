@@ -21,6 +21,7 @@ from pathlib import Path
 import pytest
 
 from mechdesign.render.mathbreak import BUDGET_EM, break_display_math, break_formula, tex_width
+from tests.test_cover import cover_defects, wide_middle_dots
 from tests.test_unit_words import parted_at_line_ends
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -733,6 +734,9 @@ def test_every_report_stays_in_the_text_block(brief, lang, tmp_path):
     spaced = letter_spaced_lines(pdf)
     assert (spaced != []) if (brief, lang) in LETTER_SPACED_OPEN else (spaced == []), spaced
     assert heading_at_page_foot(pdf) == []
+    # the cover's title and subtitle broken at phrase boundaries; "N·m" with a narrow dot
+    assert cover_defects(pdf, lang) == []
+    assert wide_middle_dots(pdf) == []
     assert figure_order(pdf) == []
     # no figure above its own chapter's heading, none more than a page after its text
     assert figures_above_their_chapter(pdf) == []

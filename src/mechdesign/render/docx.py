@@ -75,6 +75,12 @@ def _docx_metadata(metadata: dict, text_width: int) -> dict:
     meta["labels"] = {**base, **(meta.get("labels") or {})}
     meta["docx-text-width"] = text_width
     meta["toc-title"] = meta["labels"]["contents"]
+    # the title page's title and subtitle in the lines the PDF's cover sets (explicit line
+    # breaks, render/titlebreak.py); the document properties keep the plain title (_finish)
+    for key in ("title", "subtitle"):
+        cover = meta.pop("cover-" + key, None)
+        if cover:
+            meta[key] = cover
     return meta
 
 

@@ -127,6 +127,21 @@ def cached(function):
     return run
 
 
+# "N·m", "kg·m²": the figures' CJK sans has a full-width U+00B7 ("N • m"); the dot operator
+# U+22C5, which it lacks, comes from DejaVu Sans (the fallback of render/fonts.py), narrow
+_UNIT_DOT = re.compile(r"(?<=[A-Za-z])\u00b7(?=[A-Za-z])")
+
+
+def narrow_unit_dots(fig) -> None:
+    """Set the middle dot between two letters of every text of ``fig`` as U+22C5."""
+    from matplotlib.text import Text
+
+    for text in fig.findobj(Text):
+        value = text.get_text()
+        if "\u00b7" in value:
+            text.set_text(_UNIT_DOT.sub("\u22c5", value))
+
+
 def save_png(fig, path: Path) -> None:
     """Lay out and write a finished figure as PNG, in a helper process when the report
     is rendered with background saves (:mod:`.parallel`)."""
@@ -137,6 +152,7 @@ def save_png(fig, path: Path) -> None:
     upright_subscript_words(fig)
 
     def write():
+        narrow_unit_dots(fig)
         # a figure drawn before with the same state is copied from the cache (render/cache.py)
         key = cache.figure_key(fig, f"tight_layout; png dpi={DPI} zlib=3")
         if not cache.fetch(key, Path(path)):

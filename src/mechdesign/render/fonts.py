@@ -156,7 +156,9 @@ def configure_matplotlib() -> None:
         family = font_manager.FontProperties(fname=str(font_file)).get_name()
     _register_display_font(font_manager)
 
-    matplotlib.rcParams["font.family"] = "sans-serif"
+    # DejaVu Sans also as the fallback of single glyphs the CJK font lacks (the dot operator
+    # of "N⋅m", render/figures.py narrow_unit_dots): matplotlib falls back along this list
+    matplotlib.rcParams["font.family"] = ["sans-serif", "DejaVu Sans"]
     matplotlib.rcParams["font.sans-serif"] = [family, "DejaVu Sans"]
     # tick labels with the true minus sign (U+2212), like the text; the shipped font has it
     matplotlib.rcParams["axes.unicode_minus"] = True

@@ -20,6 +20,7 @@ from ..i18n import tr
 from ..publish import make_staging, publish
 from ..results import dumps
 from .fmt import md_text, meta_text
+from .titlebreak import SUBTITLE_SIZE, TITLE_SIZE, title_markdown
 from .parallel import background_saves
 
 FORMATS = ("md", "pdf", "docx", "dxf", "gif")
@@ -127,6 +128,11 @@ def pdf_metadata(meta, lang: str, group: str | None = None) -> dict:
             # the author is the student (templates/report.typ, render/docx.py)
             "description": md_text(" — ".join(t for t in (meta_text(meta, "title", lang),
                                                           meta_text(meta, "subtitle", lang)) if t))}
+    # the title page's lines: balanced, broken at phrase boundaries (render/titlebreak.py)
+    title, subtitle = meta_text(meta, "title", lang), meta_text(meta, "subtitle", lang)
+    for key, text, size in (("cover-title", title, TITLE_SIZE), ("cover-subtitle", subtitle, SUBTITLE_SIZE)):
+        if text:
+            data[key] = title_markdown(text, lang, size)
     if group is not None:
         data["group"] = md_text(group)
     if lang == "en":

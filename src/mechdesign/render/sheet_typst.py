@@ -156,6 +156,8 @@ def sheet_source(sheet: Sheet) -> str:
         f'#set text(font: ({typst_string(families["sans"])}, {typst_string(families["serif"])}), '
         'top-edge: "ascender", bottom-edge: "baseline", hyphenate: false)',
         "#set par(justify: false)",
+        # the CJK sans's middle dot is full-width ("N • m"): the serif's is narrow
+        f'#show "·": set text(font: {typst_string(families["serif"])})',
         # a text anchored at (x, y): its box shifted by its own size so that the anchor
         # falls where the alignment says, then turned about the anchor (clockwise angles)
         "#let T(x, y, ha, va, ang, size, col, body) = place(dx: x, dy: y, rotate(ang, "
