@@ -662,23 +662,29 @@ def _drive_group(s: Sheet, box, drive, placer: LabelPlacer, caption: str, last: 
     r = [(_schematic_radius(st, 1), _schematic_radius(st, 2)) for st in stages]
     biggest = max([max(a, b) for a, b in r] + [1.0])
     r = [(max(a * 34.0 / biggest, 6.0), max(b * 34.0 / biggest, 8.0)) for a, b in r]
-    centres, items = _layout_drive(stages, r)
     motor_w = 24.0                                  # schematic units left of shaft 0
-    pts = [centres[0] - motor_w - 14.0]
     fw_idx = flywheel_shaft(drive, flywheel)
-    if fw_idx is not None:
-        r_fw = _flywheel_radius(stages, r, fw_idx, flywheel)
-        pts += [centres[fw_idx] + r_fw * (1 + 1j), centres[fw_idx] - r_fw * (1 + 1j)]
-    for kind, a, b, r1, r2, _ in items:
-        for c0, rr in ((a, r1), (b, r2)):
-            pts += [c0 + rr * (1 + 1j), c0 - rr * (1 + 1j)]
-    pts = np.array(pts + list(centres))
-    lo = complex(pts.real.min(), pts.imag.min())
-    hi = complex(pts.real.max(), pts.imag.max())
+    r_fw = _flywheel_radius(stages, r, fw_idx, flywheel) if fw_idx is not None else 0.0
     bx0, by0, bx1, by1 = box
     head = 8.0                                      # the caption's strip at the top
-    sc = min((bx1 - bx0 - 8.0) / max(hi.real - lo.real, 1.0),
-             (by1 - by0 - head - 10.0) / max(hi.imag - lo.imag, 1.0), 1.0)
+    # the wheels clear of each other (a shaft drawn twice, as on the transmission
+    # schematic) when the box holds that at a readable size, else on their shafts
+    for beside in (True, False):
+        centres, items = _layout_drive(stages, r, beside,
+                                       {fw_idx: r_fw} if fw_idx is not None and beside else None)
+        pts = [centres[0] - motor_w - 14.0]
+        if fw_idx is not None:
+            pts += [centres[fw_idx] + r_fw * (1 + 1j), centres[fw_idx] - r_fw * (1 + 1j)]
+        for kind, a, b, r1, r2, _ in items:
+            for c0, rr in ((a, r1), (b, r2)):
+                pts += [c0 + rr * (1 + 1j), c0 - rr * (1 + 1j)]
+        pts = np.array(pts + list(centres))
+        lo = complex(pts.real.min(), pts.imag.min())
+        hi = complex(pts.real.max(), pts.imag.max())
+        sc = min((bx1 - bx0 - 8.0) / max(hi.real - lo.real, 1.0),
+                 (by1 - by0 - head - 10.0) / max(hi.imag - lo.imag, 1.0), 1.0)
+        if sc >= 0.45:
+            break
     if sc < 0.45:
         return False
     view = s.view(complex((bx0 + bx1) / 2, (by0 + by1 - head) / 2) - sc * (lo + hi) / 2, sc)
@@ -693,6 +699,10 @@ def _drive_group(s: Sheet, box, drive, placer: LabelPlacer, caption: str, last: 
     s.line(m + half, p0, "OUTLINE", 0.35)
     placer.block_box((m.real - half - 1, m.imag - half - 1, p0.real, m.imag + half + 1))
     for kind, a, b, r1, r2, j in items:
+        if kind == "shaft":                         # a shaft drawn twice: a chain line joins them
+            view.line(a, b, "CENTER")
+            placer.block_segment(view.p(a), view.p(b), 1.0)
+            continue
         if kind == "coupling":
             continue
         if kind == "belt":
@@ -712,11 +722,13 @@ def _drive_group(s: Sheet, box, drive, placer: LabelPlacer, caption: str, last: 
     for idx, c0 in enumerate(centres):
         if idx > 0 and stages[idx - 1].type == "coupling":
             continue
-        p = view.p(c0)
-        s.circle(p, 1.2, "OUTLINE", 0.35)
-        placer.block(p, 1.8)
         name = shaft_numeral(idx) + (f" ({last})" if idx == len(centres) - 1 else "")
-        placer.place_best(p, name, 3.0, prefer=1 + 1j, gaps=(1.5, 3.0, 5.0))
+        for k, q in enumerate([c0] + [it[2] for it in items if it[0] == "shaft" and it[5] == idx]):
+            p = view.p(q)
+            s.circle(p, 1.2, "OUTLINE", 0.35)
+            placer.block(p, 1.8)
+            placer.place_best(p, name if k == 0 else shaft_numeral(idx), 3.0, prefer=1 + 1j,
+                              gaps=(1.5, 3.0, 5.0))
     return True
 
 
