@@ -16,7 +16,7 @@ import numpy as np
 from ..i18n import N_
 from . import fmt
 from .labels import LabelTable, pgettext
-from .sheet import (LabelPlacer, Sheet, TitleInfo, fit_height, frame, heading,
+from .sheet import (Sheet, TitleInfo, fit_height, frame, heading,
                     sub, table, text_width, title_block_box, with_subscripts)
 
 DEG = 180.0 / np.pi
@@ -198,7 +198,7 @@ def _in_ring(box, c: complex, r_in: float, r_out: float, a0: float, a1: float) -
     return True
 
 
-def circular_diagram(s: Sheet, acts, names, c: complex, r0: float, w: float, origin: float,
+def circular_diagram(s: Sheet, acts, c: complex, r0: float, w: float, origin: float,
                      lang: str) -> list:
     """The circular cycle diagram centred at ``c``: actuator i's ring r0 + i·w … r0 + (i+1)·w,
     each phase the arc of the ring's outer circle from its start to its end (clockwise from
@@ -274,7 +274,7 @@ def cycle_sheet(diagram, info: TitleInfo, lang: str, checks=()) -> Sheet:
     width = 360.0 / mu
     right = left + width
     heading(s, complex((left + right) / 2, y1 - 12.0), lab["title"], 5.0)
-    bar_h, gap = 14.0, 11.0
+    bar_h, gap = (14.0, 11.0) if len(acts) <= 4 else (10.0, 9.0)
     top = y1 - 22.0
     lowest = np.inf                       # the lowest angle written under a bar
     for r, (act, nm) in enumerate(zip(acts, names)):
@@ -336,16 +336,19 @@ def cycle_sheet(diagram, info: TitleInfo, lang: str, checks=()) -> Sheet:
     room = min(ytop - cap_h - 6.0 - (y0 + 6.0), 160.0)
     outer = room / 2 - 9.0                # the tick angles outside the rings
     cx = x0 + 8.0 + outer + 9.0
-    c = complex(cx, ytop - cap_h - 6.0 - room / 2)
-    r0 = 0.3 * outer
-    circular_diagram(s, acts, names, c, r0, (outer - r0) / len(acts), origin, lang)
-    s.text(complex(cx, ytop), cap1, fit_height(cap1, 150.0, 4.0), "TEXT", "center", "top")
-    if cap2:
-        s.text(complex(cx, ytop - fit_height(cap1, 150.0, 4.0) - 1.5), cap2, fit_height(cap2, 150.0, 3.0),
-               "TEXT", "center", "top")
-    legend_y = ytop - cap_h - 4.0
-    for i, nm in enumerate(names):        # the rings' numbers, upper left of the circle
-        s.text(complex(x0 + 6.0, legend_y - 4.5 * i), f"{i + 1}  {nm}", 3.0, "TEXT", "left", "top")
+    if outer >= 12.0 * len(acts):         # (many actuators leave no room: the tables only)
+        c = complex(cx, ytop - cap_h - 6.0 - room / 2)
+        r0 = 0.3 * outer
+        circular_diagram(s, acts, c, r0, (outer - r0) / len(acts), origin, lang)
+        s.text(complex(cx, ytop), cap1, fit_height(cap1, 150.0, 4.0), "TEXT", "center", "top")
+        if cap2:
+            s.text(complex(cx, ytop - fit_height(cap1, 150.0, 4.0) - 1.5), cap2, fit_height(cap2, 150.0, 3.0),
+                   "TEXT", "center", "top")
+        legend_y = ytop - cap_h - 4.0
+        for i, nm in enumerate(names):    # the rings' numbers, upper left of the circle
+            s.text(complex(x0 + 6.0, legend_y - 4.5 * i), f"{i + 1}  {nm}", 3.0, "TEXT", "left", "top")
+    else:
+        cx, outer = x0 - 10.0, 0.0        # the tables from the left edge
     # the phases and the timing checks as tables, right of the circle, above the title block
     rows = []
     for act, nm in zip(acts, names):
