@@ -9,6 +9,7 @@ report's), the table of the phases and the table of the timing checks. Only read
 result."""
 from __future__ import annotations
 
+import unicodedata
 from dataclasses import replace
 
 import numpy as np
@@ -330,7 +331,8 @@ def cycle_sheet(diagram, info: TitleInfo, lang: str, checks=()) -> Sheet:
     ytop = ybar - 16.0                    # the lower part: circular diagram | tables
     # the circular diagram, left, as large as the lower part allows
     caption = lab["circular"]          # "… diagram (from the inside out; …)": two lines
-    cut = min([k for k in (caption.find("（"), caption.find(" (")) if k > 0] or [len(caption)])
+    cut = next((k for k, ch in enumerate(caption) if k > 0 and unicodedata.normalize("NFKC", ch) == "("),
+               len(caption))              # at the bracket, half- or full-width
     cap1, cap2 = caption[:cut].strip(), caption[cut:].strip()
     cap_h = fit_height(cap1, 150.0, 4.0) + (fit_height(cap2, 150.0, 3.0) + 1.5 if cap2 else 0.0)
     room = min(ytop - cap_h - 6.0 - (y0 + 6.0), 160.0)
