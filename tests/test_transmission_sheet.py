@@ -63,3 +63,32 @@ def test_wheels_do_not_cover_each_other_and_stages_are_numbered(example_results,
             dx = max(b[0] - m.real, 0.0, m.real - b[2])
             dy = max(b[1] - m.imag, 0.0, m.imag - b[3])
             assert np.hypot(dx, dy) >= 1.6 + 0.5, (name, e.text, m)
+
+
+@pytest.mark.parametrize("name", ["die_cutter", "shaper", "slotter", "furnace_pusher"])
+def test_layout_beside_keeps_every_wheel_clear_of_the_others(example_results, name):
+    """The layout both drive drawings use (the transmission schematic, the die-cutter's
+    drive group): with ``beside`` two wheels on different centres either mesh (a stage's
+    pair, centre distance r1 + r2, a belt's pulleys farther) or do not reach into each
+    other; a shaft drawn twice is joined to its first drawing."""
+    from mechdesign.render.kinematic_sheet import _layout_drive, _schematic_radius
+
+    stages = list(example_results(name)["drive"].stages)
+    r = [(_schematic_radius(st, 1), _schematic_radius(st, 2)) for st in stages]
+    k = 34.0 / max(max(a, b) for a, b in r)
+    r = [(max(a * k, 6.0), max(b * k, 8.0)) for a, b in r]
+    centres, items = _layout_drive(stages, r, beside=True)
+    wheels = []                                     # (centre, radius, stage)
+    for kind, a, b, r1, r2, j in items:
+        if kind == "shaft":
+            assert abs(a - centres[j]) < 1e-9       # a second drawing of shaft j
+        elif kind == "worm":
+            wheels += [(a, 1.3 * r1, j), (b, r2, j)]
+        elif kind != "coupling":
+            wheels += [(a, r1, j), (b, r2, j)]
+    for i, (ca, ra, ja) in enumerate(wheels):
+        for cb, rb, jb in wheels[i + 1:]:
+            d = abs(ca - cb)
+            if d < 1e-9 or (ja == jb):
+                continue                            # one shaft; one stage's pair
+            assert d >= ra + rb - 1e-9, (name, ca, ra, ja, cb, rb, jb)
