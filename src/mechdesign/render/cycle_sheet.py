@@ -2,9 +2,14 @@
 machine's :class:`~mechdesign.core.cycle.CycleDiagram` against the main-shaft angle φ —
 one bar per actuator, each phase a box from its start to its end with its name, the
 phase boundaries' angles written under the bar, φ from the diagram's origin over one
-turn at a stated scale μφ (°/mm) — and a table of the phases. Only reads the result."""
+turn at a stated scale μφ (°/mm) — across the upper part of the sheet; under it the
+circular diagram (one ring per actuator, the first innermost, each phase an arc of its
+ring from its start to its end, φ = 0 at the top and increasing clockwise, as the
+report's), the table of the phases and the table of the timing checks. Only reads the
+result."""
 from __future__ import annotations
 
+import unicodedata
 from dataclasses import replace
 
 import numpy as np
@@ -12,7 +17,7 @@ import numpy as np
 from ..i18n import N_
 from . import fmt
 from .labels import LabelTable, pgettext
-from .sheet import (LabelPlacer, Sheet, TitleInfo, fit_height, frame, heading,
+from .sheet import (Sheet, TitleInfo, fit_height, frame, heading,
                     sub, table, text_width, title_block_box, with_subscripts)
 
 DEG = 180.0 / np.pi
@@ -38,6 +43,15 @@ LABELS = LabelTable({
     "end": N_("end φ (°)"),
     "span": N_("span Δφ (°)"),
     "period": N_("period T = {t} s"),
+    "circular": N_("Circular motion cycle diagram (actuators from the inside out; φ measured clockwise from the top)"),
+    "checks": N_("Timing checks"),
+    "no": N_("No."),
+    "requirement": N_("Requirement"),
+    "slack_deg": N_("Slack/°"),
+    "slack_s": N_("Slack/s"),
+    "result": N_("Result"),
+    "pass": N_("PASS"),
+    "fail": N_("FAIL"),
 })
 
 
@@ -158,9 +172,95 @@ def _phase_label(s: Sheet, text: str, state: str, xa: float, xb: float, yb: floa
             return
 
 
-def cycle_sheet(diagram, info: TitleInfo, lang: str) -> Sheet:
+def polar(c: complex, r: float, phi_deg: float) -> complex:
+    """The point at radius ``r`` from ``c`` at the shaft angle φ [°] of the circular diagram:
+    φ = 0 at the top, increasing clockwise."""
+    return c + r * np.exp(1j * np.radians(90.0 - phi_deg))
+
+
+def _in_ring(box, c: complex, r_in: float, r_out: float, a0: float, a1: float) -> bool:
+    """``box`` lies inside the ring r_in…r_out between the shaft angles a0…a1 [°] (a0 < a1,
+    clockwise), :data:`GAP` from its circles and its radial boundaries."""
+    x0, y0, x1, y1 = box
+    pts = [complex(x, y) for x in np.linspace(x0, x1, 5) for y in (y0, y1)] + \
+          [complex(x, y) for x in (x0, x1) for y in np.linspace(y0, y1, 3)]
+    for z in pts:
+        d = z - c
+        if not (r_in + GAP <= abs(d) <= r_out - GAP):
+            return False
+        phi = (90.0 - np.degrees(np.angle(d))) % 360.0
+        rel = (phi - a0) % 360.0
+        if rel > a1 - a0:
+            return False
+        # the distance to the two radial boundaries, square to them
+        arm = abs(d) * np.sin(np.radians(min(rel, a1 - a0 - rel)))
+        if min(rel, a1 - a0 - rel) < 90.0 and arm < GAP:
+            return False
+    return True
+
+
+def circular_diagram(s: Sheet, acts, c: complex, r0: float, w: float, origin: float,
+                     lang: str) -> list:
+    """The circular cycle diagram centred at ``c``: actuator i's ring r0 + i·w … r0 + (i+1)·w,
+    each phase the arc of the ring's outer circle from its start to its end (clockwise from
+    the top) and the radial lines at its boundaries, its name inside where it fits; the
+    rings numbered, φ ticks every 30° outside, the origin's radius dash-dotted. Returns the
+    text boxes it drew (for the legend beside it)."""
+    outer = r0 + len(acts) * w
+    s.circle(c, r0, "OUTLINE", 0.35)
+    boxes = []
+    for i, act in enumerate(acts):
+        r_in, r_out = r0 + i * w, r0 + (i + 1) * w
+        bounds = []
+        for ph in act.phases:
+            a, span = (float(ph.start) * DEG) % 360.0, float(ph.span) * DEG
+            # the arc of the phase on the ring's outer circle: counter-clockwise from the
+            # phase's end to its start
+            s.arc(c, r_out, np.radians(90.0 - (a + span)), np.radians(90.0 - a), "OUTLINE", 0.5)
+            s.line(polar(c, r_in, a), polar(c, r_out, a), "OUTLINE", 0.5)
+            bounds.append(a)
+            name = phase_name(ph, lang)
+            mid = polar(c, r_in + w / 2, a + span / 2)
+            for h in (3.0, 2.5, 2.0, 1.8):
+                wd, th = _WIDTH * text_width(name, h), _EXTENT * h
+                box = (mid.real - wd / 2, mid.imag - th / 2, mid.real + wd / 2, mid.imag + th / 2)
+                if _in_ring(box, c, r_in, r_out, a, a + span):
+                    s.text(complex(mid.real, box[3]), name, h, "TEXT", "center", "top")
+                    boxes.append(box)
+                    break
+        # the ring's number where it is farthest from the boundaries and the names
+        best = None
+        for phi in np.arange(0.0, 360.0, 2.0):
+            z = polar(c, r_in + w / 2, phi)
+            nb = (z.real - 2.4, z.imag - 2.4, z.real + 2.4, z.imag + 2.4)
+            if any(not (nb[2] + 1 <= b[0] or b[2] + 1 <= nb[0] or nb[3] + 1 <= b[1] or b[3] + 1 <= nb[1])
+                   for b in boxes):
+                continue
+            room = min(abs(((phi - b + 180.0) % 360.0) - 180.0) for b in bounds)
+            if best is None or room > best[0]:
+                best = (room, z, nb)
+        if best is not None:
+            s.circle(best[1], 2.2, "OUTLINE", 0.25)
+            s.text(best[1], str(i + 1), 2.5, "TEXT", "center", "middle")
+            boxes.append(best[2])
+    for deg in range(0, 360, 30):
+        s.line(polar(c, outer, deg), polar(c, outer + 2.0, deg), "OUTLINE", 0.35)
+        s.text(polar(c, outer + 5.0, deg), f"{deg}°", 2.5, "TEXT", "center", "middle")
+    # the diagram's origin: its radius inside the rings; the sense of φ: an arrow clockwise
+    s.line(c, polar(c, r0, origin), "CENTER")
+    ra = 0.55 * r0
+    s.arc(c, ra, np.radians(90.0 - 150.0), np.radians(90.0 - 60.0), "OUTLINE", 0.35)
+    tip, u = polar(c, ra, 150.0), np.exp(1j * np.radians(90.0 - 150.0 - 90.0))   # clockwise tangent
+    s.fill([tip, tip - 3.0 * u + 1.0j * u, tip - 3.0 * u - 1.0j * u])
+    s.text(polar(c, 0.25 * r0, 105.0), "φ", 3.5, "TEXT", "center", "middle")
+    return boxes
+
+
+def cycle_sheet(diagram, info: TitleInfo, lang: str, checks=()) -> Sheet:
     """The A3 cycle sheet of ``diagram`` (core.cycle.CycleDiagram) at the smallest angle
-    scale μφ of 1, 1.25, 1.5, 2 °/mm whose 360° fit the sheet beside the actuators' names."""
+    scale μφ of 1, 1.25, 1.5, 2 °/mm whose 360° fit the sheet beside the actuators' names;
+    under it the circular diagram, the phases and the timing ``checks``
+    (core.cycle.ConstraintCheck) as tables."""
     lab = LABELS[lang]
     s = Sheet("A3")
     x0, y0, x1, y1 = s.inner
@@ -175,9 +275,8 @@ def cycle_sheet(diagram, info: TitleInfo, lang: str) -> Sheet:
     width = 360.0 / mu
     right = left + width
     heading(s, complex((left + right) / 2, y1 - 12.0), lab["title"], 5.0)
-    bar_h, gap = 10.0, 9.0
+    bar_h, gap = (14.0, 11.0) if len(acts) <= 4 else (10.0, 9.0)
     top = y1 - 22.0
-    placer = LabelPlacer(s)
     lowest = np.inf                       # the lowest angle written under a bar
     for r, (act, nm) in enumerate(zip(acts, names)):
         yt = top - r * (bar_h + gap)
@@ -226,7 +325,33 @@ def cycle_sheet(diagram, info: TitleInfo, lang: str) -> Sheet:
         s.text(complex(xv, ybar - 1.5), fmt.exact((origin + t) % 360.0 if t < 360 else (origin % 360.0 or 360.0), decimals=2),
                2.5, "TEXT", "center", "top")
     s.text(complex((left + right) / 2, ybar - 7.0), lab["phi"], 3.5, "TEXT", "center", "top")
-    # the phases as a table, under the diagram, left of the title block
+    period = 2 * np.pi / float(diagram.shaft_speed)
+    s.text(complex(right, ybar - 7.0), with_subscripts(lab["scale"], "μ_φ").format(m=fmt.exact(mu)) + "   "
+           + lab["period"].format(t=fmt.sig(period)), 3.0, "TEXT", "right", "top")
+    ytop = ybar - 16.0                    # the lower part: circular diagram | tables
+    # the circular diagram, left, as large as the lower part allows
+    caption = lab["circular"]          # "… diagram (from the inside out; …)": two lines
+    cut = next((k for k, ch in enumerate(caption) if k > 0 and unicodedata.normalize("NFKC", ch) == "("),
+               len(caption))              # at the bracket, half- or full-width
+    cap1, cap2 = caption[:cut].strip(), caption[cut:].strip()
+    cap_h = fit_height(cap1, 150.0, 4.0) + (fit_height(cap2, 150.0, 3.0) + 1.5 if cap2 else 0.0)
+    room = min(ytop - cap_h - 6.0 - (y0 + 6.0), 160.0)
+    outer = room / 2 - 9.0                # the tick angles outside the rings
+    cx = x0 + 8.0 + outer + 9.0
+    if outer >= 12.0 * len(acts):         # (many actuators leave no room: the tables only)
+        c = complex(cx, ytop - cap_h - 6.0 - room / 2)
+        r0 = 0.3 * outer
+        circular_diagram(s, acts, c, r0, (outer - r0) / len(acts), origin, lang)
+        s.text(complex(cx, ytop), cap1, fit_height(cap1, 150.0, 4.0), "TEXT", "center", "top")
+        if cap2:
+            s.text(complex(cx, ytop - fit_height(cap1, 150.0, 4.0) - 1.5), cap2, fit_height(cap2, 150.0, 3.0),
+                   "TEXT", "center", "top")
+        legend_y = ytop - cap_h - 4.0
+        for i, nm in enumerate(names):    # the rings' numbers, upper left of the circle
+            s.text(complex(x0 + 6.0, legend_y - 4.5 * i), f"{i + 1}  {nm}", 3.0, "TEXT", "left", "top")
+    else:
+        cx, outer = x0 - 10.0, 0.0        # the tables from the left edge
+    # the phases and the timing checks as tables, right of the circle, above the title block
     rows = []
     for act, nm in zip(acts, names):
         for ph in act.phases:
@@ -234,12 +359,23 @@ def cycle_sheet(diagram, info: TitleInfo, lang: str) -> Sheet:
             rows.append([nm, phase_name(ph, lang), fmt.f(a % 360.0, 1),
                          fmt.f((a + float(ph.span) * DEG) % 360.0, 1),
                          fmt.f(float(ph.span) * DEG, 1)])
-    ytable = ybar - 15.0
-    row_h = min(6.0, (ytable - y0 - 6.0) / (len(rows) + 2))
-    table(s, x0 + 8.0, ytable, [40, 40, 30, 30, 30], rows,
-          head=[lab["actuator"], lab["phase"], lab["start"], lab["end"], lab["span"]],
-          title=lab["table"], title_height=3.5, height=min(3.0, row_h * 0.55), row_h=row_h)
-    period = 2 * np.pi / float(diagram.shaft_speed)
-    s.text(complex(tb[0], tb[3] + 8.0), with_subscripts(lab["scale"], "μ_φ").format(m=fmt.exact(mu)) + "   "
-           + lab["period"].format(t=fmt.sig(period)), 3.5, "TEXT")
+    crows = []
+    if checks:
+        from .components_report import constraint_text
+        for k, chk in enumerate(checks, 1):
+            crows.append([str(k), constraint_text(diagram, chk.constraint, lang),
+                          fmt.f(chk.slack * DEG, 2), fmt.f(chk.slack / float(diagram.shaft_speed), 3),
+                          lab["pass"] if chk.ok else lab["fail"]])
+    tx = cx + outer + 18.0
+    tw = x1 - 6.0 - tx
+    lines = len(rows) + 2 + (len(crows) + 2 if crows else 0)
+    row_h = min(6.5, (ytop - (tb[3] + 6.0) - (8.0 if crows else 0.0)) / lines)
+    yb = table(s, tx, ytop, [tw * f for f in (0.24, 0.28, 0.16, 0.16, 0.16)], rows,
+               head=[lab["actuator"], lab["phase"], lab["start"], lab["end"], lab["span"]],
+               title=lab["table"], title_height=3.5, height=min(3.0, row_h * 0.55), row_h=row_h)
+    if crows:
+        table(s, tx, yb - 8.0, [tw * f for f in (0.06, 0.64, 0.11, 0.10, 0.09)], crows,
+              head=[lab["no"], lab["requirement"], lab["slack_deg"], lab["slack_s"], lab["result"]],
+              aligns=["center", "left", "center", "center", "center"],
+              title=lab["checks"], title_height=3.5, height=min(3.0, row_h * 0.55), row_h=row_h)
     return s

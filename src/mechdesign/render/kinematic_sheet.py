@@ -662,23 +662,29 @@ def _drive_group(s: Sheet, box, drive, placer: LabelPlacer, caption: str, last: 
     r = [(_schematic_radius(st, 1), _schematic_radius(st, 2)) for st in stages]
     biggest = max([max(a, b) for a, b in r] + [1.0])
     r = [(max(a * 34.0 / biggest, 6.0), max(b * 34.0 / biggest, 8.0)) for a, b in r]
-    centres, items = _layout_drive(stages, r)
     motor_w = 24.0                                  # schematic units left of shaft 0
-    pts = [centres[0] - motor_w - 14.0]
     fw_idx = flywheel_shaft(drive, flywheel)
-    if fw_idx is not None:
-        r_fw = _flywheel_radius(stages, r, fw_idx, flywheel)
-        pts += [centres[fw_idx] + r_fw * (1 + 1j), centres[fw_idx] - r_fw * (1 + 1j)]
-    for kind, a, b, r1, r2, _ in items:
-        for c0, rr in ((a, r1), (b, r2)):
-            pts += [c0 + rr * (1 + 1j), c0 - rr * (1 + 1j)]
-    pts = np.array(pts + list(centres))
-    lo = complex(pts.real.min(), pts.imag.min())
-    hi = complex(pts.real.max(), pts.imag.max())
+    r_fw = _flywheel_radius(stages, r, fw_idx, flywheel) if fw_idx is not None else 0.0
     bx0, by0, bx1, by1 = box
     head = 8.0                                      # the caption's strip at the top
-    sc = min((bx1 - bx0 - 8.0) / max(hi.real - lo.real, 1.0),
-             (by1 - by0 - head - 10.0) / max(hi.imag - lo.imag, 1.0), 1.0)
+    # the wheels clear of each other (a shaft drawn twice, as on the transmission
+    # schematic) when the box holds that at a readable size, else on their shafts
+    for beside in (True, False):
+        centres, items = _layout_drive(stages, r, beside,
+                                       {fw_idx: r_fw} if fw_idx is not None and beside else None)
+        pts = [centres[0] - motor_w - 14.0]
+        if fw_idx is not None:
+            pts += [centres[fw_idx] + r_fw * (1 + 1j), centres[fw_idx] - r_fw * (1 + 1j)]
+        for kind, a, b, r1, r2, _ in items:
+            for c0, rr in ((a, r1), (b, r2)):
+                pts += [c0 + rr * (1 + 1j), c0 - rr * (1 + 1j)]
+        pts = np.array(pts + list(centres))
+        lo = complex(pts.real.min(), pts.imag.min())
+        hi = complex(pts.real.max(), pts.imag.max())
+        sc = min((bx1 - bx0 - 8.0) / max(hi.real - lo.real, 1.0),
+                 (by1 - by0 - head - 10.0) / max(hi.imag - lo.imag, 1.0), 1.0)
+        if sc >= 0.45:
+            break
     if sc < 0.45:
         return False
     view = s.view(complex((bx0 + bx1) / 2, (by0 + by1 - head) / 2) - sc * (lo + hi) / 2, sc)
@@ -693,6 +699,10 @@ def _drive_group(s: Sheet, box, drive, placer: LabelPlacer, caption: str, last: 
     s.line(m + half, p0, "OUTLINE", 0.35)
     placer.block_box((m.real - half - 1, m.imag - half - 1, p0.real, m.imag + half + 1))
     for kind, a, b, r1, r2, j in items:
+        if kind == "shaft":                         # a shaft drawn twice: a chain line joins them
+            view.line(a, b, "CENTER")
+            placer.block_segment(view.p(a), view.p(b), 1.0)
+            continue
         if kind == "coupling":
             continue
         if kind == "belt":
@@ -712,11 +722,13 @@ def _drive_group(s: Sheet, box, drive, placer: LabelPlacer, caption: str, last: 
     for idx, c0 in enumerate(centres):
         if idx > 0 and stages[idx - 1].type == "coupling":
             continue
-        p = view.p(c0)
-        s.circle(p, 1.2, "OUTLINE", 0.35)
-        placer.block(p, 1.8)
         name = shaft_numeral(idx) + (f" ({last})" if idx == len(centres) - 1 else "")
-        placer.place_best(p, name, 3.0, prefer=1 + 1j, gaps=(1.5, 3.0, 5.0))
+        for k, q in enumerate([c0] + [it[2] for it in items if it[0] == "shaft" and it[5] == idx]):
+            p = view.p(q)
+            s.circle(p, 1.2, "OUTLINE", 0.35)
+            placer.block(p, 1.8)
+            placer.place_best(p, name if k == 0 else shaft_numeral(idx), 3.0, prefer=1 + 1j,
+                              gaps=(1.5, 3.0, 5.0))
     return True
 
 
@@ -1114,15 +1126,32 @@ def _schematic_radius(stage, which: int) -> float:
     return float(z or 20)
 
 
-def _layout_drive(stages, r) -> tuple[list, list]:
+def _overlap(c: complex, R: float, placed, skip=()) -> float:
+    """How far a circle (c, R) reaches into the circles ``placed`` (centre, radius), 3 units
+    of clearance asked, those centred on a point of ``skip`` (its own shaft) left out."""
+    return sum(max(0.0, R + rr + 3.0 - abs(c - cc)) for cc, rr in placed
+               if all(abs(cc - z) > 1e-9 for z in skip))
+
+
+def _layout_drive(stages, r, beside: bool = False, rims=None) -> tuple[list, list]:
     """Shaft centres (schematic units) and the items to draw: each stage's next shaft is
     put where its wheel overlaps the wheels already placed least (directions tried from
     straight right, turning up and down in steps of 30°); a worm's wheel sits above the
-    worm, a belt's pulleys 1.5 (r1 + r2) + 16 apart."""
+    worm, a belt's pulleys 1.5 (r1 + r2) + 16 apart.
+
+    ``beside``: a stage whose wheels would still cover a wheel already drawn has its driving
+    wheel drawn beside the shaft's other wheel instead of on it — the shaft drawn a second
+    time (an item ("shaft", first centre, second centre, 0, 0, index of the shaft)), so no
+    wheel covers a wheel of another stage. ``rims``: {shaft index: radius} of other circles
+    on a shaft (a flywheel) the wheels are kept clear of."""
     centres = [0j]
     items = []
     placed: list[tuple[complex, float]] = []          # circles already drawn (centre, radius)
+    rims = dict(rims or {})
+    if 0 in rims:
+        placed.append((0j, rims[0]))
     z = 0j
+    dirs = (0, 30, -30, 60, -60, 90, -90, 120, -120)
     for j, st in enumerate(stages):
         r1, r2 = r[j]
         if st.type == "coupling":
@@ -1135,21 +1164,41 @@ def _layout_drive(stages, r) -> tuple[list, list]:
             placed += [(z, 1.3 * r1), (nxt, r2)]
             z = nxt
             centres.append(z)
+            if len(centres) - 1 in rims:
+                placed.append((z, rims[len(centres) - 1]))
             continue
         dist = (r1 + r2) * 1.5 + 16.0 if st.type in ("belt", "chain") else r1 + r2
         best = None
-        for rank, deg in enumerate((0, 30, -30, 60, -60, 90, -90, 120, -120)):
+        for rank, deg in enumerate(dirs):
             cand = z + dist * np.exp(1j * np.radians(deg))
-            over = sum(max(0.0, r2 + R + 3.0 - abs(cand - c)) for c, R in placed
-                       if abs(c - z) > 1e-9)
+            over = _overlap(cand, r2, placed, () if beside else (z,))
+            if beside:      # the driving wheel on the shaft: only its own shaft's wheels
+                over += _overlap(z, r1, placed, (z,))
             cost = over + 0.01 * rank
             if best is None or cost < best[0]:
-                best = (cost, cand)
-        nxt = best[1]
-        items.append(("belt" if st.type in ("belt", "chain") else "gear", z, nxt, r1, r2, j))
-        placed += [(z, r1), (nxt, r2)]
+                best = (cost, cand, z)
+        if beside and best[0] >= 0.5 and any(abs(c - z) < 1e-9 for c, _r in placed):
+            # the shaft drawn again beside its wheel (and clear of every wheel), this
+            # stage's wheels from there
+            own = max(rr for c, rr in placed if abs(c - z) < 1e-9)
+            for rank, deg in enumerate(dirs + (150, -150, 180)):
+                for far in (own + r1 + 6.0, own + r1 + 16.0, own + r1 + 30.0):
+                    start = z + far * np.exp(1j * np.radians(deg))
+                    for rank2, deg2 in enumerate(dirs):
+                        cand = start + dist * np.exp(1j * np.radians(deg2))
+                        cost = (_overlap(start, r1, placed) + _overlap(cand, r2, placed + [(start, r1)], (start,))
+                                + 0.01 * (rank + rank2) + 0.001 * far)
+                        if cost < best[0]:
+                            best = (cost, cand, start)
+        nxt, start = best[1], best[2]
+        if start != z:
+            items.append(("shaft", z, start, 0.0, 0.0, len(centres) - 1))
+        items.append(("belt" if st.type in ("belt", "chain") else "gear", start, nxt, r1, r2, j))
+        placed += [(start, r1), (nxt, r2)]
         z = nxt
         centres.append(z)
+        if len(centres) - 1 in rims:
+            placed.append((z, rims[len(centres) - 1]))
     return centres, items
 
 
@@ -1219,17 +1268,18 @@ def drive_schematic(drive, info: TitleInfo, lang: str, flywheel=None) -> Sheet:
     biggest = max([max(a, b) for a, b in r] + [1.0])
     k = 34.0 / biggest
     r = [(max(a * k, 4.0 if st.type == "worm" else 6.0), max(b * k, 8.0)) for (a, b), st in zip(r, stages)]
-    centres, items = _layout_drive(stages, r)
-    side_motor = bool(items) and items[0][0] in ("coupling", "worm")
-    pts = list(centres)
+    side_motor = bool(stages) and stages[0].type in ("coupling", "worm")
     fw_idx = flywheel_shaft(drive, flywheel)
     if fw_idx is not None and side_motor and fw_idx == 0:
         fw_idx = None                            # the motor's shaft drawn from the side
+    r_fw = _flywheel_radius(stages, r, fw_idx, flywheel) if fw_idx is not None else 0.0
+    centres, items = _layout_drive(stages, r, beside=True,
+                                   rims={fw_idx: r_fw} if fw_idx is not None else None)
+    pts = list(centres)
     if fw_idx is not None:
-        r_fw = _flywheel_radius(stages, r, fw_idx, flywheel)
         pts += [centres[fw_idx] + (r_fw + 2.0) * (1 + 1j), centres[fw_idx] - (r_fw + 2.0) * (1 + 1j)]
     for kind, a, b, r1, r2, _ in items:
-        if kind == "coupling":
+        if kind in ("coupling", "shaft"):
             continue
         for c0, rr in ((a, r1), (b, r2)):
             pts += [c0 + (rr + 2.0) * (1 + 1j), c0 - (rr + 2.0) * (1 + 1j)]
@@ -1238,14 +1288,36 @@ def drive_schematic(drive, info: TitleInfo, lang: str, flywheel=None) -> Sheet:
     pts = np.array(pts)
     lo = complex(pts.real.min(), pts.imag.min())
     hi = complex(pts.real.max(), pts.imag.max())
+    # the tables first, top right: the drawing takes the larger of the strip left of them
+    # (the whole height) and the one under them (the whole width)
     table_w = 175.0
+    tx = ax1 - table_w
+    rows = [[shaft_numeral(sh.index), fmt.rpm(sh.speed_rpm), fmt.sig(sh.power / 1e3),
+             fmt.sig(sh.torque)] for sh in drive.shafts]
+    ybot = table(s, tx, ay1 - 6.0, [25, 50, 50, 50], rows, head=[lab["shaft"], lab["n"], lab["P"], lab["T"]],
+                 title=lab["shafts"], title_height=3.5, height=3.0, row_h=6.0)
+    srows = []
+    for j, st in enumerate(stages):
+        data = (f"{sub('d', '1')}={fmt.f(st.d1 * MM, 0)}, {sub('d', '2')}={fmt.f(st.d2 * MM, 0)} mm"
+                if st.d1 else (f"{sub('z', '1')}={st.z1}, {sub('z', '2')}={st.z2}" if st.z1 else "—"))
+        srows.append([str(j + 1), st.name(lang), fmt.sig(st.ratio), data])
+    ybot = table(s, tx, ybot - 8.0, [12, 58, 25, 80], srows,
+                 head=[tr(lang).pgettext("kinematic sheet", "No."), lab["stage"], lab["ratio"], lab["data"]],
+                 title=lab["stages"], title_height=3.5, height=3.0, row_h=6.0)
     motor_room = 62.0
-    dx0, dx1 = ax0 + 8.0 + motor_room, ax1 - table_w - 14.0
-    dy0, dy1 = tb[3] + 10.0, ay1 - 10.0
-    sc = min((dx1 - dx0) / max(hi.real - lo.real, 1.0), (dy1 - dy0) / max(hi.imag - lo.imag, 1.0), 2.5)
+    span = complex(max(hi.real - lo.real, 1.0), max(hi.imag - lo.imag, 1.0))
+    boxes = [(ax0 + 8.0 + motor_room, tb[3] + 10.0, tx - 14.0, ay1 - 10.0),
+             (ax0 + 8.0 + motor_room, tb[3] + 10.0, ax1 - 10.0, ybot - 10.0)]
+    fits = [min((bx1 - bx0) / span.real, (by1 - by0) / span.imag, 2.5) for bx0, by0, bx1, by1 in boxes]
+    dx0, dy0, dx1, dy1 = boxes[int(np.argmax(fits))]
+    sc = max(fits)
     view = s.view(complex((dx0 + dx1) / 2, (dy0 + dy1) / 2) - sc * (lo + hi) / 2, sc)
     placer = LabelPlacer(s, area=(ax0, tb[3] + 4, dx1 + 6, ay1))
     placer.block_box((tb[0] - 2, tb[1], tb[2], tb[3] + 2))
+    placer.block_box((tx - 2, ybot - 2, ax1, ay1))
+    # every shaft's centre (and a shaft drawn twice) kept clear of the labels
+    for c0 in list(centres) + [it[2] for it in items if it[0] == "shaft"]:
+        placer.block(view.p(c0), 3.0)
 
     def ring(c0, rr, size=1.2):
         for t in np.linspace(0, 2 * np.pi, 48)[:-1]:
@@ -1264,6 +1336,9 @@ def drive_schematic(drive, info: TitleInfo, lang: str, flywheel=None) -> Sheet:
         placer.block_box((left.real - 54.0, left.imag - 16.0, left.real, left.imag + 11.0))
         for dx in (-14.0, -11.0):                       # the coupling: two short bars
             s.line(left + dx - 5.0j, left + dx + 5.0j, "OUTLINE", 0.5)
+        placer.block_box((left.real - 15.0, left.imag - 5.5, left.real - 10.0, left.imag + 5.5))
+        if stages[0].type == "coupling":                # its stage number
+            placer.leader(left - 12.5 - 5.0j, "1", 3.5, prefer=1 - 1j)
         motor_at = left - 35.0 + 13.0j
     else:
         c = p0 - 32.0
@@ -1277,6 +1352,10 @@ def drive_schematic(drive, info: TitleInfo, lang: str, flywheel=None) -> Sheet:
     text = lab["motor"].format(m=drive.motor.designation)
     placer.text(motor_at, text, 3.0, "center", "bottom")
     for kind, a, b, r1, r2, j in items:
+        if kind == "shaft":                      # a shaft drawn twice: a chain line joins them
+            view.line(a, b, "CENTER")
+            placer.block_segment(view.p(a), view.p(b), 1.0)
+            continue
         st = stages[j]
         if kind == "coupling":
             continue
@@ -1323,26 +1402,17 @@ def drive_schematic(drive, info: TitleInfo, lang: str, flywheel=None) -> Sheet:
         if idx > 0 and stages[idx - 1].type == "coupling":
             continue                               # the coupled shaft is the next one's
         p = view.p(c0)
-        s.circle(p, 1.6, "OUTLINE", 0.35)
-        placer.block(p, 2.0)
-        placer.place_best(p, shaft_numeral(idx), 3.5, prefer=1 + 1j,
-                          gaps=(1.5, 3.0, 5.0))
-    # tables right of the drawing
-    tx = ax1 - table_w
-    rows = [[shaft_numeral(sh.index), fmt.rpm(sh.speed_rpm), fmt.sig(sh.power / 1e3),
-             fmt.sig(sh.torque)] for sh in drive.shafts]
-    ybot = table(s, tx, ay1 - 6.0, [25, 50, 50, 50], rows, head=[lab["shaft"], lab["n"], lab["P"], lab["T"]],
-                 title=lab["shafts"], title_height=3.5, height=3.0, row_h=6.0)
-    srows = []
-    for j, st in enumerate(stages):
-        data = (f"{sub('d', '1')}={fmt.f(st.d1 * MM, 0)}, {sub('d', '2')}={fmt.f(st.d2 * MM, 0)} mm"
-                if st.d1 else (f"{sub('z', '1')}={st.z1}, {sub('z', '2')}={st.z2}" if st.z1 else "—"))
-        srows.append([str(j + 1), st.name(lang), fmt.sig(st.ratio), data])
-    table(s, tx, ybot - 8.0, [12, 58, 25, 80], srows, head=[tr(lang).pgettext("kinematic sheet", "No."), lab["stage"],
-                                                             lab["ratio"], lab["data"]],
-          title=lab["stages"], title_height=3.5, height=3.0, row_h=6.0)
+        copies = [p] + [view.p(it[2]) for it in items if it[0] == "shaft" and it[5] == idx]
+        for q in copies:
+            s.circle(q, 1.6, "OUTLINE", 0.35)
+            placer.block(q, 2.0)
+            placer.place_best(q, shaft_numeral(idx), 3.5, prefer=1 + 1j,
+                              gaps=(1.5, 3.0, 5.0))
     notes = [lab["not_scale"], lab["motor"].format(m=drive.motor.designation)
              + f"  P = {fmt.f(drive.motor.power / 1e3, 2)} kW  n = {fmt.f(drive.motor.full_load_rpm, 0)} r/min"]
+    if any(it[0] == "shaft" for it in items):
+        notes.append(gt.pgettext("kinematic sheet", "a shaft's numeral written twice: the shaft drawn "
+                                 "again beside its other wheel (joined by a chain line)"))
     if fw_idx is not None:
         rim = getattr(flywheel, "rim", None)
         notes.append(with_subscripts(gt.pgettext("kinematic sheet", "flywheel on shaft {s}: JF = {J} kg·m²"),

@@ -163,7 +163,7 @@ def _diagram_builders(results: dict, found) -> list:
         def cycle_builder(info, lang):
             from .cycle_sheet import cycle_sheet
 
-            return cycle_sheet(cycle.diagram, info, lang)
+            return cycle_sheet(cycle.diagram, info, lang, tuple(getattr(cycle, "checks", ()) or ()))
 
         out.append(("cycle", cycle_builder))
     return out
