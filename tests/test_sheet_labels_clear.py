@@ -39,11 +39,9 @@ def _norm(text: str) -> str:
 CROSSED_OPEN: dict[tuple[str, str], set[str]] = {
     ('cam_7_3', 'cam'): {'O', 'r#=##.##', 'rr=##.##'},
     ('die_cutter', 'analysis'): {'#', 'G#', 'O #', "n#s#'", 'ΔWmax = #### J', '等效驱动力矩 Md = ###.# N·m'},
+    ('die_cutter', 'transmission'): {'Ⅰ'},
     ('die_cutter', 'cam'): {'#′', 'O'},
-    ('die_cutter', 'transmission'): {'Ⅰ', 'Ⅱ'},
-    ('furnace_drive', 'transmission'): {'# Ⅱ'},
     ('furnace_pusher', 'analysis'): {'#', '##', 'B', 'O #', 'o', '平均 Mb = ##.## N·m'},
-    ('furnace_pusher', 'transmission'): {'# Ⅱ'},
     ('linkage_sixbar', 'analysis'): {'A', 'O #', 'ΔWmax = ###.# J', '等效驱动力矩 Md = ##.## N·m'},
     ('lockbeam', 'analysis'): {'##', '###.##', 'O #'},
     ('lockbeam', 'cam'): {'#′', 'O'},
@@ -58,7 +56,6 @@ CROSSED_OPEN: dict[tuple[str, str], set[str]] = {
     ('slotter', 'analysis'): {'##.##', 'B', 'O #', 'Wr', 'ΔWmax = ##.## J', '等效驱动力矩 Md = ##.## N·m'},
     ('slotter', 'cam'): {'A', 'O', 'rr=##.##'},
     ('slotter', 'gear'): {'B #', 'N #', 'P', 'r# = ###.##', 'ra# = ###.##'},
-    ('slotter', 'transmission'): {'Ⅰ'},
     ('textbook_guide_bar', 'analysis'): {'#', '###.##', "##'", 'A', 'C', 'φ##', '平均 Mb = #.### N·m'},
 }
 TOUCHING_OPEN: dict[tuple[str, str], set[str]] = {
@@ -66,7 +63,7 @@ TOUCHING_OPEN: dict[tuple[str, str], set[str]] = {
     ('furnace_pusher', 'analysis'): {'"c\'" and "n#\'"', "'FR##' and 'FR##'", "'FR##' and 'Fr'"},
     ('linkage_sixbar', 'analysis'): {'"a\'" and "n#\'"', "'FI#' and 'FR##'"},
     ('press', 'analysis'): {'\'#\' and "#\'"', "'b' and 's#'"},
-    ('shaper', 'analysis'): {'"a\'" and "k\'"'},
+    ('shaper', 'analysis'): {'"a\'" and "k\'"', '"FR##\'" and \'o\''},
     ('shaper_lengths', 'analysis'): {'"b\'" and "n#\'"'},
     ('slotter', 'analysis'): {'"#\'" and \'#\'', '"n#\'" and "n#b\'"', "'a' and 'a#'"},
 }
