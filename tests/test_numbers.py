@@ -185,3 +185,47 @@ def test_shaft_table_and_amplification_table_by_the_rule(example_results):
         assert _decimals(cells[0]) <= 2 and _decimals(cells[1]) == 2 and _decimals(cells[2]) <= 2, row
     jump = _table_rows(md, "jump of the driven speed")
     assert jump and "5.2360" not in jump[0][2] and _decimals(jump[0][3]) <= 3, jump
+
+
+_SUP = str.maketrans("⁰¹²³⁴⁵⁶⁷⁸⁹⁻", "0123456789-")
+_POWER = re.compile(r"([-−]?\d+(?:\.\d+)?) × 10([⁻⁰¹²³⁴⁵⁶⁷⁸⁹]+)")
+# The kind that may stay: a residual of a loop's closure, a power balance or an equilibrium
+# compared against a power-of-ten limit of 10⁻⁹ (its size is the result); and a sign check
+# ("≤ 0", "< 0": the scan's shortfall below an optimum is a real, sampled difference).
+_RESIDUAL_LIMIT = re.compile(r"≤ (?:1\.0 × )?10⁻⁹|\|\s*[≤<] 0\s*\|")
+
+
+@pytest.fixture(scope="module")
+def report_md(example_results, tmp_path_factory):
+    from test_handin import render
+
+    cache: dict = {}
+
+    def get(name: str, lang: str) -> str:
+        if (name, lang) not in cache:
+            tmp = tmp_path_factory.mktemp(f"{name}-{lang}") / "figures"
+            cache[name, lang] = render(name, lang, example_results(name), tmp)[0]
+        return cache[name, lang]
+
+    return get
+
+
+def test_no_table_prints_a_rounding_residue_as_a_result(report_md):
+    """review33 (issue 19 point 5 continued): "链条送进量 − 夹爪排间距 | −1.1 × 10⁻¹³ | 0",
+    "行程误差 | 1.4 × 10⁻¹³ | 0", furnace_pusher's residual table "−1.1 × 10⁻¹⁶" beside rows
+    written 0. A difference that should be 0 and is 0 to rounding is written by the one rule
+    (fmt.residue, "0"): no table cell of any report (14 examples × zh/en) holds a value below
+    10⁻⁹ written as a power of ten, except the residuals measured against 10⁻⁹."""
+    from test_handin import EXAMPLES, LANGS
+
+    found = []
+    for name in EXAMPLES:
+        for lang in LANGS:
+            for line in report_md(name, lang).splitlines():
+                if not line.startswith("|") or _RESIDUAL_LIMIT.search(line):
+                    continue
+                for m in _POWER.finditer(line):
+                    x = float(m.group(1).replace("−", "-")) * 10.0 ** int(m.group(2).translate(_SUP))
+                    if 0 < abs(x) < 1e-9:
+                        found.append(f"{name}.{lang}: {line[:120]}")
+    assert not found, "\n".join(found)

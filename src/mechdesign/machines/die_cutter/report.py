@@ -14,7 +14,7 @@ import numpy as np
 from ...i18n import N_, tr
 from ...render import figures as fig
 from ...render.fmt import e, f, length, md_meta, md_text, sig, fluctuation
-from ...render.fmt import number, time_ratio, verdict
+from ...render.fmt import number, residue, time_ratio, verdict
 from ...render.labels import pgettext, translated
 from ...render.fmt import sentences
 from ...render.linkage_report import realised_flywheel
@@ -531,7 +531,7 @@ def _verify_rows(r, p, _) -> list[list[str]]:
     # one jump × one step / 2π
     bound = float(amp.peak_required * step / (2 * np.pi) / f_.mean_torque)
     rows += [
-        [_("simulated stroke − H /mm"), e(v.stroke_error * MM),
+        [_("simulated stroke − H /mm"), residue(v.stroke_error * MM, g.stroke * MM),
          f"H = {f(g.stroke * MM, 2)} mm", _ok(_, abs(v.stroke_error) < 1e-9)],
         [_("simulated K (zeros of the output speed)"),
          f(k.time_ratio, 4), f"K = {f(g.K, 4)} ± {e(v.K_velocity_tol)}",
@@ -552,7 +552,7 @@ def _verify_rows(r, p, _) -> list[list[str]]:
         [_("chain row vs incomplete gear motion: disagreeing angle /°"),
          f(v.chain_mismatch * DEG, 2), f"≤ {f(2 * step * DEG, 2)}", _ok(_, v.chain_mismatch <= 2 * step + 1e-12)],
         [_("chain feed − gripper-bar spacing /mm"),
-         e(v.feed_error * MM), "0", _ok(_, abs(v.feed_error) < 1e-8)],
+         residue(v.feed_error * MM, p.bar_spacing * MM), "0", _ok(_, abs(v.feed_error) < 1e-8)],
     ]
     return rows
 

@@ -9,7 +9,7 @@ import numpy as np
 from ...i18n import N_, tr
 from ...render import figures as fig
 from ...render.fmt import e, f, md_meta, md_text, sig, time_ratio
-from ...render.fmt import verdict
+from ...render.fmt import residue, verdict
 from ...render.labels import mpl_names, mpl_point
 
 DEG = 180.0 / np.pi
@@ -302,7 +302,7 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
     names = {"stroke": N_("stroke"), "chord": N_("chord"), "eq1": N_("equation (1)"),
              "folded": N_("folded extreme"), "extended": N_("extended extreme"),
              "frame": N_("frame"), "theta": N_("extreme angle"), "K": "K"}
-    res_rows = [[_(names[nm]), f"${eqn}$", e(val)] for nm, eqn, val in syn.residuals]
+    res_rows = [[_(names[nm]), f"${eqn}$", residue(val)] for nm, eqn, val in syn.residuals]
     sd = syn.seed
     seed_rows = [
         [_("(1) as printed: $(a+b)^2+(b-a)^2-2(a+b)(b-a)\\cos 30° = B_1B_2^2$"),

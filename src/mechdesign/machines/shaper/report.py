@@ -97,7 +97,7 @@ _REACTIONS = [("R72", "R72"), ("R23", "R23"), ("R43", "R43"), ("R74", "R74"),
 def _verify_rows(v, syn, lang: str) -> list[list[str]]:
     """The verification table: [check, result, limit, verdict]; every verdict is the
     ``passed`` of a check of :func:`~mechdesign.machines.shaper.stages.self_checks`."""
-    from ...render.fmt import e as fmt_e
+    from ...render.fmt import e as fmt_e, residue
     from .stages import self_checks
 
     _ = tr(lang)
@@ -121,7 +121,7 @@ def _verify_rows(v, syn, lang: str) -> list[list[str]]:
             f"≤ {e(c['velocity_fd'].limit)}", "velocity_fd"),
         row(_("Acceleration vs. central differences of velocity (relative)"),
             fmt_e(v.acceleration_fd_error), f"≤ {e(c['acceleration_fd'].limit)}", "acceleration_fd"),
-        row(_("Simulated stroke − H /mm"), fmt_e(v.stroke_error * mm),
+        row(_("Simulated stroke − H /mm"), residue(v.stroke_error * mm, syn.stroke * mm),
             f"± {e(c['stroke'].limit * mm)}", "stroke"),
         row(_("Time ratio K of the simulated linkage"), f(v.time_ratio_simulated, 4),
             f"{f(c['time_ratio'].reference, 4)} ± {e(c['time_ratio'].limit)}", "time_ratio"),
