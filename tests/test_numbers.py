@@ -229,3 +229,52 @@ def test_no_table_prints_a_rounding_residue_as_a_result(report_md):
                     if 0 < abs(x) < 1e-9:
                         found.append(f"{name}.{lang}: {line[:120]}")
     assert not found, "\n".join(found)
+
+
+_UNIT_STEM = {"W": "W", "J": "J", "N·m": "N·m", "kg·m²": "kg·m"}
+_GROUP_IN_DIGITS = re.compile(r"(?<=\d)[\u202f\u2009 ](?=\d{3}(?!\d))")
+
+
+def _summary_and_body(md: str) -> tuple[list[list[str]], str]:
+    """The summary's quantity rows [label, value, unit] and the report before the summary."""
+    head = re.search(r"^# .*\{#summary\}", md, flags=re.M)
+    assert head, "no summary chapter"
+    body, rest = md[:head.start()], md[head.end():]
+    rows = []
+    for line in rest.splitlines():
+        if rows and not line.startswith("|"):
+            break
+        if line.startswith("|") and not line.startswith("|:"):
+            cells = [c.strip() for c in line.strip().strip("|").split("|")]
+            if len(cells) == 3:
+                rows.append(cells)
+    return rows[1:], body
+
+
+def test_summary_values_are_the_strings_the_body_prints(report_md):
+    """review33 (issue 19 point 5): the summary wrote press "平均功率 300 W" where the body
+    says "= 300.0 W", shaper "ΔW_max 278" (body 278.0 J), die_cutter "3500" (body 3499.5 J),
+    "总传动比 28.8" (body 28.80). Every summary value of a power, energy, torque, moment of
+    inertia and total ratio appears in the body as that same string before its unit (or after
+    "=" for a ratio) — 14 examples × zh/en."""
+    from test_handin import EXAMPLES, LANGS
+
+    missing = []
+    for name in EXAMPLES:
+        for lang in LANGS:
+            rows, body = _summary_and_body(report_md(name, lang))
+            body = _GROUP_IN_DIGITS.sub("", body)
+            for label, value, unit in rows:
+                v = re.escape(_GROUP_IN_DIGITS.sub("", value))
+                if unit in _UNIT_STEM:
+                    after = r"\s*(?:\\[ ,;]\s*)?(?:\\text\{|\\mathrm\{)?" + re.escape(_UNIT_STEM[unit])
+                elif "total ratio" in label or "总传动比" in label:
+                    after = r"(?:\s*\$\$|\s|$)"
+                    v = r"=\s*" + v
+                else:
+                    continue
+                if name == "furnace_drive" and unit == "W":
+                    continue    # the body states this power in kW (0.06296 kW): small powers' unit is another item
+                if not re.search(r"(?<![\d.])" + v + r"(?![\d.])" + after, body, flags=re.M):
+                    missing.append(f"{name}.{lang}: {label} = {value} {unit}")
+    assert not missing, "\n".join(missing)

@@ -12,7 +12,7 @@ ENTRY = Entry(
     "lockbeam", f"{_P}.brief:LockbeamBrief", f"{_P}.brief:lockbeam_to_si",
     f"{_P}.stages:stages", f"{_P}.stages:results_document", f"{_P}.report",
     "lockbeam.yaml", results=f"{_P}.stages:LockbeamResults", summary=(
-        (N_("total ratio"), "", "transmission.ratio", 1.0),
+        (N_("total ratio"), "", "transmission.ratio", 1.0, "exact"),   # a product of tooth ratios
         (N_("feed stroke"), "mm", "feed.output.stroke", _MM),
         (N_("feed K"), "", "feed.time_ratio", 1.0),
         (N_("bend (simulated)"), "°", "bending.bend_simulated", _DEG),

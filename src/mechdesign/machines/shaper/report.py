@@ -233,7 +233,7 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
         "mb_max": sig(r["linkage_forces"].torque_max, ref=r["linkage_forces"].peak_torque),
         "mb_min": sig(r["linkage_forces"].torque_min, ref=r["linkage_forces"].peak_torque),
         "mb_mean": sig(fl.mean_torque),
-        "power": f(fl.mean_power, 1),
+        "power": sig(fl.mean_power),
         "fly": {
             "shaft_zh": zh_words(shaft), "shaft_en": shaft,
             "n": f(fl.shaft_speed_rpm, 2), "md": sig(fl.shaft_torque),
