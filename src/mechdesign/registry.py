@@ -45,7 +45,11 @@ def summary_row(row: tuple, lang: str) -> tuple:
 
 
 def lookup(document: Any, path: str) -> Any:
-    """The value at a dotted ``path`` of a results document (dicts or objects), or None."""
+    """The value at a dotted ``path`` of a results document (dicts or objects), or None;
+    ``"a.b|a.c"``: the first of the alternatives that has a value."""
+    if "|" in path:
+        return next((v for v in (lookup(document, alt) for alt in path.split("|"))
+                     if v is not None), None)
     node = document
     for part in path.split("."):
         node = node.get(part) if isinstance(node, dict) else getattr(node, part, None)
