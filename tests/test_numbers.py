@@ -278,3 +278,22 @@ def test_summary_values_are_the_strings_the_body_prints(report_md):
                 if not re.search(r"(?<![\d.])" + v + r"(?![\d.])" + after, body, flags=re.M):
                     missing.append(f"{name}.{lang}: {label} = {value} {unit}")
     assert not missing, "\n".join(missing)
+
+
+def test_no_english_word_is_a_subscript(report_md):
+    """review33: "$(n/n_{other})^2$", "$T_{peak}\\,\\omega$", "$\\prod z_{driven}/z_{driving}$",
+    "$d_{dmin}$" in the zh reports read as untranslated program names. The course's symbols:
+    the speeds themselves, P_max, the gears numbered along the train (z_2/z_1 · z_4/z_3) and an
+    upright min (d_{d,min}); no report writes an English word as a subscript (the zh ones
+    neither the run-together dmin)."""
+    from test_handin import EXAMPLES, LANGS
+
+    words = re.compile(r"_\{(?:other|peak|driven|driving|driver)\}")
+    found = []
+    for name in EXAMPLES:
+        for lang in LANGS:
+            md = report_md(name, lang)
+            hits = words.findall(md) + (re.findall(r"_\{\{?dmin\}", md) if lang == "zh" else [])
+            if hits:
+                found.append(f"{name}.{lang}: {sorted(set(hits))}")
+    assert not found, "\n".join(found)

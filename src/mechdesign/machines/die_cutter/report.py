@@ -464,6 +464,7 @@ def _placement(r, p, b, _) -> dict:
     rows.append([_("rim and gear wheels /kg"), f(total_a, 1, group=True), f(total_o, 1, group=True)])
     return {"rows": rows, "chosen": _shaft(a.shaft, stages, _), "other": _shaft(o.shaft, stages, _),
             "j_ratio": f(o.inertia / a.inertia, 1), "n_ratio2": f((a.speed_rpm / o.speed_rpm) ** 2, 1),
+            "n_a": f(a.speed_rpm, 2), "n_o": f(o.speed_rpm, 2),
             "gear_ratio": f(a.gear_mass / o.gear_mass, 1) if o.gear_mass > 0 else "—",
             "lighter": total_a <= total_o, "total_a": f(total_a, 0, group=True),
             "total_o": f(total_o, 0, group=True), "stages": stages,

@@ -297,7 +297,7 @@ def _transmission(r: dict, lang: str) -> dict:
     _ = tr(lang)
     trans = r["transmission"]
     p = r["params"]
-    rows, gear_rows = [], []
+    rows, gear_rows, gear = [], [], 0
     for i, s in enumerate(trans.stages, 1):
         if s.kind == "belt":
             kind = _("V-belt")
@@ -306,7 +306,8 @@ def _transmission(r: dict, lang: str) -> dict:
             dist = "—"
         else:
             kind = _("spur gears")
-            drv, dvn = f"$z$ = {int(s.driver)}", f"$z$ = {int(s.driven)}"
+            drv, dvn = f"$z_{gear + 1}$ = {int(s.driver)}", f"$z_{gear + 2}$ = {int(s.driven)}"
+            gear += 2
             dist = f(s.pair.a * MM, 0)
         rows.append([str(i), kind, drv, dvn, str(s.ratio_exact), f(s.speed_in, 2), f(s.speed_out, 2), dist])
         if s.pair is not None:
@@ -317,14 +318,19 @@ def _transmission(r: dict, lang: str) -> dict:
             gear_rows.append(["—", _("centre distance a = ") + f(pr.a * MM, 1) + " mm",
                               _("contact ratio ε = ") + f(pr.contact_ratio, 3),
                               _("least teeth without undercut ") + f(pr.z_min, 1), "—"])
-    parts = []
+    # the train's ratio as the course writes it: driven over driving, the pulleys d_1 → d_2,
+    # the gears numbered along the train (z_1 drives z_2, z_3 drives z_4, …)
+    parts, symbols, gear = [], [], 0
     for s in trans.stages:
         if s.kind == "belt":
             parts.append(rf"\frac{{{f(s.driven * MM, 0)}}}{{{f(s.driver * MM, 0)}}}")
+            symbols.append(r"\frac{d_2}{d_1}")
         else:
             parts.append(rf"\frac{{{int(s.driven)}}}{{{int(s.driver)}}}")
+            symbols.append(rf"\frac{{z_{{{gear + 2}}}}}{{z_{{{gear + 1}}}}}")
+            gear += 2
     vals = r" \times ".join(str(s.ratio_exact) for s in trans.stages)
-    eq_ratio = (r"i = \frac{d_2}{d_1}\prod\frac{z_{driven}}{z_{driving}} = " + r" \times ".join(parts)
+    eq_ratio = ("i = " + r" \cdot ".join(symbols) + " = " + r" \times ".join(parts)
                 + f" = {vals} = {trans.ratio_exact}")
     eq_speed = (rf"n = \frac{{n_m}}{{i}} = \frac{{{f(trans.motor_rpm, 0)}}}{{{trans.ratio_exact}}} = "
                 rf"{rpm(trans.output_rpm)}\ \text{{r/min}}")
