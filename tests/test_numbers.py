@@ -297,3 +297,39 @@ def test_no_english_word_is_a_subscript(report_md):
             if hits:
                 found.append(f"{name}.{lang}: {sorted(set(hits))}")
     assert not found, "\n".join(found)
+
+
+def test_small_wording_and_spacing_items(report_md):
+    """review33 item 17: en "on the shaft Ⅰ" (a numbered shaft takes no article); zh "装在Ⅰ 轴上"
+    beside "Ⅰ 轴" elsewhere (one form: 《机械设计》's "Ⅰ轴"), "45钢" beside "45 钢", a formula
+    run into the next character ("曲柄轴 $O_2$上") — none in any of the 28 reports."""
+    from test_handin import EXAMPLES
+
+    found = []
+    for name in EXAMPLES:
+        en, zh = report_md(name, "en"), report_md(name, "zh")
+        for pattern, md, lang in ((r"the shaft [ⅠⅡⅢⅣⅤ]", en, "en"), (r"[ⅠⅡⅢⅣⅤ] 轴", zh, "zh"),
+                                  (r"45钢", zh, "zh"), (r"\$[上下中内]", zh, "zh")):
+            hits = re.findall(pattern, md)
+            if hits:
+                found.append(f"{name}.{lang}: {pattern} ×{len(hits)}")
+    assert not found, "\n".join(found)
+
+
+def test_one_table_one_number_rule(report_md):
+    """review33 item 17: furnace_pusher's table of the original linkage wrote K 1.2400 | 1.25,
+    θ 19.286 (4/3/3 decimals in one table); press's gear table α 20.0 beside α′ 20.00. K is
+    written to 0.001 and angles to 0.01° (README "Conventions")."""
+    for lang in ("en", "zh"):
+        md = report_md("furnace_pusher", lang)
+        three = [ln for ln in md.splitlines() if ln.count("|") == 4]     # quantity | original | required
+        k = next(ln for ln in three if ln.startswith("| $K$ |"))
+        theta = next(ln for ln in three if ln.startswith("| $\\theta$ /° |"))
+        assert [_decimals(c.strip()) for c in k.strip("| ").split("|")[1:]] == [3, 3], k
+        assert [_decimals(c.strip()) for c in theta.strip("| ").split("|")[1:]] == [2, 2], theta
+        gear = report_md("press", lang)
+        alpha = [ln for ln in gear.splitlines() if re.match(r"\| [^|]+ \| \$\\alpha'?\$ \|", ln)]
+        assert len(alpha) == 2
+        for ln in alpha:
+            numbers = [c.strip() for c in ln.strip("| ").split("|")[3:] if re.search(r"\d", c)]
+            assert numbers and all(_decimals(c) == 2 for c in numbers), ln

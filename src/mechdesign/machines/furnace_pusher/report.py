@@ -315,9 +315,10 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
          f(sd.eq3_lhs * DEG, 2) + "°", "180°", f((sd.eq3_lhs - np.pi) * DEG, 2) + "°"],
     ]
     seed_sim_rows = [
-        ["$K$", f(sd.time_ratio, 4), f(pp.time_ratio_K, 4 if given else 2)],
-        ["$\\theta$ /°", f(sd.theta * DEG, 3), f(th, 3)],
-        ["$\\psi$ /°", f(sd.swing * DEG, 3), f(psi, 3)],
+        # by the rule: K to 0.001, angles to 0.01° (review33: 4/3/3 decimals in one table)
+        ["$K$", time_ratio(sd.time_ratio), time_ratio(pp.time_ratio_K)],
+        ["$\\theta$ /°", f(sd.theta * DEG, 2), f(th, 2)],
+        ["$\\psi$ /°", f(sd.swing * DEG, 2), f(psi, 2)],
         [_("chord of $C$ (≈ the stroke) / mm"),
          f(sd.stroke_C * MM, 2), f(H, 2 if given else 0)],
         ["$\\gamma_{min}$ /°", f(sd.gamma_min * DEG, 2), "≥ " + f(syn.gamma_limit * DEG, 0)],

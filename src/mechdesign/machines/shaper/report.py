@@ -235,7 +235,9 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
         "mb_mean": sig(fl.mean_torque),
         "power": sig(fl.mean_power),
         "fly": {
-            "shaft_zh": zh_words(shaft), "shaft_en": shaft,
+            # a name ending in a formula ("曲柄轴 $O_2$") is spaced from the 上 after it
+            "shaft_zh": zh_words(shaft) + (" " if zh_words(shaft).endswith("$") else ""),
+            "shaft_en": shaft,
             "n": f(fl.shaft_speed_rpm, 2), "md": sig(fl.shaft_torque),
             # the flywheel is designed for the nominal speed; the drive's shafts turn at the
             # speeds its motor and chosen ratios give: say which is which where both appear
