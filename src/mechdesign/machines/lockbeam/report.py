@@ -613,7 +613,10 @@ def verification_rows(r: dict, lang: str) -> list[list[str]]:
         if rc.input_swing_needed is not None:
             ref = _("{bend} (with a bending-cam swing of {needed}°)", bend=ref,
                     needed=f(rc.input_swing_needed * DEG, 2))
-        rows.append([_("simulation, {drawn}: bend / °", drawn=drawn), f(rc.bend * DEG, 2), ref, "—"])
+        # passes when a bending-cam swing exists that makes the drawn linkage bend exactly the
+        # required angle (the report states it); fails when none does
+        rows.append([_("simulation, {drawn}: bend / °", drawn=drawn), f(rc.bend * DEG, 2), ref,
+                     _ok(rc.input_swing_needed is not None, lang)])
         rows.append([_("{drawn}: least transmission angle / °", drawn=drawn), f(rc.gamma_min * DEG, 2),
                      f"≥ {f(p.bending.gamma_allowed * DEG, 0)}",
                      _ok(rc.gamma_min >= p.bending.gamma_allowed, lang)])
