@@ -222,6 +222,63 @@ def test_impacts_parabolic_and_harmonic_next_to_dwells_are_soft(law):
     assert b[0].acceleration_jump == pytest.approx(a0, rel=1e-12)
 
 
+def _impact_points(prog):
+    """(δ [°], impact) of every joint with an impact and every jump inside a law."""
+    pts = [(b.delta, b.impact) for b in prog.boundaries() if b.impact != "none"]
+    pts += [(b.delta, b.impact) for _, b in prog.internal_jumps()]
+    return sorted((round(math.degrees(d), 9), k) for d, k in pts)
+
+
+def test_parabolic_law_has_soft_impacts_at_start_middle_and_end():
+    """孙桓: the parabolic (等加速等减速) law, S'' = +4 on u < 1/2 and −4 on u > 1/2, joined to
+    dwells: the acceleration jumps by 4h/Φ² at u = 0, by −8h/Φ² at u = 1/2 and by 4h/Φ² at
+    u = 1 (soft impacts, no velocity jump); the return mirrors it. The shaper's programme
+    (rise 70°, dwell 10°, return 70°, dwell 210°) has them at 0, 35, 70, 80, 115 and 150°."""
+    h, rise, ret = 15 * MM, D(70), D(70)
+    prog = Programme([Segment("rise", rise, "parabolic", h), Segment("dwell", D(10)),
+                      Segment("return", ret, "parabolic"), Segment("dwell", D(210))])
+    assert _impact_points(prog) == [(0.0, "soft"), (35.0, "soft"), (70.0, "soft"),
+                                    (80.0, "soft"), (115.0, "soft"), (150.0, "soft")]
+    (i0, mid_rise), (i2, mid_ret) = prog.internal_jumps()
+    assert (i0, i2) == (0, 2)
+    assert mid_rise.acceleration_jump == pytest.approx(-8 * h / rise**2, rel=1e-12)
+    assert mid_ret.acceleration_jump == pytest.approx(+8 * h / ret**2, rel=1e-12)
+    assert abs(mid_rise.velocity_jump) < 1e-12 * h / rise
+
+
+@pytest.mark.parametrize("law", ["cycloidal", "poly345", "poly4567", "modified_trapezoid",
+                                 "modified_sine"])
+def test_laws_with_continuous_acceleration_have_no_impact_point(law):
+    """Cycloidal, the polynomials and the modified laws have S' and S'' continuous inside
+    (the modified laws' breakpoints join smoothly) and zero at both ends: no point at all."""
+    prog = Programme([Segment("rise", D(100), law, 20 * MM), Segment("dwell", D(60)),
+                      Segment("return", D(120), law), Segment("dwell", D(80))])
+    assert _impact_points(prog) == []
+
+
+def test_harmonic_law_has_impacts_at_its_ends_only_next_to_dwells():
+    """Simple harmonic: S'' = (π²/2) cos πu is continuous inside; next to dwells it jumps at
+    both ends (soft impact), nowhere inside."""
+    prog = Programme([Segment("rise", D(90), "harmonic", 10 * MM), Segment("dwell", D(90)),
+                      Segment("return", D(90), "harmonic"), Segment("dwell", D(90))])
+    assert _impact_points(prog) == [(0.0, "soft"), (90.0, "soft"), (180.0, "soft"),
+                                    (270.0, "soft")]
+
+
+def test_report_lists_the_mid_points_of_the_parabolic_law(example_results):
+    """The shaper's cam (parabolic rise 0–70°, return 80–150°): the report's list of impact
+    points names the middles 35° and 115° besides the four joints, in order."""
+    from mechdesign.render.cam_report import cam_context
+
+    c = example_results("shaper")["cam"]
+    en = cam_context(c, "en", {}, "cam_profile.csv")["joints"]
+    assert en == ("0.0° (soft impact), 35.0° (soft impact, middle of the rise), "
+                  "70.0° (soft impact), 80.0° (soft impact), "
+                  "115.0° (soft impact, middle of the return), 150.0° (soft impact)")
+    zh = cam_context(c, "zh", {}, "cam_profile.csv")["joints"]
+    assert "35.0°（柔性冲击，推程中点）" in zh and "115.0°（柔性冲击，回程中点）" in zh
+
+
 def test_cycloidal_rise_directly_into_cycloidal_return_has_no_impact():
     """Cycloidal rise then cycloidal return without a dwell: at the top v = a = 0 on both
     sides, so no jump anywhere."""

@@ -396,3 +396,43 @@ def test_english_report_and_gif(tmp_path):
     assert "Bending mechanism" in md and "Motion cycle diagram" in md
     assert (tmp_path / "en" / "animation.gif").stat().st_size > 1000
     assert (tmp_path / "en" / "bending_cam_profile.csv").exists()
+
+
+def test_summary_and_checks_state_the_linkage_as_drawn(run):
+    """review33: the summary gave "bend (simulated) 180.00°, γmin 64.26°" of the unrounded
+    synthesis while the drawn and built linkage (a = 80, b = 161 mm) bends less; "大链轮摆角
+    −50.00°（要求 50.00°）" read as a failure; the check table printed 180.0000. The summary
+    names the drawn a, b and states their bend and γ_min, here found independently: the
+    drawn lengths' wheel swing by root-finding along the input swing, times the chain ratio;
+    γ_min from the triangle G B B0 at the swing's positions."""
+    from mechdesign.render.summary import key_rows
+    from mechdesign.results import to_plain
+    from tests.test_report_prose import _markdown
+
+    b = run["bending"]
+    ds, rc = b.design, b.rounded
+    a_, b_ = rc.input_rocker, rc.coupler
+    swing = _swing_by_marching(ds.frame, a_, b_, ds.output_rocker, ds.alpha1, ds.dalpha, ds.beta1)
+    bend = b.ratio * swing
+    assert abs(bend - np.pi) > np.radians(0.05)          # the drawn linkage does not bend 180.00°
+    beta = ds.beta1
+    gmin = np.inf
+    for al in ds.alpha1 + ds.dalpha * np.linspace(0.0, 1.0, 2001):
+        beta = _output_by_root_finding(ds.frame, a_, b_, ds.output_rocker, al, beta)
+        G, B = a_ * np.exp(1j * al), ds.frame + ds.output_rocker * np.exp(1j * beta)
+        ang = abs(np.angle((G - B) / (ds.frame - B)))    # angle GB·BB0 at B
+        gmin = min(gmin, min(ang, np.pi - ang))
+    doc = to_plain(get_machine("lockbeam").document(run))
+    for lang in ("en", "zh"):
+        rows = {r[0]: r[1] for r in key_rows("lockbeam", doc, lang)}
+        values = list(rows.values())
+        assert f"{a_ * 1e3:.2f}" in values and f"{b_ * 1e3:.2f}" in values
+        assert f"{np.degrees(bend):.2f}" in values
+        assert f"{np.degrees(gmin):.2f}" in values
+        assert f"{np.degrees(b.gamma_min):.2f}" not in values      # the unrounded linkage's
+    md_en, _ = _markdown(lambda n: run, "lockbeam", "en")
+    assert "swings 50.00° clockwise (required 50.00°)" in md_en
+    assert "| 50.00 (clockwise) | ° |" in md_en and "-50.000" not in md_en.split("wheel swing |")[1][:20]
+    check = [ln for ln in md_en.splitlines() if ln.startswith("| simulation")]
+    assert any("bending wheel" in ln and "| 180.00 | 180.00 |" in ln for ln in check)
+    assert any("as drawn" in ln and f"| {np.degrees(bend):.2f} |" in ln for ln in check)

@@ -311,7 +311,7 @@ def test_a_failing_override_is_a_named_failure():
                                 for a in given.advice)
     assert {a["check"] for a in given.advice} <= {c.key for c in given.checks if not c.passed}
     # Ⅱ, as in the tables
-    assert all(w.en.startswith("shaft Ⅱ") and w.zh.startswith("Ⅱ 轴") for w in failing)
+    assert all(w.en.startswith("shaft Ⅱ") and w.zh.startswith("Ⅱ轴") for w in failing)
 
 
 def test_a_passing_override_is_used():

@@ -27,7 +27,9 @@ class Entry:
     document: str               # "module:function" results → results.json document
     report: str                 # module with make_figures(r, dir, lang) and context(r, brief, figs, lang)
     example: str                # file name in designs/
-    # (label: N_(English), unit, dotted path in the results document, factor SI → unit)
+    # (label: N_(English), unit, dotted path in the results document, factor SI → unit
+    # [, digits: the decimals the report's body writes it with, or "exact" for a value it
+    # writes as the design gives it; without: the unit's rule, else 4 significant digits])
     summary: tuple = ()
     results: str = ""           # "module:Class" of the typed results document
     checks: str = ""            # "module:function" feasibility checks(params, keep), run once
@@ -38,12 +40,16 @@ def summary_row(row: tuple, lang: str) -> tuple:
     unit, path, factor)."""
     from .i18n import tr
 
-    label, unit, path, factor = row
+    label, unit, path, factor = row[:4]
     return tr(lang)(label), unit, path, factor
 
 
 def lookup(document: Any, path: str) -> Any:
-    """The value at a dotted ``path`` of a results document (dicts or objects), or None."""
+    """The value at a dotted ``path`` of a results document (dicts or objects), or None;
+    ``"a.b|a.c"``: the first of the alternatives that has a value."""
+    if "|" in path:
+        return next((v for v in (lookup(document, alt) for alt in path.split("|"))
+                     if v is not None), None)
     node = document
     for part in path.split("."):
         node = node.get(part) if isinstance(node, dict) else getattr(node, part, None)

@@ -172,34 +172,41 @@ class Programme:
     def boundaries(self) -> list[Boundary]:
         """What happens at the start of every segment (cyclically, so the first one is δ = 0)."""
         n = len(self.segments)
-        v_scale = self.stroke / np.min(self.spans)
         out = []
         for i in range(n):
             _, v0, a0, _ = self.end_values((i - 1) % n, 1.0)
             _, v1, a1, _ = self.end_values(i, 0.0)
-            dv, da = v1 - v0, a1 - a0
-            if abs(dv) > 1e-9 * v_scale:
-                impact = RIGID_IMPACT
-            elif abs(da) > 1e-9 * v_scale / np.min(self.spans):
-                impact = SOFT_IMPACT
-            else:
-                impact = NO_IMPACT
-            out.append(Boundary(float(self.starts[i]), dv, da, impact))
+            out.append(self._jump(float(self.starts[i]), v1 - v0, a1 - a0))
         return out
 
+    def _jump(self, delta: float, dv: float, da: float) -> Boundary:
+        """The jump (dv, da) at cam angle ``delta`` classified: a velocity jump is a rigid
+        impact (刚性冲击), a finite acceleration jump a soft one (柔性冲击), else none; jumps
+        below 10⁻⁹ of the programme's scale (stroke over its shortest segment) are round-off."""
+        v_scale = self.stroke / np.min(self.spans)
+        if abs(dv) > 1e-9 * v_scale:
+            impact = RIGID_IMPACT
+        elif abs(da) > 1e-9 * v_scale / np.min(self.spans):
+            impact = SOFT_IMPACT
+        else:
+            impact = NO_IMPACT
+        return Boundary(delta, dv, da, impact)
+
     def internal_jumps(self) -> list[tuple[int, Boundary]]:
-        """Acceleration jumps inside a segment (e.g. the parabolic law at its middle):
-        (segment index, the jump as a Boundary at its cam angle)."""
+        """Velocity or acceleration jumps inside a segment, found from its law: the one-sided
+        limits of S' and S'' at every breakpoint where the law's formula changes (the
+        parabolic law's middle u = 1/2 jumps from +4 to −4; the modified laws' breakpoints
+        are smooth and give none). (segment index, the jump as a Boundary at its cam angle)."""
         out = []
         for i, seg in enumerate(self.segments):
-            if seg.kind == DWELL or not LAWS[seg.law].internal_acceleration_jump:
+            if seg.kind == DWELL:
                 continue
             for bp in LAWS[seg.law].breakpoints:
-                lo = self.end_values(i, bp - 1e-9)[2]
-                hi = self.end_values(i, bp + 1e-9)[2]
-                if abs(hi - lo) > 1e-6 * abs(self.lifts[i]) / self.spans[i] ** 2:
-                    out.append((i, Boundary(float(self.starts[i] + bp * self.spans[i]), 0.0,
-                                            hi - lo, SOFT_IMPACT)))
+                _, v0, a0, _ = self.end_values(i, bp)                        # piece u ≤ bp
+                _, v1, a1, _ = self.end_values(i, float(np.nextafter(bp, 2.0)))  # piece u > bp
+                b = self._jump(float(self.starts[i] + bp * self.spans[i]), v1 - v0, a1 - a0)
+                if b.impact != NO_IMPACT:
+                    out.append((i, b))
         return out
 
     def impacts(self) -> list[str]:

@@ -241,8 +241,20 @@ def cam_context(c, lang: str, figs: dict[str, str], csv_name: str) -> dict:
                           f(prog.spans[i] * DEG, 1), law, lift,
                           "—" if seg.kind == DWELL else _IMPACT[lang][chk.impact]])
     impacts = _IMPACT[lang]
-    joints = [_("{delta}° ({impact})", delta=f(b.delta * DEG, 1), impact=impacts[b.impact])
+    # Every point with an impact in order of cam angle: the joints where the velocity or the
+    # acceleration jumps, and the jumps inside a law (the parabolic law's middle: 孙桓 names
+    # soft impacts at the start, middle and end of such a segment).
+    points = [(b.delta, _("{delta}° ({impact})", delta=f(b.delta * DEG, 1),
+                          impact=impacts[b.impact]))
               for b in c.boundaries if b.impact != "none"]
+    for b in c.drawing.internal_jumps:
+        i = int(np.searchsorted(prog.starts, b.delta, side="right") - 1)
+        mid = abs((b.delta - prog.starts[i]) / prog.spans[i] - 0.5) < 1e-9
+        at = dict(delta=f(b.delta * DEG, 1), impact=impacts[b.impact],
+                  motion=_segment_name(c, i, lang))
+        points.append((b.delta, _("{delta}° ({impact}, middle of the {motion})", **at) if mid
+                       else _("{delta}° ({impact}, inside the {motion})", **at)))
+    joints = [text for _d, text in sorted(points, key=lambda p: p[0])]
     laws = [_law_eqs(c, i, u, lang) for i, seg in enumerate(prog.segments) if seg.kind != DWELL]
 
     # Geometry formulas (pitch curve by inversion, envelope, pressure angle).

@@ -18,7 +18,7 @@ import numpy as np
 from ..core.cycle import STATES, TWO_PI, Constraint, CycleDiagram, PhaseRef, resolve
 from . import cycle_figures as cf
 from ..i18n import N_, tr
-from .fmt import e, f, md_paragraphs, md_text, mpl_text, sig
+from .fmt import e, f, md_paragraphs, md_text, mpl_text, residue, sig
 
 DEG = 180.0 / np.pi
 MM = 1e3
@@ -127,8 +127,8 @@ def cycle_context(cycle: CycleDiagram, lang: str, figs: dict[str, str], checks,
     spans = [abs(sum(p.span for p in a.phases) - TWO_PI) for a in cycle.actuators]
     durations = [abs(sum(dt for _ph, _t0, dt in cycle.phase_times(a.key)) - T) for a in cycle.actuators]
     verify = [
-        [_("sum of each actuator's phase angles − 360° (largest) /°"), e(max(spans) * DEG)],
-        [_("sum of each actuator's phase durations − T (largest) /s"), e(max(durations))],
+        [_("sum of each actuator's phase angles − 360° (largest) /°"), residue(max(spans) * DEG, 360.0)],
+        [_("sum of each actuator's phase durations − T (largest) /s"), residue(max(durations), T)],
     ]
     return {
         "h": h, "h3": h3, "label": label,
@@ -315,9 +315,9 @@ def intermittent_context(g, curves, lang: str, figs: dict[str, str], level: int 
     arc = n * np.pi * g.module
     verify = [
         [_("pitch arc rolled by the driver $r_1\\varphi_m - z_1'\\pi m$ /mm"),
-         e((g.r1 * g.motion_angle - arc) * MM)],
+         residue((g.r1 * g.motion_angle - arc) * MM, arc * MM)],
         [_("pitch arc rolled by the driven wheel $r_2\\Delta\\varphi_2 - z_1'\\pi m$ /mm"),
-         e((g.r2 * g.advance - arc) * MM)],
+         residue((g.r2 * g.advance - arc) * MM, arc * MM)],
         [_("simulation: $\\int_0^{2\\pi} (d\\varphi_2/d\\theta)\\,d\\theta - \\Delta\\varphi_2$ /°"),
          e((integral - g.advance) * DEG)],
         [_("simulation: largest driven speed in the dwell /(rad/s)"),

@@ -34,7 +34,7 @@ def gear_context(g, lang: str, figures: dict[str, str]) -> dict:
     rows = [
         [_("teeth"), "$z$", "—", str(g1.z), str(g2.z), "—"],
         [_("module"), "$m$", "—", *both(p.m * MM, p.m * MM, 2), "mm"],
-        [_("pressure angle"), "$\\alpha$", "—", *both(p.alpha * DEG, p.alpha * DEG, 1), "°"],
+        [_("pressure angle"), "$\\alpha$", "—", *both(p.alpha * DEG, p.alpha * DEG, 2), "°"],   # 0.01° as α′
         [_("profile shift"), "$x$", "—", *both(g1.x, g2.x, 3), "—"],
         [_.pgettext("gear table", "pitch diameter"), "$d$", "$mz$", *both(g1.d * MM, g2.d * MM), "mm"],
         [_("addendum"), "$h_a$", "$(h_a^*+x-\\Delta y)m$", *both(g1.ha * MM, g2.ha * MM), "mm"],

@@ -23,7 +23,7 @@ from importlib import resources
 from pathlib import Path
 from typing import Any
 
-from .fmt import f, grouped, in_lang, length, md_text, rpm, time_ratio, verdict
+from .fmt import exact, f, in_lang, length, md_text, rpm, sig, time_ratio, verdict
 from ..i18n import N_, data_text, tr
 from .labels import pgettext, translated
 
@@ -295,10 +295,13 @@ def _find(document: Any, leaf: str) -> tuple[str, Any] | None:
 _RULES = {"mm": length, "°": lambda x: f(x, 2), "rpm": rpm, "r/min": rpm}
 
 
-def _show(value: Any, factor: float, unit: str = "", label: str = "") -> str | None:
-    """``value`` × ``factor`` for the summary table: by its unit's rule (:data:`_RULES`), the
-    time-ratio coefficient K by :func:`~.fmt.time_ratio`, anything else to 4 significant
-    digits."""
+def _show(value: Any, factor: float, unit: str = "", label: str = "",
+          digits: int | str | None = None) -> str | None:
+    """``value`` × ``factor`` for the summary table, as the report's body writes it: with
+    ``digits`` decimals, or as the design gives it (``digits="exact"``) where the machine's
+    registry row says so; else by its unit's rule (:data:`_RULES`), the time-ratio
+    coefficient K by :func:`~.fmt.time_ratio`, anything else to 4 significant digits with
+    the trailing zeros (:func:`~.fmt.sig`: 300.0 W, 28.80)."""
     if isinstance(value, bool) or value is None:
         return None
     if isinstance(value, str):
@@ -309,11 +312,14 @@ def _show(value: Any, factor: float, unit: str = "", label: str = "") -> str | N
         return None
     if not math.isfinite(x):
         return None
+    if digits == "exact":
+        return exact(x)
+    if digits is not None:
+        return f(0.0 if abs(x) < 5e-13 else x, int(digits))
     rule = _RULES.get(unit) or (time_ratio if re.search(r"(?<![\w\\])K\b", label) else None)
     if rule is not None and abs(x) < 1e4:
         return rule(0.0 if abs(x) < 5e-13 else x)
-    text = f"{x:.4g}" if abs(x) < 1e4 else f"{x:.0f}"
-    return "0" if text in ("-0", "0") else grouped(text)
+    return sig(x)
 
 
 # symbols in the registry's plain-text labels (also shown in the terminal) → typeset
@@ -329,7 +335,8 @@ def _label(text: str) -> str:
     text = _LINK_NAME.sub(lambda m: f"${m[1]}$", md_text(text))
     for pattern, math_ in _LABEL_MATH:
         text = pattern.sub(lambda _m: math_, text)
-    return text.replace("γ\\_min", r"$\gamma_{min}$").replace("J\\_F", "$J_F$")
+    return (text.replace("γ\\_min", r"$\gamma_{min}$").replace("J\\_F", "$J_F$")
+            .replace("ΔW\\_max", r"$\Delta W_{max}$"))
 
 
 def _uniform(point: dict) -> bool:
@@ -400,7 +407,7 @@ def key_rows(machine: str, document: dict, lang: str) -> list[list[str]]:
             continue
         label, unit, factor, value = shown
         path = row[2]
-        text = _show(value, factor, unit or "", label)
+        text = _show(value, factor, unit or "", label, row[4] if len(row) > 4 else None)
         if text is None:
             continue
         rows.append([_label(label), text, unit or "—"])

@@ -17,5 +17,7 @@ ENTRY = Entry(
         ("K", "", "press.time_ratio", 1.0),
         (N_("peak torque"), "N·m", "press.peak_torque", 1.0),
         (N_("flywheel J_F"), "kg·m²", "flywheel.inertia", 1.0),
+        # to 0.1 J as the body writes it: J_F = 900 ΔW/(π²n²[δ]) then checks to its 4 digits
+        (N_("largest energy swing ΔW_max"), "J", "flywheel.max_energy_swing", 1.0, 1),
         (N_("motor"), "", "drive.motor.designation", 1.0)),
     checks=f"{_P}.stages:checks")

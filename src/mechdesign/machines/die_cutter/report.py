@@ -14,7 +14,7 @@ import numpy as np
 from ...i18n import N_, tr
 from ...render import figures as fig
 from ...render.fmt import e, f, length, md_meta, md_text, sig, fluctuation
-from ...render.fmt import number, time_ratio, verdict
+from ...render.fmt import number, residue, time_ratio, verdict
 from ...render.labels import pgettext, translated
 from ...render.fmt import sentences
 from ...render.linkage_report import realised_flywheel
@@ -249,6 +249,16 @@ def _shaft(index: int, stages: int, _) -> str:
     return _("shaft {index}", index=shaft_numeral(index))
 
 
+def _shaft_in_text(index: int, stages: int, _) -> str:
+    """The shaft as a sentence names it: "shaft Ⅰ" (no article before a numbered shaft), "the
+    distribution shaft", "the motor shaft"."""
+    if index == 0:
+        return _("the motor shaft")
+    if index == stages:
+        return _("the distribution shaft")
+    return _shaft(index, stages, _)
+
+
 def _synthesis(d, p, _) -> dict:
     g = d.geometry
     lt, ld = g.toggle_CB * MM, g.toggle_BD * MM
@@ -436,7 +446,8 @@ def _flywheel(r, p, b, _) -> dict:
                   rf"{f(fl.rim.diameter, 3)}^3 \times {f(p.rim_height_to_width, 2)} \times "
                   rf"{f(p.specific_weight, 0)}}}}} = {f(fl.rim.width * MM, 1)}\ \text{{mm}}"),
     }
-    return {"eq": eq, "shaft": shaft, "n": f(fl.shaft_speed_rpm, 2), "ratio": sig(fl.speed_ratio),
+    return {"eq": eq, "shaft": shaft, "shaft_on": _shaft_in_text(fl.shaft, stages, _),
+            "n": f(fl.shaft_speed_rpm, 2), "ratio": sig(fl.speed_ratio),
             "dw": f(fl.max_energy_swing, 1), "at_min": _deg(fl.phase_at_min, 1),
             "at_max": _deg(fl.phase_at_max, 1), "delta": fluctuation(fl.fluctuation),
             "jf": f(fl.inertia, 3), "jf_crank": f(fl.inertia_on_crank, 1),
@@ -476,7 +487,9 @@ def _placement(r, p, b, _) -> dict:
     total_a, total_o = a.rim.rim_mass + a.gear_mass, o.rim.rim_mass + o.gear_mass
     rows.append([_("rim and gear wheels /kg"), f(total_a, 1, group=True), f(total_o, 1, group=True)])
     return {"rows": rows, "chosen": _shaft(a.shaft, stages, _), "other": _shaft(o.shaft, stages, _),
+            "chosen_on": _shaft_in_text(a.shaft, stages, _), "other_on": _shaft_in_text(o.shaft, stages, _),
             "j_ratio": f(o.inertia / a.inertia, 1), "n_ratio2": f((a.speed_rpm / o.speed_rpm) ** 2, 1),
+            "n_a": f(a.speed_rpm, 2), "n_o": f(o.speed_rpm, 2),
             "gear_ratio": f(a.gear_mass / o.gear_mass, 1) if o.gear_mass > 0 else "—",
             "lighter": total_a <= total_o, "total_a": f(total_a, 0, group=True),
             "total_o": f(total_o, 0, group=True), "stages": stages,
@@ -544,7 +557,7 @@ def _verify_rows(r, p, _) -> list[list[str]]:
     # one jump × one step / 2π
     bound = float(amp.peak_required * step / (2 * np.pi) / f_.mean_torque)
     rows += [
-        [_("simulated stroke − H /mm"), e(v.stroke_error * MM),
+        [_("simulated stroke − H /mm"), residue(v.stroke_error * MM, g.stroke * MM),
          f"H = {f(g.stroke * MM, 2)} mm", _ok(_, abs(v.stroke_error) < 1e-9)],
         [_("simulated K (zeros of the output speed)"),
          f(k.time_ratio, 4), f"K = {f(g.K, 4)} ± {e(v.K_velocity_tol)}",
@@ -565,7 +578,7 @@ def _verify_rows(r, p, _) -> list[list[str]]:
         [_("chain row vs incomplete gear motion: disagreeing angle /°"),
          f(v.chain_mismatch * DEG, 2), f"≤ {f(2 * step * DEG, 2)}", _ok(_, v.chain_mismatch <= 2 * step + 1e-12)],
         [_("chain feed − gripper-bar spacing /mm"),
-         e(v.feed_error * MM), "0", _ok(_, abs(v.feed_error) < 1e-8)],
+         residue(v.feed_error * MM, p.bar_spacing * MM), "0", _ok(_, abs(v.feed_error) < 1e-8)],
     ]
     return rows
 

@@ -12,7 +12,7 @@ from ...render import cam_figures as cf
 from ...render.cam_report import CONTACT
 from ...i18n import N_, tr
 from ...render.fmt import e, f, md_meta, md_text, mpl_text
-from ...render.fmt import verdict
+from ...render.fmt import residue, verdict
 
 DEG = 180.0 / np.pi
 MM = 1e3
@@ -103,11 +103,14 @@ def verification_context(v, lang: str) -> dict:
 
     _ = tr(lang)
     rows = []
+    # the displacement differences are of the stroke's magnitude (rounding: fmt.residue)
+    stroke = {k.detail.get("label"): k.reference for k in v.checks if k.key == "disc_stroke"}
     for k in v.checks:
         name = f"{md_text(k.detail.get('label', ''))} " + DISC_CHECK_NAMES[k.key][0 if _.zh else 1]
         ok = verdict(k.passed, lang)
         if k.key == "disc_s":
-            rows.append([name, f"{e(k.value * MM)} mm", f"≤ {e(k.limit * MM)} mm", ok])
+            value = residue(k.value * MM, stroke.get(k.detail.get("label"), 0.0) * MM)
+            rows.append([name, f"{value} mm", f"≤ {e(k.limit * MM)} mm", ok])
         elif k.key == "disc_alpha":
             rows.append([name, f"{e(k.value * DEG)}°", f"≤ {e(k.limit * DEG)}°", ok])
         elif k.key == "disc_stroke":

@@ -9,7 +9,7 @@ import numpy as np
 from ...i18n import N_, tr
 from ...render import figures as fig
 from ...render.fmt import e, f, md_meta, md_text, sig, time_ratio
-from ...render.fmt import verdict
+from ...render.fmt import residue, verdict
 from ...render.labels import mpl_names, mpl_point
 
 DEG = 180.0 / np.pi
@@ -302,7 +302,7 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
     names = {"stroke": N_("stroke"), "chord": N_("chord"), "eq1": N_("equation (1)"),
              "folded": N_("folded extreme"), "extended": N_("extended extreme"),
              "frame": N_("frame"), "theta": N_("extreme angle"), "K": "K"}
-    res_rows = [[_(names[nm]), f"${eqn}$", e(val)] for nm, eqn, val in syn.residuals]
+    res_rows = [[_(names[nm]), f"${eqn}$", residue(val)] for nm, eqn, val in syn.residuals]
     sd = syn.seed
     seed_rows = [
         [_("(1) as printed: $(a+b)^2+(b-a)^2-2(a+b)(b-a)\\cos 30° = B_1B_2^2$"),
@@ -315,9 +315,10 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
          f(sd.eq3_lhs * DEG, 2) + "°", "180°", f((sd.eq3_lhs - np.pi) * DEG, 2) + "°"],
     ]
     seed_sim_rows = [
-        ["$K$", f(sd.time_ratio, 4), f(pp.time_ratio_K, 4 if given else 2)],
-        ["$\\theta$ /°", f(sd.theta * DEG, 3), f(th, 3)],
-        ["$\\psi$ /°", f(sd.swing * DEG, 3), f(psi, 3)],
+        # by the rule: K to 0.001, angles to 0.01° (review33: 4/3/3 decimals in one table)
+        ["$K$", time_ratio(sd.time_ratio), time_ratio(pp.time_ratio_K)],
+        ["$\\theta$ /°", f(sd.theta * DEG, 2), f(th, 2)],
+        ["$\\psi$ /°", f(sd.swing * DEG, 2), f(psi, 2)],
         [_("chord of $C$ (≈ the stroke) / mm"),
          f(sd.stroke_C * MM, 2), f(H, 2 if given else 0)],
         ["$\\gamma_{min}$ /°", f(sd.gamma_min * DEG, 2), "≥ " + f(syn.gamma_limit * DEG, 0)],

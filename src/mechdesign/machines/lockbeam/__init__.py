@@ -12,9 +12,16 @@ ENTRY = Entry(
     "lockbeam", f"{_P}.brief:LockbeamBrief", f"{_P}.brief:lockbeam_to_si",
     f"{_P}.stages:stages", f"{_P}.stages:results_document", f"{_P}.report",
     "lockbeam.yaml", results=f"{_P}.stages:LockbeamResults", summary=(
-        (N_("total ratio"), "", "transmission.ratio", 1.0),
+        (N_("total ratio"), "", "transmission.ratio", 1.0, "exact"),   # a product of tooth ratios
         (N_("feed stroke"), "mm", "feed.output.stroke", _MM),
         (N_("feed K"), "", "feed.time_ratio", 1.0),
-        (N_("bend (simulated)"), "°", "bending.bend_simulated", _DEG),
-        (N_("bending γ_min"), "°", "bending.gamma_min", _DEG)),
+        # the bending four-bar as drawn and built (its lengths rounded, when the brief rounds)
+        (N_("bending four-bar as drawn: input rocker a"), "mm",
+         "bending.rounded.input_rocker|bending.input_rocker", _MM),
+        (N_("bending four-bar as drawn: coupler b"), "mm", "bending.rounded.coupler|bending.coupler",
+         _MM),
+        (N_("bend of the linkage as drawn (simulated)"), "°",
+         "bending.rounded.bend|bending.bend_simulated", _DEG),
+        (N_("bending γ_min of the linkage as drawn"), "°",
+         "bending.rounded.gamma_min|bending.gamma_min", _DEG)),
     checks=f"{_P}.stages:checks")

@@ -297,7 +297,7 @@ def _transmission(r: dict, lang: str) -> dict:
     _ = tr(lang)
     trans = r["transmission"]
     p = r["params"]
-    rows, gear_rows = [], []
+    rows, gear_rows, gear = [], [], 0
     for i, s in enumerate(trans.stages, 1):
         if s.kind == "belt":
             kind = _("V-belt")
@@ -306,7 +306,8 @@ def _transmission(r: dict, lang: str) -> dict:
             dist = "—"
         else:
             kind = _("spur gears")
-            drv, dvn = f"$z$ = {int(s.driver)}", f"$z$ = {int(s.driven)}"
+            drv, dvn = f"$z_{gear + 1}$ = {int(s.driver)}", f"$z_{gear + 2}$ = {int(s.driven)}"
+            gear += 2
             dist = f(s.pair.a * MM, 0)
         rows.append([str(i), kind, drv, dvn, str(s.ratio_exact), f(s.speed_in, 2), f(s.speed_out, 2), dist])
         if s.pair is not None:
@@ -317,14 +318,19 @@ def _transmission(r: dict, lang: str) -> dict:
             gear_rows.append(["—", _("centre distance a = ") + f(pr.a * MM, 1) + " mm",
                               _("contact ratio ε = ") + f(pr.contact_ratio, 3),
                               _("least teeth without undercut ") + f(pr.z_min, 1), "—"])
-    parts = []
+    # the train's ratio as the course writes it: driven over driving, the pulleys d_1 → d_2,
+    # the gears numbered along the train (z_1 drives z_2, z_3 drives z_4, …)
+    parts, symbols, gear = [], [], 0
     for s in trans.stages:
         if s.kind == "belt":
             parts.append(rf"\frac{{{f(s.driven * MM, 0)}}}{{{f(s.driver * MM, 0)}}}")
+            symbols.append(r"\frac{d_2}{d_1}")
         else:
             parts.append(rf"\frac{{{int(s.driven)}}}{{{int(s.driver)}}}")
+            symbols.append(rf"\frac{{z_{{{gear + 2}}}}}{{z_{{{gear + 1}}}}}")
+            gear += 2
     vals = r" \times ".join(str(s.ratio_exact) for s in trans.stages)
-    eq_ratio = (r"i = \frac{d_2}{d_1}\prod\frac{z_{driven}}{z_{driving}} = " + r" \times ".join(parts)
+    eq_ratio = ("i = " + r" \cdot ".join(symbols) + " = " + r" \times ".join(parts)
                 + f" = {vals} = {trans.ratio_exact}")
     eq_speed = (rf"n = \frac{{n_m}}{{i}} = \frac{{{f(trans.motor_rpm, 0)}}}{{{trans.ratio_exact}}} = "
                 rf"{rpm(trans.output_rpm)}\ \text{{r/min}}")
@@ -401,8 +407,8 @@ def _bending(r: dict, lang: str, figures: dict) -> dict:
         ["$c$", _("arm on the wheel $B_0B$"), f(ds.output_rocker * MM, 2), "mm"],
         ["$\\alpha_1$", _("input start angle"), ad(ds.alpha1), "°"],
         ["$\\beta_1$", _("arm start angle"), ad(ds.beta1), "°"],
-        ["$\\Delta\\alpha$", _("input swing"), f(ds.dalpha * DEG, 3), "°"],
-        ["$\\Delta\\beta$", _("wheel swing"), f(ds.dbeta * DEG, 3), "°"],
+        ["$\\Delta\\alpha$", _("input swing"), _("{angle} ({sense})", angle=f(abs(ds.dalpha) * DEG, 2), sense=_sense(ds.dalpha, _)), "°"],
+        ["$\\Delta\\beta$", _("wheel swing"), _("{angle} ({sense})", angle=f(abs(ds.dbeta) * DEG, 2), sense=_sense(ds.dbeta, _)), "°"],
         ["$\\gamma_{min}$", _("least transmission angle"), f(b.gamma_min * DEG, 2), "°"],
         ["$\\gamma_{max}$", _("largest transmission angle"), f(b.gamma_max * DEG, 2), "°"],
         ["$d\\beta/d\\alpha$", _("velocity ratio range (mean Δβ/Δα = {mean})", mean=f(mean_ratio, 4)),
@@ -432,7 +438,8 @@ def _bending(r: dict, lang: str, figures: dict) -> dict:
         "gmin_at": f(b.gamma_min_at * DEG, 2), "glim": f(bp.gamma_allowed * DEG, 0),
         "lo": f(bp.length_bounds[0] * MM, 0), "hi": f(bp.length_bounds[1] * MM, 0),
         "auto": bp.start is None,
-        "swing_sim": f(b.swing_simulated * DEG, 2), "bend_sim": f(b.bend_simulated * DEG, 2),
+        "swing_sim": f(abs(b.swing_simulated) * DEG, 2), "wheel_sense": _sense(b.swing_simulated, _),
+        "bend_sim": f(b.bend_simulated * DEG, 2),
         "bend": f(bp.bending_angle * DEG, 0),
         "wheel_w": sig(float(np.max(np.abs(b.wheel_omega)))),
         "wheel_a": sig(float(np.max(np.abs(b.wheel_alpha)))),
@@ -515,6 +522,12 @@ def law_choice(c, lang: str) -> str:
               "3-4-5 polynomial or cycloidal law would avoid them.", names=names))
 
 
+def _sense(angle: float, _) -> str:
+    """The sense of a signed swing (angles counter-clockwise positive), in words: a signed
+    −50.00° beside a required 50.00° reads as a failure."""
+    return _("clockwise") if angle < 0 else _("counter-clockwise")
+
+
 def _rounded(b, ds, step: float, lang: str):
     rc = b.rounded
     if rc is None:
@@ -588,13 +601,28 @@ def verification_rows(r: dict, lang: str) -> list[list[str]]:
         abs(trans.output_rpm - p.rate) < 1e-9 * p.rate)
     add(N_("pin lift / mm"), f(pin.lift * MM, 3), f"> $(d_1 - d_2)/2$ = {f(pin.required * MM, 2)}",
         pin.lift > pin.required)
-    add(N_("simulation: large wheel swing / °"), f(abs(b.swing_simulated) * DEG, 4),
-        f(b.output_swing * DEG, 4), abs(abs(b.swing_simulated) - b.output_swing) < 1e-9)
-    add(N_("simulation: bending wheel (cam → rocker → four-bar → chain) / °"), f(b.bend_simulated * DEG, 4), f(p.bending.bending_angle * DEG, 4),
+    add(N_("simulation: large wheel swing / °"), f(abs(b.swing_simulated) * DEG, 2),
+        f(b.output_swing * DEG, 2), abs(abs(b.swing_simulated) - b.output_swing) < 1e-9)
+    add(N_("simulation: bending wheel (cam → rocker → four-bar → chain) / °"), f(b.bend_simulated * DEG, 2), f(p.bending.bending_angle * DEG, 2),
         abs(b.bend_simulated - p.bending.bending_angle) < 1e-9)
+    rc = b.rounded
+    if rc is not None:      # the linkage as drawn and built (lengths rounded): what it bends
+        drawn = _("linkage as drawn (a = {a} mm, b = {b} mm)", a=f(rc.input_rocker * MM, 2),
+                  b=f(rc.coupler * MM, 2))
+        ref = f(p.bending.bending_angle * DEG, 2)
+        if rc.input_swing_needed is not None:
+            ref = _("{bend} (with a bending-cam swing of {needed}°)", bend=ref,
+                    needed=f(rc.input_swing_needed * DEG, 2))
+        # passes when a bending-cam swing exists that makes the drawn linkage bend exactly the
+        # required angle (the report states it); fails when none does
+        rows.append([_("simulation, {drawn}: bend / °", drawn=drawn), f(rc.bend * DEG, 2), ref,
+                     _ok(rc.input_swing_needed is not None, lang)])
+        rows.append([_("{drawn}: least transmission angle / °", drawn=drawn), f(rc.gamma_min * DEG, 2),
+                     f"≥ {f(p.bending.gamma_allowed * DEG, 0)}",
+                     _ok(rc.gamma_min >= p.bending.gamma_allowed, lang)])
     add(N_("bending four-bar closure residual / m"), e(b.closure), "≤ 10⁻⁹",
         b.closure <= 1e-9)
-    add(N_("bending four-bar least transmission angle / °"), f(b.gamma_min * DEG, 3),
+    add(N_("bending four-bar least transmission angle / °"), f(b.gamma_min * DEG, 2),
         f"≥ {f(p.bending.gamma_allowed * DEG, 0)}", b.gamma_min >= p.bending.gamma_allowed)
     add(N_("bending wheel ω vs central difference (relative)"), e(b.fd_velocity), "O(h²)", b.fd_velocity < 1e-3)
     add(N_("bending wheel ε vs central difference (relative)"), e(b.fd_acceleration), "O(h²)", b.fd_acceleration < 1e-3)

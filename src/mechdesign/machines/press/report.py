@@ -9,7 +9,7 @@ import numpy as np
 from ...i18n import N_, tr
 from ...render import guide_bar_report as gb_report
 from ...render.fmt import e, f, md_meta, md_text, time_ratio, fluctuation
-from ...render.fmt import verdict
+from ...render.fmt import residue, verdict
 from ...render.linkage_report import linkage_context, verification_rows
 
 DEG = 180.0 / np.pi
@@ -128,7 +128,7 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
         "Q": f(p.pressing_force, 0),
         "linkage": lkc, **gb_report.optional_sections(r, lang, figures),
         "verify_rows": verification_rows(v, lang, k)
-        + [[_("stroke error / mm"), e((v.stroke - p.stroke) * mm),
+        + [[_("stroke error / mm"), residue((v.stroke - p.stroke) * mm, p.stroke * mm),
             "0", verdict(abs(v.stroke - p.stroke) <= 1e-9, _.lang)]],
         "findings": findings,
     }

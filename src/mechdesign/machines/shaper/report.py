@@ -97,7 +97,7 @@ _REACTIONS = [("R72", "R72"), ("R23", "R23"), ("R43", "R43"), ("R74", "R74"),
 def _verify_rows(v, syn, lang: str) -> list[list[str]]:
     """The verification table: [check, result, limit, verdict]; every verdict is the
     ``passed`` of a check of :func:`~mechdesign.machines.shaper.stages.self_checks`."""
-    from ...render.fmt import e as fmt_e
+    from ...render.fmt import e as fmt_e, residue
     from .stages import self_checks
 
     _ = tr(lang)
@@ -121,7 +121,7 @@ def _verify_rows(v, syn, lang: str) -> list[list[str]]:
             f"≤ {e(c['velocity_fd'].limit)}", "velocity_fd"),
         row(_("Acceleration vs. central differences of velocity (relative)"),
             fmt_e(v.acceleration_fd_error), f"≤ {e(c['acceleration_fd'].limit)}", "acceleration_fd"),
-        row(_("Simulated stroke − H /mm"), fmt_e(v.stroke_error * mm),
+        row(_("Simulated stroke − H /mm"), residue(v.stroke_error * mm, syn.stroke * mm),
             f"± {e(c['stroke'].limit * mm)}", "stroke"),
         row(_("Time ratio K of the simulated linkage"), f(v.time_ratio_simulated, 4),
             f"{f(c['time_ratio'].reference, 4)} ± {e(c['time_ratio'].limit)}", "time_ratio"),
@@ -233,9 +233,11 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
         "mb_max": sig(r["linkage_forces"].torque_max, ref=r["linkage_forces"].peak_torque),
         "mb_min": sig(r["linkage_forces"].torque_min, ref=r["linkage_forces"].peak_torque),
         "mb_mean": sig(fl.mean_torque),
-        "power": f(fl.mean_power, 1),
+        "power": sig(fl.mean_power),
         "fly": {
-            "shaft_zh": zh_words(shaft), "shaft_en": shaft,
+            # a name ending in a formula ("曲柄轴 $O_2$") is spaced from the 上 after it
+            "shaft_zh": zh_words(shaft) + (" " if zh_words(shaft).endswith("$") else ""),
+            "shaft_en": shaft,
             "n": f(fl.shaft_speed_rpm, 2), "md": sig(fl.shaft_torque),
             # the flywheel is designed for the nominal speed; the drive's shafts turn at the
             # speeds its motor and chosen ratios give: say which is which where both appear

@@ -7,7 +7,7 @@ import numpy as np
 
 from ...i18n import N_, tr
 from ...render.fmt import e, f, md_meta, md_text
-from ...render.fmt import in_lang, verdict
+from ...render.fmt import in_lang, residue, verdict
 from ...render import guide_bar_report as gb_report
 from ...render.linkage_report import linkage_context, verification_rows
 
@@ -48,7 +48,7 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
         "idle_mm": f(p.idle_travel_ratio * H, 1), "cut_to": f((1 - p.idle_travel_ratio) * H, 1),
         "linkage": lkc, **gb_report.optional_sections(r, lang, figures),
         "verify_rows": verification_rows(v, lang, k)
-        + [[_("stroke error / mm"), e((v.stroke - p.stroke) * mm),
+        + [[_("stroke error / mm"), residue((v.stroke - p.stroke) * mm, p.stroke * mm),
             "0", verdict(abs(v.stroke - p.stroke) <= 1e-9, "zh" if _.zh else "en")]],
         "findings": findings,
     }
