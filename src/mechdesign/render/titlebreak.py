@@ -30,12 +30,18 @@ FILL = 0.96
 TITLE_SIZE = 24.0
 SUBTITLE_SIZE = 16.0
 
-_CJK = "\u3000-\u303f\u3400-\u9fff\uff00-\uffef"
-_IS_CJK = re.compile(f"[{_CJK}]")
+# CJK symbols and punctuation, ideographs, full-width forms (built from code points: no
+# Chinese literal in the code, tests/test_i18n.py)
+_IS_CJK = re.compile("[" + "".join(f"{chr(a)}-{chr(b)}" for a, b in ((0x3000, 0x303F), (0x3400, 0x9FFF), (0xFF00, 0xFFEF))) + "]")
 # zh: a line may end after these ...
-_ZH_AFTER = set("、，；：,;:的与）)")
+# (enumeration comma, full-width comma, semicolon, colon, "de", "yu", closing parenthesis)
+_ZH_AFTER = set(map(chr, (0x3001, 0xFF0C, 0xFF1B, 0xFF1A, 0x7684, 0x4E0E, 0xFF09))) | set(",;:)")
 # ... and begin with these
-_ZH_BEFORE = set("与及和（(")
+# ("yu", "ji", "he", opening parenthesis)
+_ZH_BEFORE = set(map(chr, (0x4E0E, 0x53CA, 0x548C, 0xFF08))) | {"("}
+# a line never begins with a comma, colon or closing bracket, nor ends with an opening one
+_ZH_NO_START = set(map(chr, (0x3001, 0xFF0C, 0xFF1B, 0xFF1A, 0xFF09))) | {")"}
+_ZH_NO_END = {chr(0xFF08), "("}
 # en: a line never ends with an article; after a preposition or conjunction it may, at a cost
 _EN_NEVER_LAST = {"a", "an", "the"}
 _EN_WEAK_LAST = {"of", "with", "by", "in", "for", "and", "or", "to", "on", "at", "from", "as"}
@@ -109,9 +115,9 @@ def _pieces(text: str, lang: str, loose: bool = False) -> list[tuple[str, float]
             else:
                 cost = 0.0
         elif zh and prev != " " and cur != " " and (_IS_CJK.match(prev) or _IS_CJK.match(cur)):
-            if prev in _ZH_AFTER and cur not in "、，；：）)":
+            if prev in _ZH_AFTER and cur not in _ZH_NO_START:
                 cost = 0.0
-            elif cur in _ZH_BEFORE and prev not in "（(":
+            elif cur in _ZH_BEFORE and prev not in _ZH_NO_END:
                 cost = 0.0
         if cost is not None:
             pieces.append((text[start:i], cost))
