@@ -49,7 +49,7 @@ CROSSED_OPEN: dict[tuple[str, str], set[str]] = {
     ('press', 'analysis'): {'###.##', 'A', 'Wd', 'Wr', 'ΔWmax = ###.# J', '等效驱动力矩 Md = ##.## N·m'},
     ('press', 'cam'): {'O'},
     ('press', 'gear'): {'N #', 'a′ = ###.##', 'r# = ###.##', 'ra# = ###.##'},
-    ('shaper', 'analysis'): {'##', "##'", "#' #", 'A', 'O #', 'Wr', 'ΔWmax = ###.# J', '等效驱动力矩 Md = ##.## N·m'},
+    ('shaper', 'analysis'): {"##'", "#' #", 'A', 'O #', 'Wr', 'ΔWmax = ###.# J', '等效驱动力矩 Md = ##.## N·m'},
     ('shaper', 'cam'): {'A', 'L=###.##', 'O', 'rr=##.##'},
     ('shaper', 'gear'): {'a′ = ###.##', 'r# = ###.##', 'ra# = ###.##'},
     ('shaper_lengths', 'analysis'): {'#', '###.##', "##'", 'O #', 'o', 'ΔWmax = #### J', '等效驱动力矩 Md = ###.# N·m'},

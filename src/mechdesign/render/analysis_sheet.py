@@ -780,5 +780,6 @@ def _curves(s: Sheet, model, k, forces, fl, lab: dict, box) -> None:
     x_at = 0.5 * (fl.phase_at_min + fl.phase_at_max) * DEG
     p_lo, p_hi = m.p(x_at, float(e.min())), m.p(x_at, float(e.max()))
     s.dimension(p_lo, p_hi, 0.0, fl.max_energy_swing,
-                text=lab["dw"].format(v=fmt.sig(fl.max_energy_swing)), height=2.5)
+                text=lab["dw"].format(v=fmt.sig(fl.max_energy_swing)), height=2.5,
+                outside=1)   # a text too long for the swing goes above it, not onto the φ ticks
 
