@@ -482,6 +482,16 @@ def lockbeam_layout(results, found, phi: float = 0.0) -> dict:
 
 
 
+def _rod_guide(view, placer, x: float, yc: float) -> None:
+    """A translating follower's guide: two hatched walls 2.5 mm (paper) either side of the
+    rod at x, 14 units long about yc, kept clear of labels."""
+    for side in (-1, 1):
+        xw = x + side * 2.5 / view.scale
+        hatched_line(view, complex(xw, yc - 7.0), complex(xw, yc + 7.0), side=(-1j if side < 0 else 1j))
+        placer.block_box((view.p(complex(xw, yc)).real - 4, view.p(complex(xw, yc - 7.0)).imag,
+                          view.p(complex(xw, yc)).real + 4, view.p(complex(xw, yc + 7.0)).imag))
+
+
 def _cam_disc(view, placer, profile, o) -> None:
     """A disc cam on its fixed pivot o: the closed profile, the frame symbol and the pin, the
     pivot and the profile's outline (every ~120th point) kept clear of labels."""
@@ -511,12 +521,7 @@ def lockbeam_diagram(results, found, info: TitleInfo, lang: str) -> Sheet:
         view.line(pd["B"] + 1j * pd["rr"], pd["stem_top"], "OUTLINE")
         placer.block(view.p(pd["B"]), pd["rr"] * view.scale + 0.5)
         placer.block_segment(view.p(pd["B"]), view.p(pd["stem_top"]), 1.5)
-        yc = o.imag + pd["guide_y"]
-        for side in (-1, 1):
-            xw = pd["stem_top"].real + side * 2.5 / view.scale
-            hatched_line(view, complex(xw, yc - 7.0), complex(xw, yc + 7.0), side=(-1j if side < 0 else 1j))
-            placer.block_box((view.p(complex(xw, yc)).real - 4, view.p(complex(xw, yc - 7.0)).imag,
-                              view.p(complex(xw, yc)).real + 4, view.p(complex(xw, yc + 7.0)).imag))
+        _rod_guide(view, placer, pd["stem_top"].real, o.imag + pd["guide_y"])
         _omega_arrow(s, view, o, float(np.max(np.abs(pd["profile"] - o))), L["sigma_pin"] > 0, placer, lab)
         placer.place(view.p(o), sheet_point("O2"), 3.5, prefer=-1 - 1j, gap=3.0)
         # the roller centre of the positioning pin: F (B is the bending four-bar's pin)
@@ -765,12 +770,7 @@ def die_cutter_diagram(results, found, info: TitleInfo, lang: str) -> Sheet:
         else:                                    # the push rod in its guide
             view.line(cd["B"] + 1j * (cd["rr"] if cd["kind"] == "roller" else 0.0), cd["stem_top"], "OUTLINE")
             placer.block_segment(view.p(cd["B"]), view.p(cd["stem_top"]), 1.5)
-            yc = o.imag + cd["guide_y"]
-            for side in (-1, 1):
-                xw = cd["stem_top"].real + side * 2.5 / view.scale
-                hatched_line(view, complex(xw, yc - 7.0), complex(xw, yc + 7.0), side=(-1j if side < 0 else 1j))
-                placer.block_box((view.p(complex(xw, yc)).real - 4, view.p(complex(xw, yc - 7.0)).imag,
-                                  view.p(complex(xw, yc)).real + 4, view.p(complex(xw, yc + 7.0)).imag))
+            _rod_guide(view, placer, cd["stem_top"].real, o.imag + cd["guide_y"])
             stem = (cd["B"] + cd["stem_top"]) / 2
         _omega_arrow(s, view, o, float(np.max(np.abs(cd["profile"] - o))), cd["sigma"] > 0, placer, lab)
         placer.place(view.p(o), sheet_point("O1"), 3.5, prefer=-1 + 1j, gap=3.0)
