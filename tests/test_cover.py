@@ -247,3 +247,32 @@ def test_a_figures_unit_dot_is_narrow():
         assert other.get_text() == "设计 · 分析"
     finally:
         plt.close(fig)
+
+
+def test_a_unit_dot_in_a_text_with_mathtext_is_the_math_cdot_not_a_dummy_box(caplog):
+    """"$M_b$ (N·m)" is laid out by mathtext, which has no font fallback: its plain parts take
+    the CJK font, which lacks U+22C5 (matplotlib logged "Font 'default' does not have a glyph
+    for '\\u22c5'" and drew a box). The dot there is mathtext's \\cdot; math parts stay."""
+    import logging
+
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    from mechdesign.render.figures import narrow_unit_dots
+    from mechdesign.render.fonts import configure_matplotlib
+
+    configure_matplotlib()
+    fig, ax = plt.subplots()
+    try:
+        label = ax.set_ylabel("balancing torque $M_b$ (N·m)")
+        note = ax.text(0, 0, "$J_F$ = 8.9 kg·m², $a·b$", fontsize=10)
+        narrow_unit_dots(fig)
+        assert label.get_text() == r"balancing torque $M_b$ (N$\cdot$m)"
+        assert note.get_text() == r"$J_F$ = 8.9 kg$\cdot$m², $a·b$"
+        with caplog.at_level(logging.WARNING):
+            fig.canvas.draw()
+        assert not [r for r in caplog.records if "does not have a glyph" in r.getMessage()]
+    finally:
+        plt.close(fig)

@@ -65,6 +65,25 @@ def test_shaper_like_drive_prefers_the_speed_whose_ratio_fits():
     assert core.choose_motor(motor_catalogue(), 800.0, 80.0, elements).motor.designation == "Y90L-6"
 
 
+def test_a_smaller_motor_beyond_the_recommended_ratio_beats_a_larger_one_within_it():
+    """The slotter's drive (BRIEFS: 60 strokes/min, V-belt before the fixed pair 54/18,
+    P_d ≈ 0.18 kW): 1500 rpm motors need a belt of 1390/180 = 7.7 (above its maximum 7),
+    1000 rpm 910/180 = 5.06 (beyond the recommended 2–4, within 7), 3000 rpm 15.7 (no),
+    750 rpm 710/180 = 3.94 (recommended) — but the smallest 750 rpm motor of the Y series is
+    Y132S-8, 2.2 kW, twelve times P_d. The 0.75 kW Y90S-6 is the design (吴宗泽《机械设计
+    课程设计手册》: V-belt i ≤ 7; the motor's power is chosen first)."""
+    elements = [core.Element("belt", 0.96, (2, 4), 7), core.Element("open_spur", 0.95, (3, 7), 15, 3.0)]
+    choice = core.choose_motor(motor_catalogue(), 181.0, 60.0, elements)
+    assert choice.motor.designation == "Y90S-6" and choice.reason == "maximum"
+    assert choice.total_ratio / 3.0 == pytest.approx(910 / 180)
+    by_speed = {c.synchronous_rpm: c for c in choice.candidates}
+    assert by_speed[750].motor.designation == "Y132S-8" and by_speed[750].recommended
+    assert not by_speed[1500].possible and not by_speed[3000].possible
+    # equal powers: the recommended ratio first (the shaper: Y802-4 and Y90S-6 are both 0.75 kW)
+    shaper = [core.Element("belt", 0.96, (2, 4), 7), core.Element("open_spur", 0.95, (3, 7), 15, 60 / 18)]
+    assert core.choose_motor(motor_catalogue(), 690.0, 80.0, shaper).reason == "recommended"
+
+
 def test_motor_choice_errors_name_the_problem():
     belt = [core.Element("belt", 0.96, (2, 4), 7)]
     with pytest.raises(core.DriveDesignError, match="no motor"):

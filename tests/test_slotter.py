@@ -136,8 +136,9 @@ def test_flywheel_weight_loads_its_shaft_by_the_beam_closed_form(r):
 
 def test_flywheel_speed_note_and_the_motor_choice(r):
     """The flywheel at the nominal 180 rpm (60 rpm × z2/z1) against the realised speed of
-    shaft Ⅰ (δ = [δ](n/n′)²); the 2.2 kW motor explained: the belt would need
-    n_m/(60·3) for the smaller motors, above its recommended 4."""
+    shaft Ⅰ (δ = [δ](n/n′)²); the motor is the 0.75 kW Y90S-6 whose belt makes
+    910/(60·3) = 5.06, beyond the belt's recommended 2–4 but within its maximum 7; the
+    report says so and names the 2.2 kW motor the recommended ranges would take."""
     from mechdesign.i18n import tr
     from mechdesign.render.drive_report import _oversize
     from mechdesign.render.linkage_report import realised_flywheel
@@ -147,13 +148,8 @@ def test_flywheel_speed_note_and_the_motor_choice(r):
     n_real = d.shafts[1].speed_rpm
     text = realised_flywheel(fl, n_real, tr("en"))
     assert f"{n_real:.2f}" in text and f"{fl.fluctuation * (180 / n_real) ** 2:.4f}" in text
-    assert d.motor.designation == "Y132S-8"
+    assert d.motor.designation == "Y90S-6" and d.choice.reason == "maximum"
     note = _oversize(d, tr("en"))
-    assert note is not None and f"{d.motor.power / d.power_required:.1f} times" in note
-    for c in d.choice.candidates:
-        if c.motor.designation != "Y132S-8":
-            assert c.motor.designation in note
-            assert f"{c.motor.full_load_rpm / 60 / 3:.2f}" in note      # the belt's ratio
-    # the smallest motor the maximum ranges allow, named with its synchronous speed (910
-    # r/min full load → 1000 synchronous); the report names no brief field (issue 19 p.4)
-    assert "Y90S-6 (0.75 kW, synchronous 1000 rpm)" in note and "synchronous_rpm" not in note
+    assert note is not None and f"{910 / 60 / 3:.2f}" in note and "maximum 7" in note
+    assert f"Y132S-8 (2.20 kW, synchronous 750 rpm), {2200 / d.power_required:.1f} times" in note
+    assert "synchronous_rpm" not in note

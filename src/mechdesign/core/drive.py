@@ -107,12 +107,16 @@ def ratio_bounds(elements: list[Element], recommended: bool = True) -> tuple[flo
 def choose_motor(catalogue: list[Motor], power_required: float, output_rpm: float,
                  elements: list[Element], synchronous_rpm: float | None = None,
                  tolerance: float = 0.0) -> MotorChoice:
-    """The smallest motor with P_ed ≥ P_d at the first synchronous speed (1500, 1000, 3000,
-    750 rpm, or the brief's) whose total ratio n_m/n_w the chain can give within its
-    recommended ranges; else within its maximum ranges. The ranges are widened by the
-    speed ``tolerance`` (a fraction), so a chain of fixed ratios accepts a motor whose
-    speed it meets within the tolerance; a given speed with only fixed ratios is taken
-    as it is (the speed check then reports the error)."""
+    """The smallest motor the drive can use: at each synchronous speed (1500, 1000, 3000,
+    750 rpm, or the brief's) the smallest motor with P_ed ≥ P_d; of these, the one of
+    least rated power whose total ratio n_m/n_w the chain can give within its maximum
+    ranges; among equal powers, one whose ratio lies within the recommended ranges, then
+    the order of the speeds. A stage beyond its recommended but within its maximum ratio
+    is a usual design; a motor several catalogue sizes larger than P_d needs (a 750 rpm
+    motor is heavy for its power) is not, so power comes before the recommended range.
+    The ranges are widened by the speed ``tolerance`` (a fraction), so a chain of fixed
+    ratios accepts a motor whose speed it meets within the tolerance; a given speed with
+    only fixed ratios is taken as it is (the speed check then reports the error)."""
     speeds = (synchronous_rpm,) if synchronous_rpm else SYNCHRONOUS_PREFERENCE
     rec_lo, rec_hi = ratio_bounds(elements, True)
     max_lo, max_hi = ratio_bounds(elements, False)
@@ -126,11 +130,12 @@ def choose_motor(catalogue: list[Motor], power_required: float, output_rpm: floa
         i = motor.full_load_rpm / output_rpm if motor else float("nan")
         candidates.append(MotorCandidate(sync, motor, i, bool(motor and rec_lo <= i <= rec_hi),
                                          bool(motor and max_lo <= i <= max_hi)))
-    for reason, ok in (("recommended", lambda c: c.recommended), ("maximum", lambda c: c.possible)):
-        for c in candidates:
-            if ok(c) or (synchronous_rpm and all_fixed and c.motor):
-                return MotorChoice(c.motor, c.total_ratio, tuple(candidates),
-                                   "given" if synchronous_rpm else reason)
+    usable = [(k, c) for k, c in enumerate(candidates)
+              if c.motor and (c.possible or (synchronous_rpm and all_fixed))]
+    if usable:
+        _, c = min(usable, key=lambda kc: (kc[1].motor.power, not kc[1].recommended, kc[0]))
+        reason = "given" if synchronous_rpm else ("recommended" if c.recommended else "maximum")
+        return MotorChoice(c.motor, c.total_ratio, tuple(candidates), reason)
     largest = max((m.power for m in catalogue), default=0.0)
     if not any(c.motor for c in candidates):
         at = pgettext("synchronous speed", " at {rpm:g} rpm", rpm=synchronous_rpm) if synchronous_rpm else ""

@@ -35,12 +35,14 @@ def _shaft_name(i: int, last: int, zh: bool) -> str:
     return _("shaft {i}", i=shaft_numeral(i)) + tail
 
 
-#: why the motor's synchronous speed was chosen (DriveResults.choice.reason)
+#: why the motor was chosen (DriveResults.choice.reason; core.drive.choose_motor)
 _REASONS = {
-    "recommended": N_("the first synchronous speed (in the order 1500, 1000, 3000, 750 rpm) whose "
-                      "total ratio lies within the stages' recommended ranges"),
-    "maximum": N_("no synchronous speed fits the recommended ranges; the first that fits the "
-                  "maximum ranges"),
+    "recommended": N_("the motor of least rated power among the smallest motors with $P_{ed} \\ge "
+                      "P_d$ at 1500, 1000, 3000 and 750 rpm whose total ratio the stages can "
+                      "give; its ratio lies within their recommended ranges"),
+    "maximum": N_("the motor of least rated power among the smallest motors with $P_{ed} \\ge P_d$ "
+                  "at 1500, 1000, 3000 and 750 rpm whose total ratio the stages can give; its "
+                  "ratio lies beyond their recommended ranges, within their maximum ranges"),
     "given": N_("the synchronous speed the brief gives"),
 }
 
@@ -50,25 +52,50 @@ _REASONS = {
 OVERSIZE = 2.0
 
 
-def _oversize(d, _) -> str | None:
-    """Why the chosen motor is much larger than P_d: the smaller motors of the other
-    synchronous speeds, each with the ratio the free stages would need against their
-    recommended and maximum ranges (data/transmissions.yaml); the smallest one the maximum
-    ranges allow, and how to choose it. None when the motor is not oversized."""
+def _ranges(d):
+    """The free stages, the product of the fixed ratios and the free stages' recommended
+    (lo, hi) and largest ratio (data/transmissions.yaml); None without a free stage."""
     from ..data import load_yaml
 
-    m = d.motor
-    if d.power_required <= 0 or m.power < OVERSIZE * d.power_required:
-        return None
     table = load_yaml("transmissions.yaml")
     free = [st for st in d.stages if not st.fixed and st.type != "coupling"]
-    fixed = float(np.prod([st.ratio for st in d.stages if st.fixed])) if d.stages else 1.0
     if not free:
         return None
+    fixed = float(np.prod([st.ratio for st in d.stages if st.fixed])) if d.stages else 1.0
     rec = (float(np.prod([table[st.kind]["ratio_recommended"][0] for st in free])),
            float(np.prod([table[st.kind]["ratio_recommended"][1] for st in free])))
     top = float(np.prod([table[st.kind]["ratio_max"] for st in free]))
+    return free, fixed, rec, top
+
+
+def _oversize(d, _) -> str | None:
+    """Why this motor, where a reader would ask. A ratio beyond the recommended ranges
+    ("maximum"): what the free stages must make against their ranges, and the motor the
+    recommended ranges would have taken, with its power against P_d. A motor much larger
+    than P_d: the smaller motors of the other synchronous speeds, each with the ratio the
+    free stages would need against their ranges. None otherwise."""
+    m = d.motor
+    ranges = _ranges(d) if d.power_required > 0 else None
+    if ranges is None:
+        return None
+    free, fixed, rec, top = ranges
     names = _("; ").join(_stage_name(st.kind, _) for st in free)
+    if d.choice.reason == "maximum":
+        need = d.choice.total_ratio / fixed
+        text = _("The stages with a given ratio give {fixed}, so the other stages ({names}) must "
+                 "make $i/{fixed}$ = {need}, beyond the recommended {lo}–{hi}, within the maximum "
+                 "{top}.", fixed=f(fixed, 2), names=names, need=f(need, 2), lo=f(rec[0], 0),
+                 hi=f(rec[1], 0), top=f(top, 0))
+        alt = min((c for c in d.choice.candidates if c.motor and c.recommended),
+                  key=lambda c: c.motor.power, default=None)
+        if alt is not None:
+            text = sentences(_, text, _(
+                "The recommended ranges would take {motor} ({P} kW, synchronous {sync} rpm), "
+                "{times} times $P_d$.", motor=alt.motor.designation, P=f(alt.motor.power / 1e3, 2),
+                sync=f(alt.synchronous_rpm, 0), times=f(alt.motor.power / d.power_required, 1)))
+        return text
+    if m.power < OVERSIZE * d.power_required:
+        return None
     tried = []
     for c in d.choice.candidates:
         if c.motor is None or c.motor.designation == m.designation or c.motor.power >= m.power:
@@ -78,27 +105,18 @@ def _oversize(d, _) -> str | None:
                _("below the recommended range") if need < rec[0] else
                _("beyond the recommended {lo}–{hi}, within the maximum {top}", lo=f(rec[0], 0),
                  hi=f(rec[1], 0), top=f(top, 0)))
-        tried.append(dict(c=c, need=need, why=why, possible=rec[0] <= need <= top * (1 + d.speed_tolerance)))
+        tried.append(dict(c=c, need=need, why=why))
     if not tried:
         return None
     items = _("; ").join(_("{motor} ({P} kW, {n} rpm): i = {i}, {names} {need}, {why}",
                            motor=t["c"].motor.designation, P=f(t["c"].motor.power / 1e3, 2),
                            n=f(t["c"].motor.full_load_rpm, 0), i=f(t["c"].total_ratio, 2),
                            names=names, need=f(t["need"], 2), why=t["why"]) for t in tried)
-    alt = min((t for t in tried if t["possible"]), key=lambda t: t["c"].motor.power, default=None)
-    text = _("Its rated power is {times} times $P_d$: not the power but the ratio ruled out the "
+    return _("Its rated power is {times} times $P_d$: not the power but the ratio ruled out the "
              "smaller motors. The stages with a given ratio give {fixed}, so the other stages "
              "({names}) must make $i/{fixed}$, recommended {lo}–{hi}: {items}.",
              times=f(m.power / d.power_required, 1), fixed=f(fixed, 2), names=names,
              lo=f(rec[0], 0), hi=f(rec[1], 0), items=items)
-    if alt is not None:
-        text = sentences(_, text, _(
-            "The smallest motor the maximum ranges allow is {motor} ({P} kW, synchronous {sync} "
-            "rpm), with {need} for {names}, beyond its recommended range; this design keeps the "
-            "motor whose stage ratios lie in their recommended ranges.", motor=alt["c"].motor.designation,
-            P=f(alt["c"].motor.power / 1e3, 2), need=f(alt["need"], 2), names=names,
-            sync=f(alt["c"].synchronous_rpm, 0)))
-    return text
 
 
 def drive_context(d, lang: str, figures: dict[str, str], machine_power_eq: str | None = None) -> dict:

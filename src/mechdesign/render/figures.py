@@ -128,18 +128,32 @@ def cached(function):
 
 
 # "N·m", "kg·m²": the figures' CJK sans has a full-width U+00B7 ("N • m"); the dot operator
-# U+22C5, which it lacks, comes from DejaVu Sans (the fallback of render/fonts.py), narrow
+# U+22C5, which it lacks, comes from DejaVu Sans (the fallback of render/fonts.py), narrow.
+# A text with mathtext ("$M_b$ (N·m)") is laid out by mathtext, which has no fallback: its
+# plain parts take the CJK font, which drew U+22C5 as a dummy box; there the dot is the
+# math "\cdot" of the mathtext font set (DejaVu Sans).
 _UNIT_DOT = re.compile(r"(?<=[A-Za-z])\u00b7(?=[A-Za-z])")
+_MATH = re.compile(r"(?<!\\)\$")
+
+
+def _narrow(value: str) -> str:
+    parts = _MATH.split(value)
+    if len(parts) < 3 or len(parts) % 2 == 0:          # no mathtext (or an unpaired $)
+        return _UNIT_DOT.sub("\u22c5", value)
+    # even parts lie outside math, odd parts inside
+    return "$".join(_UNIT_DOT.sub(r"$\\cdot$", p) if k % 2 == 0 else p
+                    for k, p in enumerate(parts))
 
 
 def narrow_unit_dots(fig) -> None:
-    """Set the middle dot between two letters of every text of ``fig`` as U+22C5."""
+    """Set the middle dot between two letters of every text of ``fig`` narrow: U+22C5 in
+    plain text, "\\cdot" in a text with mathtext."""
     from matplotlib.text import Text
 
     for text in fig.findobj(Text):
         value = text.get_text()
         if "\u00b7" in value:
-            text.set_text(_UNIT_DOT.sub("\u22c5", value))
+            text.set_text(_narrow(value))
 
 
 def save_png(fig, path: Path) -> None:
