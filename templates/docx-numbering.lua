@@ -275,7 +275,7 @@ end
 
 -- Length (characters, as text_len) of a cell's text, and width (twips at 10.5 pt) of its
 -- widest piece that no line may break: a number or word (a Str up to a space; a line may
--- break after "/" and around CJK characters) or an inline formula (one object).
+-- break after "/" and around CJK characters), an inline formula (one object) or a word of code.
 local function cell_measure(cell)
   local n, piece, widest = 0, 0, 0
   local function flush()
@@ -301,6 +301,14 @@ local function cell_measure(cell)
       local len = math.ceil(text_len(el.text) / 2)
       n = n + len
       piece = piece + len * 112
+    end,
+    -- code ("feed_verification"): Verbatim Char, Consolas 9 pt (reference.docx), 0.55 em a
+    -- character = 99 twips (110 with some room); a line breaks only at its spaces
+    Code = function(el)
+      n = n + text_len(el.text)
+      for _, c in utf8.codes(el.text) do
+        if c == 0x20 then flush() else piece = piece + (is_wide(c) and 200 or 110) end
+      end
     end,
   }
   flush()

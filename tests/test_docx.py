@@ -448,3 +448,65 @@ def test_bars_in_pairs_become_absolute_values():
     # a superscript asterisk (h_a^*) is the asterisk operator, a symbol to StarMath
     star = f"<m:oMath><m:sSup><m:e>{r('h')}</m:e><m:sup>{r('*')}</m:sup></m:sSup></m:oMath>"
     assert group_scripted_brackets(star) == star.replace("<m:t>*</m:t>", "<m:t>\u2217</m:t>")
+
+
+def _runs(document_xml: str) -> list[tuple[str, str]]:
+    """(run properties, text) of every text run."""
+    return re.findall(r"<w:r>(?:<w:rPr>((?:(?!</w:rPr>).)*)</w:rPr>)?<w:t(?: [^>]*)?>([^<]*)</w:t></w:r>",
+                      document_xml, flags=re.DOTALL)
+
+
+def test_unit_signs_in_chinese_text_are_set_in_the_latin_font(tmp_path):
+    """Issue 19 (7): pandoc hints every run holding Chinese text ``w:hint="eastAsia"``, and
+    Word then draws U+00B0–00B4, 00B6–00BA, 00D7 of that run in the East-Asian font
+    ([MS-OI29500] §2.1.88, rFonts), 宋体's full-width "·": "N · m". A sign in Latin text (a
+    unit, a number) stands in a run without the hint; one between Chinese characters (the
+    间隔号 of a name) keeps it; the text reads the same."""
+    text = ("最大 12 738 N·m，最小 -84.70 N·m；角加速度 3.2 rad/s²（逆时针为正），压力角 19.69°（许用），"
+            "白求恩·诺尔。\n\n| 位置 | （杆组法）/N·m |\n|--|--:|\n| 0 | 1.0 |\n\n: 力矩\n")
+    md = _write_sample(tmp_path, "# 力矩\n\n" + text)
+    out = tmp_path / "report.docx"
+    render_docx(md, out, METADATA, TEMPLATES)
+    document = _part(out, "word/document.xml")
+    runs = _runs(document)
+    latin = [t for p, t in runs if "·" in t or "²" in t or "°" in t]
+    assert latin, "no run holds the signs"
+    for props, run_text in runs:
+        if 'w:hint="eastAsia"' not in props:
+            continue
+        for k, ch in enumerate(run_text):
+            if ch in "·°²":
+                neighbours = run_text[max(k - 1, 0):k] + run_text[k + 1:k + 2]
+                assert neighbours and all(ord(c) > 0x2E80 for c in neighbours), run_text
+    joined = "".join(t for _, t in runs)
+    assert joined.count("N·m") == 3 and "rad/s²（" in joined and "19.69°（" in joined
+    # the 间隔号 between Chinese characters keeps its (full-width) East-Asian form
+    assert any('w:hint="eastAsia"' in p and "白求恩·诺尔" in t for p, t in runs)
+
+
+def test_code_in_a_table_keeps_its_words_whole_and_listings_fit_the_line(tmp_path):
+    """Issue 19 (1): the lock-beam appendix's table of stages and their result types broke
+    "feed_verification" over four lines in Word (the column widths did not count code). A
+    column of code is as wide as its longest word in Verbatim Char (Consolas, 1126/2048 em a
+    character) plus the cell margins, and Verbatim Char is small enough that a listing line
+    of 80 columns (render/summary.LISTING_WIDTH) fits the text width."""
+    from mechdesign.render.summary import LISTING_WIDTH
+
+    words = ["transmission", "bending_cam", "feed_verification", "feed_graphical"]
+    rows = "\n".join(f"| {k} | stage {k} | `{w}` |" for k, w in enumerate(words, 1))
+    md = _write_sample(tmp_path, "# Appendix\n\n| No. | Stage | Result |\n|--:|:--|:--|\n"
+                       + rows + "\n\n: Stages\n")
+    out = tmp_path / "report.docx"
+    render_docx(md, out, {"title": "Course design", "lang": "en"}, TEMPLATES)
+    styles = _part(out, "word/styles.xml")
+    verbatim = re.search(r'<w:style [^>]*w:styleId="VerbatimChar".*?</w:style>', styles, re.DOTALL)
+    assert "Consolas" in verbatim.group(0)
+    half_points = int(re.search(r'<w:sz w:val="(\d+)"', verbatim.group(0)).group(1))
+    em = 1126 / 2048
+    assert LISTING_WIDTH * em * half_points / 2 <= _TEXT_WIDTH / 20
+    table = re.search(r"<w:tbl>.*?</w:tbl>", _part(out, "word/document.xml"), flags=re.DOTALL).group(0)
+    assert "feed_verification" in table
+    grid = [int(w) for w in re.findall(r'<w:gridCol w:w="(\d+)"', table)]
+    width = grid[2] / sum(grid) * _TEXT_WIDTH if 'w:tblW w:type="pct" w:w="5000"' in table else grid[2]
+    longest = max(len(w) for w in words) * em * half_points * 10      # twips
+    assert width >= longest + _CELL_MARGINS, (width, longest)
