@@ -463,7 +463,8 @@ def test_unit_signs_in_chinese_text_are_set_in_the_latin_font(tmp_path):
     unit, a number) stands in a run without the hint; one between Chinese characters (the
     间隔号 of a name) keeps it; the text reads the same."""
     text = ("最大 12 738 N·m，最小 -84.70 N·m；角加速度 3.2 rad/s²（逆时针为正），压力角 19.69°（许用），"
-            "白求恩·诺尔。\n\n| 位置 | （杆组法）/N·m |\n|--|--:|\n| 0 | 1.0 |\n\n: 力矩\n")
+            "白求恩·诺尔。\n\n| 位置 | （杆组法）/N·m | 说明 |\n|--|--:|--|\n"
+            "| 0 | 1.0 | 刀线总长 L = 20.0 m（估计值）× 单位长度模切阻力 q = 50 N/mm |\n\n: 力矩\n")
     md = _write_sample(tmp_path, "# 力矩\n\n" + text)
     out = tmp_path / "report.docx"
     render_docx(md, out, METADATA, TEMPLATES)
@@ -476,8 +477,10 @@ def test_unit_signs_in_chinese_text_are_set_in_the_latin_font(tmp_path):
             continue
         for k, ch in enumerate(run_text):
             if ch in "·°²":
-                neighbours = run_text[max(k - 1, 0):k] + run_text[k + 1:k + 2]
-                assert neighbours and all(ord(c) > 0x2E80 for c in neighbours), run_text
+                # only between two Chinese characters of the run (a run ends at a space or
+                # a formula: a sign at its end stands before Latin text or a number)
+                assert 0 < k < len(run_text) - 1, run_text
+                assert ord(run_text[k - 1]) > 0x2E80 and ord(run_text[k + 1]) > 0x2E80, run_text
     joined = "".join(t for _, t in runs)
     assert joined.count("N·m") == 3 and "rad/s²（" in joined and "19.69°（" in joined
     # the 间隔号 between Chinese characters keeps its (full-width) East-Asian form
@@ -510,3 +513,69 @@ def test_code_in_a_table_keeps_its_words_whole_and_listings_fit_the_line(tmp_pat
     width = grid[2] / sum(grid) * _TEXT_WIDTH if 'w:tblW w:type="pct" w:w="5000"' in table else grid[2]
     longest = max(len(w) for w in words) * em * half_points * 10      # twips
     assert width >= longest + _CELL_MARGINS, (width, longest)
+
+
+# ---- Word, laid out: LibreOffice's PDF of whole example reports ---------------------------
+# LibreOffice lays the .docx out (not Word: its formulas come out narrower than Word's Cambria
+# Math, so tests/test_typeset.py also checks every formula's width in the XML), and the PDF's
+# characters are checked as the typst PDF's are: inside the text block (the margins of
+# reference.docx), no equation number over another word. LibreOffice 7 reads
+# w:overflowPunct="0" (Normal; Word: no punctuation past the margin) as its opposite and hangs
+# a closing CJK punctuation mark at a line end into the margin: such a mark is let pass by up
+# to one em. Skipped without soffice (CI has none).
+_SOFFICE = shutil.which("soffice") or shutil.which("libreoffice")
+_CJK_CLOSING = set("，。、；：？！）」』】》〉”’")
+
+
+def _docx_margins() -> tuple[float, float]:
+    """Left and right edges [pt] of the text block of reference.docx's A4 page."""
+    xml = _part(TEMPLATES / "reference.docx", "word/document.xml")
+    page = int(re.search(r'<w:pgSz\b[^>]*\bw:w="(\d+)"', xml).group(1))
+    left = int(re.search(r'<w:pgMar\b[^>]*\bw:left="(\d+)"', xml).group(1))
+    right = int(re.search(r'<w:pgMar\b[^>]*\bw:right="(\d+)"', xml).group(1))
+    return left / 20, (page - right) / 20
+
+
+def _outside_docx_block(pdf: Path) -> list[tuple[int, float, float, str]]:
+    import pymupdf
+
+    left, right = _docx_margins()
+    bad = []
+    with pymupdf.open(pdf) as doc:
+        for number, page in enumerate(doc, 1):
+            for block in page.get_text("rawdict")["blocks"]:
+                for line in block.get("lines", []):
+                    for span in line["spans"]:
+                        for ch in span["chars"]:
+                            c, (x0, _, x1, _) = ch["c"], ch["bbox"]
+                            if c.isspace():
+                                continue
+                            if c in _CJK_CLOSING and x1 <= right + span["size"] + 1.0:
+                                continue          # hung by LibreOffice (see above)
+                            if x0 < left - 1.0 or x1 > right + 1.0:
+                                bad.append((number, round(x0, 1), round(x1, 1), c))
+    return bad
+
+
+@pytest.mark.skipif(_SOFFICE is None, reason="LibreOffice (soffice) not installed")
+@pytest.mark.parametrize("brief, lang", [("cam_7_1", "zh"), ("furnace_drive", "en"), ("die_cutter", "zh")])
+def test_word_report_laid_out_by_libreoffice_stays_in_the_text_block(brief, lang, tmp_path):
+    import subprocess
+
+    from typer.testing import CliRunner
+
+    from mechdesign.cli import app as cli_app
+    from tests.test_typeset import numbers_over_words
+
+    out = tmp_path / "out"
+    result = CliRunner().invoke(cli_app, ["run", str(ROOT / "designs" / f"{brief}.yaml"), "--lang", lang,
+                                          "--format", "docx", "--out", str(out)])
+    assert result.exit_code == 0, result.output
+    profile = (tmp_path / "lo-profile").as_uri()     # a profile of its own: no clash with a running soffice
+    subprocess.run([_SOFFICE, f"-env:UserInstallation={profile}", "--headless", "--convert-to", "pdf",
+                    "--outdir", str(tmp_path), str(out / "report.docx")],
+                   check=True, capture_output=True, timeout=300)
+    pdf = tmp_path / "report.pdf"
+    assert pdf.is_file()
+    assert _outside_docx_block(pdf) == []
+    assert numbers_over_words(pdf) == []

@@ -224,11 +224,12 @@ _HINTED_RUN = re.compile(
 
 def _is_latin_mark(text: str, k: int) -> bool:
     """``text[k]`` is one of :data:`_LATIN_MARKS` standing in Latin text: a printable ASCII
-    character or another such mark right before or after it ("N·m", "s²)", "28×16", "/°")."""
+    character or another such mark right before or after it ("N·m", "s²)", "28×16", "/°"), or
+    the run's first or last character (pandoc ends a run at a space or a formula: "（估计值）×")."""
     if text[k] not in _LATIN_MARKS:
         return False
     for j in (k - 1, k + 1):
-        if 0 <= j < len(text) and ("!" <= text[j] <= "~" or text[j] in _LATIN_MARKS):
+        if not 0 <= j < len(text) or "!" <= text[j] <= "~" or text[j] in _LATIN_MARKS:
             return True
     return False
 
