@@ -519,10 +519,11 @@ def test_code_in_a_table_keeps_its_words_whole_and_listings_fit_the_line(tmp_pat
 # LibreOffice lays the .docx out (not Word: its formulas come out narrower than Word's Cambria
 # Math, so tests/test_typeset.py also checks every formula's width in the XML), and the PDF's
 # characters are checked as the typst PDF's are: inside the text block (the margins of
-# reference.docx), no equation number over another word. LibreOffice 7 reads
-# w:overflowPunct="0" (Normal; Word: no punctuation past the margin) as its opposite and hangs
-# a closing CJK punctuation mark at a line end into the margin: such a mark is let pass by up
-# to one em. Skipped without soffice (CI has none).
+# reference.docx), no equation number over another word. LibreOffice reads
+# w:overflowPunct="0" (Normal; Word: no punctuation past the margin, ISO/IEC 29500-1
+# §17.3.1.21) as its opposite (writerfilter/source/dmapper/DomainMapper.cxx: hanging
+# punctuation = (value == 0)) and hangs a closing CJK punctuation mark at a line end into the
+# margin: such a mark is let pass by up to one em. Skipped without soffice (CI has none).
 _SOFFICE = shutil.which("soffice") or shutil.which("libreoffice")
 _CJK_CLOSING = set("，。、；：？！）」』】》〉”’")
 
