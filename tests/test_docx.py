@@ -580,3 +580,28 @@ def test_word_report_laid_out_by_libreoffice_stays_in_the_text_block(brief, lang
     assert pdf.is_file()
     assert _outside_docx_block(pdf) == []
     assert numbers_over_words(pdf) == []
+
+
+def test_a_short_chinese_word_in_a_cell_is_never_broken(tmp_path):
+    """Issue 19 (1): the verification tables of the zh reports (furnace drive, die-cutter,
+    lock-beam) had their 结论 column squeezed to one character in Word, "合" over "格": the
+    column widths let a line break between any two Chinese characters. A cell of one short
+    word (at most four characters) keeps it on one line: its column is at least two
+    characters of 10.5 pt (宋体's advance: 1 em) wide plus the cell margins and a little."""
+    rows = [f"| 各轴转速 $n_{{k+1}} = n_k / i_k$（相对误差），第 {k} 对轴承与齿轮的功率与转矩平衡 "
+            f"| {k}.0 | ≤ 1.0 × 10⁻⁹ | 合格 |" for k in range(6)]
+    # a result written out in words widens the second column (the furnace drive's table 14)
+    rows.append("| 各级传动比与齿数比、带轮直径比 | 由电动机转速与各级传动比逐级相乘得到的工作机转速与任务书要求的"
+                "工作机转速之相对误差 0.542% | ≤ ±4.0% | 合格 |")
+    md = _write_sample(tmp_path, "# 校核\n\n| 校核项目 | 结果 | 参考值 / 限值 | 结论 |\n|:--|--:|:--|:-:|\n"
+                       + "\n".join(rows) + "\n\n: 校核\n")
+    out = tmp_path / "report.docx"
+    render_docx(md, out, METADATA, TEMPLATES)
+    table = re.search(r"<w:tbl>.*?</w:tbl>", _part(out, "word/document.xml"), flags=re.DOTALL).group(0)
+    style = re.search(r'<w:pStyle w:val="(TableText\w*)"', table).group(1)
+    half_points = {"TableText": 21, "TableTextSmall": 18, "TableTextSmaller": 15}[style]
+    grid = [int(w) for w in re.findall(r'<w:gridCol w:w="(\d+)"', table)]
+    width = grid[3] / sum(grid) * _TEXT_WIDTH if 'w:tblW w:type="pct" w:w="5000"' in table else grid[3]
+    # (1.5 pt of room: LibreOffice broke "合格" in a column of 639 twips, 3 more than the two
+    # characters and the margins)
+    assert width >= 2 * half_points * 10 + _CELL_MARGINS + 30, (width, grid)
