@@ -275,9 +275,13 @@ end
 
 -- Length (characters, as text_len) of a cell's text, and width (twips at 10.5 pt) of its
 -- widest piece that no line may break: a number or word (a Str up to a space; a line may
--- break after "/" and around CJK characters) or an inline formula (one object).
+-- break after "/" and around CJK characters), an inline formula (one object) or a word of code.
+-- A cell of a single short Chinese word ("合格", "不合格", "结论": at most SHORT_CJK characters
+-- and no space) is one piece too: Word would break it between its characters ("合" over "格").
+local SHORT_CJK = 4
+
 local function cell_measure(cell)
-  local n, piece, widest = 0, 0, 0
+  local n, piece, widest, whole, spaced = 0, 0, 0, 0, false
   local function flush()
     widest = math.max(widest, piece)
     piece = 0
@@ -286,6 +290,7 @@ local function cell_measure(cell)
     Str = function(el)
       n = n + text_len(el.text)
       for _, c in utf8.codes(el.text) do
+        whole = whole + char_twips(c)
         if is_wide(c) then
           flush(); piece = char_twips(c); flush()
         else
@@ -294,16 +299,26 @@ local function cell_measure(cell)
         end
       end
     end,
-    Space = function() n = n + 1; flush() end,
+    Space = function() n = n + 1; spaced = true; flush() end,
     SoftBreak = flush,
     LineBreak = flush,
     Math = function(el)
       local len = math.ceil(text_len(el.text) / 2)
       n = n + len
       piece = piece + len * 112
+      spaced = true
+    end,
+    -- code ("feed_verification"): Verbatim Char, Consolas 9 pt (reference.docx), 0.55 em a
+    -- character = 99 twips (110 with some room); a line breaks only at its spaces
+    Code = function(el)
+      n = n + text_len(el.text)
+      for _, c in utf8.codes(el.text) do
+        if c == 0x20 then flush() else piece = piece + (is_wide(c) and 200 or 110) end
+      end
     end,
   }
   flush()
+  if not spaced and n <= 2 * SHORT_CJK then widest = math.max(widest, whole) end
   return n, widest
 end
 

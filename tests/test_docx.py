@@ -448,3 +448,160 @@ def test_bars_in_pairs_become_absolute_values():
     # a superscript asterisk (h_a^*) is the asterisk operator, a symbol to StarMath
     star = f"<m:oMath><m:sSup><m:e>{r('h')}</m:e><m:sup>{r('*')}</m:sup></m:sSup></m:oMath>"
     assert group_scripted_brackets(star) == star.replace("<m:t>*</m:t>", "<m:t>\u2217</m:t>")
+
+
+def _runs(document_xml: str) -> list[tuple[str, str]]:
+    """(run properties, text) of every text run."""
+    return re.findall(r"<w:r>(?:<w:rPr>((?:(?!</w:rPr>).)*)</w:rPr>)?<w:t(?: [^>]*)?>([^<]*)</w:t></w:r>",
+                      document_xml, flags=re.DOTALL)
+
+
+def test_unit_signs_in_chinese_text_are_set_in_the_latin_font(tmp_path):
+    """Issue 19 (7): pandoc hints every run holding Chinese text ``w:hint="eastAsia"``, and
+    Word then draws U+00B0–00B4, 00B6–00BA, 00D7 of that run in the East-Asian font
+    ([MS-OI29500] §2.1.88, rFonts), 宋体's full-width "·": "N · m". A sign in Latin text (a
+    unit, a number) stands in a run without the hint; one between Chinese characters (the
+    间隔号 of a name) keeps it; the text reads the same."""
+    text = ("最大 12 738 N·m，最小 -84.70 N·m；角加速度 3.2 rad/s²（逆时针为正），压力角 19.69°（许用），"
+            "白求恩·诺尔。\n\n| 位置 | （杆组法）/N·m | 说明 |\n|--|--:|--|\n"
+            "| 0 | 1.0 | 刀线总长 L = 20.0 m（估计值）× 单位长度模切阻力 q = 50 N/mm |\n\n: 力矩\n")
+    md = _write_sample(tmp_path, "# 力矩\n\n" + text)
+    out = tmp_path / "report.docx"
+    render_docx(md, out, METADATA, TEMPLATES)
+    document = _part(out, "word/document.xml")
+    runs = _runs(document)
+    latin = [t for p, t in runs if "·" in t or "²" in t or "°" in t]
+    assert latin, "no run holds the signs"
+    for props, run_text in runs:
+        if 'w:hint="eastAsia"' not in props:
+            continue
+        for k, ch in enumerate(run_text):
+            if ch in "·°²":
+                # only between two Chinese characters of the run (a run ends at a space or
+                # a formula: a sign at its end stands before Latin text or a number)
+                assert 0 < k < len(run_text) - 1, run_text
+                assert ord(run_text[k - 1]) > 0x2E80 and ord(run_text[k + 1]) > 0x2E80, run_text
+    joined = "".join(t for _, t in runs)
+    assert joined.count("N·m") == 3 and "rad/s²（" in joined and "19.69°（" in joined
+    # the 间隔号 between Chinese characters keeps its (full-width) East-Asian form
+    assert any('w:hint="eastAsia"' in p and "白求恩·诺尔" in t for p, t in runs)
+
+
+def test_code_in_a_table_keeps_its_words_whole_and_listings_fit_the_line(tmp_path):
+    """Issue 19 (1): the lock-beam appendix's table of stages and their result types broke
+    "feed_verification" over four lines in Word (the column widths did not count code). A
+    column of code is as wide as its longest word in Verbatim Char (Consolas, 1126/2048 em a
+    character) plus the cell margins, and Verbatim Char is small enough that a listing line
+    of 80 columns (render/summary.LISTING_WIDTH) fits the text width."""
+    from mechdesign.render.summary import LISTING_WIDTH
+
+    words = ["transmission", "bending_cam", "feed_verification", "feed_graphical"]
+    rows = "\n".join(f"| {k} | stage {k} | `{w}` |" for k, w in enumerate(words, 1))
+    md = _write_sample(tmp_path, "# Appendix\n\n| No. | Stage | Result |\n|--:|:--|:--|\n"
+                       + rows + "\n\n: Stages\n")
+    out = tmp_path / "report.docx"
+    render_docx(md, out, {"title": "Course design", "lang": "en"}, TEMPLATES)
+    styles = _part(out, "word/styles.xml")
+    verbatim = re.search(r'<w:style [^>]*w:styleId="VerbatimChar".*?</w:style>', styles, re.DOTALL)
+    assert "Consolas" in verbatim.group(0)
+    half_points = int(re.search(r'<w:sz w:val="(\d+)"', verbatim.group(0)).group(1))
+    em = 1126 / 2048
+    assert LISTING_WIDTH * em * half_points / 2 <= _TEXT_WIDTH / 20
+    table = re.search(r"<w:tbl>.*?</w:tbl>", _part(out, "word/document.xml"), flags=re.DOTALL).group(0)
+    assert "feed_verification" in table
+    grid = [int(w) for w in re.findall(r'<w:gridCol w:w="(\d+)"', table)]
+    width = grid[2] / sum(grid) * _TEXT_WIDTH if 'w:tblW w:type="pct" w:w="5000"' in table else grid[2]
+    longest = max(len(w) for w in words) * em * half_points * 10      # twips
+    assert width >= longest + _CELL_MARGINS, (width, longest)
+
+
+# ---- Word, laid out: LibreOffice's PDF of whole example reports ---------------------------
+# LibreOffice lays the .docx out (not Word: its formulas come out narrower than Word's Cambria
+# Math, so tests/test_typeset.py also checks every formula's width in the XML), and the PDF's
+# characters are checked as the typst PDF's are: inside the text block (the margins of
+# reference.docx), no equation number over another word. LibreOffice reads
+# w:overflowPunct="0" (Normal; Word: no punctuation past the margin, ISO/IEC 29500-1
+# §17.3.1.21) as its opposite (writerfilter/source/dmapper/DomainMapper.cxx: hanging
+# punctuation = (value == 0)) and hangs a closing CJK punctuation mark at a line end into the
+# margin: such a mark is let pass by up to one em. Skipped without soffice (CI has none).
+_SOFFICE = shutil.which("soffice") or shutil.which("libreoffice")
+_CJK_CLOSING = set("，。、；：？！）」』】》〉”’")
+
+
+def _docx_margins() -> tuple[float, float]:
+    """Left and right edges [pt] of the text block of reference.docx's A4 page."""
+    xml = _part(TEMPLATES / "reference.docx", "word/document.xml")
+    page = int(re.search(r'<w:pgSz\b[^>]*\bw:w="(\d+)"', xml).group(1))
+    left = int(re.search(r'<w:pgMar\b[^>]*\bw:left="(\d+)"', xml).group(1))
+    right = int(re.search(r'<w:pgMar\b[^>]*\bw:right="(\d+)"', xml).group(1))
+    return left / 20, (page - right) / 20
+
+
+def _outside_docx_block(pdf: Path) -> list[tuple[int, float, float, str]]:
+    import pymupdf
+
+    left, right = _docx_margins()
+    bad = []
+    with pymupdf.open(pdf) as doc:
+        for number, page in enumerate(doc, 1):
+            for block in page.get_text("rawdict")["blocks"]:
+                for line in block.get("lines", []):
+                    for span in line["spans"]:
+                        for ch in span["chars"]:
+                            c, (x0, _, x1, _) = ch["c"], ch["bbox"]
+                            if c.isspace():
+                                continue
+                            if c in _CJK_CLOSING and x1 <= right + span["size"] + 1.0:
+                                continue          # hung by LibreOffice (see above)
+                            if x0 < left - 1.0 or x1 > right + 1.0:
+                                bad.append((number, round(x0, 1), round(x1, 1), c))
+    return bad
+
+
+@pytest.mark.skipif(_SOFFICE is None, reason="LibreOffice (soffice) not installed")
+@pytest.mark.parametrize("brief, lang", [("cam_7_1", "zh"), ("furnace_drive", "en"), ("die_cutter", "zh")])
+def test_word_report_laid_out_by_libreoffice_stays_in_the_text_block(brief, lang, tmp_path):
+    import subprocess
+
+    from typer.testing import CliRunner
+
+    from mechdesign.cli import app as cli_app
+    from tests.test_typeset import numbers_over_words
+
+    out = tmp_path / "out"
+    result = CliRunner().invoke(cli_app, ["run", str(ROOT / "designs" / f"{brief}.yaml"), "--lang", lang,
+                                          "--format", "docx", "--out", str(out)])
+    assert result.exit_code == 0, result.output
+    profile = (tmp_path / "lo-profile").as_uri()     # a profile of its own: no clash with a running soffice
+    subprocess.run([_SOFFICE, f"-env:UserInstallation={profile}", "--headless", "--convert-to", "pdf",
+                    "--outdir", str(tmp_path), str(out / "report.docx")],
+                   check=True, capture_output=True, timeout=300)
+    pdf = tmp_path / "report.pdf"
+    assert pdf.is_file()
+    assert _outside_docx_block(pdf) == []
+    assert numbers_over_words(pdf) == []
+
+
+def test_a_short_chinese_word_in_a_cell_is_never_broken(tmp_path):
+    """Issue 19 (1): the verification tables of the zh reports (furnace drive, die-cutter,
+    lock-beam) had their 结论 column squeezed to one character in Word, "合" over "格": the
+    column widths let a line break between any two Chinese characters. A cell of one short
+    word (at most four characters) keeps it on one line: its column is at least two
+    characters of 10.5 pt (宋体's advance: 1 em) wide plus the cell margins and a little."""
+    rows = [f"| 各轴转速 $n_{{k+1}} = n_k / i_k$（相对误差），第 {k} 对轴承与齿轮的功率与转矩平衡 "
+            f"| {k}.0 | ≤ 1.0 × 10⁻⁹ | 合格 |" for k in range(6)]
+    # a result written out in words widens the second column (the furnace drive's table 14)
+    rows.append("| 各级传动比与齿数比、带轮直径比 | 由电动机转速与各级传动比逐级相乘得到的工作机转速与任务书要求的"
+                "工作机转速之相对误差 0.542% | ≤ ±4.0% | 合格 |")
+    md = _write_sample(tmp_path, "# 校核\n\n| 校核项目 | 结果 | 参考值 / 限值 | 结论 |\n|:--|--:|:--|:-:|\n"
+                       + "\n".join(rows) + "\n\n: 校核\n")
+    out = tmp_path / "report.docx"
+    render_docx(md, out, METADATA, TEMPLATES)
+    table = re.search(r"<w:tbl>.*?</w:tbl>", _part(out, "word/document.xml"), flags=re.DOTALL).group(0)
+    style = re.search(r'<w:pStyle w:val="(TableText\w*)"', table).group(1)
+    half_points = {"TableText": 21, "TableTextSmall": 18, "TableTextSmaller": 15}[style]
+    grid = [int(w) for w in re.findall(r'<w:gridCol w:w="(\d+)"', table)]
+    width = grid[3] / sum(grid) * _TEXT_WIDTH if 'w:tblW w:type="pct" w:w="5000"' in table else grid[3]
+    # (1.5 pt of room: LibreOffice broke "合格" in a column of 639 twips, 3 more than the two
+    # characters and the margins)
+    assert width >= 2 * half_points * 10 + _CELL_MARGINS + 30, (width, grid)

@@ -208,6 +208,13 @@ def replacement_styles() -> dict[str, str]:
                                  ("TableTextSmaller", "Table Text Smaller", 15)):
         styles[style_id] = _pstyle(style_id, name, based_on="TableText", custom=True,
                                    rpr=_size(size))
+    # code (inline, and the appendix listing): Consolas at 9 pt, as the PDF's 9 pt mono, so
+    # that a listing line of render/summary.LISTING_WIDTH = 80 columns fits the 453.5 pt text
+    # width (80 × 0.55 em × 9 pt = 396 pt; at pandoc's 11 pt it wrapped at 484 pt)
+    styles["VerbatimChar"] = (
+        '<w:style w:type="character" w:customStyle="1" w:styleId="VerbatimChar">'
+        '<w:name w:val="Verbatim Char" /><w:basedOn w:val="BodyTextChar" />'
+        '<w:rPr><w:rFonts w:ascii="Consolas" w:hAnsi="Consolas" />' + _size(18) + '</w:rPr></w:style>')
     # three-line table: 1.5 pt rules at top and bottom, 0.75 pt under the header row
     styles["Table"] = (
         '<w:style w:type="table" w:default="1" w:styleId="Table"><w:name w:val="Table" />'

@@ -213,6 +213,51 @@ def _update_fields_on_open(settings: bytes) -> bytes:
     return xml.encode("utf-8")
 
 
+#: Latin-1 signs that Word sets in the East-Asian font of a run hinted ``eastAsia`` (pandoc
+#: hints every run with Chinese text): [MS-OI29500] §2.1.88, rFonts: U+00B0–B4 and B6–BA,
+#: D7, F7 among them. 宋体's are full-width: "N·m" would read "N · m", "25°" "25 °".
+_LATIN_MARKS = "·°×±²³¹÷"
+_HINTED_RUN = re.compile(
+    r'<w:r><w:rPr>(?P<pr>(?:(?!</w:rPr>).)*?w:hint="eastAsia"(?:(?!</w:rPr>).)*?)</w:rPr>'
+    r'<w:t(?: xml:space="preserve")?>(?P<text>[^<]*)</w:t></w:r>', re.DOTALL)
+
+
+def _is_latin_mark(text: str, k: int) -> bool:
+    """``text[k]`` is one of :data:`_LATIN_MARKS` standing in Latin text: a printable ASCII
+    character or another such mark right before or after it ("N·m", "s²)", "28×16", "/°"), or
+    the run's first or last character (pandoc ends a run at a space or a formula: "（估计值）×")."""
+    if text[k] not in _LATIN_MARKS:
+        return False
+    for j in (k - 1, k + 1):
+        if not 0 <= j < len(text) or "!" <= text[j] <= "~" or text[j] in _LATIN_MARKS:
+            return True
+    return False
+
+
+def latin_marks_in_latin_font(xml: str) -> str:
+    """Every :data:`_LATIN_MARKS` sign that stands in Latin text ("N·m", "rad/s²", "19.69°")
+    of a run hinted ``eastAsia`` moved into a run of its own without the hint, so that Word
+    draws it in the text's Latin font (Times New Roman: the narrow middle dot, as the PDF),
+    not in 宋体; the run's other properties are kept."""
+    def one(m: re.Match) -> str:
+        text = m.group("text")
+        marks = [k for k in range(len(text)) if _is_latin_mark(text, k)]
+        if not marks:
+            return m.group(0)
+        pr = m.group("pr")
+        plain = re.sub(r'<w:rFonts w:hint="eastAsia"\s*/>', "", pr).replace(' w:hint="eastAsia"', "")
+        out, start = [], 0
+        for k in marks + [len(text)]:
+            if k > start:
+                out.append((pr, text[start:k]))
+            if k < len(text):
+                out.append((plain, text[k]))
+            start = k + 1
+        return "".join(("<w:r>" + (f"<w:rPr>{p}</w:rPr>" if p else "")
+                        + f'<w:t xml:space="preserve">{t}</w:t></w:r>') for p, t in out)
+    return _HINTED_RUN.sub(one, xml)
+
+
 def _finish(docx: Path, *, title: str, author: str, subject: str) -> None:
     """The running header shows the title and the student (the TITLE and AUTHOR fields'
     shown results, filled in here so that they read right before Word updates fields;
@@ -220,7 +265,8 @@ def _finish(docx: Path, *, title: str, author: str, subject: str) -> None:
     name the student as author and the report as subject; broken display formulas become
     aligned lines that Word and LibreOffice both read, and a bracket closed in a script's
     base a delimiter (:mod:`.docx_math`); the table of
-    contents holds its entries before Word updates it (:mod:`.docx_toc`). The archive keeps
+    contents holds its entries before Word updates it (:mod:`.docx_toc`); "N·m", "s²", "25°"
+    in Chinese text take the Latin font's signs (:func:`latin_marks_in_latin_font`). The archive keeps
     its member order and dates (reproducible)."""
     with zipfile.ZipFile(docx) as zin:
         items = [(info, zin.read(info.filename)) for info in zin.infolist()]
@@ -234,7 +280,7 @@ def _finish(docx: Path, *, title: str, author: str, subject: str) -> None:
         elif name == "word/document.xml":
             xml = align_broken_equations(data.decode("utf-8"))
             xml = fill_table_of_contents(group_scripted_brackets(xml))
-            data = xml.encode("utf-8")
+            data = latin_marks_in_latin_font(xml).encode("utf-8")
         elif name == "word/settings.xml":
             data = _update_fields_on_open(data)
         elif name == "docProps/core.xml":
