@@ -497,7 +497,13 @@ def _group_title(name: str, links: dict, lang: str) -> str:
     return _("group {links}", links="–".join(ids["links"]))
 
 
-def _kin(poly, lang: str, unit: str, rate_name: str, links: dict | None = None) -> dict:
+def _link_order(link: str):
+    """Links by their number (ω2, ω3, ω4 …, not the order the groups were solved in)."""
+    return (0, int(link), "") if link.isdigit() else (1, 0, link)
+
+
+def _kin(poly, lang: str, unit: str, rate_name: str, links: dict | None = None,
+         still: frozenset = frozenset()) -> dict:
     """The polygon's vector equations group by group: per group its equations and ONE table,
     a row per vector (大小 and 方向 as the construction knows them: "?" unknown, "√" found
     before, else the value drawn; then the polygon's segment, its length and the value read);
@@ -531,7 +537,8 @@ def _kin(poly, lang: str, unit: str, rate_name: str, links: dict | None = None) 
             g["rows"].append([f"${sym(t.symbol)}$", mag, dirs, seg, length, value])
     for g in groups:
         del g["seen"]
-    rates = [[f"${rate_name}_{{{link}}}$", _numg(v)] for link, v in poly.rates.items()]
+    rates = [[f"${rate_name}_{{{link}}}$", _numg(poly.rates[link])]
+             for link in sorted(poly.rates, key=_link_order) if link not in still]
     coriolis = any(t.kind == "coriolis" for eq in poly.equations for t in eq.left + eq.right)
     return {"mu": _scale(poly.scale), "groups": groups, "rates": rates, "coriolis": coriolis}
 
@@ -720,12 +727,16 @@ def graphical_context(results: dict, figures: dict, lang: str) -> list[dict]:
             for fc in forces:
                 fc["fig"] = figures.get(f"{key}_f{fc['n']}", "")
             crank = next((fc for fc in forces if fc["crank"]), None)
+            # a link in translation (a ram, a slider): its ω and α are zero by construction,
+            # nothing measured — left out of the lists of rates
+            still = frozenset(k for k, w in pos.velocity.rates.items()
+                              if w == 0 and pos.acceleration.rates.get(k, 0.0) == 0)
             positions.append({
                 "label": str(pos.label).replace("'", "′"),
                 "angle": f(np.degrees(pos.crank_angle), 1),
                 "mu_l": _scale(pos.length_scale),
-                "vel": _kin(pos.velocity, lang, "m/s", r"\omega", links),
-                "acc": _kin(pos.acceleration, lang, "m/s²", r"\alpha", links),
+                "vel": _kin(pos.velocity, lang, "m/s", r"\omega", links, still),
+                "acc": _kin(pos.acceleration, lang, "m/s²", r"\alpha", links, still),
                 "fig": figures.get(f"{key}_kin", ""),
                 "forces": forces, "crank": crank,
                 "mb": None if pos.balancing_torque is None else _numg(pos.balancing_torque),
