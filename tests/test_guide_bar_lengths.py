@@ -342,3 +342,24 @@ def test_impossible_rim_bound_is_where_H_equals_D_over_2():
     assert rim.height == pytest.approx(D / 2, rel=1e-12)
     # and by hand: H = √(4 g J k/(π D³ γ)) = D/2  ⇔  D⁵ = 16 g J k/(π γ)
     assert D == pytest.approx((16 * g * J * k / (math.pi * gamma)) ** 0.2, rel=1e-14)
+
+
+@pytest.mark.parametrize("name", ["shaper", "slotter", "shaper_lengths"])
+def test_link_table_writes_theta_and_K_with_the_texts_digits(example_results, name):
+    """Review 34: the link table printed θ = ψ to 0.001° or 0.0001° (``16.364``,
+    ``29.8012``) and K to 0.0001 (``1.3968``) beside the text's 16.36°, 29.80° and 1.397:
+    one value, written once by the rule (render/fmt.py: angles to 0.01°, K to 0.001)."""
+    import re
+
+    from tests.test_report_prose import _markdown
+
+    md, _ = _markdown(example_results, name, "en")
+    text_theta = re.search(r"\$\$ \\theta = [^$]*= (\d+\.\d+)° \$\$", md).group(1)
+    row = re.search(r"^\| \$\\theta = \\psi\$ \|[^|]*\| ([^|]*) \|", md, re.M)
+    assert row.group(1).strip() == text_theta
+    table = md[row.start():].split("\n\n")[0]          # the link table, from its θ row on
+    k_cell = re.search(r"^\| \$K\$ \|[^|]*\| ([^|]*) \|", table, re.M)
+    if k_cell:                                  # the lengths form lists K among the links
+        text_k = re.search(r"\$\$ K = \\frac[^$]*= (\d+\.\d+) \$\$", md).group(1)
+        assert k_cell.group(1).strip() == text_k
+        assert len(text_k.partition(".")[2]) == 3

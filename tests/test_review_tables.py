@@ -68,3 +68,22 @@ def test_the_layers_named_in_the_reports_language(lang):
     if lang == "zh":
         for line_type in ("粗实线（OUTLINE）", "细点画线（CENTER）", "细实线（CONSTRUCTION）"):
             assert line_type in md
+
+
+@pytest.mark.parametrize("lang", ["zh", "en"])
+def test_the_drawing_list_names_drawings_not_files(lang):
+    """Review 34: the 说明书's table of drawings listed file names
+    (``sheets/kinematic_A3.pdf``); a design report names a drawing by its title, size and
+    scale (机构运动简图, A3, 1:5), the files are the hand-in's."""
+    from mechdesign.render.report import _sheet_row, render_markdown, template_dir
+    from mechdesign.render.summary import Citations
+
+    class Sheet:
+        name, title, size, scale, preview = "kinematic", "机构运动简图", "A3", "1:5", "figures/k.png"
+        pdf, dxf = "sheets/kinematic_A3.pdf", "sheets/kinematic_A3.dxf"
+
+    md = render_markdown("sheets_section.md.j2", {"sheets": [_sheet_row(Sheet, lang)],
+                                                  "cite": Citations(lang)}, template_dir(None), lang)
+    rows = [line for line in md.splitlines() if line.startswith("|")]
+    assert rows and "| 机构运动简图 | A3 | 1:5 |" in rows
+    assert not re.search(r"\.pdf|\.dxf|sheets/", "\n".join(rows))

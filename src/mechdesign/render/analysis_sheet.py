@@ -273,7 +273,10 @@ def _items(pg: Polygon, symbols: list | None = None) -> list[str]:
         return vector_text(symbol) if symbol else v.name
 
     ref = max([abs(v.value) for v in pg.vectors], default=0.0)
-    out = [f"{name(v)} = {_value(abs(v.value), ref)} {unit}" for v in pg.vectors]
+    # a relative vector that is zero by construction (two points of a link in translation:
+    # v_S6F, a_S6F^n of the ram) is no result: not listed
+    out = [f"{name(v)} = {_value(abs(v.value), ref)} {unit}" for v in pg.vectors
+           if not (v.value == 0 and v.role in ("relative", "normal", "tangential"))]
     ref = max([abs(m) for m in pg.moments.values()], default=0.0)
     out += [f"{force_symbol(key)} = {_value(value, ref)} N·m" for key, value in pg.moments.items()]
     return out

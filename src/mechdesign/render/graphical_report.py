@@ -497,7 +497,13 @@ def _group_title(name: str, links: dict, lang: str) -> str:
     return _("group {links}", links="–".join(ids["links"]))
 
 
-def _kin(poly, lang: str, unit: str, rate_name: str, links: dict | None = None) -> dict:
+def _link_order(link: str):
+    """Links by their number (ω2, ω3, ω4 …, not the order the groups were solved in)."""
+    return (0, int(link), "") if link.isdigit() else (1, 0, link)
+
+
+def _kin(poly, lang: str, unit: str, rate_name: str, links: dict | None = None,
+         still: frozenset = frozenset()) -> dict:
     """The polygon's vector equations group by group: per group its equations and ONE table,
     a row per vector (大小 and 方向 as the construction knows them: "?" unknown, "√" found
     before, else the value drawn; then the polygon's segment, its length and the value read);
@@ -531,27 +537,72 @@ def _kin(poly, lang: str, unit: str, rate_name: str, links: dict | None = None) 
             g["rows"].append([f"${sym(t.symbol)}$", mag, dirs, seg, length, value])
     for g in groups:
         del g["seen"]
-    rates = [[f"${rate_name}_{{{link}}}$", _numg(v)] for link, v in poly.rates.items()]
+    rates = [[f"${rate_name}_{{{link}}}$", _numg(poly.rates[link])]
+             for link in sorted(poly.rates, key=_link_order) if link not in still]
     coriolis = any(t.kind == "coriolis" for eq in poly.equations for t in eq.left + eq.right)
     return {"mu": _scale(poly.scale), "groups": groups, "rates": rates, "coriolis": coriolis}
 
 
-def _moment_tex(m) -> tuple[str, float, float]:
+def _digits(text: str) -> int:
+    return len(text.partition(".")[2])
+
+
+def _factor(x: float, extra: int = 0) -> str:
+    """A factor of a displayed chain: :func:`_num`'s digits, with ``extra`` more decimals
+    where the chain needs them to give its printed result (trailing zeros beyond
+    :func:`_num`'s decimals dropped: a weight of 156.96 N, a reaction of 1662.5 N)."""
+    text = _num(x)
+    if not extra or "times" in text:
+        return text
+    base = _digits(text)
+    head, _dot, dec = f(x, base + extra).partition(".")
+    dec = dec.rstrip("0").ljust(base, "0")
+    return head + ("." + dec if dec else "")
+
+
+def _gives(value: float, printed: str) -> bool:
+    """``value`` (a chain evaluated from its printed factors) rounds to ``printed``, to the
+    last digit printed (a value with a power of ten is not re-evaluated)."""
+    if "times" in printed:
+        return True
+    return abs(value - float(printed)) <= 0.5 * 10.0 ** -_digits(printed) * (1 + 1e-9)
+
+
+def _moment_tex(m, gives=None) -> tuple[str, float, float, float]:
     """The known forces' moments "F × h" (h in mm on the drawing) as one sum, their value
-    [N·mm of the drawing] and the couples' sum [N·m]."""
-    terms = []
-    for t in m.terms:
-        if t.arm:
-            terms.append(f"{'+' if t.sign > 0 else '-'} {_num(t.force)} \\times {_mm(t.arm)}")
+    [N·mm of the drawing], the couples' sum [N·m] and the sum of the products as printed.
+    The forces are written with the digits that make ``gives(printed sum)`` true — by
+    default, the printed products give the sum as the equation prints it, to its last digit
+    (the rule of every displayed chain: its printed factors reproduce its printed result)."""
+    arms = [t for t in m.terms if t.arm]
+    total = sum(t.force * t.arm * t.sign for t in arms)
+    couples = sum(t.value for t in m.terms if not t.arm)
+    gives = gives or (lambda s: _gives(s, _num(total)))
+    for extra in range(6):
+        printed = [_factor(t.force, extra) for t in arms]
+        if any("times" in p for p in printed):
+            psum = total
+            break
+        psum = sum(float(p) * t.arm * t.sign for p, t in zip(printed, arms))
+        if gives(psum):
+            break
+    terms = [f"{'+' if t.sign > 0 else '-'} {p} \\times {_mm(t.arm)}" for p, t in zip(printed, arms)]
     known = " ".join(terms)
     known = known[2:] if known.startswith("+ ") else ("-" + known[2:] if known else "0")
-    total = sum(t.force * t.arm * t.sign for t in m.terms if t.arm)
-    couples = sum(t.value for t in m.terms if not t.arm)
-    return known, total, couples
+    return known, total, couples, psum
 
 
-def _couple(c: float) -> str:
-    return f" {'+' if c >= 0 else '-'} {_num(abs(c))}" if c else ""
+def _couple(c: float, extra: int = 0) -> str:
+    return f" {'+' if c >= 0 else '-'} {_factor(abs(c), extra)}" if c else ""
+
+
+def _couple_for(c: float, chain) -> str:
+    """The couple's term with the digits that make ``chain(printed couple)`` true."""
+    for extra in range(6):
+        text = _couple(c, extra)
+        if not c or chain(float(text.replace(" ", "").replace("+", "")) if "times" not in text else c):
+            return text
+    return text
 
 
 def _signed_pb(fg) -> float:
@@ -567,10 +618,9 @@ def _forces(pos, lang: str) -> list[dict]:
     out = []
     mu_l = pos.length_scale
     for n, fg in enumerate(pos.forces):
-        moments = []
+        moments, couple = [], None
         for m in fg.moments:
             u = sym(m.unknown)
-            lhs, total, couples = _moment_tex(m)
             if m.unknown == "Pb":
                 # a definition evaluated (no equation solved): one chain, no "=>"; the crank's
                 # length is known (m.arm x mu_l in m), not measured
@@ -578,9 +628,16 @@ def _forces(pos, lang: str) -> list[dict]:
                                 f"{{{exact(m.arm * mu_l, decimals=5)}}} = {_num(m.result)}" r"\ \mathrm{N}", None, None))
                 continue
             where = f"\\Sigma M_{{{m.point}}}" + ("" if m.unknown == "Mb" else f"({m.link})")
+            res = _num(m.result)
+            couples = sum(t.value for t in m.terms if not t.arm)
+            if not m.arm:
+                # a moment unknown (M_b, a slider's couple): -(products x mu_l + couples)
+                lhs, total, couples, psum = _moment_tex(
+                    m, lambda s: _gives(-(s * mu_l + couples), res))
+                cpl = _couple_for(couples, lambda c: _gives(-(psum * mu_l + c), res))
             if m.unknown == "Mb":
-                moments.append((f"{where} = M_b + ({lhs}) \\times {_scale(mu_l)}{_couple(couples)} = 0",
-                                f"M_b = {_num(m.result)}" r"\ \text{N·m}", None))
+                moments.append((f"{where} = M_b + ({lhs}) \\times {_scale(mu_l)}{cpl} = 0",
+                                f"M_b = {res}" r"\ \text{N·m}", None))
             elif not any(t.arm for t in m.terms) and not couples and m.result == 0:
                 # no known force has a moment about the point: no equation of zeros (issue 19)
                 _ = tr(lang)
@@ -590,14 +647,21 @@ def _forces(pos, lang: str) -> list[dict]:
                          link=m.link, point=point, result=result)
                 moments.append((None, f"{u} = 0", note))
             elif m.arm:
-                cpl = f"{_couple(couples)} / {_scale(mu_l)}" if couples else ""
-                rest = f"{_num(total)}" + (f"{_couple(couples)} / {_scale(mu_l)}" if couples else "")
+                # the printed sum, and the couple (N·m, divided by mu_l to N·mm of the drawing)
+                # with the digits that give the printed unknown
+                lhs, total, _c, _psum = _moment_tex(m)
+                num = _num(total)
+                value = float(num) if "times" not in num else total
+                cpl = (f"{_couple_for(couples, lambda c: _gives(-(value + c / mu_l) / m.arm, res))}"
+                       f" / {_scale(mu_l)}") if couples else ""
+                if couples and couple is None:
+                    couple = sym(next(t.name for t in m.terms if not t.arm and t.value))
                 moments.append((f"{where} = {u} \\times {_mm(m.arm)} + ({lhs}){cpl} = 0",
-                                f"{u} = -\\frac{{{rest}}}{{{_mm(m.arm)}}} = {_num(m.result)}"
+                                f"{u} = -\\frac{{{num}{cpl}}}{{{_mm(m.arm)}}} = {res}"
                                 r"\ \mathrm{N}", None))
             else:
-                moments.append((f"{where} = {u} + ({lhs}) \\times {_scale(mu_l)}{_couple(couples)} = 0",
-                                f"{u} = {_num(m.result)}" r"\ \text{N·m}", None))
+                moments.append((f"{where} = {u} + ({lhs}) \\times {_scale(mu_l)}{cpl} = 0",
+                                f"{u} = {res}" r"\ \text{N·m}", None))
         closing = " + ".join(r"\vec " + sym(v.symbol) for v in fg.vectors
                              if v.kind not in ("total", "internal")) + " = 0"
         # a given force (a weight, an inertia force, the resistance) is listed with its given
@@ -610,7 +674,7 @@ def _forces(pos, lang: str) -> list[dict]:
                  for link, lds in fg.loads.items() for ld in lds if abs(ld.value) > 0]
         out.append({"name": "–".join(fg.links), "links": ", ".join(fg.links), "crank": fg.balancing_torque
                     is not None, "mu": _scale(fg.scale), "moments": moments, "rows": rows,
-                    "loads": loads, "sum": closing, "n": n,
+                    "loads": loads, "sum": closing, "n": n, "couple": couple,
                     "mb": None if fg.balancing_torque is None else _numg(fg.balancing_torque),
                     # P_b = M_b/l, signed as M_b (counter-clockwise positive) in the equation and
                     # the text alike; its magnitude is the length drawn in the polygon
@@ -650,18 +714,29 @@ def graphical_context(results: dict, figures: dict, lang: str) -> list[dict]:
                 if ids:
                     links[g.name] = {"links": ids, "crank": n == 0}
         positions = []
+        couple_said = False
         for pos in doc.positions:
             key = f"{prefix}_graph_{_safe(pos.label)}"
             forces = _forces(pos, lang)
             for fc in forces:
+                # the couple term "M_I/mu_l" of a force equation is explained once, where it
+                # first appears
+                if couple_said:
+                    fc["couple"] = None
+                couple_said = couple_said or bool(fc["couple"])
+            for fc in forces:
                 fc["fig"] = figures.get(f"{key}_f{fc['n']}", "")
             crank = next((fc for fc in forces if fc["crank"]), None)
+            # a link in translation (a ram, a slider): its ω and α are zero by construction,
+            # nothing measured — left out of the lists of rates
+            still = frozenset(k for k, w in pos.velocity.rates.items()
+                              if w == 0 and pos.acceleration.rates.get(k, 0.0) == 0)
             positions.append({
                 "label": str(pos.label).replace("'", "′"),
                 "angle": f(np.degrees(pos.crank_angle), 1),
                 "mu_l": _scale(pos.length_scale),
-                "vel": _kin(pos.velocity, lang, "m/s", r"\omega", links),
-                "acc": _kin(pos.acceleration, lang, "m/s²", r"\alpha", links),
+                "vel": _kin(pos.velocity, lang, "m/s", r"\omega", links, still),
+                "acc": _kin(pos.acceleration, lang, "m/s²", r"\alpha", links, still),
                 "fig": figures.get(f"{key}_kin", ""),
                 "forces": forces, "crank": crank,
                 "mb": None if pos.balancing_torque is None else _numg(pos.balancing_torque),

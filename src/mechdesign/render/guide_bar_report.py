@@ -80,8 +80,9 @@ def guide_bar_context(syn, p, rod: str = "BF", ram_zh: str | None = None,
         return f"{x * mm:.10g}" if exact else f(x * mm, 2)
 
     rows = [
-        ["$\\theta = \\psi$", _both(N_("extreme angle = swing")), f(theta, 3 if not given else 4), "°"],
-        *([["$K$", _both(N_("time ratio")), f(K, 4), "—"],
+        # the text's digits (render/fmt.py's rule): angles to 0.01°, K to 0.001
+        ["$\\theta = \\psi$", _both(N_("extreme angle = swing")), f(theta, 2), "°"],
+        *([["$K$", _both(N_("time ratio")), time_ratio(K), "—"],
            ["$H$", _both(N_("stroke")), f(H, 2), "mm"]] if given else []),
         ["$L_{O_2A}$", _both(N_("crank")), length(d.crank, given), "mm"],
         ["$L_{O_3B}$", _both(N_("guide bar")), length(d.guide_bar, given), "mm"],

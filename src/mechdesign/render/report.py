@@ -251,7 +251,7 @@ def write_report(out_dir: Path, *, machine: str, lang: str, formats: tuple[str, 
 
 
 def _sheet_row(sh, lang: str) -> dict:
-    """Strings the templates show for one sheet."""
-    files = ", ".join(f"`{x}`" for x in (sh.pdf, sh.dxf) if x) or "—"
+    """Strings the templates show for one sheet (a report names a drawing by its title,
+    size and scale; the file names are the hand-in's, not the report's)."""
     return {"title": sh.title, "size": sh.size, "scale": sh.scale, "preview": sh.preview,
-            "files": files, "label": f"fig:sheet-{sh.name}"}
+            "label": f"fig:sheet-{sh.name}"}

@@ -1,0 +1,120 @@
+"""A displayed chain's printed numbers give its printed result (issue 19, review 34).
+
+A teacher re-evaluates a displayed equation from the numbers it prints. The graphical
+method's moment equations printed rounded factors beside the unrounded sum (shaper
+"157 × 1.0 + 12.0 × 33.5 + 1662 × 112.5" with 187590, where the printed factors give
+187534: F_R54 = 1662.5); the drive's speed deviation printed the deviation of the unrounded
+speeds ("(80.29 − 80.00)/80.00 = 0.37 %", the printed speeds give 0.36 %). The rule: the
+printed factors reproduce the printed result to the result's last digit.
+
+This scans every example report (both languages) for the shapes the report displays:
+
+* a moment equation ``ΣM = F × h + (a × b + c × d …) ± M/μ = 0 ⇒ F = −(r ± M/μ)/h = x``:
+  the products' sum gives ``r``, and ``−(r ± M/μ)/h`` gives ``x``; the crank's
+  ``ΣM = M_b + (a × b) × μ ± M = 0 ⇒ M_b = x`` gives ``x``;
+* a relative deviation ``\\frac{a - b}{b} = p\\%`` (and ``(a − b)/b = p %``).
+"""
+from __future__ import annotations
+
+import re
+
+import pytest
+
+from tests.test_report_prose import EXAMPLES, _markdown
+
+_N = r"-?\d+(?:\.\d+)?"
+_COUPLE = rf"(?: ([+-]) ({_N}) / ({_N}))?"
+# F × h + (products) ± M/μ = 0 ⇒ F = −(r ± M/μ)/h = x
+MOMENT = re.compile(
+    rf"\\times ({_N}) \+ \(([^()]*)\){_COUPLE} = 0 \\;\\Rightarrow\\; [^=]+ = "
+    rf"-\\frac\{{({_N}){_COUPLE}\}}\{{({_N})\}} = ({_N})")
+# M_b + (products) × μ ± M = 0 ⇒ M_b = x
+CRANK = re.compile(
+    rf"= M_b \+ \(([^()]*)\) \\times ({_N})(?: ([+-]) ({_N}))? = 0 \\;\\Rightarrow\\; M_b = ({_N})")
+PRODUCT = re.compile(rf"(^|[+-])\s*({_N}) \\times ({_N})")
+PERCENT = re.compile(rf"\\frac\{{({_N}) - ({_N})\}}\{{({_N})\}} = ({_N})\s*\\?%"
+                     rf"|\(({_N}) [-−] ({_N})\)\s*/\s*({_N}) = ({_N})\s*\\?%")
+
+
+def _value(text: str) -> float:
+    return float(text.replace("\u202f", "").replace("−", "-"))
+
+
+def _half_unit(text: str) -> float:
+    """Half a unit of the last digit ``text`` prints (``187590`` → 0.5, ``-22.3`` → 0.05)."""
+    _, _, decimals = text.partition(".")
+    return 0.5 * 10.0 ** -len(decimals)
+
+
+def _agrees(computed: float, printed: str) -> bool:
+    return abs(computed - _value(printed)) <= _half_unit(printed) * (1 + 1e-9) + 1e-12 * abs(computed)
+
+
+def _products(text: str) -> float:
+    total, consumed = 0.0, 0
+    for m in PRODUCT.finditer(text):
+        sign = -1.0 if m.group(1) == "-" else 1.0
+        total += sign * _value(m.group(2)) * _value(m.group(3))
+        consumed += 1
+    assert consumed == text.count("\\times"), text
+    return total
+
+
+def _couple(sign, value, scale) -> float:
+    if not sign:
+        return 0.0
+    return (-1.0 if sign == "-" else 1.0) * _value(value) / _value(scale)
+
+
+def chain_faults(md: str) -> list[str]:
+    """Every displayed chain of ``md`` whose printed numbers do not give its printed result."""
+    out = []
+    for m in MOMENT.finditer(md):
+        products, numerator = m.group(2), m.group(6)
+        if not _agrees(_products(products), numerator):
+            out.append(f"({products}) = {_products(products):.4f}, printed {numerator}")
+        x = -(_value(numerator) + _couple(*m.group(7, 8, 9))) / _value(m.group(10))
+        if not _agrees(x, m.group(11)):
+            out.append(f"-({numerator} {m.group(7) or ''} …)/{m.group(10)} = {x:.4f}, printed {m.group(11)}")
+        assert m.group(3, 4, 5) == m.group(7, 8, 9), m.group(0)     # the same couple twice
+    for m in CRANK.finditer(md):
+        x = -(_products(m.group(1)) * _value(m.group(2)) + _couple(m.group(3), m.group(4), "1"))
+        if not _agrees(x, m.group(5)):
+            out.append(f"M_b = -({m.group(1)}) × {m.group(2)} = {x:.4f}, printed {m.group(5)}")
+    for m in PERCENT.finditer(md):
+        a, b, c, p = (g for g in m.groups() if g is not None)
+        x = 100 * (_value(a) - _value(b)) / _value(c)
+        if not _agrees(x, p):
+            out.append(f"({a} - {b})/{c} = {x:.4f} %, printed {p} %")
+    return out
+
+
+def test_the_scan_finds_the_reviewed_faults():
+    """The lines the review recomputed (old reports), and the same lines written right."""
+    shaper = (r"$$ \Sigma M_{O3}(4) = F_{R34} \times 74.0 + (157 \times 1.0 + 12.0 \times 33.5 + "
+              r"1662 \times 112.5) + 1.29 / 0.01 = 0 \;\Rightarrow\; F_{R34} = -\frac{187590 + "
+              r"1.29 / 0.01}{74.0} = -2537\ \mathrm{N} $$")
+    die = (r"$$ \Sigma M_{D}(5) = F_{R35}^{t} \times 70.0 + (245 \times 8.0 - 8.75 \times 35.0) - "
+           r"0.459 / 0.005 = 0 \;\Rightarrow\; F_{R35}^{t} = -\frac{1656 - 0.459 / 0.005}{70.0} = "
+           r"-22.3\ \mathrm{N} $$")
+    percent = r"$$ \Delta n = \frac{80.29 - 80.00}{80.00} = 0.37\% $$"
+    assert len(chain_faults(shaper)) == 1 and "187534" in chain_faults(shaper)[0]
+    assert len(chain_faults(die)) == 1 and "1653.75" in chain_faults(die)[0]
+    assert len(chain_faults(percent)) == 1
+    assert chain_faults("(50.23 − 50.00)/50.00 = 0.47 %")
+    assert not chain_faults(shaper.replace("157 ", "156.96 ").replace("1662 ", "1662.5 "))
+    assert not chain_faults(die.replace("245 ", "245.25 "))
+    assert not chain_faults(percent.replace("0.37", "0.36"))
+    # a wrong quotient is found too, and the crank's M_b line
+    assert chain_faults(shaper.replace("156.96", "157").replace("1662 ", "1662.5 ")
+                        .replace("-2537", "-2540"))
+    assert chain_faults(r"= M_b + (1225 \times 10.5) \times 0.005 = 0 \;\Rightarrow\; M_b = -64.1")
+    assert not chain_faults(r"= M_b + (1225 \times 10.5) \times 0.005 = 0 \;\Rightarrow\; M_b = -64.3")
+
+
+@pytest.mark.parametrize("lang", ["zh", "en"])
+@pytest.mark.parametrize("name", EXAMPLES)
+def test_displayed_chains_give_their_printed_results(example_results, name, lang):
+    md, _ = _markdown(example_results, name, lang)
+    faults = chain_faults(md)
+    assert not faults, "\n".join(faults)
