@@ -343,6 +343,71 @@ def tables_interrupted(pdf) -> list[tuple[int, str]]:
     return bad
 
 
+def _sized_rows(page) -> list[tuple[float, float, str]]:
+    """(top, size, text) of every text row inside the text block, as page_rows makes them; a
+    row's size is the largest font size of its spans (table text 9 pt, captions 10 pt)."""
+    lines = []
+    for block in page.get_text("dict")["blocks"]:
+        for line in block.get("lines", []):
+            spans = [sp for sp in line["spans"] if sp["text"].strip()]
+            if spans and TOP - 6 <= line["bbox"][1] <= BOTTOM:
+                lines.append((line["bbox"][1], line["bbox"][0], max(sp["size"] for sp in spans),
+                              "".join(sp["text"] for sp in line["spans"]).strip()))
+    lines.sort()
+    rows: list[list] = []
+    for y0, x0, size, text in lines:
+        if rows and y0 - rows[-1][0] < 3.0:
+            rows[-1][1] = max(rows[-1][1], size)
+            rows[-1][2].append((x0, text))
+        else:
+            rows.append([y0, size, [(x0, text)]])
+    return [(r[0], r[1], " ".join(t for _, t in sorted(r[2]))) for r in rows]
+
+
+def _table_rows_after(rows, k: int) -> int:
+    """The text rows of a table's body after rows[k] (its caption or its continued label): past
+    the caption's further lines and the header row, up to the first row not in table text."""
+    k += 1
+    while k < len(rows) and 9.5 < rows[k][1] <= 10.5:
+        k += 1
+    n = 0
+    for _, size, text in rows[k + 1:]:
+        if size > 9.5 or _TABLE_CAPTION.match(text):
+            break
+        n += 1
+    return n
+
+
+def thin_table_parts(pdf, keep: int = 3) -> list[tuple[int, str]]:
+    """(page, what) of every part of a table split across pages that holds fewer than ``keep``
+    rows (issue 19: at least three rows on each side of the break; render/pdf.py's KEEP_ROWS
+    groups). Counted in text rows, so a row whose cell wraps counts more than once."""
+    import pymupdf
+
+    bad = []
+    start = {}                         # table number -> (page, rows) of its last part
+    with pymupdf.open(pdf) as doc:
+        for number, page in enumerate(doc, 1):
+            if _is_sheet(page):
+                continue
+            rows = _sized_rows(page)
+            for k, (_, size, text) in enumerate(rows):
+                cont = _CONTINUED.match(text)
+                caption = _TABLE_CAPTION.match(text) if size > 9.5 else None
+                if cont:
+                    n = int(cont.group(1) or cont.group(2))
+                    after = _table_rows_after(rows, k)
+                    before = start.get(n)
+                    if before is not None and before[0] == number - 1 and before[1] < keep:
+                        bad.append((number - 1, f"table {n}: {before[1]} rows before the break"))
+                    if after < keep:
+                        bad.append((number, f"table {n}: {after} rows after the break"))
+                    start[n] = (number, after)
+                elif caption:
+                    start[int(caption.group(1) or caption.group(2))] = (number, _table_rows_after(rows, k))
+    return bad
+
+
 def colon_at_page_foot(pdf) -> list[tuple[int, str]]:
     """(page, row) of every page whose last text row ends in "：" or ":" (a lead-in
     sentence parted from the list or table it introduces). A program listing's own rows
@@ -510,18 +575,26 @@ def wide_word_gaps(pdf, factor: float = 2.0) -> list[tuple[int, float, str]]:
     bad = []
     with pymupdf.open(pdf) as doc:
         for number, page in enumerate(doc, 1):
-            lines = {}
-            for w in page.get_text("words"):
-                lines.setdefault((w[5], w[6]), []).append(w)
-            for words in lines.values():
+            # the words of a printed line (pymupdf parts a line at an inline formula): their
+            # vertical middles within 3 pt
+            lines: list[list] = []
+            every = page.get_text("words")
+            for w in sorted(every, key=lambda w: (w[1] + w[3]) / 2):
+                middle = (w[1] + w[3]) / 2
+                if lines and middle - lines[-1][0] < 3.0:
+                    lines[-1][1].append(w)
+                else:
+                    lines.append([middle, [w]])
+            for middle, words in lines:
                 words.sort(key=lambda w: w[0])
-                heights = sorted(w[3] - w[1] for w in words)
                 if (len(words) < 3 or words[-1][2] < RIGHT - 1.5
-                        or heights[len(heights) // 2] < 12            # 9 pt table text, captions
+                        or max(w[3] - w[1] for w in words) < 12       # 9 pt table text, captions
                         or re.fullmatch(r"\(\d+\)", words[-1][4])      # an equation's number
                         or sum(w[4] == "." for w in words) > 3):      # contents' dot leaders
                     continue
-                widest = max(b[0] - a[2] for a, b in zip(words, words[1:]))
+                # a gap holding a glyph of a taller sign (a root's radical over the line) is none
+                widest = max([b[0] - a[2] for a, b in zip(words, words[1:]) if not any(
+                    w[1] < middle and w[3] > middle - 6 and w[0] < b[0] and w[2] > a[2] for w in every)] + [0])
                 if widest > factor * space:
                     bad.append((number, round(widest, 1), " ".join(w[4] for w in words)[:60]))
     return bad
@@ -764,6 +837,8 @@ def test_every_report_stays_in_the_text_block(brief, lang, tmp_path):
     parted = tables_interrupted(pdf)
     assert (parted != []) if (brief, lang) in TABLES_INTERRUPTED_OPEN else (parted == []), parted
     assert colon_at_page_foot(pdf) == []
+    # a table split across pages keeps at least three rows on each side (issue 19)
+    assert thin_table_parts(pdf) == []
     assert short_last_pages(pdf) == []
     # the last page holds more than a few lines, or the references chapter starts on it
     assert thin_last_page(pdf) == []
