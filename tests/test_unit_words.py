@@ -206,18 +206,6 @@ def test_a_list_of_relations_is_boxed_item_by_item(tmp_path):
     assert typ.count("#box(") == 5, typ
 
 
-def test_a_chain_of_relations_may_break_after_its_second_relation(tmp_path):
-    """A chain "η = 0.95 tan γ / tan(γ + φ_v) = 0.7977" is boxed in pieces cut after its second
-    and later relations (as one box it left furnace en's line before it with 15 pt word
-    spaces); never after the first ("R_BV =" | "-1978.4"), nor at an "=" inside braces."""
-    typ = _filtered(tmp_path,
-        "so $\\eta = 0.95\\tan\\gamma/\\tan(\\gamma+\\varphi_v) = 0.7977$ and "
-        "$a = \\frac{b = 1}{2} \\approx 3 = 4$ and $R_{BV} = -1978.4$ end\n")
-    assert "#box($eta = 0.95 tan gamma \\/ tan \\( gamma + phi_v \\) =$); #box($0.7977$);" in typ, typ
-    assert "#box($a = frac(b = 1, 2) approx$); #box($3 =$); #box($4$);" in typ, typ
-    assert "#box($R_(B V) = - 1978.4$);" in typ, typ
-
-
 def test_a_break_before_a_long_run_is_marked_in_chinese_paragraphs(tmp_path):
     """zh: "#run-break;" (templates/report.typ: the line before ends unjustified when the run
     went to the next line) where a line may break before an unbreakable run of at least six

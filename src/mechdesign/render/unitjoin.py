@@ -244,41 +244,6 @@ local function list_items(t)
   return items
 end
 
-local function chain_pieces(t)
-  -- a chain of relations ("\\eta = 0.95\\tan\\gamma/\\tan(\\gamma+\\varphi_v) = 0.7977"): its pieces,
-  -- cut after the second and later top-level "=" (or \\approx), so that a line may break there
-  -- and never right after the first (nil when there is no second)
-  local cuts, depth, seen, i = {}, 0, 0, 1
-  while i <= #t do
-    local c = t:sub(i, i)
-    if c == "{" or c == "(" or c == "[" then depth = depth + 1
-    elseif c == "}" or c == ")" or c == "]" then depth = depth - 1
-    elseif c == "\\" then
-      if depth == 0 and t:sub(i, i + 6) == "\\approx" and not t:sub(i + 7, i + 7):match("%a") then
-        seen = seen + 1
-        if seen >= 2 then cuts[#cuts + 1] = i + 7 end
-        i = i + 6
-      else
-        i = i + 1                                   -- an escaped character: "\\{"
-      end
-    elseif c == "=" and depth == 0 then
-      seen = seen + 1
-      if seen >= 2 then cuts[#cuts + 1] = i + 1 end
-    end
-    i = i + 1
-  end
-  if #cuts == 0 then return nil end
-  local pieces, from = {}, 1
-  for _, cut in ipairs(cuts) do
-    pieces[#pieces + 1] = t:sub(from, cut - 1)
-    from = cut
-  end
-  local last = t:sub(from):match("^%s*(.-)%s*$")
-  if last == "" then return nil end
-  pieces[#pieces + 1] = last
-  return pieces
-end
-
 local function boxed(el)
   if not FORMAT:match("typst") or el.mathtype ~= "InlineMath" or #el.text > 80 then
     return nil
@@ -286,10 +251,7 @@ local function boxed(el)
   if not has_relation(el.text) then return nil end
   -- a list of relations is boxed item by item: a line may break after each comma (one box
   -- for the whole list left the line before it with 8-11 pt word spaces, shaper en)
-  -- a chain of relations likewise after its second relation: "eta = 0.95 tan / tan(...) =" |
-  -- "0.7977" (furnace en: 15 pt word spaces before it as one box)
-  local items, sep = list_items(el.text), ","
-  if items == nil then items, sep = chain_pieces(el.text), "" end
+  local items = list_items(el.text)
   if items == nil then
     return {pandoc.RawInline("typst", "#box("), el, pandoc.RawInline("typst", ");")}
   end
@@ -299,7 +261,7 @@ local function boxed(el)
     out[#out + 1] = pandoc.Math("InlineMath", item)
     out[#out + 1] = pandoc.RawInline("typst", ");")
     if k < #items then
-      if sep ~= "" then out[#out + 1] = pandoc.Str(sep) end
+      out[#out + 1] = pandoc.Str(",")
       out[#out + 1] = pandoc.Space()
     end
   end
