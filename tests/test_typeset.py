@@ -776,14 +776,12 @@ BRIEFS = sorted(p.stem for p in (ROOT / "designs").glob("*.yaml"))
 # "$ΔW_max$ = 3499.5 J", die_cutter, furnace_drive, furnace_pusher, press, shaper, slotter zh)
 # now end short (render/unitjoin.py's "#run-break;", templates/report.typ).
 LETTER_SPACED_OPEN: set[tuple[str, str]] = set()
-# reports whose typst layout does not settle in typst's five passes (lockbeam zh did not since
-# the session-32 changes to its text: every figure was missing from the first pass, see
-# test_every_figure_is_in_typsts_first_layout_pass)
-# lockbeam zh and press zh: settled on typeset33's branch (its first-pass fix), unsettled
-# again after the session-33 merges (not floats33's after-split rule: without it they do not
-# settle either; the cause is not yet found). lockbeam zh's stale last pass then misses a
-# "续表" label (CONTINUED_OPEN).
-CONVERGE_OPEN: set[tuple[str, str]] = set()   # mended: the figure plan is made once (report.typ)
+# reports whose typst layout does not settle in typst's five passes. lockbeam zh and press zh
+# did not after the session-33 merges (words33's text): the figure plan, first made in the
+# third pass, was made anew in the fourth (lockbeam: the tails of a run, press: figures its
+# layout left too far), and the fifth laid it out unchecked; lockbeam zh's stale pass then
+# missed a "续表" label. The plan is now made once and stands (templates/report.typ).
+CONVERGE_OPEN: set[tuple[str, str]] = set()
 CONTINUED_OPEN: set[tuple[str, str]] = set()
 # en lines with word spaces over twice the normal (wide_word_gaps) before a run that may not
 # break (a line never breaks after or before a relation, render/unitjoin.py): die_cutter's
