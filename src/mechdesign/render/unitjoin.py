@@ -9,7 +9,8 @@ and likewise the space after a relation sign ("=", "≈", "≤", "≥") before a
 before a relation sign written alone (the symbol stays with its "="), and the
 spaces around "×" between two numbers ("1.4 × 10⁻¹⁴ mm"). For typst, which breaks an inline
 formula after its relation ("$R_{BV} = -1978.4$ N" as "R_BV =" | "−1978.4 N"), a short
-inline formula holding a relation is set in a box (``#box($…$);``), unbroken; in a Chinese
+inline formula holding a relation is set in a box (``#box($…$);``), unbroken (a list of
+relations, "$C_v = 2.000, C_a = 4.000$", item by item: a line may break after a comma); in a Chinese
 report's paragraphs ``#run-break;`` marks where a line may break before an unbreakable run of
 six characters or more (templates/report.typ ends the line there unjustified when the run
 went to the next line: justified, its Chinese characters stood apart). It works on pandoc's document
