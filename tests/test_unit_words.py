@@ -193,6 +193,19 @@ def test_the_filter_joins_numbers_units_and_relations(tmp_path):
     assert "x = 5 mm" in typ                 # a code block as written
 
 
+def test_a_list_of_relations_is_boxed_item_by_item(tmp_path):
+    """A formula listing relations ("C_v = 2.000, C_a = 4.000, C_j = ∞") is boxed item by item,
+    with a breakable space after each comma (one box for the list was the unbreakable run that
+    left the shaper en's cam-law line before it with 11 pt word spaces); a comma inside braces
+    or brackets, or an item without a relation, keeps the formula one box."""
+    typ = _filtered(tmp_path,
+        "coefficients $C_v = 2.000, C_a = 4.000, C_j = \\infty$ and $f(a, b) = 1$ and "
+        "$x = 1, y$ end\n")
+    assert "#box($C_v = 2.000$);, #box($C_a = 4.000$);, #box($C_j = oo$);" in typ
+    assert "#box($f \\( a \\, b \\) = 1$);" in typ and "#box($x = 1 \\, y$);" in typ
+    assert typ.count("#box(") == 5, typ
+
+
 def test_a_break_before_a_long_run_is_marked_in_chinese_paragraphs(tmp_path):
     """zh: "#run-break;" (templates/report.typ: the line before ends unjustified when the run
     went to the next line) where a line may break before an unbreakable run of at least six

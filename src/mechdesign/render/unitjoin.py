@@ -9,7 +9,8 @@ and likewise the space after a relation sign ("=", "≈", "≤", "≥") before a
 before a relation sign written alone (the symbol stays with its "="), and the
 spaces around "×" between two numbers ("1.4 × 10⁻¹⁴ mm"). For typst, which breaks an inline
 formula after its relation ("$R_{BV} = -1978.4$ N" as "R_BV =" | "−1978.4 N"), a short
-inline formula holding a relation is set in a box (``#box($…$);``), unbroken; in a Chinese
+inline formula holding a relation is set in a box (``#box($…$);``), unbroken (a list of
+relations, "$C_v = 2.000, C_a = 4.000$", item by item: a line may break after a comma); in a Chinese
 report's paragraphs ``#run-break;`` marks where a line may break before an unbreakable run of
 six characters or more (templates/report.typ ends the line there unjustified when the run
 went to the next line: justified, its Chinese characters stood apart). It works on pandoc's document
@@ -215,16 +216,57 @@ end
 -- "(" or "[" after it stays text)
 local RELATION_TEX = {"=", "<", ">", "\\approx", "\\le", "\\ge", "\\ne"}
 
+local function has_relation(t)
+  for _, r in ipairs(RELATION_TEX) do
+    if t:find(r, 1, true) then return true end
+  end
+  return false
+end
+
+local function list_items(t)
+  -- a list of relations written as one formula ("C_v = 2.000, C_a = 4.000, C_j = \infty"):
+  -- its items, split at the commas outside braces and brackets, when every item holds a
+  -- relation (else nil)
+  local items, depth, from = {}, 0, 1
+  for i = 1, #t do
+    local c = t:sub(i, i)
+    if c == "{" or c == "(" or c == "[" then depth = depth + 1
+    elseif c == "}" or c == ")" or c == "]" then depth = depth - 1
+    elseif c == "," and depth == 0 and t:sub(i + 1, i + 1) == " " then
+      items[#items + 1] = t:sub(from, i - 1)
+      from = i + 2
+    end
+  end
+  if #items == 0 then return nil end
+  items[#items + 1] = t:sub(from)
+  for _, item in ipairs(items) do
+    if not has_relation(item) then return nil end
+  end
+  return items
+end
+
 local function boxed(el)
   if not FORMAT:match("typst") or el.mathtype ~= "InlineMath" or #el.text > 80 then
     return nil
   end
-  for _, r in ipairs(RELATION_TEX) do
-    if el.text:find(r, 1, true) then
-      return {pandoc.RawInline("typst", "#box("), el, pandoc.RawInline("typst", ");")}
+  if not has_relation(el.text) then return nil end
+  -- a list of relations is boxed item by item: a line may break after each comma (one box
+  -- for the whole list left the line before it with 8-11 pt word spaces, shaper en)
+  local items = list_items(el.text)
+  if items == nil then
+    return {pandoc.RawInline("typst", "#box("), el, pandoc.RawInline("typst", ");")}
+  end
+  local out = {}
+  for k, item in ipairs(items) do
+    out[#out + 1] = pandoc.RawInline("typst", "#box(")
+    out[#out + 1] = pandoc.Math("InlineMath", item)
+    out[#out + 1] = pandoc.RawInline("typst", ");")
+    if k < #items then
+      out[#out + 1] = pandoc.Str(",")
+      out[#out + 1] = pandoc.Space()
     end
   end
-  return nil
+  return out
 end
 
 -- "min" and "max" in a subscript are words, set upright as in the textbook (γ_min, s_max):
