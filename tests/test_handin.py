@@ -370,3 +370,17 @@ def test_every_verdict_cell_is_pass_or_fail(reports, name, lang):
             if cells[-1] not in allowed:
                 bad.append(line)
     assert not bad, bad
+
+
+@pytest.mark.parametrize("lang", LANGS)
+def test_flow_chart_named_as_a_teacher_names_it(reports, lang):
+    """small34: the appendix's flow chart, its stage table and their introduction spoke of
+    "the stages this run executed" (本次运行执行的阶段), as a program speaks of itself; they
+    name the analysis program's flow chart and stages."""
+    md, _ = reports("lockbeam", lang)
+    text = section(md, TITLES[lang][2])
+    caption = {"zh": "![分析程序流程图]", "en": "![Flow chart of the analysis program]"}[lang]
+    table = {"zh": ": 分析程序的计算阶段 {#tbl:program-stages}",
+             "en": ": Stages of the analysis program {#tbl:program-stages}"}[lang]
+    assert caption in text and table in text
+    assert "本次运行" not in md and "this run" not in md
