@@ -116,3 +116,29 @@ def test_no_upright_symbols_in_any_figure(example_results, monkeypatch, tmp_path
     texts = _figure_texts(r, r["brief"].machine, monkeypatch, tmp_path, lang)
     left = [(n, s) for n, ts in texts.items() for s in ts if _UPRIGHT.search(_plain(s))]
     assert not left, left
+
+
+def test_unit_dot_next_to_a_formula_has_a_glyph():
+    """A text with a formula is drawn by mathtext, whose text font has no U+22C5: the narrow
+    unit dot printed "kN¤m" beside "$F$/$M$" (and beside "$M_b$" before). There it is
+    mathtext's \\cdot; a text without formulas keeps U+22C5."""
+    import warnings
+
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    from mechdesign.render import figures as F
+    from mechdesign.render.fonts import configure_matplotlib
+
+    configure_matplotlib()
+    fig, ax = plt.subplots()
+    ax.set_ylabel(mpl_symbols("F/M (kN/(kN·m))"))
+    ax.set_xlabel("crank torque (N·m)")
+    F.narrow_unit_dots(fig)
+    assert ax.get_ylabel() == r"$F$/$M$ (kN/(kN$\cdot$m))"
+    assert ax.get_xlabel() == "crank torque (N\u22c5m)"
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")           # a missing glyph would warn
+        fig.canvas.draw()
+    plt.close(fig)

@@ -133,13 +133,19 @@ _UNIT_DOT = re.compile(r"(?<=[A-Za-z])\u00b7(?=[A-Za-z])")
 
 
 def narrow_unit_dots(fig) -> None:
-    """Set the middle dot between two letters of every text of ``fig`` as U+22C5."""
+    """Set the middle dot between two letters of every text of ``fig`` as U+22C5 (as
+    mathtext's \\cdot in a text with formulas)."""
     from matplotlib.text import Text
 
     for text in fig.findobj(Text):
         value = text.get_text()
         if "\u00b7" in value:
-            text.set_text(_UNIT_DOT.sub("\u22c5", value))
+            parts = re.split(r"((?<!\\)\$[^$]*(?<!\\)\$)", value)
+            # a text with formulas is drawn by mathtext, whose text font has no U+22C5 (it
+            # drew "¤"): there the dot is mathtext's own \cdot
+            dot = "\u22c5" if len(parts) == 1 else r"$\cdot$"
+            text.set_text("".join(p if k % 2 else _UNIT_DOT.sub(lambda _m: dot, p)
+                                  for k, p in enumerate(parts)))
 
 
 def save_png(fig, path: Path) -> None:
