@@ -65,6 +65,24 @@ def example_results() -> Callable[[str], dict[str, Any]]:
     return get
 
 
+@pytest.fixture(scope="session")
+def handin_reports(example_results, tmp_path_factory) -> Callable[[str, str], tuple[str, dict]]:
+    """``handin_reports("shaper", "zh")``: (Markdown, results document) of an example report
+    as ``mechdesign run`` writes them, with placeholder figures and no sheets
+    (tests/test_handin.py's ``render``), rendered on first use and cached for the session."""
+    cache: dict[tuple[str, str], tuple[str, dict]] = {}
+
+    def get(name: str, lang: str) -> tuple[str, dict]:
+        from test_handin import render
+
+        if (name, lang) not in cache:
+            tmp = tmp_path_factory.mktemp(f"{name}-{lang}") / "figures"
+            cache[name, lang] = render(name, lang, example_results(name), tmp)
+        return cache[name, lang]
+
+    return get
+
+
 def read_pdf_text(path: Path, first: int | None = None, last: int | None = None) -> str:
     """The text of a PDF's pages ``first``..``last`` (1-based, inclusive), in content-stream
     order, read with PyMuPDF (a test dependency from PyPI, so the tests that read a PDF's text

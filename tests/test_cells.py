@@ -16,23 +16,10 @@ from pathlib import Path
 
 import pytest
 
-from test_handin import EXAMPLES, LANGS, render
+from test_handin import EXAMPLES, LANGS
 
 ROOT = Path(__file__).resolve().parents[1]
 TEMPLATE = ROOT / "templates" / "report.typ"
-
-
-@pytest.fixture(scope="module")
-def reports(example_results, tmp_path_factory):
-    cache: dict = {}
-
-    def get(name: str, lang: str) -> str:
-        if (name, lang) not in cache:
-            tmp = tmp_path_factory.mktemp(f"{name}-{lang}") / "figures"
-            cache[name, lang] = render(name, lang, example_results(name), tmp)[0]
-        return cache[name, lang]
-
-    return get
 
 
 def prose(md: str) -> list[tuple[int, str]]:
@@ -66,8 +53,8 @@ USER_LABELS = {"φ45"}
 
 @pytest.mark.parametrize("lang", LANGS)
 @pytest.mark.parametrize("name", EXAMPLES)
-def test_symbols_with_subscripts_are_typeset(reports, name, lang):
-    md = reports(name, lang)
+def test_symbols_with_subscripts_are_typeset(handin_reports, name, lang):
+    md = handin_reports(name, lang)[0]
     raw = []
     for i, text in prose(md):
         for m in GREEK_SUB.finditer(text):
@@ -97,8 +84,8 @@ def test_polygon_segments_and_vertices_are_math():
 
 
 @pytest.mark.parametrize("lang", LANGS)
-def test_lockbeam_listing_is_english_and_never_cut_inside_a_name(reports, lang):
-    md = reports("lockbeam", lang)
+def test_lockbeam_listing_is_english_and_never_cut_inside_a_name(handin_reports, lang):
+    md = handin_reports("lockbeam", lang)[0]
     listing = md.split("```python\n", 1)[1].rsplit("```", 1)[0]
     assert not re.search(r"[\u3000-\u9fff\uff00-\uffef]", listing)
     lines = listing.splitlines()
@@ -136,10 +123,10 @@ DOUBLED_REF = re.compile(r"(图|表|式|Figure|Fig\.|Table|Eq\.|Equation)\s*\[?@
 
 @pytest.mark.parametrize("lang", LANGS)
 @pytest.mark.parametrize("name", EXAMPLES)
-def test_cross_references_are_written_once(reports, name, lang):
+def test_cross_references_are_written_once(handin_reports, name, lang):
     """A reference's word ("图", "Table") comes from typst's supplement: the Markdown never
     writes it in front of @fig/@tbl/@eq, and never twice."""
-    md = reports(name, lang)
+    md = handin_reports(name, lang)[0]
     doubled = [(i, t.strip()[:80]) for i, t in prose(md)
                if DOUBLED_REF.search(t) or re.search(r"(图|表)\s+\1\s*\d|\b(Table|Figure) \2\b", t)]
     assert doubled == []

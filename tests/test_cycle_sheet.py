@@ -6,29 +6,18 @@ phases give them — and the timing checks; the drawing fills the frame down to 
 title block (no empty lower half) and no two texts overlap."""
 from __future__ import annotations
 
-from pathlib import Path
 
 import numpy as np
 import pytest
 
 from mechdesign.render.sheet import Arc, Circle, Fill, Line, Polyline, Text, boxes_overlap, text_box
+from one_sheet import written_sheet
 
-ROOT = Path(__file__).resolve().parents[1]
 
 
 def _written(example_results, tmp_path, name, lang):
-    import ezdxf
-
-    from mechdesign.brief.loader import load_brief
-    from mechdesign.render.sheets import _builders, write_all
-
     r = example_results(name)
-    brief = load_brief(ROOT / "designs" / f"{name}.yaml")
-    (tmp_path / "f").mkdir()
-    builders = [b for b in _builders(r, brief) if b[0] == "cycle"]
-    files = write_all(builders, brief, tmp_path, tmp_path / "f", lang, ("dxf",))
-    assert len(files) == 1
-    return r, ezdxf.readfile(tmp_path / files[0].dxf).modelspace()
+    return r, written_sheet(r, name, "cycle", tmp_path, lang)[0]
 
 
 def _sheet(r, lang):

@@ -402,6 +402,34 @@ def test_both_flywheel_placements_are_designed(shipped):
     assert a.shaft_seats == tuple(sd.d_seat for sd in d.shaft_designs)
 
 
+def test_flywheel_comparison_reuses_the_designed_drive(shipped, monkeypatch):
+    """small34: the comparison designed the whole drive a second time (motor, ratios, shaft
+    table) for the other placement, though only the sizes after the flywheel depend on it.
+    It now sizes the designed drive's stages and shafts again, without design_drive; the
+    reference is that full second design, whose gears and shaft seats it must give."""
+    import mechdesign.stages.drive as D
+    from mechdesign.machines.die_cutter import stages as S
+
+    r = dict(shipped)
+    p = r["params"]
+    other = len(p.drive.stages) if p.flywheel_shaft < len(p.drive.stages) else 1
+    full = S._drive(r, other)                             # the whole drive designed again
+
+    def refuse(*args, **kwargs):
+        raise AssertionError("the comparison designs the drive again")
+
+    monkeypatch.setattr(D, "design_drive", refuse)
+    c = S.compare_placements(r)
+    gears = [st.design for st in full.stages if st.design is not None and st.design.kind == "gear"]
+    assert len(gears) == 2 and len(c.other.gears) == 2
+    for g, d in zip(c.other.gears, gears):
+        assert (g.module, g.face_width, g.torque) == (float(d.module), float(d.face_width),
+                                                      float(d.T2))
+    assert c.other.shaft_seats == tuple(float(sd.d_seat) for sd in full.shaft_designs)
+    assert c.chosen == shipped["flywheel_placement"].chosen
+    assert c.other == shipped["flywheel_placement"].other
+
+
 def test_shafts_after_the_flywheel_table_holds_what_its_headers_say(shipped):
     """Columns: the torsion estimate A0·∛(P/n)·1.05 of the mean power (≈ 20 mm for shaft Ⅰ,
     not the enlarged seat), of the peak power, and the designed seat (≥ both)."""

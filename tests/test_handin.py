@@ -76,20 +76,6 @@ def render(name: str, lang: str, results: dict, tmp: Path) -> tuple[str, dict]:
     return md, document
 
 
-@pytest.fixture(scope="module")
-def reports(example_results, tmp_path_factory):
-    """(name, lang) → (Markdown, results document), rendered on first use."""
-    cache: dict = {}
-
-    def get(name: str, lang: str):
-        if (name, lang) not in cache:
-            tmp = tmp_path_factory.mktemp(f"{name}-{lang}") / "figures"
-            cache[name, lang] = render(name, lang, example_results(name), tmp)
-        return cache[name, lang]
-
-    return get
-
-
 def headings(md: str) -> list[str]:
     """Level-1 headings outside fenced code (a listing holds Python comments)."""
     out, fenced = [], False
@@ -156,8 +142,8 @@ def all_checks(document) -> int:
 
 @pytest.mark.parametrize("lang", LANGS)
 @pytest.mark.parametrize("name", EXAMPLES)
-def test_every_report_ends_with_summary_then_references(reports, name, lang):
-    md, _ = reports(name, lang)
+def test_every_report_ends_with_summary_then_references(handin_reports, name, lang):
+    md, _ = handin_reports(name, lang)
     heads = headings(md)
     summary, refs, appendix = TITLES[lang]
     tail = heads[-3:] if heads[-1].startswith(appendix) else heads[-2:] + [None]
@@ -170,8 +156,8 @@ def test_every_report_ends_with_summary_then_references(reports, name, lang):
 
 @pytest.mark.parametrize("lang", LANGS)
 @pytest.mark.parametrize("name", EXAMPLES)
-def test_every_failed_check_is_named_failed_in_the_summary(reports, name, lang):
-    md, document = reports(name, lang)
+def test_every_failed_check_is_named_failed_in_the_summary(handin_reports, name, lang):
+    md, document = handin_reports(name, lang)
     text = section(md, TITLES[lang][0])
     fail_word, pass_word = ("不合格", "合格") if lang == "zh" else ("FAIL", "PASS")
     rows = [r for r in text.splitlines() if r.startswith("| ") and (fail_word in r or pass_word in r)]
@@ -212,8 +198,8 @@ def test_every_failed_check_is_named_failed_in_the_summary(reports, name, lang):
 
 @pytest.mark.parametrize("lang", LANGS)
 @pytest.mark.parametrize("name", EXAMPLES)
-def test_every_citation_has_its_entry_and_every_entry_is_cited(reports, name, lang):
-    md, _ = reports(name, lang)
+def test_every_citation_has_its_entry_and_every_entry_is_cited(handin_reports, name, lang):
+    md, _ = handin_reports(name, lang)
     refs_title = TITLES[lang][1]
     body, _, rest = md.partition(f"# {refs_title} {{-}}")
     listing = rest.split("\n# ", 1)[0]
@@ -236,8 +222,8 @@ def test_every_citation_has_its_entry_and_every_entry_is_cited(reports, name, la
 
 
 @pytest.mark.parametrize("lang", LANGS)
-def test_lockbeam_appendix_lists_the_stages_that_ran(reports, example_results, lang):
-    md, _ = reports("lockbeam", lang)
+def test_lockbeam_appendix_lists_the_stages_that_ran(handin_reports, example_results, lang):
+    md, _ = handin_reports("lockbeam", lang)
     text = section(md, TITLES[lang][2])
     brief = load_brief(DESIGNS / "lockbeam.yaml")
     machine = get_machine(brief.machine)
@@ -305,10 +291,10 @@ def test_lockbeam_appendix_lists_the_stages_that_ran(reports, example_results, l
     assert len(listing.splitlines()) < 0.6 * len(lines)
 
 
-def test_summary_key_numbers_of_the_shaper(reports):
+def test_summary_key_numbers_of_the_shaper(handin_reports):
     """The shaper's key numbers: θ = 180°(K − 1)/(K + 1) by hand from the brief's K = 1.2,
     the stroke as given (320 mm), each by its quantity's rule (0.01°, 0.01 mm; issue 19)."""
-    md, _ = reports("shaper", "zh")
+    md, _ = handin_reports("shaper", "zh")
     text = section(md, "设计小结")
     theta = 180 * (1.2 - 1) / (1.2 + 1)
     assert f"| 极位夹角 $\\theta$ | {theta:.2f} | ° |" in text
@@ -352,11 +338,11 @@ def test_a_rocking_outputs_stroke_is_summarised_as_its_swing_in_degrees():
 
 @pytest.mark.parametrize("lang", LANGS)
 @pytest.mark.parametrize("name", EXAMPLES)
-def test_every_verdict_cell_is_pass_or_fail(reports, name, lang):
+def test_every_verdict_cell_is_pass_or_fail(handin_reports, name, lang):
     """Issue 19 point 4: one verdict vocabulary. A table with a verdict column holds only
     合格/不合格 (PASS/FAIL) in it; an item without a verdict belongs in the text, not in the
     table (cam 7-3's plain offset curve was "0.110 mm | ≤ 0.001 mm | 已按包络修正")."""
-    md, _ = reports(name, lang)
+    md, _ = handin_reports(name, lang)
     allowed = {"合格", "不合格"} if lang == "zh" else {"PASS", "FAIL"}
     header, bad = None, []
     for line in md.splitlines():
@@ -370,3 +356,17 @@ def test_every_verdict_cell_is_pass_or_fail(reports, name, lang):
             if cells[-1] not in allowed:
                 bad.append(line)
     assert not bad, bad
+
+
+@pytest.mark.parametrize("lang", LANGS)
+def test_flow_chart_named_as_a_teacher_names_it(handin_reports, lang):
+    """small34: the appendix's flow chart, its stage table and their introduction spoke of
+    "the stages this run executed" (本次运行执行的阶段), as a program speaks of itself; they
+    name the analysis program's flow chart and stages."""
+    md, _ = handin_reports("lockbeam", lang)
+    text = section(md, TITLES[lang][2])
+    caption = {"zh": "![分析程序流程图]", "en": "![Flow chart of the analysis program]"}[lang]
+    table = {"zh": ": 分析程序的计算阶段 {#tbl:program-stages}",
+             "en": ": Stages of the analysis program {#tbl:program-stages}"}[lang]
+    assert caption in text and table in text
+    assert "本次运行" not in md and "this run" not in md

@@ -178,15 +178,47 @@ def test_bending_wheel_turns_180_by_simulation(run):
     far = prog.starts[2] + 0.5 * prog.spans[2]              # middle of the far dwell
     phi = p.bend_cam_start + far
     psi = float(prog.evaluate(np.array([far])).s[0])
-    ds = b.design
-    beta = _output_by_root_finding(ds.frame, ds.input_rocker, ds.coupler, ds.output_rocker,
-                                   ds.alpha1 + psi, ds.beta1 + ds.dbeta)
-    assert b.ratio * abs(beta - ds.beta1) == pytest.approx(np.pi, abs=1e-9)
-    assert psi == pytest.approx(np.radians(24.398), abs=1e-12)
+    # the cycle drives the four-bar as drawn (rounded lengths, same input start)
+    ds, rc = b.design, b.rounded
+    beta1 = _output_by_root_finding(ds.frame, rc.input_rocker, rc.coupler, ds.output_rocker,
+                                    ds.alpha1, ds.beta1)
+    beta = beta1
+    for al in ds.alpha1 + psi * np.linspace(0.0, 1.0, 201)[1:]:
+        beta = _output_by_root_finding(ds.frame, rc.input_rocker, rc.coupler, ds.output_rocker,
+                                       al, beta)
+    assert b.ratio * abs(beta - beta1) == pytest.approx(np.pi, abs=1e-9)
     assert np.isfinite(phi)
     assert b.gamma_min >= np.radians(40.0)
     # wheel speed against central differences of the wheel angle (smooth parts)
     assert b.fd_velocity < 1e-3 and b.fd_acceleration < 1e-3
+
+
+def test_bending_cam_swing_is_what_the_drawn_lengths_need(run):
+    """small34: the four-bar is synthesised for the brief's swing 24.398° (the seed's
+    14.904 mm / 35 mm), but it is built with its lengths rounded (a = 80, b = 161 mm), which
+    bend only 179.82° with that swing. The bending cam is designed for the swing the drawn
+    lengths need for exactly 180°, found here independently: the wheel swing by root-finding
+    on the loop equation marched along the input swing, and that swing solved by Brent's
+    method for a bend of 180°."""
+    b = run["bending"]
+    ds, rc = b.design, b.rounded
+    target = np.pi / b.ratio                                    # 50° of the large wheel
+
+    def miss(x):
+        return _swing_by_marching(ds.frame, rc.input_rocker, rc.coupler, ds.output_rocker,
+                                  ds.alpha1, x, ds.beta1, n=200) - target
+
+    needed = brentq(miss, np.radians(20.0), np.radians(30.0), xtol=1e-13)
+    stroke = run["bending_cam"].params.programme.stroke
+    assert stroke == pytest.approx(needed, abs=1e-9)
+    assert np.degrees(stroke) == pytest.approx(24.42, abs=0.005)
+    # the synthesis keeps the brief's swing; with it the drawn lengths bend short of 180°
+    assert abs(ds.dalpha) == pytest.approx(np.radians(24.398), abs=1e-12)
+    assert b.ratio * _swing_by_marching(ds.frame, rc.input_rocker, rc.coupler, ds.output_rocker,
+                                        ds.alpha1, ds.dalpha, ds.beta1) < np.pi - np.radians(0.1)
+    # the cam's table and both of its motion segments reach that swing
+    lifts = [s.lift for s in run["bending_cam"].params.programme.segments if s.lift is not None]
+    assert all(lift == pytest.approx(stroke, abs=1e-15) for lift in lifts)
 
 
 def _swing_by_marching(d, a, b, c, alpha1, dalpha, beta_guess, n=400):
@@ -412,12 +444,16 @@ def test_summary_and_checks_state_the_linkage_as_drawn(run):
     b = run["bending"]
     ds, rc = b.design, b.rounded
     a_, b_ = rc.input_rocker, rc.coupler
-    swing = _swing_by_marching(ds.frame, a_, b_, ds.output_rocker, ds.alpha1, ds.dalpha, ds.beta1)
+    # small34: the bending cam is designed for the drawn lengths' swing (its stroke)
+    dalpha = run["bending_cam"].params.programme.stroke
+    swing = _swing_by_marching(ds.frame, a_, b_, ds.output_rocker, ds.alpha1, dalpha, ds.beta1)
     bend = b.ratio * swing
-    assert abs(bend - np.pi) > np.radians(0.05)          # the drawn linkage does not bend 180.00°
+    short = b.ratio * _swing_by_marching(ds.frame, a_, b_, ds.output_rocker, ds.alpha1,
+                                         ds.dalpha, ds.beta1)
+    assert abs(short - np.pi) > np.radians(0.05)   # with the synthesis's swing it bends short
     beta = ds.beta1
     gmin = np.inf
-    for al in ds.alpha1 + ds.dalpha * np.linspace(0.0, 1.0, 2001):
+    for al in ds.alpha1 + dalpha * np.linspace(0.0, 1.0, 2001):
         beta = _output_by_root_finding(ds.frame, a_, b_, ds.output_rocker, al, beta)
         G, B = a_ * np.exp(1j * al), ds.frame + ds.output_rocker * np.exp(1j * beta)
         ang = abs(np.angle((G - B) / (ds.frame - B)))    # angle GB·BB0 at B
@@ -434,5 +470,7 @@ def test_summary_and_checks_state_the_linkage_as_drawn(run):
     assert "swings 50.00° clockwise (required 50.00°)" in md_en
     assert "| 50.00 (clockwise) | ° |" in md_en and "-50.000" not in md_en.split("wheel swing |")[1][:20]
     check = [ln for ln in md_en.splitlines() if ln.startswith("| simulation")]
-    assert any("bending wheel" in ln and "| 180.00 | 180.00 |" in ln for ln in check)
-    assert any("as drawn" in ln and f"| {np.degrees(bend):.2f} |" in ln for ln in check)
+    assert any("four-bar as drawn" in ln and "| 180.00 | 180.00 |" in ln for ln in check)
+    assert f"{np.degrees(bend):.2f}" == "180.00"
+    assert f"| {np.degrees(gmin):.2f} | ≥ 40 |" in md_en
+    assert f"designed for a swing of {np.degrees(dalpha):.2f}°" in md_en

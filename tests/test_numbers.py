@@ -195,22 +195,7 @@ _POWER = re.compile(r"([-−]?\d+(?:\.\d+)?) × 10([⁻⁰¹²³⁴⁵⁶⁷⁸�
 _RESIDUAL_LIMIT = re.compile(r"≤ (?:1\.0 × )?10⁻⁹|\|\s*[≤<] 0\s*\|")
 
 
-@pytest.fixture(scope="module")
-def report_md(example_results, tmp_path_factory):
-    from test_handin import render
-
-    cache: dict = {}
-
-    def get(name: str, lang: str) -> str:
-        if (name, lang) not in cache:
-            tmp = tmp_path_factory.mktemp(f"{name}-{lang}") / "figures"
-            cache[name, lang] = render(name, lang, example_results(name), tmp)[0]
-        return cache[name, lang]
-
-    return get
-
-
-def test_no_table_prints_a_rounding_residue_as_a_result(report_md):
+def test_no_table_prints_a_rounding_residue_as_a_result(handin_reports):
     """review33 (issue 19 point 5 continued): "链条送进量 − 夹爪排间距 | −1.1 × 10⁻¹³ | 0",
     "行程误差 | 1.4 × 10⁻¹³ | 0", furnace_pusher's residual table "−1.1 × 10⁻¹⁶" beside rows
     written 0. A difference that should be 0 and is 0 to rounding is written by the one rule
@@ -221,7 +206,7 @@ def test_no_table_prints_a_rounding_residue_as_a_result(report_md):
     found = []
     for name in EXAMPLES:
         for lang in LANGS:
-            for line in report_md(name, lang).splitlines():
+            for line in handin_reports(name, lang)[0].splitlines():
                 if not line.startswith("|") or _RESIDUAL_LIMIT.search(line):
                     continue
                 for m in _POWER.finditer(line):
@@ -251,7 +236,7 @@ def _summary_and_body(md: str) -> tuple[list[list[str]], str]:
     return rows[1:], body
 
 
-def test_summary_values_are_the_strings_the_body_prints(report_md):
+def test_summary_values_are_the_strings_the_body_prints(handin_reports):
     """review33 (issue 19 point 5): the summary wrote press "平均功率 300 W" where the body
     says "= 300.0 W", shaper "ΔW_max 278" (body 278.0 J), die_cutter "3500" (body 3499.5 J),
     "总传动比 28.8" (body 28.80). Every summary value of a power, energy, torque, moment of
@@ -262,7 +247,7 @@ def test_summary_values_are_the_strings_the_body_prints(report_md):
     missing = []
     for name in EXAMPLES:
         for lang in LANGS:
-            rows, body = _summary_and_body(report_md(name, lang))
+            rows, body = _summary_and_body(handin_reports(name, lang)[0])
             body = _GROUP_IN_DIGITS.sub("", body)
             for label, value, unit in rows:
                 v = re.escape(_GROUP_IN_DIGITS.sub("", value))
@@ -280,7 +265,7 @@ def test_summary_values_are_the_strings_the_body_prints(report_md):
     assert not missing, "\n".join(missing)
 
 
-def test_no_english_word_is_a_subscript(report_md):
+def test_no_english_word_is_a_subscript(handin_reports):
     """review33: "$(n/n_{other})^2$", "$T_{peak}\\,\\omega$", "$\\prod z_{driven}/z_{driving}$",
     "$d_{dmin}$" in the zh reports read as untranslated program names. The course's symbols:
     the speeds themselves, P_max, the gears numbered along the train (z_2/z_1 · z_4/z_3) and an
@@ -292,14 +277,14 @@ def test_no_english_word_is_a_subscript(report_md):
     found = []
     for name in EXAMPLES:
         for lang in LANGS:
-            md = report_md(name, lang)
+            md = handin_reports(name, lang)[0]
             hits = words.findall(md) + (re.findall(r"_\{\{?dmin\}", md) if lang == "zh" else [])
             if hits:
                 found.append(f"{name}.{lang}: {sorted(set(hits))}")
     assert not found, "\n".join(found)
 
 
-def test_small_wording_and_spacing_items(report_md):
+def test_small_wording_and_spacing_items(handin_reports):
     """review33 item 17: en "on the shaft Ⅰ" (a numbered shaft takes no article); zh "装在Ⅰ 轴上"
     beside "Ⅰ 轴" elsewhere (one form: 《机械设计》's "Ⅰ轴"), "45钢" beside "45 钢", a formula
     run into the next character ("曲柄轴 $O_2$上") — none in any of the 28 reports."""
@@ -307,7 +292,7 @@ def test_small_wording_and_spacing_items(report_md):
 
     found = []
     for name in EXAMPLES:
-        en, zh = report_md(name, "en"), report_md(name, "zh")
+        en, zh = handin_reports(name, "en")[0], handin_reports(name, "zh")[0]
         for pattern, md, lang in ((r"the shaft [ⅠⅡⅢⅣⅤ]", en, "en"), (r"[ⅠⅡⅢⅣⅤ] 轴", zh, "zh"),
                                   (r"45钢", zh, "zh"), (r"\$[上下中内]", zh, "zh")):
             hits = re.findall(pattern, md)
@@ -316,18 +301,18 @@ def test_small_wording_and_spacing_items(report_md):
     assert not found, "\n".join(found)
 
 
-def test_one_table_one_number_rule(report_md):
+def test_one_table_one_number_rule(handin_reports):
     """review33 item 17: furnace_pusher's table of the original linkage wrote K 1.2400 | 1.25,
     θ 19.286 (4/3/3 decimals in one table); press's gear table α 20.0 beside α′ 20.00. K is
     written to 0.001 and angles to 0.01° (README "Conventions")."""
     for lang in ("en", "zh"):
-        md = report_md("furnace_pusher", lang)
+        md = handin_reports("furnace_pusher", lang)[0]
         three = [ln for ln in md.splitlines() if ln.count("|") == 4]     # quantity | original | required
         k = next(ln for ln in three if ln.startswith("| $K$ |"))
         theta = next(ln for ln in three if ln.startswith("| $\\theta$ /° |"))
         assert [_decimals(c.strip()) for c in k.strip("| ").split("|")[1:]] == [3, 3], k
         assert [_decimals(c.strip()) for c in theta.strip("| ").split("|")[1:]] == [2, 2], theta
-        gear = report_md("press", lang)
+        gear = handin_reports("press", lang)[0]
         alpha = [ln for ln in gear.splitlines() if re.match(r"\| [^|]+ \| \$\\alpha'?\$ \|", ln)]
         assert len(alpha) == 2
         for ln in alpha:

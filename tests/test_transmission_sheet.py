@@ -5,33 +5,22 @@ apart with their tip circles (pitch + 1.5 mm) clear — every stage has its numb
 stage number or shaft numeral is written over a shaft's centre mark."""
 from __future__ import annotations
 
-from pathlib import Path
 
 import numpy as np
 import pytest
 
 from mechdesign.render.sheet import Circle, Text, text_box
+from one_sheet import written_sheet
 
-ROOT = Path(__file__).resolve().parents[1]
 TIP = 1.5            # tip circle outside the pitch circle [paper mm], as drawn
 
 
 def _written(example_results, tmp_path, name, lang):
-    import ezdxf
-
-    from mechdesign.brief.loader import load_brief
-    from mechdesign.render.sheets import _builders, write_all
-
-    r = example_results(name)
-    brief = load_brief(ROOT / "designs" / f"{name}.yaml")
-    (tmp_path / "f").mkdir()
-    builders = [b for b in _builders(r, brief) if b[0] == "transmission"]
-    files = write_all(builders, brief, tmp_path, tmp_path / "f", lang, ("dxf",))
-    assert len(files) == 1
     from mechdesign.render.sheet import TitleInfo
 
-    sheet = builders[0][1](TitleInfo("传动系统示意图", "test", number="T-01"), lang)
-    return r, ezdxf.readfile(tmp_path / files[0].dxf).modelspace(), sheet
+    r = example_results(name)
+    msp, build = written_sheet(r, name, "transmission", tmp_path, lang)
+    return r, msp, build(TitleInfo("传动系统示意图", "test", number="T-01"), lang)
 
 
 @pytest.mark.parametrize("name", ["furnace_pusher", "furnace_drive", "die_cutter", "shaper", "slotter"])

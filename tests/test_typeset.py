@@ -800,6 +800,8 @@ HALF_EMPTY_OPEN: set[tuple[str, str]] = set()   # die_cutter en mended by the se
 # typst's floats cannot be held back past a table; place.flush() before such a table (tried,
 # floats33) left pages half empty and the layout unsettled. The figures whose text follows a
 # split table go to the foot of its last page (templates/report.typ: after-split).
+# small34: lockbeam en's appendix (shorter flow-chart caption and introduction) now has its
+# flow chart (text before the table) between the parts of the stage table, as zh has.
 TABLES_INTERRUPTED_OPEN = {(b, lang) for b, langs in {
     "cam_7_3": "en", "die_cutter": "zh en", "linkage_sixbar": "zh en", "lockbeam": "en",
     "lockbeam_cam": "en", "press": "zh en", "shaper": "zh en", "slotter": "zh en",

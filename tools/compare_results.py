@@ -252,6 +252,22 @@ EXPECTED["slotter"] += [(path, _MOTOR34) for path in (
     "drive.output_speed_rpm", "drive.speed_error", "drive.stages.*", "drive.shafts.*",
     "drive.shaft_designs.*")]
 
+# Issue 19 (session 34): the lock-beam's bending cam is designed for the swing the four-bar as
+# drawn (a = 80, b = 161 mm) needs for exactly 180° of bend, 24.398° → 24.4203°: the synthesis
+# keeps the brief's 24.398° (the seed's 14.904 mm / 35 mm), with which the drawn lengths bend
+# only 179.82°. The cycle simulation drives the drawn four-bar (it drove the synthesised
+# lengths). Cam: lifts 0.425825 → 0.426225 rad, smallest base radius 60.23 → 60.24 mm (r0 61 mm
+# unchanged), largest pressure angles 43.81° → 43.82° (rise), 34.47° → 34.50° (return), outline
+# and table; the wheel's angle, speed (11.53 → 11.54 rad/s) and acceleration (73.26 → 73.62
+# rad/s²) over the cycle. New: bending.cycle.gamma_min, 63.25° (tests/test_lockbeam.py checks
+# the swing by root-finding on the loop equation).
+_BEND_CAM = "issue 19 (session 34): bending cam designed for the drawn four-bar's swing (24.42°)"
+EXPECTED["lockbeam"] += [(f"bending_cam.{leaf}", _BEND_CAM) for leaf in (
+    "segments.*.lift", "segments.*.at", "segments.*.max_pressure_angle", "min_base_radius",
+    "rho_actual_min_convex", "rho_pitch_min_convex", "outline.*", "table.*")]
+EXPECTED["lockbeam"] += [(f"bending.cycle.{leaf}", _BEND_CAM + ", the drawn four-bar driven")
+                         for leaf in ("wheel_angle.*", "wheel_omega.*", "wheel_alpha.*")]
+
 # Self-check residuals: round-off, not results. Compared only as "still tiny".
 IGNORED = ("*closure_residual", "*stroke_error", "*power_balance_residual", "*power_residual*",
            "*self_check*residual*")

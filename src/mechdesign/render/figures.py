@@ -163,6 +163,7 @@ def save_png(fig, path: Path) -> None:
     from .parallel import save
 
     call = _call_key.get()
+    italic_symbols(fig)
     upright_subscript_words(fig)
 
     def write():
@@ -185,6 +186,22 @@ def save_png(fig, path: Path) -> None:
 
 
 _WORD_SUBSCRIPT = re.compile(r"_\{(min|max)\}")
+
+
+def italic_symbols(fig) -> None:
+    """Set the quantity symbols written as text in the figure's labels, legends and notes
+    ("crank angle φ (°)", "ΔE", "H − t", "F/M") as mathtext, italic like the report's
+    formulas (:func:`~mechdesign.render.labels.mpl_symbols` states the rule)."""
+    from matplotlib.text import Text
+
+    from .labels import mpl_symbols
+
+    for t in fig.findobj(Text):
+        s = t.get_text()
+        if s:
+            new = mpl_symbols(s)
+            if new != s:
+                t.set_text(new)
 
 
 def upright_subscript_words(fig) -> None:

@@ -221,3 +221,102 @@ def tex_names(text: str) -> str:
     """A TeX fragment holding point names at the baseline ("\\perp O2A", "S4 \\to O3"): each
     run of names with a digit lowered ("\\perp O_2A")."""
     return _NAME_WORD.sub(lambda m: point_tex(m[1]), str(text))
+
+
+# Quantity symbols written as text in a figure ("crank angle φ (°)", "energy change ΔE (J)",
+# "H − t = 55.0 mm", "F/M (kN/(kN·m))"): set as mathtext, italic as the report's formulas and
+# its text set them (ISO 80000-1; the report's unit filter, render/unitjoin.py, italicises a
+# symbol before a relation and a lone lowercase or Greek letter between words).
+_GREEK_TEX = dict(zip(
+    "αβγδεζηθικλμνξπρστυφχψωΓΔΘΛΞΠΣΦΨΩ",
+    r"\alpha \beta \gamma \delta \varepsilon \zeta \eta \theta \iota \kappa \lambda \mu \nu \xi "
+    r"\pi \rho \sigma \tau \upsilon \varphi \chi \psi \omega \Gamma \Delta \Theta \Lambda \Xi "
+    r"\Pi \Sigma \Phi \Psi \Omega".split()))
+_GR = "".join(_GREEK_TEX)
+_WORD_CH = rf"A-Za-z0-9{_GR}_²³¹⁰⁴-⁹₀-₉′'\\$"
+# a symbol: a Greek letter (with Δ, or with one lowercase letter or digit as its subscript:
+# "ρa" is ρ_a; after an upright differential d: "dβ/dα"; before a hyphen: "θ-circle"), or Δ
+# and a Latin letter, or one Latin letter (not before a hyphen: "V-belt"), each with its
+# primes ("α′"); never inside a longer word or after "." or "·" (a unit "kN·m")
+_SYMBOL = re.compile(
+    rf"(?<![{_WORD_CH}.·\-])(?P<d>d(?=[{_GR}]))?"
+    rf"(?:(?P<sym>Δ?[{_GR}](?P<sub>[a-z0-9])?|Δ[A-Za-z])(?P<p1>′*)(?![{_WORD_CH}])"
+    rf"|(?P<latin>[A-Za-z])(?P<p2>′*)(?![{_WORD_CH}\-]))")
+# a derivative "ds/dδ", "d²φ/dt²": d upright, the quantities italic
+_DERIVATIVE = re.compile(
+    rf"(?<![{_WORD_CH}.·\-])d(?P<n>[²³]?)(?P<f>[A-Za-z{_GR}])/d(?P<x>[A-Za-z{_GR}])(?P<m>[²³]?)"
+    rf"(?![{_WORD_CH}])")
+_POWER = {"": "", "²": "^{2}", "³": "^{3}"}
+_RELATION = r"(?:=|≈|<|>|≤|≥|−|\+)"
+# a parenthesised group without a relation (a unit: "(mm)", "(m/s²)", "(kN/(kN·m))") is left
+_UNIT_GROUP = re.compile(r"\((?:[^()]|\([^()]*\))*\)")
+
+
+def _symbol_tex(sym: str, sub: str | None) -> str:
+    base = sym[:-1] if sub else sym
+    tex = "".join(_GREEK_TEX.get(c, c) + (" " if c in _GREEK_TEX and len(base) > 1 else "")
+                  for c in base).strip()
+    return "$" + tex + (f"_{{{sub}}}" if sub else "") + "$"
+
+
+def _latin_is_symbol(text: str, start: int, end: int) -> bool:
+    """The rules for one Latin letter at text[start:end] (Greek letters always are symbols)."""
+    before, after = text[:start], text[end:]
+    if re.search(r"[0-9][ \u00a0]*$", before):       # a unit after a number: "5 s"
+        return False
+    if re.match(rf"\s*{_RELATION}", after) or re.search(rf"{_RELATION}\s*$", before):
+        return True                                  # "K = 1.4", "H − t"
+    if re.match(r"/(?:Δ?[A-Za-z])(?![A-Za-z0-9])", after) or re.search(r"(?<![A-Za-z])Δ?[A-Za-z]/$", before):
+        return True                                  # "F/M" (two single letters)
+    if re.fullmatch(r"\s+\((?:[^()]|\([^()]*\))*\)\s*", after):
+        return True                                  # an axis label: "displacement s (mm)"
+    # the report's rule: a lone lowercase letter between spaces, not the article "a"
+    return text[start:end] != "a" and text[start:end].islower() and before.endswith(" ") \
+        and after.startswith(" ")
+
+
+def _derivative_tex(m) -> str:
+    def q(c):
+        return _GREEK_TEX.get(c, c)
+    return (rf"$\mathrm{{d}}{_POWER[m['n']]}{q(m['f'])}/\mathrm{{d}}{q(m['x'])}{_POWER[m['m']]}$")
+
+
+def _symbols_in_plain(text: str) -> str:
+    if _DERIVATIVE.search(text):
+        parts = _DERIVATIVE.split(text)
+        # split with 4 groups: text, n, f, x, m, text, …
+        out = []
+        for i in range(0, len(parts), 5):
+            out.append(_symbols_in_plain(parts[i]))
+            if i + 4 < len(parts):
+                n, f_, x, m_ = parts[i + 1:i + 5]
+                out.append(_derivative_tex({"n": n, "f": f_, "x": x, "m": m_}))
+        return "".join(out)
+    lone = re.fullmatch(rf"(Δ?[a-z{_GR}])(′*)", text)
+    if lone:                                         # a dimension's lone symbol ("e")
+        return _symbol_tex(lone[1], None)[:-1] + lone[2] + "$"
+    out, last = [], 0
+    keep = [m.span() for m in _UNIT_GROUP.finditer(text) if not re.search(_RELATION, m[0])]
+    for m in _SYMBOL.finditer(text):
+        if any(a <= m.start() < b for a, b in keep):
+            continue
+        if m["latin"] and not _latin_is_symbol(text, m.start(), m.end()):
+            continue
+        out.append(text[last:m.start()] + (m["d"] or ""))
+        tex = _symbol_tex(m["sym"] or m["latin"], m["sub"])
+        primes = m["p1"] or m["p2"] or ""
+        out.append(tex[:-1] + primes + "$")
+        last = m.end()
+    out.append(text[last:])
+    return "".join(out)
+
+
+def mpl_symbols(text: str) -> str:
+    """A figure's text with the quantity symbols written in it as text set as mathtext (math
+    italic): "crank angle φ (°)" → "crank angle $\\varphi$ (°)", "H − t = 55.0 mm" →
+    "$H$ − $t$ = 55.0 mm", "F/M (kN/(kN·m))" → "$F$/$M$ (kN/(kN·m))", "ΔE" → "$\\Delta E$",
+    "ρa" → "$\\rho_{a}$", "dβ/dα" → "d$\\beta$/d$\\alpha$". Formulas ($…$) are left as written, and so are units: a
+    parenthesised group without a relation, a letter after a number ("5 s"), inside a word
+    or after "·"."""
+    parts = re.split(r"((?<!\\)\$[^$]*(?<!\\)\$)", str(text))
+    return "".join(p if k % 2 else _symbols_in_plain(p) for k, p in enumerate(parts))

@@ -327,6 +327,23 @@ def data_assumptions(motor, stages, shaft_designs) -> tuple[str, ...]:
     return tuple(out)
 
 
+def resized(drive: DriveResult, dp, peak_factor: float, peak_from_shaft: int | None,
+            life_factor: float | None = None,
+            weights: dict[int, tuple[float, float]] | None = None) -> tuple[tuple, tuple] | None:
+    """The stages and shaft designs of ``drive`` sized again for another peak assignment
+    (another flywheel placement: the shafts from ``peak_from_shaft`` on carry the peak):
+    the motor, the realised ratios and the shaft table do not depend on it and are reused;
+    only the geometry and strength of the stages and the shafts are designed again, as
+    :func:`design_drive` designs them. None when a worm's efficiency, which follows from
+    its geometry, would move (then the whole drive must be designed again)."""
+    bare = [replace(st, design=None) for st in drive.stages]
+    results, worm_eff = _strength(dp, bare, drive.shafts, peak_factor, peak_from_shaft)
+    if any(abs(v - drive.stages[k].efficiency) > 1e-4 for k, v in worm_eff.items()):
+        return None
+    return tuple(results), tuple(_shafts(dp, results, drive.shafts, peak_factor, peak_from_shaft,
+                                         life_factor, weights))
+
+
 def _strength(dp, results, shafts, peak_factor, peak_from_shaft):
     """Geometry and strength of each stage (see :mod:`.drive_strength`)."""
     designs, worm_eff = ds.stage_designs(dp, results, shafts, peak_factor, peak_from_shaft)

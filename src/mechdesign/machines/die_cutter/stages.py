@@ -380,19 +380,25 @@ def amplification(model: LinkageModel, d: ToggleDesign, k, raw, f, p: DieCutterP
 # --------------------------------------------------------------------------- drive and flywheel
 
 
+def _peak_and_life(r: dict) -> tuple[float, float]:
+    """The peak factor max|M_b| / mean M_b and the bearing life's equivalent load after the
+    flywheel (the cycle's cube-mean torque / its mean)."""
+    f = r["press_forces"]
+    mb = f.balancing_torque[:r["press"].grid_size]
+    return (float(f.peak_torque / f.mean_torque),
+            float(np.mean(np.abs(mb) ** 3) ** (1 / 3) / f.mean_torque))
+
+
 def _drive(r: dict, flywheel_shaft: int | None = None):
     """The drive delivers the crank's mean power at the distribution shaft's speed; the
     stages and shafts after the flywheel carry the peak of M_b (peak factor = peak / mean);
     with the flywheel on the distribution shaft, that shaft itself (between the flywheel and
-    the crank). ``flywheel_shaft``: another placement than the brief's (the comparison)."""
+    the crank). ``flywheel_shaft``: another placement than the brief's."""
     from ...stages.drive import design_drive
 
     p, f = r["params"], r["press_forces"]
-    peak = float(f.peak_torque / f.mean_torque)
+    peak, life = _peak_and_life(r)
     j = p.flywheel_shaft if flywheel_shaft is None else flywheel_shaft
-    # the bearing life's equivalent load after the flywheel: the cycle's cube-mean torque
-    mb = f.balancing_torque[:r["press"].grid_size]
-    life = float(np.mean(np.abs(mb) ** 3) ** (1 / 3) / f.mean_torque)
     return design_drive(p.drive, f.mean_power, p.shaft_rpm, "mechanism", peak, j, life)
 
 
@@ -483,9 +489,9 @@ class PlacementComparison:
     other: FlywheelPlacement = q("", "the other placement, designed the same way")
 
 
-def _placement(fl: Flywheel, drive) -> FlywheelPlacement:
+def _placement(fl: Flywheel, stages, shaft_designs) -> FlywheelPlacement:
     gears = []
-    for sr in drive.stages:
+    for sr in stages:
         d = sr.design
         if d is None or d.kind != "gear":
             continue
@@ -493,7 +499,7 @@ def _placement(fl: Flywheel, drive) -> FlywheelPlacement:
         gears.append(GearStageSize(sr.index, float(d.module), d2, float(d.face_width), float(d.T2),
                                    float(STEEL_DENSITY * np.pi / 4 * d2 ** 2 * d.face_width)))
     return FlywheelPlacement(int(fl.shaft), fl.shaft_speed_rpm, fl.inertia, fl.rim, tuple(gears),
-                             tuple(float(sd.d_seat) for sd in drive.shaft_designs),
+                             tuple(float(sd.d_seat) for sd in shaft_designs),
                              float(sum(g.wheel_mass for g in gears)))
 
 
@@ -518,11 +524,20 @@ def fw_rim(inertia: float, diameter: float, p: DieCutterParams):
 
 def compare_placements(r: dict) -> PlacementComparison:
     """The flywheel on the other shaft — the distribution shaft, or shaft 1 when the brief
-    puts it on the distribution shaft — with the drive designed again for it."""
+    puts it on the distribution shaft — with the drive's stages and shafts sized again for it
+    (the motor, ratios and shaft table of the designed drive reused: they do not depend on
+    the placement)."""
+    from ...stages.drive import resized
+
     p, model, k, f = r["params"], r["press_model"], r["press"], r["press_forces"]
     shafts = len(p.drive.stages)
     other = shafts if p.flywheel_shaft < shafts else 1
-    drive = _drive(r, other)
+    drive = r["drive"]
+    peak, life = _peak_and_life(r)
+    sized = resized(drive, p.drive, peak, other, life)
+    if sized is None:                       # a worm's efficiency moved: design it all again
+        again = _drive(r, other)
+        sized = (again.stages, again.shaft_designs)
     ratio = float(np.prod([st.ratio for st in drive.stages][other:]))
     n = k.grid_size
     exact = CycleIntegrals(model, k)
@@ -533,7 +548,8 @@ def compare_placements(r: dict) -> PlacementComparison:
                                       RimSpec(D, p.rim_height_to_width, p.specific_weight)),
                          k.phase[:n], f.balancing_torque[:n], model.crank_omega, p.gravity,
                          exact=exact)
-    return PlacementComparison(_placement(r["press_flywheel"], r["drive"]), _placement(fl, drive))
+    return PlacementComparison(_placement(r["press_flywheel"], drive.stages, drive.shaft_designs),
+                               _placement(fl, *sized))
 
 
 # --------------------------------------------------------------------------- feed and cycle

@@ -21,7 +21,7 @@ ENTRY = Entry(
         (N_("bending four-bar as drawn: coupler b"), "mm", "bending.rounded.coupler|bending.coupler",
          _MM),
         (N_("bend of the linkage as drawn (simulated)"), "°",
-         "bending.rounded.bend|bending.bend_simulated", _DEG),
+         "bending.bend_simulated", _DEG),
         (N_("bending γ_min of the linkage as drawn"), "°",
-         "bending.rounded.gamma_min|bending.gamma_min", _DEG)),
+         "bending.cycle.gamma_min", _DEG)),
     checks=f"{_P}.stages:checks")

@@ -110,7 +110,8 @@ class SeedLengths(StrictModel):
 class BendingSection(StrictModel):
     """The bending drive (扳弯机构): cam-driven input rocker → four-bar → large chain wheel →
     chain → small bending wheel. The input rocker is the bending cam's oscillating follower;
-    its swing is the cam's ``max_swing_deg``."""
+    the four-bar is synthesised for the swing ``bending_cam.follower.max_swing_deg``; the cam itself
+    is designed for the swing the drawn (rounded) lengths need for exactly the bending angle."""
 
     bending_angle_deg: float = Field(gt=0, le=360, description="Angle the bending wheel turns [°]")
     driving_wheel_diameter_mm: float = Field(gt=0, le=5000, description=(

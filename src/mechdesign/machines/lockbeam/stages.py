@@ -5,11 +5,12 @@ One main (distribution) shaft turns once per part. Stages:
 - transmission: motor → belt → spur gears → main shaft; exact ratio, shaft
   speeds (powers and torques only when the brief gives the motor power: the seed does not);
 - positioning cam: the shared cam stage on ``params.cam`` (result ``cam``);
-- bending cam: the shared cam design on ``params.bending_cam``;
+- bending cam: the shared cam design on ``params.bending_cam``, for the swing the drawn
+  (rounded) four-bar needs to bend exactly the required angle (:func:`bending_cam_params`);
 - bending linkage: two-position synthesis of the double rocker
   (:mod:`mechdesign.core.rocker_synthesis`), simulated with :mod:`mechdesign.core.mechanism`
-  over the input swing and over the main-shaft cycle (cam → rocker → four-bar → chain →
-  bending wheel), the original report's graphical lengths checked the same way;
+  over the input swing and over the main-shaft cycle (cam → rocker → four-bar as drawn →
+  chain → bending wheel), the original report's graphical lengths checked the same way;
 - feed linkage: the shared linkage stages (prefix ``feed``) on the brief's
   Assur-group description, plus the seed-format table and the guide-bar closed forms;
 - cycle (motion cycle diagram): the brief's diagram, its timing constraints,
@@ -284,6 +285,36 @@ def rounded_check(ds: rs.RockerDesign, step: float, ratio: float) -> RoundedChec
     return replace(best, margin_required=side * need, nearest=nearest)
 
 
+def built_design(ds: rs.RockerDesign, rc: RoundedCheck | None) -> rs.RockerDesign:
+    """The four-bar as built: the drawn lengths of ``rc`` assembled at the same input start,
+    swung by the input swing they need for exactly the required Δβ; ``ds`` itself when the
+    brief does not round or no such swing exists."""
+    if rc is None or rc.input_swing_needed is None:
+        return ds
+    return rs.RockerDesign(ds.frame, rc.input_rocker, rc.coupler, ds.output_rocker, ds.alpha1,
+                           float(np.copysign(rc.input_swing_needed, ds.dalpha)), rc.beta1,
+                           ds.dbeta, ds.branch)
+
+
+def bending_cam_params(p: LockbeamParams, syn: BendingSynthesis | None = None):
+    """The bending cam's parameters with its swing set to what the four-bar as built needs
+    (:func:`built_design`): the synthesis uses the brief's swing, the drawn lengths are rounded,
+    and a cam made for the brief's swing would bend the rounded linkage short of the required
+    angle. Explicit lifts of the programme are scaled with the stroke."""
+    from ...core.cam import Programme, Segment
+
+    bp, cam = p.bending, p.bending_cam
+    syn = synthesise_bending(bp) if syn is None else syn
+    swing = abs(built_design(syn.design, rounded_check(syn.design, bp.rounding, bp.ratio)).dalpha)
+    prog = cam.programme
+    if swing == prog.stroke:
+        return cam
+    k = swing / prog.stroke
+    segs = [Segment(s.kind, s.span, s.law, None if s.lift is None else s.lift * k)
+            for s in prog.segments]
+    return replace(cam, programme=Programme(segs, swing))
+
+
 @dataclass(frozen=True)
 class SeedCheck:
     input_rocker: float
@@ -355,6 +386,7 @@ class BendingResult:
     wheel_omega: np.ndarray     # [rad/s]
     wheel_alpha: np.ndarray     # [rad/s²]
     bend_simulated: float       # largest wheel angle [rad]
+    gamma_min_built: float      # least transmission angle of the four-bar as built over the cycle [rad]
     fd_velocity: float          # max |ω − Δθ/Δt| / max |ω|
     fd_acceleration: float
     seed: SeedCheck | None
@@ -404,6 +436,8 @@ def bending(p: LockbeamParams, bcam, syn: BendingSynthesis | None = None) -> Ben
     syn = synthesise_bending(bp) if syn is None else syn
     ds = syn.design
     mech = bending_mechanism(ds)
+    rounded = rounded_check(ds, bp.rounding, bp.ratio)
+    built = built_design(ds, rounded)
     # 1. over the input swing
     alpha = ds.alpha1 + ds.dalpha * np.linspace(0.0, 1.0, 1441)
     m = mech.solve(alpha)
@@ -412,19 +446,21 @@ def bending(p: LockbeamParams, bcam, syn: BendingSynthesis | None = None) -> Ben
     delta = np.abs(np.angle(np.exp(1j * (m.links["3"].angle - m.links["4"].angle))))
     gamma = np.minimum(delta, np.pi - delta)
     i_min = int(np.argmin(gamma))
-    # 2. over the main-shaft cycle: δ = φ − φ0 on the bending cam, α = α1 + ψ(δ)
+    # 2. over the main-shaft cycle, the four-bar as built (drawn lengths): δ = φ − φ0 on the
+    #    bending cam, α = α1 + ψ(δ)
     n = p.grid_points
     phi = np.arange(n) * (TWO_PI / n)
     prog = bcam.params.programme
     fm = prog.evaluate(phi - p.bend_cam_start)
     w = p.main_omega
-    mc = mech.solve(ds.alpha1 + fm.s)
+    mc = (mech if built is ds else bending_mechanism(built)).solve(built.alpha1 + fm.s)
     g1, g2 = mc.links["4"].omega, mc.links["4"].alpha           # dβ/dα, d²β/dα²
     a_dot, a_ddot = fm.ds * w, fm.d2s * w * w
-    beta_c = ds.beta1 + np.angle(np.exp(1j * (mc.links["4"].angle - ds.beta1)))
+    beta_c = built.beta1 + np.angle(np.exp(1j * (mc.links["4"].angle - built.beta1)))
+    delta_c = np.abs(np.angle(np.exp(1j * (mc.links["3"].angle - mc.links["4"].angle))))
     sign = np.sign(ds.dbeta)
     ratio = bp.ratio
-    wheel = ratio * sign * (beta_c - ds.beta1)
+    wheel = ratio * sign * (beta_c - built.beta1)
     wheel_w = ratio * sign * g1 * a_dot
     wheel_a = ratio * sign * (g2 * a_dot ** 2 + g1 * a_ddot)
     dt = (TWO_PI / n) / w
@@ -459,10 +495,11 @@ def bending(p: LockbeamParams, bcam, syn: BendingSynthesis | None = None) -> Ben
         sweep_input=alpha, sweep_output=beta, sweep_gamma=gamma,
         swing_simulated=float(beta[-1] - beta[0]), gamma_min=g_min, gamma_max=float(np.max(gamma)),
         gamma_min_at=float(alpha[i_min] - ds.alpha1), velocity_ratio=m.links["4"].omega,
-        rounded=rounded_check(ds, bp.rounding, ratio),
+        rounded=rounded,
         closure=closure_residual(mech, m),
         shaft_angle=phi, rocker_angle=fm.s, rocker_omega=a_dot, wheel_angle=wheel,
         wheel_omega=wheel_w, wheel_alpha=wheel_a, bend_simulated=float(np.max(wheel)),
+        gamma_min_built=float(np.min(np.minimum(delta_c, np.pi - delta_c))),
         fd_velocity=fd_v, fd_acceleration=fd_a, seed=seed, warnings=warnings,
         candidate_ratio_peaks=peaks, drawing=bending_drawing(ds, mech))
 
@@ -712,7 +749,8 @@ def stages(params: LockbeamParams) -> list[Stage]:
         cam_stage(),
         Stage("pin_check", titles.pgettext("stage", "pin lift"), lambda r: pin_check(r["params"])),
         Stage("bending_cam", titles.pgettext("stage", "bending cam"),
-              lambda r: design_cam(r["params"].bending_cam)),
+              lambda r: design_cam(bending_cam_params(
+                  r["params"], r.get("checked", {}).get("bending_synthesis")))),
         Stage("bending", titles.pgettext("stage", "bending linkage"),
               lambda r: bending(r["params"], r["bending_cam"],
                                 r.get("checked", {}).get("bending_synthesis"))),
@@ -816,6 +854,8 @@ class BendingCycleDoc:
     wheel_angle: np.ndarray = q("rad", "bending wheel from its start, in the bending sense")
     wheel_omega: np.ndarray = q("rad/s", "its angular velocity")
     wheel_alpha: np.ndarray = q("rad/s²", "its angular acceleration")
+    gamma_min: float = q("rad", "least transmission angle of the four-bar as built (drawn "
+                         "lengths, when the brief rounds) over the cycle")
 
 
 @dataclass(frozen=True)
@@ -829,14 +869,16 @@ class BendingDoc:
     coupler: float = q("m", "L_GB")
     output_rocker: float = q("m", "L_B0B")
     input_start: float = q("rad", "α1, input rocker at the start")
-    input_swing: float = q("rad", "Δα, the bending cam's swing")
+    input_swing: float = q("rad", "Δα of the synthesis (the brief's bending-cam swing; the cam "
+                           "is designed for rounded.input_swing_needed when the brief rounds)")
     output_start: float = q("rad", "β1")
     output_swing: float = q("rad", "Δβ, signed (negative: clockwise)")
     branch: int = q("1", "assembly branch (±1)")
     sense: str = q("", "'same' or 'opposite': the chosen output sense")
     chain_ratio: float = q("1", "i = D_driving / D_bending")
     swing_simulated: float = q("rad", "Δβ simulated over the input swing, signed")
-    bend_simulated: float = q("rad", "largest bending-wheel angle over the main-shaft cycle")
+    bend_simulated: float = q("rad", "largest bending-wheel angle over the main-shaft cycle (the "
+                              "four-bar as built: drawn lengths, when the brief rounds)")
     gamma_min: float = q("rad", "γ_min over the swing")
     gamma_max: float = q("rad", "γ_max over the swing")
     grashof: str = q("", "Grashof type of the four-bar")
@@ -962,7 +1004,8 @@ def results_document(r: dict) -> LockbeamResults:
             seed=None if seed is None else SeedDoc(
                 seed.input_rocker, seed.coupler, seed.grashof, tuple(seed.check.swing_range),
                 tuple(SeedStartDoc(s[0], s[1], s[2]) for s in seed.check.starts)),
-            cycle=BendingCycleDoc(b.shaft_angle, b.wheel_angle, b.wheel_omega, b.wheel_alpha)),
+            cycle=BendingCycleDoc(b.shaft_angle, b.wheel_angle, b.wheel_omega, b.wheel_alpha,
+                                  b.gamma_min_built)),
         feed=linkage_document(p.feed, r["feed"], r["feed_forces"], r["feed_flywheel"],
                               r["feed_verification"], r.get("feed_graphical")),
         feed_table=FeedTableDoc(ft.crank_angle, ft.x, ft.v, ft.a, ft.bar_omega, ft.bar_alpha,
