@@ -41,7 +41,8 @@ LABELS = LabelTable({
     "work": pgettext("analysis sheet", "work W, energy change ΔE (J)"),
     "phase": pgettext("analysis sheet", "crank angle φ (°)"),
     "curves": pgettext("analysis sheet", "Output motion curves"),
-    "mbt": pgettext("analysis sheet", "Balancing torque"),
+    "mbt": pgettext("analysis sheet", "Balancing torque (positive in the crank's sense of rotation)"),
+    "signs": pgettext("analysis sheet", "Mb and Pb in the table and the force polygons: counter-clockwise positive"),
     "et": pgettext("analysis sheet", "Flywheel energy"),
     "md": pgettext("analysis sheet", "driving torque Md = {v} N·m"),
     "mean": pgettext("analysis sheet", "mean Mb = {v} N·m"),
@@ -66,7 +67,7 @@ LABELS = LabelTable({
 })
 
 # symbols written with a subscript wherever they stand in this sheet's texts
-SYMBOLS = ("M_b", "M_d", "J_F", "ΔW_max", "μ_v", "μ_a", "μ_F")
+SYMBOLS = ("M_b", "P_b", "M_d", "J_F", "ΔW_max", "μ_v", "μ_a", "μ_F")
 UNITS = {"velocity": (sub("μ", "v"), "(m/s)/mm", "m/s"),
          "acceleration": (sub("μ", "a"), "(m/s²)/mm", "m/s²"), "force": (sub("μ", "F"), "N/mm", "N")}
 
@@ -104,6 +105,8 @@ def analysis_sheet(found, info: TitleInfo, lang: str, labels: dict | None = None
              + lab["each_kin" if unloaded else "each"]]
     if unloaded:
         notes.append(lab["noload"])
+    elif forces is not None:
+        notes[0] += "; " + lab["signs"]
     if flywheel is not None:
         notes.append(lab["dw"].format(v=fmt.sig(flywheel.max_energy_swing)) + ",  "
                      + lab["jf"].format(v=fmt.sig(flywheel.inertia)))
@@ -272,8 +275,15 @@ def _items(pg: Polygon, symbols: list | None = None) -> list[str]:
         symbol = symbol_of(v, symbols, pg.vectors)
         return vector_text(symbol) if symbol else v.name
 
+    def signed(v) -> float:
+        # P_b = M_b/l signed as M_b (counter-clockwise positive), as the report writes it
+        # (P_b = M_b/l = −227/0.0925 = −2457 N); every other vector by its length
+        if pg.kind == "force" and v.name == "Pb" and "Mb" in pg.moments:
+            return float(np.copysign(abs(v.value), pg.moments["Mb"]))
+        return abs(v.value)
+
     ref = max([abs(v.value) for v in pg.vectors], default=0.0)
-    out = [f"{name(v)} = {_value(abs(v.value), ref)} {unit}" for v in pg.vectors]
+    out = [f"{name(v)} = {_value(signed(v), ref)} {unit}" for v in pg.vectors]
     ref = max([abs(m) for m in pg.moments.values()], default=0.0)
     out += [f"{force_symbol(key)} = {_value(value, ref)} N·m" for key, value in pg.moments.items()]
     return out
@@ -699,6 +709,15 @@ def _cell_number(x: float, column, decimals: int | None = None) -> str:
     return fmt.minus(fmt.f(x, decimals, group=True))
 
 
+def ccw_torque(model, forces) -> np.ndarray:
+    """The balancing torque counter-clockwise positive, as the force polygons and the
+    report's graphical method sign M_b (the forces stage gives it positive in the crank's
+    sense of rotation: −M_b for a crank turning clockwise). The table and the crank's
+    force polygon cell write this one sign convention, stated in the sheet's notes."""
+    sense = 1.0 if float(model.crank.omega) >= 0 else -1.0
+    return sense * np.asarray(forces.balancing_torque)
+
+
 def _table(s: Sheet, model, k, forces, lab: dict, box) -> None:
     n = k.grid_size
     bx0, by0, bx1, by1 = box
@@ -707,7 +726,7 @@ def _table(s: Sheet, model, k, forces, lab: dict, box) -> None:
     head = [lab["pos"], "φ (°)", f"s ({us})", f"v ({uv})", f"a ({ua})"] + \
         [sub("ω", str(link)) + " (rad/s)" for link in links] + ([sub("M", "b") + " (N·m)"] if forces is not None else [])
     columns = [k.v, k.a] + [k.link_omega[link] for link in links] + \
-        ([forces.balancing_torque] if forces is not None else [])
+        ([ccw_torque(model, forces)] if forces is not None else [])
     rows = []
     for j, label in enumerate(k.positions.labels):
         i = n + j
