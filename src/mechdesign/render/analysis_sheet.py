@@ -620,7 +620,7 @@ def _mechanism(s: Sheet, model, k, lab: dict, box, chosen: list[str], lang: str)
     for name, z in mech.frame_points.items():
         ground(v, z * mm, 6.0)
         placer.block(v.p(z * mm), 4.0)
-        placer.place(v.p(z * mm), sheet_point(name), 3.5, prefer=1 + 0.3j, gap=2.5)
+        placer.place(v.p(z * mm), sheet_point(name), 3.5, prefer=1 + 0.3j, gap=2.5, leader=True)
     for i in range(len(labels)):
         u = (tip[i] - piv) / abs(tip[i] - piv)
         bold = labels[i] in chosen            # clear of the slider block drawn there
