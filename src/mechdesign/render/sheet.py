@@ -1095,7 +1095,10 @@ class LabelPlacer:
                 d = u * np.exp(1j * t * np.pi / 8)
                 c = anchor + d * (dist + 0.5 * abs(d.real) * w + 0.5 * abs(d.imag) * h)
                 b = (c.real - w / 2, c.imag - h / 2, c.real + w / 2, c.imag + h / 2)
-                cost = self.cost(b) + 0.8 * rank + 0.25 * abs(t)
+                # the lines counted with a margin (the glyphs reach past the estimated box:
+                # an italic P on the line of centres, N2 on the line of action drawn on)
+                cost = (self.cost((b[0] - 0.5, b[1] - 0.5, b[2] + 0.5, b[3] + 0.5)) + 0.8 * rank
+                        + 0.25 * abs(t))
                 if best is None or cost < best[0]:
                     best = (cost, c, b)
         cost, c, b = best
