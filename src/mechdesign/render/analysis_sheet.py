@@ -791,14 +791,41 @@ def _curves(s: Sheet, model, k, forces, fl, lab: dict, box) -> None:
               [Series(w_d, weight=0.35), Series(w_r, weight=0.35), Series(np.append(e, e[0]))],
               xlabel=lab["phase"], ylabel=lab["work"], title=lab["et"], xticks=ticks,
               hlines=[(float(e.min()), ""), (float(e.max()), "")])
-    j_r = int(np.argmax(w_r))
-    j_d = int(0.85 * len(ph))
-    s.text(m.p(ph[j_r], w_r[j_r]) + 2.0j, sub("W", "r"), 3.0, "TEXT", "center", "bottom")
-    s.text(m.p(ph[j_d], w_d[j_d]) + (1.0 - 2.0j), sub("W", "d"), 3.0, "TEXT", "left", "top")
+    # ΔW_max between ΔE's bounds, at the phase nearest midway between them where no curve
+    # or grid line crosses its text (a text too long for the swing goes above it, not onto
+    # the φ ticks); then W_r and W_d clear of it
+    placer = LabelPlacer(s, area=(left, y - h, bx1, y))
+    drawn = placer._drawn_points()
+    mid = 0.5 * (fl.phase_at_min + fl.phase_at_max) * DEG
+    text = lab["dw"].format(v=fmt.sig(fl.max_energy_swing))
+    best = None
+    for x_at in np.arange(6.0, 355.0, 3.0):
+        dim = Dimension(m.p(x_at, float(e.min())), m.p(x_at, float(e.max())), 0.0,
+                        fl.max_energy_swing, text, height=2.5, outside=1)
+        _lines, _arrows, txt, pos, ang = dimension_geometry(dim)
+        u, w = np.exp(1j * ang), text_width(txt, 2.5)
+        corners = [pos + a * u * (w / 2 + 0.5) + b * 1j * u for a in (-1, 1) for b in (-0.5, 3.0)]
+        box = (min(c.real for c in corners), min(c.imag for c in corners),
+               max(c.real for c in corners), max(c.imag for c in corners))
+        # (and its arrowheads off the curves' crossings: the lines within 1.5 mm of a tip)
+        tips = sum(int(np.count_nonzero(np.abs(drawn - q) < 1.5)) for q in (dim.p0, dim.p1))
+        cost = placer.crossed(box, drawn) + 0.3 * tips + abs(x_at - mid) / 360.0
+        if best is None or cost < best[0]:
+            best = (cost, dim)
+    d = best[1]
+    s.dimension(d.p0, d.p1, 0.0, d.measurement, text=text, height=2.5, outside=1)
+    # W_r and W_d beside their curves where no line crosses them (the grid, the other curve,
+    # ΔE's bounds, the ΔW_max dimension), tried along the curve from its end; else on a leader
+    for ys, text, prefer in ((w_r, sub("W", "r"), 1j), (w_d, sub("W", "d"), -1j)):
+        for frac in (0.85, 0.75, 0.65, 0.55, 0.45, 0.35, 0.95):
+            j = int(frac * (len(ph) - 1))
+            c = placer.spot(m.p(ph[j], ys[j]), text, 3.0, prefer, gap=1.0)
+            if c is not None:
+                placer.text(c, text, 3.0, "center", "middle")
+                break
+        else:
+            j = int(0.85 * (len(ph) - 1))
+            placer.leader(m.p(ph[j], ys[j]), text, 3.0, prefer, lengths=(6.0, 9.0, 13.0),
+                          avoid_lines=True)
     s.text(m.p(ph[-1], e[0]) + (1.5 + 0j), "ΔE", 3.0, "TEXT", "left", "middle")
-    x_at = 0.5 * (fl.phase_at_min + fl.phase_at_max) * DEG
-    p_lo, p_hi = m.p(x_at, float(e.min())), m.p(x_at, float(e.max()))
-    s.dimension(p_lo, p_hi, 0.0, fl.max_energy_swing,
-                text=lab["dw"].format(v=fmt.sig(fl.max_energy_swing)), height=2.5,
-                outside=1)   # a text too long for the swing goes above it, not onto the φ ticks
 

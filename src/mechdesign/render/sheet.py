@@ -1084,6 +1084,28 @@ class LabelPlacer:
         self.sheet.text(c, text, height, layer, "center", "middle")
         return c
 
+    def spot(self, anchor: complex, text: str, height: float, prefer: complex,
+             gap: float = 1.5, margin: float = 0.5) -> complex | None:
+        """The centre of the first spot beside ``anchor`` (as :meth:`place` tries them, the
+        two inner rings) that no label and no drawn line comes within ``margin`` of; None if
+        there is none. Nothing is drawn."""
+        w, h = text_width(text, height), height
+        u = prefer / abs(prefer) if abs(prefer) > 1e-12 else 1j
+        drawn = self._drawn_points()
+        for dist in (gap, 2.0 * gap):
+            for t in (0, 1, -1, 2, -2, 3, -3, 4):
+                d = u * np.exp(1j * t * np.pi / 4)
+                c = anchor + d * (dist + 0.5 * abs(d.real) * w + 0.5 * abs(d.imag) * h)
+                box = (c.real - w / 2, c.imag - h / 2, c.real + w / 2, c.imag + h / 2)
+                a = self.area
+                if a is not None and not (box[0] >= a[0] and box[2] <= a[2] and box[1] >= a[1]
+                                          and box[3] <= a[3]):
+                    continue
+                grown = (box[0] - margin, box[1] - margin, box[2] + margin, box[3] + margin)
+                if self.free(grown) and self.crossed(grown, drawn) == 0:
+                    return c
+        return None
+
     def place_best(self, anchor: complex, text: str, height: float, prefer: complex,
                    gaps=(1.2, 2.5, 4.5, 7.0), layer: str = "TEXT") -> complex:
         """A point label at the cheapest of 16 directions × ``gaps``; returns its centre."""
