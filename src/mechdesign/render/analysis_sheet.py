@@ -633,7 +633,7 @@ def _mechanism(s: Sheet, model, k, lab: dict, box, chosen: list[str], lang: str)
             if name in P:
                 d = P[name][i0] - mid
                 placer.place(v.p(P[name][i0]), sheet_point(name), 3.5, prefer=d if abs(d) > 1e-9 else 1j,
-                             gap=2.0)
+                             gap=2.0, leader=True)
         # the link numbers at the first chosen position: beside each link (a third of the
         # way from its frame pivot, if it has one), a slider's number beside its block
         numbered = set()

@@ -336,6 +336,10 @@ def _profile(sheet: Sheet, c, g: _ProfileGeometry, divs, n: float, box, lab):
             u = np.exp(1j * np.angle(z))
             side = np.sign(np.sin(gap_c - np.angle(z))) or 1.0
             p = p + side * 1j * u * 3.2 - u * 1.5
+        elif min(abs((np.angle(z) - a + np.pi) % (2 * np.pi) - np.pi) for a in np.arange(4) * np.pi / 2) < 0.03 \
+                and abs(z) < lim:
+            # a ray along a centre line, which runs on past the label: the label beside it
+            p = p + 1j * np.exp(1j * np.angle(z)) * (0.5 * text_width(f"{d.number}{PRIME}", 3.5) + 1.2)
         labels.text(p, f"{d.number}{PRIME}", 3.5, "center", "middle")
 
     # -- the follower in its start position, cam centre
