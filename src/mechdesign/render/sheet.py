@@ -1055,9 +1055,11 @@ class LabelPlacer:
                 # centre so that the box edge, not its centre, sits ``dist`` from the anchor
                 c = anchor + d * (dist + 0.5 * abs(d.real) * w + 0.5 * abs(d.imag) * h)
                 box = (c.real - w / 2, c.imag - h / 2, c.real + w / 2, c.imag + h / 2)
-                free = self.free(box)
                 # with a leader to go to, a spot is taken only with a margin from the lines
                 # (the glyphs reach past the estimated box: an italic O on a hatch stroke)
+                # and from the other labels (B beside the position number 5 read "B5")
+                free = self.free(box if not leader else (box[0] - 1.1, box[1] - 0.4, box[2] + 1.1,
+                                                         box[3] + 0.4))
                 hits = self.crossed(box if not leader else (box[0] - 0.5, box[1] - 0.5, box[2] + 0.5,
                                                             box[3] + 0.5), drawn)
                 if free and hits == 0 and ring < 2:
@@ -1151,9 +1153,10 @@ class LabelPlacer:
                 leader_hits = sum(1 for o in self.boxes if clip_segment(anchor, elbow, o) is not None)
                 cost = self.cost(b) + 1000.0 * leader_hits + 0.6 * rank + 0.2 * abs(t)
                 if drawn is not None:
-                    # the text clear of every line, the leader not along one (read apart
-                    # from the lines it runs between: the crank's rays about its pivot)
-                    cost += 100.0 * self.crossed(b, drawn) + 2.0 * _near_segment(drawn, anchor, elbow, 0.7, 2.0)
+                    # the text clear of every line and read apart from the other labels, the
+                    # leader not along a line (the crank's rays about its pivot)
+                    cost += (100.0 * self.crossed(b, drawn) + 2.0 * _near_segment(drawn, anchor, elbow, 0.7, 2.0)
+                             + 1000.0 * sum(1 for o in self.boxes if boxes_overlap(b, o, 1.1)))
                 if best is None or cost < best[0]:
                     best = (cost, elbow, right, b)
         cost, elbow, right, b = best
