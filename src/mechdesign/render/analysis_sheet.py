@@ -625,7 +625,7 @@ def _mechanism(s: Sheet, model, k, lab: dict, box, chosen: list[str], lang: str)
         u = (tip[i] - piv) / abs(tip[i] - piv)
         bold = labels[i] in chosen            # clear of the slider block drawn there
         placer.place(v.p(tip[i]), labels[i], 3.5 if bold else 2.5, prefer=u,
-                     gap=5.5 if bold and sliders else 1.5)
+                     gap=5.5 if bold and sliders else 1.5, apart=True)
     if chosen and chosen[0] in labels:
         i0 = labels.index(chosen[0])
         mid = np.mean([P[nm][i0] for nm in drawn])
