@@ -41,8 +41,9 @@ LABELS = LabelTable({
     "work": pgettext("analysis sheet", "work W, energy change ΔE (J)"),
     "phase": pgettext("analysis sheet", "crank angle φ (°)"),
     "curves": pgettext("analysis sheet", "Output motion curves"),
-    "mbt": pgettext("analysis sheet", "Balancing torque (positive in the crank's sense of rotation)"),
-    "signs": pgettext("analysis sheet", "Mb and Pb in the table and the force polygons: counter-clockwise positive"),
+    "mbt": pgettext("analysis sheet", "Balancing torque"),
+    "signs": pgettext("analysis sheet", "Signs: Mb and Pb in the table and the force polygons counter-clockwise "
+                      "positive; the Mb curve positive in the crank's sense of rotation"),
     "et": pgettext("analysis sheet", "Flywheel energy"),
     "md": pgettext("analysis sheet", "driving torque Md = {v} N·m"),
     "mean": pgettext("analysis sheet", "mean Mb = {v} N·m"),
@@ -106,12 +107,13 @@ def analysis_sheet(found, info: TitleInfo, lang: str, labels: dict | None = None
     if unloaded:
         notes.append(lab["noload"])
     elif forces is not None:
-        notes[0] += "; " + lab["signs"]
+        notes.append(lab["signs"])
     if flywheel is not None:
         notes.append(lab["dw"].format(v=fmt.sig(flywheel.max_energy_swing)) + ",  "
                      + lab["jf"].format(v=fmt.sig(flywheel.inertia)))
+    top = tb_y1 + 10.0 + 5.5 * max(len(notes) - 2, 0)     # a third line above, not on the title block
     for j, text in enumerate(notes):
-        s.text(tb_x0 - 30.0 + 1j * (tb_y1 + 10.0 - 5.5 * j), text,
+        s.text(tb_x0 - 30.0 + 1j * (top - 5.5 * j), text,
                fit_height(text, 205.0, 3.0), "TEXT")
     return s, scales
 
