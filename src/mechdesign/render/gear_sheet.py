@@ -396,8 +396,17 @@ def _dimensions(sheet: Sheet, drawing: GearDrawing, plan: _Plan, o2_in: bool) ->
         sheet.line(o1 - 1.5, a - 1.5, "DIMENSIONS")
         sheet.line(a, top, "DIMENSIONS")
         sheet.fill([a, a + 2.5j + 0.75, a + 2.5j - 0.75], "DIMENSIONS")
-        sheet.text(complex(x_dim - 1.0, o1.imag + 0.45 * (box[3] - o1.imag)), f"a′ = {fmt.length(mm.a_work)}",
-                   3.5, "DIMENSIONS", "center", "bottom", np.pi / 2)
+        # the text where none of the wheel's circles crosses the line (nearest 0.45 of it)
+        text = f"a′ = {fmt.length(mm.a_work)}"
+        w = text_width(text, 3.5)
+        dx = x_dim - o2.real
+        radii = [g2.df / 2, g2.db / 2, g2.d / 2, g2.da / 2] + ([lay.r2w] if shifted else [])
+        cuts = [o2.imag - np.sqrt((k * q) ** 2 - dx ** 2) for q in radii if k * q > abs(dx)]
+        want = o1.imag + 0.45 * (box[3] - o1.imag)
+        ys = [y for y in np.arange(o1.imag + 10.0 + w / 2, box[3] - 10.0 - w / 2, 1.0)
+              if all(abs(y - c) > w / 2 + 1.5 for c in cuts)]
+        y_text = min(ys, key=lambda y: abs(y - want)) if ys else want
+        sheet.text(complex(x_dim - 1.0, y_text), text, 3.5, "DIMENSIONS", "center", "bottom", np.pi / 2)
 
     def clear_length(r, others, w, length):
         """The shortest line from the circle of ``r`` inward, at least ``length`` mm, whose
