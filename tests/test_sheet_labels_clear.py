@@ -18,15 +18,15 @@ no free spot goes on a leader out of the lines (the A1 crank pivot among its twe
 cam centre and rocker pivot on their hatching), the chart's M_d line is named in a legend
 above the frame, W_r and W_d sit where no line crosses them, ΔW_max at the phase where the
 fewest lines cross its text, a gear's radius line long enough for its text to clear the
-wheel's other circles (and a′ where they do not cross its line), the roller's r_r where no ray or curve crosses it, a label kept
-1.1 mm from the others (position numbers "5" "4'" read "54'").
+wheel's other circles (and a′ where they do not cross its line), the roller's r_r where no
+ray or curve crosses it, a label kept 1.1 mm from the others ("5" beside "4'" read "54'").
 
 What is still open is listed below (digits written #, so that a changed number does not
 hide or excuse a text): position numbers in dense regions of the A1 skeleton, the A1 frame
 and stroke dimensions across the fan of positions, ΔW_max where the swing is shorter than
-its text (it crosses a grid line), the cam_7_3 r0 and the shaper's arm L among the rays, dense
-force-polygon labels. The test fails for a
-text not listed and for a listed one no longer found (mended: take it out)."""
+its text (it crosses a grid line), the cam_7_3 r0 and the shaper's arm L among the rays,
+dense force-polygon labels. The test fails for a text not listed and for a listed one no
+longer found (mended: take it out)."""
 from __future__ import annotations
 
 import re
