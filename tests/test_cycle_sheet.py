@@ -92,3 +92,20 @@ def test_the_sheet_fills_the_frame_and_no_texts_overlap(example_results, name, l
     for i, (ta, a) in enumerate(boxes):
         for tb_, b in boxes[i + 1:]:
             assert not boxes_overlap(a, b, -0.05), (ta, tb_)
+
+
+@pytest.mark.parametrize("name", ["lockbeam", "die_cutter"])
+@pytest.mark.parametrize("lang", ["zh", "en"])
+def test_the_degree_sign_follows_its_number_on_the_sheet(example_results, name, lang):
+    """The angle scale is written "μφ = 1.25°/mm", the degree sign right after the number as
+    the reports write 34.92° (GB 3102.1: no space before °); the sheet wrote "1.25 °/mm" in
+    its scale line and its title block."""
+    import re
+
+    s = _sheet(example_results(name), lang)
+    texts = [e.text for e in s.entities if isinstance(e, Text)]
+    scales = [t for t in texts if "/mm" in t]
+    assert len(scales) >= 2, texts                   # the scale line and the title block
+    apart = [t for t in texts if re.search(r"\d[ \u00a0\u202f\u2009]+°", t)]
+    assert not apart, apart
+    assert any(re.search(r"\d°/mm", t) for t in scales), scales

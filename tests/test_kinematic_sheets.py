@@ -189,6 +189,46 @@ def test_crank_rocker_joints_at_the_first_extreme(example_results):
     assert _near(pins, A2[0] + C / n_slider) and _near(pins, A2[0] + a2 * C / abs(C) / n_slider)
 
 
+def test_crank_rocker_link_numbers_at_their_own_middles(example_results):
+    """At the first extreme the coupler BC runs over the crank (B, A, C on one line), so the
+    middle of BC lies a few millimetres from A and its "2" read as A's (review: "the coupler's
+    2 sits next to A"). Each link's number stands at the middle of the stretch no other link
+    covers: the coupler's at the middle of AC, clear of the point names A and C."""
+    r = example_results("crank_rocker")
+    fb = r["optimum"].best.design
+    a, b, d = (x * 1e3 for x in (fb.crank, fb.coupler, fb.frame))
+    s = _sheets(r)["kinematic"]
+    n = _scales(s)[0]
+    ground = _circles(s, 0.22 * 7.0)
+    A = min(ground, key=lambda z: z.real)            # the four-bar is drawn left
+    C1 = A + max(_circle_intersections(0j, b - a, d + 0j, fb.rocker * 1e3), key=lambda z: z.imag) / n
+    texts = [(plain(e.text), e.position) for e in s.entities if isinstance(e, Text)]
+    # the four-bar's texts (the slider-crank is drawn right of D)
+    two = [p for t, p in texts if t == "2" and p.real < A.real + d / n]
+    assert len(two) == 1, texts
+    mid = (A + C1) / 2
+    # across the coupler from the middle of AC, within the label's gap and half its size
+    u = (C1 - A) / abs(C1 - A)
+    along = ((two[0] - mid) / u).real
+    assert abs(along) < 0.1 * abs(C1 - A), (two[0], mid, along)
+    for name in ("A", "C"):
+        at = [p for t, p in texts if t == name and p.real < A.real + d / n]
+        assert len(at) == 1 and abs(two[0] - at[0]) > 0.3 * abs(C1 - A), (name, at, two)
+
+
+@pytest.mark.parametrize("a,b,others,want", [
+    (0j, 10 + 0j, [], 5 + 0j),                                   # alone: its middle
+    (0j, 10 + 0j, [(0j, 4 + 0j)], 7 + 0j),                       # covered 0–4: middle of 4–10
+    (0j, 10 + 0j, [(-3 + 0j, 2 + 0j), (6 + 0j, 12 + 0j)], 4 + 0j),   # free 2–6
+    (0j, 10 + 0j, [(0j, 4 + 1j)], 5 + 0j),                       # not along it: ignored
+    (0j, 4 + 0j, [(-1 + 0j, 10 + 0j)], 2 + 0j),                  # covered all along: its middle
+])
+def test_own_middle(a, b, others, want):
+    from mechdesign.render.kinematic_sheet import own_middle
+
+    assert abs(own_middle(a, b, others) - want) < 1e-12
+
+
 def test_cycle_sheet_boundaries_are_the_brief_phases(example_results):
     """designs/lockbeam.yaml: each actuator's phase boundaries start + Σspan (mod 360) are
     the vertical lines inside its bar, at x = left + (φ − origin)/μφ."""

@@ -42,6 +42,8 @@ LABELS = LabelTable({
     "phase": pgettext("analysis sheet", "crank angle φ (°)"),
     "curves": pgettext("analysis sheet", "Output motion curves"),
     "mbt": pgettext("analysis sheet", "Balancing torque"),
+    "signs": pgettext("analysis sheet", "Signs: Mb and Pb in the table and the force polygons counter-clockwise "
+                      "positive; the Mb curve positive in the crank's sense of rotation"),
     "et": pgettext("analysis sheet", "Flywheel energy"),
     "md": pgettext("analysis sheet", "driving torque Md = {v} N·m"),
     "mean": pgettext("analysis sheet", "mean Mb = {v} N·m"),
@@ -66,7 +68,7 @@ LABELS = LabelTable({
 })
 
 # symbols written with a subscript wherever they stand in this sheet's texts
-SYMBOLS = ("M_b", "M_d", "J_F", "ΔW_max", "μ_v", "μ_a", "μ_F")
+SYMBOLS = ("M_b", "P_b", "M_d", "J_F", "ΔW_max", "μ_v", "μ_a", "μ_F")
 UNITS = {"velocity": (sub("μ", "v"), "(m/s)/mm", "m/s"),
          "acceleration": (sub("μ", "a"), "(m/s²)/mm", "m/s²"), "force": (sub("μ", "F"), "N/mm", "N")}
 
@@ -104,11 +106,14 @@ def analysis_sheet(found, info: TitleInfo, lang: str, labels: dict | None = None
              + lab["each_kin" if unloaded else "each"]]
     if unloaded:
         notes.append(lab["noload"])
+    elif forces is not None:
+        notes.append(lab["signs"])
     if flywheel is not None:
         notes.append(lab["dw"].format(v=fmt.sig(flywheel.max_energy_swing)) + ",  "
                      + lab["jf"].format(v=fmt.sig(flywheel.inertia)))
+    top = tb_y1 + 10.0 + 5.5 * max(len(notes) - 2, 0)     # a third line above, not on the title block
     for j, text in enumerate(notes):
-        s.text(tb_x0 - 30.0 + 1j * (tb_y1 + 10.0 - 5.5 * j), text,
+        s.text(tb_x0 - 30.0 + 1j * (top - 5.5 * j), text,
                fit_height(text, 205.0, 3.0), "TEXT")
     return s, scales
 
@@ -272,10 +277,17 @@ def _items(pg: Polygon, symbols: list | None = None) -> list[str]:
         symbol = symbol_of(v, symbols, pg.vectors)
         return vector_text(symbol) if symbol else v.name
 
+    def signed(v) -> float:
+        # P_b = M_b/l signed as M_b (counter-clockwise positive), as the report writes it
+        # (P_b = M_b/l = −227/0.0925 = −2457 N); every other vector by its length
+        if pg.kind == "force" and v.name == "Pb" and "Mb" in pg.moments:
+            return float(np.copysign(abs(v.value), pg.moments["Mb"]))
+        return abs(v.value)
+
     ref = max([abs(v.value) for v in pg.vectors], default=0.0)
     # a relative vector that is zero by construction (two points of a link in translation:
     # v_S6F, a_S6F^n of the ram) is no result: not listed
-    out = [f"{name(v)} = {_value(abs(v.value), ref)} {unit}" for v in pg.vectors
+    out = [f"{name(v)} = {_value(signed(v), ref)} {unit}" for v in pg.vectors
            if not (v.value == 0 and v.role in ("relative", "normal", "tangential"))]
     ref = max([abs(m) for m in pg.moments.values()], default=0.0)
     out += [f"{force_symbol(key)} = {_value(value, ref)} N·m" for key, value in pg.moments.items()]
@@ -613,12 +625,12 @@ def _mechanism(s: Sheet, model, k, lab: dict, box, chosen: list[str], lang: str)
     for name, z in mech.frame_points.items():
         ground(v, z * mm, 6.0)
         placer.block(v.p(z * mm), 4.0)
-        placer.place(v.p(z * mm), sheet_point(name), 3.5, prefer=1 + 0.3j, gap=2.5)
+        placer.place(v.p(z * mm), sheet_point(name), 3.5, prefer=1 + 0.3j, gap=2.5, leader=True)
     for i in range(len(labels)):
         u = (tip[i] - piv) / abs(tip[i] - piv)
         bold = labels[i] in chosen            # clear of the slider block drawn there
         placer.place(v.p(tip[i]), labels[i], 3.5 if bold else 2.5, prefer=u,
-                     gap=5.5 if bold and sliders else 1.5)
+                     gap=5.5 if bold and sliders else 1.5, apart=True)
     if chosen and chosen[0] in labels:
         i0 = labels.index(chosen[0])
         mid = np.mean([P[nm][i0] for nm in drawn])
@@ -626,7 +638,7 @@ def _mechanism(s: Sheet, model, k, lab: dict, box, chosen: list[str], lang: str)
             if name in P:
                 d = P[name][i0] - mid
                 placer.place(v.p(P[name][i0]), sheet_point(name), 3.5, prefer=d if abs(d) > 1e-9 else 1j,
-                             gap=2.0)
+                             gap=2.0, leader=True)
         # the link numbers at the first chosen position: beside each link (a third of the
         # way from its frame pivot, if it has one), a slider's number beside its block
         numbered = set()
@@ -702,6 +714,15 @@ def _cell_number(x: float, column, decimals: int | None = None) -> str:
     return fmt.minus(fmt.f(x, decimals, group=True))
 
 
+def ccw_torque(model, forces) -> np.ndarray:
+    """The balancing torque counter-clockwise positive, as the force polygons and the
+    report's graphical method sign M_b (the forces stage gives it positive in the crank's
+    sense of rotation: −M_b for a crank turning clockwise). The table and the crank's
+    force polygon cell write this one sign convention, stated in the sheet's notes."""
+    sense = 1.0 if float(model.crank.omega) >= 0 else -1.0
+    return sense * np.asarray(forces.balancing_torque)
+
+
 def _table(s: Sheet, model, k, forces, lab: dict, box) -> None:
     n = k.grid_size
     bx0, by0, bx1, by1 = box
@@ -710,7 +731,7 @@ def _table(s: Sheet, model, k, forces, lab: dict, box) -> None:
     head = [lab["pos"], "φ (°)", f"s ({us})", f"v ({uv})", f"a ({ua})"] + \
         [sub("ω", str(link)) + " (rad/s)" for link in links] + ([sub("M", "b") + " (N·m)"] if forces is not None else [])
     columns = [k.v, k.a] + [k.link_omega[link] for link in links] + \
-        ([forces.balancing_torque] if forces is not None else [])
+        ([ccw_torque(model, forces)] if forces is not None else [])
     rows = []
     for j, label in enumerate(k.positions.labels):
         i = n + j
@@ -775,14 +796,41 @@ def _curves(s: Sheet, model, k, forces, fl, lab: dict, box) -> None:
               [Series(w_d, weight=0.35), Series(w_r, weight=0.35), Series(np.append(e, e[0]))],
               xlabel=lab["phase"], ylabel=lab["work"], title=lab["et"], xticks=ticks,
               hlines=[(float(e.min()), ""), (float(e.max()), "")])
-    j_r = int(np.argmax(w_r))
-    j_d = int(0.85 * len(ph))
-    s.text(m.p(ph[j_r], w_r[j_r]) + 2.0j, sub("W", "r"), 3.0, "TEXT", "center", "bottom")
-    s.text(m.p(ph[j_d], w_d[j_d]) + (1.0 - 2.0j), sub("W", "d"), 3.0, "TEXT", "left", "top")
+    # ΔW_max between ΔE's bounds, at the phase nearest midway between them where no curve
+    # or grid line crosses its text (a text too long for the swing goes above it, not onto
+    # the φ ticks); then W_r and W_d clear of it
+    placer = LabelPlacer(s, area=(left, y - h, bx1, y))
+    drawn = placer._drawn_points()
+    mid = 0.5 * (fl.phase_at_min + fl.phase_at_max) * DEG
+    text = lab["dw"].format(v=fmt.sig(fl.max_energy_swing))
+    best = None
+    for x_at in np.arange(6.0, 355.0, 3.0):
+        dim = Dimension(m.p(x_at, float(e.min())), m.p(x_at, float(e.max())), 0.0,
+                        fl.max_energy_swing, text, height=2.5, outside=1)
+        _lines, _arrows, txt, pos, ang = dimension_geometry(dim)
+        u, w = np.exp(1j * ang), text_width(txt, 2.5)
+        corners = [pos + a * u * (w / 2 + 0.5) + b * 1j * u for a in (-1, 1) for b in (-0.5, 3.0)]
+        box = (min(c.real for c in corners), min(c.imag for c in corners),
+               max(c.real for c in corners), max(c.imag for c in corners))
+        # (and its arrowheads off the curves' crossings: the lines within 1.5 mm of a tip)
+        tips = sum(int(np.count_nonzero(np.abs(drawn - q) < 1.5)) for q in (dim.p0, dim.p1))
+        cost = placer.crossed(box, drawn) + 0.3 * tips + abs(x_at - mid) / 360.0
+        if best is None or cost < best[0]:
+            best = (cost, dim)
+    d = best[1]
+    s.dimension(d.p0, d.p1, 0.0, d.measurement, text=text, height=2.5, outside=1)
+    # W_r and W_d beside their curves where no line crosses them (the grid, the other curve,
+    # ΔE's bounds, the ΔW_max dimension), tried along the curve from its end; else on a leader
+    for ys, text, prefer in ((w_r, sub("W", "r"), 1j), (w_d, sub("W", "d"), -1j)):
+        for frac in (0.85, 0.75, 0.65, 0.55, 0.45, 0.35, 0.95):
+            j = int(frac * (len(ph) - 1))
+            c = placer.spot(m.p(ph[j], ys[j]), text, 3.0, prefer, gap=1.0)
+            if c is not None:
+                placer.text(c, text, 3.0, "center", "middle")
+                break
+        else:
+            j = int(0.85 * (len(ph) - 1))
+            placer.leader(m.p(ph[j], ys[j]), text, 3.0, prefer, lengths=(6.0, 9.0, 13.0),
+                          avoid_lines=True)
     s.text(m.p(ph[-1], e[0]) + (1.5 + 0j), "ΔE", 3.0, "TEXT", "left", "middle")
-    x_at = 0.5 * (fl.phase_at_min + fl.phase_at_max) * DEG
-    p_lo, p_hi = m.p(x_at, float(e.min())), m.p(x_at, float(e.max()))
-    s.dimension(p_lo, p_hi, 0.0, fl.max_energy_swing,
-                text=lab["dw"].format(v=fmt.sig(fl.max_energy_swing)), height=2.5,
-                outside=1)   # a text too long for the swing goes above it, not onto the φ ticks
 

@@ -38,6 +38,7 @@ from .sheet import (
     sub,
     THIN,
     LabelPlacer,
+    boxes_overlap,
     segment_hits_box,
     fit_widths,
     table,
@@ -335,12 +336,17 @@ def _profile(sheet: Sheet, c, g: _ProfileGeometry, divs, n: float, box, lab):
             u = np.exp(1j * np.angle(z))
             side = np.sign(np.sin(gap_c - np.angle(z))) or 1.0
             p = p + side * 1j * u * 3.2 - u * 1.5
+        elif min(abs((np.angle(z) - a + np.pi) % (2 * np.pi) - np.pi) for a in np.arange(4) * np.pi / 2) < 0.03 \
+                and abs(z) < lim:
+            # a ray along a centre line, which runs on past the label: the label beside it
+            p = p + 1j * np.exp(1j * np.angle(z)) * (0.5 * text_width(f"{d.number}{PRIME}", 3.5) + 1.2)
         labels.text(p, f"{d.number}{PRIME}", 3.5, "center", "middle")
 
     # -- the follower in its start position, cam centre
     outside = _follower_start(sheet, view, g, n, labels)
     ground(view, 0, 7.0, -np.pi / 2)
-    labels.place(O, sheet_point("O"), 3.5, prefer=-1 - 1j, gap=2.5)   # between the rays
+    # between the rays, else on a leader out of their fan (not over the frame's hatching)
+    labels.place(O, sheet_point("O"), 3.5, prefer=-1 - 1j, gap=2.5, leader=True)
 
     # -- ω and r0 inside the cam, where no construction line passes: ω in the first part
     # of the widest free sector, r0 in the widest sector left (clear of the centre lines)
@@ -428,7 +434,6 @@ def _follower_start(sheet, view, g: _ProfileGeometry, n, labels: LabelPlacer) ->
     if g.osc:
         A = complex(g.a)
         ground(view, A, 7.0, -np.pi / 2)
-        labels.text(P(A) + complex(-3.0, -3.0), sheet_point("A"), 3.5, "right", "top")
         if g.kind == "flat":
             u = (B0 - A) / abs(B0 - A)
             _, hi = g.face if g.face else (0.0, g.a)
@@ -454,6 +459,8 @@ def _follower_start(sheet, view, g: _ProfileGeometry, n, labels: LabelPlacer) ->
                        height=3.5, measurement=g.a)
         for z in np.linspace(0, g.a, 9):
             angles.append(float(np.angle(z - 1j * y)))
+        # the pivot's name once its frame, arm and the extension line of a are drawn
+        labels.place(P(A), sheet_point("A"), 3.5, prefer=-1 + 0.6j, gap=2.5, leader=True)
         angles += [float(np.angle(A + 1j * t)) for t in (-20 * n, 0.0, 20 * n)]
         return angles
     # translating: stem along x = e, guide near its top
@@ -511,20 +518,31 @@ def _roller_dimension(sheet, view, g: _ProfileGeometry, n, gap_c, labels: LabelP
         around += [np.angle(-u), np.angle(1j * u * side)]       # arm, dimension L
     else:
         around += [np.pi / 2, -np.pi / 2]                       # stem, axis
+    text = f"{sub('r', 'r')}={fmt.length(g.rr)}"
+    h = 3.5
+    w = text_width(text, h)
+    drawn = labels._drawn_points()
     best = None
     for c_ in np.radians(np.arange(0, 360, 5)):
         clear = min(abs((c_ - a + np.pi) % (2 * np.pi) - np.pi) for a in around)
-        # prefer the side of the free sector (the curve names go there, but further out)
-        score = clear + 0.05 * np.cos(c_ - gap_c)
-        if best is None or score > best[0]:
-            best = (score, c_)
+        u = np.exp(1j * c_)
+        for k, reach in enumerate((7.0, 12.0, 18.0)):
+            tip = P(B0 + g.rr * u)
+            tail = tip + reach * u
+            sgn = 1.0 if u.real >= -1e-9 else -1.0
+            x0 = tail.real + (0.5 if sgn > 0 else -0.5 - w)
+            box = (x0, tail.imag + 0.8, x0 + w, tail.imag + 0.8 + h)
+            # the text clear of the lines drawn (the pitch curve, the rays, the rollers) and
+            # of the labels; then the widest free direction, the side of the free sector
+            # (the curve names go there, but further out), the shorter arrow
+            hits = labels.crossed(box, drawn) + sum(1 for b in labels.boxes if boxes_overlap(box, b))
+            score = -10.0 * hits + clear + 0.05 * np.cos(c_ - gap_c) - 0.3 * k
+            if best is None or score > best[0]:
+                best = (score, c_, reach)
     u = np.exp(1j * best[1])
-    text = f"{sub('r', 'r')}={fmt.length(g.rr)}"
-    h = 3.5
     tip = P(B0 + g.rr * u)
-    tail = tip + 7.0 * u
+    tail = tip + best[2] * u
     sgn = 1.0 if u.real >= -1e-9 else -1.0
-    w = text_width(text, h)
     sheet.arrow(tail, tip, "DIMENSIONS", head=3.0, weight=THIN)
     sheet.line(tail, tail + sgn * (w + 1.0), "DIMENSIONS")
     labels.text(tail + sgn * 0.5 + 0.8j, text, h, "left" if sgn > 0 else "right", "bottom",

@@ -35,7 +35,7 @@ STATE_NAMES = LabelTable({
 LABELS = LabelTable({
     "title": N_("Motion cycle diagram (linear)"),
     "phi": pgettext("cycle sheet", "main-shaft angle φ (°)"),
-    "scale": N_("angle scale μφ = {m} °/mm"),
+    "scale": N_("angle scale μφ = {m}°/mm"),
     "table": N_("Phases of the actuators"),
     "actuator": N_("Actuator"),
     "phase": N_("Phase"),
@@ -269,7 +269,7 @@ def cycle_sheet(diagram, info: TitleInfo, lang: str, checks=()) -> Sheet:
     name_w = max(text_width(nm, 3.5) for nm in names) + 8.0
     left = x0 + 8.0 + name_w
     mu = next((m for m in MU_PHI if 360.0 / m <= x1 - 14.0 - left), MU_PHI[-1])
-    frame(s, replace(info, scale=f"{sub('μ', 'φ')} = {fmt.exact(mu)} °/mm"))
+    frame(s, replace(info, scale=f"{sub('μ', 'φ')} = {fmt.exact(mu)}°/mm"))
     tb = title_block_box(s)
     origin = float(diagram.origin) * DEG
     width = 360.0 / mu

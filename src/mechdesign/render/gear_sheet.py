@@ -396,23 +396,47 @@ def _dimensions(sheet: Sheet, drawing: GearDrawing, plan: _Plan, o2_in: bool) ->
         sheet.line(o1 - 1.5, a - 1.5, "DIMENSIONS")
         sheet.line(a, top, "DIMENSIONS")
         sheet.fill([a, a + 2.5j + 0.75, a + 2.5j - 0.75], "DIMENSIONS")
-        sheet.text(complex(x_dim - 1.0, o1.imag + 0.45 * (box[3] - o1.imag)), f"a′ = {fmt.length(mm.a_work)}",
-                   3.5, "DIMENSIONS", "center", "bottom", np.pi / 2)
+        # the text where none of the wheel's circles crosses the line (nearest 0.45 of it)
+        text = f"a′ = {fmt.length(mm.a_work)}"
+        w = text_width(text, 3.5)
+        dx = x_dim - o2.real
+        radii = [g2.df / 2, g2.db / 2, g2.d / 2, g2.da / 2] + ([lay.r2w] if shifted else [])
+        cuts = [o2.imag - np.sqrt((k * q) ** 2 - dx ** 2) for q in radii if k * q > abs(dx)]
+        want = o1.imag + 0.45 * (box[3] - o1.imag)
+        ys = [y for y in np.arange(o1.imag + 10.0 + w / 2, box[3] - 10.0 - w / 2, 1.0)
+              if all(abs(y - c) > w / 2 + 1.5 for c in cuts)]
+        y_text = min(ys, key=lambda y: abs(y - want)) if ys else want
+        sheet.text(complex(x_dim - 1.0, y_text), text, 3.5, "DIMENSIONS", "center", "bottom", np.pi / 2)
 
-    def radial(centre, name, r, angles, length=None):
+    def clear_length(r, others, w, length):
+        """The shortest line from the circle of ``r`` inward, at least ``length`` mm, whose
+        text (``w`` mm long, at the line's middle) crosses none of the gear's other circles
+        (``others``, 1 mm kept): at ``length`` a wheel's text lay across its r, rf and rb."""
+        cuts = [k * (r - q) for q in others if q < r]
+        for extra in np.arange(0.0, 60.0, 1.0):
+            mid = 0.5 * (length + extra)
+            if all(abs(c - mid) > w / 2 + 1.0 for c in cuts):
+                return length + extra
+        return length
+
+    def radial(centre, name, r, angles, length=None, others=()):
         """A radius dimension at the first angle [deg] whose ends lie in the area: from the
-        centre, or (``length`` mm, centre off the area) from a point on the way to it. CAD
-        writes a radius's text outside the circle: that end must have room for it too."""
+        centre, or (``length`` mm, centre off the area) from a point on the way to it, long
+        enough for its text to clear the other circles. CAD writes a radius's text outside
+        the circle: that end must have room for it too."""
         text = f"{name} = {fmt.length(r)}"
         outside = 1.05 * 3.5 * len(plain(text)) + 2.0           # as ezdxf renders it
-        for ang in angles:
-            d = np.exp(1j * np.radians(ang))
-            end = centre + k * r * d
-            start = centre if length is None else end - length * d
-            if (_inside(start, box, -2.0) and _inside(end, box, -2.0)
-                    and _inside(end + outside * d, box, -3.0)):
-                sheet.dimension(start, end, 0.0, r, text, "radius", outside=0)
-                return
+        lengths = [length] if length is None else [clear_length(r, others, text_width(text, 3.5), length),
+                                                     length]     # the longer line where it fits
+        for size in lengths:
+            for ang in angles:
+                d = np.exp(1j * np.radians(ang))
+                end = centre + k * r * d
+                start = centre if size is None else end - size * d
+                if (_inside(start, box, -2.0) and _inside(end, box, -2.0)
+                        and _inside(end + outside * d, box, -3.0)):
+                    sheet.dimension(start, end, 0.0, r, text, "radius", outside=0)
+                    return
 
     r1 = [(sub("r", "f1"), g1.df / 2), (sub("r", "b1"), g1.db / 2), (sub("r", "1"), g1.d / 2),
           (sub("r", "a1"), g1.da / 2)]
@@ -436,7 +460,7 @@ def _dimensions(sheet: Sheet, drawing: GearDrawing, plan: _Plan, o2_in: bool) ->
     for i, (name, r) in enumerate(r2):
         base = -90.0 + first + i * spacing
         tries = [base + j * spacing * len(r2) for j in range(3)]
-        radial(o2, name, r, tries + [-180.0 - a for a in tries], length)
+        radial(o2, name, r, tries + [-180.0 - a for a in tries], length, [q for _, q in r2])
 
 
 def _table(sheet: Sheet, mm: SpurPair, lay, lab: dict, interference: bool) -> None:

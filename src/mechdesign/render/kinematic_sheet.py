@@ -861,6 +861,37 @@ def die_cutter_diagram(results, found, info: TitleInfo, lang: str) -> Sheet:
 
 # ------------------------------------------------------------------ crank-rocker brief
 
+def own_middle(a: complex, b: complex, others: list, tol: float = 1e-6) -> complex:
+    """Where link a–b's number goes: the middle of the longest stretch of a–b that no other
+    link (``others``: their ends) lies along. At the crank-rocker's extreme the coupler runs
+    over the crank (B, A, C on one line); the middle of BC was then a few millimetres from
+    A, so its "2" read as A's; the middle of AC, the coupler's own part, is not. A link
+    covered all along (the crank under the coupler) keeps its middle."""
+    u = b - a
+    length = abs(u)
+    covered = []
+    for p, q in others:
+        # another link on the same line: its ends' positions along a–b, clipped to [0, 1]
+        tp, tq = ((p - a) / u), ((q - a) / u)
+        if abs(tp.imag) * length > tol * max(length, 1.0) or abs(tq.imag) * length > tol * max(length, 1.0):
+            continue
+        lo, hi = sorted((tp.real, tq.real))
+        lo, hi = max(lo, 0.0), min(hi, 1.0)
+        if hi > lo:
+            covered.append((lo, hi))
+    free, t = [], 0.0
+    for lo, hi in sorted(covered):
+        if lo > t:
+            free.append((t, lo))
+        t = max(t, hi)
+    if t < 1.0:
+        free.append((t, 1.0))
+    if not free:
+        return (a + b) / 2
+    lo, hi = max(free, key=lambda span: span[1] - span[0])
+    return a + u * (lo + hi) / 2
+
+
 def crank_rocker_points(a: float, b: float, c: float, d: float) -> dict:
     """Joint positions [same units] of the crank-rocker A B C D with A at the origin and D
     on +x, at the rocker's first extreme C1 (crank and coupler folded: AC1 = b − a)."""
@@ -947,7 +978,8 @@ def crank_rocker_diagram(opt, slider, info: TitleInfo, lang: str) -> Sheet:
             placer.place(view.p(z), sheet_point(name), 3.5, prefer=d if abs(d) > 1e-9 else 1j, gap=2.5)
         for num, a, b in links:
             d = (b - a) / abs(b - a)
-            placer.place(view.p((a + b) / 2), num, 3.5, prefer=1j * d, gap=2.0)
+            at = own_middle(a, b, [(p, q) for m, p, q in links if m != num])
+            placer.place(view.p(at), num, 3.5, prefer=1j * d, gap=2.0)
         if sliding:
             placer.place(view.p(P["C"]), "3", 3.5, prefer=1j, gap=4.5)
         # the frame is link 4 (crank 1, coupler 2, rocker or slider 3: the textbook's numbers,

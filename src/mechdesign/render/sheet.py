@@ -830,10 +830,18 @@ def chart(sheet: Sheet, box: tuple[float, float, float, float], x: np.ndarray,
                    closed=True, weight=0.35)
     if lo < 0 < hi:
         sheet.line(m.p(xlo, 0), m.p(xhi, 0), "CONSTRUCTION", 0.35)
+    # a labelled horizontal line is named in a legend above the frame's right end (a sample
+    # of its dashes, then the text): written on the line inside the frame it was crossed by
+    # the curve and the grid's verticals (22 mm apart on an A1 chart, the text 45 mm long)
+    right = x1
     for value, label in hlines:
         sheet.line(m.p(xlo, value), m.p(xhi, value), "HIDDEN")
         if label:
-            sheet.text(m.p(xhi, value) + (-1.0 + 1.0j), label, 2.5, "TEXT", "right", "bottom")
+            y = y1 + 1.5
+            sheet.text(right + 1j * y, label, 2.5, "TEXT", "right", "bottom")
+            left = right - text_width(label, 2.5) - 1.5
+            sheet.line(complex(left - 8.0, y + 1.25), complex(left, y + 1.25), "HIDDEN")
+            right = left - 12.0
     for s in series:
         sheet.polyline(m.p(x, np.asarray(s.y, dtype=float)), s.layer, weight=s.weight)
     marks = list(marks)
@@ -1027,9 +1035,12 @@ class LabelPlacer:
 
     def place(self, anchor: complex, text: str, height: float = 3.5,
               prefer: complex = 1j, gap: float = 2.5, layer: str = "TEXT",
-              crowded: bool = True) -> complex | None:
+              crowded: bool = True, leader: bool = False, apart: bool = False) -> complex | None:
         """A point label at the first free spot; where there is none, beside the anchor over
-        whatever is there — or, with ``crowded=False``, nothing drawn and None returned."""
+        whatever is there — or, with ``crowded=False``, nothing drawn and None returned, or,
+        with ``leader``, on a leader line out to where no line crosses it (a frame pivot
+        inside the fan of the crank's twelve positions). With ``leader`` or ``apart`` a free
+        spot keeps 1.1 mm from the other labels (two labels side by side read as one)."""
         w, h = text_width(text, height), height
         u = prefer / abs(prefer) if abs(prefer) > 1e-12 else 1j
         turns = [0, 1, -1, 2, -2, 3, -3, 4]
@@ -1045,8 +1056,13 @@ class LabelPlacer:
                 # centre so that the box edge, not its centre, sits ``dist`` from the anchor
                 c = anchor + d * (dist + 0.5 * abs(d.real) * w + 0.5 * abs(d.imag) * h)
                 box = (c.real - w / 2, c.imag - h / 2, c.real + w / 2, c.imag + h / 2)
-                free = self.free(box)
-                hits = self.crossed(box, drawn)
+                # with a leader to go to, a spot is taken only with a margin from the lines
+                # (the glyphs reach past the estimated box: an italic O on a hatch stroke)
+                # and from the other labels (B beside the position number 5 read "B5")
+                free = self.free(box if not (leader or apart) else (box[0] - 1.1, box[1] - 0.4,
+                                                                    box[2] + 1.1, box[3] + 0.4))
+                hits = self.crossed(box if not leader else (box[0] - 0.5, box[1] - 0.5, box[2] + 0.5,
+                                                            box[3] + 0.5), drawn)
                 if free and hits == 0 and ring < 2:
                     best = (c, box)
                     break
@@ -1056,6 +1072,9 @@ class LabelPlacer:
                     ranked = (rank, c, box)
             if best is not None:
                 break
+        if best is None and leader:
+            self.leader(anchor, text, height, prefer, avoid_lines=True)
+            return None
         if best is None and ranked is not None and (ranked[0][0] == 0 or crowded):
             best = ranked[1:]
         if best is None:
@@ -1068,6 +1087,28 @@ class LabelPlacer:
         self.sheet.text(c, text, height, layer, "center", "middle")
         return c
 
+    def spot(self, anchor: complex, text: str, height: float, prefer: complex,
+             gap: float = 1.5, margin: float = 0.5) -> complex | None:
+        """The centre of the first spot beside ``anchor`` (as :meth:`place` tries them, the
+        two inner rings) that no label and no drawn line comes within ``margin`` of; None if
+        there is none. Nothing is drawn."""
+        w, h = text_width(text, height), height
+        u = prefer / abs(prefer) if abs(prefer) > 1e-12 else 1j
+        drawn = self._drawn_points()
+        for dist in (gap, 2.0 * gap):
+            for t in (0, 1, -1, 2, -2, 3, -3, 4):
+                d = u * np.exp(1j * t * np.pi / 4)
+                c = anchor + d * (dist + 0.5 * abs(d.real) * w + 0.5 * abs(d.imag) * h)
+                box = (c.real - w / 2, c.imag - h / 2, c.real + w / 2, c.imag + h / 2)
+                a = self.area
+                if a is not None and not (box[0] >= a[0] and box[2] <= a[2] and box[1] >= a[1]
+                                          and box[3] <= a[3]):
+                    continue
+                grown = (box[0] - margin, box[1] - margin, box[2] + margin, box[3] + margin)
+                if self.free(grown) and self.crossed(grown, drawn) == 0:
+                    return c
+        return None
+
     def place_best(self, anchor: complex, text: str, height: float, prefer: complex,
                    gaps=(1.2, 2.5, 4.5, 7.0), layer: str = "TEXT") -> complex:
         """A point label at the cheapest of 16 directions × ``gaps``; returns its centre."""
@@ -1079,7 +1120,10 @@ class LabelPlacer:
                 d = u * np.exp(1j * t * np.pi / 8)
                 c = anchor + d * (dist + 0.5 * abs(d.real) * w + 0.5 * abs(d.imag) * h)
                 b = (c.real - w / 2, c.imag - h / 2, c.real + w / 2, c.imag + h / 2)
-                cost = self.cost(b) + 0.8 * rank + 0.25 * abs(t)
+                # the lines counted with a margin (the glyphs reach past the estimated box:
+                # an italic P on the line of centres, N2 on the line of action drawn on)
+                cost = (self.cost((b[0] - 0.5, b[1] - 0.5, b[2] + 0.5, b[3] + 0.5)) + 0.8 * rank
+                        + 0.25 * abs(t))
                 if best is None or cost < best[0]:
                     best = (cost, c, b)
         cost, c, b = best
@@ -1091,11 +1135,15 @@ class LabelPlacer:
         return c
 
     def leader(self, anchor: complex, text: str, height: float, prefer: complex,
-               lengths=(8.0, 13.0, 19.0, 27.0, 37.0, 50.0), layer: str = "CONSTRUCTION") -> None:
-        """A text on a short underline, joined to ``anchor`` by a leader line."""
+               lengths=(8.0, 13.0, 19.0, 27.0, 37.0, 50.0), layer: str = "CONSTRUCTION",
+               avoid_lines: bool = False) -> None:
+        """A text on a short underline, joined to ``anchor`` by a leader line; with
+        ``avoid_lines`` its text keeps clear of every line drawn so far, not only of what
+        was blocked (a point label pushed out of a fan of lines: :meth:`place`)."""
         w = text_width(text, height) + 2.0
         u = prefer / abs(prefer)
         best = None
+        drawn = self._drawn_points() if avoid_lines else None
         for rank, length in enumerate(lengths):
             for t in (0, 1, -1, 2, -2, 3, -3, 4, -4, 5, -5, 6, -6):
                 d = u * np.exp(1j * t * np.pi / 12)
@@ -1105,6 +1153,11 @@ class LabelPlacer:
                 b = (x0, elbow.imag, x1, elbow.imag + height + 1.2)
                 leader_hits = sum(1 for o in self.boxes if clip_segment(anchor, elbow, o) is not None)
                 cost = self.cost(b) + 1000.0 * leader_hits + 0.6 * rank + 0.2 * abs(t)
+                if drawn is not None:
+                    # the text clear of every line and read apart from the other labels, the
+                    # leader not along a line (the crank's rays about its pivot)
+                    cost += (100.0 * self.crossed(b, drawn) + 2.0 * _near_segment(drawn, anchor, elbow, 0.7, 2.0)
+                             + 1000.0 * sum(1 for o in self.boxes if boxes_overlap(b, o, 1.1)))
                 if best is None or cost < best[0]:
                     best = (cost, elbow, right, b)
         cost, elbow, right, b = best
@@ -1119,6 +1172,17 @@ class LabelPlacer:
         self.sheet.fill(anchor + 0.6 * np.exp(1j * np.linspace(0, 2 * np.pi, 9)[:-1]), layer)
         self.sheet.text(complex((b[0] + b[2]) / 2, elbow.imag + 0.8), text, height,
                         "TEXT" if layer == "CONSTRUCTION" else layer, "center", "bottom")
+
+
+def _near_segment(pts: np.ndarray, a: complex, b: complex, dist: float, skip: float) -> int:
+    """How many of ``pts`` lie within ``dist`` of segment a–b, its first ``skip`` mm left
+    out (the lines meeting at ``a``)."""
+    length = abs(b - a)
+    if length <= skip or not len(pts):
+        return 0
+    u = (b - a) / length
+    q = (pts - a) * np.conj(u)
+    return int(np.count_nonzero((q.real > skip) & (q.real < length) & (np.abs(q.imag) < dist)))
 
 
 # -- more GB/T 4460 symbols for the kinematic diagrams (机构运动简图) ----------------------
