@@ -53,9 +53,11 @@ LABELS = LabelTable({
     "dw": "ΔWmax = {v} J",
     "jf": pgettext("analysis sheet", "flywheel inertia JF = {v} kg·m²"),
     "scales": pgettext("analysis sheet", "Drawing scales"),
-    "each": pgettext("analysis sheet", "μv, μa, μF above each polygon"),
+    # the cells list the exact values the polygons are drawn from; the report's graphical
+    # method measures the same polygons (to the drawing's accuracy)
+    "each": pgettext("analysis sheet", "μv, μa, μF above each polygon; the values beside it computed"),
     "noforce": pgettext("analysis sheet", "no load at this position (all reactions zero)"),
-    "each_kin": pgettext("analysis sheet", "μv, μa above each polygon"),
+    "each_kin": pgettext("analysis sheet", "μv, μa above each polygon; the values beside it computed"),
     "noload": pgettext("analysis sheet", "No load or masses given: all reactions and Mb are zero, "
                        "so no force polygons or Mb curve are drawn"),
     "nofly": pgettext("analysis sheet", "no flywheel"),
