@@ -247,6 +247,14 @@ EXPECTED["drive"].append(("verification.checks.*.detail.where_zh",
 # the belt, the realised speeds and the drive's shafts follow (tests/test_drive.py,
 # tests/test_slotter.py). The other briefs keep their motors.
 _MOTOR34 = "issue 19 (session 34): the smallest motor the stages can drive (slotter: Y132S-8 → Y90S-6)"
+# The shaper's data group III (n_w = 64 r/min, P_d below 0.75 kW)
+# took the 2.2 kW Y132S-8 as well; it takes the 0.75 kW Y802-4 (1390 r/min, belt 6.5 ≤ 7).
+# The shaper's default group keeps its Y90S-6 (the same power at 1000 r/min, in the
+# recommended range).
+EXPECTED["stem:shaper"] = EXPECTED.get("stem:shaper", []) + [(path, _MOTOR34 + "; group III: Y132S-8 → Y802-4") for path in (
+    "drive.motor.*", "drive.motor_choice", "drive.total_ratio", "drive.data_assumptions.*",
+    "drive.output_speed_rpm", "drive.speed_error", "drive.stages.*", "drive.shafts.*",
+    "drive.shaft_designs.*")]
 EXPECTED["slotter"] += [(path, _MOTOR34) for path in (
     "drive.motor.*", "drive.motor_choice", "drive.total_ratio", "drive.data_assumptions.*",
     "drive.output_speed_rpm", "drive.speed_error", "drive.stages.*", "drive.shafts.*",
