@@ -572,7 +572,9 @@ def compile_pdf(source: str, root: Path, pdf_path: Path, metadata: dict,
     deleted afterwards; the PDF is written atomically. ``substitutes`` maps images of
     the document (paths relative to ``root``) to vector files placed instead where they
     exist: the drawing sheets' PDFs for their PNG previews. Typst warnings are re-emitted
-    as Python warnings. Raises PdfRenderError if typst fails."""
+    as Python warnings. Where typst's layout does not settle with the template's figure rules
+    that read the pass before (``#let figure-hold = true``), the source is compiled again
+    without them. Raises PdfRenderError if typst fails."""
     import typst
 
     from .parallel import note_typst_used
