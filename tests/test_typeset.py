@@ -797,10 +797,11 @@ TABLES_INTERRUPTED_OPEN = {(b, lang) for b, langs in {
 # A blank band above a figure at a page's foot (page_holes): the figures with a hole above
 # them where the block after their text went on go to the top of the page (report.typ:
 # to-top). Open: holes above figures whose next block stands on their page (a heading kept
-# with its section, a table), the sheet previews before the summary, and the reports set
+# with its section, a table), a figure at the foot of a chapter's only page (cam_7_1: its
+# heading stands above it), the sheet previews before the summary, and the reports set
 # without the figure rules (see above).
 HOLES_OPEN = {(b, lang) for b, langs in {
-    "die_cutter": "zh en", "furnace_pusher": "zh en", "linkage_sixbar": "zh", "lockbeam": "zh en",
+    "cam_7_1": "zh en", "die_cutter": "zh en", "furnace_pusher": "zh en", "linkage_sixbar": "zh", "lockbeam": "zh en",
     "press": "zh en", "shaper": "en", "shaper_lengths": "en", "slotter": "zh en",
     "textbook_guide_bar": "en"}.items() for lang in langs.split()}
 # A figure between two lines of a derivation (figures_in_derivations). Not fixed yet.
