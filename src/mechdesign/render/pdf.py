@@ -560,6 +560,10 @@ def _source_file(root: Path, stem: str) -> tuple[int, str]:
         return tempfile.mkstemp(prefix=f".{stem}-", suffix=".typ", dir=root)
 
 
+FIGURE_RULES_ON = "#let figure-hold = true\n"
+FIGURE_RULES_OFF = "#let figure-hold = false\n"
+
+
 def compile_pdf(source: str, root: Path, pdf_path: Path, metadata: dict,
                 substitutes: dict[str, str] | None = None, stem: str = "report") -> None:
     """Compile typst ``source`` (images relative to ``root``) in-process to ``pdf_path``.
@@ -568,7 +572,9 @@ def compile_pdf(source: str, root: Path, pdf_path: Path, metadata: dict,
     deleted afterwards; the PDF is written atomically. ``substitutes`` maps images of
     the document (paths relative to ``root``) to vector files placed instead where they
     exist: the drawing sheets' PDFs for their PNG previews. Typst warnings are re-emitted
-    as Python warnings. Raises PdfRenderError if typst fails."""
+    as Python warnings. Where typst's layout does not settle with the template's figure rules
+    that read the pass before (``#let figure-hold = true``), the source is compiled again
+    without them. Raises PdfRenderError if typst fails."""
     import typst
 
     from .parallel import note_typst_used
@@ -615,6 +621,13 @@ def compile_pdf(source: str, root: Path, pdf_path: Path, metadata: dict,
     finally:
         Path(typ_name).unlink(missing_ok=True)
 
+    # the figure rules that read the pass before (templates/report.typ: a figure held back
+    # past a table, a figure to the top over a hole) may keep typst's layout from settling
+    # in its passes: the report is then set without them (as before these rules)
+    if any("converge" in text for text in typst_warnings) and FIGURE_RULES_ON in source:
+        compile_pdf(source.replace(FIGURE_RULES_ON, FIGURE_RULES_OFF, 1), root, pdf_path,
+                    metadata, substitutes, stem)
+        return
     for text in typst_warnings:
         warnings.warn(f"typst: {text}", stacklevel=3)
 
