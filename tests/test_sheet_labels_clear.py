@@ -65,7 +65,7 @@ TOUCHING_OPEN: dict[tuple[str, str], set[str]] = {
     ('press', 'analysis'): {"'b' and 's#'"},
     ('shaper', 'analysis'): {'"FR##\'" and \'o\'', '"a\'" and "k\'"'},
     ('shaper_lengths', 'analysis'): {'"b\'" and "n#\'"'},
-    ('slotter', 'analysis'): {'"n#\'" and "n#b\'"', "'a' and 'a#'"},
+    ('slotter', 'analysis'): {'"n#\'" and "n#b\'"'},
 }
 
 
