@@ -140,7 +140,7 @@ def test_flywheel_speed_note_and_the_motor_choice(r):
     910/(60·3) = 5.06, beyond the belt's recommended 2–4 but within its maximum 7; the
     report says so and names the 2.2 kW motor the recommended ranges would take."""
     from mechdesign.i18n import tr
-    from mechdesign.render.drive_report import _oversize
+    from mechdesign.render.drive_report import _motor_note
     from mechdesign.render.linkage_report import realised_flywheel
 
     fl, d = r["linkage_flywheel"], r["drive"]
@@ -149,7 +149,7 @@ def test_flywheel_speed_note_and_the_motor_choice(r):
     text = realised_flywheel(fl, n_real, tr("en"))
     assert f"{n_real:.2f}" in text and f"{fl.fluctuation * (180 / n_real) ** 2:.4f}" in text
     assert d.motor.designation == "Y90S-6" and d.choice.reason == "maximum"
-    note = _oversize(d, tr("en"))
+    note = _motor_note(d, tr("en"))
     assert note is not None and f"{910 / 60 / 3:.2f}" in note and "maximum 7" in note
     assert f"Y132S-8 (2.20 kW, synchronous 750 rpm), {2200 / d.power_required:.1f} times" in note
     assert "synchronous_rpm" not in note

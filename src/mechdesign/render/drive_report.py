@@ -68,7 +68,7 @@ def _ranges(d):
     return free, fixed, rec, top
 
 
-def _oversize(d, _) -> str | None:
+def _motor_note(d, _) -> str | None:
     """Why this motor, where a reader would ask. A ratio beyond the recommended ranges
     ("maximum"): what the free stages must make against their ranges, and the motor the
     recommended ranges would have taken, with its power against P_d. A motor much larger
@@ -101,10 +101,10 @@ def _oversize(d, _) -> str | None:
         if c.motor is None or c.motor.designation == m.designation or c.motor.power >= m.power:
             continue
         need = c.total_ratio / fixed
+        # a smaller motor the stages could drive would have been chosen (core.drive.
+        # choose_motor): a smaller one passed over lies outside the maximum ranges
         why = (_("above the maximum {top}", top=f(top, 0)) if need > top else
-               _("below the recommended range") if need < rec[0] else
-               _("beyond the recommended {lo}–{hi}, within the maximum {top}", lo=f(rec[0], 0),
-                 hi=f(rec[1], 0), top=f(top, 0)))
+               _("below the recommended range"))
         tried.append(dict(c=c, need=need, why=why))
     if not tried:
         return None
@@ -175,7 +175,7 @@ def drive_context(d, lang: str, figures: dict[str, str], machine_power_eq: str |
     return {
         "alloc_notes": alloc_notes, "worm_eff": worm,
         "eq": eq, "cand_rows": cand_rows, "stage_rows": stage_rows, "shaft_rows": shaft_rows,
-        "reason": reason, "oversize": _oversize(d, _),
+        "reason": reason, "oversize": _motor_note(d, _),
         "motor": {"name": m.designation, "P": f(m.power / 1e3, 2), "sync": f(m.synchronous_rpm, 0),
                   "n": f(m.full_load_rpm, 0), "H": f(m.frame_height * MM, 0),
                   "tst": f(m.starting_torque_ratio, 1), "tmax": f(m.max_torque_ratio, 1)},
