@@ -135,19 +135,28 @@ def test_flywheel_weight_loads_its_shaft_by_the_beam_closed_form(r):
 
 
 def test_flywheel_speed_note_and_the_motor_choice(r):
-    """The flywheel at the nominal 180 rpm (60 rpm × z2/z1) against the realised speed of
-    shaft Ⅰ (δ = [δ](n/n′)²); the motor is the 0.75 kW Y90S-6 whose belt makes
-    910/(60·3) = 5.06, beyond the belt's recommended 2–4 but within its maximum 7; the
-    report says so and names the 2.2 kW motor the recommended ranges would take."""
+    """The drive turns shaft Ⅰ at n′ = 910/i_belt, below the nominal 180 rpm (60 rpm × z2/z1):
+    J_F = 900·ΔW_max/(π²·n²·[δ]) grows as 1/n², so the flywheel is sized at n′ (sized at 180
+    rpm it would let δ reach [δ](n/n′)² > [δ], review35); the motor is the 0.75 kW Y90S-6
+    whose belt makes 910/(60·3) = 5.06, beyond the belt's recommended 2–4 but within its
+    maximum 7; the report says so and names the 2.2 kW motor the recommended ranges would take."""
     from mechdesign.i18n import tr
     from mechdesign.render.drive_report import _motor_note
     from mechdesign.render.linkage_report import realised_flywheel
 
-    fl, d = r["linkage_flywheel"], r["drive"]
-    assert fl.shaft_speed_rpm == pytest.approx(60 * 54 / 18)
-    n_real = d.shafts[1].speed_rpm
+    fl, d, p = r["linkage_flywheel"], r["drive"], r["params"]
+    n_real = d.motor.full_load_rpm / d.stages[0].ratio
+    assert n_real == pytest.approx(d.shafts[1].speed_rpm, rel=1e-12) and n_real < 180
+    assert fl.nominal_speed_rpm == pytest.approx(60 * 54 / 18)
+    assert fl.shaft_speed_rpm == pytest.approx(n_real, rel=1e-12)
+    jf = 900 * fl.max_energy_swing / (np.pi ** 2 * n_real ** 2 * p.fluctuation)
+    assert fl.inertia == pytest.approx(jf, rel=1e-12)
+    # δ = 900·ΔW/(π² n′² J_F) at the realised speed: within [δ]
+    assert 900 * fl.max_energy_swing / (np.pi ** 2 * n_real ** 2 * fl.inertia) <= p.fluctuation * (1 + 1e-12)
+    assert fl.rim.rim_mass == pytest.approx(4 * jf / fl.rim.diameter ** 2, rel=1e-12)
     text = realised_flywheel(fl, n_real, tr("en"))
     assert f"{n_real:.2f}" in text and f"{fl.fluctuation * (180 / n_real) ** 2:.4f}" in text
+    assert "[δ](n/n′)" not in text          # as math: pandoc read "[δ](n/n′)" as a link
     assert d.motor.designation == "Y90S-6" and d.choice.reason == "maximum"
     note = _motor_note(d, tr("en"))
     assert note is not None and f"{910 / 60 / 3:.2f}" in note and "maximum 7" in note

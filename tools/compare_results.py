@@ -276,6 +276,20 @@ EXPECTED["lockbeam"] += [(f"bending_cam.{leaf}", _BEND_CAM) for leaf in (
 EXPECTED["lockbeam"] += [(f"bending.cycle.{leaf}", _BEND_CAM + ", the drawn four-bar driven")
                          for leaf in ("wheel_angle.*", "wheel_omega.*", "wheel_alpha.*")]
 
+# Issue 19 (session 35, review35): where the drive turns the flywheel's shaft slower than
+# nominal, J_F = 900·ΔW_max/(π²·n²·[δ]) is sized at the realised speed (stages/guide_bar._drive,
+# stages/flywheel.at_realised_speed): the slotter's shaft Ⅰ turns at 179.27 rpm, not 180, and
+# the flywheel sized at 180 let δ reach 0.0336 > [δ] = 1/30. J_F 2.548 → 2.569 kg·m², rim
+# mass 63.71 → 64.23 kg, width 68.8 → 69.1 mm; the shaft carrying the rim follows (weight
+# 625.0 → 630.1 N). New field flywheel.nominal_speed_rpm (180). tests/test_slotter.py.
+_FLY35 = "issue 19 (session 35): flywheel sized at the slower realised speed (slotter 179.27 rpm)"
+EXPECTED["slotter"] += [(path, _FLY35) for path in (
+    "flywheel.*", "linkage.flywheel.*", "drive.shaft_designs.*")]
+# The shaper's data groups whose drive turns shaft Ⅰ slower than nominal (group II: 237.53
+# rpm for 240) likewise; the default group (80.29 > 80 rpm on the crank shaft) keeps its flywheel.
+EXPECTED["stem:shaper"] = EXPECTED.get("stem:shaper", []) + [(path, _FLY35 + "; shaper data groups") for path in (
+    "flywheel.*", "linkage.flywheel.*", "drive.shaft_designs.*")]
+
 # Self-check residuals: round-off, not results. Compared only as "still tiny".
 IGNORED = ("*closure_residual", "*stroke_error", "*power_balance_residual", "*power_residual*",
            "*self_check*residual*")

@@ -310,7 +310,16 @@ def realised_flywheel(fly, n_real: float | None, _) -> str | None:
     """The flywheel sized at the nominal speed (the crank's, at which M_b and ΔW_max are
     computed, × the ratio to its shaft) against the speed ``n_real`` [rpm] the drive realises
     on its shaft: the same flywheel there gives δ = [δ](n/n′)² (J_F ∝ 1/n²); None when the
-    two agree or no drive is designed. The sentences in the language of ``_``."""
+    two agree or no drive is designed. A flywheel sized at the slower realised speed
+    (``fly.nominal_speed_rpm`` set) is told so. The sentences in the language of ``_``."""
+    if fly.nominal_speed_rpm is not None:
+        n0, n1 = fly.nominal_speed_rpm, fly.shaft_speed_rpm
+        return _("The drive (chapter \"Drive design\") realises n′ = {n_real} rpm on this shaft, {slower}% "
+                 "below the nominal n = {n} rpm at which $M_b$ and $\\Delta W_{{max}}$ are computed. "
+                 "$J_F$ grows as 1/n², so it is sized at the slower n′ above: sized at n, the flywheel "
+                 "would let the fluctuation reach $\\delta = [\\delta](n/n')^2$ = {delta_real} > [δ].",
+                 n_real=f(n1, 2), n=f(n0, 2), slower=percent(abs(n1 / n0 - 1) * 100),
+                 delta_real=f(fly.fluctuation * (n0 / n1) ** 2, 4))
     if n_real is None or abs(n_real - fly.shaft_speed_rpm) < 5e-3:
         return None
     delta = fly.fluctuation * (fly.shaft_speed_rpm / n_real) ** 2
@@ -325,10 +334,10 @@ def realised_flywheel(fly, n_real: float | None, _) -> str | None:
                   "are computed; the drive (chapter \"Drive design\") realises n′ = {n_real} rpm on "
                   "this shaft, {faster}% slower.", n=n, n_real=nr, faster=off)
     if delta <= fly.fluctuation * (1 + 1e-12):
-        second = _("The same flywheel there keeps the fluctuation at δ = [δ](n/n′)² = {delta_real}, "
+        second = _("The same flywheel there keeps the fluctuation at $\\delta = [\\delta](n/n')^2$ = {delta_real}, "
                    "within [δ]: the nominal speed is the safe side.", delta_real=f(delta, 4))
     else:
-        second = _("The same flywheel there lets the fluctuation reach δ = [δ](n/n′)² = {delta_real}, "
+        second = _("The same flywheel there lets the fluctuation reach $\\delta = [\\delta](n/n')^2$ = {delta_real}, "
                    "above [δ]: at n′ it would need $J_F$ = {jf_real} kg·m².", delta_real=f(delta, 4),
                    jf_real=sig(fly.inertia * (fly.shaft_speed_rpm / n_real) ** 2))
     return sentences(_, first, second)

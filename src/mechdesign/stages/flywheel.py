@@ -63,6 +63,9 @@ class Flywheel:
     inertia_on_crank: float = q("kg·m²", "the same flywheel's duty on the crank")
     rim: fw.RimFlywheel | None = q("", "sized rim, when the machine asks for one")
     warnings: tuple[Finding, ...] = q("", "rim speed, rim proportions", default=())
+    nominal_speed_rpm: float | None = q("rpm", "the shaft's nominal speed (crank speed × ratio) when "
+                                        "J_F is sized at the slower speed the drive realises; "
+                                        "None: sized at the nominal speed", default=None)
 
 
 #: Crank speeds below this [rpm] or flywheels above this [kg·m²] are no course machine's:
@@ -104,6 +107,26 @@ def design_flywheel(spec: FlywheelSpec, phase: np.ndarray, balancing_torque: np.
         max_energy_swing=cycle.max_energy_swing, phase_at_min=cycle.angle_at_min,
         phase_at_max=cycle.angle_at_max, fluctuation=spec.fluctuation, inertia=inertia,
         inertia_on_crank=on_crank, rim=rim, warnings=tuple(warnings))
+
+
+def at_realised_speed(fl: Flywheel, spec: FlywheelSpec, speed_rpm: float,
+                      gravity: float = 9.81) -> Flywheel:
+    """``fl`` sized again at the speed [rpm] the drive realises on its shaft, when that is
+    slower than the nominal one: J_F = 900·ΔW_max/(π²·n′²·[δ]) grows as 1/n′², so the slower
+    speed is the one that keeps δ ≤ [δ] (ΔW_max, computed at the nominal speed, is kept)."""
+    from dataclasses import replace
+
+    inertia = fw.flywheel_inertia(fl.max_energy_swing, speed_rpm, fl.fluctuation)
+    rim, warnings = fl.rim, fl.warnings
+    if spec.rim is not None:
+        rim = fw.rim_dimensions(inertia, spec.rim.diameter, spec.rim.height_to_width,
+                                spec.rim.specific_weight, speed_rpm, gravity)
+        if spec.rim.field:
+            impossible_rim(rim, spec, inertia, speed_rpm, speed_rpm / fl.speed_ratio, gravity)
+        warnings = tuple(rim_findings(rim, spec.rim.field))
+    return replace(fl, shaft_speed_rpm=float(speed_rpm), inertia=float(inertia),
+                   inertia_on_crank=float(inertia * fl.speed_ratio**2), rim=rim, warnings=warnings,
+                   nominal_speed_rpm=float(fl.shaft_speed_rpm))
 
 
 class FlywheelDesignError(DesignError):
