@@ -318,3 +318,22 @@ def test_one_table_one_number_rule(handin_reports):
         for ln in alpha:
             numbers = [c.strip() for c in ln.strip("| ").split("|")[3:] if re.search(r"\d", c)]
             assert numbers and all(_decimals(c) == 2 for c in numbers), ln
+
+
+_MATH = re.compile(r"\$\$.*?\$\$|\$[^$\n]*\$", flags=re.S)
+_LINK = re.compile(r"(?<!!)\[[^\]\n]*\]\([^)\n]*\)")
+
+
+def test_no_text_reads_as_a_link(handin_reports):
+    """review35: "δ = [δ](n/n′)² = 0.0991" in prose is a Markdown link to "n/n′" for pandoc: the
+    PDF printed "δ = δ² = 0.0991" (die_cutter, slotter) and Word a hyperlink. No report
+    (14 examples × zh/en) has a link outside its formulas: the reports link nothing, the
+    figures are images ("![…](…)")."""
+    from test_handin import EXAMPLES, LANGS
+
+    found = []
+    for name in EXAMPLES:
+        for lang in LANGS:
+            prose = _MATH.sub(" ", handin_reports(name, lang)[0])
+            found += [f"{name}.{lang}: {m.group(0)}" for m in _LINK.finditer(prose)]
+    assert not found, "\n".join(found)
