@@ -399,7 +399,14 @@ def test_table_of_contents_after_the_title_page_with_an_entry_per_heading(tmp_pa
     body = document.index("Kinematics</w:t>", document.index("</w:sdt>"))
     assert name < toc_at < body
     assert '<w:br w:type="page" />' in document[name:toc_at]
-    assert '<w:br w:type="page" />' in document[document.index("</w:sdt>"):body]
+    # the body's first heading starts the next page (w:pageBreakBefore), not a paragraph
+    # holding a page break: on a full contents page that paragraph went to a page of its own
+    # and left it blank (slotter zh p. 3, review35); no empty paragraph ends the contents
+    after = document[document.index("</w:sdt>"):body]
+    assert "<w:p>" in after and '<w:br w:type="page" />' not in after
+    first = after[after.index("<w:p>"):]
+    assert re.match(r'<w:p><w:pPr><w:pStyle w:val="Heading1" /><w:pageBreakBefore />', first), first[:200]
+    assert all(text for text in _paragraph_texts(toc)), _paragraph_texts(toc)
 
 
 def test_a_bracket_closed_in_a_superscript_base_becomes_a_delimiter(tmp_path):
@@ -605,3 +612,62 @@ def test_a_short_chinese_word_in_a_cell_is_never_broken(tmp_path):
     # (1.5 pt of room: LibreOffice broke "合格" in a column of 639 twips, 3 more than the two
     # characters and the margins)
     assert width >= 2 * half_points * 10 + _CELL_MARGINS + 30, (width, grid)
+
+
+def _rows(table: str) -> list[str]:
+    return re.findall(r"<w:tr>.*?</w:tr>", table, flags=re.DOTALL)
+
+
+def test_table_rows_never_split_and_a_short_table_stays_on_one_page(tmp_path):
+    """Review35 (Word): a row broke across two pages ("实际中心距" cut into "…中心" / "距",
+    slotter zh p. 31-32) and a short table left one row at a page foot (p. 35). Every row of
+    a data table may not split (w:cantSplit) and the header row repeats (w:tblHeader); a
+    table of at most SHORT_TABLE_ROWS rows keeps each row but the last with the next
+    (w:keepNext on all its paragraphs: the whole table on one page); a longer one may break
+    between rows."""
+    from mechdesign.render.docx_layout import SHORT_TABLE_ROWS
+
+    def table(n_rows: int, caption: str) -> str:
+        body = "".join(f"| 第 {k} 行 | {k}.0 |\n" for k in range(n_rows - 1))
+        return f"| 名称 | 数值 |\n|:--|--:|\n{body}\n: {caption}\n\n"
+    md = _write_sample(tmp_path, "# 表\n\n" + table(4, "短表") + table(SHORT_TABLE_ROWS + 5, "长表")
+                       + "$$ x = 1 $$\n")
+    out = tmp_path / "report.docx"
+    render_docx(md, out, METADATA, TEMPLATES)
+    document = _part(out, "word/document.xml")
+    ElementTree.fromstring(document)
+    tables = [t for t in re.findall(r"<w:tbl>.*?</w:tbl>", document, flags=re.DOTALL)
+              if "EquationTable" not in t]
+    assert [len(_rows(t)) for t in tables] == [4, SHORT_TABLE_ROWS + 5]
+    for t in tables:
+        rows = _rows(t)
+        assert all("<w:trPr><w:cantSplit />" in row for row in rows)
+        assert "<w:tblHeader" in rows[0] and not any("<w:tblHeader" in row for row in rows[1:])
+    short, long = (_rows(t) for t in tables)
+    for row in short[:-1]:
+        paragraphs = re.findall(r"<w:p>.*?</w:p>", row, flags=re.DOTALL)
+        assert paragraphs and all(re.match(r'<w:p><w:pPr><w:pStyle w:val="TableText\w*" /><w:keepNext />', p)
+                                  for p in paragraphs), row[:300]
+    assert "<w:keepNext" not in short[-1]
+    assert not any("<w:keepNext" in row for row in long)
+
+
+def test_a_list_of_formulas_in_one_inline_formula_may_break_between_its_items(tmp_path):
+    """Review35 (Word, slotter zh p. 25): "（峰值系数 $C_v = 2.000, C_a = 4.000, C_j = ∞$）"
+    is one formula object, which LibreOffice does not break: it went to the next line whole
+    and the justified line before it was letter-spaced ("推 程 0°–70°： 等 加 速 …"). The
+    formula becomes one per item, with ", " as text between them; a comma inside brackets
+    ("f(x, y)") or in a display formula stays in its formula."""
+    md = _write_sample(tmp_path, "# 凸轮\n\n**推程 0°–70°：等加速等减速运动规律（抛物线）**"
+                                 "（峰值系数 $C_v = 2.000, C_a = 4.000, C_j = ∞$），"
+                                 "函数 $f(x, y)$。\n\n$$ a = 1, b = 2 $$\n")
+    out = tmp_path / "report.docx"
+    render_docx(md, out, METADATA, TEMPLATES)
+    document = _part(out, "word/document.xml")
+    ElementTree.fromstring(document)
+    para = next(p for p in re.findall(r"<w:p>.*?</w:p>", document, flags=re.DOTALL) if "峰值系数" in p)
+    formulas = ["".join(re.findall(r"<m:t>([^<]*)</m:t>", f)) for f in re.findall(r"<m:oMath>.*?</m:oMath>", para)]
+    assert formulas == ["Cv=2.000", "Ca=4.000", "Cj=∞", "f(x,y)"]
+    assert para.count('<w:t xml:space="preserve">, </w:t>') == 2
+    display = re.search(r"<m:oMathPara>.*?</m:oMathPara>", document, flags=re.DOTALL).group(0)
+    assert display.count("<m:oMath>") == 1 and "<m:t>,</m:t>" in display

@@ -67,6 +67,7 @@ def fill_table_of_contents(document_xml: str) -> str:
     if not entries:
         return document_xml
     paragraphs = []
+    last = len(entries) - 1
     for n, (level, name, text) in enumerate(entries):
         opening = ('<w:r><w:fldChar w:fldCharType="begin" w:dirty="true" /></w:r>'
                    f"<w:r>{field.group(1)}</w:r>"
@@ -74,9 +75,28 @@ def fill_table_of_contents(document_xml: str) -> str:
         paragraphs.append(
             f'<w:p><w:pPr><w:pStyle w:val="TOC{level}" /></w:pPr>{opening}'
             f'<w:hyperlink w:anchor="{name}" w:history="1">'
-            f'<w:r><w:t xml:space="preserve">{text}</w:t></w:r></w:hyperlink></w:p>')
-    paragraphs.append('<w:p><w:r><w:fldChar w:fldCharType="end" /></w:r></w:p>')
+            f'<w:r><w:t xml:space="preserve">{text}</w:t></w:r></w:hyperlink>'
+            # the field ends in the last entry: an empty paragraph of its own could be the
+            # one line that spills onto a page after a full contents page
+            + ('<w:r><w:fldChar w:fldCharType="end" /></w:r>' if n == last else "") + "</w:p>")
     return head[:field.start()] + "".join(paragraphs) + tail
 
 
-__all__ = ["fill_table_of_contents"]
+_BREAK_AFTER_CONTENTS = re.compile(
+    r'(</w:sdt>\s*)<w:p><w:r><w:br w:type="page" /></w:r></w:p>(\s*(?:<w:bookmarkStart [^>]*/>\s*)*)'
+    r'<w:p>(<w:pPr>(?:<w:pStyle [^>]*/>)?(?:<w:keepNext ?/>)?(?:<w:keepLines ?/>)?)?')
+
+
+def body_on_a_new_page(document_xml: str) -> str:
+    """``word/document.xml`` with the page break after the table of contents (a paragraph
+    holding a ``w:br``, templates/docx-numbering.lua) replaced by ``w:pageBreakBefore`` on the
+    body's first paragraph. The break's paragraph is a line of its own: on a contents page that
+    is full it went to the next page, broke it, and left that page blank (slotter zh, p. 3)."""
+    def replace(m: re.Match) -> str:
+        ppr = m.group(3)
+        ppr = (ppr + "<w:pageBreakBefore />") if ppr else "<w:pPr><w:pageBreakBefore /></w:pPr>"
+        return m.group(1) + m.group(2) + "<w:p>" + ppr
+    return _BREAK_AFTER_CONTENTS.sub(replace, document_xml, count=1)
+
+
+__all__ = ["body_on_a_new_page", "fill_table_of_contents"]
