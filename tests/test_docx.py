@@ -213,7 +213,7 @@ def test_running_header_names_title_and_student_and_properties_author_and_subjec
     assert "<dc:creator>Zhang San</dc:creator>" in core
     assert "<dc:subject>Course design — shaper</dc:subject>" in core
     document = _part(out, "word/document.xml")
-    assert re.search(r"<w:instrText[^>]*>\s*TOC \\o", document)       # table of contents
+    assert re.search(r"<w:instrText[^>]*>\s*PAGEREF _Toc\d+ \\h", document)       # table of contents
     assert re.search(r"<w:instrText[^>]*>\s*PAGE\s*<", _part(out, "word/footer1.xml"))
     alone = tmp_path / "alone.docx"
     render_docx(md, alone, {"title": "Course design", "lang": "en"}, TEMPLATES)
@@ -539,7 +539,9 @@ def test_code_in_a_table_keeps_its_words_whole_and_listings_fit_the_line(tmp_pat
 # w:overflowPunct="0" (Normal; Word: no punctuation past the margin, ISO/IEC 29500-1
 # §17.3.1.21) as its opposite (writerfilter/source/dmapper/DomainMapper.cxx: hanging
 # punctuation = (value == 0)) and hangs a closing CJK punctuation mark at a line end into the
-# margin: such a mark is let pass by up to one em. Skipped without soffice (CI has none).
+# margin: such a mark is let pass by up to one em. Review35 (slotter zh): every contents
+# entry shows its page number, and no page is blank (a page break's paragraph of its own after
+# a full contents page). Skipped without soffice (CI has none).
 _SOFFICE = shutil.which("soffice") or shutil.which("libreoffice")
 _CJK_CLOSING = set("，。、；：？！）」』】》〉”’")
 
@@ -575,7 +577,8 @@ def _outside_docx_block(pdf: Path) -> list[tuple[int, float, float, str]]:
 
 
 @pytest.mark.skipif(_SOFFICE is None, reason="LibreOffice (soffice) not installed")
-@pytest.mark.parametrize("brief, lang", [("cam_7_1", "zh"), ("furnace_drive", "en"), ("die_cutter", "zh")])
+@pytest.mark.parametrize("brief, lang", [("cam_7_1", "zh"), ("furnace_drive", "en"), ("die_cutter", "zh"),
+                                         ("slotter", "zh")])
 def test_word_report_laid_out_by_libreoffice_stays_in_the_text_block(brief, lang, tmp_path):
     import subprocess
 
@@ -596,6 +599,32 @@ def test_word_report_laid_out_by_libreoffice_stays_in_the_text_block(brief, lang
     assert pdf.is_file()
     assert _outside_docx_block(pdf) == []
     assert numbers_over_words(pdf) == []
+    assert _contents_without_page_numbers(pdf) == []
+    assert _blank_pages(pdf) == []
+
+
+def _contents_without_page_numbers(pdf: Path) -> list[str]:
+    """The contents page's entry lines (those with a dotted leader) that do not end in a page
+    number no smaller than the contents page's own; [] also if there are no entries at all."""
+    import pymupdf
+
+    with pymupdf.open(pdf) as doc:
+        lines = [line.strip() for line in doc[1].get_text().splitlines()]
+    entries = [line for line in lines if "....." in line]
+    if not entries:
+        return ["(no entries)"]
+    return [line for line in entries
+            if not (re.search(r"\.(\d+)$", line) and int(re.search(r"(\d+)$", line).group(1)) >= 2)]
+
+
+def _blank_pages(pdf: Path) -> list[int]:
+    """Pages that hold at most a running header and a page number (two text lines)."""
+    import pymupdf
+
+    with pymupdf.open(pdf) as doc:
+        return [number for number, page in enumerate(doc, 1)
+                if number > 1 and len([ln for ln in page.get_text().splitlines() if ln.strip()]) <= 2
+                and not page.get_image_info()]
 
 
 def test_a_short_chinese_word_in_a_cell_is_never_broken(tmp_path):
