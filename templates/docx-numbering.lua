@@ -15,7 +15,8 @@ Used by mechdesign.render.docx (pandoc 3 AST).  It
   * converts image widths given in percent to centimetres of the text width;
   * puts a title block (student, student no., class, supervisor, date) under
     the title and subtitle, followed by a page break, then the table of contents
-    (an empty TOC field; Word fills it on opening) on a page of its own.
+    (an empty TOC field; render/docx_toc.py writes its entries and page numbers) on a
+    page of its own.
 
 Metadata read: report-lang (else lang), labels.{student,student_id,class,teacher,date},
 student, student_id, class, teacher, date, docx-text-width (twips), toc-title.
@@ -516,7 +517,8 @@ end
 ---------------------------------------------------------------------------
 -- table of contents: after the title page, on a page of its own (pandoc's --toc would put
 -- it between the subtitle and the title block); an empty TOC field, as pandoc writes it,
--- that Word fills on opening and render/docx_toc.py fills for other readers
+-- that render/docx_toc.py replaces by the entries with their page numbers (and the page
+-- break below by w:pageBreakBefore on the body's first heading)
 
 local function contents_blocks(meta)
   local title = meta["toc-title"] and stringify(meta["toc-title"]) or ""

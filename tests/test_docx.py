@@ -213,7 +213,7 @@ def test_running_header_names_title_and_student_and_properties_author_and_subjec
     assert "<dc:creator>Zhang San</dc:creator>" in core
     assert "<dc:subject>Course design — shaper</dc:subject>" in core
     document = _part(out, "word/document.xml")
-    assert re.search(r"<w:instrText[^>]*>\s*TOC \\o", document)       # table of contents
+    assert re.search(r"<w:instrText[^>]*>\s*PAGEREF _Toc\d+ \\h", document)       # table of contents
     assert re.search(r"<w:instrText[^>]*>\s*PAGE\s*<", _part(out, "word/footer1.xml"))
     alone = tmp_path / "alone.docx"
     render_docx(md, alone, {"title": "Course design", "lang": "en"}, TEMPLATES)
@@ -370,9 +370,9 @@ def test_numbers_fit_their_columns_in_a_wide_table(tmp_path):
 
 
 def test_table_of_contents_after_the_title_page_with_an_entry_per_heading(tmp_path):
-    """Issue 22 (5): the contents page. Its TOC field stores an entry per heading (levels 1-3)
-    so that a reader that does not update fields (LibreOffice; Word when the user declines)
-    shows it, each a link to a bookmark around its heading; it stands on a page of its own
+    """Issue 22 (5): the contents page. It holds an entry per heading (levels 1-3) with its
+    page number, so that a reader that does not update a TOC field (LibreOffice; Word when
+    the user declines) shows it, each a link to a bookmark around its heading; it stands on a page of its own
     after the title block, not between the subtitle and the student's name."""
     md = _write_sample(tmp_path, "# Kinematics\n\nText.\n\n## Velocities\n\nText.\n\n"
                                  "### Polygon & scale\n\nText.\n\n#### Too deep\n\nText.\n\n"
@@ -391,15 +391,31 @@ def test_table_of_contents_after_the_title_page_with_an_entry_per_heading(tmp_pa
         heading = re.search(rf'<w:p><w:pPr><w:pStyle w:val="Heading\d" />(?:(?!</w:p>).)*'
                             rf'w:name="{anchor}"', document, flags=re.DOTALL)
         assert heading is not None, anchor
-    # the field: begin in the first entry, end after the last
-    assert re.search(r'<w:fldChar w:fldCharType="begin"[^>]*/></w:r><w:r><w:instrText[^>]*>TOC \\o', toc)
-    assert toc.count('w:fldCharType="end"') == 1
+    # each entry ends in a dotted leader to the right margin and its page number, a PAGEREF
+    # of the heading's bookmark that the reader computes (review35: LibreOffice showed the
+    # contents without page numbers: a TOC field's stored result, which cannot hold them)
+    width = int(re.search(r'<w:pgSz\b[^>]*\bw:w="(\d+)"', document).group(1)) - sum(
+        int(re.search(rf'<w:pgMar\b[^>]*\bw:{side}="(\d+)"', document).group(1)) for side in ("left", "right"))
+    paragraphs = re.findall(r"<w:p>.*?</w:p>", toc, flags=re.DOTALL)[1:]     # after the title
+    assert len(paragraphs) == 4
+    for paragraph, (_, anchor, _) in zip(paragraphs, entries):
+        assert f'<w:tab w:val="right" w:leader="dot" w:pos="{width}" />' in paragraph
+        assert re.search(rf'<w:tab /></w:r><w:r><w:fldChar w:fldCharType="begin" w:dirty="true" /></w:r>'
+                         rf'<w:r><w:instrText xml:space="preserve"> PAGEREF {anchor} \\h </w:instrText>', paragraph)
+    assert "TOC \\o" not in document
     # order: title block, page break, contents, page break, body
     name, toc_at = document.index("Name: Zhang San"), document.index("<w:sdt>")
     body = document.index("Kinematics</w:t>", document.index("</w:sdt>"))
     assert name < toc_at < body
     assert '<w:br w:type="page" />' in document[name:toc_at]
-    assert '<w:br w:type="page" />' in document[document.index("</w:sdt>"):body]
+    # the body's first heading starts the next page (w:pageBreakBefore), not a paragraph
+    # holding a page break: on a full contents page that paragraph went to a page of its own
+    # and left it blank (slotter zh p. 3, review35); no empty paragraph ends the contents
+    after = document[document.index("</w:sdt>"):body]
+    assert "<w:p>" in after and '<w:br w:type="page" />' not in after
+    first = after[after.index("<w:p>"):]
+    assert re.match(r'<w:p><w:pPr><w:pStyle w:val="Heading1" /><w:pageBreakBefore />', first), first[:200]
+    assert all(text for text in _paragraph_texts(toc)), _paragraph_texts(toc)
 
 
 def test_a_bracket_closed_in_a_superscript_base_becomes_a_delimiter(tmp_path):
@@ -523,7 +539,9 @@ def test_code_in_a_table_keeps_its_words_whole_and_listings_fit_the_line(tmp_pat
 # w:overflowPunct="0" (Normal; Word: no punctuation past the margin, ISO/IEC 29500-1
 # §17.3.1.21) as its opposite (writerfilter/source/dmapper/DomainMapper.cxx: hanging
 # punctuation = (value == 0)) and hangs a closing CJK punctuation mark at a line end into the
-# margin: such a mark is let pass by up to one em. Skipped without soffice (CI has none).
+# margin: such a mark is let pass by up to one em. Review35 (slotter zh): every contents
+# entry shows its page number, and no page is blank (a page break's paragraph of its own after
+# a full contents page). Skipped without soffice (CI has none).
 _SOFFICE = shutil.which("soffice") or shutil.which("libreoffice")
 _CJK_CLOSING = set("，。、；：？！）」』】》〉”’")
 
@@ -559,7 +577,8 @@ def _outside_docx_block(pdf: Path) -> list[tuple[int, float, float, str]]:
 
 
 @pytest.mark.skipif(_SOFFICE is None, reason="LibreOffice (soffice) not installed")
-@pytest.mark.parametrize("brief, lang", [("cam_7_1", "zh"), ("furnace_drive", "en"), ("die_cutter", "zh")])
+@pytest.mark.parametrize("brief, lang", [("cam_7_1", "zh"), ("furnace_drive", "en"), ("die_cutter", "zh"),
+                                         ("slotter", "zh")])
 def test_word_report_laid_out_by_libreoffice_stays_in_the_text_block(brief, lang, tmp_path):
     import subprocess
 
@@ -580,6 +599,32 @@ def test_word_report_laid_out_by_libreoffice_stays_in_the_text_block(brief, lang
     assert pdf.is_file()
     assert _outside_docx_block(pdf) == []
     assert numbers_over_words(pdf) == []
+    assert _contents_without_page_numbers(pdf) == []
+    assert _blank_pages(pdf) == []
+
+
+def _contents_without_page_numbers(pdf: Path) -> list[str]:
+    """The contents page's entry lines (those with a dotted leader) that do not end in a page
+    number no smaller than the contents page's own; [] also if there are no entries at all."""
+    import pymupdf
+
+    with pymupdf.open(pdf) as doc:
+        lines = [line.strip() for line in doc[1].get_text().splitlines()]
+    entries = [line for line in lines if "....." in line]
+    if not entries:
+        return ["(no entries)"]
+    return [line for line in entries
+            if not (re.search(r"\.(\d+)$", line) and int(re.search(r"(\d+)$", line).group(1)) >= 2)]
+
+
+def _blank_pages(pdf: Path) -> list[int]:
+    """Pages that hold at most a running header and a page number (two text lines)."""
+    import pymupdf
+
+    with pymupdf.open(pdf) as doc:
+        return [number for number, page in enumerate(doc, 1)
+                if number > 1 and len([ln for ln in page.get_text().splitlines() if ln.strip()]) <= 2
+                and not page.get_image_info()]
 
 
 def test_a_short_chinese_word_in_a_cell_is_never_broken(tmp_path):
@@ -605,3 +650,62 @@ def test_a_short_chinese_word_in_a_cell_is_never_broken(tmp_path):
     # (1.5 pt of room: LibreOffice broke "合格" in a column of 639 twips, 3 more than the two
     # characters and the margins)
     assert width >= 2 * half_points * 10 + _CELL_MARGINS + 30, (width, grid)
+
+
+def _rows(table: str) -> list[str]:
+    return re.findall(r"<w:tr>.*?</w:tr>", table, flags=re.DOTALL)
+
+
+def test_table_rows_never_split_and_a_short_table_stays_on_one_page(tmp_path):
+    """Review35 (Word): a row broke across two pages ("实际中心距" cut into "…中心" / "距",
+    slotter zh p. 31-32) and a short table left one row at a page foot (p. 35). Every row of
+    a data table may not split (w:cantSplit) and the header row repeats (w:tblHeader); a
+    table of at most SHORT_TABLE_ROWS rows keeps each row but the last with the next
+    (w:keepNext on all its paragraphs: the whole table on one page); a longer one may break
+    between rows."""
+    from mechdesign.render.docx_layout import SHORT_TABLE_ROWS
+
+    def table(n_rows: int, caption: str) -> str:
+        body = "".join(f"| 第 {k} 行 | {k}.0 |\n" for k in range(n_rows - 1))
+        return f"| 名称 | 数值 |\n|:--|--:|\n{body}\n: {caption}\n\n"
+    md = _write_sample(tmp_path, "# 表\n\n" + table(4, "短表") + table(SHORT_TABLE_ROWS + 5, "长表")
+                       + "$$ x = 1 $$\n")
+    out = tmp_path / "report.docx"
+    render_docx(md, out, METADATA, TEMPLATES)
+    document = _part(out, "word/document.xml")
+    ElementTree.fromstring(document)
+    tables = [t for t in re.findall(r"<w:tbl>.*?</w:tbl>", document, flags=re.DOTALL)
+              if "EquationTable" not in t]
+    assert [len(_rows(t)) for t in tables] == [4, SHORT_TABLE_ROWS + 5]
+    for t in tables:
+        rows = _rows(t)
+        assert all("<w:trPr><w:cantSplit />" in row for row in rows)
+        assert "<w:tblHeader" in rows[0] and not any("<w:tblHeader" in row for row in rows[1:])
+    short, long = (_rows(t) for t in tables)
+    for row in short[:-1]:
+        paragraphs = re.findall(r"<w:p>.*?</w:p>", row, flags=re.DOTALL)
+        assert paragraphs and all(re.match(r'<w:p><w:pPr><w:pStyle w:val="TableText\w*" /><w:keepNext />', p)
+                                  for p in paragraphs), row[:300]
+    assert "<w:keepNext" not in short[-1]
+    assert not any("<w:keepNext" in row for row in long)
+
+
+def test_a_list_of_formulas_in_one_inline_formula_may_break_between_its_items(tmp_path):
+    """Review35 (Word, slotter zh p. 25): "（峰值系数 $C_v = 2.000, C_a = 4.000, C_j = ∞$）"
+    is one formula object, which LibreOffice does not break: it went to the next line whole
+    and the justified line before it was letter-spaced ("推 程 0°–70°： 等 加 速 …"). The
+    formula becomes one per item, with ", " as text between them; a comma inside brackets
+    ("f(x, y)") or in a display formula stays in its formula."""
+    md = _write_sample(tmp_path, "# 凸轮\n\n**推程 0°–70°：等加速等减速运动规律（抛物线）**"
+                                 "（峰值系数 $C_v = 2.000, C_a = 4.000, C_j = ∞$），"
+                                 "函数 $f(x, y)$。\n\n$$ a = 1, b = 2 $$\n")
+    out = tmp_path / "report.docx"
+    render_docx(md, out, METADATA, TEMPLATES)
+    document = _part(out, "word/document.xml")
+    ElementTree.fromstring(document)
+    para = next(p for p in re.findall(r"<w:p>.*?</w:p>", document, flags=re.DOTALL) if "峰值系数" in p)
+    formulas = ["".join(re.findall(r"<m:t>([^<]*)</m:t>", f)) for f in re.findall(r"<m:oMath>.*?</m:oMath>", para)]
+    assert formulas == ["Cv=2.000", "Ca=4.000", "Cj=∞", "f(x,y)"]
+    assert para.count('<w:t xml:space="preserve">, </w:t>') == 2
+    display = re.search(r"<m:oMathPara>.*?</m:oMathPara>", document, flags=re.DOTALL).group(0)
+    assert display.count("<m:oMath>") == 1 and "<m:t>,</m:t>" in display

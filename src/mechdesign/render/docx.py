@@ -36,7 +36,8 @@ from pathlib import Path
 
 from ..fileio import atomic_path
 from .docx_math import align_broken_equations, group_scripted_brackets
-from .docx_toc import fill_table_of_contents
+from .docx_layout import keep_table_rows, split_inline_formula_lists
+from .docx_toc import body_on_a_new_page, fill_table_of_contents
 from .mathbreak import break_display_math
 
 #: Widest formula line for Word [em of the PDF's math font, as render/mathbreak estimates]:
@@ -198,9 +199,9 @@ _AFTER_UPDATE_FIELDS = ("hdrShapeDefaults", "footnotePr", "endnotePr", "compat",
 
 
 def _update_fields_on_open(settings: bytes) -> bytes:
-    """``<w:updateFields w:val="true"/>`` in word/settings.xml: Word fills the table of
-    contents (a field pandoc writes empty) when the document is opened, after asking the
-    user; without it the contents page stays empty until the user updates fields."""
+    """``<w:updateFields w:val="true"/>`` in word/settings.xml: Word updates the fields when
+    the document is opened, after asking the user: the page numbers of the table of contents
+    (``PAGEREF`` fields, :mod:`.docx_toc`), the captions' numbers, the running header."""
     xml = settings.decode("utf-8")
     if "<w:updateFields" in xml:
         return settings
@@ -265,7 +266,9 @@ def _finish(docx: Path, *, title: str, author: str, subject: str) -> None:
     name the student as author and the report as subject; broken display formulas become
     aligned lines that Word and LibreOffice both read, and a bracket closed in a script's
     base a delimiter (:mod:`.docx_math`); the table of
-    contents holds its entries before Word updates it (:mod:`.docx_toc`); "N·m", "s²", "25°"
+    contents holds its entries and their page numbers and the body starts on the next page
+    (:mod:`.docx_toc`); table rows do not split, short tables stay on one page and a list of
+    formulas in one inline formula may break between its items (:mod:`.docx_layout`); "N·m", "s²", "25°"
     in Chinese text take the Latin font's signs (:func:`latin_marks_in_latin_font`). The archive keeps
     its member order and dates (reproducible)."""
     with zipfile.ZipFile(docx) as zin:
@@ -279,7 +282,8 @@ def _finish(docx: Path, *, title: str, author: str, subject: str) -> None:
             data = data.replace(b"REPORT-AUTHOR", _xml_text(author).encode("utf-8"))
         elif name == "word/document.xml":
             xml = align_broken_equations(data.decode("utf-8"))
-            xml = fill_table_of_contents(group_scripted_brackets(xml))
+            xml = body_on_a_new_page(fill_table_of_contents(group_scripted_brackets(xml)))
+            xml = split_inline_formula_lists(keep_table_rows(xml))
             data = latin_marks_in_latin_font(xml).encode("utf-8")
         elif name == "word/settings.xml":
             data = _update_fields_on_open(data)

@@ -1,16 +1,16 @@
-"""The Word report's table of contents filled in before any reader updates it.
+"""The Word report's table of contents written out, page numbers included, for every reader.
 
-The table of contents is an empty ``TOC`` field (templates/docx-numbering.lua writes it, as
-pandoc's ``--toc`` does, on a page after the title page); render/docx sets ``w:updateFields``
-so that Word fills it when the file is opened. LibreOffice (and a Word whose user declines
-the update) shows the field's stored result, empty: a heading with nothing under it.
-
-:func:`fill_table_of_contents` stores a result in the form Word writes: one paragraph per
-heading of levels 1–3 (styles TOC 1–3 of reference.docx), the heading's number and text
-as a hyperlink to a ``_Toc`` bookmark around the heading. Without the page numbers: they
-are known only once a reader lays out the pages (LibreOffice shows a stored ``PAGEREF``
-result inside a table of contents as it is, and an empty one as nothing after a dotted
-leader); Word recomputes the whole field, page numbers included, on opening.
+templates/docx-numbering.lua writes an empty ``TOC`` field, as pandoc's ``--toc`` does, on a
+page after the title page. A reader that does not update fields shows its stored result:
+nothing. :func:`fill_table_of_contents` replaces the field by one paragraph per heading of
+levels 1–3 (styles TOC 1–3 of reference.docx): the heading's number and text, a dotted leader
+to the right margin and a ``PAGEREF`` field of a ``_Toc`` bookmark around the heading, all a
+hyperlink to the heading. A ``PAGEREF`` is computed by the reader as it lays out the pages:
+LibreOffice shows the right page numbers, and Word updates them on opening (render/docx sets
+``w:updateFields``; each field is also marked dirty). Inside a ``TOC`` field LibreOffice would
+show a stored page number as it is (there is none to store: the pages are laid out by the
+reader), which is why the entries stand outside one; Word's "Update Table" then has no field
+to update (References > Table of Contents inserts a new one).
 """
 from __future__ import annotations
 
@@ -39,10 +39,22 @@ def _levels(instruction: str) -> int:
     return int(found.group(1)) if found else 3
 
 
+def _text_width(document_xml: str) -> int:
+    """Width [twips] between the margins of the document's last section (A4 with 2.5 cm
+    margins if it names none): the position of the page numbers' right tab."""
+    sect = document_xml[document_xml.rfind("<w:sectPr"):]
+    page = re.search(r'<w:pgSz\b[^>]*\bw:w="(\d+)"', sect)
+    left = re.search(r'<w:pgMar\b[^>]*\bw:left="(\d+)"', sect)
+    right = re.search(r'<w:pgMar\b[^>]*\bw:right="(\d+)"', sect)
+    if page and left and right and int(page.group(1)) > int(left.group(1)) + int(right.group(1)):
+        return int(page.group(1)) - int(left.group(1)) - int(right.group(1))
+    return 11906 - 2 * 1418
+
+
 def fill_table_of_contents(document_xml: str) -> str:
-    """``word/document.xml`` with the empty TOC field given an entry per heading (levels up to
-    the field's ``\\o``), each heading wrapped in a ``_Toc`` bookmark. Unchanged if there is
-    no empty TOC field."""
+    """``word/document.xml`` with the empty TOC field replaced by an entry per heading (levels
+    up to the field's ``\\o``) with its page number, each heading wrapped in a ``_Toc``
+    bookmark. Unchanged if there is no empty TOC field."""
     field = _TOC_FIELD.search(document_xml)
     if field is None:
         return document_xml
@@ -66,17 +78,36 @@ def fill_table_of_contents(document_xml: str) -> str:
     tail = _HEADING.sub(mark, tail)
     if not entries:
         return document_xml
+    tab = (f'<w:tabs><w:tab w:val="right" w:leader="dot" w:pos="{_text_width(document_xml)}" />'
+           "</w:tabs>")
     paragraphs = []
-    for n, (level, name, text) in enumerate(entries):
-        opening = ('<w:r><w:fldChar w:fldCharType="begin" w:dirty="true" /></w:r>'
-                   f"<w:r>{field.group(1)}</w:r>"
-                   '<w:r><w:fldChar w:fldCharType="separate" /></w:r>') if n == 0 else ""
+    for level, name, text in entries:
         paragraphs.append(
-            f'<w:p><w:pPr><w:pStyle w:val="TOC{level}" /></w:pPr>{opening}'
+            f'<w:p><w:pPr><w:pStyle w:val="TOC{level}" />{tab}</w:pPr>'
             f'<w:hyperlink w:anchor="{name}" w:history="1">'
-            f'<w:r><w:t xml:space="preserve">{text}</w:t></w:r></w:hyperlink></w:p>')
-    paragraphs.append('<w:p><w:r><w:fldChar w:fldCharType="end" /></w:r></w:p>')
+            f'<w:r><w:t xml:space="preserve">{text}</w:t></w:r><w:r><w:tab /></w:r>'
+            '<w:r><w:fldChar w:fldCharType="begin" w:dirty="true" /></w:r>'
+            f'<w:r><w:instrText xml:space="preserve"> PAGEREF {name} \\h </w:instrText></w:r>'
+            '<w:r><w:fldChar w:fldCharType="separate" /></w:r>'
+            '<w:r><w:fldChar w:fldCharType="end" /></w:r></w:hyperlink></w:p>')
     return head[:field.start()] + "".join(paragraphs) + tail
 
 
-__all__ = ["fill_table_of_contents"]
+_BREAK_AFTER_CONTENTS = re.compile(
+    r'(</w:sdt>\s*)<w:p><w:r><w:br w:type="page" /></w:r></w:p>(\s*(?:<w:bookmarkStart [^>]*/>\s*)*)'
+    r'<w:p>(<w:pPr>(?:<w:pStyle [^>]*/>)?(?:<w:keepNext ?/>)?(?:<w:keepLines ?/>)?)?')
+
+
+def body_on_a_new_page(document_xml: str) -> str:
+    """``word/document.xml`` with the page break after the table of contents (a paragraph
+    holding a ``w:br``, templates/docx-numbering.lua) replaced by ``w:pageBreakBefore`` on the
+    body's first paragraph. The break's paragraph is a line of its own: on a contents page that
+    is full it went to the next page, broke it, and left that page blank (slotter zh, p. 3)."""
+    def replace(m: re.Match) -> str:
+        ppr = m.group(3)
+        ppr = (ppr + "<w:pageBreakBefore />") if ppr else "<w:pPr><w:pageBreakBefore /></w:pPr>"
+        return m.group(1) + m.group(2) + "<w:p>" + ppr
+    return _BREAK_AFTER_CONTENTS.sub(replace, document_xml, count=1)
+
+
+__all__ = ["body_on_a_new_page", "fill_table_of_contents"]

@@ -1,0 +1,108 @@
+"""Page and line breaks of the Word report that pandoc leaves to the reader.
+
+:func:`keep_table_rows`
+    pandoc writes table rows that may break across a page, so that a cell's word is cut in
+    two ("实际中心距" into "…中心" / "距", slotter zh), and a short table may leave its first
+    row alone at a page foot. Every row of a data table gets ``w:cantSplit``; a table of at
+    most :data:`SHORT_TABLE_ROWS` rows is kept on one page (``w:keepNext`` on the
+    paragraphs of every row but the last, as Word's "keep with next" does).
+    (pandoc already marks the header row ``w:tblHeader``: repeated on each page.)
+:func:`split_inline_formula_lists`
+    An inline formula is one unbreakable object for LibreOffice: a list of them in one
+    formula, "$C_v = 2.000, C_a = 4.000, C_j = ∞$", goes to the next line as a whole and the
+    justified line before it is letter-spaced ("推 程 0°–70°： 等 加 速 …"). The formula is
+    cut at its top-level commas into one formula per item, with ", " as text between them.
+"""
+from __future__ import annotations
+
+import re
+
+#: A table of at most this many rows (header included) is kept on one page.
+SHORT_TABLE_ROWS = 15
+
+_TABLE = re.compile(r"<w:tbl>.*?</w:tbl>", re.DOTALL)     # pandoc's tables are not nested
+_ROW = re.compile(r"<w:tr>(?:<w:trPr>(.*?)</w:trPr>)?", re.DOTALL)
+_PPR = re.compile(r"<w:pPr>((?:<w:pStyle [^>]*/>)?)")
+
+
+def _keep_with_next(row: str) -> str:
+    """Every paragraph of a row given ``w:keepNext`` (after its style: the schema's order)."""
+    row = re.sub(r"<w:p>(?!<w:pPr>)", "<w:p><w:pPr></w:pPr>", row)
+    return _PPR.sub(lambda m: m.group(0) if "<w:keepNext" in m.group(0)
+                    else f"<w:pPr>{m.group(1)}<w:keepNext />", row)
+
+
+def _keep_table(table: str) -> str:
+    if '<w:tblStyle w:val="EquationTable" />' in table:     # a numbered formula: one row, kept
+        return table
+
+    def cant_split(m: re.Match) -> str:
+        pr = m.group(1) or ""
+        if "<w:cantSplit" in pr:
+            return m.group(0)
+        return f"<w:tr><w:trPr><w:cantSplit />{pr}</w:trPr>"
+    table = _ROW.sub(cant_split, table)
+    rows = [m.start() for m in re.finditer(r"<w:tr>", table)]
+    if not 1 < len(rows) <= SHORT_TABLE_ROWS:
+        return table
+    return table[:rows[0]] + _keep_with_next(table[rows[0]:rows[-1]]) + table[rows[-1]:]
+
+
+def keep_table_rows(document_xml: str) -> str:
+    """``word/document.xml`` with no table row split across pages and short tables on one
+    page (see the module's docstring)."""
+    return _TABLE.sub(lambda m: _keep_table(m.group(0)), document_xml)
+
+
+_DISPLAY_MATH = re.compile(r"(<m:oMathPara>.*?</m:oMathPara>)", re.DOTALL)
+_INLINE_MATH = re.compile(r"<m:oMath>(.*?)</m:oMath>", re.DOTALL)
+_TAG = re.compile(r"<(/?)(m:[A-Za-z]+)\b[^>]*?(/?)>")
+_COMMA = re.compile(r'<m:r><m:rPr><m:sty m:val="p" /></m:rPr><m:t>,</m:t></m:r>')
+_OPENING, _CLOSING = "([{", ")]}"
+
+
+def _top_level_commas(body: str) -> list[re.Match]:
+    """The comma runs of a formula's body that are its direct children and stand outside
+    any bracket written as a run ("f(x, y)" keeps its comma)."""
+    depth, brackets, found = 0, 0, []
+    commas = {m.start(): m for m in _COMMA.finditer(body)}
+    for tag in _TAG.finditer(body):
+        if depth == 0 and tag.start() in commas and brackets == 0:
+            found.append(commas[tag.start()])
+        if tag.group(3):
+            continue
+        if tag.group(1):
+            depth -= 1
+        else:
+            depth += 1
+            if depth == 1 and tag.group(2) == "m:r":
+                text = re.match(r"<m:r>(?:<m:rPr>.*?</m:rPr>)?<m:t[^>]*>([^<]*)</m:t>",
+                                body[tag.start():], re.DOTALL)
+                if text:
+                    brackets += sum(text.group(1).count(c) for c in _OPENING)
+                    brackets -= sum(text.group(1).count(c) for c in _CLOSING)
+    return found
+
+
+def split_inline_formula_lists(document_xml: str) -> str:
+    """Each inline formula (an ``m:oMath`` outside ``m:oMathPara``) that lists items at its
+    top-level commas written as one formula per item with a text ", " between them."""
+    def split(m: re.Match) -> str:
+        body = m.group(1)
+        commas = _top_level_commas(body)
+        if not commas:
+            return m.group(0)
+        pieces, start = [], 0
+        for comma in commas:
+            pieces.append(body[start:comma.start()])
+            start = comma.end()
+        pieces.append(body[start:])
+        if any(not piece.strip() for piece in pieces):
+            return m.group(0)
+        glue = '</m:oMath><w:r><w:t xml:space="preserve">, </w:t></w:r><m:oMath>'
+        return "<m:oMath>" + glue.join(pieces) + "</m:oMath>"
+    parts = _DISPLAY_MATH.split(document_xml)     # odd indices: display formulas, kept
+    return "".join(part if k % 2 else _INLINE_MATH.sub(split, part) for k, part in enumerate(parts))
+
+
+__all__ = ["SHORT_TABLE_ROWS", "keep_table_rows", "split_inline_formula_lists"]
