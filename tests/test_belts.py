@@ -137,27 +137,26 @@ def test_tip_undercut_contact_ratio_closed_forms():
 
 
 def test_undercut_x_min():
-    """x_min = h_a*(z_min − z)/z_min with z_min = 2h_a*/sin²α = 17.097 (α = 20°), the number
-    the undercut warning uses (tests/test_diagnostics.py::test_undercut_gear_in_a_drive); the
-    check used the rounded 17 before (x_min = 3/17 for z = 14), so a gear the warning called
-    undercut passed the check."""
-    z_min = 2 / math.sin(math.radians(20)) ** 2
-    pair = gears.spur_pair(2 * MM, 14, 40)            # z = 14 < 17.1, no shift: undercut
+    """x_min = h_a*(z_min − z)/z_min with the textbook's z_min = 17 (孙桓: α = 20°, h_a* = 1),
+    the number the undercut warning uses too (tests/test_diagnostics.py::
+    test_undercut_gear_in_a_drive), so check and warning agree."""
+    z_min = 17
+    pair = gears.spur_pair(2 * MM, 14, 40)            # z = 14 < 17, no shift: undercut
     c = [c for c in de.gear_geometry_checks(_design(pair, pair.contact_ratio), None) if c.key == "undercut"]
     assert not c[0].passed and c[1].passed
-    assert c[0].inputs["x_min"] == pytest.approx((z_min - 14) / z_min, rel=1e-9)   # 0.1811
+    assert c[0].inputs["x_min"] == pytest.approx((z_min - 14) / z_min, rel=1e-9)   # 3/17 = 0.1765
     assert c[0].inputs["x_min"] == pytest.approx(pair.x_min1, rel=1e-12)            # = the warning's
     shifted = gears.spur_pair(2 * MM, 14, 40, x1=0.19, x2=-0.19)
     c = [c for c in de.gear_geometry_checks(_design(shifted, shifted.contact_ratio), None) if c.key == "undercut"]
     assert c[0].passed
-    # 3/17 = 0.1765 < 0.1811: undercut by the exact z_min (the old check passed it)
-    short = gears.spur_pair(2 * MM, 14, 40, x1=3 / 17, x2=-3 / 17)
+    # just below x_min = 3/17: undercut
+    short = gears.spur_pair(2 * MM, 14, 40, x1=0.17, x2=-0.17)
     c = [c for c in de.gear_geometry_checks(_design(short, short.contact_ratio), None) if c.key == "undercut"]
     assert not c[0].passed
-    # a standard 17-tooth pinion: 17 < 17.097, undercut (the warning says so too)
+    # a standard 17-tooth pinion: z = z_min, free of undercut (the textbook's limit)
     c = [c for c in de.gear_geometry_checks(_design(gears.spur_pair(2 * MM, 17, 40), 1.6), None)
          if c.key == "undercut"]
-    assert not c[0].passed and c[0].allowable == pytest.approx(z_min)
+    assert c[0].passed and c[0].allowable == pytest.approx(z_min)
 
 
 def test_x1_1_5_on_z1_20_fails_by_name():

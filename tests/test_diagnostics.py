@@ -359,19 +359,19 @@ def test_cam_pressure_angle_finding():
 # ----------------------------------------------------------------- undercut gears and cams
 
 def test_undercut_gear_in_the_shaper():
-    """z1 = 12, α = 20°, h_a* = 1: z_min = 2/sin²20° = 17.1, x_min = (17.1 − 12)/17.1 = 0.298."""
+    """z1 = 12, α = 20°, h_a* = 1: z_min = 17 (孙桓), x_min = (17 − 12)/17 = 0.294."""
     data = example("shaper.yaml")
     data["gear_pair"]["z1"] = 12
     r = run(data, stop_after="gear")
     (f,) = [f for f in r["gear"].warnings if f.code == "undercut"]
-    z_min = 2 / math.sin(math.radians(20)) ** 2
+    z_min = 17
     x_min = (z_min - 12) / z_min
     zh, en = both(f)
     assert f"{z_min:.1f}" in en and f"{x_min:.3f}" in en and f"{x_min:.3f}" in zh
     # the brief field is the finding's field (the terminal names it), not part of the
-    # report's prose; the least tooth number is ceil(z_min) = 18
+    # report's prose; the least tooth number is z_min = 17
     assert f.field == "gear_pair.x1" and "gear_pair" not in en + zh
-    assert f"x ≥ {x_min:.3f}" in en and "at least 18 teeth" in en and "≥ 18" in zh
+    assert f"x ≥ {x_min:.3f}" in en and "at least 17 teeth" in en and "≥ 17" in zh
 
 
 def test_undercut_gear_in_a_drive():
@@ -383,12 +383,12 @@ def test_undercut_gear_in_a_drive():
     r = run(data)
     found = [f for f in r["drive"].warnings if f.code == "undercut"]
     assert found, [f.en for f in r["drive"].warnings]
-    z_min = 2 / math.sin(math.radians(20)) ** 2
+    z_min = 17                                        # 孙桓: α = 20°, h_a* = 1
     zh, en = both(found[0])
     # the brief field is the finding's (the terminal names it), not the report's prose
     assert f"{(z_min - 12) / z_min:.3f}" in en and found[0].field == "drive.stages[2].x1"
-    assert "drive.stages" not in en + zh and "at least 18 teeth" in en
-    assert "≥ 18" in zh and "根切" in zh
+    assert "drive.stages" not in en + zh and "at least 17 teeth" in en
+    assert "≥ 17" in zh and "根切" in zh
 
 
 def test_roller_cam_undercut_and_pointed():

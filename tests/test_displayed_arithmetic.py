@@ -118,3 +118,46 @@ def test_displayed_chains_give_their_printed_results(example_results, name, lang
     md, _ = _markdown(example_results, name, lang)
     faults = chain_faults(md)
     assert not faults, "\n".join(faults)
+
+
+# the known-loads line of a group's section: "$F_{R54}$ (link 4) = 1662.5 N" / "（构件 4）= …"
+LOAD = re.compile(r"\$([^$]+)\$ ?(?:\(link \d+\)|（构件 \d+）) ?= (-?[\d.\u202f ]+?) N")
+
+
+def load_faults(md: str) -> list[str]:
+    """A known load printed in its group's known-loads line with other digits than the
+    same force as a factor of the group's moment equations (review 34: "F_R54 = 1662 N"
+    above "1662.5 × 112.5"): one value of one quantity in one section. A factor is the
+    load's when the two agree to the coarser one's last digit and no other load of the line
+    is nearer (two forces of nearly one magnitude: F_I2 = 127.83, F_I3 = 127.8)."""
+    out = []
+    for section in re.split(r"\n#### ", md):
+        line = next((x for x in section.splitlines() if LOAD.search(x)), None)
+        if line is None:
+            continue
+        loads = [(name, v.replace("\u202f", "").replace(" ", "")) for name, v in LOAD.findall(line)]
+        for m in PRODUCT.finditer(section):
+            x = m.group(2)
+            name, printed = min(loads, key=lambda ld: abs(_value(ld[1]) - _value(x)))
+            half = max(_half_unit(x), _half_unit(printed))
+            if x != printed and abs(_value(x) - _value(printed)) <= half * (1 + 1e-9):
+                out.append(f"{name} = {printed} N in the known loads, {x} in an equation")
+    return out
+
+
+def test_the_scan_finds_a_load_printed_with_other_digits():
+    loads = r"Known loads: $G_{4}$ (link 4) = 157 N, $F_{R54}$ (link 4) = 1662 N. Moment equations:"
+    eq = r"$$ \Sigma M_{O3}(4) = F_{R34} \times 74.0 + (157 \times 1.0 + 1662.5 \times 112.5) = 0 $$"
+    zh = r"已知力：$G_{4}$（构件 4）= 157 N，$F_{R54}$（构件 4）= 1662 N。力矩方程："
+    assert load_faults(f"#### Group 3–4\n\n{loads}\n\n{eq}\n") == [
+        "F_{R54} = 1662 N in the known loads, 1662.5 in an equation"]
+    assert len(load_faults(f"#### 杆组 3–4\n\n{zh}\n\n{eq}\n")) == 1
+    assert not load_faults(f"#### Group 3–4\n\n{loads.replace('1662 N', '1662.5 N')}\n\n{eq}\n")
+
+
+@pytest.mark.parametrize("lang", ["zh", "en"])
+@pytest.mark.parametrize("name", EXAMPLES)
+def test_known_loads_print_the_digits_of_their_equations(example_results, name, lang):
+    md, _ = _markdown(example_results, name, lang)
+    faults = load_faults(md)
+    assert not faults, "\n".join(faults)

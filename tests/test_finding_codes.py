@@ -114,10 +114,10 @@ def _overridden_shaft() -> dict:
 
 
 def _undercut_press() -> dict:
-    """The press's gear pair unshifted: z1 = 17 at α = 20°, ha* = 1 is (slightly) undercut
-    (x_min = ha*(17.1 − 17)/17.1 = 0.0057 > 0; the example shifts it by 0.01)."""
+    """The press's gear pair with a 16-tooth standard pinion: below z_min = 17 (α = 20°,
+    ha* = 1), x_min = ha*(17 − 16)/17 = 0.059 > 0: undercut."""
     data = read_brief_data(DESIGNS / "press.yaml")
-    data["gear_pair"]["x1"], data["gear_pair"]["x2"] = 0.0, 0.0
+    data["gear_pair"]["z1"], data["gear_pair"]["x1"], data["gear_pair"]["x2"] = 16, 0.0, 0.0
     return data
 
 

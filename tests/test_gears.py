@@ -65,12 +65,33 @@ def test_profile_shifted_pair_meshes_without_backlash(x1, x2):
     assert g.clearance == pytest.approx(0.25 * 5, rel=1e-12)       # tips shortened by Δy m
 
 
-def test_undercut_limits():
-    """z_min = 2 ha*/sin²α = 17.1 for α = 20°; x_min = ha*(z_min − z)/z_min (17/17 rule)."""
+def test_undercut_limits_are_the_textbooks():
+    """孙桓《机械原理》 (变位齿轮): a standard gear cut by a rack has no undercut for
+    z ≥ z_min = 17 (α = 20°, h_a* = 1) and z_min = 14 for short teeth (h_a* = 0.8); a gear
+    below it needs the shift x ≥ x_min = h_a*(z_min − z)/z_min, (17 − z)/17 for α = 20°,
+    h_a* = 1. The textbook's numbers, not 2h_a*/sin²α = 17.10 (13.68 for h_a* = 0.8)."""
     g = spur_pair(2, 12, 40)
-    assert g.z_min == pytest.approx(17.097, abs=1e-3)
-    assert g.x_min1 == pytest.approx((17.097 - 12) / 17.097, abs=1e-4)
-    assert g.x_min2 < 0
+    assert g.z_min == 17
+    assert g.x_min1 == pytest.approx(5 / 17, rel=1e-12)
+    assert g.x_min2 == pytest.approx(-23 / 17, rel=1e-12)
+    assert spur_pair(2, 17, 40).x_min1 == 0.0                       # 17 teeth: standard gear
+    assert spur_pair(2, 12, 40, ha_star=0.8).z_min == 14
+    assert spur_pair(2, 12, 40, ha_star=0.8).x_min1 == pytest.approx(0.8 * 2 / 14, rel=1e-12)
+
+
+def test_a_17_tooth_standard_pinion_loses_no_working_involute():
+    """Why the textbook accepts z = 17 below 2h_a*/sin²α = 17.10: the rack's tip line passes
+    the limit point N by (h_a* − z sin²α/2) m = 0.0057 m, the generated flank leaves the
+    involute only at the base circle, and a mating 51-tooth gear's tip first touches the
+    pinion higher up, at √(r_b² + N₁B₂²) (B₂ where the gear's tip circle cuts N₁N₂)."""
+    from mechdesign.core.gears import form_radius
+
+    p = spur_pair(5, 17, 51)
+    assert (1 - 17 * np.sin(D(20)) ** 2 / 2) * 5 == pytest.approx(0.02844, abs=1e-5)
+    rb1, rb2, ra2 = 85 / 2 * np.cos(D(20)), 255 / 2 * np.cos(D(20)), 265 / 2
+    n1b2 = 170 * np.sin(D(20)) - np.sqrt(ra2**2 - rb2**2)
+    lowest_contact = np.hypot(rb1, n1b2)
+    assert form_radius(p.g1, 5, p.alpha) < rb1 + 1e-4 < lowest_contact - 0.02
 
 
 def test_tip_thickness_of_a_strongly_shifted_pinion_gets_small():

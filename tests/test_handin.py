@@ -188,8 +188,8 @@ def test_every_failed_check_is_named_failed_in_the_summary(handin_reports, name,
     if failed_rows:
         assert ("设计者应注意" in text) or ("should watch" in text)
     elif rows and (("设计者应注意" in text) or ("should watch" in text)):
-        # every check passed, yet the run found problems no check covers (the press's gear 1,
-        # z = 17 < z_min = 2/sin²20° = 17.1, undercuts): "all passed" must not stand alone
+        # every check passed, yet the run found problems no check covers (e.g. an undercut
+        # gear pair's finding): "all passed" must not stand alone
         assert "不在这些校核之内" in text or "outside these checks" in text, text
     # one verdict vocabulary: no other verdict words in the summary's table
     for word in ("满足", "✓", "fails", " ok "):

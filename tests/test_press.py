@@ -132,21 +132,17 @@ def test_report_renders_with_every_section(tmp_path, lang, heads):
         assert (out / "sheets" / f"{sheet}.dxf").exists(), sheet
 
 
-def test_pinion_has_the_least_hundredth_shift_that_avoids_undercut(r):
-    """z1 = 17 < z_min = 2 h_a*/sin²α (孙桓: 17 at α = 20°, h_a* = 1): the standard pinion would
-    be undercut. The least shift is x_min = h_a*(z_min − z1)/z_min = 0.0057; the example takes
-    the smallest shift in hundredths above it, x1 = 0.01, and x2 = −x1 (height modification),
-    so the centre distance stays m(z1 + z2)/2 and the addendum circles move by ±x m."""
+def test_pinion_is_a_standard_gear_at_the_textbooks_least_tooth_number(r):
+    """z1 = 17 = z_min (孙桓《机械原理》: 17 at α = 20°, h_a* = 1), so x_min = h_a*(17 − 17)/17 = 0:
+    standard gears, no undercut finding, the standard centre distance m(z1 + z2)/2 and the
+    standard tips d_a = m(z + 2h_a*)."""
     g = r["gear"]
     pair = g.pair
-    alpha, ha, m, z1, z2 = math.radians(20.0), 1.0, 0.005, 17, 51
-    z_min = 2 * ha / math.sin(alpha) ** 2
-    x_min = ha * (z_min - z1) / z_min
-    assert abs(x_min - 0.005689) < 1e-6
-    assert pair.g1.x == math.ceil(x_min * 100) / 100 == 0.01
-    assert pair.g1.x >= x_min and pair.g1.x + pair.g2.x == 0.0
-    assert abs(pair.a - m * (z1 + z2) / 2) < 1e-12 and abs(pair.a_work - 0.170) < 1e-12
-    assert abs(pair.g1.da - (m * z1 + 2 * (ha + 0.01) * m)) < 1e-12
-    assert abs(pair.g2.da - (m * z2 + 2 * (ha - 0.01) * m)) < 1e-12
-    assert abs(pair.g1.df - (m * z1 - 2 * (ha + 0.25 - 0.01) * m)) < 1e-12
+    ha, m, z1, z2 = 1.0, 0.005, 17, 51
+    assert pair.z_min == 17 and pair.x_min1 == 0.0
+    assert pair.g1.x == pair.g2.x == 0.0
     assert not [w for w in g.warnings if w.code == "undercut"]
+    assert abs(pair.a - m * (z1 + z2) / 2) < 1e-12 and abs(pair.a_work - 0.170) < 1e-12
+    assert abs(pair.g1.da - m * (z1 + 2 * ha)) < 1e-12
+    assert abs(pair.g2.da - m * (z2 + 2 * ha)) < 1e-12
+    assert abs(pair.g1.df - (m * z1 - 2 * (ha + 0.25) * m)) < 1e-12

@@ -289,6 +289,24 @@ EXPECTED["slotter"] += [(path, _FLY35) for path in (
 # rpm for 240) likewise; the default group (80.29 > 80 rpm on the crank shaft) keeps its flywheel.
 EXPECTED["stem:shaper"] = EXPECTED.get("stem:shaper", []) + [(path, _FLY35 + "; shaper data groups") for path in (
     "flywheel.*", "linkage.flywheel.*", "drive.shaft_designs.*")]
+# Issue 19 (session 35): the least tooth number without undercut is the textbook's z_min = 17
+# (孙桓《机械原理》: 2h_a*/sin²α = 17.10 rounded, core.gears.least_teeth), and
+# x_min = h_a*(17 − z)/17 follows (shaper/slotter x_min1 −0.0528 → −0.0588). The press's
+# pinion, z1 = 17 = z_min, is a standard gear now: x1 = +0.01, x2 = −0.01 → 0, 0 (d_a1
+# 95.10 → 95.00 mm, d_a2 264.90 → 265.00 mm, ε 1.635 → 1.636); a 17-tooth standard pinion's
+# rack tip passes N1 by 0.028 mm, which cuts the involute only at the base circle, below the
+# lowest contact point (tests/test_gears.py).
+_ZMIN35 = "issue 19 (session 35): z_min = 17, the textbook's (2h_a*/sin²α = 17.10 rounded)"
+for _machine in ("shaper", "slotter", "press"):
+    EXPECTED.setdefault(_machine, []).extend(
+        (f"gear.pair.{leaf}", _ZMIN35) for leaf in ("z_min", "x_min1", "x_min2"))
+EXPECTED["press"] += [(f"gear.pair.{leaf}", _ZMIN35 + "; the press's pair standard: x1 = x2 = 0")
+                      for leaf in ("g1.*", "g2.*", "contact_ratio", "action_length")]
+for _machine in ("drive", "furnace_pusher", "die_cutter"):
+    EXPECTED.setdefault(_machine, []).extend(
+        (f"drive.stages.*.design.{leaf}", _ZMIN35) for leaf in (
+            "geometry.z_min", "geometry.x_min1", "geometry.x_min2",
+            "checks.*.inputs.z_min", "checks.*.inputs.x_min", "checks.*.allowable"))
 
 # Self-check residuals: round-off, not results. Compared only as "still tiny".
 IGNORED = ("*closure_residual", "*stroke_error", "*power_balance_residual", "*power_residual*",

@@ -78,7 +78,8 @@ class SpurPair:
     ratio: float = q("1", "gear ratio u = z2/z1")
     contact_ratio: float = q("1", "contact ratio ε")
     action_length: float = q("m", "B1B2, the actual line of action")
-    z_min: float = q("1", "smallest tooth number without undercut (standard, this α, h_a*)")
+    z_min: float = q("1", "least tooth number of a standard gear without undercut, 2h_a*/sin²α "
+                          "rounded to the nearest integer (Sun Huan: 17 at α = 20°, h_a* = 1)")
     x_min1: float = q("1", "smallest shift avoiding undercut, gear 1")
     x_min2: float = q("1", "smallest shift avoiding undercut, gear 2")
 
@@ -92,6 +93,16 @@ def _gear(m, z, x, alpha, ha, hf) -> GearDims:
     alpha_a = float(np.arccos(db / da))
     sa = s * da / d - da * (inv(alpha_a) - inv(alpha))
     return GearDims(z, x, d, db, da, df, ha, hf, s, e, float(sa), alpha_a)
+
+
+def least_teeth(alpha: float = np.radians(20.0), ha_star: float = 1.0) -> float:
+    """The least tooth number z_min of a standard gear cut by a rack without undercut, as the
+    textbook states it (孙桓《机械原理》, 变位齿轮: z_min = 17 for α = 20°, h_a* = 1; 14 for
+    short teeth, h_a* = 0.8): the limit 2h_a*/sin²α rounded to the nearest integer. The
+    rounding accepts a 17-tooth standard gear although 2/sin²20° = 17.10: its rack tip line
+    passes the limit point N by (1 − 17 sin²20°/2) m = 0.0057 m, which cuts the involute only
+    within 10⁻⁶ m of the base circle, below where any mating gear's tip reaches."""
+    return float(np.rint(2 * ha_star / np.sin(alpha) ** 2))
 
 
 def spur_pair(m: float, z1: int, z2: int, alpha: float = np.radians(20.0), ha_star: float = 1.0,
@@ -108,7 +119,7 @@ def spur_pair(m: float, z1: int, z2: int, alpha: float = np.radians(20.0), ha_st
     g2 = _gear(m, z2, x2, alpha, (ha_star + x2 - dy) * m, (ha_star + c_star - x2) * m)
     eps = (z1 * (np.tan(g1.alpha_a) - np.tan(alpha_w)) + z2 * (np.tan(g2.alpha_a) - np.tan(alpha_w))) / (2 * np.pi)
     pb = np.pi * m * np.cos(alpha)
-    z_min = 2 * ha_star / np.sin(alpha) ** 2
+    z_min = least_teeth(alpha, ha_star)
     return SpurPair(m, alpha, ha_star, c_star, g1, g2, np.pi * m, pb, a, a_w, alpha_w, y, dy,
                     a_w - g1.da / 2 - g2.df / 2, z2 / z1, float(eps), float(eps * pb), z_min,
                     ha_star * (z_min - z1) / z_min, ha_star * (z_min - z2) / z_min)
@@ -121,7 +132,8 @@ def spur_pair(m: float, z1: int, z2: int, alpha: float = np.radians(20.0), ha_st
 # numbered counter-clockwise. The outline is the one the pair's basic rack generates: straight
 # flanks at α, tip line hf + x m below the reference line, tip corners rounded with the
 # standard radius ρf = c* m / (1 − sin α) (0.38 m for c* = 0.25), tangent to the tip line and
-# to the flank at the depth ha* m, so that "no undercut" is exactly x ≥ x_min.
+# to the flank at the depth ha* m, so that the outline is undercut exactly when
+# x < h_a* − z sin²α/2 (the exact limit; x_min rounds z_min to the textbook's integer).
 #   * Involute flank: half angular thickness at radius ρ (from s_ρ = s ρ/r − 2ρ(inv α_ρ − inv α))
 #         ψ(ρ) = s/(2r) − (inv α_ρ − inv α),   cos α_ρ = rb/ρ.
 #   * Root fillet: the envelope of the rounded tip. Rolling the rack's pitch line on the pitch
@@ -130,7 +142,7 @@ def spur_pair(m: float, z1: int, z2: int, alpha: float = np.radians(20.0), ha_st
 #     and the rounding's centre C touches the gear where the normal from the rolling point
 #     meets it: X = C + ρf (C − P)/|C − P|, for k from 0 (bottom: the root circle) to h_C cot α
 #     (the rounding's end at the flank, then on the line of action: the form circle, where
-#     the fillet meets the involute tangentially). If that end lies beyond N (x < x_min) the
+#     the fillet meets the involute tangentially). If that end lies beyond N the
 #     fillet cuts the involute instead: the outline is the generated, undercut one.
 
 

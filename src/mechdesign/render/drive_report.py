@@ -314,10 +314,12 @@ def stage_designs(d, lang: str) -> list[dict]:
                           K=f(g.K, 3), T2=sig(g.T2, group=False), m_text=m_text, q=f(geo.q, 0),
                           sigma_H=f(a['sigma_H'] / 1e6, 1), sigma_F=f(a['sigma_F'] / 1e6, 1),
                           N=f(a['N'] / 1e6, 2)))
+            # the efficiency relation displayed: inline, its unbreakable run spread the line
+            # before it to 15 pt word spaces (tests/test_typeset.py wide_word_gaps)
             text.append(_("Sliding speed $v_s = {vs}$ m/s, equivalent friction angle $\\varphi_v = "
-                          "{phi_v}°$, efficiency $\\eta = 0.95\\tan\\gamma/\\tan(\\gamma+\\varphi_v) = {eta}$ "
-                          "(used in the efficiency chain).", vs=f(e['vs'], 3),
-                          phi_v=f(np.degrees(e['phi_v']), 2), eta=f(e['eta'], 4)))
+                          "{phi_v}°$; worm-drive efficiency:", vs=f(e['vs'], 3),
+                          phi_v=f(np.degrees(e['phi_v']), 2)))
+            text.append(rf"$$ \eta = 0.95\,\frac{{\tan\gamma}}{{\tan(\gamma+\varphi_v)}} = {f(e['eta'], 4)} $$")
             for c in g.checks:
                 if c.key == "worm_deflection":    # issue 20: 濮良贵 ch.11 stiffness check
                     i = c.inputs
@@ -348,11 +350,14 @@ def stage_designs(d, lang: str) -> list[dict]:
         for k, step in enumerate(sh.steps, 1):
             said = decode(step).text(_)
             text.append(_("Step {k}: {sen}.", k=k, sen=said, szh=said))
-        text.append(_("Reactions (strength case): $R_{{AH}} = {RAh}$ N, $R_{{AV}} = {RAv}$ N, "
-                      "$R_{{BH}} = {RBh}$ N, $R_{{BV}} = {RBv}$ N; largest equivalent moment at x = "
-                      "{x} mm, M = {M} N·m.", RAh=f(res.RAh, 1), RAv=f(res.RAv, 1),
-                      RBh=f(res.RBh, 1), RBv=f(res.RBv, 1), x=f(res.critical.x * MM, 0),
+        # the reactions displayed: four "R = … N" runs in a justified line spread its few word
+        # spaces (tests/test_typeset.py wide_word_gaps)
+        text.append(_("Largest equivalent moment M = {M} N·m at x = {x} mm; bearing reactions "
+                      "(strength case):", x=f(res.critical.x * MM, 0),
                       M=sig(res.critical.M)))
+        text.append("$$ " + r",\quad ".join(
+            rf"R_{{{k}}} = {f(v, 1)}\ \mathrm{{N}}"
+            for k, v in (("AH", res.RAh), ("AV", res.RAv), ("BH", res.RBh), ("BV", res.RBv))) + " $$")
         if sh.bearing is not None:
             b = sh.bearing
             text.append(_("Bearings {designation} (d = {d} mm, $C_r$ = {Cr} kN); the life takes the "

@@ -64,6 +64,7 @@ def gear_context(g, lang: str, figures: dict[str, str]) -> dict:
         [_("contact ratio"), "$\\varepsilon_\\alpha$", _("see below"), f(p.contact_ratio, 3), "—"],   # as eq. and sheet
     ]
     tw = np.tan(p.alpha_work)
+    limit = 2 * p.ha_star / np.sin(p.alpha) ** 2       # the exact limit; z_min is it rounded
     b1b2 = g.drawing.action_length   # |B1B2| from the points on the line of action
     eq = {
         # the general form and the numbers on two lines: one line runs past the margin
@@ -74,17 +75,27 @@ def gear_context(g, lang: str, figures: dict[str, str]) -> dict:
                  rf" = {f(b1b2 * MM, 2)}\ \text{{mm}}, \quad \frac{{\overline{{B_1B_2}}}}{{p_b}} = "
                  rf"\frac{{{f(b1b2 * MM, 2)}}}{{{f(p.pb * MM, 2)}}} = {sig(b1b2 / p.pb, group=False)}"),
         "zmin": (rf"z_{{min}} = \frac{{2h_a^*}}{{\sin^2\alpha}} = \frac{{2\times{f(p.ha_star, 2)}}}"
-                 rf"{{\sin^2 {f(p.alpha * DEG, 1)}°}} = {f(p.z_min, 2)}, \quad x_{{min}} = "
+                 rf"{{\sin^2 {f(p.alpha * DEG, 1)}°}} = {f(limit, 2)} \approx {f(p.z_min, 0)}, \quad x_{{min}} = "
                  rf"h_a^*\frac{{z_{{min}}-z}}{{z_{{min}}}}: \ x_{{min,1}} = {f(p.x_min1, 3)},\ "
                  rf"x_{{min,2}} = {f(p.x_min2, 3)}"),
     }
     undercut = [w for w in g.warnings if w.code == "undercut"]
+    # a gear at or above the textbook's z_min but below the exact limit 2h_a*/sin²α: its rack
+    # tip line passes the limit point N by (h_a* − z sin²α/2 − x) m; the mating tip's lowest
+    # contact point on it, r = √(r_b² + N B²), shows whether the cut involute is ever used
+    slight = []
+    for gd, other, x_min in ((g1, g2, p.x_min1), (g2, g1, p.x_min2)):
+        depth = (p.ha_star - gd.z * np.sin(p.alpha) ** 2 / 2 - gd.x) * p.m
+        if depth > 0 and gd.x >= x_min - 1e-9:
+            nb = p.a_work * np.sin(p.alpha_work) - np.sqrt((other.da / 2) ** 2 - (other.db / 2) ** 2)
+            slight.append({"z": str(gd.z), "depth": f(depth * MM, 3), "rb": f(gd.db / 2 * MM, 2),
+                           "r": f(np.hypot(gd.db / 2, nb) * MM, 2)})
     return {
         "rows": rows, "pair_rows": pair_rows, "eq": eq, "shifted": shifted,
         # height modification (x1 + x2 = 0): standard centre distance and pressure angle kept
         "height_mod": shifted and abs(g1.x + g2.x) < 1e-12,
         "z1": str(g1.z), "z2": str(g2.z), "m": f(p.m * MM, 2), "eps": f(p.contact_ratio, 3),
-        "zmin": f(p.z_min, 1), "undercut": bool(undercut),
+        "zmin": f(p.z_min, 0), "undercut": bool(undercut), "slight": slight,
         "warnings": [md_text(w.text(lang)) for w in g.warnings],
         "fig": figures,
     }

@@ -568,18 +568,21 @@ def _gives(value: float, printed: str) -> bool:
     return abs(value - float(printed)) <= 0.5 * 10.0 ** -_digits(printed) * (1 + 1e-9)
 
 
-def _moment_tex(m, gives=None) -> tuple[str, float, float, float]:
+def _moment_tex(m, gives=None, least=None, shown=None) -> tuple[str, float, float, float]:
     """The known forces' moments "F × h" (h in mm on the drawing) as one sum, their value
     [N·mm of the drawing], the couples' sum [N·m] and the sum of the products as printed.
     The forces are written with the digits that make ``gives(printed sum)`` true — by
     default, the printed products give the sum as the equation prints it, to its last digit
-    (the rule of every displayed chain: its printed factors reproduce its printed result)."""
+    (the rule of every displayed chain: its printed factors reproduce its printed result) —
+    and with at least ``least[name]`` extra decimals; ``shown[name]`` collects each force as
+    printed (the most decimals any equation gave it)."""
     arms = [t for t in m.terms if t.arm]
     total = sum(t.force * t.arm * t.sign for t in arms)
     couples = sum(t.value for t in m.terms if not t.arm)
     gives = gives or (lambda s: _gives(s, _num(total)))
+    least = least or {}
     for extra in range(6):
-        printed = [_factor(t.force, extra) for t in arms]
+        printed = [_factor(t.force, max(extra, least.get(t.name, 0))) for t in arms]
         if any("times" in p for p in printed):
             psum = total
             break
@@ -587,6 +590,10 @@ def _moment_tex(m, gives=None) -> tuple[str, float, float, float]:
         if gives(psum):
             break
     terms = [f"{'+' if t.sign > 0 else '-'} {p} \\times {_mm(t.arm)}" for p, t in zip(printed, arms)]
+    if shown is not None:
+        for p, t in zip(printed, arms):
+            if _digits(p) >= _digits(shown.get(t.name, "")):
+                shown[t.name] = p
     known = " ".join(terms)
     known = known[2:] if known.startswith("+ ") else ("-" + known[2:] if known else "0")
     return known, total, couples, psum
@@ -618,59 +625,30 @@ def _forces(pos, lang: str) -> list[dict]:
     out = []
     mu_l = pos.length_scale
     for n, fg in enumerate(pos.forces):
-        moments, couple = [], None
-        for m in fg.moments:
-            u = sym(m.unknown)
-            if m.unknown == "Pb":
-                # a definition evaluated (no equation solved): one chain, no "=>"; the crank's
-                # length is known (m.arm x mu_l in m), not measured
-                moments.append((f"P_b = \\frac{{M_b}}{{l_{{{m.point}}}}} = \\frac{{{_num(fg.balancing_torque)}}}"
-                                f"{{{exact(m.arm * mu_l, decimals=5)}}} = {_num(m.result)}" r"\ \mathrm{N}", None, None))
-                continue
-            where = f"\\Sigma M_{{{m.point}}}" + ("" if m.unknown == "Mb" else f"({m.link})")
-            res = _num(m.result)
-            couples = sum(t.value for t in m.terms if not t.arm)
-            if not m.arm:
-                # a moment unknown (M_b, a slider's couple): -(products x mu_l + couples)
-                lhs, total, couples, psum = _moment_tex(
-                    m, lambda s: _gives(-(s * mu_l + couples), res))
-                cpl = _couple_for(couples, lambda c: _gives(-(psum * mu_l + c), res))
-            if m.unknown == "Mb":
-                moments.append((f"{where} = M_b + ({lhs}) \\times {_scale(mu_l)}{cpl} = 0",
-                                f"M_b = {res}" r"\ \text{N·m}", None))
-            elif not any(t.arm for t in m.terms) and not couples and m.result == 0:
-                # no known force has a moment about the point: no equation of zeros (issue 19)
-                _ = tr(lang)
-                point = "$" + tex_name(m.point) + "$"
-                result = "$" + u + " = 0$"
-                note = _("No known force on link {link} has a moment about {point}: {result}.",
-                         link=m.link, point=point, result=result)
-                moments.append((None, f"{u} = 0", note))
-            elif m.arm:
-                # the printed sum, and the couple (N·m, divided by mu_l to N·mm of the drawing)
-                # with the digits that give the printed unknown
-                lhs, total, _c, _psum = _moment_tex(m)
-                num = _num(total)
-                value = float(num) if "times" not in num else total
-                cpl = (f"{_couple_for(couples, lambda c: _gives(-(value + c / mu_l) / m.arm, res))}"
-                       f" / {_scale(mu_l)}") if couples else ""
-                if couples and couple is None:
-                    couple = sym(next(t.name for t in m.terms if not t.arm and t.value))
-                moments.append((f"{where} = {u} \\times {_mm(m.arm)} + ({lhs}){cpl} = 0",
-                                f"{u} = -\\frac{{{num}{cpl}}}{{{_mm(m.arm)}}} = {res}"
-                                r"\ \mathrm{N}", None))
-            else:
-                moments.append((f"{where} = {u} + ({lhs}) \\times {_scale(mu_l)}{cpl} = 0",
-                                f"{u} = {res}" r"\ \text{N·m}", None))
+        # a known force prints with one number of decimals in the group's whole section (the
+        # known-loads line, its equations, its polygon row): the most any of its equations
+        # needs, fed back until no equation needs more
+        least: dict[str, int] = {}
+        for _pass in range(4):
+            shown: dict[str, str] = {}
+            moments, couple = _group_moments(fg, mu_l, lang, least, shown)
+            need = {k: _digits(v) - _digits(_num(_force_of(fg, k))) for k, v in shown.items()}
+            if need == least:
+                break
+            least = need
         closing = " + ".join(r"\vec " + sym(v.symbol) for v in fg.vectors
                              if v.kind not in ("total", "internal")) + " = 0"
         # a given force (a weight, an inertia force, the resistance) is listed with its given
         # value, drawn to the nearest 0.5 mm; what is read off the polygon is the rest
         given = {ld.name: abs(ld.value) for lds in fg.loads.values() for ld in lds}
+
+        def known(name, value, shown=shown):
+            return grouped(shown[name]) if name in shown else _numg(value)
+
         rows = [[f"${sym(v.symbol)}$", "√" if v.known else "?", _mm(v.length),
-                 _numg(given[v.symbol] if v.known and v.symbol in given else v.read)]
+                 known(v.symbol, given[v.symbol]) if v.known and v.symbol in given else _numg(v.read)]
                 for v in fg.vectors]
-        loads = [[f"${sym(ld.name)}$", link, _numg(abs(ld.value))]
+        loads = [[f"${sym(ld.name)}$", link, known(ld.name, abs(ld.value))]
                  for link, lds in fg.loads.items() for ld in lds if abs(ld.value) > 0]
         out.append({"name": "–".join(fg.links), "links": ", ".join(fg.links), "crank": fg.balancing_torque
                     is not None, "mu": _scale(fg.scale), "moments": moments, "rows": rows,
@@ -681,6 +659,60 @@ def _forces(pos, lang: str) -> list[dict]:
                     "pb": None if fg.balancing_force is None else _numg(_signed_pb(fg)),
                     "pb_abs": None if fg.balancing_force is None else _numg(abs(fg.balancing_force))})
     return out
+
+
+def _force_of(fg, name: str) -> float:
+    """The magnitude of known force ``name`` in the group's moment equations."""
+    return next(t.force for m in fg.moments for t in m.terms if t.name == name and t.arm)
+
+
+def _group_moments(fg, mu_l, lang: str, least: dict, shown: dict) -> tuple[list, str | None]:
+    """The group's moment equations as (equation, result, note) and the couple's symbol."""
+    moments, couple = [], None
+    for m in fg.moments:
+        u = sym(m.unknown)
+        if m.unknown == "Pb":
+            # a definition evaluated (no equation solved): one chain, no "=>"; the crank's
+            # length is known (m.arm x mu_l in m), not measured
+            moments.append((f"P_b = \\frac{{M_b}}{{l_{{{m.point}}}}} = \\frac{{{_num(fg.balancing_torque)}}}"
+                            f"{{{exact(m.arm * mu_l, decimals=5)}}} = {_num(m.result)}" r"\ \mathrm{N}", None, None))
+            continue
+        where = f"\\Sigma M_{{{m.point}}}" + ("" if m.unknown == "Mb" else f"({m.link})")
+        res = _num(m.result)
+        couples = sum(t.value for t in m.terms if not t.arm)
+        if not m.arm:
+            # a moment unknown (M_b, a slider's couple): -(products x mu_l + couples)
+            lhs, total, couples, psum = _moment_tex(
+                m, lambda s: _gives(-(s * mu_l + couples), res), least, shown)
+            cpl = _couple_for(couples, lambda c: _gives(-(psum * mu_l + c), res))
+        if m.unknown == "Mb":
+            moments.append((f"{where} = M_b + ({lhs}) \\times {_scale(mu_l)}{cpl} = 0",
+                            f"M_b = {res}" r"\ \text{N·m}", None))
+        elif not any(t.arm for t in m.terms) and not couples and m.result == 0:
+            # no known force has a moment about the point: no equation of zeros (issue 19)
+            _ = tr(lang)
+            point = "$" + tex_name(m.point) + "$"
+            result = "$" + u + " = 0$"
+            note = _("No known force on link {link} has a moment about {point}: {result}.",
+                     link=m.link, point=point, result=result)
+            moments.append((None, f"{u} = 0", note))
+        elif m.arm:
+            # the printed sum, and the couple (N·m, divided by mu_l to N·mm of the drawing)
+            # with the digits that give the printed unknown
+            lhs, total, _c, _psum = _moment_tex(m, None, least, shown)
+            num = _num(total)
+            value = float(num) if "times" not in num else total
+            cpl = (f"{_couple_for(couples, lambda c: _gives(-(value + c / mu_l) / m.arm, res))}"
+                   f" / {_scale(mu_l)}") if couples else ""
+            if couples and couple is None:
+                couple = sym(next(t.name for t in m.terms if not t.arm and t.value))
+            moments.append((f"{where} = {u} \\times {_mm(m.arm)} + ({lhs}){cpl} = 0",
+                            f"{u} = -\\frac{{{num}{cpl}}}{{{_mm(m.arm)}}} = {res}"
+                            r"\ \mathrm{N}", None))
+        else:
+            moments.append((f"{where} = {u} + ({lhs}) \\times {_scale(mu_l)}{cpl} = 0",
+                            f"{u} = {res}" r"\ \text{N·m}", None))
+    return moments, couple
 
 
 def _compare(pos, lang: str) -> list[list[str]]:

@@ -13,7 +13,7 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
-from ..core import drive as core
+from ..core import drive as core, gears
 from ..core.fields import q
 from ..data import load_csv, load_yaml
 from . import drive_elements as de, drive_strength as ds
@@ -358,9 +358,10 @@ def _shafts(dp, results, shafts, peak_factor, peak_from_shaft, life_factor=None,
 
 
 def undercut_findings(results) -> list[Finding]:
-    """Undercut gear stages (根切): a spur pinion or wheel below z_min = 2h_a*/sin²α with a
-    shift x below x_min = h_a*(z_min − z)/z_min, a helical one whose equivalent tooth number
-    z/cos³β is below z_min (the drive's helical gears are not shifted)."""
+    """Undercut gear stages (根切): a spur pinion or wheel below z_min (2h_a*/sin²α rounded,
+    孙桓: 17 at α = 20°, core.gears.least_teeth) with a shift x below
+    x_min = h_a*(z_min − z)/z_min, a helical one whose equivalent tooth number z/cos³β is
+    below z_min (the drive's helical gears are not shifted)."""
     import math
 
     out = []
@@ -384,7 +385,7 @@ def undercut_findings(results) -> list[Finding]:
                         n=r.index + 1, name=Named("transmissions", r.kind), who=_gear(key), z=gd.z,
                         z_min=g.z_min, x=gd.x, x_min=x_min, need=math.ceil(g.z_min - 1e-9)))
         elif hasattr(g, "beta"):
-            z_min = 2.0 / math.sin(math.radians(20.0)) ** 2
+            z_min = gears.least_teeth(math.radians(20.0), 1.0)
             for key, z in (("1", r.z1), ("2", r.z2)):
                 if z is None:
                     continue

@@ -14,9 +14,9 @@ Assumptions stated in the report:
 - P0 interpolated bilinearly in n1 and d_d1, ΔP0 linearly in n1 (nearest row/column
   outside the tables);
 - tips: s_a ≥ 0.25 m (through-hardened), 0.4 m (surface-hardened, carburised, nitrided);
-  undercut: x ≥ x_min = h_a*(z_min − z)/z_min with z_min = 2h_a*/sin²α = 17.1 at α = 20° (the
-  number of the gear geometry and of the undercut warning, not the textbook's rounded 17;
-  helical: z_v);
+  undercut: x ≥ x_min = h_a*(z_min − z)/z_min with z_min = 17 at α = 20°, h_a* = 1 (孙桓:
+  2h_a*/sin²α = 17.10 rounded; core.gears.least_teeth, the number of the gear geometry and of
+  the undercut warning; helical: z_v);
   contact ratio ε_α ≥ 1.2;
 - worm shaft: y = √(F_t1² + F_r1²) L³/(48 E I) ≤ [y] = d1/1000 with I = π d_f1⁴/64,
   d_f1 = d1 − 2.4 m, E = 206 GPa, L the span the brief gives for the worm's shaft, else
@@ -142,7 +142,7 @@ def gear_geometry_checks(design, s) -> tuple[Check, ...]:
         zs = tuple(z / math.cos(g.beta) ** 3 for z in (s.z1, s.z2))
         pair, m = gears.spur_pair(g.mn, zs[0], zs[1]), g.mn
     ha_star = pair.ha_star
-    # z_min = 2h_a*/sin²α (17.1 at α = 20°, h_a* = 1): the number the gear geometry and the
+    # z_min = 17 at α = 20°, h_a* = 1 (core.gears.least_teeth): the number the gear geometry and the
     # undercut warning (stages.drive.undercut_findings) use, so check and warning agree
     z_min = float(pair.z_min)
     out = []

@@ -317,7 +317,7 @@ def _transmission(r: dict, lang: str) -> dict:
                                   f(g.db * MM, 2)])
             gear_rows.append(["—", _("centre distance a = ") + f(pr.a * MM, 1) + " mm",
                               _("contact ratio ε = ") + f(pr.contact_ratio, 3),
-                              _("least teeth without undercut ") + f(pr.z_min, 1), "—"])
+                              _("least teeth without undercut ") + f(pr.z_min, 0), "—"])
     # the train's ratio as the course writes it: driven over driving, the pulleys d_1 → d_2,
     # the gears numbered along the train (z_1 drives z_2, z_3 drives z_4, …)
     parts, symbols, gear = [], [], 0
