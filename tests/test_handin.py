@@ -278,7 +278,7 @@ def test_lockbeam_appendix_program_runs_and_prints_the_feed_table(handin_reports
     path.write_text(listing, encoding="utf-8")
     out = subprocess.run([sys.executable, str(path)], capture_output=True, text=True,
                          timeout=120, cwd=tmp_path, check=True).stdout
-    printed = [line.split() for line in out.splitlines()[1:]]
+    printed = [line.split() for line in out.splitlines()[2:]]      # after the header
     table = table_rows(md, "tbl:feed-seed")
     assert len(printed) == len(table) == 36
     # the report's table (its first eight columns), digit for digit
