@@ -564,8 +564,8 @@ def flow_chart(path: Path, steps, lang: str) -> Path:
         face = {"term": "#e8e8e8", "io": "#eef4fb", "proc": "white", "loop": "white",
                 "cond": "white"}[kind]
         if kind == "cond":         # a diamond, the loop's test
-            ax.add_patch(Polygon([(-w / 3, y), (0, y + h / 2 + 0.06), (w / 3, y),
-                                  (0, y - h / 2 - 0.06)], closed=True, fc=face, ec="black", lw=0.8))
+            ax.add_patch(Polygon([(-w / 3, y), (0, y + h / 2), (w / 3, y), (0, y - h / 2)],
+                                 closed=True, fc=face, ec="black", lw=0.8))
         else:
             style = {"term": "round,pad=0.02,rounding_size=0.3",
                      "io": "round,pad=0.02,rounding_size=0.05"}.get(kind, "square,pad=0.02")
@@ -573,10 +573,10 @@ def flow_chart(path: Path, steps, lang: str) -> Path:
                                         ec="black", lw=0.8))
         ax.text(0, y, text, ha="center", va="center", fontsize=8)
         if k < n - 1:
-            ax.annotate("", xy=(0, y - step + h / 2), xytext=(0, y - h / 2 - (0.06 if kind == "cond" else 0)),
+            ax.annotate("", xy=(0, y - step + h / 2), xytext=(0, y - h / 2),
                         arrowprops={"arrowstyle": "-|>", "lw": 0.8, "color": "black"})
         if kind == "cond":
-            ax.text(0.2, y - h / 2 - 0.08, _.pgettext("flow chart", "no"), ha="left", va="top", fontsize=7)
+            ax.text(0.5, y - step / 2, _.pgettext("flow chart", "no"), ha="left", va="center", fontsize=7)
             if head is not None:   # "yes": back to the loop's head, round the right side
                 x_out, yh = w / 2 + 0.3, -head * step
                 ax.plot([w / 3, x_out, x_out], [y, y, yh], color="black", lw=0.8)
