@@ -83,41 +83,6 @@ def test_polygon_segments_and_vertices_are_math():
     assert vertex_label("s6(P)'") == "s6(P)′"
 
 
-@pytest.mark.parametrize("lang", LANGS)
-def test_lockbeam_listing_is_english_and_never_cut_inside_a_name(handin_reports, lang):
-    md = handin_reports("lockbeam", lang)[0]
-    listing = md.split("```python\n", 1)[1].rsplit("```", 1)[0]
-    assert not re.search(r"[\u3000-\u9fff\uff00-\uffef]", listing)
-    lines = listing.splitlines()
-    source = (ROOT / "src/mechdesign/machines/lockbeam/stages.py").read_text(encoding="utf-8")
-    # a continuation that splits one word of the source ("…bendin" ↪ "g),")
-    cut = []
-    for a, b in zip(lines, lines[1:]):
-        piece = b.lstrip()[2:] if b.lstrip().startswith("↪ ") else ""
-        if re.search(r"\w$", a) and re.match(r"\w", piece):
-            last, first = a.split()[-1], piece.split()[0]
-            if f"{last} {first}" not in source:
-                cut.append((a, b))
-    assert cut == []
-    # the listing ends with the last listed function's last line, whole (the main program:
-    # the module's functions less the *_document writers, render/summary.program_source)
-    import ast
-    last = [n for n in ast.parse(source).body
-            if isinstance(n, ast.FunctionDef) and not n.name.endswith("_document")][-1]
-    assert lines[-1].strip() == source.splitlines()[last.end_lineno - 1].strip()
-
-
-def test_listing_cut_prefers_a_space_then_punctuation():
-    from mechdesign.render.summary import _cut
-
-    assert _cut(" " * 32 + "pin_lift_while_bending=cyc.pin_lift_while_bending),", 80) == (
-        " " * 32 + "pin_lift_while_bending=", "cyc.pin_lift_while_bending),")
-    assert _cut("x = f(alpha, beta, gamma_delta_epsilon)", 30) == ("x = f(alpha, beta,",
-                                                                   "gamma_delta_epsilon)")
-    head, rest = _cut("a" * 50, 30)
-    assert (head, rest) == ("a" * 30, "a" * 20)          # no place to cut: at the width
-
-
 DOUBLED_REF = re.compile(r"(图|表|式|Figure|Fig\.|Table|Eq\.|Equation)\s*\[?@(fig|tbl|eq):")
 
 

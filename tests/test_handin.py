@@ -14,6 +14,7 @@ from __future__ import annotations
 
 import collections
 import json
+import math
 import re
 import unicodedata
 from pathlib import Path
@@ -23,9 +24,8 @@ import pytest
 
 from mechdesign.brief.loader import load_brief
 from mechdesign.i18n import tr
-from mechdesign.machines import get_machine, stages_for
-from mechdesign.registry import entry
-from mechdesign.render.fmt import in_lang, meta_text
+from mechdesign.machines import get_machine
+from mechdesign.render.fmt import meta_text
 from mechdesign.render.report import render_markdown, template_dir
 from mechdesign.render.summary import Citations, handin_context, references
 from mechdesign.results import to_plain
@@ -64,11 +64,7 @@ def render(name: str, lang: str, results: dict, tmp: Path) -> tuple[str, dict]:
         figs = _with_requested_figures(report, results, tmp, lang)
         ctx = _with_requested(report.context(results, brief, figs, lang), results, brief, figs, lang)
     ctx["sheets"] = []
-    program = None
-    if getattr(report, "PROGRAM_APPENDIX", False):
-        program = {"stages": [(s.title, s.key if isinstance(s.key, str) else ", ".join(s.key))
-                              for s in stages_for(machine, results["params"])],
-                   "module": entry(machine.name).stages.partition(":")[0]}
+    program = report.program_appendix(results) if hasattr(report, "program_appendix") else None
     ctx.update(handin_context(machine.name, document, ctx, lang,
                               meta_text(brief.report, "title", lang), program, tmp),
                cite=Citations(lang))
@@ -221,74 +217,106 @@ def test_every_citation_has_its_entry_and_every_entry_is_cited(handin_reports, n
     assert any("[M]" in t for t in texts)
 
 
-@pytest.mark.parametrize("lang", LANGS)
-def test_lockbeam_appendix_lists_the_stages_that_ran(handin_reports, example_results, lang):
-    md, _ = handin_reports("lockbeam", lang)
+def appendix_listing(md: str, lang: str) -> str:
+    """The program listed in the appendix, as the report prints it."""
     text = section(md, TITLES[lang][2])
-    brief = load_brief(DESIGNS / "lockbeam.yaml")
-    machine = get_machine(brief.machine)
-    stages = stages_for(machine, example_results("lockbeam")["params"])
-    rows = [r for r in text.split("```")[0].splitlines() if re.match(r"^\| \d+ \|", r)]
-    assert len(rows) == len(stages) >= 10
-    for i, (row, st) in enumerate(zip(rows, stages), 1):
-        cells = [c.strip() for c in row.strip("|").split("|")]
-        assert cells[0] == str(i) and cells[1] == in_lang(st.title, lang).strip()
-        keys = st.key if isinstance(st.key, tuple) else (st.key,)
-        assert cells[2] == "`" + ", ".join(keys) + "`"
-    # the flow chart and the listing of the stages module, read at run time
-    assert "program_flow.png" in text
-    source = (ROOT / "src/mechdesign/machines/lockbeam/stages.py").read_text(encoding="utf-8")
-    listing = text.split("```python\n", 1)[1].rsplit("```", 1)[0]
-    assert "def stages(params: LockbeamParams)" in listing
-    # fits the page: at most 80 columns, a CJK character taking two
+    return text.split("```python\n", 1)[1].rsplit("```", 1)[0]
+
+
+def table_rows(md: str, label: str) -> list[list[str]]:
+    """The cells of the body rows of the Markdown table captioned ``{#label}``."""
+    lines = md.splitlines()
+    end = next(i for i, line in enumerate(lines) if line.startswith(": ") and f"{{#{label}}}" in line)
+    start = end - 1
+    while not lines[start].startswith("|"):
+        start -= 1
+    while start > 0 and lines[start - 1].startswith("|"):
+        start -= 1
+    rows = [line for line in lines[start:end] if line.startswith("|")][2:]
+    return [[c.strip() for c in row.strip().strip("|").split("|")] for row in rows]
+
+
+@pytest.mark.parametrize("lang", LANGS)
+def test_lockbeam_appendix_program_runs_and_prints_the_feed_table(handin_reports, lang, tmp_path):
+    """Issue 19 point 7 (review34 B): the appendix listed 12 pages of the tool's own stages
+    module (imports of the package, English warnings, wrapped lines): no program a student
+    hands in, and nothing that runs from the listing. The listing is a self-contained program
+    (Python with numpy only) that, saved as printed and run, prints the report's feed table in
+    the seed's format, to its printed digits; its input data are the brief's numbers."""
+    import ast
+    import subprocess
+    import sys
+
+    import yaml
+
+    md, document = handin_reports("lockbeam", lang)
+    listing = appendix_listing(md, lang)
+    lines = listing.splitlines()
+    assert 50 <= len(lines) <= 200
+    # numpy and nothing else
+    tree = ast.parse(listing)
+    imported = {a.name for n in ast.walk(tree) if isinstance(n, ast.Import) for a in n.names}
+    assert imported == {"numpy"} and not any(isinstance(n, ast.ImportFrom) for n in ast.walk(tree))
+    # the input constants are the brief's numbers (read from the brief itself, in m)
+    raw = yaml.safe_load((DESIGNS / "lockbeam.yaml").read_text(encoding="utf-8"))["feed_linkage"]
+    consts = {t.id: ast.literal_eval(n.value) for n in tree.body if isinstance(n, ast.Assign)
+              for t in n.targets if isinstance(t, ast.Name) and isinstance(n.value, ast.Constant)}
+    pairs = {n.targets[0].elts[0].id: ast.literal_eval(n.value) for n in tree.body
+             if isinstance(n, ast.Assign) and isinstance(n.targets[0], ast.Tuple)}
+    rrp = next(g for g in raw["groups"] if g["type"] == "RRP")
+    bar = next(g for g in raw["groups"] if g.get("name") == "D")
+    same = lambda x: pytest.approx(x, rel=1e-12, abs=1e-15)     # noqa: E731
+    assert consts["N1"] == same(raw["crank"]["speed_rpm"])
+    assert consts["L2"] == same(raw["crank"]["length_mm"] / 1000)
+    assert consts["L4"] == same(bar["distance_mm"] / 1000)
+    assert consts["L5"] == same(rrp["length_mm"] / 1000)
+    assert consts["YE"] == same(rrp["guide_point_mm"][1] / 1000)
+    assert pairs["XO2"] == same(tuple(v / 1000 for v in raw["frame_points_mm"]["O2"]))
+    assert pairs["XO3"] == same(tuple(v / 1000 for v in raw["frame_points_mm"]["O3"]))
+    # run as printed
+    path = tmp_path / "feed.py"
+    path.write_text(listing, encoding="utf-8")
+    out = subprocess.run([sys.executable, str(path)], capture_output=True, text=True,
+                         timeout=120, cwd=tmp_path, check=True).stdout
+    printed = [line.split() for line in out.splitlines()[2:]]      # after the header
+    table = table_rows(md, "tbl:feed-seed")
+    assert len(printed) == len(table) == 36
+    # the report's table (its first eight columns), digit for digit
+    assert printed == [row[:8] for row in table]
+    # and results.json's values, to the printed digits
+    ft = document["feed_table"]
+    keys = ("x", "v", "a", "bar_omega", "rod_omega", "bar_alpha", "rod_alpha")
+    for i, row in enumerate(printed):
+        assert float(row[0]) == pytest.approx(math.degrees(ft["crank_angle"][i]), abs=1e-9)
+        for j, key in enumerate(keys, 1):
+            scale, digits = (1000, 2) if key == "x" else (1, 4)
+            assert abs(float(row[j]) - ft[key][i] * scale) <= 0.5 * 10 ** -digits + 1e-12
+
+
+@pytest.mark.parametrize("lang", LANGS)
+def test_lockbeam_appendix_is_written_in_the_reports_language(handin_reports, lang):
+    """The listing's comments are in the report's language (the code is ASCII), every line fits
+    the 80 columns of the text block (a CJK character taking two), and the steps table names
+    the program's steps in words, with no identifier of the tool (pin_check, feed_table)."""
+    md, _ = handin_reports("lockbeam", lang)
+    listing = appendix_listing(md, lang)
+    cjk = re.compile(r"[\u3000-\u9fff\uff00-\uffef]")
+    comments = [line.split("#", 1)[1] for line in listing.splitlines() if line.lstrip().startswith("#")]
+    assert len(comments) >= 10
+    assert all(bool(cjk.search(c)) == (lang == "zh") for c in comments)
+    code = [line for line in listing.splitlines() if not line.lstrip().startswith("#")]
+    assert not any(cjk.search(line) for line in code)
     width = [sum(2 if unicodedata.east_asian_width(ch) in "WF" else 1 for ch in line)
              for line in listing.splitlines()]
     assert max(width) <= 80
-    # the listing is the source's functions as they ran, without the developers' notes:
-    # joining the continued lines (after ↪) gives each function's tokens back in source order,
-    # less its comments and its docstring (compared without white space: a line may be cut
-    # inside a word); the result types (dataclasses) and the *_document writers are left out,
-    # which keeps the appendix to a third of the module (it was 24 pages)
-    # (line continuations "\" are no tokens: left out on both sides)
-    joined = re.sub(r"\s+", "", re.sub(r"\n *↪ ", "", listing)).replace("\\", "")
-    import ast
-    import io
-    import tokenize
-    tree = ast.parse(source)
-    lines = source.splitlines()
-    skip = {tokenize.COMMENT, tokenize.NL, tokenize.NEWLINE, tokenize.INDENT, tokenize.DEDENT,
-            tokenize.ENDMARKER}
-
-    def code_of(node):
-        doc = None
-        if node.body and isinstance(node.body[0], ast.Expr) and \
-                isinstance(node.body[0].value, ast.Constant) and len(node.body) > 1:
-            doc = (node.body[0].lineno, node.body[0].end_lineno)
-        start = min([d.lineno for d in node.decorator_list] + [node.lineno])
-        text = "\n".join(lines[start - 1:node.end_lineno]) + "\n"
-        toks = []
-        for tok in tokenize.generate_tokens(io.StringIO(text).readline):
-            row = tok.start[0] + start - 1
-            if tok.type in skip or (doc and doc[0] <= row <= doc[1]):
-                continue
-            toks.append(tok.string)
-        return re.sub(r"\s+", "", "".join(toks)).replace("\\", "")
-
-    at = 0
-    for node in tree.body:
-        if isinstance(node, ast.FunctionDef) and not node.name.endswith("_document"):
-            text = code_of(node)
-            found = joined.find(text, at)
-            assert found >= 0, node.name
-            at = found + len(text)
-        elif isinstance(node, ast.ClassDef) or (isinstance(node, ast.FunctionDef)):
-            text = re.sub(r"\s+", "", "\n".join(lines[node.lineno - 1:node.end_lineno]))
-            assert text not in joined, node.name
-    # no developers' notes: no comment, no docstring, no word of the project's own
-    assert not any(line.lstrip().startswith("#") for line in listing.splitlines())
-    assert '"""' not in listing and "seed 002" not in listing
-    assert "@dataclass" not in listing
-    assert len(listing.splitlines()) < 0.6 * len(lines)
+    rows = table_rows(md, "tbl:program-steps")
+    assert [r[0] for r in rows] == [str(i) for i in range(1, len(rows) + 1)] and len(rows) >= 5
+    text = section(md, TITLES[lang][2]).split("```")[0]
+    assert "`" not in text
+    for key in ("pin_check", "feed_table", "feed_model", "bending_cam", "transmission"):
+        assert key not in text
+    if lang == "zh":
+        assert all(cjk.search(r[1]) and cjk.search(r[2]) for r in rows)
 
 
 def test_summary_key_numbers_of_the_shaper(handin_reports):
@@ -366,7 +394,7 @@ def test_flow_chart_named_as_a_teacher_names_it(handin_reports, lang):
     md, _ = handin_reports("lockbeam", lang)
     text = section(md, TITLES[lang][2])
     caption = {"zh": "![分析程序流程图]", "en": "![Flow chart of the analysis program]"}[lang]
-    table = {"zh": ": 分析程序的计算阶段 {#tbl:program-stages}",
-             "en": ": Stages of the analysis program {#tbl:program-stages}"}[lang]
+    table = {"zh": ": 分析程序的计算步骤 {#tbl:program-steps}",
+             "en": ": Steps of the analysis program {#tbl:program-steps}"}[lang]
     assert caption in text and table in text
     assert "本次运行" not in md and "this run" not in md

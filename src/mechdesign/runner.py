@@ -167,9 +167,6 @@ def run_one(brief: Path, *, out_dir: Path | None = None, lang: str | None = None
         results, _ = run_stages(stage_list,
                                 {"params": params, "brief": b, "checked": checked},
                                 stage_progress)
-        # (title, result name) of every stage, in the order they ran
-        ran = [(st.title, st.key if isinstance(st.key, str) else ", ".join(st.key))
-               for st in stage_list]
     except Exception as exc:  # noqa: BLE001 - classified below; never a bare traceback
         message = describe_design_error(exc, language)
         if message is not None:
@@ -206,12 +203,9 @@ def run_one(brief: Path, *, out_dir: Path | None = None, lang: str | None = None
     if requested is not None:
         document["analysis_requests"] = to_plain(requested)
 
-    # the seed hands in its analysis program: the appendix shows the stages that ran
-    program = None
-    if getattr(report, "PROGRAM_APPENDIX", False):
-        from .registry import entry
-
-        program = {"stages": ran, "module": entry(machine.name).stages.partition(":")[0]}
+    # the seed hands in its analysis program: the appendix lists it (its flow chart, steps,
+    # and the brief's numbers it is written with)
+    program = report.program_appendix(results) if hasattr(report, "program_appendix") else None
     animate = None
     if "gif" in formats:
         if hasattr(report, "animate"):

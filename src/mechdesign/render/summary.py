@@ -1,11 +1,11 @@
 """The hand-in's closing chapters: 设计小结 / Summary, 参考文献 / References and, where the
-machine's report asks for it (``PROGRAM_APPENDIX`` in its report module: the lock-beam,
-whose seed hands in its analysis program), the appendix with the program's flow chart and
-listing.
+machine's report asks for it (``program_appendix`` in its report module: the lock-beam,
+whose seed hands in its analysis program), the appendix with the program's flow chart, its
+steps and its listing: a short, self-contained program with the brief's numbers written in.
 
 Everything here reads a finished run: the results document (what results.json holds),
 the report context the machine prepared (its verification rows and findings) and, for the
-appendix, the titles of the stages the run executed. The templates
+appendix, what the machine's report module gives (its program's template, steps and data). The templates
 (``summary_section``, ``references_section``, ``appendix_section``) only place the rows.
 
 Citations: a template writes ``{{ cite("sun") }}`` where a method or table of a source is
@@ -15,7 +15,6 @@ marker has its entry and every entry is cited.
 """
 from __future__ import annotations
 
-import inspect
 import math
 import re
 from functools import lru_cache
@@ -23,7 +22,7 @@ from importlib import resources
 from pathlib import Path
 from typing import Any
 
-from .fmt import exact, f, in_lang, length, md_text, rpm, sig, time_ratio, verdict
+from .fmt import exact, f, length, md_text, rpm, sig, time_ratio, verdict
 from ..i18n import N_, data_text, tr
 from .labels import pgettext, translated
 
@@ -537,155 +536,55 @@ def summary_context(machine: str, document: dict, ctx: dict, lang: str, title: s
 LISTING_WIDTH = 80   # display columns of a code line on the A4 text block (CJK count 2)
 
 
-def display_width(text: str) -> int:
-    """Columns a line takes in the monospace listing: wide (CJK) characters count 2."""
-    import unicodedata
-
-    return sum(2 if unicodedata.east_asian_width(ch) in "WF" else 1 for ch in text)
 
 
-def _cut(text: str, columns: int) -> tuple[str, str]:
-    """The longest head of ``text`` within ``columns``, and the rest: cut at a space when
-    there is one in the head's second half, else after a comma, an opening bracket or "=",
-    else before a "." — never inside a name (the listing's last line read
-    "pin_lift_while_bendin" ↪ "g)," at a page foot) unless the head has no such place."""
-    used, end = 0, 0
-    for i, ch in enumerate(text):
-        used += display_width(ch)
-        if used > columns:
-            break
-        end = i + 1
-    else:
-        return text, ""
-    space = text.rfind(" ", 0, end)
-    if space > end // 2:
-        end = space + 1
-    else:
-        for cut in (max(text.rfind(c, 0, end) for c in ",([{=") + 1, text.rfind(".", 0, end)):
-            if cut > end // 2:
-                end = cut
-                break
-    return text[:end].rstrip(), text[end:].lstrip()
-
-
-def program_source(module_name: str, comments: bool = True) -> str:
-    """The main program of a stages module, read now from the installed package: its
-    docstring and its functions, each with its decorators, in source order. Left out: the
-    imports, the result types (frozen dataclasses: data, not program) and the functions that
-    only write the results document (``*_document``): the whole module was 24 pages.
-    ``comments=False``: the code alone, without the docstrings and ``#`` comments (they are the
-    developers' English notes); every statement is kept as it ran, line for line."""
-    import ast
-    import importlib
-
-    source = inspect.getsource(importlib.import_module(module_name))
-    lines = source.splitlines()
-    tree = ast.parse(source)
-    drop: set[int] = set()            # 0-based lines of docstrings, when comments are left out
-    cut: dict[int, int] = {}          # 0-based line → column where its comment starts
-    if not comments:
-        drop, cut = _docstrings_and_comments(source, tree)
-    pieces = []
-    body = tree.body
-    if comments and body and isinstance(body[0], ast.Expr) and \
-            isinstance(getattr(body[0], "value", None), ast.Constant):
-        pieces.append("\n".join(lines[body[0].lineno - 1:body[0].end_lineno]))
-    for node in body:
-        if isinstance(node, ast.FunctionDef) and not node.name.endswith("_document"):
-            start = min([d.lineno for d in node.decorator_list] + [node.lineno])
-            kept = []
-            for i in range(start - 1, node.end_lineno):
-                if i in drop:
-                    continue
-                line = lines[i][:cut[i]].rstrip() if i in cut else lines[i]
-                if i in cut and not line.strip():
-                    continue                              # a comment line
-                if not line.strip() and (not kept or not kept[-1].strip()):
-                    continue                              # no blank runs
-                kept.append(line)
-            pieces.append("\n".join(kept).rstrip())
-    return "\n\n\n".join(pieces)
-
-
-def _docstrings_and_comments(source: str, tree) -> tuple[set, dict]:
-    """The lines of the functions' docstrings (0-based; a docstring that is a function's whole
-    body stays) and where each ``#`` comment starts ({0-based line: column})."""
-    import ast
-    import io
-    import tokenize
-
-    drop = set()
-    for node in ast.walk(tree):
-        if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef)) and \
-                len(node.body) > 1 and isinstance(node.body[0], ast.Expr) and \
-                isinstance(node.body[0].value, ast.Constant) and \
-                isinstance(node.body[0].value.value, str):
-            drop.update(range(node.body[0].lineno - 1, node.body[0].end_lineno))
-    cut = {}
-    for tok in tokenize.generate_tokens(io.StringIO(source).readline):
-        if tok.type == tokenize.COMMENT:
-            cut[tok.start[0] - 1] = tok.start[1]
-    return drop, cut
-
-
-def program_listing(module_name: str, width: int = LISTING_WIDTH, comments: bool = True) -> str:
-    """The main program of ``module_name`` (:func:`program_source`), long lines
-    wrapped with a continuation mark (↪, at the line's indent) so that the listing fits the
-    page."""
-    lines = []
-    for line in program_source(module_name, comments).splitlines():
-        if display_width(line) <= width:
-            lines.append(line)
-            continue
-        indent = " " * (len(line) - len(line.lstrip()))
-        head, rest = _cut(line, width)
-        lines.append(head)
-        while rest:
-            piece, rest = _cut(rest, width - len(indent) - 2)
-            lines.append(f"{indent}↪ {piece}")
-    return "\n".join(lines)
-
-
-def stage_title(title: str, lang: str) -> str:
-    """A stage's title ("中文 / English", or a stages.titles.Title) in the report's language."""
-    if " / " in title:
-        zh, en = title.split(" / ", 1)
-        return zh.strip() if lang == "zh" else en.strip()
-    return in_lang(title, lang)
-
-
-def flow_chart(path: Path, titles: list[str], lang: str) -> Path:
-    """The analysis program's flow chart: boxes and arrows of the stages the run executed,
-    between reading the brief and writing the report."""
+def flow_chart(path: Path, steps, lang: str) -> Path:
+    """The analysis program's flow chart: its steps (``(kind, msgid, …)``: "io" input or
+    output, "proc" a computation, "loop" the head of the loop, "cond" the loop's test, which
+    returns to the head on "yes") as boxes and arrows between start and end."""
     import matplotlib
 
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
-    from matplotlib.patches import FancyBboxPatch
+    from matplotlib.patches import FancyBboxPatch, Polygon
 
     from .fonts import configure_matplotlib
 
     configure_matplotlib()
     _ = tr(lang)
-    boxes = [(_.pgettext("flow chart", "start"), "term"), (_("read and check the brief (YAML)"), "io"),
-             (_("SI units; feasibility checks"), "proc")]
-    boxes += [(stage_title(t, lang), "proc") for t in titles]
-    boxes += [(_("write results, report and sheets"), "io"), (_.pgettext("flow chart", "end"), "term")]
+    boxes = [(_.pgettext("flow chart", "start"), "term")]
+    boxes += [(_(step[1]), step[0]) for step in steps]
+    boxes += [(_.pgettext("flow chart", "end"), "term")]
     n = len(boxes)
     step, h, w = 0.8, 0.5, 5.6
     fig, ax = plt.subplots(figsize=(4.6, 0.34 * n + 0.3))
+    head = next((k for k, (_t, kind) in enumerate(boxes) if kind == "loop"), None)
     for k, (text, kind) in enumerate(boxes):
         y = -k * step
-        style = {"term": "round,pad=0.02,rounding_size=0.3", "io": "round,pad=0.02,rounding_size=0.05",
-                 "proc": "square,pad=0.02"}[kind]
-        face = {"term": "#e8e8e8", "io": "#eef4fb", "proc": "white"}[kind]
-        ax.add_patch(FancyBboxPatch((-w / 2, y - h / 2), w, h, boxstyle=style, fc=face, ec="black", lw=0.8))
-        label = text if kind == "term" or k < 3 or k >= n - 2 else f"{k - 2}. {text}"
-        ax.text(0, y, label, ha="center", va="center", fontsize=8)
+        face = {"term": "#e8e8e8", "io": "#eef4fb", "proc": "white", "loop": "white",
+                "cond": "white"}[kind]
+        if kind == "cond":         # a diamond, the loop's test
+            ax.add_patch(Polygon([(-w / 3, y), (0, y + h / 2), (w / 3, y), (0, y - h / 2)],
+                                 closed=True, fc=face, ec="black", lw=0.8))
+        else:
+            style = {"term": "round,pad=0.02,rounding_size=0.3",
+                     "io": "round,pad=0.02,rounding_size=0.05"}.get(kind, "square,pad=0.02")
+            ax.add_patch(FancyBboxPatch((-w / 2, y - h / 2), w, h, boxstyle=style, fc=face,
+                                        ec="black", lw=0.8))
+        ax.text(0, y, text, ha="center", va="center", fontsize=8)
         if k < n - 1:
             ax.annotate("", xy=(0, y - step + h / 2), xytext=(0, y - h / 2),
                         arrowprops={"arrowstyle": "-|>", "lw": 0.8, "color": "black"})
-    ax.set_xlim(-w / 2 - 0.2, w / 2 + 0.2)
+        if kind == "cond":
+            ax.text(0.5, y - step / 2, _.pgettext("flow chart", "no"), ha="left", va="center", fontsize=7)
+            if head is not None:   # "yes": back to the loop's head, round the right side
+                x_out, yh = w / 2 + 0.3, -head * step
+                ax.plot([w / 3, x_out, x_out], [y, y, yh], color="black", lw=0.8)
+                ax.annotate("", xy=(w / 2, yh), xytext=(x_out, yh),
+                            arrowprops={"arrowstyle": "-|>", "lw": 0.8, "color": "black"})
+                ax.text(w / 3 + 0.1, y + 0.05, _.pgettext("flow chart", "yes"), ha="left", va="bottom",
+                        fontsize=7)
+    ax.set_xlim(-w / 2 - 0.2, w / 2 + 0.5)
     ax.set_ylim(-(n - 1) * step - h, h)      # the whole chart, terminals included
     ax.set_aspect("equal")
     ax.axis("off")
@@ -698,15 +597,17 @@ def flow_chart(path: Path, titles: list[str], lang: str) -> Path:
 
 
 def appendix_context(program: dict, fig_dir: Path, lang: str) -> dict:
-    """{chart, stages, module, listing} for the appendix template; ``program`` is what the
-    runner recorded: (title, result name) of the stages that ran and the stages module."""
-    titles = [t for t, _ in program["stages"]]
-    chart = flow_chart(Path(fig_dir) / "program_flow.png", titles, lang)
-    return {"chart": f"{Path(fig_dir).name}/{chart.name}",
-            "stages": [[str(i), md_text(stage_title(t, lang)), f"`{key}`"]
-                       for i, (t, key) in enumerate(program["stages"], 1)],
-            "module": program["module"], "file": program["module"].replace(".", "/") + ".py",
-            "listing": program_listing(program["module"], comments=False)}
+    """{chart, steps, template, data, table} for the appendix template; ``program`` is what
+    the machine's report module gives (``program_appendix``): the program's template, the
+    brief's numbers it is written with (Python literals), its flow chart's steps and the
+    label of the report's table it prints."""
+    _ = tr(lang)
+    steps = program["steps"]
+    chart = flow_chart(Path(fig_dir) / "program_flow.png", steps, lang)
+    rows = [[str(i), _(box), _(what)]
+            for i, (_kind, box, what) in enumerate((s for s in steps if s[2] is not None), 1)]
+    return {"chart": f"{Path(fig_dir).name}/{chart.name}", "steps": rows,
+            "template": program["template"], "data": program["data"], "table": program["table"]}
 
 
 def handin_context(machine: str, document: dict, ctx: dict, lang: str, title: str,

@@ -1,6 +1,5 @@
 """Stage titles: an English msgid of the catalogues with its message context, translated
-where it is shown (``render.fmt.in_lang(title, lang)``: the command line's progress, the
-program appendix and its flow chart).
+where it is shown (``render.fmt.in_lang(title, lang)``: the command line's progress).
 
 ``titles.pgettext("stage", "drive")`` marks the title for the catalogue (tools/i18n.py
 extracts it like ``_.pgettext``) and returns it as a :class:`Title`, a ``str`` (its English

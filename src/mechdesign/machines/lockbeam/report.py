@@ -21,9 +21,58 @@ from .stages import grashof_margin
 DEG = 180.0 / np.pi
 MM = 1e3
 
-#: The seed (002) hands in its analysis program: the report ends with an appendix holding
-#: the program's flow chart and the listing of this machine's stages module.
-PROGRAM_APPENDIX = True
+#: The flow chart of the appendix's analysis program (:func:`program_appendix`): (kind, box,
+#: what the step computes); "loop" is where "cond" returns to, "cond" has no table row.
+PROGRAM_STEPS = (
+    ("io", N_("input the brief's data"),
+     N_("crank speed $n_1$; pivots $O_2$, $O_3$; lengths $O_2A$, $O_3D$, $DE$; guide line $y_E$")),
+    ("loop", N_("crank angle $\\varphi_1$ = 0°, 10°, …, 350°"), N_("the crank angle of one row")),
+    ("proc", N_("crank 2: crank()"), N_("position, velocity and acceleration of $A$")),
+    ("proc", N_("RPR group 3–4: rpr()"),
+     N_("$\\omega_4$, $\\varepsilon_4$ of the guide bar; position, velocity and acceleration of $D$")),
+    ("proc", N_("RRP group 5–6: rrp()"),
+     N_("$x_E$, $v_E$, $a_E$ of the slider; $\\omega_5$, $\\varepsilon_5$ of the rod")),
+    ("io", N_("print one row"), N_("one row of the feed table in the seed's format")),
+    ("cond", N_("$\\varphi_1$ < 350°?"), None),
+)
+
+
+def _literal(x: float) -> str:
+    """A number of the brief as the program writes it (Python literal, m or rpm)."""
+    return repr(round(float(x), 9))
+
+
+def program_appendix(r: dict) -> dict | None:
+    """The analysis program the seed (002) hands in, rewritten: the feed mechanism's
+    kinematics by Assur groups (crank, RPR guide bar, RRP rod and slider) every 10° of the
+    crank, printing the feed table in the seed's format. The report's appendix lists it
+    (templates/lockbeam_program.py.j2) with the brief's numbers written in: ``data`` here.
+    None when the feed linkage is not the guide-bar six-bar the program is written for (a
+    guide bar through its pivot, D on the bar's line, a slider guide parallel to x)."""
+    from ...core.mechanism import RPR, RRP, Crank, LinkPoint
+
+    mech = r["params"].feed.mechanism
+    groups = mech.groups
+    crank = next((g for g in groups if isinstance(g, Crank)), None)
+    rpr = next((g for g in groups if isinstance(g, RPR)), None)
+    rrp = next((g for g in groups if isinstance(g, RRP)), None)
+    if crank is None or rpr is None or rrp is None or rpr.a != crank.tip or rpr.offset != 0 \
+            or abs(np.sin(rrp.guide_angle)) > 1e-12:
+        return None
+    d = next((g for g in groups if isinstance(g, LinkPoint) and g.name == rrp.b), None)
+    if d is None or d.link != rpr.bar or d.origin != rpr.pivot or d.offset_angle != 0:
+        return None
+    m = mech.solve(np.array([0.0]))
+    right = (m.points[rrp.c].pos[0] - m.points[rrp.b].pos[0]).real > 0
+    o2, o3 = mech.frame_points[crank.pivot], mech.frame_points[rpr.pivot]
+    data = {"rpm": _literal(abs(crank.omega) * 60 / (2 * np.pi)),
+            "sense": "" if crank.omega > 0 else "-",
+            "O2": f"{_literal(o2.real)}, {_literal(o2.imag)}", "crank": _literal(crank.length),
+            "O3": f"{_literal(o3.real)}, {_literal(o3.imag)}", "bar": _literal(d.distance),
+            "rod": _literal(rrp.length), "guide_y": _literal(rrp.guide_point.imag),
+            "branch": "" if right else "-"}
+    return {"template": "lockbeam_program.py.j2", "data": data, "steps": PROGRAM_STEPS,
+            "table": "tbl:feed-seed"}
 
 
 def grashof_sentence(a: float, b: float, c: float, d: float, lang: str) -> str:
