@@ -150,6 +150,33 @@ def test_the_scan_finds_the_reviewed_faults():
     assert not chain_faults(r"= M_b + (1225 \times 10.5) \times 0.005 = 0 \;\Rightarrow\; M_b = -64.3")
 
 
+def test_the_scan_finds_the_chains_of_review35():
+    """Products, quotients and P_b lines the review recomputed (old reports), and written right:
+    the printed factors give the printed result."""
+    old = [r"$$ P_b = \frac{M_b}{l_{O2A}} = \frac{-227}{0.0925} = -2457\ \mathrm{N} $$",
+           r"\eta_w = 0.990 \times 0.798 \times 0.950 \times 0.990^{3} \times 0.960 = 0.6988 $$",
+           r"J_F' = J_F\,i^2 = 6.404 \times 14.12^2 = 1276.5\ \text{kg·m}^2",
+           r"a = a_0 + \frac{L_d - L_{d0}}{2} = 470 + \frac{1600 - 1697}{2} = 421.4\ \text{mm}",
+           r"m = \frac{4 J_F}{D^2} = \frac{4 \times 204.1}{1.000^2} = 816.52\ \text{kg}",
+           r"\Delta\alpha = \frac{h}{L} = \frac{14.90}{35} = 0.4258\ \text{rad}",
+           r"L_{O_3B} = \frac{H}{2\sin(\psi/2)} = \frac{320}{2\sin 8.18°} = 1124.27\ \text{mm}",
+           "F_c = L\\,q = 20.00\\ \\text{m} = 1000.0\\ \\text{kN} $$\n\n"
+           "| 0.01 | 184.80 | 0.19 | 5168 | 294.79 | 193.5 |"]
+    new = [r"$$ P_b = \frac{M_b}{l_{O2A}} = \frac{-227.3}{0.0925} = -2457\ \mathrm{N} $$",
+           r"\eta_w = 0.990 \times 0.7977 \times 0.950 \times 0.990^{3} \times 0.960 = 0.6988 $$",
+           r"J_F' = J_F\,i^2 = 6.404 \times 14.1181^2 = 1276.5\ \text{kg·m}^2",
+           r"a = a_0 + \frac{L_d - L_{d0}}{2} = 470 + \frac{1600 - 1697.2}{2} = 421.4\ \text{mm}",
+           r"m = \frac{4 J_F}{D^2} = \frac{4 \times 204.13}{1.000^2} = 816.52\ \text{kg}",
+           r"\Delta\alpha = \frac{h}{L} = \frac{14.903}{35} = 0.4258\ \text{rad}",
+           r"L_{O_3B} = \frac{H}{2\sin(\psi/2)} = \frac{320}{2\sin 8.1818°} = 1124.27\ \text{mm}",
+           "F_c = L\\,q = 20.00\\ \\text{m} = 1000.0\\ \\text{kN} $$\n\n"
+           "| 0.01 | 184.80 | 0.1935 | 5168 | 294.79 | 193.5 |"]
+    for line in old:
+        assert len(chain_faults(line)) == 1, line
+    for line in new:
+        assert not chain_faults(line), (line, chain_faults(line))
+
+
 @pytest.mark.parametrize("lang", ["zh", "en"])
 @pytest.mark.parametrize("name", EXAMPLES)
 def test_displayed_chains_give_their_printed_results(example_results, name, lang):
