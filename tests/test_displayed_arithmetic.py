@@ -16,6 +16,7 @@ This scans every example report (both languages) for the shapes the report displ
 """
 from __future__ import annotations
 
+import math
 import re
 
 import pytest
@@ -32,6 +33,18 @@ MOMENT = re.compile(
 CRANK = re.compile(
     rf"= M_b \+ \(([^()]*)\) \\times ({_N})(?: ([+-]) ({_N}))? = 0 \\;\\Rightarrow\\; M_b = ({_N})")
 PRODUCT = re.compile(rf"(^|[+-])\s*({_N}) \\times ({_N})")
+_P = rf"{_N}(?:\^\{{?\d+\}}?)?"          # a factor, perhaps with a power: 0.990^{3}, 14.12^2
+# a chain of factors: the drive's efficiency η = … η_w = a × b × c^{3} = r, J_F' = J_F i² = a × b²
+CHAIN = re.compile(rf"(?:\\eta_w|i\^2) = ({_P}(?: \\times {_P})+) = ({_N})(?![\d.])")
+# a quotient: P_b = M_b/l_OA = a/b, the lock beam's Δα = h/L = a/b; m = 4 J_F/D²
+QUOTIENT = re.compile(rf"(?:\{{l_\{{[^{{}}]*\}}\}}|\{{h\}}\{{L\}}) = \\frac\{{({_N})\}}\{{({_N})\}} = ({_N})(?![\d.])")
+MASS = re.compile(rf"= \\frac\{{({_N}) \\times ({_N})\}}\{{({_N})\^2\}} = ({_N})(?![\d.])")
+# the belt's centre distance a = a0 + (L_d − L_d0)/2, the guide bar H/(2 sin(ψ/2))
+BELT = re.compile(rf"= ({_N}) \+ \\frac\{{({_N}) - ({_N})\}}\{{2\}} = ({_N})(?![\d.])")
+SINE = re.compile(rf"= \\frac\{{({_N})\}}\{{2\\sin ({_N})°\}} = ({_N})(?![\d.])")
+# a row of the die cutter's table | gap | φ | M/F | F/M | Π | F_c·M/F | (gap > 0)
+AMPLIFICATION = re.compile(rf"^\| (?!0 )[\d.]+ \| [\d.]+ \| ({_N}) \| [\d.\u202f]+ \| [\d.]+ \| "
+                           rf"([\d.\u202f]+) \|$", re.M)
 PERCENT = re.compile(rf"\\frac\{{({_N}) - ({_N})\}}\{{({_N})\}} = ({_N})\s*\\?%"
                      rf"|\(({_N}) [-−] ({_N})\)\s*/\s*({_N}) = ({_N})\s*\\?%")
 
@@ -81,6 +94,31 @@ def chain_faults(md: str) -> list[str]:
         x = -(_products(m.group(1)) * _value(m.group(2)) + _couple(m.group(3), m.group(4), "1"))
         if not _agrees(x, m.group(5)):
             out.append(f"M_b = -({m.group(1)}) × {m.group(2)} = {x:.4f}, printed {m.group(5)}")
+    for m in CHAIN.finditer(md):
+        x = 1.0
+        for factor in m.group(1).split(" \\times "):
+            base, _, power = factor.partition("^")
+            x *= _value(base) ** (int(power.strip("{}")) if power else 1)
+        if not _agrees(x, m.group(2)):
+            out.append(f"{m.group(1)} = {x:.6g}, printed {m.group(2)}")
+    checks = [(QUOTIENT, lambda a, b: _value(a) / _value(b), "{}/{}"),
+              (MASS, lambda a, j, d: _value(a) * _value(j) / _value(d) ** 2, "{} × {}/{}²"),
+              (BELT, lambda a0, ld, ld0: _value(a0) + (_value(ld) - _value(ld0)) / 2, "{} + ({} - {})/2"),
+              (SINE, lambda h, half: _value(h) / (2 * math.sin(math.radians(_value(half)))),
+               "{}/(2 sin {}°)")]
+    for pattern, fn, shape in checks:
+        for m in pattern.finditer(md):
+            *args, printed = m.groups()
+            x = fn(*args)
+            if not _agrees(x, printed):
+                out.append(f"{shape.format(*args)} = {x:.6g}, printed {printed}")
+    # the die cutter's force-amplification table: F_c·M/F from the printed F_c and M/F
+    force = re.search(rf"F_c = L\\,q = [^$]*= ({_N})\\ \\text\{{kN\}}", md)
+    for m in AMPLIFICATION.finditer(md):
+        if force:
+            x = _value(force.group(1)) * _value(m.group(1))
+            if not _agrees(x, m.group(2)):
+                out.append(f"F_c·M/F = {force.group(1)} × {m.group(1)} = {x:.6g}, printed {m.group(2)}")
     for m in PERCENT.finditer(md):
         a, b, c, p = (g for g in m.groups() if g is not None)
         x = 100 * (_value(a) - _value(b)) / _value(c)
@@ -110,6 +148,33 @@ def test_the_scan_finds_the_reviewed_faults():
                         .replace("-2537", "-2540"))
     assert chain_faults(r"= M_b + (1225 \times 10.5) \times 0.005 = 0 \;\Rightarrow\; M_b = -64.1")
     assert not chain_faults(r"= M_b + (1225 \times 10.5) \times 0.005 = 0 \;\Rightarrow\; M_b = -64.3")
+
+
+def test_the_scan_finds_the_chains_of_review35():
+    """Products, quotients and P_b lines the review recomputed (old reports), and written right:
+    the printed factors give the printed result."""
+    old = [r"$$ P_b = \frac{M_b}{l_{O2A}} = \frac{-227}{0.0925} = -2457\ \mathrm{N} $$",
+           r"\eta_w = 0.990 \times 0.798 \times 0.950 \times 0.990^{3} \times 0.960 = 0.6988 $$",
+           r"J_F' = J_F\,i^2 = 6.404 \times 14.12^2 = 1276.5\ \text{kg·m}^2",
+           r"a = a_0 + \frac{L_d - L_{d0}}{2} = 470 + \frac{1600 - 1697}{2} = 421.4\ \text{mm}",
+           r"m = \frac{4 J_F}{D^2} = \frac{4 \times 204.1}{1.000^2} = 816.52\ \text{kg}",
+           r"\Delta\alpha = \frac{h}{L} = \frac{14.90}{35} = 0.4258\ \text{rad}",
+           r"L_{O_3B} = \frac{H}{2\sin(\psi/2)} = \frac{320}{2\sin 8.18°} = 1124.27\ \text{mm}",
+           "F_c = L\\,q = 20.00\\ \\text{m} = 1000.0\\ \\text{kN} $$\n\n"
+           "| 0.01 | 184.80 | 0.19 | 5168 | 294.79 | 193.5 |"]
+    new = [r"$$ P_b = \frac{M_b}{l_{O2A}} = \frac{-227.3}{0.0925} = -2457\ \mathrm{N} $$",
+           r"\eta_w = 0.990 \times 0.7977 \times 0.950 \times 0.990^{3} \times 0.960 = 0.6988 $$",
+           r"J_F' = J_F\,i^2 = 6.404 \times 14.1181^2 = 1276.5\ \text{kg·m}^2",
+           r"a = a_0 + \frac{L_d - L_{d0}}{2} = 470 + \frac{1600 - 1697.2}{2} = 421.4\ \text{mm}",
+           r"m = \frac{4 J_F}{D^2} = \frac{4 \times 204.13}{1.000^2} = 816.52\ \text{kg}",
+           r"\Delta\alpha = \frac{h}{L} = \frac{14.903}{35} = 0.4258\ \text{rad}",
+           r"L_{O_3B} = \frac{H}{2\sin(\psi/2)} = \frac{320}{2\sin 8.1818°} = 1124.27\ \text{mm}",
+           "F_c = L\\,q = 20.00\\ \\text{m} = 1000.0\\ \\text{kN} $$\n\n"
+           "| 0.01 | 184.80 | 0.1935 | 5168 | 294.79 | 193.5 |"]
+    for line in old:
+        assert len(chain_faults(line)) == 1, line
+    for line in new:
+        assert not chain_faults(line), (line, chain_faults(line))
 
 
 @pytest.mark.parametrize("lang", ["zh", "en"])

@@ -283,3 +283,35 @@ def test_every_stated_direction_is_the_vectors_direction(example_results, name):
                         assert abs(ang - 90.0) < 2.0, (pos.label, t.symbol, t.direction, ang)
                     checked += 1
     assert checked > 0
+
+
+@pytest.mark.parametrize("name", ["shaper", "slotter", "shaper_lengths", "textbook_guide_bar"])
+def test_guide_bar_force_of_the_moment_equation_is_known_in_the_polygon(example_results, name):
+    """The slider's force on the guide bar solved by the bar's moment equation about its pivot
+    (shaper pos. 4: F_R34 = −2537 N) is known in the force polygon that follows: marked known,
+    drawn for that value (to 0.5 mm) and read as it, and carried on to the crank at that value
+    (it had been re-measured as an unknown, 50.5 mm = 2525 N, and the crank took 2525). The
+    crank's moment equation then balances: M_b + Σ F·h·μl + couples = 0."""
+    doc = [v for v in example_results(name).values() if type(v).__name__ == "GraphicalDocument"][0]
+    seen = 0
+    for pos in doc.positions:
+        crank = pos.forces[-1]
+        for fg in pos.forces[:-1]:
+            for m in fg.moments:
+                if not m.arm or "^" in m.unknown or not m.unknown.startswith("R"):
+                    continue
+                seen += 1
+                # the bar's equation itself: the unknown's moment cancels the known ones
+                assert m.result * m.arm * pos.length_scale + sum(t.value for t in m.terms) == \
+                    pytest.approx(0.0, abs=1e-9 * max(1.0, abs(m.result)))
+                v = next(v for v in fg.vectors if v.symbol == m.unknown)
+                assert v.known and v.read == pytest.approx(abs(m.result), rel=1e-12)
+                assert v.length == gr.rounded(abs(m.result) / fg.scale)
+                back = next(v for v in fg.vectors if v.symbol == f"R{m.unknown[2]}{m.unknown[1]}")
+                assert back.known and back.read == pytest.approx(abs(m.result), rel=1e-12)
+                # the slider's pin passes it to the crank at the equation's value
+                pin = [t for t in crank.moments[0].terms if t.name.startswith(f"R{m.unknown[1]}")]
+                assert pin and pin[0].force == pytest.approx(abs(m.result), rel=1e-9)
+        mb = next(m for m in crank.moments if m.unknown == "Mb")
+        assert mb.result + sum(t.value for t in mb.terms) == pytest.approx(0.0, abs=1e-9)
+    assert seen == len(doc.positions)

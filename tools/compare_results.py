@@ -229,6 +229,20 @@ for _machine in ("shaper", "slotter", "press", "furnace_pusher", "die_cutter", "
 # Issue 19 (session 33): the acceleration of a point of a link turning about a fixed pivot
 # is a^n + a^t, a resultant whose direction the polygon gives ("sum"); it was stated as its
 # normal part's ("to:DC", 66° off for the textbook exercise's a_D).
+# issue 19 (session 35, review35 Top 3/5): a known force of a force polygon is read as its
+# own value, not its drawn length × μF (vectors.*.read, under _PB's "vectors.*"); in the
+# guide-bar (RPR) group the slider's force on the bar found by the bar's moment equation is
+# known in the polygon and carried on at that value (shaper pos. 4: F_R23 = F_R32 2525 →
+# 2536.75 N, the polygon's 50.5 mm no longer re-read), so the crank's M_b follows (227.25 →
+# 228.31 N·m), and the comparison with the analytic values
+_RPR35 = "issue 19 (session 35): F_R34 from the bar's moment equation carried into the polygon and the crank"
+for _machine in ("shaper", "slotter", "linkage"):
+    EXPECTED.setdefault(_machine, []).extend(
+        (f"*graphical.positions.*.{leaf}", _RPR35)
+        for leaf in ("forces.*.reactions.*", "forces.*.loads.*", "forces.*.moments.*.terms.*",
+                     "forces.*.balancing_torque", "balancing_torque", "comparison.*.graphical",
+                     "comparison.*.difference"))
+
 for _machine in ("shaper", "slotter", "press", "furnace_pusher", "die_cutter", "linkage",
                  "crank_rocker", "lockbeam"):
     EXPECTED.setdefault(_machine, []).append(

@@ -409,12 +409,15 @@ class _ForcePolygon:
         self.scale, self.points, self.vectors = scale, {"0": 0j}, []
 
     def add(self, name, value: complex, kind="known", known=True) -> Term:
+        """A known force: drawn to the nearest 0.5 mm at μF, read as its own value (a load,
+        P_b, a force a moment equation gave: its table lists what is drawn for, not the
+        drawn length times μF)."""
         tail = list(self.points)[-1]
         length = rounded(abs(value) / self.scale)
         head = str(len(self.points))
         self.points[head] = self.points[tail] + length * unit(value)
         t = Term(name, known, "", tail, head, length * self.scale * unit(value), length,
-                 length * self.scale, kind)
+                 abs(value), kind)
         self.vectors.append(t)
         return t
 
@@ -543,12 +546,14 @@ def force_drawing(mech, pos: dict, loads: dict, couples: dict, mu_l: float, mu_f
             for f in loads.get(bar, []):
                 if abs(f.value) > 0:
                     fp.add(f.name, f.value)
-            t_sb = fp.add(f"R{sl}{bar}", n_bar, "reaction", False)
+            # the slider's force on the bar is known from the bar's moment equation: drawn
+            # at that value, the polygon solves the frame's reaction
+            t_sb = fp.add(f"R{sl}{bar}", n_bar, "reaction")
             r_fb = fp.measure(outer[bar].name, t_sb.head, "0", "reaction")
             found[outer[bar].name] = r_fb.value
             # the slider: R_bar→slider (= −n_bar, back along the same vector), its loads,
             # and the pin's reaction closes back to the start
-            fp.vectors.append(Term(f"R{bar}{sl}", False, "", t_sb.head, t_sb.tail, -t_sb.value,
+            fp.vectors.append(Term(f"R{bar}{sl}", True, "", t_sb.head, t_sb.tail, -t_sb.value,
                                    t_sb.length, t_sb.read, "reaction"))
             last = t_sb.tail
             for f in loads.get(sl, []):
@@ -557,12 +562,19 @@ def force_drawing(mech, pos: dict, loads: dict, couples: dict, mu_l: float, mu_f
                     head = f"s{len(fp.points)}"
                     fp.points[head] = fp.points[last] + length * unit(f.value)
                     fp.vectors.append(Term(f.name, True, "", last, head,
-                                           length * mu * unit(f.value), length, length * mu,
+                                           length * mu * unit(f.value), length, abs(f.value),
                                            "known"))
                     last = head
-            r_ps = fp.measure(outer[sl].name, last, t_sb.head, "reaction")
+            if last == t_sb.tail:
+                # a slider with no load of its own: its pin carries the bar's force back,
+                # the equation's value (nothing to measure)
+                r_ps = Term(outer[sl].name, False, "", last, t_sb.head, n_bar, t_sb.length,
+                            abs(n_bar), "reaction")
+                fp.vectors.append(r_ps)
+            else:
+                r_ps = fp.measure(outer[sl].name, last, t_sb.head, "reaction")
             found[outer[sl].name] = r_ps.value
-            found[inner.name] = -t_sb.value if inner.link_b == sl else t_sb.value
+            found[inner.name] = -n_bar if inner.link_b == sl else n_bar
             moments.insert(0, MomentEquation(sl, inner.point, tuple(ts), f"M{bar}{sl}", 0.0,
                                              couple))
         # pass the outer reactions on to the earlier links

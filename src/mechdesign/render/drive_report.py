@@ -2,6 +2,8 @@
 allocation, the shaft table, each stage's geometry and strength checks."""
 from __future__ import annotations
 
+import math
+
 
 import numpy as np
 
@@ -127,15 +129,32 @@ def _printed_deviation(n: float, n_req: float) -> float:
     return 100 * (a - b) / b
 
 
+def _eta_factors(etas, eta_b: float, eta_w: float, n_b: int, printed: str):
+    """The efficiency chain's factors, 3 decimals or more where the product needs them to give
+    its printed result (a worm's 0.7977 printed 0.798 gave 0.6991 for 0.6988); the trailing
+    zeros beyond 3 decimals dropped."""
+    def text(x, extra):
+        t = f(x, 3 + extra)
+        return t[:5] + t[5:].rstrip("0") if "." in t else t
+    for extra in range(4):
+        ts = [text(e, extra) for e in etas]
+        tb, tw = text(eta_b, extra), text(eta_w, extra)
+        value = math.prod(float(t) for t in ts) * float(tb) ** n_b * float(tw)
+        if abs(value - float(printed)) <= 0.5e-4 * (1 + 1e-9):
+            break
+    return " \\times ".join(ts), tb, tw
+
+
 def drive_context(d, lang: str, figures: dict[str, str], machine_power_eq: str | None = None) -> dict:
     _ = tr(lang)
     m = d.motor
     etas = [st.efficiency for st in d.stages]
     n_b = len(d.stages)
-    eta_terms = " \\times ".join(f(e, 3) for e in etas)
+    eta_terms, eta_b, eta_w = _eta_factors(etas, d.bearing_eff, d.machine_eff, n_b,
+                                           f(d.efficiency, 4))
     eq = {
         "eta": (rf"\eta = \prod \eta_i \cdot \eta_b^{{{n_b}}} \cdot \eta_w = {eta_terms} \times "
-                rf"{f(d.bearing_eff, 3)}^{{{n_b}}} \times {f(d.machine_eff, 3)} = {f(d.efficiency, 4)}"),
+                rf"{eta_b}^{{{n_b}}} \times {eta_w} = {f(d.efficiency, 4)}"),
         "pd": (rf"P_d = \frac{{P_w}}{{\eta}} = \frac{{{sig(d.machine_power / 1e3, group=False)}}}{{{f(d.efficiency, 4)}}}"
                rf" = {sig(d.power_required / 1e3, group=False)}\ \text{{kW}}"),
         "i": (rf"i = \frac{{n_m}}{{n_w}} = \frac{{{f(m.full_load_rpm, 0)}}}{{{rpm(d.output_speed_required)}}}"
@@ -435,6 +454,12 @@ def _belt_design(r, g, title: str, _) -> dict:
     d2_eq = (rf"d_{{d2}} = i\,d_{{d1}}(1-\varepsilon) = {num(r.ratio_allocated)} \times {num(d1)} \times "
              rf"(1-{num(b.slip)}) = {num(d2_calc)}\ \text{{mm}} \rightarrow {num(d2)}\ \text{{mm}}"
              if not r.fixed else rf"d_{{d2}} = {num(d2)}\ \text{{mm}}")
+    # L_d0 with the digits that give the printed a (1697.2: 470 + (1600 − 1697.2)/2 = 421.4)
+    a_txt = num(b.a * MM)
+    step = 10.0 ** -len(a_txt.partition(".")[2])
+    ld0 = next(t for t in (num(b.L_d0 * MM, k) for k in (4, 5, 6, 7)) if abs(
+        float(num(a0)) + (float(num(b.L_d * MM)) - float(t)) / 2 - float(a_txt)) <= 0.5 * step * (1 + 1e-9)
+        or t == num(b.L_d0 * MM, 7))
     formulas = [
         rf"P_{{ca}} = K_A P = {num(b.KA)} \times {num(P)} = {num(Pca)}\ \text{{kW}}",
         rf"v = \frac{{\pi d_{{d1}} n_1}}{{60 \times 1000}} = \frac{{\pi \times {num(d1)} \times {num(b.n1_rpm)}}}"
@@ -442,8 +467,8 @@ def _belt_design(r, g, title: str, _) -> dict:
         d2_eq,
         rf"L_{{d0}} = 2a_0 + \frac{{\pi}}{{2}}(d_{{d1}}+d_{{d2}}) + \frac{{(d_{{d2}}-d_{{d1}})^2}}{{4a_0}} = "
         rf"2 \times {num(a0)} + \frac{{\pi}}{{2}} \times {num(d1 + d2)} + \frac{{{num(d2 - d1)}^2}}{{4 \times {num(a0)}}}"
-        rf" = {num(b.L_d0 * MM)}\ \text{{mm}} \rightarrow L_d = {num(b.L_d * MM)}\ \text{{mm}},\ K_L = {num(b.K_L)}",
-        rf"a = a_0 + \frac{{L_d - L_{{d0}}}}{{2}} = {num(a0)} + \frac{{{num(b.L_d * MM)} - {num(b.L_d0 * MM)}}}{{2}}"
+        rf" = {ld0}\ \text{{mm}} \rightarrow L_d = {num(b.L_d * MM)}\ \text{{mm}},\ K_L = {num(b.K_L)}",
+        rf"a = a_0 + \frac{{L_d - L_{{d0}}}}{{2}} = {num(a0)} + \frac{{{num(b.L_d * MM)} - {ld0}}}{{2}}"
         rf" = {num(b.a * MM)}\ \text{{mm}}",
         rf"\alpha_1 = 180^\circ - \frac{{d_{{d2}} - d_{{d1}}}}{{a}} \times \frac{{180^\circ}}{{\pi}} = 180^\circ - "
         rf"\frac{{{num(d2 - d1)}}}{{{num(b.a * MM)}}} \times \frac{{180^\circ}}{{\pi}} = {num(deg(b.alpha1))}^\circ",

@@ -382,3 +382,21 @@ def md_meta(meta, lang: str | None = None) -> dict[str, str]:
 def sentences(_, *texts: str) -> str:
     """Sentences of one paragraph: a space between them in English, none in Chinese."""
     return ("" if _.zh else " ").join(t for t in texts if t)
+
+
+def gives(value: float, printed: str) -> bool:
+    """``value`` (a chain evaluated from its printed factors) rounds to ``printed``: within
+    half a unit of its last printed digit (the rule of every displayed chain)."""
+    digits = len(printed.replace(" ", "").partition(".")[2])
+    return abs(value - float(printed.replace(" ", ""))) <= 0.5 * 10.0 ** -digits * (1 + 1e-9)
+
+
+def factor_for(x: float, ok, sig_digits: int = 4) -> str:
+    """``x`` as a factor of a displayed chain: :func:`sig`'s ``sig_digits`` significant
+    digits, one more at a time (up to three) until ``ok(printed factor)`` holds — the printed
+    factors give the printed result (6.404 × 14.118² = 1276.5, where 14.12 gives 1276.8)."""
+    for extra in range(4):
+        text = sig(x, sig_digits + extra, group=False)
+        if ok(float(text)):
+            return text
+    return text

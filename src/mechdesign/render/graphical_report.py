@@ -674,8 +674,12 @@ def _group_moments(fg, mu_l, lang: str, least: dict, shown: dict) -> tuple[list,
         if m.unknown == "Pb":
             # a definition evaluated (no equation solved): one chain, no "=>"; the crank's
             # length is known (m.arm x mu_l in m), not measured
-            moments.append((f"P_b = \\frac{{M_b}}{{l_{{{m.point}}}}} = \\frac{{{_num(fg.balancing_torque)}}}"
-                            f"{{{exact(m.arm * mu_l, decimals=5)}}} = {_num(m.result)}" r"\ \mathrm{N}", None, None))
+            # M_b with the digits that give the printed P_b (−227.3/0.0925 = −2457)
+            arm = exact(m.arm * mu_l, decimals=5)
+            mb = next(_factor(fg.balancing_torque, x) for x in range(7) if x == 6 or _gives(
+                float(_factor(fg.balancing_torque, x)) / float(arm), _num(m.result)))
+            moments.append((f"P_b = \\frac{{M_b}}{{l_{{{m.point}}}}} = \\frac{{{mb}}}"
+                            f"{{{arm}}} = {_num(m.result)}" r"\ \mathrm{N}", None, None))
             continue
         where = f"\\Sigma M_{{{m.point}}}" + ("" if m.unknown == "Mb" else f"({m.link})")
         res = _num(m.result)

@@ -5,7 +5,7 @@ from __future__ import annotations
 import numpy as np
 
 from ..i18n import N_, Msg, tr
-from .fmt import f, fluctuation, sig, time_ratio
+from .fmt import f, fluctuation, gives, sig, time_ratio
 from .labels import InContext, pgettext
 
 DEG = 180.0 / np.pi
@@ -54,11 +54,15 @@ def guide_bar_context(syn, p, rod: str = "BF", ram_zh: str | None = None,
                   rf"\frac{{{g(d.crank)}}}{{{g(d.frame)}}} = {f(H, 2)}\ \text{{mm}}"),
         }
     else:
+        # ψ/2 with the decimals that give the printed L_O3B (320/(2 sin 8.18°) is 1124.6, not
+        # 1124.27: 0.01° of ψ/2 moves the bar by 1.4 mm)
+        half_txt = next(t for t in (f(half, k) for k in range(2, 7)) if t == f(half, 6) or gives(
+            float(f(H, 0)) / (2 * np.sin(np.radians(float(t)))), f(d.guide_bar * mm, 2)))
         eq = {
             "theta": (rf"\theta = 180° \times \frac{{K-1}}{{K+1}} = 180° \times "
                       rf"\frac{{{f(K, 2)}-1}}{{{f(K, 2)}+1}} = {f(theta, 2)}°"),
             "bar": (rf"L_{{O_3B}} = \frac{{H}}{{2\sin(\psi/2)}} = \frac{{{f(H, 0)}}}"
-                    rf"{{2\sin {f(half, 2)}°}} = {f(d.guide_bar * mm, 2)}\ \text{{mm}}"),
+                    rf"{{2\sin {half_txt}°}} = {f(d.guide_bar * mm, 2)}\ \text{{mm}}"),
             "crank": (rf"L_{{O_2A}} = L_{{O_2O_3}} \sin(\psi/2) = {f(d.frame * mm, 0)} \times "
                       rf"{sig(sin_half, 4, group=False)} = {f(d.crank * mm, 2)}\ \text{{mm}}"),
         }

@@ -16,6 +16,7 @@ from ..i18n import N_, tr
 from . import figures as fig
 from .fmt import e, f, fluctuation, force_unit, md_text, percent, sentences, sig, tex_name, time_ratio
 from .fmt import verdict as fmt_verdict
+from .fmt import factor_for, gives
 from .label_layout import Label, place
 from .labels import LabelTable, md_names, md_point, mpl_names, mpl_point, point_tex
 
@@ -462,11 +463,14 @@ def linkage_context(model, k, f_, fly, v, figures: dict, lang: str,
         }
         if fly.rim is not None:
             rim, spec = fly.rim, model.flywheel.rim
+            # J_F with the digits that give the printed rim mass 4 J_F/D²
+            j_mass = factor_for(fly.inertia, lambda x: gives(4 * x / float(f(rim.diameter, 3)) ** 2,
+                                                             f(rim.rim_mass, 2)))
             ctx["fly"]["rim"] = {
                 "D": f(rim.diameter * 1e3, 0), "b": f(rim.width * 1e3, 1),
                 "Hr": f(rim.height * 1e3, 1), "m": f(rim.rim_mass, 2), "speed": f(rim.rim_speed, 2),
                 "hb": f(spec.height_to_width, 2),
-                "mass": (rf"m = \frac{{4 J_F}}{{D^2}} = \frac{{4 \times {sig(fly.inertia, group=False)}}}"
+                "mass": (rf"m = \frac{{4 J_F}}{{D^2}} = \frac{{4 \times {j_mass}}}"
                          rf"{{{f(rim.diameter, 3)}^2}} = {f(rim.rim_mass, 2)}\ \text{{kg}}"),
                 "width": (rf"b = \sqrt{{\frac{{4 g J_F}}{{\pi D^3 (H/b) \gamma}}}} = "
                           rf"{f(rim.width * 1e3, 1)}\ \text{{mm}}"),

@@ -13,7 +13,7 @@ import numpy as np
 
 from ...i18n import N_, tr
 from ...render import figures as fig
-from ...render.fmt import e, f, length, md_meta, md_text, sig, fluctuation
+from ...render.fmt import e, f, length, md_meta, md_text, sig, fluctuation, factor_for, gives
 from ...render.fmt import number, residue, time_ratio, verdict
 from ...render.labels import pgettext, translated
 from ...render.fmt import sentences
@@ -347,10 +347,12 @@ def _amplification(r, p, _) -> dict:
     a = d.four.crank
     rows = []
     for gap, ph, u, fpt, ratio in amp.table:
-        # gap and M/F (v_D/ω, a length) to 0.01 mm, φ to 0.01°, the torque and F/M (a force
-        # per torque, over two decades) to 4 significant digits (README "Conventions"; M/F
-        # as in the equation of M_req below)
-        rows.append([length(gap * MM), _deg(ph, 2), f(u * MM, 2), sig(fpt, 4), f(ratio, 2),
+        # gap to 0.01 mm, φ to 0.01°; the torque F_c·M/F and F/M to 4 significant digits
+        # (README "Conventions"); M/F (v_D/ω, over two decades) to 4, or 5 where the torque
+        # needs them (F_c × 12.712 = 12 712, where 12.71 gives 12 710; as in M_req below)
+        torque = sig(p.cutting_force * u, 4, group=False)
+        mf = factor_for(u * MM, lambda x: gives(p.cutting_force / 1e3 * x, torque))
+        rows.append([length(gap * MM), _deg(ph, 2), mf, sig(fpt, 4), f(ratio, 2),
                      sig(p.cutting_force * u, 4)])
     top = "∞" if not np.isfinite(amp.top_ratio) else f(amp.top_ratio, 2)
     rows.append(["0", _deg(tm.top, 2), "0" if not np.isfinite(amp.top_ratio) else
@@ -372,7 +374,7 @@ def _amplification(r, p, _) -> dict:
                   rf" = {f(amp.cut_work * p.shaft_rpm / 60, 1)}\ \text{{W}},\qquad \bar M_b\,\omega = "
                   rf"{sig(f_.mean_torque, group=False)} \times {sig(abs(p.crank_omega), group=False)} = {f(f_.mean_power, 1)}\ \text{{W}}"),
         "required": (rf"M_{{req}} = F_c\,\frac{{v_D}}{{\omega}} = {f(p.cutting_force / 1e3, 1)}\ "
-                     rf"\text{{kN}} \times {f(u0 * MM, 2)}\ \text{{mm}} = {f(p.cutting_force * u0, 0)}"
+                     rf"\text{{kN}} \times {rows[0][2]}\ \text{{mm}} = {f(p.cutting_force * u0, 0)}"
                      rf"\ \text{{N·m}}"),
         "motor": (rf"T = \frac{{P_{{ed}}\,\eta}}{{\omega}} = \frac{{{f(motor.power, 0)} \times "
                   rf"{f(drive.efficiency, 4)}}}{{{sig(abs(p.crank_omega), group=False)}}} = {f(t_motor, 1)}\ "
@@ -431,15 +433,22 @@ def _flywheel(r, p, b, _) -> dict:
                                     "{n_crank_real} rpm.)", n_crank=f(p.shaft_rpm, 2),
                                     n_crank_real=f(drive.output_speed, 2)))
     speeds = {"real": real, "n_crank": f(p.shaft_rpm, 2)}
+    # the speed ratio with the digits that give the printed J_F' (14.118: 6.404 × 14.118²)
+    def fl_ratio_ok(x):
+        return gives(float(f(fl.inertia, 3)) * x * x, f(fl.inertia_on_crank, 1))
+
+    # J_F with the digits that give the printed rim mass 4 J_F/D²
+    j_mass = factor_for(fl.inertia, lambda x: gives(4 * x / float(f(fl.rim.diameter, 3)) ** 2,
+                                                    f(fl.rim.rim_mass, 2)))
     eq = {
         "md": (rf"M_d = \frac{{1}}{{2\pi}}\oint M_b\,d\varphi = {sig(fl.mean_torque, group=False)}\ \text{{N·m}}"
                rf"\ (\text{{{crank_shaft}}})"),
         "jf": (rf"J_F = \frac{{900\,\Delta W_{{max}}}}{{\pi^2 n^2 [\delta]}} = \frac{{900 \times "
                rf"{f(fl.max_energy_swing, 1)}}}{{\pi^2 \times {f(fl.shaft_speed_rpm, 2)}^2 \times "
                rf"{f(fl.fluctuation, 4)}}} = {f(fl.inertia, 3)}\ \text{{kg·m}}^2"),
-        "crank": (rf"J_F' = J_F\,i^2 = {f(fl.inertia, 3)} \times {sig(fl.speed_ratio, group=False)}^2 = "
+        "crank": (rf"J_F' = J_F\,i^2 = {f(fl.inertia, 3)} \times {factor_for(fl.speed_ratio, fl_ratio_ok)}^2 = "
                   rf"{f(fl.inertia_on_crank, 1)}\ \text{{kg·m}}^2"),
-        "mass": (rf"m = \frac{{4 J_F}}{{D^2}} = \frac{{4 \times {f(fl.inertia, 3)}}}"
+        "mass": (rf"m = \frac{{4 J_F}}{{D^2}} = \frac{{4 \times {j_mass}}}"
                  rf"{{{f(fl.rim.diameter, 3)}^2}} = {f(fl.rim.rim_mass, 2)}\ \text{{kg}}"),
         "width": (rf"b = \sqrt{{\frac{{4 g J_F}}{{\pi D^3 (H/b) \gamma}}}} = \sqrt{{\frac{{4 \times "
                   rf"{f(p.gravity, 2)} \times {f(fl.inertia, 3)}}}{{\pi \times "

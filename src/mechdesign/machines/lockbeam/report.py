@@ -15,6 +15,7 @@ from ...i18n import N_, tr
 from ...render import figures as fig
 from ...render.fmt import e, f, md_meta, md_text, rpm, sig, time_ratio
 from ...render.fmt import verdict
+from ...render.fmt import factor_for, gives
 from ...render.labels import mpl_point
 from .stages import grashof_margin
 
@@ -416,11 +417,14 @@ def _bending(r: dict, lang: str, figures: dict) -> dict:
     num = abs(B1) ** 2 - abs(B2) ** 2
     den = 2 * (np.real(u1 * np.conj(B1)) - np.real(u2 * np.conj(B2)))
     ad = lambda x: f(np.mod(x, 2 * np.pi) * DEG, 3)  # noqa: E731
+    # the arc h with the digits that give the printed Δα = h/L (14.903/35 = 0.4258)
+    h_txt = factor_for(h_arc * MM, lambda x: gives(x / float(f(arm * MM, 0)),
+                                                   sig(b.input_swing, 4, group=False)))
     eq = {
         "dbeta": (rf"\Delta\beta = \theta_b \frac{{D_2}}{{D_1}} = {f(bp.bending_angle * DEG, 0)}° \times "
                   rf"\frac{{{f(bp.bending_wheel * MM, 0)}}}{{{f(bp.driving_wheel * MM, 0)}}} = "
                   rf"{f(bp.output_swing * DEG, 2)}°"),
-        "dalpha": (rf"\Delta\alpha = \frac{{h}}{{L}} = \frac{{{f(h_arc * MM, 2)}}}{{{f(arm * MM, 0)}}} = "
+        "dalpha": (rf"\Delta\alpha = \frac{{h}}{{L}} = \frac{{{h_txt}}}{{{f(arm * MM, 0)}}} = "
                    rf"{sig(b.input_swing, 4, group=False)}\ \text{{rad}} = {f(b.input_swing * DEG, 2)}°"),
         "loop": (r"\left| a\,e^{i\alpha_k} - \left(d + c\,e^{i\beta_k}\right) \right| = b,\qquad "
                  r"k = 1, 2"),

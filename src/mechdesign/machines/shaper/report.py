@@ -15,6 +15,7 @@ from ...render import figures as fig
 from ...render import guide_bar_report as gb_report
 from ...i18n import N_, tr
 from ...render.fmt import e, f, in_lang, md_meta, sig, time_ratio, verdict, fluctuation
+from ...render.fmt import factor_for, gives
 
 DEG = 180.0 / np.pi
 
@@ -188,6 +189,9 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
                rf"\text{{m/s}}^2"),
     }
     i_ratio = fl.speed_ratio
+    # J_F with the digits that give the printed rim mass 4 J_F/D² (4 × 204.13/1.000² = 816.52)
+    j_mass = factor_for(fl.inertia, lambda x: gives(4 * x / float(f(fl.rim.diameter, 3)) ** 2,
+                                                    f(fl.rim.rim_mass, 2)))
     fly_eq = {
         "mr": (rf"M_r = \frac{{M_b}}{{i}}, \quad i = \frac{{z_2}}{{z_1}} = \frac{{{p.z2}}}{{{p.z1}}}"
                rf" = {sig(i_ratio, group=False)}") if fl.shaft == "pinion" else r"M_r = M_b",
@@ -196,7 +200,7 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
         "jf": (rf"J_F = \frac{{900\,\Delta W_{{max}}}}{{\pi^2 n^2 [\delta]}} = \frac{{900 \times "
                rf"{sig(fl.max_energy_swing, group=False)}}}{{\pi^2 \times {f(fl.shaft_speed_rpm, 2)}^2 \times "
                rf"{f(p.fluctuation, 4)}}} = {sig(fl.inertia, group=False)}\ \text{{kg·m}}^2"),
-        "mass": (rf"m = \frac{{4 J_F}}{{D^2}} = \frac{{4 \times {sig(fl.inertia, group=False)}}}"
+        "mass": (rf"m = \frac{{4 J_F}}{{D^2}} = \frac{{4 \times {j_mass}}}"
                  rf"{{{f(fl.rim.diameter, 3)}^2}} = {f(fl.rim.rim_mass, 2)}\ \text{{kg}}"),
         "width": (rf"b = \sqrt{{\frac{{4 g J_F}}{{\pi D^3 (H/b) \gamma}}}} = \sqrt{{\frac{{4 \times "
                   rf"{f(p.gravity, 2)} \times {sig(fl.inertia, group=False)}}}{{\pi \times "
