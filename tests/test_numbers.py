@@ -182,7 +182,9 @@ def test_shaft_table_and_amplification_table_by_the_rule(example_results):
     assert amp
     for row in amp:
         cells = [c.strip() for c in row.strip().strip("|").split("|")]
-        assert _decimals(cells[0]) <= 2 and _decimals(cells[1]) == 2 and _decimals(cells[2]) <= 2, row
+        # the M/F column carries the digits its product column F_c·M/F is computed from
+        # (review35: "0.19 … 193.5"); test_displayed_arithmetic checks that product
+        assert _decimals(cells[0]) <= 2 and _decimals(cells[1]) == 2 and _decimals(cells[2]) <= 4, row
     jump = _table_rows(md, "jump of the driven speed")
     assert jump and "5.2360" not in jump[0][2] and _decimals(jump[0][3]) <= 3, jump
 

@@ -895,10 +895,9 @@ CONTINUED_OPEN: set[tuple[str, str]] = set()
 # in typst's fourth pass, set figures 15-16 smaller, and press zh did not settle)
 FAR_OPEN: set[tuple[str, str]] = {("press", "zh"), ("press", "en")}
 WIDE_GAPS_OPEN: set[tuple[str, str]] = set()
-# die_cutter en: chapter 12 (drawing sheets) ends its page above the sheet previews, which
-# float on (the session-34 merges; the previews are figures of their own); press zh the same
-# (chapter 8, p.27) since session 35's gear and known-loads text moved its pages
-HALF_EMPTY_OPEN: set[tuple[str, str]] = {("die_cutter", "en"), ("press", "zh")}
+# (die_cutter en's page above the sheet previews went when the previews stopped floating:
+# templates/report.typ, sheet-preview)
+HALF_EMPTY_OPEN: set[tuple[str, str]] = set()
 # A figure between the parts of a split table whose text stands BEFORE the table (floated to
 # the top of the page where the table goes on, or to the foot of the page where it starts) is
 # held back past the table (templates/report.typ: figure-held; the figures whose text follows
@@ -912,13 +911,13 @@ TABLES_INTERRUPTED_OPEN = {(b, lang) for b, langs in {
 # A blank band above a figure at a page's foot (page_holes): the figures with a hole above
 # them where the block after their text went on go to the top of the page (report.typ:
 # to-top). Open: holes above figures whose next block stands on their page (a heading kept
-# with its section, a table), a figure at the foot of a chapter's only page (cam_7_1: its
-# heading stands above it), the sheet previews before the summary, and the reports set
-# without the figure rules (see above).
+# with its section, a table) and the reports set without the figure rules (see above). (The
+# holes above the sheet previews, cam_7_1's at the foot of its sheets chapter's only page
+# among them, went when the previews stopped floating: they stand in the flow under the
+# sheets' table, report.typ sheet-preview.)
 HOLES_OPEN = {(b, lang) for b, langs in {
-    "cam_7_1": "zh en", "die_cutter": "zh en", "linkage_sixbar": "zh",
-    "lockbeam": "zh en", "press": "en", "shaper_lengths": "zh en",
-    "slotter": "zh en", "textbook_guide_bar": "en"}.items() for lang in langs.split()}
+    "die_cutter": "zh en", "linkage_sixbar": "zh", "lockbeam": "zh en",
+    "slotter": "zh"}.items() for lang in langs.split()}
 # A figure between two lines of a derivation (figures_in_derivations). Not fixed yet.
 DERIVATION_OPEN = {(b, lang) for b in ("linkage_sixbar", "press", "shaper", "shaper_lengths")
                    for lang in ("zh", "en")}
