@@ -42,8 +42,7 @@ LABELS = LabelTable({
     "phase": pgettext("analysis sheet", "crank angle φ (°)"),
     "curves": pgettext("analysis sheet", "Output motion curves"),
     "mbt": pgettext("analysis sheet", "Balancing torque"),
-    "signs": pgettext("analysis sheet", "Signs: Mb and Pb in the table and the force polygons counter-clockwise "
-                      "positive; the Mb curve positive in the crank's sense of rotation"),
+    "signs": pgettext("analysis sheet", "Signs: Mb, Md and Pb counter-clockwise positive"),
     "et": pgettext("analysis sheet", "Flywheel energy"),
     "md": pgettext("analysis sheet", "driving torque Md = {v} N·m"),
     "mean": pgettext("analysis sheet", "mean Mb = {v} N·m"),
@@ -719,8 +718,9 @@ def _cell_number(x: float, column, decimals: int | None = None) -> str:
 def ccw_torque(model, forces) -> np.ndarray:
     """The balancing torque counter-clockwise positive, as the force polygons and the
     report's graphical method sign M_b (the forces stage gives it positive in the crank's
-    sense of rotation: −M_b for a crank turning clockwise). The table and the crank's
-    force polygon cell write this one sign convention, stated in the sheet's notes."""
+    sense of rotation: −M_b for a crank turning clockwise). The table, the crank's force
+    polygon cell and the M_b curve with its mean M_d write this one sign convention, stated in
+    the sheet's notes."""
     sense = 1.0 if float(model.crank.omega) >= 0 else -1.0
     return sense * np.asarray(forces.balancing_torque)
 
@@ -780,8 +780,12 @@ def _curves(s: Sheet, model, k, forces, fl, lab: dict, box) -> None:
     if forces is None:
         return
     y -= 9.0
-    mb = forces.balancing_torque
-    md = fl.mean_torque if fl is not None else forces.mean_torque
+    # M_b and its mean M_d counter-clockwise positive, as the table and the force polygons
+    # (one sign convention on the sheet; the energy chart's works are the crank's)
+    sense = 1.0 if float(model.crank.omega) >= 0 else -1.0
+    mb = ccw_torque(model, forces)
+    md_crank = fl.mean_torque if fl is not None else forces.mean_torque
+    md = sense * md_crank
     text = lab["md"] if fl is not None else lab["mean"]
     chart(s, (left, y - h, bx1, y), ph, [Series(closed(mb))], xlabel=lab["phase"],
           ylabel=lab["mb"], title=lab["mbt"], xticks=ticks, shade=[(0, span)],
@@ -792,7 +796,7 @@ def _curves(s: Sheet, model, k, forces, fl, lab: dict, box) -> None:
     y -= h + 26.0
     e = fl.energy
     phi = np.radians(ph)
-    w_d = md * phi
+    w_d = md_crank * phi
     w_r = w_d - np.append(e, e[0])        # ∫M_b dφ = M_d·φ − ΔE (exact, from the results)
     m = chart(s, (left, y - h, bx1, y), ph,
               [Series(w_d, weight=0.35), Series(w_r, weight=0.35), Series(np.append(e, e[0]))],
