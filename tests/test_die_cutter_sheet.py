@@ -53,10 +53,18 @@ def test_chain_sprockets_and_tangent_runs(dxf_sheet):
     p, z = BRIEF["chain"]["pitch_mm"], BRIEF["chain"]["sprocket_teeth"]
     rs = p / (2 * np.sin(np.pi / z)) / n
     wheels = _round(msp, rs)
-    # two sprockets, each a whole circle (the driving one behind the gears: solid + dashed arcs)
+    # two sprockets: the tail one a whole circle; the driving one behind the gear pair, with
+    # the arc the driver hides (inside its tip circle r_a1 = m(z1/2 + 1), centres
+    # d = m(z1 + z2)/2 apart) not drawn, as a diagram draws no hidden lines (review34 C: a
+    # dashed arc across incomplete gear 2): 360° − 2β, cos β = (R_s² + d² − r_a1²)/(2 R_s d)
     assert len(wheels) == 2, wheels
-    for sweeps in wheels.values():
-        assert abs(sum(sweeps) - 360.0) < 1e-6
+    g = BRIEF["incomplete_gear"]
+    m = g["module_mm"]
+    ra1 = m * (g["driver_teeth_full"] / 2 + 1) / n
+    d = m * (g["driver_teeth_full"] + g["driven_teeth"]) / 2 / n
+    beta = np.degrees(np.arccos((rs ** 2 + d ** 2 - ra1 ** 2) / (2 * rs * d)))
+    assert sorted(sum(sw) for sw in wheels.values()) == pytest.approx([360.0 - 2 * beta, 360.0])
+    assert all(len(sw) == 1 for sw in wheels.values())        # one arc each, nothing dashed
     a, b = wheels
     runs = []
     for ln in msp.query("LINE"):
@@ -222,3 +230,25 @@ def test_transmission_sheet_draws_the_flywheel(example_results, name):
     # of their belt + gear-pair drive)
     assert brief["flywheel"]["shaft"] in (1, "pinion") and len(r["drive"].stages) == (3 if name == "die_cutter" else 2)
     assert any(t.startswith(f"飞轮装在轴 {shaft_numeral(1)} 上") for t in texts), texts
+
+
+def test_number_8_on_the_driven_gear(dxf_sheet):
+    """Member 8 (the driven gear with the driving sprocket on its shaft, as the notes list
+    it) is numbered on the driven gear: "8" between the gear's tip circle r_a2 = m(z2/2 + 1)
+    and the sprocket R_s, nearer the gear (review34 C: it sat on the sprocket's circle, up by
+    the chain, and read as the sprocket's number)."""
+    msp, n = dxf_sheet
+    g = BRIEF["incomplete_gear"]
+    m = g["module_mm"]
+    r2, ra2 = m * g["driven_teeth"] / 2 / n, m * (g["driven_teeth"] / 2 + 1) / n
+    rs = BRIEF["chain"]["pitch_mm"] / (2 * np.sin(np.pi / BRIEF["chain"]["sprocket_teeth"])) / n
+    o2 = [complex(e.dxf.center.x, e.dxf.center.y) for e in msp.query("CIRCLE")
+          if e.dxf.layer == "CENTER" and abs(e.dxf.radius - r2) < TOL]
+    assert len(o2) == 1
+    eights = [e for e in msp.query("TEXT MTEXT")
+              if (e.dxf.text if e.dxftype() == "TEXT" else e.text).strip() == "8"]
+    assert len(eights) == 1
+    e = eights[0]
+    p = e.dxf.align_point if e.dxftype() == "TEXT" and e.dxf.hasattr("align_point") else e.dxf.insert
+    r = abs(complex(p.x, p.y) - o2[0])
+    assert ra2 < r < rs and r - ra2 < rs - r, (r, ra2, rs)

@@ -76,3 +76,29 @@ def test_cell_and_table_sign_mb_and_pb_alike(example_results, name):
         mb_table = _number(row[-1][1])
         assert mb_table == pytest.approx(want, rel=2e-3, abs=0.06), (label, row)
         assert np.sign(mb_table) == np.sign(mb_cell)
+
+
+@pytest.mark.parametrize("name", ["shaper", "textbook_guide_bar"])
+def test_curve_signs_mb_as_the_table(example_results, name):
+    """The M_b curve and its mean M_d are counter-clockwise positive too, as the table and the
+    cells: one convention on the sheet, stated in one short notes line (the sheet wrote the
+    curve positive in the crank's sense of rotation, a second convention in the notes). The
+    mean line's value is the flywheel's driving torque (positive: it drives the crank) times
+    the sign of ω; the shaper's crank turns clockwise, so its M_d is written negative."""
+    from mechdesign.brief.loader import load_brief
+    from mechdesign.render.sheets import _builders, linkage_results, title_info
+
+    brief = load_brief(ROOT / "designs" / f"{name}.yaml")
+    r = example_results(name)
+    found = linkage_results(r)
+    build = dict(_builders(r, brief))["analysis"]
+    sheet = build(title_info(brief.report, "analysis", "MD-01", 1, 1, "en"), "en")
+    texts = [t for t, _ in _texts(sheet)]
+    assert not any("sense of rotation" in t for t in texts)
+    assert any(re.fullmatch(r"Signs: Mb, Md and Pb counter-clockwise positive", t) for t in texts)
+    md = [_number(m.group(1)) for t in texts
+          for m in [re.search(r"(?:driving torque Md|mean Mb) = (\S+) N·m", t)] if m]
+    sense = np.sign(found.model.crank.omega)
+    mean = float(np.mean(found.forces.balancing_torque[:found.motion.grid_size]))
+    assert mean > 0                                   # it drives, in the crank's sense
+    assert len(md) == 1 and md[0] == pytest.approx(sense * mean, rel=2e-3), (md, sense * mean)

@@ -42,8 +42,7 @@ LABELS = LabelTable({
     "phase": pgettext("analysis sheet", "crank angle φ (°)"),
     "curves": pgettext("analysis sheet", "Output motion curves"),
     "mbt": pgettext("analysis sheet", "Balancing torque"),
-    "signs": pgettext("analysis sheet", "Signs: Mb and Pb in the table and the force polygons counter-clockwise "
-                      "positive; the Mb curve positive in the crank's sense of rotation"),
+    "signs": pgettext("analysis sheet", "Signs: Mb, Md and Pb counter-clockwise positive"),
     "et": pgettext("analysis sheet", "Flywheel energy"),
     "md": pgettext("analysis sheet", "driving torque Md = {v} N·m"),
     "mean": pgettext("analysis sheet", "mean Mb = {v} N·m"),
@@ -385,9 +384,10 @@ def _draw_polygon(s: Sheet, pg: Polygon, mu: float, box, keep_out=()) -> None:
             text = force_symbol(vec.name)
             # beside its vector where there is room, else on a leader (the subscripted names,
             # F_R12, are longer than R12 and crowd a small polygon)
-            if placer.place(v.p(mid), text, 2.5, prefer=1j * vec.value, gap=1.2, crowded=False) is None:
+            if placer.place(v.p(mid), text, 2.5, prefer=1j * vec.value, gap=1.2, crowded=False,
+                            apart=True) is None:
                 placer.leader(v.p(mid), text, 2.5, prefer=1j * vec.value, lengths=(4.0, 6.0, 9.0, 13.0, 18.0))
-        placer.place(v.p(0j), "o", 2.5, prefer=-1 - 1j, gap=1.2)
+        placer.place(v.p(0j), "o", 2.5, prefer=-1 - 1j, gap=1.2, apart=True)
         return
     values = list(pg.points.values())
     centroid = np.mean(values)
@@ -405,8 +405,9 @@ def _draw_polygon(s: Sheet, pg: Polygon, mu: float, box, keep_out=()) -> None:
         same = named or same
         done[key] = True
         d = z - centroid
+        # (1.1 mm from the other labels: a′ beside n3s3′ read as one)
         placer.place(v.p(z), ", ".join(same), 2.5, prefer=d if abs(d) > 1e-9 * mu else 1j,
-                     gap=1.2)
+                     gap=1.2, apart=True)
 
 
 # ------------------------------------------------------------------ the mechanism
@@ -462,6 +463,30 @@ def _radius_angle(s: Sheet, placer: LabelPlacer, v, centre: complex, radius: flo
         if best is None or hits < best[0]:
             best = (hits, ang)
     return float(best[1])
+
+
+def _clear_offset(placer: LabelPlacer, v, a: complex, b: complex, offsets, measurement: float,
+                  area) -> float:
+    """The offset [paper mm] of an aligned dimension a–b (model) among ``offsets`` (in the
+    order of preference) whose text covers the fewest points of the lines drawn so far and
+    stays inside ``area``: the skeleton's frame and stroke dimensions set clear of the fan of
+    the other positions' links (GB/T 4458.4: a dimension's text never crossed by a line)."""
+    pts = placer._drawn_points()
+    best = None
+    for rank, off in enumerate(offsets):
+        d = Dimension(v.p(a), v.p(b), float(off), measurement)
+        _lines, _arrows, text, pos, tang = dimension_geometry(d)
+        w = text_width(text, d.height)
+        u = np.exp(1j * tang)
+        corners = [pos + x * u * (w / 2 + 0.5) + y * 1j * u for x in (-1, 1) for y in (-0.5, d.height + 0.5)]
+        if not all(area[0] <= c.real <= area[2] and area[1] <= c.imag <= area[3] for c in corners):
+            continue
+        local = (pts - pos) * np.conj(u)              # the text's frame: x along, y up
+        hits = np.count_nonzero((np.abs(local.real) < w / 2 + 0.5) & (local.imag > -0.5)
+                                & (local.imag < d.height + 0.5))
+        if best is None or (hits, rank) < best[:2]:
+            best = (hits, rank, float(off))
+    return offsets[0] if best is None else best[2]
 
 
 def _name(model, link: str, lang: str) -> str | None:
@@ -599,15 +624,21 @@ def _mechanism(s: Sheet, model, k, lab: dict, box, chosen: list[str], lang: str)
     # the crank's radius where its text, outside the circle, crosses the fewest lines drawn
     v.dimension(piv, piv + crank.length * mm * np.exp(1j * _radius_angle(s, placer, v, piv, crank.length * mm)),
                 0.0, kind="radius", measurement=crank.length * mm)
+    # the frame's and the stroke's dimension at the offset, on either side, where their text
+    # is crossed by the fewest lines (the links of the other positions fan out across them)
+    area = (bx0, by0, bx1, by1 - top_room)
     frames = list(mech.frame_points.values())
     if len(frames) >= 2:
         a, b = frames[0] * mm, frames[1] * mm
-        v.dimension(a, b, 12.0, measurement=abs(b - a))
+        off = _clear_offset(placer, v, a, b, (12.0, -12.0, 20.0, -20.0, 28.0, -28.0), abs(b - a), area)
+        v.dimension(a, b, off, measurement=abs(b - a))
     if out.kind == "point" and out.name in P:
         j = int(np.argmax(np.abs(k.s[n:])))
         a, b = P[out.name][0], P[out.name][j]
         if abs(b - a) > 1e-9:
-            v.dimension(a, b, -14.0, measurement=k.stroke * mm)
+            off = _clear_offset(placer, v, a, b, (-14.0, 14.0, -22.0, 22.0, -30.0, 30.0), k.stroke * mm,
+                                area)
+            v.dimension(a, b, off, measurement=k.stroke * mm)
     for _, _, g0, u, t0, t1 in guides:
         # from the first frame point off the guide line to the line
         off = [(f * mm, g0 + u * (np.conj(u) * (f * mm - g0)).real) for f in frames]
@@ -719,8 +750,9 @@ def _cell_number(x: float, column, decimals: int | None = None) -> str:
 def ccw_torque(model, forces) -> np.ndarray:
     """The balancing torque counter-clockwise positive, as the force polygons and the
     report's graphical method sign M_b (the forces stage gives it positive in the crank's
-    sense of rotation: −M_b for a crank turning clockwise). The table and the crank's
-    force polygon cell write this one sign convention, stated in the sheet's notes."""
+    sense of rotation: −M_b for a crank turning clockwise). The table, the crank's force
+    polygon cell and the M_b curve with its mean M_d write this one sign convention, stated in
+    the sheet's notes."""
     sense = 1.0 if float(model.crank.omega) >= 0 else -1.0
     return sense * np.asarray(forces.balancing_torque)
 
@@ -780,8 +812,12 @@ def _curves(s: Sheet, model, k, forces, fl, lab: dict, box) -> None:
     if forces is None:
         return
     y -= 9.0
-    mb = forces.balancing_torque
-    md = fl.mean_torque if fl is not None else forces.mean_torque
+    # M_b and its mean M_d counter-clockwise positive, as the table and the force polygons
+    # (one sign convention on the sheet; the energy chart's works are the crank's)
+    sense = 1.0 if float(model.crank.omega) >= 0 else -1.0
+    mb = ccw_torque(model, forces)
+    md_crank = fl.mean_torque if fl is not None else forces.mean_torque
+    md = sense * md_crank
     text = lab["md"] if fl is not None else lab["mean"]
     chart(s, (left, y - h, bx1, y), ph, [Series(closed(mb))], xlabel=lab["phase"],
           ylabel=lab["mb"], title=lab["mbt"], xticks=ticks, shade=[(0, span)],
@@ -792,7 +828,7 @@ def _curves(s: Sheet, model, k, forces, fl, lab: dict, box) -> None:
     y -= h + 26.0
     e = fl.energy
     phi = np.radians(ph)
-    w_d = md * phi
+    w_d = md_crank * phi
     w_r = w_d - np.append(e, e[0])        # ∫M_b dφ = M_d·φ − ΔE (exact, from the results)
     m = chart(s, (left, y - h, bx1, y), ph,
               [Series(w_d, weight=0.35), Series(w_r, weight=0.35), Series(np.append(e, e[0]))],

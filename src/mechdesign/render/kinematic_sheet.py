@@ -800,7 +800,9 @@ def die_cutter_diagram(results, found, info: TitleInfo, lang: str) -> Sheet:
         placer.block(view.p(og) - 3.5j, 5.0)
         _omega_arrow(s, view, og, gd["ra1"], gd["sigma"] > 0, placer, lab)
         # the chain: the driving sprocket on the driven wheel's shaft behind the gear pair
-        # (its arc inside the driver's outline dashed), the tail sprocket
+        # (hidden by the driver where they overlap: its arc there not drawn, as a diagram
+        # draws no hidden lines and a dashed arc across wheel 2 read as one more wheel of
+        # it), the tail sprocket
         d = abs(o2 - og)
         r_front = max(gd["ra1"], gd["rl"])
         cos_b = (gd["rs"] ** 2 + d ** 2 - r_front ** 2) / (2 * gd["rs"] * d)
@@ -808,7 +810,6 @@ def die_cutter_diagram(results, found, info: TitleInfo, lang: str) -> Sheet:
             beta = float(np.arccos(cos_b))
             toward = float(np.angle(og - o2))
             view.arc(o2, gd["rs"], toward + beta, toward - beta + 2 * np.pi, "OUTLINE")
-            view.arc(o2, gd["rs"], toward - beta, toward + beta, "HIDDEN")
         else:
             view.circle(o2, gd["rs"], "OUTLINE")
         view.circle(gd["tail"], gd["rs"], "OUTLINE")
@@ -825,7 +826,10 @@ def die_cutter_diagram(results, found, info: TitleInfo, lang: str) -> Sheet:
         placer.place(view.p(gd["tail"]), sheet_point("O3"), 3.5, prefer=1 + 1j, gap=3.0)
         mid = a1 + np.pi - (a1 - a0) / 2                # middle of the locking arc
         placer.place(view.p(og + gd["rl"] * np.exp(1j * mid)), "2", 3.5, prefer=-np.exp(1j * mid), gap=2.0)
-        placer.place(view.p(o2 + gd["rs"] * np.exp(0.6j * np.pi)), "8", 3.5, prefer=1j, gap=2.0)
+        # member 8 (the driven wheel and the sprocket on its shaft): its number on the
+        # driven wheel, in the ring between the wheel and the sprocket, away from the mesh
+        placer.place(view.p(o2 + gd["ra2"] * np.exp(-0.25j * np.pi)), "8", 3.5,
+                     prefer=np.exp(-0.25j * np.pi), gap=1.5)
         top_run = max(runs, key=lambda ab: ab[0].imag)
         placer.place(view.p((top_run[0] + top_run[1]) / 2), "9", 3.5, prefer=1j, gap=2.0)
         placer.place(view.p(gd["tail"] + gd["rs"] * np.exp(-0.25j * np.pi)), "10", 3.5, prefer=1 - 1j, gap=2.0)

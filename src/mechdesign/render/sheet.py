@@ -1036,7 +1036,9 @@ class LabelPlacer:
     def place(self, anchor: complex, text: str, height: float = 3.5,
               prefer: complex = 1j, gap: float = 2.5, layer: str = "TEXT",
               crowded: bool = True, leader: bool = False, apart: bool = False) -> complex | None:
-        """A point label at the first free spot; where there is none, beside the anchor over
+        """A point label at the first free spot (the three rings round the anchor, then a
+        little farther out about the preferred direction, up to 10 mm, with a margin from the
+        lines and the other labels); where there is none, beside the anchor over
         whatever is there — or, with ``crowded=False``, nothing drawn and None returned, or,
         with ``leader``, on a leader line out to where no line crosses it (a frame pivot
         inside the fan of the crank's twelve positions). With ``leader`` or ``apart`` a free
@@ -1072,6 +1074,22 @@ class LabelPlacer:
                     ranked = (rank, c, box)
             if best is not None:
                 break
+        if best is None and not leader and ranked is not None and ranked[0][0] + ranked[0][2] > 0:
+            # no free spot in the rings: a little farther out, about the preferred direction,
+            # before a label is put over a line or another label (a position number among
+            # the links of the other positions; GB/T 4458.4: no text crossed by a line)
+            for dist in sorted({4.5 * gap, 6.0 * gap, gap + 3.0, gap + 5.0}):
+                if dist > 10.0 or best is not None:
+                    break
+                for t in turns[:5]:
+                    d = u * np.exp(1j * t * np.pi / 4)
+                    c = anchor + d * (dist + 0.5 * abs(d.real) * w + 0.5 * abs(d.imag) * h)
+                    box = (c.real - w / 2, c.imag - h / 2, c.real + w / 2, c.imag + h / 2)
+                    grown = (box[0] - 1.1, box[1] - 0.4, box[2] + 1.1, box[3] + 0.4)
+                    if self.free(grown) and self.crossed((box[0] - 0.5, box[1] - 0.5, box[2] + 0.5,
+                                                          box[3] + 0.5), drawn) == 0:
+                        best = (c, box)
+                        break
         if best is None and leader:
             self.leader(anchor, text, height, prefer, avoid_lines=True)
             return None
