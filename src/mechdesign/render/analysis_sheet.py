@@ -54,9 +54,9 @@ LABELS = LabelTable({
     "scales": pgettext("analysis sheet", "Drawing scales"),
     # the cells list the exact values the polygons are drawn from; the report's graphical
     # method measures the same polygons (to the drawing's accuracy)
-    "each": pgettext("analysis sheet", "μv, μa, μF above each polygon; the values beside it computed"),
+    "each": pgettext("analysis sheet", "μv, μa, μF above each polygon; the values beside each are analytic"),
     "noforce": pgettext("analysis sheet", "no load at this position (all reactions zero)"),
-    "each_kin": pgettext("analysis sheet", "μv, μa above each polygon; the values beside it computed"),
+    "each_kin": pgettext("analysis sheet", "μv, μa above each polygon; the values beside each are analytic"),
     "noload": pgettext("analysis sheet", "No load or masses given: all reactions and Mb are zero, "
                        "so no force polygons or Mb curve are drawn"),
     "nofly": pgettext("analysis sheet", "no flywheel"),
@@ -113,9 +113,10 @@ def analysis_sheet(found, info: TitleInfo, lang: str, labels: dict | None = None
         notes.append(lab["dw"].format(v=fmt.sig(flywheel.max_energy_swing)) + ",  "
                      + lab["jf"].format(v=fmt.sig(flywheel.inertia)))
     top = tb_y1 + 10.0 + 5.5 * max(len(notes) - 2, 0)     # a third line above, not on the title block
+    # one text height for the notes: the longest line's fit (review35: a short line set larger)
+    height = min(fit_height(text, 205.0, 3.0) for text in notes)
     for j, text in enumerate(notes):
-        s.text(tb_x0 - 30.0 + 1j * (top - 5.5 * j), text,
-               fit_height(text, 205.0, 3.0), "TEXT")
+        s.text(tb_x0 - 30.0 + 1j * (top - 5.5 * j), text, height, "TEXT")
     return s, scales
 
 
