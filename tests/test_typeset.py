@@ -702,6 +702,29 @@ def wide_word_gaps(pdf, factor: float = 2.0) -> list[tuple[int, float, str]]:
     return bad
 
 
+def uncited_figures(pdf) -> list[tuple[int, int]]:
+    """(page, number) of every figure whose number no reference in the text names: a link
+    whose words are "图 N" / "Figure N" (typst's reference from an ``@fig:x`` of the
+    Markdown; review35 item 10, "图未在正文中引用")."""
+    import pymupdf
+
+    captions, refs = {}, set()
+    with pymupdf.open(pdf) as doc:
+        first = body_start(doc)
+        for number, page in enumerate(doc, 1):
+            if number < first:
+                continue
+            for _, _, text in page_rows(page):
+                m = _FIGURE_CAPTION.match(text)
+                if m:
+                    captions.setdefault(int(m.group(1) or m.group(2)), number)
+            for link in page.get_links():
+                r = re.fullmatch(r"(?:图|Figure|Fig\.)\s*(\d+)", page.get_textbox(link["from"]).strip())
+                if r:
+                    refs.add(int(r.group(1)))
+    return sorted((page, n) for n, page in captions.items() if n not in refs)
+
+
 def figure_order(pdf) -> list[tuple[int, str]]:
     """Figures out of order or far from their text: (page, what) for every figure whose
     number is not one more than the figure before it (typst's floats keep the order), and
@@ -985,6 +1008,8 @@ def test_every_report_stays_in_the_text_block(brief, lang, tmp_path):
     assert cover_defects(pdf, lang) == []
     assert wide_middle_dots(pdf) == []
     assert figure_order(pdf) == []
+    # every figure is cited in the text: "如图 5 所示" / "(Figure 5)" (review35 item 10)
+    assert uncited_figures(pdf) == []
     # no figure above its own chapter's heading, none more than a page after its text
     assert figures_above_their_chapter(pdf) == []
     far = figures_far_from_anchor(pdf)
