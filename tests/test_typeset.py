@@ -748,12 +748,15 @@ def figure_order(pdf) -> list[tuple[int, str]]:
                 r = re.fullmatch(r"(?:图|Figure|Fig\.)\s*(\d+)", words)
                 if r:
                     refs.setdefault(int(r.group(1)), number)
-    previous = 0
+    previous, previous_page = 0, 0
     for n, (page, _) in sorted(captions.items(), key=lambda kv: kv[1]):
         if n != previous + 1:
             bad.append((page, f"figure {n} after figure {previous}"))
-        previous = n
-        if n in refs and page - refs[n] > 1:
+        # a figure of a run cited together (the sheet previews: "图 19、图 20、…") follows
+        # the figure before it: far only when more than a page after both
+        far = n in refs and page - max(refs[n], previous_page) > 1
+        previous, previous_page = n, page
+        if far:
             bad.append((page, f"figure {n} on p.{page}, first referred to on p.{refs[n]}"))
     return bad
 
