@@ -719,8 +719,10 @@ def uncited_figures(pdf) -> list[tuple[int, int]]:
                 if m:
                     captions.setdefault(int(m.group(1) or m.group(2)), number)
             for link in page.get_links():
-                r = re.fullmatch(r"(?:图|Figure|Fig\.)\s*(\d+)", page.get_textbox(link["from"]).strip())
-                if r:
+                # a zh link's box may take in the character beside it ("见图 5")
+                words = page.get_textbox(link["from"]).strip()
+                r = re.search(r"(?:图|Figure|Fig\.)\s*(\d+)", words)
+                if r and len(words) <= 12:
                     refs.add(int(r.group(1)))
     return sorted((page, n) for n, page in captions.items() if n not in refs)
 
