@@ -924,9 +924,9 @@ CONTINUED_OPEN: set[tuple[str, str]] = set()
 FAR_OPEN: set[tuple[str, str]] = {("press", "zh"), ("press", "en")}
 WIDE_GAPS_OPEN: set[tuple[str, str]] = {("die_cutter", "en"), ("furnace_drive", "en"),
                                         ("furnace_pusher", "en")}
-# die_cutter en: chapter 12 (drawing sheets) ends its page above the sheet previews, which
-# float on (the session-34 merges; the previews are figures of their own)
-HALF_EMPTY_OPEN: set[tuple[str, str]] = {("die_cutter", "en")}
+# none open (die_cutter en's p.46, chapter 12 ending its page above the sheet previews, went
+# with the figure citations' text, cite35)
+HALF_EMPTY_OPEN: set[tuple[str, str]] = set()
 # A figure between the parts of a split table whose text stands BEFORE the table (floated to
 # the top of the page where the table goes on, or to the foot of the page where it starts) is
 # held back past the table (templates/report.typ: figure-held; the figures whose text follows
@@ -935,7 +935,7 @@ HALF_EMPTY_OPEN: set[tuple[str, str]] = {("die_cutter", "en")}
 # slotter), and lockbeam zh (unsettled, CONVERGE_OPEN).
 # (recomputed after the session-34 merges: converge34's plan made once, floats34's held figures)
 TABLES_INTERRUPTED_OPEN = {(b, lang) for b, langs in {
-    "die_cutter": "zh en", "press": "zh", "shaper": "zh", "slotter": "zh en"}.items()
+    "die_cutter": "zh", "press": "zh", "shaper": "zh", "slotter": "zh en"}.items()
     for lang in langs.split()}
 # A blank band above a figure at a page's foot (page_holes): the figures with a hole above
 # them where the block after their text went on go to the top of the page (report.typ:
