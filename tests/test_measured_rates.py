@@ -15,14 +15,16 @@ import pytest
 
 from tests.test_report_prose import EXAMPLES, _markdown
 
-LINE = {"en": "Angular velocities measured:", "zh": "量得的角速度"}
+# the line names the polygons' figure: "Angular velocities measured on the polygons of @fig:x:"
+LINE = {"en": re.compile(r"Angular velocities measured( on the polygons of @fig:[\w-]+)?:"),
+        "zh": re.compile(r"(由 @fig:[\w-]+ )?量得的角速度")}
 RATE = re.compile(r"\$\\(omega|alpha)_\{(\w+)\}\$ = (-?[\d.]+)")
 
 
 def rate_faults(md: str, lang: str) -> list[str]:
     out = []
     for line in md.splitlines():
-        if not line.startswith(LINE[lang]):
+        if not LINE[lang].match(line):
             continue
         rates = RATE.findall(line)
         for kind in ("omega", "alpha"):
@@ -49,5 +51,7 @@ def test_the_check_finds_the_reviewed_line():
 @pytest.mark.parametrize("name", EXAMPLES)
 def test_measured_rates_by_link_number_without_translating_links(example_results, name, lang):
     md, _ = _markdown(example_results, name, lang)
+    lines = [line for line in md.splitlines() if LINE[lang].match(line)]
+    assert len(lines) == md.count("_kin.png"), "a polygon figure without its measured rates"
     faults = rate_faults(md, lang)
     assert not faults, faults

@@ -97,6 +97,9 @@ class _Figures(dict):
 
     def __init__(self):
         keys = ["cycle_linear", "cycle_circular"] + [f"bcam_{k}" for k in _CAM_FIGURES]
+        # a linkage's figures, picked out by the linkage's prefix (render/linkage_report.py)
+        keys += [f"{prefix}_{k}" for prefix in ("linkage", "press", "feed")
+                 for k in ("mechanism", "motion", "angles", "torque", "energy", "reactions")]
         super().__init__({k: f"figures/{k}.png" for k in keys})
 
     def __missing__(self, key):
@@ -145,6 +148,7 @@ def _prose(md: str) -> str:
     md = re.sub(r"!\[([^\]]*)\]\([^)]*\)", r"\1", md)
     md = re.sub(r"\{[#.][^}]*\}|\{width=[^}]*\}", " ", md)
     md = re.sub(r"\[@[^\]]*\]", " ", md)
+    md = re.sub(r"@(fig|tbl|eq):[\w:.\-]*\w", " ", md)
     return md
 
 

@@ -7,6 +7,7 @@ earlier report stays as it was).
 """
 from __future__ import annotations
 
+import re
 import shutil
 import time
 from importlib import resources
@@ -82,11 +83,19 @@ def render_markdown(template_name: str, ctx: dict, templates: Path,
                              comment_start_string="{##", comment_end_string="##}",
                              bytecode_cache=_bytecode_cache())
     env.install_gettext_callables(**jinja_callables(lang), newstyle=True)
+    env.filters["figlabel"] = figure_label
     if "cite" not in ctx:      # the citation counter (render/summary.py), one per report
         from .summary import Citations
 
         ctx = {**ctx, "cite": Citations(lang)}
     return env.get_template(template_name).render(**ctx)
+
+
+def figure_label(path: str) -> str:
+    """The cross-reference label of a figure named after its file ("figures/linkage_graph_4_kin.png"
+    -> "fig:linkage-graph-4-kin"): figures drawn per position or per linkage are cited by it."""
+    stem = str(path).rsplit("/", 1)[-1].rsplit(".", 1)[0]
+    return "fig:" + (re.sub(r"[^A-Za-z0-9]+", "-", stem).strip("-") or "figure")
 
 
 def _bytecode_cache():
