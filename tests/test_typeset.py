@@ -927,10 +927,9 @@ HALF_EMPTY_OPEN: set[tuple[str, str]] = {("die_cutter", "en"), ("cam_7_3", "en")
 # A figure between the parts of a split table whose text stands BEFORE the table (floated to
 # the top of the page where the table goes on, or to the foot of the page where it starts) is
 # held back past the table (templates/report.typ: figure-held; the figures whose text follows
-# a split table go to the foot of its last page: after-split). Open: the reports where typst
-# does not settle with the held figures and render/pdf.py sets them without (press, shaper zh,
-# slotter), and lockbeam zh (unsettled, CONVERGE_OPEN).
-# (recomputed after the session-34 merges: converge34's plan made once, floats34's held figures)
+# a split table go to the foot of its last page: after-split). Open: die_cutter en, press zh,
+# slotter zh (recomputed in session 35: figures go to the top of a page, not `auto`, and a
+# level-1 heading flushes them; die_cutter zh, shaper zh, slotter en are clear now).
 TABLES_INTERRUPTED_OPEN = {(b, lang) for b, langs in {
     "die_cutter": "en", "press": "zh", "slotter": "zh"}.items()
     for lang in langs.split()}
