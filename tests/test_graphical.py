@@ -312,6 +312,14 @@ def test_guide_bar_force_of_the_moment_equation_is_known_in_the_polygon(example_
                 # the slider's pin passes it to the crank at the equation's value
                 pin = [t for t in crank.moments[0].terms if t.name.startswith(f"R{m.unknown[1]}")]
                 assert pin and pin[0].force == pytest.approx(abs(m.result), rel=1e-9)
+                # a slider without loads of its own: its pin's reaction is that force, known
+                # (the table listed it "?" at the equation's value, not at length × μF)
+                own = [v for v in fg.vectors if v.symbol.startswith("R") and len(v.symbol) == 3
+                       and v.symbol[2] == m.unknown[1] and v.symbol != back.symbol]
+                assert own
+                for v in own:
+                    if v.read == pytest.approx(abs(m.result), rel=1e-12):
+                        assert v.known, v
         mb = next(m for m in crank.moments if m.unknown == "Mb")
         assert mb.result + sum(t.value for t in mb.terms) == pytest.approx(0.0, abs=1e-9)
     assert seen == len(doc.positions)

@@ -567,8 +567,8 @@ def force_drawing(mech, pos: dict, loads: dict, couples: dict, mu_l: float, mu_f
                     last = head
             if last == t_sb.tail:
                 # a slider with no load of its own: its pin carries the bar's force back,
-                # the equation's value (nothing to measure)
-                r_ps = Term(outer[sl].name, False, "", last, t_sb.head, n_bar, t_sb.length,
+                # the equation's value (nothing to measure: known, as the bar's force is)
+                r_ps = Term(outer[sl].name, True, "", last, t_sb.head, n_bar, t_sb.length,
                             abs(n_bar), "reaction")
                 fp.vectors.append(r_ps)
             else:
