@@ -24,7 +24,7 @@ CJK = re.compile(r"[\u3000-\u303f\u3400-\u9fff\uff00-\uffef]")
 
 # one of the drive's undercut messages, with a data-table name and a nested message
 UNDERCUT = ("stage {n} ({name}): the {who} (z = {z}) is undercut: its equivalent tooth number z_v = "
-            "z/cos³β = {zv:.2f} is below the least number without undercut, {z_min:.1f}; give it at "
+            "z/cos³β = {zv:.2f} is below the least number without undercut, {z_min:g}; give it at "
             "least {need} teeth or use a larger helix angle.")
 STAGE = "stage {n} ({name})"
 

@@ -379,7 +379,7 @@ def undercut_findings(results) -> list[Finding]:
                     out.append(finding(
                         "undercut",
                         N_("stage {n} ({name}): the {who} (z = {z}) is undercut: it has fewer teeth "
-                           "than the least number without undercut, {z_min:.1f}, and its shift x = "
+                           "than the least number without undercut, {z_min:g}, and its shift x = "
                            "{x:g} is below the least shift {x_min:.3f}; use a positive shift x ≥ "
                            "{x_min:.3f} or at least {need} teeth."), field=f"{here}.x{key}",
                         n=r.index + 1, name=Named("transmissions", r.kind), who=_gear(key), z=gd.z,
@@ -396,7 +396,7 @@ def undercut_findings(results) -> list[Finding]:
                         "undercut",
                         N_("stage {n} ({name}): the {who} (z = {z}) is undercut: its equivalent tooth "
                            "number z_v = z/cos³β = {zv:.2f} is below the least number without "
-                           "undercut, {z_min:.1f}; give it at least {need} teeth or use a larger "
+                           "undercut, {z_min:g}; give it at least {need} teeth or use a larger "
                            "helix angle."), field=f"{here}.z{key}",
                         n=r.index + 1, name=Named("transmissions", r.kind), who=_gear(key), z=z,
                         zv=zv, z_min=z_min, need=need))

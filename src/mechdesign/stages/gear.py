@@ -68,7 +68,7 @@ def gear_findings(g: gears.SpurPair, prefix: str = "gear_pair") -> tuple[Finding
             out.append(finding(
                 "undercut",
                 N_("gear {name} (z = {z}) is undercut: it has fewer teeth than the least number "
-                   "without undercut, {z_min:.1f}, and its shift x = {x:g} is below the least "
+                   "without undercut, {z_min:g}, and its shift x = {x:g} is below the least "
                    "shift {x_min:.3f}; use a positive shift x ≥ {x_min:.3f} or at least {need} teeth."),
                 field=f"{prefix}.x{name}", name=name, z=gd.z, z_min=g.z_min, x=gd.x, x_min=x_min,
                 need=need))

@@ -102,7 +102,7 @@ def transmission(p: LockbeamParams) -> Transmission:
         if z1 < pair.z_min - 1e-12:
             warnings.append(finding(
                 "undercut", N_("the gear with z1 = {z1} teeth is below the least tooth number "
-                               "without undercut ({z_min:.1f}): a standard gear is undercut; add "
+                               "without undercut ({z_min:g}): a standard gear is undercut; add "
                                "teeth or use a positive shift"), z1=z1, z_min=pair.z_min))
     exact = Fraction(1)
     for s in stages:
