@@ -18,7 +18,7 @@ import numpy as np
 
 from . import figures as fig
 from ..i18n import N_, tr
-from .fmt import exact, f, grouped, mpl_text, sci, tex_name
+from .fmt import exact, f, gives, grouped, mpl_text, sci, tex_name
 from .label_layout import Label, place
 from .labels import LabelTable, mpl_point, pgettext, point_tex, tex_names
 
@@ -563,9 +563,7 @@ def _factor(x: float, extra: int = 0) -> str:
 def _gives(value: float, printed: str) -> bool:
     """``value`` (a chain evaluated from its printed factors) rounds to ``printed``, to the
     last digit printed (a value with a power of ten is not re-evaluated)."""
-    if "times" in printed:
-        return True
-    return abs(value - float(printed)) <= 0.5 * 10.0 ** -_digits(printed) * (1 + 1e-9)
+    return "times" in printed or gives(value, printed)
 
 
 def _moment_tex(m, gives=None, least=None, shown=None) -> tuple[str, float, float, float]:

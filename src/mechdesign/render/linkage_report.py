@@ -307,6 +307,13 @@ def _angles_caption(k, lang: str) -> str:
     return _("Transmission and pressure angles against the crank angle")
 
 
+def rim_inertia_factor(inertia: float, rim) -> str:
+    """J_F as the factor of the rim mass m = 4 J_F/D², with the digits that give the printed
+    mass (4 × 204.13/1.000² = 816.52)."""
+    return factor_for(inertia, lambda x: gives(4 * x / float(f(rim.diameter, 3)) ** 2,
+                                               f(rim.rim_mass, 2)))
+
+
 def realised_flywheel(fly, n_real: float | None, _) -> str | None:
     """The flywheel sized at the nominal speed (the crank's, at which M_b and ΔW_max are
     computed, × the ratio to its shaft) against the speed ``n_real`` [rpm] the drive realises
@@ -463,9 +470,7 @@ def linkage_context(model, k, f_, fly, v, figures: dict, lang: str,
         }
         if fly.rim is not None:
             rim, spec = fly.rim, model.flywheel.rim
-            # J_F with the digits that give the printed rim mass 4 J_F/D²
-            j_mass = factor_for(fly.inertia, lambda x: gives(4 * x / float(f(rim.diameter, 3)) ** 2,
-                                                             f(rim.rim_mass, 2)))
+            j_mass = rim_inertia_factor(fly.inertia, rim)
             ctx["fly"]["rim"] = {
                 "D": f(rim.diameter * 1e3, 0), "b": f(rim.width * 1e3, 1),
                 "Hr": f(rim.height * 1e3, 1), "m": f(rim.rim_mass, 2), "speed": f(rim.rim_speed, 2),

@@ -89,11 +89,7 @@ def design_flywheel(spec: FlywheelSpec, phase: np.ndarray, balancing_torque: np.
     on_crank = fw.flywheel_inertia(cycle.max_energy_swing, crank_rpm, spec.fluctuation)
     rim, warnings = None, []
     if spec.rim is not None:
-        rim = fw.rim_dimensions(inertia, spec.rim.diameter, spec.rim.height_to_width,
-                                spec.rim.specific_weight, speed, gravity)
-        if spec.rim.field:
-            impossible_rim(rim, spec, inertia, speed, crank_rpm, gravity)
-        warnings += rim_findings(rim, spec.rim.field)
+        rim, warnings = _rim(spec, inertia, speed, crank_rpm, gravity)
     elif crank_rpm < SLOW_RPM or inertia > ABSURD_INERTIA:
         warnings.append(finding(
             "flywheel_absurd",
@@ -109,6 +105,16 @@ def design_flywheel(spec: FlywheelSpec, phase: np.ndarray, balancing_torque: np.
         inertia_on_crank=on_crank, rim=rim, warnings=tuple(warnings))
 
 
+def _rim(spec: FlywheelSpec, inertia: float, speed: float, crank_rpm: float, gravity: float):
+    """The cast rim for ``inertia`` at the shaft ``speed`` [rpm] and its findings (a rim the
+    brief's diameter cannot carry raises :class:`FlywheelDesignError`)."""
+    rim = fw.rim_dimensions(inertia, spec.rim.diameter, spec.rim.height_to_width,
+                            spec.rim.specific_weight, speed, gravity)
+    if spec.rim.field:
+        impossible_rim(rim, spec, inertia, speed, crank_rpm, gravity)
+    return rim, list(rim_findings(rim, spec.rim.field))
+
+
 def at_realised_speed(fl: Flywheel, spec: FlywheelSpec, speed_rpm: float,
                       gravity: float = 9.81) -> Flywheel:
     """``fl`` sized again at the speed [rpm] the drive realises on its shaft, when that is
@@ -119,11 +125,8 @@ def at_realised_speed(fl: Flywheel, spec: FlywheelSpec, speed_rpm: float,
     inertia = fw.flywheel_inertia(fl.max_energy_swing, speed_rpm, fl.fluctuation)
     rim, warnings = fl.rim, fl.warnings
     if spec.rim is not None:
-        rim = fw.rim_dimensions(inertia, spec.rim.diameter, spec.rim.height_to_width,
-                                spec.rim.specific_weight, speed_rpm, gravity)
-        if spec.rim.field:
-            impossible_rim(rim, spec, inertia, speed_rpm, speed_rpm / fl.speed_ratio, gravity)
-        warnings = tuple(rim_findings(rim, spec.rim.field))
+        rim, found = _rim(spec, inertia, speed_rpm, speed_rpm / fl.speed_ratio, gravity)
+        warnings = tuple(found)
     return replace(fl, shaft_speed_rpm=float(speed_rpm), inertia=float(inertia),
                    inertia_on_crank=float(inertia * fl.speed_ratio**2), rim=rim, warnings=warnings,
                    nominal_speed_rpm=float(fl.shaft_speed_rpm))

@@ -17,7 +17,7 @@ from ...render.fmt import e, f, length, md_meta, md_text, sig, fluctuation, fact
 from ...render.fmt import number, residue, time_ratio, verdict
 from ...render.labels import pgettext, translated
 from ...render.fmt import sentences
-from ...render.linkage_report import realised_flywheel
+from ...render.linkage_report import realised_flywheel, rim_inertia_factor
 from ...stages.drive import shaft_numeral
 
 DEG = 180.0 / np.pi
@@ -437,9 +437,7 @@ def _flywheel(r, p, b, _) -> dict:
     def fl_ratio_ok(x):
         return gives(float(f(fl.inertia, 3)) * x * x, f(fl.inertia_on_crank, 1))
 
-    # J_F with the digits that give the printed rim mass 4 J_F/D²
-    j_mass = factor_for(fl.inertia, lambda x: gives(4 * x / float(f(fl.rim.diameter, 3)) ** 2,
-                                                    f(fl.rim.rim_mass, 2)))
+    j_mass = rim_inertia_factor(fl.inertia, fl.rim)
     eq = {
         "md": (rf"M_d = \frac{{1}}{{2\pi}}\oint M_b\,d\varphi = {sig(fl.mean_torque, group=False)}\ \text{{N·m}}"
                rf"\ (\text{{{crank_shaft}}})"),

@@ -15,7 +15,7 @@ from ...render import figures as fig
 from ...render import guide_bar_report as gb_report
 from ...i18n import N_, tr
 from ...render.fmt import e, f, in_lang, md_meta, sig, time_ratio, verdict, fluctuation
-from ...render.fmt import factor_for, gives
+from ...render.linkage_report import rim_inertia_factor
 
 DEG = 180.0 / np.pi
 
@@ -189,9 +189,7 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
                rf"\text{{m/s}}^2"),
     }
     i_ratio = fl.speed_ratio
-    # J_F with the digits that give the printed rim mass 4 J_F/D² (4 × 204.13/1.000² = 816.52)
-    j_mass = factor_for(fl.inertia, lambda x: gives(4 * x / float(f(fl.rim.diameter, 3)) ** 2,
-                                                    f(fl.rim.rim_mass, 2)))
+    j_mass = rim_inertia_factor(fl.inertia, fl.rim)
     fly_eq = {
         "mr": (rf"M_r = \frac{{M_b}}{{i}}, \quad i = \frac{{z_2}}{{z_1}} = \frac{{{p.z2}}}{{{p.z1}}}"
                rf" = {sig(i_ratio, group=False)}") if fl.shaft == "pinion" else r"M_r = M_b",
