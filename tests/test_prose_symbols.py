@@ -145,3 +145,13 @@ def test_quantity_letters_in_prose_are_math(example_results, name, lang):
     md, _ = _markdown(example_results, name, lang)
     bad = bare_quantities(md, lang)
     assert not bad, bad
+
+
+def test_a_heading_with_a_quantity_letter_keeps_it_in_the_word_contents():
+    """"# Crank-rocker from the time ratio $K$": Word holds the K of the heading's inline math
+    in an m:t run; the contents entry (render/docx_toc.py) reads it too."""
+    from mechdesign.render.docx_toc import _heading_text
+
+    heading = ('<w:r><w:t xml:space="preserve">Crank-rocker from the time ratio </w:t></w:r>'
+               '<m:oMath><m:r><m:rPr /><m:t>K</m:t></m:r></m:oMath>')
+    assert _heading_text(heading) == "Crank-rocker from the time ratio K"
