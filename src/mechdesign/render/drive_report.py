@@ -15,6 +15,38 @@ from .fmt import f, grouped, md_text, percent, rpm, sentences, sig
 MM = 1e3
 
 
+
+# A shaft design step as results.json stores it (stages/drive_strength.py: its msgid, the
+# same since session 30) → the words the report prints, its quantity letters as math
+# ("$h$ ≈ 0.07 $d$", "$L$ ≤ hub − 8 mm", "$d$ = 24"; issue 19: GB 3102 sets a quantity
+# symbol in italic in the text too). results.json keeps its messages unchanged.
+_STEP_SHOWN = {
+    "design torque T = 9549 P/n = {T} N·m (bearing life: the same load × $f_p$ = {fp})":
+        N_("design torque $T$ = 9549 $P/n$ = {T} N·m (bearing life: the same load × $f_p$ = {fp})"),
+    "collar {d} (h ≈ 0.07 d)": N_("collar {d} ($h$ ≈ 0.07 $d$)"),
+    "{name_en}: d = {d}, key {b}×{h}, hub {hub}, L = {L}":
+        N_("{name_en}: $d$ = {d}, key {b}×{h}, hub {hub}, $L$ = {L}"),
+    "{name_en}: d = {d}, key {b}×{h}, hub {hub}, L = {L}, two keys at 180°":
+        N_("{name_en}: $d$ = {d}, key {b}×{h}, hub {hub}, $L$ = {L}, two keys at 180°"),
+    "keys (GB/T 1096, form A, L ≤ hub − 8 mm; a longer hub up to 1.5 d, then two keys when one "
+    "fails): {keys}":
+        N_("keys (GB/T 1096, form A, $L$ ≤ hub − 8 mm; a longer hub up to 1.5 $d$, then two keys "
+           "when one fails): {keys}"),
+}
+
+
+def _shown(value):
+    """An encoded step message (``{msgid, args}``, nested) with the report's wording of the
+    messages :data:`_STEP_SHOWN` names."""
+    if isinstance(value, list):
+        return [_shown(v) for v in value]
+    if not isinstance(value, dict):
+        return value
+    out = {k: _shown(v) for k, v in value.items()}
+    if isinstance(out.get("msgid"), str):
+        out["msgid"] = _STEP_SHOWN.get(out["msgid"], out["msgid"])
+    return out
+
 def _stage_label(st, _) -> str:
     name = st.name(_)
     if st.z1 is not None:
@@ -367,7 +399,7 @@ def stage_designs(d, lang: str) -> list[dict]:
                   "Design, ch. 15 (each step's rule and numbers below); any failed check "
                   "enlarges that section and everything is checked again.", where=where)]
         for k, step in enumerate(sh.steps, 1):
-            said = decode(step).text(_)
+            said = decode(_shown(step)).text(_)
             text.append(_("Step {k}: {sen}.", k=k, sen=said, szh=said))
         # the reactions displayed: four "R = … N" runs in a justified line spread its few word
         # spaces (tests/test_typeset.py wide_word_gaps)

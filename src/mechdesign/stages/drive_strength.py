@@ -755,14 +755,14 @@ def _steps(sh, mat, a0, d_min, dims, shoulder, T, peak, peak_factor, lf, ev, spa
                           torque=f"$T = {_sig(peak_factor, 4)} \\times {_sig(sh.torque, 4)} = {_sig(T, 4)}$",
                           lf=_sig(lf, 3)))
     else:
-        out.append(_step(N_("design torque $T$ = 9549 P/n = {T} N·m (bearing life: the same load × $f_p$ = {fp})"),
+        out.append(_step(N_("design torque T = 9549 P/n = {T} N·m (bearing life: the same load × $f_p$ = {fp})"),
                           T=_sig(T, 4), fp=f"{FP:g}"))
     head, out = out, []
     lay = []
     if d_end is not None:
         lay.append(Msg(N_("overhung end {d} (the standard size ≥ {dmin})"), d=_mmf(d_end), dmin="$d_{min}$"))
     lay += [Msg(N_("journals {d} (bearing bore, a multiple of 5)"), d=_mmf(dj)),
-            Msg(N_("seat {d} (journal + 5)"), d=_mmf(ds)), Msg(N_("collar {d} ($h$ ≈ 0.07 $d$)"), d=_mmf(shoulder))]
+            Msg(N_("seat {d} (journal + 5)"), d=_mmf(ds)), Msg(N_("collar {d} (h ≈ 0.07 d)"), d=_mmf(shoulder))]
     sections = Join(Msg.pgettext("separator", ", "), lay)
     out.append(_step(N_("result, the sections (mm): {sections}; bearing span {span} mm"), sections=sections,
                       span=_mmf(span, 0)))
@@ -775,11 +775,11 @@ def _steps(sh, mat, a0, d_min, dims, shoulder, T, peak, peak_factor, lf, ev, spa
                           hours=_text_num(dp.service_hours), designation=b.designation, cr=f"{b.Cr / 1e3:g}",
                           c0r="$C_{0r}$", c0=f"{b.C0r / 1e3:g}", conf=conf))
     if ev["keys"]:
-        keys = [Msg(N_("{name_en}: $d$ = {d}, key {b}×{h}, hub {hub}, $L$ = {L}, two keys at 180°") if k.count == 2
-                    else N_("{name_en}: $d$ = {d}, key {b}×{h}, hub {hub}, $L$ = {L}"),
+        keys = [Msg(N_("{name_en}: d = {d}, key {b}×{h}, hub {hub}, L = {L}, two keys at 180°") if k.count == 2
+                    else N_("{name_en}: d = {d}, key {b}×{h}, hub {hub}, L = {L}"),
                     name_zh=Named("transmissions", k.element), name_en=Named("transmissions", k.element), d=_mmf(k.d), b=_mmf(k.b), h=_mmf(k.h), hub=_mmf(k.hub, 0), L=_mmf(k.L))
                 for k in ev["keys"]]
         listed = Join(Msg.pgettext("list", "; "), keys)
-        out.append(_step(N_("keys (GB/T 1096, form A, $L$ ≤ hub − 8 mm; a longer hub up to 1.5 $d$, then two keys "
+        out.append(_step(N_("keys (GB/T 1096, form A, L ≤ hub − 8 mm; a longer hub up to 1.5 d, then two keys "
                              "when one fails): {keys}"), keys=listed))
     return head, out
