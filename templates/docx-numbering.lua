@@ -430,7 +430,11 @@ local function is_cjk(c)
 end
 
 local function cjk_end(el) return el and el.t == "Str" and is_cjk(utf8_last(el.text)) end
-local function cjk_start(el) return el and el.t == "Str" and is_cjk(utf8_first(el.text)) end
+-- a CJK punctuation mark (、，。：；（）…): no space before it
+local function cjk_punct_start(el)
+  local c = el and el.t == "Str" and utf8_first(el.text)
+  return c and ((c >= 0x3000 and c <= 0x303F) or (c >= 0xFF00 and c <= 0xFFEF))
+end
 
 -- Inlines replacing a Cite whose keys are all figure/table labels, else nil.
 local function reference_inlines(cite)
@@ -472,7 +476,9 @@ local function resolve_references(inlines)
         out:remove(#out)
       end
       out:extend(replacement)
-      if inlines[i + 1] and inlines[i + 1].t == "Space" and cjk_start(inlines[i + 2]) then
+      -- after the number: a space before a Chinese word ("由图 6 量得", as the PDF sets the
+      -- number apart on both sides: typst's CJK–Latin spacing), none before a punctuation mark
+      if inlines[i + 1] and inlines[i + 1].t == "Space" and cjk_punct_start(inlines[i + 2]) then
         i = i + 1
       end
     else

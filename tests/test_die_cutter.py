@@ -463,7 +463,7 @@ def test_nominal_and_realised_flywheel_speed_named(shipped):
     assert n_real == pytest.approx(1440 * (1 - d.stages[0].slip) * 125 / 250)
     assert fl.shaft_speed_rpm == pytest.approx(50 * d.stages[1].ratio * d.stages[2].ratio)
     text = realised_flywheel(fl, n_real, tr("en"))
-    assert f"n = {fl.shaft_speed_rpm:.2f} rpm" in text and f"n′ = {n_real:.2f} rpm" in text
+    assert f"$n$ = {fl.shaft_speed_rpm:.2f} rpm" in text and f"$n'$ = {n_real:.2f} rpm" in text
     assert f"{fl.fluctuation * (fl.shaft_speed_rpm / n_real) ** 2:.4f}" in text and "0.47%" in text
     assert realised_flywheel(fl, fl.shaft_speed_rpm, tr("en")) is None
 

@@ -130,6 +130,21 @@ def test_numbered_captions_references_and_equations(zh_docx):
     assert "SEQ 图" in document and "SEQ 表" in document and "SEQ Equation" in document
 
 
+def test_a_reference_number_is_set_apart_from_the_chinese_word_after_it(tmp_path):
+    """Issue 19: Word read "由图 6量得" where the PDF sets "由图 6 量得" (typst's CJK–Latin
+    spacing puts the same gap, a quarter em, on both sides of the number). The space the
+    Markdown has after the reference stays before a Chinese word; none is added before a
+    punctuation mark, nor between a Chinese character and the reference before it."""
+    text = MARKDOWN.replace("曲柄转速 $n_2 = 60\\ \\text{r/min}$，刨头位移线图见 @fig:ram，运动参数见 @tbl:kin。",
+                            "由 @fig:ram 量得的角速度；位移如 @fig:ram 所示，数据见 @tbl:kin。")
+    assert text != MARKDOWN
+    md = _write_sample(tmp_path, text)
+    out = tmp_path / "out" / "report.docx"
+    render_docx(md, out, METADATA, TEMPLATES)
+    body = next(t for t in _paragraph_texts(_part(out, "word/document.xml")) if "量得" in t)
+    assert body == "由图 1 量得的角速度；位移如图 1 所示，数据见表 1。"
+
+
 def test_title_block(zh_docx):
     texts = _paragraph_texts(_part(zh_docx, "word/document.xml"))
     assert "牛头刨床导杆机构" in texts

@@ -51,3 +51,107 @@ def test_the_original_programs_quantities_are_named_by_their_symbols(example_res
     bad = [line[:160] for line in body.splitlines() if PROGRAM_NAME.search(line)]
     assert not bad, bad
     assert "abs()" not in _prose(body)
+
+
+# ---------------------------------------------------------------- quantity letters in prose
+# Issue 19: the zh prose wrote quantity letters upright ("由行程 H 与行程速比系数 K",
+# "n = 50.00 r/min") while the tables' formulas and the derivations set them italic (math).
+# GB 3102 and the textbooks set a quantity symbol in italic wherever it stands, so the text
+# writes it as inline math ($H$, $K$, $n$, $J_F$) in both languages.
+# A bare letter is a quantity unless it is one of these (every example checked):
+#   a unit after a number or a formula ("50 N", "$T$ N·m", "1.2 s"), an English article or
+#   pronoun ("a", "A", "I"), an item label "(a)", a product or type designation ("V 带",
+#   "V-belt", "Y 系列", "A 型", "form A"), a sheet size or a scheme code (A1, B2: a capital
+#   with a digit), a standard's number (GB/T 1096), a bibliography's type mark ([M], [S]);
+# the references chapter (titles as published) and the tables are left out.
+_QUANTITY = re.compile(r"(?<![A-Za-z0-9_/.\-·'’\\\u0370-\u03ff])"
+                       r"([A-Za-z](?:_\{?[A-Za-z0-9]+\}?)?[′″']?)"
+                       r"(?![A-Za-z0-9/·\-'’(]|\.[A-Za-z])")
+_UNIT_LETTERS = {"N", "m", "s", "J", "h", "W", "V", "A", "g", "K", "t"}
+
+
+def _bare_quantities(line: str, lang: str) -> list[str]:
+    """The bare quantity letters of one prose line (math and code already taken out as §)."""
+    out = []
+    for m in _QUANTITY.finditer(line):
+        tok, before, after = m.group(1), line[:m.start()], line[m.end():]
+        if tok in _UNIT_LETTERS and re.search(r"([\d§%]\s?|/ ?)$", before):
+            continue                                           # a unit: 50 N, $T$ N·m, /W
+        if lang == "en" and tok in ("a", "A", "I") and re.match(r"\s+[A-Za-z\d\"“]", after):
+            continue                                           # an article, a pronoun
+        if re.search(r"\\?\($", before) and after.startswith(")"):
+            continue                                           # an item label (a)
+        if tok == "V" and re.match(r"\s?(带|形|-|belt)", after):
+            continue                                           # V 带, V-belt, V 形块
+        if tok == "Y" and re.match(r"\s?(系列|-|series|motor)", after):
+            continue                                           # Y 系列 motors
+        if re.fullmatch(r"[A-Z]", tok) and (re.match(r"\s?型", after)
+                                            or re.search(r"(form|type|section|带型|chart, fig\. [\d-]+, gives)\s?$", before)):
+            continue                                           # A 型 key, belt section Z
+        out.append(tok)
+    return out
+
+
+def _prose_lines(md: str):
+    """The report's running text line by line: no code blocks, displayed math, tables,
+    raw blocks or references chapter; inline math and code replaced by §."""
+    fence = display = False
+    for line in md.splitlines():
+        s = line.strip()
+        if s.startswith(("```", "~~~")):
+            fence = not fence
+            continue
+        if s.startswith("$$") and s.count("$$") == 1:
+            display = not display
+            continue
+        if fence or display or s.startswith(("|", "<", "$$", "{%", "```{=")):
+            continue
+        if re.match(r"#+ (References|参考文献)", s):
+            break
+        s = re.sub(r"(?<!\\)\$[^$]*?(?<!\\)\$", "§", s)
+        s = re.sub(r"`[^`]*`", "§", s)
+        s = re.sub(r"\]\([^)]*\)", "] ", s)
+        s = re.sub(r"\{[#.][^}]*\}|\{width=[^}]*\}", " ", s)
+        s = re.sub(r"\[@[^\]]*\]|@(fig|tbl|eq|sec):[\w:.\-]*\w", " ", s)
+        yield s
+
+
+def bare_quantities(md: str, lang: str) -> list[tuple[str, str]]:
+    return [(tok, line[:160]) for line in _prose_lines(md) for tok in _bare_quantities(line, lang)]
+
+
+@pytest.mark.parametrize("text, lang, found", [
+    ("由行程 H 与行程速比系数 K 设计", "zh", ["H", "K"]),
+    ("分配轴每转一周（n = 50.00 r/min，T = 1.200 s）", "zh", ["n", "T"]),
+    ("飞轮转动惯量 J_F = 2.569 kg·m²", "zh", ["J_F"]),
+    ("实际转速为 n′ = 709.20 r/min", "zh", ["n′"]),
+    ("the stroke H and the time ratio K", "en", ["H", "K"]),
+    ("由行程 $H$ 与行程速比系数 $K$ 设计，$n$ = 50.00 r/min，$T$ = 1.200 s", "zh", []),
+    ("a V-belt, a Y-series motor, key form A, 带型 A，A 型平键，V 带，Y 系列", "en", []),
+    ("belt section A (the selection chart, fig. 8-11, gives Z; Z 型), a 4-pole Y motor; 1 − value/allowable, / W", "en", []),
+    ("A1 + B2 + C1 on the A1 sheet (GB/T 1096) ## \\(b): 12 738 N·m, 1.2 s, 48 000 h", "en", []),
+    ("force $P$ N and a torque of $T$ N·m; d'Alembert's principle, i.e. the load", "en", []),
+    ("见图 6 量得 ω3 = 1.2 rad/s，表 3 中 mm 与 kW", "zh", []),
+    ("# 参考文献\n\n吴宗泽 V 带 K", "zh", []),
+    ("| 行程 H | K |", "zh", []),
+])
+def test_the_quantity_scan(text, lang, found):
+    assert [tok for tok, _ in bare_quantities(text, lang)] == found
+
+
+@pytest.mark.parametrize("lang", ["zh", "en"])
+@pytest.mark.parametrize("name", EXAMPLES)
+def test_quantity_letters_in_prose_are_math(example_results, name, lang):
+    md, _ = _markdown(example_results, name, lang)
+    bad = bare_quantities(md, lang)
+    assert not bad, bad
+
+
+def test_a_heading_with_a_quantity_letter_keeps_it_in_the_word_contents():
+    """"# Crank-rocker from the time ratio $K$": Word holds the K of the heading's inline math
+    in an m:t run; the contents entry (render/docx_toc.py) reads it too."""
+    from mechdesign.render.docx_toc import _heading_text
+
+    heading = ('<w:r><w:t xml:space="preserve">Crank-rocker from the time ratio </w:t></w:r>'
+               '<m:oMath><m:r><m:rPr /><m:t>K</m:t></m:r></m:oMath>')
+    assert _heading_text(heading) == "Crank-rocker from the time ratio K"

@@ -320,14 +320,14 @@ def cam_context(c, lang: str, figs: dict[str, str], csv_name: str) -> dict:
         what = (_("smallest base radius for a convex profile (ρ ≥ ρa,min)") if fol.kind == "flat" else
                 _("smallest base radius for the allowed pressure angles"))
         design_rows.append([what
-                            + (_(" (e = {e} mm)", e=f(c.offset * MM, 2))
+                            + (_(" ($e$ = {e} mm)", e=f(c.offset * MM, 2))
                                if translating and fol.kind != "flat" else ""),
                             f"{f(c.min_base_radius * MM, 2)} mm"])
     if c.best_offset is not None:
         r0b, eb = c.best_offset
         side = _.pgettext("side, short", "right") if eb > 0 else _.pgettext("side, short", "left")
         design_rows.append([_("best offset and its smallest base radius"),
-                            f"e = {f(abs(eb) * MM, 2)} mm ({side}), $r_0$ = {f(r0b * MM, 2)} mm"])
+                            f"$e$ = {f(abs(eb) * MM, 2)} mm ({side}), $r_0$ = {f(r0b * MM, 2)} mm"])
     if c.face_extent is not None:
         lo, hi = c.face_extent
         if translating:

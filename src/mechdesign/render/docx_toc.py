@@ -22,14 +22,15 @@ _TOC_FIELD = re.compile(
     r'<w:fldChar w:fldCharType="separate" /><w:fldChar w:fldCharType="end" /></w:r></w:p>')
 _HEADING = re.compile(r'<w:p><w:pPr><w:pStyle w:val="Heading([1-9])" />.*?</w:pPr>(.*?)</w:p>',
                       re.DOTALL)
-_TEXT = re.compile(r"<w:t(?: [^>]*)?>([^<]*)</w:t>|<w:tab />")
+# (a heading's inline math, "time ratio $K$", holds its letters in m:t runs)
+_TEXT = re.compile(r"<([wm]):t(?: [^>]*)?>([^<]*)</\1:t>|<w:tab />")
 #: Bookmark ids above pandoc's own (which count from 0).
 _BOOKMARK_BASE = 900000
 
 
 def _heading_text(content: str) -> str:
     """The text of a heading paragraph's runs, as stored (XML-escaped), tabs as spaces."""
-    return re.sub(r"\s+", " ", "".join(m.group(1) if m.group(1) is not None else " "
+    return re.sub(r"\s+", " ", "".join(m.group(2) if m.group(2) is not None else " "
                                        for m in _TEXT.finditer(content))).strip()
 
 

@@ -15,6 +15,38 @@ from .fmt import f, grouped, md_text, percent, rpm, sentences, sig
 MM = 1e3
 
 
+
+# A shaft design step as results.json stores it (stages/drive_strength.py: its msgid, the
+# same since session 30) → the words the report prints, its quantity letters as math
+# ("$h$ ≈ 0.07 $d$", "$L$ ≤ hub − 8 mm", "$d$ = 24"; issue 19: GB 3102 sets a quantity
+# symbol in italic in the text too). results.json keeps its messages unchanged.
+_STEP_SHOWN = {
+    "design torque T = 9549 P/n = {T} N·m (bearing life: the same load × $f_p$ = {fp})":
+        N_("design torque $T$ = 9549 $P/n$ = {T} N·m (bearing life: the same load × $f_p$ = {fp})"),
+    "collar {d} (h ≈ 0.07 d)": N_("collar {d} ($h$ ≈ 0.07 $d$)"),
+    "{name_en}: d = {d}, key {b}×{h}, hub {hub}, L = {L}":
+        N_("{name_en}: $d$ = {d}, key {b}×{h}, hub {hub}, $L$ = {L}"),
+    "{name_en}: d = {d}, key {b}×{h}, hub {hub}, L = {L}, two keys at 180°":
+        N_("{name_en}: $d$ = {d}, key {b}×{h}, hub {hub}, $L$ = {L}, two keys at 180°"),
+    "keys (GB/T 1096, form A, L ≤ hub − 8 mm; a longer hub up to 1.5 d, then two keys when one "
+    "fails): {keys}":
+        N_("keys (GB/T 1096, form A, $L$ ≤ hub − 8 mm; a longer hub up to 1.5 $d$, then two keys "
+           "when one fails): {keys}"),
+}
+
+
+def _shown(value):
+    """An encoded step message (``{msgid, args}``, nested) with the report's wording of the
+    messages :data:`_STEP_SHOWN` names."""
+    if isinstance(value, list):
+        return [_shown(v) for v in value]
+    if not isinstance(value, dict):
+        return value
+    out = {k: _shown(v) for k, v in value.items()}
+    if isinstance(out.get("msgid"), str):
+        out["msgid"] = _STEP_SHOWN.get(out["msgid"], out["msgid"])
+    return out
+
 def _stage_label(st, _) -> str:
     name = st.name(_)
     if st.z1 is not None:
@@ -302,7 +334,7 @@ def stage_designs(d, lang: str) -> list[dict]:
             mats = " / ".join(_mat_name(k, _) for k in g.materials)
             text.append(_("Materials (pinion / gear): {mats}. Load factor $K = K_A K_V K_\\alpha K_\\beta "
                           "= {K}$, design torque $T_1 = {T1}$ N·m, face width factor $\\phi_d = {phi_d}$, "
-                          "module m = {m_text}.", mats=mats, K=f(g.K, 3), T1=sig(g.T1, group=False),
+                          "module $m$ = {m_text}.", mats=mats, K=f(g.K, 3), T1=sig(g.T1, group=False),
                           phi_d=f(e['phi_d'], 2), m_text=m_text))
             if e["open"]:
                 text.append(_("Open gears fail by wear: designed by root bending with the module raised 15 % "
@@ -327,7 +359,7 @@ def stage_designs(d, lang: str) -> list[dict]:
             e = g.extra
             geo = g.geometry
             text.append(_("Worm of surface-hardened 45 steel (>45 HRC), wheel {materials}. $K = K_A "
-                          "\\times 1.1 = {K}$, wheel torque $T_2 = {T2}$ N·m, module m = {m_text}, q = "
+                          "\\times 1.1 = {K}$, wheel torque $T_2 = {T2}$ N·m, module $m$ = {m_text}, $q$ = "
                           "{q}. Allowable $[\\sigma_H] = {sigma_H}$ MPa, $[\\sigma_F] = {sigma_F}$ MPa ($N "
                           "= {N}\\times10^6$).", materials=_mat_name(g.materials[1], _),
                           K=f(g.K, 3), T2=sig(g.T2, group=False), m_text=m_text, q=f(geo.q, 0),
@@ -343,11 +375,11 @@ def stage_designs(d, lang: str) -> list[dict]:
                 if c.key == "worm_deflection":    # issue 20: 濮良贵 ch.11 stiffness check
                     i = c.inputs
                     span = (_("bearing span L = {L} mm (given in the brief)", L=f(i['L'] * MM, 1)) if i["span_given"] else
-                            (_("bearing span estimated as L ≈ 0.9 $d_2$ = {L} mm",
+                            (_("bearing span estimated as $L$ ≈ 0.9 $d_2$ = {L} mm",
                                L=f(i['L'] * MM, 1))))
                     text.append(_("Worm shaft stiffness: the worm as a simply supported beam loaded by "
                                   "$F_{{t1}}$ and $F_{{r1}}$ at mid-span, {span}, $I = \\pi d_{{f1}}^4/64$ "
-                                  "($d_{{f1}} = d_1 - 2.4m = {df1}$ mm), E = 206 GPa, allowed deflection [y] = "
+                                  "($d_{{f1}} = d_1 - 2.4m = {df1}$ mm), $E$ = 206 GPa, allowed deflection [$y$] = "
                                   "$d_1$/1000.", span=span, df1=f(i['df1'] * MM, 2)))
             rows = [["$z_1 / z_2$", f"{r.z1} / {r.z2}", "—"], ["$m$", f(g.module * MM, 2), "mm"],
                     ["$q$", f(geo.q, 1), "—"], ["$d_1 / d_2$", f"{f(geo.d1 * MM, 2)} / {f(geo.d2 * MM, 2)}", "mm"],
@@ -367,11 +399,11 @@ def stage_designs(d, lang: str) -> list[dict]:
                   "Design, ch. 15 (each step's rule and numbers below); any failed check "
                   "enlarges that section and everything is checked again.", where=where)]
         for k, step in enumerate(sh.steps, 1):
-            said = decode(step).text(_)
+            said = decode(_shown(step)).text(_)
             text.append(_("Step {k}: {sen}.", k=k, sen=said, szh=said))
         # the reactions displayed: four "R = … N" runs in a justified line spread its few word
         # spaces (tests/test_typeset.py wide_word_gaps)
-        text.append(_("Largest equivalent moment M = {M} N·m at x = {x} mm; bearing reactions "
+        text.append(_("Largest equivalent moment $M$ = {M} N·m at $x$ = {x} mm; bearing reactions "
                       "(strength case):", x=f(res.critical.x * MM, 0),
                       M=sig(res.critical.M)))
         text.append("$$ " + r",\quad ".join(
@@ -379,7 +411,7 @@ def stage_designs(d, lang: str) -> list[dict]:
             for k, v in (("AH", res.RAh), ("AV", res.RAv), ("BH", res.RBh), ("BV", res.RBv))) + " $$")
         if sh.bearing is not None:
             b = sh.bearing
-            text.append(_("Bearings {designation} (d = {d} mm, $C_r$ = {Cr} kN); the life takes the "
+            text.append(_("Bearings {designation} ($d$ = {d} mm, $C_r$ = {Cr} kN); the life takes the "
                           "fatigue load: equivalent loads $P_A = {bearing_loads}$ N, $P_B = "
                           "{bearing_loads2}$ N ($f_p$ = 1.2, the loads {life_torque_factor} × those of "
                           "the strength case); the static strength the peak.",

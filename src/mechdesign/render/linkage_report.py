@@ -322,9 +322,9 @@ def realised_flywheel(fly, n_real: float | None, _) -> str | None:
     (``fly.nominal_speed_rpm`` set) is told so. The sentences in the language of ``_``."""
     if fly.nominal_speed_rpm is not None:
         n0, n1 = fly.nominal_speed_rpm, fly.shaft_speed_rpm
-        return _("The drive (chapter \"Drive design\") realises n′ = {n_real} rpm on this shaft, {slower}% "
-                 "below the nominal n = {n} rpm at which $M_b$ and $\\Delta W_{{max}}$ are computed. "
-                 "$J_F$ grows as 1/n², so it is sized at the slower n′ above: sized at n, the flywheel "
+        return _("The drive (chapter \"Drive design\") realises $n'$ = {n_real} rpm on this shaft, {slower}% "
+                 "below the nominal $n$ = {n} rpm at which $M_b$ and $\\Delta W_{{max}}$ are computed. "
+                 "$J_F$ grows as $1/n^2$, so it is sized at the slower $n'$ above: sized at $n$, the flywheel "
                  "would let the fluctuation reach $\\delta = [\\delta](n/n')^2$ = {delta_real} > [δ].",
                  n_real=f(n1, 2), n=f(n0, 2), slower=percent(abs(n1 / n0 - 1) * 100),
                  delta_real=f(fly.fluctuation * (n0 / n1) ** 2, 4))
@@ -334,12 +334,12 @@ def realised_flywheel(fly, n_real: float | None, _) -> str | None:
     n, nr = f(fly.shaft_speed_rpm, 2), f(n_real, 2)
     off = percent(abs(n_real / fly.shaft_speed_rpm - 1) * 100)
     if n_real > fly.shaft_speed_rpm:
-        first = _("$J_F$ is sized at the nominal speed n = {n} rpm, at which $M_b$ and $\\Delta W_{{max}}$ "
-                  "are computed; the drive (chapter \"Drive design\") realises n′ = {n_real} rpm on "
+        first = _("$J_F$ is sized at the nominal speed $n$ = {n} rpm, at which $M_b$ and $\\Delta W_{{max}}$ "
+                  "are computed; the drive (chapter \"Drive design\") realises $n'$ = {n_real} rpm on "
                   "this shaft, {faster}% faster.", n=n, n_real=nr, faster=off)
     else:
-        first = _("$J_F$ is sized at the nominal speed n = {n} rpm, at which $M_b$ and $\\Delta W_{{max}}$ "
-                  "are computed; the drive (chapter \"Drive design\") realises n′ = {n_real} rpm on "
+        first = _("$J_F$ is sized at the nominal speed $n$ = {n} rpm, at which $M_b$ and $\\Delta W_{{max}}$ "
+                  "are computed; the drive (chapter \"Drive design\") realises $n'$ = {n_real} rpm on "
                   "this shaft, {faster}% slower.", n=n, n_real=nr, faster=off)
     if delta <= fly.fluctuation * (1 + 1e-12):
         second = _("The same flywheel there keeps the fluctuation at $\\delta = [\\delta](n/n')^2$ = {delta_real}, "

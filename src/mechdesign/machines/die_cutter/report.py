@@ -215,7 +215,7 @@ def _choice_rows(b, p, r, _) -> list[list[str]]:
          _("presses 1/7–1/20 (textbook table); die cutting is not sensitive to the speed "
            "fluctuation")],
         ["—", _("flywheel"), _shaft(p.flywheel_shaft, len(b.drive.stages), _),
-         _("a fast shaft needs far less inertia (J ∝ 1/n²)")],
+         _("a fast shaft needs far less inertia ($J \\propto 1/n^2$)")],
         (["$h$", _("gripper cam lift"), f"{f(cam.follower.stroke_h_mm, 1)} mm",
           _("push-rod travel that opens the grippers")]
          if cam.follower.motion == "translating" else
@@ -332,7 +332,7 @@ def _synthesis(d, p, _) -> dict:
         _("searched along the allowed arc of the θ-circle for the largest minimum "
            "transmission angle")
     mirrored = _("The drawing is mirrored about the guide so that the rise is the slow stroke "
-                  "(K > 1).") \
+                  "($K$ > 1).") \
         if d.mirrored else ""
     return {"eq": eq, "rows": rows, "pivot": pivot, "mirrored": mirrored, "given": given,
             "psi": _deg(psi, 2), "eps": _deg(eps, 2), "theta": f(theta, 2),

@@ -41,7 +41,7 @@ _NOTE = N_("Each item is recomputed by its definition: every shaft's speed, powe
            "what it needs; a strength margin is 1 − value/allowable (for lives and diameters 1 − "
            "required/value), the smallest over all checks of a stage or shaft; the statics of "
            "each shaft take every load (an axial force as the couple $F_a r$ in the vertical "
-           "plane) and both reactions, in both planes, with moments about bearing B.")
+           "plane) and both reactions, in both planes, with moments about bearing $B$.")
 
 
 def verification_context(d, v, lang: str) -> dict:

@@ -32,7 +32,7 @@ def _describe(fol, lang):
         where = _("centred")
     else:
         side = _.pgettext("offset side", "right") if fol.offset > 0 else _.pgettext("offset side", "left")
-        where = _("offset e = {offset} mm ({side})", offset=f(abs(fol.offset) * MM, 1), side=side)
+        where = _("offset $e$ = {offset} mm ({side})", offset=f(abs(fol.offset) * MM, 1), side=side)
     extra = ""
     if fol.kind == "roller":
         extra = _(", $r_r$ = {roller_radius} mm", roller_radius=f(fol.roller_radius * MM, 1))

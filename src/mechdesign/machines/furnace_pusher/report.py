@@ -176,7 +176,7 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
     o1b1, o1b2 = abs(syn.B1 - syn.O1) * MM, abs(syn.B2 - syn.O1) * MM
     lim = syn.alpha_limit * DEG
     sense = _("clockwise") if syn.sense < 0 else _("counter-clockwise")
-    towards = "+x" if syn.working_direction > 0 else "−x"
+    towards = "+$x$" if syn.working_direction > 0 else "−$x$"
 
     given = pp.given is not None
     sub = _(" (derived)") if given else ""

@@ -85,8 +85,8 @@ def grashof_sentence(a: float, b: float, c: float, d: float, lang: str) -> str:
     s_, l_ = order[0], order[-1]
     p_, q_ = order[1], order[2]
     lhs, rhs = names[s_] + names[l_], names[p_] + names[q_]
-    nums = (f"s + l = {s_} + {l_} = {f(names[s_] * MM, 2)} + {f(names[l_] * MM, 2)} = {f(lhs * MM, 2)} mm, "
-            f"p + q = {p_} + {q_} = {f(rhs * MM, 2)} mm")
+    nums = (f"$s + l = {s_} + {l_}$ = {f(names[s_] * MM, 2)} + {f(names[l_] * MM, 2)} = {f(lhs * MM, 2)} mm, "
+            f"$p + q = {p_} + {q_}$ = {f(rhs * MM, 2)} mm")
     tol = 1e-9 * max(names.values())
     if abs(lhs - rhs) <= tol:
         return (_("{nums}, equal: a change-point linkage, with a position where all four links "
@@ -95,7 +95,7 @@ def grashof_sentence(a: float, b: float, c: float, d: float, lang: str) -> str:
         return (_("{nums}; s + l > p + q: no link can turn fully (a triple rocker)", nums=nums))
     link = {"a": N_("the input rocker"), "b": N_("the coupler"),
             "c": N_("the arm on the wheel"), "d": N_("the frame")}[s_]
-    return _("{nums}; s + l < p + q: a Grashof linkage, whose shortest link ({link}) could "
+    return _("{nums}; $s$ + $l$ < $p$ + $q$: a Grashof linkage, whose shortest link ({link}) could "
              "turn fully relative to its neighbours", nums=nums, link=_(link))
 
 
@@ -312,7 +312,7 @@ def _seed_notes(r: dict, lang: str) -> list[str]:
         wrong = int(np.sum(np.abs(ft.seed_x - ft.x) > 1e-9))
         notes.append(_("The original report's VB RRP routine takes the absolute value of the slider coordinate "
                        "(sr = abs(...)), which mirrors the slider to the right whenever it is left of "
-                       "the guide's reference point x = 0: {wrong} of its {n} positions at 10° steps "
+                       "the guide's reference point $x$ = 0: {wrong} of its {n} positions at 10° steps "
                        "come out wrong. This report takes the signed root.", wrong=wrong, n=len(ft.x)))
     return notes
 
