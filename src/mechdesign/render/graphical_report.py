@@ -634,7 +634,11 @@ def _forces(pos, lang: str) -> list[dict]:
             if need == least:
                 break
             least = need
-        closing = " + ".join(r"\vec " + sym(v.symbol) for v in fg.vectors
+        # a force known to be zero (a tangential component no known force calls for, its
+        # moment equation said so) is no side of the polygon: left out of its vector
+        # equation and its table, as the figure leaves it out (issue 19)
+        sides = [v for v in fg.vectors if not known_zero(v)]
+        closing = " + ".join(r"\vec " + sym(v.symbol) for v in sides
                              if v.kind not in ("total", "internal")) + " = 0"
         # a given force (a weight, an inertia force, the resistance) is listed with its given
         # value, drawn to the nearest 0.5 mm; what is read off the polygon is the rest
@@ -645,7 +649,7 @@ def _forces(pos, lang: str) -> list[dict]:
 
         rows = [[f"${sym(v.symbol)}$", "√" if v.known else "?", _mm(v.length),
                  known(v.symbol, given[v.symbol]) if v.known and v.symbol in given else _numg(v.read)]
-                for v in fg.vectors]
+                for v in sides]
         loads = [[f"${sym(ld.name)}$", link, known(ld.name, abs(ld.value))]
                  for link, lds in fg.loads.items() for ld in lds if abs(ld.value) > 0]
         out.append({"name": "–".join(fg.links), "links": ", ".join(fg.links), "crank": fg.balancing_torque
@@ -657,6 +661,12 @@ def _forces(pos, lang: str) -> list[dict]:
                     "pb": None if fg.balancing_force is None else _numg(_signed_pb(fg)),
                     "pb_abs": None if fg.balancing_force is None else _numg(abs(fg.balancing_force))})
     return out
+
+
+def known_zero(v) -> bool:
+    """A force polygon's vector known before the construction to be zero (a moment equation
+    gave it 0): it has no length, no direction and no side in the polygon."""
+    return v.known and v.read == 0
 
 
 def _force_of(fg, name: str) -> float:
