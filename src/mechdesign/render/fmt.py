@@ -72,6 +72,7 @@ import re
 
 from ..i18n import tr
 from ..numbers import GROUP, fixed as f, grouped_digits as _group, sig  # noqa: F401  (the rule's digits: mechdesign/numbers.py)
+from ..numbers import factors_for, gives  # noqa: F401  (a displayed chain's digits)
 
 
 def grouped(text: str) -> str:
@@ -384,13 +385,6 @@ def sentences(_, *texts: str) -> str:
     return ("" if _.zh else " ").join(t for t in texts if t)
 
 
-def gives(value: float, printed: str) -> bool:
-    """``value`` (a chain evaluated from its printed factors) rounds to ``printed``: within
-    half a unit of its last printed digit (the rule of every displayed chain)."""
-    digits = len(printed.replace(" ", "").partition(".")[2])
-    return abs(value - float(printed.replace(" ", ""))) <= 0.5 * 10.0 ** -digits * (1 + 1e-9)
-
-
 def factor_for(x: float, ok, sig_digits: int = 4) -> str:
     """``x`` as a factor of a displayed chain: :func:`sig`'s ``sig_digits`` significant
     digits, one more at a time (up to three) until ``ok(printed factor)`` holds — the printed
@@ -400,3 +394,11 @@ def factor_for(x: float, ok, sig_digits: int = 4) -> str:
         if ok(float(text)):
             return text
     return text
+
+
+def product(xs, printed: str, sig_digits: int = 4) -> str:
+    """The factors ``xs`` of a displayed product "a \\times b = printed", written with
+    :func:`factors_for`'s digits: the printed factors give the printed product."""
+    import math
+
+    return r" \times ".join(factors_for(xs, lambda *v: math.prod(v), printed, sig_digits))

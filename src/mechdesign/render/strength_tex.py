@@ -170,12 +170,45 @@ def _shaft_min_diameter(c: Check) -> str:
     return (rf"d_{{\text{{min}}}} = {sym} = {numbers} = {_allowable(c)}\ {u}, \quad d = {_value(c)}\ {u} {rel} d_{{\text{{min}}}}")
 
 
+def _giving(xs, fn, printed: str, most: int = 3) -> list[str]:
+    """The numbers ``xs`` of a formula as :func:`num` writes them, with the fewest more
+    significant digits (up to ``most`` each, fewest in all first) that make ``fn(*printed
+    numbers)`` give ``printed`` to its last digit (a displayed chain computes from what it
+    prints: 15200/1109 = 13.706, printed 13.70 — P_0 = 1109.5)."""
+    from itertools import product
+
+    from ..numbers import gives
+
+    mantissa, _, power = printed.partition("\\times10^{")
+    power = int(power.rstrip("}") or 0)
+    for total in range(most * len(xs) + 1):
+        for extras in product(range(most + 1), repeat=len(xs)):
+            if sum(extras) != total:
+                continue
+            texts = [num(x, 4 + e) for x, e in zip(xs, extras)]
+            if any("(" in t for t in texts):
+                return [num(x) for x in xs]
+            if gives(fn(*(_float(t) for t in texts)) / 10.0 ** power, mantissa):
+                return texts
+    return [num(x) for x in xs]
+
+
+def _float(text: str) -> float:
+    """The value of a number :func:`num` wrote (``1.1\\times10^{5}`` too)."""
+    mant, _, power = text.partition("\\times10^{")
+    return float(mant) * 10.0 ** int(power.rstrip("}") or 0)
+
+
 def _bearing_life(c: Check) -> str:
     i = c.inputs
     eps = r"\frac{10}{3}" if abs(i["epsilon"] - 10 / 3) < 1e-9 else num(i["epsilon"])
+    e_val = 10 / 3 if abs(i["epsilon"] - 10 / 3) < 1e-9 else float(num(i["epsilon"]))
     ft = i.get("ft", 1.0)
-    ratio = rf"\frac{{{_prod(ft, i['C'])}}}{{{num(i['P'])}}}"
-    numbers = rf"\frac{{10^6}}{{60 \times {num(i['n_rpm'])}}} \times ({ratio})^{{{eps}}}"
+    value = _value(c)
+    n_txt, p_txt = _giving((i["n_rpm"], i["P"]), lambda n, p: 1e6 / (60 * n) * (
+        _float(num(ft)) * _float(num(i["C"])) / p) ** e_val, value)
+    ratio = rf"\frac{{{_prod(ft, i['C'])}}}{{{p_txt}}}"
+    numbers = rf"\frac{{10^6}}{{60 \times {n_txt}}} \times ({ratio})^{{{eps}}}"
     return (rf"L_{{10h}} = \frac{{10^6}}{{60 n}} (\frac{{f_t C}}{{P}})^{{\varepsilon}} = {numbers}"
             + _tail(c, r"L_h'"))
 
@@ -192,7 +225,8 @@ def _key_crushing(c: Check) -> str:
 
 def _bearing_static(c: Check) -> str:
     i = c.inputs
-    return (rf"\frac{{C_0}}{{P_0}} = \frac{{{num(i['C0'])}}}{{{num(i['P0'])}}}" + _tail(c, r"S_0"))
+    c0, p0 = _giving((i["C0"], i["P0"]), lambda a, b: a / b, _value(c))
+    return (rf"\frac{{C_0}}{{P_0}} = \frac{{{c0}}}{{{p0}}}" + _tail(c, r"S_0"))
 def _rel(check: Check) -> str:
     return _relation(check)
 
