@@ -55,6 +55,7 @@ def evaluate(tex: str) -> float:
         prev = s
         s = re.sub(r"\\[dt]?frac\s*\{([^{}]*)\}\s*\{([^{}]*)\}", r"((\1)/(\2))", s)
         s = re.sub(r"\\sqrt\s*\{([^{}]*)\}", r"sqrt(\1)", s)
+        s = re.sub(r"\^\{([^{}]*)\}", r"**(\1)", s)
     s = re.sub(r"\\(sin|cos|tan)\s*\(?\s*(" + _NUM + r")\s*°\s*\)?", r"\1d(\2)", s)
     s = s.replace("\\times", "*").replace("\\cdot", "*").replace("\\pi", "pi")
     s = re.sub(r"\^\{([^{}]*)\}", r"**(\1)", s)

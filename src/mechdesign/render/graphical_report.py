@@ -597,6 +597,18 @@ def _moment_tex(m, gives=None, least=None, shown=None) -> tuple[str, float, floa
     return known, total, couples, psum
 
 
+def _mantissa_for(x: float, ok) -> tuple[str, float]:
+    """``x`` (a million or more) as "a\\times10^{n}" with 4 significant digits, more (up to 8)
+    until ``ok(printed value)`` holds; the text and the value it prints."""
+    power = int(math.floor(math.log10(abs(x))))
+    for digits in range(4, 9):
+        mant = f(x / 10.0 ** power, digits - 1)
+        value = float(mant) * 10.0 ** power
+        if ok(value):
+            break
+    return f"{mant}\\times10^{{{power}}}", value
+
+
 def _couple(c: float, extra: int = 0) -> str:
     return f" {'+' if c >= 0 else '-'} {_factor(abs(c), extra)}" if c else ""
 
@@ -711,9 +723,14 @@ def _group_moments(fg, mu_l, lang: str, least: dict, shown: dict) -> tuple[list,
         elif m.arm:
             # the printed sum, and the couple (N·m, divided by mu_l to N·mm of the drawing)
             # with the digits that give the printed unknown
-            lhs, total, _c, _psum = _moment_tex(m, None, least, shown)
+            lhs, total, _c, psum = _moment_tex(m, None, least, shown)
             num = _num(total)
             value = float(num) if "times" not in num else total
+            if "times" in num:
+                # a sum of a million or more (N·mm of the drawing) with a power of ten: its
+                # mantissa with the digits that give the printed unknown (1.059 × 10⁶ gave
+                # −12 105.7 for the printed −12 107: 1.059138 × 10⁶)
+                num, value = _mantissa_for(psum, lambda v: _gives(-(v + couples / mu_l) / m.arm, res))
             cpl = (f"{_couple_for(couples, lambda c: _gives(-(value + c / mu_l) / m.arm, res))}"
                    f" / {_scale(mu_l)}") if couples else ""
             if couples and couple is None:
