@@ -32,8 +32,9 @@ Numbers, as an engineer writes them (one rule for every report, table and sheet)
   from its printed numbers, to the result's last digit: a factor is written with the digits
   that make it so (a weight of 156.96 N, a reaction read as 1662.5 N: render/graphical_report
   ``_moment_tex``), or the result is computed from the factors as printed (the drive's speed
-  deviation from the speeds to 0.01 rpm); tests/test_displayed_arithmetic.py re-evaluates
-  every report's chains;
+  deviation from the speeds to 0.01 rpm); :func:`factors_for` (mechdesign/numbers.py) finds
+  the fewest more digits; tests/test_displayed_arithmetic.py re-evaluates the reviewed shapes,
+  tests/test_every_chain.py every formula of numbers of every example report;
 * numbers in finding and error messages (``{x:.2f}`` in the msgid) by the same rule; three
   decimals only where a value is compared with a limit it may miss by less than 0.01;
 * other dimensionless ratios (efficiencies, safety factors, velocity ratios): 4 significant
