@@ -95,8 +95,21 @@ def faults(md: str, name: str = "") -> list[tuple[str, str]]:
         md = QUOTED_PATTERN[name].sub("", md)
     out = []
     for line in md.splitlines():
+        # a displayed chain's result is written by the rule; its factors may carry the digits
+        # the result was computed from, so that the printed factors give the printed result
+        # (review35: "6.404 × 14.12² = 1276.5", "320/(2 sin 8.18°) = 1124.27"; an inline
+        # chain too: "$T = 20.009 \times 640.06 = 12807$ N·m", its result 12807; a long
+        # display whose numbers end it, its result on the next line, has no result on this
+        # one; tests/test_displayed_arithmetic.py and tests/test_every_chain.py check the chains)
+        if line.lstrip().startswith("$$"):
+            result = line.rsplit("=", 1)[-1]
+            head = re.sub(r"\\times\s*10\^\{?-?\d+\}?", "", result.split("\\ ")[0])
+            if re.search(r"\\times|\\frac|\^", head.split("\\le")[0].split("\\ge")[0]):
+                result = ""
+        else:
+            result = re.sub(r"\$[^$]*=([^$=]*)\$", r"$\1$", line)
         for kind, pattern in FAULTS.items():
-            if pattern.search(line):
+            if pattern.search(result if kind == "five or more decimals" else line):
                 out.append((kind, line.strip()[:140]))
         if not line.startswith("|") and LENGTH_4.search(
                 line.rsplit("=", 1)[-1] if line.lstrip().startswith("$$") else line):
@@ -110,11 +123,6 @@ def faults(md: str, name: str = "") -> list[tuple[str, str]]:
             out.append(("torque, power or energy beyond 4 digits", line.strip()[:140]))
         if line.startswith("|"):
             continue
-        # a displayed chain's result is written by the rule; its factors may carry the digits
-        # the result was computed from, so that the printed factors give the printed result
-        # (review35: "6.404 × 14.12² = 1276.5", "320/(2 sin 8.18°) = 1124.27";
-        # tests/test_displayed_arithmetic.py checks the chains)
-        result = line.rsplit("=", 1)[-1] if line.lstrip().startswith("$$") else line
         if any(_five_sig_3dec(m.group(0)) for m in FIVE_SIG_3DEC.finditer(result)):
             out.append(("five significant digits and three decimals", line.strip()[:140]))
         if LENGTH_3.search(result):
@@ -169,7 +177,9 @@ def test_the_scan_finds_the_reviewed_faults():
           "$$ i = \\frac{1440}{50.00} = 28.80 $$", "(ω = 5.236 rad/s)", "K = 1.200 (θ = 16.36°)",
           "$$ a = 57.04\\ \\text{mm} $$", "acceleration 12.29 m/s²", "\\Phi = 120.0° = 2.094\\ \\text{rad}",
           "12\u202f738 N·m", "$$ \\Delta n = 0.54\\% $$", "efficiency 0.8764, 88.6%",
-          "| 1 | 5.2360 | 1.2000 | 48.539 |"]
+          "| 1 | 5.2360 | 1.2000 | 48.539 |",
+          # an inline chain's factors carry the digits its printed result was computed from
+          "the strength checks use $T = 20.009 \\times 640.06 = 12807$ N·m (peak/mean)"]
     assert not faults("\n".join(ok), "cam_7_1")
 
 

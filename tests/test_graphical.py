@@ -323,3 +323,43 @@ def test_guide_bar_force_of_the_moment_equation_is_known_in_the_polygon(example_
         mb = next(m for m in crank.moments if m.unknown == "Mb")
         assert mb.result + sum(t.value for t in mb.terms) == pytest.approx(0.0, abs=1e-9)
     assert seen == len(doc.positions)
+
+
+@pytest.mark.parametrize("name", ["shaper", "linkage_sixbar", "furnace_pusher", "press", "slotter",
+                                  "die_cutter", "textbook_guide_bar"])
+def test_a_force_known_to_be_zero_is_no_side_of_the_polygon(example_results, name):
+    """A force the group's moment equation gives as zero (shaper pos. 4: no known force on
+    link 5 has a moment about F, F_R45^t = 0) contributes no side to the force polygon: its
+    figure draws nothing for it, and its table and vector equation leave it out (they listed
+    "F^t_R45 √ 0.0 0", issue 19). Every side the figure draws (length > 0) is in the table."""
+    from mechdesign.render.graphical_report import graphical_context, sym
+
+    results = example_results(name)
+    ctx = graphical_context(results, {}, "en")
+    assert ctx
+    docs = {k[: -len("_graphical")]: v for k, v in results.items()
+            if type(v).__name__ == "GraphicalDocument" and v.positions}
+    zeros = checked = 0
+    for gd in ctx:
+        doc = docs[gd["prefix"]]
+        for pos, p in zip(doc.positions, gd["positions"]):
+            for fg, fc in zip(pos.forces, p["forces"]):
+                listed = [row[0] for row in fc["rows"]]
+                # the forces a moment equation solved as exactly zero, from the equations
+                zero = {f"${sym(m.unknown)}$" for m in fg.moments
+                        if m.unknown.startswith("R") and m.result == 0}
+                zeros += len(zero)
+                for z in zero:
+                    assert z not in listed, (pos.label, fc["name"], z)
+                    assert f"\\vec {z.strip('$')} " not in fc["sum"] + " ", (pos.label, fc["sum"])
+                # the figure's sides: every vector drawn with a length is listed
+                for v in fg.vectors:
+                    if v.length > 0:
+                        assert f"${sym(v.symbol)}$" in listed, (pos.label, v.symbol)
+                # no row of a known force whose value is zero
+                for row in fc["rows"]:
+                    assert not (row[1] == "√" and row[3] == "0"), (pos.label, fc["name"], row)
+                checked += 1
+    assert checked
+    if name in ("shaper", "linkage_sixbar", "furnace_pusher", "press"):
+        assert zeros, "the brief's known zero (its report listed one) is gone from the equations"

@@ -6,7 +6,9 @@ the stages). Standard library only: no prose, no units, no I/O.
 * :func:`fixed` — a fixed number of decimals, never a negative zero;
 * :func:`sig` — ``n`` significant digits, never E-notation, all integer digits kept;
 * :func:`grouped_digits` — an integer part of five or more digits grouped by threes with a
-  narrow no-break space (for text and table cells, never inside a formula).
+  narrow no-break space (for text and table cells, never inside a formula);
+* :func:`gives`, :func:`factors_for` — a displayed chain's printed factors give its printed
+  result to its last digit.
 """
 from __future__ import annotations
 
@@ -53,3 +55,38 @@ def sig(x: float, n: int = 4, group: bool = True, ref: float = 0.0) -> str:
     rounded = Decimal(f"{x:.{n - 1}e}")
     decimals = max(n - 1 - rounded.adjusted(), 0)
     return fixed(float(rounded), decimals, group=group)
+
+
+def gives(value: float, printed: str) -> bool:
+    """``value`` (a chain evaluated from its printed factors) rounds to ``printed``: within
+    half a unit of its last printed digit (the rule of every displayed chain)."""
+    digits = len(printed.replace(" ", "").partition(".")[2])
+    return abs(value - float(printed.replace(" ", ""))) <= 0.5 * 10.0 ** -digits * (1 + 1e-9)
+
+
+def significant(text: str) -> int:
+    """The significant digits a number is printed with (``0.0400`` → 3, ``266.67`` → 5)."""
+    digits = text.replace(GROUP, "").replace(" ", "").lstrip("-").replace(".", "")
+    return max(len(digits.lstrip("0")), 1)
+
+
+def factors_for(xs, fn, printed: str, sig_digits=4, most: int = 3) -> list[str]:
+    """The factors ``xs`` of a displayed chain whose printed result is ``printed``: :func:`sig`'s
+    ``sig_digits`` significant digits (one number, or one for each factor), the fewest more
+    digits (up to ``most`` a factor, fewest in all first) with which ``fn(*printed factors)``
+    gives ``printed`` to its last digit (636.62 × 5.236 = 3333.3, where 636.6 gives 3333.2)."""
+    from itertools import product
+
+    result = printed.replace(" ", "").replace("\u202f", "")
+    n = len(xs)
+    base = [sig_digits] * n if isinstance(sig_digits, int) else list(sig_digits)
+    for total in range(most * n + 1):
+        for extras in product(range(most + 1), repeat=n):
+            if sum(extras) != total:
+                continue
+            texts = [sig(x, b + e, group=False) for x, b, e in zip(xs, base, extras)]
+            if gives(fn(*(float(t) for t in texts)), result):
+                return texts
+    return [sig(x, b + most, group=False) for x, b in zip(xs, base)]
+
+

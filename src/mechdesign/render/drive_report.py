@@ -47,6 +47,31 @@ def _shown(value):
         out["msgid"] = _STEP_SHOWN.get(out["msgid"], out["msgid"])
     return out
 
+def _num_giving(x: float, fn, printed: str, write) -> str:
+    """``x`` as ``write`` (a formula's number writer) prints it, with one more significant
+    digit at a time (up to three) until ``fn(printed x)`` gives ``printed`` to its last digit
+    (a displayed chain computes from what it prints: 1.2 × 0.1812 = 0.2174, printed 0.2175 —
+    P = 0.18124)."""
+    from ..numbers import gives
+
+    for digits in range(4, 8):
+        text = write(x, digits)
+        if "times" in text or "(" in text or gives(fn(float(text)), printed):
+            return text
+    return text
+
+
+def _pw_for(d) -> str:
+    """"{P_w}{η}" (P_w in kW) with the digits that give the printed P_d = P_w/η (0.04400/0.6988
+    gives 0.06297, printed 0.06296: η = 0.69883; a factor carries the digits the result was
+    computed from)."""
+    from ..numbers import factors_for, significant
+
+    pw, eta = factors_for((d.machine_power / 1e3, d.efficiency), lambda p, e: p / e,
+                          sig(d.power_required / 1e3, group=False), (4, significant(f(d.efficiency, 4))))
+    return f"{pw}}}{{{eta}"
+
+
 def _stage_label(st, _) -> str:
     name = st.name(_)
     if st.z1 is not None:
@@ -187,7 +212,7 @@ def drive_context(d, lang: str, figures: dict[str, str], machine_power_eq: str |
     eq = {
         "eta": (rf"\eta = \prod \eta_i \cdot \eta_b^{{{n_b}}} \cdot \eta_w = {eta_terms} \times "
                 rf"{eta_b}^{{{n_b}}} \times {eta_w} = {f(d.efficiency, 4)}"),
-        "pd": (rf"P_d = \frac{{P_w}}{{\eta}} = \frac{{{sig(d.machine_power / 1e3, group=False)}}}{{{f(d.efficiency, 4)}}}"
+        "pd": (rf"P_d = \frac{{P_w}}{{\eta}} = \frac{{{_pw_for(d)}}}"
                rf" = {sig(d.power_required / 1e3, group=False)}\ \text{{kW}}"),
         "i": (rf"i = \frac{{n_m}}{{n_w}} = \frac{{{f(m.full_load_rpm, 0)}}}{{{rpm(d.output_speed_required)}}}"
               rf" = {sig(d.choice.total_ratio, group=False)}"),
@@ -483,7 +508,9 @@ def _belt_design(r, g, title: str, _) -> dict:
             ["$L_d$", f(b.L_d * MM, 0), "mm"], ["$a$", f(b.a * MM, 1), "mm"],
             ["$\\alpha_1$", f(deg(b.alpha1), 2), "°"], ["$z$", str(b.z), "—"],
             ["$F_0$", f(b.F0, 1), "N"], ["$F_p$", f(b.Fp, 1), "N"]]
-    d2_eq = (rf"d_{{d2}} = i\,d_{{d1}}(1-\varepsilon) = {num(r.ratio_allocated)} \times {num(d1)} \times "
+    i_txt = _num_giving(r.ratio_allocated, lambda i: i * float(num(d1)) * (1 - float(num(b.slip))),
+                        num(d2_calc), num)
+    d2_eq = (rf"d_{{d2}} = i\,d_{{d1}}(1-\varepsilon) = {i_txt} \times {num(d1)} \times "
              rf"(1-{num(b.slip)}) = {num(d2_calc)}\ \text{{mm}} \rightarrow {num(d2)}\ \text{{mm}}"
              if not r.fixed else rf"d_{{d2}} = {num(d2)}\ \text{{mm}}")
     # L_d0 with the digits that give the printed a (1697.2: 470 + (1600 − 1697.2)/2 = 421.4)
@@ -493,7 +520,8 @@ def _belt_design(r, g, title: str, _) -> dict:
         float(num(a0)) + (float(num(b.L_d * MM)) - float(t)) / 2 - float(a_txt)) <= 0.5 * step * (1 + 1e-9)
         or t == num(b.L_d0 * MM, 7))
     formulas = [
-        rf"P_{{ca}} = K_A P = {num(b.KA)} \times {num(P)} = {num(Pca)}\ \text{{kW}}",
+        rf"P_{{ca}} = K_A P = {num(b.KA)} \times {_num_giving(P, lambda x: float(num(b.KA)) * x, num(Pca), num)}"
+        rf" = {num(Pca)}\ \text{{kW}}",
         rf"v = \frac{{\pi d_{{d1}} n_1}}{{60 \times 1000}} = \frac{{\pi \times {num(d1)} \times {num(b.n1_rpm)}}}"
         rf"{{60000}} = {num(b.v)}\ \text{{m/s}}",
         d2_eq,
@@ -540,7 +568,8 @@ def _chain_design(g, title: str, _) -> dict:
             ["$p$", f(p, 3), "mm"], ["$L_p$", str(c.L_p), "—"], ["$a$", f(c.a * MM, 1), "mm"],
             ["$v$", f(c.v, 3), "m/s"], ["$F_e$", f(c.Fe, 1), "N"], ["$F_Q$", f(c.FQ, 1), "N"]]
     formulas = [
-        rf"P_{{ca}} = \frac{{K_A K_z P}}{{K_p}} = \frac{{{num(c.KA)} \times {num(c.Kz)} \times {num(P)}}}"
+        rf"P_{{ca}} = \frac{{K_A K_z P}}{{K_p}} = \frac{{{num(c.KA)} \times {num(c.Kz)} \times "
+        rf"{_num_giving(P, lambda x: float(num(c.KA)) * float(num(c.Kz)) * x / float(num(c.Kp)), num(Pca), num)}}}"
         rf"{{{num(c.Kp)}}} = {num(Pca)}\ \text{{kW}}",
         rf"L_{{p0}} = \frac{{2a_0}}{{p}} + \frac{{z_1 + z_2}}{{2}} + \frac{{p}}{{a_0}}\left(\frac{{z_2 - z_1}}"
         rf"{{2\pi}}\right)^2 = \frac{{2 \times {num(c.a0 * MM)}}}{{{num(p)}}} + \frac{{{c.z1 + c.z2}}}{{2}} + "

@@ -32,8 +32,9 @@ Numbers, as an engineer writes them (one rule for every report, table and sheet)
   from its printed numbers, to the result's last digit: a factor is written with the digits
   that make it so (a weight of 156.96 N, a reaction read as 1662.5 N: render/graphical_report
   ``_moment_tex``), or the result is computed from the factors as printed (the drive's speed
-  deviation from the speeds to 0.01 rpm); tests/test_displayed_arithmetic.py re-evaluates
-  every report's chains;
+  deviation from the speeds to 0.01 rpm); :func:`factors_for` (mechdesign/numbers.py) finds
+  the fewest more digits; tests/test_displayed_arithmetic.py re-evaluates the reviewed shapes,
+  tests/test_every_chain.py every formula of numbers of every example report;
 * numbers in finding and error messages (``{x:.2f}`` in the msgid) by the same rule; three
   decimals only where a value is compared with a limit it may miss by less than 0.01;
 * other dimensionless ratios (efficiencies, safety factors, velocity ratios): 4 significant
@@ -72,6 +73,7 @@ import re
 
 from ..i18n import tr
 from ..numbers import GROUP, fixed as f, grouped_digits as _group, sig  # noqa: F401  (the rule's digits: mechdesign/numbers.py)
+from ..numbers import factors_for, gives  # noqa: F401  (a displayed chain's digits)
 
 
 def grouped(text: str) -> str:
@@ -384,13 +386,6 @@ def sentences(_, *texts: str) -> str:
     return ("" if _.zh else " ").join(t for t in texts if t)
 
 
-def gives(value: float, printed: str) -> bool:
-    """``value`` (a chain evaluated from its printed factors) rounds to ``printed``: within
-    half a unit of its last printed digit (the rule of every displayed chain)."""
-    digits = len(printed.replace(" ", "").partition(".")[2])
-    return abs(value - float(printed.replace(" ", ""))) <= 0.5 * 10.0 ** -digits * (1 + 1e-9)
-
-
 def factor_for(x: float, ok, sig_digits: int = 4) -> str:
     """``x`` as a factor of a displayed chain: :func:`sig`'s ``sig_digits`` significant
     digits, one more at a time (up to three) until ``ok(printed factor)`` holds — the printed
@@ -400,3 +395,11 @@ def factor_for(x: float, ok, sig_digits: int = 4) -> str:
         if ok(float(text)):
             return text
     return text
+
+
+def product(xs, printed: str, sig_digits: int = 4) -> str:
+    """The factors ``xs`` of a displayed product "a \\times b = printed", written with
+    :func:`factors_for`'s digits: the printed factors give the printed product."""
+    import math
+
+    return r" \times ".join(factors_for(xs, lambda *v: math.prod(v), printed, sig_digits))

@@ -13,6 +13,17 @@ DEG = 180.0 / np.pi
 MM = 1e3
 
 
+
+def _ratio_for(b1b2: float, pb: float) -> str:
+    """"{B1B2}{p_b}" [mm] with the digits that give the printed ε = B1B2/p_b (24.16/14.76 gives
+    1.6369, printed 1.636: the quotient's numbers carry the digits it was computed from)."""
+    from ..numbers import factors_for, significant
+
+    top, bottom = factors_for((b1b2 * MM, pb * MM), lambda a, b: a / b, sig(b1b2 / pb, group=False),
+                              tuple(significant(f(x * MM, 2)) for x in (b1b2, pb)))
+    return f"{top}}}{{{bottom}"
+
+
 def make_gear_figures(g, fig_dir: Path, lang: str) -> dict[str, str]:
     from .gear_figures import meshing_drawing
 
@@ -73,7 +84,7 @@ def gear_context(g, lang: str, figures: dict[str, str]) -> dict:
                     rf"({f(np.tan(g2.alpha_a), 4)}-{f(tw, 4)})}}{{2\pi}} = {f(p.contact_ratio, 3)}"),
         "b1b2": (rf"\overline{{B_1B_2}} = \sqrt{{r_{{a1}}^2-r_{{b1}}^2}}+\sqrt{{r_{{a2}}^2-r_{{b2}}^2}}-a'\sin\alpha'"
                  rf" = {f(b1b2 * MM, 2)}\ \text{{mm}}, \quad \frac{{\overline{{B_1B_2}}}}{{p_b}} = "
-                 rf"\frac{{{f(b1b2 * MM, 2)}}}{{{f(p.pb * MM, 2)}}} = {sig(b1b2 / p.pb, group=False)}"),
+                 rf"\frac{{{_ratio_for(b1b2, p.pb)}}} = {sig(b1b2 / p.pb, group=False)}"),
         "zmin": (rf"z_{{min}} = \frac{{2h_a^*}}{{\sin^2\alpha}} = \frac{{2\times{f(p.ha_star, 2)}}}"
                  rf"{{\sin^2 {f(p.alpha * DEG, 1)}°}} = {f(limit, 2)} \approx {f(p.z_min, 0)}, \quad x_{{min}} = "
                  rf"h_a^*\frac{{z_{{min}}-z}}{{z_{{min}}}}: \ x_{{min,1}} = {f(p.x_min1, 3)},\ "

@@ -597,6 +597,18 @@ def _moment_tex(m, gives=None, least=None, shown=None) -> tuple[str, float, floa
     return known, total, couples, psum
 
 
+def _mantissa_for(x: float, ok) -> tuple[str, float]:
+    """``x`` (a million or more) as "a\\times10^{n}" with 4 significant digits, more (up to 8)
+    until ``ok(printed value)`` holds; the text and the value it prints."""
+    power = int(math.floor(math.log10(abs(x))))
+    for digits in range(4, 9):
+        mant = f(x / 10.0 ** power, digits - 1)
+        value = float(mant) * 10.0 ** power
+        if ok(value):
+            break
+    return f"{mant}\\times10^{{{power}}}", value
+
+
 def _couple(c: float, extra: int = 0) -> str:
     return f" {'+' if c >= 0 else '-'} {_factor(abs(c), extra)}" if c else ""
 
@@ -634,7 +646,11 @@ def _forces(pos, lang: str) -> list[dict]:
             if need == least:
                 break
             least = need
-        closing = " + ".join(r"\vec " + sym(v.symbol) for v in fg.vectors
+        # a force known to be zero (a tangential component no known force calls for, its
+        # moment equation said so) is no side of the polygon: left out of its vector
+        # equation and its table, as the figure leaves it out (issue 19)
+        sides = [v for v in fg.vectors if not known_zero(v)]
+        closing = " + ".join(r"\vec " + sym(v.symbol) for v in sides
                              if v.kind not in ("total", "internal")) + " = 0"
         # a given force (a weight, an inertia force, the resistance) is listed with its given
         # value, drawn to the nearest 0.5 mm; what is read off the polygon is the rest
@@ -645,7 +661,7 @@ def _forces(pos, lang: str) -> list[dict]:
 
         rows = [[f"${sym(v.symbol)}$", "√" if v.known else "?", _mm(v.length),
                  known(v.symbol, given[v.symbol]) if v.known and v.symbol in given else _numg(v.read)]
-                for v in fg.vectors]
+                for v in sides]
         loads = [[f"${sym(ld.name)}$", link, known(ld.name, abs(ld.value))]
                  for link, lds in fg.loads.items() for ld in lds if abs(ld.value) > 0]
         out.append({"name": "–".join(fg.links), "links": ", ".join(fg.links), "crank": fg.balancing_torque
@@ -657,6 +673,12 @@ def _forces(pos, lang: str) -> list[dict]:
                     "pb": None if fg.balancing_force is None else _numg(_signed_pb(fg)),
                     "pb_abs": None if fg.balancing_force is None else _numg(abs(fg.balancing_force))})
     return out
+
+
+def known_zero(v) -> bool:
+    """A force polygon's vector known before the construction to be zero (a moment equation
+    gave it 0): it has no length, no direction and no side in the polygon."""
+    return v.known and v.read == 0
 
 
 def _force_of(fg, name: str) -> float:
@@ -701,9 +723,14 @@ def _group_moments(fg, mu_l, lang: str, least: dict, shown: dict) -> tuple[list,
         elif m.arm:
             # the printed sum, and the couple (N·m, divided by mu_l to N·mm of the drawing)
             # with the digits that give the printed unknown
-            lhs, total, _c, _psum = _moment_tex(m, None, least, shown)
+            lhs, total, _c, psum = _moment_tex(m, None, least, shown)
             num = _num(total)
             value = float(num) if "times" not in num else total
+            if "times" in num:
+                # a sum of a million or more (N·mm of the drawing) with a power of ten: its
+                # mantissa with the digits that give the printed unknown (1.059 × 10⁶ gave
+                # −12 105.7 for the printed −12 107: 1.059138 × 10⁶)
+                num, value = _mantissa_for(psum, lambda v: _gives(-(v + couples / mu_l) / m.arm, res))
             cpl = (f"{_couple_for(couples, lambda c: _gives(-(value + c / mu_l) / m.arm, res))}"
                    f" / {_scale(mu_l)}") if couples else ""
             if couples and couple is None:

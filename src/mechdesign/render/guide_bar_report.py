@@ -5,7 +5,7 @@ from __future__ import annotations
 import numpy as np
 
 from ..i18n import N_, Msg, tr
-from .fmt import f, fluctuation, gives, sig, time_ratio
+from .fmt import f, fluctuation, gives, product, sig, time_ratio
 from .labels import InContext, pgettext
 
 DEG = 180.0 / np.pi
@@ -177,8 +177,8 @@ def optional_sections(r: dict, lang: str, figures: dict) -> dict:
         from .drive_report import drive_context
 
         fl, p = r["linkage_flywheel"], r["params"]
-        pw = (rf"P_w = \bar M_b\,\omega_2 = {sig(fl.mean_torque, group=False)} \times "
-              rf"{sig(abs(p.crank_omega), group=False)} = {sig(fl.mean_power, group=False)}\ \text{{W}}")
+        pw = (rf"P_w = \bar M_b\,\omega_2 = {product((fl.mean_torque, abs(p.crank_omega)), sig(fl.mean_power, group=False))}"
+              rf" = {sig(fl.mean_power, group=False)}\ \text{{W}}")
         out["drive"] = drive_context(r["drive"], lang, figures, pw)
     return out
 

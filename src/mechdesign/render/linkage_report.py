@@ -16,7 +16,7 @@ from ..i18n import N_, tr
 from . import figures as fig
 from .fmt import e, f, fluctuation, force_unit, md_text, percent, sentences, sig, tex_name, time_ratio
 from .fmt import verdict as fmt_verdict
-from .fmt import factor_for, gives
+from .fmt import factor_for, factors_for, gives, product
 from .label_layout import Label, place
 from .labels import LabelTable, md_names, md_point, mpl_names, mpl_point, point_tex
 
@@ -307,6 +307,21 @@ def _angles_caption(k, lang: str) -> str:
     return _("Transmission and pressure angles against the crank angle")
 
 
+def jf_numbers(fl, dw: str, printed: str) -> str:
+    """The numbers of J_F = 900 ΔW_max/(π² n² [δ]): ΔW_max as ``dw`` prints it, n to 0.01 rpm,
+    [δ] to 0.0001 (0.0333 for 1/30), each with more digits where the printed J_F needs them
+    (900 × 30.18/(π² × 179.27² × 0.0333) gives 2.5716, printed 2.569: [δ] = 0.03333)."""
+    import math
+
+    from ..numbers import significant
+
+    n, delta = f(fl.shaft_speed_rpm, 2), f(fl.fluctuation, 4)
+    w, nn, d = factors_for((fl.max_energy_swing, fl.shaft_speed_rpm, fl.fluctuation),
+                           lambda a, b, c: 900 * a / (math.pi ** 2 * b ** 2 * c), printed,
+                           tuple(significant(t) for t in (dw, n, delta)))
+    return rf"\frac{{900 \times {w}}}{{\pi^2 \times {nn}^2 \times {d}}}"
+
+
 def rim_inertia_factor(inertia: float, rim) -> str:
     """J_F as the factor of the rim mass m = 4 J_F/D², with the digits that give the printed
     mass (4 × 204.13/1.000² = 816.52)."""
@@ -453,7 +468,7 @@ def linkage_context(model, k, f_, fly, v, figures: dict, lang: str,
         "mb_min": sig(f_.torque_min, ref=f_.peak_torque),
         "mb_mean": sig(f_.mean_torque), "mb_peak": sig(f_.peak_torque),
         "power": sig(f_.mean_power),
-        "eq_power": (rf"P = \bar M_b\,\omega = {sig(f_.mean_torque, group=False)} \times {sig(omega, group=False)} = "
+        "eq_power": (rf"P = \bar M_b\,\omega = {product((f_.mean_torque, omega), sig(f_.mean_power, group=False))} = "
                      rf"{sig(f_.mean_power, group=False)}\ \text{{W}}"),
         "has_forces": bool(model.bodies or model.resistances),
         "fly": None,
@@ -463,9 +478,9 @@ def linkage_context(model, k, f_, fly, v, figures: dict, lang: str,
             "n": f(fly.shaft_speed_rpm, 2), "dw": sig(fly.max_energy_swing),
             "at_min": f(fly.phase_at_min * DEG, 1), "at_max": f(fly.phase_at_max * DEG, 1),
             "delta": fluctuation(fly.fluctuation), "jf": sig(fly.inertia),
-            "eq": (rf"J_F = \frac{{900\,\Delta W_{{max}}}}{{\pi^2 n^2 [\delta]}} = \frac{{900 \times "
-                   rf"{sig(fly.max_energy_swing, group=False)}}}{{\pi^2 \times {f(fly.shaft_speed_rpm, 2)}^2 \times "
-                   rf"{f(fly.fluctuation, 4)}}} = {sig(fly.inertia, group=False)}\ \text{{kg·m}}^2"),
+            "eq": (rf"J_F = \frac{{900\,\Delta W_{{max}}}}{{\pi^2 n^2 [\delta]}} = "
+                   rf"{jf_numbers(fly, sig(fly.max_energy_swing, group=False), sig(fly.inertia, group=False))}"
+                   rf" = {sig(fly.inertia, group=False)}\ \text{{kg·m}}^2"),
             "rim": None, "real": realised_flywheel(fly, flywheel_realised_rpm, _),
         }
         if fly.rim is not None:

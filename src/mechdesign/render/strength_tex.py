@@ -106,8 +106,12 @@ def _gear_contact(c: Check) -> str:
     zb = i.get("Zbeta", 1.0) != 1.0
     sym = r"\sqrt{\frac{2 K T_1}{b d_1^2} \times \frac{u+1}{u}} Z_H Z_E Z_\varepsilon" + (r" Z_\beta" if zb else "")
     factors = [i["ZH"], i["ZE"] * SQRT_MPA, i["Zeps"]] + ([i["Zbeta"]] if zb else [])
-    numbers = (rf"\sqrt{{\frac{{2 \times {_prod(i['K'], i['T1'] * N_MM)}}}{{{num(i['b'] * MM)} \times "
-               rf"{num(i['d1'] * MM)}^2}} \times \frac{{{num(i['u'])}+1}}{{{num(i['u'])}}}}} \times {_prod(*factors)}")
+    z = math.prod(_float(num(x)) for x in factors)
+    K, b, u = (_float(num(x)) for x in (i["K"], i["b"] * MM, i["u"]))
+    t1, d1 = _giving((i["T1"] * N_MM, i["d1"] * MM),
+                     lambda t, d: math.sqrt(2 * K * t / (b * d * d) * (u + 1) / u) * z, _value(c))
+    numbers = (rf"\sqrt{{\frac{{2 \times {num(i['K'])} \times {t1}}}{{{num(i['b'] * MM)} \times "
+               rf"{d1}^2}} \times \frac{{{num(i['u'])}+1}}{{{num(i['u'])}}}}} \times {_prod(*factors)}")
     return rf"\sigma_H = {sym} = {numbers}" + _tail(c, r"[\sigma_H]")
 
 
@@ -116,7 +120,14 @@ def _gear_bending(c: Check) -> str:
     yb = i.get("Ybeta", 1.0) != 1.0
     sym = r"\frac{2 K T_1 Y_{Fa} Y_{Sa} Y_\varepsilon" + (r" Y_\beta" if yb else "") + "}{b d_1 m}"
     top = [i["K"], i["T1"] * N_MM, i["YFa"], i["YSa"], i["Yeps"]] + ([i["Ybeta"]] if yb else [])
-    numbers = rf"\frac{{2 \times {_prod(*top)}}}{{{_prod(i['b'] * MM, i['d1'] * MM, i['m'] * MM)}}}"
+    rest = math.prod(_float(num(x)) for k, x in enumerate(top) if k != 1)
+    b, m = _float(num(i["b"] * MM)), _float(num(i["m"] * MM))
+    t1, d1 = _giving((i["T1"] * N_MM, i["d1"] * MM), lambda t, d: 2 * rest * t / (b * d * m), _value(c))
+    shown = [num(x) for x in top]
+    shown[1] = t1
+    top_txt = r" \times ".join(shown)
+    numbers = (rf"\frac{{2 \times {top_txt}}}"
+               rf"{{{num(i['b'] * MM)} \times {d1} \times {num(i['m'] * MM)}}}")
     return rf"\sigma_F = {sym} = {numbers}" + _tail(c, r"[\sigma_F]")
 
 
@@ -151,7 +162,10 @@ def _shaft_bending(c: Check) -> str:
     # the section's bending moment; a rounding residue of zero beside the torque (an
     # overhung end, where M is 0: "7.105 × 10⁻¹²") is written 0
     M = i["M"] if abs(i["M"]) > 1e-9 * abs(i["alpha"] * i["T"]) else 0.0
-    numbers = (rf"\frac{{\sqrt{{{_sq(num(M * N_MM))}^2 + ({num(i['alpha'])} \times {num(i['T'] * N_MM)})^2}}}}"
+    a, d = _float(num(i["alpha"])), _float(num(i["d"] * MM))
+    m_txt, t_txt = _giving((M * N_MM, i["T"] * N_MM),
+                           lambda m, t: math.sqrt(m * m + (a * t) ** 2) / (0.1 * d ** 3), _value(c))
+    numbers = (rf"\frac{{\sqrt{{{_sq(m_txt)}^2 + ({num(i['alpha'])} \times {t_txt})^2}}}}"
                rf"{{0.1 \times {num(i['d'] * MM)}^3}}")
     return rf"\sigma_{{ca}} = \frac{{\sqrt{{M^2 + (\alpha T)^2}}}}{{0.1 d^3}} = {numbers}" + _tail(c, r"[\sigma_{-1b}]")
 
@@ -170,29 +184,70 @@ def _shaft_min_diameter(c: Check) -> str:
     return (rf"d_{{\text{{min}}}} = {sym} = {numbers} = {_allowable(c)}\ {u}, \quad d = {_value(c)}\ {u} {rel} d_{{\text{{min}}}}")
 
 
+def _giving(xs, fn, printed: str, most: int = 3) -> list[str]:
+    """The numbers ``xs`` of a formula as :func:`num` writes them, with the fewest more
+    significant digits (up to ``most`` each, fewest in all first) that make ``fn(*printed
+    numbers)`` give ``printed`` to its last digit (a displayed chain computes from what it
+    prints: 15200/1109 = 13.706, printed 13.70 — P_0 = 1109.5)."""
+    from itertools import product
+
+    from ..numbers import gives
+
+    mantissa, _, power = printed.partition("\\times10^{")
+    power = int(power.rstrip("}") or 0)
+    for total in range(most * len(xs) + 1):
+        for extras in product(range(most + 1), repeat=len(xs)):
+            if sum(extras) != total:
+                continue
+            texts = [num(x, 4 + e) for x, e in zip(xs, extras)]
+            if any("(" in t for t in texts):
+                return [num(x) for x in xs]
+            if gives(fn(*(_float(t) for t in texts)) / 10.0 ** power, mantissa):
+                return texts
+    return [num(x) for x in xs]
+
+
+def _float(text: str) -> float:
+    """The value of a number :func:`num` wrote (``1.1\\times10^{5}`` too)."""
+    mant, _, power = text.partition("\\times10^{")
+    return float(mant) * 10.0 ** int(power.rstrip("}") or 0)
+
+
 def _bearing_life(c: Check) -> str:
     i = c.inputs
     eps = r"\frac{10}{3}" if abs(i["epsilon"] - 10 / 3) < 1e-9 else num(i["epsilon"])
+    e_val = 10 / 3 if abs(i["epsilon"] - 10 / 3) < 1e-9 else float(num(i["epsilon"]))
     ft = i.get("ft", 1.0)
-    ratio = rf"\frac{{{_prod(ft, i['C'])}}}{{{num(i['P'])}}}"
-    numbers = rf"\frac{{10^6}}{{60 \times {num(i['n_rpm'])}}} \times ({ratio})^{{{eps}}}"
+    value = _value(c)
+    # n and P with the digits the life was computed from (a life of six integer digits, to the
+    # hour, takes them to seven significant digits: 60 × 50.23355, 13 043.98)
+    n_txt, p_txt = _giving((i["n_rpm"], i["P"]), lambda n, p: 1e6 / (60 * n) * (
+        _float(num(ft)) * _float(num(i["C"])) / p) ** e_val, value)
+    ratio = rf"\frac{{{_prod(ft, i['C'])}}}{{{p_txt}}}"
+    numbers = rf"\frac{{10^6}}{{60 \times {n_txt}}} \times ({ratio})^{{{eps}}}"
     return (rf"L_{{10h}} = \frac{{10^6}}{{60 n}} (\frac{{f_t C}}{{P}})^{{\varepsilon}} = {numbers}"
             + _tail(c, r"L_h'"))
 
 
 def _key_crushing(c: Check) -> str:
     i = c.inputs
+    kld = math.prod(_float(num(x)) for x in (0.5 * i["h"] * MM, i["l"] * MM, i["d"] * MM))
+    keys = 1.5 if i.get("keys") == 2 else 1.0
+    t_txt = _giving((i["T"] * N_MM,), lambda t: 2 * t / (keys * kld), _value(c))[0]
     if i.get("keys") == 2:      # two keys at 180°, counted as 1.5 keys
-        numbers = (rf"\frac{{2 \times {num(i['T'] * N_MM)}}}{{1.5 \times "
+        numbers = (rf"\frac{{2 \times {t_txt}}}{{1.5 \times "
                    rf"{_prod(0.5 * i['h'] * MM, i['l'] * MM, i['d'] * MM)}}}")
         return rf"\sigma_p = \frac{{2 T}}{{1.5 k l d}} = {numbers}" + _tail(c, r"[\sigma_p]")
-    numbers = (rf"\frac{{2 \times {num(i['T'] * N_MM)}}}{{{_prod(0.5 * i['h'] * MM, i['l'] * MM, i['d'] * MM)}}}")
+    numbers = (rf"\frac{{2 \times {t_txt}}}{{{_prod(0.5 * i['h'] * MM, i['l'] * MM, i['d'] * MM)}}}")
     return rf"\sigma_p = \frac{{2 T}}{{k l d}} = {numbers}" + _tail(c, r"[\sigma_p]")
 
 
 def _bearing_static(c: Check) -> str:
     i = c.inputs
-    return (rf"\frac{{C_0}}{{P_0}} = \frac{{{num(i['C0'])}}}{{{num(i['P0'])}}}" + _tail(c, r"S_0"))
+    c0, p0 = _giving((i["C0"], i["P0"]), lambda a, b: a / b, _value(c))
+    return (rf"\frac{{C_0}}{{P_0}} = \frac{{{c0}}}{{{p0}}}" + _tail(c, r"S_0"))
+
+
 def _rel(check: Check) -> str:
     return _relation(check)
 

@@ -34,7 +34,7 @@ from ..core.fields import q
 from ..data import catalogues as cat
 from ..core.errors import Join
 from ..i18n import N_, Msg
-from ..numbers import grouped_digits, sig
+from ..numbers import factors_for, grouped_digits, sig
 from . import drive_elements as de
 from .findings import Named, encode
 
@@ -736,6 +736,12 @@ def _sig(x: float, digits: int) -> str:
     return sig(x, digits, group=False)
 
 
+def _peak_times(peak_factor: float, torque: float, printed: str) -> str:
+    """"peak/mean × T" with the digits that give the printed peak torque (20.01 × 640.1 gave
+    12 808, printed 12 807: a chain's printed factors give its printed result)."""
+    return " \\times ".join(factors_for((peak_factor, torque), lambda a, b: a * b, printed))
+
+
 def _steps(sh, mat, a0, d_min, dims, shoulder, T, peak, peak_factor, lf, ev, span, dp):
     """The design steps of one shaft, each rule with its formula and numbers (messages as data)."""
     d_end, dj, ds = dims
@@ -752,7 +758,7 @@ def _steps(sh, mat, a0, d_min, dims, shoulder, T, peak, peak_factor, lf, ev, spa
                              "use {torque} N·m (peak/mean); the bearing life, a fatigue quantity, takes the "
                              "cycle's equivalent load (cube-mean torque = {lf} × the mean), the static strength "
                              "the peak"),
-                          torque=f"$T = {_sig(peak_factor, 4)} \\times {_sig(sh.torque, 4)} = {_sig(T, 4)}$",
+                          torque=f"$T = {_peak_times(peak_factor, sh.torque, _sig(T, 4))} = {_sig(T, 4)}$",
                           lf=_sig(lf, 3)))
     else:
         out.append(_step(N_("design torque T = 9549 P/n = {T} N·m (bearing life: the same load × $f_p$ = {fp})"),

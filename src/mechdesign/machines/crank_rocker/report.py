@@ -12,6 +12,7 @@ from ...render.figures import figure
 from ...render.fmt import e as fe
 from ...render.fmt import residue, verdict
 from ...render.fmt import f, md_meta, md_text, mpl_text, sig, time_ratio
+from ...numbers import factors_for, significant
 from ...render.labels import LabelTable, mpl_label, mpl_point
 from ...i18n import N_, Msg, tr
 
@@ -281,11 +282,17 @@ def _gamma_eqs(d) -> tuple[str, str]:
     a, b, c, l4 = (x * MM for x in (d.crank, d.coupler, d.rocker, d.frame))
     c1 = (b * b + c * c - (l4 - a) ** 2) / (2 * b * c)
     c2 = (b * b + c * c - (l4 + a) ** 2) / (2 * b * c)
-    e1 = (rf"\cos\delta' = \frac{{{f(b, 2)}^2 + {f(c, 2)}^2 - ({f(l4, 2)} - {f(a, 2)})^2}}{{2 \times {f(b, 2)} "
-          rf"\times {f(c, 2)}}} = {_cos(c1)},\quad \delta' = {f(np.degrees(np.arccos(c1)), 2)}^\circ")
-    e2 = (rf"\cos\delta'' = \frac{{{f(b, 2)}^2 + {f(c, 2)}^2 - ({f(l4, 2)} + {f(a, 2)})^2}}{{2 \times {f(b, 2)} "
-          rf"\times {f(c, 2)}}} = {_cos(c2)},\quad \delta'' = {f(np.degrees(np.arccos(c2)), 2)}^\circ")
-    return e1, e2
+    out = []
+    for sign, cos, name in ((-1, c1, "'"), (1, c2, "''")):
+        # the lengths with the digits that give the printed cosine (a chain computes from
+        # what it prints: 42.40, 50.00, 53.76 + 16.32 gave −0.14468, printed −0.1448)
+        bb, cc, ll, aa = factors_for(
+            (b, c, l4, a), lambda b_, c_, l_, a_, s=sign: (b_ * b_ + c_ * c_ - (l_ + s * a_) ** 2) / (2 * b_ * c_),
+            _cos(cos), tuple(significant(f(x, 2)) for x in (b, c, l4, a)))
+        op = "-" if sign < 0 else "+"
+        out.append(rf"\cos\delta{name} = \frac{{{bb}^2 + {cc}^2 - ({ll} {op} {aa})^2}}{{2 \times {bb} "
+                   rf"\times {cc}}} = {_cos(cos)},\quad \delta{name} = {f(np.degrees(np.arccos(cos)), 2)}^\circ")
+    return out[0], out[1]
 
 
 def _cosines(d) -> tuple[float, float]:
@@ -479,6 +486,12 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
         sl, ss = r["slider"], ver.slider
         sc = sl.construction
         e_mm, h_mm = sl.offset * MM, sl.stroke * MM
+        # x_A with R and R cos θ carrying the digits that give the printed x_A (e is given)
+        xa = f(-np.sqrt(sc.radius ** 2 - (sc.radius * np.cos(sl.theta) - sl.offset) ** 2) * MM, 2)
+        xa_r, xa_c = factors_for(
+            (sc.radius * MM, sc.radius * np.cos(sl.theta) * MM),
+            lambda r_, c_: -np.sqrt(r_ ** 2 - (c_ - float(f(e_mm, 2))) ** 2), xa,
+            tuple(significant(_mm(x)) for x in (sc.radius, sc.radius * np.cos(sl.theta))))
         slider = {
             "K": time_ratio(sl.K), "theta": _deg(sl.theta), "H": f(h_mm, 2), "e": f(e_mm, 2),
             "R": _mm(sc.radius), "ac1": _mm(abs(sc.c1)), "ac2": _mm(abs(sc.c2)),
@@ -487,9 +500,8 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
                          rf"\frac{{{time_ratio(sl.K)} - 1}}{{{time_ratio(sl.K)} + 1}} = {_deg(sl.theta)}^\circ"),
             "eq_R": (rf"R = \frac{{H}}{{2\sin\theta}} = \frac{{{f(h_mm, 2)}}}{{2\sin {_deg(sl.theta)}^\circ}}"
                      rf" = {_mm(sc.radius)}\ \text{{mm}}"),
-            "eq_x": (rf"x_A = -\sqrt{{R^2 - (R\cos\theta - e)^2}} = -\sqrt{{{_mm(sc.radius)}^2 - "
-                     rf"({_mm(sc.radius * np.cos(sl.theta))} - {f(e_mm, 2)})^2}} = "
-                     rf"{f(-np.sqrt(sc.radius ** 2 - (sc.radius * np.cos(sl.theta) - sl.offset) ** 2) * MM, 2)}"
+            "eq_x": (rf"x_A = -\sqrt{{R^2 - (R\cos\theta - e)^2}} = -\sqrt{{{xa_r}^2 - "
+                     rf"({xa_c} - {f(e_mm, 2)})^2}} = {xa}"
                      r"\ \text{mm}"),
             "eq_limit": (rf"e < H\cot\theta = {f(h_mm / np.tan(sl.theta), 2)}\ \text{{mm}}"),
             "eq_a": (rf"a = \frac{{\overline{{AC_2}} - \overline{{AC_1}}}}{{2}} = \frac{{{_mm(abs(sc.c2))} - "

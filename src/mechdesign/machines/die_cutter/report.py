@@ -14,10 +14,10 @@ import numpy as np
 from ...i18n import N_, tr
 from ...render import figures as fig
 from ...render.fmt import e, f, length, md_meta, md_text, sig, fluctuation, factor_for, gives
-from ...render.fmt import number, residue, time_ratio, verdict
+from ...render.fmt import number, product, residue, time_ratio, verdict
 from ...render.labels import pgettext, translated
 from ...render.fmt import sentences
-from ...render.linkage_report import realised_flywheel, rim_inertia_factor
+from ...render.linkage_report import jf_numbers, realised_flywheel, rim_inertia_factor
 from ...stages.drive import shaft_numeral
 
 DEG = 180.0 / np.pi
@@ -372,7 +372,7 @@ def _amplification(r, p, _) -> dict:
                  rf"{f(p.pressing_travel * MM, 2)}\ \text{{mm}} = {f(amp.cut_work, 1)}\ \text{{J}}"),
         "power": (rf"\bar P = \frac{{W_c}}{{T}} = \frac{{{f(amp.cut_work, 1)}}}{{{f(60 / p.shaft_rpm, 3)}}}"
                   rf" = {f(amp.cut_work * p.shaft_rpm / 60, 1)}\ \text{{W}},\qquad \bar M_b\,\omega = "
-                  rf"{sig(f_.mean_torque, group=False)} \times {sig(abs(p.crank_omega), group=False)} = {f(f_.mean_power, 1)}\ \text{{W}}"),
+                  rf"{product((f_.mean_torque, abs(p.crank_omega)), f(f_.mean_power, 1))} = {f(f_.mean_power, 1)}\ \text{{W}}"),
         "required": (rf"M_{{req}} = F_c\,\frac{{v_D}}{{\omega}} = {f(p.cutting_force / 1e3, 1)}\ "
                      rf"\text{{kN}} \times {rows[0][2]}\ \text{{mm}} = {f(p.cutting_force * u0, 0)}"
                      rf"\ \text{{N·m}}"),
@@ -441,9 +441,8 @@ def _flywheel(r, p, b, _) -> dict:
     eq = {
         "md": (rf"M_d = \frac{{1}}{{2\pi}}\oint M_b\,d\varphi = {sig(fl.mean_torque, group=False)}\ \text{{N·m}}"
                rf"\ (\text{{{crank_shaft}}})"),
-        "jf": (rf"J_F = \frac{{900\,\Delta W_{{max}}}}{{\pi^2 n^2 [\delta]}} = \frac{{900 \times "
-               rf"{f(fl.max_energy_swing, 1)}}}{{\pi^2 \times {f(fl.shaft_speed_rpm, 2)}^2 \times "
-               rf"{f(fl.fluctuation, 4)}}} = {f(fl.inertia, 3)}\ \text{{kg·m}}^2"),
+        "jf": (rf"J_F = \frac{{900\,\Delta W_{{max}}}}{{\pi^2 n^2 [\delta]}} = "
+               rf"{jf_numbers(fl, f(fl.max_energy_swing, 1), f(fl.inertia, 3))} = {f(fl.inertia, 3)}\ \text{{kg·m}}^2"),
         "crank": (rf"J_F' = J_F\,i^2 = {f(fl.inertia, 3)} \times {factor_for(fl.speed_ratio, fl_ratio_ok)}^2 = "
                   rf"{f(fl.inertia_on_crank, 1)}\ \text{{kg·m}}^2"),
         "mass": (rf"m = \frac{{4 J_F}}{{D^2}} = \frac{{4 \times {j_mass}}}"
@@ -637,7 +636,7 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
     cycle = cycle_context(cyc.diagram, lang, {"linear": figures["cycle_linear"],
                                              "circular": figures["cycle_circular"]},
                           cyc.checks, level=2, label="dc-cycle")
-    pw = (rf"P_w = \bar M_b\,\omega = {sig(f_.mean_torque, group=False)} \times {sig(abs(p.crank_omega), group=False)} = "
+    pw = (rf"P_w = \bar M_b\,\omega = {product((f_.mean_torque, abs(p.crank_omega)), f(f_.mean_power, 1))} = "
           rf"{f(f_.mean_power, 1)}\ \text{{W}}")
     drive = drive_context(r["drive"], lang, figures, pw)
     verify = _verify_rows(r, p, _)

@@ -9,7 +9,7 @@ import numpy as np
 from ...i18n import N_, tr
 from ...render import figures as fig
 from ...render.fmt import e, f, md_meta, md_text, sig, time_ratio
-from ...render.fmt import residue, verdict
+from ...render.fmt import product, residue, verdict
 from ...render.labels import mpl_names, mpl_point
 
 DEG = 180.0 / np.pi
@@ -276,8 +276,8 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
         "hand": (rf"\bar P = \frac{{(F_{{r1}} + F_{{r2}})\,H\,n}}{{60}} = \frac{{({f(pp.working_force, 0)} + "
                  rf"{f(pp.return_force, 0)}) \times {f(pp.stroke, 3)} \times {f(pp.crank_speed_rpm, 0)}}}{{60}}"
                  rf" = {sig(chk.hand_power, group=False)}\ \text{{W}}"),
-        "mean": (rf"\bar P = \bar M_b\,\omega = {sig(chk.mean_torque, 4, group=False)} \times "
-                 rf"{sig(abs(pp.crank_omega), 4, group=False)} = {sig(chk.mean_power, 4, group=False)}\ \text{{W}}"),
+        "mean": (rf"\bar P = \bar M_b\,\omega = {product((chk.mean_torque, abs(pp.crank_omega)), sig(chk.mean_power, 4, group=False))}"
+                 rf" = {sig(chk.mean_power, 4, group=False)}\ \text{{W}}"),
     }
     # the rule's digits (0.01 mm, 0.01°) as the equations write them (d = 541.00 mm, issue 19)
     syn_rows = [
@@ -367,8 +367,8 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
     if r.get("drive") is not None:
         from ...render.drive_report import drive_context
 
-        pw = (rf"P_w = \bar M_b\,\omega = {sig(chk.mean_torque, 4, group=False)} \times "
-              rf"{sig(abs(pp.crank_omega), 4, group=False)} = {sig(chk.mean_power, 4, group=False)}\ \text{{W}}")
+        pw = (rf"P_w = \bar M_b\,\omega = {product((chk.mean_torque, abs(pp.crank_omega)), sig(chk.mean_power, 4, group=False))}"
+              rf" = {sig(chk.mean_power, 4, group=False)}\ \text{{W}}")
         drive = drive_context(r["drive"], lang, figures, pw)
         drive["peak"] = None        # no flywheel: the note is in this report's own text
     tol = 1e-6
