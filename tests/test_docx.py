@@ -717,8 +717,13 @@ _SIGNED_BY_HYPHEN = re.compile(r"(?:^|[\s(\[（=＝<>≤≥≈:：,，;；、~�
 
 
 def _hyphen_signed_numbers(document_xml: str) -> list[str]:
-    """The paragraphs whose text (runs joined) holds a number signed by a hyphen-minus."""
-    return [t for t in _paragraph_texts(document_xml) if _SIGNED_BY_HYPHEN.search(t)]
+    """The paragraphs whose text (runs joined) holds a number signed by a hyphen-minus; code
+    (a SourceCode paragraph, a run of inline code or of a highlighted token) is not read."""
+    text = re.sub(r'<w:p><w:pPr><w:pStyle w:val="SourceCode" />.*?</w:p>', "", document_xml,
+                  flags=re.DOTALL)
+    text = re.sub(r'<w:r><w:rPr><w:rStyle w:val="(?:VerbatimChar|\w+Tok)" />.*?</w:r>', "", text,
+                  flags=re.DOTALL)
+    return [t for t in _paragraph_texts(text) if _SIGNED_BY_HYPHEN.search(t)]
 
 
 def test_negative_numbers_take_the_minus_sign_and_designations_keep_their_hyphen(tmp_path):
@@ -732,7 +737,8 @@ def test_negative_numbers_take_the_minus_sign_and_designations_keep_their_hyphen
         "电动机 Y90S-6，轴承 6204-2RS，GB/T 276-1994，日期 2026-11-22，表 8-11，3-4-5 多项式，"
         "**Y132S**-8，范围 20–300 mm，x-1。\n\n"
         "$$ M = -2468 \\times 0.5 $$\n\n"
-        "| 位置 | $M_b$/N·m | 说明 |\n|:--|--:|:--|\n| 1 | -6.946 | 见表 15-3 |\n| 2 | -0.3215 | -- |\n\n: 力矩\n"))
+        "| 位置 | $M_b$/N·m | 说明 |\n|:--|--:|:--|\n| 1 | -6.946 | 见表 15-3 |\n| 2 | -0.3215 | -- |\n\n: 力矩\n\n"
+        "程序中 `y = -1` 不变：\n\n```python\nYO3 = -0.1\nx = [-2, 3]\n```\n"))
     out = tmp_path / "report.docx"
     render_docx(md, out, METADATA, TEMPLATES)
     document = _part(out, "word/document.xml")
@@ -744,6 +750,10 @@ def test_negative_numbers_take_the_minus_sign_and_designations_keep_their_hyphen
     for kept in ("Y90S-6", "6204-2RS", "GB/T 276-1994", "2026-11-22", "8-11", "3-4-5", "x-1", "15-3",
                  "20–300", "Y132S-8"):         # Y132S bold: its "-8" starts the next run
         assert kept in texts, kept
+    # code, inline or a listing, is left as written
+    code = "".join(t for p, t in _runs(document) if "Tok" in p or "VerbatimChar" in p)
+    assert "y = -1" in code and "\u2212" not in code
+    assert "".join(_paragraph_texts(document)).count("-0.1") == 1
     # the formula keeps pandoc's own minus (U+2212), untouched
     assert "<m:t>\u2212</m:t>" in document
     # in a run hinted eastAsia, the minus sign stands in a run of its own in the Latin font
@@ -758,7 +768,7 @@ def test_tables_are_centred_and_a_formula_after_a_table_stays_a_table_of_its_own
     numbered formula right after one looked right of centre. The formula's table
     (templates/docx-numbering.lua) touched the data table, and Word shows touching tables
     as one, under the first one's properties. Every table is centred; a formula's table is
-    never right after a table of another style (a 1 pt paragraph between), and its
+    never right after a table of another style (a 6 pt paragraph between), and its
     properties are those of a formula after text."""
     md = _write_sample(tmp_path, (
         "# 表\n\n由下式：\n\n$$ a = b + c $$\n\n"

@@ -267,7 +267,8 @@ def latin_marks_in_latin_font(xml: str) -> str:
 #: "6204-2RS", "GB/T 14689-2008", "2026-11-22", "表 8-11", "exercises 7-1"). typst draws the
 #: same text of the PDF so: a "-" that starts a word before a digit is its minus shorthand.
 _BEFORE_MINUS = set("([{（【=＝<>≤≥≈:：,，;；、~～")
-_TEXT_TOKEN = re.compile(r"<w:p(?=[\s>/])[^>]*>|<w:(?:tab|br|cr)\b[^>]*/>"
+_TEXT_TOKEN = re.compile(r"<w:p(?=[\s>/])[^>]*>|<w:r>|<w:(?:tab|br|cr)\b[^>]*/>"
+                         r'|<w:pStyle w:val="SourceCode"|<w:rStyle w:val="(?:VerbatimChar|[A-Za-z]+Tok)"'
                          r"|<(?P<ns>[wm]):t(?:\s[^>]*)?>(?P<text>[^<]*)</(?P=ns):t>")
 
 
@@ -275,19 +276,29 @@ def minus_signs(xml: str) -> str:
     """Every hyphen-minus that signs a number in the text of ``word/document.xml`` ("-6.946"
     in a table cell, "ω₂ = -8.38 rad/s") made the minus sign U+2212, as the PDF prints it
     (review36: 160 such hyphens in the shaper's zh Word file); the character before it,
-    across the runs of its paragraph, decides (:data:`_BEFORE_MINUS`). Formulas (m:t) are
-    left as pandoc wrote them (their minus is U+2212 already) and only passed over."""
-    prev = ""
+    across the runs of its paragraph, decides (:data:`_BEFORE_MINUS`). Formulas (m:t, whose
+    minus pandoc writes as U+2212) and code (a SourceCode paragraph, a run of inline code or
+    of a highlighted token) are only passed over."""
+    prev, code_paragraph, code_run = "", False, False
 
     def one(m: re.Match) -> str:
-        nonlocal prev
-        text = m.group("text")
-        if text is None:                      # a paragraph's start, a tab or a line break
-            prev = "" if m.group(0).startswith("<w:p") else " "
-            return m.group(0)
-        if m.group("ns") == "m" or "-" not in text:
+        nonlocal prev, code_paragraph, code_run
+        text, tag = m.group("text"), m.group(0)
+        if text is None:
+            if tag.startswith("<w:pStyle"):
+                code_paragraph = True
+            elif tag.startswith("<w:rStyle"):
+                code_run = True
+            elif tag == "<w:r>":
+                code_run = False
+            elif tag.startswith("<w:p"):         # a paragraph's start
+                prev, code_paragraph, code_run = "", False, False
+            else:                                # a tab or a line break
+                prev = " "
+            return tag
+        if m.group("ns") == "m" or code_paragraph or code_run or "-" not in text:
             prev = text[-1:] or prev
-            return m.group(0)
+            return tag
         out = []
         for k, ch in enumerate(text):
             before = out[-1] if out else prev
@@ -297,7 +308,7 @@ def minus_signs(xml: str) -> str:
             out.append(ch)
         prev = out[-1] if out else prev
         start, end = m.span("text")
-        return m.group(0)[:start - m.start()] + "".join(out) + m.group(0)[end - m.start():]
+        return tag[:start - m.start()] + "".join(out) + tag[end - m.start():]
     return _TEXT_TOKEN.sub(one, xml)
 
 

@@ -20,7 +20,7 @@
     A numbered display formula is a table of its own (templates/docx-numbering.lua); right
     after a data table the two tables touch, and Word shows touching tables as one table
     under the first one's table properties (pandoc issue 4315, python-docx issue 1072).
-    Touching tables of different styles are kept apart by an empty paragraph of 1 pt.
+    Touching tables of different styles are kept apart by an empty paragraph of 6 pt.
     (LibreOffice 7 kept them apart and centred the formula on the text block: the formula
     "right of centre" of review36, shaper zh (12)–(15), was right of the left-set table.)
 """
@@ -137,8 +137,9 @@ def centre_tables(document_xml: str) -> str:
     return _TBL_PR.sub(centre, document_xml)
 
 
-#: An empty paragraph of 1 pt (a line of exactly 1 pt, no spacing) between two tables.
-TABLE_SEPARATOR = ('<w:p><w:pPr><w:spacing w:before="0" w:after="0" w:line="20" w:lineRule="exact" />'
+#: An empty paragraph of 6 pt (a line of exactly 6 pt, no spacing, a 1 pt mark) between two
+#: tables: the formula stands a little below the table's bottom rule, as below text.
+TABLE_SEPARATOR = ('<w:p><w:pPr><w:spacing w:before="0" w:after="0" w:line="120" w:lineRule="exact" />'
                    '<w:rPr><w:sz w:val="2" /><w:szCs w:val="2" /></w:rPr></w:pPr></w:p>')
 _STYLE = re.compile(r'<w:tbl><w:tblPr><w:tblStyle w:val="([^"]*)"')
 # a table's end, then only bookmarks and white space, then the next table
@@ -146,7 +147,7 @@ _TOUCHING = re.compile(r"</w:tbl>((?:\s|<w:bookmark(?:Start|End)\b[^>]*/>)*)(?=<
 
 
 def separate_tables(document_xml: str) -> str:
-    """An empty paragraph of 1 pt (:data:`TABLE_SEPARATOR`) between two touching tables of
+    """An empty paragraph of 6 pt (:data:`TABLE_SEPARATOR`) between two touching tables of
     different styles (a data table and the numbered formula after it), so that Word does
     not join them into one table; touching formulas (one table style) stay as they are."""
     def style_at(end: int) -> str:
