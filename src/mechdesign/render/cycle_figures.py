@@ -121,9 +121,13 @@ def circular(path: Path, lang: str, actuators, origin: float = 0.0, states=None)
                 arc = np.radians(span) * rm
                 if arc >= 0.55:
                     rot = (np.degrees(mid) % 180.0) - 90.0     # along the ring, never upside down
+                    # on a ground of its phase's colour: the origin's dash-dot radius, drawn
+                    # below the texts, does not run through a name at φ = 0
                     names.append(ax.text(rm * np.cos(mid), rm * np.sin(mid), label, ha="center",
                                          va="center", fontsize=6.5, rotation=rot,
-                                         rotation_mode="anchor"))
+                                         rotation_mode="anchor", zorder=4,
+                                         bbox=dict(boxstyle="square,pad=0.3", lw=0,
+                                                   fc=COLOURS.get(state, "#DDD"))))
         for deg in range(0, 360, 30):
             t = np.radians(90.0 - deg)
             ax.plot([outer * np.cos(t), (outer + 0.12) * np.cos(t)],
