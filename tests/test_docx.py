@@ -724,3 +724,94 @@ def test_a_list_of_formulas_in_one_inline_formula_may_break_between_its_items(tm
     assert para.count('<w:t xml:space="preserve">, </w:t>') == 2
     display = re.search(r"<m:oMathPara>.*?</m:oMathPara>", document, flags=re.DOTALL).group(0)
     assert display.count("<m:oMath>") == 1 and "<m:t>,</m:t>" in display
+
+
+# a hyphen-minus before a digit at a paragraph's (a cell's) start or after white space, an
+# opening bracket, a relation or a separator: a number's sign, printed "−" in the PDF
+_SIGNED_BY_HYPHEN = re.compile(r"(?:^|[\s(\[（=＝<>≤≥≈:：,，;；、~～])-\d")
+
+
+def _hyphen_signed_numbers(document_xml: str) -> list[str]:
+    """The paragraphs whose text (runs joined) holds a number signed by a hyphen-minus; code
+    (a SourceCode paragraph, a run of inline code or of a highlighted token) is not read."""
+    text = re.sub(r'<w:p><w:pPr><w:pStyle w:val="SourceCode" />.*?</w:p>', "", document_xml,
+                  flags=re.DOTALL)
+    text = re.sub(r'<w:r><w:rPr><w:rStyle w:val="(?:VerbatimChar|\w+Tok)" />.*?</w:r>', "", text,
+                  flags=re.DOTALL)
+    return [t for t in _paragraph_texts(text) if _SIGNED_BY_HYPHEN.search(t)]
+
+
+def test_negative_numbers_take_the_minus_sign_and_designations_keep_their_hyphen(tmp_path):
+    """Review36 Top 14: the Word file printed negative numbers with the hyphen-minus of the
+    Markdown ("-6.946" in a cell, "ω₂ = -8.38 rad/s"), where the PDF has the minus sign
+    U+2212. A hyphen that starts a number becomes "−", also across runs; one inside a word,
+    a designation, a standard's number, a date or a range stays ("Y90S-6", "6204-2RS",
+    "GB/T 276-1994", "2026-11-22", "表 8-11", "3-4-5"), and so does a formula's text."""
+    md = _write_sample(tmp_path, (
+        "# 数值\n\n角速度 $\\omega_2$ = -8.38 rad/s，最小 -84.70 N·m，坐标 (-190.54, 3.0)；"
+        "电动机 Y90S-6，轴承 6204-2RS，GB/T 276-1994，日期 2026-11-22，表 8-11，3-4-5 多项式，"
+        "**Y132S**-8，范围 20–300 mm，x-1。\n\n"
+        "$$ M = -2468 \\times 0.5 $$\n\n"
+        "| 位置 | $M_b$/N·m | 说明 |\n|:--|--:|:--|\n| 1 | -6.946 | 见表 15-3 |\n| 2 | -0.3215 | -- |\n\n: 力矩\n\n"
+        "程序中 `y = -1` 不变：\n\n```python\nYO3 = -0.1\nx = [-2, 3]\n```\n"))
+    out = tmp_path / "report.docx"
+    render_docx(md, out, METADATA, TEMPLATES)
+    document = _part(out, "word/document.xml")
+    ElementTree.fromstring(document)
+    assert _hyphen_signed_numbers(document) == []
+    texts = "\n".join(_paragraph_texts(document))
+    for signed in ("= \u22128.38", "最小 \u221284.70", "(\u2212190.54", "\u22126.946", "\u22120.3215"):
+        assert signed.replace(" ", "\u00a0") in texts.replace(" ", "\u00a0"), signed
+    for kept in ("Y90S-6", "6204-2RS", "GB/T 276-1994", "2026-11-22", "8-11", "3-4-5", "x-1", "15-3",
+                 "20–300", "Y132S-8"):         # Y132S bold: its "-8" starts the next run
+        assert kept in texts, kept
+    # code, inline or a listing, is left as written
+    code = "".join(t for p, t in _runs(document) if "Tok" in p or "VerbatimChar" in p)
+    assert "y = -1" in code and "\u2212" not in code
+    assert "".join(_paragraph_texts(document)).count("-0.1") == 1
+    # the formula keeps pandoc's own minus (U+2212), untouched
+    assert "<m:t>\u2212</m:t>" in document
+    # in a run hinted eastAsia, the minus sign stands in a run of its own in the Latin font
+    for props, run_text in _runs(document):
+        if "\u2212" in run_text:
+            assert 'w:hint="eastAsia"' not in props, run_text
+
+
+def test_tables_are_centred_and_a_formula_after_a_table_stays_a_table_of_its_own(tmp_path):
+    """Review36 Top 14 (LibreOffice): data tables stood at the left margin under their
+    centred captions (pandoc writes a table narrower than the text without w:jc), and a
+    numbered formula right after one looked right of centre. The formula's table
+    (templates/docx-numbering.lua) touched the data table, and Word shows touching tables
+    as one, under the first one's properties. Every table is centred; a formula's table is
+    never right after a table of another style (a 6 pt paragraph between), and its
+    properties are those of a formula after text."""
+    md = _write_sample(tmp_path, (
+        "# 表\n\n由下式：\n\n$$ a = b + c $$\n\n"
+        "| 矢量 | 大小 |\n|:--|--:|\n| $v_A$ | 0.770 |\n\n: 速度\n\n"
+        "$$ \\vec v_{A4} = \\vec v_{A3} + \\vec v_{A4A3} $$\n\n$$ v_B = v_{B5} $$\n\n文字。\n"))
+    out = tmp_path / "report.docx"
+    render_docx(md, out, METADATA, TEMPLATES)
+    document = _part(out, "word/document.xml")
+    ElementTree.fromstring(document)
+    _assert_tables_centred_and_apart(document)
+    from mechdesign.render.docx_layout import TABLE_SEPARATOR
+
+    assert document.count(TABLE_SEPARATOR) == 1       # only between the data table and (2)
+
+
+def _assert_tables_centred_and_apart(document: str) -> None:
+    tables = list(re.finditer(r"<w:tbl>.*?</w:tbl>", document, flags=re.DOTALL))
+    assert tables
+    for t in tables:
+        pr = re.match(r"<w:tbl><w:tblPr>(.*?)</w:tblPr>", t.group(0), flags=re.DOTALL).group(1)
+        assert '<w:jc w:val="center" />' in pr, pr[:200]
+    style = [re.match(r'<w:tbl><w:tblPr><w:tblStyle w:val="([^"]*)"', t.group(0)).group(1) for t in tables]
+    assert "EquationTable" in style and "Table" in style
+    for k in range(1, len(tables)):
+        between = document[tables[k - 1].end():tables[k].start()]
+        touching = re.fullmatch(r"(?:\s|<w:bookmark(?:Start|End)\b[^>]*/>)*", between) is not None
+        assert not (touching and style[k - 1] != style[k]), (style[k - 1], style[k])
+    # a formula after a table is set as one after text: the same table properties
+    props = {re.match(r"<w:tbl><w:tblPr>.*?</w:tblPr>", t.group(0), flags=re.DOTALL).group(0)
+             for t, s in zip(tables, style) if s == "EquationTable"}
+    assert len(props) == 1, props

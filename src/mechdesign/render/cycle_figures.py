@@ -107,8 +107,10 @@ def circular(path: Path, lang: str, actuators, origin: float = 0.0, states=None)
     r0, w = 1.0, 0.8
     outer = r0 + n * w
     with figure(path, 1, (5.6, 5.6), sharex=False) as (ax,):
+        names, bounds = [], []
         for i, (name, phases) in enumerate(actuators):
             r_in = r0 + i * w
+            bounds.append([start for start, *_ in phases])
             for start, span, state, label in phases:
                 # matplotlib measures counter-clockwise from +x; the diagram clockwise from the top.
                 t1, t2 = 90.0 - (start + span), 90.0 - start
@@ -119,10 +121,13 @@ def circular(path: Path, lang: str, actuators, origin: float = 0.0, states=None)
                 arc = np.radians(span) * rm
                 if arc >= 0.55:
                     rot = (np.degrees(mid) % 180.0) - 90.0     # along the ring, never upside down
-                    ax.text(rm * np.cos(mid), rm * np.sin(mid), label, ha="center", va="center",
-                            fontsize=6.5, rotation=rot, rotation_mode="anchor")
-            ax.text(0.06, r_in + w / 2, str(i + 1), fontsize=7, ha="left", va="center",
-                    color="0.15", bbox=dict(boxstyle="circle,pad=0.15", fc="white", ec="0.4", lw=0.5))
+                    # on a ground of its phase's colour: the origin's dash-dot radius, drawn
+                    # below the texts, does not run through a name at φ = 0
+                    names.append(ax.text(rm * np.cos(mid), rm * np.sin(mid), label, ha="center",
+                                         va="center", fontsize=6.5, rotation=rot,
+                                         rotation_mode="anchor", zorder=4,
+                                         bbox=dict(boxstyle="square,pad=0.3", lw=0,
+                                                   fc=COLOURS.get(state, "#DDD"))))
         for deg in range(0, 360, 30):
             t = np.radians(90.0 - deg)
             ax.plot([outer * np.cos(t), (outer + 0.12) * np.cos(t)],
@@ -153,6 +158,51 @@ def circular(path: Path, lang: str, actuators, origin: float = 0.0, states=None)
             ax.add_artist(first)
             ax.legend(handles=kinds, fontsize=7, loc="lower left", bbox_to_anchor=(-0.02, -0.02),
                       frameon=False, handlelength=1.0)
+        _number_rings(ax, r0, w, bounds, origin, names)
+
+
+def _number_rings(ax, r0: float, w: float, bounds, origin: float, names) -> None:
+    """Each ring's number in a small circle on the ring, as near its top (just clockwise of
+    φ = 0) as it stands clear of the phase names, of the numbers placed before and of the
+    ring's phase boundaries and the origin's radius (the names at φ ≈ 0 were covered by
+    the numbers set at the top: review36 Top 6). Measured on the figure as laid out for
+    saving (tight_layout), as :mod:`.label_layout` does."""
+    from .label_layout import _box, _box_overlap, _renderer
+
+    fig = ax.figure
+    ax.apply_aspect()
+    fig.tight_layout()
+    ax.apply_aspect()
+    renderer = _renderer(fig)
+    pad = 1.5 * fig.dpi / 72.0
+    taken = [_box(t, renderer, pad) for t in names]
+    # from 6° (the number just right of the top) clockwise, then anticlockwise from 354°
+    order = [*range(6, 180, 2), *range(354, 180, -2)]
+    for i, starts in enumerate(bounds):
+        r_in, rm = r0 + i * w, r0 + (i + 0.5) * w
+        lines = [np.radians(90.0 - a) for a in (*starts, origin)]
+        t = ax.text(0.0, 0.0, str(i + 1), fontsize=7, ha="center", va="center", color="0.15",
+                    bbox=dict(boxstyle="circle,pad=0.15", fc="white", ec="0.4", lw=0.5))
+        first = None
+        for phi in order:
+            a = np.radians(90.0 - phi)
+            t.set_position((rm * np.cos(a), rm * np.sin(a)))
+            t.update_bbox_position_size(renderer)
+            bb = t.get_bbox_patch().get_window_extent(renderer)
+            box = (bb.x0 - pad, bb.y0 - pad, bb.x1 + pad, bb.y1 + pad)
+            first = first or (a, box)
+            if any(_box_overlap(box, b) > 0 for b in taken):
+                continue
+            # the ring's boundary radii (and the origin's) sampled through the ring
+            pts = ax.transData.transform([(r * np.cos(g), r * np.sin(g)) for g in lines
+                                          for r in np.linspace(r_in, r_in + w, 17)])
+            if any(box[0] <= x <= box[2] and box[1] <= y <= box[3] for x, y in pts):
+                continue
+            break
+        else:               # nowhere free: at the top, where it always stood
+            a, box = first
+            t.set_position((rm * np.cos(a), rm * np.sin(a)))
+        taken.append(box)
 
 
 @cached

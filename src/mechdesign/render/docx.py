@@ -36,7 +36,7 @@ from pathlib import Path
 
 from ..fileio import atomic_path
 from .docx_math import align_broken_equations, group_scripted_brackets
-from .docx_layout import keep_table_rows, split_inline_formula_lists
+from .docx_layout import centre_tables, keep_table_rows, separate_tables, split_inline_formula_lists
 from .docx_toc import body_on_a_new_page, fill_table_of_contents
 from .mathbreak import break_display_math
 
@@ -216,8 +216,10 @@ def _update_fields_on_open(settings: bytes) -> bytes:
 
 #: Latin-1 signs that Word sets in the East-Asian font of a run hinted ``eastAsia`` (pandoc
 #: hints every run with Chinese text): [MS-OI29500] §2.1.88, rFonts: U+00B0–B4 and B6–BA,
-#: D7, F7 among them. 宋体's are full-width: "N·m" would read "N · m", "25°" "25 °".
-_LATIN_MARKS = "·°×±²³¹÷"
+#: D7, F7 among them. 宋体's are full-width: "N·m" would read "N · m", "25°" "25 °". The
+#: minus sign U+2212 of :func:`minus_signs` is kept in the Latin font too ("−84.70" as the
+#: PDF, whichever font Word would take for it in a hinted run).
+_LATIN_MARKS = "·°×±²³¹÷\u2212"
 _HINTED_RUN = re.compile(
     r'<w:r><w:rPr>(?P<pr>(?:(?!</w:rPr>).)*?w:hint="eastAsia"(?:(?!</w:rPr>).)*?)</w:rPr>'
     r'<w:t(?: xml:space="preserve")?>(?P<text>[^<]*)</w:t></w:r>', re.DOTALL)
@@ -259,6 +261,57 @@ def latin_marks_in_latin_font(xml: str) -> str:
     return _HINTED_RUN.sub(one, xml)
 
 
+#: Characters after which a hyphen-minus before a digit is a minus sign: a cell's or a
+#: paragraph's start, white space, an opening bracket, a relation, a separator ("= -2468 N",
+#: "(-190.54, ", "最小 -84.70"); after a letter or a digit it stays a hyphen ("Y90S-6",
+#: "6204-2RS", "GB/T 14689-2008", "2026-11-22", "表 8-11", "exercises 7-1"). typst draws the
+#: same text of the PDF so: a "-" that starts a word before a digit is its minus shorthand.
+_BEFORE_MINUS = set("([{（【=＝<>≤≥≈:：,，;；、~～")
+_TEXT_TOKEN = re.compile(r"<w:p(?=[\s>/])[^>]*>|<w:r>|<w:(?:tab|br|cr)\b[^>]*/>"
+                         r'|<w:pStyle w:val="SourceCode"|<w:rStyle w:val="(?:VerbatimChar|[A-Za-z]+Tok)"'
+                         r"|<(?P<ns>[wm]):t(?:\s[^>]*)?>(?P<text>[^<]*)</(?P=ns):t>")
+
+
+def minus_signs(xml: str) -> str:
+    """Every hyphen-minus that signs a number in the text of ``word/document.xml`` ("-6.946"
+    in a table cell, "ω₂ = -8.38 rad/s") made the minus sign U+2212, as the PDF prints it
+    (review36: 160 such hyphens in the shaper's zh Word file); the character before it,
+    across the runs of its paragraph, decides (:data:`_BEFORE_MINUS`). Formulas (m:t, whose
+    minus pandoc writes as U+2212) and code (a SourceCode paragraph, a run of inline code or
+    of a highlighted token) are only passed over."""
+    prev, code_paragraph, code_run = "", False, False
+
+    def one(m: re.Match) -> str:
+        nonlocal prev, code_paragraph, code_run
+        text, tag = m.group("text"), m.group(0)
+        if text is None:
+            if tag.startswith("<w:pStyle"):
+                code_paragraph = True
+            elif tag.startswith("<w:rStyle"):
+                code_run = True
+            elif tag == "<w:r>":
+                code_run = False
+            elif tag.startswith("<w:p"):         # a paragraph's start
+                prev, code_paragraph, code_run = "", False, False
+            else:                                # a tab or a line break
+                prev = " "
+            return tag
+        if m.group("ns") == "m" or code_paragraph or code_run or "-" not in text:
+            prev = text[-1:] or prev
+            return tag
+        out = []
+        for k, ch in enumerate(text):
+            before = out[-1] if out else prev
+            if (ch == "-" and text[k + 1:k + 2].isdigit()
+                    and (before == "" or before.isspace() or before in _BEFORE_MINUS)):
+                ch = "\u2212"
+            out.append(ch)
+        prev = out[-1] if out else prev
+        start, end = m.span("text")
+        return tag[:start - m.start()] + "".join(out) + tag[end - m.start():]
+    return _TEXT_TOKEN.sub(one, xml)
+
+
 def _finish(docx: Path, *, title: str, author: str, subject: str) -> None:
     """The running header shows the title and the student (the TITLE and AUTHOR fields'
     shown results, filled in here so that they read right before Word updates fields;
@@ -268,7 +321,9 @@ def _finish(docx: Path, *, title: str, author: str, subject: str) -> None:
     base a delimiter (:mod:`.docx_math`); the table of
     contents holds its entries and their page numbers and the body starts on the next page
     (:mod:`.docx_toc`); table rows do not split, short tables stay on one page and a list of
-    formulas in one inline formula may break between its items (:mod:`.docx_layout`); "N·m", "s²", "25°"
+    formulas in one inline formula may break between its items, tables are centred and a numbered
+    formula after a table stays a table of its own (:mod:`.docx_layout`); a negative number's
+    hyphen is the minus sign (:func:`minus_signs`); "N·m", "s²", "25°"
     in Chinese text take the Latin font's signs (:func:`latin_marks_in_latin_font`). The archive keeps
     its member order and dates (reproducible)."""
     with zipfile.ZipFile(docx) as zin:
@@ -284,7 +339,8 @@ def _finish(docx: Path, *, title: str, author: str, subject: str) -> None:
             xml = align_broken_equations(data.decode("utf-8"))
             xml = body_on_a_new_page(fill_table_of_contents(group_scripted_brackets(xml)))
             xml = split_inline_formula_lists(keep_table_rows(xml))
-            data = latin_marks_in_latin_font(xml).encode("utf-8")
+            xml = separate_tables(centre_tables(xml))
+            data = latin_marks_in_latin_font(minus_signs(xml)).encode("utf-8")
         elif name == "word/settings.xml":
             data = _update_fields_on_open(data)
         elif name == "docProps/core.xml":
