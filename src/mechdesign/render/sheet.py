@@ -148,6 +148,10 @@ class Dimension:
     outside: int = -1                # an aligned text too long for its line: beyond p0 (−1) or
     #                                  p1 (+1); a radius' text: outside the circle (≠ 0) or on
     #                                  the line inside it (0)
+    text_at: complex | None = None   # an aligned dimension's text on a leader instead: the
+    #                                  shoulder's start, the leader drawn to it from the middle
+    #                                  of the dimension line, the text level on the shoulder
+    #                                  (GB/T 4458.4: no room for it along the line)
 
 
 #: A dimension text's gap above its dimension line and from an extension line [mm]
@@ -174,7 +178,10 @@ def dimension_geometry(d: Dimension):
     line (``d.outside``: before p0 or after p1) on the dimension line drawn on under it;
     a radius' or diameter's text outside the circle, on the line from the centre drawn on
     past the arrow (the lines inside the circle — crank positions — stay clear of it), or on
-    the line inside with ``outside=0`` (a gear's concentric circles, a cam's rollers outside)."""
+    the line inside with ``outside=0`` (a gear's concentric circles, a cam's rollers outside).
+    With ``d.text_at`` an aligned dimension's text is level, on a shoulder from that point
+    away from the dimension line, joined to the line's middle by a leader (a short swing
+    among a chart's grid lines, where a text along the line would be crossed by them)."""
     u = d.p1 - d.p0
     length = abs(u)
     u = u / length if length else 1.0
@@ -188,6 +195,12 @@ def dimension_geometry(d: Dimension):
         lines += [(d.p0 + n * np.sign(d.offset) * 1.0, a + n * ext),
                   (d.p1 + n * np.sign(d.offset) * 1.0, b + n * ext), (a, b)]
         arrows += [(b, a), (a, b)]
+        if d.text_at is not None:
+            elbow = complex(d.text_at)
+            mid = (a + b) / 2
+            end = elbow + (1 if elbow.real >= mid.real else -1) * (w + 1.0)
+            lines += [(mid, elbow), (elbow, end)]
+            return lines, arrows, text, (elbow + end) / 2 + 1j * DIM_GAP, 0.0
         if w + 2 * DIM_ARROW + 2 * DIM_GAP <= length:
             centre = (a + b) / 2
         elif d.outside >= 0:
@@ -281,10 +294,10 @@ class Sheet:
             self.fill([p1, base + 1j * u * w, base - 1j * u * w], layer)
 
     def dimension(self, p0, p1, offset, measurement, text="", kind="aligned", height=3.5,
-                  outside=-1):
+                  outside=-1, text_at=None):
         self.add(Dimension(complex(p0), complex(p1), float(offset), float(measurement),
                            str(text).replace(GROUP, NBSP), kind, "DIMENSIONS", height,
-                           int(outside)))
+                           int(outside), None if text_at is None else complex(text_at)))
 
     def view(self, origin, scale: float, flip_x: bool = False) -> "View":
         """Model coordinates → sheet: ``origin + scale * z`` (scale = paper mm per unit)."""
@@ -788,6 +801,29 @@ class Series:
     weight: float | None = None
 
 
+#: A chart's grid lines' width [mm] (thin: a text among them breaks them, :func:`break_lines`).
+GRID_WEIGHT = 0.13
+
+
+def break_lines(sheet: Sheet, box: Box, lines) -> None:
+    """Break each of ``lines`` (Line entities of ``sheet``) where it crosses ``box``: the
+    parts outside it stay (GB/T 4458.4: a line that would pass through a dimension's text
+    is broken there)."""
+    lines = {id(g) for g in lines}
+    out = []
+    for g in sheet.entities:
+        cut = clip_segment(g.p0, g.p1, box) if id(g) in lines else None
+        if cut is None:
+            out.append(g)
+            continue
+        t0, t1 = cut
+        d = g.p1 - g.p0
+        for a, b in ((0.0, t0), (t1, 1.0)):
+            if (b - a) * abs(d) > 1e-6:
+                out.append(Line(g.p0 + a * d, g.p0 + b * d, g.layer, g.weight))
+    sheet.entities[:] = out
+
+
 def chart(sheet: Sheet, box: tuple[float, float, float, float], x: np.ndarray,
           series: Iterable[Series], *, xlabel: str, ylabel: str, title: str = "",
           xticks: Iterable[float] | None = None, shade: Iterable[tuple[float, float]] = (),
@@ -820,11 +856,11 @@ def chart(sheet: Sheet, box: tuple[float, float, float, float], x: np.ndarray,
                 sheet.line(m.p(v, lo), m.p(v, hi), "HIDDEN")
     for v in np.arange(lo, hi + step / 2, step):
         y = m.p(xlo, v).imag
-        sheet.line(x0 + 1j * y, x1 + 1j * y, "CONSTRUCTION", 0.13)
+        sheet.line(x0 + 1j * y, x1 + 1j * y, "CONSTRUCTION", GRID_WEIGHT)
         sheet.text(x0 - 1.5 + 1j * y, minus(exact(v)), 2.5, "TEXT", "right", "middle")
     for v in xs:
         xp = m.p(v, lo).real
-        sheet.line(xp + 1j * y0, xp + 1j * y1, "CONSTRUCTION", 0.13)
+        sheet.line(xp + 1j * y0, xp + 1j * y1, "CONSTRUCTION", GRID_WEIGHT)
         sheet.text(xp + 1j * (y0 - 2.0), minus(exact(v)), 2.5, "TEXT", "center", "top")
     sheet.polyline([x0 + 1j * y0, x1 + 1j * y0, x1 + 1j * y1, x0 + 1j * y1], "CONSTRUCTION",
                    closed=True, weight=0.35)
