@@ -665,7 +665,7 @@ def _mechanism(s: Sheet, model, k, lab: dict, box, chosen: list[str], lang: str)
         u = (tip[i] - piv) / abs(tip[i] - piv)
         bold = labels[i] in chosen            # clear of the slider block drawn there
         placer.place(v.p(tip[i]), labels[i], 3.5 if bold else 2.5, prefer=u,
-                     gap=5.5 if bold and sliders else 1.5, apart=True)
+                     gap=5.5 if bold and sliders else 1.5, apart=True, last_leader=True)
     if chosen and chosen[0] in labels:
         i0 = labels.index(chosen[0])
         mid = np.mean([P[nm][i0] for nm in drawn])
@@ -687,7 +687,7 @@ def _mechanism(s: Sheet, model, k, lab: dict, box, chosen: list[str], lang: str)
                 a, b = b, a
             d = (b - a) / abs(b - a) if abs(b - a) > 1e-9 else 1.0
             at = a + (b - a) * (0.3 if fixed else 0.5)
-            placer.place(v.p(at), link, 3.5, prefer=1j * d, gap=1.5)
+            placer.place(v.p(at), link, 3.5, prefer=1j * d, gap=1.5, last_leader=True)
             numbered.add(link)
         for slider, point, guide, _ in sliders:
             if slider not in numbered:

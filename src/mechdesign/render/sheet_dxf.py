@@ -251,7 +251,8 @@ def _dimension(msp, d: Dimension) -> None:
         u = (d.p1 - centre) / radius if radius else 1.0
         w = text_width(dimension_text(d), d.height)
         inside = d.outside == 0
-        at = centre + u * (radius / 2 if inside else radius + DIM_GAP + 0.5 + w / 2)
+        at = centre + u * ((d.along if d.kind == "radius" else 0.5) * radius if inside
+                           else radius + DIM_GAP + 0.5 + w / 2)
         if d.kind == "diameter" and inside:
             at = centre + 1e-3 * u
         add = msp.add_radius_dim if d.kind == "radius" else msp.add_diameter_dim
