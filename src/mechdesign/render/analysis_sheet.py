@@ -783,7 +783,7 @@ def _table(s: Sheet, model, k, forces, lab: dict, box) -> None:
           outer=0.7, rule=0.7, inner=0.25)
 
 
-def _leader_text_at(s: Sheet, area, m, e, text: str, mid: float):
+def _leader_text_at(s: Sheet, area, m, e, swing: float, text: str, mid: float):
     """ΔW_max whose text is crossed by a line wherever it stands along its dimension (a swing
     shorter than its text, a grid line across it): the dimension and the start of a level
     text's shoulder on a slanted leader from the dimension line's middle (GB/T 4458.4), where
@@ -819,7 +819,7 @@ def _leader_text_at(s: Sheet, area, m, e, text: str, mid: float):
                         + _near_segment(every, elbow, end, 0.8, 0.0) + 0.3 * tips
                         + 0.05 * length + abs(x_at - mid) / 30.0)
                 if best is None or cost < best[0]:
-                    best = (cost, Dimension(p0, p1, 0.0, 0.0), elbow, box)
+                    best = (cost, Dimension(p0, p1, 0.0, swing), elbow, box)
     if best is None:
         return None
     break_lines(s, best[3], grid)
@@ -909,7 +909,7 @@ def _curves(s: Sheet, model, k, forces, fl, lab: dict, box) -> None:
         if best is None or cost < best[0]:
             best = (cost, dim, crossed)
     d = best[1]
-    at = _leader_text_at(s, placer.area, m, e, text, mid) if best[2] else None
+    at = _leader_text_at(s, placer.area, m, e, fl.max_energy_swing, text, mid) if best[2] else None
     if at is not None:
         d = at[0]
     s.dimension(d.p0, d.p1, 0.0, d.measurement, text=text, height=2.5, outside=1,
