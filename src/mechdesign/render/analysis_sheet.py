@@ -783,20 +783,28 @@ def _table(s: Sheet, model, k, forces, lab: dict, box) -> None:
           outer=0.7, rule=0.7, inner=0.25)
 
 
-def _leader_text_at(s: Sheet, area, m, e, swing: float, text: str, mid: float):
+def _leader_text_at(s: Sheet, first: int, area, m, e, swing: float, text: str, mid: float):
     """ΔW_max whose text is crossed by a line wherever it stands along its dimension (a swing
     shorter than its text, a grid line across it): the dimension and the start of a level
     text's shoulder on a slanted leader from the dimension line's middle (GB/T 4458.4), where
     no curve, bound or axis crosses the text and the fewest grid lines do (those are broken
     under it: :func:`break_lines`), the leader crossing the fewest lines, as near the middle
-    of ΔE's bounds as may be; None if there is no such spot in the chart."""
+    of ΔE's bounds as may be; None if there is no such spot in the chart. The chart is drawn
+    from ``s.entities[first]`` on."""
     w = text_width(text, 2.5) + 1.0
-    grid = [g for g in s.entities if _grid_line(g, area)]
+    chart_lines = [g for g in s.entities[first:] if not isinstance(g, (Text, Fill))]
+    grid = [g for g in chart_lines if _grid_line(g, area)]
     firm = LabelPlacer(s)
-    firm.absorb([g for g in s.entities if not isinstance(g, (Text, Fill)) and not _grid_line(g, area)],
-                0.5)
+    firm.absorb([g for g in chart_lines if not _grid_line(g, area)], 0.5)
     pts = firm.points
     every = np.concatenate([pts] + [sample_polyline([g.p0, g.p1], 0.5) for g in grid])
+    # (the chart's lines only: the rest of the sheet is outside every candidate)
+
+    def inside(z):
+        return z[(z.real > area[0] - 1.0) & (z.real < area[2] + 1.0) & (z.imag > area[1] - 1.0)
+                 & (z.imag < area[3] + 1.0)]
+
+    pts, every = inside(pts), inside(every)
     best = None
     for x_at in np.arange(6.0, 355.0, 3.0):
         p0, p1 = m.p(x_at, float(e.min())), m.p(x_at, float(e.max()))
@@ -882,6 +890,7 @@ def _curves(s: Sheet, model, k, forces, fl, lab: dict, box) -> None:
     phi = np.radians(ph)
     w_d = md_crank * phi
     w_r = w_d - np.append(e, e[0])        # ∫M_b dφ = M_d·φ − ΔE (exact, from the results)
+    first = len(s.entities)
     m = chart(s, (left, y - h, bx1, y), ph,
               [Series(w_d, weight=0.35), Series(w_r, weight=0.35), Series(np.append(e, e[0]))],
               xlabel=lab["phase"], ylabel=lab["work"], title=lab["et"], xticks=ticks,
@@ -909,7 +918,7 @@ def _curves(s: Sheet, model, k, forces, fl, lab: dict, box) -> None:
         if best is None or cost < best[0]:
             best = (cost, dim, crossed)
     d = best[1]
-    at = _leader_text_at(s, placer.area, m, e, fl.max_energy_swing, text, mid) if best[2] else None
+    at = _leader_text_at(s, first, placer.area, m, e, fl.max_energy_swing, text, mid) if best[2] else None
     if at is not None:
         d = at[0]
     s.dimension(d.p0, d.p1, 0.0, d.measurement, text=text, height=2.5, outside=1,
