@@ -20,7 +20,8 @@ from ..core.polygons import Polygon
 from . import fmt
 from .labels import LabelTable, pgettext, sheet_names, sheet_point
 from .sheet import (DIM_GAP, GRID_WEIGHT, Dimension, Fill, LabelPlacer, Line, Text, _near_segment,
-                    break_lines, clip_segment, dimension_geometry, sample_polyline, Series, Sheet, TitleInfo, chart, fit_height,
+                    break_lines, clip_segment, dimension_geometry, sample_polyline, Series, Sheet,
+                    TitleInfo, chart, fit_height,
                     fill_scale, frame, ground, heading, length_scale, pin,
                     scale_text, slider_block, sub, sup, table, text_width, title_block_box,
                     with_subscripts)
