@@ -19,7 +19,9 @@ import numpy as np
 from ..core.polygons import Polygon
 from . import fmt
 from .labels import LabelTable, pgettext, sheet_names, sheet_point
-from .sheet import (Dimension, LabelPlacer, dimension_geometry, Series, Sheet, TitleInfo, chart, fit_height,
+from .sheet import (DIM_GAP, GRID_WEIGHT, Dimension, Fill, LabelPlacer, Line, Text, _near_segment,
+                    break_lines, clip_segment, dimension_geometry, sample_polyline, Series, Sheet,
+                    TitleInfo, chart, fit_height,
                     fill_scale, frame, ground, heading, length_scale, pin,
                     scale_text, slider_block, sub, sup, table, text_width, title_block_box,
                     with_subscripts)
@@ -664,7 +666,7 @@ def _mechanism(s: Sheet, model, k, lab: dict, box, chosen: list[str], lang: str)
         u = (tip[i] - piv) / abs(tip[i] - piv)
         bold = labels[i] in chosen            # clear of the slider block drawn there
         placer.place(v.p(tip[i]), labels[i], 3.5 if bold else 2.5, prefer=u,
-                     gap=5.5 if bold and sliders else 1.5, apart=True)
+                     gap=5.5 if bold and sliders else 1.5, apart=True, last_leader=True)
     if chosen and chosen[0] in labels:
         i0 = labels.index(chosen[0])
         mid = np.mean([P[nm][i0] for nm in drawn])
@@ -686,7 +688,7 @@ def _mechanism(s: Sheet, model, k, lab: dict, box, chosen: list[str], lang: str)
                 a, b = b, a
             d = (b - a) / abs(b - a) if abs(b - a) > 1e-9 else 1.0
             at = a + (b - a) * (0.3 if fixed else 0.5)
-            placer.place(v.p(at), link, 3.5, prefer=1j * d, gap=1.5)
+            placer.place(v.p(at), link, 3.5, prefer=1j * d, gap=1.5, last_leader=True)
             numbered.add(link)
         for slider, point, guide, _ in sliders:
             if slider not in numbered:
@@ -782,6 +784,64 @@ def _table(s: Sheet, model, k, forces, lab: dict, box) -> None:
           outer=0.7, rule=0.7, inner=0.25)
 
 
+def _leader_text_at(s: Sheet, first: int, area, m, e, swing: float, text: str, mid: float):
+    """ΔW_max whose text is crossed by a line wherever it stands along its dimension (a swing
+    shorter than its text, a grid line across it): the dimension and the start of a level
+    text's shoulder on a slanted leader from the dimension line's middle (GB/T 4458.4), where
+    no curve, bound or axis crosses the text and the fewest grid lines do (those are broken
+    under it: :func:`break_lines`), the leader crossing the fewest lines, as near the middle
+    of ΔE's bounds as may be; None if there is no such spot in the chart. The chart is drawn
+    from ``s.entities[first]`` on."""
+    w = text_width(text, 2.5) + 1.0
+    chart_lines = [g for g in s.entities[first:] if not isinstance(g, (Text, Fill))]
+    grid = [g for g in chart_lines if _grid_line(g, area)]
+    firm = LabelPlacer(s)
+    firm.absorb([g for g in chart_lines if not _grid_line(g, area)], 0.5)
+    pts = firm.points
+    every = np.concatenate([pts] + [sample_polyline([g.p0, g.p1], 0.5) for g in grid])
+    # (the chart's lines only: the rest of the sheet is outside every candidate)
+
+    def inside(z):
+        return z[(z.real > area[0] - 1.0) & (z.real < area[2] + 1.0) & (z.imag > area[1] - 1.0)
+                 & (z.imag < area[3] + 1.0)]
+
+    pts, every = inside(pts), inside(every)
+    best = None
+    for x_at in np.arange(6.0, 355.0, 3.0):
+        p0, p1 = m.p(x_at, float(e.min())), m.p(x_at, float(e.max()))
+        tips = sum(int(np.count_nonzero(np.abs(every - q) < 1.5)) for q in (p0, p1))
+        centre = (p0 + p1) / 2
+        for length in (6.0, 9.0, 13.0, 18.0):
+            for deg in (45.0, 135.0, -45.0, -135.0, 30.0, 150.0, -30.0, -150.0, 60.0, 120.0,
+                        -60.0, -120.0):
+                elbow = centre + length * np.exp(1j * np.radians(deg))
+                x0, x1 = (elbow.real, elbow.real + w) if elbow.real >= centre.real else \
+                    (elbow.real - w, elbow.real)
+                box = (x0 - 0.5, elbow.imag - 0.5, x1 + 0.5, elbow.imag + DIM_GAP + 2.5 + 0.5)
+                if not (box[0] >= area[0] and box[2] <= area[2] and box[1] >= area[1]
+                        and box[3] <= area[3]) or firm.crossed(box, pts):
+                    continue
+                broken = sum(1 for g in grid if clip_segment(g.p0, g.p1, box) is not None)
+                # (the leader and the shoulder not along a line: a bound's dashes under the text)
+                end = complex(x1 if elbow.real >= centre.real else x0, elbow.imag)
+                cost = (3.0 * broken + _near_segment(every, centre, elbow, 0.4, 0.0)
+                        + _near_segment(every, elbow, end, 0.8, 0.0) + 0.3 * tips
+                        + 0.05 * length + abs(x_at - mid) / 30.0)
+                if best is None or cost < best[0]:
+                    best = (cost, Dimension(p0, p1, 0.0, swing), elbow, box)
+    if best is None:
+        return None
+    break_lines(s, best[3], grid)
+    return best[1], best[2]
+
+
+def _grid_line(g, area) -> bool:
+    """Whether ``g`` is one of a chart's thin grid lines inside ``area`` (:func:`chart`)."""
+    return (isinstance(g, Line) and g.layer == "CONSTRUCTION" and g.weight == GRID_WEIGHT
+            and all(area[0] - 1e-6 <= p.real <= area[2] + 1e-6 and area[1] - 1e-6 <= p.imag <= area[3] + 1e-6
+                    for p in (g.p0, g.p1)))
+
+
 def _curves(s: Sheet, model, k, forces, fl, lab: dict, box) -> None:
     n = k.grid_size
     ph = np.append(k.phase[:n], TWO_PI) * DEG
@@ -831,6 +891,7 @@ def _curves(s: Sheet, model, k, forces, fl, lab: dict, box) -> None:
     phi = np.radians(ph)
     w_d = md_crank * phi
     w_r = w_d - np.append(e, e[0])        # ∫M_b dφ = M_d·φ − ΔE (exact, from the results)
+    first = len(s.entities)
     m = chart(s, (left, y - h, bx1, y), ph,
               [Series(w_d, weight=0.35), Series(w_r, weight=0.35), Series(np.append(e, e[0]))],
               xlabel=lab["phase"], ylabel=lab["work"], title=lab["et"], xticks=ticks,
@@ -853,11 +914,16 @@ def _curves(s: Sheet, model, k, forces, fl, lab: dict, box) -> None:
                max(c.real for c in corners), max(c.imag for c in corners))
         # (and its arrowheads off the curves' crossings: the lines within 1.5 mm of a tip)
         tips = sum(int(np.count_nonzero(np.abs(drawn - q) < 1.5)) for q in (dim.p0, dim.p1))
-        cost = placer.crossed(box, drawn) + 0.3 * tips + abs(x_at - mid) / 360.0
+        crossed = placer.crossed(box, drawn)
+        cost = crossed + 0.3 * tips + abs(x_at - mid) / 360.0
         if best is None or cost < best[0]:
-            best = (cost, dim)
+            best = (cost, dim, crossed)
     d = best[1]
-    s.dimension(d.p0, d.p1, 0.0, d.measurement, text=text, height=2.5, outside=1)
+    at = _leader_text_at(s, first, placer.area, m, e, fl.max_energy_swing, text, mid) if best[2] else None
+    if at is not None:
+        d = at[0]
+    s.dimension(d.p0, d.p1, 0.0, d.measurement, text=text, height=2.5, outside=1,
+                text_at=None if at is None else at[1])
     # W_r and W_d beside their curves where no line crosses them (the grid, the other curve,
     # ΔE's bounds, the ΔW_max dimension), tried along the curve from its end; else on a leader
     for ys, text, prefer in ((w_r, sub("W", "r"), 1j), (w_d, sub("W", "d"), -1j)):

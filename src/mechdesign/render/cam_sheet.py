@@ -37,8 +37,10 @@ from .labels import LabelTable, pgettext, sheet_point
 from .sheet import (
     sub,
     THIN,
+    Dimension,
     LabelPlacer,
     boxes_overlap,
+    dimension_text_hits,
     segment_hits_box,
     fit_widths,
     table,
@@ -250,6 +252,40 @@ def _largest_gap(angles) -> tuple[float, float]:
     return float(a[j] + gaps[j] / 2), float(gaps[j])
 
 
+def _clear_radius_angle(view, labels: LabelPlacer, rc: float, r0: float, text: str,
+                        taken) -> tuple[float, float]:
+    """The angle of r0's radius line and where its text stands along it (a fraction from the
+    centre): ``rc`` (the widest gap between the rays where they cross circles inside the cam)
+    and the middle if no line crosses the text there; else the nearest angle, clear of
+    ``taken`` (ω, the ground symbol, the centre lines) by 3°, with the text as near the
+    middle as it can stand (and off the arrow) where none does. The inverted follower axes,
+    tangent to the offset circle, sweep across a text in the middle of the line (the 12′
+    axis of cam 7-3 through "r0=50.00"), less so nearer the circle. (``rc``, ½) if none."""
+    pts = labels._drawn_points()
+    p0 = view.p(0)
+    length = abs(view.p(r0) - p0)
+    room = 1.0 - (0.5 * text_width(text, 3.5) + 4.0) / length    # the text's middle at most
+
+    def hits(a: float, along: float) -> int:
+        d = Dimension(p0, view.p(r0 * np.exp(1j * a)), 0.0, r0, text, "radius", height=3.5,
+                      outside=0, along=along)
+        return dimension_text_hits(d, pts)
+
+    if hits(rc, 0.5) == 0:
+        return rc, 0.5
+    taken = np.asarray(taken, dtype=float)
+    alongs = [f for f in (0.5, 0.58, 0.66, 0.74) if f <= max(room, 0.5)]
+    for step in range(1, 90):
+        for a in (rc + np.radians(2.0 * step), rc - np.radians(2.0 * step)):
+            off = np.abs((taken - a + np.pi) % (2 * np.pi) - np.pi)
+            if off.min() < np.radians(3.0):
+                continue
+            for f in alongs:
+                if hits(a, f) == 0:
+                    return float(a), f
+    return rc, 0.5
+
+
 def _crossings(segments, radius: float) -> list[float]:
     """Angles where the line segments (z0, z1) cross the circle |z| = radius."""
     out = []
@@ -368,11 +404,17 @@ def _profile(sheet: Sheet, c, g: _ProfileGeometry, divs, n: float, box, lab):
     _omega(sheet, view, r_w, w_mid, span / 2, g.sigma)
     taken = list(np.linspace(w_mid - span / 2 - 0.12, w_mid + span / 2 + 0.12, 12)) + down
     taken += [a + d for a in np.arange(4) * np.pi / 2 for d in (-0.12, 0.0, 0.12)]
+    avoid = list(taken)                       # ω, the ground symbol, the centre lines
+    if g.kind == "roller" and abs(g.B0) > g.rr:   # and the roller at the start, on r0's circle
+        half = float(np.arcsin(g.rr / abs(g.B0))) + 0.05
+        avoid += list(np.angle(g.B0) + np.linspace(-half, half, 9))
     for f in np.linspace(0.3, 1.0, 8):
         taken += _crossings(rays, f * g.r0)
     rc, _ = _largest_gap(taken)
-    view.dimension(0, g.r0 * np.exp(1j * rc), 0.0, text=f"{sub('r', '0')}={fmt.length(g.r0)}", kind="radius",
-                   height=3.5, outside=0)
+    text = f"{sub('r', '0')}={fmt.length(g.r0)}"
+    rc, along = _clear_radius_angle(view, labels, rc, g.r0, text, avoid)
+    view.dimension(0, g.r0 * np.exp(1j * rc), 0.0, text=text, kind="radius", height=3.5, outside=0,
+                   along=along)
     if g.kind == "roller":
         _roller_dimension(sheet, view, g, n, gap_c, labels)
 
@@ -448,8 +490,18 @@ def _follower_start(sheet, view, g: _ProfileGeometry, n, labels: LabelPlacer) ->
             # arm length L beside the arm, away from the cam centre
             side = -1.0 if np.imag(np.conj(u) * (0 - A)) > 0 else 1.0
             z0, z1 = (A, B0) if u.real >= 0 else (B0, A)        # text reads left to right
-            view.dimension(z0, z1, side * 7.0 * (1 if u.real >= 0 else -1),
-                           text=f"L={fmt.length(g.L)}", height=3.5)
+            # where no line crosses its text (the rays to the arm's positions fan out across
+            # it): the offset nearest, this side first, the text in the middle or moved
+            # along the line
+            text = f"L={fmt.length(g.L)}"
+            sign = side * (1 if u.real >= 0 else -1)
+            pts = labels._drawn_points()
+            tries = [(sign * o, f) for o in (7.0, 10.0, 13.0) for f in (0.5, 0.4, 0.6, 0.3, 0.7)]
+            tries += [(-sign * o, f) for o, f in tries]
+            off, along = next((t for t in tries if dimension_text_hits(
+                Dimension(P(z0), P(z1), t[0], g.L, text, height=3.5, along=t[1]), pts) == 0),
+                tries[0])
+            view.dimension(z0, z1, off, text=text, height=3.5, along=along)
         # centre distance a under the drawing; extension lines start below the pivots' frames
         ink = np.concatenate([g.actual, g.pitch, g.B - 1j * g.rr, [-g.r0 * 1j]])
         near = ink[(ink.real > -5.0 * n) & (ink.real < g.a + 5.0 * n)]

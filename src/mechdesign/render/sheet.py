@@ -148,6 +148,13 @@ class Dimension:
     outside: int = -1                # an aligned text too long for its line: beyond p0 (−1) or
     #                                  p1 (+1); a radius' text: outside the circle (≠ 0) or on
     #                                  the line inside it (0)
+    along: float = 0.5               # where the text's middle stands on the line, a fraction of
+    #                                  it from p0: an aligned text between the arrows (kept
+    #                                  clear of them), a radius' text inside (outside=0)
+    text_at: complex | None = None   # an aligned dimension's text on a leader instead: the
+    #                                  shoulder's start, the leader drawn to it from the middle
+    #                                  of the dimension line, the text level on the shoulder
+    #                                  (GB/T 4458.4: no room for it along the line)
 
 
 #: A dimension text's gap above its dimension line and from an extension line [mm]
@@ -174,7 +181,10 @@ def dimension_geometry(d: Dimension):
     line (``d.outside``: before p0 or after p1) on the dimension line drawn on under it;
     a radius' or diameter's text outside the circle, on the line from the centre drawn on
     past the arrow (the lines inside the circle — crank positions — stay clear of it), or on
-    the line inside with ``outside=0`` (a gear's concentric circles, a cam's rollers outside)."""
+    the line inside with ``outside=0`` (a gear's concentric circles, a cam's rollers outside).
+    With ``d.text_at`` an aligned dimension's text is level, on a shoulder from that point
+    away from the dimension line, joined to the line's middle by a leader (a short swing
+    among a chart's grid lines, where a text along the line would be crossed by them)."""
     u = d.p1 - d.p0
     length = abs(u)
     u = u / length if length else 1.0
@@ -188,8 +198,15 @@ def dimension_geometry(d: Dimension):
         lines += [(d.p0 + n * np.sign(d.offset) * 1.0, a + n * ext),
                   (d.p1 + n * np.sign(d.offset) * 1.0, b + n * ext), (a, b)]
         arrows += [(b, a), (a, b)]
+        if d.text_at is not None:
+            elbow = complex(d.text_at)
+            mid = (a + b) / 2
+            end = elbow + (1 if elbow.real >= mid.real else -1) * (w + 1.0)
+            lines += [(mid, elbow), (elbow, end)]
+            return lines, arrows, text, (elbow + end) / 2 + 1j * DIM_GAP, 0.0
         if w + 2 * DIM_ARROW + 2 * DIM_GAP <= length:
-            centre = (a + b) / 2
+            edge = (0.5 * w + DIM_ARROW + DIM_GAP) / length
+            centre = a + (b - a) * float(np.clip(d.along, edge, 1.0 - edge))
         elif d.outside >= 0:
             centre = b + u * (DIM_GAP + 0.5 + w / 2)
             lines.append((b, b + u * (2 * DIM_GAP + 0.5 + w)))
@@ -202,7 +219,7 @@ def dimension_geometry(d: Dimension):
         if d.kind == "diameter":
             arrows.append((d.p0, d.p1))
         if d.outside == 0:             # asked for on the line (concentric circles outside)
-            centre = (d.p0 + d.p1) / 2
+            centre = d.p0 + d.along * (d.p1 - d.p0) if d.kind == "radius" else (d.p0 + d.p1) / 2
         else:
             centre = d.p1 + u * (DIM_GAP + 0.5 + w / 2)
             lines.append((d.p1, d.p1 + u * (2 * DIM_GAP + 0.5 + w)))
@@ -213,6 +230,21 @@ def dimension_geometry(d: Dimension):
         up = -n
     # the text above the line: its baseline DIM_GAP over it on the reader's upper side
     return lines, arrows, text, centre + up * DIM_GAP, ang
+
+
+def dimension_text_hits(d: Dimension, pts: np.ndarray, margin: float = 0.3) -> int:
+    """How many of ``pts`` (drawn line points, :meth:`LabelPlacer._drawn_points`) lie on the
+    text of dimension ``d`` as :func:`dimension_geometry` sets it, turned with it: on its
+    glyphs' body (from 0.1 to 0.65 of its height above the baseline, its estimated width,
+    ``margin`` mm round), where a line is read passing through the text (GB/T 4458.4; the
+    core tests/sheet_overlaps.py measures)."""
+    _lines, _arrows, text, pos, ang = dimension_geometry(d)
+    if not len(pts):
+        return 0
+    q = (pts - pos) * np.exp(-1j * ang)
+    w, h = text_width(text, d.height), d.height
+    return int(np.count_nonzero((np.abs(q.real) < w / 2 + margin)
+                                & (q.imag > 0.1 * h - margin) & (q.imag < 0.65 * h + margin)))
 
 
 # -- the sheet ----------------------------------------------------------------------------
@@ -281,10 +313,10 @@ class Sheet:
             self.fill([p1, base + 1j * u * w, base - 1j * u * w], layer)
 
     def dimension(self, p0, p1, offset, measurement, text="", kind="aligned", height=3.5,
-                  outside=-1):
+                  outside=-1, text_at=None, along=0.5):
         self.add(Dimension(complex(p0), complex(p1), float(offset), float(measurement),
                            str(text).replace(GROUP, NBSP), kind, "DIMENSIONS", height,
-                           int(outside)))
+                           int(outside), float(along), None if text_at is None else complex(text_at)))
 
     def view(self, origin, scale: float, flip_x: bool = False) -> "View":
         """Model coordinates → sheet: ``origin + scale * z`` (scale = paper mm per unit)."""
@@ -332,10 +364,11 @@ class View:
         self.sheet.fill(self.p(np.asarray(zs)), layer)
 
     def dimension(self, z0, z1, offset, text="", kind="aligned", height=3.5, measurement=None,
-                  outside=-1):
+                  outside=-1, along=0.5):
         """Aligned dimension in model units; ``offset`` in paper mm; writes the true length."""
         m = abs(complex(z1) - complex(z0)) if measurement is None else measurement
-        self.sheet.dimension(self.p(z0), self.p(z1), offset, m, text, kind, height, outside)
+        self.sheet.dimension(self.p(z0), self.p(z1), offset, m, text, kind, height, outside,
+                             along=along)
 
 
 def thin(points, tolerance: float = CHORD_TOLERANCE) -> np.ndarray:
@@ -788,6 +821,29 @@ class Series:
     weight: float | None = None
 
 
+#: A chart's grid lines' width [mm] (thin: a text among them breaks them, :func:`break_lines`).
+GRID_WEIGHT = 0.13
+
+
+def break_lines(sheet: Sheet, box: Box, lines) -> None:
+    """Break each of ``lines`` (Line entities of ``sheet``) where it crosses ``box``: the
+    parts outside it stay (GB/T 4458.4: a line that would pass through a dimension's text
+    is broken there)."""
+    lines = {id(g) for g in lines}
+    out = []
+    for g in sheet.entities:
+        cut = clip_segment(g.p0, g.p1, box) if id(g) in lines else None
+        if cut is None:
+            out.append(g)
+            continue
+        t0, t1 = cut
+        d = g.p1 - g.p0
+        for a, b in ((0.0, t0), (t1, 1.0)):
+            if (b - a) * abs(d) > 1e-6:
+                out.append(Line(g.p0 + a * d, g.p0 + b * d, g.layer, g.weight))
+    sheet.entities[:] = out
+
+
 def chart(sheet: Sheet, box: tuple[float, float, float, float], x: np.ndarray,
           series: Iterable[Series], *, xlabel: str, ylabel: str, title: str = "",
           xticks: Iterable[float] | None = None, shade: Iterable[tuple[float, float]] = (),
@@ -820,11 +876,11 @@ def chart(sheet: Sheet, box: tuple[float, float, float, float], x: np.ndarray,
                 sheet.line(m.p(v, lo), m.p(v, hi), "HIDDEN")
     for v in np.arange(lo, hi + step / 2, step):
         y = m.p(xlo, v).imag
-        sheet.line(x0 + 1j * y, x1 + 1j * y, "CONSTRUCTION", 0.13)
+        sheet.line(x0 + 1j * y, x1 + 1j * y, "CONSTRUCTION", GRID_WEIGHT)
         sheet.text(x0 - 1.5 + 1j * y, minus(exact(v)), 2.5, "TEXT", "right", "middle")
     for v in xs:
         xp = m.p(v, lo).real
-        sheet.line(xp + 1j * y0, xp + 1j * y1, "CONSTRUCTION", 0.13)
+        sheet.line(xp + 1j * y0, xp + 1j * y1, "CONSTRUCTION", GRID_WEIGHT)
         sheet.text(xp + 1j * (y0 - 2.0), minus(exact(v)), 2.5, "TEXT", "center", "top")
     sheet.polyline([x0 + 1j * y0, x1 + 1j * y0, x1 + 1j * y1, x0 + 1j * y1], "CONSTRUCTION",
                    closed=True, weight=0.35)
@@ -1035,14 +1091,18 @@ class LabelPlacer:
 
     def place(self, anchor: complex, text: str, height: float = 3.5,
               prefer: complex = 1j, gap: float = 2.5, layer: str = "TEXT",
-              crowded: bool = True, leader: bool = False, apart: bool = False) -> complex | None:
+              crowded: bool = True, leader: bool = False, apart: bool = False,
+              last_leader: bool = False) -> complex | None:
         """A point label at the first free spot (the three rings round the anchor, then a
         little farther out about the preferred direction, up to 10 mm, with a margin from the
         lines and the other labels); where there is none, beside the anchor over
         whatever is there — or, with ``crowded=False``, nothing drawn and None returned, or,
         with ``leader``, on a leader line out to where no line crosses it (a frame pivot
         inside the fan of the crank's twelve positions). With ``leader`` or ``apart`` a free
-        spot keeps 1.1 mm from the other labels (two labels side by side read as one)."""
+        spot keeps 1.1 mm from the other labels (two labels side by side read as one).
+        With ``last_leader`` a label that finds no free spot even farther out goes on a
+        leader as with ``leader`` (a position number where the fan of the other positions'
+        links is densest), instead of over a line."""
         w, h = text_width(text, height), height
         u = prefer / abs(prefer) if abs(prefer) > 1e-12 else 1j
         turns = [0, 1, -1, 2, -2, 3, -3, 4]
@@ -1074,7 +1134,8 @@ class LabelPlacer:
                     ranked = (rank, c, box)
             if best is not None:
                 break
-        if best is None and not leader and ranked is not None and ranked[0][0] + ranked[0][2] > 0:
+        blocked = ranked is not None and ranked[0][0] + ranked[0][2] > 0
+        if best is None and not leader and blocked:
             # no free spot in the rings: a little farther out, about the preferred direction,
             # before a label is put over a line or another label (a position number among
             # the links of the other positions; GB/T 4458.4: no text crossed by a line)
@@ -1090,7 +1151,7 @@ class LabelPlacer:
                                                           box[3] + 0.5), drawn) == 0:
                         best = (c, box)
                         break
-        if best is None and leader:
+        if best is None and (leader or (last_leader and blocked)):
             self.leader(anchor, text, height, prefer, avoid_lines=True)
             return None
         if best is None and ranked is not None and (ranked[0][0] == 0 or crowded):

@@ -227,7 +227,8 @@ def _dimension(msp, d: Dimension) -> None:
     paper = abs(d.p1 - d.p0)
     override = {"dimtxt": d.height, "dimasz": DIM_ARROW, "dimexe": 1.5, "dimexo": 1.0,
                 "dimgap": DIM_GAP, "dimtad": 1, "dimdec": 2, "dimzin": 0, "dimtih": 0,
-                "dimtoh": 0, "dimlfac": d.measurement / paper if paper else 1.0}
+                "dimtoh": int(d.text_at is not None),
+                "dimlfac": d.measurement / paper if paper else 1.0}
     attrs = {"layer": d.layer}
     _lines, _arrows, _text, pos, ang = dimension_geometry(d)
     # the text's middle: its baseline centre raised by half its height
@@ -238,7 +239,9 @@ def _dimension(msp, d: Dimension) -> None:
                                   override=override, dxfattribs=attrs)
         u = (d.p1 - d.p0) / paper if paper else 1.0
         a = d.p0 + 1j * u * d.offset
-        if abs((np.conj(u) * (pos - a)).real - paper / 2) > 1e-6:      # beside, not between
+        if d.text_at is not None:          # level, on a leader from the dimension line
+            dim.set_location(_xy(middle), leader=True)
+        elif abs((np.conj(u) * (pos - a)).real - paper / 2) > 1e-6:    # beside, not between
             dim.set_location(_xy(middle), leader=False)
     else:
         # the text's location on the line from the centre (ezdxf takes the dimension's
@@ -248,7 +251,8 @@ def _dimension(msp, d: Dimension) -> None:
         u = (d.p1 - centre) / radius if radius else 1.0
         w = text_width(dimension_text(d), d.height)
         inside = d.outside == 0
-        at = centre + u * (radius / 2 if inside else radius + DIM_GAP + 0.5 + w / 2)
+        at = centre + u * ((d.along if d.kind == "radius" else 0.5) * radius if inside
+                           else radius + DIM_GAP + 0.5 + w / 2)
         if d.kind == "diameter" and inside:
             at = centre + 1e-3 * u
         add = msp.add_radius_dim if d.kind == "radius" else msp.add_diameter_dim
