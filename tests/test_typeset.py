@@ -1144,6 +1144,33 @@ def test_a_lead_in_never_ends_a_page(tmp_path):
     assert colon_at_page_foot(pdf) == []
 
 
+def test_a_short_derivation_is_not_broken_across_pages(tmp_path):
+    # forty derivations of two display equations after a lead-in ("… follows:"), after texts
+    # of growing length: without the rule (templates/report.typ keep-derivations) a page
+    # ends between the two equations of several of them, where a figure floated to the top
+    # of the next page would stand between them (figures_in_derivations)
+    import pymupdf
+
+    parts = ["# One\n"]
+    for k in range(40):
+        parts.append(_FILLER * (1 + k % 4))
+        parts.append(f"The moment equation of case {k} and the force it gives follow:")
+        parts.append(f"$$ \\Sigma M_{{{k}}} = M_b + (2537 \\times 9.0) \\times 0.01 = 0 $$")
+        parts.append(f"$$ P_{{{k}}} = \\frac{{M_b}}{{l_{{AB}}}} = \\frac{{-228.3}}{{0.0925}} = -2468 $$")
+    pdf = _render(tmp_path, "\n\n".join(parts) + "\n")
+    page_of = {}
+    with pymupdf.open(pdf) as doc:
+        for number, page in enumerate(doc, 1):
+            for row in page_rows(page):
+                m = re.search(r"\((\d+)\)$", row[2])
+                if m:
+                    page_of.setdefault(int(m.group(1)), number)
+    assert sorted(page_of) == list(range(1, 81))
+    assert len(set(page_of.values())) > 3
+    split = [k for k in range(40) if page_of[2 * k + 1] != page_of[2 * k + 2]]
+    assert split == []
+
+
 def test_figures_float_in_order_and_pages_stay_full(tmp_path):
     from PIL import Image
 
