@@ -953,17 +953,19 @@ HALF_EMPTY_OPEN: set[tuple[str, str]] = {(b, lang) for b, langs in {
     "slotter": "zh"}.items() for lang in langs.split()}
 # A figure between the parts of a split table whose text stands BEFORE the table is held back
 # past the table (templates/report.typ: figure-held; the figures whose text follows a split
-# table go to the foot of its last page: after-split). Open:
+# table go to the foot of its last page: after-split). Open (each is a report whose layout did
+# not settle with the figure rules in typst's five passes, set again without them by
+# render/pdf.py compile_pdf, so that nothing holds its figures back):
 TABLES_INTERRUPTED_OPEN = {(b, lang) for b, langs in {
     "linkage_sixbar": "zh", "press": "zh", "slotter": "zh", "textbook_guide_bar": "zh en"}.items()
     for lang in langs.split()}
 # A blank band above a figure at a page's foot (page_holes). Open:
 HOLES_OPEN = {(b, lang) for b, langs in {
     "cam_7_3": "en", "die_cutter": "en", "slotter": "en"}.items() for lang in langs.split()}
-# A figure between two lines of a derivation (figures_in_derivations). Not fixed yet.
-DERIVATION_OPEN = {(b, lang) for b, langs in {
-    "die_cutter": "en", "press": "en", "shaper": "zh en", "shaper_lengths": "zh en"}.items()
-    for lang in langs.split()}
+# A figure between two lines of a derivation (figures_in_derivations). A short derivation is
+# not broken across pages (templates/report.typ: keep-derivations); open: die_cutter en's
+# cam programme (seven equations, its figure 16 on the top of the page where they go on)
+DERIVATION_OPEN = {("die_cutter", "en")}
 
 @pytest.mark.e2e
 @pytest.mark.parametrize("lang", ["zh", "en"])
