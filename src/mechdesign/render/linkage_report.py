@@ -314,6 +314,32 @@ def rim_inertia_factor(inertia: float, rim) -> str:
                                                f(rim.rim_mass, 2)))
 
 
+def flywheel_equation(energy_swing: float, speed_rpm: float, delta: float, jf: str,
+                      energy_digits: int = 4) -> str:
+    """J_F = 900ΔW_max/(π²n²[δ]) with its factors substituted so that they give the printed
+    ``jf``: [δ] as the course writes it (1/30, never 0.0333); n to 0.01 rpm and ΔW_max to
+    ``energy_digits`` significant digits (the text's), each with the fewest more digits
+    that give ``jf`` (shaper: 266.667 and 278.04, where 266.67 and 278.0 give 8.912 for
+    8.914), ΔW_max's first."""
+    d_text = fluctuation(delta)
+    num, _slash, den = d_text.partition("/")
+    d_value = float(num) / float(den) if den else float(num)
+    d_tex = rf"({num}/{den})" if den else d_text
+
+    def chain(n_extra: int, dw_extra: int) -> tuple[str, str, bool]:
+        n_text = f(speed_rpm, 2 + n_extra)
+        dw_text = sig(energy_swing, energy_digits + dw_extra, group=False)
+        value = 900 * float(dw_text) / (np.pi ** 2 * float(n_text) ** 2 * d_value)
+        return n_text, dw_text, gives(value, jf)
+
+    n_text, dw_text, _ok = next(
+        (c for extra in range(5) for n_extra in range(min(extra, 2) + 1)
+         if (c := chain(n_extra, extra - n_extra))[2]),
+        chain(0, 0))
+    return (rf"J_F = \frac{{900\,\Delta W_{{max}}}}{{\pi^2 n^2 [\delta]}} = \frac{{900 \times "
+            rf"{dw_text}}}{{\pi^2 \times {n_text}^2 \times {d_tex}}} = {jf}\ \text{{kg·m}}^2")
+
+
 def realised_flywheel(fly, n_real: float | None, _) -> str | None:
     """The flywheel sized at the nominal speed (the crank's, at which M_b and ΔW_max are
     computed, × the ratio to its shaft) against the speed ``n_real`` [rpm] the drive realises
@@ -463,9 +489,8 @@ def linkage_context(model, k, f_, fly, v, figures: dict, lang: str,
             "n": f(fly.shaft_speed_rpm, 2), "dw": sig(fly.max_energy_swing),
             "at_min": f(fly.phase_at_min * DEG, 1), "at_max": f(fly.phase_at_max * DEG, 1),
             "delta": fluctuation(fly.fluctuation), "jf": sig(fly.inertia),
-            "eq": (rf"J_F = \frac{{900\,\Delta W_{{max}}}}{{\pi^2 n^2 [\delta]}} = \frac{{900 \times "
-                   rf"{sig(fly.max_energy_swing, group=False)}}}{{\pi^2 \times {f(fly.shaft_speed_rpm, 2)}^2 \times "
-                   rf"{f(fly.fluctuation, 4)}}} = {sig(fly.inertia, group=False)}\ \text{{kg·m}}^2"),
+            "eq": flywheel_equation(fly.max_energy_swing, fly.shaft_speed_rpm, fly.fluctuation,
+                                    sig(fly.inertia, group=False)),
             "rim": None, "real": realised_flywheel(fly, flywheel_realised_rpm, _),
         }
         if fly.rim is not None:

@@ -15,7 +15,7 @@ from ...render import figures as fig
 from ...render import guide_bar_report as gb_report
 from ...i18n import N_, tr
 from ...render.fmt import e, f, in_lang, md_meta, sig, time_ratio, verdict, fluctuation
-from ...render.linkage_report import rim_inertia_factor
+from ...render.linkage_report import flywheel_equation, rim_inertia_factor
 
 DEG = 180.0 / np.pi
 
@@ -195,9 +195,8 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
                rf" = {sig(i_ratio, group=False)}") if fl.shaft == "pinion" else r"M_r = M_b",
         "md": (rf"M_d = \frac{{1}}{{2\pi}}\int_0^{{2\pi}} M_r\,d\varphi = {sig(fl.shaft_torque, group=False)}"
                rf"\ \text{{N·m}}"),
-        "jf": (rf"J_F = \frac{{900\,\Delta W_{{max}}}}{{\pi^2 n^2 [\delta]}} = \frac{{900 \times "
-               rf"{sig(fl.max_energy_swing, group=False)}}}{{\pi^2 \times {f(fl.shaft_speed_rpm, 2)}^2 \times "
-               rf"{f(p.fluctuation, 4)}}} = {sig(fl.inertia, group=False)}\ \text{{kg·m}}^2"),
+        "jf": flywheel_equation(fl.max_energy_swing, fl.shaft_speed_rpm, p.fluctuation,
+                                sig(fl.inertia, group=False)),
         "mass": (rf"m = \frac{{4 J_F}}{{D^2}} = \frac{{4 \times {j_mass}}}"
                  rf"{{{f(fl.rim.diameter, 3)}^2}} = {f(fl.rim.rim_mass, 2)}\ \text{{kg}}"),
         "width": (rf"b = \sqrt{{\frac{{4 g J_F}}{{\pi D^3 (H/b) \gamma}}}} = \sqrt{{\frac{{4 \times "
