@@ -246,6 +246,12 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
                        _(", the nominal speed: the crank speed times the gear ratio; the drive "
                          "chapter's shaft speeds are the realised ones, the motor speed divided by the "
                          "chosen ratios, and differ from it by the ratio error")),
+            # ΔE over the crank angle φ: M_r = M_b/i acts on the pinion shaft, which turns
+            # through φ₁ = iφ, so the same work is ∫(i M_d − M_b)dφ (review36: ∫(M_d − M_r)dφ
+            # over φ was ΔW/i)
+            "de": (r"$\Delta E(\varphi) = \int (M_d - M_r)\,d\varphi_1 = \int (i M_d - M_b)\,d\varphi$"
+                   + _(r" ($\varphi_1 = i\varphi$: the flywheel shaft's angle)")
+                   if fl.shaft == "pinion" else r"$\Delta E(\varphi) = \int (M_d - M_r)\,d\varphi$"),
             "dw": sig(fl.max_energy_swing), "jf": sig(fl.inertia),
             "at_min": f(fl.phase_at_min * DEG, 1), "at_max": f(fl.phase_at_max * DEG, 1),
             "D": f(fl.rim.diameter * mm, 0), "b": f(fl.rim.width * mm, 1),
