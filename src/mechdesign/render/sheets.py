@@ -239,6 +239,11 @@ def make_sheets(results: dict, brief, folder: Path, fig_dir: Path, lang: str,
     return collect
 
 
+def sheet_title(name: str, build, lang: str) -> str:
+    """The title of the sheet ``name`` drawn by ``build`` (one of :func:`_builders`), in ``lang``."""
+    return tr(lang)(TITLES[f"{name}_kinematic" if getattr(build, "kinematic_only", False) else name])
+
+
 def write_all(builders: list, brief, folder: Path, fig_dir: Path, lang: str,
               formats: tuple[str, ...], progress: Callable[[str], None] | None = None,
               on_warning: Callable[[str], None] | None = None) -> list[SheetFiles]:
@@ -256,7 +261,7 @@ def write_all(builders: list, brief, folder: Path, fig_dir: Path, lang: str,
     for k, (name, build) in enumerate(builders, start=1):
         say(f"sheet {k}/{len(builders)}: {name}")
         kinematic_only = getattr(build, "kinematic_only", False)
-        title = tr(lang)(TITLES[f"{name}_kinematic" if kinematic_only else name])
+        title = sheet_title(name, build, lang)
         info = title_info(brief.report, title, f"{prefix}-{k:02d}" if prefix else "",
                           k, len(builders), lang)
         try:
