@@ -88,7 +88,9 @@ def analysis_sheet(found, info: TitleInfo, lang: str, labels: dict | None = None
            for key, v in {**LABELS[lang], **(labels or {})}.items()}
     chosen = [str(c) for c in found.polygons.positions]
     unloaded = forces is not None and _unloaded(forces)
-    if unloaded:                  # only the kinematics exist: no empty force cells, no zero curve
+    # only the kinematics exist: no empty force cells, no zero curve, no μF in the notes
+    kinematic_only = forces is None or unloaded
+    if unloaded:
         forces = flywheel = None
     polys = {c: found.polygons.at(c)[:2] if unloaded else found.polygons.at(c) for c in chosen}
     symbols = vector_symbols(getattr(found, "graphical", None))
@@ -106,7 +108,7 @@ def analysis_sheet(found, info: TitleInfo, lang: str, labels: dict | None = None
     _curves(s, model, k, forces, flywheel, lab, (622.0, 72.0, x1 - 8, y1 - 6))
     tb_x0, _, _, tb_y1 = title_block_box(s)
     notes = [lab["scales"] + f":  {sub('μ', 'L')} = {fmt.exact(n_len / 1000)} m/mm ({scale_text(n_len)}); "
-             + lab["each_kin" if unloaded else "each"]]
+             + lab["each_kin" if kinematic_only else "each"]]
     if unloaded:
         notes.append(lab["noload"])
     elif forces is not None:
@@ -123,7 +125,8 @@ def analysis_sheet(found, info: TitleInfo, lang: str, labels: dict | None = None
 
 
 def _unloaded(forces) -> bool:
-    """No load and no masses: every reaction and the balancing torque are exactly zero."""
+    """No load and no masses: every reaction and the balancing torque are exactly zero
+    (:attr:`.sheets.LinkageResults.kinematic_only` with forces computed)."""
     return not np.any(forces.balancing_torque) and \
         not any(np.any(v) for v in forces.reactions.values())
 

@@ -202,7 +202,10 @@ def _eta_factors(etas, eta_b: float, eta_w: float, n_b: int, printed: str):
     return " \\times ".join(ts), tb, tw
 
 
-def drive_context(d, lang: str, figures: dict[str, str], machine_power_eq: str | None = None) -> dict:
+def drive_context(d, lang: str, figures: dict[str, str], machine_power_eq: str | None = None,
+                  gear_pair_last: bool = False) -> dict:
+    """The drive chapter's context. ``gear_pair_last``: the last stage is the mechanism's
+    gear pair, designed in its own chapter (the guide-bar machines), which gives its module."""
     _ = tr(lang)
     m = d.motor
     etas = [st.efficiency for st in d.stages]
@@ -267,7 +270,7 @@ def drive_context(d, lang: str, figures: dict[str, str], machine_power_eq: str |
         "peak": sig(d.peak_factor) if d.peak_from_shaft is not None else None,
         "peak_shaft": _shaft_name(d.peak_from_shaft, len(d.shafts) - 1, _.zh) if d.peak_from_shaft is not None else "",
         "warnings": [md_text(w.text(lang)) for w in d.warnings],
-        "stage_designs": stage_designs(d, lang),
+        "stage_designs": stage_designs(d, lang, gear_pair_last),
         "assumptions": data_assumption_rows(getattr(d, "data_assumptions", ()), lang),
         "fig": figures,
     }
@@ -331,8 +334,9 @@ def _rows(rows: list[list[str]], _) -> list[list[str]]:
     return [[r[0] if _.zh else r[1], grouped(r[2]), grouped(r[3]), *r[4:]] for r in rows]
 
 
-def stage_designs(d, lang: str) -> list[dict]:
-    """Per stage and per shaft: title, text, dimension rows, formulas and check rows."""
+def stage_designs(d, lang: str, gear_pair_last: bool = False) -> list[dict]:
+    """Per stage and per shaft: title, text, dimension rows, formulas and check rows.
+    ``gear_pair_last``: see :func:`drive_context`."""
     from .strength_tex import check_formulas, check_rows
 
     _ = tr(lang)
@@ -361,9 +365,17 @@ def stage_designs(d, lang: str) -> list[dict]:
                           "= {K}$, design torque $T_1 = {T1}$ N·m, face width factor $\\phi_d = {phi_d}$, "
                           "module $m$ = {m_text}.", mats=mats, K=f(g.K, 3), T1=sig(g.T1, group=False),
                           phi_d=f(e['phi_d'], 2), m_text=m_text))
-            if e["open"]:
+            if e["open"] and not g.module_given:
                 text.append(_("Open gears fail by wear: designed by root bending with the module raised 15 % "
                               "for wear; no contact check."))
+            elif e["open"]:
+                # the module is the task's: the stage is checked, not designed (review36: a
+                # module of 12 mm "designed by bending" at 2 % of the allowable stress)
+                given = (_("The module is that of the mechanism's gear pair (chapter \"Gear pair and "
+                           "meshing drawing\"), given by the task")
+                         if gear_pair_last and r is d.stages[-1] else _("The module is given by the task"))
+                text.append(_("{given}: this stage is not designed but checked. Open gears fail by wear; "
+                              "root bending is checked below, with no contact check.", given=given))
             text.append(_("Stress cycles $N_1 = {N1}\\times10^6$, life factors $K_{{HN}} = "
                           "{KHN1}/{KHN2}$, $K_{{FN}} = {KFN1}/{KFN2}$; allowable $[\\sigma_H] = "
                           "{sigma_H}$ MPa, $[\\sigma_F] = {sigma_F1}/{sigma_F2}$ MPa ($S_H = 1$, $S_F = "

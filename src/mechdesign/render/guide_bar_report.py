@@ -179,7 +179,7 @@ def optional_sections(r: dict, lang: str, figures: dict) -> dict:
         fl, p = r["linkage_flywheel"], r["params"]
         pw = (rf"P_w = \bar M_b\,\omega_2 = {product((fl.mean_torque, abs(p.crank_omega)), sig(fl.mean_power, group=False))}"
               rf" = {sig(fl.mean_power, group=False)}\ \text{{W}}")
-        out["drive"] = drive_context(r["drive"], lang, figures, pw)
+        out["drive"] = drive_context(r["drive"], lang, figures, pw, gear_pair_last="gear" in out)
     return out
 
 

@@ -16,7 +16,7 @@ from ..i18n import N_, tr
 from . import figures as fig
 from .fmt import e, f, fluctuation, force_unit, md_text, percent, sentences, sig, tex_name, time_ratio
 from .fmt import verdict as fmt_verdict
-from .fmt import factor_for, factors_for, gives, product
+from .fmt import factor_for, gives, product
 from .label_layout import Label, place
 from .labels import LabelTable, md_names, md_point, mpl_names, mpl_point, point_tex
 
@@ -307,26 +307,37 @@ def _angles_caption(k, lang: str) -> str:
     return _("Transmission and pressure angles against the crank angle")
 
 
-def jf_numbers(fl, dw: str, printed: str) -> str:
-    """The numbers of J_F = 900 ΔW_max/(π² n² [δ]): ΔW_max as ``dw`` prints it, n to 0.01 rpm,
-    [δ] to 0.0001 (0.0333 for 1/30), each with more digits where the printed J_F needs them
-    (900 × 30.18/(π² × 179.27² × 0.0333) gives 2.5716, printed 2.569: [δ] = 0.03333)."""
-    import math
-
-    from ..numbers import significant
-
-    n, delta = f(fl.shaft_speed_rpm, 2), f(fl.fluctuation, 4)
-    w, nn, d = factors_for((fl.max_energy_swing, fl.shaft_speed_rpm, fl.fluctuation),
-                           lambda a, b, c: 900 * a / (math.pi ** 2 * b ** 2 * c), printed,
-                           tuple(significant(t) for t in (dw, n, delta)))
-    return rf"\frac{{900 \times {w}}}{{\pi^2 \times {nn}^2 \times {d}}}"
-
-
 def rim_inertia_factor(inertia: float, rim) -> str:
     """J_F as the factor of the rim mass m = 4 J_F/D², with the digits that give the printed
     mass (4 × 204.13/1.000² = 816.52)."""
     return factor_for(inertia, lambda x: gives(4 * x / float(f(rim.diameter, 3)) ** 2,
                                                f(rim.rim_mass, 2)))
+
+
+def flywheel_equation(energy_swing: float, speed_rpm: float, delta: float, jf: str,
+                      energy_digits: int = 4) -> str:
+    """J_F = 900ΔW_max/(π²n²[δ]) with its factors substituted so that they give the printed
+    ``jf``: [δ] as the course writes it (1/30, never 0.0333); n to 0.01 rpm and ΔW_max to
+    ``energy_digits`` significant digits (the text's), each with the fewest more digits
+    that give ``jf`` (shaper: 266.667 and 278.04, where 266.67 and 278.0 give 8.912 for
+    8.914), ΔW_max's first."""
+    d_text = fluctuation(delta)
+    num, _slash, den = d_text.partition("/")
+    d_value = float(num) / float(den) if den else float(num)
+    d_tex = rf"({num}/{den})" if den else d_text
+
+    def chain(n_extra: int, dw_extra: int) -> tuple[str, str, bool]:
+        n_text = f(speed_rpm, 2 + n_extra)
+        dw_text = sig(energy_swing, energy_digits + dw_extra, group=False)
+        value = 900 * float(dw_text) / (np.pi ** 2 * float(n_text) ** 2 * d_value)
+        return n_text, dw_text, gives(value, jf)
+
+    n_text, dw_text, _ok = next(
+        (c for extra in range(5) for n_extra in range(min(extra, 2) + 1)
+         if (c := chain(n_extra, extra - n_extra))[2]),
+        chain(0, 0))
+    return (rf"J_F = \frac{{900\,\Delta W_{{max}}}}{{\pi^2 n^2 [\delta]}} = \frac{{900 \times "
+            rf"{dw_text}}}{{\pi^2 \times {n_text}^2 \times {d_tex}}} = {jf}\ \text{{kg·m}}^2")
 
 
 def realised_flywheel(fly, n_real: float | None, _) -> str | None:
@@ -478,9 +489,8 @@ def linkage_context(model, k, f_, fly, v, figures: dict, lang: str,
             "n": f(fly.shaft_speed_rpm, 2), "dw": sig(fly.max_energy_swing),
             "at_min": f(fly.phase_at_min * DEG, 1), "at_max": f(fly.phase_at_max * DEG, 1),
             "delta": fluctuation(fly.fluctuation), "jf": sig(fly.inertia),
-            "eq": (rf"J_F = \frac{{900\,\Delta W_{{max}}}}{{\pi^2 n^2 [\delta]}} = "
-                   rf"{jf_numbers(fly, sig(fly.max_energy_swing, group=False), sig(fly.inertia, group=False))}"
-                   rf" = {sig(fly.inertia, group=False)}\ \text{{kg·m}}^2"),
+            "eq": flywheel_equation(fly.max_energy_swing, fly.shaft_speed_rpm, fly.fluctuation,
+                                    sig(fly.inertia, group=False)),
             "rim": None, "real": realised_flywheel(fly, flywheel_realised_rpm, _),
         }
         if fly.rim is not None:

@@ -263,4 +263,4 @@ def _sheet_row(sh, lang: str) -> dict:
     """Strings the templates show for one sheet (a report names a drawing by its title,
     size and scale; the file names are the hand-in's, not the report's)."""
     return {"title": sh.title, "size": sh.size, "scale": sh.scale, "preview": sh.preview,
-            "label": f"fig:sheet-{sh.name}"}
+            "label": f"fig:sheet-{sh.name}", "kinematic_only": getattr(sh, "kinematic_only", False)}

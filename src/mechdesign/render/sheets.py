@@ -27,6 +27,8 @@ TITLES = {
     "transmission": N_("Transmission schematic"),
     "cycle": N_("Motion cycle diagram"),
     "analysis": N_("Linkage: kinematic and force analysis"),
+    # the A1 sheet of a linkage without loads or masses: velocity and acceleration only
+    "analysis_kinematic": N_("Linkage: kinematic analysis"),
     "cam": N_("Cam mechanism design"),
     "gear": N_("Gear meshing drawing"),
 }
@@ -62,6 +64,7 @@ class SheetFiles:
     preview: str
     pdf: str | None
     dxf: str | None
+    kinematic_only: bool = False   # an A1 analysis sheet without force analysis
 
 
 @dataclass(frozen=True)
@@ -75,6 +78,17 @@ class LinkageResults:
     flywheel: object
     polygons: object
     graphical: object = None       # the graphical method's document (its vector symbols)
+
+    @property
+    def kinematic_only(self) -> bool:
+        """No force analysis: no forces computed, or no load and no masses (every reaction
+        and the balancing torque exactly zero). The A1 sheet then draws the velocity and
+        acceleration polygons only and is titled a kinematic analysis."""
+        import numpy as np
+
+        f = self.forces
+        return f is None or (not np.any(f.balancing_torque)
+                             and not any(np.any(v) for v in f.reactions.values()))
 
 
 def linkage_results(results: dict) -> LinkageResults | None:
@@ -97,6 +111,9 @@ def linkage_results(results: dict) -> LinkageResults | None:
 
 
 def _builders(results: dict, brief) -> list[tuple[str, Callable[[TitleInfo, str], Sheet]]]:
+    """(name, build(info, lang)) of each sheet of ``results``. The A1 analysis sheet of a
+    linkage without force analysis has its builder's ``kinematic_only`` set: its title is
+    :data:`TITLES`' "analysis_kinematic"."""
     out = []
     found = linkage_results(results)
     out.extend(_diagram_builders(results, found))
@@ -106,6 +123,7 @@ def _builders(results: dict, brief) -> list[tuple[str, Callable[[TitleInfo, str]
 
             return analysis_sheet(found, info, lang)[0]
 
+        analysis.kinematic_only = found.kinematic_only
         out.append(("analysis", analysis))
     cam = results.get("cam")
     if cam is not None and hasattr(cam, "grid"):
@@ -221,6 +239,11 @@ def make_sheets(results: dict, brief, folder: Path, fig_dir: Path, lang: str,
     return collect
 
 
+def sheet_title(name: str, build, lang: str) -> str:
+    """The title of the sheet ``name`` drawn by ``build`` (one of :func:`_builders`), in ``lang``."""
+    return tr(lang)(TITLES[f"{name}_kinematic" if getattr(build, "kinematic_only", False) else name])
+
+
 def write_all(builders: list, brief, folder: Path, fig_dir: Path, lang: str,
               formats: tuple[str, ...], progress: Callable[[str], None] | None = None,
               on_warning: Callable[[str], None] | None = None) -> list[SheetFiles]:
@@ -237,7 +260,8 @@ def write_all(builders: list, brief, folder: Path, fig_dir: Path, lang: str,
     sheet_dir = Path(folder) / "sheets"
     for k, (name, build) in enumerate(builders, start=1):
         say(f"sheet {k}/{len(builders)}: {name}")
-        title = tr(lang)(TITLES[name])
+        kinematic_only = getattr(build, "kinematic_only", False)
+        title = sheet_title(name, build, lang)
         info = title_info(brief.report, title, f"{prefix}-{k:02d}" if prefix else "",
                           k, len(builders), lang)
         try:
@@ -264,6 +288,7 @@ def write_all(builders: list, brief, folder: Path, fig_dir: Path, lang: str,
                               plain(sheet.info.scale) if sheet.info is not None else "",
                               preview.relative_to(rel).as_posix(),
                               None if pdf is None else pdf.relative_to(rel).as_posix(),
-                              None if dxf is None else dxf.relative_to(rel).as_posix()))
+                              None if dxf is None else dxf.relative_to(rel).as_posix(),
+                              kinematic_only))
     write_sheets(jobs)
     return out

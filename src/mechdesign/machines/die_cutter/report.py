@@ -17,7 +17,7 @@ from ...render.fmt import e, f, length, md_meta, md_text, sig, fluctuation, fact
 from ...render.fmt import number, product, residue, time_ratio, verdict
 from ...render.labels import pgettext, translated
 from ...render.fmt import sentences
-from ...render.linkage_report import jf_numbers, realised_flywheel, rim_inertia_factor
+from ...render.linkage_report import flywheel_equation, realised_flywheel, rim_inertia_factor
 from ...stages.drive import shaft_numeral
 
 DEG = 180.0 / np.pi
@@ -441,8 +441,9 @@ def _flywheel(r, p, b, _) -> dict:
     eq = {
         "md": (rf"M_d = \frac{{1}}{{2\pi}}\oint M_b\,d\varphi = {sig(fl.mean_torque, group=False)}\ \text{{N·m}}"
                rf"\ (\text{{{crank_shaft}}})"),
-        "jf": (rf"J_F = \frac{{900\,\Delta W_{{max}}}}{{\pi^2 n^2 [\delta]}} = "
-               rf"{jf_numbers(fl, f(fl.max_energy_swing, 1), f(fl.inertia, 3))} = {f(fl.inertia, 3)}\ \text{{kg·m}}^2"),
+        # ΔW_max with the text's digits (3499.5) or more
+        "jf": flywheel_equation(fl.max_energy_swing, fl.shaft_speed_rpm, fl.fluctuation,
+                                f(fl.inertia, 3), len(f(fl.max_energy_swing, 1).replace(".", "").lstrip("0"))),
         "crank": (rf"J_F' = J_F\,i^2 = {f(fl.inertia, 3)} \times {factor_for(fl.speed_ratio, fl_ratio_ok)}^2 = "
                   rf"{f(fl.inertia_on_crank, 1)}\ \text{{kg·m}}^2"),
         "mass": (rf"m = \frac{{4 J_F}}{{D^2}} = \frac{{4 \times {j_mass}}}"
