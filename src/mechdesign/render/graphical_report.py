@@ -729,6 +729,18 @@ def _forces(pos, lang: str) -> list[dict]:
                     # the text alike; its magnitude is the length drawn in the polygon
                     "pb": None if fg.balancing_force is None else _numg(_signed_pb(fg)),
                     "pb_abs": None if fg.balancing_force is None else _numg(abs(fg.balancing_force))})
+    # one known force, one number: a force known in several groups (the guide bar's F_R34,
+    # F_R43, the slider's F_R23 and the crank's F_R32 of one magnitude) prints in every row
+    # with the most digits any of its equations needed (slotter: 1137 and 1137.3)
+    same: dict[float, list] = {}
+    for fc, fg in zip(out, pos.forces):
+        for row, v in zip(fc["rows"], fg.vectors):
+            if v.known and abs(v.read) < 1e6:
+                same.setdefault(float(f"{v.read:.9g}"), []).append(row)
+    for rows in same.values():
+        best = max((r[3] for r in rows), key=lambda t: _digits(t))
+        for r in rows:
+            r[3] = best
     return out
 
 
