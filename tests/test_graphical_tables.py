@@ -100,3 +100,29 @@ def test_the_cranks_rates_are_given_not_measured(example_results, name, lang):
         assert f"_{{{link}}}$" not in line, line
         assert w != 0 and len(m[2].replace("-", "").replace(".", "").lstrip("0")) == 4, m[2]
     assert found == md.count("_kin.png")
+
+
+@pytest.mark.parametrize("name", FORCES)
+def test_a_known_forces_length_times_mu_gives_its_value(example_results, name):
+    """A known force (√) is drawn at its own value: its printed length × μF gives the value
+    printed beside it, to the value's last digit (shaper 表 12: F_R54 "33.0 mm, 1662.5 N" at
+    μF = 50 gave 1650; die_cutter F_R23^t "1.00 mm, 49.9 N"). A measured one is a multiple
+    of 0.5 mm and its value is length × μF as that product is (66.5 × 25 = 1662.5)."""
+    from mechdesign.render.fmt import gives, number
+    from mechdesign.render.graphical_report import _forces
+
+    doc = [v for v in example_results(name).values() if type(v).__name__ == "GraphicalDocument"][0]
+    checked = 0
+    for pos in doc.positions:
+        for fc, fg in zip(_forces(pos, "en"), pos.forces):
+            for (_sym, mark, length, value), v in zip(fc["rows"], fg.vectors):
+                if "times" in value or "×" in value:
+                    continue
+                product = float(length) * fg.scale
+                if mark == "√":
+                    assert gives(product, value.replace("\u202f", "")), (name, _sym, length, value)
+                else:
+                    assert float(length) * 2 == round(float(length) * 2), (name, _sym, length)
+                    assert product == pytest.approx(number(value), abs=1e-9), (name, _sym, length, value)
+                checked += 1
+    assert checked

@@ -18,7 +18,7 @@ import numpy as np
 
 from . import figures as fig
 from ..i18n import N_, tr
-from .fmt import exact, f, gives, grouped, mpl_text, sci, sig, tex_name
+from .fmt import GROUP, exact, f, gives, grouped, mpl_text, sci, sig, tex_name
 from .label_layout import Label, place
 from .labels import LabelTable, mpl_point, pgettext, point_tex, tex_names
 
@@ -168,11 +168,19 @@ def _mm(x: float) -> str:
     return f"{x:.1f}"
 
 
-def _len(x: float) -> str:
+def _len(x: float, scale: float | None = None, value: str | None = None) -> str:
     """A length of a polygon's table: a measured one (0.5 mm) to 0.1 mm; a known vector
-    drawn at its exact length (the crank's ω·l, a known force |F|/μF) to 0.01 mm, so that
-    length × μ gives the value listed (38.75 mm × 0.02 = 0.775 m/s, not 38.5 mm)."""
-    return _mm(x) if abs(x * 2 - round(x * 2)) < 1e-9 else f"{x:.2f}"
+    drawn at its exact length (the crank's ω·l, a known force |F|/μF) to 0.01 mm or more,
+    so that length × ``scale`` gives the ``value`` listed (38.75 mm × 0.02 = 0.775 m/s, not
+    38.5 mm; 0.998 mm × 50 = 49.9 N, not 1.00 mm)."""
+    if abs(x * 2 - round(x * 2)) < 1e-9:
+        return _mm(x)
+    for d in (2, 3, 4):
+        text = f"{x:.{d}f}"
+        if scale is None or value is None or "times" in value or "×" in value or gives(
+                float(text) * scale, value.replace(GROUP, "")):
+            break
+    return text
 
 
 def _measured(x: float) -> str:
@@ -593,7 +601,8 @@ def _kin(poly, lang: str, unit: str, rate_name: str, links: dict | None = None,
             if t.known and (t.direction == "known" or t.length == 0):
                 seg = length = value = "—"
             else:
-                seg, length, value = segment(t.tail, t.head), _len(t.length), _numg(t.read)
+                value = _numg(t.read)
+                seg, length = segment(t.tail, t.head), _len(t.length, poly.scale, value)
             g["rows"].append([f"${sym(t.symbol)}$", mag, dirs, seg, length, value])
     for g in groups:
         del g["seen"]
@@ -741,6 +750,11 @@ def _forces(pos, lang: str) -> list[dict]:
         best = max((r[3] for r in rows), key=lambda t: _digits(t))
         for r in rows:
             r[3] = best
+    # a known force's length, drawn at |F|/μF: with the digits that give its value
+    for fc, fg in zip(out, pos.forces):
+        for row, v in zip(fc["rows"], fg.vectors):
+            if v.known:
+                row[2] = _len(v.length, fg.scale, row[3])
     return out
 
 
