@@ -291,7 +291,7 @@ def test_every_stated_direction_is_the_vectors_direction(example_results, name):
 def test_guide_bar_force_of_the_moment_equation_is_known_in_the_polygon(example_results, name):
     """The slider's force on the guide bar solved by the bar's moment equation about its pivot
     (shaper pos. 4: F_R34 = −2537 N) is known in the force polygon that follows: marked known,
-    drawn for that value (to 0.5 mm) and read as it, and carried on to the crank at that value
+    drawn for that value (at its exact length) and read as it, and carried on to the crank at that value
     (it had been re-measured as an unknown, 50.5 mm = 2525 N, and the crank took 2525). The
     crank's moment equation then balances: M_b + Σ F·h·μl + couples = 0."""
     doc = [v for v in example_results(name).values() if type(v).__name__ == "GraphicalDocument"][0]

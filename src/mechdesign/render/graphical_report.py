@@ -712,7 +712,7 @@ def _forces(pos, lang: str) -> list[dict]:
         closing, slider, slider_link = _polygon_sum(v for v in fg.vectors
                                                     if v.kind not in ("total", "internal"))
         # a given force (a weight, an inertia force, the resistance) is listed with its given
-        # value, drawn to the nearest 0.5 mm; what is read off the polygon is the rest
+        # value, drawn at its exact length |F|/μF; what is read off the polygon is the rest
         given = {ld.name: abs(ld.value) for lds in fg.loads.values() for ld in lds}
 
         def known(name, value, shown=shown, pairs=pairs):
