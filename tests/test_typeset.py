@@ -943,14 +943,14 @@ CONTINUED_OPEN: set[tuple[str, str]] = set()
 # in the flow under the sheets' table (previews35), every figure is cited (cite35).
 # a figure more than a page after its text (figures_far_from_anchor): press's figure 16 (the
 # cam profile, two pages after its text), slotter en's figure 16
-FAR_OPEN: set[tuple[str, str]] = {("press", "zh"), ("slotter", "en")}
+FAR_OPEN: set[tuple[str, str]] = {("press", "zh")}
 WIDE_GAPS_OPEN: set[tuple[str, str]] = set()
 # pages where a chapter's text ends above the half and its last figure, too tall for the room
 # left, went on to the top of the next page, above the next chapter's heading (a level-1
 # heading flushes the floats; before, the figure stood under the next chapter's heading)
 HALF_EMPTY_OPEN: set[tuple[str, str]] = {(b, lang) for b, langs in {
-    "cam_7_3": "zh", "crank_rocker": "zh en", "lockbeam_cam": "zh", "shaper": "zh",
-    "slotter": "zh"}.items() for lang in langs.split()}
+    "cam_7_3": "zh", "crank_rocker": "zh en", "lockbeam_cam": "zh", "shaper": "zh"}.items()
+    for lang in langs.split()}
 # A figure between the parts of a split table whose text stands BEFORE the table is held back
 # past the table (templates/report.typ: figure-held; the figures whose text follows a split
 # table go to the foot of its last page: after-split). Open:
