@@ -949,8 +949,8 @@ WIDE_GAPS_OPEN: set[tuple[str, str]] = set()
 # left, went on to the top of the next page, above the next chapter's heading (a level-1
 # heading flushes the floats; before, the figure stood under the next chapter's heading)
 HALF_EMPTY_OPEN: set[tuple[str, str]] = {(b, lang) for b, langs in {
-    "cam_7_3": "zh", "crank_rocker": "zh en", "lockbeam_cam": "zh", "shaper": "zh"}.items()
-    for lang in langs.split()}
+    "cam_7_3": "zh", "crank_rocker": "zh en", "lockbeam_cam": "zh", "shaper": "zh",
+    "slotter": "zh"}.items() for lang in langs.split()}
 # A figure between the parts of a split table whose text stands BEFORE the table is held back
 # past the table (templates/report.typ: figure-held; the figures whose text follows a split
 # table go to the foot of its last page: after-split). Open:
@@ -962,7 +962,7 @@ HOLES_OPEN = {(b, lang) for b, langs in {
     "cam_7_3": "en", "die_cutter": "en", "slotter": "en"}.items() for lang in langs.split()}
 # A figure between two lines of a derivation (figures_in_derivations). Not fixed yet.
 DERIVATION_OPEN = {(b, lang) for b, langs in {
-    "die_cutter": "en", "press": "en", "shaper_lengths": "zh en"}.items()
+    "die_cutter": "en", "press": "en", "shaper": "zh en", "shaper_lengths": "zh en"}.items()
     for lang in langs.split()}
 
 @pytest.mark.e2e
