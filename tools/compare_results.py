@@ -322,6 +322,27 @@ for _machine in ("drive", "furnace_pusher", "die_cutter"):
             "geometry.z_min", "geometry.x_min1", "geometry.x_min2",
             "checks.*.inputs.z_min", "checks.*.inputs.x_min", "checks.*.allowable"))
 
+# Issue 19 (session 36, review36 Top 1 and 11): in the graphical method the crank's v_A = ω·l
+# and a_A^n = ω²·l (ω the brief's, α = 0) are given, not measured: drawn at their exact length
+# and read as their value (the shaper's 8.378 × 0.0925 = 0.775 m/s was drawn 38.5 mm and read
+# 0.770), and no longer compared with the analytic values (comparison rows v_A, a_A gone, the
+# rows after them move up); a known force of a force polygon is drawn at its exact length
+# |F|/μF (it was rounded to 0.5 mm while listed at its value: 33.0 mm × 50 ≠ 1662.5 N). What
+# is measured after them (0.5 mm) follows: points, lengths and reads, ω and α of the other
+# links, inertia forces, reactions, M_b and P_b (v_A: shaper 0.770 → 0.77497 m/s, lockbeam
+# 0.0520 and 0.0525 → 0.05236 m/s; M_b at the second polygon position: press 87.54 → 88.71,
+# slotter 43.83 → 44.36, shaper_lengths 102.13 → 105.08 N·m; the shaper's unchanged).
+# The analytic values are unchanged; every graphical value stays within the drawing accuracy
+# (tests/test_graphical.py: test_crank_pin_speed_is_omega_l_at_every_position_and_not_compared,
+# test_known_forces_are_drawn_at_their_value).
+_GIVEN36 = "issue 19 (session 36): the crank's ω·l, ω²·l and the known forces drawn at their exact length"
+for _machine in ("shaper", "slotter", "press", "furnace_pusher", "die_cutter", "linkage",
+                 "crank_rocker", "lockbeam"):
+    EXPECTED.setdefault(_machine, []).extend(
+        (f"*graphical.positions.*.{leaf}", _GIVEN36)
+        for leaf in ("velocity.*", "acceleration.*", "forces.*", "balancing_torque",
+                     "comparison.*"))
+
 # Self-check residuals: round-off, not results. Compared only as "still tiny".
 IGNORED = ("*closure_residual", "*stroke_error", "*power_balance_residual", "*power_residual*",
            "*self_check*residual*")

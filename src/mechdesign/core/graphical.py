@@ -3,7 +3,8 @@
 At one position of a mechanism (its kinematic diagram: the joint positions, drawn at μl),
 the velocity and acceleration polygons are built group by group as on paper: a vector whose
 magnitude is known is drawn at its scale with its length rounded to the drawing's accuracy
-(0.5 mm); a vector whose direction only is known is a line through a drawn point; the
+(0.5 mm) — a given one (the crank's ω·l and ω²·l, its ω the brief's) and a known force at
+their exact length, so that they are listed at their own value; a vector whose direction only is known is a line through a drawn point; the
 unknown point of the polygon is where two such lines meet (:func:`intersect`). Its lengths
 are then *measured* (rounded to 0.5 mm) and read back at the scale, and the angular
 velocities and accelerations found from them (ω = v_CB / l_CB) are what the later groups
@@ -110,6 +111,9 @@ class KinDrawing:
     omega: dict = field(default_factory=dict)        # link → ω read [rad/s]
     alpha: dict = field(default_factory=dict)        # link → α read [rad/s²]
     slide: dict = field(default_factory=dict)        # slider link → relative vector read (SI)
+    # points reached from the pole by given vectors only (the crank pin: v_A = ω·l, a_A = ω²·l
+    # with ω the brief's): drawn at their exact length and listed at their computed value
+    exact: set = field(default_factory=set)
 
     def __post_init__(self):
         self.points.setdefault(self.pole, 0j)
@@ -118,9 +122,13 @@ class KinDrawing:
     def pole(self) -> str:
         return "p" + self.prime
 
-    def drawn(self, symbol, tail, value: complex, head, direction, kind) -> Term:
-        """A vector of known magnitude and direction, drawn at its rounded length."""
-        length = rounded(abs(value) / self.scale)
+    def drawn(self, symbol, tail, value: complex, head, direction, kind, given=False) -> Term:
+        """A vector of known magnitude and direction, drawn at its rounded length; a
+        ``given`` one (ω·l of the crank, whose ω is the brief's) at its exact length."""
+        given = given and (tail == self.pole or tail in self.exact)
+        length = abs(value) / self.scale if given else rounded(abs(value) / self.scale)
+        if given:
+            self.exact.add(head)
         self.points[head] = self.points[tail] + length * unit(value)
         return Term(symbol, True, direction, tail, head, length * self.scale * unit(value),
                     length, length * self.scale, kind)
@@ -132,10 +140,15 @@ class KinDrawing:
         return Term(symbol, known, direction, tail, head, length * self.scale * unit(d),
                     length, length * self.scale, kind)
 
+    def length(self, name: str) -> float:
+        """The length pole → ``name`` [mm]: measured (0.5 mm), exact for a given point."""
+        d = abs(self.points[name])
+        return d if name in self.exact else rounded(d)
+
     def read(self, name: str) -> complex:
-        """The absolute vector of polygon point ``name`` as measured from the pole."""
-        d = self.points[name]
-        return rounded(abs(d)) * self.scale * unit(d)
+        """The absolute vector of polygon point ``name`` as measured from the pole (a
+        given point's as computed)."""
+        return self.length(name) * self.scale * unit(self.points[name])
 
 
 @dataclass(frozen=True)
@@ -221,28 +234,32 @@ def kinematic_drawing(mech, pos: dict, omega2: float, kind: str, scale: float,
     def I(p):     # noqa: E743 - the polygon image of p
         return img(p, frame, pr)
 
+    # the crank's ω and α are the brief's: its vectors ω·l, ω²·l are given, not measured
+    given = {g.link for g in mech.groups if isinstance(g, Crank)}
+
     def rot(tail_pt, head_pt, link, head_img=None, rel_sym=None):
         """Known rotation terms of head relative to tail on ``link`` (ω, α known)."""
         r = pos[head_pt] - pos[tail_pt]
         sub = rel_sym or f"{head_pt}{tail_pt}"
         t0 = I(tail_pt)
+        ex = link in given
         if not acc:
             return [d.drawn(_sym("v", sub), t0, 1j * w[link] * r, head_img or I(head_pt),
-                            f"perp:{tail_pt}{head_pt}", "relative")]
+                            f"perp:{tail_pt}{head_pt}", "relative", ex)]
         out = []
         n = -w[link] ** 2 * r
         a_t = 1j * d.alpha.get(link, 0.0) * r
         mid = (head_img or I(head_pt)) if abs(a_t) == 0 else f"n{head_pt.lower()}{pr}"
-        out.append(d.drawn(_sym("a^n", sub), t0, n, mid, f"to:{head_pt}{tail_pt}", "normal"))
+        out.append(d.drawn(_sym("a^n", sub), t0, n, mid, f"to:{head_pt}{tail_pt}", "normal", ex))
         if abs(a_t) > 0:
             out.append(d.drawn(_sym("a^t", sub), mid, a_t, head_img or I(head_pt),
-                               f"perp:{tail_pt}{head_pt}", "tangential"))
+                               f"perp:{tail_pt}{head_pt}", "tangential", ex))
         return out
 
     def known(p):
         return [] if p in frame else [Term(_sym(x, p), True, "known", d.pole, I(p),
-                                           d.read(I(p)), rounded(abs(d.points[I(p)])),
-                                           rounded(abs(d.points[I(p)])) * scale, "absolute")]
+                                           d.read(I(p)), d.length(I(p)),
+                                           d.length(I(p)) * scale, "absolute")]
 
     def signed_rate(r: complex, v: Term) -> float:
         """ω (or α) of a link from the measured relative vector v ⊥ r: |v|/|r| with the
@@ -260,8 +277,7 @@ def kinematic_drawing(mech, pos: dict, omega2: float, kind: str, scale: float,
                 d.alpha[g.link] = 0.0
                 terms = rot(g.pivot, g.tip, g.link)
             left = Term(_sym(x, g.tip), True, terms[0].direction, d.pole, I(g.tip),
-                        d.read(I(g.tip)),
-                        rounded(abs(d.points[I(g.tip)])), rounded(abs(d.points[I(g.tip)])) * scale,
+                        d.read(I(g.tip)), d.length(I(g.tip)), d.length(I(g.tip)) * scale,
                         "absolute")
             d.equations.append(VectorEquation(name, (left,), tuple(terms)))
         elif isinstance(g, LinkPoint):
@@ -357,7 +373,7 @@ def kinematic_drawing(mech, pos: dict, omega2: float, kind: str, scale: float,
 
 
 def _abs_term(d: KinDrawing, x, sub, point, known=True, direction="") -> Term:
-    length = rounded(abs(d.points[point]))
+    length = d.length(point)
     return Term(_sym(x, sub), known, direction or "known", d.pole, point,
                 length * d.scale * unit(d.points[point]), length, length * d.scale, "absolute")
 
@@ -409,11 +425,11 @@ class _ForcePolygon:
         self.scale, self.points, self.vectors = scale, {"0": 0j}, []
 
     def add(self, name, value: complex, kind="known", known=True) -> Term:
-        """A known force: drawn to the nearest 0.5 mm at μF, read as its own value (a load,
-        P_b, a force a moment equation gave: its table lists what is drawn for, not the
-        drawn length times μF)."""
+        """A known force (a load, P_b, a force a moment equation gave): drawn at its exact
+        length |F|/μF and read as its own value, so that its length × μF is the value its
+        table lists (drawn to the nearest 0.5 mm it gave 33.0 mm × 50 = 1650 for 1662.5 N)."""
         tail = list(self.points)[-1]
-        length = rounded(abs(value) / self.scale)
+        length = abs(value) / self.scale
         head = str(len(self.points))
         self.points[head] = self.points[tail] + length * unit(value)
         t = Term(name, known, "", tail, head, length * self.scale * unit(value), length,
@@ -558,7 +574,7 @@ def force_drawing(mech, pos: dict, loads: dict, couples: dict, mu_l: float, mu_f
             last = t_sb.tail
             for f in loads.get(sl, []):
                 if abs(f.value) > 0:
-                    length = rounded(abs(f.value) / mu)
+                    length = abs(f.value) / mu        # a known force: exact, as in add()
                     head = f"s{len(fp.points)}"
                     fp.points[head] = fp.points[last] + length * unit(f.value)
                     fp.vectors.append(Term(f.name, True, "", last, head,

@@ -18,7 +18,7 @@ import numpy as np
 
 from . import figures as fig
 from ..i18n import N_, tr
-from .fmt import exact, f, gives, grouped, mpl_text, sci, tex_name
+from .fmt import GROUP, exact, f, gives, grouped, mpl_text, sci, sig, tex_name
 from .label_layout import Label, place
 from .labels import LabelTable, mpl_point, pgettext, point_tex, tex_names
 
@@ -166,6 +166,65 @@ def _numg(x: float) -> str:
 
 def _mm(x: float) -> str:
     return f"{x:.1f}"
+
+
+def _len(x: float, scale: float | None = None, value: str | None = None) -> str:
+    """A length of a polygon's table: a measured one (0.5 mm) to 0.1 mm; a known vector
+    drawn at its exact length (the crank's ω·l, a known force |F|/μF) to 0.01 mm or more,
+    so that length × ``scale`` gives the ``value`` listed (38.75 mm × 0.02 = 0.775 m/s, not
+    38.5 mm; 0.998 mm × 50 = 49.9 N, not 1.00 mm)."""
+    if abs(x * 2 - round(x * 2)) < 1e-9:
+        return _mm(x)
+    for d in (2, 3, 4):
+        text = f"{x:.{d}f}"
+        if scale is None or value is None or "times" in value or "×" in value or gives(
+                float(text) * scale, value.replace(GROUP, "")):
+            break
+    return text
+
+
+def _measured(x: float) -> str:
+    """A force read off a polygon, length (0.5 mm) × μF, as that product gives it (66.5 ×
+    25 = 1662.5 N, not 1662: its reaction is listed at 1662.5 where it is a known force),
+    with at least :func:`_num`'s digits; ungrouped (a million or more: :func:`_num`)."""
+    text = _num(x)
+    if "times" in text:
+        return text
+    full = exact(x, digits=7, group=False)
+    return full if _digits(full) > _digits(text) else text
+
+
+_PAIR = re.compile(r"R([0-9A-Za-z])([0-9A-Za-z])")
+
+
+def _pair(name: str) -> str | None:
+    """The reaction's counterpart: "R45" → "R54" (the force of 5 on 4 and of 4 on 5)."""
+    m = _PAIR.fullmatch(str(name))
+    return f"R{m[2]}{m[1]}" if m else None
+
+
+def _polygon_sum(vectors) -> tuple[str, str | None, str | None]:
+    """The force polygon's closing equation; in a guide-bar group (RPR) the bar's polygon
+    alone and the slider's apart (孙桓: link 4: G⃗4 + F⃗I4 + F⃗R54 + F⃗R34 + F⃗R74 = 0; slider 3:
+    F⃗R23 = −F⃗R43 = F⃗R34), not one sum that adds the pair F_R34 + F_R43 (= 0).
+    Returns (the polygon's equation, the slider's equation or None, the slider's link)."""
+    def vec(v):
+        return r"\vec " + sym(v.symbol)
+
+    vs = list(vectors)
+    names = [v.symbol for v in vs]
+    cut = next((i for i, v in enumerate(vs) if _pair(v.symbol) in names[:i]), None)
+    if cut is None:
+        return " + ".join(vec(v) for v in vs) + " = 0", None, None
+    bar, slider = vs[:cut], vs[cut:]
+    back = slider[0]                       # F_R43: the bar's force on the slider
+    link = back.symbol[2]
+    if len(slider) == 2:                   # no load of its own: its pin carries it back
+        pin = slider[1]
+        second = f"{vec(pin)} = -{vec(back)} = \\vec {sym(_pair(back.symbol))}"
+    else:
+        second = " + ".join(vec(v) for v in slider) + " = 0"
+    return " + ".join(vec(v) for v in bar) + " = 0", second, link
 
 
 def _scale(x: float) -> str:
@@ -372,7 +431,7 @@ def _force_figure(path: Path, points: dict, length_scale: float, fg, members: di
         lines2: list[tuple[complex, complex]] = []
         zs2 = list(fg.points.values()) or [0j]
         span2 = max([abs(a - b) for a in zs2 for b in zs2] + [1e-9])
-        drawn: list[tuple[complex, complex, list[str], str]] = []   # one label per segment
+        drawn: list[tuple] = []   # one label per segment: a, b, names, colour, symbols, pair
         for v in fg.vectors:
             if v.tail in fg.points and v.head in fg.points:
                 c = _COLORS.get({"normal": "normal_f", "tangential": "tangential_f"}.get(v.kind, v.kind), "k")
@@ -384,15 +443,24 @@ def _force_figure(path: Path, points: dict, length_scale: float, fg, members: di
                 for seg in drawn:       # the same segment either way: one label naming all
                     if (abs(seg[0] - a) + abs(seg[1] - b) <= COINCIDENT * span2
                             or abs(seg[0] - b) + abs(seg[1] - a) <= COINCIDENT * span2):
-                        seg[2].append(sym(v.symbol))
+                        # the guide bar's force on the slider back along the slider's force on
+                        # the bar (F_R43 = −F_R34) is not a second name of that side: the side
+                        # is F_R34, equal to the slider's pin force (F_R34 = F_R23)
+                        if _pair(v.symbol) in seg[4]:
+                            seg[5].append(True)
+                        else:
+                            seg[2].append(sym(v.symbol))
                         break
                 else:
-                    drawn.append((a, b, [sym(v.symbol)], c))
+                    drawn.append((a, b, [sym(v.symbol)], c, [v.symbol], []))
+                    continue
+                seg[4].append(v.symbol)
         labels2 = []
-        for a, b, names, c in drawn:
+        for a, b, names, c, _symbols, pair in drawn:
             n = 1j * (b - a) / abs(b - a)
             # the names of one segment stacked beside a steep one, in a row beside a flat one
             sep = ",\n" if abs((b - a).imag) > abs((b - a).real) else ", "
+            sep = " = " if pair else sep
             labels2.append(Label(sep.join(f"${mpl_math(s)}$" for s in names), (a + b) / 2, (n, -n),
                                  {"fontsize": LABEL_SIZE, "color": c}))
         for name, z in fg.points.items():
@@ -533,7 +601,8 @@ def _kin(poly, lang: str, unit: str, rate_name: str, links: dict | None = None,
             if t.known and (t.direction == "known" or t.length == 0):
                 seg = length = value = "—"
             else:
-                seg, length, value = segment(t.tail, t.head), _mm(t.length), _numg(t.read)
+                value = _numg(t.read)
+                seg, length = segment(t.tail, t.head), _len(t.length, poly.scale, value)
             g["rows"].append([f"${sym(t.symbol)}$", mag, dirs, seg, length, value])
     for g in groups:
         del g["seen"]
@@ -634,14 +703,20 @@ def _signed_pb(fg) -> float:
 def _forces(pos, lang: str) -> list[dict]:
     out = []
     mu_l = pos.length_scale
+    # a reaction read off an earlier group's polygon, as its table prints it: the later
+    # group's known force of the pair (F_R54 of F_R45) prints the same digits (issue 19)
+    measured: dict[str, str] = {}
     for n, fg in enumerate(pos.forces):
+        pairs = {ld.name: measured[_pair(ld.name)] for lds in fg.loads.values() for ld in lds
+                 if _pair(ld.name) in measured}
         # a known force prints with one number of decimals in the group's whole section (the
         # known-loads line, its equations, its polygon row): the most any of its equations
         # needs, fed back until no equation needs more
+        seed = {k: _digits(v) - _digits(_num(float(v))) for k, v in pairs.items()}
         least: dict[str, int] = {}
         for _pass in range(4):
             shown: dict[str, str] = {}
-            moments, couple = _group_moments(fg, mu_l, lang, least, shown)
+            moments, couple = _group_moments(fg, mu_l, lang, {**seed, **least}, shown)
             need = {k: _digits(v) - _digits(_num(_force_of(fg, k))) for k, v in shown.items()}
             if need == least:
                 break
@@ -650,28 +725,52 @@ def _forces(pos, lang: str) -> list[dict]:
         # moment equation said so) is no side of the polygon: left out of its vector
         # equation and its table, as the figure leaves it out (issue 19)
         sides = [v for v in fg.vectors if not known_zero(v)]
-        closing = " + ".join(r"\vec " + sym(v.symbol) for v in sides
-                             if v.kind not in ("total", "internal")) + " = 0"
+        closing, slider, slider_link = _polygon_sum(v for v in sides
+                                                    if v.kind not in ("total", "internal"))
         # a given force (a weight, an inertia force, the resistance) is listed with its given
-        # value, drawn to the nearest 0.5 mm; what is read off the polygon is the rest
+        # value, drawn at its exact length |F|/μF; what is read off the polygon is the rest
         given = {ld.name: abs(ld.value) for lds in fg.loads.values() for ld in lds}
 
-        def known(name, value, shown=shown):
-            return grouped(shown[name]) if name in shown else _numg(value)
+        def known(name, value, shown=shown, pairs=pairs):
+            return grouped(shown[name]) if name in shown else (
+                grouped(pairs[name]) if name in pairs else _numg(value))
 
-        rows = [[f"${sym(v.symbol)}$", "√" if v.known else "?", _mm(v.length),
-                 known(v.symbol, given[v.symbol]) if v.known and v.symbol in given else _numg(v.read)]
-                for v in sides]
+        def read(v):
+            return _numg(v.read) if v.known or abs(v.read) >= 1e6 else grouped(_measured(v.read))
+
+        rows = [[f"${sym(v.symbol)}$", "√" if v.known else "?", _len(v.length),
+                 known(v.symbol, given[v.symbol]) if v.known and v.symbol in given else
+                 read(v)] for v in sides]
+        measured.update((v.symbol, _measured(v.read)) for v in fg.vectors
+                        if not v.known and _pair(v.symbol) and abs(v.read) < 1e6)
         loads = [[f"${sym(ld.name)}$", link, known(ld.name, abs(ld.value))]
                  for link, lds in fg.loads.items() for ld in lds if abs(ld.value) > 0]
         out.append({"name": "–".join(fg.links), "links": ", ".join(fg.links), "crank": fg.balancing_torque
                     is not None, "mu": _scale(fg.scale), "moments": moments, "rows": rows,
-                    "loads": loads, "sum": closing, "n": n, "couple": couple,
+                    "loads": loads, "sum": closing, "slider": slider, "slider_link": slider_link,
+                    "n": n, "couple": couple,
                     "mb": None if fg.balancing_torque is None else _numg(fg.balancing_torque),
                     # P_b = M_b/l, signed as M_b (counter-clockwise positive) in the equation and
                     # the text alike; its magnitude is the length drawn in the polygon
                     "pb": None if fg.balancing_force is None else _numg(_signed_pb(fg)),
                     "pb_abs": None if fg.balancing_force is None else _numg(abs(fg.balancing_force))})
+    # one known force, one number: a force known in several groups (the guide bar's F_R34,
+    # F_R43, the slider's F_R23 and the crank's F_R32 of one magnitude) prints in every row
+    # with the most digits any of its equations needed (slotter: 1137 and 1137.3)
+    same: dict[float, list] = {}
+    for fc, fg in zip(out, pos.forces):
+        for row, v in zip(fc["rows"], fg.vectors):
+            if v.known and abs(v.read) < 1e6:
+                same.setdefault(float(f"{v.read:.9g}"), []).append(row)
+    for rows in same.values():
+        best = max((r[3] for r in rows), key=lambda t: _digits(t))
+        for r in rows:
+            r[3] = best
+    # a known force's length, drawn at |F|/μF: with the digits that give its value
+    for fc, fg in zip(out, pos.forces):
+        for row, v in zip(fc["rows"], fg.vectors):
+            if v.known:
+                row[2] = _len(v.length, fg.scale, row[3])
     return out
 
 
@@ -774,6 +873,7 @@ def graphical_context(results: dict, figures: dict, lang: str) -> list[dict]:
                 ids = tuple(g.links) or ((g.link,) if getattr(g, "link", None) else ())
                 if ids:
                     links[g.name] = {"links": ids, "crank": n == 0}
+        cranks = frozenset(k for v in links.values() if v["crank"] for k in v["links"])
         positions = []
         couple_said = False
         for pos in doc.positions:
@@ -792,13 +892,18 @@ def graphical_context(results: dict, figures: dict, lang: str) -> list[dict]:
             # nothing measured — left out of the lists of rates
             still = frozenset(k for k, w in pos.velocity.rates.items()
                               if w == 0 and pos.acceleration.rates.get(k, 0.0) == 0)
+            # the crank's ω and α are the brief's (given), not measured: said apart
+            given = [(f"$\\omega_{{{k}}}$ = {sig(pos.velocity.rates[k], 4)} rad/s",
+                      f"$\\alpha_{{{k}}}$ = {_numg(pos.acceleration.rates.get(k, 0.0))} rad/s²")
+                     for k in sorted(cranks, key=_link_order) if k in pos.velocity.rates]
+            still = still | cranks
             positions.append({
                 "label": str(pos.label).replace("'", "′"),
                 "angle": f(np.degrees(pos.crank_angle), 1),
                 "mu_l": _scale(pos.length_scale),
                 "vel": _kin(pos.velocity, lang, "m/s", r"\omega", links, still),
                 "acc": _kin(pos.acceleration, lang, "m/s²", r"\alpha", links, still),
-                "fig": figures.get(f"{key}_kin", ""),
+                "fig": figures.get(f"{key}_kin", ""), "given": given,
                 "forces": forces, "crank": crank,
                 "mb": None if pos.balancing_torque is None else _numg(pos.balancing_torque),
                 "compare": _compare(pos, lang),
