@@ -176,8 +176,9 @@ def math_hypot(a, b):
 def test_flat_force_polygon_says_so_and_names_one_segment_once(example_results, monkeypatch,
                                                                tmp_path):
     """Slotter position 5, group 3–4 (zh Fig. 9): the polygon is nearly one line; the
-    figure says so, and the forces drawn on one segment (F_R23, F_R34, F_R43) share one
-    label instead of three stacked ones."""
+    figure says so, and the forces drawn on one segment share one label instead of stacked
+    ones: the bar's F_R34, which the slider passes on as F_R23 (F_R43 = −F_R34 is its
+    reaction, not a second name of the same side: review36 Top 2)."""
     from mechdesign.render import graphical_report as G
 
     figs = _captured(monkeypatch)
@@ -189,7 +190,7 @@ def test_flat_force_polygon_says_so_and_names_one_segment_once(example_results, 
             for a, b in _segments_of(ax)}
     assert len(texts) <= len(segs), texts                     # one label per segment at most
     shared = [t for t in texts if "R23" in t]
-    assert shared and "R34" in shared[0] and "R43" in shared[0], texts
+    assert shared and "R34" in shared[0] and "R43" not in shared[0], texts
     assert "nearly flat" in _flat_note(ax)
     assert not [s for s in LL.overlaps(ax, _labels(ax), []) if "over" in s]
     # the note where, and only where, the polygon is flat: narrower than 8 % of its length

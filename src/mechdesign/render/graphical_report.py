@@ -724,7 +724,7 @@ def _forces(pos, lang: str) -> list[dict]:
         # a force known to be zero (a tangential component no known force calls for, its
         # moment equation said so) is no side of the polygon: left out of its vector
         # equation and its table, as the figure leaves it out (issue 19)
-        sides = [v for v in fg.vectors if not known_zero(v)]
+        sides = _sides(fg)
         closing, slider, slider_link = _polygon_sum(v for v in sides
                                                     if v.kind not in ("total", "internal"))
         # a given force (a weight, an inertia force, the resistance) is listed with its given
@@ -759,7 +759,7 @@ def _forces(pos, lang: str) -> list[dict]:
     # with the most digits any of its equations needed (slotter: 1137 and 1137.3)
     same: dict[float, list] = {}
     for fc, fg in zip(out, pos.forces):
-        for row, v in zip(fc["rows"], fg.vectors):
+        for row, v in zip(fc["rows"], _sides(fg)):
             if v.known and abs(v.read) < 1e6:
                 same.setdefault(float(f"{v.read:.9g}"), []).append(row)
     for rows in same.values():
@@ -768,10 +768,16 @@ def _forces(pos, lang: str) -> list[dict]:
             r[3] = best
     # a known force's length, drawn at |F|/μF: with the digits that give its value
     for fc, fg in zip(out, pos.forces):
-        for row, v in zip(fc["rows"], fg.vectors):
+        for row, v in zip(fc["rows"], _sides(fg)):
             if v.known:
                 row[2] = _len(v.length, fg.scale, row[3])
     return out
+
+
+def _sides(fg) -> list:
+    """The vectors of a force polygon that are its sides, in the order of its table's rows
+    (a force known to be zero is none)."""
+    return [v for v in fg.vectors if not known_zero(v)]
 
 
 def known_zero(v) -> bool:
