@@ -112,30 +112,33 @@ class _Figures(dict):
 _CACHE: dict = {}
 
 
+def example_markdown(r, lang: str, sheets: list | None = None) -> str:
+    """The report.md of the results ``r`` of an example in ``lang`` as `mechdesign run` writes
+    it, with placeholder figures and the rows ``sheets`` of its drawing sheets (none drawn)."""
+    from mechdesign.machines import get_machine
+    from mechdesign.render.fmt import meta_text
+    from mechdesign.render.report import render_markdown, template_dir
+    from mechdesign.render.summary import Citations, handin_context
+    from mechdesign.results import to_plain
+    from mechdesign.runner import _with_requested
+
+    brief = r["brief"]
+    machine = get_machine(brief.machine)
+    report = importlib.import_module(machine.report_module)
+    figs = _Figures()
+    ctx = _with_requested(report.context(r, brief, figs, lang), r, brief, figs, lang)
+    ctx["sheets"] = sheets or []
+    # the closing chapters (summary, references), as render/report.py adds them
+    ctx.update(handin_context(machine.name, to_plain(machine.document(r)), ctx, lang,
+                              meta_text(brief.report, "title", lang)), cite=Citations(lang))
+    return render_markdown(f"{machine.name}.md.j2", ctx, template_dir(None), lang)
+
+
 def _markdown(example_results, name: str, lang: str) -> tuple[str, object]:
     """The report.md of designs/<name>.yaml in ``lang`` (no figures, no sheets), and its brief."""
     if (name, lang) not in _CACHE:
-        from mechdesign.machines import get_machine
-        from mechdesign.render.report import render_markdown, template_dir
-        from mechdesign.runner import _with_requested
-
         r = example_results(name)
-        brief = r["brief"]
-        machine = get_machine(brief.machine)
-        report = importlib.import_module(machine.report_module)
-        figs = _Figures()
-        ctx = _with_requested(report.context(r, brief, figs, lang), r, brief, figs, lang)
-        ctx["sheets"] = []
-        # the closing chapters (summary, references), as render/report.py adds them
-        from mechdesign.render.fmt import meta_text
-        from mechdesign.render.summary import Citations, handin_context
-        from mechdesign.results import to_plain
-
-        document = to_plain(machine.document(r))
-        ctx.update(handin_context(machine.name, document, ctx, lang,
-                                  meta_text(brief.report, "title", lang)), cite=Citations(lang))
-        _CACHE[name, lang] = (render_markdown(f"{machine.name}.md.j2", ctx, template_dir(None), lang),
-                              brief)
+        _CACHE[name, lang] = (example_markdown(r, lang), r["brief"])
     return _CACHE[name, lang]
 
 

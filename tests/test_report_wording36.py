@@ -13,13 +13,12 @@
 """
 from __future__ import annotations
 
-import importlib
 import re
 
 import numpy as np
 import pytest
 
-from tests.test_report_prose import EXAMPLES, _Figures
+from tests.test_report_prose import EXAMPLES, example_markdown
 
 FORCE_WORDS = {"zh": ("力多边形", r"\mu_F", "动力分析"), "en": ("force polygon", r"\mu_F", "force analysis")}
 
@@ -42,23 +41,8 @@ def _report(example_results, name: str, lang: str) -> str:
     """The report.md of designs/<name>.yaml as `mechdesign run` writes it, with the rows of its
     drawing sheets (not drawn) and placeholder figures."""
     if (name, lang) not in _CACHE:
-        from mechdesign.machines import get_machine
-        from mechdesign.render.fmt import meta_text
-        from mechdesign.render.report import render_markdown, template_dir
-        from mechdesign.render.summary import Citations, handin_context
-        from mechdesign.results import to_plain
-        from mechdesign.runner import _with_requested
-
         r = example_results(name)
-        brief = r["brief"]
-        machine = get_machine(brief.machine)
-        report = importlib.import_module(machine.report_module)
-        figs = _Figures()
-        ctx = _with_requested(report.context(r, brief, figs, lang), r, brief, figs, lang)
-        ctx["sheets"] = _sheet_rows(r, brief, lang)
-        ctx.update(handin_context(machine.name, to_plain(machine.document(r)), ctx, lang,
-                                  meta_text(brief.report, "title", lang)), cite=Citations(lang))
-        _CACHE[name, lang] = render_markdown(f"{machine.name}.md.j2", ctx, template_dir(None), lang)
+        _CACHE[name, lang] = example_markdown(r, lang, _sheet_rows(r, r["brief"], lang))
     return _CACHE[name, lang]
 
 
@@ -74,7 +58,7 @@ def _sheets_chapter(md: str) -> str:
 @pytest.mark.parametrize("name, kinematic", [("crank_rocker", True), ("lockbeam", True),
                                              ("shaper", False), ("press", False)])
 def test_the_a1_sheet_is_a_kinematic_analysis_without_forces(example_results, name, kinematic):
-    from mechdesign.render.sheets import _builders, linkage_results
+    from mechdesign.render.sheets import linkage_results
 
     r = example_results(name)
     found = linkage_results(r)
