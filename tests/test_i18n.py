@@ -108,6 +108,8 @@ NOT_PROSE: dict[str, str] = {
     "data/catalogues.py": "钢 (steel) is dropped when a material name is matched (\"45钢\" = \"45\")",
     "render/mathbreak.py": "the bounds of the CJK character ranges (ideographs, CJK "
                            "punctuation, fullwidth forms) that decide where a line may break",
+    "render/docx.py": "the full-width punctuation (（【＝：，；、～) after which a '-' before a digit "
+                      "is a minus sign in Word's text (minus_signs)",
     "cli.py": "the English --help texts gloss two course terms in Chinese (机械原理课程设计, "
               "分组), as the brief's field descriptions do; its messages are in the catalogue",
 }

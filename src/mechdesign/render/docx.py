@@ -266,7 +266,7 @@ def latin_marks_in_latin_font(xml: str) -> str:
 #: "(-190.54, ", "最小 -84.70"); after a letter or a digit it stays a hyphen ("Y90S-6",
 #: "6204-2RS", "GB/T 14689-2008", "2026-11-22", "表 8-11", "exercises 7-1"). typst draws the
 #: same text of the PDF so: a "-" that starts a word before a digit is its minus shorthand.
-_BEFORE_MINUS = set("([{\uff08\u3010=\uff1d<>\u2264\u2265\u2248:\uff1a,\uff0c;\uff1b\u3001~\uff5e")   # full-width ones escaped (no CJK literal in the code)
+_BEFORE_MINUS = set("([{（【=＝<>≤≥≈:：,，;；、~～")
 _TEXT_TOKEN = re.compile(r"<w:p(?=[\s>/])[^>]*>|<w:r>|<w:(?:tab|br|cr)\b[^>]*/>"
                          r'|<w:pStyle w:val="SourceCode"|<w:rStyle w:val="(?:VerbatimChar|[A-Za-z]+Tok)"'
                          r"|<(?P<ns>[wm]):t(?:\s[^>]*)?>(?P<text>[^<]*)</(?P=ns):t>")
