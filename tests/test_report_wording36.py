@@ -184,3 +184,24 @@ def test_no_half_width_space_after_a_chinese_full_stop(example_results, name):
     md = _report(example_results, name, "zh")
     found = [md[max(m.start() - 30, 0):m.end() + 20] for m in re.finditer(r"。 (?=\S)", md)]
     assert not found, found
+
+
+# ------------------------------------------------------------------ undercut, one verdict
+
+@pytest.mark.parametrize("lang", ["zh", "en"])
+@pytest.mark.parametrize("name", ["press", "shaper"])
+def test_a_negligible_undercut_is_not_followed_by_no_undercut(example_results, name, lang):
+    """press: z1 = 17 lies just below the exact limit 2h_a*/sin²α = 17.10; the report shows
+    the undercut it leaves is negligible, and then said "Neither gear is undercut" (text36
+    noticed the contradiction). After a negligible trace the verdict says "apart from that";
+    without one (shaper, z1 = 18 > 17.10) it stays plain."""
+    md = _report(example_results, name, lang)
+    slight = {"zh": "略低于精确极限值", "en": "lies just below the exact limit"}[lang]
+    plain = {"zh": "两轮均不根切", "en": "Neither gear is undercut"}[lang]
+    qualified = {"zh": "除这一可忽略的根切外", "en": "Apart from that negligible trace"}[lang]
+    if slight in md:
+        assert qualified in md and not re.search(rf"(^|[。.]\s*){plain}", md, re.M), name
+    else:
+        assert qualified not in md
+    if name == "press":
+        assert slight in md, "press's z1 = 17 is below the exact limit 17.10"

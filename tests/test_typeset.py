@@ -622,6 +622,20 @@ def thin_last_page(pdf) -> list[tuple[int, int]]:
         return [(last, len(rows))] if len(rows) < MIN_LAST_ROWS else []
 
 
+def off_centre_figures(pdf) -> list[tuple[int, float]]:
+    """(page, x of the centre) of every image not centred on the text block (to 1 pt): a
+    figure floated to a page's top or foot stood at the block's left edge when it was
+    narrower than the block (typst's `place(top)` aligns left; a figure set smaller to fit
+    (close-chapters) stood up to 70 pt left of the centre: crank_rocker zh fig. 4)."""
+    import pymupdf
+
+    centre = (LEFT + RIGHT) / 2
+    with pymupdf.open(pdf) as doc:
+        return [(page.number + 1, round((b[0] + b[2]) / 2, 1)) for page in doc
+                for b in (info["bbox"] for info in page.get_image_info())
+                if abs((b[0] + b[2]) / 2 - centre) > TOL]
+
+
 def references_alone(pdf, limit: float = 0.2) -> list[tuple[int, float]]:
     """(page, fill) when the report's last page holds the heading of its last chapter (the
     references) and fills less than ``limit`` of the text block: a short list alone on the
@@ -1081,6 +1095,8 @@ def test_every_report_stays_in_the_text_block(brief, lang, tmp_path):
     assert cover_defects(pdf, lang) == []
     assert wide_middle_dots(pdf) == []
     assert figure_order(pdf) == []
+    # every figure stands in the middle of the text block
+    assert off_centre_figures(pdf) == []
     # every figure is cited in the text: "如图 5 所示" / "(Figure 5)" (review35 item 10)
     assert uncited_figures(pdf) == []
     # no figure above its own chapter's heading, none more than a page after its text
