@@ -102,6 +102,9 @@ def test_the_sheet_notes_of_a_kinematic_a1_name_no_force_scale(example_results, 
     texts = " ".join(t.text for t in sheet.entities if isinstance(t, Text))
     assert "μ" in texts and "above each polygon" in texts if lang == "en" else "注在各多边形上方" in texts
     assert not re.search(r"μ(?:<sub>)?F|μ_F|μF", texts), texts[:400]
+    # and say why there is no force cell, as lockbeam's notes do (review36 Top 4: the crank-
+    # rocker's sheet gave no reason)
+    assert ("gives no loads" in texts) if lang == "en" else ("未给出载荷" in texts), texts[-400:]
 
 
 # ------------------------------------------------------------------ the open gear stage

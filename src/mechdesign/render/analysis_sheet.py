@@ -61,6 +61,8 @@ LABELS = LabelTable({
     "each_kin": pgettext("analysis sheet", "μv, μa above each polygon; the values beside each are analytic"),
     "noload": pgettext("analysis sheet", "No load or masses given: all reactions and Mb are zero, "
                        "so no force polygons or Mb curve are drawn"),
+    "kinonly": pgettext("analysis sheet", "Kinematics only (the task gives no loads): no force "
+                        "polygons or Mb curve are drawn"),
     "nofly": pgettext("analysis sheet", "no flywheel"),
     "flat0": pgettext("analysis sheet", "all vectors parallel: the polygon closes on a line"),
     "flat": pgettext("analysis sheet", "nearly flat polygon (width {w} % of its length): "
@@ -111,7 +113,9 @@ def analysis_sheet(found, info: TitleInfo, lang: str, labels: dict | None = None
              + lab["each_kin" if kinematic_only else "each"]]
     if unloaded:
         notes.append(lab["noload"])
-    elif forces is not None:
+    elif forces is None:
+        notes.append(lab["kinonly"])
+    else:
         notes.append(lab["signs"])
     if flywheel is not None:
         notes.append(lab["dw"].format(v=fmt.sig(flywheel.max_energy_swing)) + ",  "
