@@ -263,7 +263,7 @@ def test_brief_without_gear_cam_drive_renders(tmp_path):
                                  "--lang", "en"])
     assert result.exit_code == 0, result.output
     md = (out / "report.md").read_text(encoding="utf-8")
-    assert "# Linkage synthesis" in md and "given dimensions → derived H, K" in md
+    assert "# Linkage synthesis" in md and "given dimensions → derived $H$, $K$" in md
     for heading in ("# Gear", "# Cam", "# Drive", "gear z2", "z_1, z_2"):
         assert heading not in md
     import json

@@ -327,10 +327,12 @@ def flywheel_equation(energy_swing: float, speed_rpm: float, delta: float, jf: s
     d_tex = rf"({num}/{den})" if den else d_text
 
     def chain(n_extra: int, dw_extra: int) -> tuple[str, str, bool]:
-        n_text = f(speed_rpm, 2 + n_extra)
+        # to 0.01 rpm; a speed below 1 rpm (a careless brief's 1e-9) to significant digits,
+        # which 0.01 rpm would print as 0.00 (a division by zero)
+        n_text = f(speed_rpm, 2 + n_extra) if speed_rpm >= 1 else sig(speed_rpm, 4 + n_extra, group=False)
         dw_text = sig(energy_swing, energy_digits + dw_extra, group=False)
-        value = 900 * float(dw_text) / (np.pi ** 2 * float(n_text) ** 2 * d_value)
-        return n_text, dw_text, gives(value, jf)
+        denominator = np.pi ** 2 * float(n_text) ** 2 * d_value
+        return n_text, dw_text, denominator > 0 and gives(900 * float(dw_text) / denominator, jf)
 
     n_text, dw_text, _ok = next(
         (c for extra in range(5) for n_extra in range(min(extra, 2) + 1)
