@@ -10,7 +10,7 @@ import numpy as np
 from ..stages.drive import shaft_numeral
 from ..i18n import N_, data_text, tr
 from ..stages.findings import Named, decode
-from .fmt import f, grouped, md_text, percent, rpm, sentences, sig
+from .fmt import f, factor_for, grouped, md_text, percent, rpm, sentences, sig
 
 MM = 1e3
 
@@ -48,17 +48,12 @@ def _shown(value):
     return out
 
 def _num_giving(x: float, fn, printed: str, write) -> str:
-    """``x`` as ``write`` (a formula's number writer) prints it, with one more significant
-    digit at a time (up to three) until ``fn(printed x)`` gives ``printed`` to its last digit
-    (a displayed chain computes from what it prints: 1.2 × 0.1812 = 0.2174, printed 0.2175 —
-    P = 0.18124)."""
+    """``x`` as ``write`` (a formula's number writer) prints it, with the digits that make
+    ``fn(printed x)`` give ``printed`` (:func:`.fmt.factor_for`; 1.2 × 0.1812 = 0.2174,
+    printed 0.2175 — P = 0.18124)."""
     from ..numbers import gives
 
-    for digits in range(4, 8):
-        text = write(x, digits)
-        if "times" in text or "(" in text or gives(fn(float(text)), printed):
-            return text
-    return text
+    return factor_for(x, lambda v: gives(fn(v), printed), write=write)
 
 
 def _pw_for(d) -> str:

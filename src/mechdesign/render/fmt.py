@@ -386,13 +386,15 @@ def sentences(_, *texts: str) -> str:
     return ("" if _.zh else " ").join(t for t in texts if t)
 
 
-def factor_for(x: float, ok, sig_digits: int = 4) -> str:
+def factor_for(x: float, ok, sig_digits: int = 4, write=None) -> str:
     """``x`` as a factor of a displayed chain: :func:`sig`'s ``sig_digits`` significant
-    digits, one more at a time (up to three) until ``ok(printed factor)`` holds — the printed
-    factors give the printed result (6.404 × 14.118² = 1276.5, where 14.12 gives 1276.8)."""
+    digits (or ``write(x, digits)``'s, a formula's number writer), one more at a time (up to
+    three) until ``ok(printed factor)`` holds — the printed factors give the printed result
+    (6.404 × 14.118² = 1276.5, where 14.12 gives 1276.8). A number the writer prints with a
+    power of ten or in parentheses is taken as it is."""
     for extra in range(4):
-        text = sig(x, sig_digits + extra, group=False)
-        if ok(float(text)):
+        text = write(x, sig_digits + extra) if write else sig(x, sig_digits + extra, group=False)
+        if "times" in text or "(" in text or ok(float(text)):
             return text
     return text
 
