@@ -24,6 +24,7 @@ pytestmark = pytest.mark.e2e     # renders Word files (see tests/conftest.py)
 
 ROOT = Path(__file__).parents[1]
 TEMPLATES = template_dir()
+EN_METADATA = {"title": "Course design", "lang": "en"}
 METADATA = {
     "title": "机械原理课程设计说明书",
     "subtitle": "牛头刨床导杆机构",
@@ -77,6 +78,20 @@ def _write_sample(folder: Path, text: str) -> Path:
     return md
 
 
+def _sample_docx(folder: Path, text: str, metadata: dict | None = None) -> Path:
+    """The Word file of the sample Markdown ``text`` (zh metadata unless ``metadata``)."""
+    out = folder / "report.docx"
+    render_docx(_write_sample(folder, text), out, METADATA if metadata is None else metadata, TEMPLATES)
+    return out
+
+
+def _sample_document(folder: Path, text: str, metadata: dict | None = None) -> str:
+    """word/document.xml of :func:`_sample_docx`, checked to be well-formed XML."""
+    document = _part(_sample_docx(folder, text, metadata), "word/document.xml")
+    ElementTree.fromstring(document)
+    return document
+
+
 def _part(docx: Path, name: str) -> str:
     with zipfile.ZipFile(docx) as archive:
         return archive.read(name).decode("utf-8")
@@ -93,11 +108,7 @@ def _paragraph_texts(document_xml: str) -> list[str]:
 
 @pytest.fixture(scope="module")
 def zh_docx(tmp_path_factory) -> Path:
-    folder = tmp_path_factory.mktemp("docx-zh")
-    md = _write_sample(folder, MARKDOWN)
-    out = folder / "out" / "report.docx"
-    render_docx(md, out, METADATA, TEMPLATES)
-    return out
+    return _sample_docx(tmp_path_factory.mktemp("docx-zh"), MARKDOWN)
 
 
 def test_chinese_text_tables_math_and_image(zh_docx):
@@ -138,10 +149,7 @@ def test_a_reference_number_is_set_apart_from_the_chinese_word_after_it(tmp_path
     text = MARKDOWN.replace("曲柄转速 $n_2 = 60\\ \\text{r/min}$，刨头位移线图见 @fig:ram，运动参数见 @tbl:kin。",
                             "由 @fig:ram 量得的角速度；位移如 @fig:ram 所示，数据见 @tbl:kin。")
     assert text != MARKDOWN
-    md = _write_sample(tmp_path, text)
-    out = tmp_path / "out" / "report.docx"
-    render_docx(md, out, METADATA, TEMPLATES)
-    body = next(t for t in _paragraph_texts(_part(out, "word/document.xml")) if "量得" in t)
+    body = next(t for t in _paragraph_texts(_sample_document(tmp_path, text)) if "量得" in t)
     assert body == "由图 1 量得的角速度；位移如图 1 所示，数据见表 1。"
 
 
@@ -166,10 +174,7 @@ def test_reference_doc_fonts_and_page(zh_docx):
 
 
 def test_english_captions(tmp_path):
-    md = _write_sample(tmp_path, MARKDOWN_EN)
-    out = tmp_path / "report.docx"
-    render_docx(md, out, {"title": "Course design", "student": "Zhang San", "lang": "en"}, TEMPLATES)
-    texts = _paragraph_texts(_part(out, "word/document.xml"))
+    texts = _paragraph_texts(_sample_document(tmp_path, MARKDOWN_EN, {**EN_METADATA, "student": "Zhang San"}))
     assert any(t.startswith("Figure 1: Ram displacement") for t in texts)
     assert any(t.startswith("Table 1: Positions") for t in texts)
     assert any("shown in Figure 1 and listed in Table 1." in t for t in texts)
@@ -216,10 +221,8 @@ def test_real_cam_report(tmp_path):
 def test_running_header_names_title_and_student_and_properties_author_and_subject(tmp_path):
     """Issue 22 (5): the header shows the title and the student (TITLE and AUTHOR fields with
     their results filled in); without a student, the title alone (no dangling separator)."""
-    md = _write_sample(tmp_path, MARKDOWN_EN)
-    out = tmp_path / "report.docx"
-    render_docx(md, out, {"title": "Course design", "student": "Zhang San", "lang": "en",
-                          "description": "Course design — shaper"}, TEMPLATES)
+    out = _sample_docx(tmp_path, MARKDOWN_EN, {**EN_METADATA, "student": "Zhang San",
+                                               "description": "Course design — shaper"})
     header = _part(out, "word/header1.xml")
     shown = "".join(re.findall(r"<w:t(?: [^>]*)?>([^<]*)</w:t>", header))
     assert shown == "Course design\u2003Zhang San"
@@ -231,7 +234,7 @@ def test_running_header_names_title_and_student_and_properties_author_and_subjec
     assert re.search(r"<w:instrText[^>]*>\s*PAGEREF _Toc\d+ \\h", document)       # table of contents
     assert re.search(r"<w:instrText[^>]*>\s*PAGE\s*<", _part(out, "word/footer1.xml"))
     alone = tmp_path / "alone.docx"
-    render_docx(md, alone, {"title": "Course design", "lang": "en"}, TEMPLATES)
+    render_docx(tmp_path / "report.md", alone, EN_METADATA, TEMPLATES)
     header = _part(alone, "word/header1.xml")
     assert "".join(re.findall(r"<w:t(?: [^>]*)?>([^<]*)</w:t>", header)) == "Course design"
 
@@ -276,11 +279,7 @@ def test_broken_equation_is_aligned_lines_without_ampersands(tmp_path):
     broken = break_formula(LONG_FORMULA, WORD_BUDGET_EM)
     n_rows = broken.count("\\\\") + 1
     assert n_rows >= 2                       # the sample is broken at all
-    md = _write_sample(tmp_path, f"# Kinematics\n\n$$ {LONG_FORMULA} $$\n")
-    out = tmp_path / "report.docx"
-    render_docx(md, out, {"title": "Course design", "lang": "en"}, TEMPLATES)
-    document = _part(out, "word/document.xml")
-    ElementTree.fromstring(document)         # well-formed
+    document = _sample_document(tmp_path, f"# Kinematics\n\n$$ {LONG_FORMULA} $$\n", EN_METADATA)
     assert "<m:t>&amp;</m:t>" not in document and "<m:eqArr>" not in document
     [para] = _math_paragraphs(document)
     lines = re.findall(r"<m:oMath>(.*?)</m:oMath>", para, flags=re.DOTALL)
@@ -362,10 +361,8 @@ def test_numbers_fit_their_columns_in_a_wide_table(tmp_path):
     header = "| " + " | ".join(f"$F_{{R{c}}}$/kN" for c in range(10)) + " |"
     rows = ["| " + " | ".join(numbers[10 * r:10 * r + 10]) + " |" for r in range(4)]
     narrow = "| a | b |\n|--:|--:|\n| 12.5 | 3.25 |"
-    md = _write_sample(tmp_path, "# Forces\n\n" + "\n".join([header, "|" + "--:|" * 10, *rows])
-                       + "\n\n: Reactions\n\n" + narrow + "\n")
-    out = tmp_path / "report.docx"
-    render_docx(md, out, {"title": "Course design", "lang": "en"}, TEMPLATES)
+    out = _sample_docx(tmp_path, "# Forces\n\n" + "\n".join([header, "|" + "--:|" * 10, *rows])
+                       + "\n\n: Reactions\n\n" + narrow + "\n", EN_METADATA)
     document = _part(out, "word/document.xml")
     styles = _part(out, "word/styles.xml")
     wide, small = [t for t in re.findall(r"<w:tbl>.*?</w:tbl>", document, flags=re.DOTALL)
@@ -389,13 +386,9 @@ def test_table_of_contents_after_the_title_page_with_an_entry_per_heading(tmp_pa
     page number, so that a reader that does not update a TOC field (LibreOffice; Word when
     the user declines) shows it, each a link to a bookmark around its heading; it stands on a page of its own
     after the title block, not between the subtitle and the student's name."""
-    md = _write_sample(tmp_path, "# Kinematics\n\nText.\n\n## Velocities\n\nText.\n\n"
-                                 "### Polygon & scale\n\nText.\n\n#### Too deep\n\nText.\n\n"
-                                 "# Summary {-}\n\nText.\n")
-    out = tmp_path / "report.docx"
-    render_docx(md, out, {"title": "Course design", "student": "Zhang San", "lang": "en"}, TEMPLATES)
-    document = _part(out, "word/document.xml")
-    ElementTree.fromstring(document)
+    document = _sample_document(tmp_path, "# Kinematics\n\nText.\n\n## Velocities\n\nText.\n\n"
+                                "### Polygon & scale\n\nText.\n\n#### Too deep\n\nText.\n\n"
+                                "# Summary {-}\n\nText.\n", {**EN_METADATA, "student": "Zhang San"})
     toc = re.search(r"<w:sdt>.*?</w:sdt>", document, flags=re.DOTALL).group(0)
     entries = re.findall(r'<w:pStyle w:val="TOC(\d)" />.*?<w:hyperlink w:anchor="(\w+)"[^>]*>(.*?)</w:hyperlink>',
                          toc, flags=re.DOTALL)
@@ -437,11 +430,8 @@ def test_a_bracket_closed_in_a_superscript_base_becomes_a_delimiter(tmp_path):
     """texmath writes (a+b)^2 as "(" a + b and a superscript whose base is ")" alone:
     LibreOffice draws each unbalanced bracket "¿". The bracketed runs become the base of the
     superscript as a delimiter object (m:d), Word's form of (a+b)²."""
-    md = _write_sample(tmp_path, "# A\n\n$$ \\sigma = \\sqrt{M^2 + (\\alpha T)^2} + (C/P)^{3} $$\n")
-    out = tmp_path / "report.docx"
-    render_docx(md, out, {"title": "T", "lang": "en"}, TEMPLATES)
-    document = _part(out, "word/document.xml")
-    ElementTree.fromstring(document)
+    document = _sample_document(tmp_path, "# A\n\n$$ \\sigma = \\sqrt{M^2 + (\\alpha T)^2} + (C/P)^{3} $$\n",
+                                EN_METADATA)
     [para] = _math_paragraphs(document)
     # no script has a lone bracket as its base any more
     assert not re.search(r"<m:sSup><m:e><m:r>(?:<m:rPr>(?:<[^>]*/>)*</m:rPr>)?<m:t>[)\]]</m:t></m:r></m:e>", para)
@@ -496,11 +486,7 @@ def test_unit_signs_in_chinese_text_are_set_in_the_latin_font(tmp_path):
     text = ("最大 12 738 N·m，最小 -84.70 N·m；角加速度 3.2 rad/s²（逆时针为正），压力角 19.69°（许用），"
             "白求恩·诺尔。\n\n| 位置 | （杆组法）/N·m | 说明 |\n|--|--:|--|\n"
             "| 0 | 1.0 | 刀线总长 L = 20.0 m（估计值）× 单位长度模切阻力 q = 50 N/mm |\n\n: 力矩\n")
-    md = _write_sample(tmp_path, "# 力矩\n\n" + text)
-    out = tmp_path / "report.docx"
-    render_docx(md, out, METADATA, TEMPLATES)
-    document = _part(out, "word/document.xml")
-    runs = _runs(document)
+    runs = _runs(_sample_document(tmp_path, "# 力矩\n\n" + text))
     latin = [t for p, t in runs if "·" in t or "²" in t or "°" in t]
     assert latin, "no run holds the signs"
     for props, run_text in runs:
@@ -528,10 +514,8 @@ def test_code_in_a_table_keeps_its_words_whole_and_listings_fit_the_line(tmp_pat
 
     words = ["transmission", "bending_cam", "feed_verification", "feed_graphical"]
     rows = "\n".join(f"| {k} | stage {k} | `{w}` |" for k, w in enumerate(words, 1))
-    md = _write_sample(tmp_path, "# Appendix\n\n| No. | Stage | Result |\n|--:|:--|:--|\n"
-                       + rows + "\n\n: Stages\n")
-    out = tmp_path / "report.docx"
-    render_docx(md, out, {"title": "Course design", "lang": "en"}, TEMPLATES)
+    out = _sample_docx(tmp_path, "# Appendix\n\n| No. | Stage | Result |\n|--:|:--|:--|\n"
+                       + rows + "\n\n: Stages\n", EN_METADATA)
     styles = _part(out, "word/styles.xml")
     verbatim = re.search(r'<w:style [^>]*w:styleId="VerbatimChar".*?</w:style>', styles, re.DOTALL)
     assert "Consolas" in verbatim.group(0)
@@ -653,11 +637,9 @@ def test_a_short_chinese_word_in_a_cell_is_never_broken(tmp_path):
     # a result written out in words widens the second column (the furnace drive's table 14)
     rows.append("| 各级传动比与齿数比、带轮直径比 | 由电动机转速与各级传动比逐级相乘得到的工作机转速与任务书要求的"
                 "工作机转速之相对误差 0.542% | ≤ ±4.0% | 合格 |")
-    md = _write_sample(tmp_path, "# 校核\n\n| 校核项目 | 结果 | 参考值 / 限值 | 结论 |\n|:--|--:|:--|:-:|\n"
-                       + "\n".join(rows) + "\n\n: 校核\n")
-    out = tmp_path / "report.docx"
-    render_docx(md, out, METADATA, TEMPLATES)
-    table = re.search(r"<w:tbl>.*?</w:tbl>", _part(out, "word/document.xml"), flags=re.DOTALL).group(0)
+    document = _sample_document(tmp_path, "# 校核\n\n| 校核项目 | 结果 | 参考值 / 限值 | 结论 |\n|:--|--:|:--|:-:|\n"
+                                + "\n".join(rows) + "\n\n: 校核\n")
+    table = re.search(r"<w:tbl>.*?</w:tbl>", document, flags=re.DOTALL).group(0)
     style = re.search(r'<w:pStyle w:val="(TableText\w*)"', table).group(1)
     half_points = {"TableText": 21, "TableTextSmall": 18, "TableTextSmaller": 15}[style]
     grid = [int(w) for w in re.findall(r'<w:gridCol w:w="(\d+)"', table)]
@@ -683,12 +665,8 @@ def test_table_rows_never_split_and_a_short_table_stays_on_one_page(tmp_path):
     def table(n_rows: int, caption: str) -> str:
         body = "".join(f"| 第 {k} 行 | {k}.0 |\n" for k in range(n_rows - 1))
         return f"| 名称 | 数值 |\n|:--|--:|\n{body}\n: {caption}\n\n"
-    md = _write_sample(tmp_path, "# 表\n\n" + table(4, "短表") + table(SHORT_TABLE_ROWS + 5, "长表")
-                       + "$$ x = 1 $$\n")
-    out = tmp_path / "report.docx"
-    render_docx(md, out, METADATA, TEMPLATES)
-    document = _part(out, "word/document.xml")
-    ElementTree.fromstring(document)
+    document = _sample_document(tmp_path, "# 表\n\n" + table(4, "短表") + table(SHORT_TABLE_ROWS + 5, "长表")
+                                + "$$ x = 1 $$\n")
     tables = [t for t in re.findall(r"<w:tbl>.*?</w:tbl>", document, flags=re.DOTALL)
               if "EquationTable" not in t]
     assert [len(_rows(t)) for t in tables] == [4, SHORT_TABLE_ROWS + 5]
@@ -711,13 +689,9 @@ def test_a_list_of_formulas_in_one_inline_formula_may_break_between_its_items(tm
     and the justified line before it was letter-spaced ("推 程 0°–70°： 等 加 速 …"). The
     formula becomes one per item, with ", " as text between them; a comma inside brackets
     ("f(x, y)") or in a display formula stays in its formula."""
-    md = _write_sample(tmp_path, "# 凸轮\n\n**推程 0°–70°：等加速等减速运动规律（抛物线）**"
-                                 "（峰值系数 $C_v = 2.000, C_a = 4.000, C_j = ∞$），"
-                                 "函数 $f(x, y)$。\n\n$$ a = 1, b = 2 $$\n")
-    out = tmp_path / "report.docx"
-    render_docx(md, out, METADATA, TEMPLATES)
-    document = _part(out, "word/document.xml")
-    ElementTree.fromstring(document)
+    document = _sample_document(tmp_path, "# 凸轮\n\n**推程 0°–70°：等加速等减速运动规律（抛物线）**"
+                                "（峰值系数 $C_v = 2.000, C_a = 4.000, C_j = ∞$），"
+                                "函数 $f(x, y)$。\n\n$$ a = 1, b = 2 $$\n")
     para = next(p for p in re.findall(r"<w:p>.*?</w:p>", document, flags=re.DOTALL) if "峰值系数" in p)
     formulas = ["".join(re.findall(r"<m:t>([^<]*)</m:t>", f)) for f in re.findall(r"<m:oMath>.*?</m:oMath>", para)]
     assert formulas == ["Cv=2.000", "Ca=4.000", "Cj=∞", "f(x,y)"]
@@ -747,17 +721,13 @@ def test_negative_numbers_take_the_minus_sign_and_designations_keep_their_hyphen
     U+2212. A hyphen that starts a number becomes "−", also across runs; one inside a word,
     a designation, a standard's number, a date or a range stays ("Y90S-6", "6204-2RS",
     "GB/T 276-1994", "2026-11-22", "表 8-11", "3-4-5"), and so does a formula's text."""
-    md = _write_sample(tmp_path, (
+    document = _sample_document(tmp_path, (
         "# 数值\n\n角速度 $\\omega_2$ = -8.38 rad/s，最小 -84.70 N·m，坐标 (-190.54, 3.0)；"
         "电动机 Y90S-6，轴承 6204-2RS，GB/T 276-1994，日期 2026-11-22，表 8-11，3-4-5 多项式，"
         "**Y132S**-8，范围 20–300 mm，x-1。\n\n"
         "$$ M = -2468 \\times 0.5 $$\n\n"
         "| 位置 | $M_b$/N·m | 说明 |\n|:--|--:|:--|\n| 1 | -6.946 | 见表 15-3 |\n| 2 | -0.3215 | -- |\n\n: 力矩\n\n"
         "程序中 `y = -1` 不变：\n\n```python\nYO3 = -0.1\nx = [-2, 3]\n```\n"))
-    out = tmp_path / "report.docx"
-    render_docx(md, out, METADATA, TEMPLATES)
-    document = _part(out, "word/document.xml")
-    ElementTree.fromstring(document)
     assert _hyphen_signed_numbers(document) == []
     texts = "\n".join(_paragraph_texts(document))
     for signed in ("= \u22128.38", "最小 \u221284.70", "(\u2212190.54", "\u22126.946", "\u22120.3215"):
@@ -785,14 +755,10 @@ def test_tables_are_centred_and_a_formula_after_a_table_stays_a_table_of_its_own
     as one, under the first one's properties. Every table is centred; a formula's table is
     never right after a table of another style (a 6 pt paragraph between), and its
     properties are those of a formula after text."""
-    md = _write_sample(tmp_path, (
+    document = _sample_document(tmp_path, (
         "# 表\n\n由下式：\n\n$$ a = b + c $$\n\n"
         "| 矢量 | 大小 |\n|:--|--:|\n| $v_A$ | 0.770 |\n\n: 速度\n\n"
         "$$ \\vec v_{A4} = \\vec v_{A3} + \\vec v_{A4A3} $$\n\n$$ v_B = v_{B5} $$\n\n文字。\n"))
-    out = tmp_path / "report.docx"
-    render_docx(md, out, METADATA, TEMPLATES)
-    document = _part(out, "word/document.xml")
-    ElementTree.fromstring(document)
     _assert_tables_centred_and_apart(document)
     from mechdesign.render.docx_layout import TABLE_SEPARATOR
 

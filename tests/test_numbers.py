@@ -39,6 +39,58 @@ def test_sig_writes_the_rule(x, n, group, text):
     assert numbers.sig(x, n, group=group) == text
 
 
+@pytest.mark.parametrize("x,n,decimals,text", [
+    (266.6667, 2, True, "266.67"),      # a speed to 0.01 rpm
+    (266.6667, 2, False, "267"),        # 2 significant digits keep every integer digit
+    (8.18343, 4, True, "8.1834"),
+    (0.004, 2, True, "0.00"),
+    (0.004, 2, False, "0.0040"),
+])
+def test_a_factor_counts_significant_digits_or_decimals(x, n, decimals, text):
+    assert numbers.factor_text(x, n, decimals) == text
+
+
+def test_factor_for_counts_decimals():
+    """Hand-computed: 12.34567 × 10 printed 123.457 (to half of 0.001) needs 12.3457 (4
+    decimals): 12.35 gives 123.5, 12.346 gives 123.46. Counted in significant digits from 2,
+    the search stops at 12.346 (5 significant digits, the most it tries) and fails."""
+    def ok(v):
+        return numbers.gives(v * 10, "123.457")
+
+    assert fmt.factor_for(12.34567, ok, 2, decimals=True) == "12.3457"
+    assert fmt.factor_for(12.34567, ok, 2) == "12.346"
+    # nothing within `most` more decimals gives it: the last tried
+    assert fmt.factor_for(12.34567, ok, 2, decimals=True, most=1) == "12.346"
+
+
+def test_factor_for_half_swing_angle_to_the_decimals_the_bar_needs():
+    """L = H/(2 sin(ψ/2)), H = 320 mm, ψ/2 = 8.1834°: dL/d(ψ/2) = −L cot(ψ/2) ≈ −136 mm per
+    degree (L ≈ 1124.5 mm, cot 8.18° ≈ 6.95), so 8.18° (0.0034° off) misses L by 0.46 mm and
+    8.183° by 0.05 mm, more than half of 0.01 mm; 8.1834° gives it."""
+    import math
+
+    def bar(t):
+        return 320 / (2 * math.sin(math.radians(t)))
+
+    printed = numbers.fixed(bar(8.1834), 2)
+    assert fmt.factor_for(8.1834, lambda t: numbers.gives(bar(t), printed), 2,
+                          decimals=True, most=4) == "8.1834"
+
+
+def test_factors_for_mixes_decimals_and_significant_digits():
+    """Hand-computed: 31.4159 (from 2 decimals, as a speed) × 2.71828 (from 3 significant
+    digits) printed 85.40: 31.42 × 2.72 = 85.4624 does not give it; with one digit more, the
+    last factor's first, 31.42 × 2.718 = 85.39956 does (31.416 × 2.72 = 85.4515 would not).
+    Printed 1.00, nothing gives it: each factor with all its `most` more digits."""
+    def prod(a, b):
+        return a * b
+
+    assert numbers.factors_for((31.4159, 2.71828), prod, "85.40", (2, 3), most=(2, 4),
+                               decimals=(True, False)) == ["31.42", "2.718"]
+    assert numbers.factors_for((31.4159, 2.71828), prod, "1.00", (2, 3), most=(2, 4),
+                               decimals=(True, False)) == ["31.4159", "2.718280"]
+
+
 def test_render_and_stages_write_numbers_with_the_one_rule():
     assert fmt.sig is numbers.sig and fmt.f is numbers.fixed
     rng = random.Random(31)

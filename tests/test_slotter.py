@@ -162,3 +162,32 @@ def test_flywheel_speed_note_and_the_motor_choice(r):
     assert note is not None and f"{910 / 60 / 3:.2f}" in note and "maximum 7" in note
     assert f"Y132S-8 (2.20 kW, synchronous 750 rpm), {2200 / d.power_required:.1f} times" in note
     assert "synchronous_rpm" not in note
+
+
+def test_the_drive_is_designed_once_and_its_shaft_carries_the_resized_rim(r, monkeypatch):
+    """The drive turns shaft Ⅰ below the nominal speed (test above), so the flywheel is sized
+    again there (J_F ∝ 1/n²) and its rim's weight, the resized one, loads the shaft. The
+    motor, the ratios and the speeds do not depend on that weight: guide_bar._drive designs
+    the drive once (it designed it at the nominal rim, then again at the resized one)."""
+    from mechdesign.stages import drive, guide_bar
+
+    stages = stages_for(get_machine("slotter"), r["params"])
+    nominal = next(s for s in stages if s.key == "linkage_flywheel").run(r)
+    assert nominal.nominal_speed_rpm is None and nominal.rim is not None
+    calls = []
+    design = drive.design_drive
+
+    def counted(*args, **kwargs):
+        calls.append(args)
+        return design(*args, **kwargs)
+
+    monkeypatch.setattr(drive, "design_drive", counted)
+    d, fl = guide_bar._drive({**r, "linkage_flywheel": nominal}, flywheel_weight=True)
+    assert len(calls) == 1
+    n_real = d.shafts[1].speed_rpm
+    assert fl.nominal_speed_rpm == pytest.approx(nominal.shaft_speed_rpm) and n_real < nominal.shaft_speed_rpm
+    # the resized rim: J_F at n′ = J_F at n × (n/n′)², m = 4J_F/D²
+    jf = nominal.inertia * (nominal.shaft_speed_rpm / n_real) ** 2
+    assert fl.inertia == pytest.approx(jf, rel=1e-12)
+    [load] = [ld for ld, nm in zip(d.shaft_designs[0].loads, d.shaft_designs[0].elements) if nm == "flywheel"]
+    assert load.Fv == pytest.approx(-4 * jf / fl.rim.diameter ** 2 * r["params"].gravity, rel=1e-12)

@@ -87,8 +87,19 @@ _CAM_EXACT = [
     ("*cam.min_base_radius", "issue 21: from the exact pressure-angle maxima (it was sampled)"),
     ("*cam.best_offset.base_radius", "issue 21: r0 at the best offset, exact (it was sampled)"),
 ]
-for _machine in ("cam", "die_cutter", "lockbeam", "shaper", "slotter", "furnace_pusher", "linkage"):
-    EXPECTED.setdefault(_machine, []).extend(_CAM_EXACT)
+
+
+def _expect(machines, entries) -> None:
+    """Add ``entries`` ((path pattern, reason), …) to the EXPECTED list of each machine."""
+    entries = list(entries)
+    for machine in machines:
+        EXPECTED.setdefault(machine, []).extend(entries)
+
+
+# the machines whose report has the graphical method
+_GRAPHICAL = ("shaper", "slotter", "press", "furnace_pusher", "die_cutter", "linkage", "crank_rocker",
+              "lockbeam")
+_expect(("cam", "die_cutter", "lockbeam", "shaper", "slotter", "furnace_pusher", "linkage"), _CAM_EXACT)
 
 # Issue 21: the mean driving torque is the resistances' work per cycle over 2π, each constant
 # piece of a resistance integrated between its exact ends (the cutting/pressing window's
@@ -124,14 +135,12 @@ _EXACT_WORK = [
 # its shaft's deflection (more checks per stage; the smallest margin may now be one of them).
 _BELT = "issue 20: V-belt designed (濮良贵 ch.8): d_d1 raised to 106 mm for v ≥ 5 m/s; d_d2, the ratio follow"
 _GEO = "issue 20: gear stages check tips, undercut, contact ratio; worm stages the shaft deflection"
-for _machine in ("shaper", "slotter"):
-    EXPECTED.setdefault(_machine, []).extend([("drive.output_speed_rpm", _BELT), ("drive.speed_error", _BELT)])
-for _machine in ("drive", "furnace_pusher"):
-    EXPECTED.setdefault(_machine, []).extend([
-        ("drive.stages.*.design.checks.__len__", _GEO),
-        ("verification.checks.*.detail.checks", _GEO + " (checks per group)"),
-        ("verification.checks.*.detail.check_zh", _GEO + " (the check with the smallest margin)"),
-        ("verification.checks.*.detail.check_en", _GEO + " (the check with the smallest margin)")])
+_expect(("shaper", "slotter"), [("drive.output_speed_rpm", _BELT), ("drive.speed_error", _BELT)])
+_expect(("drive", "furnace_pusher"), [
+    ("drive.stages.*.design.checks.__len__", _GEO),
+    ("verification.checks.*.detail.checks", _GEO + " (checks per group)"),
+    ("verification.checks.*.detail.check_zh", _GEO + " (the check with the smallest margin)"),
+    ("verification.checks.*.detail.check_en", _GEO + " (the check with the smallest margin)")])
 # the one stage margin that moved: furnace_drive's open spur stage (verification check 9,
 # after the drive's fixed self-checks), whose smallest margin is now its pinion's undercut
 # check, z1 = 20 against z_min = 2h_a*/sin²α = 17.1 (0.905 → 1 − 17.1/20 = 0.145); the furnace
@@ -144,19 +153,16 @@ EXPECTED["drive"].append(("verification.checks.9.value", _GEO + " (the smallest 
 # (data/belts.yaml). P0, ΔP0, the rated power of one belt and z_exact move by ≤ 4 %; the
 # number of belts z, F0, F_p and everything downstream are unchanged in every example.
 _BELT_TABLES = "issue 20: V-belt P0/ΔP0 from the confirmed 9th-ed. tables 8-4/8-5 (z, F0, F_p unchanged)"
-for _machine in ("shaper", "slotter", "die_cutter", "lockbeam"):
-    EXPECTED.setdefault(_machine, []).extend([
-        (f"drive.stages.*.design.geometry.{leaf}", _BELT_TABLES) for leaf in ("P0", "dP0", "P_r", "z_exact")] + [
-        ("drive.stages.*.design.geometry.checks.*.inputs.z_exact", _BELT_TABLES),
-        ("drive.stages.*.design.checks.*.inputs.z_exact", _BELT_TABLES)])
+_expect(("shaper", "slotter", "die_cutter", "lockbeam"), [
+    (f"drive.stages.*.design.geometry.{leaf}", _BELT_TABLES) for leaf in ("P0", "dP0", "P_r", "z_exact")] + [
+    ("drive.stages.*.design.geometry.checks.*.inputs.z_exact", _BELT_TABLES),
+    ("drive.stages.*.design.checks.*.inputs.z_exact", _BELT_TABLES)])
 
 _EXACT_QUALITY = "γ_min / α_max of each group now refined between the samples (Brent), the working stroke's ends included"
 _EXACT_WORK += [("*quality.*.extreme", _EXACT_QUALITY), ("*quality.*.extreme_phase", _EXACT_QUALITY),
                 ("*quality.*.working_extreme", _EXACT_QUALITY),
                 ("*quality.*.working_extreme_phase", _EXACT_QUALITY)]
-for _machine in ("shaper", "slotter", "furnace_pusher", "die_cutter", "press", "linkage",
-                 "lockbeam"):
-    EXPECTED.setdefault(_machine, []).extend(_EXACT_WORK)
+_expect(("shaper", "slotter", "furnace_pusher", "die_cutter", "press", "linkage", "lockbeam"), _EXACT_WORK)
 EXPECTED["furnace_pusher"] += [
     (f"check.{key}", _EXACT_QUALITY + " (the design's 60° at B is now met exactly: "
      "γ_work = π/3, α_B = 30°)") for key in ("gamma_min", "gamma_work", "alpha_B_work")]
@@ -174,9 +180,8 @@ EXPECTED["furnace_pusher"] += [
 _SHAFTS20 = ("issue 20: shafts designed by the handbook procedure (sections from the parts, σ_ca at "
              "every station with its diameter, bearings for the life, keys by the hub's diameter, "
              "upsized until they pass)")
-for _machine in ("drive", "shaper", "slotter", "furnace_pusher", "die_cutter", "press", "linkage",
-                 "lockbeam"):
-    EXPECTED.setdefault(_machine, []).append(("drive.shaft_designs.*", _SHAFTS20))
+_expect(("drive", "shaper", "slotter", "furnace_pusher", "die_cutter", "press", "linkage", "lockbeam"),
+        [("drive.shaft_designs.*", _SHAFTS20)])
 EXPECTED["drive"] += [
     (f"verification.checks.{i}.{leaf}", _SHAFTS20 + ": the strength margin of shaft "
      f"{i - 9} (smallest 1 − utilisation) and the check that gives it")
@@ -219,12 +224,9 @@ EXPECTED["shaper"].append(("drive.shaft_designs.0.*", "issue 19 (session 33): th
 # shaper's 9.25 mm read as 9.5 mm made P_b 2.6 % small); the force polygon's P_b vector and
 # the primed frame reaction that closes it follow. The crank is the last group solved.
 _PB = "issue 19: P_b = M_b / l_OA with the crank's known length (it was re-measured, 0.5 mm)"
-for _machine in ("shaper", "slotter", "press", "furnace_pusher", "die_cutter", "linkage",
-                 "crank_rocker", "lockbeam"):
-    EXPECTED.setdefault(_machine, []).extend(
-        (f"*graphical.positions.*.forces.*.{leaf}", _PB)
-        for leaf in ("moments.*.arm", "moments.*.result", "points.*", "vectors.*",
-                     "reactions.*'.*", "balancing_force.*"))
+_expect(_GRAPHICAL, [(f"*graphical.positions.*.forces.*.{leaf}", _PB)
+                    for leaf in ("moments.*.arm", "moments.*.result", "points.*", "vectors.*",
+                                 "reactions.*'.*", "balancing_force.*")])
 
 # Issue 19 (session 33): the acceleration of a point of a link turning about a fixed pivot
 # is a^n + a^t, a resultant whose direction the polygon gives ("sum"); it was stated as its
@@ -236,18 +238,14 @@ for _machine in ("shaper", "slotter", "press", "furnace_pusher", "die_cutter", "
 # 2536.75 N, the polygon's 50.5 mm no longer re-read), so the crank's M_b follows (227.25 →
 # 228.31 N·m), and the comparison with the analytic values
 _RPR35 = "issue 19 (session 35): F_R34 from the bar's moment equation carried into the polygon and the crank"
-for _machine in ("shaper", "slotter", "linkage"):
-    EXPECTED.setdefault(_machine, []).extend(
-        (f"*graphical.positions.*.{leaf}", _RPR35)
-        for leaf in ("forces.*.reactions.*", "forces.*.loads.*", "forces.*.moments.*.terms.*",
-                     "forces.*.balancing_torque", "balancing_torque", "comparison.*.graphical",
-                     "comparison.*.difference"))
+_expect(("shaper", "slotter", "linkage"), [
+    (f"*graphical.positions.*.{leaf}", _RPR35)
+    for leaf in ("forces.*.reactions.*", "forces.*.loads.*", "forces.*.moments.*.terms.*",
+                 "forces.*.balancing_torque", "balancing_torque", "comparison.*.graphical",
+                 "comparison.*.difference")])
 
-for _machine in ("shaper", "slotter", "press", "furnace_pusher", "die_cutter", "linkage",
-                 "crank_rocker", "lockbeam"):
-    EXPECTED.setdefault(_machine, []).append(
-        ("*graphical.positions.*.acceleration.equations.*.left.*.direction",
-         "issue 19: a resultant a^n + a^t has the polygon's direction, not its normal part's"))
+_expect(_GRAPHICAL, [("*graphical.positions.*.acceleration.equations.*.left.*.direction",
+                     "issue 19: a resultant a^n + a^t has the polygon's direction, not its normal part's")])
 
 # Issue 19 (session 33): a shaft written "1轴" (the zh style of the report, no space between
 # the numeral and 轴); the drive's self-checks store where they apply in zh
@@ -311,16 +309,13 @@ EXPECTED["stem:shaper"] = EXPECTED.get("stem:shaper", []) + [(path, _FLY35 + "; 
 # rack tip passes N1 by 0.028 mm, which cuts the involute only at the base circle, below the
 # lowest contact point (tests/test_gears.py).
 _ZMIN35 = "issue 19 (session 35): z_min = 17, the textbook's (2h_a*/sin²α = 17.10 rounded)"
-for _machine in ("shaper", "slotter", "press"):
-    EXPECTED.setdefault(_machine, []).extend(
-        (f"gear.pair.{leaf}", _ZMIN35) for leaf in ("z_min", "x_min1", "x_min2"))
+_expect(("shaper", "slotter", "press"), [(f"gear.pair.{leaf}", _ZMIN35) for leaf in ("z_min", "x_min1", "x_min2")])
 EXPECTED["press"] += [(f"gear.pair.{leaf}", _ZMIN35 + "; the press's pair standard: x1 = x2 = 0")
                       for leaf in ("g1.*", "g2.*", "contact_ratio", "action_length")]
-for _machine in ("drive", "furnace_pusher", "die_cutter"):
-    EXPECTED.setdefault(_machine, []).extend(
-        (f"drive.stages.*.design.{leaf}", _ZMIN35) for leaf in (
-            "geometry.z_min", "geometry.x_min1", "geometry.x_min2",
-            "checks.*.inputs.z_min", "checks.*.inputs.x_min", "checks.*.allowable"))
+_expect(("drive", "furnace_pusher", "die_cutter"), [
+    (f"drive.stages.*.design.{leaf}", _ZMIN35) for leaf in (
+        "geometry.z_min", "geometry.x_min1", "geometry.x_min2",
+        "checks.*.inputs.z_min", "checks.*.inputs.x_min", "checks.*.allowable")])
 
 # Issue 19 (session 36, review36 Top 1 and 11): in the graphical method the crank's v_A = ω·l
 # and a_A^n = ω²·l (ω the brief's, α = 0) are given, not measured: drawn at their exact length
@@ -336,12 +331,9 @@ for _machine in ("drive", "furnace_pusher", "die_cutter"):
 # (tests/test_graphical.py: test_crank_pin_speed_is_omega_l_at_every_position_and_not_compared,
 # test_known_forces_are_drawn_at_their_value).
 _GIVEN36 = "issue 19 (session 36): the crank's ω·l, ω²·l and the known forces drawn at their exact length"
-for _machine in ("shaper", "slotter", "press", "furnace_pusher", "die_cutter", "linkage",
-                 "crank_rocker", "lockbeam"):
-    EXPECTED.setdefault(_machine, []).extend(
-        (f"*graphical.positions.*.{leaf}", _GIVEN36)
-        for leaf in ("velocity.*", "acceleration.*", "forces.*", "balancing_torque",
-                     "comparison.*"))
+_expect(_GRAPHICAL, [(f"*graphical.positions.*.{leaf}", _GIVEN36)
+                    for leaf in ("velocity.*", "acceleration.*", "forces.*", "balancing_torque",
+                                 "comparison.*")])
 
 # Self-check residuals: round-off, not results. Compared only as "still tiny".
 IGNORED = ("*closure_residual", "*stroke_error", "*power_balance_residual", "*power_residual*",

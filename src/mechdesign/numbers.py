@@ -8,7 +8,7 @@ the stages). Standard library only: no prose, no units, no I/O.
 * :func:`grouped_digits` — an integer part of five or more digits grouped by threes with a
   narrow no-break space (for text and table cells, never inside a formula);
 * :func:`gives`, :func:`factors_for` — a displayed chain's printed factors give its printed
-  result to its last digit.
+  result to its last digit (:func:`factor_text`: a factor's significant digits or decimals).
 """
 from __future__ import annotations
 
@@ -70,23 +70,35 @@ def significant(text: str) -> int:
     return max(len(digits.lstrip("0")), 1)
 
 
-def factors_for(xs, fn, printed: str, sig_digits=4, most: int = 3) -> list[str]:
+def factor_text(x: float, n: int, decimals: bool = False) -> str:
+    """``x`` as a formula's factor (digits together): ``n`` significant digits (:func:`sig`),
+    or with ``decimals`` ``n`` decimals (:func:`fixed`; a speed to 0.01 rpm, an angle to
+    0.01°)."""
+    return fixed(x, n) if decimals else sig(x, n, group=False)
+
+
+def factors_for(xs, fn, printed: str, sig_digits=4, most=3, decimals=False) -> list[str]:
     """The factors ``xs`` of a displayed chain whose printed result is ``printed``: :func:`sig`'s
     ``sig_digits`` significant digits (one number, or one for each factor), the fewest more
-    digits (up to ``most`` a factor, fewest in all first) with which ``fn(*printed factors)``
-    gives ``printed`` to its last digit (636.62 × 5.236 = 3333.3, where 636.6 gives 3333.2)."""
+    digits (up to ``most`` a factor, one number or one for each; fewest in all first, the
+    last factor's first) with which ``fn(*printed factors)`` gives ``printed`` to its last
+    digit (636.62 × 5.236 = 3333.3, where 636.6 gives 3333.2); where none does, each factor
+    with all its ``most`` more digits. ``decimals`` (one flag, or one for each factor): the
+    factor's digits are counted as decimals (:func:`factor_text`), not significant digits."""
     from itertools import product
 
     result = printed.replace(" ", "").replace("\u202f", "")
     n = len(xs)
-    base = [sig_digits] * n if isinstance(sig_digits, int) else list(sig_digits)
-    for total in range(most * n + 1):
-        for extras in product(range(most + 1), repeat=n):
+
+    def each(v):
+        return [v] * n if isinstance(v, (int, bool)) else list(v)
+
+    base, top, dec = each(sig_digits), each(most), each(decimals)
+    for total in range(sum(top) + 1):
+        for extras in product(*(range(m + 1) for m in top)):
             if sum(extras) != total:
                 continue
-            texts = [sig(x, b + e, group=False) for x, b, e in zip(xs, base, extras)]
+            texts = [factor_text(x, b + e, d) for x, b, e, d in zip(xs, base, extras, dec)]
             if gives(fn(*(float(t) for t in texts)), result):
                 return texts
-    return [sig(x, b + most, group=False) for x, b in zip(xs, base)]
-
-
+    return [factor_text(x, b + m, d) for x, b, m, d in zip(xs, base, top, dec)]

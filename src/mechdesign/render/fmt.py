@@ -73,7 +73,7 @@ import re
 
 from ..i18n import tr
 from ..numbers import GROUP, fixed as f, grouped_digits as _group, sig  # noqa: F401  (the rule's digits: mechdesign/numbers.py)
-from ..numbers import factors_for, gives  # noqa: F401  (a displayed chain's digits)
+from ..numbers import factor_text, factors_for, gives  # noqa: F401  (a displayed chain's digits)
 
 
 def grouped(text: str) -> str:
@@ -386,14 +386,17 @@ def sentences(_, *texts: str) -> str:
     return ("" if _.zh else " ").join(t for t in texts if t)
 
 
-def factor_for(x: float, ok, sig_digits: int = 4, write=None) -> str:
+def factor_for(x: float, ok, sig_digits: int = 4, write=None, decimals: bool = False,
+               most: int = 3) -> str:
     """``x`` as a factor of a displayed chain: :func:`sig`'s ``sig_digits`` significant
     digits (or ``write(x, digits)``'s, a formula's number writer), one more at a time (up to
-    three) until ``ok(printed factor)`` holds — the printed factors give the printed result
-    (6.404 × 14.118² = 1276.5, where 14.12 gives 1276.8). A number the writer prints with a
-    power of ten or in parentheses is taken as it is."""
-    for extra in range(4):
-        text = write(x, sig_digits + extra) if write else sig(x, sig_digits + extra, group=False)
+    ``most``) until ``ok(printed factor)`` holds — the printed factors give the printed result
+    (6.404 × 14.118² = 1276.5, where 14.12 gives 1276.8); where none does, the last tried.
+    ``decimals``: the digits are decimals (ψ/2 to 0.01° or finer), not significant digits
+    (:func:`mechdesign.numbers.factor_text`). A number the writer prints with a power of ten
+    or in parentheses is taken as it is."""
+    for extra in range(most + 1):
+        text = write(x, sig_digits + extra) if write else factor_text(x, sig_digits + extra, decimals)
         if "times" in text or "(" in text or ok(float(text)):
             return text
     return text

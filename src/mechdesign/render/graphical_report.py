@@ -18,7 +18,7 @@ import numpy as np
 
 from . import figures as fig
 from ..i18n import N_, tr
-from .fmt import GROUP, exact, f, gives, grouped, mpl_text, sci, sig, tex_name
+from .fmt import GROUP, exact, f, factor_for, gives, grouped, mpl_text, sci, sig, tex_name
 from .label_layout import Label, place
 from .labels import LabelTable, mpl_point, pgettext, point_tex, tex_names
 
@@ -799,10 +799,11 @@ def _group_moments(fg, mu_l, lang: str, least: dict, shown: dict) -> tuple[list,
         if m.unknown == "Pb":
             # a definition evaluated (no equation solved): one chain, no "=>"; the crank's
             # length is known (m.arm x mu_l in m), not measured
-            # M_b with the digits that give the printed P_b (−227.3/0.0925 = −2457)
+            # M_b with the decimals that give the printed P_b (−227.3/0.0925 = −2457):
+            # _factor's digits are decimals more than _num's
             arm = exact(m.arm * mu_l, decimals=5)
-            mb = next(_factor(fg.balancing_torque, x) for x in range(7) if x == 6 or _gives(
-                float(_factor(fg.balancing_torque, x)) / float(arm), _num(m.result)))
+            mb = factor_for(fg.balancing_torque, lambda v: _gives(v / float(arm), _num(m.result)),
+                            0, write=_factor, most=6)
             moments.append((f"P_b = \\frac{{M_b}}{{l_{{{m.point}}}}} = \\frac{{{mb}}}"
                             f"{{{arm}}} = {_num(m.result)}" r"\ \mathrm{N}", None, None))
             continue

@@ -5,7 +5,7 @@ from __future__ import annotations
 import numpy as np
 
 from ..i18n import N_, Msg, tr
-from .fmt import f, fluctuation, gives, product, sig, time_ratio
+from .fmt import f, factor_for, fluctuation, gives, product, sig, time_ratio
 from .labels import InContext, pgettext
 
 DEG = 180.0 / np.pi
@@ -56,8 +56,8 @@ def guide_bar_context(syn, p, rod: str = "BF", ram_zh: str | None = None,
     else:
         # ψ/2 with the decimals that give the printed L_O3B (320/(2 sin 8.18°) is 1124.6, not
         # 1124.27: 0.01° of ψ/2 moves the bar by 1.4 mm)
-        half_txt = next(t for t in (f(half, k) for k in range(2, 7)) if t == f(half, 6) or gives(
-            float(f(H, 0)) / (2 * np.sin(np.radians(float(t)))), f(d.guide_bar * mm, 2)))
+        half_txt = factor_for(half, lambda t: gives(float(f(H, 0)) / (2 * np.sin(np.radians(t))),
+                                                    f(d.guide_bar * mm, 2)), 2, decimals=True, most=4)
         eq = {
             "theta": (rf"\theta = 180° \times \frac{{K-1}}{{K+1}} = 180° \times "
                       rf"\frac{{{f(K, 2)}-1}}{{{f(K, 2)}+1}} = {f(theta, 2)}°"),

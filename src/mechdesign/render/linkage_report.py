@@ -16,7 +16,7 @@ from ..i18n import N_, tr
 from . import figures as fig
 from .fmt import e, f, fluctuation, force_unit, md_text, percent, sentences, sig, tex_name, time_ratio
 from .fmt import verdict as fmt_verdict
-from .fmt import factor_for, gives, product
+from .fmt import factor_for, factors_for, gives, product
 from .label_layout import Label, place
 from .labels import LabelTable, md_names, md_point, mpl_names, mpl_point, point_tex
 
@@ -326,18 +326,16 @@ def flywheel_equation(energy_swing: float, speed_rpm: float, delta: float, jf: s
     d_value = float(num) / float(den) if den else float(num)
     d_tex = rf"({num}/{den})" if den else d_text
 
-    def chain(n_extra: int, dw_extra: int) -> tuple[str, str, bool]:
-        # to 0.01 rpm; a speed below 1 rpm (a careless brief's 1e-9) to significant digits,
-        # which 0.01 rpm would print as 0.00 (a division by zero)
-        n_text = f(speed_rpm, 2 + n_extra) if speed_rpm >= 1 else sig(speed_rpm, 4 + n_extra, group=False)
-        dw_text = sig(energy_swing, energy_digits + dw_extra, group=False)
-        denominator = np.pi ** 2 * float(n_text) ** 2 * d_value
-        return n_text, dw_text, denominator > 0 and gives(900 * float(dw_text) / denominator, jf)
+    def jf_of(n: float, dw: float) -> float:
+        denominator = np.pi ** 2 * n ** 2 * d_value
+        return 900 * dw / denominator if denominator > 0 else float("nan")
 
-    n_text, dw_text, _ok = next(
-        (c for extra in range(5) for n_extra in range(min(extra, 2) + 1)
-         if (c := chain(n_extra, extra - n_extra))[2]),
-        chain(0, 0))
+    # n to 0.01 rpm (up to 0.0001); a speed below 1 rpm (a careless brief's 1e-9) to
+    # significant digits, which 0.01 rpm would print as 0.00 (a division by zero)
+    to_decimals = speed_rpm >= 1
+    n_text, dw_text = factors_for((speed_rpm, energy_swing), jf_of, jf,
+                                  (2 if to_decimals else 4, energy_digits), most=(2, 4),
+                                  decimals=(to_decimals, False))
     return (rf"J_F = \frac{{900\,\Delta W_{{max}}}}{{\pi^2 n^2 [\delta]}} = \frac{{900 \times "
             rf"{dw_text}}}{{\pi^2 \times {n_text}^2 \times {d_tex}}} = {jf}\ \text{{kg·m}}^2")
 

@@ -183,13 +183,16 @@ def design_ratios(stages, elements, total: float, belt_d1: dict | None = None) -
 def design_drive(dp, machine_power: float, output_rpm: float, source: str,
                  peak_factor: float = 1.0, peak_from_shaft: int | None = None,
                  life_factor: float | None = None,
-                 weights: dict[int, tuple[float, float]] | None = None) -> DriveResult:
+                 weights=None) -> DriveResult:
     """The whole drive for a machine needing ``machine_power`` [W] at ``output_rpm``.
     ``peak_factor``: the machine's peak torque / its mean, carried by the shafts from
     ``peak_from_shaft`` on (after the flywheel; None: none); ``life_factor``: the cycle's
     cube-mean torque / its mean, the equivalent load of the bearing life there (None: the
     mean); ``weights``: {shaft: (weight [N], width [m])} of a heavy part that carries no
-    drive stage (a flywheel), a vertical load between that shaft's bearings."""
+    drive stage (a flywheel), a vertical load between that shaft's bearings, or a function
+    of the shaft table (:func:`core.shaft_table`'s rows) giving it (a flywheel sized at the
+    speed the drive realises on its shaft: the motor, the ratios and the shaft table do not
+    depend on the weights)."""
     # A machine without working resistance takes (almost) no mean power: its torque only
     # swings about zero, the peak factor peak/mean is unbounded and nothing sizes the drive.
     if not (machine_power > 0 and np.isfinite(machine_power) and 0 < peak_factor < 1e6):
@@ -230,6 +233,8 @@ def design_drive(dp, machine_power: float, output_rpm: float, source: str,
         if not changed:
             break
         worm_eff.update(changed)
+    if callable(weights):
+        weights = weights(shafts)
     shaft_designs = _shafts(dp, results, shafts, peak_factor, peak_from_shaft, life_factor, weights)
     n_out = shafts[-1].speed_rpm
     error = (n_out - output_rpm) / output_rpm

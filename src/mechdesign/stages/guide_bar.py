@@ -3,6 +3,7 @@ the synthesis from H, K, the frame and the link ratios, and the drive whose last
 the gear pair z1/z2 turning the crank."""
 from __future__ import annotations
 
+import functools
 from dataclasses import dataclass
 
 import numpy as np
@@ -133,29 +134,32 @@ def _drive(r: dict, flywheel_weight: bool = False):
     flywheel_shaft = shafts - 1 if p.flywheel_shaft == "pinion" else shafts
     # the bearing life's equivalent load: the cycle's cube-mean torque (see design_drive)
     life = float(np.mean(np.abs(mb) ** 3) ** (1 / 3) / mean) if mean > 0 else None
-    def design(fl):
-        weights = None
-        if flywheel_weight and fl.rim is not None and flywheel_shaft >= 1:
-            weights = {flywheel_shaft: (fl.rim.rim_mass * p.gravity, fl.rim.width)}
-        return design_drive(p.drive, fl.mean_power, p.crank_speed_rpm, "mechanism",
-                            peak, flywheel_shaft if flywheel_shaft < shafts else None, life, weights)
+    spec = getattr(r.get("model"), "flywheel", None)
 
-    result = design(fl)
     # J_F grows as 1/n²: where the drive turns the flywheel's shaft slower than nominal, the
     # flywheel is sized at that speed, and the drive's shafts carry the resized rim (the
-    # motor and the ratios do not depend on the rim's weight)
-    n_real = result.shafts[flywheel_shaft].speed_rpm
-    model = r.get("model")
-    spec = getattr(model, "flywheel", None)
-    if spec is not None and n_real < fl.shaft_speed_rpm - 5e-3:
-        from .flywheel import at_realised_speed
+    # motor, the ratios and the speeds do not depend on the rim's weight: one design)
+    @functools.cache
+    def flywheel_at(n_real: float):
+        if spec is not None and n_real < fl.shaft_speed_rpm - 5e-3:
+            from .flywheel import at_realised_speed
 
-        fl = at_realised_speed(fl, spec, n_real, p.gravity)
-        result = design(fl)
+            return at_realised_speed(fl, spec, n_real, p.gravity)
+        return fl
+
+    def weights(table):
+        if not flywheel_weight or flywheel_shaft < 1:
+            return None
+        rim = flywheel_at(table[flywheel_shaft].speed_rpm).rim
+        return {flywheel_shaft: (rim.rim_mass * p.gravity, rim.width)} if rim is not None else None
+
+    result = design_drive(p.drive, fl.mean_power, p.crank_speed_rpm, "mechanism",
+                          peak, flywheel_shaft if flywheel_shaft < shafts else None, life, weights)
+    flywheel = flywheel_at(result.shafts[flywheel_shaft].speed_rpm)
     # The last stage is gear_pair, whose undercut the gear stage reports with its own fields.
     last = f"drive.stages[{shafts - 1}]"
     return replace(result, warnings=tuple(w for w in result.warnings
-                                          if not (w.code == "undercut" and w.field == last))), fl
+                                          if not (w.code == "undercut" and w.field == last))), flywheel
 
 
 def drive_stage(flywheel_weight: bool = False) -> Stage:
