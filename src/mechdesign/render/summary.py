@@ -323,7 +323,10 @@ def _show(value: Any, factor: float, unit: str = "", label: str = "",
 
 # symbols in the registry's plain-text labels (also shown in the terminal) → typeset
 _LABEL_MATH = ((re.compile(r"\bJ_F\b"), r"$J_F$"), (re.compile(r"γ_?min"), r"$\gamma_{min}$"),
-               (re.compile(r"\bK\b"), r"$K$"), (re.compile(r"\br0\b"), r"$r_0$"))
+               (re.compile(r"\bK\b"), r"$K$"), (re.compile(r"\br0\b"), r"$r_0$"),
+               (re.compile(r"(?<![\w$])H(?![\w$])"), r"$H$"))
+# a length named by its letter at the label's end ("offset slider-crank: crank a", "连杆 b")
+_END_LETTER = re.compile(r"(?<=\s)([a-e])$")
 
 
 # a link named by its points ("coupler BC", "摇杆 DE"): math italic, as every point name
@@ -334,6 +337,7 @@ def _label(text: str) -> str:
     text = _LINK_NAME.sub(lambda m: f"${m[1]}$", md_text(text))
     for pattern, math_ in _LABEL_MATH:
         text = pattern.sub(lambda _m: math_, text)
+    text = _END_LETTER.sub(lambda m: f"${m[1]}$", text)
     return (text.replace("γ\\_min", r"$\gamma_{min}$").replace("J\\_F", "$J_F$")
             .replace("ΔW\\_max", r"$\Delta W_{max}$"))
 
