@@ -236,6 +236,13 @@ def check_groups(document: dict, ctx: dict, lang: str) -> list[dict]:
             g = {"group": _.pgettext("check group", "verification"), "count": len(rows),
                  "failed": [name for name, ok in rows if not ok]}
             groups = {g["group"]: g, **groups}
+    # the gear chapter's checks (no undercut, tip thickness, contact ratio): stated in its
+    # text, judged from the stage's findings, not recorded as checks in the results
+    gear = ctx.get("gear") if isinstance(ctx.get("gear"), dict) else None
+    if gear and gear.get("checks"):
+        name = _.pgettext("check group", "gear pair")
+        groups[name] = {"group": name, "count": len(gear["checks"]),
+                        "failed": [n for n, ok in gear["checks"] if not ok]}
     out = []
     for g in groups.values():
         failed = list(dict.fromkeys(g["failed"]))
