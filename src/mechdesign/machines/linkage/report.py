@@ -38,8 +38,10 @@ def data_rows(brief, lang: str) -> list[list[str]]:
     rows = [[ln(ck.pivot, ck.tip), _("crank {link}", link=md_text(ck.link)), _g(ck.length_mm), "mm"],
             ["$n$", _("crank speed ({sense})", sense=sense), sig(ck.speed_rpm, 4), _("rpm")],
             ["$\\omega$", _("crank angular velocity"), sig(ck.speed_rpm * math.pi / 30, 4), "rad/s"]]
-    for name, (x, y) in lk.frame_points_mm.items():
-        rows.append([md_point(name), _("frame point"), f"({_g(x)}, {_g(y)})", "mm"])
+    # the frame points in one row: "$O_2$, $O_4$ | (0, 0), (400, 0)"
+    pts = lk.frame_points_mm
+    rows.append([", ".join(md_point(n) for n in pts), _("frame points"),
+                 ", ".join(f"({_g(x)}, {_g(y)})" for x, y in pts.values()), "mm"])
     for g in lk.groups:
         if g.type == "RRR":
             (b, d), c = g.ends, g.joint
@@ -61,11 +63,16 @@ def data_rows(brief, lang: str) -> list[list[str]]:
                                                  link=md_text(g.link)), where,
                          "mm, °" if g.angle_deg else "mm"])
     for m in lk.masses:
+        # a link's mass and its moment of inertia about the centre of mass in one row
         link, com, com_md = md_text(m.link), point_tex(m.com), md_point(m.com)
-        if m.mass_kg:
+        if m.mass_kg and m.J_kgm2:
+            rows.append([f"$m_{{{point_tex(m.link)}}}$, $J_{{{com}}}$",
+                         _("mass of link {link} and its moment of inertia about its centre of mass {com}",
+                           link=link, com=com_md), f"{_g(m.mass_kg)}, {_g(m.J_kgm2)}", "kg, kg·m²"])
+        elif m.mass_kg:
             rows.append([f"$m_{{{point_tex(m.link)}}}$", _("mass of link {link} (centre of mass {com})",
                                                             link=link, com=com_md), _g(m.mass_kg), "kg"])
-        if m.J_kgm2:
+        elif m.J_kgm2:
             rows.append([f"$J_{{{com}}}$", _("moment of inertia of link {link} about its centre of mass",
                                              link=link), _g(m.J_kgm2), "kg·m²"])
     for r in lk.resistances:
