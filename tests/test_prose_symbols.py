@@ -155,3 +155,84 @@ def test_a_heading_with_a_quantity_letter_keeps_it_in_the_word_contents():
     heading = ('<w:r><w:t xml:space="preserve">Crank-rocker from the time ratio </w:t></w:r>'
                '<m:oMath><m:r><m:rPr /><m:t>K</m:t></m:r></m:oMath>')
     assert _heading_text(heading) == "Crank-rocker from the time ratio K"
+
+
+# ---------------------------------------------------------------- Greek quantity letters
+# review36 C / issue 19: Greek quantity letters stood upright in running text and in table
+# labels ("(ω = 5.236 rad/s)", "[δ] = 1/20", "θ 圆", "传动角 γ") while the formulas beside
+# them set ω, δ, θ, γ italic. A Greek letter of the prose is a quantity; it is written as
+# inline math ($\omega$, $[\delta]$, $\theta$-circle) in both languages. Not quantities: a
+# position's label ("φ45", the brief's name of the position asked at 45°, like "8′"), the
+# unit prefix μ ("μm"), the constant π.
+_GREEK = re.compile(r"[\u0391-\u03a9\u03b1-\u03c9]")
+_NOT_GREEK_QUANTITY = re.compile(r"φ\d+|μ(?=m\b|s\b)|π")
+
+
+def bare_greek(md: str, cells: bool = True) -> list[tuple[str, str]]:
+    """The bare Greek letters of the report's prose lines and, with ``cells``, of its table
+    cells (math and code taken out)."""
+    lines = list(_prose_lines(md))
+    if cells:
+        for row in re.findall(r"^\|(.+)\|$", md, re.M):
+            for cell in row.split("|"):
+                cell = re.sub(r"(?<!\\)\$[^$]*?(?<!\\)\$", "§", cell)
+                lines.append(cell.strip())
+    out = []
+    for line in lines:
+        text = _NOT_GREEK_QUANTITY.sub(" ", line)
+        out += [(m.group(0), line[:160]) for m in _GREEK.finditer(text)]
+    return out
+
+
+@pytest.mark.parametrize("text, found", [
+    ("原动件为曲柄，以 $n$ = 60.00 r/min 顺时针匀速转动（ω = 6.283 rad/s）", ["ω"]),
+    ("飞轮轴转速 60.00 r/min，[δ] = 1/20", ["δ"]),
+    ("| 摇杆 $O_4B$ | 传动角 γ | $B$ |", ["γ"]),
+    ("## Position φ45 (crank angle 45.0°)", []),
+    ("（$\\omega$ = 6.283 rad/s），$[\\delta]$ = 1/20，$\\theta$ 圆，2π，10 μm", []),
+])
+def test_the_greek_scan(text, found):
+    assert [g for g, _ in bare_greek(text)] == found
+
+
+@pytest.mark.parametrize("lang", ["zh", "en"])
+@pytest.mark.parametrize("name", EXAMPLES)
+def test_greek_quantity_letters_are_math(example_results, name, lang):
+    md, _ = _markdown(example_results, name, lang)
+    bad = bare_greek(md)
+    assert not bad, bad
+
+
+# A table's label cell (its first column: a check, a result, a quantity) names quantities as
+# the prose does: "stroke $H$", "$K$ by position search", not "stroke H" (review36 C). An
+# item label "A. speed reduction" (a function of the lock-beam's tree) is no quantity.
+_ITEM = re.compile(r"^[A-Z]\. ")
+
+
+def bare_label_letters(md: str, lang: str) -> list[tuple[str, str]]:
+    md = re.split(r"^# (?:References|参考文献)", md, flags=re.M)[0]
+    out = []
+    for row in re.findall(r"^\|(.+)\|$", md, re.M):
+        cell = row.split("|")[0].strip()
+        if _ITEM.match(cell):
+            continue
+        text = re.sub(r"(?<!\\)\$[^$]*?(?<!\\)\$", "§", cell)
+        out += [(tok, cell[:160]) for tok in _bare_quantities(text, lang)]
+    return out
+
+
+@pytest.mark.parametrize("text, found", [
+    ("| 偏置曲柄滑块机构：行程 H | 100.00 | mm |", ["H"]),
+    ("| K by position search | 1.4 | 1.4 | PASS |", ["K"]),
+    ("| stroke $H$ | 220.00 | mm |\n| A. speed reduction | x |\n| $K$ by position search | 1.4 |", []),
+])
+def test_the_label_scan(text, found):
+    assert [t for t, _ in bare_label_letters(text, "en")] == found
+
+
+@pytest.mark.parametrize("lang", ["zh", "en"])
+@pytest.mark.parametrize("name", EXAMPLES)
+def test_quantity_letters_in_table_labels_are_math(example_results, name, lang):
+    md, _ = _markdown(example_results, name, lang)
+    bad = bare_label_letters(md, lang)
+    assert not bad, bad

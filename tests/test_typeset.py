@@ -1010,7 +1010,8 @@ WIDE_GAPS_OPEN: set[tuple[str, str]] = set()
 # ("各图纸的预览见图 19…") and starts the next page whole; textbook_guide_bar en p.17 (50 %) since
 # graphfix36 (its comparison table four rows shorter: the crank's given v_A, a_A are not
 # compared): "5 Drawing sheets" moved up and p.17 holds table 24 and figure 12 only
-HALF_EMPTY_OPEN: set[tuple[str, str]] = {("slotter", "zh"), ("textbook_guide_bar", "en")}
+# textbook zh p.8 since text37 (chapter 1's data table; textbook en's p.17 gone with it)
+HALF_EMPTY_OPEN: set[tuple[str, str]] = {("slotter", "zh"), ("textbook_guide_bar", "zh")}
 # A figure between the parts of a split table whose text stands BEFORE the table is held back
 # past the table (templates/report.typ: figure-held; the figures whose text follows a split
 # table go to the foot of its last page: after-split). Open (each is a report whose layout did
@@ -1018,11 +1019,14 @@ HALF_EMPTY_OPEN: set[tuple[str, str]] = {("slotter", "zh"), ("textbook_guide_bar
 # render/pdf.py compile_pdf, so that nothing holds its figures back; slotter en since graph36:
 # its force tables two rows shorter, F_R45^t = 0 is no row):
 TABLES_INTERRUPTED_OPEN = {(b, lang) for b, langs in {
-    "linkage_sixbar": "zh", "press": "zh", "slotter": "zh en", "textbook_guide_bar": "zh en"}.items()
-    for lang in langs.split()}
+    "press": "zh", "slotter": "zh en"}.items()
+    for lang in langs.split()}     # linkage_sixbar zh, textbook zh/en gone since text37 (ch. 1's data table)
 # A blank band above a figure at a page's foot (page_holes; slotter en's gone since graph36). Open:
+# linkage_sixbar zh/en p.7 since text37: chapter 1's data table moves the figures; each of
+# four layouts of that table tried left a hole or a half-empty page in one of linkage_sixbar
+# and textbook zh/en (the figure plan, templates/report.typ).
 HOLES_OPEN = {(b, lang) for b, langs in {
-    "cam_7_3": "en", "die_cutter": "en"}.items() for lang in langs.split()}
+    "cam_7_3": "en", "die_cutter": "en", "linkage_sixbar": "zh en"}.items() for lang in langs.split()}
 # A figure between two lines of a derivation (figures_in_derivations). A short derivation is
 # not broken across pages (templates/report.typ: keep-derivations); open: die_cutter en's
 # cam programme (seven equations, its figure 16 on the top of the page where they go on);

@@ -13,7 +13,7 @@ from ..i18n import N_, tr
 from ..core.motion_laws import LAWS
 from . import cam_figures as cf
 from .fmt import e, f, length, md_text, sig, verdict
-from .labels import LabelTable, pgettext
+from .labels import LabelTable, md_symbols, pgettext
 
 DEG = 180.0 / np.pi
 MM = 1e3
@@ -301,7 +301,7 @@ def cam_context(c, lang: str, figs: dict[str, str], csv_name: str) -> dict:
         ok = verdict(chk.ok, lang)
         name = f"{_segment_name(c, i, lang)} {i + 1}"
         checks.append([_("max pressure angle, {segment}", segment=name),
-                       f"{f(chk.max_pressure_angle * DEG, 2)}° (δ = {f(chk.at * DEG, 1)}°)",
+                       f"{f(chk.max_pressure_angle * DEG, 2)}° ($\\delta$ = {f(chk.at * DEG, 1)}°)",
                        f"≤ {f(chk.limit * DEG, 0)}°", ok])
     if fol.kind == "roller":
         ok = verdict(c.rho_actual_min_convex >= p.min_actual_curvature, lang)
@@ -354,8 +354,9 @@ def cam_context(c, lang: str, figs: dict[str, str], csv_name: str) -> dict:
         "joints": _.pgettext("list", ", ").join(joints),
         "laws": laws, "geo": geo, "checks": checks, "design_rows": design_rows,
         "table_rows": table_rows, "table_step": f(p.table_step * DEG, 1),
-        "table_head": ["δ/°", f"{u.s_sym}/{u.s_unit}", f"{u.syms[0]}/({u.units[0]})",
-                       "x/mm", "y/mm", "$x_a$/mm", "$y_a$/mm", "α/°"],
+        "table_head": [md_symbols(h) for h in (
+            "δ/°", f"{u.s_sym}/{u.s_unit}", f"{u.syms[0]}/({u.units[0]})",
+            "$x$/mm", "$y$/mm", "$x_a$/mm", "$y_a$/mm", "α/°")],
         "fig": figs, "csv": csv_name, "roller": fol.kind == "roller", "flat": fol.kind == "flat",
         "translating": translating,
         "warnings": [md_text(w.text(lang)) for w in c.warnings],
@@ -465,12 +466,12 @@ def envelope_note(c, lang: str, verification=None) -> str:
              "The actual profile is corrected to that envelope: ")
     parts = []
     if edges:
-        parts.append(_("at δ = {at} the two offset branches cross in a small loop whose points lie closer "
+        parts.append(_("at $\\delta$ = {at} the two offset branches cross in a small loop whose points lie closer "
                        "than $r_r$ to the pitch curve (the roller would cut them away); the profile stops at "
                        "the crossing, a sharp edge, and there the roller centre leaves its designed path by "
                        "at most {d} mm", at=deg(edges), d=f(env.stand_off * MM, 3)))
     if arcs:
-        parts.append(_("at δ = {at} the offset branches leave a gap, filled by the arc of radius $r_r$ = {rr} mm "
+        parts.append(_("at $\\delta$ = {at} the offset branches leave a gap, filled by the arc of radius $r_r$ = {rr} mm "
                        "about the corner; there the follower moves as designed", at=deg(arcs), rr=rr))
     text += _.pgettext("clause separator", "; ").join(parts) + _.pgettext("sentence end", ". ")
     off = [k for k in getattr(verification, "checks", ()) if k.key == "offset_curve"]

@@ -266,7 +266,7 @@ def intermittent_context(g, curves, lang: str, figs: dict[str, str], level: int 
     jump = curves.jump
     per_rad = g.driver_speed is None
     if per_rad:
-        row(N_("jump of dφ₂/dθ at engagement"), "$\\Delta(d\\varphi_2/d\\theta)$",
+        row(N_("jump of $d\\varphi_2/d\\theta$ at engagement"), "$\\Delta(d\\varphi_2/d\\theta)$",
             f"$z_1/z_2 = {z1}/{z2}$", sig(jump.omega2, 4), "—")
     else:
         row(N_("jump of the driven speed at engagement"), "$\\Delta\\omega_2$",

@@ -101,7 +101,14 @@ def gear_context(g, lang: str, figures: dict[str, str]) -> dict:
             nb = p.a_work * np.sin(p.alpha_work) - np.sqrt((other.da / 2) ** 2 - (other.db / 2) ** 2)
             slight.append({"z": str(gd.z), "depth": f(depth * MM, 3), "rb": f(gd.db / 2 * MM, 2),
                            "r": f(np.hypot(gd.db / 2, nb) * MM, 2)})
+    # the checks the chapter states (its verdict sentence), for the summary's verdict table:
+    # each passes unless the stage found the matching problem
+    codes = {w.code for w in g.warnings}
+    checks = [[_("no undercut"), "undercut" not in codes],
+              [_("tip thickness ≥ 0.25 $m$"), "pointed" not in codes],
+              [_("contact ratio $\\varepsilon \\ge$ 1.2 (continuous transmission)"), "contact_ratio" not in codes]]
     return {
+        "checks": checks,
         "rows": rows, "pair_rows": pair_rows, "eq": eq, "shifted": shifted,
         # height modification (x1 + x2 = 0): standard centre distance and pressure angle kept
         "height_mod": shifted and abs(g1.x + g2.x) < 1e-12,

@@ -850,7 +850,21 @@ def _group_moments(fg, mu_l, lang: str, least: dict, shown: dict) -> tuple[list,
     return moments, couple
 
 
-def _compare(pos, lang: str) -> list[list[str]]:
+def _printed(pos, forces: list[dict]) -> dict[str, str]:
+    """Each force of the position's polygon tables as its row prints it (the first row that
+    lists it), by its symbol ("R45")."""
+    out: dict[str, str] = {}
+    for fc, fg in zip(forces, pos.forces):
+        for row, v in zip(fc["rows"], _sides(fg)):
+            out.setdefault(v.symbol, row[3])
+    return out
+
+
+def _compare(pos, lang: str, printed: dict[str, str] | None = None) -> list[list[str]]:
+    """The comparison table's rows; a force listed in the polygon tables (``printed``, by
+    symbol: itself or its reaction) with the digits it is listed with there (one measured
+    value, one number: F_R45 = 66.5 mm × 25 N/mm = 1662.5 N in both tables, issue 19)."""
+    printed = printed or {}
     rows = []
     for c in pos.comparison:
         q = c.quantity
@@ -863,8 +877,8 @@ def _compare(pos, lang: str) -> list[list[str]]:
         mark = _("PASS") if ok else _.pgettext("graphical", "beyond")
         # a value smaller than the drawing's resolution has no meaningful relative error
         diff = "—" if abs(c.analytic) < c.tolerance else f(100 * c.difference, 1)
-        rows.append([name, c.unit, _numg(c.graphical), _numg(c.analytic), diff, _numg(c.tolerance),
-                     mark])
+        shown = printed.get(q, printed.get(_pair(q) or "", _numg(c.graphical)))
+        rows.append([name, c.unit, shown, _numg(c.analytic), diff, _numg(c.tolerance), mark])
     return rows
 
 
@@ -913,7 +927,7 @@ def graphical_context(results: dict, figures: dict, lang: str) -> list[dict]:
                 "fig": figures.get(f"{key}_kin", ""), "given": given,
                 "forces": forces, "crank": crank,
                 "mb": None if pos.balancing_torque is None else _numg(pos.balancing_torque),
-                "compare": _compare(pos, lang),
+                "compare": _compare(pos, lang, _printed(pos, forces)),
                 "beyond": sum(1 for c in pos.comparison
                               if abs(c.graphical - c.analytic) > c.tolerance),
             })

@@ -311,6 +311,13 @@ def _symbols_in_plain(text: str) -> str:
     return "".join(out)
 
 
+def md_symbols(text) -> str:
+    """:func:`mpl_symbols`'s rule for a cell of the report's Markdown tables (a check's or a
+    result's label: "stroke H" → "stroke $H$", "[γ]" → "[$\\gamma$]"): pandoc reads the same
+    TeX as mathtext."""
+    return mpl_symbols(str(text))
+
+
 def mpl_symbols(text: str) -> str:
     """A figure's text with the quantity symbols written in it as text set as mathtext (math
     italic): "crank angle φ (°)" → "crank angle $\\varphi$ (°)", "H − t = 55.0 mm" →

@@ -26,11 +26,11 @@ _TXT = LabelTable({
     "s": N_("displacement s"),
     "v": N_("velocity v"),
     "a": N_("acceleration a"),
-    "swing": N_("angle ψ"),
-    "w": N_("angular velocity ω"),
-    "al": N_("angular acceleration α"),
-    "gamma": N_("transmission angle γ"),
-    "alpha": N_("pressure angle α"),
+    "swing": N_("angle $\\psi$"),
+    "w": N_("angular velocity $\\omega$"),
+    "al": N_("angular acceleration $\\alpha$"),
+    "gamma": N_("transmission angle $\\gamma$"),
+    "alpha": N_("pressure angle $\\alpha$"),
     "limit": N_("allowed"),
     "mb": N_("balancing torque $M_b$ (N·m)"),
     "mean": N_("mean"),
@@ -351,7 +351,7 @@ def realised_flywheel(fly, n_real: float | None, _) -> str | None:
         return _("The drive (chapter \"Drive design\") realises $n'$ = {n_real} rpm on this shaft, {slower}% "
                  "below the nominal $n$ = {n} rpm at which $M_b$ and $\\Delta W_{{max}}$ are computed. "
                  "$J_F$ grows as $1/n^2$, so it is sized at the slower $n'$ above: sized at $n$, the flywheel "
-                 "would let the fluctuation reach $\\delta = [\\delta](n/n')^2$ = {delta_real} > [δ].",
+                 "would let the fluctuation reach $\\delta = [\\delta](n/n')^2$ = {delta_real} > $[\\delta]$.",
                  n_real=f(n1, 2), n=f(n0, 2), slower=percent(abs(n1 / n0 - 1) * 100),
                  delta_real=f(fly.fluctuation * (n0 / n1) ** 2, 4))
     if n_real is None or abs(n_real - fly.shaft_speed_rpm) < 5e-3:
@@ -369,10 +369,10 @@ def realised_flywheel(fly, n_real: float | None, _) -> str | None:
                   "this shaft, {faster}% slower.", n=n, n_real=nr, faster=off)
     if delta <= fly.fluctuation * (1 + 1e-12):
         second = _("The same flywheel there keeps the fluctuation at $\\delta = [\\delta](n/n')^2$ = {delta_real}, "
-                   "within [δ]: the nominal speed is the safe side.", delta_real=f(delta, 4))
+                   "within $[\\delta]$: the nominal speed is the safe side.", delta_real=f(delta, 4))
     else:
         second = _("The same flywheel there lets the fluctuation reach $\\delta = [\\delta](n/n')^2$ = {delta_real}, "
-                   "above [δ]: at n′ it would need $J_F$ = {jf_real} kg·m².", delta_real=f(delta, 4),
+                   "above $[\\delta]$: at n′ it would need $J_F$ = {jf_real} kg·m².", delta_real=f(delta, 4),
                    jf_real=sig(fly.inertia * (fly.shaft_speed_rpm / n_real) ** 2))
     return sentences(_, first, second)
 
@@ -418,17 +418,17 @@ def linkage_context(model, k, f_, fly, v, figures: dict, lang: str,
                                           for l_ in k.link_omega])
     qual_rows, gname = [], _group_namer(model, lang)
     for q in k.quality:
-        kind = _("transmission angle γ") if q.kind == "transmission" else _("pressure angle α")
+        kind = _("transmission angle $\\gamma$") if q.kind == "transmission" else _("pressure angle $\\alpha$")
         if q.kind == "transmission":
-            extreme = _("min {angle}° at φ = {phase}°", angle=f(q.extreme * DEG, 2),
+            extreme = _("min {angle}° at $\\varphi$ = {phase}°", angle=f(q.extreme * DEG, 2),
                         phase=f(q.extreme_phase * DEG, 1))
             work = f(q.working_extreme * DEG, 2) + "°"
             limit = "—" if model.transmission_angle_min is None else \
                 f"≥ {f(model.transmission_angle_min * DEG, 0)}°"
         else:
-            extreme = _("max {angle}° at φ = {phase}°", angle=f(q.extreme * DEG, 2),
+            extreme = _("max {angle}° at $\\varphi$ = {phase}°", angle=f(q.extreme * DEG, 2),
                         phase=f(q.extreme_phase * DEG, 1))
-            work = _("{angle}° at φ = {phase}°", angle=f(q.working_extreme * DEG, 2),
+            work = _("{angle}° at $\\varphi$ = {phase}°", angle=f(q.working_extreme * DEG, 2),
                      phase=f(q.working_extreme_phase * DEG, 1))
             limit = "—" if model.pressure_angle_limit is None else \
                 _("≤ {limit}° (working stroke)", limit=f(model.pressure_angle_limit * DEG, 0))
@@ -457,9 +457,9 @@ def linkage_context(model, k, f_, fly, v, figures: dict, lang: str,
         "output": md_names(model.output.name),
         "unit_s": units[0], "unit_v": units[1], "unit_a": units[2],
         # the table's symbols per quantity kind: a slider's s, v, a; a rocker's ψ, ω, α
-        "sym_s": "s" if k.output_unit == "m" else "ψ",
-        "sym_v": "v" if k.output_unit == "m" else "ω",
-        "sym_a": "a" if k.output_unit == "m" else "α",
+        "sym_s": "$s$" if k.output_unit == "m" else "$\\psi$",
+        "sym_v": "$v$" if k.output_unit == "m" else "$\\omega$",
+        "sym_a": "$a$" if k.output_unit == "m" else "$\\alpha$",
         # a slider's stroke, a rocker's swing
         "stroke_word": _("Stroke") if k.output_unit == "m" else _("Swing"),
         "stroke": _with_unit(f(k.stroke * scale, 2), units[0]), "K": time_ratio(k.time_ratio),
@@ -531,7 +531,7 @@ def verification_rows(v, lang: str, k=None) -> list[list[str]]:
         rows.append([_("stroke by position search / {unit}", unit=units[0]),
                      f(v.stroke * scale, 3), f(k.stroke * scale, 3) + _(" (velocity zeros)"),
                      verdict(abs(v.stroke - k.stroke) / max(k.stroke, 1e-12), 1e-6)])
-        rows.append([_("K by position search"), f(v.time_ratio, 4),
+        rows.append([_("$K$ by position search"), f(v.time_ratio, 4),
                      f(k.time_ratio, 4), verdict(abs(v.time_ratio - k.time_ratio), 1e-6)])
     return rows
 

@@ -73,6 +73,7 @@ def render_markdown(template_name: str, ctx: dict, templates: Path,
     from jinja2.sandbox import SandboxedEnvironment
 
     from ..i18n import jinja_callables
+    from .labels import md_symbols
 
     if lang is None:
         lang = "zh" if ".zh." in template_name else "en"
@@ -84,6 +85,7 @@ def render_markdown(template_name: str, ctx: dict, templates: Path,
                              bytecode_cache=_bytecode_cache())
     env.install_gettext_callables(**jinja_callables(lang), newstyle=True)
     env.filters["figlabel"] = figure_label
+    env.filters["symbols"] = md_symbols     # a table cell's quantity letters as math
     if "cite" not in ctx:      # the citation counter (render/summary.py), one per report
         from .summary import Citations
 

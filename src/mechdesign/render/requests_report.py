@@ -23,7 +23,7 @@ _TXT = LabelTable({
     "a": N_("acceleration |a| (m/s²)"),
     "phase": N_("crank angle φ (°)"),
     "angle": N_("given crank angle"),
-    "x_axis": N_("the crank's direction, CCW from +x"),
+    "x_axis": N_("the crank's direction, CCW from +$x$"),
     "position_1": N_("from position 1 in the sense of rotation"),
 })
 

@@ -64,8 +64,36 @@ def _fixed(x: float, check: Check) -> str:
     return f(x, 0 if _counts(check) else DIGITS.get(check.unit, 2))
 
 
+#: Significant digits of an estimate printed as one (a bearing life L_10h: its catalogue
+#: rating C and the load factors are good to a few per cent; 4 digits, the rest rounded
+#: off and the value written "≈": 199 597 h → ≈ 199 600 h; 6.157 × 10⁶ h from 10⁶ on).
+ESTIMATE_DIGITS = 4
+
+
+def _estimate(check: Check) -> bool:
+    """A check whose value is an estimate printed to :data:`ESTIMATE_DIGITS` (a life)."""
+    return check.unit == "h"
+
+
+def _rounded(x: float) -> tuple[str, str]:
+    """An estimate ``x`` below 10⁶ to :data:`ESTIMATE_DIGITS` significant digits in fixed
+    notation, ungrouped (199600, 950.4), and the same as "a\\times10^{n}" (1.996\\times10^{5}):
+    what its chain must give, to the mantissa's last digit."""
+    if x == 0 or not math.isfinite(x):
+        return num(x), num(x)
+    power = int(math.floor(math.log10(abs(x))))
+    mant = f"{x / 10.0 ** power:.{ESTIMATE_DIGITS - 1}f}"
+    if abs(float(mant)) >= 10:          # 9.9996 → 10.000: one power up
+        power += 1
+        mant = f"{x / 10.0 ** power:.{ESTIMATE_DIGITS - 1}f}"
+    decimals = max(0, ESTIMATE_DIGITS - 1 - power)
+    return f"{float(mant) * 10.0 ** power:.{decimals}f}", f"{mant}\\times10^{{{power}}}"
+
+
 def _value(check: Check) -> str:
     x = check.course_value
+    if _estimate(check):            # 4 significant digits, trailing zeros kept (8.700 × 10⁶)
+        return _rounded(x)[0 if abs(x) < BIG else 1]
     return num(x) if abs(x) >= BIG else _fixed(x, check)
 
 
@@ -76,8 +104,14 @@ def _allowable(check: Check) -> str:
 
 def _cell(x: float, check: Check) -> str:
     """A value or allowable for the check table: as in the formula, a power of ten as
-    ``4.068 × 10⁷`` (render/fmt.py's :func:`~mechdesign.render.fmt.sci`)."""
-    return sci(x) if abs(x) >= BIG else _fixed(x, check)
+    ``4.068 × 10⁷`` (render/fmt.py's :func:`~mechdesign.render.fmt.sci`); an estimate's
+    value (not its allowable) to :data:`ESTIMATE_DIGITS` significant digits, grouped."""
+    if abs(x) >= BIG:
+        return sci(x)
+    if _estimate(check) and x == check.course_value:
+        text = _rounded(x)[0]
+        return f(float(text), len(text.partition(".")[2]), group=True)
+    return _fixed(x, check)
 
 
 def _unit(unit: str) -> str:
@@ -218,15 +252,20 @@ def _bearing_life(c: Check) -> str:
     eps = r"\frac{10}{3}" if abs(i["epsilon"] - 10 / 3) < 1e-9 else num(i["epsilon"])
     e_val = 10 / 3 if abs(i["epsilon"] - 10 / 3) < 1e-9 else float(num(i["epsilon"]))
     ft = i.get("ft", 1.0)
-    value = _value(c)
-    # n and P with the digits the life was computed from (a life of six integer digits, to the
-    # hour, takes them to seven significant digits: 60 × 50.23355, 13 043.98)
+    # a life is an estimate: to 4 significant digits ("≈ 199600 h"), n and P with the digits
+    # that give those 4 (267.6 and 949.5, not 267.643 and 949.528 for the six digits of
+    # 199 597 h); from 10⁶ h on a power of ten, as every number (6.157 × 10⁶ h)
+    x = c.course_value
+    target = _rounded(x)[1]
     n_txt, p_txt = _giving((i["n_rpm"], i["P"]), lambda n, p: 1e6 / (60 * n) * (
-        _float(num(ft)) * _float(num(i["C"])) / p) ** e_val, value)
+        _float(num(ft)) * _float(num(i["C"])) / p) ** e_val, target)
     ratio = rf"\frac{{{_prod(ft, i['C'])}}}{{{p_txt}}}"
     numbers = rf"\frac{{10^6}}{{60 \times {n_txt}}} \times ({ratio})^{{{eps}}}"
+    tail = _tail(c, r"L_h'")
+    if abs(x) < BIG:
+        tail = tail.replace(" = ", r" \approx ", 1)
     return (rf"L_{{10h}} = \frac{{10^6}}{{60 n}} (\frac{{f_t C}}{{P}})^{{\varepsilon}} = {numbers}"
-            + _tail(c, r"L_h'"))
+            + tail)
 
 
 def _key_crushing(c: Check) -> str:
@@ -318,8 +357,10 @@ def check_formulas(check: Check) -> list[str]:
         return [text]
     head, _, _ = text.partition(" = ")
     allow = text[text.rfind(_relation(check)):]
-    tail = f" = {_value(check)}\\ {_unit(check.unit)} {allow}"
-    if not text.endswith(tail[len(" = "):]) or tail in head:
+    # an estimate's value follows "≈" (a life to 4 significant digits), the others "="
+    sep = r" \approx " if rf"\approx {_value(check)}\ " in text else " = "
+    tail = f"{sep}{_value(check)}\\ {_unit(check.unit)} {allow}"
+    if not text.endswith(tail[len(sep):]) or tail in head:
         return [text]
     body = text[: len(text) - len(tail)]
     return [body, head + tail]

@@ -236,6 +236,13 @@ def check_groups(document: dict, ctx: dict, lang: str) -> list[dict]:
             g = {"group": _.pgettext("check group", "verification"), "count": len(rows),
                  "failed": [name for name, ok in rows if not ok]}
             groups = {g["group"]: g, **groups}
+    # the gear chapter's checks (no undercut, tip thickness, contact ratio): stated in its
+    # text, judged from the stage's findings, not recorded as checks in the results
+    gear = ctx.get("gear") if isinstance(ctx.get("gear"), dict) else None
+    if gear and gear.get("checks"):
+        name = _.pgettext("check group", "gear pair")
+        groups[name] = {"group": name, "count": len(gear["checks"]),
+                        "failed": [n for n, ok in gear["checks"] if not ok]}
     out = []
     for g in groups.values():
         failed = list(dict.fromkeys(g["failed"]))
@@ -323,7 +330,10 @@ def _show(value: Any, factor: float, unit: str = "", label: str = "",
 
 # symbols in the registry's plain-text labels (also shown in the terminal) → typeset
 _LABEL_MATH = ((re.compile(r"\bJ_F\b"), r"$J_F$"), (re.compile(r"γ_?min"), r"$\gamma_{min}$"),
-               (re.compile(r"\bK\b"), r"$K$"), (re.compile(r"\br0\b"), r"$r_0$"))
+               (re.compile(r"\bK\b"), r"$K$"), (re.compile(r"\br0\b"), r"$r_0$"),
+               (re.compile(r"(?<![\w$])H(?![\w$])"), r"$H$"))
+# a length named by its letter at the label's end ("offset slider-crank: crank a", "连杆 b")
+_END_LETTER = re.compile(r"(?<=\s)([a-e])$")
 
 
 # a link named by its points ("coupler BC", "摇杆 DE"): math italic, as every point name
@@ -334,6 +344,7 @@ def _label(text: str) -> str:
     text = _LINK_NAME.sub(lambda m: f"${m[1]}$", md_text(text))
     for pattern, math_ in _LABEL_MATH:
         text = pattern.sub(lambda _m: math_, text)
+    text = _END_LETTER.sub(lambda m: f"${m[1]}$", text)
     return (text.replace("γ\\_min", r"$\gamma_{min}$").replace("J\\_F", "$J_F$")
             .replace("ΔW\\_max", r"$\Delta W_{max}$"))
 

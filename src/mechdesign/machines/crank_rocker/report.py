@@ -20,21 +20,21 @@ DEG = 180.0 / np.pi
 MM = 1e3
 
 LABELS = LabelTable({
-    "psi": N_("rocker swing ψ (°)"),
+    "psi": N_("rocker swing $\\psi$ (°)"),
     "ratio": N_(r"$l_3/l_4$ (optimum)"),
     "gamma_opt": N_(r"largest $\gamma_{min}$ (°)"),
     "theta": "θ",
     "ours": N_("this design"),
-    "allowed": N_("allowed [γ]"),
-    "phi": N_("crank angle φ from the frame line AD (°)"),
-    "phi_s": N_("crank angle φ from the guide direction (°)"),
-    "gamma": N_("transmission angle γ (°)"),
+    "allowed": N_("allowed $[\\gamma]$"),
+    "phi": N_("crank angle $\\varphi$ from the frame line AD (°)"),
+    "phi_s": N_("crank angle $\\varphi$ from the guide direction (°)"),
+    "gamma": N_("transmission angle $\\gamma$ (°)"),
     "rocker": N_("rocker angle (°)"),
     "w3": N_(r"rocker $\omega_3$ (rad/s)"),
     "a3": N_(r"rocker $\alpha_3$ (rad/s²)"),
     "x": "x (mm)",
     "y": "y (mm)",
-    "circle": N_("θ-circle"),
+    "circle": N_("$\\theta$-circle"),
     "arc": N_("allowed arc for A"),
     "frame_arc": N_(r"arc about D of radius $l_4$"),
     "textbook": N_("given-frame design A′"),
@@ -331,7 +331,7 @@ def _with_diff(value: str, diff: float, lang: str) -> str:
     """A simulated value to 4 decimals with its difference from the reference (the verdict
     needs |Δ| < 10⁻⁹, which 4 decimals cannot show)."""
     _ = tr(lang)
-    return _("{value} (Δ = {diff})", value=value, diff=residue(diff))
+    return _("{value} ($\\Delta$ = {diff})", value=value, diff=residue(diff))
 
 
 def _verdict(ok: bool, lang: str) -> str:
@@ -419,17 +419,18 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
             ("$l_2$", N_("coupler $BC$ (given)"), given["l2"], "mm"),
             ("$l_3$", N_("rocker $CD$ (given)"), given["l3"], "mm"),
             ("$l_4$", N_("frame $AD$ (given)"), given["l4"], "mm"),
-            ("θ", N_("extreme-position angle (derived)"), f(th_deg, 2), "°"),
-            ("K", N_("time ratio (derived)"), time_ratio(p.K), "—"),
-            ("ψ", N_("rocker swing (derived)"), _deg(p.swing), "°"),
+            ("$\\theta$", N_("extreme-position angle (derived)"), f(th_deg, 2), "°"),
+            ("$K$", N_("time ratio (derived)"), time_ratio(p.K), "—"),
+            ("$\\psi$", N_("rocker swing (derived)"), _deg(p.swing), "°"),
             ("$\\gamma_{min}$", N_("minimum transmission angle (derived)"), given["gamma_min"], "°"),
-            ("[γ]", N_("allowed minimum transmission angle"), _deg(p.gamma_allowed, 0), "°"))]
+            ("$[\\gamma]$", N_("allowed minimum transmission angle"), _deg(p.gamma_allowed, 0), "°"))]
     else:
-        data_rows = [["K", _("time ratio"), time_ratio(p.K), "—"], ["θ", _("extreme-position angle"), f(th_deg, 2), "°"],
-                     ["ψ", _("rocker swing"), _deg(p.swing, 2), "°"], ["$l_3$", _.pgettext("given length", "rocker $CD$"), _mm(p.rocker, 2), "mm"]]
+        data_rows = [["$K$", _("time ratio"), time_ratio(p.K), "—"],
+                     ["$\\theta$", _("extreme-position angle"), f(th_deg, 2), "°"],
+                     ["$\\psi$", _("rocker swing"), _deg(p.swing, 2), "°"], ["$l_3$", _.pgettext("given length", "rocker $CD$"), _mm(p.rocker, 2), "mm"]]
         if p.frame is not None:
             data_rows.append(["$l_4$", _("given frame $AD$ (textbook method)"), _mm(p.frame, 2), "mm"])
-        data_rows.append(["[γ]", _("allowed minimum transmission angle"), _deg(p.gamma_allowed, 0), "°"])
+        data_rows.append(["$[\\gamma]$", _("allowed minimum transmission angle"), _deg(p.gamma_allowed, 0), "°"])
     if p.crank_speed_rpm is not None:
         data_rows.append(["$n_1$", _("crank speed (motion curves only)"), f(p.crank_speed_rpm, 1), _("rpm")])
     # comparison of designs: lengths and simulated θ, ψ, K, γmin
@@ -453,7 +454,7 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
         printed = _printed(cd.design)
         if printed is not None:      # the table rounds the lengths to 0.01 mm: say what was printed
             name += _(" (the paper prints $l_1$ = {l1} mm, $l_2$ = {l2} mm, $l_4$ = {l4} mm)", **printed)
-        paper_notes.append(_("{name}: θ off by {dth}°, ψ off by {dpsi}°, $\\gamma_{{min}}$ {dg}° below the optimum",
+        paper_notes.append(_("{name}: $\\theta$ off by {dth}°, $\\psi$ off by {dpsi}°, $\\gamma_{{min}}$ {dg}° below the optimum",
                              name=name, dth=f(dth, 2), dpsi=f(dpsi, 2), dg=f(dg, 2)))
     # verification rows: [item, result, reference, verdict]
     tol = 1e-9
@@ -465,9 +466,9 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
         for item, val, ref, err in (
                 # by the number rule (K 0.001, angles 0.01°); the difference Δ beside the
                 # value says how closely they agree
-                (N_("simulated K"), f(s.K, 3), f(p.K, 3), s.K - p.K),
-                (N_("simulated θ /°"), _deg(s.theta), f(th_deg, 2), s.theta - p.theta),
-                (N_("simulated ψ /°"), _deg(s.swing), _deg(p.swing), s.swing - p.swing),
+                (N_("simulated $K$"), f(s.K, 3), f(p.K, 3), s.K - p.K),
+                (N_("simulated $\\theta$ /°"), _deg(s.theta), f(th_deg, 2), s.theta - p.theta),
+                (N_("simulated $\\psi$ /°"), _deg(s.swing), _deg(p.swing), s.swing - p.swing),
                 (N_("simulated $\\gamma_{min}$ /° (ref.: closed form)"),
                  _deg(s.gamma_min), _deg(d.gamma_min), s.gamma_min - d.gamma_min)):
             vrows.append([_("{name}: {item}", name=name, item=_(item)), _with_diff(val, err, lang), ref,
@@ -475,7 +476,7 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
         vrows.append([_("{name}: {item}", name=name, item=_("loop-closure residual /m")),
                       residue(s.closure), "0", _verdict(s.closure < 1e-12, lang)])
     n0, n1 = ver.optimum_neighbours
-    vrows.append([_("$\\gamma_{min}$(t* ∓ 0.001·arc) − $\\gamma_{min}^*$ /°"),
+    vrows.append([_("$\\gamma_{min}(t^* \\mp 0.001\\,\\mathrm{arc}) - \\gamma_{min}^*$ /°"),
                   f"{fe((n0 - best.gamma_min) * DEG)}, {fe((n1 - best.gamma_min) * DEG)}", "< 0",
                   _verdict(n0 < best.gamma_min and n1 < best.gamma_min, lang)])
     vrows.append([_("largest $\\gamma_{min}$ of a 200 000-point scan − $\\gamma_{min}^*$ /°"),
@@ -523,9 +524,9 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
         }
         slider_name = _.pgettext("verification item", "offset slider-crank")
         for item, val, ref, err in (
-                (N_("simulated stroke H /mm"), _mm(ss.stroke), f(h_mm, 2),
+                (N_("simulated stroke $H$ /mm"), _mm(ss.stroke), f(h_mm, 2),
                  (ss.stroke - sl.stroke) / sl.stroke),
-                (N_("simulated K"), f(ss.K, 3), f(sl.K, 3), ss.K - sl.K),
+                (N_("simulated $K$"), f(ss.K, 3), f(sl.K, 3), ss.K - sl.K),
                 (N_("simulated slow-stroke $\\alpha_{max}$ /° (ref.: closed form)"),
                  _deg(ss.alpha_slow), _deg(sl.alpha_slow), ss.alpha_slow - sl.alpha_slow),
                 (N_("simulated fast-stroke $\\alpha_{max}$ /° (ref.: closed form)"),
@@ -568,8 +569,8 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
                 "far": None if far is None else _deg(far, 2), "where": where},
         "with_speed": p.crank_speed_rpm is not None,
         "textbook": textbook, "given": given,
-        "cmp_head": [_.pgettext("table head", "design"), "$l_1$/mm", "$l_2$/mm", "$l_3$/mm", "$l_4$/mm", "θ/°", "ψ/°",
-                     "K", "$\\gamma_{min}$/°"],
+        "cmp_head": [_.pgettext("table head", "design"), "$l_1$/mm", "$l_2$/mm", "$l_3$/mm", "$l_4$/mm", "$\\theta$/°", "$\\psi$/°",
+                     "$K$", "$\\gamma_{min}$/°"],
         "cmp_rows": cmp_rows + [spec_row], "cmp_align": "|".join([":--"] + ["--:"] * 8),
         "paper_notes": paper_notes, "compare_miss": _.pgettext("list", ", ").join(missing), "has_compare": bool(r["compare"]),
         "chart": {"thetas": ", ".join(f"{t * DEG:g}°" for t in ch.thetas),

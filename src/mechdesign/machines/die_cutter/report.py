@@ -23,7 +23,7 @@ from ...stages.drive import shaft_numeral
 DEG = 180.0 / np.pi
 MM = 1e3
 
-_TXT = {"phase": N_("shaft (crank) angle φ (°)"),
+_TXT = {"phase": N_("shaft (crank) angle $\\varphi$ (°)"),
         "s": N_("platen displacement s (mm)"),
         "fm": "F/M (kN/(kN·m))",
         "torque": N_("crank torque (N·m)"),
@@ -182,7 +182,7 @@ def _choice_rows(b, p, r, _) -> list[list[str]]:
         dm = pr.dimensions
         rows.append(["$a, b, d$", _("crank $O_1A$, coupler $AB$, frame $O_1C$ (given)"),
                      f"{f(dm.crank_O1A_mm, 2)}, {f(dm.coupler_AB_mm, 2)}, {f(dm.frame_O1C_mm, 2)} mm",
-                     _("the brief's dimensions, no synthesis; θ, ψ, K and H are derived from them "
+                     _("the brief's dimensions, no synthesis; $\\theta$, $\\psi$, K and H are derived from them "
                        "(see the toggle press chapter)")])
     rows += [
         ["$l_{CB}, l_{BD}$", _("toggle links"),
@@ -327,9 +327,9 @@ def _synthesis(d, p, _) -> dict:
     if given:
         rows[2:2] = [["$K$", _("time ratio") + der, f(K, 4), "—"],
                      ["$H$", _("platen stroke") + der, f(g.stroke * MM, 4), "mm"]]
-    pivot = _("the point of the θ-circle at the given frame $O_1C$") \
+    pivot = _("the point of the $\\theta$-circle at the given frame $O_1C$") \
         if g.frame is not None else \
-        _("searched along the allowed arc of the θ-circle for the largest minimum "
+        _("searched along the allowed arc of the $\\theta$-circle for the largest minimum "
            "transmission angle")
     mirrored = _("The drawing is mirrored about the guide so that the rise is the slow stroke "
                   "($K$ > 1).") \
@@ -476,9 +476,9 @@ def _placement(r, p, b, _) -> dict:
     cmp_ = r["flywheel_placement"]
     stages = len(b.drive.stages)
     a, o = cmp_.chosen, cmp_.other
-    rows = [[_("flywheel shaft speed n (nominal) /rpm"), f(a.speed_rpm, 2), f(o.speed_rpm, 2)],
+    rows = [[_("flywheel shaft speed $n$ (nominal) /rpm"), f(a.speed_rpm, 2), f(o.speed_rpm, 2)],
             [_("flywheel $J_F$ /kg·m²"), _inertia(a.inertia), _inertia(o.inertia)],
-            [_("rim D × b × H /mm"), " × ".join(f(x * MM, 0) for x in (a.rim.diameter, a.rim.width, a.rim.height)),
+            [_("rim $D$ × $b$ × $H$ /mm"), " × ".join(f(x * MM, 0) for x in (a.rim.diameter, a.rim.width, a.rim.height)),
              " × ".join(f(x * MM, 0) for x in (o.rim.diameter, o.rim.width, o.rim.height))],
             [_("rim mass /kg"), f(a.rim.rim_mass, 1, group=True), f(o.rim.rim_mass, 1, group=True)]]
     for ga, go in zip(a.gears, o.gears):
@@ -554,7 +554,7 @@ def _verify_rows(r, p, _) -> list[list[str]]:
     # K it finds carries that uncertainty (the velocity zeros are exact).
     vk = r["press_verification"]
     for row in rows:
-        if row[0] == _("K by position search"):
+        if row[0] == _("$K$ by position search"):
             row[2] = _("{time_ratio} ± {K_search_tol} (top flat as $H - s \\propto \\Delta\\varphi^n$, n "
                         "= {top_order}: a position search resolves about {search_angle_tol} rad)",
                         time_ratio=f(k.time_ratio, 4), K_search_tol=e(v.K_search_tol),
@@ -564,21 +564,21 @@ def _verify_rows(r, p, _) -> list[list[str]]:
     # one jump × one step / 2π
     bound = float(amp.peak_required * step / (2 * np.pi) / f_.mean_torque)
     rows += [
-        [_("simulated stroke − H /mm"), residue(v.stroke_error * MM, g.stroke * MM),
+        [_("simulated stroke − $H$ /mm"), residue(v.stroke_error * MM, g.stroke * MM),
          f"H = {f(g.stroke * MM, 2)} mm", _ok(_, abs(v.stroke_error) < 1e-9)],
-        [_("simulated K (zeros of the output speed)"),
+        [_("simulated $K$ (zeros of the output speed)"),
          f(k.time_ratio, 4), f"K = {f(g.K, 4)} ± {e(v.K_velocity_tol)}",
          _ok(_, abs(k.time_ratio - g.K) <= v.K_velocity_tol)],
         [_("toggle angle at the simulated top /°"),
          e(v.top_toggle_angle * DEG), f"ε = {f(g.top_angle * DEG, 2)}°",
          _ok(_, abs(v.top_toggle_angle - g.top_angle) <= max(v.search_angle_tol, 1e-8))],
-        [_("order n of $H - s \\propto \\Delta\\varphi^n$ near the top"), f(v.top_order, 3),
+        [_("order $n$ of $H - s \\propto \\Delta\\varphi^n$ near the top"), f(v.top_order, 3),
          "4 (ε = 0) / 2 (ε > 0)", _ok(_, abs(v.top_order - (4 if g.top_angle == 0 else 2)) < 0.05)],
         [_("force amplification: kinetostatics vs virtual-work closed form (relative)"),
          e(v.amplification_error), "≤ 10⁻⁹", _ok(_, v.amplification_error < 1e-9)],
         [_("energy balance $\\oint M_b d\\varphi / (F_c t)$"),
          f(v.energy_ratio, 4), f"1 ± {f(bound, 4)}", _ok(_, abs(v.energy_ratio - 1) <= bound)],
-        [_("platen row vs simulated s: disagreeing angle /°"),
+        [_("platen row vs simulated $s$: disagreeing angle /°"),
          f(v.platen_mismatch * DEG, 2), f"≤ {f(2 * step * DEG, 2)}", _ok(_, v.platen_mismatch <= 2 * step + 1e-12)],
         [_("gripper row vs cam lift: disagreeing angle /°"),
          f(v.gripper_mismatch * DEG, 2), f"≤ {f(2 * step * DEG, 2)}", _ok(_, v.gripper_mismatch <= 2 * step + 1e-12)],

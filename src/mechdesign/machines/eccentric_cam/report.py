@@ -62,8 +62,8 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
                           "stroke": f(m.stroke * MM, 2), "ymin": f(m.y_min * MM, 2),
                           "ymax": f(m.y_max * MM, 2),
                           "alpha_max": f(float(np.max(m.pressure_angle)) * DEG, 2)})
-    head = ["δ/°"] + [f"{md_text(label)} s/mm" for label, _ in p.followers] + \
-        [f"{md_text(label)} α/°" for label, _ in p.followers]
+    head = ["$\\delta$/°"] + [f"{md_text(label)} $s$/mm" for label, _ in p.followers] + \
+        [f"{md_text(label)} $\\alpha$/°" for label, _ in p.followers]
     rows = []
     for i, delta in enumerate(d.table_delta):
         rows.append([f(delta * DEG, 1)] + [f(t.s[i] * MM, 2) for t in d.tables] +    # lengths to 0.01 mm
@@ -78,7 +78,7 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
         "followers": followers, "table_head": head, "table_rows": rows,
         "table_align": "|".join(["--:"] * len(head)),
         "table_step": f(p.table_step * DEG, 1),
-        "query_head": ["δ/°"] + [md_text(label) for label, _ in p.followers],
+        "query_head": ["$\\delta$/°"] + [md_text(label) for label, _ in p.followers],
         "query_align": "|".join([":-:"] * (1 + len(p.followers))),
         "query_rows": qrows,
         **verification_context(r.get("disc_verification"), lang),
@@ -86,10 +86,10 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
 
 
 _NOTE = N_("The checks do not use the closed forms: the displacement by inversion — the cam held "
-           "still, the follower's line turned back through δ and intersected with the disc (for "
+           "still, the follower's line turned back through $\\delta$ and intersected with the disc (for "
            "a roller, the circle of radius $R + r_r$ on which its centre rolls); the pressure "
            "angle by the three-centre theorem — the relative pole $P$ of cam and follower lies on "
-           "the line through $O$ perpendicular to the follower's line, $OP$ = dy/dδ (central "
+           "the line through $O$ perpendicular to the follower's line, $OP$ = $dy/d\\delta$ (central "
            "differences of the geometric displacement), and the common normal passes through $P$; "
            "the stroke from the extremes of the displacement (three-point parabola). Compared on "
            "every position of the 0.1° grid and at the given angles.")

@@ -90,7 +90,7 @@ def _scheme(path: Path, lang: str, syn) -> None:
             circ = centre + rad * np.exp(1j * np.linspace(0, 2 * np.pi, 300))
             right.plot(circ.real, circ.imag, color="C2", lw=0.9, ls=":")
             right.plot([centre.real], [centre.imag], "+", color="C2", ms=6)
-            right.text(centre.real + 6, centre.imag + 6, _("θ-circle"), color="C2", fontsize=7)
+            right.text(centre.real + 6, centre.imag + 6, _("$\\theta$-circle"), color="C2", fontsize=7)
         for name, q in (("B1", B1), ("B2", B2), (_("A (folded)"), syn.A_fold * MM),
                         (_("A (extended)"), syn.A_ext * MM)):
             right.text(q.real + 5, q.imag + 6, mpl_names(name), fontsize=7)
@@ -99,7 +99,7 @@ def _scheme(path: Path, lang: str, syn) -> None:
         pad = 0.45 * max(np.ptp(pts.real), np.ptp(pts.imag))
         right.set_xlim(pts.real.min() - pad, pts.real.max() + pad)
         right.set_ylim(pts.imag.min() - pad, pts.imag.max() + pad)
-        right.set_title(_("four-bar θ-circle (blue: folded, red: extended)"), fontsize=8)
+        right.set_title(_("four-bar $\\theta$-circle (blue: folded, red: extended)"), fontsize=8)
         fig.save_png(figure, path)
     finally:
         plt.close(figure)
@@ -301,14 +301,14 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
     ]
     names = {"stroke": N_("stroke"), "chord": N_("chord"), "eq1": N_("equation (1)"),
              "folded": N_("folded extreme"), "extended": N_("extended extreme"),
-             "frame": N_("frame"), "theta": N_("extreme angle"), "K": "K"}
+             "frame": N_("frame"), "theta": N_("extreme angle"), "K": "$K$"}
     res_rows = [[_(names[nm]), f"${eqn}$", residue(val)] for nm, eqn, val in syn.residuals]
     sd = syn.seed
     seed_rows = [
         [_("(1) as printed: $(a+b)^2+(b-a)^2-2(a+b)(b-a)\\cos 30° = B_1B_2^2$"),
          f"{f(sd.chord_printed * MM, 2)}²", f"{f(sd.chord * MM, 2)}²",
          f(sd.eq1_printed * 1e6, 0, group=True) + " mm²"],
-        [_("(1) with the correct θ = ") + f"{f(th, 0)}°",
+        [_("(1) with the correct $\\theta$ = ") + f"{f(th, 0)}°",
          f"{f(sd.chord_correct * MM, 2)}²", f"{f(sd.chord * MM, 2)}²",
          f(sd.eq1_correct * 1e6, 0, group=True) + " mm²"],
         [_("(2) as printed: $\\arccos\\frac{b^2+1150^2-(a+505.37)^2}{2300\\,b} + 30° = 180°$"),
@@ -324,8 +324,8 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
         ["$\\gamma_{min}$ /°", f(sd.gamma_min * DEG, 2), "≥ " + f(syn.gamma_limit * DEG, 0)],
     ]
     side_txt = _({
-        1: N_("$O_1$ on $D$'s side of the chord $B_1B_2$ (the textbook's θ-circle)"),
-        -1: N_("$O_1$ beyond the chord $B_1B_2$ (the mirror θ-circle)"),
+        1: N_("$O_1$ on $D$'s side of the chord $B_1B_2$ (the textbook's $\\theta$-circle)"),
+        -1: N_("$O_1$ beyond the chord $B_1B_2$ (the mirror $\\theta$-circle)"),
     }[syn.side])
     if syn.criterion == "max_gamma":
         if syn.constraint_active:
@@ -339,20 +339,20 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
             crit = _("the limit at $B$ is not active at the optimum (the unconstrained maximum of "
                       "$\\gamma_{min}$ meets it).")
         best = f(syn.gamma_other_side_free * DEG, 2)
-        other = (_("On the other θ-circle the best $\\gamma_{{min}}$ is only {best}°, and it cannot "
+        other = (_("On the other $\\theta$-circle the best $\\gamma_{{min}}$ is only {best}°, and it cannot "
                    "meet the limit at $B$.", best=best)
                  if syn.limit_rocker and syn.gamma_other_side == 0 else
-                 _("On the other θ-circle the best $\\gamma_{{min}}$ is only {best}°.", best=best))
+                 _("On the other $\\theta$-circle the best $\\gamma_{{min}}$ is only {best}°.", best=best))
     elif syn.criterion == "given":
         crit = _("the dimensions are the brief's, no synthesis: $O_1$ is where the circle of "
-                  "radius d about D cuts the circle of radius b − a about $B_1$, on the θ-circle "
-                  "(the best $\\gamma_{{min}}$ on the same θ-circle would be "
+                  "radius d about D cuts the circle of radius b − a about $B_1$, on the $\\theta$-circle "
+                  "(the best $\\gamma_{{min}}$ on the same $\\theta$-circle would be "
                   "{gamma_unconstrained}°).",
                   gamma_unconstrained=f(syn.gamma_unconstrained * DEG, 2))
         other = ""
     else:
         crit = _("the frame is given: $O_1$ is where the circle of radius d about D cuts the "
-                  "θ-circle.")
+                  "$\\theta$-circle.")
         other = ""
     # Torque: kinetostatics against virtual work at the positions.
     labels = [lab.replace("'", "′") for lab in k.positions.labels]
@@ -376,7 +376,7 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
         [_("simulated stroke (position search) / mm"),
          # by the number rule (0.01 mm, K 0.001, 0.01°)
          f(chk.stroke * MM, 2), f"H = {f(H, 2 if given else 0)}", _ok(abs(chk.stroke_error) <= tol * pp.stroke, _)],
-        [_("simulated time ratio K"), f(chk.time_ratio, 3),
+        [_("simulated time ratio $K$"), f(chk.time_ratio, 3),
          f(pp.time_ratio_K, 3 if given else 2), _ok(abs(chk.time_ratio - pp.time_ratio_K) <= tol, _)],
         [_("largest pressure angle at $E$, working stroke / °"),
          f(chk.alpha_E_work * DEG, 2), _("≤ {lim} ({alpha_E})", lim=f(lim, 0),

@@ -125,7 +125,7 @@ def _timing_figure(path: Path, lang: str, r: dict):
             ax.grid(True, lw=0.4, color="0.85")
             for x in (c.pin_rise_angle * DEG, c.pin_down_angle * DEG):
                 ax.axvline(x, color="C3", lw=0.7, ls="--")
-        axes[-1].set_xlabel(_.pgettext("lockbeam", "main-shaft angle φ (°)"))
+        axes[-1].set_xlabel(_.pgettext("lockbeam", "main-shaft angle $\\varphi$ (°)"))
 
 
 def _linkage_drawing(path: Path, lang: str, b, wheel_d: float):
@@ -168,15 +168,15 @@ def _sweep_figure(path: Path, lang: str, b):
     with fig.figure(path, 3, (7.0, 6.0)) as (ax1, ax2, ax3):
         ax1.plot(x, np.abs(b.sweep_output - b.design.beta1) * DEG, lw=1.4, color="C0")
         ax1.axhline(b.output_swing * DEG, color="C3", ls="--", lw=0.8)
-        ax1.set_ylabel(_("wheel angle |Δβ| (°)"), fontsize=8)
+        ax1.set_ylabel(_("wheel angle |$\\Delta\\beta$| (°)"), fontsize=8)
         ax2.plot(x, np.abs(b.velocity_ratio), lw=1.4, color="C1")
         ax2.axhline(mean, color="0.5", ls=":", lw=0.8)
-        ax2.set_ylabel(_("ratio |dβ/dα|"), fontsize=8)
+        ax2.set_ylabel(_("ratio |$d\\beta/d\\alpha$|"), fontsize=8)
         ax3.plot(x, b.sweep_gamma * DEG, lw=1.4, color="C2")
         ax3.axhline(40.0, color="0.5", ls=":", lw=0.8)
         ax3.set_ylim(0, 90)
-        ax3.set_ylabel(_("transmission angle γ (°)"), fontsize=8)
-        ax3.set_xlabel(_("input rocker angle Δα (°)"))
+        ax3.set_ylabel(_("transmission angle $\\gamma$ (°)"), fontsize=8)
+        ax3.set_xlabel(_("input rocker angle $\\Delta\\alpha$ (°)"))
         for ax in (ax1, ax2, ax3):
             ax.grid(True, lw=0.4, color="0.85")
             ax.set_xlim(0, b.input_swing * DEG)
@@ -191,13 +191,13 @@ def _wheel_figure(path: Path, lang: str, b, start: float, span: float):
     x = phi[keep][order] + start * DEG
     with fig.figure(path, 3, (7.0, 5.4)) as axes:
         for ax, y, lab in zip(axes, (b.wheel_angle * DEG, b.wheel_omega, b.wheel_alpha),
-                              (N_("wheel angle θ (°)"), N_("ω (rad/s)"), N_("ε (rad/s²)"))):
+                              (N_("wheel angle $\\theta$ (°)"), N_("$\\omega$ (rad/s)"), N_("$\\varepsilon$ (rad/s²)"))):
             ax.plot(x, y[keep][order], lw=1.4, color="C0")
             ax.set_ylabel(_(lab), fontsize=8)
             ax.grid(True, lw=0.4, color="0.85")
             ax.axhline(0, color="0.4", lw=0.5)
         axes[0].axhline(b.bend_simulated * DEG, color="C3", ls="--", lw=0.8)
-        axes[-1].set_xlabel(_.pgettext("lockbeam", "main-shaft angle φ (°)"))
+        axes[-1].set_xlabel(_.pgettext("lockbeam", "main-shaft angle $\\varphi$ (°)"))
 
 
 def _seed_figure(path: Path, lang: str, b):
@@ -366,7 +366,7 @@ def _transmission(r: dict, lang: str) -> dict:
                 gear_rows.append([str(g.z), f(g.d * MM, 1), f(g.da * MM, 1), f(g.df * MM, 1),
                                   f(g.db * MM, 2)])
             gear_rows.append(["—", _("centre distance a = ") + f(pr.a * MM, 1) + " mm",
-                              _("contact ratio ε = ") + f(pr.contact_ratio, 3),
+                              _("contact ratio $\\varepsilon$ = ") + f(pr.contact_ratio, 3),
                               _("least teeth without undercut ") + f(pr.z_min, 0), "—"])
     # the train's ratio as the course writes it: driven over driving, the pulleys d_1 → d_2,
     # the gears numbered along the train (z_1 drives z_2, z_3 drives z_4, …)
@@ -446,7 +446,7 @@ def _bending(r: dict, lang: str, figures: dict) -> dict:
             continue
         chosen = d_ is ds
         mark = (" ✓" if chosen else "")
-        note = [_("chosen") if chosen else (_("smaller γ"))]
+        note = [_("chosen") if chosen else (_("smaller $\\gamma$"))]
         for length, sym in ((d_.input_rocker, "a"), (d_.coupler, "b")):
             if any(abs(length - x) < 1e-6 for x in bp.length_bounds):
                 note.append(_("{sym} at its bound", sym=sym))
@@ -464,7 +464,7 @@ def _bending(r: dict, lang: str, figures: dict) -> dict:
         ["$\\Delta\\beta$", _("wheel swing"), _("{angle} ({sense})", angle=f(abs(ds.dbeta) * DEG, 2), sense=_sense(ds.dbeta, _)), "°"],
         ["$\\gamma_{min}$", _("least transmission angle"), f(b.gamma_min * DEG, 2), "°"],
         ["$\\gamma_{max}$", _("largest transmission angle"), f(b.gamma_max * DEG, 2), "°"],
-        ["$d\\beta/d\\alpha$", _("velocity ratio range (mean Δβ/Δα = {mean})", mean=f(mean_ratio, 4)),
+        ["$d\\beta/d\\alpha$", _("velocity ratio range (mean $\\Delta\\beta/\\Delta\\alpha$ = {mean})", mean=f(mean_ratio, 4)),
          f"{f(float(np.min(np.abs(b.velocity_ratio))), 4)} ~ {f(float(np.max(np.abs(b.velocity_ratio))), 4)}", "—"],
     ]
     seed = None
@@ -687,8 +687,8 @@ def verification_rows(r: dict, lang: str) -> list[list[str]]:
         b.closure <= 1e-9)
     add(N_("bending four-bar least transmission angle / °"), f(b.gamma_min * DEG, 2),
         f"≥ {f(p.bending.gamma_allowed * DEG, 0)}", b.gamma_min >= p.bending.gamma_allowed)
-    add(N_("bending wheel ω vs central difference (relative)"), e(b.fd_velocity), "O(h²)", b.fd_velocity < 1e-3)
-    add(N_("bending wheel ε vs central difference (relative)"), e(b.fd_acceleration), "O(h²)", b.fd_acceleration < 1e-3)
+    add(N_("bending wheel $\\omega$ vs central difference (relative)"), e(b.fd_velocity), "O(h²)", b.fd_velocity < 1e-3)
+    add(N_("bending wheel $\\varepsilon$ vs central difference (relative)"), e(b.fd_acceleration), "O(h²)", b.fd_acceleration < 1e-3)
     for key, cam in (("pin", N_("pin cam")), ("bend", N_("bending cam"))):
         err = c.cam_timing_error[key]
         rows.append([_("cycle diagram vs the {cam} (largest deviation / stroke)", cam=_(cam)),
@@ -704,7 +704,7 @@ def verification_rows(r: dict, lang: str) -> list[list[str]]:
     k = r["feed"]
     if cf is not None:
         kk = k.time_ratio if k.time_ratio >= 1 else 1 / k.time_ratio
-        add(N_("feed K: simulation / closed form"), f(kk, 4), f(cf.K, 4),
+        add(N_("feed $K$: simulation / closed form"), f(kk, 4), f(cf.K, 4),
             abs(kk - cf.K) < 1e-9)
         if cf.stroke is not None:
             add(N_("feed stroke: simulation / closed form / mm"), f(k.stroke * MM, 4),

@@ -1,0 +1,73 @@
+"""One measured value, one number (review36 Top 11, issue 19): a value read off a polygon
+is printed with the same digits wherever the report lists it, the polygon's table and the
+graphical-against-analytic comparison table alike. The shaper listed F_R45 = 1662.5 N in
+its force-polygon table (66.5 mm × 25 N/mm) and 1662 N in the comparison.
+
+The reference is the report itself: each position's velocity, acceleration and force
+tables give a vector's value; the comparison table of the same position must print that
+value (a reaction F_Rij may stand in the polygon table as its counterpart F_Rji: one
+magnitude)."""
+from __future__ import annotations
+
+import re
+
+import pytest
+
+from tests.test_report_prose import _markdown
+
+LINKAGES = ["shaper", "shaper_lengths", "slotter", "textbook_guide_bar", "press",
+            "furnace_pusher", "die_cutter", "linkage_sixbar", "lockbeam", "crank_rocker"]
+
+# | $v_{C}$ | ? | dir | seg | 51.0 | 0.510 |   (velocity / acceleration polygon)
+KIN = re.compile(r"^\| (\$[^$|]+\$) \|[^|\n]*\|[^|\n]*\|[^|\n]*\| [\d.]+ \| ([^|\n]+) \|$", re.M)
+# | 5–6 | $F_{R16}$ | ? | 9.5 | 475 |   (force polygon)
+FORCE = re.compile(r"^\|[^|\n]*\| (\$[^$|]+\$) \| [√?] \| [\d.]+ \| ([^|\n]+) \|$", re.M)
+# | $F_{R16}$ | N | 475 | 474 | 0.2 | 109 | PASS |   (comparison)
+COMPARE = re.compile(r"^\| (\$[^$|]+\$) \| [^|\n]+ \| ([^|\n]+) \| [^|\n]+ \| [^|\n]+ \| "
+                     r"[^|\n]+ \| [^|\n]+ \|$", re.M)
+REACTION = re.compile(r"\$F_\{R(\w)(\w)\}\$")
+
+
+def mismatches(section: str) -> tuple[list, int]:
+    """(the comparison rows whose graphical value differs from the polygon tables', the
+    number of rows compared) in one position's section of the report."""
+    listed: dict[str, str] = {}
+    for name, value in KIN.findall(section) + FORCE.findall(section):
+        value = value.strip().lstrip("-−")
+        if value and value[0].isdigit():
+            listed.setdefault(name, value)
+    bad, seen = [], 0
+    for name, value in COMPARE.findall(section):
+        value = value.strip().lstrip("-−")
+        m = REACTION.fullmatch(name)
+        other = f"$F_{{R{m[2]}{m[1]}}}$" if m else None
+        there = listed.get(name) or listed.get(other)
+        if there is None:
+            continue
+        seen += 1
+        if there != value:
+            bad.append((name, there, value))
+    return bad, seen
+
+
+def test_the_check_finds_the_reviewed_rows():
+    old = ("| 5–6 | $F_{R45}$ | ? | 66.5 | 1662.5 |\n\n"
+           "| $F_{R54}$ | N | 1662 | 1668 | -0.3 | 108 | 合格 |\n")
+    assert mismatches(old) == ([("$F_{R54}$", "1662.5", "1662")], 1)
+    new = old.replace("| 1662 |", "| 1662.5 |")
+    assert mismatches(new) == ([], 1)
+
+
+@pytest.mark.parametrize("lang", ["zh", "en"])
+@pytest.mark.parametrize("name", LINKAGES)
+def test_a_measured_value_prints_alike_in_the_polygon_and_comparison_tables(
+        example_results, name, lang):
+    md, _ = _markdown(example_results, name, lang)
+    # one position per "## " section of the graphical chapter
+    bad, seen = [], 0
+    for section in re.split(r"\n## ", md):
+        b, s = mismatches(section)
+        bad += b
+        seen += s
+    assert seen, "no comparison row found in the polygon tables"
+    assert bad == [], bad
