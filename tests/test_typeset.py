@@ -1280,6 +1280,28 @@ def test_a_short_derivation_is_not_broken_across_pages(tmp_path):
     assert split == []
 
 
+@pytest.mark.parametrize("lines", [30, 31])
+def test_the_sheets_previews_start_under_the_line_that_cites_them(tmp_path, lines):
+    # the sheets' table ends a little above the middle of a page and two lines cite the
+    # previews under it: planned from the table's foot (preview-heights), the first preview
+    # was set to a room two lines taller than the one left, did not fit and started the next
+    # page whole, which left the table's page half empty (slotter zh p.34, textbook en p.17)
+    from PIL import Image
+
+    Image.new("RGB", (1189, 841), (200, 220, 240)).save(tmp_path / "a1.png")
+    Image.new("RGB", (420, 297), (220, 240, 200)).save(tmp_path / "a3.png")
+    md = "\n\n".join([
+        "# One\n", _FILLER * 20, "# Drawing sheets\n", _FILLER * lines,
+        "| Drawing | Size |\n|---|---|\n| Kinematic diagram | A3 |\n| Analysis | A1 |\n\n: Drawing sheets {#tbl:sheets}",
+        "The previews of the sheets are " + ", ".join(["@fig:sheet-kinematic"] * 8) + " and @fig:sheet-analysis.",
+        "![Kinematic diagram (A3, preview)](a3.png){#fig:sheet-kinematic width=100%}",
+        "![Analysis (A1, preview)](a1.png){#fig:sheet-analysis width=100%}",
+        "# Summary {#summary .unnumbered}\n", _FILLER * 3]) + "\n"
+    pdf = _render(tmp_path, md)
+    assert half_empty_pages(pdf) == []
+    assert page_holes(pdf) == []
+
+
 def test_a_figure_stays_off_a_long_derivation_that_went_on_to_its_page(tmp_path):
     # derivations of seven equations (too long to keep whole: keep-derivations), each followed
     # by a line citing a figure; the second goes on from page 4 to page 5, where its figure's
