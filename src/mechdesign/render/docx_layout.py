@@ -5,7 +5,11 @@
     two ("实际中心距" into "…中心" / "距", slotter zh), and a short table may leave its first
     row alone at a page foot. Every row of a data table gets ``w:cantSplit``; a table of at
     most :data:`SHORT_TABLE_ROWS` rows is kept on one page (``w:keepNext`` on the
-    paragraphs of every row but the last, as Word's "keep with next" does).
+    paragraphs of every row but the last, as Word's "keep with next" does). A longer table
+    may break between rows, but leaves at least :data:`~.pdf.KEEP_ROWS` body rows on each
+    side of the break, as the PDF does (issue 19 point 2; LibreOffice left one or two rows
+    at a page foot or on the next page: linkage_sixbar zh tables 14, 15, 22 and 23): its
+    header and first rows, and its last rows, are kept together the same way.
     (pandoc already marks the header row ``w:tblHeader``: repeated on each page.)
 :func:`split_inline_formula_lists`
     An inline formula is one unbreakable object for LibreOffice: a list of them in one
@@ -27,6 +31,8 @@
 from __future__ import annotations
 
 import re
+
+from .pdf import KEEP_ROWS
 
 #: A table of at most this many rows (header included) is kept on one page.
 SHORT_TABLE_ROWS = 15
@@ -54,9 +60,15 @@ def _keep_table(table: str) -> str:
         return f"<w:tr><w:trPr><w:cantSplit />{pr}</w:trPr>"
     table = _ROW.sub(cant_split, table)
     rows = [m.start() for m in re.finditer(r"<w:tr>", table)]
-    if not 1 < len(rows) <= SHORT_TABLE_ROWS:
+    if len(rows) <= 1:
         return table
-    return table[:rows[0]] + _keep_with_next(table[rows[0]:rows[-1]]) + table[rows[-1]:]
+    if len(rows) <= SHORT_TABLE_ROWS:
+        return table[:rows[0]] + _keep_with_next(table[rows[0]:rows[-1]]) + table[rows[-1]:]
+    # the header row and the first KEEP_ROWS body rows together; the last KEEP_ROWS rows
+    # together (SHORT_TABLE_ROWS > 2 * KEEP_ROWS + 1: the two groups do not meet)
+    head, tail = rows[KEEP_ROWS], rows[-KEEP_ROWS]
+    return (table[:rows[0]] + _keep_with_next(table[rows[0]:head]) + table[head:tail]
+            + _keep_with_next(table[tail:rows[-1]]) + table[rows[-1]:])
 
 
 def keep_table_rows(document_xml: str) -> str:
