@@ -644,7 +644,9 @@ def _captioned_tables(document_xml: str) -> list[tuple[str, list[list[str]]]]:
         rows = [["".join(re.findall(r"<(?:w|m):t(?: [^>]*)?>([^<]*)</(?:w|m):t>", cell))
                  for cell in re.findall(r"<w:tc>.*?</w:tc>", row, re.DOTALL)]
                 for row in _rows(m.group(2))]
-        found.append(("".join(_paragraph_texts(m.group(1))), rows))
+        # a formula in the caption marked "\0": the caption is looked for up to it
+        caption = re.sub(r"<m:oMath>.*?</m:oMath>", "<w:t>\0</w:t>", m.group(1), flags=re.DOTALL)
+        found.append(("".join(_paragraph_texts(caption)), rows))
     return found
 
 
@@ -653,8 +655,8 @@ def _table_breaks(docx: Path, pdf: Path, keep: int = 3) -> list[tuple]:
     foot, which is split leaving fewer than ``keep`` body rows on a page, or whose header row
     is not repeated on a page it goes on to (issue 19 point 2). The rows are found in the
     PDF's text, in order, by their cells' text (a row's whole text, else one of its cells:
-    a formula in a cell reads otherwise); a row not found counts on either side of a break
-    (no defect is made up from it)."""
+    a formula in a cell reads otherwise), on the nearest page that has it; a row not found
+    counts on either side of a break (no defect is made up from it)."""
     import pymupdf
 
     with pymupdf.open(pdf) as doc:
@@ -662,17 +664,16 @@ def _table_breaks(docx: Path, pdf: Path, keep: int = 3) -> list[tuple]:
     bad = []
     for caption, rows in _captioned_tables(_part(docx, "word/document.xml")):
         name = caption[:24]
-        key = _flat(caption)[:20]
+        key = _flat(caption).split("\0")[0][:20]
         start = next((k for k, text in enumerate(pages) if key in text), None)
         if start is None:
             continue                                  # a caption with a formula: not read
         page, pos, where = start, pages[start].find(key) + len(key), []
         for row in rows:
             found = None
-            for cell in [_flat("".join(row))] + [_flat(c) for c in row]:
-                if len(cell) < 3:
-                    continue
-                for k in range(page, min(page + 3, len(pages))):
+            keys = [key for key in [_flat("".join(row))] + [_flat(c) for c in row] if len(key) >= 3]
+            for k in range(page, min(page + 3, len(pages))):      # the nearest page first
+                for cell in keys:
                     i = pages[k].find(cell, pos if k == page else 0)
                     if i >= 0:
                         found = (k, i + len(cell))
