@@ -619,15 +619,33 @@ def word_layout_defects(docx: Path, pdf: Path) -> dict[str, list]:
     """What LibreOffice's PDF of a Word report shows against issue 19 points 1 and 2 (see
     the comment above): characters outside the text block, equation numbers over words,
     contents entries without a page number, blank pages, captioned tables split badly
-    (:func:`_table_breaks`). Called for every example brief × language by
+    (:func:`_table_breaks`), figure captions parted from their figures. Called for every example brief × language by
     tests/test_typeset.py::test_every_report_stays_in_the_text_block on the .docx it renders
     (one render of each report serves both files' checks)."""
     from tests.test_typeset import numbers_over_words
 
     found = {"outside": _outside_docx_block(pdf), "numbers over words": numbers_over_words(pdf),
              "contents": _contents_without_page_numbers(pdf), "blank pages": _blank_pages(pdf),
-             "tables": _table_breaks(docx, pdf)}
+             "tables": _table_breaks(docx, pdf), "figure captions": _figure_captions_alone(pdf)}
     return {name: v for name, v in found.items() if v}
+
+
+def _figure_captions_alone(pdf: Path) -> list[tuple[int, str]]:
+    """(page, caption) of every figure caption ("图 N" / "Figure N:") that starts a page
+    with no image above it: parted from its figure (reference.docx keeps the figure's
+    paragraph with its caption, Captioned Figure: keep with next)."""
+    import pymupdf
+
+    from tests.test_typeset import _FIGURE_CAPTION, page_rows
+
+    bad = []
+    with pymupdf.open(pdf) as doc:
+        for number, page in enumerate(doc, 1):
+            rows = page_rows(page)
+            if rows and _FIGURE_CAPTION.match(rows[0][2]) and not any(
+                    info["bbox"][3] <= rows[0][0] + 1 for info in page.get_image_info()):
+                bad.append((number, rows[0][2][:30]))
+    return bad
 
 
 def _flat(text: str) -> str:
