@@ -659,7 +659,9 @@ def _captioned_tables(document_xml: str) -> list[tuple[str, list[list[str]]]]:
     found = []
     for m in re.finditer(r'(<w:p>(?:(?!<w:p>).)*?<w:pStyle w:val="TableCaption" />.*?</w:p>)'
                          r"(?:\s|<w:bookmark(?:Start|End)\b[^>]*/>)*(<w:tbl>.*?</w:tbl>)", document_xml, re.DOTALL):
-        rows = [["".join(re.findall(r"<(?:w|m):t(?: [^>]*)?>([^<]*)</(?:w|m):t>", cell))
+        # a cell's text, each formula in it marked "\0" (LibreOffice sets it otherwise)
+        rows = [["".join(re.findall(r"<w:t(?: [^>]*)?>([^<]*)</w:t>",
+                                    re.sub(r"<m:oMath>.*?</m:oMath>", "<w:t>\0</w:t>", cell, flags=re.DOTALL)))
                  for cell in re.findall(r"<w:tc>.*?</w:tc>", row, re.DOTALL)]
                 for row in _rows(m.group(2))]
         # a formula in the caption marked "\0": the caption is looked for up to it
@@ -672,9 +674,10 @@ def _table_breaks(docx: Path, pdf: Path, keep: int = 3) -> list[tuple]:
     """(what, page, table) of every captioned table whose caption stands alone at a page's
     foot, which is split leaving fewer than ``keep`` body rows on a page, or whose header row
     is not repeated on a page it goes on to (issue 19 point 2). The rows are found in the
-    PDF's text, in order, by their cells' text (a row's whole text, else one of its cells:
-    a formula in a cell reads otherwise), on the nearest page that has it; a row not found
-    counts on either side of a break (no defect is made up from it)."""
+    PDF's text, in order, by their text (a row's whole text, or its longest piece between
+    formulas: LibreOffice sets a formula's text otherwise; a single cell, "PASS", "0.000",
+    could be the next row's), on the nearest page that has it; a row not found counts on
+    either side of a break (no defect is made up from it)."""
     import pymupdf
 
     with pymupdf.open(pdf) as doc:
@@ -689,7 +692,8 @@ def _table_breaks(docx: Path, pdf: Path, keep: int = 3) -> list[tuple]:
         page, pos, where = start, pages[start].find(key) + len(key), []
         for row in rows:
             found = None
-            keys = [key for key in [_flat("".join(row))] + [_flat(c) for c in row] if len(key) >= 3]
+            pieces = [piece for piece in _flat("".join(row)).split("\0") if len(piece) >= 4]
+            keys = [max(pieces, key=len)] if pieces else []
             for k in range(page, min(page + 3, len(pages))):      # the nearest page first
                 for cell in keys:
                     i = pages[k].find(cell, pos if k == page else 0)
@@ -709,7 +713,7 @@ def _table_breaks(docx: Path, pdf: Path, keep: int = 3) -> list[tuple]:
             continue
         lo = [body.index(p) for p in parts]
         hi = [len(body) - 1 - body[::-1].index(p) for p in parts]
-        head = [_flat(c) for c in rows[0] if len(_flat(c)) >= 2]
+        head = [_flat(c) for c in rows[0] if len(_flat(c)) >= 2 and "\0" not in c]
         for i, p in enumerate(parts):
             # the most rows this part can hold: those between the parts before and after it
             most = (lo[i + 1] if i + 1 < len(parts) else len(body)) - (hi[i - 1] if i else -1) - 1
