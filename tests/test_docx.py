@@ -928,3 +928,27 @@ def _assert_tables_centred_and_apart(document: str) -> None:
     props = {re.match(r"<w:tbl><w:tblPr>.*?</w:tblPr>", t.group(0), flags=re.DOTALL).group(0)
              for t, s in zip(tables, style) if s == "EquationTable"}
     assert len(props) == 1, props
+
+
+def test_a_lead_in_ending_in_a_colon_is_kept_with_what_it_introduces(tmp_path):
+    """Issue 19 point 2 (Word, laid out by LibreOffice): 51 pages of the 28 example reports
+    ended in a lead-in, "导杆长度、曲柄长度、连杆长度：" at the foot of shaper zh p.3 and its
+    formulas on p.4. A paragraph ending in "：" or ":" keeps with the next block (w:keepNext);
+    other paragraphs, table cells and program lines do not get it."""
+    md = _write_sample(tmp_path, (
+        "# 设计\n\n导杆长度、曲柄长度、连杆长度：\n\n$$ L = \\frac{H}{2} $$\n\n"
+        "The torque follows from $T = 9550\\,P/n$:\n\n| 项目 | 说明： |\n|:--|:--|\n| a | b： |\n\n: 表\n\n"
+        "普通的一句话。\n\n```python\ndef f():\n    return 1\n```\n"))
+    out = tmp_path / "report.docx"
+    render_docx(md, out, METADATA, TEMPLATES)
+    document = _part(out, "word/document.xml")
+    ElementTree.fromstring(document)
+    outside = re.sub(r"<w:tbl>.*?</w:tbl>", "", document, flags=re.DOTALL)
+    kept = {t for p, t in zip(re.findall(r"<w:p>.*?</w:p>", outside, flags=re.DOTALL),
+                              _paragraph_texts(outside)) if "<w:keepNext />" in p}
+    assert "导杆长度、曲柄长度、连杆长度：" in kept
+    assert any(t.startswith("The torque follows from") for t in kept), kept
+    assert not any(t.startswith(("普通", "def")) for t in kept), kept
+    for table in re.findall(r"<w:tbl>.*?</w:tbl>", document, flags=re.DOTALL):
+        if "说明：" in table:
+            assert "<w:keepNext" not in _rows(table)[-1]
