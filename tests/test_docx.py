@@ -619,14 +619,16 @@ def word_layout_defects(docx: Path, pdf: Path) -> dict[str, list]:
     """What LibreOffice's PDF of a Word report shows against issue 19 points 1 and 2 (see
     the comment above): characters outside the text block, equation numbers over words,
     contents entries without a page number, blank pages, captioned tables split badly
-    (:func:`_table_breaks`), figure captions parted from their figures. Called for every example brief × language by
+    (:func:`_table_breaks`), figure captions parted from their figures, a page ending in a
+    lead-in ("…：" / "…:", as tests/test_typeset.py checks the PDF). Called for every example brief × language by
     tests/test_typeset.py::test_every_report_stays_in_the_text_block on the .docx it renders
     (one render of each report serves both files' checks)."""
-    from tests.test_typeset import numbers_over_words
+    from tests.test_typeset import colon_at_page_foot, numbers_over_words
 
     found = {"outside": _outside_docx_block(pdf), "numbers over words": numbers_over_words(pdf),
              "contents": _contents_without_page_numbers(pdf), "blank pages": _blank_pages(pdf),
-             "tables": _table_breaks(docx, pdf), "figure captions": _figure_captions_alone(pdf)}
+             "tables": _table_breaks(docx, pdf), "figure captions": _figure_captions_alone(pdf),
+             "lead-ins at a page foot": colon_at_page_foot(pdf)}
     return {name: v for name, v in found.items() if v}
 
 
