@@ -1077,7 +1077,7 @@ DERIVATION_OPEN: set[tuple[str, str]] = set()
 @pytest.mark.e2e
 @pytest.mark.parametrize("lang", ["zh", "en"])
 @pytest.mark.parametrize("brief", BRIEFS)
-def test_every_report_stays_in_the_text_block(brief, lang, tmp_path):
+def test_every_report_stays_in_the_text_block(brief, lang, tmp_path, libreoffice_profile):
     from typer.testing import CliRunner
 
     from mechdesign.cli import app as cli_app
@@ -1149,6 +1149,18 @@ def test_every_report_stays_in_the_text_block(brief, lang, tmp_path):
     assert figures_after_their_chapter(pdf) == []
     far = figures_far_from_anchor(pdf)
     assert (far != []) if (brief, lang) in FAR_OPEN else (far == []), far
+    # the Word file as LibreOffice lays it out: issue 19 points 1 and 2 (tests/test_docx.py)
+    from tests.test_docx import SOFFICE, libreoffice_pdf, word_layout_defects
+    if SOFFICE is not None:
+        word_pdf = libreoffice_pdf(out / "report.docx", tmp_path / "word", libreoffice_profile)
+        assert word_layout_defects(out / "report.docx", word_pdf) == {}
+
+
+@pytest.fixture(scope="module")
+def libreoffice_profile(tmp_path_factory) -> Path:
+    """A LibreOffice user profile for this module's conversions (made once: the first
+    conversion with a new profile takes some seconds more)."""
+    return tmp_path_factory.mktemp("lo-profile")
 
 
 # ---- Word: table of contents, running header, page numbers, author ------------------------

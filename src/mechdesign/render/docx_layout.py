@@ -5,8 +5,17 @@
     two ("实际中心距" into "…中心" / "距", slotter zh), and a short table may leave its first
     row alone at a page foot. Every row of a data table gets ``w:cantSplit``; a table of at
     most :data:`SHORT_TABLE_ROWS` rows is kept on one page (``w:keepNext`` on the
-    paragraphs of every row but the last, as Word's "keep with next" does).
+    paragraphs of every row but the last, as Word's "keep with next" does). A longer table
+    may break between rows, but leaves at least :data:`~.pdf.KEEP_ROWS` body rows on each
+    side of the break, as the PDF does (issue 19 point 2; LibreOffice left one or two rows
+    at a page foot or on the next page: linkage_sixbar zh tables 14, 15, 22 and 23): its
+    header and first rows, and its last rows, are kept together the same way.
     (pandoc already marks the header row ``w:tblHeader``: repeated on each page.)
+:func:`keep_lead_ins`
+    A paragraph ending in a colon ("导杆长度、曲柄长度、连杆长度：", "…T = 9550 P/n:") introduces
+    the formula, table or list after it; pandoc lets a page end under it (51 such page feet
+    in the 28 example reports laid out by LibreOffice). It is kept with the next block
+    (``w:keepNext``), as the PDF keeps it (templates/report.typ).
 :func:`split_inline_formula_lists`
     An inline formula is one unbreakable object for LibreOffice: a list of them in one
     formula, "$C_v = 2.000, C_a = 4.000, C_j = ∞$", goes to the next line as a whole and the
@@ -28,8 +37,13 @@ from __future__ import annotations
 
 import re
 
-#: A table of at most this many rows (header included) is kept on one page.
-SHORT_TABLE_ROWS = 15
+from .pdf import KEEP_ROWS, UNBREAKABLE_ROWS
+
+#: A table of at most this many rows (header included) is kept on one page, as the PDF keeps
+#: one of at most UNBREAKABLE_ROWS body rows (render/pdf.py). 15 rows kept whole left up to
+#: a third of a page empty (review36 Top 14: shaper zh p.10 ended at 70 %, its table 7 of
+#: 14 rows went to p.11 whole).
+SHORT_TABLE_ROWS = UNBREAKABLE_ROWS + 1
 
 _TABLE = re.compile(r"<w:tbl>.*?</w:tbl>", re.DOTALL)     # pandoc's tables are not nested
 _ROW = re.compile(r"<w:tr>(?:<w:trPr>(.*?)</w:trPr>)?", re.DOTALL)
@@ -54,9 +68,15 @@ def _keep_table(table: str) -> str:
         return f"<w:tr><w:trPr><w:cantSplit />{pr}</w:trPr>"
     table = _ROW.sub(cant_split, table)
     rows = [m.start() for m in re.finditer(r"<w:tr>", table)]
-    if not 1 < len(rows) <= SHORT_TABLE_ROWS:
+    if len(rows) <= 1:
         return table
-    return table[:rows[0]] + _keep_with_next(table[rows[0]:rows[-1]]) + table[rows[-1]:]
+    if len(rows) <= SHORT_TABLE_ROWS:
+        return table[:rows[0]] + _keep_with_next(table[rows[0]:rows[-1]]) + table[rows[-1]:]
+    # the header row and the first KEEP_ROWS body rows together; the last KEEP_ROWS rows
+    # together (a longer table than SHORT_TABLE_ROWS: the two groups do not meet)
+    head, tail = rows[KEEP_ROWS], rows[-KEEP_ROWS]
+    return (table[:rows[0]] + _keep_with_next(table[rows[0]:head]) + table[head:tail]
+            + _keep_with_next(table[tail:rows[-1]]) + table[rows[-1]:])
 
 
 def keep_table_rows(document_xml: str) -> str:
@@ -116,7 +136,7 @@ def split_inline_formula_lists(document_xml: str) -> str:
     return "".join(part if k % 2 else _INLINE_MATH.sub(split, part) for k, part in enumerate(parts))
 
 
-__all__ = ["SHORT_TABLE_ROWS", "keep_table_rows", "split_inline_formula_lists"]
+__all__ = ["SHORT_TABLE_ROWS", "keep_lead_ins", "keep_table_rows", "split_inline_formula_lists"]
 
 
 _TBL_PR = re.compile(r"<w:tbl><w:tblPr>(.*?)</w:tblPr>", re.DOTALL)
@@ -164,3 +184,26 @@ def separate_tables(document_xml: str) -> str:
             return m.group(0)
         return "</w:tbl>" + TABLE_SEPARATOR + m.group(1)
     return _TOUCHING.sub(one, document_xml)
+
+
+_BODY_PARAGRAPH = re.compile(r"<w:p>(?:(?!</w:p>).)*</w:p>", re.DOTALL)
+_TEXT = re.compile(r"<(?:w|m):t(?:\s[^>]*)?>([^<]*)</(?:w|m):t>")
+
+
+def keep_lead_ins(document_xml: str) -> str:
+    """Every paragraph outside a table whose text ends in "：" or ":" given ``w:keepNext``
+    (a program listing's lines are left as they are)."""
+    def lead_in(m: re.Match) -> str:
+        para = m.group(0)
+        if '<w:pStyle w:val="SourceCode"' in para:
+            return para
+        text = "".join(_TEXT.findall(para)).rstrip()
+        if not text.endswith(("：", ":")) or "<w:keepNext" in para:
+            return para
+        return _keep_with_next(para)
+    parts = _TABLE.split(document_xml)
+    tables = _TABLE.findall(document_xml)
+    out = [_BODY_PARAGRAPH.sub(lead_in, parts[0])]
+    for table, part in zip(tables, parts[1:]):
+        out += [table, _BODY_PARAGRAPH.sub(lead_in, part)]
+    return "".join(out)
