@@ -178,7 +178,7 @@ def wrap_note(text: str, width: float, smallest: float = NOTE_SMALLEST) -> list[
     breaks = [j for j, ch in enumerate(text) if ch == " " and 0 < j < len(text) - 1]
     # after a full-width stop or comma (Chinese: no spaces)
     breaks += [j + 1 for j, ch in enumerate(text) if j + 1 < len(text)
-               and unicodedata.category(ch) == "Po" and unicodedata.east_asian_width(ch) == "W"]
+               and unicodedata.category(ch) == "Po" and unicodedata.east_asian_width(ch) in "WF"]
     if not breaks:
         return [text]
     j = min(breaks, key=lambda b: max(text_width(text[:b].rstrip(), smallest),
