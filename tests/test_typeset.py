@@ -1007,10 +1007,10 @@ WIDE_GAPS_OPEN: set[tuple[str, str]] = set()
 # set smaller to fill the room under the text or to share one page). Open: slotter zh p.34,
 # the sheets' chapter: the first preview, planned to fill the room under the sheets' table
 # (preview-heights), does not fit under the line after the table that cites the previews
-# ("各图纸的预览见图 19…") and starts the next page whole; textbook_guide_bar en p.17 (50 %) since
-# graphfix36 (its comparison table four rows shorter: the crank's given v_A, a_A are not
-# compared): "5 Drawing sheets" moved up and p.17 holds table 24 and figure 12 only
-HALF_EMPTY_OPEN: set[tuple[str, str]] = {("slotter", "zh"), ("textbook_guide_bar", "en")}
+# ("各图纸的预览见图 19…") and starts the next page whole. (textbook_guide_bar en p.17, 50 % since
+# graphfix36, is full again since sheets37: the sentence under each comparison table on the
+# sign of M_b moves "5 Drawing sheets" back down; the preview rule is unchanged)
+HALF_EMPTY_OPEN: set[tuple[str, str]] = {("slotter", "zh")}
 # A figure between the parts of a split table whose text stands BEFORE the table is held back
 # past the table (templates/report.typ: figure-held; the figures whose text follows a split
 # table go to the foot of its last page: after-split). Open (each is a report whose layout did
