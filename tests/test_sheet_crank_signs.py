@@ -8,8 +8,8 @@ positions (shaper pos. 12: 80.3 on the sheet, −80.3 in table 5). Now the sheet
 M_d and P_b in the crank's sense, as the report, and says so once in its notes.
 
 The report's graphical method keeps its moment equations counter-clockwise positive (the
-polygons are drawn so); its comparison with the analytic M_b is in the crank's sense, and
-the text under the comparison table says so and converts the equation's value.
+polygons are drawn so) and converts: "M_b = −228 N·m (counter-clockwise positive; 228 N·m in
+the crank's sense of rotation)"; its comparison table lists the latter.
 
 Checked against: the report's own M_b table (read from its Markdown); the graphical method's
 moment equation (counter-clockwise positive, a construction separate from the forces stage)
@@ -167,28 +167,3 @@ def test_the_notes_state_the_convention_once(example_results, name, lang, words)
     texts = [t for t, _ in _sheet(example_results, name, lang)]
     assert texts.count(words) == 1
     assert not any(re.search(r"M.?b[^,，。]*(counter-clockwise|逆时针)", t) for t in texts if t != words)
-
-
-@pytest.mark.parametrize("name", FORCED)
-def test_the_comparison_converts_the_graphical_mb(example_results, name):
-    """The report's graphical section: the moment equation's M_b (counter-clockwise
-    positive), the comparison table's graphical M_b (the crank's sense, as the analytic
-    tables), and a sentence under the table saying so; for a clockwise crank it gives both
-    values, which differ in sign only."""
-    from mechdesign.render.sheets import linkage_results
-
-    md = _markdown(example_results, name, "en")
-    sense = np.sign(linkage_results(example_results(name)).model.crank.omega)
-    said = re.findall(r"Balancing torque on the crank \$M_b\$ = (\S+) N·m \(counter-clockwise "
-                      r"positive; (\S+) N·m in the crank's sense of rotation\)", md)
-    rows = re.findall(r"^\| \$M_b\$ \| N·m \| (\S+) \| (\S+) \|", md, flags=re.M)
-    notes = re.findall(r"In the table \$M_b\$ is positive in the crank's sense of rotation[^\n]*", md)
-    assert len(said) == len(rows) == len(notes) >= 2, (name, said, rows, notes)
-    for (ccw, crank), (graphical, _analytic), note in zip(said, rows, notes):
-        assert _number(crank) == pytest.approx(sense * _number(ccw))
-        assert graphical == crank
-        if sense < 0:
-            assert f"the graphical {ccw} N·m above (counter-clockwise positive) is {crank} N·m " \
-                   "for this clockwise crank" in note
-        else:
-            assert "the crank turns counter-clockwise" in note

@@ -913,11 +913,6 @@ def graphical_context(results: dict, figures: dict, lang: str) -> list[dict]:
                 "forces": forces, "crank": crank,
                 "mb": None if pos.balancing_torque is None else _numg(pos.balancing_torque),
                 "compare": _compare(pos, lang),
-                # the comparison's M_b is the crank's sense of rotation (as the analytic
-                # tables and the M_b curve), the moment equation's counter-clockwise
-                # positive: the text under the table converts it (review36 Top 13)
-                "compare_mb": crank is not None and any(c.quantity == "Mb" for c in pos.comparison),
-                "clockwise": model is not None and float(model.crank.omega) < 0,
                 "beyond": sum(1 for c in pos.comparison
                               if abs(c.graphical - c.analytic) > c.tolerance),
             })
