@@ -117,3 +117,49 @@ def test_a_label_with_no_free_spot_goes_on_a_leader_with_last_leader():
     box = text_box(t.position, t.text, t.height, t.halign, t.valign)
     # no line of the block crosses the text (the leader and its shoulder are its own)
     assert placer.crossed(box, LabelPlacer(crowded())._drawn_points()) == 0
+
+
+# ------------------------------------------------------------------ notes too long for their room
+
+def test_a_note_too_long_for_its_room_is_wrapped_at_a_word():
+    from mechdesign.render.kinematic_sheet import NOTE_SMALLEST, wrap_note
+
+    short = "each group to scale"
+    assert wrap_note(short, 100.0) == [short]
+    words = ["word%02d" % j for j in range(40)]
+    text = " ".join(words)                          # 40 × 6 + 39 = 279 characters
+    width = 100.0                                   # at 2.5 mm: 0.62 × 2.5 = 1.55 mm a character
+    lines = wrap_note(text, width)
+    assert len(lines) >= 2 and " ".join(lines) == text          # nothing lost, broken at spaces
+    assert all(text_width(x, NOTE_SMALLEST) <= width for x in lines)
+    # Chinese: after a "，" (no spaces), each part fits
+    zh = "，".join(["各杆组按比例尺绘制"] * 12)
+    parts = wrap_note(zh, 120.0)
+    assert "".join(parts) == zh and len(parts) >= 2
+    assert all(text_width(x, NOTE_SMALLEST) <= 120.0 for x in parts)
+    assert all(x.endswith("，") for x in parts[:-1])
+
+
+def test_the_lockbeam_english_note_keeps_off_the_title_block(example_results):
+    """The lock-beam's kinematic sheet in English: its note "each group to μL; not given, so
+    schematic: …the chain's centre distance" (150 characters) ran on at the smallest text
+    height into the title block's "Student No." (the touching check ran on Chinese sheets
+    only). Every note now ends left of the title block, by the width estimate."""
+    from pathlib import Path
+
+    from mechdesign.brief.loader import load_brief
+    from mechdesign.render.sheet import plain, title_block_box
+    from mechdesign.render.sheets import _builders, title_info
+    from sheet_overlaps import touching_labels
+
+    root = Path(__file__).resolve().parents[1]
+    brief = load_brief(root / "designs" / "lockbeam.yaml")
+    builders = dict(_builders(example_results("lockbeam"), brief))
+    sheet = builders["kinematic"](title_info(brief.report, "kinematic", "MD-01", 1, 4, "en"), "en")
+    assert not touching_labels(sheet)
+    tb = title_block_box(sheet)
+    notes = [e for e in sheet.entities if isinstance(e, Text) and e.position.imag < tb[3]
+             and e.position.real < tb[0]]
+    assert any("centre distance" in plain(e.text) for e in notes)
+    for e in notes:
+        assert e.position.real + text_width(e.text, e.height) <= tb[0] - 2.0, plain(e.text)

@@ -44,7 +44,8 @@ LABELS = LabelTable({
     "phase": pgettext("analysis sheet", "crank angle φ (°)"),
     "curves": pgettext("analysis sheet", "Output motion curves"),
     "mbt": pgettext("analysis sheet", "Balancing torque"),
-    "signs": pgettext("analysis sheet", "Signs: Mb, Md and Pb counter-clockwise positive"),
+    "signs": pgettext("analysis sheet", "Signs: Mb, Md and Pb positive in the crank's sense of "
+                      "rotation, MI counter-clockwise positive"),
     "et": pgettext("analysis sheet", "Flywheel energy"),
     "md": pgettext("analysis sheet", "driving torque Md = {v} N·m"),
     "mean": pgettext("analysis sheet", "mean Mb = {v} N·m"),
@@ -73,7 +74,7 @@ LABELS = LabelTable({
 })
 
 # symbols written with a subscript wherever they stand in this sheet's texts
-SYMBOLS = ("M_b", "P_b", "M_d", "J_F", "ΔW_max", "μ_v", "μ_a", "μ_F")
+SYMBOLS = ("M_b", "P_b", "M_d", "M_I", "J_F", "ΔW_max", "μ_v", "μ_a", "μ_F")
 UNITS = {"velocity": (sub("μ", "v"), "(m/s)/mm", "m/s"),
          "acceleration": (sub("μ", "a"), "(m/s²)/mm", "m/s²"), "force": (sub("μ", "F"), "N/mm", "N")}
 
@@ -167,7 +168,7 @@ def _polygon_grid(s: Sheet, model, polys: dict, chosen: list[str], lab: dict, bo
             title = (lab[pg.kind].format(p=label) if pg.kind != "force"
                      else lab["force"].format(p=label, g=_group_title(model, pg, lab)))
             mu = _cell(s, pg, cell, title, lab,
-                       (symbols or {}).get((label, pg.kind), []))
+                       (symbols or {}).get((label, pg.kind), []), _sense(model))
             key = pg.kind if pg.kind != "force" else f"force_{pg.group}"
             scales[f"{key}_{label}"] = mu
         top -= h + gap
@@ -275,10 +276,13 @@ def _value(x: float, ref: float) -> str:
     return fmt.minus(fmt.f(x, decimals, group=True))
 
 
-def _items(pg: Polygon, symbols: list | None = None) -> list[str]:
+def _items(pg: Polygon, symbols: list | None = None, sense: float = 1.0) -> list[str]:
     """The polygon's vectors as "symbol = value unit": a force by its name (F_R12), a
     velocity or acceleration by the quantity its segment stands for (v_A4A3 = … m/s; the
-    segment's name, aa4, only where the graphical method names no quantity for it)."""
+    segment's name, aa4, only where the graphical method names no quantity for it). The
+    polygon's M_b (counter-clockwise positive) is written in the crank's sense of rotation,
+    ``sense`` the sign of ω (:func:`crank_torque`); an inertia couple counter-clockwise
+    positive."""
     unit = UNITS[pg.kind][2]
     symbols = symbols or []
 
@@ -288,11 +292,13 @@ def _items(pg: Polygon, symbols: list | None = None) -> list[str]:
         symbol = symbol_of(v, symbols, pg.vectors)
         return vector_text(symbol) if symbol else v.name
 
+    moments = {key: sense * value if key == "Mb" else value for key, value in pg.moments.items()}
+
     def signed(v) -> float:
-        # P_b = M_b/l signed as M_b (counter-clockwise positive), as the report writes it
-        # (P_b = M_b/l = −227/0.0925 = −2457 N); every other vector by its length
-        if pg.kind == "force" and v.name == "Pb" and "Mb" in pg.moments:
-            return float(np.copysign(abs(v.value), pg.moments["Mb"]))
+        # P_b = M_b/l signed as M_b, positive in the crank's sense of rotation as the
+        # report's tables and M_b curve; every other vector by its length
+        if pg.kind == "force" and v.name == "Pb" and "Mb" in moments:
+            return float(np.copysign(abs(v.value), moments["Mb"]))
         return abs(v.value)
 
     ref = max([abs(v.value) for v in pg.vectors], default=0.0)
@@ -300,20 +306,22 @@ def _items(pg: Polygon, symbols: list | None = None) -> list[str]:
     # v_S6F, a_S6F^n of the ram) is no result: not listed
     out = [f"{name(v)} = {_value(signed(v), ref)} {unit}" for v in pg.vectors
            if not (v.value == 0 and v.role in ("relative", "normal", "tangential"))]
-    ref = max([abs(m) for m in pg.moments.values()], default=0.0)
-    out += [f"{force_symbol(key)} = {_value(value, ref)} N·m" for key, value in pg.moments.items()]
+    ref = max([abs(m) for m in moments.values()], default=0.0)
+    out += [f"{force_symbol(key)} = {_value(value, ref)} N·m" for key, value in moments.items()]
     return out
 
 
-def _cell(s: Sheet, pg: Polygon, cell, title: str, lab: dict, symbols: list | None = None) -> float:
-    """One polygon with its heading, scale and the list of its vectors; returns μ."""
+def _cell(s: Sheet, pg: Polygon, cell, title: str, lab: dict, symbols: list | None = None,
+          sense: float = 1.0) -> float:
+    """One polygon with its heading, scale and the list of its vectors (M_b and P_b in the
+    crank's sense of rotation: ``sense`` is the sign of ω); returns μ."""
     cx0, cy0, cx1, cy1 = cell
     w = cx1 - cx0
     s.polyline([cx0 + 1j * cy0, cx1 + 1j * cy0, cx1 + 1j * cy1, cx0 + 1j * cy1], "CONSTRUCTION",
                closed=True, weight=0.13)
     head_h = fit_height(title, w - 4.0, 3.5)
     s.text((cx0 + cx1) / 2 + 1j * (cy1 - 1.5), title, head_h, "TEXT", "center", "top")
-    items = _items(pg, symbols)
+    items = _items(pg, symbols, sense)
     ncol = 3 if w > 110 else 2
     nrow = int(np.ceil(len(items) / ncol))
     line = 3.4
@@ -757,14 +765,20 @@ def _cell_number(x: float, column, decimals: int | None = None) -> str:
     return fmt.minus(fmt.f(x, decimals, group=True))
 
 
-def ccw_torque(model, forces) -> np.ndarray:
-    """The balancing torque counter-clockwise positive, as the force polygons and the
-    report's graphical method sign M_b (the forces stage gives it positive in the crank's
-    sense of rotation: −M_b for a crank turning clockwise). The table, the crank's force
-    polygon cell and the M_b curve with its mean M_d write this one sign convention, stated in
-    the sheet's notes."""
-    sense = 1.0 if float(model.crank.omega) >= 0 else -1.0
-    return sense * np.asarray(forces.balancing_torque)
+def _sense(model) -> float:
+    """+1 for a crank turning counter-clockwise, −1 for one turning clockwise."""
+    return 1.0 if float(model.crank.omega) >= 0 else -1.0
+
+
+def crank_torque(forces) -> np.ndarray:
+    """The balancing torque positive in the crank's sense of rotation, as the forces stage
+    gives it and as the report's tables and M_b curve write it (review36 Top 13: the sheet
+    wrote it counter-clockwise positive, the opposite sign for a clockwise crank). The
+    table, the crank's force polygon cell (M_b and P_b = M_b/l, :func:`_items`) and the M_b
+    curve with its mean M_d write this one convention, stated in the sheet's notes; the force
+    polygons store M_b counter-clockwise positive, as the graphical method's moment
+    equations sign it."""
+    return np.asarray(forces.balancing_torque)
 
 
 def _table(s: Sheet, model, k, forces, lab: dict, box) -> None:
@@ -775,7 +789,7 @@ def _table(s: Sheet, model, k, forces, lab: dict, box) -> None:
     head = [lab["pos"], "φ (°)", f"s ({us})", f"v ({uv})", f"a ({ua})"] + \
         [sub("ω", str(link)) + " (rad/s)" for link in links] + ([sub("M", "b") + " (N·m)"] if forces is not None else [])
     columns = [k.v, k.a] + [k.link_omega[link] for link in links] + \
-        ([ccw_torque(model, forces)] if forces is not None else [])
+        ([crank_torque(forces)] if forces is not None else [])
     rows = []
     for j, label in enumerate(k.positions.labels):
         i = n + j
@@ -880,12 +894,11 @@ def _curves(s: Sheet, model, k, forces, fl, lab: dict, box) -> None:
     if forces is None:
         return
     y -= 9.0
-    # M_b and its mean M_d counter-clockwise positive, as the table and the force polygons
-    # (one sign convention on the sheet; the energy chart's works are the crank's)
-    sense = 1.0 if float(model.crank.omega) >= 0 else -1.0
-    mb = ccw_torque(model, forces)
+    # M_b and its mean M_d in the crank's sense of rotation, as the table, the crank's force
+    # polygon cell and the report (one sign convention on the sheet; the energy chart's works too)
+    mb = crank_torque(forces)
     md_crank = fl.mean_torque if fl is not None else forces.mean_torque
-    md = sense * md_crank
+    md = md_crank
     text = lab["md"] if fl is not None else lab["mean"]
     chart(s, (left, y - h, bx1, y), ph, [Series(closed(mb))], xlabel=lab["phase"],
           ylabel=lab["mb"], title=lab["mbt"], xticks=ticks, shade=[(0, span)],

@@ -18,6 +18,7 @@ optimum, at its first extreme position, and its offset slider-crank), :func:`cam
 """
 from __future__ import annotations
 
+import unicodedata
 from dataclasses import replace
 
 import numpy as np
@@ -28,7 +29,7 @@ from . import fmt
 from .labels import LabelTable, pgettext, sheet_names, sheet_point, translated
 from .sheet import (Arc, Circle, Fill, LabelPlacer, Line, Polyline, Sheet, Text, TitleInfo, fit_height, frame, ground,
                     hatched_line, heading, pin, preferred_scale, scale_text, slider_block, table,
-                    sub, text_box, title_block_box, turn_arrow, with_subscripts)
+                    sub, text_box, text_width, title_block_box, turn_arrow, with_subscripts)
 
 MM = 1e3
 SIZE = "A3"
@@ -163,20 +164,55 @@ def _title(s: Sheet, text: str, area) -> None:
     heading(s, complex((ax0 + ax1) / 2, ay1 + 4.0), text, fit_height(text, ax1 - ax0, 5.0))
 
 
+NOTE_SMALLEST = 2.5      # the notes' smallest text height [mm] (fit_height's floor)
+
+
+def wrap_note(text: str, width: float, smallest: float = NOTE_SMALLEST) -> list[str]:
+    """``text`` as lines each ``width`` mm wide at the most at text height ``smallest``:
+    the text itself if it fits, else as much as fits on the first line, broken at a space
+    (or, in Chinese, after a full-width comma or stop), at the gap between two items of a
+    legend (two spaces) when one fits, and the rest wrapped again. A note too long for its
+    room at the smallest height ran on into the title block (lockbeam en: "…the chain's
+    centre distance" over "Student No.")."""
+    if text_width(text, smallest) <= width:
+        return [text]
+    breaks = [j for j, ch in enumerate(text) if ch == " " and 0 < j < len(text) - 1]
+    # after a full-width stop or comma (Chinese: no spaces)
+    breaks += [j + 1 for j, ch in enumerate(text) if j + 1 < len(text)
+               and unicodedata.category(ch) == "Po" and unicodedata.east_asian_width(ch) in "WF"]
+    if not breaks:
+        return [text]
+    fits = [b for b in breaks if text_width(text[:b].rstrip(), smallest) <= width]
+    items = [b for b in fits if text[b - 1:b + 1] == "  "]
+    j = max(items or fits) if fits else min(breaks)
+    head, tail = text[:j].rstrip(), text[j:].lstrip()
+    return [head] + wrap_note(tail, width, smallest)
+
+
 def _notes(s: Sheet, lines: list[str], where: str = "above") -> None:
     """Notes, top line first: left of the title block, or above it when the drawing
-    takes the height left of it (``where`` = "left", see :func:`regions`)."""
+    takes the height left of it (``where`` = "left", see :func:`regions`); a line too long
+    for the room at the smallest text height is wrapped (:func:`wrap_note`), its lines at
+    that height."""
     x0, y0, _, _ = s.inner
     tb = title_block_box(s)
+
+    def wrapped(width):
+        return [(part, fit_height(text, width, 3.5)) for text in lines
+                for part in wrap_note(text, width)]
+
     if where == "left":
         width = tb[2] - tb[0] - 4.0
-        for j, text in enumerate(lines):
-            s.text(complex(tb[0] + 2.0, tb[3] + 4.0 + 6.0 * (len(lines) - 1 - j)), text,
-                   fit_height(text, width, 3.5), "TEXT")
+        rows = wrapped(width)
+        for j, (text, height) in enumerate(rows):
+            s.text(complex(tb[0] + 2.0, tb[3] + 4.0 + 6.0 * (len(rows) - 1 - j)), text, height, "TEXT")
         return
     width = tb[0] - x0 - 14.0
-    for j, text in enumerate(lines):
-        s.text(complex(x0 + 6.0, tb[3] - 6.0 - 6.0 * j), text, fit_height(text, width, 3.5), "TEXT")
+    rows = wrapped(width)
+    # 6 mm apart, closer when more lines than that leaves room for beside the title block
+    step = min(6.0, (tb[3] - tb[1] - 10.0) / max(len(rows) - 1, 1))
+    for j, (text, height) in enumerate(rows):
+        s.text(complex(x0 + 6.0, tb[3] - 6.0 - step * j), text, height, "TEXT")
 
 
 def _scale_note(lab: dict, n: float) -> str:
