@@ -56,6 +56,24 @@ def _num_giving(x: float, fn, printed: str, write) -> str:
     return factor_for(x, lambda v: gives(fn(v), printed), write=write)
 
 
+def _fp_factors(z: int, F0: float, alpha1_deg: float, printed: str, write) -> tuple[str, str]:
+    """F₀ and α₁ (degrees) of "F_p = 2 z F₀ sin(α₁/2)" as ``write`` prints them, with the
+    fewest more digits (F₀'s first) that make the printed factors give the printed F_p
+    (2 × 3 × 151 × sin 81.05° = 895.0 where F_p = 894.8: F₀ = 150.97)."""
+    from ..numbers import gives
+
+    def fp(f0: str, a: str) -> float:
+        return 2 * z * float(f0) * math.sin(math.radians(float(a)) / 2)
+
+    texts = (write(F0), write(alpha1_deg))
+    for total in range(5):
+        for ef in range(total, -1, -1):
+            texts = (write(F0, 4 + ef), write(alpha1_deg, 4 + total - ef))
+            if gives(fp(*texts), printed):
+                return texts
+    return texts
+
+
 def _pw_for(d) -> str:
     """"{P_w}{η}" (P_w in kW) with the digits that give the printed P_d = P_w/η (0.04400/0.6988
     gives 0.06297, printed 0.06296: η = 0.69883; a factor carries the digits the result was
@@ -526,6 +544,7 @@ def _belt_design(r, g, title: str, _) -> dict:
     ld0 = next(t for t in (num(b.L_d0 * MM, k) for k in (4, 5, 6, 7)) if abs(
         float(num(a0)) + (float(num(b.L_d * MM)) - float(t)) / 2 - float(a_txt)) <= 0.5 * step * (1 + 1e-9)
         or t == num(b.L_d0 * MM, 7))
+    F0_txt, alpha_txt = _fp_factors(b.z, b.F0, deg(b.alpha1), num(b.Fp), num)
     formulas = [
         rf"P_{{ca}} = K_A P = {num(b.KA)} \times {_num_giving(P, lambda x: float(num(b.KA)) * x, num(Pca), num)}"
         rf" = {num(Pca)}\ \text{{kW}}",
@@ -544,8 +563,8 @@ def _belt_design(r, g, title: str, _) -> dict:
         rf"F_0 = 500 \frac{{(2.5 - K_\alpha) P_{{ca}}}}{{K_\alpha z v}} + q v^2 = 500 \times \frac{{(2.5 - "
         rf"{num(b.K_alpha)}) \times {num(Pca)}}}{{{num(b.K_alpha)} \times {b.z} \times {num(b.v)}}} + {num(b.q_mass)}"
         rf" \times {num(b.v)}^2 = {num(b.F0)}\ \text{{N}}",
-        rf"F_p = 2 z F_0 \sin\frac{{\alpha_1}}{{2}} = 2 \times {b.z} \times {num(b.F0)} \times \sin"
-        rf"\frac{{{num(deg(b.alpha1))}^\circ}}{{2}} = {num(b.Fp)}\ \text{{N}}",
+        rf"F_p = 2 z F_0 \sin\frac{{\alpha_1}}{{2}} = 2 \times {b.z} \times {F0_txt} \times \sin"
+        rf"\frac{{{alpha_txt}^\circ}}{{2}} = {num(b.Fp)}\ \text{{N}}",
     ]
     return {"title": title, "text": text, "rows": rows, "formulas": formulas,
             "checks": _rows(check_rows(g.checks, _.lang), _), "refs": ("pu9", "gb13575")}
