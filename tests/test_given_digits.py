@@ -1,0 +1,43 @@
+"""A given quantity prints one way throughout a report (review37 Top 8).
+
+The weights G_i are given (m g of the brief): the same value at every position of the
+graphical kinetostatics. A teacher who reads "G₄ = 117.7 N" at position 5 and "G₄ = 117.72
+N" at position 11 sees a constant change between two pages. Every text a report gives a
+weight in its known-loads lines ("G₄（构件 4）= 117.72 N", "G_4 (link 4) = 117.72 N") and in
+its force-polygon tables (the value column of the row "$G_4$ | √") is one text.
+"""
+from __future__ import annotations
+
+import re
+
+import pytest
+
+from tests.test_report_prose import EXAMPLES, _markdown
+
+_LINE = re.compile(r"\$G_\{(\d+)\}\$(?:（构件 \w+）| \(link \w+\)) ?= ([\d.,\u202f ]+?) N")
+_ROW = re.compile(r"^\| (?:[^|\n]*\| )?\$G_\{(\d+)\}\$ \| √ \| [^|\n]* \| ([^|\n]+?) \|", re.M)
+
+
+def weight_texts(md: str) -> dict[str, set[str]]:
+    """Weight number → every text the report gives it (known-loads lines, polygon rows)."""
+    out: dict[str, set[str]] = {}
+    for m in list(_LINE.finditer(md)) + list(_ROW.finditer(md)):
+        out.setdefault(m[1], set()).add(m[2].replace("\u202f", "").replace(",", "").replace(" ", ""))
+    return out
+
+
+def test_the_scan_sees_two_texts_of_one_weight():
+    md = ("作用在杆组上的已知力：$G_{4}$（构件 4）= 117.7 N，$F_{I4}$（构件 4）= 3.00 N。\n"
+          "| 3–4 | $G_{4}$ | √ | 5.886 | 117.72 |\n"
+          "Known loads on the group: $G_{2}$ (link 2) = 300 N\n| $G_{2}$ | √ | 15.0 | 300 |\n")
+    assert weight_texts(md) == {"4": {"117.7", "117.72"}, "2": {"300"}}
+
+
+@pytest.mark.parametrize("lang", ["zh", "en"])
+@pytest.mark.parametrize("name", EXAMPLES)
+def test_every_weight_prints_one_way_in_a_report(example_results, name, lang):
+    md, brief = _markdown(example_results, name, lang)
+    texts = weight_texts(md)
+    assert all(len(v) == 1 for v in texts.values()), {k: v for k, v in texts.items() if len(v) > 1}
+    if name in ("slotter", "die_cutter", "textbook_guide_bar", "shaper"):
+        assert texts, "no weight found: the scan is broken"
