@@ -41,3 +41,19 @@ def test_every_weight_prints_one_way_in_a_report(example_results, name, lang):
     assert all(len(v) == 1 for v in texts.values()), {k: v for k, v in texts.items() if len(v) > 1}
     if name in ("slotter", "die_cutter", "textbook_guide_bar", "shaper"):
         assert texts, "no weight found: the scan is broken"
+
+
+_B1B2 = re.compile(r"\\sin\\alpha' = ([\d.]+)\\ \\text\{mm\}, \\quad \\frac\{\\overline\{B_1B_2\}\}\{p_b\} = "
+                   r"\\frac\{([\d.]+)\}\{([\d.]+)\} = ([\d.]+)")
+
+
+@pytest.mark.parametrize("name", ["press", "shaper"])
+def test_the_length_of_action_prints_one_way_in_its_line(example_results, name):
+    """"B₁B₂ = … = 24.16 mm, B₁B₂/p_b = 24.155/14.761 = 1.636" (press eq. (76)) printed one
+    length with two digit sets: the line prints the length the ratio is computed from."""
+    md, _ = _markdown(example_results, name, "zh")
+    found = _B1B2.findall(md)
+    assert found, "no B1B2 line: the scan is broken"
+    for length, top, bottom, ratio in found:
+        assert length == top, (length, top)
+        assert abs(float(top) / float(bottom) - float(ratio)) <= 0.5 * 10.0 ** -len(ratio.partition(".")[2])
