@@ -57,3 +57,21 @@ def test_the_length_of_action_prints_one_way_in_its_line(example_results, name):
     for length, top, bottom, ratio in found:
         assert length == top, (length, top)
         assert abs(float(top) / float(bottom) - float(ratio)) <= 0.5 * 10.0 ** -len(ratio.partition(".")[2])
+
+
+def test_a_weight_prints_one_way_on_every_cell_of_the_sheet():
+    """The shaper's A1 force cells wrote "G2 = 500 N, G4 = 157 N" at position 4 (largest force
+    2530 N: no decimals) and "500.0 N, 157.0 N" at position 10 (largest force below 1000 N).
+    A weight's text comes from its own value, not from the cell's largest force."""
+    from mechdesign.core.polygons import Polygon, Vector
+    from mechdesign.render.analysis_sheet import _items
+
+    def cell(largest: float, g4: float) -> list[str]:
+        pg = Polygon("force", "4", {"a": 0j, "b": 500j, "c": 500j - g4, "d": largest + 0j},
+                     (Vector("G2", "a", "b", 500j, "known"), Vector("G4", "b", "c", -g4 + 0j, "known"),
+                      Vector("R32", "c", "d", largest + 0j, "absolute")))
+        items = [re.sub("[\ue000-\uf8ff]", "", t) for t in _items(pg, [])]   # subscript marks
+        return [t for t in items if t.startswith("G")]
+
+    assert cell(2530.0, 157.0) == cell(800.0, 157.0) == ["G2 = 500 N", "G4 = 157 N"]
+    assert cell(2530.0, 117.72) == cell(80.0, 117.72) == ["G2 = 500 N", "G4 = 117.72 N"]

@@ -14,6 +14,8 @@ flywheel, polygons), so it does not care which machine it draws; the model's lin
 """
 from __future__ import annotations
 
+import re
+
 import numpy as np
 
 from ..core.polygons import Polygon
@@ -298,7 +300,16 @@ def _items(pg: Polygon, symbols: list | None = None) -> list[str]:
     ref = max([abs(v.value) for v in pg.vectors], default=0.0)
     # a relative vector that is zero by construction (two points of a link in translation:
     # v_S6F, a_S6F^n of the ram) is no result: not listed
-    out = [f"{name(v)} = {_value(signed(v), ref)} {unit}" for v in pg.vectors
+    def value(v) -> str:
+        # a weight G_i is given: one text on every cell of the sheet, from its own value (to
+        # 0.01 N, trailing zeros dropped: 500, 157, 117.72), not from the polygon's largest
+        # force (the shaper's "G2 = 500 N" at position 4 and "500.0 N" at position 10)
+        if pg.kind == "force" and re.fullmatch(r"G\d+", str(v.name)) and v.value:
+            text = fmt.f(abs(v.value), 2, group=True)
+            return fmt.minus(text.rstrip("0").rstrip(".") if "." in text else text)
+        return _value(signed(v), ref)
+
+    out = [f"{name(v)} = {value(v)} {unit}" for v in pg.vectors
            if not (v.value == 0 and v.role in ("relative", "normal", "tangential"))]
     ref = max([abs(m) for m in pg.moments.values()], default=0.0)
     out += [f"{force_symbol(key)} = {_value(value, ref)} N·m" for key, value in pg.moments.items()]
