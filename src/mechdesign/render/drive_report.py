@@ -489,10 +489,40 @@ def stage_designs(d, lang: str, gear_pair_last: bool = False) -> list[dict]:
             rows.append([_("key") + f" ({_stage_name(k.element, _)})", lab, unit_mm])
         bearing_std = () if sh.bearing is None else (
             ("gb297",) if sh.bearing.designation.startswith("3") else ("gb276",))
+        formulas = []
+        for c in sh.checks:
+            if c.key == "shaft_bending":
+                formulas.append({"text": _critical_section(sh, c, _)})
+            formulas += check_formulas(c)
         out.append({"title": title, "text": text, "rows": rows,
-                    "formulas": [eq for c in sh.checks for eq in check_formulas(c)], "checks": _rows(check_rows(sh.checks, lang), _),
+                    "formulas": formulas, "checks": _rows(check_rows(sh.checks, lang), _),
                     "refs": ("pu8", "gb1096", *bearing_std)})
     return out
+
+
+def _critical_section(sh, c, _) -> str:
+    """The sentence before a shaft's σ_ca line: the section it checks (the shaft design's own
+    choice, the largest σ_ca over the load and bearing sections, each with its diameter) and,
+    where that is not the section of the largest equivalent moment the text names, why (a
+    smaller diameter: the shaper's shaft Ⅰ, 20 mm at its overhung end, not 30 mm at x = 106 mm)."""
+    from .fmt import minus
+
+    x, d = c.inputs["x"], c.inputs["d"]
+    bearing = any(abs(x - xb) < 1e-12 for xb in (0.0, sh.span))
+    where = _("journal") if bearing or (sh.d_end is None and not 0 < x < sh.span) else (
+        _("hub seat") if 0 < x < sh.span else _("overhung end"))
+    text = _("Critical section (where $\\sigma_{{ca}}$, evaluated at every load and bearing section "
+             "with the diameter there, is largest): $x$ = {x} mm ({where}), $d$ = {d} mm.",
+             x=minus(f(x * MM, 0)), where=where, d=f(d * MM, 0))
+    crit = sh.result.critical
+    dm = sh.diameter_at(crit.x)
+    if abs(x - crit.x) > 1e-9 and d < dm - 1e-12:
+        moment = c.inputs["M"] if abs(c.inputs["M"]) > 1e-9 * max(abs(crit.M), 1.0) else 0.0
+        text += ("" if _.zh else " ") + _("Its bending moment ({M} N·m) is smaller than at $x$ = {xm} mm ({Mm} N·m), "
+                        "but its diameter is smaller ({d} mm < {dm} mm), so $\\sigma_{{ca}}$ is larger.",
+                        M=sig(moment) if moment else "0", xm=minus(f(crit.x * MM, 0)), Mm=sig(crit.M),
+                        d=f(d * MM, 0), dm=f(dm * MM, 0))
+    return text
 
 
 def _belt_design(r, g, title: str, _) -> dict:
