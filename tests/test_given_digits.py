@@ -75,3 +75,27 @@ def test_a_weight_prints_one_way_on_every_cell_of_the_sheet():
 
     assert cell(2530.0, 157.0) == cell(800.0, 157.0) == ["G2 = 500 N", "G4 = 157 N"]
     assert cell(2530.0, 117.72) == cell(80.0, 117.72) == ["G2 = 500 N", "G4 = 117.72 N"]
+
+
+@pytest.mark.parametrize("name", ["shaper", "slotter", "textbook_guide_bar"])
+def test_the_sheet_prints_each_weight_as_the_report(example_results, name):
+    """The A1 force cells give each weight the report's text (slotter G4 117.72 in both, the
+    shaper's G4 157 in both), at every position."""
+    from mechdesign.render.analysis_sheet import _items, _weight_decimals
+    from mechdesign.render.graphical_report import documents
+
+    results = example_results(name)
+    md, _ = _markdown(example_results, name, "zh")
+    report = weight_texts(md)
+    (prefix, doc), = documents(results)
+    weights = _weight_decimals(doc, "zh")
+    polygons = results[f"{prefix}_polygons"]
+    seen = 0
+    for label in polygons.positions:
+        for pg in polygons.at(label):
+            for t in _items(pg, [], weights) if pg.kind == "force" else ():
+                m = re.fullmatch(r"G(\d+) = ([\d.]+) N", re.sub("[\ue000-\uf8ff]", "", t))
+                if m:
+                    assert report[m[1]] == {m[2]}, (label, t, report[m[1]])
+                    seen += 1
+    assert seen
