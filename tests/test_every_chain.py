@@ -45,18 +45,41 @@ class NotANumber(ValueError):
     pass
 
 
+def _trig_of_groups(s: str) -> str:
+    """``\\sin((162.1°)/(2))`` (a ``\\frac`` of degrees, made parentheses) → ``sind((162.1)/(2))``:
+    the sine, cosine or tangent of a parenthesised expression whose angles are in degrees."""
+    out, i = [], 0
+    for m in re.finditer(r"\\(sin|cos|tan)\s*\(", s):
+        if m.start() < i:
+            continue
+        depth, j = 0, m.end() - 1
+        while j < len(s):
+            depth += {"(": 1, ")": -1}.get(s[j], 0)
+            if depth == 0:
+                break
+            j += 1
+        group = s[m.end() - 1:j + 1]
+        if depth != 0 or "°" not in group:
+            continue
+        out.append(s[i:m.start()] + f"{m[1]}d" + group.replace("°", ""))
+        i = j + 1
+    return "".join(out) + s[i:]
+
+
 def evaluate(tex: str) -> float:
     """The value of a TeX expression of printed numbers, or NotANumber for anything else."""
     s = tex.strip()
     s = s.replace("−", "-").replace("\\left", "").replace("\\right", "")
     s = re.sub(r"\\[,;!: ]|~", " ", s)
     s = s.replace("\u202f", "")
+    s = re.sub(r"\^\{\\circ\}|\^\\circ", "°", s)     # 162.1^\circ, 162.1^{\circ} → 162.1°
     prev = None
     while prev != s:        # \frac{a}{b} → ((a)/(b)), innermost first
         prev = s
         s = re.sub(r"\\[dt]?frac\s*\{([^{}]*)\}\s*\{([^{}]*)\}", r"((\1)/(\2))", s)
         s = re.sub(r"\\sqrt\s*\{([^{}]*)\}", r"sqrt(\1)", s)
         s = re.sub(r"\^\{([^{}]*)\}", r"**(\1)", s)
+    s = _trig_of_groups(s)
     s = re.sub(r"\\(sin|cos|tan)\s*\(?\s*(" + _NUM + r")\s*°\s*\)?", r"\1d(\2)", s)
     s = s.replace("\\times", "*").replace("\\cdot", "*").replace("\\pi", "pi")
     s = re.sub(r"\^\{([^{}]*)\}", r"**(\1)", s)
@@ -142,7 +165,10 @@ def test_the_rule_on_the_chains_named_in_issue_19():
            r"$$ L = \frac{10^6}{60 \times 79.43} \times (\frac{28200}{635.7})^{\frac{10}{3}} = 6.485\times10^{7}\ \text{h} $$",
            r"$$ P_d = \frac{P_w}{\eta} = \frac{0.6144}{0.8939} = 0.6874\ \text{kW} $$",
            r"$$ x = -\sqrt{100.00^2 - (86.60 - 20.00)^2} = -74.59\ \text{mm} $$",
-           r"$$ \Delta = \frac{80.29 - 80.00}{80.00} = 0.37\% $$"]
+           r"$$ \Delta = \frac{80.29 - 80.00}{80.00} = 0.37\% $$",
+           # the sine of a \frac of degrees (review37 Top 1: 2 × 3 × 151 × sin 81.05° = 895.0)
+           r"$$ F_p = 2 z F_0 \sin\frac{\alpha_1}{2} = 2 \times 3 \times 151 \times \sin\frac{162.1^\circ}{2} = 894.8\ \text{N} $$",
+           r"$$ F_p = 2 \times 1 \times 41.83 \times \sin\frac{138.5^{\circ}}{2} = 78.24\ \text{N} $$"]
     new = [r"$$ P = \bar M_b\,\omega = 636.62 \times 5.236 = 3333.3\ \text{W} $$",
            r"强度计算用 $T = 20.009 \times 640.06 = 12807$ N·m（峰值/平均）",
            r"$$ P = \bar M_b\,\omega = 21.01 \times 2.0944 = 44.00\ \text{W} $$",
@@ -151,6 +177,9 @@ def test_the_rule_on_the_chains_named_in_issue_19():
            r"$$ P = 636.6 \times 5.236 = 3333\ \text{W} $$",
            r"$$ b = \sqrt{\frac{4 \times 9.81 \times 8.914}{\pi \times 0.500^3 \times 1.50 \times 70000}} = 92.1\ \text{mm} $$",
            r"$$ \Delta = \frac{80.29 - 80.00}{80.00} = 0.36\% $$",
+           r"$$ F_p = 2 \times 3 \times 151 \times \sin\frac{162.1^\circ}{2} = 895.0\ \text{N} $$",
+           r"$$ F_p = 2 \times 1 \times 41.83 \times \sin\left(\frac{138.5^\circ}{2}\right) = 78.23\ \text{N} $$",
+           r"$$ x = 10.00 \times \cos(60^\circ - 30^\circ) = 8.660\ \text{mm} $$",
            # what is not a chain: a power written out, a product equal to a product, "≈"
            r"$$ 3 \times 3 \times 3 = 3^{3} $$", r"$$ \frac{200}{100} \times \frac{90}{18} = 2 \times 5 = 10 $$",
            r"$$ z_{min} = \frac{2}{\sin^2 20°} = 17.10 \approx 17 $$"]

@@ -56,6 +56,24 @@ def _num_giving(x: float, fn, printed: str, write) -> str:
     return factor_for(x, lambda v: gives(fn(v), printed), write=write)
 
 
+def _fp_factors(z: int, F0: float, alpha1_deg: float, printed: str, write) -> tuple[str, str]:
+    """F₀ and α₁ (degrees) of "F_p = 2 z F₀ sin(α₁/2)" as ``write`` prints them, with the
+    fewest more digits (F₀'s first) that make the printed factors give the printed F_p
+    (2 × 3 × 151 × sin 81.05° = 895.0 where F_p = 894.8: F₀ = 150.97)."""
+    from ..numbers import gives
+
+    def fp(f0: str, a: str) -> float:
+        return 2 * z * float(f0) * math.sin(math.radians(float(a)) / 2)
+
+    texts = (write(F0), write(alpha1_deg))
+    for total in range(5):
+        for ef in range(total, -1, -1):
+            texts = (write(F0, 4 + ef), write(alpha1_deg, 4 + total - ef))
+            if gives(fp(*texts), printed):
+                return texts
+    return texts
+
+
 def _pw_for(d) -> str:
     """"{P_w}{η}" (P_w in kW) with the digits that give the printed P_d = P_w/η (0.04400/0.6988
     gives 0.06297, printed 0.06296: η = 0.69883; a factor carries the digits the result was
@@ -471,10 +489,40 @@ def stage_designs(d, lang: str, gear_pair_last: bool = False) -> list[dict]:
             rows.append([_("key") + f" ({_stage_name(k.element, _)})", lab, unit_mm])
         bearing_std = () if sh.bearing is None else (
             ("gb297",) if sh.bearing.designation.startswith("3") else ("gb276",))
+        formulas = []
+        for c in sh.checks:
+            if c.key == "shaft_bending":
+                formulas.append({"text": _critical_section(sh, c, _)})
+            formulas += check_formulas(c)
         out.append({"title": title, "text": text, "rows": rows,
-                    "formulas": [eq for c in sh.checks for eq in check_formulas(c)], "checks": _rows(check_rows(sh.checks, lang), _),
+                    "formulas": formulas, "checks": _rows(check_rows(sh.checks, lang), _),
                     "refs": ("pu8", "gb1096", *bearing_std)})
     return out
+
+
+def _critical_section(sh, c, _) -> str:
+    """The sentence before a shaft's σ_ca line: the section it checks (the shaft design's own
+    choice, the largest σ_ca over the load and bearing sections, each with its diameter) and,
+    where that is not the section of the largest equivalent moment the text names, why (a
+    smaller diameter: the shaper's shaft Ⅰ, 20 mm at its overhung end, not 30 mm at x = 106 mm)."""
+    from .fmt import minus
+
+    x, d = c.inputs["x"], c.inputs["d"]
+    bearing = any(abs(x - xb) < 1e-12 for xb in (0.0, sh.span))
+    where = _("journal") if bearing or (sh.d_end is None and not 0 < x < sh.span) else (
+        _("hub seat") if 0 < x < sh.span else _("overhung end"))
+    text = _("Critical section (where $\\sigma_{{ca}}$, evaluated at every load and bearing section "
+             "with the diameter there, is largest): $x$ = {x} mm ({where}), $d$ = {d} mm.",
+             x=minus(f(x * MM, 0)), where=where, d=f(d * MM, 0))
+    crit = sh.result.critical
+    dm = sh.diameter_at(crit.x)
+    if abs(x - crit.x) > 1e-9 and d < dm - 1e-12:
+        moment = c.inputs["M"] if abs(c.inputs["M"]) > 1e-9 * max(abs(crit.M), 1.0) else 0.0
+        text += ("" if _.zh else " ") + _("Its bending moment ({M} N·m) is smaller than at $x$ = {xm} mm ({Mm} N·m), "
+                        "but its diameter is smaller ({d} mm < {dm} mm), so $\\sigma_{{ca}}$ is larger.",
+                        M=sig(moment) if moment else "0", xm=minus(f(crit.x * MM, 0)), Mm=sig(crit.M),
+                        d=f(d * MM, 0), dm=f(dm * MM, 0))
+    return text
 
 
 def _belt_design(r, g, title: str, _) -> dict:
@@ -526,6 +574,7 @@ def _belt_design(r, g, title: str, _) -> dict:
     ld0 = next(t for t in (num(b.L_d0 * MM, k) for k in (4, 5, 6, 7)) if abs(
         float(num(a0)) + (float(num(b.L_d * MM)) - float(t)) / 2 - float(a_txt)) <= 0.5 * step * (1 + 1e-9)
         or t == num(b.L_d0 * MM, 7))
+    F0_txt, alpha_txt = _fp_factors(b.z, b.F0, deg(b.alpha1), num(b.Fp), num)
     formulas = [
         rf"P_{{ca}} = K_A P = {num(b.KA)} \times {_num_giving(P, lambda x: float(num(b.KA)) * x, num(Pca), num)}"
         rf" = {num(Pca)}\ \text{{kW}}",
@@ -544,8 +593,8 @@ def _belt_design(r, g, title: str, _) -> dict:
         rf"F_0 = 500 \frac{{(2.5 - K_\alpha) P_{{ca}}}}{{K_\alpha z v}} + q v^2 = 500 \times \frac{{(2.5 - "
         rf"{num(b.K_alpha)}) \times {num(Pca)}}}{{{num(b.K_alpha)} \times {b.z} \times {num(b.v)}}} + {num(b.q_mass)}"
         rf" \times {num(b.v)}^2 = {num(b.F0)}\ \text{{N}}",
-        rf"F_p = 2 z F_0 \sin\frac{{\alpha_1}}{{2}} = 2 \times {b.z} \times {num(b.F0)} \times \sin"
-        rf"\frac{{{num(deg(b.alpha1))}^\circ}}{{2}} = {num(b.Fp)}\ \text{{N}}",
+        rf"F_p = 2 z F_0 \sin\frac{{\alpha_1}}{{2}} = 2 \times {b.z} \times {F0_txt} \times \sin"
+        rf"\frac{{{alpha_txt}^\circ}}{{2}} = {num(b.Fp)}\ \text{{N}}",
     ]
     return {"title": title, "text": text, "rows": rows, "formulas": formulas,
             "checks": _rows(check_rows(g.checks, _.lang), _), "refs": ("pu9", "gb13575")}

@@ -14,14 +14,15 @@ MM = 1e3
 
 
 
-def _ratio_for(b1b2: float, pb: float) -> str:
-    """"{B1B2}{p_b}" [mm] with the digits that give the printed ε = B1B2/p_b (24.16/14.76 gives
-    1.6369, printed 1.636: the quotient's numbers carry the digits it was computed from)."""
+def _ratio_for(b1b2: float, pb: float) -> tuple[str, str]:
+    """B1B2 and p_b [mm] with the digits that give the printed ε = B1B2/p_b (24.16/14.76 gives
+    1.6369, printed 1.636: the quotient's numbers carry the digits it was computed from); the
+    line prints B1B2 with these digits on both sides (not 24.16 mm then 24.155/14.761)."""
     from ..numbers import factors_for, significant
 
     top, bottom = factors_for((b1b2 * MM, pb * MM), lambda a, b: a / b, sig(b1b2 / pb, group=False),
                               tuple(significant(f(x * MM, 2)) for x in (b1b2, pb)))
-    return f"{top}}}{{{bottom}"
+    return top, bottom
 
 
 def make_gear_figures(g, fig_dir: Path, lang: str) -> dict[str, str]:
@@ -77,14 +78,15 @@ def gear_context(g, lang: str, figures: dict[str, str]) -> dict:
     tw = np.tan(p.alpha_work)
     limit = 2 * p.ha_star / np.sin(p.alpha) ** 2       # the exact limit; z_min is it rounded
     b1b2 = g.drawing.action_length   # |B1B2| from the points on the line of action
+    top, bottom = _ratio_for(b1b2, p.pb)
     eq = {
         # the general form and the numbers on two lines: one line runs past the margin
         "eps": rf"\varepsilon_\alpha = \frac{{z_1(\tan\alpha_{{a1}}-\tan\alpha')+z_2(\tan\alpha_{{a2}}-\tan\alpha')}}{{2\pi}}",
         "eps_num": (rf"\varepsilon_\alpha = \frac{{{g1.z}\times({f(np.tan(g1.alpha_a), 4)}-{f(tw, 4)})+{g2.z}\times"
                     rf"({f(np.tan(g2.alpha_a), 4)}-{f(tw, 4)})}}{{2\pi}} = {f(p.contact_ratio, 3)}"),
         "b1b2": (rf"\overline{{B_1B_2}} = \sqrt{{r_{{a1}}^2-r_{{b1}}^2}}+\sqrt{{r_{{a2}}^2-r_{{b2}}^2}}-a'\sin\alpha'"
-                 rf" = {f(b1b2 * MM, 2)}\ \text{{mm}}, \quad \frac{{\overline{{B_1B_2}}}}{{p_b}} = "
-                 rf"\frac{{{_ratio_for(b1b2, p.pb)}}} = {sig(b1b2 / p.pb, group=False)}"),
+                 rf" = {top}\ \text{{mm}}, \quad \frac{{\overline{{B_1B_2}}}}{{p_b}} = "
+                 rf"\frac{{{top}}}{{{bottom}}} = {sig(b1b2 / p.pb, group=False)}"),
         "zmin": (rf"z_{{min}} = \frac{{2h_a^*}}{{\sin^2\alpha}} = \frac{{2\times{f(p.ha_star, 2)}}}"
                  rf"{{\sin^2 {f(p.alpha * DEG, 1)}°}} = {f(limit, 2)} \approx {f(p.z_min, 0)}, \quad x_{{min}} = "
                  rf"h_a^*\frac{{z_{{min}}-z}}{{z_{{min}}}}: \ x_{{min,1}} = {f(p.x_min1, 3)},\ "

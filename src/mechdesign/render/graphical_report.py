@@ -700,7 +700,31 @@ def _signed_pb(fg) -> float:
     return float(np.copysign(abs(fg.balancing_force), fg.balancing_torque or 0.0))
 
 
-def _forces(pos, lang: str) -> list[dict]:
+def _is_weight(name: str) -> bool:
+    """A weight G_i (a given load of one value at every position)."""
+    return bool(re.fullmatch(r"G\d+", str(name)))
+
+
+def _weight_decimals(doc, lang: str) -> dict[str, int]:
+    """The extra decimals of each weight G_i over the whole document: the most any position's
+    equations need (slotter G₄: 117.7 at position 5, 117.72 at position 11 → 117.72 at every
+    position). A given quantity prints one way throughout a report (review37 Top 8); a
+    chain that needs fewer digits still computes with more (the seed is only a floor)."""
+    most: dict[str, int] = {}
+    for pos in doc.positions:
+        for fc, fg in zip(_forces(pos, lang), pos.forces):
+            value = {ld.name: abs(ld.value) for lds in fg.loads.values() for ld in lds}
+            for name, _link, text in fc["known"]:
+                if _is_weight(name) and "times" not in text:
+                    extra = _digits(text.replace(GROUP, "")) - _digits(_num(value[name]))
+                    most[name] = max(most.get(name, 0), extra)
+    return most
+
+
+def _forces(pos, lang: str, weights: dict[str, int] | None = None) -> list[dict]:
+    """The force groups of one position; ``weights``: each weight's extra decimals for the
+    whole document (:func:`_weight_decimals`), printed alike at every position."""
+    weights = weights or {}
     out = []
     mu_l = pos.length_scale
     # a reaction read off an earlier group's polygon, as its table prints it: the later
@@ -712,7 +736,7 @@ def _forces(pos, lang: str) -> list[dict]:
         # a known force prints with one number of decimals in the group's whole section (the
         # known-loads line, its equations, its polygon row): the most any of its equations
         # needs, fed back until no equation needs more
-        seed = {k: _digits(v) - _digits(_num(float(v))) for k, v in pairs.items()}
+        seed = {**weights, **{k: _digits(v) - _digits(_num(float(v))) for k, v in pairs.items()}}
         least: dict[str, int] = {}
         for _pass in range(4):
             shown: dict[str, str] = {}
@@ -733,7 +757,8 @@ def _forces(pos, lang: str) -> list[dict]:
 
         def known(name, value, shown=shown, pairs=pairs):
             return grouped(shown[name]) if name in shown else (
-                grouped(pairs[name]) if name in pairs else _numg(value))
+                grouped(pairs[name]) if name in pairs else
+                grouped(_factor(value, weights[name])) if name in weights else _numg(value))
 
         def read(v):
             return _numg(v.read) if v.known or abs(v.read) >= 1e6 else grouped(_measured(v.read))
@@ -745,7 +770,10 @@ def _forces(pos, lang: str) -> list[dict]:
                         if not v.known and _pair(v.symbol) and abs(v.read) < 1e6)
         loads = [[f"${sym(ld.name)}$", link, known(ld.name, abs(ld.value))]
                  for link, lds in fg.loads.items() for ld in lds if abs(ld.value) > 0]
-        out.append({"name": "–".join(fg.links), "links": ", ".join(fg.links), "crank": fg.balancing_torque
+        known_texts = [(ld.name, link, known(ld.name, abs(ld.value)))
+                       for link, lds in fg.loads.items() for ld in lds if abs(ld.value) > 0]
+        out.append({"known": known_texts,
+                    "name": "–".join(fg.links), "links": ", ".join(fg.links), "crank": fg.balancing_torque
                     is not None, "mu": _scale(fg.scale), "moments": moments, "rows": rows,
                     "loads": loads, "sum": closing, "slider": slider, "slider_link": slider_link,
                     "n": n, "couple": couple,
@@ -897,9 +925,10 @@ def graphical_context(results: dict, figures: dict, lang: str) -> list[dict]:
         cranks = frozenset(k for v in links.values() if v["crank"] for k in v["links"])
         positions = []
         couple_said = False
+        weights = _weight_decimals(doc, lang)
         for pos in doc.positions:
             key = f"{prefix}_graph_{_safe(pos.label)}"
-            forces = _forces(pos, lang)
+            forces = _forces(pos, lang, weights)
             for fc in forces:
                 # the couple term "M_I/mu_l" of a force equation is explained once, where it
                 # first appears

@@ -129,6 +129,21 @@ class ShaftDesign:
         "field: the brief field, fix: a catalogue message {msgid, args} (see Finding.args), "
         "translated where shown}", default=())
 
+    def diameter_at(self, x: float) -> float:
+        """The diameter [m] of the section at axial position ``x`` [m] (:func:`section_diameter`)."""
+        return section_diameter(x, self.span, self.d_end, self.d_journal, self.d_seat)
+
+
+def section_diameter(x: float, span: float, d_end: float | None, dj: float, ds: float) -> float:
+    """The diameter [m] at axial position ``x`` of a shaft on bearings at 0 and ``span``: the
+    journal at a bearing, the overhung end outside the bearings (the journal where there is
+    none), the hub seat between them — the diameter the bending–torsion check takes there."""
+    if any(abs(x - xb) < 1e-12 for xb in (0.0, span)):
+        return dj
+    if x < 0 or x > span:
+        return d_end if d_end is not None else dj
+    return ds
+
 
 def _phi_d(s, is_open: bool) -> float:
     return s.face_width_factor if s.face_width_factor else (0.5 if is_open else 1.0)
@@ -475,14 +490,9 @@ def _evaluate(dp, j, sh, info, span, T, res, life_res, mat, dims, bearing_fixed,
               T_of, allow_of, key_length):
     """Every check of shaft j with the diameters ``dims`` = (d_end, journal, seat)."""
     d_end, dj, ds = dims
-    xs_bear = (0.0, span)
 
     def diameter_at(x):
-        if any(abs(x - xb) < 1e-12 for xb in xs_bear):
-            return dj
-        if x < 0 or x > span:
-            return d_end if d_end is not None else dj
-        return ds
+        return section_diameter(x, span, d_end, dj, ds)
 
     pre = [i["x"] for i in info if T_of(i) < T]     # hubs on the motor side of the flywheel
 
