@@ -93,7 +93,7 @@ def test_the_sheet_prints_each_weight_as_the_report(example_results, name):
     seen = 0
     for label in polygons.positions:
         for pg in polygons.at(label):
-            for t in _items(pg, [], weights) if pg.kind == "force" else ():
+            for t in _items(pg, [], weights=weights) if pg.kind == "force" else ():
                 m = re.fullmatch(r"G(\d+) = ([\d.]+) N", re.sub("[\ue000-\uf8ff]", "", t))
                 if m:
                     assert report[m[1]] == {m[2]}, (label, t, report[m[1]])
