@@ -371,7 +371,9 @@ def _is_sheet(page) -> bool:
 
 
 _TABLE_CAPTION = re.compile(r"^(?:表\s*(\d+)|Table\s+(\d+)\s*:)")
-_FIGURE_CAPTION = re.compile(r"^(?:图\s*(\d+)\s|Figure\s+(\d+)\s*:)")
+# (a zh caption's number is followed by an em space: a line of text that starts with "图 1 为…"
+# is no caption; taken for one, it made figure_order count figure 2 from its page)
+_FIGURE_CAPTION = re.compile(r"^(?:图\s*(\d+)\u2003|Figure\s+(\d+)\s*:)")
 _CONTINUED = re.compile(r"^(?:续表\s*(\d+)|Table\s+(\d+)\s+\(continued\))")
 
 
