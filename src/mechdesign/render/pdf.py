@@ -601,8 +601,8 @@ def _compile_report(typ_name: str, root: Path, timestamp: int, stem: str,
 def _held_next(typ_name: str, root: Path, inputs: dict[str, str]) -> dict | None:
     """What the last pass of the compilation with ``inputs`` read of its layout
     (templates/report.typ: `<figure-held-next>`): ``held``, the figures it would hold back
-    past a table (figure number -> ordinal of the table), and ``far``, the figures that
-    landed more than a page after their text; None where it cannot be read."""
+    past a table (figure number -> ordinal of the table), and ``far``, the held figures that
+    landed more than a page after their text or under a hole; None where it cannot be read."""
     import typst
 
     options = {"root": str(root), "field": "value", "one": True}
@@ -640,7 +640,8 @@ def _settle(typ_name: str, root: Path, timestamp: int, stem: str,
     (`typst query`) and the source is compiled again with them given, standing in every pass
     (so the layout settles as that of a report that holds nothing new), until a round's
     layout settles and holds no figure more. A held figure that landed more than a page after
-    its text is let go, with the figures held past the same table, for good (far-figures).
+    its text, or at a page's foot under a blank band, is let go, with the figures held past
+    the same table, for good (templates/report.typ: far-figures, hole-figures).
     The holds only grow (a figure is held past a later table only) but for those let go,
     which are never held again, so the rounds end; there are at most FIGURE_ROUNDS of them
     after the first, each a full compilation (about as long as the first). Where they do not
@@ -662,11 +663,10 @@ def _settle(typ_name: str, root: Path, timestamp: int, stem: str,
             break                                    # nothing read
         held = {k: t for k, t in found_next["held"].items() if k not in let_go}
         if given is not None and rounds[-1]["settled"]:
-            # a held figure that landed more than a page after its text (its table ended a
-            # page after it, and the figures held with it filled the foot of that page:
-            # linkage_sixbar zh figure 2; or a second table held it on into the next
-            # chapter: slotter figure 14) is let go with the figures that wait for the same
-            # table: a figure far from its text is the worse defect (figure_order)
+            # a held figure that landed more than a page after its text (a second table held
+            # it on into the next chapter: slotter figure 14) or at a page's foot under a
+            # blank band (slotter figure 1) is let go with the figures that wait for the same
+            # table: a figure far from its text, or a hole, is the worse defect
             far = {str(n) for n in found_next["far"]} & set(given)
             tables = {given[k] for k in far}
             let_go |= {k for k, t in given.items() if t in tables}
