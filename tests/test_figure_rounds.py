@@ -144,3 +144,35 @@ def test_given_holds_stand_and_the_next_are_reported(tmp_path):
         assert r["{}"][1]["held"] == {"1": 0}
         parted, nxt = r['{"1": 0}']
         assert parted == [] and nxt["held"] == {"1": 0} and nxt["far"] == []
+
+
+_SERVED_QUERY = r"""
+import sys
+from pathlib import Path
+from mechdesign.render import parallel, pdf
+
+tmp = Path(sys.argv[1])
+(tmp / "r.typ").write_text('#metadata((held: json(bytes(sys.inputs.at("figure-held"))), far: (2,)))<figure-held-next>\n'
+                           'Hello', encoding="utf-8")
+stop = pdf.start_service()
+try:
+    assert set(pdf._service_address) == {"file", "bytes"}
+    got = pdf._held_next(str(tmp / "r.typ"), tmp, {"figure-held": '{"3": 1}'})
+    assert got == {"held": {"3": 1}, "far": [2]}, got
+    assert not parallel.typst_used()
+finally:
+    stop()
+print("ok")
+"""
+
+
+def test_the_held_figures_are_read_by_the_compiling_process(tmp_path):
+    # the query goes to the reports' compiling process (the watch's), with the inputs given
+    import subprocess
+    import sys
+    from pathlib import Path
+
+    root = Path(__file__).resolve().parents[1]
+    result = subprocess.run([sys.executable, "-c", _SERVED_QUERY, str(tmp_path)], cwd=root,
+                            capture_output=True, text=True)
+    assert result.stdout.strip().endswith("ok"), result.stderr[-2000:]
