@@ -143,7 +143,9 @@ def test_given_holds_stand_and_the_next_are_reported(tmp_path):
     for r in interrupted:
         assert r["{}"][1]["held"] == {"1": 0}
         parted, nxt = r['{"1": 0}']
-        assert parted == [] and nxt["held"] == {"1": 0} and nxt["far"] == []
+        # (nxt["far"] may name it: the text under the table is plain filler, with nothing
+        # typst locates, so hole-figures reads a band above the figure at the page's foot)
+        assert parted == [] and nxt["held"] == {"1": 0}
 
 
 _SERVED_QUERY = r"""
