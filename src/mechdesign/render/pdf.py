@@ -450,6 +450,8 @@ def _serve(address: str, ready_fd: int) -> None:
                 if kind == "file":
                     out, found = typst.compile_with_warnings(*args, font_paths=fonts, **options)
                     conn.send(("ok", out, [_typst_message(w) for w in found]))
+                elif kind == "query":
+                    conn.send(("ok", typst.query(*args, font_paths=fonts, **options), []))
                 else:
                     conn.send(("ok", typst.compile(*args, font_paths=fonts, **options), []))
             except typst.TypstError as exc:
@@ -465,10 +467,11 @@ class _TypstFailed(Exception):
 
 
 def _service_compile(kind: str, args: tuple, options: dict):
-    """(output, warnings) from the compiling process of ``kind`` ("file" or "bytes"), or
-    None (no service, or it failed: compile here). Raises _TypstFailed with typst's
-    message for an error in the source."""
-    address = _service_address.get(kind)
+    """(output, warnings) from the compiling process of ``kind`` ("file" or "bytes"; "query":
+    a query of a report, answered by the reports' process, whose memo holds the layout it
+    has just compiled), or None (no service, or it failed: compile here). Raises
+    _TypstFailed with typst's message for an error in the source."""
+    address = _service_address.get("file" if kind == "query" else kind)
     if address is None:
         return None
     from multiprocessing.connection import Client
@@ -562,10 +565,137 @@ def _source_file(root: Path, stem: str) -> tuple[int, str]:
 
 FIGURE_RULES_ON = "#let figure-hold = true\n"
 FIGURE_RULES_OFF = "#let figure-hold = false\n"
+#: compilations with the held figures given (templates/report.typ: held-given) after the
+#: first, at most: the held figures only grow, and the reports need one (slotter, press …)
+FIGURE_ROUNDS = 3
+#: the warning of a report set by the fallback (its text says "converge": the e2e tests
+#: count it as a layout that did not settle)
+FELL_BACK = "the figure plan did not converge"
+
+
+def _compile_report(typ_name: str, root: Path, timestamp: int, stem: str,
+                    inputs: dict[str, str]) -> tuple[bytes, list[str]]:
+    """(PDF, typst's warnings) of the source file ``typ_name``, compiled once with
+    ``inputs`` (typst's sys.inputs) by the compiling process or here."""
+    import typst
+
+    from .parallel import note_typst_used
+
+    options = {"root": str(root), "timestamp": timestamp}
+    if inputs:
+        options["sys_inputs"] = inputs
+    try:
+        served = _service_compile("file", (typ_name,), options)
+    except _TypstFailed as exc:
+        raise PdfRenderError(f"typst failed to compile {stem}.md:\n{exc.message}") from None
+    if served is not None:
+        return served
+    note_typst_used()
+    try:
+        pdf_bytes, found = typst.compile_with_warnings(typ_name, font_paths=typst_fonts(), **options)
+    except typst.TypstError as exc:
+        raise PdfRenderError(f"typst failed to compile {stem}.md:\n{_typst_message(exc)}") from exc
+    return pdf_bytes, [_typst_message(w) for w in found]
+
+
+def _held_next(typ_name: str, root: Path, inputs: dict[str, str]) -> dict | None:
+    """What the last pass of the compilation with ``inputs`` read of its layout
+    (templates/report.typ: `<figure-held-next>`): ``held``, the figures it would hold back
+    past a table (figure number -> ordinal of the table), and ``far``, the held figures that
+    landed more than a page after their text or under a hole; None where it cannot be read."""
+    import typst
+
+    options = {"root": str(root), "field": "value", "one": True}
+    if inputs:
+        options["sys_inputs"] = inputs
+    try:
+        served = _service_compile("query", (typ_name, "<figure-held-next>"), options)
+        if served is None:
+            from .parallel import note_typst_used
+
+            note_typst_used()
+        found = served[0] if served is not None else typst.query(
+            typ_name, "<figure-held-next>", font_paths=typst_fonts(), **options)
+        value = json.loads(found)
+    except (_TypstFailed, typst.TypstError, ValueError):
+        return None
+    if not (isinstance(value, dict) and isinstance(value.get("held"), dict)
+            and isinstance(value.get("far"), list)):
+        return None
+    return value
+
+
+def _settle(typ_name: str, root: Path, timestamp: int, stem: str,
+            source: str) -> tuple[bytes, list[str], list[dict]]:
+    """(PDF, warnings, rounds) of the report source in ``typ_name``: the fixed point of its
+    held figures (templates/report.typ: figure-held).
+
+    Typst lays a document out at most five times; the figure rules read the pass before,
+    and a figure held back past a table moves the figures after it, one of which may then
+    land between the parts of another table and be held in the next pass: in some reports
+    the holds still grow in the fifth pass (slotter zh: figure 14 in the third, figures 1
+    and 2 in the fourth, figure 14 past one more table in the fifth) and typst stops
+    unsettled. The fixed point is then carried on here, in rounds: the figures the last pass
+    would hold (the held ones and those its layout shows between a table's parts) are read
+    (`typst query`) and the source is compiled again with them given, standing in every pass
+    (so the layout settles as that of a report that holds nothing new), until a round's
+    layout settles and holds no figure more. A held figure that landed more than a page after
+    its text, or at a page's foot under a blank band, is let go, with the figures held past
+    the same table, for good (templates/report.typ: far-figures, hole-figures).
+    The holds only grow (a figure is held past a later table only) but for those let go,
+    which are never held again, so the rounds end; there are at most FIGURE_ROUNDS of them
+    after the first, each a full compilation (about as long as the first). Where they do not
+    reach it (a round unsettled without new holds, or the last round still holds more):
+    the last settled round's layout, where one settled (its figures held out of the
+    tables its holds name); else the source set without the figure rules (nothing held).
+    Either is reported as a warning, FELL_BACK. Each round is a dict: held (given), settled."""
+    pdf_bytes, found = _compile_report(typ_name, root, timestamp, stem, {})
+    rounds = [{"held": None, "settled": not _unsettled(found)}]
+    if rounds[0]["settled"] or FIGURE_RULES_ON not in source:
+        return pdf_bytes, found, rounds
+    given = None                           # the held figures of the last round
+    let_go: set[str] = set()               # figures never to hold again
+    settled = None                         # (pdf, warnings) of the last settled round
+    while True:
+        found_next = _held_next(typ_name, root, {} if given is None else {
+            "figure-held": json.dumps(given, sort_keys=True)})
+        if found_next is None:
+            break                                    # nothing read
+        held = {k: t for k, t in found_next["held"].items() if k not in let_go}
+        if given is not None and rounds[-1]["settled"]:
+            # a held figure that landed more than a page after its text (a second table held
+            # it on into the next chapter: slotter figure 14) or at a page's foot under a
+            # blank band (slotter figure 1) is let go with the figures that wait for the same
+            # table: a figure far from its text, or a hole, is the worse defect
+            far = {str(n) for n in found_next["far"]} & set(given)
+            tables = {given[k] for k in far}
+            let_go |= {k for k, t in given.items() if t in tables}
+            held = {k: t for k, t in held.items() if k not in let_go}
+            if not far and held == given:
+                return pdf_bytes, found, rounds      # the fixed point
+        if held == given or len(rounds) > FIGURE_ROUNDS:
+            break                                    # nothing new, or no round left
+        given = held
+        pdf_bytes, found = _compile_report(typ_name, root, timestamp, stem, {
+            "figure-held": json.dumps(given, sort_keys=True)})
+        rounds.append({"held": given, "settled": not _unsettled(found)})
+        if rounds[-1]["settled"]:
+            settled = (pdf_bytes, found)
+    fell = f"{FELL_BACK} in {len(rounds)} compilations"
+    if settled is not None:
+        return settled[0], settled[1] + [fell + "; set with the held figures of its last settled one"], rounds
+    with open(typ_name, "w", encoding="utf-8") as handle:
+        handle.write(source.replace(FIGURE_RULES_ON, FIGURE_RULES_OFF, 1))
+    pdf_bytes, found = _compile_report(typ_name, root, timestamp, stem, {})
+    return pdf_bytes, found + [fell + "; set without the figure rules"], rounds
+
+
+def _unsettled(found: list[str]) -> bool:
+    return any("converge" in text for text in found)
 
 
 def compile_pdf(source: str, root: Path, pdf_path: Path, metadata: dict,
-                substitutes: dict[str, str] | None = None, stem: str = "report") -> None:
+                substitutes: dict[str, str] | None = None, stem: str = "report") -> list[dict]:
     """Compile typst ``source`` (images relative to ``root``) in-process to ``pdf_path``.
 
     The source is written under a temporary name into ``root`` (the typst root) and
@@ -573,12 +703,9 @@ def compile_pdf(source: str, root: Path, pdf_path: Path, metadata: dict,
     the document (paths relative to ``root``) to vector files placed instead where they
     exist: the drawing sheets' PDFs for their PNG previews. Typst warnings are re-emitted
     as Python warnings. Where typst's layout does not settle with the template's figure rules
-    that read the pass before (``#let figure-hold = true``), the source is compiled again
-    without them. Raises PdfRenderError if typst fails."""
-    import typst
-
-    from .parallel import note_typst_used
-
+    that read the pass before (``#let figure-hold = true``), the held figures are settled in
+    rounds (:func:`_settle`). Returns the rounds ([] when the PDF came from the cache).
+    Raises PdfRenderError if typst fails."""
     root, pdf_path = Path(root).resolve(), Path(pdf_path).resolve()
     source = _use_vector_images(source, {k: v for k, v in (substitutes or {}).items()
                                          if (root / v).is_file()})
@@ -586,6 +713,7 @@ def compile_pdf(source: str, root: Path, pdf_path: Path, metadata: dict,
 
     timestamp = source_timestamp(metadata.get("date"))
     fd, typ_name = _source_file(root, stem)
+    rounds: list[dict] = []
     try:
         with os.fdopen(fd, "w", encoding="utf-8") as handle:
             handle.write(source)
@@ -598,37 +726,13 @@ def compile_pdf(source: str, root: Path, pdf_path: Path, metadata: dict,
             head, pdf_bytes = stored.split(b"\n", 1)
             typst_warnings = json.loads(head.decode("utf-8"))
         else:
-            try:
-                served = _service_compile("file", (typ_name,),
-                                          {"root": str(root), "timestamp": timestamp})
-            except _TypstFailed as exc:
-                raise PdfRenderError(f"typst failed to compile {stem}.md:\n{exc.message}") from None
-            if served is not None:
-                pdf_bytes, typst_warnings = served
-            else:
-                note_typst_used()
-                try:
-                    pdf_bytes, found = typst.compile_with_warnings(
-                        typ_name,
-                        root=str(root),
-                        font_paths=typst_fonts(),
-                        timestamp=timestamp,
-                    )
-                except typst.TypstError as exc:
-                    raise PdfRenderError(f"typst failed to compile {stem}.md:\n{_typst_message(exc)}") from exc
-                typst_warnings = [_typst_message(w) for w in found]
+            pdf_bytes, typst_warnings, rounds = _settle(typ_name, root, timestamp, stem, source)
             cache.store(key, json.dumps(typst_warnings).encode("utf-8") + b"\n" + pdf_bytes)
     finally:
         Path(typ_name).unlink(missing_ok=True)
 
-    # the figure rules that read the pass before (templates/report.typ: a figure held back
-    # past a table, a figure to the top over a hole) may keep typst's layout from settling
-    # in its passes: the report is then set without them (as before these rules)
-    if any("converge" in text for text in typst_warnings) and FIGURE_RULES_ON in source:
-        compile_pdf(source.replace(FIGURE_RULES_ON, FIGURE_RULES_OFF, 1), root, pdf_path,
-                    metadata, substitutes, stem)
-        return
     for text in typst_warnings:
         warnings.warn(f"typst: {text}", stacklevel=3)
 
     write_bytes(pdf_path, pdf_bytes)
+    return rounds
