@@ -172,7 +172,7 @@ def test_intermittent_section(tmp_path, figs):
     assert "| 动停比 | $k$ | $\\varphi_m/\\varphi_d$ | 0.3846 | — |" in md
     assert "| 运动系数 | $\\tau$ | $t_m/T = \\varphi_m/360°$ | 0.2778 | — |" in md
     assert f"{2 * np.pi:.3f}" in md              # 2π rad/s to 4 significant digits (the rule)
-    assert "φ = 300.0° 进入啮合，至 φ = 40.0° 脱离啮合" in md
+    assert r"$\varphi$ = 300.0° 进入啮合，至 $\varphi$ = 40.0° 脱离啮合" in md
     assert "{#fig:intermittent-motion" in md
     # the residuals are computed in the run and are rounding-small
     assert all(abs(number(v)) < 1e-9 for _, v in ctx["verify"])

@@ -181,7 +181,9 @@ _NOT_OUTPUT = {
     "render/pdf.py": ('(tmp / "metadata.json").write_text', '(tmp / "typst-literal.lua").write_text',
                       '(tmp / "unit-join.lua").write_text',
                       '(tmp / "in.md").write_text', 'open(self._err, "wb")',
-                      'os.fdopen(fd, "w", encoding="utf-8")'),
+                      'os.fdopen(fd, "w", encoding="utf-8")',
+                      # the same scratch source rewritten without the figure rules (_settle's fallback)
+                      'open(typ_name, "w", encoding="utf-8")'),
     "render/docx.py": ("meta_file.write_text", "unit_filter.write_text"),
     "publish.py": ("os.replace(staging / rel, target)",),
 }

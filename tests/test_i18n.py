@@ -110,6 +110,8 @@ NOT_PROSE: dict[str, str] = {
                            "punctuation, fullwidth forms) that decide where a line may break",
     "render/docx.py": "the full-width punctuation (（【＝：，；、～) after which a '-' before a digit "
                       "is a minus sign in Word's text (minus_signs)",
+    "render/docx_layout.py": "the full-width colon (：) that ends a lead-in paragraph kept with the "
+                             "formula, table or list it introduces (keep_lead_ins)",
     "cli.py": "the English --help texts gloss two course terms in Chinese (机械原理课程设计, "
               "分组), as the brief's field descriptions do; its messages are in the catalogue",
 }

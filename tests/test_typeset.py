@@ -1026,8 +1026,11 @@ LETTER_SPACED_OPEN: set[tuple[str, str]] = set()
 # Where the held figures do not settle in typst's passes (six reports in session 36, set again
 # without the figure rules, silently), render/pdf.py settles them in rounds (_settle); a report
 # it cannot settle so falls back with the warning "the figure plan did not converge …", which
-# the e2e check counts here: no example report falls back.
-CONVERGE_OPEN: set[tuple[str, str]] = set()
+# the e2e check counts here. Open: die_cutter zh since the session-37 merges (text37's and
+# chain37's text moved its layout): its first compilation does not settle, and the round
+# with the held figures given does not settle either (something other than the holds does
+# not settle in typst's passes), so it is set without the figure rules.
+CONVERGE_OPEN: set[tuple[str, str]] = {("die_cutter", "zh")}
 CONTINUED_OPEN: set[tuple[str, str]] = set()
 # en lines with word spaces over twice the normal (wide_word_gaps) before a run that may not
 # break (a line never breaks after or before a relation, render/unitjoin.py): die_cutter's
@@ -1065,9 +1068,10 @@ HALF_EMPTY_OPEN: set[tuple[str, str]] = {("textbook_guide_bar", "zh")}
 # textbook_guide_bar zh/en mended; they were set again without the figure rules). Open:
 # slotter zh/en, whose holds the rounds let go: figures 1 and 2 held past table 5 left a hole
 # above figure 1 at the foot of its page (hole-figures), figure 14 held past tables 24 and 25
-# went on into chapter 5, two pages after its text (far-figures)
+# went on into chapter 5, two pages after its text (far-figures); die_cutter zh since the
+# session-37 merges (set without the figure rules: CONVERGE_OPEN)
 TABLES_INTERRUPTED_OPEN = {(b, lang) for b, langs in {
-    "slotter": "zh en"}.items()
+    "die_cutter": "zh", "slotter": "zh en"}.items()
     for lang in langs.split()}
 # A blank band above a figure at a page's foot (page_holes; slotter en's gone since graph36). Open
 # (cam_7_3 en and die_cutter en settle in typst's own passes: their holes are not the
