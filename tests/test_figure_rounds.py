@@ -77,6 +77,19 @@ def test_a_held_figure_far_from_its_text_is_let_go_with_those_held_with_it(monke
     assert pdf == f"pdf-{key({'5': 7})}".encode() and not P._unsettled(found)
 
 
+def test_far_held_figures_are_let_go_also_where_their_round_did_not_settle(monkeypatch, tmp_path):
+    # die_cutter zh (session 37): figure 2 held past table 5 and figures 17, 18 past table 47;
+    # given all three, typst's passes do not settle and 17, 18 land far from their text.
+    # They are let go; figure 2 held alone settles and holds nothing new (the fallback
+    # without the figure rules set every figure as if none were held)
+    all3, alone = {"2": 5, "17": 47, "18": 47}, {"2": 5}
+    fake, pdf, found, rounds = settle(monkeypatch, tmp_path, {
+        None: (False, all3, []), key(all3): (False, all3, [17, 18]),
+        key(alone): (True, all3, [])})
+    assert fake.compiled == [None, key(all3), key(alone)]
+    assert pdf == f"pdf-{key(alone)}".encode() and not P._unsettled(found)
+
+
 def test_rounds_without_a_fixed_point_fall_back_to_the_last_settled_one(monkeypatch, tmp_path):
     # each round holds one figure more (never a fixed point): after FIGURE_ROUNDS rounds the
     # last settled round's layout, with a warning that says so

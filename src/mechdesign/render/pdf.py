@@ -662,16 +662,19 @@ def _settle(typ_name: str, root: Path, timestamp: int, stem: str,
         if found_next is None:
             break                                    # nothing read
         held = {k: t for k, t in found_next["held"].items() if k not in let_go}
-        if given is not None and rounds[-1]["settled"]:
+        if given is not None:
             # a held figure that landed more than a page after its text (a second table held
             # it on into the next chapter: slotter figure 14) or at a page's foot under a
             # blank band (slotter figure 1) is let go with the figures that wait for the same
-            # table: a figure far from its text, or a hole, is the worse defect
+            # table: a figure far from its text, or a hole, is the worse defect. So also where
+            # the round did not settle (die_cutter zh: figures 17 and 18 held past table 47
+            # kept typst's passes from settling and went on far from their text; figure 2
+            # held alone settles)
             far = {str(n) for n in found_next["far"]} & set(given)
             tables = {given[k] for k in far}
             let_go |= {k for k, t in given.items() if t in tables}
             held = {k: t for k, t in held.items() if k not in let_go}
-            if not far and held == given:
+            if rounds[-1]["settled"] and not far and held == given:
                 return pdf_bytes, found, rounds      # the fixed point
         if held == given or len(rounds) > FIGURE_ROUNDS:
             break                                    # nothing new, or no round left
