@@ -1286,7 +1286,6 @@ def test_a_short_derivation_is_not_broken_across_pages(tmp_path):
     # of growing length: without the rule (templates/report.typ keep-derivations) a page
     # ends between the two equations of several of them, where a figure floated to the top
     # of the next page would stand between them (figures_in_derivations)
-    import pymupdf
 
     parts = ["# One\n"]
     for k in range(40):
@@ -1295,17 +1294,25 @@ def test_a_short_derivation_is_not_broken_across_pages(tmp_path):
         parts.append(f"$$ \\Sigma M_{{{k}}} = M_b + (2537 \\times 9.0) \\times 0.01 = 0 $$")
         parts.append(f"$$ P_{{{k}}} = \\frac{{M_b}}{{l_{{AB}}}} = \\frac{{-228.3}}{{0.0925}} = -2468 $$")
     pdf = _render(tmp_path, "\n\n".join(parts) + "\n")
-    page_of = {}
+    page_of = equation_pages(pdf)
+    assert sorted(page_of) == list(range(1, 81))
+    assert len(set(page_of.values())) > 3
+    split = [k for k in range(40) if page_of[2 * k + 1] != page_of[2 * k + 2]]
+    assert split == []
+
+
+def equation_pages(pdf: Path) -> dict[int, int]:
+    """Each equation number's page (the first page a row ends in "(n)")."""
+    import pymupdf
+
+    page_of: dict[int, int] = {}
     with pymupdf.open(pdf) as doc:
         for number, page in enumerate(doc, 1):
             for row in page_rows(page):
                 m = re.search(r"\((\d+)\)$", row[2])
                 if m:
                     page_of.setdefault(int(m.group(1)), number)
-    assert sorted(page_of) == list(range(1, 81))
-    assert len(set(page_of.values())) > 3
-    split = [k for k in range(40) if page_of[2 * k + 1] != page_of[2 * k + 2]]
-    assert split == []
+    return page_of
 
 
 @pytest.mark.parametrize("lines", [30, 31])
@@ -1335,7 +1342,6 @@ def test_a_figure_stays_off_a_long_derivation_that_went_on_to_its_page(tmp_path)
     # by a line citing a figure; the second goes on from page 4 to page 5, where its figure's
     # text stands: the figure floated to the top of page 5, between eqs. 10 and 11 (die_cutter
     # en fig. 16 above eqs. 129-133). It now stands in the flow where its text ends.
-    import pymupdf
     from PIL import Image
 
     Image.new("RGB", (800, 500), (200, 220, 240)).save(tmp_path / "a.png")
@@ -1347,13 +1353,7 @@ def test_a_figure_stays_off_a_long_derivation_that_went_on_to_its_page(tmp_path)
         parts.append(f"The curves of segment {k} are plotted in the figure.")
         parts.append(f"![Curves {k}](a.png){{width=70%}}")
     pdf = _render(tmp_path, "\n\n".join(parts) + "\n")
-    page_of = {}
-    with pymupdf.open(pdf) as doc:
-        for number, page in enumerate(doc, 1):
-            for row in page_rows(page):
-                m = re.search(r"\((\d+)\)$", row[2])
-                if m:
-                    page_of.setdefault(int(m.group(1)), number)
+    page_of = equation_pages(pdf)
     assert page_of[8] < page_of[14]                  # the case: the second derivation breaks
     assert figure_anchors(pdf)[1][0][0] == page_of[14]    # and its figure's text is on its page
     assert figures_in_derivations(pdf) == []
