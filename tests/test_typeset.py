@@ -1062,21 +1062,16 @@ HALF_EMPTY_OPEN: set[tuple[str, str]] = {("textbook_guide_bar", "zh")}
 # past the table (templates/report.typ: figure-held; the figures whose text follows a split
 # table go to the foot of its last page: after-split). Where typst's five passes do not settle
 # the held figures, render/pdf.py settles them in rounds (_settle: linkage_sixbar zh, press zh,
-# textbook_guide_bar zh/en mended; they were set again without the figure rules). Open:
-# slotter zh/en, whose holds the rounds let go: figures 1 and 2 held past table 5 left a hole
-# above figure 1 at the foot of its page (hole-figures), figure 14 held past tables 24 and 25
-# went on into chapter 5, two pages after its text (far-figures); die_cutter zh since the
+# textbook_guide_bar zh/en mended; they were set again without the figure rules); slotter
+# zh/en mended by the after-split figures in the flow (session 37). Open: die_cutter zh since the
 # session-37 merges: figures 17 and 18 held past table 47 keep typst's passes from settling
 # and land far from their text, so the rounds let them go (figure 2's hold past table 5
 # stays) and figure 17 stands between the parts of table 48
-TABLES_INTERRUPTED_OPEN = {(b, lang) for b, langs in {
-    "die_cutter": "zh", "slotter": "zh en"}.items()
-    for lang in langs.split()}
-# A blank band above a figure at a page's foot (page_holes; slotter en's gone since graph36). Open
-# (cam_7_3 en and die_cutter en settle in typst's own passes: their holes are not the
-# fallback's); linkage_sixbar zh/en p.7 since text37: chapter 1's data table moves the figures.
-HOLES_OPEN = {(b, lang) for b, langs in {
-    "cam_7_3": "en", "die_cutter": "en", "linkage_sixbar": "zh en"}.items() for lang in langs.split()}
+TABLES_INTERRUPTED_OPEN = {("die_cutter", "zh")}
+# A blank band above a figure at a page's foot (page_holes). Mended in session 37 (a figure whose text follows a split table stands in the flow under
+# its text where it fits, no longer at the page's foot under a hole): cam_7_3 en p.7,
+# die_cutter en p.20, linkage_sixbar zh/en p.7.
+HOLES_OPEN: set[tuple[str, str]] = set()
 # A figure between two lines of a derivation (figures_in_derivations). A short derivation is
 # not broken across pages (templates/report.typ: keep-derivations); a page whose text starts
 # in the middle of a longer one takes no figure on its top, the figure whose text stands on
