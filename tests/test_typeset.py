@@ -1599,3 +1599,38 @@ def test_a_figure_before_a_split_table_is_held_past_it(tmp_path):
         assert continued_missing(pdf) == []
         bad += [(lead, r) for r in tables_interrupted(pdf)]
     assert bad == []
+
+
+def test_a_figure_whose_text_follows_a_split_table_stands_under_its_text(tmp_path):
+    # a table goes on from one page to the next, the line after it cites a figure, and the
+    # next section begins: set at the page's foot (after-split), the figure stood under the
+    # next section's heading and its text, away from the line citing it (press en fig. 7
+    # under "4.1.3 Kinetostatics"), or under a blank band (cam_7_3 en p.7). It now stands
+    # in the flow under the line citing it, where it fits there.
+    import pymupdf
+    from PIL import Image
+
+    Image.new("RGB", (800, 500), (200, 220, 240)).save(tmp_path / "a.png")
+    rows = "\n".join(f"| {k} | {10 * k} | {k * k} |" for k in range(1, 41))
+    md = "\n\n".join([
+        "# One\n", _FILLER * 8,
+        f"| Position | Angle | Value |\n|---|---|---|\n{rows}\n\n: Values {{#tbl:values}}",
+        "The polygons of the last position are drawn in @fig:poly.",
+        "![Polygons](a.png){#fig:poly width=60%}",
+        "## Next section\n", _FILLER * 6]) + "\n"
+    pdf = _render(tmp_path, md)
+    with pymupdf.open(pdf) as doc:
+        found = {}
+        for number, page in enumerate(doc, 1):
+            if "Contents" in page.get_text():
+                continue
+            for block in page.get_text("blocks"):
+                text = block[4].strip()
+                for key in ("Figure", "Next section", "(continued)"):
+                    if text.startswith(key) if key == "Figure" else key in text:
+                        found.setdefault(key, (number, block[1]))
+    assert "(continued)" in found                       # the case: the table went on
+    caption, heading = found["Figure"], found["Next section"]
+    assert caption[0] == found["(continued)"][0]        # on the table's last page
+    assert caption < heading                            # above the next section
+    assert page_holes(pdf) == [] and tables_interrupted(pdf) == []
