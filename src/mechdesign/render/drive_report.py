@@ -56,22 +56,16 @@ def _num_giving(x: float, fn, printed: str, write) -> str:
     return factor_for(x, lambda v: gives(fn(v), printed), write=write)
 
 
-def _fp_factors(z: int, F0: float, alpha1_deg: float, printed: str, write) -> tuple[str, str]:
-    """F₀ and α₁ (degrees) of "F_p = 2 z F₀ sin(α₁/2)" as ``write`` prints them, with the
-    fewest more digits (F₀'s first) that make the printed factors give the printed F_p
-    (2 × 3 × 151 × sin 81.05° = 895.0 where F_p = 894.8: F₀ = 150.97)."""
-    from ..numbers import gives
+def _fp_factors(z: int, F0: float, alpha1_deg: float, printed: str) -> tuple[str, str]:
+    """F₀ and α₁ (degrees) of "F_p = 2 z F₀ sin(α₁/2)" as :func:`strength_tex.num` prints
+    them, with the fewest more digits (F₀'s first: α₁ is printed in the text above) that make
+    the printed factors give the printed F_p (2 × 3 × 151 × sin 81.05° = 895.0 where
+    F_p = 894.8: F₀ = 150.964)."""
+    from .strength_tex import _giving
 
-    def fp(f0: str, a: str) -> float:
-        return 2 * z * float(f0) * math.sin(math.radians(float(a)) / 2)
-
-    texts = (write(F0), write(alpha1_deg))
-    for total in range(5):
-        for ef in range(total, -1, -1):
-            texts = (write(F0, 4 + ef), write(alpha1_deg, 4 + total - ef))
-            if gives(fp(*texts), printed):
-                return texts
-    return texts
+    alpha_txt, f0_txt = _giving((alpha1_deg, F0), lambda a, f0: 2 * z * f0 * math.sin(
+        math.radians(a) / 2), printed, most=4)
+    return f0_txt, alpha_txt
 
 
 def _pw_for(d) -> str:
@@ -574,7 +568,7 @@ def _belt_design(r, g, title: str, _) -> dict:
     ld0 = next(t for t in (num(b.L_d0 * MM, k) for k in (4, 5, 6, 7)) if abs(
         float(num(a0)) + (float(num(b.L_d * MM)) - float(t)) / 2 - float(a_txt)) <= 0.5 * step * (1 + 1e-9)
         or t == num(b.L_d0 * MM, 7))
-    F0_txt, alpha_txt = _fp_factors(b.z, b.F0, deg(b.alpha1), num(b.Fp), num)
+    F0_txt, alpha_txt = _fp_factors(b.z, b.F0, deg(b.alpha1), num(b.Fp))
     formulas = [
         rf"P_{{ca}} = K_A P = {num(b.KA)} \times {_num_giving(P, lambda x: float(num(b.KA)) * x, num(Pca), num)}"
         rf" = {num(Pca)}\ \text{{kW}}",
