@@ -99,7 +99,6 @@ def analysis_sheet(found, info: TitleInfo, lang: str, labels: dict | None = None
         forces = flywheel = None
     polys = {c: found.polygons.at(c)[:2] if unloaded else found.polygons.at(c) for c in chosen}
     symbols = vector_symbols(getattr(found, "graphical", None))
-    weights = _weight_decimals(getattr(found, "graphical", None), lang)
     s = Sheet("A1")
     x0, y0, x1, y1 = s.inner
     table_top = y0 + 8 + _table_height(k)
@@ -110,7 +109,7 @@ def analysis_sheet(found, info: TitleInfo, lang: str, labels: dict | None = None
     frame(s, info)
     _table(s, model, k, forces, lab, (x0 + 8, y0 + 8, 300.0, table_top))
     _polygon_grid(s, model, polys, chosen, lab, (310.0, y0 + 8, 602.0, y1 - 4), scales,
-                  symbols, weights)
+                  symbols)
     _curves(s, model, k, forces, flywheel, lab, (622.0, 72.0, x1 - 8, y1 - 6))
     tb_x0, _, _, tb_y1 = title_block_box(s)
     notes = [lab["scales"] + f":  {sub('μ', 'L')} = {fmt.exact(n_len / 1000)} m/mm ({scale_text(n_len)}); "
@@ -146,7 +145,7 @@ def _group_title(model, pg: Polygon, lab: dict) -> str:
 
 
 def _polygon_grid(s: Sheet, model, polys: dict, chosen: list[str], lab: dict, box,
-                  scales: dict, symbols: dict | None = None, weights: dict | None = None) -> None:
+                  scales: dict, symbols: dict | None = None) -> None:
     """Rows: velocity, acceleration, then one row per group's force polygon; one column
     per chosen position. Row heights are shared out so that every cell fits."""
     bx0, by0, bx1, by1 = box
@@ -171,7 +170,7 @@ def _polygon_grid(s: Sheet, model, polys: dict, chosen: list[str], lab: dict, bo
             title = (lab[pg.kind].format(p=label) if pg.kind != "force"
                      else lab["force"].format(p=label, g=_group_title(model, pg, lab)))
             mu = _cell(s, pg, cell, title, lab,
-                       (symbols or {}).get((label, pg.kind), []), _sense(model), weights)
+                       (symbols or {}).get((label, pg.kind), []), _sense(model))
             key = pg.kind if pg.kind != "force" else f"force_{pg.group}"
             scales[f"{key}_{label}"] = mu
         top -= h + gap
@@ -279,18 +278,7 @@ def _value(x: float, ref: float) -> str:
     return fmt.minus(fmt.f(x, decimals, group=True))
 
 
-def _weight_decimals(document, lang: str) -> dict[str, int]:
-    """Each weight's extra decimals as the report's graphical section prints it in every
-    position (render/graphical_report._weight_decimals); none without that section."""
-    if document is None or not getattr(document, "positions", None):
-        return {}
-    from .graphical_report import _weight_decimals as decimals
-
-    return decimals(document, lang)
-
-
-def _items(pg: Polygon, symbols: list | None = None, sense: float = 1.0,
-           weights: dict | None = None) -> list[str]:
+def _items(pg: Polygon, symbols: list | None = None, sense: float = 1.0) -> list[str]:
     """The polygon's vectors as "symbol = value unit": a force by its name (F_R12), a
     velocity or acceleration by the quantity its segment stands for (v_A4A3 = … m/s; the
     segment's name, aa4, only where the graphical method names no quantity for it). The
@@ -321,14 +309,10 @@ def _items(pg: Polygon, symbols: list | None = None, sense: float = 1.0,
     def value(v) -> str:
         # a weight G_i is given: one text on every cell of the sheet, not decided by the
         # polygon's largest force (the shaper's "G2 = 500 N" at position 4 and "500.0 N" at
-        # position 10): as the report's graphical section prints it (``weights``: its extra
-        # decimals), else from its own value (to 0.01 N, trailing zeros dropped)
+        # position 10): from its own value by the sheets' rule, 4 significant digits,
+        # trailing zeros dropped (117.72 N → 117.7 N; the report's chains may carry more)
         if pg.kind == "force" and re.fullmatch(r"G\d+", str(v.name)) and v.value:
-            if weights and v.name in weights:
-                from .graphical_report import _factor
-
-                return fmt.minus(fmt.grouped(_factor(abs(v.value), weights[v.name])))
-            text = fmt.f(abs(v.value), 2, group=True)
+            text = fmt.sig(abs(v.value), 4)
             return fmt.minus(text.rstrip("0").rstrip(".") if "." in text else text)
         return _value(signed(v), ref)
 
@@ -340,7 +324,7 @@ def _items(pg: Polygon, symbols: list | None = None, sense: float = 1.0,
 
 
 def _cell(s: Sheet, pg: Polygon, cell, title: str, lab: dict, symbols: list | None = None,
-          sense: float = 1.0, weights: dict | None = None) -> float:
+          sense: float = 1.0) -> float:
     """One polygon with its heading, scale and the list of its vectors (M_b and P_b in the
     crank's sense of rotation: ``sense`` is the sign of ω); returns μ."""
     cx0, cy0, cx1, cy1 = cell
@@ -349,7 +333,7 @@ def _cell(s: Sheet, pg: Polygon, cell, title: str, lab: dict, symbols: list | No
                closed=True, weight=0.13)
     head_h = fit_height(title, w - 4.0, 3.5)
     s.text((cx0 + cx1) / 2 + 1j * (cy1 - 1.5), title, head_h, "TEXT", "center", "top")
-    items = _items(pg, symbols, sense, weights)
+    items = _items(pg, symbols, sense)
     ncol = 3 if w > 110 else 2
     nrow = int(np.ceil(len(items) / ncol))
     line = 3.4
