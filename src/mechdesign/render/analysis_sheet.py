@@ -312,8 +312,7 @@ def _items(pg: Polygon, symbols: list | None = None, sense: float = 1.0) -> list
         # position 10): from its own value by the sheets' rule, 4 significant digits,
         # trailing zeros dropped (117.72 N → 117.7 N; the report's chains may carry more)
         if pg.kind == "force" and re.fullmatch(r"G\d+", str(v.name)) and v.value:
-            text = fmt.sig(abs(v.value), 4)
-            return fmt.minus(text.rstrip("0").rstrip(".") if "." in text else text)
+            return fmt.minus(fmt.exact(abs(v.value), 4))
         return _value(signed(v), ref)
 
     out = [f"{name(v)} = {value(v)} {unit}" for v in pg.vectors
