@@ -130,3 +130,20 @@ def test_a_known_forces_length_times_mu_gives_its_value(example_results, name):
                     assert product == pytest.approx(number(value), abs=1e-9), (name, _sym, length, value)
                 checked += 1
     assert checked
+
+
+@pytest.mark.parametrize("name", ["shaper", "press", "slotter"])
+def test_a_weight_with_no_extra_decimals_changes_no_force_section(example_results, name):
+    """graphical_report._force_sections keeps the first layout of a document whose weights
+    need no extra decimals (shaper, press) instead of laying it out again with them: that
+    holds because a weight seed of 0 is no seed — the chains start from the same digits
+    (``least.get(name, 0)``) and the weight prints as without it. Here every position laid
+    out with each of its weights seeded 0 equals the position laid out without seeds."""
+    from mechdesign.render.graphical_report import _forces, _is_weight
+
+    doc = [v for v in example_results(name).values() if type(v).__name__ == "GraphicalDocument"][0]
+    for pos in doc.positions:
+        weights = {ld.name: 0 for fg in pos.forces for lds in fg.loads.values() for ld in lds
+                   if _is_weight(ld.name)}
+        assert weights, pos.label
+        assert _forces(pos, "en", weights) == _forces(pos, "en"), pos.label

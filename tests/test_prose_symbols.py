@@ -139,14 +139,6 @@ def test_the_quantity_scan(text, lang, found):
     assert [tok for tok, _ in bare_quantities(text, lang)] == found
 
 
-@pytest.mark.parametrize("lang", ["zh", "en"])
-@pytest.mark.parametrize("name", EXAMPLES)
-def test_quantity_letters_in_prose_are_math(example_results, name, lang):
-    md, _ = _markdown(example_results, name, lang)
-    bad = bare_quantities(md, lang)
-    assert not bad, bad
-
-
 def test_a_heading_with_a_quantity_letter_keeps_it_in_the_word_contents():
     """"# Crank-rocker from the time ratio $K$": Word holds the K of the heading's inline math
     in an m:t run; the contents entry (render/docx_toc.py) reads it too."""
@@ -195,14 +187,6 @@ def test_the_greek_scan(text, found):
     assert [g for g, _ in bare_greek(text)] == found
 
 
-@pytest.mark.parametrize("lang", ["zh", "en"])
-@pytest.mark.parametrize("name", EXAMPLES)
-def test_greek_quantity_letters_are_math(example_results, name, lang):
-    md, _ = _markdown(example_results, name, lang)
-    bad = bare_greek(md)
-    assert not bad, bad
-
-
 # A table's label cell (its first column: a check, a result, a quantity) names quantities as
 # the prose does: "stroke $H$", "$K$ by position search", not "stroke H" (review36 C). An
 # item label "A. speed reduction" (a function of the lock-beam's tree) is no quantity.
@@ -230,9 +214,16 @@ def test_the_label_scan(text, found):
     assert [t for t, _ in bare_label_letters(text, "en")] == found
 
 
+# every example report, zh and en, by each scan: a quantity letter in the prose, a Greek
+# letter in the prose or a table cell, a letter in a table's label cell
+SCANS = {"prose": bare_quantities, "greek": lambda md, lang: bare_greek(md),
+         "labels": bare_label_letters}
+
+
+@pytest.mark.parametrize("scan", SCANS)
 @pytest.mark.parametrize("lang", ["zh", "en"])
 @pytest.mark.parametrize("name", EXAMPLES)
-def test_quantity_letters_in_table_labels_are_math(example_results, name, lang):
+def test_quantity_letters_are_math(example_results, name, lang, scan):
     md, _ = _markdown(example_results, name, lang)
-    bad = bare_label_letters(md, lang)
+    bad = SCANS[scan](md, lang)
     assert not bad, bad

@@ -89,3 +89,18 @@ def test_chapter_one_lists_every_given_number(example_results, name, lang):
     n = b["linkage"]["crank"]["speed_rpm"]
     omega = n * 3.141592653589793 / 30
     assert any(abs(x - omega) <= 0.005 * omega for x in have), omega
+
+
+@pytest.mark.parametrize("written, shown", [
+    ("100", "100"), ("-100", "-100"), ("0", "0"), ("0.5", "0.5"), ("0.11", "0.11"), ("95.5", "95.5"),
+    ("0.004", "0.004"), ("0.001", "0.001"), ("1234.5678", "1234.5678"),
+    # the README's rule: in text and tables an integer part of five or more digits is grouped
+    ("12000", "12\u202f000"), ("123456.5", "123\u202f456.5"),
+])
+def test_a_given_number_is_written_as_the_brief_writes_it(written, shown):
+    """The data table's number is the brief's text: no digit added or dropped, no trailing
+    zero, and grouped as every table of the report groups (linkage/report._g writes it with
+    fmt.exact, the writer of values as given)."""
+    from mechdesign.machines.linkage.report import _g
+
+    assert _g(float(written)) == shown

@@ -176,21 +176,24 @@ def minus(text: str) -> str:
     return _HYPHEN_MINUS.sub(MINUS, text)
 
 
-def exact(x: float, digits: int = 6, decimals: int | None = None, group: bool = True) -> str:
+def exact(x: float, digits: int | None = 6, decimals: int | None = None,
+          group: bool = True) -> str:
     """A value the design chose rather than computed, written as it is (the rule's "design
     data as the design gives them"): a drawing's scale (``μL = 0.005 m/mm``, ``1:2.5``), a
     chart's graduation (``-30``, ``0.25``), a cam programme's angle (``120``), a module:
     at most ``digits`` significant digits, no trailing zeros, never E-notation (``1e-05`` →
     ``0.00001``), a negative zero or a rounding residue below 10⁻⁹ as ``0``; ``decimals``:
-    at most that many (a programme angle to 0.01°, as :func:`f` would write it); an integer
-    part of five or more digits grouped (``15 000``) unless ``group=False``."""
+    at most that many (a programme angle to 0.01°, as :func:`f` would write it);
+    ``digits=None``: no limit but ``decimals`` (a brief's given number to 10⁻⁶: ``1234.5678``,
+    ``0.004``); an integer part of five or more digits grouped (``15 000``) unless
+    ``group=False``."""
     if x != x or abs(x) == float("inf"):
         return "—"
     if decimals is not None:
         x = round(x, decimals)
     if abs(x) < 1e-9:
         return "0"
-    text = sig(x, digits, group=False)
+    text = sig(x, digits, group=False) if digits is not None else f(x, decimals)
     if "." in text:
         text = text.rstrip("0").rstrip(".")
     if float(text) == 0:

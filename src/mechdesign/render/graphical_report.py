@@ -705,20 +705,35 @@ def _is_weight(name: str) -> bool:
     return bool(re.fullmatch(r"G\d+", str(name)))
 
 
-def _weight_decimals(doc, lang: str) -> dict[str, int]:
+def _weight_decimals(sections) -> dict[str, int]:
     """The extra decimals of each weight G_i over the whole document: the most any position's
     equations need (slotter G₄: 117.7 at position 5, 117.72 at position 11 → 117.72 at every
-    position). A given quantity prints one way throughout a report (review37 Top 8); a
-    chain that needs fewer digits still computes with more (the seed is only a floor)."""
+    position), read off every position's force groups laid out without them
+    (``sections``: (position, :func:`_forces` of it), in order). A given quantity prints one
+    way throughout a report (review37 Top 8); a chain that needs fewer digits still computes
+    with more (the seed is only a floor)."""
     most: dict[str, int] = {}
-    for pos in doc.positions:
-        for fc, fg in zip(_forces(pos, lang), pos.forces):
+    for pos, forces in sections:
+        for fc, fg in zip(forces, pos.forces):
             value = {ld.name: abs(ld.value) for lds in fg.loads.values() for ld in lds}
             for name, _link, text in fc["known"]:
                 if _is_weight(name) and "times" not in text:
                     extra = _digits(text.replace(GROUP, "")) - _digits(_num(value[name]))
                     most[name] = max(most.get(name, 0), extra)
     return most
+
+
+def _force_sections(doc, lang: str) -> list[list[dict]]:
+    """Every position's force groups (:func:`_forces`), each weight with one number of
+    decimals throughout (:func:`_weight_decimals`). The groups are laid out once, and again
+    with the weights' decimals only where some weight needs extra ones (its seed changes the
+    chains): a seed of 0 is no seed (``least.get(name, 0)`` in :func:`_moment_tex`, and a
+    weight of no extra decimals prints by :func:`_numg` in ``known``)."""
+    first = [_forces(pos, lang) for pos in doc.positions]
+    weights = _weight_decimals(zip(doc.positions, first))
+    if not any(weights.values()):
+        return first
+    return [_forces(pos, lang, weights) for pos in doc.positions]
 
 
 def _forces(pos, lang: str, weights: dict[str, int] | None = None) -> list[dict]:
@@ -758,7 +773,7 @@ def _forces(pos, lang: str, weights: dict[str, int] | None = None) -> list[dict]
         def known(name, value, shown=shown, pairs=pairs):
             return grouped(shown[name]) if name in shown else (
                 grouped(pairs[name]) if name in pairs else
-                grouped(_factor(value, weights[name])) if name in weights else _numg(value))
+                grouped(_factor(value, weights[name])) if weights.get(name) else _numg(value))
 
         def read(v):
             return _numg(v.read) if v.known or abs(v.read) >= 1e6 else grouped(_measured(v.read))
@@ -925,10 +940,8 @@ def graphical_context(results: dict, figures: dict, lang: str) -> list[dict]:
         cranks = frozenset(k for v in links.values() if v["crank"] for k in v["links"])
         positions = []
         couple_said = False
-        weights = _weight_decimals(doc, lang)
-        for pos in doc.positions:
+        for pos, forces in zip(doc.positions, _force_sections(doc, lang)):
             key = f"{prefix}_graph_{_safe(pos.label)}"
-            forces = _forces(pos, lang, weights)
             for fc in forces:
                 # the couple term "M_I/mu_l" of a force equation is explained once, where it
                 # first appears

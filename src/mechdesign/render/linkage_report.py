@@ -148,6 +148,13 @@ def _torque_figure(path, lang, ph, span, mb, mean, resistance, n, marks):
         ax.legend(fontsize=7, loc="best")
 
 
+def _slider_outline(at: complex, angle: float, block: float) -> np.ndarray:
+    """A slider's block centred on ``at``: 2·``block`` long along its guide (``angle``),
+    1.2·``block`` across; its outline, closed (five corners)."""
+    u = np.exp(1j * angle) * block
+    return at + np.array([-u - 0.6j * u, u - 0.6j * u, u + 0.6j * u, -u + 0.6j * u, -u - 0.6j * u])
+
+
 def skeleton(path: Path, lang: str, model, k, members: dict, sliders: list):
     """The linkage at its regular textbook positions (thin) and position 1 (bold), in mm."""
     from ..core.mechanism import Crank
@@ -180,11 +187,11 @@ def skeleton(path: Path, lang: str, model, k, members: dict, sliders: list):
                     ax.plot(poly.real, poly.imag, color=c, lw=lw)
                 else:
                     ax.plot([z.real for z in zs], [z.imag for z in zs], color=c, lw=lw)
-            for slider, p, guide, _gp in sliders:
-                ang = guide if isinstance(guide, float) else k.link_angle[guide][j]
-                u = np.exp(1j * ang) * block
-                corners = P[p][j] + np.array([-u - 0.6j * u, u - 0.6j * u, u + 0.6j * u,
-                                              -u + 0.6j * u, -u - 0.6j * u])
+            # each slider's block at this position: drawn, and at position 1 a line a name avoids
+            blocks = [_slider_outline(P[p][j], guide if isinstance(guide, float)
+                                      else k.link_angle[guide][j], block)
+                      for _slider, p, guide, _gp in sliders]
+            for corners in blocks:
                 ax.plot(corners.real, corners.imag, color=color, lw=lw)
             tip = P[crank.tip][j]
             o = complex(frame[crank.pivot]) * 1e3
@@ -196,11 +203,7 @@ def skeleton(path: Path, lang: str, model, k, members: dict, sliders: list):
                     zs = [P[p][j] for p in pts]
                     zs = zs + [zs[0]] if len(zs) >= 3 else zs
                     lines += list(zip(zs[:-1], zs[1:]))
-                for slider, p, guide, _gp in sliders:
-                    ang = guide if isinstance(guide, float) else k.link_angle[guide][j]
-                    u = np.exp(1j * ang) * block
-                    corners = P[p][j] + np.array([-u - 0.6j * u, u - 0.6j * u, u + 0.6j * u,
-                                                  -u + 0.6j * u, -u - 0.6j * u])
+                for corners in blocks:
                     lines += list(zip(corners[:-1], corners[1:]))
         for slider, p, guide, gp in sliders:
             if isinstance(guide, float):

@@ -44,6 +44,19 @@ class FlywheelSpec:
     rim: RimSpec | None = q("", default=None)
 
 
+def brief_flywheel(p, ratio: float | None = None) -> FlywheelSpec:
+    """The flywheel a machine's brief gives (its params ``p``): [δ], on shaft
+    ``p.flywheel_shaft``, the cast rim to size (D, H/b, γ; a rim that cannot be is reported
+    at the brief's field flywheel.rim_diameter_mm). ``ratio``: the shaft's speed over the
+    crank's; by default the gear pair's z2/z1 on the pinion (a gear pair exists), 1 on the
+    crank shaft."""
+    if ratio is None:
+        ratio = p.z2 / p.z1 if p.flywheel_shaft == "pinion" else 1.0
+    return FlywheelSpec(p.fluctuation, ratio, p.flywheel_shaft,
+                        RimSpec(p.rim_diameter, p.rim_height_to_width, p.specific_weight,
+                                "flywheel.rim_diameter_mm"))
+
+
 @dataclass(frozen=True)
 class Flywheel:
     """Stage 飞轮设计 (the flywheel evens out M_b; the mechanism's own inertia neglected)."""

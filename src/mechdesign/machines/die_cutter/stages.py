@@ -42,7 +42,7 @@ from ...core.synthesis import extreme_angle
 from ...pipeline import Stage
 from ...i18n import N_
 from ...stages.findings import Finding, Msg, Pair, finding, finding_of, zh_en
-from ...stages.flywheel import Flywheel, FlywheelSpec, RimSpec, design_flywheel
+from ...stages.flywheel import Flywheel, FlywheelSpec, RimSpec, brief_flywheel, design_flywheel
 from ...core.cycle import CycleDocument
 from ...core.fields import q
 from ...core.intermittent import IntermittentDocument
@@ -439,9 +439,7 @@ def flywheel(model: LinkageModel, k, f, drive, p: DieCutterParams) -> tuple[Flyw
     """The one flywheel stage on drive shaft ``p.flywheel_shaft`` (its speed from the
     designed drive), and the shafts after it that carry the peak torque."""
     ratio = float(np.prod([st.ratio for st in drive.stages][p.flywheel_shaft:]))
-    spec = FlywheelSpec(p.fluctuation, ratio, p.flywheel_shaft,
-                        RimSpec(p.rim_diameter, p.rim_height_to_width, p.specific_weight,
-                                 "flywheel.rim_diameter_mm"))
+    spec = brief_flywheel(p, ratio)
     n = k.grid_size
     fl = design_flywheel(spec, k.phase[:n], f.balancing_torque[:n], model.crank_omega, p.gravity,
                          exact=CycleIntegrals(model, k))

@@ -5,7 +5,7 @@ from pathlib import Path
 from ...i18n import tr
 import math
 
-from ...render.fmt import f, fluctuation, md_meta, md_text, sig
+from ...render.fmt import exact, fluctuation, md_meta, md_text, sig
 from ...render.labels import md_point, point_tex
 from ...render.linkage_report import linkage_context, make_linkage_figures, verification_rows
 
@@ -16,8 +16,9 @@ def make_figures(r: dict, fig_dir: Path, lang: str) -> dict[str, str]:
 
 
 def _g(x: float) -> str:
-    """A given number as the brief writes it (no digits added: 100, 0.11, 95.5)."""
-    return f(x, 6).rstrip("0").rstrip(".") if x != int(x) else f(x, 0)
+    """A given number as the brief writes it (no digits added: 100, 0.11, 95.5), to 10⁻⁶;
+    five or more integer digits grouped, as in every table (12 000)."""
+    return exact(x, None, decimals=6)
 
 
 def data_rows(brief, lang: str) -> list[list[str]]:

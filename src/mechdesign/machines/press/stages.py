@@ -19,7 +19,7 @@ from ...stages import guide_bar
 from ...stages import linkage as lk
 from ...stages.cam import CamDocument
 from ...stages.drive import DriveDocument, drive_document
-from ...stages.flywheel import Flywheel, FlywheelSpec, RimSpec
+from ...stages.flywheel import Flywheel, brief_flywheel
 from ...stages.gear import GearDocument
 from .brief import PressParams
 from ...i18n import N_
@@ -153,7 +153,6 @@ def mechanism(s: PressSynthesis, p: PressParams) -> Mechanism:
 def model(s: PressSynthesis, p: PressParams) -> lk.LinkageModel:
     """Output: the ram F measured downwards (the working, pressing stroke); resistance:
     Q_max upwards over the last part of the downward stroke; bodies: coupler, rocker, ram."""
-    ratio = p.z2 / p.z1 if p.flywheel_shaft == "pinion" else 1.0
     press_from = (1.0 - p.pressing_ratio) * p.stroke
     fields = "linkage.guide_x2_mm, linkage.ratio_EF_DE"
     pivots = "linkage.pivot_x1_mm, linkage.pivot_y_mm"
@@ -165,9 +164,7 @@ def model(s: PressSynthesis, p: PressParams) -> lk.LinkageModel:
         resistances=(lk.Resistance("5", "F", DOWN, p.pressing_force, 0.0,
                                    (press_from, p.stroke)),),
         grid_points=p.grid_points, position_step=p.position_step, gravity=p.gravity,
-        flywheel=FlywheelSpec(p.fluctuation, ratio, p.flywheel_shaft,
-                              RimSpec(p.rim_diameter, p.rim_height_to_width, p.specific_weight,
-                                     "flywheel.rim_diameter_mm")),
+        flywheel=brief_flywheel(p),
         pressure_angle_limit=p.pressure_angle_max, transmission_angle_min=p.transmission_angle_min,
         advice={"pressure": Msg(N_("brief fields {fields}"), fields=fields),
                 "transmission": Msg(N_("brief fields {fields}"), fields=pivots)},

@@ -20,7 +20,7 @@ from ...core.kinetostatics import Body
 from ...core.mechanism import RPR, RRP, Crank, LinkPoint, Mechanism
 from ...core.synthesis import GuideBarDesign
 from ...pipeline import Stage
-from ...stages.flywheel import Flywheel, FlywheelSpec, RimSpec
+from ...stages.flywheel import Flywheel, brief_flywheel
 from ...stages import guide_bar
 from ...stages.guide_bar import Synthesis, synthesize
 from ...stages import linkage as lk
@@ -120,7 +120,6 @@ def model(syn: Synthesis, p: ShaperParams) -> lk.LinkageModel:
     left, right = _extremes(d)
     working = 1 if (sense * (right - left)) % (2 * np.pi) > np.pi else -1
     idle = p.idle_travel_ratio * p.stroke
-    ratio = p.z2 / p.z1 if p.flywheel_shaft == "pinion" else 1.0   # pinion: a gear pair exists
     return lk.LinkageModel(
         mechanism=build_mechanism(d, p), crank_omega=p.crank_omega,
         output=lk.Output("point", "F", 0.0, working),
@@ -129,9 +128,7 @@ def model(syn: Synthesis, p: ShaperParams) -> lk.LinkageModel:
         resistances=(lk.Resistance("6", "P", 0.0, p.cutting_force, 0.0,
                                    (idle, p.stroke - idle)),),
         grid_points=p.grid_points, position_step=p.position_step, gravity=p.gravity,
-        flywheel=FlywheelSpec(p.fluctuation, ratio, p.flywheel_shaft,
-                              RimSpec(p.rim_diameter, p.rim_height_to_width, p.specific_weight,
-                                     "flywheel.rim_diameter_mm")),
+        flywheel=brief_flywheel(p),
         special_crank_angles=(np.pi / 2, 3 * np.pi / 2),
         names={"2": Msg.pgettext("link", "crank O2A"), "3": Msg.pgettext("link", "slider A"),
                "4": Msg.pgettext("link", "guide bar O3B"), "5": Msg.pgettext("link", "rod BF"),

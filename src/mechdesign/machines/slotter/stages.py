@@ -16,7 +16,7 @@ from ...core.kinetostatics import Body
 from ...core.mechanism import RPR, RRP, Crank, LinkPoint, Mechanism
 from ...core.synthesis import GuideBarDesign
 from ...pipeline import Stage
-from ...stages.flywheel import Flywheel, FlywheelSpec, RimSpec
+from ...stages.flywheel import Flywheel, brief_flywheel
 from ...stages import linkage as lk
 from ...stages.drive import DriveDocument, drive_document
 from ...stages import guide_bar
@@ -59,7 +59,6 @@ def model(syn: Synthesis, p: SlotterParams) -> lk.LinkageModel:
     ram (its weight acts along its motion), gear 2 on the crank shaft."""
     d = syn.design
     idle = p.idle_travel_ratio * p.stroke
-    ratio = p.z2 / p.z1 if p.flywheel_shaft == "pinion" else 1.0
     return lk.LinkageModel(
         mechanism=build_mechanism(d, p), crank_omega=p.crank_omega,
         output=lk.Output("point", "C", DOWN, 1),
@@ -68,9 +67,7 @@ def model(syn: Synthesis, p: SlotterParams) -> lk.LinkageModel:
         resistances=(lk.Resistance("6", "P", DOWN, p.cutting_force, 0.0,
                                    (idle, p.stroke - idle)),),
         grid_points=p.grid_points, position_step=p.position_step, gravity=p.gravity,
-        flywheel=FlywheelSpec(p.fluctuation, ratio, p.flywheel_shaft,
-                              RimSpec(p.rim_diameter, p.rim_height_to_width, p.specific_weight,
-                                     "flywheel.rim_diameter_mm")),
+        flywheel=brief_flywheel(p),
         special_crank_angles=(0.0, np.pi),   # the crank level with O2O3: the bar at its mid-swing
         names={"2": Msg.pgettext("link", "crank O2A"), "3": Msg.pgettext("link", "slider A"),
                "4": Msg.pgettext("link", "guide bar O3B"), "5": Msg.pgettext("link", "rod BC"),
