@@ -327,7 +327,8 @@ def cam_context(c, lang: str, figs: dict[str, str], csv_name: str) -> dict:
         r0b, eb = c.best_offset
         side = _.pgettext("side, short", "right") if eb > 0 else _.pgettext("side, short", "left")
         design_rows.append([_("best offset and its smallest base radius"),
-                            f"$e$ = {f(abs(eb) * MM, 2)} mm ({side}), $r_0$ = {f(r0b * MM, 2)} mm"])
+                            _("$e$ = {e} mm ({side}), $r_0$ = {r0} mm", e=f(abs(eb) * MM, 2),
+                              side=side, r0=f(r0b * MM, 2))])
     if c.face_extent is not None:
         lo, hi = c.face_extent
         if translating:
