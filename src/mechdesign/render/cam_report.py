@@ -351,7 +351,7 @@ def cam_context(c, lang: str, figs: dict[str, str], csv_name: str) -> dict:
     alpha_max = max((sg.max_pressure_angle for sg in c.segments),
                     default=float(np.max(c.grid.pressure_angle)))
     return {
-        "follower": follower_name, "rotation": rot, "data_rows": data, "prog_rows": prog_rows,
+        "follower": follower_name, "rotation": rot, "data_rows": data, "prog_rows": prog_rows, "s_unit": u.s_unit,
         "joints": _.pgettext("list", ", ").join(joints),
         "laws": laws, "geo": geo, "checks": checks, "design_rows": design_rows,
         "table_rows": table_rows, "table_step": f(p.table_step * DEG, 1),
