@@ -242,6 +242,11 @@ def test_numbers_symbols_and_verdicts(example_results, name, lang):
     if lang == "en":    # no full-width punctuation in English text
         assert not [ln for ln in lines if not re.search("[\u3400-\u9fff]", ln)
                     and re.search("[（）：；，、]", ln)]
+    if lang == "zh":    # a Chinese word in brackets takes full-width ones: "（右）", not "(右)"
+        assert not [ln for ln in lines if re.search(r"\([^()]*[\u3400-\u9fff][^()]*\)", ln)]
+    # a citation stands inside its sentence, before the stop ("…重新校核[7, 9, 10]。",
+    # "… checked again [7, 9, 10]."), as everywhere in the report; not after it (review38)
+    assert not re.findall(r".{0,30}[。.]\s?\\\[\d[\d, ]*\\\]", md)
 
 
 @pytest.mark.parametrize("lang", ["zh", "en"])
@@ -394,3 +399,12 @@ def test_reports_do_not_address_the_brief_by_its_field_paths(example_results, na
     text = _prose(re.sub(r"^```.*?^```", " ", md, flags=re.S | re.M))
     paths = sorted({p for p in _FIELD_PATH.findall(text) if not _FILE_SUFFIX.search(p)})
     assert not paths, paths
+
+
+def test_a_citation_goes_before_the_sentence_stop():
+    from mechdesign.render.report import cited
+
+    assert cited("并重新校核。", "\\[7, 9\\]") == "并重新校核\\[7, 9\\]。"
+    assert cited("is checked again.", "\\[7\\]") == "is checked again \\[7\\]."
+    assert cited("as follows:", "\\[1\\]") == "as follows:\\[1\\]"
+    assert cited("并重新校核。", "") == "并重新校核。"

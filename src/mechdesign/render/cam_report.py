@@ -327,7 +327,8 @@ def cam_context(c, lang: str, figs: dict[str, str], csv_name: str) -> dict:
         r0b, eb = c.best_offset
         side = _.pgettext("side, short", "right") if eb > 0 else _.pgettext("side, short", "left")
         design_rows.append([_("best offset and its smallest base radius"),
-                            f"$e$ = {f(abs(eb) * MM, 2)} mm ({side}), $r_0$ = {f(r0b * MM, 2)} mm"])
+                            _("$e$ = {e} mm ({side}), $r_0$ = {r0} mm", e=f(abs(eb) * MM, 2),
+                              side=side, r0=f(r0b * MM, 2))])
     if c.face_extent is not None:
         lo, hi = c.face_extent
         if translating:
@@ -350,7 +351,7 @@ def cam_context(c, lang: str, figs: dict[str, str], csv_name: str) -> dict:
     alpha_max = max((sg.max_pressure_angle for sg in c.segments),
                     default=float(np.max(c.grid.pressure_angle)))
     return {
-        "follower": follower_name, "rotation": rot, "data_rows": data, "prog_rows": prog_rows,
+        "follower": follower_name, "rotation": rot, "data_rows": data, "prog_rows": prog_rows, "s_unit": u.s_unit,
         "joints": _.pgettext("list", ", ").join(joints),
         "laws": laws, "geo": geo, "checks": checks, "design_rows": design_rows,
         "table_rows": table_rows, "table_step": f(p.table_step * DEG, 1),

@@ -480,7 +480,7 @@ def stage_designs(d, lang: str, gear_pair_last: bool = False) -> list[dict]:
             rows.append([_("bearing"), sh.bearing.designation, "—"])
         for k in sh.keys:
             lab = f"{f(k.b * MM, 0)}×{f(k.h * MM, 0)}×{f(k.L * MM, 0)}" + (" ×2" if k.count == 2 else "")
-            rows.append([_("key") + f" ({_stage_name(k.element, _)})", lab, unit_mm])
+            rows.append([_("key ({element})", element=_stage_name(k.element, _)), lab, unit_mm])
         bearing_std = () if sh.bearing is None else (
             ("gb297",) if sh.bearing.designation.startswith("3") else ("gb276",))
         formulas = []

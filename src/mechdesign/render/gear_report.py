@@ -89,7 +89,7 @@ def gear_context(g, lang: str, figures: dict[str, str]) -> dict:
                  rf"\frac{{{top}}}{{{bottom}}} = {sig(b1b2 / p.pb, group=False)}"),
         "zmin": (rf"z_{{min}} = \frac{{2h_a^*}}{{\sin^2\alpha}} = \frac{{2\times{f(p.ha_star, 2)}}}"
                  rf"{{\sin^2 {f(p.alpha * DEG, 1)}°}} = {f(limit, 2)} \approx {f(p.z_min, 0)}, \quad x_{{min}} = "
-                 rf"h_a^*\frac{{z_{{min}}-z}}{{z_{{min}}}}: \ x_{{min,1}} = {f(p.x_min1, 3)},\ "
+                 rf"h_a^*\frac{{z_{{min}}-z}}{{z_{{min}}}}, \quad x_{{min,1}} = {f(p.x_min1, 3)},\ "
                  rf"x_{{min,2}} = {f(p.x_min2, 3)}"),
     }
     undercut = [w for w in g.warnings if w.code == "undercut"]

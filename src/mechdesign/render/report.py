@@ -60,6 +60,20 @@ class _LanguageLoader(jinja2.FileSystemLoader):
         return super().get_source(environment, template)
 
 
+def cited(sentence: str, citation: str) -> str:
+    """``sentence`` with ``citation`` (``\\[7, 9\\]``) set before its closing stop, as a
+    citation stands everywhere else ("…重新校核[7, 9]。", "… checked again [7, 9]."), not
+    after it; a sentence that ends otherwise (a formula, a colon) takes it at its end."""
+    if not citation:
+        return sentence
+    body = sentence.rstrip()
+    if body.endswith("。"):
+        return body[:-1] + citation + "。"
+    if body.endswith("."):
+        return body[:-1] + " " + citation + "."
+    return sentence + citation
+
+
 def render_markdown(template_name: str, ctx: dict, templates: Path,
                     lang: str | None = None) -> str:
     """Render a report template in Jinja's sandbox: a user's ``--templates`` folder can
@@ -86,6 +100,7 @@ def render_markdown(template_name: str, ctx: dict, templates: Path,
     env.install_gettext_callables(**jinja_callables(lang), newstyle=True)
     env.filters["figlabel"] = figure_label
     env.filters["symbols"] = md_symbols     # a table cell's quantity letters as math
+    env.filters["cited"] = cited            # a citation inside the sentence, before its stop
     if "cite" not in ctx:      # the citation counter (render/summary.py), one per report
         from .summary import Citations
 

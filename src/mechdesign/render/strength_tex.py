@@ -254,16 +254,15 @@ def _bearing_life(c: Check) -> str:
     ft = i.get("ft", 1.0)
     # a life is an estimate: to 4 significant digits ("≈ 199600 h"), n and P with the digits
     # that give those 4 (267.6 and 949.5, not 267.643 and 949.528 for the six digits of
-    # 199 597 h); from 10⁶ h on a power of ten, as every number (6.157 × 10⁶ h)
+    # 199 597 h); from 10⁶ h on a power of ten, as every number (≈ 6.157 × 10⁶ h): "≈" for
+    # every life, one relation for one kind of result
     x = c.course_value
     target = _rounded(x)[1]
     n_txt, p_txt = _giving((i["n_rpm"], i["P"]), lambda n, p: 1e6 / (60 * n) * (
         _float(num(ft)) * _float(num(i["C"])) / p) ** e_val, target)
     ratio = rf"\frac{{{_prod(ft, i['C'])}}}{{{p_txt}}}"
     numbers = rf"\frac{{10^6}}{{60 \times {n_txt}}} \times ({ratio})^{{{eps}}}"
-    tail = _tail(c, r"L_h'")
-    if abs(x) < BIG:
-        tail = tail.replace(" = ", r" \approx ", 1)
+    tail = _tail(c, r"L_h'").replace(" = ", r" \approx ", 1)
     return (rf"L_{{10h}} = \frac{{10^6}}{{60 n}} (\frac{{f_t C}}{{P}})^{{\varepsilon}} = {numbers}"
             + tail)
 
