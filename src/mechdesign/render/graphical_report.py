@@ -745,6 +745,7 @@ def _forces(pos, lang: str, weights: dict[str, int] | None = None) -> list[dict]
     # a reaction read off an earlier group's polygon, as its table prints it: the later
     # group's known force of the pair (F_R54 of F_R45) prints the same digits (issue 19)
     measured: dict[str, str] = {}
+    floors = []         # each group's digit floors and the known forces' texts they gave
     for n, fg in enumerate(pos.forces):
         pairs = {ld.name: measured[_pair(ld.name)] for lds in fg.loads.values() for ld in lds
                  if _pair(ld.name) in measured}
@@ -760,6 +761,7 @@ def _forces(pos, lang: str, weights: dict[str, int] | None = None) -> list[dict]
             if need == least:
                 break
             least = need
+        floors.append(({**seed, **least}, shown))
         # a force known to be zero (a tangential component no known force calls for, its
         # moment equation said so) is no side of the polygon: left out of its vector
         # equation and its table, as the figure leaves it out (issue 19)
@@ -809,6 +811,23 @@ def _forces(pos, lang: str, weights: dict[str, int] | None = None) -> list[dict]
         best = max((r[3] for r in rows), key=lambda t: _digits(t))
         for r in rows:
             r[3] = best
+    # the moment equation that finds such a force gives it with those digits too
+    # (textbook_guide_bar φ45: "F_R34 = … = 123 N", then 123.5 in its rows and in the crank's
+    # equation; review38), where its printed chain still gives them and the known forces
+    # keep their texts
+    for fc, fg, (floor, shown) in zip(out, pos.forces, floors):
+        results = {}
+        for m in fg.moments:
+            key = float(f"{abs(m.result):.9g}")
+            if m.arm and m.unknown != "Pb" and key in same and abs(m.result) < 1e6:
+                best = same[key][0][3].replace(GROUP, "")
+                if _digits(best) > _digits(_num(m.result)):
+                    results[m.unknown] = ("-" if m.result < 0 else "") + best
+        if results:
+            again: dict[str, str] = {}
+            moments, couple = _group_moments(fg, mu_l, lang, floor, again, results)
+            if again == shown:
+                fc["moments"], fc["couple"] = moments, couple
     # a known force's length, drawn at |F|/μF: with the digits that give its value
     for fc, fg in zip(out, pos.forces):
         for row, v in zip(fc["rows"], _sides(fg)):
@@ -834,8 +853,11 @@ def _force_of(fg, name: str) -> float:
     return next(t.force for m in fg.moments for t in m.terms if t.name == name and t.arm)
 
 
-def _group_moments(fg, mu_l, lang: str, least: dict, shown: dict) -> tuple[list, str | None]:
-    """The group's moment equations as (equation, result, note) and the couple's symbol."""
+def _group_moments(fg, mu_l, lang: str, least: dict, shown: dict,
+                   results: dict | None = None) -> tuple[list, str | None]:
+    """The group's moment equations as (equation, result, note) and the couple's symbol;
+    ``results``: a force's result as it is to print (its carried digits), by default
+    :func:`_num`'s."""
     moments, couple = [], None
     for m in fg.moments:
         u = sym(m.unknown)
@@ -851,7 +873,7 @@ def _group_moments(fg, mu_l, lang: str, least: dict, shown: dict) -> tuple[list,
                             f"{{{arm}}} = {_num(m.result)}" r"\ \mathrm{N}", None, None))
             continue
         where = f"\\Sigma M_{{{m.point}}}" + ("" if m.unknown == "Mb" else f"({m.link})")
-        res = _num(m.result)
+        res = (results or {}).get(m.unknown) or _num(m.result)
         couples = sum(t.value for t in m.terms if not t.arm)
         if not m.arm:
             # a moment unknown (M_b, a slider's couple): -(products x mu_l + couples)
