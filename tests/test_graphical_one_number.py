@@ -112,3 +112,38 @@ def test_a_force_found_by_a_moment_equation_prints_as_its_polygon_row(example_re
     for section in re.split(r"\n## ", md):
         bad += solved_mismatches(section)[0]
     assert bad == [], bad
+
+
+# | $v_{B}$ | m/s | 1.17 | 1.17 | 0.0 | 0.0433 | 合格 |   (graphical, analytic, difference %)
+ROW = re.compile(r"^\| \$[^$|]+\$ \| [^|\n]+ \| (-?[\d.\u202f ]+) \| (-?[\d.\u202f ]+) \| (-?[\d.]+) \| "
+                 r"[^|\n]+ \| [^|\n]+ \|$", re.M)
+
+
+def off_rows(md: str) -> tuple[list, int]:
+    """(the comparison rows whose difference is not (graphical − analytic)/|analytic| of the
+    printed values, to the printed 0.1 %, the number of rows read)."""
+    bad, seen = [], 0
+    for g, a, d in ROW.findall(md):
+        g, a = (float(x.replace("\u202f", "").replace(" ", "")) for x in (g, a))
+        if a == 0:
+            continue
+        seen += 1
+        if abs(100 * (g - a) / abs(a) - float(d)) > 0.05 + 1e-9:
+            bad.append((g, a, d))
+    return bad, seen
+
+
+def test_the_difference_check_finds_the_reviewed_row():
+    assert off_rows("| $v_{B}$ | m/s | 1.17 | 1.17 | 0.4 | 0.0433 | 合格 |\n") == ([(1.17, 1.17, "0.4")], 1)
+    assert off_rows("| $v_{B}$ | m/s | 1.17 | 1.17 | 0.0 | 0.0433 | 合格 |\n") == ([], 1)
+
+
+@pytest.mark.parametrize("lang", ["zh", "en"])
+@pytest.mark.parametrize("name", LINKAGES)
+def test_a_comparison_difference_follows_from_its_printed_values(example_results, name, lang):
+    """review38: 92 of 726 comparison rows gave a difference a teacher cannot get from the
+    row ("1.17 | 1.17 | 0.4 %", "2.60 | 2.55 | 1.7 %"): it was the unrounded values'."""
+    md, _ = _markdown(example_results, name, lang)
+    bad, seen = off_rows(md)
+    assert seen
+    assert bad == [], bad

@@ -925,6 +925,21 @@ def _printed(pos, forces: list[dict]) -> dict[str, str]:
     return out
 
 
+def _printed_difference(graphical: str, analytic: str, exact: float) -> float:
+    """(graphical − analytic)/|analytic| of two printed values; ``exact`` (the unrounded
+    values' difference) where one has a power of ten or the analytic one prints as 0."""
+    def value(text: str) -> float | None:
+        text = text.replace(GROUP, "").replace(" ", "").replace("−", "-")
+        try:
+            return float(text)
+        except ValueError:
+            return None
+    g, a = value(graphical), value(analytic)
+    if g is None or a is None or a == 0:
+        return exact
+    return (g - a) / abs(a)
+
+
 def _compare(pos, lang: str, printed: dict[str, str] | None = None) -> list[list[str]]:
     """The comparison table's rows; a force listed in the polygon tables (``printed``, by
     symbol: itself or its reaction) with the digits it is listed with there (one measured
@@ -940,10 +955,15 @@ def _compare(pos, lang: str, printed: dict[str, str] | None = None) -> list[list
         ok = abs(c.graphical - c.analytic) <= c.tolerance
         _ = tr(lang)
         mark = _("PASS") if ok else _.pgettext("graphical", "beyond")
-        # a value smaller than the drawing's resolution has no meaningful relative error
-        diff = "—" if abs(c.analytic) < c.tolerance else f(100 * c.difference, 1)
         shown = printed.get(q, printed.get(_pair(q) or "", _numg(c.graphical)))
-        rows.append([name, c.unit, shown, _numg(c.analytic), diff, _numg(c.tolerance), mark])
+        analytic = _numg(c.analytic)
+        # a value smaller than the drawing's resolution has no meaningful relative error; the
+        # difference is the printed values' (a teacher recomputes it from the row: "1.17 |
+        # 1.17 | 0.0", not the 0.4 of the unrounded values; review38), a value with a power
+        # of ten aside
+        diff = "—" if abs(c.analytic) < c.tolerance else f(100 * _printed_difference(
+            shown, analytic, c.difference), 1)
+        rows.append([name, c.unit, shown, analytic, diff, _numg(c.tolerance), mark])
     return rows
 
 
