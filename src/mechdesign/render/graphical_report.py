@@ -418,6 +418,21 @@ def _force_figure(path: Path, points: dict, length_scale: float, fg, members: di
                 _arrow(a1, z, z + L * value / abs(value), "tab:red", label=sym(name),
                        labels=labels1)
                 lines1.append((z, z + L * value / abs(value)))
+        # the couples as curved arrows in their sense: the inertia couples M_I (terms of the
+        # moment equations) on their links, and the crank's balancing torque M_b at its pivot
+        # (review38: the crank's free body showed F_R32 and no M_b, not in equilibrium)
+        couples: dict[str, tuple[complex, float, str]] = {}
+        for m in fg.moments:
+            for term in m.terms:
+                link = re.fullmatch(r"MI(\w+)", term.name)
+                chain = [P[p] for p in members.get(link[1] if link else m.link, ()) if p in P]
+                if not term.arm and term.value and chain and term.name not in couples:
+                    couples[term.name] = (np.mean(chain) / length_scale, term.value, "tab:blue")
+            if m.unknown == "Mb" and fg.balancing_torque and m.point in P:
+                couples["Mb"] = (P[m.point] / length_scale, fg.balancing_torque, "tab:red")
+        for name, (z, value, colour) in couples.items():
+            lines1 += _couple_arrow(a1, z, COUPLE_RADIUS * span, value > 0, colour, sym(name),
+                                    labels1)
         # room round the links and arrows for the names of the outermost points
         ends = [z for seg in lines1 for z in seg] or [0j]
         lo = complex(min(z.real for z in ends), min(z.imag for z in ends))
@@ -486,6 +501,28 @@ def _force_figure(path: Path, points: dict, length_scale: float, fg, members: di
 
 #: Margin round the free-body diagram's links and arrows (fraction of the data extent).
 FBD_MARGIN = 0.16
+
+#: The radius of a couple's curved arrow in a free-body diagram (fraction of the links' span).
+COUPLE_RADIUS = 0.09
+
+
+def _couple_arrow(ax, z: complex, r: float, ccw: bool, color: str, label: str,
+                  labels: list) -> list[tuple[complex, complex]]:
+    """A couple as a curved arrow round ``z`` (three quarters of a circle of radius ``r``,
+    its head in the couple's sense), its name outside the arc's middle (collected in
+    ``labels``); returns the arc's chords, which other labels keep clear of."""
+    from matplotlib.patches import FancyArrowPatch
+    from matplotlib.path import Path as MplPath
+
+    t = np.linspace(np.radians(135), np.radians(135 + 270), 37)
+    arc = z + r * np.exp(1j * (t if ccw else t[::-1]))
+    ax.add_patch(FancyArrowPatch(path=MplPath(np.column_stack([arc.real, arc.imag])),
+                                 arrowstyle="-|>", color=color, lw=1.0, mutation_scale=HEAD))
+    ax.update_datalim([(z.real - r, z.imag - r), (z.real + r, z.imag + r)])
+    out = np.exp(1j * np.radians(135 + 135))
+    labels.append(Label(f"${mpl_math(label)}$", z + r * out, (out, out * 1j, -out * 1j),
+                        {"fontsize": LABEL_SIZE, "color": color}))
+    return list(zip(arc[:-1], arc[1:]))
 
 #: The force polygon's panel: its short extent at least this fraction of the long one, and
 #: this margin round it (of the long extent) — room for the force names, which are longer
