@@ -12,6 +12,8 @@ from __future__ import annotations
 
 from pathlib import Path
 
+import re
+
 import pytest
 
 from mechdesign.render import figures as F
@@ -424,9 +426,36 @@ def test_every_force_named_in_a_free_body_diagram_has_its_arrow(example_results,
                     if abs((complex(*a.xyann) + complex(*a.xy)) / 2 - at) < 1e-6 * span
                     and to_rgba(a.arrow_patch.get_edgecolor()) == to_rgba(t.get_color())
                     and inside(complex(*a.xy)) and inside(complex(*a.xyann))]
+            # a couple (M_b, M_I): a curved arrow of its colour through the label's anchor
+            mine += [p for p in ax.patches if hasattr(p, "get_path") and t.get_text().startswith("$M_")
+                     and to_rgba(p.get_edgecolor()) == to_rgba(t.get_color())
+                     and any(abs(complex(*v) - at) < 1e-6 * span for v in p.get_path().vertices)
+                     and inside(at)]
             if not mine:
                 bad.append(f"{name}: {t.get_text()}")
     assert not bad, bad
+
+
+@pytest.mark.parametrize("brief", ["shaper", "press"])
+def test_the_crank_free_body_carries_its_balancing_torque(example_results, monkeypatch,
+                                                          tmp_path, brief):
+    """review38: the crank's free body showed F_R32 at A and the frame's reaction, and no
+    M_b: not in equilibrium, while the equation under it solves ΣM = M_b + … = 0. Each
+    position's last force figure (the crank) names M_b, and a group whose equations carry an
+    inertia couple names it (M_I4 in shaper's group 3–4)."""
+    figs = _polygon_figures(example_results, monkeypatch, tmp_path, brief, "en")
+    last: dict[str, str] = {}
+    for name in figs:
+        m = re.fullmatch(r"(.*)_f(\d+)\.png", name)
+        if m and int(m[2]) >= int(last.get(m[1], "_f-1.png")[:-4].rpartition("_f")[2]):
+            last[m[1]] = name
+    assert last
+    for name in last.values():
+        texts = [t.get_text() for t in _labels(figs[name].axes[0])]
+        assert "$M_b$" in texts, (name, texts)
+    if brief == "shaper":
+        texts = [t.get_text() for n, fg in figs.items() if n.endswith("_f1.png") for t in _labels(fg.axes[0])]
+        assert "$M_{I4}$" in texts, texts
 
 
 def test_polygon_labels_write_primes_that_read_as_primes(example_results, monkeypatch, tmp_path):

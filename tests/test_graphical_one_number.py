@@ -71,3 +71,79 @@ def test_a_measured_value_prints_alike_in_the_polygon_and_comparison_tables(
         seen += s
     assert seen, "no comparison row found in the polygon tables"
     assert bad == [], bad
+
+
+# F_{R34} = -\frac{…}{123.0} = 123.5\ \mathrm{N}   (a force found by a moment equation)
+SOLVED = re.compile(r"\\Rightarrow\\; (F_\{R\w\w\}) = -\\frac\{[^$]*?\}\{[\d.]+\} = (-?[\d.]+)\\ \\mathrm\{N\}")
+
+
+def solved_mismatches(section: str) -> tuple[list, int]:
+    """(the forces whose moment equation prints other digits than the force polygon's table
+    of the same group, the number compared) in one position's section."""
+    rows: dict[str, str] = {}
+    for name, value in FORCE.findall(section):
+        rows.setdefault(name.strip("$"), value.strip().lstrip("-−"))
+    bad, seen = [], 0
+    for name, value in SOLVED.findall(section):
+        there = rows.get(name)
+        if there is None or not there[0].isdigit():
+            continue
+        seen += 1
+        if there.replace("\u202f", "") != value.lstrip("-"):
+            bad.append((name, value, there))
+    return bad, seen
+
+
+def test_the_solved_check_finds_the_reviewed_force():
+    old = (r"$$ \Sigma M_{C}(4) = F_{R34} \times 123.0 + (-19.62 \times 13.0) = 0 \;\Rightarrow\; "
+           r"F_{R34} = -\frac{-15154 - 0.0341 / 0.001}{123.0} = 123\ \mathrm{N} $$" "\n\n"
+           "|  | $F_{R34}$ | √ | 61.74 | 123.5 |\n")
+    assert solved_mismatches(old) == ([("F_{R34}", "123", "123.5")], 1)
+    assert solved_mismatches(old.replace("= 123\\ ", "= 123.5\\ ")) == ([], 1)
+
+
+@pytest.mark.parametrize("lang", ["zh", "en"])
+@pytest.mark.parametrize("name", LINKAGES)
+def test_a_force_found_by_a_moment_equation_prints_as_its_polygon_row(example_results, name, lang):
+    """review38: textbook_guide_bar φ45 printed "F_R34 = … = 123 N" and, in the next lines,
+    123.5 in its polygon row and in the crank's equation (slotter: 1137 and 1137.3)."""
+    md, _ = _markdown(example_results, name, lang)
+    bad = []
+    for section in re.split(r"\n## ", md):
+        bad += solved_mismatches(section)[0]
+    assert bad == [], bad
+
+
+# | $v_{B}$ | m/s | 1.17 | 1.17 | 0.0 | 0.0433 | 合格 |   (graphical, analytic, difference %)
+ROW = re.compile(r"^\| \$[^$|]+\$ \| [^|\n]+ \| (-?[\d.\u202f ]+) \| (-?[\d.\u202f ]+) \| (-?[\d.]+) \| "
+                 r"[^|\n]+ \| [^|\n]+ \|$", re.M)
+
+
+def off_rows(md: str) -> tuple[list, int]:
+    """(the comparison rows whose difference is not (graphical − analytic)/|analytic| of the
+    printed values, to the printed 0.1 %, the number of rows read)."""
+    bad, seen = [], 0
+    for g, a, d in ROW.findall(md):
+        g, a = (float(x.replace("\u202f", "").replace(" ", "")) for x in (g, a))
+        if a == 0:
+            continue
+        seen += 1
+        if abs(100 * (g - a) / abs(a) - float(d)) > 0.05 + 1e-9:
+            bad.append((g, a, d))
+    return bad, seen
+
+
+def test_the_difference_check_finds_the_reviewed_row():
+    assert off_rows("| $v_{B}$ | m/s | 1.17 | 1.17 | 0.4 | 0.0433 | 合格 |\n") == ([(1.17, 1.17, "0.4")], 1)
+    assert off_rows("| $v_{B}$ | m/s | 1.17 | 1.17 | 0.0 | 0.0433 | 合格 |\n") == ([], 1)
+
+
+@pytest.mark.parametrize("lang", ["zh", "en"])
+@pytest.mark.parametrize("name", LINKAGES)
+def test_a_comparison_difference_follows_from_its_printed_values(example_results, name, lang):
+    """review38: 92 of 726 comparison rows gave a difference a teacher cannot get from the
+    row ("1.17 | 1.17 | 0.4 %", "2.60 | 2.55 | 1.7 %"): it was the unrounded values'."""
+    md, _ = _markdown(example_results, name, lang)
+    bad, seen = off_rows(md)
+    assert seen
+    assert bad == [], bad

@@ -418,6 +418,21 @@ def _force_figure(path: Path, points: dict, length_scale: float, fg, members: di
                 _arrow(a1, z, z + L * value / abs(value), "tab:red", label=sym(name),
                        labels=labels1)
                 lines1.append((z, z + L * value / abs(value)))
+        # the couples as curved arrows in their sense: the inertia couples M_I (terms of the
+        # moment equations) on their links, and the crank's balancing torque M_b at its pivot
+        # (review38: the crank's free body showed F_R32 and no M_b, not in equilibrium)
+        couples: dict[str, tuple[complex, float, str]] = {}
+        for m in fg.moments:
+            for term in m.terms:
+                link = re.fullmatch(r"MI(\w+)", term.name)
+                chain = [P[p] for p in members.get(link[1] if link else m.link, ()) if p in P]
+                if not term.arm and term.value and chain and term.name not in couples:
+                    couples[term.name] = (np.mean(chain) / length_scale, term.value, "tab:blue")
+            if m.unknown == "Mb" and fg.balancing_torque and m.point in P:
+                couples["Mb"] = (P[m.point] / length_scale, fg.balancing_torque, "tab:red")
+        for name, (z, value, colour) in couples.items():
+            lines1 += _couple_arrow(a1, z, COUPLE_RADIUS * span, value > 0, colour, sym(name),
+                                    labels1)
         # room round the links and arrows for the names of the outermost points
         ends = [z for seg in lines1 for z in seg] or [0j]
         lo = complex(min(z.real for z in ends), min(z.imag for z in ends))
@@ -486,6 +501,28 @@ def _force_figure(path: Path, points: dict, length_scale: float, fg, members: di
 
 #: Margin round the free-body diagram's links and arrows (fraction of the data extent).
 FBD_MARGIN = 0.16
+
+#: The radius of a couple's curved arrow in a free-body diagram (fraction of the links' span).
+COUPLE_RADIUS = 0.09
+
+
+def _couple_arrow(ax, z: complex, r: float, ccw: bool, color: str, label: str,
+                  labels: list) -> list[tuple[complex, complex]]:
+    """A couple as a curved arrow round ``z`` (three quarters of a circle of radius ``r``,
+    its head in the couple's sense), its name outside the arc's middle (collected in
+    ``labels``); returns the arc's chords, which other labels keep clear of."""
+    from matplotlib.patches import FancyArrowPatch
+    from matplotlib.path import Path as MplPath
+
+    t = np.linspace(np.radians(135), np.radians(135 + 270), 37)
+    arc = z + r * np.exp(1j * (t if ccw else t[::-1]))
+    ax.add_patch(FancyArrowPatch(path=MplPath(np.column_stack([arc.real, arc.imag])),
+                                 arrowstyle="-|>", color=color, lw=1.0, mutation_scale=HEAD))
+    ax.update_datalim([(z.real - r, z.imag - r), (z.real + r, z.imag + r)])
+    out = np.exp(1j * np.radians(135 + 135))
+    labels.append(Label(f"${mpl_math(label)}$", z + r * out, (out, out * 1j, -out * 1j),
+                        {"fontsize": LABEL_SIZE, "color": color}))
+    return list(zip(arc[:-1], arc[1:]))
 
 #: The force polygon's panel: its short extent at least this fraction of the long one, and
 #: this margin round it (of the long extent) — room for the force names, which are longer
@@ -745,6 +782,7 @@ def _forces(pos, lang: str, weights: dict[str, int] | None = None) -> list[dict]
     # a reaction read off an earlier group's polygon, as its table prints it: the later
     # group's known force of the pair (F_R54 of F_R45) prints the same digits (issue 19)
     measured: dict[str, str] = {}
+    floors = []         # each group's digit floors and the known forces' texts they gave
     for n, fg in enumerate(pos.forces):
         pairs = {ld.name: measured[_pair(ld.name)] for lds in fg.loads.values() for ld in lds
                  if _pair(ld.name) in measured}
@@ -760,6 +798,7 @@ def _forces(pos, lang: str, weights: dict[str, int] | None = None) -> list[dict]
             if need == least:
                 break
             least = need
+        floors.append(({**seed, **least}, shown))
         # a force known to be zero (a tangential component no known force calls for, its
         # moment equation said so) is no side of the polygon: left out of its vector
         # equation and its table, as the figure leaves it out (issue 19)
@@ -809,6 +848,23 @@ def _forces(pos, lang: str, weights: dict[str, int] | None = None) -> list[dict]
         best = max((r[3] for r in rows), key=lambda t: _digits(t))
         for r in rows:
             r[3] = best
+    # the moment equation that finds such a force gives it with those digits too
+    # (textbook_guide_bar φ45: "F_R34 = … = 123 N", then 123.5 in its rows and in the crank's
+    # equation; review38), where its printed chain still gives them and the known forces
+    # keep their texts
+    for fc, fg, (floor, shown) in zip(out, pos.forces, floors):
+        results = {}
+        for m in fg.moments:
+            key = float(f"{abs(m.result):.9g}")
+            if m.arm and m.unknown != "Pb" and key in same and abs(m.result) < 1e6:
+                best = same[key][0][3].replace(GROUP, "")
+                if _digits(best) > _digits(_num(m.result)):
+                    results[m.unknown] = ("-" if m.result < 0 else "") + best
+        if results:
+            again: dict[str, str] = {}
+            moments, couple = _group_moments(fg, mu_l, lang, floor, again, results)
+            if again == shown:
+                fc["moments"], fc["couple"] = moments, couple
     # a known force's length, drawn at |F|/μF: with the digits that give its value
     for fc, fg in zip(out, pos.forces):
         for row, v in zip(fc["rows"], _sides(fg)):
@@ -834,8 +890,11 @@ def _force_of(fg, name: str) -> float:
     return next(t.force for m in fg.moments for t in m.terms if t.name == name and t.arm)
 
 
-def _group_moments(fg, mu_l, lang: str, least: dict, shown: dict) -> tuple[list, str | None]:
-    """The group's moment equations as (equation, result, note) and the couple's symbol."""
+def _group_moments(fg, mu_l, lang: str, least: dict, shown: dict,
+                   results: dict | None = None) -> tuple[list, str | None]:
+    """The group's moment equations as (equation, result, note) and the couple's symbol;
+    ``results``: a force's result as it is to print (its carried digits), by default
+    :func:`_num`'s."""
     moments, couple = [], None
     for m in fg.moments:
         u = sym(m.unknown)
@@ -851,7 +910,7 @@ def _group_moments(fg, mu_l, lang: str, least: dict, shown: dict) -> tuple[list,
                             f"{{{arm}}} = {_num(m.result)}" r"\ \mathrm{N}", None, None))
             continue
         where = f"\\Sigma M_{{{m.point}}}" + ("" if m.unknown == "Mb" else f"({m.link})")
-        res = _num(m.result)
+        res = (results or {}).get(m.unknown) or _num(m.result)
         couples = sum(t.value for t in m.terms if not t.arm)
         if not m.arm:
             # a moment unknown (M_b, a slider's couple): -(products x mu_l + couples)
@@ -903,6 +962,21 @@ def _printed(pos, forces: list[dict]) -> dict[str, str]:
     return out
 
 
+def _printed_difference(graphical: str, analytic: str, exact: float) -> float:
+    """(graphical − analytic)/|analytic| of two printed values; ``exact`` (the unrounded
+    values' difference) where one has a power of ten or the analytic one prints as 0."""
+    def value(text: str) -> float | None:
+        text = text.replace(GROUP, "").replace(" ", "").replace("−", "-")
+        try:
+            return float(text)
+        except ValueError:
+            return None
+    g, a = value(graphical), value(analytic)
+    if g is None or a is None or a == 0:
+        return exact
+    return (g - a) / abs(a)
+
+
 def _compare(pos, lang: str, printed: dict[str, str] | None = None) -> list[list[str]]:
     """The comparison table's rows; a force listed in the polygon tables (``printed``, by
     symbol: itself or its reaction) with the digits it is listed with there (one measured
@@ -918,10 +992,15 @@ def _compare(pos, lang: str, printed: dict[str, str] | None = None) -> list[list
         ok = abs(c.graphical - c.analytic) <= c.tolerance
         _ = tr(lang)
         mark = _("PASS") if ok else _.pgettext("graphical", "beyond")
-        # a value smaller than the drawing's resolution has no meaningful relative error
-        diff = "—" if abs(c.analytic) < c.tolerance else f(100 * c.difference, 1)
         shown = printed.get(q, printed.get(_pair(q) or "", _numg(c.graphical)))
-        rows.append([name, c.unit, shown, _numg(c.analytic), diff, _numg(c.tolerance), mark])
+        analytic = _numg(c.analytic)
+        # a value smaller than the drawing's resolution has no meaningful relative error; the
+        # difference is the printed values' (a teacher recomputes it from the row: "1.17 |
+        # 1.17 | 0.0", not the 0.4 of the unrounded values; review38), a value with a power
+        # of ten aside
+        diff = "—" if abs(c.analytic) < c.tolerance else f(100 * _printed_difference(
+            shown, analytic, c.difference), 1)
+        rows.append([name, c.unit, shown, analytic, diff, _numg(c.tolerance), mark])
     return rows
 
 
