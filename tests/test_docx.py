@@ -604,15 +604,18 @@ def word_layout_defects(docx: Path, pdf: Path) -> dict[str, list]:
     the comment above): characters outside the text block, equation numbers over words,
     contents entries without a page number, blank pages, captioned tables split badly
     (:func:`_table_breaks`), figure captions parted from their figures, a page ending in a
-    lead-in ("…：" / "…:", as tests/test_typeset.py checks the PDF). Called for every example brief × language by
+    lead-in ("…：" / "…:", as tests/test_typeset.py checks the PDF), a heading with fewer than
+    three rows of its text under it at a page foot (tests/test_typeset.py's
+    heading_at_page_foot, on LibreOffice's PDF outline). Called for every example brief × language by
     tests/test_typeset.py::test_every_report_stays_in_the_text_block on the .docx it renders
     (one render of each report serves both files' checks)."""
-    from tests.test_typeset import colon_at_page_foot, numbers_over_words
+    from tests.test_typeset import colon_at_page_foot, heading_at_page_foot, numbers_over_words
 
     found = {"outside": _outside_docx_block(pdf), "numbers over words": numbers_over_words(pdf),
              "contents": _contents_without_page_numbers(pdf), "blank pages": _blank_pages(pdf),
              "tables": _table_breaks(docx, pdf), "figure captions": _figure_captions_alone(pdf),
-             "lead-ins at a page foot": colon_at_page_foot(pdf)}
+             "lead-ins at a page foot": colon_at_page_foot(pdf),
+             "headings at a page foot": heading_at_page_foot(pdf)}
     return {name: v for name, v in found.items() if v}
 
 
@@ -920,3 +923,52 @@ def test_a_lead_in_ending_in_a_colon_is_kept_with_what_it_introduces(tmp_path):
     for table in re.findall(r"<w:tbl>.*?</w:tbl>", document, flags=re.DOTALL):
         if "说明：" in table:
             assert "<w:keepNext" not in _rows(table)[-1]
+
+
+def test_a_heading_keeps_three_rows_of_its_text(tmp_path):
+    """Issue 19 (Word, laid out by LibreOffice): "8.6 Stage 3: closed helical gear pair" stood
+    at the foot of die_cutter en p.33 over two lines of its four-line paragraph, "References"
+    at the foot of shaper en p.45 over a two-line first entry: the heading style keeps a
+    heading with its next paragraph only, and widow control lets two lines of it stay. The
+    blocks after a heading are kept with it until three rows (HEADING_ROWS) of text are: a
+    paragraph of at most WHOLE_LINES lines whole (w:keepLines), and, while the rows are fewer,
+    with the next block (w:keepNext; on every paragraph of a numbered formula's table); a
+    long paragraph, a table caption and what follows them are left as they are."""
+    from mechdesign.render.docx_layout import HEADING_ROWS, WHOLE_LINES
+
+    assert HEADING_ROWS == 3 and WHOLE_LINES >= 4
+    words = "the gear pair is checked for contact and root bending fatigue "   # 62 characters
+    document = _sample_document(tmp_path, (
+        "# Gears\n\n## Velocities\n\nLength scale 0.5 m/mm.\n\n$$ v_B = v_A + v_{BA} $$\n\n"
+        "| a | b |\n|:--|--:|\n| 1 | 2 |\n\n: Velocities\n\n"
+        # about four lines of 12 pt Times on 453.5 pt (62 characters ≈ 31 em, 37.8 em a line)
+        "## Stage 3\n\n" + "Stage three: " + words * 4 + "\n\nNext paragraph of the section.\n\n"
+        "## Long\n\n" + words * 12 + "\n\nAfter the long one.\n\n"
+        "## References\n\n[1] First entry, " + words + "\n\n[2] Second entry.\n\n[3] Third entry.\n"),
+        {**METADATA, "lang": "en"})
+    blocks = re.findall(r"<w:tbl>.*?</w:tbl>|<w:p>(?:(?!</w:p>).)*</w:p>", document, flags=re.DOTALL)
+    body = blocks[next(k for k, b in enumerate(blocks) if "Heading1" in b and "Gears" in b):]
+
+    def after(title: str, n: int) -> list[str]:
+        k = next(k for k, b in enumerate(body) if re.search(r'w:val="Heading\d"', b) and title in b)
+        return [b for b in body[k + 1:] if _paragraph_texts(b) != [""] or "<w:tbl>" in b][:n]
+
+    # a one-line paragraph and a formula (two rows): both kept with the next block, the
+    # formula's table on every paragraph; the data table's caption is kept by its style
+    line, formula, caption = after("Velocities", 3)
+    assert "<w:keepNext /><w:keepLines />" in line
+    assert "EquationTable" in formula and all(
+        "<w:keepNext />" in p for p in re.findall(r"<w:p>.*?</w:p>", formula, flags=re.DOTALL))
+    assert "TableCaption" in caption and "<w:keepLines" not in caption
+    # a four-line paragraph: kept whole, three rows reached, the next paragraph left alone
+    four, nxt = after("Stage 3", 2)
+    assert "<w:keepLines />" in four and "<w:keepNext" not in four
+    assert "<w:keep" not in nxt
+    # a long paragraph: widow control's two lines are all Word can do
+    long, nxt = after("Long", 2)
+    assert "<w:keep" not in long and "<w:keep" not in nxt
+    # a two-line entry, then a one-line one: three rows
+    first, second, third = after("References", 3)
+    assert "<w:keepNext /><w:keepLines />" in first
+    assert "<w:keepLines />" in second and "<w:keepNext" not in second
+    assert "<w:keep" not in third

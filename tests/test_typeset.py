@@ -1079,6 +1079,13 @@ HOLES_OPEN: set[tuple[str, str]] = set()
 # before eq. 65; and, seen since the check reads an equation's subscript rows as part of it,
 # die_cutter en fig. 6 between eqs. 16 and 17, cam_7_3 zh/en fig. 1 between eqs. 8 and 9)
 DERIVATION_OPEN: set[tuple[str, str]] = set()
+# Word, as LibreOffice 7.4 lays it out: a heading at a page foot with fewer than three rows
+# under it. render/docx_layout.keep_headings_with_text keeps a heading's first blocks with
+# it, a numbered formula's table by w:keepNext on all its paragraphs, which Word reads as
+# "keep the table with the next paragraph"; LibreOffice does not (its import sets no keep
+# on the table): "5.1.1 Velocities", a one-line scale, formula (8), then the table's
+# caption on the next page (crank_rocker en p.12, die_cutter en p.11, textbook en p.10).
+WORD_HEADINGS_OPEN = {("crank_rocker", "en"), ("die_cutter", "en"), ("textbook_guide_bar", "en")}
 
 @pytest.mark.e2e
 @pytest.mark.parametrize("lang", ["zh", "en"])
@@ -1159,7 +1166,10 @@ def test_every_report_stays_in_the_text_block(brief, lang, tmp_path, libreoffice
     from tests.test_docx import SOFFICE, libreoffice_pdf, word_layout_defects
     if SOFFICE is not None:
         word_pdf = libreoffice_pdf(out / "report.docx", tmp_path / "word", libreoffice_profile)
-        assert word_layout_defects(out / "report.docx", word_pdf) == {}
+        defects = word_layout_defects(out / "report.docx", word_pdf)
+        heads = defects.pop("headings at a page foot", [])
+        assert (heads != []) if (brief, lang) in WORD_HEADINGS_OPEN else (heads == []), heads
+        assert defects == {}
 
 
 @pytest.fixture(scope="module")

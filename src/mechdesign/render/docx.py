@@ -36,8 +36,8 @@ from pathlib import Path
 
 from ..fileio import atomic_path
 from .docx_math import align_broken_equations, group_scripted_brackets
-from .docx_layout import (centre_tables, keep_lead_ins, keep_table_rows, separate_tables,
-                          split_inline_formula_lists)
+from .docx_layout import (centre_tables, keep_headings_with_text, keep_lead_ins, keep_table_rows,
+                          separate_tables, split_inline_formula_lists)
 from .docx_toc import body_on_a_new_page, fill_table_of_contents
 from .mathbreak import break_display_math
 
@@ -322,7 +322,8 @@ def _finish(docx: Path, *, title: str, author: str, subject: str) -> None:
     base a delimiter (:mod:`.docx_math`); the table of
     contents holds its entries and their page numbers and the body starts on the next page
     (:mod:`.docx_toc`); table rows do not split, short tables stay on one page, a lead-in
-    ending in a colon stays with what it introduces and a list of
+    ending in a colon stays with what it introduces, a heading keeps three rows of its text
+    and a list of
     formulas in one inline formula may break between its items, tables are centred and a numbered
     formula after a table stays a table of its own (:mod:`.docx_layout`); a negative number's
     hyphen is the minus sign (:func:`minus_signs`); "N·m", "s²", "25°"
@@ -340,7 +341,7 @@ def _finish(docx: Path, *, title: str, author: str, subject: str) -> None:
         elif name == "word/document.xml":
             xml = align_broken_equations(data.decode("utf-8"))
             xml = body_on_a_new_page(fill_table_of_contents(group_scripted_brackets(xml)))
-            xml = split_inline_formula_lists(keep_lead_ins(keep_table_rows(xml)))
+            xml = split_inline_formula_lists(keep_headings_with_text(keep_lead_ins(keep_table_rows(xml))))
             xml = separate_tables(centre_tables(xml))
             data = latin_marks_in_latin_font(minus_signs(xml)).encode("utf-8")
         elif name == "word/settings.xml":

@@ -32,6 +32,20 @@
     Touching tables of different styles are kept apart by an empty paragraph of 6 pt.
     (LibreOffice 7 kept them apart and centred the formula on the text block: the formula
     "right of centre" of review36, shaper zh (12)–(15), was right of the left-set table.)
+:func:`keep_headings_with_text`
+    A heading's style keeps it with the next paragraph only (reference.docx: w:keepNext),
+    and Word's widow control lets that paragraph leave two lines under it: a heading stood
+    at a page foot over one or two rows of its text, its section on the next page
+    ("References" and the first two-line reference, "8.6 Stage 3…" and two lines of a
+    paragraph; LibreOffice's layout of die_cutter, shaper, slotter en). The PDF keeps 9 em
+    of its section with a heading (templates/report.typ keep-room). The blocks after a
+    heading are kept with it until :data:`HEADING_ROWS` rows of text are: a short
+    paragraph (at most :data:`WHOLE_LINES` lines, estimated) is kept whole
+    (``w:keepLines``) and, while the rows are fewer, with the next block (``w:keepNext``);
+    a numbered formula's table the same, on all its paragraphs (Word keeps such a table
+    with the next paragraph; LibreOffice 7.4 does not, its import gives the table no keep:
+    tests/test_typeset.py WORD_HEADINGS_OPEN). A caption, a figure, a data table or another
+    heading ends the run: each is kept with its own content already.
 """
 from __future__ import annotations
 
@@ -136,7 +150,8 @@ def split_inline_formula_lists(document_xml: str) -> str:
     return "".join(part if k % 2 else _INLINE_MATH.sub(split, part) for k, part in enumerate(parts))
 
 
-__all__ = ["SHORT_TABLE_ROWS", "keep_lead_ins", "keep_table_rows", "split_inline_formula_lists"]
+__all__ = ["HEADING_ROWS", "SHORT_TABLE_ROWS", "keep_headings_with_text", "keep_lead_ins", "keep_table_rows",
+           "split_inline_formula_lists"]
 
 
 _TBL_PR = re.compile(r"<w:tbl><w:tblPr>(.*?)</w:tblPr>", re.DOTALL)
@@ -207,3 +222,86 @@ def keep_lead_ins(document_xml: str) -> str:
     for table, part in zip(tables, parts[1:]):
         out += [table, _BODY_PARAGRAPH.sub(lead_in, part)]
     return "".join(out)
+
+
+#: Rows of text a heading keeps with it on its page (tests/test_typeset.py MIN_ROWS: a heading
+#: with fewer rows under it at a page foot is a defect).
+HEADING_ROWS = 3
+#: A paragraph after a heading of at most this many lines (estimated) is kept whole; a
+#: longer one may leave two lines under the heading (Word's widow control).
+WHOLE_LINES = 6
+#: Width of a body line [em of the 12 pt body text]: A4 with 2.5 cm margins, 453.5 pt.
+_LINE_EM = 453.5 / 12.0
+_BLOCK = re.compile(r"<w:tbl>.*?</w:tbl>|<w:p>(?:(?!</w:p>).)*</w:p>|<w:p\s*/>", re.DOTALL)
+_STYLE_OF = re.compile(r'<w:pStyle w:val="([^"]*)"')
+#: paragraphs that end a heading's run: kept with their own table or figure, or a heading
+_OWN_KEEP = re.compile(r"Heading\d|TableCaption|ImageCaption|CaptionedFigure|Figure|SourceCode")
+
+
+def _lines(paragraph: str) -> int:
+    """Lines of a body paragraph, estimated: a CJK character 1 em, any other 0.5 em, the
+    first-line indent 2 em."""
+    text = "".join(_TEXT.findall(paragraph))
+    if not text.strip():
+        return 0
+    em = 2.0 + sum(1.0 if ord(c) >= 0x2E80 else 0.5 for c in text)
+    return max(1, -int(-em // _LINE_EM))
+
+
+def _keep_lines(paragraph: str) -> str:
+    """``paragraph`` given ``w:keepLines`` (after w:keepNext: the schema's order)."""
+    if "<w:keepLines" in paragraph:
+        return paragraph
+    if "<w:keepNext />" in paragraph:
+        return paragraph.replace("<w:keepNext />", "<w:keepNext /><w:keepLines />", 1)
+    if not paragraph.startswith("<w:p><w:pPr>"):
+        paragraph = paragraph.replace("<w:p>", "<w:p><w:pPr></w:pPr>", 1)
+    return _PPR.sub(lambda m: f"<w:pPr>{m.group(1)}<w:keepLines />", paragraph, count=1)
+
+
+def keep_headings_with_text(document_xml: str) -> str:
+    """The blocks after every heading of the body kept with it until it has
+    :data:`HEADING_ROWS` rows of text (see the module's docstring)."""
+    blocks = list(_BLOCK.finditer(document_xml))
+    new: dict[int, str] = {}
+    for k, m in enumerate(blocks):
+        style = _STYLE_OF.search(m.group(0)[:300])
+        if not (m.group(0).startswith("<w:p>") and style and re.fullmatch(r"Heading\d", style.group(1))):
+            continue
+        rows = 0
+        for j in range(k + 1, len(blocks)):
+            block = blocks[j].group(0)
+            if block.startswith("<w:tbl>"):
+                if '<w:tblStyle w:val="EquationTable" />' not in block:
+                    break
+                rows += len(_rows_of(block))
+                if rows >= HEADING_ROWS:
+                    break
+                new[j] = _keep_with_next(block)
+                continue
+            style = _STYLE_OF.search(block[:300])
+            if style and _OWN_KEEP.fullmatch(style.group(1)):
+                break
+            lines = _lines(block)
+            if lines == 0:
+                continue                      # an empty paragraph (a table separator)
+            if lines > WHOLE_LINES:
+                break
+            block = _keep_lines(block)
+            rows += lines
+            if rows < HEADING_ROWS and "<w:keepNext" not in block:
+                block = _keep_with_next(block)
+            new[j] = block
+            if rows >= HEADING_ROWS:
+                break
+    if not new:
+        return document_xml
+    out, start = [], 0
+    for j in sorted(new):
+        out += [document_xml[start:blocks[j].start()], new[j]]
+        start = blocks[j].end()
+    return "".join(out) + document_xml[start:]
+
+
+def _rows_of(table: str) -> list[str]:
+    return re.findall(r"<w:tr>.*?</w:tr>", table, flags=re.DOTALL)
