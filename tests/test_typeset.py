@@ -1056,8 +1056,9 @@ WIDE_GAPS_OPEN: set[tuple[str, str]] = set()
 # preview, planned to fill the room under the sheets' table (preview-heights), did not fit
 # under the line after the table that cites the previews ("各图纸的预览见图 19…") and started
 # the next page whole (the previews are now planned from that line's end: mark-previews)
-# Open: textbook_guide_bar zh p.8 since text37 (chapter 1's data table moves its figures)
-HALF_EMPTY_OPEN: set[tuple[str, str]] = {("textbook_guide_bar", "zh")}
+# textbook_guide_bar zh p.8 (half empty since text37's chapter-1 data table) is gone since
+# text38: chapter 2 refers to that table instead of repeating its data in three more tables
+HALF_EMPTY_OPEN: set[tuple[str, str]] = set()
 # A figure between the parts of a split table whose text stands BEFORE the table is held back
 # past the table (templates/report.typ: figure-held; the figures whose text follows a split
 # table go to the foot of its last page: after-split). Where typst's five passes do not settle

@@ -451,8 +451,8 @@ def stage_designs(d, lang: str, gear_pair_last: bool = False) -> list[dict]:
         # bearing A at x = 0, B at the span, overhung parts outside them)
         if sh is d.shaft_designs[0]:
             text.append(_("Largest equivalent moment $M$ = {M} N·m at $x$ = {x} mm ($x$ is measured "
-                          "along the shaft from bearing $A$, bearing $B$ at $x$ = $L$, the span; overhung parts "
-                          "sit outside the bearings, at $x$ < 0 or $x$ > $L$); bearing reactions "
+                          "along the shaft from bearing $A$, bearing $B$ at $x = L$, the span; overhung parts "
+                          "sit outside the bearings, at $x < 0$ or $x > L$); bearing reactions "
                           "(strength case):", x=f(res.critical.x * MM, 0), M=sig(res.critical.M)))
         else:
             text.append(_("Largest equivalent moment $M$ = {M} N·m at $x$ = {x} mm; bearing reactions "
