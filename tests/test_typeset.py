@@ -1079,7 +1079,11 @@ HOLES_OPEN: set[tuple[str, str]] = set()
 # it goes where its text ends (session 37: die_cutter en fig. 16 above eqs. 129-133, press en
 # before eq. 65; and, seen since the check reads an equation's subscript rows as part of it,
 # die_cutter en fig. 6 between eqs. 16 and 17, cam_7_3 zh/en fig. 1 between eqs. 8 and 9)
-DERIVATION_OPEN: set[tuple[str, str]] = set()
+# Open since text38: linkage_sixbar en p.11, fig. 8 (group 5-6, cited on p.10) floats to the top
+# of p.11 between eqs. 16 and 17 of group 3-4 (chapter 2 no longer repeats chapter 1's data,
+# so the text moved up; the run 16-17 is too tall to be kept whole, and a figure floated on
+# from an earlier page still goes to the top of a page that starts mid-run: the figure rule)
+DERIVATION_OPEN: set[tuple[str, str]] = {("linkage_sixbar", "en")}
 
 @pytest.mark.e2e
 @pytest.mark.parametrize("lang", ["zh", "en"])
