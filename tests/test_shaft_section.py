@@ -61,3 +61,25 @@ def test_the_shaper_shaft_one_by_hand(example_results):
     assert "(20 mm < 30 mm)" in why and "$x$ = 106 mm" in why
     md, _ = _markdown(example_results, "shaper", "zh")
     assert "（外伸端），$d$ = 20 mm。该截面弯矩（0 N·m）小于 $x$ = 106 mm 处" in md
+
+
+_ORIGIN = {"zh": "$x$ 沿轴线自轴承 $A$ 量起", "en": "$x$ is measured along the shaft from bearing $A$"}
+
+
+@pytest.mark.parametrize("lang", ["zh", "en"])
+@pytest.mark.parametrize("name", ["shaper", "furnace_drive", "die_cutter"])
+def test_the_text_says_once_where_x_is_measured_from(example_results, name, lang):
+    """"x = 106 mm" from where? The shaft design puts bearing A at x = 0 and B at the span:
+    by statics (moments about bearing A, horizontal plane) Σ x·F_h + L·R_Bh = 0 and
+    R_Ah + R_Bh + ΣF_h = 0 hold with the loads' x as stored, so x is measured from A. The
+    text says so once, at the first shaft, before its first x."""
+    md, _ = _markdown(example_results, name, lang)
+    for sh in _shafts(example_results(name)):
+        res, span = sh.result, sh.span
+        fh = sum(ld.Fh for ld in sh.loads)
+        scale = max(abs(ld.Fh) for ld in sh.loads) or 1.0
+        assert abs(sum(ld.x * ld.Fh for ld in sh.loads) + span * res.RBh) <= 1e-9 * scale * span
+        assert abs(res.RAh + res.RBh + fh) <= 1e-9 * scale
+    assert md.count(_ORIGIN[lang]) == 1
+    first_x = md.index("$x$ = ", md.index("最大当量弯矩" if lang == "zh" else "Largest equivalent moment"))
+    assert md.index(_ORIGIN[lang]) > first_x - 40 and md.index(_ORIGIN[lang]) < first_x + 200

@@ -447,9 +447,17 @@ def stage_designs(d, lang: str, gear_pair_last: bool = False) -> list[dict]:
             text.append(_("Step {k}: {sen}.", k=k, sen=said, szh=said))
         # the reactions displayed: four "R = … N" runs in a justified line spread its few word
         # spaces (tests/test_typeset.py wide_word_gaps)
-        text.append(_("Largest equivalent moment $M$ = {M} N·m at $x$ = {x} mm; bearing reactions "
-                      "(strength case):", x=f(res.critical.x * MM, 0),
-                      M=sig(res.critical.M)))
+        # where x is measured from, said once, at the first shaft (stages/drive_strength._place:
+        # bearing A at x = 0, B at the span, overhung parts outside them)
+        if sh is d.shaft_designs[0]:
+            text.append(_("Largest equivalent moment $M$ = {M} N·m at $x$ = {x} mm ($x$ is measured "
+                          "along the shaft from bearing $A$, bearing $B$ at $x = L$, the span; overhung parts "
+                          "sit outside the bearings, at $x < 0$ or $x > L$); bearing reactions "
+                          "(strength case):", x=f(res.critical.x * MM, 0), M=sig(res.critical.M)))
+        else:
+            text.append(_("Largest equivalent moment $M$ = {M} N·m at $x$ = {x} mm; bearing reactions "
+                          "(strength case):", x=f(res.critical.x * MM, 0),
+                          M=sig(res.critical.M)))
         text.append("$$ " + r",\quad ".join(
             rf"R_{{{k}}} = {f(v, 1)}\ \mathrm{{N}}"
             for k, v in (("AH", res.RAh), ("AV", res.RAv), ("BH", res.RBh), ("BV", res.RBv))) + " $$")

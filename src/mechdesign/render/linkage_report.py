@@ -383,9 +383,11 @@ def realised_flywheel(fly, n_real: float | None, _) -> str | None:
 
 def linkage_context(model, k, f_, fly, v, figures: dict, lang: str,
                     prefix: str = "linkage", title: str | None = None,
-                    flywheel_realised_rpm: float | None = None) -> dict:
+                    flywheel_realised_rpm: float | None = None, given: str | None = None) -> dict:
     """Strings and rows for ``linkage_section``; ``title`` is the chapter heading;
-    ``flywheel_realised_rpm``: the flywheel shaft's speed as the drive realises it."""
+    ``flywheel_realised_rpm``: the flywheel shaft's speed as the drive realises it;
+    ``given``: the label of chapter 1's data table where it already lists the frame points,
+    lengths, masses and resistances (the section then refers to it instead of repeating them)."""
     _ = tr(lang)
     n = k.grid_size
     scale, units = _units(k)
@@ -454,7 +456,7 @@ def linkage_context(model, k, f_, fly, v, figures: dict, lang: str,
                 **{key.removeprefix(prefix + "_"): path for key, path in figures.items()
                    if key.startswith(prefix + "_")}},
         "frame_rows": frame_rows, "link_rows": _link_rows(model, lang),
-        "mass_rows": mass_rows, "res_rows": res_rows,
+        "mass_rows": mass_rows, "res_rows": res_rows, "given": given,
         "speed": f(omega * 30 / np.pi, 2), "omega": sig(omega, group=False),
         "sense": _("clockwise") if model.crank_omega < 0 else _("counter-clockwise"),
         "output": md_names(model.output.name),

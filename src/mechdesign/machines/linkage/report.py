@@ -80,6 +80,11 @@ def data_rows(brief, lang: str) -> list[list[str]]:
         rows.append(["$F_r$", _("resistance on link {link} at {point}, {angle}° from +$x$: working / "
                                 "return stroke", link=md_text(r.link), point=md_point(r.point),
                                 angle=_g(r.direction_deg)), f"{_g(r.working_N)} / {_g(r.return_N)}", "N"])
+        # where the working resistance acts, as a window of the output's displacement
+        for window, unit in ((r.active_mm, "mm"), (r.active_deg, "°")):
+            if window is not None:
+                rows.append(["—", _("where the working resistance acts: output displacement from "
+                                    "position 1"), f"{_g(window[0])} – {_g(window[1])}", unit])
     if lk.pressure_angle_max_deg is not None:
         rows.append(["$[\\alpha]$", _("allowed pressure angle (working stroke)"),
                      _g(lk.pressure_angle_max_deg), "°"])
@@ -100,7 +105,8 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
     _ = tr(lang)
     k, v = r["linkage"], r["linkage_verification"]
     lk = linkage_context(r["params"], k, r["linkage_forces"], r["linkage_flywheel"], v,
-                         figures, lang, title=_.pgettext("linkage machine", "Linkage analysis"))
+                         figures, lang, title=_.pgettext("linkage machine", "Linkage analysis"),
+                         given="tbl:data")
     warnings = [md_text(w.text(lang)) for w in v.warnings]
     return {"meta": md_meta(brief.report, lang), "linkage": lk, "data_rows": data_rows(brief, lang),
             "asked_points": tr(lang).pgettext("list", ", ").join(md_point(p) for p in brief.analysis.points), "verify_rows": verification_rows(v, lang, k),
