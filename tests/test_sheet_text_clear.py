@@ -119,6 +119,45 @@ def test_a_label_with_no_free_spot_goes_on_a_leader_with_last_leader():
     assert placer.crossed(box, LabelPlacer(crowded())._drawn_points()) == 0
 
 
+def test_a_label_keeps_the_word_space_from_the_other_texts():
+    """ISO 3098-1 / GB/T 14691: the space between words is 0.6 h (type B). A label's first
+    spot, left of its point, lies 0.7 mm under a text already there (as "n4′" under
+    "n4s4′" on the shaper's acceleration polygon): it reads as the second line of a note.
+    The label goes where it keeps 0.6 × 2.5 = 1.5 mm from that text, and is listed among
+    the sheet's labels; a text the caller places is not a label."""
+    s = Sheet("A3")
+    placer = LabelPlacer(s)
+    h = 2.5
+    w = text_width("n4'", h)
+    first = (100 - 1.2 - w, 100 - h / 2, 100 - 1.2, 100 + h / 2)   # the first spot's box
+    placer.text(complex(first[0], first[3] + 0.7), "n4s4'", h, "left", "bottom")
+    placer.place(100 + 100j, "n4'", h, prefer=-1, gap=1.2, apart=True)
+    note, label = [e for e in s.entities if isinstance(e, Text)]
+    a = text_box(note.position, note.text, note.height, note.halign, note.valign)
+    b = text_box(label.position, label.text, label.height, label.halign, label.valign)
+    apart = max(b[0] - a[2], a[0] - b[2], b[1] - a[3], a[1] - b[3])
+    assert apart >= 0.6 * h - 1e-9
+    assert abs(label.position - (100 + 100j)) < 10              # still beside its point
+    assert len(s.labels) == 1 and s.labels[0] is label
+
+
+def test_a_label_on_a_leader_keeps_the_word_space_too():
+    """The force polygons' labels that find no spot beside their vector go on a leader; its
+    text keeps 0.6 h from the texts already there (F_R35 and F_R65 were 0.5 mm apart)."""
+    s = Sheet("A3")
+    placer = LabelPlacer(s)
+    h = 2.5
+    # the leader's first elbow is 8 mm straight up: its text from y = 108.8 to 111.3 over
+    # an underline at 108 (the room kept, 108 … 111.7); a text 0.3 mm above that room
+    placer.text(101 + 112.0j, "FR65", h, "left", "bottom")
+    placer.leader(100 + 100j, "FR35", h, prefer=1j)
+    note, label = [e for e in s.entities if isinstance(e, Text)]
+    a = text_box(note.position, note.text, note.height, note.halign, note.valign)
+    b = text_box(label.position, label.text, label.height, label.halign, label.valign)
+    assert max(b[0] - a[2], a[0] - b[2], b[1] - a[3], a[1] - b[3]) >= 0.6 * h - 1e-9
+    assert s.labels == [label]
+
+
 # ------------------------------------------------------------------ notes too long for their room
 
 def test_a_note_too_long_for_its_room_is_wrapped_at_a_word():
