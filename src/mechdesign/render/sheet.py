@@ -1115,9 +1115,9 @@ class LabelPlacer:
     def place(self, anchor: complex, text: str, height: float = 3.5,
               prefer: complex = 1j, gap: float = 2.5, layer: str = "TEXT",
               crowded: bool = True, leader: bool = False, apart: bool = False,
-              last_leader: bool = False) -> complex | None:
+              last_leader: bool = False, reach: float = 10.0) -> complex | None:
         """A point label at the first free spot (the three rings round the anchor, then a
-        little farther out about the preferred direction, up to 10 mm, with a margin from the
+        little farther out about the preferred direction, up to ``reach`` mm, with a margin from the
         lines and the other labels); where there is none, beside the anchor over
         whatever is there — or, with ``crowded=False``, nothing drawn and None returned, or,
         with ``leader``, on a leader line out to where no line crosses it (a frame pivot
@@ -1125,7 +1125,9 @@ class LabelPlacer:
         spot keeps 1.1 mm from the other labels (two labels side by side read as one).
         With ``last_leader`` a label that finds no free spot even farther out goes on a
         leader as with ``leader`` (a position number where the fan of the other positions'
-        links is densest), instead of over a line."""
+        links is densest), instead of over a line. A small label among close points (a
+        polygon's) is given a short ``reach``: one farther from its point than that, across
+        the vectors, is not read as its point's; a leader names the point."""
         w, h = text_width(text, height), height
         u = prefer / abs(prefer) if abs(prefer) > 1e-12 else 1j
         turns = [0, 1, -1, 2, -2, 3, -3, 4]
@@ -1164,7 +1166,7 @@ class LabelPlacer:
             # before a label is put over a line or another label (a position number among
             # the links of the other positions; GB/T 4458.4: no text crossed by a line)
             for dist in sorted({4.5 * gap, 6.0 * gap, gap + 3.0, gap + 5.0}):
-                if dist > 10.0 or best is not None:
+                if dist > reach or best is not None:
                     break
                 for t in turns[:5]:
                     d = u * np.exp(1j * t * np.pi / 4)
