@@ -421,7 +421,8 @@ def _draw_polygon(s: Sheet, pg: Polygon, mu: float, box, keep_out=()) -> None:
             # F_R12, are longer than R12 and crowd a small polygon)
             if placer.place(v.p(mid), text, 2.5, prefer=1j * vec.value, gap=1.2, crowded=False,
                             apart=True, reach=POLYGON_REACH) is None:
-                placer.leader(v.p(mid), text, 2.5, prefer=1j * vec.value, lengths=(4.0, 6.0, 9.0, 13.0, 18.0))
+                placer.leader(v.p(mid), text, 2.5, prefer=1j * vec.value, lengths=(4.0, 6.0, 9.0, 13.0, 18.0),
+                              avoid_lines=True)
         placer.place(v.p(0j), "o", 2.5, prefer=-1 - 1j, gap=1.2, apart=True, last_leader=True,
                      reach=POLYGON_REACH)
         return

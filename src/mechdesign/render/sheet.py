@@ -1258,6 +1258,9 @@ class LabelPlacer:
                 x0, x1 = (elbow.real, elbow.real + w) if right else (elbow.real - w, elbow.real)
                 b = (x0, elbow.imag, x1, elbow.imag + height + 1.2)
                 leader_hits = sum(1 for o in self.boxes if clip_segment(anchor, elbow, o) is not None)
+                # a leader never runs through a text (each of the boxes above is one hit, and
+                # the vector the leader starts from is made of many)
+                leader_hits += 10 * sum(1 for o, _ in self.texts if clip_segment(anchor, elbow, o) is not None)
                 # the text (over its underline, :data:`LABEL_CLEAR` from the other texts)
                 tb = (x0 + 1.0, elbow.imag + 0.8, x1 - 1.0, elbow.imag + 0.8 + height)
                 cost = (self.cost(b) + 1000.0 * (leader_hits + self.crowding(tb, height))
