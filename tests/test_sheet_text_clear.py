@@ -158,6 +158,51 @@ def test_a_label_on_a_leader_keeps_the_word_space_too():
     assert s.labels == [label]
 
 
+def test_a_leader_never_runs_through_a_text():
+    """A force label's leader starts on its vector, among the blocked points of the vectors
+    around it, so that every way out crosses some of them; the one lane free of them here
+    (straight up) runs through a text ("F_R16"'s leader through "F_I6"). The leader takes
+    a way that crosses blocked points, not the text."""
+    from mechdesign.render.sheet import clip_segment
+
+    s = Sheet("A3")
+    placer = LabelPlacer(s)
+    a = 100 + 100j
+    for r in (3.0, 4.0):                          # two rings of blocked points about the anchor
+        for t in np.arange(0.0, 2 * np.pi, 0.5 / r):
+            if abs(t - np.pi / 2) > np.radians(8):    # a lane left open straight up
+                placer.block(a + r * np.exp(1j * t), 0.4)
+    placer.text(a + 5.5j, "FI6", 2.5, "center", "middle")
+    note = text_box(a + 5.5j, "FI6", 2.5, "center", "middle")
+    n = len(s.entities)
+    placer.leader(a, "FR16", 2.5, prefer=1j)
+    (line, *_) = [e for e in s.entities[n:] if isinstance(e, Line)]
+    assert line.p0 == a
+    assert clip_segment(line.p0, line.p1, note) is None
+
+
+def test_a_polygon_label_farther_than_its_reach_goes_on_a_leader():
+    """A label that finds no free spot in its rings looks a little farther out (up to 10 mm:
+    a position number in the fan of links); a polygon's label only up to ``reach``, then it
+    goes on a leader (s4′ stood 7 mm from its point, beyond a vector, read as another
+    point's)."""
+    def crowded():
+        s = Sheet("A3")
+        for k in range(-5, 6):                    # lines 1.2 mm apart, 6 mm up and down
+            s.line(complex(100 - 9, 100 + 1.2 * k), complex(100 + 9, 100 + 1.2 * k), "CONSTRUCTION")
+        return s
+
+    s = crowded()
+    LabelPlacer(s).place(100 + 100j, "s4'", 2.5, prefer=1j, gap=1.2, apart=True, last_leader=True)
+    (t,) = [e for e in s.entities if isinstance(e, Text)]
+    assert abs(t.position - (100 + 100j)) > 4.5 + 1.25 and len([e for e in s.entities if isinstance(e, Line)]) == 11
+    s = crowded()
+    LabelPlacer(s).place(100 + 100j, "s4'", 2.5, prefer=1j, gap=1.2, apart=True, last_leader=True,
+                         reach=4.5)
+    leader = [e for e in s.entities[11:] if isinstance(e, Line)]
+    assert leader and leader[0].p0 == 100 + 100j
+
+
 # ------------------------------------------------------------------ notes too long for their room
 
 def test_a_note_too_long_for_its_room_is_wrapped_at_a_word():
