@@ -1009,7 +1009,7 @@ class LabelPlacer:
     def __init__(self, sheet: Sheet, area: Box | None = None, pad: float = 0.0):
         self.sheet, self.area, self.pad = sheet, area, pad
         self.boxes: list[Box] = []
-        # the texts among the boxes, with their heights (:meth:`clear_of_texts`)
+        # the texts among the boxes, with their heights (:meth:`crowding`)
         self.texts: list[tuple[Box, float]] = []
         self.segments: list[tuple[complex, complex]] = []
         self.points = np.zeros(0, dtype=complex)
@@ -1122,7 +1122,8 @@ class LabelPlacer:
         whatever is there — or, with ``crowded=False``, nothing drawn and None returned, or,
         with ``leader``, on a leader line out to where no line crosses it (a frame pivot
         inside the fan of the crank's twelve positions). With ``leader`` or ``apart`` a free
-        spot keeps 1.1 mm from the other labels (two labels side by side read as one).
+        spot keeps 1.1 mm from the other labels (two labels side by side read as one), and
+        every free spot keeps :data:`LABEL_CLEAR` from the texts the placer knows.
         With ``last_leader`` a label that finds no free spot even farther out goes on a
         leader as with ``leader`` (a position number where the fan of the other positions'
         links is densest), instead of over a line. A small label among close points (a
@@ -1258,8 +1259,9 @@ class LabelPlacer:
                 x0, x1 = (elbow.real, elbow.real + w) if right else (elbow.real - w, elbow.real)
                 b = (x0, elbow.imag, x1, elbow.imag + height + 1.2)
                 leader_hits = sum(1 for o in self.boxes if clip_segment(anchor, elbow, o) is not None)
-                # a leader never runs through a text (each of the boxes above is one hit, and
-                # the vector the leader starts from is made of many)
+                # a leader kept out of the texts: one across a text costs as much as across ten
+                # blocked points (each box above is one; the vector the leader starts from
+                # is made of several, so every way out crosses some)
                 leader_hits += 10 * sum(1 for o, _ in self.texts if clip_segment(anchor, elbow, o) is not None)
                 # the text (over its underline, :data:`LABEL_CLEAR` from the other texts)
                 tb = (x0 + 1.0, elbow.imag + 0.8, x1 - 1.0, elbow.imag + 0.8 + height)
