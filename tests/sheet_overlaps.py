@@ -165,3 +165,34 @@ def touching_labels(sheet, clearance: float = 0.3, space: float = 0.3) -> list[s
                 out.append(f"{plain(ta)!r} at ({a[0]:.1f}, {a[1]:.1f}) and {plain(tb)!r} at "
                            f"({b[0]:.1f}, {b[1]:.1f}) mm")
     return out
+
+
+# the clearance a point label keeps from every other text, a fraction of the smaller text
+# height: the word space of ISO 3098-1 / GB/T 14691 lettering (type B: 0.6 h, 1.5 mm at the
+# sheets' 2.5 mm labels). Two labels nearer than the space between the words of one text
+# read as one text ("n4s4′", "n4′" and "n4b′" stacked 0.6–0.8 mm apart read as a note).
+LABEL_SPACE = 0.6
+
+
+def crowded_labels(sheet, space: float = LABEL_SPACE) -> list[str]:
+    """The point labels of a sheet model (``sheet.labels``, the texts its label placers put
+    beside their points) that come nearer another level text than ``space`` × the smaller
+    of the two heights, across and along (boxes as :func:`touching_labels` reads them)."""
+    from mechdesign.render.sheet import Text, plain, text_box
+
+    texts = [e for e in sheet.entities
+             if isinstance(e, Text) and abs(e.angle) < 1e-9 and plain(e.text).strip()]
+    labels = {id(e) for e in sheet.labels}
+    boxes = [(e, text_box(e.position, e.text, e.height, e.halign, e.valign)) for e in texts]
+    out = []
+    for i, (ea, a) in enumerate(boxes):
+        for eb, b in boxes[i + 1:]:
+            if id(ea) not in labels and id(eb) not in labels:
+                continue
+            c = space * min(ea.height, eb.height)
+            dx = max(b[0] - a[2], a[0] - b[2])
+            dy = max(b[1] - a[3], a[1] - b[3])
+            if dx < c and dy < c:
+                out.append(f"{plain(ea.text)!r} at ({a[0]:.1f}, {a[1]:.1f}) and {plain(eb.text)!r} at "
+                           f"({b[0]:.1f}, {b[1]:.1f}) mm, {max(dx, dy):.1f} mm apart")
+    return out

@@ -119,6 +119,90 @@ def test_a_label_with_no_free_spot_goes_on_a_leader_with_last_leader():
     assert placer.crossed(box, LabelPlacer(crowded())._drawn_points()) == 0
 
 
+def test_a_label_keeps_the_word_space_from_the_other_texts():
+    """ISO 3098-1 / GB/T 14691: the space between words is 0.6 h (type B). A label's first
+    spot, left of its point, lies 0.7 mm under a text already there (as "n4′" under
+    "n4s4′" on the shaper's acceleration polygon): it reads as the second line of a note.
+    The label goes where it keeps 0.6 × 2.5 = 1.5 mm from that text, and is listed among
+    the sheet's labels; a text the caller places is not a label."""
+    s = Sheet("A3")
+    placer = LabelPlacer(s)
+    h = 2.5
+    w = text_width("n4'", h)
+    first = (100 - 1.2 - w, 100 - h / 2, 100 - 1.2, 100 + h / 2)   # the first spot's box
+    placer.text(complex(first[0], first[3] + 0.7), "n4s4'", h, "left", "bottom")
+    placer.place(100 + 100j, "n4'", h, prefer=-1, gap=1.2, apart=True)
+    note, label = [e for e in s.entities if isinstance(e, Text)]
+    a = text_box(note.position, note.text, note.height, note.halign, note.valign)
+    b = text_box(label.position, label.text, label.height, label.halign, label.valign)
+    apart = max(b[0] - a[2], a[0] - b[2], b[1] - a[3], a[1] - b[3])
+    assert apart >= 0.6 * h - 1e-9
+    assert abs(label.position - (100 + 100j)) < 10              # still beside its point
+    assert len(s.labels) == 1 and s.labels[0] is label
+
+
+def test_a_label_on_a_leader_keeps_the_word_space_too():
+    """The force polygons' labels that find no spot beside their vector go on a leader; its
+    text keeps 0.6 h from the texts already there (F_R35 and F_R65 were 0.5 mm apart)."""
+    s = Sheet("A3")
+    placer = LabelPlacer(s)
+    h = 2.5
+    # the leader's first elbow is 8 mm straight up: its text from y = 108.8 to 111.3 over
+    # an underline at 108 (the room kept, 108 … 111.7); a text 0.3 mm above that room
+    placer.text(101 + 112.0j, "FR65", h, "left", "bottom")
+    placer.leader(100 + 100j, "FR35", h, prefer=1j)
+    note, label = [e for e in s.entities if isinstance(e, Text)]
+    a = text_box(note.position, note.text, note.height, note.halign, note.valign)
+    b = text_box(label.position, label.text, label.height, label.halign, label.valign)
+    assert max(b[0] - a[2], a[0] - b[2], b[1] - a[3], a[1] - b[3]) >= 0.6 * h - 1e-9
+    assert s.labels == [label]
+
+
+def test_a_leader_never_runs_through_a_text():
+    """A force label's leader starts on its vector, among the blocked points of the vectors
+    around it, so that every way out crosses some of them; the one lane free of them here
+    (straight up) runs through a text ("F_R16"'s leader through "F_I6"). The leader takes
+    a way that crosses blocked points, not the text."""
+    from mechdesign.render.sheet import clip_segment
+
+    s = Sheet("A3")
+    placer = LabelPlacer(s)
+    a = 100 + 100j
+    for r in (3.0, 4.0):                          # two rings of blocked points about the anchor
+        for t in np.arange(0.0, 2 * np.pi, 0.5 / r):
+            if abs(t - np.pi / 2) > np.radians(8):    # a lane left open straight up
+                placer.block(a + r * np.exp(1j * t), 0.4)
+    placer.text(a + 5.5j, "FI6", 2.5, "center", "middle")
+    note = text_box(a + 5.5j, "FI6", 2.5, "center", "middle")
+    n = len(s.entities)
+    placer.leader(a, "FR16", 2.5, prefer=1j)
+    (line, *_) = [e for e in s.entities[n:] if isinstance(e, Line)]
+    assert line.p0 == a
+    assert clip_segment(line.p0, line.p1, note) is None
+
+
+def test_a_polygon_label_farther_than_its_reach_goes_on_a_leader():
+    """A label that finds no free spot in its rings looks a little farther out (up to 10 mm:
+    a position number in the fan of links); a polygon's label only up to ``reach``, then it
+    goes on a leader (s4′ stood 7 mm from its point, beyond a vector, read as another
+    point's)."""
+    def crowded():
+        s = Sheet("A3")
+        for k in range(-5, 6):                    # lines 1.2 mm apart, 6 mm up and down
+            s.line(complex(100 - 9, 100 + 1.2 * k), complex(100 + 9, 100 + 1.2 * k), "CONSTRUCTION")
+        return s
+
+    s = crowded()
+    LabelPlacer(s).place(100 + 100j, "s4'", 2.5, prefer=1j, gap=1.2, apart=True, last_leader=True)
+    (t,) = [e for e in s.entities if isinstance(e, Text)]
+    assert abs(t.position - (100 + 100j)) > 4.5 + 1.25 and len([e for e in s.entities if isinstance(e, Line)]) == 11
+    s = crowded()
+    LabelPlacer(s).place(100 + 100j, "s4'", 2.5, prefer=1j, gap=1.2, apart=True, last_leader=True,
+                         reach=4.5)
+    leader = [e for e in s.entities[11:] if isinstance(e, Line)]
+    assert leader and leader[0].p0 == 100 + 100j
+
+
 # ------------------------------------------------------------------ notes too long for their room
 
 def test_a_note_too_long_for_its_room_is_wrapped_at_a_word():

@@ -387,6 +387,12 @@ def _flat_note(pts, lab: dict) -> str | None:
     return lab["flat"].format(w=fmt.percent(100.0 * width / length))
 
 
+# a polygon's label is kept within this of its point [mm] (else it goes on a leader): one
+# farther out, across the vectors, is read as another point's ("s4′" 7 mm from its point,
+# beyond the vector b′f′)
+POLYGON_REACH = 4.5
+
+
 def _draw_polygon(s: Sheet, pg: Polygon, mu: float, box, keep_out=()) -> None:
     """The polygon centred in ``box`` at μ (units per paper mm), labels kept clear of each
     other, of the vectors and of the ``keep_out`` boxes."""
@@ -414,9 +420,11 @@ def _draw_polygon(s: Sheet, pg: Polygon, mu: float, box, keep_out=()) -> None:
             # beside its vector where there is room, else on a leader (the subscripted names,
             # F_R12, are longer than R12 and crowd a small polygon)
             if placer.place(v.p(mid), text, 2.5, prefer=1j * vec.value, gap=1.2, crowded=False,
-                            apart=True) is None:
-                placer.leader(v.p(mid), text, 2.5, prefer=1j * vec.value, lengths=(4.0, 6.0, 9.0, 13.0, 18.0))
-        placer.place(v.p(0j), "o", 2.5, prefer=-1 - 1j, gap=1.2, apart=True)
+                            apart=True, reach=POLYGON_REACH) is None:
+                placer.leader(v.p(mid), text, 2.5, prefer=1j * vec.value, lengths=(4.0, 6.0, 9.0, 13.0, 18.0),
+                              avoid_lines=True)
+        placer.place(v.p(0j), "o", 2.5, prefer=-1 - 1j, gap=1.2, apart=True, last_leader=True,
+                     reach=POLYGON_REACH)
         return
     values = list(pg.points.values())
     centroid = np.mean(values)
@@ -436,7 +444,7 @@ def _draw_polygon(s: Sheet, pg: Polygon, mu: float, box, keep_out=()) -> None:
         d = z - centroid
         # (1.1 mm from the other labels: a′ beside n3s3′ read as one)
         placer.place(v.p(z), ", ".join(same), 2.5, prefer=d if abs(d) > 1e-9 * mu else 1j,
-                     gap=1.2, apart=True)
+                     gap=1.2, apart=True, last_leader=True, reach=POLYGON_REACH)
 
 
 # ------------------------------------------------------------------ the mechanism

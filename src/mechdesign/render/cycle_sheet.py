@@ -17,7 +17,7 @@ import numpy as np
 from ..i18n import N_
 from . import fmt
 from .labels import LabelTable, pgettext
-from .sheet import (Sheet, TitleInfo, fit_height, frame, heading,
+from .sheet import (LABEL_CLEAR, Sheet, TitleInfo, fit_height, frame, heading,
                     sub, table, text_width, title_block_box, with_subscripts)
 
 DEG = 180.0 / np.pi
@@ -304,17 +304,20 @@ def cycle_sheet(diagram, info: TitleInfo, lang: str, checks=()) -> Sheet:
                     _tent_label(s, phase_name(ph, lang), ph.state == "work", pts, xa, xb, yb, yt)
                     continue
                 _phase_label(s, phase_name(ph, lang), ph.state, xa, xb, yb, yt)
-        # the boundaries' angles under the bar to 0.1° (as the table), one that would run
-        # into the one before it a line lower
+        # the boundaries' angles under the bar to 0.1° (as the table), one that would come
+        # nearer the one before it than the labels' space (LABEL_CLEAR) a row lower, that
+        # space under the first row
         right_end = [-np.inf, -np.inf]
+        pitch = 2.5 * (1.0 + LABEL_CLEAR)
         for val in sorted(marks, key=lambda v: (v - origin) % 360.0):
             xv = left + ((val - origin) % 360.0) / mu
             text = fmt.f(val, 1)
             half = text_width(text, 2.5) / 2
-            row = 0 if xv - half > right_end[0] + 1.0 else 1
+            row = 0 if xv - half >= right_end[0] + LABEL_CLEAR * 2.5 else 1
             right_end[row] = xv + half
-            s.text(complex(xv, yb - 1.0 - 3.0 * row), text, 2.5, "TEXT", "center", "top")
-            lowest = min(lowest, yb - 1.0 - 3.0 * row - 2.5)
+            s.text(complex(xv, yb - 1.0 - pitch * row), text, 2.5, "TEXT", "center", "top")
+            s.labels.append(s.entities[-1])
+            lowest = min(lowest, yb - 1.0 - pitch * row - 2.5)
     # the φ axis under the bars (and under their angles)
     ybar = min(top - len(acts) * (bar_h + gap) + gap - 8.0, lowest - 3.0)
     s.line(complex(left, ybar), complex(right + 6.0, ybar), "OUTLINE", 0.35)

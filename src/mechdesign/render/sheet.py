@@ -160,6 +160,11 @@ class Dimension:
 #: A dimension text's gap above its dimension line and from an extension line [mm]
 #: (GB/T 4458.4: the text above the line, not crossed by it).
 DIM_GAP = 1.0
+# a point label keeps this fraction of the (smaller) text height from every other text: the
+# word space of ISO 3098-1 / GB/T 14691 lettering (type B: 0.6 h, 1.5 mm at the labels'
+# 2.5 mm). Two labels closer than the space between the words of one text read as one
+# ("n4s4′ / n4′ / n4b′" stacked 0.6 mm apart read as a three-line note).
+LABEL_CLEAR = 0.6
 #: The dimension arrows' length on the sheets [mm].
 DIM_ARROW = 2.5
 
@@ -254,6 +259,9 @@ class Sheet:
     size: str = "A1"
     entities: list = field(default_factory=list)
     info: "TitleInfo | None" = None        # set by :func:`frame`
+    # the point labels of ``entities`` (the Text objects a :class:`LabelPlacer` put beside
+    # their points), which keep :data:`LABEL_CLEAR` from every other text
+    labels: list = field(default_factory=list)
 
     @property
     def width(self) -> float:
@@ -1001,6 +1009,8 @@ class LabelPlacer:
     def __init__(self, sheet: Sheet, area: Box | None = None, pad: float = 0.0):
         self.sheet, self.area, self.pad = sheet, area, pad
         self.boxes: list[Box] = []
+        # the texts among the boxes, with their heights (:meth:`crowding`)
+        self.texts: list[tuple[Box, float]] = []
         self.segments: list[tuple[complex, complex]] = []
         self.points = np.zeros(0, dtype=complex)
         # the sheet's lines drawn so far, sampled (see :meth:`_drawn_points`)
@@ -1065,6 +1075,19 @@ class LabelPlacer:
         return (not any(boxes_overlap(box, b, self.pad) for b in self.boxes)
                 and not any(segment_hits_box(p0, p1, box) for p0, p1 in self.segments))
 
+    def crowding(self, box: Box, height: float) -> int:
+        """How many texts come within :data:`LABEL_CLEAR` × the smaller height of a text
+        ``height`` high in ``box``."""
+        return sum(1 for b, h in self.texts if boxes_overlap(box, b, LABEL_CLEAR * min(height, h)))
+
+    def _label(self, box: Box, height: float, label: bool = True) -> None:
+        """Keep the text just drawn (the sheet's last entity) in ``box`` clear of later
+        labels; a point label (``label``) is listed in the sheet's ``labels``."""
+        self.boxes.append(box)
+        self.texts.append((box, height))
+        if label:
+            self.sheet.labels.append(self.sheet.entities[-1])
+
     def cost(self, b: Box) -> float:
         a = self.area
         if a is not None and not (b[0] >= a[0] and b[2] <= a[2] and b[1] >= a[1] and b[3] <= a[3]):
@@ -1087,22 +1110,25 @@ class LabelPlacer:
              layer: str = "TEXT") -> None:
         """A text at a position chosen by the caller, kept clear of by later labels."""
         self.sheet.text(p, text, h, layer, halign, valign)
-        self.boxes.append(text_box(complex(p), text, h, halign, valign))
+        self._label(text_box(complex(p), text, h, halign, valign), h, label=False)
 
     def place(self, anchor: complex, text: str, height: float = 3.5,
               prefer: complex = 1j, gap: float = 2.5, layer: str = "TEXT",
               crowded: bool = True, leader: bool = False, apart: bool = False,
-              last_leader: bool = False) -> complex | None:
+              last_leader: bool = False, reach: float = 10.0) -> complex | None:
         """A point label at the first free spot (the three rings round the anchor, then a
-        little farther out about the preferred direction, up to 10 mm, with a margin from the
+        little farther out about the preferred direction, up to ``reach`` mm, with a margin from the
         lines and the other labels); where there is none, beside the anchor over
         whatever is there — or, with ``crowded=False``, nothing drawn and None returned, or,
         with ``leader``, on a leader line out to where no line crosses it (a frame pivot
         inside the fan of the crank's twelve positions). With ``leader`` or ``apart`` a free
-        spot keeps 1.1 mm from the other labels (two labels side by side read as one).
+        spot keeps 1.1 mm from the other labels (two labels side by side read as one), and
+        every free spot keeps :data:`LABEL_CLEAR` from the texts the placer knows.
         With ``last_leader`` a label that finds no free spot even farther out goes on a
         leader as with ``leader`` (a position number where the fan of the other positions'
-        links is densest), instead of over a line."""
+        links is densest), instead of over a line. A small label among close points (a
+        polygon's) is given a short ``reach``: one farther from its point than that, across
+        the vectors, is not read as its point's; a leader names the point."""
         w, h = text_width(text, height), height
         u = prefer / abs(prefer) if abs(prefer) > 1e-12 else 1j
         turns = [0, 1, -1, 2, -2, 3, -3, 4]
@@ -1121,8 +1147,9 @@ class LabelPlacer:
                 # with a leader to go to, a spot is taken only with a margin from the lines
                 # (the glyphs reach past the estimated box: an italic O on a hatch stroke)
                 # and from the other labels (B beside the position number 5 read "B5")
-                free = self.free(box if not (leader or apart) else (box[0] - 1.1, box[1] - 0.4,
-                                                                    box[2] + 1.1, box[3] + 0.4))
+                free = (self.free(box if not (leader or apart) else (box[0] - 1.1, box[1] - 0.4,
+                                                                     box[2] + 1.1, box[3] + 0.4))
+                        and not self.crowding(box, h))
                 hits = self.crossed(box if not leader else (box[0] - 0.5, box[1] - 0.5, box[2] + 0.5,
                                                             box[3] + 0.5), drawn)
                 if free and hits == 0 and ring < 2:
@@ -1140,15 +1167,15 @@ class LabelPlacer:
             # before a label is put over a line or another label (a position number among
             # the links of the other positions; GB/T 4458.4: no text crossed by a line)
             for dist in sorted({4.5 * gap, 6.0 * gap, gap + 3.0, gap + 5.0}):
-                if dist > 10.0 or best is not None:
+                if dist > reach or best is not None:
                     break
                 for t in turns[:5]:
                     d = u * np.exp(1j * t * np.pi / 4)
                     c = anchor + d * (dist + 0.5 * abs(d.real) * w + 0.5 * abs(d.imag) * h)
                     box = (c.real - w / 2, c.imag - h / 2, c.real + w / 2, c.imag + h / 2)
                     grown = (box[0] - 1.1, box[1] - 0.4, box[2] + 1.1, box[3] + 0.4)
-                    if self.free(grown) and self.crossed((box[0] - 0.5, box[1] - 0.5, box[2] + 0.5,
-                                                          box[3] + 0.5), drawn) == 0:
+                    if self.free(grown) and not self.crowding(box, h) and self.crossed(
+                            (box[0] - 0.5, box[1] - 0.5, box[2] + 0.5, box[3] + 0.5), drawn) == 0:
                         best = (c, box)
                         break
         if best is None and (leader or (last_leader and blocked)):
@@ -1162,8 +1189,8 @@ class LabelPlacer:
             c = anchor + u * (gap + 0.5 * w)
             best = (c, (c.real - w / 2, c.imag - h / 2, c.real + w / 2, c.imag + h / 2))
         c, box = best
-        self.boxes.append(box)
         self.sheet.text(c, text, height, layer, "center", "middle")
+        self._label(box, h)
         return c
 
     def spot(self, anchor: complex, text: str, height: float, prefer: complex,
@@ -1184,7 +1211,7 @@ class LabelPlacer:
                                           and box[3] <= a[3]):
                     continue
                 grown = (box[0] - margin, box[1] - margin, box[2] + margin, box[3] + margin)
-                if self.free(grown) and self.crossed(grown, drawn) == 0:
+                if self.free(grown) and not self.crowding(box, h) and self.crossed(grown, drawn) == 0:
                     return c
         return None
 
@@ -1201,16 +1228,17 @@ class LabelPlacer:
                 b = (c.real - w / 2, c.imag - h / 2, c.real + w / 2, c.imag + h / 2)
                 # the lines counted with a margin (the glyphs reach past the estimated box:
                 # an italic P on the line of centres, N2 on the line of action drawn on)
+                # (a text nearer than LABEL_CLEAR costs as much as a few lines across it)
                 cost = (self.cost((b[0] - 0.5, b[1] - 0.5, b[2] + 0.5, b[3] + 0.5)) + 0.8 * rank
-                        + 0.25 * abs(t))
+                        + 0.25 * abs(t) + 20.0 * self.crowding(b, h))
                 if best is None or cost < best[0]:
                     best = (cost, c, b)
         cost, c, b = best
         if not np.isfinite(cost):                         # no room: pushed into the area
             c = self._clamp(c, w, h)
             b = (c.real - w / 2, c.imag - h / 2, c.real + w / 2, c.imag + h / 2)
-        self.boxes.append(b)
         self.sheet.text(c, text, height, layer, "center", "middle")
+        self._label(b, h)
         return c
 
     def leader(self, anchor: complex, text: str, height: float, prefer: complex,
@@ -1231,7 +1259,14 @@ class LabelPlacer:
                 x0, x1 = (elbow.real, elbow.real + w) if right else (elbow.real - w, elbow.real)
                 b = (x0, elbow.imag, x1, elbow.imag + height + 1.2)
                 leader_hits = sum(1 for o in self.boxes if clip_segment(anchor, elbow, o) is not None)
-                cost = self.cost(b) + 1000.0 * leader_hits + 0.6 * rank + 0.2 * abs(t)
+                # a leader kept out of the texts: one across a text costs as much as across ten
+                # blocked points (each box above is one; the vector the leader starts from
+                # is made of several, so every way out crosses some)
+                leader_hits += 10 * sum(1 for o, _ in self.texts if clip_segment(anchor, elbow, o) is not None)
+                # the text (over its underline, :data:`LABEL_CLEAR` from the other texts)
+                tb = (x0 + 1.0, elbow.imag + 0.8, x1 - 1.0, elbow.imag + 0.8 + height)
+                cost = (self.cost(b) + 1000.0 * (leader_hits + self.crowding(tb, height))
+                        + 0.6 * rank + 0.2 * abs(t))
                 if drawn is not None:
                     # the text clear of every line and read apart from the other labels, the
                     # leader not along a line (the crank's rays about its pivot)
@@ -1244,13 +1279,14 @@ class LabelPlacer:
             mid = self._clamp(complex((b[0] + b[2]) / 2, (b[1] + b[3]) / 2), w, height + 1.2)
             elbow += mid - complex((b[0] + b[2]) / 2, (b[1] + b[3]) / 2)
             b = (mid.real - w / 2, elbow.imag, mid.real + w / 2, elbow.imag + height + 1.2)
-        self.boxes.append(b)
         end = complex(b[2] if right else b[0], elbow.imag)
         self.sheet.line(anchor, elbow, layer)
         self.sheet.line(elbow, end, layer)
         self.sheet.fill(anchor + 0.6 * np.exp(1j * np.linspace(0, 2 * np.pi, 9)[:-1]), layer)
         self.sheet.text(complex((b[0] + b[2]) / 2, elbow.imag + 0.8), text, height,
                         "TEXT" if layer == "CONSTRUCTION" else layer, "center", "bottom")
+        self.boxes.append(b)
+        self._label((b[0] + 1.0, b[1] + 0.8, b[2] - 1.0, b[1] + 0.8 + height), height)
 
 
 def _near_segment(pts: np.ndarray, a: complex, b: complex, dist: float, skip: float) -> int:
