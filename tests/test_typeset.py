@@ -872,6 +872,47 @@ def figure_anchors(pdf) -> list[tuple[tuple[int, float], tuple[int, float]]]:
     return out
 
 
+def _listing_rows(page) -> list[tuple[float, bool, str]]:
+    """(top, whether set in a monospaced font, text) of every text line inside the text
+    block, top to bottom: a line of code starts in the monospaced font (a comment's Chinese
+    characters come from another font)."""
+    out = []
+    for block in page.get_text("dict")["blocks"]:
+        for line in block.get("lines", []):
+            spans = [sp for sp in line["spans"] if sp["text"].strip()]
+            if spans and TOP - 6 <= line["bbox"][1] <= BOTTOM:
+                out.append((line["bbox"][1], "Mono" in spans[0]["font"],
+                            "".join(sp["text"] for sp in line["spans"]).strip()))
+    return sorted(out)
+
+
+def figures_in_listings(pdf) -> list[tuple[int, str]]:
+    """(page, what) of every figure that stands inside a program listing (review37 Top 12:
+    lockbeam p.35, the flow chart floated to the top of the page the listing went on to, the
+    code going on under it): a figure whose caption has the listing's code under it (the next
+    line, or the next page's first) and above it (a line of its page, or the last line of the
+    page before when the figure opens its page)."""
+    import pymupdf
+
+    bad = []
+    with pymupdf.open(pdf) as doc:
+        pages = [None if _is_sheet(page) else _listing_rows(page) for page in doc]
+        for number, rows in enumerate(pages, 1):
+            if not rows:
+                continue
+            before = pages[number - 2] if number > 1 else None
+            after = pages[number] if number < len(pages) else None
+            for k, (_, mono, text) in enumerate(rows):
+                m = _FIGURE_CAPTION.match(text)
+                if not m:
+                    continue
+                code_above = any(r[1] for r in rows[:k]) or bool(before and before[-1][1])
+                code_under = rows[k + 1][1] if k + 1 < len(rows) else bool(after and after[0][1])
+                if code_above and code_under:
+                    bad.append((number, f"figure {m.group(1) or m.group(2)} inside a program listing"))
+    return bad
+
+
 def figures_far_from_anchor(pdf) -> list[tuple[int, str]]:
     """(page, what) of every figure placed more than one page after where it stands in the
     text. A figure that follows the one before it with no text between them (a run of
@@ -1160,6 +1201,8 @@ def test_every_report_stays_in_the_text_block(brief, lang, tmp_path, libreoffice
     assert figures_after_their_chapter(pdf) == []
     far = figures_far_from_anchor(pdf)
     assert (far != []) if (brief, lang) in FAR_OPEN else (far == []), far
+    # no figure inside the appendix's program listing (lockbeam, review37 Top 12)
+    assert figures_in_listings(pdf) == []
     # the Word file as LibreOffice lays it out: issue 19 points 1 and 2 (tests/test_docx.py)
     from tests.test_docx import SOFFICE, libreoffice_pdf, word_layout_defects
     if SOFFICE is not None:
@@ -1357,6 +1400,24 @@ def test_a_figure_stays_off_a_long_derivation_that_went_on_to_its_page(tmp_path)
     assert page_of[8] < page_of[14]                  # the case: the second derivation breaks
     assert figure_anchors(pdf)[1][0][0] == page_of[14]    # and its figure's text is on its page
     assert figures_in_derivations(pdf) == []
+    assert page_holes(pdf) == [] and half_empty_pages(pdf) == []
+
+
+@pytest.mark.parametrize("lines", [12, 17])
+def test_a_figure_stands_before_the_program_listing_that_follows_its_text(tmp_path, lines):
+    # a figure cited on a page, too tall for the room under its text (as a float), then a
+    # section with a long program listing (lockbeam's appendix): the figure floated to the top
+    # of the next page, and the listing, begun under its heading, went on under it (review37
+    # Top 12). It now stands in the flow under its text (12 lines of text before it) or on the
+    # top of the next page with the listing's section after it (17 lines)
+    from PIL import Image
+
+    Image.new("RGB", (800, 600), (200, 220, 240)).save(tmp_path / "a.png")
+    code = "\n".join(f"x{k} = {k} * 2  # step {k}" for k in range(90))
+    md = (f"# Appendix\n\n{_FILLER * lines}\n\nThe flow chart of the program is Figure 1.\n\n"
+          f"![Flow chart](a.png){{width=80%}}\n\n## Listing\n\nThe program:\n\n```python\n{code}\n```\n")
+    pdf = _render(tmp_path, md)
+    assert figures_in_listings(pdf) == []
     assert page_holes(pdf) == [] and half_empty_pages(pdf) == []
 
 
