@@ -648,7 +648,10 @@ def _settle(typ_name: str, root: Path, timestamp: int, stem: str,
     reach it (a round unsettled without new holds, or the last round still holds more):
     the last settled round's layout, where one settled (its figures held out of the
     tables its holds name); else the source set without the figure rules (nothing held).
-    Either is reported as a warning, FELL_BACK. Each round is a dict: held (given), settled."""
+    Either is reported as a warning, FELL_BACK. Each round is a dict: held (given), settled.
+    Each round is also given the chapters' close plan read from the first compilation
+    (templates/report.typ: current-close, `figure-close`), so that it stands in every round
+    (textbook_guide_bar zh: planned from typst's third pass, it keeps the fifth from settling)."""
     pdf_bytes, found = _compile_report(typ_name, root, timestamp, stem, {})
     rounds = [{"held": None, "settled": not _unsettled(found)}]
     if rounds[0]["settled"] or FIGURE_RULES_ON not in source:
@@ -696,8 +699,8 @@ def _settle(typ_name: str, root: Path, timestamp: int, stem: str,
 
 def _inputs(given: dict | None, close: list | None) -> dict[str, str]:
     """typst's sys.inputs of a round: the held figures given, and the close plan read from the
-    first compilation (templates/report.typ: figure-held, figure-close), which stands in every
-    round: made anew in each, from its own third pass, it kept the round from settling."""
+    first compilation (templates/report.typ: figure-held, figure-close), the same in every
+    round."""
     inputs = {} if given is None else {"figure-held": json.dumps(given, sort_keys=True)}
     if close is not None:
         inputs["figure-close"] = json.dumps(close)
