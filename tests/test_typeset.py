@@ -1403,6 +1403,30 @@ def test_a_figure_stays_off_a_long_derivation_that_went_on_to_its_page(tmp_path)
     assert page_holes(pdf) == [] and half_empty_pages(pdf) == []
 
 
+def test_the_references_take_no_whole_chapter_with_them_to_the_last_page(tmp_path):
+    # a short summary and a short reference list after a chapter that ends low on its page:
+    # the list, too short to stand alone on the last page, takes the summary's last blocks
+    # with it (keep-together's lead); it took the whole summary, its heading too, and left the
+    # page before 65 % full (shaper_lengths zh p.21, the A1 preview alone, 48 %). The summary
+    # now starts on that page; the last page still holds more than the references
+    import pymupdf
+
+    rows = "\n".join(f"| item {k} | {k}.00 | mm |" for k in range(9))
+    md = (f"# Sheets\n\n{_FILLER * 14}\n\n# Summary {{#summary}}\n\nThis design comprises the analysis; "
+          f"the key results:\n\n| Quantity | Value | Unit |\n|---|--:|---|\n{rows}\n\n: Key results\n\n"
+          "The design was verified by 6 checks, all passed:\n\n| Checks | Number | Verdict |\n|---|--:|---|\n"
+          "| checks | 6 | PASS |\n\n: Check verdicts\n\nNothing was found that the designer has to act on.\n\n"
+          "# References {-}\n\n[1] SUN Huan. Theory of Machines[M]. 2013.\n\n[2] ZHU Baoli. Guide[M]. 2004.\n\n"
+          "[3] GB/T 14689-2008 Technical drawings[S].\n")
+    pdf = _render(tmp_path, md)
+    with pymupdf.open(pdf) as doc:
+        pages = {key: min(i for i, page in enumerate(doc, 1) if any(r[2].endswith(key) for r in page_rows(page)))
+                 for key in ("Sheets", "Summary")}
+        assert len(doc) == pages["Sheets"] + 1      # the case: the references go on to a page of their own
+    assert pages["Summary"] == pages["Sheets"]
+    assert references_alone(pdf) == [] and thin_last_page(pdf) == []
+
+
 @pytest.mark.parametrize("lines", [12, 17])
 def test_a_figure_stands_before_the_program_listing_that_follows_its_text(tmp_path, lines):
     # a figure cited on a page, too tall for the room under its text (as a float), then a
