@@ -113,6 +113,34 @@ def test_no_settled_round_falls_back_to_the_source_without_the_figure_rules(monk
     assert any(P.FELL_BACK in text for text in found)
 
 
+def test_the_close_plan_read_from_the_first_compilation_stands_in_every_round(monkeypatch, tmp_path):
+    # textbook_guide_bar zh: the chapters' close plan, applied once more from typst's third
+    # pass (figure 5 set smaller to stand under chapter 2's text), kept the fifth pass from
+    # settling; the rounds give it as an input, the same in each, also where a later
+    # compilation reads another
+    first, later = [311.5, 267.8], [311.5, 297.6]
+    fake = FakeTypst({None: (False, {}, []), key({}): (True, {}, [])})
+    inputs = []
+    compile_ = fake.compile
+
+    def compile_with(typ_name, root, timestamp, stem, given):
+        inputs.append(dict(given))
+        return compile_(typ_name, root, timestamp, stem, given)
+
+    def held_next(typ_name, root, given):
+        return {"held": {}, "far": [], "close": later if given.get("figure-close") else first}
+
+    monkeypatch.setattr(P, "_compile_report", compile_with)
+    monkeypatch.setattr(P, "_held_next", held_next)
+    source = "x\n" + P.FIGURE_RULES_ON + "y\n"
+    typ = tmp_path / "r.typ"
+    typ.write_text(source, encoding="utf-8")
+    pdf, found, rounds = P._settle(str(typ), tmp_path, 0, "r", source)
+    assert inputs[0] == {} and len(inputs) == 2
+    assert inputs[1] == {"figure-held": key({}), "figure-close": json.dumps(first)}
+    assert pdf == f"pdf-{key({})}".encode() and not P._unsettled(found)
+
+
 @pytest.mark.e2e
 def test_given_holds_stand_and_the_next_are_reported(tmp_path):
     # the template's side: a figure whose text stands before a table split across pages,

@@ -648,7 +648,10 @@ def _settle(typ_name: str, root: Path, timestamp: int, stem: str,
     reach it (a round unsettled without new holds, or the last round still holds more):
     the last settled round's layout, where one settled (its figures held out of the
     tables its holds name); else the source set without the figure rules (nothing held).
-    Either is reported as a warning, FELL_BACK. Each round is a dict: held (given), settled."""
+    Either is reported as a warning, FELL_BACK. Each round is a dict: held (given), settled.
+    Each round is also given the chapters' close plan read from the first compilation
+    (templates/report.typ: current-close, `figure-close`), so that it stands in every round
+    (textbook_guide_bar zh: planned from typst's third pass, it keeps the fifth from settling)."""
     pdf_bytes, found = _compile_report(typ_name, root, timestamp, stem, {})
     rounds = [{"held": None, "settled": not _unsettled(found)}]
     if rounds[0]["settled"] or FIGURE_RULES_ON not in source:
@@ -656,11 +659,13 @@ def _settle(typ_name: str, root: Path, timestamp: int, stem: str,
     given = None                           # the held figures of the last round
     let_go: set[str] = set()               # figures never to hold again
     settled = None                         # (pdf, warnings) of the last settled round
+    close = None                           # the close plan, read once (report.typ: current-close)
     while True:
-        found_next = _held_next(typ_name, root, {} if given is None else {
-            "figure-held": json.dumps(given, sort_keys=True)})
+        found_next = _held_next(typ_name, root, _inputs(given, close))
         if found_next is None:
             break                                    # nothing read
+        if close is None and isinstance(found_next.get("close"), list):
+            close = found_next["close"]
         held = {k: t for k, t in found_next["held"].items() if k not in let_go}
         if given is not None:
             # a held figure that landed more than a page after its text (a second table held
@@ -679,8 +684,7 @@ def _settle(typ_name: str, root: Path, timestamp: int, stem: str,
         if held == given or len(rounds) > FIGURE_ROUNDS:
             break                                    # nothing new, or no round left
         given = held
-        pdf_bytes, found = _compile_report(typ_name, root, timestamp, stem, {
-            "figure-held": json.dumps(given, sort_keys=True)})
+        pdf_bytes, found = _compile_report(typ_name, root, timestamp, stem, _inputs(given, close))
         rounds.append({"held": given, "settled": not _unsettled(found)})
         if rounds[-1]["settled"]:
             settled = (pdf_bytes, found)
@@ -691,6 +695,16 @@ def _settle(typ_name: str, root: Path, timestamp: int, stem: str,
         handle.write(source.replace(FIGURE_RULES_ON, FIGURE_RULES_OFF, 1))
     pdf_bytes, found = _compile_report(typ_name, root, timestamp, stem, {})
     return pdf_bytes, found + [fell + "; set without the figure rules"], rounds
+
+
+def _inputs(given: dict | None, close: list | None) -> dict[str, str]:
+    """typst's sys.inputs of a round: the held figures given, and the close plan read from the
+    first compilation (templates/report.typ: figure-held, figure-close), the same in every
+    round."""
+    inputs = {} if given is None else {"figure-held": json.dumps(given, sort_keys=True)}
+    if close is not None:
+        inputs["figure-close"] = json.dumps(close)
+    return inputs
 
 
 def _unsettled(found: list[str]) -> bool:
