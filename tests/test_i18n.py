@@ -112,6 +112,8 @@ NOT_PROSE: dict[str, str] = {
                       "is a minus sign in Word's text (minus_signs)",
     "render/docx_layout.py": "the full-width colon (：) that ends a lead-in paragraph kept with the "
                              "formula, table or list it introduces (keep_lead_ins)",
+    "render/report.py": "the ideographic full stop (。) before which a citation is set "
+                        "(cited: '…重新校核[7, 9]。')",
     "cli.py": "the English --help texts gloss two course terms in Chinese (机械原理课程设计, "
               "分组), as the brief's field descriptions do; its messages are in the catalogue",
 }

@@ -66,9 +66,9 @@ def cited(sentence: str, citation: str) -> str:
     after it; a sentence that ends otherwise (a formula, a colon) takes it at its end."""
     if not citation:
         return sentence
-    body, stop = sentence.rstrip(), "\u3002"      # the ideographic full stop
-    if body.endswith(stop):
-        return body[:-1] + citation + stop
+    body = sentence.rstrip()
+    if body.endswith("。"):
+        return body[:-1] + citation + "。"
     if body.endswith("."):
         return body[:-1] + " " + citation + "."
     return sentence + citation
