@@ -524,6 +524,7 @@ def _couple_arrow(ax, z: complex, r: float, ccw: bool, color: str, label: str,
                         {"fontsize": LABEL_SIZE, "color": color}))
     return list(zip(arc[:-1], arc[1:]))
 
+
 #: The force polygon's panel: its short extent at least this fraction of the long one, and
 #: this margin round it (of the long extent) — room for the force names, which are longer
 #: than a vertex's (a tall polygon in a narrow panel pushed "F_R34, F_R43, F_R23" over the
