@@ -392,7 +392,11 @@ def stage_designs(d, lang: str, gear_pair_last: bool = False) -> list[dict]:
                           sigma_F2=f(a['sigma_F2'] / 1e6, 1)))
             geo = g.geometry
             d1 = g.forces["d1"]
-            rows = [["$z_1 / z_2$", f"{r.z1} / {r.z2}", "—"], ["$m$", f(g.module * MM, 2), "mm"],
+            # a helical pair: its normal module and helix angle (review38: β was in no table)
+            helical = not hasattr(geo, "g1") and getattr(geo, "beta", None) is not None
+            rows = [["$z_1 / z_2$", f"{r.z1} / {r.z2}", "—"],
+                    ["$m_n$" if helical else "$m$", f(g.module * MM, 2), "mm"],
+                    *([["$\\beta$", f(math.degrees(geo.beta), 2), "°"]] if helical else []),
                     ["$d_1 / d_2$", f"{f(d1 * MM, 2)} / {f(g.forces['d2'] * MM, 2)}", "mm"],
                     ["$a$", f((geo.a_work if hasattr(geo, 'a_work') else geo.a) * MM, 2), "mm"],
                     ["$b$", f(g.face_width * MM, 0), "mm"], ["$v$", f(e["v"], 3), "m/s"],

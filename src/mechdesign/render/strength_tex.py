@@ -298,13 +298,31 @@ def _tooth_tip(c: Check) -> str:
 
 def _undercut(c: Check) -> str:
     i = c.inputs
-    return (rf"x = {lone(i['x'], 3) if i['x'] else '0'} {_rel(c)} x_{{min}} = \frac{{h_a^*(z_{{min}} - z)}}{{z_{{min}}}} = "
+    # a helical gear: its equivalent spur gear's teeth z_v = z/cos³β (review38: 26.27 stood
+    # under the symbol z, with z = 24 in the table)
+    z = "z_v" if "beta" in i else "z"
+    zv = ""
+    if "beta" in i:
+        b = math.degrees(i["beta"])
+        cos_b = _giving((math.cos(i["beta"]),), lambda c3: i["z"] / c3 ** 3, num(c.value))[0]
+        zv = (rf", \quad z_v = \frac{{z}}{{\cos^3\beta}} = \frac{{{num(i['z'])}}}{{\cos^3 {num(b)}°}} = "
+              rf"\frac{{{num(i['z'])}}}{{{cos_b}^3}} = {num(c.value)}")
+    return (rf"x = {lone(i['x'], 3) if i['x'] else '0'} {_rel(c)} x_{{min}} = \frac{{h_a^*(z_{{min}} - {z})}}{{z_{{min}}}} = "
             rf"\frac{{{num(i['ha_star'])} \times ({num(i['z_min'])} - {num(c.value)})}}{{{num(i['z_min'])}}} = "
-            rf"{lone(i['x_min'], 3) if abs(i['x_min']) > 1e-12 else '0'}")
+            rf"{lone(i['x_min'], 3) if abs(i['x_min']) > 1e-12 else '0'}{zv}")
 
 
 def _contact_ratio(c: Check) -> str:
-    return rf"\varepsilon_\alpha = {num(c.value)} {_rel(c)} [\varepsilon_\alpha] = {num(c.allowable)}"
+    i = c.inputs
+    if "beta" not in i:
+        return rf"\varepsilon_\alpha = {num(c.value)} {_rel(c)} [\varepsilon_\alpha] = {num(c.allowable)}"
+    # a helical pair: the textbook's estimate, with β to the digits that give the value
+    z1, z2 = num(i["z1"]), num(i["z2"])
+    beta = _giving((math.degrees(i["beta"]),), lambda b: (1.88 - 3.2 * (1 / i["z1"] + 1 / i["z2"]))
+                   * math.cos(math.radians(b)), num(c.value))[0]
+    return (rf"\varepsilon_\alpha = \left(1.88 - 3.2\left(\frac{{1}}{{z_1}} + \frac{{1}}{{z_2}}\right)\right)\cos\beta"
+            rf" = \left(1.88 - 3.2 \times \left(\frac{{1}}{{{z1}}} + \frac{{1}}{{{z2}}}\right)\right) \times "
+            rf"\cos {beta}° = {num(c.value)} {_rel(c)} [\varepsilon_\alpha] = {num(c.allowable)}")
 
 
 def _worm_deflection(c: Check) -> str:

@@ -136,7 +136,8 @@ def gear_geometry_checks(design, s) -> tuple[Check, ...]:
     g = design.geometry
     if design.kind != "gear" or g is None:
         return ()
-    if hasattr(g, "g1"):
+    helical = not hasattr(g, "g1")
+    if not helical:
         pair, m, zs = g, g.m, (g.g1.z, g.g2.z)
     else:
         zs = tuple(z / math.cos(g.beta) ** 3 for z in (s.z1, s.z2))
@@ -154,12 +155,17 @@ def gear_geometry_checks(design, s) -> tuple[Check, ...]:
         # quantity, so the margin 1 − allowable/value is defined)
         x_min = ha_star * (z_min - zs[k]) / z_min
         z_need = z_min * (1 - gd.x / ha_star)
+        # a helical gear's undercut is that of its equivalent spur gear z_v = z/cos³β
         out.append(check("undercut", N_("Pinion free of undercut") if k == 0 else N_("Gear free of undercut"),
                          "z", float(zs[k]), z_need, "1", "ge", x=gd.x, x_min=x_min, z_min=z_min,
-                         ha_star=ha_star))
+                         ha_star=ha_star, **({"z": float((s.z1, s.z2)[k]), "beta": g.beta}
+                                             if helical else {})))
     eps = design.extra["eps_alpha"]
+    # a helical pair's ε_α is the textbook's estimate [1.88 − 3.2(1/z1 + 1/z2)] cos β
+    # (stages.drive_strength): its numbers go with it to the report
     out.append(check("contact_ratio", N_("Contact ratio"), "\\varepsilon_\\alpha",
-                     eps, EPS_ALPHA_MIN, "1", "ge"))
+                     eps, EPS_ALPHA_MIN, "1", "ge",
+                     **({"z1": float(s.z1), "z2": float(s.z2), "beta": g.beta} if helical else {})))
     return tuple(out)
 
 
