@@ -393,7 +393,7 @@ def stage_designs(d, lang: str, gear_pair_last: bool = False) -> list[dict]:
             geo = g.geometry
             d1 = g.forces["d1"]
             # a helical pair: its normal module and helix angle (review38: β was in no table)
-            helical = not hasattr(geo, "g1") and getattr(geo, "beta", None) is not None
+            helical = r.type == "helical"
             rows = [["$z_1 / z_2$", f"{r.z1} / {r.z2}", "—"],
                     ["$m_n$" if helical else "$m$", f(g.module * MM, 2), "mm"],
                     *([["$\\beta$", f(math.degrees(geo.beta), 2), "°"]] if helical else []),
@@ -453,15 +453,12 @@ def stage_designs(d, lang: str, gear_pair_last: bool = False) -> list[dict]:
         # spaces (tests/test_typeset.py wide_word_gaps)
         # where x is measured from, said once, at the first shaft (stages/drive_strength._place:
         # bearing A at x = 0, B at the span, overhung parts outside them)
-        if sh is d.shaft_designs[0]:
-            text.append(_("Largest equivalent moment $M$ = {M} N·m at $x$ = {x} mm ($x$ is measured "
-                          "along the shaft from bearing $A$, bearing $B$ at $x = L$, the span; overhung parts "
-                          "sit outside the bearings, at $x < 0$ or $x > L$); bearing reactions "
-                          "(strength case):", x=f(res.critical.x * MM, 0), M=sig(res.critical.M)))
-        else:
-            text.append(_("Largest equivalent moment $M$ = {M} N·m at $x$ = {x} mm; bearing reactions "
-                          "(strength case):", x=f(res.critical.x * MM, 0),
-                          M=sig(res.critical.M)))
+        origin = _(" ($x$ is measured along the shaft from bearing $A$, bearing $B$ at $x = L$, the "
+                   "span; overhung parts sit outside the bearings, at $x < 0$ or $x > L$)"
+                   ) if sh is d.shaft_designs[0] else ""
+        text.append(_("Largest equivalent moment $M$ = {M} N·m at $x$ = {x} mm{origin}; bearing reactions "
+                      "(strength case):", x=f(res.critical.x * MM, 0), M=sig(res.critical.M),
+                      origin=origin))
         text.append("$$ " + r",\quad ".join(
             rf"R_{{{k}}} = {f(v, 1)}\ \mathrm{{N}}"
             for k, v in (("AH", res.RAh), ("AV", res.RAv), ("BH", res.RBh), ("BV", res.RBv))) + " $$")
