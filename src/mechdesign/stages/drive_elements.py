@@ -136,7 +136,7 @@ def gear_geometry_checks(design, s) -> tuple[Check, ...]:
     g = design.geometry
     if design.kind != "gear" or g is None:
         return ()
-    helical = s.type == "helical"
+    helical = isinstance(g, gears.HelicalPair)   # the geometry's type (s may be None for a spur pair)
     if not helical:
         pair, m, zs = g, g.m, (g.g1.z, g.g2.z)
     else:
