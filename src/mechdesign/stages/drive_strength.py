@@ -103,7 +103,7 @@ class CouplingChoice:
     size: str | None = q("", "LT size (null: no size has bores for both shafts)")
     Tn: float | None = q("N·m", "nominal torque T_n of the size")
     n_max: float | None = q("rpm", "largest speed [n] of the size (steel)")
-    KA: float = q("1", "working factor K_A (濮良贵 table 14-1, or the brief's)")
+    KA: float = q("1", "working factor K_A (Pu Lianggui table 14-1, or the brief's)")
     KA_given: bool = q("", "the brief gives K_A")
     torque: float = q("N·m", "torque through the coupling T")
     Tc: float = q("N·m", "computed torque T_c = K_A T")
