@@ -80,7 +80,7 @@ def test_coupling_choice_by_bores_torque_and_speed():
     assert cat.coupling_application_factor(1.0) == 1.3      # 表14-1, torque varies very little
 
 
-def _brief(stages, shafts=None):
+def _brief(stages, shafts=None, **peak):
     data = {"machine": "drive", "report": {"title": "t", "student": "s"},
             "load": {"output_speed_rpm": 20, "stroke": {
                 "stroke_mm": 220, "working_force_N": 500, "return_force_N": 100}},
@@ -89,7 +89,7 @@ def _brief(stages, shafts=None):
     if shafts:
         data["drive"]["shafts"] = shafts
     p = drive_brief_to_si(DriveBrief.model_validate(data))
-    return design_drive(p.drive, p.load.power, p.load.output_speed_rpm, p.load.how)
+    return design_drive(p.drive, p.load.power, p.load.output_speed_rpm, p.load.how, **peak)
 
 
 FURNACE = [{"type": "coupling"}, {"type": "worm", "z1": 2, "q": 10},
@@ -135,3 +135,14 @@ def test_brief_KA_overrides_and_a_given_small_end_fails_the_rule():
     # that names the brief field
     assert s1.coupling.size == "LT2"
     assert any(w.field == "drive.shafts[0].end_mm" for w in d.warnings if w.code == "strength")
+
+
+def test_after_the_flywheel_the_coupling_takes_the_peak_without_K_A():
+    # a flywheel on the motor shaft (the furnace pusher's): the coupling carries the cycle's peak
+    # torque, which contains the load variations K_A stands for: K_A = 1 (as the gear stages there)
+    d = _brief(FURNACE, peak_factor=2.5, peak_from_shaft=0)
+    c = d.shaft_designs[0].coupling
+    sh = d.shafts[1]
+    T = 30000 / 3.141592653589793 * sh.power / 1e3 / sh.speed_rpm
+    assert c.peak and c.KA == 1.0 and c.torque == pytest.approx(2.5 * T, rel=1e-9)
+    assert c.Tc == pytest.approx(2.5 * T, rel=1e-9) and "coupling_KA" not in d.data_assumptions

@@ -341,7 +341,7 @@ def data_assumptions(motor, stages, shaft_designs) -> tuple[str, ...]:
             add(f"motor_shaft:{motor.designation}")
         if c.size is not None and "LT" in cat.unconfirmed("couplings.yaml"):
             add("coupling_table")
-        if not c.KA_given and "application_factor" in cat.unconfirmed("couplings.yaml"):
+        if not (c.KA_given or c.peak) and "application_factor" in cat.unconfirmed("couplings.yaml"):
             add("coupling_KA")
     keys_u = cat.unconfirmed("keys.yaml")
     steel_lo, _hi = cat.key_allowable_stress("steel", "light_shock")

@@ -108,6 +108,9 @@ class CouplingChoice:
     torque: float = q("N·m", "torque through the coupling T")
     Tc: float = q("N·m", "computed torque T_c = K_A T")
     speed_rpm: float = q("rpm", "speed n")
+    peak: bool = q("", "the coupling is after the flywheel: T is the cycle's peak, which contains the "
+                   "load variations K_A stands for, so K_A = 1 (as for the gear stages there)",
+                   default=False)
 
 
 @dataclass(frozen=True)
@@ -608,14 +611,17 @@ def shaft_designs(dp, designs, shafts, peak_factor, peak_from_shaft, kinds,
                 and getattr(motor, "shaft_diameter", None) and overhung):
             Dm = motor.shaft_diameter
             given_KA = getattr(dp.stages[0], "belt_KA", None)
-            KA_c = given_KA if given_KA is not None else cat.coupling_application_factor(dp.KA)
+            after = peak_from_shaft is not None and peak_from_shaft <= 0     # the coupling carries the peak
+            KA_c = (given_KA if given_KA is not None else 1.0 if after
+                    else cat.coupling_application_factor(dp.KA))
             hub = next(i for i in info if i["k"] == 0)
             Tcp = T_of(hub)
             lo_ratio = cat.motor_end_ratio()[0]
             need = max(d_min, lo_ratio * Dm)
             pick = cat.coupling_for(Dm, need, KA_c * Tcp, sh.speed_rpm)
             first = pick[1] if pick else st.standard_diameter(need, series_d)
-            couple = (Dm, KA_c, Tcp, KA_c * Tcp, sh.speed_rpm, first, given_KA is not None, lo_ratio)
+            couple = (Dm, KA_c, Tcp, KA_c * Tcp, sh.speed_rpm, first, given_KA is not None, lo_ratio,
+                      after and given_KA is None)
 
         def design(fixed):
             """The loop; ``fixed`` the overrides of this shaft (None: free)."""
@@ -707,12 +713,12 @@ def _coupling(couple, d_end: float, motor) -> tuple[CouplingChoice, list]:
     T_c = K_A T against T_n (the smallest size with bores for both, T_c ≤ T_n and n ≤ [n]; else
     the smallest with both bores, whose torque check then fails), or — when no size has both
     bores — the distance of the end from the nearest bore of a size that bores D (> 0: fails)."""
-    Dm, KA_c, Tcp, Tc, n, _first, given, lo = couple
+    Dm, KA_c, Tcp, Tc, n, _first, given, lo, peak = couple
     sizes = cat.couplings()
     both = [c for c in sizes if cat._has(c.bores, Dm) and cat._has(c.bores, d_end)]
     c = next((c for c in both if Tc <= c.Tn * (1 + 1e-12) and n <= c.n_max), both[0] if both else None)
     choice = CouplingChoice(Dm, getattr(motor, "shaft_length", None), lo, d_end, c.size if c else None,
-                            c.Tn if c else None, c.n_max if c else None, KA_c, given, Tcp, Tc, n)
+                            c.Tn if c else None, c.n_max if c else None, KA_c, given, Tcp, Tc, n, peak)
     checks = [st.check("motor_end", N_("Shaft end against the motor shaft ($d \\ge 0.8D$)"), "d", d_end,
                        lo * Dm, "mm", "ge", D=Dm, ratio=lo)]
     if c is not None:
@@ -888,7 +894,8 @@ def _coupling_step(c: CouplingChoice, d_min: float, motor) -> dict:
             f"{_mmf(c.motor_d)}) = {max(d_min, c.ratio_min * c.motor_d) * 1e3:.2f}$")
     DE = _mmf(c.motor_d) + (f" × {_mmf(c.motor_e)}" if c.motor_e else "")
     ka = (Msg(N_("$K_A$ = {KA} (given in the brief)"), KA=f"{c.KA:g}") if c.KA_given
-          else Msg(N_("$K_A$ = {KA} (table 14-1)"), KA=f"{c.KA:g}"))
+          else Msg(N_("$K_A$ = 1 ($T$ is the cycle's peak torque, which contains the load variations)"))
+          if c.peak else Msg(N_("$K_A$ = {KA} (table 14-1)"), KA=f"{c.KA:g}"))
     if c.size is None:
         return _step(N_("the end joins the motor {motor} (shaft extension $D \\times E$ = {DE} mm) through a "
                         "coupling; the course guides take $d \\approx (0.8 \\ldots 1.2) D$ so that one "
