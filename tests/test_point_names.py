@@ -83,9 +83,10 @@ _NAMES = re.compile(r"(?<![A-Za-z0-9_\\{])((?:[A-Z][0-9]*'*)*[A-Z][0-9]+'*(?:[A-
                     r"(?![A-Za-z0-9_}])")
 # words of that form that are not point names: paper formats (sheet list, preview captions),
 # motor types (Y90S-6), the enclosure code IP44, the resistances' labels R1, R2 … (first table
-# column) and the lock-beam's morphology codes (scheme A1 + B2 + C1 …, one per list item)
+# column), the lock-beam's morphology codes (scheme A1 + B2 + C1 …, one per list item) and the
+# coupling sizes LT1 … LT10 (GB/T 4323)
 NOT_POINTS = [re.compile(p) for p in (
-    r"^\| [^|]+ \| A[0-4] \|", r"[(（]A[0-4][,，]", r"\bY\d+[A-Z]*\d*-\d", r"\bIP\d\d\b",
+    r"^\| [^|]+ \| A[0-4] \|", r"[(（]A[0-4][,，]", r"\bY\d+[A-Z]*\d*-\d", r"\bIP\d\d\b", r"\bLT\d+\b",
     r"^\| R\d+ \|", r"[A-E]\d(?: \+ [A-E]\d)+", r"^- [A-E]\d ")]
 
 

@@ -1139,9 +1139,10 @@ DERIVATION_OPEN: set[tuple[str, str]] = {("linkage_sixbar", "en")}
 # caption on the next page (crank_rocker en p.12, die_cutter en p.11, textbook en p.10).
 # Open since the session-38 merges: furnace_pusher en p.36, "7 Drawing sheets" with two of its
 # first paragraph's five lines (the paragraph is estimated longer than WHOLE_LINES, so it is not
-# kept whole, and widow control leaves two lines under the heading).
-WORD_HEADINGS_OPEN = {("crank_rocker", "en"), ("die_cutter", "en"), ("textbook_guide_bar", "en"),
-                      ("furnace_pusher", "en")}
+# kept whole, and widow control leaves two lines under the heading). Closed by drive39 (the
+# coupling step added to shaft I's section moves the page breaks: no heading at a page foot in
+# the LibreOffice layout of furnace_pusher en; the mechanism above is not mended).
+WORD_HEADINGS_OPEN = {("crank_rocker", "en"), ("die_cutter", "en"), ("textbook_guide_bar", "en")}
 
 @pytest.mark.e2e
 @pytest.mark.parametrize("lang", ["zh", "en"])

@@ -20,7 +20,7 @@ CHAIN_Z_MIN = 9
 StageType = Literal["coupling", "belt", "chain", "spur", "helical", "worm"]
 
 _FIELDS_BY_TYPE = {
-    "coupling": set(),
+    "coupling": {"application_factor_KA"},
     "belt": {"ratio", "d1_mm", "d2_mm", "slip", "section", "center_distance_mm", "application_factor_KA"},
     "chain": {"ratio", "z1", "z2", "chain", "rows", "center_distance_mm", "application_factor_KA"},
     "spur": {"ratio", "z1", "z2", "module_mm", "open", "face_width_factor", "pinion_material",
@@ -89,8 +89,9 @@ class DriveStage(StrictModel):
         "Initial centre distance a0 [mm]: V-belt default d1 + d2 rounded up to 10 mm "
         "(0.7 (d1 + d2) … 2 (d1 + d2)); chain default 40 p (30 … 50 p)"))
     application_factor_KA: Optional[float] = Field(None, ge=1, le=2.5, description=(
-        "Application factor K_A of the belt (工况系数, 濮良贵 table 8-8) or the chain (table 9-6); "
-        "default from the drive's load class (and, for belts, the hours per day)"))
+        "Application factor K_A of the belt (工况系数, 濮良贵 table 8-8), the chain (table 9-6) or "
+        "the coupling from the motor (table 14-1); default from the drive's load class (and, for "
+        "belts, the hours per day)"))
     span_mm: Optional[float] = Field(None, gt=20, le=3000, description=(
         "Bearing span of the stage's output shaft [mm] (default: face width + 2 × 60 mm)"))
     efficiency: Optional[float] = Field(None, gt=0.3, le=1, description=(

@@ -38,6 +38,10 @@ class Motor:
     frame_height: float = q("m", "shaft centre height")
     starting_torque_ratio: float = q("1", "T_st / T_n")
     max_torque_ratio: float = q("1", "T_max / T_n")
+    shaft_diameter: float | None = q("m", "shaft extension diameter D (by frame; null: not "
+                                     "in the catalogue)", default=None)
+    shaft_length: float | None = q("m", "shaft extension length E (null: not in the catalogue)",
+                                   default=None)
 
     @property
     def rated_torque(self) -> float:

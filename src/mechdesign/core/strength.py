@@ -27,7 +27,7 @@ Sense = Literal["le", "ge"]
 #: Factor from the SI value of a :class:`Check` to its course display unit.
 COURSE_SCALE: dict[str, float] = {"MPa": 1e-6, "h": 1.0 / 3600.0, "°C": 1.0, "mm": 1e3,
                                   "m/s": 1.0, "°": 180.0 / math.pi, "1": 1.0, "kW": 1e-3,
-                                  "μm": 1e6}
+                                  "μm": 1e6, "N·m": 1.0}
 
 
 @dataclass(frozen=True)

@@ -344,3 +344,65 @@ def key_allowable_stress(hub: str = "steel", load: str = "light_shock") -> tuple
         raise KeyError(f"unknown load kind {load!r}; allowed: {', '.join(t[hub])}")
     lo, hi = t[hub][load]
     return lo * MPA, hi * MPA
+
+
+# ----------------------------------------------------------------------------- couplings
+
+@dataclass(frozen=True)
+class Coupling:
+    """One size of an elastic sleeve pin coupling (LT, GB/T 4323), SI."""
+
+    size: str
+    Tn: float                    # nominal torque T_n, N·m
+    n_max: float                 # largest speed [n] (steel), rpm
+    bores: tuple[float, ...]     # the shaft-hole diameters a half coupling is bored to, m
+
+
+def couplings() -> tuple[Coupling, ...]:
+    """The LT sizes of data/couplings.yaml, smallest first."""
+    return tuple(Coupling(r["size"], float(r["Tn_Nm"]), float(r["n_max_rpm"]),
+                          tuple(b * MM for b in r["bores_mm"])) for r in load_yaml("couplings.yaml")["LT"])
+
+
+def coupling_application_factor(drive_KA: float) -> float:
+    """K_A of a motor-driven coupling (濮良贵 表14-1) for the drive's load class (its gear K_A)."""
+    rows = load_yaml("couplings.yaml")["application_factor"]
+    return float(next(r["K_A"] for r in rows if drive_KA <= r["drive_KA_upto"] + 1e-12))
+
+
+def motor_end_ratio() -> tuple[float, float]:
+    """The course guides' range of d/D for a shaft end coupled to the motor shaft D."""
+    lo, hi = load_yaml("couplings.yaml")["motor_end_ratio"]
+    return float(lo), float(hi)
+
+
+def _has(bores, d: float) -> bool:
+    return any(abs(b - d) < 1e-7 for b in bores)
+
+
+def coupling_for(motor_d: float, need: float, Tc: float, n_rpm: float) -> tuple[Coupling, float] | None:
+    """(size, shaft-end bore) of the smallest LT coupling whose bores hold the motor shaft
+    ``motor_d`` and a bore ≥ ``need`` (m), with T_c ≤ T_n and n ≤ [n]; the bore is the smallest
+    such one. None when no size fits."""
+    for c in couplings():
+        if Tc > c.Tn * (1 + 1e-12) or n_rpm > c.n_max or not _has(c.bores, motor_d):
+            continue
+        fit = [b for b in c.bores if b >= need * (1 - 1e-9)]
+        if fit:
+            return c, min(fit)
+    return None
+
+
+def coupling_bores_for(motor_d: float, d: float) -> Coupling | None:
+    """The smallest LT size with bores for both ``motor_d`` and ``d`` (m), whatever its torque."""
+    return next((c for c in couplings() if _has(c.bores, motor_d) and _has(c.bores, d)), None)
+
+
+def motor_shaft_confirmed(frame_height: float) -> bool:
+    """True when the shaft extension of the frame (its centre height, m) was confirmed against a
+    public copy (motors.csv's ``# shaft confirmed:`` line)."""
+    from importlib import resources
+
+    text = resources.files("mechdesign.data").joinpath("motors.csv").read_text(encoding="utf-8")
+    frames = [ln.split(":", 1)[1].split() for ln in text.splitlines() if ln.startswith("# shaft confirmed:")]
+    return any(f"{frame_height / MM:g}" in f for f in frames)

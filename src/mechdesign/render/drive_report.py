@@ -302,6 +302,9 @@ _ASSUMED = {
     "bearing": N_("bearing {x}: $C_r$ and $C_{{0r}}$ of the handbook table"),
     "key_lengths": N_("the length range of each flat key (GB/T 1096)"),
     "key_cast_iron": N_("the allowable crushing stress of keys in cast-iron hubs (table 6-2)"),
+    "motor_shaft": N_("motor {x}: the shaft extension D × E of its frame"),
+    "coupling_table": N_("the LT couplings' nominal torques, speeds and bores (GB/T 4323)"),
+    "coupling_KA": N_("the coupling's working factor $K_A$ (table 14-1)"),
 }
 
 

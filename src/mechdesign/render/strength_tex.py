@@ -333,7 +333,23 @@ def _worm_deflection(c: Check) -> str:
             rf"{num(c.allowable * MM)}\ \text{{mm}}\ (\text{{mm}}, \text{{N}}, \text{{MPa}})")
 
 
+def _motor_end(c: Check) -> str:
+    """The course guides' rule for a shaft end coupled to the motor: d ≥ 0.8 D."""
+    i = c.inputs
+    u, rel = _unit(c.unit), _relation(c)
+    return (rf"d = {_value(c)}\ {u} {rel} {num(i['ratio'])} D = {num(i['ratio'])} \times "
+            rf"{num(i['D'] * MM)} = {_allowable(c)}\ {u}")
+
+
+def _coupling_torque(c: Check) -> str:
+    """T_c = K_A T ≤ T_n (GB/T 12458 terms; 濮良贵 ch.14)."""
+    i = c.inputs
+    return rf"T_c = K_A T = {num(i['KA'])} \times {num(i['T'])}" + _tail(c, "T_n")
+
+
 _FORMULAS = {
+    "motor_end": _motor_end,
+    "coupling_torque": _coupling_torque,
     "bearing_static": _bearing_static,
     "gear_contact": _gear_contact,
     "gear_bending": _gear_bending,

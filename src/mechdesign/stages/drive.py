@@ -110,9 +110,26 @@ class DriveDocument:
 
 
 def motor_catalogue() -> list[core.Motor]:
-    return [core.Motor(r["designation"], float(r["power_kW"]) * 1e3, float(r["synchronous_rpm"]),
-                       float(r["full_load_rpm"]), float(r["frame_height_mm"]) * 1e-3,
-                       float(r["Tst_Tn"]), float(r["Tmax_Tn"])) for r in load_csv("motors.csv")]
+    """The Y-series motors of data/motors.csv (SI); a row whose number cannot be read is a
+    :class:`~mechdesign.core.drive.DriveDesignError` naming the row, the column and the value."""
+    out = []
+    for r in load_csv("motors.csv"):
+        def num(col, scale=1.0, r=r):
+            raw = r.get(col)
+            try:
+                v = float(raw)
+            except (TypeError, ValueError):
+                v = float("nan")
+            if not (np.isfinite(v) and v > 0):
+                raise core.DriveDesignError(Msg(
+                    N_("the motor catalogue (data/motors.csv) row {row}: column {col} is '{value}', "
+                       "not a positive number; correct the data file"),
+                    row=r.get("designation", "?"), col=col, value=raw))
+            return v * scale
+        out.append(core.Motor(r["designation"], num("power_kW", 1e3), num("synchronous_rpm"),
+                              num("full_load_rpm"), num("frame_height_mm", 1e-3), num("Tst_Tn"),
+                              num("Tmax_Tn"), num("shaft_D_mm", 1e-3), num("shaft_E_mm", 1e-3)))
+    return out
 
 
 def _kind(s) -> str:
@@ -235,7 +252,8 @@ def design_drive(dp, machine_power: float, output_rpm: float, source: str,
         worm_eff.update(changed)
     if callable(weights):
         weights = weights(shafts)
-    shaft_designs = _shafts(dp, results, shafts, peak_factor, peak_from_shaft, life_factor, weights)
+    shaft_designs = _shafts(dp, results, shafts, peak_factor, peak_from_shaft, life_factor, weights,
+                            choice.motor)
     n_out = shafts[-1].speed_rpm
     error = (n_out - output_rpm) / output_rpm
     warnings = []
@@ -276,7 +294,8 @@ def data_assumptions(motor, stages, shaft_designs) -> tuple[str, ...]:
     'belt_chart' (section from the chart), 'chain_rating', 'chain_table' (q, Q: static
     safety), 'gear_material:<key>', 'worm_wheel:<key>', 'worm_Zrho' (the fitted Z_ρ curve),
     'shaft_A0', 'shaft_series', 'shaft_material:<key>', 'bearing:<designation>',
-    'key_lengths', 'key_cast_iron'."""
+    'key_lengths', 'key_cast_iron'; where a coupling joins the motor: 'motor_shaft:<designation>'
+    (the frame's shaft extension), 'coupling_table' (the LT sizes), 'coupling_KA' (table 14-1)."""
     from ..data import catalogues as cat
 
     out: list[str] = []
@@ -314,6 +333,16 @@ def data_assumptions(motor, stages, shaft_designs) -> tuple[str, ...]:
                 if f"worm_wheel.{m}" in mats:
                     add(f"worm_wheel:{m}")
             add("worm_Zrho")
+    for sd in shaft_designs:
+        c = getattr(sd, "coupling", None)
+        if c is None:
+            continue
+        if motor is not None and not cat.motor_shaft_confirmed(motor.frame_height):
+            add(f"motor_shaft:{motor.designation}")
+        if c.size is not None and "LT" in cat.unconfirmed("couplings.yaml"):
+            add("coupling_table")
+        if not (c.KA_given or c.peak) and "application_factor" in cat.unconfirmed("couplings.yaml"):
+            add("coupling_KA")
     keys_u = cat.unconfirmed("keys.yaml")
     steel_lo, _hi = cat.key_allowable_stress("steel", "light_shock")
     for sd in shaft_designs:
@@ -346,7 +375,7 @@ def resized(drive: DriveResult, dp, peak_factor: float, peak_from_shaft: int | N
     if any(abs(v - drive.stages[k].efficiency) > 1e-4 for k, v in worm_eff.items()):
         return None
     return tuple(results), tuple(_shafts(dp, results, drive.shafts, peak_factor, peak_from_shaft,
-                                         life_factor, weights))
+                                         life_factor, weights, drive.motor))
 
 
 def _strength(dp, results, shafts, peak_factor, peak_from_shaft):
@@ -356,10 +385,11 @@ def _strength(dp, results, shafts, peak_factor, peak_from_shaft):
     return results, worm_eff
 
 
-def _shafts(dp, results, shafts, peak_factor, peak_from_shaft, life_factor=None, weights=None):
+def _shafts(dp, results, shafts, peak_factor, peak_from_shaft, life_factor=None, weights=None,
+            motor=None):
     kinds = [r.kind for r in results]
     return ds.shaft_designs(dp, [r.design for r in results], shafts, peak_factor, peak_from_shaft, kinds,
-                            life_factor, weights)
+                            life_factor, weights, motor)
 
 
 def undercut_findings(results) -> list[Finding]:

@@ -92,6 +92,28 @@ class KeyDesign:
 
 
 @dataclass(frozen=True)
+class CouplingChoice:
+    """The coupling joining the motor shaft to the first shaft (course guides: the shaft end
+    d ≈ (0.8 … 1.2) D so that one coupling size has bores for both; LT, GB/T 4323)."""
+
+    motor_d: float = q("m", "motor shaft extension diameter D")
+    motor_e: float | None = q("m", "motor shaft extension length E")
+    ratio_min: float = q("1", "least d/D of the rule d ≈ (0.8 … 1.2) D")
+    d: float = q("m", "the shaft end, bored in the other half")
+    size: str | None = q("", "LT size (null: no size has bores for both shafts)")
+    Tn: float | None = q("N·m", "nominal torque T_n of the size")
+    n_max: float | None = q("rpm", "largest speed [n] of the size (steel)")
+    KA: float = q("1", "working factor K_A (Pu Lianggui table 14-1, or the brief's)")
+    KA_given: bool = q("", "the brief gives K_A")
+    torque: float = q("N·m", "torque through the coupling T")
+    Tc: float = q("N·m", "computed torque T_c = K_A T")
+    speed_rpm: float = q("rpm", "speed n")
+    peak: bool = q("", "the coupling is after the flywheel: T is the cycle's peak, which contains the "
+                   "load variations K_A stands for, so K_A = 1 (as for the gear stages there)",
+                   default=False)
+
+
+@dataclass(frozen=True)
 class ShaftDesign:
     """One shaft after the motor: diameters, loads and statics, bearings, keys and checks."""
 
@@ -128,6 +150,8 @@ class ShaftDesign:
         "", "what to change when an override fails, as codes: {check: the failing check's key, "
         "field: the brief field, fix: a catalogue message {msgid, args} (see Finding.args), "
         "translated where shown}", default=())
+    coupling: CouplingChoice | None = q("", "the coupling from the motor (first shaft of a drive whose "
+                                        "first stage is a coupling; null otherwise)", default=None)
 
     def diameter_at(self, x: float) -> float:
         """The diameter [m] of the section at axial position ``x`` [m] (:func:`section_diameter`)."""
@@ -530,7 +554,8 @@ def _evaluate(dp, j, sh, info, span, T, res, life_res, mat, dims, bearing_fixed,
 
 def shaft_designs(dp, designs, shafts, peak_factor, peak_from_shaft, kinds,
                   life_factor: float | None = None,
-                  weights: dict[int, tuple[float, float]] | None = None) -> tuple[ShaftDesign, ...]:
+                  weights: dict[int, tuple[float, float]] | None = None,
+                  motor=None) -> tuple[ShaftDesign, ...]:
     """Each shaft designed by the handbook's procedure (濮良贵《机械设计》 ch.15, 《机械设计课程
     设计》): d_min = A0∛(P/n) (+5 % keyway); the sections laid out from the parts (overhung end
     → journal → seat → shoulder), each rounded up to the standard series; the bending–torsion
@@ -543,7 +568,10 @@ def shaft_designs(dp, designs, shafts, peak_factor, peak_from_shaft, kinds,
     torque (mean × ``peak_factor``) for the strength checks (shaft, keys, bearing statics);
     the bearing life, a fatigue quantity, takes the cycle's equivalent load: the elements'
     forces at the cube-mean torque (``life_factor`` × the mean; None: the mean) × f_p.
-    ``weights``: {shaft: (W [N], width [m])}, a flywheel's weight between that shaft's bearings."""
+    ``weights``: {shaft: (W [N], width [m])}, a flywheel's weight between that shaft's bearings.
+    ``motor``: the motor (:class:`~mechdesign.core.drive.Motor`); where a coupling joins it to
+    shaft Ⅰ, that shaft's end is at least the course guides' 0.8 D (D the motor's shaft
+    extension) and a bore of the LT coupling that also bores D (:func:`_coupling`)."""
     choices = {c.shaft: c for c in dp.shafts}
     worm_shafts = {k for k, d in enumerate(designs) if d.kind == "worm"} | \
                   {k + 1 for k, d in enumerate(designs) if d.kind == "worm"}
@@ -578,12 +606,30 @@ def shaft_designs(dp, designs, shafts, peak_factor, peak_from_shaft, kinds,
         def allow_of(i):
             return ci_lo if i["hub_mat"] == "cast_iron" else sp_lo
 
+        couple = None      # (D, K_A, T, T_c, n, the first end) where a coupling joins the motor
+        if (j == 1 and designs[0].kind == "coupling" and motor is not None
+                and getattr(motor, "shaft_diameter", None) and overhung):
+            Dm = motor.shaft_diameter
+            given_KA = getattr(dp.stages[0], "belt_KA", None)
+            after = peak_from_shaft is not None and peak_from_shaft <= 0     # the coupling carries the peak
+            KA_c = (given_KA if given_KA is not None else 1.0 if after
+                    else cat.coupling_application_factor(dp.KA))
+            hub = next(i for i in info if i["k"] == 0)
+            Tcp = T_of(hub)
+            lo_ratio = cat.motor_end_ratio()[0]
+            need = max(d_min, lo_ratio * Dm)
+            pick = cat.coupling_for(Dm, need, KA_c * Tcp, sh.speed_rpm)
+            first = pick[1] if pick else st.standard_diameter(need, series_d)
+            couple = (Dm, KA_c, Tcp, KA_c * Tcp, sh.speed_rpm, first, given_KA is not None, lo_ratio,
+                      after and given_KA is None)
+
         def design(fixed):
             """The loop; ``fixed`` the overrides of this shaft (None: free)."""
             steps = []
             d_end = None
             if overhung:
-                d_end = fixed.end if fixed and fixed.end else st.standard_diameter(d_min, series_d)
+                d_end = (fixed.end if fixed and fixed.end else couple[5] if couple
+                         else st.standard_diameter(d_min, series_d))
             seal = st.standard_diameter(1.14 * d_end, series_d) if d_end is not None else 0.0
             if fixed and fixed.bearing and not fixed.journal:
                 dj = cat.bearing(fixed.bearing).d
@@ -638,18 +684,52 @@ def shaft_designs(dp, designs, shafts, peak_factor, peak_from_shaft, kinds,
             need = st.standard_diameter(d_min, series_d)
             advice = advice + (_advice_entry(checks[0].key, f"drive.shafts[{ch.index}].{name}",
                                              Msg(_AT_LEAST[name], d=_mmf(need))),)
+        coupling = None
+        if couple is not None:
+            coupling, more = _coupling(couple, d_end, motor)
+            checks += more
+            if ch is not None and ch.end and not more[0].passed:
+                advice = advice + (_advice_entry(more[0].key, f"drive.shafts[{ch.index}].end_mm",
+                                                 Msg(_AT_LEAST["end_mm"], d=_mmf(couple[5]))),)
         if ev["life"] is not None:
             checks.append(ev["life"])
         if ev["static"] is not None:
             checks.append(ev["static"])
         checks += [k.check for k in ev["keys"]]
-        head, tail = _steps(sh, mat, a0, d_min, dims, shoulder, T, peak, peak_factor, lf, ev, span, dp)
+        head, tail = _steps(sh, mat, a0, d_min, dims, shoulder, T, peak, peak_factor, lf, ev, span, dp,
+                            coupling, motor)
         steps = head + _loop_text(loop_steps) + tail
         out.append(ShaftDesign(j, sh.speed_rpm, sh.power, T, d_min, dj, ds, span, tuple(loads),
                                tuple(i["name"] for i in _load_order(info)), res, ev["bearing"], ev["pl"], tuple(checks),
                                mat.key, a0, d_end, shoulder, (lf / peak_factor) if peak else 1.0,
-                               (life_res.FrA, life_res.FrB), tuple(ev["keys"]), tuple(steps), advice))
+                               (life_res.FrA, life_res.FrB), tuple(ev["keys"]), tuple(steps), advice,
+                               coupling))
     return tuple(out)
+
+
+def _coupling(couple, d_end: float, motor) -> tuple[CouplingChoice, list]:
+    """The LT coupling for the motor shaft D and the shaft end ``d_end`` as designed, and its
+    checks: the end against the course guides' rule d ≥ 0.8 D, the coupling's computed torque
+    T_c = K_A T against T_n (the smallest size with bores for both, T_c ≤ T_n and n ≤ [n]; else
+    the smallest with both bores, whose torque check then fails), or — when no size has both
+    bores — the distance of the end from the nearest bore of a size that bores D (> 0: fails)."""
+    Dm, KA_c, Tcp, Tc, n, _first, given, lo, peak = couple
+    sizes = cat.couplings()
+    both = [c for c in sizes if cat._has(c.bores, Dm) and cat._has(c.bores, d_end)]
+    c = next((c for c in both if Tc <= c.Tn * (1 + 1e-12) and n <= c.n_max), both[0] if both else None)
+    choice = CouplingChoice(Dm, getattr(motor, "shaft_length", None), lo, d_end, c.size if c else None,
+                            c.Tn if c else None, c.n_max if c else None, KA_c, given, Tcp, Tc, n, peak)
+    checks = [st.check("motor_end", N_("Shaft end against the motor shaft ($d \\ge 0.8D$)"), "d", d_end,
+                       lo * Dm, "mm", "ge", D=Dm, ratio=lo)]
+    if c is not None:
+        checks.append(replace(st.check("coupling_torque", N_("Coupling {size} torque"), "T_c", Tc, c.Tn, "N·m",
+                                       "le", KA=KA_c, T=Tcp, n=n, n_max=c.n_max),
+                              name_args={"size": c.size}))
+    else:
+        near = min((abs(b - d_end) for s in sizes if cat._has(s.bores, Dm) for b in s.bores), default=d_end)
+        checks.append(st.check("coupling_bore", N_("Coupling bores for the motor shaft and the shaft end"),
+                               "\\Delta d", near, 0.0, "mm", "le", D=Dm, d=d_end))
+    return choice, checks
 
 
 _KIND_TEXT = {"shaft_bending": N_("bending–torsion"), "bearing_life": N_("bearing life"),
@@ -752,7 +832,8 @@ def _peak_times(peak_factor: float, torque: float, printed: str) -> str:
     return " \\times ".join(factors_for((peak_factor, torque), lambda a, b: a * b, printed))
 
 
-def _steps(sh, mat, a0, d_min, dims, shoulder, T, peak, peak_factor, lf, ev, span, dp):
+def _steps(sh, mat, a0, d_min, dims, shoulder, T, peak, peak_factor, lf, ev, span, dp, coupling=None,
+           motor=None):
     """The design steps of one shaft, each rule with its formula and numbers (messages as data)."""
     d_end, dj, ds = dims
     P, n = sh.power / 1e3, sh.speed_rpm
@@ -773,9 +854,14 @@ def _steps(sh, mat, a0, d_min, dims, shoulder, T, peak, peak_factor, lf, ev, spa
     else:
         out.append(_step(N_("design torque T = 9549 P/n = {T} N·m (bearing life: the same load × $f_p$ = {fp})"),
                           T=_sig(T, 4), fp=f"{FP:g}"))
+    if coupling is not None:
+        out.append(_coupling_step(coupling, d_min, motor))
     head, out = out, []
     lay = []
-    if d_end is not None:
+    if d_end is not None and coupling is not None:
+        lay.append(Msg(N_("overhung end {d} (the coupling's bore, at least {dmin} and $0.8D$)"), d=_mmf(d_end),
+                       dmin="$d_{min}$"))
+    elif d_end is not None:
         lay.append(Msg(N_("overhung end {d} (the standard size ≥ {dmin})"), d=_mmf(d_end), dmin="$d_{min}$"))
     lay += [Msg(N_("journals {d} (bearing bore, a multiple of 5)"), d=_mmf(dj)),
             Msg(N_("seat {d} (journal + 5)"), d=_mmf(ds)), Msg(N_("collar {d} (h ≈ 0.07 d)"), d=_mmf(shoulder))]
@@ -799,3 +885,30 @@ def _steps(sh, mat, a0, d_min, dims, shoulder, T, peak, peak_factor, lf, ev, spa
         out.append(_step(N_("keys (GB/T 1096, form A, L ≤ hub − 8 mm; a longer hub up to 1.5 d, then two keys "
                              "when one fails): {keys}"), keys=listed))
     return head, out
+
+
+def _coupling_step(c: CouplingChoice, d_min: float, motor) -> dict:
+    """The design step of the end joined to the motor: the motor's shaft, the rule, the end
+    and the coupling with its torque check, each with its numbers."""
+    rule = (f"$d \\ge \\max(d_{{min}}, {c.ratio_min:g}D) = \\max({d_min * 1e3:.2f}, {c.ratio_min:g} \\times "
+            f"{_mmf(c.motor_d)}) = {max(d_min, c.ratio_min * c.motor_d) * 1e3:.2f}$")
+    DE = _mmf(c.motor_d) + (f" × {_mmf(c.motor_e)}" if c.motor_e else "")
+    ka = (Msg(N_("$K_A$ = {KA} (given in the brief)"), KA=f"{c.KA:g}") if c.KA_given
+          else Msg(N_("$K_A$ = 1 ($T$ is the cycle's peak torque, which contains the load variations)"))
+          if c.peak else Msg(N_("$K_A$ = {KA} (table 14-1)"), KA=f"{c.KA:g}"))
+    if c.size is None:
+        return _step(N_("the end joins the motor {motor} (shaft extension $D \\times E$ = {DE} mm) through a "
+                        "coupling; the course guides take $d \\approx (0.8 \\ldots 1.2) D$ so that one "
+                        "coupling has bores for both: {rule} mm; no LT coupling (GB/T 4323) has bores for "
+                        "{D} mm and {d} mm: change the end"),
+                     motor=getattr(motor, "designation", ""), DE=DE, rule=rule, D=_mmf(c.motor_d),
+                     d=_mmf(c.d))
+    tc = (f"$T_c = K_A T = {c.KA:g} \\times {_sig(c.torque, 4)} = {_sig(c.Tc, 4)}$ N·m "
+          f"{'≤' if c.Tc <= c.Tn * (1 + 1e-12) else '>'} $T_n$ = {c.Tn:g} N·m")
+    return _step(N_("the end joins the motor {motor} (shaft extension $D \\times E$ = {DE} mm) through a "
+                    "coupling; the course guides take $d \\approx (0.8 \\ldots 1.2) D$ so that one "
+                    "coupling has bores for both: {rule} mm → $d$ = {d} mm; elastic sleeve pin coupling "
+                    "{size} (GB/T 4323), bores {D} mm (motor) and {d} mm; {ka}, {tc}, $n$ = {n} ≤ $[n]$ = "
+                    "{nmax} rpm"),
+                 motor=getattr(motor, "designation", ""), DE=DE, rule=rule, d=_mmf(c.d), size=c.size,
+                 D=_mmf(c.motor_d), ka=ka, tc=tc, n=f"{c.speed_rpm:g}", nmax=f"{c.n_max:g}")
