@@ -319,6 +319,22 @@ def rim_inertia_factor(inertia: float, rim) -> str:
 
 def flywheel_equation(energy_swing: float, speed_rpm: float, delta: float, jf: str,
                       energy_digits: int = 4) -> str:
+    """J_F = 900ΔW_max/(π²n²[δ]) with its factors (:func:`_flywheel_factors`) substituted."""
+    n_text, dw_text, d_tex = _flywheel_factors(energy_swing, speed_rpm, delta, jf, energy_digits)
+    return (rf"J_F = \frac{{900\,\Delta W_{{max}}}}{{\pi^2 n^2 [\delta]}} = \frac{{900 \times "
+            rf"{dw_text}}}{{\pi^2 \times {n_text}^2 \times {d_tex}}} = {jf}\ \text{{kg·m}}^2")
+
+
+def flywheel_energy(energy_swing: float, speed_rpm: float, delta: float, jf: str,
+                    energy_digits: int = 4) -> str:
+    """ΔW_max as :func:`flywheel_equation` substitutes it, for the text that states it just
+    before the equation: one value printed one way (review 38: "ΔW_max = 190.3 J" above
+    "900 × 190.32")."""
+    return _flywheel_factors(energy_swing, speed_rpm, delta, jf, energy_digits)[1]
+
+
+def _flywheel_factors(energy_swing: float, speed_rpm: float, delta: float, jf: str,
+                      energy_digits: int = 4) -> tuple[str, str, str]:
     """J_F = 900ΔW_max/(π²n²[δ]) with its factors substituted so that they give the printed
     ``jf``: [δ] as the course writes it (1/30, never 0.0333); n to 0.01 rpm and ΔW_max to
     ``energy_digits`` significant digits (the text's), each with the fewest more digits
@@ -339,8 +355,7 @@ def flywheel_equation(energy_swing: float, speed_rpm: float, delta: float, jf: s
     n_text, dw_text = factors_for((speed_rpm, energy_swing), jf_of, jf,
                                   (2 if to_decimals else 4, energy_digits), most=(2, 4),
                                   decimals=(to_decimals, False))
-    return (rf"J_F = \frac{{900\,\Delta W_{{max}}}}{{\pi^2 n^2 [\delta]}} = \frac{{900 \times "
-            rf"{dw_text}}}{{\pi^2 \times {n_text}^2 \times {d_tex}}} = {jf}\ \text{{kg·m}}^2")
+    return n_text, dw_text, d_tex
 
 
 def realised_flywheel(fly, n_real: float | None, _) -> str | None:
@@ -490,12 +505,16 @@ def linkage_context(model, k, f_, fly, v, figures: dict, lang: str,
         "fly": None,
     }
     if fly is not None:
+        # J_F with the digits the rim mass m = 4 J_F/D² needs, in every line that prints it
+        # (one value one way, review 38: 204.1 in J_F's equation, 204.13 in m's)
+        jf_text = (rim_inertia_factor(fly.inertia, fly.rim) if fly.rim is not None
+                   else sig(fly.inertia, group=False))
         ctx["fly"] = {
-            "n": f(fly.shaft_speed_rpm, 2), "dw": sig(fly.max_energy_swing),
+            "n": f(fly.shaft_speed_rpm, 2),
+            "dw": flywheel_energy(fly.max_energy_swing, fly.shaft_speed_rpm, fly.fluctuation, jf_text),
             "at_min": f(fly.phase_at_min * DEG, 1), "at_max": f(fly.phase_at_max * DEG, 1),
-            "delta": fluctuation(fly.fluctuation), "jf": sig(fly.inertia),
-            "eq": flywheel_equation(fly.max_energy_swing, fly.shaft_speed_rpm, fly.fluctuation,
-                                    sig(fly.inertia, group=False)),
+            "delta": fluctuation(fly.fluctuation), "jf": jf_text,
+            "eq": flywheel_equation(fly.max_energy_swing, fly.shaft_speed_rpm, fly.fluctuation, jf_text),
             "rim": None, "real": realised_flywheel(fly, flywheel_realised_rpm, _),
         }
         if fly.rim is not None:

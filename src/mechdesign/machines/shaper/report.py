@@ -15,7 +15,7 @@ from ...render import figures as fig
 from ...render import guide_bar_report as gb_report
 from ...i18n import N_, tr
 from ...render.fmt import e, f, in_lang, md_meta, sig, time_ratio, verdict, fluctuation
-from ...render.linkage_report import flywheel_equation, rim_inertia_factor
+from ...render.linkage_report import flywheel_energy, flywheel_equation, rim_inertia_factor
 
 DEG = 180.0 / np.pi
 
@@ -195,8 +195,7 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
                rf" = {sig(i_ratio, group=False)}") if fl.shaft == "pinion" else r"M_r = M_b",
         "md": (rf"M_d = \frac{{1}}{{2\pi}}\int_0^{{2\pi}} M_r\,d\varphi = {sig(fl.shaft_torque, group=False)}"
                rf"\ \text{{N·m}}"),
-        "jf": flywheel_equation(fl.max_energy_swing, fl.shaft_speed_rpm, p.fluctuation,
-                                sig(fl.inertia, group=False)),
+        "jf": flywheel_equation(fl.max_energy_swing, fl.shaft_speed_rpm, p.fluctuation, j_mass),
         "mass": (rf"m = \frac{{4 J_F}}{{D^2}} = \frac{{4 \times {j_mass}}}"
                  rf"{{{f(fl.rim.diameter, 3)}^2}} = {f(fl.rim.rim_mass, 2)}\ \text{{kg}}"),
         "width": (rf"b = \sqrt{{\frac{{4 g J_F}}{{\pi D^3 (H/b) \gamma}}}} = \sqrt{{\frac{{4 \times "
@@ -252,7 +251,9 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
             "de": (r"$\Delta E(\varphi) = \int (M_d - M_r)\,d\varphi_1 = \int (i M_d - M_b)\,d\varphi$"
                    + _(r" ($\varphi_1 = i\varphi$: the flywheel shaft's angle)")
                    if fl.shaft == "pinion" else r"$\Delta E(\varphi) = \int (M_d - M_r)\,d\varphi$"),
-            "dw": sig(fl.max_energy_swing), "jf": sig(fl.inertia),
+            # ΔW_max and J_F as the equations substitute them (one value one way, review 38)
+            "dw": flywheel_energy(fl.max_energy_swing, fl.shaft_speed_rpm, p.fluctuation, j_mass),
+            "jf": j_mass,
             "at_min": f(fl.phase_at_min * DEG, 1), "at_max": f(fl.phase_at_max * DEG, 1),
             "D": f(fl.rim.diameter * mm, 0), "b": f(fl.rim.width * mm, 1),
             "Hr": f(fl.rim.height * mm, 1), "m": f(fl.rim.rim_mass, 2),
