@@ -41,6 +41,11 @@ def test_a_closing_mark_after_an_inline_formula_stays_with_it():
     out = keep_closing_marks_with_formulas(text)
     assert "<m:t>）。</m:t></m:r></m:oMath>" in out
     assert '<w:t xml:space="preserve">下一句</w:t>' in out
+    # an opening bracket right before the formula goes into its start
+    before = '<w:r><w:t xml:space="preserve">转动惯量小（</w:t></w:r><m:oMath>' + M.format("J") + '</m:oMath>'
+    assert keep_closing_marks_with_formulas(before) == (
+        '<w:r><w:t xml:space="preserve">转动惯量小</w:t></w:r><m:oMath><m:r><m:rPr><m:nor /><m:sty m:val="p" />'
+        '</m:rPr><m:t>（</m:t></m:r>' + M.format("J") + '</m:oMath>')
     # an opening bracket or a word after the formula stays where it is; a display formula too
     for same in ('<m:oMath>' + M.format("x") + '</m:oMath><w:r><w:t>（a）</w:t></w:r>',
                  '<m:oMathPara><m:oMath>' + M.format("x") + '</m:oMath><w:r><w:t>）</w:t></w:r></m:oMathPara>'):

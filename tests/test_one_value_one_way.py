@@ -69,6 +69,11 @@ OPEN: dict[tuple[str, str, str], str] = {
                                      "decimals in the text)",
     ("die_cutter", "14.12", "14.1181"): "the realised ratio to 4 significant digits in the text; "
                                         "J_F' = J_F i² = 1276.5 needs 6 (open)",
+    ("die_cutter", "123.7", "123.67"): "stage 2's σ_F = 87.0497 MPa is at a rounding edge: the table's "
+                                       "d₁ = 123.67 and Y_Fa, Y_Sa give 87.052 (the bending check takes "
+                                       "d₁'s digits that give 87.0)",
+    ("slotter", "41.8", "41.76"): "position 10's M_b: no text that its equation's printed forces "
+                                  "give (−41.77) gives the printed P_b = −1069 (−41.76 does)",
     ("die_cutter", "124", "123.67"): "the face width b = 124 mm beside d₁ = 123.67 mm",
     ("die_cutter", "198", "197.88"): "the face width b = 198 mm beside d₁ = 197.88 mm",
     # the table of every position keeps its columns' decimals (render/fmt.py), the worked

@@ -154,11 +154,14 @@ def split_inline_formula_lists(document_xml: str) -> str:
 #: punctuation, GB/T 15834 and the kinsoku rules): "（$J \propto 1/n^2$）", "（峰值系数 $… C_j = 60.00$）".
 _AFTER_FORMULA = re.compile(r'</m:oMath>(<w:r>(?:<w:rPr>(?:(?!</w:rPr>).)*</w:rPr>)?<w:t(?: xml:space="preserve")?>)'
                             r'([）)\]】」』，。、；：！？]+)', re.DOTALL)
+#: An opening bracket right before an inline formula, which may not end a line either ("小（"
+#: at a line end, "J ∝ 1/n²）" on the next).
+_BEFORE_FORMULA = re.compile(r'(<w:t(?: xml:space="preserve")?>[^<]*?)([（(\[【「『]+)</w:t></w:r><m:oMath>')
 
 
 def keep_closing_marks_with_formulas(document_xml: str) -> str:
     """A closing bracket or punctuation mark right after an inline formula moved into the
-    formula's end as a normal-text run: LibreOffice (and Word at a narrow cell) may break a
+    formula's end as a normal-text run, an opening bracket right before it into its start: LibreOffice (and Word at a narrow cell) may break a
     line between an inline formula and the text after it, and left "）" alone at the start of
     the next line (review 38: the cam laws' "(peak coefficients …)", die_cutter's data table
     "（$J \\propto 1/n^2$）"). Display formulas are left as they are."""
@@ -166,8 +169,13 @@ def keep_closing_marks_with_formulas(document_xml: str) -> str:
         marks = m.group(2)
         return (f'<m:r><m:rPr><m:nor /><m:sty m:val="p" /></m:rPr><m:t>{marks}</m:t></m:r></m:oMath>'
                 + m.group(1))
+
+    def move_opening(m: re.Match) -> str:
+        return (m.group(1) + '</w:t></w:r><m:oMath><m:r><m:rPr><m:nor /><m:sty m:val="p" /></m:rPr>'
+                f'<m:t>{m.group(2)}</m:t></m:r>')
     parts = _DISPLAY_MATH.split(document_xml)     # odd indices: display formulas, kept
-    return "".join(part if k % 2 else _AFTER_FORMULA.sub(move, part) for k, part in enumerate(parts))
+    return "".join(part if k % 2 else _BEFORE_FORMULA.sub(move_opening, _AFTER_FORMULA.sub(move, part))
+                   for k, part in enumerate(parts))
 
 
 __all__ = ["HEADING_ROWS", "SHORT_TABLE_ROWS", "keep_closing_marks_with_formulas", "keep_headings_with_text",

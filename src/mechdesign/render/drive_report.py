@@ -588,9 +588,10 @@ def _belt_design(r, g, title: str, _) -> dict:
              if not r.fixed else rf"d_{{d2}} = {num(d2)}\ \text{{mm}}")
     # L_d0 with the digits that give the printed a (1697.2: 470 + (1600 − 1697.2)/2 = 421.4)
     a_txt = num(b.a * MM)
-    step = 10.0 ** -len(a_txt.partition(".")[2])
-    ld0 = next(t for t in (num(b.L_d0 * MM, k) for k in (4, 5, 6, 7)) if abs(
-        float(num(a0)) + (float(num(b.L_d * MM)) - float(t)) / 2 - float(a_txt)) <= 0.5 * step * (1 + 1e-9)
+    # (a half unit rounded down is no match: 380 + (1400 − 1359.3)/2 = 400.35, printed 400.3)
+    from ..numbers import gives as _gives_printed
+    ld0 = next(t for t in (num(b.L_d0 * MM, k) for k in (4, 5, 6, 7)) if _gives_printed(
+        float(num(a0)) + (float(num(b.L_d * MM)) - float(t)) / 2, a_txt)
         or t == num(b.L_d0 * MM, 7))
     formulas = [
         rf"P_{{ca}} = K_A P = {num(b.KA)} \times {_num_giving(P, lambda x: float(num(b.KA)) * x, num(Pca), num)}"

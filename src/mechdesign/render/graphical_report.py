@@ -911,17 +911,29 @@ def _group_moments(fg, mu_l, lang: str, least: dict, shown: dict,
     ``results``: a force's result as it is to print (its carried digits), by default
     :func:`_num`'s."""
     moments, couple = [], None
-    # M_b as the P_b equation substitutes it (its decimals give the printed P_b), also as the
-    # result of M_b's own equation: one value printed one way (review 38: "M_b = −169 N·m"
-    # above "P_b = −168.6/0.1")
+    # M_b as the P_b equation substitutes it (its decimals give the printed P_b); where M_b's
+    # own equation, its forces as printed, gives that text too, also as that equation's
+    # result: one value printed one way (review 38: "M_b = −169 N·m" above "P_b =
+    # −168.6/0.1"; −44.35, not −44.4 above −44.36: the forces keep their digits)
     mb_text = {}
     for m in fg.moments:
         if m.unknown == "Pb":
             arm = exact(m.arm * mu_l, decimals=5)
             mb_text["Pb"] = factor_for(fg.balancing_torque, lambda v, a=float(arm), r=_num(m.result): _gives(v / a, r),
                                        0, write=_factor, most=6)
-    if "Pb" in mb_text and any(m.unknown == "Mb" and not m.arm for m in fg.moments):
-        results = {**(results or {}), "Mb": mb_text["Pb"]}
+            own = [k for k in fg.moments if k.unknown == "Mb" and not k.arm]
+            if own:
+                _l, _t, cpls, psum0 = _moment_tex(own[0], lambda s_: True, least, None)
+                # M_b as its own equation's printed forces give it, with the decimals that
+                # give the printed P_b (−44.35, where M_b = −44.36: the forces are printed)
+                by_forces = -(psum0 * mu_l + cpls)
+                for value in (fg.balancing_torque, by_forces):
+                    t = next((t for t in (_factor(value, extra) for extra in range(7)) if "times" not in t
+                              and _gives(float(t) / float(arm), _num(m.result)) and _gives(by_forces, t)), None)
+                    if t is not None:
+                        mb_text["Pb"] = t
+                        results = {**(results or {}), "Mb": t}
+                        break
     for m in fg.moments:
         u = sym(m.unknown)
         if m.unknown == "Pb":

@@ -12,7 +12,7 @@ from ...render.figures import figure
 from ...render.fmt import e as fe
 from ...render.fmt import residue, verdict
 from ...render.fmt import f, md_meta, md_text, mpl_text, sig, time_ratio
-from ...numbers import factors_for, significant
+from ...numbers import factors_for, half_sum_decimals, significant
 from ...render.labels import LabelTable, mpl_label, mpl_point
 from ...i18n import N_, Msg, tr
 
@@ -311,15 +311,6 @@ def _gamma_eqs(d) -> tuple[str, str, list[float]]:
     return out[0], out[1], angles
 
 
-def _ac_digits(ac1: float, ac2: float) -> int:
-    """The decimals of AC₁ and AC₂ [mm] (the text and the half sums and differences): 0.01 mm,
-    0.001 mm where l = (AC₂ ± AC₁)/2 of the printed lengths would end in a half unit of
-    0.01 mm, which a reader rounds up and the value may not (58.72 − 26.07 = 32.65: 16.325,
-    where l₁ = 16.3206 prints 16.32; 58.716 − 26.075 gives 16.3205)."""
-    p1, p2 = round(float(f(ac1, 2)) * 100), round(float(f(ac2, 2)) * 100)
-    return 3 if (p2 - p1) % 2 or (p2 + p1) % 2 else 2
-
-
 def _cosines(d) -> tuple[float, float]:
     a, b, c, l4 = d.crank, d.coupler, d.rocker, d.frame
     return ((b * b + c * c - (l4 - a) ** 2) / (2 * b * c), (b * b + c * c - (l4 + a) ** 2) / (2 * b * c))
@@ -399,7 +390,7 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
     eq["opt_d1"], eq["opt_d2"] = g1, g2
     ac1 = abs(best.a_pivot - cons.c1)
     ac2 = abs(best.a_pivot - cons.c2)
-    nd = _ac_digits(ac1 * MM, ac2 * MM)
+    nd = half_sum_decimals((ac1 * MM, ac2 * MM))
     eq["opt_l1"] = (rf"l_1 = \frac{{{_mm(ac2, nd)} - {_mm(ac1, nd)}}}{{2}} = {_mm(best.design.crank)}\ \text{{mm}}")
     eq["opt_l2"] = (rf"l_2 = \frac{{{_mm(ac2, nd)} + {_mm(ac1, nd)}}}{{2}} = {_mm(best.design.coupler)}\ \text{{mm}}")
     textbook = None
@@ -407,7 +398,7 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
         t1 = abs(tb.a_pivot - cons.c1)
         t2 = abs(tb.a_pivot - cons.c2)
         d1, d2, _angles = _gamma_eqs(tb.design)
-        nt = _ac_digits(t1 * MM, t2 * MM)
+        nt = half_sum_decimals((t1 * MM, t2 * MM))
         textbook = {
             "frame": _mm(p.frame, 2), "ac1": _mm(t1, nt), "ac2": _mm(t2, nt),
             "t": "—" if tb.position is None else _deg(tb.position),
@@ -520,9 +511,11 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
             (sc.radius * MM, sc.radius * np.cos(sl.theta) * MM),
             lambda r_, c_: -np.sqrt(r_ ** 2 - (c_ - float(f(e_mm, 2))) ** 2), xa,
             tuple(significant(_mm(x)) for x in (sc.radius, sc.radius * np.cos(sl.theta))))
+        # AC₁, AC₂ with the decimals that make (AC₂ ± AC₁)/2 no half unit (review 38)
+        ns = half_sum_decimals((abs(sc.c1) * MM, abs(sc.c2) * MM))
         slider = {
             "K": time_ratio(sl.K), "theta": _deg(sl.theta), "H": f(h_mm, 2), "e": f(e_mm, 2),
-            "R": _mm(sc.radius), "ac1": _mm(abs(sc.c1)), "ac2": _mm(abs(sc.c2)),
+            "R": _mm(sc.radius), "ac1": _mm(abs(sc.c1), ns), "ac2": _mm(abs(sc.c2), ns),
             "a": _mm(sl.crank), "b": _mm(sl.rod),
             "eq_theta": (rf"\theta = 180^\circ\frac{{K - 1}}{{K + 1}} = 180^\circ \times "
                          rf"\frac{{{time_ratio(sl.K)} - 1}}{{{time_ratio(sl.K)} + 1}} = {_deg(sl.theta)}^\circ"),
@@ -532,10 +525,10 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
                      rf"({xa_c} - {f(e_mm, 2)})^2}} = {xa}"
                      r"\ \text{mm}"),
             "eq_limit": (rf"e < H\cot\theta = {f(h_mm / np.tan(sl.theta), 2)}\ \text{{mm}}"),
-            "eq_a": (rf"a = \frac{{\overline{{AC_2}} - \overline{{AC_1}}}}{{2}} = \frac{{{_mm(abs(sc.c2))} - "
-                     rf"{_mm(abs(sc.c1))}}}{{2}} = {_mm(sl.crank)}\ \text{{mm}}"),
+            "eq_a": (rf"a = \frac{{\overline{{AC_2}} - \overline{{AC_1}}}}{{2}} = \frac{{{_mm(abs(sc.c2), ns)} - "
+                     rf"{_mm(abs(sc.c1), ns)}}}{{2}} = {_mm(sl.crank)}\ \text{{mm}}"),
             "eq_b": (rf"b = \frac{{\overline{{AC_2}} + \overline{{AC_1}}}}{{2}} = "
-                      rf"\frac{{{_mm(abs(sc.c2))} + {_mm(abs(sc.c1))}}}{{2}} = {_mm(sl.rod)}\ \text{{mm}}"),
+                      rf"\frac{{{_mm(abs(sc.c2), ns)} + {_mm(abs(sc.c1), ns)}}}{{2}} = {_mm(sl.rod)}\ \text{{mm}}"),
             "eq_alpha_fast": (rf"\alpha_{{max}} = \arcsin\frac{{a + e}}{{b}} = \arcsin\frac{{{_mm(sl.crank)} + "
                               rf"{f(e_mm, 2)}}}{{{_mm(sl.rod)}}} = {_deg(sl.alpha_fast)}^\circ"),
             "eq_alpha_slow": (rf"\alpha_{{w}} = \max\Bigl(\arcsin\frac{{e}}{{b - a}},\ \arcsin\frac{{|a - e|}}{{b}}\Bigr)"
