@@ -116,3 +116,29 @@ def test_one_value_prints_one_way(example_results, name, lang):
     assert not new, "one value printed two ways within %d lines: %s" % (WINDOW, "; ".join(new))
     gone = open_here - set(found)
     assert not gone, f"listed in OPEN but gone (take it out): {gone}"
+
+
+def test_a_half_unit_is_rounded_away_from_zero():
+    """review 38, linkage_sixbar position 10: "(2.50 × 57.0)" printed as the sum 142; a reader
+    adds 142.5 and rounds it to 143. A chain's printed result may not be a half unit rounded
+    towards zero (mechdesign.numbers.gives, which every factor search asks)."""
+    from mechdesign.numbers import gives, half_sum_decimals
+
+    assert not gives(2.50 * 57.0, "142") and gives(2.50 * 57.0, "143") and gives(2.50 * 57.0, "142.5")
+    assert not gives(-2.50 * 57.0, "-142") and gives(-2.50 * 57.0, "-143")
+    assert gives(142.49, "142") and not gives(142.51, "142")
+    # (58.72 − 26.07)/2 = 16.325: the lengths to 0.001 mm; (60.10 − 27.60)/2 = 16.25: 0.01 mm
+    assert half_sum_decimals((26.07465812273429, 58.71578363094562)) == 3
+    assert half_sum_decimals((27.596283103337143, 60.10388152631645)) == 2
+
+
+def test_lockbeam_gear_table_holds_gears_only(example_results):
+    """review 38: the lock-beam's gear table put the pairs' a, ε and z_min under its diameter
+    columns; they have a table of their own."""
+    md, _ = _markdown(example_results, "lockbeam", "en")
+    gears = md[:md.index("{#tbl:gears}")].rsplit("\n\n", 2)[-2]
+    rows = [r for r in gears.splitlines() if r.startswith("|") and not r.startswith("|:") and not r.startswith("|-")]
+    assert rows and not any("centre distance" in r.lower() or "contact ratio" in r.lower() for r in rows[1:])
+    assert all(len(r.strip("|").split("|")) == len(rows[0].strip("|").split("|")) for r in rows)
+    pairs = md[:md.index("{#tbl:gear-pairs}")].rsplit("\n\n", 2)[-2]
+    assert "| 2 | $z_{1}$ – $z_{2}$ | 324.0 | 1.685 | 17 |" in pairs     # 6 × (18 + 90)/2 = 324 mm
