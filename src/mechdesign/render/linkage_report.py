@@ -325,14 +325,6 @@ def flywheel_equation(energy_swing: float, speed_rpm: float, delta: float, jf: s
             rf"{dw_text}}}{{\pi^2 \times {n_text}^2 \times {d_tex}}} = {jf}\ \text{{kg·m}}^2")
 
 
-def flywheel_energy(energy_swing: float, speed_rpm: float, delta: float, jf: str,
-                    energy_digits: int = 4) -> str:
-    """ΔW_max as :func:`flywheel_equation` substitutes it, for the text that states it just
-    before the equation: one value printed one way (review 38: "ΔW_max = 190.3 J" above
-    "900 × 190.32")."""
-    return _flywheel_factors(energy_swing, speed_rpm, delta, jf, energy_digits)[1]
-
-
 def _flywheel_factors(energy_swing: float, speed_rpm: float, delta: float, jf: str,
                       energy_digits: int = 4) -> tuple[str, str, str]:
     """J_F = 900ΔW_max/(π²n²[δ]) with its factors substituted so that they give the printed
@@ -505,16 +497,12 @@ def linkage_context(model, k, f_, fly, v, figures: dict, lang: str,
         "fly": None,
     }
     if fly is not None:
-        # J_F with the digits the rim mass m = 4 J_F/D² needs, in every line that prints it
-        # (one value one way, review 38: 204.1 in J_F's equation, 204.13 in m's)
-        jf_text = (rim_inertia_factor(fly.inertia, fly.rim) if fly.rim is not None
-                   else sig(fly.inertia, group=False))
         ctx["fly"] = {
-            "n": f(fly.shaft_speed_rpm, 2),
-            "dw": flywheel_energy(fly.max_energy_swing, fly.shaft_speed_rpm, fly.fluctuation, jf_text),
+            "n": f(fly.shaft_speed_rpm, 2), "dw": sig(fly.max_energy_swing),
             "at_min": f(fly.phase_at_min * DEG, 1), "at_max": f(fly.phase_at_max * DEG, 1),
-            "delta": fluctuation(fly.fluctuation), "jf": jf_text,
-            "eq": flywheel_equation(fly.max_energy_swing, fly.shaft_speed_rpm, fly.fluctuation, jf_text),
+            "delta": fluctuation(fly.fluctuation), "jf": sig(fly.inertia),
+            "eq": flywheel_equation(fly.max_energy_swing, fly.shaft_speed_rpm, fly.fluctuation,
+                                    sig(fly.inertia, group=False)),
             "rim": None, "real": realised_flywheel(fly, flywheel_realised_rpm, _),
         }
         if fly.rim is not None:

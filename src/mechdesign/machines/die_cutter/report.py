@@ -17,7 +17,7 @@ from ...render.fmt import e, f, length, md_meta, md_text, sig, fluctuation, fact
 from ...render.fmt import number, product, residue, time_ratio, verdict
 from ...render.labels import pgettext, translated
 from ...render.fmt import sentences
-from ...render.linkage_report import flywheel_energy, flywheel_equation, realised_flywheel, rim_inertia_factor
+from ...render.linkage_report import flywheel_equation, realised_flywheel, rim_inertia_factor
 from ...stages.drive import shaft_numeral
 
 DEG = 180.0 / np.pi
@@ -456,9 +456,7 @@ def _flywheel(r, p, b, _) -> dict:
     }
     return {"eq": eq, "shaft": shaft, "shaft_on": _shaft_in_text(fl.shaft, stages, _),
             "n": f(fl.shaft_speed_rpm, 2), "ratio": sig(fl.speed_ratio),
-            "dw": flywheel_energy(fl.max_energy_swing, fl.shaft_speed_rpm, fl.fluctuation, f(fl.inertia, 3),
-                                  len(f(fl.max_energy_swing, 1).replace(".", "").lstrip("0"))),
-            "at_min": _deg(fl.phase_at_min, 1),
+            "dw": f(fl.max_energy_swing, 1), "at_min": _deg(fl.phase_at_min, 1),
             "at_max": _deg(fl.phase_at_max, 1), "delta": fluctuation(fl.fluctuation),
             "jf": f(fl.inertia, 3), "jf_crank": f(fl.inertia_on_crank, 1),
             "D": f(fl.rim.diameter * MM, 0), "b": f(fl.rim.width * MM, 1),
