@@ -138,8 +138,13 @@ def chains(md: str):
 def faults(md: str) -> list[str]:
     out = []
     for lhs, rhs, value, printed, half in chains(md):
-        if abs(value - printed) > half * (1 + 1e-9) + 1e-12 * abs(value):
+        off = abs(value - printed)
+        if off > half * (1 + 1e-9) + 1e-12 * abs(value):
             out.append(f"{lhs} = {rhs[:30]}  (computed {value:.6g})")
+        elif abs(off - half) <= 1e-9 * max(half, abs(value) * 1e-3) and abs(printed) < abs(value):
+            # the printed numbers give exactly a half unit of the result's last digit: a
+            # reader rounds it up (away from zero), 142.5 → 143, never 142 (review 38)
+            out.append(f"{lhs} = {rhs[:30]}  (computed {value:.6g}, a half rounded down)")
     return out
 
 
@@ -147,7 +152,11 @@ def faults(md: str) -> list[str]:
 #: compute yet; the test fails when one of them computes (then take it out). Empty: every
 #: chain of every example report computes (graph36; the reports of session 35 had 32 distinct
 #: chains that did not, 70 in all, in 9 of the 14 briefs).
-OPEN: dict[tuple[str, str], str] = {}
+OPEN: dict[tuple[str, str], str] = {
+    ("press", r"\frac{272.47 + 173.90}{2}"): "L_BC = 223.18: the printed L_AC give 223.185, a half "
+    "unit rounded down (review 38); the L_AC are results of square-root chains of coordinates "
+    "to 0.01 mm, which cannot give them to 0.001 mm",
+}
 
 
 def test_the_rule_on_the_chains_named_in_issue_19():
@@ -183,12 +192,17 @@ def test_the_rule_on_the_chains_named_in_issue_19():
            # what is not a chain: a power written out, a product equal to a product, "≈"
            r"$$ 3 \times 3 \times 3 = 3^{3} $$", r"$$ \frac{200}{100} \times \frac{90}{18} = 2 \times 5 = 10 $$",
            r"$$ z_{min} = \frac{2}{\sin^2 20°} = 17.10 \approx 17 $$"]
+    # a half unit rounded down (review 38: linkage_sixbar position 10, crank_rocker's l_1)
+    old += [r"$$ F = -\frac{142 + 2.31 / 0.005}{60.0} = -10.1\ \mathrm{N},\quad 2.50 \times 57.0 = 142 $$",
+            r"$$ l_1 = \frac{58.72 - 26.07}{2} = 16.32\ \text{mm} $$"]
+    new += [r"$$ 2.50 \times 57.0 = 142.5,\quad 2.50 \times 57.0 = 143,\quad -2.50 \times 57.0 = -143 $$",
+            r"$$ l_1 = \frac{58.716 - 26.075}{2} = 16.32\ \text{mm} $$"]
     for line in old:
         assert len(faults(line)) == 1, (line, faults(line))
     for line in new:
         assert not faults(line), (line, faults(line))
     # every line is one chain but "3 × 3 × 3 = 3³" and the "≈" (none) and "… = 2 × 5 = 10" (one)
-    assert len(list(chains("\n".join(old + new)))) == len(old) + len(new) - 2
+    assert len(list(chains("\n".join(old + new)))) == len(old) + len(new) - 2 + 1 + 2
 
 
 @pytest.mark.parametrize("lang", ["zh", "en"])

@@ -59,9 +59,17 @@ def sig(x: float, n: int = 4, group: bool = True, ref: float = 0.0) -> str:
 
 def gives(value: float, printed: str) -> bool:
     """``value`` (a chain evaluated from its printed factors) rounds to ``printed``: within
-    half a unit of its last printed digit (the rule of every displayed chain)."""
+    half a unit of its last printed digit (the rule of every displayed chain); a value exactly
+    half a unit off (the printed factors end in a 5 there: 2.50 × 57.0 = 142.5) only where
+    ``printed`` is its rounding away from zero, as a reader rounds it (143, never 142:
+    review 38)."""
     digits = len(printed.replace(" ", "").partition(".")[2])
-    return abs(value - float(printed.replace(" ", ""))) <= 0.5 * 10.0 ** -digits * (1 + 1e-9)
+    shown = float(printed.replace(" ", ""))
+    half = 0.5 * 10.0 ** -digits
+    off = abs(value - shown)
+    if off > half * (1 + 1e-9):
+        return False
+    return not (abs(off - half) <= 1e-9 * half and abs(shown) < abs(value))
 
 
 def significant(text: str) -> int:
@@ -102,3 +110,19 @@ def factors_for(xs, fn, printed: str, sig_digits=4, most=3, decimals=False) -> l
             if gives(fn(*(float(t) for t in texts)), result):
                 return texts
     return [factor_text(x, b + m, d) for x, b, m, d in zip(xs, base, top, dec)]
+
+
+def half_sum_decimals(xs, digits: int = 2, most: int = 3) -> int:
+    """The decimals to print the numbers ``xs`` with so that half the sum or difference of
+    any two of them as printed, (a ± b)/2, is no tie at ``digits`` decimals (its result's): at
+    ``digits`` (0.01 mm), one more at a time (up to ``most`` more) where a half sum of the
+    printed numbers ends exactly in half a unit there (58.72 − 26.07 = 32.65: 16.325, which
+    a reader rounds to 16.33 where l₁ = 16.3206 prints 16.32; to 0.001 mm 58.716 − 26.075 =
+    32.641 gives 16.3205)."""
+    xs = list(xs)
+    for d in range(digits, digits + most + 1):
+        p = [round(float(fixed(x, d)) * 10 ** d) for x in xs]
+        unit = 10 ** (d - digits)               # a unit of the result's last digit, in 10^-d
+        if not any((a + s * b) % (2 * unit) == unit for i, a in enumerate(p) for b in p[i + 1:] for s in (1, -1)):
+            return d
+    return digits + most

@@ -37,7 +37,8 @@ from pathlib import Path
 from ..fileio import atomic_path
 from .docx_math import align_broken_equations, group_scripted_brackets
 from .docx_layout import (centre_tables, keep_headings_with_text, keep_lead_ins, keep_table_rows,
-                          separate_tables, split_inline_formula_lists)
+                          separate_tables, split_inline_formula_lists,
+                          keep_closing_marks_with_formulas, keep_references_together)
 from .docx_toc import body_on_a_new_page, fill_table_of_contents
 from .mathbreak import break_display_math
 
@@ -342,6 +343,7 @@ def _finish(docx: Path, *, title: str, author: str, subject: str) -> None:
             xml = align_broken_equations(data.decode("utf-8"))
             xml = body_on_a_new_page(fill_table_of_contents(group_scripted_brackets(xml)))
             xml = split_inline_formula_lists(keep_headings_with_text(keep_lead_ins(keep_table_rows(xml))))
+            xml = keep_references_together(keep_closing_marks_with_formulas(xml))
             xml = separate_tables(centre_tables(xml))
             data = latin_marks_in_latin_font(minus_signs(xml)).encode("utf-8")
         elif name == "word/settings.xml":

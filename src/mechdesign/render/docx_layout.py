@@ -150,8 +150,36 @@ def split_inline_formula_lists(document_xml: str) -> str:
     return "".join(part if k % 2 else _INLINE_MATH.sub(split, part) for k, part in enumerate(parts))
 
 
-__all__ = ["HEADING_ROWS", "SHORT_TABLE_ROWS", "keep_headings_with_text", "keep_lead_ins", "keep_table_rows",
-           "split_inline_formula_lists"]
+#: The text that follows an inline formula and may not start a line (closing brackets and
+#: punctuation, GB/T 15834 and the kinsoku rules): "（$J \propto 1/n^2$）", "（峰值系数 $… C_j = 60.00$）".
+_AFTER_FORMULA = re.compile(r'</m:oMath>(<w:r>(?:<w:rPr>(?:(?!</w:rPr>).)*</w:rPr>)?<w:t(?: xml:space="preserve")?>)'
+                            r'([）)\]】」』，。、；：！？]+)', re.DOTALL)
+#: An opening bracket right before an inline formula, which may not end a line either ("小（"
+#: at a line end, "J ∝ 1/n²）" on the next).
+_BEFORE_FORMULA = re.compile(r'(<w:t(?: xml:space="preserve")?>[^<]*?)([（(\[【「『]+)</w:t></w:r><m:oMath>')
+
+
+def keep_closing_marks_with_formulas(document_xml: str) -> str:
+    """A closing bracket or punctuation mark right after an inline formula moved into the
+    formula's end as a normal-text run, an opening bracket right before it into its start: LibreOffice (and Word at a narrow cell) may break a
+    line between an inline formula and the text after it, and left "）" alone at the start of
+    the next line (review 38: the cam laws' "(peak coefficients …)", die_cutter's data table
+    "（$J \\propto 1/n^2$）"). Display formulas are left as they are."""
+    def move(m: re.Match) -> str:
+        marks = m.group(2)
+        return (f'<m:r><m:rPr><m:nor /><m:sty m:val="p" /></m:rPr><m:t>{marks}</m:t></m:r></m:oMath>'
+                + m.group(1))
+
+    def move_opening(m: re.Match) -> str:
+        return (m.group(1) + '</w:t></w:r><m:oMath><m:r><m:rPr><m:nor /><m:sty m:val="p" /></m:rPr>'
+                f'<m:t>{m.group(2)}</m:t></m:r>')
+    parts = _DISPLAY_MATH.split(document_xml)     # odd indices: display formulas, kept
+    return "".join(part if k % 2 else _BEFORE_FORMULA.sub(move_opening, _AFTER_FORMULA.sub(move, part))
+                   for k, part in enumerate(parts))
+
+
+__all__ = ["HEADING_ROWS", "SHORT_TABLE_ROWS", "keep_closing_marks_with_formulas", "keep_headings_with_text",
+           "keep_lead_ins", "keep_references_together", "keep_table_rows", "split_inline_formula_lists"]
 
 
 _TBL_PR = re.compile(r"<w:tbl><w:tblPr>(.*?)</w:tblPr>", re.DOTALL)
@@ -305,3 +333,42 @@ def keep_headings_with_text(document_xml: str) -> str:
 
 def _rows_of(table: str) -> list[str]:
     return re.findall(r"<w:tr>.*?</w:tr>", table, flags=re.DOTALL)
+
+
+#: A reference list of at most this many entries is kept on one page with its heading.
+REFERENCES_WHOLE = 16
+#: A longer list keeps at least this many entries on its last page.
+REFERENCES_LAST = 4
+_REFERENCES = re.compile(r'(<w:bookmarkStart w:id="(\d+)" w:name="references" />)(.*?)(<w:bookmarkEnd w:id="\2" />)',
+                         re.DOTALL)
+_PARAGRAPH = re.compile(r"<w:p>(?:<w:pPr>(.*?)</w:pPr>)?", re.DOTALL)
+
+
+def _kept(ppr: str) -> str:
+    """Paragraph properties with ``w:keepNext`` and ``w:keepLines`` (after ``w:pStyle``, in
+    the schema's order)."""
+    style = re.match(r"<w:pStyle [^>]*/>", ppr)
+    head = style.group(0) if style else ""
+    rest = ppr[len(head):].replace("<w:keepNext />", "").replace("<w:keepLines />", "")
+    return f"<w:p><w:pPr>{head}<w:keepNext /><w:keepLines />{rest}</w:pPr>"
+
+
+def keep_references_together(document_xml: str) -> str:
+    """The reference list (pandoc's section bookmarked "references") kept with its heading on
+    one page when it has at most :data:`REFERENCES_WHOLE` entries, else its last
+    :data:`REFERENCES_LAST` entries together: the last page of a report never holds one to
+    three references alone (review 38: die_cutter en's last Word page held [9]–[11])."""
+    def keep(m: re.Match) -> str:
+        body = m.group(3)
+        paras = list(_PARAGRAPH.finditer(body))
+        if len(paras) < 2:
+            return m.group(0)
+        kept = paras[:-1] if len(paras) - 1 <= REFERENCES_WHOLE else paras[-REFERENCES_LAST:-1]
+        out, last = [], 0
+        for p in kept:
+            out.append(body[last:p.start()])
+            out.append(_kept(p.group(1) or ""))
+            last = p.end()
+        out.append(body[last:])
+        return m.group(1) + "".join(out) + m.group(4)
+    return _REFERENCES.sub(keep, document_xml)

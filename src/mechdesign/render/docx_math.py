@@ -32,6 +32,10 @@ import re
 _AMPERSAND = "<m:r><m:t>&amp;</m:t></m:r>"
 #: Line break between the equations of a math paragraph (Word's form).
 _LINE_BREAK = "<m:r><w:br /></m:r>"
+#: The space that ends each line but the last (the ``\\quad`` render/mathbreak broke the formula
+#: at): Word draws it at the end of the line as nothing, LibreOffice, which sets the lines
+#: one after another, as the space between them ("57.04 mm, b = …", never "57.04 mm,b").
+_LINE_END_SPACE = '<m:r><m:rPr><m:nor /></m:rPr><m:t xml:space="preserve">\u2003</m:t></m:r>'
 #: An empty normal-text run: LibreOffice's operand before a line that starts with an operator.
 _EMPTY_OPERAND = "<m:r><m:rPr><m:nor /></m:rPr><m:t></m:t></m:r>"
 #: Characters that need a left operand in StarMath (relations, arrows, binary operators
@@ -148,7 +152,7 @@ def _paragraph(match: re.Match) -> str:
     if rows is None or _AMPERSAND not in array.group(1):
         return para
     lines = [_line(row) for row in rows]
-    maths = "".join(f"<m:oMath>{line}{_LINE_BREAK if n < len(lines) - 1 else ''}</m:oMath>"
+    maths = "".join(f"<m:oMath>{line}{_LINE_END_SPACE + _LINE_BREAK if n < len(lines) - 1 else ''}</m:oMath>"
                     for n, line in enumerate(lines))
     head = para[:array.start()].replace('<m:jc m:val="center" />', '<m:jc m:val="centerGroup" />')
     return head + maths + para[array.end():]

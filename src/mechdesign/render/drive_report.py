@@ -56,16 +56,29 @@ def _num_giving(x: float, fn, printed: str, write) -> str:
     return factor_for(x, lambda v: gives(fn(v), printed), write=write)
 
 
-def _fp_factors(z: int, F0: float, alpha1_deg: float, printed: str) -> tuple[str, str]:
-    """F₀ and α₁ (degrees) of "F_p = 2 z F₀ sin(α₁/2)" as :func:`strength_tex.num` prints
-    them, with the fewest more digits (F₀'s first: α₁ is printed in the text above) that make
-    the printed factors give the printed F_p (2 × 3 × 151 × sin 81.05° = 895.0 where
-    F_p = 894.8: F₀ = 150.964)."""
-    from .strength_tex import _giving
+def _fp_texts(z: int, F0: float, alpha1_deg: float, Fp: float) -> tuple[str, str, str]:
+    """F₀ as the table and the F₀ formula print it, F₀ as the factor of "F_p = 2 z F₀
+    sin(α₁/2)", and F_p as the table and that formula print it.
 
-    alpha_txt, f0_txt = _giving((alpha1_deg, F0), lambda a, f0: 2 * z * f0 * math.sin(
-        math.radians(a) / 2), printed, most=4)
-    return f0_txt, alpha_txt
+    One value prints one way (review 38: F₀ was 151.0 in the table, 151 in its formula and
+    150.964 in F_p's): F₀ and F_p to 0.1 N, or to 1 N where F₀ to 0.1 N does not give F_p
+    to 0.1 N (2 × 3 × 151.0 × sin 81.05° = 895.0 where F_p = 894.8; to 1 N: 151 and 895);
+    α₁ as the α₁ formula prints it. Where neither does, F₀'s factor has the fewest more
+    digits that give F_p (:func:`strength_tex._giving`)."""
+    from ..numbers import gives
+    from .strength_tex import _giving, num
+
+    alpha_txt = num(alpha1_deg)
+
+    def fp_of(f0: float, a: float = float(alpha_txt)) -> float:
+        return 2 * z * f0 * math.sin(math.radians(a) / 2)
+
+    for dp in (1, 0):
+        f0_txt, fp_txt = f(F0, dp), f(Fp, dp)
+        if gives(fp_of(float(f0_txt)), fp_txt):
+            return f0_txt, f0_txt, fp_txt
+    _alpha, f0_factor = _giving((alpha1_deg, F0), lambda a, f0: fp_of(f0, a), num(Fp), most=4)
+    return f(F0, 1), f0_factor, num(Fp)
 
 
 def _pw_for(d) -> str:
@@ -564,11 +577,13 @@ def _belt_design(r, g, title: str, _) -> dict:
               "against the book: check them in the handbook before handing in.", a0=f(a0, 0),
               a0_min=f(b.a0_min * MM, 0), a0_max=f(b.a0_max * MM, 0), a_min=f(b.a_min * MM, 0),
               a_max=f(b.a_max * MM, 0))]
+    F0_row, F0_txt, Fp_txt = _fp_texts(b.z, b.F0, deg(b.alpha1), b.Fp)
+    # v to 0.01 m/s in the table, the formulas and the checks (one value one way, review 38)
     rows = [[_("Section"), b.section, "—"],
             ["$d_{d1} / d_{d2}$", f"{f(d1, 0)} / {f(d2, 0)}", "mm"], ["$v$", f(b.v, 2), "m/s"],
             ["$L_d$", f(b.L_d * MM, 0), "mm"], ["$a$", f(b.a * MM, 1), "mm"],
             ["$\\alpha_1$", f(deg(b.alpha1), 2), "°"], ["$z$", str(b.z), "—"],
-            ["$F_0$", f(b.F0, 1), "N"], ["$F_p$", f(b.Fp, 1), "N"]]
+            ["$F_0$", F0_row, "N"], ["$F_p$", Fp_txt, "N"]]
     i_txt = _num_giving(r.ratio_allocated, lambda i: i * float(num(d1)) * (1 - float(num(b.slip))),
                         num(d2_calc), num)
     d2_eq = (rf"d_{{d2}} = i\,d_{{d1}}(1-\varepsilon) = {i_txt} \times {num(d1)} \times "
@@ -576,16 +591,16 @@ def _belt_design(r, g, title: str, _) -> dict:
              if not r.fixed else rf"d_{{d2}} = {num(d2)}\ \text{{mm}}")
     # L_d0 with the digits that give the printed a (1697.2: 470 + (1600 − 1697.2)/2 = 421.4)
     a_txt = num(b.a * MM)
-    step = 10.0 ** -len(a_txt.partition(".")[2])
-    ld0 = next(t for t in (num(b.L_d0 * MM, k) for k in (4, 5, 6, 7)) if abs(
-        float(num(a0)) + (float(num(b.L_d * MM)) - float(t)) / 2 - float(a_txt)) <= 0.5 * step * (1 + 1e-9)
+    # (a half unit rounded down is no match: 380 + (1400 − 1359.3)/2 = 400.35, printed 400.3)
+    from ..numbers import gives as _gives_printed
+    ld0 = next(t for t in (num(b.L_d0 * MM, k) for k in (4, 5, 6, 7)) if _gives_printed(
+        float(num(a0)) + (float(num(b.L_d * MM)) - float(t)) / 2, a_txt)
         or t == num(b.L_d0 * MM, 7))
-    F0_txt, alpha_txt = _fp_factors(b.z, b.F0, deg(b.alpha1), num(b.Fp))
     formulas = [
         rf"P_{{ca}} = K_A P = {num(b.KA)} \times {_num_giving(P, lambda x: float(num(b.KA)) * x, num(Pca), num)}"
         rf" = {num(Pca)}\ \text{{kW}}",
         rf"v = \frac{{\pi d_{{d1}} n_1}}{{60 \times 1000}} = \frac{{\pi \times {num(d1)} \times {num(b.n1_rpm)}}}"
-        rf"{{60000}} = {num(b.v)}\ \text{{m/s}}",
+        rf"{{60000}} = {f(b.v, 2)}\ \text{{m/s}}",
         d2_eq,
         rf"L_{{d0}} = 2a_0 + \frac{{\pi}}{{2}}(d_{{d1}}+d_{{d2}}) + \frac{{(d_{{d2}}-d_{{d1}})^2}}{{4a_0}} = "
         rf"2 \times {num(a0)} + \frac{{\pi}}{{2}} \times {num(d1 + d2)} + \frac{{{num(d2 - d1)}^2}}{{4 \times {num(a0)}}}"
@@ -597,10 +612,10 @@ def _belt_design(r, g, title: str, _) -> dict:
         rf"z = \frac{{P_{{ca}}}}{{(P_0 + \Delta P_0) K_\alpha K_L}} = \frac{{{num(Pca)}}}{{({num(b.P0 / 1e3)} + "
         rf"{num(b.dP0 / 1e3)}) \times {num(b.K_alpha)} \times {num(b.K_L)}}} = {num(b.z_exact)} \rightarrow z = {b.z}",
         rf"F_0 = 500 \frac{{(2.5 - K_\alpha) P_{{ca}}}}{{K_\alpha z v}} + q v^2 = 500 \times \frac{{(2.5 - "
-        rf"{num(b.K_alpha)}) \times {num(Pca)}}}{{{num(b.K_alpha)} \times {b.z} \times {num(b.v)}}} + {num(b.q_mass)}"
-        rf" \times {num(b.v)}^2 = {num(b.F0)}\ \text{{N}}",
+        rf"{num(b.K_alpha)}) \times {num(Pca)}}}{{{num(b.K_alpha)} \times {b.z} \times {f(b.v, 2)}}} + {num(b.q_mass)}"
+        rf" \times {f(b.v, 2)}^2 = {F0_row}\ \text{{N}}",
         rf"F_p = 2 z F_0 \sin\frac{{\alpha_1}}{{2}} = 2 \times {b.z} \times {F0_txt} \times \sin"
-        rf"\frac{{{alpha_txt}^\circ}}{{2}} = {num(b.Fp)}\ \text{{N}}",
+        rf"\frac{{{num(deg(b.alpha1))}^\circ}}{{2}} = {Fp_txt}\ \text{{N}}",
     ]
     return {"title": title, "text": text, "rows": rows, "formulas": formulas,
             "checks": _rows(check_rows(g.checks, _.lang), _), "refs": ("pu9", "gb13575")}

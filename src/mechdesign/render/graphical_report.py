@@ -704,6 +704,20 @@ def _moment_tex(m, gives=None, least=None, shown=None) -> tuple[str, float, floa
     return known, total, couples, psum
 
 
+def _sum_text(total: float, psum: float) -> str:
+    """The sum of a moment equation's printed products as it is printed (:func:`_num`'s
+    digits of the unrounded ``total``), with one more decimal where the printed products
+    ``psum`` end exactly in a half unit of its last digit: a reader adding "2.50 × 57.0"
+    writes 142.5 and rounds it up, never to 142 (review 38, linkage_sixbar position 10)."""
+    num = _num(total)
+    if "times" in num:
+        return num
+    unit = 10.0 ** -len(num.partition(".")[2])
+    if abs(abs(psum - float(num)) - 0.5 * unit) <= 1e-9 * max(1.0, abs(psum)):
+        return f(psum, len(num.partition(".")[2]) + 1)
+    return num
+
+
 def _mantissa_for(x: float, ok) -> tuple[str, float]:
     """``x`` (a million or more) as "a\\times10^{n}" with 4 significant digits, more (up to 8)
     until ``ok(printed value)`` holds; the text and the value it prints."""
@@ -897,6 +911,29 @@ def _group_moments(fg, mu_l, lang: str, least: dict, shown: dict,
     ``results``: a force's result as it is to print (its carried digits), by default
     :func:`_num`'s."""
     moments, couple = [], None
+    # M_b as the P_b equation substitutes it (its decimals give the printed P_b); where M_b's
+    # own equation, its forces as printed, gives that text too, also as that equation's
+    # result: one value printed one way (review 38: "M_b = −169 N·m" above "P_b =
+    # −168.6/0.1"; −44.35, not −44.4 above −44.36: the forces keep their digits)
+    mb_text = {}
+    for m in fg.moments:
+        if m.unknown == "Pb":
+            arm = exact(m.arm * mu_l, decimals=5)
+            mb_text["Pb"] = factor_for(fg.balancing_torque, lambda v, a=float(arm), r=_num(m.result): _gives(v / a, r),
+                                       0, write=_factor, most=6)
+            own = [k for k in fg.moments if k.unknown == "Mb" and not k.arm]
+            if own:
+                _l, _t, cpls, psum0 = _moment_tex(own[0], lambda s_: True, least, None)
+                # M_b as its own equation's printed forces give it, with the decimals that
+                # give the printed P_b (−44.35, where M_b = −44.36: the forces are printed)
+                by_forces = -(psum0 * mu_l + cpls)
+                for value in (fg.balancing_torque, by_forces):
+                    t = next((t for t in (_factor(value, extra) for extra in range(7)) if "times" not in t
+                              and _gives(float(t) / float(arm), _num(m.result)) and _gives(by_forces, t)), None)
+                    if t is not None:
+                        mb_text["Pb"] = t
+                        results = {**(results or {}), "Mb": t}
+                        break
     for m in fg.moments:
         u = sym(m.unknown)
         if m.unknown == "Pb":
@@ -905,8 +942,7 @@ def _group_moments(fg, mu_l, lang: str, least: dict, shown: dict,
             # M_b with the decimals that give the printed P_b (−227.3/0.0925 = −2457):
             # _factor's digits are decimals more than _num's
             arm = exact(m.arm * mu_l, decimals=5)
-            mb = factor_for(fg.balancing_torque, lambda v: _gives(v / float(arm), _num(m.result)),
-                            0, write=_factor, most=6)
+            mb = mb_text["Pb"]
             moments.append((f"P_b = \\frac{{M_b}}{{l_{{{m.point}}}}} = \\frac{{{mb}}}"
                             f"{{{arm}}} = {_num(m.result)}" r"\ \mathrm{N}", None, None))
             continue
@@ -933,7 +969,7 @@ def _group_moments(fg, mu_l, lang: str, least: dict, shown: dict,
             # the printed sum, and the couple (N·m, divided by mu_l to N·mm of the drawing)
             # with the digits that give the printed unknown
             lhs, total, _c, psum = _moment_tex(m, None, least, shown)
-            num = _num(total)
+            num = _sum_text(total, psum)
             value = float(num) if "times" not in num else total
             if "times" in num:
                 # a sum of a million or more (N·mm of the drawing) with a power of ten: its

@@ -319,6 +319,14 @@ def rim_inertia_factor(inertia: float, rim) -> str:
 
 def flywheel_equation(energy_swing: float, speed_rpm: float, delta: float, jf: str,
                       energy_digits: int = 4) -> str:
+    """J_F = 900ΔW_max/(π²n²[δ]) with its factors (:func:`_flywheel_factors`) substituted."""
+    n_text, dw_text, d_tex = _flywheel_factors(energy_swing, speed_rpm, delta, jf, energy_digits)
+    return (rf"J_F = \frac{{900\,\Delta W_{{max}}}}{{\pi^2 n^2 [\delta]}} = \frac{{900 \times "
+            rf"{dw_text}}}{{\pi^2 \times {n_text}^2 \times {d_tex}}} = {jf}\ \text{{kg·m}}^2")
+
+
+def _flywheel_factors(energy_swing: float, speed_rpm: float, delta: float, jf: str,
+                      energy_digits: int = 4) -> tuple[str, str, str]:
     """J_F = 900ΔW_max/(π²n²[δ]) with its factors substituted so that they give the printed
     ``jf``: [δ] as the course writes it (1/30, never 0.0333); n to 0.01 rpm and ΔW_max to
     ``energy_digits`` significant digits (the text's), each with the fewest more digits
@@ -339,8 +347,7 @@ def flywheel_equation(energy_swing: float, speed_rpm: float, delta: float, jf: s
     n_text, dw_text = factors_for((speed_rpm, energy_swing), jf_of, jf,
                                   (2 if to_decimals else 4, energy_digits), most=(2, 4),
                                   decimals=(to_decimals, False))
-    return (rf"J_F = \frac{{900\,\Delta W_{{max}}}}{{\pi^2 n^2 [\delta]}} = \frac{{900 \times "
-            rf"{dw_text}}}{{\pi^2 \times {n_text}^2 \times {d_tex}}} = {jf}\ \text{{kg·m}}^2")
+    return n_text, dw_text, d_tex
 
 
 def realised_flywheel(fly, n_real: float | None, _) -> str | None:

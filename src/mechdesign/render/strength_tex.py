@@ -142,8 +142,12 @@ def _gear_contact(c: Check) -> str:
     factors = [i["ZH"], i["ZE"] * SQRT_MPA, i["Zeps"]] + ([i["Zbeta"]] if zb else [])
     z = math.prod(_float(num(x)) for x in factors)
     K, b, u = (_float(num(x)) for x in (i["K"], i["b"] * MM, i["u"]))
-    t1, d1 = _giving((i["T1"] * N_MM, i["d1"] * MM),
-                     lambda t, d: math.sqrt(2 * K * t / (b * d * d) * (u + 1) / u) * z, _value(c))
+    # d₁ as the gear table prints it (0.01 mm), in both checks (one value one way: 123.67
+    # in the table and the contact check, 123.7 in the bending check, review 38); T₁ with
+    # the digits that give the printed stress
+    d1 = f(i["d1"] * MM, 2)
+    t1, = _giving((i["T1"] * N_MM,), lambda t: math.sqrt(2 * K * t / (b * float(d1) ** 2) * (u + 1) / u) * z,
+                  _value(c), most=4)
     numbers = (rf"\sqrt{{\frac{{2 \times {num(i['K'])} \times {t1}}}{{{num(i['b'] * MM)} \times "
                rf"{d1}^2}} \times \frac{{{num(i['u'])}+1}}{{{num(i['u'])}}}}} \times {_prod(*factors)}")
     return rf"\sigma_H = {sym} = {numbers}" + _tail(c, r"[\sigma_H]")
@@ -154,11 +158,25 @@ def _gear_bending(c: Check) -> str:
     yb = i.get("Ybeta", 1.0) != 1.0
     sym = r"\frac{2 K T_1 Y_{Fa} Y_{Sa} Y_\varepsilon" + (r" Y_\beta" if yb else "") + "}{b d_1 m}"
     top = [i["K"], i["T1"] * N_MM, i["YFa"], i["YSa"], i["Yeps"]] + ([i["Ybeta"]] if yb else [])
-    rest = math.prod(_float(num(x)) for k, x in enumerate(top) if k != 1)
+    # d₁ as the gear table prints it (see _gear_contact), Y_Fa and Y_Sa as it prints them; K,
+    # T₁, Y_ε and Y_β (not in the table) with the digits that give the printed stress
+    free = [0, 1, 4] + ([5] if yb else [])
+    rest = math.prod(_float(num(x)) for k, x in enumerate(top) if k not in free)
     b, m = _float(num(i["b"] * MM)), _float(num(i["m"] * MM))
-    t1, d1 = _giving((i["T1"] * N_MM, i["d1"] * MM), lambda t, d: 2 * rest * t / (b * d * m), _value(c))
+    d1 = f(i["d1"] * MM, 2)
+    texts = _giving([top[k] for k in free], lambda *v: 2 * rest * math.prod(v) / (b * float(d1) * m),
+                    _value(c), most=3)
+    from ..numbers import gives
+    if not gives(2 * rest * math.prod(_float(t) for t in texts) / (b * float(d1) * m), _value(c)):
+        # a stress at a rounding edge (die_cutter stage 2: 87.0497 MPa, which the table's
+        # d₁ = 123.67 and Y_Fa, Y_Sa cannot give): K, T₁ and d₁ with the digits that give it
+        rest = math.prod(_float(num(x)) for k, x in enumerate(top) if k not in (0, 1))
+        k_txt, t1, d1 = _giving((i["K"], i["T1"] * N_MM, i["d1"] * MM),
+                                lambda k_, t, d: 2 * rest * k_ * t / (b * d * m), _value(c))
+        texts = [k_txt, t1] + [num(top[k]) for k in free[2:]]
     shown = [num(x) for x in top]
-    shown[1] = t1
+    for k, t in zip(free, texts):
+        shown[k] = t
     top_txt = r" \times ".join(shown)
     numbers = (rf"\frac{{2 \times {top_txt}}}"
                rf"{{{num(i['b'] * MM)} \times {d1} \times {num(i['m'] * MM)}}}")
@@ -315,7 +333,9 @@ def _undercut(c: Check) -> str:
 def _contact_ratio(c: Check) -> str:
     i = c.inputs
     if "beta" not in i:
-        return rf"\varepsilon_\alpha = {num(c.value)} {_rel(c)} [\varepsilon_\alpha] = {num(c.allowable)}"
+        # no chain: the value and the limit as the check table prints them (1.66 ≥ 1.20, never
+        # 1.657 above a table row of 1.66: one value one way, review 38)
+        return rf"\varepsilon_\alpha = {_value(c)} {_rel(c)} [\varepsilon_\alpha] = {_allowable(c)}"
     # a helical pair: the textbook's estimate, with β to the digits that give the value
     z1, z2 = num(i["z1"]), num(i["z2"])
     beta = _giving((math.degrees(i["beta"]),), lambda b: (1.88 - 3.2 * (1 / i["z1"] + 1 / i["z2"]))

@@ -12,7 +12,7 @@ from ...render.figures import figure
 from ...render.fmt import e as fe
 from ...render.fmt import residue, verdict
 from ...render.fmt import f, md_meta, md_text, mpl_text, sig, time_ratio
-from ...numbers import factors_for, significant
+from ...numbers import factors_for, half_sum_decimals, significant
 from ...render.labels import LabelTable, mpl_label, mpl_point
 from ...i18n import N_, Msg, tr
 
@@ -277,22 +277,38 @@ def _cos(x: float) -> str:
     return sig(x, 4, group=False)
 
 
-def _gamma_eqs(d) -> tuple[str, str]:
-    """LaTeX of the two collinear-position transmission angles with numbers."""
+def _gamma_eqs(d) -> tuple[str, str, list[float]]:
+    """LaTeX of the two collinear-position transmission angles with numbers, and the two
+    angles δ′, δ″ [°] as they print.
+
+    The lengths are substituted as the lines above print them (0.01 mm: l₂ = 42.40, never
+    42.40 in one line and 42.395 in the next, review 38) and the cosine and the angle follow
+    from them (a chain computes from what it prints): −0.1447 and 98.32°, where the unrounded
+    lengths give 98.33°. Only where the angle that is γ_min would then print otherwise than
+    γ_min does (the table and the text quote it) the lengths get the fewest more digits
+    that give the cosine of the unrounded lengths."""
     a, b, c, l4 = (x * MM for x in (d.crank, d.coupler, d.rocker, d.frame))
     c1 = (b * b + c * c - (l4 - a) ** 2) / (2 * b * c)
     c2 = (b * b + c * c - (l4 + a) ** 2) / (2 * b * c)
-    out = []
-    for sign, cos, name in ((-1, c1, "'"), (1, c2, "''")):
-        # the lengths with the digits that give the printed cosine (a chain computes from
-        # what it prints: 42.40, 50.00, 53.76 + 16.32 gave −0.14468, printed −0.1448)
-        bb, cc, ll, aa = factors_for(
-            (b, c, l4, a), lambda b_, c_, l_, a_, s=sign: (b_ * b_ + c_ * c_ - (l_ + s * a_) ** 2) / (2 * b_ * c_),
-            _cos(cos), tuple(significant(f(x, 2)) for x in (b, c, l4, a)))
+    true = [float(np.degrees(np.arccos(np.clip(x, -1, 1)))) for x in (c1, c2)]
+    binding = 0 if min(true[0], 180 - true[0]) <= min(true[1], 180 - true[1]) else 1
+    out, angles = [], []
+    for k, (sign, cos, name) in enumerate(((-1, c1, "'"), (1, c2, "''"))):
+        def fn(b_, c_, l_, a_, s=sign):
+            return (b_ * b_ + c_ * c_ - (l_ + s * a_) ** 2) / (2 * b_ * c_)
+        texts = [f(x, 2) for x in (b, c, l4, a)]
+        cos_txt = _cos(fn(*(float(t) for t in texts)))
+        angle = float(np.degrees(np.arccos(np.clip(float(cos_txt), -1, 1))))
+        if k == binding and f(angle, 2) != f(true[k], 2):
+            texts = factors_for((b, c, l4, a), fn, _cos(cos),
+                                tuple(significant(f(x, 2)) for x in (b, c, l4, a)))
+            cos_txt, angle = _cos(cos), true[k]
+        bb, cc, ll, aa = texts
         op = "-" if sign < 0 else "+"
         out.append(rf"\cos\delta{name} = \frac{{{bb}^2 + {cc}^2 - ({ll} {op} {aa})^2}}{{2 \times {bb} "
-                   rf"\times {cc}}} = {_cos(cos)},\quad \delta{name} = {f(np.degrees(np.arccos(cos)), 2)}^\circ")
-    return out[0], out[1]
+                   rf"\times {cc}}} = {cos_txt},\quad \delta{name} = {f(angle, 2)}^\circ")
+        angles.append(angle)
+    return out[0], out[1], angles
 
 
 def _cosines(d) -> tuple[float, float]:
@@ -370,22 +386,24 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
                  rf" < 180^\circ - \theta = {_deg(cons.p_hi)}^\circ")
     eq["problem"] = (r"\max_{t_G < t < 180^\circ - \theta}\ \gamma_{min}(t) = "
                      r"\max_t\ \min\bigl(\delta'(t),\ 180^\circ - \delta''(t)\bigr)")
-    g1, g2 = _gamma_eqs(best.design)
+    g1, g2, opt_angles = _gamma_eqs(best.design)
     eq["opt_d1"], eq["opt_d2"] = g1, g2
     ac1 = abs(best.a_pivot - cons.c1)
     ac2 = abs(best.a_pivot - cons.c2)
-    eq["opt_l1"] = (rf"l_1 = \frac{{{_mm(ac2)} - {_mm(ac1)}}}{{2}} = {_mm(best.design.crank)}\ \text{{mm}}")
-    eq["opt_l2"] = (rf"l_2 = \frac{{{_mm(ac2)} + {_mm(ac1)}}}{{2}} = {_mm(best.design.coupler)}\ \text{{mm}}")
+    nd = half_sum_decimals((ac1 * MM, ac2 * MM))
+    eq["opt_l1"] = (rf"l_1 = \frac{{{_mm(ac2, nd)} - {_mm(ac1, nd)}}}{{2}} = {_mm(best.design.crank)}\ \text{{mm}}")
+    eq["opt_l2"] = (rf"l_2 = \frac{{{_mm(ac2, nd)} + {_mm(ac1, nd)}}}{{2}} = {_mm(best.design.coupler)}\ \text{{mm}}")
     textbook = None
     if tb is not None:
         t1 = abs(tb.a_pivot - cons.c1)
         t2 = abs(tb.a_pivot - cons.c2)
-        d1, d2 = _gamma_eqs(tb.design)
+        d1, d2, _angles = _gamma_eqs(tb.design)
+        nt = half_sum_decimals((t1 * MM, t2 * MM))
         textbook = {
-            "frame": _mm(p.frame, 2), "ac1": _mm(t1), "ac2": _mm(t2),
+            "frame": _mm(p.frame, 2), "ac1": _mm(t1, nt), "ac2": _mm(t2, nt),
             "t": "—" if tb.position is None else _deg(tb.position),
-            "l1": (rf"l_1 = \frac{{{_mm(t2)} - {_mm(t1)}}}{{2}} = {_mm(tb.design.crank)}\ \text{{mm}}"),
-            "l2": (rf"l_2 = \frac{{{_mm(t2)} + {_mm(t1)}}}{{2}} = {_mm(tb.design.coupler)}\ \text{{mm}}"),
+            "l1": (rf"l_1 = \frac{{{_mm(t2, nt)} - {_mm(t1, nt)}}}{{2}} = {_mm(tb.design.crank)}\ \text{{mm}}"),
+            "l2": (rf"l_2 = \frac{{{_mm(t2, nt)} + {_mm(t1, nt)}}}{{2}} = {_mm(tb.design.coupler)}\ \text{{mm}}"),
             "d1": d1, "d2": d2, "gamma_min": _deg(tb.gamma_min),
             "kind": _kind(tb.grashof, lang),
         }
@@ -493,9 +511,11 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
             (sc.radius * MM, sc.radius * np.cos(sl.theta) * MM),
             lambda r_, c_: -np.sqrt(r_ ** 2 - (c_ - float(f(e_mm, 2))) ** 2), xa,
             tuple(significant(_mm(x)) for x in (sc.radius, sc.radius * np.cos(sl.theta))))
+        # AC₁, AC₂ with the decimals that make (AC₂ ± AC₁)/2 no half unit (review 38)
+        ns = half_sum_decimals((abs(sc.c1) * MM, abs(sc.c2) * MM))
         slider = {
             "K": time_ratio(sl.K), "theta": _deg(sl.theta), "H": f(h_mm, 2), "e": f(e_mm, 2),
-            "R": _mm(sc.radius), "ac1": _mm(abs(sc.c1)), "ac2": _mm(abs(sc.c2)),
+            "R": _mm(sc.radius), "ac1": _mm(abs(sc.c1), ns), "ac2": _mm(abs(sc.c2), ns),
             "a": _mm(sl.crank), "b": _mm(sl.rod),
             "eq_theta": (rf"\theta = 180^\circ\frac{{K - 1}}{{K + 1}} = 180^\circ \times "
                          rf"\frac{{{time_ratio(sl.K)} - 1}}{{{time_ratio(sl.K)} + 1}} = {_deg(sl.theta)}^\circ"),
@@ -505,10 +525,10 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
                      rf"({xa_c} - {f(e_mm, 2)})^2}} = {xa}"
                      r"\ \text{mm}"),
             "eq_limit": (rf"e < H\cot\theta = {f(h_mm / np.tan(sl.theta), 2)}\ \text{{mm}}"),
-            "eq_a": (rf"a = \frac{{\overline{{AC_2}} - \overline{{AC_1}}}}{{2}} = \frac{{{_mm(abs(sc.c2))} - "
-                     rf"{_mm(abs(sc.c1))}}}{{2}} = {_mm(sl.crank)}\ \text{{mm}}"),
+            "eq_a": (rf"a = \frac{{\overline{{AC_2}} - \overline{{AC_1}}}}{{2}} = \frac{{{_mm(abs(sc.c2), ns)} - "
+                     rf"{_mm(abs(sc.c1), ns)}}}{{2}} = {_mm(sl.crank)}\ \text{{mm}}"),
             "eq_b": (rf"b = \frac{{\overline{{AC_2}} + \overline{{AC_1}}}}{{2}} = "
-                      rf"\frac{{{_mm(abs(sc.c2))} + {_mm(abs(sc.c1))}}}{{2}} = {_mm(sl.rod)}\ \text{{mm}}"),
+                      rf"\frac{{{_mm(abs(sc.c2), ns)} + {_mm(abs(sc.c1), ns)}}}{{2}} = {_mm(sl.rod)}\ \text{{mm}}"),
             "eq_alpha_fast": (rf"\alpha_{{max}} = \arcsin\frac{{a + e}}{{b}} = \arcsin\frac{{{_mm(sl.crank)} + "
                               rf"{f(e_mm, 2)}}}{{{_mm(sl.rod)}}} = {_deg(sl.alpha_fast)}^\circ"),
             "eq_alpha_slow": (rf"\alpha_{{w}} = \max\Bigl(\arcsin\frac{{e}}{{b - a}},\ \arcsin\frac{{|a - e|}}{{b}}\Bigr)"
@@ -546,17 +566,19 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
     ch = r["chart"]
     d1, d2 = (np.degrees(x) for x in (np.arccos(np.clip(c, -1, 1)) for c in _cosines(best.design)))
     g1, g2 = min(d1, 180 - d1), min(d2, 180 - d2)
+    # the other collinear position's angle as the optimum's equations print its δ
+    other = max(min(x, 180 - x) for x in opt_angles)
     if abs(g1 - g2) < 1e-6:
         where = _("The transmission angles of both collinear positions are equal (the maximum of "
                   "$\\gamma_{min}(t)$ is the kink where the two curves cross).")
     else:
         where = (_("The minimum occurs where the crank overlaps the frame (the other collinear position "
                    "has {other}°): {gamma} has a smooth maximum at the optimum, not the kink where the "
-                   "two collinear angles are equal.", other=f(max(g1, g2), 2), gamma="$\\gamma_{min}(t)$")
+                   "two collinear angles are equal.", other=f(other, 2), gamma="$\\gamma_{min}(t)$")
                  if g1 < g2 else
                  _("The minimum occurs where the crank extends the frame (the other collinear position "
                    "has {other}°): {gamma} has a smooth maximum at the optimum, not the kink where the "
-                   "two collinear angles are equal.", other=f(max(g1, g2), 2), gamma="$\\gamma_{min}(t)$"))
+                   "two collinear angles are equal.", other=f(other, 2), gamma="$\\gamma_{min}(t)$"))
     return {
         "meta": md_meta(brief.report, lang), "fig": figures, "data_rows": data_rows, "eq": eq,
         "K": time_ratio(p.K), "theta": f(th_deg, 2), "psi": _deg(p.swing, 2), "l3": _mm(p.rocker, 2),
@@ -565,7 +587,7 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
                 "l3": _mm(best.design.rocker), "l4": _mm(best.design.frame),
                 "ratio": sig(best.design.rocker / best.design.frame, 4),
                 "gamma_min": _deg(best.gamma_min), "t": _deg(best.position),
-                "ac1": _mm(ac1), "ac2": _mm(ac2), "kind": _kind(best.grashof, lang),
+                "ac1": _mm(ac1, nd), "ac2": _mm(ac2, nd), "kind": _kind(best.grashof, lang),
                 "far": None if far is None else _deg(far, 2), "where": where},
         "with_speed": p.crank_speed_rpm is not None,
         "textbook": textbook, "given": given,

@@ -371,8 +371,9 @@ def _amplification(r, p, _) -> dict:
         "work": (rf"W_c = F_c\,t = {f(p.cutting_force / 1e3, 1)}\ \text{{kN}} \times "
                  rf"{f(p.pressing_travel * MM, 2)}\ \text{{mm}} = {f(amp.cut_work, 1)}\ \text{{J}}"),
         "power": (rf"\bar P = \frac{{W_c}}{{T}} = \frac{{{f(amp.cut_work, 1)}}}{{{f(60 / p.shaft_rpm, 3)}}}"
-                  rf" = {f(amp.cut_work * p.shaft_rpm / 60, 1)}\ \text{{W}},\qquad \bar M_b\,\omega = "
-                  rf"{product((f_.mean_torque, abs(p.crank_omega)), f(f_.mean_power, 1))} = {f(f_.mean_power, 1)}\ \text{{W}}"),
+                  rf" = {f(amp.cut_work * p.shaft_rpm / 60, 1)}\ \text{{W}},\qquad \bar M_b = \frac{{\bar P}}{{\omega}} = "
+                  rf"\frac{{{f(amp.cut_work * p.shaft_rpm / 60, 1)}}}{{{sig(abs(p.crank_omega), group=False)}}}"
+                  rf" = {sig(f_.mean_torque, group=False)}\ \text{{N·m}}"),
         "required": (rf"M_{{req}} = F_c\,\frac{{v_D}}{{\omega}} = {f(p.cutting_force / 1e3, 1)}\ "
                      rf"\text{{kN}} \times {rows[0][2]}\ \text{{mm}} = {f(p.cutting_force * u0, 0)}"
                      rf"\ \text{{N·m}}"),
@@ -459,7 +460,7 @@ def _flywheel(r, p, b, _) -> dict:
             "at_max": _deg(fl.phase_at_max, 1), "delta": fluctuation(fl.fluctuation),
             "jf": f(fl.inertia, 3), "jf_crank": f(fl.inertia_on_crank, 1),
             "D": f(fl.rim.diameter * MM, 0), "b": f(fl.rim.width * MM, 1),
-            "Hr": f(fl.rim.height * MM, 1), "m": f(fl.rim.rim_mass, 1),
+            "Hr": f(fl.rim.height * MM, 1), "m": f(fl.rim.rim_mass, 2),
             "speed": f(fl.rim.rim_speed, 2), "peak_rows": rows, "peak_note": peak_note, **speeds,
             "share": f(fl.max_energy_swing / r["amplification"].cut_work * 100, 1),
             "place": _placement(r, p, b, _)}

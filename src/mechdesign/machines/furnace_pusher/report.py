@@ -9,7 +9,8 @@ import numpy as np
 from ...i18n import N_, tr
 from ...render import figures as fig
 from ...render.fmt import e, f, md_meta, md_text, sig, time_ratio
-from ...render.fmt import product, residue, verdict
+from ...render.fmt import factor_for, gives, product, residue, verdict
+from ...numbers import half_sum_decimals
 from ...render.labels import mpl_names, mpl_point
 
 DEG = 180.0 / np.pi
@@ -174,6 +175,9 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
     sag = syn.sagitta * MM
     chord = abs(syn.B2 - syn.B1) * MM
     o1b1, o1b2 = abs(syn.B1 - syn.O1) * MM, abs(syn.B2 - syn.O1) * MM
+    # O₁B₁, O₁B₂ with the decimals that make (O₁B₂ ± O₁B₁)/2 no half unit of 0.01 mm (181.54 +
+    # 79.79 = 261.33: 130.665 printed 130.66, review 38)
+    nb = half_sum_decimals((o1b1, o1b2))
     lim = syn.alpha_limit * DEG
     sense = _("clockwise") if syn.sense < 0 else _("counter-clockwise")
     towards = "+$x$" if syn.working_direction > 0 else "−$x$"
@@ -223,6 +227,8 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
          _("smallest acceptable transmission angle")],
     ]
     cos_h = np.cos(syn.swing / 2)
+    sag_txt = f(sag, 2 if round(float(f(sag, 2)) * 100) % 2 == 0 else 3)
+    one_minus_cos = factor_for(1 - cos_h, lambda x: gives(float(f(R, 0)) * x, sag_txt))
     given_eq = None
     if given:
         l_dc = f(R, 0) if abs(R - round(R)) < 1e-9 else f(R, 2)      # as the brief gives it
@@ -245,12 +251,14 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
                 rf" = {f(psi, 2)}°"),
         "theta": (rf"\theta = 180° \times \frac{{K-1}}{{K+1}} = 180° \times \frac{{{f(pp.time_ratio_K, 2)}-1}}"
                   rf"{{{f(pp.time_ratio_K, 2)}+1}} = {f(th, 2)}°"),
+        # f to 0.01 mm, 0.001 mm where f/2 of f to 0.01 mm ends in half a unit (5.27/2: y_g =
+        # 1150 − 2.635 printed 1147.36, review 38), 1 − cos(ψ/2) with the digits that give it;
         # 1 - cos(ψ/2) itself to 4 significant digits (the difference of two numbers near 1
         # would need six decimals); y_g through f: (1 + cos)/2 = 1 - (1 - cos)/2
         "sagitta": (rf"f = l_{{DC}}\left(1-\cos\frac{{\psi}}{{2}}\right) = {f(R, 0)} \times (1 - \cos {f(psi / 2, 2)}°)"
-                    rf" = {f(R, 0)} \times {sig(1 - cos_h, 4, group=False)} = {f(sag, 2)}\ \text{{mm}}"),
+                    rf" = {f(R, 0)} \times {one_minus_cos} = {sag_txt}\ \text{{mm}}"),
         "guide": (rf"y_g = l_{{DC}}\,\frac{{1+\cos(\psi/2)}}{{2}} + e = l_{{DC}} - \frac{{f}}{{2}} + e = {f(R, 0)} - "
-                  rf"\frac{{{f(sag, 2)}}}{{2}} + {f(syn.guide_offset * MM, 2)} = {f(syn.guide_height * MM, 2)}\ \text{{mm}}"),
+                  rf"\frac{{{sag_txt}}}{{2}} + {f(syn.guide_offset * MM, 2)} = {f(syn.guide_height * MM, 2)}\ \text{{mm}}"),
         "alphaE": (rf"\alpha_{{E,max}} = \arcsin\frac{{f/2 + \lvert e\rvert}}{{l_{{CE}}}} = \arcsin\frac{{{f(sag / 2, 2)} + "
                    rf"{f(abs(syn.guide_offset) * MM, 2)}}}{{{f(L, 0)}}} = {f(syn.alpha_E * DEG, 2)}°"),
         "band": (rf"\lvert e\rvert \le l_{{CE}}\sin[\alpha] - \frac{{f}}{{2}} = {f(L, 0)} \times \sin {f(lim, 0)}° - "
@@ -260,12 +268,12 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
                rf"B_1B_2 = 2\,l_{{DB}}\sin\frac{{\psi}}{{2}} = {f(chord, 2)}\ \text{{mm}}"),
         "radius": (rf"r_\theta = \frac{{B_1B_2}}{{2\sin\theta}} = \frac{{{f(chord, 2)}}}{{2\sin {f(th, 2)}°}}"
                    rf" = {f(chord / (2 * np.sin(syn.theta)), 2) if syn.theta > 0 else '∞'}\ \text{{mm}}"),
-        "a": (rf"a = \frac{{O_1B_2 - O_1B_1}}{{2}} = \frac{{{f(o1b2, 2)} - {f(o1b1, 2)}}}{{2}} = {f(a, 2)}\ "
+        "a": (rf"a = \frac{{O_1B_2 - O_1B_1}}{{2}} = \frac{{{f(o1b2, nb)} - {f(o1b1, nb)}}}{{2}} = {f(a, 2)}\ "
               rf"\text{{mm}}"),
-        "b": (rf"b = \frac{{O_1B_2 + O_1B_1}}{{2}} = \frac{{{f(o1b2, 2)} + {f(o1b1, 2)}}}{{2}} = {f(b, 2)}\ "
+        "b": (rf"b = \frac{{O_1B_2 + O_1B_1}}{{2}} = \frac{{{f(o1b2, nb)} + {f(o1b1, nb)}}}{{2}} = {f(b, 2)}\ "
               rf"\text{{mm}}, \quad d = O_1D = {f(d, 2)}\ \text{{mm}}"),
         "eq1": r"B_1B_2^2 = (b-a)^2 + (b+a)^2 - 2(b-a)(b+a)\cos\theta",
-        "eq1n": (rf"{f(o1b1, 2)}^2 + {f(o1b2, 2)}^2 - 2 \times {f(o1b1, 2)} \times {f(o1b2, 2)} "
+        "eq1n": (rf"{f(o1b1, nb)}^2 + {f(o1b2, nb)}^2 - 2 \times {f(o1b1, nb)} \times {f(o1b2, nb)} "
                  rf"\cos {f(th, 2)}° = {sig(chord ** 2, group=False)} = {f(chord, 2)}^2"),
         "delta": r"\cos\delta = \frac{b^2 + c^2 - (d \mp a)^2}{2bc}, \quad \gamma = \min(\delta,\ 180° - \delta)",
         "gamma": (rf"\gamma_{{min}} = {f(syn.gamma_min * DEG, 2)}°, \quad "

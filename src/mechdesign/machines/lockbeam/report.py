@@ -347,7 +347,7 @@ def _transmission(r: dict, lang: str) -> dict:
     _ = tr(lang)
     trans = r["transmission"]
     p = r["params"]
-    rows, gear_rows, gear = [], [], 0
+    rows, gear_rows, pair_rows, gear = [], [], [], 0
     for i, s in enumerate(trans.stages, 1):
         if s.kind == "belt":
             kind = _("V-belt")
@@ -358,16 +358,17 @@ def _transmission(r: dict, lang: str) -> dict:
             kind = _("spur gears")
             drv, dvn = f"$z_{gear + 1}$ = {int(s.driver)}", f"$z_{gear + 2}$ = {int(s.driven)}"
             gear += 2
-            dist = f(s.pair.a * MM, 0)
+            dist = f(s.pair.a * MM, 1)
         rows.append([str(i), kind, drv, dvn, str(s.ratio_exact), f(s.speed_in, 2), f(s.speed_out, 2), dist])
         if s.pair is not None:
+            # the gears' diameters in one table, the pairs' centre distance, contact ratio and
+            # least teeth in another (review 38: a table's rows hold one kind of data)
             pr = s.pair
-            for g in (pr.g1, pr.g2):
-                gear_rows.append([str(g.z), f(g.d * MM, 1), f(g.da * MM, 1), f(g.df * MM, 1),
-                                  f(g.db * MM, 2)])
-            gear_rows.append(["—", _("centre distance a = ") + f(pr.a * MM, 1) + " mm",
-                              _("contact ratio $\\varepsilon$ = ") + f(pr.contact_ratio, 3),
-                              _("least teeth without undercut ") + f(pr.z_min, 0), "—"])
+            for k, g in ((gear - 1, pr.g1), (gear, pr.g2)):
+                gear_rows.append([f"$z_{{{k}}}$", str(g.z), f(g.d * MM, 1), f(g.da * MM, 1),
+                                  f(g.df * MM, 1), f(g.db * MM, 2)])
+            pair_rows.append([str(i), f"$z_{{{gear - 1}}}$ – $z_{{{gear}}}$", f(pr.a * MM, 1),
+                              f(pr.contact_ratio, 3), f(pr.z_min, 0)])
     # the train's ratio as the course writes it: driven over driving, the pulleys d_1 → d_2,
     # the gears numbered along the train (z_1 drives z_2, z_3 drives z_4, …)
     parts, symbols, gear = [], [], 0
@@ -389,7 +390,7 @@ def _transmission(r: dict, lang: str) -> dict:
     if p.transmission.power is not None:
         for s in trans.shafts:
             shafts.append([str(s.index), f(s.speed_rpm, 2), f(s.power / 1e3, 3), f(s.torque, 2)])
-    return {"rows": rows, "gear_rows": gear_rows, "eq_ratio": eq_ratio, "eq_speed": eq_speed,
+    return {"rows": rows, "gear_rows": gear_rows, "pair_rows": pair_rows, "eq_ratio": eq_ratio, "eq_speed": eq_speed,
             "ratio": str(trans.ratio_exact), "required": f"{trans.required_ratio:.6g}",
             "n_gears": str(sum(1 for s in trans.stages if s.kind == "gear")),
             "motor": f(trans.motor_rpm, 0),
