@@ -361,7 +361,7 @@ def test_a_rocking_outputs_stroke_is_summarised_as_its_swing_in_degrees():
     rows = dict(summary_rows("linkage", {"linkage": {**rocker["linkage"], "peak_torque": 0.0,
                                                      "mean_torque": 12.5}}, "en"))
     assert rows["swing of the output [°]"] == "30"
-    assert "peak torque [N·m]" not in rows and rows["mean torque [N·m]"] == "12.5"
+    assert "peak balancing torque [N·m]" not in rows and rows["mean balancing torque [N·m]"] == "12.5"
 
 
 @pytest.mark.parametrize("lang", LANGS)

@@ -88,6 +88,8 @@ class Term:
     read: float = q("m/s, m/s² or N", "magnitude read: length × μ")
     kind: str = q("", "absolute | relative | normal | tangential | sliding | coriolis | known | "
                       "reaction | total | internal | balancing")
+    computed: float | None = q("m/s, m/s² or N", "a known vector's magnitude as computed before it "
+                               "is drawn (ω²·l with the ω read; None: measured)", default=None)
 
 
 @dataclass(frozen=True)
@@ -131,7 +133,7 @@ class KinDrawing:
             self.exact.add(head)
         self.points[head] = self.points[tail] + length * unit(value)
         return Term(symbol, True, direction, tail, head, length * self.scale * unit(value),
-                    length, length * self.scale, kind)
+                    length, length * self.scale, kind, abs(value))
 
     def measured(self, symbol, tail, head, direction, kind, known=False) -> Term:
         """A vector of the drawing between two points, measured (0.5 mm)."""

@@ -634,7 +634,11 @@ def _kin(poly, lang: str, unit: str, rate_name: str, links: dict | None = None,
             # a resultant (a^n + a^t of a point about a fixed pivot) is found by the polygon:
             # magnitude and direction "?" in the construction, its segment measured
             resultant = t.direction == "sum"
-            mag = "?" if not t.known or resultant else ("√" if t.direction == "known" else _numg(t.read))
+            # a known magnitude as computed (ω²·l = 0.0312), drawn at the drawing's accuracy
+            # (3.0 mm) and read back (0.0300) in the last column (review39: 0.0300 stood as
+            # the magnitude a teacher recomputes as 0.0312)
+            mag = "?" if not t.known or resultant else ("√" if t.direction == "known" else _numg(
+                t.read if t.computed is None else t.computed))
             dirs = direction(t.direction, lang) if t.direction and not resultant else "?"
             if t.known and (t.direction == "known" or t.length == 0):
                 seg = length = value = "—"

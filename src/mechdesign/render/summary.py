@@ -264,7 +264,7 @@ _PROBES = (
     ("time_ratio", N_("time ratio $K$"), "", 1.0),
     ("extreme_angle", N_("extreme-position angle $\\theta$"), "°", 180 / math.pi),
     ("gamma_min", N_("minimum transmission angle $\\gamma_{min}$"), "°", 180 / math.pi),
-    ("peak_torque", N_("peak torque"), "N·m", 1.0),
+    ("peak_torque", N_("peak balancing torque"), "N·m", 1.0),
     ("max_energy_swing", N_("largest energy swing $\\Delta W_{max}$"), "J", 1.0),
     ("inertia", N_("flywheel $J_F$"), "kg·m²", 1.0),
     ("base_radius", N_("cam base radius $r_0$"), "mm", 1e3),
@@ -273,6 +273,19 @@ _PROBES = (
     ("contact_ratio", N_("contact ratio $\\varepsilon_\\alpha$"), "", 1.0),
     ("designation", pgettext("key number", "motor"), "", 1.0),
     ("total_ratio", N_("total ratio"), "", 1.0),
+)
+# a probe found in a named part: the label names the part (review39: the die-cutter's
+# summary gave the incomplete gear's module as "gear module", beside a reducer of m_n 5 and 8;
+# the lock-beam's gave one cam of two)
+_QUALIFIED = {
+    "feed.gear.module": N_("incomplete gear module $m$"),
+    "positioning_cam.base_radius": N_("positioning cam base radius $r_0$"),
+    "positioning_cam.roller_radius": N_("positioning cam roller radius $r_r$"),
+}
+# parts a breadth-first probe would not reach (a second cam): (path, label, unit, factor)
+_PARTS_ROWS = (
+    ("bending_cam.base_radius", N_("bending cam base radius $r_0$"), "mm", 1e3),
+    ("bending_cam.roller_radius", N_("bending cam roller radius $r_r$"), "mm", 1e3),
 )
 _SAME = {"time_ratio_simulated": "time_ratio"}   # registry quantity → the probe it covers
 _SKIP = ("verification", "seed", "textbook", "compare", "best_offset", "residuals", "simulated",
@@ -431,7 +444,7 @@ def key_rows(machine: str, document: dict, lang: str) -> list[list[str]]:
             continue
         if leaf == "peak_torque" and not found[1]:
             continue        # no loads given: no driving torque was computed
-        shown_label, shown_unit, shown_factor = translated(label, _), unit, factor
+        shown_label, shown_unit, shown_factor = translated(_QUALIFIED.get(found[0], label), _), unit, factor
         if leaf == "stroke":        # a rocker's stroke is its swing (rad → °)
             shown_label, shown_unit, shown_factor, _value = shown_row(
                 (label, unit, found[0], factor), lang, document)
@@ -439,6 +452,13 @@ def key_rows(machine: str, document: dict, lang: str) -> list[list[str]]:
         if text is not None:
             rows.append([shown_label, text, shown_unit or "—"])
             paths.add(leaf)
+    for path, label, unit, factor in _PARTS_ROWS:
+        node: Any = document
+        for key in path.split("."):
+            node = node.get(key) if isinstance(node, dict) else None
+        text = _show(node, factor, unit) if node is not None else None
+        if text is not None:
+            rows.append([translated(label, _), text, unit])
     rows += _asked_rows(document, lang)
     for fol in document.get("followers") or ():        # the disc cam's followers
         text = _show(fol.get("stroke"), 1e3, "mm")

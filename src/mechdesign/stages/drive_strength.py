@@ -696,8 +696,9 @@ def shaft_designs(dp, designs, shafts, peak_factor, peak_from_shaft, kinds,
         if ev["static"] is not None:
             checks.append(ev["static"])
         checks += [k.check for k in ev["keys"]]
+        # peak_from_shaft 0: the peak reaches the motor's shaft, i.e. the drive has no flywheel
         head, tail = _steps(sh, mat, a0, d_min, dims, shoulder, T, peak, peak_factor, lf, ev, span, dp,
-                            coupling, motor)
+                            coupling, motor, flywheel=peak_from_shaft != 0)
         steps = head + _loop_text(loop_steps) + tail
         out.append(ShaftDesign(j, sh.speed_rpm, sh.power, T, d_min, dj, ds, span, tuple(loads),
                                tuple(i["name"] for i in _load_order(info)), res, ev["bearing"], ev["pl"], tuple(checks),
@@ -833,7 +834,7 @@ def _peak_times(peak_factor: float, torque: float, printed: str) -> str:
 
 
 def _steps(sh, mat, a0, d_min, dims, shoulder, T, peak, peak_factor, lf, ev, span, dp, coupling=None,
-           motor=None):
+           motor=None, flywheel=True):
     """The design steps of one shaft, each rule with its formula and numbers (messages as data)."""
     d_end, dj, ds = dims
     P, n = sh.power / 1e3, sh.speed_rpm
@@ -845,10 +846,15 @@ def _steps(sh, mat, a0, d_min, dims, shoulder, T, peak, peak_factor, lf, ev, spa
                      "+5 % for one keyway)"), material_zh=material, material_en=material,
                   sigma="$[\\sigma_{-1b}]$", allow=f"{mat.sigma_minus1b_allow / 1e6:g}", dmin=dmin)]
     if peak:
+        # review39: "after the flywheel" in a drive without one (furnace_pusher)
         out.append(_step(N_("after the flywheel the shaft carries the machine's peak torque: the strength checks "
                              "use {torque} N·m (peak/mean); the bearing life, a fatigue quantity, takes the "
                              "cycle's equivalent load (cube-mean torque = {lf} × the mean), the static strength "
-                             "the peak"),
+                             "the peak") if flywheel else
+                         N_("with no flywheel the shaft carries the machine's peak torque: the strength checks "
+                            "use {torque} N·m (peak/mean); the bearing life, a fatigue quantity, takes the "
+                            "cycle's equivalent load (cube-mean torque = {lf} × the mean), the static strength "
+                            "the peak"),
                           torque=f"$T = {_peak_times(peak_factor, sh.torque, _sig(T, 4))} = {_sig(T, 4)}$",
                           lf=_sig(lf, 3)))
     else:

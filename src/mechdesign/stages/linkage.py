@@ -195,6 +195,8 @@ class LinkageVerification:
     time_ratio: float = q("1", "K from the searched extremes")
     fd_step: float = q("rad")
     warnings: tuple[Finding, ...] = q("", "quality-angle findings", default=())
+    power_balance_checked: bool = q("", "False when no load or mass gives a balancing torque: "
+                                    "the power balance then checks nothing", default=True)
 
 
 # ---------------------------------------------------------------- motion
@@ -773,10 +775,11 @@ def verify(model: LinkageModel, k: LinkageMotion, m: Motion, f: LinkageForces | 
            ) -> LinkageVerification:
     n = k.grid_size
     vel_err, acc_err = _fd_errors(m, n, model.crank_omega)
-    power = 0.0
+    power, checked = 0.0, False
     if f is not None:
         scale = np.max(np.abs(f.balancing_torque[:n] * model.crank_omega))
-        power = float(np.max(np.abs(f.power_residual[:n])) / scale) if scale > 0 else 0.0
+        checked = bool(scale > 0)
+        power = float(np.max(np.abs(f.power_residual[:n])) / scale) if checked else 0.0
     start, end, s0, s1, _ = _strokes(model, by_velocity=False)
     span = (k.sense * (end - start)) % TWO_PI
     stroke, ratio = abs(s1 - s0), float(span / (TWO_PI - span))
@@ -784,7 +787,7 @@ def verify(model: LinkageModel, k: LinkageMotion, m: Motion, f: LinkageForces | 
         closure_residual=closure_residual(model.mechanism, m, n),
         velocity_fd_error=vel_err, acceleration_fd_error=acc_err,
         power_balance_residual=power, stroke=stroke, time_ratio=ratio, fd_step=TWO_PI / n,
-        warnings=tuple(quality_findings(model, k)))
+        warnings=tuple(quality_findings(model, k)), power_balance_checked=checked)
 
 
 def _four_bar_of(model: LinkageModel, group_name: str):

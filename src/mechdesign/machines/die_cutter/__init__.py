@@ -15,7 +15,7 @@ ENTRY = Entry(
         (N_("crank"), "mm", "toggle.crank", _MM),
         (N_("stroke"), "mm", "press.output.stroke", _MM),
         ("K", "", "press.time_ratio", 1.0),
-        (N_("peak torque"), "N·m", "press.peak_torque", 1.0),
+        (N_("peak balancing torque"), "N·m", "press.peak_torque", 1.0),
         (N_("flywheel J_F"), "kg·m²", "flywheel.inertia", 1.0),
         # to 0.1 J as the body writes it: J_F = 900 ΔW/(π²n²[δ]) then checks to its 4 digits
         (N_("largest energy swing ΔW_max"), "J", "flywheel.max_energy_swing", 1.0, 1),

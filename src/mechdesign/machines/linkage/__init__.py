@@ -14,6 +14,6 @@ ENTRY = Entry(
     "linkage_sixbar.yaml", results=f"{_P}.stages:LinkageResults", summary=(
         (N_("stroke"), "mm", "linkage.output.stroke", _MM),
         ("K", "", "linkage.time_ratio", 1.0),
-        (N_("mean torque"), "N·m", "linkage.mean_torque", 1.0),
-        (N_("peak torque"), "N·m", "linkage.peak_torque", 1.0),
+        (N_("mean balancing torque"), "N·m", "linkage.mean_torque", 1.0),
+        (N_("peak balancing torque"), "N·m", "linkage.peak_torque", 1.0),
         (N_("flywheel J_F"), "kg·m²", "linkage.flywheel.inertia", 1.0)))

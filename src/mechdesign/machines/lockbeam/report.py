@@ -721,6 +721,7 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
 
     p, c = r["params"], r["cycle"]
     cyc_figs = {k.removeprefix("cycle_"): v for k, v in figures.items() if k.startswith("cycle_")}
+    _ = tr(lang)
     findings = []
     for key in ("transmission", "cam", "pin_check", "bending_cam", "bending", "cycle"):
         findings.extend(md_text(w.text(lang)) for w in getattr(r[key], "warnings", None) or ())
@@ -751,6 +752,11 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
         "feed": _feed(r, lang, figures),
         "rate": f(p.rate, 0), "period": f(60.0 / p.rate, 2),
         "verify_rows": verification_rows(r, lang), "findings": findings,
+        # no loads on the feed linkage: no power balance to explain (review39)
+        "verify_note": "" if r["feed_verification"].power_balance_checked else _(
+            "finite-difference errors scale with the square of the step (truncation error); the task "
+            "gives the feed linkage no loads or masses, so its reactions and balancing torque are zero "
+            "and no power balance is checked."),
     }
 
 
