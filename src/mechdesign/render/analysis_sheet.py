@@ -796,9 +796,10 @@ ROW_H = 6.5
 ROW_H_MAX = 9.0
 #: how far the left column may widen into the polygons' column [mm] for a mechanism wider
 #: than tall (its view limited by the column's width): on a sheet of kinematic polygons
-#: only (two rows of tall cells), on one with force polygons (narrower cells, longer lists)
+#: only (two rows of tall cells); not on one with force polygons (narrower cells, longer
+#: lists; shaper_lengths widened to 1:2.5 had its O3 label crossed by a line)
 WIDEN = 70.0
-WIDEN_FORCES = 20.0
+WIDEN_FORCES = 0.0
 #: the left column's right edge by default [mm from the sheet's left edge]
 LEFT_RIGHT = 300.0
 
