@@ -309,3 +309,27 @@ def test_sheet_has_no_overlaps_and_the_dxf_the_same_entities(run, tmp_path):
         want = v.value / mu
         if abs(want) > 1e-6:
             assert np.min(np.abs(vecs - want)) < 1e-6, (name, v.name)
+
+
+def test_wide_mechanism_fills_the_left_column(run):
+    """Review39: the lock-beam's feed is wider than tall; its view was limited by the left
+    column's width (1:2, 248 × 180 mm) and with the table at the column's foot left ~60 % of
+    the column empty. The column now widens into the kinematic polygons' column (two rows of
+    tall cells on a sheet without force polygons) so the view is drawn at 1:1.5, and the
+    table's rows grow into the height still unused: view and table cover over 60 % of the
+    column's height (49 % before), nothing overlapping (the overlap test above)."""
+    from mechdesign.render.analysis_sheet import (ROW_H, WIDEN, _left_column,
+                                                  _mechanism_extent, _table_height, _top_room)
+
+    name, (model, k, raw, forces, fly), found = run
+    if name != "lockbeam":
+        pytest.skip("the lock-beam feed is the wide mechanism of the examples")
+    s, scales = analysis_sheet(found, INFO, "zh")
+    assert scales["length"] == 1.5                       # GB/T 14690 1:1.5 (was 1:2)
+    x0, y0, x1, y1 = s.inner
+    ext = _mechanism_extent(model, k, "zh")
+    drawn = (ext["hi"] - ext["lo"]).imag / scales["length"]
+    right, rh = _left_column(model, k, "zh", s.inner, WIDEN)
+    assert rh > ROW_H
+    used = drawn + _top_room(ext["legend"]) + _table_height(k, rh)
+    assert used / ((y1 - 6) - (y0 + 8)) > 0.6

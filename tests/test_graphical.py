@@ -424,3 +424,41 @@ def test_known_forces_are_drawn_at_their_value(example_results):
                     assert v.length * fg.scale == pytest.approx(v.read, rel=1e-9), (name, v)
                     if not v.known:
                         assert abs(v.length * 2 - round(v.length * 2)) < 1e-9, (name, v)
+
+
+def test_crank_frame_reaction_with_pb_is_compared_so_sheet_and_report_agree(example_results):
+    """The shaper's A1 sheet lists the analytic F_R72′ = 193 N at position 4 (the crank's
+    frame reaction with P_b at the pin in place of M_b); the report's crank polygon reads
+    4.5 mm × 50 N/mm = 225 N for it. Both are right: R72′ is the small closing side of
+    F_R32 ≈ 2530 N and P_b ≈ 2510 N, nearly opposite, so the drawing's rounding of M_b's arm
+    (9.0 mm read for 9.18 mm) carries 43 N into P_b and into R72′. The comparison table now
+    lists R72′ beside its analytic value (a teacher sees 225 | 193 | within 2 mm at μF).
+
+    Hand reference (equilibrium of the crank 2, kinetostatics' R23 and the brief's G2):
+    Σ M_O2: M_b + (A − O2) × F_R32 = 0, P_b = M_b / l_O2A ⊥ O2A at A,
+    F_R72′ = −(G2 + F_R32 + P_b)."""
+    from mechdesign.render.analysis_sheet import _items, _sense, force_symbol
+    from mechdesign.render.sheets import linkage_results
+    from mechdesign.stages.polygons import entry
+
+    r = example_results("shaper")
+    k, raw, forces = r["linkage"], r["linkage_raw"], r["linkage_forces"]
+    pos = next(p for p in r["linkage_graphical"].positions if p.label == "4")
+    i = entry(k, "4")
+    o2, a_ = complex(raw.points["O2"].pos[i]), complex(raw.points["A"].pos[i])
+    r32 = -complex(forces.reactions["R23"][i])
+    d = a_ - o2
+    mb = -(d.real * r32.imag - d.imag * r32.real)              # CCW +
+    pb = mb / abs(d) * 1j * d / abs(d)
+    r72p = -(-500j + r32 + pb)                                 # G2 = 500 N (brief)
+    assert abs(r72p) == pytest.approx(193.0, abs=0.5)          # 192.9 N
+    row = next(c for c in pos.comparison if c.quantity == "R72'")
+    assert row.analytic == pytest.approx(abs(r72p), rel=1e-9)
+    assert row.graphical == pytest.approx(225.0)               # 4.5 mm × 50 N/mm
+    assert abs(row.graphical - row.analytic) <= row.tolerance
+    # the sheet's crank polygon writes the same analytic value
+    found = linkage_results(r)
+    crank = next(pg for pg in found.polygons.at("4") if pg.kind == "force"
+                 and any(v.name == "Pb" for v in pg.vectors))
+    items = _items(crank, None, _sense(found.model))
+    assert force_symbol("R72'") + " = 193 N" in items, items

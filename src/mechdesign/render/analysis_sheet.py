@@ -101,14 +101,16 @@ def analysis_sheet(found, info: TitleInfo, lang: str, labels: dict | None = None
     symbols = vector_symbols(getattr(found, "graphical", None))
     s = Sheet("A1")
     x0, y0, x1, y1 = s.inner
-    table_top = y0 + 8 + _table_height(k)
-    n_len = _mechanism(s, model, k, lab, (x0 + 8, table_top + 10.0, 300.0, y1 - 6), chosen,
+    right, rh = _left_column(model, k, lang, s.inner, widen=WIDEN if kinematic_only else
+                             WIDEN_FORCES)
+    table_top = y0 + 8 + _table_height(k, rh)
+    n_len = _mechanism(s, model, k, lab, (x0 + 8, table_top + 10.0, right, y1 - 6), chosen,
                        lang)
     scales = {"length": n_len}
     info = TitleInfo(**{**info.__dict__, "scale": scale_text(n_len)})
     frame(s, info)
-    _table(s, model, k, forces, lab, (x0 + 8, y0 + 8, 300.0, table_top))
-    _polygon_grid(s, model, polys, chosen, lab, (310.0, y0 + 8, 602.0, y1 - 4), scales,
+    _table(s, model, k, forces, lab, (x0 + 8, y0 + 8, right, table_top), rh)
+    _polygon_grid(s, model, polys, chosen, lab, (right + 10.0, y0 + 8, 602.0, y1 - 4), scales,
                   symbols)
     _curves(s, model, k, forces, flywheel, lab, (622.0, 72.0, x1 - 8, y1 - 6))
     tb_x0, _, _, tb_y1 = title_block_box(s)
@@ -574,13 +576,19 @@ def _pivot_arcs(members: dict, mech, crank, grid: dict, joints: set) -> list:
     return out
 
 
-def _mechanism(s: Sheet, model, k, lab: dict, box, chosen: list[str], lang: str) -> float:
+def _top_room(legend: str) -> float:
+    """The mechanism view's heading (and legend line) above the drawing [mm]."""
+    return 16.0 + (7.0 if legend else 0.0)
+
+
+def _mechanism_extent(model, k, lang: str) -> dict:
+    """The points, guides and arcs of the mechanism view and its padded extent (``lo``,
+    ``hi`` in model mm) with the link names of its legend: what fixes the view's scale."""
     from ..stages.linkage import link_members
 
     mech = model.mechanism
     members, sliders = link_members(mech)
     n = k.grid_size
-    labels = list(k.positions.labels)
     mm = 1e3
     P = {name: np.asarray(z[n:]) * mm for name, z in k.points.items()}
     grid = {name: np.asarray(z[:n]) * mm for name, z in k.points.items()}
@@ -603,11 +611,28 @@ def _mechanism(s: Sheet, model, k, lab: dict, box, chosen: list[str], lang: str)
     hi = complex(allpts.real.max(), allpts.imag.max())
     pad = 0.08 * max(hi.real - lo.real, hi.imag - lo.imag) + 20.0
     lo, hi = lo - pad * (1 + 1j), hi + pad * (1 + 1j)
-    bx0, by0, bx1, by1 = box
     named = [(link, _name(model, link, lang)) for link in sorted(members.keys() | {
         sl for sl, *_ in sliders}, key=lambda x: (len(x), x))]
     legend = "  ".join(f"{link} {nm}" for link, nm in named if nm)
-    top_room = 16.0 + (7.0 if legend else 0.0)
+    return {"P": P, "grid": grid, "joints": joints, "coms": coms, "asked": asked,
+            "drawn": drawn, "guides": guides, "arcs": arcs, "allpts": allpts, "lo": lo,
+            "hi": hi, "named": named, "legend": legend}
+
+
+def _mechanism(s: Sheet, model, k, lab: dict, box, chosen: list[str], lang: str) -> float:
+    from ..stages.linkage import link_members
+
+    mech = model.mechanism
+    members, sliders = link_members(mech)
+    n = k.grid_size
+    labels = list(k.positions.labels)
+    mm = 1e3
+    ext = _mechanism_extent(model, k, lang)
+    P, grid, joints, coms, asked = ext["P"], ext["grid"], ext["joints"], ext["coms"], ext["asked"]
+    drawn, guides, arcs, allpts = ext["drawn"], ext["guides"], ext["arcs"], ext["allpts"]
+    lo, hi, named, legend = ext["lo"], ext["hi"], ext["named"], ext["legend"]
+    bx0, by0, bx1, by1 = box
+    top_room = _top_room(legend)
     avail = (bx1 - bx0) + 1j * (by1 - by0 - top_room)
     n_len = length_scale(hi - lo, avail, enlarge=True)
     sc = 1.0 / n_len
@@ -766,11 +791,53 @@ def _output_units(k) -> tuple[float, str, str, str]:
 
 
 ROW_H = 6.5
+#: the table's largest row height [mm], where the mechanism view leaves the left column's
+#: height unused
+ROW_H_MAX = 9.0
+#: how far the left column may widen into the polygons' column [mm] for a mechanism wider
+#: than tall (its view limited by the column's width): on a sheet of kinematic polygons
+#: only (two rows of tall cells); not on one with force polygons (narrower cells, longer
+#: lists; shaper_lengths widened to 1:2.5 had its O3 label crossed by a line)
+WIDEN = 70.0
+WIDEN_FORCES = 0.0
+#: the left column's right edge by default [mm from the sheet's left edge]
+LEFT_RIGHT = 300.0
 
 
-def _table_height(k) -> float:
+def _table_height(k, rh: float = ROW_H) -> float:
     """Heading plus a head row and one row per position [mm]."""
-    return 9.0 + ROW_H * (len(k.positions.labels) + 1)
+    return 9.0 + rh * (len(k.positions.labels) + 1)
+
+
+def _left_column(model, k, lang: str, inner, widen: float) -> tuple[float, float]:
+    """The left column's right edge and the table's row height: a mechanism view limited by
+    the column's width (a wide mechanism: the lock-beam feed, the six-bar, the crank-rocker)
+    left most of the column's height empty (review39: the lock-beam sheet's left column
+    60 % empty). The column widens (by at most ``widen`` mm, in 5 mm steps) where that
+    draws the mechanism at the next larger standard scale, and the table's rows grow (up
+    to :data:`ROW_H_MAX`) into half of the height the view then leaves unused."""
+    x0, y0, x1, y1 = inner
+    ext = _mechanism_extent(model, k, lang)
+    extent = ext["hi"] - ext["lo"]
+    top_room = _top_room(ext["legend"])
+
+    def scale(right: float, rh: float) -> tuple[float, float]:
+        height = (y1 - 6) - (y0 + 8 + _table_height(k, rh) + 10.0) - top_room
+        return length_scale(extent, (right - x0 - 8) + 1j * height, enlarge=True), height
+
+    base, _ = scale(LEFT_RIGHT, ROW_H)
+    right = LEFT_RIGHT
+    for extra in np.arange(5.0, widen + 1e-9, 5.0):
+        if scale(LEFT_RIGHT + extra, ROW_H)[0] < base:
+            right = LEFT_RIGHT + float(extra)
+            break
+    n_len, height = scale(right, ROW_H)
+    rows = len(k.positions.labels) + 1
+    spare = height - extent.imag / n_len
+    rh = min(ROW_H_MAX, ROW_H + max(spare, 0.0) * 0.5 / rows)
+    if scale(right, rh)[0] != n_len:          # the view keeps its scale
+        rh = ROW_H
+    return right, rh
 
 
 def _cell_number(x: float, column, decimals: int | None = None) -> str:
@@ -800,7 +867,7 @@ def crank_torque(forces) -> np.ndarray:
     return np.asarray(forces.balancing_torque)
 
 
-def _table(s: Sheet, model, k, forces, lab: dict, box) -> None:
+def _table(s: Sheet, model, k, forces, lab: dict, box, rh: float = ROW_H) -> None:
     n = k.grid_size
     bx0, by0, bx1, by1 = box
     fs, us, uv, ua = _output_units(k)
@@ -814,13 +881,14 @@ def _table(s: Sheet, model, k, forces, lab: dict, box) -> None:
         i = n + j
         rows.append([label, fmt.f(k.phase[i] * DEG, 1), _cell_number(k.s[i] * fs, k.s[:n] * fs, 2)]
                     + [_cell_number(c[i], c[:n]) for c in columns])
-    rh = ROW_H
+    # the text grows with the rows (2.5 mm in a 6.5 mm row, at most 3.5 mm)
+    text_h = min(3.5, 2.5 * rh / ROW_H)
     weights = np.array([0.8, 1.0] + [1.2] * (len(head) - 2))
     widths = weights / weights.sum() * (bx1 - bx0)
     top = by1 - 7.0
     heading(s, (bx0 + bx1) / 2 + 1j * (top + 1.5), lab["table" if forces is not None else "table_kin"],
             5.0)
-    table(s, bx0, top, widths, rows, head, row_h=rh, height=2.5, head_height=2.5, margin=1.0,
+    table(s, bx0, top, widths, rows, head, row_h=rh, height=text_h, head_height=text_h, margin=1.0,
           outer=0.7, rule=0.7, inner=0.25)
 
 
