@@ -155,3 +155,36 @@ def test_a_known_magnitude_is_listed_as_computed(handin_reports, example_results
     assert size == pytest.approx(expected, abs=5e-5)
     assert length == pytest.approx(round(expected / pos.acceleration.scale * 2) / 2)
     assert value == pytest.approx(length * pos.acceleration.scale)
+
+
+def test_a_rocking_outputs_sheet_names_its_swing_and_lists_its_omega_once():
+    """crank_rocker's A1 analysis sheet: the rocker's curves are its swing ψ (°), angular
+    velocity ω and acceleration α (they were "s (°)", "v (rad/s)", "a (rad/s²)", a slider's
+    letters), and the table has no second column of the rocker's ω (its "v" and "ω3" columns
+    held the same numbers)."""
+    import numpy as np
+
+    from mechdesign.brief.loader import load_brief
+    from mechdesign.machines import get_machine, stages_for
+    from mechdesign.pipeline import run_stages
+    from mechdesign.render.analysis_sheet import analysis_sheet, sub
+    from mechdesign.render.sheet import Text, TitleInfo
+    from mechdesign.render.sheets import linkage_results
+
+    b = load_brief("designs/crank_rocker.yaml")
+    m = get_machine(b.machine)
+    p = m.to_params(b)
+    results, _ = run_stages(stages_for(m, p), {"params": p, "brief": b}, None)
+    found = linkage_results(results)
+    k = found.motion
+    assert k.output_unit == "rad"
+    rocker = [link for link, w in k.link_omega.items() if np.allclose(w, k.v)]
+    assert rocker, "the output's ω is a link's ω"
+    info = TitleInfo("机构运动分析图", "课程设计", "张三", "1", "1", "李", "2026-11-27",
+                     number="MD-01", sheet_no=1, sheets=1)
+    s, _ = analysis_sheet(found, info, "zh")
+    texts = [t.text for t in s.entities if isinstance(t, Text)]
+    assert "输出摆角 ψ (°)" in texts and "输出角速度 ω (rad/s)" in texts
+    assert not any(t.startswith("输出位移 s") for t in texts)
+    assert "ψ (°)" in texts and "ω (rad/s)" in texts and "s (°)" not in texts
+    assert sub("ω", str(rocker[0])) + " (rad/s)" not in texts, texts

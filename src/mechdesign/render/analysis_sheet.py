@@ -41,6 +41,11 @@ LABELS = LabelTable({
     "s": pgettext("analysis sheet", "output displacement s ({u})"),
     "v": pgettext("analysis sheet", "output velocity v ({u})"),
     "a": pgettext("analysis sheet", "output acceleration a ({u})"),
+    # a rocking output: its swing, angular velocity and acceleration (review39: a rocker's
+    # curves and columns were labelled s, v, a as a slider's)
+    "s_rot": pgettext("analysis sheet", "output swing ψ ({u})"),
+    "v_rot": pgettext("analysis sheet", "output angular velocity ω ({u})"),
+    "a_rot": pgettext("analysis sheet", "output angular acceleration α ({u})"),
     "mb": pgettext("analysis sheet", "balancing torque Mb (N·m)"),
     "work": pgettext("analysis sheet", "work W, energy change ΔE (J)"),
     "phase": pgettext("analysis sheet", "crank angle φ (°)"),
@@ -871,8 +876,12 @@ def _table(s: Sheet, model, k, forces, lab: dict, box, rh: float = ROW_H) -> Non
     n = k.grid_size
     bx0, by0, bx1, by1 = box
     fs, us, uv, ua = _output_units(k)
-    links = _moving_links(model, k)
-    head = [lab["pos"], "φ (°)", f"s ({us})", f"v ({uv})", f"a ({ua})"] + \
+    # a rocking output's ω is the output's own column: not listed twice (review39: the crank
+    # rocker's "v" and "ω3" columns were the same numbers)
+    links = [link for link in _moving_links(model, k)
+             if k.output_unit == "m" or not np.allclose(k.link_omega[link], k.v)]
+    sv, vv, av = ("s", "v", "a") if k.output_unit == "m" else ("ψ", "ω", "α")
+    head = [lab["pos"], "φ (°)", f"{sv} ({us})", f"{vv} ({uv})", f"{av} ({ua})"] + \
         [sub("ω", str(link)) + " (rad/s)" for link in links] + ([sub("M", "b") + " (N·m)"] if forces is not None else [])
     columns = [k.v, k.a] + [k.link_omega[link] for link in links] + \
         ([crank_torque(forces)] if forces is not None else [])
@@ -966,8 +975,9 @@ def _curves(s: Sheet, model, k, forces, fl, lab: dict, box) -> None:
     span = k.working_span * DEG
     fs, us, uv, ua = _output_units(k)
     heading(s, (left + bx1) / 2 + 1j * (by1 - 5), lab["curves"], 5.0)
-    panels = [(k.s * fs, lab["s"].format(u=us)), (k.v, lab["v"].format(u=uv)),
-              (k.a, lab["a"].format(u=ua))]
+    rot = "" if k.output_unit == "m" else "_rot"
+    panels = [(k.s * fs, lab["s" + rot].format(u=us)), (k.v, lab["v" + rot].format(u=uv)),
+              (k.a, lab["a" + rot].format(u=ua))]
     top = by1 - 14.0
     n_panels = 3 + (forces is not None) + (fl is not None)
     gaps = 3 * 15.0 + (forces is not None) * 24.0 + (fl is not None) * 26.0
