@@ -1501,6 +1501,23 @@ def test_a_figure_stays_off_a_lead_in_and_the_equation_it_leads_to(tmp_path):
     assert page_holes(pdf) == [] and half_empty_pages(pdf) == []
 
 
+@pytest.mark.parametrize("lines", [12, 13])
+def test_a_chapters_last_figure_a_little_too_tall_fills_the_rest_of_its_page(tmp_path, lines):
+    # a chapter's text ends at about two thirds of its page, and its figure is a little taller
+    # than the room left: it went on to the top of the next page, before the next chapter, and
+    # the page ended at 63 % (die_cutter en p.9, figure 5). It is now set smaller to fill that
+    # room (templates/report.typ: close-floor, at least 80 % of its height)
+    from PIL import Image
+
+    Image.new("RGB", (800, 500), (200, 220, 240)).save(tmp_path / "a.png")
+    md = (f"# One\n\n{_FILLER * lines}\n\nThe joint reactions are plotted in Figure 1.\n\n"
+          f"![Reactions](a.png){{width=100%}}\n\n# Two\n\n{_FILLER * 8}\n")
+    pdf = _render(tmp_path, md)
+    (anchor, placed), = figure_anchors(pdf)
+    assert placed[0] == anchor[0]
+    assert half_empty_pages(pdf) == [] and page_holes(pdf) == []
+
+
 def test_the_references_take_no_whole_chapter_with_them_to_the_last_page(tmp_path):
     # a short summary and a short reference list after a chapter that ends low on its page:
     # the list, too short to stand alone on the last page, takes the summary's last blocks
