@@ -254,11 +254,12 @@ CAPTION_SIZE = 10.5
 
 def _flow_rows(page) -> tuple[list, list]:
     """(rows, figures) of a page: its text rows without the figures' captions, as
-    (top, bottom, text, display), and the (top, bottom) of each figure (image, caption
+    (top, bottom, text, display, size), and the (top, bottom) of each figure (image, caption
     included). A row that overlaps the one above it by more than 2 pt (an equation's
     subscripts or a fraction's denominator, set lower than its line) is part of it: its text
     goes before that row's when that row ends with an equation number. ``display``: every
-    line of the row is a display equation's (DISPLAY_INDENT)."""
+    line of the row is a display equation's (DISPLAY_INDENT); ``size``: the largest font size
+    of its lines (the body's 11 pt, a table's 9 pt, a heading's 11.5 pt and more)."""
     lines = [(ln["bbox"][1], ln["bbox"][0], all("Math" in sp["font"] for sp in ln["spans"] if sp["text"].strip()),
               max(sp["size"] for sp in ln["spans"] if sp["text"].strip()))
              for b in page.get_text("dict")["blocks"] for ln in b.get("lines", [])
@@ -274,7 +275,8 @@ def _flow_rows(page) -> tuple[list, list]:
             rows[-1] = (above[0], max(above[1], bottom), text)
         else:
             rows.append((top, bottom, text))
-    rows = [row + (all(x > LEFT + DISPLAY_INDENT and math for _, x, math, _ in of(row)),) for row in rows]
+    rows = [row + (all(x > LEFT + DISPLAY_INDENT and math for _, x, math, _ in of(row)),
+                   max((size for *_, size in of(row)), default=0.0)) for row in rows]
     images = sorted((i["bbox"][1], i["bbox"][3]) for i in page.get_image_info()
                     if i["bbox"][3] - i["bbox"][1] > 40)
     figures, captions = [], set()
@@ -308,13 +310,25 @@ def _opens_equation(rows) -> bool:
     return False
 
 
+# a row of the body's text (11 pt): not a table's (9 pt), a caption's (10 pt) or a heading's
+BODY_SIZES = (10.5, 11.3)
+
+
+def _is_prose_row(row) -> bool:
+    """Whether a row (of _flow_rows) is a line of the body's text, not a display equation's."""
+    return not row[3] and BODY_SIZES[0] <= row[4] < BODY_SIZES[1]
+
+
 def figures_in_derivations(pdf) -> list[tuple[int, str]]:
     """(page, row) of every figure set between two lines of a derivation (issue 19 point 2:
     press fig. 6, die_cutter fig. 5, shaper fig. 4-5): a figure at a page's foot or on the top
     of the next page, where the text before it (the last row above it, on its page or the
-    page before) is a numbered display equation or a lead-in ending in a colon, and the
+    page before) is a numbered display equation, a lead-in ending in a colon or any other
+    line of the body's text (the sentence that leads to the equation: slotter en fig. 8-9
+    between "No known force on link 3 has a moment about A: M43 = 0." and eq. 22, die_cutter
+    zh fig. 14 inside the sentence "若没有飞轮…只能在压切开始处产生" that eq. 53 ends), and the
     text after it (the first row under it) is a numbered display equation or the first row of
-    one (_opens_equation)."""
+    one (_opens_equation). (A table's row before it is not taken for a lead-in.)"""
     import pymupdf
 
     bad = []
@@ -331,14 +345,16 @@ def figures_in_derivations(pdf) -> list[tuple[int, str]]:
                     above = pages[k - 1][0]
                 if not under and k + 1 < len(pages) and pages[k + 1] is not None:
                     nxt_rows, nxt_figs = pages[k + 1]
-                    # the next page's flow starts under the figures on its top
+                    # the next page's flow starts under the figures on its top (an equation
+                    # that opens the page may reach a little above the text block: a fraction)
                     start = nxt_rows[0][0] if nxt_rows else BOTTOM
                     tops = [b for t, b in nxt_figs if t < start]
-                    under = [r for r in nxt_rows if r[0] >= max(tops, default=TOP) - 1]
+                    under = [r for r in nxt_rows if r[0] >= max(tops, default=TOP - 6) - 1]
                 if not above or not under:
                     continue
                 before, after = above[-1], under[0]
-                if _opens_equation(under) and (_is_equation_row(before) or before[2].endswith(("：", ":"))):
+                if _opens_equation(under) and (_is_equation_row(before) or before[2].endswith(("：", ":"))
+                                               or _is_prose_row(before)):
                     bad.append((k + 1, after[2][-40:]))
     return sorted(set(bad))
 
@@ -1130,7 +1146,12 @@ HOLES_OPEN: set[tuple[str, str]] = set()
 # of p.11 between eqs. 16 and 17 of group 3-4 (chapter 2 no longer repeats chapter 1's data,
 # so the text moved up; the run 16-17 is too tall to be kept whole, and a figure floated on
 # from an earlier page still goes to the top of a page that starts mid-run: the figure rule)
-DERIVATION_OPEN: set[tuple[str, str]] = {("linkage_sixbar", "en")}
+# Mended in session 39: linkage_sixbar en (a figure that floated on from an earlier page to a
+# page that starts in the middle of a derivation is held past it: detect-run-held). The check
+# now also takes a line of the body's text for the derivation's lead-in (slotter en p.12, figs.
+# 8-9 between "No known force on link 3 …: M43 = 0." and eq. 22; die_cutter zh p.22): mended by
+# the same rules (crossings: the lead-in's end and its equation marked)
+DERIVATION_OPEN: set[tuple[str, str]] = set()
 # Word, as LibreOffice 7.4 lays it out: a heading at a page foot with fewer than three rows
 # under it. render/docx_layout.keep_headings_with_text keeps a heading's first blocks with
 # it, a numbered formula's table by w:keepNext on all its paragraphs, which Word reads as
@@ -1422,6 +1443,80 @@ def test_a_figure_stays_off_a_long_derivation_that_went_on_to_its_page(tmp_path)
     assert figure_anchors(pdf)[1][0][0] == page_of[14]    # and its figure's text is on its page
     assert figures_in_derivations(pdf) == []
     assert page_holes(pdf) == [] and half_empty_pages(pdf) == []
+
+
+def test_a_figure_floated_on_stays_off_the_derivation_that_went_on_to_its_page(tmp_path):
+    # a figure cited before a derivation of five equations (too long to keep whole) and too
+    # tall for the rest of its page floats on to the top of the next page, where the
+    # derivation goes on: it stood between eqs. 37 and 38 (linkage_sixbar en fig. 8 between
+    # eqs. 16 and 17). It is now held past the derivation (templates/report.typ:
+    # detect-run-held) and stands under its last equation
+    from PIL import Image
+
+    Image.new("RGB", (800, 500), (200, 220, 240)).save(tmp_path / "a.png")
+    parts = ["# One\n"]
+    for k in range(12):
+        parts.append(_FILLER * (1 + k % 5))
+        parts.append(f"The forces of case {k} are drawn in Figure {k + 1}.")
+        parts.append(f"![Case {k}](a.png){{width=70%}}")
+        parts.append(f"The law of case {k} follows:")
+        parts += [f"$$ S_{{{k}{i}}}(u) = 10 u^3 - 15 u^4 + 6 u^5 + {i} $$" for i in range(5)]
+    pdf = _render(tmp_path, "\n\n".join(parts) + "\n")
+    page_of = equation_pages(pdf)
+    anchors = figure_anchors(pdf)
+    # the case: a derivation goes on from one page to the next and the figure cited before it
+    # stands on that next page
+    assert any(page_of[5 * k + 1] < page_of[5 * k + 5] == anchors[k][1][0] for k in range(12))
+    assert figures_in_derivations(pdf) == []
+    assert figure_order(pdf) == [] and figures_far_from_anchor(pdf) == []
+    assert page_holes(pdf) == [] and half_empty_pages(pdf) == []
+
+
+def test_a_figure_stays_off_a_lead_in_and_the_equation_it_leads_to(tmp_path):
+    # sentences that lead to a display equation ("… gives the reaction of case 10 as", no colon)
+    # end a page and the equation opens the next, with a figure cited under it: the figure
+    # stood on the top of that page (or at the foot of the page before) between the sentence
+    # and its equation (slotter en figs. 8-9 above eq. 22, die_cutter zh fig. 14 above eq.
+    # 53). It now stands where its text ends (templates/report.typ: crossings)
+    import pymupdf
+    from PIL import Image
+
+    Image.new("RGB", (800, 500), (200, 220, 240)).save(tmp_path / "a.png")
+    parts = ["# One\n"]
+    for k in range(30):
+        parts.append(_FILLER * (1 + (2 * k) % 5))
+        parts.append(f"With no force on link {k} the moment about its pivot gives the reaction of case {k} as")
+        parts.append(f"$$ F_{{{k}}} = \\frac{{M_b}}{{l_{{AB}}}} = \\frac{{-228.3}}{{0.0925}} = -2468 $$")
+        parts.append(f"The forces of case {k} are drawn in Figure {k // 2 + 1}.")
+        if k % 2 == 0:
+            parts.append(f"![Case {k}](a.png){{width=55%}}")
+    pdf = _render(tmp_path, "\n\n".join(parts) + "\n")
+    page_of = equation_pages(pdf)
+    with pymupdf.open(pdf) as doc:
+        lead = {int(m.group(1)): number for number, page in enumerate(doc, 1) for row in page_rows(page)
+                for m in [re.search(r"reaction of case (\d+) as$", row[2])] if m}
+    # the case: a lead-in ends a page and its equation opens the next
+    assert any(lead[k] < page_of[k + 1] for k in range(30))
+    assert figures_in_derivations(pdf) == []
+    assert figure_order(pdf) == [] and figures_far_from_anchor(pdf) == []
+    assert page_holes(pdf) == [] and half_empty_pages(pdf) == []
+
+
+@pytest.mark.parametrize("lines", [12, 13])
+def test_a_chapters_last_figure_a_little_too_tall_fills_the_rest_of_its_page(tmp_path, lines):
+    # a chapter's text ends at about two thirds of its page, and its figure is a little taller
+    # than the room left: it went on to the top of the next page, before the next chapter, and
+    # the page ended at 63 % (die_cutter en p.9, figure 5). It is now set smaller to fill that
+    # room (templates/report.typ: close-floor, at least 80 % of its height)
+    from PIL import Image
+
+    Image.new("RGB", (800, 500), (200, 220, 240)).save(tmp_path / "a.png")
+    md = (f"# One\n\n{_FILLER * lines}\n\nThe joint reactions are plotted in Figure 1.\n\n"
+          f"![Reactions](a.png){{width=100%}}\n\n# Two\n\n{_FILLER * 8}\n")
+    pdf = _render(tmp_path, md)
+    (anchor, placed), = figure_anchors(pdf)
+    assert placed[0] == anchor[0]
+    assert half_empty_pages(pdf) == [] and page_holes(pdf) == []
 
 
 def test_the_references_take_no_whole_chapter_with_them_to_the_last_page(tmp_path):

@@ -601,7 +601,8 @@ def _compile_report(typ_name: str, root: Path, timestamp: int, stem: str,
 def _held_next(typ_name: str, root: Path, inputs: dict[str, str]) -> dict | None:
     """What the last pass of the compilation with ``inputs`` read of its layout
     (templates/report.typ: `<figure-held-next>`): ``held``, the figures it would hold back
-    past a table (figure number -> ordinal of the table), and ``far``, the held figures that
+    past a table (figure number -> ordinal of the table) or past a derivation ("d" + figure
+    number -> the derivation's number, a string: never taken for a table's), and ``far``, the held figures that
     landed more than a page after their text or under a hole; None where it cannot be read."""
     import typst
 
