@@ -364,7 +364,10 @@ def _motor_end(c: Check) -> str:
 def _coupling_torque(c: Check) -> str:
     """T_c = K_A T ≤ T_n (GB/T 12458 terms; 濮良贵 ch.14)."""
     i = c.inputs
-    return rf"T_c = K_A T = {num(i['KA'])} \times {num(i['T'])}" + _tail(c, "T_n")
+    # T_c with T's digits (1 × 0.9983 = 0.9983, not 1.00: one value one way)
+    u = _unit(c.unit)
+    return (rf"T_c = K_A T = {num(i['KA'])} \times {num(i['T'])} = {num(c.value)}\ {u} {_relation(c)} "
+            rf"T_n = {_allowable(c)}\ {u}")
 
 
 _FORMULAS = {
