@@ -456,13 +456,14 @@ def _keys(info, d_end, d_seat, T_of, allow_of, key_length=None):
     out = []
     for i in info:
         d = i["design"]
-        if d is None:
+        if d is None and i["name"] != "crank":
             continue                      # a flywheel's weight: no drive stage, no key here
-        if d.kind == "worm" and i["driving"]:
+        if d is not None and d.kind == "worm" and i["driving"]:
             continue                      # the worm is cut on its shaft: no key
         dk = d_seat if i["inside"] or d_end is None else d_end
         key = cat.key_for_shaft(dk)
-        base = max(i["width"], 1.2 * dk, 1.5 * dk if d.kind in ("belt", "coupling", "chain") else 0.0)
+        kind = d.kind if d is not None else i["name"]     # the crank's hub: 1.5 d, as a coupling's
+        base = max(i["width"], 1.2 * dk, 1.5 * dk if kind in ("belt", "coupling", "chain", "crank") else 0.0)
         T, allow = T_of(i), allow_of(i)
         choice = None
         if key_length is not None:
@@ -620,6 +621,10 @@ def shaft_designs(dp, designs, shafts, peak_factor, peak_from_shaft, kinds,
                 bad_end, bad_in = ev["bad_end"], ev["bad_in"]
                 if bad_end and free_end:
                     new = st.standard_diameter(d_end * (1 + 1e-6) + 1e-6, series_d)
+                    if free_j and _round_up(st.standard_diameter(1.14 * new, series_d), 0.005) > JOURNAL_MAX + 1e-9:
+                        # the journal could not follow the end (its seal) within the catalogue
+                        steps.append(("top", (dj, ds), (dj, ds), _kinds(ev)))
+                        break
                     steps.append(("end", d_end, new, _kinds(ev)))
                     d_end = new
                     seal = st.standard_diameter(1.14 * d_end, series_d)
@@ -695,19 +700,20 @@ def _crank_step(cr, info, span) -> dict:
     the force and how it was found."""
     x = next(i["x"] for i in info if i["name"] == "crank")
     side = "B" if x > span else "A"
-    return _step(N_("the crank on this shaft (design assumption: overhung {a} mm beyond bearing {side}, "
-                     "x = {x} mm) presses it with the frame reaction on the crank {F}: its largest "
-                     "magnitude over the cycle governs (σ_ca grows with it at every section), at crank "
-                     "angle φ = {phi}° from position 1 ({Fx} N, {Fy} N; M_b = {Mb} N·m there), found "
-                     "exactly: the kinetostatics solved at any φ between the resistances' jumps, the "
-                     "samples' local maxima refined by Brent's bounded search and each piece's ends "
-                     "taken one-sided (the samples' largest: {grid} N); taken in the plane and sense "
-                     "of the largest moment (the reducer's orientation about the shaft is not in the "
-                     "brief); the bearing life takes its cube mean over the cycle, {life} N"),
+    return _step(N_("the crank on this shaft (design assumption: overhung {a} mm beyond bearing {side}, at "
+                     "x = {x} mm) loads it with the frame reaction on the crank; {sigma} grows with it at "
+                     "every section, so its largest magnitude over the cycle governs: {F} N at crank angle "
+                     "φ = {phi}° from position 1 ({Fx} N, {Fy} N; {Mb} N·m there), found exactly (the "
+                     "kinetostatics solved at any φ between the resistances' jumps, the samples' local maxima "
+                     "refined by Brent's bounded search, each piece's ends taken one-sided; the largest "
+                     "sample: {grid} N); taken in the plane and sense of the largest moment (the reducer's "
+                     "orientation about the shaft is not in the brief); the bearing life takes its cube mean "
+                     "over the cycle, {life} N"),
                  a=_mmf(abs(x - (span if x > span else 0.0)), 0), side=side, x=_mmf(x, 0),
-                 F=f"$|F_{{{cr.joint}}}|$ = {_text_num(round(cr.F))} N", phi=f"{math.degrees(cr.phase):.2f}",
+                 sigma="$\\sigma_{ca}$", F=f"$|F_{{{cr.joint}}}|$ = {_text_num(round(cr.F))}",
+                 phi=f"{math.degrees(cr.phase):.2f}",
                  Fx=f"$F_x$ = {_text_num(round(cr.Fx))}", Fy=f"$F_y$ = {_text_num(round(cr.Fy))}",
-                 Mb=_sig(cr.torque, 4), grid=_text_num(round(cr.grid_max)),
+                 Mb=f"$M_b$ = {_sig(cr.torque if abs(cr.torque) > 1e-9 * max(abs(cr.F), 1.0) else 0.0, 4)}", grid=_text_num(round(cr.grid_max)),
                  life=_text_num(round(cr.life)))
 
 
@@ -728,6 +734,12 @@ def _kinds(ev) -> tuple[str, ...]:
 def _loop_text(log) -> list[dict]:
     """The upsizing steps, runs of the same section merged: from → to, the number of 5 mm /
     standard steps and the checks that failed on the way."""
+    runs = [e[0] for n, e in enumerate(log) if n == 0 or log[n - 1][0] != e[0]]
+    if any(runs.count(kind) > 2 for kind in ("end", "in")):
+        # the end and the journal failing in turn (a heavy overhung load): one line for each,
+        # from its first size to its last, in the order they first grew (then the stop)
+        order = [kind for n, kind in enumerate(runs) if kind not in runs[:n]]
+        log = [e for kind in order for e in log if e[0] == kind]
     out, k = [], 0
     while k < len(log):
         kind = log[k][0]
@@ -737,10 +749,10 @@ def _loop_text(log) -> list[dict]:
         first, last = log[k], log[j]
         if kind == "top":
             why = Join(Msg.pgettext("list", ", "), [Msg(_KIND_TEXT[x]) for x in last[3]])
-            out.append(_step(N_("the journal has reached {d} mm, the largest bearing bore of the catalogue: "
+            out.append(_step(N_("the journal cannot grow beyond {d} mm, the largest bearing bore of the catalogue: "
                                  "the shaft is not enlarged further and still fails ({why}); the design does "
                                  "not pass as it stands (a stronger material, larger bearings, or the load "
-                                 "closer to a bearing)"), d=_mmf(last[1][0]), why=why))
+                                 "closer to a bearing)"), d=_mmf(JOURNAL_MAX), why=why))
             k = j + 1
             continue
         kinds = [x for x in _KIND_TEXT if any(x in e[3] for e in log[k:j + 1])]
