@@ -41,6 +41,8 @@ class CrankLoad:
     grid_max: float = q("N", "the largest |F_R12| of the kinetostatics' samples")
     life: float = q("N", "cube mean of |F_R12| over the cycle (the bearing life's equivalent "
                          "load of the crank: (mean |F|³)^(1/3) over the uniform samples)")
+    others: tuple = q("", "the other parts on the crank's shaft whose loads the brief does not give "
+                      "(messages): named in the shaft's design steps", default=())
 
 
 def crank_joint(model) -> str:
@@ -77,7 +79,7 @@ def reaction_at(ci, phase, piece: int, joint: str) -> tuple[np.ndarray, np.ndarr
     return fa.reactions[joint].force, ci.k.sense * fa.driving_torque
 
 
-def crank_load(model, k, forces) -> CrankLoad:
+def crank_load(model, k, forces, others: tuple = ()) -> CrankLoad:
     """The largest |F_R12| over the cycle, exactly (see the module's docstring)."""
     from .linkage import CycleIntegrals
 
@@ -105,4 +107,4 @@ def crank_load(model, k, forces) -> CrankLoad:
     R, mb = reaction_at(ci, [phase], piece, joint)
     life = float(np.mean(grid_f ** 3) ** (1 / 3))
     return CrankLoad(joint, phase, float(R[0].real), float(R[0].imag), float(abs(R[0])),
-                     float(mb[0]), float(grid_f.max()), life)
+                     float(mb[0]), float(grid_f.max()), life, tuple(others))

@@ -671,6 +671,12 @@ def shaft_designs(dp, designs, shafts, peak_factor, peak_from_shaft, kinds,
         head, tail = _steps(sh, mat, a0, d_min, dims, shoulder, T, peak, peak_factor, lf, ev, span, dp)
         if cr is not None:
             head = head + [_crank_step(cr, info, span)]
+            if cr.others:
+                names = Join(Msg.pgettext("list", ", "), list(cr.others))
+                head.append(_step(N_("{names} on this shaft are not loaded in this check: the brief gives no "
+                                     "force for them (a spring force, a feed resistance); a force of 1 % of "
+                                     "the crank's, {lim} N, would change the largest moment by about 1 %"),
+                                  names=names, lim=_text_num(round(0.01 * cr.F))))
         steps = head + _loop_text(loop_steps) + tail
         out.append(ShaftDesign(j, sh.speed_rpm, sh.power, T, d_min, dj, ds, span, tuple(loads),
                                tuple(i["name"] for i in _load_order(info)), res, ev["bearing"], ev["pl"], tuple(checks),

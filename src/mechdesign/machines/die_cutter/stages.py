@@ -407,7 +407,13 @@ def _crank(r: dict) -> dict:
     """{the distribution shaft (the drive's last): the crank's largest load on it}."""
     from ...stages.crank_load import crank_load
 
-    return {len(r["params"].drive.stages): crank_load(r["press_model"], r["press"], r["press_forces"])}
+    from ...i18n import N_, Msg
+
+    # the gripper cam and the incomplete gear share the distribution shaft; the brief gives
+    # no spring force nor feed resistance for them: named in the shaft's steps, not loaded
+    others = (Msg(N_("the gripper cam")), Msg(N_("the incomplete gear")))
+    return {len(r["params"].drive.stages): crank_load(r["press_model"], r["press"], r["press_forces"],
+                                                      others)}
 
 
 @dataclass(frozen=True)
