@@ -200,7 +200,7 @@ def design_ratios(stages, elements, total: float, belt_d1: dict | None = None) -
 def design_drive(dp, machine_power: float, output_rpm: float, source: str,
                  peak_factor: float = 1.0, peak_from_shaft: int | None = None,
                  life_factor: float | None = None,
-                 weights=None) -> DriveResult:
+                 weights=None, crank=None) -> DriveResult:
     """The whole drive for a machine needing ``machine_power`` [W] at ``output_rpm``.
     ``peak_factor``: the machine's peak torque / its mean, carried by the shafts from
     ``peak_from_shaft`` on (after the flywheel; None: none); ``life_factor``: the cycle's
@@ -209,7 +209,8 @@ def design_drive(dp, machine_power: float, output_rpm: float, source: str,
     drive stage (a flywheel), a vertical load between that shaft's bearings, or a function
     of the shaft table (:func:`core.shaft_table`'s rows) giving it (a flywheel sized at the
     speed the drive realises on its shaft: the motor, the ratios and the shaft table do not
-    depend on the weights)."""
+    depend on the weights); ``crank``: {shaft: CrankLoad}, the crank's largest load on the
+    shaft that carries it (:mod:`.crank_load`)."""
     # A machine without working resistance takes (almost) no mean power: its torque only
     # swings about zero, the peak factor peak/mean is unbounded and nothing sizes the drive.
     if not (machine_power > 0 and np.isfinite(machine_power) and 0 < peak_factor < 1e6):
@@ -253,7 +254,7 @@ def design_drive(dp, machine_power: float, output_rpm: float, source: str,
     if callable(weights):
         weights = weights(shafts)
     shaft_designs = _shafts(dp, results, shafts, peak_factor, peak_from_shaft, life_factor, weights,
-                            choice.motor)
+                            choice.motor, crank)
     n_out = shafts[-1].speed_rpm
     error = (n_out - output_rpm) / output_rpm
     warnings = []
@@ -363,7 +364,7 @@ def data_assumptions(motor, stages, shaft_designs) -> tuple[str, ...]:
 
 def resized(drive: DriveResult, dp, peak_factor: float, peak_from_shaft: int | None,
             life_factor: float | None = None,
-            weights: dict[int, tuple[float, float]] | None = None) -> tuple[tuple, tuple] | None:
+            weights: dict[int, tuple[float, float]] | None = None, crank=None) -> tuple[tuple, tuple] | None:
     """The stages and shaft designs of ``drive`` sized again for another peak assignment
     (another flywheel placement: the shafts from ``peak_from_shaft`` on carry the peak):
     the motor, the realised ratios and the shaft table do not depend on it and are reused;
@@ -375,7 +376,7 @@ def resized(drive: DriveResult, dp, peak_factor: float, peak_from_shaft: int | N
     if any(abs(v - drive.stages[k].efficiency) > 1e-4 for k, v in worm_eff.items()):
         return None
     return tuple(results), tuple(_shafts(dp, results, drive.shafts, peak_factor, peak_from_shaft,
-                                         life_factor, weights, drive.motor))
+                                         life_factor, weights, drive.motor, crank))
 
 
 def _strength(dp, results, shafts, peak_factor, peak_from_shaft):
@@ -386,10 +387,10 @@ def _strength(dp, results, shafts, peak_factor, peak_from_shaft):
 
 
 def _shafts(dp, results, shafts, peak_factor, peak_from_shaft, life_factor=None, weights=None,
-            motor=None):
+            motor=None, crank=None):
     kinds = [r.kind for r in results]
     return ds.shaft_designs(dp, [r.design for r in results], shafts, peak_factor, peak_from_shaft, kinds,
-                            life_factor, weights, motor)
+                            life_factor, weights, motor, crank)
 
 
 def undercut_findings(results) -> list[Finding]:

@@ -43,6 +43,7 @@ A0, KEYWAY = 112.0, 0.05
 OVERHANG, CLEARANCE = 0.080, 0.060       # [m]
 KD_WORM = 15.0                             # W/(m²·°C), natural ventilation (8.15–17.45)
 FP = 1.2
+JOURNAL_MAX = 0.130                        # [m] the largest bearing bore of the catalogue
 M_MIN_POWER = 0.002                        # gears transmitting power: m ≥ 1.5–2 mm (textbook)
 
 
@@ -391,7 +392,7 @@ def _life_scale(designs, peak_factor, peak_from_shaft, life_factor):
     return out
 
 
-def _place(dp, j, designs, kinds, weight=None):
+def _place(dp, j, designs, kinds, weight=None, crank=None):
     """The elements on shaft j and where they sit: those inside the housing evenly between
     the bearings, the overhung ones 80 mm outside (first left, then right). ``kinds``: the
     stages' kinds (transmissions.yaml keys), which name the elements. ``weight``: (W [N],
@@ -409,6 +410,12 @@ def _place(dp, j, designs, kinds, weight=None):
         info.append(dict(k=None, design=None, driving=False, name="flywheel", inside=True,
                          fields=dict(Fv=-float(weight[0])), width=float(weight[1]),
                          hub_mat="cast_iron"))
+    if crank is not None:
+        # the crank on its shaft: its frame reaction, a radial load overhung beyond the
+        # bearings (no drive stage: no key is designed for it); the plane is set by the caller
+        info.append(dict(k=None, design=None, driving=False, name="crank", inside=False,
+                         fields=dict(Fh=float(crank.F)), life_fields=dict(Fh=float(crank.life)),
+                         width=0.0, hub_mat="steel"))
     inside_width = sum(i["width"] for i in info if i["inside"]) or 0.05
     span = dp.stages[j - 1].span or inside_width + 2 * CLEARANCE
     ins = [i for i in info if i["inside"]]
@@ -425,7 +432,9 @@ def _statics(span, info, T, scale=None):
     loads = []
     for i in _load_order(info):
         f = dict(i["fields"])
-        if scale is not None and i["k"] is not None:     # a weight is the same in both cases
+        if scale is not None and "life_fields" in i:     # the crank: its cube-mean force
+            f = dict(i["life_fields"])
+        elif scale is not None and i["k"] is not None:   # a weight is the same in both cases
             c = scale[i["k"]]
             f = {k: (v * c if k != "r" else v) for k, v in f.items()}
         loads.append(st.PointLoad(i["x"], **f))
@@ -471,13 +480,14 @@ def _keys(info, d_end, d_seat, T_of, allow_of, key_length=None):
     out = []
     for i in info:
         d = i["design"]
-        if d is None:
+        if d is None and i["name"] != "crank":
             continue                      # a flywheel's weight: no drive stage, no key here
-        if d.kind == "worm" and i["driving"]:
+        if d is not None and d.kind == "worm" and i["driving"]:
             continue                      # the worm is cut on its shaft: no key
         dk = d_seat if i["inside"] or d_end is None else d_end
         key = cat.key_for_shaft(dk)
-        base = max(i["width"], 1.2 * dk, 1.5 * dk if d.kind in ("belt", "coupling", "chain") else 0.0)
+        kind = d.kind if d is not None else i["name"]     # the crank's hub: 1.5 d, as a coupling's
+        base = max(i["width"], 1.2 * dk, 1.5 * dk if kind in ("belt", "coupling", "chain", "crank") else 0.0)
         T, allow = T_of(i), allow_of(i)
         choice = None
         if key_length is not None:
@@ -555,7 +565,7 @@ def _evaluate(dp, j, sh, info, span, T, res, life_res, mat, dims, bearing_fixed,
 def shaft_designs(dp, designs, shafts, peak_factor, peak_from_shaft, kinds,
                   life_factor: float | None = None,
                   weights: dict[int, tuple[float, float]] | None = None,
-                  motor=None) -> tuple[ShaftDesign, ...]:
+                  motor=None, crank: dict | None = None) -> tuple[ShaftDesign, ...]:
     """Each shaft designed by the handbook's procedure (濮良贵《机械设计》 ch.15, 《机械设计课程
     设计》): d_min = A0∛(P/n) (+5 % keyway); the sections laid out from the parts (overhung end
     → journal → seat → shoulder), each rounded up to the standard series; the bending–torsion
@@ -571,7 +581,11 @@ def shaft_designs(dp, designs, shafts, peak_factor, peak_from_shaft, kinds,
     ``weights``: {shaft: (W [N], width [m])}, a flywheel's weight between that shaft's bearings.
     ``motor``: the motor (:class:`~mechdesign.core.drive.Motor`); where a coupling joins it to
     shaft Ⅰ, that shaft's end is at least the course guides' 0.8 D (D the motor's shaft
-    extension) and a bore of the LT coupling that also bores D (:func:`_coupling`)."""
+    extension) and a bore of the LT coupling that also bores D (:func:`_coupling`).
+    ``crank``: {shaft: :class:`.crank_load.CrankLoad`}, the crank on that shaft: its largest
+    force over the cycle a radial load overhung 80 mm beyond a bearing (the life case: the
+    force's cube mean), in the plane and sense that give the largest equivalent moment (the
+    reducer's orientation about the shaft is not in the brief: the worst of the four)."""
     choices = {c.shaft: c for c in dp.shafts}
     worm_shafts = {k for k, d in enumerate(designs) if d.kind == "worm"} | \
                   {k + 1 for k, d in enumerate(designs) if d.kind == "worm"}
@@ -589,7 +603,10 @@ def shaft_designs(dp, designs, shafts, peak_factor, peak_from_shaft, kinds,
         mat = cat.shaft_material(mat_key)
         a0 = A0 if mat_key.startswith("45") else 0.5 * (mat.A0_min + mat.A0_max)
         d_min = st.shaft_min_diameter(sh.power, sh.speed_rpm, a0, KEYWAY)
-        info, span = _place(dp, j, designs, kinds, (weights or {}).get(j))
+        cr = (crank or {}).get(j)
+        info, span = _place(dp, j, designs, kinds, (weights or {}).get(j), cr)
+        if cr is not None:
+            _worst_plane(span, info, T)
         loads, res = _statics(span, info, T)
         _, life_res = _statics(span, info, T * lf / boost if peak else T, scale)
         overhung = any(not i["inside"] for i in info)
@@ -649,6 +666,10 @@ def shaft_designs(dp, designs, shafts, peak_factor, peak_from_shaft, kinds,
                 bad_end, bad_in = ev["bad_end"], ev["bad_in"]
                 if bad_end and free_end:
                     new = st.standard_diameter(d_end * (1 + 1e-6) + 1e-6, series_d)
+                    if free_j and _round_up(st.standard_diameter(1.14 * new, series_d), 0.005) > JOURNAL_MAX + 1e-9:
+                        # the journal could not follow the end (its seal) within the catalogue
+                        steps.append(("top", (dj, ds), (dj, ds), _kinds(ev)))
+                        break
                     steps.append(("end", d_end, new, _kinds(ev)))
                     d_end = new
                     seal = st.standard_diameter(1.14 * d_end, series_d)
@@ -658,13 +679,16 @@ def shaft_designs(dp, designs, shafts, peak_factor, peak_from_shaft, kinds,
                     continue
                 if bad_in and (free_j or free_s):
                     old = (dj, ds)
-                    if free_j:
-                        dj = round(dj + 0.005, 6)
-                    if free_s:
-                        ds = round(max(dj + 0.005, ds + 0.005 if not free_j else dj + 0.005), 6)
+                    nj = round(dj + 0.005, 6) if free_j else dj
+                    ns = round(max(nj + 0.005, ds + 0.005 if not free_j else nj + 0.005), 6) if free_s else ds
+                    if nj > JOURNAL_MAX + 1e-9 or (not free_j and ns > JOURNAL_MAX + 0.010 + 1e-9):
+                        # the catalogue's largest bearing bore reached (a given journal: the seat
+                        # grows no further than a free one): the sections stay at the last ones
+                        # checked, and the checks that fail are reported as failing
+                        steps.append(("top", old, old, _kinds(ev)))
+                        break
+                    dj, ds = nj, ns
                     steps.append(("in", old, (dj, ds), _kinds(ev)))
-                    if dj > 0.130 + 1e-9 or (not free_j and ds > 0.140 + 1e-9):
-                        break           # a given journal: the seat grows no further than a free one
                     continue
                 break
             return ev, (d_end, dj, ds), steps
@@ -699,6 +723,14 @@ def shaft_designs(dp, designs, shafts, peak_factor, peak_from_shaft, kinds,
         # peak_from_shaft 0: the peak reaches the motor's shaft, i.e. the drive has no flywheel
         head, tail = _steps(sh, mat, a0, d_min, dims, shoulder, T, peak, peak_factor, lf, ev, span, dp,
                             coupling, motor, flywheel=peak_from_shaft != 0)
+        if cr is not None:
+            head = head + [_crank_step(cr, info, span)]
+            if cr.others:
+                names = Join(Msg.pgettext("list", ", "), list(cr.others))
+                head.append(_step(N_("{names} on this shaft are not loaded in this check: the brief gives no "
+                                     "force for them (a spring force, a feed resistance); a force of 1 % of "
+                                     "the crank's, {lim} N, would change the largest moment by about 1 %"),
+                                  names=names, lim=_text_num(round(0.01 * cr.F))))
         steps = head + _loop_text(loop_steps) + tail
         out.append(ShaftDesign(j, sh.speed_rpm, sh.power, T, d_min, dj, ds, span, tuple(loads),
                                tuple(i["name"] for i in _load_order(info)), res, ev["bearing"], ev["pl"], tuple(checks),
@@ -733,6 +765,44 @@ def _coupling(couple, d_end: float, motor) -> tuple[CouplingChoice, list]:
     return choice, checks
 
 
+def _worst_plane(span, info, T):
+    """Put the crank's force (and its life-case force) in the plane and sense — ±horizontal,
+    ±vertical — that give the largest equivalent moment M_ca over the stations."""
+    i = next(i for i in info if i["name"] == "crank")
+    F, Fl = i["fields"]["Fh"], i["life_fields"]["Fh"]
+    best = None
+    for plane in ("Fh", "Fv"):
+        for sign in (1.0, -1.0):
+            i["fields"], i["life_fields"] = {plane: sign * F}, {plane: sign * Fl}
+            m = _statics(span, info, T)[1].critical.Mca
+            if best is None or m > best[0] + 1e-9 * max(m, 1.0):
+                best = (m, plane, sign)
+    _, plane, sign = best
+    i["fields"], i["life_fields"] = {plane: sign * F}, {plane: sign * Fl}
+
+
+def _crank_step(cr, info, span) -> dict:
+    """The design step that states the crank's load: where it sits, the governing crank angle,
+    the force and how it was found."""
+    x = next(i["x"] for i in info if i["name"] == "crank")
+    side = "B" if x > span else "A"
+    return _step(N_("the crank on this shaft (design assumption: overhung {a} mm beyond bearing {side}, at "
+                     "x = {x} mm) loads it with the frame reaction on the crank; {sigma} grows with it at "
+                     "every section, so its largest magnitude over the cycle governs: {F} N at crank angle "
+                     "φ = {phi}° from position 1 ({Fx} N, {Fy} N; {Mb} N·m there), found exactly (the "
+                     "kinetostatics solved at any φ between the resistances' jumps, the samples' local maxima "
+                     "refined by Brent's bounded search, each piece's ends taken one-sided; the largest "
+                     "sample: {grid} N); taken in the plane and sense of the largest moment (the reducer's "
+                     "orientation about the shaft is not in the brief); the bearing life takes its cube mean "
+                     "over the cycle, {life} N"),
+                 a=_mmf(abs(x - (span if x > span else 0.0)), 0), side=side, x=_mmf(x, 0),
+                 sigma="$\\sigma_{ca}$", F=f"$|F_{{{cr.joint}}}|$ = {_text_num(round(cr.F))}",
+                 phi=f"{math.degrees(cr.phase):.2f}",
+                 Fx=f"$F_x$ = {_text_num(round(cr.Fx))}", Fy=f"$F_y$ = {_text_num(round(cr.Fy))}",
+                 Mb=f"$M_b$ = {_sig(cr.torque if abs(cr.torque) > 1e-9 * max(abs(cr.F), 1.0) else 0.0, 4)}", grid=_text_num(round(cr.grid_max)),
+                 life=_text_num(round(cr.life)))
+
+
 _KIND_TEXT = {"shaft_bending": N_("bending–torsion"), "bearing_life": N_("bearing life"),
               "bearing_static": N_("bearing statics"), "key_crushing": N_("key crushing"),
               "none": N_("no bearing of that bore")}
@@ -750,6 +820,12 @@ def _kinds(ev) -> tuple[str, ...]:
 def _loop_text(log) -> list[dict]:
     """The upsizing steps, runs of the same section merged: from → to, the number of 5 mm /
     standard steps and the checks that failed on the way."""
+    runs = [e[0] for n, e in enumerate(log) if n == 0 or log[n - 1][0] != e[0]]
+    if any(runs.count(kind) > 2 for kind in ("end", "in")):
+        # the end and the journal failing in turn (a heavy overhung load): one line for each,
+        # from its first size to its last, in the order they first grew (then the stop)
+        order = [kind for n, kind in enumerate(runs) if kind not in runs[:n]]
+        log = [e for kind in order for e in log if e[0] == kind]
     out, k = [], 0
     while k < len(log):
         kind = log[k][0]
@@ -757,6 +833,14 @@ def _loop_text(log) -> list[dict]:
         while j + 1 < len(log) and log[j + 1][0] == kind:
             j += 1
         first, last = log[k], log[j]
+        if kind == "top":
+            why = Join(Msg.pgettext("list", ", "), [Msg(_KIND_TEXT[x]) for x in last[3]])
+            out.append(_step(N_("the journal cannot grow beyond {d} mm, the largest bearing bore of the catalogue: "
+                                 "the shaft is not enlarged further and still fails ({why}); the design does "
+                                 "not pass as it stands (a stronger material, larger bearings, or the load "
+                                 "closer to a bearing)"), d=_mmf(JOURNAL_MAX), why=why))
+            k = j + 1
+            continue
         kinds = [x for x in _KIND_TEXT if any(x in e[3] for e in log[k:j + 1])]
         why = Join(Msg.pgettext("list", ", "), [Msg(_KIND_TEXT[x]) for x in kinds])
         n = j - k + 1

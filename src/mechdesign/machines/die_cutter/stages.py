@@ -399,7 +399,21 @@ def _drive(r: dict, flywheel_shaft: int | None = None):
     p, f = r["params"], r["press_forces"]
     peak, life = _peak_and_life(r)
     j = p.flywheel_shaft if flywheel_shaft is None else flywheel_shaft
-    return design_drive(p.drive, f.mean_power, p.shaft_rpm, "mechanism", peak, j, life)
+    return design_drive(p.drive, f.mean_power, p.shaft_rpm, "mechanism", peak, j, life,
+                        crank=_crank(r))
+
+
+def _crank(r: dict) -> dict:
+    """{the distribution shaft (the drive's last): the crank's largest load on it}."""
+    from ...stages.crank_load import crank_load
+
+    from ...i18n import N_, Msg
+
+    # the gripper cam and the incomplete gear share the distribution shaft; the brief gives
+    # no spring force nor feed resistance for them: named in the shaft's steps, not loaded
+    others = (Msg(N_("the gripper cam")), Msg(N_("the incomplete gear")))
+    return {len(r["params"].drive.stages): crank_load(r["press_model"], r["press"], r["press_forces"],
+                                                      others)}
 
 
 @dataclass(frozen=True)
@@ -532,7 +546,7 @@ def compare_placements(r: dict) -> PlacementComparison:
     other = shafts if p.flywheel_shaft < shafts else 1
     drive = r["drive"]
     peak, life = _peak_and_life(r)
-    sized = resized(drive, p.drive, peak, other, life)
+    sized = resized(drive, p.drive, peak, other, life, crank=_crank(r))
     if sized is None:                       # a worm's efficiency moved: design it all again
         again = _drive(r, other)
         sized = (again.stages, again.shaft_designs)

@@ -556,8 +556,11 @@ def _drive(r: dict):
     # the bearing life's equivalent load: the cycle's cube-mean torque (see design_drive)
     mb = r["linkage_forces"].balancing_torque[:r["linkage"].grid_size]
     life = float(np.mean(np.abs(mb) ** 3) ** (1 / 3) / c.mean_torque)
+    from ...stages.crank_load import crank_load
+
+    crank = {len(p.drive.stages): crank_load(r["model"], r["linkage"], r["linkage_forces"])}
     return design_drive(p.drive, c.mean_power, p.pusher.crank_speed_rpm, "mechanism",
-                        c.peak_factor, 0, life)
+                        c.peak_factor, 0, life, crank=crank)
 
 
 def stages(params: FurnaceParams) -> list[Stage]:
