@@ -65,10 +65,17 @@ def test_a_life_is_printed_to_four_digits_and_its_chain_gives_them(example_resul
         # an estimate, rounded off: the relation says so, below 10⁶ h and above alike
         # (review38: "≈ 199600 h" and "= 6.157×10⁶ h" in one report)
         assert m["rel"] == "\\approx", (m["rel"], m["value"])
-        # the factors need no more than 5 significant digits for 4 of the result
+        # the factors need no more than 5 significant digits for 4 of the result, unless
+        # the result sits at a rounding edge where 5 digits of that factor give another 4th
+        # digit (furnace_pusher's crank shaft: P = 1245.26 N, 1245.3 gives another life)
         for n in re.findall(r"\d+\.\d+|\d{5,}", m["chain"]):
-            assert len(n.replace(".", "").lstrip("0")) <= 5, (n, m["chain"])
+            if len(n.replace(".", "").lstrip("0")) > 5:
+                short = f"{float(n):.5g}"
+                other = evaluate(m["chain"].replace("$$", " ").replace(n, short, 1))
+                assert four(other) != four(printed), (n, m["chain"])
         # the check table's cell: the same 4 digits, grouped ("671 500")
         cell = f"{printed:,.{max(0, 3 - int(math.floor(math.log10(printed))))}f}".replace(",", "\u202f")
         if printed < 1e6:
-            assert f"| {cell} |" in md or f"| {cell.replace(chr(0x202f), ' ')} |" in md, cell
+            # four digits stand ungrouped in a table cell (3294; GB/T 8170 groups from five)
+            assert f"| {cell} |" in md or f"| {cell.replace(chr(0x202f), ' ')} |" in md or (
+                printed < 1e4 and f"| {cell.replace(chr(0x202f), '')} |" in md), cell
