@@ -14,7 +14,10 @@ from mechdesign.stages.crank_load import crank_joint, crank_load, reaction_at
 from mechdesign.stages.linkage import CycleIntegrals
 
 CASES = {"die_cutter": ("press_model", "press", "press_forces"),
-         "furnace_pusher": ("model", "linkage", "linkage_forces")}
+         "furnace_pusher": ("model", "linkage", "linkage_forces"),
+         # the guide-bar machines: the crank on the gear z2's shaft (review39b Top 1)
+         "shaper": ("model", "linkage", "linkage_forces"),
+         "slotter": ("model", "linkage", "linkage_forces")}
 
 
 @pytest.fixture(scope="module", params=sorted(CASES))
@@ -84,7 +87,7 @@ def test_the_crank_shaft_carries_the_crank(case):
     bend = next(c for c in sh.checks if c.key == "shaft_bending")
     assert bend.value >= sigma * (1 - 1e-9)
     assert bend.passed == (bend.value <= bend.allowable)
-    if name == "furnace_pusher":
+    if name != "die_cutter":
         assert bend.passed
     else:
         # the die cutter's crank (235.6 kN on 80 mm) needs d ≥ ∛(M_ca/(0.1·60 MPa)) ≈ 150 mm

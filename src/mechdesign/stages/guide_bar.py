@@ -153,8 +153,16 @@ def _drive(r: dict, flywheel_weight: bool = False):
         rim = flywheel_at(table[flywheel_shaft].speed_rpm).rim
         return {flywheel_shaft: (rim.rim_mass * p.gravity, rim.width)} if rim is not None else None
 
+    # the crank on the drive's last shaft (the gear z2's): its frame reaction loads that shaft
+    # (review39b Top 1: the shaper's F_R72 up to 3649 N was left off shaft Ⅱ)
+    crank = None
+    if mean > 0:
+        from .crank_load import crank_load
+
+        crank = {shafts: crank_load(r["model"], r["linkage"], f)}
     result = design_drive(p.drive, fl.mean_power, p.crank_speed_rpm, "mechanism",
-                          peak, flywheel_shaft if flywheel_shaft < shafts else None, life, weights)
+                          peak, flywheel_shaft if flywheel_shaft < shafts else None, life, weights,
+                          crank=crank)
     flywheel = flywheel_at(result.shafts[flywheel_shaft].speed_rpm)
     # The last stage is gear_pair, whose undercut the gear stage reports with its own fields.
     last = f"drive.stages[{shafts - 1}]"
