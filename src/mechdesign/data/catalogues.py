@@ -376,7 +376,8 @@ def motor_end_ratio() -> tuple[float, float]:
     return float(lo), float(hi)
 
 
-def _has(bores, d: float) -> bool:
+def has_bore(bores, d: float) -> bool:
+    """True when ``d`` (m) is one of a coupling size's ``bores``."""
     return any(abs(b - d) < 1e-7 for b in bores)
 
 
@@ -385,7 +386,7 @@ def coupling_for(motor_d: float, need: float, Tc: float, n_rpm: float) -> tuple[
     ``motor_d`` and a bore ≥ ``need`` (m), with T_c ≤ T_n and n ≤ [n]; the bore is the smallest
     such one. None when no size fits."""
     for c in couplings():
-        if Tc > c.Tn * (1 + 1e-12) or n_rpm > c.n_max or not _has(c.bores, motor_d):
+        if Tc > c.Tn * (1 + 1e-12) or n_rpm > c.n_max or not has_bore(c.bores, motor_d):
             continue
         fit = [b for b in c.bores if b >= need * (1 - 1e-9)]
         if fit:
@@ -395,7 +396,7 @@ def coupling_for(motor_d: float, need: float, Tc: float, n_rpm: float) -> tuple[
 
 def coupling_bores_for(motor_d: float, d: float) -> Coupling | None:
     """The smallest LT size with bores for both ``motor_d`` and ``d`` (m), whatever its torque."""
-    return next((c for c in couplings() if _has(c.bores, motor_d) and _has(c.bores, d)), None)
+    return next((c for c in couplings() if has_bore(c.bores, motor_d) and has_bore(c.bores, d)), None)
 
 
 def motor_shaft_confirmed(frame_height: float) -> bool:

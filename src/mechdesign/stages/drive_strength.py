@@ -748,7 +748,7 @@ def _coupling(couple, d_end: float, motor) -> tuple[CouplingChoice, list]:
     bores — the distance of the end from the nearest bore of a size that bores D (> 0: fails)."""
     Dm, KA_c, Tcp, Tc, n, _first, given, lo, peak = couple
     sizes = cat.couplings()
-    both = [c for c in sizes if cat._has(c.bores, Dm) and cat._has(c.bores, d_end)]
+    both = [c for c in sizes if cat.has_bore(c.bores, Dm) and cat.has_bore(c.bores, d_end)]
     c = next((c for c in both if Tc <= c.Tn * (1 + 1e-12) and n <= c.n_max), both[0] if both else None)
     choice = CouplingChoice(Dm, getattr(motor, "shaft_length", None), lo, d_end, c.size if c else None,
                             c.Tn if c else None, c.n_max if c else None, KA_c, given, Tcp, Tc, n, peak)
@@ -759,7 +759,7 @@ def _coupling(couple, d_end: float, motor) -> tuple[CouplingChoice, list]:
                                        "le", KA=KA_c, T=Tcp, n=n, n_max=c.n_max),
                               name_args={"size": c.size}))
     else:
-        near = min((abs(b - d_end) for s in sizes if cat._has(s.bores, Dm) for b in s.bores), default=d_end)
+        near = min((abs(b - d_end) for s in sizes if cat.has_bore(s.bores, Dm) for b in s.bores), default=d_end)
         checks.append(st.check("coupling_bore", N_("Coupling bores for the motor shaft and the shaft end"),
                                "\\Delta d", near, 0.0, "mm", "le", D=Dm, d=d_end))
     return choice, checks
