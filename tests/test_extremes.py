@@ -79,3 +79,28 @@ def test_refine_extreme_largest_keeps_the_grid_only_when_the_search_is_worse():
     assert v == pytest.approx(1.0, abs=1e-12) and x == pytest.approx(np.pi / 2, abs=1e-6)
     x, v = refine_extreme(lambda t: -np.cos(t), phi, -np.cos(phi), keep_grid=True)
     assert v == pytest.approx(-1.0, abs=1e-15) and abs(x) < 1e-9
+
+
+def test_polish_places_a_smooth_minimum_where_its_slope_vanishes():
+    """f = 3(t − c)² + 0.1(t − c)³ + 0.5: the minimum is at c exactly (f′(c) = 0, f″ = 6).
+    Brent stops within √ε·|t| of it; the polish puts it within 1e-12 — and a last-bit change
+    of f (1 ulp of noise added) no longer moves it by ~1e-8."""
+    from mechdesign.core.extremes import fminbound, polish_minimum
+    c = 1.2345678901234
+    f = lambda t: 3 * (t - c) ** 2 + 0.1 * (t - c) ** 3 + 0.5
+    x, _ = fminbound(f, 0.0, 2.0)
+    assert abs(polish_minimum(f, x, 0.0, 2.0, 1e-4) - c) < 1e-12
+    noisy = lambda t: f(t) * (1 + 2.2e-16 * np.sin(1e9 * t))
+    xn, _ = fminbound(noisy, 0.0, 2.0)
+    assert abs(polish_minimum(noisy, xn, 0.0, 2.0, 1e-4) - c) < 1e-11
+
+
+def test_polish_leaves_a_kink_and_a_bound_as_brent_found_them():
+    """The largest of two lines (a kink at 1.1) and a minimum on the interval's end are not
+    smooth minima: the place is returned unchanged."""
+    from mechdesign.core.extremes import fminbound, polish_minimum
+    g = lambda t: max(t - 1.1, -2 * (t - 1.1))
+    x, _ = fminbound(g, 0.0, 2.0)
+    assert polish_minimum(g, x, 0.0, 2.0, 1e-4) == x
+    assert abs(x - 1.1) < 1e-8
+    assert polish_minimum(lambda t: t * t, 1e-5, 0.0, 1.0, 1e-4) == 1e-5

@@ -521,7 +521,7 @@ def test_formulas_show_course_units_and_verdict():
     text = tex.check_formula(gear_f)
     # 2·1.4896·99480·2.55·1.61·0.68·0.9/(70·70·2.5) = 99.4·0.612 = 60.8 MPa
     assert gear_f.value / MPa == pytest.approx(60.8, abs=0.05)
-    assert r"\frac{2 \times 1.49 \times 99480 \times 2.55 \times 1.61 \times 0.68 \times 0.9}{70 \times 70 \times 2.5}" in text
+    assert r"\frac{2 \times 1.49 \times 99480 \times 2.55 \times 1.61 \times 0.68 \times 0.9}{70 \times 70.00 \times 2.5}" in text
     assert text.endswith(r"= 60.8\ \text{MPa} \le [\sigma_F] = 303.6\ \text{MPa}")
     key = tex.check_formula(_all_checks()[-1])
     assert r"\frac{2 \times 1.2\times10^{5}}{4 \times 40 \times 35}" in key and "42.9" in key

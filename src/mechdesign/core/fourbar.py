@@ -385,7 +385,8 @@ def optimal_position_theta(theta: float, swing: float, rocker: float = 1.0, *,
                            side: int = +1, grid: int = 721) -> tuple[float, float]:
     """(p*, γ_min*) maximising γ_min over the allowed arc: grid pre-scan, then a bounded
     Brent search (:func:`mechdesign.core.extremes.fminbound`) between the grid
-    neighbours of the best grid point."""
+    neighbours of the best grid point, a smooth maximum's place polished to the zero of
+    its slope (:func:`mechdesign.core.extremes.polish_minimum`)."""
     cons = circle_construction_theta(theta, swing, rocker, side=side)
     span = cons.p_hi - cons.p_lo
     ps = cons.p_lo + span * (np.arange(1, grid + 1) / (grid + 1))
@@ -397,10 +398,11 @@ def optimal_position_theta(theta: float, swing: float, rocker: float = 1.0, *,
     def neg(p):
         return -float(cons.gamma_min(p))
 
-    from .extremes import fminbound
+    from .extremes import fminbound, polish_minimum
 
     p_best, f_best = fminbound(neg, lo, hi, xatol=1e-13 * max(1.0, span))
-    g_best = -f_best
+    p_best = polish_minimum(neg, p_best, cons.p_lo, cons.p_hi, 1e-4 * span)
+    g_best = -neg(p_best)
     if gs[k] > g_best:            # never worse than the grid
         p_best, g_best = float(ps[k]), float(gs[k])
     return p_best, g_best

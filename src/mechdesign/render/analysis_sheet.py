@@ -358,9 +358,20 @@ def _cell(s: Sheet, pg: Polygon, cell, title: str, lab: dict, symbols: list | No
     pts = np.array(list(pg.points.values()))
     note = _flat_note(pts, lab)
     if note is not None:          # the note under the scale, the polygon below it
-        s.text((cx0 + cx1) / 2 + 1j * (cy1 - 2.0 - head_h - 1.0 - 2.5 - 1.5), note,
-               fit_height(note, w - 4.0, 2.5), "TEXT", "center", "top")
-        pbox = (pbox[0], pbox[1], pbox[2], pbox[3] - 4.0)
+        # on a narrow cell in two lines, broken after its colon (lockbeam en: one line ran
+        # into the next cell's note)
+        lines = [note]
+        if text_width(note, 2.5) > w - 4.0:
+            for sep in (": ", "："):
+                if sep in note:
+                    head, tail = note.split(sep, 1)
+                    lines = [head + sep.strip(), tail]
+                    break
+        for k, line_text in enumerate(lines):
+            s.text((cx0 + cx1) / 2 + 1j * (cy1 - 2.0 - head_h - 1.0 - 2.5 - 1.5 - 3.0 * k),
+                   line_text, fit_height(line_text, w - 4.0, 2.5, smallest=1.5), "TEXT",
+                   "center", "top")
+        pbox = (pbox[0], pbox[1], pbox[2], pbox[3] - 4.0 - 5.0 * (len(lines) - 1))
     extent = max(np.ptp(pts.real) / (pbox[2] - pbox[0]), np.ptp(pts.imag) / (pbox[3] - pbox[1]),
                  1e-12)
     mu = fill_scale(extent, 1.0)
@@ -878,9 +889,13 @@ def _table(s: Sheet, model, k, forces, lab: dict, box, rh: float = ROW_H) -> Non
     fs, us, uv, ua = _output_units(k)
     # a rocking output's ω is the output's own column: not listed twice (review39: the crank
     # rocker's "v" and "ω3" columns were the same numbers)
-    links = [link for link in _moving_links(model, k)
+    moving = _moving_links(model, k)
+    links = [link for link in moving
              if k.output_unit == "m" or not np.allclose(k.link_omega[link], k.v)]
     sv, vv, av = ("s", "v", "a") if k.output_unit == "m" else ("ψ", "ω", "α")
+    own = [link for link in moving if link not in links]
+    if len(own) == 1:             # the rocker's columns name their link (ψ3, ω3, α3)
+        sv, vv, av = (sub(x, str(own[0])) for x in (sv, vv, av))
     head = [lab["pos"], "φ (°)", f"{sv} ({us})", f"{vv} ({uv})", f"{av} ({ua})"] + \
         [sub("ω", str(link)) + " (rad/s)" for link in links] + ([sub("M", "b") + " (N·m)"] if forces is not None else [])
     columns = [k.v, k.a] + [k.link_omega[link] for link in links] + \

@@ -787,18 +787,20 @@ def _crank_step(cr, info, span) -> dict:
     x = next(i["x"] for i in info if i["name"] == "crank")
     side = "B" if x > span else "A"
     return _step(N_("the crank on this shaft (design assumption: overhung {a} mm beyond bearing {side}, at "
-                     "x = {x} mm) loads it with the frame reaction on the crank; {sigma} grows with it at "
+                     "$x$ = {x} mm) loads it with the frame reaction on the crank; {sigma} grows with it at "
                      "every section, so its largest magnitude over the cycle governs: {F} N at crank angle "
-                     "φ = {phi}° from position 1 ({Fx} N, {Fy} N; {Mb} N·m there), found exactly (the "
-                     "kinetostatics solved at any φ between the resistances' jumps, the samples' local maxima "
+                     "$\\varphi$ = {phi}° from position 1 ({Fx} N, {Fy} N; {Mb} N·m there), found exactly (the "
+                     "kinetostatics solved at any $\\varphi$ between the resistances' jumps, the samples' local maxima "
                      "refined by Brent's bounded search, each piece's ends taken one-sided; the largest "
                      "sample: {grid} N); taken in the plane and sense of the largest moment (the reducer's "
                      "orientation about the shaft is not in the brief); the bearing life takes its cube mean "
                      "over the cycle, {life} N"),
-                 a=_mmf(abs(x - (span if x > span else 0.0)), 0), side=side, x=_mmf(x, 0),
+                 a=_mmf(abs(x - (span if x > span else 0.0)), 0), side=f"${side}$",
+                 x=_mmf(x, 0).replace("-", "\u2212"),
                  sigma="$\\sigma_{ca}$", F=f"$|F_{{{cr.joint}}}|$ = {_text_num(round(cr.F))}",
                  phi=f"{math.degrees(cr.phase):.2f}",
-                 Fx=f"$F_x$ = {_text_num(round(cr.Fx))}", Fy=f"$F_y$ = {_text_num(round(cr.Fy))}",
+                 Fx=f"$F_x$ = {_text_num(round(cr.Fx))}".replace("-", "\u2212"),
+                 Fy=f"$F_y$ = {_text_num(round(cr.Fy))}".replace("-", "\u2212"),
                  Mb=f"$M_b$ = {_sig(cr.torque if abs(cr.torque) > 1e-9 * max(abs(cr.F), 1.0) else 0.0, 4)}", grid=_text_num(round(cr.grid_max)),
                  life=_text_num(round(cr.life)))
 

@@ -43,7 +43,7 @@ from ...pipeline import Stage
 from ...stages.drive import DriveDocument, design_drive, drive_document
 from ...i18n import N_
 from ...stages.findings import Finding, Msg, Pair, finding, zh_en
-from ...core.extremes import brentq, fminbound
+from ...core.extremes import brentq, fminbound, polish_minimum
 from ...stages.linkage import LinkageDocument, LinkageModel, Output, Resistance, linkage_document, linkage_stages
 from ...stages import titles
 
@@ -233,6 +233,9 @@ def _best_on_circle(cons: fb.CircleConstruction, limit: float | None, grid: int 
         hi, active = brentq(gw, ps[k], ps[k + 1], xtol=1e-15), True
     x_best, f_best = fminbound(lambda x: -float(cons.gamma_min(x)), lo, hi,
                                xatol=1e-14 * max(1.0, span))
+    # a smooth maximum's place to the zero of its slope, not Brent's √ε (machine-dependent)
+    x_best = polish_minimum(lambda x: -float(cons.gamma_min(x)), x_best, lo, hi, 1e-4 * span)
+    f_best = -float(cons.gamma_min(x_best))
     cands = [(x_best, -f_best), (ps[k], float(g[k]))]
     if active:
         cands += [(lo, float(cons.gamma_min(lo))), (hi, float(cons.gamma_min(hi)))]
