@@ -45,7 +45,7 @@ def run(request):
     assert results[found.polygons.model_key] is found.model
     raw = results[f"{prefix}_raw"]
     # the polygons stage stored the polygons of the brief's (or the default) positions
-    assert list(found.polygons.positions) == chosen_positions(found.motion, b)
+    assert list(found.polygons.positions) == chosen_positions(found.motion, b, found.forces)
     return request.param, (found.model, found.motion, raw, found.forces, found.flywheel), found
 
 

@@ -122,6 +122,9 @@ def test_a_known_forces_length_times_mu_gives_its_value(example_results, name):
             for (_sym, mark, length, value), v in zip(fc["rows"], sides):
                 if "times" in value or "×" in value:
                     continue
+                if length == "—":       # a known force too short to draw: a point
+                    assert mark == "√" and abs(v.length) < 0.05, (name, _sym, v.length)
+                    continue
                 product = float(length) * fg.scale
                 if mark == "√":
                     assert gives(product, value.replace("\u202f", "")), (name, _sym, length, value)

@@ -26,6 +26,7 @@ from tests.test_report_prose import EXAMPLES, _markdown
 WINDOW = 10
 _NUM = re.compile(r"(?<![\d.^_{}\\])(\d+(?:\.\d+)?)(?!\d)")
 _MATH = re.compile(r"\$\$.+?\$\$|\$[^$\n]+?\$")
+_POWER = re.compile(r"\s*(?:\\times|×)\s*10")
 
 
 def _significant(text: str) -> int:
@@ -43,14 +44,16 @@ def two_ways(md: str, window: int = WINDOW) -> list[tuple[str, str]]:
     for i, line in enumerate(md.split("\n")):
         spans = [m.span() for m in _MATH.finditer(line)]
         for m in _NUM.finditer(line):
-            tokens.append((i, m.group(1), any(a <= m.start() < b for a, b in spans)))
+            # a mantissa of a power of ten (2.288\times10^{8}) is compared with mantissas only
+            mantissa = bool(_POWER.match(line, m.end()))
+            tokens.append((i, m.group(1), any(a <= m.start() < b for a, b in spans), mantissa))
     out = set()
-    for i, a, _in_math in tokens:
+    for i, a, _in_math, a_mant in tokens:
         if _significant(a) < 3:
             continue
         q = Decimal(1).scaleb(-_decimals(a))
-        for j, b, b_in_math in tokens:
-            if abs(i - j) > window or not b_in_math or _decimals(b) <= _decimals(a):
+        for j, b, b_in_math, b_mant in tokens:
+            if abs(i - j) > window or not b_in_math or _decimals(b) <= _decimals(a) or a_mant != b_mant:
                 continue
             if Decimal(a) == Decimal(b):
                 continue

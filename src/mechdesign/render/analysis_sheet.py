@@ -362,7 +362,7 @@ def _cell(s: Sheet, pg: Polygon, cell, title: str, lab: dict, symbols: list | No
         # into the next cell's note)
         lines = [note]
         if text_width(note, 2.5) > w - 4.0:
-            for sep in (": ", "："):
+            for sep in (": ", chr(0xFF1A)):      # an ASCII or a full-width colon
                 if sep in note:
                     head, tail = note.split(sep, 1)
                     lines = [head + sep.strip(), tail]

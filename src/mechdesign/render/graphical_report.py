@@ -747,6 +747,30 @@ def _couple_for(c: float, chain) -> str:
     return text
 
 
+def _sum_for(num: str, psum: float, couples: float, mu_l: float, arm: float,
+             res: str) -> tuple[str, float]:
+    """The printed sum of a moment equation with a couple: ``num`` or, where the couple would
+    need more than two extra digits to give the printed result ``res``, the printed products'
+    sum ``psum`` with up to three more decimals (the first that lets a couple of at most two
+    extra digits give it); the text and its value."""
+    def fits(value: float) -> bool:
+        for extra in range(3):
+            text = _couple(couples, extra)
+            c = float(text.replace(" ", "").replace("+", "")) if "times" not in text else couples
+            if _gives(-(value + c / mu_l) / arm, res):
+                return True
+        return False
+
+    if fits(float(num)):
+        return num, float(num)
+    places = len(num.partition(".")[2])
+    for k in range(places + 1, places + 4):
+        text = f(psum, k)
+        if fits(float(text)):
+            return text, float(text)
+    return num, float(num)
+
+
 def _signed_pb(fg) -> float:
     """P_b = M_b/l at the crank pin with M_b's sign (counter-clockwise positive): the
     value of the P_b equation (the moment whose unknown is P_b)."""
@@ -884,12 +908,19 @@ def _forces(pos, lang: str, weights: dict[str, int] | None = None) -> list[dict]
             moments, couple = _group_moments(fg, mu_l, lang, floor, again, results)
             if again == shown:
                 fc["moments"], fc["couple"] = moments, couple
-    # a known force's length, drawn at |F|/μF: with the digits that give its value
+    # a known force's length, drawn at |F|/μF: with the digits that give its value; one
+    # shorter than the drawing's accuracy (0.05 mm) is a point of the polygon, no length
+    # (review39: "0.0225 mm" for a 0.45 N inertia force; the die-cutter's 15.5 N at
+    # μF = 20 000 N/mm would need "0.000775")
     for fc, fg in zip(out, pos.forces):
         for row, v in zip(fc["rows"], _sides(fg)):
             if v.known:
-                row[2] = _len(v.length, fg.scale, row[3])
+                row[2] = "—" if abs(v.length) < TOO_SHORT else _len(v.length, fg.scale, row[3])
     return out
+
+
+#: A known force drawn shorter than this [mm] is a point of its polygon: no length listed.
+TOO_SHORT = 0.05
 
 
 def _sides(fg) -> list:
@@ -922,22 +953,32 @@ def _group_moments(fg, mu_l, lang: str, least: dict, shown: dict,
     mb_text = {}
     for m in fg.moments:
         if m.unknown == "Pb":
-            arm = exact(m.arm * mu_l, decimals=5)
-            mb_text["Pb"] = factor_for(fg.balancing_torque, lambda v, a=float(arm), r=_num(m.result): _gives(v / a, r),
-                                       0, write=_factor, most=6)
-            own = [k for k in fg.moments if k.unknown == "Mb" and not k.arm]
-            if own:
-                _l, _t, cpls, psum0 = _moment_tex(own[0], lambda s_: True, least, None)
-                # M_b as its own equation's printed forces give it, with the decimals that
-                # give the printed P_b (−44.35, where M_b = −44.36: the forces are printed)
-                by_forces = -(psum0 * mu_l + cpls)
-                for value in (fg.balancing_torque, by_forces):
-                    t = next((t for t in (_factor(value, extra) for extra in range(7)) if "times" not in t
-                              and _gives(float(t) / float(arm), _num(m.result)) and _gives(by_forces, t)), None)
-                    if t is not None:
-                        mb_text["Pb"] = t
-                        results = {**(results or {}), "Mb": t}
-                        break
+            # the crank's length with the decimals the chain needs: 5, more for a P_b of six
+            # digits (−7600/0.0570412 = −133 237, where 0.05704 gives −133 240; review40)
+            for places in range(5, 9):
+                arm = exact(m.arm * mu_l, decimals=places)
+                mb_text["Pb_arm"] = arm
+                mb_text["Pb"] = factor_for(fg.balancing_torque,
+                                           lambda v, a=float(arm), r=_num(m.result): _gives(v / a, r),
+                                           0, write=_factor, most=6)
+                done = "times" in mb_text["Pb"] or _gives(float(mb_text["Pb"]) / float(arm),
+                                                          _num(m.result))
+                own = [k for k in fg.moments if k.unknown == "Mb" and not k.arm]
+                if own:
+                    _l, _t, cpls, psum0 = _moment_tex(own[0], lambda s_: True, least, None)
+                    # M_b as its own equation's printed forces give it, with the decimals that
+                    # give the printed P_b (−44.35, where M_b = −44.36: the forces are printed)
+                    by_forces = -(psum0 * mu_l + cpls)
+                    for value in (fg.balancing_torque, by_forces):
+                        t = next((t for t in (_factor(value, extra) for extra in range(7)) if "times" not in t
+                                  and _gives(float(t) / float(arm), _num(m.result)) and _gives(by_forces, t)), None)
+                        if t is not None:
+                            mb_text["Pb"] = t
+                            results = {**(results or {}), "Mb": t}
+                            done = True
+                            break
+                if done:
+                    break
     for m in fg.moments:
         u = sym(m.unknown)
         if m.unknown == "Pb":
@@ -945,7 +986,7 @@ def _group_moments(fg, mu_l, lang: str, least: dict, shown: dict,
             # length is known (m.arm x mu_l in m), not measured
             # M_b with the decimals that give the printed P_b (−227.3/0.0925 = −2457):
             # _factor's digits are decimals more than _num's
-            arm = exact(m.arm * mu_l, decimals=5)
+            arm = mb_text.get("Pb_arm") or exact(m.arm * mu_l, decimals=5)
             mb = mb_text["Pb"]
             moments.append((f"P_b = \\frac{{M_b}}{{l_{{{m.point}}}}} = \\frac{{{mb}}}"
                             f"{{{arm}}} = {_num(m.result)}" r"\ \mathrm{N}", None, None))
@@ -980,6 +1021,11 @@ def _group_moments(fg, mu_l, lang: str, least: dict, shown: dict,
                 # mantissa with the digits that give the printed unknown (1.059 × 10⁶ gave
                 # −12 105.7 for the printed −12 107: 1.059138 × 10⁶)
                 num, value = _mantissa_for(psum, lambda v: _gives(-(v + couples / mu_l) / m.arm, res))
+            if couples and "times" not in num:
+                # the sum with more decimals (its printed products' sum) before the couple
+                # with many: −269.7, not "−270" and a couple of 0.36666667 (review40: the
+                # die-cutter's position 6, group 3–4)
+                num, value = _sum_for(num, psum, couples, mu_l, m.arm, res)
             cpl = (f"{_couple_for(couples, lambda c: _gives(-(value + c / mu_l) / m.arm, res))}"
                    f" / {_scale(mu_l)}") if couples else ""
             if couples and couple is None:

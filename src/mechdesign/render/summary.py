@@ -124,7 +124,10 @@ def document_checks(document: dict) -> list[dict]:
     def walk(node: Any, path: tuple, parents: tuple) -> None:
         if isinstance(node, dict):
             flag = node.get("passed", node.get("ok"))
-            if isinstance(flag, bool):
+            # a cam's dwell records ok with no limit: nothing is checked there (review39:
+            # "cam pressure angle 4" counted the shaper's two dwells beside rise and return)
+            unchecked = "segments" in path and "limit" in node and node["limit"] is None
+            if isinstance(flag, bool) and not unchecked:
                 out.append({"path": ".".join(str(p) for p in path), "ok": flag,
                             "_id": repr(sorted((k, repr(v)) for k, v in node.items())),
                             **_describe(node, path, parents, names, actuator)})

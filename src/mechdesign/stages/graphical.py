@@ -42,8 +42,8 @@ class Comparison:
 
     quantity: str = q("", "v_C, ω3, a_C, α3, R12, Mb, …")
     unit: str = q("", "its unit")
-    graphical: float = q("SI of `unit`", "read from the drawing (magnitude; M_b signed)")
-    analytic: float = q("SI of `unit`", "the engine's value (magnitude; M_b signed)")
+    graphical: float = q("SI of `unit`", "read from the drawing (magnitude; a link's ω, α and M_b signed, CCW positive)")
+    analytic: float = q("SI of `unit`", "the engine's value (magnitude; a link's ω, α and M_b signed, CCW positive)")
     difference: float = q("1", "(graphical − analytic) / |analytic| (0 when both vanish)")
     tolerance: float = q("SI of `unit`", "drawing accuracy allowed: 2 % of the analytic value "
                          "plus 1 mm at μv for velocities, 2 mm at μa or μF for accelerations, "
@@ -175,11 +175,13 @@ def _compare(model, k, raw, forces, i, vel, acc, groups, mu_l) -> tuple[Comparis
             if any(r.quantity == f"ω{link}" for r in out):
                 continue
             L = lengths.get(link, 1.0)
-            out.append(_row(f"ω{link}", "rad/s", abs(vel.omega.get(link, 0.0)),
-                            abs(raw.links[link].omega[i]), 0.02 * abs(raw.links[link].omega[i])
+            # a link's ω and α signed (counter-clockwise positive), as the text lists them
+            # (review39: the text's α2 = −9.81 rad/s² was 9.81 in the table)
+            out.append(_row(f"ω{link}", "rad/s", vel.omega.get(link, 0.0),
+                            raw.links[link].omega[i], 0.02 * abs(raw.links[link].omega[i])
                             + vel.scale / L))
-            out.append(_row(f"α{link}", "rad/s²", abs(acc.alpha.get(link, 0.0)),
-                            abs(raw.links[link].alpha[i]), 0.02 * abs(raw.links[link].alpha[i])
+            out.append(_row(f"α{link}", "rad/s²", acc.alpha.get(link, 0.0),
+                            raw.links[link].alpha[i], 0.02 * abs(raw.links[link].alpha[i])
                             + 2 * acc.scale / L))
     for p, m in raw.points.items():
         if p in frame:
@@ -235,7 +237,8 @@ def graphical_stage(model_key: str = "model", prefix: str = "linkage") -> Stage:
 
     def run(r: dict) -> GraphicalDocument:
         k = r[prefix]
-        return graphical(r[model_key], k, r[f"{prefix}_raw"], r.get(f"{prefix}_forces"),
-                         chosen_positions(k, r.get("brief")))
+        forces = r.get(f"{prefix}_forces")
+        return graphical(r[model_key], k, r[f"{prefix}_raw"], forces,
+                         chosen_positions(k, r.get("brief"), forces))
 
     return Stage(f"{prefix}_graphical", titles.pgettext("stage", "graphical method"), run)

@@ -638,8 +638,10 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
     cycle = cycle_context(cyc.diagram, lang, {"linear": figures["cycle_linear"],
                                              "circular": figures["cycle_circular"]},
                           cyc.checks, level=2, label="dc-cycle")
-    pw = (rf"P_w = \bar M_b\,\omega = {product((f_.mean_torque, abs(p.crank_omega)), f(f_.mean_power, 1))} = "
-          rf"{f(f_.mean_power, 1)}\ \text{{W}}")
+    # the power as the flywheel chapter writes it (636.6 × 5.236 = 3333 W: one value one way)
+    pw_text = sig(f_.mean_power, 4, group=False)
+    pw = (rf"P_w = \bar M_b\,\omega = {product((f_.mean_torque, abs(p.crank_omega)), pw_text)} = "
+          rf"{pw_text}\ \text{{W}}")
     drive = drive_context(r["drive"], lang, figures, pw)
     verify = _verify_rows(r, p, _)
     for row in cycle["verify"] + ig["verify"]:
