@@ -24,6 +24,8 @@ PRESSES = [("die_cutter", "press"), ("press", "linkage")]
 @pytest.mark.parametrize("name,prefix", PRESSES)
 def test_the_first_polygon_position_is_the_most_loaded_under_the_working_load(example_results,
                                                                                name, prefix):
+    from mechdesign.stages.polygons import default_positions
+
     r = example_results(name)
     k, forces = r[prefix], r[f"{prefix}_forces"]
     n = k.grid_size
@@ -34,6 +36,9 @@ def test_the_first_polygon_position_is_the_most_loaded_under_the_working_load(ex
               if not sp and ph <= k.working_span and total[n + labels.index(lab)] > 0]
     assert loaded, name
     best = max(loaded, key=lambda lab: abs(forces.balancing_torque[n + labels.index(lab)]))
+    assert default_positions(k, forces)[0] == best, (name, best)
+    if name == "press":       # designs/press.yaml names positions 4 and 10 (session 40)
+        return
     drawn = r[f"{prefix}_graphical"].positions
     assert drawn[0].label == best, (name, [p.label for p in drawn], best)
     # its comparison includes the working load's reactions, all within the drawing's accuracy
