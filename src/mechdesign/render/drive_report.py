@@ -10,7 +10,7 @@ import numpy as np
 from ..stages.drive import shaft_numeral
 from ..i18n import N_, data_text, tr
 from ..stages.findings import Named, decode
-from .fmt import f, factor_for, grouped, md_text, percent, rpm, sentences, sig
+from .fmt import f, factor_for, grouped, md_text, percent, rpm, sci_tex, sentences, sig
 
 MM = 1e3
 
@@ -402,7 +402,7 @@ def stage_designs(d, lang: str, gear_pair_last: bool = False) -> list[dict]:
             text.append(_("Stress cycles $N_1 = {N1}$, life factors $K_{{HN}} = "
                           "{KHN1}/{KHN2}$, $K_{{FN}} = {KFN1}/{KFN2}$; allowable $[\\sigma_H] = "
                           "{sigma_H}$ MPa, $[\\sigma_F] = {sigma_F1}/{sigma_F2}$ MPa ($S_H = 1$, $S_F = "
-                          "1.4$).", N1=_sci_tex(a['N1']), KHN1=f(a['KHN1'], 3),
+                          "1.4$).", N1=sci_tex(a['N1']), KHN1=f(a['KHN1'], 3),
                           KHN2=f(a['KHN2'], 3), KFN1=f(a['KFN1'], 3), KFN2=f(a['KFN2'], 3),
                           sigma_H=f(a['sigma_H'] / 1e6, 1), sigma_F1=f(a['sigma_F1'] / 1e6, 1),
                           sigma_F2=f(a['sigma_F2'] / 1e6, 1)))
@@ -428,7 +428,7 @@ def stage_designs(d, lang: str, gear_pair_last: bool = False) -> list[dict]:
                           "= {N}$).", materials=_mat_name(g.materials[1], _),
                           K=f(g.K, 3), T2=sig(g.T2, group=False), m_text=m_text, q=f(geo.q, 0),
                           sigma_H=f(a['sigma_H'] / 1e6, 1), sigma_F=f(a['sigma_F'] / 1e6, 1),
-                          N=_sci_tex(a['N'])))
+                          N=sci_tex(a['N'])))
             # the efficiency relation displayed: inline, its unbreakable run spread the line
             # before it to 15 pt word spaces (tests/test_typeset.py wide_word_gaps)
             text.append(_("Sliding speed $v_s = {vs}$ m/s, equivalent friction angle $\\varphi_v = "
@@ -476,7 +476,7 @@ def stage_designs(d, lang: str, gear_pair_last: bool = False) -> list[dict]:
                       "(strength case):", x=f(res.critical.x * MM, 0), M=sig(res.critical.M),
                       origin=origin))
         text.append("$$ " + r",\quad ".join(
-            rf"R_{{{k}}} = {f(v, 1 if abs(v) < 1000 else 0)}\ \mathrm{{N}}"
+            rf"R_{{{k}}} = {_newtons(v)}\ \mathrm{{N}}"
             for k, v in (("AH", res.RAh), ("AV", res.RAv), ("BH", res.RBh), ("BV", res.RBv))) + " $$")
         if sh.bearing is not None:
             b = sh.bearing
@@ -485,8 +485,8 @@ def stage_designs(d, lang: str, gear_pair_last: bool = False) -> list[dict]:
                           "{bearing_loads2}$ N ($f_p$ = 1.2, the loads {life_torque_factor} × those of "
                           "the strength case); the static strength the peak.",
                           designation=b.designation, d=f(b.d * MM, 0), Cr=f(b.Cr / 1e3, 1),
-                          bearing_loads=f(sh.bearing_loads[0], 1 if sh.bearing_loads[0] < 1000 else 0),
-                          bearing_loads2=f(sh.bearing_loads[1], 1 if sh.bearing_loads[1] < 1000 else 0),
+                          bearing_loads=_newtons(sh.bearing_loads[0]),
+                          bearing_loads2=_newtons(sh.bearing_loads[1]),
                           life_torque_factor=f(sh.life_torque_factor, 3)))
             if "crank" in sh.elements:
                 # review39: the factor scales the gear's loads, not the crank's force
@@ -671,9 +671,6 @@ def _chain_design(g, title: str, _) -> dict:
 # --------------------------------------------------------------------------- machine: drive
 
 
-def _sci_tex(x: float, n: int = 4) -> str:
-    """A count of stress cycles in a formula: ``n`` significant digits times a power of ten
-    (2.043\\times10^{9}, not 2042.5\\times10^6)."""
-    mant, _, exp = f"{x:.{n - 1}e}".partition("e")
-    return f"{mant}\\times10^{{{int(exp)}}}"
-
+def _newtons(x: float) -> str:
+    """A shaft's reaction or bearing load in a formula: to 0.1 N below 1000 N, else to 1 N."""
+    return f(x, 1 if abs(x) < 1000 else 0)

@@ -151,6 +151,13 @@ def residue(x: float, scale: float = 1.0) -> str:
     return e(x)
 
 
+def sci_tex(x: float, n: int = 4) -> str:
+    """``x`` in a formula with ``n`` significant digits times a power of ten
+    (``2.043\\times10^{9}``; a stress-cycle count, a moment of a million N·mm)."""
+    mant, _, exp = f"{x:.{n - 1}e}".partition("e")
+    return f"{mant}\\times10^{{{int(exp)}}}"
+
+
 def sci(x: float, n: int = 4) -> str:
     """A magnitude of a million or more (a bearing life of 40 680 894 h) with ``n``
     significant digits times a power of ten, ``4.068 × 10⁷``, never seven digits or more;

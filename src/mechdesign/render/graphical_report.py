@@ -18,7 +18,7 @@ import numpy as np
 
 from . import figures as fig
 from ..i18n import N_, tr
-from .fmt import GROUP, exact, f, factor_for, gives, grouped, mpl_text, sci, sig, tex_name
+from .fmt import GROUP, exact, f, factor_for, gives, grouped, mpl_text, sci, sci_tex, sig, tex_name
 from .label_layout import Label, place
 from .labels import LabelTable, mpl_point, pgettext, point_tex, tex_names
 
@@ -152,8 +152,7 @@ def _num(x: float) -> str:
     if x == 0:
         return "0"
     if abs(x) >= 1e6:
-        mant, _e, power = f"{x:.3e}".partition("e")
-        return f"{mant}\\times10^{{{int(power)}}}"
+        return sci_tex(x, 4)
     d = max(0, 2 - int(math.floor(math.log10(abs(x)))))
     return f(x, min(d, 4))
 
