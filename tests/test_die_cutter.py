@@ -505,12 +505,14 @@ def test_balancing_force_signed_as_in_its_equation(shipped):
         for ctx, fg in zip(_forces(pos, "en"), pos.forces):
             if fg.balancing_torque is None:
                 continue
-            pb = float(ctx["pb"].replace(" ", "").replace("−", "-"))
+            # the text groups five or more digits (−133 237 N), the equation does not
+            plain = ctx["pb"].replace(" ", "").replace("\u202f", "")
+            pb = float(plain.replace("−", "-"))
             # the P_b equation: one chain "P_b = M_b/l = … = value N" (no "⇒" result part)
             eq = [m[0] for m in ctx["moments"] if m[0] and m[0].startswith("P_b =")]
             assert eq and np.sign(pb) == np.sign(fg.balancing_torque)
             assert eq[0].replace(" ", "").replace("\\", "").endswith(
-                f"={ctx['pb'].replace(' ', '')}mathrm{{N}}"), eq[0]
+                f"={plain}mathrm{{N}}"), eq[0]
             assert abs(pb) == pytest.approx(abs(fg.balancing_force), rel=5e-3)
             seen += 1
     assert seen >= 2

@@ -71,6 +71,31 @@ def test_the_clash_measure_sees_overlapping_labels():
     assert not any("free" in s for s in clashes)
 
 
+def test_a_label_with_no_room_inside_widens_the_limits_to_take_it_in():
+    """The die-cutter's force polygon under its 1000 kN (session 41): five forces drawn as
+    points at the top vertex of a narrow polygon share one long label, which found no place
+    inside the panel and stood over its edge. A label placed with no room inside widens the
+    axes' limits until it is inside (checked on the drawn boxes, as the figure test does)."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    fig, ax = plt.subplots(figsize=(2.6, 3.0))
+    ax.set_xlim(-2, 2)
+    ax.set_ylim(-50, 1)
+    ax.plot([0, 0], [0, -50], lw=1)
+    # a long label at the top vertex, every way out across the vertical line or the frame
+    lab = LL.Label("$F_{R35}^{t}, G_{5}, F_{I5}, G_{6}, F_{I6}$", 0j, (1j,), {"fontsize": 8.5})
+    LL.place(ax, [lab], [(0j, -50j)])
+    renderer = LL._renderer(fig)
+    box = LL._box(lab.artist, renderer, 0.0)
+    frame = ax.get_window_extent(renderer)
+    plt.close(fig)
+    assert frame.x0 <= box[0] and box[2] <= frame.x1 and frame.y0 <= box[1] and box[3] <= frame.y1
+    assert ax.get_xlim()[1] - ax.get_xlim()[0] > 4.0       # the limits were widened
+
+
 def test_shaper_force_figure_labels_do_not_overlap(example_results, monkeypatch, tmp_path):
     from mechdesign.render import graphical_report as G
 
@@ -114,7 +139,8 @@ def test_die_cutter_skeleton_names_are_off_the_links(example_results, monkeypatc
 # spot, "b′₅/b′" overprinted), slotter Fig. 9 (a force polygon on one line, its labels stacked)
 
 _KIN = [("shaper", "linkage_graph_4_kin.png"), ("shaper", "linkage_graph_10_kin.png"),
-        ("slotter", "linkage_graph_5_kin.png"), ("press", "linkage_graph_4_kin.png")]
+        ("slotter", "linkage_graph_5_kin.png"), ("press", "linkage_graph_5_kin.png"),
+        ("die_cutter", "press_graph_6_kin.png")]
 
 
 def _segments_of(ax) -> list:

@@ -173,7 +173,7 @@ def test_exact_drawing_reproduces_the_engine(name, model_key, prefix, example_re
     k = r[prefix]
     monkeypatch.setattr(gr, "STEP_MM", 1e-12)
     doc = graphical(r[model_key], k, r[f"{prefix}_raw"], r.get(f"{prefix}_forces"),
-                    chosen_positions(k, r.get("brief")))
+                    chosen_positions(k, r.get("brief"), r.get(f"{prefix}_forces")))
     for pos in doc.positions:
         for c in pos.comparison:
             assert c.graphical == pytest.approx(c.analytic, rel=1e-7, abs=1e-7), (pos.label, c)

@@ -75,8 +75,9 @@ def _bare_quantities(line: str, lang: str) -> list[str]:
     out = []
     for m in _QUANTITY.finditer(line):
         tok, before, after = m.group(1), line[:m.start()], line[m.end():]
-        if tok in _UNIT_LETTERS and re.search(r"([\d§%]\s?|/ ?)$", before):
-            continue                                           # a unit: 50 N, $T$ N·m, /W
+        if tok in _UNIT_LETTERS and re.search(r"([\d⁰¹²³⁴-⁹§%]\s?|/ ?)$",
+                                              before):
+            continue                                           # a unit: 50 N, $T$ N·m, /W, 10⁶ N
         if lang == "en" and tok in ("a", "A", "I") and re.match(r"\s+[A-Za-z\d\"“]", after):
             continue                                           # an article, a pronoun
         if re.search(r"\\?\($", before) and after.startswith(")"):
@@ -130,6 +131,7 @@ def bare_quantities(md: str, lang: str) -> list[tuple[str, str]]:
     ("a V-belt, a Y-series motor, key form A, 带型 A，A 型平键，V 带，Y 系列", "en", []),
     ("belt section A (the selection chart, fig. 8-11, gives Z; Z 型), a 4-pole Y motor; 1 − value/allowable, / W", "en", []),
     ("A1 + B2 + C1 on the A1 sheet (GB/T 1096) ## \\(b): 12 738 N·m, 1.2 s, 48 000 h", "en", []),
+    ("the cutting force $F_r$ (link 6) = 1.000 × 10⁶ N and the stroke H", "en", ["H"]),
     ("force $P$ N and a torque of $T$ N·m; d'Alembert's principle, i.e. the load", "en", []),
     ("见图 6 量得 ω3 = 1.2 rad/s，表 3 中 mm 与 kW", "zh", []),
     ("# 参考文献\n\n吴宗泽 V 带 K", "zh", []),

@@ -1,6 +1,9 @@
 """Findings of review39 mended in session 40, each checked on the computed results or on the
 example reports' Markdown (tests/conftest.py's ``handin_reports``).
 
+- The force analysis meets the working load: where the resistance acts on a small part of
+  the working stroke (a press's last millimetres), the first polygon position is the regular
+  position under it that loads the crank most — found here by brute force over the positions.
 - A link's ω and α are compared with their signs, as the text lists them (α2 = −9.81 rad/s²
   was 9.81 in the comparison table).
 - A cam's dwell is no check: the summary's cam row counts the rise and the return only.
@@ -15,6 +18,34 @@ import numpy as np
 import pytest
 
 LANGS = ("zh", "en")
+PRESSES = [("die_cutter", "press"), ("press", "linkage")]
+
+
+@pytest.mark.parametrize("name,prefix", PRESSES)
+def test_the_first_polygon_position_is_the_most_loaded_under_the_working_load(example_results,
+                                                                               name, prefix):
+    from mechdesign.stages.polygons import default_positions
+
+    r = example_results(name)
+    k, forces = r[prefix], r[f"{prefix}_forces"]
+    n = k.grid_size
+    labels = [str(x) for x in k.positions.labels]
+    total = sum(np.abs(np.asarray(v)) for v in forces.resistance.values())
+    # positions (regular, in the working stroke) where the working resistance acts
+    loaded = [lab for lab, ph, sp in zip(labels, k.positions.phase, k.positions.special)
+              if not sp and ph <= k.working_span and total[n + labels.index(lab)] > 0]
+    assert loaded, name
+    best = max(loaded, key=lambda lab: abs(forces.balancing_torque[n + labels.index(lab)]))
+    assert default_positions(k, forces)[0] == best, (name, best)
+    drawn = r[f"{prefix}_graphical"].positions
+    assert drawn[0].label == best, (name, [p.label for p in drawn], best)
+    # its comparison includes the working load's reactions, all within the drawing's accuracy
+    first = drawn[0]
+    assert all(abs(c.graphical - c.analytic) <= c.tolerance for c in first.comparison), \
+        [(c.quantity, c.graphical, c.analytic) for c in first.comparison
+         if abs(c.graphical - c.analytic) > c.tolerance]
+    biggest = max(abs(c.analytic) for c in first.comparison if c.unit == "N")
+    assert biggest >= 0.5 * float(np.max(total)), (name, biggest, float(np.max(total)))
 
 
 @pytest.mark.parametrize("name", ["crank_rocker", "shaper", "die_cutter", "furnace_pusher"])

@@ -265,6 +265,9 @@ class SheetSettings(StrictModel):
                      "sheet draws: a regular position (1, 2, …), or a position label of the report "
                      "as text ('4′' or \"4'\", 'φ45' for analysis.positions_deg: [45]) or an event "
                      "of analysis.events ('work_start'); default: the regular positions nearest "
-                     "the middle of the working and of the return stroke"))
+                     "the middle of the working and of the return stroke; where the working "
+                     "resistance acts on less than 60 % of the working stroke (a press's last "
+                     "millimetres), the regular position under it with the largest balancing "
+                     "torque in place of the first"))
     drawing_number: str = Field("MD", max_length=40,
                                 description="Prefix of the drawing numbers (图号), e.g. MD → MD-01")

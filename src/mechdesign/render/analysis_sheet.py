@@ -418,7 +418,12 @@ def _draw_polygon(s: Sheet, pg: Polygon, mu: float, box, keep_out=()) -> None:
     bx0, by0, bx1, by1 = box
     centre = (pts.real.min() + pts.real.max()) / 2 + 1j * (pts.imag.min() + pts.imag.max()) / 2
     v = s.view((bx0 + bx1) / 2 + 1j * (by0 + by1) / 2 - centre, 1.0 / mu)
-    placer = LabelPlacer(s)
+    # every label inside the cell (the box and the keep-out strips round it): a leader from
+    # a short vector at the polygon's top edge went up into the cell above, onto its vector
+    # list (the press at position 5: F_R65 over "F_R63 = 2079 N")
+    cell = [box, *keep_out]
+    placer = LabelPlacer(s, area=(min(b[0] for b in cell), min(b[1] for b in cell),
+                                  max(b[2] for b in cell), max(b[3] for b in cell)))
     for b in keep_out:
         placer.block_box(b)
     for vec in pg.vectors:
@@ -440,7 +445,7 @@ def _draw_polygon(s: Sheet, pg: Polygon, mu: float, box, keep_out=()) -> None:
             if placer.place(v.p(mid), text, 2.5, prefer=1j * vec.value, gap=1.2, crowded=False,
                             apart=True, reach=POLYGON_REACH) is None:
                 placer.leader(v.p(mid), text, 2.5, prefer=1j * vec.value, lengths=(4.0, 6.0, 9.0, 13.0, 18.0),
-                              avoid_lines=True)
+                              avoid_lines=True, both_sides=True)
         placer.place(v.p(0j), "o", 2.5, prefer=-1 - 1j, gap=1.2, apart=True, last_leader=True,
                      reach=POLYGON_REACH)
         return

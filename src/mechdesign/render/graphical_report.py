@@ -344,7 +344,7 @@ def _kin_axes(ax, poly, title: str, mu_unit: str, lang: str):
         text = ", ".join(row) if len(row) < 3 else (", ".join(row[:2]) + ",\n" + ", ".join(row[2:]))
         labels.append(Label(text, spot, prefer,
                             {"fontsize": 7}))
-    ax.set_title(f"{title}  μ = {_scale(poly.scale)} {mu_unit}", fontsize=8)
+    ax.set_title(f"{title}  μ = {grouped(_scale(poly.scale))} {mu_unit}", fontsize=8)
     ax.tick_params(labelsize=6)
     ax.set_xlabel("mm", fontsize=6)
     ax.grid(True, lw=0.3, alpha=0.4)
@@ -481,7 +481,7 @@ def _force_figure(path: Path, points: dict, length_scale: float, fg, members: di
             a2.plot([z.real], [z.imag], "k.", ms=2)
         _extent(a2, zs2, minor=FORCE_MINOR, pad=FORCE_PAD)
         flat = _flatness(zs2)
-        a2.set_title(f"{t['force']}  $\\mu_F$ = {_scale(fg.scale)} N/mm", fontsize=8)
+        a2.set_title(f"{t['force']}  $\\mu_F$ = {grouped(_scale(fg.scale))} N/mm", fontsize=8)
         a2.tick_params(labelsize=6)
         a2.set_xlabel("mm", fontsize=6)
         # a polygon whose forces are almost collinear closes on a line: say so (issue 19),
@@ -870,7 +870,7 @@ def _forces(pos, lang: str, weights: dict[str, int] | None = None) -> list[dict]
                        for link, lds in fg.loads.items() for ld in lds if abs(ld.value) > 0]
         out.append({"known": known_texts,
                     "name": "–".join(fg.links), "links": ", ".join(fg.links), "crank": fg.balancing_torque
-                    is not None, "mu": _scale(fg.scale), "moments": moments, "rows": rows,
+                    is not None, "mu": grouped(_scale(fg.scale)), "moments": moments, "rows": rows,
                     "loads": loads, "sum": closing, "slider": slider, "slider_link": slider_link,
                     "n": n, "couple": couple,
                     "mb": None if fg.balancing_torque is None else _numg(fg.balancing_torque),

@@ -96,14 +96,49 @@ def _head_segments(ax, heads, size_px: float) -> list:
     return out
 
 
+#: Times the axes' limits are widened when a label found no place inside them.
+GROW_ROUNDS = 3
+#: Extra margin [fraction of the limits' span] added when the limits are widened.
+GROW_MARGIN = 0.04
+
+
 def place(ax, labels: list[Label], obstacles=(), fixed=(), heads=(), head_size=9.0) -> list:
     """Draw ``labels`` in ``ax`` clear of each other and of the ``obstacles`` (segments as
     pairs of complex data points; a point is a segment of zero length), of the arrow
     ``heads`` (tail, tip pairs of complex data points; heads of ``head_size`` pt) and of the
     ``fixed`` text artists already drawn. Call it after
     everything else is drawn and the axes limits are set; it lays the figure out
-    (tight_layout) first so that the data-to-screen scale is the final one. Returns the
-    text artists."""
+    (tight_layout) first so that the data-to-screen scale is the final one. Where a label
+    could only be placed over the axes' edge (a long list of names of forces drawn as
+    points at one vertex of a narrow force polygon, the die-cutter under its 1000 kN), the
+    limits are widened to take it in and the labels placed again (at most
+    :data:`GROW_ROUNDS` times). Returns the text artists."""
+    artists = _place_once(ax, labels, obstacles, fixed, heads, head_size)
+    fig = ax.figure
+    for _ in range(GROW_ROUNDS):
+        renderer = _renderer(fig)
+        bb = ax.get_window_extent(renderer)
+        px = fig.dpi / 72.0
+        out = [b for b in (_box(t, renderer, PAD * px) for t in artists)
+               if b[0] < bb.x0 or b[1] < bb.y0 or b[2] > bb.x1 or b[3] > bb.y1]
+        if not out:
+            break
+        inv = ax.transData.inverted()
+        corners = inv.transform([(b[0], b[1]) for b in out] + [(b[2], b[3]) for b in out])
+        (x0, x1), (y0, y1) = ax.get_xlim(), ax.get_ylim()
+        mx, my = GROW_MARGIN * (x1 - x0), GROW_MARGIN * (y1 - y0)
+        lo_x, hi_x = corners[:, 0].min(), corners[:, 0].max()
+        lo_y, hi_y = corners[:, 1].min(), corners[:, 1].max()
+        ax.set_xlim(min(x0, lo_x - mx) if lo_x < x0 else x0, max(x1, hi_x + mx) if hi_x > x1 else x1)
+        ax.set_ylim(min(y0, lo_y - my) if lo_y < y0 else y0, max(y1, hi_y + my) if hi_y > y1 else y1)
+        for t in artists:
+            t.remove()
+        artists = _place_once(ax, labels, obstacles, fixed, heads, head_size)
+    return artists
+
+
+def _place_once(ax, labels, obstacles, fixed, heads, head_size) -> list:
+    """One placing of ``labels`` at the axes' present limits (see :func:`place`)."""
     from matplotlib.transforms import offset_copy
 
     fig = ax.figure

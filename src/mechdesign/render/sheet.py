@@ -1243,17 +1243,22 @@ class LabelPlacer:
 
     def leader(self, anchor: complex, text: str, height: float, prefer: complex,
                lengths=(8.0, 13.0, 19.0, 27.0, 37.0, 50.0), layer: str = "CONSTRUCTION",
-               avoid_lines: bool = False) -> None:
+               avoid_lines: bool = False, both_sides: bool = False) -> None:
         """A text on a short underline, joined to ``anchor`` by a leader line; with
         ``avoid_lines`` its text keeps clear of every line drawn so far, not only of what
-        was blocked (a point label pushed out of a fan of lines: :meth:`place`)."""
+        was blocked (a point label pushed out of a fan of lines: :meth:`place`). The leader
+        leaves within 90° of ``prefer``; with ``both_sides`` also within 90° of its opposite
+        where that is cheaper (a vector's label on either side of it: the press's F_R65 at
+        the top edge of its polygon, where the preferred side is the cell's heading)."""
         w = text_width(text, height) + 2.0
         u = prefer / abs(prefer)
+        sides = (u, -u) if both_sides else (u,)
         best = None
         drawn = self._drawn_points() if avoid_lines else None
         for rank, length in enumerate(lengths):
-            for t in (0, 1, -1, 2, -2, 3, -3, 4, -4, 5, -5, 6, -6):
-                d = u * np.exp(1j * t * np.pi / 12)
+            for t, side in ((t, side) for side in sides
+                            for t in (0, 1, -1, 2, -2, 3, -3, 4, -4, 5, -5, 6, -6)):
+                d = side * np.exp(1j * t * np.pi / 12)
                 elbow = anchor + length * d
                 right = d.real >= 0
                 x0, x1 = (elbow.real, elbow.real + w) if right else (elbow.real - w, elbow.real)

@@ -237,7 +237,8 @@ def graphical_stage(model_key: str = "model", prefix: str = "linkage") -> Stage:
 
     def run(r: dict) -> GraphicalDocument:
         k = r[prefix]
-        return graphical(r[model_key], k, r[f"{prefix}_raw"], r.get(f"{prefix}_forces"),
-                         chosen_positions(k, r.get("brief")))
+        forces = r.get(f"{prefix}_forces")
+        return graphical(r[model_key], k, r[f"{prefix}_raw"], forces,
+                         chosen_positions(k, r.get("brief"), forces))
 
     return Stage(f"{prefix}_graphical", titles.pgettext("stage", "graphical method"), run)
