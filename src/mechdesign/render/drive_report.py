@@ -501,7 +501,8 @@ def stage_designs(d, lang: str, gear_pair_last: bool = False) -> list[dict]:
         if sh.d_end is not None:
             rows.append([_("overhung end") + " $d_1$", f(sh.d_end * MM, 0), unit_mm])
         rows += [[_("journal") + " $d_j$", f(sh.d_journal * MM, 0), unit_mm],
-                 [_("hub seat") + " $d_s$", f(sh.d_seat * MM, 0), unit_mm],
+                 [_("worm root circle") + " $d_{f1}$" if sh.worm_integral else _("hub seat") + " $d_s$",
+                  f(sh.d_seat * MM, 0), unit_mm],
                  [_("collar") + " $d_c$", f(sh.d_shoulder * MM, 0), unit_mm],
                  [_("bearing span") + " $L$", f(sh.span * MM, 0), unit_mm],
                  [_("design torque") + " $T$", f(sh.torque, 1, group=True), "N·m"]]
@@ -533,7 +534,8 @@ def _critical_section(sh, c, _) -> str:
     x, d = c.inputs["x"], c.inputs["d"]
     bearing = any(abs(x - xb) < 1e-12 for xb in (0.0, sh.span))
     where = _("journal") if bearing or (sh.d_end is None and not 0 < x < sh.span) else (
-        _("hub seat") if 0 < x < sh.span else _("overhung end"))
+        (_("worm root circle") if sh.worm_integral else _("hub seat")) if 0 < x < sh.span
+        else _("overhung end"))
     text = _("Critical section (where $\\sigma_{{ca}}$, evaluated at every load and bearing section "
              "with the diameter there, is largest): $x$ = {x} mm ({where}), $d$ = {d} mm.",
              x=minus(f(x * MM, 0)), where=where, d=f(d * MM, 0))

@@ -171,13 +171,19 @@ def gear_geometry_checks(design, s) -> tuple[Check, ...]:
 
 # ----------------------------------------------------------------------------- worm shaft
 
+def worm_root_diameter(g) -> float:
+    """The worm's root circle d_f1 = d1 − 2(h_a* + c*)m = d1 − 2.4 m (GB/T 10085, h_a* = 1,
+    c* = 0.2) [m]."""
+    return g.d1 - 2.4 * g.m
+
+
 def worm_deflection_check(design, span: float | None) -> Check:
     """y = √(F_t1² + F_r1²) L³/(48 E I) ≤ [y] = d1/1000 (濮良贵 ch.11, eq. 11-?: the worm
     as a simply supported beam loaded at mid-span), I = π d_f1⁴/64."""
     g = design.geometry
     f = design.forces
     d1, m = g.d1, g.m
-    df1 = d1 - 2.4 * m
+    df1 = worm_root_diameter(g)
     L = span if span else 0.9 * g.d2
     inertia = math.pi * df1 ** 4 / 64
     y = math.hypot(f["Ft"], f["Fr"]) * L ** 3 / (48 * E_STEEL * inertia)

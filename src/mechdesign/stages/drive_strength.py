@@ -124,7 +124,8 @@ class ShaftDesign:
     torque: float = q("N·m", "design torque (× the peak factor where it applies)")
     d_min: float = q("m", "A_0·∛(P/n) with the keyway allowance")
     d_journal: float = q("m", "bearing journal (the bearing bore)")
-    d_seat: float = q("m", "hub seat between the bearings (journal + 5 mm)")
+    d_seat: float = q("m", "the section between the bearings: a hub seat (journal + 5 mm) or, on a "
+                      "shaft whose worm is cut integral with it, the worm's root circle d_f1")
     span: float = q("m", "bearing span")
     loads: tuple[st.PointLoad, ...] = q("", "the loads of the elements it carries (strength case)")
     elements: tuple[str, ...] = q("", "what sits at each load: its drive stage's kind (a row of "
@@ -153,6 +154,8 @@ class ShaftDesign:
         "translated where shown}", default=())
     coupling: CouplingChoice | None = q("", "the coupling from the motor (first shaft of a drive whose "
                                         "first stage is a coupling; null otherwise)", default=None)
+    worm_integral: bool = q("", "the worm is cut integral with this shaft (a worm shaft): d_seat is its "
+                            "root circle d_f1, checked for σ_ca; no hub, no key", default=False)
 
     def diameter_at(self, x: float) -> float:
         """The diameter [m] of the section at axial position ``x`` [m] (:func:`section_diameter`)."""
@@ -605,6 +608,14 @@ def shaft_designs(dp, designs, shafts, peak_factor, peak_from_shaft, kinds,
         d_min = st.shaft_min_diameter(sh.power, sh.speed_rpm, a0, KEYWAY)
         cr = (crank or {}).get(j)
         info, span = _place(dp, j, designs, kinds, (weights or {}).get(j), cr)
+        # the worm on this shaft, cut integral with it (濮良贵 ch.11: a worm is almost always
+        # made in one piece with its shaft) where it is the only part between the bearings:
+        # that section is its root circle, not a hub seat (review39a: d_f1 = 19 mm under
+        # 20 mm journals, the shaft listed with a 25 mm seat)
+        worm_here = next((i["design"] for i in info if i["design"] is not None
+                          and i["design"].kind == "worm" and i["driving"]), None)
+        worm_root = (round(de.worm_root_diameter(worm_here.geometry), 9) if worm_here is not None and all(
+            i["design"] is worm_here for i in info if i["inside"]) else None)
         if cr is not None:
             _worst_plane(span, info, T)
         loads, res = _statics(span, info, T)
@@ -658,6 +669,9 @@ def shaft_designs(dp, designs, shafts, peak_factor, peak_from_shaft, kinds,
             free_end = not (fixed and fixed.end)
             free_j = not (fixed and (fixed.journal or fixed.bearing))
             free_s = not (fixed and fixed.seat)
+            integral = worm_root is not None and free_s
+            if integral:           # the worm's root circle: set by the worm, not by the loop
+                ds, free_s = worm_root, False
             kl = fixed.key_length if fixed else None
             ev = None
             for it in range(60):
@@ -677,6 +691,9 @@ def shaft_designs(dp, designs, shafts, peak_factor, peak_from_shaft, kinds,
                         dj = round(_round_up(seal, 0.005), 6)
                         ds = round(dj + 0.005, 6) if free_s else max(ds, dj)
                     continue
+                if (integral and not ev["bend"].passed and 0.0 < ev["crit"].x < span
+                        and not any(abs(ev["crit"].x - xb) < 1e-12 for xb in (0.0, span))):
+                    break          # the worm's root fails: a larger journal does not help
                 if bad_in and (free_j or free_s):
                     old = (dj, ds)
                     nj = round(dj + 0.005, 6) if free_j else dj
@@ -691,16 +708,19 @@ def shaft_designs(dp, designs, shafts, peak_factor, peak_from_shaft, kinds,
                     steps.append(("in", old, (dj, ds), _kinds(ev)))
                     continue
                 break
-            return ev, (d_end, dj, ds), steps
+            return ev, (d_end, dj, ds), steps, integral
 
-        ev, dims, loop_steps = design(ch)
+        ev, dims, loop_steps, integral = design(ch)
         advice = ()
         if ch is not None:
-            free_ev, free_dims, _ = design(None)
+            free_ev, free_dims, _, _ = design(None)
             advice = _advice(ch, ev, dims, free_ev, free_dims)
         d_end, dj, ds = dims
         res = replace(res, check=ev["bend"])
-        shoulder = st.standard_diameter(1.14 * ds, series_d) if ds * 1.14 <= series_d[-1] else ds * 1.14
+        # the collar locates the hub; on a worm shaft the bearings (the worm is the shaft)
+        seated = dj if integral else ds
+        shoulder = (st.standard_diameter(1.14 * seated, series_d) if seated * 1.14 <= series_d[-1]
+                    else seated * 1.14)
         checks = [st.shaft_diameter_check(min(d for d in (d_end, dj) if d is not None), sh.power, sh.speed_rpm,
                                           a0, KEYWAY), ev["bend"]]
         if ch is not None and not checks[0].passed:
@@ -722,7 +742,8 @@ def shaft_designs(dp, designs, shafts, peak_factor, peak_from_shaft, kinds,
         checks += [k.check for k in ev["keys"]]
         # peak_from_shaft 0: the peak reaches the motor's shaft, i.e. the drive has no flywheel
         head, tail = _steps(sh, mat, a0, d_min, dims, shoulder, T, peak, peak_factor, lf, ev, span, dp,
-                            coupling, motor, flywheel=peak_from_shaft != 0)
+                            coupling, motor, flywheel=peak_from_shaft != 0,
+                            worm=worm_here if integral else None)
         if cr is not None:
             head = head + [_crank_step(cr, info, span)]
             if cr.others:
@@ -736,7 +757,7 @@ def shaft_designs(dp, designs, shafts, peak_factor, peak_from_shaft, kinds,
                                tuple(i["name"] for i in _load_order(info)), res, ev["bearing"], ev["pl"], tuple(checks),
                                mat.key, a0, d_end, shoulder, (lf / peak_factor) if peak else 1.0,
                                (life_res.FrA, life_res.FrB), tuple(ev["keys"]), tuple(steps), advice,
-                               coupling))
+                               coupling, integral))
     return tuple(out)
 
 
@@ -920,7 +941,7 @@ def _peak_times(peak_factor: float, torque: float, printed: str) -> str:
 
 
 def _steps(sh, mat, a0, d_min, dims, shoulder, T, peak, peak_factor, lf, ev, span, dp, coupling=None,
-           motor=None, flywheel=True):
+           motor=None, flywheel=True, worm=None):
     """The design steps of one shaft, each rule with its formula and numbers (messages as data)."""
     d_end, dj, ds = dims
     P, n = sh.power / 1e3, sh.speed_rpm
@@ -948,6 +969,14 @@ def _steps(sh, mat, a0, d_min, dims, shoulder, T, peak, peak_factor, lf, ev, spa
                           T=_sig(T, 4), fp=f"{FP:g}"))
     if coupling is not None:
         out.append(_coupling_step(coupling, d_min, motor))
+    if worm is not None:
+        g = worm.geometry
+        out.append(_step(N_("the worm is cut integral with the shaft (a worm shaft): no hub and no key; "
+                             "between the bearings the section is its root circle {df1} mm, where "
+                             "{sigma} is checked; the thread is milled, so the journals may be larger "
+                             "than {d}"),
+                          df1=(f"$d_{{f1}} = d_1 - 2.4m = {_mmf(g.d1)} - 2.4 \\times {_mmf(g.m)} = "
+                               f"{_mmf(ds)}$"), sigma="$\\sigma_{ca}$", d="$d_{f1}$"))
     head, out = out, []
     lay = []
     if d_end is not None and coupling is not None:
@@ -956,6 +985,7 @@ def _steps(sh, mat, a0, d_min, dims, shoulder, T, peak, peak_factor, lf, ev, spa
     elif d_end is not None:
         lay.append(Msg(N_("overhung end {d} (the standard size ≥ {dmin})"), d=_mmf(d_end), dmin="$d_{min}$"))
     lay += [Msg(N_("journals {d} (bearing bore, a multiple of 5)"), d=_mmf(dj)),
+            Msg(N_("worm root circle {d}"), d=_mmf(ds)) if worm is not None else
             Msg(N_("seat {d} (journal + 5)"), d=_mmf(ds)), Msg(N_("collar {d} (h ≈ 0.07 d)"), d=_mmf(shoulder))]
     sections = Join(Msg.pgettext("separator", ", "), lay)
     out.append(_step(N_("result, the sections (mm): {sections}; bearing span {span} mm"), sections=sections,
