@@ -69,3 +69,15 @@ def test_the_report_names_the_worm_root_circle(handin_reports, lang):
     assert row in md
     assert ("蜗杆与轴制成一体" if lang == "zh" else "the worm is cut integral with the shaft") in md
     assert "2.4 \\times 2.5 = 19$" in md
+
+
+@pytest.mark.parametrize("name", ["furnace_drive", "furnace_pusher"])
+def test_the_worm_shaft_is_designed_on_the_span_its_deflection_is_checked_on(example_results, name):
+    """The worm shaft's bending and bearings took a span of the worm's width + 2 × 60 mm
+    (180 mm) while its deflection check took L ≈ 0.9 d2 (濮良贵 ch.11; 79 mm): one span."""
+    r = example_results(name)
+    for sd, worm in _worm_shafts(r):
+        defl = next(c for c in worm.checks if c.key == "worm_deflection")
+        assert sd.span == pytest.approx(defl.inputs["L"], rel=1e-12)
+        if not defl.inputs["span_given"]:
+            assert sd.span == pytest.approx(0.9 * worm.geometry.m * worm.geometry.z2, rel=1e-12)

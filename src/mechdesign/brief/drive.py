@@ -93,7 +93,8 @@ class DriveStage(StrictModel):
         "the coupling from the motor (table 14-1); default from the drive's load class (and, for "
         "belts, the hours per day)"))
     span_mm: Optional[float] = Field(None, gt=20, le=3000, description=(
-        "Bearing span of the stage's output shaft [mm] (default: face width + 2 × 60 mm)"))
+        "Bearing span of the stage's output shaft [mm] (default: face width + 2 × 60 mm; a shaft "
+        "driving a worm 0.9 d2, the span of its deflection check)"))
     efficiency: Optional[float] = Field(None, gt=0.3, le=1, description=(
         "Efficiency of the stage, overriding the textbook default (worm: computed)"))
 

@@ -171,6 +171,12 @@ def gear_geometry_checks(design, s) -> tuple[Check, ...]:
 
 # ----------------------------------------------------------------------------- worm shaft
 
+def worm_span(g) -> float:
+    """The worm shaft's bearing span where the brief gives none: L ≈ 0.9 d2 (濮良贵 ch.11) [m];
+    the shaft's design (bending, bearings) and its deflection check take the same span."""
+    return 0.9 * g.d2
+
+
 def worm_root_diameter(g) -> float:
     """The worm's root circle d_f1 = d1 − 2(h_a* + c*)m = d1 − 2.4 m (GB/T 10085, h_a* = 1,
     c* = 0.2) [m]."""
@@ -184,7 +190,7 @@ def worm_deflection_check(design, span: float | None) -> Check:
     f = design.forces
     d1, m = g.d1, g.m
     df1 = worm_root_diameter(g)
-    L = span if span else 0.9 * g.d2
+    L = span if span else worm_span(g)
     inertia = math.pi * df1 ** 4 / 64
     y = math.hypot(f["Ft"], f["Fr"]) * L ** 3 / (48 * E_STEEL * inertia)
     allow = d1 / 1000

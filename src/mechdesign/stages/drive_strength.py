@@ -420,7 +420,12 @@ def _place(dp, j, designs, kinds, weight=None, crank=None):
                          fields=dict(Fh=float(crank.F)), life_fields=dict(Fh=float(crank.life)),
                          width=0.0, hub_mat="steel"))
     inside_width = sum(i["width"] for i in info if i["inside"]) or 0.05
-    span = dp.stages[j - 1].span or inside_width + 2 * CLEARANCE
+    # a worm's shaft: the span its deflection check takes (0.9 d2), not the worm's width + 2 ×
+    # 60 mm (the furnace drive's 180 mm against the deflection check's 79 mm)
+    worm = next((i["design"] for i in info if i["design"] is not None and i["design"].kind == "worm"
+                 and i["driving"]), None)
+    span = dp.stages[j - 1].span or (de.worm_span(worm.geometry) if worm is not None
+                                     else inside_width + 2 * CLEARANCE)
     ins = [i for i in info if i["inside"]]
     for n, i in enumerate(ins):
         i["x"] = span * (n + 1) / (len(ins) + 1)
