@@ -50,6 +50,23 @@ def test_a_factor_counts_significant_digits_or_decimals(x, n, decimals, text):
     assert numbers.factor_text(x, n, decimals) == text
 
 
+@pytest.mark.parametrize("x, digits, text", [
+    (245.25, 1, "245.3"),       # G5 = 25 kg × 9.81: an exact binary half, away from zero
+    (2.675, 2, "2.68"),         # 2.67499999… in binary: the reader sees 2.675 and rounds up
+    (-0.125, 2, "-0.13"),       # away from zero on the negative side too
+    (2.5, 0, "3"), (0.1 + 0.2, 2, "0.30"), (-0.0001, 2, "0.00"),
+])
+def test_a_half_is_rounded_away_from_zero_as_a_reader_rounds_it(x, digits, text):
+    """One rounding rule for the writer and for the chain check (numbers.gives): Python's
+    format rounds the stored binary fraction half to even (245.25 → 245.2, 2.675 → 2.67),
+    a reader rounds the decimal he reads half away from zero (session 40's open item)."""
+    from mechdesign.numbers import fixed, gives
+
+    assert fixed(x, digits) == text
+    assert gives(x, text) or abs(x) < 10 ** -digits     # the chain rule agrees (not a residue)
+    assert numbers.sig(245.25, 4) == "245.3" and numbers.sig(-0.0002675, 3) == "-0.000268"
+
+
 def test_factor_for_counts_decimals():
     """Hand-computed: 12.34567 × 10 printed 123.457 (to half of 0.001) needs 12.3457 (4
     decimals): 12.35 gives 123.5, 12.346 gives 123.46. Counted in significant digits from 2,

@@ -12,7 +12,7 @@ the stages). Standard library only: no prose, no units, no I/O.
 """
 from __future__ import annotations
 
-from decimal import Decimal
+from decimal import ROUND_HALF_UP, Decimal
 
 GROUP = "\u202f"      # narrow no-break space between digit groups (GB 3101, ISO 80000-1)
 
@@ -26,11 +26,22 @@ def grouped_digits(text: str) -> str:
     return sign + head + dot + tail
 
 
+def _decimal(x: float) -> Decimal:
+    """``x`` as the shortest decimal that reads back as it (Python's repr): the number a
+    reader sees and rounds, not the binary fraction stored (2.675 is 2.67499999… in binary)."""
+    return Decimal(repr(float(x)))
+
+
 def fixed(x: float, digits: int = 2, group: bool = False) -> str:
     """Fixed-point number with ``digits`` decimals; a rounded zero never shows as '-0.00'.
+    A half is rounded away from zero, as a reader rounds it and as :func:`gives` checks a
+    chain (G5 = 245.25 N → 245.3, not Python's half-to-even 245.2; 2.675 → 2.68).
     ``group``: an integer part of five or more digits grouped by threes (``12 698.4``) —
     for text and table cells, not inside a formula (``$…$``), where digits stay together."""
-    text = f"{x:.{digits}f}"
+    if x != x or abs(x) == float("inf"):
+        text = f"{x:.{digits}f}"
+    else:
+        text = f"{_decimal(x).quantize(Decimal(1).scaleb(-digits), rounding=ROUND_HALF_UP):f}"
     if text.startswith("-") and float(text) == 0.0:
         text = text[1:]
     return grouped_digits(text) if group else text
@@ -52,7 +63,8 @@ def sig(x: float, n: int = 4, group: bool = True, ref: float = 0.0) -> str:
         return "0"
     if abs(x) >= 10 ** n:                   # more integer digits than n: all of them kept
         return fixed(x, 0, group=group)
-    rounded = Decimal(f"{x:.{n - 1}e}")
+    exact = _decimal(x)
+    rounded = exact.quantize(Decimal(1).scaleb(exact.adjusted() - n + 1), rounding=ROUND_HALF_UP)
     decimals = max(n - 1 - rounded.adjusted(), 0)
     return fixed(float(rounded), decimals, group=group)
 
