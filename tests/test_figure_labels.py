@@ -491,3 +491,29 @@ def test_polygon_labels_write_primes_that_read_as_primes(example_results, monkey
     texts = [t.get_text() for fig in figs.values() for ax in fig.axes for t in _labels(ax)]
     assert any("′" in s for s in texts)
     assert not [s for s in texts if "'" in s]
+
+
+@pytest.mark.parametrize("brief", ["die_cutter", "press"])
+def test_every_character_of_a_polygon_figure_is_in_its_font(example_results, monkeypatch, tmp_path,
+                                                           brief):
+    """Session 41's page review: the die-cutter's force figures printed "μF = 20□000 N/mm": the
+    text's narrow no-break space between digit groups (U+202F) is not in the figures' CJK font
+    (Noto Sans SC maps it to no glyph) and matplotlib drew the empty box without a warning.
+    No figure text holds a character the figures' first font lacks (mathtext aside)."""
+    from matplotlib.ft2font import FT2Font
+
+    from mechdesign.render import fonts
+
+    font = fonts._font_files().get("sans")
+    if font is None:
+        pytest.skip("no CJK font installed")
+    face = FT2Font(str(font))
+    figs = _polygon_figures(example_results, monkeypatch, tmp_path, brief, "en")
+    missing = set()
+    for name, fig in sorted(figs.items()):
+        texts = [t for ax in fig.axes for t in ax.texts + [ax.title, ax.xaxis.label, ax.yaxis.label]]
+        for t in texts:
+            plain = re.sub(r"(?<!\\)\$[^$]*(?<!\\)\$", "", t.get_text())      # mathtext: its own fonts
+            missing |= {(name, ch) for ch in plain if ch.strip() == "" and ch not in " \n"
+                        and face.get_char_index(ord(ch)) == 0}
+    assert not missing, sorted(missing)[:5]

@@ -81,3 +81,17 @@ def test_the_worm_shaft_is_designed_on_the_span_its_deflection_is_checked_on(exa
         assert sd.span == pytest.approx(defl.inputs["L"], rel=1e-12)
         if not defl.inputs["span_given"]:
             assert sd.span == pytest.approx(0.9 * worm.geometry.m * worm.geometry.z2, rel=1e-12)
+
+
+def test_a_failed_check_names_its_own_remedy(example_results):
+    """Session 41's page review: the die-cutter's bearing 6326 life fails and the report said
+    "enlarge it or use a better material" (a material does not lengthen a bearing's life). Each
+    failed shaft, bearing or key check names the remedy of its kind."""
+    r = example_results("die_cutter")
+    lines = [w.text("en") for w in r["drive"].warnings]
+    life = [t for t in lines if " life fails" in t]
+    assert life and all("heavier series" in t and "material" not in t for t in life), life
+    bending = [t for t in lines if "bending–torsion strength fails" in t]
+    assert bending and all("stronger shaft material" in t for t in bending), bending
+    keys = [t for t in lines if ": Key " in t]
+    assert keys and all("two keys" in t for t in keys), keys

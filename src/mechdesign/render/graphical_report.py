@@ -230,6 +230,12 @@ def _scale(x: float) -> str:
     return f"{x:g}"
 
 
+def _title_scale(x: float) -> str:
+    """A scale in a figure's title, grouped as in the text (20 000) with a plain space: the
+    figures' font has no narrow no-break space (it printed a box, "20□000")."""
+    return grouped(_scale(x)).replace(GROUP, " ")
+
+
 # ---------------------------------------------------------------- figures
 
 #: Font size of the labels of the free-body diagrams and force polygons [pt].
@@ -344,7 +350,7 @@ def _kin_axes(ax, poly, title: str, mu_unit: str, lang: str):
         text = ", ".join(row) if len(row) < 3 else (", ".join(row[:2]) + ",\n" + ", ".join(row[2:]))
         labels.append(Label(text, spot, prefer,
                             {"fontsize": 7}))
-    ax.set_title(f"{title}  μ = {grouped(_scale(poly.scale))} {mu_unit}", fontsize=8)
+    ax.set_title(f"{title}  μ = {_title_scale(poly.scale)} {mu_unit}", fontsize=8)
     ax.tick_params(labelsize=6)
     ax.set_xlabel("mm", fontsize=6)
     ax.grid(True, lw=0.3, alpha=0.4)
@@ -481,7 +487,7 @@ def _force_figure(path: Path, points: dict, length_scale: float, fg, members: di
             a2.plot([z.real], [z.imag], "k.", ms=2)
         _extent(a2, zs2, minor=FORCE_MINOR, pad=FORCE_PAD)
         flat = _flatness(zs2)
-        a2.set_title(f"{t['force']}  $\\mu_F$ = {grouped(_scale(fg.scale))} N/mm", fontsize=8)
+        a2.set_title(f"{t['force']}  $\\mu_F$ = {_title_scale(fg.scale)} N/mm", fontsize=8)
         a2.tick_params(labelsize=6)
         a2.set_xlabel("mm", fontsize=6)
         # a polygon whose forces are almost collinear closes on a line: say so (issue 19),

@@ -514,6 +514,16 @@ def _gear(key: str) -> Msg:
     return Msg.pgettext("gear", "pinion") if key == "1" else Msg.pgettext("gear", "wheel")
 
 
+#: The remedy of a failed shaft, bearing or key check, by the check's key (None: any other).
+_GENERIC_FIX = {
+    "shaft_bending": N_("a larger diameter or a stronger shaft material"),
+    "bearing_life": N_("a bearing of a heavier series or a larger bore, or the load nearer the bearings"),
+    "bearing_static": N_("a bearing of a heavier series or a larger bore, or the load nearer the bearings"),
+    "key_crushing": N_("a longer hub, two keys or a larger diameter"),
+    None: N_("enlarge it or use a better material"),
+}
+
+
 def _failed(c, where: Msg, advice=None, stage: int | None = None, stage_type: str = "") -> Finding:
     """A failed check of the drive stage or shaft ``where`` as a named finding; ``advice``:
     an entry of :attr:`~.drive_strength.ShaftDesign.advice` ({check, field, fix}: the
@@ -533,7 +543,9 @@ def _failed(c, where: Msg, advice=None, stage: int | None = None, stage_type: st
                           "gives: {advice}."), field=advice["field"], where=where,
                        check=check_name(c), v=v, rel=rel, a=a, unit=unit,
                        advice=decode(advice["fix"]))
-    fix = Msg(N_("enlarge it or use a better material"))
+    # the remedy of the check that fails (a better material does not lengthen a bearing's
+    # life: review of session 41)
+    fix = Msg(_GENERIC_FIX.get(c.key, _GENERIC_FIX[None]))
     extra = {}
     if stage is not None and c.key in de.FIXES:      # belts, gear geometry, worm deflection
         fixes = de.FIXES[c.key]

@@ -606,9 +606,10 @@ def _findings(r, lang: str) -> list[str]:
         text = _("{n} checks of the drive design fail (listed in the drive chapter's problems)",
                  n=len(drive))
         if peak:
-            text += _("; the shafts, bearings and keys after the flywheel are checked with the peak "
-                      "torque: enlarge the shafts as the table \"shafts after the flywheel\" says, "
-                      "then choose bearings and keys again")
+            text += _("; the shafts, bearings and keys after the flywheel carry the peak torque (table "
+                      "\"shafts after the flywheel\"); the shaft design enlarges each section until its checks "
+                      "pass or the bearing catalogue ends: what still fails needs the remedy the problems "
+                      "name")
         out.append(text + _("."))
     return out
 
