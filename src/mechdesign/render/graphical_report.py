@@ -1035,8 +1035,12 @@ def _group_moments(fg, mu_l, lang: str, least: dict, shown: dict,
                    f" / {_scale(mu_l)}") if couples else ""
             if couples and couple is None:
                 couple = sym(next(t.name for t in m.terms if not t.arm and t.value))
+            # a negative sum without a couple: its minus and the one before the fraction
+            # cancel ("= − −5750/57.5" read as a slip: furnace_pusher eq. 43, page review 41)
+            solved = (f"\\frac{{{num[1:]}}}{{{_mm(m.arm)}}}" if not cpl and num.startswith("-")
+                      else f"-\\frac{{{num}{cpl}}}{{{_mm(m.arm)}}}")
             moments.append((f"{where} = {u} \\times {_mm(m.arm)} + ({lhs}){cpl} = 0",
-                            f"{u} = -\\frac{{{num}{cpl}}}{{{_mm(m.arm)}}} = {res}"
+                            f"{u} = {solved} = {res}"
                             r"\ \mathrm{N}", None))
         else:
             moments.append((f"{where} = {u} + ({lhs}) \\times {_scale(mu_l)}{cpl} = 0",

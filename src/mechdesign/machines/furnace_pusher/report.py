@@ -307,7 +307,7 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
         ["$\\alpha_E$", _("largest pressure angle at $E$, working stroke"),
          f(syn.alpha_E * DEG, 2), "°"],
     ]
-    names = {"stroke": N_("stroke"), "chord": N_("chord"), "eq1": N_("equation (1)"),
+    names = {"stroke": N_("stroke"), "chord": N_("chord"), "eq1": N_("the original report's equation (1)"),
              "folded": N_("folded extreme"), "extended": N_("extended extreme"),
              "frame": N_("frame"), "theta": N_("extreme angle"), "K": "$K$"}
     res_rows = [[_(names[nm]), f"${eqn}$", residue(val)] for nm, eqn, val in syn.residuals]
