@@ -95,3 +95,22 @@ def test_a_failed_check_names_its_own_remedy(example_results):
     assert bending and all("stronger shaft material" in t for t in bending), bending
     keys = [t for t in lines if ": Key " in t]
     assert keys and all("two keys" in t for t in keys), keys
+
+
+def test_the_return_limit_is_labelled_alpha_prime(monkeypatch, tmp_path):
+    """Page review 41: the pressure-angle figures labelled the return's allowed angle "[α] = 70°"
+    where the tables write [α′] (cam_7_3 fig. 3, die_cutter fig. 18)."""
+    import numpy as np
+
+    from mechdesign.render import cam_figures, figures
+
+    kept = {}
+    monkeypatch.setattr(figures, "save_png", lambda fig, path: kept.setdefault("fig", fig))
+    delta = np.linspace(0, 360, 73)
+    segments = [(0.0, 120.0, "rise", None), (120.0, 180.0, "far_dwell", None),
+                (180.0, 300.0, "return", None), (300.0, 360.0, "near_dwell", None)]
+    fn = getattr(cam_figures.pressure_and_curvature, "__wrapped__", cam_figures.pressure_and_curvature)
+    fn(tmp_path / "a.png", "en", delta, 20 * np.sin(np.radians(delta)) ** 2, [30.0, None, 70.0, None],
+       segments)
+    texts = [t.get_text() for ax in kept["fig"].axes for t in ax.texts]
+    assert "[α] = 30°" in texts and "[α′] = 70°" in texts, texts

@@ -103,7 +103,9 @@ def pressure_and_curvature(path: Path, lang: str, delta_deg, alpha_deg, limits, 
             name = lab["limit_rise"] if kind == "rise" else lab["limit_return"]
             ax.plot([start, end], [limit, limit], color="C3", lw=1.1, ls="--",
                     label=None if name in shown else f"{name}")
-            ax.text(end - 2, limit + 1, f"[α] = {limit:.0f}°", fontsize=7, color="C3", ha="right")
+            # the return's allowed angle is [α′], as the tables write it (page review 41)
+            sym = "[α]" if kind == "rise" else "[α′]"
+            ax.text(end - 2, limit + 1, f"{sym} = {limit:.0f}°", fontsize=7, color="C3", ha="right")
             shown.add(name)
         j = int(np.argmax(alpha_deg))
         ax.plot([delta_deg[j]], [alpha_deg[j]], "o", color="C3", ms=4)
