@@ -32,6 +32,15 @@ def _decimal(x: float) -> Decimal:
     return Decimal(repr(float(x)))
 
 
+def mantissa_exponent(x: float, n: int = 4) -> tuple[str, int]:
+    """``x`` as ``n`` significant digits times a power of ten, a half rounded away from zero
+    as :func:`fixed` does: (``"2.043"``, 9) for 2 042 500 000."""
+    exact = _decimal(x)
+    rounded = exact.quantize(Decimal(1).scaleb(exact.adjusted() - n + 1), rounding=ROUND_HALF_UP)
+    exp = rounded.adjusted()
+    return f"{rounded.scaleb(-exp):.{n - 1}f}", exp
+
+
 def fixed(x: float, digits: int = 2, group: bool = False) -> str:
     """Fixed-point number with ``digits`` decimals; a rounded zero never shows as '-0.00'.
     A half is rounded away from zero, as a reader rounds it and as :func:`gives` checks a

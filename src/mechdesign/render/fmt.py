@@ -72,7 +72,7 @@ from __future__ import annotations
 import re
 
 from ..i18n import tr
-from ..numbers import GROUP, fixed as f, grouped_digits as _group, sig  # noqa: F401  (the rule's digits: mechdesign/numbers.py)
+from ..numbers import GROUP, fixed as f, grouped_digits as _group, mantissa_exponent, sig  # noqa: F401  (the rule's digits: mechdesign/numbers.py)
 from ..numbers import factor_text, factors_for, gives  # noqa: F401  (a displayed chain's digits)
 
 
@@ -154,8 +154,8 @@ def residue(x: float, scale: float = 1.0) -> str:
 def sci_tex(x: float, n: int = 4) -> str:
     """``x`` in a formula with ``n`` significant digits times a power of ten
     (``2.043\\times10^{9}``; a stress-cycle count, a moment of a million N·mm)."""
-    mant, _, exp = f"{x:.{n - 1}e}".partition("e")
-    return f"{mant}\\times10^{{{int(exp)}}}"
+    mant, exp = mantissa_exponent(x, n)
+    return f"{mant}\\times10^{{{exp}}}"
 
 
 def sci(x: float, n: int = 4) -> str:
@@ -166,8 +166,8 @@ def sci(x: float, n: int = 4) -> str:
         return "—"
     if abs(x) < 1e6:
         return sig(x, n)
-    mant, _, exp = f"{x:.{n - 1}e}".partition("e")
-    return f"{mant} × 10{str(int(exp)).translate(_SUPERSCRIPT)}"
+    mant, exp = mantissa_exponent(x, n)
+    return f"{mant} × 10{str(exp).translate(_SUPERSCRIPT)}"
 
 
 MINUS = "\u2212"     # the minus sign (GB 3102.11, ISO 80000-2), not the hyphen-minus "-"

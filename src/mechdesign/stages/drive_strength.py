@@ -422,8 +422,7 @@ def _place(dp, j, designs, kinds, weight=None, crank=None):
     inside_width = sum(i["width"] for i in info if i["inside"]) or 0.05
     # a worm's shaft: the span its deflection check takes (0.9 d2), not the worm's width + 2 ×
     # 60 mm (the furnace drive's 180 mm against the deflection check's 79 mm)
-    worm = next((i["design"] for i in info if i["design"] is not None and i["design"].kind == "worm"
-                 and i["driving"]), None)
+    worm = _driving_worm(info)
     span = dp.stages[j - 1].span or (de.worm_span(worm.geometry) if worm is not None
                                      else inside_width + 2 * CLEARANCE)
     ins = [i for i in info if i["inside"]]
@@ -434,6 +433,12 @@ def _place(dp, j, designs, kinds, weight=None, crank=None):
         if not i["inside"]:
             i["x"] = side.pop(0) if side else span + OVERHANG
     return info, span
+
+
+def _driving_worm(info):
+    """The design of the worm cut on this shaft (the driving member of a worm stage), or None."""
+    return next((i["design"] for i in info if i["design"] is not None and i["design"].kind == "worm"
+                 and i["driving"]), None)
 
 
 def _statics(span, info, T, scale=None):
@@ -617,8 +622,7 @@ def shaft_designs(dp, designs, shafts, peak_factor, peak_from_shaft, kinds,
         # made in one piece with its shaft) where it is the only part between the bearings:
         # that section is its root circle, not a hub seat (review39a: d_f1 = 19 mm under
         # 20 mm journals, the shaft listed with a 25 mm seat)
-        worm_here = next((i["design"] for i in info if i["design"] is not None
-                          and i["design"].kind == "worm" and i["driving"]), None)
+        worm_here = _driving_worm(info)
         worm_root = (round(de.worm_root_diameter(worm_here.geometry), 9) if worm_here is not None and all(
             i["design"] is worm_here for i in info if i["inside"]) else None)
         if cr is not None:
@@ -694,7 +698,8 @@ def shaft_designs(dp, designs, shafts, peak_factor, peak_from_shaft, kinds,
                     seal = st.standard_diameter(1.14 * d_end, series_d)
                     if free_j and dj < seal:
                         dj = round(_round_up(seal, 0.005), 6)
-                        ds = round(dj + 0.005, 6) if free_s else max(ds, dj)
+                        # (an integral worm's root stays: the worm sets it, not the journal)
+                        ds = round(dj + 0.005, 6) if free_s else ds if integral else max(ds, dj)
                     continue
                 if (integral and not ev["bend"].passed and 0.0 < ev["crit"].x < span
                         and not any(abs(ev["crit"].x - xb) < 1e-12 for xb in (0.0, span))):
