@@ -1159,8 +1159,10 @@ HOLES_OPEN: set[tuple[str, str]] = set()
 # Open since session 40 (its digits and the crank shaft's bearing sentence moved the pages):
 # die_cutter en p.39, the cam chapter: figure 16 (cited after eq. 135) on the top of the page
 # that goes on with the rise's eqs. 127–128 from the page before (the crossing is not
-# detected there: a run of numbered equations under a bold lead-in)
-DERIVATION_OPEN: set[tuple[str, str]] = {("die_cutter", "en")}
+# detected there: a run of numbered equations under a bold lead-in). Not shown since session
+# 41's text (e0717cc8's remedies moved the pages; CI of stop 39): the cause is not mended, a
+# `mid` figure that does not fit under its text is still a top float on the page it crosses to
+DERIVATION_OPEN: set[tuple[str, str]] = set()
 # Word, as LibreOffice 7.4 lays it out: a heading at a page foot with fewer than three rows
 # under it. render/docx_layout.keep_headings_with_text keeps a heading's first blocks with
 # it, a numbered formula's table by w:keepNext on all its paragraphs, which Word reads as
