@@ -45,22 +45,33 @@ def test_every_sigma_ca_line_names_the_section_the_design_checked(example_result
 
 
 def test_the_shaper_shaft_one_by_hand(example_results):
-    """Shaft Ⅰ of the shaper (table: end 20, journal 25, seat 30 mm; T = 76.54 N·m; M = 93.31
-    N·m at x = 106 mm, 60.33 at bearing B, 22.46 at bearing A, 0 at the overhung end):
-    σ_ca = 0.6 × 76540/(0.1 × 20³) = 57.4 MPa at the end against √(93310² + 45924²)/(0.1 × 30³)
-    = 38.5, √(60330² + 45924²)/(0.1 × 25³) = 48.5 and √(22460² + 45924²)/(0.1 × 25³) = 32.7:
-    the overhung end governs, by its smaller diameter."""
-    by_hand = {"end": 0.6 * 76540 / (0.1 * 20 ** 3), "mid": math.hypot(93310, 45924) / (0.1 * 30 ** 3),
-               "B": math.hypot(60330, 45924) / (0.1 * 25 ** 3), "A": math.hypot(22460, 45924) / (0.1 * 25 ** 3)}
-    assert max(by_hand, key=by_hand.get) == "end" and round(by_hand["end"], 1) == 57.4
+    """Shaft Ⅰ of the shaper: T = 76.54 N·m (αT = 45.92 N·m); the open spur pinion overhung
+    80 mm beyond bearing B with F = √(708.70² + 257.95²) = 754.2 N on a 108 mm hub, bearings
+    6206 (B = 16 mm). The moment grows linearly from the pinion to the bearing: at the hub's
+    inner edge (80 − 54 = 26 mm from B) M = 754.2 × 0.054 = 40.73 N·m, at the bearing's outer
+    face (8 mm from B) 754.2 × 0.072 = 54.30 N·m, at B 60.33 N·m, at the flywheel (x = 106 mm)
+    93.31 N·m. On a 20 mm end the hub's edge gives √(40.73² + 45.92²)/(0.1 × 20³) = 76.7 MPa
+    > 60 (session 41 checked the end at the pinion only, 0.6 × 76.54/(0.1 × 20³) = 57.4 MPa:
+    PASS); the next standard end, 22 mm, gives 57.6 MPa, against the 26 mm seal at the face
+    40.5, the 30 mm journal at B 28.1 and the 35 mm seat 24.3: the end at the hub's inner edge
+    governs."""
+    F = math.hypot(708.70, 257.95)
+    aT = 0.6 * 76.54
+    M_edge, M_face = F * 0.054, F * 0.072
+    assert round(M_edge, 2) == 40.73 and round(M_face, 2) == 54.30
+    sig = lambda M, d: math.hypot(M, aT) * 1e3 / (0.1 * d ** 3)          # MPa, d in mm
+    assert round(sig(M_edge, 20), 1) == 76.7 and round(sig(M_edge, 22), 1) == 57.6
+    others = {"face": sig(M_face, 26), "B": sig(60.33, 30), "mid": sig(93.31, 35)}
+    assert max(others.values()) < sig(M_edge, 22) <= 60 < sig(M_edge, 20)
     md, _ = _markdown(example_results, "shaper", "en")
     first = _SENTENCE["en"].search(md)
     assert first is not None
     x, where, d, why = first.groups()
-    assert (where, d) == ("overhung end", "20")
-    assert "(20 mm < 30 mm)" in why and "$x$ = 106 mm" in why
+    assert (where, d) == ("overhung end, at the hub's inner edge", "22") and x == "238"
+    assert "(22 mm < 35 mm)" in why and "$x$ = 106 mm" in why and "(40.73 N·m)" in why
     md, _ = _markdown(example_results, "shaper", "zh")
-    assert "（外伸端），$d$ = 20 mm。该截面弯矩（0 N·m）小于 $x$ = 106 mm 处" in md
+    assert "（外伸端，轮毂内侧端面处），$d$ = 22 mm。该截面弯矩（40.73 N·m）小于 $x$ = 106 mm 处" in md
+
 
 
 _ORIGIN = {"zh": "$x$ 沿轴线自轴承 $A$ 量起", "en": "$x$ is measured along the shaft from bearing $A$"}

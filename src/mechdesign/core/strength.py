@@ -442,7 +442,8 @@ def _as_load(item) -> PointLoad:
 
 
 def shaft_check(span: float, loads: Iterable, torque: float, d: float, allowable_bending: float,
-                alpha: float = 0.6, torque_span: tuple[float, float] | None = None) -> ShaftResult:
+                alpha: float = 0.6, torque_span: tuple[float, float] | None = None,
+                stations: Iterable[float] = ()) -> ShaftResult:
     """Bending–torsion check of a shaft on two bearings at x = 0 and x = ``span`` (m).
 
     ``loads``: :class:`PointLoad` (or tuples/dicts of its fields). Both planes are solved by
@@ -450,7 +451,8 @@ def shaft_check(span: float, loads: Iterable, torque: float, d: float, allowable
     σ_ca = sqrt(M² + (αT)²)/(0.1 d³) ≤ [σ_-1b] at the station of largest equivalent moment;
     α = 0.3 static torque, 0.6 pulsating (usual), 1 alternating. ``torque`` (N·m) acts between
     ``torque_span`` = (x1, x2) (default: everywhere); ``d`` (m) the diameter at the checked
-    section; ``allowable_bending`` [σ_-1b] in Pa.
+    section; ``allowable_bending`` [σ_-1b] in Pa. ``stations``: further positions (m) where the
+    moments are evaluated, e.g. where a stepped shaft changes its diameter.
     """
     if span <= 0:
         raise ValueError("the bearing span must be positive")
@@ -471,7 +473,7 @@ def shaft_check(span: float, loads: Iterable, torque: float, d: float, allowable
 
     x1, x2 = torque_span if torque_span is not None else (-math.inf, math.inf)
     sections = []
-    for x in sorted({p.x for p in everything}):
+    for x in sorted({p.x for p in everything} | {float(x) for x in stations}):
         sides = [moments(x, False), moments(x, True)]
         mh, mv = max(sides, key=lambda s: math.hypot(*s))
         m = math.hypot(mh, mv)

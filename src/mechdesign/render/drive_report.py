@@ -500,6 +500,8 @@ def stage_designs(d, lang: str, gear_pair_last: bool = False) -> list[dict]:
         rows = [["$d_{min}$", f(sh.d_min * MM, 2), unit_mm]]
         if sh.d_end is not None:
             rows.append([_("overhung end") + " $d_1$", f(sh.d_end * MM, 0), unit_mm])
+        if sh.d_seal is not None:
+            rows.append([_("seal section") + " $d_2$", f(sh.d_seal * MM, 0), unit_mm])
         rows += [[_("journal") + " $d_j$", f(sh.d_journal * MM, 0), unit_mm],
                  [_("worm root circle") + " $d_{f1}$" if sh.worm_integral else _("hub seat") + " $d_s$",
                   f(sh.d_seat * MM, 0), unit_mm],
@@ -533,11 +535,17 @@ def _critical_section(sh, c, _) -> str:
 
     x, d = c.inputs["x"], c.inputs["d"]
     bearing = any(abs(x - xb) < 1e-12 for xb in (0.0, sh.span))
+    out = -x if x < 0 else x - sh.span
+    reach = sh.seal_reach[0] if x < 0 else sh.seal_reach[1]
+    loads = [ld.x for ld in sh.loads]
     where = _("journal") if bearing or (sh.d_end is None and not 0 < x < sh.span) else (
         (_("worm root circle") if sh.worm_integral else _("hub seat")) if 0 < x < sh.span
+        else _("seal section, at the bearing's outer face") if sh.d_seal is not None and out < reach - 1e-12
+        else _("overhung end, at the hub's inner edge") if not any(abs(x - xl) < 1e-12 for xl in loads)
         else _("overhung end"))
-    text = _("Critical section (where $\\sigma_{{ca}}$, evaluated at every load and bearing section "
-             "with the diameter there, is largest): $x$ = {x} mm ({where}), $d$ = {d} mm.",
+    text = _("Critical section (where $\\sigma_{{ca}}$, evaluated at every load and bearing section and "
+             "where an overhung end steps, with the diameter there, is largest): $x$ = {x} mm ({where}), "
+             "$d$ = {d} mm.",
              x=minus(f(x * MM, 0)), where=where, d=f(d * MM, 0))
     crit = sh.result.critical
     dm = sh.diameter_at(crit.x)

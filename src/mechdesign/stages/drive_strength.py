@@ -156,21 +156,42 @@ class ShaftDesign:
                                         "first stage is a coupling; null otherwise)", default=None)
     worm_integral: bool = q("", "the worm is cut integral with this shaft (a worm shaft): d_seat is its "
                             "root circle d_f1, checked for σ_ca; no hub, no key", default=False)
+    d_seal: float | None = q("m", "the section between the overhung end's hub and its bearing (where the "
+                             "seal sits): 1.14 d_end rounded up to the standard series, at most the "
+                             "journal (null: no overhung end)", default=None)
+    seal_reach: tuple[float, float] = q("m", "how far the seal section reaches outward from the centre of "
+                                        "bearing A and of bearing B (to the overhung hub's inner edge; 0: "
+                                        "no overhung end on that side)", default=(0.0, 0.0))
 
     def diameter_at(self, x: float) -> float:
         """The diameter [m] of the section at axial position ``x`` [m] (:func:`section_diameter`)."""
-        return section_diameter(x, self.span, self.d_end, self.d_journal, self.d_seat)
+        return section_diameter(x, self.span, self.d_end, self.d_journal, self.d_seat, self.d_seal,
+                                self.seal_reach)
 
 
-def section_diameter(x: float, span: float, d_end: float | None, dj: float, ds: float) -> float:
+def section_diameter(x: float, span: float, d_end: float | None, dj: float, ds: float,
+                     d_seal: float | None = None, reach: tuple[float, float] = (0.0, 0.0)) -> float:
     """The diameter [m] at axial position ``x`` of a shaft on bearings at 0 and ``span``: the
-    journal at a bearing, the overhung end outside the bearings (the journal where there is
-    none), the hub seat between them — the diameter the bending–torsion check takes there."""
+    journal at a bearing; outside the bearings the seal section within ``reach`` (m, outward
+    from bearing A, from bearing B) of the bearing's centre, the overhung end beyond it (from
+    the hub's inner edge on; the journal where there is no end); the hub seat between the
+    bearings — the diameter the bending–torsion check takes there."""
     if any(abs(x - xb) < 1e-12 for xb in (0.0, span)):
         return dj
     if x < 0 or x > span:
-        return d_end if d_end is not None else dj
+        if d_end is None:
+            return dj
+        out, r = (-x, reach[0]) if x < 0 else (x - span, reach[1])
+        return d_seal if d_seal is not None and out < r - 1e-12 else d_end
     return ds
+
+
+def seal_diameter(d_end: float, dj: float | None = None) -> float:
+    """The seal section next to an overhung end [m]: 1.14 d_end (a shoulder h ≈ 0.07 d that
+    locates the hub) rounded up to the standard series, at most the journal ``dj``."""
+    series = cat.shaft_diameter_series()
+    d = st.standard_diameter(1.14 * d_end, series) if 1.14 * d_end <= series[-1] else 1.14 * d_end
+    return min(d, dj) if dj is not None else d
 
 
 def _phi_d(s, is_open: bool) -> float:
@@ -441,7 +462,7 @@ def _driving_worm(info):
                  and i["driving"]), None)
 
 
-def _statics(span, info, T, scale=None):
+def _statics(span, info, T, scale=None, stations=()):
     loads = []
     for i in _load_order(info):
         f = dict(i["fields"])
@@ -452,7 +473,8 @@ def _statics(span, info, T, scale=None):
             f = {k: (v * c if k != "r" else v) for k, v in f.items()}
         loads.append(st.PointLoad(i["x"], **f))
     xs = [p.x for p in loads] or [0.0, span]
-    res = st.shaft_check(span, loads, T, 1.0, 1.0, 0.6, (min(xs), max(xs)) if len(xs) > 1 else None)
+    res = st.shaft_check(span, loads, T, 1.0, 1.0, 0.6, (min(xs), max(xs)) if len(xs) > 1 else None,
+                         stations)
     return loads, res
 
 
@@ -537,16 +559,6 @@ def _evaluate(dp, j, sh, info, span, T, res, life_res, mat, dims, bearing_fixed,
               T_of, allow_of, key_length):
     """Every check of shaft j with the diameters ``dims`` = (d_end, journal, seat)."""
     d_end, dj, ds = dims
-
-    def diameter_at(x):
-        return section_diameter(x, span, d_end, dj, ds)
-
-    pre = [i["x"] for i in info if T_of(i) < T]     # hubs on the motor side of the flywheel
-
-    def torque_at(x, t):
-        return min(t, sh.torque) if any(abs(x - xp) < 1e-12 for xp in pre) else t
-
-    bend, crit, dcrit = st.shaft_stepped_check(res, diameter_at, mat.sigma_minus1b_allow, 0.6, torque_at)
     bearing = life = static = None
     pl = (0.0, 0.0)
     if bearing_fixed is not None:
@@ -566,13 +578,61 @@ def _evaluate(dp, j, sh, info, span, T, res, life_res, mat, dims, bearing_fixed,
                 break
     flagged = _keys(info, d_end, ds, T_of, allow_of, key_length)
     keys = [k for k, _ in flagged]
+    # the overhung end's steps (review41 B): between an overhung hub and its bearing the shaft
+    # is the end (to the hub's inner edge) and then the seal section (to the bearing's outer
+    # face), which carry almost the bearing's moment on a smaller diameter than the journal
+    seal = seal_diameter(d_end, dj) if d_end is not None else None
+    reach, stations, pre_x = _end_steps(info, keys, d_end, span, bearing, T_of, T)
+    if stations:
+        res = _statics(span, info, T, stations=stations)[1]
+
+    def diameter_at(x):
+        return section_diameter(x, span, d_end, dj, ds, seal, reach)
+
+    pre = [i["x"] for i in info if T_of(i) < T] + pre_x    # on the motor side of the flywheel
+
+    def torque_at(x, t):
+        return min(t, sh.torque) if any(abs(x - xp) < 1e-12 for xp in pre) else t
+
+    bend, crit, dcrit = st.shaft_stepped_check(res, diameter_at, mat.sigma_minus1b_allow, 0.6, torque_at)
     end_keys_ok = all(k.check.passed for k, inside in flagged if not inside)
     in_keys_ok = all(k.check.passed for k, inside in flagged if inside)
     outside = crit.x < 0 or crit.x > span
     return dict(bend=bend, crit=crit, dcrit=dcrit, bearing=bearing, pl=pl, life=life, static=static, keys=keys,
+                res=res, seal=seal, reach=reach,
                 bad_end=d_end is not None and ((not bend.passed and outside) or not end_keys_ok),
                 bad_in=((not bend.passed and not outside) or bearing is None or not in_keys_ok
                         or (life is not None and not life.passed) or (static is not None and not static.passed)))
+
+
+def _end_steps(info, keys, d_end, span, bearing, T_of, T):
+    """The sections where an overhung end steps: (reach, stations, stations on the motor side
+    of the flywheel). For each overhung hub, its inner edge (half the hub's length, the key
+    joint's hub or the rule's 1.2 d, from its load towards the bearing) and the bearing's
+    outer face (half its width from its centre); ``reach`` = (A side, B side): how far the
+    seal section reaches outward from each bearing's centre (0: no overhung end there)."""
+    if d_end is None:
+        return (0.0, 0.0), [], []
+    face = 0.5 * bearing.B if bearing is not None else 0.0
+    reach = [0.0, 0.0]
+    stations, pre = [], []
+    hubs = {k.element: k.hub for k in keys}
+    for i in info:
+        if i["inside"]:
+            continue
+        hub = hubs.get(i["name"], max(i["width"], 1.2 * d_end))
+        left = i["x"] < 0
+        xb = 0.0 if left else span
+        a = abs(i["x"] - xb)
+        edge = max(a - 0.5 * hub, face)
+        side = 0 if left else 1
+        reach[side] = edge if reach[side] == 0.0 else min(reach[side], edge)
+        sign = -1.0 if left else 1.0
+        xs = [xb + sign * edge] + ([xb + sign * face] if face < edge - 1e-12 else [])
+        stations += xs
+        if T_of(i) < T:
+            pre += xs
+    return (reach[0], reach[1]), stations, pre
 
 
 def shaft_designs(dp, designs, shafts, peak_factor, peak_from_shaft, kinds,
@@ -667,7 +727,7 @@ def shaft_designs(dp, designs, shafts, peak_factor, peak_from_shaft, kinds,
             if overhung:
                 d_end = (fixed.end if fixed and fixed.end else couple[5] if couple
                          else st.standard_diameter(d_min, series_d))
-            seal = st.standard_diameter(1.14 * d_end, series_d) if d_end is not None else 0.0
+            seal = seal_diameter(d_end) if d_end is not None else 0.0
             if fixed and fixed.bearing and not fixed.journal:
                 dj = cat.bearing(fixed.bearing).d
             elif fixed and fixed.journal:
@@ -689,13 +749,13 @@ def shaft_designs(dp, designs, shafts, peak_factor, peak_from_shaft, kinds,
                 bad_end, bad_in = ev["bad_end"], ev["bad_in"]
                 if bad_end and free_end:
                     new = st.standard_diameter(d_end * (1 + 1e-6) + 1e-6, series_d)
-                    if free_j and _round_up(st.standard_diameter(1.14 * new, series_d), 0.005) > JOURNAL_MAX + 1e-9:
+                    if free_j and _round_up(seal_diameter(new), 0.005) > JOURNAL_MAX + 1e-9:
                         # the journal could not follow the end (its seal) within the catalogue
                         steps.append(("top", (dj, ds), (dj, ds), _kinds(ev)))
                         break
                     steps.append(("end", d_end, new, _kinds(ev)))
                     d_end = new
-                    seal = st.standard_diameter(1.14 * d_end, series_d)
+                    seal = seal_diameter(d_end)
                     if free_j and dj < seal:
                         dj = round(_round_up(seal, 0.005), 6)
                         # (an integral worm's root stays: the worm sets it, not the journal)
@@ -726,7 +786,7 @@ def shaft_designs(dp, designs, shafts, peak_factor, peak_from_shaft, kinds,
             free_ev, free_dims, _, _ = design(None)
             advice = _advice(ch, ev, dims, free_ev, free_dims)
         d_end, dj, ds = dims
-        res = replace(res, check=ev["bend"])
+        res = replace(ev["res"], check=ev["bend"])
         # the collar locates the hub; on a worm shaft the bearings (the worm is the shaft)
         seated = dj if integral else ds
         shoulder = (st.standard_diameter(1.14 * seated, series_d) if seated * 1.14 <= series_d[-1]
@@ -767,7 +827,7 @@ def shaft_designs(dp, designs, shafts, peak_factor, peak_from_shaft, kinds,
                                tuple(i["name"] for i in _load_order(info)), res, ev["bearing"], ev["pl"], tuple(checks),
                                mat.key, a0, d_end, shoulder, (lf / peak_factor) if peak else 1.0,
                                (life_res.FrA, life_res.FrB), tuple(ev["keys"]), tuple(steps), advice,
-                               coupling, integral))
+                               coupling, integral, ev["seal"], ev["reach"]))
     return tuple(out)
 
 
@@ -994,6 +1054,8 @@ def _steps(sh, mat, a0, d_min, dims, shoulder, T, peak, peak_factor, lf, ev, spa
                        dmin="$d_{min}$"))
     elif d_end is not None:
         lay.append(Msg(N_("overhung end {d} (the standard size ≥ {dmin})"), d=_mmf(d_end), dmin="$d_{min}$"))
+    if d_end is not None:
+        lay.append(Msg(N_("seal section {d} (1.14 × the end, the standard size)"), d=_mmf(ev["seal"])))
     lay += [Msg(N_("journals {d} (bearing bore, a multiple of 5)"), d=_mmf(dj)),
             Msg(N_("worm root circle {d}"), d=_mmf(ds)) if worm is not None else
             Msg(N_("seat {d} (journal + 5)"), d=_mmf(ds)), Msg(N_("collar {d} (h ≈ 0.07 d)"), d=_mmf(shoulder))]
