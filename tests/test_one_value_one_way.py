@@ -85,9 +85,6 @@ OPEN: dict[tuple[str, str, str], str] = {
     ("shaper_lengths", "204.1", "204.13"): "J_F: m = 816.52 kg needs 204.13 (open, see above)",
     ("die_cutter", "124", "123.67"): "the face width b = 124 mm beside d₁ = 123.67 mm",
     ("die_cutter", "198", "197.88"): "the face width b = 198 mm beside d₁ = 197.88 mm",
-    ("die_cutter", "1.281", "1.2807"): "the crank shaft's T (N·mm) in its key checks: each key's chain "
-                                       "carries the digits its printed stress needs (open; shaft39's "
-                                       "crank key beside the gear seat's key)",
     # the table of every position keeps its columns' decimals (render/fmt.py), the worked
     # position's formulas 4 significant digits
     ("shaper", "0.200", "0.2004"): "position table (3 decimals) beside the worked position 4",

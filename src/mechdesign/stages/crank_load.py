@@ -43,6 +43,9 @@ class CrankLoad:
                          "load of the crank: (mean |F|³)^(1/3) over the uniform samples)")
     others: tuple = q("", "the other parts on the crank's shaft whose loads the brief does not give "
                       "(messages): named in the shaft's design steps", default=())
+    count: int = q("1", "identical linkages side by side, in phase, each with its crank on this shaft "
+                   "(2: one overhung beyond each bearing); each crank carries 1/count of F, of the "
+                   "life load and of the torque", default=1)
 
 
 def crank_joint(model) -> str:

@@ -437,9 +437,12 @@ def _place(dp, j, designs, kinds, weight=None, crank=None):
     if crank is not None:
         # the crank on its shaft: its frame reaction, a radial load overhung beyond the
         # bearings (no drive stage: no key is designed for it); the plane is set by the caller
-        info.append(dict(k=None, design=None, driving=False, name="crank", inside=False,
-                         fields=dict(Fh=float(crank.F)), life_fields=dict(Fh=float(crank.life)),
-                         width=0.0, hub_mat="steel"))
+        # (two identical linkages side by side: a crank beyond each bearing, each with half)
+        for _ in range(crank.count):
+            info.append(dict(k=None, design=None, driving=False, name="crank", inside=False,
+                             fields=dict(Fh=float(crank.F) / crank.count),
+                             life_fields=dict(Fh=float(crank.life) / crank.count),
+                             width=0.0, hub_mat="steel"))
     inside_width = sum(i["width"] for i in info if i["inside"]) or 0.05
     # a worm's shaft: the span its deflection check takes (0.9 d2), not the worm's width + 2 ×
     # 60 mm (the furnace drive's 180 mm against the deflection check's 79 mm)
@@ -685,18 +688,24 @@ def shaft_designs(dp, designs, shafts, peak_factor, peak_from_shaft, kinds,
         worm_here = _driving_worm(info)
         worm_root = (round(de.worm_root_diameter(worm_here.geometry), 9) if worm_here is not None and all(
             i["design"] is worm_here for i in info if i["inside"]) else None)
+        # the torque the sections carry: two cranks (two linkages side by side, one beyond each
+        # bearing, the drive's gear between them) take half of it each, and every section
+        # carries half; the gear's hub the whole
+        Tsec = T / cr.count if cr is not None else T
         if cr is not None:
-            _worst_plane(span, info, T)
-        loads, res = _statics(span, info, T)
-        _, life_res = _statics(span, info, T * lf / boost if peak else T, scale)
+            _worst_plane(span, info, Tsec)
+        loads, res = _statics(span, info, Tsec)
+        _, life_res = _statics(span, info, Tsec * lf / boost if peak else Tsec, scale)
         overhung = any(not i["inside"] for i in info)
         series = ("302", "303") if j in worm_shafts else ("62", "63")
         sp_lo, _ = cat.key_allowable_stress("steel", "light_shock")
         ci_lo, _ = cat.key_allowable_stress("cast_iron", "light_shock")
 
-        def T_of(i, j=j, sh=sh, T=T):
+        def T_of(i, j=j, sh=sh, T=T, Tsec=Tsec):
             # the element before the flywheel sees the motor side's mean torque (the flywheel
-            # itself, k None, the shaft's design torque)
+            # itself, k None, the shaft's design torque; a crank its share)
+            if i["name"] == "crank":
+                return Tsec
             return sh.torque if (peak_from_shaft is not None and i["k"] is not None
                                  and i["k"] < peak_from_shaft) else T
 
@@ -744,7 +753,7 @@ def shaft_designs(dp, designs, shafts, peak_factor, peak_from_shaft, kinds,
             kl = fixed.key_length if fixed else None
             ev = None
             for it in range(60):
-                ev = _evaluate(dp, j, sh, info, span, T, res, life_res, mat, (d_end, dj, ds),
+                ev = _evaluate(dp, j, sh, info, span, Tsec, res, life_res, mat, (d_end, dj, ds),
                                fixed.bearing if fixed else None, series, peak, T_of, allow_of, kl)
                 bad_end, bad_in = ev["bad_end"], ev["bad_in"]
                 if bad_end and free_end:
@@ -815,7 +824,7 @@ def shaft_designs(dp, designs, shafts, peak_factor, peak_from_shaft, kinds,
                             coupling, motor, flywheel=peak_from_shaft != 0,
                             worm=worm_here if integral else None)
         if cr is not None:
-            head = head + [_crank_step(cr, info, span)]
+            head = head + [_crank_step(cr, info, span, Tsec)]
             if cr.others:
                 names = Join(Msg.pgettext("list", ", "), list(cr.others))
                 head.append(_step(N_("{names} on this shaft are not loaded in this check: the brief gives no "
@@ -859,24 +868,51 @@ def _coupling(couple, d_end: float, motor) -> tuple[CouplingChoice, list]:
 def _worst_plane(span, info, T):
     """Put the crank's force (and its life-case force) in the plane and sense — ±horizontal,
     ±vertical — that give the largest equivalent moment M_ca over the stations."""
-    i = next(i for i in info if i["name"] == "crank")
-    F, Fl = i["fields"]["Fh"], i["life_fields"]["Fh"]
+    cranks = [i for i in info if i["name"] == "crank"]     # in phase: one plane and sense for all
+    F, Fl = cranks[0]["fields"]["Fh"], cranks[0]["life_fields"]["Fh"]
+
+    def put(plane, sign):
+        for i in cranks:
+            i["fields"], i["life_fields"] = {plane: sign * F}, {plane: sign * Fl}
+
     best = None
     for plane in ("Fh", "Fv"):
         for sign in (1.0, -1.0):
-            i["fields"], i["life_fields"] = {plane: sign * F}, {plane: sign * Fl}
+            put(plane, sign)
             m = _statics(span, info, T)[1].critical.Mca
             if best is None or m > best[0] + 1e-9 * max(m, 1.0):
                 best = (m, plane, sign)
-    _, plane, sign = best
-    i["fields"], i["life_fields"] = {plane: sign * F}, {plane: sign * Fl}
+    put(best[1], best[2])
 
 
-def _crank_step(cr, info, span) -> dict:
+def _crank_step(cr, info, span, Tsec) -> dict:
     """The design step that states the crank's load: where it sits, the governing crank angle,
-    the force and how it was found."""
-    x = next(i["x"] for i in info if i["name"] == "crank")
+    the force and how it was found (with two linkages side by side: both cranks, each with half
+    the force and of the torque, ``Tsec`` the sections' torque)."""
+    xs = [i["x"] for i in info if i["name"] == "crank"]
+    x = xs[0]
     side = "B" if x > span else "A"
+    if cr.count == 2:
+        return _step(N_("the two cranks on this shaft (design assumption: two identical linkages side by side lift the "
+                        "platen in phase, a crank overhung {a} mm beyond each bearing, at $x$ = {x} mm and {x2} mm) "
+                        "load it with the frame reaction of the planar analysis, the sum of the two linkages', "
+                        "half on each; {sigma} grows with it at every section, so its largest magnitude over the "
+                        "cycle governs: {F} N at crank angle $\\varphi$ = {phi}° from position 1 ({Fx} N, {Fy} N; "
+                        "{Mb} N·m there), found exactly (the kinetostatics solved at any $\\varphi$ between the "
+                        "resistances' jumps, the samples' local maxima refined by Brent's bounded search, each "
+                        "piece's ends taken one-sided; the largest sample: {grid} N): {half} N on each crank, taken "
+                        "in the plane and sense of the largest moment (the reducer's orientation about the shaft is "
+                        "not in the brief); the bearing life takes the cube mean over the cycle, {life} N on each; "
+                        "each crank takes half the torque, so the sections carry {Th} N·m (the gear's hub the whole)"),
+                     a=_mmf(abs(x - (span if x > span else 0.0)), 0),
+                     x=_mmf(min(xs), 0).replace("-", "\u2212"), x2=_mmf(max(xs), 0),
+                     sigma="$\\sigma_{ca}$", F=f"$|F_{{{cr.joint}}}|$ = {_text_num(round(cr.F))}",
+                     phi=f"{math.degrees(cr.phase):.2f}",
+                     Fx=f"$F_x$ = {_text_num(round(cr.Fx))}".replace("-", "\u2212"),
+                     Fy=f"$F_y$ = {_text_num(round(cr.Fy))}".replace("-", "\u2212"),
+                     Mb=f"$M_b$ = {_sig(cr.torque if abs(cr.torque) > 1e-9 * max(abs(cr.F), 1.0) else 0.0, 4)}",
+                     grid=_text_num(round(cr.grid_max)), half=_text_num(round(cr.F / 2)),
+                     life=_text_num(round(cr.life / 2)), Th=f"$T/2$ = {_sig(Tsec, 4)}")
     return _step(N_("the crank on this shaft (design assumption: overhung {a} mm beyond bearing {side}, at "
                      "$x$ = {x} mm) loads it with the frame reaction on the crank; {sigma} grows with it at "
                      "every section, so its largest magnitude over the cycle governs: {F} N at crank angle "

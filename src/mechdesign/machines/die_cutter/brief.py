@@ -121,6 +121,11 @@ class TogglePress(StrictModel):
         "y_D(ε + ψ) are computed from them"))
     crank_rotation: Literal["cw", "ccw"] = Field("cw", description=(
         "Sense of rotation of the distribution shaft (crank) seen on the drawing: cw or ccw"))
+    linkages: Literal[1, 2] = Field(1, description=(
+        "Identical toggle linkages side by side lifting the platen, in phase: 1, or 2 (one at each "
+        "side of the platen, a crank overhung beyond each bearing of the distribution shaft). The "
+        "planar analysis is that of one linkage carrying the whole resistance (the sum of the "
+        "two); with 2, each crank carries half of the frame reaction and of the torque"))
     transmission_angle_min_deg: float = Field(40.0, gt=0, lt=90, description=(
         "Allowed minimum transmission angle of the crank-rocker [°] (textbook 40)"))
     pressure_angle_max_deg: float = Field(30.0, gt=0, lt=90, description=(
@@ -402,6 +407,7 @@ class DieCutterParams:
     table_height: float         # [m]
     clearance: float            # [m]
     pressing_travel: float      # [m]
+    linkages: int               # toggle linkages side by side (each crank: 1/linkages of the load)
     cut_length: float           # [m]
     specific_resistance: float  # [N/m]
     cutting_force: float        # F = L·q [N]
@@ -439,6 +445,7 @@ def die_cutter_to_si(b: DieCutterBrief) -> DieCutterParams:
         board_thickness=b.production.board_thickness_mm * mm,
         table_height=b.production.table_height_mm * mm,
         clearance=b.press.clearance_mm * mm, pressing_travel=b.pressing_travel_mm * mm,
+        linkages=b.press.linkages,
         cut_length=b.cutting.cut_length_m,
         specific_resistance=b.cutting.specific_resistance_N_per_mm * 1e3,
         cutting_force=force, platen_mass=b.masses.platen_kg,

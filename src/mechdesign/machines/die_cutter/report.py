@@ -198,6 +198,11 @@ def _choice_rows(b, p, r, _) -> list[list[str]]:
          {"extended": _("extended"), "folded": _("folded")}[pr.top_position],
          _("the rocker is slow near its extreme; with the straight toggle the platen all "
            "but dwells near the top")],
+        ["—", _("toggle linkages side by side"), f"{pr.linkages}",
+         _("one at each side of the platen, in phase: the planar analysis below is that of one "
+           "linkage carrying the whole resistance (the sum of both); each crank on the "
+           "distribution shaft takes half of its force and of the torque") if pr.linkages == 2 else
+         _("the planar analysis below carries the whole resistance")],
         ["$F_c$", _("cutting force"), f"{F_kN} kN",
          _("total rule length L = {cut_length_m} m (estimate) × resistance per mm of rule "
             "q = {specific_resistance_N_per_mm} N/mm (assumed)", cut_length_m=f(ct.cut_length_m, 1),

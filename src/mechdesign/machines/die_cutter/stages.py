@@ -28,7 +28,7 @@ Coordinates: C at the origin, y up; SI units throughout.
 """
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 from ...core.extremes import brentq
@@ -412,8 +412,8 @@ def _crank(r: dict) -> dict:
     # the gripper cam and the incomplete gear share the distribution shaft; the brief gives
     # no spring force nor feed resistance for them: named in the shaft's steps, not loaded
     others = (Msg(N_("the gripper cam")), Msg(N_("the incomplete gear")))
-    return {len(r["params"].drive.stages): crank_load(r["press_model"], r["press"], r["press_forces"],
-                                                      others)}
+    load = crank_load(r["press_model"], r["press"], r["press_forces"], others)
+    return {len(r["params"].drive.stages): replace(load, count=r["params"].linkages)}
 
 
 @dataclass(frozen=True)
