@@ -553,6 +553,13 @@ def summary_context(machine: str, document: dict, ctx: dict, lang: str, title: s
             if not any(name in w for w in findings):
                 watch.append(_("{group}: {name} FAILS.", group=g["group"], name=name))
     watch += findings
+    # the handbook values used without a public copy to confirm them (the drive chapter's
+    # "Data assumptions"): the summary must not read as nothing to act on (page review 41)
+    unconfirmed = sum(len(v.get("data_assumptions") or ()) for v in document.values() if isinstance(v, dict))
+    if unconfirmed:
+        watch.append(_("The drive design used {n} handbook data that could not be checked against a public "
+                       "copy of their source (listed under “Data assumptions”): verify them in the handbook "
+                       "before handing in.", n=unconfirmed))
     total = sum(int(g["count"]) for g in groups)
     failed = sum(len(g["failed"]) for g in groups)
     return {"title": md_text(title) if title else "", "parts": _designed(document, lang),
@@ -560,7 +567,7 @@ def summary_context(machine: str, document: dict, ctx: dict, lang: str, title: s
             "checks_total": total, "checks_failed": failed, "all_passed": failed == 0,
             # all checks passed, yet the run found design problems no check covers (an
             # undercut gear): the verdict sentence must not read as a clean bill
-            "passed_with_findings": failed == 0 and bool(findings),
+            "passed_with_findings": failed == 0 and bool(findings or unconfirmed),
             "has_checks": bool(groups),
             "watch": watch}
 
