@@ -279,6 +279,16 @@ def design_drive(dp, machine_power: float, output_rpm: float, source: str,
                    "it hardly reduces the speed; give it a larger ratio or leave the stage out."),
                 field=f"drive.stages[{st.index}]", n=st.index + 1,
                 name=Named("transmissions", st.kind), i=st.ratio, lo=lo, hi=hi))
+        elif st.type != "coupling" and st.ratio > hi * (1 + 1e-9):
+            # allowed (within the maximum), yet the drive chapter says it is beyond the
+            # recommended range: the summary names it (page review 41, the slotter's belt 5.06)
+            warnings.append(finding(
+                "stage_ratio",
+                N_("stage {n} ({name}) ratio {i:.3f} is beyond its recommended range {lo:g}–{hi:g}, "
+                   "within its maximum {imax:g}: the stage is larger than usual; the drive chapter "
+                   "says why this motor was chosen."),
+                field=f"drive.stages[{st.index}]", n=st.index + 1,
+                name=Named("transmissions", st.kind), i=st.ratio, lo=lo, hi=hi, imax=el.ratio_max))
     warnings.extend(undercut_findings(results))
     warnings.extend(tooth_findings(results))
     return DriveResult(output_rpm, machine_power, source, eta, p_d, choice, tuple(results),
