@@ -970,7 +970,13 @@ def _group_moments(fg, mu_l, lang: str, least: dict, shown: dict,
                                                           _num(m.result))
                 own = [k for k in fg.moments if k.unknown == "Mb" and not k.arm]
                 if own:
-                    _l, _t, cpls, psum0 = _moment_tex(own[0], lambda s_: True, least, None)
+                    # its forces with the digits whose products give the M_b the text and the
+                    # comparison table print (_num: −44.4), not fewer (the slotter's 1137 ×
+                    # 19.5 gave −44.343 beside −44.4 in the text; page review 41)
+                    c0 = sum(t.value for t in own[0].terms if not t.arm)
+                    text_mb = _num(fg.balancing_torque)
+                    _l, _t, cpls, psum0 = _moment_tex(
+                        own[0], lambda s_: _gives(-(s_ * mu_l + c0), text_mb), least, None)
                     # M_b as its own equation's printed forces give it, with the decimals that
                     # give the printed P_b (−44.35, where M_b = −44.36: the forces are printed)
                     by_forces = -(psum0 * mu_l + cpls)
