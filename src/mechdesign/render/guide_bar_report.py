@@ -107,8 +107,13 @@ def task_words(p, syn) -> dict:
     guide = (N_("the ram guide's distance $L_{O_3M}$ is given.") if syn.guide_given else
              N_("the ram guide passes through the mid-point of the sagitta of the arc "
                 "described by the bar's end $B$."))
+    # all the link lengths given: nothing is synthesised (shaper_lengths; page review 41)
+    task = (N_("kinematics and kinetostatics") if syn.given_dimensions
+            else N_("synthesis and analysis"))
     zh = tr("zh")
     return {
+        "task_zh": zh(task),
+        "task_en": task,
         "driven_zh": zh(driven) if gear else "",
         "driven_en": driven if gear else "",
         "guide_zh": zh(guide),

@@ -523,6 +523,8 @@ def _designed(document: dict, lang: str) -> list[str]:
     for key, msgid in _PARTS:
         if not _has_part(document, key):
             continue
+        if key == "synthesis" and (document.get("synthesis") or {}).get("given_dimensions"):
+            continue          # every link length given: nothing synthesised (page review 41)
         if key in ("positions", "linkage") and not _forces_computed(document, key):
             msgid = N_("kinematic analysis")
         out.append(_(msgid))
