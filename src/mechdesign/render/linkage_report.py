@@ -514,11 +514,15 @@ def linkage_context(model, k, f_, fly, v, figures: dict, lang: str,
             ctx["fly"]["rim"] = {
                 "D": f(rim.diameter * 1e3, 0), "b": f(rim.width * 1e3, 1),
                 "Hr": f(rim.height * 1e3, 1), "m": f(rim.rim_mass, 2), "speed": f(rim.rim_speed, 2),
-                "hb": f(spec.height_to_width, 2),
+                "hb": f(spec.height_to_width, 2), "gamma": f(spec.specific_weight, 0, group=True),
                 "mass": (rf"m = \frac{{4 J_F}}{{D^2}} = \frac{{4 \times {j_mass}}}"
                          rf"{{{f(rim.diameter, 3)}^2}} = {f(rim.rim_mass, 2)}\ \text{{kg}}"),
-                "width": (rf"b = \sqrt{{\frac{{4 g J_F}}{{\pi D^3 (H/b) \gamma}}}} = "
-                          rf"{f(rim.width * 1e3, 1)}\ \text{{mm}}"),
+                # the numbers substituted, as the shaper's chapter writes them (page review 41:
+                # the press's γ, the rim material's specific weight, was never given a value)
+                "width": (rf"b = \sqrt{{\frac{{4 g J_F}}{{\pi D^3 (H/b) \gamma}}}} = \sqrt{{\frac{{4 \times "
+                          rf"{f(model.gravity, 2)} \times {sig(fly.inertia, group=False)}}}{{\pi \times "
+                          rf"{f(rim.diameter, 3)}^3 \times {f(spec.height_to_width, 2)} \times "
+                          rf"{f(spec.specific_weight, 0)}}}}} = {f(rim.width * 1e3, 1)}\ \text{{mm}}"),
             }
     return ctx
 
