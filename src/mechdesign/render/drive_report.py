@@ -504,7 +504,7 @@ def stage_designs(d, lang: str, gear_pair_last: bool = False) -> list[dict]:
             rows.append([_("seal section") + " $d_2$", f(sh.d_seal * MM, 0), unit_mm])
         rows += [[_("journal") + " $d_j$", f(sh.d_journal * MM, 0), unit_mm],
                  [_("worm root circle") + " $d_{f1}$" if sh.worm_integral else _("hub seat") + " $d_s$",
-                  f(sh.d_seat * MM, 0), unit_mm],
+                  _dia(sh.d_seat), unit_mm],
                  [_("collar") + " $d_c$", f(sh.d_shoulder * MM, 0), unit_mm],
                  [_("bearing span") + " $L$", f(sh.span * MM, 0), unit_mm],
                  [_("design torque") + " $T$", f(sh.torque, 1, group=True), "N·m"]]
@@ -546,7 +546,7 @@ def _critical_section(sh, c, _) -> str:
     text = _("Critical section (where $\\sigma_{{ca}}$, evaluated at every load and bearing section and "
              "where an overhung end steps, with the diameter there, is largest): $x$ = {x} mm ({where}), "
              "$d$ = {d} mm.",
-             x=minus(f(x * MM, 0)), where=where, d=f(d * MM, 0))
+             x=minus(f(x * MM, 0)), where=where, d=_dia(d))
     crit = sh.result.critical
     dm = sh.diameter_at(crit.x)
     if abs(x - crit.x) > 1e-9 and d < dm - 1e-12:
@@ -554,8 +554,16 @@ def _critical_section(sh, c, _) -> str:
         text += ("" if _.zh else " ") + _("Its bending moment ({M} N·m) is smaller than at $x$ = {xm} mm ({Mm} N·m), "
                         "but its diameter is smaller ({d} mm < {dm} mm), so $\\sigma_{{ca}}$ is larger.",
                         M=sig(moment) if moment else "0", xm=minus(f(crit.x * MM, 0)), Mm=sig(crit.M),
-                        d=f(d * MM, 0), dm=f(dm * MM, 0))
+                        d=_dia(d), dm=_dia(dm))
     return text
+
+
+def _dia(d: float) -> str:
+    """A section's diameter [m] in mm: whole as the standard series gives it, with its
+    decimal where it has one (a worm's root circle d_f1 = 30.4 mm; page review 41: the
+    table said 30 beside 30.4 in the design step and in the σ_ca line)."""
+    v = d * MM
+    return f(v, 0) if abs(v - round(v)) < 1e-6 else f(v, 1 if abs(v * 10 - round(v * 10)) < 1e-6 else 2)
 
 
 def _belt_design(r, g, title: str, _) -> dict:
