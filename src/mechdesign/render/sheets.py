@@ -187,10 +187,18 @@ def _diagram_builders(results: dict, found) -> list:
     return out
 
 
-def title_info(meta, drawing: str, number: str, index: int, count: int, lang: str) -> TitleInfo:
+def course_of(brief) -> str:
+    """The course a brief belongs to, as the title block names it: "design" for a drive
+    designed alone (machine ``drive``: the machine-design course), else "theory"."""
+    return "design" if getattr(brief, "machine", "") == "drive" else "theory"
+
+
+def title_info(meta, drawing: str, number: str, index: int, count: int, lang: str,
+               course: str = "theory") -> TitleInfo:
     """The title block's strings; the brief's text as one line each (a title block cell
-    holds one line; the backends print the text as written)."""
-    return TitleInfo(drawing=drawing, project=plain_line(meta_text(meta, "title", lang)),
+    holds one line; the backends print the text as written). ``course``: "theory" or
+    "design" (a drive alone: the machine-design course)."""
+    return TitleInfo(course=course, drawing=drawing, project=plain_line(meta_text(meta, "title", lang)),
                      student=plain_line(meta.student), student_id=plain_line(meta.student_id),
                      class_name=plain_line(meta.class_name), teacher=plain_line(meta.teacher),
                      date=plain_line(meta.date), number=plain_line(number), sheet_no=index,
@@ -263,7 +271,7 @@ def write_all(builders: list, brief, folder: Path, fig_dir: Path, lang: str,
         kinematic_only = getattr(build, "kinematic_only", False)
         title = sheet_title(name, build, lang)
         info = title_info(brief.report, title, f"{prefix}-{k:02d}" if prefix else "",
-                          k, len(builders), lang)
+                          k, len(builders), lang, course_of(brief))
         try:
             sheet = build(info, lang)
         except (ValueError, ArithmeticError) as exc:
