@@ -10,7 +10,7 @@ import numpy as np
 from ..stages.drive import shaft_numeral
 from ..i18n import N_, data_text, tr
 from ..stages.findings import Named, decode
-from .fmt import f, factor_for, grouped, md_text, percent, rpm, sci_tex, sentences, sig
+from .fmt import exact, f, factor_for, grouped, md_text, percent, rpm, sci_tex, sentences, sig
 
 MM = 1e3
 
@@ -534,15 +534,12 @@ def _critical_section(sh, c, _) -> str:
     from .fmt import minus
 
     x, d = c.inputs["x"], c.inputs["d"]
-    bearing = any(abs(x - xb) < 1e-12 for xb in (0.0, sh.span))
-    out = -x if x < 0 else x - sh.span
-    reach = sh.seal_reach[0] if x < 0 else sh.seal_reach[1]
-    loads = [ld.x for ld in sh.loads]
-    where = _("journal") if bearing or (sh.d_end is None and not 0 < x < sh.span) else (
-        (_("worm root circle") if sh.worm_integral else _("hub seat")) if 0 < x < sh.span
-        else _("seal section, at the bearing's outer face") if sh.d_seal is not None and out < reach - 1e-12
-        else _("overhung end, at the hub's inner edge") if not any(abs(x - xl) < 1e-12 for xl in loads)
-        else _("overhung end"))
+    kind = sh.section_at(x)
+    at_load = any(abs(x - ld.x) < 1e-12 for ld in sh.loads)
+    where = {"journal": _("journal"),
+             "seat": _("worm root circle") if sh.worm_integral else _("hub seat"),
+             "seal": _("seal section, at the bearing's outer face"),
+             "end": _("overhung end") if at_load else _("overhung end, at the hub's inner edge")}[kind]
     text = _("Critical section (where $\\sigma_{{ca}}$, evaluated at every load and bearing section and "
              "where an overhung end steps, with the diameter there, is largest): $x$ = {x} mm ({where}), "
              "$d$ = {d} mm.",
@@ -559,11 +556,10 @@ def _critical_section(sh, c, _) -> str:
 
 
 def _dia(d: float) -> str:
-    """A section's diameter [m] in mm: whole as the standard series gives it, with its
-    decimal where it has one (a worm's root circle d_f1 = 30.4 mm; page review 41: the
-    table said 30 beside 30.4 in the design step and in the σ_ca line)."""
-    v = d * MM
-    return f(v, 0) if abs(v - round(v)) < 1e-6 else f(v, 1 if abs(v * 10 - round(v * 10)) < 1e-6 else 2)
+    """A section's diameter [m] in mm as the design chose it (fmt.exact): whole from the
+    standard series, a worm's root circle with its decimal (d_f1 = 30.4 mm; page review 41:
+    the table said 30 beside 30.4 in the design step and in the σ_ca line)."""
+    return exact(d * MM, None, 2)
 
 
 def _belt_design(r, g, title: str, _) -> dict:

@@ -168,6 +168,10 @@ class ShaftDesign:
         return section_diameter(x, self.span, self.d_end, self.d_journal, self.d_seat, self.d_seal,
                                 self.seal_reach)
 
+    def section_at(self, x: float) -> str:
+        """The kind of section at axial position ``x`` [m] (:func:`section_kind`)."""
+        return section_kind(x, self.span, self.d_end, self.d_seal, self.seal_reach)
+
 
 def section_diameter(x: float, span: float, d_end: float | None, dj: float, ds: float,
                      d_seal: float | None = None, reach: tuple[float, float] = (0.0, 0.0)) -> float:
@@ -176,14 +180,22 @@ def section_diameter(x: float, span: float, d_end: float | None, dj: float, ds: 
     from bearing A, from bearing B) of the bearing's centre, the overhung end beyond it (from
     the hub's inner edge on; the journal where there is no end); the hub seat between the
     bearings — the diameter the bending–torsion check takes there."""
+    return {"journal": dj, "seal": d_seal, "end": d_end, "seat": ds}[
+        section_kind(x, span, d_end, d_seal, reach)]
+
+
+def section_kind(x: float, span: float, d_end: float | None, d_seal: float | None = None,
+                 reach: tuple[float, float] = (0.0, 0.0)) -> str:
+    """Which section is at axial position ``x`` (:func:`section_diameter`): "journal" at a
+    bearing (and outside the bearings where there is no end), "seal", "end", or "seat"."""
     if any(abs(x - xb) < 1e-12 for xb in (0.0, span)):
-        return dj
+        return "journal"
     if x < 0 or x > span:
         if d_end is None:
-            return dj
+            return "journal"
         out, r = (-x, reach[0]) if x < 0 else (x - span, reach[1])
-        return d_seal if d_seal is not None and out < r - 1e-12 else d_end
-    return ds
+        return "seal" if d_seal is not None and out < r - 1e-12 else "end"
+    return "seat"
 
 
 def seal_diameter(d_end: float, dj: float | None = None) -> float:
@@ -512,6 +524,13 @@ def _bearing_life(b, res, life_res, n_rpm, hours, peak):
     return (pA, pB), life, static
 
 
+def _hub_length(i, dk: float) -> float:
+    """The hub's length by the rule on a ``dk`` shaft [m]: the element's width, at least 1.2 d,
+    1.5 d for a pulley, a coupling, a sprocket or a crank (before a key asks for more)."""
+    kind = i["design"].kind if i["design"] is not None else i["name"]
+    return max(i["width"], 1.2 * dk, 1.5 * dk if kind in ("belt", "coupling", "chain", "crank") else 0.0)
+
+
 def _keys(info, d_end, d_seat, T_of, allow_of, key_length=None):
     """Flat keys at every hub: b × h by the diameter, L the longest standard ≤ hub − 8 mm;
     if the crushing check fails, a longer hub (up to 1.5 d), then two keys at 180°."""
@@ -524,8 +543,7 @@ def _keys(info, d_end, d_seat, T_of, allow_of, key_length=None):
             continue                      # the worm is cut on its shaft: no key
         dk = d_seat if i["inside"] or d_end is None else d_end
         key = cat.key_for_shaft(dk)
-        kind = d.kind if d is not None else i["name"]     # the crank's hub: 1.5 d, as a coupling's
-        base = max(i["width"], 1.2 * dk, 1.5 * dk if kind in ("belt", "coupling", "chain", "crank") else 0.0)
+        base = _hub_length(i, dk)
         T, allow = T_of(i), allow_of(i)
         choice = None
         if key_length is not None:
@@ -623,7 +641,7 @@ def _end_steps(info, keys, d_end, span, bearing, T_of, T):
     for i in info:
         if i["inside"]:
             continue
-        hub = hubs.get(i["name"], max(i["width"], 1.2 * d_end))
+        hub = hubs.get(i["name"], _hub_length(i, d_end))
         left = i["x"] < 0
         xb = 0.0 if left else span
         a = abs(i["x"] - xb)
@@ -892,6 +910,13 @@ def _crank_step(cr, info, span, Tsec) -> dict:
     xs = [i["x"] for i in info if i["name"] == "crank"]
     x = xs[0]
     side = "B" if x > span else "A"
+    found = dict(a=_mmf(abs(x - (span if x > span else 0.0)), 0),
+                 sigma="$\\sigma_{ca}$", F=f"$|F_{{{cr.joint}}}|$ = {_text_num(round(cr.F))}",
+                 phi=f"{math.degrees(cr.phase):.2f}",
+                 Fx=f"$F_x$ = {_text_num(round(cr.Fx))}".replace("-", "\u2212"),
+                 Fy=f"$F_y$ = {_text_num(round(cr.Fy))}".replace("-", "\u2212"),
+                 Mb=f"$M_b$ = {_sig(cr.torque if abs(cr.torque) > 1e-9 * max(abs(cr.F), 1.0) else 0.0, 4)}",
+                 grid=_text_num(round(cr.grid_max)))
     if cr.count == 2:
         return _step(N_("the two cranks on this shaft (design assumption: two identical linkages side by side lift the "
                         "platen in phase, a crank overhung {a} mm beyond each bearing, at $x$ = {x} mm and {x2} mm) "
@@ -904,15 +929,9 @@ def _crank_step(cr, info, span, Tsec) -> dict:
                         "in the plane and sense of the largest moment (the reducer's orientation about the shaft is "
                         "not in the brief); the bearing life takes the cube mean over the cycle, {life} N on each; "
                         "each crank takes half the torque, so the sections carry {Th} N·m (the gear's hub the whole)"),
-                     a=_mmf(abs(x - (span if x > span else 0.0)), 0),
                      x=_mmf(min(xs), 0).replace("-", "\u2212"), x2=_mmf(max(xs), 0),
-                     sigma="$\\sigma_{ca}$", F=f"$|F_{{{cr.joint}}}|$ = {_text_num(round(cr.F))}",
-                     phi=f"{math.degrees(cr.phase):.2f}",
-                     Fx=f"$F_x$ = {_text_num(round(cr.Fx))}".replace("-", "\u2212"),
-                     Fy=f"$F_y$ = {_text_num(round(cr.Fy))}".replace("-", "\u2212"),
-                     Mb=f"$M_b$ = {_sig(cr.torque if abs(cr.torque) > 1e-9 * max(abs(cr.F), 1.0) else 0.0, 4)}",
-                     grid=_text_num(round(cr.grid_max)), half=_text_num(round(cr.F / 2)),
-                     life=_text_num(round(cr.life / 2)), Th=f"$T/2$ = {_sig(Tsec, 4)}")
+                     half=_text_num(round(cr.F / 2)), life=_text_num(round(cr.life / 2)),
+                     Th=f"$T/2$ = {_sig(Tsec, 4)}", **found)
     return _step(N_("the crank on this shaft (design assumption: overhung {a} mm beyond bearing {side}, at "
                      "$x$ = {x} mm) loads it with the frame reaction on the crank; {sigma} grows with it at "
                      "every section, so its largest magnitude over the cycle governs: {F} N at crank angle "
@@ -922,14 +941,8 @@ def _crank_step(cr, info, span, Tsec) -> dict:
                      "sample: {grid} N); taken in the plane and sense of the largest moment (the reducer's "
                      "orientation about the shaft is not in the brief); the bearing life takes its cube mean "
                      "over the cycle, {life} N"),
-                 a=_mmf(abs(x - (span if x > span else 0.0)), 0), side=f"${side}$",
-                 x=_mmf(x, 0).replace("-", "\u2212"),
-                 sigma="$\\sigma_{ca}$", F=f"$|F_{{{cr.joint}}}|$ = {_text_num(round(cr.F))}",
-                 phi=f"{math.degrees(cr.phase):.2f}",
-                 Fx=f"$F_x$ = {_text_num(round(cr.Fx))}".replace("-", "\u2212"),
-                 Fy=f"$F_y$ = {_text_num(round(cr.Fy))}".replace("-", "\u2212"),
-                 Mb=f"$M_b$ = {_sig(cr.torque if abs(cr.torque) > 1e-9 * max(abs(cr.F), 1.0) else 0.0, 4)}", grid=_text_num(round(cr.grid_max)),
-                 life=_text_num(round(cr.life)))
+                 side=f"${side}$", x=_mmf(x, 0).replace("-", "\u2212"),
+                 life=_text_num(round(cr.life)), **found)
 
 
 _KIND_TEXT = {"shaft_bending": N_("bending–torsion"), "bearing_life": N_("bearing life"),
