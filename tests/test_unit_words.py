@@ -300,3 +300,15 @@ def test_the_degree_sign_follows_its_number(example_results, lang):
     assert not found, "\n".join(found[:8])
     word = "Swing" if lang == "en" else "摆角"
     assert re.search(word + r" \d+\.\d\d°[;；]", md)
+
+
+def test_a_unit_after_a_value_before_a_relation_stays_a_unit(tmp_path):
+    """A quantity's symbol before its relation is set italic ("K = 1.05"), but a unit word
+    after a value is no symbol: "$T_c = 0.9983$ N·m ≤ …" and "48 000 h → 6311" printed
+    "N·𝑚" and "ℎ" (page review 41). ISO 80000-1: unit symbols upright."""
+    typ = _filtered(tmp_path,
+        "so $T_c = 0.9983$ N·m ≤ $T_n$ = 16 N·m, the life reaches 48 000 h → 6311, "
+        "and K = 1.05 while 5 s = 5 s\n")
+    assert "N·m~≤" in typ and "N·$m$" not in typ, typ
+    assert "000~h~→" in typ and "$h$" not in typ, typ
+    assert "$K$~=~1.05" in typ                  # a symbol before its relation still italic

@@ -30,8 +30,11 @@ _STEP_SHOWN = {
         N_("{name_en}: $d$ = {d}, key {b}×{h}, hub {hub}, $L$ = {L}, two keys at 180°"),
     "keys (GB/T 1096, form A, L ≤ hub − 8 mm; a longer hub up to 1.5 d, then two keys when one "
     "fails): {keys}":
-        N_("keys (GB/T 1096, form A, $L$ ≤ hub − 8 mm; a longer hub up to 1.5 $d$, then two keys "
-           "when one fails): {keys}"),
+        # the hub rule in full: a worm wheel's hub of 60 mm on a 30 mm seat (its face width)
+        # read as beyond "a longer hub up to 1.5 d" (page review 41)
+        N_("keys (GB/T 1096, form A; hub: the part's width, at least 1.2 $d$, 1.5 $d$ for a pulley, "
+           "coupling, sprocket or crank; $L$ ≤ hub − 8 mm; where a key is crushed, a hub up to "
+           "1.5 $d$, then two keys): {keys}"),
 }
 
 

@@ -169,12 +169,14 @@ def _mm(x: float) -> str:
 
 def _len(x: float, scale: float | None = None, value: str | None = None) -> str:
     """A length of a polygon's table: a measured one (0.5 mm) to 0.1 mm; a known vector
-    drawn at its exact length (the crank's ω·l, a known force |F|/μF) to 0.01 mm or more,
-    so that length × ``scale`` gives the ``value`` listed (38.75 mm × 0.02 = 0.775 m/s, not
-    38.5 mm; 0.998 mm × 50 = 49.9 N, not 1.00 mm)."""
+    drawn at its exact length (the crank's ω·l, a known force |F|/μF): one of a millimetre or
+    more to 0.01 mm — a drawing is not more exact (shaper_lengths' F_I4 was written
+    "10.3466 mm" so that × 20 gave its 206.93 N; page review 41) — a shorter one with the
+    digits that make length × ``scale`` give the ``value`` listed (0.998 mm × 50 = 49.9 N,
+    not 1.00 mm)."""
     if abs(x * 2 - round(x * 2)) < 1e-9:
         return _mm(x)
-    for d in (2, 3, 4):
+    for d in ((2,) if abs(x) >= 1 else (2, 3, 4)):
         text = f"{x:.{d}f}"
         if scale is None or value is None or "times" in value or "×" in value or gives(
                 float(text) * scale, value.replace(GROUP, "")):
@@ -632,6 +634,10 @@ def _kin(poly, lang: str, unit: str, rate_name: str, links: dict | None = None,
                            "title": _group_title(eq.group, links or {}, lang)})
         g = groups[-1]
         g["eqs"].append(_eq_tex(eq))
+        # a point of a solved link (v_D = v_DO3 = ω3·l_O3D): one vector, one magnitude — the
+        # relative term's ω·l (page review 41: v_D 0.0870 printed beside v_DO3 0.0867)
+        same = (eq.right[0] if solved and len(eq.left) == 1 and len(eq.right) == 1
+                and eq.right[0].computed is not None else None)
         for t in list(eq.left) + list(eq.right):
             if t.symbol in g["seen"]:
                 continue
@@ -642,8 +648,9 @@ def _kin(poly, lang: str, unit: str, rate_name: str, links: dict | None = None,
             # a known magnitude as computed (ω²·l = 0.0312), drawn at the drawing's accuracy
             # (3.0 mm) and read back (0.0300) in the last column (review39: 0.0300 stood as
             # the magnitude a teacher recomputes as 0.0312)
+            shown = same.computed if same is not None and t is eq.left[0] else t.computed
             mag = "?" if not t.known or resultant else ("√" if t.direction == "known" else _numg(
-                t.read if t.computed is None else t.computed))
+                t.read if shown is None else shown))
             dirs = direction(t.direction, lang) if t.direction and not resultant else "?"
             if t.known and (t.direction == "known" or t.length == 0):
                 seg = length = value = "—"
@@ -1100,9 +1107,12 @@ def _compare(pos, lang: str, printed: dict[str, str] | None = None) -> list[list
         # difference is the printed values' (a teacher recomputes it from the row: "1.17 |
         # 1.17 | 0.0", not the 0.4 of the unrounded values; review38), a value with a power
         # of ten aside
-        diff = "—" if abs(c.analytic) < c.tolerance else f(100 * _printed_difference(
-            shown, analytic, c.difference), 1)
-        rows.append([name, c.unit, shown, analytic, diff, _numg(c.tolerance), mark])
+        small = abs(c.analytic) < c.tolerance
+        diff = "—" if small else f(100 * _printed_difference(shown, analytic, c.difference), 1)
+        # the allowance in % of the analytic value, like the difference beside it (an absolute
+        # allowance next to a difference in % read as a false PASS: page review 41)
+        allowed = "—" if small else f(100 * c.tolerance / abs(c.analytic), 1)
+        rows.append([name, c.unit, shown, analytic, diff, allowed, mark])
     return rows
 
 

@@ -413,6 +413,11 @@ def linkage_context(model, k, f_, fly, v, figures: dict, lang: str,
                + [max(abs(r.working), abs(r.returning)) for r in model.resistances], default=0.0)
     kilo, force_unit_ = force_unit(peak)
     force_digits = 2 if force_unit_ == "kN" else 1
+    # M_b to one decimal count per column: four significant digits of its largest value, at
+    # least one decimal, at most three (die_cutter: 7 762.0 and 2.4, not 7762.013 and 2.384;
+    # a crank-rocker's 0.518 keeps its three)
+    mb_peak = float(np.max(np.abs(f_.balancing_torque))) if len(f_.balancing_torque) else 0.0
+    mb_digits = 3 if mb_peak <= 0 else min(3, max(1, 3 - int(np.floor(np.log10(mb_peak)))))
     for i, label in enumerate(labels):
         j = n + i
         kin_rows.append([label, f(k.phase[j] * DEG, 2), f((k.crank_angle[j] * DEG) % 360, 2),
@@ -420,7 +425,7 @@ def linkage_context(model, k, f_, fly, v, figures: dict, lang: str,
                         + [f(q.values[j] * DEG, 2) for q in k.quality])
         force_rows.append([label] + [f(abs(f_.reactions[nm][j]) / kilo, force_digits, group=True)
                                      for nm in reaction_names]
-                          + [f(f_.balancing_torque[j], 3, group=True)])
+                          + [f(f_.balancing_torque[j], mb_digits, group=True)])
         point_rows.append([label] + [f"({f(k.points[p][j].real * 1e3, 1)}, "
                                      f"{f(k.points[p][j].imag * 1e3, 1)})" for p in point_names])
     link_speed_rows = []
@@ -450,7 +455,11 @@ def linkage_context(model, k, f_, fly, v, figures: dict, lang: str,
         window = "—"
         if r.active is not None:
             window = f"{f(r.active[0] * scale, 1)} – {_with_unit(f(r.active[1] * scale, 1), units[0])}"
-        res_rows.append([f"R{i + 1}", md_point(r.point), md_text(r.link), f(r.direction * DEG, 1),
+        res_rows.append([f"R{i + 1}", md_point(r.point), md_text(r.link),
+                         # a line's angle, in [0°, 180°): the force's sense is the motion's
+                         # opposite (slotter: "−90.0" under "Direction" read as downwards while
+                         # the cut is resisted upwards; page review 41)
+                         f((r.direction * DEG) % 180.0, 1),
                          f(r.working / kilo, force_digits, group=True),
                          f(r.returning / kilo, force_digits, group=True), window])
     mass_rows = [[md_text(b.link), md_point(b.com), f(b.mass, 2), f(b.inertia, 4)]

@@ -145,6 +145,12 @@ local function italic_symbols(inlines)
       for _, r in ipairs(RELATIONS) do
         if rel.text == r then is_rel = true end
       end
+      -- a unit after a value is no symbol ("$T_c = 0.9983$ N·m ≤ …", "48 000 h → 6311"
+      -- set "N·𝑚", "ℎ": page review 41)
+      local before = inlines[i - 1] ~= nil and inlines[i - 1].t == "Space" and text_of(inlines[i - 2]) or nil
+      if is_rel and before ~= nil and ends_with_number(before) and starts_with_unit(el.text) then
+        is_rel = false
+      end
       if is_rel then
         local prefix, letter = symbol_split(el.text)
         if letter ~= nil then

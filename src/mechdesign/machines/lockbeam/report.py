@@ -85,8 +85,10 @@ def grashof_sentence(a: float, b: float, c: float, d: float, lang: str) -> str:
     s_, l_ = order[0], order[-1]
     p_, q_ = order[1], order[2]
     lhs, rhs = names[s_] + names[l_], names[p_] + names[q_]
-    nums = (f"$s + l = {s_} + {l_}$ = {f(names[s_] * MM, 2)} + {f(names[l_] * MM, 2)} = {f(lhs * MM, 2)} mm, "
-            f"$p + q = {p_} + {q_}$ = {f(rhs * MM, 2)} mm")
+    # the list's comma in the report's language (a zh sentence had "mm, $p + q$")
+    comma = _.pgettext("clause", ", ")
+    nums = (f"$s + l = {s_} + {l_}$ = {f(names[s_] * MM, 2)} + {f(names[l_] * MM, 2)} = {f(lhs * MM, 2)} mm"
+            f"{comma}$p + q = {p_} + {q_}$ = {f(rhs * MM, 2)} mm")
     tol = 1e-9 * max(names.values())
     if abs(lhs - rhs) <= tol:
         return (_("{nums}, equal: a change-point linkage, with a position where all four links "
@@ -598,6 +600,9 @@ def _rounded(b, ds, step: float, lang: str):
             "beta1": f(np.mod(rc.beta1, 2 * np.pi) * DEG, 2), "swing": f(rc.swing * DEG, 2),
             "bend": f(rc.bend * DEG, 2), "gmin": f(rc.gamma_min * DEG, 2),
             "gmin_built": f((b.gamma_min_built if _built_is_drawn(b) else rc.gamma_min) * DEG, 2),
+            # the swing the built linkage works over (the cam's), beside its γ_min (63.25° at
+            # 24.42°, three lines after 63.29° at 24.40°: page review 41)
+            "swing_built": f((rc.input_swing_needed if _built_is_drawn(b) else b.input_swing) * DEG, 2),
             "needed": None if rc.input_swing_needed is None else f(rc.input_swing_needed * DEG, 2),
             "grashof": grashof_sentence(rc.input_rocker, rc.coupler, ds.output_rocker, ds.frame, lang),
             "step": f(step * MM, 0) if float(step * MM).is_integer() else sig(step * MM),

@@ -41,6 +41,10 @@ def _data_rows(b, p, _) -> list[list[str]]:
         ["$J_{S_3}$", _("rocker inertia"), f(ms.rocker_J_S3_kgm2, 3), "kg·m²"],
         ["$Q_{max}$", _("pressing force"), f(ld.pressing_force_Qmax_N, 0), "N"],
         ["$z_1, z_2$", _("gear teeth"), f"{p.z1}, {p.z2}", "—"],
+        # the pair's module and pressure angle with its teeth (page review 41: the data table
+        # gave z1, z2 alone; the cam's data are the cam chapter's own table)
+        ["$m$", _("gear module"), f"{b.gear_pair.module_mm:g}", "mm"],
+        ["$\\alpha$", _("gear pressure angle"), f"{b.gear_pair.pressure_angle_deg:g}", "°"],
         ["$[\\delta]$", _("speed fluctuation"), fluctuation(p.fluctuation), "—"],
     ]
 
