@@ -477,10 +477,9 @@ def _force_figure(path: Path, points: dict, length_scale: float, fg, members: di
                 seg[4].append(v.symbol)
         labels2 = []
         # each side's name offered on the polygon's outside first (its normal away from the
-        # middle of the polygon's vertices), then inside; the short sides' names placed
-        # first (they have the fewest places near their side; a long side has room)
+        # middle of the polygon's vertices), then inside
         middle = complex(np.mean([z.real for z in zs2]), np.mean([z.imag for z in zs2]))
-        for a, b, names, c, _symbols, pair in sorted(drawn, key=lambda d: abs(d[1] - d[0])):
+        for a, b, names, c, _symbols, pair in drawn:
             n = 1j * (b - a) / abs(b - a)
             if (n.conjugate() * ((a + b) / 2 - middle)).real < 0:
                 n = -n
@@ -546,8 +545,9 @@ FORCE_MINOR, FORCE_PAD = 0.6, 0.18
 
 #: The least gap [pt] between two force names of a force polygon: names two points apart
 #: read as one stack of text on the page, where the figure is printed at about 70 %
-#: (page review of session 43: press Fig. 9, furnace_pusher Figs 9–10).
-FORCE_LABEL_GAP = 4.5
+#: (page review of session 43: press Fig. 9, furnace_pusher Figs 9–10). More spreads the
+#: names of a cluster of short sides away from them (press Fig. 9's G₂, G₃, F_I2, F_I3).
+FORCE_LABEL_GAP = 4.2
 
 #: Where else along its side (fractions from its tail) a force polygon's name may stand
 #: than at the side's middle, where the names of the sides beside it leave no room.

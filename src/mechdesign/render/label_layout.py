@@ -102,7 +102,7 @@ def _head_segments(ax, heads, size_px: float) -> list:
 
 #: What a line between a label and its anchor costs with ``sight`` (see :func:`place`), as
 #: a distance from the anchor [pt].
-SIGHT = 15.0
+SIGHT = 10.0
 #: What moving a label's anchor along its side costs (see :class:`Label`), per pt moved [pt].
 ALONG = 0.5
 

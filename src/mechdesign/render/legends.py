@@ -223,6 +223,8 @@ def settle(fig) -> bool:
         return False
     for _round in range(ROUNDS):
         fig.tight_layout()
+        for ax in fig.axes:         # an equal-aspect axes takes its box when drawn
+            ax.apply_aspect()
         renderer = _renderer(fig)
         moved = False
         for ax in axes:
