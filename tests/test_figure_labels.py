@@ -517,3 +517,75 @@ def test_every_character_of_a_polygon_figure_is_in_its_font(example_results, mon
             missing |= {(name, ch) for ch in plain if ch.strip() == "" and ch not in " \n"
                         and face.get_char_index(ord(ch)) == 0}
     assert not missing, sorted(missing)[:5]
+
+
+# ---- force polygon names apart and by their sides (page review of session 43: press Fig. 9,
+# furnace_pusher Figs 9–10: names a few points apart read as one stack of text at print size)
+
+#: The least gap between two names of a force polygon [pt], measured on their drawn text
+#: boxes (the figure is printed at about 70 %: 4 pt is about 3 pt on the page).
+NAME_GAP = 4.0
+#: The farthest a name's box may lie from its side [pt].
+NAME_REACH = 40.0
+
+
+def _gap_pt(a, b, fig) -> float:
+    gx = max(a.x0 - b.x1, b.x0 - a.x1)
+    gy = max(a.y0 - b.y1, b.y0 - a.y1)
+    return max(gx, gy) * 72.0 / fig.dpi
+
+
+def _box_to_segment_pt(box, p, q, fig) -> float:
+    """Distance [pt] from a text box to the segment p–q (display coordinates), sampled."""
+    import numpy as np
+
+    t = np.linspace(0.0, 1.0, 201)[:, None]
+    pts = np.asarray(p) + t * (np.asarray(q) - np.asarray(p))
+    dx = np.maximum(np.maximum(box.x0 - pts[:, 0], pts[:, 0] - box.x1), 0.0)
+    dy = np.maximum(np.maximum(box.y0 - pts[:, 1], pts[:, 1] - box.y1), 0.0)
+    return float(np.min(np.hypot(dx, dy))) * 72.0 / fig.dpi
+
+
+@pytest.mark.parametrize("brief", _BRIEFS)
+def test_force_polygon_names_stand_apart_and_by_their_sides(example_results, monkeypatch,
+                                                           tmp_path, brief):
+    """In every force polygon: any two names at least NAME_GAP pt apart (their drawn text
+    boxes), and each name within NAME_REACH pt of an arrow of its colour through its anchor
+    (the side it names)."""
+    from matplotlib.colors import to_rgba
+
+    figs = _polygon_figures(example_results, monkeypatch, tmp_path, brief, "en")
+    bad = []
+    for name, fig in sorted(figs.items()):
+        if "_f" not in name:
+            continue
+        ax = fig.axes[1]
+        labels = _labels(ax)
+        LL.overlaps(ax, labels)                 # the layout the figure is saved with
+        renderer = LL._renderer(fig)
+        boxes = [(t, t.get_window_extent(renderer)) for t in labels]
+        for i, (ta, ba) in enumerate(boxes):
+            for tb, bb in boxes[i + 1:]:
+                g = _gap_pt(ba, bb, fig)
+                if g < NAME_GAP:
+                    bad.append(f"{name}: {ta.get_text()} {g:.1f} pt from {tb.get_text()}")
+        arrows = [t for t in ax.texts if getattr(t, "arrow_patch", None) is not None]
+        for t, box in boxes:
+            at = complex(*t.get_position())
+            sides = []
+            for a in arrows:
+                p, q = complex(*a.xyann), complex(*a.xy)
+                if to_rgba(a.arrow_patch.get_edgecolor()) != to_rgba(t.get_color()):
+                    continue
+                # the anchor on the side (within a millionth of its length)
+                d = q - p
+                if abs(d) and abs(((at - p) * d.conjugate()).imag) / abs(d) <= 1e-6 * abs(d) + 1e-12:
+                    sides.append((ax.transData.transform((p.real, p.imag)),
+                                  ax.transData.transform((q.real, q.imag))))
+            if not sides:
+                bad.append(f"{name}: {t.get_text()} on no side of its colour")
+                continue
+            reach = min(_box_to_segment_pt(box, p, q, fig) for p, q in sides)
+            if reach > NAME_REACH:
+                bad.append(f"{name}: {t.get_text()} {reach:.0f} pt from its side")
+    assert not bad, bad

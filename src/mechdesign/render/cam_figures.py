@@ -8,6 +8,7 @@ import numpy as np
 
 from ..i18n import N_
 from .figures import cached, figure
+from .legends import legend
 from .labels import LabelTable, mpl_label
 
 LABELS = LabelTable({
@@ -50,16 +51,42 @@ def _delta_axis(ax, segments, lab):
         ax.axvline(start, color="0.6", lw=0.5, ls=":")
 
 
+#: The curves of the motion diagrams: a rise in blue, a return in orange (the colours of
+#: their shading and of the figure's caption), the dwells and the jumps between segments
+#: in dark grey.
+SEGMENT_COLOURS = {"rise": "C0", "return": "C1"}
+DWELL_COLOUR = "0.25"
+
+
+def _interior(delta_deg, start: float, end: float, tol: float = 1e-6) -> np.ndarray:
+    """The cam angles strictly inside the segment start–end [°] (one that runs past 360°
+    continues from 0°): not its end points, where the curve may jump to its neighbour's
+    value."""
+    span = end - start
+    rel = (np.asarray(delta_deg) - start) % 360.0
+    if span >= 360.0 - tol:
+        return np.ones(len(rel), dtype=bool)
+    return (rel > tol) & (rel < span - tol)
+
+
 @cached
 def svaj(path: Path, lang: str, delta_deg, series, ylabels, segments, impulses=()):
     """Stacked displacement, velocity, acceleration and jerk against the cam angle.
     ``impulses`` = (δ [°], panel, sign): an infinite value there, drawn as an arrow "∞"."""
     lab = LABELS[lang]
+    delta_deg = np.asarray(delta_deg, dtype=float)
     with figure(path, len(series), (7.0, 7.4)) as axes:
         for ax, y, yl in zip(axes, series, ylabels):
             _delta_axis(ax, segments, None)
-            # Jumps (rigid/soft impact) must show as vertical steps, not sloped lines.
-            ax.plot(delta_deg, y, lw=1.3, color="C0")
+            # Jumps (rigid/soft impact) must show as vertical steps, not sloped lines: the
+            # whole curve in the dwells' colour (its jumps too), and over it each rise and
+            # return in the colour the caption names (blue: rise, orange: return)
+            y = np.asarray(y, dtype=float)
+            ax.plot(delta_deg, y, lw=1.3, color=DWELL_COLOUR)
+            for start, end, kind, _name in segments:
+                if kind in SEGMENT_COLOURS:
+                    inside = _interior(delta_deg, start, end)
+                    ax.plot(delta_deg[inside], y[inside], lw=1.3, color=SEGMENT_COLOURS[kind])
             ax.axhline(0, color="0.4", lw=0.6)
             ax.set_ylabel(yl, fontsize=8)
             if np.allclose(y, 0.0):
@@ -114,7 +141,7 @@ def pressure_and_curvature(path: Path, lang: str, delta_deg, alpha_deg, limits, 
         top = max(float(np.max(alpha_deg)), max((x for x in limits if x is not None), default=0))
         ax.set_ylim(0, top * 1.18 + 1)
         ax.set_ylabel(lab["alpha"])
-        ax.legend(fontsize=7, loc="upper right")
+        legend(ax, fontsize=7, loc="upper right")
         if two:
             ax = axes[1]
             _delta_axis(ax, segments, lab)
@@ -127,7 +154,7 @@ def pressure_and_curvature(path: Path, lang: str, delta_deg, alpha_deg, limits, 
                 ax.axhline(roller, color="C3", lw=1.0, ls="--", label=f"{lab['rr']} {roller:g} mm")
             ax.axhline(0, color="0.4", lw=0.6)
             ax.set_ylabel(lab["rho"] + lab["convex_only"], fontsize=8)
-            ax.legend(fontsize=7, loc="upper right")
+            legend(ax, fontsize=7, loc="upper right")
         axes[-1].set_xlabel(lab["delta"])
 
 
@@ -181,7 +208,7 @@ def profile(path: Path, lang: str, pitch, actual, base_radius, roller, marks, ro
         ax.set_xlabel(lab["x"])
         ax.set_ylabel(lab["y"])
         ax.grid(True, lw=0.3, color="0.88")
-        ax.legend(fontsize=7, loc="lower right", framealpha=0.9)
+        legend(ax, fontsize=7, loc="lower right", framealpha=0.9)
 
 
 @cached
@@ -198,7 +225,7 @@ def disc_curves(path: Path, lang: str, delta_deg, named):
             ax.set_xlim(0, 360)
             ax.set_xticks(np.arange(0, 361, 30))
             ax.grid(True, lw=0.4, color="0.82")
-            ax.legend(fontsize=7, loc="upper right")
+            legend(ax, fontsize=7, loc="upper right")
         ax1.set_ylabel(lab["s_disc"])
         ax2.set_ylabel(lab["alpha"])
         ax2.set_xlabel(lab["delta"])

@@ -16,6 +16,7 @@ import numpy as np
 from ..fileio import atomic_path
 from ..i18n import N_
 from .fonts import configure_matplotlib
+from .legends import legend, settle as settle_legends
 from .labels import LabelTable, mpl_point
 
 LABELS = LabelTable({
@@ -168,10 +169,13 @@ def save_png(fig, path: Path) -> None:
 
     def write():
         narrow_unit_dots(fig)
+        # the legends off the curves, measured on the texts as printed (render/legends.py)
+        laid_out = settle_legends(fig)
         # a figure drawn before with the same state is copied from the cache (render/cache.py)
         key = cache.figure_key(fig, f"tight_layout; png dpi={DPI} zlib=3")
         if not cache.fetch(key, Path(path)):
-            fig.tight_layout()
+            if not laid_out:
+                fig.tight_layout()
             # tight_layout leaves a placeholder layout engine behind, for which savefig
             # draws the whole figure once more before drawing it (to let a layout engine
             # run): the layout is done, so none is set (the same pixels, one draw less)
@@ -285,7 +289,7 @@ def balancing_torque(path: Path, lang: str, phase_deg, mb, mean_mb, cutting, wor
         ax.axhline(0, color="0.4", lw=0.6)
         ax.set_xlabel(lab["phase"])
         ax.set_ylabel(lab["mb"])
-        ax.legend(fontsize=7, loc="lower left")
+        legend(ax, fontsize=7, loc="lower left")
 
 
 @cached
@@ -323,7 +327,7 @@ def reactions(path: Path, lang: str, phase_deg, named, working_span_deg):
             ax.plot(phase_deg, np.asarray(values) / scale, lw=1.1, label=name)
         ax.set_xlabel(lab["phase"])
         ax.set_ylabel(lab["reaction_kn" if unit == "kN" else "reaction"])
-        ax.legend(fontsize=7, ncol=4, loc="upper right")
+        legend(ax, fontsize=7, ncol=4, loc="upper right")
 
 
 @cached

@@ -478,13 +478,19 @@ def _force_figure(path: Path, points: dict, length_scale: float, fg, members: di
                     continue
                 seg[4].append(v.symbol)
         labels2 = []
+        # each side's name offered on the polygon's outside first (its normal away from the
+        # middle of the polygon's vertices), then inside
+        middle = complex(np.mean([z.real for z in zs2]), np.mean([z.imag for z in zs2]))
         for a, b, names, c, _symbols, pair in drawn:
             n = 1j * (b - a) / abs(b - a)
+            if (n.conjugate() * ((a + b) / 2 - middle)).real < 0:
+                n = -n
             # the names of one segment stacked beside a steep one, in a row beside a flat one
             sep = ",\n" if abs((b - a).imag) > abs((b - a).real) else ", "
             sep = " = " if pair else sep
             labels2.append(Label(sep.join(f"${mpl_math(s)}$" for s in names), (a + b) / 2, (n, -n),
-                                 {"fontsize": LABEL_SIZE, "color": c}))
+                                 {"fontsize": LABEL_SIZE, "color": c},
+                                 along=tuple(a + t * (b - a) for t in ALONG_SIDE)))
         for name, z in fg.points.items():
             a2.plot([z.real], [z.imag], "k.", ms=2)
         _extent(a2, zs2, minor=FORCE_MINOR, pad=FORCE_PAD)
@@ -503,7 +509,8 @@ def _force_figure(path: Path, points: dict, length_scale: float, fg, members: di
         a2.grid(True, lw=0.3, alpha=0.4)
         # labels last, clear of each other and of the links and vectors (issue 19)
         place(a1, labels1, lines1, heads=_heads(a1), head_size=HEAD)
-        place(a2, labels2, lines2, heads=_heads(a2), head_size=HEAD)
+        place(a2, labels2, lines2, heads=_heads(a2), head_size=HEAD, gap=FORCE_LABEL_GAP,
+              sight=True)
 
 
 #: Margin round the free-body diagram's links and arrows (fraction of the data extent).
@@ -537,6 +544,16 @@ def _couple_arrow(ax, z: complex, r: float, ccw: bool, color: str, label: str,
 #: than a vertex's (a tall polygon in a narrow panel pushed "F_R34, F_R43, F_R23" over the
 #: tick labels, slotter and press, issue 19 point 6).
 FORCE_MINOR, FORCE_PAD = 0.6, 0.18
+
+#: The least gap [pt] between two force names of a force polygon: names two points apart
+#: read as one stack of text on the page, where the figure is printed at about 70 %
+#: (page review of session 43: press Fig. 9, furnace_pusher Figs 9–10). More spreads the
+#: names of a cluster of short sides away from them (press Fig. 9's G₂, G₃, F_I2, F_I3).
+FORCE_LABEL_GAP = 4.2
+
+#: Where else along its side (fractions from its tail) a force polygon's name may stand
+#: than at the side's middle, where the names of the sides beside it leave no room.
+ALONG_SIDE = (0.35, 0.65, 0.25, 0.75)
 
 #: The gap [pt] between the force polygon's axis label "mm" and the flat-polygon note under it.
 NOTE_GAP = 4.0

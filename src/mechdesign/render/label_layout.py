@@ -17,6 +17,7 @@ labels that cross an obstacle segment, after the figure's final layout.
 """
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -32,13 +33,16 @@ COMPASS = tuple(np.exp(1j * np.pi * k / 4) for k in (0, 2, 4, 6, 1, 3, 5, 7))
 class Label:
     """A text to place: its anchor (data coordinates, complex), the preferred directions
     (unit complex numbers in screen orientation: +x right, +y up) and matplotlib text
-    keyword arguments."""
+    keyword arguments. ``along``: further anchors the label may take instead (points along
+    a long side of a force polygon), each at a cost of :data:`ALONG` pt per pt away from
+    ``anchor``."""
 
     text: str
     anchor: complex
     directions: tuple = ()
     kwargs: dict = field(default_factory=dict)
     artist: object = None
+    along: tuple = ()
 
 
 def _renderer(fig):
@@ -96,24 +100,36 @@ def _head_segments(ax, heads, size_px: float) -> list:
     return out
 
 
+#: What a line between a label and its anchor costs with ``sight`` (see :func:`place`), as
+#: a distance from the anchor [pt].
+SIGHT = 10.0
+#: What moving a label's anchor along its side costs (see :class:`Label`), per pt moved [pt].
+ALONG = 0.5
+
 #: Times the axes' limits are widened when a label found no place inside them.
 GROW_ROUNDS = 3
 #: Extra margin [fraction of the limits' span] added when the limits are widened.
 GROW_MARGIN = 0.04
 
 
-def place(ax, labels: list[Label], obstacles=(), fixed=(), heads=(), head_size=9.0) -> list:
+def place(ax, labels: list[Label], obstacles=(), fixed=(), heads=(), head_size=9.0,
+          gap: float = 2 * PAD, sight: bool = False) -> list:
     """Draw ``labels`` in ``ax`` clear of each other and of the ``obstacles`` (segments as
     pairs of complex data points; a point is a segment of zero length), of the arrow
     ``heads`` (tail, tip pairs of complex data points; heads of ``head_size`` pt) and of the
-    ``fixed`` text artists already drawn. Call it after
+    ``fixed`` text artists already drawn, each label at least ``gap`` pt from every other
+    (the labels of a force polygon keep more than the default: issue 19, page review of
+    session 43, press Fig. 9: labels two points apart read as one stack). With ``sight``, a
+    place from which the line to the label's anchor crosses an obstacle segment is taken
+    only when no free place is less than :data:`SIGHT` pt further off: the name of a side of
+    a force polygon is not set beyond another side (where it reads as that side's). Call it after
     everything else is drawn and the axes limits are set; it lays the figure out
     (tight_layout) first so that the data-to-screen scale is the final one. Where a label
     could only be placed over the axes' edge (a long list of names of forces drawn as
     points at one vertex of a narrow force polygon, the die-cutter under its 1000 kN), the
     limits are widened to take it in and the labels placed again (at most
     :data:`GROW_ROUNDS` times). Returns the text artists."""
-    artists = _place_once(ax, labels, obstacles, fixed, heads, head_size)
+    artists = _place_once(ax, labels, obstacles, fixed, heads, head_size, gap, sight)
     fig = ax.figure
     for _ in range(GROW_ROUNDS):
         renderer = _renderer(fig)
@@ -133,11 +149,12 @@ def place(ax, labels: list[Label], obstacles=(), fixed=(), heads=(), head_size=9
         ax.set_ylim(min(y0, lo_y - my) if lo_y < y0 else y0, max(y1, hi_y + my) if hi_y > y1 else y1)
         for t in artists:
             t.remove()
-        artists = _place_once(ax, labels, obstacles, fixed, heads, head_size)
+        artists = _place_once(ax, labels, obstacles, fixed, heads, head_size, gap, sight)
     return artists
 
 
-def _place_once(ax, labels, obstacles, fixed, heads, head_size) -> list:
+def _place_once(ax, labels, obstacles, fixed, heads, head_size, gap=2 * PAD,
+                sight=False) -> list:
     """One placing of ``labels`` at the axes' present limits (see :func:`place`)."""
     from matplotlib.transforms import offset_copy
 
@@ -148,7 +165,8 @@ def _place_once(ax, labels, obstacles, fixed, heads, head_size) -> list:
     ax.apply_aspect()
     renderer = _renderer(fig)
     px = fig.dpi / 72.0
-    segments = _screen_segments(ax, obstacles) + _head_segments(ax, heads, head_size * px)
+    lines = _screen_segments(ax, obstacles)
+    segments = lines + _head_segments(ax, heads, head_size * px)
     bb = ax.get_window_extent(renderer)
     frame = (bb.x0, bb.y0, bb.x1, bb.y1)
     placed: list = [_box(t, renderer, PAD * px) for t in fixed]
@@ -166,33 +184,66 @@ def _place_once(ax, labels, obstacles, fixed, heads, head_size) -> list:
         reach = max(DISTANCES) * px + 1.0
         region = (x0 - reach, y0 - reach, x1 + reach, y1 + reach)
         near = [(p, q) for p, q in segments if _segment_hits_box(p, q, region)]
-        others = [b for b in placed if _box_overlap(b, region) > 0]
+        at = ax.transData.transform((lab.anchor.real, lab.anchor.imag))
+        anchors = [(lab.anchor, 0.0, 0.0)]
+        for z in lab.along:
+            ex, ey = ax.transData.transform((z.real, z.imag)) - at
+            anchors.append((z, ex, ey))
+        if len(anchors) > 1:
+            shift = max(abs(ex) + abs(ey) for _z, ex, ey in anchors)
+            region = (region[0] - shift, region[1] - shift, region[2] + shift, region[3] + shift)
+            near = [(p, q) for p, q in segments if _segment_hits_box(p, q, region)]
+        seen = [(p, q) for p, q in lines if _segment_hits_box(p, q, region)] if sight else []
+        # the placed labels' boxes (each padded by PAD) grown to keep ``gap`` between texts
+        grow = max(gap - 2 * PAD, 0.0) * px
+        others = [(b[0] - grow, b[1] - grow, b[2] + grow, b[3] + grow) for b in placed]
+        others = [b for b in others if _box_overlap(b, region) > 0]
         best = None
         tried = [d / abs(d) for d in lab.directions if abs(d) > 0] + list(COMPASS)
-        for dist in DISTANCES:
-            for d in tried:
-                dx, dy = dist * d.real, dist * d.imag
-                box = (x0 + dx * px, y0 + dy * px, x1 + dx * px, y1 + dy * px)
-                # a label over another is worst after one on a line, then one over the edge
-                cost = sum(5e3 + a for a in (_box_overlap(box, other) for other in others) if a > 0)
-                cost += sum(1e4 for p, q in near if _segment_hits_box(p, q, box))
-                area = (box[2] - box[0]) * (box[3] - box[1])
-                outside = area - _box_overlap(box, frame)
-                cost += 2e3 + outside if outside > 1e-6 else 0.0     # over the axes' edge
-                if best is None or cost < best[0]:
-                    best = (cost, (dx, dy), box)
-                if cost == 0:
-                    break
-            if best is not None and best[0] == 0:
+        # scanned nearest first: each distance, each anchor, each direction
+        scan = ((dist, a, d) for dist in DISTANCES for a in anchors for d in tried)
+        for dist, (z, ex, ey), d in scan:
+            dx, dy = dist * d.real, dist * d.imag
+            box = (x0 + ex + dx * px, y0 + ey + dy * px, x1 + ex + dx * px, y1 + ey + dy * px)
+            # a label over another is worst after one on a line, then one over the edge
+            cost = sum(5e3 + a for a in (_box_overlap(box, other) for other in others) if a > 0)
+            cost += sum(1e4 for p, q in near if _segment_hits_box(p, q, box))
+            area = (box[2] - box[0]) * (box[3] - box[1])
+            outside = area - _box_overlap(box, frame)
+            cost += 2e3 + outside if outside > 1e-6 else 0.0     # over the axes' edge
+            # among the places free of those: the nearest (in scanning order), or with
+            # ``sight`` the nearest counting each line between it and its anchor as
+            # SIGHT pt further
+            soft = 0.0
+            if sight:
+                mid = ((box[0] + box[2]) / 2, (box[1] + box[3]) / 2)
+                base = (at[0] + ex, at[1] + ey)
+                soft = dist + SIGHT * sum(1 for p, q in seen if _crosses(base, mid, p, q))
+            soft += ALONG * math.hypot(ex, ey) / px
+            if best is None or (cost, soft) < best[0]:
+                best = ((cost, soft), (dx, dy), box, z)
+            if cost == 0 and not sight and len(anchors) == 1:
                 break
         dx, dy = best[1]
-        t = ax.text(lab.anchor.real, lab.anchor.imag, lab.text,
+        z = best[3]
+        t = ax.text(z.real, z.imag, lab.text,
                     transform=offset_copy(ax.transData, fig=fig, x=dx, y=dy, units="points"),
                     **kwargs)
         placed.append(best[2])
         lab.artist = t
         artists.append(t)
     return artists
+
+
+def _crosses(a, b, p, q) -> bool:
+    """Whether the segments a–b and p–q (display coordinates) cross properly: each one's
+    ends strictly on either side of the other's line (touching and collinear ones do not)."""
+    def side(o, u, v):
+        return (u[0] - o[0]) * (v[1] - o[1]) - (u[1] - o[1]) * (v[0] - o[0])
+
+    d1, d2 = side(p, q, a), side(p, q, b)
+    d3, d4 = side(a, b, p), side(a, b, q)
+    return d1 * d2 < 0 and d3 * d4 < 0
 
 
 def overlaps(ax, artists, obstacles=()) -> list[str]:

@@ -18,6 +18,7 @@ from .fmt import e, f, fluctuation, force_unit, md_text, percent, sentences, sig
 from .fmt import verdict as fmt_verdict
 from .fmt import factor_for, factors_for, gives, product
 from .label_layout import Label, place
+from .legends import legend
 from .labels import LabelTable, md_names, md_point, mpl_names, mpl_point, point_tex
 
 DEG = 180.0 / np.pi
@@ -119,7 +120,7 @@ def _quality_figure(path, lang, ph, span, k, model):
         ax.set_ylim(0, 90 if hi > 50 else _nice_ceiling(1.25 * hi))
         ax.set_ylabel(t["angle"])
         ax.set_xlabel(fig.LABELS[lang]["phase"])
-        ax.legend(fontsize=7, loc="upper right", ncol=2)
+        legend(ax, fontsize=7, loc="upper right", ncol=2)
 
 
 def _nice_ceiling(x: float) -> float:
@@ -145,7 +146,7 @@ def _torque_figure(path, lang, ph, span, mb, mean, resistance, n, marks):
         ax.axhline(0, color="0.4", lw=0.6)
         ax.set_xlabel(fig.LABELS[lang]["phase"])
         ax.set_ylabel(t["mb"])
-        ax.legend(fontsize=7, loc="best")
+        legend(ax, fontsize=7, loc="best")
 
 
 def _slider_outline(at: complex, angle: float, block: float) -> np.ndarray:

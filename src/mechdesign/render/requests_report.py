@@ -14,6 +14,7 @@ import numpy as np
 
 from ..i18n import N_, tr
 from .fmt import f
+from .legends import legend
 from .labels import LabelTable, md_point
 
 DEG = 180.0 / np.pi
@@ -63,7 +64,7 @@ def requests_figures(results: dict, fig_dir: Path, lang: str) -> dict[str, str]:
             ax.axvspan(0, k.working_span * DEG, color="0.93", zorder=0)
             ax.grid(True, lw=0.4, color="0.8")
             ax.set_ylabel(t[key])
-            ax.legend(fontsize=7, loc="upper right", ncol=min(4, len(k.point_vel)))
+            legend(ax, fontsize=7, loc="upper right", ncol=min(4, len(k.point_vel)))
         ax_a.set_xlabel(t["phase"])
     return {"named_points": f"{fig_dir.name}/named_points.png"}
 

@@ -9,6 +9,7 @@ import numpy as np
 
 from ...fileio import atomic_open
 from ...render.figures import figure
+from ...render.legends import legend
 from ...render.fmt import e as fe
 from ...render.fmt import residue, verdict
 from ...render.fmt import f, md_meta, md_text, mpl_text, sig, time_ratio
@@ -69,7 +70,7 @@ def _chart(path: Path, lang: str, ch, mark, allowed_deg):
         for ax in (ax1, ax2):
             ax.grid(True, lw=0.4, color="0.82")
             ax.set_xlim(psi[0], psi[-1])
-        ax1.legend(fontsize=7, ncol=4, loc="lower right")
+        legend(ax1, fontsize=7, ncol=4, loc="lower right")
         if any(th == 0.0 for th in ch.thetas):
             ax1.text(0.01, 0.08, mpl_label(lab["limit"]), transform=ax1.transAxes, fontsize=7, color="0.35")
 
@@ -150,7 +151,7 @@ def _construction(path: Path, lang: str, opt, sim, textbook):
         ax.set_xlabel(lab["x"])
         ax.set_ylabel(lab["y"])
         ax.grid(True, lw=0.3, color="0.88")
-        ax.legend(fontsize=7, loc="lower left")
+        legend(ax, fontsize=7, loc="lower left")
 
 
 def _wrap(phi, *ys):
@@ -175,7 +176,7 @@ def _motion(path: Path, lang: str, sims, allowed_deg, with_speed: bool):
                     xytext=(8, -14), textcoords="offset points", fontsize=8, color="C3")
         ax.axhline(allowed_deg, color="C3", lw=0.8, ls="--")
         ax.set_ylabel(lab["gamma"])
-        ax.legend(fontsize=7, loc="upper right")
+        legend(ax, fontsize=7, loc="upper right")
         ax = axes[1]
         ax.plot(*_wrap(opt.phi, opt.rocker_angle * DEG), color="C0", lw=1.4)
         for x in _wrap(list(opt.phi_extremes))[0]:
@@ -226,7 +227,7 @@ def _slider(path: Path, lang: str, sl, ss, allowed_deg):
         ax.set_xlabel(lab["x"])
         ax.set_ylabel(lab["y"])
         ax.grid(True, lw=0.3, color="0.88")
-        ax.legend(fontsize=7, loc="upper left")
+        legend(ax, fontsize=7, loc="upper left")
         phi = ss.phi * DEG
         alpha = ss.alpha * DEG
         ax2.plot(phi, np.where(ss.slow, alpha, np.nan), color="C0", lw=1.6, label=lab["slow"])
@@ -238,7 +239,7 @@ def _slider(path: Path, lang: str, sl, ss, allowed_deg):
         ax2.grid(True, lw=0.4, color="0.82")
         ax2.set_xlabel(lab["phi_s"])
         ax2.set_ylabel(lab["alpha"])
-        ax2.legend(fontsize=7, loc="upper right")
+        legend(ax2, fontsize=7, loc="upper right")
 
 
 def make_figures(r: dict, fig_dir: Path, lang: str) -> dict[str, str]:

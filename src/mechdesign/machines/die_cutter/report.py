@@ -13,6 +13,7 @@ import numpy as np
 
 from ...i18n import N_, tr
 from ...render import figures as fig
+from ...render.legends import legend
 from ...render.fmt import e, f, length, md_meta, md_text, sig, fluctuation, factor_for, gives
 from ...render.fmt import number, product, residue, time_ratio, verdict
 from ...render.labels import pgettext, translated
@@ -62,7 +63,7 @@ def _amplification_figure(path: Path, lang: str, k, amp, p, f_):
                     label=f"{t['level_c']} H − c = {f(H - p.clearance * MM, 1)} mm")
         ax1.set_ylim(H - p.clearance * MM - 12, H + 3)
         ax1.set_ylabel(t["s"])
-        ax1.legend(fontsize=7, loc="lower center")
+        legend(ax1, fontsize=7, loc="lower center")
         rising = (k.v[:n] > 1e-9 * np.max(k.v[:n])) & view
         fm = 1.0 / amp.unit_torque[:n][rising]          # N per N·m = kN per kN·m
         ax2.semilogy(ph[rising], fm, color="C3", lw=1.4)
@@ -74,7 +75,7 @@ def _amplification_figure(path: Path, lang: str, k, amp, p, f_):
         ax3.axhline(0, color="0.4", lw=0.6)
         ax3.set_ylabel(t["torque"])
         ax3.set_xlabel(t["phase"])
-        ax3.legend(fontsize=7, loc="upper right")
+        legend(ax3, fontsize=7, loc="upper right")
 
 
 def make_figures(r: dict, fig_dir: Path, lang: str) -> dict[str, str]:

@@ -8,6 +8,7 @@ import numpy as np
 
 from ...i18n import N_, tr
 from ...render import figures as fig
+from ...render.legends import legend
 from ...render.fmt import e, f, md_meta, md_text, sig, time_ratio
 from ...render.fmt import factor_for, gives, product, residue, verdict
 from ...numbers import half_sum_decimals
@@ -128,7 +129,7 @@ def _design_chart(path: Path, lang: str, syn) -> None:
         ax.set_xlabel(_("frame $l_{O_1D}$ (mm)"))
         ax.set_ylabel(_("transmission angle (°)"))
         ax.grid(True, lw=0.4, color="0.85")
-        ax.legend(fontsize=7, loc="lower center", ncol=2)
+        legend(ax, fontsize=7, loc="lower center", ncol=2)
 
 
 def make_figures(r: dict, fig_dir: Path, lang: str) -> dict[str, str]:

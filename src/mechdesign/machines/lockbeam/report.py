@@ -13,6 +13,7 @@ import numpy as np
 
 from ...i18n import N_, tr
 from ...render import figures as fig
+from ...render.legends import legend
 from ...render.fmt import e, f, md_meta, md_text, rpm, sig, time_ratio
 from ...render.fmt import verdict
 from ...render.fmt import factor_for, gives
@@ -217,7 +218,7 @@ def _seed_figure(path: Path, lang: str, b):
         ax.set_xlabel(_("input rocker start angle $\\alpha_1$ (°)"))
         ax.set_ylabel(_("wheel swing (°)"))
         ax.grid(True, lw=0.4, color="0.85")
-        ax.legend(fontsize=7)
+        legend(ax, fontsize=7, loc="best")
 
 
 def make_figures(r: dict, fig_dir: Path, lang: str) -> dict[str, str]:
