@@ -726,16 +726,18 @@ def _diagram(sheet, c, divs, mu_d, mu_s, xo, ytop, lab, lang) -> float:
     yd = yo - 5.0
     names = []
     for i in range(len(prog.segments)):
+        pa, pb = P(bounds[i], 0).real, P(bounds[i + 1], 0).real
+        name = _segment_name(c, i, lang)
+        names.append(((pa + pb) / 2, name, fit_height(name, pb - pa - 1.0, 3.5), pb - pa - 1.0))
+    rows = _name_rows(names)
+    for i in range(len(prog.segments)):
         a, b = bounds[i], bounds[i + 1]
         pa, pb = P(a, 0).real, P(b, 0).real
         span_txt = f"{fmt.exact(b - a, decimals=2)}°"
         h = 3.5 if text_width(span_txt, 3.5) + 6.0 <= pb - pa else 2.5
         sheet.dimension(complex(pa, yd), complex(pb, yd), -6.0, b - a, span_txt, "aligned", h)
-        name = _segment_name(c, i, lang)
-        names.append(((pa + pb) / 2, name, fit_height(name, pb - pa - 1.0, 3.5), pb - pa - 1.0))
-    rows = _name_rows(names)
-    for (x, name, h, _room), row in zip(names, rows):
-        sheet.text(complex(x, yd - 8.0 - _NAME_ROW * row), name, h, "TEXT", "center", "top")
+        x, name, hn, _room = names[i]
+        sheet.text(complex(x, yd - 8.0 - _NAME_ROW * rows[i]), name, hn, "TEXT", "center", "top")
     mu_sym = sub("μ", "φ") if u.osc else sub("μ", "s")
     scale_txt = (f"{mu_sym} = {fmt.exact(mu_s)} {'(°)/mm' if u.osc else 'mm/mm'}    "
                  f"{sub('μ', 'δ')} = {fmt.exact(mu_d)} (°)/mm")
