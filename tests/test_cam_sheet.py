@@ -34,15 +34,19 @@ from mechdesign.render.sheet import Text, TitleInfo, text_width, title_block_box
 from mechdesign.render.sheet_dxf import plain_text, write_dxf  # noqa: E402
 from mechdesign.render.sheet_typst import write_sheet  # noqa: E402
 
-DESIGNS = ["cam_7_3", "lockbeam_cam", "shaper"]
+# "brief:key": the cam ``key`` of a brief with several (the lock-beam's bending cam: an
+# oscillating roller follower, the four-bar's input rocker, base radius designed)
+DESIGNS = ["cam_7_3", "lockbeam_cam", "shaper", "lockbeam:bending_cam"]
 BORDER = (25.0, 10.0, 584.0, 410.0)
 LAYERS = ("OUTLINE", "CENTER", "CONSTRUCTION", "DIMENSIONS", "TEXT", "FRAME")
 
 
 def _cam(example_results, name):
-    """The brief and the cam result of designs/<name>.yaml (computed once per session)."""
+    """The brief and the cam result of designs/<name>.yaml (computed once per session);
+    "<name>:<key>": its cam ``key``."""
+    name, _, key = name.partition(":")
     results = example_results(name)
-    return results["brief"], results["cam"]
+    return results["brief"], results[key or "cam"]
 
 
 @pytest.fixture(scope="module", params=DESIGNS)
@@ -53,6 +57,7 @@ def drawn(request, tmp_path_factory, example_results):
     info = TitleInfo("", rep.title, rep.student, rep.student_id, rep.class_name, rep.teacher,
                      str(rep.date), number="MD-CAM", lang="zh")
     sheet = cam_sheet(cam, info, "zh")
+    name = name.replace(":", "-")
     out = tmp_path_factory.mktemp(name)
     dxf = write_dxf(sheet, out / f"{name}.dxf")
     write_sheet(sheet, pdf=out / f"{name}.pdf", png=out / f"{name}.png", png_width_px=1200)

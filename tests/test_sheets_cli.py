@@ -25,9 +25,9 @@ EXPECTED = {
     "shaper": ["kinematic_A3", "transmission_A3", "analysis_A1", "cam_A2", "gear_A2"],
     "cam_7_3": ["kinematic_A3", "cam_A2"],
     "lockbeam_cam": ["kinematic_A3", "cam_A2"],
-    # the feed linkage's analysis sheet and the positioning cam (the bending cam is drawn in
-    # the report only); the brief's motion cycle diagram
-    "lockbeam": ["kinematic_A3", "cycle_A3", "analysis_A1", "cam_A2"],
+    # the feed linkage's analysis sheet, a cam sheet for each of its two cams (the positioning
+    # cam, the bending cam: issue 19 point 8); the brief's motion cycle diagram
+    "lockbeam": ["kinematic_A3", "cycle_A3", "analysis_A1", "cam_A2", "bending_cam_A2"],
     # the optimum four-bar and the slider-crank; the four-bar's analysis sheet (it runs the
     # shared linkage stages)
     "crank_rocker": ["kinematic_A3", "analysis_A1"],
@@ -62,25 +62,37 @@ def test_sheets_for_each_example_brief(name, tmp_path):
     got = sorted(p.stem for p in (out / "sheets").glob("*.dxf")) if (out / "sheets").exists() else []
     assert got == sorted(EXPECTED[name])
     md = (out / "report.md").read_text(encoding="utf-8")
+    numbered = {}
     for stem in EXPECTED[name]:
         doc = ezdxf.readfile(out / "sheets" / f"{stem}.dxf")
+        # the title block: "第 i 张  共 n 张" (n: the sheets written) and the drawing number
+        # PREFIX-0i (MD-03, JY-03: the brief's sheets.drawing_number)
+        texts = [t.dxf.text for t in doc.modelspace().query("TEXT")]
+        marks = [m for t in texts if (m := re.fullmatch(r"第\s*(\d+)\s*张\s*共\s*(\d+)\s*张", t))]
+        assert len(marks) == 1, (stem, texts)
+        i, n = int(marks[0].group(1)), int(marks[0].group(2))
+        assert n == len(EXPECTED[name]), (stem, i, n)
+        assert any(re.fullmatch(rf"[A-Z]+-{i:02d}", t) for t in texts), (stem, i, texts)
+        numbered[i] = stem
         layers = {layer.dxf.name for layer in doc.layers}
         assert LAYERS <= layers
         used = {e.dxf.layer for e in doc.modelspace()}
         # the diagrams (kinematic, transmission, cycle) carry no dimensions
-        need = LAYERS if stem.split("_")[0] in ("analysis", "cam", "gear") else {"OUTLINE", "TEXT", "FRAME"}
+        need = (LAYERS if stem.split("_")[0] in ("analysis", "cam", "gear") or "_cam_" in stem
+                else {"OUTLINE", "TEXT", "FRAME"})
         assert need <= used, (stem, need - used)
         assert doc.units == 4                                     # millimetres
         check_dxf_tables(doc)          # extents ⊇ every entity, only the styles used
-        kind = stem.split("_")[0]
+        kind = stem.rsplit("_", 1)[0]                           # "bending_cam_A2": bending_cam
         preview = out / "figures" / f"sheet_{kind}.png"
         assert preview.exists() and f"figures/sheet_{kind}.png" in md
+    assert sorted(numbered) == list(range(1, len(EXPECTED[name]) + 1))
     # the drawings table lists each sheet once, by its title and size (a 说明书 names the
     # drawings, not their files: issue 19 review 34); its rows stand above "{#tbl:sheets}"
     if EXPECTED[name]:
         table = md.partition("{#tbl:sheets}")[0].rsplit("\n\n", 2)[-2]
         sizes = sorted(re.findall(r"^\|[^|\n]+\|\s*(A\d)\s*\|", table, flags=re.M))
-        assert sizes == sorted(stem.split("_")[1] for stem in EXPECTED[name]), table
+        assert sizes == sorted(stem.rsplit("_", 1)[1] for stem in EXPECTED[name]), table
         assert ".dxf" not in table and ".pdf" not in table
     if not EXPECTED[name]:
         assert "设计图纸" not in md and "Drawing sheets" not in md
@@ -98,7 +110,7 @@ def test_shaper_all_formats(tmp_path):
         pdf = (out / "sheets" / f"{stem}.pdf").read_bytes()
         assert pdf.startswith(b"%PDF")
         # vector drawing at true paper size (A1 841 × 594 mm, A2 594 × 420 mm)
-        w, h = {"A1": (841, 594), "A2": (594, 420), "A3": (420, 297)}[stem.split("_")[1]]
+        w, h = {"A1": (841, 594), "A2": (594, 420), "A3": (420, 297)}[stem.rsplit("_", 1)[1]]
         box = re.search(rb"/MediaBox *\[ *0 0 ([0-9.]+) ([0-9.]+)", pdf)
         assert abs(float(box.group(1)) - w / 25.4 * 72) < 0.5
         assert abs(float(box.group(2)) - h / 25.4 * 72) < 0.5

@@ -197,8 +197,9 @@ def _step(what: str, lang: str) -> str:
                   "gear": _.pgettext("sheet", "gear"), "kinematic": _.pgettext("sheet", "kinematic"),
                   "cycle": _.pgettext("sheet", "cycle"),
                   "transmission": _.pgettext("sheet", "transmission")}
-        return _.pgettext("rendering step", "sheet {n}: {name}", n=head[6:],
-                          name=sheets.get(name, name))
+        # one cam sheet per cam of a machine with several: named by its result key
+        word = sheets.get(name, sheets["cam"] if name.endswith("_cam") else name)
+        return _.pgettext("rendering step", "sheet {n}: {name}", n=head[6:], name=word)
     if what.startswith("figures: "):            # a long figures step: the figure at hand
         return _.pgettext("rendering step", "figures: {what}", what=what[9:])
     # the rendering steps' names (render/report.py, render/sheets.py)

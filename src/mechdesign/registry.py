@@ -33,6 +33,9 @@ class Entry:
     summary: tuple = ()
     results: str = ""           # "module:Class" of the typed results document
     checks: str = ""            # "module:function" feasibility checks(params, keep), run once
+    # (result key, N_(name)) of each cam of a machine that designs several: one cam sheet
+    # per cam, titled with its name (render/sheets.py); a machine with one cam needs none
+    cams: tuple = ()
 
 
 def summary_row(row: tuple, lang: str) -> tuple:

@@ -54,6 +54,7 @@ from .sheet import (
     nice_step,
     pin,
     scale_text,
+    text_box,
     text_width,
     title_block_box,
 )
@@ -507,8 +508,16 @@ def _follower_start(sheet, view, g: _ProfileGeometry, n, labels: LabelPlacer) ->
         near = ink[(ink.real > -5.0 * n) & (ink.real < g.a + 5.0 * n)]
         y = -float(np.min(near.imag)) + 10.0 * n
         drop = 12.0 * n
-        view.dimension(-1j * drop, A - 1j * drop, -(y - drop) * k, text=f"a={fmt.length(g.a)}",
-                       height=3.5, measurement=g.a)
+        # its text where no line crosses it (the circle of the pivot's inverted positions
+        # runs through the middle of the line when the cam is large beside a: the lock-beam's
+        # bending cam), moved along the line
+        text = f"a={fmt.length(g.a)}"
+        pts = labels._drawn_points()
+        along = next((f for f in (0.5, 0.4, 0.6, 0.3, 0.7, 0.2, 0.8) if dimension_text_hits(
+            Dimension(P(-1j * drop), P(A - 1j * drop), -(y - drop) * k, g.a, text, height=3.5,
+                      along=f), pts) == 0), 0.5)
+        view.dimension(-1j * drop, A - 1j * drop, -(y - drop) * k, text=text,
+                       height=3.5, measurement=g.a, along=along)
         for z in np.linspace(0, g.a, 9):
             angles.append(float(np.angle(z - 1j * y)))
         # the pivot's name once its frame, arm and the extension line of a are drawn
@@ -647,6 +656,30 @@ def _mu_s(stroke_display: float) -> float:
     return max(ok) if ok else _MU_S[0]
 
 
+_NAME_ROW = 4.5            # a segment name's row under the next one up [mm]
+
+
+def _name_rows(names) -> list[int]:
+    """The row (0 under the segment dimensions, 1, 2, … lower) of each segment name
+    (x middle, text, height, room): a name that fits its segment stays in row 0; one wider
+    than its segment (a short dwell: "远休止" under 6°) goes in the first row where it keeps
+    the word space (0.6 of the height, ISO 3098-1) from the names there."""
+    rows = [0 if text_width(t, h) <= room + 1e-9 else -1 for _x, t, h, room in names]
+    placed = {0: [text_box(complex(x, 0.0), t, h, "center", "top")
+                  for (x, t, h, _r), row in zip(names, rows) if row == 0]}
+    for k, (x, t, h, _room) in enumerate(names):
+        if rows[k] == 0:
+            continue
+        box = text_box(complex(x, 0.0), t, h, "center", "top")
+        row = 0
+        while any(box[0] < b[2] + 0.6 * h and b[0] < box[2] + 0.6 * h
+                  for b in placed.get(row, [])):
+            row += 1
+        rows[k] = row
+        placed.setdefault(row, []).append(box)
+    return rows
+
+
 def _diagram(sheet, c, divs, mu_d, mu_s, xo, ytop, lab, lang) -> float:
     """The s–δ (φ–δ) diagram with its origin at x = ``xo`` under ``ytop``; return the
     lowest y it takes."""
@@ -691,19 +724,24 @@ def _diagram(sheet, c, divs, mu_d, mu_s, xo, ytop, lab, lang) -> float:
     # segment angles (dimensions) and names under the axis
     bounds = [float(prog.starts[i] * DEG) for i in range(len(prog.segments))] + [360.0]
     yd = yo - 5.0
+    names = []
+    for i in range(len(prog.segments)):
+        pa, pb = P(bounds[i], 0).real, P(bounds[i + 1], 0).real
+        name = _segment_name(c, i, lang)
+        names.append(((pa + pb) / 2, name, fit_height(name, pb - pa - 1.0, 3.5), pb - pa - 1.0))
+    rows = _name_rows(names)
     for i in range(len(prog.segments)):
         a, b = bounds[i], bounds[i + 1]
         pa, pb = P(a, 0).real, P(b, 0).real
         span_txt = f"{fmt.exact(b - a, decimals=2)}°"
         h = 3.5 if text_width(span_txt, 3.5) + 6.0 <= pb - pa else 2.5
         sheet.dimension(complex(pa, yd), complex(pb, yd), -6.0, b - a, span_txt, "aligned", h)
-        name = _segment_name(c, i, lang)
-        sheet.text(complex((pa + pb) / 2, yd - 8.0), name, fit_height(name, pb - pa - 1.0, 3.5),
-                   "TEXT", "center", "top")
+        x, name, hn, _room = names[i]
+        sheet.text(complex(x, yd - 8.0 - _NAME_ROW * rows[i]), name, hn, "TEXT", "center", "top")
     mu_sym = sub("μ", "φ") if u.osc else sub("μ", "s")
     scale_txt = (f"{mu_sym} = {fmt.exact(mu_s)} {'(°)/mm' if u.osc else 'mm/mm'}    "
                  f"{sub('μ', 'δ')} = {fmt.exact(mu_d)} (°)/mm")
-    y_scale = yd - 8.0 - 3.5 - 3.5
+    y_scale = yd - 8.0 - 3.5 - 3.5 - _NAME_ROW * max(rows)
     sheet.text(complex(xo, y_scale), scale_txt, 3.5, "TEXT", "left", "top")
     return y_scale - 3.5
 

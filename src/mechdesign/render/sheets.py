@@ -6,7 +6,7 @@ mechanism (a linkage, the crank-rocker brief, a cam, the eccentric disc), the
 transmission schematic (A3) of a drive, the motion cycle diagram (A3, :mod:`.cycle_sheet`)
 of a cycle result, the analysis sheet (A1) for any linkage run through the shared linkage stages
 (the shaper, the slotter, the furnace pusher, the die-cutter press, the lock-beam feed,
-``linkage`` briefs), the cam sheet (A2) when they have a synthesised cam, the gear meshing
+``linkage`` briefs), a cam sheet (A2) for every synthesised cam, the gear meshing
 sheet when they have a gear pair. Files go to ``sheets/`` (``NAME.pdf`` with the pdf
 format, ``NAME.dxf`` with dxf); the previews to the figures folder.
 """
@@ -32,6 +32,10 @@ TITLES = {
     "cam": N_("Cam mechanism design"),
     "gear": N_("Gear meshing drawing"),
 }
+
+
+# the title of one cam's sheet where the machine designs several ("cam": the cam's name)
+CAM_TITLE = N_("Cam mechanism design: {cam}")
 
 
 NO_SHEETS = N_("this design has no drawing sheet (no mechanism, cam, drive or cycle "
@@ -125,14 +129,7 @@ def _builders(results: dict, brief) -> list[tuple[str, Callable[[TitleInfo, str]
 
         analysis.kinematic_only = found.kinematic_only
         out.append(("analysis", analysis))
-    cam = results.get("cam")
-    if cam is not None and hasattr(cam, "grid"):
-        def cam_builder(info, lang):
-            from .cam_sheet import cam_sheet
-
-            return cam_sheet(cam, info, lang)
-
-        out.append(("cam", cam_builder))
+    out.extend(_cam_builders(results, brief))
     gear = results.get("gear")
     if gear is not None:
         def gear_builder(info, lang):
@@ -141,6 +138,46 @@ def _builders(results: dict, brief) -> list[tuple[str, Callable[[TitleInfo, str]
             return gear_sheet(gear.drawing, info, lang)
 
         out.append(("gear", gear_builder))
+    return out
+
+
+def designed_cams(results: dict) -> list[tuple[str, object]]:
+    """(result key, cam) of every cam ``results`` designs (stages.cam.CamResult), in the
+    order of the stages."""
+    from ..stages.cam import CamResult
+
+    return [(key, value) for key, value in results.items()
+            if isinstance(value, CamResult) and value.grid is not None]
+
+
+def cam_names(results: dict, brief) -> dict[str, str]:
+    """Result key → N_(name) of the cams of the brief's machine (its registry entry's
+    ``cams``; empty for a machine with one cam)."""
+    from ..registry import entry
+
+    b = brief if brief is not None else results.get("brief")
+    try:
+        return dict(entry(getattr(b, "machine", "")).cams)
+    except KeyError:
+        return {}
+
+
+def _cam_builders(results: dict, brief) -> list:
+    """One A2 cam sheet per designed cam. A machine with one cam: the sheet "cam"; with
+    several, each sheet is named by its cam's result key ("cam", "bending_cam") and titled
+    with the cam's name (:data:`CAM_TITLE`, the machine's registry entry names them)."""
+    cams = designed_cams(results)
+    names = cam_names(results, brief) if len(cams) > 1 else {}
+    out = []
+    for key, cam in cams:
+        def cam_builder(info, lang, cam=cam):
+            from .cam_sheet import cam_sheet
+
+            return cam_sheet(cam, info, lang)
+
+        if len(cams) > 1:
+            cam_builder.cam_name = names.get(key, key.replace("_", " "))
+        out.append(("cam" if len(cams) == 1 else key, cam_builder))
     return out
 
 
@@ -248,7 +285,12 @@ def make_sheets(results: dict, brief, folder: Path, fig_dir: Path, lang: str,
 
 
 def sheet_title(name: str, build, lang: str) -> str:
-    """The title of the sheet ``name`` drawn by ``build`` (one of :func:`_builders`), in ``lang``."""
+    """The title of the sheet ``name`` drawn by ``build`` (one of :func:`_builders`), in
+    ``lang``; a cam sheet of a machine with several cams names its cam."""
+    cam = getattr(build, "cam_name", None)
+    if cam is not None:
+        _ = tr(lang)
+        return _(CAM_TITLE, cam=_(cam))
     return tr(lang)(TITLES[f"{name}_kinematic" if getattr(build, "kinematic_only", False) else name])
 
 

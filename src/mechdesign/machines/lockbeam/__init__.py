@@ -24,4 +24,6 @@ ENTRY = Entry(
          "bending.bend_simulated", _DEG),
         (N_("bending γ_min of the linkage as drawn"), "°",
          "bending.cycle.gamma_min", _DEG)),
-    checks=f"{_P}.stages:checks")
+    checks=f"{_P}.stages:checks",
+    # two cams on the main shaft, a sheet each
+    cams=(("cam", N_("positioning cam")), ("bending_cam", N_("bending cam"))))
