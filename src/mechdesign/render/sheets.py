@@ -143,11 +143,10 @@ def _builders(results: dict, brief) -> list[tuple[str, Callable[[TitleInfo, str]
 
 def designed_cams(results: dict) -> list[tuple[str, object]]:
     """(result key, cam) of every cam ``results`` designs (stages.cam.CamResult), in the
-    order of the stages."""
-    from ..stages.cam import CamResult
-
+    order of the stages; known by its type's name: render imports no stage module,
+    tests/test_layers.py)."""
     return [(key, value) for key, value in results.items()
-            if isinstance(value, CamResult) and value.grid is not None]
+            if type(value).__name__ == "CamResult" and getattr(value, "grid", None) is not None]
 
 
 def cam_names(results: dict, brief) -> dict[str, str]:
