@@ -155,6 +155,12 @@ class CamSection(StrictModel):
         "Segments in order from δ = 0, covering 360° together; the follower starts at its lowest position"))
     limits: CamLimits = CamLimits()
     table_step_deg: float = Field(10.0, ge=0.5, le=90, description="Step of the profile coordinate table [°]")
+    purpose_zh: str = Field("", max_length=300, description=(
+        "What the cam does in its machine and when, in Chinese, e.g. 驱动润滑油泵的柱塞; shown at "
+        "the head of the cam chapter of a zh report (an en report shows purpose_en, else this)"))
+    purpose_en: str = Field("", max_length=400, description=(
+        "The same in English, e.g. drives the plunger of the lubricating oil pump; shown in an en "
+        "report (a zh report shows purpose_zh, else this)"))
 
     @model_validator(mode="after")
     def _programme_closes(self):

@@ -3,6 +3,7 @@ stand-alone cam report (``machine: cam``). Course units: mm, °, rpm, mm/s, rad/
 from __future__ import annotations
 
 import csv
+import unicodedata
 from pathlib import Path
 
 import numpy as np
@@ -188,8 +189,30 @@ def _law_eqs(c, i, u: _Units, lang):
                       + ", C_j = " + (sig(law.cj, group=False) if np.isfinite(law.cj) else "∞"))}
 
 
-def cam_context(c, lang: str, figs: dict[str, str], csv_name: str) -> dict:
-    """Strings, rows and formulas of the cam section."""
+def purpose_line(section, lang: str) -> str:
+    """The cam's purpose as the brief's designer wrote it (``purpose_zh`` / ``purpose_en`` of
+    its :class:`~mechdesign.brief.cam.CamSection`, the report's language first, else the
+    other), as the cam chapter's first paragraph; "" when the brief gives none."""
+    if section is None:
+        return ""
+    zh, en = getattr(section, "purpose_zh", ""), getattr(section, "purpose_en", "")
+    text = (zh or en) if lang.startswith("zh") else (en or zh)
+    text = text.strip()
+    if not text:
+        return ""
+    _ = tr(lang)
+    if not _.zh:
+        text = text[0].upper() + text[1:]
+    last = unicodedata.name(text[-1], "")
+    if unicodedata.category(text[-1]) != "Po" or "COMMA" in last or "COLON" in last:
+        # a sentence's stop in the text's own language (the user's Chinese in an en report)
+        text += tr("zh" if unicodedata.east_asian_width(text[-1]) in "WF" else "en")(".")
+    return _("**Purpose:** {text}", text=md_text(text))
+
+
+def cam_context(c, lang: str, figs: dict[str, str], csv_name: str, section=None) -> dict:
+    """Strings, rows and formulas of the cam section (``section``: the brief's cam section,
+    for the designer's statement of the cam's purpose)."""
     p = c.params
     fol = p.follower
     prog = p.programme
@@ -351,6 +374,7 @@ def cam_context(c, lang: str, figs: dict[str, str], csv_name: str) -> dict:
     alpha_max = max((sg.max_pressure_angle for sg in c.segments),
                     default=float(np.max(c.grid.pressure_angle)))
     return {
+        "purpose": purpose_line(section, lang),
         "follower": follower_name, "rotation": rot, "data_rows": data, "prog_rows": prog_rows, "s_unit": u.s_unit,
         "joints": _.pgettext("list", ", ").join(joints),
         "laws": laws, "geo": geo, "checks": checks, "design_rows": design_rows,

@@ -166,14 +166,15 @@ def data_rows(b, p, ram_zh: str, rod: str, rod_ratio: float, ram_com: list,
     ]
 
 
-def optional_sections(r: dict, lang: str, figures: dict) -> dict:
+def optional_sections(r: dict, lang: str, figures: dict, brief=None) -> dict:
     """The cam, gear and drive sections' contexts (None where the brief has no such
     section); the drive's load is the crank's mean power P_w = M̄_b ω2."""
     out = {"cam": None, "gear": None, "drive": None}
     if r.get("cam") is not None:
         from .cam_report import cam_context
 
-        out["cam"] = cam_context(r["cam"], lang, figures, "cam_profile.csv")
+        out["cam"] = cam_context(r["cam"], lang, figures, "cam_profile.csv",
+                                 getattr(brief, "cam", None))
     if r.get("gear") is not None:
         from .gear_report import gear_context
 

@@ -13,7 +13,7 @@ def make_figures(r: dict, fig_dir: Path, lang: str) -> dict[str, str]:
 
 def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
     c, v = r["cam"], r.get("cam_verification")
-    out = {"meta": md_meta(brief.report, lang), "cam": cam_context(c, lang, figures, "cam_profile.csv"),
+    out = {"meta": md_meta(brief.report, lang), "cam": cam_context(c, lang, figures, "cam_profile.csv", brief.cam),
            "envelope_note": envelope_note(c, lang, v),
            "verify_rows": [], "findings": [], "verify_note": ""}
     if v is not None:

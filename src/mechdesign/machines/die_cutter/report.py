@@ -638,7 +638,7 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
     lk = linkage_context(r["press_model"], k, f_, None, r["press_verification"], figures, lang,
                          prefix="press",
                          title=_("Toggle press: kinematics and kinetostatics"))
-    cam = cam_context(r["cam"], lang, figures, "cam_profile.csv")
+    cam = cam_context(r["cam"], lang, figures, "cam_profile.csv", brief.gripper_cam)
     ig = intermittent_context(r["feed"].gear, r["feed"].curves, lang, {"motion": figures["ig_motion"]}, level=2,
                               label="dc-ig")
     cyc = r["cycle"]

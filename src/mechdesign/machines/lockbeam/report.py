@@ -752,7 +752,7 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
         "cycle": cycle_context(c.diagram, lang, cyc_figs, c.checks, level=2),
         "timing": timing,
         "trans": _transmission(r, lang),
-        "cam": cam_context(r["cam"], lang, figures, "cam_profile.csv"),
+        "cam": cam_context(r["cam"], lang, figures, "cam_profile.csv", brief.cam),
         "law_choice": law_choice(r["cam"], lang),
         "bend": _bending(r, lang, figures),
         "feed": _feed(r, lang, figures),

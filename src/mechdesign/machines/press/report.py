@@ -130,7 +130,7 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
         "slow_zh": zh_words(speed), "slow_en": speed,
         "press_from": f((1 - p.pressing_ratio) * p.stroke * mm, 1), "H": f(p.stroke * mm, 1),
         "Q": f(p.pressing_force, 0),
-        "linkage": lkc, **gb_report.optional_sections(r, lang, figures),
+        "linkage": lkc, **gb_report.optional_sections(r, lang, figures, brief),
         "verify_rows": verification_rows(v, lang, k)
         + [[_("stroke error / mm"), residue((v.stroke - p.stroke) * mm, p.stroke * mm),
             "0", verdict(abs(v.stroke - p.stroke) <= 1e-9, _.lang)]],

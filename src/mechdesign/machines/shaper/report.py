@@ -208,7 +208,7 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
     sense_zh, sense_en = zh_words(sense), sense
     shaft = N_("the pinion shaft $O_1$ ($z_1$)") if fl.shaft == "pinion" else N_("the crank shaft $O_2$")
     return {
-        **gb_report.optional_sections(r, lang, figures),
+        **gb_report.optional_sections(r, lang, figures, brief),
         **gb_report.task_words(p, syn),
         "meta": md_meta(brief.report, lang),
         "fig": figures,

@@ -46,7 +46,7 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
         "meta": md_meta(brief.report, lang), "data_rows": in_lang(data_rows, lang), "guide_bar": {**guide_bar, "rows": in_lang(guide_bar["rows"], lang)},
         "n2": f(p.crank_speed_rpm, 0), "sense_zh": zh_words(sense), "sense_en": sense,
         "idle_mm": f(p.idle_travel_ratio * H, 1), "cut_to": f((1 - p.idle_travel_ratio) * H, 1),
-        "linkage": lkc, **gb_report.optional_sections(r, lang, figures),
+        "linkage": lkc, **gb_report.optional_sections(r, lang, figures, brief),
         "verify_rows": verification_rows(v, lang, k)
         + [[_("stroke error / mm"), residue((v.stroke - p.stroke) * mm, p.stroke * mm),
             "0", verdict(abs(v.stroke - p.stroke) <= 1e-9, "zh" if _.zh else "en")]],
