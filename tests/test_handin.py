@@ -27,7 +27,7 @@ from mechdesign.i18n import tr
 from mechdesign.machines import get_machine
 from mechdesign.render.fmt import meta_text
 from mechdesign.render.report import render_markdown, template_dir
-from mechdesign.render.summary import Citations, handin_context, references
+from mechdesign.render.summary import Citations, handin_context, reference_text, references
 from mechdesign.results import to_plain
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -213,9 +213,12 @@ def test_every_citation_has_its_entry_and_every_entry_is_cited(handin_reports, n
     assert first == sorted(first)
     # every entry is a source of the data file, in the report's language, and a textbook
     # (孙桓 for every mechanism, 濮良贵 for a drive) is among them
-    known = {v["zh" if lang == "zh" else "en"] for v in references().values()}
+    known = {reference_text(key, lang) for key in references()}
     texts = [t.replace("\\[", "[").replace("\\]", "]") for _, t in entries]
     assert all(t in known for t in texts), texts
+    # every entry begins with its data file's text in the report's language
+    assert all(any(t.startswith(v["zh" if lang == "zh" else "en"]) for v in references().values())
+               for t in texts)
     assert any("[M]" in t for t in texts)
 
 

@@ -22,7 +22,7 @@ import re
 
 import pytest
 
-from mechdesign.render.summary import references
+from mechdesign.render.summary import reference_text
 
 LANGS = ("zh", "en")
 ORIGINAL = {"zh": "原报告", "en": "original report"}
@@ -42,7 +42,7 @@ def test_the_original_report_is_cited_where_it_is_first_named(handin_reports, na
     body = md.split("# 参考文献" if lang == "zh" else "# References")[0]
     first = body.find(ORIGINAL[lang])
     assert first >= 0
-    seed = references()[f"seed_{name.split('_')[0]}"][lang]
+    seed = reference_text(f"seed_{name.split('_')[0]}", lang)
     refs = _references(md, lang)
     assert seed in refs, refs
     number = refs.index(seed) + 1
@@ -190,3 +190,23 @@ def test_a_rocking_outputs_sheet_names_its_swing_and_lists_its_omega_once():
     r = str(rocker[0])
     assert sub("ψ", r) + " (°)" in texts and "s (°)" not in texts, texts
     assert texts.count(sub("ω", r) + " (rad/s)") == 1, texts
+
+
+@pytest.mark.parametrize("lang", LANGS)
+def test_two_editions_of_one_textbook_each_say_what_they_are_cited_for(handin_reports, lang):
+    """Review39: the drive reports cite 濮良贵《机械设计》 in its 8th (2007) and 9th (2013)
+    editions side by side, which a teacher marks; each entry now says what the report takes
+    from it (the 8th edition's tabulated gear factors, the 9th's numbering of the belt, chain
+    and worm tables), and a handbook without a confirmed year says so instead of ending short."""
+    md, _ = handin_reports("die_cutter", lang)
+    refs = _references(md, lang)
+    pu8 = next(r for r in refs if "2007" in r)
+    pu9 = next(r for r in refs if "2013" in r and ("濮良贵" in r or "PU Lianggui" in r))
+    if lang == "zh":
+        assert "表 10-5" in pu8 and "线图" in pu8
+        assert "V 带" in pu9 and "按此版编号" in pu9
+    else:
+        assert "table" in pu8 and "10-5" in pu8 and "charts" in pu8
+        assert "V-belt" in pu9 and "numbered as in this edition" in pu9
+    handbook = next(r for r in refs if "吴宗泽" in r or "WU Zongze" in r)
+    assert handbook.endswith("（版次、出版年不详）" if lang == "zh" else "(edition, year not known)")

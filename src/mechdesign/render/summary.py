@@ -38,6 +38,30 @@ def references() -> dict[str, dict]:
     return yaml.safe_load(text)
 
 
+def _unknown_datum(key: str, _) -> str:
+    """The name of a bibliographic datum a reference lacks (``unconfirmed`` in
+    data/references.yaml)."""
+    names = {"edition": _.pgettext("reference", "edition"), "year": _.pgettext("reference", "year"),
+             "authors": _.pgettext("reference", "authors"), "author": _.pgettext("reference", "author"),
+             "journal": _.pgettext("reference", "journal"), "school": _.pgettext("reference", "school")}
+    return names.get(key, key)
+
+
+def reference_text(key: str, lang: str) -> str:
+    """A reference as the list prints it (plain text): the entry in the report's language, then
+    what could not be confirmed ("（版次、出版年不详）") and the entry's note, if any."""
+    entry = references()[key]
+    lang = "zh" if lang == "zh" else "en"
+    _ = tr(lang)
+    text = entry[lang]
+    missing = [_unknown_datum(k, _) for k in entry.get("unconfirmed", ())]
+    if missing:
+        text += _(" ({items} not known)", items=_.pgettext("list", ", ").join(missing))
+    if entry.get(f"note_{lang}"):
+        text += ("" if _.zh else " ") + data_text(entry[f"note_{lang}"], lang)
+    return text
+
+
 class Citations:
     """``cite("a", "b")`` → ``[1, 2]``: numbers in order of first citation; ``entries()`` the
     cited sources in that order (the references chapter, rendered after every citation)."""
@@ -61,7 +85,7 @@ class Citations:
     def entries(self) -> list[dict]:
         known = references()
         lang = "zh" if self.lang == "zh" else "en"
-        return [{"n": i, "key": key, "text": md_text(known[key][lang])}
+        return [{"n": i, "key": key, "text": md_text(reference_text(key, lang))}
                 for i, key in enumerate(self.order, 1)]
 
 
