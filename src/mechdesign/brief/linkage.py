@@ -178,6 +178,12 @@ class LinkageFlywheelSpec(StrictModel):
         gt=0, lt=1, description="Allowed coefficient of speed fluctuation [δ], e.g. 0.05 or 1/20")
     speed_ratio: float = Field(1.0, gt=0, le=1000, description=(
         "Flywheel shaft speed / crank speed (1: on the crank shaft)"))
+    rim_diameter_mm: Optional[float] = Field(None, gt=0, le=10000, description=(
+        "Mean diameter D of a cast rim to size [mm]; without it the flywheel stops at its "
+        "moment of inertia J_F"))
+    rim_height_to_width: float = Field(1.5, gt=0, le=10, description="Rim height/width H/b")
+    specific_weight_N_m3: float = Field(7.0e4, gt=0, le=3e5, description=(
+        "Specific weight γ of the rim material [N/m³] (cast iron ≈ 7.0e4)"))
 
 
 class LinkageSection(StrictModel):
@@ -385,7 +391,7 @@ def linkage_to_model(s: LinkageSection, analysis: AnalysisSettings, names: dict 
     """The SI linkage model (m, rad, rad/s, kg, N) of the section: the only conversion."""
     from ..core.kinetostatics import Body
     from ..core.mechanism import RPR, RRP, RRR, Crank, LinkPoint, Mechanism
-    from ..stages.flywheel import FlywheelSpec
+    from ..stages.flywheel import FlywheelSpec, RimSpec
     from ..stages.linkage import LinkageModel, Output, Resistance
 
     mm, rad = 1e-3, np.radians
@@ -421,8 +427,11 @@ def linkage_to_model(s: LinkageSection, analysis: AnalysisSettings, names: dict 
         elif r.active_deg is not None:
             window = (rad(r.active_deg[0]), rad(r.active_deg[1]))
         res.append(Resistance(r.link, r.point, rad(r.direction_deg), r.working_N, r.return_N, window))
-    fly = None if s.flywheel is None else FlywheelSpec(s.flywheel.fluctuation_delta,
-                                                       s.flywheel.speed_ratio)
+    fw = s.flywheel
+    rim = None if fw is None or fw.rim_diameter_mm is None else RimSpec(
+        fw.rim_diameter_mm * mm, fw.rim_height_to_width, fw.specific_weight_N_m3,
+        "linkage.flywheel.rim_diameter_mm")
+    fly = None if fw is None else FlywheelSpec(fw.fluctuation_delta, fw.speed_ratio, rim=rim)
     return LinkageModel(
         mechanism=mech, crank_omega=omega, output=output, bodies=bodies, resistances=tuple(res),
         grid_points=analysis.grid_points, position_step=rad(analysis.position_step_deg),
