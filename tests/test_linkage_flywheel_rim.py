@@ -56,3 +56,22 @@ def test_an_impossible_rim_is_named_at_its_field(tmp_path):
                          capture_output=True, text=True)
     assert run.returncode != 0
     assert "linkage.flywheel.rim_diameter_mm" in run.stderr and "Traceback" not in run.stderr
+
+
+def test_a_rim_higher_than_its_radius_is_told_in_the_report(tmp_path):
+    """D = 600 mm: H = k b ≈ 346 mm > D/2 (the thin-rim estimate m = 4 J_F/D² fails): the
+    run warns, and the report says it under the rim and on the summary's watch list."""
+    import subprocess
+    import sys
+
+    text = (ROOT / "designs" / "linkage_sixbar.yaml").read_text(encoding="utf-8")
+    path = tmp_path / "rim600.yaml"
+    path.write_text(text.replace("rim_diameter_mm: 1200}", "rim_diameter_mm: 600}"), encoding="utf-8")
+    out = tmp_path / "out"
+    run = subprocess.run([sys.executable, "-m", "mechdesign", "run", str(path), "--format", "md",
+                          "-o", str(out), "--lang", "en"], capture_output=True, text=True)
+    assert run.returncode == 0, run.stderr
+    md = (out / "report.md").read_text(encoding="utf-8")
+    assert md.count("no longer a thin rim") == 2          # under the rim, on the watch list
+    rim = md.index("Rim width $b$")
+    assert md.index("no longer a thin rim") > rim

@@ -517,6 +517,9 @@ def linkage_context(model, k, f_, fly, v, figures: dict, lang: str,
             "eq": flywheel_equation(fly.max_energy_swing, fly.shaft_speed_rpm, fly.fluctuation,
                                     sig(fly.inertia, group=False)),
             "rim": None, "real": realised_flywheel(fly, flywheel_realised_rpm, _),
+            # the rim's findings (higher than its radius, too fast for cast iron): in the text
+            # and, through the summary's findings, on its watch list
+            "warnings": [md_text(w.text(lang)) for w in fly.warnings],
         }
         if fly.rim is not None:
             rim, spec = fly.rim, model.flywheel.rim
