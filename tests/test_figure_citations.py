@@ -48,13 +48,13 @@ def test_every_figure_is_cited_in_the_text(example_results, name, lang):
 
 @pytest.mark.parametrize("lang", ["zh", "en"])
 def test_sheet_previews_are_cited(lang):
-    from mechdesign.render.report import render_markdown, template_dir
+    from mechdesign.render.report import render_markdown, sheets_context, template_dir
     from mechdesign.render.summary import Citations
 
     sheets = [{"title": f"S{i}", "size": "A3", "scale": "1:1", "preview": f"figures/s{i}.png",
                "label": label}
               for i, label in enumerate(["fig:sheet-kinematic", "fig:sheet-analysis"])]
-    md = render_markdown("sheets_section.md.j2", {"sheets": sheets, "cite": Citations(lang)},
+    md = render_markdown("sheets_section.md.j2", {**sheets_context(sheets, lang), "cite": Citations(lang)},
                          template_dir(None), lang)
     assert _LABEL.findall(md) == ["fig:sheet-kinematic", "fig:sheet-analysis"]
     assert not uncited(md)

@@ -122,6 +122,7 @@ def example_markdown(r, lang: str, sheets: list | None = None) -> str:
     from mechdesign.render.report import render_markdown, template_dir
     from mechdesign.render.summary import Citations, handin_context
     from mechdesign.results import to_plain
+    from mechdesign.render.report import sheets_context
     from mechdesign.runner import _with_requested
 
     brief = r["brief"]
@@ -129,7 +130,7 @@ def example_markdown(r, lang: str, sheets: list | None = None) -> str:
     report = importlib.import_module(machine.report_module)
     figs = _Figures()
     ctx = _with_requested(report.context(r, brief, figs, lang), r, brief, figs, lang)
-    ctx["sheets"] = sheets or []
+    ctx.update(sheets_context(sheets or [], lang))
     # the closing chapters (summary, references), as render/report.py adds them
     ctx.update(handin_context(machine.name, to_plain(machine.document(r)), ctx, lang,
                               meta_text(brief.report, "title", lang)), cite=Citations(lang))

@@ -54,11 +54,11 @@ def test_shaper_verdicts_come_from_the_checks(example_results):
 @pytest.mark.parametrize("lang", ["zh", "en"])
 def test_the_layers_named_in_the_reports_language(lang):
     """The drawing-sheets section (every report with sheets includes it)."""
-    from mechdesign.render.report import render_markdown, template_dir
+    from mechdesign.render.report import render_markdown, sheets_context, template_dir
     from mechdesign.render.summary import Citations
 
     sheet = {"title": "A1", "size": "A1", "scale": "1:2", "files": "x.pdf", "preview": "", "label": "s"}
-    md = render_markdown("sheets_section.md.j2", {"sheets": [sheet], "cite": Citations(lang)},
+    md = render_markdown("sheets_section.md.j2", {**sheets_context([sheet], lang), "cite": Citations(lang)},
                          template_dir(None), lang)
     for layer in LAYERS:
         found = re.findall(rf"(.)({layer})(.)", md)
@@ -75,14 +75,14 @@ def test_the_drawing_list_names_drawings_not_files(lang):
     """Review 34: the 说明书's table of drawings listed file names
     (``sheets/kinematic_A3.pdf``); a design report names a drawing by its title, size and
     scale (机构运动简图, A3, 1:5), the files are the hand-in's."""
-    from mechdesign.render.report import _sheet_row, render_markdown, template_dir
+    from mechdesign.render.report import _sheet_row, render_markdown, sheets_context, template_dir
     from mechdesign.render.summary import Citations
 
     class Sheet:
         name, title, size, scale, preview = "kinematic", "机构运动简图", "A3", "1:5", "figures/k.png"
         pdf, dxf = "sheets/kinematic_A3.pdf", "sheets/kinematic_A3.dxf"
 
-    md = render_markdown("sheets_section.md.j2", {"sheets": [_sheet_row(Sheet, lang)],
+    md = render_markdown("sheets_section.md.j2", {**sheets_context([_sheet_row(Sheet, lang)], lang),
                                                   "cite": Citations(lang)}, template_dir(None), lang)
     rows = [line for line in md.splitlines() if line.startswith("|")]
     assert rows and "| 机构运动简图 | A3 | 1:5 |" in rows

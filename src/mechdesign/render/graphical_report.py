@@ -1103,6 +1103,22 @@ def _printed_difference(graphical: str, analytic: str, exact: float) -> float:
     return (g - a) / abs(a)
 
 
+def _compare_caption(rows: list[list[str]], label: str, lang: str) -> str:
+    """The comparison table's caption: how the allowance is set, and the sign of M_b where
+    the table has it."""
+    _ = tr(lang)
+    if any(row[0] == "$M_b$" for row in rows):
+        return _("Graphical and analytic results at position {p_label} ($M_b$ positive in the "
+                 "crank's sense of rotation; allowed, in {pct} of the analytic value: 2 {pct} plus "
+                 "what 1 mm of the velocity polygon, 2 mm of the acceleration and force polygons "
+                 "stand for; “—”: the value is below the drawing accuracy, its relative difference "
+                 "means nothing)", p_label=label, pct="%")
+    return _("Graphical and analytic results at position {p_label} (allowed, in {pct} of the "
+             "analytic value: 2 {pct} plus what 1 mm of the velocity polygon, 2 mm of the "
+             "acceleration and force polygons stand for; “—”: the value is below the drawing "
+             "accuracy, its relative difference means nothing)", p_label=label, pct="%")
+
+
 def _compare(pos, lang: str, printed: dict[str, str] | None = None) -> list[list[str]]:
     """The comparison table's rows; a force listed in the polygon tables (``printed``, by
     symbol: itself or its reaction) with the digits it is listed with there (one measured
@@ -1177,7 +1193,8 @@ def graphical_context(results: dict, figures: dict, lang: str) -> list[dict]:
                 "fig": figures.get(f"{key}_kin", ""), "given": given,
                 "forces": forces, "crank": crank,
                 "mb": None if pos.balancing_torque is None else _numg(pos.balancing_torque),
-                "compare": _compare(pos, lang, _printed(pos, forces)),
+                "compare": (rows := _compare(pos, lang, _printed(pos, forces))),
+                "caption": _compare_caption(rows, str(pos.label).replace("'", "′"), lang),
                 "beyond": sum(1 for c in pos.comparison
                               if abs(c.graphical - c.analytic) > c.tolerance),
             })

@@ -225,7 +225,7 @@ def write_report(out_dir: Path, *, machine: str, lang: str, formats: tuple[str, 
                 figures = make_figures(fig_dir)
                 sheets = collect_sheets()
                 ctx = make_context(figures)
-                ctx["sheets"] = [_sheet_row(sh, lang) for sh in sheets]
+                ctx.update(sheets_context([_sheet_row(sh, lang) for sh in sheets], lang))
                 from .summary import Citations, handin_context
 
                 ctx.update(handin_context(machine, document, ctx, lang, meta_text(meta, "title", lang),
@@ -274,6 +274,27 @@ def write_report(out_dir: Path, *, machine: str, lang: str, formats: tuple[str, 
         return publish(staging, out_dir)
     finally:
         shutil.rmtree(staging, ignore_errors=True)
+
+
+def sheets_context(rows: list[dict], lang: str) -> dict:
+    """The sheets chapter's context: the sheets' rows (:func:`_sheet_row`), how the A1
+    analysis sheet's polygons are scaled (no force polygons on a kinematics-only sheet), and
+    the previews' figure references."""
+    _ = tr(lang)
+    note = ""
+    for row in rows:
+        if row["label"] != "fig:sheet-analysis":
+            continue
+        if row.get("kinematic_only"):
+            note = _(" On the A1 analysis sheet every velocity and acceleration polygon is drawn to fill "
+                     "its cell, at its own scale written above it ($\\mu_v$, $\\mu_a$), not at the "
+                     "scales of the report's figures.")
+        else:
+            note = _(" On the A1 analysis sheet every velocity, acceleration and force polygon is drawn "
+                     "to fill its cell, at its own scale written above it ($\\mu_v$, $\\mu_a$, "
+                     "$\\mu_F$), not at the scales of the report's figures.")
+    previews = _.pgettext("list", ", ").join("@" + row["label"] for row in rows)
+    return {"sheets": rows, "sheets_note": note, "sheet_previews": previews}
 
 
 def _sheet_row(sh, lang: str) -> dict:
