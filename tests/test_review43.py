@@ -62,8 +62,10 @@ def test_the_verdict_follows_from_the_printed_difference_and_allowance(handin_re
             assert abs(diff) <= allowed + 0.1, (name, q, diff, allowed)
         else:
             assert abs(diff) >= allowed - 0.1, (name, q, diff, allowed)
-        # every allowance is at least the 2 % of the analytic value the caption states
-        assert allowed >= 2.0 - 0.05, (q, allowed)
+        # every allowance is at least the 2 % of the analytic value the caption states, and
+        # at most 50 %: a value within twice the drawing accuracy prints "—" (the shaper's
+        # ω3 = 0.0736 rad/s was "allowed 98.7 %")
+        assert 2.0 - 0.05 <= allowed <= 50.0, (q, allowed)
     assert compared >= 6
 
 
