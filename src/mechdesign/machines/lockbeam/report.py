@@ -300,9 +300,10 @@ def _seed_notes(r: dict, lang: str) -> list[str]:
     notes.append(_("Production rate: the task data say 10 parts/min; one line of the original report's "
                    "requirements says 20. Its transmission 700 → 10 rpm is for 10, and so is this "
                    "design."))
-    notes.append(_("The original report's morphological matrix (table 2.5) and cycle diagram (figure 9.1) were "
-                   "images lost in the copy: the matrix is rebuilt from its text, and the cycle "
-                   "diagram is drawn anew from the cam data and the simulated feed linkage."))
+    notes.append(_("The original report's morphological matrix (table 2.5) and cycle diagram (figure 9.1) are "
+                   "not in the text this design starts from (they were images): the matrix is "
+                   "rebuilt from the report's text, and the cycle diagram is drawn anew from the "
+                   "cam data and the simulated feed linkage."))
     if b.seed is not None:
         notes.append(_("Bending four-bar: the original report found the lengths {rocker} mm and {coupler} mm "
                        "graphically without stating its start position", rocker=f(b.seed.input_rocker * MM, 0),
