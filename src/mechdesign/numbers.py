@@ -12,6 +12,7 @@ the stages). Standard library only: no prose, no units, no I/O.
 """
 from __future__ import annotations
 
+import math
 from decimal import ROUND_HALF_UP, Decimal
 
 GROUP = "\u202f"      # narrow no-break space between digit groups (GB 3101, ISO 80000-1)
@@ -131,6 +132,18 @@ def factors_for(xs, fn, printed: str, sig_digits=4, most=3, decimals=False) -> l
             if gives(fn(*(float(t) for t in texts)), result):
                 return texts
     return [factor_text(x, b + m, d) for x, b, m, d in zip(xs, base, top, dec)]
+
+
+def column_decimals(peak: float, n: int = 4, least: int = 0, most: int | None = None,
+                    empty: int = 0) -> int:
+    """The one decimal count of a table column (or a set of values printed together) whose
+    largest magnitude is ``peak``: ``n`` significant digits of that value (7762.013 → 0
+    decimals for 4), kept within ``least``…``most``; ``empty`` where the column is all zero."""
+    if not peak > 0 or peak != peak or peak == float("inf"):
+        return empty
+    d = n - 1 - int(math.floor(math.log10(peak)))
+    d = max(least, d)
+    return d if most is None else min(most, d)
 
 
 def half_sum_decimals(xs, digits: int = 2, most: int = 3) -> int:

@@ -73,7 +73,7 @@ import re
 
 from ..i18n import tr
 from ..numbers import GROUP, fixed as f, grouped_digits as _group, mantissa_exponent, sig  # noqa: F401  (the rule's digits: mechdesign/numbers.py)
-from ..numbers import factor_text, factors_for, gives  # noqa: F401  (a displayed chain's digits)
+from ..numbers import column_decimals, factor_text, factors_for, gives  # noqa: F401  (a displayed chain's digits)
 
 
 def grouped(text: str) -> str:

@@ -14,7 +14,7 @@ import numpy as np
 
 from ..i18n import N_, tr
 from . import figures as fig
-from .fmt import e, f, fluctuation, force_unit, md_text, percent, sentences, sig, tex_name, time_ratio
+from .fmt import column_decimals, e, f, fluctuation, force_unit, md_text, percent, sentences, sig, tex_name, time_ratio
 from .fmt import verdict as fmt_verdict
 from .fmt import factor_for, factors_for, gives, product
 from .label_layout import Label, place
@@ -418,7 +418,7 @@ def linkage_context(model, k, f_, fly, v, figures: dict, lang: str,
     # least one decimal, at most three (die_cutter: 7 762.0 and 2.4, not 7762.013 and 2.384;
     # a crank-rocker's 0.518 keeps its three)
     mb_peak = float(np.max(np.abs(f_.balancing_torque))) if len(f_.balancing_torque) else 0.0
-    mb_digits = 3 if mb_peak <= 0 else min(3, max(1, 3 - int(np.floor(np.log10(mb_peak)))))
+    mb_digits = column_decimals(mb_peak, 4, least=1, most=3, empty=3)
     for i, label in enumerate(labels):
         j = n + i
         kin_rows.append([label, f(k.phase[j] * DEG, 2), f((k.crank_angle[j] * DEG) % 360, 2),
