@@ -655,30 +655,14 @@ def _settle(typ_name: str, root: Path, timestamp: int, stem: str,
     (textbook_guide_bar zh: planned from typst's third pass, it keeps the fifth from settling)."""
     pdf_bytes, found = _compile_report(typ_name, root, timestamp, stem, {})
     rounds = [{"held": None, "settled": not _unsettled(found)}]
-    if FIGURE_RULES_ON not in source:
+    if rounds[0]["settled"] or FIGURE_RULES_ON not in source:
         return pdf_bytes, found, rounds
-    if rounds[0]["settled"]:
-        # settled: done, unless it holds figures back past tables. The figures' plan (their
-        # heights) is made once, from typst's second pass, before any figure is held (held
-        # from the third): a held figure moves the pages after it, and a figure that landed
-        # more than a page after its text in that layout was never seen by the plan (lockbeam
-        # zh: figure 6 held past table 11 and set under its end, chapter 6's figures 14 and 15
-        # then both after p.20, figure 15 two pages after its text). A round with the held
-        # figures given (standing from the first pass) makes the plan from a layout with them
-        # in place; where the rounds do not settle, the first layout stands (it did)
-        first = _held_next(typ_name, root, {})
-        if first is None or not first["held"]:
-            return pdf_bytes, found, rounds
-        typst_settled = (pdf_bytes, found)
-    else:
-        typst_settled = first = None
-    settled = None                         # (pdf, warnings) of the last settled round
     given = None                           # the held figures of the last round
     let_go: set[str] = set()               # figures never to hold again
+    settled = None                         # (pdf, warnings) of the last settled round
     close = None                           # the close plan, read once (report.typ: current-close)
     while True:
-        found_next = first if first is not None else _held_next(typ_name, root, _inputs(given, close))
-        first = None
+        found_next = _held_next(typ_name, root, _inputs(given, close))
         if found_next is None:
             break                                    # nothing read
         if close is None and isinstance(found_next.get("close"), list):
@@ -705,8 +689,6 @@ def _settle(typ_name: str, root: Path, timestamp: int, stem: str,
         rounds.append({"held": given, "settled": not _unsettled(found)})
         if rounds[-1]["settled"]:
             settled = (pdf_bytes, found)
-    if typst_settled is not None:
-        return typst_settled[0], typst_settled[1], rounds
     fell = f"{FELL_BACK} in {len(rounds)} compilations"
     if settled is not None:
         return settled[0], settled[1] + [fell + "; set with the held figures of its last settled one"], rounds
