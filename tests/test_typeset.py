@@ -1152,7 +1152,10 @@ HALF_EMPTY_OPEN: set[tuple[str, str]] = set()
 # far: the figures' plan is made from typst's second pass, before any figure is held, and does
 # not see it); a round with the held figures given (render/pdf.py) did not mend that, and
 # cam_7_3 zh had figures 2 and 3 between the parts of table 4 with those changes
-FIGURE_ORDER_OPEN: set[tuple[str, str]] = {("lockbeam", "zh")}
+# Gone after the session-44 text changes (the positioning cam's purpose paragraph and the
+# source note moved lockbeam zh's pages; checks.py on f538cb43's tree: lockbeam zh clean); the
+# cause above is not mended and may show again when the text before table 11 changes
+FIGURE_ORDER_OPEN: set[tuple[str, str]] = set()
 # A figure between the parts of a split table whose text stands BEFORE the table is held back
 # past the table (templates/report.typ: figure-held; the figures whose text follows a split
 # table go to the foot of its last page: after-split). Where typst's five passes do not settle
@@ -1164,7 +1167,11 @@ FIGURE_ORDER_OPEN: set[tuple[str, str]] = {("lockbeam", "zh")}
 # stays) and figure 17 stood between the parts of table 48. Mended in session 38: with the
 # close plan given in the rounds (current-close, figure-close) figures 17 and 18 stand
 # before table 48, which starts under them
-TABLES_INTERRUPTED_OPEN: set[tuple[str, str]] = set()
+# Open since session 44 (the cam's purpose paragraph moved the pages): slotter zh, table 29
+# (the cam profile's coordinates) starts with three rows at the foot of p.22, figures 16 and 17
+# (cited before table 28) fill p.23 and the table goes on on p.24. The figures' text stands
+# before the table, so figure-held should have kept them before it or past it; not mended
+TABLES_INTERRUPTED_OPEN: set[tuple[str, str]] = {("slotter", "zh")}
 # A blank band above a figure at a page's foot (page_holes). Mended in session 37 (a figure whose text follows a split table stands in the flow under
 # its text where it fits, no longer at the page's foot under a hole): cam_7_3 en p.7,
 # die_cutter en p.20, linkage_sixbar zh/en p.7.
