@@ -134,3 +134,106 @@ def test_die_cutter_scale_note_reads_as_a_sentence(example_results):
     notes = " ".join(e.text for e in s.entities if isinstance(e, Text))
     assert "not given, so schematic" not in notes
     assert re.search(r"Each group drawn to μ.*schematic, as the task does not give them", notes), notes
+
+
+# ------------------------------------------------------------------ A1 analysis sheet
+
+PIVOT_NEAR = 5.0     # a pivot's name: its text box within this of the pivot [mm]
+NUMBER_NEAR = 9.0    # a position number: its circle's centre within this of its crank pin,
+#                      or a leader from the pin to the circle
+
+
+def _dist_box(z: complex, b) -> float:
+    dx = max(b[0] - z.real, 0.0, z.real - b[2])
+    dy = max(b[1] - z.imag, 0.0, z.imag - b[3])
+    return float(np.hypot(dx, dy))
+
+
+@pytest.mark.parametrize("lang", ["zh", "en"])
+@pytest.mark.parametrize("name", ["lockbeam", "furnace_pusher", "linkage_sixbar"])
+def test_a1_skeleton_labels_at_their_points(example_results, name, lang):
+    """A frame pivot's name stands beside its pivot (lockbeam: "O2" stood 40 mm out on a
+    leader, at the crank circle among the position numbers); every position number is
+    circled (told from the link numbers: "5" for position 5 and link 5 read alike) and
+    stands at its crank pin or is joined to it by a leader; no two labels of the sheet
+    touch or come nearer than the word space (tests/sheet_overlaps.py)."""
+    from sheet_overlaps import crowded_labels, touching_labels
+
+    from mechdesign.render.analysis_sheet import _mechanism_extent
+    from mechdesign.render.labels import sheet_point
+    from mechdesign.render.sheet import Circle, Line, Text
+    from mechdesign.render.sheets import linkage_results
+
+    s, results = _sheet(example_results, name, "analysis", lang)
+    found = linkage_results(results)
+    model, k = found.model, found.motion
+    crank = model.crank
+    ext = _mechanism_extent(model, k, lang)
+    P = ext["P"]
+    piv = P[crank.pivot][0]
+    # the crank circle (its centre is the crank pivot on the paper) gives the drawing's scale
+    R = crank.length * 1e3
+    circles = [e for e in s.entities if isinstance(e, Circle) and e.layer == "CENTER"]
+    ratios = [e.radius / R for e in circles]
+    assert circles, "no crank circle"
+    crank_circle = circles[0]
+    sc = ratios[0]
+
+    def paper(z: complex) -> complex:
+        return crank_circle.center + sc * (z - piv)
+
+    texts = [e for e in s.entities if isinstance(e, Text)]
+    problems = []
+    for pname, z in model.mechanism.frame_points.items():
+        label = sheet_point(pname)
+        where = paper(z * 1e3)
+        near = [t for t in texts if t.text == label]
+        d = min((_dist_box(where, _box(t)) for t in near), default=np.inf)
+        if d > PIVOT_NEAR:
+            problems.append(f"pivot {label}: its name {d:.1f} mm from it")
+    rings = [e for e in s.entities if isinstance(e, Circle) and e.layer != "CENTER"]
+    lines = [e for e in s.entities if isinstance(e, Line)]
+    tip = P[crank.tip]
+    for i, number in enumerate(k.positions.labels):
+        pin = paper(tip[i])
+        circled = [(t, c) for t in texts if t.text == number for c in rings
+                   if abs(c.center - t.position) < 1e-6 and c.radius > 0.4 * t.height]
+        if not circled:
+            problems.append(f"position {number}: not circled")
+            continue
+        ok = any(abs(c.center - pin) <= NUMBER_NEAR
+                 or any(min(abs(ln.p0 - pin), abs(ln.p1 - pin)) < 1e-6
+                        and abs(abs((ln.p1 if abs(ln.p0 - pin) < 1e-6 else ln.p0) - c.center) - c.radius) < 0.1
+                        for ln in lines)
+                 for _, c in circled)
+        if not ok:
+            problems.append(f"position {number}: {min(abs(c.center - pin) for _, c in circled):.1f} mm "
+                            "from its crank pin, no leader")
+    problems += [f"touching: {t}" for t in touching_labels(s)]
+    problems += [f"crowded: {t}" for t in crowded_labels(s)]
+    assert not problems, f"{name} {lang}:\n" + "\n".join(problems)
+
+
+# ------------------------------------------------------------------ cam sheet
+
+@pytest.mark.parametrize("lang", ["zh", "en"])
+def test_bending_cam_pivot_named_beside_it(example_results, lang):
+    """The rocker's pivot A of the lock-beam's bending cam is named beside it (it stood on a
+    20 mm leader inside the fan of the rays to the arm's positions): its name's box within
+    :data:`PIVOT_NEAR` of the pivot, found as the pin at the right end of the centre
+    distance a's dimension."""
+    from mechdesign.render.labels import sheet_point
+    from mechdesign.render.sheet import Circle, Dimension, Text
+
+    s, _ = _sheet(example_results, "lockbeam", "bending_cam", lang)
+    dim = next(e for e in s.entities if isinstance(e, Dimension) and (e.text or "").startswith("a="))
+    ends = (dim.p0.real, dim.p1.real)
+    pins = [e for e in s.entities if isinstance(e, Circle) and abs(e.radius - 1.2) < 1e-9
+            and e.layer == "OUTLINE" and min(abs(e.center.real - x) for x in ends) < 1e-6]
+    assert pins, "no pivot pin at the end of a"
+    # the rocker's pivot: the pin at the end of a that is not the cam centre's (the one
+    # farther from the dimension's other end's pin, i.e. at x of the end the arm starts from)
+    names = [t for t in s.entities if isinstance(t, Text) and t.text == sheet_point("A")]
+    assert names
+    d = min(_dist_box(p.center, _box(t)) for p in pins for t in names)
+    assert d <= PIVOT_NEAR, f"A's name {d:.1f} mm from its pivot"

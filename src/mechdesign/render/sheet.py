@@ -998,6 +998,11 @@ def sample_polyline(points, step: float) -> np.ndarray:
     return np.concatenate(out)
 
 
+# a circled label (:meth:`LabelPlacer.place_breaking` with a ``balloon``) whose centre is
+# farther than this from its point is joined to it by a leader [mm]
+BALLOON_AT = 9.0
+
+
 class LabelPlacer:
     """Places labels so that they do not overlap each other or marked obstacles.
 
@@ -1398,10 +1403,9 @@ class LabelPlacer:
                 if np.count_nonzero((fixed.real > grown[0]) & (fixed.real < grown[2])
                                     & (fixed.imag > grown[1]) & (fixed.imag < grown[3])):
                     continue
-                if rank >= len(gaps):          # on a leader: crossing no text, no pin
+                if far and abs(c - anchor) > BALLOON_AT:   # on a leader: crossing no text, no pin
                     foot = c - (c - anchor) / abs(c - anchor) * r
-                    if any(clip_segment(anchor + (foot - anchor) * 0.15, foot, b) is not None
-                           for b in self.boxes):
+                    if any(clip_segment(anchor, foot, b) is not None for b, _ in self.texts):
                         continue
                 cost = len(self._crossing_breakable(grown)) + 1.5 * rank + 0.3 * abs(t)
                 if best is None or cost < best[0]:
@@ -1412,7 +1416,7 @@ class LabelPlacer:
             return None
         _, c, box, grown = best
         self._break(grown)
-        if circled and abs(c - anchor) > r + 2.0 and far and abs(c - anchor) - r > gaps[-1] + 1e-9:
+        if far and abs(c - anchor) > BALLOON_AT:
             foot = c - (c - anchor) / abs(c - anchor) * r
             self.sheet.line(anchor, foot, "CONSTRUCTION")
             self.sheet.fill(anchor + 0.5 * np.exp(1j * np.linspace(0, 2 * np.pi, 9)[:-1]), "CONSTRUCTION")
