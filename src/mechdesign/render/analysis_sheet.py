@@ -785,13 +785,16 @@ def _mechanism(s: Sheet, model, k, lab: dict, box, chosen: list[str], lang: str)
                 a, b = b, a
             d = (b - a) / abs(b - a) if abs(b - a) > 1e-9 else 1.0
             at = a + (b - a) * (0.3 if fixed else 0.5)
-            if placer.place_breaking(v.p(at), link, 3.5, prefer=1j * d, gaps=(1.5, 2.5, 3.5, 4.5, 6.0)) is None:
-                placer.place(v.p(at), link, 3.5, prefer=1j * d, gap=1.5, last_leader=True)
+            if placer.place_breaking(v.p(at), link, 3.5, prefer=1j * d, gaps=(1.5, 2.5, 3.5, 4.5, 6.0, 8.0)) is None:
+                placer.place(v.p(at), link, 3.5, prefer=1j * d, gap=1.5, leader=True)
             numbered.add(link)
         for slider, point, guide, _ in sliders:
             if slider not in numbered:
                 ang = guide if not isinstance(guide, str) else float(k.link_angle[guide][n + i0])
-                placer.place(v.p(P[point][i0]), slider, 3.5, prefer=1j * np.exp(1j * ang), gap=4.0)
+                if placer.place_breaking(v.p(P[point][i0]), slider, 3.5, prefer=1j * np.exp(1j * ang),
+                                         gaps=(4.0, 5.0, 6.0, 8.0)) is None:
+                    placer.place(v.p(P[point][i0]), slider, 3.5, prefer=1j * np.exp(1j * ang), gap=4.0,
+                                 leader=True)
     for slider, point, g0, u, t0, t1 in guides:
         nm = _name(model, slider, lang)
         text = lab["guide"].format(n=nm) if nm else lab["guide_plain"]

@@ -1233,10 +1233,7 @@ class LabelPlacer:
         w, h = text_width(text, height), height
         u = prefer / abs(prefer)
         best = None
-        far = list(balloon) if circled else []
-        for rank, dist in enumerate(list(gaps) + far):
-            if rank == len(gaps) and best is not None:
-                break
+        for rank, dist in enumerate(gaps):
             for t in (0, 1, -1, 2, -2, 3, -3, 4, -4, 5, -5, 6, -6, 7, -7, 8):
                 d = u * np.exp(1j * t * np.pi / 8)
                 c = anchor + d * (dist + 0.5 * abs(d.real) * w + 0.5 * abs(d.imag) * h)
@@ -1405,7 +1402,11 @@ class LabelPlacer:
                     continue
                 if far and abs(c - anchor) > BALLOON_AT:   # on a leader: crossing no text, no pin
                     foot = c - (c - anchor) / abs(c - anchor) * r
-                    if any(clip_segment(anchor, foot, b) is not None for b, _ in self.texts):
+                    # (the boxes about the point itself, its pin and slider block, left out)
+                    if any(clip_segment(anchor, foot, b) is not None for b in self.boxes
+                           if not (b[0] - 6.0 <= anchor.real <= b[2] + 6.0
+                                   and b[1] - 6.0 <= anchor.imag <= b[3] + 6.0)) \
+                            or any(clip_segment(anchor, foot, b) is not None for b, _ in self.texts):
                         continue
                 cost = len(self._crossing_breakable(grown)) + 1.5 * rank + 0.3 * abs(t)
                 if best is None or cost < best[0]:
