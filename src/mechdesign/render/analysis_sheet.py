@@ -769,7 +769,8 @@ def _mechanism(s: Sheet, model, k, lab: dict, box, chosen: list[str], lang: str)
             if name in P:
                 d = P[name][i0] - mid
                 if placer.place_breaking(v.p(P[name][i0]), sheet_point(name), 3.5,
-                                         prefer=d if abs(d) > 1e-9 else 1j, gaps=(1.5, 2.5, 3.5, 4.5)) is None:
+                                         prefer=d if abs(d) > 1e-9 else 1j,
+                                         gaps=(1.5, 2.5, 3.5, 4.5, 6.0, 8.0)) is None:
                     placer.place(v.p(P[name][i0]), sheet_point(name), 3.5, prefer=d if abs(d) > 1e-9 else 1j,
                                  gap=2.0, leader=True)
         # the link numbers at the first chosen position: beside each link (a third of the
