@@ -674,6 +674,7 @@ def _mechanism(s: Sheet, model, k, lab: dict, box, chosen: list[str], lang: str)
         v.line(g0 + u * t0, g0 + u * t1, "CENTER")
         placer.block_segment(v.p(g0 + u * t0), v.p(g0 + u * t1), 1.0)
     out = model.output
+    first_link = len(s.entities)
     order = [i for i in range(len(labels)) if labels[i] not in chosen] + \
             [labels.index(c) for c in chosen if c in labels]
     for i in order:
@@ -699,6 +700,9 @@ def _mechanism(s: Sheet, model, k, lab: dict, box, chosen: list[str], lang: str)
             for name in sorted(coms):
                 if name in P:
                     s.circle(v.p(P[name][i]), 0.8, "OUTLINE", 0.25)
+    # the links of the other positions (thin) are broken under a pivot's name and a
+    # position's number (GB/T 4457.4), which stand at their points
+    placer.mark_breakable(first_link)
     tip = P[crank.tip]
     piv = P[crank.pivot][0]
     n_before = len(s.entities)
@@ -740,21 +744,35 @@ def _mechanism(s: Sheet, model, k, lab: dict, box, chosen: list[str], lang: str)
             _block_dimension(placer, e)
     for name, z in mech.frame_points.items():
         ground(v, z * mm, 6.0)
-        placer.block(v.p(z * mm), 4.0)
-        placer.place(v.p(z * mm), sheet_point(name), 3.5, prefer=1 + 0.3j, gap=2.5, leader=True)
+    for name, z in mech.frame_points.items():
+        # beside its pivot, the thin links of the other positions broken under it; on a
+        # leader only where even that leaves no room
+        if placer.place_breaking(v.p(z * mm), sheet_point(name), 3.5, prefer=1 + 0.3j,
+                                 gaps=(1.5, 2.5, 3.5, 4.5)) is None:
+            placer.block(v.p(z * mm), 4.0)
+            placer.place(v.p(z * mm), sheet_point(name), 3.5, prefer=1 + 0.3j, gap=2.5, leader=True)
+        placer.block(v.p(z * mm), 2.0)
     for i in range(len(labels)):
         u = (tip[i] - piv) / abs(tip[i] - piv)
         bold = labels[i] in chosen            # clear of the slider block drawn there
-        placer.place(v.p(tip[i]), labels[i], 3.5 if bold else 2.5, prefer=u,
-                     gap=5.5 if bold and sliders else 1.5, apart=True, last_leader=True)
+        # a position's number in a circle (told from the links' numbers), beside its crank
+        # pin, outside the crank circle where it can be
+        if placer.place_breaking(v.p(tip[i]), labels[i], 3.5 if bold else 2.5, prefer=u, circled=True,
+                                 gaps=(1.0, 2.0, 3.2, 4.5, 6.0, 8.0),
+                                 balloon=(10.0, 12.5, 15.0, 18.0, 22.0)) is None:
+            placer.place(v.p(tip[i]), labels[i], 3.5 if bold else 2.5, prefer=u,
+                         gap=5.5 if bold and sliders else 1.5, apart=True, last_leader=True)
     if chosen and chosen[0] in labels:
         i0 = labels.index(chosen[0])
         mid = np.mean([P[nm][i0] for nm in drawn])
         for name in sorted((joints - set(mech.frame_points)) | asked):
             if name in P:
                 d = P[name][i0] - mid
-                placer.place(v.p(P[name][i0]), sheet_point(name), 3.5, prefer=d if abs(d) > 1e-9 else 1j,
-                             gap=2.0, leader=True)
+                if placer.place_breaking(v.p(P[name][i0]), sheet_point(name), 3.5,
+                                         prefer=d if abs(d) > 1e-9 else 1j,
+                                         gaps=(1.5, 2.5, 3.5, 4.5, 6.0, 8.0)) is None:
+                    placer.place(v.p(P[name][i0]), sheet_point(name), 3.5, prefer=d if abs(d) > 1e-9 else 1j,
+                                 gap=2.0, leader=True)
         # the link numbers at the first chosen position: beside each link (a third of the
         # way from its frame pivot, if it has one), a slider's number beside its block
         numbered = set()
@@ -768,12 +786,16 @@ def _mechanism(s: Sheet, model, k, lab: dict, box, chosen: list[str], lang: str)
                 a, b = b, a
             d = (b - a) / abs(b - a) if abs(b - a) > 1e-9 else 1.0
             at = a + (b - a) * (0.3 if fixed else 0.5)
-            placer.place(v.p(at), link, 3.5, prefer=1j * d, gap=1.5, last_leader=True)
+            if placer.place_breaking(v.p(at), link, 3.5, prefer=1j * d, gaps=(1.5, 2.5, 3.5, 4.5, 6.0, 8.0)) is None:
+                placer.place(v.p(at), link, 3.5, prefer=1j * d, gap=1.5, leader=True)
             numbered.add(link)
         for slider, point, guide, _ in sliders:
             if slider not in numbered:
                 ang = guide if not isinstance(guide, str) else float(k.link_angle[guide][n + i0])
-                placer.place(v.p(P[point][i0]), slider, 3.5, prefer=1j * np.exp(1j * ang), gap=4.0)
+                if placer.place_breaking(v.p(P[point][i0]), slider, 3.5, prefer=1j * np.exp(1j * ang),
+                                         gaps=(4.0, 5.0, 6.0, 8.0)) is None:
+                    placer.place(v.p(P[point][i0]), slider, 3.5, prefer=1j * np.exp(1j * ang), gap=4.0,
+                                 leader=True)
     for slider, point, g0, u, t0, t1 in guides:
         nm = _name(model, slider, lang)
         text = lab["guide"].format(n=nm) if nm else lab["guide_plain"]

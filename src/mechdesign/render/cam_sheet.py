@@ -521,7 +521,14 @@ def _follower_start(sheet, view, g: _ProfileGeometry, n, labels: LabelPlacer) ->
         for z in np.linspace(0, g.a, 9):
             angles.append(float(np.angle(z - 1j * y)))
         # the pivot's name once its frame, arm and the extension line of a are drawn
-        labels.place(P(A), sheet_point("A"), 3.5, prefer=-1 + 0.6j, gap=2.5, leader=True)
+        # beside the pivot, away from the fan of the rays to the arm's positions (which
+        # leave the pivot towards the cam): the nearest spot no line crosses, on a leader
+        # only where there is none (the lock-beam's bending cam: "A" stood on a 20 mm
+        # leader inside the fan)
+        away = -(0 - A) / abs(A) + 0.6j if abs(A) > 0 else -1 + 0.6j
+        if labels.place_breaking(P(A), sheet_point("A"), 3.5, prefer=complex(away.real, abs(away.imag)),
+                                 gaps=(1.5, 2.5, 3.5, 4.5, 6.0, 8.0)) is None:
+            labels.place(P(A), sheet_point("A"), 3.5, prefer=-1 + 0.6j, gap=2.5, leader=True)
         angles += [float(np.angle(A + 1j * t)) for t in (-20 * n, 0.0, 20 * n)]
         return angles
     # translating: stem along x = e, guide near its top

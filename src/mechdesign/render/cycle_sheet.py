@@ -132,7 +132,7 @@ def _tent(up: bool, a: float, span: float, p0: float, p1: float, xa: float, xb: 
 
 
 def _tent_label(s: Sheet, text: str, up: bool, pts: list[complex], xa: float, xb: float,
-                yb: float, yt: float) -> None:
+                yb: float, yt: float) -> bool:
     """The name of a phase drawn as a tent (:func:`_tent`) where the tent leaves room: under
     its highest point (``up``) or over its lowest, :data:`GAP` clear of the outline and of
     the tent's lines — as large as fits (3 mm down to 1.8 mm), else left out (the table
@@ -150,14 +150,15 @@ def _tent_label(s: Sheet, text: str, up: bool, pts: list[complex], xa: float, xb
         line = np.interp([x0, x1], xs, ys)      # a tent's extreme over [x0, x1] is at an end
         if (up and np.all(line >= y1 + GAP)) or (not up and np.all(line <= y0 - GAP)):
             s.text(complex((x0 + x1) / 2, y1), text, h, "TEXT", "center", "top")
-            return
+            return True
+    return False
 
 
 def _phase_label(s: Sheet, text: str, state: str, xa: float, xb: float, yb: float,
-                 yt: float) -> None:
+                 yt: float) -> bool:
     """A phase's name inside its box (see :func:`label_box`), :data:`GAP` clear of the
     transition lines, the outline and the diagonal — as large as fits (3 mm down to 1.8 mm),
-    left out when it does not fit (the table under the diagram names every phase)."""
+    else not drawn (:func:`_outside_labels` writes it above the bar); whether it was drawn."""
     for h in (3.0, 2.5, 2.0, 1.8):
         box = label_box(text, state, h, xa, xb, yb, yt)
         if _clear(box, state, xa, xb, yb, yt):
@@ -169,7 +170,44 @@ def _phase_label(s: Sheet, text: str, state: str, xa: float, xb: float, yb: floa
                 s.text(complex(box[0], box[3]), text, h, "TEXT", "left", "top")
             else:
                 s.text(complex((box[0] + box[2]) / 2, box[3]), text, h, "TEXT", "center", "top")
-            return
+            return True
+    return False
+
+
+OUTSIDE_H = 2.5          # a name written outside its short piece [mm]
+
+
+def _outside_labels(s: Sheet, items: list[tuple[float, str]], left: float, right: float,
+                    yt: float) -> None:
+    """The names of a bar's pieces too short to hold them (``items``: the piece's middle x,
+    the name), in a row above the bar, each on a leader from its piece's top edge, side by
+    side in the order of their pieces :data:`LABEL_CLEAR` × the height apart, kept over the
+    bar (the lock-beam's bending wheel: its 342–348° far dwell and the 348–360° piece of its
+    return, 7 mm and 15 mm long, were not named on the bar)."""
+    if not items:
+        return
+    h = OUTSIDE_H
+    items = sorted(items)
+    widths = [_WIDTH * text_width(t, h) for _, t in items]
+    space = LABEL_CLEAR * h + 0.5
+    # left to right, each as near its piece as the one before allows; then the row pulled
+    # back left where it runs past the bar's right end
+    xs, end = [], left - 1e9
+    for (xm, _), w in zip(items, widths):
+        x = max(xm - w / 2, end + space)
+        xs.append(x)
+        end = x + w
+    over = end - right
+    if over > 0:
+        xs = [x - over for x in xs]
+        for k in range(len(xs) - 2, -1, -1):
+            xs[k] = min(xs[k], xs[k + 1] - space - widths[k])
+    base = yt + 2.8
+    for (xm, text), w, x in zip(items, widths, xs):
+        xc = x + w / 2
+        s.line(complex(xm, yt), complex(min(max(xm, x), x + w), base - 1.0), "CONSTRUCTION")
+        s.text(complex(xc, base + h), text, h, "TEXT", "center", "top")
+        s.labels.append(s.entities[-1])
 
 
 def polar(c: complex, r: float, phi_deg: float) -> complex:
@@ -200,15 +238,18 @@ def _in_ring(box, c: complex, r_in: float, r_out: float, a0: float, a1: float) -
 
 
 def circular_diagram(s: Sheet, acts, c: complex, r0: float, w: float, origin: float,
-                     lang: str) -> list:
+                     lang: str, keep_out=()) -> list:
     """The circular cycle diagram centred at ``c``: actuator i's ring r0 + i·w … r0 + (i+1)·w,
     each phase the arc of the ring's outer circle from its start to its end (clockwise from
     the top) and the radial lines at its boundaries, its name inside where it fits; the
-    rings numbered, φ ticks every 30° outside, the origin's radius dash-dotted. Returns the
-    text boxes it drew (for the legend beside it)."""
+    rings numbered, φ ticks every 30° outside, the origin's radius dash-dotted; a name that
+    does not fit its arc outside the rings on a leader (:func:`_outside_arc_label`), clear
+    of the boxes ``keep_out`` (the caption and the legend drawn later). Returns the text
+    boxes it drew (for the legend beside it)."""
     outer = r0 + len(acts) * w
     s.circle(c, r0, "OUTLINE", 0.35)
     boxes = []
+    missing = []                          # (angle, radius, name) of the arcs too short
     for i, act in enumerate(acts):
         r_in, r_out = r0 + i * w, r0 + (i + 1) * w
         bounds = []
@@ -228,6 +269,8 @@ def circular_diagram(s: Sheet, acts, c: complex, r0: float, w: float, origin: fl
                     s.text(complex(mid.real, box[3]), name, h, "TEXT", "center", "top")
                     boxes.append(box)
                     break
+            else:
+                missing.append((a + span / 2, (r_in + r_out) / 2, name))
         # the ring's number where it is farthest from the boundaries and the names
         best = None
         for phi in np.arange(0.0, 360.0, 2.0):
@@ -246,6 +289,10 @@ def circular_diagram(s: Sheet, acts, c: complex, r0: float, w: float, origin: fl
     for deg in range(0, 360, 30):
         s.line(polar(c, outer, deg), polar(c, outer + 2.0, deg), "OUTLINE", 0.35)
         s.text(polar(c, outer + 5.0, deg), f"{deg}°", 2.5, "TEXT", "center", "middle")
+    ticks = [_box_at(polar(c, outer + 5.0, deg), f"{deg}°", 2.5, "center", -0.5)
+             for deg in range(0, 360, 30)]
+    for phi, r_mid, name in missing:
+        boxes += _outside_arc_label(s, c, outer, phi, r_mid, name, boxes + ticks + list(keep_out))
     # the diagram's origin: its radius inside the rings; the sense of φ: an arrow clockwise
     s.line(c, polar(c, r0, origin), "CENTER")
     ra = 0.55 * r0
@@ -254,6 +301,44 @@ def circular_diagram(s: Sheet, acts, c: complex, r0: float, w: float, origin: fl
     s.fill([tip, tip - 3.0 * u + 1.0j * u, tip - 3.0 * u - 1.0j * u])
     s.text(polar(c, 0.25 * r0, 105.0), "φ", 3.5, "TEXT", "center", "middle")
     return boxes
+
+
+def _box_at(p: complex, text: str, h: float, halign: str, grow: float = 0.0):
+    """The box of a text of height ``h`` centred vertically on ``p``, aligned ``halign``
+    there, grown by ``grow`` on every side."""
+    w = _WIDTH * text_width(text, h)
+    x0 = {"left": p.real, "right": p.real - w}.get(halign, p.real - w / 2)
+    return (x0 - grow, p.imag - 0.6 * h - grow, x0 + w + grow, p.imag + 0.6 * h + grow)
+
+
+def _outside_arc_label(s: Sheet, c: complex, outer: float, phi: float, r_mid: float, name: str,
+                       taken: list) -> list:
+    """The name of an arc too short to hold it (its middle at shaft angle ``phi``, radius
+    ``r_mid``), outside the rings beyond the φ ticks, on a leader from the arc's middle: at
+    the nearest angle (±40°) and radius where its box keeps :data:`LABEL_CLEAR` × its height
+    from the ``taken`` boxes and the leader crosses none of them. Returns its box."""
+    from .sheet import boxes_overlap, clip_segment
+
+    h = OUTSIDE_H
+    start = polar(c, r_mid, phi)
+    for dr in (11.0, 15.0, 19.0):
+        for dphi in (0, 4, -4, 8, -8, 12, -12, 16, -16, 20, -20, 25, -25, 30, -30, 35, -35, 40, -40):
+            p = polar(c, outer + dr, phi + dphi)
+            halign = "left" if p.real > c.real + 2.0 else "right" if p.real < c.real - 2.0 else "center"
+            box = _box_at(p + (0.8 if halign == "left" else -0.8 if halign == "right" else 0.0), name, h,
+                          halign)
+            if box[0] < s.inner[0] + 2.0 or box[2] > s.inner[2] - 2.0:
+                continue
+            if any(boxes_overlap(box, b, LABEL_CLEAR * h) for b in taken):
+                continue
+            if any(clip_segment(start, p, b) is not None for b in taken):
+                continue
+            s.line(start, p, "CONSTRUCTION")
+            x = {"left": box[0], "right": box[2]}.get(halign, (box[0] + box[2]) / 2)
+            s.text(complex(x, box[3] - 0.1 * h), name, h, "TEXT", halign, "top")
+            s.labels.append(s.entities[-1])
+            return [box]
+    return []
 
 
 def cycle_sheet(diagram, info: TitleInfo, lang: str, checks=()) -> Sheet:
@@ -286,6 +371,7 @@ def cycle_sheet(diagram, info: TitleInfo, lang: str, checks=()) -> Sheet:
         s.polyline([complex(left, yb), complex(right, yb), complex(right, yt), complex(left, yt)],
                    "OUTLINE", closed=True, weight=0.5)
         marks = set()
+        outside = []                      # (x middle, name) of the pieces too short for it
         for ph in act.phases:
             a, span = float(ph.start) * DEG, float(ph.span) * DEG
             for p0, p1 in pieces(a, span, origin):
@@ -301,9 +387,12 @@ def cycle_sheet(diagram, info: TitleInfo, lang: str, checks=()) -> Sheet:
                 elif ph.state in ("work", "clear"):
                     pts = _tent(ph.state == "work", a, span, p0, p1, xa, xb, yb, yt)
                     s.polyline(pts, "CONSTRUCTION")
-                    _tent_label(s, phase_name(ph, lang), ph.state == "work", pts, xa, xb, yb, yt)
+                    if not _tent_label(s, phase_name(ph, lang), ph.state == "work", pts, xa, xb, yb, yt):
+                        outside.append(((xa + xb) / 2, phase_name(ph, lang)))
                     continue
-                _phase_label(s, phase_name(ph, lang), ph.state, xa, xb, yb, yt)
+                if not _phase_label(s, phase_name(ph, lang), ph.state, xa, xb, yb, yt):
+                    outside.append(((xa + xb) / 2, phase_name(ph, lang)))
+        _outside_labels(s, outside, left, right, yt)
         # the boundaries' angles under the bar to 0.1° (as the table), one that would come
         # nearer the one before it than the labels' space (LABEL_CLEAR) a row lower, that
         # space under the first row
@@ -344,12 +433,15 @@ def cycle_sheet(diagram, info: TitleInfo, lang: str, checks=()) -> Sheet:
     if outer >= 12.0 * len(acts):         # (many actuators leave no room: the tables only)
         c = complex(cx, ytop - cap_h - 6.0 - room / 2)
         r0 = 0.3 * outer
-        circular_diagram(s, acts, c, r0, (outer - r0) / len(acts), origin, lang)
+        legend_y = ytop - cap_h - 4.0
+        keep_out = [(cx - 80.0, ytop - cap_h - 1.0, cx + 80.0, ytop)]     # the caption
+        keep_out += [(x0 + 6.0, legend_y - 4.5 * i - 3.6, x0 + 6.0 + text_width(f"{i + 1}  {nm}", 3.0),
+                      legend_y - 4.5 * i) for i, nm in enumerate(names)]
+        circular_diagram(s, acts, c, r0, (outer - r0) / len(acts), origin, lang, keep_out)
         s.text(complex(cx, ytop), cap1, fit_height(cap1, 150.0, 4.0), "TEXT", "center", "top")
         if cap2:
             s.text(complex(cx, ytop - fit_height(cap1, 150.0, 4.0) - 1.5), cap2, fit_height(cap2, 150.0, 3.0),
                    "TEXT", "center", "top")
-        legend_y = ytop - cap_h - 4.0
         for i, nm in enumerate(names):    # the rings' numbers, upper left of the circle
             s.text(complex(x0 + 6.0, legend_y - 4.5 * i), f"{i + 1}  {nm}", 3.0, "TEXT", "left", "top")
     else:

@@ -18,6 +18,8 @@ optimum, at its first extreme position, and its offset slider-crank), :func:`cam
 """
 from __future__ import annotations
 
+import re
+
 import unicodedata
 from dataclasses import replace
 
@@ -187,6 +189,19 @@ def wrap_note(text: str, width: float, smallest: float = NOTE_SMALLEST) -> list[
     j = max(items or fits) if fits else min(breaks)
     head, tail = text[:j].rstrip(), text[j:].lstrip()
     return [head] + wrap_note(tail, width, smallest)
+
+
+def numbered_items(*legends: str) -> str:
+    """The items of link legends ("2 crank  3 coupler", items two spaces apart) in the order
+    of their numbers, as one legend: the die-cutter's legend listed 2, 7, then 3 … 10 on
+    two lines (its groups' legends one after the other), read as two lists."""
+    items = [item for legend in legends for item in legend.split("  ") if item.strip()]
+
+    def number(item: str) -> float:
+        m = re.match(r"\s*(\d+)", item)
+        return int(m.group(1)) if m else float("inf")
+
+    return "  ".join(sorted(items, key=number))
 
 
 def _notes(s: Sheet, lines: list[str], where: str = "above") -> None:
@@ -617,8 +632,9 @@ def lockbeam_diagram(results, found, info: TitleInfo, lang: str) -> Sheet:
                              "4 guide bar  5 rod  6 feed slider  7 positioning pin"),
                   _.pgettext("kinematic sheet", "8 rocker (cam follower and input rocker)  9 coupler  "
                              "10 large chain wheel  11 chain  12 bending wheel (bending arm)"))
-        note = _.pgettext("kinematic sheet", "each group to μL; not given, so schematic: the groups' placing, "
-                          "the angle of the rocker's arms, the four-bar's frame line, the chain's centre distance")
+        note = _.pgettext("kinematic sheet", "Each group drawn to μL; schematic, as the task does not give them: "
+                          "the groups' relative placing, the angle between the rocker's arms, the direction of "
+                          "the four-bar's frame line, the chain's centre distance")
         if drawing_fits(s.entities[first:], regions(s)[where]):
             break
     _notes(s, [_scale_note(lab, n) + _.pgettext("kinematic sheet", "; φ = 0°: feed linkage at position 1"),
@@ -892,10 +908,11 @@ def die_cutter_diagram(results, found, info: TitleInfo, lang: str) -> Sheet:
                          _.pgettext("kinematic sheet", "Drive from the motor (schematic, not to scale)"),
                          sheet_point("O1"), found.flywheel, _.pgettext("kinematic sheet", "flywheel"))
     press_legend = press.legend([x for x in numbered if x != "2"], lang)
-    note = _.pgettext("kinematic sheet", "each group to μL; not given, so schematic: the groups' placing, "
-                      "the gear pair's centre line, the chain's centre distance")
+    note = _.pgettext("kinematic sheet", "Each group drawn to μL; schematic, as the task does not give them: "
+                      "the groups' relative placing, the direction of the gear pair's centre line, the "
+                      "chain's centre distance")
     _notes(s, [_scale_note(lab, n) + lab["drawn_at"].format(p=press.label), with_subscripts(note, "μ_L"),
-               lab["links"] + legend, press_legend + "  " + legend2], where)
+               lab["links"] + numbered_items(legend, press_legend, legend2)], where)
     return s
 
 

@@ -998,6 +998,11 @@ def sample_polyline(points, step: float) -> np.ndarray:
     return np.concatenate(out)
 
 
+# a circled label (:meth:`LabelPlacer.place_breaking` with a ``balloon``) whose centre is
+# farther than this from its point is joined to it by a leader [mm]
+BALLOON_AT = 9.0
+
+
 class LabelPlacer:
     """Places labels so that they do not overlap each other or marked obstacles.
 
@@ -1020,6 +1025,9 @@ class LabelPlacer:
         # the sheet's lines drawn so far, sampled (see :meth:`_drawn_points`)
         self._drawn = np.zeros(0, dtype=complex)
         self._seen = 0
+        # indices into the sheet's entities of the thin lines a label may break
+        # (:meth:`place_breaking`: the links of the other positions on the A1 skeleton)
+        self.breakable: set[int] = set()
 
     # -- obstacles
     def block(self, z: complex, radius: float = 1.0) -> None:
@@ -1296,6 +1304,129 @@ class LabelPlacer:
                         "TEXT" if layer == "CONSTRUCTION" else layer, "center", "bottom")
         self.boxes.append(b)
         self._label((b[0] + 1.0, b[1] + 0.8, b[2] - 1.0, b[1] + 0.8 + height), height)
+
+    # -- labels that break the thin lines under them
+    def mark_breakable(self, first: int, last: int | None = None, layers=("CONSTRUCTION",)) -> None:
+        """The thin lines and polylines among the sheet's entities ``first``…``last`` (on
+        ``layers``) may be broken by a label (:meth:`place_breaking`)."""
+        last = len(self.sheet.entities) if last is None else last
+        self.breakable |= {i for i in range(first, last)
+                           if isinstance(self.sheet.entities[i], (Line, Polyline))
+                           and self.sheet.entities[i].layer in layers}
+
+    def _fixed_points(self) -> np.ndarray:
+        """Points along every drawn line, arc and dimension that may not be broken."""
+        n = len(self.sheet.entities)
+        if getattr(self, "_fixed_n", -1) != n:
+            keep, self.points = self.points, np.zeros(0, dtype=complex)
+            self.absorb([e for i, e in enumerate(self.sheet.entities)
+                         if i not in self.breakable and not isinstance(e, (Text, Fill))], 0.4)
+            self._fixed, self.points, self._fixed_n = self.points, keep, n
+        return self._fixed
+
+    def _crossing_breakable(self, box: Box) -> list[int]:
+        out = []
+        for i in self.breakable:
+            e = self.sheet.entities[i]
+            pts = (e.p0, e.p1) if isinstance(e, Line) else tuple(e.points) + ((e.points[0],) if e.closed else ())
+            if any(clip_segment(a, b, box) is not None for a, b in zip(pts[:-1], pts[1:])):
+                out.append(i)
+        return out
+
+    def _break(self, box: Box) -> None:
+        """The breakable lines crossing ``box`` drawn with a gap there (GB/T 4457.4: a thin
+        line is broken where it would cross a text)."""
+        for i in self._crossing_breakable(box):
+            e = self.sheet.entities[i]
+            pts = [e.p0, e.p1] if isinstance(e, Line) else list(e.points) + ([e.points[0]] if e.closed else [])
+            runs, run = [], [pts[0]]
+            for a, b in zip(pts[:-1], pts[1:]):
+                cut = clip_segment(a, b, box)
+                if cut is None:
+                    run.append(b)
+                    continue
+                t0, t1 = cut
+                if t0 > 1e-9:
+                    run.append(a + (b - a) * t0)
+                if len(run) >= 2:
+                    runs.append(run)
+                run = [a + (b - a) * t1] if t1 < 1 - 1e-9 else []
+                if t1 < 1 - 1e-9:
+                    run.append(b)
+            if len(run) >= 2:
+                runs.append(run)
+            runs = [r for r in runs if abs(r[-1] - r[0]) > 0.3 or len(r) > 2]
+            pieces = [Line(r[0], r[1], e.layer, e.weight) if len(r) == 2 else
+                      Polyline(tuple(r), e.layer, False, e.weight) for r in runs]
+            if not pieces:                  # wholly under the text: a zero-length stub
+                pieces = [Line(pts[0], pts[0], e.layer, e.weight)]
+            self.sheet.entities[i] = pieces[0]
+            for piece in pieces[1:]:
+                self.breakable.add(len(self.sheet.entities))
+                self.sheet.entities.append(piece)
+
+    def place_breaking(self, anchor: complex, text: str, height: float, prefer: complex,
+                       gaps=(1.0, 2.0, 3.2, 4.5, 6.0), circled: bool = False,
+                       margin: float = 0.6, balloon=()) -> complex | None:
+        """A point label close beside ``anchor`` where only breakable thin lines cross it
+        (:meth:`mark_breakable`), those broken round it: the nearest spot (``gaps`` from the
+        anchor, 16 directions from ``prefer``) clear of every other line, arc, dimension,
+        blocked point and label (the word space :data:`LABEL_CLEAR` from the texts), the
+        fewest thin lines across it. With ``circled`` the text is drawn in a circle (a
+        position number, told from a link number as GB drawings do). None (nothing drawn)
+        when no spot is clear: a pivot inside the fan of the crank's twelve positions went
+        on a 40 mm leader and its name stood at the crank circle among the position marks.
+        ``balloon``: farther distances tried next for a circled text, which is then joined
+        to its point by a thin leader (a balloon, as a part number of GB/T 4458.2) that
+        crosses no text."""
+        w, h = text_width(text, height), height
+        r = max(w, h) / 2 + 0.25 * height + 0.3 if circled else 0.0
+        bw, bh = (2 * r, 2 * r) if circled else (w, h)
+        u = prefer / abs(prefer) if abs(prefer) > 1e-12 else 1j
+        fixed = self._fixed_points()
+        best = None
+        far = list(balloon) if circled else []
+        for rank, dist in enumerate(list(gaps) + far):
+            if rank == len(gaps) and best is not None:
+                break
+            for t in (0, 1, -1, 2, -2, 3, -3, 4, -4, 5, -5, 6, -6, 7, -7, 8):
+                d = u * np.exp(1j * t * np.pi / 8)
+                c = anchor + d * (dist + 0.5 * abs(d.real) * bw + 0.5 * abs(d.imag) * bh)
+                box = (c.real - bw / 2, c.imag - bh / 2, c.real + bw / 2, c.imag + bh / 2)
+                grown = (box[0] - margin, box[1] - margin, box[2] + margin, box[3] + margin)
+                if not self.free((box[0] - 1.1, box[1] - 0.4, box[2] + 1.1, box[3] + 0.4)) \
+                        or self.crowding(box, h):
+                    continue
+                if np.count_nonzero((fixed.real > grown[0]) & (fixed.real < grown[2])
+                                    & (fixed.imag > grown[1]) & (fixed.imag < grown[3])):
+                    continue
+                if far and abs(c - anchor) > BALLOON_AT:   # on a leader: crossing no text, no pin
+                    foot = c - (c - anchor) / abs(c - anchor) * r
+                    # (the boxes about the point itself, its pin and slider block, left out)
+                    if any(clip_segment(anchor, foot, b) is not None for b in self.boxes
+                           if not (b[0] - 6.0 <= anchor.real <= b[2] + 6.0
+                                   and b[1] - 6.0 <= anchor.imag <= b[3] + 6.0)) \
+                            or any(clip_segment(anchor, foot, b) is not None for b, _ in self.texts):
+                        continue
+                cost = len(self._crossing_breakable(grown)) + 1.5 * rank + 0.3 * abs(t)
+                if best is None or cost < best[0]:
+                    best = (cost, c, box, grown)
+            if best is not None and best[0] < 1.5 * rank + 3.0:
+                break
+        if best is None:
+            return None
+        _, c, box, grown = best
+        self._break(grown)
+        if far and abs(c - anchor) > BALLOON_AT:
+            foot = c - (c - anchor) / abs(c - anchor) * r
+            self.sheet.line(anchor, foot, "CONSTRUCTION")
+            self.sheet.fill(anchor + 0.5 * np.exp(1j * np.linspace(0, 2 * np.pi, 9)[:-1]), "CONSTRUCTION")
+            self.segments.append((anchor + (foot - anchor) * 0.1, foot))
+        self.sheet.text(c, text, height, "TEXT", "center", "middle")
+        self._label(box, h)
+        if circled:
+            self.sheet.circle(c, r, "OUTLINE", 0.25)
+        return c
 
 
 def _near_segment(pts: np.ndarray, a: complex, b: complex, dist: float, skip: float) -> int:
