@@ -124,6 +124,13 @@ def invalid(msgid: str, zh: str | None = None, /, **fields):
     return PydanticCustomError("value_error", "{msg}", {"msg": message})
 
 
+#: A cast flywheel rim's proportions, as every flywheel section of a brief gives them
+#: (the guide-bar machines', the die-cutter's and the general linkage's): H/b and γ.
+RimHeightToWidth = Annotated[float, Field(gt=0, le=10, description="Rim height/width H/b")]
+RimSpecificWeight = Annotated[float, Field(gt=0, le=3e5, description=(
+    "Rim material specific weight γ [N/m³] (cast iron 7×10⁴)"))]
+
+
 class StrictModel(BaseModel):
     """Base for brief sections: unknown keys forbidden, no silent type coercion."""
 

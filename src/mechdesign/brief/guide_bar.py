@@ -11,8 +11,8 @@ from pydantic import Field, field_validator, model_validator
 
 from ..lazy import np
 from .cam import CamParams, CamSection, cam_to_si
-from .common import (MISSING, AnalysisSettings, Problems, ReportMeta, SheetSettings, StrictModel,
-                     parse_fraction)
+from .common import (MISSING, AnalysisSettings, Problems, ReportMeta, RimHeightToWidth,
+                     RimSpecificWeight, SheetSettings, StrictModel, parse_fraction)
 from .drive import DriveParams, DriveSection, DriveStage, check_material, drive_to_si
 from ..i18n import N_
 
@@ -214,9 +214,8 @@ class GuideBarFlywheel(StrictModel):
         "Shaft carrying the flywheel: pinion (O1, z1) or crank (O2); default: pinion when the "
         "brief has a gear_pair, else crank (the pinion shaft's speed needs the gear ratio)"))
     rim_diameter_mm: float = Field(500.0, gt=0, le=10000, description="Mean rim diameter D [mm]")
-    rim_height_to_width: float = Field(1.5, gt=0, le=10, description="Rim height/width H/b")
-    specific_weight_N_m3: float = Field(7.0e4, gt=0, le=3e5,
-                                        description="Rim material specific weight γ [N/m³] (cast iron 7×10⁴)")
+    rim_height_to_width: RimHeightToWidth = 1.5
+    specific_weight_N_m3: RimSpecificWeight = 7.0e4
 
     _delta = field_validator("fluctuation_delta", mode="before")(classmethod(lambda cls, v: _fraction(v)))
 

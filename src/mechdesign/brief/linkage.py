@@ -17,7 +17,8 @@ from typing import Annotated, Literal, Optional, Union
 from ..lazy import np
 from pydantic import BeforeValidator, Field, model_validator
 
-from .common import MISSING, AnalysisSettings, Listed, Problems, StrictModel, invalid, parse_fraction
+from .common import (MISSING, AnalysisSettings, Listed, Problems, RimHeightToWidth, RimSpecificWeight,
+                     StrictModel, invalid, parse_fraction)
 from ..i18n import N_
 
 _NAME = re.compile(r"^[A-Za-z][A-Za-z0-9_']{0,15}$")
@@ -181,9 +182,8 @@ class LinkageFlywheelSpec(StrictModel):
     rim_diameter_mm: Optional[float] = Field(None, gt=0, le=10000, description=(
         "Mean diameter D of a cast rim to size [mm]; without it the flywheel stops at its "
         "moment of inertia J_F"))
-    rim_height_to_width: float = Field(1.5, gt=0, le=10, description="Rim height/width H/b")
-    specific_weight_N_m3: float = Field(7.0e4, gt=0, le=3e5, description=(
-        "Specific weight γ of the rim material [N/m³] (cast iron ≈ 7.0e4)"))
+    rim_height_to_width: RimHeightToWidth = 1.5
+    specific_weight_N_m3: RimSpecificWeight = 7.0e4
 
 
 class LinkageSection(StrictModel):

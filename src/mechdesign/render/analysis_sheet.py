@@ -281,8 +281,7 @@ def _value(x: float, ref: float) -> str:
     sheet font has no superscript minus or digits 0, 5–9."""
     if not ref > 0 or abs(x) <= 1e-9 * ref:
         return "0"
-    decimals = max(0, 3 - int(np.floor(np.log10(ref))))
-    return fmt.minus(fmt.f(x, decimals, group=True))
+    return fmt.minus(fmt.f(x, fmt.column_decimals(ref), group=True))
 
 
 def _items(pg: Polygon, symbols: list | None = None, sense: float = 1.0) -> list[str]:
@@ -890,7 +889,7 @@ def _cell_number(x: float, column, decimals: int | None = None) -> str:
     written 0.0000, not 0.000005898; the true minus sign."""
     if decimals is None:
         peak = float(np.max(np.abs(column)))
-        decimals = max(0, 3 - int(np.floor(np.log10(peak)))) if peak > 0 else 0
+        decimals = fmt.column_decimals(peak)
     return fmt.minus(fmt.f(x, decimals, group=True))
 
 

@@ -83,7 +83,6 @@ class Citations:
         return "\\[" + ", ".join(str(n) for n in sorted(set(nums))) + "\\]" if nums else ""
 
     def entries(self) -> list[dict]:
-        known = references()
         lang = "zh" if self.lang == "zh" else "en"
         return [{"n": i, "key": key, "text": md_text(reference_text(key, lang))}
                 for i, key in enumerate(self.order, 1)]

@@ -24,8 +24,8 @@ from ...lazy import np
 from pydantic import BeforeValidator, Field, model_validator
 
 from ...brief.cam import CamParams, CamSection, cam_to_si
-from ...brief.common import (AnalysisSettings, Msg, Problems, ReportMeta, SheetSettings, StrictModel,
-                             parse_fraction)
+from ...brief.common import (AnalysisSettings, Msg, Problems, ReportMeta, RimHeightToWidth,
+                             RimSpecificWeight, SheetSettings, StrictModel, parse_fraction)
 from ...brief.components import IncompleteGearSection
 from ...brief.drive import DriveParams, DriveSection, drive_to_si
 from ...i18n import N_
@@ -214,9 +214,8 @@ class DieCutterFlywheel(StrictModel):
         "Drive shaft carrying the flywheel: 0 the motor, 1 the shaft after the first drive stage "
         "(the V-belt's large pulley), …; the number of drive stages means the distribution shaft"))
     rim_diameter_mm: float = Field(600.0, gt=0, le=5000, description="Mean rim diameter D [mm]")
-    rim_height_to_width: float = Field(1.5, gt=0, le=10, description="Rim height/width H/b")
-    specific_weight_N_m3: float = Field(7.0e4, gt=0, le=3e5, description=(
-        "Rim material specific weight γ [N/m³] (cast iron 7×10⁴)"))
+    rim_height_to_width: RimHeightToWidth = 1.5
+    specific_weight_N_m3: RimSpecificWeight = 7.0e4
 
 
 class ChainFeed(StrictModel):
