@@ -80,9 +80,13 @@ def test_a_dwell_is_not_counted_as_a_cam_check(handin_reports, lang):
     segments = document["cam"]["segments"]
     limited = sum(1 for s in segments if s.get("limit") is not None)
     assert limited == 2 and len(segments) == 4
-    name = "凸轮压力角" if lang == "zh" else "cam pressure angle"
+    # the cam's group counts its limited segments and its profile's curvature checks
+    # (review45), never a dwell
+    curvature = len(document["cam"]["curvature_checks"])
+    assert curvature == 2                       # a roller follower: ρ_min > r_r, ρ_a ≥ least
+    name = "凸轮机构" if lang == "zh" else "cam mechanism"
     row = re.search(rf"\| {re.escape(name)} \| (\d+) \|", md, flags=re.I)
-    assert row and int(row.group(1)) == limited, row and row.group(0)
+    assert row and int(row.group(1)) == limited + curvature, row and row.group(0)
 
 
 @pytest.mark.parametrize("lang", LANGS)

@@ -176,6 +176,7 @@ def profile(path: Path, lang: str, pitch, actual, base_radius, roller, marks, ro
             ax.plot(closed(pitch).real, closed(pitch).imag, color="C0", lw=0.9, ls="-.",
                     label=lab["pitch"])
         ax.plot(closed(actual).real, closed(actual).imag, color="k", lw=1.8, label=lab["actual"])
+        spots = []                      # the angle labels' centres, kept inside the axes
         for text, i in marks:
             p = pitch[i]
             ax.plot([0, p.real], [0, p.imag], color="0.75", lw=0.4)
@@ -186,6 +187,7 @@ def profile(path: Path, lang: str, pitch, actual, base_radius, roller, marks, ro
             u = p / abs(p) if abs(p) > 0 else 1
             q = p + u * (roller + 0.06 * base_radius + 3)
             ax.text(q.real, q.imag, text, fontsize=6.5, ha="center", va="center", color="0.25")
+            spots.append(q)
         ax.plot([0], [0], "+", color="k", ms=10)
         if pivot is not None:
             ax.plot([pivot.real], [pivot.imag], "^", color="k", ms=6)
@@ -204,6 +206,15 @@ def profile(path: Path, lang: str, pitch, actual, base_radius, roller, marks, ro
                     arrowprops=dict(arrowstyle="->", color="C2", lw=1.0))
         ax.text(0, -0.55 * base_radius, "ω " + (lab["ccw"] if rotation > 0 else lab["cw"]),
                 fontsize=7, color="C2", ha="center")
+        if spots:
+            # room for each angle label (review45: "270°" on the y axis' "0", "90°" on the frame):
+            # a label's half width and a gap, about a tenth of the labels' radius
+            z = np.array(spots)
+            pad = 0.1 * float(np.max(np.abs(z)))
+            x0, x1 = ax.get_xlim()
+            y0, y1 = ax.get_ylim()
+            ax.set_xlim(min(x0, float(z.real.min()) - pad), max(x1, float(z.real.max()) + pad))
+            ax.set_ylim(min(y0, float(z.imag.min()) - pad), max(y1, float(z.imag.max()) + pad))
         ax.set_aspect("equal")
         ax.set_xlabel(lab["x"])
         ax.set_ylabel(lab["y"])

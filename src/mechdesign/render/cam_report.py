@@ -322,22 +322,25 @@ def cam_context(c, lang: str, figs: dict[str, str], csv_name: str, section=None)
         if chk.limit is None:
             continue
         ok = verdict(chk.ok, lang)
-        name = f"{_segment_name(c, i, lang)} {i + 1}"
+        # the segment's number only where its kind repeats (review45: "rise 2" read as a typo)
+        name = _segment_name(c, i, lang)
+        if sum(1 for sg in c.segments if sg.kind == chk.kind) > 1:
+            name = _("{kind} (segment {n})", kind=name, n=i + 1)
         checks.append([_("max pressure angle, {segment}", segment=name),
                        f"{f(chk.max_pressure_angle * DEG, 2)}° ($\\delta$ = {f(chk.at * DEG, 1)}°)",
                        f"≤ {f(chk.limit * DEG, 0)}°", ok])
-    if fol.kind == "roller":
-        ok = verdict(c.rho_actual_min_convex >= p.min_actual_curvature, lang)
-        checks.append([_("smallest convex radius $\\rho_{min}$ of the pitch curve"),
-                       f"{f(c.rho_pitch_min_convex * MM, 2)} mm",
-                       f"> $r_r$ = {f(fol.roller_radius * MM, 2)} mm", verdict(c.rho_pitch_min_convex > fol.roller_radius, lang)])
-        checks.append([_("actual profile $\\rho_a = \\rho_{min} - r_r$"),
-                       f"{f(c.rho_actual_min_convex * MM, 2)} mm",
-                       f"≥ {f(p.min_actual_curvature * MM, 1)} mm", ok])
-    if fol.kind == "flat":
-        rho_min = c.rho_actual_min if c.rho_actual_min is not None else float(np.min(c.grid.rho_actual))
-        checks.append([_("smallest radius of curvature (must stay convex)"),
-                       f"{f(rho_min * MM, 2)} mm", "> 0", verdict(rho_min > 0, lang)])
+    # the profile's curvature checks, as the cam stage judged them
+    check_names = {"pitch_curvature": _("smallest convex radius $\\rho_{min}$ of the pitch curve"),
+                   "actual_curvature": _("actual profile $\\rho_a = \\rho_{min} - r_r$"),
+                   "convex": _("smallest radius of curvature (must stay convex)")}
+    for chk in c.curvature_checks:
+        if chk.key == "pitch_curvature":
+            limit = f"> $r_r$ = {f(chk.limit * MM, 2)} mm"
+        elif chk.key == "actual_curvature":
+            limit = f"≥ {length(chk.limit * MM)} mm"
+        else:
+            limit = "> 0"
+        checks.append([check_names[chk.key], f"{f(chk.value * MM, 2)} mm", limit, verdict(chk.ok, lang)])
     design_rows = []
     if c.min_base_radius is not None:
         what = (_("smallest base radius for a convex profile (ρ ≥ ρa,min)") if fol.kind == "flat" else

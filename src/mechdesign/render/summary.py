@@ -115,8 +115,12 @@ def _check_names() -> dict[str, tuple[str, str]]:
     return {**DRIVE_CHECK_NAMES, **CAM_CHECK_NAMES, **DISC_CHECK_NAMES}
 
 
-_CAM_OWNERS = {"cam": N_("cam pressure angle"), "positioning_cam": N_("positioning cam pressure angle"),
-               "bending_cam": N_("bending cam pressure angle")}
+# a cam's checks (its segments' pressure angles, its profile's curvature) under the cam's name
+_CAM_OWNERS = {"cam": N_("cam mechanism"), "positioning_cam": N_("positioning cam"),
+               "bending_cam": N_("bending cam")}
+_CURVATURE = {"pitch_curvature": N_("smallest convex radius $\\rho_{min}$ of the pitch curve"),
+              "actual_curvature": N_("actual profile $\\rho_a = \\rho_{min} - r_r$"),
+              "convex": N_("smallest radius of curvature (must stay convex)")}
 _SEGMENT = {"rise": N_("largest pressure angle of the rise"),
             "return": N_("largest pressure angle of the return")}
 
@@ -190,12 +194,16 @@ def _describe(node: dict, path: tuple, parents: tuple, names: dict, actuator) ->
         last = len(_field(parents, path, "shafts") or ()) - 1
         group = (_shaft_name(shaft.get("index", 0), last, True),
                  _shaft_name(shaft.get("index", 0), last, False))
-    elif "segments" in keys:                              # a cam segment's pressure angle
-        owner = keys[keys.index("segments") - 1] if keys.index("segments") else "cam"
+    elif "segments" in keys or "curvature_checks" in keys:   # a cam's pressure angle, curvature
+        part = "segments" if "segments" in keys else "curvature_checks"
+        owner = keys[keys.index(part) - 1] if keys.index(part) else "cam"
         group = _both(_CAM_OWNERS.get(owner, _CAM_OWNERS["cam"]))
-        kind = node.get("kind", "")
-        name = _both(_SEGMENT[kind]) if kind in _SEGMENT else \
-            _both(N_("largest pressure angle of the {kind}"), kind=kind)
+        kind = node.get("kind", node.get("key", ""))
+        if part == "curvature_checks":
+            name = _both(_CURVATURE.get(kind, kind))
+        else:
+            name = _both(_SEGMENT[kind]) if kind in _SEGMENT else \
+                _both(N_("largest pressure angle of the {kind}"), kind=kind)
         return {"group": group, "name": name}
     elif "constraints" in keys and "cycle" in keys:        # a timing rule of the cycle diagram
         cyc = _field(parents, path, "cycle", whole=True) or {}

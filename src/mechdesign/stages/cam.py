@@ -68,6 +68,19 @@ class CamDrawing:
 
 
 @dataclass(frozen=True)
+class CurvatureCheck:
+    """A check of the profile's curvature: the pitch curve's smallest convex radius beside the
+    roller (no undercut), the actual profile's beside the brief's least ρ_a (not pointed), a
+    flat face's profile convex."""
+
+    key: str = q("", "'pitch_curvature' (ρ_min > r_r) | 'actual_curvature' (ρ_a ≥ least) | "
+                     "'convex' (flat face: ρ > 0)")
+    value: float = q("m", "the smallest radius of curvature checked")
+    limit: float = q("m", "r_r, the least ρ_a of the brief, or 0")
+    ok: bool = q("", "value > limit (≥ for 'actual_curvature')")
+
+
+@dataclass(frozen=True)
 class CamResult:
     params: object
     base_radius: float               # used [m]
@@ -90,6 +103,7 @@ class CamResult:
     rho_actual_min: float | None = None            # smallest ρ of the actual profile, any sign [m]
     rho_pitch_min_concave: float | None = None     # smallest |ρ| where the pitch curve is concave [m]
     rho_actual_min_concave: float | None = None    # the same for the actual profile [m]
+    curvature_checks: tuple = ()                   # CurvatureCheck: the profile's checks
 
 
 def design(p) -> CamResult:
@@ -175,9 +189,18 @@ def design(p) -> CamResult:
         along = _face_positions(grid, fol)
         face = (float(np.min(along)), float(np.max(along)))
     warnings = _checks(p, fol, r0, segs, rho_p, rho_a, rho_min, min_r0, best)
+    if fol.kind == "roller":
+        curvature = (CurvatureCheck("pitch_curvature", rho_p, rr, bool(rho_p > rr)),
+                     CurvatureCheck("actual_curvature", rho_a, p.min_actual_curvature,
+                                    bool(rho_a >= p.min_actual_curvature)))
+    elif fol.kind == "flat":
+        curvature = (CurvatureCheck("convex", rho_min, 0.0, bool(rho_min > 0)),)
+    else:
+        curvature = ()
     return CamResult(p, r0, offset, designed, min_r0, best, grid, table, segs,
                      prog.boundaries(), rho_p, rho_a, face, warnings, outline, envelope, fol,
-                     drawing(p, fol, r0, grid, offset), rho_min, rho_p_concave, rho_a_concave)
+                     drawing(p, fol, r0, grid, offset), rho_min, rho_p_concave, rho_a_concave,
+                     curvature)
 
 
 def parts(span: float) -> int:
@@ -618,6 +641,8 @@ class CamDocument:
     corners: tuple[core.Corner, ...] = q("", "roller: corners of the pitch curve (velocity jumps)")
     stand_off: float | None = q("m", "roller: largest stand-off of the roller centre at an edge")
     table: CamTable = q("", "the cam at the brief's table step")
+    curvature_checks: tuple[CurvatureCheck, ...] = q(
+        "", "the profile's curvature checks (roller: no undercut, not pointed; flat: convex)")
 
 
 def cam_document(c: CamResult) -> CamDocument:
@@ -638,7 +663,8 @@ def cam_document(c: CamResult) -> CamDocument:
         corners=() if c.envelope is None else tuple(c.envelope.corners),
         stand_off=None if c.envelope is None else c.envelope.stand_off,
         table=CamTable(t.delta, t.motion.s, t.motion.ds, t.motion.d2s, t.motion.d3s, t.pitch,
-                       t.actual, t.pressure_angle, t.rho_pitch, t.rho_actual))
+                       t.actual, t.pressure_angle, t.rho_pitch, t.rho_actual),
+        curvature_checks=tuple(c.curvature_checks))
 
 
 @dataclass(frozen=True)

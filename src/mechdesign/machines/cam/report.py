@@ -24,9 +24,9 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
 
 
 _CAM_NOTE = N_("Every item is recomputed on the 0.1° design grid without the formula "
-               "it checks: velocity and acceleration against central differences of the "
-               "displacement (velocity), whose truncation error scales with the square of the "
-               "step (stencils across an impact are left out); the pressure angle from the "
+               "it checks: the velocity against central differences of the displacement and the "
+               "acceleration against those of the velocity, whose truncation error scales with "
+               "the square of the step (stencils across an impact are left out); the pressure angle from the "
                "normal to the chord of two neighbouring pitch points and the follower's "
                "direction of motion; the curvature from three neighbouring points; a roller "
                "follower's actual profile against a 20 × denser pitch curve by the shortest "
