@@ -251,11 +251,13 @@ def drive_context(d, lang: str, figures: dict[str, str], machine_power_eq: str |
     cand_rows = []
     for c in d.choice.candidates:
         if c.motor is None:
-            cand_rows.append([f(c.synchronous_rpm, 0), "—", "—", "—", "—", no])
+            cand_rows.append([f(c.synchronous_rpm, 0), "—", "—", "—", "—", no, no])
             continue
+        # both ranges (review45: the slotter's chosen Y90S-6 and the lighter Y801-4 both read
+        # "no" with no word why the Y801-4, i = 23.17, was passed over: beyond the maximum)
         cand_rows.append([f(c.synchronous_rpm, 0), c.motor.designation, f(c.motor.power / 1e3, 2),
                           f(c.motor.full_load_rpm, 0), f(c.total_ratio, 2),
-                          yes if c.recommended else no])
+                          yes if c.recommended else no, yes if c.possible else no])
     stage_rows = []
     for st in d.stages:
         stage_rows.append([str(st.index + 1), _stage_label(st, _), f(st.ratio_allocated, 3),

@@ -14,7 +14,7 @@ import numpy as np
 
 from ..i18n import N_, tr
 from . import figures as fig
-from .fmt import column_decimals, e, f, fluctuation, force_unit, md_text, percent, sentences, sig, tex_name, time_ratio
+from .fmt import column_decimals, e, f, residue, fluctuation, force_unit, md_text, percent, sentences, sig, tex_name, time_ratio
 from .fmt import verdict as fmt_verdict
 from .fmt import factor_for, factors_for, gives, product
 from .flywheel_text import flywheel_equation, texts_of
@@ -525,11 +525,15 @@ def verification_rows(v, lang: str, k=None) -> list[list[str]]:
                      e(v.power_balance_residual), "≤ 10⁻⁹", verdict(v.power_balance_residual, 1e-9)])
     if k is not None:
         scale, units = _units(k)
+        # by the number rule (0.01 mm or °, K to 0.001), how closely they agree as the Δ beside
+        # it (review45: "220.000 | 220.000", "1.2500 | 1.2500" showed digits, not the check)
         rows.append([_("stroke by position search / {unit}", unit=units[0]),
-                     f(v.stroke * scale, 3), f(k.stroke * scale, 3) + _(" (velocity zeros)"),
+                     f"{f(v.stroke * scale, 2)} (Δ = {residue((v.stroke - k.stroke) * scale, k.stroke * scale)})",
+                     f(k.stroke * scale, 2) + _(" (velocity zeros)"),
                      verdict(abs(v.stroke - k.stroke) / max(k.stroke, 1e-12), 1e-6)])
-        rows.append([_("$K$ by position search"), f(v.time_ratio, 4),
-                     f(k.time_ratio, 4), verdict(abs(v.time_ratio - k.time_ratio), 1e-6)])
+        rows.append([_("$K$ by position search"),
+                     f"{time_ratio(v.time_ratio)} (Δ = {residue(v.time_ratio - k.time_ratio, k.time_ratio)})",
+                     time_ratio(k.time_ratio), verdict(abs(v.time_ratio - k.time_ratio), 1e-6)])
     return rows
 
 

@@ -618,7 +618,7 @@ def summary_context(machine: str, document: dict, ctx: dict, lang: str, title: s
     # "Data assumptions"): the summary must not read as nothing to act on (page review 41)
     unconfirmed = sum(len(v.get("data_assumptions") or ()) for v in document.values() if isinstance(v, dict))
     if unconfirmed:
-        watch.append(_("The drive design used {n} handbook data that could not be checked against a public "
+        watch.append(_("The drive design used {n} handbook values that could not be checked against a public "
                        "copy of their source (listed under “Data assumptions”): verify them in the handbook "
                        "before handing in.", n=unconfirmed))
     total = sum(int(g["count"]) for g in groups)

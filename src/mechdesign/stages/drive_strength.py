@@ -985,15 +985,14 @@ def _loop_text(log) -> list[dict]:
             continue
         kinds = [x for x in _KIND_TEXT if any(x in e[3] for e in log[k:j + 1])]
         why = Join(Msg.pgettext("list", ", "), [Msg(_KIND_TEXT[x]) for x in kinds])
-        n = j - k + 1
         if kind == "end":
-            out.append(_step(N_("overhung end enlarged: {a} → {b} mm ({n} standard sizes; the smaller ones "
-                                 "fail: {why})"), a=_mmf(first[1]), b=_mmf(last[2]), n=n, why=why))
+            out.append(_step(N_("overhung end enlarged: {a} → {b} mm (standard sizes; the smaller ones "
+                                 "fail: {why})"), a=_mmf(first[1]), b=_mmf(last[2]), why=why))
         else:
             a, b = first[1], last[2]
-            out.append(_step(N_("journal/seat enlarged: {a0}/{a1} → {b0}/{b1} mm ({n} steps of 5 mm; the "
+            out.append(_step(N_("journal/seat enlarged: {a0}/{a1} → {b0}/{b1} mm (in steps of 5 mm; the "
                                  "smaller ones fail: {why})"), a0=_mmf(a[0]), a1=_mmf(a[1]), b0=_mmf(b[0]),
-                             b1=_mmf(b[1]), n=n, why=why))
+                             b1=_mmf(b[1]), why=why))
         k = j + 1
     return out
 

@@ -494,6 +494,12 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
                           _verdict(abs(err) < tol, lang)])
         vrows.append([_("{name}: {item}", name=name, item=_("loop-closure residual /m")),
                       residue(s.closure), "0", _verdict(s.closure < 1e-12, lang)])
+    # the design requirement itself, with its verdict (review45: [γ] = 40° was given and
+    # never judged): the optimum's γ_min against [γ]
+    vrows.append([_("{name}: {item}", name=md_text(_name(ver.sims[0].label, lang)),
+                    item=_("$\\gamma_{min}$ against $[\\gamma]$ /°")),
+                  _deg(best.gamma_min), f"≥ {_deg(p.gamma_allowed, 0)}",
+                  _verdict(best.gamma_min >= p.gamma_allowed - 1e-12, lang)])
     n0, n1 = ver.optimum_neighbours
     vrows.append([_("$\\gamma_{min}(t^* \\mp 0.001\\,\\mathrm{arc}) - \\gamma_{min}^*$ /°"),
                   f"{fe((n0 - best.gamma_min) * DEG)}, {fe((n1 - best.gamma_min) * DEG)}", "< 0",
@@ -556,6 +562,10 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
                           _with_diff(val, err, lang), ref, _verdict(abs(err) < tol, lang)])
         vrows.append([_("{name}: {item}", name=slider_name, item=_("loop-closure residual /m")),
                       residue(ss.closure), "0", _verdict(ss.closure < 1e-12, lang)])
+        vrows.append([_("{name}: {item}", name=slider_name,
+                        item=_("working-stroke $\\alpha_{max}$ against $90° - [\\gamma]$ /°")),
+                      _deg(sl.alpha_slow), f"≤ {_deg(sl.alpha_allowed, 0)}",
+                      _verdict(sl.alpha_slow <= sl.alpha_allowed + 1e-12, lang)])
     findings = []
     for key in ("optimum", "textbook", "slider"):
         v = r.get(key)

@@ -388,23 +388,25 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
         [_("simulated time ratio $K$"), f(chk.time_ratio, 3),
          f(pp.time_ratio_K, 3 if given else 2), _ok(abs(chk.time_ratio - pp.time_ratio_K) <= tol, _)],
         [_("largest pressure angle at $E$, working stroke / °"),
-         f(chk.alpha_E_work * DEG, 2), _("≤ {lim} ({alpha_E})", lim=f(lim, 0),
-                                         alpha_E=f(syn.alpha_E * DEG, 2)), _ok(chk.alpha_E_work <= syn.alpha_limit + 1e-9, _)],
+         f(chk.alpha_E_work * DEG, 2), _("≤ {lim} (synthesis: {value})", lim=f(lim, 0),
+                                         value=f(syn.alpha_E * DEG, 2)), _ok(chk.alpha_E_work <= syn.alpha_limit + 1e-9, _)],
         [_("largest pressure angle at $B$, working stroke / °"),
          f(chk.alpha_B_work * DEG, 2),
-         (f"≤ {f(lim, 0)}" if pp.limit_rocker else "—") + f" ({f(syn.alpha_B * DEG, 2)})",
+         _("≤ {lim} (synthesis: {value})", lim=f(lim, 0), value=f(syn.alpha_B * DEG, 2)) if pp.limit_rocker
+         else _("— (synthesis: {value})", value=f(syn.alpha_B * DEG, 2)),
          _ok(chk.alpha_B_work <= syn.alpha_limit + 1e-9, _) if pp.limit_rocker else "—"],
         [_("four-bar minimum transmission angle / °"),
-         f(chk.gamma_min * DEG, 4), f"≥ {f(syn.gamma_limit * DEG, 0)} ({f(syn.gamma_min * DEG, 4)})",
+         f(chk.gamma_min * DEG, 2), _("≥ {lim} (synthesis: {value})", lim=f(syn.gamma_limit * DEG, 0),
+                                      value=f(syn.gamma_min * DEG, 2)),
          _ok(chk.gamma_min >= syn.gamma_limit - 1e-9, _)],
         [_("mean driving power $\\bar M_b\\,\\omega$ / W"),
-         f(chk.mean_power, 4),
+         sig(chk.mean_power),
          _("mean resistance power {resistance_power}; by hand {hand_power}",
-            resistance_power=f(chk.resistance_power, 4), hand_power=f(chk.hand_power, 4)),
+            resistance_power=sig(chk.resistance_power), hand_power=sig(chk.hand_power)),
          _ok(abs(chk.mean_power - chk.hand_power) <= 1e-4 * chk.hand_power, _)],
         [_("$M_b$ vs virtual work $F_r\\lvert v_E\\rvert/\\omega$ (relative)"),
          e(chk.virtual_work_error), "≤ 10⁻⁹", _ok(chk.virtual_work_error <= 1e-9, _)],
-    ] + verification_rows(v, lang, k)
+    ] + verification_rows(v, lang)      # its position search: the first two rows (review45)
     # A bare "|" would split a pipe-table cell: escape it (math uses \lvert … \rvert).
     verify_rows = [[cell.replace("|", "\\|") for cell in row] for row in verify_rows]
     findings = [md_text(w.text(lang)) for key in ("synthesis", "linkage_verification", "pusher_check")
