@@ -58,3 +58,60 @@ def test_a_segment_number_only_where_its_kind_repeats(handin_reports, name, lang
         for row in _table_rows(md, label):
             first = row.strip("|").split("|")[0].strip()
             assert not re.search(r"(rise|return|推程|回程) \d+$", first), row
+
+
+def _rows_of(md: str, label: str) -> list[list[str]]:
+    return [[c.strip() for c in r.strip().strip("|").split("|")] for r in _table_rows(md, label)]
+
+
+@pytest.mark.parametrize("lang", LANGS)
+def test_the_motor_table_says_which_ratios_the_stages_can_reach(handin_reports, lang):
+    """slotter: the chosen Y90S-6 and the lighter Y801-4 both read "not in the recommended
+    range" with no word why the Y801-4 was passed over. Its V-belt (the only free stage
+    after the fixed gear pair i = 3) may reach i = 7 at most (吴宗泽《机械设计课程设计手册》,
+    table of recommended transmission ratios: V-belt 2–4, at most 7): i/3 = 23.17/3 = 7.72
+    is beyond it, Y90S-6's 15.17/3 = 5.06 within."""
+    md, _ = handin_reports("slotter", lang)
+    rows = {r[1]: r for r in _rows_of(md, "motors")}
+    yes, no = ("是", "否") if lang == "zh" else ("yes", "no")
+    for motor, row in rows.items():
+        if motor in ("—",):
+            continue
+        ratio = float(row[4])
+        assert row[6] == (yes if ratio / 3.0 <= 7.0 else no), row
+    assert rows["Y801-4"][6] == no and rows["Y90S-6"][6] == yes
+
+
+@pytest.mark.parametrize("lang", LANGS)
+def test_the_crank_rocker_judges_its_requirement(handin_reports, lang):
+    """crank_rocker: [γ] = 40° was given and never judged; the optimum's γ_min (46.95°, the
+    paper's law of cosines on the optimum's lengths) and the offset slider-crank's working-
+    stroke pressure angle (39.12° ≤ 90° − 40°) now have their rows and verdicts."""
+    md, _ = handin_reports("crank_rocker", lang)
+    ok = "合格" if lang == "zh" else "PASS"
+    rows = _rows_of(md, "verify")
+    gamma = [r for r in rows if "[\\gamma]" in r[0] and "gamma_{min}" in r[0]]
+    alpha = [r for r in rows if "90° - [\\gamma]" in r[0]]
+    assert len(gamma) == 1 and len(alpha) == 1
+    assert float(gamma[0][1]) >= 40 and gamma[0][2] == "≥ 40" and gamma[0][3] == ok
+    assert float(alpha[0][1]) <= 50 and alpha[0][2] == "≤ 50" and alpha[0][3] == ok
+
+
+@pytest.mark.parametrize("lang", LANGS)
+@pytest.mark.parametrize("name", ["furnace_pusher", "slotter", "press", "shaper"])
+def test_verification_tables_write_values_by_the_number_rule(handin_reports, name, lang):
+    """furnace_pusher: "44.3367 | ≥ 40 (44.3367)", "44.0000 … 44.0000", "220.000 | 220.000
+    (velocity zeros)": no value in a verification table with more than 3 decimals outside a
+    power of ten or a Δ (README "Numbers")."""
+    md, _ = handin_reports(name, lang)
+    for row in _rows_of(md, "verify"):
+        for cell in row[1:3]:
+            body = re.sub(r"\(\$?\\?Δ[^)]*\)|\$[^$]*\$|\d+(\.\d+)? × 10\S*", "", cell)
+            assert not re.search(r"\d\.\d{4,}", body), row
+
+
+def test_no_broken_plural_in_the_shaft_steps(handin_reports):
+    """"(1 steps of 5 mm; …)", "(1 standard sizes; …)", "10 handbook data" (furnace_pusher en)."""
+    md, _ = handin_reports("furnace_pusher", "en")
+    assert not re.search(r"\b1 (steps|standard sizes)\b", md)
+    assert "handbook data that" not in md
