@@ -112,6 +112,12 @@ GROW_ROUNDS = 3
 GROW_MARGIN = 0.04
 
 
+#: The cost of a place nearer another label's point than the label's own: worse than a
+#: place over the axes' edge (the limits then grow to take it in), better than one on a line
+#: or another label.
+AMBIGUOUS = 4e3
+
+
 def place(ax, labels: list[Label], obstacles=(), fixed=(), heads=(), head_size=9.0,
           gap: float = 2 * PAD, sight: bool = False) -> list:
     """Draw ``labels`` in ``ax`` clear of each other and of the ``obstacles`` (segments as
@@ -171,6 +177,10 @@ def _place_once(ax, labels, obstacles, fixed, heads, head_size, gap=2 * PAD,
     frame = (bb.x0, bb.y0, bb.x1, bb.y1)
     placed: list = [_box(t, renderer, PAD * px) for t in fixed]
     artists = []
+    # every label's point on the screen: a name set nearer another named point than its own
+    # reads as that point's (review45, shaper Fig. 10: "n′_b" beside n′_4, 10.5 mm from p′,
+    # and "n′_4, n′_s4" beside n′_b at 21 mm)
+    points = [ax.transData.transform((lb.anchor.real, lb.anchor.imag)) for lb in labels]
     for lab in labels:
         kwargs = {"ha": "center", "va": "center", **lab.kwargs}
         # The text is measured once, at the anchor: an offset in points only translates
@@ -185,6 +195,7 @@ def _place_once(ax, labels, obstacles, fixed, heads, head_size, gap=2 * PAD,
         region = (x0 - reach, y0 - reach, x1 + reach, y1 + reach)
         near = [(p, q) for p, q in segments if _segment_hits_box(p, q, region)]
         at = ax.transData.transform((lab.anchor.real, lab.anchor.imag))
+        rivals = [q for q in points if math.hypot(q[0] - at[0], q[1] - at[1]) > 1.0]
         anchors = [(lab.anchor, 0.0, 0.0)]
         for z in lab.along:
             ex, ey = ax.transData.transform((z.real, z.imag)) - at
@@ -211,6 +222,11 @@ def _place_once(ax, labels, obstacles, fixed, heads, head_size, gap=2 * PAD,
             area = (box[2] - box[0]) * (box[3] - box[1])
             outside = area - _box_overlap(box, frame)
             cost += 2e3 + outside if outside > 1e-6 else 0.0     # over the axes' edge
+            if rivals and len(anchors) == 1:
+                cx, cy = (box[0] + box[2]) / 2, (box[1] + box[3]) / 2
+                own = math.hypot(cx - at[0], cy - at[1])
+                if min(math.hypot(cx - q[0], cy - q[1]) for q in rivals) < own:
+                    cost += AMBIGUOUS                         # nearer another named point
             # among the places free of those: the nearest (in scanning order), or with
             # ``sight`` the nearest counting each line between it and its anchor as
             # SIGHT pt further
