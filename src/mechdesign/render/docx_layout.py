@@ -305,7 +305,7 @@ def keep_headings_with_text(document_xml: str) -> str:
                 rows += len(_rows_of(block))
                 if rows >= HEADING_ROWS:
                     break
-                new[j] = _keep_with_next(block)
+                new[j] = formula_paragraph(block) or _keep_with_next(block)
                 continue
             style = _STYLE_OF.search(block[:300])
             if style and _OWN_KEEP.fullmatch(style.group(1)):
@@ -329,6 +329,41 @@ def keep_headings_with_text(document_xml: str) -> str:
         out += [document_xml[start:blocks[j].start()], new[j]]
         start = blocks[j].end()
     return "".join(out) + document_xml[start:]
+
+
+#: OMML whose inline form is not its display form: a fraction, a sum or integral, a stack of
+#: lines, a matrix, limits under or over (Word sets them smaller or to the side in a line)
+_DISPLAY_ONLY = re.compile(r"<m:(?:f|nary|eqArr|m|limLow|limUpp|groupChr|borderBox)\b")
+_CELL = re.compile(r"<w:tc>.*?</w:tc>", re.DOTALL)
+_PARA_BODY = re.compile(r"<w:p>(?:<w:pPr>.*?</w:pPr>)?(.*)</w:p>", re.DOTALL)
+
+
+def formula_paragraph(table: str) -> str | None:
+    """A numbered formula's table (one row: an empty cell, the formula, its number) as one
+    paragraph kept with the next block (``w:keepNext``, ``w:keepLines``): the formula centred
+    on a centre tab stop, its number on a right tab stop at the text's edge. LibreOffice (7.4)
+    keeps a paragraph with the next block but not a table (its import gives a table no keep:
+    the formula under a heading was left at a page foot, the table after it on the next page),
+    so a formula that a heading's run keeps with the block after it is written as a paragraph,
+    which Word and LibreOffice both keep. None when the formula looks otherwise inline than
+    displayed (:data:`_DISPLAY_ONLY`) or the table is not of that form: it stays a table."""
+    cells = _CELL.findall(table)
+    if len(_rows_of(table)) != 1 or len(cells) != 3:
+        return None
+    formula = re.findall(r"<w:p>.*?</w:p>", cells[1], flags=re.DOTALL)
+    number = re.findall(r"<w:p>.*?</w:p>", cells[2], flags=re.DOTALL)
+    if len(formula) != 1 or len(number) != 1 or _DISPLAY_ONLY.search(formula[0]):
+        return None
+    math = re.fullmatch(r"\s*<m:oMathPara>(?:<m:oMathParaPr>.*?</m:oMathParaPr>)?(<m:oMath>.*</m:oMath>)"
+                        r"</m:oMathPara>\s*", _PARA_BODY.fullmatch(formula[0]).group(1), flags=re.DOTALL)
+    if math is None or math.group(1).count("<m:oMath>") != 1:
+        return None
+    width = sum(int(w) for w in re.findall(r'<w:gridCol w:w="(\d+)"', table))   # the text's [twips]
+    tabs = (f'<w:tabs><w:tab w:val="center" w:pos="{width // 2}" />'
+            f'<w:tab w:val="right" w:pos="{width}" /></w:tabs>')
+    return (f'<w:p><w:pPr><w:pStyle w:val="Equation" /><w:keepNext /><w:keepLines />{tabs}'
+            f'<w:jc w:val="left" /></w:pPr><w:r><w:tab /></w:r>{math.group(1)}<w:r><w:tab /></w:r>'
+            f"{_PARA_BODY.fullmatch(number[0]).group(1)}</w:p>")
 
 
 def _rows_of(table: str) -> list[str]:
