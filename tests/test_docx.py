@@ -950,6 +950,7 @@ def test_a_heading_keeps_three_rows_of_its_text(tmp_path):
         "| a | b |\n|:--|--:|\n| 1 | 2 |\n\n: Forces\n\n"
         # about four lines of 12 pt Times on 453.5 pt (62 characters ≈ 31 em, 37.8 em a line)
         "## Stage 3\n\n" + "Stage three: " + words * 4 + "\n\nNext paragraph of the section.\n\n"
+        "## Cam\n\n" + "Purpose: " + words * 3 + "\n\n### Design data\n\nThe cam's data.\n\n"
         "## Long\n\n" + words * 12 + "\n\nAfter the long one.\n\n"
         "## References\n\n[1] First entry, " + words + "\n\n[2] Second entry.\n\n[3] Third entry.\n"),
         {**METADATA, "lang": "en"})
@@ -982,6 +983,11 @@ def test_a_heading_keeps_three_rows_of_its_text(tmp_path):
     four, nxt = after("Stage 3", 2)
     assert "<w:keepLines />" in four and "<w:keepNext" not in four
     assert "<w:keep" not in nxt
+    # a paragraph of (estimated) three rows with a heading after it: kept with that heading
+    # too (shaper en: the purpose paragraph, three lines estimated, took two in LibreOffice;
+    # "7 Cam mechanism" stood over them at the foot of p.23, "7.1" and its table on p.24)
+    purpose, heading = after("Cam", 2)
+    assert "<w:keepNext /><w:keepLines />" in purpose and "Heading3" in heading
     # a long paragraph: widow control's two lines are all Word can do
     long, nxt = after("Long", 2)
     assert "<w:keep" not in long and "<w:keep" not in nxt
