@@ -440,8 +440,11 @@ def test_a_bracket_closed_in_a_superscript_base_becomes_a_delimiter(tmp_path):
     """texmath writes (a+b)^2 as "(" a + b and a superscript whose base is ")" alone:
     LibreOffice draws each unbalanced bracket "¿". The bracketed runs become the base of the
     superscript as a delimiter object (m:d), Word's form of (a+b)²."""
-    document = _sample_document(tmp_path, "# A\n\n$$ \\sigma = \\sqrt{M^2 + (\\alpha T)^2} + (C/P)^{3} $$\n",
-                                EN_METADATA)
+    # a long paragraph first: a formula among a heading's first rows is written as a
+    # paragraph with tab stops (docx_layout.formula_paragraph), not a displayed one
+    long = "The stress of the shaft is combined from bending and torsion as below. " * 8
+    document = _sample_document(tmp_path, "# A\n\n" + long + "\n\n"
+                                "$$ \\sigma = \\sqrt{M^2 + (\\alpha T)^2} + (C/P)^{3} $$\n", EN_METADATA)
     [para] = _math_paragraphs(document)
     # no script has a lone bracket as its base any more
     assert not re.search(r"<m:sSup><m:e><m:r>(?:<m:rPr>(?:<[^>]*/>)*</m:rPr>)?<m:t>[)\]]</m:t></m:r></m:e>", para)
