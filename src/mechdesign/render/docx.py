@@ -342,7 +342,7 @@ def _finish(docx: Path, *, title: str, author: str, subject: str) -> None:
         elif name == "word/document.xml":
             xml = align_broken_equations(data.decode("utf-8"))
             xml = body_on_a_new_page(fill_table_of_contents(group_scripted_brackets(xml)))
-            xml = split_inline_formula_lists(keep_headings_with_text(keep_lead_ins(keep_table_rows(xml))))
+            xml = keep_headings_with_text(split_inline_formula_lists(keep_lead_ins(keep_table_rows(xml))))
             xml = keep_references_together(keep_closing_marks_with_formulas(xml))
             xml = separate_tables(centre_tables(xml))
             data = latin_marks_in_latin_font(minus_signs(xml)).encode("utf-8")

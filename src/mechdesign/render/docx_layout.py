@@ -42,10 +42,19 @@
     heading are kept with it until :data:`HEADING_ROWS` rows of text are: a short
     paragraph (at most :data:`WHOLE_LINES` lines, estimated) is kept whole
     (``w:keepLines``) and, while the rows are fewer, with the next block (``w:keepNext``);
-    a numbered formula's table the same, on all its paragraphs (Word keeps such a table
-    with the next paragraph; LibreOffice 7.4 does not, its import gives the table no keep:
-    tests/test_typeset.py WORD_HEADINGS_OPEN). A caption, a figure, a data table or another
-    heading ends the run: each is kept with its own content already.
+    one that a heading follows is kept with it too, whatever the rows: the estimate is of
+    whole lines, and shaper en's purpose paragraph under "7 Cam mechanism", estimated three
+    lines, took two in LibreOffice, and the heading stood over them at the foot of p.23 with
+    "7.1" and its table on p.24;
+    a numbered formula the same: written as one paragraph (:func:`formula_paragraph`: the
+    formula on a centre tab stop, its number on a right one), since LibreOffice 7.4 keeps no
+    table with the next block (its import gives a table no keep; Word keeps a table whose
+    paragraphs are all ``w:keepNext``): "5.2.1 Velocities", its scale and formula (30) stood
+    at the foot of crank_rocker en p.12 with the table after them on p.13 (die_cutter,
+    furnace_pusher, textbook_guide_bar en likewise). A formula with a fraction, a sum, a stack
+    or a matrix, which Word sets smaller in a line, stays a table kept on all its paragraphs.
+    A caption, a figure, a data table or another heading ends the run: each is kept with its
+    own content already.
 """
 from __future__ import annotations
 
@@ -287,6 +296,18 @@ def _keep_lines(paragraph: str) -> str:
     return _PPR.sub(lambda m: f"<w:pPr>{m.group(1)}<w:keepLines />", paragraph, count=1)
 
 
+def _heading_follows(blocks: list[re.Match], j: int) -> bool:
+    """Whether the next block after ``blocks[j]`` with text (past empty paragraphs) is a heading."""
+    for m in blocks[j + 1:]:
+        block = m.group(0)
+        style = _STYLE_OF.search(block[:300])
+        if style and re.fullmatch(r"Heading\d", style.group(1)):
+            return True
+        if block.startswith("<w:tbl>") or _lines(block):
+            return False
+    return False
+
+
 def keep_headings_with_text(document_xml: str) -> str:
     """The blocks after every heading of the body kept with it until it has
     :data:`HEADING_ROWS` rows of text (see the module's docstring)."""
@@ -305,7 +326,7 @@ def keep_headings_with_text(document_xml: str) -> str:
                 rows += len(_rows_of(block))
                 if rows >= HEADING_ROWS:
                     break
-                new[j] = _keep_with_next(block)
+                new[j] = formula_paragraph(block) or _keep_with_next(block)
                 continue
             style = _STYLE_OF.search(block[:300])
             if style and _OWN_KEEP.fullmatch(style.group(1)):
@@ -317,7 +338,7 @@ def keep_headings_with_text(document_xml: str) -> str:
                 break
             block = _keep_lines(block)
             rows += lines
-            if rows < HEADING_ROWS and "<w:keepNext" not in block:
+            if (rows < HEADING_ROWS or _heading_follows(blocks, j)) and "<w:keepNext" not in block:
                 block = _keep_with_next(block)
             new[j] = block
             if rows >= HEADING_ROWS:
@@ -329,6 +350,41 @@ def keep_headings_with_text(document_xml: str) -> str:
         out += [document_xml[start:blocks[j].start()], new[j]]
         start = blocks[j].end()
     return "".join(out) + document_xml[start:]
+
+
+#: OMML whose inline form is not its display form: a fraction, a sum or integral, a stack of
+#: lines, a matrix, limits under or over (Word sets them smaller or to the side in a line)
+_DISPLAY_ONLY = re.compile(r"<m:(?:f|nary|eqArr|m|limLow|limUpp|groupChr|borderBox)\b")
+_CELL = re.compile(r"<w:tc>.*?</w:tc>", re.DOTALL)
+_PARA_BODY = re.compile(r"<w:p>(?:<w:pPr>.*?</w:pPr>)?(.*)</w:p>", re.DOTALL)
+
+
+def formula_paragraph(table: str) -> str | None:
+    """A numbered formula's table (one row: an empty cell, the formula, its number) as one
+    paragraph kept with the next block (``w:keepNext``, ``w:keepLines``): the formula centred
+    on a centre tab stop, its number on a right tab stop at the text's edge. LibreOffice (7.4)
+    keeps a paragraph with the next block but not a table (its import gives a table no keep:
+    the formula under a heading was left at a page foot, the table after it on the next page),
+    so a formula that a heading's run keeps with the block after it is written as a paragraph,
+    which Word and LibreOffice both keep. None when the formula looks otherwise inline than
+    displayed (:data:`_DISPLAY_ONLY`) or the table is not of that form: it stays a table."""
+    cells = _CELL.findall(table)
+    if len(_rows_of(table)) != 1 or len(cells) != 3:
+        return None
+    formula = re.findall(r"<w:p>.*?</w:p>", cells[1], flags=re.DOTALL)
+    number = re.findall(r"<w:p>.*?</w:p>", cells[2], flags=re.DOTALL)
+    if len(formula) != 1 or len(number) != 1 or _DISPLAY_ONLY.search(formula[0]):
+        return None
+    math = re.fullmatch(r"\s*<m:oMathPara>(?:<m:oMathParaPr>.*?</m:oMathParaPr>)?(<m:oMath>.*</m:oMath>)"
+                        r"</m:oMathPara>\s*", _PARA_BODY.fullmatch(formula[0]).group(1), flags=re.DOTALL)
+    if math is None or math.group(1).count("<m:oMath>") != 1:
+        return None
+    width = sum(int(w) for w in re.findall(r'<w:gridCol w:w="(\d+)"', table))   # the text's [twips]
+    tabs = (f'<w:tabs><w:tab w:val="center" w:pos="{width // 2}" />'
+            f'<w:tab w:val="right" w:pos="{width}" /></w:tabs>')
+    return (f'<w:p><w:pPr><w:pStyle w:val="Equation" /><w:keepNext /><w:keepLines />{tabs}'
+            f'<w:jc w:val="left" /></w:pPr><w:r><w:tab /></w:r>{math.group(1)}<w:r><w:tab /></w:r>'
+            f"{_PARA_BODY.fullmatch(number[0]).group(1)}</w:p>")
 
 
 def _rows_of(table: str) -> list[str]:
