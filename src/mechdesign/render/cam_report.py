@@ -330,9 +330,9 @@ def cam_context(c, lang: str, figs: dict[str, str], csv_name: str, section=None)
                        f"{f(chk.max_pressure_angle * DEG, 2)}° ($\\delta$ = {f(chk.at * DEG, 1)}°)",
                        f"≤ {f(chk.limit * DEG, 0)}°", ok])
     # the profile's curvature checks, as the cam stage judged them
-    check_names = {"pitch_curvature": _("smallest convex radius $\\rho_{min}$ of the pitch curve"),
-                   "actual_curvature": _("actual profile $\\rho_a = \\rho_{min} - r_r$"),
-                   "convex": _("smallest radius of curvature (must stay convex)")}
+    from .summary import CURVATURE_NAMES
+
+    check_names = {key: _(msgid) for key, msgid in CURVATURE_NAMES.items()}
     for chk in c.curvature_checks:
         if chk.key == "pitch_curvature":
             limit = f"> $r_r$ = {f(chk.limit * MM, 2)} mm"

@@ -118,7 +118,8 @@ def _check_names() -> dict[str, tuple[str, str]]:
 # a cam's checks (its segments' pressure angles, its profile's curvature) under the cam's name
 _CAM_OWNERS = {"cam": N_("cam mechanism"), "positioning_cam": N_("positioning cam"),
                "bending_cam": N_("bending cam")}
-_CURVATURE = {"pitch_curvature": N_("smallest convex radius $\\rho_{min}$ of the pitch curve"),
+#: the names of a cam profile's curvature checks (the cam chapter's check table uses them too)
+CURVATURE_NAMES = {"pitch_curvature": N_("smallest convex radius $\\rho_{min}$ of the pitch curve"),
               "actual_curvature": N_("actual profile $\\rho_a = \\rho_{min} - r_r$"),
               "convex": N_("smallest radius of curvature (must stay convex)")}
 _SEGMENT = {"rise": N_("largest pressure angle of the rise"),
@@ -200,7 +201,7 @@ def _describe(node: dict, path: tuple, parents: tuple, names: dict, actuator) ->
         group = _both(_CAM_OWNERS.get(owner, _CAM_OWNERS["cam"]))
         kind = node.get("kind", node.get("key", ""))
         if part == "curvature_checks":
-            name = _both(_CURVATURE.get(kind, kind))
+            name = _both(CURVATURE_NAMES.get(kind, kind))
         else:
             name = _both(_SEGMENT[kind]) if kind in _SEGMENT else \
                 _both(N_("largest pressure angle of the {kind}"), kind=kind)
