@@ -77,6 +77,12 @@ OPEN: dict[tuple[str, str, str], str] = {
                                        "d₁'s digits that give 87.0)",
     ("slotter", "41.8", "41.76"): "position 10's M_b: no text that its equation's printed forces "
                                   "give (−41.77) gives the printed P_b = −1069 (−41.76 does)",
+    # open: the flywheel's ΔW_max and J_F. The summary quotes them to 4 significant digits and
+    # its strings must be in the body (tests/test_numbers.py); J_F's equation needs ΔW_max
+    # (and the rim mass m = 4 J_F/D² needs J_F) with one more digit
+    ("linkage_sixbar", "190.3", "190.32"): "ΔW_max: J_F = 96.42 needs 190.32 (open, see above)",
+    ("shaper", "278.0", "278.04"): "ΔW_max: J_F = 8.914 needs 278.04 (open, see above)",
+    ("shaper_lengths", "204.1", "204.13"): "J_F: m = 816.52 kg needs 204.13 (open, see above)",
     ("die_cutter", "124", "123.67"): "the face width b = 124 mm beside d₁ = 123.67 mm",
     ("die_cutter", "198", "197.88"): "the face width b = 198 mm beside d₁ = 197.88 mm",
     # the table of every position keeps its columns' decimals (render/fmt.py), the worked

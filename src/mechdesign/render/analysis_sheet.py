@@ -20,7 +20,6 @@ import numpy as np
 
 from ..core.polygons import Polygon
 from . import fmt
-from .flywheel_text import texts_of
 from .labels import LabelTable, pgettext, sheet_names, sheet_point
 from .sheet import (DIM_GAP, GRID_WEIGHT, Dimension, Fill, LabelPlacer, Line, Text, _near_segment,
                     break_lines, clip_segment, dimension_geometry, sample_polyline, Series, Sheet,
@@ -129,8 +128,8 @@ def analysis_sheet(found, info: TitleInfo, lang: str, labels: dict | None = None
     else:
         notes.append(lab["signs"])
     if flywheel is not None:
-        texts = texts_of(flywheel)        # the report's digits (278.04 J where J_F needs them)
-        notes.append(lab["dw"].format(v=texts.dw_text) + ",  " + lab["jf"].format(v=texts.jf_text))
+        notes.append(lab["dw"].format(v=fmt.sig(flywheel.max_energy_swing)) + ",  "
+                     + lab["jf"].format(v=fmt.sig(flywheel.inertia)))
     top = tb_y1 + 10.0 + 5.5 * max(len(notes) - 2, 0)     # a third line above, not on the title block
     # one text height for the notes: the longest line's fit (review35: a short line set larger)
     height = min(fit_height(text, 205.0, 3.0) for text in notes)
@@ -1061,7 +1060,7 @@ def _curves(s: Sheet, model, k, forces, fl, lab: dict, box) -> None:
     placer = LabelPlacer(s, area=(left, y - h, bx1, y))
     drawn = placer._drawn_points()
     mid = 0.5 * (fl.phase_at_min + fl.phase_at_max) * DEG
-    text = lab["dw"].format(v=texts_of(fl).dw_text)
+    text = lab["dw"].format(v=fmt.sig(fl.max_energy_swing))
     best = None
     for x_at in np.arange(6.0, 355.0, 3.0):
         dim = Dimension(m.p(x_at, float(e.min())), m.p(x_at, float(e.max())), 0.0,

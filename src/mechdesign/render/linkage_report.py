@@ -17,7 +17,6 @@ from . import figures as fig
 from .fmt import column_decimals, e, f, residue, fluctuation, force_unit, md_text, percent, sentences, sig, tex_name, time_ratio
 from .fmt import verdict as fmt_verdict
 from .fmt import factor_for, factors_for, gives, product
-from .flywheel_text import flywheel_equation, texts_of
 from .label_layout import Label, place
 from .legends import legend
 from .labels import LabelTable, md_names, md_point, mpl_names, mpl_point, point_tex
@@ -312,6 +311,46 @@ def _angles_caption(k, lang: str) -> str:
     return _("Transmission and pressure angles against the crank angle")
 
 
+def rim_inertia_factor(inertia: float, rim) -> str:
+    """J_F as the factor of the rim mass m = 4 J_F/D², with the digits that give the printed
+    mass (4 × 204.13/1.000² = 816.52)."""
+    return factor_for(inertia, lambda x: gives(4 * x / float(f(rim.diameter, 3)) ** 2,
+                                               f(rim.rim_mass, 2)))
+
+
+def flywheel_equation(energy_swing: float, speed_rpm: float, delta: float, jf: str,
+                      energy_digits: int = 4) -> str:
+    """J_F = 900ΔW_max/(π²n²[δ]) with its factors (:func:`_flywheel_factors`) substituted."""
+    n_text, dw_text, d_tex = _flywheel_factors(energy_swing, speed_rpm, delta, jf, energy_digits)
+    return (rf"J_F = \frac{{900\,\Delta W_{{max}}}}{{\pi^2 n^2 [\delta]}} = \frac{{900 \times "
+            rf"{dw_text}}}{{\pi^2 \times {n_text}^2 \times {d_tex}}} = {jf}\ \text{{kg·m}}^2")
+
+
+def _flywheel_factors(energy_swing: float, speed_rpm: float, delta: float, jf: str,
+                      energy_digits: int = 4) -> tuple[str, str, str]:
+    """J_F = 900ΔW_max/(π²n²[δ]) with its factors substituted so that they give the printed
+    ``jf``: [δ] as the course writes it (1/30, never 0.0333); n to 0.01 rpm and ΔW_max to
+    ``energy_digits`` significant digits (the text's), each with the fewest more digits
+    that give ``jf`` (shaper: 266.667 and 278.04, where 266.67 and 278.0 give 8.912 for
+    8.914), ΔW_max's first."""
+    d_text = fluctuation(delta)
+    num, _slash, den = d_text.partition("/")
+    d_value = float(num) / float(den) if den else float(num)
+    d_tex = rf"({num}/{den})" if den else d_text
+
+    def jf_of(n: float, dw: float) -> float:
+        denominator = np.pi ** 2 * n ** 2 * d_value
+        return 900 * dw / denominator if denominator > 0 else float("nan")
+
+    # n to 0.01 rpm (up to 0.0001); a speed below 1 rpm (a careless brief's 1e-9) to
+    # significant digits, which 0.01 rpm would print as 0.00 (a division by zero)
+    to_decimals = speed_rpm >= 1
+    n_text, dw_text = factors_for((speed_rpm, energy_swing), jf_of, jf,
+                                  (2 if to_decimals else 4, energy_digits), most=(2, 4),
+                                  decimals=(to_decimals, False))
+    return n_text, dw_text, d_tex
+
+
 def realised_flywheel(fly, n_real: float | None, _) -> str | None:
     """The flywheel sized at the nominal speed (the crank's, at which M_b and ΔW_max are
     computed, × the ratio to its shaft) against the speed ``n_real`` [rpm] the drive realises
@@ -471,13 +510,12 @@ def linkage_context(model, k, f_, fly, v, figures: dict, lang: str,
         "fly": None,
     }
     if fly is not None:
-        texts = texts_of(fly)
         ctx["fly"] = {
-            "n": f(fly.shaft_speed_rpm, 2), "dw": texts.dw_text,
+            "n": f(fly.shaft_speed_rpm, 2), "dw": sig(fly.max_energy_swing),
             "at_min": f(fly.phase_at_min * DEG, 1), "at_max": f(fly.phase_at_max * DEG, 1),
-            "delta": fluctuation(fly.fluctuation), "jf": texts.jf_text,
+            "delta": fluctuation(fly.fluctuation), "jf": sig(fly.inertia),
             "eq": flywheel_equation(fly.max_energy_swing, fly.shaft_speed_rpm, fly.fluctuation,
-                                    texts.jf),
+                                    sig(fly.inertia, group=False)),
             "rim": None, "real": realised_flywheel(fly, flywheel_realised_rpm, _),
             # the rim's findings (higher than its radius, too fast for cast iron): in the text
             # and, through the summary's findings, on its watch list
@@ -485,7 +523,7 @@ def linkage_context(model, k, f_, fly, v, figures: dict, lang: str,
         }
         if fly.rim is not None:
             rim, spec = fly.rim, model.flywheel.rim
-            j_mass = texts.jf
+            j_mass = rim_inertia_factor(fly.inertia, rim)
             ctx["fly"]["rim"] = {
                 "D": f(rim.diameter * 1e3, 0), "b": f(rim.width * 1e3, 1),
                 "Hr": f(rim.height * 1e3, 1), "m": f(rim.rim_mass, 2), "speed": f(rim.rim_speed, 2),
@@ -495,7 +533,7 @@ def linkage_context(model, k, f_, fly, v, figures: dict, lang: str,
                 # the numbers substituted, as the shaper's chapter writes them (page review 41:
                 # the press's γ, the rim material's specific weight, was never given a value)
                 "width": (rf"b = \sqrt{{\frac{{4 g J_F}}{{\pi D^3 (H/b) \gamma}}}} = \sqrt{{\frac{{4 \times "
-                          rf"{f(model.gravity, 2)} \times {texts.jf}}}{{\pi \times "
+                          rf"{f(model.gravity, 2)} \times {sig(fly.inertia, group=False)}}}{{\pi \times "
                           rf"{f(rim.diameter, 3)}^3 \times {f(spec.height_to_width, 2)} \times "
                           rf"{f(spec.specific_weight, 0)}}}}} = {f(rim.width * 1e3, 1)}\ \text{{mm}}"),
             }

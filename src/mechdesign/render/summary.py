@@ -23,8 +23,6 @@ from pathlib import Path
 from typing import Any
 
 from .fmt import exact, f, length, md_text, rpm, sig, time_ratio, verdict
-from .flywheel_text import flywheel_texts
-from ..numbers import significant
 from ..i18n import N_, data_text, tr
 from .labels import pgettext, translated
 
@@ -450,30 +448,6 @@ def _asked_rows(document: dict, lang: str) -> list[list[str]]:
     return rows
 
 
-def _flywheel_text(document: Any, path: str, decimals: Any = None) -> str | None:
-    """ΔW_max or J_F at ``path`` as the flywheel's chapter prints it
-    (:mod:`~.flywheel_text`: the digits the formula it is substituted in needs, 278.04 J,
-    204.13 kg·m²), or None when ``path`` is not a flywheel's. ``decimals``: the registry's
-    digits of ΔW_max (the die-cutter's 3499.5 J)."""
-    from ..registry import lookup
-
-    parent, _dot, leaf = path.rpartition(".")
-    node = lookup(document, parent) if parent else document
-    if leaf not in ("max_energy_swing", "inertia") or not isinstance(node, dict):
-        return None
-    try:
-        dw, n, delta, inertia = (float(node[k]) for k in ("max_energy_swing", "shaft_speed_rpm",
-                                                          "fluctuation", "inertia"))
-    except (KeyError, TypeError, ValueError):
-        return None
-    if not all(math.isfinite(x) for x in (dw, n, delta, inertia)):
-        return None
-    rim = node.get("rim") if isinstance(node.get("rim"), dict) else {}
-    digits = significant(f(dw, int(decimals))) if isinstance(decimals, int) else 4
-    texts = flywheel_texts(dw, n, delta, inertia, rim.get("diameter"), rim.get("rim_mass"), digits)
-    return texts.dw_text if leaf == "max_energy_swing" else texts.jf_text
-
-
 def key_rows(machine: str, document: dict, lang: str) -> list[list[str]]:
     """[quantity, value, unit]: the machine's registry summary, then the probed quantities
     it does not give."""
@@ -491,9 +465,7 @@ def key_rows(machine: str, document: dict, lang: str) -> list[list[str]]:
             continue
         label, unit, factor, value = shown
         path = row[2]
-        digits = row[4] if len(row) > 4 else None
-        text = (_flywheel_text(document, path, digits) if "|" not in path else None) \
-            or _show(value, factor, unit or "", label, digits)
+        text = _show(value, factor, unit or "", label, row[4] if len(row) > 4 else None)
         if text is None:
             continue
         rows.append([_label(label), text, unit or "—"])
@@ -511,7 +483,7 @@ def key_rows(machine: str, document: dict, lang: str) -> list[list[str]]:
         if leaf == "stroke":        # a rocker's stroke is its swing (rad → °)
             shown_label, shown_unit, shown_factor, _value = shown_row(
                 (label, unit, found[0], factor), lang, document)
-        text = _flywheel_text(document, found[0]) or _show(found[1], shown_factor, shown_unit or "", shown_label)
+        text = _show(found[1], shown_factor, shown_unit or "", shown_label)
         if text is not None:
             rows.append([shown_label, text, shown_unit or "—"])
             paths.add(leaf)

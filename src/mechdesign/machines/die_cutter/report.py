@@ -18,9 +18,7 @@ from ...render.fmt import e, f, length, md_meta, md_text, sig, fluctuation, fact
 from ...render.fmt import number, product, residue, time_ratio, verdict
 from ...render.labels import pgettext, translated
 from ...render.fmt import sentences
-from ...render.flywheel_text import flywheel_equation, texts_of
-from ...numbers import significant
-from ...render.linkage_report import realised_flywheel
+from ...render.linkage_report import flywheel_equation, realised_flywheel, rim_inertia_factor
 from ...stages.drive import shaft_numeral
 
 DEG = 180.0 / np.pi
@@ -443,32 +441,30 @@ def _flywheel(r, p, b, _) -> dict:
                                     n_crank_real=f(drive.output_speed, 2)))
     speeds = {"real": real, "n_crank": f(p.shaft_rpm, 2)}
     # the speed ratio with the digits that give the printed J_F' (14.118: 6.404 × 14.118²)
-    # ΔW_max with the text's digits (3499.5) or more, J_F with those its rim mass needs
-    texts = texts_of(fl, energy_digits=significant(f(fl.max_energy_swing, 1)))
-
     def fl_ratio_ok(x):
-        return gives(float(texts.jf) * x * x, f(fl.inertia_on_crank, 1))
+        return gives(float(f(fl.inertia, 3)) * x * x, f(fl.inertia_on_crank, 1))
 
-    j_mass = texts.jf
+    j_mass = rim_inertia_factor(fl.inertia, fl.rim)
     eq = {
         "md": (rf"M_d = \frac{{1}}{{2\pi}}\oint M_b\,d\varphi = {sig(fl.mean_torque, group=False)}\ \text{{N·m}}"
                rf"\ (\text{{{crank_shaft}}})"),
+        # ΔW_max with the text's digits (3499.5) or more
         "jf": flywheel_equation(fl.max_energy_swing, fl.shaft_speed_rpm, fl.fluctuation,
-                                texts.jf, significant(f(fl.max_energy_swing, 1))),
-        "crank": (rf"J_F' = J_F\,i^2 = {texts.jf} \times {factor_for(fl.speed_ratio, fl_ratio_ok)}^2 = "
+                                f(fl.inertia, 3), len(f(fl.max_energy_swing, 1).replace(".", "").lstrip("0"))),
+        "crank": (rf"J_F' = J_F\,i^2 = {f(fl.inertia, 3)} \times {factor_for(fl.speed_ratio, fl_ratio_ok)}^2 = "
                   rf"{f(fl.inertia_on_crank, 1)}\ \text{{kg·m}}^2"),
         "mass": (rf"m = \frac{{4 J_F}}{{D^2}} = \frac{{4 \times {j_mass}}}"
                  rf"{{{f(fl.rim.diameter, 3)}^2}} = {f(fl.rim.rim_mass, 2)}\ \text{{kg}}"),
         "width": (rf"b = \sqrt{{\frac{{4 g J_F}}{{\pi D^3 (H/b) \gamma}}}} = \sqrt{{\frac{{4 \times "
-                  rf"{f(p.gravity, 2)} \times {texts.jf}}}{{\pi \times "
+                  rf"{f(p.gravity, 2)} \times {f(fl.inertia, 3)}}}{{\pi \times "
                   rf"{f(fl.rim.diameter, 3)}^3 \times {f(p.rim_height_to_width, 2)} \times "
                   rf"{f(p.specific_weight, 0)}}}}} = {f(fl.rim.width * MM, 1)}\ \text{{mm}}"),
     }
     return {"eq": eq, "shaft": shaft, "shaft_on": _shaft_in_text(fl.shaft, stages, _),
             "n": f(fl.shaft_speed_rpm, 2), "ratio": sig(fl.speed_ratio),
-            "dw": texts.dw_text, "at_min": _deg(fl.phase_at_min, 1),
+            "dw": f(fl.max_energy_swing, 1), "at_min": _deg(fl.phase_at_min, 1),
             "at_max": _deg(fl.phase_at_max, 1), "delta": fluctuation(fl.fluctuation),
-            "jf": texts.jf_text, "jf_crank": f(fl.inertia_on_crank, 1),
+            "jf": f(fl.inertia, 3), "jf_crank": f(fl.inertia_on_crank, 1),
             "D": f(fl.rim.diameter * MM, 0), "b": f(fl.rim.width * MM, 1),
             "Hr": f(fl.rim.height * MM, 1), "m": f(fl.rim.rim_mass, 2),
             "speed": f(fl.rim.rim_speed, 2), "peak_rows": rows, "peak_note": peak_note, **speeds,

@@ -15,7 +15,7 @@ from ...render import figures as fig
 from ...render import guide_bar_report as gb_report
 from ...i18n import N_, tr
 from ...render.fmt import e, f, in_lang, md_meta, sig, time_ratio, verdict, fluctuation
-from ...render.flywheel_text import flywheel_equation, texts_of
+from ...render.linkage_report import flywheel_equation, rim_inertia_factor
 
 DEG = 180.0 / np.pi
 
@@ -191,18 +191,18 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
                rf"\text{{m/s}}^2"),
     }
     i_ratio = fl.speed_ratio
-    texts = texts_of(fl, p.fluctuation)
-    j_mass = texts.jf
+    j_mass = rim_inertia_factor(fl.inertia, fl.rim)
     fly_eq = {
         "mr": (rf"M_r = \frac{{M_b}}{{i}}, \quad i = \frac{{z_2}}{{z_1}} = \frac{{{p.z2}}}{{{p.z1}}}"
                rf" = {sig(i_ratio, group=False)}") if fl.shaft == "pinion" else r"M_r = M_b",
         "md": (rf"M_d = \frac{{1}}{{2\pi}}\int_0^{{2\pi}} M_r\,d\varphi = {sig(fl.shaft_torque, group=False)}"
                rf"\ \text{{N·m}}"),
-        "jf": flywheel_equation(fl.max_energy_swing, fl.shaft_speed_rpm, p.fluctuation, texts.jf),
+        "jf": flywheel_equation(fl.max_energy_swing, fl.shaft_speed_rpm, p.fluctuation,
+                                sig(fl.inertia, group=False)),
         "mass": (rf"m = \frac{{4 J_F}}{{D^2}} = \frac{{4 \times {j_mass}}}"
                  rf"{{{f(fl.rim.diameter, 3)}^2}} = {f(fl.rim.rim_mass, 2)}\ \text{{kg}}"),
         "width": (rf"b = \sqrt{{\frac{{4 g J_F}}{{\pi D^3 (H/b) \gamma}}}} = \sqrt{{\frac{{4 \times "
-                  rf"{f(p.gravity, 2)} \times {texts.jf}}}{{\pi \times "
+                  rf"{f(p.gravity, 2)} \times {sig(fl.inertia, group=False)}}}{{\pi \times "
                   rf"{f(fl.rim.diameter, 3)}^3 \times {f(p.rim_height_to_width, 2)} \times "
                   rf"{f(p.specific_weight, 0)}}}}} = {f(fl.rim.width * mm, 1)}\ \text{{mm}}"),
     }
@@ -254,7 +254,7 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
             "de": (r"$\Delta E(\varphi) = \int (M_d - M_r)\,d\varphi_1 = \int (i M_d - M_b)\,d\varphi$"
                    + _(r" ($\varphi_1 = i\varphi$: the flywheel shaft's angle)")
                    if fl.shaft == "pinion" else r"$\Delta E(\varphi) = \int (M_d - M_r)\,d\varphi$"),
-            "dw": texts.dw_text, "jf": texts.jf_text,
+            "dw": sig(fl.max_energy_swing), "jf": sig(fl.inertia),
             "at_min": f(fl.phase_at_min * DEG, 1), "at_max": f(fl.phase_at_max * DEG, 1),
             "D": f(fl.rim.diameter * mm, 0), "b": f(fl.rim.width * mm, 1),
             "Hr": f(fl.rim.height * mm, 1), "m": f(fl.rim.rim_mass, 2),
