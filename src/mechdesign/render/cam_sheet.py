@@ -892,18 +892,18 @@ def _data_rows(c, g: _ProfileGeometry, lab, lang):
             rows.append([lab[key], sym, f"{fmt.f(worst.max_pressure_angle * DEG, 2)}°",
                          f"≤ {lim_sym} = {fmt.exact(worst.limit * DEG, decimals=2)}°  "
                          f"{lab['ok'] if ok else lab['fail']}"])
-    if fol.kind == "roller":
-        rp, ra = c.rho_pitch_min_convex * MM, c.rho_actual_min_convex * MM
-        rows.append([lab["rho"], sub("ρ", "min"), f"{fmt.minus(fmt.length(rp))} mm",
-                     f"> {sub('r', 'r')} = {fmt.length(g.rr)} mm  {lab['ok'] if rp > g.rr else lab['fail']}"])
-        lim = p.min_actual_curvature * MM
-        rows.append([lab["rho_a"], sub("ρ", "a,min"), f"{fmt.minus(fmt.length(ra))} mm",
-                     f"≥ {fmt.length(lim)} mm  {lab['ok'] if ra >= lim else lab['fail']}"])
-    elif fol.kind == "flat":
-        rho = (c.rho_actual_min if c.rho_actual_min is not None
-               else float(np.min(c.grid.rho_actual))) * MM
-        rows.append([lab["rho_flat"], sub("ρ", "min"), f"{fmt.minus(fmt.length(rho))} mm",
-                     f"> 0  {lab['ok'] if rho > 0 else lab['fail']}"])
+    # the profile's curvature checks as the cam stage judged them (cam.curvature_checks)
+    judged = {chk.key: chk for chk in c.curvature_checks}
+    if fol.kind == "roller" and "pitch_curvature" in judged:
+        rp, ra = judged["pitch_curvature"], judged["actual_curvature"]
+        rows.append([lab["rho"], sub("ρ", "min"), f"{fmt.minus(fmt.length(rp.value * MM))} mm",
+                     f"> {sub('r', 'r')} = {fmt.length(g.rr)} mm  {lab['ok'] if rp.ok else lab['fail']}"])
+        rows.append([lab["rho_a"], sub("ρ", "a,min"), f"{fmt.minus(fmt.length(ra.value * MM))} mm",
+                     f"≥ {fmt.length(ra.limit * MM)} mm  {lab['ok'] if ra.ok else lab['fail']}"])
+    elif fol.kind == "flat" and "convex" in judged:
+        rho = judged["convex"]
+        rows.append([lab["rho_flat"], sub("ρ", "min"), f"{fmt.minus(fmt.length(rho.value * MM))} mm",
+                     f"> 0  {lab['ok'] if rho.ok else lab['fail']}"])
         if c.face_extent is not None and not g.osc:
             lo, hi = c.face_extent
             rows.append([lab["face"], "b", f"{fmt.length(2 * max(abs(lo), abs(hi)) * MM + 7)} mm", ""])
