@@ -37,11 +37,25 @@ def _decimals(text: str) -> int:
     return len(text.partition(".")[2])
 
 
+#: the sentence under a formula that substitutes a factor with more digits than the text gives
+#: it (render/linkage_report.carried_note): the two strings are then one value, said to be
+CARRIED = ("more digits than the text gives", "比正文多取了有效数字")
+
+
+def _said_carried(lines: list[str], i: int) -> bool:
+    """Line ``i`` (a formula) is followed, within two lines, by the carried-digits sentence."""
+    return any(phrase in line for line in lines[i + 1:i + 3] for phrase in CARRIED)
+
+
 def two_ways(md: str, window: int = WINDOW) -> list[tuple[str, str]]:
     """(shorter, longer) of each number printed with fewer digits within ``window`` lines of
-    a formula's number with more decimals that rounds to it."""
+    a formula's number with more decimals that rounds to it — unless the formula's text says
+    that it carries more digits than the text (:data:`CARRIED`)."""
     tokens = []
-    for i, line in enumerate(md.split("\n")):
+    lines = md.split("\n")
+    for i, line in enumerate(lines):
+        if _said_carried(lines, i):
+            continue
         spans = [m.span() for m in _MATH.finditer(line)]
         for m in _NUM.finditer(line):
             # a mantissa of a power of ten (2.288\times10^{8}) is compared with mantissas only
@@ -67,22 +81,11 @@ def two_ways(md: str, window: int = WINDOW) -> list[tuple[str, str]]:
 OPEN: dict[tuple[str, str, str], str] = {
     ("press", "140.0", "139.95"): "x_M = 139.95 mm computed, x₂ = 140.0 mm the guide's chosen position",
     ("press", "127.8", "127.83"): "F_I2 and F_I3: two inertia forces of about the same size",
-    ("shaper", "266.67", "266.667"): "n = 800/3 rpm: J_F = 8.914 needs n to 0.001 rpm, the text "
-                                     "keeps 0.01 rpm (no number of five significant digits and three "
-                                     "decimals in the text)",
-    ("die_cutter", "14.12", "14.1181"): "the realised ratio to 4 significant digits in the text; "
-                                        "J_F' = J_F i² = 1276.5 needs 6 (open)",
     ("die_cutter", "123.7", "123.67"): "stage 2's σ_F = 87.0497 MPa is at a rounding edge: the table's "
                                        "d₁ = 123.67 and Y_Fa, Y_Sa give 87.052 (the bending check takes "
                                        "d₁'s digits that give 87.0)",
     ("slotter", "41.8", "41.76"): "position 10's M_b: no text that its equation's printed forces "
                                   "give (−41.77) gives the printed P_b = −1069 (−41.76 does)",
-    # open: the flywheel's ΔW_max and J_F. The summary quotes them to 4 significant digits and
-    # its strings must be in the body (tests/test_numbers.py); J_F's equation needs ΔW_max
-    # (and the rim mass m = 4 J_F/D² needs J_F) with one more digit
-    ("linkage_sixbar", "190.3", "190.32"): "ΔW_max: J_F = 96.42 needs 190.32 (open, see above)",
-    ("shaper", "278.0", "278.04"): "ΔW_max: J_F = 8.914 needs 278.04 (open, see above)",
-    ("shaper_lengths", "204.1", "204.13"): "J_F: m = 816.52 kg needs 204.13 (open, see above)",
     ("die_cutter", "124", "123.67"): "the face width b = 124 mm beside d₁ = 123.67 mm",
     ("die_cutter", "198", "197.88"): "the face width b = 198 mm beside d₁ = 197.88 mm",
     # the table of every position keeps its columns' decimals (render/fmt.py), the worked
@@ -113,6 +116,29 @@ def test_the_scan_finds_the_review_38_cases():
         assert not two_ways(text), (text, two_ways(text))
     # a number outside the formulas with more digits is no chain's factor
     assert not two_ways("J_F = 204.13 and $J_F = 204.1$")
+
+
+def test_a_factor_carried_with_more_digits_is_said_so():
+    """The shaper's J_F = 900 × 278.04/(π² × 266.667² × (1/25)) = 8.914 beside the text's
+    ΔW_max = 278.0 J and n = 266.67 rpm: the text keeps the rule's digits, the formula the
+    digits its result needs (278.0 and 266.67 give 8.912), and the sentence under the formula
+    says which is which; without the sentence the pair is two ways."""
+    from mechdesign.i18n import tr
+    from mechdesign.render.linkage_report import carried_note, flywheel_carried
+
+    # 900 ΔW/(π² n² δ): 278.04 J at 800/3 rpm and δ = 1/25 is 8.914 kg·m²; 278.0 and 266.67 give 8.912
+    assert round(900 * 278.0 / (3.141592653589793 ** 2 * 266.67 ** 2 / 25), 3) == 8.912
+    carried = flywheel_carried(278.04, 800 / 3, 1 / 25, "8.914", "266.67", "278.0")
+    assert [used for _sym, _shown, used in carried] == ["266.667", "278.04"]
+    text = ("$\\Delta W_{max}$ = 278.0 J, $n$ = 266.67 rpm\n\n"
+            "$$ J_F = \\frac{900 \\times 278.04}{\\pi^2 \\times 266.667^2 \\times (1/25)} = 8.914 $$\n")
+    assert two_ways(text) == [("266.67", "266.667"), ("278.0", "278.04")]
+    for lang in ("en", "zh"):
+        note = carried_note(tr(lang), carried)
+        assert "$n$" in note and "$\\Delta W_{max}$" in note
+        assert not two_ways(text + note + "\n"), lang
+    # nothing carried (the thin space of a grouped number is no digit): no sentence
+    assert carried_note(tr("en"), [("J_F", "1\u202f276.5", "1276.5")]) is None
 
 
 @pytest.mark.parametrize("lang", ["zh", "en"])

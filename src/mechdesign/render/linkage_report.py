@@ -318,6 +318,34 @@ def rim_inertia_factor(inertia: float, rim) -> str:
                                                f(rim.rim_mass, 2)))
 
 
+def carried_note(_, carried) -> str | None:
+    """The sentence under a formula that substitutes a value with more digits than the text
+    prints it (the shaper's J_F = 900 × 278.04/… beside "ΔW_max = 278.0 J"): the text keeps
+    the rule's digits for the quantity (4 significant for an energy, 0.01 rpm for a speed), the
+    formula carries the fewest more that give its printed result to the last digit, and the
+    reader is told which is which (issue 19 point 5). ``carried``: (symbol as TeX, the text's
+    string, the formula's string) of each factor; None when every factor is as in the text."""
+    def plain(text: str) -> str:
+        return text.replace("\u202f", "").replace(" ", "")
+
+    names = [f"${symbol}$" for symbol, shown, used in carried if plain(shown) != plain(used)]
+    if not names:
+        return None
+    if len(names) == 1:
+        return _("In this formula {a} carries more digits than the text gives it, so that the "
+                 "result is right to its last printed digit.", a=names[0])
+    return _("In this formula {a} and {b} carry more digits than the text gives them, so that the "
+             "result is right to its last printed digit.", a=", ".join(names[:-1]), b=names[-1])
+
+
+def flywheel_carried(energy_swing: float, speed_rpm: float, delta: float, jf: str,
+                     n_shown: str, dw_shown: str, energy_digits: int = 4) -> list[tuple[str, str, str]]:
+    """n and ΔW_max as :func:`flywheel_equation` substitutes them beside the text's strings,
+    for :func:`carried_note`."""
+    n_text, dw_text, _d = _flywheel_factors(energy_swing, speed_rpm, delta, jf, energy_digits)
+    return [("n", n_shown, n_text), (r"\Delta W_{max}", dw_shown, dw_text)]
+
+
 def flywheel_equation(energy_swing: float, speed_rpm: float, delta: float, jf: str,
                       energy_digits: int = 4) -> str:
     """J_F = 900ΔW_max/(π²n²[δ]) with its factors (:func:`_flywheel_factors`) substituted."""
@@ -516,6 +544,9 @@ def linkage_context(model, k, f_, fly, v, figures: dict, lang: str,
             "delta": fluctuation(fly.fluctuation), "jf": sig(fly.inertia),
             "eq": flywheel_equation(fly.max_energy_swing, fly.shaft_speed_rpm, fly.fluctuation,
                                     sig(fly.inertia, group=False)),
+            "eq_note": carried_note(_, flywheel_carried(
+                fly.max_energy_swing, fly.shaft_speed_rpm, fly.fluctuation, sig(fly.inertia, group=False),
+                f(fly.shaft_speed_rpm, 2), sig(fly.max_energy_swing))),
             "rim": None, "real": realised_flywheel(fly, flywheel_realised_rpm, _),
             # the rim's findings (higher than its radius, too fast for cast iron): in the text
             # and, through the summary's findings, on its watch list
@@ -530,6 +561,7 @@ def linkage_context(model, k, f_, fly, v, figures: dict, lang: str,
                 "hb": f(spec.height_to_width, 2), "gamma": f(spec.specific_weight, 0, group=True),
                 "mass": (rf"m = \frac{{4 J_F}}{{D^2}} = \frac{{4 \times {j_mass}}}"
                          rf"{{{f(rim.diameter, 3)}^2}} = {f(rim.rim_mass, 2)}\ \text{{kg}}"),
+                "mass_note": carried_note(_, [("J_F", sig(fly.inertia), j_mass)]),
                 # the numbers substituted, as the shaper's chapter writes them (page review 41:
                 # the press's γ, the rim material's specific weight, was never given a value)
                 "width": (rf"b = \sqrt{{\frac{{4 g J_F}}{{\pi D^3 (H/b) \gamma}}}} = \sqrt{{\frac{{4 \times "

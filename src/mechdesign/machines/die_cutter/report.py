@@ -18,7 +18,8 @@ from ...render.fmt import e, f, length, md_meta, md_text, sig, fluctuation, fact
 from ...render.fmt import number, product, residue, time_ratio, verdict
 from ...render.labels import pgettext, translated
 from ...render.fmt import sentences
-from ...render.linkage_report import flywheel_equation, realised_flywheel, rim_inertia_factor
+from ...render.linkage_report import (carried_note, flywheel_carried, flywheel_equation, realised_flywheel,
+                                       rim_inertia_factor)
 from ...stages.drive import shaft_numeral
 
 DEG = 180.0 / np.pi
@@ -445,16 +446,23 @@ def _flywheel(r, p, b, _) -> dict:
         return gives(float(f(fl.inertia, 3)) * x * x, f(fl.inertia_on_crank, 1))
 
     j_mass = rim_inertia_factor(fl.inertia, fl.rim)
+    ratio_factor = factor_for(fl.speed_ratio, fl_ratio_ok)
+    energy_digits = len(f(fl.max_energy_swing, 1).replace(".", "").lstrip("0"))
     eq = {
         "md": (rf"M_d = \frac{{1}}{{2\pi}}\oint M_b\,d\varphi = {sig(fl.mean_torque, group=False)}\ \text{{N·m}}"
                rf"\ (\text{{{crank_shaft}}})"),
         # ΔW_max with the text's digits (3499.5) or more
         "jf": flywheel_equation(fl.max_energy_swing, fl.shaft_speed_rpm, fl.fluctuation,
-                                f(fl.inertia, 3), len(f(fl.max_energy_swing, 1).replace(".", "").lstrip("0"))),
-        "crank": (rf"J_F' = J_F\,i^2 = {f(fl.inertia, 3)} \times {factor_for(fl.speed_ratio, fl_ratio_ok)}^2 = "
+                                f(fl.inertia, 3), energy_digits),
+        "jf_note": carried_note(_, flywheel_carried(
+            fl.max_energy_swing, fl.shaft_speed_rpm, fl.fluctuation, f(fl.inertia, 3),
+            f(fl.shaft_speed_rpm, 2), f(fl.max_energy_swing, 1), energy_digits)),
+        "crank": (rf"J_F' = J_F\,i^2 = {f(fl.inertia, 3)} \times {ratio_factor}^2 = "
                   rf"{f(fl.inertia_on_crank, 1)}\ \text{{kg·m}}^2"),
+        "crank_note": carried_note(_, [("i", sig(fl.speed_ratio), ratio_factor)]),
         "mass": (rf"m = \frac{{4 J_F}}{{D^2}} = \frac{{4 \times {j_mass}}}"
                  rf"{{{f(fl.rim.diameter, 3)}^2}} = {f(fl.rim.rim_mass, 2)}\ \text{{kg}}"),
+        "mass_note": carried_note(_, [("J_F", f(fl.inertia, 3), j_mass)]),
         "width": (rf"b = \sqrt{{\frac{{4 g J_F}}{{\pi D^3 (H/b) \gamma}}}} = \sqrt{{\frac{{4 \times "
                   rf"{f(p.gravity, 2)} \times {f(fl.inertia, 3)}}}{{\pi \times "
                   rf"{f(fl.rim.diameter, 3)}^3 \times {f(p.rim_height_to_width, 2)} \times "

@@ -15,7 +15,7 @@ from ...render import figures as fig
 from ...render import guide_bar_report as gb_report
 from ...i18n import N_, tr
 from ...render.fmt import e, f, in_lang, md_meta, sig, time_ratio, verdict, fluctuation
-from ...render.linkage_report import flywheel_equation, rim_inertia_factor
+from ...render.linkage_report import carried_note, flywheel_carried, flywheel_equation, rim_inertia_factor
 
 DEG = 180.0 / np.pi
 
@@ -199,8 +199,12 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
                rf"\ \text{{N·m}}"),
         "jf": flywheel_equation(fl.max_energy_swing, fl.shaft_speed_rpm, p.fluctuation,
                                 sig(fl.inertia, group=False)),
+        "jf_note": carried_note(_, flywheel_carried(
+            fl.max_energy_swing, fl.shaft_speed_rpm, p.fluctuation, sig(fl.inertia, group=False),
+            f(fl.shaft_speed_rpm, 2), sig(fl.max_energy_swing))),
         "mass": (rf"m = \frac{{4 J_F}}{{D^2}} = \frac{{4 \times {j_mass}}}"
                  rf"{{{f(fl.rim.diameter, 3)}^2}} = {f(fl.rim.rim_mass, 2)}\ \text{{kg}}"),
+        "mass_note": carried_note(_, [("J_F", sig(fl.inertia), j_mass)]),
         "width": (rf"b = \sqrt{{\frac{{4 g J_F}}{{\pi D^3 (H/b) \gamma}}}} = \sqrt{{\frac{{4 \times "
                   rf"{f(p.gravity, 2)} \times {sig(fl.inertia, group=False)}}}{{\pi \times "
                   rf"{f(fl.rim.diameter, 3)}^3 \times {f(p.rim_height_to_width, 2)} \times "
