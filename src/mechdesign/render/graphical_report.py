@@ -1119,6 +1119,16 @@ def _compare_caption(rows: list[list[str]], label: str, lang: str) -> str:
              "drawing accuracy, its relative difference means little)", p_label=label, pct="%")
 
 
+def comparison_name(quantity: str) -> str:
+    """A compared quantity's symbol as the comparison table and the summary write it
+    (ω3 → $\\omega_{3}$, v_rA4A3 → $v_{rA4A3}$, R12 → $F_{R12}$)."""
+    q = quantity
+    return (f"$\\omega_{{{q[1:]}}}$" if q.startswith("ω") else
+            f"$\\alpha_{{{q[1:]}}}$" if q.startswith("α") else
+            f"$v_{{r{q[3:]}}}$" if q.startswith("v_r") else
+            f"${sym(q)}$")
+
+
 def _compare(pos, lang: str, printed: dict[str, str] | None = None) -> list[list[str]]:
     """The comparison table's rows; a force listed in the polygon tables (``printed``, by
     symbol: itself or its reaction) with the digits it is listed with there (one measured
@@ -1127,13 +1137,9 @@ def _compare(pos, lang: str, printed: dict[str, str] | None = None) -> list[list
     rows = []
     for c in pos.comparison:
         q = c.quantity
-        name = (f"$\\omega_{{{q[1:]}}}$" if q.startswith("ω") else
-                f"$\\alpha_{{{q[1:]}}}$" if q.startswith("α") else
-                f"$v_{{r{q[3:]}}}$" if q.startswith("v_r") else
-                f"${sym(q)}$")
-        ok = abs(c.graphical - c.analytic) <= c.tolerance
+        name = comparison_name(q)
         _ = tr(lang)
-        mark = _("PASS") if ok else _.pgettext("graphical", "beyond")
+        mark = _("PASS") if c.passed else _.pgettext("graphical", "beyond")
         shown = printed.get(q, printed.get(_pair(q) or "", _numg(c.graphical)))
         analytic = _numg(c.analytic)
         # a value smaller than the drawing's resolution has no meaningful relative error; the
@@ -1197,8 +1203,7 @@ def graphical_context(results: dict, figures: dict, lang: str) -> list[dict]:
                 "mb": None if pos.balancing_torque is None else _numg(pos.balancing_torque),
                 "compare": (rows := _compare(pos, lang, _printed(pos, forces))),
                 "caption": _compare_caption(rows, str(pos.label).replace("'", "′"), lang),
-                "beyond": sum(1 for c in pos.comparison
-                              if abs(c.graphical - c.analytic) > c.tolerance),
+                "beyond": sum(1 for c in pos.comparison if not c.passed),
             })
         out.append({"prefix": prefix, "step": _mm(doc.step), "positions": positions,
                     "forces": any(p["forces"] for p in positions),

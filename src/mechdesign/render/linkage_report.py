@@ -13,6 +13,7 @@ from pathlib import Path
 import numpy as np
 
 from ..i18n import N_, tr
+from ..stages.linkage import quality_passed
 from . import figures as fig
 from .fmt import column_decimals, e, f, residue, fluctuation, force_unit, md_text, percent, sentences, sig, tex_name, time_ratio
 from .fmt import verdict as fmt_verdict
@@ -478,7 +479,16 @@ def linkage_context(model, k, f_, fly, v, figures: dict, lang: str,
                      phase=f(q.working_extreme_phase * DEG, 1))
             limit = "—" if model.pressure_angle_limit is None else \
                 _("≤ {limit}° (working stroke)", limit=f(model.pressure_angle_limit * DEG, 0))
-        qual_rows.append([md_names(gname(q.group)), kind, md_point(q.point), extreme, work, limit])
+        _limit, within = quality_passed(q, model)
+        qual_rows.append([md_names(gname(q.group)), kind, md_point(q.point), extreme, work, limit]
+                         + ([] if within is None else [fmt_verdict(within, lang)]))
+    # a verdict column where the brief gives a limit (the die-cutter's [γ] and [α]; page review 45)
+    judged = any(quality_passed(q, model)[1] is not None for q in k.quality)
+    qual_head = [_("Group"), _("Measure"), _("At"), _("Whole cycle"), _("Working stroke"), _("Allowed")]
+    if judged:
+        qual_head.append(_("Verdict"))
+        qual_rows = [row if len(row) == 7 else row + ["—"] for row in qual_rows]
+    qual_align = "|:--|:--|:-:|:--|:--|:--|" + (":-:|" if judged else "")
     res_rows = []
     for i, r in enumerate(model.resistances):
         window = "—"
@@ -525,7 +535,7 @@ def linkage_context(model, k, f_, fly, v, figures: dict, lang: str,
         "angles_caption": _angles_caption(k, lang),
         "point_names": [md_point(p) for p in point_names], "point_rows": point_rows,
         "link_ids": [md_text(l_) for l_ in k.link_omega], "link_speed_rows": link_speed_rows,
-        "qual_rows": qual_rows,
+        "qual_rows": qual_rows, "qual_head": qual_head, "qual_align": qual_align,
         "reaction_names": [f"$F_{{{tex_name(nm)}}}$" for nm in reaction_names],
         "force_rows": force_rows, "force_unit": force_unit_,
         "mb_max": sig(f_.torque_max, ref=f_.peak_torque),

@@ -204,6 +204,22 @@ def _describe(node: dict, path: tuple, parents: tuple, names: dict, actuator) ->
             name = _both(_SEGMENT[kind]) if kind in _SEGMENT else \
                 _both(N_("largest pressure angle of the {kind}"), kind=kind)
         return {"group": group, "name": name}
+    elif "quality" in keys and node.get("kind") in ("transmission", "pressure"):   # γ_min, α_max
+        from .labels import point_tex
+
+        point = point_tex(node.get("point", ""))
+        if node["kind"] == "transmission":
+            name = _both(N_("minimum transmission angle $\\gamma_{{min}}$ at ${point}$"), point=point)
+        else:
+            name = _both(N_("largest pressure angle $\\alpha_{{max}}$ at ${point}$ (working stroke)"),
+                         point=point)
+        return {"group": _both(N_("Transmission and pressure angles")), "name": name}
+    elif "comparison" in keys and "graphical" in keys:     # graphical beside analytic, by position
+        from .graphical_report import comparison_name
+
+        label = str(_owner(parents, path, "positions").get("label", "")).replace("'", "′")
+        return {"group": _both(N_("graphical method at position {label}"), label=label),
+                "name": (comparison_name(node.get("quantity", "")),) * 2}
     elif "constraints" in keys and "cycle" in keys:        # a timing rule of the cycle diagram
         cyc = _field(parents, path, "cycle", whole=True) or {}
         group = _both(N_("motion-cycle timing"))
@@ -259,6 +275,12 @@ def check_groups(document: dict, ctx: dict, lang: str) -> list[dict]:
     i = 0 if _.zh else 1
     groups: dict[str, dict] = {}
     checks = document_checks(document)
+    # the transmission and pressure angles against their limits count where the report shows
+    # them, in the linkage chapter's table with its verdict column (the crank-rocker's report
+    # judges its γ_min in its own verification table instead)
+    shown = any(isinstance(v, dict) and v.get("qual_rows") for v in ctx.values())
+    angles = _both(N_("Transmission and pressure angles"))
+    checks = [c for c in checks if shown or c["group"] != angles]
     for c in checks:
         g = groups.setdefault(c["group"][i], {"group": c["group"][i], "count": 0, "failed": []})
         g["count"] += 1

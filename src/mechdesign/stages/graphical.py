@@ -48,6 +48,7 @@ class Comparison:
     tolerance: float = q("SI of `unit`", "drawing accuracy allowed: 2 % of the analytic value "
                          "plus 1 mm at μv for velocities, 2 mm at μa or μF for accelerations, "
                          "forces and M_b (their errors carry over from the polygons before)")
+    passed: bool = q("", "within the drawing accuracy: |graphical − analytic| ≤ tolerance")
 
 
 @dataclass(frozen=True)
@@ -98,7 +99,7 @@ def graphical_position(model, k, raw, forces, label: str) -> GraphicalPosition:
     −14 %, M_b −6 % at 1×); a larger acceleration polygon is the drafting remedy."""
     for factor in ENLARGE:
         pos = _graphical_position(model, k, raw, forces, label, factor)
-        if all(abs(c.graphical - c.analytic) <= c.tolerance for c in pos.comparison):
+        if all(c.passed for c in pos.comparison):
             break
     return pos
 
@@ -153,7 +154,7 @@ def _graphical_position(model, k, raw, forces, label: str, enlarge: float) -> Gr
 
 def _row(name, unit, g, a, tol) -> Comparison:
     diff = (g - a) / abs(a) if abs(a) > 0 else 0.0
-    return Comparison(name, unit, float(g), float(a), float(diff), float(tol))
+    return Comparison(name, unit, float(g), float(a), float(diff), float(tol), bool(abs(g - a) <= tol))
 
 
 def _compare(model, k, raw, forces, i, vel, acc, groups, mu_l) -> tuple[Comparison, ...]:

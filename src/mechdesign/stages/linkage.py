@@ -838,16 +838,15 @@ def quality_findings(model: LinkageModel, k: LinkageMotion) -> list[Finding]:
             field=where, K=k.time_ratio, theta=theta, work=work, back=back,
             advice=_advice(said[0] if len(said) == 1 else said)))
     for qa in k.quality:
-        if qa.kind == "pressure" and model.pressure_angle_limit is not None \
-                and qa.working_extreme > model.pressure_angle_limit + 1e-9:
+        _limit, within = quality_passed(qa, model)
+        if qa.kind == "pressure" and within is False:
             found.append(finding(
                 "pressure_angle",
                 N_("{group}: the largest pressure angle in the working stroke, {alpha:.2f}°, "
                    "exceeds the allowed {limit:.1f}°; lengthen the rod or move the guide{advice}"),
                 group=qa.group, alpha=qa.working_extreme * deg,
                 limit=model.pressure_angle_limit * deg, advice=extra("pressure")))
-        if qa.kind == "transmission" and model.transmission_angle_min is not None \
-                and qa.extreme < model.transmission_angle_min - 1e-9:
+        if qa.kind == "transmission" and within is False:
             fix = Msg(N_("change the link lengths"))
             four = _four_bar_of(model, qa.group)
             if four is not None:
@@ -905,6 +904,20 @@ class QualityDoc:
     extreme: float = q("rad", "γ_min or α_max over the cycle (exact: refined between samples)")
     extreme_phase: float = q("rad", "crank phase where it occurs")
     working_extreme: float = q("rad", "the same over the working stroke only")
+    limit: float | None = q("rad", "the brief's limit: [γ] (γ_min over the cycle ≥ it) or [α] "
+                            "(α_max over the working stroke ≤ it); None when none is given")
+    passed: bool | None = q("", "the angle within its limit (None: no limit given)")
+
+
+def quality_passed(qa, model) -> tuple[float | None, bool | None]:
+    """(limit, within it) of one transmission or pressure angle: γ_min over the cycle against
+    the model's [γ], α_max over the working stroke against its [α]; (None, None) without a
+    limit. The same judgement as the findings (:func:`quality_findings`)."""
+    if qa.kind == "transmission" and model.transmission_angle_min is not None:
+        return model.transmission_angle_min, bool(qa.extreme >= model.transmission_angle_min - 1e-9)
+    if qa.kind == "pressure" and model.pressure_angle_limit is not None:
+        return model.pressure_angle_limit, bool(qa.working_extreme <= model.pressure_angle_limit + 1e-9)
+    return None, None
 
 
 @dataclass(frozen=True)
@@ -981,7 +994,7 @@ def linkage_document(model: LinkageModel, k: LinkageMotion, f: LinkageForces,
         working_stroke_crank_angle=k.working_span, time_ratio=k.time_ratio,
         start_crank_angle=k.start_angle,
         quality=tuple(QualityDoc(q_.group, q_.kind, q_.point, q_.extreme, q_.extreme_phase,
-                                 q_.working_extreme) for q_ in k.quality),
+                                 q_.working_extreme, *quality_passed(q_, model)) for q_ in k.quality),
         positions=tuple(per_position),
         grid=LinkageGrid(k.phase[:n], k.s[:n], k.v[:n], k.a[:n], f.balancing_torque[:n]),
         mean_torque=f.mean_torque, mean_power=f.mean_power, peak_torque=f.peak_torque,
