@@ -129,3 +129,19 @@ def test_the_summary_counts_angles_only_where_the_report_shows_their_table():
     assert check_groups(doc, {}, "en") == []
     shown = check_groups(doc, {"lk": {"qual_rows": [["RRR"]]}}, "en")
     assert [(g["group"], g["count"]) for g in shown] == [("Transmission and pressure angles", "1")]
+
+
+@pytest.mark.parametrize("name", ("shaper", "shaper_lengths"))
+def test_the_stated_torque_range_is_the_whole_cycles_and_holds_the_tables(handin_reports, name):
+    """shaper_lengths (review45): "M_b ranges from −134.1 to 1070 N·m" beside a table whose
+    extremes are −104.30 and 1067.14: the sentence gives the curve's exact extremes, which lie
+    between the tabulated positions; it now says so, and its range holds every table value."""
+    md, _document = handin_reports(name, "en")
+    lines = md.split("\n")
+    sentence = next(line for line in lines if "balancing torque ranges from" in line)
+    assert sentence.startswith("Over the whole cycle (between the tabulated positions too)")
+    lo, hi = (float(x.replace("\u2212", "-").replace("\u202f", ""))
+              for x in re.search(r"ranges from (\S+) to (\S+) N·m", sentence).groups())
+    at = next(i for i, line in enumerate(lines) if "{#tbl:loads}" in line)
+    table = [float(r[-1].replace("\u202f", "")) for r in _table_above(lines, at)]
+    assert lo <= min(table) and max(table) <= hi, (lo, hi, min(table), max(table))
