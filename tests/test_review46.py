@@ -145,3 +145,14 @@ def test_the_stated_torque_range_is_the_whole_cycles_and_holds_the_tables(handin
     at = next(i for i, line in enumerate(lines) if "{#tbl:loads}" in line)
     table = [float(r[-1].replace("\u202f", "")) for r in _table_above(lines, at)]
     assert lo <= min(table) and max(table) <= hi, (lo, hi, min(table), max(table))
+
+
+@pytest.mark.parametrize("lang", LANGS)
+def test_the_die_cutters_task_route_says_the_design_has_no_coupling(handin_reports, lang):
+    """Seed 001b (the thesis, l. 168): belt → two-stage helical reducer → coupling → distribution
+    shaft. The design carries the cranks on the reducer's output shaft (no coupling stage): the
+    task table quoted the route and said nothing of it (review45)."""
+    md, document = handin_reports("die_cutter", lang)
+    assert [s["kind"] for s in document["drive"]["stages"]] == ["belt", "helical", "helical"]
+    row = next(line for line in md.split("\n") if line.startswith(("| 传动路线 |", "| drive |")))
+    assert ("不用联轴器" if lang == "zh" else "no coupling") in row, row

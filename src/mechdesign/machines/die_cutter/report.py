@@ -145,7 +145,11 @@ def _data_rows(b, p, r, _) -> list[list[str]]:
          _("layout datum")],
         [_("board thickness"), f"≤ {f(b.production.board_thickness_mm, 1)} mm",
          _("corrugated board, white board and prints")],
-        [_("drive"), _("V-belt → two-stage helical reducer → coupling → distribution shaft"), "—"],
+        [_("drive"), _("V-belt → two-stage helical reducer → coupling → distribution shaft"),
+         # review45: the task's coupling is not in the design, which said nothing of it
+         _("the task's route; this design carries the cranks on the reducer's output shaft, "
+           "which is the distribution shaft (no coupling: chapter \"Drive design\")")
+         if not any(st.kind == "coupling" for st in r["drive"].stages) else "—"],
         [_("actuators"),
          _("fixed upper die, lower platen lifted by a six-bar toggle linkage; a cam opens "
            "the spring grippers; an incomplete gear drives the gripper chain "
