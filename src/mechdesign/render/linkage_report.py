@@ -484,11 +484,11 @@ def linkage_context(model, k, f_, fly, v, figures: dict, lang: str,
                          + ([] if within is None else [fmt_verdict(within, lang)]))
     # a verdict column where the brief gives a limit (the die-cutter's [γ] and [α]; page review 45)
     judged = any(quality_passed(q, model)[1] is not None for q in k.quality)
-    qual_head = [_("Group"), _("Measure"), _("At"), _("Whole cycle"), _("Working stroke"), _("Allowed")]
+    angles_head = [_("Group"), _("Measure"), _("At"), _("Whole cycle"), _("Working stroke"), _("Allowed")]
     if judged:
-        qual_head.append(_("Verdict"))
+        angles_head.append(_("Verdict"))
         qual_rows = [row if len(row) == 7 else row + ["—"] for row in qual_rows]
-    qual_align = "|:--|:--|:-:|:--|:--|:--|" + (":-:|" if judged else "")
+    angles_align = "|:--|:--|:-:|:--|:--|:--|" + (":-:|" if judged else "")
     res_rows = []
     for i, r in enumerate(model.resistances):
         window = "—"
@@ -535,7 +535,7 @@ def linkage_context(model, k, f_, fly, v, figures: dict, lang: str,
         "angles_caption": _angles_caption(k, lang),
         "point_names": [md_point(p) for p in point_names], "point_rows": point_rows,
         "link_ids": [md_text(l_) for l_ in k.link_omega], "link_speed_rows": link_speed_rows,
-        "qual_rows": qual_rows, "qual_head": qual_head, "qual_align": qual_align,
+        "qual_rows": qual_rows, "angles_head": angles_head, "angles_align": angles_align,
         "reaction_names": [f"$F_{{{tex_name(nm)}}}$" for nm in reaction_names],
         "force_rows": force_rows, "force_unit": force_unit_,
         "mb_max": sig(f_.torque_max, ref=f_.peak_torque),
