@@ -188,3 +188,27 @@ def test_every_table_has_as_many_header_cells_as_its_rows(handin_reports, name, 
         else:
             i += 1
     assert not bad, bad[:5]
+
+
+def test_a_centre_of_mass_on_the_analysis_sheet_is_named_and_tied_to_its_link(example_results, tmp_path):
+    """shaper_lengths' A1 sheet (review45): the ram's centre of mass S6, x_S6 = 200 mm ahead of
+    and y_S6 = 50 mm above F, stood as two small circles alone above the mechanism (one per
+    bold position), read as stray pins. Each is now tied to the ram by a thin line from F and
+    named at the first bold position."""
+    from one_sheet import written_sheet
+    from mechdesign.render.sheet_dxf import plain_text
+
+    msp, _builder = written_sheet(example_results("shaper_lengths"), "shaper_lengths", "analysis",
+                                  tmp_path, "zh")
+    texts = {plain_text(e) for e in msp.query("TEXT MTEXT")}
+    assert "S6" in texts or "S₆" in texts, sorted(t for t in texts if t.startswith("S"))
+    ends = [complex(e.dxf.start.x, e.dxf.start.y) for e in msp.query("LINE")] + \
+        [complex(e.dxf.end.x, e.dxf.end.y) for e in msp.query("LINE")]
+    for e in msp.query("LWPOLYLINE"):
+        pts = [complex(p[0], p[1]) for p in e.get_points()]
+        ends += [pts[0], pts[-1]]
+    small = [complex(c.dxf.center.x, c.dxf.center.y) for c in msp.query("CIRCLE")
+             if abs(c.dxf.radius - 0.8) < 1e-6 and c.dxf.layer == "OUTLINE"]   # not the curves' marks
+    assert len(small) >= 2
+    for c in small:
+        assert any(abs(c - z) < 1e-3 for z in ends), c

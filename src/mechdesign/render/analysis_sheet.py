@@ -666,6 +666,7 @@ def _mechanism(s: Sheet, model, k, lab: dict, box, chosen: list[str], lang: str)
         h = min(3.0, fit_height(text, bx1 - bx0, 3.0))
         placer.text((bx0 + bx1) / 2 + 1j * (by1 - 14.0), text, h, "center", "middle")
     crank = model.crank
+    body_link = {b.com: b.link for b in model.bodies if b.com is not None}
     v.circle(P[crank.pivot][0], crank.length * mm, "CENTER")
     for o, r, a0, a1 in arcs:
         v.arc(o, r, a0, a1, "CENTER")
@@ -699,6 +700,14 @@ def _mechanism(s: Sheet, model, k, lab: dict, box, chosen: list[str], lang: str)
             for name in sorted(coms):
                 if name in P:
                     s.circle(v.p(P[name][i]), 0.8, "OUTLINE", 0.25)
+                    # tied to its link by a thin line to the link's nearest point drawn (the
+                    # ram's S6, 200 mm ahead of and 50 mm above F, stood alone as a stray pin:
+                    # page review 45, shaper_lengths)
+                    ends = [P[p][i] for p in members.get(body_link.get(name), ()) if p in drawn]
+                    if ends:
+                        near = min(ends, key=lambda z: abs(z - P[name][i]))
+                        if abs(near - P[name][i]) > 1e-9:
+                            v.polyline(np.array([near, P[name][i]]), "CONSTRUCTION", weight=0.25)
     # the links of the other positions (thin) are broken under a pivot's name and a
     # position's number (GB/T 4457.4), which stand at their points
     placer.mark_breakable(first_link)
@@ -764,7 +773,7 @@ def _mechanism(s: Sheet, model, k, lab: dict, box, chosen: list[str], lang: str)
     if chosen and chosen[0] in labels:
         i0 = labels.index(chosen[0])
         mid = np.mean([P[nm][i0] for nm in drawn])
-        for name in sorted((joints - set(mech.frame_points)) | asked):
+        for name in sorted((joints - set(mech.frame_points)) | asked | coms):
             if name in P:
                 d = P[name][i0] - mid
                 if placer.place_breaking(v.p(P[name][i0]), sheet_point(name), 3.5,
