@@ -37,14 +37,20 @@ def _decimals(text: str) -> int:
     return len(text.partition(".")[2])
 
 
-#: the sentence under a formula that substitutes a factor with more digits than the text gives
+#: the sentence after a formula that substitutes a factor with more digits than the text gives
 #: it (render/linkage_report.carried_note): the two strings are then one value, said to be
-CARRIED = ("more digits than the text gives", "比正文多取了有效数字")
+CARRIED = ("more digits than in the text", "比正文多取有效数字")
 
 
 def _said_carried(lines: list[str], i: int) -> bool:
-    """Line ``i`` (a formula) is followed, within two lines, by the carried-digits sentence."""
-    return any(phrase in line for line in lines[i + 1:i + 3] for phrase in CARRIED)
+    """Line ``i`` (a formula) is followed by the carried-digits sentence: in the first line of
+    text after it, past blank lines and the display formulas that follow it (the sentence
+    heads the paragraph after a formula's run)."""
+    for line in lines[i + 1:]:
+        if not line.strip() or line.lstrip().startswith("$$"):
+            continue
+        return any(phrase in line for phrase in CARRIED)
+    return False
 
 
 def two_ways(md: str, window: int = WINDOW) -> list[tuple[str, str]]:
@@ -136,7 +142,11 @@ def test_a_factor_carried_with_more_digits_is_said_so():
     for lang in ("en", "zh"):
         note = carried_note(tr(lang), carried)
         assert "$n$" in note and "$\\Delta W_{max}$" in note
-        assert not two_ways(text + note + "\n"), lang
+        assert not two_ways(text + "\n" + note + " The energy change is plotted in Figure 14.\n"), lang
+        # said after a following formula, in the paragraph after the run
+        assert not two_ways(text + "\n$$ m = 1 $$\n\n" + note + "\n"), lang
+        # a sentence before the formula says nothing of it
+        assert two_ways(note + "\n" + text + "\nThe energy change is plotted.\n"), lang
     # nothing carried (the thin space of a grouped number is no digit): no sentence
     assert carried_note(tr("en"), [("J_F", "1\u202f276.5", "1276.5")]) is None
 

@@ -320,7 +320,7 @@ def rim_inertia_factor(inertia: float, rim) -> str:
 
 
 def carried_note(_, carried) -> str | None:
-    """The sentence under a formula that substitutes a value with more digits than the text
+    """The sentence after a formula that substitutes a value with more digits than the text
     prints it (the shaper's J_F = 900 × 278.04/… beside "ΔW_max = 278.0 J"): the text keeps
     the rule's digits for the quantity (4 significant for an energy, 0.01 rpm for a speed), the
     formula carries the fewest more that give its printed result to the last digit, and the
@@ -332,11 +332,11 @@ def carried_note(_, carried) -> str | None:
     names = [f"${symbol}$" for symbol, shown, used in carried if plain(shown) != plain(used)]
     if not names:
         return None
+    # short, and set at the head of the paragraph after the formulas: a line more there moved
+    # the pages after it and the shaper en's layout no longer settled (typst's five passes)
     if len(names) == 1:
-        return _("In this formula {a} carries more digits than the text gives it, so that the "
-                 "result is right to its last printed digit.", a=names[0])
-    return _("In this formula {a} and {b} carry more digits than the text gives them, so that the "
-             "result is right to its last printed digit.", a=", ".join(names[:-1]), b=names[-1])
+        return _("Here {a} carries more digits than in the text.", a=names[0])
+    return _("Here {a} and {b} carry more digits than in the text.", a=", ".join(names[:-1]), b=names[-1])
 
 
 def flywheel_carried(energy_swing: float, speed_rpm: float, delta: float, jf: str,
