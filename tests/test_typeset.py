@@ -1203,8 +1203,12 @@ HOLES_OPEN: set[tuple[str, str]] = set()
 # lockbeam_cam en since session 44 (the cam's purpose paragraph moved the pages): figure 1
 # (the motion diagrams) on top of p.4 between the return law's heading line at the foot of p.3
 # and its eq. 8; the rule that keeps a figure off the top of a page starting mid-derivation
-# does not see a derivation whose first line is its bold heading. Not mended
-DERIVATION_OPEN: set[tuple[str, str]] = {("lockbeam_cam", "en")}
+# does not see a derivation whose first line is its bold heading. Mended in session 46
+# (templates/report.typ): figure 1's text stands on p.4 after eq. 14, under the derivation that
+# went on from p.3 (a `mid` figure); too tall for the room under its text, it was a top float,
+# which typst set on p.4's top, above eq. 8. A `mid` figure that does not fit under its text is
+# now a bottom float: at p.4's foot, after its text
+DERIVATION_OPEN: set[tuple[str, str]] = set()
 # Word, as LibreOffice 7.4 lays it out: a heading at a page foot with fewer than three rows
 # under it. render/docx_layout.keep_headings_with_text keeps a heading's first blocks with
 # it. A numbered formula's table was kept by w:keepNext on all its paragraphs, which Word reads
