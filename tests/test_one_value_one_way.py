@@ -39,7 +39,7 @@ def _decimals(text: str) -> int:
 
 #: the sentence after a formula that substitutes a factor with more digits than the text gives
 #: it (render/linkage_report.carried_note): the two strings are then one value, said to be
-CARRIED = ("more digits than in the text", "比正文多取有效数字")
+CARRIED = ("carry more digits", "carries more digits", "比正文多取有效数字")
 
 
 def _said_carried(lines: list[str], i: int) -> bool:

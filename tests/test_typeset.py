@@ -1116,7 +1116,9 @@ CONTINUED_OPEN: set[tuple[str, str]] = set()
 # the top of p.23 with its text) and 26 other reports unchanged in their findings, but press en
 # p.28 (the sheets' chapter) ended at 54 %, its first preview moved on to p.29 (a figure the plan
 # now saw far set smaller; skipping the sheet previews in plan-figures did not mend it)
-FAR_OPEN: set[tuple[str, str]] = {("press", "zh")}
+# Gone in session 46 (the linkage chapter's angle table with its verdict column and the torque
+# range's words moved press zh's pages); the cause above is not mended
+FAR_OPEN: set[tuple[str, str]] = set()
 WIDE_GAPS_OPEN: set[tuple[str, str]] = set()
 # pages where a chapter's text ends above the half and its last figure, too tall for the room
 # left, went on to the top of the next page (crank_rocker zh/en), or where a chapter's last
@@ -1174,7 +1176,9 @@ FIGURE_ORDER_OPEN: set[tuple[str, str]] = set()
 # linkage_sixbar en since session 44 (the flywheel's rim, three formulas more at the chapter's
 # end, moved the pages): table 5 (the joint reactions) starts with three rows at the foot of
 # p.5 and goes on on p.6 under figures 3 and 4, both cited before the table
-TABLES_INTERRUPTED_OPEN: set[tuple[str, str]] = {("slotter", "zh"), ("linkage_sixbar", "en")}
+# linkage_sixbar en gone in session 46 (the angle table's verdict column and the flywheel's
+# note moved the pages); the cause is not mended
+TABLES_INTERRUPTED_OPEN: set[tuple[str, str]] = {("slotter", "zh")}
 # A blank band above a figure at a page's foot (page_holes). Mended in session 37 (a figure whose text follows a split table stands in the flow under
 # its text where it fits, no longer at the page's foot under a hole): cam_7_3 en p.7,
 # die_cutter en p.20, linkage_sixbar zh/en p.7.

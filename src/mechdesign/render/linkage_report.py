@@ -335,8 +335,8 @@ def carried_note(_, carried) -> str | None:
     # short, and set at the head of the paragraph after the formulas: a line more there moved
     # the pages after it and the shaper en's layout no longer settled (typst's five passes)
     if len(names) == 1:
-        return _("Here {a} carries more digits than in the text.", a=names[0])
-    return _("Here {a} and {b} carry more digits than in the text.", a=", ".join(names[:-1]), b=names[-1])
+        return _("Here {a} carries more digits.", a=names[0])
+    return _("Here {a} and {b} carry more digits.", a=", ".join(names[:-1]), b=names[-1])
 
 
 def flywheel_carried(energy_swing: float, speed_rpm: float, delta: float, jf: str,
