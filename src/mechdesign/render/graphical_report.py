@@ -886,6 +886,8 @@ def _in_force_unit(pos, forces: list[dict]) -> None:
         fc["known"] = [(a, b, kn_text(t, abs(ld.value))) for (a, b, t), ld in zip(fc["known"], given)]
         for row, v in zip(fc["rows"], _sides(fg)):
             row[3] = kn_text(row[3], v.read)
+            if fc.get("arm") and v.symbol == fg.slider_moment.reaction:
+                fc["arm"]["value"] = row[3]
             if v.known and row[2] != "—":
                 row[2] = _len(v.length, fg.scale / div, row[3])
 
@@ -943,7 +945,8 @@ def _forces(pos, lang: str, weights: dict[str, int] | None = None) -> list[dict]
                  for link, lds in fg.loads.items() for ld in lds if abs(ld.value) > 0]
         known_texts = [(ld.name, link, known(ld.name, abs(ld.value)))
                        for link, lds in fg.loads.items() for ld in lds if abs(ld.value) > 0]
-        out.append({"known": known_texts,
+        out.append({"known": known_texts, "equations": any(m[0] for m in moments),
+                    "arm": _slider_arm(fg, mu_l, lang, floors[-1][0], rows),
                     "name": "–".join(fg.links), "links": ", ".join(fg.links), "crank": fg.balancing_torque
                     is not None, "mu": grouped(_scale(fg.scale)), "moments": moments, "rows": rows,
                     "loads": loads, "sum": closing, "slider": slider, "slider_link": slider_link,
@@ -990,6 +993,51 @@ def _forces(pos, lang: str, weights: dict[str, int] | None = None) -> list[dict]
         for row, v in zip(fc["rows"], _sides(fg)):
             if v.known:
                 row[2] = "—" if abs(v.length) < TOO_SHORT else _len(v.length, fg.scale, row[3])
+    return out
+
+
+def _slider_arm(fg, mu_l: float, lang: str, least: dict, rows: list) -> dict | None:
+    """An RRP group's slider (the ram): its moment equation about the inner pin after the
+    force polygon, giving the arm h of the guide's reaction (core ``slider_moment``): the
+    known forces with the digits the group prints them with (``least``), the sum of their
+    printed products, the reaction as its polygon row prints it (``rows``), h from those
+    numbers to 0.01 mm and h·μl in m. Returns the template's strings, or None (no such
+    slider)."""
+    m = fg.slider_moment
+    if m is None:
+        return None
+    _ = tr(lang)
+    r = "$" + sym(m.reaction) + "$"
+    point = "$" + tex_name(m.point) + "$"
+    row = next(row for row, v in zip(rows, _sides(fg)) if v.symbol == m.reaction)
+    read = row[3].replace(GROUP, "")
+    arms = [t for t in m.terms if t.arm]
+    couples = sum(t.value for t in m.terms if not t.arm)
+    out = {"reaction": r, "point": point, "link": m.link, "value": row[3], "eq": None, "note": None}
+    if not arms and not couples:
+        out["note"] = _("No known force on slider {link} has a moment about {point}: $h = 0$, "
+                        "the line of action of {r} passes through {point}.",
+                        link=m.link, point=point, r=r)
+        return out
+    lhs, _total, _c, psum = _moment_tex(m, lambda s_: True, least, None)
+    places = max([_digits(_factor(t.force, least.get(t.name, 0))) for t in arms] + [0]) + 1
+    num = f(psum, places)
+    if "." in num:
+        num = num.rstrip("0").rstrip(".")
+    cpl = ""
+    value = float(num)
+    if couples:
+        cpl = f"{_couple(couples, 2)} / {_scale(mu_l)}"
+        value += float(_couple(couples, 2).replace(" ", "").replace("+", "")) / mu_l
+    h = f(-value / float(read), 2)
+    solved = (f"\\frac{{{num[1:]}}}{{{read}}}" if not cpl and num.startswith("-")
+              else f"-\\frac{{{num}{cpl}}}{{{read}}}")
+    where = f"\\Sigma M_{{{tex_name(m.point)}}}({m.link})"
+    out["eq"] = (f"{where} = {sym(m.reaction)} \\times h + ({lhs}){cpl} = 0 \\;\\Rightarrow\\; "
+                 f"h = {solved} = {h}" r"\ \mathrm{mm}")
+    out["h"] = h
+    out["mu"] = _scale(mu_l)
+    out["true"] = sig(float(h) * mu_l, 4)
     return out
 
 
