@@ -666,7 +666,7 @@ def _mechanism(s: Sheet, model, k, lab: dict, box, chosen: list[str], lang: str)
         h = min(3.0, fit_height(text, bx1 - bx0, 3.0))
         placer.text((bx0 + bx1) / 2 + 1j * (by1 - 14.0), text, h, "center", "middle")
     crank = model.crank
-    body_link = {b.com: b.link for b in model.bodies if b.com is not None}
+    body_link = dict((b.com, b.link) for b in model.bodies if b.com is not None)
     v.circle(P[crank.pivot][0], crank.length * mm, "CENTER")
     for o, r, a0, a1 in arcs:
         v.arc(o, r, a0, a1, "CENTER")

@@ -1015,9 +1015,10 @@ def _slider_arm(fg, mu_l: float, lang: str, least: dict, rows: list) -> dict | N
     couples = sum(t.value for t in m.terms if not t.arm)
     out = {"reaction": r, "point": point, "link": m.link, "value": row[3], "eq": None, "note": None}
     if not arms and not couples:
-        out["note"] = _("No known force on slider {link} has a moment about {point}: $h = 0$, "
-                        "the line of action of {r} passes through {point}.",
-                        link=m.link, point=point, r=r)
+        # after the sentence before it in the same paragraph: a space in English, none after "。"
+        out["note"] = ("" if _.zh else " ") + _("No known force on slider {link} has a moment about "
+                                                "{point}: $h = 0$, the line of action of {r} passes "
+                                                "through {point}.", link=m.link, point=point, r=r)
         return out
     lhs, _total, _c, psum = _moment_tex(m, lambda s_: True, least, None)
     places = max([_digits(_factor(t.force, least.get(t.name, 0))) for t in arms] + [0]) + 1

@@ -13,7 +13,6 @@ from pathlib import Path
 import numpy as np
 
 from ..i18n import N_, tr
-from ..stages.linkage import quality_passed
 from . import figures as fig
 from .fmt import column_decimals, e, f, residue, fluctuation, force_unit, md_text, percent, sentences, sig, tex_name, time_ratio
 from .fmt import verdict as fmt_verdict
@@ -334,9 +333,11 @@ def carried_note(_, carried) -> str | None:
         return None
     # short, and set at the head of the paragraph after the formulas: a line more there moved
     # the pages after it and the shaper en's layout no longer settled (typst's five passes)
+    # (with the gap to the sentence after it: a space in English, none after "。")
+    gap = "" if _.zh else " "
     if len(names) == 1:
-        return _("Here {a} carries more digits.", a=names[0])
-    return _("Here {a} and {b} carry more digits.", a=", ".join(names[:-1]), b=names[-1])
+        return _("Here {a} carries more digits.", a=names[0]) + gap
+    return _("Here {a} and {b} carry more digits.", a=", ".join(names[:-1]), b=names[-1]) + gap
 
 
 def flywheel_carried(energy_swing: float, speed_rpm: float, delta: float, jf: str,
@@ -479,11 +480,11 @@ def linkage_context(model, k, f_, fly, v, figures: dict, lang: str,
                      phase=f(q.working_extreme_phase * DEG, 1))
             limit = "—" if model.pressure_angle_limit is None else \
                 _("≤ {limit}° (working stroke)", limit=f(model.pressure_angle_limit * DEG, 0))
-        _limit, within = quality_passed(q, model)
+        within = q.passed
         qual_rows.append([md_names(gname(q.group)), kind, md_point(q.point), extreme, work, limit]
                          + ([] if within is None else [fmt_verdict(within, lang)]))
     # a verdict column where the brief gives a limit (the die-cutter's [γ] and [α]; page review 45)
-    judged = any(quality_passed(q, model)[1] is not None for q in k.quality)
+    judged = any(q.passed is not None for q in k.quality)
     angles_head = [_("Group"), _("Measure"), _("At"), _("Whole cycle"), _("Working stroke"), _("Allowed")]
     if judged:
         angles_head.append(_("Verdict"))

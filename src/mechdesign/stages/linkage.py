@@ -17,7 +17,7 @@ brief). A :class:`LinkageModel` in SI units goes through four stages:
 """
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 import numpy as np
 
@@ -124,6 +124,9 @@ class QualityAngle:
     extreme_phase: float = q("rad")
     working_extreme: float = q("rad", "the same over the working stroke only")
     working_extreme_phase: float = q("rad")
+    limit: float | None = q("rad", "the model's [γ] or [α] (None: none given)", default=None)
+    passed: bool | None = q("", "within the limit (:func:`quality_passed`; None: no limit)",
+                            default=None)
 
 
 @dataclass(frozen=True)
@@ -293,8 +296,9 @@ def _quality(model: LinkageModel, m: Motion, phase: np.ndarray, working_span: fl
         wi = np.flatnonzero(working)[int(np.argmin(sign * grid[working]))]
         p_w, v_w = best(max(0.0, phase[wi] - step), min(working_span, phase[wi] + step),
                         float(phase[wi]), float(grid[wi]), ends=(0.0, working_span))
-        out.append(QualityAngle(g.name, kind, point, values, float(v_all),
-                                float(p_all % TWO_PI), float(v_w), float(p_w)))
+        qa = QualityAngle(g.name, kind, point, values, float(v_all), float(p_all % TWO_PI),
+                          float(v_w), float(p_w))
+        out.append(replace(qa, **dict(zip(("limit", "passed"), quality_passed(qa, model)))))
     return tuple(out)
 
 
@@ -838,7 +842,7 @@ def quality_findings(model: LinkageModel, k: LinkageMotion) -> list[Finding]:
             field=where, K=k.time_ratio, theta=theta, work=work, back=back,
             advice=_advice(said[0] if len(said) == 1 else said)))
     for qa in k.quality:
-        _limit, within = quality_passed(qa, model)
+        within = qa.passed
         if qa.kind == "pressure" and within is False:
             found.append(finding(
                 "pressure_angle",
@@ -994,7 +998,7 @@ def linkage_document(model: LinkageModel, k: LinkageMotion, f: LinkageForces,
         working_stroke_crank_angle=k.working_span, time_ratio=k.time_ratio,
         start_crank_angle=k.start_angle,
         quality=tuple(QualityDoc(q_.group, q_.kind, q_.point, q_.extreme, q_.extreme_phase,
-                                 q_.working_extreme, *quality_passed(q_, model)) for q_ in k.quality),
+                                 q_.working_extreme, q_.limit, q_.passed) for q_ in k.quality),
         positions=tuple(per_position),
         grid=LinkageGrid(k.phase[:n], k.s[:n], k.v[:n], k.a[:n], f.balancing_torque[:n]),
         mean_torque=f.mean_torque, mean_power=f.mean_power, peak_torque=f.peak_torque,
