@@ -188,22 +188,6 @@ class MomentEquation:
 
 
 @dataclass(frozen=True)
-class ArmEquation:
-    """An RRP group's slider after the force polygon: ΣM_point = 0 on ``link`` with the
-    guide's reaction ``reaction`` (magnitude and direction from the polygon) at the unknown
-    arm ``arm``: ``force`` × arm + Σ known moments = 0 (孙桓, 杆组法: the line of action of the
-    guide's reaction)."""
-
-    link: str = q("", "the slider")
-    point: str = q("", "the point the moments are taken about (the inner pin)")
-    terms: tuple[Moment, ...] = q("", "the known moments")
-    reaction: str = q("", "the guide's reaction R{a}{b}")
-    force: float = q("N", "its magnitude read off the force polygon")
-    arm: float = q("mm", "its arm on the drawing, signed: + where its moment about the point "
-                         "is counter-clockwise")
-
-
-@dataclass(frozen=True)
 class ForceGroup:
     """The force construction of one group at one position: its loads per link, the moment
     equations, the force polygon (points in mm, vectors as :class:`Term`) and the reactions
@@ -222,10 +206,6 @@ class ForceGroup:
                                         default=None)
     reaction_points: dict[str, complex] = q("m", "the joint where each reaction acts",
                                             default_factory=dict)
-    slider_moment: ArmEquation | None = q(
-        "", "an RRP group: the slider's moment equation about the inner pin after the force "
-        "polygon (ΣM_F(6) = 0), giving the arm of the guide's reaction; None elsewhere",
-        default=None)
 
 
 # ---------------------------------------------------------------- kinematics
@@ -485,7 +465,6 @@ def force_drawing(mech, pos: dict, loads: dict, couples: dict, mu_l: float, mu_f
         mu = mu_f[g.name]
         fp = _ForcePolygon(mu)
         found, moments = {}, []
-        slider_moment = None
         if isinstance(g, Crank):
             j = joints[0]
             O = pos[g.pivot]
@@ -519,13 +498,10 @@ def force_drawing(mech, pos: dict, loads: dict, couples: dict, mu_l: float, mu_f
         if inner.kind == "R":
             C = pos[inner.point]
             tang, unknown_dir = {}, {}
-            slider_terms = None
             for lk in links:
                 j = outer[lk]
                 terms, m = _moment_terms(loads.get(lk, []), C, mu_l,
                                          [(f"MI{lk}", couples.get(lk, 0.0))])
-                if j.kind != "R":
-                    slider_terms = (lk, j, tuple(terms))
                 if j.kind == "R":
                     r = pos[j.point] - C
                     l_mm = rounded(abs(r) / mu_l)
@@ -570,17 +546,6 @@ def force_drawing(mech, pos: dict, loads: dict, couples: dict, mu_l: float, mu_f
             # the inner reaction: on L0 from L1 closes L0's polygon (end of its loads → X)
             ri = fp.measure(f"R{L1}{L0}", end0, "X", "internal")
             found[inner.name] = ri.value if inner.link_b == L0 else -ri.value
-            if slider_terms is not None:
-                # the slider (RRP: the ram on its guide): the polygon gave the guide's
-                # reaction in magnitude and direction (⊥ the guide); the slider's moment
-                # about the inner pin — the pin's reaction has none — gives where its line
-                # of action lies: F_R76 × h + Σ F × arm = 0 (孙桓, 杆组法), h on the drawing
-                lk, j, terms = slider_terms
-                read = next(v.read for v in fp.vectors if v.symbol == j.name)
-                known = sum(t.force * t.arm * t.sign for t in terms if t.arm)
-                known += sum(t.value for t in terms if not t.arm) / mu_l
-                h = -known / read + 0.0 if read else 0.0
-                slider_moment = ArmEquation(lk, inner.point, terms, j.name, read, h)
         else:        # RPR: slider (pin A to an earlier link) on a guide bar (pin O to frame)
             sl = next(lk for lk in links if outer[lk].point == inner.point)
             bar = next(lk for lk in links if lk != sl)
@@ -640,8 +605,7 @@ def force_drawing(mech, pos: dict, loads: dict, couples: dict, mu_l: float, mu_f
         out.append(ForceGroup(g.name, tuple(links), {lk: tuple(loads.get(lk, [])) for lk in links},
                               tuple(moments), mu, dict(fp.points), tuple(fp.vectors), found,
                               reaction_points={outer[lk].name: pos[outer[lk].point]
-                                               for lk in links},
-                              slider_moment=slider_moment))
+                                               for lk in links}))
     return out
 
 
