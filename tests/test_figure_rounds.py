@@ -219,3 +219,74 @@ def test_the_held_figures_are_read_by_the_compiling_process(tmp_path):
     result = subprocess.run([sys.executable, "-c", _SERVED_QUERY, str(tmp_path)], cwd=root,
                             capture_output=True, text=True)
     assert result.stdout.strip().endswith("ok"), result.stderr[-2000:]
+
+
+class CloseAgain:
+    """typst for the close plan read again (templates/report.typ: close-again): the first
+    compilation is unsettled and holds ``held``; each round with ``held`` given settles with
+    the held figures of ``layouts[close given]`` (held, far) and reads the plan ``nexts[close]``
+    again from its layout."""
+
+    def __init__(self, held, layouts, nexts, first):
+        self.held, self.layouts, self.nexts, self.first = held, layouts, nexts, first
+        self.closes = []
+
+    def compile(self, typ_name, root, timestamp, stem, inputs):
+        close = inputs.get("figure-close")
+        self.closes.append(None if close is None else json.loads(close))
+        if close is None:
+            return b"pdf-first", ["document did not converge within five attempts"]
+        return f"pdf-{close}".encode(), []
+
+    def held_next(self, typ_name, root, inputs):
+        close = inputs.get("figure-close")
+        if close is None:
+            return {"held": self.held, "far": [], "close": self.first}
+        held, far = self.layouts[close]
+        return {"held": held, "far": far, "close": json.loads(close), "close-next": self.nexts[close]}
+
+
+def close_again(monkeypatch, tmp_path, fake):
+    monkeypatch.setattr(P, "_compile_report", fake.compile)
+    monkeypatch.setattr(P, "_held_next", fake.held_next)
+    source = "x\n" + P.FIGURE_RULES_ON + "y\n"
+    typ = tmp_path / "r.typ"
+    typ.write_text(source, encoding="utf-8")
+    return P._settle(str(typ), tmp_path, 0, "r", source)
+
+
+def test_the_close_plan_read_again_at_the_fixed_point_sets_a_last_figure_smaller(monkeypatch, tmp_path):
+    # die_cutter en: the close plan read from the first compilation kept figure 14 at 399 pt;
+    # with figures 1, 2 and 18 held its chapter's text ended higher and the figure went on to
+    # the next page (p.23 42 % full). Read again at the fixed point: 379 pt, compiled once
+    # more; that round's fixed point is the report
+    held = {"1": 5, "2": 5}
+    first, smaller = [311.5, 399.0], [311.5, 379.0]
+    fake = CloseAgain(held, {json.dumps(first): (held, []), json.dumps(smaller): (held, [])},
+                      {json.dumps(first): smaller, json.dumps(smaller): smaller}, first)
+    pdf, found, rounds = close_again(monkeypatch, tmp_path, fake)
+    assert fake.closes == [None, first, smaller]
+    assert pdf == f"pdf-{json.dumps(smaller)}".encode() and not P._unsettled(found)
+
+
+def test_the_close_plan_is_read_again_once_and_a_plan_that_finds_no_fixed_point_is_dropped(monkeypatch, tmp_path):
+    # read again, the plan sets the figure smaller still in every layout: one more compilation
+    # only. And where that round holds a figure more every time (no fixed point within the
+    # rounds), the fixed point before it is the report, not a fallback
+    held = {"1": 5}
+    plans = [[300.0 - 10 * k] for k in range(8)]
+    layouts = {json.dumps(plans[0]): (held, []), json.dumps(plans[1]): ({"1": 5, "9": 7}, [])}
+    fake = CloseAgain(held, layouts, {json.dumps(p): q for p, q in zip(plans, plans[1:])}, plans[0])
+    growing = iter(range(10, 40))
+
+    def held_next(typ_name, root, inputs):
+        value = CloseAgain.held_next(fake, typ_name, root, inputs)
+        if inputs.get("figure-close") == json.dumps(plans[1]):
+            value["held"] = dict(json.loads(inputs["figure-held"]), **{str(next(growing)): 9})
+        return value
+
+    fake.held_next = held_next
+    pdf, found, rounds = close_again(monkeypatch, tmp_path, fake)
+    assert fake.closes.count(plans[1]) >= 1 and plans[2] not in fake.closes
+    assert pdf == f"pdf-{json.dumps(plans[0])}".encode()
+    assert not any(P.FELL_BACK in text for text in found)

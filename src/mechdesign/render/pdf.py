@@ -661,6 +661,7 @@ def _settle(typ_name: str, root: Path, timestamp: int, stem: str,
     let_go: set[str] = set()               # figures never to hold again
     settled = None                         # (pdf, warnings) of the last settled round
     close = None                           # the close plan, read once (report.typ: current-close)
+    fixed = None                           # (pdf, warnings) of a fixed point before close-again
     while True:
         found_next = _held_next(typ_name, root, _inputs(given, close))
         if found_next is None:
@@ -681,14 +682,26 @@ def _settle(typ_name: str, root: Path, timestamp: int, stem: str,
             let_go |= {k for k, t in given.items() if t in tables}
             held = {k: t for k, t in held.items() if k not in let_go}
             if rounds[-1]["settled"] and not far and held == given:
+                if fixed is None and _smaller(close, found_next.get("close-next")):
+                    # the close plan read again from this layout sets a chapter's last
+                    # figure smaller (templates/report.typ: close-again): once more with it,
+                    # the rounds going on from there; where they do not reach a fixed point
+                    # this one stands
+                    fixed = (pdf_bytes, found)
+                    close = found_next["close-next"]
+                    pdf_bytes, found = _compile_report(typ_name, root, timestamp, stem, _inputs(given, close))
+                    rounds.append({"held": given, "settled": not _unsettled(found), "close": "again"})
+                    continue
                 return pdf_bytes, found, rounds      # the fixed point
-        if held == given or len(rounds) > FIGURE_ROUNDS:
+        if held == given or len(rounds) > FIGURE_ROUNDS + (fixed is not None):
             break                                    # nothing new, or no round left
         given = held
         pdf_bytes, found = _compile_report(typ_name, root, timestamp, stem, _inputs(given, close))
         rounds.append({"held": given, "settled": not _unsettled(found)})
         if rounds[-1]["settled"]:
             settled = (pdf_bytes, found)
+    if fixed is not None:
+        return fixed[0], fixed[1], rounds
     fell = f"{FELL_BACK} in {len(rounds)} compilations"
     if settled is not None:
         return settled[0], settled[1] + [fell + "; set with the held figures of its last settled one"], rounds
@@ -696,6 +709,13 @@ def _settle(typ_name: str, root: Path, timestamp: int, stem: str,
         handle.write(source.replace(FIGURE_RULES_ON, FIGURE_RULES_OFF, 1))
     pdf_bytes, found = _compile_report(typ_name, root, timestamp, stem, {})
     return pdf_bytes, found + [fell + "; set without the figure rules"], rounds
+
+
+def _smaller(close: list | None, close_next) -> bool:
+    """Whether the close plan read again (templates/report.typ: close-again) sets a figure
+    smaller than the plan given."""
+    return (isinstance(close, list) and isinstance(close_next, list) and len(close_next) == len(close)
+            and any(b < a - 0.5 for a, b in zip(close, close_next)))
 
 
 def _inputs(given: dict | None, close: list | None) -> dict[str, str]:
