@@ -20,7 +20,7 @@ from mechdesign.core.polygons import image_name, kinematic_polygon
 from mechdesign.render.analysis_sheet import analysis_sheet
 from mechdesign.render.sheet import (SIZES, Arc, Circle, Dimension, Fill, Line, Polyline, Text,
                                      TitleInfo, boxes_overlap, text_width)
-from mechdesign.stages.polygons import chosen_positions, default_positions, entry, polygons
+from mechdesign.stages.polygons import chosen_positions, entry, polygons
 
 MACHINES = ["linkage_sixbar", "furnace_pusher", "die_cutter", "lockbeam", "shaper", "slotter", "press"]
 INFO = TitleInfo("机构运动及动力分析图", "课程设计", "张三", "2023001", "机械 1", "李老师",
@@ -45,7 +45,8 @@ def run(request):
     assert results[found.polygons.model_key] is found.model
     raw = results[f"{prefix}_raw"]
     # the polygons stage stored the polygons of the brief's (or the default) positions
-    assert list(found.polygons.positions) == chosen_positions(found.motion, b, found.forces)
+    assert list(found.polygons.positions) == chosen_positions(found.motion, b, found.forces,
+                                                              found.model.mechanism, raw)
     return request.param, (found.model, found.motion, raw, found.forces, found.flywheel), found
 
 
@@ -249,8 +250,10 @@ def test_sheet_has_no_overlaps_and_the_dxf_the_same_entities(run, tmp_path):
     s, scales = analysis_sheet(found, INFO, "zh")
     assert scales["length"] >= 1
     chosen = list(found.polygons.positions)
-    # the default positions (shaper: [4, 10]); designs/press.yaml names its own (session 40)
-    assert len(chosen) == 2 and (name == "press" or chosen == default_positions(k, forces))
+    # the default positions (shaper: [4, 10]; lockbeam [4, 10], its 5 and 11 being lines:
+    # tests/test_polygon_positions.py); designs/press.yaml names its own (session 40)
+    assert len(chosen) == 2 and (name == "press" or chosen == chosen_positions(k, None, forces,
+                                                                               model.mechanism, raw))
     n_groups = sum(1 for g in model.mechanism.groups if g.links)
     # the lock-beam's feed carries no load and has no masses: every reaction is zero, so the
     # sheet shows its kinematics only (no empty force cells, no flat M_b curve)

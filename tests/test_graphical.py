@@ -394,7 +394,7 @@ def test_crank_pin_vectors_are_drawn_at_their_given_value(mu):
 def test_crank_pin_speed_is_omega_l_at_every_position_and_not_compared(example_results, name,
                                                                         model_key):
     """At every polygon position the crank pin's |v| = |ω|·l and |a| = ω²·l of the brief's ω
-    and the crank's length (lockbeam: 0.0520 at position 5 and 0.0525 at position 11 for
+    and the crank's length (lockbeam: 0.0520 and 0.0525 at two positions for
     one 1.047 × 0.050 = 0.0524 m/s); the comparison with the analytic values lists results,
     not these given inputs."""
     r = example_results(name)

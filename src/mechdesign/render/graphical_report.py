@@ -903,6 +903,10 @@ def _forces(pos, lang: str, weights: dict[str, int] | None = None) -> list[dict]
                     is not None, "mu": grouped(_scale(fg.scale)), "moments": moments, "rows": rows,
                     "loads": loads, "sum": closing, "slider": slider, "slider_link": slider_link,
                     "n": n, "couple": couple,
+                    # whether a numeric moment equation follows (the shaper's link 5 has only
+                    # "no known force has a moment about E: F_R45^t = 0"): the lead-in
+                    # "Moment equations (…):" is said only then
+                    "equations": any(not m[2] for m in moments),
                     "mb": None if fg.balancing_torque is None else _numg(fg.balancing_torque),
                     # P_b = M_b/l, signed as M_b (counter-clockwise positive) in the equation and
                     # the text alike; its magnitude is the length drawn in the polygon

@@ -240,6 +240,7 @@ def graphical_stage(model_key: str = "model", prefix: str = "linkage") -> Stage:
         k = r[prefix]
         forces = r.get(f"{prefix}_forces")
         return graphical(r[model_key], k, r[f"{prefix}_raw"], forces,
-                         chosen_positions(k, r.get("brief"), forces))
+                         chosen_positions(k, r.get("brief"), forces, r[model_key].mechanism,
+                                          r[f"{prefix}_raw"]))
 
     return Stage(f"{prefix}_graphical", titles.pgettext("stage", "graphical method"), run)

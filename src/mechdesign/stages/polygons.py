@@ -46,12 +46,29 @@ def entry(k, label: str) -> int:
     return k.grid_size + [str(x) for x in k.positions.labels].index(str(label))
 
 
-def default_positions(k, forces=None) -> list[str]:
+#: a velocity polygon whose points spread across their main line by less than this part of
+#: their spread along it is a line (all vectors parallel: lockbeam's feed linkage at
+#: mid-stroke, positions 5 and 11, its guide bar in line with the crank)
+FLAT = 0.05
+
+
+def flatness(poly: Polygon) -> float:
+    """The spread of a polygon's points (the pole among them) across their main line over
+    their spread along it: 0 for points on one line."""
+    z = np.array([0j] + [complex(v) for v in poly.points.values()])
+    xy = np.column_stack([z.real - z.real.mean(), z.imag - z.imag.mean()])
+    sv = np.linalg.svd(xy, compute_uv=False)
+    return float(sv[-1] / sv[0]) if sv[0] > 0 else 0.0
+
+
+def default_positions(k, forces=None, flat=None) -> list[str]:
     """Regular positions nearest the middle of the working and of the return stroke; where
     the working resistance acts on less than 60 % of the working stroke (a die-cutter's
     last millimetres), the regular position in that part where the crank's balancing torque
     is largest (else the one nearest its middle), so that the force analysis meets the
-    working load (review39: the die-cutter's positions 4 and 10 both missed its 1000 kN)."""
+    working load (review39: the die-cutter's positions 4 and 10 both missed its 1000 kN).
+    ``flat(label)``: whether the velocity polygon there is a line; such a position gives way
+    to the next nearest regular one whose polygon is not (of two as near, the earlier)."""
     regular = [(lab, ph) for lab, ph, sp in zip(k.positions.labels, k.positions.phase,
                                                  k.positions.special) if not sp]
     w = k.working_span
@@ -77,19 +94,29 @@ def default_positions(k, forces=None) -> list[str]:
                 work_target = dict(regular)[max(under, key=lambda e: e[1])[0]]
     out = []
     for target in (work_target, (w + TWO_PI) / 2):
-        best = str(min(regular, key=lambda e: abs(e[1] - target))[0])
+        # (distances to 1e-9 rad: two positions as near, by the float's last bits too, keep
+        # their order)
+        near = [str(lab) for lab, ph in sorted(regular, key=lambda e: round(abs(e[1] - target), 9))]
+        best = near[0]
+        if flat is not None and flat(best):
+            best = next((lab for lab in near if not flat(lab)), best)
         if best not in out:
             out.append(best)
     return out
 
 
-def chosen_positions(k, brief=None, forces=None) -> list[str]:
-    """The brief's ``sheets.polygon_positions`` (validated with the brief) or the defaults."""
+def chosen_positions(k, brief=None, forces=None, mech=None, raw=None) -> list[str]:
+    """The brief's ``sheets.polygon_positions`` (validated with the brief) or the defaults
+    (given the mechanism and its motion, none whose velocity polygon is a line)."""
     settings = getattr(brief, "sheets", None)
     chosen = getattr(settings, "polygon_positions", None)
     if chosen:
         return [resolve_label(k, p, f"sheets.polygon_positions[{i}]") for i, p in enumerate(chosen)]
-    return default_positions(k, forces)
+    flat = None
+    if mech is not None and raw is not None:
+        def flat(label: str) -> bool:
+            return flatness(kinematic_polygon(mech, raw, entry(k, label), label, "velocity")) < FLAT
+    return default_positions(k, forces, flat)
 
 
 def resolve_label(k, asked, field: str) -> str:
@@ -146,7 +173,8 @@ def polygon_stage(model_key: str = "model", prefix: str = "linkage") -> Stage:
         k = r[prefix]
         forces = r.get(f"{prefix}_forces")
         found = linkage_polygons(r[model_key], k, r[f"{prefix}_raw"], forces,
-                                 chosen_positions(k, r.get("brief"), forces))
+                                 chosen_positions(k, r.get("brief"), forces,
+                                                  r[model_key].mechanism, r[f"{prefix}_raw"]))
         return replace(found, model_key=model_key, prefix=prefix)
 
     return Stage(f"{prefix}_polygons", titles.pgettext("stage", "polygons"), run)
