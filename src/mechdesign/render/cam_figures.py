@@ -69,6 +69,26 @@ def _interior(delta_deg, start: float, end: float, tol: float = 1e-6) -> np.ndar
     return (rel > tol) & (rel < span - tol)
 
 
+def stagger_names(texts, gap_px: float = 3.0) -> None:
+    """Raise a name above the panel by a row where it would run into the one before it
+    (lockbeam's bending cam: the 6° far dwell's name between "rise" and "return" printed
+    "risefar dwellreturn"); measured on the texts as drawn."""
+    if not texts:
+        return
+    renderer = texts[0].figure.canvas.get_renderer()
+    ends: list[float] = []                       # the right end of the last name of each row
+    for t in sorted(texts, key=lambda t: t.get_position()[0]):
+        box = t.get_window_extent(renderer)
+        row = next((i for i, e in enumerate(ends) if box.x0 >= e + gap_px), len(ends))
+        if row == len(ends):
+            ends.append(box.x1)
+        else:
+            ends[row] = box.x1
+        if row:
+            x, y = t.get_position()
+            t.set_position((x, y + 0.11 * row))
+
+
 @cached
 def svaj(path: Path, lang: str, delta_deg, series, ylabels, segments, impulses=()):
     """Stacked displacement, velocity, acceleration and jerk against the cam angle.
@@ -106,9 +126,10 @@ def svaj(path: Path, lang: str, delta_deg, series, ylabels, segments, impulses=(
             else:
                 ax.annotate("", xy=(x, tip), xytext=(x, 0), arrowprops=dict(arrowstyle="->", color="C3", lw=1.0))
                 ax.text(x + 3, 0.75 * tip, "∞" if sign > 0 else "−∞", color="C3", fontsize=7)
-        for start, end, kind, name in segments:
-            axes[0].text((start + end) / 2, 1.02, name, transform=axes[0].get_xaxis_transform(),
-                         ha="center", va="bottom", fontsize=8, color="0.3")
+        names = [axes[0].text((start + end) / 2, 1.02, name, transform=axes[0].get_xaxis_transform(),
+                              ha="center", va="bottom", fontsize=8, color="0.3")
+                 for start, end, kind, name in segments]
+        stagger_names(names)
         axes[-1].set_xlabel(lab["delta"])
 
 

@@ -166,6 +166,7 @@ def save_png(fig, path: Path) -> None:
     call = _call_key.get()
     italic_symbols(fig)
     upright_subscript_words(fig)
+    fit_ylabels(fig)
 
     def write():
         narrow_unit_dots(fig)
@@ -187,6 +188,44 @@ def save_png(fig, path: Path) -> None:
         cache.store_file(call, Path(path))
 
     save(write, Path(path).name)
+
+
+def _split_label(text: str) -> str | None:
+    """``text`` in two lines at the word space nearest its middle outside mathtext, or None
+    where it has no such space."""
+    inside, spaces = False, []
+    for i, c in enumerate(text):
+        if c == "$":
+            inside = not inside
+        elif c == " " and not inside:
+            spaces.append(i)
+    if not spaces:
+        return None
+    i = min(spaces, key=lambda k: abs(k - len(text) / 2))
+    return text[:i] + "\n" + text[i + 1:]
+
+
+def fit_ylabels(fig, room: float = 0.98) -> None:
+    """A y-axis label longer than its panel is high (a stacked panel's "angular
+    acceleration α (rad/s²)", tgb Fig. 2 and lockbeam Fig. 11: it ran into the label of the
+    panel above) is set in two lines, broken at a word space; where it is still longer (or has
+    no space), in a smaller size down to 6 pt. Measured on the texts as drawn."""
+    renderer = None
+    for ax in fig.get_axes():
+        label = ax.yaxis.label
+        if not label.get_text() or not label.get_visible():
+            continue
+        renderer = renderer or fig.canvas.get_renderer()
+        limit = room * ax.get_window_extent(renderer).height
+        if label.get_window_extent(renderer).height <= limit:
+            continue
+        two = _split_label(label.get_text())
+        if two is not None:
+            label.set_text(two)
+        size = label.get_fontsize()
+        while label.get_window_extent(renderer).height > limit and size > 6:
+            size = max(6.0, size - 0.5)
+            label.set_fontsize(size)
 
 
 _WORD_SUBSCRIPT = re.compile(r"_\{(min|max)\}")
