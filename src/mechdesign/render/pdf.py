@@ -652,7 +652,10 @@ def _settle(typ_name: str, root: Path, timestamp: int, stem: str,
     Either is reported as a warning, FELL_BACK. Each round is a dict: held (given), settled.
     Each round is also given the chapters' close plan read from the first compilation
     (templates/report.typ: current-close, `figure-close`), so that it stands in every round
-    (textbook_guide_bar zh: planned from typst's third pass, it keeps the fifth from settling)."""
+    (textbook_guide_bar zh: planned from typst's third pass, it keeps the fifth from settling).
+    At the first fixed point the close plan is read once more from its layout (close-again:
+    the held figures moved the chapters' ends; die_cutter en); where it sets a figure smaller,
+    the rounds go on with it, and where they reach no fixed point the first one stands."""
     pdf_bytes, found = _compile_report(typ_name, root, timestamp, stem, {})
     rounds = [{"held": None, "settled": not _unsettled(found)}]
     if rounds[0]["settled"] or FIGURE_RULES_ON not in source:
@@ -660,7 +663,9 @@ def _settle(typ_name: str, root: Path, timestamp: int, stem: str,
     given = None                           # the held figures of the last round
     let_go: set[str] = set()               # figures never to hold again
     settled = None                         # (pdf, warnings) of the last settled round
-    close = None                           # the close plan, read once (report.typ: current-close)
+    close = None                           # the close plan, read from the first compilation
+                                           # (report.typ: current-close) and once more at the
+                                           # first fixed point (close-again)
     fixed = None                           # (pdf, warnings) of a fixed point before close-again
     while True:
         found_next = _held_next(typ_name, root, _inputs(given, close))
