@@ -40,6 +40,9 @@ RENDER_MAY_IMPORT = {
     ("mechdesign.core.cycle", "resolve"): "looks a phase up in the diagram by its reference "
                                           "(actuator, state, occurrence): a look-up, no computation",
     ("mechdesign.core.strength", "COURSE_SCALE"): "a constant of the strength checks",
+    ("mechdesign.core.polygons", "spread"): "the extent of a set of drawn points along and across "
+                                            "their main line (np.ptp on a rotated copy): the "
+                                            "shared measure of a flat polygon, no result",
     ("mechdesign.stages.cam", "CAM_CHECK_NAMES"): "names of the self-checks (zh, en)",
     ("mechdesign.stages.drive", "DRIVE_CHECK_NAMES"): "names of the self-checks (zh, en)",
     ("mechdesign.stages.drive", "shaft_numeral"): "the shafts' numbering (0, Ⅰ, Ⅱ …): a look-up "

@@ -22,6 +22,8 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field, replace
 
+import numpy as np
+
 
 
 @dataclass(frozen=True)
@@ -68,6 +70,19 @@ class Polygon:
 
     def vector(self, name: str) -> Vector:
         return next(v for v in self.vectors if v.name == name)
+
+
+def spread(points) -> tuple[float, float]:
+    """(length, width) of a set of points (complex): their extent along their main direction
+    and across it (0 width: the points lie on one line, as a polygon whose vectors are all
+    parallel)."""
+    z = np.asarray(list(points), dtype=complex)
+    if len(z) < 2:
+        return 0.0, 0.0
+    xy = np.column_stack([z.real, z.imag])
+    xy = xy - xy.mean(axis=0)
+    _u, _sv, vt = np.linalg.svd(xy, full_matrices=False)
+    return float(np.ptp(xy @ vt[0])), float(np.ptp(xy @ vt[1]))
 
 
 def image_name(point: str, prime: str = "") -> str:

@@ -18,7 +18,7 @@ import re
 
 import numpy as np
 
-from ..core.polygons import Polygon
+from ..core.polygons import Polygon, spread
 from . import fmt
 from .labels import LabelTable, pgettext, sheet_names, sheet_point
 from .sheet import (DIM_GAP, GRID_WEIGHT, Dimension, Fill, LabelPlacer, Line, Text, _near_segment,
@@ -393,10 +393,7 @@ def _flat_note(pts, lab: dict) -> str | None:
     across its length as a share of the length, or None for a polygon that is not flat."""
     if len(pts) < 3:
         return None
-    xy = np.column_stack([pts.real, pts.imag])
-    xy = xy - xy.mean(axis=0)
-    _u, _sv, vt = np.linalg.svd(xy, full_matrices=False)
-    length, width = np.ptp(xy @ vt[0]), np.ptp(xy @ vt[1])
+    length, width = spread(pts)
     if not length > 0 or width >= FLAT * length:
         return None
     if width < 1e-6 * length:

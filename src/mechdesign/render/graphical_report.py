@@ -17,6 +17,7 @@ from pathlib import Path
 import numpy as np
 
 from . import figures as fig
+from ..core.polygons import spread
 from ..i18n import N_, tr
 from .fmt import GROUP, exact, f, factor_for, gives, grouped, mpl_text, sci, sci_tex, sig, tex_name
 from .label_layout import Label, place
@@ -567,12 +568,8 @@ def _flatness(zs) -> float | None:
     """The width [mm] of a nearly flat polygon (across its longest direction), else None."""
     if len(zs) < 3:
         return None
-    pts = np.array([[z.real, z.imag] for z in zs])
-    pts = pts - pts.mean(axis=0)
-    _u, sv, vt = np.linalg.svd(pts, full_matrices=False)
-    along, across = pts @ vt[0], pts @ vt[1]
-    length, width = np.ptp(along), np.ptp(across)
-    return float(width) if length > 0 and width < FLAT * length else None
+    length, width = spread(zs)
+    return width if length > 0 and width < FLAT * length else None
 
 
 def graphical_figures(results: dict, fig_dir: Path, lang: str) -> dict[str, str]:

@@ -17,7 +17,7 @@ from ..core import graphical as gr
 from ..core.fields import q
 from ..pipeline import Stage
 from . import titles
-from .polygons import chosen_positions, entry
+from .polygons import entry, stage_positions
 
 #: Target length of the largest vector of a polygon [mm] and of the kinematic diagram.
 POLYGON_MM = 80.0
@@ -240,7 +240,6 @@ def graphical_stage(model_key: str = "model", prefix: str = "linkage") -> Stage:
         k = r[prefix]
         forces = r.get(f"{prefix}_forces")
         return graphical(r[model_key], k, r[f"{prefix}_raw"], forces,
-                         chosen_positions(k, r.get("brief"), forces, r[model_key].mechanism,
-                                          r[f"{prefix}_raw"]))
+                         stage_positions(r, model_key, prefix))
 
     return Stage(f"{prefix}_graphical", titles.pgettext("stage", "graphical method"), run)

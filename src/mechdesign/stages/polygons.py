@@ -17,7 +17,7 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
-from ..core.polygons import Polygon, kinematic_polygon, linkage_force_polygons
+from ..core.polygons import Polygon, kinematic_polygon, linkage_force_polygons, spread
 from ..i18n import N_
 from ..pipeline import Stage
 from . import titles
@@ -53,12 +53,11 @@ FLAT = 0.05
 
 
 def flatness(poly: Polygon) -> float:
-    """The spread of a polygon's points (the pole among them) across their main line over
-    their spread along it: 0 for points on one line."""
-    z = np.array([0j] + [complex(v) for v in poly.points.values()])
-    xy = np.column_stack([z.real - z.real.mean(), z.imag - z.imag.mean()])
-    sv = np.linalg.svd(xy, compute_uv=False)
-    return float(sv[-1] / sv[0]) if sv[0] > 0 else 0.0
+    """A polygon's width across its main line over its length along it (core/polygons.spread,
+    the measure of the report's and the sheet's "nearly flat" notes), the pole among its
+    points: 0 for points on one line."""
+    length, width = spread([0j, *poly.points.values()])
+    return width / length if length > 0 else 0.0
 
 
 def default_positions(k, forces=None, flat=None) -> list[str]:
@@ -119,6 +118,13 @@ def chosen_positions(k, brief=None, forces=None, mech=None, raw=None) -> list[st
     return default_positions(k, forces, flat)
 
 
+def stage_positions(r: dict, model_key: str, prefix: str) -> list[str]:
+    """The polygon positions of a pipeline's results ``r`` (the polygons and graphical-method
+    stages draw the same ones)."""
+    return chosen_positions(r[prefix], r.get("brief"), r.get(f"{prefix}_forces"),
+                            r[model_key].mechanism, r[f"{prefix}_raw"])
+
+
 def resolve_label(k, asked, field: str) -> str:
     """The position label that ``asked`` names: a label (4, "4'", "4′", "φ45") or what
     the brief's analysis asked for (an event code, φ45); else a design error at ``field``
@@ -173,8 +179,7 @@ def polygon_stage(model_key: str = "model", prefix: str = "linkage") -> Stage:
         k = r[prefix]
         forces = r.get(f"{prefix}_forces")
         found = linkage_polygons(r[model_key], k, r[f"{prefix}_raw"], forces,
-                                 chosen_positions(k, r.get("brief"), forces,
-                                                  r[model_key].mechanism, r[f"{prefix}_raw"]))
+                                 stage_positions(r, model_key, prefix))
         return replace(found, model_key=model_key, prefix=prefix)
 
     return Stage(f"{prefix}_polygons", titles.pgettext("stage", "polygons"), run)
