@@ -19,7 +19,7 @@ import numpy as np
 from . import figures as fig
 from ..core.polygons import spread
 from ..i18n import N_, tr
-from .fmt import GROUP, exact, f, factor_for, gives, grouped, mpl_text, sci, sci_tex, sig, tex_name
+from .fmt import GROUP, exact, f, factor_for, force_unit, gives, grouped, mpl_text, sci, sci_tex, sig, tex_name
 from .label_layout import Label, place
 from .labels import LabelTable, mpl_point, pgettext, point_tex, tex_names
 
@@ -837,9 +837,54 @@ def _force_sections(doc, lang: str) -> list[list[dict]]:
     weight of no extra decimals prints by :func:`_numg` in ``known``)."""
     first = [_forces(pos, lang) for pos in doc.positions]
     weights = _weight_decimals(zip(doc.positions, first))
-    if not any(weights.values()):
-        return first
-    return [_forces(pos, lang, weights) for pos in doc.positions]
+    if any(weights.values()):
+        first = [_forces(pos, lang, weights) for pos in doc.positions]
+    for pos, forces in zip(doc.positions, first):
+        _in_force_unit(pos, forces)
+    return first
+
+
+def force_divisor(pos) -> tuple[float, str]:
+    """The unit of the forces a position's force section prints (render/fmt.force_unit):
+    kN where its largest force — a load, a side of a force polygon, a compared reaction
+    (graphical or analytic) — reaches a million newtons (the die-cutter's cutting force of
+    1000 kN), else N."""
+    peak = [abs(ld.value) for fg in pos.forces for lds in fg.loads.values() for ld in lds]
+    peak += [abs(v.read) for fg in pos.forces for v in fg.vectors]
+    peak += [abs(x) for c in pos.comparison if c.unit == "N" for x in (c.graphical, c.analytic)]
+    return force_unit(max(peak, default=0.0))
+
+
+def kn_text(n_text: str, value: float) -> str:
+    """A force printed in N (``n_text``, the digits its N text has) written in kN: 3 or 4
+    significant digits as that text has them (245.3 N → 0.2453, 120 N → 0.120, 1662.5 N →
+    1.663, 1.000 × 10⁶ N → 1000, 960 000 N → 960), grouped as text is; no power of ten."""
+    digits = n_text.replace(GROUP, "").replace(" ", "").lstrip("-−")
+    if "×" in digits or "times" in digits:
+        n = 4
+    else:
+        body = digits.replace(".", "").lstrip("0")
+        n = len(body if "." in digits else body.rstrip("0"))
+    return sig(value / 1e3, min(max(n, 3), 4))
+
+
+def _in_force_unit(pos, forces: list[dict]) -> None:
+    """A position whose largest force reaches a million newtons (:func:`force_divisor`)
+    writes its known loads and its force polygons' values in kN (their lengths with the
+    scale in kN/mm); its moment equations keep N (their text says so). Every group's
+    ``unit`` is set."""
+    div, unit = force_divisor(pos)
+    for fc, fg in zip(forces, pos.forces):
+        fc["unit"] = unit
+        if div == 1.0:
+            continue
+        given = [ld for lds in fg.loads.values() for ld in lds if abs(ld.value) > 0]
+        fc["loads"] = [[a, b, kn_text(t, abs(ld.value))] for (a, b, t), ld in zip(fc["loads"], given)]
+        fc["known"] = [(a, b, kn_text(t, abs(ld.value))) for (a, b, t), ld in zip(fc["known"], given)]
+        for row, v in zip(fc["rows"], _sides(fg)):
+            row[3] = kn_text(row[3], v.read)
+            if v.known and row[2] != "—":
+                row[2] = _len(v.length, fg.scale / div, row[3])
 
 
 def _forces(pos, lang: str, weights: dict[str, int] | None = None) -> list[dict]:
@@ -1136,6 +1181,7 @@ def _compare(pos, lang: str, printed: dict[str, str] | None = None) -> list[list
     value, one number: F_R45 = 66.5 mm × 25 N/mm = 1662.5 N in both tables, issue 19)."""
     printed = printed or {}
     rows = []
+    div, force = force_divisor(pos)
     for c in pos.comparison:
         q = c.quantity
         name = comparison_name(q)
@@ -1143,6 +1189,13 @@ def _compare(pos, lang: str, printed: dict[str, str] | None = None) -> list[list
         mark = _("PASS") if c.passed else _.pgettext("graphical", "beyond")
         shown = printed.get(q, printed.get(_pair(q) or "", _numg(c.graphical)))
         analytic = _numg(c.analytic)
+        unit = c.unit
+        if c.unit == "N" and div != 1.0:
+            # the position's forces in kN (its polygon tables): the compared forces too
+            unit = force
+            if q not in printed and (_pair(q) or "") not in printed:
+                shown = kn_text(shown, c.graphical)
+            analytic = kn_text(analytic, c.analytic)
         # a value smaller than the drawing's resolution has no meaningful relative error; the
         # difference is the printed values' (a teacher recomputes it from the row: "1.17 |
         # 1.17 | 0.0", not the 0.4 of the unrounded values; review38), a value with a power
@@ -1154,7 +1207,7 @@ def _compare(pos, lang: str, printed: dict[str, str] | None = None) -> list[list
         # the allowance in % of the analytic value, like the difference beside it (an absolute
         # allowance next to a difference in % read as a false PASS: page review 41)
         allowed = "—" if small else f(100 * c.tolerance / abs(c.analytic), 1)
-        rows.append([name, c.unit, shown, analytic, diff, allowed, mark])
+        rows.append([name, unit, shown, analytic, diff, allowed, mark])
     return rows
 
 
@@ -1200,7 +1253,7 @@ def graphical_context(results: dict, figures: dict, lang: str) -> list[dict]:
                 "vel": _kin(pos.velocity, lang, "m/s", r"\omega", links, still),
                 "acc": _kin(pos.acceleration, lang, "m/s²", r"\alpha", links, still),
                 "fig": figures.get(f"{key}_kin", ""), "given": given,
-                "forces": forces, "crank": crank,
+                "forces": forces, "crank": crank, "force_unit": force_divisor(pos)[1],
                 "mb": None if pos.balancing_torque is None else _numg(pos.balancing_torque),
                 "compare": (rows := _compare(pos, lang, _printed(pos, forces))),
                 "caption": _compare_caption(rows, str(pos.label).replace("'", "′"), lang),
