@@ -103,8 +103,22 @@ def test_incomplete_gear_pair_touches_and_drives_the_sprocket(dxf_sheet):
     assert tip == pytest.approx(sorted([sector, 360.0 - sector]))
 
 
-def test_incomplete_gear_sector_turned_to_position_1(dxf_sheet, example_results):
-    """At position 1 (shaft angle φ = 0 from the platen's bottom) the driver, turning
+def _drawn_phi(example_results) -> float:
+    """[°] The shaft angle of the position the diagram is drawn at: position p lies
+    (p − 1) × the brief's position step from position 1 (φ = 0, the platen's bottom). Position 1
+    is the folded extreme position (the coupler over the crank), so the diagram is drawn at the
+    graphical method's first position (page review 47)."""
+    from mechdesign.render import kinematic_sheet as ks
+    from mechdesign.render.sheets import linkage_results
+
+    r = example_results("die_cutter")
+    label = ks.diagram_position(linkage_results(r), r["brief"])
+    assert label != "1"
+    return (int(label) - 1) * BRIEF["analysis"]["position_step_deg"]
+
+
+def test_incomplete_gear_sector_turned_to_the_drawn_position(dxf_sheet, example_results):
+    """At the drawn position (shaft angle φ from the platen's bottom) the driver, turning
     clockwise (press.crank_rotation: cw) from its meshing start φ_s (the feed stage's
     placement), has turned φ − φ_s past the contact point: the toothed sector's leading end
     lies (φ − φ_s) mod 360° clockwise from the direction O1 → O2, its trailing end
@@ -113,7 +127,7 @@ def test_incomplete_gear_sector_turned_to_position_1(dxf_sheet, example_results)
     g = BRIEF["incomplete_gear"]
     assert BRIEF["press"]["crank_rotation"] == "cw"
     start = np.degrees(example_results("die_cutter")["feed"].gear.motion_start)
-    turned = (0.0 - start) % 360.0
+    turned = (_drawn_phi(example_results) - start) % 360.0
     sector = 360.0 * g["teeth_present"] / g["driver_teeth_full"]
     m = g["module_mm"]
     r1, r2 = m * g["driver_teeth_full"] / 2 / n, m * g["driven_teeth"] / 2 / n
@@ -155,10 +169,10 @@ def test_gripper_cam_profile_spans_base_to_lift(dxf_sheet, example_results):
                if abs(e.dxf.radius - rr / n) < TOL]
     above = [z for z in rollers if abs(z.real - o.real) < 1e-6 and r0 - 1e-6 <= (z.imag - o.imag) * n <= r0 + h + 1e-6]
     assert len(above) == 1
-    # at position 1 the cam has turned φ − φ_g = −φ_g (φ_g: the cycle's gripper start) into
+    # at the drawn position the cam has turned φ − φ_g (φ_g: the cycle's gripper start) into
     # its programme: the lift there by the programme's 3-4-5 laws, above the base circle
     phi_g = np.degrees(example_results("die_cutter")["cycle"].gripper_start)
-    delta = (0.0 - phi_g) % 360.0
+    delta = (_drawn_phi(example_results) - phi_g) % 360.0
     want = r0 + _programme_lift(cam["programme"], delta, h)
     assert (above[0].imag - o.imag) * n == pytest.approx(want, abs=1e-6 * r0)
 

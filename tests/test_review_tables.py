@@ -53,13 +53,14 @@ def test_shaper_verdicts_come_from_the_checks(example_results):
 
 @pytest.mark.parametrize("lang", ["zh", "en"])
 def test_the_layers_named_in_the_reports_language(lang):
-    """The drawing-sheets section (every report with sheets includes it)."""
+    """The drawing-sheets section (every report with sheets includes it), where the run
+    wrote DXF files (only then are their layers described)."""
     from mechdesign.render.report import render_markdown, sheets_context, template_dir
     from mechdesign.render.summary import Citations
 
     sheet = {"title": "A1", "size": "A1", "scale": "1:2", "files": "x.pdf", "preview": "", "label": "s"}
-    md = render_markdown("sheets_section.md.j2", {**sheets_context([sheet], lang), "cite": Citations(lang)},
-                         template_dir(None), lang)
+    md = render_markdown("sheets_section.md.j2", {**sheets_context([sheet], lang, dxf=True),
+                                                  "cite": Citations(lang)}, template_dir(None), lang)
     for layer in LAYERS:
         found = re.findall(rf"(.)({layer})(.)", md)
         assert found, layer

@@ -184,11 +184,11 @@ def test_the_filter_joins_numbers_units_and_relations(tmp_path):
     typ = _filtered(tmp_path,
         "$\\alpha_5$ = -4.27 rad/s², 5 steps, $h = 14.9$ mm, 1.4 × 10⁻¹⁴ mm, "
         "转速 n = 60.00 r/min，循环 2 crank，$G_6$（构件 6）= 1962 N\n\n```\nx = 5 mm\n```\n")
-    assert "$alpha_5$~=~-4.27~rad/s²" in typ      # the symbol stays with its "=" too
+    assert "$alpha_5$~=~-4.27~#box[rad/s²,];" in typ   # the symbol stays with its "=" too
     assert "5 steps" in typ and "2 crank" in typ
     assert "#box($h = 14.9$);~mm" in typ
     assert "1.4~×~10⁻¹⁴~mm" in typ
-    assert "$n$~=~60.00~r/min" in typ   # the symbol set italic too
+    assert "$n$~=~60.00~#box[r/min，];循环" in typ   # the symbol set italic too
     assert "（构件 6）\u2060=~1962~N" in typ   # a relation ending a word: joined on both sides
     assert "x = 5 mm" in typ                 # a code block as written
 
@@ -312,3 +312,16 @@ def test_a_unit_after_a_value_before_a_relation_stays_a_unit(tmp_path):
     assert "N·m~≤" in typ and "N·$m$" not in typ, typ
     assert "000~h~→" in typ and "$h$" not in typ, typ
     assert "$K$~=~1.05" in typ                  # a symbol before its relation still italic
+
+
+def test_a_unit_with_a_solidus_is_not_parted_at_its_slash(tmp_path):
+    """typst may end a line after the "/" of a unit ("𝜔5 = 0 rad/" | "s;": lockbeam en p.26,
+    page review 47): a unit word with a solidus is set in a box in the PDF (its text stays
+    "rad/s"); a word with a slash that is no unit ("and/or", "d/D") is left as written, and so
+    are formulas and code."""
+    typ = _filtered(tmp_path, "ω5 = 0 rad/s; q in N/mm and (mm/s²), kN/mm² here, and/or d/D, "
+                              "$v = 3$ m/s. `rad/s`\n")
+    assert "#box[rad/s;];" in typ and "#box[N/mm];" in typ and "#box[\\(mm/s²),];" in typ
+    assert "#box[kN/mm²];" in typ and "#box[m/s.];" in typ
+    assert "and/or" in typ and "#box[and" not in typ and "#box[d/D" not in typ
+    assert "`rad/s`" in typ or "raw(\"rad/s\")" in typ

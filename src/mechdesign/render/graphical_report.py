@@ -19,6 +19,7 @@ import numpy as np
 from . import figures as fig
 from ..core.polygons import spread
 from ..i18n import N_, tr
+from ..numbers import significant
 from .fmt import GROUP, exact, f, factor_for, force_unit, gives, grouped, mpl_text, sci, sci_tex, sig, tex_name
 from .label_layout import Label, place
 from .labels import LabelTable, mpl_point, pgettext, point_tex, tex_names
@@ -1149,6 +1150,24 @@ def _printed_difference(graphical: str, analytic: str, exact: float) -> float:
     return (g - a) / abs(a)
 
 
+def _decimals(text: str) -> int:
+    """The decimals a printed number has ("123.5" → 1, "1 662" → 0)."""
+    return len(text.partition(".")[2]) if "." in text else 0
+
+
+def _beside(analytic: float, text: str, graphical: str) -> str:
+    """The analytic value of a comparison row (the reference) with at least the decimals of
+    the graphical reading beside it, and one more where that reading has fewer than 4
+    significant digits (at most 4 decimals), so that the difference computed from the printed
+    pair is close to the values' (tgb's F_R23: 123.5 against "123" read 0.4 %, against 123.2
+    0.2 %; ω4 1.99 against "2.00" −0.5 %, against 1.996 −0.3 %; page review 47). ``text`` is the row's value as it prints otherwise (in the row's unit; one with a
+    power of ten stays so); ``analytic`` the value in that unit."""
+    if text == "0" or any(m in t for m in ("×", "times") for t in (text, graphical)):
+        return text
+    d = min(4, _decimals(graphical) + (significant(graphical) < 4))
+    return text if _decimals(text) >= d else grouped(f(analytic, d))
+
+
 def _compare_caption(rows: list[list[str]], label: str, lang: str) -> str:
     """The comparison table's caption: how the allowance is set, and the sign of M_b where
     the table has it."""
@@ -1189,13 +1208,14 @@ def _compare(pos, lang: str, printed: dict[str, str] | None = None) -> list[list
         mark = _("PASS") if c.passed else _.pgettext("graphical", "beyond")
         shown = printed.get(q, printed.get(_pair(q) or "", _numg(c.graphical)))
         analytic = _numg(c.analytic)
-        unit = c.unit
+        unit, scale = c.unit, 1.0
         if c.unit == "N" and div != 1.0:
             # the position's forces in kN (its polygon tables): the compared forces too
-            unit = force
+            unit, scale = force, div
             if q not in printed and (_pair(q) or "") not in printed:
                 shown = kn_text(shown, c.graphical)
             analytic = kn_text(analytic, c.analytic)
+        analytic = _beside(c.analytic / scale, analytic, shown)
         # a value smaller than the drawing's resolution has no meaningful relative error; the
         # difference is the printed values' (a teacher recomputes it from the row: "1.17 |
         # 1.17 | 0.0", not the 0.4 of the unrounded values; review38), a value with a power

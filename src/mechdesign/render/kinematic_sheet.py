@@ -279,14 +279,49 @@ def linkage_positions(found, label: str = "1") -> int:
     return labels.index(str(label)) if str(label) in labels else 0
 
 
+#: [rad] a link through the crank's tip that turns back along the crank within this angle
+#: covers it on the drawing
+FOLDED = np.radians(5.0)
+
+
+def crank_covered(found, label: str = "1") -> bool:
+    """Whether at position ``label`` a link pinned to the crank's tip lies back along the
+    crank (the folded extreme position: the coupler runs over the crank and its pivot, so
+    the crank cannot be seen on the diagram; linkage_sixbar's position 1, page review 47)."""
+    from ..stages.linkage import link_members
+
+    model, k = found.model, found.motion
+    crank = model.crank
+    i = k.grid_size + linkage_positions(found, label)
+    pts = {name: complex(np.asarray(z)[i]) for name, z in k.points.items()}
+    pivot = complex(model.mechanism.frame_points[crank.pivot])
+    tip = pts.get(crank.tip)
+    if tip is None:
+        return False
+    back = pivot - tip
+    members, _sliders = link_members(model.mechanism)
+    for link, names in members.items():
+        if link == crank.link or crank.tip not in names:
+            continue
+        for name in names:
+            z = pts.get(name)
+            if z is None or abs(z - tip) < 1e-9 * max(abs(back), 1e-12):
+                continue
+            if abs(np.angle((z - tip) / back)) < FOLDED:
+                return True
+    return False
+
+
 def diagram_position(found, brief=None) -> str:
     """The position a linkage's diagram is drawn at: the first of the brief's
     ``sheets.polygon_positions`` when it names them (the position the graphical method and
-    the A1 sheet work at), else position 1."""
+    the A1 sheet work at), else position 1 — unless the crank lies under a link there
+    (:func:`crank_covered`), then the graphical method's first position."""
     settings = getattr(brief, "sheets", None)
     chosen = getattr(settings, "polygon_positions", None)
-    if chosen and getattr(found, "polygons", None) is not None and found.polygons.positions:
-        return str(found.polygons.positions[0])
+    polygons = getattr(found, "polygons", None)
+    if polygons is not None and polygons.positions and (chosen or crank_covered(found, "1")):
+        return str(polygons.positions[0])
     return "1"
 
 
@@ -533,6 +568,23 @@ def lockbeam_layout(results, found, phi: float = 0.0) -> dict:
 
 
 
+def free_side(view, z, neighbours, prefer: float = -np.pi / 2) -> float:
+    """[rad, paper] The direction for a frame symbol at the pivot ``z``: of the directions
+    in 15° steps the one farthest in angle from every neighbour (the points whose links or
+    parts meet at the pivot), the usual one below the pivot (``prefer``) where it is clear
+    by 45° or more."""
+    p = view.p(z)
+    away = [np.angle(view.p(q) - p) for q in neighbours if abs(view.p(q) - p) > 1e-9]
+
+    def clearance(a: float) -> float:
+        return min((abs(np.angle(np.exp(1j * (a - b)))) for b in away), default=np.pi)
+
+    if clearance(prefer) >= np.radians(45.0):
+        return prefer
+    steps = prefer + np.radians(15.0) * np.arange(24)
+    return float(max(steps, key=lambda a: (round(clearance(a), 6), -abs(np.angle(np.exp(1j * (a - prefer)))))))
+
+
 def _rod_guide(view, placer, x: float, yc: float) -> None:
     """A translating follower's guide: two hatched walls 2.5 mm (paper) either side of the
     rod at x, 14 units long about yc, kept clear of labels."""
@@ -594,9 +646,12 @@ def lockbeam_diagram(results, found, info: TitleInfo, lang: str) -> Sheet:
         for a, b in ((f["G"], f["B"]), (f["B0"], f["B"])):
             view.line(a, b, "OUTLINE")
             placer.block_segment(view.p(a), view.p(b), 1.5)
-        for z in (f["G0"], f["B0"]):
-            ground(view, z, 7.0)
-            placer.block(view.p(z) - 3.5j, 5.0)
+        for z, away in ((f["G0"], (bd["C"], f["G"], o)), (f["B0"], (f["B"],))):
+            # the frame symbol on the side free of the links at the pivot (G0's below it ran
+            # across the rocker, the roller C and the cam: page review 47)
+            angle = free_side(view, z, away)
+            ground(view, z, 7.0, angle)
+            placer.block(view.p(z) + 3.5 * np.exp(1j * angle), 5.0)
         for z in (bd["C"], f["G"], f["B"]):
             pin(view, z)
             placer.block(view.p(z), 1.5)

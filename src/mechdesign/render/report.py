@@ -225,7 +225,8 @@ def write_report(out_dir: Path, *, machine: str, lang: str, formats: tuple[str, 
                 figures = make_figures(fig_dir)
                 sheets = collect_sheets()
                 ctx = make_context(figures)
-                ctx.update(sheets_context([_sheet_row(sh, lang) for sh in sheets], lang))
+                ctx.update(sheets_context([_sheet_row(sh, lang) for sh in sheets], lang,
+                                          dxf=any(sh.dxf for sh in sheets)))
                 from .summary import Citations, handin_context
 
                 ctx.update(handin_context(machine, document, ctx, lang, meta_text(meta, "title", lang),
@@ -276,10 +277,11 @@ def write_report(out_dir: Path, *, machine: str, lang: str, formats: tuple[str, 
         shutil.rmtree(staging, ignore_errors=True)
 
 
-def sheets_context(rows: list[dict], lang: str) -> dict:
+def sheets_context(rows: list[dict], lang: str, dxf: bool = False) -> dict:
     """The sheets chapter's context: the sheets' rows (:func:`_sheet_row`), how the A1
-    analysis sheet's polygons are scaled (no force polygons on a kinematics-only sheet), and
-    the previews' figure references."""
+    analysis sheet's polygons are scaled (no force polygons on a kinematics-only sheet), the
+    previews' figure references, and whether the run wrote the sheets as DXF too (``dxf``:
+    the text describes the DXF files' layers only where there are files; page review 47)."""
     _ = tr(lang)
     note = ""
     for row in rows:
@@ -294,7 +296,7 @@ def sheets_context(rows: list[dict], lang: str) -> dict:
                      "to fill its cell, at its own scale written above it ($\\mu_v$, $\\mu_a$, "
                      "$\\mu_F$), not at the scales of the report's figures.")
     previews = _.pgettext("list", ", ").join("@" + row["label"] for row in rows)
-    return {"sheets": rows, "sheets_note": note, "sheet_previews": previews}
+    return {"sheets": rows, "sheets_note": note, "sheet_previews": previews, "sheets_dxf": dxf}
 
 
 def _sheet_row(sh, lang: str) -> dict:

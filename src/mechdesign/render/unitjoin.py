@@ -112,6 +112,57 @@ local function glued_relation(t)
   return nil
 end
 
+-- a unit with a solidus written as a word ("rad/s;", "N/mm", "(mm/s²)"): typst may break a
+-- line after the "/" ("rad/" | "s", page review 47); in the PDF the word is set in a box,
+-- unbroken (a box, not a word joiner: the PDF's text stays "rad/s")
+local UNIT_TAILS = {"²", "³", "⁻", "¹", "·"}
+local FULL_COMMA = utf8.char(0xFF0C)
+local function slashed_unit(t)
+  -- the unit at the start of ``t`` with the punctuation after it, and the rest
+  -- ("r/min" + full-width comma + Chinese text: the unit and comma, the text), or nil
+  if #t > 40 then return nil end
+  local u = t:match("^%(?%a+/[%a/]*")
+  if u == nil then return nil end
+  local head = u:match("^%(?(%a+)/")
+  local known = head == "r" and u:match("^%(?r/min") ~= nil
+  for _, w in ipairs(UNITS) do
+    if head == w then known = true end
+  end
+  if not known then return nil end
+  local rest = t:sub(#u + 1)
+  local moved = true
+  while moved do
+    moved = false
+    for _, s in ipairs(UNIT_TAILS) do
+      if rest:sub(1, #s) == s then
+        u, rest, moved = u .. s, rest:sub(#s + 1), true
+      end
+    end
+  end
+  local p = rest:match("^[%)%.,;:]*")
+  if rest:sub(#p + 1, #p + 3) == FULL_COMMA then p = p .. FULL_COMMA end
+  return u .. p, rest:sub(#p + 1)
+end
+
+local function boxed_units(inlines)
+  local out, changed = {}, false
+  for _, el in ipairs(inlines) do
+    local u, rest = nil, nil
+    if el.t == "Str" then u, rest = slashed_unit(el.text) end
+    if u ~= nil then
+      out[#out + 1] = pandoc.RawInline("typst", "#box[")
+      out[#out + 1] = pandoc.Str(u)
+      out[#out + 1] = pandoc.RawInline("typst", "];")
+      if rest ~= "" then out[#out + 1] = pandoc.Str(rest) end
+      changed = true
+    else
+      out[#out + 1] = el
+    end
+  end
+  if changed then return out end
+  return nil
+end
+
 -- a quantity's symbol written as a word before its relation ("K = 1.05", "(φ = 0.0°)") is
 -- set as a formula, italic as in the equations (ISO 80000-1: quantity symbols italic);
 -- a letter that ends a word ("ab", "μφ", "2z") is left alone
@@ -211,6 +262,12 @@ local function Inlines(inlines)
         inlines[i + 2] = pandoc.Str(NBSP)
         changed = true
       end
+    end
+  end
+  if FORMAT:match("typst") then
+    local b = boxed_units(inlines)
+    if b ~= nil then
+      inlines, changed = b, true
     end
   end
   if changed then return inlines end

@@ -355,8 +355,10 @@ def _transmission(r: dict, lang: str) -> dict:
     for i, s in enumerate(trans.stages, 1):
         if s.kind == "belt":
             kind = _("V-belt")
-            drv = f"$d_1$ = {f(s.driver * MM, 0)} mm"
-            dvn = f"$d_2$ = {f(s.driven * MM, 0)} mm"
+            # the pulleys as Table 1 names them (d_b1/d_b2): d_1, d_2 are the bar's and the
+            # groove's diameters there (page review 47)
+            drv = f"$d_{{b1}}$ = {f(s.driver * MM, 0)} mm"
+            dvn = f"$d_{{b2}}$ = {f(s.driven * MM, 0)} mm"
             dist = "—"
         else:
             kind = _("spur gears")
@@ -373,13 +375,13 @@ def _transmission(r: dict, lang: str) -> dict:
                                   f(g.df * MM, 1), f(g.db * MM, 2)])
             pair_rows.append([str(i), f"$z_{{{gear - 1}}}$ – $z_{{{gear}}}$", f(pr.a * MM, 1),
                               f(pr.contact_ratio, 3), f(pr.z_min, 0)])
-    # the train's ratio as the course writes it: driven over driving, the pulleys d_1 → d_2,
+    # the train's ratio as the course writes it: driven over driving, the pulleys d_b1 → d_b2,
     # the gears numbered along the train (z_1 drives z_2, z_3 drives z_4, …)
     parts, symbols, gear = [], [], 0
     for s in trans.stages:
         if s.kind == "belt":
             parts.append(rf"\frac{{{f(s.driven * MM, 0)}}}{{{f(s.driver * MM, 0)}}}")
-            symbols.append(r"\frac{d_2}{d_1}")
+            symbols.append(r"\frac{d_{b2}}{d_{b1}}")
         else:
             parts.append(rf"\frac{{{int(s.driven)}}}{{{int(s.driver)}}}")
             symbols.append(rf"\frac{{z_{{{gear + 2}}}}}{{z_{{{gear + 1}}}}}")
@@ -599,6 +601,9 @@ def _rounded(b, ds, step: float, lang: str):
     if rc is None:
         return None
     return {"a": f(rc.input_rocker * MM, 2), "b": f(rc.coupler * MM, 2),
+            # the input start kept, the arm's start it gives (page review 47: "the same input
+            # start (β1 = 147.49°)" named the output's angle); angles in prose to 0.01°
+            "alpha1": f(np.mod(ds.alpha1, 2 * np.pi) * DEG, 2),
             "beta1": f(np.mod(rc.beta1, 2 * np.pi) * DEG, 2), "swing": f(rc.swing * DEG, 2),
             "bend": f(rc.bend * DEG, 2), "gmin": f(rc.gamma_min * DEG, 2),
             "gmin_built": f((b.gamma_min_built if _built_is_drawn(b) else rc.gamma_min) * DEG, 2),
