@@ -596,8 +596,8 @@ def _belt_design(r, g, title: str, _) -> dict:
               "… a_{{max}} = {a_min} … {a_max}$ mm. $P_0$ interpolated bilinearly in $n_1$ "
               "and $d_{{d1}}$ (table 8-4), $\\Delta P_0$ linearly in $n_1$ (table 8-5), "
               "$K_\\alpha$ and $K_L$ from tables 8-6 and 8-2; the selection chart's "
-              "boundaries are read off the figure and some table values could not be checked "
-              "against the book: check them in the handbook before handing in.", a0=f(a0, 0),
+              "boundaries are read off the figure: check the section and these table values "
+              "in the handbook before handing in.", a0=f(a0, 0),
               a0_min=f(b.a0_min * MM, 0), a0_max=f(b.a0_max * MM, 0), a_min=f(b.a_min * MM, 0),
               a_max=f(b.a_max * MM, 0))]
     F0_row, F0_txt, Fp_txt = _fp_texts(b.z, b.F0, deg(b.alpha1), b.Fp)

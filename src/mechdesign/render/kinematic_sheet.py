@@ -1226,10 +1226,13 @@ def disc_diagram(disc, info: TitleInfo, lang: str) -> Sheet:
             c = sh + centre
             view.circle(c, R, "OUTLINE")
             view.line(sh, c, "OUTLINE")
-            ground(view, sh + 0j, 7.0)
+            # the frame symbol away from the centre C and the follower (below O it ran through
+            # C: page review 48)
+            side = free_side(view, sh + 0j, (c, sh + complex(x, y)))
+            ground(view, sh + 0j, 7.0, side)
             pin(view, sh + 0j)
             pin(view, c)
-            placer.block(view.p(sh + 0j), 6.0)
+            placer.block(view.p(sh + 0j) + 3.5 * np.exp(1j * side), 6.0)
             for t in np.linspace(0, 2 * np.pi, 60)[:-1]:
                 placer.block(view.p(c + R * np.exp(1j * t)), 0.6)
             placer.block_segment(view.p(sh + 0j), view.p(c), 1.5)

@@ -582,6 +582,27 @@ def _designed(document: dict, lang: str) -> list[str]:
         if key in ("positions", "linkage") and not _forces_computed(document, key):
             msgid = N_("kinematic analysis")
         out.append(_(msgid))
+    # parts nested in a linkage's results (the generic linkage, the die-cutter's press, the
+    # lockbeam's feed): the graphical method and the flywheel (page review 47: the six-bar's
+    # summary said "kinematic and kinetostatic analysis" over a graphical chapter and a flywheel)
+    # they follow the analysis they belong to
+    analysis = [_(m) for m in (N_("kinematic and kinetostatic analysis"), N_("kinematic analysis"),
+                               N_("kinematic analysis of the feed linkage"))]
+    at = next((i + 1 for i, text in enumerate(out) if text in analysis), len(out))
+    nested = []
+    for head in ("", "linkage", "press", "feed"):
+        node = document if not head else document.get(head)
+        if not isinstance(node, dict):
+            continue
+        g = node.get("graphical")
+        positions = (g or {}).get("positions") if isinstance(g, dict) else None
+        if positions:
+            nested.append(_("graphical method (velocity, acceleration and force polygons)")
+                          if any(isinstance(q, dict) and q.get("forces") for q in positions)
+                          else _("graphical method (velocity and acceleration polygons)"))
+        if head and isinstance(node.get("flywheel"), dict):
+            nested.append(_("flywheel design"))
+    out[at:at] = [t for t in nested if t not in out]
     return list(dict.fromkeys(out))
 
 
@@ -613,9 +634,8 @@ def summary_context(machine: str, document: dict, ctx: dict, lang: str, title: s
     # "Data assumptions"): the summary must not read as nothing to act on (page review 41)
     unconfirmed = sum(len(v.get("data_assumptions") or ()) for v in document.values() if isinstance(v, dict))
     if unconfirmed:
-        watch.append(_("The drive design used {n} handbook values that could not be checked against a public "
-                       "copy of their source (listed under “Data assumptions”): verify them in the handbook "
-                       "before handing in.", n=unconfirmed))
+        watch.append(_("The drive design uses {n} handbook values to be confirmed in the handbook before "
+                       "handing in (listed under “Data assumptions”).", n=unconfirmed))
     total = sum(int(g["count"]) for g in groups)
     failed = sum(len(g["failed"]) for g in groups)
     return {"title": md_text(title) if title else "", "parts": _designed(document, lang),

@@ -1113,7 +1113,7 @@ def _steps(sh, mat, a0, d_min, dims, shoulder, T, peak, peak_factor, lf, ev, spa
     b = ev["bearing"]
     if b is not None:
         conf = "" if cat.bearing_confirmed(b.designation) else \
-            Msg(N_(" (rating transcribed from the handbook table, not confirmed against a public copy)"))
+            Msg(N_(" (rating from the handbook table; to be confirmed in the handbook)"))
         out.append(_step(N_("bearings: at the journal, the lightest series whose life reaches {hours} h → "
                              "{designation}, $C_r$ = {cr} kN, {c0r} = {c0} kN{conf}"),
                           hours=_text_num(dp.service_hours), designation=b.designation, cr=f"{b.Cr / 1e3:g}",

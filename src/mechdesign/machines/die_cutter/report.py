@@ -478,6 +478,9 @@ def _flywheel(r, p, b, _) -> dict:
             "at_max": _deg(fl.phase_at_max, 1), "delta": fluctuation(fl.fluctuation),
             "jf": f(fl.inertia, 3), "jf_crank": f(fl.inertia_on_crank, 1),
             "D": f(fl.rim.diameter * MM, 0), "b": f(fl.rim.width * MM, 1),
+            # the rim's H/b and γ from the brief, said where the formula uses them (page
+            # review 47: "H/b = 1.5" was typed in the text and γ = 70000 never introduced)
+            "hb": f(p.rim_height_to_width, 2), "gamma": f(p.specific_weight, 0, group=True),
             "Hr": f(fl.rim.height * MM, 1), "m": f(fl.rim.rim_mass, 2),
             "speed": f(fl.rim.rim_speed, 2), "peak_rows": rows, "peak_note": peak_note, **speeds,
             "share": f(fl.max_energy_swing / r["amplification"].cut_work * 100, 1),

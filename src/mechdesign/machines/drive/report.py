@@ -5,9 +5,9 @@ from pathlib import Path
 import numpy as np
 from ...i18n import N_, tr
 from ...stages.findings import check_name
-from ...render.fmt import e, f, md_meta, md_text, sig
+from ...render.fmt import e, f, grouped, md_meta, md_text, sig
 from ...render.fmt import verdict
-from ...render.drive_report import _shaft_name, drive_context
+from ...render.drive_report import _shaft_name, _stage_name, drive_context
 
 
 def _load_equation(p) -> str:
@@ -26,12 +26,39 @@ def make_figures(r: dict, fig_dir: Path, lang: str) -> dict[str, str]:
     return {}
 
 
+def data_rows(p, d, lang: str) -> list[list[str]]:
+    """The task's data as the brief gives them (symbol, quantity, value, unit): the machine's
+    load and speed, the service life, the application factor and the speed tolerance (page
+    review 47: the drive report began with P_w = (F_w + F_r) H n_w/60 and defined none of
+    them)."""
+    _ = tr(lang)
+    ld = p.load
+    rows = []
+    if ld.how == "stroke":
+        rows += [["$F_w$", _("resistance on the working stroke"), f(ld.working_force, 0), "N"],
+                 ["$F_r$", _("resistance on the return stroke"), f(ld.return_force, 0), "N"],
+                 ["$H$", _("stroke"), f(ld.stroke * 1e3, 0), "mm"]]
+    elif ld.how == "torque":
+        rows.append(["$T_w$", _("mean torque at the machine's input shaft"),
+                     sig(ld.power * 30 / (np.pi * ld.output_speed_rpm)), "N·m"])
+    else:
+        rows.append(["$P_w$", _("mean power at the machine's input shaft"), sig(ld.power / 1e3), "kW"])
+    rows += [["$n_w$", _("speed of the machine's input shaft"), f(ld.output_speed_rpm, 2), "r/min"],
+             ["$L_h$", _("service life"), grouped(f(d.service_hours, 0)), "h"],
+             ["$K_A$", _("application factor"), f(d.KA, 2), "—"],
+             ["$\\Delta n/n$", _("allowed speed error"), f(d.speed_tolerance * 100, 1), "%"]]
+    return rows
+
+
 def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
     p = r["params"]
+    d = r["drive"]
     return {"meta": md_meta(brief.report, lang),
-            "drive": drive_context(r["drive"], lang, figures, _load_equation(p)),
+            "drive": drive_context(d, lang, figures, _load_equation(p)),
             "load_how": p.load.how,
-            **verification_context(r["drive"], r.get("drive_verification"), lang)}
+            "data_rows": data_rows(p, d, lang),
+            "stages": " → ".join(md_text(_stage_name(s.kind, lang)) for s in d.stages),
+            **verification_context(d, r.get("drive_verification"), lang)}
 
 
 _NOTE = N_("Each item is recomputed by its definition: every shaft's speed, power "

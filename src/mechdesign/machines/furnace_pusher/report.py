@@ -279,7 +279,9 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
         "delta": r"\cos\delta = \frac{b^2 + c^2 - (d \mp a)^2}{2bc}, \quad \gamma = \min(\delta,\ 180° - \delta)",
         "gamma": (rf"\gamma_{{min}} = {f(syn.gamma_min * DEG, 2)}°, \quad "
                   rf"\gamma_{{max}} = {f(syn.gamma_max * DEG, 2)}°"),
-        "gwork": (rf"\alpha_B = 90° - \gamma_{{work,min}} = 90° - {f(syn.gamma_work * DEG, 2)}° = "
+        # γ′_min: the least transmission angle on the working stroke (page review 47: the
+        # English subscript "work,min" in the zh report, and never said)
+        "gwork": (rf"\alpha_B = 90° - \gamma'_{{min}} = 90° - {f(syn.gamma_work * DEG, 2)}° = "
                   rf"{f(syn.alpha_B * DEG, 2)}°"),
         "torque": r"M_b\,\omega = F_r\,\lvert v_E\rvert \quad\Rightarrow\quad M_b = \frac{F_r\,\lvert v_E\rvert}{\omega}",
         "hand": (rf"\bar P = \frac{{(F_{{r1}} + F_{{r2}})\,H\,n}}{{60}} = \frac{{({f(pp.working_force, 0)} + "

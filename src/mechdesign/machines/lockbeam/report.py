@@ -14,6 +14,7 @@ import numpy as np
 from ...i18n import N_, tr
 from ...render import figures as fig
 from ...render.legends import legend
+from ...render.linkage_report import carried_note
 from ...render.fmt import e, f, md_meta, md_text, rpm, sig, time_ratio
 from ...render.fmt import verdict
 from ...render.fmt import factor_for, gives
@@ -34,7 +35,7 @@ PROGRAM_STEPS = (
      N_("$\\omega_4$, $\\varepsilon_4$ of the guide bar; position, velocity and acceleration of $D$")),
     ("proc", N_("RRP group 5–6: rrp()"),
      N_("$x_E$, $v_E$, $a_E$ of the slider; $\\omega_5$, $\\varepsilon_5$ of the rod")),
-    ("io", N_("print one row"), N_("one row of the feed table in the seed's format")),
+    ("io", N_("print one row"), N_("one row of the feed table in the original program's format")),
     ("cond", N_("$\\varphi_1$ < 350°?"), None),
 )
 
@@ -493,7 +494,11 @@ def _bending(r: dict, lang: str, figures: dict) -> dict:
         "sense": _(sense), "ratio": f(b.ratio, 3),
         "grashof": grashof_sentence(ds.input_rocker, ds.coupler, ds.output_rocker, ds.frame, lang),
         "dbeta": f(bp.output_swing * DEG, 2), "dalpha": f(b.input_swing * DEG, 2),
+        # the lift by the rule (0.01 mm); the formula carries the digits that give its Δα, and
+        # the sentence after it says so (page review 47: "h = 14.90 mm (the original report
+        # prints 14.904 mm)" above "14.904/35" quoted a typed number as if it were not used)
         "arm": f(arm * MM, 0), "h": f(h_arc * MM, 2),
+        "h_note": carried_note(_, [("h", f(h_arc * MM, 2), h_txt)]),
         "gmin": f(b.gamma_min * DEG, 2), "gmax": f(b.gamma_max * DEG, 2),
         "gmin_at": f(b.gamma_min_at * DEG, 2), "glim": f(bp.gamma_allowed * DEG, 0),
         "lo": f(bp.length_bounds[0] * MM, 0), "hi": f(bp.length_bounds[1] * MM, 0),

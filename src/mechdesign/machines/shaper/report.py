@@ -261,6 +261,9 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
             "dw": sig(fl.max_energy_swing), "jf": sig(fl.inertia),
             "at_min": f(fl.phase_at_min * DEG, 1), "at_max": f(fl.phase_at_max * DEG, 1),
             "D": f(fl.rim.diameter * mm, 0), "b": f(fl.rim.width * mm, 1),
+            # the rim's H/b and γ from the brief, said where the formula uses them (page
+            # review 47: "H/b = 1.5" was typed in the text and γ = 70000 never introduced)
+            "hb": f(p.rim_height_to_width, 2), "gamma": f(p.specific_weight, 0, group=True),
             "Hr": f(fl.rim.height * mm, 1), "m": f(fl.rim.rim_mass, 2),
             "speed": f(fl.rim.rim_speed, 2), "delta": fluctuation(p.fluctuation),
         },
