@@ -78,6 +78,8 @@ def _bare_quantities(line: str, lang: str) -> list[str]:
         if tok in _UNIT_LETTERS and re.search(r"([\d⁰¹²³⁴-⁹§%]\s?|/ ?)$",
                                               before):
             continue                                           # a unit: 50 N, $T$ N·m, /W, 10⁶ N
+        if tok in _UNIT_LETTERS and re.search(r"(\bin |以 ?)$", before):
+            continue                                           # a unit named: "forces in N", "力以 N 计"
         if lang == "en" and tok in ("a", "A", "I") and re.match(r"\s+[A-Za-z\d\"“]", after):
             continue                                           # an article, a pronoun
         if re.search(r"\\?\($", before) and after.startswith(")"):
