@@ -1150,11 +1150,6 @@ def _printed_difference(graphical: str, analytic: str, exact: float) -> float:
     return (g - a) / abs(a)
 
 
-def _decimals(text: str) -> int:
-    """The decimals a printed number has ("123.5" → 1, "1 662" → 0)."""
-    return len(text.partition(".")[2]) if "." in text else 0
-
-
 def _beside(analytic: float, text: str, graphical: str) -> str:
     """The analytic value of a comparison row (the reference) with at least the decimals of
     the graphical reading beside it, and one more where that reading has fewer than 4
@@ -1164,8 +1159,8 @@ def _beside(analytic: float, text: str, graphical: str) -> str:
     power of ten stays so); ``analytic`` the value in that unit."""
     if text == "0" or any(m in t for m in ("×", "times") for t in (text, graphical)):
         return text
-    d = min(4, _decimals(graphical) + (significant(graphical) < 4))
-    return text if _decimals(text) >= d else grouped(f(analytic, d))
+    d = min(4, _digits(graphical) + (significant(graphical) < 4))
+    return text if _digits(text) >= d else grouped(f(analytic, d))
 
 
 def _compare_caption(rows: list[list[str]], label: str, lang: str) -> str:

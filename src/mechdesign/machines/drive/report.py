@@ -10,6 +10,11 @@ from ...render.fmt import verdict
 from ...render.drive_report import _shaft_name, _stage_name, drive_context
 
 
+def _torque(ld) -> float:
+    """[N·m] The mean torque at the machine's input: T = P·30/(π n)."""
+    return ld.power * 30 / (np.pi * ld.output_speed_rpm)
+
+
 def _load_equation(p) -> str:
     ld = p.load
     if ld.how == "stroke":
@@ -17,7 +22,7 @@ def _load_equation(p) -> str:
                 rf"{f(ld.return_force, 0)}) \times {f(ld.stroke, 3)} \times {f(ld.output_speed_rpm, 2)}}}{{60}}"
                 rf" = {f(ld.power, 2)}\ \text{{W}}")
     if ld.how == "torque":
-        return (rf"P_w = T_w \frac{{\pi n_w}}{{30}} = {sig(ld.power * 30 / (np.pi * ld.output_speed_rpm), group=False)}"
+        return (rf"P_w = T_w \frac{{\pi n_w}}{{30}} = {sig(_torque(ld), group=False)}"
                 rf" \times \frac{{\pi \times {f(ld.output_speed_rpm, 2)}}}{{30}} = {f(ld.power, 2)}\ \text{{W}}")
     return rf"P_w = {sig(ld.power / 1e3, group=False)}\ \text{{kW}}"
 
@@ -40,7 +45,7 @@ def data_rows(p, d, lang: str) -> list[list[str]]:
                  ["$H$", _("stroke"), f(ld.stroke * 1e3, 0), "mm"]]
     elif ld.how == "torque":
         rows.append(["$T_w$", _("mean torque at the machine's input shaft"),
-                     sig(ld.power * 30 / (np.pi * ld.output_speed_rpm)), "N·m"])
+                     sig(_torque(ld)), "N·m"])
     else:
         rows.append(["$P_w$", _("mean power at the machine's input shaft"), sig(ld.power / 1e3), "kW"])
     rows += [["$n_w$", _("speed of the machine's input shaft"), f(ld.output_speed_rpm, 2), "r/min"],
