@@ -223,14 +223,18 @@ def test_shaft_reactions_balance_the_gear_forces():
 
 def test_two_stage_helical_reducer_is_designed_and_checked():
     """A belt + two-stage helical reducer (the die-cutter's layout): ratios split by the
-    √(1.4 i) rule before rounding, helical geometry m_t = m_n/cos β, all checks run."""
+    √(1.4 i) rule before rounding, helical geometry m_t = m_n/cos β with β corrected to the
+    centre distance rounded to a whole millimetre (β within 8°…20°), all checks run."""
     p = _brief([{"type": "belt"}, {"type": "helical", "z1": 24}, {"type": "helical", "z1": 24}],
                load={"output_speed_rpm": 50, "power_kW": 2.0})
     d = _run(p)
     fast, slow = d.stages[1], d.stages[2]
     assert fast.ratio_allocated == pytest.approx(np.sqrt(1.4 * fast.ratio_allocated * slow.ratio_allocated))
     g = fast.design.geometry
-    assert g.mt == pytest.approx(g.mn / np.cos(np.radians(14.0)))
+    assert g.mt == pytest.approx(g.mn / np.cos(g.beta))
+    assert np.radians(8) <= g.beta <= np.radians(20)
+    assert g.a * 1e3 == pytest.approx(round(g.a * 1e3), abs=1e-9)
+    assert abs(g.a - g.mn * (24 + fast.z2) / (2 * np.cos(np.radians(14.0)))) <= 0.5e-3 + 1e-12
     assert [c.key for c in fast.design.checks] == ["gear_contact", "gear_bending", "gear_bending"] + GEOMETRY_CHECKS
     assert all(c.passed for c in fast.design.checks + slow.design.checks)
-    assert fast.design.forces["Fa"] == pytest.approx(fast.design.forces["Ft"] * np.tan(np.radians(14.0)))
+    assert fast.design.forces["Fa"] == pytest.approx(fast.design.forces["Ft"] * np.tan(g.beta))

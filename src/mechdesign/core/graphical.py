@@ -285,10 +285,12 @@ def kinematic_drawing(mech, pos: dict, omega2: float, kind: str, scale: float,
         elif isinstance(g, LinkPoint):
             terms = rot(g.origin, g.name, g.link)
             # about a fixed pivot: v ⊥ the radius, and a along it only without a tangential
-            # part; a^n + a^t is a resultant whose direction the polygon gives ("sum")
+            # part; a^n + a^t is a resultant whose direction the polygon gives ("sum"); so is
+            # a point of a moving link (v_S3 = v_A + v_S3A: the image method's segment p s3,
+            # measured — review 48: it stood "√ known" with no segment nor value)
             left = _abs_term(d, x, g.name, I(g.name),
-                             direction=("" if g.origin not in frame else
-                                        terms[0].direction if len(terms) == 1 else "sum"))
+                             direction=("sum" if g.origin not in frame or len(terms) > 1
+                                        else terms[0].direction))
             d.equations.append(VectorEquation(name, (left,), tuple(known(g.origin) + terms)))
         elif isinstance(g, RRR):
             B, D, C, l1, l2 = g.b, g.d, g.c, g.link1, g.link2

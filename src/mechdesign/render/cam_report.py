@@ -378,6 +378,8 @@ def cam_context(c, lang: str, figs: dict[str, str], csv_name: str, section=None)
                     default=float(np.max(c.grid.pressure_angle)))
     return {
         "purpose": purpose_line(section, lang),
+        # the cam's phase to the crank, where a machine keys it to one (guide_bar_report)
+        "phase": "",
         "follower": follower_name, "rotation": rot, "data_rows": data, "prog_rows": prog_rows, "s_unit": u.s_unit,
         "joints": _.pgettext("list", ", ").join(joints),
         "laws": laws, "geo": geo, "checks": checks, "design_rows": design_rows,

@@ -109,6 +109,20 @@ def _stage_name(kind: str, lang) -> str:
     return Named("transmissions", kind).text(lang)
 
 
+def _part(part: str, kind: str, d, lang) -> str:
+    """A part on a shaft ("the pinion of stage 3", the flywheel) in ``lang``: by its stage
+    and its role where the shaft design records them, else by its stage's kind."""
+    from ..stages.drive_strength import part_name
+
+    role, _sep, k = (part or "").partition(":")
+    if role in ("driving", "driven") and k.isdigit() and int(k) < len(d.stages):
+        design = d.stages[int(k)].design
+        msg = part_name(design.kind, role == "driving", int(k)) if design is not None else None
+        if msg is not None:
+            return msg.text(lang)
+    return _stage_name(kind, lang)
+
+
 def _shaft_name(i: int, last: int, zh: bool) -> str:
     _ = tr("zh" if zh else "en")
     if i == 0:
@@ -415,6 +429,8 @@ def stage_designs(d, lang: str, gear_pair_last: bool = False) -> list[dict]:
             d1 = g.forces["d1"]
             # a helical pair: its normal module and helix angle (review38: β was in no table)
             helical = r.type == "helical"
+            if helical and e.get("a0") is not None:
+                text.extend(_helix_correction(r, g, _))
             rows = [["$z_1 / z_2$", f"{r.z1} / {r.z2}", "—"],
                     ["$m_n$" if helical else "$m$", f(g.module * MM, 2), "mm"],
                     *([["$\\beta$", f(math.degrees(geo.beta), 2), "°"]] if helical else []),
@@ -463,7 +479,8 @@ def stage_designs(d, lang: str, gear_pair_last: bool = False) -> list[dict]:
         title = _("Design and checks of {index}",
                    index=_shaft_name(sh.index, len(d.shafts) - 1, _.zh))
         res = sh.result
-        where = _.pgettext("list", ", ").join(_stage_name(kind, _) for kind in sh.elements)
+        parts = sh.element_parts or sh.elements
+        where = _.pgettext("list", ", ").join(_part(p, kind, d, _) for p, kind in zip(parts, sh.elements))
         text = [_("On the shaft: {where}. Designed by the procedure of PU Lianggui, Machine "
                   "Design, ch. 15 (each step's rule and numbers below); any failed check "
                   "enlarges that section and everything is checked again.", where=where)]
@@ -517,7 +534,7 @@ def stage_designs(d, lang: str, gear_pair_last: bool = False) -> list[dict]:
             rows.append([_("bearing"), sh.bearing.designation, "—"])
         for k in sh.keys:
             lab = f"{f(k.b * MM, 0)}×{f(k.h * MM, 0)}×{f(k.L * MM, 0)}" + (" ×2" if k.count == 2 else "")
-            rows.append([_("key ({element})", element=_stage_name(k.element, _)), lab, unit_mm])
+            rows.append([_("key ({element})", element=_part(k.part, k.element, d, _)), lab, unit_mm])
         bearing_std = () if sh.bearing is None else (
             ("gb297",) if sh.bearing.designation.startswith("3") else ("gb276",))
         formulas = []
@@ -565,6 +582,24 @@ def _dia(d: float) -> str:
     standard series, a worm's root circle with its decimal (d_f1 = 30.4 mm; page review 41:
     the table said 30 beside 30.4 in the design step and in the σ_ca line)."""
     return exact(d * MM, None, 2)
+
+
+def _helix_correction(r, g, _) -> list[str]:
+    """A helical pair's centre distance rounded to a whole millimetre and its β corrected
+    (the stage's design; PU Lianggui, Machine Design, ch. 10)."""
+    from .strength_tex import num
+
+    e, geo = g.extra, g.geometry
+    m, zs = num(g.module * MM), f"{r.z1} + {r.z2}"
+    a = geo.a * MM
+    beta0 = num(math.degrees(e["beta0"]))
+    return [_("The centre distance is rounded to a whole millimetre and the helix angle corrected "
+              "to it; the checks below use the corrected $\\beta$:"),
+            rf"$$ a_0 = \frac{{m_n (z_1 + z_2)}}{{2\cos\beta_0}} = \frac{{{m} \times ({zs})}}"
+            rf"{{2\cos {beta0}^\circ}} = {f(e['a0'] * MM, 2)}\ \text{{mm}} \rightarrow "
+            rf"a = {f(a, 0)}\ \text{{mm}} $$",
+            rf"$$ \beta = \arccos\frac{{m_n (z_1 + z_2)}}{{2a}} = \arccos\frac{{{m} \times "
+            rf"{r.z1 + r.z2}}}{{2 \times {f(a, 0)}}} = {f(math.degrees(geo.beta), 2)}^\circ $$"]
 
 
 def _belt_design(r, g, title: str, _) -> dict:

@@ -537,6 +537,11 @@ def linkage_context(model, k, f_, fly, v, figures: dict, lang: str,
         "point_names": [md_point(p) for p in point_names], "point_rows": point_rows,
         "link_ids": [md_text(l_) for l_ in k.link_omega], "link_speed_rows": link_speed_rows,
         "qual_rows": qual_rows, "angles_head": angles_head, "angles_align": angles_align,
+        # an angle the brief gives no limit for is listed unjudged: say so (page review 48:
+        # slotter's pressure angle with "—" under "Allowed" and no word on it)
+        "angles_note": ("" if all(row[5] != "—" for row in qual_rows) else
+                        ("" if _.zh else " ") + _("An angle without an allowed value (“—”) is not "
+                                                  "judged: the design brief gives none for it.")),
         "reaction_names": [f"$F_{{{tex_name(nm)}}}$" for nm in reaction_names],
         "force_rows": force_rows, "force_unit": force_unit_,
         "mb_max": sig(f_.torque_max, ref=f_.peak_torque),

@@ -439,4 +439,7 @@ def check_rows(checks: Iterable[Check], lang: str = "zh") -> list[list[str]]:
              "—" if c.unit == "1" else c.unit, verdict(c, lang)] for c in checks]
 
 
-__all__ = ["check_formula", "check_rows", "verdict", "num", "COURSE_SCALE"]
+#: A value or allowable as the check tables print it.
+cell = _cell
+
+__all__ = ["check_formula", "check_rows", "verdict", "num", "COURSE_SCALE", "cell"]

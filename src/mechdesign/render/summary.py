@@ -22,7 +22,7 @@ from importlib import resources
 from pathlib import Path
 from typing import Any
 
-from .fmt import exact, f, length, md_text, rpm, sig, time_ratio, verdict
+from .fmt import exact, f, grouped, length, md_text, rpm, sig, time_ratio, verdict
 from ..i18n import N_, data_text, tr
 from .labels import pgettext, translated
 
@@ -158,6 +158,7 @@ def document_checks(document: dict) -> list[dict]:
             if isinstance(flag, bool) and not unchecked:
                 out.append({"path": ".".join(str(p) for p in path), "ok": flag,
                             "_id": repr(sorted((k, repr(v)) for k, v in node.items())),
+                            "margin": _margin(node),
                             **_describe(node, path, parents, names, actuator)})
             for k, v in node.items():
                 walk(v, path + (k,), parents + (node,))
@@ -174,6 +175,56 @@ def document_checks(document: dict) -> list[dict]:
             seen.add(mark)
             unique.append(c)
     return unique
+
+
+def _margin(node: dict) -> tuple[float, str, str, str] | None:
+    """A strength check's margin (value against its allowable, a fraction of the allowable:
+    ≥ 0 passes) with the value, the allowable and the unit as its table prints them; None
+    for a check without a value and an allowable (a verdict only)."""
+    from dataclasses import fields
+
+    from ..core.strength import Check
+    from .strength_tex import cell
+
+    # a load's checks only: stresses, lives, temperatures (a diameter against its torsion
+    # estimate or a tip thickness is sized by the standard series, not near a failure)
+    if (node.get("sense") not in ("le", "ge") or not node.get("allowable")
+            or node.get("unit") not in LOAD_UNITS):
+        return None
+    names = {fl.name for fl in fields(Check)}
+    try:
+        c = Check(**{k: v for k, v in node.items() if k in names})
+    except TypeError:
+        return None
+    value, allowed = float(c.value), float(c.allowable)
+    margin = (allowed - value) / allowed if c.sense == "le" else (value - allowed) / allowed
+    return (margin, grouped(cell(c.course_value, c)), grouped(cell(c.course_allowable, c)),
+            "" if c.unit == "1" else c.unit)
+
+
+#: The units of the checks a larger load brings nearer their limits.
+LOAD_UNITS = ("MPa", "h", "°C")
+
+#: A check within this fraction of its limit is named in the summary's points to watch.
+TIGHT_MARGIN = 0.05
+
+
+def _tightest(checks: list[dict], lang: str, most: int = 3) -> list[str]:
+    """The passing checks nearest their limits (margin below :data:`TIGHT_MARGIN`, at most
+    ``most``, the tightest first), as the designer's points to watch: a larger load
+    makes them exceed their limits first (page review 48: the summary drew no conclusion)."""
+    _ = tr(lang)
+    i = 0 if _.zh else 1
+    tight = sorted((c for c in checks if c["ok"] and c.get("margin") is not None
+                    and c["margin"][0] < TIGHT_MARGIN), key=lambda c: c["margin"][0])
+    out = []
+    for c in tight[:most]:
+        margin, value, allowed, unit = c["margin"]
+        out.append(_("{name} ({group}): only {margin} % margin ({value} against {allowed}{unit}); "
+                     "a larger load than the brief's exceeds this limit first.",
+                     group=c["group"][i], name=c["name"][i], margin=f(margin * 100, 1),
+                     value=value, allowed=allowed, unit=(" " + unit) if unit else ""))
+    return out
 
 
 def _describe(node: dict, path: tuple, parents: tuple, names: dict, actuator) -> dict:
@@ -630,6 +681,7 @@ def summary_context(machine: str, document: dict, ctx: dict, lang: str, title: s
             if not any(name in w for w in findings):
                 watch.append(_("{group}: {name} FAILS.", group=g["group"], name=name))
     watch += findings
+    watch += _tightest(document_checks(document), lang)
     # the handbook values used without a public copy to confirm them (the drive chapter's
     # "Data assumptions"): the summary must not read as nothing to act on (page review 41)
     unconfirmed = sum(len(v.get("data_assumptions") or ()) for v in document.values() if isinstance(v, dict))

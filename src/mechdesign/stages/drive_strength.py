@@ -90,6 +90,8 @@ class KeyDesign:
     count: int = q("1", "keys at the hub (2: two keys at 180°, counted as 1.5)")
     torque: float = q("N·m", "torque through the hub (the peak after a flywheel)")
     check: st.Check = q("", "crushing check σ_p = 4T/(d h l) (÷ 1.5 for two keys)")
+    part: str = q("", "the hub's part: 'driving:k' / 'driven:k' (the driving or driven element "
+                  "of drive stage k, 0-based) or the element's own name", default="")
 
 
 @dataclass(frozen=True)
@@ -162,6 +164,9 @@ class ShaftDesign:
     seal_reach: tuple[float, float] = q("m", "how far the seal section reaches outward from the centre of "
                                         "bearing A and of bearing B (to the overhung hub's inner edge; 0: "
                                         "no overhung end on that side)", default=(0.0, 0.0))
+    element_parts: tuple[str, ...] = q("", "each element's part, as elements: 'driving:k' / 'driven:k' "
+                                       "(the driving or driven element of drive stage k, 0-based) "
+                                       "or the element's own name (flywheel, crank)", default=())
 
     def diameter_at(self, x: float) -> float:
         """The diameter [m] of the section at axial position ``x`` [m] (:func:`section_diameter`)."""
@@ -210,6 +215,24 @@ def _phi_d(s, is_open: bool) -> float:
     return s.face_width_factor if s.face_width_factor else (0.5 if is_open else 1.0)
 
 
+#: The helix angles a helical pair's corrected β may take (PU Lianggui: β = 8°…20°).
+HELIX_RANGE = (math.radians(8.0), math.radians(20.0))
+
+
+def rounded_helix(m: float, z1: int, z2: int, beta: float) -> float:
+    """β corrected to the centre distance rounded to a whole millimetre,
+    cos β = m_n (z1 + z2) / (2a): the nearest millimetre, else the next one up or down that
+    keeps β within :data:`HELIX_RANGE` (β itself when none does)."""
+    a0 = m * (z1 + z2) / (2 * math.cos(beta))
+    near = round(a0 * 1e3)
+    for a_mm in sorted({near, math.floor(a0 * 1e3), math.ceil(a0 * 1e3)},
+                       key=lambda a: abs(a - a0 * 1e3)):
+        c = m * (z1 + z2) / (2 * a_mm * 1e-3)
+        if c < 1 and HELIX_RANGE[0] - 1e-12 <= math.acos(c) <= HELIX_RANGE[1] + 1e-12:
+            return math.acos(c)
+    return beta
+
+
 def _gear_stage(s, n1: float, T1: float, T2: float, hours: float, KA: float,
                 factors: dict | None = None) -> StageDesign:
     f_ = factors or {}
@@ -230,21 +253,25 @@ def _gear_stage(s, n1: float, T1: float, T2: float, hours: float, KA: float,
     sH = min(st.allowable_stress(m.sigma_Hlim, k, S_H) for m, k in ((mat1, khn[0]), (mat2, khn[1])))
     sF = [st.allowable_stress(m.sigma_FE, k, S_F) for m, k in ((mat1, kfn[0]), (mat2, kfn[1]))]
     phi_d = _phi_d(s, is_open)
-    # Transverse geometry for the contact ratio (independent of the module).
-    alpha_t = math.atan(math.tan(math.radians(20)) / math.cos(beta))
-    zv = [z / math.cos(beta) ** 3 for z in (z1, z2)]
-    yf = [cat.tooth_factors(max(z, 17.0)) for z in zv]
-    # ε_α does not depend on the module: the pair itself for spur gears (with its shift),
-    # the textbook's estimate for helical ones.
-    eps_a = ((1.88 - 3.2 * (1 / z1 + 1 / z2)) * math.cos(beta) if helical
-             else gears.spur_pair(1.0, z1, z2, x1=s.x1, x2=s.x2).contact_ratio)
-    eps_b = phi_d * z1 * math.tan(beta) / math.pi
-    beta_b = math.atan(math.tan(beta) * math.cos(alpha_t))
+
+    def helix_factors(beta):
+        """The factors that depend on the helix angle (all of them for a spur pair's β = 0)."""
+        # Transverse geometry for the contact ratio (independent of the module).
+        alpha_t = math.atan(math.tan(math.radians(20)) / math.cos(beta))
+        zv = [z / math.cos(beta) ** 3 for z in (z1, z2)]
+        yf = [cat.tooth_factors(max(z, 17.0)) for z in zv]
+        # ε_α does not depend on the module: the pair itself for spur gears (with its shift),
+        # the textbook's estimate for helical ones.
+        eps_a = ((1.88 - 3.2 * (1 / z1 + 1 / z2)) * math.cos(beta) if helical
+                 else gears.spur_pair(1.0, z1, z2, x1=s.x1, x2=s.x2).contact_ratio)
+        eps_b = phi_d * z1 * math.tan(beta) / math.pi
+        beta_b = math.atan(math.tan(beta) * math.cos(alpha_t))
+        Zb, Yb = st.helix_factors(beta, eps_b) if helical else (1.0, 1.0)
+        return (yf, eps_a, eps_b, st.zone_factor(alpha_t, alpha_t, beta_b),
+                st.contact_ratio_factor(eps_a, eps_b), st.bending_ratio_factor(eps_a, beta_b), Zb, Yb)
+
+    yf, eps_a, eps_b, ZH, Ze, Ye, Zb, Yb = helix_factors(beta)
     ZE = st.elastic_coefficient(mat1.E, mat1.nu, mat2.E, mat2.nu)
-    ZH = st.zone_factor(alpha_t, alpha_t, beta_b)
-    Ze = st.contact_ratio_factor(eps_a, eps_b)
-    Ye = st.bending_ratio_factor(eps_a, beta_b)
-    Zb, Yb = st.helix_factors(beta, eps_b) if helical else (1.0, 1.0)
     # The gear with the larger Y_Fa Y_Sa / [σF] governs bending.
     worst = max(range(2), key=lambda i: yf[i][0] * yf[i][1] / sF[i])
     module_min = None
@@ -258,7 +285,14 @@ def _gear_stage(s, n1: float, T1: float, T2: float, hours: float, KA: float,
         m = max(st.standard_module(module_min), M_MIN_POWER)
     else:
         m = s.module
+    a0 = None
     if helical:
+        # the centre distance rounded to a whole millimetre and β corrected to it, the
+        # checks then made with the corrected β (PU Lianggui, Machine Design, ch. 10, the
+        # helical pair's design steps; page review 48: a = 337.53 mm printed unrounded)
+        a0 = m * (z1 + z2) / (2 * math.cos(beta))
+        beta = rounded_helix(m, z1, z2, beta)
+        yf, eps_a, eps_b, ZH, Ze, Ye, Zb, Yb = helix_factors(beta)
         geo = gears.helical_pair(m, z1, z2, beta)
         d1 = geo.d1
     else:
@@ -285,7 +319,7 @@ def _gear_stage(s, n1: float, T1: float, T2: float, hours: float, KA: float,
         tuple(checks),
         {"v": v, "phi_d": phi_d, "ZE": ZE, "ZH": ZH, "Zeps": Ze, "Yeps": Ye, "eps_alpha": eps_a,
          "eps_beta": eps_b, "YFa1": yf[0][0], "YSa1": yf[0][1], "YFa2": yf[1][0], "YSa2": yf[1][1],
-         "open": is_open, "beta": beta})
+         "open": is_open, "beta": beta, "a0": a0, "beta0": s.helix_angle if helical else 0.0})
 
 
 def _worm_stage(s, n1: float, P1: float, T1: float, T2: float, hours: float, KA: float) -> StageDesign:
@@ -441,9 +475,10 @@ def _place(dp, j, designs, kinds, weight=None, crank=None):
     for k, d, drv, nm in elems:
         inside, fields, width, hub_mat = _element_loads(d, drv)
         info.append(dict(k=k, design=d, driving=drv, name=nm, inside=inside, fields=fields,
+                         part=f"{'driving' if drv else 'driven'}:{k}",
                          width=width or (0.06 if d.kind == "worm" else 0.0), hub_mat=hub_mat))
     if weight is not None and weight[0] > 0:
-        info.append(dict(k=None, design=None, driving=False, name="flywheel", inside=True,
+        info.append(dict(k=None, design=None, driving=False, name="flywheel", inside=True, part="flywheel",
                          fields=dict(Fv=-float(weight[0])), width=float(weight[1]),
                          hub_mat="cast_iron"))
     if crank is not None:
@@ -451,7 +486,7 @@ def _place(dp, j, designs, kinds, weight=None, crank=None):
         # bearings (no drive stage: no key is designed for it); the plane is set by the caller
         # (two identical linkages side by side: a crank beyond each bearing, each with half)
         for _ in range(crank.count):
-            info.append(dict(k=None, design=None, driving=False, name="crank", inside=False,
+            info.append(dict(k=None, design=None, driving=False, name="crank", inside=False, part="crank",
                              fields=dict(Fh=float(crank.F) / crank.count),
                              life_fields=dict(Fh=float(crank.life) / crank.count),
                              width=0.0, hub_mat="steel"))
@@ -531,6 +566,26 @@ def _hub_length(i, dk: float) -> float:
     return max(i["width"], 1.2 * dk, 1.5 * dk if kind in ("belt", "coupling", "chain", "crank") else 0.0)
 
 
+#: The part a drive stage puts on a shaft: (the stage design's kind, driving) → its name.
+PART_WORDS = {("gear", True): Msg.pgettext("shaft part", "pinion"),
+              ("gear", False): Msg.pgettext("shaft part", "gear"),
+              ("worm", True): Msg.pgettext("shaft part", "worm"),
+              ("worm", False): Msg.pgettext("shaft part", "worm wheel"),
+              ("belt", True): Msg.pgettext("shaft part", "driving pulley"),
+              ("belt", False): Msg.pgettext("shaft part", "driven pulley"),
+              ("chain", True): Msg.pgettext("shaft part", "driving sprocket"),
+              ("chain", False): Msg.pgettext("shaft part", "driven sprocket")}
+
+
+def part_name(kind: str, driving: bool, k: int | None) -> Msg | None:
+    """"the pinion of stage 3": the part drive stage ``k`` (0-based) puts on a shaft, None
+    for a stage without such parts (a coupling)."""
+    word = PART_WORDS.get((kind, bool(driving)))
+    if word is None or k is None:
+        return None
+    return Msg(N_("the {part} of stage {n}"), part=word, n=k + 1)
+
+
 def _keys(info, d_end, d_seat, T_of, allow_of, key_length=None):
     """Flat keys at every hub: b × h by the diameter, L the longest standard ≤ hub − 8 mm;
     if the crushing check fails, a longer hub (up to 1.5 d), then two keys at 180°."""
@@ -568,10 +623,13 @@ def _keys(info, d_end, d_seat, T_of, allow_of, key_length=None):
         hub, L, lw, count, c = choice
         nm = i["name"]
         lab = f"{key.label}×{L * 1e3:g}" + (" ×2" if count == 2 else "")
-        element = encode(Named("transmissions", nm))     # named in the report's language
+        # named in the report's language, by its part (page review 48: "Key 28×16×140
+        # (closed helical gear pair)" twice on one shaft, which gear was which)
+        element = encode((part_name(d.kind, i["driving"], i["k"]) if d is not None else None)
+                         or Named("transmissions", nm))
         c = replace(c, name=N_("Key {label} ({element_en})"),
                     name_args={"label": lab, "element_zh": element, "element_en": element})
-        out.append((KeyDesign(nm, dk, key.b, key.h, L, lw, hub, count, T, c),
+        out.append((KeyDesign(nm, dk, key.b, key.h, L, lw, hub, count, T, c, i.get("part", nm)),
                     i["inside"] or d_end is None))
     return out
 
@@ -854,7 +912,8 @@ def shaft_designs(dp, designs, shafts, peak_factor, peak_from_shaft, kinds,
                                tuple(i["name"] for i in _load_order(info)), res, ev["bearing"], ev["pl"], tuple(checks),
                                mat.key, a0, d_end, shoulder, (lf / peak_factor) if peak else 1.0,
                                (life_res.FrA, life_res.FrB), tuple(ev["keys"]), tuple(steps), advice,
-                               coupling, integral, ev["seal"], ev["reach"]))
+                               coupling, integral, ev["seal"], ev["reach"],
+                               tuple(i.get("part", i["name"]) for i in _load_order(info))))
     return tuple(out)
 
 
@@ -1121,12 +1180,19 @@ def _steps(sh, mat, a0, d_min, dims, shoulder, T, peak, peak_factor, lf, ev, spa
     if ev["keys"]:
         keys = [Msg(N_("{name_en}: d = {d}, key {b}×{h}, hub {hub}, L = {L}, two keys at 180°") if k.count == 2
                     else N_("{name_en}: d = {d}, key {b}×{h}, hub {hub}, L = {L}"),
-                    name_zh=Named("transmissions", k.element), name_en=Named("transmissions", k.element), d=_mmf(k.d), b=_mmf(k.b), h=_mmf(k.h), hub=_mmf(k.hub, 0), L=_mmf(k.L))
+                    name_zh=_key_part(k), name_en=_key_part(k), d=_mmf(k.d), b=_mmf(k.b), h=_mmf(k.h), hub=_mmf(k.hub, 0), L=_mmf(k.L))
                 for k in ev["keys"]]
         listed = Join(Msg.pgettext("list", "; "), keys)
         out.append(_step(N_("keys (GB/T 1096, form A, L ≤ hub − 8 mm; a longer hub up to 1.5 d, then two keys "
                              "when one fails): {keys}"), keys=listed))
     return head, out
+
+
+def _key_part(k: KeyDesign):
+    """The part a key joins, as its check names it ("the pinion of stage 3")."""
+    from .findings import decode
+
+    return decode(k.check.name_args["element_en"])
 
 
 def _coupling_step(c: CouplingChoice, d_min: float, motor) -> dict:

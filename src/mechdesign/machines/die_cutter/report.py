@@ -159,6 +159,8 @@ def _data_rows(b, p, r, _) -> list[list[str]]:
 
 
 def _choice_rows(b, p, r, _) -> list[list[str]]:
+    from ...stages.flywheel import CAST_IRON_RIM_SPEED
+
     """Values this design chooses where the task is silent, with the reasons."""
     pr, ms, ct = b.press, b.masses, b.cutting
     from ...core.motion_laws import LAWS
@@ -227,6 +229,12 @@ def _choice_rows(b, p, r, _) -> list[list[str]]:
            "fluctuation")],
         ["—", _("flywheel"), _shaft(p.flywheel_shaft, len(b.drive.stages), _),
          _("a fast shaft needs far less inertia ($J \\propto 1/n^2$)")],
+        # the rim's mean diameter, which chapter 7 calls the brief's (page review 48: in
+        # neither table)
+        ["$D$", _("flywheel rim mean diameter"), f"{f(p.rim_diameter * 1e3, 0)} mm",
+         _("rim speed $\\pi D n / 60$ = {v} m/s, below about {limit} m/s allowed for cast iron",
+           v=f(r["press_flywheel"].rim.rim_speed, 1), limit=f(CAST_IRON_RIM_SPEED, 0))]
+        if r["press_flywheel"].rim is not None else None,
         (["$h$", _("gripper cam lift"), f"{f(cam.follower.stroke_h_mm, 1)} mm",
           _("push-rod travel that opens the grippers")]
          if cam.follower.motion == "translating" else
@@ -249,7 +257,7 @@ def _choice_rows(b, p, r, _) -> list[list[str]]:
         ["$K_A$", _("application factor"), f(b.drive.service.application_factor_KA, 2),
          _("shock load")],
     ]
-    return rows
+    return [row for row in rows if row is not None]
 
 
 def _shaft(index: int, stages: int, _) -> str:

@@ -399,8 +399,42 @@ def _drive(r: dict, flywheel_shaft: int | None = None):
     p, f = r["params"], r["press_forces"]
     peak, life = _peak_and_life(r)
     j = p.flywheel_shaft if flywheel_shaft is None else flywheel_shaft
+
+    # the flywheel's rim hangs on shaft j between its bearings (review 48 A: chapter 7 put the
+    # 71 kg rim on shaft Ⅰ and the shaft carried nothing of it); its size follows from the
+    # realised ratio down to the crank, which the shaft table gives
+    def weights(table):
+        if j < 1:
+            return None
+        ratio = table[j].speed_rpm / table[-1].speed_rpm
+        return _rim_weight(_placed_flywheel(r, j, ratio), j, p)
+
     return design_drive(p.drive, f.mean_power, p.shaft_rpm, "mechanism", peak, j, life,
-                        crank=_crank(r))
+                        weights, crank=_crank(r))
+
+
+def _rim_weight(fl: Flywheel, j: int, p) -> dict | None:
+    """{shaft j: (the rim's weight [N], its width [m])}, None without a rim."""
+    rim = fl.rim
+    return {j: (rim.rim_mass * p.gravity, rim.width)} if rim is not None else None
+
+
+def _placed_flywheel(r: dict, j: int, ratio: float) -> Flywheel:
+    """The flywheel on drive shaft ``j`` turning ``ratio`` × the crank's speed: on the brief's
+    shaft the brief's rim, on the other its rim diameter by :func:`other_rim_diameter`."""
+    p, model, k, f = r["params"], r["press_model"], r["press"], r["press_forces"]
+    n = k.grid_size
+    exact = CycleIntegrals(model, k)
+    if j == p.flywheel_shaft:
+        spec = brief_flywheel(p, ratio)
+    else:
+        bare = design_flywheel(FlywheelSpec(p.fluctuation, ratio, j), k.phase[:n],
+                               f.balancing_torque[:n], model.crank_omega, p.gravity, exact=exact)
+        spec = FlywheelSpec(p.fluctuation, ratio, j, RimSpec(other_rim_diameter(bare.inertia, p),
+                                                             p.rim_height_to_width,
+                                                             p.specific_weight))
+    return design_flywheel(spec, k.phase[:n], f.balancing_torque[:n], model.crank_omega,
+                           p.gravity, exact=exact)
 
 
 def _crank(r: dict) -> dict:
@@ -449,15 +483,12 @@ def peak_shafts(drive) -> tuple[PeakShaft, ...]:
     return tuple(out)
 
 
-def flywheel(model: LinkageModel, k, f, drive, p: DieCutterParams) -> tuple[Flywheel, tuple]:
+def flywheel(r: dict) -> tuple[Flywheel, tuple]:
     """The one flywheel stage on drive shaft ``p.flywheel_shaft`` (its speed from the
     designed drive), and the shafts after it that carry the peak torque."""
+    p, drive = r["params"], r["drive"]
     ratio = float(np.prod([st.ratio for st in drive.stages][p.flywheel_shaft:]))
-    spec = brief_flywheel(p, ratio)
-    n = k.grid_size
-    fl = design_flywheel(spec, k.phase[:n], f.balancing_torque[:n], model.crank_omega, p.gravity,
-                         exact=CycleIntegrals(model, k))
-    return fl, peak_shafts(drive)
+    return _placed_flywheel(r, p.flywheel_shaft, ratio), peak_shafts(drive)
 
 
 #: Density of steel [kg/m³] for the gear wheels' solid-disc mass estimate.
@@ -541,25 +572,17 @@ def compare_placements(r: dict) -> PlacementComparison:
     the placement)."""
     from ...stages.drive import resized
 
-    p, model, k, f = r["params"], r["press_model"], r["press"], r["press_forces"]
+    p = r["params"]
     shafts = len(p.drive.stages)
     other = shafts if p.flywheel_shaft < shafts else 1
     drive = r["drive"]
     peak, life = _peak_and_life(r)
-    sized = resized(drive, p.drive, peak, other, life, crank=_crank(r))
+    ratio = float(np.prod([st.ratio for st in drive.stages][other:]))
+    fl = _placed_flywheel(r, other, ratio)
+    sized = resized(drive, p.drive, peak, other, life, _rim_weight(fl, other, p), crank=_crank(r))
     if sized is None:                       # a worm's efficiency moved: design it all again
         again = _drive(r, other)
         sized = (again.stages, again.shaft_designs)
-    ratio = float(np.prod([st.ratio for st in drive.stages][other:]))
-    n = k.grid_size
-    exact = CycleIntegrals(model, k)
-    bare = design_flywheel(FlywheelSpec(p.fluctuation, ratio, other), k.phase[:n],
-                           f.balancing_torque[:n], model.crank_omega, p.gravity, exact=exact)
-    D = other_rim_diameter(bare.inertia, p)
-    fl = design_flywheel(FlywheelSpec(p.fluctuation, ratio, other,
-                                      RimSpec(D, p.rim_height_to_width, p.specific_weight)),
-                         k.phase[:n], f.balancing_torque[:n], model.crank_omega, p.gravity,
-                         exact=exact)
     return PlacementComparison(_placement(r["press_flywheel"], drive.stages, drive.shaft_designs),
                                _placement(fl, *sized))
 
@@ -786,8 +809,7 @@ def stages(params: DieCutterParams) -> list[Stage]:
                                       r["press_forces"], r["params"])),
         Stage("drive", titles.pgettext("stage", "drive"), _drive),
         Stage(("press_flywheel", "peak_shafts"), titles.pgettext("stage", "flywheel"),
-              lambda r: flywheel(r["press_model"], r["press"], r["press_forces"], r["drive"],
-                                 r["params"])),
+              flywheel),
         Stage("flywheel_placement", titles.pgettext("stage", "flywheel placement"),
               compare_placements),
         cam_stage(),
