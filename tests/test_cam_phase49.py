@@ -14,18 +14,18 @@ def _return_span(K):
 
 
 @pytest.mark.parametrize("name, K, motion", [("shaper", 1.2, 150.0), ("slotter", 1.8, 120.0)])
-def test_the_cams_motion_lies_in_the_return_stroke(example_results, name, K, motion):
+def test_the_cams_motion_lies_in_the_return_stroke(example_results, handin_reports, name, K, motion):
     r = example_results(name)
-    text = cam_phase(r["cam"], r["linkage"], "en")
+    data, check = cam_phase(r["cam"], r["linkage"], "en")
     ret = _return_span(K)
-    start = 360.0 - ret
-    assert f"$\\varphi$ = {start:.2f}°, where the return stroke begins" in text
-    assert f"ends at $\\varphi$ = {start + motion:.2f}°" in text
-    assert f"{360.0 - start - motion:.2f}° before the next working stroke" in text
-    assert f"within the return stroke ({ret:.2f}°)" in text
+    assert data[2] == f"{360.0 - ret:.2f}"                   # δ = 0 where the return begins
+    assert check[1:] == [f"{motion:.2f}°", f"≤ {ret:.2f}°", "PASS"]
+    md, _ = handin_reports(name, "en")
+    assert f"| follower's motion within the return stroke | {motion:.2f}° | ≤ {ret:.2f}° | PASS |" in md
+    assert f"(the return stroke begins) | {360.0 - ret:.2f} | ° |" in md
 
 
-def test_a_motion_longer_than_the_return_stroke_is_reported(example_results):
+def test_a_motion_longer_than_the_return_stroke_fails(example_results):
     r = example_results("slotter")
     seg = SimpleNamespace
     rad = 3.141592653589793 / 180
@@ -33,9 +33,7 @@ def test_a_motion_longer_than_the_return_stroke_is_reported(example_results):
                                     seg(kind="dwell", start=70 * rad, span=10 * rad),
                                     seg(kind="return", start=80 * rad, span=70 * rad),
                                     seg(kind="dwell", start=150 * rad, span=210 * rad)])
-    text = cam_phase(cam, r["linkage"], "en")
-    ret = _return_span(1.8)
-    assert f"{150.0 - ret:.2f}° after the next working stroke has begun" in text
-    assert f"shorten it to at most {ret:.2f}°" in text
-    zh = cam_phase(cam, r["linkage"], "zh")
-    assert "应缩短到不大于" in zh and "shorten" not in zh
+    _data, check = cam_phase(cam, r["linkage"], "en")
+    assert check[1:] == ["150.00°", f"≤ {_return_span(1.8):.2f}°", "FAIL"]
+    _data, check = cam_phase(cam, r["linkage"], "zh")
+    assert check[0] == "从动件运动在回程之内完成" and check[3] == "不合格"

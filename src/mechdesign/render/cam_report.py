@@ -289,8 +289,12 @@ def cam_context(c, lang: str, figs: dict[str, str], csv_name: str, section=None)
             # exp(), not e^{…}: e is the offset here
             "pitch": (rf"\mathbf{{B}}(\delta) = \exp({'-' if p.rotation > 0 else ''}i\delta)"
                       rf"\left[e + i\,(s_0 + s)\right],\quad e = {f(c.offset * MM, 2)}\ \text{{mm}}"),
+            # ds/dδ = v/ω where the table lists the velocity v (page review 48: eq. (18) re-
+            # evaluated with the table's v gave 22.62° against its 21.70°)
             "alpha": (rf"\tan\alpha = \frac{{\left|{'' if p.rotation > 0 else '-'}\,ds/d\delta - e\right|}}"
-                      rf"{{s_0 + s}}") if fol.kind != "flat" else r"\alpha = 0",
+                      rf"{{s_0 + s}}" + (rf",\quad \frac{{ds}}{{d\delta}} = \frac{{v}}{{\omega}},\ "
+                                         rf"\omega = {sig(p.omega, group=False)}\ \text{{rad/s}}"
+                                         if p.omega else "")) if fol.kind != "flat" else r"\alpha = 0",
         }
         if fol.kind == "flat":
             geo["pitch"] = (rf"\mathbf{{B}}(\delta) = \exp({'-' if p.rotation > 0 else ''}i\delta)"
@@ -378,8 +382,6 @@ def cam_context(c, lang: str, figs: dict[str, str], csv_name: str, section=None)
                     default=float(np.max(c.grid.pressure_angle)))
     return {
         "purpose": purpose_line(section, lang),
-        # the cam's phase to the crank, where a machine keys it to one (guide_bar_report)
-        "phase": "",
         "follower": follower_name, "rotation": rot, "data_rows": data, "prog_rows": prog_rows, "s_unit": u.s_unit,
         "joints": _.pgettext("list", ", ").join(joints),
         "laws": laws, "geo": geo, "checks": checks, "design_rows": design_rows,

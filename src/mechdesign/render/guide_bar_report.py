@@ -168,26 +168,24 @@ def data_rows(b, p, ram_zh: str, rod: str, rod_ratio: float, ram_com: list,
     ]
 
 
-def cam_phase(cam, k, lang: str) -> str:
+def cam_phase(cam, k, lang: str) -> tuple[list[str], list[str]]:
     """The cam on the crank shaft keyed so that its motion starts with the return stroke
     (φ from position 1, the start of the working stroke, in the crank's sense; the cam turns
-    with the crank, δ = φ − φ_r): where its motion ends, and whether it ends before the next
-    working stroke (page review 48: "the feed must happen in the return stroke", never shown)."""
+    with the crank, δ = φ − φ_r): the crank angle of δ = 0 (a row of the cam's data table)
+    and the check that its motion (rise to the end of the return) lies within the return
+    stroke (a row of its checks; page review 48: "the feed must happen in the return
+    stroke", never shown)."""
+    from .fmt import verdict
+
     _ = tr(lang)
     deg = 180 / math.pi
     start = k.working_span * deg                      # φ_r: the return stroke begins
     ret = 360.0 - start
     motion = max((sg.start + sg.span for sg in cam.segments if sg.kind != "dwell"), default=0.0) * deg
-    end = start + motion
-    head = _("Phase to the crank: the cam is keyed to the crank so that $\\delta$ = 0 at $\\varphi$ = "
-             "{start}°, where the return stroke begins; its motion ($\\delta$ = 0 to {motion}°) ends at "
-             "$\\varphi$ = {end}°", start=f(start, 2), motion=f(motion, 2), end=f(end, 2))
-    if end <= 360.0 + 1e-9:
-        return head + _(", {gap}° before the next working stroke begins at $\\varphi$ = 360°: the follower "
-                        "moves within the return stroke ({ret}°).", gap=f(360.0 - end, 2), ret=f(ret, 2))
-    return head + _(", {over}° after the next working stroke has begun: the follower's motion ({motion}°) "
-                    "is longer than the return stroke ({ret}°); shorten it to at most {ret}°.",
-                    over=f(end - 360.0, 2), motion=f(motion, 2), ret=f(ret, 2))
+    data = ["$\\varphi_0$", _("crank angle at $\\delta$ = 0 (the return stroke begins)"), f(start, 2), "°"]
+    check = [_("follower's motion within the return stroke"), f"{f(motion, 2)}°", f"≤ {f(ret, 2)}°",
+             verdict(motion <= ret + 1e-9, lang)]
+    return data, check
 
 
 def optional_sections(r: dict, lang: str, figures: dict, brief=None) -> dict:
@@ -199,7 +197,9 @@ def optional_sections(r: dict, lang: str, figures: dict, brief=None) -> dict:
 
         out["cam"] = cam_context(r["cam"], lang, figures, "cam_profile.csv",
                                  getattr(brief, "cam", None))
-        out["cam"]["phase"] = cam_phase(r["cam"], r["linkage"], lang)
+        data, check = cam_phase(r["cam"], r["linkage"], lang)
+        out["cam"]["data_rows"] = [*out["cam"]["data_rows"], data]
+        out["cam"]["checks"] = [*out["cam"]["checks"], check]
     if r.get("gear") is not None:
         from .gear_report import gear_context
 

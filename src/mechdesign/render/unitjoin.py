@@ -489,14 +489,7 @@ local function run_breaks(para)
     end
     out[#out + 1] = el
   end
-  -- the paragraph's lines broken first-fit (#greedy, templates/report.typ): the optimal
-  -- breaking moved a two-character word down onto the unjustified line a run's break
-  -- ends, alone on it (page review 48, five zh reports)
-  if changed then
-    table.insert(out, 1, pandoc.RawInline("typst", "#greedy["))
-    out[#out + 1] = pandoc.RawInline("typst", "]")
-    return pandoc.Para(out)
-  end
+  if changed then return pandoc.Para(out) end
   return nil
 end
 

@@ -549,6 +549,14 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
                       rf" = {time_ratio(sl.K)}"),
             "allowed": _deg(sl.alpha_allowed, 0),
         }
+        # the section's own data in the data table (page review 48: K, H, e came first in
+        # section 4, in no table and not in the task)
+        part = _.pgettext("data table", "offset slider-crank")
+        data_rows += ([["$a, b$", _("{part}: crank, rod (given)", part=part),
+                        f"{_mm(sl.crank)}, {_mm(sl.rod)}", "mm"]] if slider["given"] else
+                      [["$K$", _("{part}: time ratio", part=part), time_ratio(sl.K), "—"],
+                       ["$H$", _("{part}: stroke", part=part), f(h_mm, 2), "mm"]])
+        data_rows.append(["$e$", _("{part}: offset", part=part), f(e_mm, 2), "mm"])
         slider_name = _.pgettext("verification item", "offset slider-crank")
         for item, val, ref, err in (
                 (N_("simulated stroke $H$ /mm"), _mm(ss.stroke), f(h_mm, 2),
@@ -602,6 +610,10 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
                 "far": None if far is None else _deg(far, 2), "where": where},
         "with_speed": p.crank_speed_rpm is not None,
         "textbook": textbook, "given": given,
+        # the offset slider-crank of its own section named in the task (page review 48)
+        "slider_task": ("" if slider is None else ("" if _.zh else " ") + _(
+            "Then design an offset slider-crank for the data of the table's last rows (section "
+            "“Offset slider-crank”).")),
         "cmp_head": [_.pgettext("table head", "design"), "$l_1$/mm", "$l_2$/mm", "$l_3$/mm", "$l_4$/mm", "$\\theta$/°", "$\\psi$/°",
                      "$K$", "$\\gamma_{min}$/°"],
         "cmp_rows": cmp_rows + [spec_row], "cmp_align": "|".join([":--"] + ["--:"] * 8),

@@ -232,8 +232,8 @@ def _choice_rows(b, p, r, _) -> list[list[str]]:
         # the rim's mean diameter, which chapter 7 calls the brief's (page review 48: in
         # neither table)
         ["$D$", _("flywheel rim mean diameter"), f"{f(p.rim_diameter * 1e3, 0)} mm",
-         _("rim speed $\\pi D n / 60$ = {v} m/s, below about {limit} m/s allowed for cast iron",
-           v=f(r["press_flywheel"].rim.rim_speed, 1), limit=f(CAST_IRON_RIM_SPEED, 0))]
+         _("rim speed {v} m/s ≤ {limit} m/s (cast iron)",
+           v=f(r["press_flywheel"].rim.rim_speed, 2), limit=f(CAST_IRON_RIM_SPEED, 0))]
         if r["press_flywheel"].rim is not None else None,
         (["$h$", _("gripper cam lift"), f"{f(cam.follower.stroke_h_mm, 1)} mm",
           _("push-rod travel that opens the grippers")]
