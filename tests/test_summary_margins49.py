@@ -24,7 +24,7 @@ def _document():
 
 
 def test_the_tightest_passing_checks_are_named_with_their_margins():
-    watch = summary_context("x", _document(), {}, "en", "t")["watch"]
+    watch = summary_context("x", _document(), {}, "en", "t")["margins"]
     tight = [w for w in watch if "margin" in w]
     assert len(tight) == 2
     assert tight[0].startswith("Bearing life") and "1.0 %" in tight[0]
@@ -35,6 +35,21 @@ def test_the_tightest_passing_checks_are_named_with_their_margins():
 
 
 def test_the_margins_in_chinese():
-    watch = summary_context("x", _document(), {}, "zh", "t")["watch"]
+    watch = summary_context("x", _document(), {}, "zh", "t")["margins"]
     tight = [w for w in watch if "裕量" in w]
     assert len(tight) == 2 and "裕量仅 1.0 %" in tight[0] and "限值 50\u202f000 h" in tight[0]
+
+
+def test_the_margins_are_listed_apart_from_the_points_that_need_action():
+    ctx = summary_context("x", _document(), {}, "en", "t")
+    assert not any("margin" in w for w in ctx["watch"])
+    assert ctx["all_passed"] is False            # the contact check fails …
+    assert any("Contact fatigue" in w and "FAILS" in w for w in ctx["watch"])   # … and is named
+
+
+def test_the_die_cutter_summary_lists_its_closest_checks(handin_reports):
+    md, _ = handin_reports("die_cutter", "en")
+    tail = md[md.index("# Summary"):]
+    assert "**Closest to their limits (passed):**" in tail
+    block = tail.split("**Closest to their limits (passed):**")[1].split("# References")[0]
+    assert block.count("% margin") >= 1
