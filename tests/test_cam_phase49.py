@@ -6,7 +6,8 @@ from types import SimpleNamespace
 
 import pytest
 
-from mechdesign.render.guide_bar_report import cam_phase
+from mechdesign.render.guide_bar_report import cam_phase as phase_rows
+from mechdesign.stages.guide_bar import cam_phase
 
 
 def _return_span(K):
@@ -16,7 +17,9 @@ def _return_span(K):
 @pytest.mark.parametrize("name, K, motion", [("shaper", 1.2, 150.0), ("slotter", 1.8, 120.0)])
 def test_the_cams_motion_lies_in_the_return_stroke(example_results, handin_reports, name, K, motion):
     r = example_results(name)
-    data, check = cam_phase(r["cam"], r["linkage"], "en")
+    ph = r["cam_phase"]
+    assert ph.passed and ph == cam_phase(r["cam"], r["linkage"])
+    data, check = phase_rows(ph, "en")
     ret = _return_span(K)
     assert data[2] == f"{360.0 - ret:.2f}"                   # δ = 0 where the return begins
     assert check[1:] == [f"{motion:.2f}°", f"≤ {ret:.2f}°", "PASS"]
@@ -33,7 +36,14 @@ def test_a_motion_longer_than_the_return_stroke_fails(example_results):
                                     seg(kind="dwell", start=70 * rad, span=10 * rad),
                                     seg(kind="return", start=80 * rad, span=70 * rad),
                                     seg(kind="dwell", start=150 * rad, span=210 * rad)])
-    _data, check = cam_phase(cam, r["linkage"], "en")
+    ph = cam_phase(cam, r["linkage"])
+    assert not ph.passed
+    _data, check = phase_rows(ph, "en")
     assert check[1:] == ["150.00°", f"≤ {_return_span(1.8):.2f}°", "FAIL"]
-    _data, check = cam_phase(cam, r["linkage"], "zh")
+    _data, check = phase_rows(ph, "zh")
     assert check[0] == "从动件运动在回程之内完成" and check[3] == "不合格"
+
+
+def test_the_press_oil_pump_cam_is_not_phased(example_results):
+    """The press's cam drives the oil pump: nothing ties it to the return stroke."""
+    assert example_results("press").get("cam_phase") is None

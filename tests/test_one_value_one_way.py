@@ -87,13 +87,13 @@ def two_ways(md: str, window: int = WINDOW) -> list[tuple[str, str]]:
 OPEN: dict[tuple[str, str, str], str] = {
     ("press", "140.0", "139.95"): "x_M = 139.95 mm computed, x₂ = 140.0 mm the guide's chosen position",
     ("press", "127.8", "127.83"): "F_I2 and F_I3: two inertia forces of about the same size",
-    ("die_cutter", "123.7", "123.67"): "stage 2's σ_F = 87.0497 MPa is at a rounding edge: the table's "
-                                       "d₁ = 123.67 and Y_Fa, Y_Sa give 87.052 (the bending check takes "
-                                       "d₁'s digits that give 87.0)",
     ("slotter", "41.8", "41.76"): "position 10's M_b: no text that its equation's printed forces "
                                   "give (−41.77) gives the printed P_b = −1069 (−41.76 does)",
-    ("die_cutter", "124", "123.67"): "the face width b = 124 mm beside d₁ = 123.67 mm",
-    ("die_cutter", "198", "197.88"): "the face width b = 198 mm beside d₁ = 197.88 mm",
+    ("die_cutter", "124", "123.85"): "the face width b = 124 mm beside d₁ = 123.85 mm",
+    ("die_cutter", "198", "197.76"): "the face width b = 198 mm beside d₁ = 197.76 mm",
+    ("die_cutter", "338", "337.53"): "the centre distance a = 338 mm rounded from a₀ = 337.53 mm "
+                                     "(session 49: β corrected to it)",
+    ("die_cutter", "412", "412.25"): "the centre distance a = 412 mm rounded from a₀ = 412.25 mm",
     # the table of every position keeps its columns' decimals (render/fmt.py), the worked
     # position's formulas 4 significant digits
     ("shaper", "0.200", "0.2004"): "position table (3 decimals) beside the worked position 4",

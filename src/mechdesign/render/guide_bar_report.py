@@ -168,23 +168,17 @@ def data_rows(b, p, ram_zh: str, rod: str, rod_ratio: float, ram_com: list,
     ]
 
 
-def cam_phase(cam, k, lang: str) -> tuple[list[str], list[str]]:
-    """The cam on the crank shaft keyed so that its motion starts with the return stroke
-    (φ from position 1, the start of the working stroke, in the crank's sense; the cam turns
-    with the crank, δ = φ − φ_r): the crank angle of δ = 0 (a row of the cam's data table)
-    and the check that its motion (rise to the end of the return) lies within the return
-    stroke (a row of its checks; page review 48: "the feed must happen in the return
-    stroke", never shown)."""
+def cam_phase(ph, lang: str) -> tuple[list[str], list[str]]:
+    """The feed cam's phase to the crank (stages.guide_bar.CamPhase): the crank angle of
+    δ = 0 as a row of the cam's data table, the return-stroke check as a row of its checks."""
     from .fmt import verdict
 
     _ = tr(lang)
     deg = 180 / math.pi
-    start = k.working_span * deg                      # φ_r: the return stroke begins
-    ret = 360.0 - start
-    motion = max((sg.start + sg.span for sg in cam.segments if sg.kind != "dwell"), default=0.0) * deg
-    data = ["$\\varphi_0$", _("crank angle at $\\delta$ = 0 (the return stroke begins)"), f(start, 2), "°"]
-    check = [_("follower's motion within the return stroke"), f"{f(motion, 2)}°", f"≤ {f(ret, 2)}°",
-             verdict(motion <= ret + 1e-9, lang)]
+    data = ["$\\varphi_0$", _("crank angle at $\\delta$ = 0 (the return stroke begins)"),
+            f(ph.crank_angle * deg, 2), "°"]
+    check = [_("follower's motion within the return stroke"), f"{f(ph.motion * deg, 2)}°",
+             f"≤ {f(ph.return_span * deg, 2)}°", verdict(ph.passed, lang)]
     return data, check
 
 
@@ -197,9 +191,10 @@ def optional_sections(r: dict, lang: str, figures: dict, brief=None) -> dict:
 
         out["cam"] = cam_context(r["cam"], lang, figures, "cam_profile.csv",
                                  getattr(brief, "cam", None))
-        data, check = cam_phase(r["cam"], r["linkage"], lang)
-        out["cam"]["data_rows"] = [*out["cam"]["data_rows"], data]
-        out["cam"]["checks"] = [*out["cam"]["checks"], check]
+        if r.get("cam_phase") is not None:
+            data, check = cam_phase(r["cam_phase"], lang)
+            out["cam"]["data_rows"] = [*out["cam"]["data_rows"], data]
+            out["cam"]["checks"] = [*out["cam"]["checks"], check]
     if r.get("gear") is not None:
         from .gear_report import gear_context
 

@@ -255,6 +255,9 @@ def _describe(node: dict, path: tuple, parents: tuple, names: dict, actuator) ->
             name = _both(_SEGMENT[kind]) if kind in _SEGMENT else \
                 _both(N_("largest pressure angle of the {kind}"), kind=kind)
         return {"group": group, "name": name}
+    elif keys[:1] == ["cam_phase"]:                       # the feed cam within the return stroke
+        return {"group": _both(_CAM_OWNERS["cam"]),
+                "name": _both(N_("follower's motion within the return stroke"))}
     elif "quality" in keys and node.get("kind") in ("transmission", "pressure"):   # γ_min, α_max
         from .labels import point_tex
 

@@ -75,9 +75,10 @@ def motion(model, syn: Synthesis, p, rod: str, requests=None):
             field=field, value=value, rule=rule, need=need)) from None
 
 
-def optional_stages(p, flywheel_weight: bool = False) -> list[Stage]:
+def optional_stages(p, flywheel_weight: bool = False, feed_cam: bool = False) -> list[Stage]:
     """The gear pair, the drive and the cam, when the brief has those sections
-    (``flywheel_weight``: the drive's shafts carry the flywheel rim's weight)."""
+    (``flywheel_weight``: the drive's shafts carry the flywheel rim's weight; ``feed_cam``:
+    the cam feeds the work, which must happen in the return stroke: its phase is checked)."""
     out = []
     if p.gear is not None:
         from .gear import gear_stage
@@ -89,7 +90,30 @@ def optional_stages(p, flywheel_weight: bool = False) -> list[Stage]:
         from .cam import cam_stage
 
         out.append(cam_stage())
+        if feed_cam:
+            out.append(Stage("cam_phase", titles.pgettext("stage", "cam phase"),
+                             lambda r: cam_phase(r["cam"], r["linkage"])))
     return out
+
+
+@dataclass(frozen=True)
+class CamPhase:
+    """The feed cam on the crank shaft keyed so that its motion starts with the return stroke
+    (φ from position 1, the start of the working stroke, in the crank's sense; the cam turns
+    with the crank: δ = φ − φ_0); the check that its motion ends before the next working
+    stroke (the shaper's "进给须在刨头空回行程中完成"; page review 48)."""
+
+    crank_angle: float = q("rad", "crank angle φ_0 at the cam's δ = 0: where the return stroke begins")
+    motion: float = q("rad", "the follower's motion: δ from the rise's start to the return's end")
+    return_span: float = q("rad", "the return stroke's crank angle")
+    passed: bool = q("", "the motion lies within the return stroke")
+
+
+def cam_phase(cam, k) -> CamPhase:
+    start = float(k.working_span)
+    ret = 2 * np.pi - start
+    motion = max((sg.start + sg.span for sg in cam.segments if sg.kind != "dwell"), default=0.0)
+    return CamPhase(start, float(motion), float(ret), bool(motion <= ret + 1e-12))
 
 
 def synthesize(p) -> Synthesis:

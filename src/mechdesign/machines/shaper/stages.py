@@ -271,7 +271,7 @@ def stages(params: ShaperParams) -> list[Stage]:
     """The shaper's stages; gear, drive and cam stages when the brief has those sections.
     The flywheel rim (on the pinion or the crank shaft) loads its shaft with its weight, as
     the slotter's does."""
-    return list(STAGES) + guide_bar.optional_stages(params, flywheel_weight=True)
+    return list(STAGES) + guide_bar.optional_stages(params, flywheel_weight=True, feed_cam=True)
 
 
 @dataclass(frozen=True)
@@ -331,6 +331,9 @@ class ShaperResults:
     drive: DriveDocument | None = q("", "the drive, when the brief has one")
     graphical: lk.GraphicalDocument | None = q("", "the graphical method at the polygon "
                                                "positions", default=None)
+    cam_phase: guide_bar.CamPhase | None = q("", "the feed cam's phase to the crank and its "
+                                             "check: its motion within the return stroke",
+                                             default=None)
 
 
 def results_document(r: dict) -> ShaperResults:
@@ -360,6 +363,7 @@ def results_document(r: dict) -> ShaperResults:
                         k.alpha4[:n], f.balancing_torque[:n], fl.energy),
         working_stroke_crank_angle=k.working_span, flywheel=fl, verification=v,
         cam=None if r.get("cam") is None else cam_document(r["cam"]),
+        cam_phase=r.get("cam_phase"),
         gear=None if r.get("gear") is None else gear_document(r["gear"]),
         drive=None if r.get("drive") is None else drive_document(r["drive"]),
         graphical=r.get("linkage_graphical"))

@@ -91,7 +91,7 @@ def stages(p: SlotterParams) -> list[Stage]:
     out = [Stage(("synthesis", "model"), titles.pgettext("stage: guide bar", "linkage synthesis"), _synthesis),
            Stage(engine[0].key, engine[0].title, _motion), *engine[1:]]
     # the flywheel rim (on the pinion or the crank shaft) loads its shaft with its weight
-    return out + guide_bar.optional_stages(p, flywheel_weight=True)
+    return out + guide_bar.optional_stages(p, flywheel_weight=True, feed_cam=True)
 
 
 @dataclass(frozen=True)
@@ -112,6 +112,9 @@ class SlotterResults:
     cam: CamDocument | None = q("", "the cam on the crank shaft, when the brief has one")
     gear: GearDocument | None = q("", "the gear pair z1/z2, when the brief gives its module")
     drive: DriveDocument | None = q("", "the drive, when the brief has one")
+    cam_phase: guide_bar.CamPhase | None = q("", "the feed cam's phase to the crank and its "
+                                             "check: its motion within the return stroke",
+                                             default=None)
 
 
 def results_document(r: dict) -> SlotterResults:
@@ -127,5 +130,6 @@ def results_document(r: dict) -> SlotterResults:
                                     r["linkage_verification"], r.get("linkage_graphical")),
         flywheel=fl,
         cam=None if r.get("cam") is None else cam_document(r["cam"]),
+        cam_phase=r.get("cam_phase"),
         gear=None if r.get("gear") is None else gear_document(r["gear"]),
         drive=None if r.get("drive") is None else drive_document(r["drive"]))
