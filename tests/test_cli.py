@@ -55,8 +55,8 @@ def test_run_writes_report_json_and_figures(md_run):
     for name in ("mechanism", "ram_motion", "guide_bar", "balancing_torque", "energy", "reactions"):
         assert (out / "figures" / f"{name}.png").stat().st_size > 10_000
     # Stage progress is shown while it runs.
-    # seven stages (the graphical method the seventh) + gear, drive, cam
-    assert "[1/10]" in result.output and "[10/10]" in result.output
+    # seven stages (the graphical method the seventh) + gear, drive, cam, the cam's phase
+    assert "[1/11]" in result.output and "[11/11]" in result.output
     assert not list(out.glob(".mechdesign-*")), "staging folders must not remain"
 
 
