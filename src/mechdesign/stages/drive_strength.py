@@ -223,10 +223,8 @@ def rounded_helix(m: float, z1: int, z2: int, beta: float) -> float:
     """β corrected to the centre distance rounded to a whole millimetre,
     cos β = m_n (z1 + z2) / (2a): the nearest millimetre, else the next one up or down that
     keeps β within :data:`HELIX_RANGE` (β itself when none does)."""
-    a0 = m * (z1 + z2) / (2 * math.cos(beta))
-    near = round(a0 * 1e3)
-    for a_mm in sorted({near, math.floor(a0 * 1e3), math.ceil(a0 * 1e3)},
-                       key=lambda a: abs(a - a0 * 1e3)):
+    a0 = m * (z1 + z2) / (2 * math.cos(beta)) * 1e3          # [mm]
+    for a_mm in sorted({math.floor(a0), math.ceil(a0)}, key=lambda a: abs(a - a0)):
         c = m * (z1 + z2) / (2 * a_mm * 1e-3)
         if c < 1 and HELIX_RANGE[0] - 1e-12 <= math.acos(c) <= HELIX_RANGE[1] + 1e-12:
             return math.acos(c)
@@ -629,7 +627,7 @@ def _keys(info, d_end, d_seat, T_of, allow_of, key_length=None):
                          or Named("transmissions", nm))
         c = replace(c, name=N_("Key {label} ({element_en})"),
                     name_args={"label": lab, "element_zh": element, "element_en": element})
-        out.append((KeyDesign(nm, dk, key.b, key.h, L, lw, hub, count, T, c, i.get("part", nm)),
+        out.append((KeyDesign(nm, dk, key.b, key.h, L, lw, hub, count, T, c, i["part"]),
                     i["inside"] or d_end is None))
     return out
 
@@ -913,7 +911,7 @@ def shaft_designs(dp, designs, shafts, peak_factor, peak_from_shaft, kinds,
                                mat.key, a0, d_end, shoulder, (lf / peak_factor) if peak else 1.0,
                                (life_res.FrA, life_res.FrB), tuple(ev["keys"]), tuple(steps), advice,
                                coupling, integral, ev["seal"], ev["reach"],
-                               tuple(i.get("part", i["name"]) for i in _load_order(info))))
+                               tuple(i["part"] for i in _load_order(info))))
     return tuple(out)
 
 
