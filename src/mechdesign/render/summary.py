@@ -321,14 +321,15 @@ def _field(parents: tuple, path: tuple, key: str, whole: bool = False) -> Any:
 _SELF_CHECKS = N_("self-checks")
 
 
-def check_groups(document: dict, ctx: dict, lang: str) -> list[dict]:
+def check_groups(document: dict, ctx: dict, lang: str, checks: list[dict] | None = None) -> list[dict]:
     """The summary's verdict rows: one per group of checks, {group, count, failed names,
     verdict}; the report's verification table is one group when the results hold no
     self-checks of their own (it then carries verdicts the machine judged)."""
     _ = tr(lang)
     i = 0 if _.zh else 1
     groups: dict[str, dict] = {}
-    checks = document_checks(document)
+    # ``checks``: the document's checks when the caller has them (:func:`document_checks`)
+    checks = document_checks(document) if checks is None else checks
     # the transmission and pressure angles against their limits count where the report shows
     # them, in the linkage chapter's table with its verdict column (the crank-rocker's report
     # judges its γ_min in its own verification table instead)
@@ -675,7 +676,8 @@ def summary_context(machine: str, document: dict, ctx: dict, lang: str, title: s
     """What the summary template places: designed parts, key numbers, check verdicts and
     what to watch (failed checks named, then the run's findings)."""
     _ = tr(lang)
-    groups = check_groups(document, ctx, lang)
+    checks = document_checks(document)       # one walk of the document for both uses
+    groups = check_groups(document, ctx, lang, checks)
     findings = list(dict.fromkeys(_findings(ctx, [])))
     watch = []
     for g in groups:
@@ -702,7 +704,7 @@ def summary_context(machine: str, document: dict, ctx: dict, lang: str, title: s
             "watch": watch,
             # passing checks near their limits: inside the checks, listed apart from the
             # points that need action
-            "margins": _tightest(document_checks(document), lang)}
+            "margins": _tightest(checks, lang)}
 
 
 # --------------------------------------------------------------------------- the appendix
