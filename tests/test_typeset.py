@@ -773,6 +773,45 @@ def letter_spaced_lines(pdf, limit: float = 0.15) -> list[tuple[int, float, str]
     return bad
 
 
+def lone_lines(pdf, share: float = 0.25) -> list[tuple[int, str]]:
+    """(page, text) of every short line inside a paragraph: a row that starts at the text
+    block's left edge and ends within its first ``share`` of the width, without a closing
+    punctuation mark, between a full row (reaching the right edge) and a row that goes on
+    at the left edge, all of one size and closely spaced. zh: "…一周" / "平均" / "636.6 N·m；…"
+    (page review 48, five reports): a forced break before the run (templates/report.typ's
+    run-break) had kept itself once typst's optimizer moved the last word down onto the
+    unjustified line. A reference's last line before the next entry ("[4] …") is no paragraph."""
+    import pymupdf
+
+    bad = []
+    with pymupdf.open(pdf) as doc:
+        for number, page in enumerate(doc, 1):
+            rows: list[list] = []
+            lines = []
+            for block in page.get_text("dict")["blocks"]:
+                for line in block.get("lines", []):
+                    spans = [sp for sp in line["spans"] if sp["text"].strip()]
+                    x0, y0, x1, y1 = line["bbox"]
+                    if spans and TOP - 6 <= y0 <= BOTTOM:
+                        lines.append([y0, y1, x0, x1, "".join(sp["text"] for sp in spans),
+                                      max(sp["size"] for sp in spans)])
+            for line in sorted(lines):
+                if rows and line[0] - rows[-1][0] < 3.0:
+                    r = rows[-1]
+                    r[1], r[2], r[3] = max(r[1], line[1]), min(r[2], line[2]), max(r[3], line[3])
+                    r[4], r[5] = r[4] + line[4], max(r[5], line[5])
+                else:
+                    rows.append(line)
+            for a, b, c in zip(rows, rows[1:], rows[2:]):
+                if (a[3] > RIGHT - 3 and b[2] < LEFT + 2 and b[3] < LEFT + share * (RIGHT - LEFT)
+                        and c[2] < LEFT + 2 and abs(a[5] - b[5]) < 0.5 and abs(b[5] - c[5]) < 0.5
+                        and b[0] - a[1] < 12 and c[0] - b[1] < 12
+                        and not re.search(r"[。：:；;.!?！？]$", b[4].strip())
+                        and not re.match(r"\[\d+\]|[•–-]", c[4])):
+                    bad.append((number, b[4]))
+    return bad
+
+
 def wide_word_gaps(pdf, factor: float = 2.0) -> list[tuple[int, float, str]]:
     """(page, widest gap [pt], line) of every justified body line (11 pt text reaching the text
     block's right edge; not a table's row, a contents line or a display equation's line with
@@ -1290,6 +1329,8 @@ def test_every_report_stays_in_the_text_block(brief, lang, tmp_path, libreoffice
     # must still show it (so that the entry goes when it is fixed)
     spaced = letter_spaced_lines(pdf)
     assert (spaced != []) if (brief, lang) in LETTER_SPACED_OPEN else (spaced == []), spaced
+    # nor a paragraph's line holding a lone word or two ("一周 / 平均 / 636.6 N·m")
+    assert lone_lines(pdf) == []
     # nor an en line with word spaces over twice the normal (templates/report.typ's tracking
     # limits, render/unitjoin.py's lists of relations boxed item by item)
     wide = wide_word_gaps(pdf) if lang == "en" else []
@@ -1910,3 +1951,4 @@ def test_a_figure_whose_text_follows_a_split_table_stands_under_its_text(tmp_pat
     assert caption[0] == found["(continued)"][0]        # on the table's last page
     assert caption < heading                            # above the next section
     assert page_holes(pdf) == [] and tables_interrupted(pdf) == []
+

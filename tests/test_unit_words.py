@@ -217,12 +217,17 @@ def test_a_break_before_a_long_run_is_marked_in_chinese_paragraphs(tmp_path):
           "| a | b |\n|---|---|\n| 转角 $\\varphi = 120.5$ | 细实线 CONSTRUCTION |\n")
     typ = _filtered(tmp_path, md, lang="zh")
     para, table = typ.split("#table", 1) if "#table" in typ else (typ, "")
+    # the mark carries the run's length in characters, counted from the source (an
+    # over-estimate of its width: templates/report.typ's run-break keeps a forced break only
+    # where the run would not fit after the line before it)
+    assert "粗实线#run-break(9);（OUTLINE）、细点画线#run-break(8);（CENTER）" in para   # 2 + 7, 2 + 6
+    para = re.sub(r"#run-break\((\d+)\);", "#run-break;", para)
     assert "动能增量 #run-break;#box($Delta E" in para            # after a space, a boxed formula
     assert "盈亏功 #run-break;$Delta W_max$~=~3499.5~J" in para  # a value joined by no-break spaces
     assert "在 $x$~=~1" in para                                     # "x = 1": too short
     assert "拉直共线#run-break;（#box(" in para                     # the bracket goes with the run
     assert "粗实线#run-break;（OUTLINE）、细点画线#run-break;（CENTER）" in para
-    assert "（#run-break;" not in typ and "run-break" not in table
+    assert "（#run-break" not in typ and "run-break" not in table
     assert "run-break" not in _filtered(tmp_path, md, lang="en")
 
 

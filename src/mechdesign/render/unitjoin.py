@@ -11,7 +11,7 @@ spaces around "×" between two numbers ("1.4 × 10⁻¹⁴ mm"). For typst, whic
 formula after its relation ("$R_{BV} = -1978.4$ N" as "R_BV =" | "−1978.4 N"), a short
 inline formula holding a relation is set in a box (``#box($…$);``), unbroken (a list of
 relations, "$C_v = 2.000, C_a = 4.000$", item by item: a line may break after a comma); in a Chinese
-report's paragraphs ``#run-break;`` marks where a line may break before an unbreakable run of
+report's paragraphs ``#run-break(n);`` marks where a line may break before an unbreakable run of
 six characters or more (templates/report.typ ends the line there unjustified when the run
 went to the next line: justified, its Chinese characters stood apart). It works on pandoc's document
 tree, so formulas, code blocks and file names are never touched; the Markdown itself
@@ -352,7 +352,7 @@ end
 
 -- zh: a line that an unbreakable run does not fit (a boxed formula, "$ΔW$ = 3499.5 J" held
 -- together by no-break spaces, a long Latin word) ends short instead of spreading its
--- characters apart: "#run-break;" (templates/report.typ) goes where a line may break before
+-- characters apart: "#run-break(n);" (templates/report.typ) goes where a line may break before
 -- such a run. Only before a run of at least RUN_MIN characters: a shorter one leaves a gap
 -- too small to matter.
 local RUN_MIN = 6
@@ -452,10 +452,10 @@ local function cuts_in(inlines, i)
           n = n + 1
         end
         if reached then n = n + run_length(inlines, i + 1) end
-        if n >= RUN_MIN then cuts[#cuts + 1] = pos end
+        if n >= RUN_MIN then cuts[#cuts + 1] = {pos, n} end
       elseif k == #chars and is_opening(rest) and starts_run(inlines[i + 1])
              and run_length(inlines, i + 1) + 2 >= RUN_MIN then
-        cuts[#cuts + 1] = pos
+        cuts[#cuts + 1] = {pos, run_length(inlines, i + 1) + 2}
       end
     end
   end
@@ -465,21 +465,23 @@ end
 local function run_breaks(para)
   local inlines = para.content
   local out, changed = {}, false
-  local MARK = function() return pandoc.RawInline("typst", "#run-break;") end
+  -- the mark carries the run's length in characters (typst's run-break estimates its width)
+  local MARK = function(n) return pandoc.RawInline("typst", "#run-break(" .. n .. ");") end
   for i = 1, #inlines do
     local el = inlines[i]
     local lone_opening = el.t == "Str" and is_opening(el.text) and starts_run(inlines[i + 1])
       and run_length(inlines, i + 1) + 2 >= RUN_MIN
     if may_break_before(inlines[i - 1])
        and (lone_opening or (starts_run(el) and run_length(inlines, i) >= RUN_MIN)) then
-      out[#out + 1] = MARK()
+      out[#out + 1] = MARK(lone_opening and run_length(inlines, i + 1) + 2 or run_length(inlines, i))
       changed = true
     end
     if el.t == "Str" then
       local cuts, from = cuts_in(inlines, i), 1
-      for _, pos in ipairs(cuts) do
+      for _, cut in ipairs(cuts) do
+        local pos = cut[1]
         out[#out + 1] = pandoc.Str(el.text:sub(from, pos - 1))
-        out[#out + 1] = MARK()
+        out[#out + 1] = MARK(cut[2])
         from = pos
       end
       if #cuts > 0 then
