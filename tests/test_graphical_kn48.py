@@ -69,7 +69,7 @@ def test_die_cutter_forces_of_a_million_newtons_in_kn(example_results, lang):
     fc = _cutting_force()
     assert fc >= 1e6                       # the brief's 1 MN: the kN position
     sections = _positions(md)
-    big = [s for s in sections.values() if re.search(r"\$F_r\$[^,，。.]*= ", s)
+    big = [s for s in sections.values() if re.search(r"\$F_c\$[^,，。.]*= ", s)
            and "kN" in s]
     assert big, "no position in kN"
     for s in big:
@@ -77,7 +77,7 @@ def test_die_cutter_forces_of_a_million_newtons_in_kn(example_results, lang):
         kin = s[s.index("#### "):]
         assert "10⁶" not in kin and "10^{6}" not in kin and "10⁵" not in kin, kin[:400]
         # the known loads: the cutting force as the brief gives it, in kN
-        assert re.search(rf"\$F_r\$[^=]*= {fc / 1e3:g} kN", kin)
+        assert re.search(rf"\$F_c\$[^=]*= {fc / 1e3:g} kN", kin)
         # the force table in kN, each value its length × μF (μF stated in N/mm)
         assert ("Value /kN" if lang == "en" else "数值 /kN") in kin
         mus = [_num(m) for m in re.findall(r"\\mu_F\$ = ([\d\u202f.]+) N/mm", kin)]

@@ -140,10 +140,10 @@ def test_force_polygons_close(shaper_results, label):
     fc = {x.name: x.value for x in f56.vectors}
     p = shaper_results["params"]
     if label == "4":       # inside the cutting zone: Fc = 1600 N against the motion
-        assert abs(fc["Fr"]) == pytest.approx(p.cutting_force)
+        assert abs(fc["Fc"]) == pytest.approx(p.cutting_force)   # named as Table 1 names it
         assert abs(fc["G6"]) == pytest.approx(p.m6 * p.gravity)
     else:                  # return stroke: no cutting force in the polygon
-        assert "Fr" not in names
+        assert "Fc" not in names
 
 
 def test_default_positions_are_mid_working_and_mid_return(shaper_results):

@@ -186,14 +186,14 @@ def _polygon_grid(s: Sheet, model, polys: dict, chosen: list[str], lab: dict, bo
 def force_symbol(name: str) -> str:
     """A force polygon's vector or moment name with its subscript, as the report writes it
     (render/graphical_report.sym): "R12" → F with R12, "FI4" → F with I4, "G4", "Pb", "Mb",
-    "MI3", "Fr" → G₄, P_b, M_b, M_I3, F_r; other names (with ^ or _) as written."""
+    "MI3", "Fr", "Fc" → G₄, P_b, M_b, M_I3, F_r, F_c; other names (with ^ or _) as written."""
     prime = "'" if name.endswith("'") else ""
     s = name[:-1] if prime else name
-    if "^" in s or "_" in s or len(s) < 2 or not s.startswith(("R", "FI", "Fr", "G", "Pb", "Mb", "M")):
+    if "^" in s or "_" in s or len(s) < 2 or not s.startswith(("R", "FI", "Fr", "Fc", "G", "Pb", "Mb", "M")):
         return name
     if s.startswith("R"):
         return sub("F", s) + prime
-    if s.startswith(("FI", "Fr")):
+    if s.startswith(("FI", "Fr", "Fc")):
         return sub("F", s[1:]) + prime
     return sub(s[0], s[1:]) + prime
 

@@ -360,10 +360,22 @@ def reactions(path: Path, lang: str, phase_deg, named, working_span_deg):
     lab = LABELS[lang]
     peak = max((float(np.max(np.abs(v))) for v in named.values() if len(v)), default=0.0)
     scale, unit = force_unit(peak)
+    # reactions equal over the whole cycle (a two-force member, a massless block: F_R72 =
+    # F_R23 = F_R43) are one curve with one legend entry naming them all; drawn apart, the
+    # last hid the others (page review 48: shaper_lengths, slotter, linkage_sixbar Fig. 5)
+    curves: list[list] = []
+    for name, values in named.items():
+        values = np.asarray(values, dtype=float)
+        same = next((c for c in curves if c[1].shape == values.shape
+                     and np.max(np.abs(c[1] - values), initial=0.0) <= 1e-6 * max(peak, 1e-300)), None)
+        if same is None:
+            curves.append([[name], values])
+        else:
+            same[0].append(name)
     with figure(path, 1, (7.0, 3.6)) as (ax,):
         _phase_axis(ax, working_span_deg)
-        for name, values in named.items():
-            ax.plot(phase_deg, np.asarray(values) / scale, lw=1.1, label=name)
+        for names, values in curves:
+            ax.plot(phase_deg, values / scale, lw=1.1, label=" = ".join(names))
         ax.set_xlabel(lab["phase"])
         ax.set_ylabel(lab["reaction_kn" if unit == "kN" else "reaction"])
         legend(ax, fontsize=7, ncol=4, loc="upper right")

@@ -52,7 +52,7 @@ def sym(s: str) -> str:
     if s.endswith("'"):
         s, prime = s[:-1], "'"
     sup = ""
-    if s.startswith(("R", "FI", "Fr", "G", "Pb", "Mb", "M")) and "_" not in s:
+    if s.startswith(("R", "FI", "Fr", "Fc", "G", "Pb", "Mb", "M")) and "_" not in s:
         if "^" in s:
             s, sup = s.split("^", 1)
             sup = f"^{{{sup}}}"
@@ -60,8 +60,8 @@ def sym(s: str) -> str:
             return f"F_{{{s}}}{sup}{prime}"
         if s.startswith("FI"):
             return f"F_{{I{s[2:]}}}{sup}"
-        if s.startswith("Fr"):
-            return f"F_{{r{s[2:]}}}" if len(s) > 2 else "F_r"
+        if s.startswith(("Fr", "Fc")):     # a resistance (stages.linkage.Resistance.symbol)
+            return f"F_{{{s[1:]}}}" if len(s) > 2 else f"F_{s[1]}"
         if s.startswith("MI"):
             return f"M_{{I{s[2:]}}}"
         if s in ("Pb", "Mb"):

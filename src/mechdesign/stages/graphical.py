@@ -132,7 +132,7 @@ def _graphical_position(model, k, raw, forces, label: str, enlarge: float) -> Gr
         for j, r in enumerate(model.resistances):
             f = complex(forces.resistance[f"R{j + 1}"][i] * np.exp(1j * r.direction))
             loads.setdefault(r.link, []).append(
-                gr.Force(f"Fr{j + 1}" if multi else "Fr", f, pos[r.point]))
+                gr.Force(f"{r.symbol}{j + 1}" if multi else r.symbol, f, pos[r.point]))
         mu_f = {}
         for g in mech.groups:
             if g.links:

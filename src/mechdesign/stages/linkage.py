@@ -56,7 +56,9 @@ class Resistance:
     opposing the point's motion along it: ``working`` [N] in the working stroke,
     ``returning`` [N] in the return stroke. With ``active`` = (from, to) the working
     force acts only while the output's displacement from position 1 lies in that
-    window [m or rad] (a cutting or pressing zone)."""
+    window [m or rad] (a cutting or pressing zone). ``symbol`` names it in the graphical
+    method's equations, polygons and sheets as the machine's data table does ("Fr" → F_r,
+    "Fc" → F_c, "Q"; numbered Fr1, Fr2 … when a linkage has several)."""
 
     link: str
     point: str
@@ -64,6 +66,7 @@ class Resistance:
     working: float
     returning: float = 0.0
     active: tuple[float, float] | None = None
+    symbol: str = "Fr"
 
 
 def link_name(names: dict, key: str, lang) -> str | None:

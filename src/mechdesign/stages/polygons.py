@@ -154,7 +154,7 @@ def polygons(model, k, raw, forces, label: str) -> tuple[Polygon, ...]:
     if forces is None:
         return tuple(out)
     multi = len(model.resistances) > 1
-    external = [(r.link, f"Fr{j + 1}" if multi else "Fr",
+    external = [(r.link, f"{r.symbol}{j + 1}" if multi else r.symbol,
                  complex(forces.resistance[f"R{j + 1}"][i] * np.exp(1j * r.direction)))
                 for j, r in enumerate(model.resistances)]
     out += linkage_force_polygons(

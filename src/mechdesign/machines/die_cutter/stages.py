@@ -211,7 +211,7 @@ def build_press(d: ToggleDesign, p: DieCutterParams) -> LinkageModel:
             m.add(LinkPoint(name, link, origin, length / 2))
             bodies.append(Body(link, mass, name, mass * length ** 2 / 12.0))
     H, t = g.stroke, p.pressing_travel
-    cut = Resistance("6", "D", np.pi / 2, p.cutting_force, 0.0, (H - t, H))
+    cut = Resistance("6", "D", np.pi / 2, p.cutting_force, 0.0, (H - t, H), symbol="Fc")
     names = {"2": Msg.pgettext("link", "crank"), "3": Msg.pgettext("link", "coupler AB"),
              "4": Msg.pgettext("link", "toggle CB"), "5": Msg.pgettext("link", "toggle BD"),
              "6": Msg.pgettext("link", "platen")}

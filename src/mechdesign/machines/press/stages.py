@@ -162,7 +162,7 @@ def model(s: PressSynthesis, p: PressParams) -> lk.LinkageModel:
         bodies=(Body("2", p.m2, "S2", p.J_S2), Body("3", p.m3, "S3", p.J_S3),
                 Body("5", p.m5, "F", 0.0)),
         resistances=(lk.Resistance("5", "F", DOWN, p.pressing_force, 0.0,
-                                   (press_from, p.stroke)),),
+                                   (press_from, p.stroke), symbol="Q"),),
         grid_points=p.grid_points, position_step=p.position_step, gravity=p.gravity,
         flywheel=brief_flywheel(p),
         pressure_angle_limit=p.pressure_angle_max, transmission_angle_min=p.transmission_angle_min,

@@ -65,7 +65,7 @@ def model(syn: Synthesis, p: SlotterParams) -> lk.LinkageModel:
         bodies=(Body("4", p.m4, "S4", p.J_S4), Body("6", p.m6, "S6", 0.0),
                 Body("2", p.G2 / p.gravity, "O2", 0.0)),
         resistances=(lk.Resistance("6", "P", DOWN, p.cutting_force, 0.0,
-                                   (idle, p.stroke - idle)),),
+                                   (idle, p.stroke - idle), symbol="Fc"),),
         grid_points=p.grid_points, position_step=p.position_step, gravity=p.gravity,
         flywheel=brief_flywheel(p),
         special_crank_angles=(0.0, np.pi),   # the crank level with O2O3: the bar at its mid-swing
