@@ -235,7 +235,9 @@ def test_transmission_sheet_draws_the_flywheel(example_results, name):
     ratio = brief["flywheel"]["rim_diameter_mm"] / (belt.d2 * 1e3)
     s = dict(_builders(r, None))["transmission"](TitleInfo("传动系统示意图", "test", number="T-01"), "zh")
     circles = [e for e in s.entities if isinstance(e, Circle) and e.layer == "OUTLINE"]
-    pairs = [(a, b) for a in circles for b in circles if a is not b and abs(a.center - b.center) < 1e-9
+    # the rim dashed (hidden lines: behind the pulley, whose belt runs cross it)
+    rims = [e for e in s.entities if isinstance(e, Circle) and e.layer == "HIDDEN"]
+    pairs = [(a, b) for a in circles for b in rims if abs(a.center - b.center) < 1e-9
              and abs(b.radius / a.radius - ratio) < 1e-9]
     assert len(pairs) == 1
     texts = [plain(e.text) for e in s.entities if isinstance(e, Text)]

@@ -47,8 +47,8 @@ RENDER_MAY_IMPORT = {
     ("mechdesign.stages.drive", "DRIVE_CHECK_NAMES"): "names of the self-checks (zh, en)",
     ("mechdesign.stages.drive", "shaft_numeral"): "the shafts' numbering (0, Ⅰ, Ⅱ …): a look-up "
                                                  "shared by the tables, warnings and sheets",
-    ("mechdesign.stages.drive_strength", "part_name"): "a shaft part's name from its stage's kind "
-                                                       "and role (a catalogue message): a look-up",
+    ("mechdesign.stages.drive_strength", "part_message"): "a shaft part's name from its stored "
+                                                          "code (a catalogue message): a look-up",
     ("mechdesign.machines.eccentric_cam.stages", "DISC_CHECK_NAMES"): "names of the self-checks (zh, en)",
     ("mechdesign.stages.cam", "DIST_LIMIT"): "a tolerance constant printed with its check",
     # names and messages stored as codes (issue 22 point 3), made into text where shown

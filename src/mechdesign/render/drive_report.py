@@ -112,15 +112,10 @@ def _stage_name(kind: str, lang) -> str:
 def _part(part: str, kind: str, d, lang) -> str:
     """A part on a shaft ("the pinion of stage 3", the flywheel) in ``lang``: by its stage
     and its role where the shaft design records them, else by its stage's kind."""
-    from ..stages.drive_strength import part_name
+    from ..stages.drive_strength import part_message
 
-    role, _sep, k = (part or "").partition(":")
-    if role in ("driving", "driven") and k.isdigit() and int(k) < len(d.stages):
-        design = d.stages[int(k)].design
-        msg = part_name(design.kind, role == "driving", int(k)) if design is not None else None
-        if msg is not None:
-            return msg.text(lang)
-    return _stage_name(kind, lang)
+    msg = part_message(part, [s.design for s in d.stages])
+    return msg.text(lang) if msg is not None else _stage_name(kind, lang)
 
 
 def _shaft_name(i: int, last: int, zh: bool) -> str:

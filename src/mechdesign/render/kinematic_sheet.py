@@ -1384,9 +1384,11 @@ def _flywheel_radius(stages, r, idx: int, flywheel) -> float:
 
 
 def _flywheel_rim(view, placer: LabelPlacer, c, radius: float, text: str) -> None:
-    """A flywheel seen end-on: its rim as two concentric circles, named by a leader."""
-    view.circle(c, radius, "OUTLINE", 0.7)
-    view.circle(c, radius - 2.0 / view.scale, "OUTLINE", 0.35)
+    """A flywheel seen end-on: its rim as two concentric circles, named by a leader; dashed,
+    as hidden lines: it sits behind the wheel on its shaft, whose belt runs cross it (drawn
+    solid, the belt's runs crossed the rim: page review 48, the shaper's transmission sheet)."""
+    view.circle(c, radius, "HIDDEN", 0.5)
+    view.circle(c, radius - 2.0 / view.scale, "HIDDEN", 0.35)
     for t in np.linspace(0, 2 * np.pi, 48)[:-1]:
         placer.block(view.p(c + (radius - 1.0 / view.scale) * np.exp(1j * t)), 1.6)
     placer.leader(view.p(c + radius * np.exp(0.75j * np.pi)), text, 3.5, prefer=-1 + 1j)
@@ -1564,6 +1566,7 @@ def drive_schematic(drive, info: TitleInfo, lang: str, flywheel=None) -> Sheet:
         rim = getattr(flywheel, "rim", None)
         notes.append(with_subscripts(gt.pgettext("kinematic sheet", "flywheel on shaft {s}: JF = {J} kg·m²"),
                                      "J_F").format(s=shaft_numeral(fw_idx), J=fmt.sig(flywheel.inertia))
-                     + (f", D = {fmt.length(rim.diameter * MM)} mm" if rim is not None else ""))
+                     + (f", D = {fmt.length(rim.diameter * MM)} mm" if rim is not None else "")
+                     + gt.pgettext("kinematic sheet", " (dashed: behind the wheel on its shaft)"))
     _notes(s, notes)
     return s

@@ -501,6 +501,10 @@ def _place(dp, j, designs, kinds, weight=None, crank=None):
     for i in info:
         if not i["inside"]:
             i["x"] = side.pop(0) if side else span + OVERHANG
+    cranks = [i for i in info if i["name"] == "crank"]
+    if len(cranks) > 1:       # two linkages side by side: named by the bearing each sits beyond
+        for i in cranks:
+            i["part"] = "crank:" + ("A" if i["x"] < 0 else "B")
     return info, span
 
 
@@ -584,6 +588,21 @@ def part_name(kind: str, driving: bool, k: int | None) -> Msg | None:
     return Msg(N_("the {part} of stage {n}"), part=word, n=k + 1)
 
 
+def part_message(code: str, designs) -> Msg | None:
+    """The name of the part stored on a shaft as ``code`` (ShaftDesign.element_parts,
+    KeyDesign.part): "driving:2" → "the pinion of stage 3" (``designs`` the drive stages'
+    designs), "crank:A" → "the crank beyond bearing A" (two linkages side by side: the
+    die-cutter's shaft Ⅲ listed "crank, crank", page review 48); None for a part its kind
+    names (a flywheel, a single crank)."""
+    role, _sep, rest = (code or "").partition(":")
+    if role in ("driving", "driven") and rest.isdigit() and int(rest) < len(designs):
+        design = designs[int(rest)]
+        return part_name(design.kind, role == "driving", int(rest)) if design is not None else None
+    if role == "crank" and rest in ("A", "B"):
+        return Msg(N_("the crank beyond bearing {side}"), side=f"${rest}$")
+    return None
+
+
 def _keys(info, d_end, d_seat, T_of, allow_of, key_length=None):
     """Flat keys at every hub: b × h by the diameter, L the longest standard ≤ hub − 8 mm;
     if the crushing check fails, a longer hub (up to 1.5 d), then two keys at 180°."""
@@ -623,8 +642,8 @@ def _keys(info, d_end, d_seat, T_of, allow_of, key_length=None):
         lab = f"{key.label}×{L * 1e3:g}" + (" ×2" if count == 2 else "")
         # named in the report's language, by its part (page review 48: "Key 28×16×140
         # (closed helical gear pair)" twice on one shaft, which gear was which)
-        element = encode((part_name(d.kind, i["driving"], i["k"]) if d is not None else None)
-                         or Named("transmissions", nm))
+        element = encode((part_name(d.kind, i["driving"], i["k"]) if d is not None
+                          else part_message(i["part"], ())) or Named("transmissions", nm))
         c = replace(c, name=N_("Key {label} ({element_en})"),
                     name_args={"label": lab, "element_zh": element, "element_en": element})
         out.append((KeyDesign(nm, dk, key.b, key.h, L, lw, hub, count, T, c, i["part"]),

@@ -133,14 +133,17 @@ def _construction(path: Path, lang: str, opt, sim, textbook):
         for cc in (cons.c1, cons.c2):
             ax.plot([a_pt.real * MM, cc.real * MM], [a_pt.imag * MM, cc.imag * MM], color="0.3",
                     lw=0.6)
-        r_th = 0.55 * abs(cons.c1 - a_pt)
+        # the arc between the crank pin's circle (B₂ lies on the ray A–C₂) and C: its label
+        # stood on B₂'s (page review 48)
+        crank = best.design.crank
+        r_th = crank + 0.5 * (min(abs(cons.c1 - a_pt), abs(cons.c2 - a_pt)) - crank)
         a1, a2 = np.angle(cons.c1 - a_pt), np.angle(cons.c2 - a_pt)
         lo, hi = min(a1, a2), max(a1, a2)
         _arc(ax, a_pt, r_th, lo, hi, color="C3", lw=1.0)
         mid = a_pt + 1.15 * r_th * np.exp(1j * (lo + hi) / 2)
         _label(ax, mid, "θ", color="C3", ha="center", va="center")
         # crank circle
-        _arc(ax, a_pt, best.design.crank, 0, 2 * np.pi, color="0.6", lw=0.6, ls=":")
+        _arc(ax, a_pt, crank, 0, 2 * np.pi, color="0.6", lw=0.6, ls=":")
         ax.plot([a_pt.real * MM, 0.0], [a_pt.imag * MM, 0.0], color="k", lw=1.2)
         for zz, name in ((a_pt, "A"), (d_pt, "D")):
             ax.plot(zz.real * MM, zz.imag * MM, "ks", ms=5)
