@@ -593,13 +593,15 @@ def part_message(code: str, designs) -> Msg | None:
     KeyDesign.part): "driving:2" → "the pinion of stage 3" (``designs`` the drive stages'
     designs), "crank:A" → "the crank beyond bearing A" (two linkages side by side: the
     die-cutter's shaft Ⅲ listed "crank, crank", page review 48); None for a part its kind
-    names (a flywheel, a single crank)."""
+    names (a single crank); "flywheel" → "the flywheel"."""
     role, _sep, rest = (code or "").partition(":")
     if role in ("driving", "driven") and rest.isdigit() and int(rest) < len(designs):
         design = designs[int(rest)]
         return part_name(design.kind, role == "driving", int(rest)) if design is not None else None
     if role == "crank" and rest in ("A", "B"):
         return Msg(N_("the crank beyond bearing {side}"), side=f"${rest}$")
+    if role == "flywheel":
+        return Msg.pgettext("shaft part", "the flywheel")
     return None
 
 
@@ -609,8 +611,9 @@ def _keys(info, d_end, d_seat, T_of, allow_of, key_length=None):
     out = []
     for i in info:
         d = i["design"]
-        if d is None and i["name"] != "crank":
-            continue                      # a flywheel's weight: no drive stage, no key here
+        # every hub has its key: a stage's wheel, a crank, the flywheel (it carries the
+        # fluctuating torque J_F·ε through its hub; checked with the shaft's design torque,
+        # which bounds it: page review 48 found the flywheel on its shaft without a key)
         if d is not None and d.kind == "worm" and i["driving"]:
             continue                      # the worm is cut on its shaft: no key
         dk = d_seat if i["inside"] or d_end is None else d_end
