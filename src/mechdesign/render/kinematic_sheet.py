@@ -48,6 +48,7 @@ LABELS = LabelTable({
     "cam": pgettext("kinematic sheet", "Cam mechanism (δ = 0, follower at its lowest)"),
     "disc": pgettext("kinematic sheet", "Eccentric disc cam (δ = 0)"),
     "not_scale": pgettext("kinematic sheet", "schematic, not to scale; circles are pitch circles (pulleys: datum circles)"),
+    "not_scale_nobelt": pgettext("kinematic sheet", "schematic, not to scale; circles are pitch circles"),
     "shaft": pgettext("kinematic sheet", "Shaft"),
     "n": pgettext("kinematic sheet", "n (rpm)"),
     "P": "P (kW)",
@@ -1557,7 +1558,10 @@ def drive_schematic(drive, info: TitleInfo, lang: str, flywheel=None) -> Sheet:
             placer.block(q, 2.0)
             placer.place_best(q, shaft_numeral(idx), 3.5, prefer=1 + 1j,
                               gaps=(1.5, 3.0, 5.0))
-    notes = [lab["not_scale"], lab["motor"].format(m=drive.motor.designation)
+    # the pulleys' datum circles named only where there is a belt (the furnace drives have
+    # none: page review 48)
+    belt = any(getattr(st, "type", None) == "belt" for st in drive.stages)
+    notes = [lab["not_scale" if belt else "not_scale_nobelt"], lab["motor"].format(m=drive.motor.designation)
              + f"  P = {fmt.f(drive.motor.power / 1e3, 2)} kW  n = {fmt.f(drive.motor.full_load_rpm, 0)} r/min"]
     if any(it[0] == "shaft" for it in items):
         notes.append(gt.pgettext("kinematic sheet", "a shaft's numeral written twice: the shaft drawn "
