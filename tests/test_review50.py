@@ -47,3 +47,13 @@ def test_the_schematic_names_datum_circles_only_with_a_belt(example_results, nam
         texts = " ".join(plain(e.text) for e in s.entities if isinstance(e, Text))
         assert ("pitch circles" in texts or "节圆" in texts)
         assert (datum in texts) == belt, texts[:300]
+
+
+@pytest.mark.parametrize("name", ["furnace_drive", "shaper"])
+def test_the_ratio_rounding_names_standard_pulleys_only_with_a_belt(example_results, name):
+    belt = any(st.type == "belt" for st in example_results(name)["drive"].stages)
+    for lang, pulleys, teeth in (("en", "standard pulleys", "rounded to whole teeth"),
+                                 ("zh", "标准带轮直径", "再圆整为整数齿数")):
+        md, _ = _markdown(example_results, name, lang)
+        assert teeth in md
+        assert (pulleys in md) == belt, name

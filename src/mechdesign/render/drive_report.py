@@ -283,10 +283,13 @@ def drive_context(d, lang: str, figures: dict[str, str], machine_power_eq: str |
            for a, b in zip(free, free[1:])):
         notes.append(_("a two-stage expanded reducer splits by $i_1 = \\sqrt{1.4 i}$"))
     alloc_notes = _(" ({notes})", notes=_("; ").join(notes)) if notes else ""
+    # standard pulleys only where there is a belt (the furnace drives have none: page review 48)
+    rounding = (_("whole teeth or standard pulleys") if any(st.type == "belt" for st in d.stages)
+                else _("whole teeth"))
     worm = _("; the worm's from its lead angle and friction angle") \
         if any(st.type == "worm" for st in d.stages) else ""
     return {
-        "alloc_notes": alloc_notes, "worm_eff": worm,
+        "alloc_notes": alloc_notes, "rounding": rounding, "worm_eff": worm,
         "eq": eq, "cand_rows": cand_rows, "stage_rows": stage_rows, "shaft_rows": shaft_rows,
         "reason": reason, "oversize": _motor_note(d, _),
         "motor": {"name": m.designation, "P": f(m.power / 1e3, 2), "sync": f(m.synchronous_rpm, 0),

@@ -613,7 +613,7 @@ def _keys(info, d_end, d_seat, T_of, allow_of, key_length=None):
         d = i["design"]
         # every hub has its key: a stage's wheel, a crank, the flywheel (it carries the
         # fluctuating torque J_F·ε through its hub; checked with the shaft's design torque,
-        # which bounds it: page review 48 found the flywheel on its shaft without a key)
+        # which bounds it: note 49 found the flywheel on its shaft without a key)
         if d is not None and d.kind == "worm" and i["driving"]:
             continue                      # the worm is cut on its shaft: no key
         dk = d_seat if i["inside"] or d_end is None else d_end
