@@ -293,7 +293,7 @@ def test_disc_geometry_against_plane_geometry():
 
 def test_disc_checks_pass(disc):
     v = disc["disc_verification"]
-    assert len(v.checks) == 9 and all(c.passed for c in v.checks)
+    assert len(v.checks) == 12 and all(c.passed for c in v.checks)   # 4 per follower
     strokes = {c.detail["label"]: c.detail["stroke"] / MM for c in by_key(v, "disc_stroke")}
     # (a) 2ε; (b) √(60² − 15²) − √(20² − 15²); (c) 2ε
     assert strokes["(a)"] == pytest.approx(40.0, abs=1e-6)

@@ -1011,6 +1011,7 @@ class DiscMotion:
     centre: np.ndarray          # disc centre in the frame (complex) [m]
     y_min: float
     y_max: float
+    alpha_max: float = 0.0      # the largest pressure angle over the turn, exact [rad]
 
     @property
     def stroke(self) -> float:
@@ -1025,7 +1026,9 @@ def eccentric_disc(delta, radius: float, eccentricity: float, follower: Translat
     knife edge (r_r = 0) or roller, y = C_y + R for a flat face; the pressure angle of a knife
     edge or roller is sin α = |x_f − C_x| / (R + r_r), of a flat face 0. The lowest and highest
     positions are where the common normal passes through the axis:
-    y = √((R + r_r ∓ ε)² − x_f²)."""
+    y = √((R + r_r ∓ ε)² − x_f²). The largest pressure angle over the turn is where the disc
+    centre is farthest from the follower's line, |x_f − C_x| = |x_f| + ε:
+    sin α_max = (|x_f| + ε)/(R + r_r) (0 for a flat face)."""
     sigma = 1 if rotation > 0 else -1
     d = np.asarray(delta, dtype=float)
     C = eccentricity * np.exp(1j * (-np.pi / 2 + sigma * d))
@@ -1035,6 +1038,7 @@ def eccentric_disc(delta, radius: float, eccentricity: float, follower: Translat
         y = C.imag + radius
         dy = C1.imag
         alpha = np.zeros_like(d)
+        alpha_max = 0.0
         y_min, y_max = radius - eccentricity, radius + eccentricity
     else:
         Rp = radius + _roller(follower)
@@ -1048,6 +1052,7 @@ def eccentric_disc(delta, radius: float, eccentricity: float, follower: Translat
         y = C.imag + root
         dy = C1.imag + dx * C1.real / root
         alpha = np.arcsin(np.abs(dx) / Rp)
+        alpha_max = float(np.arcsin((abs(x) + eccentricity) / Rp))
         y_min = float(np.sqrt((Rp - eccentricity) ** 2 - x * x))
         y_max = float(np.sqrt((Rp + eccentricity) ** 2 - x * x))
-    return DiscMotion(d, y, dy, y - y_min, alpha, C, float(y_min), float(y_max))
+    return DiscMotion(d, y, dy, y - y_min, alpha, C, float(y_min), float(y_max), alpha_max)

@@ -574,9 +574,14 @@ def key_rows(machine: str, document: dict, lang: str) -> list[list[str]]:
     rows += _asked_rows(document, lang)
     for fol in document.get("followers") or ():        # the disc cam's followers
         text = _show(fol.get("stroke"), 1e3, "mm")
+        label = md_text(str(fol.get("label", "")))
         if text is not None:
-            label = md_text(str(fol.get("label", "")))
             rows.append([_("{label} follower stroke", label=label), text, "mm"])
+        # the task asks for the pressure angles too (page review 48: cam_7_1's summary gave
+        # only the strokes)
+        alpha = _show(fol.get("max_pressure_angle"), 180.0 / math.pi, "°")
+        if alpha is not None:
+            rows.append([_("{label} largest pressure angle", label=label), alpha, "°"])
     return rows
 
 

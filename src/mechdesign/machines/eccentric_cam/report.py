@@ -61,7 +61,7 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
         followers.append({"label": md_text(label), "desc": _describe(fol, lang), "y": y_eq, "h": h_eq, "alpha": a_eq,
                           "stroke": f(m.stroke * MM, 2), "ymin": f(m.y_min * MM, 2),
                           "ymax": f(m.y_max * MM, 2),
-                          "alpha_max": f(float(np.max(m.pressure_angle)) * DEG, 2)})
+                          "alpha_max": f(m.alpha_max * DEG, 2)})
     head = ["$\\delta$/°"] + [f"{md_text(label)} $s$/mm" for label, _ in p.followers] + \
         [f"{md_text(label)} $\\alpha$/°" for label, _ in p.followers]
     rows = []

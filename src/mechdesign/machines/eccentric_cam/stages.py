@@ -39,6 +39,7 @@ DISC_CHECK_NAMES = CheckNames({
     "disc_s": N_("displacement: line–disc intersection vs closed form"),
     "disc_alpha": N_("pressure angle: three-centre theorem vs closed form"),
     "disc_stroke": N_("stroke from the extremes of the displacement"),
+    "disc_alpha_max": N_("largest pressure angle: three-centre theorem vs closed form"),
 })
 
 
@@ -118,6 +119,15 @@ def verify_disc(d: DiscResult) -> DiscVerification:
                                 DISC_ALPHA_LIMIT, detail={"label": label, "queries": len(qy.delta)}))
         checks.append(SelfCheck("disc_stroke", abs((y_max - y_min) - mo.stroke), DISC_S_LIMIT,
                                 reference=mo.stroke, detail={"label": label, "stroke": y_max - y_min}))
+        # the largest pressure angle: the three-centre angles' largest over the grid, refined
+        # by the parabola through the three points about it, against the closed form
+        aa = alpha[:len(d.grid_delta) - 1]
+        k = int(np.argmax(aa))
+        a, b, c_ = aa[(k - 1) % N], aa[k], aa[(k + 1) % N]
+        den = a - 2 * b + c_
+        a_top = b - (c_ - a) ** 2 / (8 * den) if den != 0 else b
+        checks.append(SelfCheck("disc_alpha_max", abs(a_top - mo.alpha_max), DISC_ALPHA_LIMIT,
+                                reference=mo.alpha_max, detail={"label": label}))
     return DiscVerification(tuple(checks), tuple(failed_findings(checks, DISC_CHECK_NAMES)))
 
 
@@ -150,6 +160,8 @@ class DiscFollower:
     y_min: float = q("m", "lowest height of the follower point")
     y_max: float = q("m", "highest height of the follower point")
     stroke: float = q("m", "stroke h = y_max − y_min")
+    max_pressure_angle: float = q("rad", "largest pressure angle over the turn, exact: "
+                                  "sin α_max = (|e| + ε)/(R + r_r); 0 for a flat face")
     table: DiscTable = q("", "at the brief's table step, 0 … 360° inclusive")
     queries: DiscTable = q("", "at the brief's query angles")
 
@@ -179,7 +191,7 @@ def disc_results_document(r: dict) -> EccentricCamResults:
         eccentricity=d.params.eccentricity,
         followers=tuple(
             DiscFollower(label, f.kind, f.offset, f.roller_radius, m.y_min, m.y_max, m.stroke,
-                         DiscTable(t.delta, t.s, t.pressure_angle),
+                         m.alpha_max, DiscTable(t.delta, t.s, t.pressure_angle),
                          DiscTable(qm.delta, qm.s, qm.pressure_angle))
             for (label, f), m, t, qm in zip(d.params.followers, d.motions, d.tables, d.queries)),
         verification=(None if r.get("disc_verification") is None
