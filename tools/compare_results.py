@@ -310,6 +310,9 @@ EXPECTED["stem:shaper"] = EXPECTED.get("stem:shaper", []) + [(path, _FLY35 + "; 
 # lowest contact point (tests/test_gears.py).
 _ZMIN35 = "issue 19 (session 35): z_min = 17, the textbook's (2h_a*/sin²α = 17.10 rounded)"
 _expect(("shaper", "slotter", "press"), [(f"gear.pair.{leaf}", _ZMIN35) for leaf in ("z_min", "x_min1", "x_min2")])
+# session 50: the disc cam's largest pressure angle checked exactly (3 checks appended)
+EXPECTED["eccentric_cam"] = EXPECTED.get("eccentric_cam", []) + [
+    ("verification.checks.__len__", "session 50: a self-check of the largest pressure angle per follower")]
 EXPECTED["press"] += [(f"gear.pair.{leaf}", _ZMIN35 + "; the press's pair standard: x1 = x2 = 0")
                       for leaf in ("g1.*", "g2.*", "contact_ratio", "action_length")]
 _expect(("drive", "furnace_pusher", "die_cutter"), [

@@ -97,6 +97,7 @@ def verify_disc(d: DiscResult) -> DiscVerification:
         x_pole = sigma * dy
         return y, np.arctan2(np.abs(x_pole - fol.offset), y)
 
+    tops = []          # the largest pressure angles' checks, after the others (session 50)
     for (label, fol), mo, qy in zip(p.followers, d.motions, d.queries):
         # the fine grid and the brief's query angles together
         delta = np.concatenate([d.grid_delta, qy.delta])
@@ -126,8 +127,9 @@ def verify_disc(d: DiscResult) -> DiscVerification:
         a, b, c_ = aa[(k - 1) % N], aa[k], aa[(k + 1) % N]
         den = a - 2 * b + c_
         a_top = b - (c_ - a) ** 2 / (8 * den) if den != 0 else b
-        checks.append(SelfCheck("disc_alpha_max", abs(a_top - mo.alpha_max), DISC_ALPHA_LIMIT,
-                                reference=mo.alpha_max, detail={"label": label}))
+        tops.append(SelfCheck("disc_alpha_max", abs(a_top - mo.alpha_max), DISC_ALPHA_LIMIT,
+                              reference=mo.alpha_max, detail={"label": label}))
+    checks += tops
     return DiscVerification(tuple(checks), tuple(failed_findings(checks, DISC_CHECK_NAMES)))
 
 
