@@ -78,6 +78,14 @@ def disc_geometric(delta, radius: float, eccentricity: float, follower, rotation
     return -b + np.sqrt(b * b - q)                      # t = y, the upper crossing
 
 
+def _vertex(values, k: int) -> float:
+    """The extreme of the parabola through the periodic samples k − 1, k, k + 1."""
+    n = len(values)
+    a, b, c = values[(k - 1) % n], values[k], values[(k + 1) % n]
+    den = a - 2 * b + c
+    return float(b - (c - a) ** 2 / (8 * den)) if den != 0 else float(b)
+
+
 def verify_disc(d: DiscResult) -> DiscVerification:
     """Each follower's displacement from the line–circle intersection (inversion), its
     pressure angle from the three-centre theorem (the normal passes through the relative
@@ -105,13 +113,7 @@ def verify_disc(d: DiscResult) -> DiscVerification:
         # extremes over the periodic grid, refined by the parabola through the three points
         # about the grid extreme
         yy = y[:len(d.grid_delta) - 1]
-        N = len(yy)
-        ext = []
-        for k in (int(np.argmin(yy)), int(np.argmax(yy))):
-            a, b, c_ = yy[(k - 1) % N], yy[k], yy[(k + 1) % N]
-            den = a - 2 * b + c_
-            ext.append(b - (c_ - a) ** 2 / (8 * den) if den != 0 else b)
-        y_min, y_max = ext
+        y_min, y_max = (_vertex(yy, int(np.argmin(yy))), _vertex(yy, int(np.argmax(yy))))
         s_ref = np.concatenate([mo.s, qy.s])
         a_ref = np.concatenate([mo.pressure_angle, qy.pressure_angle])
         checks.append(SelfCheck("disc_s", float(np.max(np.abs((y - y_min) - s_ref))), DISC_S_LIMIT,
@@ -123,10 +125,7 @@ def verify_disc(d: DiscResult) -> DiscVerification:
         # the largest pressure angle: the three-centre angles' largest over the grid, refined
         # by the parabola through the three points about it, against the closed form
         aa = alpha[:len(d.grid_delta) - 1]
-        k = int(np.argmax(aa))
-        a, b, c_ = aa[(k - 1) % N], aa[k], aa[(k + 1) % N]
-        den = a - 2 * b + c_
-        a_top = b - (c_ - a) ** 2 / (8 * den) if den != 0 else b
+        a_top = _vertex(aa, int(np.argmax(aa)))
         tops.append(SelfCheck("disc_alpha_max", abs(a_top - mo.alpha_max), DISC_ALPHA_LIMIT,
                               reference=mo.alpha_max, detail={"label": label}))
     checks += tops
