@@ -486,13 +486,16 @@ def actual_profile_mm(c) -> np.ndarray:
 
 
 def _tangent_runs(a: complex, r1: float, b: complex, r2: float) -> list[tuple[complex, complex]]:
-    """The two outer tangents of circles (a, r1) and (b, r2): an open chain's runs."""
+    """The two outer tangents of circles (a, r1) and (b, r2): an open chain's or belt's runs.
+    The unit normal n of a run (from the centres to the run) satisfies (b − a)·n = r1 − r2, so
+    it leans from the perpendicular towards the smaller circle by arcsin((r2 − r1)/|b − a|)
+    (leaned the other way, the runs cut the larger circle: the shaper's V-belt, page review 51)."""
     d = b - a
     u = d / abs(d)
     ang = np.arcsin((r2 - r1) / abs(d))
     out = []
     for sgn in (1, -1):
-        nrm = 1j * u * np.exp(-1j * sgn * ang) * sgn
+        nrm = 1j * u * np.exp(1j * sgn * ang) * sgn
         out.append((a + r1 * nrm, b + r2 * nrm))
     return out
 
