@@ -47,3 +47,13 @@ def test_a_motion_longer_than_the_return_stroke_fails(example_results):
 def test_the_press_oil_pump_cam_is_not_phased(example_results):
     """The press's cam drives the oil pump: nothing ties it to the return stroke."""
     assert example_results("press").get("cam_phase") is None
+
+
+@pytest.mark.parametrize("lang", ["zh", "en"])
+def test_phase_symbol_is_not_the_followers_initial_angle(handin_reports, lang):
+    # page review 51: the cam data table named the crank angle at δ = 0 "φ0", which the
+    # oscillating follower's equations use for its initial angle (φ0 = arccos …, 21.37°)
+    md, _ = handin_reports("shaper", lang)
+    assert "\\varphi_0 = \\arccos" in md                 # the follower's initial angle
+    rows = [line for line in md.splitlines() if "= 0" in line and line.startswith("| $\\varphi")]
+    assert rows and all(row.startswith("| $\\varphi_{\\delta=0}$ |") for row in rows), rows

@@ -175,7 +175,9 @@ def cam_phase(ph, lang: str) -> tuple[list[str], list[str]]:
 
     _ = tr(lang)
     deg = 180 / math.pi
-    data = ["$\\varphi_0$", _("crank angle at $\\delta$ = 0 (the return stroke begins)"),
+    # (not φ0: the oscillating follower's cam section names its initial angle so, eq. "φ0 =
+    # arccos …": one symbol, two meanings; page review 51)
+    data = ["$\\varphi_{\\delta=0}$", _("crank angle at $\\delta$ = 0 (the return stroke begins)"),
             f(ph.crank_angle * deg, 2), "°"]
     check = [_("follower's motion within the return stroke"), f"{f(ph.motion * deg, 2)}°",
              f"≤ {f(ph.return_span * deg, 2)}°", verdict(ph.passed, lang)]
