@@ -1952,3 +1952,22 @@ def test_a_figure_whose_text_follows_a_split_table_stands_under_its_text(tmp_pat
     assert caption < heading                            # above the next section
     assert page_holes(pdf) == [] and tables_interrupted(pdf) == []
 
+
+
+def test_zh_strong_text_is_set_in_the_sans_face(tmp_path):
+    # page review 51: the shipped CJK fonts have the regular weight only, so a zh report's
+    # "**题目：**" printed as the text around it (lockbeam zh: "粗体并打 ✓ 者为所选" with
+    # nothing bold). Chinese typesetting marks it in the sans face (黑体); en keeps its bold.
+    import pymupdf
+
+    md = "# 一\n\n**题目：** 锁梁自动成型机床扳弯机构设计。\n"
+
+    def fonts(lang):
+        doc = pymupdf.open(_render(tmp_path, md, lang))
+        spans = [s for page in doc for b in page.get_text("dict")["blocks"] for line in b.get("lines", ())
+                 for s in line["spans"]]
+        return ({s["font"] for s in spans if "题目" in s["text"]},
+                {s["font"] for s in spans if "锁梁" in s["text"]})
+
+    strong, plain = fonts("zh")
+    assert strong and plain and all("Sans" in f for f in strong) and all("Serif" in f for f in plain)
