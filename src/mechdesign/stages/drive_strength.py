@@ -1223,7 +1223,8 @@ def _coupling_step(c: CouplingChoice, d_min: float, motor) -> dict:
     DE = _mmf(c.motor_d) + (f" × {_mmf(c.motor_e)}" if c.motor_e else "")
     ka = (Msg(N_("$K_A$ = {KA} (given in the brief)"), KA=f"{c.KA:g}") if c.KA_given
           else Msg(N_("$K_A$ = 1 ($T$ is the cycle's peak torque, which contains the load variations)"))
-          if c.peak else Msg(N_("$K_A$ = {KA} (table 14-1)"), KA=f"{c.KA:g}"))
+          if c.peak else Msg(N_("$K_A$ = {KA} (the coupling's working factor, table 14-1, not the "
+                                 "gears' application factor)"), KA=f"{c.KA:g}"))
     if c.size is None:
         return _step(N_("the end joins the motor {motor} (shaft extension $D \\times E$ = {DE} mm) through a "
                         "coupling; the course guides take $d \\approx (0.8 \\ldots 1.2) D$ so that one "

@@ -1,0 +1,26 @@
+"""Page review 51, B findings on wording (the rendered reports):
+- the furnace drive's coupling step said "K_A = 1.3 (table 14-1)" beside Table 1's
+  "K_A application factor 1.00": one symbol, two values, unexplained there (濮良贵, 机械设计,
+  table 14-1 is the coupling's working factor, T_ca = K_A T);
+- the die-cutter's chosen-values lead-in said that changing the brief recomputes the report
+  (a program's words in a hand-in), and its flywheel placement kept "the brief's" mean
+  diameter, which Table 2 lists as a value chosen in this design."""
+import pytest
+
+
+@pytest.mark.parametrize("lang, words", [
+    ("en", "$K_A$ = 1.3 (the coupling's working factor, table 14-1, not the gears' application factor)"),
+    ("zh", "$K_A$ = 1.3（联轴器工况系数，表 14-1，非齿轮的使用系数）"),
+])
+def test_the_couplings_factor_is_told_apart_from_the_gears(handin_reports, lang, words):
+    md, _ = handin_reports("furnace_drive", lang)
+    assert words in md
+    assert "$K_A$ = 1.3 (table 14-1)" not in md and "$K_A$ = 1.3（表 14-1）" not in md
+
+
+@pytest.mark.parametrize("lang", ["zh", "en"])
+def test_the_die_cutters_report_speaks_of_the_design_not_the_program(handin_reports, lang):
+    md, _ = handin_reports("die_cutter", lang)
+    for words in ("recomputes the report", "报告随之重算", "the brief's mean diameter", "设计任务书的值"):
+        assert words not in md
+    assert ("chosen in @tbl:dc-choices" in md) if lang == "en" else ("@tbl:dc-choices 选定的 $D$" in md)
