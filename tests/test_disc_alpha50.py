@@ -56,3 +56,19 @@ def test_the_summary_states_the_largest_pressure_angles(example_results, lang):
     word = "最大压力角" if lang == "zh" else "largest pressure angle"
     rows = [line for line in summary.splitlines() if word in line and line.startswith("|")]
     assert [row.split("|")[2].strip() for row in rows] == ["30.00", "61.04", "19.47"]
+
+
+@pytest.mark.parametrize("lang", ["zh", "en"])
+def test_the_verification_table_shows_every_check(handin_reports, lang):
+    # page review 51: Table 3 listed 9 checks while the summary counted 12 (the three
+    # largest-pressure-angle checks were not printed); each follower's row gives the
+    # three-centre theorem's largest angle beside the closed form (30.00°, 61.04°, 19.47°
+    # by hand: sin α_max = (|x_f| + ε)/(R + r_r), see test_the_examples_angles_by_hand)
+    md, _ = handin_reports("cam_7_1", lang)
+    word = "解析" if lang == "zh" else "closed form"
+    rows = [line for line in md.splitlines() if f"{word} $\\alpha_{{max}}$ =" in line]
+    assert len(rows) == 3
+    for row, top in zip(rows, ("30.000", "61.045", "19.471")):
+        cells = [c.strip() for c in row.strip("|").split("|")]
+        assert cells[1] == f"{top}°" and cells[2].endswith(f"= {top}°"), cells
+    assert ("12 项校核" in md) if lang == "zh" else ("12 checks" in md)

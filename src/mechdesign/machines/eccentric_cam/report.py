@@ -116,6 +116,10 @@ def verification_context(v, lang: str) -> dict:
         elif k.key == "disc_stroke":
             rows.append([name, f"{f(k.detail['stroke'] * MM, 3)} mm",
                          _("closed form h = {reference} mm", reference=f(k.reference * MM, 3)), ok])
+        elif k.key == "disc_alpha_max":
+            # (page review 51: the three checks were counted in the summary, not shown here)
+            rows.append([name, f"{f(k.detail['top'] * DEG, 3)}°",
+                         _("closed form $\\alpha_{{max}}$ = {reference}°", reference=f(k.reference * DEG, 3)), ok])
     return {"verify_rows": rows, "findings": [md_text(w.text(lang)) for w in v.warnings],
             "verify_note": _(_NOTE)}
 

@@ -127,7 +127,7 @@ def verify_disc(d: DiscResult) -> DiscVerification:
         aa = alpha[:len(d.grid_delta) - 1]
         a_top = _vertex(aa, int(np.argmax(aa)))
         tops.append(SelfCheck("disc_alpha_max", abs(a_top - mo.alpha_max), DISC_ALPHA_LIMIT,
-                              reference=mo.alpha_max, detail={"label": label}))
+                              reference=mo.alpha_max, detail={"label": label, "top": float(a_top)}))
     checks += tops
     return DiscVerification(tuple(checks), tuple(failed_findings(checks, DISC_CHECK_NAMES)))
 
