@@ -24,3 +24,24 @@ def test_the_die_cutters_report_speaks_of_the_design_not_the_program(handin_repo
     for words in ("recomputes the report", "报告随之重算", "the brief's mean diameter", "设计任务书的值"):
         assert words not in md
     assert ("chosen in @tbl:dc-choices" in md) if lang == "en" else ("@tbl:dc-choices 选定的 $D$" in md)
+
+
+@pytest.mark.parametrize("lang", ["zh", "en"])
+def test_every_velocity_compared_was_constructed(handin_reports, lang):
+    # page review 51 (press position 10): link 2 turns so slowly there (v_CB = 0.005 m/s) that
+    # v_S2B rounds to no length on the drawing, and the construction of v_S2 was left out of
+    # the vector equations while the graphical-against-analytic table compared its value.
+    # Every centre of mass's v_S / a_S compared at a position has its row among that
+    # position's vector tables (the image method: v_S2 = v_B + v_S2B).
+    import re
+
+    md, _ = handin_reports("press", lang)
+    parts = re.split(r"^## .*?(?=\d)(\d+)", md, flags=re.M)
+    checked = 0
+    for k in range(1, len(parts) - 1, 2):
+        body = parts[k + 1]
+        compared = set(re.findall(r"^\| \$([va]_\{S\d\})\$ \| m/s", body, flags=re.M))
+        built = set(re.findall(r"^\| \$([va]_\{S\d\})\$ \| (?:\?|√|[\d.]+) \|", body, flags=re.M))
+        assert compared <= built, (parts[k], compared - built)
+        checked += len(compared)
+    assert checked >= 8          # v and a of S2, S3 at positions 5 and 10

@@ -639,8 +639,11 @@ def _kin(poly, lang: str, unit: str, rate_name: str, links: dict | None = None,
     groups: list[dict] = []
     for eq in poly.equations:
         rel = [t for t in eq.left + eq.right if t.kind != "absolute"]
-        if rel and all(t.known and t.length == 0 for t in rel):
+        if rel and all(t.known and t.length == 0 and not t.computed for t in rel):
             continue        # a point of a link in translation: the same vector as its origin
+        # (a link turning so slowly that its relative vector rounds to no length on the
+        # drawing keeps its equation: the point's vector is measured and compared later;
+        # page review 51, press position 10: v_S2 compared in Table 25, never constructed)
         # a new table for each group whose equation has unknowns; a further point of a link
         # already solved (every magnitude known: v_B = v_BO3) joins the table before it
         solved = all(t.known for t in eq.left + eq.right)
