@@ -77,12 +77,12 @@ def test_the_lockbeams_lift_is_the_number_its_formula_uses(tmp_path_factory, lan
 @pytest.mark.parametrize("lang", ["zh", "en"])
 def test_the_rims_proportion_and_specific_weight_are_stated_as_used(tmp_path_factory, name, lang):
     md = _md(tmp_path_factory, name, lang)
-    width = re.search(r"b = \\sqrt\{\\frac\{4 g J_F\}\{\\pi D\^3 \(H/b\) \\gamma\}\} = \\sqrt\{\\frac\{[^}]*\}"
+    width = re.search(r"b = \\sqrt\{\\frac\{4 g J_F\}\{\\pi D\^3 \(H_F/b\) \\gamma\}\} = \\sqrt\{\\frac\{[^}]*\}"
                       r"\{\\pi \\times [\d.]+\^3 \\times ([\d.]+) \\times (\d+)\}\}", md)
     assert width, "no rim width formula"
     hb, gamma = width[1], width[2]
     before = md[:width.start()]
-    assert re.search(rf"\$H/b\$ = {re.escape(hb)}", before)
+    assert re.search(rf"\$H_F/b\$ = {re.escape(hb)}", before)
     stated = re.findall(r"\$\\gamma\$ = ([\d\u202f ]+) N/m³", before)
     assert stated and stated[-1].replace("\u202f", "").replace(" ", "") == gamma
 

@@ -45,3 +45,15 @@ def test_every_velocity_compared_was_constructed(handin_reports, lang):
         assert compared <= built, (parts[k], compared - built)
         checked += len(compared)
     assert checked >= 8          # v and a of S2, S3 at positions 5 and 10
+
+
+@pytest.mark.parametrize("name", ["shaper", "shaper_lengths", "die_cutter", "press"])
+@pytest.mark.parametrize("lang", ["zh", "en"])
+def test_the_rims_height_is_not_the_stroke(handin_reports, name, lang):
+    # page review 51 (shaper_lengths p.17/19): "height H = 233.7 mm" of the flywheel rim,
+    # while H is the ram's stroke (298.29 mm) everywhere else; the rim's height is H_F
+    md, _ = handin_reports(name, lang)
+    if "J_F" not in md or "\\gamma" not in md:
+        pytest.skip("no rim flywheel in this report")
+    assert "H_F/b" in md and "$H/b$" not in md and "(H/b)" not in md
+    assert "height $H$ =" not in md and "高 $H$ =" not in md

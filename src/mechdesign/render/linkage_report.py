@@ -580,7 +580,7 @@ def linkage_context(model, k, f_, fly, v, figures: dict, lang: str,
                 "mass_note": carried_note(_, [("J_F", sig(fly.inertia), j_mass)]),
                 # the numbers substituted, as the shaper's chapter writes them (page review 41:
                 # the press's γ, the rim material's specific weight, was never given a value)
-                "width": (rf"b = \sqrt{{\frac{{4 g J_F}}{{\pi D^3 (H/b) \gamma}}}} = \sqrt{{\frac{{4 \times "
+                "width": (rf"b = \sqrt{{\frac{{4 g J_F}}{{\pi D^3 (H_F/b) \gamma}}}} = \sqrt{{\frac{{4 \times "
                           rf"{f(model.gravity, 2)} \times {sig(fly.inertia, group=False)}}}{{\pi \times "
                           rf"{f(rim.diameter, 3)}^3 \times {f(spec.height_to_width, 2)} \times "
                           rf"{f(spec.specific_weight, 0)}}}}} = {f(rim.width * 1e3, 1)}\ \text{{mm}}"),

@@ -475,7 +475,7 @@ def _flywheel(r, p, b, _) -> dict:
         "mass": (rf"m = \frac{{4 J_F}}{{D^2}} = \frac{{4 \times {j_mass}}}"
                  rf"{{{f(fl.rim.diameter, 3)}^2}} = {f(fl.rim.rim_mass, 2)}\ \text{{kg}}"),
         "mass_note": carried_note(_, [("J_F", f(fl.inertia, 3), j_mass)]),
-        "width": (rf"b = \sqrt{{\frac{{4 g J_F}}{{\pi D^3 (H/b) \gamma}}}} = \sqrt{{\frac{{4 \times "
+        "width": (rf"b = \sqrt{{\frac{{4 g J_F}}{{\pi D^3 (H_F/b) \gamma}}}} = \sqrt{{\frac{{4 \times "
                   rf"{f(p.gravity, 2)} \times {f(fl.inertia, 3)}}}{{\pi \times "
                   rf"{f(fl.rim.diameter, 3)}^3 \times {f(p.rim_height_to_width, 2)} \times "
                   rf"{f(p.specific_weight, 0)}}}}} = {f(fl.rim.width * MM, 1)}\ \text{{mm}}"),
@@ -508,7 +508,7 @@ def _placement(r, p, b, _) -> dict:
     a, o = cmp_.chosen, cmp_.other
     rows = [[_("flywheel shaft speed $n$ (nominal) /rpm"), f(a.speed_rpm, 2), f(o.speed_rpm, 2)],
             [_("flywheel $J_F$ /kg·m²"), _inertia(a.inertia), _inertia(o.inertia)],
-            [_("rim $D$ × $b$ × $H$ /mm"), " × ".join(f(x * MM, 0) for x in (a.rim.diameter, a.rim.width, a.rim.height)),
+            [_("rim $D$ × $b$ × $H_F$ /mm"), " × ".join(f(x * MM, 0) for x in (a.rim.diameter, a.rim.width, a.rim.height)),
              " × ".join(f(x * MM, 0) for x in (o.rim.diameter, o.rim.width, o.rim.height))],
             [_("rim mass /kg"), f(a.rim.rim_mass, 1, group=True), f(o.rim.rim_mass, 1, group=True)]]
     for ga, go in zip(a.gears, o.gears):

@@ -205,7 +205,7 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
         "mass": (rf"m = \frac{{4 J_F}}{{D^2}} = \frac{{4 \times {j_mass}}}"
                  rf"{{{f(fl.rim.diameter, 3)}^2}} = {f(fl.rim.rim_mass, 2)}\ \text{{kg}}"),
         "mass_note": carried_note(_, [("J_F", sig(fl.inertia), j_mass)]),
-        "width": (rf"b = \sqrt{{\frac{{4 g J_F}}{{\pi D^3 (H/b) \gamma}}}} = \sqrt{{\frac{{4 \times "
+        "width": (rf"b = \sqrt{{\frac{{4 g J_F}}{{\pi D^3 (H_F/b) \gamma}}}} = \sqrt{{\frac{{4 \times "
                   rf"{f(p.gravity, 2)} \times {sig(fl.inertia, group=False)}}}{{\pi \times "
                   rf"{f(fl.rim.diameter, 3)}^3 \times {f(p.rim_height_to_width, 2)} \times "
                   rf"{f(p.specific_weight, 0)}}}}} = {f(fl.rim.width * mm, 1)}\ \text{{mm}}"),
