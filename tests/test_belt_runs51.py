@@ -37,3 +37,40 @@ def test_runs_touch_both_wheels(a, r1, b, r2):
         assert abs(((q - b) * t.conjugate()).real) < 1e-9
         sides.append(np.sign(da))
     assert sides[0] == -sides[1]             # one run on each side of the centre line
+
+
+@pytest.mark.e2e
+def test_the_transmission_sheets_belt_runs_are_tangent(tmp_path):
+    # the transmission schematic drew its belts with a copy of the tangent construction that
+    # kept the old sign (the shaper's sheet, after _tangent_runs was mended): every straight
+    # run that joins two wheel circles of the DXF touches both (distance of each centre from
+    # the run's line = its radius)
+    import ezdxf
+    from typer.testing import CliRunner
+
+    from mechdesign.cli import app
+
+    out = tmp_path / "shaper"
+    r = CliRunner().invoke(app, ["run", "designs/shaper.yaml", "--lang", "en", "--format", "dxf",
+                                 "--out", str(out)])
+    assert r.exit_code == 0, r.output
+    msp = ezdxf.readfile(out / "sheets" / "transmission_A3.dxf").modelspace()
+    circles = [(complex(c.dxf.center.x, c.dxf.center.y), c.dxf.radius) for c in msp.query("CIRCLE")
+               if c.dxf.layer == "OUTLINE" and c.dxf.radius > 2.0]
+
+    def on(p):
+        return [k for k, (c, rr) in enumerate(circles) if abs(abs(p - c) - rr) < 1e-6]
+
+    runs = 0
+    for ln in msp.query("LINE"):
+        p0, p1 = complex(ln.dxf.start.x, ln.dxf.start.y), complex(ln.dxf.end.x, ln.dxf.end.y)
+        ends0, ends1 = on(p0), on(p1)
+        pairs = [(i, j) for i in ends0 for j in ends1 if i != j]
+        if not pairs or abs(p1 - p0) < 1.0:
+            continue
+        i, j = pairs[0]
+        t = (p1 - p0) / abs(p1 - p0)
+        for c, rr in (circles[i], circles[j]):
+            assert abs(abs((np.conj(t) * (c - p0)).imag) - rr) < 1e-6
+        runs += 1
+    assert runs == 2                       # the V-belt's two runs

@@ -1515,15 +1515,12 @@ def drive_schematic(drive, info: TitleInfo, lang: str, flywheel=None) -> Sheet:
         if kind == "belt":
             view.circle(a, r1, "OUTLINE", 0.5)
             view.circle(b, r2, "OUTLINE", 0.5)
-            d = b - a
-            ang = np.arcsin((r2 - r1) / abs(d))
-            u = d / abs(d)
-            for sgn in (1, -1):
-                nrm = 1j * u * np.exp(-1j * sgn * ang) * sgn
-                view.line(a + r1 * nrm, b + r2 * nrm, "OUTLINE", 0.35)
-                placer.block_segment(view.p(a + r1 * nrm), view.p(b + r2 * nrm), 1.5)
+            for u0, u1 in _tangent_runs(a, r1, b, r2):
+                view.line(u0, u1, "OUTLINE", 0.35)
+                placer.block_segment(view.p(u0), view.p(u1), 1.5)
             ring(a, r1)
             ring(b, r2)
+            u = (b - a) / abs(b - a)
             anchor = view.p((a + b) / 2 + 1j * u * (r1 + r2) / 2)
         elif kind == "gear":
             for c0, rr in ((a, r1), (b, r2)):
