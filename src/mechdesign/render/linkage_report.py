@@ -580,12 +580,21 @@ def linkage_context(model, k, f_, fly, v, figures: dict, lang: str,
                 "mass_note": carried_note(_, [("J_F", sig(fly.inertia), j_mass)]),
                 # the numbers substituted, as the shaper's chapter writes them (page review 41:
                 # the press's γ, the rim material's specific weight, was never given a value)
-                "width": (rf"b = \sqrt{{\frac{{4 g J_F}}{{\pi D^3 (H_F/b) \gamma}}}} = \sqrt{{\frac{{4 \times "
-                          rf"{f(model.gravity, 2)} \times {sig(fly.inertia, group=False)}}}{{\pi \times "
-                          rf"{f(rim.diameter, 3)}^3 \times {f(spec.height_to_width, 2)} \times "
-                          rf"{f(spec.specific_weight, 0)}}}}} = {f(rim.width * 1e3, 1)}\ \text{{mm}}"),
+                "width": rim_width_equation(model.gravity, sig(fly.inertia, group=False), rim.diameter,
+                                            spec.height_to_width, spec.specific_weight, rim.width),
             }
     return ctx
+
+
+
+def rim_width_equation(gravity: float, inertia: str, diameter: float, height_to_width: float,
+                       specific_weight: float, width: float) -> str:
+    """The cast rim's width with its numbers substituted (孙桓 §7: b = √(4 g J_F/(π D³ (H_F/b) γ)),
+    SI inputs, b in mm); ``inertia`` is J_F as the report printed it. One equation for every
+    machine's flywheel chapter (the linkage section, the shaper, the die-cutter)."""
+    return (rf"b = \sqrt{{\frac{{4 g J_F}}{{\pi D^3 (H_F/b) \gamma}}}} = \sqrt{{\frac{{4 \times "
+            rf"{f(gravity, 2)} \times {inertia}}}{{\pi \times {f(diameter, 3)}^3 \times "
+            rf"{f(height_to_width, 2)} \times {f(specific_weight, 0)}}}}} = {f(width * 1e3, 1)}\ \text{{mm}}")
 
 
 def verification_rows(v, lang: str, k=None) -> list[list[str]]:

@@ -17,6 +17,7 @@ from ...render.legends import legend
 from ...render.fmt import e, f, length, md_meta, md_text, sig, fluctuation, factor_for, gives
 from ...render.fmt import number, product, residue, time_ratio, verdict
 from ...render.labels import pgettext, translated
+from ...render.linkage_report import rim_width_equation
 from ...render.fmt import sentences
 from ...render.linkage_report import (carried_note, flywheel_carried, flywheel_equation, realised_flywheel,
                                        rim_inertia_factor)
@@ -475,10 +476,8 @@ def _flywheel(r, p, b, _) -> dict:
         "mass": (rf"m = \frac{{4 J_F}}{{D^2}} = \frac{{4 \times {j_mass}}}"
                  rf"{{{f(fl.rim.diameter, 3)}^2}} = {f(fl.rim.rim_mass, 2)}\ \text{{kg}}"),
         "mass_note": carried_note(_, [("J_F", f(fl.inertia, 3), j_mass)]),
-        "width": (rf"b = \sqrt{{\frac{{4 g J_F}}{{\pi D^3 (H_F/b) \gamma}}}} = \sqrt{{\frac{{4 \times "
-                  rf"{f(p.gravity, 2)} \times {f(fl.inertia, 3)}}}{{\pi \times "
-                  rf"{f(fl.rim.diameter, 3)}^3 \times {f(p.rim_height_to_width, 2)} \times "
-                  rf"{f(p.specific_weight, 0)}}}}} = {f(fl.rim.width * MM, 1)}\ \text{{mm}}"),
+        "width": rim_width_equation(p.gravity, f(fl.inertia, 3), fl.rim.diameter,
+                                    p.rim_height_to_width, p.specific_weight, fl.rim.width),
     }
     return {"eq": eq, "shaft": shaft, "shaft_on": _shaft_in_text(fl.shaft, stages, _),
             "n": f(fl.shaft_speed_rpm, 2), "ratio": sig(fl.speed_ratio),

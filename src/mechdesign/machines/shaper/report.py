@@ -15,7 +15,8 @@ from ...render import figures as fig
 from ...render import guide_bar_report as gb_report
 from ...i18n import N_, tr
 from ...render.fmt import e, f, in_lang, md_meta, sig, time_ratio, verdict, fluctuation
-from ...render.linkage_report import carried_note, flywheel_carried, flywheel_equation, rim_inertia_factor
+from ...render.linkage_report import (carried_note, flywheel_carried, flywheel_equation, rim_inertia_factor,
+                                      rim_width_equation)
 
 DEG = 180.0 / np.pi
 
@@ -205,10 +206,8 @@ def context(r: dict, brief, figures: dict[str, str], lang: str) -> dict:
         "mass": (rf"m = \frac{{4 J_F}}{{D^2}} = \frac{{4 \times {j_mass}}}"
                  rf"{{{f(fl.rim.diameter, 3)}^2}} = {f(fl.rim.rim_mass, 2)}\ \text{{kg}}"),
         "mass_note": carried_note(_, [("J_F", sig(fl.inertia), j_mass)]),
-        "width": (rf"b = \sqrt{{\frac{{4 g J_F}}{{\pi D^3 (H_F/b) \gamma}}}} = \sqrt{{\frac{{4 \times "
-                  rf"{f(p.gravity, 2)} \times {sig(fl.inertia, group=False)}}}{{\pi \times "
-                  rf"{f(fl.rim.diameter, 3)}^3 \times {f(p.rim_height_to_width, 2)} \times "
-                  rf"{f(p.specific_weight, 0)}}}}} = {f(fl.rim.width * mm, 1)}\ \text{{mm}}"),
+        "width": rim_width_equation(p.gravity, sig(fl.inertia, group=False), fl.rim.diameter,
+                                    p.rim_height_to_width, p.specific_weight, fl.rim.width),
     }
     sense = N_("clockwise") if p.crank_omega < 0 else N_("counter-clockwise")
     sense_zh, sense_en = zh_words(sense), sense
